@@ -1,0 +1,29 @@
+# Thin wrapper over CMake. See README.md.
+BUILD ?= build
+JOBS ?= $(shell nproc)
+SCENES := $(wildcard scenes/*.toml)
+
+.PHONY: all deps build figures test render update-goldens clean
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j $(JOBS)
+
+figures: build
+	@bash scripts/render-all.sh $(BUILD)/bookspin out $(SCENES)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+render: build
+	$(BUILD)/bookspin render $(SCENE) -o out
+
+update-goldens: build
+	BOOKSPIN_UPDATE_GOLDENS=1 $(BUILD)/tests/picture_tests
+
+clean:
+	rm -rf $(BUILD) out/*/ out/*.mp4

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages bookspin needs, only those that are missing.
+# Uses sudo when not root. Safe to run repeatedly.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config git ca-certificates
+  libeigen3-dev libtomlplusplus-dev libcli11-dev libboost-dev
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
+  libpng-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
+  libgtest-dev libbenchmark-dev libmujoco-dev
+  clang libclang-rt-14-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,23 @@
+#pragma once
+// The bookspin subcommands. Each returns the process exit status.
+#include <string>
+#include <vector>
+
+namespace bookspin::app {
+
+/// Exit statuses: 0 success, 1 environment or output failure (no EGL, unwritable
+/// directory), 2 bad input (scene file, command line), 130/143 interrupted.
+enum ExitCode { kExitOk = 0, kExitFailure = 1, kExitUsage = 2 };
+
+struct SimulateOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;  ///< "key=value", value in TOML syntax
+  std::string csv_path = "-";          ///< "-" is standard output
+};
+
+int simulate_command(const SimulateOptions& options);
+
+/// Parses argv and runs the chosen subcommand.
+int run_cli(int argc, char** argv);
+
+}  // namespace bookspin::app

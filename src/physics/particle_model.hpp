@@ -1,0 +1,44 @@
+#pragma once
+// Mass-spring book: 8 corner particles and 28 springs (paper §3, physics.md §2).
+#include <array>
+
+#include "physics/simulator.hpp"
+
+namespace bookspin::physics {
+
+/// Particles of mass m = M/8 at the corners, a spring of constant k between every pair
+/// with the rest length of the book at rest. Positions and velocities are 3×8, world frame.
+/// Integrators: `euler` (the paper's order: forces from the positions at step start, then
+/// x += dt·v, then v += dt·a), `symplectic-euler` (v first, then x), `velocity-verlet`
+/// (Swope et al. 1982; with damping the velocity-dependent force uses the half-step
+/// velocity). Optional critical damping and energy normalization (paper §3.2–3.3).
+class ParticleModel final : public Simulator {
+ public:
+  ParticleModel(const Book& book, const ModelConfig& config);
+  void reset(const InitialState& initial) override;
+  void step(double dt) override;
+  Corners corners() const override { return x_; }
+  Diagnostics diagnostics() const override;
+  bool finite() const override;
+
+  const Corners& velocities() const { return v_; }
+
+ private:
+  /// Spring (and optional damping) forces on each particle (3×8) for positions x and
+  /// velocities v; writes the spring energy Σ ½ k r² into `energy`.
+  Corners forces(const Corners& x, const Corners& v, double& energy) const;
+  double spring_energy(const Corners& x) const;
+  double kinetic_energy() const;
+  void normalize(double spring_energy_at_start);
+
+  Book book_;
+  ModelConfig config_;
+  double particle_mass_;
+  Corners rest_;                         ///< body corners at rest (3×8)
+  std::array<double, 28> rest_length_{};  ///< per corner pair
+  Corners x_, v_;
+  double energy0_ = 0.0;  ///< total energy fixed at reset (all kinetic)
+  double t_ = 0.0;
+};
+
+}  // namespace bookspin::physics

@@ -1,0 +1,59 @@
+#include "physics/rigid_matrix_model.hpp"
+
+#include <Eigen/SVD>
+
+#include "physics/rigid_integrators.hpp"
+#include "physics/shape.hpp"
+
+namespace bookspin::physics {
+
+RigidMatrixModel::RigidMatrixModel(const Book& book, const ModelConfig& config)
+    : book_(book), config_(config), inverse_moments_(book.principal_moments().cwiseInverse()) {}
+
+void RigidMatrixModel::reset(const InitialState& initial) {
+  R_.setIdentity();
+  L_ = initial_angular_momentum(book_, initial);
+  t_ = 0.0;
+}
+
+Eigen::Vector3d RigidMatrixModel::omega_world(const Eigen::Matrix3d& R) const {
+  return R * (inverse_moments_.asDiagonal() * (R.transpose() * L_));
+}
+
+Eigen::Matrix3d RigidMatrixModel::derivative(const Eigen::Matrix3d& R) const {
+  return cross_matrix(omega_world(R)) * R;
+}
+
+void RigidMatrixModel::normalize() {
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R_, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  R_ = svd.matrixU() * svd.matrixV().transpose();
+}
+
+void RigidMatrixModel::step(double dt) {
+  switch (config_.integrator) {
+    case Integrator::rk4:
+      R_ = rk4_step(R_, dt, [this](const Eigen::Matrix3d& R) { return derivative(R); });
+      break;
+    case Integrator::implicit_midpoint:
+      R_ = R_ * implicit_midpoint_increment(R_.transpose() * L_, inverse_moments_, dt)
+                    .toRotationMatrix();
+      break;
+    case Integrator::splitting:
+      R_ = R_ * splitting_increment(R_.transpose() * L_, inverse_moments_, dt).toRotationMatrix();
+      break;
+    default:  // euler, the paper's method
+      R_ += dt * derivative(R_);
+  }
+  if (config_.normalize) normalize();
+  t_ += dt;
+}
+
+Corners RigidMatrixModel::corners() const { return R_ * book_.body_corners(); }
+
+Diagnostics RigidMatrixModel::diagnostics() const {
+  return rigid_diagnostics(book_, R_, L_, t_);
+}
+
+bool RigidMatrixModel::finite() const { return is_sane(R_); }
+
+}  // namespace bookspin::physics

@@ -1,0 +1,35 @@
+#pragma once
+// Rigid body with an orientation matrix (paper §4, physics.md §3, Baraff 1997).
+#include "physics/simulator.hpp"
+
+namespace bookspin::physics {
+
+/// State: orientation R (3×3, body→world, not forced to stay a rotation) and the constant
+/// world angular momentum L. Euler step (paper): ω = R I_body⁻¹ Rᵀ L, R += dt·[ω]× R, then
+/// optionally R ← U Vᵀ from the SVD R = U Σ Vᵀ (Eigen JacobiSVD). Corners are R·body
+/// corners, so an unnormalized R stretches the book (paper Figure 10).
+class RigidMatrixModel final : public Simulator {
+ public:
+  RigidMatrixModel(const Book& book, const ModelConfig& config);
+  void reset(const InitialState& initial) override;
+  void step(double dt) override;
+  Corners corners() const override;
+  Diagnostics diagnostics() const override;
+  bool finite() const override;
+
+  const Eigen::Matrix3d& orientation() const { return R_; }
+
+ private:
+  Eigen::Vector3d omega_world(const Eigen::Matrix3d& R) const;
+  Eigen::Matrix3d derivative(const Eigen::Matrix3d& R) const;
+  void normalize();
+
+  Book book_;
+  ModelConfig config_;
+  Eigen::Vector3d inverse_moments_;
+  Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
+  double t_ = 0.0;
+};
+
+}  // namespace bookspin::physics

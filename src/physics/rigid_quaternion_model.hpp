@@ -1,0 +1,36 @@
+#pragma once
+// Rigid body with a quaternion (paper §4.4, physics.md §4, Baraff 1997).
+#include <Eigen/Geometry>
+
+#include "physics/simulator.hpp"
+
+namespace bookspin::physics {
+
+/// State: q = (w, x, y, z) and the constant world angular momentum L. Euler step:
+/// R(q) from the unit-quaternion formula (Eigen's toRotationMatrix(), which does not divide
+/// by |q|²), ω = R(q) I_body⁻¹ R(q)ᵀ L (world frame), q += ½ dt (0, ω) ⊗ q, then optionally
+/// q /= |q|. The same R(q) places the corners, so with |q| = s ≠ 1 the book is drawn as
+/// (1 − s²) I + s² R(q/s): it distorts and pulsates (paper Figures 11–12).
+class RigidQuaternionModel final : public Simulator {
+ public:
+  RigidQuaternionModel(const Book& book, const ModelConfig& config);
+  void reset(const InitialState& initial) override;
+  void step(double dt) override;
+  Corners corners() const override;
+  Diagnostics diagnostics() const override;
+  bool finite() const override;
+
+  const Eigen::Quaterniond& orientation() const { return q_; }
+
+ private:
+  Eigen::Vector4d derivative(const Eigen::Vector4d& q_coeffs) const;
+
+  Book book_;
+  ModelConfig config_;
+  Eigen::Vector3d inverse_moments_;
+  Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
+  double t_ = 0.0;
+};
+
+}  // namespace bookspin::physics

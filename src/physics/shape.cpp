@@ -1,0 +1,76 @@
+#include "physics/shape.hpp"
+
+#include <Eigen/SVD>
+#include <cmath>
+
+namespace bookspin::physics {
+
+const std::array<std::pair<int, int>, 28>& corner_pairs() {
+  static const auto pairs = [] {
+    std::array<std::pair<int, int>, 28> out{};
+    int n = 0;
+    for (int i = 0; i < 8; ++i)
+      for (int j = i + 1; j < 8; ++j) out[n++] = {i, j};
+    return out;
+  }();
+  return pairs;
+}
+
+double strain_max(const Corners& corners, const Corners& rest) {
+  double worst = 0.0;
+  for (const auto& [i, j] : corner_pairs()) {
+    const double len = (corners.col(i) - corners.col(j)).norm();
+    const double rest_len = (rest.col(i) - rest.col(j)).norm();
+    worst = std::max(worst, std::abs(len / rest_len - 1.0));
+  }
+  return worst;
+}
+
+Eigen::Matrix3d best_fit_rotation(const Corners& current, const Corners& rest) {
+  const Eigen::Matrix3d H = current * rest.transpose();
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d fix = Eigen::Matrix3d::Identity();
+  fix(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  return svd.matrixU() * fix * svd.matrixV().transpose();
+}
+
+double orthogonality_error(const Eigen::Matrix3d& m) {
+  return (m.transpose() * m - Eigen::Matrix3d::Identity()).norm();
+}
+
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& w) {
+  Eigen::Matrix3d s;
+  s << 0.0, -w.z(), w.y(), w.z(), 0.0, -w.x(), -w.y(), w.x(), 0.0;
+  return s;
+}
+
+Diagnostics rigid_diagnostics(const Book& book, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
+                              double t) {
+  const Eigen::Vector3d moments = book.principal_moments();
+  const Eigen::Matrix3d inertia_world = M * moments.asDiagonal() * M.transpose();
+  const Eigen::Matrix3d inertia_inv_world =
+      M * moments.cwiseInverse().asDiagonal() * M.transpose();
+  const Eigen::Vector3d omega_world = inertia_inv_world * L;
+  Diagnostics d;
+  d.t = t;
+  d.omega_body = M.transpose() * omega_world;
+  d.L = L;
+  d.energy_kinetic = 0.5 * omega_world.dot(inertia_world * omega_world);
+  d.energy_potential = 0.0;
+  d.energy_total = d.energy_kinetic;
+  const double L_norm = L.norm();
+  for (int axis = 0; axis < 3; ++axis) {
+    const Eigen::Vector3d a = M.col(axis);
+    d.cos_axis_L[axis] = a.dot(L) / (a.norm() * L_norm);
+  }
+  const Corners body = book.body_corners();
+  d.strain_max = strain_max(M * body, body);
+  d.orthogonality_error = orthogonality_error(M);
+  return d;
+}
+
+Eigen::Vector3d initial_angular_momentum(const Book& book, const InitialState& initial) {
+  return book.inertia_body() * initial.omega0_body + jiggle_delta_L(initial.seed, initial.jiggle);
+}
+
+}  // namespace bookspin::physics

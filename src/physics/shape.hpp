@@ -1,0 +1,45 @@
+#pragma once
+// Shape measures shared by all simulators (physics.md §9).
+#include <array>
+
+#include "physics/book.hpp"
+#include "physics/simulator.hpp"
+
+namespace bookspin::physics {
+
+/// The 28 corner pairs (i < j), in the order (0,1), (0,2), …, (6,7).
+const std::array<std::pair<int, int>, 28>& corner_pairs();
+
+/// Largest relative length change max |len/rest − 1| over the 28 corner pairs.
+/// `corners` and `rest` are 3×8; `rest` gives the rest lengths. Dimensionless.
+double strain_max(const Corners& corners, const Corners& rest);
+
+/// The rotation R (3×3, det +1) minimising Σ |R·rest_p − current_p|² over the 8 corners
+/// (Kabsch 1976, via the polar decomposition of current·restᵀ with Eigen's JacobiSVD).
+/// `current` must be centred on its centroid; both are 3×8.
+Eigen::Matrix3d best_fit_rotation(const Corners& current, const Corners& rest);
+
+/// ‖MᵀM − I‖_F of a 3×3 matrix.
+double orthogonality_error(const Eigen::Matrix3d& m);
+
+/// The skew matrix [w]× with [w]× v = w × v.
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& w);
+
+/// Largest magnitude a state variable may reach before the run counts as diverged.
+inline constexpr double kDivergenceLimit = 1e6;
+
+/// True if every entry is finite and below kDivergenceLimit in magnitude.
+template <typename Derived>
+bool is_sane(const Eigen::MatrixBase<Derived>& m) {
+  return m.allFinite() && m.cwiseAbs().maxCoeff() < kDivergenceLimit;
+}
+
+/// Diagnostics of a rigid model whose corners are `M · body_corners` (M is R or R(q),
+/// possibly not a rotation). L is the world angular momentum. Equations: physics.md §3, §9.
+Diagnostics rigid_diagnostics(const Book& book, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
+                              double t);
+
+/// L0 = I_body·ω0 + jiggle_delta_L(seed, jiggle): world angular momentum at reset (identity R).
+Eigen::Vector3d initial_angular_momentum(const Book& book, const InitialState& initial);
+
+}  // namespace bookspin::physics

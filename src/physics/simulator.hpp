@@ -1,0 +1,99 @@
+#pragma once
+// The one interface every book simulator implements (issue 2, physics.md §5 and §9).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "physics/book.hpp"
+
+namespace bookspin::physics {
+
+enum class ModelKind { particle, rigid_matrix, rigid_quaternion, exact };
+
+/// Time integrators. Which ones a model accepts is checked by make_simulator().
+enum class Integrator {
+  euler,              ///< explicit Euler in the paper's order (default for every model)
+  symplectic_euler,   ///< particle: velocity first, then position
+  velocity_verlet,    ///< particle
+  rk4,                ///< rigid: classical Runge–Kutta 4
+  implicit_midpoint,  ///< rigid
+  splitting,          ///< rigid: symplectic splitting of the free rotor (DLM 1997 / NO_SQUISH)
+};
+
+struct ModelConfig {
+  ModelKind kind = ModelKind::particle;
+  Integrator integrator = Integrator::euler;
+  bool normalize = false;        ///< energy (particle), SVD (matrix), |q| (quaternion)
+  bool damping = true;           ///< critical spring damping (particle only)
+  double spring_constant = 10.0; ///< k, force per length (particle only)
+};
+
+/// Initial condition: identity orientation, body-frame ω0, and a seeded jiggle.
+struct InitialState {
+  Eigen::Vector3d omega0_body{0.114819, 0.0, 0.0};  ///< rad per time unit, body frame
+  double jiggle = 0.0;  ///< amplitude of the uniform perturbation added to each component of L
+  std::uint64_t seed = 1;
+};
+
+/// Per-frame diagnostics (physics.md §9). Units: time units, rad/time, energy units.
+struct Diagnostics {
+  double t = 0.0;
+  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();  ///< body frame
+  Eigen::Vector3d L = Eigen::Vector3d::Zero();           ///< world frame
+  double energy_kinetic = 0.0;
+  double energy_potential = 0.0;  ///< spring energy (0 for rigid models)
+  double energy_total = 0.0;
+  Eigen::Vector3d cos_axis_L = Eigen::Vector3d::Zero();  ///< cos(body axis d in world, L)
+  double strain_max = 0.0;            ///< max over 28 corner pairs of |len/rest − 1|
+  double orthogonality_error = 0.0;   ///< ‖RᵀR − I‖_F of the matrix placing the corners
+  double quaternion_norm = 1.0;       ///< |q|, 1 where there is no quaternion
+};
+
+/// What the simulator hands to the rest of the pipeline each frame.
+struct BookPose {
+  Corners corners;  ///< 3×8 world-space corners
+  Diagnostics diagnostics;
+};
+
+/// A book simulator: pure physics, deterministic, no I/O.
+class Simulator {
+ public:
+  virtual ~Simulator() = default;
+  /// Resets to identity orientation at t = 0 from `initial` (jiggle applied, see jiggle_delta_L).
+  virtual void reset(const InitialState& initial) = 0;
+  /// Advances the state by one step of `dt` time units.
+  virtual void step(double dt) = 0;
+  /// World-space corners (3×8).
+  virtual Corners corners() const = 0;
+  /// Diagnostics of the current state.
+  virtual Diagnostics diagnostics() const = 0;
+  /// True while every state variable is finite and not absurdly large.
+  virtual bool finite() const = 0;
+
+  BookPose pose() const { return {corners(), diagnostics()}; }
+};
+
+/// The seeded, deterministic jiggle (physics.md §5): a vector uniform in
+/// [−amplitude, amplitude]³ from a 64-bit Mersenne Twister (std::mt19937_64, whose
+/// output sequence the C++ standard fixes, mapped to doubles by hand so that every
+/// standard library gives the same bits). Added to the world angular momentum L at reset.
+Eigen::Vector3d jiggle_delta_L(std::uint64_t seed, double amplitude);
+
+/// Whether a model accepts an integrator (particle: euler, symplectic-euler, velocity-verlet;
+/// rigid: euler, rk4, implicit-midpoint, splitting; exact: euler, i.e. the key is unused).
+bool supports(ModelKind kind, Integrator integrator);
+
+/// Creates the simulator for `config`. Throws std::invalid_argument when the model does
+/// not support the integrator.
+std::unique_ptr<Simulator> make_simulator(const Book& book, const ModelConfig& config);
+
+std::string_view to_string(ModelKind kind);
+std::string_view to_string(Integrator integrator);
+/// Parses "particle" | "rigid-matrix" | "rigid-quaternion" | "exact"; false if unknown.
+bool parse_model_kind(std::string_view text, ModelKind& out);
+/// Parses "euler" | "symplectic-euler" | "velocity-verlet" | "rk4" | "implicit-midpoint" |
+/// "splitting"; false if unknown.
+bool parse_integrator(std::string_view text, Integrator& out);
+
+}  // namespace bookspin::physics

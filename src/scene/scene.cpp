@@ -1,0 +1,188 @@
+#include "scene/scene.hpp"
+
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
+
+#include "scene/toml_reader.hpp"
+
+namespace bookspin::scene {
+
+namespace {
+
+constexpr double kHuge = 1e12;
+
+std::string first_line(std::string_view text) { return std::string(text.substr(0, text.find('\n'))); }
+
+/// Applies one "key=value" override onto `root`, creating tables along the key's path.
+std::string apply_override(toml::table& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  const std::string key = assignment.substr(0, eq);
+  static const std::regex key_pattern(R"([A-Za-z0-9_-]+(\.[A-Za-z0-9_-]+)*)");
+  if (eq == std::string::npos || !std::regex_match(key, key_pattern)) {
+    throw SceneError("--set " + assignment + ": expected key=value, e.g. time.dt=0.01");
+  }
+  toml::table parsed;
+  try {
+    const std::string doc = "value = " + assignment.substr(eq + 1);
+    parsed = toml::parse(std::string_view(doc), std::string_view("--set"));
+  } catch (const toml::parse_error& e) {
+    throw SceneError("--set " + key + ": value is not valid TOML (" +
+                     first_line(e.description()) + "); strings need quotes, e.g. key=\"text\"");
+  }
+  toml::table* table = &root;
+  std::string_view rest = key;
+  for (auto dot = rest.find('.'); dot != std::string_view::npos; dot = rest.find('.')) {
+    const std::string part(rest.substr(0, dot));
+    rest.remove_prefix(dot + 1);
+    if (!table->contains(part)) table->insert(part, toml::table{});
+    table = (*table)[part].as_table();
+    if (!table) throw SceneError("--set " + key + ": '" + part + "' is not a table");
+  }
+  table->insert_or_assign(std::string(rest), *parsed["value"].node());
+  return key;
+}
+
+physics::ModelConfig read_model(TomlReader& r) {
+  physics::ModelConfig m;
+  const std::string kind = r.string("model.kind", "particle");
+  if (!physics::parse_model_kind(kind, m.kind)) {
+    r.fail("model.kind",
+           "unknown model '" + kind + "' (expected particle, rigid-matrix, rigid-quaternion, exact)");
+  }
+  const std::string integrator = r.string("model.integrator", "euler");
+  if (!physics::parse_integrator(integrator, m.integrator)) {
+    r.fail("model.integrator", "unknown integrator '" + integrator +
+                                   "' (expected euler, symplectic-euler, velocity-verlet, rk4, "
+                                   "implicit-midpoint, splitting)");
+  }
+  if (!physics::supports(m.kind, m.integrator)) {
+    r.fail("model.integrator", "model '" + kind + "' does not support integrator '" + integrator + "'");
+  }
+  m.normalize = r.boolean("model.normalize", false);
+  m.damping = r.boolean("model.damping", true);
+  m.spring_constant = r.number("model.spring_constant", 10.0, 0.0, kHuge, true);
+  return m;
+}
+
+void read_time(TomlReader& r, Scene& s) {
+  s.dt = r.number("time.dt", 1.0 / 60.0, 0.0, 1e3, true);
+  s.steps_per_frame = static_cast<int>(r.integer("time.steps_per_frame", 6, 1, kMaxStepsPerFrame));
+  s.frames = static_cast<int>(r.integer("time.frames", 300, 1, kMaxFrames));
+}
+
+std::string read_texture(TomlReader& r, std::string_view key, const std::filesystem::path& origin) {
+  const std::string value = r.string(key, "");
+  if (value.empty()) return value;
+  std::filesystem::path path(value);
+  if (path.is_relative()) path = origin.parent_path() / path;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) r.fail(key, "texture file not found: " + path.string());
+  return path.string();
+}
+
+int read_dimension(TomlReader& r, std::string_view key, int fallback) {
+  const int value = static_cast<int>(r.integer(key, fallback, 16, kMaxDimension));
+  if (value % 2 != 0) {
+    r.fail(key, "must be even (4:2:0 video needs even sizes), got " + std::to_string(value));
+  }
+  return value;
+}
+
+RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
+  RenderOptions o;
+  o.width = read_dimension(r, "render.width", o.width);
+  o.height = read_dimension(r, "render.height", o.height);
+  o.fps = static_cast<int>(r.integer("render.fps", o.fps, 1, 240));
+  o.fov_y_deg = r.number("render.fov_y", o.fov_y_deg, 1.0, 170.0);
+  o.camera_distance = r.number("render.camera_distance", 0.0, 0.0, 1e4);
+  o.camera_direction = r.vector3("render.camera_direction", o.camera_direction, -kHuge, kHuge);
+  if (o.camera_direction.norm() == 0.0) r.fail("render.camera_direction", "must not be zero");
+  o.show_angular_momentum = r.boolean("render.show_angular_momentum", false);
+  o.show_body_axes = r.boolean("render.show_body_axes", false);
+  o.texture_front = read_texture(r, "render.texture_front", origin);
+  o.texture_back = read_texture(r, "render.texture_back", origin);
+  o.texture_spine = read_texture(r, "render.texture_spine", origin);
+  o.texture_pages = read_texture(r, "render.texture_pages", origin);
+  o.codec = r.string("render.codec", o.codec);
+  if (o.codec != "libx264" && o.codec != "h264_nvenc") {
+    r.fail("render.codec", "unknown codec '" + o.codec + "' (expected libx264 or h264_nvenc)");
+  }
+  o.crf = static_cast<int>(r.integer("render.crf", o.crf, 0, 51));
+  o.preset = r.string("render.preset", o.preset);
+  static const std::regex presets(
+      "ultrafast|superfast|veryfast|faster|fast|medium|slow|slower|veryslow");
+  if (!std::regex_match(o.preset, presets)) r.fail("render.preset", "unknown preset '" + o.preset + "'");
+  o.png_compression = static_cast<int>(r.integer("render.png_compression", 1, 0, 9));
+  return o;
+}
+
+void read_identity(TomlReader& r, Scene& s) {
+  s.name = r.string("scene.name", s.source.stem().string());
+  static const std::regex safe_name(R"([A-Za-z0-9][A-Za-z0-9._-]*)");
+  if (!std::regex_match(s.name, safe_name) || s.name.find("..") != std::string::npos) {
+    r.fail("scene.name", "'" + s.name +
+                             "' is not a safe output name (letters, digits, '.', '_', '-'; no '/' or '..')");
+  }
+  s.title = r.string("scene.title", s.name);
+  s.description = r.string("scene.description", "");
+}
+
+Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
+                  const std::set<std::string>& overridden) {
+  TomlReader r(root, origin.string(), overridden);
+  Scene s;
+  s.source = origin;
+  read_identity(r, s);
+  s.model = read_model(r);
+  s.book.size = r.vector3("book.size", s.book.size, 0.0, 1e6, true);
+  s.book.mass = r.number("book.mass", s.book.mass, 0.0, kHuge, true);
+  s.initial.omega0_body = r.vector3("initial.angular_velocity", s.initial.omega0_body, -1e6, 1e6);
+  s.initial.jiggle = r.number("initial.jiggle", 0.0, 0.0, 1e6);
+  s.initial.seed = static_cast<std::uint64_t>(
+      r.integer("initial.seed", 1, 0, std::numeric_limits<int64_t>::max()));
+  read_time(r, s);
+  s.render = read_render(r, origin);
+  r.reject_unknown_keys();
+  return s;
+}
+
+}  // namespace
+
+Scene parse_scene_text(std::string_view text, const std::filesystem::path& origin,
+                       const std::vector<std::string>& overrides) {
+  if (text.find('\0') != std::string_view::npos) {
+    throw SceneError(origin.string() + ": not a text file (contains NUL bytes)");
+  }
+  toml::table root;
+  try {
+    const std::string origin_name = origin.string();
+    root = toml::parse(text, std::string_view(origin_name));
+  } catch (const toml::parse_error& e) {
+    throw SceneError(origin.string() + ":" + std::to_string(e.source().begin.line) +
+                     ": TOML syntax error: " + first_line(e.description()));
+  }
+  std::set<std::string> overridden;
+  for (const auto& assignment : overrides) overridden.insert(apply_override(root, assignment));
+  return build_scene(root, origin, overridden);
+}
+
+Scene parse_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw SceneError(path.string() + ": scene file not found");
+  }
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxSceneFileBytes) {
+    throw SceneError(path.string() + ": scene file is larger than " +
+                     std::to_string(kMaxSceneFileBytes) + " bytes");
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw SceneError(path.string() + ": cannot read the scene file");
+  return parse_scene_text(text.str(), path, overrides);
+}
+
+}  // namespace bookspin::scene

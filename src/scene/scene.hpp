@@ -1,0 +1,67 @@
+#pragma once
+// A validated scene: everything one clip needs (issue 2 §6, issue 3 §5). The door of
+// src/scene: parse_scene() turns a TOML file plus `--set key=value` overrides into a Scene
+// or throws SceneError with one line naming the file, line and key.
+#include <array>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "physics/simulator.hpp"
+
+namespace bookspin::scene {
+
+/// One bad input: `what()` is "FILE:LINE: KEY: reason" (or "--set KEY: reason").
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RenderOptions {
+  int width = 1280;   ///< pixels, even
+  int height = 720;   ///< pixels, even
+  int fps = 30;       ///< frames per second of the clip
+  double fov_y_deg = 30.0;                      ///< vertical field of view, degrees
+  double camera_distance = 0.0;                 ///< 0: framed automatically
+  Eigen::Vector3d camera_direction{0.9, 0.6, 3.2};  ///< from the origin towards the eye
+  bool show_angular_momentum = false;
+  bool show_body_axes = false;
+  /// Face textures (PNG paths, resolved against the scene's folder); empty: generated.
+  std::string texture_front, texture_back, texture_spine, texture_pages;
+  std::string codec = "libx264";
+  int crf = 18;
+  std::string preset = "medium";
+  int png_compression = 1;  ///< zlib level 0–9 for frame PNGs
+};
+
+struct Scene {
+  std::string name;         ///< output name: file stem unless scene.name is set
+  std::string title;        ///< human title (caption, gallery)
+  std::string description;  ///< what the clip shows
+  physics::Book book;
+  physics::ModelConfig model;
+  physics::InitialState initial;
+  double dt = 1.0 / 60.0;     ///< time step, time units
+  int steps_per_frame = 6;    ///< substeps per video frame
+  int frames = 300;           ///< video frames (CSV rows), frame 0 = initial state
+  RenderOptions render;
+  std::filesystem::path source;  ///< the scene file
+};
+
+/// Limits enforced by validation (documented in scenes/README.md).
+inline constexpr int kMaxDimension = 7680;
+inline constexpr int kMaxFrames = 100000;
+inline constexpr int kMaxStepsPerFrame = 1000000;
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 1 << 20;
+
+/// Reads and validates `path`, applying `overrides` ("key=value", value in TOML syntax) on
+/// top of the file. Throws SceneError on any bad input: unreadable or oversized file, TOML
+/// syntax, unknown key, wrong type, out-of-range value, missing texture file.
+Scene parse_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+
+/// Same from TOML text; `origin` names it in messages and resolves relative texture paths.
+Scene parse_scene_text(std::string_view text, const std::filesystem::path& origin,
+                       const std::vector<std::string>& overrides = {});
+
+}  // namespace bookspin::scene

@@ -1,0 +1,149 @@
+#include "scene/toml_reader.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace bookspin::scene {
+
+namespace {
+
+std::string format_number(double value) {
+  std::ostringstream out;
+  out.precision(10);
+  out << value;
+  return out.str();
+}
+
+std::string range_text(double lo, double hi, bool lo_open) {
+  return std::string(lo_open ? "> " : ">= ") + format_number(lo) + " and <= " + format_number(hi);
+}
+
+}  // namespace
+
+TomlReader::TomlReader(const toml::table& root, std::string origin, std::set<std::string> overridden)
+    : root_(root), origin_(std::move(origin)), overridden_(std::move(overridden)) {}
+
+toml::node_view<const toml::node> TomlReader::find(std::string_view key) {
+  known_.emplace(key);
+  return root_.at_path(key);
+}
+
+bool TomlReader::has(std::string_view key) const { return static_cast<bool>(root_.at_path(key)); }
+
+std::string TomlReader::location(std::string_view key, const toml::node* node) const {
+  // Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
+  std::string where;
+  if (overridden_.count(std::string(key))) {
+    where.append("--set ").append(key);
+    return where;
+  }
+  where.append(origin_);
+  if (node && node->source().begin.line > 0) {
+    where.append(":").append(std::to_string(node->source().begin.line));
+  }
+  where.append(": ").append(key);
+  return where;
+}
+
+void TomlReader::fail(std::string_view key, const std::string& reason) const {
+  throw SceneError(location(key, root_.at_path(key).node()) + ": " + reason);
+}
+
+double TomlReader::number(std::string_view key, double fallback, double lo, double hi,
+                          bool lo_open) {
+  const auto view = find(key);
+  if (!view) return fallback;
+  double value = 0.0;
+  if (auto i = view.value_exact<int64_t>()) {
+    value = static_cast<double>(*i);
+  } else if (auto f = view.value_exact<double>()) {
+    value = *f;
+  } else {
+    fail(key, "expected a number");
+  }
+  if (!std::isfinite(value)) fail(key, "must be finite, got " + format_number(value));
+  if (value < lo || value > hi || (lo_open && value == lo)) {
+    fail(key, "must be " + range_text(lo, hi, lo_open) + ", got " + format_number(value));
+  }
+  return value;
+}
+
+long long TomlReader::integer(std::string_view key, long long fallback, long long lo, long long hi) {
+  const auto view = find(key);
+  if (!view) return fallback;
+  const auto value = view.value_exact<int64_t>();
+  if (!value) fail(key, "expected an integer");
+  if (*value < lo || *value > hi) {
+    fail(key, "must be >= " + std::to_string(lo) + " and <= " + std::to_string(hi) + ", got " +
+                  std::to_string(*value));
+  }
+  return *value;
+}
+
+bool TomlReader::boolean(std::string_view key, bool fallback) {
+  const auto view = find(key);
+  if (!view) return fallback;
+  const auto value = view.value_exact<bool>();
+  if (!value) fail(key, "expected true or false");
+  return *value;
+}
+
+std::string TomlReader::string(std::string_view key, std::string fallback) {
+  const auto view = find(key);
+  if (!view) return fallback;
+  const auto value = view.value_exact<std::string>();
+  if (!value) fail(key, "expected a string");
+  return *value;
+}
+
+Eigen::Vector3d TomlReader::vector3(std::string_view key, const Eigen::Vector3d& fallback,
+                                    double lo, double hi, bool lo_open) {
+  const auto view = find(key);
+  if (!view) return fallback;
+  const toml::array* array = view.as_array();
+  if (!array || array->size() != 3) fail(key, "expected an array of 3 numbers");
+  Eigen::Vector3d out;
+  for (int d = 0; d < 3; ++d) {
+    const toml::node& item = *array->get(d);
+    if (auto i = item.value_exact<int64_t>()) {
+      out[d] = static_cast<double>(*i);
+    } else if (auto f = item.value_exact<double>()) {
+      out[d] = *f;
+    } else {
+      fail(key, "expected an array of 3 numbers");
+    }
+    if (!std::isfinite(out[d])) fail(key, "must be finite, got " + format_number(out[d]));
+    if (out[d] < lo || out[d] > hi || (lo_open && out[d] == lo)) {
+      fail(key, "each component must be " + range_text(lo, hi, lo_open) + ", got " +
+                    format_number(out[d]));
+    }
+  }
+  return out;
+}
+
+void TomlReader::collect_unknown(const toml::table& table, const std::string& prefix,
+                                 const toml::node*& first, std::string& first_key) const {
+  for (const auto& [name, node] : table) {
+    const std::string key = prefix + std::string(name.str());
+    const bool is_known = known_.count(key) > 0;
+    const toml::table* sub = node.as_table();
+    if (!is_known && sub && !sub->empty()) {
+      collect_unknown(*sub, key + ".", first, first_key);
+      continue;
+    }
+    if (is_known) continue;
+    if (!first || node.source().begin.line < first->source().begin.line) {
+      first = &node;
+      first_key = key;
+    }
+  }
+}
+
+void TomlReader::reject_unknown_keys() const {
+  const toml::node* first = nullptr;
+  std::string first_key;
+  collect_unknown(root_, "", first, first_key);
+  if (first) throw SceneError(location(first_key, first) + ": unknown key");
+}
+
+}  // namespace bookspin::scene

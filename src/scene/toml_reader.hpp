@@ -1,0 +1,45 @@
+#pragma once
+// Typed, range-checked reads from a TOML table that remember which keys were read, so that
+// every other key can be reported as unknown. Internal to src/scene.
+#include <set>
+#include <string>
+#include <string_view>
+#include <toml++/toml.h>
+
+#include "scene/scene.hpp"
+
+namespace bookspin::scene {
+
+class TomlReader {
+ public:
+  /// `origin` names the file in messages; keys in `overridden` came from `--set`.
+  TomlReader(const toml::table& root, std::string origin, std::set<std::string> overridden);
+
+  /// A finite number in [lo, hi] (lo excluded when `lo_open`); integers are accepted.
+  double number(std::string_view key, double fallback, double lo, double hi, bool lo_open = false);
+  long long integer(std::string_view key, long long fallback, long long lo, long long hi);
+  bool boolean(std::string_view key, bool fallback);
+  std::string string(std::string_view key, std::string fallback);
+  /// An array of exactly three finite numbers, each in [lo, hi] (lo excluded when lo_open).
+  Eigen::Vector3d vector3(std::string_view key, const Eigen::Vector3d& fallback, double lo,
+                          double hi, bool lo_open = false);
+  bool has(std::string_view key) const;
+
+  /// Throws SceneError for the key read-or-present in the table with the earliest line.
+  void reject_unknown_keys() const;
+  /// Throws SceneError "LOCATION: KEY: reason".
+  [[noreturn]] void fail(std::string_view key, const std::string& reason) const;
+
+ private:
+  toml::node_view<const toml::node> find(std::string_view key);
+  std::string location(std::string_view key, const toml::node* node) const;
+  void collect_unknown(const toml::table& table, const std::string& prefix,
+                       const toml::node*& first, std::string& first_key) const;
+
+  const toml::table& root_;
+  std::string origin_;
+  std::set<std::string> overridden_;
+  std::set<std::string, std::less<>> known_;
+};
+
+}  // namespace bookspin::scene
