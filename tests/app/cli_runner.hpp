@@ -1,0 +1,50 @@
+#pragma once
+// Runs the built bookspin binary and captures its exit status and output.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace bookspin::test {
+
+struct CliResult {
+  int status = -1;     ///< exit status, or 128 + signal
+  std::string output;  ///< stdout and stderr together
+};
+
+/// Runs `BOOKSPIN_EXE args` through the shell (args are shell words, quote as needed).
+inline CliResult run_bookspin(const std::string& args) {
+  const std::string command = std::string(BOOKSPIN_EXE) + " " + args + " 2>&1";
+  CliResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
+  const int raw = pclose(pipe);
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  return result;
+}
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+inline std::string scene_path(const std::string& name) {
+  return std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/" + name + ".toml";
+}
+
+/// A fresh, empty temporary directory for one test.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace bookspin::test
