@@ -23,6 +23,19 @@ void add_simulate(CLI::App& cli, SimulateOptions& options) {
       ->capture_default_str();
 }
 
+void add_render(CLI::App& cli, RenderOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "render", "Render a scene to OUT/<scene>.mp4, OUT/<scene>/frames/ and OUT/<scene>/diagnostics.csv");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--frames", options.frames, "Render only the first N frames (overrides time.frames)")
+      ->check(CLI::Range(1, scene::kMaxFrames));
+  cmd->add_flag("--no-png", options.no_png, "Skip the PNG frames (MP4 and CSV only)");
+  cmd->add_option("-j,--jobs", options.jobs, "Worker threads for PNG compression and encoding (default: all cores)")
+      ->check(CLI::Range(1, 256));
+}
+
 int report(const std::string& message, int code) {
   std::cerr << "bookspin: error: " << message << '\n';
   return code;
@@ -35,6 +48,9 @@ int run_cli(int argc, char** argv) {
   cli.require_subcommand(1);
   SimulateOptions simulate;
   add_simulate(cli, simulate);
+  RenderOptions render;
+  add_render(cli, render);
+  cli.add_subcommand("info", "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -46,7 +62,11 @@ int run_cli(int argc, char** argv) {
   }
   try {
     if (cli.got_subcommand("simulate")) return simulate_command(simulate);
+    if (cli.got_subcommand("render")) return render_command(render);
+    if (cli.got_subcommand("info")) return info_command();
   } catch (const scene::SceneError& e) {
+    return report(e.what(), kExitUsage);
+  } catch (const std::invalid_argument& e) {
     return report(e.what(), kExitUsage);
   } catch (const video::OutputError& e) {
     return report(e.what(), kExitFailure);

@@ -17,6 +17,21 @@ struct SimulateOptions {
 
 int simulate_command(const SimulateOptions& options);
 
+struct RenderOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_dir = "out";
+  int frames = 0;  ///< > 0 overrides time.frames
+  bool no_png = false;
+  int jobs = 0;  ///< worker threads; 0 = number of cores
+};
+
+/// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv.
+int render_command(const RenderOptions& options);
+
+/// Prints the EGL/GL and FFmpeg set-up.
+int info_command();
+
 /// Parses argv and runs the chosen subcommand.
 int run_cli(int argc, char** argv);
 

@@ -1,0 +1,108 @@
+#include "app/clip_sinks.hpp"
+
+#include <cerrno>
+#include <cstdio>
+
+#include "video/diagnostics_csv.hpp"
+#include "video/png_writer.hpp"
+
+namespace bookspin::app {
+
+namespace {
+
+std::filesystem::path frame_file(const std::filesystem::path& dir, int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05d.png", index);
+  return dir / name;
+}
+
+std::filesystem::path make_parent(const std::filesystem::path& file) {
+  std::error_code ec;
+  std::filesystem::create_directories(file.parent_path(), ec);
+  if (ec) video::throw_output_error("cannot create directory", file.parent_path(), ec.value());
+  return file;
+}
+
+}  // namespace
+
+ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options)
+    : paths_(paths),
+      options_(options),
+      encoder_(make_parent(paths.mp4), options.encoder),
+      csv_file_(make_parent(paths.csv)),
+      encode_queue_(4),
+      png_queue_(2 * static_cast<std::size_t>(std::max(1, options.png_workers))) {
+  if (options_.write_png) frames_.emplace(paths.frames_dir);
+  csv_.open(csv_file_.temp_path(), std::ios::binary);
+  if (!csv_) video::throw_output_error("cannot create", paths.csv, errno);
+  csv_ << video::diagnostics_csv_header() << '\n';
+  workers_.emplace_back([this] { encode_loop(); });
+  if (options_.write_png) {
+    for (int i = 0; i < std::max(1, options_.png_workers); ++i)
+      workers_.emplace_back([this] { png_loop(); });
+  }
+}
+
+ClipSinks::~ClipSinks() { stop_workers(); }
+
+void ClipSinks::stop_workers() {
+  encode_queue_.close();
+  png_queue_.close();
+  for (auto& worker : workers_)
+    if (worker.joinable()) worker.join();
+  workers_.clear();
+}
+
+void ClipSinks::record_error() {
+  {
+    std::lock_guard lock(error_mutex_);
+    if (!error_) error_ = std::current_exception();
+  }
+  encode_queue_.close();
+  png_queue_.close();
+}
+
+void ClipSinks::rethrow_if_failed() {
+  std::lock_guard lock(error_mutex_);
+  if (error_) std::rethrow_exception(error_);
+}
+
+void ClipSinks::encode_loop() {
+  try {
+    while (auto frame = encode_queue_.pop()) encoder_.add_frame(**frame);
+  } catch (...) {
+    record_error();
+  }
+}
+
+void ClipSinks::png_loop() {
+  try {
+    while (auto item = png_queue_.pop()) {
+      video::write_png(frame_file(frames_->temp_path(), item->first), *item->second,
+                       options_.png_compression);
+    }
+  } catch (...) {
+    record_error();
+  }
+}
+
+void ClipSinks::add(int index, RgbaImage image, const physics::Diagnostics& diagnostics) {
+  rethrow_if_failed();
+  csv_ << video::diagnostics_csv_row(index, diagnostics) << '\n';
+  auto frame = std::make_shared<const RgbaImage>(std::move(image));
+  const bool queued = encode_queue_.push(frame) &&
+                      (!options_.write_png || png_queue_.push({index, std::move(frame)}));
+  if (!queued) rethrow_if_failed();
+}
+
+void ClipSinks::finish() {
+  stop_workers();
+  rethrow_if_failed();
+  csv_.close();
+  if (!csv_) video::throw_output_error("cannot write", paths_.csv, errno);
+  encoder_.finish();
+  if (frames_) frames_->commit();
+  csv_file_.commit();
+}
+
+}  // namespace bookspin::app

@@ -1,0 +1,42 @@
+#pragma once
+// The exact solution as a simulator (issue 5, physics.md §8–9): the reference every
+// approximate model is measured against.
+#include <memory>
+#include <optional>
+
+#include "physics/exact_solution.hpp"
+#include "physics/simulator.hpp"
+
+namespace bookspin::physics {
+
+/// Simulator for `ModelKind::exact`. reset() builds an ExactRotation from
+/// ω0' = I_body⁻¹ L0 with L0 = I_body·ω0 + jiggle_delta_L(seed, jiggle), the same jiggled
+/// angular momentum the rigid models start from; step(dt) only advances t, and the state
+/// at t is evaluated exactly (no error accumulates with the number of steps).
+/// Corners are R(t)·body corners (3×8, world frame).
+class ExactModel final : public Simulator {
+ public:
+  /// Starts in the state of reset(InitialState{}).
+  explicit ExactModel(const Book& book);
+  void reset(const InitialState& initial) override;
+  void step(double dt) override;
+  Corners corners() const override;
+  /// physics.md §9 with the exact ω(t) and energy ½ ω·I_body ω; spring energy 0, |q| = 1.
+  Diagnostics diagnostics() const override;
+  bool finite() const override;
+
+  const ExactRotation& rotation() const { return *rotation_; }
+  const Eigen::Matrix3d& orientation() const { return R_; }  ///< R(t), body→world
+  double time() const { return t_; }
+
+ private:
+  Book book_;
+  std::optional<ExactRotation> rotation_;
+  Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
+  double t_ = 0.0;
+};
+
+/// The exact model for `book` (make_simulator() returns it for ModelKind::exact).
+std::unique_ptr<Simulator> make_exact_simulator(const Book& book);
+
+}  // namespace bookspin::physics

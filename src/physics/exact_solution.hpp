@@ -1,0 +1,111 @@
+#pragma once
+// The exact torque-free rotation of a rigid body (issue 5, physics.md §8): the body-frame
+// angular velocity from Jacobi elliptic functions and the orientation from the precession
+// of the body about the fixed angular momentum.
+#include <Eigen/Dense>
+#include <array>
+#include <vector>
+
+namespace bookspin::physics {
+
+/// Which motion an initial condition gives. Axes 1, 2, 3 are the principal axes sorted by
+/// moment, I1 ≤ I2 ≤ I3 (for the book: y, x, z). Source: physics.md §8.
+enum class ExactCase {
+  steady,           ///< ω is an eigenvector of I (principal-axis spin, ω = 0, or a plane of
+                    ///< equal moments): ω and the rotation axis stay constant
+  around_largest,   ///< case A, L² > 2E·I2: ω circles axis 3
+  around_smallest,  ///< case B, L² < 2E·I2: ω circles axis 1
+  separatrix,       ///< L² = 2E·I2, k = 1: ω tends to axis 2 forever, no period
+};
+
+/// ψ(u) = ∫ (dψ/du) du tabulated as piecewise Chebyshev series over one period [0, 2K] of
+/// the integrand (built and evaluated in exact_solution.cpp). Panel p holds `degree + 2`
+/// coefficients of the antiderivative on [p·width, (p+1)·width], zero at the panel start.
+struct PrecessionTable {
+  int degree = 0;                 ///< degree of the integrand's Chebyshev interpolant
+  double width = 0.0;             ///< panel width in u
+  std::vector<double> start;      ///< integral from 0 to each panel start (panels + 1 values)
+  std::vector<double> coeffs;     ///< panels × (degree + 2) antiderivative coefficients
+  int panels() const { return static_cast<int>(start.size()) - 1; }
+};
+
+/// Exact torque-free motion of a rigid body with principal moments `moments` (body x, y, z;
+/// any order and any equalities) that starts at the identity orientation with body-frame
+/// angular velocity ω0. World angular momentum L = I·ω0 and energy E = ½ ω0·I ω0 are
+/// conserved. Units: moments in mass·length², ω in rad per time unit, t in time units.
+///
+/// ω(t): physics.md §8 (Landau & Lifshitz, Mechanics §37), with the principal axes sorted
+/// by a signed permutation of det +1 so that Euler's equations keep their form. The
+/// orientation follows van Zon & Schofield, J. Comput. Phys. 225 (2007) (the idea is Landau
+/// & Lifshitz §37): the body-frame momentum L_b(t) = I ω(t) is exact, and
+/// R(t) = W · Rz(ψ(t)) · P(t), where P(t) turns body coordinates into a frame whose z axis is
+/// L_b(t)/|L| and whose x axis is the part of the reference axis r orthogonal to it, W is
+/// fixed by R(0) = I, and the precession angle obeys
+///   ψ̇ = |L| Σ_{i≠r} I_i ω_i² / Σ_{i≠r} I_i² ω_i²     (= |L|(2E − L_r ω_r)/(|L|² − L_r²)),
+/// the reference axis r being the one ω circles (3 in case A, 1 in case B), so the
+/// denominator never vanishes. ψ̇ has period T/2 and is integrated once per instance into a
+/// Chebyshev table (PrecessionTable), so ψ(t) costs a few flops at any t. Celledoni, Fassò,
+/// Säfström & Zanna, SIAM J. Sci. Comput. 30 (2008) give the same motion in closed form.
+class ExactRotation {
+ public:
+  /// Throws std::invalid_argument if a moment is not finite and positive or ω0 is not finite.
+  ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body);
+
+  /// Body-frame angular velocity ω(t) (rad per time unit); ω(0) = ω0 to round-off.
+  Eigen::Vector3d omega_body(double t) const;
+  /// Its time derivative, analytic (d sn = cn dn, d cn = −sn dn, d dn = −k² sn cn, times λ).
+  Eigen::Vector3d omega_dot_body(double t) const;
+  /// Body-frame angular momentum I ω(t).
+  Eigen::Vector3d angular_momentum_body(double t) const;
+  /// R(t), 3×3 rotation taking body coordinates to world coordinates; R(0) = I and
+  /// R(t)·I·ω(t) = L (world). About 2 µs per call (one Jacobi evaluation dominates).
+  Eigen::Matrix3d orientation(double t) const;
+  /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion.
+  double precession_angle(double t) const;
+
+  /// Period of ω, T = 4K(k)/λ (time units); infinite for steady motion and the separatrix.
+  double period() const;
+  /// Time between successive sign changes of ω about the intermediate axis, T/2 = 2K(k)/λ.
+  double flip_period() const;
+
+  double energy() const { return energy_; }  ///< E = ½ ω·I ω, energy units
+  double angular_momentum_norm() const { return L_norm_; }  ///< |L|
+  const Eigen::Vector3d& angular_momentum_world() const { return L_world_; }  ///< L, world
+  double modulus() const { return static_cast<double>(k_); }  ///< Jacobi modulus k (not m = k²)
+  double lambda() const { return static_cast<double>(lambda_); }  ///< λ in u = λt + u0, rad/time
+  ExactCase motion_case() const { return case_; }
+  const Eigen::Vector3d& moments() const { return moments_; }  ///< body x, y, z
+  const Eigen::Vector3d& omega0_body() const { return omega0_; }
+
+ private:
+  struct Jacobi {
+    long double sn, cn, dn;
+  };
+  void classify(const Eigen::Vector3d& w);
+  void set_amplitudes(long double d1, long double d2, long double d3);
+  void set_phase(const Eigen::Vector3d& w);
+  Jacobi jacobi(long double u) const;
+  long double phase(double t) const { return lambda_ * static_cast<long double>(t) + u0_; }
+  Eigen::Vector3d sorted_omega(const Jacobi& j) const;
+  long double precession_rate_u(long double u) const;
+  long double precession_integral(long double u) const;
+  Eigen::Matrix3d momentum_frame(const Eigen::Vector3d& L_sorted) const;
+  Eigen::Matrix3d rotation_from(const Eigen::Vector3d& L_sorted, double psi) const;
+
+  Eigen::Vector3d moments_;        ///< body x, y, z
+  Eigen::Vector3d omega0_;         ///< body frame
+  Eigen::Matrix3d to_sorted_;      ///< Q: sorted = Q · body, det Q = +1
+  Eigen::Vector3d I_;              ///< sorted moments I1 ≤ I2 ≤ I3
+  Eigen::Vector3d L_world_;
+  double energy_ = 0.0, L_norm_ = 0.0;
+  ExactCase case_ = ExactCase::steady;
+  int cn_axis_ = 0, dn_axis_ = 2;  ///< sorted axes carrying cn and dn (sn is always axis 2)
+  std::array<long double, 3> amplitude_{};  ///< signed, per sorted axis
+  long double k_ = 0.0L, kc2_ = 1.0L, lambda_ = 0.0L, u0_ = 0.0L, K_ = 0.0L;  ///< kc2_ = 1 − k²
+  Eigen::Matrix3d anchor_ = Eigen::Matrix3d::Identity();  ///< W, fixed by R(0) = I
+  PrecessionTable table_;
+  long double psi_half_ = 0.0L;    ///< ∫ dψ/du over one period 2K of u
+  long double psi_u0_ = 0.0L;      ///< ∫ dψ/du from 0 to u0
+};
+
+}  // namespace bookspin::physics

@@ -1,0 +1,100 @@
+#include "render/face_images.hpp"
+
+#include <fontconfig/fontconfig.h>
+#include <strings.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "render/cairo_draw.hpp"
+#include "render/cover_art.hpp"
+#include "render/render_error.hpp"
+
+namespace bookspin::render {
+
+namespace {
+
+using PatternPtr = std::unique_ptr<FcPattern, decltype(&FcPatternDestroy)>;
+
+// cairo's toy text API silently substitutes another face for a missing one; ask
+// fontconfig what the family really resolves to.
+std::string resolved_family(const std::string& family) {
+  PatternPtr pattern(FcNameParse(reinterpret_cast<const FcChar8*>(family.c_str())),
+                     &FcPatternDestroy);
+  if (!pattern) return {};
+  FcConfigSubstitute(nullptr, pattern.get(), FcMatchPattern);
+  FcDefaultSubstitute(pattern.get());
+  FcResult result = FcResultNoMatch;
+  PatternPtr match(FcFontMatch(nullptr, pattern.get(), &result), &FcPatternDestroy);
+  FcChar8* found = nullptr;
+  if (!match || FcPatternGetString(match.get(), FC_FAMILY, 0, &found) != FcResultMatch)
+    return {};
+  return reinterpret_cast<const char*>(found);
+}
+
+void require_default_fonts() {
+  static const bool checked = [] {
+    require_font("DejaVu Serif");
+    require_font("DejaVu Sans");
+    require_font("DejaVu Sans Mono");
+    return true;
+  }();
+  (void)checked;
+}
+
+std::string describe(cairo_status_t status, const std::string& path) {
+  if (!std::filesystem::exists(path)) return "file not found";
+  if (status == CAIRO_STATUS_READ_ERROR) return "not a readable PNG";
+  return cairo_status_to_string(status);
+}
+
+}  // namespace
+
+void require_font(const std::string& family) {
+  const std::string found = resolved_family(family);
+  if (strcasecmp(found.c_str(), family.c_str()) != 0)
+    throw RenderError("font '" + family + "' not found (fontconfig offers '" + found +
+                      "'); install fonts-dejavu-core");
+}
+
+RgbaImage generate_face_image(FaceImage which) {
+  require_default_fonts();
+  switch (which) {
+    case FaceImage::front: return art::front_cover();
+    case FaceImage::back: return art::back_cover();
+    case FaceImage::spine: return art::spine();
+    case FaceImage::pages: return art::pages();
+  }
+  throw RenderError("unknown face image");
+}
+
+RgbaImage load_face_image(const std::string& path, const char* face) {
+  draw::SurfacePtr png(cairo_image_surface_create_from_png(path.c_str()), &cairo_surface_destroy);
+  const cairo_status_t status = cairo_surface_status(png.get());
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw RenderError(std::string("cannot read the ") + face + " texture '" + path +
+                      "': " + describe(status, path));
+  const int width = cairo_image_surface_get_width(png.get());
+  const int height = cairo_image_surface_get_height(png.get());
+  if (width < 1 || height < 1)
+    throw RenderError(std::string("the ") + face + " texture '" + path + "' is empty");
+  // The book is opaque: flatten any transparency onto white paper.
+  auto flat = draw::make_surface(width, height);
+  auto ctx = draw::make_context(flat.get());
+  cairo_set_source_rgb(ctx.get(), 1, 1, 1);
+  cairo_paint(ctx.get());
+  cairo_set_source_surface(ctx.get(), png.get(), 0, 0);
+  cairo_paint(ctx.get());
+  return draw::to_rgba(flat.get());
+}
+
+FaceImages face_images(const std::string& front, const std::string& back,
+                       const std::string& spine, const std::string& pages) {
+  const auto one = [](const std::string& path, FaceImage which, const char* face) {
+    return path.empty() ? generate_face_image(which) : load_face_image(path, face);
+  };
+  return {one(front, FaceImage::front, "front"), one(back, FaceImage::back, "back"),
+          one(spine, FaceImage::spine, "spine"), one(pages, FaceImage::pages, "pages")};
+}
+
+}  // namespace bookspin::render

@@ -1,0 +1,133 @@
+#include "render/gl_util.hpp"
+
+#include <sstream>
+#include <vector>
+
+#include "render/render_error.hpp"
+
+namespace bookspin::render {
+
+namespace {
+
+std::string hex_name(const char* prefix, GLenum code) {
+  std::ostringstream out;
+  out << prefix << " 0x" << std::hex << code;
+  return out.str();
+}
+
+std::string shader_log(GLuint shader) {
+  GLint length = 0;
+  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
+  glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+  return log.data();
+}
+
+std::string program_log(GLuint program) {
+  GLint length = 0;
+  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
+  glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
+  return log.data();
+}
+
+GLuint compile(std::string_view name, GLenum type, std::string_view source) {
+  const GLuint shader = glCreateShader(type);
+  if (shader == 0) throw RenderError("glCreateShader failed for " + std::string(name));
+  const GLchar* text = source.data();
+  const GLint length = static_cast<GLint>(source.size());
+  glShaderSource(shader, 1, &text, &length);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    const std::string log = shader_log(shader);
+    glDeleteShader(shader);
+    const char* kind = type == GL_VERTEX_SHADER ? "vertex" : "fragment";
+    throw RenderError("cannot compile " + std::string(kind) + " shader of '" + std::string(name) +
+                      "': " + log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+std::string gl_error_name(GLenum code) {
+  switch (code) {
+    case GL_NO_ERROR: return "GL_NO_ERROR";
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return hex_name("GL error", code);
+  }
+}
+
+std::string framebuffer_status_name(GLenum status) {
+  switch (status) {
+    case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
+    case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+      return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
+      return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
+    default: return hex_name("framebuffer status", status);
+  }
+}
+
+void check_gl(std::string_view what) {
+  const GLenum first = glGetError();
+  if (first == GL_NO_ERROR) return;
+  // Drain the queue so a later check does not report this failure again.
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+  }
+  throw RenderError("OpenGL error " + gl_error_name(first) + " during " + std::string(what));
+}
+
+GLuint build_program(std::string_view name, std::string_view vertex_source,
+                     std::string_view fragment_source) {
+  const GLuint vertex = compile(name, GL_VERTEX_SHADER, vertex_source);
+  GLuint fragment = 0;
+  try {
+    fragment = compile(name, GL_FRAGMENT_SHADER, fragment_source);
+  } catch (...) {
+    glDeleteShader(vertex);
+    throw;
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, vertex);
+  glAttachShader(program, fragment);
+  glLinkProgram(program);
+  glDeleteShader(vertex);  // flagged; freed with the program
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    const std::string log = program_log(program);
+    glDeleteProgram(program);
+    throw RenderError("cannot link shader program '" + std::string(name) + "': " + log);
+  }
+  check_gl("building shader program " + std::string(name));
+  return program;
+}
+
+GLint uniform_location(GLuint program, const char* uniform) {
+  const GLint location = glGetUniformLocation(program, uniform);
+  if (location < 0) throw RenderError(std::string("shader has no active uniform '") + uniform + "'");
+  return location;
+}
+
+void delete_program(GLuint name) { glDeleteProgram(name); }
+void delete_buffer(GLuint name) { glDeleteBuffers(1, &name); }
+void delete_vertex_array(GLuint name) { glDeleteVertexArrays(1, &name); }
+void delete_texture(GLuint name) { glDeleteTextures(1, &name); }
+void delete_framebuffer(GLuint name) { glDeleteFramebuffers(1, &name); }
+void delete_renderbuffer(GLuint name) { glDeleteRenderbuffers(1, &name); }
+
+}  // namespace bookspin::render

@@ -1,0 +1,134 @@
+#include "render/passes.hpp"
+
+#include <cstddef>
+
+#include "render/book_faces.hpp"
+#include "render/embedded_shaders.hpp"  // generated from shaders/ at build time (build dir)
+
+namespace bookspin::render {
+
+namespace {
+
+GLuint new_vertex_array() {
+  GLuint name = 0;
+  glGenVertexArrays(1, &name);
+  return name;
+}
+
+GLuint new_buffer() {
+  GLuint name = 0;
+  glGenBuffers(1, &name);
+  return name;
+}
+
+void float_attribute(GLuint index, int components, GLsizei stride, std::size_t offset) {
+  glEnableVertexAttribArray(index);
+  glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(offset));
+}
+
+void set_camera(GLint view_location, GLint projection_location, const ViewProjection& camera) {
+  glUniformMatrix4fv(view_location, 1, GL_FALSE, camera.view.data());  // Eigen: column-major
+  glUniformMatrix4fv(projection_location, 1, GL_FALSE, camera.projection.data());
+}
+
+// Re-specifying the whole buffer each frame lets the driver orphan the old storage.
+template <typename Vertex>
+void stream(GLuint vbo, const std::vector<Vertex>& vertices) {
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+               vertices.data(), GL_STREAM_DRAW);
+}
+
+}  // namespace
+
+// ---- background -------------------------------------------------------------------------
+
+BackgroundPass::BackgroundPass()
+    : program_(build_program("background", shaders::background_vert, shaders::background_frag)),
+      vao_(new_vertex_array()) {
+  glUseProgram(program_.get());
+  glUniform3f(uniform_location(program_.get(), "u_top"), 0.34f, 0.40f, 0.49f);
+  glUniform3f(uniform_location(program_.get(), "u_bottom"), 0.075f, 0.085f, 0.11f);
+  check_gl("setting up the background");
+}
+
+void BackgroundPass::draw() const {
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  glUseProgram(program_.get());
+  glBindVertexArray(vao_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthMask(GL_TRUE);
+}
+
+// ---- book -------------------------------------------------------------------------------
+
+BookPass::BookPass(const FaceImages& images)
+    : program_(build_program("book", shaders::book_vert, shaders::book_frag)),
+      vao_(new_vertex_array()),
+      vbo_(new_buffer()),
+      textures_(images),
+      view_location_(uniform_location(program_.get(), "u_view")),
+      projection_location_(uniform_location(program_.get(), "u_projection")),
+      specular_location_(uniform_location(program_.get(), "u_specular")),
+      shininess_location_(uniform_location(program_.get(), "u_shininess")) {
+  glBindVertexArray(vao_.get());
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_.get());
+  const auto stride = static_cast<GLsizei>(sizeof(BookVertex));
+  float_attribute(0, 3, stride, offsetof(BookVertex, position));
+  float_attribute(1, 3, stride, offsetof(BookVertex, normal));
+  float_attribute(2, 2, stride, offsetof(BookVertex, uv));
+  glUseProgram(program_.get());
+  glUniform1i(uniform_location(program_.get(), "u_texture"), 0);
+  check_gl("setting up the book");
+}
+
+void BookPass::draw(const std::vector<BookVertex>& vertices, const ViewProjection& camera) {
+  if (vertices.empty()) return;
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glUseProgram(program_.get());
+  set_camera(view_location_, projection_location_, camera);
+  glBindVertexArray(vao_.get());
+  stream(vbo_.get(), vertices);
+  glActiveTexture(GL_TEXTURE0);
+  for (std::size_t f = 0; f < book_faces.size(); ++f) {
+    const bool cover = book_faces[f].image != FaceImage::pages;
+    // Cloth covers get a soft sheen; paper edges stay matte.
+    glUniform1f(specular_location_, cover ? 0.22f : 0.04f);
+    glUniform1f(shininess_location_, cover ? 28.0f : 8.0f);
+    glBindTexture(GL_TEXTURE_2D, textures_.texture(book_faces[f].image));
+    glDrawArrays(GL_TRIANGLES, static_cast<GLint>(f * vertices_per_face), vertices_per_face);
+  }
+}
+
+// ---- overlays ---------------------------------------------------------------------------
+
+OverlayPass::OverlayPass()
+    : program_(build_program("overlay", shaders::overlay_vert, shaders::overlay_frag)),
+      vao_(new_vertex_array()),
+      vbo_(new_buffer()),
+      view_location_(uniform_location(program_.get(), "u_view")),
+      projection_location_(uniform_location(program_.get(), "u_projection")) {
+  glBindVertexArray(vao_.get());
+  glBindBuffer(GL_ARRAY_BUFFER, vbo_.get());
+  const auto stride = static_cast<GLsizei>(sizeof(OverlayVertex));
+  float_attribute(0, 3, stride, offsetof(OverlayVertex, position));
+  float_attribute(1, 3, stride, offsetof(OverlayVertex, normal));
+  float_attribute(2, 3, stride, offsetof(OverlayVertex, color));
+  check_gl("setting up the overlays");
+}
+
+void OverlayPass::draw(const std::vector<OverlayVertex>& vertices, const ViewProjection& camera) {
+  if (vertices.empty()) return;
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glUseProgram(program_.get());
+  set_camera(view_location_, projection_location_, camera);
+  glBindVertexArray(vao_.get());
+  stream(vbo_.get(), vertices);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
+}
+
+}  // namespace bookspin::render

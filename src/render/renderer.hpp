@@ -1,0 +1,84 @@
+#pragma once
+// The render stage's door: draws a book given as 8 world-space corners, off-screen, headless
+// (EGL, OpenGL 3.3 core), into an RGBA image. Knows nothing of physics.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "common/rgba_image.hpp"
+#include "render/camera.hpp"
+#include "render/egl_context.hpp"
+#include "render/render_error.hpp"
+
+namespace bookspin::render {
+
+/// Half the largest diagonal of the default 1.878 × 2.9085 × 0.5 book, rounded up (world
+/// units): the bounding radius the default camera is placed for.
+inline constexpr double default_bounding_radius = 1.75;
+
+/// Optional PNG per face image; an empty path means the generated default.
+/// `pages` covers the fore-edge, top and bottom (see book_faces.hpp for orientations).
+struct FaceTextures {
+  std::string front, back, spine, pages;
+};
+
+struct RenderSettings {
+  int width = 1280;   ///< pixels, even, > 0
+  int height = 720;   ///< pixels, even, > 0
+  Camera camera = default_camera(default_bounding_radius, 1280, 720);
+  FaceTextures textures;
+  bool show_angular_momentum = false;  ///< yellow arrow from the origin along L
+  bool show_body_axes = false;         ///< red x, green y, blue z from the book's centre
+  int msaa_samples = 4;                ///< 1 = off; clamped to GL_MAX_SAMPLES
+};
+
+/// One frame's input.
+struct FrameInput {
+  /// 3×8, world, column p = corner p (physics.md §1: bit 0 = x, bit 1 = y, bit 2 = z).
+  /// Drawn exactly as given (stretched or exploded books too); any non-finite corner →
+  /// no book is drawn, only the background (and the L arrow if enabled).
+  Eigen::Matrix<double, 3, 8> corners = Eigen::Matrix<double, 3, 8>::Zero();
+  /// World direction of the angular momentum (any length; zero = no arrow).
+  Eigen::Vector3d angular_momentum_direction = Eigen::Vector3d::Zero();
+};
+
+/// Owns a headless GL context (EglContext), the face textures and the shaders.
+/// Not copyable; movable. Use from the thread that created it (the context is made current
+/// on each render call, so several Renderers may share a thread).
+class Renderer {
+ public:
+  /// Creates the context, builds shaders, generates/loads textures (once). Throws
+  /// RenderError: width/height not even and > 0, msaa_samples < 1, a degenerate camera,
+  /// a texture file missing or unreadable (message names face and file), a missing font,
+  /// or any EGL/GL failure.
+  explicit Renderer(const RenderSettings& settings);
+  ~Renderer();
+  Renderer(Renderer&&) noexcept;
+  Renderer& operator=(Renderer&&) noexcept;
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  /// Renders one frame: width×height RGBA, top row first, opaque. Throws RenderError on a
+  /// GL failure.
+  RgbaImage render(const FrameInput& frame);
+
+  const RenderSettings& settings() const;
+  /// Platform, vendor, renderer and version strings of this renderer's context.
+  const GlInfo& info() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Creates a temporary headless context and reports what it runs on (for `bookspin info`).
+/// Throws RenderError if no context can be created.
+GlInfo gl_info();
+
+/// Writes an RgbaImage to a PNG file (debugging, tests, "look" images; the production
+/// frame sink lives in the video stage). Throws RenderError if the file cannot be written.
+void write_png(const RgbaImage& image, const std::string& path);
+
+}  // namespace bookspin::render
