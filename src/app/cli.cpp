@@ -36,6 +36,18 @@ void add_render(CLI::App& cli, RenderOptions& options) {
       ->check(CLI::Range(1, 256));
 }
 
+void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "accuracy", "Compare every model and integrator with the exact solution over a range of dt");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML): book, initial spin, toggles")->required();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("-o,--out", options.out_dir, "Output directory for the CSV and the plot")->capture_default_str();
+  cmd->add_option("--flips", options.flips, "Run length in exact flip periods")
+      ->check(CLI::Range(1.0, 1000.0))->capture_default_str();
+  cmd->add_option("--dt", options.dts, "Time steps to try (time units)")
+      ->check(CLI::PositiveNumber)->take_all();
+}
+
 int report(const std::string& message, int code) {
   std::cerr << "bookspin: error: " << message << '\n';
   return code;
@@ -50,6 +62,8 @@ int run_cli(int argc, char** argv) {
   add_simulate(cli, simulate);
   RenderOptions render;
   add_render(cli, render);
+  AccuracyOptions accuracy;
+  add_accuracy(cli, accuracy);
   cli.add_subcommand("info", "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders");
   try {
     cli.parse(argc, argv);
@@ -64,6 +78,7 @@ int run_cli(int argc, char** argv) {
     if (cli.got_subcommand("simulate")) return simulate_command(simulate);
     if (cli.got_subcommand("render")) return render_command(render);
     if (cli.got_subcommand("info")) return info_command();
+    if (cli.got_subcommand("accuracy")) return accuracy_command(accuracy);
   } catch (const scene::SceneError& e) {
     return report(e.what(), kExitUsage);
   } catch (const std::invalid_argument& e) {

@@ -29,6 +29,18 @@ struct RenderOptions {
 /// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv.
 int render_command(const RenderOptions& options);
 
+struct AccuracyOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_dir = "out";
+  double flips = 10.0;
+  std::vector<double> dts{1.0 / 15, 1.0 / 30, 1.0 / 60, 1.0 / 120, 1.0 / 240};
+};
+
+/// Every model × integrator × dt against the exact solution: table on stdout,
+/// OUT/<scene>-accuracy.csv and a log-log plot OUT/<scene>-accuracy.png.
+int accuracy_command(const AccuracyOptions& options);
+
 /// Prints the EGL/GL and FFmpeg set-up.
 int info_command();
 

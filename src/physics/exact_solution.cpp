@@ -197,10 +197,11 @@ void ExactRotation::classify(const Eigen::Vector3d& w) {
   set_amplitudes(d1, d2, d3);
 }
 
-// Amplitudes, λ and k of physics.md §8; k'² = 1 − k² from the identity
-// (I3 − I2)(L² − 2E·I1) − (I2 − I1)(2E·I3 − L²) = (I3 − I1)(L² − 2E·I2), accurate near k = 1. Case A (and the separatrix): ω1 ∝ cn, ω3 ∝ dn;
+// Amplitudes, λ and k of physics.md §8. Case A (and the separatrix): ω1 ∝ cn, ω3 ∝ dn;
 // case B: ω1 ∝ dn, ω3 ∝ cn; ω2 ∝ sn always. The denominators are positive whenever the
 // motion is not steady (then I3 > I2 and ω3 ≠ 0 in case A, I2 > I1 and ω1 ≠ 0 in case B).
+// k'² = 1 − k² comes from (I3 − I2)(L² − 2E·I1) − (I2 − I1)(2E·I3 − L²) = (I3 − I1)(L² − 2E·I2)
+// rather than from 1 − k², which would lose digits near the separatrix.
 void ExactRotation::set_amplitudes(long double d1, long double d2, long double d3) {
   const Real I1 = I_[0], I2 = I_[1], I3 = I_[2];
   Real k2;

@@ -58,7 +58,8 @@ class ExactRotation {
   /// Body-frame angular momentum I ω(t).
   Eigen::Vector3d angular_momentum_body(double t) const;
   /// R(t), 3×3 rotation taking body coordinates to world coordinates; R(0) = I and
-  /// R(t)·I·ω(t) = L (world). About 2 µs per call (one Jacobi evaluation dominates).
+  /// R(t)·I·ω(t) = L (world). About 2–5 µs per call (one long-double Jacobi evaluation
+  /// dominates); on the separatrix ψ is integrated adaptively each call (~100 µs).
   Eigen::Matrix3d orientation(double t) const;
   /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion.
   double precession_angle(double t) const;

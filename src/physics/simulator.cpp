@@ -4,6 +4,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "physics/exact_model.hpp"
 #include "physics/particle_model.hpp"
 #include "physics/rigid_matrix_model.hpp"
 #include "physics/rigid_quaternion_model.hpp"
@@ -105,7 +106,7 @@ std::unique_ptr<Simulator> make_simulator(const Book& book, const ModelConfig& c
     case ModelKind::exact:
       break;
   }
-  throw std::invalid_argument("model 'exact' is not available yet");
+  return make_exact_simulator(book);
 }
 
 }  // namespace bookspin::physics

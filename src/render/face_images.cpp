@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <memory>
+#include <mutex>
+#include <optional>
 
 #include "render/cairo_draw.hpp"
 #include "render/cover_art.hpp"
@@ -42,6 +44,17 @@ void require_default_fonts() {
   (void)checked;
 }
 
+RgbaImage draw_face_image(FaceImage which) {
+  require_default_fonts();
+  switch (which) {
+    case FaceImage::front: return art::front_cover();
+    case FaceImage::back: return art::back_cover();
+    case FaceImage::spine: return art::spine();
+    case FaceImage::pages: return art::pages();
+  }
+  throw RenderError("unknown face image");
+}
+
 std::string describe(cairo_status_t status, const std::string& path) {
   if (!std::filesystem::exists(path)) return "file not found";
   if (status == CAIRO_STATUS_READ_ERROR) return "not a readable PNG";
@@ -58,14 +71,14 @@ void require_font(const std::string& family) {
 }
 
 RgbaImage generate_face_image(FaceImage which) {
-  require_default_fonts();
-  switch (which) {
-    case FaceImage::front: return art::front_cover();
-    case FaceImage::back: return art::back_cover();
-    case FaceImage::spine: return art::spine();
-    case FaceImage::pages: return art::pages();
-  }
-  throw RenderError("unknown face image");
+  // The art never changes within a process: draw each image once, hand out copies
+  // (a second Renderer, e.g. a preview next to a video, then starts faster).
+  static std::mutex mutex;
+  static std::array<std::optional<RgbaImage>, 4> cache;
+  const std::lock_guard lock(mutex);
+  auto& slot = cache[static_cast<std::size_t>(which)];
+  if (!slot) slot = draw_face_image(which);
+  return *slot;
 }
 
 RgbaImage load_face_image(const std::string& path, const char* face) {

@@ -27,6 +27,8 @@ struct FaceTextures {
 struct RenderSettings {
   int width = 1280;   ///< pixels, even, > 0
   int height = 720;   ///< pixels, even, > 0
+  /// Defaults to default_camera(default_bounding_radius, 1280, 720); call default_camera
+  /// again for another image shape or book size.
   Camera camera = default_camera(default_bounding_radius, 1280, 720);
   FaceTextures textures;
   bool show_angular_momentum = false;  ///< yellow arrow from the origin along L

@@ -99,8 +99,7 @@ bool exists_no_follow(const fs::path& path) {
 // ---- AtomicFile -----------------------------------------------------------------
 
 AtomicFile::AtomicFile(fs::path final_path)
-    : final_path_(normalise(std::move(final_path))),
-      temp_path_(sibling_name(final_path_, "tmp")) {
+    : final_path_(normalise(std::move(final_path))), temp_path_(sibling_name(final_path_, "tmp")) {
   register_temporary(temp_path_, false);
 }
 
@@ -130,8 +129,7 @@ void AtomicFile::abandon() noexcept {
 // ---- AtomicDirectory ------------------------------------------------------------
 
 AtomicDirectory::AtomicDirectory(fs::path final_path)
-    : final_path_(normalise(std::move(final_path))),
-      temp_path_(sibling_name(final_path_, "tmp")) {
+    : final_path_(normalise(std::move(final_path))), temp_path_(sibling_name(final_path_, "tmp")) {
   std::error_code ec;
   const auto status = fs::symlink_status(final_path_, ec);
   if (fs::exists(status) && !fs::is_directory(status)) {
@@ -140,8 +138,8 @@ AtomicDirectory::AtomicDirectory(fs::path final_path)
   }
   if (final_path_.has_parent_path()) {
     fs::create_directories(final_path_.parent_path(), ec);
-    if (ec) throw_output_error("cannot create parent of output directory", final_path_,
-                               ec.message());
+    if (ec)
+      throw_output_error("cannot create parent of output directory", final_path_, ec.message());
   }
   // A leftover with our exact name can only come from a dead process whose
   // pid we reuse, so it is safe to clear.

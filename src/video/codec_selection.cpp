@@ -78,7 +78,8 @@ OpenedEncoder open_fallback(const EncoderSettings& settings, bool global_header,
                             std::string reason) {
   const AVCodec* x264 = avcodec_find_encoder_by_name(kFallbackEncoder);
   if (x264 == nullptr) {
-    throw EncoderError(reason + "; libx264 is not in this FFmpeg build either, so no H.264 "
+    throw EncoderError(reason +
+                       "; libx264 is not in this FFmpeg build either, so no H.264 "
                        "encoder is available (install FFmpeg's libavcodec with libx264)");
   }
   std::string preset = settings.preset;
@@ -96,7 +97,7 @@ OpenedEncoder open_fallback(const EncoderSettings& settings, bool global_header,
 
 bool is_x264_preset(const std::string& preset) {
   static constexpr std::array<const char*, 10> kPresets = {
-      "ultrafast", "superfast", "veryfast", "faster", "fast",
+      "ultrafast", "superfast", "veryfast", "faster",   "fast",
       "medium",    "slow",      "slower",   "veryslow", "placebo"};
   for (const char* name : kPresets) {
     if (preset == name) return true;
@@ -114,8 +115,9 @@ OpenedEncoder open_h264_encoder(const EncoderSettings& settings, bool global_hea
   const AVCodec* codec = avcodec_find_encoder_by_name(settings.codec.c_str());
   if (codec == nullptr) {
     if (wants_x264) {
-      throw EncoderError("libx264 is not in this FFmpeg build (install FFmpeg's libavcodec "
-                         "with libx264)");
+      throw EncoderError(
+          "libx264 is not in this FFmpeg build (install FFmpeg's libavcodec "
+          "with libx264)");
     }
     return open_fallback(settings, global_header,
                          "encoder \"" + settings.codec + "\" is not in this FFmpeg build");

@@ -15,8 +15,8 @@ std::string version_text(unsigned version) {
 // Run-time and build-time versions differ when the shared libraries were
 // upgraded under the binary; worth seeing when an encoder misbehaves.
 std::string library_line(const char* name, unsigned runtime, unsigned built) {
-  return std::string(name) + " " + version_text(runtime) + " (built with " +
-         version_text(built) + ")";
+  return std::string(name) + " " + version_text(runtime) + " (built with " + version_text(built) +
+         ")";
 }
 
 }  // namespace
@@ -42,7 +42,8 @@ std::vector<std::string> ffmpeg_info() {
   };
   for (const std::string& name : h264_encoders()) {
     const std::string why = probe_encoder(name);
-    lines.push_back("H.264 encoder " + name + ": " + (why.empty() ? "usable" : "unusable (" + why + ")"));
+    lines.push_back("H.264 encoder " + name + ": " +
+                    (why.empty() ? "usable" : "unusable (" + why + ")"));
   }
   return lines;
 }

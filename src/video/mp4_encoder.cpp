@@ -23,8 +23,7 @@ void validate(const EncoderSettings& settings) {
     throw std::invalid_argument("MP4 size " + size + " is odd: 4:2:0 video needs even sizes");
   }
   if (settings.fps < 1 || settings.fps > 1000) {
-    throw std::invalid_argument("MP4 fps " + std::to_string(settings.fps) +
-                                " is outside 1…1000");
+    throw std::invalid_argument("MP4 fps " + std::to_string(settings.fps) + " is outside 1…1000");
   }
   if (settings.crf < 0 || settings.crf > 51) {
     throw std::invalid_argument("MP4 crf " + std::to_string(settings.crf) + " is outside 0…51");
@@ -172,8 +171,9 @@ void Mp4Encoder::add_frame(const RgbaImage& image) {
   // The encoder may still reference the previous picture's buffer.
   const int rc = av_frame_make_writable(s.frame.get());
   if (rc < 0) throw EncoderError("frame buffer: " + libav::error_text(rc));
-  const std::uint8_t* source[1] = {image.pixels.data()};
-  const int source_stride[1] = {image.width * 4};
+  // sws_scale reads four plane pointers and strides, even for packed RGBA.
+  const std::uint8_t* source[4] = {image.pixels.data(), nullptr, nullptr, nullptr};
+  const int source_stride[4] = {image.width * 4, 0, 0, 0};
   sws_scale(s.scaler.get(), source, source_stride, 0, image.height, s.frame->data,
             s.frame->linesize);
   s.frame->pts = s.frames_added;

@@ -21,11 +21,11 @@ class EncoderError : public std::runtime_error {
 struct EncoderSettings {
   int width = 0;
   int height = 0;
-  int fps = 30;                    ///< frames per second, 1…1000; also the time base 1/fps
-  std::string codec = "libx264";   ///< any H.264 encoder name; falls back to libx264
-  int crf = 18;                    ///< constant-quality factor 0 (lossless) … 51 (worst);
-                                   ///< sent as "crf", or "cq" to encoders without crf
-  std::string preset = "medium";   ///< encoder speed preset, e.g. x264 "ultrafast"…"placebo"
+  int fps = 30;                   ///< frames per second, 1…1000; also the time base 1/fps
+  std::string codec = "libx264";  ///< any H.264 encoder name; falls back to libx264
+  int crf = 18;                   ///< constant-quality factor 0 (lossless) … 51 (worst);
+                                  ///< sent as "crf", or "cq" to encoders without crf
+  std::string preset = "medium";  ///< encoder speed preset, e.g. x264 "ultrafast"…"placebo"
 };
 
 /// Encodes RGBA frames into an MP4 with one H.264 yuv420p stream, constant

@@ -72,8 +72,8 @@ struct PngReadHandle {
 
 void validate_for_writing(const RgbaImage& image, int compression_level) {
   if (image.width <= 0 || image.height <= 0) {
-    throw std::invalid_argument("write_png: image is empty (" + std::to_string(image.width) +
-                                "x" + std::to_string(image.height) + ")");
+    throw std::invalid_argument("write_png: image is empty (" + std::to_string(image.width) + "x" +
+                                std::to_string(image.height) + ")");
   }
   if (image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     throw std::invalid_argument("write_png: pixel buffer size does not match width·height·4");
@@ -140,9 +140,9 @@ bool read_header(png_structp png, png_infop info, png_uint_32* width, png_uint_3
                  std::size_t* row_bytes) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_read_info(png, info);
-  png_set_expand(png);         // palette → RGB, grey < 8 bit → 8 bit, tRNS → alpha
-  png_set_strip_16(png);       // 16 → 8 bit
-  png_set_gray_to_rgb(png);    // grey → RGB
+  png_set_expand(png);       // palette → RGB, grey < 8 bit → 8 bit, tRNS → alpha
+  png_set_strip_16(png);     // 16 → 8 bit
+  png_set_gray_to_rgb(png);  // grey → RGB
   png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);  // only acts when there is no alpha yet
   png_set_interlace_handling(png);
   png_read_update_info(png, info);
@@ -179,8 +179,8 @@ RgbaImage read_png(const std::filesystem::path& path) {
   }
   constexpr png_uint_32 kMaxSide = 1u << 15;  // 32768: far beyond any frame we make
   if (width == 0 || height == 0 || width > kMaxSide || height > kMaxSide) {
-    throw_read_error(path, "unsupported size " + std::to_string(width) + "x" +
-                               std::to_string(height));
+    throw_read_error(path,
+                     "unsupported size " + std::to_string(width) + "x" + std::to_string(height));
   }
   if (row_bytes != static_cast<std::size_t>(width) * 4) {
     throw_read_error(path, "libpng did not produce 8-bit RGBA rows");

@@ -44,14 +44,18 @@ class RendererTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     from_front = std::make_unique<Renderer>(axis_view({0, 0, 1}));
-    from_back = std::make_unique<Renderer>(axis_view({0, 0, -1}));
     background = from_front->render(nan_frame());
   }
   static void TearDownTestSuite() {
     from_front.reset();
-    from_back.reset();
+    back_renderer.reset();
   }
-  static inline std::unique_ptr<Renderer> from_front, from_back;
+  // Made on first use: CTest runs every test in its own process.
+  static Renderer& from_back() {
+    if (!back_renderer) back_renderer = std::make_unique<Renderer>(axis_view({0, 0, -1}));
+    return *back_renderer;
+  }
+  static inline std::unique_ptr<Renderer> from_front, back_renderer;
   static inline RgbaImage background;
 };
 
@@ -105,7 +109,7 @@ TEST_F(RendererTest, MovingTheCornersMovesTheBook) {
 // Front cover dark blue, back cover burgundy: the right one faces the right camera.
 TEST_F(RendererTest, FrontAndBackCoversDifferAndFaceTheRightWay) {
   const Mask front = difference_mask(from_front->render(book_frame()), background);
-  const Mask back = difference_mask(from_back->render(book_frame()), background);
+  const Mask back = difference_mask(from_back().render(book_frame()), background);
   EXPECT_GT(front.mean_color.z(), front.mean_color.x() + 10) << "front should be blue";
   EXPECT_GT(back.mean_color.x(), back.mean_color.z() + 10) << "back should be red";
   // Turning the book half around y shows the back to the +z camera.
@@ -117,7 +121,7 @@ TEST_F(RendererTest, FrontAndBackCoversDifferAndFaceTheRightWay) {
 // The back's barcode (near-white box) sits at the lower right seen from −z: not mirrored,
 // not upside down.
 TEST_F(RendererTest, BackCoverIsNotMirrored) {
-  const RgbaImage image = from_back->render(book_frame());
+  const RgbaImage image = from_back().render(book_frame());
   const Mask book = difference_mask(image, background);
   double sum_x = 0, sum_y = 0;
   int count = 0;
@@ -167,7 +171,7 @@ TEST_F(RendererTest, InfoNamesPlatformAndGl33) {
 // (sharing the EGL display) must not break them.
 TEST_F(RendererTest, SeveralRenderersCoexist) {
   const RgbaImage before = from_front->render(book_frame());
-  from_back->render(book_frame());
+  from_back().render(book_frame());
   { const GlInfo info = gl_info(); }
   const RgbaImage after = from_front->render(book_frame());
   EXPECT_EQ(before.pixels, after.pixels);
@@ -242,6 +246,13 @@ TEST(RendererErrors, BadSizesThrow) {
   expect_error(settings, "msaa_samples");
 }
 
+TEST(RendererErrors, SizeBeyondTheGlLimitThrows) {
+  RenderSettings settings;
+  settings.width = 1 << 20;
+  settings.height = 2;
+  expect_error(settings, "GL_MAX_RENDERBUFFER_SIZE");
+}
+
 TEST(RendererErrors, DegenerateCameraThrows) {
   RenderSettings settings;
   settings.camera.eye = settings.camera.target;
@@ -295,6 +306,58 @@ TEST(RendererTextures, CustomFrontPngIsUsed) {
   EXPECT_GT(mask.mean_color.y(), mask.mean_color.x() + 50);
   EXPECT_GT(mask.mean_color.y(), mask.mean_color.z() + 50);
   std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace bookspin::render
+
+// ---- EGL platform steps -------------------------------------------------------------
+
+namespace bookspin::render {
+namespace {
+
+// Each step alone must give a working context where the implementation offers it
+// (Mesa offers both the device and the surfaceless platform).
+void expect_platform_works(const char* platform, const char* missing_marker, const char* label) {
+  ::setenv("BOOKSPIN_EGL_PLATFORM", platform, 1);
+  try {
+    const GlInfo info = gl_info();
+    ::unsetenv("BOOKSPIN_EGL_PLATFORM");
+    EXPECT_NE(info.egl_platform.find(label), std::string::npos) << info.egl_platform;
+  } catch (const RenderError& error) {
+    ::unsetenv("BOOKSPIN_EGL_PLATFORM");
+    if (std::string(error.what()).find(missing_marker) != std::string::npos)
+      GTEST_SKIP() << error.what();
+    FAIL() << error.what();
+  }
+}
+
+TEST(EglPlatforms, DevicePlatformAlone) {
+  expect_platform_works("device", "no EGL_EXT_device_enumeration", "device platform");
+}
+
+TEST(EglPlatforms, SurfacelessPlatformAlone) {
+  expect_platform_works("surfaceless", "no EGL_MESA_platform_surfaceless", "surfaceless");
+}
+
+TEST(EglPlatforms, UnknownPlatformNameThrows) {
+  ::setenv("BOOKSPIN_EGL_PLATFORM", "wayland", 1);
+  EXPECT_THROW(gl_info(), RenderError);
+  ::unsetenv("BOOKSPIN_EGL_PLATFORM");
+}
+
+TEST(EglPlatforms, ExplicitDeviceZeroWorks) {
+  ::setenv("BOOKSPIN_EGL_DEVICE", "0", 1);
+  try {
+    const GlInfo info = gl_info();
+    EXPECT_NE(info.egl_platform.find("device 0"), std::string::npos) << info.egl_platform;
+  } catch (const RenderError& error) {
+    ::unsetenv("BOOKSPIN_EGL_DEVICE");
+    if (std::string(error.what()).find("no device platform") != std::string::npos)
+      GTEST_SKIP() << error.what();
+    ADD_FAILURE() << error.what();
+  }
+  ::unsetenv("BOOKSPIN_EGL_DEVICE");
 }
 
 }  // namespace

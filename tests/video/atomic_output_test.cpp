@@ -12,9 +12,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::ScratchDir;
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
+void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path);

@@ -43,16 +43,16 @@ void check(int rc, const char* what) {
 RgbaImage to_rgba(const AVFrame* frame) {
   std::unique_ptr<SwsContext, SwsFreer> sws(sws_getContext(
       frame->width, frame->height, static_cast<AVPixelFormat>(frame->format), frame->width,
-      frame->height, AV_PIX_FMT_RGBA, SWS_BICUBIC | SWS_ACCURATE_RND,
-      nullptr, nullptr, nullptr));
+      frame->height, AV_PIX_FMT_RGBA, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
+      nullptr, nullptr));
   if (!sws) throw std::runtime_error("sws_getContext failed");
   const int matrix = frame->colorspace == AVCOL_SPC_BT709 ? SWS_CS_ITU709 : SWS_CS_DEFAULT;
   const int* table = sws_getCoefficients(matrix);
   const int full_range = frame->color_range == AVCOL_RANGE_JPEG ? 1 : 0;
   sws_setColorspaceDetails(sws.get(), table, full_range, table, 1, 0, 1 << 16, 1 << 16);
   RgbaImage image(frame->width, frame->height);
-  std::uint8_t* dst[1] = {image.pixels.data()};
-  const int dst_stride[1] = {image.width * 4};
+  std::uint8_t* dst[4] = {image.pixels.data(), nullptr, nullptr, nullptr};  // sws reads 4
+  const int dst_stride[4] = {image.width * 4, 0, 0, 0};
   sws_scale(sws.get(), frame->data, frame->linesize, 0, frame->height, dst, dst_stride);
   return image;
 }

@@ -11,16 +11,16 @@
 namespace bookspin::video::testing {
 
 struct Mp4Probe {
-  std::string format_name;    ///< demuxer, e.g. "mov,mp4,m4a,3gp,3g2,mj2"
+  std::string format_name;  ///< demuxer, e.g. "mov,mp4,m4a,3gp,3g2,mj2"
   int video_streams = 0;
-  std::string codec;          ///< e.g. "h264"
-  std::string pix_fmt;        ///< e.g. "yuv420p"
-  std::string color_space;    ///< e.g. "bt709"
+  std::string codec;        ///< e.g. "h264"
+  std::string pix_fmt;      ///< e.g. "yuv420p"
+  std::string color_space;  ///< e.g. "bt709"
   int width = 0, height = 0;
   int r_frame_rate_num = 0, r_frame_rate_den = 0;
   int avg_frame_rate_num = 0, avg_frame_rate_den = 0;
-  std::int64_t nb_frames = 0;        ///< as stored in the container
-  std::vector<RgbaImage> frames;     ///< every decoded frame, display order, as RGBA
+  std::int64_t nb_frames = 0;     ///< as stored in the container
+  std::vector<RgbaImage> frames;  ///< every decoded frame, display order, as RGBA
 };
 
 /// Throws std::runtime_error if the file cannot be opened or decoded.

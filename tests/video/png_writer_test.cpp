@@ -24,8 +24,9 @@ bool contains(const std::string& text, const std::string& part) {
 }
 
 // Writes a PNG in another layout with libpng's simplified API (no setjmp).
-void write_other_png(const fs::path& path, png_uint_32 format, const std::vector<std::uint8_t>& data,
-                     int width, int height, const std::vector<std::uint8_t>* colormap = nullptr) {
+void write_other_png(const fs::path& path, png_uint_32 format,
+                     const std::vector<std::uint8_t>& data, int width, int height,
+                     const std::vector<std::uint8_t>* colormap = nullptr) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   image.width = width;

@@ -1,0 +1,62 @@
+#pragma once
+// How far each model × integrator is from the exact motion (issue 5). The door of
+// src/analysis: pure computation on top of src/physics (timing by std::chrono only).
+#include <vector>
+
+#include "physics/exact_solution.hpp"
+#include "physics/simulator.hpp"
+
+namespace bookspin::analysis {
+
+struct Method {
+  physics::ModelKind kind;
+  physics::Integrator integrator;
+};
+
+/// Every supported pair except "exact": particle × {euler, symplectic-euler,
+/// velocity-verlet}, rigid-matrix and rigid-quaternion × {euler, rk4, implicit-midpoint,
+/// splitting}.
+std::vector<Method> all_methods();
+
+struct AccuracySettings {
+  physics::Book book;
+  physics::InitialState initial;
+  physics::ModelConfig model;  ///< normalize, damping, k; kind and integrator are replaced
+  double flips = 10.0;         ///< run length in flip periods T/2 = 2K(k)/λ
+};
+
+struct AccuracyRow {
+  Method method;
+  double dt = 0.0;
+  long steps = 0;
+  double t_end = 0.0;
+  /// Angle (rad) of R_exactᵀ R_fit at t_end, R_fit the best-fit rotation of the corners
+  /// (the orientation itself for rigid models whose R is a rotation).
+  double orientation_error = 0.0;
+  double energy_drift = 0.0;   ///< max |E/E0 − 1| over the run
+  double L_drift = 0.0;        ///< max ||L|/|L0| − 1| over the run
+  double flip_period = 0.0;    ///< mean spacing of the intermediate axis' sign changes
+  double flip_period_error = 0.0;  ///< |flip_period / exact − 1|; NaN if < 2 flips seen
+  double ns_per_step = 0.0;    ///< wall time of step() alone
+  bool diverged = false;
+};
+
+/// Runs one method at one dt from `settings.initial` for `settings.flips` exact flip periods.
+/// Throws std::invalid_argument if the exact motion has no flip period (separatrix or a
+/// pure principal-axis spin).
+AccuracyRow measure(const AccuracySettings& settings, const physics::ExactRotation& exact,
+                    const Method& method, double dt);
+
+/// The exact reference for `settings` (same jiggled initial L as every model).
+physics::ExactRotation exact_reference(const AccuracySettings& settings);
+
+/// Angle between two rotations, 2·asin(‖A − B‖_F / √8): accurate for tiny angles.
+double rotation_angle_between(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b);
+
+/// Orientation error at time t_end of `method` at step `dt` (no flip bookkeeping; for
+/// convergence-order checks).
+double orientation_error_at(const AccuracySettings& settings,
+                            const physics::ExactRotation& exact, const Method& method,
+                            double dt, double t_end);
+
+}  // namespace bookspin::analysis

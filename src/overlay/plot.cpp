@@ -1,0 +1,218 @@
+#include "overlay/plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "overlay/cairo_canvas.hpp"
+
+namespace bookspin::overlay {
+
+namespace {
+
+struct Axis {
+  double lo = 0, hi = 1;
+  bool log = false;
+  double map(double v, double a, double b) const {  // value → pixel in [a, b]
+    const double f = log ? (std::log10(v) - lo) / (hi - lo) : (v - lo) / (hi - lo);
+    return a + f * (b - a);
+  }
+};
+
+bool usable(double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); }
+
+Axis fit_axis(const std::vector<Series>& series, bool use_x, bool log) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& s : series) {
+    for (double v : use_x ? s.x : s.y) {
+      if (!usable(v, log)) continue;
+      lo = std::min(lo, log ? std::log10(v) : v);
+      hi = std::max(hi, log ? std::log10(v) : v);
+    }
+  }
+  if (!std::isfinite(lo)) lo = 0, hi = 1;
+  if (hi - lo < 1e-12) lo -= 0.5, hi += 0.5;
+  if (log) {
+    lo = std::floor(lo), hi = std::ceil(hi);
+  } else if (!use_x) {
+    const double pad = 0.06 * (hi - lo);
+    lo -= pad, hi += pad;
+  }
+  return {lo, hi, log};
+}
+
+double nice_step(double span) {
+  const double raw = span / 5.0, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * magnitude >= raw) return m * magnitude;
+  return 10.0 * magnitude;
+}
+
+std::vector<double> ticks(const Axis& a) {
+  std::vector<double> out;
+  if (a.log) {
+    const int stride = std::max(1, static_cast<int>((a.hi - a.lo) / 8.0) + 1);
+    for (int e = static_cast<int>(a.lo); e <= static_cast<int>(a.hi); e += stride)
+      out.push_back(std::pow(10.0, e));
+    return out;
+  }
+  const double step = nice_step(a.hi - a.lo);
+  for (double v = std::ceil(a.lo / step) * step; v <= a.hi + 1e-9 * step; v += step)
+    out.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  return out;
+}
+
+std::string tick_label(double v, bool log) {
+  char text[32];
+  if (log) {
+    std::snprintf(text, sizeof text, "1e%d", static_cast<int>(std::lround(std::log10(v))));
+  } else {
+    std::snprintf(text, sizeof text, "%g", v);
+  }
+  return text;
+}
+
+void text_at(cairo_t* cr, const std::string& s, double x, double y, double align_x, double align_y) {
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, s.c_str(), &e);
+  cairo_move_to(cr, x - align_x * e.x_advance, y + align_y * e.height);
+  cairo_show_text(cr, s.c_str());
+}
+
+void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, double x0,
+                 double x1, double y0, double y1, double line_width) {
+  cairo_set_source_rgb(cr, s.r, s.g, s.b);
+  cairo_set_line_width(cr, line_width);
+  const double dash[] = {4 * line_width, 2.5 * line_width};
+  cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+  bool pen_down = false;
+  for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+    if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) {
+      pen_down = false;
+      continue;
+    }
+    const double px = ax.map(s.x[i], x0, x1), py = ay.map(s.y[i], y1, y0);
+    pen_down ? cairo_line_to(cr, px, py) : cairo_move_to(cr, px, py);
+    pen_down = true;
+  }
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0);
+  if (s.x.size() <= 16) {  // few points: mark them
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) continue;
+      cairo_arc(cr, ax.map(s.x[i], x0, x1), ay.map(s.y[i], y1, y0), 1.6 * line_width, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+  }
+}
+
+double legend_box_width(cairo_t* cr, const PlotSpec& spec, double font) {
+  double width = 0;
+  for (const auto& s : spec.series) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, s.label.c_str(), &e);
+    width = std::max(width, e.x_advance);
+  }
+  return width + 3.2 * font;
+}
+
+/// The legend sits to the right of the plot area, so it never hides data.
+void draw_legend(cairo_t* cr, const PlotSpec& spec, double x1, double y0, double font) {
+  const double row = 1.3 * font, box_w = legend_box_width(cr, spec, font), left = x1 + 0.8 * font;
+  cairo_rectangle(cr, left, y0 + 0.4 * font, box_w, row * spec.series.size() + 0.5 * font);
+  cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
+  cairo_set_line_width(cr, 1);
+  cairo_stroke(cr);
+  double y = y0 + 0.4 * font + row;
+  for (const auto& s : spec.series) {
+    cairo_set_source_rgb(cr, s.r, s.g, s.b);
+    cairo_set_line_width(cr, 0.18 * font);
+    const double dash[] = {0.5 * font, 0.3 * font};
+    cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+    cairo_move_to(cr, left + 0.4 * font, y - 0.35 * font);
+    cairo_line_to(cr, left + 2.2 * font, y - 0.35 * font);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    text_at(cr, s.label, left + 2.7 * font, y, 0, 0);
+    y += row;
+  }
+}
+
+}  // namespace
+
+void palette_colour(int index, double& r, double& g, double& b) {
+  static const double colours[][3] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45},
+                                      {0.80, 0.47, 0.65}, {0.90, 0.62, 0.00}, {0.34, 0.71, 0.91},
+                                      {0.60, 0.60, 0.20}, {0.00, 0.00, 0.00}};
+  const auto& c = colours[index % 8];
+  r = c[0], g = c[1], b = c[2];
+}
+
+void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec) {
+  const double font = std::clamp(height / 22.0, 9.0, 18.0);
+  cairo_save(cr);
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, font);
+  const double legend_width = spec.legend ? legend_box_width(cr, spec, font) + 0.8 * font : 0.0;
+  const double x0 = x + 5.2 * font, x1 = x + width - 1.4 * font - legend_width;
+  const double y0 = y + (spec.title.empty() ? 0.8 : 2.0) * font, y1 = y + height - 3.2 * font;
+  const Axis ax = fit_axis(spec.series, true, spec.log_x), ay = fit_axis(spec.series, false, spec.log_y);
+  cairo_set_line_width(cr, 1);
+  for (double t : ticks(ax)) {  // grid and tick labels
+    const double px = ax.map(t, x0, x1);
+    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+    cairo_move_to(cr, px, y0), cairo_line_to(cr, px, y1), cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    text_at(cr, tick_label(t, ax.log), px, y1 + 1.25 * font, 0.5, 0);
+  }
+  for (double t : ticks(ay)) {
+    const double py = ay.map(t, y1, y0);
+    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+    cairo_move_to(cr, x0, py), cairo_line_to(cr, x1, py), cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    text_at(cr, tick_label(t, ay.log), x0 - 0.4 * font, py, 1, 0.5);
+  }
+  cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
+  cairo_rectangle(cr, x0, y0, x1 - x0, y1 - y0);
+  cairo_stroke(cr);
+  cairo_save(cr);
+  cairo_rectangle(cr, x0, y0, x1 - x0, y1 - y0);
+  cairo_clip(cr);
+  for (const auto& s : spec.series) draw_series(cr, s, ax, ay, x0, x1, y0, y1, std::max(1.5, font / 7));
+  if (spec.cursor_x) {
+    cairo_set_source_rgba(cr, 0.8, 0.1, 0.1, 0.8);
+    cairo_set_line_width(cr, 1.5);
+    const double px = ax.map(*spec.cursor_x, x0, x1);
+    cairo_move_to(cr, px, y0), cairo_line_to(cr, px, y1), cairo_stroke(cr);
+  }
+  cairo_restore(cr);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  text_at(cr, spec.x_label, 0.5 * (x0 + x1), y1 + 2.6 * font, 0.5, 0);
+  cairo_save(cr);
+  cairo_translate(cr, x + 1.3 * font, 0.5 * (y0 + y1));
+  cairo_rotate(cr, -M_PI / 2);
+  text_at(cr, spec.y_label, 0, 0, 0.5, 0);
+  cairo_restore(cr);
+  if (!spec.title.empty()) {
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    text_at(cr, spec.title, 0.5 * (x0 + x1), y + 1.3 * font, 0.5, 0);
+    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  }
+  if (spec.legend && !spec.series.empty()) draw_legend(cr, spec, x1, y0, font);
+  cairo_restore(cr);
+}
+
+RgbaImage plot_image(const PlotSpec& spec, int width, int height) {
+  RgbaImage image(width, height);
+  std::fill(image.pixels.begin(), image.pixels.end(), 255);
+  CairoCanvas canvas(width, height);
+  draw_plot(canvas.cr(), 0, 0, width, height, spec);
+  canvas.composite_onto(image);
+  return image;
+}
+
+}  // namespace bookspin::overlay
