@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/interrupt.hpp"
 #include "scene/scene.hpp"
 #include "video/atomic_output.hpp"
 
@@ -56,6 +57,7 @@ int report(const std::string& message, int code) {
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+  install_interrupt_handlers();  // first, so an early Ctrl-C is handled the same way
   CLI::App cli{"bookspin: simulate and render the unstable rotation of a book", "bookspin"};
   cli.require_subcommand(1);
   SimulateOptions simulate;
