@@ -26,21 +26,32 @@ std::string last_egl_error() { return egl_error_name(eglGetError()); }
 
 namespace {
 
-std::mutex display_mutex;
-std::map<EGLDisplay, int> display_users;
+// Never destroyed, so a Renderer that outlives static destruction (a static one) still
+// finds the registry.
+struct DisplayUsers {
+  std::mutex mutex;
+  std::map<EGLDisplay, int> count;
+};
+
+DisplayUsers& display_users() {
+  static auto* users = new DisplayUsers;
+  return *users;
+}
 
 }  // namespace
 
 void retain_display(EGLDisplay display) {
-  const std::lock_guard lock(display_mutex);
-  ++display_users[display];
+  DisplayUsers& users = display_users();
+  const std::lock_guard lock(users.mutex);
+  ++users.count[display];
 }
 
 void release_display(EGLDisplay display) {
-  const std::lock_guard lock(display_mutex);
-  auto it = display_users.find(display);
-  if (it == display_users.end() || --it->second > 0) return;
-  display_users.erase(it);
+  DisplayUsers& users = display_users();
+  const std::lock_guard lock(users.mutex);
+  auto it = users.count.find(display);
+  if (it == users.count.end() || --it->second > 0) return;
+  users.count.erase(it);
   eglTerminate(display);
 }
 

@@ -15,6 +15,44 @@ constexpr double kHuge = 1e12;
 
 std::string first_line(std::string_view text) { return std::string(text.substr(0, text.find('\n'))); }
 
+void replace_all(std::string& text, std::string_view from, std::string_view to) {
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+}
+
+/// The character at a 1-based line and column of `text`, or '\0' past its end.
+char char_at(std::string_view text, std::size_t line, std::size_t column) {
+  std::size_t at = 0;
+  for (std::size_t l = 1; l < line; ++l) {
+    at = text.find('\n', at);
+    if (at == std::string_view::npos) return '\0';
+    ++at;
+  }
+  at += column - 1;
+  return at < text.size() ? text[at] : '\0';
+}
+
+/// toml++'s description of a syntax error, reworded where its own words mislead: a string
+/// left open at the end of its line is reported as a forbidden control character (the line
+/// break), and a line break it "saw" is printed as an escape.
+std::string describe_syntax_error(const toml::parse_error& e, std::string_view text) {
+  std::string what = first_line(e.description());
+  const bool in_string = what.rfind("Error while parsing string", 0) == 0 ||
+                         what.rfind("Error while parsing literal string", 0) == 0;
+  const auto& at = e.source().begin;
+  const char bad = char_at(text, at.line, at.column);
+  if (in_string && what.find("control characters") != std::string::npos && (bad == '\n' || bad == '\r')) {
+    return "string is not closed before the end of the line";
+  }
+  if (in_string && what.find("end-of-file") != std::string::npos) {
+    return "string is not closed before the end of the file";
+  }
+  replace_all(what, "saw '\\n'", "saw the end of the line");
+  replace_all(what, "saw '\\r'", "saw the end of the line");
+  return what;
+}
+
 /// Applies one "key=value" override onto `root`, creating tables along the key's path.
 std::string apply_override(toml::table& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
@@ -161,8 +199,11 @@ Scene parse_scene_text(std::string_view text, const std::filesystem::path& origi
     root = toml::parse(text, std::string_view(origin_name));
   } catch (const toml::parse_error& e) {
     throw SceneError(origin.string() + ":" + std::to_string(e.source().begin.line) +
-                     ": TOML syntax error: " + first_line(e.description()));
+                     ": TOML syntax error: " + describe_syntax_error(e, text));
   }
+  // Valid TOML, and every key has a default, but a file with no keys at all is almost
+  // certainly a mistake (a truncated copy, the wrong file), not a request for the defaults.
+  if (root.empty()) throw SceneError(origin.string() + ": scene file is empty (no keys)");
   std::set<std::string> overridden;
   for (const auto& assignment : overrides) overridden.insert(apply_override(root, assignment));
   return build_scene(root, origin, overridden);
@@ -170,6 +211,9 @@ Scene parse_scene_text(std::string_view text, const std::filesystem::path& origi
 
 Scene parse_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw SceneError(path.string() + ": is a directory, not a scene file");
+  }
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw SceneError(path.string() + ": scene file not found");
   }

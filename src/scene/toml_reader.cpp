@@ -18,6 +18,28 @@ std::string range_text(double lo, double hi, bool lo_open) {
   return std::string(lo_open ? "> " : ">= ") + format_number(lo) + " and <= " + format_number(hi);
 }
 
+/// What a value is, for "expected X, got Y": a float where an integer belongs (300.0 for
+/// 300) is easy to miss without it.
+std::string type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a floating-point number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::table: return "a table";
+    default: return "a date or time";
+  }
+}
+
+/// Whether some key in `keys` lies below `key` ("time" for "time.dt").
+template <typename Keys>
+bool has_key_below(const Keys& keys, const std::string& key) {
+  const std::string prefix = key + ".";
+  const auto next = keys.lower_bound(prefix);
+  return next != keys.end() && std::string_view(*next).substr(0, prefix.size()) == prefix;
+}
+
 }  // namespace
 
 TomlReader::TomlReader(const toml::table& root, std::string origin, std::set<std::string> overridden)
@@ -33,7 +55,8 @@ bool TomlReader::has(std::string_view key) const { return static_cast<bool>(root
 std::string TomlReader::location(std::string_view key, const toml::node* node) const {
   // Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
   std::string where;
-  if (overridden_.count(std::string(key))) {
+  // A key at or above an override came from --set: `--set time.dt.x=1` made time.dt a table.
+  if (overridden_.count(std::string(key)) || has_key_below(overridden_, std::string(key))) {
     where.append("--set ").append(key);
     return where;
   }
@@ -59,7 +82,7 @@ double TomlReader::number(std::string_view key, double fallback, double lo, doub
   } else if (auto f = view.value_exact<double>()) {
     value = *f;
   } else {
-    fail(key, "expected a number");
+    fail(key, "expected a number, got " + type_name(*view.node()));
   }
   if (!std::isfinite(value)) fail(key, "must be finite, got " + format_number(value));
   if (value < lo || value > hi || (lo_open && value == lo)) {
@@ -72,7 +95,7 @@ long long TomlReader::integer(std::string_view key, long long fallback, long lon
   const auto view = find(key);
   if (!view) return fallback;
   const auto value = view.value_exact<int64_t>();
-  if (!value) fail(key, "expected an integer");
+  if (!value) fail(key, "expected an integer, got " + type_name(*view.node()));
   if (*value < lo || *value > hi) {
     fail(key, "must be >= " + std::to_string(lo) + " and <= " + std::to_string(hi) + ", got " +
                   std::to_string(*value));
@@ -84,7 +107,7 @@ bool TomlReader::boolean(std::string_view key, bool fallback) {
   const auto view = find(key);
   if (!view) return fallback;
   const auto value = view.value_exact<bool>();
-  if (!value) fail(key, "expected true or false");
+  if (!value) fail(key, "expected true or false, got " + type_name(*view.node()));
   return *value;
 }
 
@@ -92,7 +115,7 @@ std::string TomlReader::string(std::string_view key, std::string fallback) {
   const auto view = find(key);
   if (!view) return fallback;
   const auto value = view.value_exact<std::string>();
-  if (!value) fail(key, "expected a string");
+  if (!value) fail(key, "expected a string, got " + type_name(*view.node()));
   return *value;
 }
 
@@ -101,7 +124,10 @@ Eigen::Vector3d TomlReader::vector3(std::string_view key, const Eigen::Vector3d&
   const auto view = find(key);
   if (!view) return fallback;
   const toml::array* array = view.as_array();
-  if (!array || array->size() != 3) fail(key, "expected an array of 3 numbers");
+  if (!array) fail(key, "expected an array of 3 numbers, got " + type_name(*view.node()));
+  if (array->size() != 3) {
+    fail(key, "expected an array of 3 numbers, got " + std::to_string(array->size()) + " elements");
+  }
   Eigen::Vector3d out;
   for (int d = 0; d < 3; ++d) {
     const toml::node& item = *array->get(d);
@@ -110,7 +136,8 @@ Eigen::Vector3d TomlReader::vector3(std::string_view key, const Eigen::Vector3d&
     } else if (auto f = item.value_exact<double>()) {
       out[d] = *f;
     } else {
-      fail(key, "expected an array of 3 numbers");
+      fail(key, "expected an array of 3 numbers, but element " + std::to_string(d + 1) + " is " +
+                    type_name(item));
     }
     if (!std::isfinite(out[d])) fail(key, "must be finite, got " + format_number(out[d]));
     if (out[d] < lo || out[d] > hi || (lo_open && out[d] == lo)) {
@@ -125,13 +152,14 @@ void TomlReader::collect_unknown(const toml::table& table, const std::string& pr
                                  const toml::node*& first, std::string& first_key) const {
   for (const auto& [name, node] : table) {
     const std::string key = prefix + std::string(name.str());
-    const bool is_known = known_.count(key) > 0;
+    if (known_.count(key) > 0) continue;
+    // A known table ([render]) is searched, and may be empty; an unknown table ([camera]) is
+    // reported whole, at its header, rather than by its first key.
     const toml::table* sub = node.as_table();
-    if (!is_known && sub && !sub->empty()) {
+    if (sub && has_key_below(known_, key)) {
       collect_unknown(*sub, key + ".", first, first_key);
       continue;
     }
-    if (is_known) continue;
     if (!first || node.source().begin.line < first->source().begin.line) {
       first = &node;
       first_key = key;
@@ -143,7 +171,12 @@ void TomlReader::reject_unknown_keys() const {
   const toml::node* first = nullptr;
   std::string first_key;
   collect_unknown(root_, "", first, first_key);
-  if (first) throw SceneError(location(first_key, first) + ": unknown key");
+  if (!first) return;
+  // A known table given a value (`time = 5`) is a wrong type, not an unknown key.
+  const char* reason = first->is_table()                 ? "unknown table"
+                       : has_key_below(known_, first_key) ? "expected a table"
+                                                          : "unknown key";
+  throw SceneError(location(first_key, first) + ": " + reason);
 }
 
 }  // namespace bookspin::scene
