@@ -22,8 +22,10 @@ test: build
 render: build
 	$(BUILD)/bookspin render $(SCENE) -o out
 
+# Rewrites tests/golden/ from the current build (on llvmpipe, the reference) and prints, for
+# each golden, whether it is new, unchanged or changed (PSNR, share of differing pixels).
 update-goldens: build
-	BOOKSPIN_UPDATE_GOLDENS=1 $(BUILD)/tests/picture_tests
+	BOOKSPIN_UPDATE_GOLDENS=1 $(BUILD)/tests/picture_tests --gtest_brief=1
 
 clean:
 	rm -rf $(BUILD) out/*/ out/*.mp4

@@ -49,6 +49,25 @@ void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
       ->check(CLI::PositiveNumber)->take_all();
 }
 
+void add_plot(CLI::App& cli, PlotOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "plot", "Simulate a scene and plot its diagnostics over the whole run into OUT/<scene>-plot.png");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML); a comparison scene plots every panel")->required();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--width", options.width, "Image width in pixels")
+      ->check(CLI::Range(320, scene::kMaxDimension))->capture_default_str();
+  cmd->add_option("--height", options.height, "Image height in pixels")
+      ->check(CLI::Range(240, scene::kMaxDimension))->capture_default_str();
+}
+
+void add_gallery(CLI::App& cli, GalleryOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "gallery", "Write OUT_DIR/index.html listing each scene's clip, poster frame and plot");
+  cmd->add_option("OUT_DIR", options.out_dir, "Folder holding the rendered clips; the page goes there")->required();
+  cmd->add_option("SCENES", options.scene_paths, "Scene files (TOML), in page order")->required();
+}
+
 int report(const std::string& message, int code) {
   std::cerr << "bookspin: error: " << message << '\n';
   return code;
@@ -66,6 +85,10 @@ int run_cli(int argc, char** argv) {
   add_render(cli, render);
   AccuracyOptions accuracy;
   add_accuracy(cli, accuracy);
+  PlotOptions plot;
+  add_plot(cli, plot);
+  GalleryOptions gallery;
+  add_gallery(cli, gallery);
   cli.add_subcommand("info", "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders");
   try {
     cli.parse(argc, argv);
@@ -81,6 +104,8 @@ int run_cli(int argc, char** argv) {
     if (cli.got_subcommand("render")) return render_command(render);
     if (cli.got_subcommand("info")) return info_command();
     if (cli.got_subcommand("accuracy")) return accuracy_command(accuracy);
+    if (cli.got_subcommand("plot")) return plot_command(plot);
+    if (cli.got_subcommand("gallery")) return gallery_command(gallery);
   } catch (const scene::SceneError& e) {
     return report(e.what(), kExitUsage);
   } catch (const std::invalid_argument& e) {

@@ -44,6 +44,28 @@ int accuracy_command(const AccuracyOptions& options);
 /// Prints the EGL/GL and FFmpeg set-up.
 int info_command();
 
+struct PlotOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_dir = "out";
+  int width = 1600;   ///< pixels
+  int height = 1000;  ///< pixels
+};
+
+/// Simulates a scene (every panel of a comparison) over its whole run and writes
+/// OUT/<scene>-plot.png: the plot panel's curves (body-frame ω, E/E0 − 1, shape error)
+/// against time, without the cursor.
+int plot_command(const PlotOptions& options);
+
+struct GalleryOptions {
+  std::string out_dir = "out";
+  std::vector<std::string> scene_paths;
+};
+
+/// Writes OUT/index.html: for each scene its title, description, poster frame, clip
+/// (<video>), static plot and diagnostics CSVs, each only where the file exists under OUT.
+int gallery_command(const GalleryOptions& options);
+
 /// Parses argv and runs the chosen subcommand.
 int run_cli(int argc, char** argv);
 

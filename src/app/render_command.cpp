@@ -5,10 +5,12 @@
 
 #include "app/clip_sinks.hpp"
 #include "app/commands.hpp"
+#include "app/compare_render.hpp"
 #include "app/frame_source.hpp"
 #include "app/frame_view.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
+#include "app/still.hpp"
 
 namespace bookspin::app {
 
@@ -50,17 +52,14 @@ LoopResult render_frames(const scene::Scene& scene, render::Renderer& renderer, 
                          Progress& progress) {
   LoopResult result;
   FrameSource source(scene);
-  physics::BookPose pose;
+  ShownFrame frame;
   for (int index = 0; index < scene.frames; ++index) {
     if ((result.signal = interrupt_signal()) != 0) return result;
-    const bool fresh = source.next(pose);
-    result.diverged_at = source.diverged_at();
-    const double t = fresh ? pose.diagnostics.t : index * scene.steps_per_frame * scene.dt;
-    RgbaImage image = renderer.render(frame_input_for(pose));
-    overlay::draw_caption(image, caption_for(scene, t, result.diverged_at));
-    if (result.diverged_at) overlay::draw_banner(image, divergence_text(*result.diverged_at));
-    physics::Diagnostics row = pose.diagnostics;
-    row.t = t;
+    advance(source, index, scene, frame);
+    result.diverged_at = frame.diverged_at;
+    RgbaImage image = render_frame(scene, renderer, frame);
+    physics::Diagnostics row = frame.pose.diagnostics;
+    row.t = frame.t;
     sinks.add(index, std::move(image), row);
     result.frames = index + 1;
     progress.update(result.frames);
@@ -74,6 +73,7 @@ int render_command(const RenderOptions& options) {
   install_interrupt_handlers();
   scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
   if (options.frames > 0) scene.frames = options.frames;
+  if (!scene.compare.empty()) return render_comparison(scene, options);
   prepare_output_dir(options.out_dir);
   render::Renderer renderer(render_settings_for(scene));
   ClipSinks sinks(clip_paths(options.out_dir, scene.name), sink_options(scene, options));

@@ -1,5 +1,6 @@
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 
 #include "app/commands.hpp"
 #include "app/frame_source.hpp"
@@ -33,6 +34,12 @@ void warn_diverged(const scene::Scene& scene, double t, int rows) {
 
 int simulate_command(const SimulateOptions& options) {
   const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+  if (!scene.compare.empty()) {
+    // Several runs do not fit one CSV; `render` writes one per panel.
+    throw std::invalid_argument(options.scene_path +
+                                ": a comparison scene ([[compare]]) has one run per panel: `bookspin "
+                                "render` writes OUT/<scene>/diagnostics-<panel>.csv for each");
+  }
   RunResult result;
   if (options.csv_path == "-") {
     result = write_rows(scene, std::cout);

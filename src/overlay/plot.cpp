@@ -22,7 +22,9 @@ struct Axis {
 
 bool usable(double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); }
 
-Axis fit_axis(const std::vector<Series>& series, bool use_x, bool log) {
+/// The data range of the x or y values; a span below `min_span` (linear axes) is widened
+/// around its middle, a degenerate one to ±0.5.
+Axis fit_axis(const std::vector<Series>& series, bool use_x, bool log, double min_span = 0.0) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& s : series) {
     for (double v : use_x ? s.x : s.y) {
@@ -32,6 +34,11 @@ Axis fit_axis(const std::vector<Series>& series, bool use_x, bool log) {
     }
   }
   if (!std::isfinite(lo)) lo = 0, hi = 1;
+  if (!log && hi - lo < min_span) {
+    const double mid = 0.5 * (lo + hi);
+    lo = mid - 0.5 * min_span, hi = mid + 0.5 * min_span;
+    return {lo, hi, false};
+  }
   if (hi - lo < 1e-12) lo -= 0.5, hi += 0.5;
   if (log) {
     lo = std::floor(lo), hi = std::ceil(hi);
@@ -41,6 +48,15 @@ Axis fit_axis(const std::vector<Series>& series, bool use_x, bool log) {
   }
   return {lo, hi, log};
 }
+
+Axis fit_x(const PlotSpec& spec) {
+  if (spec.x_range && !spec.log_x && spec.x_range->second > spec.x_range->first) {
+    return {spec.x_range->first, spec.x_range->second, false};
+  }
+  return fit_axis(spec.series, true, spec.log_x);
+}
+
+Axis fit_y(const PlotSpec& spec) { return fit_axis(spec.series, false, spec.log_y, spec.min_y_span); }
 
 double nice_step(double span) {
   const double raw = span / 5.0, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
@@ -107,6 +123,17 @@ void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, d
   }
 }
 
+void legend_sample(cairo_t* cr, const Series& s, double x, double y, double font) {
+  cairo_set_source_rgb(cr, s.r, s.g, s.b);
+  cairo_set_line_width(cr, 0.18 * font);
+  const double dash[] = {0.5 * font, 0.3 * font};
+  cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+  cairo_move_to(cr, x, y - 0.35 * font);
+  cairo_line_to(cr, x + 1.8 * font, y - 0.35 * font);
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0);
+}
+
 double legend_box_width(cairo_t* cr, const PlotSpec& spec, double font) {
   double width = 0;
   for (const auto& s : spec.series) {
@@ -128,18 +155,44 @@ void draw_legend(cairo_t* cr, const PlotSpec& spec, double x1, double y0, double
   cairo_stroke(cr);
   double y = y0 + 0.4 * font + row;
   for (const auto& s : spec.series) {
-    cairo_set_source_rgb(cr, s.r, s.g, s.b);
-    cairo_set_line_width(cr, 0.18 * font);
-    const double dash[] = {0.5 * font, 0.3 * font};
-    cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
-    cairo_move_to(cr, left + 0.4 * font, y - 0.35 * font);
-    cairo_line_to(cr, left + 2.2 * font, y - 0.35 * font);
-    cairo_stroke(cr);
-    cairo_set_dash(cr, nullptr, 0, 0);
+    legend_sample(cr, s, left + 0.4 * font, y, font);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     text_at(cr, s.label, left + 2.7 * font, y, 0, 0);
     y += row;
   }
+}
+
+/// Lays the legend entries out in rows across [left, right]; calls `at(series, x, y)` for
+/// each entry (baseline y, rows 1.3·font apart from `top`) and returns the height used.
+template <typename At>
+double flow_legend(cairo_t* cr, const PlotSpec& spec, double left, double right, double top,
+                   double font, At at) {
+  const double row = 1.3 * font;
+  double x = left, y = top + font;
+  for (const auto& s : spec.series) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, s.label.c_str(), &e);
+    const double w = 2.3 * font + e.x_advance;
+    if (x > left && x + w > right) x = left, y += row;
+    at(s, x, y);
+    x += w + 1.2 * font;
+  }
+  return y - top + 0.45 * font;
+}
+
+/// Legend rows above the plot area, so a narrow plot keeps its full width.
+double top_legend_height(cairo_t* cr, const PlotSpec& spec, double left, double right, double font) {
+  if (!spec.legend || spec.series.empty() || spec.legend_placement != LegendPlacement::top) return 0;
+  return flow_legend(cr, spec, left, right, 0, font, [](const Series&, double, double) {});
+}
+
+void draw_top_legend(cairo_t* cr, const PlotSpec& spec, double left, double right, double top,
+                     double font) {
+  flow_legend(cr, spec, left, right, top, font, [&](const Series& s, double x, double y) {
+    legend_sample(cr, s, x, y, font);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    text_at(cr, s.label, x + 2.3 * font, y, 0, 0);
+  });
 }
 
 }  // namespace
@@ -152,57 +205,134 @@ void palette_colour(int index, double& r, double& g, double& b) {
   r = c[0], g = c[1], b = c[2];
 }
 
-void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec) {
-  const double font = std::clamp(height / 22.0, 9.0, 18.0);
-  cairo_save(cr);
-  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, font);
-  const double legend_width = spec.legend ? legend_box_width(cr, spec, font) + 0.8 * font : 0.0;
-  const double x0 = x + 5.2 * font, x1 = x + width - 1.4 * font - legend_width;
-  const double y0 = y + (spec.title.empty() ? 0.8 : 2.0) * font, y1 = y + height - 3.2 * font;
-  const Axis ax = fit_axis(spec.series, true, spec.log_x), ay = fit_axis(spec.series, false, spec.log_y);
+namespace {
+
+/// The plot area inside a draw_plot rectangle, in pixels.
+struct Area {
+  double x0, x1, y0, y1;  ///< left, right, top, bottom
+  double font;
+};
+
+/// Width of the widest y tick label, pixels.
+double y_tick_width(cairo_t* cr, const Axis& ay) {
+  double widest = 0;
+  for (double t : ticks(ay)) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, tick_label(t, ay.log).c_str(), &e);
+    widest = std::max(widest, e.x_advance);
+  }
+  return widest;
+}
+
+/// Room for the rotated y label and the tick labels: wide labels (2e+13) push the axis right.
+double left_margin(cairo_t* cr, const PlotSpec& spec, const Axis& ay, double font) {
+  return std::max({5.2 * font, 2.4 * font + y_tick_width(cr, ay), spec.left_margin});
+}
+
+Area layout(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec,
+            const Axis& ay, double font) {
+  const bool right = spec.legend && spec.legend_placement == LegendPlacement::right;
+  const double legend_width = right ? legend_box_width(cr, spec, font) + 0.8 * font : 0.0;
+  Area a{x + left_margin(cr, spec, ay, font), x + width - 1.4 * font - legend_width, 0, y + height - 3.2 * font, font};
+  a.y0 = y + (spec.title.empty() ? 0.8 : 2.0) * font + top_legend_height(cr, spec, a.x0, a.x1, font);
+  return a;
+}
+
+void draw_grid(cairo_t* cr, const Axis& ax, const Axis& ay, const Area& a) {
   cairo_set_line_width(cr, 1);
-  for (double t : ticks(ax)) {  // grid and tick labels
-    const double px = ax.map(t, x0, x1);
+  for (double t : ticks(ax)) {
+    const double px = ax.map(t, a.x0, a.x1);
     cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-    cairo_move_to(cr, px, y0), cairo_line_to(cr, px, y1), cairo_stroke(cr);
+    cairo_move_to(cr, px, a.y0), cairo_line_to(cr, px, a.y1), cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-    text_at(cr, tick_label(t, ax.log), px, y1 + 1.25 * font, 0.5, 0);
+    text_at(cr, tick_label(t, ax.log), px, a.y1 + 1.25 * a.font, 0.5, 0);
   }
   for (double t : ticks(ay)) {
-    const double py = ay.map(t, y1, y0);
+    const double py = ay.map(t, a.y1, a.y0);
     cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-    cairo_move_to(cr, x0, py), cairo_line_to(cr, x1, py), cairo_stroke(cr);
+    cairo_move_to(cr, a.x0, py), cairo_line_to(cr, a.x1, py), cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-    text_at(cr, tick_label(t, ay.log), x0 - 0.4 * font, py, 1, 0.5);
+    text_at(cr, tick_label(t, ay.log), a.x0 - 0.4 * a.font, py, 1, 0.5);
   }
   cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
-  cairo_rectangle(cr, x0, y0, x1 - x0, y1 - y0);
+  cairo_rectangle(cr, a.x0, a.y0, a.x1 - a.x0, a.y1 - a.y0);
   cairo_stroke(cr);
+}
+
+/// Curves and cursor, clipped to the plot area.
+void draw_data(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay, const Area& a) {
   cairo_save(cr);
-  cairo_rectangle(cr, x0, y0, x1 - x0, y1 - y0);
+  cairo_rectangle(cr, a.x0, a.y0, a.x1 - a.x0, a.y1 - a.y0);
   cairo_clip(cr);
-  for (const auto& s : spec.series) draw_series(cr, s, ax, ay, x0, x1, y0, y1, std::max(1.5, font / 7));
+  for (const auto& s : spec.series) {
+    draw_series(cr, s, ax, ay, a.x0, a.x1, a.y0, a.y1, std::max(1.5, a.font / 7));
+  }
   if (spec.cursor_x) {
     cairo_set_source_rgba(cr, 0.8, 0.1, 0.1, 0.8);
     cairo_set_line_width(cr, 1.5);
-    const double px = ax.map(*spec.cursor_x, x0, x1);
-    cairo_move_to(cr, px, y0), cairo_line_to(cr, px, y1), cairo_stroke(cr);
+    const double px = ax.map(*spec.cursor_x, a.x0, a.x1);
+    cairo_move_to(cr, px, a.y0), cairo_line_to(cr, px, a.y1), cairo_stroke(cr);
   }
   cairo_restore(cr);
+}
+
+void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, const Area& a) {
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-  text_at(cr, spec.x_label, 0.5 * (x0 + x1), y1 + 2.6 * font, 0.5, 0);
+  text_at(cr, spec.x_label, 0.5 * (a.x0 + a.x1), a.y1 + 2.6 * a.font, 0.5, 0);
   cairo_save(cr);
-  cairo_translate(cr, x + 1.3 * font, 0.5 * (y0 + y1));
+  cairo_translate(cr, x + 1.3 * a.font, 0.5 * (a.y0 + a.y1));
   cairo_rotate(cr, -M_PI / 2);
   text_at(cr, spec.y_label, 0, 0, 0.5, 0);
   cairo_restore(cr);
   if (!spec.title.empty()) {
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-    text_at(cr, spec.title, 0.5 * (x0 + x1), y + 1.3 * font, 0.5, 0);
+    text_at(cr, spec.title, 0.5 * (a.x0 + a.x1), y + 1.3 * a.font, 0.5, 0);
     cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   }
-  if (spec.legend && !spec.series.empty()) draw_legend(cr, spec, x1, y0, font);
+  if (!spec.legend || spec.series.empty()) return;
+  if (spec.legend_placement == LegendPlacement::right) {
+    draw_legend(cr, spec, a.x1, a.y0, a.font);
+  } else {
+    const double top = y + (spec.title.empty() ? 0.8 : 2.0) * a.font;
+    draw_top_legend(cr, spec, a.x0, a.x1, top, a.font);
+  }
+}
+
+double font_for(double height) { return std::clamp(height / 22.0, 9.0, 18.0); }
+
+}  // namespace
+
+double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec) {
+  const double font = font_for(height);
+  cairo_save(cr);
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, font);
+  const double left = left_margin(cr, spec, fit_y(spec), font);
+  cairo_restore(cr);
+  return left;
+}
+
+void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots) {
+  double left = 0;
+  for (const auto& p : plots) left = std::max(left, plot_left_margin(cr, height, p));
+  for (auto& p : plots) p.left_margin = left;
+}
+
+void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec) {
+  const double font = font_for(height);
+  cairo_save(cr);
+  if (spec.background_alpha > 0) {
+    cairo_rectangle(cr, x, y, width, height);
+    cairo_set_source_rgba(cr, 1, 1, 1, spec.background_alpha);
+    cairo_fill(cr);
+  }
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, font);
+  const Axis ax = fit_x(spec), ay = fit_y(spec);
+  const Area area = layout(cr, x, y, width, height, spec, ay, font);
+  draw_grid(cr, ax, ay, area);
+  draw_data(cr, spec, ax, ay, area);
+  draw_labels(cr, spec, x, y, area);
   cairo_restore(cr);
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// Line plots drawn with cairo: the accuracy plot (log-log), static diagnostics plots and,
-// later, the live panel in clips.
+// Line plots drawn with cairo: the accuracy plot (log-log), the static diagnostics plots
+// (`bookspin plot`) and the live panel composited over clips.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <cairo.h>
@@ -19,6 +20,10 @@ struct Series {
   bool dashed = false;
 };
 
+/// Where the legend goes: right of the plot area (wide plots), or in rows between the
+/// title and the plot area (narrow plots such as the panel beside a book).
+enum class LegendPlacement { right, top };
+
 struct PlotSpec {
   std::string title;
   std::string x_label;  ///< with units, e.g. "time step dt (time units)"
@@ -28,10 +33,30 @@ struct PlotSpec {
   std::vector<Series> series;
   std::optional<double> cursor_x;  ///< a vertical time cursor
   bool legend = true;
+  LegendPlacement legend_placement = LegendPlacement::right;
+  /// Fixed x range (linear axes): curves that grow with time then fill it left to right
+  /// instead of rescaling every frame. Unset: fitted to the data.
+  std::optional<std::pair<double, double>> x_range;
+  /// Smallest y span (linear axes), centred on the data, so that round-off noise in a
+  /// quantity that should be constant draws as a flat line rather than as wild swings.
+  double min_y_span = 0.0;
+  /// Opacity of a white background behind the whole plot (0: none).
+  double background_alpha = 0.0;
+  /// Pixels left of the plot area, at least: stacked plots share the largest, so their
+  /// time axes line up (see plot_left_margin).
+  double left_margin = 0.0;
 };
 
-/// Draws `spec` into the rectangle (x, y, width, height) of `cr` (pixels).
+/// Draws `spec` into the rectangle (x, y, width, height) of `cr` (pixels). Text scales with
+/// the height (height/22, 9 … 18 px).
 void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec);
+
+/// The pixels left of the plot area that draw_plot needs for `spec` drawn `height` pixels
+/// tall (the rotated y label and the widest y tick label).
+double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec);
+
+/// Sets every plot's left_margin to the largest any of them needs at `height` pixels tall.
+void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots);
 
 /// Draws `spec` on a white width×height image.
 RgbaImage plot_image(const PlotSpec& spec, int width, int height);

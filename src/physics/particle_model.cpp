@@ -6,11 +6,57 @@
 
 namespace bookspin::physics {
 
+namespace {
+
+/// The 28 springs' corner pairs (i < j) in corner_pairs() order, as two index arrays fixed
+/// at compile time, so the force loop needs no lookup through a function-local static.
+struct SpringEnds {
+  std::array<int, kSprings> first{}, second{};
+};
+
+constexpr SpringEnds kEnds = [] {
+  SpringEnds ends;
+  int s = 0;
+  for (int i = 0; i < 8; ++i) {
+    for (int j = i + 1; j < 8; ++j, ++s) {
+      ends.first[s] = i;
+      ends.second[s] = j;
+    }
+  }
+  return ends;
+}();
+
+/// Per-spring values, one lane per spring: Eigen evaluates these expressions with SIMD
+/// packets (28 is even), which is where the step's sqrt and divisions go.
+using SpringArray = Eigen::Array<double, kSprings, 1>;
+
+/// Differences x_i − x_j of the spring ends, one array per axis.
+struct SpringVectors {
+  SpringArray x, y, z;
+};
+
+SpringVectors spring_vectors(const Corners& points) {
+  SpringVectors d;
+  for (int s = 0; s < kSprings; ++s) {
+    const int i = kEnds.first[s], j = kEnds.second[s];
+    d.x[s] = points(0, i) - points(0, j);
+    d.y[s] = points(1, i) - points(1, j);
+    d.z[s] = points(2, i) - points(2, j);
+  }
+  return d;
+}
+
+}  // namespace
+
 ParticleModel::ParticleModel(const Book& book, const ModelConfig& config)
-    : book_(book), config_(config), particle_mass_(book.mass / 8.0), rest_(book.body_corners()) {
-  const auto& pairs = corner_pairs();
-  for (std::size_t s = 0; s < pairs.size(); ++s)
-    rest_length_[s] = (rest_.col(pairs[s].first) - rest_.col(pairs[s].second)).norm();
+    : book_(book),
+      config_(config),
+      particle_mass_(book.mass / 8.0),
+      damping_(config.damping ? 2.0 * std::sqrt(config.spring_constant * particle_mass_) : 0.0),
+      rest_(book.body_corners()) {
+  const SpringVectors d = spring_vectors(rest_);
+  for (int s = 0; s < kSprings; ++s)
+    rest_length_[s] = Eigen::Vector3d(d.x[s], d.y[s], d.z[s]).norm();
 }
 
 void ParticleModel::reset(const InitialState& initial) {
@@ -23,32 +69,40 @@ void ParticleModel::reset(const InitialState& initial) {
   t_ = 0.0;
 }
 
+// Two passes with the same arithmetic, in the same order, as the textbook loop over pairs
+// (so the results are bit-identical to it): first every spring's length, unit vector and
+// force magnitude side by side in SIMD lanes, then the forces gathered onto the corners
+// and the energy summed, spring by spring in pair order.
 Corners ParticleModel::forces(const Corners& x, const Corners& v, double& energy) const {
   const double k = config_.spring_constant;
-  const double damping = config_.damping ? 2.0 * std::sqrt(k * particle_mass_) : 0.0;
+  const SpringVectors d = spring_vectors(x);
+  const SpringVectors dv = spring_vectors(v);
+  const SpringArray len = (d.x * d.x + d.y * d.y + d.z * d.z).sqrt();
+  const SpringArray ux = d.x / len, uy = d.y / len, uz = d.z / len;
+  const SpringArray stretch = len - Eigen::Map<const SpringArray>(rest_length_.data());
+  // F_ij = −(2√(km) x̂·(v_i − v_j) + k(|x_ij| − L_ij)) x̂ (paper §3.3); F_ji = −F_ij.
+  const SpringArray magnitude = damping_ * (ux * dv.x + uy * dv.y + uz * dv.z) + k * stretch;
   Corners f = Corners::Zero();
   energy = 0.0;
-  const auto& pairs = corner_pairs();
-  for (std::size_t s = 0; s < pairs.size(); ++s) {
-    const auto [i, j] = pairs[s];
-    const Eigen::Vector3d d = x.col(i) - x.col(j);
-    const double len = d.norm();
-    const Eigen::Vector3d unit = d / len;
-    const double stretch = len - rest_length_[s];
-    energy += 0.5 * k * stretch * stretch;
-    // F_ij = −(2√(km) x̂·(v_i − v_j) + k(|x_ij| − L_ij)) x̂ (paper §3.3); F_ji = −F_ij.
-    const double magnitude = damping * unit.dot(v.col(i) - v.col(j)) + k * stretch;
-    f.col(i) -= magnitude * unit;
-    f.col(j) += magnitude * unit;
+  for (int s = 0; s < kSprings; ++s) {
+    energy += 0.5 * k * stretch[s] * stretch[s];
+    const int i = kEnds.first[s], j = kEnds.second[s];
+    const double fx = magnitude[s] * ux[s], fy = magnitude[s] * uy[s], fz = magnitude[s] * uz[s];
+    f(0, i) -= fx;
+    f(1, i) -= fy;
+    f(2, i) -= fz;
+    f(0, j) += fx;
+    f(1, j) += fy;
+    f(2, j) += fz;
   }
   return f;
 }
 
 double ParticleModel::spring_energy(const Corners& x) const {
+  const SpringVectors d = spring_vectors(x);
   double energy = 0.0;
-  const auto& pairs = corner_pairs();
-  for (std::size_t s = 0; s < pairs.size(); ++s) {
-    const double stretch = (x.col(pairs[s].first) - x.col(pairs[s].second)).norm() - rest_length_[s];
+  for (int s = 0; s < kSprings; ++s) {
+    const double stretch = Eigen::Vector3d(d.x[s], d.y[s], d.z[s]).norm() - rest_length_[s];
     energy += 0.5 * config_.spring_constant * stretch * stretch;
   }
   return energy;

@@ -6,6 +6,8 @@
 
 namespace bookspin::physics {
 
+inline constexpr int kSprings = 28;  ///< one per corner pair
+
 /// Particles of mass m = M/8 at the corners, a spring of constant k between every pair
 /// with the rest length of the book at rest. Positions and velocities are 3×8, world frame.
 /// Integrators: `euler` (the paper's order: forces from the positions at step start, then
@@ -34,8 +36,9 @@ class ParticleModel final : public Simulator {
   Book book_;
   ModelConfig config_;
   double particle_mass_;
+  double damping_;                       ///< 2√(km) with damping, else 0
   Corners rest_;                         ///< body corners at rest (3×8)
-  std::array<double, 28> rest_length_{};  ///< per corner pair
+  std::array<double, kSprings> rest_length_{};  ///< per corner pair
   Corners x_, v_;
   double energy0_ = 0.0;  ///< total energy fixed at reset (all kinetic)
   double t_ = 0.0;

@@ -1,7 +1,6 @@
 #include "physics/rigid_matrix_model.hpp"
 
-#include <Eigen/SVD>
-
+#include "physics/polar.hpp"
 #include "physics/rigid_integrators.hpp"
 #include "physics/shape.hpp"
 
@@ -24,10 +23,9 @@ Eigen::Matrix3d RigidMatrixModel::derivative(const Eigen::Matrix3d& R) const {
   return cross_matrix(omega_world(R)) * R;
 }
 
-void RigidMatrixModel::normalize() {
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(R_, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  R_ = svd.matrixU() * svd.matrixV().transpose();
-}
+// The paper's SVD normalization R ← U Vᵀ, computed as the polar factor by Newton's method:
+// the same rotation, about 5× faster than JacobiSVD (polar.hpp).
+void RigidMatrixModel::normalize() { R_ = nearest_rotation(R_); }
 
 void RigidMatrixModel::step(double dt) {
   switch (config_.integrator) {

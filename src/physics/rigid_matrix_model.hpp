@@ -6,7 +6,8 @@ namespace bookspin::physics {
 
 /// State: orientation R (3×3, body→world, not forced to stay a rotation) and the constant
 /// world angular momentum L. Euler step (paper): ω = R I_body⁻¹ Rᵀ L, R += dt·[ω]× R, then
-/// optionally R ← U Vᵀ from the SVD R = U Σ Vᵀ (Eigen JacobiSVD). Corners are R·body
+/// optionally R ← U Vᵀ from the SVD R = U Σ Vᵀ (computed as the polar factor of R, see
+/// polar.hpp; the same matrix as JacobiSVD's U Vᵀ to round-off). Corners are R·body
 /// corners, so an unnormalized R stretches the book (paper Figure 10).
 class RigidMatrixModel final : public Simulator {
  public:

@@ -5,6 +5,7 @@
 #include <regex>
 #include <sstream>
 
+#include "scene/model_reader.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace bookspin::scene {
@@ -82,28 +83,6 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
   return key;
 }
 
-physics::ModelConfig read_model(TomlReader& r) {
-  physics::ModelConfig m;
-  const std::string kind = r.string("model.kind", "particle");
-  if (!physics::parse_model_kind(kind, m.kind)) {
-    r.fail("model.kind",
-           "unknown model '" + kind + "' (expected particle, rigid-matrix, rigid-quaternion, exact)");
-  }
-  const std::string integrator = r.string("model.integrator", "euler");
-  if (!physics::parse_integrator(integrator, m.integrator)) {
-    r.fail("model.integrator", "unknown integrator '" + integrator +
-                                   "' (expected euler, symplectic-euler, velocity-verlet, rk4, "
-                                   "implicit-midpoint, splitting)");
-  }
-  if (!physics::supports(m.kind, m.integrator)) {
-    r.fail("model.integrator", "model '" + kind + "' does not support integrator '" + integrator + "'");
-  }
-  m.normalize = r.boolean("model.normalize", false);
-  m.damping = r.boolean("model.damping", true);
-  m.spring_constant = r.number("model.spring_constant", 10.0, 0.0, kHuge, true);
-  return m;
-}
-
 void read_time(TomlReader& r, Scene& s) {
   s.dt = r.number("time.dt", 1.0 / 60.0, 0.0, 1e3, true);
   s.steps_per_frame = static_cast<int>(r.integer("time.steps_per_frame", 6, 1, kMaxStepsPerFrame));
@@ -153,6 +132,7 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
       "ultrafast|superfast|veryfast|faster|fast|medium|slow|slower|veryslow");
   if (!std::regex_match(o.preset, presets)) r.fail("render.preset", "unknown preset '" + o.preset + "'");
   o.png_compression = static_cast<int>(r.integer("render.png_compression", 1, 0, 9));
+  o.panel = r.boolean("render.panel", false);
   return o;
 }
 
@@ -173,7 +153,7 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   Scene s;
   s.source = origin;
   read_identity(r, s);
-  s.model = read_model(r);
+  s.model = read_model(r, physics::ModelConfig{});
   s.book.size = r.vector3("book.size", s.book.size, 0.0, 1e6, true);
   s.book.mass = r.number("book.mass", s.book.mass, 0.0, kHuge, true);
   s.initial.omega0_body = r.vector3("initial.angular_velocity", s.initial.omega0_body, -1e6, 1e6);
@@ -182,11 +162,21 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
       r.integer("initial.seed", 1, 0, std::numeric_limits<int64_t>::max()));
   read_time(r, s);
   s.render = read_render(r, origin);
+  s.compare = read_compare(r, origin.string(), overridden, s.model);
   r.reject_unknown_keys();
   return s;
 }
 
 }  // namespace
+
+Scene panel_scene(const Scene& scene, const ComparePanel& panel) {
+  Scene s = scene;
+  s.name = scene.name + "-" + panel.name;
+  s.title = panel.label;
+  s.model = panel.model;
+  s.compare.clear();
+  return s;
+}
 
 Scene parse_scene_text(std::string_view text, const std::filesystem::path& origin,
                        const std::vector<std::string>& overrides) {

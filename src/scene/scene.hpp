@@ -33,6 +33,17 @@ struct RenderOptions {
   int crf = 18;
   std::string preset = "medium";
   int png_compression = 1;  ///< zlib level 0–9 for frame PNGs
+  /// Live plots beside the book (ω, energy drift, shape): the book is framed in the left
+  /// 60% of the frame and the plots fill the right 40%.
+  bool panel = false;
+};
+
+/// One panel of a comparison scene (`[[compare]]`): the scene's book, initial state, time
+/// and render keys with its own model settings.
+struct ComparePanel {
+  std::string label;  ///< shown on the tile, e.g. "rigid-matrix, SVD"
+  std::string name;   ///< file-name form of the label (diagnostics-<name>.csv), unique
+  physics::ModelConfig model;
 };
 
 struct Scene {
@@ -47,13 +58,20 @@ struct Scene {
   int frames = 300;           ///< video frames (CSV rows), frame 0 = initial state
   RenderOptions render;
   std::filesystem::path source;  ///< the scene file
+  /// Non-empty for a comparison scene: each panel runs its own simulator from the same
+  /// initial state, and the clip shows them side by side (kMaxComparePanels at most).
+  std::vector<ComparePanel> compare;
 };
+
+/// The single-model scene a comparison panel stands for: `scene` with the panel's model.
+Scene panel_scene(const Scene& scene, const ComparePanel& panel);
 
 /// Limits enforced by validation (documented in scenes/README.md).
 inline constexpr int kMaxDimension = 7680;
 inline constexpr int kMaxFrames = 100000;
 inline constexpr int kMaxStepsPerFrame = 1000000;
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 1 << 20;
+inline constexpr int kMaxComparePanels = 9;
 
 /// Reads and validates `path`, applying `overrides` ("key=value", value in TOML syntax) on
 /// top of the file. Throws SceneError on any bad input: unreadable or oversized file, TOML

@@ -42,8 +42,13 @@ bool has_key_below(const Keys& keys, const std::string& key) {
 
 }  // namespace
 
-TomlReader::TomlReader(const toml::table& root, std::string origin, std::set<std::string> overridden)
-    : root_(root), origin_(std::move(origin)), overridden_(std::move(overridden)) {}
+TomlReader::TomlReader(const toml::table& root, std::string origin, std::set<std::string> overridden,
+                       std::string key_prefix, const toml::node* anchor)
+    : root_(root),
+      origin_(std::move(origin)),
+      overridden_(std::move(overridden)),
+      key_prefix_(std::move(key_prefix)),
+      anchor_(anchor) {}
 
 toml::node_view<const toml::node> TomlReader::find(std::string_view key) {
   known_.emplace(key);
@@ -52,19 +57,33 @@ toml::node_view<const toml::node> TomlReader::find(std::string_view key) {
 
 bool TomlReader::has(std::string_view key) const { return static_cast<bool>(root_.at_path(key)); }
 
+/// A key at, above or below an override came from --set: `--set time.dt.x=1` made time.dt a
+/// table, and `--set compare=[…]` replaced every compare[i].… key.
+bool TomlReader::from_override(const std::string& full_key) const {
+  if (overridden_.count(full_key) || has_key_below(overridden_, full_key)) return true;
+  for (const auto& key : overridden_) {
+    const bool above = full_key.size() > key.size() && full_key.compare(0, key.size(), key) == 0 &&
+                       (full_key[key.size()] == '.' || full_key[key.size()] == '[');
+    if (above) return true;
+  }
+  return false;
+}
+
 std::string TomlReader::location(std::string_view key, const toml::node* node) const {
   // Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
+  std::string full_key = key_prefix_;
+  full_key.append(key);
   std::string where;
-  // A key at or above an override came from --set: `--set time.dt.x=1` made time.dt a table.
-  if (overridden_.count(std::string(key)) || has_key_below(overridden_, std::string(key))) {
-    where.append("--set ").append(key);
+  if (from_override(full_key)) {
+    where.append("--set ").append(full_key);
     return where;
   }
   where.append(origin_);
+  if (!node) node = anchor_;
   if (node && node->source().begin.line > 0) {
     where.append(":").append(std::to_string(node->source().begin.line));
   }
-  where.append(": ").append(key);
+  where.append(": ").append(full_key);
   return where;
 }
 

@@ -15,9 +15,10 @@ struct CliResult {
   std::string output;  ///< stdout and stderr together
 };
 
-/// Runs `BOOKSPIN_EXE args` through the shell (args are shell words, quote as needed).
-inline CliResult run_bookspin(const std::string& args) {
-  const std::string command = std::string(BOOKSPIN_EXE) + " " + args + " 2>&1";
+/// Runs `env BOOKSPIN_EXE args` through the shell (args are shell words, quote as needed;
+/// env is "" or "NAME=value ...").
+inline CliResult run_bookspin_env(const std::string& env, const std::string& args) {
+  const std::string command = env + " " + std::string(BOOKSPIN_EXE) + " " + args + " 2>&1";
   CliResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return result;
@@ -27,6 +28,8 @@ inline CliResult run_bookspin(const std::string& args) {
   result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
   return result;
 }
+
+inline CliResult run_bookspin(const std::string& args) { return run_bookspin_env("", args); }
 
 inline std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -75,6 +75,7 @@ TEST(SimulateCommand, HelpDocumentsEveryOption) {
 }
 
 struct BadInput {
+  std::string label;     ///< test name
   std::string args;
   std::string expected;  ///< a fragment of the one-line message
 };
@@ -91,25 +92,25 @@ TEST_P(SimulateErrors, ExitTwoWithOneLineNamingTheProblem) {
 INSTANTIATE_TEST_SUITE_P(
     BadSetValues, SimulateErrors,
     ::testing::Values(
-        BadInput{scene_path("fig05-particle-unstable-x") + " --set time.dt=-1",
+        BadInput{"negative_dt", scene_path("fig05-particle-unstable-x") + " --set time.dt=-1",
                  "--set time.dt: must be > 0"},
-        BadInput{scene_path("fig05-particle-unstable-x") + " --set time.dt=nan",
+        BadInput{"nan_dt", scene_path("fig05-particle-unstable-x") + " --set time.dt=nan",
                  "--set time.dt: must be finite"},
-        BadInput{scene_path("fig05-particle-unstable-x") + " --set model.kind=particle",
+        BadInput{"unquoted_string", scene_path("fig05-particle-unstable-x") + " --set model.kind=particle",
                  "--set model.kind: value is not valid TOML"},
-        BadInput{scene_path("fig05-particle-unstable-x") + " --set 'model.kind=\"soft\"'",
+        BadInput{"unknown_model", scene_path("fig05-particle-unstable-x") + " --set 'model.kind=\"soft\"'",
                  "--set model.kind: unknown model 'soft'"},
-        BadInput{scene_path("fig05-particle-unstable-x") + " --set model.colour=1",
+        BadInput{"unknown_key", scene_path("fig05-particle-unstable-x") + " --set model.colour=1",
                  "--set model.colour: unknown key"},
-        BadInput{scene_path("fig05-particle-unstable-x") + " --set book.size=[1,2]",
+        BadInput{"short_array", scene_path("fig05-particle-unstable-x") + " --set book.size=[1,2]",
                  "--set book.size: expected an array of 3 numbers"},
-        BadInput{scene_path("fig05-particle-unstable-x") + " --set time.frames=1.5",
+        BadInput{"float_frames", scene_path("fig05-particle-unstable-x") + " --set time.frames=1.5",
                  "--set time.frames: expected an integer"},
-        BadInput{scene_path("fig05-particle-unstable-x") + " --set nonsense",
+        BadInput{"no_equals", scene_path("fig05-particle-unstable-x") + " --set nonsense",
                  "--set nonsense: expected key=value"},
-        BadInput{"/no/such/scene.toml", "/no/such/scene.toml: scene file not found"},
-        BadInput{"", "SCENE is required"},
-        BadInput{scene_path("fig05-particle-unstable-x") + " --bogus", "--bogus"}));
+        BadInput{"missing_file", "/no/such/scene.toml", "/no/such/scene.toml: scene file not found"},
+        BadInput{"no_scene", "", "SCENE is required"},
+        BadInput{"unknown_flag", scene_path("fig05-particle-unstable-x") + " --bogus", "--bogus"}));
 
 }  // namespace
 }  // namespace bookspin::test

@@ -1,0 +1,188 @@
+#include "app/compare_render.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "app/clip_sinks.hpp"
+#include "app/compare_layout.hpp"
+#include "app/frame_view.hpp"
+#include "app/interrupt.hpp"
+#include "app/progress.hpp"
+#include "app/still.hpp"
+#include "overlay/cairo_canvas.hpp"
+#include "video/diagnostics_csv.hpp"
+
+namespace bookspin::app {
+
+namespace {
+
+/// One panel's run. Not movable: the FrameSource keeps a reference to `scene`.
+struct PanelState {
+  explicit PanelState(scene::Scene s) : scene(std::move(s)), source(scene) {}
+  scene::Scene scene;  ///< the comparison scene with this panel's model
+  FrameSource source;
+  ShownFrame frame;
+};
+using Panels = std::vector<std::unique_ptr<PanelState>>;
+
+/// A diagnostics CSV written under a temporary name, renamed into place by finish().
+class PanelCsv {
+ public:
+  explicit PanelCsv(const std::filesystem::path& path) : file_(path) {
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
+    out_.open(file_.temp_path(), std::ios::binary);
+    if (!out_) video::throw_output_error("cannot create", path, errno);
+    out_ << video::diagnostics_csv_header() << '\n';
+  }
+  void add(int index, const physics::Diagnostics& row) { out_ << video::diagnostics_csv_row(index, row) << '\n'; }
+  void finish() {
+    out_.close();
+    if (!out_) video::throw_output_error("cannot write", file_.final_path(), errno);
+    file_.commit();
+  }
+
+ private:
+  video::AtomicFile file_;
+  std::ofstream out_;
+};
+
+std::filesystem::path csv_path(const std::filesystem::path& out, const scene::Scene& scene,
+                               const scene::ComparePanel& panel) {
+  return out / scene.name / ("diagnostics-" + panel.name + ".csv");
+}
+
+// The same output checks and sink settings as a single clip's (render_command.cpp).
+void prepare_output_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) video::throw_output_error("cannot create output directory", dir, ec.value());
+  if (access(dir.c_str(), W_OK) != 0) video::throw_output_error("cannot write to", dir, errno);
+}
+
+SinkOptions sink_options(const scene::Scene& scene, const RenderOptions& options) {
+  SinkOptions s;
+  s.write_png = !options.no_png;
+  s.png_compression = scene.render.png_compression;
+  const int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  s.png_workers = std::max(1, jobs - 1);
+  s.encoder = {scene.render.width, scene.render.height, scene.render.fps, scene.render.codec,
+               scene.render.crf, scene.render.preset};
+  return s;
+}
+
+void draw_header(cairo_t* cr, const PixelRect& strip, const std::string& title, double t) {
+  const double font = 0.5 * strip.height;
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+  cairo_set_font_size(cr, font);
+  cairo_set_source_rgb(cr, 0.95, 0.95, 0.92);
+  const double baseline = strip.y + 0.5 * strip.height + 0.36 * font;
+  cairo_move_to(cr, 0.6 * font, baseline);
+  cairo_show_text(cr, title.c_str());
+  char time[32];
+  std::snprintf(time, sizeof time, "t = %.1f", t);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, time, &e);
+  cairo_move_to(cr, strip.width - e.x_advance - 0.6 * font, baseline);
+  cairo_show_text(cr, time);
+}
+
+/// The caption of one tile: the panel's label, its model line, t and any divergence.
+std::vector<overlay::CaptionLine> tile_caption(const PanelState& p) {
+  auto lines = caption_for(p.scene, p.frame.t, p.frame.diverged_at);
+  lines.front() = {p.scene.title, overlay::CaptionStyle::normal, true};  // the label
+  return lines;
+}
+
+void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& layout, const Panels& panels) {
+  const double t = panels.front()->frame.t;
+  if (layout.plots) {
+    std::vector<PanelRun> runs;
+    for (const auto& p : panels) runs.push_back({p->scene.title, p->scene.model.kind, &p->frame.history});
+    draw_panel(frame, *layout.plots, panel_plots(runs, clip_end_time(scene), t));
+  }
+  overlay::CairoCanvas canvas(frame.width, frame.height);
+  draw_header(canvas.cr(), layout.header, scene.title, t);
+  // One font size for every tile (the largest at which every caption fits its tile), so
+  // the labels read as a set.
+  double font = std::min(0.026 * frame.height, 0.045 * layout.tile_height);
+  const double margin = 0.4 * font, max_width = layout.tile_width - 2 * margin;
+  for (const auto& p : panels) font = overlay::caption_font_size(canvas.cr(), tile_caption(*p), font, max_width);
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const PixelRect& tile = layout.tiles[i];
+    overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width};
+    overlay::draw_caption(canvas.cr(), frame.height, tile_caption(*panels[i]), caption);
+  }
+  canvas.composite_onto(frame);
+}
+
+RgbaImage compose(const scene::Scene& scene, const CompareLayout& layout, render::Renderer& renderer,
+                  const Panels& panels) {
+  RgbaImage frame = blank_frame(scene.render.width, scene.render.height);
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const PixelRect& tile = layout.tiles[i];
+    blit(frame, renderer.render(frame_input_for(panels[i]->frame.pose)), static_cast<int>(tile.x),
+         static_cast<int>(tile.y));
+  }
+  decorate(frame, scene, layout, panels);
+  return frame;
+}
+
+/// The row of a frame: the shown pose's diagnostics at the frame's time (held after a
+/// divergence, as in a single clip).
+physics::Diagnostics row_of(const ShownFrame& frame) {
+  physics::Diagnostics row = frame.pose.diagnostics;
+  row.t = frame.t;
+  return row;
+}
+
+/// Steps every panel, renders and queues each frame; returns the signal that stopped it, or 0.
+int render_loop(const scene::Scene& scene, const CompareLayout& layout, render::Renderer& renderer,
+                Panels& panels, ClipSinks& sinks, std::vector<std::unique_ptr<PanelCsv>>& csvs) {
+  Progress progress(scene.name, scene.frames);
+  for (int index = 0; index < scene.frames; ++index) {
+    if (const int signal = interrupt_signal()) return signal;
+    for (auto& p : panels) advance(p->source, index, p->scene, p->frame);
+    sinks.add(index, compose(scene, layout, renderer, panels), row_of(panels.front()->frame));
+    for (std::size_t i = 1; i < panels.size(); ++i) csvs[i - 1]->add(index, row_of(panels[i]->frame));
+    progress.update(index + 1);
+  }
+  progress.finish(scene.frames);
+  return 0;
+}
+
+}  // namespace
+
+int render_comparison(const scene::Scene& scene, const RenderOptions& options) {
+  const std::filesystem::path out(options.out_dir);
+  prepare_output_dir(out);
+  const CompareLayout layout = compare_layout(static_cast<int>(scene.compare.size()), scene.render.width,
+                                              scene.render.height, scene.render.panel);
+  Panels panels;
+  for (const auto& panel : scene.compare) panels.push_back(std::make_unique<PanelState>(panel_scene(scene, panel)));
+  render::Renderer renderer(render_settings_for(panels.front()->scene, layout.tile_width, layout.tile_height, 1.0));
+  ClipPaths paths{out / (scene.name + ".mp4"), out / scene.name / "frames", csv_path(out, scene, scene.compare[0])};
+  ClipSinks sinks(paths, sink_options(scene, options));
+  if (!sinks.encoder_message().empty()) std::cerr << "bookspin: note: " << sinks.encoder_message() << '\n';
+  std::vector<std::unique_ptr<PanelCsv>> csvs;
+  for (std::size_t i = 1; i < scene.compare.size(); ++i)
+    csvs.push_back(std::make_unique<PanelCsv>(csv_path(out, scene, scene.compare[i])));
+  if (const int signal = render_loop(scene, layout, renderer, panels, sinks, csvs)) {
+    std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << scene.name << '\n';
+    return 128 + signal;  // the sinks' and CSVs' destructors remove every temporary
+  }
+  sinks.finish();
+  for (auto& csv : csvs) csv->finish();
+  for (const auto& p : panels) {
+    if (!p->frame.diverged_at) continue;
+    std::cerr << "bookspin: warning: " << scene.name << ": panel '" << p->scene.title
+              << "' diverged at t = " << *p->frame.diverged_at << "; its tile holds the last finite frame\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace bookspin::app

@@ -1,0 +1,98 @@
+#include "scene/model_reader.hpp"
+
+#include <cctype>
+
+namespace bookspin::scene {
+
+namespace {
+
+constexpr double kHuge = 1e12;
+
+/// "compare[i]." — built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + string.
+std::string entry_prefix(std::size_t index) {
+  std::string prefix("compare[");
+  prefix.append(std::to_string(index)).append("].");
+  return prefix;
+}
+
+/// Reads one [[compare]] entry with its own reader, so that unknown keys inside it are
+/// reported with its line and as compare[i].key.
+ComparePanel read_panel(const toml::table& entry, std::size_t index, const std::string& origin,
+                        const std::set<std::string>& overridden, const physics::ModelConfig& base) {
+  TomlReader r(entry, origin, overridden, entry_prefix(index), &entry);
+  ComparePanel panel;
+  if (!r.has("label")) r.fail("label", "missing (every [[compare]] entry needs a label)");
+  panel.label = r.string("label", "");
+  panel.name = label_to_name(panel.label);
+  if (panel.name.empty()) r.fail("label", "must contain a letter or digit");
+  panel.model = read_model(r, base);
+  r.reject_unknown_keys();
+  return panel;
+}
+
+}  // namespace
+
+physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallback) {
+  physics::ModelConfig m;
+  const std::string kind = r.string("model.kind", std::string(physics::to_string(fallback.kind)));
+  if (!physics::parse_model_kind(kind, m.kind)) {
+    r.fail("model.kind",
+           "unknown model '" + kind + "' (expected particle, rigid-matrix, rigid-quaternion, exact)");
+  }
+  const std::string integrator =
+      r.string("model.integrator", std::string(physics::to_string(fallback.integrator)));
+  if (!physics::parse_integrator(integrator, m.integrator)) {
+    r.fail("model.integrator", "unknown integrator '" + integrator +
+                                   "' (expected euler, symplectic-euler, velocity-verlet, rk4, "
+                                   "implicit-midpoint, splitting)");
+  }
+  if (!physics::supports(m.kind, m.integrator)) {
+    r.fail("model.integrator", "model '" + kind + "' does not support integrator '" + integrator + "'");
+  }
+  m.normalize = r.boolean("model.normalize", fallback.normalize);
+  m.damping = r.boolean("model.damping", fallback.damping);
+  m.spring_constant = r.number("model.spring_constant", fallback.spring_constant, 0.0, kHuge, true);
+  return m;
+}
+
+std::vector<ComparePanel> read_compare(TomlReader& r, const std::string& origin,
+                                       const std::set<std::string>& overridden,
+                                       const physics::ModelConfig& base) {
+  const auto view = r.node("compare");
+  if (!view) return {};
+  const toml::array* array = view.as_array();
+  if (!array || !array->is_array_of_tables()) {
+    r.fail("compare", "expected an array of tables ([[compare]] entries)");
+  }
+  if (array->empty() || array->size() > static_cast<std::size_t>(kMaxComparePanels)) {
+    r.fail("compare", "expected 1 to " + std::to_string(kMaxComparePanels) + " [[compare]] entries, got " +
+                          std::to_string(array->size()));
+  }
+  std::vector<ComparePanel> panels;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::table& entry = *array->get(i)->as_table();
+    panels.push_back(read_panel(entry, i + 1, origin, overridden, base));
+    for (std::size_t j = 0; j < i; ++j) {
+      if (panels[j].name != panels.back().name) continue;
+      TomlReader(entry, origin, overridden, entry_prefix(i + 1), &entry)
+          .fail("label", "'" + panels.back().label + "' has the same file name as compare[" +
+                             std::to_string(j + 1) + "] ('" + panels[j].label + "')");
+    }
+  }
+  return panels;
+}
+
+std::string label_to_name(const std::string& label) {
+  std::string name;
+  for (unsigned char c : label) {
+    if (std::isalnum(c)) {
+      name += static_cast<char>(std::tolower(c));
+    } else if (!name.empty() && name.back() != '-') {
+      name += '-';
+    }
+  }
+  while (!name.empty() && name.back() == '-') name.pop_back();
+  return name;
+}
+
+}  // namespace bookspin::scene

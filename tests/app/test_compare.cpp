@@ -1,0 +1,96 @@
+// Comparison scenes ([[compare]]): rendering, per-panel CSVs and key validation (issue 6 §2).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "cli_runner.hpp"
+
+namespace bookspin::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::size_t line_count(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+TEST(Compare, RendersAFewSmallFramesWithOneCsvPerPanel) {
+  const fs::path out = fresh_dir("compare_render");
+  const CliResult r = run_bookspin("render " + scene_path("compare-methods-x") +
+                                   " --set render.width=160 --set render.height=96"
+                                   " --set 'render.preset=\"ultrafast\"' --frames 4 --jobs 2 -o " +
+                                   out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::is_regular_file(out / "compare-methods-x.mp4"));
+  EXPECT_TRUE(fs::is_regular_file(out / "compare-methods-x/frames/frame_00003.png"));
+  for (const char* name : {"particle-mass-spring-euler", "rigid-body-rotation-matrix-rk4", "rigid-body-quaternion-rk4",
+                           "exact-jacobi-elliptic-functions"}) {
+    const fs::path csv = out / "compare-methods-x" / ("diagnostics-" + std::string(name) + ".csv");
+    ASSERT_TRUE(fs::is_regular_file(csv)) << csv;
+    const std::string text = read_file(csv);
+    EXPECT_EQ(line_count(text), 5u) << csv;  // header + 4 frames
+    EXPECT_EQ(text.rfind("frame,t,omega_x", 0), 0u);
+  }
+  EXPECT_FALSE(fs::exists(out / "compare-methods-x/diagnostics.csv"));
+}
+
+TEST(Compare, PanelsShareTheInitialStateAndTime) {
+  const fs::path out = fresh_dir("compare_rows");
+  ASSERT_EQ(run_bookspin("render " + scene_path("compare-normalization") +
+                         " --set render.width=128 --set render.height=96 --no-png --frames 3 -o " +
+                         out.string()).status, 0);
+  const auto rows = [&](const char* name) {
+    std::istringstream in(read_file(out / "compare-normalization" / (std::string("diagnostics-") + name + ".csv")));
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line.substr(0, line.find(',', 2)));
+    return lines;
+  };
+  // Frame 0 is the same initial state; every panel has the same frames and times.
+  EXPECT_EQ(rows("matrix-svd"), rows("quaternion-not-normalized"));
+  EXPECT_EQ(rows("particle-normalized").size(), 4u);
+}
+
+struct BadCompare {
+  std::string toml;
+  std::string expected;  ///< the message after "FILE:"
+};
+
+class CompareErrors : public ::testing::TestWithParam<BadCompare> {};
+
+TEST_P(CompareErrors, ExitTwoNamingFileLineAndKey) {
+  const fs::path dir = fresh_dir("compare_errors");
+  const fs::path scene = dir / "bad.toml";
+  std::ofstream(scene) << "[model]\nkind = \"rigid-matrix\"\n\n" << GetParam().toml;
+  const CliResult r = run_bookspin("render " + scene.string() + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(line_count(r.output), 1u) << r.output;
+  EXPECT_NE(r.output.find(scene.string() + ":" + GetParam().expected), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "out" / "bad.mp4"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadKeys, CompareErrors,
+    ::testing::Values(
+        BadCompare{"[[compare]]\nlabel = \"a\"\ncolour = 1\n", "6: compare[1].colour: unknown key"},
+        BadCompare{"[[compare]]\nlabel = \"a\"\n[[compare]]\nlabel = \"b\"\nmodel.colour = 1\n",
+                   "8: compare[2].model.colour: unknown key"},
+        BadCompare{"[[compare]]\nlabel = \"a\"\nmodel.kind = \"soft\"\n",
+                   "6: compare[1].model.kind: unknown model 'soft'"},
+        BadCompare{"[[compare]]\nlabel = \"a\"\nmodel.normalize = 1\n",
+                   "6: compare[1].model.normalize: expected true or false"},
+        BadCompare{"[[compare]]\nlabel = \"a\"\nmodel.integrator = \"rk4\"\nmodel.kind = \"particle\"\n",
+                   "6: compare[1].model.integrator: model 'particle' does not support"},
+        BadCompare{"[[compare]]\nlabel = \"a\"\n[[compare]]\nmodel.kind = \"exact\"\n",
+                   "6: compare[2].label: missing"},
+        BadCompare{"[[compare]]\nlabel = \"A b\"\n[[compare]]\nlabel = \"a-b\"\n",
+                   "7: compare[2].label: 'a-b' has the same file name as compare[1]"},
+        BadCompare{"[[compare]]\nlabel = \"a\"\ninitial.jiggle = 1\n", "6: compare[1].initial: unknown table"},
+        BadCompare{"compare = 5\n", "4: compare: expected an array of tables"},
+        BadCompare{"[render]\npanel = \"yes\"\n", "5: render.panel: expected true or false"}));
+
+TEST(Compare, SimulateRefusesAComparisonScene) {
+  const CliResult r = run_bookspin("simulate " + scene_path("compare-methods-x") + " --csv /dev/null");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("comparison scene"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace bookspin::test

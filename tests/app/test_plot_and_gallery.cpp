@@ -1,0 +1,92 @@
+// `bookspin plot` and `bookspin gallery` (issue 6 §3, §4).
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "app/gallery_page.hpp"
+#include "cli_runner.hpp"
+#include "video/png_writer.hpp"
+
+namespace bookspin::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(PlotCommand, WritesAPngOfTheRequestedSize) {
+  const fs::path out = fresh_dir("plot_size");
+  const CliResult r = run_bookspin("plot " + scene_path("fig09-matrix-unstable-x") +
+                                   " --set time.frames=60 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const RgbaImage image = video::read_png(out / "fig09-matrix-unstable-x-plot.png");
+  EXPECT_EQ(image.width, 1600);
+  EXPECT_EQ(image.height, 1000);
+  const CliResult small = run_bookspin("plot " + scene_path("compare-normalization") +
+                                       " --set time.frames=30 --width 800 --height 500 -o " + out.string());
+  ASSERT_EQ(small.status, 0) << small.output;
+  const RgbaImage compare = video::read_png(out / "compare-normalization-plot.png");
+  EXPECT_EQ(compare.width, 800);
+  EXPECT_EQ(compare.height, 500);
+}
+
+TEST(PlotCommand, BadSceneExitsTwoAndWritesNothing) {
+  const fs::path out = fresh_dir("plot_bad");
+  const CliResult r = run_bookspin("plot " + scene_path("fig09-matrix-unstable-x") +
+                                   " --set time.dt=-1 -o " + out.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_TRUE(fs::is_empty(out));
+}
+
+TEST(GalleryPage, EscapesTitlesAndAttributes) {
+  EXPECT_EQ(app::html_escape("a <b> & \"c\" 'd'"), "a &lt;b&gt; &amp; &quot;c&quot; &#39;d&#39;");
+  app::GalleryEntry e;
+  e.name = "x";
+  e.title = "<script>alert(1)</script>";
+  const std::string html = app::gallery_html({e});
+  EXPECT_EQ(html.find("<script>"), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+}
+
+/// Every src=, poster= and href= value of `html` that names a file (not a data: URL or #anchor).
+std::vector<std::string> linked_files(const std::string& html) {
+  static const std::regex attribute(R"re((?:src|poster|href)="([^"]*)")re");
+  std::vector<std::string> files;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), attribute); it != std::sregex_iterator(); ++it) {
+    const std::string value = (*it)[1];
+    if (value.rfind("data:", 0) != 0 && value.rfind("#", 0) != 0) files.push_back(value);
+  }
+  return files;
+}
+
+TEST(Gallery, EveryListedVideoAndImageExists) {
+  const fs::path out = fresh_dir("gallery");
+  const fs::path odd = out / "odd-title.toml";
+  std::ofstream(odd) << "[scene]\ntitle = \"Book <&> \\\"spin\\\"\"\n[model]\nkind = \"rigid-matrix\"\n"
+                     << "normalize = true\n[render]\npanel = true\n";
+  const std::vector<std::string> scenes{odd.string(), scene_path("compare-methods-x")};
+  for (const auto& scene : scenes) {
+    const std::string size = " --set render.width=64 --set render.height=64 --set 'render.preset=\"ultrafast\"'";
+    ASSERT_EQ(run_bookspin("render " + scene + size + " --frames 5 --jobs 2 -o " + out.string()).status, 0);
+    ASSERT_EQ(run_bookspin("plot " + scene + " --set time.frames=5 --width 640 --height 400 -o " + out.string()).status, 0);
+  }
+  const CliResult r = run_bookspin("gallery " + out.string() + " " + scenes[0] + " " + scenes[1]);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string html = read_file(out / "index.html");
+  EXPECT_NE(html.find("Book &lt;&amp;&gt; &quot;spin&quot;"), std::string::npos);
+  const auto files = linked_files(html);
+  for (const char* expected : {"odd-title.mp4", "odd-title-plot.png", "compare-methods-x.mp4",
+                               "compare-methods-x/frames/frame_00002.png"}) {
+    EXPECT_NE(std::find(files.begin(), files.end(), expected), files.end()) << expected << '\n' << html;
+  }
+  for (const auto& file : files) EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
+}
+
+TEST(Gallery, ListsAnUnrenderedSceneWithoutBrokenLinks) {
+  const fs::path out = fresh_dir("gallery_empty");
+  ASSERT_EQ(run_bookspin("gallery " + out.string() + " " + scene_path("fig03-particle-stable-z")).status, 0);
+  const std::string html = read_file(out / "index.html");
+  EXPECT_NE(html.find("Figure 3"), std::string::npos);
+  EXPECT_TRUE(linked_files(html).empty()) << html;
+}
+
+}  // namespace
+}  // namespace bookspin::test

@@ -1,0 +1,101 @@
+// Physics determinism: the diagnostics CSV that `bookspin simulate` writes for the first 100
+// frames of every figure scene must hash to the value in tests/golden/physics_hashes.txt.
+// Any change to a simulator, the jiggle or the CSV format shows up here as a physics
+// failure, even where it moves the book too little for the picture goldens to see.
+// BOOKSPIN_UPDATE_GOLDENS=1 rewrites the file (and says which hashes changed).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sys/wait.h>
+
+#include "golden_store.hpp"
+#include "picture_scenes.hpp"
+
+namespace bookspin::picture {
+namespace {
+
+constexpr int kHashedFrames = 100;
+constexpr const char* kHashFile = "physics_hashes.txt";
+
+/// FNV-1a, 64 bit: tiny, fixed by its definition (std::hash is not), so the file holds.
+std::uint64_t fnv1a64(const std::string& bytes) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  for (const unsigned char byte : bytes) hash = (hash ^ byte) * 0x100000001b3ull;
+  return hash;
+}
+
+std::string hex(std::uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+/// Standard output of `bookspin simulate scenes/<name>.toml` for the first frames.
+std::string simulate_csv(const std::string& name) {
+  const std::string command = std::string(BOOKSPIN_EXE) + " simulate " + BOOKSPIN_SOURCE_DIR +
+                              "/scenes/" + name + ".toml --set time.frames=" +
+                              std::to_string(kHashedFrames) + " --csv - 2>/dev/null";
+  std::string csv;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return csv;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) csv.append(buffer, n);
+  const int status = pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command;
+  return csv;
+}
+
+std::map<std::string, std::string> read_hashes(const std::filesystem::path& path) {
+  std::map<std::string, std::string> hashes;
+  std::ifstream in(path);
+  for (std::string scene, hash; in >> scene >> hash;) hashes[scene] = hash;
+  return hashes;
+}
+
+void write_hashes(const std::filesystem::path& path, const std::map<std::string, std::string>& hashes) {
+  std::ofstream out(path, std::ios::trunc);
+  for (const auto& [scene, hash] : hashes) out << scene << ' ' << hash << '\n';
+  if (!out) ADD_FAILURE() << "cannot write " << path;
+}
+
+/// Update mode: the line printed for one scene.
+std::string change(const std::map<std::string, std::string>& old, const std::string& scene,
+                   const std::string& hash) {
+  const auto it = old.find(scene);
+  if (it == old.end()) return "new";
+  return it->second == hash ? "unchanged" : "changed (was " + it->second + ")";
+}
+
+TEST(PhysicsHash, FirstHundredFramesOfEveryFigureAreUnchanged) {
+  note_golden_used(kHashFile);
+  const auto path = golden_dir() / kHashFile;
+  const auto expected = read_hashes(path);
+  std::map<std::string, std::string> actual;
+  for (const std::string& scene : figure_scene_names()) {
+    const std::string csv = simulate_csv(scene);
+    ASSERT_GT(csv.size(), 1000u) << scene << ": `bookspin simulate` wrote no CSV";
+    actual[scene] = hex(fnv1a64(csv));
+  }
+  if (update_mode()) {
+    for (const auto& [scene, hash] : actual)
+      std::cout << "physics hash " << scene << ": " << change(expected, scene, hash) << '\n';
+    write_hashes(path, actual);
+    return;
+  }
+  ASSERT_FALSE(expected.empty()) << "no " << path << "; run `make update-goldens` to create it";
+  for (const auto& [scene, hash] : actual) {
+    const auto it = expected.find(scene);
+    EXPECT_TRUE(it != expected.end() && it->second == hash)
+        << scene << ": the first " << kHashedFrames << " frames' diagnostics CSV hashes to " << hash
+        << ", " << path.filename().string() << " says "
+        << (it == expected.end() ? std::string("nothing") : it->second)
+        << ": the simulation changed. If intended: make update-goldens";
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::picture

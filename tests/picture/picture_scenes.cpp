@@ -1,0 +1,78 @@
+#include "picture_scenes.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "app/frame_view.hpp"
+
+namespace bookspin::picture {
+
+namespace {
+
+std::filesystem::path scenes_dir() { return std::filesystem::path(BOOKSPIN_SOURCE_DIR) / "scenes"; }
+
+/// Everything in RenderSettings that changes the picture, as text (the cache key).
+std::string settings_key(const render::RenderSettings& s) {
+  std::ostringstream key;
+  key.precision(17);
+  const auto& c = s.camera;
+  key << s.width << 'x' << s.height << ' ' << c.fov_y_deg << ' ' << c.eye.transpose() << ' '
+      << c.target.transpose() << ' ' << c.up.transpose() << ' ' << s.textures.front << '|'
+      << s.textures.back << '|' << s.textures.spine << '|' << s.textures.pages << ' '
+      << s.show_angular_momentum << s.show_body_axes << ' ' << s.msaa_samples;
+  return key.str();
+}
+
+}  // namespace
+
+std::vector<std::string> figure_scene_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(scenes_dir())) {
+    const auto& path = entry.path();
+    if (path.extension() == ".toml" && path.stem().string().rfind("fig", 0) == 0) {
+      names.push_back(path.stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+scene::Scene figure_scene(const std::string& name, std::vector<std::string> overrides) {
+  const std::string size = std::to_string(kGoldenSize);
+  overrides.insert(overrides.begin(), {"render.width=" + size, "render.height=" + size});
+  return scene::parse_scene(scenes_dir() / (name + ".toml"), overrides);
+}
+
+render::Renderer& renderer_for(const scene::Scene& scene) {
+  static std::map<std::string, std::unique_ptr<render::Renderer>> renderers;
+  const render::RenderSettings settings = app::render_settings_for(scene);
+  auto& slot = renderers[settings_key(settings)];
+  if (!slot) slot = std::make_unique<render::Renderer>(settings);
+  return *slot;
+}
+
+std::vector<int> pinned_frames(int frames) {
+  std::vector<int> pinned{0, frames / 2, frames - 1};
+  pinned.erase(std::unique(pinned.begin(), pinned.end()), pinned.end());  // short clips
+  return pinned;
+}
+
+std::string golden_name(const std::string& scene, int index) {
+  char suffix[16];
+  std::snprintf(suffix, sizeof suffix, "-f%04d", index);
+  return scene + suffix;
+}
+
+std::string test_name(std::string name) {
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return name;
+}
+
+}  // namespace bookspin::picture

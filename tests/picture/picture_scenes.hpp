@@ -1,0 +1,35 @@
+#pragma once
+// The scenes the picture tests render, at the goldens' size, and renderers shared between
+// them (creating one costs ~0.4 s on llvmpipe; one renderer draws any number of frames).
+#include <string>
+#include <vector>
+
+#include "render/renderer.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::picture {
+
+/// Goldens are 256×256: big enough to show faces, text bands and overlays, small in git.
+inline constexpr int kGoldenSize = 256;
+
+/// The stems of scenes/fig*.toml, sorted (every figure gets goldens automatically).
+std::vector<std::string> figure_scene_names();
+
+/// scenes/<name>.toml at kGoldenSize², with further `overrides` ("key=value", TOML).
+scene::Scene figure_scene(const std::string& name, std::vector<std::string> overrides = {});
+
+/// A renderer for app::render_settings_for(scene), shared by every scene with the same
+/// settings in this process.
+render::Renderer& renderer_for(const scene::Scene& scene);
+
+/// The frames pinned for a scene of `frames` frames: the first, the middle and the last
+/// (for a diverging figure the last frame holds the last finite pose and the banner).
+std::vector<int> pinned_frames(int frames);
+
+/// "fig05-particle-unstable-x-f0375": the golden's name for frame `index` of `scene`.
+std::string golden_name(const std::string& scene, int index);
+
+/// `name` with every character GoogleTest does not allow in a test name replaced by '_'.
+std::string test_name(std::string name);
+
+}  // namespace bookspin::picture
