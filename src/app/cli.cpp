@@ -35,6 +35,9 @@ void add_render(CLI::App& cli, RenderOptions& options) {
   cmd->add_flag("--no-png", options.no_png, "Skip the PNG frames (MP4 and CSV only)");
   cmd->add_option("-j,--jobs", options.jobs, "Worker threads for PNG compression and encoding (default: all cores)")
       ->check(CLI::Range(1, 256));
+  cmd->add_option("--png-compression", options.png_compression,
+                  "zlib level of the PNG frames, 0 (fastest) … 9 (smallest); overrides render.png_compression")
+      ->check(CLI::Range(0, 9));
 }
 
 void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
@@ -68,6 +71,20 @@ void add_gallery(CLI::App& cli, GalleryOptions& options) {
   cmd->add_option("SCENES", options.scene_paths, "Scene files (TOML), in page order")->required();
 }
 
+void add_bench(CLI::App& cli, BenchOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "bench", "Time the render pipeline, the encoder, resolutions, physics and memory; print ratios");
+  cmd->add_option("SCENE", options.scene_path, "Scene for the 1280x720 pipeline runs")->capture_default_str();
+  cmd->add_option("-o,--out", options.out_dir, "Also write OUT/bench.csv");
+  cmd->add_option("--frames", options.frames, "Frames of each 1280x720 pipeline run")
+      ->check(CLI::Range(2, 100000))->capture_default_str();
+  cmd->add_option("--memory-frames", options.memory_frames, "Frames of the long memory run")
+      ->check(CLI::Range(100, 100000))->capture_default_str();
+  cmd->add_option("-j,--jobs", options.jobs, "As render --jobs (default: all cores)")->check(CLI::Range(1, 256));
+  cmd->add_option("--only", options.only, "Run only these sections: pipeline, resolution, physics, memory")
+      ->check(CLI::IsMember({"pipeline", "resolution", "physics", "memory"}))->take_all();
+}
+
 int report(const std::string& message, int code) {
   std::cerr << "bookspin: error: " << message << '\n';
   return code;
@@ -85,6 +102,8 @@ int run_cli(int argc, char** argv) {
   add_render(cli, render);
   AccuracyOptions accuracy;
   add_accuracy(cli, accuracy);
+  BenchOptions bench;
+  add_bench(cli, bench);
   PlotOptions plot;
   add_plot(cli, plot);
   GalleryOptions gallery;
@@ -104,6 +123,7 @@ int run_cli(int argc, char** argv) {
     if (cli.got_subcommand("render")) return render_command(render);
     if (cli.got_subcommand("info")) return info_command();
     if (cli.got_subcommand("accuracy")) return accuracy_command(accuracy);
+    if (cli.got_subcommand("bench")) return bench_command(bench);
     if (cli.got_subcommand("plot")) return plot_command(plot);
     if (cli.got_subcommand("gallery")) return gallery_command(gallery);
   } catch (const scene::SceneError& e) {

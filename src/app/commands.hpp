@@ -24,6 +24,7 @@ struct RenderOptions {
   int frames = 0;  ///< > 0 overrides time.frames
   bool no_png = false;
   int jobs = 0;  ///< worker threads; 0 = number of cores
+  int png_compression = -1;  ///< zlib level 0–9 for the frames; −1 = render.png_compression
 };
 
 /// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv.
@@ -40,6 +41,20 @@ struct AccuracyOptions {
 /// Every model × integrator × dt against the exact solution: table on stdout,
 /// OUT/<scene>-accuracy.csv and a log-log plot OUT/<scene>-accuracy.png.
 int accuracy_command(const AccuracyOptions& options);
+
+struct BenchOptions {
+  std::string scene_path = "scenes/fig09-matrix-unstable-x.toml";  ///< the 720p pipeline scene
+  std::string out_dir;           ///< non-empty: also write OUT/bench.csv
+  int frames = 150;              ///< pipeline frames at 1280×720
+  int memory_frames = 10000;     ///< the long run of the memory check
+  int jobs = 0;                  ///< as render --jobs
+  std::vector<std::string> only; ///< sections to run (pipeline, resolution, physics, memory)
+};
+
+/// Times the render pipeline against the encoder alone, resolution scaling, the physics
+/// models against MuJoCo and peak memory; prints ratios measured in the same run as a
+/// table (and OUT/bench.csv).
+int bench_command(const BenchOptions& options);
 
 /// Prints the EGL/GL and FFmpeg set-up.
 int info_command();

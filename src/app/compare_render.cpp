@@ -91,11 +91,10 @@ void draw_header(cairo_t* cr, const PixelRect& strip, const std::string& title, 
   cairo_show_text(cr, time);
 }
 
-/// The caption of one tile: the panel's label, its model line, t and any divergence.
+/// The caption of one tile: the panel's label (its scene's title), its model line, t and
+/// any divergence.
 std::vector<overlay::CaptionLine> tile_caption(const PanelState& p) {
-  auto lines = caption_for(p.scene, p.frame.t, p.frame.diverged_at);
-  lines.front() = {p.scene.title, overlay::CaptionStyle::normal, true};  // the label
-  return lines;
+  return caption_for(p.scene, p.frame.t, p.frame.diverged_at);
 }
 
 void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& layout, const Panels& panels) {

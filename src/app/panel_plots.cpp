@@ -18,8 +18,8 @@ constexpr Colour kRed{0.85, 0.15, 0.10}, kGreen{0.10, 0.60, 0.20}, kBlue{0.15, 0
 constexpr Colour kPurple{0.50, 0.20, 0.60}, kOrange{0.90, 0.55, 0.00}, kTeal{0.00, 0.55, 0.60},
     kPink{0.80, 0.30, 0.55};
 
-// Runs of a comparison: the Okabe–Ito colours (colour-blind safe), reordered so that
-// neighbours differ (the palette's orange and vermillion look alike), then black.
+// Runs of a comparison: the Okabe–Ito colours (colour-blind safe), with a near-black fifth
+// so that the palette's look-alike vermillion and orange sit far apart.
 constexpr Colour kRunColours[] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45},
                                   {0.80, 0.47, 0.65}, {0.20, 0.20, 0.20}, {0.34, 0.71, 0.91},
                                   {0.90, 0.62, 0.00}, {0.60, 0.60, 0.20}, {0.55, 0.35, 0.15}};

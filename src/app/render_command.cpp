@@ -1,12 +1,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <iostream>
 
 #include "app/clip_sinks.hpp"
 #include "app/commands.hpp"
 #include "app/compare_render.hpp"
-#include "app/frame_source.hpp"
+#include "app/frame_pipeline.hpp"
 #include "app/frame_view.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
@@ -23,12 +24,20 @@ ClipPaths clip_paths(const std::filesystem::path& out_dir, const std::string& na
 SinkOptions sink_options(const scene::Scene& scene, const RenderOptions& options) {
   SinkOptions s;
   s.write_png = !options.no_png;
-  s.png_compression = scene.render.png_compression;
+  s.png_compression = options.png_compression >= 0 ? options.png_compression
+                                                   : scene.render.png_compression;
   const int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
   s.png_workers = std::max(1, jobs - 1);
   s.encoder = {scene.render.width, scene.render.height, scene.render.fps, scene.render.codec,
                scene.render.crf, scene.render.preset};
+  s.encoder.threads = options.jobs;  // 0: the encoder's own choice for all cores
   return s;
+}
+
+/// llvmpipe sizes its rasterizer thread pool by the cores unless told otherwise; --jobs caps
+/// it too (before any GL context exists; GPU drivers ignore the variable).
+void cap_gl_threads(int jobs) {
+  if (jobs > 0) setenv("LP_NUM_THREADS", std::to_string(jobs).c_str(), /*overwrite=*/0);
 }
 
 /// Checks early that the output directory exists or can be made and is writable, so a bad
@@ -40,39 +49,13 @@ void prepare_output_dir(const std::filesystem::path& dir) {
   if (access(dir.c_str(), W_OK) != 0) video::throw_output_error("cannot write to", dir, errno);
 }
 
-struct LoopResult {
-  int frames = 0;
-  std::optional<double> diverged_at;
-  int signal = 0;
-};
-
-/// Simulates, renders and queues every frame. After a divergence the last finite pose is
-/// held with a "diverged at t = …" caption, so the clip keeps its length.
-LoopResult render_frames(const scene::Scene& scene, render::Renderer& renderer, ClipSinks& sinks,
-                         Progress& progress) {
-  LoopResult result;
-  FrameSource source(scene);
-  ShownFrame frame;
-  for (int index = 0; index < scene.frames; ++index) {
-    if ((result.signal = interrupt_signal()) != 0) return result;
-    advance(source, index, scene, frame);
-    result.diverged_at = frame.diverged_at;
-    RgbaImage image = render_frame(scene, renderer, frame);
-    physics::Diagnostics row = frame.pose.diagnostics;
-    row.t = frame.t;
-    sinks.add(index, std::move(image), row);
-    result.frames = index + 1;
-    progress.update(result.frames);
-  }
-  return result;
-}
-
 }  // namespace
 
 int render_command(const RenderOptions& options) {
   install_interrupt_handlers();
   scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
   if (options.frames > 0) scene.frames = options.frames;
+  cap_gl_threads(options.jobs);
   if (!scene.compare.empty()) return render_comparison(scene, options);
   prepare_output_dir(options.out_dir);
   render::Renderer renderer(render_settings_for(scene));

@@ -81,8 +81,14 @@ void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines) {
 void draw_banner(RgbaImage& image, const std::string& text, double centre_x) {
   CairoCanvas canvas(image.width, image.height);
   cairo_t* cr = canvas.cr();
-  const double size = 1.8 * font_size_for(image);
+  double size = 1.8 * font_size_for(image);
   select_font(cr, true, size);
+  // Shrink to fit small frames: the banner must stay readable in full.
+  const double fit = 0.9 * image.width / std::max(1.0, text_width(cr, text) + size);
+  if (fit < 1.0) {
+    size *= fit;
+    select_font(cr, true, size);
+  }
   const double width = text_width(cr, text), pad = 0.5 * size;
   if (centre_x < 0) centre_x = 0.5 * image.width;
   const double x = centre_x - 0.5 * width, y = image.height - 2.2 * size;

@@ -8,6 +8,10 @@ namespace bookspin::physics {
 
 inline constexpr int kSprings = 28;  ///< one per corner pair
 
+/// Corner positions or velocities stored one row per axis, so that the spring loops read
+/// each axis' 8 values contiguously.
+using CornerRows = Eigen::Matrix<double, 3, 8, Eigen::RowMajor>;
+
 /// Particles of mass m = M/8 at the corners, a spring of constant k between every pair
 /// with the rest length of the book at rest. Positions and velocities are 3×8, world frame.
 /// Integrators: `euler` (the paper's order: forces from the positions at step start, then
@@ -23,13 +27,13 @@ class ParticleModel final : public Simulator {
   Diagnostics diagnostics() const override;
   bool finite() const override;
 
-  const Corners& velocities() const { return v_; }
+  Corners velocities() const { return v_; }
 
  private:
   /// Spring (and optional damping) forces on each particle (3×8) for positions x and
   /// velocities v; writes the spring energy Σ ½ k r² into `energy`.
-  Corners forces(const Corners& x, const Corners& v, double& energy) const;
-  double spring_energy(const Corners& x) const;
+  CornerRows forces(const CornerRows& x, const CornerRows& v, double& energy) const;
+  double spring_energy(const CornerRows& x) const;
   double kinetic_energy() const;
   void normalize(double spring_energy_at_start);
 
@@ -39,7 +43,7 @@ class ParticleModel final : public Simulator {
   double damping_;                       ///< 2√(km) with damping, else 0
   Corners rest_;                         ///< body corners at rest (3×8)
   std::array<double, kSprings> rest_length_{};  ///< per corner pair
-  Corners x_, v_;
+  CornerRows x_, v_;
   double energy0_ = 0.0;  ///< total energy fixed at reset (all kinetic)
   double t_ = 0.0;
 };

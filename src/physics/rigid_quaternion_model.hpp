@@ -24,6 +24,7 @@ class RigidQuaternionModel final : public Simulator {
 
  private:
   Eigen::Vector4d derivative(const Eigen::Vector4d& q_coeffs) const;
+  void euler_step(double dt);
 
   Book book_;
   ModelConfig config_;

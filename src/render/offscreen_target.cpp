@@ -69,20 +69,50 @@ OffscreenTarget::OffscreenTarget(int width, int height, int samples)
 }
 
 void OffscreenTarget::bind_for_drawing() const {
-  const GLuint fbo = samples_ > 1 ? msaa_fbo_.get() : resolve_fbo_.get();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, drawing_framebuffer());
   glViewport(0, 0, width_, height_);
 }
 
-void OffscreenTarget::resolve() const {
-  if (samples_ > 1) {
+void OffscreenTarget::resolve() const { resolve(PixelBox::whole(width_, height_)); }
+
+// Resolving a sub-rectangle is exact: each resolved pixel averages its own samples only.
+void OffscreenTarget::resolve(const PixelBox& box) const {
+  if (samples_ > 1 && !box.empty()) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_.get());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_.get());
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
+    glBlitFramebuffer(box.x0, box.y0, box.x1, box.y1, box.x0, box.y0, box.x1, box.y1,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_.get());
   check_gl("resolving the multisampled frame");
+}
+
+GLuint OffscreenTarget::drawing_framebuffer() const {
+  return samples_ > 1 ? msaa_fbo_.get() : resolve_fbo_.get();
+}
+
+void OffscreenTarget::save_background() {
+  if (!background_fbo_.get()) {
+    background_color_ = make_renderbuffer(GL_RGBA8, samples_, width_, height_);
+    background_fbo_ = make_framebuffer(background_color_.get(), 0, "background");
+  }
+  copy_color(drawing_framebuffer(), background_fbo_.get(), PixelBox::whole(width_, height_));
+}
+
+void OffscreenTarget::restore_background(const PixelBox& box) const {
+  if (!box.empty()) copy_color(background_fbo_.get(), drawing_framebuffer(), box);
+}
+
+// A blit between framebuffers of equal sample count and format is a plain copy (GL 3.3
+// §4.3.2 requires identical rectangles then). The scissor test applies to blits, so it is
+// off here; a copy without it is also what lets the driver use memcpy.
+void OffscreenTarget::copy_color(GLuint from, GLuint to, const PixelBox& box) const {
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
+  glBlitFramebuffer(box.x0, box.y0, box.x1, box.y1, box.x0, box.y0, box.x1, box.y1,
+                    GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  check_gl("copying the background");
 }
 
 }  // namespace bookspin::render

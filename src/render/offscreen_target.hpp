@@ -1,6 +1,8 @@
 #pragma once
-// Where frames are drawn: a multisampled FBO, resolved into a single-sample FBO.
+// Where frames are drawn: a multisampled FBO, resolved into a single-sample FBO, plus a
+// copy of the background so that later frames restore it instead of redrawing it.
 #include "render/gl_util.hpp"
+#include "render/pixel_box.hpp"
 
 namespace bookspin::render {
 
@@ -17,6 +19,13 @@ class OffscreenTarget {
   /// Resolves the multisampled image into the single-sample framebuffer (glBlitFramebuffer)
   /// and leaves that one bound for reading.
   void resolve() const;
+  /// Same for the pixels of `box` only; the rest of the single-sample image is kept.
+  void resolve(const PixelBox& box) const;
+  /// Keeps a copy of the whole drawn image (every sample) as the background.
+  void save_background();
+  /// Copies the saved background back over `box` of the drawing framebuffer: exactly the
+  /// samples drawing the background there would give. Requires save_background().
+  void restore_background(const PixelBox& box) const;
   /// The single-sample framebuffer holding the finished frame (bottom row first, GL style).
   GLuint resolved_framebuffer() const { return resolve_fbo_.get(); }
 
@@ -25,6 +34,9 @@ class OffscreenTarget {
   int samples() const { return samples_; }  ///< samples actually used
 
  private:
+  GLuint drawing_framebuffer() const;
+  void copy_color(GLuint from, GLuint to, const PixelBox& box) const;
+
   int width_;
   int height_;
   int samples_;
@@ -33,6 +45,8 @@ class OffscreenTarget {
   FramebufferHandle resolve_fbo_;
   RenderbufferHandle resolve_color_;
   RenderbufferHandle depth_;
+  FramebufferHandle background_fbo_;     ///< same sample count as the drawing framebuffer
+  RenderbufferHandle background_color_;
 };
 
 }  // namespace bookspin::render

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
+
+#include "render/render_error.hpp"
 
 namespace bookspin::render {
 
@@ -18,17 +21,88 @@ void flip_rows(RgbaImage& image, std::vector<std::uint8_t>& scratch) {
   }
 }
 
+void bind_for_reading(const OffscreenTarget& target) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, target.resolved_framebuffer());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+}
+
+/// A bottom-up GL image as an RgbaImage, flipped while copying: one pass over the pixels
+/// and no zero-filling of a buffer about to be overwritten.
+RgbaImage copy_flipped(const std::uint8_t* gl_rows, int width, int height) {
+  RgbaImage image;
+  image.width = width;
+  image.height = height;
+  const std::size_t stride = static_cast<std::size_t>(width) * 4;
+  image.pixels.reserve(stride * height);
+  for (int y = height - 1; y >= 0; --y) {
+    const std::uint8_t* row = gl_rows + stride * y;
+    image.pixels.insert(image.pixels.end(), row, row + stride);
+  }
+  return image;
+}
+
 }  // namespace
+
+PixelReader::PixelReader(int ring_size) : ring_size_(std::max(2, ring_size)) {}
 
 void PixelReader::read(const OffscreenTarget& target, RgbaImage& image) {
   if (image.width != target.width() || image.height != target.height())
     image = RgbaImage(target.width(), target.height());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, target.resolved_framebuffer());
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  bind_for_reading(target);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);  // into client memory, not a ring buffer
   glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
   check_gl("reading back the frame (glReadPixels)");
   flip_rows(image, row_buffer_);
+}
+
+void PixelReader::prepare(Slot& slot, int width, int height) {
+  if (!slot.buffer.get()) {
+    GLuint name = 0;
+    glGenBuffers(1, &name);
+    slot.buffer = BufferHandle(name);
+  }
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.get());
+  if (slot.width != width || slot.height != height) {
+    const auto bytes = static_cast<GLsizeiptr>(width) * height * 4;
+    glBufferData(GL_PIXEL_PACK_BUFFER, bytes, nullptr, GL_STREAM_READ);
+    slot.width = width;
+    slot.height = height;
+  }
+}
+
+void PixelReader::start(const OffscreenTarget& target) {
+  if (pending_ >= ring_size_) throw std::logic_error("PixelReader::start with the ring full");
+  if (slots_.empty()) slots_.resize(static_cast<std::size_t>(ring_size_));
+  Slot& slot = slots_[static_cast<std::size_t>(next_)];
+  bind_for_reading(target);
+  prepare(slot, target.width(), target.height());
+  // With a pack buffer bound the pointer is an offset into it: the call only queues the copy.
+  glReadPixels(0, 0, slot.width, slot.height, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  check_gl("starting the read-back of a frame (glReadPixels into a pixel buffer)");
+  next_ = (next_ + 1) % ring_size_;
+  ++pending_;
+}
+
+RgbaImage PixelReader::finish() {
+  if (pending_ == 0) throw std::logic_error("PixelReader::finish with no read pending");
+  const int oldest = (next_ - pending_ + ring_size_) % ring_size_;
+  Slot& slot = slots_[static_cast<std::size_t>(oldest)];
+  --pending_;
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.get());
+  const auto bytes = static_cast<GLsizeiptr>(slot.width) * slot.height * 4;
+  const void* mapped = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, bytes, GL_MAP_READ_BIT);
+  if (mapped == nullptr) {
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    check_gl("mapping a read-back pixel buffer");
+    throw RenderError("cannot map a read-back pixel buffer");
+  }
+  RgbaImage image = copy_flipped(static_cast<const std::uint8_t*>(mapped), slot.width, slot.height);
+  glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  check_gl("reading a read-back pixel buffer");
+  return image;
 }
 
 }  // namespace bookspin::render

@@ -7,11 +7,17 @@
 #include "render/offscreen_target.hpp"
 #include "render/overlay_mesh.hpp"
 #include "render/passes.hpp"
+#include "render/pixel_box.hpp"
 #include "render/pixel_reader.hpp"
 
 namespace bookspin::render {
 
 namespace {
+
+// Two pixel buffers: frame N's read-back runs while the caller finishes frame N − 1. More
+// only adds latency and memory; llvmpipe and GPU drivers alike finish a frame well within
+// one frame of the caller's work.
+constexpr int kPipelineDepth = 2;
 
 // Sizes must be even: the video stage encodes 4:2:0 chroma, which halves both dimensions.
 void validate_settings(const RenderSettings& settings) {
@@ -42,8 +48,10 @@ struct Renderer::Impl {
   std::optional<BackgroundPass> background;
   std::optional<BookPass> book;
   std::optional<OverlayPass> overlays;
-  PixelReader reader;
+  PixelReader reader{kPipelineDepth};
   ViewProjection camera;
+  bool background_saved = false;
+  PixelBox previous_box;  ///< where the last frame drew; the whole frame before the first
 
   explicit Impl(const RenderSettings& s) : settings(s) {
     validate_settings(settings);
@@ -56,6 +64,7 @@ struct Renderer::Impl {
     background.emplace();
     book.emplace(images);
     overlays.emplace();
+    previous_box = PixelBox::whole(settings.width, settings.height);
   }
 
   ~Impl() {
@@ -70,22 +79,67 @@ struct Renderer::Impl {
     target.reset();
   }
 
-  RgbaImage render(const FrameInput& frame) {
+  /// Where this frame's book and overlays can put pixels.
+  PixelBox drawn_box(const std::vector<BookVertex>& book_mesh,
+                     const std::vector<OverlayVertex>& overlay_mesh) const {
+    ScreenBounds bounds(camera.projection * camera.view, settings.width, settings.height);
+    add_vertices(bounds, book_mesh);
+    add_vertices(bounds, overlay_mesh);
+    return bounds.box();
+  }
+
+  /// The background never changes, so it is drawn once and saved; each frame restores it,
+  /// clears depth, draws and resolves only in the box where the last frame or this one
+  /// drew. Everything outside that box already holds the resolved background, so the
+  /// image is the same as redrawing the whole frame, for a fraction of the work.
+  void draw(const FrameInput& frame) {
     context->make_current();
-    target->bind_for_drawing();
-    glClear(GL_DEPTH_BUFFER_BIT);  // no colour clear: the background covers every pixel
-    background->draw();
-    book->draw(build_book_mesh(frame.corners), camera);
+    const std::vector<BookVertex> book_mesh = build_book_mesh(frame.corners);
+    std::vector<OverlayVertex> overlay_mesh;
     if (settings.show_angular_momentum || settings.show_body_axes) {
-      overlays->draw(build_overlays(frame.corners, frame.angular_momentum_direction,
-                                    settings.show_angular_momentum, settings.show_body_axes),
-                     camera);
+      overlay_mesh = build_overlays(frame.corners, frame.angular_momentum_direction,
+                                    settings.show_angular_momentum, settings.show_body_axes);
     }
+    const PixelBox box = drawn_box(book_mesh, overlay_mesh);
+    const PixelBox dirty = box.united(previous_box);
+    if (!background_saved) {
+      target->bind_for_drawing();
+      background->draw();
+      target->save_background();
+      background_saved = true;
+    } else {
+      target->restore_background(dirty);
+    }
+    target->bind_for_drawing();
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(dirty.x0, dirty.y0, dirty.width(), dirty.height());
+    glClear(GL_DEPTH_BUFFER_BIT);  // no colour clear: the background covers every pixel
+    book->draw(book_mesh, camera);
+    if (!overlay_mesh.empty()) overlays->draw(overlay_mesh, camera);
+    glDisable(GL_SCISSOR_TEST);
     check_gl("drawing a frame");
-    target->resolve();
+    target->resolve(dirty);
+    previous_box = box;
+  }
+
+  RgbaImage render(const FrameInput& frame) {
+    draw(frame);
     RgbaImage image;
     reader.read(*target, image);
     return image;
+  }
+
+  void submit(const FrameInput& frame) {
+    if (reader.pending() >= reader.ring_size())
+      throw std::logic_error("Renderer::submit with the pipeline full: collect() first");
+    draw(frame);
+    reader.start(*target);
+  }
+
+  std::optional<RgbaImage> take_oldest() {
+    if (reader.pending() == 0) return std::nullopt;
+    context->make_current();
+    return reader.finish();
   }
 };
 
@@ -95,6 +149,13 @@ Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 RgbaImage Renderer::render(const FrameInput& frame) { return impl_->render(frame); }
+void Renderer::submit(const FrameInput& frame) { impl_->submit(frame); }
+std::optional<RgbaImage> Renderer::collect() {
+  if (impl_->reader.pending() < impl_->reader.ring_size()) return std::nullopt;
+  return impl_->take_oldest();
+}
+std::optional<RgbaImage> Renderer::flush() { return impl_->take_oldest(); }
+int Renderer::pipeline_depth() const { return impl_->reader.ring_size(); }
 const RenderSettings& Renderer::settings() const { return impl_->settings; }
 const GlInfo& Renderer::info() const { return impl_->context->info(); }
 

@@ -2,6 +2,7 @@
 // The render stage's door: draws a book given as 8 world-space corners, off-screen, headless
 // (EGL, OpenGL 3.3 core), into an RGBA image. Knows nothing of physics.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,8 +64,23 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   /// Renders one frame: width×height RGBA, top row first, opaque. Throws RenderError on a
-  /// GL failure.
+  /// GL failure. Synchronous (tests, stills); frames in flight from submit() are unaffected.
   RgbaImage render(const FrameInput& frame);
+
+  /// Pipelined rendering (the render command's path): draws `frame` and starts its
+  /// read-back through a ring of pixel-buffer objects without waiting for it. At most
+  /// pipeline_depth() frames may be in flight (std::logic_error otherwise), so call
+  /// collect() after each submit(). Throws RenderError on a GL failure.
+  void submit(const FrameInput& frame);
+  /// The oldest frame in flight once pipeline_depth() frames are, so that the newest
+  /// frame's drawing overlaps the caller's work on this one; std::nullopt before that.
+  /// The image is exactly what render() would have returned for that frame.
+  std::optional<RgbaImage> collect();
+  /// The oldest frame in flight however many there are (end of a clip); std::nullopt when
+  /// none is left.
+  std::optional<RgbaImage> flush();
+  /// Frames in flight before collect() returns one (pixel buffers in the ring, ≥ 2).
+  int pipeline_depth() const;
 
   const RenderSettings& settings() const;
   /// Platform, vendor, renderer and version strings of this renderer's context.

@@ -2,7 +2,9 @@
 
 #include <fstream>
 #include <limits>
-#include <regex>
+#include <algorithm>
+#include <cctype>
+#include <array>
 #include <sstream>
 
 #include "scene/model_reader.hpp"
@@ -13,6 +15,24 @@ namespace bookspin::scene {
 namespace {
 
 constexpr double kHuge = 1e12;
+
+bool is_key_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; }
+
+/// "a.b_c.d-e": bare TOML keys joined by dots, none empty.
+bool is_dotted_key(std::string_view key) {
+  if (key.empty() || key.front() == '.' || key.back() == '.') return false;
+  for (std::size_t i = 0; i < key.size(); ++i) {
+    if (key[i] == '.' ? key[i + 1] == '.' : !is_key_char(key[i])) return false;
+  }
+  return true;
+}
+
+/// A file name that cannot leave the output directory: [A-Za-z0-9][A-Za-z0-9._-]*, no "..".
+bool is_safe_name(std::string_view name) {
+  if (name.empty() || !std::isalnum(static_cast<unsigned char>(name.front()))) return false;
+  if (name.find("..") != std::string_view::npos) return false;
+  return std::all_of(name.begin(), name.end(), [](char c) { return is_key_char(c) || c == '.'; });
+}
 
 std::string first_line(std::string_view text) { return std::string(text.substr(0, text.find('\n'))); }
 
@@ -58,8 +78,7 @@ std::string describe_syntax_error(const toml::parse_error& e, std::string_view t
 std::string apply_override(toml::table& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   const std::string key = assignment.substr(0, eq);
-  static const std::regex key_pattern(R"([A-Za-z0-9_-]+(\.[A-Za-z0-9_-]+)*)");
-  if (eq == std::string::npos || !std::regex_match(key, key_pattern)) {
+  if (eq == std::string::npos || !is_dotted_key(key)) {
     throw SceneError("--set " + assignment + ": expected key=value, e.g. time.dt=0.01");
   }
   toml::table parsed;
@@ -128,9 +147,9 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   }
   o.crf = static_cast<int>(r.integer("render.crf", o.crf, 0, 51));
   o.preset = r.string("render.preset", o.preset);
-  static const std::regex presets(
-      "ultrafast|superfast|veryfast|faster|fast|medium|slow|slower|veryslow");
-  if (!std::regex_match(o.preset, presets)) r.fail("render.preset", "unknown preset '" + o.preset + "'");
+  static constexpr std::array<std::string_view, 9> kPresets{
+      "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"};
+  if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end()) r.fail("render.preset", "unknown preset '" + o.preset + "'");
   o.png_compression = static_cast<int>(r.integer("render.png_compression", 1, 0, 9));
   o.panel = r.boolean("render.panel", false);
   return o;
@@ -138,8 +157,7 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
 
 void read_identity(TomlReader& r, Scene& s) {
   s.name = r.string("scene.name", s.source.stem().string());
-  static const std::regex safe_name(R"([A-Za-z0-9][A-Za-z0-9._-]*)");
-  if (!std::regex_match(s.name, safe_name) || s.name.find("..") != std::string::npos) {
+  if (!is_safe_name(s.name)) {
     r.fail("scene.name", "'" + s.name +
                              "' is not a safe output name (letters, digits, '.', '_', '-'; no '/' or '..')");
   }

@@ -4,6 +4,7 @@ extern "C" {
 #include <libavutil/opt.h>
 }
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
@@ -39,7 +40,9 @@ void set_stream_properties(AVCodecContext* context, const EncoderSettings& setti
   context->pix_fmt = AV_PIX_FMT_YUV420P;
   context->time_base = AVRational{1, settings.fps};
   context->framerate = AVRational{settings.fps, 1};
-  context->thread_count = 0;  // libavcodec's default is 1; 0 lets x264 use every core
+  // libavcodec's default is 1; 0 lets x264 use every core. A cap (render --jobs) keeps
+  // parallel renders from each starting a thread pool sized for the whole machine.
+  context->thread_count = std::max(0, settings.threads);
   // Tag what Mp4Encoder's swscale conversion produces (BT.709, limited range),
   // so players do not guess BT.601 for small frames and shift the colours.
   context->colorspace = AVCOL_SPC_BT709;

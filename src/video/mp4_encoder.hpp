@@ -26,6 +26,8 @@ struct EncoderSettings {
   int crf = 18;                   ///< constant-quality factor 0 (lossless) … 51 (worst);
                                   ///< sent as "crf", or "cq" to encoders without crf
   std::string preset = "medium";  ///< encoder speed preset, e.g. x264 "ultrafast"…"placebo"
+  int threads = 0;                ///< encoder threads; 0 = the encoder's choice for all
+                                  ///< cores (x264: 1.5 × cores frame threads + lookahead)
 };
 
 /// Encodes RGBA frames into an MP4 with one H.264 yuv420p stream, constant

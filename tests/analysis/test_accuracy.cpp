@@ -34,6 +34,9 @@ std::string name_of(const Method& m) {
   return name;
 }
 
+// gtest prints parameters into the names ctest registers; print a stable text, not bytes.
+[[maybe_unused]] void PrintTo(const OrderCase& c, std::ostream* out) { *out << name_of(c.method); }
+
 class RigidOrder : public ::testing::TestWithParam<OrderCase> {};
 
 // Halving dt divides the orientation error by 2^order (within 10%) once dt is small enough

@@ -23,6 +23,9 @@ struct BadScene {
   std::string args;      ///< NAME.args, or empty
   std::string expected;  ///< the full line, placeholders substituted
 };
+// gtest prints parameters into the names ctest registers; print a stable text, not bytes.
+[[maybe_unused]] void PrintTo(const BadScene& p, std::ostream* out) { *out << p.name; }
+
 
 fs::path catalogue_dir() { return fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "bad_scenes"; }
 

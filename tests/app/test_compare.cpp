@@ -52,13 +52,18 @@ struct BadCompare {
   std::string toml;
   std::string expected;  ///< the message after "FILE:"
 };
+// gtest prints parameters into the names ctest registers; print a stable text, not bytes.
+[[maybe_unused]] void PrintTo(const BadCompare& p, std::ostream* out) { *out << p.expected; }
+
 
 class CompareErrors : public ::testing::TestWithParam<BadCompare> {};
 
 TEST_P(CompareErrors, ExitTwoNamingFileLineAndKey) {
-  const fs::path dir = fresh_dir("compare_errors");
+  // One folder per case: ctest runs the cases in parallel.
+  const fs::path dir =
+      fresh_dir(std::string("compare_errors/") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   const fs::path scene = dir / "bad.toml";
-  std::ofstream(scene) << "[model]\nkind = \"rigid-matrix\"\n\n" << GetParam().toml;
+  std::ofstream(scene) << GetParam().toml;
   const CliResult r = run_bookspin("render " + scene.string() + " -o " + (dir / "out").string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_EQ(line_count(r.output), 1u) << r.output;
@@ -69,22 +74,24 @@ TEST_P(CompareErrors, ExitTwoNamingFileLineAndKey) {
 INSTANTIATE_TEST_SUITE_P(
     BadKeys, CompareErrors,
     ::testing::Values(
-        BadCompare{"[[compare]]\nlabel = \"a\"\ncolour = 1\n", "6: compare[1].colour: unknown key"},
+        BadCompare{"[[compare]]\nlabel = \"a\"\ncolour = 1\n", "3: compare[1].colour: unknown key"},
         BadCompare{"[[compare]]\nlabel = \"a\"\n[[compare]]\nlabel = \"b\"\nmodel.colour = 1\n",
-                   "8: compare[2].model.colour: unknown key"},
+                   "5: compare[2].model.colour: unknown key"},
         BadCompare{"[[compare]]\nlabel = \"a\"\nmodel.kind = \"soft\"\n",
-                   "6: compare[1].model.kind: unknown model 'soft'"},
+                   "3: compare[1].model.kind: unknown model 'soft'"},
         BadCompare{"[[compare]]\nlabel = \"a\"\nmodel.normalize = 1\n",
-                   "6: compare[1].model.normalize: expected true or false"},
+                   "3: compare[1].model.normalize: expected true or false"},
         BadCompare{"[[compare]]\nlabel = \"a\"\nmodel.integrator = \"rk4\"\nmodel.kind = \"particle\"\n",
-                   "6: compare[1].model.integrator: model 'particle' does not support"},
+                   "3: compare[1].model.integrator: model 'particle' does not support"},
         BadCompare{"[[compare]]\nlabel = \"a\"\n[[compare]]\nmodel.kind = \"exact\"\n",
-                   "6: compare[2].label: missing"},
+                   "3: compare[2].label: missing"},
         BadCompare{"[[compare]]\nlabel = \"A b\"\n[[compare]]\nlabel = \"a-b\"\n",
-                   "7: compare[2].label: 'a-b' has the same file name as compare[1]"},
-        BadCompare{"[[compare]]\nlabel = \"a\"\ninitial.jiggle = 1\n", "6: compare[1].initial: unknown table"},
-        BadCompare{"compare = 5\n", "4: compare: expected an array of tables"},
-        BadCompare{"[render]\npanel = \"yes\"\n", "5: render.panel: expected true or false"}));
+                   "4: compare[2].label: 'a-b' has the same file name as compare[1]"},
+        BadCompare{"[[compare]]\nlabel = \"a\"\ninitial.jiggle = 1\n", "3: compare[1].initial: unknown table"},
+        BadCompare{"compare = 5\n", "1: compare: expected an array of tables"},
+        BadCompare{"[render]\npanel = \"yes\"\n", "2: render.panel: expected true or false"}),
+    // Stable names: ctest registers each case by name, so no raw bytes in it.
+    [](const auto& info) { return "case" + std::to_string(info.index); });
 
 TEST(Compare, SimulateRefusesAComparisonScene) {
   const CliResult r = run_bookspin("simulate " + scene_path("compare-methods-x") + " --csv /dev/null");

@@ -79,6 +79,9 @@ struct BadInput {
   std::string args;
   std::string expected;  ///< a fragment of the one-line message
 };
+// gtest prints parameters into the names ctest registers; print a stable text, not bytes.
+[[maybe_unused]] void PrintTo(const BadInput& p, std::ostream* out) { *out << p.label; }
+
 
 class SimulateErrors : public ::testing::TestWithParam<BadInput> {};
 
@@ -110,7 +113,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "--set nonsense: expected key=value"},
         BadInput{"missing_file", "/no/such/scene.toml", "/no/such/scene.toml: scene file not found"},
         BadInput{"no_scene", "", "SCENE is required"},
-        BadInput{"unknown_flag", scene_path("fig05-particle-unstable-x") + " --bogus", "--bogus"}));
+        BadInput{"unknown_flag", scene_path("fig05-particle-unstable-x") + " --bogus", "--bogus"}),
+    [](const auto& info) { return info.param.label; });
 
 }  // namespace
 }  // namespace bookspin::test

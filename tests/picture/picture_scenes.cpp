@@ -48,6 +48,17 @@ scene::Scene figure_scene(const std::string& name, std::vector<std::string> over
   return scene::parse_scene(scenes_dir() / (name + ".toml"), overrides);
 }
 
+// No plot panel: it moves the camera sideways, which would show slivers of the neighbouring
+// faces in the on-axis views.
+scene::Scene book_at_rest(const std::string& label, const std::string& direction,
+                          std::vector<std::string> overrides) {
+  overrides.insert(overrides.begin(),
+                   {"initial.angular_velocity=[0.0, 0.0, 0.0]", "initial.jiggle=0.0", "time.frames=1",
+                    "render.panel=false", "scene.title=\"Face mapping: " + label + "\"",
+                    "render.camera_direction=" + direction});
+  return figure_scene("fig09-matrix-unstable-x", std::move(overrides));
+}
+
 render::Renderer& renderer_for(const scene::Scene& scene) {
   static std::map<std::string, std::unique_ptr<render::Renderer>> renderers;
   const render::RenderSettings settings = app::render_settings_for(scene);

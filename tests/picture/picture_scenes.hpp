@@ -18,6 +18,11 @@ std::vector<std::string> figure_scene_names();
 /// scenes/<name>.toml at kGoldenSize², with further `overrides` ("key=value", TOML).
 scene::Scene figure_scene(const std::string& name, std::vector<std::string> overrides = {});
 
+/// fig09's rigid book at rest (frame 0 = the identity pose), captioned "Face mapping:
+/// <label>", seen from `direction` (TOML, e.g. "[0.0, 0.0, 1.0]"), plus `overrides`.
+scene::Scene book_at_rest(const std::string& label, const std::string& direction,
+                          std::vector<std::string> overrides = {});
+
 /// A renderer for app::render_settings_for(scene), shared by every scene with the same
 /// settings in this process.
 render::Renderer& renderer_for(const scene::Scene& scene);

@@ -67,6 +67,16 @@ TEST_F(Teeth, SwappedFrontAndBackTexturesAreCaught) {
   expect_caught(golden_name(kScene, 0), app::render_still(scene, renderer_for(scene), 0), "swapped-textures");
 }
 
+// A renderer that flips a texture's u (the cover reads right to left) moves no edge of the
+// book; only the artwork inside the cover changes.
+TEST_F(Teeth, MirroredCoverArtIsCaught) {
+  const auto path = fresh_output_dir("teeth-textures-mirrored-front") / "front.png";
+  video::write_png(path, mirrored(render::generate_face_image(render::FaceImage::front)));
+  const scene::Scene scene =
+      book_at_rest("front-from-plus-z", "[0.0, 0.0, 1.0]", {"render.texture_front=\"" + path.string() + "\""});
+  expect_caught("face-front-from-plus-z", app::render_still(scene, renderer_for(scene), 0), "mirrored-cover");
+}
+
 TEST_F(Teeth, MirroredFrameIsCaught) {
   const scene::Scene scene = figure_scene(kScene);
   expect_unchanged_frame_passes(scene, 0);

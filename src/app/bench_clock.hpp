@@ -1,0 +1,29 @@
+#pragma once
+// Timing for the physics bench: CPU time of the calling thread, best of several runs, so
+// that other processes on a shared machine disturb the numbers as little as possible.
+#include <ctime>
+
+namespace bookspin::app {
+
+inline double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+/// Fewest nanoseconds per call of `run(steps)` (which performs `steps` steps) over
+/// `repetitions` runs, each after `reset()`.
+template <typename Reset, typename Run>
+double best_ns_per_step(long steps, int repetitions, Reset&& reset, Run&& run) {
+  double best = 0.0;
+  for (int r = 0; r < repetitions; ++r) {
+    reset();
+    const double start = thread_cpu_seconds();
+    run(steps);
+    const double ns = (thread_cpu_seconds() - start) * 1e9 / static_cast<double>(steps);
+    if (r == 0 || ns < best) best = ns;
+  }
+  return best;
+}
+
+}  // namespace bookspin::app

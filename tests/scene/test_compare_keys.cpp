@@ -1,0 +1,70 @@
+// [[compare]] entries and render.panel in the scene parser (issue 6).
+#include <gtest/gtest.h>
+
+#include "scene/scene.hpp"
+
+namespace bookspin::scene {
+namespace {
+
+Scene parse(const std::string& text) { return parse_scene_text(text, "test.toml"); }
+
+TEST(CompareKeys, PanelsInheritTheSceneModelAndOverrideTheirOwnKeys) {
+  const Scene s = parse(
+      "[model]\nkind = \"rigid-matrix\"\nnormalize = true\n"
+      "[[compare]]\nlabel = \"Matrix, Euler\"\n"
+      "[[compare]]\nlabel = \"quaternion (RK4)\"\nmodel.kind = \"rigid-quaternion\"\nmodel.integrator = \"rk4\"\n"
+      "[[compare]]\nlabel = \"no SVD\"\nmodel = { normalize = false }\n");
+  ASSERT_EQ(s.compare.size(), 3u);
+  EXPECT_EQ(s.compare[0].name, "matrix-euler");
+  EXPECT_EQ(s.compare[0].model.kind, physics::ModelKind::rigid_matrix);
+  EXPECT_TRUE(s.compare[0].model.normalize);
+  EXPECT_EQ(s.compare[1].name, "quaternion-rk4");
+  EXPECT_EQ(s.compare[1].model.kind, physics::ModelKind::rigid_quaternion);
+  EXPECT_EQ(s.compare[1].model.integrator, physics::Integrator::rk4);
+  EXPECT_TRUE(s.compare[1].model.normalize);
+  EXPECT_FALSE(s.compare[2].model.normalize);
+}
+
+TEST(CompareKeys, PanelSceneCarriesThePanelModelAndLabel) {
+  const Scene s = parse("[scene]\nname = \"cmp\"\n[[compare]]\nlabel = \"Exact\"\nmodel.kind = \"exact\"\n");
+  const Scene p = panel_scene(s, s.compare[0]);
+  EXPECT_EQ(p.model.kind, physics::ModelKind::exact);
+  EXPECT_EQ(p.title, "Exact");
+  EXPECT_EQ(p.name, "cmp-exact");
+  EXPECT_TRUE(p.compare.empty());
+}
+
+TEST(CompareKeys, PanelDefaultsOffAndParses) {
+  EXPECT_FALSE(parse("[render]\nwidth = 640\n").render.panel);
+  EXPECT_TRUE(parse("[render]\npanel = true\n").render.panel);
+  EXPECT_TRUE(parse("[render]\nwidth = 640\n").compare.empty());
+}
+
+TEST(CompareKeys, ErrorsNameTheEntry) {
+  const auto message = [](const std::string& text) {
+    try {
+      parse(text);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("[[compare]]\nlabel = \"a\"\nspeed = 2\n"), "test.toml:3: compare[1].speed: unknown key");
+  EXPECT_EQ(message("[[compare]]\nlabel = \"!!\"\n"), "test.toml:2: compare[1].label: must contain a letter or digit");
+  EXPECT_EQ(message("[[compare]]\nlabel = 3\n"), "test.toml:2: compare[1].label: expected a string, got an integer");
+  std::string many;
+  for (int i = 0; i < 10; ++i) many += "[[compare]]\nlabel = \"p" + std::to_string(i) + "\"\n";
+  EXPECT_EQ(message(many), "test.toml:1: compare: expected 1 to 9 [[compare]] entries, got 10");
+}
+
+TEST(CompareKeys, SetOverrideOfTheWholeArrayIsNamedAsSuch) {
+  try {
+    parse_scene_text("[model]\nkind = \"exact\"\n", "test.toml", {"compare=[{label = \"a\", colour = 1}]"});
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(), "--set compare[1].colour: unknown key");
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::scene
