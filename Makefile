@@ -3,7 +3,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 SCENES := $(wildcard scenes/*.toml)
 
-.PHONY: all deps build figures test render update-goldens clean
+.PHONY: all deps build figures test render bench update-goldens clean
 all: build
 
 deps:
@@ -21,6 +21,11 @@ test: build
 
 render: build
 	$(BUILD)/bookspin render $(SCENE) -o out
+
+# Pipeline against the encoder alone, resolutions, physics against MuJoCo, memory (README,
+# "Performance"): a table on stdout and out/bench.csv. Quiet machine, a few minutes.
+bench: build
+	$(BUILD)/bookspin bench -o out
 
 # Rewrites tests/golden/ from the current build (on llvmpipe, the reference) and prints, for
 # each golden, whether it is new, unchanged or changed (PSNR, share of differing pixels).

@@ -5,6 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,14 +18,19 @@ namespace bookspin::app {
 namespace {
 
 // Small frames: what grows with the clip's length (if anything) is then not hidden
-// behind the size of the frame buffers.
-constexpr int kWidth = 160, kHeight = 90;
+// behind the size of the frame buffers, and 10,000 frames take a minute or two. The plot
+// panel is off: it redraws every curve up to the current frame, so its time (not its
+// memory, a few doubles per frame) grows with the clip. Textures are filtered without
+// anisotropy (hidden --trilinear): with MSAA on llvmpipe it costs most of a small frame's
+// time, and some poses take seconds a frame; neither changes what memory is held.
+constexpr int kWidth = 128, kHeight = 72;
 
 std::vector<std::string> render_arguments(const BenchContext& c, int frames) {
   std::vector<std::string> args = {"bookspin", "render", c.options.scene_path, "--no-png",
                                    "--frames", std::to_string(frames),
                                    "--set", "render.width=" + std::to_string(kWidth),
                                    "--set", "render.height=" + std::to_string(kHeight),
+                                   "--set", "render.panel=false", "--trilinear",
                                    "-o", (c.scratch / ("memory-" + std::to_string(frames))).string()};
   if (c.options.jobs > 0) args.insert(args.end(), {"--jobs", std::to_string(c.options.jobs)});
   return args;
@@ -54,17 +61,29 @@ long peak_rss_kib(const std::vector<std::string>& args) {
   return usage.ru_maxrss;  // KiB on Linux
 }
 
+/// This process's resident set now, in MiB: a fork copies it into the child's count, so it
+/// is a floor under every peak measured here.
+double own_rss_mib() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
 }  // namespace
 
 void bench_memory(const BenchContext& c) {
   const int short_frames = 100, long_frames = c.options.memory_frames;
   const std::string size = std::to_string(kWidth) + "x" + std::to_string(kHeight);
+  char note[96];
+  std::snprintf(note, sizeof note, "child process, wait4 ru_maxrss (bench itself %.0f MiB at fork)",
+                own_rss_mib());
   const double short_mib = peak_rss_kib(render_arguments(c, short_frames)) / 1024.0;
   c.report->add({"memory", "peak RSS, render --no-png " + std::to_string(short_frames) + " frames " + size,
-                 short_mib, "MiB", "child process, wait4 ru_maxrss"});
+                 short_mib, "MiB", note});
   const double long_mib = peak_rss_kib(render_arguments(c, long_frames)) / 1024.0;
   c.report->add({"memory", "peak RSS, render --no-png " + std::to_string(long_frames) + " frames " + size,
-                 long_mib, "MiB", "child process, wait4 ru_maxrss"});
+                 long_mib, "MiB", note});
   c.report->add({"memory", "peak RSS " + std::to_string(long_frames) + " / " + std::to_string(short_frames) + " frames",
                  long_mib / short_mib, "x", at_most(long_mib / short_mib, 1.10)});
 }

@@ -1,17 +1,15 @@
 #include "app/bench_mujoco.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #ifdef BOOKSPIN_HAVE_MUJOCO
 #include <mujoco/mujoco.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <memory>
 
-#include "analysis/accuracy.hpp"
-#include "app/bench_clock.hpp"
+#include <Eigen/Geometry>
 #endif
 
 namespace bookspin::app {
@@ -22,9 +20,13 @@ std::string mujoco_missing() {
   return "MuJoCo was not found when bookspin was built (install libmujoco-dev and re-run CMake)";
 }
 
-MujocoResult run_mujoco(const MujocoSetup&, const physics::ExactRotation&, long, long, int) {
-  throw std::runtime_error(mujoco_missing());
-}
+struct MujocoBook::Impl {};
+MujocoBook::MujocoBook(const MujocoSetup&) { throw std::runtime_error(mujoco_missing()); }
+MujocoBook::~MujocoBook() = default;
+void MujocoBook::reset() {}
+void MujocoBook::step(long) {}
+Eigen::Matrix3d MujocoBook::orientation() const { return Eigen::Matrix3d::Identity(); }
+Eigen::Vector3d MujocoBook::sorted_moments() const { return Eigen::Vector3d::Zero(); }
 
 #else
 
@@ -50,16 +52,7 @@ std::string model_xml(const MujocoSetup& s) {
   return xml;
 }
 
-struct ModelDeleter {
-  void operator()(mjModel* m) const { mj_deleteModel(m); }
-};
-struct DataDeleter {
-  void operator()(mjData* d) const { mj_deleteData(d); }
-};
-using ModelPtr = std::unique_ptr<mjModel, ModelDeleter>;
-using DataPtr = std::unique_ptr<mjData, DataDeleter>;
-
-ModelPtr load_model(const std::string& xml) {
+mjModel* load_model(const std::string& xml) {
   mjVFS vfs;
   mj_defaultVFS(&vfs);
   const char* name = "book.xml";
@@ -67,46 +60,57 @@ ModelPtr load_model(const std::string& xml) {
     throw std::runtime_error("MuJoCo: cannot create a virtual file");
   std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, name)], xml.data(), xml.size());
   char error[1000] = "";
-  ModelPtr model(mj_loadXML(name, &vfs, error, sizeof error));
+  mjModel* model = mj_loadXML(name, &vfs, error, sizeof error);
   mj_deleteVFS(&vfs);
-  if (!model) throw std::runtime_error(std::string("MuJoCo rejected the book model: ") + error);
+  if (model == nullptr) throw std::runtime_error(std::string("MuJoCo rejected the book model: ") + error);
   return model;
-}
-
-// A free joint's qpos is position then the body's quaternion (w, x, y, z), body → world;
-// its qvel is the linear velocity then the angular velocity in the body frame, which at
-// t = 0 (identity orientation) is also the world frame.
-void reset(const mjModel* model, mjData* data, const Eigen::Vector3d& omega0) {
-  mj_resetData(model, data);
-  for (int i = 0; i < 3; ++i) data->qvel[3 + i] = omega0[i];
-}
-
-Eigen::Matrix3d orientation(const mjData* data) {
-  const mjtNum* q = data->qpos + 3;
-  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
 }
 
 }  // namespace
 
 std::string mujoco_missing() { return {}; }
 
-MujocoResult run_mujoco(const MujocoSetup& setup, const physics::ExactRotation& exact,
-                        long error_steps, long timing_steps, int repetitions) {
-  const ModelPtr model = load_model(model_xml(setup));
-  const DataPtr data(mj_makeData(model.get()));
-  MujocoResult result;
-  for (int i = 0; i < 3; ++i) result.moments[i] = model->body_inertia[3 + i];  // body 1
-  std::sort(result.moments.data(), result.moments.data() + 3);
-  reset(model.get(), data.get(), setup.omega0_body);
-  for (long i = 0; i < error_steps; ++i) mj_step(model.get(), data.get());
-  result.orientation_error = analysis::rotation_angle_between(
-      exact.orientation(static_cast<double>(error_steps) * setup.dt), orientation(data.get()));
-  result.ns_per_step = best_ns_per_step(
-      timing_steps, repetitions, [&] { reset(model.get(), data.get(), setup.omega0_body); },
-      [&](long steps) {
-        for (long i = 0; i < steps; ++i) mj_step(model.get(), data.get());
-      });
-  return result;
+struct MujocoBook::Impl {
+  mjModel* model = nullptr;
+  mjData* data = nullptr;
+  Eigen::Vector3d omega0;
+  ~Impl() {
+    if (data) mj_deleteData(data);
+    if (model) mj_deleteModel(model);
+  }
+};
+
+MujocoBook::MujocoBook(const MujocoSetup& setup) : impl_(std::make_unique<Impl>()) {
+  impl_->model = load_model(model_xml(setup));
+  impl_->data = mj_makeData(impl_->model);
+  if (impl_->data == nullptr) throw std::runtime_error("MuJoCo: cannot allocate mjData");
+  impl_->omega0 = setup.omega0_body;
+  reset();
+}
+
+MujocoBook::~MujocoBook() = default;
+
+// A free joint's qpos is the position, then the body's quaternion (w, x, y, z), body →
+// world; its qvel is the linear velocity, then the angular velocity in the body frame,
+// which at t = 0 (identity orientation) is also the world frame.
+void MujocoBook::reset() {
+  mj_resetData(impl_->model, impl_->data);
+  for (int i = 0; i < 3; ++i) impl_->data->qvel[3 + i] = impl_->omega0[i];
+}
+
+void MujocoBook::step(long steps) {
+  for (long i = 0; i < steps; ++i) mj_step(impl_->model, impl_->data);
+}
+
+Eigen::Matrix3d MujocoBook::orientation() const {
+  const mjtNum* q = impl_->data->qpos + 3;
+  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+}
+
+Eigen::Vector3d MujocoBook::sorted_moments() const {
+  Eigen::Vector3d moments(impl_->model->body_inertia + 3);  // body 1; body 0 is the world
+  std::sort(moments.data(), moments.data() + 3);
+  return moments;
 }
 
 #endif

@@ -1,10 +1,10 @@
 #pragma once
 // MuJoCo's mj_step on the same free book, as the physics bench's yardstick. Built only when
-// CMake finds MuJoCo (BOOKSPIN_HAVE_MUJOCO); otherwise mujoco_missing() says so.
+// CMake finds MuJoCo (BOOKSPIN_HAVE_MUJOCO); otherwise mujoco_missing() says why not.
+#include <memory>
 #include <string>
 
 #include "physics/book.hpp"
-#include "physics/exact_solution.hpp"
 
 namespace bookspin::app {
 
@@ -15,20 +15,31 @@ struct MujocoSetup {
   bool rk4 = false;              ///< integrator="RK4" instead of "Euler"
 };
 
-struct MujocoResult {
-  double ns_per_step = 0.0;        ///< best of the timing runs, thread CPU time
-  double orientation_error = 0.0;  ///< rad, against `exact` after `error_steps` steps
-  Eigen::Vector3d moments = Eigen::Vector3d::Zero();  ///< MuJoCo's principal moments, sorted
-};
-
-/// Empty when MuJoCo is linked in, else the reason the row is skipped.
+/// Empty when MuJoCo is linked in, else the reason its rows are skipped.
 std::string mujoco_missing();
 
 /// One free body with a box geom of the book's half-sizes and mass, no gravity, no
-/// contacts, loaded from an XML string through a virtual file system. Times `timing_steps`
-/// of mj_step (best of `repetitions`) and measures the orientation error after
-/// `error_steps`. Throws std::runtime_error if MuJoCo is missing or rejects the model.
-MujocoResult run_mujoco(const MujocoSetup& setup, const physics::ExactRotation& exact,
-                        long error_steps, long timing_steps, int repetitions);
+/// contacts, loaded from an XML string through MuJoCo's virtual file system.
+class MujocoBook {
+ public:
+  /// Throws std::runtime_error if MuJoCo is missing or rejects the model.
+  explicit MujocoBook(const MujocoSetup& setup);
+  ~MujocoBook();
+  MujocoBook(const MujocoBook&) = delete;
+  MujocoBook& operator=(const MujocoBook&) = delete;
+
+  /// Identity orientation, angular velocity omega0_body, t = 0.
+  void reset();
+  /// `steps` calls of mj_step.
+  void step(long steps);
+  /// Body → world rotation from the free joint's quaternion.
+  Eigen::Matrix3d orientation() const;
+  /// MuJoCo's principal moments of inertia (derived from the geom), ascending.
+  Eigen::Vector3d sorted_moments() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace bookspin::app

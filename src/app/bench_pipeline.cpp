@@ -111,8 +111,15 @@ void bench_pipeline(const BenchContext& c) {
   const double png = timed_render(render_options(c, "png", 1280, 720, frames, true));
   report.add({"pipeline", "render with PNGs, " + what, png, "s",
               "PNG zlib level " + std::to_string(scene.render.png_compression)});
+  RenderOptions trilinear = render_options(c, "trilinear", 1280, 720, frames, false);
+  trilinear.trilinear = true;
+  const double no_aniso = timed_render(trilinear);
+  report.add({"pipeline", "render --no-png --trilinear, " + what, no_aniso, "s",
+              "what anisotropic filtering costs on this GL"});
   report.add({"pipeline", "render --no-png / floor", no_png / floor, "x", at_most(no_png / floor, 1.15)});
   report.add({"pipeline", "render with PNGs / floor", png / floor, "x", at_most(png / floor, 1.5)});
+  report.add({"pipeline", "render --no-png --trilinear / floor", no_aniso / floor, "x",
+              "for comparison: textures without anisotropic filtering"});
 }
 
 void bench_resolution(const BenchContext& c) {

@@ -89,10 +89,28 @@ void ClipSinks::png_loop() {
 void ClipSinks::add(int index, RgbaImage image, const physics::Diagnostics& diagnostics) {
   rethrow_if_failed();
   csv_ << video::diagnostics_csv_row(index, diagnostics) << '\n';
-  auto frame = std::make_shared<const RgbaImage>(std::move(image));
+  // Shared by the encoder and the PNG queue; whoever lets go last hands the buffer back.
+  Frame frame(new RgbaImage(std::move(image)), [this](const RgbaImage* done) { recycle(done); });
   const bool queued = encode_queue_.push(frame) &&
                       (!options_.write_png || png_queue_.push({index, std::move(frame)}));
   if (!queued) rethrow_if_failed();
+}
+
+// A few spares cover the frames in flight; beyond that a buffer is simply freed.
+constexpr std::size_t kMaxSpares = 4;
+
+void ClipSinks::recycle(const RgbaImage* image) {
+  std::unique_ptr<RgbaImage> owned(const_cast<RgbaImage*>(image));  // the frame's sole owner now
+  std::lock_guard lock(spare_mutex_);
+  if (spares_.size() < kMaxSpares) spares_.push_back(std::move(*owned));
+}
+
+std::optional<RgbaImage> ClipSinks::spare_frame() {
+  std::lock_guard lock(spare_mutex_);
+  if (spares_.empty()) return std::nullopt;
+  RgbaImage image = std::move(spares_.back());
+  spares_.pop_back();
+  return image;
 }
 
 void ClipSinks::finish() {

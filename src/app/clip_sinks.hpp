@@ -46,6 +46,9 @@ class ClipSinks {
   void add(int index, RgbaImage image, const physics::Diagnostics& diagnostics);
   /// Drains the queues, then renames every output into place.
   void finish();
+  /// A frame buffer the sinks are done with, to render the next frame into instead of
+  /// allocating (and page-faulting) a new one; std::nullopt if none is free now.
+  std::optional<RgbaImage> spare_frame();
   /// Non-empty when the encoder fell back to libx264.
   const std::string& encoder_message() const { return encoder_.fallback_message(); }
 
@@ -56,6 +59,7 @@ class ClipSinks {
   void record_error();
   void rethrow_if_failed();
   void stop_workers();
+  void recycle(const RgbaImage* image);
 
   ClipPaths paths_;
   SinkOptions options_;
@@ -63,6 +67,9 @@ class ClipSinks {
   std::optional<video::AtomicDirectory> frames_;
   video::AtomicFile csv_file_;
   std::ofstream csv_;
+  // Before the queues: frames left in them at destruction come back here.
+  std::mutex spare_mutex_;
+  std::vector<RgbaImage> spares_;
   video::BoundedQueue<Frame> encode_queue_;
   video::BoundedQueue<std::pair<int, Frame>> png_queue_;
   std::mutex error_mutex_;

@@ -70,6 +70,7 @@ LoopResult render_frames(const scene::Scene& scene, render::Renderer& renderer, 
     finisher.expect({index, frame.t, frame.diverged_at, frame.pose.diagnostics,
                      frame.history.size() > samples});
     // While this frame is drawn and read back, the previous one is decorated and queued.
+    if (auto spare = sinks.spare_frame()) renderer.recycle(std::move(*spare));
     if (auto image = renderer.collect()) finisher.finish(std::move(*image));
   }
   while (auto image = renderer.flush()) finisher.finish(std::move(*image));

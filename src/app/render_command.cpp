@@ -58,7 +58,9 @@ int render_command(const RenderOptions& options) {
   cap_gl_threads(options.jobs);
   if (!scene.compare.empty()) return render_comparison(scene, options);
   prepare_output_dir(options.out_dir);
-  render::Renderer renderer(render_settings_for(scene));
+  render::RenderSettings settings = render_settings_for(scene);
+  if (options.trilinear) settings.max_anisotropy = 1.0f;
+  render::Renderer renderer(settings);
   ClipSinks sinks(clip_paths(options.out_dir, scene.name), sink_options(scene, options));
   if (!sinks.encoder_message().empty()) std::cerr << "bookspin: note: " << sinks.encoder_message() << '\n';
   Progress progress(scene.name, scene.frames);

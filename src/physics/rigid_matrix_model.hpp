@@ -23,6 +23,7 @@ class RigidMatrixModel final : public Simulator {
  private:
   Eigen::Vector3d omega_world(const Eigen::Matrix3d& R) const;
   Eigen::Matrix3d derivative(const Eigen::Matrix3d& R) const;
+  void euler_step(double dt);
   void normalize();
 
   Book book_;

@@ -24,7 +24,8 @@ class RigidQuaternionModel final : public Simulator {
 
  private:
   Eigen::Vector4d derivative(const Eigen::Vector4d& q_coeffs) const;
-  void euler_step(double dt);
+  void raw_euler_step(double dt);
+  void unit_euler_step(double dt);
 
   Book book_;
   ModelConfig config_;

@@ -22,7 +22,7 @@ void check_texture_size(const RgbaImage& image) {
                       std::to_string(max_size));
 }
 
-TextureHandle upload(const RgbaImage& image) {
+TextureHandle upload(const RgbaImage& image, float max_anisotropy) {
   check_texture_size(image);
   GLuint name = 0;
   glGenTextures(1, &name);
@@ -37,11 +37,11 @@ TextureHandle upload(const RgbaImage& image) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  // 4×: enough for covers seen nearly edge-on; more costs software rasterizers dearly.
-  if (has_anisotropy()) {
-    GLfloat max_anisotropy = 1.0f;
-    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &max_anisotropy);
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(4.0f, max_anisotropy));
+  // Capped by RenderSettings::max_anisotropy (4× by default; why there).
+  if (max_anisotropy > 1.0f && has_anisotropy()) {
+    GLfloat limit = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &limit);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(max_anisotropy, limit));
   }
   check_gl("uploading a face texture");
   return handle;
@@ -49,8 +49,8 @@ TextureHandle upload(const RgbaImage& image) {
 
 }  // namespace
 
-BookTextures::BookTextures(const FaceImages& images) {
-  for (std::size_t i = 0; i < images.size(); ++i) textures_[i] = upload(images[i]);
+BookTextures::BookTextures(const FaceImages& images, float max_anisotropy) {
+  for (std::size_t i = 0; i < images.size(); ++i) textures_[i] = upload(images[i], max_anisotropy);
 }
 
 }  // namespace bookspin::render

@@ -11,9 +11,9 @@ namespace bookspin::render {
 class BookTextures {
  public:
   /// Uploads the images (indexed by FaceImage) with mipmaps, trilinear + anisotropic
-  /// filtering. Requires a current context; throws RenderError (image larger than
-  /// GL_MAX_TEXTURE_SIZE, GL error).
-  explicit BookTextures(const FaceImages& images);
+  /// filtering up to `max_anisotropy` (1 = trilinear only). Requires a current context;
+  /// throws RenderError (image larger than GL_MAX_TEXTURE_SIZE, GL error).
+  BookTextures(const FaceImages& images, float max_anisotropy);
 
   GLuint texture(FaceImage which) const { return textures_[static_cast<std::size_t>(which)].get(); }
 

@@ -64,11 +64,11 @@ void BackgroundPass::draw() const {
 
 // ---- book -------------------------------------------------------------------------------
 
-BookPass::BookPass(const FaceImages& images)
+BookPass::BookPass(const FaceImages& images, float max_anisotropy)
     : program_(build_program("book", shaders::book_vert, shaders::book_frag)),
       vao_(new_vertex_array()),
       vbo_(new_buffer()),
-      textures_(images),
+      textures_(images, max_anisotropy),
       view_location_(uniform_location(program_.get(), "u_view")),
       projection_location_(uniform_location(program_.get(), "u_projection")),
       specular_location_(uniform_location(program_.get(), "u_specular")),

@@ -32,7 +32,7 @@ class BackgroundPass {
 /// The textured, lit book: one streamed vertex buffer, one draw per face (own texture).
 class BookPass {
  public:
-  explicit BookPass(const FaceImages& images);
+  BookPass(const FaceImages& images, float max_anisotropy);
   /// vertices: build_book_mesh output (6 faces × vertices_per_face, book_faces order).
   void draw(const std::vector<BookVertex>& vertices, const ViewProjection& camera);
 

@@ -27,19 +27,24 @@ void bind_for_reading(const OffscreenTarget& target) {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
 }
 
-/// A bottom-up GL image as an RgbaImage, flipped while copying: one pass over the pixels
-/// and no zero-filling of a buffer about to be overwritten.
-RgbaImage copy_flipped(const std::uint8_t* gl_rows, int width, int height) {
-  RgbaImage image;
+/// A bottom-up GL image as an RgbaImage, flipped while copying: one pass over the pixels,
+/// into `image`'s own buffer when it has the size already, else into a new one without
+/// zero-filling it first.
+void copy_flipped(const std::uint8_t* gl_rows, int width, int height, RgbaImage& image) {
+  const std::size_t stride = static_cast<std::size_t>(width) * 4;
+  if (image.width == width && image.height == height && image.pixels.size() == stride * height) {
+    for (int y = 0; y < height; ++y)
+      std::memcpy(image.row(y), gl_rows + stride * (height - 1 - y), stride);
+    return;
+  }
   image.width = width;
   image.height = height;
-  const std::size_t stride = static_cast<std::size_t>(width) * 4;
+  image.pixels.clear();
   image.pixels.reserve(stride * height);
   for (int y = height - 1; y >= 0; --y) {
     const std::uint8_t* row = gl_rows + stride * y;
     image.pixels.insert(image.pixels.end(), row, row + stride);
   }
-  return image;
 }
 
 }  // namespace
@@ -85,7 +90,7 @@ void PixelReader::start(const OffscreenTarget& target) {
   ++pending_;
 }
 
-RgbaImage PixelReader::finish() {
+RgbaImage PixelReader::finish(RgbaImage reuse) {
   if (pending_ == 0) throw std::logic_error("PixelReader::finish with no read pending");
   const int oldest = (next_ - pending_ + ring_size_) % ring_size_;
   Slot& slot = slots_[static_cast<std::size_t>(oldest)];
@@ -98,7 +103,8 @@ RgbaImage PixelReader::finish() {
     check_gl("mapping a read-back pixel buffer");
     throw RenderError("cannot map a read-back pixel buffer");
   }
-  RgbaImage image = copy_flipped(static_cast<const std::uint8_t*>(mapped), slot.width, slot.height);
+  RgbaImage image = std::move(reuse);
+  copy_flipped(static_cast<const std::uint8_t*>(mapped), slot.width, slot.height, image);
   glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
   check_gl("reading a read-back pixel buffer");

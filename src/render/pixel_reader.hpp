@@ -22,9 +22,10 @@ class PixelReader {
   /// ring (frame N into buffer N mod ring_size) and returns without waiting for it.
   /// Requires pending() < ring_size(). Throws RenderError on a GL error.
   void start(const OffscreenTarget& target);
-  /// Waits for the oldest started read and returns its image, top row first. Requires
+  /// Waits for the oldest started read and returns its image, top row first, in `reuse`'s
+  /// buffer when it has the right size (no allocation, no page faults). Requires
   /// pending() > 0. Throws RenderError on a GL error.
-  RgbaImage finish();
+  RgbaImage finish(RgbaImage reuse = {});
 
   int pending() const { return pending_; }
   int ring_size() const { return ring_size_; }

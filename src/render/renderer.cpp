@@ -51,6 +51,7 @@ struct Renderer::Impl {
   PixelReader reader{kPipelineDepth};
   ViewProjection camera;
   bool background_saved = false;
+  RgbaImage spare;  ///< a buffer from recycle() for the next read-back
   PixelBox previous_box;  ///< where the last frame drew; the whole frame before the first
 
   explicit Impl(const RenderSettings& s) : settings(s) {
@@ -62,7 +63,7 @@ struct Renderer::Impl {
     context = std::make_unique<EglContext>();
     target.emplace(settings.width, settings.height, settings.msaa_samples);
     background.emplace();
-    book.emplace(images);
+    book.emplace(images, settings.max_anisotropy);
     overlays.emplace();
     previous_box = PixelBox::whole(settings.width, settings.height);
   }
@@ -139,7 +140,7 @@ struct Renderer::Impl {
   std::optional<RgbaImage> take_oldest() {
     if (reader.pending() == 0) return std::nullopt;
     context->make_current();
-    return reader.finish();
+    return reader.finish(std::move(spare));
   }
 };
 
@@ -155,6 +156,7 @@ std::optional<RgbaImage> Renderer::collect() {
   return impl_->take_oldest();
 }
 std::optional<RgbaImage> Renderer::flush() { return impl_->take_oldest(); }
+void Renderer::recycle(RgbaImage image) { impl_->spare = std::move(image); }
 int Renderer::pipeline_depth() const { return impl_->reader.ring_size(); }
 const RenderSettings& Renderer::settings() const { return impl_->settings; }
 const GlInfo& Renderer::info() const { return impl_->context->info(); }

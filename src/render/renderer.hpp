@@ -35,6 +35,10 @@ struct RenderSettings {
   bool show_angular_momentum = false;  ///< yellow arrow from the origin along L
   bool show_body_axes = false;         ///< red x, green y, blue z from the book's centre
   int msaa_samples = 4;                ///< 1 = off; clamped to GL_MAX_SAMPLES
+  /// Anisotropic texture filtering cap; 1 = trilinear only. 4× is enough for covers seen
+  /// nearly edge-on; more costs software rasterizers dearly. On Mesa llvmpipe (22.3) with
+  /// MSAA it is also most of the book's cost, and some poses in small frames take seconds.
+  float max_anisotropy = 4.0f;
 };
 
 /// One frame's input.
@@ -79,6 +83,9 @@ class Renderer {
   /// The oldest frame in flight however many there are (end of a clip); std::nullopt when
   /// none is left.
   std::optional<RgbaImage> flush();
+  /// Hands back an image the caller is done with; the next collect() or flush() of the
+  /// same size returns its pixels in that buffer instead of allocating a new one.
+  void recycle(RgbaImage image);
   /// Frames in flight before collect() returns one (pixel buffers in the ring, ≥ 2).
   int pipeline_depth() const;
 
