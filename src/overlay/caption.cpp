@@ -81,16 +81,17 @@ void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines) {
 void draw_banner(RgbaImage& image, const std::string& text, double centre_x) {
   CairoCanvas canvas(image.width, image.height);
   cairo_t* cr = canvas.cr();
+  if (centre_x < 0) centre_x = 0.5 * image.width;
   double size = 1.8 * font_size_for(image);
   select_font(cr, true, size);
-  // Shrink to fit small frames: the banner must stay readable in full.
-  const double fit = 0.9 * image.width / std::max(1.0, text_width(cr, text) + size);
+  // Shrink to fit small frames: the banner, centred on centre_x, must stay in the frame.
+  const double room = 2.0 * std::min(centre_x, image.width - centre_x);
+  const double fit = 0.9 * room / std::max(1.0, text_width(cr, text) + size);
   if (fit < 1.0) {
     size *= fit;
     select_font(cr, true, size);
   }
   const double width = text_width(cr, text), pad = 0.5 * size;
-  if (centre_x < 0) centre_x = 0.5 * image.width;
   const double x = centre_x - 0.5 * width, y = image.height - 2.2 * size;
   cairo_rectangle(cr, x - pad, y - size - pad / 2, width + 2 * pad, size + 1.5 * pad);
   cairo_set_source_rgba(cr, 0.75, 0.08, 0.06, 0.88);
