@@ -11,6 +11,7 @@
 #include "app/frame_view.hpp"
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
+#include "app/render_setup.hpp"
 #include "app/still.hpp"
 
 namespace bookspin::app {
@@ -21,32 +22,10 @@ ClipPaths clip_paths(const std::filesystem::path& out_dir, const std::string& na
   return {out_dir / (name + ".mp4"), out_dir / name / "frames", out_dir / name / "diagnostics.csv"};
 }
 
-SinkOptions sink_options(const scene::Scene& scene, const RenderOptions& options) {
-  SinkOptions s;
-  s.write_png = !options.no_png;
-  s.png_compression = options.png_compression >= 0 ? options.png_compression
-                                                   : scene.render.png_compression;
-  const int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
-  s.png_workers = std::max(1, jobs - 1);
-  s.encoder = {scene.render.width, scene.render.height, scene.render.fps, scene.render.codec,
-               scene.render.crf, scene.render.preset};
-  s.encoder.threads = options.jobs;  // 0: the encoder's own choice for all cores
-  return s;
-}
-
 /// llvmpipe sizes its rasterizer thread pool by the cores unless told otherwise; --jobs caps
 /// it too (before any GL context exists; GPU drivers ignore the variable).
 void cap_gl_threads(int jobs) {
   if (jobs > 0) setenv("LP_NUM_THREADS", std::to_string(jobs).c_str(), /*overwrite=*/0);
-}
-
-/// Checks early that the output directory exists or can be made and is writable, so a bad
-/// -o fails before any work.
-void prepare_output_dir(const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) video::throw_output_error("cannot create output directory", dir, ec.value());
-  if (access(dir.c_str(), W_OK) != 0) video::throw_output_error("cannot write to", dir, errno);
 }
 
 }  // namespace
