@@ -13,12 +13,13 @@ namespace bookspin::app {
 SinkOptions sink_options(const scene::Scene& scene, const RenderOptions& options) {
   SinkOptions s;
   s.write_png = !options.no_png;
-  s.png_compression = options.png_compression >= 0 ? options.png_compression
-                                                   : scene.render.png_compression;
-  const int jobs = options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  s.png_compression =
+      options.png_compression >= 0 ? options.png_compression : scene.render.png_compression;
+  const int jobs =
+      options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
   s.png_workers = std::max(1, jobs - 1);
-  s.encoder = {scene.render.width, scene.render.height, scene.render.fps, scene.render.codec,
-               scene.render.crf, scene.render.preset};
+  s.encoder = {scene.render.width, scene.render.height, scene.render.fps,
+               scene.render.codec, scene.render.crf,    scene.render.preset};
   s.encoder.threads = options.jobs;  // 0: the encoder's own choice for all cores
   return s;
 }
