@@ -14,7 +14,8 @@ namespace bookspin::app {
 namespace {
 
 std::string method_name(const analysis::Method& m) {
-  return std::string(physics::to_string(m.kind)) + " " + std::string(physics::to_string(m.integrator));
+  return std::string(physics::to_string(m.kind)) + " " +
+         std::string(physics::to_string(m.integrator));
 }
 
 std::string csv_line(const analysis::AccuracyRow& r) {
@@ -62,7 +63,8 @@ overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, 
     }
     overlay::palette_colour(static_cast<int>(method.integrator), s.r, s.g, s.b);
     s.dashed = method.kind == physics::ModelKind::rigid_quaternion;
-    if (method.kind == physics::ModelKind::particle) s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(method.integrator);
+    if (method.kind == physics::ModelKind::particle)
+      s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(method.integrator);
     spec.series.push_back(std::move(s));
   }
   return spec;
@@ -88,7 +90,8 @@ int accuracy_command(const AccuracyOptions& options) {
   const std::filesystem::path out(options.out_dir);
   std::filesystem::create_directories(out);
   write_csv(out / (scene.name + "-accuracy.csv"), rows);
-  video::write_png(out / (scene.name + "-accuracy.png"), overlay::plot_image(accuracy_plot(rows, options.flips), 1400, 900));
+  video::write_png(out / (scene.name + "-accuracy.png"),
+                   overlay::plot_image(accuracy_plot(rows, options.flips), 1400, 900));
   std::printf("wrote %s and %s\n", (out / (scene.name + "-accuracy.csv")).c_str(),
               (out / (scene.name + "-accuracy.png")).c_str());
   return kExitOk;

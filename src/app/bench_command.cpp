@@ -21,7 +21,8 @@ namespace {
 class ScratchDirectory {
  public:
   ScratchDirectory() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "bookspin-bench-XXXXXX").string();
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "bookspin-bench-XXXXXX").string();
     if (mkdtemp(pattern.data()) == nullptr)
       video::throw_output_error("cannot create a scratch directory", pattern, errno);
     path_ = pattern;

@@ -6,10 +6,9 @@
 #ifdef BOOKSPIN_HAVE_MUJOCO
 #include <mujoco/mujoco.h>
 
+#include <Eigen/Geometry>
 #include <cstdio>
 #include <cstring>
-
-#include <Eigen/Geometry>
 #endif
 
 namespace bookspin::app {
@@ -62,7 +61,8 @@ mjModel* load_model(const std::string& xml) {
   char error[1000] = "";
   mjModel* model = mj_loadXML(name, &vfs, error, sizeof error);
   mj_deleteVFS(&vfs);
-  if (model == nullptr) throw std::runtime_error(std::string("MuJoCo rejected the book model: ") + error);
+  if (model == nullptr)
+    throw std::runtime_error(std::string("MuJoCo rejected the book model: ") + error);
   return model;
 }
 

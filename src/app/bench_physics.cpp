@@ -23,17 +23,22 @@ constexpr long kMujocoSteps = 10000;  // about as long for mj_step
 constexpr int kRepetitions = 7;
 
 std::string method_name(const analysis::Method& m) {
-  return std::string(physics::to_string(m.kind)) + " " + std::string(physics::to_string(m.integrator));
+  return std::string(physics::to_string(m.kind)) + " " +
+         std::string(physics::to_string(m.integrator));
 }
 
 /// The speed targets of issue 7 against MuJoCo's Euler step; 0 where there is none.
 double speed_target(const analysis::Method& m) {
   if (m.integrator != physics::Integrator::euler) return 0.0;
   switch (m.kind) {
-    case physics::ModelKind::rigid_quaternion: return 20.0;
-    case physics::ModelKind::rigid_matrix: return 5.0;
-    case physics::ModelKind::particle: return 4.0;
-    default: return 0.0;
+    case physics::ModelKind::rigid_quaternion:
+      return 20.0;
+    case physics::ModelKind::rigid_matrix:
+      return 5.0;
+    case physics::ModelKind::particle:
+      return 4.0;
+    default:
+      return 0.0;
   }
 }
 
@@ -59,7 +64,8 @@ struct PhysicsBench {
 
 std::unique_ptr<MujocoBook> mujoco_book(const PhysicsBench& b, bool rk4) {
   const Eigen::Vector3d L0 = physics::initial_angular_momentum(b.settings.book, b.settings.initial);
-  const Eigen::Vector3d omega0 = b.settings.book.principal_moments().cwiseInverse().cwiseProduct(L0);
+  const Eigen::Vector3d omega0 =
+      b.settings.book.principal_moments().cwiseInverse().cwiseProduct(L0);
   return std::make_unique<MujocoBook>(MujocoSetup{b.settings.book, omega0, b.dt, rk4});
 }
 
@@ -68,10 +74,11 @@ void report_inertia(const MujocoBook& book, const physics::Book& ours, BenchRepo
   std::sort(moments.data(), moments.data() + 3);
   const Eigen::Vector3d theirs = book.sorted_moments();
   char text[200];
-  std::snprintf(text, sizeof text,
-                "MuJoCo's principal moments %.9g %.9g %.9g (largest relative gap to the book's: %.1e)",
-                theirs.x(), theirs.y(), theirs.z(),
-                (theirs - moments).cwiseQuotient(moments).cwiseAbs().maxCoeff());
+  std::snprintf(
+      text, sizeof text,
+      "MuJoCo's principal moments %.9g %.9g %.9g (largest relative gap to the book's: %.1e)",
+      theirs.x(), theirs.y(), theirs.z(),
+      (theirs - moments).cwiseQuotient(moments).cwiseAbs().maxCoeff());
   report.remark(text);
 }
 
@@ -81,14 +88,15 @@ void report_mujoco(PhysicsBench& b, const physics::ExactRotation& exact, BenchRe
   for (MujocoBook* book : {b.euler.get(), b.rk4.get()}) {
     const std::string name = book == b.rk4.get() ? "MuJoCo mj_step RK4" : "MuJoCo mj_step Euler";
     if (book == b.rk4.get()) {
-      const double ns = best_ns_per_step(kMujocoSteps, kRepetitions, [&] { book->reset(); },
-                                         [&](long n) { book->step(n); });
+      const double ns = best_ns_per_step(
+          kMujocoSteps, kRepetitions, [&] { book->reset(); }, [&](long n) { book->step(n); });
       report.add({"physics", name, ns, "ns/step", "free box of the book's size and mass, same dt"});
     }
     book->reset();
     book->step(b.error_steps);
     report.add({"physics", name + ", orientation error",
-                analysis::rotation_angle_between(exact.orientation(b.error_steps * b.dt), book->orientation()),
+                analysis::rotation_angle_between(exact.orientation(b.error_steps * b.dt),
+                                                 book->orientation()),
                 "rad", time_text(b.error_steps * b.dt)});
   }
 }
@@ -107,11 +115,15 @@ Paired time_paired(const PhysicsBench& b, const analysis::Method& m) {
   auto sim = physics::make_simulator(b.settings.book, config);
   Paired best;
   for (int r = 0; r < kRepetitions; ++r) {
-    const double ns = time_run(kSteps, [&] { sim->reset(b.settings.initial); },
-                               [&](long n) { for (long i = 0; i < n; ++i) sim->step(b.dt); });
+    const double ns = time_run(
+        kSteps, [&] { sim->reset(b.settings.initial); },
+        [&](long n) {
+          for (long i = 0; i < n; ++i) sim->step(b.dt);
+        });
     best.method_ns = r == 0 ? ns : std::min(best.method_ns, ns);
     if (!b.euler) continue;
-    const double mj = time_run(kMujocoSteps, [&] { b.euler->reset(); }, [&](long n) { b.euler->step(n); });
+    const double mj = time_run(
+        kMujocoSteps, [&] { b.euler->reset(); }, [&](long n) { b.euler->step(n); });
     best.mujoco_ns = best.mujoco_ns ? std::min(*best.mujoco_ns, mj) : mj;
   }
   volatile double keep = sim->corners()(0, 0);  // the steps' result stays observable
@@ -141,19 +153,22 @@ void bench_physics(const BenchContext& c) {
   for (const analysis::Method& m : analysis::all_methods()) {
     const std::string name = method_name(m) + ", normalized";
     const Paired t = time_paired(b, m);
-    report.add({"physics", name, t.method_ns, "ns/step", "best of " + std::to_string(kRepetitions) + ", thread CPU time"});
+    report.add({"physics", name, t.method_ns, "ns/step",
+                "best of " + std::to_string(kRepetitions) + ", thread CPU time"});
     report.add({"physics", name + ", orientation error",
-                analysis::orientation_error_at(b.settings, exact, m, b.dt, b.error_steps * b.dt), "rad",
-                time_text(b.error_steps * b.dt)});
+                analysis::orientation_error_at(b.settings, exact, m, b.dt, b.error_steps * b.dt),
+                "rad", time_text(b.error_steps * b.dt)});
     if (!t.mujoco_ns) continue;
     mujoco_best = std::min(mujoco_best, *t.mujoco_ns);
     const double ratio = *t.mujoco_ns / t.method_ns;
     const double target = speed_target(m);
     report.add({"physics", "MuJoCo Euler / " + method_name(m), ratio, "x",
-                target > 0.0 ? at_least(ratio, target) : "times cheaper than mj_step (timed in alternation)"});
+                target > 0.0 ? at_least(ratio, target)
+                             : "times cheaper than mj_step (timed in alternation)"});
   }
   if (std::isfinite(mujoco_best))
-    report.add({"physics", "MuJoCo mj_step Euler", mujoco_best, "ns/step", "best over all the alternated runs"});
+    report.add({"physics", "MuJoCo mj_step Euler", mujoco_best, "ns/step",
+                "best over all the alternated runs"});
 }
 
 }  // namespace bookspin::app

@@ -19,8 +19,8 @@ std::string format_value(double value) {
   if (!std::isfinite(value)) return "n/a";
   const double magnitude = std::abs(value);
   const char* pattern = magnitude != 0.0 && (magnitude < 1e-2 || magnitude >= 1e7) ? "%.3e"
-                        : magnitude < 10.0                                           ? "%.3f"
-                                                                                      : "%.1f";
+                        : magnitude < 10.0                                         ? "%.3f"
+                                                                                   : "%.1f";
   std::snprintf(text, sizeof text, pattern, value);
   return text;
 }

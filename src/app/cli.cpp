@@ -26,66 +26,85 @@ void add_simulate(CLI::App& cli, SimulateOptions& options) {
 
 void add_render(CLI::App& cli, RenderOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
-      "render", "Render a scene to OUT/<scene>.mp4, OUT/<scene>/frames/ and OUT/<scene>/diagnostics.csv");
+      "render",
+      "Render a scene to OUT/<scene>.mp4, OUT/<scene>/frames/ and OUT/<scene>/diagnostics.csv");
   cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
   cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
-  cmd->add_option("--frames", options.frames, "Render only the first N frames (overrides time.frames)")
+  cmd->add_option("--frames", options.frames,
+                  "Render only the first N frames (overrides time.frames)")
       ->check(CLI::Range(1, scene::kMaxFrames));
   cmd->add_flag("--no-png", options.no_png, "Skip the PNG frames (MP4 and CSV only)");
-  cmd->add_option("-j,--jobs", options.jobs, "Worker threads for PNG compression and encoding (default: all cores)")
+  cmd->add_option("-j,--jobs", options.jobs,
+                  "Worker threads for PNG compression and encoding (default: all cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--png-compression", options.png_compression,
-                  "zlib level of the PNG frames, 0 (fastest) … 9 (smallest); overrides render.png_compression")
+                  "zlib level of the PNG frames, 0 (fastest) … 9 (smallest); overrides "
+                  "render.png_compression")
       ->check(CLI::Range(0, 9));
-  // Hidden (no group): for `bench`'s long memory run, where llvmpipe's anisotropic
-  // filtering under MSAA costs most of the time and stalls on some poses in small frames.
-  cmd->add_flag("--trilinear", options.trilinear, "Texture filtering without anisotropy")->group("");
 }
 
 void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
       "accuracy", "Compare every model and integrator with the exact solution over a range of dt");
-  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML): book, initial spin, toggles")->required();
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML): book, initial spin, toggles")
+      ->required();
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
-  cmd->add_option("-o,--out", options.out_dir, "Output directory for the CSV and the plot")->capture_default_str();
+  cmd->add_option("-o,--out", options.out_dir, "Output directory for the CSV and the plot")
+      ->capture_default_str();
   cmd->add_option("--flips", options.flips, "Run length in exact flip periods")
-      ->check(CLI::Range(1.0, 1000.0))->capture_default_str();
+      ->check(CLI::Range(1.0, 1000.0))
+      ->capture_default_str();
   cmd->add_option("--dt", options.dts, "Time steps to try (time units)")
-      ->check(CLI::PositiveNumber)->take_all();
+      ->check(CLI::PositiveNumber)
+      ->take_all();
 }
 
 void add_plot(CLI::App& cli, PlotOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
-      "plot", "Simulate a scene and plot its diagnostics over the whole run into OUT/<scene>-plot.png");
-  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML); a comparison scene plots every panel")->required();
+      "plot",
+      "Simulate a scene and plot its diagnostics over the whole run into OUT/<scene>-plot.png");
+  cmd->add_option("SCENE", options.scene_path,
+                  "Scene file (TOML); a comparison scene plots every panel")
+      ->required();
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
   cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--width", options.width, "Image width in pixels")
-      ->check(CLI::Range(320, scene::kMaxDimension))->capture_default_str();
+      ->check(CLI::Range(320, scene::kMaxDimension))
+      ->capture_default_str();
   cmd->add_option("--height", options.height, "Image height in pixels")
-      ->check(CLI::Range(240, scene::kMaxDimension))->capture_default_str();
+      ->check(CLI::Range(240, scene::kMaxDimension))
+      ->capture_default_str();
 }
 
 void add_gallery(CLI::App& cli, GalleryOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
       "gallery", "Write OUT_DIR/index.html listing each scene's clip, poster frame and plot");
-  cmd->add_option("OUT_DIR", options.out_dir, "Folder holding the rendered clips; the page goes there")->required();
+  cmd->add_option("OUT_DIR", options.out_dir,
+                  "Folder holding the rendered clips; the page goes there")
+      ->required();
   cmd->add_option("SCENES", options.scene_paths, "Scene files (TOML), in page order")->required();
 }
 
 void add_bench(CLI::App& cli, BenchOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
-      "bench", "Time the render pipeline, the encoder, resolutions, physics and memory; print ratios");
-  cmd->add_option("SCENE", options.scene_path, "Scene for the 1280x720 pipeline runs")->capture_default_str();
+      "bench",
+      "Time the render pipeline, the encoder, resolutions, physics and memory; print ratios");
+  cmd->add_option("SCENE", options.scene_path, "Scene for the 1280x720 pipeline runs")
+      ->capture_default_str();
   cmd->add_option("-o,--out", options.out_dir, "Also write OUT/bench.csv");
   cmd->add_option("--frames", options.frames, "Frames of each 1280x720 pipeline run")
-      ->check(CLI::Range(2, 100000))->capture_default_str();
+      ->check(CLI::Range(2, 100000))
+      ->capture_default_str();
   cmd->add_option("--memory-frames", options.memory_frames, "Frames of the long memory run")
-      ->check(CLI::Range(100, 100000))->capture_default_str();
-  cmd->add_option("-j,--jobs", options.jobs, "As render --jobs (default: all cores)")->check(CLI::Range(1, 256));
-  cmd->add_option("--only", options.only, "Run only these sections: pipeline, resolution, physics, memory")
-      ->check(CLI::IsMember({"pipeline", "resolution", "physics", "memory"}))->take_all();
+      ->check(CLI::Range(100, 100000))
+      ->capture_default_str();
+  cmd->add_option("-j,--jobs", options.jobs, "As render --jobs (default: all cores)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--only", options.only,
+                  "Run only these sections: pipeline, resolution, physics, memory")
+      ->check(CLI::IsMember({"pipeline", "resolution", "physics", "memory"}))
+      ->take_all();
 }
 
 int report(const std::string& message, int code) {
@@ -111,7 +130,8 @@ int run_cli(int argc, char** argv) {
   add_plot(cli, plot);
   GalleryOptions gallery;
   add_gallery(cli, gallery);
-  cli.add_subcommand("info", "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders");
+  cli.add_subcommand("info",
+                     "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

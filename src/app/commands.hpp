@@ -25,7 +25,6 @@ struct RenderOptions {
   bool no_png = false;
   int jobs = 0;  ///< worker threads; 0 = number of cores
   int png_compression = -1;  ///< zlib level 0–9 for the frames; −1 = render.png_compression
-  bool trilinear = false;    ///< hidden: no anisotropic filtering (quick long runs, bench)
 };
 
 /// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv.

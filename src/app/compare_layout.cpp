@@ -40,7 +40,8 @@ CompareLayout compare_layout(int panels, int width, int height, bool with_plots)
   for (int i = 0; i < panels; ++i) {
     const int c = i % grid.columns, r = i / grid.columns;
     layout.tiles.push_back({c * (layout.tile_width + gap), header + r * (layout.tile_height + gap),
-                            static_cast<double>(layout.tile_width), static_cast<double>(layout.tile_height)});
+                            static_cast<double>(layout.tile_width),
+                            static_cast<double>(layout.tile_height)});
   }
   if (with_plots) {
     const double margin = 0.012 * std::min(width, height);
@@ -62,7 +63,8 @@ void blit(RgbaImage& frame, const RgbaImage& tile, int x, int y) {
 RgbaImage blank_frame(int width, int height) {
   RgbaImage frame(width, height);
   for (std::size_t i = 0; i < frame.pixels.size(); i += 4) {
-    frame.pixels[i] = 18, frame.pixels[i + 1] = 20, frame.pixels[i + 2] = 26, frame.pixels[i + 3] = 255;
+    frame.pixels[i] = 18, frame.pixels[i + 1] = 20, frame.pixels[i + 2] = 26,
+    frame.pixels[i + 3] = 255;
   }
   return frame;
 }

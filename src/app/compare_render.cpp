@@ -40,7 +40,9 @@ class PanelCsv {
     if (!out_) video::throw_output_error("cannot create", path, errno);
     out_ << video::diagnostics_csv_header() << '\n';
   }
-  void add(int index, const physics::Diagnostics& row) { out_ << video::diagnostics_csv_row(index, row) << '\n'; }
+  void add(int index, const physics::Diagnostics& row) {
+    out_ << video::diagnostics_csv_row(index, row) << '\n';
+  }
   void finish() {
     out_.close();
     if (!out_) video::throw_output_error("cannot write", file_.final_path(), errno);
@@ -79,11 +81,13 @@ std::vector<overlay::CaptionLine> tile_caption(const PanelState& p) {
   return caption_for(p.scene, p.frame.t, p.frame.diverged_at);
 }
 
-void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& layout, const Panels& panels) {
+void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& layout,
+              const Panels& panels) {
   const double t = panels.front()->frame.t;
   if (layout.plots) {
     std::vector<PanelRun> runs;
-    for (const auto& p : panels) runs.push_back({p->scene.title, p->scene.model.kind, &p->frame.history});
+    for (const auto& p : panels)
+      runs.push_back({p->scene.title, p->scene.model.kind, &p->frame.history});
     draw_panel(frame, *layout.plots, panel_plots(runs, clip_end_time(scene), t));
   }
   overlay::CairoCanvas canvas(frame.width, frame.height);
@@ -92,7 +96,8 @@ void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& 
   // the labels read as a set.
   double font = std::min(0.026 * frame.height, 0.045 * layout.tile_height);
   const double margin = 0.4 * font, max_width = layout.tile_width - 2 * margin;
-  for (const auto& p : panels) font = overlay::caption_font_size(canvas.cr(), tile_caption(*p), font, max_width);
+  for (const auto& p : panels)
+    font = overlay::caption_font_size(canvas.cr(), tile_caption(*p), font, max_width);
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const PixelRect& tile = layout.tiles[i];
     overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width};
@@ -101,8 +106,8 @@ void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& 
   canvas.composite_onto(frame);
 }
 
-RgbaImage compose(const scene::Scene& scene, const CompareLayout& layout, render::Renderer& renderer,
-                  const Panels& panels) {
+RgbaImage compose(const scene::Scene& scene, const CompareLayout& layout,
+                  render::Renderer& renderer, const Panels& panels) {
   RgbaImage frame = blank_frame(scene.render.width, scene.render.height);
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const PixelRect& tile = layout.tiles[i];
@@ -129,7 +134,8 @@ int render_loop(const scene::Scene& scene, const CompareLayout& layout, render::
     if (const int signal = interrupt_signal()) return signal;
     for (auto& p : panels) advance(p->source, index, p->scene, p->frame);
     sinks.add(index, compose(scene, layout, renderer, panels), row_of(panels.front()->frame));
-    for (std::size_t i = 1; i < panels.size(); ++i) csvs[i - 1]->add(index, row_of(panels[i]->frame));
+    for (std::size_t i = 1; i < panels.size(); ++i)
+      csvs[i - 1]->add(index, row_of(panels[i]->frame));
     progress.update(index + 1);
   }
   progress.finish(scene.frames);
@@ -141,19 +147,25 @@ int render_loop(const scene::Scene& scene, const CompareLayout& layout, render::
 int render_comparison(const scene::Scene& scene, const RenderOptions& options) {
   const std::filesystem::path out(options.out_dir);
   prepare_output_dir(out);
-  const CompareLayout layout = compare_layout(static_cast<int>(scene.compare.size()), scene.render.width,
-                                              scene.render.height, scene.render.panel);
+  const CompareLayout layout =
+      compare_layout(static_cast<int>(scene.compare.size()), scene.render.width,
+                     scene.render.height, scene.render.panel);
   Panels panels;
-  for (const auto& panel : scene.compare) panels.push_back(std::make_unique<PanelState>(panel_scene(scene, panel)));
-  render::Renderer renderer(render_settings_for(panels.front()->scene, layout.tile_width, layout.tile_height, 1.0));
-  ClipPaths paths{out / (scene.name + ".mp4"), out / scene.name / "frames", csv_path(out, scene, scene.compare[0])};
+  for (const auto& panel : scene.compare)
+    panels.push_back(std::make_unique<PanelState>(panel_scene(scene, panel)));
+  render::Renderer renderer(
+      render_settings_for(panels.front()->scene, layout.tile_width, layout.tile_height, 1.0));
+  ClipPaths paths{out / (scene.name + ".mp4"), out / scene.name / "frames",
+                  csv_path(out, scene, scene.compare[0])};
   ClipSinks sinks(paths, sink_options(scene, options));
-  if (!sinks.encoder_message().empty()) std::cerr << "bookspin: note: " << sinks.encoder_message() << '\n';
+  if (!sinks.encoder_message().empty())
+    std::cerr << "bookspin: note: " << sinks.encoder_message() << '\n';
   std::vector<std::unique_ptr<PanelCsv>> csvs;
   for (std::size_t i = 1; i < scene.compare.size(); ++i)
     csvs.push_back(std::make_unique<PanelCsv>(csv_path(out, scene, scene.compare[i])));
   if (const int signal = render_loop(scene, layout, renderer, panels, sinks, csvs)) {
-    std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << scene.name << '\n';
+    std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << scene.name
+              << '\n';
     return 128 + signal;  // the sinks' and CSVs' destructors remove every temporary
   }
   sinks.finish();
@@ -161,7 +173,8 @@ int render_comparison(const scene::Scene& scene, const RenderOptions& options) {
   for (const auto& p : panels) {
     if (!p->frame.diverged_at) continue;
     std::cerr << "bookspin: warning: " << scene.name << ": panel '" << p->scene.title
-              << "' diverged at t = " << *p->frame.diverged_at << "; its tile holds the last finite frame\n";
+              << "' diverged at t = " << *p->frame.diverged_at
+              << "; its tile holds the last finite frame\n";
   }
   return kExitOk;
 }

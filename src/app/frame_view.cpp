@@ -62,14 +62,15 @@ render::RenderSettings render_settings_for(const scene::Scene& scene, int width,
   s.camera = render::default_camera(0.5 * scene.book.size.norm(), book_width, height);
   s.camera.fov_y_deg = r.fov_y_deg;
   // Keep the automatic distance for the default field of view, scaled for another one.
-  double distance = (s.camera.eye - s.camera.target).norm() *
-                    std::tan(M_PI / 12.0) / std::tan(r.fov_y_deg * M_PI / 360.0);
+  double distance = (s.camera.eye - s.camera.target).norm() * std::tan(M_PI / 12.0) /
+                    std::tan(r.fov_y_deg * M_PI / 360.0);
   if (r.camera_distance > 0.0) distance = r.camera_distance;
   s.camera.eye = s.camera.target + distance * r.camera_direction.normalized();
   shift_book_left(s.camera, width, height, book_share);
   s.textures = {r.texture_front, r.texture_back, r.texture_spine, r.texture_pages};
   s.show_angular_momentum = r.show_angular_momentum;
   s.show_body_axes = r.show_body_axes;
+  s.max_anisotropy = static_cast<float>(r.anisotropy);
   return s;
 }
 

@@ -21,8 +21,8 @@ bool exists(const fs::path& out, const std::string& relative) {
 
 /// Files under OUT/<dir> whose names start with `prefix` and end with `suffix`, sorted,
 /// as paths relative to OUT.
-std::vector<std::string> files_in(const fs::path& out, const std::string& dir, const std::string& prefix,
-                                  const std::string& suffix) {
+std::vector<std::string> files_in(const fs::path& out, const std::string& dir,
+                                  const std::string& prefix, const std::string& suffix) {
   std::vector<std::string> found;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(out / dir, ec)) {
@@ -70,7 +70,8 @@ int gallery_command(const GalleryOptions& options) {
   const fs::path out(options.out_dir);
   std::vector<GalleryEntry> entries;
   // Every scene is parsed first, so a bad one fails before anything is written.
-  for (const auto& path : options.scene_paths) entries.push_back(entry_for(out, scene::parse_scene(path)));
+  for (const auto& path : options.scene_paths)
+    entries.push_back(entry_for(out, scene::parse_scene(path)));
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) video::throw_output_error("cannot create output directory", out, ec.value());

@@ -41,14 +41,16 @@ void write_media(std::ostream& out, const GalleryEntry& e) {
     out << "<p class=\"missing\">not rendered yet (no " << html_escape(e.name) << ".mp4)</p>\n";
   }
   if (!e.plot.empty()) {
-    out << "<a href=" << attr(e.plot) << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.plot)
-        << " alt=\"diagnostics of " << html_escape(e.title) << "\"></a>\n";
+    out << "<a href=" << attr(e.plot)
+        << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.plot) << " alt=\"diagnostics of "
+        << html_escape(e.title) << "\"></a>\n";
   }
   out << "</div>\n";
 }
 
 void write_entry(std::ostream& out, const GalleryEntry& e) {
-  out << "<section class=\"clip\" id=" << attr(e.name) << ">\n<h2>" << html_escape(e.title) << "</h2>\n";
+  out << "<section class=\"clip\" id=" << attr(e.name) << ">\n<h2>" << html_escape(e.title)
+      << "</h2>\n";
   if (!e.description.empty()) out << "<p>" << html_escape(e.description) << "</p>\n";
   write_media(out, e);
   out << "<p class=\"files\">" << html_escape(e.name);
@@ -67,12 +69,23 @@ std::string html_escape(std::string_view text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;

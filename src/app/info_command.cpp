@@ -9,7 +9,11 @@ namespace bookspin::app {
 int info_command() {
   for (const auto& line : video::ffmpeg_info()) std::cout << line << '\n';
   std::cout.flush();
-  for (const auto& line : render::gl_info().lines()) std::cout << line << '\n';
+  const render::GlInfo gl = render::gl_info();
+  for (const auto& line : gl.lines()) std::cout << line << '\n';
+  const float anisotropy = render::effective_anisotropy(render::kAutoAnisotropy, gl.gl_renderer);
+  std::cout << "texture filtering (render.anisotropy = 0): "
+            << (anisotropy > 1.0f ? "4x anisotropic" : "trilinear (software rasterizer)") << '\n';
   return kExitOk;
 }
 

@@ -27,8 +27,8 @@ constexpr Colour kRunColours[] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00,
 // Smallest y spans: a quantity that is constant up to round-off draws flat.
 constexpr double kOmegaSpan = 0.02, kDriftSpan = 1e-3, kShapeSpan = 1e-3;
 
-overlay::Series series(std::string label, const std::vector<double>& t, const std::vector<double>& y,
-                       Colour c, bool dashed = false) {
+overlay::Series series(std::string label, const std::vector<double>& t,
+                       const std::vector<double>& y, Colour c, bool dashed = false) {
   overlay::Series s;
   s.label = std::move(label);
   s.x = t;
@@ -51,9 +51,11 @@ overlay::PlotSpec axes(std::string title, std::string y_label, double min_span, 
   return spec;
 }
 
-std::vector<overlay::PlotSpec> single_plots(const PanelRun& run, double t_end, std::optional<double> cursor) {
+std::vector<overlay::PlotSpec> single_plots(const PanelRun& run, double t_end,
+                                            std::optional<double> cursor) {
   const DiagnosticsHistory& h = *run.history;
-  auto omega = axes("angular velocity ω, body frame", "ω (rad / time unit)", kOmegaSpan, t_end, cursor);
+  auto omega =
+      axes("angular velocity ω, body frame", "ω (rad / time unit)", kOmegaSpan, t_end, cursor);
   omega.series = {series("ω_x", h.t, h.omega_x, kRed), series("ω_y", h.t, h.omega_y, kGreen),
                   series("ω_z", h.t, h.omega_z, kBlue)};
   auto drift = axes("relative energy drift", "E/E₀ − 1", kDriftSpan, t_end, cursor);
@@ -73,9 +75,11 @@ std::vector<overlay::PlotSpec> single_plots(const PanelRun& run, double t_end, s
 /// show both colours.
 std::vector<overlay::PlotSpec> comparison_plots(const std::vector<PanelRun>& runs, double t_end,
                                                 std::optional<double> cursor) {
-  auto omega = axes("ω_x, body frame (the flips)", "ω_x (rad / time unit)", kOmegaSpan, t_end, cursor);
+  auto omega =
+      axes("ω_x, body frame (the flips)", "ω_x (rad / time unit)", kOmegaSpan, t_end, cursor);
   auto drift = axes("relative energy drift", "E/E₀ − 1", kDriftSpan, t_end, cursor);
-  auto shape = axes("shape error: max strain |ℓ/ℓ₀ − 1|", "dimensionless", kShapeSpan, t_end, cursor);
+  auto shape =
+      axes("shape error: max strain |ℓ/ℓ₀ − 1|", "dimensionless", kShapeSpan, t_end, cursor);
   drift.legend = shape.legend = false;  // the same colours as the ω_x legend
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const DiagnosticsHistory& h = *runs[i].history;
@@ -103,7 +107,8 @@ PixelRect panel_rect(int width, int height) {
   return {left, margin, width - left - margin, height - 2 * margin};
 }
 
-void draw_panel(RgbaImage& image, const PixelRect& rect, const std::vector<overlay::PlotSpec>& plots) {
+void draw_panel(RgbaImage& image, const PixelRect& rect,
+                const std::vector<overlay::PlotSpec>& plots) {
   // Below about 100 px a plot has no room for its ticks and labels: better none than a smudge.
   if (plots.empty() || rect.width < 100 || rect.height < 100) return;
   overlay::CairoCanvas canvas(image.width, image.height);
@@ -116,7 +121,8 @@ void draw_panel(RgbaImage& image, const PixelRect& rect, const std::vector<overl
   std::vector<overlay::PlotSpec> aligned = plots;
   overlay::align_left_margins(cr, each, aligned);
   for (std::size_t i = 0; i < aligned.size(); ++i) {
-    overlay::draw_plot(cr, rect.x + inset, rect.y + inset + i * each, rect.width - 2 * inset, each, aligned[i]);
+    overlay::draw_plot(cr, rect.x + inset, rect.y + inset + i * each, rect.width - 2 * inset, each,
+                       aligned[i]);
   }
   canvas.composite_onto(image);
 }
@@ -150,7 +156,8 @@ RgbaImage plot_sheet(const std::vector<std::string>& header,
   const double each = plots.empty() ? 0 : (height - y) / plots.size();
   std::vector<overlay::PlotSpec> aligned = plots;
   overlay::align_left_margins(cr, each, aligned);
-  for (std::size_t i = 0; i < aligned.size(); ++i) overlay::draw_plot(cr, 0, y + i * each, width, each, aligned[i]);
+  for (std::size_t i = 0; i < aligned.size(); ++i)
+    overlay::draw_plot(cr, 0, y + i * each, width, each, aligned[i]);
   canvas.composite_onto(image);
   return image;
 }

@@ -32,7 +32,8 @@ Run simulate(const scene::Scene& scene) {
 std::vector<Run> simulate_all(const scene::Scene& scene) {
   std::vector<Run> runs;
   if (scene.compare.empty()) runs.push_back(simulate(scene));
-  for (const auto& panel : scene.compare) runs.push_back(simulate(scene::panel_scene(scene, panel)));
+  for (const auto& panel : scene.compare)
+    runs.push_back(simulate(scene::panel_scene(scene, panel)));
   return runs;
 }
 
@@ -48,8 +49,8 @@ std::vector<std::string> header(const scene::Scene& scene, const std::vector<Run
   }
   for (const auto& run : runs) {
     if (!run.diverged_at) continue;
-    lines.push_back((scene.compare.empty() ? "" : run.scene.title + ": ") + divergence_text(*run.diverged_at) +
-                    " (the curves end there)");
+    lines.push_back((scene.compare.empty() ? "" : run.scene.title + ": ") +
+                    divergence_text(*run.diverged_at) + " (the curves end there)");
   }
   return lines;
 }
@@ -60,7 +61,8 @@ int plot_command(const PlotOptions& options) {
   const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
   const std::vector<Run> runs = simulate_all(scene);
   std::vector<PanelRun> panel_runs;
-  for (const auto& run : runs) panel_runs.push_back({run.scene.title, run.scene.model.kind, &run.history});
+  for (const auto& run : runs)
+    panel_runs.push_back({run.scene.title, run.scene.model.kind, &run.history});
   const auto plots = panel_plots(panel_runs, clip_end_time(scene), std::nullopt);
   const auto path = std::filesystem::path(options.out_dir) / (scene.name + "-plot.png");
   std::error_code ec;

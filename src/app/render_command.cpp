@@ -38,21 +38,23 @@ int render_command(const RenderOptions& options) {
   if (!scene.compare.empty()) return render_comparison(scene, options);
   prepare_output_dir(options.out_dir);
   render::RenderSettings settings = render_settings_for(scene);
-  if (options.trilinear) settings.max_anisotropy = 1.0f;
   render::Renderer renderer(settings);
   ClipSinks sinks(clip_paths(options.out_dir, scene.name), sink_options(scene, options));
-  if (!sinks.encoder_message().empty()) std::cerr << "bookspin: note: " << sinks.encoder_message() << '\n';
+  if (!sinks.encoder_message().empty())
+    std::cerr << "bookspin: note: " << sinks.encoder_message() << '\n';
   Progress progress(scene.name, scene.frames);
   const LoopResult result = render_frames(scene, renderer, sinks, progress);
   if (result.signal != 0) {
-    std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << scene.name << '\n';
+    std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << scene.name
+              << '\n';
     return 128 + result.signal;  // the sinks' destructor removes every temporary
   }
   sinks.finish();
   progress.finish(result.frames);
   if (result.diverged_at) {
-    std::cerr << "bookspin: warning: " << scene.name << ": simulation diverged at t = "
-              << *result.diverged_at << "; the clip holds the last finite frame\n";
+    std::cerr << "bookspin: warning: " << scene.name
+              << ": simulation diverged at t = " << *result.diverged_at
+              << "; the clip holds the last finite frame\n";
   }
   return kExitOk;
 }

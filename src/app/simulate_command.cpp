@@ -21,7 +21,8 @@ RunResult write_rows(const scene::Scene& scene, std::ostream& out) {
   out << video::diagnostics_csv_header() << '\n';
   FrameSource source(scene);
   physics::BookPose pose;
-  while (source.next(pose)) out << video::diagnostics_csv_row(source.frame(), pose.diagnostics) << '\n';
+  while (source.next(pose))
+    out << video::diagnostics_csv_row(source.frame(), pose.diagnostics) << '\n';
   return {source.diverged_at(), source.frame() + 1};
 }
 
@@ -36,9 +37,10 @@ int simulate_command(const SimulateOptions& options) {
   const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
   if (!scene.compare.empty()) {
     // Several runs do not fit one CSV; `render` writes one per panel.
-    throw std::invalid_argument(options.scene_path +
-                                ": a comparison scene ([[compare]]) has one run per panel: `bookspin "
-                                "render` writes OUT/<scene>/diagnostics-<panel>.csv for each");
+    throw std::invalid_argument(
+        options.scene_path +
+        ": a comparison scene ([[compare]]) has one run per panel: `bookspin "
+        "render` writes OUT/<scene>/diagnostics-<panel>.csv for each");
   }
   RunResult result;
   if (options.csv_path == "-") {

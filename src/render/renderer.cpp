@@ -26,6 +26,9 @@ void validate_settings(const RenderSettings& settings) {
     throw RenderError("image size must be positive, got " + size);
   if (settings.width % 2 != 0 || settings.height % 2 != 0)
     throw RenderError("image width and height must be even, got " + size);
+  if (settings.max_anisotropy < 0.0f || settings.max_anisotropy > 16.0f)
+    throw RenderError("max_anisotropy must be 0 (automatic) or 1 … 16, got " +
+                      std::to_string(settings.max_anisotropy));
   if (settings.msaa_samples < 1)
     throw RenderError("msaa_samples must be >= 1 (1 = off), got " +
                       std::to_string(settings.msaa_samples));
@@ -40,6 +43,14 @@ ViewProjection view_projection(const RenderSettings& settings) {
 
 }  // namespace
 
+float effective_anisotropy(float requested, const std::string& gl_renderer) {
+  if (requested != kAutoAnisotropy) return requested;
+  for (const char* software : {"llvmpipe", "softpipe", "SWR"}) {
+    if (gl_renderer.find(software) != std::string::npos) return 1.0f;
+  }
+  return 4.0f;
+}
+
 struct Renderer::Impl {
   RenderSettings settings;
   // Declared first so it is destroyed last: every GL object below needs it.
@@ -51,7 +62,7 @@ struct Renderer::Impl {
   PixelReader reader{kPipelineDepth};
   ViewProjection camera;
   bool background_saved = false;
-  RgbaImage spare;  ///< a buffer from recycle() for the next read-back
+  RgbaImage spare;        ///< a buffer from recycle() for the next read-back
   PixelBox previous_box;  ///< where the last frame drew; the whole frame before the first
 
   explicit Impl(const RenderSettings& s) : settings(s) {
@@ -63,7 +74,8 @@ struct Renderer::Impl {
     context = std::make_unique<EglContext>();
     target.emplace(settings.width, settings.height, settings.msaa_samples);
     background.emplace();
-    book.emplace(images, settings.max_anisotropy);
+    book.emplace(images,
+                 effective_anisotropy(settings.max_anisotropy, context->info().gl_renderer));
     overlays.emplace();
     previous_box = PixelBox::whole(settings.width, settings.height);
   }

@@ -1,12 +1,11 @@
 #pragma once
 // The render stage's door: draws a book given as 8 world-space corners, off-screen, headless
 // (EGL, OpenGL 3.3 core), into an RGBA image. Knows nothing of physics.
+#include <Eigen/Dense>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "common/rgba_image.hpp"
 #include "render/camera.hpp"
@@ -25,9 +24,17 @@ struct FaceTextures {
   std::string front, back, spine, pages;
 };
 
+/// RenderSettings::max_anisotropy's "choose for the GL in use" value.
+inline constexpr float kAutoAnisotropy = 0.0f;
+
+/// The anisotropy `requested` resolves to on a GL whose GL_RENDERER string is `gl_renderer`:
+/// itself unless automatic, then 1 on a software rasterizer (llvmpipe, softpipe, SWR) and 4
+/// elsewhere.
+float effective_anisotropy(float requested, const std::string& gl_renderer);
+
 struct RenderSettings {
-  int width = 1280;   ///< pixels, even, > 0
-  int height = 720;   ///< pixels, even, > 0
+  int width = 1280;  ///< pixels, even, > 0
+  int height = 720;  ///< pixels, even, > 0
   /// Defaults to default_camera(default_bounding_radius, 1280, 720); call default_camera
   /// again for another image shape or book size.
   Camera camera = default_camera(default_bounding_radius, 1280, 720);
@@ -35,10 +42,11 @@ struct RenderSettings {
   bool show_angular_momentum = false;  ///< yellow arrow from the origin along L
   bool show_body_axes = false;         ///< red x, green y, blue z from the book's centre
   int msaa_samples = 4;                ///< 1 = off; clamped to GL_MAX_SAMPLES
-  /// Anisotropic texture filtering cap; 1 = trilinear only. 4× is enough for covers seen
-  /// nearly edge-on; more costs software rasterizers dearly. On Mesa llvmpipe (22.3) with
-  /// MSAA it is also most of the book's cost, and some poses in small frames take seconds.
-  float max_anisotropy = 4.0f;
+  /// Anisotropic texture filtering cap; 1 = trilinear only; 0 = automatic (kAutoAnisotropy):
+  /// 4× on a GPU, enough for covers seen nearly edge-on, and trilinear on a software
+  /// rasterizer: on Mesa llvmpipe (22.3) with MSAA, 4× anisotropy is most of the book's cost,
+  /// and close, magnified faces (a stretched book filling the view) take seconds per frame.
+  float max_anisotropy = kAutoAnisotropy;
 };
 
 /// One frame's input.

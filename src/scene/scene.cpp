@@ -1,10 +1,10 @@
 #include "scene/scene.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <fstream>
 #include <limits>
-#include <algorithm>
-#include <cctype>
-#include <array>
 #include <sstream>
 
 #include "scene/model_reader.hpp"
@@ -16,7 +16,9 @@ namespace {
 
 constexpr double kHuge = 1e12;
 
-bool is_key_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; }
+bool is_key_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+}
 
 /// "a.b_c.d-e": bare TOML keys joined by dots, none empty.
 bool is_dotted_key(std::string_view key) {
@@ -34,7 +36,9 @@ bool is_safe_name(std::string_view name) {
   return std::all_of(name.begin(), name.end(), [](char c) { return is_key_char(c) || c == '.'; });
 }
 
-std::string first_line(std::string_view text) { return std::string(text.substr(0, text.find('\n'))); }
+std::string first_line(std::string_view text) {
+  return std::string(text.substr(0, text.find('\n')));
+}
 
 void replace_all(std::string& text, std::string_view from, std::string_view to) {
   for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
@@ -63,7 +67,8 @@ std::string describe_syntax_error(const toml::parse_error& e, std::string_view t
                          what.rfind("Error while parsing literal string", 0) == 0;
   const auto& at = e.source().begin;
   const char bad = char_at(text, at.line, at.column);
-  if (in_string && what.find("control characters") != std::string::npos && (bad == '\n' || bad == '\r')) {
+  if (in_string && what.find("control characters") != std::string::npos &&
+      (bad == '\n' || bad == '\r')) {
     return "string is not closed before the end of the line";
   }
   if (in_string && what.find("end-of-file") != std::string::npos) {
@@ -86,8 +91,8 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
     const std::string doc = "value = " + assignment.substr(eq + 1);
     parsed = toml::parse(std::string_view(doc), std::string_view("--set"));
   } catch (const toml::parse_error& e) {
-    throw SceneError("--set " + key + ": value is not valid TOML (" +
-                     first_line(e.description()) + "); strings need quotes, e.g. key=\"text\"");
+    throw SceneError("--set " + key + ": value is not valid TOML (" + first_line(e.description()) +
+                     "); strings need quotes, e.g. key=\"text\"");
   }
   toml::table* table = &root;
   std::string_view rest = key;
@@ -114,7 +119,8 @@ std::string read_texture(TomlReader& r, std::string_view key, const std::filesys
   std::filesystem::path path(value);
   if (path.is_relative()) path = origin.parent_path() / path;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) r.fail(key, "texture file not found: " + path.string());
+  if (!std::filesystem::is_regular_file(path, ec))
+    r.fail(key, "texture file not found: " + path.string());
   return path.string();
 }
 
@@ -147,19 +153,23 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   }
   o.crf = static_cast<int>(r.integer("render.crf", o.crf, 0, 51));
   o.preset = r.string("render.preset", o.preset);
-  static constexpr std::array<std::string_view, 9> kPresets{
-      "ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"};
-  if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end()) r.fail("render.preset", "unknown preset '" + o.preset + "'");
+  static constexpr std::array<std::string_view, 9> kPresets{"ultrafast", "superfast", "veryfast",
+                                                            "faster",    "fast",      "medium",
+                                                            "slow",      "slower",    "veryslow"};
+  if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end())
+    r.fail("render.preset", "unknown preset '" + o.preset + "'");
   o.png_compression = static_cast<int>(r.integer("render.png_compression", 1, 0, 9));
   o.panel = r.boolean("render.panel", false);
+  o.anisotropy = static_cast<int>(r.integer("render.anisotropy", 0, 0, 16));
   return o;
 }
 
 void read_identity(TomlReader& r, Scene& s) {
   s.name = r.string("scene.name", s.source.stem().string());
   if (!is_safe_name(s.name)) {
-    r.fail("scene.name", "'" + s.name +
-                             "' is not a safe output name (letters, digits, '.', '_', '-'; no '/' or '..')");
+    r.fail("scene.name",
+           "'" + s.name +
+               "' is not a safe output name (letters, digits, '.', '_', '-'; no '/' or '..')");
   }
   s.title = r.string("scene.title", s.name);
   s.description = r.string("scene.description", "");

@@ -19,11 +19,11 @@ class SceneError : public std::runtime_error {
 };
 
 struct RenderOptions {
-  int width = 1280;   ///< pixels, even
-  int height = 720;   ///< pixels, even
-  int fps = 30;       ///< frames per second of the clip
-  double fov_y_deg = 30.0;                      ///< vertical field of view, degrees
-  double camera_distance = 0.0;                 ///< 0: framed automatically
+  int width = 1280;                                 ///< pixels, even
+  int height = 720;                                 ///< pixels, even
+  int fps = 30;                                     ///< frames per second of the clip
+  double fov_y_deg = 30.0;                          ///< vertical field of view, degrees
+  double camera_distance = 0.0;                     ///< 0: framed automatically
   Eigen::Vector3d camera_direction{0.9, 0.6, 3.2};  ///< from the origin towards the eye
   bool show_angular_momentum = false;
   bool show_body_axes = false;
@@ -33,6 +33,9 @@ struct RenderOptions {
   int crf = 18;
   std::string preset = "medium";
   int png_compression = 1;  ///< zlib level 0–9 for frame PNGs
+  /// Anisotropic texture filtering cap, 1 … 16 (1 = trilinear only); 0 = automatic: 4× on a
+  /// GPU, trilinear on a software rasterizer (see render::RenderSettings::max_anisotropy).
+  int anisotropy = 0;
   /// Live plots beside the book (ω, energy drift, shape): the book is framed in the left
   /// 60% of the frame and the plots fill the right 40%.
   bool panel = false;
@@ -53,9 +56,9 @@ struct Scene {
   physics::Book book;
   physics::ModelConfig model;
   physics::InitialState initial;
-  double dt = 1.0 / 60.0;     ///< time step, time units
-  int steps_per_frame = 6;    ///< substeps per video frame
-  int frames = 300;           ///< video frames (CSV rows), frame 0 = initial state
+  double dt = 1.0 / 60.0;   ///< time step, time units
+  int steps_per_frame = 6;  ///< substeps per video frame
+  int frames = 300;         ///< video frames (CSV rows), frame 0 = initial state
   RenderOptions render;
   std::filesystem::path source;  ///< the scene file
   /// Non-empty for a comparison scene: each panel runs its own simulator from the same
@@ -76,7 +79,8 @@ inline constexpr int kMaxComparePanels = 9;
 /// Reads and validates `path`, applying `overrides` ("key=value", value in TOML syntax) on
 /// top of the file. Throws SceneError on any bad input: unreadable or oversized file, TOML
 /// syntax, unknown key, wrong type, out-of-range value, missing texture file.
-Scene parse_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+Scene parse_scene(const std::filesystem::path& path,
+                  const std::vector<std::string>& overrides = {});
 
 /// Same from TOML text; `origin` names it in messages and resolves relative texture paths.
 Scene parse_scene_text(std::string_view text, const std::filesystem::path& origin,

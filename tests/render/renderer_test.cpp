@@ -1,11 +1,12 @@
 // Frames rendered through EGL (llvmpipe is fine): placement, faces, robustness, errors.
+#include "render/renderer.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
 
-#include "render/renderer.hpp"
 #include "render_test_util.hpp"
 
 namespace bookspin::render {
@@ -91,7 +92,8 @@ TEST_F(RendererTest, BookAtIdentityIsCentredWithTheRightShape) {
   EXPECT_NEAR(mask.centre_y(), (height - 1) / 2.0, 2.0);
   EXPECT_NEAR(mask.width() / mask.height(), 1.878 / 2.9085, 0.03);
   // Projected height: b / (distance − c/2) / tan(15°) × height/2 pixels.
-  const double expected_height = 2.9085 / (distance - 0.25) / std::tan(15.0 * M_PI / 180) * height / 2;
+  const double expected_height =
+      2.9085 / (distance - 0.25) / std::tan(15.0 * M_PI / 180) * height / 2;
   EXPECT_NEAR(mask.height(), expected_height, 3.0);
 }
 
@@ -113,7 +115,8 @@ TEST_F(RendererTest, FrontAndBackCoversDifferAndFaceTheRightWay) {
   EXPECT_GT(front.mean_color.z(), front.mean_color.x() + 10) << "front should be blue";
   EXPECT_GT(back.mean_color.x(), back.mean_color.z() + 10) << "back should be red";
   // Turning the book half around y shows the back to the +z camera.
-  const Eigen::Matrix3d half_turn = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Matrix3d half_turn =
+      Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitY()).toRotationMatrix();
   const Mask turned = difference_mask(from_front->render(book_frame(half_turn)), background);
   EXPECT_GT(turned.mean_color.x(), turned.mean_color.z() + 10);
 }
@@ -194,9 +197,13 @@ TEST(RendererOverlays, ArrowAndAxesAppear) {
   FrameInput frame = book_frame();
   frame.angular_momentum_direction = {-1, 0.4, 0};  // away from the red +x axis
   const RgbaImage image = renderer.render(frame);
-  const auto yellow = [](const Eigen::Vector3d& c) { return c.x() > 150 && c.y() > 120 && c.z() < 80; };
+  const auto yellow = [](const Eigen::Vector3d& c) {
+    return c.x() > 150 && c.y() > 120 && c.z() < 80;
+  };
   const auto red = [](const Eigen::Vector3d& c) { return c.x() > 140 && c.y() < 80 && c.z() < 80; };
-  const auto green = [](const Eigen::Vector3d& c) { return c.y() > 120 && c.x() < 100 && c.z() < 100; };
+  const auto green = [](const Eigen::Vector3d& c) {
+    return c.y() > 120 && c.x() < 100 && c.z() < 100;
+  };
   // Where it must be: yellow left of the centre (L points to −x), red right of it.
   int yellow_left = 0, red_right = 0;
   for (int y = 0; y < image.height; ++y) {
@@ -215,7 +222,9 @@ TEST(RendererOverlays, ArrowAndAxesAppear) {
               FrameInput f = nan_frame();
               f.angular_momentum_direction = {0, 1, 0};
               return f;
-            }()), yellow), 30);
+            }()),
+                        yellow),
+            30);
 }
 
 // ---- settings errors ------------------------------------------------------------------
@@ -244,6 +253,29 @@ TEST(RendererErrors, BadSizesThrow) {
   settings.height = 192;
   settings.msaa_samples = 0;
   expect_error(settings, "msaa_samples");
+  settings.msaa_samples = 4;
+  settings.max_anisotropy = 17.0f;
+  expect_error(settings, "max_anisotropy");
+}
+
+TEST(RendererAnisotropy, AutomaticIsTrilinearOnSoftwareRasterizersOnly) {
+  EXPECT_EQ(effective_anisotropy(kAutoAnisotropy, "llvmpipe (LLVM 15.0.6, 256 bits)"), 1.0f);
+  EXPECT_EQ(effective_anisotropy(kAutoAnisotropy, "softpipe"), 1.0f);
+  EXPECT_EQ(effective_anisotropy(kAutoAnisotropy, "NVIDIA H100 80GB HBM3/PCIe/SSE2"), 4.0f);
+  EXPECT_EQ(effective_anisotropy(8.0f, "llvmpipe (LLVM 15.0.6, 256 bits)"), 8.0f);
+  EXPECT_EQ(effective_anisotropy(1.0f, "NVIDIA H100 80GB HBM3/PCIe/SSE2"), 1.0f);
+}
+
+// A cover seen nearly edge-on is where anisotropic filtering differs from trilinear: the
+// setting must reach the texture sampler.
+TEST(RendererAnisotropy, ForcedAnisotropyChangesAGrazingCover) {
+  RenderSettings settings = axis_view({0.05, 0.0, 1.0});
+  settings.camera.eye = Eigen::Vector3d(0.0, -9.0, 1.2);
+  settings.max_anisotropy = 1.0f;
+  const RgbaImage trilinear = Renderer(settings).render(book_frame());
+  settings.max_anisotropy = 8.0f;
+  const RgbaImage anisotropic = Renderer(settings).render(book_frame());
+  EXPECT_GT(difference_mask(trilinear, anisotropic, 8).count, 50);
 }
 
 TEST(RendererErrors, SizeBeyondTheGlLimitThrows) {

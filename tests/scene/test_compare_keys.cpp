@@ -12,7 +12,8 @@ TEST(CompareKeys, PanelsInheritTheSceneModelAndOverrideTheirOwnKeys) {
   const Scene s = parse(
       "[model]\nkind = \"rigid-matrix\"\nnormalize = true\n"
       "[[compare]]\nlabel = \"Matrix, Euler\"\n"
-      "[[compare]]\nlabel = \"quaternion (RK4)\"\nmodel.kind = \"rigid-quaternion\"\nmodel.integrator = \"rk4\"\n"
+      "[[compare]]\nlabel = \"quaternion (RK4)\"\nmodel.kind = "
+      "\"rigid-quaternion\"\nmodel.integrator = \"rk4\"\n"
       "[[compare]]\nlabel = \"no SVD\"\nmodel = { normalize = false }\n");
   ASSERT_EQ(s.compare.size(), 3u);
   EXPECT_EQ(s.compare[0].name, "matrix-euler");
@@ -26,7 +27,8 @@ TEST(CompareKeys, PanelsInheritTheSceneModelAndOverrideTheirOwnKeys) {
 }
 
 TEST(CompareKeys, PanelSceneCarriesThePanelModelAndLabel) {
-  const Scene s = parse("[scene]\nname = \"cmp\"\n[[compare]]\nlabel = \"Exact\"\nmodel.kind = \"exact\"\n");
+  const Scene s =
+      parse("[scene]\nname = \"cmp\"\n[[compare]]\nlabel = \"Exact\"\nmodel.kind = \"exact\"\n");
   const Scene p = panel_scene(s, s.compare[0]);
   EXPECT_EQ(p.model.kind, physics::ModelKind::exact);
   EXPECT_EQ(p.title, "Exact");
@@ -40,6 +42,11 @@ TEST(CompareKeys, PanelDefaultsOffAndParses) {
   EXPECT_TRUE(parse("[render]\nwidth = 640\n").compare.empty());
 }
 
+TEST(RenderKeys, AnisotropyDefaultsToAutomaticAndParses) {
+  EXPECT_EQ(parse("[render]\nwidth = 640\n").render.anisotropy, 0);
+  EXPECT_EQ(parse("[render]\nanisotropy = 8\n").render.anisotropy, 8);
+}
+
 TEST(CompareKeys, ErrorsNameTheEntry) {
   const auto message = [](const std::string& text) {
     try {
@@ -49,9 +56,12 @@ TEST(CompareKeys, ErrorsNameTheEntry) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(message("[[compare]]\nlabel = \"a\"\nspeed = 2\n"), "test.toml:3: compare[1].speed: unknown key");
-  EXPECT_EQ(message("[[compare]]\nlabel = \"!!\"\n"), "test.toml:2: compare[1].label: must contain a letter or digit");
-  EXPECT_EQ(message("[[compare]]\nlabel = 3\n"), "test.toml:2: compare[1].label: expected a string, got an integer");
+  EXPECT_EQ(message("[[compare]]\nlabel = \"a\"\nspeed = 2\n"),
+            "test.toml:3: compare[1].speed: unknown key");
+  EXPECT_EQ(message("[[compare]]\nlabel = \"!!\"\n"),
+            "test.toml:2: compare[1].label: must contain a letter or digit");
+  EXPECT_EQ(message("[[compare]]\nlabel = 3\n"),
+            "test.toml:2: compare[1].label: expected a string, got an integer");
   std::string many;
   for (int i = 0; i < 10; ++i) many += "[[compare]]\nlabel = \"p" + std::to_string(i) + "\"\n";
   EXPECT_EQ(message(many), "test.toml:1: compare: expected 1 to 9 [[compare]] entries, got 10");
@@ -59,7 +69,8 @@ TEST(CompareKeys, ErrorsNameTheEntry) {
 
 TEST(CompareKeys, SetOverrideOfTheWholeArrayIsNamedAsSuch) {
   try {
-    parse_scene_text("[model]\nkind = \"exact\"\n", "test.toml", {"compare=[{label = \"a\", colour = 1}]"});
+    parse_scene_text("[model]\nkind = \"exact\"\n", "test.toml",
+                     {"compare=[{label = \"a\", colour = 1}]"});
     FAIL() << "no error";
   } catch (const SceneError& e) {
     EXPECT_STREQ(e.what(), "--set compare[1].colour: unknown key");
