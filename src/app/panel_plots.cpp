@@ -111,7 +111,10 @@ void draw_panel(RgbaImage& image, const PixelRect& rect,
                 const std::vector<overlay::PlotSpec>& plots) {
   // Below about 100 px a plot has no room for its ticks and labels: better none than a smudge.
   if (plots.empty() || rect.width < 100 || rect.height < 100) return;
-  overlay::CairoCanvas canvas(image.width, image.height);
+  // Only the panel's pixels: its cost per frame is its own area, not the frame's.
+  overlay::CairoCanvas canvas(image.width, image.height,
+                              overlay::region_around(rect.x, rect.y, rect.width, rect.height, 2.0,
+                                                     image.width, image.height));
   cairo_t* cr = canvas.cr();
   cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
   cairo_set_source_rgba(cr, 0.98, 0.98, 0.97, 0.9);

@@ -1,13 +1,46 @@
 #include "overlay/cairo_canvas.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
 namespace bookspin::overlay {
 
+namespace {
+
+CanvasRegion clipped(CanvasRegion r, int image_width, int image_height) {
+  const int x0 = std::clamp(r.x, 0, image_width), y0 = std::clamp(r.y, 0, image_height);
+  const int x1 = std::clamp(r.x + std::max(0, r.width), x0, image_width);
+  const int y1 = std::clamp(r.y + std::max(0, r.height), y0, image_height);
+  return {x0, y0, x1 - x0, y1 - y0};
+}
+
+}  // namespace
+
+CanvasRegion region_around(double x, double y, double width, double height, double margin,
+                           int image_width, int image_height) {
+  const double x0 = std::floor(x - margin), y0 = std::floor(y - margin);
+  const double x1 = std::ceil(x + width + margin), y1 = std::ceil(y + height + margin);
+  // Clamp in double first: a huge rectangle must not overflow int.
+  const auto to_int = [](double v, int hi) {
+    return static_cast<int>(std::clamp(v, 0.0, double(hi)));
+  };
+  const int ix0 = to_int(x0, image_width), iy0 = to_int(y0, image_height);
+  return {ix0, iy0, to_int(x1, image_width) - ix0, to_int(y1, image_height) - iy0};
+}
+
 CairoCanvas::CairoCanvas(int width, int height)
-    : surface_(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height)),
-      cr_(cairo_create(surface_)) {}
+    : CairoCanvas(width, height, {0, 0, width, height}) {}
+
+CairoCanvas::CairoCanvas(int width, int height, CanvasRegion region)
+    : region_(clipped(region, width, height)),
+      surface_(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, region_.width, region_.height)),
+      cr_(nullptr) {
+  // Callers draw in image coordinates; the device offset maps them onto the region.
+  cairo_surface_set_device_offset(surface_, -region_.x, -region_.y);
+  cr_ = cairo_create(surface_);
+}
 
 CairoCanvas::~CairoCanvas() {
   cairo_destroy(cr_);
@@ -17,11 +50,14 @@ CairoCanvas::~CairoCanvas() {
 void CairoCanvas::composite_onto(RgbaImage& image) {
   cairo_surface_flush(surface_);
   const unsigned char* data = cairo_image_surface_get_data(surface_);
+  if (data == nullptr) return;  // an empty region
   const int stride = cairo_image_surface_get_stride(surface_);
-  for (int y = 0; y < image.height; ++y) {
+  const int rows = std::min(region_.height, image.height - region_.y);
+  const int columns = std::min(region_.width, image.width - region_.x);
+  for (int y = 0; y < rows; ++y) {
     const unsigned char* src_row = data + static_cast<std::ptrdiff_t>(y) * stride;
-    std::uint8_t* dst = image.row(y);
-    for (int x = 0; x < image.width; ++x, dst += 4) {
+    std::uint8_t* dst = image.row(region_.y + y) + 4 * static_cast<std::ptrdiff_t>(region_.x);
+    for (int x = 0; x < columns; ++x, dst += 4) {
       std::uint32_t argb;
       std::memcpy(&argb, src_row + 4 * x, 4);
       const std::uint32_t a = argb >> 24;
@@ -29,7 +65,8 @@ void CairoCanvas::composite_onto(RgbaImage& image) {
       // Premultiplied source over opaque destination: out = src + dst·(1 − a).
       const std::uint32_t keep = 255 - a;
       const std::uint32_t rgb[3] = {(argb >> 16) & 255u, (argb >> 8) & 255u, argb & 255u};
-      for (int c = 0; c < 3; ++c) dst[c] = static_cast<std::uint8_t>(rgb[c] + (dst[c] * keep + 127) / 255);
+      for (int c = 0; c < 3; ++c)
+        dst[c] = static_cast<std::uint8_t>(rgb[c] + (dst[c] * keep + 127) / 255);
     }
   }
 }

@@ -1,16 +1,33 @@
 #pragma once
-// A cairo ARGB32 surface the size of an RgbaImage, composited back over it with alpha.
+// A cairo ARGB32 surface over an RgbaImage (or a rectangle of it), composited back over it
+// with alpha.
 #include <cairo.h>
 
 #include "common/rgba_image.hpp"
 
 namespace bookspin::overlay {
 
-/// Draw on `cr()`, then `composite_onto(image)` blends what was drawn over the image
-/// (source-over, cairo's premultiplied native-endian ARGB converted to RGBA bytes).
+/// A rectangle of an image in pixels: columns [x, x + width), rows [y, y + height).
+struct CanvasRegion {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+/// The smallest whole-pixel region holding the rectangle (x, y, width, height) (pixels,
+/// fractional) and `margin` pixels around it, clipped to a width×height image.
+CanvasRegion region_around(double x, double y, double width, double height, double margin,
+                           int image_width, int image_height);
+
+/// Draw on `cr()` in image coordinates, then `composite_onto(image)` blends what was drawn
+/// over the image (source-over, cairo's premultiplied native-endian ARGB converted to RGBA
+/// bytes). A canvas over a region holds and blends only that region's pixels (a caption or
+/// the plot panel costs its own area per frame, not the frame's); drawing outside it is
+/// clipped away.
 class CairoCanvas {
  public:
+  /// The whole width×height image.
   CairoCanvas(int width, int height);
+  /// Only `region` of the image (clipped to it; may be empty).
+  CairoCanvas(int width, int height, CanvasRegion region);
   ~CairoCanvas();
   CairoCanvas(const CairoCanvas&) = delete;
   CairoCanvas& operator=(const CairoCanvas&) = delete;
@@ -19,6 +36,7 @@ class CairoCanvas {
   void composite_onto(RgbaImage& image);
 
  private:
+  CanvasRegion region_;
   cairo_surface_t* surface_;
   cairo_t* cr_;
 };

@@ -42,35 +42,70 @@ double caption_font_size(cairo_t* cr, const std::vector<CaptionLine>& lines, dou
   return std::max(7.0, 0.98 * font_size * max_width / (width + 1.2 * font_size));
 }
 
-void draw_caption(cairo_t* cr, int image_height, const std::vector<CaptionLine>& lines,
-                  const CaptionLayout& layout) {
-  if (lines.empty()) return;
-  double size = layout.font_size > 0 ? layout.font_size : std::max(10.0, 0.026 * image_height);
-  size = caption_font_size(cr, lines, size, layout.max_width);
-  const double width = widest_line(cr, lines, size);
-  const double pad = 0.6 * size, line_height = 1.35 * size;
-  const double x = layout.x > 0 ? layout.x : pad, y = layout.y > 0 ? layout.y : pad;
-  cairo_rectangle(cr, x, y, width + 2 * pad, lines.size() * line_height + pad);
+namespace {
+
+/// Where a caption's box goes and how large its text is (pixels).
+struct CaptionBox {
+  double size = 0, pad = 0, line_height = 0, x = 0, y = 0, width = 0, height = 0;
+};
+
+CaptionBox caption_box(cairo_t* cr, int image_height, const std::vector<CaptionLine>& lines,
+                       const CaptionLayout& layout) {
+  CaptionBox box;
+  box.size = layout.font_size > 0 ? layout.font_size : std::max(10.0, 0.026 * image_height);
+  box.size = caption_font_size(cr, lines, box.size, layout.max_width);
+  box.pad = 0.6 * box.size, box.line_height = 1.35 * box.size;
+  box.x = layout.x > 0 ? layout.x : box.pad, box.y = layout.y > 0 ? layout.y : box.pad;
+  box.width = widest_line(cr, lines, box.size) + 2 * box.pad;
+  box.height = lines.size() * box.line_height + box.pad;
+  return box;
+}
+
+void draw_caption_box(cairo_t* cr, const std::vector<CaptionLine>& lines, const CaptionBox& box) {
+  cairo_rectangle(cr, box.x, box.y, box.width, box.height);
   cairo_set_source_rgba(cr, 0.05, 0.06, 0.09, 0.62);
   cairo_fill(cr);
-  double baseline = y + pad / 2 + size;
+  double baseline = box.y + box.pad / 2 + box.size;
   for (const auto& line : lines) {
-    select_font(cr, line.bold, size);
+    select_font(cr, line.bold, box.size);
     if (line.style == CaptionStyle::warning) {
       cairo_set_source_rgb(cr, 1.0, 0.45, 0.35);
     } else {
       cairo_set_source_rgb(cr, 0.95, 0.95, 0.92);
     }
-    cairo_move_to(cr, x + pad, baseline);
+    cairo_move_to(cr, box.x + box.pad, baseline);
     cairo_show_text(cr, line.text.c_str());
-    baseline += line_height;
+    baseline += box.line_height;
   }
 }
 
-void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines, const CaptionLayout& layout) {
+/// A context for measuring text only (no pixels).
+struct Measure {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
+  cairo_t* cr = cairo_create(surface);
+  ~Measure() {
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+  }
+};
+
+}  // namespace
+
+void draw_caption(cairo_t* cr, int image_height, const std::vector<CaptionLine>& lines,
+                  const CaptionLayout& layout) {
   if (lines.empty()) return;
-  CairoCanvas canvas(image.width, image.height);
-  draw_caption(canvas.cr(), image.height, lines, layout);
+  draw_caption_box(cr, lines, caption_box(cr, image_height, lines, layout));
+}
+
+void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines,
+                  const CaptionLayout& layout) {
+  if (lines.empty()) return;
+  const CaptionBox box = caption_box(Measure().cr, image.height, lines, layout);
+  // Only the box's pixels: a frame's caption then costs its own area, not the frame's.
+  CairoCanvas canvas(
+      image.width, image.height,
+      region_around(box.x, box.y, box.width, box.height, 2.0, image.width, image.height));
+  draw_caption_box(canvas.cr(), lines, box);
   canvas.composite_onto(image);
 }
 
@@ -79,24 +114,30 @@ void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines) {
 }
 
 void draw_banner(RgbaImage& image, const std::string& text, double centre_x) {
-  CairoCanvas canvas(image.width, image.height);
-  cairo_t* cr = canvas.cr();
+  Measure measure;
+  cairo_t* m = measure.cr;
   if (centre_x < 0) centre_x = 0.5 * image.width;
   double size = 1.8 * font_size_for(image);
-  select_font(cr, true, size);
+  select_font(m, true, size);
   // Shrink to fit small frames: the banner, centred on centre_x, must stay in the frame.
   const double room = 2.0 * std::min(centre_x, image.width - centre_x);
-  const double fit = 0.9 * room / std::max(1.0, text_width(cr, text) + size);
+  const double fit = 0.9 * room / std::max(1.0, text_width(m, text) + size);
   if (fit < 1.0) {
     size *= fit;
-    select_font(cr, true, size);
+    select_font(m, true, size);
   }
-  const double width = text_width(cr, text), pad = 0.5 * size;
+  const double width = text_width(m, text), pad = 0.5 * size;
   const double x = centre_x - 0.5 * width, y = image.height - 2.2 * size;
-  cairo_rectangle(cr, x - pad, y - size - pad / 2, width + 2 * pad, size + 1.5 * pad);
+  const double box_x = x - pad, box_y = y - size - pad / 2, box_w = width + 2 * pad,
+               box_h = size + 1.5 * pad;
+  CairoCanvas canvas(image.width, image.height,
+                     region_around(box_x, box_y, box_w, box_h, 2.0, image.width, image.height));
+  cairo_t* cr = canvas.cr();
+  cairo_rectangle(cr, box_x, box_y, box_w, box_h);
   cairo_set_source_rgba(cr, 0.75, 0.08, 0.06, 0.88);
   cairo_fill(cr);
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  select_font(cr, true, size);
   cairo_move_to(cr, x, y);
   cairo_show_text(cr, text.c_str());
   canvas.composite_onto(image);

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "overlay/cairo_canvas.hpp"
 
@@ -56,7 +59,9 @@ Axis fit_x(const PlotSpec& spec) {
   return fit_axis(spec.series, true, spec.log_x);
 }
 
-Axis fit_y(const PlotSpec& spec) { return fit_axis(spec.series, false, spec.log_y, spec.min_y_span); }
+Axis fit_y(const PlotSpec& spec) {
+  return fit_axis(spec.series, false, spec.log_y, spec.min_y_span);
+}
 
 double nice_step(double span) {
   const double raw = span / 5.0, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
@@ -89,26 +94,103 @@ std::string tick_label(double v, bool log) {
   return text;
 }
 
-void text_at(cairo_t* cr, const std::string& s, double x, double y, double align_x, double align_y) {
+void text_at(cairo_t* cr, const std::string& s, double x, double y, double align_x,
+             double align_y) {
   cairo_text_extents_t e;
   cairo_text_extents(cr, s.c_str(), &e);
   cairo_move_to(cr, x - align_x * e.x_advance, y + align_y * e.height);
   cairo_show_text(cr, s.c_str());
 }
 
-void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, double x0,
-                 double x1, double y0, double y1, double line_width) {
-  cairo_set_source_rgb(cr, s.r, s.g, s.b);
-  cairo_set_line_width(cr, line_width);
-  const double dash[] = {4 * line_width, 2.5 * line_width};
-  cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
-  bool pen_down = false;
-  for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+/// A polyline in pixels; a NaN point lifts the pen.
+using Polyline = std::vector<std::pair<double, double>>;
+
+/// Collects pixel points, thinning runs that fall in one quarter-pixel column to their
+/// first, lowest, highest and last points (in their original order). That draws the same
+/// line (every vertical extent and every connection between columns is kept; within a
+/// quarter pixel a steep stretch's chord is as good as the curve, while whole-pixel columns
+/// shift steep edges visibly), at a cost bounded by the plot's width rather than by the
+/// number of points: a panel drawn every frame of a long clip would otherwise cost time
+/// proportional to the frame index.
+class ColumnThinner {
+ public:
+  explicit ColumnThinner(Polyline& out) : out_(out) {}
+  void add(std::size_t index, double px, double py) {
+    const double column = std::floor(4.0 * px);  // quarter-pixel columns
+    if (count_ > 0 && column != column_) flush();
+    if (count_ == 0) column_ = column, first_ = last_ = low_ = high_ = {index, px, py};
+    last_ = {index, px, py};
+    if (py < low_.py) low_ = last_;
+    if (py > high_.py) high_ = last_;
+    ++count_;
+  }
+  void pen_up() {
+    flush();
+    out_.emplace_back(std::nan(""), std::nan(""));
+  }
+  void flush() {
+    if (count_ == 0) return;
+    Point kept[] = {first_, low_, high_, last_};
+    std::sort(std::begin(kept), std::end(kept),
+              [](const Point& a, const Point& b) { return a.index < b.index; });
+    for (std::size_t i = 0; i < std::size(kept); ++i) {
+      if (i > 0 && kept[i].index == kept[i - 1].index) continue;
+      out_.emplace_back(kept[i].px, kept[i].py);
+    }
+    count_ = 0;
+  }
+
+ private:
+  struct Point {
+    std::size_t index;
+    double px, py;
+  };
+  Polyline& out_;
+  std::size_t count_ = 0;
+  double column_ = 0;
+  Point first_{}, last_{}, low_{}, high_{};
+};
+
+/// The series' usable points mapped to pixels, thinned per pixel column where x never
+/// decreases (a time series); other data are kept point for point.
+Polyline series_polyline(const Series& s, const Axis& ax, const Axis& ay, double x0, double x1,
+                         double y0, double y1) {
+  const std::size_t n = std::min(s.x.size(), s.y.size());
+  const bool sorted = std::is_sorted(s.x.begin(), s.x.begin() + static_cast<std::ptrdiff_t>(n));
+  Polyline points;
+  ColumnThinner thinner(points);
+  for (std::size_t i = 0; i < n; ++i) {
     if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) {
-      pen_down = false;
+      if (sorted)
+        thinner.pen_up();
+      else
+        points.emplace_back(std::nan(""), std::nan(""));
       continue;
     }
     const double px = ax.map(s.x[i], x0, x1), py = ay.map(s.y[i], y1, y0);
+    if (sorted)
+      thinner.add(i, px, py);
+    else
+      points.emplace_back(px, py);
+  }
+  thinner.flush();
+  return points;
+}
+
+void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, double x0, double x1,
+                 double y0, double y1, double line_width) {
+  cairo_set_source_rgb(cr, s.r, s.g, s.b);
+  cairo_set_line_width(cr, line_width);
+  // Round joins: a thinned column turns back on itself, and a mitred turn would spike.
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  const double dash[] = {4 * line_width, 2.5 * line_width};
+  cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+  bool pen_down = false;
+  for (const auto& [px, py] : series_polyline(s, ax, ay, x0, x1, y0, y1)) {
+    if (std::isnan(px)) {
+      pen_down = false;
+      continue;
+    }
     pen_down ? cairo_line_to(cr, px, py) : cairo_move_to(cr, px, py);
     pen_down = true;
   }
@@ -181,8 +263,10 @@ double flow_legend(cairo_t* cr, const PlotSpec& spec, double left, double right,
 }
 
 /// Legend rows above the plot area, so a narrow plot keeps its full width.
-double top_legend_height(cairo_t* cr, const PlotSpec& spec, double left, double right, double font) {
-  if (!spec.legend || spec.series.empty() || spec.legend_placement != LegendPlacement::top) return 0;
+double top_legend_height(cairo_t* cr, const PlotSpec& spec, double left, double right,
+                         double font) {
+  if (!spec.legend || spec.series.empty() || spec.legend_placement != LegendPlacement::top)
+    return 0;
   return flow_legend(cr, spec, left, right, 0, font, [](const Series&, double, double) {});
 }
 
@@ -233,8 +317,10 @@ Area layout(cairo_t* cr, double x, double y, double width, double height, const 
             const Axis& ay, double font) {
   const bool right = spec.legend && spec.legend_placement == LegendPlacement::right;
   const double legend_width = right ? legend_box_width(cr, spec, font) + 0.8 * font : 0.0;
-  Area a{x + left_margin(cr, spec, ay, font), x + width - 1.4 * font - legend_width, 0, y + height - 3.2 * font, font};
-  a.y0 = y + (spec.title.empty() ? 0.8 : 2.0) * font + top_legend_height(cr, spec, a.x0, a.x1, font);
+  Area a{x + left_margin(cr, spec, ay, font), x + width - 1.4 * font - legend_width, 0,
+         y + height - 3.2 * font, font};
+  a.y0 =
+      y + (spec.title.empty() ? 0.8 : 2.0) * font + top_legend_height(cr, spec, a.x0, a.x1, font);
   return a;
 }
 
