@@ -99,6 +99,10 @@ void add_bench(CLI::App& cli, BenchOptions& options) {
   cmd->add_option("--memory-frames", options.memory_frames, "Frames of the long memory run")
       ->check(CLI::Range(100, 100000))
       ->capture_default_str();
+  cmd->add_option("--rounds", options.rounds,
+                  "Pipeline runs alternated this many times; each timing keeps its best")
+      ->check(CLI::Range(1, 20))
+      ->capture_default_str();
   cmd->add_option("-j,--jobs", options.jobs, "As render --jobs (default: all cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--only", options.only,

@@ -23,7 +23,7 @@ struct RenderOptions {
   std::string out_dir = "out";
   int frames = 0;  ///< > 0 overrides time.frames
   bool no_png = false;
-  int jobs = 0;  ///< worker threads; 0 = number of cores
+  int jobs = 0;              ///< worker threads; 0 = number of cores
   int png_compression = -1;  ///< zlib level 0–9 for the frames; −1 = render.png_compression
 };
 
@@ -44,11 +44,12 @@ int accuracy_command(const AccuracyOptions& options);
 
 struct BenchOptions {
   std::string scene_path = "scenes/fig09-matrix-unstable-x.toml";  ///< the 720p pipeline scene
-  std::string out_dir;           ///< non-empty: also write OUT/bench.csv
-  int frames = 150;              ///< pipeline frames at 1280×720
-  int memory_frames = 10000;     ///< the long run of the memory check
-  int jobs = 0;                  ///< as render --jobs
-  std::vector<std::string> only; ///< sections to run (pipeline, resolution, physics, memory)
+  std::string out_dir;            ///< non-empty: also write OUT/bench.csv
+  int frames = 150;               ///< pipeline frames at 1280×720
+  int memory_frames = 10000;      ///< the long run of the memory check
+  int rounds = 3;                 ///< pipeline runs alternated this many times; best of each kept
+  int jobs = 0;                   ///< as render --jobs
+  std::vector<std::string> only;  ///< sections to run (pipeline, resolution, physics, memory)
 };
 
 /// Times the render pipeline against the encoder alone, resolution scaling, the physics

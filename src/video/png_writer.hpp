@@ -1,13 +1,14 @@
 #pragma once
-// PNG frames with libpng: 8-bit RGBA out, any PNG in.
+// PNG frames with libpng: 8-bit RGB or RGBA out, any PNG in.
 #include <filesystem>
 
 #include "common/rgba_image.hpp"
 
 namespace bookspin::video {
 
-/// Writes `image` (8-bit RGBA, top row first) as a non-interlaced 8-bit RGBA
-/// PNG. The file is written under a temporary name in the same directory and
+/// Writes `image` (8-bit RGBA, top row first) as a non-interlaced 8-bit PNG:
+/// RGB when every pixel is opaque (alpha 255, as rendered frames are), RGBA
+/// otherwise; read_png gives the same pixels back either way. The file is written under a temporary name in the same directory and
 /// renamed onto `path` only when complete (see AtomicFile), replacing any file
 /// there. `compression_level` is zlib's 0 (none, fastest) … 9 (smallest).
 /// Throws std::invalid_argument for an empty image, a pixel buffer whose size

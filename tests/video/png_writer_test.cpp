@@ -53,7 +53,31 @@ TEST(PngWriter, RoundTripIsExactAtSeveralCompressionLevels) {
   EXPECT_EQ(dir.entries().size(), 3u);  // no temporaries left behind
 }
 
-TEST(PngWriter, WritesEightBitRgbaAndHigherLevelsCompressSmoothImagesMore) {
+unsigned char colour_type(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char header[26] = {};
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  EXPECT_EQ(std::string(reinterpret_cast<char*>(header + 12), 4), "IHDR");
+  EXPECT_EQ(header[24], 8);  // bit depth
+  return header[25];
+}
+
+// Rendered frames are opaque and go out as RGB (a quarter less to deflate); anything with
+// transparency keeps its alpha. Both read back exactly.
+TEST(PngWriter, OpaqueImagesAreWrittenAsRgbOthersAsRgba) {
+  ScratchDir dir;
+  const RgbaImage opaque = testing::moving_square_frame(64, 48, 3);
+  RgbaImage translucent = opaque;
+  translucent.pixels[4 * 100 + 3] = 128;
+  write_png(dir / "opaque.png", opaque, 1);
+  write_png(dir / "translucent.png", translucent, 1);
+  EXPECT_EQ(colour_type(dir / "opaque.png"), 2);       // RGB
+  EXPECT_EQ(colour_type(dir / "translucent.png"), 6);  // RGBA
+  EXPECT_EQ(read_png(dir / "opaque.png").pixels, opaque.pixels);
+  EXPECT_EQ(read_png(dir / "translucent.png").pixels, translucent.pixels);
+}
+
+TEST(PngWriter, WritesEightBitAndHigherLevelsCompressSmoothImagesMore) {
   ScratchDir dir;
   const RgbaImage image = testing::moving_square_frame(128, 96, 0);
   write_png(dir / "fast.png", image, 1);
@@ -61,13 +85,7 @@ TEST(PngWriter, WritesEightBitRgbaAndHigherLevelsCompressSmoothImagesMore) {
   write_png(dir / "none.png", image, 0);
   EXPECT_LE(fs::file_size(dir / "small.png"), fs::file_size(dir / "fast.png"));
   EXPECT_GT(fs::file_size(dir / "none.png"), fs::file_size(dir / "fast.png"));
-
-  std::ifstream in(dir / "fast.png", std::ios::binary);
-  unsigned char header[26] = {};
-  in.read(reinterpret_cast<char*>(header), sizeof header);
-  EXPECT_EQ(std::string(reinterpret_cast<char*>(header + 12), 4), "IHDR");
-  EXPECT_EQ(header[24], 8);  // bit depth
-  EXPECT_EQ(header[25], 6);  // colour type RGBA
+  EXPECT_EQ(colour_type(dir / "fast.png"), 2);  // opaque: RGB
 }
 
 TEST(PngWriter, ReadPngExpandsGreyRgbAndPaletteToRgba) {
