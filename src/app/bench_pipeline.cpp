@@ -97,7 +97,7 @@ std::string frames_text(int frames, int width, int height) {
 
 /// The pipeline's four timings, each the best over the rounds.
 struct PipelineTimes {
-  double floor = 1e300, no_png = 1e300, png = 1e300, anisotropic = 1e300;
+  double floor = 1e300, no_png = 1e300, png = 1e300, anisotropic = 1e300, no_msaa = 1e300;
 };
 
 // The four are alternated round by round and each keeps its best (shortest) time: on a
@@ -111,6 +111,8 @@ void bench_pipeline(const BenchContext& c) {
   const std::vector<RgbaImage> rendered = prerender(scene);
   RenderOptions anisotropic = render_options(c, "anisotropic", 1280, 720, frames, false);
   anisotropic.overrides.push_back("render.anisotropy=4");
+  RenderOptions no_msaa = render_options(c, "no-msaa", 1280, 720, frames, false);
+  no_msaa.overrides.push_back("render.msaa=1");
   PipelineTimes best;
   for (int round = 0; round < rounds; ++round) {
     best.floor = std::min(best.floor,
@@ -119,6 +121,7 @@ void bench_pipeline(const BenchContext& c) {
         std::min(best.no_png, timed_render(render_options(c, "no-png", 1280, 720, frames, false)));
     best.png = std::min(best.png, timed_render(render_options(c, "png", 1280, 720, frames, true)));
     best.anisotropic = std::min(best.anisotropic, timed_render(anisotropic));
+    best.no_msaa = std::min(best.no_msaa, timed_render(no_msaa));
   }
   const std::string of = ", best of " + std::to_string(rounds) + " alternated runs";
   report.add({"pipeline", "encoder alone (the floor), " + what, best.floor, "s",
@@ -130,12 +133,16 @@ void bench_pipeline(const BenchContext& c) {
               "PNG zlib level " + std::to_string(scene.render.png_compression) + of});
   report.add({"pipeline", "render --no-png, 4x anisotropic filtering, " + what, best.anisotropic,
               "s", "forced; on a software rasterizer the default is trilinear" + of});
+  report.add({"pipeline", "render --no-png, render.msaa = 1, " + what, best.no_msaa, "s",
+              "forced; no anti-aliasing" + of});
   report.add({"pipeline", "render --no-png / floor", best.no_png / best.floor, "x",
               at_most(best.no_png / best.floor, 1.15)});
   report.add({"pipeline", "render with PNGs / floor", best.png / best.floor, "x",
               at_most(best.png / best.floor, 1.5)});
   report.add({"pipeline", "render --no-png, 4x anisotropic / floor", best.anisotropic / best.floor,
               "x", "for comparison: what anisotropic filtering costs on this GL"});
+  report.add({"pipeline", "render --no-png, render.msaa = 1 / floor", best.no_msaa / best.floor,
+              "x", "for comparison: what 4x MSAA costs on this GL"});
 }
 
 void bench_resolution(const BenchContext& c) {

@@ -71,6 +71,7 @@ render::RenderSettings render_settings_for(const scene::Scene& scene, int width,
   s.show_angular_momentum = r.show_angular_momentum;
   s.show_body_axes = r.show_body_axes;
   s.max_anisotropy = static_cast<float>(r.anisotropy);
+  s.msaa_samples = r.msaa;
   return s;
 }
 

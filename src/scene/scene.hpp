@@ -36,6 +36,8 @@ struct RenderOptions {
   /// Anisotropic texture filtering cap, 1 … 16 (1 = trilinear only); 0 = automatic: 4× on a
   /// GPU, trilinear on a software rasterizer (see render::RenderSettings::max_anisotropy).
   int anisotropy = 0;
+  /// Multisample anti-aliasing samples per pixel: 1 (off), 2, 4 or 8 (capped by the GL).
+  int msaa = 4;
   /// Live plots beside the book (ω, energy drift, shape): the book is framed in the left
   /// 60% of the frame and the plots fill the right 40%.
   bool panel = false;

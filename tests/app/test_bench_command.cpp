@@ -29,7 +29,8 @@ TEST(BenchCommand, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string csv = read_file(dir / "bench.csv");
   for (const char* row : {"encoder alone (the floor), 2 frames 1280x720", "render --no-png / floor",
-                          "render with PNGs / floor", "render --no-png, 4x anisotropic / floor"}) {
+                          "render with PNGs / floor", "render --no-png, 4x anisotropic / floor",
+                          "render --no-png, render.msaa = 1 / floor"}) {
     EXPECT_NE(csv.find(row), std::string::npos) << row << " missing from\n" << csv;
   }
   EXPECT_NE(csv.find("best of 2 alternated runs"), std::string::npos) << csv;

@@ -17,8 +17,10 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::vector<std::string> kArgs = {"render", scene_path("fig09-matrix-unstable-x"),
-                                        "--set", "render.width=96", "--set", "render.height=64",
-                                        "--set", "render.preset=\"ultrafast\"", "--jobs", "2"};
+                                        "--set",  "render.width=96",
+                                        "--set",  "render.height=64",
+                                        "--set",  "render.preset=\"ultrafast\"",
+                                        "--jobs", "2"};
 
 pid_t start_render(const fs::path& out, int frames) {
   std::vector<std::string> args = kArgs;
@@ -56,11 +58,20 @@ TEST(Interrupt, SigintTwentyTimesNeverLeavesPartialOutputsOrDamagesEarlierClip) 
   const auto complete = snapshot(out);
   ASSERT_TRUE(complete.count("fig09-matrix-unstable-x.mp4"));
   ASSERT_TRUE(complete.count("fig09-matrix-unstable-x/frames/frame_00011.png"));
+  // The signal comes at a random moment between 5% and 120% of how long a whole render
+  // takes on this machine (measured here, so that a fast machine or a slow sanitizer build
+  // interrupts about as often): most renders are cut short, a few finish first.
+  const fs::path timing = fresh_dir("interrupt-timing");
+  const auto start = std::chrono::steady_clock::now();
+  ASSERT_EQ(wait_status(start_render(timing, 60)), 0);
+  const double whole_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::mt19937 random(20121);
+  std::uniform_real_distribution<double> moment(0.05 * whole_ms, 1.2 * whole_ms);
   int interrupted = 0;
   for (int attempt = 0; attempt < 20; ++attempt) {
     const pid_t pid = start_render(out, 60);
-    std::this_thread::sleep_for(std::chrono::milliseconds(std::uniform_int_distribution(50, 900)(random)));
+    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(moment(random)));
     kill(pid, SIGINT);
     const int status = wait_status(pid);
     ASSERT_TRUE(status == 130 || status == 0) << "attempt " << attempt << ": status " << status;

@@ -47,6 +47,11 @@ TEST(RenderKeys, AnisotropyDefaultsToAutomaticAndParses) {
   EXPECT_EQ(parse("[render]\nanisotropy = 8\n").render.anisotropy, 8);
 }
 
+TEST(RenderKeys, MsaaDefaultsToFourAndParses) {
+  EXPECT_EQ(parse("[render]\nwidth = 640\n").render.msaa, 4);
+  EXPECT_EQ(parse("[render]\nmsaa = 1\n").render.msaa, 1);
+}
+
 TEST(CompareKeys, ErrorsNameTheEntry) {
   const auto message = [](const std::string& text) {
     try {
