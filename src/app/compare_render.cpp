@@ -90,20 +90,24 @@ void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& 
       runs.push_back({p->scene.title, p->scene.model.kind, &p->frame.history});
     draw_panel(frame, *layout.plots, panel_plots(runs, clip_end_time(scene), t));
   }
-  overlay::CairoCanvas canvas(frame.width, frame.height);
-  draw_header(canvas.cr(), layout.header, scene.title, t);
+  {
+    const PixelRect& strip = layout.header;
+    overlay::CairoCanvas canvas(frame.width, frame.height,
+                                overlay::region_around(strip.x, strip.y, strip.width, strip.height,
+                                                       0.0, frame.width, frame.height));
+    draw_header(canvas.cr(), strip, scene.title, t);
+    canvas.composite_onto(frame);
+  }
   // One font size for every tile (the largest at which every caption fits its tile), so
   // the labels read as a set.
   double font = std::min(0.026 * frame.height, 0.045 * layout.tile_height);
   const double margin = 0.4 * font, max_width = layout.tile_width - 2 * margin;
-  for (const auto& p : panels)
-    font = overlay::caption_font_size(canvas.cr(), tile_caption(*p), font, max_width);
+  for (const auto& p : panels) font = overlay::caption_font_size(tile_caption(*p), font, max_width);
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const PixelRect& tile = layout.tiles[i];
     overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width};
-    overlay::draw_caption(canvas.cr(), frame.height, tile_caption(*panels[i]), caption);
+    overlay::draw_caption(frame, tile_caption(*panels[i]), caption);
   }
-  canvas.composite_onto(frame);
 }
 
 RgbaImage compose(const scene::Scene& scene, const CompareLayout& layout,

@@ -1,4 +1,5 @@
 #include <iostream>
+#include <string>
 
 #include "app/commands.hpp"
 #include "render/renderer.hpp"
@@ -13,7 +14,9 @@ int info_command() {
   for (const auto& line : gl.lines()) std::cout << line << '\n';
   const float anisotropy = render::effective_anisotropy(render::kAutoAnisotropy, gl.gl_renderer);
   std::cout << "texture filtering (render.anisotropy = 0): "
-            << (anisotropy > 1.0f ? "4x anisotropic" : "trilinear (software rasterizer)") << '\n';
+            << (anisotropy > 1.0f ? std::to_string(static_cast<int>(anisotropy)) + "x anisotropic"
+                                  : std::string("trilinear (software rasterizer)"))
+            << '\n';
   return kExitOk;
 }
 

@@ -1,6 +1,3 @@
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdlib>
 #include <iostream>
 
@@ -12,7 +9,6 @@
 #include "app/interrupt.hpp"
 #include "app/progress.hpp"
 #include "app/render_setup.hpp"
-#include "app/still.hpp"
 
 namespace bookspin::app {
 
@@ -37,8 +33,7 @@ int render_command(const RenderOptions& options) {
   cap_gl_threads(options.jobs);
   if (!scene.compare.empty()) return render_comparison(scene, options);
   prepare_output_dir(options.out_dir);
-  render::RenderSettings settings = render_settings_for(scene);
-  render::Renderer renderer(settings);
+  render::Renderer renderer(render_settings_for(scene));
   ClipSinks sinks(clip_paths(options.out_dir, scene.name), sink_options(scene, options));
   if (!sinks.encoder_message().empty())
     std::cerr << "bookspin: note: " << sinks.encoder_message() << '\n';

@@ -31,18 +31,24 @@ double widest_line(cairo_t* cr, const std::vector<CaptionLine>& lines, double si
   return width;
 }
 
-}  // namespace
+/// A context for measuring text only (no pixels).
+struct Measure {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
+  cairo_t* cr = cairo_create(surface);
+  ~Measure() {
+    cairo_destroy(cr);
+    cairo_surface_destroy(surface);
+  }
+};
 
-double caption_font_size(cairo_t* cr, const std::vector<CaptionLine>& lines, double font_size,
-                         double max_width) {
+double font_size_within(cairo_t* cr, const std::vector<CaptionLine>& lines, double font_size,
+                        double max_width) {
   const double width = widest_line(cr, lines, font_size);
   if (max_width <= 0 || width + 1.2 * font_size <= max_width) return font_size;
   // The box is (text width + 1.2 font sizes) wide, both proportional to the font size, so
   // one rescale fits (2% spare for hinting; never below 7 px).
   return std::max(7.0, 0.98 * font_size * max_width / (width + 1.2 * font_size));
 }
-
-namespace {
 
 /// Where a caption's box goes and how large its text is (pixels).
 struct CaptionBox {
@@ -53,7 +59,7 @@ CaptionBox caption_box(cairo_t* cr, int image_height, const std::vector<CaptionL
                        const CaptionLayout& layout) {
   CaptionBox box;
   box.size = layout.font_size > 0 ? layout.font_size : std::max(10.0, 0.026 * image_height);
-  box.size = caption_font_size(cr, lines, box.size, layout.max_width);
+  box.size = font_size_within(cr, lines, box.size, layout.max_width);
   box.pad = 0.6 * box.size, box.line_height = 1.35 * box.size;
   box.x = layout.x > 0 ? layout.x : box.pad, box.y = layout.y > 0 ? layout.y : box.pad;
   box.width = widest_line(cr, lines, box.size) + 2 * box.pad;
@@ -79,22 +85,11 @@ void draw_caption_box(cairo_t* cr, const std::vector<CaptionLine>& lines, const 
   }
 }
 
-/// A context for measuring text only (no pixels).
-struct Measure {
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
-  cairo_t* cr = cairo_create(surface);
-  ~Measure() {
-    cairo_destroy(cr);
-    cairo_surface_destroy(surface);
-  }
-};
-
 }  // namespace
 
-void draw_caption(cairo_t* cr, int image_height, const std::vector<CaptionLine>& lines,
-                  const CaptionLayout& layout) {
-  if (lines.empty()) return;
-  draw_caption_box(cr, lines, caption_box(cr, image_height, lines, layout));
+double caption_font_size(const std::vector<CaptionLine>& lines, double font_size,
+                         double max_width) {
+  return font_size_within(Measure().cr, lines, font_size, max_width);
 }
 
 void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines,

@@ -1,9 +1,9 @@
 #pragma once
 // Text captions composited over a rendered frame (cairo, DejaVu Sans through fontconfig).
+#include <cairo.h>
+
 #include <string>
 #include <vector>
-
-#include <cairo.h>
 
 #include "common/rgba_image.hpp"
 
@@ -24,23 +24,18 @@ void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines);
 /// Where and how large a caption is drawn (pixels); zeros keep the defaults of
 /// draw_caption(image, lines).
 struct CaptionLayout {
-  double x = 0, y = 0;     ///< top-left corner of the box (0, 0: a margin of 0.6 font sizes)
-  double font_size = 0;    ///< 0: 2.6% of the image height, at least 10
-  double max_width = 0;    ///< widest box allowed; the font shrinks to fit (0: no limit)
+  double x = 0, y = 0;   ///< top-left corner of the box (0, 0: a margin of 0.6 font sizes)
+  double font_size = 0;  ///< 0: 2.6% of the image height, at least 10
+  double max_width = 0;  ///< widest box allowed; the font shrinks to fit (0: no limit)
 };
 
 /// Same, placed and sized by `layout`.
-void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines, const CaptionLayout& layout);
+void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines,
+                  const CaptionLayout& layout);
 
 /// The font size (pixels) draw_caption would use for `lines` at `font_size` within a box of
 /// at most `max_width` pixels, so several captions can share the smallest.
-double caption_font_size(cairo_t* cr, const std::vector<CaptionLine>& lines, double font_size,
-                         double max_width);
-
-/// Draws the caption onto a cairo context whose surface is `image_height` pixels tall, so that
-/// several captions (one per comparison tile) share one composite.
-void draw_caption(cairo_t* cr, int image_height, const std::vector<CaptionLine>& lines,
-                  const CaptionLayout& layout);
+double caption_font_size(const std::vector<CaptionLine>& lines, double font_size, double max_width);
 
 /// Draws one large centred warning banner near the bottom of `image` (e.g. "diverged at
 /// t = 31.35"), white on red, centred on column `centre_x` (pixels; < 0: the middle).

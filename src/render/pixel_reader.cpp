@@ -10,26 +10,15 @@ namespace bookspin::render {
 
 namespace {
 
-// GL's rows run bottom to top; RgbaImage's run top to bottom.
-void flip_rows(RgbaImage& image, std::vector<std::uint8_t>& scratch) {
-  const std::size_t stride = static_cast<std::size_t>(image.width) * 4;
-  scratch.resize(stride);
-  for (int top = 0, bottom = image.height - 1; top < bottom; ++top, --bottom) {
-    std::memcpy(scratch.data(), image.row(top), stride);
-    std::memcpy(image.row(top), image.row(bottom), stride);
-    std::memcpy(image.row(bottom), scratch.data(), stride);
-  }
-}
-
 void bind_for_reading(const OffscreenTarget& target) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, target.resolved_framebuffer());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
 }
 
-/// A bottom-up GL image as an RgbaImage, flipped while copying: one pass over the pixels,
-/// into `image`'s own buffer when it has the size already, else into a new one without
-/// zero-filling it first.
+/// A bottom-up GL image (GL's rows run bottom to top) as an RgbaImage, flipped while copying: one
+/// pass over the pixels, into `image`'s own buffer when it has the size already, else into a new
+/// one without zero-filling it first.
 void copy_flipped(const std::uint8_t* gl_rows, int width, int height, RgbaImage& image) {
   const std::size_t stride = static_cast<std::size_t>(width) * 4;
   if (image.width == width && image.height == height && image.pixels.size() == stride * height) {
@@ -52,13 +41,12 @@ void copy_flipped(const std::uint8_t* gl_rows, int width, int height, RgbaImage&
 PixelReader::PixelReader(int ring_size) : ring_size_(std::max(2, ring_size)) {}
 
 void PixelReader::read(const OffscreenTarget& target, RgbaImage& image) {
-  if (image.width != target.width() || image.height != target.height())
-    image = RgbaImage(target.width(), target.height());
   bind_for_reading(target);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);  // into client memory, not a ring buffer
-  glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+  gl_rows_.resize(static_cast<std::size_t>(target.width()) * target.height() * 4);
+  glReadPixels(0, 0, target.width(), target.height(), GL_RGBA, GL_UNSIGNED_BYTE, gl_rows_.data());
   check_gl("reading back the frame (glReadPixels)");
-  flip_rows(image, row_buffer_);
+  copy_flipped(gl_rows_.data(), target.width(), target.height(), image);
 }
 
 void PixelReader::prepare(Slot& slot, int width, int height) {

@@ -39,9 +39,9 @@ class PixelReader {
 
   int ring_size_;
   std::vector<Slot> slots_;
-  int next_ = 0;     ///< slot the next start() uses
-  int pending_ = 0;  ///< reads started and not finished
-  std::vector<std::uint8_t> row_buffer_;  ///< scratch for the in-place row flip
+  int next_ = 0;                       ///< slot the next start() uses
+  int pending_ = 0;                    ///< reads started and not finished
+  std::vector<std::uint8_t> gl_rows_;  ///< read()'s bottom-up copy before the flip
 };
 
 }  // namespace bookspin::render

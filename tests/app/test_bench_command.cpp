@@ -9,12 +9,26 @@
 namespace bookspin::test {
 namespace {
 
+struct BenchRun {
+  std::filesystem::path dir;  ///< the -o directory
+  CliResult result;
+  std::string csv;  ///< dir/bench.csv ("" if not written)
+};
+
+/// `bookspin bench fig09 ARGS -o <fresh NAME dir>`.
+BenchRun run_bench(const std::string& name, const std::string& args) {
+  BenchRun run{fresh_dir(name), {}, {}};
+  run.result = run_bookspin("bench " + scene_path("fig09-matrix-unstable-x") + " " + args + " -o " +
+                            run.dir.string());
+  run.csv = read_file(run.dir / "bench.csv");
+  return run;
+}
+
 TEST(BenchCommand, MemorySectionWritesTheCsvWithBothRunsAndTheirRatio) {
-  const auto dir = fresh_dir("bench-memory");
-  const CliResult r = run_bookspin("bench " + scene_path("fig09-matrix-unstable-x") +
-                                   " --only memory --memory-frames 150 -o " + dir.string());
+  const BenchRun run = run_bench("bench-memory", "--only memory --memory-frames 150");
+  const CliResult& r = run.result;
   ASSERT_EQ(r.status, 0) << r.output;
-  const std::string csv = read_file(dir / "bench.csv");
+  const std::string& csv = run.csv;
   EXPECT_EQ(csv.rfind("section,metric,value,unit,note\n", 0), 0u) << csv;
   EXPECT_NE(csv.find("peak RSS, render --no-png 100 frames"), std::string::npos) << csv;
   EXPECT_NE(csv.find("peak RSS, render --no-png 150 frames"), std::string::npos) << csv;
@@ -23,11 +37,9 @@ TEST(BenchCommand, MemorySectionWritesTheCsvWithBothRunsAndTheirRatio) {
 }
 
 TEST(BenchCommand, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
-  const auto dir = fresh_dir("bench-pipeline");
-  const CliResult r = run_bookspin("bench " + scene_path("fig09-matrix-unstable-x") +
-                                   " --only pipeline --frames 2 --rounds 2 -o " + dir.string());
-  ASSERT_EQ(r.status, 0) << r.output;
-  const std::string csv = read_file(dir / "bench.csv");
+  const BenchRun run = run_bench("bench-pipeline", "--only pipeline --frames 2 --rounds 2");
+  ASSERT_EQ(run.result.status, 0) << run.result.output;
+  const std::string& csv = run.csv;
   for (const char* row : {"encoder alone (the floor), 2 frames 1280x720", "render --no-png / floor",
                           "render with PNGs / floor", "render --no-png, 4x anisotropic / floor",
                           "render --no-png, render.msaa = 1 / floor"}) {
@@ -36,7 +48,7 @@ TEST(BenchCommand, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
   EXPECT_NE(csv.find("best of 2 alternated runs"), std::string::npos) << csv;
   EXPECT_EQ(csv.find("physics"), std::string::npos) << "--only pipeline ran other sections";
   // The renders went to a scratch directory that is gone: only the CSV is left here.
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(run.dir),
                           std::filesystem::directory_iterator()),
             1);
 }
