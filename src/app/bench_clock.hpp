@@ -1,6 +1,7 @@
 #pragma once
-// Timing for the physics bench: CPU time of the calling thread, best of several runs, so
-// that other processes on a shared machine disturb the numbers as little as possible.
+// Timing for the bench: CPU time of the calling thread (physics: best of several runs, so
+// that other processes on a shared machine disturb the numbers as little as possible) and
+// of the whole process (pipeline: every thread, the encoder's and the GL driver's too).
 #include <ctime>
 
 namespace bookspin::app {
@@ -8,6 +9,13 @@ namespace bookspin::app {
 inline double thread_cpu_seconds() {
   timespec now{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
+/// CPU seconds used so far by every thread of this process (user + system).
+inline double process_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
   return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 

@@ -10,6 +10,7 @@
 
 #include "app/bench_sections.hpp"
 #include "app/commands.hpp"
+#include "scene/scene.hpp"
 #include "video/atomic_output.hpp"
 
 namespace bookspin::app {
@@ -62,6 +63,10 @@ std::string machine_description() {
 }  // namespace
 
 int bench_command(const BenchOptions& options) {
+  // Checked up front: a bad scene fails with its own message (the memory section's child
+  // renders could only report that they failed), and an oversized run before minutes of work.
+  (void)scene::parse_scene(options.scene_path, {});
+  if (wanted(options, "pipeline")) check_pipeline_memory(options);
   if (!options.out_dir.empty()) std::filesystem::create_directories(options.out_dir);
   ScratchDirectory scratch;
   BenchReport report;

@@ -3,10 +3,14 @@
 // measure exactly what `bookspin render` does.
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "app/bench_clock.hpp"
 #include "app/bench_sections.hpp"
 #include "app/frame_source.hpp"
 #include "app/frame_view.hpp"
@@ -20,9 +24,26 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+/// One timed run: wall time and the CPU time of every thread of this process meanwhile.
+struct Timing {
+  double wall = 1e300, cpu = 0.0;
+  /// Keeps `run` when its wall time is shorter: the best run, and that run's CPU time.
+  void keep_best(const Timing& run) {
+    if (run.wall < wall) *this = run;
+  }
+};
+
+class Stopwatch {
+ public:
+  Timing elapsed() const {
+    return {std::chrono::duration<double>(Clock::now() - wall_start_).count(),
+            process_cpu_seconds() - cpu_start_};
+  }
+
+ private:
+  Clock::time_point wall_start_ = Clock::now();
+  double cpu_start_ = process_cpu_seconds();
+};
 
 std::vector<std::string> size_overrides(int width, int height) {
   return {"render.width=" + std::to_string(width), "render.height=" + std::to_string(height)};
@@ -41,15 +62,15 @@ RenderOptions render_options(const BenchContext& c, const std::string& name, int
   return o;
 }
 
-/// Wall time of a whole render command (start-up, every frame, finishing the files).
-double timed_render(const RenderOptions& options) {
-  const auto start = Clock::now();
+/// Wall and CPU time of a whole render command (start-up, every frame, finishing the files).
+Timing timed_render(const RenderOptions& options) {
+  const Stopwatch stopwatch;
   const int status = render_command(options);
-  const double seconds = seconds_since(start);
+  const Timing timing = stopwatch.elapsed();
   if (status != kExitOk)
     throw std::runtime_error("bench: the render failed (status " + std::to_string(status) + ")");
   std::filesystem::remove_all(options.out_dir);  // leave the disk as the next run found it
-  return seconds;
+  return timing;
 }
 
 scene::Scene pipeline_scene(const BenchContext& c, int width, int height, int frames) {
@@ -75,18 +96,38 @@ std::vector<RgbaImage> prerender(const scene::Scene& scene) {
 /// The floor: the same encoder with the same settings as the render command, fed frames
 /// that are already rendered. Opening the encoder and finishing the file are included, as
 /// they are in the render's time.
-double timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& frames,
+Timing timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& frames,
                       const std::filesystem::path& file, int jobs) {
   const auto& r = scene.render;
   video::EncoderSettings settings{r.width, r.height, r.fps, r.codec, r.crf, r.preset};
   settings.threads = jobs;
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   video::Mp4Encoder encoder(file, settings);
   for (const RgbaImage& frame : frames) encoder.add_frame(frame);
   encoder.finish();
-  const double seconds = seconds_since(start);
+  const Timing timing = stopwatch.elapsed();
   std::filesystem::remove(file);
-  return seconds;
+  return timing;
+}
+
+constexpr int kPipelineWidth = 1280, kPipelineHeight = 720;
+
+/// MemAvailable from /proc/meminfo in bytes; 0 where it cannot be read.
+double available_memory_bytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kib = 0.0;
+  while (meminfo >> key >> kib) {
+    if (key == "MemAvailable:") return kib * 1024.0;
+    meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return 0.0;
+}
+
+std::string gib_text(double bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+  return text;
 }
 
 std::string frames_text(int frames, int width, int height) {
@@ -95,54 +136,98 @@ std::string frames_text(int frames, int width, int height) {
 
 }  // namespace
 
-/// The pipeline's four timings, each the best over the rounds.
+// The floor must encode frames that already exist, so they are held in memory: reading
+// them from disk would slow the floor down and flatter the ratios. A run whose frames do
+// not fit (at most 80% of what is available, leaving room for the encoder and the renders)
+// is refused up front instead of being killed for memory half-way.
+void check_pipeline_memory(const BenchOptions& options) {
+  const double needed = 4.0 * kPipelineWidth * kPipelineHeight * options.frames;
+  const double available = available_memory_bytes();
+  if (available > 0.0 && needed > 0.8 * available) {
+    throw std::invalid_argument(
+        "bench: --frames " + std::to_string(options.frames) + " holds " + gib_text(needed) +
+        " of pre-rendered " + std::to_string(kPipelineWidth) + "x" +
+        std::to_string(kPipelineHeight) + " frames for the encoder floor, more than 80% of the " +
+        gib_text(available) + " available; use fewer --frames (or --only other sections)");
+  }
+}
+
+/// The pipeline's timings, each the best over the rounds.
 struct PipelineTimes {
-  double floor = 1e300, no_png = 1e300, png = 1e300, anisotropic = 1e300, no_msaa = 1e300;
+  Timing floor, no_png, png, anisotropic, no_msaa;
 };
 
-// The four are alternated round by round and each keeps its best (shortest) time: on a
+namespace {
+
+std::string cores_busy(const Timing& t) {
+  char text[64];
+  std::snprintf(text, sizeof text, "all threads; %.2f cores busy on average", t.cpu / t.wall);
+  return text;
+}
+
+/// Where the time goes: with the cores busy in both runs, the wall ratio follows the CPU
+/// ratio, so these rows say how much work the render adds, whatever the machine's load.
+void report_cpu(BenchReport& report, const PipelineTimes& best, const std::string& what) {
+  report.add({"pipeline", "encoder alone (the floor), CPU time, " + what, best.floor.cpu, "s",
+              cores_busy(best.floor)});
+  report.add({"pipeline", "render --no-png, CPU time, " + what, best.no_png.cpu, "s",
+              cores_busy(best.no_png)});
+  report.add(
+      {"pipeline", "render with PNGs, CPU time, " + what, best.png.cpu, "s", cores_busy(best.png)});
+  report.add({"pipeline", "render --no-png / floor, CPU time", best.no_png.cpu / best.floor.cpu,
+              "x", "for comparison: the work the render adds to the encoder's"});
+  report.add({"pipeline", "render with PNGs / floor, CPU time", best.png.cpu / best.floor.cpu, "x",
+              "for comparison: the work the render adds to the encoder's"});
+}
+
+}  // namespace
+
+// The five are alternated round by round and each keeps its best (shortest) time: on a
 // shared 2-core machine one run can be slowed by a neighbour by half; the best of
-// alternated runs compares the four under the same conditions.
+// alternated runs compares them under the same conditions.
 void bench_pipeline(const BenchContext& c) {
   BenchReport& report = *c.report;
   const int frames = c.options.frames, rounds = std::max(1, c.options.rounds);
-  const scene::Scene scene = pipeline_scene(c, 1280, 720, frames);
-  const std::string what = frames_text(frames, 1280, 720);
+  const int w = kPipelineWidth, h = kPipelineHeight;
+  const scene::Scene scene = pipeline_scene(c, w, h, frames);
+  const std::string what = frames_text(frames, w, h);
   const std::vector<RgbaImage> rendered = prerender(scene);
-  RenderOptions anisotropic = render_options(c, "anisotropic", 1280, 720, frames, false);
+  RenderOptions anisotropic = render_options(c, "anisotropic", w, h, frames, false);
   anisotropic.overrides.push_back("render.anisotropy=4");
-  RenderOptions no_msaa = render_options(c, "no-msaa", 1280, 720, frames, false);
+  RenderOptions no_msaa = render_options(c, "no-msaa", w, h, frames, false);
   no_msaa.overrides.push_back("render.msaa=1");
   PipelineTimes best;
   for (int round = 0; round < rounds; ++round) {
-    best.floor = std::min(best.floor,
-                          timed_encoding(scene, rendered, c.scratch / "floor.mp4", c.options.jobs));
-    best.no_png =
-        std::min(best.no_png, timed_render(render_options(c, "no-png", 1280, 720, frames, false)));
-    best.png = std::min(best.png, timed_render(render_options(c, "png", 1280, 720, frames, true)));
-    best.anisotropic = std::min(best.anisotropic, timed_render(anisotropic));
-    best.no_msaa = std::min(best.no_msaa, timed_render(no_msaa));
+    best.floor.keep_best(timed_encoding(scene, rendered, c.scratch / "floor.mp4", c.options.jobs));
+    best.no_png.keep_best(timed_render(render_options(c, "no-png", w, h, frames, false)));
+    best.png.keep_best(timed_render(render_options(c, "png", w, h, frames, true)));
+    best.anisotropic.keep_best(timed_render(anisotropic));
+    best.no_msaa.keep_best(timed_render(no_msaa));
   }
   const std::string of = ", best of " + std::to_string(rounds) + " alternated runs";
-  report.add({"pipeline", "encoder alone (the floor), " + what, best.floor, "s",
+  report.add({"pipeline", "encoder alone (the floor), " + what, best.floor.wall, "s",
               scene.render.codec + " crf " + std::to_string(scene.render.crf) + " preset " +
                   scene.render.preset + ", frames rendered beforehand" + of});
-  report.add(
-      {"pipeline", "render --no-png, " + what, best.no_png, "s", "in-process render command" + of});
-  report.add({"pipeline", "render with PNGs, " + what, best.png, "s",
+  report.add({"pipeline", "render --no-png, " + what, best.no_png.wall, "s",
+              "in-process render command" + of});
+  report.add({"pipeline", "render with PNGs, " + what, best.png.wall, "s",
               "PNG zlib level " + std::to_string(scene.render.png_compression) + of});
-  report.add({"pipeline", "render --no-png, 4x anisotropic filtering, " + what, best.anisotropic,
-              "s", "forced; on a software rasterizer the default is trilinear" + of});
-  report.add({"pipeline", "render --no-png, render.msaa = 1, " + what, best.no_msaa, "s",
+  report.add({"pipeline", "render --no-png, 4x anisotropic filtering, " + what,
+              best.anisotropic.wall, "s",
+              "forced; on a software rasterizer the default is trilinear" + of});
+  report.add({"pipeline", "render --no-png, render.msaa = 1, " + what, best.no_msaa.wall, "s",
               "forced; no anti-aliasing" + of});
-  report.add({"pipeline", "render --no-png / floor", best.no_png / best.floor, "x",
-              at_most(best.no_png / best.floor, 1.15)});
-  report.add({"pipeline", "render with PNGs / floor", best.png / best.floor, "x",
-              at_most(best.png / best.floor, 1.5)});
-  report.add({"pipeline", "render --no-png, 4x anisotropic / floor", best.anisotropic / best.floor,
-              "x", "for comparison: what anisotropic filtering costs on this GL"});
-  report.add({"pipeline", "render --no-png, render.msaa = 1 / floor", best.no_msaa / best.floor,
-              "x", "for comparison: what 4x MSAA costs on this GL"});
+  report.add({"pipeline", "render --no-png / floor", best.no_png.wall / best.floor.wall, "x",
+              at_most(best.no_png.wall / best.floor.wall, 1.15)});
+  report.add({"pipeline", "render with PNGs / floor", best.png.wall / best.floor.wall, "x",
+              at_most(best.png.wall / best.floor.wall, 1.5)});
+  report.add({"pipeline", "render --no-png, 4x anisotropic / floor",
+              best.anisotropic.wall / best.floor.wall, "x",
+              "for comparison: what anisotropic filtering costs on this GL"});
+  report.add({"pipeline", "render --no-png, render.msaa = 1 / floor",
+              best.no_msaa.wall / best.floor.wall, "x",
+              "for comparison: what 4x MSAA costs on this GL"});
+  report_cpu(report, best, what);
 }
 
 void bench_resolution(const BenchContext& c) {
@@ -157,7 +242,7 @@ void bench_resolution(const BenchContext& c) {
                         {3840, 2160, std::max(2, n / 10)}};
   for (const Size& s : sizes) {
     const double seconds =
-        timed_render(render_options(c, "resolution", s.width, s.height, s.frames, false));
+        timed_render(render_options(c, "resolution", s.width, s.height, s.frames, false)).wall;
     c.report->add({"resolution", "render --no-png, " + frames_text(s.frames, s.width, s.height),
                    s.frames / seconds, "frames/s", "whole command, start-up included"});
   }

@@ -13,6 +13,11 @@ struct BenchContext {
   BenchReport* report = nullptr;
 };
 
+/// Throws std::invalid_argument when the pipeline section's pre-rendered frames (1280×720
+/// RGBA, `options.frames` of them, held in memory for the encoder floor) would not fit in
+/// the memory this machine has available (MemAvailable in /proc/meminfo). Checked before
+/// any section runs, so a bench that cannot finish stops at once.
+void check_pipeline_memory(const BenchOptions& options);
 /// render --no-png and with PNGs at 1280×720 against encoding the same frames alone.
 void bench_pipeline(const BenchContext& context);
 /// Frames per second of render --no-png from 640×360 to 3840×2160.

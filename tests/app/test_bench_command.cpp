@@ -2,7 +2,10 @@
 // the numbers depend on the machine; only that they are measured and written.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <fstream>
 #include <iterator>
+#include <thread>
 
 #include "cli_runner.hpp"
 
@@ -22,6 +25,30 @@ BenchRun run_bench(const std::string& name, const std::string& args) {
                             run.dir.string());
   run.csv = read_file(run.dir / "bench.csv");
   return run;
+}
+
+/// The value column of the pipeline CSV row whose metric starts with `metric`; NaN if there
+/// is none. Metrics holding a comma are quoted (and none of these holds a quote).
+double csv_value(const std::string& csv, const std::string& metric) {
+  for (const std::string& field : {"\"" + metric, metric}) {
+    const auto at = csv.find("\npipeline," + field);
+    if (at == std::string::npos) continue;
+    const auto metric_start = at + std::string("\npipeline,").size();
+    const auto metric_end =
+        field[0] == '"' ? csv.find("\",", metric_start + 1) + 1 : csv.find(',', metric_start);
+    return std::stod(csv.substr(metric_end + 1));
+  }
+  return std::nan("");
+}
+
+/// MemAvailable in GiB (0 where /proc/meminfo cannot be read).
+double available_gib() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kib = 0.0;
+  while (meminfo >> key >> kib)
+    if (key == "MemAvailable:") return kib / (1024.0 * 1024.0);
+  return 0.0;
 }
 
 TEST(BenchCommand, MemorySectionWritesTheCsvWithBothRunsAndTheirRatio) {
@@ -47,10 +74,44 @@ TEST(BenchCommand, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
   }
   EXPECT_NE(csv.find("best of 2 alternated runs"), std::string::npos) << csv;
   EXPECT_EQ(csv.find("physics"), std::string::npos) << "--only pipeline ran other sections";
+  // CPU time counts every thread: more than nothing, at most all cores for the whole run
+  // (10% for the two clocks being read at slightly different instants).
+  const double cores = std::thread::hardware_concurrency();
+  for (const char* run : {"encoder alone (the floor)", "render --no-png", "render with PNGs"}) {
+    const double wall = csv_value(csv, std::string(run) + ", 2 frames");
+    const double cpu = csv_value(csv, std::string(run) + ", CPU time, 2 frames");
+    EXPECT_GT(cpu, 0.0) << run << "\n" << csv;
+    EXPECT_LE(cpu, 1.1 * cores * wall) << run << "\n" << csv;
+  }
+  EXPECT_NEAR(csv_value(csv, "render --no-png / floor, CPU time"),
+              csv_value(csv, "render --no-png, CPU time") /
+                  csv_value(csv, "encoder alone (the floor), CPU time"),
+              1e-3 * csv_value(csv, "render --no-png / floor, CPU time"))
+      << csv;
   // The renders went to a scratch directory that is gone: only the CSV is left here.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(run.dir),
                           std::filesystem::directory_iterator()),
             1);
+}
+
+TEST(BenchCommand, RefusesUpFrontAPipelineWhoseFramesWouldNotFitInMemory) {
+  // 100,000 frames of 1280x720 RGBA are 343 GiB.
+  if (available_gib() > 400.0) GTEST_SKIP() << "this machine could hold them";
+  const BenchRun run = run_bench("bench-oversized", "--frames 100000");
+  EXPECT_EQ(run.result.status, 2) << run.result.output;
+  EXPECT_NE(run.result.output.find("--frames 100000 holds 343.3 GiB"), std::string::npos)
+      << run.result.output;
+  EXPECT_EQ(run.result.output.find("peak RSS"), std::string::npos)
+      << "a section ran before the check";
+  EXPECT_TRUE(run.csv.empty());
+}
+
+TEST(BenchCommand, BadSceneStopsTheBenchWithTheScenesOwnMessage) {
+  // The memory section renders in child processes, which could only say that they failed.
+  const CliResult r = run_bookspin("bench no-such-scene.toml --only memory");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("no-such-scene.toml: scene file not found"), std::string::npos)
+      << r.output;
 }
 
 TEST(BenchCommand, UnknownSectionIsAUsageError) {
