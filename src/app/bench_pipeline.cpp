@@ -154,7 +154,7 @@ void check_pipeline_memory(const BenchOptions& options) {
 
 /// The pipeline's timings, each the best over the rounds.
 struct PipelineTimes {
-  Timing floor, no_png, png, anisotropic, no_msaa;
+  Timing floor, no_png, png, anisotropic, no_msaa, start_up;
 };
 
 namespace {
@@ -174,6 +174,8 @@ void report_cpu(BenchReport& report, const PipelineTimes& best, const std::strin
               cores_busy(best.no_png)});
   report.add(
       {"pipeline", "render with PNGs, CPU time, " + what, best.png.cpu, "s", cores_busy(best.png)});
+  report.add({"pipeline", "render --no-png start-up (2 frames), CPU time", best.start_up.cpu, "s",
+              "EGL, textures, shader compilation, encoder set-up; " + cores_busy(best.start_up)});
   report.add({"pipeline", "render --no-png / floor, CPU time", best.no_png.cpu / best.floor.cpu,
               "x", "for comparison: the work the render adds to the encoder's"});
   report.add({"pipeline", "render with PNGs / floor, CPU time", best.png.cpu / best.floor.cpu, "x",
@@ -203,6 +205,7 @@ void bench_pipeline(const BenchContext& c) {
     best.png.keep_best(timed_render(render_options(c, "png", w, h, frames, true)));
     best.anisotropic.keep_best(timed_render(anisotropic));
     best.no_msaa.keep_best(timed_render(no_msaa));
+    best.start_up.keep_best(timed_render(render_options(c, "start-up", w, h, 2, false)));
   }
   const std::string of = ", best of " + std::to_string(rounds) + " alternated runs";
   report.add({"pipeline", "encoder alone (the floor), " + what, best.floor.wall, "s",

@@ -18,6 +18,12 @@ CanvasRegion clipped(CanvasRegion r, int image_width, int image_height) {
 
 }  // namespace
 
+void select_overlay_font(cairo_t* cr, bool bold, double size) {
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+}
+
 CanvasRegion region_around(double x, double y, double width, double height, double margin,
                            int image_width, int image_height) {
   const double x0 = std::floor(x - margin), y0 = std::floor(y - margin);

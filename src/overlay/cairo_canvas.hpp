@@ -17,6 +17,10 @@ struct CanvasRegion {
 CanvasRegion region_around(double x, double y, double width, double height, double margin,
                            int image_width, int image_height);
 
+/// Selects the one typeface of every overlay (DejaVu Sans, from Debian's fonts-dejavu-core;
+/// fontconfig substitutes where it is missing), bold or regular, `size` pixels high.
+void select_overlay_font(cairo_t* cr, bool bold, double size);
+
 /// Draw on `cr()` in image coordinates, then `composite_onto(image)` blends what was drawn
 /// over the image (source-over, cairo's premultiplied native-endian ARGB converted to RGBA
 /// bytes). A canvas over a region holds and blends only that region's pixels (a caption or

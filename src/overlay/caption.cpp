@@ -10,12 +10,6 @@ namespace {
 
 double font_size_for(const RgbaImage& image) { return std::max(10.0, 0.026 * image.height); }
 
-void select_font(cairo_t* cr, bool bold, double size) {
-  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size);
-}
-
 double text_width(cairo_t* cr, const std::string& text) {
   cairo_text_extents_t extents;
   cairo_text_extents(cr, text.c_str(), &extents);
@@ -25,7 +19,7 @@ double text_width(cairo_t* cr, const std::string& text) {
 double widest_line(cairo_t* cr, const std::vector<CaptionLine>& lines, double size) {
   double width = 0.0;
   for (const auto& line : lines) {
-    select_font(cr, line.bold, size);
+    select_overlay_font(cr, line.bold, size);
     width = std::max(width, text_width(cr, line.text));
   }
   return width;
@@ -73,7 +67,7 @@ void draw_caption_box(cairo_t* cr, const std::vector<CaptionLine>& lines, const 
   cairo_fill(cr);
   double baseline = box.y + box.pad / 2 + box.size;
   for (const auto& line : lines) {
-    select_font(cr, line.bold, box.size);
+    select_overlay_font(cr, line.bold, box.size);
     if (line.style == CaptionStyle::warning) {
       cairo_set_source_rgb(cr, 1.0, 0.45, 0.35);
     } else {
@@ -113,13 +107,13 @@ void draw_banner(RgbaImage& image, const std::string& text, double centre_x) {
   cairo_t* m = measure.cr;
   if (centre_x < 0) centre_x = 0.5 * image.width;
   double size = 1.8 * font_size_for(image);
-  select_font(m, true, size);
+  select_overlay_font(m, true, size);
   // Shrink to fit small frames: the banner, centred on centre_x, must stay in the frame.
   const double room = 2.0 * std::min(centre_x, image.width - centre_x);
   const double fit = 0.9 * room / std::max(1.0, text_width(m, text) + size);
   if (fit < 1.0) {
     size *= fit;
-    select_font(m, true, size);
+    select_overlay_font(m, true, size);
   }
   const double width = text_width(m, text), pad = 0.5 * size;
   const double x = centre_x - 0.5 * width, y = image.height - 2.2 * size;
@@ -132,7 +126,7 @@ void draw_banner(RgbaImage& image, const std::string& text, double centre_x) {
   cairo_set_source_rgba(cr, 0.75, 0.08, 0.06, 0.88);
   cairo_fill(cr);
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
-  select_font(cr, true, size);
+  select_overlay_font(cr, true, size);
   cairo_move_to(cr, x, y);
   cairo_show_text(cr, text.c_str());
   canvas.composite_onto(image);

@@ -371,9 +371,9 @@ void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, const Ar
   text_at(cr, spec.y_label, 0, 0, 0.5, 0);
   cairo_restore(cr);
   if (!spec.title.empty()) {
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    select_overlay_font(cr, true, a.font);
     text_at(cr, spec.title, 0.5 * (a.x0 + a.x1), y + 1.3 * a.font, 0.5, 0);
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    select_overlay_font(cr, false, a.font);
   }
   if (!spec.legend || spec.series.empty()) return;
   if (spec.legend_placement == LegendPlacement::right) {
@@ -391,8 +391,7 @@ double font_for(double height) { return std::clamp(height / 22.0, 9.0, 18.0); }
 double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec) {
   const double font = font_for(height);
   cairo_save(cr);
-  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, font);
+  select_overlay_font(cr, false, font);
   const double left = left_margin(cr, spec, fit_y(spec), font);
   cairo_restore(cr);
   return left;
@@ -412,8 +411,7 @@ void draw_plot(cairo_t* cr, double x, double y, double width, double height, con
     cairo_set_source_rgba(cr, 1, 1, 1, spec.background_alpha);
     cairo_fill(cr);
   }
-  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, font);
+  select_overlay_font(cr, false, font);
   const Axis ax = fit_x(spec), ay = fit_y(spec);
   const Area area = layout(cr, x, y, width, height, spec, ay, font);
   draw_grid(cr, ax, ay, area);

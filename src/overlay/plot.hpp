@@ -1,12 +1,12 @@
 #pragma once
 // Line plots drawn with cairo: the accuracy plot (log-log), the static diagnostics plots
 // (`bookspin plot`) and the live panel composited over clips.
+#include <cairo.h>
+
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <cairo.h>
 
 #include "common/rgba_image.hpp"
 

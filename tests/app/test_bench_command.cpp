@@ -83,6 +83,7 @@ TEST(BenchCommand, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
     EXPECT_GT(cpu, 0.0) << run << "\n" << csv;
     EXPECT_LE(cpu, 1.1 * cores * wall) << run << "\n" << csv;
   }
+  EXPECT_GT(csv_value(csv, "render --no-png start-up (2 frames), CPU time"), 0.0) << csv;
   EXPECT_NEAR(csv_value(csv, "render --no-png / floor, CPU time"),
               csv_value(csv, "render --no-png, CPU time") /
                   csv_value(csv, "encoder alone (the floor), CPU time"),
