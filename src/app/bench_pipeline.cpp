@@ -14,6 +14,7 @@
 #include "app/bench_sections.hpp"
 #include "app/frame_source.hpp"
 #include "app/frame_view.hpp"
+#include "app/render_setup.hpp"
 #include "app/still.hpp"
 #include "scene/scene.hpp"
 #include "video/mp4_encoder.hpp"
@@ -98,11 +99,8 @@ std::vector<RgbaImage> prerender(const scene::Scene& scene) {
 /// they are in the render's time.
 Timing timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& frames,
                       const std::filesystem::path& file, int jobs) {
-  const auto& r = scene.render;
-  video::EncoderSettings settings{r.width, r.height, r.fps, r.codec, r.crf, r.preset};
-  settings.threads = jobs;
   const Stopwatch stopwatch;
-  video::Mp4Encoder encoder(file, settings);
+  video::Mp4Encoder encoder(file, encoder_settings(scene, jobs));
   for (const RgbaImage& frame : frames) encoder.add_frame(frame);
   encoder.finish();
   const Timing timing = stopwatch.elapsed();
@@ -152,12 +150,12 @@ void check_pipeline_memory(const BenchOptions& options) {
   }
 }
 
+namespace {
+
 /// The pipeline's timings, each the best over the rounds.
 struct PipelineTimes {
   Timing floor, no_png, png, anisotropic, no_msaa, start_up;
 };
-
-namespace {
 
 std::string cores_busy(const Timing& t) {
   char text[64];
@@ -165,34 +163,61 @@ std::string cores_busy(const Timing& t) {
   return text;
 }
 
+/// The wall times and their ratios to the floor, the targets among them.
+void report_wall(BenchReport& report, const PipelineTimes& best, const scene::Scene& scene,
+                 const std::string& what, int rounds) {
+  const std::string of = ", best of " + std::to_string(rounds) + " alternated runs";
+  const auto row = [&](const std::string& metric, const Timing& t, const std::string& note) {
+    report.add({"pipeline", metric + ", " + what, t.wall, "s", note + of});
+  };
+  const auto ratio = [&](const std::string& metric, const Timing& t, const std::string& note) {
+    report.add({"pipeline", metric + " / floor", t.wall / best.floor.wall, "x", note});
+  };
+  const scene::RenderOptions& r = scene.render;
+  row("encoder alone (the floor)", best.floor,
+      r.codec + " crf " + std::to_string(r.crf) + " preset " + r.preset +
+          ", frames rendered beforehand");
+  row("render --no-png", best.no_png, "in-process render command");
+  row("render with PNGs", best.png, "PNG zlib level " + std::to_string(r.png_compression));
+  row("render --no-png, 4x anisotropic filtering", best.anisotropic,
+      "forced; on a software rasterizer the default is trilinear");
+  row("render --no-png, render.msaa = 1", best.no_msaa, "forced; no anti-aliasing");
+  ratio("render --no-png", best.no_png, at_most(best.no_png.wall / best.floor.wall, 1.15));
+  ratio("render with PNGs", best.png, at_most(best.png.wall / best.floor.wall, 1.5));
+  ratio("render --no-png, 4x anisotropic", best.anisotropic,
+        "for comparison: what anisotropic filtering costs on this GL");
+  ratio("render --no-png, render.msaa = 1", best.no_msaa,
+        "for comparison: what 4x MSAA costs on this GL");
+}
+
 /// Where the time goes: with the cores busy in both runs, the wall ratio follows the CPU
 /// ratio, so these rows say how much work the render adds, whatever the machine's load.
 void report_cpu(BenchReport& report, const PipelineTimes& best, const std::string& what) {
-  report.add({"pipeline", "encoder alone (the floor), CPU time, " + what, best.floor.cpu, "s",
-              cores_busy(best.floor)});
-  report.add({"pipeline", "render --no-png, CPU time, " + what, best.no_png.cpu, "s",
-              cores_busy(best.no_png)});
-  report.add(
-      {"pipeline", "render with PNGs, CPU time, " + what, best.png.cpu, "s", cores_busy(best.png)});
-  report.add({"pipeline", "render --no-png start-up (2 frames), CPU time", best.start_up.cpu, "s",
-              "EGL, textures, shader compilation, encoder set-up; " + cores_busy(best.start_up)});
-  report.add({"pipeline", "render --no-png / floor, CPU time", best.no_png.cpu / best.floor.cpu,
-              "x", "for comparison: the work the render adds to the encoder's"});
-  report.add({"pipeline", "render with PNGs / floor, CPU time", best.png.cpu / best.floor.cpu, "x",
-              "for comparison: the work the render adds to the encoder's"});
+  const auto row = [&](const std::string& metric, const Timing& t, const std::string& note) {
+    report.add({"pipeline", metric, t.cpu, "s", note + cores_busy(t)});
+  };
+  const auto ratio = [&](const std::string& metric, const Timing& t) {
+    report.add({"pipeline", metric + " / floor, CPU time", t.cpu / best.floor.cpu, "x",
+                "for comparison: the work the render adds to the encoder's"});
+  };
+  row("encoder alone (the floor), CPU time, " + what, best.floor, "");
+  row("render --no-png, CPU time, " + what, best.no_png, "");
+  row("render with PNGs, CPU time, " + what, best.png, "");
+  row("render --no-png start-up (2 frames), CPU time", best.start_up,
+      "EGL, textures, shader compilation, encoder set-up; ");
+  ratio("render --no-png", best.no_png);
+  ratio("render with PNGs", best.png);
 }
 
 }  // namespace
 
-// The five are alternated round by round and each keeps its best (shortest) time: on a
+// The runs are alternated round by round and each keeps its best (shortest) time: on a
 // shared 2-core machine one run can be slowed by a neighbour by half; the best of
 // alternated runs compares them under the same conditions.
 void bench_pipeline(const BenchContext& c) {
-  BenchReport& report = *c.report;
   const int frames = c.options.frames, rounds = std::max(1, c.options.rounds);
   const int w = kPipelineWidth, h = kPipelineHeight;
   const scene::Scene scene = pipeline_scene(c, w, h, frames);
-  const std::string what = frames_text(frames, w, h);
   const std::vector<RgbaImage> rendered = prerender(scene);
   RenderOptions anisotropic = render_options(c, "anisotropic", w, h, frames, false);
   anisotropic.overrides.push_back("render.anisotropy=4");
@@ -207,30 +232,9 @@ void bench_pipeline(const BenchContext& c) {
     best.no_msaa.keep_best(timed_render(no_msaa));
     best.start_up.keep_best(timed_render(render_options(c, "start-up", w, h, 2, false)));
   }
-  const std::string of = ", best of " + std::to_string(rounds) + " alternated runs";
-  report.add({"pipeline", "encoder alone (the floor), " + what, best.floor.wall, "s",
-              scene.render.codec + " crf " + std::to_string(scene.render.crf) + " preset " +
-                  scene.render.preset + ", frames rendered beforehand" + of});
-  report.add({"pipeline", "render --no-png, " + what, best.no_png.wall, "s",
-              "in-process render command" + of});
-  report.add({"pipeline", "render with PNGs, " + what, best.png.wall, "s",
-              "PNG zlib level " + std::to_string(scene.render.png_compression) + of});
-  report.add({"pipeline", "render --no-png, 4x anisotropic filtering, " + what,
-              best.anisotropic.wall, "s",
-              "forced; on a software rasterizer the default is trilinear" + of});
-  report.add({"pipeline", "render --no-png, render.msaa = 1, " + what, best.no_msaa.wall, "s",
-              "forced; no anti-aliasing" + of});
-  report.add({"pipeline", "render --no-png / floor", best.no_png.wall / best.floor.wall, "x",
-              at_most(best.no_png.wall / best.floor.wall, 1.15)});
-  report.add({"pipeline", "render with PNGs / floor", best.png.wall / best.floor.wall, "x",
-              at_most(best.png.wall / best.floor.wall, 1.5)});
-  report.add({"pipeline", "render --no-png, 4x anisotropic / floor",
-              best.anisotropic.wall / best.floor.wall, "x",
-              "for comparison: what anisotropic filtering costs on this GL"});
-  report.add({"pipeline", "render --no-png, render.msaa = 1 / floor",
-              best.no_msaa.wall / best.floor.wall, "x",
-              "for comparison: what 4x MSAA costs on this GL"});
-  report_cpu(report, best, what);
+  const std::string what = frames_text(frames, w, h);
+  report_wall(*c.report, best, scene, what, rounds);
+  report_cpu(*c.report, best, what);
 }
 
 void bench_resolution(const BenchContext& c) {

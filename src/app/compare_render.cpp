@@ -61,8 +61,7 @@ std::filesystem::path csv_path(const std::filesystem::path& out, const scene::Sc
 
 void draw_header(cairo_t* cr, const PixelRect& strip, const std::string& title, double t) {
   const double font = 0.5 * strip.height;
-  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-  cairo_set_font_size(cr, font);
+  overlay::select_overlay_font(cr, true, font);
   cairo_set_source_rgb(cr, 0.95, 0.95, 0.92);
   const double baseline = strip.y + 0.5 * strip.height + 0.36 * font;
   cairo_move_to(cr, 0.6 * font, baseline);

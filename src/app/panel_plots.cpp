@@ -147,9 +147,7 @@ RgbaImage plot_sheet(const std::vector<std::string>& header,
   const double font = std::max(10.0, 0.024 * height);
   double y = 0.4 * font;
   for (std::size_t i = 0; i < header.size(); ++i) {
-    cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                           i == 0 ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, i == 0 ? font : 0.8 * font);
+    overlay::select_overlay_font(cr, i == 0, i == 0 ? font : 0.8 * font);
     y += 1.35 * (i == 0 ? font : 0.8 * font);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     cairo_move_to(cr, font, y);

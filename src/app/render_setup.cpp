@@ -10,6 +10,13 @@
 
 namespace bookspin::app {
 
+video::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs) {
+  const scene::RenderOptions& r = scene.render;
+  video::EncoderSettings settings{r.width, r.height, r.fps, r.codec, r.crf, r.preset};
+  settings.threads = jobs;
+  return settings;
+}
+
 SinkOptions sink_options(const scene::Scene& scene, const RenderOptions& options) {
   SinkOptions s;
   s.write_png = !options.no_png;
@@ -18,9 +25,7 @@ SinkOptions sink_options(const scene::Scene& scene, const RenderOptions& options
   const int jobs =
       options.jobs > 0 ? options.jobs : static_cast<int>(std::thread::hardware_concurrency());
   s.png_workers = std::max(1, jobs - 1);
-  s.encoder = {scene.render.width, scene.render.height, scene.render.fps,
-               scene.render.codec, scene.render.crf,    scene.render.preset};
-  s.encoder.threads = options.jobs;  // 0: the encoder's own choice for all cores
+  s.encoder = encoder_settings(scene, options.jobs);
   return s;
 }
 

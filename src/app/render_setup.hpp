@@ -8,6 +8,10 @@
 
 namespace bookspin::app {
 
+/// The encoder settings of a render of `scene` (render.width, height, fps, codec, crf,
+/// preset) with `jobs` threads (0: the encoder's own choice for all cores).
+video::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs);
+
 /// Sink settings from the scene's render.* keys and the command line (--no-png, --jobs,
 /// --png-compression).
 SinkOptions sink_options(const scene::Scene& scene, const RenderOptions& options);

@@ -151,7 +151,7 @@ class ColumnThinner {
   Point first_{}, last_{}, low_{}, high_{};
 };
 
-/// The series' usable points mapped to pixels, thinned per pixel column where x never
+/// The series' usable points mapped to pixels, thinned per quarter-pixel column where x never
 /// decreases (a time series); other data are kept point for point.
 Polyline series_polyline(const Series& s, const Axis& ax, const Axis& ay, double x0, double x1,
                          double y0, double y1) {
