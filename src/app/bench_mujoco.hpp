@@ -9,10 +9,10 @@
 namespace bookspin::app {
 
 struct MujocoSetup {
-  physics::Book book;            ///< box half-sizes size/2, mass
-  Eigen::Vector3d omega0_body;   ///< initial angular velocity, body frame (= world at t = 0)
+  physics::Book book;           ///< box half-sizes size/2, mass
+  Eigen::Vector3d omega0_body;  ///< initial angular velocity, body frame (= world at t = 0)
   double dt = 0.0;
-  bool rk4 = false;              ///< integrator="RK4" instead of "Euler"
+  bool rk4 = false;  ///< integrator="RK4" instead of "Euler"
 };
 
 /// Empty when MuJoCo is linked in, else the reason its rows are skipped.

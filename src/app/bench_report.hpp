@@ -11,8 +11,8 @@ struct BenchRow {
   std::string section;  ///< pipeline, resolution, physics, memory
   std::string metric;   ///< what was measured
   double value = 0.0;
-  std::string unit;     ///< s, frames/s, ns/step, rad, MiB, x (a ratio)
-  std::string note;     ///< a target and whether it is met, or how it was measured
+  std::string unit;  ///< s, frames/s, ns/step, rad, MiB, x (a ratio)
+  std::string note;  ///< a target and whether it is met, or how it was measured
 };
 
 class BenchReport {

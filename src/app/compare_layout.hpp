@@ -10,11 +10,11 @@
 namespace bookspin::app {
 
 struct CompareLayout {
-  PixelRect header;                ///< the title strip across the top
+  PixelRect header;  ///< the title strip across the top
   int columns = 1, rows = 1;
   int tile_width = 0, tile_height = 0;  ///< pixels, even (the renderer needs even sizes)
-  std::vector<PixelRect> tiles;    ///< one per panel, in row-major order
-  std::optional<PixelRect> plots;  ///< the plot column, with render.panel
+  std::vector<PixelRect> tiles;         ///< one per panel, in row-major order
+  std::optional<PixelRect> plots;       ///< the plot column, with render.panel
 };
 
 /// The layout for `panels` tiles in a width×height frame. The grid is the one whose tiles

@@ -9,13 +9,13 @@ namespace bookspin::app {
 
 /// Per-frame samples of one run, in frame order.
 struct DiagnosticsHistory {
-  std::vector<double> t;                           ///< time units
-  std::vector<double> omega_x, omega_y, omega_z;   ///< body frame, rad per time unit
-  std::vector<double> energy_drift;                ///< E/E0 − 1, dimensionless
-  std::vector<double> strain_max;                  ///< max |len/rest − 1|
-  std::vector<double> quaternion_deviation;        ///< |q| − 1
-  std::vector<double> orthogonality_error;         ///< ‖RᵀR − I‖_F
-  double energy0 = 0.0;                            ///< E of the first sample
+  std::vector<double> t;                          ///< time units
+  std::vector<double> omega_x, omega_y, omega_z;  ///< body frame, rad per time unit
+  std::vector<double> energy_drift;               ///< E/E0 − 1, dimensionless
+  std::vector<double> strain_max;                 ///< max |len/rest − 1|
+  std::vector<double> quaternion_deviation;       ///< |q| − 1
+  std::vector<double> orthogonality_error;        ///< ‖RᵀR − I‖_F
+  double energy0 = 0.0;                           ///< E of the first sample
 
   /// Appends one frame's sample; the first sample fixes E0.
   void add(const physics::Diagnostics& d);

@@ -12,9 +12,9 @@
 namespace bookspin::app {
 
 struct LoopResult {
-  int frames = 0;                    ///< frames handed to the sinks
+  int frames = 0;  ///< frames handed to the sinks
   std::optional<double> diverged_at;
-  int signal = 0;                    ///< the interrupting signal, 0 if none
+  int signal = 0;  ///< the interrupting signal, 0 if none
 };
 
 /// Simulates, renders, decorates and queues every frame of `scene` in order. Each frame is

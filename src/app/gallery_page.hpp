@@ -8,12 +8,12 @@ namespace bookspin::app {
 
 /// One clip on the page. Paths are relative to the page's folder; empty: not there.
 struct GalleryEntry {
-  std::string name;         ///< scene.name
-  std::string title;        ///< scene.title (plain text; escaped on the page)
-  std::string description;  ///< scene.description
-  std::string video;        ///< "<name>.mp4"
-  std::string poster;       ///< a frame PNG shown before the clip plays
-  std::string plot;         ///< "<name>-plot.png"
+  std::string name;               ///< scene.name
+  std::string title;              ///< scene.title (plain text; escaped on the page)
+  std::string description;        ///< scene.description
+  std::string video;              ///< "<name>.mp4"
+  std::string poster;             ///< a frame PNG shown before the clip plays
+  std::string plot;               ///< "<name>-plot.png"
   std::vector<std::string> csvs;  ///< diagnostics CSVs
 };
 

@@ -32,7 +32,8 @@ std::vector<overlay::PlotSpec> panel_plots(const std::vector<PanelRun>& runs, do
 PixelRect panel_rect(int width, int height);
 
 /// Draws the plots stacked in `rect` of `image`, on a light translucent background.
-void draw_panel(RgbaImage& image, const PixelRect& rect, const std::vector<overlay::PlotSpec>& plots);
+void draw_panel(RgbaImage& image, const PixelRect& rect,
+                const std::vector<overlay::PlotSpec>& plots);
 
 /// The runs of a single scene, for panel_plots.
 std::vector<PanelRun> single_run(const scene::Scene& scene, const DiagnosticsHistory& history);

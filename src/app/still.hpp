@@ -31,7 +31,8 @@ ShownFrame simulate_to(const scene::Scene& scene, int index);
 
 /// Renders `frame` with `renderer` (made from render_settings_for(scene)) and draws the
 /// caption, plus the "diverged at" banner once the simulation has diverged.
-RgbaImage render_frame(const scene::Scene& scene, render::Renderer& renderer, const ShownFrame& frame);
+RgbaImage render_frame(const scene::Scene& scene, render::Renderer& renderer,
+                       const ShownFrame& frame);
 
 /// Video frame `index` of `scene`, pixel for pixel what `bookspin render` writes for it.
 RgbaImage render_still(const scene::Scene& scene, render::Renderer& renderer, int index);
