@@ -25,7 +25,7 @@ render: build
 # Pipeline against the encoder alone, resolutions, physics against MuJoCo, memory (README,
 # "Performance"): a table on stdout and out/bench.csv. Quiet machine, a few minutes.
 bench: build
-	$(BUILD)/bookspin bench -o out
+	$(BUILD)/bookspin-bench -o out
 
 # Rewrites tests/golden/ from the current build (on llvmpipe, the reference) and prints, for
 # each golden, whether it is new, unchanged or changed (PSNR, share of differing pixels).

@@ -1,5 +1,5 @@
 #pragma once
-// How far each model × integrator is from the exact motion (issue 5). The door of
+// How far each model × integrator is from the exact motion (docs/physics.md §8, §10). The door of
 // src/analysis: pure computation on top of src/physics (timing by std::chrono only).
 #include <vector>
 

@@ -5,11 +5,13 @@
 #include <cstdint>
 #include <cstring>
 
+#include "common/argb32.hpp"
+
 namespace bookspin::overlay {
 
 namespace {
 
-CanvasRegion clipped(CanvasRegion r, int image_width, int image_height) {
+PixelRegion clipped(PixelRegion r, int image_width, int image_height) {
   const int x0 = std::clamp(r.x, 0, image_width), y0 = std::clamp(r.y, 0, image_height);
   const int x1 = std::clamp(r.x + std::max(0, r.width), x0, image_width);
   const int y1 = std::clamp(r.y + std::max(0, r.height), y0, image_height);
@@ -24,8 +26,8 @@ void select_overlay_font(cairo_t* cr, bool bold, double size) {
   cairo_set_font_size(cr, size);
 }
 
-CanvasRegion region_around(double x, double y, double width, double height, double margin,
-                           int image_width, int image_height) {
+PixelRegion region_around(double x, double y, double width, double height, double margin,
+                          int image_width, int image_height) {
   const double x0 = std::floor(x - margin), y0 = std::floor(y - margin);
   const double x1 = std::ceil(x + width + margin), y1 = std::ceil(y + height + margin);
   // Clamp in double first: a huge rectangle must not overflow int.
@@ -39,7 +41,7 @@ CanvasRegion region_around(double x, double y, double width, double height, doub
 CairoCanvas::CairoCanvas(int width, int height)
     : CairoCanvas(width, height, {0, 0, width, height}) {}
 
-CairoCanvas::CairoCanvas(int width, int height, CanvasRegion region)
+CairoCanvas::CairoCanvas(int width, int height, PixelRegion region)
     : region_(clipped(region, width, height)),
       surface_(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, region_.width, region_.height)),
       cr_(nullptr) {
@@ -63,17 +65,8 @@ void CairoCanvas::composite_onto(RgbaImage& image) {
   for (int y = 0; y < rows; ++y) {
     const unsigned char* src_row = data + static_cast<std::ptrdiff_t>(y) * stride;
     std::uint8_t* dst = image.row(region_.y + y) + 4 * static_cast<std::ptrdiff_t>(region_.x);
-    for (int x = 0; x < columns; ++x, dst += 4) {
-      std::uint32_t argb;
-      std::memcpy(&argb, src_row + 4 * x, 4);
-      const std::uint32_t a = argb >> 24;
-      if (a == 0) continue;
-      // Premultiplied source over opaque destination: out = src + dst·(1 − a).
-      const std::uint32_t keep = 255 - a;
-      const std::uint32_t rgb[3] = {(argb >> 16) & 255u, (argb >> 8) & 255u, argb & 255u};
-      for (int c = 0; c < 3; ++c)
-        dst[c] = static_cast<std::uint8_t>(rgb[c] + (dst[c] * keep + 127) / 255);
-    }
+    for (int x = 0; x < columns; ++x, dst += 4)
+      argb32::blend_over_opaque(argb32::load(src_row + 4 * x), dst);
   }
 }
 

@@ -3,19 +3,17 @@
 // with alpha.
 #include <cairo.h>
 
+#include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 
 namespace bookspin::overlay {
 
-/// A rectangle of an image in pixels: columns [x, x + width), rows [y, y + height).
-struct CanvasRegion {
-  int x = 0, y = 0, width = 0, height = 0;
-};
+using bookspin::PixelRegion;
 
 /// The smallest whole-pixel region holding the rectangle (x, y, width, height) (pixels,
 /// fractional) and `margin` pixels around it, clipped to a width×height image.
-CanvasRegion region_around(double x, double y, double width, double height, double margin,
-                           int image_width, int image_height);
+PixelRegion region_around(double x, double y, double width, double height, double margin,
+                          int image_width, int image_height);
 
 /// Selects the one typeface of every overlay (DejaVu Sans, from Debian's fonts-dejavu-core;
 /// fontconfig substitutes where it is missing), bold or regular, `size` pixels high.
@@ -31,7 +29,7 @@ class CairoCanvas {
   /// The whole width×height image.
   CairoCanvas(int width, int height);
   /// Only `region` of the image (clipped to it; may be empty).
-  CairoCanvas(int width, int height, CanvasRegion region);
+  CairoCanvas(int width, int height, PixelRegion region);
   ~CairoCanvas();
   CairoCanvas(const CairoCanvas&) = delete;
   CairoCanvas& operator=(const CairoCanvas&) = delete;
@@ -40,7 +38,7 @@ class CairoCanvas {
   void composite_onto(RgbaImage& image);
 
  private:
-  CanvasRegion region_;
+  PixelRegion region_;
   cairo_surface_t* surface_;
   cairo_t* cr_;
 };

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
 
 namespace bookspin::overlay {
@@ -282,11 +283,8 @@ void draw_top_legend(cairo_t* cr, const PlotSpec& spec, double left, double righ
 }  // namespace
 
 void palette_colour(int index, double& r, double& g, double& b) {
-  static const double colours[][3] = {{0.00, 0.45, 0.70}, {0.84, 0.37, 0.00}, {0.00, 0.62, 0.45},
-                                      {0.80, 0.47, 0.65}, {0.90, 0.62, 0.00}, {0.34, 0.71, 0.91},
-                                      {0.60, 0.60, 0.20}, {0.00, 0.00, 0.00}};
-  const auto& c = colours[index % 8];
-  r = c[0], g = c[1], b = c[2];
+  const Rgb c = bookspin::palette_colour(static_cast<std::size_t>(index));
+  r = c.r, g = c.g, b = c.b;
 }
 
 namespace {

@@ -61,7 +61,7 @@ void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots
 /// Draws `spec` on a white width×height image.
 RgbaImage plot_image(const PlotSpec& spec, int width, int height);
 
-/// A qualitative colour palette (Okabe–Ito, colour-blind safe), cycled by index.
+/// bookspin::palette_colour (common/colour.hpp) as the three channels a Series holds.
 void palette_colour(int index, double& r, double& g, double& b);
 
 }  // namespace bookspin::overlay

@@ -1,5 +1,5 @@
 #pragma once
-// Book geometry: size, mass, corners and inertia (physics.md §1).
+// Book geometry: size, mass, corners and inertia (docs/physics.md §1).
 #include <Eigen/Dense>
 
 namespace bookspin::physics {
@@ -14,7 +14,7 @@ struct Book {
   Eigen::Vector3d size{1.878, 2.9085, 0.5};  ///< (a, b, c), length units
   double mass = 8.0;                         ///< M, mass units
 
-  /// Corners in the body frame (3×8), numbering of physics.md §1.
+  /// Corners in the body frame (3×8), numbering of docs/physics.md §1.
   Corners body_corners() const;
   /// Solid-cuboid inertia, body frame (3×3, diagonal):
   /// I_body = (M/12)·diag(b²+c², a²+c², a²+b²). Source: any mechanics textbook, paper §4.
@@ -22,8 +22,5 @@ struct Book {
   /// Diagonal of inertia_body() (principal moments I_x, I_y, I_z).
   Eigen::Vector3d principal_moments() const;
 };
-
-/// Index of the corner with the given bits (x, y, z each 0 or 1).
-constexpr int corner_index(int x_bit, int y_bit, int z_bit) { return x_bit | (y_bit << 1) | (z_bit << 2); }
 
 }  // namespace bookspin::physics

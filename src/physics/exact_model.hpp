@@ -1,5 +1,5 @@
 #pragma once
-// The exact solution as a simulator (issue 5, physics.md §8–9): the reference every
+// The exact solution as a simulator (docs/physics.md §8–9): the reference every
 // approximate model is measured against.
 #include <memory>
 #include <optional>
@@ -21,7 +21,7 @@ class ExactModel final : public Simulator {
   void reset(const InitialState& initial) override;
   void step(double dt) override;
   Corners corners() const override;
-  /// physics.md §9 with the exact ω(t) and energy ½ ω·I_body ω; spring energy 0, |q| = 1.
+  /// docs/physics.md §9 with the exact ω(t) and energy ½ ω·I_body ω; spring energy 0, |q| = 1.
   Diagnostics diagnostics() const override;
   bool finite() const override;
 

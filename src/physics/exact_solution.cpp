@@ -197,7 +197,7 @@ void ExactRotation::classify(const Eigen::Vector3d& w) {
   set_amplitudes(d1, d2, d3);
 }
 
-// Amplitudes, λ and k of physics.md §8. Case A (and the separatrix): ω1 ∝ cn, ω3 ∝ dn;
+// Amplitudes, λ and k of docs/physics.md §8. Case A (and the separatrix): ω1 ∝ cn, ω3 ∝ dn;
 // case B: ω1 ∝ dn, ω3 ∝ cn; ω2 ∝ sn always. The denominators are positive whenever the
 // motion is not steady (then I3 > I2 and ω3 ≠ 0 in case A, I2 > I1 and ω1 ≠ 0 in case B).
 // k'² = 1 − k² comes from (I3 − I2)(L² − 2E·I1) − (I2 − I1)(2E·I3 − L²) = (I3 − I1)(L² − 2E·I2)

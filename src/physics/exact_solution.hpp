@@ -1,5 +1,5 @@
 #pragma once
-// The exact torque-free rotation of a rigid body (issue 5, physics.md §8): the body-frame
+// The exact torque-free rotation of a rigid body (docs/physics.md §8): the body-frame
 // angular velocity from Jacobi elliptic functions and the orientation from the precession
 // of the body about the fixed angular momentum.
 #include <Eigen/Dense>
@@ -9,7 +9,7 @@
 namespace bookspin::physics {
 
 /// Which motion an initial condition gives. Axes 1, 2, 3 are the principal axes sorted by
-/// moment, I1 ≤ I2 ≤ I3 (for the book: y, x, z). Source: physics.md §8.
+/// moment, I1 ≤ I2 ≤ I3 (for the book: y, x, z). Source: docs/physics.md §8.
 enum class ExactCase {
   steady,           ///< ω is an eigenvector of I (principal-axis spin, ω = 0, or a plane of
                     ///< equal moments): ω and the rotation axis stay constant
@@ -34,7 +34,7 @@ struct PrecessionTable {
 /// angular velocity ω0. World angular momentum L = I·ω0 and energy E = ½ ω0·I ω0 are
 /// conserved. Units: moments in mass·length², ω in rad per time unit, t in time units.
 ///
-/// ω(t): physics.md §8 (Landau & Lifshitz, Mechanics §37), with the principal axes sorted
+/// ω(t): docs/physics.md §8 (Landau & Lifshitz, Mechanics §37), with the principal axes sorted
 /// by a signed permutation of det +1 so that Euler's equations keep their form. The
 /// orientation follows van Zon & Schofield, J. Comput. Phys. 225 (2007) (the idea is Landau
 /// & Lifshitz §37): the body-frame momentum L_b(t) = I ω(t) is exact, and

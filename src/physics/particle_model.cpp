@@ -156,7 +156,7 @@ void ParticleModel::step(double dt) {
 }
 
 // Paper §3.2: scale all velocities by one factor so that kinetic energy = E − U, never
-// below 0.1·E (physics.md §2), then remove the centre-of-mass drift.
+// below 0.1·E (docs/physics.md §2), then remove the centre-of-mass drift.
 void ParticleModel::normalize(double spring_energy_at_start) {
   const double kinetic = kinetic_energy();
   const double target = std::max(energy0_ - spring_energy_at_start, 0.1 * energy0_);

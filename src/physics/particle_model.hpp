@@ -1,5 +1,5 @@
 #pragma once
-// Mass-spring book: 8 corner particles and 28 springs (paper §3, physics.md §2).
+// Mass-spring book: 8 corner particles and 28 springs (paper §3, docs/physics.md §2).
 #include <array>
 
 #include "physics/simulator.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Integrators shared by the two rigid models (issue 5). Each takes the body-frame angular
+// Integrators shared by the two rigid models (docs/physics.md §10). Each takes the body-frame angular
 // momentum Π = Rᵀ L and returns the body-frame rotation increment Δ, so that the new
 // orientation is R·Δ (matrix model) or q ⊗ Δ (quaternion model).
 #include <Eigen/Geometry>

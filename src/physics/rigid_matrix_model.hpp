@@ -1,5 +1,5 @@
 #pragma once
-// Rigid body with an orientation matrix (paper §4, physics.md §3, Baraff 1997).
+// Rigid body with an orientation matrix (paper §4, docs/physics.md §3, Baraff 1997).
 #include "physics/simulator.hpp"
 
 namespace bookspin::physics {

@@ -1,5 +1,5 @@
 #pragma once
-// Rigid body with a quaternion (paper §4.4, physics.md §4, Baraff 1997).
+// Rigid body with a quaternion (paper §4.4, docs/physics.md §4, Baraff 1997).
 #include <Eigen/Geometry>
 
 #include "physics/simulator.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Shape measures shared by all simulators (physics.md §9).
+// Shape measures shared by all simulators (docs/physics.md §9).
 #include <array>
 
 #include "physics/book.hpp"
@@ -35,7 +35,7 @@ bool is_sane(const Eigen::MatrixBase<Derived>& m) {
 }
 
 /// Diagnostics of a rigid model whose corners are `M · body_corners` (M is R or R(q),
-/// possibly not a rotation). L is the world angular momentum. Equations: physics.md §3, §9.
+/// possibly not a rotation). L is the world angular momentum. Equations: docs/physics.md §3, §9.
 Diagnostics rigid_diagnostics(const Book& book, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
                               double t);
 

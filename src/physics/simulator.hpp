@@ -1,5 +1,5 @@
 #pragma once
-// The one interface every book simulator implements (issue 2, physics.md §5 and §9).
+// The one interface every book simulator implements (docs/physics.md §5 and §9).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -36,7 +36,7 @@ struct InitialState {
   std::uint64_t seed = 1;
 };
 
-/// Per-frame diagnostics (physics.md §9). Units: time units, rad/time, energy units.
+/// Per-frame diagnostics (docs/physics.md §9). Units: time units, rad/time, energy units.
 struct Diagnostics {
   double t = 0.0;
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();  ///< body frame
@@ -74,7 +74,7 @@ class Simulator {
   BookPose pose() const { return {corners(), diagnostics()}; }
 };
 
-/// The seeded, deterministic jiggle (physics.md §5): a vector uniform in
+/// The seeded, deterministic jiggle (docs/physics.md §5): a vector uniform in
 /// [−amplitude, amplitude]³ from a 64-bit Mersenne Twister (std::mt19937_64, whose
 /// output sequence the C++ standard fixes, mapped to doubles by hand so that every
 /// standard library gives the same bits). Added to the world angular momentum L at reset.

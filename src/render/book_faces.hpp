@@ -1,5 +1,5 @@
 #pragma once
-// THE face mapping of the book (physics.md §1), kept in this one place.
+// THE face mapping of the book (docs/physics.md §1), kept in this one place.
 //
 // Corner p has body coordinate −size/2 + size·bit(p, d), bit 0 = x, bit 1 = y, bit 2 = z.
 // Faces: front cover +z, back cover −z, spine +x, fore-edge (page edges) −x, top +y,
@@ -26,8 +26,8 @@ enum class FaceImage { front, back, spine, pages };
 /// One face of the book.
 struct FaceSpec {
   const char* name;
-  int axis;                  ///< outward normal's axis in the body frame (0 x, 1 y, 2 z)
-  int sign;                  ///< +1 or −1: outward normal = sign · e_axis
+  int axis;                    ///< outward normal's axis in the body frame (0 x, 1 y, 2 z)
+  int sign;                    ///< +1 or −1: outward normal = sign · e_axis
   std::array<int, 4> corners;  ///< texture top-left, top-right, bottom-right, bottom-left
   FaceImage image;
 };
@@ -43,7 +43,7 @@ inline constexpr std::array<FaceSpec, 6> book_faces{{
 
 /// Texture coordinates (u right, v down; v = 0 is the image's top row) of the four corners
 /// in FaceSpec::corners order.
-inline constexpr std::array<std::array<float, 2>, 4> face_corner_uv{{
-    {0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}}};
+inline constexpr std::array<std::array<float, 2>, 4> face_corner_uv{
+    {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}}};
 
 }  // namespace bookspin::render

@@ -1,9 +1,8 @@
 #pragma once
 // CPU side of the book: triangles built from the 8 world-space corners every frame.
+#include <Eigen/Dense>
 #include <array>
 #include <vector>
-
-#include <Eigen/Dense>
 
 namespace bookspin::render {
 
@@ -19,7 +18,7 @@ struct BookVertex {
 inline constexpr int vertices_per_face = 12;
 
 /// The book as 6 faces × vertices_per_face vertices, in book_faces order.
-/// corners: 3×8, world, column p = corner p (physics.md §1 numbering). Drawn exactly as
+/// corners: 3×8, world, column p = corner p (docs/physics.md §1 numbering). Drawn exactly as
 /// given (no re-orthonormalization). Normals: cross product of the face diagonals, turned to
 /// point away from the centroid of the 8 corners. Returns an empty vector when a corner is
 /// not finite in single precision (a diverged book is not drawn).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "common/argb32.hpp"
 #include "render/render_error.hpp"
 
 namespace bookspin::render::draw {
@@ -47,20 +48,10 @@ RgbaImage to_rgba(cairo_surface_t* surface) {
   const unsigned char* data = cairo_image_surface_get_data(surface);
   RgbaImage image(width, height);
   for (int y = 0; y < height; ++y) {
-    const auto* src = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::size_t>(y) * stride);
+    const unsigned char* src = data + static_cast<std::size_t>(y) * stride;
     std::uint8_t* dst = image.row(y);
-    for (int x = 0; x < width; ++x, dst += 4) {
-      const std::uint32_t argb = src[x];
-      const std::uint32_t a = argb >> 24;
-      // Premultiplied → straight; a fully transparent pixel stays black.
-      const auto straight = [a](std::uint32_t c) {
-        return static_cast<std::uint8_t>(a == 0 ? 0 : std::min<std::uint32_t>(255, (c * 255 + a / 2) / a));
-      };
-      dst[0] = straight((argb >> 16) & 0xff);
-      dst[1] = straight((argb >> 8) & 0xff);
-      dst[2] = straight(argb & 0xff);
-      dst[3] = static_cast<std::uint8_t>(a);
-    }
+    for (int x = 0; x < width; ++x, dst += 4)
+      argb32::to_straight_rgba(argb32::load(src + 4 * x), dst);
   }
   return image;
 }

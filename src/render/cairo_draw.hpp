@@ -5,13 +5,12 @@
 #include <memory>
 #include <string>
 
+#include "common/colour.hpp"
 #include "common/rgba_image.hpp"
 
 namespace bookspin::render::draw {
 
-struct Rgb {
-  double r, g, b;
-};
+using bookspin::Rgb;
 
 using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 using ContextPtr = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;

@@ -15,20 +15,22 @@ std::string hex_name(const char* prefix, GLenum code) {
   return out.str();
 }
 
-std::string shader_log(GLuint shader) {
+/// The info log of a shader or program object, read with the matching pair of GL calls.
+template <typename GetIv, typename GetLog>
+std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
   GLint length = 0;
-  glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+  get_iv(object, GL_INFO_LOG_LENGTH, &length);
   std::vector<char> log(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
-  glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+  get_log(object, static_cast<GLsizei>(log.size()), nullptr, log.data());
   return log.data();
 }
 
+std::string shader_log(GLuint shader) {
+  return info_log(shader, glGetShaderiv, glGetShaderInfoLog);
+}
+
 std::string program_log(GLuint program) {
-  GLint length = 0;
-  glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-  std::vector<char> log(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
-  glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
-  return log.data();
+  return info_log(program, glGetProgramiv, glGetProgramInfoLog);
 }
 
 GLuint compile(std::string_view name, GLenum type, std::string_view source) {
@@ -54,30 +56,45 @@ GLuint compile(std::string_view name, GLenum type, std::string_view source) {
 
 std::string gl_error_name(GLenum code) {
   switch (code) {
-    case GL_NO_ERROR: return "GL_NO_ERROR";
-    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-    default: return hex_name("GL error", code);
+    case GL_NO_ERROR:
+      return "GL_NO_ERROR";
+    case GL_INVALID_ENUM:
+      return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE:
+      return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION:
+      return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION:
+      return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY:
+      return "GL_OUT_OF_MEMORY";
+    default:
+      return hex_name("GL error", code);
   }
 }
 
 std::string framebuffer_status_name(GLenum status) {
   switch (status) {
-    case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
-    case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
-    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_COMPLETE:
+      return "GL_FRAMEBUFFER_COMPLETE";
+    case GL_FRAMEBUFFER_UNDEFINED:
+      return "GL_FRAMEBUFFER_UNDEFINED";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+      return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
     case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
       return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
-    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
+      return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
+      return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
+    case GL_FRAMEBUFFER_UNSUPPORTED:
+      return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
+      return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
     case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
       return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-    default: return hex_name("framebuffer status", status);
+    default:
+      return hex_name("framebuffer status", status);
   }
 }
 
@@ -119,7 +136,8 @@ GLuint build_program(std::string_view name, std::string_view vertex_source,
 
 GLint uniform_location(GLuint program, const char* uniform) {
   const GLint location = glGetUniformLocation(program, uniform);
-  if (location < 0) throw RenderError(std::string("shader has no active uniform '") + uniform + "'");
+  if (location < 0)
+    throw RenderError(std::string("shader has no active uniform '") + uniform + "'");
   return location;
 }
 

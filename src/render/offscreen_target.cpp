@@ -17,7 +17,8 @@ RenderbufferHandle make_renderbuffer(GLenum format, int samples, int width, int 
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
   else
     glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
-  check_gl("allocating a " + std::to_string(width) + "x" + std::to_string(height) + " renderbuffer");
+  check_gl("allocating a " + std::to_string(width) + "x" + std::to_string(height) +
+           " renderbuffer");
   return handle;
 }
 
@@ -31,8 +32,8 @@ FramebufferHandle make_framebuffer(GLuint color, GLuint depth, const char* what)
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw RenderError(std::string("cannot complete the ") + what + " framebuffer: " +
-                      framebuffer_status_name(status));
+    throw RenderError(std::string("cannot complete the ") + what +
+                      " framebuffer: " + framebuffer_status_name(status));
   check_gl(std::string("creating the ") + what + " framebuffer");
   return handle;
 }
@@ -73,15 +74,15 @@ void OffscreenTarget::bind_for_drawing() const {
   glViewport(0, 0, width_, height_);
 }
 
-void OffscreenTarget::resolve() const { resolve(PixelBox::whole(width_, height_)); }
+void OffscreenTarget::resolve() const { resolve(whole_frame(width_, height_)); }
 
 // Resolving a sub-rectangle is exact: each resolved pixel averages its own samples only.
-void OffscreenTarget::resolve(const PixelBox& box) const {
+void OffscreenTarget::resolve(const PixelRegion& box) const {
   if (samples_ > 1 && !box.empty()) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_.get());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_.get());
-    glBlitFramebuffer(box.x0, box.y0, box.x1, box.y1, box.x0, box.y0, box.x1, box.y1,
-                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(box.x, box.y, box.right(), box.bottom(), box.x, box.y, box.right(),
+                      box.bottom(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fbo_.get());
   check_gl("resolving the multisampled frame");
@@ -96,22 +97,22 @@ void OffscreenTarget::save_background() {
     background_color_ = make_renderbuffer(GL_RGBA8, samples_, width_, height_);
     background_fbo_ = make_framebuffer(background_color_.get(), 0, "background");
   }
-  copy_color(drawing_framebuffer(), background_fbo_.get(), PixelBox::whole(width_, height_));
+  copy_color(drawing_framebuffer(), background_fbo_.get(), whole_frame(width_, height_));
 }
 
-void OffscreenTarget::restore_background(const PixelBox& box) const {
+void OffscreenTarget::restore_background(const PixelRegion& box) const {
   if (!box.empty()) copy_color(background_fbo_.get(), drawing_framebuffer(), box);
 }
 
 // A blit between framebuffers of equal sample count and format is a plain copy (GL 3.3
 // §4.3.2 requires identical rectangles then). The scissor test applies to blits, so it is
 // off here; a copy without it is also what lets the driver use memcpy.
-void OffscreenTarget::copy_color(GLuint from, GLuint to, const PixelBox& box) const {
+void OffscreenTarget::copy_color(GLuint from, GLuint to, const PixelRegion& box) const {
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, from);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to);
-  glBlitFramebuffer(box.x0, box.y0, box.x1, box.y1, box.x0, box.y0, box.x1, box.y1,
-                    GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBlitFramebuffer(box.x, box.y, box.right(), box.bottom(), box.x, box.y, box.right(),
+                    box.bottom(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
   check_gl("copying the background");
 }
 

@@ -20,12 +20,12 @@ class OffscreenTarget {
   /// and leaves that one bound for reading.
   void resolve() const;
   /// Same for the pixels of `box` only; the rest of the single-sample image is kept.
-  void resolve(const PixelBox& box) const;
+  void resolve(const PixelRegion& box) const;
   /// Keeps a copy of the whole drawn image (every sample) as the background.
   void save_background();
   /// Copies the saved background back over `box` of the drawing framebuffer: exactly the
   /// samples drawing the background there would give. Requires save_background().
-  void restore_background(const PixelBox& box) const;
+  void restore_background(const PixelRegion& box) const;
   /// The single-sample framebuffer holding the finished frame (bottom row first, GL style).
   GLuint resolved_framebuffer() const { return resolve_fbo_.get(); }
 
@@ -35,7 +35,7 @@ class OffscreenTarget {
 
  private:
   GLuint drawing_framebuffer() const;
-  void copy_color(GLuint from, GLuint to, const PixelBox& box) const;
+  void copy_color(GLuint from, GLuint to, const PixelRegion& box) const;
 
   int width_;
   int height_;
@@ -45,7 +45,7 @@ class OffscreenTarget {
   FramebufferHandle resolve_fbo_;
   RenderbufferHandle resolve_color_;
   RenderbufferHandle depth_;
-  FramebufferHandle background_fbo_;     ///< same sample count as the drawing framebuffer
+  FramebufferHandle background_fbo_;  ///< same sample count as the drawing framebuffer
   RenderbufferHandle background_color_;
 };
 

@@ -40,6 +40,23 @@ void stream(GLuint vbo, const std::vector<Vertex>& vertices) {
                vertices.data(), GL_STREAM_DRAW);
 }
 
+struct CameraLocations {
+  GLint view, projection;
+};
+
+/// What every depth-tested solid draw starts with: its program and camera, its vertex array
+/// and this frame's vertices streamed into its buffer.
+template <typename Vertex>
+void begin_solid_draw(GLuint program, CameraLocations locations, const ViewProjection& camera,
+                      GLuint vao, GLuint vbo, const std::vector<Vertex>& vertices) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glUseProgram(program);
+  set_camera(locations.view, locations.projection, camera);
+  glBindVertexArray(vao);
+  stream(vbo, vertices);
+}
+
 }  // namespace
 
 // ---- background -------------------------------------------------------------------------
@@ -86,12 +103,8 @@ BookPass::BookPass(const FaceImages& images, float max_anisotropy)
 
 void BookPass::draw(const std::vector<BookVertex>& vertices, const ViewProjection& camera) {
   if (vertices.empty()) return;
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glUseProgram(program_.get());
-  set_camera(view_location_, projection_location_, camera);
-  glBindVertexArray(vao_.get());
-  stream(vbo_.get(), vertices);
+  begin_solid_draw(program_.get(), {view_location_, projection_location_}, camera, vao_.get(),
+                   vbo_.get(), vertices);
   glActiveTexture(GL_TEXTURE0);
   for (std::size_t f = 0; f < book_faces.size(); ++f) {
     const bool cover = book_faces[f].image != FaceImage::pages;
@@ -103,31 +116,27 @@ void BookPass::draw(const std::vector<BookVertex>& vertices, const ViewProjectio
   }
 }
 
-// ---- overlays ---------------------------------------------------------------------------
+// ---- markers ----------------------------------------------------------------------------
 
-OverlayPass::OverlayPass()
-    : program_(build_program("overlay", shaders::overlay_vert, shaders::overlay_frag)),
+MarkerPass::MarkerPass()
+    : program_(build_program("marker", shaders::marker_vert, shaders::marker_frag)),
       vao_(new_vertex_array()),
       vbo_(new_buffer()),
       view_location_(uniform_location(program_.get(), "u_view")),
       projection_location_(uniform_location(program_.get(), "u_projection")) {
   glBindVertexArray(vao_.get());
   glBindBuffer(GL_ARRAY_BUFFER, vbo_.get());
-  const auto stride = static_cast<GLsizei>(sizeof(OverlayVertex));
-  float_attribute(0, 3, stride, offsetof(OverlayVertex, position));
-  float_attribute(1, 3, stride, offsetof(OverlayVertex, normal));
-  float_attribute(2, 3, stride, offsetof(OverlayVertex, color));
-  check_gl("setting up the overlays");
+  const auto stride = static_cast<GLsizei>(sizeof(MarkerVertex));
+  float_attribute(0, 3, stride, offsetof(MarkerVertex, position));
+  float_attribute(1, 3, stride, offsetof(MarkerVertex, normal));
+  float_attribute(2, 3, stride, offsetof(MarkerVertex, color));
+  check_gl("setting up the markers");
 }
 
-void OverlayPass::draw(const std::vector<OverlayVertex>& vertices, const ViewProjection& camera) {
+void MarkerPass::draw(const std::vector<MarkerVertex>& vertices, const ViewProjection& camera) {
   if (vertices.empty()) return;
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glUseProgram(program_.get());
-  set_camera(view_location_, projection_location_, camera);
-  glBindVertexArray(vao_.get());
-  stream(vbo_.get(), vertices);
+  begin_solid_draw(program_.get(), {view_location_, projection_location_}, camera, vao_.get(),
+                   vbo_.get(), vertices);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
 }
 

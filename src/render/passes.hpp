@@ -1,14 +1,13 @@
 #pragma once
 // Internal: the three things drawn each frame, each owning its program and buffers.
 // All require the renderer's context to be current.
-#include <vector>
-
 #include <Eigen/Dense>
+#include <vector>
 
 #include "render/book_mesh.hpp"
 #include "render/book_textures.hpp"
 #include "render/gl_util.hpp"
-#include "render/overlay_mesh.hpp"
+#include "render/marker_mesh.hpp"
 
 namespace bookspin::render {
 
@@ -45,10 +44,10 @@ class BookPass {
 };
 
 /// Arrows and axes: one streamed vertex buffer, one draw.
-class OverlayPass {
+class MarkerPass {
  public:
-  OverlayPass();
-  void draw(const std::vector<OverlayVertex>& vertices, const ViewProjection& camera);
+  MarkerPass();
+  void draw(const std::vector<MarkerVertex>& vertices, const ViewProjection& camera);
 
  private:
   ProgramHandle program_;

@@ -1,5 +1,6 @@
 #include "render/pixel_box.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -38,17 +39,17 @@ void ScreenBounds::add(const std::array<float, 3>& world) {
   max_y_ = std::max(max_y_, y);
 }
 
-PixelBox ScreenBounds::box() const {
-  if (whole_) return PixelBox::whole(width_, height_);
+PixelRegion ScreenBounds::box() const {
+  if (whole_) return whole_frame(width_, height_);
   if (min_x_ > max_x_) return {};
   auto clamp = [](double v, int hi) {
     return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(hi)));
   };
-  PixelBox box{clamp(std::floor(min_x_ - kMarginPixels), width_),
-               clamp(std::floor(min_y_ - kMarginPixels), height_),
-               clamp(std::ceil(max_x_ + kMarginPixels), width_),
-               clamp(std::ceil(max_y_ + kMarginPixels), height_)};
-  return box;
+  const int x0 = clamp(std::floor(min_x_ - kMarginPixels), width_);
+  const int y0 = clamp(std::floor(min_y_ - kMarginPixels), height_);
+  const int x1 = clamp(std::ceil(max_x_ + kMarginPixels), width_);
+  const int y1 = clamp(std::ceil(max_y_ + kMarginPixels), height_);
+  return {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
 }
 
 }  // namespace bookspin::render

@@ -1,6 +1,6 @@
 #pragma once
 // Read-back of a finished frame into CPU memory: synchronous, or asynchronous through a ring
-// of pixel-buffer objects (issue 7), so a frame's read-back overlaps the next frame's work.
+// of pixel-buffer objects, so a frame's read-back overlaps the next frame's work.
 #include <cstdint>
 #include <vector>
 

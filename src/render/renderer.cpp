@@ -4,8 +4,8 @@
 
 #include "render/book_mesh.hpp"
 #include "render/face_images.hpp"
+#include "render/marker_mesh.hpp"
 #include "render/offscreen_target.hpp"
-#include "render/overlay_mesh.hpp"
 #include "render/passes.hpp"
 #include "render/pixel_box.hpp"
 #include "render/pixel_reader.hpp"
@@ -19,7 +19,7 @@ namespace {
 // one frame of the caller's work.
 constexpr int kPipelineDepth = 2;
 
-// Sizes must be even: the video stage encodes 4:2:0 chroma, which halves both dimensions.
+// Sizes must be even: the output stage encodes 4:2:0 chroma, which halves both dimensions.
 void validate_settings(const RenderSettings& settings) {
   const auto size = std::to_string(settings.width) + "x" + std::to_string(settings.height);
   if (settings.width <= 0 || settings.height <= 0)
@@ -58,12 +58,12 @@ struct Renderer::Impl {
   std::optional<OffscreenTarget> target;
   std::optional<BackgroundPass> background;
   std::optional<BookPass> book;
-  std::optional<OverlayPass> overlays;
+  std::optional<MarkerPass> markers;
   PixelReader reader{kPipelineDepth};
   ViewProjection camera;
   bool background_saved = false;
-  RgbaImage spare;        ///< a buffer from recycle() for the next read-back
-  PixelBox previous_box;  ///< where the last frame drew; the whole frame before the first
+  RgbaImage spare;           ///< a buffer from recycle() for the next read-back
+  PixelRegion previous_box;  ///< where the last frame drew; the whole frame before the first
 
   explicit Impl(const RenderSettings& s) : settings(s) {
     validate_settings(settings);
@@ -76,8 +76,8 @@ struct Renderer::Impl {
     background.emplace();
     book.emplace(images,
                  effective_anisotropy(settings.max_anisotropy, context->info().gl_renderer));
-    overlays.emplace();
-    previous_box = PixelBox::whole(settings.width, settings.height);
+    markers.emplace();
+    previous_box = whole_frame(settings.width, settings.height);
   }
 
   ~Impl() {
@@ -86,18 +86,18 @@ struct Renderer::Impl {
       if (context) context->make_current();
     } catch (...) {  // nothing sensible to do in a destructor; the driver frees on exit
     }
-    overlays.reset();
+    markers.reset();
     book.reset();
     background.reset();
     target.reset();
   }
 
-  /// Where this frame's book and overlays can put pixels.
-  PixelBox drawn_box(const std::vector<BookVertex>& book_mesh,
-                     const std::vector<OverlayVertex>& overlay_mesh) const {
+  /// Where this frame's book and markers can put pixels.
+  PixelRegion drawn_box(const std::vector<BookVertex>& book_mesh,
+                        const std::vector<MarkerVertex>& marker_mesh) const {
     ScreenBounds bounds(camera.projection * camera.view, settings.width, settings.height);
     add_vertices(bounds, book_mesh);
-    add_vertices(bounds, overlay_mesh);
+    add_vertices(bounds, marker_mesh);
     return bounds.box();
   }
 
@@ -108,13 +108,13 @@ struct Renderer::Impl {
   void draw(const FrameInput& frame) {
     context->make_current();
     const std::vector<BookVertex> book_mesh = build_book_mesh(frame.corners);
-    std::vector<OverlayVertex> overlay_mesh;
+    std::vector<MarkerVertex> marker_mesh;
     if (settings.show_angular_momentum || settings.show_body_axes) {
-      overlay_mesh = build_overlays(frame.corners, frame.angular_momentum_direction,
-                                    settings.show_angular_momentum, settings.show_body_axes);
+      marker_mesh = build_markers(frame.corners, frame.angular_momentum_direction,
+                                  settings.show_angular_momentum, settings.show_body_axes);
     }
-    const PixelBox box = drawn_box(book_mesh, overlay_mesh);
-    const PixelBox dirty = box.united(previous_box);
+    const PixelRegion box = drawn_box(book_mesh, marker_mesh);
+    const PixelRegion dirty = united(box, previous_box);
     if (!background_saved) {
       target->bind_for_drawing();
       background->draw();
@@ -125,10 +125,10 @@ struct Renderer::Impl {
     }
     target->bind_for_drawing();
     glEnable(GL_SCISSOR_TEST);
-    glScissor(dirty.x0, dirty.y0, dirty.width(), dirty.height());
+    glScissor(dirty.x, dirty.y, dirty.width, dirty.height);
     glClear(GL_DEPTH_BUFFER_BIT);  // no colour clear: the background covers every pixel
     book->draw(book_mesh, camera);
-    if (!overlay_mesh.empty()) overlays->draw(overlay_mesh, camera);
+    if (!marker_mesh.empty()) markers->draw(marker_mesh, camera);
     glDisable(GL_SCISSOR_TEST);
     check_gl("drawing a frame");
     target->resolve(dirty);

@@ -51,7 +51,7 @@ struct RenderSettings {
 
 /// One frame's input.
 struct FrameInput {
-  /// 3×8, world, column p = corner p (physics.md §1: bit 0 = x, bit 1 = y, bit 2 = z).
+  /// 3×8, world, column p = corner p (docs/physics.md §1: bit 0 = x, bit 1 = y, bit 2 = z).
   /// Drawn exactly as given (stretched or exploded books too); any non-finite corner →
   /// no book is drawn, only the background (and the L arrow if enabled).
   Eigen::Matrix<double, 3, 8> corners = Eigen::Matrix<double, 3, 8>::Zero();
@@ -109,9 +109,5 @@ class Renderer {
 /// Creates a temporary headless context and reports what it runs on (for `bookspin info`).
 /// Throws RenderError if no context can be created.
 GlInfo gl_info();
-
-/// Writes an RgbaImage to a PNG file (debugging, tests, "look" images; the production
-/// frame sink lives in the video stage). Throws RenderError if the file cannot be written.
-void write_png(const RgbaImage& image, const std::string& path);
 
 }  // namespace bookspin::render

@@ -17,10 +17,10 @@ std::string entry_prefix(std::size_t index) {
 
 /// Reads one [[compare]] entry with its own reader, so that unknown keys inside it are
 /// reported with its line and as compare[i].key.
-ComparePanel read_panel(const toml::table& entry, std::size_t index, const std::string& origin,
-                        const std::set<std::string>& overridden, const physics::ModelConfig& base) {
+CompareTile read_tile(const toml::table& entry, std::size_t index, const std::string& origin,
+                      const std::set<std::string>& overridden, const physics::ModelConfig& base) {
   TomlReader r(entry, origin, overridden, entry_prefix(index), &entry);
-  ComparePanel panel;
+  CompareTile panel;
   if (!r.has("label")) r.fail("label", "missing (every [[compare]] entry needs a label)");
   panel.label = r.string("label", "");
   panel.name = label_to_name(panel.label);
@@ -36,8 +36,8 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   physics::ModelConfig m;
   const std::string kind = r.string("model.kind", std::string(physics::to_string(fallback.kind)));
   if (!physics::parse_model_kind(kind, m.kind)) {
-    r.fail("model.kind",
-           "unknown model '" + kind + "' (expected particle, rigid-matrix, rigid-quaternion, exact)");
+    r.fail("model.kind", "unknown model '" + kind +
+                             "' (expected particle, rigid-matrix, rigid-quaternion, exact)");
   }
   const std::string integrator =
       r.string("model.integrator", std::string(physics::to_string(fallback.integrator)));
@@ -47,7 +47,8 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
                                    "implicit-midpoint, splitting)");
   }
   if (!physics::supports(m.kind, m.integrator)) {
-    r.fail("model.integrator", "model '" + kind + "' does not support integrator '" + integrator + "'");
+    r.fail("model.integrator",
+           "model '" + kind + "' does not support integrator '" + integrator + "'");
   }
   m.normalize = r.boolean("model.normalize", fallback.normalize);
   m.damping = r.boolean("model.damping", fallback.damping);
@@ -55,23 +56,23 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   return m;
 }
 
-std::vector<ComparePanel> read_compare(TomlReader& r, const std::string& origin,
-                                       const std::set<std::string>& overridden,
-                                       const physics::ModelConfig& base) {
+std::vector<CompareTile> read_compare(TomlReader& r, const std::string& origin,
+                                      const std::set<std::string>& overridden,
+                                      const physics::ModelConfig& base) {
   const auto view = r.node("compare");
   if (!view) return {};
   const toml::array* array = view.as_array();
   if (!array || !array->is_array_of_tables()) {
     r.fail("compare", "expected an array of tables ([[compare]] entries)");
   }
-  if (array->empty() || array->size() > static_cast<std::size_t>(kMaxComparePanels)) {
-    r.fail("compare", "expected 1 to " + std::to_string(kMaxComparePanels) + " [[compare]] entries, got " +
-                          std::to_string(array->size()));
+  if (array->empty() || array->size() > static_cast<std::size_t>(kMaxCompareTiles)) {
+    r.fail("compare", "expected 1 to " + std::to_string(kMaxCompareTiles) +
+                          " [[compare]] entries, got " + std::to_string(array->size()));
   }
-  std::vector<ComparePanel> panels;
+  std::vector<CompareTile> panels;
   for (std::size_t i = 0; i < array->size(); ++i) {
     const toml::table& entry = *array->get(i)->as_table();
-    panels.push_back(read_panel(entry, i + 1, origin, overridden, base));
+    panels.push_back(read_tile(entry, i + 1, origin, overridden, base));
     for (std::size_t j = 0; j < i; ++j) {
       if (panels[j].name != panels.back().name) continue;
       TomlReader(entry, origin, overridden, entry_prefix(i + 1), &entry)

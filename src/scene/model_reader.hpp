@@ -16,9 +16,9 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
 /// The `[[compare]]` array of `r`'s table (empty if absent): each entry needs a unique
 /// `label` and may set model.* keys (falling back to `base`). Errors name the entry as
 /// compare[i] (1-based) with the file line, or `--set compare…` where it came from --set.
-std::vector<ComparePanel> read_compare(TomlReader& r, const std::string& origin,
-                                       const std::set<std::string>& overridden,
-                                       const physics::ModelConfig& base);
+std::vector<CompareTile> read_compare(TomlReader& r, const std::string& origin,
+                                      const std::set<std::string>& overridden,
+                                      const physics::ModelConfig& base);
 
 /// The file-name form of a label: lower-case letters and digits, other runs become '-'.
 std::string label_to_name(const std::string& label);

@@ -84,14 +84,14 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   const std::string key = assignment.substr(0, eq);
   if (eq == std::string::npos || !is_dotted_key(key)) {
-    throw SceneError("--set " + assignment + ": expected key=value, e.g. time.dt=0.01");
+    throw InputError("--set " + assignment + ": expected key=value, e.g. time.dt=0.01");
   }
   toml::table parsed;
   try {
     const std::string doc = "value = " + assignment.substr(eq + 1);
     parsed = toml::parse(std::string_view(doc), std::string_view("--set"));
   } catch (const toml::parse_error& e) {
-    throw SceneError("--set " + key + ": value is not valid TOML (" + first_line(e.description()) +
+    throw InputError("--set " + key + ": value is not valid TOML (" + first_line(e.description()) +
                      "); strings need quotes, e.g. key=\"text\"");
   }
   toml::table* table = &root;
@@ -101,7 +101,7 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
     rest.remove_prefix(dot + 1);
     if (!table->contains(part)) table->insert(part, toml::table{});
     table = (*table)[part].as_table();
-    if (!table) throw SceneError("--set " + key + ": '" + part + "' is not a table");
+    if (!table) throw InputError("--set " + key + ": '" + part + "' is not a table");
   }
   table->insert_or_assign(std::string(rest), *parsed["value"].node());
   return key;
@@ -200,7 +200,7 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
 
 }  // namespace
 
-Scene panel_scene(const Scene& scene, const ComparePanel& panel) {
+Scene tile_scene(const Scene& scene, const CompareTile& panel) {
   Scene s = scene;
   s.name = scene.name + "-" + panel.name;
   s.title = panel.label;
@@ -212,19 +212,19 @@ Scene panel_scene(const Scene& scene, const ComparePanel& panel) {
 Scene parse_scene_text(std::string_view text, const std::filesystem::path& origin,
                        const std::vector<std::string>& overrides) {
   if (text.find('\0') != std::string_view::npos) {
-    throw SceneError(origin.string() + ": not a text file (contains NUL bytes)");
+    throw InputError(origin.string() + ": not a text file (contains NUL bytes)");
   }
   toml::table root;
   try {
     const std::string origin_name = origin.string();
     root = toml::parse(text, std::string_view(origin_name));
   } catch (const toml::parse_error& e) {
-    throw SceneError(origin.string() + ":" + std::to_string(e.source().begin.line) +
+    throw InputError(origin.string() + ":" + std::to_string(e.source().begin.line) +
                      ": TOML syntax error: " + describe_syntax_error(e, text));
   }
   // Valid TOML, and every key has a default, but a file with no keys at all is almost
   // certainly a mistake (a truncated copy, the wrong file), not a request for the defaults.
-  if (root.empty()) throw SceneError(origin.string() + ": scene file is empty (no keys)");
+  if (root.empty()) throw InputError(origin.string() + ": scene file is empty (no keys)");
   std::set<std::string> overridden;
   for (const auto& assignment : overrides) overridden.insert(apply_override(root, assignment));
   return build_scene(root, origin, overridden);
@@ -233,20 +233,20 @@ Scene parse_scene_text(std::string_view text, const std::filesystem::path& origi
 Scene parse_scene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
-    throw SceneError(path.string() + ": is a directory, not a scene file");
+    throw InputError(path.string() + ": is a directory, not a scene file");
   }
   if (!std::filesystem::is_regular_file(path, ec)) {
-    throw SceneError(path.string() + ": scene file not found");
+    throw InputError(path.string() + ": scene file not found");
   }
   const auto size = std::filesystem::file_size(path, ec);
   if (ec || size > kMaxSceneFileBytes) {
-    throw SceneError(path.string() + ": scene file is larger than " +
+    throw InputError(path.string() + ": scene file is larger than " +
                      std::to_string(kMaxSceneFileBytes) + " bytes");
   }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
-  if (!in) throw SceneError(path.string() + ": cannot read the scene file");
+  if (!in) throw InputError(path.string() + ": cannot read the scene file");
   return parse_scene_text(text.str(), path, overrides);
 }
 

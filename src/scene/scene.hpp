@@ -1,22 +1,17 @@
 #pragma once
-// A validated scene: everything one clip needs (issue 2 §6, issue 3 §5). The door of
+// A validated scene: everything one clip needs (keys: scenes/README.md). The door of
 // src/scene: parse_scene() turns a TOML file plus `--set key=value` overrides into a Scene
-// or throws SceneError with one line naming the file, line and key.
+// or throws InputError with one line naming the file, line and key.
 #include <array>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "physics/simulator.hpp"
 
 namespace bookspin::scene {
-
-/// One bad input: `what()` is "FILE:LINE: KEY: reason" (or "--set KEY: reason").
-class SceneError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct RenderOptions {
   int width = 1280;                                 ///< pixels, even
@@ -43,9 +38,9 @@ struct RenderOptions {
   bool panel = false;
 };
 
-/// One panel of a comparison scene (`[[compare]]`): the scene's book, initial state, time
+/// One tile of a comparison scene (`[[compare]]`): the scene's book, initial state, time
 /// and render keys with its own model settings.
-struct ComparePanel {
+struct CompareTile {
   std::string label;  ///< shown on the tile, e.g. "rigid-matrix, SVD"
   std::string name;   ///< file-name form of the label (diagnostics-<name>.csv), unique
   physics::ModelConfig model;
@@ -63,23 +58,23 @@ struct Scene {
   int frames = 300;         ///< video frames (CSV rows), frame 0 = initial state
   RenderOptions render;
   std::filesystem::path source;  ///< the scene file
-  /// Non-empty for a comparison scene: each panel runs its own simulator from the same
-  /// initial state, and the clip shows them side by side (kMaxComparePanels at most).
-  std::vector<ComparePanel> compare;
+  /// Non-empty for a comparison scene: each tile runs its own simulator from the same
+  /// initial state, and the clip shows them side by side (kMaxCompareTiles at most).
+  std::vector<CompareTile> compare;
 };
 
-/// The single-model scene a comparison panel stands for: `scene` with the panel's model.
-Scene panel_scene(const Scene& scene, const ComparePanel& panel);
+/// The single-model scene a comparison tile stands for: `scene` with the tile's model.
+Scene tile_scene(const Scene& scene, const CompareTile& tile);
 
 /// Limits enforced by validation (documented in scenes/README.md).
 inline constexpr int kMaxDimension = 7680;
 inline constexpr int kMaxFrames = 100000;
 inline constexpr int kMaxStepsPerFrame = 1000000;
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 1 << 20;
-inline constexpr int kMaxComparePanels = 9;
+inline constexpr int kMaxCompareTiles = 9;
 
 /// Reads and validates `path`, applying `overrides` ("key=value", value in TOML syntax) on
-/// top of the file. Throws SceneError on any bad input: unreadable or oversized file, TOML
+/// top of the file. Throws InputError on any bad input: unreadable or oversized file, TOML
 /// syntax, unknown key, wrong type, out-of-range value, missing texture file.
 Scene parse_scene(const std::filesystem::path& path,
                   const std::vector<std::string>& overrides = {});

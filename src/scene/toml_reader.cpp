@@ -22,13 +22,20 @@ std::string range_text(double lo, double hi, bool lo_open) {
 /// 300) is easy to miss without it.
 std::string type_name(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a floating-point number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::table: return "a table";
-    default: return "a date or time";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a floating-point number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    default:
+      return "a date or time";
   }
 }
 
@@ -42,8 +49,9 @@ bool has_key_below(const Keys& keys, const std::string& key) {
 
 }  // namespace
 
-TomlReader::TomlReader(const toml::table& root, std::string origin, std::set<std::string> overridden,
-                       std::string key_prefix, const toml::node* anchor)
+TomlReader::TomlReader(const toml::table& root, std::string origin,
+                       std::set<std::string> overridden, std::string key_prefix,
+                       const toml::node* anchor)
     : root_(root),
       origin_(std::move(origin)),
       overridden_(std::move(overridden)),
@@ -69,26 +77,23 @@ bool TomlReader::from_override(const std::string& full_key) const {
   return false;
 }
 
-std::string TomlReader::location(std::string_view key, const toml::node* node) const {
+InputError TomlReader::error_at(std::string_view key, const toml::node* node,
+                                std::string_view reason) const {
   // Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string here.
   std::string full_key = key_prefix_;
   full_key.append(key);
-  std::string where;
   if (from_override(full_key)) {
-    where.append("--set ").append(full_key);
-    return where;
+    std::string where = "--set ";
+    where.append(full_key).append(": ").append(reason);
+    return InputError(where);
   }
-  where.append(origin_);
   if (!node) node = anchor_;
-  if (node && node->source().begin.line > 0) {
-    where.append(":").append(std::to_string(node->source().begin.line));
-  }
-  where.append(": ").append(full_key);
-  return where;
+  const int line = node ? static_cast<int>(node->source().begin.line) : 0;
+  return InputError(origin_, line, full_key, reason);
 }
 
 void TomlReader::fail(std::string_view key, const std::string& reason) const {
-  throw SceneError(location(key, root_.at_path(key).node()) + ": " + reason);
+  throw error_at(key, root_.at_path(key).node(), reason);
 }
 
 double TomlReader::number(std::string_view key, double fallback, double lo, double hi,
@@ -110,7 +115,8 @@ double TomlReader::number(std::string_view key, double fallback, double lo, doub
   return value;
 }
 
-long long TomlReader::integer(std::string_view key, long long fallback, long long lo, long long hi) {
+long long TomlReader::integer(std::string_view key, long long fallback, long long lo,
+                              long long hi) {
   const auto view = find(key);
   if (!view) return fallback;
   const auto value = view.value_exact<int64_t>();
@@ -192,10 +198,10 @@ void TomlReader::reject_unknown_keys() const {
   collect_unknown(root_, "", first, first_key);
   if (!first) return;
   // A known table given a value (`time = 5`) is a wrong type, not an unknown key.
-  const char* reason = first->is_table()                 ? "unknown table"
+  const char* reason = first->is_table()                  ? "unknown table"
                        : has_key_below(known_, first_key) ? "expected a table"
                                                           : "unknown key";
-  throw SceneError(location(first_key, first) + ": " + reason);
+  throw error_at(first_key, first, reason);
 }
 
 }  // namespace bookspin::scene

@@ -1,10 +1,11 @@
 #pragma once
 // Typed, range-checked reads from a TOML table that remember which keys were read, so that
 // every other key can be reported as unknown. Internal to src/scene.
+#include <toml++/toml.h>
+
 #include <set>
 #include <string>
 #include <string_view>
-#include <toml++/toml.h>
 
 #include "scene/scene.hpp"
 
@@ -30,14 +31,15 @@ class TomlReader {
   /// The raw node at `key` (empty view if absent), marking the key as known.
   toml::node_view<const toml::node> node(std::string_view key) { return find(key); }
 
-  /// Throws SceneError for the key read-or-present in the table with the earliest line.
+  /// Throws InputError for the key read-or-present in the table with the earliest line.
   void reject_unknown_keys() const;
-  /// Throws SceneError "LOCATION: KEY: reason".
+  /// Throws InputError "LOCATION: KEY: reason".
   [[noreturn]] void fail(std::string_view key, const std::string& reason) const;
 
  private:
   toml::node_view<const toml::node> find(std::string_view key);
-  std::string location(std::string_view key, const toml::node* node) const;
+  /// The InputError "FILE:LINE: KEY: reason" (or "--set KEY: reason") for `key` at `node`.
+  InputError error_at(std::string_view key, const toml::node* node, std::string_view reason) const;
   bool from_override(const std::string& full_key) const;
   void collect_unknown(const toml::table& table, const std::string& prefix,
                        const toml::node*& first, std::string& first_key) const;

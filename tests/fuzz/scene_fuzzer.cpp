@@ -1,6 +1,6 @@
-// libFuzzer target for the scene parser and `--set` values (issue 8 §4).
+// libFuzzer target for the scene parser and `--set` values.
 // Input: scene TOML text, optionally followed by a line "%%" and one `key=value` override
-// per line. The parser must either return a Scene or throw SceneError; anything else (a
+// per line. The parser must either return a Scene or throw InputError; anything else (a
 // crash, another exception, a sanitizer report) is a finding.
 #include <cstddef>
 #include <cstdint>
@@ -26,7 +26,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   try {
     (void)bookspin::scene::parse_scene_text(text, "fuzz.toml", overrides);
-  } catch (const bookspin::scene::SceneError&) {
+  } catch (const bookspin::InputError&) {
     // Expected for bad input: one clear line.
   }
   return 0;

@@ -1,5 +1,5 @@
 #pragma once
-// Shared set-up for the physics tests: the original 2012 program's settings (physics.md §6).
+// Shared set-up for the physics tests: the original 2012 program's settings (docs/physics.md §6).
 #include <functional>
 
 #include "physics/simulator.hpp"

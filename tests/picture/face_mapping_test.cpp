@@ -1,11 +1,11 @@
-// Stills that pin the face mapping (physics.md §1): the book at rest at identity seen along
+// Stills that pin the face mapping (docs/physics.md §1): the book at rest at identity seen along
 // each body axis must show the front cover (+z), back cover (−z), spine (+x) and page
 // edges (−x), upright and unmirrored; plus a figure frame with both 3-D overlays on.
 #include <gtest/gtest.h>
 
-#include "app/still.hpp"
 #include "golden_store.hpp"
 #include "picture_scenes.hpp"
+#include "pipeline/frame.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -22,7 +22,7 @@ class FaceMapping : public ::testing::TestWithParam<View> {};
 TEST_P(FaceMapping, BookAtIdentityShowsTheRightFace) {
   const scene::Scene scene = book_at_rest(GetParam().name, GetParam().direction);
   EXPECT_TRUE(matches_golden(std::string("face-") + GetParam().name,
-                             app::render_still(scene, renderer_for(scene), 0)));
+                             pipeline::render_still(scene, renderer_for(scene), 0)));
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, FaceMapping,
@@ -33,11 +33,12 @@ INSTANTIATE_TEST_SUITE_P(Views, FaceMapping,
                          [](const auto& info) { return test_name(info.param.name); });
 
 TEST(Overlays, AngularMomentumAndBodyAxesMatch) {
-  const scene::Scene scene = figure_scene(
-      "fig09-matrix-unstable-x", {"render.show_angular_momentum=true", "render.show_body_axes=true"});
+  const scene::Scene scene =
+      figure_scene("fig09-matrix-unstable-x",
+                   {"render.show_angular_momentum=true", "render.show_body_axes=true"});
   const int index = pinned_frames(scene.frames)[1];
   EXPECT_TRUE(matches_golden(golden_name("overlays-" + scene.name, index),
-                             app::render_still(scene, renderer_for(scene), index)));
+                             pipeline::render_still(scene, renderer_for(scene), index)));
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 #include <iostream>
 #include <set>
 
-#include "video/png_writer.hpp"
+#include "output/png_writer.hpp"
 
 #ifndef GTEST_FLAG_GET  // GoogleTest before 1.12
 #define GTEST_FLAG_GET(name) ::testing::GTEST_FLAG(name)
@@ -21,7 +21,9 @@ std::set<std::string>& used_goldens() {
   return used;
 }
 
-std::filesystem::path golden_path(const std::string& name) { return golden_dir() / (name + ".png"); }
+std::filesystem::path golden_path(const std::string& name) {
+  return golden_dir() / (name + ".png");
+}
 
 /// Update mode: (re)writes the golden and says what changed.
 ::testing::AssertionResult update_golden(const std::string& name, const RgbaImage& actual,
@@ -29,7 +31,7 @@ std::filesystem::path golden_path(const std::string& name) { return golden_dir()
   const auto path = golden_path(name);
   std::string status = "new";
   if (std::filesystem::exists(path)) {
-    const RgbaImage old = video::read_png(path);
+    const RgbaImage old = output::read_png(path);
     if (old.width == actual.width && old.height == actual.height && old.pixels == actual.pixels) {
       std::cout << "golden " << name << ".png: unchanged\n";
       return ::testing::AssertionSuccess();
@@ -38,7 +40,7 @@ std::filesystem::path golden_path(const std::string& name) { return golden_dir()
     status = std::string("changed: ") + c.summary(tolerance) +
              (c.passed ? " (within tolerance)" : " (beyond tolerance)");
   }
-  video::write_png(path, actual, kGoldenCompression);
+  output::write_png(path, actual, kGoldenCompression);
   std::cout << "golden " << name << ".png: " << status << '\n';
   return ::testing::AssertionSuccess();
 }
@@ -67,7 +69,9 @@ bool update_mode() {
   return value != nullptr && std::string(value) == "1";
 }
 
-std::filesystem::path golden_dir() { return std::filesystem::path(BOOKSPIN_SOURCE_DIR) / "tests" / "golden"; }
+std::filesystem::path golden_dir() {
+  return std::filesystem::path(BOOKSPIN_SOURCE_DIR) / "tests" / "golden";
+}
 
 std::filesystem::path fresh_output_dir(const std::string& name) {
   const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output" / "picture" / name;
@@ -80,12 +84,12 @@ void note_golden_used(const std::string& file) { used_goldens().insert(file); }
 
 std::string write_failure_images(const std::filesystem::path& dir, const RgbaImage& actual,
                                  const RgbaImage& expected, const Tolerance& tolerance) {
-  video::write_png(dir / "actual.png", actual);
+  output::write_png(dir / "actual.png", actual);
   std::string message = "\n  actual:   " + (dir / "actual.png").string();
-  video::write_png(dir / "expected.png", expected);
+  output::write_png(dir / "expected.png", expected);
   message += "\n  expected: " + (dir / "expected.png").string();
   if (compare_images(actual, expected, tolerance).same_size) {
-    video::write_png(dir / "diff.png", diff_image(actual, expected, tolerance));
+    output::write_png(dir / "diff.png", diff_image(actual, expected, tolerance));
     message += "\n  diff:     " + (dir / "diff.png").string() +
                "  (red: differs beyond the threshold, blue: tolerated)";
   }
@@ -94,7 +98,7 @@ std::string write_failure_images(const std::filesystem::path& dir, const RgbaIma
 
 RgbaImage read_golden(const std::string& name) {
   note_golden_used(name + ".png");
-  return video::read_png(golden_path(name));
+  return output::read_png(golden_path(name));
 }
 
 ::testing::AssertionResult matches_golden(const std::string& name, const RgbaImage& actual,
@@ -103,20 +107,22 @@ RgbaImage read_golden(const std::string& name) {
   if (update_mode()) return update_golden(name, actual, tolerance);
   const auto dir = fresh_output_dir(name);
   if (!std::filesystem::exists(golden_path(name))) {
-    video::write_png(dir / "actual.png", actual);
+    output::write_png(dir / "actual.png", actual);
     return ::testing::AssertionFailure()
-           << "no golden " << golden_path(name).string() << "; run `make update-goldens` to create it, "
+           << "no golden " << golden_path(name).string()
+           << "; run `make update-goldens` to create it, "
            << "look at it, and commit it\n  actual:   " << (dir / "actual.png").string();
   }
-  const RgbaImage expected = video::read_png(golden_path(name));
+  const RgbaImage expected = output::read_png(golden_path(name));
   const Comparison c = compare_images(actual, expected, tolerance);
   if (c.passed) {
     std::filesystem::remove_all(dir);
     return ::testing::AssertionSuccess() << c.summary(tolerance);
   }
-  return ::testing::AssertionFailure() << name << " differs from its golden: " << c.summary(tolerance)
-                                       << write_failure_images(dir, actual, expected, tolerance)
-                                       << "\n  if the change is intended: make update-goldens";
+  return ::testing::AssertionFailure()
+         << name << " differs from its golden: " << c.summary(tolerance)
+         << write_failure_images(dir, actual, expected, tolerance)
+         << "\n  if the change is intended: make update-goldens";
 }
 
 }  // namespace bookspin::picture

@@ -36,7 +36,7 @@ void draw_sample(cairo_t* cr) {
   cairo_show_text(cr, "t = 12.5");
 }
 
-TEST(CanvasRegion, DrawsTheSamePixelsAsAWholeFrameCanvas) {
+TEST(PixelRegion, DrawsTheSamePixelsAsAWholeFrameCanvas) {
   RgbaImage whole = gradient(200, 120), part = whole;
   overlay::CairoCanvas full(200, 120);
   draw_sample(full.cr());
@@ -48,7 +48,7 @@ TEST(CanvasRegion, DrawsTheSamePixelsAsAWholeFrameCanvas) {
   EXPECT_NE(whole.pixels, gradient(200, 120).pixels);  // something was drawn
 }
 
-TEST(CanvasRegion, DrawingOutsideTheRegionIsClippedAway) {
+TEST(PixelRegion, DrawingOutsideTheRegionIsClippedAway) {
   RgbaImage image = gradient(200, 120);
   overlay::CairoCanvas canvas(200, 120, {150, 80, 20, 20});
   cairo_rectangle(canvas.cr(), 0, 0, 200, 120);
@@ -66,7 +66,7 @@ TEST(CanvasRegion, DrawingOutsideTheRegionIsClippedAway) {
   }
 }
 
-TEST(CanvasRegion, RegionAroundIsClippedToTheImage) {
+TEST(PixelRegion, RegionAroundIsClippedToTheImage) {
   const auto r = overlay::region_around(-10.2, 5.5, 30, 10, 2, 100, 50);
   EXPECT_EQ(r.x, 0);
   EXPECT_EQ(r.y, 3);
@@ -85,7 +85,7 @@ TEST(CanvasRegion, RegionAroundIsClippedToTheImage) {
   EXPECT_EQ(image.pixels, gradient(100, 50).pixels);
 }
 
-TEST(CanvasRegion, CaptionAndBannerStillDrawWhereTheyDid) {
+TEST(PixelRegion, CaptionAndBannerStillDrawWhereTheyDid) {
   RgbaImage image = gradient(256, 144);
   overlay::draw_caption(image, {{"Figure 5", overlay::CaptionStyle::normal, true}, {"t = 1.0"}});
   overlay::draw_banner(image, "diverged at t = 31.35");

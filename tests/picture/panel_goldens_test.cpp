@@ -1,14 +1,14 @@
-// The plot panel and the comparison layout are part of the picture too (issue 6): one
+// The plot panel and the comparison layout are part of the picture too: one
 // figure frame with its panel and one comparison frame are pinned. 512×288 is the smallest
 // 16:9 size at which the panel column is wide enough to be drawn.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
-#include "app/still.hpp"
 #include "golden_store.hpp"
+#include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
-#include "video/png_writer.hpp"
+#include "pipeline/frame.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -20,7 +20,7 @@ TEST(PanelGoldens, FigureFrameCarriesThePlotPanel) {
   ASSERT_TRUE(scene.render.panel);
   const int index = 250;  // mid-flip: all three ω curves are moving
   EXPECT_TRUE(matches_golden("panel-fig09-matrix-unstable-x-f0250",
-                             app::render_still(scene, renderer_for(scene), index)));
+                             pipeline::render_still(scene, renderer_for(scene), index)));
 }
 
 // Comparison scenes render through `bookspin render` (several simulators, one tile each).
@@ -33,7 +33,7 @@ TEST(PanelGoldens, ComparisonFrameShowsAllPanelsInLockstep) {
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   // Frame 105: the exact, matrix and quaternion books are mid-flip at the same angle.
   const RgbaImage frame =
-      video::read_png(dir / "compare-methods-x" / "frames" / "frame_00105.png");
+      output::read_png(dir / "compare-methods-x" / "frames" / "frame_00105.png");
   EXPECT_TRUE(matches_golden("compare-methods-x-f0105", frame));
   if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir);
 }

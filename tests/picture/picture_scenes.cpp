@@ -8,7 +8,8 @@
 #include <memory>
 #include <sstream>
 
-#include "app/frame_view.hpp"
+#include "pipeline/decoration.hpp"
+#include "pipeline/render_settings.hpp"
 
 namespace bookspin::picture {
 
@@ -52,16 +53,16 @@ scene::Scene figure_scene(const std::string& name, std::vector<std::string> over
 // faces in the on-axis views.
 scene::Scene book_at_rest(const std::string& label, const std::string& direction,
                           std::vector<std::string> overrides) {
-  overrides.insert(overrides.begin(),
-                   {"initial.angular_velocity=[0.0, 0.0, 0.0]", "initial.jiggle=0.0", "time.frames=1",
-                    "render.panel=false", "scene.title=\"Face mapping: " + label + "\"",
-                    "render.camera_direction=" + direction});
+  overrides.insert(overrides.begin(), {"initial.angular_velocity=[0.0, 0.0, 0.0]",
+                                       "initial.jiggle=0.0", "time.frames=1", "render.panel=false",
+                                       "scene.title=\"Face mapping: " + label + "\"",
+                                       "render.camera_direction=" + direction});
   return figure_scene("fig09-matrix-unstable-x", std::move(overrides));
 }
 
 render::Renderer& renderer_for(const scene::Scene& scene) {
   static std::map<std::string, std::unique_ptr<render::Renderer>> renderers;
-  const render::RenderSettings settings = app::render_settings_for(scene);
+  const render::RenderSettings settings = pipeline::render_settings_for(scene);
   auto& slot = renderers[settings_key(settings)];
   if (!slot) slot = std::make_unique<render::Renderer>(settings);
   return *slot;

@@ -2,11 +2,12 @@
 // way it should: anti-aliasing only at edges, anisotropy only on steeply seen faces.
 #include <gtest/gtest.h>
 
-#include "app/frame_view.hpp"
-#include "app/still.hpp"
 #include "golden_store.hpp"
 #include "image_compare.hpp"
 #include "picture_scenes.hpp"
+#include "pipeline/decoration.hpp"
+#include "pipeline/frame.hpp"
+#include "pipeline/render_settings.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -14,10 +15,10 @@ namespace {
 TEST(RenderKeys, MsaaOffGivesJaggedEdgesOnly) {
   const scene::Scene smooth = figure_scene("fig09-matrix-unstable-x");
   const scene::Scene jagged = figure_scene("fig09-matrix-unstable-x", {"render.msaa=1"});
-  EXPECT_EQ(app::render_settings_for(smooth).msaa_samples, 4);
-  EXPECT_EQ(app::render_settings_for(jagged).msaa_samples, 1);
-  const RgbaImage a = app::render_still(smooth, renderer_for(smooth), 375);
-  const RgbaImage b = app::render_still(jagged, renderer_for(jagged), 375);
+  EXPECT_EQ(pipeline::render_settings_for(smooth).msaa_samples, 4);
+  EXPECT_EQ(pipeline::render_settings_for(jagged).msaa_samples, 1);
+  const RgbaImage a = pipeline::render_still(smooth, renderer_for(smooth), 375);
+  const RgbaImage b = pipeline::render_still(jagged, renderer_for(jagged), 375);
   const Comparison exact = compare_images(b, a, {0, 1.0});
   const Comparison tolerant = compare_images(b, a);
   EXPECT_GT(exact.differing_pixels, 50) << "MSAA off must change the edges";
@@ -25,12 +26,12 @@ TEST(RenderKeys, MsaaOffGivesJaggedEdgesOnly) {
 }
 
 TEST(RenderKeys, AnisotropySettingReachesTheRenderer) {
-  EXPECT_EQ(app::render_settings_for(figure_scene("fig09-matrix-unstable-x")).max_anisotropy,
+  EXPECT_EQ(pipeline::render_settings_for(figure_scene("fig09-matrix-unstable-x")).max_anisotropy,
             render::kAutoAnisotropy);
-  EXPECT_EQ(
-      app::render_settings_for(figure_scene("fig09-matrix-unstable-x", {"render.anisotropy=8"}))
-          .max_anisotropy,
-      8.0f);
+  EXPECT_EQ(pipeline::render_settings_for(
+                figure_scene("fig09-matrix-unstable-x", {"render.anisotropy=8"}))
+                .max_anisotropy,
+            8.0f);
 }
 
 }  // namespace

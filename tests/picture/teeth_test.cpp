@@ -4,15 +4,14 @@
 // reason (first checking that the unchanged frame passes, so the failure is the bug's).
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
-#include <Eigen/Geometry>
-
-#include "app/still.hpp"
 #include "golden_store.hpp"
+#include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
+#include "pipeline/frame.hpp"
 #include "render/face_images.hpp"
-#include "video/png_writer.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -31,7 +30,8 @@ class Teeth : public ::testing::Test {
 
   /// Compares a buggy frame with the golden, leaves the images for a look, and returns
   /// the comparison after checking that it failed by far.
-  Comparison expect_caught(const std::string& golden, const RgbaImage& buggy, const std::string& bug) {
+  Comparison expect_caught(const std::string& golden, const RgbaImage& buggy,
+                           const std::string& bug) {
     const Tolerance tolerance;
     const RgbaImage expected = read_golden(golden);
     const Comparison c = compare_images(buggy, expected, tolerance);
@@ -47,41 +47,45 @@ class Teeth : public ::testing::Test {
 
   /// The golden's frame rendered correctly must pass, or the teeth prove nothing.
   void expect_unchanged_frame_passes(const scene::Scene& scene, int index) {
-    ASSERT_TRUE(matches_golden(golden_name(scene.name, index), app::render_still(scene, renderer_for(scene), index)));
+    ASSERT_TRUE(matches_golden(golden_name(scene.name, index),
+                               pipeline::render_still(scene, renderer_for(scene), index)));
   }
 };
 
 /// Writes the generated default image of a face to a PNG, for render.texture_* keys.
 std::string exported_face(render::FaceImage which, const std::string& file) {
   const auto path = fresh_output_dir("teeth-textures-" + file) / (file + ".png");
-  video::write_png(path, render::generate_face_image(which));
+  output::write_png(path, render::generate_face_image(which));
   return path.string();
 }
 
 TEST_F(Teeth, SwappedFrontAndBackTexturesAreCaught) {
   const std::string front = exported_face(render::FaceImage::front, "front");
   const std::string back = exported_face(render::FaceImage::back, "back");
-  const scene::Scene scene =
-      figure_scene(kScene, {"render.texture_front=\"" + back + "\"", "render.texture_back=\"" + front + "\""});
+  const scene::Scene scene = figure_scene(
+      kScene, {"render.texture_front=\"" + back + "\"", "render.texture_back=\"" + front + "\""});
   expect_unchanged_frame_passes(figure_scene(kScene), 0);
-  expect_caught(golden_name(kScene, 0), app::render_still(scene, renderer_for(scene), 0), "swapped-textures");
+  expect_caught(golden_name(kScene, 0), pipeline::render_still(scene, renderer_for(scene), 0),
+                "swapped-textures");
 }
 
 // A renderer that flips a texture's u (the cover reads right to left) moves no edge of the
 // book; only the artwork inside the cover changes.
 TEST_F(Teeth, MirroredCoverArtIsCaught) {
   const auto path = fresh_output_dir("teeth-textures-mirrored-front") / "front.png";
-  video::write_png(path, mirrored(render::generate_face_image(render::FaceImage::front)));
-  const scene::Scene scene =
-      book_at_rest("front-from-plus-z", "[0.0, 0.0, 1.0]", {"render.texture_front=\"" + path.string() + "\""});
-  expect_caught("face-front-from-plus-z", app::render_still(scene, renderer_for(scene), 0), "mirrored-cover");
+  output::write_png(path, mirrored(render::generate_face_image(render::FaceImage::front)));
+  const scene::Scene scene = book_at_rest("front-from-plus-z", "[0.0, 0.0, 1.0]",
+                                          {"render.texture_front=\"" + path.string() + "\""});
+  expect_caught("face-front-from-plus-z", pipeline::render_still(scene, renderer_for(scene), 0),
+                "mirrored-cover");
 }
 
 TEST_F(Teeth, MirroredFrameIsCaught) {
   const scene::Scene scene = figure_scene(kScene);
   expect_unchanged_frame_passes(scene, 0);
-  const Comparison c = expect_caught(golden_name(kScene, 0),
-                                     mirrored(app::render_still(scene, renderer_for(scene), 0)), "mirrored");
+  const Comparison c =
+      expect_caught(golden_name(kScene, 0),
+                    mirrored(pipeline::render_still(scene, renderer_for(scene), 0)), "mirrored");
   // Not noise: whole regions change colour, so the PSNR is far below that of sub-pixel
   // rasterization differences (≥ 36 dB even for a half-pixel shift, see tolerance_test.cpp)
   // and some pixels change by most of the range.
@@ -95,18 +99,20 @@ TEST_F(Teeth, BookTurnedByThreeDegreesIsCaught) {
   const scene::Scene scene = figure_scene(kScene);
   const int index = pinned_frames(scene.frames)[1];
   expect_unchanged_frame_passes(scene, index);
-  app::ShownFrame frame = app::simulate_to(scene, index);
-  const Eigen::Matrix3d turn = Eigen::AngleAxisd(3.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  pipeline::ShownFrame frame = pipeline::simulate_to(scene, index);
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(3.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
   frame.pose.corners = turn * frame.pose.corners;
-  expect_caught(golden_name(kScene, index), app::render_frame(scene, renderer_for(scene), frame), "turned-3deg");
+  expect_caught(golden_name(kScene, index),
+                pipeline::render_frame(scene, renderer_for(scene), frame), "turned-3deg");
 }
 
 TEST_F(Teeth, NextFrameIsCaught) {
   const scene::Scene scene = figure_scene(kScene);
   const int index = pinned_frames(scene.frames)[1];
   expect_unchanged_frame_passes(scene, index);
-  expect_caught(golden_name(kScene, index), app::render_still(scene, renderer_for(scene), index + 1),
-                "next-frame");
+  expect_caught(golden_name(kScene, index),
+                pipeline::render_still(scene, renderer_for(scene), index + 1), "next-frame");
 }
 
 }  // namespace

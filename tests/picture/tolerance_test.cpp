@@ -6,10 +6,11 @@
 
 #include <cmath>
 
-#include "app/frame_view.hpp"
-#include "app/still.hpp"
 #include "golden_store.hpp"
 #include "picture_scenes.hpp"
+#include "pipeline/decoration.hpp"
+#include "pipeline/frame.hpp"
+#include "pipeline/render_settings.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -19,7 +20,8 @@ render::RenderSettings shifted(render::RenderSettings settings, double pixels) {
   render::Camera& camera = settings.camera;
   const Eigen::Vector3d forward = camera.target - camera.eye;
   const Eigen::Vector3d right = forward.cross(camera.up).normalized();
-  const double pixel = 2 * forward.norm() * std::tan(camera.fov_y_deg * M_PI / 360) / settings.height;
+  const double pixel =
+      2 * forward.norm() * std::tan(camera.fov_y_deg * M_PI / 360) / settings.height;
   camera.eye += pixels * pixel * right;
   camera.target += pixels * pixel * right;
   return settings;
@@ -30,10 +32,11 @@ class Tolerance : public ::testing::TestWithParam<std::string> {};
 TEST_P(Tolerance, QuarterPixelShiftStillMatches) {
   if (update_mode()) GTEST_SKIP() << "goldens are being rewritten";
   const scene::Scene scene = figure_scene(GetParam());
-  render::Renderer renderer(shifted(app::render_settings_for(scene), 0.25));
+  render::Renderer renderer(shifted(pipeline::render_settings_for(scene), 0.25));
   for (const int index : pinned_frames(scene.frames)) {
     const std::string name = golden_name(scene.name, index);
-    const Comparison c = compare_images(app::render_still(scene, renderer, index), read_golden(name));
+    const Comparison c =
+        compare_images(pipeline::render_still(scene, renderer, index), read_golden(name));
     std::cout << name << " a quarter pixel off: " << c.summary({}) << '\n';
     EXPECT_TRUE(c.passed) << name << ": " << c.summary({});
   }

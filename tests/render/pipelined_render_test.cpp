@@ -1,12 +1,11 @@
-// Issue 7: the renderer redraws only where the book was or is, and reads frames back
+// The renderer redraws only where the book was or is, and reads frames back
 // through a ring of pixel buffers. Both must leave the pixels exactly as a full redraw
 // with a synchronous read-back gives them.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "render/renderer.hpp"
 #include "render_test_util.hpp"
@@ -14,13 +13,13 @@
 namespace bookspin::render {
 namespace {
 
-RenderSettings small_settings(bool overlays, int msaa) {
+RenderSettings small_settings(bool markers, int msaa) {
   RenderSettings s;
   s.width = 256;
   s.height = 144;
   s.camera = default_camera(default_bounding_radius, s.width, s.height);
-  s.show_angular_momentum = overlays;
-  s.show_body_axes = overlays;
+  s.show_angular_momentum = markers;
+  s.show_body_axes = markers;
   s.msaa_samples = msaa;
   return s;
 }
@@ -65,7 +64,8 @@ TEST_P(PipelinedRender, OnlyTheBooksRegionRedrawnAndPipelinedReadBackGiveFullRed
   const auto in = frames(s.camera);
   const auto truth = fresh_renders(s, in);
   Renderer synchronous(s);
-  for (std::size_t i = 0; i < in.size(); ++i) expect_same(synchronous.render(in[i]), truth[i], int(i));
+  for (std::size_t i = 0; i < in.size(); ++i)
+    expect_same(synchronous.render(in[i]), truth[i], int(i));
   Renderer pipelined(s);
   std::vector<RgbaImage> out;
   for (const FrameInput& frame : in) {
@@ -95,7 +95,8 @@ TEST(PipelinedRenderApi, CollectWaitsUntilThePipelineIsFull) {
 
 TEST(PipelinedRenderApi, SubmittingIntoAFullPipelineThrows) {
   Renderer renderer(small_settings(false, 1));
-  for (int i = 0; i < renderer.pipeline_depth(); ++i) renderer.submit(FrameInput{testing::default_book()});
+  for (int i = 0; i < renderer.pipeline_depth(); ++i)
+    renderer.submit(FrameInput{testing::default_book()});
   EXPECT_THROW(renderer.submit(FrameInput{testing::default_book()}), std::logic_error);
   EXPECT_TRUE(renderer.flush().has_value());
 }

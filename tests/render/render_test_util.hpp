@@ -1,18 +1,17 @@
 #pragma once
 // Helpers shared by the render tests: book corners, pixel statistics.
+#include <Eigen/Dense>
 #include <cmath>
 #include <cstdint>
-
-#include <Eigen/Dense>
 
 #include "common/rgba_image.hpp"
 
 namespace bookspin::render::testing {
 
-/// Corners (3×8, physics.md §1 numbering) of an a×b×c box, rotated by R, moved by t.
-inline Eigen::Matrix<double, 3, 8> box_corners(const Eigen::Vector3d& size,
-                                               const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity(),
-                                               const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
+/// Corners (3×8, docs/physics.md §1 numbering) of an a×b×c box, rotated by R, moved by t.
+inline Eigen::Matrix<double, 3, 8> box_corners(
+    const Eigen::Vector3d& size, const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity(),
+    const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
   Eigen::Matrix<double, 3, 8> corners;
   for (int p = 0; p < 8; ++p) {
     Eigen::Vector3d body;
@@ -22,8 +21,9 @@ inline Eigen::Matrix<double, 3, 8> box_corners(const Eigen::Vector3d& size,
   return corners;
 }
 
-inline Eigen::Matrix<double, 3, 8> default_book(const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity(),
-                                                const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
+inline Eigen::Matrix<double, 3, 8> default_book(
+    const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity(),
+    const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
   return box_corners({1.878, 2.9085, 0.5}, rotation, offset);
 }
 
@@ -45,7 +45,8 @@ struct Mask {
   double height() const { return max_y - min_y + 1; }
 };
 
-inline Mask difference_mask(const RgbaImage& image, const RgbaImage& background, double threshold = 24) {
+inline Mask difference_mask(const RgbaImage& image, const RgbaImage& background,
+                            double threshold = 24) {
   Mask mask;
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "output/png_writer.hpp"
 #include "render_test_util.hpp"
 
 namespace bookspin::render {
@@ -180,7 +181,7 @@ TEST_F(RendererTest, SeveralRenderersCoexist) {
   EXPECT_EQ(before.pixels, after.pixels);
 }
 
-// ---- overlays ---------------------------------------------------------------------------
+// ---- markers ---------------------------------------------------------------------------
 
 int count_color(const RgbaImage& image, auto predicate) {
   int count = 0;
@@ -189,7 +190,7 @@ int count_color(const RgbaImage& image, auto predicate) {
   return count;
 }
 
-TEST(RendererOverlays, ArrowAndAxesAppear) {
+TEST(RendererMarkers, ArrowAndAxesAppear) {
   RenderSettings settings = axis_view({0.2, 0.3, 1});
   settings.show_angular_momentum = true;
   settings.show_body_axes = true;
@@ -328,7 +329,7 @@ TEST(RendererTextures, CustomFrontPngIsUsed) {
     green.pixels[i + 3] = 255;
   }
   const std::string path = std::filesystem::temp_directory_path() / "bookspin_render_green.png";
-  write_png(green, path);
+  output::write_png(path, green, 1);
   RenderSettings settings = axis_view({0, 0, 1});
   settings.textures.front = path;
   settings.msaa_samples = 1;  // also covers the no-MSAA path

@@ -1,0 +1,260 @@
+// Bench sections that time whole renders: the pipeline against the encoder floor, and
+// resolution scaling. Renders go through pipeline::render_clip, in this process, so they
+// measure exactly what `bookspin render` does.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench/clock.hpp"
+#include "bench/sections.hpp"
+#include "output/mp4_encoder.hpp"
+#include "pipeline/clip.hpp"
+#include "pipeline/clip_request.hpp"
+#include "pipeline/decoration.hpp"
+#include "pipeline/frame.hpp"
+#include "pipeline/frame_source.hpp"
+#include "pipeline/render_settings.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// One timed run: wall time and the CPU time of every thread of this process meanwhile.
+struct Timing {
+  double wall = 1e300, cpu = 0.0;
+  /// Keeps `run` when its wall time is shorter: the best run, and that run's CPU time.
+  void keep_best(const Timing& run) {
+    if (run.wall < wall) *this = run;
+  }
+};
+
+class Stopwatch {
+ public:
+  Timing elapsed() const {
+    return {std::chrono::duration<double>(Clock::now() - wall_start_).count(),
+            process_cpu_seconds() - cpu_start_};
+  }
+
+ private:
+  Clock::time_point wall_start_ = Clock::now();
+  double cpu_start_ = process_cpu_seconds();
+};
+
+std::vector<std::string> size_overrides(int width, int height) {
+  return {"render.width=" + std::to_string(width), "render.height=" + std::to_string(height)};
+}
+
+/// What `render SCENE --set render.width=W --set render.height=H --frames N [--no-png] -o
+/// SCRATCH/NAME` asks of the pipeline, plus `extra` overrides.
+pipeline::ClipRequest clip_request(const BenchContext& c, const std::string& name, int width,
+                                   int height, int frames, bool png,
+                                   std::vector<std::string> extra = {}) {
+  std::vector<std::string> overrides = size_overrides(width, height);
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  pipeline::ClipRequest request;
+  request.scene = scene::parse_scene(c.options.scene_path, overrides);
+  request.scene.frames = frames;
+  request.out_dir = c.scratch / name;
+  request.write_png = png;
+  request.jobs = c.options.jobs;
+  return request;
+}
+
+/// Wall and CPU time of a whole clip (start-up, every frame, finishing the files).
+Timing timed_render(const pipeline::ClipRequest& request) {
+  const Stopwatch stopwatch;
+  pipeline::render_clip(request);
+  const Timing timing = stopwatch.elapsed();
+  std::filesystem::remove_all(request.out_dir);  // leave the disk as the next run found it
+  return timing;
+}
+
+scene::Scene pipeline_scene(const BenchContext& c, int width, int height, int frames) {
+  scene::Scene scene = scene::parse_scene(c.options.scene_path, size_overrides(width, height));
+  scene.frames = frames;
+  return scene;
+}
+
+/// Every frame exactly as the render command makes it, held in memory.
+std::vector<RgbaImage> prerender(const scene::Scene& scene) {
+  render::Renderer renderer(pipeline::render_settings_for(scene));
+  pipeline::FrameSource source(scene);
+  pipeline::ShownFrame frame;
+  std::vector<RgbaImage> frames;
+  frames.reserve(static_cast<std::size_t>(scene.frames));
+  for (int index = 0; index < scene.frames; ++index) {
+    pipeline::advance(source, index, scene, frame);
+    frames.push_back(pipeline::render_frame(scene, renderer, frame));
+  }
+  return frames;
+}
+
+/// The floor: the same encoder with the same settings as the render command, fed frames
+/// that are already rendered. Opening the encoder and finishing the file are included, as
+/// they are in the render's time.
+Timing timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& frames,
+                      const std::filesystem::path& file, int jobs) {
+  const Stopwatch stopwatch;
+  output::Mp4Encoder encoder(file, pipeline::encoder_settings(scene, jobs));
+  for (const RgbaImage& frame : frames) encoder.add_frame(frame);
+  encoder.finish();
+  const Timing timing = stopwatch.elapsed();
+  std::filesystem::remove(file);
+  return timing;
+}
+
+constexpr int kPipelineWidth = 1280, kPipelineHeight = 720;
+
+/// MemAvailable from /proc/meminfo in bytes; 0 where it cannot be read.
+double available_memory_bytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kib = 0.0;
+  while (meminfo >> key >> kib) {
+    if (key == "MemAvailable:") return kib * 1024.0;
+    meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return 0.0;
+}
+
+std::string gib_text(double bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+  return text;
+}
+
+std::string frames_text(int frames, int width, int height) {
+  return std::to_string(frames) + " frames " + std::to_string(width) + "x" + std::to_string(height);
+}
+
+}  // namespace
+
+// The floor must encode frames that already exist, so they are held in memory: reading
+// them from disk would slow the floor down and flatter the ratios. A run whose frames do
+// not fit (at most 80% of what is available, leaving room for the encoder and the renders)
+// is refused up front instead of being killed for memory half-way.
+void check_pipeline_memory(const BenchOptions& options) {
+  const double needed = 4.0 * kPipelineWidth * kPipelineHeight * options.frames;
+  const double available = available_memory_bytes();
+  if (available > 0.0 && needed > 0.8 * available) {
+    throw BenchLimitError(
+        "bench: --frames " + std::to_string(options.frames) + " holds " + gib_text(needed) +
+        " of pre-rendered " + std::to_string(kPipelineWidth) + "x" +
+        std::to_string(kPipelineHeight) + " frames for the encoder floor, more than 80% of the " +
+        gib_text(available) + " available; use fewer --frames (or --only other sections)");
+  }
+}
+
+namespace {
+
+/// The pipeline's timings, each the best over the rounds.
+struct PipelineTimes {
+  Timing floor, no_png, png, anisotropic, no_msaa, start_up;
+};
+
+std::string cores_busy(const Timing& t) {
+  char text[64];
+  std::snprintf(text, sizeof text, "all threads; %.2f cores busy on average", t.cpu / t.wall);
+  return text;
+}
+
+/// The wall times and their ratios to the floor.
+void report_wall(BenchReport& report, const PipelineTimes& best, const scene::Scene& scene,
+                 const std::string& what, int rounds) {
+  const std::string of = ", best of " + std::to_string(rounds) + " alternated runs";
+  const auto row = [&](const std::string& metric, const Timing& t, const std::string& note) {
+    report.add({"pipeline", metric + ", " + what, t.wall, "s", note + of});
+  };
+  const auto ratio = [&](const std::string& metric, const Timing& t, const std::string& note) {
+    report.add({"pipeline", metric + " / floor", t.wall / best.floor.wall, "x", note});
+  };
+  const scene::RenderOptions& r = scene.render;
+  row("encoder alone (the floor)", best.floor,
+      r.codec + " crf " + std::to_string(r.crf) + " preset " + r.preset +
+          ", frames rendered beforehand");
+  row("render --no-png", best.no_png, "in-process render_clip");
+  row("render with PNGs", best.png, "PNG zlib level " + std::to_string(r.png_compression));
+  row("render --no-png, 4x anisotropic filtering", best.anisotropic,
+      "forced; on a software rasterizer the default is trilinear");
+  row("render --no-png, render.msaa = 1", best.no_msaa, "forced; no anti-aliasing");
+  ratio("render --no-png", best.no_png, "the pipeline's wall time over the encoder's alone");
+  ratio("render with PNGs", best.png, "the same with PNG frames");
+  ratio("render --no-png, 4x anisotropic", best.anisotropic,
+        "for comparison: what anisotropic filtering costs on this GL");
+  ratio("render --no-png, render.msaa = 1", best.no_msaa,
+        "for comparison: what 4x MSAA costs on this GL");
+}
+
+/// Where the time goes: with the cores busy in both runs, the wall ratio follows the CPU
+/// ratio, so these rows say how much work the render adds, whatever the machine's load.
+void report_cpu(BenchReport& report, const PipelineTimes& best, const std::string& what) {
+  const auto row = [&](const std::string& metric, const Timing& t, const std::string& note) {
+    report.add({"pipeline", metric, t.cpu, "s", note + cores_busy(t)});
+  };
+  const auto ratio = [&](const std::string& metric, const Timing& t) {
+    report.add({"pipeline", metric + " / floor, CPU time", t.cpu / best.floor.cpu, "x",
+                "for comparison: the work the render adds to the encoder's"});
+  };
+  row("encoder alone (the floor), CPU time, " + what, best.floor, "");
+  row("render --no-png, CPU time, " + what, best.no_png, "");
+  row("render with PNGs, CPU time, " + what, best.png, "");
+  row("render --no-png start-up (2 frames), CPU time", best.start_up,
+      "EGL, textures, shader compilation, encoder set-up; ");
+  ratio("render --no-png", best.no_png);
+  ratio("render with PNGs", best.png);
+}
+
+}  // namespace
+
+// The runs are alternated round by round and each keeps its best (shortest) time: on a
+// shared 2-core machine one run can be slowed by a neighbour by half; the best of
+// alternated runs compares them under the same conditions.
+void bench_pipeline(const BenchContext& c) {
+  const int frames = c.options.frames, rounds = std::max(1, c.options.rounds);
+  const int w = kPipelineWidth, h = kPipelineHeight;
+  const scene::Scene scene = pipeline_scene(c, w, h, frames);
+  const std::vector<RgbaImage> rendered = prerender(scene);
+  const auto anisotropic =
+      clip_request(c, "anisotropic", w, h, frames, false, {"render.anisotropy=4"});
+  const auto no_msaa = clip_request(c, "no-msaa", w, h, frames, false, {"render.msaa=1"});
+  PipelineTimes best;
+  for (int round = 0; round < rounds; ++round) {
+    best.floor.keep_best(timed_encoding(scene, rendered, c.scratch / "floor.mp4", c.options.jobs));
+    best.no_png.keep_best(timed_render(clip_request(c, "no-png", w, h, frames, false)));
+    best.png.keep_best(timed_render(clip_request(c, "png", w, h, frames, true)));
+    best.anisotropic.keep_best(timed_render(anisotropic));
+    best.no_msaa.keep_best(timed_render(no_msaa));
+    best.start_up.keep_best(timed_render(clip_request(c, "start-up", w, h, 2, false)));
+  }
+  const std::string what = frames_text(frames, w, h);
+  report_wall(*c.report, best, scene, what, rounds);
+  report_cpu(*c.report, best, what);
+}
+
+void bench_resolution(const BenchContext& c) {
+  struct Size {
+    int width, height, frames;
+  };
+  // Fewer frames where each costs more, so every size takes seconds, not minutes.
+  const int n = c.options.frames;
+  const Size sizes[] = {{640, 360, n},
+                        {1280, 720, n},
+                        {1920, 1080, std::max(2, n / 3)},
+                        {3840, 2160, std::max(2, n / 10)}};
+  for (const Size& s : sizes) {
+    const double seconds =
+        timed_render(clip_request(c, "resolution", s.width, s.height, s.frames, false)).wall;
+    c.report->add({"resolution", "render --no-png, " + frames_text(s.frames, s.width, s.height),
+                   s.frames / seconds, "frames/s", "whole command, start-up included"});
+  }
+}
+
+}  // namespace bookspin::bench

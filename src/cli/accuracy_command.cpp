@@ -1,0 +1,100 @@
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include "analysis/accuracy.hpp"
+#include "cli/commands.hpp"
+#include "output/atomic_output.hpp"
+#include "output/png_writer.hpp"
+#include "overlay/plot.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::cli {
+
+namespace {
+
+std::string method_name(const analysis::Method& m) {
+  return std::string(physics::to_string(m.kind)) + " " +
+         std::string(physics::to_string(m.integrator));
+}
+
+std::string csv_line(const analysis::AccuracyRow& r) {
+  char line[512];
+  std::snprintf(line, sizeof line, "%s,%s,%.17g,%ld,%.17g,%.6e,%.6e,%.6e,%.17g,%.6e,%.2f,%d",
+                std::string(physics::to_string(r.method.kind)).c_str(),
+                std::string(physics::to_string(r.method.integrator)).c_str(), r.dt, r.steps,
+                r.t_end, r.orientation_error, r.energy_drift, r.L_drift, r.flip_period,
+                r.flip_period_error, r.ns_per_step, r.diverged ? 1 : 0);
+  return line;
+}
+
+void print_row(const analysis::AccuracyRow& r) {
+  std::printf("%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12.3e %9.1f%s\n", method_name(r.method).c_str(),
+              1.0 / r.dt, r.orientation_error, r.energy_drift, r.L_drift, r.flip_period_error,
+              r.ns_per_step, r.diverged ? "  diverged" : "");
+  std::fflush(stdout);
+}
+
+void write_csv(const std::filesystem::path& path, const std::vector<analysis::AccuracyRow>& rows) {
+  output::AtomicFile file(path);
+  std::ofstream out(file.temp_path(), std::ios::binary);
+  out << "model,integrator,dt,steps,t_end,orientation_error_rad,energy_drift,L_drift,"
+         "flip_period,flip_period_error,ns_per_step,diverged\n";
+  for (const auto& r : rows) out << csv_line(r) << '\n';
+  out.close();
+  if (!out) throw_output_error("cannot write", path, errno);
+  file.commit();
+}
+
+overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, double flips) {
+  overlay::PlotSpec spec;
+  spec.title = "Orientation error after " + std::to_string(static_cast<int>(flips)) +
+               " flips, against the exact solution";
+  spec.x_label = "time step dt (time units)";
+  spec.y_label = "orientation error (rad)";
+  spec.log_x = spec.log_y = true;
+  for (const auto& method : analysis::all_methods()) {
+    overlay::Series s;
+    s.label = method_name(method);
+    for (const auto& r : rows) {
+      if (r.method.kind != method.kind || r.method.integrator != method.integrator) continue;
+      s.x.push_back(r.dt);
+      s.y.push_back(r.orientation_error);
+    }
+    overlay::palette_colour(static_cast<int>(method.integrator), s.r, s.g, s.b);
+    s.dashed = method.kind == physics::ModelKind::rigid_quaternion;
+    if (method.kind == physics::ModelKind::particle)
+      s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(method.integrator);
+    spec.series.push_back(std::move(s));
+  }
+  return spec;
+}
+
+}  // namespace
+
+int accuracy_command(const AccuracyOptions& options) {
+  const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+  analysis::AccuracySettings settings{scene.book, scene.initial, scene.model, options.flips};
+  const auto exact = analysis::exact_reference(settings);
+  std::printf("%s: exact flip period T/2 = 2K(k)/lambda = %.9g time units (k = %.9g), %g flips\n",
+              scene.name.c_str(), exact.flip_period(), exact.modulus(), options.flips);
+  std::printf("%-28s %-7s %12s %11s %11s %12s %9s\n", "method", "dt", "orient. err", "energy drift",
+              "|L| drift", "flip T err", "ns/step");
+  std::vector<analysis::AccuracyRow> rows;
+  for (const auto& method : analysis::all_methods()) {
+    for (double dt : options.dts) {
+      rows.push_back(analysis::measure(settings, exact, method, dt));
+      print_row(rows.back());
+    }
+  }
+  const std::filesystem::path out(options.out_dir);
+  std::filesystem::create_directories(out);
+  write_csv(out / (scene.name + "-accuracy.csv"), rows);
+  output::write_png(out / (scene.name + "-accuracy.png"),
+                    overlay::plot_image(accuracy_plot(rows, options.flips), 1400, 900));
+  std::printf("wrote %s and %s\n", (out / (scene.name + "-accuracy.csv")).c_str(),
+              (out / (scene.name + "-accuracy.png")).c_str());
+  return kExitOk;
+}
+
+}  // namespace bookspin::cli

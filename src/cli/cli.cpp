@@ -1,0 +1,141 @@
+#include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
+#include "cli/run_guarded.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::cli {
+
+namespace {
+
+constexpr const char* kSetHelp =
+    "Override a scene key, value in TOML syntax (repeatable), e.g. --set time.dt=0.01 "
+    "--set model.kind='\"rigid-matrix\"' --set book.size=[1,2,0.5]";
+
+void add_simulate(CLI::App& cli, SimulateOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "simulate", "Run a scene's simulation without rendering and write the diagnostics CSV");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--csv", options.csv_path,
+                  "Output CSV, one row per frame (frame 0 = initial state); '-' for stdout")
+      ->capture_default_str();
+}
+
+void add_render(CLI::App& cli, RenderArgs& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "render",
+      "Render a scene to OUT/<scene>.mp4, OUT/<scene>/frames/ and OUT/<scene>/diagnostics.csv");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--frames", options.frames,
+                  "Render only the first N frames (overrides time.frames)")
+      ->check(CLI::Range(1, scene::kMaxFrames));
+  cmd->add_flag("--no-png", options.no_png, "Skip the PNG frames (MP4 and CSV only)");
+  cmd->add_option("-j,--jobs", options.jobs,
+                  "Worker threads for PNG compression and encoding (default: all cores)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--png-compression", options.png_compression,
+                  "zlib level of the PNG frames, 0 (fastest) … 9 (smallest); overrides "
+                  "render.png_compression")
+      ->check(CLI::Range(0, 9));
+}
+
+void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "accuracy", "Compare every model and integrator with the exact solution over a range of dt");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML): book, initial spin, toggles")
+      ->required();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("-o,--out", options.out_dir, "Output directory for the CSV and the plot")
+      ->capture_default_str();
+  cmd->add_option("--flips", options.flips, "Run length in exact flip periods")
+      ->check(CLI::Range(1.0, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--dt", options.dts, "Time steps to try (time units)")
+      ->check(CLI::PositiveNumber)
+      ->take_all();
+}
+
+void add_plot(CLI::App& cli, PlotOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "plot",
+      "Simulate a scene and plot its diagnostics over the whole run into OUT/<scene>-plot.png");
+  cmd->add_option("SCENE", options.scene_path,
+                  "Scene file (TOML); a comparison scene plots every panel")
+      ->required();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--width", options.width, "Image width in pixels")
+      ->check(CLI::Range(320, scene::kMaxDimension))
+      ->capture_default_str();
+  cmd->add_option("--height", options.height, "Image height in pixels")
+      ->check(CLI::Range(240, scene::kMaxDimension))
+      ->capture_default_str();
+}
+
+void add_gallery(CLI::App& cli, GalleryOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "gallery", "Write OUT_DIR/index.html listing each scene's clip, poster frame and plot");
+  cmd->add_option("OUT_DIR", options.out_dir,
+                  "Folder holding the rendered clips; the page goes there")
+      ->required();
+  cmd->add_option("SCENES", options.scene_paths, "Scene files (TOML), in page order")->required();
+}
+
+int report(const std::string& message, int code) {
+  std::cerr << "bookspin: error: " << message << '\n';
+  return code;
+}
+
+/// llvmpipe sizes its rasterizer thread pool by the cores unless told otherwise; `render
+/// --jobs` caps it too. Set once, before any GL context exists (GPU drivers ignore it).
+void cap_gl_threads(const CLI::App& cli, int jobs) {
+  if (cli.got_subcommand("render") && jobs > 0)
+    setenv("LP_NUM_THREADS", std::to_string(jobs).c_str(), /*overwrite=*/0);
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+  install_interrupt_handlers();  // first, so an early Ctrl-C is handled the same way
+  CLI::App cli{"bookspin: simulate and render the unstable rotation of a book", "bookspin"};
+  cli.require_subcommand(1);
+  SimulateOptions simulate;
+  add_simulate(cli, simulate);
+  RenderArgs render;
+  add_render(cli, render);
+  AccuracyOptions accuracy;
+  add_accuracy(cli, accuracy);
+  PlotOptions plot;
+  add_plot(cli, plot);
+  GalleryOptions gallery;
+  add_gallery(cli, gallery);
+  cli.add_subcommand("info",
+                     "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders");
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return report(std::string(e.what()) + " (see bookspin --help)", kExitUsage);
+  }
+  cap_gl_threads(cli, render.jobs);
+  return run_guarded([&] {
+    if (cli.got_subcommand("simulate")) return simulate_command(simulate);
+    if (cli.got_subcommand("render")) return render_command(render);
+    if (cli.got_subcommand("info")) return info_command();
+    if (cli.got_subcommand("accuracy")) return accuracy_command(accuracy);
+    if (cli.got_subcommand("plot")) return plot_command(plot);
+    if (cli.got_subcommand("gallery")) return gallery_command(gallery);
+    return static_cast<int>(kExitOk);
+  });
+}
+
+}  // namespace bookspin::cli

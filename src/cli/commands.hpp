@@ -1,0 +1,71 @@
+#pragma once
+// The bookspin subcommands. Each returns the process exit status.
+#include <string>
+#include <vector>
+
+#include "cli/run_guarded.hpp"
+
+namespace bookspin::cli {
+
+struct SimulateOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;  ///< "key=value", value in TOML syntax
+  std::string csv_path = "-";          ///< "-" is standard output
+};
+
+int simulate_command(const SimulateOptions& options);
+
+struct RenderArgs {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_dir = "out";
+  int frames = 0;  ///< > 0 overrides time.frames
+  bool no_png = false;
+  int jobs = 0;              ///< worker threads; 0 = number of cores
+  int png_compression = -1;  ///< zlib level 0–9 for the frames; −1 = render.png_compression
+};
+
+/// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv.
+int render_command(const RenderArgs& options);
+
+struct AccuracyOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_dir = "out";
+  double flips = 10.0;
+  std::vector<double> dts{1.0 / 15, 1.0 / 30, 1.0 / 60, 1.0 / 120, 1.0 / 240};
+};
+
+/// Every model × integrator × dt against the exact solution: table on stdout,
+/// OUT/<scene>-accuracy.csv and a log-log plot OUT/<scene>-accuracy.png.
+int accuracy_command(const AccuracyOptions& options);
+
+/// Prints the EGL/GL and FFmpeg set-up.
+int info_command();
+
+struct PlotOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_dir = "out";
+  int width = 1600;   ///< pixels
+  int height = 1000;  ///< pixels
+};
+
+/// Simulates a scene (every panel of a comparison) over its whole run and writes
+/// OUT/<scene>-plot.png: the plot panel's curves (body-frame ω, E/E0 − 1, shape error)
+/// against time, without the cursor.
+int plot_command(const PlotOptions& options);
+
+struct GalleryOptions {
+  std::string out_dir = "out";
+  std::vector<std::string> scene_paths;
+};
+
+/// Writes OUT/index.html: for each scene its title, description, poster frame, clip
+/// (<video>), static plot and diagnostics CSVs, each only where the file exists under OUT.
+int gallery_command(const GalleryOptions& options);
+
+/// Parses argv and runs the chosen subcommand.
+int run_cli(int argc, char** argv);
+
+}  // namespace bookspin::cli

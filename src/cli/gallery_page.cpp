@@ -1,0 +1,106 @@
+#include "cli/gallery_page.hpp"
+
+#include <sstream>
+
+namespace bookspin::cli {
+
+namespace {
+
+constexpr const char* kStyle = R"(
+body { font-family: "DejaVu Sans", sans-serif; margin: 2rem auto; max-width: 1400px; padding: 0 1rem;
+       background: #f4f4f1; color: #1c1c1c; }
+h1 { font-size: 1.6rem; }
+.clip { background: #fff; border-radius: 8px; box-shadow: 0 1px 4px rgba(0,0,0,.15);
+        margin: 1.5rem 0; padding: 1rem 1.2rem; }
+.clip h2 { font-size: 1.2rem; margin: 0 0 .3rem; }
+.clip p { margin: .2rem 0 .8rem; }
+.media { display: grid; grid-template-columns: repeat(auto-fit, minmax(420px, 1fr)); gap: 1rem; }
+.media video, .media img { width: 100%; height: auto; background: #111; border-radius: 4px; }
+.media img.plot { background: #fff; border: 1px solid #ddd; }
+.missing { color: #a33; }
+.files { font-size: .9rem; }
+)";
+
+/// A path inside an attribute: names are [A-Za-z0-9._-] and '/', escaped anyway. (Built with
+/// append: GCC 12 warns falsely, -Wrestrict, on "literal" + std::string.)
+std::string attr(const std::string& path) {
+  std::string quoted(1, '"');
+  quoted.append(html_escape(path)).append(1, '"');
+  return quoted;
+}
+
+void write_media(std::ostream& out, const GalleryEntry& e) {
+  out << "<div class=\"media\">\n";
+  if (!e.video.empty()) {
+    out << "<video controls preload=\"metadata\" src=" << attr(e.video);
+    if (!e.poster.empty()) out << " poster=" << attr(e.poster);
+    out << "></video>\n";
+  } else if (!e.poster.empty()) {
+    out << "<img src=" << attr(e.poster) << " alt=\"frame of " << html_escape(e.title) << "\">\n";
+  } else {
+    out << "<p class=\"missing\">not rendered yet (no " << html_escape(e.name) << ".mp4)</p>\n";
+  }
+  if (!e.plot.empty()) {
+    out << "<a href=" << attr(e.plot)
+        << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.plot) << " alt=\"diagnostics of "
+        << html_escape(e.title) << "\"></a>\n";
+  }
+  out << "</div>\n";
+}
+
+void write_entry(std::ostream& out, const GalleryEntry& e) {
+  out << "<section class=\"clip\" id=" << attr(e.name) << ">\n<h2>" << html_escape(e.title)
+      << "</h2>\n";
+  if (!e.description.empty()) out << "<p>" << html_escape(e.description) << "</p>\n";
+  write_media(out, e);
+  out << "<p class=\"files\">" << html_escape(e.name);
+  if (!e.video.empty()) out << " · <a href=" << attr(e.video) << ">MP4</a>";
+  for (const auto& csv : e.csvs) {
+    const std::string file = csv.substr(csv.rfind('/') + 1);  // npos + 1 = 0: the whole path
+    out << " · <a href=" << attr(csv) << ">" << html_escape(file) << "</a>";
+  }
+  out << "</p>\n</section>\n";
+}
+
+}  // namespace
+
+std::string html_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string gallery_html(const std::vector<GalleryEntry>& entries) {
+  std::ostringstream out;
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      << "<link rel=\"icon\" href=\"data:,\">\n"  // no favicon request, so no console error
+      << "<title>bookspin: the spinning book, figure by figure</title>\n<style>" << kStyle
+      << "</style>\n</head>\n<body>\n<h1>bookspin: the spinning book, figure by figure</h1>\n";
+  for (const auto& e : entries) write_entry(out, e);
+  out << "</body>\n</html>\n";
+  return out.str();
+}
+
+}  // namespace bookspin::cli

@@ -1,0 +1,23 @@
+#include <iostream>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "output/ffmpeg_info.hpp"
+#include "render/renderer.hpp"
+
+namespace bookspin::cli {
+
+int info_command() {
+  for (const auto& line : output::ffmpeg_info()) std::cout << line << '\n';
+  std::cout.flush();
+  const render::GlInfo gl = render::gl_info();
+  for (const auto& line : gl.lines()) std::cout << line << '\n';
+  const float anisotropy = render::effective_anisotropy(render::kAutoAnisotropy, gl.gl_renderer);
+  std::cout << "texture filtering (render.anisotropy = 0): "
+            << (anisotropy > 1.0f ? std::to_string(static_cast<int>(anisotropy)) + "x anisotropic"
+                                  : std::string("trilinear (software rasterizer)"))
+            << '\n';
+  return kExitOk;
+}
+
+}  // namespace bookspin::cli

@@ -1,0 +1,40 @@
+#include "cli/run_guarded.hpp"
+
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "common/errors.hpp"
+#include "output/mp4_encoder.hpp"
+#include "render/render_error.hpp"
+
+namespace bookspin::cli {
+
+namespace {
+
+int report(const char* kind, const std::string& message, int code) {
+  std::cerr << "bookspin: " << kind << ": " << message << '\n';
+  return code;
+}
+
+}  // namespace
+
+int run_guarded(const std::function<int()>& command) {
+  try {
+    return command();
+  } catch (const InputError& e) {
+    return report("error", e.what(), kExitUsage);
+  } catch (const OutputError& e) {
+    return report("error", e.what(), kExitFailure);
+  } catch (const render::RenderError& e) {
+    return report("error", e.what(), kExitFailure);
+  } catch (const output::EncoderError& e) {
+    return report("error", e.what(), kExitFailure);
+  } catch (const std::exception& e) {
+    return report("internal error", e.what(), kExitInternal);
+  } catch (...) {
+    return report("internal error", "unknown exception", kExitInternal);
+  }
+}
+
+}  // namespace bookspin::cli

@@ -1,0 +1,45 @@
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include "cli/commands.hpp"
+#include "output/atomic_output.hpp"
+#include "pipeline/simulation.hpp"
+
+namespace bookspin::cli {
+
+namespace {
+
+void warn_diverged(const scene::Scene& scene, double t, int rows) {
+  std::cerr << "bookspin: warning: " << scene.name << ": simulation diverged at t = " << t
+            << "; kept the " << rows << " rows before it\n";
+}
+
+}  // namespace
+
+int simulate_command(const SimulateOptions& options) {
+  const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+  if (!scene.compare.empty()) {
+    // Several runs do not fit one CSV; `render` writes one per panel.
+    throw InputError(options.scene_path +
+                     ": a comparison scene ([[compare]]) has one run per panel: `bookspin "
+                     "render` writes OUT/<scene>/diagnostics-<panel>.csv for each");
+  }
+  pipeline::SimulationResult result;
+  if (options.csv_path == "-") {
+    result = pipeline::write_diagnostics_rows(scene, std::cout);
+    std::cout.flush();
+  } else {
+    output::AtomicFile file(options.csv_path);
+    std::ofstream out(file.temp_path(), std::ios::binary);
+    if (!out) throw_output_error("cannot create", options.csv_path, errno);
+    result = pipeline::write_diagnostics_rows(scene, out);
+    out.close();
+    if (!out) throw_output_error("cannot write", options.csv_path, errno);
+    file.commit();
+  }
+  if (result.diverged_at) warn_diverged(scene, *result.diverged_at, result.rows);
+  return kExitOk;
+}
+
+}  // namespace bookspin::cli

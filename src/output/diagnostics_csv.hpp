@@ -1,0 +1,33 @@
+#pragma once
+// The diagnostics CSV sink: one row per frame, columns fixed (docs/physics.md §9).
+#include <filesystem>
+#include <string>
+
+#include "output/atomic_output.hpp"
+#include "physics/simulator.hpp"
+
+namespace bookspin::output {
+
+/// The header line (no newline): frame,t,omega_x,…,quaternion_norm.
+const std::string& diagnostics_csv_header();
+
+/// One row (no newline) for `frame`; numbers in shortest round-trip form (std::to_chars), so
+/// the same state always gives the same bytes. Frames: omega body, L world (docs/physics.md §9).
+std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d);
+
+/// A diagnostics CSV written row by row under a temporary name (its folder made if missing)
+/// and put in place by commit(); without commit() nothing is left behind. Throws
+/// OutputError naming the path.
+class DiagnosticsCsvFile {
+ public:
+  explicit DiagnosticsCsvFile(const std::filesystem::path& path);
+  void add(int frame, const physics::Diagnostics& d);
+  /// Closes the file and checks every write (idempotent); commit() does it too.
+  void close() { file_.close(); }
+  void commit() { file_.commit(); }
+
+ private:
+  AtomicTextFile file_;
+};
+
+}  // namespace bookspin::output

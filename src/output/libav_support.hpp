@@ -1,0 +1,66 @@
+#pragma once
+// Internal to the output stage: RAII owners and error/log plumbing for FFmpeg.
+// Nothing outside src/output (and its tests) should include this: it drags in libav headers.
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/frame.h>
+#include <libswscale/swscale.h>
+}
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace bookspin::output::libav {
+
+/// av_strerror text for a libav error code, e.g. "No space left on device".
+std::string error_text(int code);
+
+/// Once per process: libav logs only AV_LOG_ERROR and worse, through a
+/// callback that diverts messages into an active LogCapture on this thread.
+void configure_logging();
+
+/// While alive, libav error messages logged on this thread are collected in
+/// text() instead of printed (used to explain why an encoder failed to open).
+class LogCapture {
+ public:
+  LogCapture();
+  ~LogCapture();
+  LogCapture(const LogCapture&) = delete;
+  LogCapture& operator=(const LogCapture&) = delete;
+  /// Captured messages joined with "; ", trailing newlines stripped.
+  const std::string& text() const { return text_; }
+
+ private:
+  std::string text_;
+  std::string* previous_;
+};
+
+struct CodecContextDeleter {
+  void operator()(AVCodecContext* context) const { avcodec_free_context(&context); }
+};
+struct FrameDeleter {
+  void operator()(AVFrame* frame) const { av_frame_free(&frame); }
+};
+struct PacketDeleter {
+  void operator()(AVPacket* packet) const { av_packet_free(&packet); }
+};
+struct SwsDeleter {
+  void operator()(SwsContext* context) const { sws_freeContext(context); }
+};
+/// Closes the output file (if the muxer opened one) and frees the context.
+struct OutputFormatDeleter {
+  void operator()(AVFormatContext* context) const;
+};
+struct DictionaryDeleter {
+  void operator()(AVDictionary* dictionary) const { av_dict_free(&dictionary); }
+};
+
+using CodecContextPtr = std::unique_ptr<AVCodecContext, CodecContextDeleter>;
+using FramePtr = std::unique_ptr<AVFrame, FrameDeleter>;
+using PacketPtr = std::unique_ptr<AVPacket, PacketDeleter>;
+using SwsPtr = std::unique_ptr<SwsContext, SwsDeleter>;
+using OutputFormatPtr = std::unique_ptr<AVFormatContext, OutputFormatDeleter>;
+
+}  // namespace bookspin::output::libav

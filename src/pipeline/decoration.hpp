@@ -1,0 +1,31 @@
+#pragma once
+// The 2D decoration of a frame: caption, plot panel, divergence banner (overlays drawn on
+// the rendered image; the renderer knows nothing of them).
+#include <optional>
+#include <vector>
+
+#include "common/rgba_image.hpp"
+#include "overlay/caption.hpp"
+#include "physics/simulator.hpp"
+#include "pipeline/diagnostics_history.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::pipeline {
+
+/// "diverged at t = 31.35".
+std::string divergence_text(double t);
+
+/// The caption of a frame: title, model and toggles, time; plus the divergence warning.
+std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double t,
+                                              std::optional<double> diverged_at);
+
+/// The model line of a caption: "rigid-matrix, euler, dt = 0.01667, normalized".
+std::string model_line(const scene::Scene& scene);
+
+/// Decorates a rendered frame of `scene` at time `t`: with render.panel the live plots of
+/// `history` (every frame so far) on the right, then the caption (kept within the book's
+/// part), then after a divergence the "diverged at" banner.
+void decorate_frame(RgbaImage& image, const scene::Scene& scene, double t,
+                    std::optional<double> diverged_at, const DiagnosticsHistory& history);
+
+}  // namespace bookspin::pipeline

@@ -1,0 +1,32 @@
+#pragma once
+// The curves a plot panel shows, accumulated frame by frame (a few doubles per frame).
+#include <string>
+#include <vector>
+
+#include "physics/simulator.hpp"
+
+namespace bookspin::pipeline {
+
+/// Per-frame samples of one run, in frame order.
+struct DiagnosticsHistory {
+  std::vector<double> t;                          ///< time units
+  std::vector<double> omega_x, omega_y, omega_z;  ///< body frame, rad per time unit
+  std::vector<double> energy_drift;               ///< E/E0 − 1, dimensionless
+  std::vector<double> strain_max;                 ///< max |len/rest − 1|
+  std::vector<double> quaternion_deviation;       ///< |q| − 1
+  std::vector<double> orthogonality_error;        ///< ‖RᵀR − I‖_F
+  double energy0 = 0.0;                           ///< E of the first sample
+
+  /// Appends one frame's sample; the first sample fixes E0.
+  void add(const physics::Diagnostics& d);
+  std::size_t size() const { return t.size(); }
+};
+
+/// One run drawn in a panel: its history and how it is named in legends.
+struct PanelRun {
+  std::string label;  ///< legend text in comparison plots; empty for a single run
+  physics::ModelKind kind = physics::ModelKind::particle;  ///< picks the shape measures
+  const DiagnosticsHistory* history = nullptr;
+};
+
+}  // namespace bookspin::pipeline

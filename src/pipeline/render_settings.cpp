@@ -1,0 +1,62 @@
+#include "pipeline/render_settings.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pipeline/panel.hpp"
+
+namespace bookspin::pipeline {
+
+namespace {
+
+/// Moves eye and target along the image's right vector so that the book's centre projects
+/// to the middle of the left `share` of a width×height image.
+void shift_book_left(render::Camera& camera, int width, int height, double share) {
+  const Eigen::Vector3d forward = camera.target - camera.eye;
+  const Eigen::Vector3d right = forward.cross(camera.up);
+  if (share >= 1.0 || right.norm() < 1e-9) return;  // a degenerate camera is reported later
+  const double aspect = static_cast<double>(width) / height;
+  const double half_width = forward.norm() * std::tan(camera.fov_y_deg * M_PI / 360.0) * aspect;
+  const Eigen::Vector3d shift = (1.0 - share) * half_width * right.normalized();
+  camera.eye += shift;
+  camera.target += shift;
+}
+
+}  // namespace
+
+render::RenderSettings render_settings_for(const scene::Scene& scene, int width, int height,
+                                           double book_share) {
+  const auto& r = scene.render;
+  render::RenderSettings s;
+  s.width = width;
+  s.height = height;
+  const int book_width = std::max(2, static_cast<int>(std::lround(book_share * width)));
+  s.camera = render::default_camera(0.5 * scene.book.size.norm(), book_width, height);
+  s.camera.fov_y_deg = r.fov_y_deg;
+  // Keep the automatic distance for the default field of view, scaled for another one.
+  double distance = (s.camera.eye - s.camera.target).norm() * std::tan(M_PI / 12.0) /
+                    std::tan(r.fov_y_deg * M_PI / 360.0);
+  if (r.camera_distance > 0.0) distance = r.camera_distance;
+  s.camera.eye = s.camera.target + distance * r.camera_direction.normalized();
+  shift_book_left(s.camera, width, height, book_share);
+  s.textures = {r.texture_front, r.texture_back, r.texture_spine, r.texture_pages};
+  s.show_angular_momentum = r.show_angular_momentum;
+  s.show_body_axes = r.show_body_axes;
+  s.max_anisotropy = static_cast<float>(r.anisotropy);
+  s.msaa_samples = r.msaa;
+  return s;
+}
+
+render::RenderSettings render_settings_for(const scene::Scene& scene) {
+  return render_settings_for(scene, scene.render.width, scene.render.height,
+                             scene.render.panel ? kBookShare : 1.0);
+}
+
+render::FrameInput frame_input_for(const physics::BookPose& pose) {
+  render::FrameInput input;
+  input.corners = pose.corners;
+  input.angular_momentum_direction = pose.diagnostics.L;
+  return input;
+}
+
+}  // namespace bookspin::pipeline

@@ -1,0 +1,17 @@
+#include "pipeline/simulation.hpp"
+
+#include "output/diagnostics_csv.hpp"
+#include "pipeline/frame_source.hpp"
+
+namespace bookspin::pipeline {
+
+SimulationResult write_diagnostics_rows(const scene::Scene& scene, std::ostream& out) {
+  out << output::diagnostics_csv_header() << '\n';
+  FrameSource source(scene);
+  physics::BookPose pose;
+  while (source.next(pose))
+    out << output::diagnostics_csv_row(source.frame(), pose.diagnostics) << '\n';
+  return {source.diverged_at(), source.frame() + 1};
+}
+
+}  // namespace bookspin::pipeline

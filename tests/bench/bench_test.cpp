@@ -1,0 +1,126 @@
+// bookspin-bench. No timings are asserted:
+// the numbers depend on the machine; only that they are measured and written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <thread>
+
+#include "support/cli_runner.hpp"
+
+namespace bookspin::bench {
+namespace {
+
+using namespace bookspin::test;  // the shared runner (tests/support)
+
+struct BenchRun {
+  std::filesystem::path dir;  ///< the -o directory
+  CliResult result;
+  std::string csv;  ///< dir/bench.csv ("" if not written)
+};
+
+/// `bookspin bench fig09 ARGS -o <fresh NAME dir>`.
+BenchRun run_bench(const std::string& name, const std::string& args) {
+  BenchRun run{fresh_dir(name), {}, {}};
+  run.result =
+      run_program("", BOOKSPIN_BENCH_EXE,
+                  scene_path("fig09-matrix-unstable-x") + " " + args + " -o " + run.dir.string());
+  run.csv = read_file(run.dir / "bench.csv");
+  return run;
+}
+
+/// The value column of the pipeline CSV row whose metric starts with `metric`; NaN if there
+/// is none. Metrics holding a comma are quoted (and none of these holds a quote).
+double csv_value(const std::string& csv, const std::string& metric) {
+  for (const std::string& field : {"\"" + metric, metric}) {
+    const auto at = csv.find("\npipeline," + field);
+    if (at == std::string::npos) continue;
+    const auto metric_start = at + std::string("\npipeline,").size();
+    const auto metric_end =
+        field[0] == '"' ? csv.find("\",", metric_start + 1) + 1 : csv.find(',', metric_start);
+    return std::stod(csv.substr(metric_end + 1));
+  }
+  return std::nan("");
+}
+
+/// MemAvailable in GiB (0 where /proc/meminfo cannot be read).
+double available_gib() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kib = 0.0;
+  while (meminfo >> key >> kib)
+    if (key == "MemAvailable:") return kib / (1024.0 * 1024.0);
+  return 0.0;
+}
+
+TEST(Bench, MemorySectionWritesTheCsvWithBothRunsAndTheirRatio) {
+  const BenchRun run = run_bench("bench-memory", "--only memory --memory-frames 150");
+  const CliResult& r = run.result;
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string& csv = run.csv;
+  EXPECT_EQ(csv.rfind("section,metric,value,unit,note\n", 0), 0u) << csv;
+  EXPECT_NE(csv.find("peak RSS, render --no-png 100 frames"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("peak RSS, render --no-png 150 frames"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("peak RSS 150 / 100 frames"), std::string::npos) << csv;
+  EXPECT_NE(r.output.find("section"), std::string::npos) << "the table goes to stdout";
+}
+
+TEST(Bench, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
+  const BenchRun run = run_bench("bench-pipeline", "--only pipeline --frames 2 --rounds 2");
+  ASSERT_EQ(run.result.status, 0) << run.result.output;
+  const std::string& csv = run.csv;
+  for (const char* row : {"encoder alone (the floor), 2 frames 1280x720", "render --no-png / floor",
+                          "render with PNGs / floor", "render --no-png, 4x anisotropic / floor",
+                          "render --no-png, render.msaa = 1 / floor"}) {
+    EXPECT_NE(csv.find(row), std::string::npos) << row << " missing from\n" << csv;
+  }
+  EXPECT_NE(csv.find("best of 2 alternated runs"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("physics"), std::string::npos) << "--only pipeline ran other sections";
+  // CPU time counts every thread: more than nothing, at most all cores for the whole run
+  // (10% for the two clocks being read at slightly different instants).
+  const double cores = std::thread::hardware_concurrency();
+  for (const char* run : {"encoder alone (the floor)", "render --no-png", "render with PNGs"}) {
+    const double wall = csv_value(csv, std::string(run) + ", 2 frames");
+    const double cpu = csv_value(csv, std::string(run) + ", CPU time, 2 frames");
+    EXPECT_GT(cpu, 0.0) << run << "\n" << csv;
+    EXPECT_LE(cpu, 1.1 * cores * wall) << run << "\n" << csv;
+  }
+  EXPECT_GT(csv_value(csv, "render --no-png start-up (2 frames), CPU time"), 0.0) << csv;
+  EXPECT_NEAR(csv_value(csv, "render --no-png / floor, CPU time"),
+              csv_value(csv, "render --no-png, CPU time") /
+                  csv_value(csv, "encoder alone (the floor), CPU time"),
+              1e-3 * csv_value(csv, "render --no-png / floor, CPU time"))
+      << csv;
+  // The renders went to a scratch directory that is gone: only the CSV is left here.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(run.dir),
+                          std::filesystem::directory_iterator()),
+            1);
+}
+
+TEST(Bench, RefusesUpFrontAPipelineWhoseFramesWouldNotFitInMemory) {
+  // 100,000 frames of 1280x720 RGBA are 343 GiB.
+  if (available_gib() > 400.0) GTEST_SKIP() << "this machine could hold them";
+  const BenchRun run = run_bench("bench-oversized", "--frames 100000");
+  EXPECT_EQ(run.result.status, 1) << run.result.output;  // the machine's limit, not bad input
+  EXPECT_NE(run.result.output.find("--frames 100000 holds 343.3 GiB"), std::string::npos)
+      << run.result.output;
+  EXPECT_EQ(run.result.output.find("peak RSS"), std::string::npos)
+      << "a section ran before the check";
+  EXPECT_TRUE(run.csv.empty());
+}
+
+TEST(Bench, BadSceneStopsTheBenchWithTheScenesOwnMessage) {
+  // The memory section renders in child processes, which could only say that they failed.
+  const CliResult r = run_program("", BOOKSPIN_BENCH_EXE, "no-such-scene.toml --only memory");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("no-such-scene.toml: scene file not found"), std::string::npos)
+      << r.output;
+}
+
+TEST(Bench, UnknownSectionIsAUsageError) {
+  EXPECT_EQ(run_program("", BOOKSPIN_BENCH_EXE, "--only nonsense").status, 2);
+}
+
+}  // namespace
+}  // namespace bookspin::bench

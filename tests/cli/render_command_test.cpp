@@ -1,0 +1,127 @@
+// `bookspin render` end to end: outputs, frame counts, and failures that leave nothing
+// behind (issues 3 and 8).
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+using namespace bookspin::test;  // the shared runner (tests/support)
+
+namespace fs = std::filesystem;
+
+const std::string kSmall =
+    " --set render.width=128 --set render.height=96 --set render.preset='\"ultrafast\"'";
+
+int count_files(const fs::path& dir) {
+  int n = 0;
+  if (fs::exists(dir))
+    for (const auto& e : fs::recursive_directory_iterator(dir)) n += e.is_regular_file();
+  return n;
+}
+
+int count_lines(const fs::path& file) {
+  const std::string text = read_file(file);
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(RenderCommand, WritesMp4FramesAndCsvWithMatchingCounts) {
+  const fs::path out = fresh_dir("render_outputs");
+  const CliResult r = run_bookspin("render " + scene_path("fig09-matrix-unstable-x") + kSmall +
+                                   " --frames 9 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string name = "fig09-matrix-unstable-x";
+  EXPECT_GT(fs::file_size(out / (name + ".mp4")), 1000u);
+  EXPECT_EQ(count_files(out / name / "frames"), 9);
+  EXPECT_TRUE(fs::exists(out / name / "frames" / "frame_00008.png"));
+  EXPECT_EQ(count_lines(out / name / "diagnostics.csv"), 10);  // header + 9 rows
+  const CliResult probe = [&] {
+    CliResult p;
+    FILE* pipe = popen(("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                        "stream=codec_name,pix_fmt,width,height,r_frame_rate,nb_read_frames "
+                        "-of csv=p=0 " +
+                        (out / (name + ".mp4")).string())
+                           .c_str(),
+                       "r");
+    char line[256];
+    while (pipe && fgets(line, sizeof line, pipe)) p.output += line;
+    p.status = pipe ? pclose(pipe) : -1;
+    return p;
+  }();
+  if (probe.status == 0) {
+    EXPECT_EQ(probe.output, "h264,128,96,yuv420p,30/1,9\n");
+  }
+}
+
+TEST(RenderCommand, NoPngSkipsTheFrames) {
+  const fs::path out = fresh_dir("render_no_png");
+  ASSERT_EQ(run_bookspin("render " + scene_path("fig03-particle-stable-z") + kSmall +
+                         " --frames 3 --no-png -o " + out.string())
+                .status,
+            0);
+  EXPECT_TRUE(fs::exists(out / "fig03-particle-stable-z.mp4"));
+  EXPECT_FALSE(fs::exists(out / "fig03-particle-stable-z" / "frames"));
+}
+
+TEST(RenderCommand, DivergedSceneRendersToTheEndAndWarns) {
+  const fs::path out = fresh_dir("render_diverged");
+  const CliResult r =
+      run_bookspin("render " + scene_path("fig08-particle-neither") + kSmall +
+                   " --set time.steps_per_frame=300 --frames 12 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: fig08-particle-neither: simulation diverged at t = "),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(count_files(out / "fig08-particle-neither" / "frames"), 12);
+}
+
+TEST(RenderCommand, UnwritableOutputDirectoryIsOneLineAndNothingIsWritten) {
+  const fs::path out = fresh_dir("render_unwritable");
+  const fs::path blocker = out / "a-file";
+  { std::ofstream(blocker) << "x"; }
+  const CliResult r = run_bookspin("render " + scene_path("fig09-matrix-unstable-x") + kSmall +
+                                   " --frames 2 -o " + (blocker / "sub").string());
+  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find("cannot create output directory"), std::string::npos) << r.output;
+  EXPECT_EQ(count_files(out), 1);
+}
+
+TEST(RenderCommand, NoUsableEglDisplayIsOneLineAndNothingIsWritten) {
+  const fs::path out = fresh_dir("render_no_egl");
+  // glvnd finds no EGL vendor at all: every platform fails to give a display.
+  const CliResult r = run_bookspin_env("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json",
+                                       "render " + scene_path("fig09-matrix-unstable-x") + kSmall +
+                                           " --frames 2 -o " + out.string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find("EGL"), std::string::npos) << r.output;
+  EXPECT_EQ(count_files(out), 0);
+}
+
+TEST(RenderCommand, OddSizeIsRejectedBeforeAnyOutput) {
+  const fs::path out = fresh_dir("render_odd");
+  const CliResult r = run_bookspin("render " + scene_path("fig09-matrix-unstable-x") +
+                                   " --set render.width=129 -o " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.output.find("4:2:0 video needs even sizes"), std::string::npos) << r.output;
+  EXPECT_EQ(count_files(out), 0);
+}
+
+TEST(RenderOptions, PngCompressionOverridesTheSceneAndIsRangeChecked) {
+  const auto dir = fresh_dir("render-png-compression");
+  const std::string common = "render " + scene_path("fig09-matrix-unstable-x") +
+                             " --frames 2 --set render.width=64 --set render.height=36 -o ";
+  ASSERT_EQ(run_bookspin(common + (dir / "stored").string() + " --png-compression 0").status, 0);
+  ASSERT_EQ(run_bookspin(common + (dir / "deflated").string() + " --png-compression 9").status, 0);
+  const auto frame =
+      std::filesystem::path("fig09-matrix-unstable-x") / "frames" / "frame_00001.png";
+  // Level 0 stores the pixels uncompressed: bigger than level 9's file.
+  EXPECT_GT(std::filesystem::file_size(dir / "stored" / frame),
+            std::filesystem::file_size(dir / "deflated" / frame));
+  EXPECT_EQ(run_bookspin(common + dir.string() + " --png-compression 10").status, 2);
+}
+
+}  // namespace
+}  // namespace bookspin::cli

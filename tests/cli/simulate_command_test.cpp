@@ -1,0 +1,124 @@
+// `bookspin simulate`: CSV format, determinism and errors (docs/physics.md §9).
+#include <gtest/gtest.h>
+
+#include "support/cli_runner.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+using namespace bookspin::test;  // the shared runner (tests/support)
+
+constexpr const char* kHeader =
+    "frame,t,omega_x,omega_y,omega_z,L_x,L_y,L_z,energy_kinetic,energy_potential,energy_total,"
+    "cos_x_L,cos_y_L,cos_z_L,strain_max,orthogonality_error,quaternion_norm";
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(SimulateCommand, WritesOneRowPerFrameWithTheDocumentedColumns) {
+  const auto dir = fresh_dir("simulate_rows");
+  const auto csv = dir / "out.csv";
+  const CliResult r = run_bookspin("simulate " + scene_path("fig09-matrix-unstable-x") +
+                                   " --set time.frames=25 --csv " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto lines = lines_of(read_file(csv));
+  ASSERT_EQ(lines.size(), 26u);
+  EXPECT_EQ(lines[0], kHeader);
+  EXPECT_EQ(lines[1].rfind("0,0,", 0), 0u) << lines[1];  // frame 0 is the initial state
+  // frame n holds the state after n × steps_per_frame steps: t = 24 × 30 / 60.
+  EXPECT_EQ(lines[25].rfind("24,12,", 0), 0u) << lines[25];
+}
+
+TEST(SimulateCommand, SameSceneAndSeedGiveBitIdenticalCsv) {
+  const auto dir = fresh_dir("simulate_determinism");
+  for (const char* scene : {"fig05-particle-unstable-x", "fig09-matrix-unstable-x",
+                            "fig11-quaternion-no-normalization"}) {
+    const std::string base = "simulate " + scene_path(scene) + " --set time.frames=200 --csv ";
+    ASSERT_EQ(run_bookspin(base + (dir / "a.csv").string()).status, 0);
+    ASSERT_EQ(run_bookspin(base + (dir / "b.csv").string()).status, 0);
+    const std::string a = read_file(dir / "a.csv");
+    EXPECT_GT(a.size(), 10000u);
+    EXPECT_EQ(a, read_file(dir / "b.csv")) << scene;
+  }
+}
+
+TEST(SimulateCommand, DifferentSeedGivesDifferentJiggle) {
+  const auto dir = fresh_dir("simulate_seed");
+  const std::string base =
+      "simulate " + scene_path("fig09-matrix-unstable-x") + " --set time.frames=5 --csv ";
+  ASSERT_EQ(run_bookspin(base + (dir / "a.csv").string()).status, 0);
+  ASSERT_EQ(run_bookspin(base + (dir / "b.csv").string() + " --set initial.seed=99").status, 0);
+  EXPECT_NE(read_file(dir / "a.csv"), read_file(dir / "b.csv"));
+}
+
+TEST(SimulateCommand, DivergenceKeepsTheRowsSoFarAndWarns) {
+  const auto dir = fresh_dir("simulate_diverge");
+  const auto csv = dir / "out.csv";
+  const CliResult r =
+      run_bookspin("simulate " + scene_path("fig08-particle-neither") + " --csv " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("diverged at t = "), std::string::npos) << r.output;
+  const auto lines = lines_of(read_file(csv));
+  EXPECT_GT(lines.size(), 100u);
+  EXPECT_LT(lines.size(), 451u);
+  EXPECT_EQ(lines.back().find("nan"), std::string::npos);
+  EXPECT_EQ(lines.back().find("inf"), std::string::npos);
+}
+
+TEST(SimulateCommand, HelpDocumentsEveryOption) {
+  const CliResult r = run_bookspin("simulate --help");
+  ASSERT_EQ(r.status, 0);
+  for (const char* word : {"SCENE", "--set", "--csv", "--help"})
+    EXPECT_NE(r.output.find(word), std::string::npos) << word;
+}
+
+struct BadInput {
+  std::string label;  ///< test name
+  std::string args;
+  std::string expected;  ///< a fragment of the one-line message
+};
+// gtest prints parameters into the names ctest registers; print a stable text, not bytes.
+[[maybe_unused]] void PrintTo(const BadInput& p, std::ostream* out) { *out << p.label; }
+
+class SimulateErrors : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(SimulateErrors, ExitTwoWithOneLineNamingTheProblem) {
+  const CliResult r = run_bookspin("simulate " + GetParam().args + " --csv /dev/null");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find(GetParam().expected), std::string::npos) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadSetValues, SimulateErrors,
+    ::testing::Values(
+        BadInput{"negative_dt", scene_path("fig05-particle-unstable-x") + " --set time.dt=-1",
+                 "--set time.dt: must be > 0"},
+        BadInput{"nan_dt", scene_path("fig05-particle-unstable-x") + " --set time.dt=nan",
+                 "--set time.dt: must be finite"},
+        BadInput{"unquoted_string",
+                 scene_path("fig05-particle-unstable-x") + " --set model.kind=particle",
+                 "--set model.kind: value is not valid TOML"},
+        BadInput{"unknown_model",
+                 scene_path("fig05-particle-unstable-x") + " --set 'model.kind=\"soft\"'",
+                 "--set model.kind: unknown model 'soft'"},
+        BadInput{"unknown_key", scene_path("fig05-particle-unstable-x") + " --set model.colour=1",
+                 "--set model.colour: unknown key"},
+        BadInput{"short_array", scene_path("fig05-particle-unstable-x") + " --set book.size=[1,2]",
+                 "--set book.size: expected an array of 3 numbers"},
+        BadInput{"float_frames", scene_path("fig05-particle-unstable-x") + " --set time.frames=1.5",
+                 "--set time.frames: expected an integer"},
+        BadInput{"no_equals", scene_path("fig05-particle-unstable-x") + " --set nonsense",
+                 "--set nonsense: expected key=value"},
+        BadInput{"missing_file", "/no/such/scene.toml",
+                 "/no/such/scene.toml: scene file not found"},
+        BadInput{"no_scene", "", "SCENE is required"},
+        BadInput{"unknown_flag", scene_path("fig05-particle-unstable-x") + " --bogus", "--bogus"}),
+    [](const auto& info) { return info.param.label; });
+
+}  // namespace
+}  // namespace bookspin::cli

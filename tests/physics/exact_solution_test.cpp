@@ -1,0 +1,381 @@
+// The exact torque-free solution (docs/physics.md §8) and its simulator.
+#include <gtest/gtest.h>
+
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "physics/exact_model.hpp"
+#include "physics/exact_solution.hpp"
+#include "physics/shape.hpp"
+
+namespace bookspin::physics {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+Vector3d book_moments() { return Book{}.principal_moments(); }
+
+/// ω0 of a pure x spin (the original program's L = (1, 0, 0) start) after adding dL to L.
+Vector3d perturbed_x_spin(const Vector3d& dL) {
+  const Vector3d I = book_moments();
+  return (I.cwiseProduct(Vector3d(0.114819, 0.0, 0.0)) + dL).cwiseQuotient(I);
+}
+
+struct Scenario {
+  std::string name;
+  Vector3d moments;
+  Vector3d omega0;
+};
+
+// Book (I_y < I_x < I_z) and two other bodies, one sorted by an odd permutation of the
+// axes and one by an even one, each in both cases.
+std::vector<Scenario> scenarios() {
+  return {
+      {"book near z", book_moments(), {0.02, 0.01, 0.3}},
+      {"book near y", book_moments(), {0.02, 0.3, 0.01}},
+      {"book x spin, dL along +z", book_moments(), perturbed_x_spin({0.0, 0.0, 1e-3})},
+      {"book x spin, dL along +y", book_moments(), perturbed_x_spin({0.0, 1e-3, 0.0})},
+      {"book x spin, dL (1,-1,1)e-3", book_moments(), perturbed_x_spin({1e-3, -1e-3, 1e-3})},
+      {"book x spin, dL (-1,1,-1)e-3", book_moments(), perturbed_x_spin({-1e-3, 1e-3, -1e-3})},
+      {"body (2,1,3) case A", {2.0, 1.0, 3.0}, {0.3, -0.5, 0.7}},
+      {"body (2,1,3) case B", {2.0, 1.0, 3.0}, {-0.6, 0.9, 0.2}},
+      {"body (3,1,2) case A", {3.0, 1.0, 2.0}, {0.8, 0.2, -0.3}},
+      {"body (3,1,2) case B", {3.0, 1.0, 2.0}, {0.1, 0.9, 0.6}},
+      {"axisymmetric (1,1,2)", {1.0, 1.0, 2.0}, {0.3, -0.5, 0.7}},
+      {"axisymmetric (1,2,2)", {1.0, 2.0, 2.0}, {0.3, -0.5, 0.7}},
+  };
+}
+
+/// The case from the sign of L² − 2E·I_mid, computed here independently of ExactRotation.
+ExactCase expected_case(const Scenario& s) {
+  Vector3d sorted = s.moments;
+  std::sort(sorted.data(), sorted.data() + 3);
+  const Vector3d L = s.moments.cwiseProduct(s.omega0);
+  const double two_E = s.omega0.dot(L);
+  const double criterion = L.squaredNorm() - two_E * sorted[1];
+  return criterion > 0 ? ExactCase::around_largest : ExactCase::around_smallest;
+}
+
+std::vector<double> random_times(double t_max, int count) {
+  std::mt19937_64 engine(2024);
+  std::uniform_real_distribution<double> uniform(0.0, t_max);
+  std::vector<double> times(count);
+  for (double& t : times) t = uniform(engine);
+  return times;
+}
+
+Matrix3d skew(const Vector3d& w) { return cross_matrix(w); }
+
+/// Classical RK4 for Ṙ = R [ω_body(t)]× from R(0) = I with step h, driven by the exact
+/// ω_body(t); returns R after each of the (increasing) step counts in `checkpoints`.
+std::vector<Matrix3d> integrate_orientation(const ExactRotation& exact, double h,
+                                            const std::vector<long>& checkpoints) {
+  std::vector<Matrix3d> out;
+  Matrix3d R = Matrix3d::Identity();
+  Vector3d w_start = exact.omega_body(0.0);
+  long step = 0;
+  for (long target : checkpoints) {
+    for (; step < target; ++step) {
+      const double t = step * h;
+      const Vector3d w_mid = exact.omega_body(t + 0.5 * h);
+      const Vector3d w_end = exact.omega_body(t + h);
+      const Matrix3d k1 = R * skew(w_start);
+      const Matrix3d k2 = (R + 0.5 * h * k1) * skew(w_mid);
+      const Matrix3d k3 = (R + 0.5 * h * k2) * skew(w_mid);
+      const Matrix3d k4 = (R + h * k3) * skew(w_end);
+      R += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+      w_start = w_end;
+    }
+    out.push_back(R);
+  }
+  return out;
+}
+
+TEST(ExactSolution, CaseFollowsTheEnergyMomentumCriterion) {
+  int case_a = 0, case_b = 0;
+  for (const Scenario& s : scenarios()) {
+    const ExactRotation exact(s.moments, s.omega0);
+    EXPECT_EQ(exact.motion_case(), expected_case(s)) << s.name;
+    (exact.motion_case() == ExactCase::around_largest ? case_a : case_b)++;
+  }
+  EXPECT_GE(case_a, 4);
+  EXPECT_GE(case_b, 4);
+}
+
+TEST(ExactSolution, StartsAtOmega0) {
+  for (const Scenario& s : scenarios()) {
+    const ExactRotation exact(s.moments, s.omega0);
+    EXPECT_LE((exact.omega_body(0.0) - s.omega0).norm(), 1e-14 * s.omega0.norm()) << s.name;
+    EXPECT_LE((exact.orientation(0.0) - Matrix3d::Identity()).norm(), 1e-14) << s.name;
+  }
+}
+
+// I ω̇ = (Iω) × ω, with ω̇ from the Jacobi derivative identities, at 50 random times in
+// [0, 10 T]; and that ω̇ really is the derivative of ω(t) (fourth-order central difference).
+TEST(ExactSolution, SatisfiesEulerEquations) {
+  double worst = 0.0;
+  for (const Scenario& s : scenarios()) {
+    const ExactRotation exact(s.moments, s.omega0);
+    const Vector3d& I = s.moments;
+    for (double t : random_times(10.0 * exact.period(), 50)) {
+      const Vector3d w = exact.omega_body(t), w_dot = exact.omega_dot_body(t);
+      const double scale = I.cwiseProduct(w).norm() * w.norm();
+      const double residual = (I.cwiseProduct(w_dot) - I.cwiseProduct(w).cross(w)).norm() / scale;
+      worst = std::max(worst, residual);
+      EXPECT_LE(residual, 1e-12) << s.name << " t = " << t;
+      const double h = 1e-4 * exact.period();
+      const Vector3d difference =
+          (8.0 * (exact.omega_body(t + h) - exact.omega_body(t - h)) -
+           (exact.omega_body(t + 2 * h) - exact.omega_body(t - 2 * h))) / (12.0 * h);
+      EXPECT_LE((difference - w_dot).norm(), 1e-9 * exact.lambda() * s.omega0.norm()) << s.name;
+    }
+  }
+  std::printf("[ measured ] max relative Euler residual: %.3g\n", worst);
+}
+
+TEST(ExactSolution, ConservesEnergyAndAngularMomentum) {
+  for (const Scenario& s : scenarios()) {
+    const ExactRotation exact(s.moments, s.omega0);
+    for (double t : random_times(10.0 * exact.period(), 50)) {
+      const Vector3d w = exact.omega_body(t);
+      const Vector3d L_body = s.moments.cwiseProduct(w);
+      EXPECT_NEAR(0.5 * w.dot(L_body) / exact.energy(), 1.0, 1e-13) << s.name;
+      EXPECT_NEAR(L_body.norm() / exact.angular_momentum_norm(), 1.0, 1e-13) << s.name;
+    }
+  }
+}
+
+TEST(ExactSolution, OrientationIsARotationCarryingBodyMomentumToWorldMomentum) {
+  for (const Scenario& s : scenarios()) {
+    const ExactRotation exact(s.moments, s.omega0);
+    const Vector3d L = exact.angular_momentum_world();
+    for (double t : random_times(10.0 * exact.period(), 50)) {
+      const Matrix3d R = exact.orientation(t);
+      EXPECT_LE(orthogonality_error(R), 1e-13) << s.name;
+      EXPECT_NEAR(R.determinant(), 1.0, 1e-13) << s.name;
+      EXPECT_LE((R * exact.angular_momentum_body(t) - L).norm(), 1e-12 * L.norm()) << s.name;
+    }
+  }
+}
+
+// ω(t) has period T, so R(t + T) = R(T)·R(t): a check of the whole-period accumulation of ψ
+// far from t = 0. The tolerance grows with t because t itself is a double (ε·t of phase).
+TEST(ExactSolution, OrientationAdvancesByTheSameRotationEachPeriod) {
+  for (const Scenario& s : scenarios()) {
+    const ExactRotation exact(s.moments, s.omega0);
+    const double T = exact.period();
+    const Matrix3d R_T = exact.orientation(T);
+    for (double t : {0.37 * T, 100.37 * T, 1000.9 * T}) {
+      const Matrix3d lhs = exact.orientation(t + T), rhs = R_T * exact.orientation(t);
+      EXPECT_LE((lhs - rhs).norm(), 1e-13 * (1.0 + t / T)) << s.name << " t = " << t;
+    }
+  }
+}
+
+// The "own error below 1e-10" demonstration (docs/physics.md §8): R(t) against RK4 with steps of
+// h and h/2 driven by the exact ω(t), Richardson-extrapolated, over three flip periods.
+TEST(ExactSolution, OrientationMatchesFineIntegration) {
+  const std::vector<Scenario> all = scenarios();
+  double worst = 0.0, worst_reference = 0.0;
+  for (int index : {0, 1, 2, 3, 6, 9}) {
+    const Scenario& s = all[index];
+    const ExactRotation exact(s.moments, s.omega0);
+    const double span = 3.0 * exact.flip_period();
+    const long steps = 30000;  // coarse run (a multiple of 30); the fine run takes twice as many
+    const double h = span / steps;
+    std::vector<long> coarse, fine;
+    for (long c = 1; c <= 30; ++c) {
+      coarse.push_back(c * steps / 30);
+      fine.push_back(2 * c * steps / 30);
+    }
+    const auto R_coarse = integrate_orientation(exact, h, coarse);
+    const auto R_fine = integrate_orientation(exact, 0.5 * h, fine);
+    for (std::size_t c = 0; c < coarse.size(); ++c) {
+      const Matrix3d reference = R_fine[c] + (R_fine[c] - R_coarse[c]) / 15.0;
+      const double reference_error = (R_fine[c] - R_coarse[c]).norm() / 15.0;
+      const double error = (exact.orientation(coarse[c] * h) - reference).norm();
+      worst = std::max(worst, error);
+      worst_reference = std::max(worst_reference, reference_error);
+      EXPECT_LE(reference_error, 1e-11) << s.name;
+      EXPECT_LE(error, 1e-10) << s.name << " t = " << coarse[c] * h;
+    }
+  }
+  std::printf("[ measured ] max |R_exact - R_reference|_F: %.3g (reference error estimate %.3g)\n",
+              worst, worst_reference);
+}
+
+/// Times of the sign changes of ω_x in [0, t_end], each refined by TOMS 748 to round-off.
+std::vector<double> omega_x_zeros(const ExactRotation& exact, double t_end, double scan) {
+  auto omega_x = [&](double t) { return exact.omega_body(t).x(); };
+  std::vector<double> zeros;
+  for (double a = 0.0; a < t_end; a += scan) {
+    const double b = a + scan;
+    if (omega_x(a) * omega_x(b) >= 0.0) continue;
+    boost::uintmax_t iterations = 100;
+    const auto bracket = boost::math::tools::toms748_solve(
+        omega_x, a, b, boost::math::tools::eps_tolerance<double>(50), iterations);
+    zeros.push_back(0.5 * (bracket.first + bracket.second));
+  }
+  return zeros;
+}
+
+/// 2K(k)/λ from docs/physics.md §8 for the book (I1 = I_y, I2 = I_x, I3 = I_z), written out
+/// here independently of ExactRotation.
+double book_flip_period_formula(const Vector3d& omega0) {
+  const Vector3d I = book_moments();
+  const double I1 = I.y(), I2 = I.x(), I3 = I.z();
+  const double L2 = I.cwiseProduct(omega0).squaredNorm(), two_E = omega0.dot(I.cwiseProduct(omega0));
+  double k2, lambda;
+  if (L2 > two_E * I2) {
+    lambda = std::sqrt((I3 - I2) * (L2 - two_E * I1) / (I1 * I2 * I3));
+    k2 = (I2 - I1) * (two_E * I3 - L2) / ((I3 - I2) * (L2 - two_E * I1));
+  } else {
+    lambda = std::sqrt((I2 - I1) * (two_E * I3 - L2) / (I1 * I2 * I3));
+    k2 = (I3 - I2) * (L2 - two_E * I1) / ((I2 - I1) * (two_E * I3 - L2));
+  }
+  return 2.0 * boost::math::ellint_1(std::sqrt(k2)) / lambda;
+}
+
+TEST(ExactSolution, FlipPeriodIsTheTimeBetweenSignChangesOfOmegaX) {
+  double worst = 0.0;
+  for (const Vector3d& dL : {Vector3d(0, 0, 1e-3), Vector3d(0, 1e-3, 0), Vector3d(0, 0, -1e-3),
+                             Vector3d(0, -1e-3, 0)}) {
+    const ExactRotation exact(book_moments(), perturbed_x_spin(dL));
+    const double flip = exact.flip_period();
+    EXPECT_DOUBLE_EQ(flip, 0.5 * exact.period());
+    EXPECT_NEAR(flip / book_flip_period_formula(perturbed_x_spin(dL)), 1.0, 1e-9);
+    const std::vector<double> zeros = omega_x_zeros(exact, 4.5 * flip, flip / 64.0);
+    ASSERT_GE(zeros.size(), 4u);
+    for (std::size_t i = 1; i < zeros.size(); ++i) {
+      const double relative = std::abs((zeros[i] - zeros[i - 1]) / flip - 1.0);
+      worst = std::max(worst, relative);
+      EXPECT_LE(relative, 1e-10);
+    }
+  }
+  std::printf("[ measured ] max |zero spacing / flip_period - 1|: %.3g\n", worst);
+}
+
+TEST(ExactSolution, PrincipalAxisSpinIsSteady) {
+  const Vector3d I = book_moments();
+  for (int axis = 0; axis < 3; ++axis) {
+    const Vector3d w0 = 0.2 * Vector3d::Unit(axis);
+    const ExactRotation exact(I, w0);
+    EXPECT_EQ(exact.motion_case(), ExactCase::steady);
+    EXPECT_TRUE(std::isinf(exact.period()));
+    EXPECT_TRUE(std::isinf(exact.flip_period()));
+    const double t = 17.3;
+    EXPECT_EQ(exact.omega_body(t), w0);
+    const Matrix3d expected = Eigen::AngleAxisd(0.2 * t, Vector3d::Unit(axis)).toRotationMatrix();
+    EXPECT_LE((exact.orientation(t) - expected).norm(), 1e-15);
+  }
+  const ExactRotation at_rest(I, Vector3d::Zero());
+  EXPECT_EQ(at_rest.orientation(5.0), Matrix3d::Identity());
+  // A sphere, and ω in the plane of two equal moments, rotate steadily about ω.
+  const ExactRotation sphere(Vector3d(2, 2, 2), Vector3d(0.1, 0.2, 0.3));
+  const ExactRotation plane(Vector3d(1, 1, 2), Vector3d(0.1, 0.2, 0.0));
+  EXPECT_EQ(sphere.motion_case(), ExactCase::steady);
+  EXPECT_EQ(plane.motion_case(), ExactCase::steady);
+}
+
+// Axisymmetric body I1 = I2: ω precesses about axis 3 at Ω = (I3 − I1) ω3 / I1 (Landau §33).
+TEST(ExactSolution, AxisymmetricBodyPrecessesAtTheKnownRate) {
+  const double I1 = 1.0, I3 = 2.5, w3 = 0.7;
+  const Vector3d w0(0.3, 0.0, w3);
+  const ExactRotation exact(Vector3d(I1, I1, I3), w0);
+  const double rate = (I3 - I1) * w3 / I1;
+  EXPECT_NEAR(exact.modulus(), 0.0, 1e-15);
+  for (double t : {0.5, 3.0, 40.0}) {
+    const Vector3d expected(0.3 * std::cos(rate * t), 0.3 * std::sin(rate * t), w3);
+    EXPECT_LE((exact.omega_body(t) - expected).norm(), 1e-14) << t;
+  }
+}
+
+// I = (1, 5, 9), ω1 = 3 ω3 gives L² = 2E·I2 exactly: k = 1, ω tends to the intermediate axis.
+TEST(ExactSolution, SeparatrixApproachesTheIntermediateAxis) {
+  const Vector3d I(1.0, 5.0, 9.0), w0(0.75, 0.1, 0.25);
+  const ExactRotation exact(I, w0);
+  ASSERT_EQ(exact.motion_case(), ExactCase::separatrix);
+  EXPECT_TRUE(std::isinf(exact.period()));
+  EXPECT_LE((exact.omega_body(0.0) - w0).norm(), 1e-15);
+  const Vector3d late = exact.omega_body(60.0 / exact.lambda());
+  EXPECT_NEAR(std::abs(late.y()), std::sqrt(2.0 * exact.energy() / I.y()), 1e-12);
+  for (double t : {0.5, 2.0, 7.0, 20.0}) {
+    const Vector3d w = exact.omega_body(t), w_dot = exact.omega_dot_body(t);
+    EXPECT_LE((I.cwiseProduct(w_dot) - I.cwiseProduct(w).cross(w)).norm(), 1e-14);
+  }
+  const double h = 1e-3;
+  const std::vector<long> checkpoints{5000, 10000, 20000};
+  const auto coarse = integrate_orientation(exact, h, checkpoints);
+  const auto fine = integrate_orientation(exact, 0.5 * h, {10000, 20000, 40000});
+  for (std::size_t c = 0; c < checkpoints.size(); ++c) {
+    const Matrix3d reference = fine[c] + (fine[c] - coarse[c]) / 15.0;
+    EXPECT_LE((exact.orientation(checkpoints[c] * h) - reference).norm(), 1e-10);
+  }
+}
+
+TEST(ExactSolution, RejectsInvalidInput) {
+  EXPECT_THROW(ExactRotation(Vector3d(1, 0, 2), Vector3d(1, 1, 1)), std::invalid_argument);
+  EXPECT_THROW(ExactRotation(Vector3d(1, -2, 2), Vector3d(1, 1, 1)), std::invalid_argument);
+  EXPECT_THROW(ExactRotation(Vector3d(1, 2, 3), Vector3d(NAN, 1, 1)), std::invalid_argument);
+}
+
+TEST(ExactModel, StartsFromTheJiggledMomentumAndPlacesCornersByR) {
+  const Book book;
+  const InitialState initial{Vector3d(0.114819, 0.0, 0.0), 1e-3, 7};
+  auto sim = make_exact_simulator(book);
+  sim->reset(initial);
+  const Vector3d I = book.principal_moments();
+  const Vector3d L0 = I.cwiseProduct(initial.omega0_body) + jiggle_delta_L(7, 1e-3);
+  const ExactRotation exact(I, L0.cwiseQuotient(I));
+  EXPECT_LE((sim->diagnostics().omega_body - exact.omega0_body()).norm(), 1e-15);
+  EXPECT_LE((sim->diagnostics().L - L0).norm(), 1e-15);
+  EXPECT_LE((sim->corners() - book.body_corners()).norm(), 1e-14);
+  for (int s = 0; s < 250; ++s) sim->step(0.4);
+  EXPECT_LE((sim->corners() - exact.orientation(100.0) * book.body_corners()).norm(), 1e-12);
+  EXPECT_TRUE(sim->finite());
+}
+
+TEST(ExactModel, DiagnosticsAreConsistentAndCosXLFlipsWithOmegaX) {
+  const Book book;
+  ExactModel sim(book);
+  sim.reset({Vector3d(0.114819, 0.0, 0.0), 1e-3, 3});
+  const ExactRotation& exact = sim.rotation();
+  const double flip = exact.flip_period(), dt = 0.1;
+  const Diagnostics start = sim.diagnostics();
+  const std::vector<double> zeros = omega_x_zeros(exact, 3.0 * flip, flip / 64.0);
+  std::vector<double> sign_changes;
+  double previous_cos = start.cos_axis_L.x();
+  while (sim.time() < 3.0 * flip) {
+    sim.step(dt);
+    const Diagnostics d = sim.diagnostics();
+    EXPECT_NEAR(d.energy_total / start.energy_total, 1.0, 1e-13);
+    EXPECT_EQ(d.energy_potential, 0.0);
+    EXPECT_LE((d.L - start.L).norm(), 1e-15);
+    EXPECT_LE(d.strain_max, 1e-13);
+    EXPECT_LE(d.orthogonality_error, 1e-13);
+    EXPECT_EQ(d.quaternion_norm, 1.0);
+    // cos(R e_x, L) = (Rᵀ L)_x / |L| = I_x ω_x / |L|.
+    EXPECT_NEAR(d.cos_axis_L.x(), book.principal_moments().x() * d.omega_body.x() / d.L.norm(),
+                1e-12);
+    if (d.cos_axis_L.x() * previous_cos < 0.0) sign_changes.push_back(d.t);
+    previous_cos = d.cos_axis_L.x();
+  }
+  ASSERT_EQ(sign_changes.size(), zeros.size());
+  ASSERT_GE(zeros.size(), 2u);
+  for (std::size_t i = 0; i < zeros.size(); ++i) {
+    EXPECT_GE(sign_changes[i] - zeros[i], -1e-9);
+    EXPECT_LT(sign_changes[i] - zeros[i], dt + 1e-9);
+    if (i > 0) {
+      EXPECT_NEAR(zeros[i] - zeros[i - 1], flip, 1e-9 * flip);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::physics

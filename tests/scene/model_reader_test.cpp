@@ -1,0 +1,132 @@
+// [[compare]] entries and render.panel in the scene parser.
+#include <gtest/gtest.h>
+
+#include "scene/scene.hpp"
+
+namespace bookspin::scene {
+namespace {
+
+Scene parse(const std::string& text) { return parse_scene_text(text, "test.toml"); }
+
+TEST(CompareKeys, PanelsInheritTheSceneModelAndOverrideTheirOwnKeys) {
+  const Scene s = parse(
+      R"toml([model]
+kind = "rigid-matrix"
+normalize = true
+[[compare]]
+label = "Matrix, Euler"
+[[compare]]
+label = "quaternion (RK4)"
+model.kind = "rigid-quaternion"
+model.integrator = "rk4"
+[[compare]]
+label = "no SVD"
+model = { normalize = false }
+)toml");
+  ASSERT_EQ(s.compare.size(), 3u);
+  EXPECT_EQ(s.compare[0].name, "matrix-euler");
+  EXPECT_EQ(s.compare[0].model.kind, physics::ModelKind::rigid_matrix);
+  EXPECT_TRUE(s.compare[0].model.normalize);
+  EXPECT_EQ(s.compare[1].name, "quaternion-rk4");
+  EXPECT_EQ(s.compare[1].model.kind, physics::ModelKind::rigid_quaternion);
+  EXPECT_EQ(s.compare[1].model.integrator, physics::Integrator::rk4);
+  EXPECT_TRUE(s.compare[1].model.normalize);
+  EXPECT_FALSE(s.compare[2].model.normalize);
+}
+
+TEST(CompareKeys, PanelSceneCarriesThePanelModelAndLabel) {
+  const Scene s = parse(R"toml([scene]
+name = "cmp"
+[[compare]]
+label = "Exact"
+model.kind = "exact"
+)toml");
+  const Scene p = tile_scene(s, s.compare[0]);
+  EXPECT_EQ(p.model.kind, physics::ModelKind::exact);
+  EXPECT_EQ(p.title, "Exact");
+  EXPECT_EQ(p.name, "cmp-exact");
+  EXPECT_TRUE(p.compare.empty());
+}
+
+TEST(CompareKeys, PanelDefaultsOffAndParses) {
+  EXPECT_FALSE(parse(R"toml([render]
+width = 640
+)toml")
+                   .render.panel);
+  EXPECT_TRUE(parse(R"toml([render]
+panel = true
+)toml")
+                  .render.panel);
+  EXPECT_TRUE(parse(R"toml([render]
+width = 640
+)toml")
+                  .compare.empty());
+}
+
+TEST(RenderKeys, AnisotropyDefaultsToAutomaticAndParses) {
+  EXPECT_EQ(parse(R"toml([render]
+width = 640
+)toml")
+                .render.anisotropy,
+            0);
+  EXPECT_EQ(parse(R"toml([render]
+anisotropy = 8
+)toml")
+                .render.anisotropy,
+            8);
+}
+
+TEST(RenderKeys, MsaaDefaultsToFourAndParses) {
+  EXPECT_EQ(parse(R"toml([render]
+width = 640
+)toml")
+                .render.msaa,
+            4);
+  EXPECT_EQ(parse(R"toml([render]
+msaa = 1
+)toml")
+                .render.msaa,
+            1);
+}
+
+TEST(CompareKeys, ErrorsNameTheEntry) {
+  const auto message = [](const std::string& text) {
+    try {
+      parse(text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(R"toml([[compare]]
+label = "a"
+speed = 2
+)toml"),
+            "test.toml:3: compare[1].speed: unknown key");
+  EXPECT_EQ(message(R"toml([[compare]]
+label = "!!"
+)toml"),
+            "test.toml:2: compare[1].label: must contain a letter or digit");
+  EXPECT_EQ(message(R"toml([[compare]]
+label = 3
+)toml"),
+            "test.toml:2: compare[1].label: expected a string, got an integer");
+  std::string many;
+  for (int i = 0; i < 10; ++i) many += "[[compare]]\nlabel = \"p" + std::to_string(i) + "\"\n";
+  EXPECT_EQ(message(many), "test.toml:1: compare: expected 1 to 9 [[compare]] entries, got 10");
+}
+
+TEST(CompareKeys, SetOverrideOfTheWholeArrayIsNamedAsSuch) {
+  try {
+    parse_scene_text(R"toml([model]
+kind = "exact"
+)toml",
+                     "test.toml", {"compare=[{label = \"a\", colour = 1}]"});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "--set compare[1].colour: unknown key");
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::scene

@@ -1,0 +1,61 @@
+#pragma once
+// Runs a built program (bookspin, bookspin-bench, an example) and captures its exit status
+// and output.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace bookspin::test {
+
+struct CliResult {
+  int status = -1;     ///< exit status, or 128 + signal
+  std::string output;  ///< stdout and stderr together
+};
+
+/// Runs `env PROGRAM args` through the shell (args are shell words, quote as needed; env is
+/// "" or "NAME=value ...").
+inline CliResult run_program(const std::string& env, const std::string& program,
+                             const std::string& args) {
+  const std::string command = env + " " + program + " " + args + " 2>&1";
+  CliResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
+  const int raw = pclose(pipe);
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  return result;
+}
+
+/// Runs the built bookspin (BOOKSPIN_EXE) with `env` and `args`.
+inline CliResult run_bookspin_env(const std::string& env, const std::string& args) {
+  return run_program(env, BOOKSPIN_EXE, args);
+}
+
+inline CliResult run_bookspin(const std::string& args) { return run_bookspin_env("", args); }
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+inline std::string scene_path(const std::string& name) {
+  return std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/" + name + ".toml";
+}
+
+/// A fresh, empty temporary directory for one test.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace bookspin::test
