@@ -121,12 +121,24 @@ void ornament_rule(cairo_t* cr, double centre_x, double y, double half_length) {
   cairo_move_to(cr, centre_x + 2 * d, y);
   cairo_line_to(cr, centre_x + half_length, y);
   cairo_stroke(cr);
-  cairo_move_to(cr, centre_x, y - d);
-  cairo_line_to(cr, centre_x + d, y);
-  cairo_line_to(cr, centre_x, y + d);
-  cairo_line_to(cr, centre_x - d, y);
+  diamond(cr, centre_x, y, d);
+}
+
+void diamond(cairo_t* cr, double x, double y, double d) {
+  cairo_move_to(cr, x, y - d);
+  cairo_line_to(cr, x + d, y);
+  cairo_line_to(cr, x, y + d);
+  cairo_line_to(cr, x - d, y);
   cairo_close_path(cr);
   cairo_fill(cr);
+}
+
+ClothCanvas cloth_canvas(int width, int height, Rgb base, Rgb ink) {
+  SurfacePtr surface = make_surface(width, height);
+  fill_cloth(surface.get(), base);
+  ContextPtr context = make_context(surface.get());
+  set_color(context.get(), ink);
+  return {std::move(surface), std::move(context)};
 }
 
 }  // namespace bookspin::render::draw

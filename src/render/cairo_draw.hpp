@@ -41,6 +41,17 @@ double text_width(cairo_t* cr, const std::string& text);
 /// A rectangle outline inset from the surface edges by `inset`.
 void inset_frame(cairo_t* cr, double width, double height, double inset, double line_width);
 
+/// A filled diamond (a square on its corner) centred on (x, y), `d` from centre to tip.
+void diamond(cairo_t* cr, double x, double y, double d);
+
+/// A surface filled with cloth of colour `base` and a context drawing on it in `ink`.
+struct ClothCanvas {
+  SurfacePtr surface;
+  ContextPtr context;
+  cairo_t* cr() const { return context.get(); }
+};
+ClothCanvas cloth_canvas(int width, int height, Rgb base, Rgb ink);
+
 /// A horizontal rule with a small diamond at its middle.
 void ornament_rule(cairo_t* cr, double centre_x, double y, double half_length);
 

@@ -53,12 +53,7 @@ void corner_diamonds(cairo_t* cr, double width, double height, double inset) {
   const double d = 12.0;
   for (double x : {inset, width - inset}) {
     for (double y : {inset, height - inset}) {
-      cairo_move_to(cr, x, y - d);
-      cairo_line_to(cr, x + d, y);
-      cairo_line_to(cr, x, y + d);
-      cairo_line_to(cr, x - d, y);
-      cairo_close_path(cr);
-      cairo_fill(cr);
+      draw::diamond(cr, x, y, d);
     }
   }
 }
@@ -103,11 +98,8 @@ const char* const blurb[] = {
 
 RgbaImage front_cover() {
   const double w = cover_width, h = cover_height;
-  auto surface = draw::make_surface(cover_width, cover_height);
-  draw::fill_cloth(surface.get(), navy);
-  auto ctx = draw::make_context(surface.get());
-  cairo_t* cr = ctx.get();
-  draw::set_color(cr, gold);
+  const draw::ClothCanvas canvas = draw::cloth_canvas(cover_width, cover_height, navy, gold);
+  cairo_t* cr = canvas.cr();
   draw::inset_frame(cr, w, h, 46, 7);
   draw::inset_frame(cr, w, h, 66, 2.5);
   corner_diamonds(cr, w, h, 66);
@@ -122,16 +114,13 @@ RgbaImage front_cover() {
   draw::ornament_rule(cr, w / 2, 1320, 120);
   draw::set_font(cr, sans, 44);
   draw::centered_text(cr, "L. EULER  \xc2\xb7  L. POINSOT", w / 2, 1430, w - 220);
-  return draw::to_rgba(surface.get());
+  return draw::to_rgba(canvas.surface.get());
 }
 
 RgbaImage back_cover() {
   const double w = cover_width, h = cover_height;
-  auto surface = draw::make_surface(cover_width, cover_height);
-  draw::fill_cloth(surface.get(), burgundy);
-  auto ctx = draw::make_context(surface.get());
-  cairo_t* cr = ctx.get();
-  draw::set_color(cr, gold);
+  const draw::ClothCanvas canvas = draw::cloth_canvas(cover_width, cover_height, burgundy, gold);
+  cairo_t* cr = canvas.cr();
   draw::inset_frame(cr, w, h, 46, 4);
   draw::set_font(cr, serif, 64, true);
   draw::centered_text(cr, "The Unstable Rotation", w / 2, 250, w - 200);
@@ -148,16 +137,13 @@ RgbaImage back_cover() {
   draw::set_color(cr, gold);
   draw::set_font(cr, sans, 34, true);
   left_text(cr, "bookspin press", 110, h - 130);
-  return draw::to_rgba(surface.get());
+  return draw::to_rgba(canvas.surface.get());
 }
 
 RgbaImage spine() {
   const double w = spine_width, h = spine_height;
-  auto surface = draw::make_surface(spine_width, spine_height);
-  draw::fill_cloth(surface.get(), navy);
-  auto ctx = draw::make_context(surface.get());
-  cairo_t* cr = ctx.get();
-  draw::set_color(cr, gold);
+  const draw::ClothCanvas canvas = draw::cloth_canvas(spine_width, spine_height, navy, gold);
+  cairo_t* cr = canvas.cr();
   // Gilt bands near both ends of the spine (the book's bottom at u = 0, top at u = 1).
   for (double x : {70.0, 90.0, w - 90.0, w - 70.0}) {
     cairo_rectangle(cr, x - 3, 16, 6, h - 32);
@@ -170,7 +156,7 @@ RgbaImage spine() {
   draw::centered_text(cr, "EULER \xc2\xb7 POINSOT", w - 280, h / 2 + 15, 240);
   draw::set_font(cr, sans, 30, true);
   draw::centered_text(cr, "bookspin", 230, h / 2 + 11, 180);
-  return draw::to_rgba(surface.get());
+  return draw::to_rgba(canvas.surface.get());
 }
 
 RgbaImage pages() {

@@ -25,6 +25,14 @@ std::string info_log(GLuint object, GetIv get_iv, GetLog get_log) {
   return log.data();
 }
 
+/// Whether a shader compiled or a program linked (`status`: GL_COMPILE/LINK_STATUS).
+template <typename GetIv>
+bool succeeded(GLuint object, GetIv get_iv, GLenum status) {
+  GLint ok = GL_FALSE;
+  get_iv(object, status, &ok);
+  return ok == GL_TRUE;
+}
+
 std::string shader_log(GLuint shader) {
   return info_log(shader, glGetShaderiv, glGetShaderInfoLog);
 }
@@ -40,9 +48,7 @@ GLuint compile(std::string_view name, GLenum type, std::string_view source) {
   const GLint length = static_cast<GLint>(source.size());
   glShaderSource(shader, 1, &text, &length);
   glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
+  if (!succeeded(shader, glGetShaderiv, GL_COMPILE_STATUS)) {
     const std::string log = shader_log(shader);
     glDeleteShader(shader);
     const char* kind = type == GL_VERTEX_SHADER ? "vertex" : "fragment";
@@ -123,9 +129,7 @@ GLuint build_program(std::string_view name, std::string_view vertex_source,
   glLinkProgram(program);
   glDeleteShader(vertex);  // flagged; freed with the program
   glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (ok != GL_TRUE) {
+  if (!succeeded(program, glGetProgramiv, GL_LINK_STATUS)) {
     const std::string log = program_log(program);
     glDeleteProgram(program);
     throw RenderError("cannot link shader program '" + std::string(name) + "': " + log);

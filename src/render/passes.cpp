@@ -1,6 +1,7 @@
 #include "render/passes.hpp"
 
 #include <cstddef>
+#include <initializer_list>
 
 #include "render/book_faces.hpp"
 #include "render/embedded_shaders.hpp"  // generated from shaders/ at build time (build dir)
@@ -21,10 +22,23 @@ GLuint new_buffer() {
   return name;
 }
 
-void float_attribute(GLuint index, int components, GLsizei stride, std::size_t offset) {
-  glEnableVertexAttribArray(index);
-  glVertexAttribPointer(index, components, GL_FLOAT, GL_FALSE, stride,
-                        reinterpret_cast<const void*>(offset));
+/// One float vector of a vertex: its attribute index, its size and where it sits.
+struct FloatAttribute {
+  GLuint index;
+  int components;
+  std::size_t offset;
+};
+
+/// Binds `vao` and `vbo` and describes the layout of `Vertex` in the buffer.
+template <typename Vertex>
+void set_vertex_layout(GLuint vao, GLuint vbo, std::initializer_list<FloatAttribute> attributes) {
+  glBindVertexArray(vao);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  for (const FloatAttribute& a : attributes) {
+    glEnableVertexAttribArray(a.index);
+    glVertexAttribPointer(a.index, a.components, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                          reinterpret_cast<const void*>(a.offset));
+  }
 }
 
 void set_camera(GLint view_location, GLint projection_location, const ViewProjection& camera) {
@@ -90,12 +104,10 @@ BookPass::BookPass(const FaceImages& images, float max_anisotropy)
       projection_location_(uniform_location(program_.get(), "u_projection")),
       specular_location_(uniform_location(program_.get(), "u_specular")),
       shininess_location_(uniform_location(program_.get(), "u_shininess")) {
-  glBindVertexArray(vao_.get());
-  glBindBuffer(GL_ARRAY_BUFFER, vbo_.get());
-  const auto stride = static_cast<GLsizei>(sizeof(BookVertex));
-  float_attribute(0, 3, stride, offsetof(BookVertex, position));
-  float_attribute(1, 3, stride, offsetof(BookVertex, normal));
-  float_attribute(2, 2, stride, offsetof(BookVertex, uv));
+  set_vertex_layout<BookVertex>(vao_.get(), vbo_.get(),
+                                {{0, 3, offsetof(BookVertex, position)},
+                                 {1, 3, offsetof(BookVertex, normal)},
+                                 {2, 2, offsetof(BookVertex, uv)}});
   glUseProgram(program_.get());
   glUniform1i(uniform_location(program_.get(), "u_texture"), 0);
   check_gl("setting up the book");
@@ -124,12 +136,10 @@ MarkerPass::MarkerPass()
       vbo_(new_buffer()),
       view_location_(uniform_location(program_.get(), "u_view")),
       projection_location_(uniform_location(program_.get(), "u_projection")) {
-  glBindVertexArray(vao_.get());
-  glBindBuffer(GL_ARRAY_BUFFER, vbo_.get());
-  const auto stride = static_cast<GLsizei>(sizeof(MarkerVertex));
-  float_attribute(0, 3, stride, offsetof(MarkerVertex, position));
-  float_attribute(1, 3, stride, offsetof(MarkerVertex, normal));
-  float_attribute(2, 3, stride, offsetof(MarkerVertex, color));
+  set_vertex_layout<MarkerVertex>(vao_.get(), vbo_.get(),
+                                  {{0, 3, offsetof(MarkerVertex, position)},
+                                   {1, 3, offsetof(MarkerVertex, normal)},
+                                   {2, 3, offsetof(MarkerVertex, color)}});
   check_gl("setting up the markers");
 }
 

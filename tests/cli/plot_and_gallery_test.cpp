@@ -75,8 +75,7 @@ TEST(Gallery, EveryListedVideoAndImageExists) {
 title = "Book <&> \"spin\""
 [model]
 kind = "rigid-matrix"
-)toml"
-                     << R"toml(normalize = true
+normalize = true
 [render]
 panel = true
 )toml";

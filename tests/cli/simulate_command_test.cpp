@@ -1,6 +1,8 @@
 // `bookspin simulate`: CSV format, determinism and errors (docs/physics.md §9).
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include "support/cli_runner.hpp"
 
 namespace bookspin::cli {
@@ -93,32 +95,52 @@ TEST_P(SimulateErrors, ExitTwoWithOneLineNamingTheProblem) {
   EXPECT_NE(r.output.find(GetParam().expected), std::string::npos) << r.output;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    BadSetValues, SimulateErrors,
-    ::testing::Values(
-        BadInput{"negative_dt", scene_path("fig05-particle-unstable-x") + " --set time.dt=-1",
-                 "--set time.dt: must be > 0"},
-        BadInput{"nan_dt", scene_path("fig05-particle-unstable-x") + " --set time.dt=nan",
-                 "--set time.dt: must be finite"},
-        BadInput{"unquoted_string",
-                 scene_path("fig05-particle-unstable-x") + " --set model.kind=particle",
-                 "--set model.kind: value is not valid TOML"},
-        BadInput{"unknown_model",
-                 scene_path("fig05-particle-unstable-x") + " --set 'model.kind=\"soft\"'",
-                 "--set model.kind: unknown model 'soft'"},
-        BadInput{"unknown_key", scene_path("fig05-particle-unstable-x") + " --set model.colour=1",
-                 "--set model.colour: unknown key"},
-        BadInput{"short_array", scene_path("fig05-particle-unstable-x") + " --set book.size=[1,2]",
-                 "--set book.size: expected an array of 3 numbers"},
-        BadInput{"float_frames", scene_path("fig05-particle-unstable-x") + " --set time.frames=1.5",
-                 "--set time.frames: expected an integer"},
-        BadInput{"no_equals", scene_path("fig05-particle-unstable-x") + " --set nonsense",
-                 "--set nonsense: expected key=value"},
-        BadInput{"missing_file", "/no/such/scene.toml",
-                 "/no/such/scene.toml: scene file not found"},
-        BadInput{"no_scene", "", "SCENE is required"},
-        BadInput{"unknown_flag", scene_path("fig05-particle-unstable-x") + " --bogus", "--bogus"}),
-    [](const auto& info) { return info.param.label; });
+// One case a line: test name | arguments after `simulate` ({FIG05} = the fig05 scene) |
+// a fragment of the one-line message.
+constexpr const char* kBadInputs = R"(
+negative_dt     | {FIG05} --set time.dt=-1            | --set time.dt: must be > 0
+nan_dt          | {FIG05} --set time.dt=nan           | --set time.dt: must be finite
+unquoted_string | {FIG05} --set model.kind=particle   | --set model.kind: value is not valid TOML
+unknown_model   | {FIG05} --set 'model.kind="soft"'   | --set model.kind: unknown model 'soft'
+unknown_key     | {FIG05} --set model.colour=1        | --set model.colour: unknown key
+short_array     | {FIG05} --set book.size=[1,2]       | --set book.size: expected an array of 3 numbers
+float_frames    | {FIG05} --set time.frames=1.5       | --set time.frames: expected an integer
+no_equals       | {FIG05} --set nonsense              | --set nonsense: expected key=value
+missing_file    | /no/such/scene.toml                 | /no/such/scene.toml: scene file not found
+no_scene        |                                     | SCENE is required
+unknown_flag    | {FIG05} --bogus                     | --bogus
+)";
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(' ');
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(' ') - first + 1);
+}
+
+std::vector<BadInput> bad_inputs() {
+  std::vector<BadInput> cases;
+  std::istringstream table(kBadInputs);
+  for (std::string line; std::getline(table, line);) {
+    if (line.empty()) continue;
+    const auto bar1 = line.find('|'), bar2 = line.find('|', bar1 + 1);
+    std::string args = trimmed(line.substr(bar1 + 1, bar2 - bar1 - 1));
+    if (const auto at = args.find("{FIG05}"); at != std::string::npos)
+      args.replace(at, 7, scene_path("fig05-particle-unstable-x"));
+    cases.push_back({trimmed(line.substr(0, bar1)), args, trimmed(line.substr(bar2 + 1))});
+  }
+  return cases;
+}
+
+TEST(SimulateErrors, TheTableParsesIntoEveryCase) {
+  const auto cases = bad_inputs();
+  ASSERT_EQ(cases.size(), 11u);
+  EXPECT_EQ(cases.front().label, "negative_dt");
+  EXPECT_EQ(cases.front().args, scene_path("fig05-particle-unstable-x") + " --set time.dt=-1");
+  EXPECT_EQ(cases[9].args, "");  // no_scene
+}
+
+INSTANTIATE_TEST_SUITE_P(BadSetValues, SimulateErrors, ::testing::ValuesIn(bad_inputs()),
+                         [](const auto& info) { return info.param.label; });
 
 }  // namespace
 }  // namespace bookspin::cli

@@ -8,17 +8,23 @@ namespace {
 
 Scene parse(const std::string& text) { return parse_scene_text(text, "test.toml"); }
 
+/// A scene whose only table is [render] holding `keys` (TOML, one line).
+Scene with_render(const std::string& keys) { return parse("[render]\n" + keys + "\n"); }
+
 TEST(CompareKeys, PanelsInheritTheSceneModelAndOverrideTheirOwnKeys) {
-  const Scene s = parse(
-      R"toml([model]
+  const Scene s = parse(R"toml(
+[model]
 kind = "rigid-matrix"
 normalize = true
+
 [[compare]]
 label = "Matrix, Euler"
+
 [[compare]]
 label = "quaternion (RK4)"
 model.kind = "rigid-quaternion"
 model.integrator = "rk4"
+
 [[compare]]
 label = "no SVD"
 model = { normalize = false }
@@ -35,8 +41,10 @@ model = { normalize = false }
 }
 
 TEST(CompareKeys, PanelSceneCarriesThePanelModelAndLabel) {
-  const Scene s = parse(R"toml([scene]
+  const Scene s = parse(R"toml(
+[scene]
 name = "cmp"
+
 [[compare]]
 label = "Exact"
 model.kind = "exact"
@@ -49,44 +57,19 @@ model.kind = "exact"
 }
 
 TEST(CompareKeys, PanelDefaultsOffAndParses) {
-  EXPECT_FALSE(parse(R"toml([render]
-width = 640
-)toml")
-                   .render.panel);
-  EXPECT_TRUE(parse(R"toml([render]
-panel = true
-)toml")
-                  .render.panel);
-  EXPECT_TRUE(parse(R"toml([render]
-width = 640
-)toml")
-                  .compare.empty());
+  EXPECT_FALSE(with_render("width = 640").render.panel);
+  EXPECT_TRUE(with_render("panel = true").render.panel);
+  EXPECT_TRUE(with_render("width = 640").compare.empty());
 }
 
 TEST(RenderKeys, AnisotropyDefaultsToAutomaticAndParses) {
-  EXPECT_EQ(parse(R"toml([render]
-width = 640
-)toml")
-                .render.anisotropy,
-            0);
-  EXPECT_EQ(parse(R"toml([render]
-anisotropy = 8
-)toml")
-                .render.anisotropy,
-            8);
+  EXPECT_EQ(with_render("width = 640").render.anisotropy, 0);
+  EXPECT_EQ(with_render("anisotropy = 8").render.anisotropy, 8);
 }
 
 TEST(RenderKeys, MsaaDefaultsToFourAndParses) {
-  EXPECT_EQ(parse(R"toml([render]
-width = 640
-)toml")
-                .render.msaa,
-            4);
-  EXPECT_EQ(parse(R"toml([render]
-msaa = 1
-)toml")
-                .render.msaa,
-            1);
+  EXPECT_EQ(with_render("width = 640").render.msaa, 4);
+  EXPECT_EQ(with_render("msaa = 1").render.msaa, 1);
 }
 
 TEST(CompareKeys, ErrorsNameTheEntry) {
@@ -118,10 +101,8 @@ label = 3
 
 TEST(CompareKeys, SetOverrideOfTheWholeArrayIsNamedAsSuch) {
   try {
-    parse_scene_text(R"toml([model]
-kind = "exact"
-)toml",
-                     "test.toml", {"compare=[{label = \"a\", colour = 1}]"});
+    parse_scene_text("[model]\nkind = \"exact\"\n", "test.toml",
+                     {"compare=[{label = \"a\", colour = 1}]"});
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "--set compare[1].colour: unknown key");
