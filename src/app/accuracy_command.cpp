@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "analysis/accuracy.hpp"
+#include "app/accuracy_plots.hpp"
 #include "app/commands.hpp"
 #include "overlay/plot.hpp"
 #include "scene/scene.hpp"
@@ -12,11 +13,6 @@
 namespace bookspin::app {
 
 namespace {
-
-std::string method_name(const analysis::Method& m) {
-  return std::string(physics::to_string(m.kind)) + " " +
-         std::string(physics::to_string(m.integrator));
-}
 
 std::string csv_line(const analysis::AccuracyRow& r) {
   char line[512];
@@ -29,9 +25,10 @@ std::string csv_line(const analysis::AccuracyRow& r) {
 }
 
 void print_row(const analysis::AccuracyRow& r) {
-  std::printf("%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12.3e %9.1f%s\n", method_name(r.method).c_str(),
-              1.0 / r.dt, r.orientation_error, r.energy_drift, r.L_drift, r.flip_period_error,
-              r.ns_per_step, r.diverged ? "  diverged" : "");
+  std::printf("%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12.3e %9.1f%s%s\n",
+              method_label(r.method).c_str(), 1.0 / r.dt, r.orientation_error, r.energy_drift,
+              r.L_drift, r.flip_period_error, r.ns_per_step, r.diverged ? "  diverged" : "",
+              r.divergence_reason.empty() ? "" : (": " + r.divergence_reason).c_str());
   std::fflush(stdout);
 }
 
@@ -55,16 +52,13 @@ overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, 
   spec.log_x = spec.log_y = true;
   for (const auto& method : analysis::all_methods()) {
     overlay::Series s;
-    s.label = method_name(method);
+    s.label = method_label(method);
     for (const auto& r : rows) {
       if (r.method.kind != method.kind || r.method.integrator != method.integrator) continue;
       s.x.push_back(r.dt);
       s.y.push_back(r.orientation_error);
     }
-    overlay::palette_colour(static_cast<int>(method.integrator), s.r, s.g, s.b);
-    s.dashed = method.kind == physics::ModelKind::rigid_quaternion;
-    if (method.kind == physics::ModelKind::particle)
-      s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(method.integrator);
+    style_series(method, s);
     spec.series.push_back(std::move(s));
   }
   return spec;
@@ -94,6 +88,8 @@ int accuracy_command(const AccuracyOptions& options) {
                    overlay::plot_image(accuracy_plot(rows, options.flips), 1400, 900));
   std::printf("wrote %s and %s\n", (out / (scene.name + "-accuracy.csv")).c_str(),
               (out / (scene.name + "-accuracy.png")).c_str());
+  for (const auto& path : write_accuracy_plots(out, scene.name, settings, exact, rows))
+    std::printf("wrote %s\n", path.c_str());
   return kExitOk;
 }
 

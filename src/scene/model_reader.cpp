@@ -36,18 +36,19 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   physics::ModelConfig m;
   const std::string kind = r.string("model.kind", std::string(physics::to_string(fallback.kind)));
   if (!physics::parse_model_kind(kind, m.kind)) {
-    r.fail("model.kind",
-           "unknown model '" + kind + "' (expected particle, rigid-matrix, rigid-quaternion, exact)");
+    r.fail("model.kind", "unknown model '" + kind +
+                             "' (expected particle, rigid-matrix, rigid-quaternion, exact)");
   }
   const std::string integrator =
       r.string("model.integrator", std::string(physics::to_string(fallback.integrator)));
   if (!physics::parse_integrator(integrator, m.integrator)) {
     r.fail("model.integrator", "unknown integrator '" + integrator +
                                    "' (expected euler, symplectic-euler, velocity-verlet, rk4, "
-                                   "implicit-midpoint, splitting)");
+                                   "implicit-midpoint, splitting, splitting4)");
   }
   if (!physics::supports(m.kind, m.integrator)) {
-    r.fail("model.integrator", "model '" + kind + "' does not support integrator '" + integrator + "'");
+    r.fail("model.integrator",
+           "model '" + kind + "' does not support integrator '" + integrator + "'");
   }
   m.normalize = r.boolean("model.normalize", fallback.normalize);
   m.damping = r.boolean("model.damping", fallback.damping);
@@ -65,8 +66,8 @@ std::vector<ComparePanel> read_compare(TomlReader& r, const std::string& origin,
     r.fail("compare", "expected an array of tables ([[compare]] entries)");
   }
   if (array->empty() || array->size() > static_cast<std::size_t>(kMaxComparePanels)) {
-    r.fail("compare", "expected 1 to " + std::to_string(kMaxComparePanels) + " [[compare]] entries, got " +
-                          std::to_string(array->size()));
+    r.fail("compare", "expected 1 to " + std::to_string(kMaxComparePanels) +
+                          " [[compare]] entries, got " + std::to_string(array->size()));
   }
   std::vector<ComparePanel> panels;
   for (std::size_t i = 0; i < array->size(); ++i) {
