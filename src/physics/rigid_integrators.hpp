@@ -52,6 +52,7 @@ std::array<int, 3> axes_by_moment(const Eigen::Vector3d& inverse_moments);
 /// 107 (1997); the quaternion form is NO_SQUISH, Miller et al. 2002), composed as
 /// a(dt/2) b(dt/2) c(dt) b(dt/2) a(dt/2) for `order` = {a, b, c}. Second order,
 /// symplectic, conserves |L| and world L exactly. One sine and cosine per sub-flow.
+/// Throws std::invalid_argument if `order` is not a permutation of 0, 1, 2.
 Eigen::Quaterniond splitting_increment(const Eigen::Vector3d& Pi_body,
                                        const Eigen::Vector3d& inverse_moments, double dt,
                                        const std::array<int, 3>& order);

@@ -96,8 +96,12 @@ void RigidQuaternionModel::unit_euler_step(double dt) {
 
 // The orientation the non-Euler integrators work from: R(q/|q|), a rotation even when |q|
 // has drifted (only the paper's Euler, and drawing the book, use R(q) of a non-unit q).
+// As a quaternion rotation by q* = (w, −u) scaled by 1/|q|²: Rᵀ L = L + (2/|q|²)(u × (u × L)
+// − w u × L), fewer operations than forming the matrix.
 Eigen::Vector3d RigidQuaternionModel::body_momentum() const {
-  return q_.normalized().toRotationMatrix().transpose() * L_;
+  const Eigen::Vector3d u = q_.vec();
+  const Eigen::Vector3d u_cross_L = u.cross(L_);
+  return L_ + (2.0 / q_.squaredNorm()) * (u.cross(u_cross_L) - q_.w() * u_cross_L);
 }
 
 void RigidQuaternionModel::step(double dt) {
