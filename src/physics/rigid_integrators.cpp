@@ -195,7 +195,7 @@ Eigen::Quaterniond composed_splitting_increment(const Eigen::Vector3d& Pi_body,
 
 Eigen::Quaterniond splitting4_increment(const Eigen::Vector3d& Pi_body,
                                         const Eigen::Vector3d& inverse_moments, double dt) {
-  return composed_splitting_increment(Pi_body, inverse_moments, dt, composition4::mclachlan5());
+  return composed_splitting_increment(Pi_body, inverse_moments, dt, composition4::suzuki5());
 }
 
 }  // namespace bookspin::physics
