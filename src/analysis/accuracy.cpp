@@ -78,13 +78,47 @@ class FlipClock {
 
 std::vector<Method> all_methods() {
   std::vector<Method> methods;
-  for (Integrator i : {Integrator::euler, Integrator::symplectic_euler, Integrator::velocity_verlet})
+  for (Integrator i :
+       {Integrator::euler, Integrator::symplectic_euler, Integrator::velocity_verlet})
     methods.push_back({ModelKind::particle, i});
   for (ModelKind kind : {ModelKind::rigid_matrix, ModelKind::rigid_quaternion})
     for (Integrator i : {Integrator::euler, Integrator::rk4, Integrator::implicit_midpoint,
-                         Integrator::splitting})
+                         Integrator::splitting, Integrator::splitting4})
       methods.push_back({kind, i});
   return methods;
+}
+
+std::vector<Method> rigid_methods() {
+  std::vector<Method> methods;
+  for (const Method& m : all_methods())
+    if (m.kind != ModelKind::particle) methods.push_back(m);
+  return methods;
+}
+
+EnergyHistory energy_history(const AccuracySettings& s, const physics::ExactRotation& exact,
+                             const Method& m, double dt, double flips, int windows) {
+  EnergyHistory history;
+  history.method = m;
+  history.dt = dt;
+  const long steps = std::lround(flips * exact.flip_period() / dt);
+  const long per_window = std::max(1L, steps / windows);
+  auto sim = start(s, m);
+  const double E0 = sim->diagnostics().energy_total;
+  double worst = 0.0;
+  for (long i = 1; i <= steps; ++i) {
+    sim->step(dt);
+    if (!sim->finite()) {
+      history.diverged = true;
+      break;
+    }
+    worst = std::max(worst, std::abs(sim->diagnostics().energy_total / E0 - 1.0));
+    if (i % per_window == 0) {
+      history.t.push_back(static_cast<double>(i) * dt);
+      history.relative_error.push_back(worst);
+      worst = 0.0;
+    }
+  }
+  return history;
 }
 
 physics::ExactRotation exact_reference(const AccuracySettings& s) {
@@ -107,13 +141,15 @@ double orientation_error_at(const AccuracySettings& s, const physics::ExactRotat
                                 fitted_rotation(*sim, s.book.body_corners()));
 }
 
-AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exact,
-                    const Method& m, double dt) {
+AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exact, const Method& m,
+                    double dt) {
   const double flip = exact.flip_period();
   if (!std::isfinite(flip)) {
     throw std::invalid_argument("the exact motion has no flip period (separatrix or pure spin)");
   }
-  AccuracyRow row{m, dt};
+  AccuracyRow row;
+  row.method = m;
+  row.dt = dt;
   row.steps = std::lround(s.flips * flip / dt);
   row.t_end = row.steps * dt;
   const int axis = intermediate_axis(s.book);
@@ -125,6 +161,7 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
     sim->step(dt);
     if (!sim->finite()) {
       row.diverged = true;
+      row.divergence_reason = sim->divergence_reason();
       break;
     }
     const physics::Diagnostics d = sim->diagnostics();

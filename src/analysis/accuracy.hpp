@@ -1,6 +1,7 @@
 #pragma once
-// How far each model × integrator is from the exact motion (docs/physics.md §8, §10). The door of
+// How far each model × integrator is from the exact motion (docs/physics.md §8–10). The door of
 // src/analysis: pure computation on top of src/physics (timing by std::chrono only).
+#include <string>
 #include <vector>
 
 #include "physics/exact_solution.hpp"
@@ -15,8 +16,11 @@ struct Method {
 
 /// Every supported pair except "exact": particle × {euler, symplectic-euler,
 /// velocity-verlet}, rigid-matrix and rigid-quaternion × {euler, rk4, implicit-midpoint,
-/// splitting}.
+/// splitting, splitting4}.
 std::vector<Method> all_methods();
+
+/// The rigid pairs only (rigid-matrix and rigid-quaternion × every rigid integrator).
+std::vector<Method> rigid_methods();
 
 struct AccuracySettings {
   physics::Book book;
@@ -33,12 +37,13 @@ struct AccuracyRow {
   /// Angle (rad) of R_exactᵀ R_fit at t_end, R_fit the best-fit rotation of the corners
   /// (the orientation itself for rigid models whose R is a rotation).
   double orientation_error = 0.0;
-  double energy_drift = 0.0;   ///< max |E/E0 − 1| over the run
-  double L_drift = 0.0;        ///< max ||L|/|L0| − 1| over the run
-  double flip_period = 0.0;    ///< mean spacing of the intermediate axis' sign changes
+  double energy_drift = 0.0;       ///< max |E/E0 − 1| over the run
+  double L_drift = 0.0;            ///< max ||L|/|L0| − 1| over the run
+  double flip_period = 0.0;        ///< mean spacing of the intermediate axis' sign changes
   double flip_period_error = 0.0;  ///< |flip_period / exact − 1|; NaN if < 2 flips seen
-  double ns_per_step = 0.0;    ///< wall time of step() alone
+  double ns_per_step = 0.0;        ///< wall time of step() alone
   bool diverged = false;
+  std::string divergence_reason;  ///< the simulator's reason, if it gave one
 };
 
 /// Runs one method at one dt from `settings.initial` for `settings.flips` exact flip periods.
@@ -53,10 +58,24 @@ physics::ExactRotation exact_reference(const AccuracySettings& settings);
 /// Angle between two rotations, 2·asin(‖A − B‖_F / √8): accurate for tiny angles.
 double rotation_angle_between(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b);
 
+/// Relative energy error of one method along a long run: for each of the equal windows of
+/// the run, the largest |E/E0 − 1| over its steps (E the model's total energy, E0 at t = 0),
+/// plotted at the window's end time t (time units). Stops at a divergence.
+struct EnergyHistory {
+  Method method;
+  double dt = 0.0;
+  std::vector<double> t;
+  std::vector<double> relative_error;
+  bool diverged = false;
+};
+
+/// Runs `method` at step `dt` for `flips` exact flip periods in `windows` windows.
+EnergyHistory energy_history(const AccuracySettings& settings, const physics::ExactRotation& exact,
+                             const Method& method, double dt, double flips, int windows);
+
 /// Orientation error at time t_end of `method` at step `dt` (no flip bookkeeping; for
 /// convergence-order checks).
-double orientation_error_at(const AccuracySettings& settings,
-                            const physics::ExactRotation& exact, const Method& method,
-                            double dt, double t_end);
+double orientation_error_at(const AccuracySettings& settings, const physics::ExactRotation& exact,
+                            const Method& method, double dt, double t_end);
 
 }  // namespace bookspin::analysis

@@ -4,19 +4,15 @@
 
 #include "analysis/accuracy.hpp"
 #include "cli/commands.hpp"
-#include "output/atomic_output.hpp"
-#include "output/png_writer.hpp"
 #include "overlay/plot.hpp"
 #include "scene/scene.hpp"
+#include "output/atomic_output.hpp"
+#include "output/png_writer.hpp"
+#include "pipeline/accuracy_plots.hpp"
 
 namespace bookspin::cli {
 
 namespace {
-
-std::string method_name(const analysis::Method& m) {
-  return std::string(physics::to_string(m.kind)) + " " +
-         std::string(physics::to_string(m.integrator));
-}
 
 std::string csv_line(const analysis::AccuracyRow& r) {
   char line[512];
@@ -29,20 +25,19 @@ std::string csv_line(const analysis::AccuracyRow& r) {
 }
 
 void print_row(const analysis::AccuracyRow& r) {
-  std::printf("%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12.3e %9.1f%s\n", method_name(r.method).c_str(),
-              1.0 / r.dt, r.orientation_error, r.energy_drift, r.L_drift, r.flip_period_error,
-              r.ns_per_step, r.diverged ? "  diverged" : "");
+  std::printf("%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12.3e %9.1f%s%s\n",
+              pipeline::method_label(r.method).c_str(), 1.0 / r.dt, r.orientation_error, r.energy_drift,
+              r.L_drift, r.flip_period_error, r.ns_per_step, r.diverged ? "  diverged" : "",
+              r.divergence_reason.empty() ? "" : (": " + r.divergence_reason).c_str());
   std::fflush(stdout);
 }
 
 void write_csv(const std::filesystem::path& path, const std::vector<analysis::AccuracyRow>& rows) {
-  output::AtomicFile file(path);
-  std::ofstream out(file.temp_path(), std::ios::binary);
+  output::AtomicTextFile file(path);
+  std::ostream& out = file.stream();
   out << "model,integrator,dt,steps,t_end,orientation_error_rad,energy_drift,L_drift,"
          "flip_period,flip_period_error,ns_per_step,diverged\n";
   for (const auto& r : rows) out << csv_line(r) << '\n';
-  out.close();
-  if (!out) throw_output_error("cannot write", path, errno);
   file.commit();
 }
 
@@ -55,16 +50,13 @@ overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, 
   spec.log_x = spec.log_y = true;
   for (const auto& method : analysis::all_methods()) {
     overlay::Series s;
-    s.label = method_name(method);
+    s.label = pipeline::method_label(method);
     for (const auto& r : rows) {
       if (r.method.kind != method.kind || r.method.integrator != method.integrator) continue;
       s.x.push_back(r.dt);
       s.y.push_back(r.orientation_error);
     }
-    overlay::palette_colour(static_cast<int>(method.integrator), s.r, s.g, s.b);
-    s.dashed = method.kind == physics::ModelKind::rigid_quaternion;
-    if (method.kind == physics::ModelKind::particle)
-      s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(method.integrator);
+    pipeline::style_series(method, s);
     spec.series.push_back(std::move(s));
   }
   return spec;
@@ -91,9 +83,11 @@ int accuracy_command(const AccuracyOptions& options) {
   std::filesystem::create_directories(out);
   write_csv(out / (scene.name + "-accuracy.csv"), rows);
   output::write_png(out / (scene.name + "-accuracy.png"),
-                    overlay::plot_image(accuracy_plot(rows, options.flips), 1400, 900));
+                   overlay::plot_image(accuracy_plot(rows, options.flips), 1400, 900));
   std::printf("wrote %s and %s\n", (out / (scene.name + "-accuracy.csv")).c_str(),
               (out / (scene.name + "-accuracy.png")).c_str());
+  for (const auto& path : pipeline::write_accuracy_plots(out, scene.name, settings, exact, rows))
+    std::printf("wrote %s\n", path.c_str());
   return kExitOk;
 }
 

@@ -12,7 +12,8 @@ namespace bookspin::physics {
 /// Simulator for `ModelKind::exact`. reset() builds an ExactRotation from
 /// ω0' = I_body⁻¹ L0 with L0 = I_body·ω0 + jiggle_delta_L(seed, jiggle), the same jiggled
 /// angular momentum the rigid models start from; step(dt) only advances t, and the state
-/// at t is evaluated exactly (no error accumulates with the number of steps).
+/// at t is evaluated exactly (no error accumulates with the number of steps). After n steps
+/// of one dt, t = n·dt as a product, not a running sum of dt (docs/physics.md §10).
 /// Corners are R(t)·body corners (3×8, world frame).
 class ExactModel final : public Simulator {
  public:
@@ -34,6 +35,9 @@ class ExactModel final : public Simulator {
   std::optional<ExactRotation> rotation_;
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
   double t_ = 0.0;
+  double t_base_ = 0.0;  ///< t when the current dt was first used
+  double dt_ = 0.0;      ///< the current step
+  long steps_ = 0;       ///< steps of dt_ since t_base_
 };
 
 /// The exact model for `book` (make_simulator() returns it for ModelKind::exact).

@@ -1,8 +1,12 @@
 #pragma once
-// Integrators shared by the two rigid models (docs/physics.md §10). Each takes the body-frame angular
-// momentum Π = Rᵀ L and returns the body-frame rotation increment Δ, so that the new
-// orientation is R·Δ (matrix model) or q ⊗ Δ (quaternion model).
+// Integrators shared by the two rigid models (docs/physics.md §10). Each takes the
+// body-frame angular momentum Π = Rᵀ L and returns the body-frame rotation increment Δ, so
+// that the new orientation is R·Δ (matrix model) or q ⊗ Δ (quaternion model).
 #include <Eigen/Geometry>
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
 
 namespace bookspin::physics {
 
@@ -17,20 +21,76 @@ State rk4_step(const State& y, double dt, F&& f) {
   return y + (dt / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
 }
 
+/// Most fixed-point iterations implicit_midpoint_increment() takes before it gives up.
+inline constexpr int kMidpointMaxIterations = 50;
+
 /// Implicit midpoint rule on the Lie–Poisson equation Π̇ = Π × I⁻¹Π, with the orientation
 /// advanced by the Cayley transform of dt·ω_mid (Austin, Krishnaprasad & Wang 1993;
 /// Hairer, Lubich & Wanner, Geometric Numerical Integration, §VII.5). Second order;
 /// conserves the energy and |L| exactly (both quadratic) and world L exactly, since
-/// Π_{n+1} = cay(dt ω_mid)ᵀ Π_n. The implicit equation is solved by fixed-point iteration
-/// to round-off. `inverse_moments` = diagonal of I_body⁻¹; `Pi_body` body frame.
-Eigen::Quaterniond implicit_midpoint_increment(const Eigen::Vector3d& Pi_body,
-                                               const Eigen::Vector3d& inverse_moments, double dt);
+/// Π_{n+1} = cay(dt ω_mid)ᵀ Π_n. `inverse_moments` = diagonal of I_body⁻¹; `Pi_body` body
+/// frame; dt in time units.
+///
+/// The implicit equation is solved by fixed-point iteration until the update reaches
+/// round-off (|ΔΠ|∞ ≤ 4ε|Π|∞, or it stops shrinking below 1e-12|Π|∞: the round-off floor).
+/// Returns std::nullopt when it has not converged after kMidpointMaxIterations: the
+/// iteration contracts only for dt·|ω| below about 1 (docs/physics.md §10), and a
+/// non-converged step is not a midpoint step. Never throws.
+std::optional<Eigen::Quaterniond> implicit_midpoint_increment(
+    const Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments, double dt);
 
-/// Symmetric (Strang) splitting of the free rotor into the three exactly solvable flows of
-/// T_i = Π_i²/(2 I_i), in the order x(dt/2) y(dt/2) z(dt) y(dt/2) x(dt/2) (Dullweber,
-/// Leimkuhler & McLachlan, J. Chem. Phys. 107 (1997); the quaternion form is NO_SQUISH,
-/// Miller et al. 2002). Second order, symplectic, conserves |L| and world L exactly.
+/// The reason a rigid model gives for ending its run when implicit_midpoint_increment()
+/// fails at time t (time units) with step dt.
+std::string midpoint_failure(double t, double dt);
+
+/// Body axes (0 = x, 1 = y, 2 = z) sorted by increasing principal moment, i.e. by
+/// decreasing `inverse_moments`; ties keep index order. For the book: y, x, z.
+std::array<int, 3> axes_by_moment(const Eigen::Vector3d& inverse_moments);
+
+/// Symmetric (Strang) splitting of the free rotor H = Σ T_i, T_i = Π_i²/(2 I_i), into the
+/// exactly solvable flows of the T_i (Dullweber, Leimkuhler & McLachlan, J. Chem. Phys.
+/// 107 (1997); the quaternion form is NO_SQUISH, Miller et al. 2002), composed as
+/// a(dt/2) b(dt/2) c(dt) b(dt/2) a(dt/2) for `order` = {a, b, c}. Second order,
+/// symplectic, conserves |L| and world L exactly. One sine and cosine per sub-flow.
+/// Throws std::invalid_argument if `order` is not a permutation of 0, 1, 2.
+Eigen::Quaterniond splitting_increment(const Eigen::Vector3d& Pi_body,
+                                       const Eigen::Vector3d& inverse_moments, double dt,
+                                       const std::array<int, 3>& order);
+
+/// The splitting in the sorted order a, b, c = smallest, middle, largest moment (for the
+/// book y, x, z, x, y): the order with the smallest error constant, since the fastest flow
+/// (largest Π_i/I_i for comparable Π_i) then sits outermost and the slowest innermost
+/// (Touma & Wisdom, Astron. J. 107 (1994); measured in docs/physics.md §10: 5–40× more
+/// accurate than the index order x, y, z at the same cost).
 Eigen::Quaterniond splitting_increment(const Eigen::Vector3d& Pi_body,
                                        const Eigen::Vector3d& inverse_moments, double dt);
+
+/// Coefficients γ of symmetric compositions Φ(γ_1 dt) ∘ … ∘ Φ(γ_s dt) of a symmetric
+/// second-order step Φ that are fourth order (Σγ = 1, Σγ³ = 0; Hairer, Lubich & Wanner,
+/// Geometric Numerical Integration, §II.4 and §V.3).
+namespace composition4 {
+/// Yoshida, Phys. Lett. A 150 (1990) (also Suzuki 1990, Forest & Ruth 1990), the triple
+/// jump: γ1 = γ3 = 1/(2 − 2^{1/3}), γ2 = 1 − 2γ1.
+std::span<const double> triple_jump();
+/// Suzuki, Phys. Lett. A 146 (1990): γ1 = γ2 = γ4 = γ5 = 1/(4 − 4^{1/3}), γ3 = 1 − 4γ1.
+std::span<const double> suzuki5();
+/// McLachlan, SIAM J. Sci. Comput. 16 (1995), a 5-stage method of small error constant
+/// (GNI §V.3.2): γ1 = γ5 = 0.28, γ2 = γ4 = 0.62546642846767004501, γ3 = 1 − 2(γ1 + γ2).
+std::span<const double> mclachlan5();
+}  // namespace composition4
+
+/// The sorted splitting composed with the coefficients `gammas` (one Strang step of
+/// γ_i·dt each, the adjacent outer half-flows of consecutive steps merged into one).
+Eigen::Quaterniond composed_splitting_increment(const Eigen::Vector3d& Pi_body,
+                                                const Eigen::Vector3d& inverse_moments, double dt,
+                                                std::span<const double> gammas);
+
+/// Fourth-order symplectic method of the rigid models (`splitting4`): the sorted splitting
+/// composed by Suzuki's 5-stage coefficients (composition4::suzuki5), 21 sub-flows per step.
+/// Chosen by measurement (docs/physics.md §10): on five motions of the book the triple jump
+/// (13 sub-flows) is 64–83× less accurate and McLachlan's (21) 1.9–2.3× less. Conserves |L|
+/// and world L exactly, energy without drift.
+Eigen::Quaterniond splitting4_increment(const Eigen::Vector3d& Pi_body,
+                                        const Eigen::Vector3d& inverse_moments, double dt);
 
 }  // namespace bookspin::physics

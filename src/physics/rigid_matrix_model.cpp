@@ -37,16 +37,25 @@ void RigidMatrixModel::euler_step(double dt) {
 }
 
 void RigidMatrixModel::step(double dt) {
+  if (!failure_.empty()) return;  // the run has ended (finite() is false)
   switch (config_.integrator) {
     case Integrator::rk4:
       R_ = rk4_step(R_, dt, [this](const Eigen::Matrix3d& R) { return derivative(R); });
       break;
-    case Integrator::implicit_midpoint:
-      R_ = R_ * implicit_midpoint_increment(R_.transpose() * L_, inverse_moments_, dt)
-                    .toRotationMatrix();
+    case Integrator::implicit_midpoint: {
+      const auto delta = implicit_midpoint_increment(R_.transpose() * L_, inverse_moments_, dt);
+      if (!delta) {
+        failure_ = midpoint_failure(t_, dt);
+        return;
+      }
+      R_ = R_ * delta->toRotationMatrix();
       break;
+    }
     case Integrator::splitting:
       R_ = R_ * splitting_increment(R_.transpose() * L_, inverse_moments_, dt).toRotationMatrix();
+      break;
+    case Integrator::splitting4:
+      R_ = R_ * splitting4_increment(R_.transpose() * L_, inverse_moments_, dt).toRotationMatrix();
       break;
     default:  // euler, the paper's method
       euler_step(dt);
@@ -57,10 +66,8 @@ void RigidMatrixModel::step(double dt) {
 
 Corners RigidMatrixModel::corners() const { return R_ * book_.body_corners(); }
 
-Diagnostics RigidMatrixModel::diagnostics() const {
-  return rigid_diagnostics(book_, R_, L_, t_);
-}
+Diagnostics RigidMatrixModel::diagnostics() const { return rigid_diagnostics(book_, R_, L_, t_); }
 
-bool RigidMatrixModel::finite() const { return is_sane(R_); }
+bool RigidMatrixModel::finite() const { return failure_.empty() && is_sane(R_); }
 
 }  // namespace bookspin::physics

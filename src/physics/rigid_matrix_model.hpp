@@ -8,7 +8,10 @@ namespace bookspin::physics {
 /// world angular momentum L. Euler step (paper): ω = R I_body⁻¹ Rᵀ L, R += dt·[ω]× R, then
 /// optionally R ← U Vᵀ from the SVD R = U Σ Vᵀ (computed as the polar factor of R, see
 /// polar.hpp; the same matrix as JacobiSVD's U Vᵀ to round-off). Corners are R·body
-/// corners, so an unnormalized R stretches the book (paper Figure 10).
+/// corners, so an unnormalized R stretches the book (paper Figure 10). The other
+/// integrators (rk4, implicit-midpoint, splitting, splitting4: docs/physics.md §10) advance the
+/// same state; an implicit-midpoint step that does not converge ends the run (finite()
+/// false, divergence_reason() says why) and leaves R as it was.
 class RigidMatrixModel final : public Simulator {
  public:
   RigidMatrixModel(const Book& book, const ModelConfig& config);
@@ -17,6 +20,7 @@ class RigidMatrixModel final : public Simulator {
   Corners corners() const override;
   Diagnostics diagnostics() const override;
   bool finite() const override;
+  std::string divergence_reason() const override { return failure_; }
 
   const Eigen::Matrix3d& orientation() const { return R_; }
 
@@ -32,6 +36,7 @@ class RigidMatrixModel final : public Simulator {
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
   Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
   double t_ = 0.0;
+  std::string failure_;  ///< why the run ended early; empty while it runs
 };
 
 }  // namespace bookspin::physics

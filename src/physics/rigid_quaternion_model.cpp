@@ -17,9 +17,12 @@ void RigidQuaternionModel::reset(const InitialState& initial) {
 }
 
 // q̇ = ½ (0, ω) ⊗ q with world-frame ω (Baraff 1997, eq. 4-2), coefficients (x, y, z, w).
+// ω comes from R(q/|q|): RK4's stage values are not unit quaternions, and R(q) of a non-unit
+// q is not a rotation (it would put an O(dt⁴)-per-step error of |q| into ω, ~80× the
+// method's own error at dt = 1/60; docs/physics.md §10). The flow q̇ keeps |q| constant.
 Eigen::Vector4d RigidQuaternionModel::derivative(const Eigen::Vector4d& q_coeffs) const {
   const Eigen::Quaterniond q(q_coeffs);
-  const Eigen::Matrix3d R = q.toRotationMatrix();
+  const Eigen::Matrix3d R = q.normalized().toRotationMatrix();
   const Eigen::Vector3d omega = R * (inverse_moments_.asDiagonal() * (R.transpose() * L_));
   const Eigen::Quaterniond omega_q(0.0, omega.x(), omega.y(), omega.z());
   return 0.5 * (omega_q * q).coeffs();
@@ -38,9 +41,8 @@ Rotation rotation_of(double x, double y, double z, double w) {
   const double twx = tx * w, twy = ty * w, twz = tz * w;
   const double txx = tx * x, txy = ty * x, txz = tz * x;
   const double tyy = ty * y, tyz = tz * y, tzz = tz * z;
-  return {1.0 - (tyy + tzz), txy - twz,         txz + twy,
-          txy + twz,         1.0 - (txx + tzz), tyz - twx,
-          txz - twy,         tyz + twx,         1.0 - (txx + tyy)};
+  return {1.0 - (tyy + tzz), txy - twz, txz + twy, txy + twz,        1.0 - (txx + tzz),
+          tyz - twx,         txz - twy, tyz + twx, 1.0 - (txx + tyy)};
 }
 
 }  // namespace
@@ -92,18 +94,37 @@ void RigidQuaternionModel::unit_euler_step(double dt) {
   q_ = Eigen::Quaterniond(nw * scale, nx * scale, ny * scale, nz * scale);
 }
 
+// The orientation the non-Euler integrators work from: R(q/|q|), a rotation even when |q|
+// has drifted (only the paper's Euler, and drawing the book, use R(q) of a non-unit q).
+// As a quaternion rotation by q* = (w, −u) scaled by 1/|q|²: Rᵀ L = L + (2/|q|²)(u × (u × L)
+// − w u × L), fewer operations than forming the matrix.
+Eigen::Vector3d RigidQuaternionModel::body_momentum() const {
+  const Eigen::Vector3d u = q_.vec();
+  const Eigen::Vector3d u_cross_L = u.cross(L_);
+  return L_ + (2.0 / q_.squaredNorm()) * (u.cross(u_cross_L) - q_.w() * u_cross_L);
+}
+
 void RigidQuaternionModel::step(double dt) {
+  if (!failure_.empty()) return;  // the run has ended (finite() is false)
   switch (config_.integrator) {
     case Integrator::rk4:
       q_.coeffs() = rk4_step(Eigen::Vector4d(q_.coeffs()), dt,
                              [this](const Eigen::Vector4d& c) { return derivative(c); });
       break;
-    case Integrator::implicit_midpoint:
-      q_ = q_ * implicit_midpoint_increment(q_.toRotationMatrix().transpose() * L_,
-                                            inverse_moments_, dt);
+    case Integrator::implicit_midpoint: {
+      const auto delta = implicit_midpoint_increment(body_momentum(), inverse_moments_, dt);
+      if (!delta) {
+        failure_ = midpoint_failure(t_, dt);
+        return;
+      }
+      q_ = q_ * *delta;
       break;
+    }
     case Integrator::splitting:
-      q_ = q_ * splitting_increment(q_.toRotationMatrix().transpose() * L_, inverse_moments_, dt);
+      q_ = q_ * splitting_increment(body_momentum(), inverse_moments_, dt);
+      break;
+    case Integrator::splitting4:
+      q_ = q_ * splitting4_increment(body_momentum(), inverse_moments_, dt);
       break;
     default:  // euler, the paper's method; the unit step normalizes itself
       if (config_.normalize)
@@ -127,6 +148,6 @@ Diagnostics RigidQuaternionModel::diagnostics() const {
   return d;
 }
 
-bool RigidQuaternionModel::finite() const { return is_sane(q_.coeffs()); }
+bool RigidQuaternionModel::finite() const { return failure_.empty() && is_sane(q_.coeffs()); }
 
 }  // namespace bookspin::physics

@@ -10,7 +10,10 @@ namespace bookspin::physics {
 /// R(q) from the unit-quaternion formula (Eigen's toRotationMatrix(), which does not divide
 /// by |q|²), ω = R(q) I_body⁻¹ R(q)ᵀ L (world frame), q += ½ dt (0, ω) ⊗ q, then optionally
 /// q /= |q|. The same R(q) places the corners, so with |q| = s ≠ 1 the book is drawn as
-/// (1 − s²) I + s² R(q/s): it distorts and pulsates (paper Figures 11–12).
+/// (1 − s²) I + s² R(q/s): it distorts and pulsates (paper Figures 11–12). The other
+/// integrators (rk4, implicit-midpoint, splitting, splitting4: docs/physics.md §10) evaluate
+/// ω from R(q/|q|) instead; an implicit-midpoint step that does not converge ends the run
+/// (finite() false, divergence_reason() says why) and leaves q as it was.
 class RigidQuaternionModel final : public Simulator {
  public:
   RigidQuaternionModel(const Book& book, const ModelConfig& config);
@@ -19,11 +22,13 @@ class RigidQuaternionModel final : public Simulator {
   Corners corners() const override;
   Diagnostics diagnostics() const override;
   bool finite() const override;
+  std::string divergence_reason() const override { return failure_; }
 
   const Eigen::Quaterniond& orientation() const { return q_; }
 
  private:
   Eigen::Vector4d derivative(const Eigen::Vector4d& q_coeffs) const;
+  Eigen::Vector3d body_momentum() const;
   void raw_euler_step(double dt);
   void unit_euler_step(double dt);
 
@@ -33,6 +38,7 @@ class RigidQuaternionModel final : public Simulator {
   Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity();
   Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
   double t_ = 0.0;
+  std::string failure_;  ///< why the run ended early; empty while it runs
 };
 
 }  // namespace bookspin::physics

@@ -20,13 +20,14 @@ constexpr std::array<std::pair<ModelKind, std::string_view>, 4> kModelNames{{
     {ModelKind::exact, "exact"},
 }};
 
-constexpr std::array<std::pair<Integrator, std::string_view>, 6> kIntegratorNames{{
+constexpr std::array<std::pair<Integrator, std::string_view>, 7> kIntegratorNames{{
     {Integrator::euler, "euler"},
     {Integrator::symplectic_euler, "symplectic-euler"},
     {Integrator::velocity_verlet, "velocity-verlet"},
     {Integrator::rk4, "rk4"},
     {Integrator::implicit_midpoint, "implicit-midpoint"},
     {Integrator::splitting, "splitting"},
+    {Integrator::splitting4, "splitting4"},
 }};
 
 template <typename Enum, std::size_t N>
@@ -55,7 +56,7 @@ bool is_particle_integrator(Integrator i) {
 
 bool is_rigid_integrator(Integrator i) {
   return i == Integrator::euler || i == Integrator::rk4 || i == Integrator::implicit_midpoint ||
-         i == Integrator::splitting;
+         i == Integrator::splitting || i == Integrator::splitting4;
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// The one interface every book simulator implements (docs/physics.md §5 and §9).
+// The one interface every book simulator implements (docs/physics.md §5, §9 and §10).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -19,14 +19,15 @@ enum class Integrator {
   rk4,                ///< rigid: classical Runge–Kutta 4
   implicit_midpoint,  ///< rigid
   splitting,          ///< rigid: symplectic splitting of the free rotor (DLM 1997 / NO_SQUISH)
+  splitting4,         ///< rigid: fourth-order composition of `splitting` (docs/physics.md §10)
 };
 
 struct ModelConfig {
   ModelKind kind = ModelKind::particle;
   Integrator integrator = Integrator::euler;
-  bool normalize = false;        ///< energy (particle), SVD (matrix), |q| (quaternion)
-  bool damping = true;           ///< critical spring damping (particle only)
-  double spring_constant = 10.0; ///< k, force per length (particle only)
+  bool normalize = false;         ///< energy (particle), SVD (matrix), |q| (quaternion)
+  bool damping = true;            ///< critical spring damping (particle only)
+  double spring_constant = 10.0;  ///< k, force per length (particle only)
 };
 
 /// Initial condition: identity orientation, body-frame ω0, and a seeded jiggle.
@@ -45,9 +46,9 @@ struct Diagnostics {
   double energy_potential = 0.0;  ///< spring energy (0 for rigid models)
   double energy_total = 0.0;
   Eigen::Vector3d cos_axis_L = Eigen::Vector3d::Zero();  ///< cos(body axis d in world, L)
-  double strain_max = 0.0;            ///< max over 28 corner pairs of |len/rest − 1|
-  double orthogonality_error = 0.0;   ///< ‖RᵀR − I‖_F of the matrix placing the corners
-  double quaternion_norm = 1.0;       ///< |q|, 1 where there is no quaternion
+  double strain_max = 0.0;           ///< max over 28 corner pairs of |len/rest − 1|
+  double orthogonality_error = 0.0;  ///< ‖RᵀR − I‖_F of the matrix placing the corners
+  double quaternion_norm = 1.0;      ///< |q|, 1 where there is no quaternion
 };
 
 /// What the simulator hands to the rest of the pipeline each frame.
@@ -68,8 +69,12 @@ class Simulator {
   virtual Corners corners() const = 0;
   /// Diagnostics of the current state.
   virtual Diagnostics diagnostics() const = 0;
-  /// True while every state variable is finite and not absurdly large.
+  /// True while every state variable is finite and not absurdly large, and the last step
+  /// succeeded (an implicit step that did not converge ends the run: docs/physics.md §10).
   virtual bool finite() const = 0;
+  /// Why the run stopped when finite() is false for a reason other than overflow (e.g.
+  /// "implicit midpoint: fixed-point iteration did not converge at t = …"); empty otherwise.
+  virtual std::string divergence_reason() const { return {}; }
 
   BookPose pose() const { return {corners(), diagnostics()}; }
 };
@@ -81,7 +86,8 @@ class Simulator {
 Eigen::Vector3d jiggle_delta_L(std::uint64_t seed, double amplitude);
 
 /// Whether a model accepts an integrator (particle: euler, symplectic-euler, velocity-verlet;
-/// rigid: euler, rk4, implicit-midpoint, splitting; exact: euler, i.e. the key is unused).
+/// rigid: euler, rk4, implicit-midpoint, splitting, splitting4; exact: euler, i.e. the key
+/// is unused).
 bool supports(ModelKind kind, Integrator integrator);
 
 /// Creates the simulator for `config`. Throws std::invalid_argument when the model does
@@ -93,7 +99,7 @@ std::string_view to_string(Integrator integrator);
 /// Parses "particle" | "rigid-matrix" | "rigid-quaternion" | "exact"; false if unknown.
 bool parse_model_kind(std::string_view text, ModelKind& out);
 /// Parses "euler" | "symplectic-euler" | "velocity-verlet" | "rk4" | "implicit-midpoint" |
-/// "splitting"; false if unknown.
+/// "splitting" | "splitting4"; false if unknown.
 bool parse_integrator(std::string_view text, Integrator& out);
 
 }  // namespace bookspin::physics
