@@ -110,7 +110,7 @@ template <int A>
 /// half-flow ending one step and the one starting the next are a single flow (T_O commutes
 /// with itself), so s steps cost 4s + 1 sub-flows.
 template <int O, int M, int N>
-Eigen::Quaterniond compose(Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
+Eigen::Quaterniond compose(const Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
                            double dt, std::span<const double> gammas) {
   RotorState s{{Pi_body[0], Pi_body[1], Pi_body[2]}, 1.0, {0.0, 0.0, 0.0}};
   const double rate_O = 0.5 * inverse_moments[O], rate_M = 0.5 * inverse_moments[M],
@@ -125,12 +125,11 @@ Eigen::Quaterniond compose(Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inve
     outer_time = 0.5 * h + (i + 1 < gammas.size() ? 0.5 * gammas[i + 1] * dt : 0.0);
   }
   rotor_flow<O>(rate_O * outer_time, s);
-  Pi_body = Eigen::Vector3d(s.P[0], s.P[1], s.P[2]);
   return Eigen::Quaterniond(s.w, s.v[0], s.v[1], s.v[2]);
 }
 
-/// compose() for a run-time order: one of the six instantiations. Advances `Pi_body`.
-Eigen::Quaterniond compose(Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
+/// compose() for a run-time order: one of the six instantiations.
+Eigen::Quaterniond compose(const Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
                            double dt, const std::array<int, 3>& order,
                            std::span<const double> gammas) {
   const int code = 9 * order[0] + 3 * order[1] + order[2];
@@ -158,19 +157,12 @@ constexpr std::array<double, 1> kStrang{1.0};
 Eigen::Quaterniond splitting_increment(const Eigen::Vector3d& Pi_body,
                                        const Eigen::Vector3d& inverse_moments, double dt,
                                        const std::array<int, 3>& order) {
-  Eigen::Vector3d Pi = Pi_body;
-  return compose(Pi, inverse_moments, dt, order, kStrang);
+  return compose(Pi_body, inverse_moments, dt, order, kStrang);
 }
 
 Eigen::Quaterniond splitting_increment(const Eigen::Vector3d& Pi_body,
                                        const Eigen::Vector3d& inverse_moments, double dt) {
-  Eigen::Vector3d Pi = Pi_body;
-  return splitting_step(Pi, inverse_moments, dt);
-}
-
-Eigen::Quaterniond splitting_step(Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
-                                  double dt) {
-  return compose(Pi_body, inverse_moments, dt, axes_by_moment(inverse_moments), kStrang);
+  return splitting_increment(Pi_body, inverse_moments, dt, axes_by_moment(inverse_moments));
 }
 
 namespace composition4 {
@@ -198,20 +190,12 @@ std::span<const double> mclachlan5() {
 Eigen::Quaterniond composed_splitting_increment(const Eigen::Vector3d& Pi_body,
                                                 const Eigen::Vector3d& inverse_moments, double dt,
                                                 std::span<const double> gammas) {
-  Eigen::Vector3d Pi = Pi_body;
-  return compose(Pi, inverse_moments, dt, axes_by_moment(inverse_moments), gammas);
+  return compose(Pi_body, inverse_moments, dt, axes_by_moment(inverse_moments), gammas);
 }
 
 Eigen::Quaterniond splitting4_increment(const Eigen::Vector3d& Pi_body,
                                         const Eigen::Vector3d& inverse_moments, double dt) {
-  Eigen::Vector3d Pi = Pi_body;
-  return splitting4_step(Pi, inverse_moments, dt);
-}
-
-Eigen::Quaterniond splitting4_step(Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
-                                   double dt) {
-  return compose(Pi_body, inverse_moments, dt, axes_by_moment(inverse_moments),
-                 composition4::suzuki5());
+  return composed_splitting_increment(Pi_body, inverse_moments, dt, composition4::suzuki5());
 }
 
 }  // namespace bookspin::physics

@@ -65,13 +65,6 @@ Eigen::Quaterniond splitting_increment(const Eigen::Vector3d& Pi_body,
 Eigen::Quaterniond splitting_increment(const Eigen::Vector3d& Pi_body,
                                        const Eigen::Vector3d& inverse_moments, double dt);
 
-/// splitting_increment() that also advances `Pi_body` (in/out, body frame) to the
-/// sub-flows' final momentum, Π_{n+1} = Δᵀ Π_n. A model that carries Π from step to step
-/// this way (Dullweber, Leimkuhler & McLachlan's (Q, Π) form) keeps the orientation update
-/// and its normalization off the chain of dependent operations that bounds the step.
-Eigen::Quaterniond splitting_step(Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
-                                  double dt);
-
 /// Coefficients γ of symmetric compositions Φ(γ_1 dt) ∘ … ∘ Φ(γ_s dt) of a symmetric
 /// second-order step Φ that are fourth order (Σγ = 1, Σγ³ = 0; Hairer, Lubich & Wanner,
 /// Geometric Numerical Integration, §II.4 and §V.3).
@@ -99,9 +92,5 @@ Eigen::Quaterniond composed_splitting_increment(const Eigen::Vector3d& Pi_body,
 /// and world L exactly, energy without drift.
 Eigen::Quaterniond splitting4_increment(const Eigen::Vector3d& Pi_body,
                                         const Eigen::Vector3d& inverse_moments, double dt);
-
-/// splitting4_increment() that also advances `Pi_body` (in/out), as splitting_step().
-Eigen::Quaterniond splitting4_step(Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
-                                   double dt);
 
 }  // namespace bookspin::physics

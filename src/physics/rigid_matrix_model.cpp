@@ -12,7 +12,6 @@ RigidMatrixModel::RigidMatrixModel(const Book& book, const ModelConfig& config)
 void RigidMatrixModel::reset(const InitialState& initial) {
   R_.setIdentity();
   L_ = initial_angular_momentum(book_, initial);
-  Pi_ = L_;  // Rᵀ L at the identity
   t_ = 0.0;
 }
 
@@ -53,10 +52,10 @@ void RigidMatrixModel::step(double dt) {
       break;
     }
     case Integrator::splitting:
-      R_ = R_ * splitting_step(Pi_, inverse_moments_, dt).toRotationMatrix();
+      R_ = R_ * splitting_increment(R_.transpose() * L_, inverse_moments_, dt).toRotationMatrix();
       break;
     case Integrator::splitting4:
-      R_ = R_ * splitting4_step(Pi_, inverse_moments_, dt).toRotationMatrix();
+      R_ = R_ * splitting4_increment(R_.transpose() * L_, inverse_moments_, dt).toRotationMatrix();
       break;
     default:  // euler, the paper's method
       euler_step(dt);

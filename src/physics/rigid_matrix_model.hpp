@@ -35,10 +35,6 @@ class RigidMatrixModel final : public Simulator {
   Eigen::Vector3d inverse_moments_;
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
   Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
-  /// Body-frame momentum carried by the splittings from step to step (Π_{n+1} = Δᵀ Π_n,
-  /// RᵀL up to round-off): recomputing RᵀL would put the orientation update and its
-  /// normalization on the step's chain of dependent operations (physics.md §10).
-  Eigen::Vector3d Pi_ = Eigen::Vector3d::Zero();
   double t_ = 0.0;
   std::string failure_;  ///< why the run ended early; empty while it runs
 };

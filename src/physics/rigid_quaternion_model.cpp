@@ -13,7 +13,6 @@ RigidQuaternionModel::RigidQuaternionModel(const Book& book, const ModelConfig& 
 void RigidQuaternionModel::reset(const InitialState& initial) {
   q_.setIdentity();
   L_ = initial_angular_momentum(book_, initial);
-  Pi_ = L_;  // Rᵀ L at the identity
   t_ = 0.0;
 }
 
@@ -122,10 +121,10 @@ void RigidQuaternionModel::step(double dt) {
       break;
     }
     case Integrator::splitting:
-      q_ = q_ * splitting_step(Pi_, inverse_moments_, dt);
+      q_ = q_ * splitting_increment(body_momentum(), inverse_moments_, dt);
       break;
     case Integrator::splitting4:
-      q_ = q_ * splitting4_step(Pi_, inverse_moments_, dt);
+      q_ = q_ * splitting4_increment(body_momentum(), inverse_moments_, dt);
       break;
     default:  // euler, the paper's method; the unit step normalizes itself
       if (config_.normalize)
