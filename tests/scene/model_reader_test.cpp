@@ -1,4 +1,4 @@
-// [[compare]] entries and render.panel in the scene parser.
+// The model reader: model.integrator, [[compare]] entries and render keys in the scene parser.
 #include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
@@ -107,6 +107,46 @@ TEST(CompareKeys, SetOverrideOfTheWholeArrayIsNamedAsSuch) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "--set compare[1].colour: unknown key");
   }
+}
+
+// model.integrator: every integrator name, and the models that take it.
+
+std::string model_table(const std::string& kind, const std::string& integrator) {
+  return "[model]\nkind = \"" + kind + "\"\nintegrator = \"" + integrator + "\"\n";
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ModelReader, Splitting4ParsesForBothRigidModels) {
+  for (const std::string kind : {"rigid-matrix", "rigid-quaternion"}) {
+    const Scene s = parse(model_table(kind, "splitting4"));
+    EXPECT_EQ(s.model.integrator, physics::Integrator::splitting4) << kind;
+  }
+}
+
+TEST(ModelReader, Splitting4IsRejectedByTheParticleAndExactModels) {
+  for (const std::string kind : {"particle", "exact"}) {
+    const std::string message = error_of(model_table(kind, "splitting4"));
+    EXPECT_NE(message.find("model.integrator: model '" + kind +
+                           "' does not support integrator 'splitting4'"),
+              std::string::npos)
+        << message;
+  }
+}
+
+TEST(ModelReader, UnknownIntegratorListsEveryName) {
+  const std::string message = error_of(model_table("rigid-matrix", "leapfrog"));
+  EXPECT_NE(message.find("(expected euler, symplectic-euler, velocity-verlet, rk4, "
+                         "implicit-midpoint, splitting, splitting4)"),
+            std::string::npos)
+      << message;
 }
 
 }  // namespace
