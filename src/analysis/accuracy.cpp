@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/errors.hpp"
 #include "physics/shape.hpp"
 
 namespace bookspin::analysis {
@@ -145,7 +146,7 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
                     double dt) {
   const double flip = exact.flip_period();
   if (!std::isfinite(flip)) {
-    throw std::invalid_argument("the exact motion has no flip period (separatrix or pure spin)");
+    throw InputError("the exact motion has no flip period (separatrix or pure spin)");
   }
   AccuracyRow row;
   row.method = m;

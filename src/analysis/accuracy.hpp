@@ -47,7 +47,7 @@ struct AccuracyRow {
 };
 
 /// Runs one method at one dt from `settings.initial` for `settings.flips` exact flip periods.
-/// Throws std::invalid_argument if the exact motion has no flip period (separatrix or a
+/// Throws InputError if the exact motion has no flip period (separatrix or a
 /// pure principal-axis spin).
 AccuracyRow measure(const AccuracySettings& settings, const physics::ExactRotation& exact,
                     const Method& method, double dt);

@@ -1,93 +1,22 @@
+// `bookspin accuracy`: builds the request and prints what the pipeline measures.
 #include <cstdio>
-#include <fstream>
-#include <iostream>
 
-#include "analysis/accuracy.hpp"
 #include "cli/commands.hpp"
-#include "overlay/plot.hpp"
-#include "scene/scene.hpp"
-#include "output/atomic_output.hpp"
-#include "output/png_writer.hpp"
-#include "pipeline/accuracy_plots.hpp"
+#include "pipeline/accuracy_report.hpp"
 
 namespace bookspin::cli {
 
-namespace {
-
-std::string csv_line(const analysis::AccuracyRow& r) {
-  char line[512];
-  std::snprintf(line, sizeof line, "%s,%s,%.17g,%ld,%.17g,%.6e,%.6e,%.6e,%.17g,%.6e,%.2f,%d",
-                std::string(physics::to_string(r.method.kind)).c_str(),
-                std::string(physics::to_string(r.method.integrator)).c_str(), r.dt, r.steps,
-                r.t_end, r.orientation_error, r.energy_drift, r.L_drift, r.flip_period,
-                r.flip_period_error, r.ns_per_step, r.diverged ? 1 : 0);
-  return line;
-}
-
-void print_row(const analysis::AccuracyRow& r) {
-  std::printf("%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12.3e %9.1f%s%s\n",
-              pipeline::method_label(r.method).c_str(), 1.0 / r.dt, r.orientation_error, r.energy_drift,
-              r.L_drift, r.flip_period_error, r.ns_per_step, r.diverged ? "  diverged" : "",
-              r.divergence_reason.empty() ? "" : (": " + r.divergence_reason).c_str());
-  std::fflush(stdout);
-}
-
-void write_csv(const std::filesystem::path& path, const std::vector<analysis::AccuracyRow>& rows) {
-  output::AtomicTextFile file(path);
-  std::ostream& out = file.stream();
-  out << "model,integrator,dt,steps,t_end,orientation_error_rad,energy_drift,L_drift,"
-         "flip_period,flip_period_error,ns_per_step,diverged\n";
-  for (const auto& r : rows) out << csv_line(r) << '\n';
-  file.commit();
-}
-
-overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, double flips) {
-  overlay::PlotSpec spec;
-  spec.title = "Orientation error after " + std::to_string(static_cast<int>(flips)) +
-               " flips, against the exact solution";
-  spec.x_label = "time step dt (time units)";
-  spec.y_label = "orientation error (rad)";
-  spec.log_x = spec.log_y = true;
-  for (const auto& method : analysis::all_methods()) {
-    overlay::Series s;
-    s.label = pipeline::method_label(method);
-    for (const auto& r : rows) {
-      if (r.method.kind != method.kind || r.method.integrator != method.integrator) continue;
-      s.x.push_back(r.dt);
-      s.y.push_back(r.orientation_error);
-    }
-    pipeline::style_series(method, s);
-    spec.series.push_back(std::move(s));
-  }
-  return spec;
-}
-
-}  // namespace
-
 int accuracy_command(const AccuracyOptions& options) {
-  const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
-  analysis::AccuracySettings settings{scene.book, scene.initial, scene.model, options.flips};
-  const auto exact = analysis::exact_reference(settings);
-  std::printf("%s: exact flip period T/2 = 2K(k)/lambda = %.9g time units (k = %.9g), %g flips\n",
-              scene.name.c_str(), exact.flip_period(), exact.modulus(), options.flips);
-  std::printf("%-28s %-7s %12s %11s %11s %12s %9s\n", "method", "dt", "orient. err", "energy drift",
-              "|L| drift", "flip T err", "ns/step");
-  std::vector<analysis::AccuracyRow> rows;
-  for (const auto& method : analysis::all_methods()) {
-    for (double dt : options.dts) {
-      rows.push_back(analysis::measure(settings, exact, method, dt));
-      print_row(rows.back());
-    }
-  }
-  const std::filesystem::path out(options.out_dir);
-  std::filesystem::create_directories(out);
-  write_csv(out / (scene.name + "-accuracy.csv"), rows);
-  output::write_png(out / (scene.name + "-accuracy.png"),
-                   overlay::plot_image(accuracy_plot(rows, options.flips), 1400, 900));
-  std::printf("wrote %s and %s\n", (out / (scene.name + "-accuracy.csv")).c_str(),
-              (out / (scene.name + "-accuracy.png")).c_str());
-  for (const auto& path : pipeline::write_accuracy_plots(out, scene.name, settings, exact, rows))
-    std::printf("wrote %s\n", path.c_str());
+  pipeline::AccuracyRequest request;
+  request.scene = scene::parse_scene(options.scene_path, options.overrides);
+  request.out_dir = options.out_dir;
+  request.flips = options.flips;
+  request.dts = options.dts;
+  request.on_line = [](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  };
+  for (const auto& path : pipeline::run_accuracy(request)) std::printf("wrote %s\n", path.c_str());
   return kExitOk;
 }
 

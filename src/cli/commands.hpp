@@ -65,6 +65,9 @@ struct GalleryOptions {
 /// (<video>), static plot and diagnostics CSVs, each only where the file exists under OUT.
 int gallery_command(const GalleryOptions& options);
 
+/// "; REASON" for a simulator's divergence reason, "" when it gave none.
+std::string divergence_because(const std::string& reason);
+
 /// Parses argv and runs the chosen subcommand.
 int run_cli(int argc, char** argv);
 

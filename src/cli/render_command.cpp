@@ -28,6 +28,7 @@ void warn_divergence(const std::string& name, const pipeline::ClipResult& result
   if (result.diverged_at) {
     std::cerr << "bookspin: warning: " << name
               << ": simulation diverged at t = " << *result.diverged_at
+              << divergence_because(result.divergence_reason)
               << "; the clip holds the last finite frame\n";
   }
   for (const auto& tile : result.diverged_tiles) {
@@ -37,6 +38,10 @@ void warn_divergence(const std::string& name, const pipeline::ClipResult& result
 }
 
 }  // namespace
+
+std::string divergence_because(const std::string& reason) {
+  return reason.empty() ? "" : "; " + reason;
+}
 
 int render_command(const RenderArgs& args) {
   install_interrupt_handlers();

@@ -1,4 +1,3 @@
-#include <fstream>
 #include <iostream>
 #include <stdexcept>
 
@@ -10,9 +9,11 @@ namespace bookspin::cli {
 
 namespace {
 
-void warn_diverged(const scene::Scene& scene, double t, int rows) {
-  std::cerr << "bookspin: warning: " << scene.name << ": simulation diverged at t = " << t
-            << "; kept the " << rows << " rows before it\n";
+void warn_diverged(const scene::Scene& scene, const pipeline::SimulationResult& result) {
+  std::cerr << "bookspin: warning: " << scene.name
+            << ": simulation diverged at t = " << *result.diverged_at
+            << divergence_because(result.divergence_reason) << "; kept the " << result.rows
+            << " rows before it\n";
 }
 
 }  // namespace
@@ -30,15 +31,11 @@ int simulate_command(const SimulateOptions& options) {
     result = pipeline::write_diagnostics_rows(scene, std::cout);
     std::cout.flush();
   } else {
-    output::AtomicFile file(options.csv_path);
-    std::ofstream out(file.temp_path(), std::ios::binary);
-    if (!out) throw_output_error("cannot create", options.csv_path, errno);
-    result = pipeline::write_diagnostics_rows(scene, out);
-    out.close();
-    if (!out) throw_output_error("cannot write", options.csv_path, errno);
+    output::AtomicTextFile file(options.csv_path);
+    result = pipeline::write_diagnostics_rows(scene, file.stream());
     file.commit();
   }
-  if (result.diverged_at) warn_diverged(scene, *result.diverged_at, result.rows);
+  if (result.diverged_at) warn_diverged(scene, result);
   return kExitOk;
 }
 

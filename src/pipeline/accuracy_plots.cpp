@@ -107,7 +107,7 @@ std::vector<std::filesystem::path> write_accuracy_plots(
   std::vector<std::filesystem::path> written;
   const auto work_png = out_dir / (scene_name + "-work-precision.png");
   output::write_png(work_png,
-                   overlay::plot_image(work_precision_plot(rows, settings.flips), 1400, 900));
+                    overlay::plot_image(work_precision_plot(rows, settings.flips), 1400, 900));
   written.push_back(work_png);
 
   std::vector<analysis::EnergyHistory> histories;

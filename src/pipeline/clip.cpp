@@ -80,6 +80,7 @@ ClipResult render_single(const ClipRequest& request) {
   }
   while (auto image = renderer.flush()) finisher.finish(std::move(*image));
   sinks.finish();
+  result.divergence_reason = source.divergence_reason();
   return result;
 }
 

@@ -34,8 +34,9 @@ struct TileDivergence {
 };
 
 struct ClipResult {
-  int frames = 0;                              ///< frames handed to the sinks
-  std::optional<double> diverged_at;           ///< single scene: when its simulation diverged
+  int frames = 0;                     ///< frames handed to the sinks
+  std::optional<double> diverged_at;  ///< single scene: when its simulation diverged
+  std::string divergence_reason;      ///< single scene: the simulator's reason, if it gave one
   std::vector<TileDivergence> diverged_tiles;  ///< comparison scene: every diverged tile
   /// The signal that stopped the clip, 0 if it ran to the end. A stopped clip leaves no
   /// output behind (every temporary removed), earlier complete files untouched.

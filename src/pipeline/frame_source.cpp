@@ -15,6 +15,7 @@ bool FrameSource::next(physics::BookPose& pose) {
       ++steps_;
       if (!simulator_->finite()) {
         diverged_at_ = static_cast<double>(steps_) * scene_.dt;
+        divergence_reason_ = simulator_->divergence_reason();
         return false;
       }
     }

@@ -2,6 +2,7 @@
 // Drives a simulator frame by frame for a scene (data flow: Scene → simulator → BookPose).
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "physics/simulator.hpp"
 #include "scene/scene.hpp"
@@ -21,6 +22,9 @@ class FrameSource {
   bool next(physics::BookPose& pose);
   int frame() const { return frame_; }  ///< index of the last frame returned
   std::optional<double> diverged_at() const { return diverged_at_; }
+  /// Why the simulator stopped, where it says (an implicit step that did not converge);
+  /// empty otherwise (the state grew non-finite or absurdly large).
+  const std::string& divergence_reason() const { return divergence_reason_; }
 
  private:
   const scene::Scene& scene_;
@@ -28,6 +32,7 @@ class FrameSource {
   int frame_ = -1;
   long long steps_ = 0;
   std::optional<double> diverged_at_;
+  std::string divergence_reason_;
 };
 
 }  // namespace bookspin::pipeline

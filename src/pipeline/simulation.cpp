@@ -11,7 +11,7 @@ SimulationResult write_diagnostics_rows(const scene::Scene& scene, std::ostream&
   physics::BookPose pose;
   while (source.next(pose))
     out << output::diagnostics_csv_row(source.frame(), pose.diagnostics) << '\n';
-  return {source.diverged_at(), source.frame() + 1};
+  return {source.diverged_at(), source.frame() + 1, source.divergence_reason()};
 }
 
 }  // namespace bookspin::pipeline

@@ -3,6 +3,7 @@
 // simulate`).
 #include <optional>
 #include <ostream>
+#include <string>
 
 #include "scene/scene.hpp"
 
@@ -11,6 +12,7 @@ namespace bookspin::pipeline {
 struct SimulationResult {
   std::optional<double> diverged_at;  ///< time units
   int rows = 0;                       ///< rows written (frame 0 = the initial state)
+  std::string divergence_reason;      ///< the simulator's own words, where it gave any
 };
 
 /// Writes the diagnostics CSV header and one row per frame (docs/physics.md §9) to `out`

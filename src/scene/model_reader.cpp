@@ -44,7 +44,7 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   if (!physics::parse_integrator(integrator, m.integrator)) {
     r.fail("model.integrator", "unknown integrator '" + integrator +
                                    "' (expected euler, symplectic-euler, velocity-verlet, rk4, "
-                                   "implicit-midpoint, splitting)");
+                                   "implicit-midpoint, splitting, splitting4)");
   }
   if (!physics::supports(m.kind, m.integrator)) {
     r.fail("model.integrator",

@@ -1,14 +1,15 @@
 // Integrators against the exact motion: convergence orders and the dt = 1/60 targets
 // (docs/physics.md §10).
+#include "analysis/accuracy.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "analysis/accuracy.hpp"
 #include "physics/particle_model.hpp"
 #include "physics/shape.hpp"
 
-namespace bookspin::test {
+namespace bookspin::analysis {
 namespace {
 
 using analysis::Method;
@@ -196,4 +197,4 @@ TEST(AccuracyTarget, FineRk4FlipSpacingMatchesEllipticPeriod) {
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::analysis

@@ -71,6 +71,22 @@ TEST(SimulateCommand, DivergenceKeepsTheRowsSoFarAndWarns) {
   EXPECT_EQ(lines.back().find("inf"), std::string::npos);
 }
 
+TEST(SimulateCommand, ImplicitMidpointThatCannotConvergeStopsWithItsReason) {
+  // dt = 20 time units turns the book by more than a radian per step: the fixed-point
+  // iteration of the implicit midpoint rule cannot converge, and the run must say so.
+  const auto csv = fresh_dir("simulate-midpoint") / "out.csv";
+  const CliResult r = run_bookspin("simulate " + scene_path("exact-unstable-x") +
+                                   " --set 'model.kind=\"rigid-matrix\"'"
+                                   " --set 'model.integrator=\"implicit-midpoint\"'"
+                                   " --set time.dt=20 --csv " +
+                                   csv.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("simulation diverged at t = 20; implicit midpoint:"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("did not converge"), std::string::npos) << r.output;
+  EXPECT_EQ(lines_of(read_file(csv)).size(), 2u);  // the header and the initial state
+}
+
 TEST(SimulateCommand, HelpDocumentsEveryOption) {
   const CliResult r = run_bookspin("simulate --help");
   ASSERT_EQ(r.status, 0);

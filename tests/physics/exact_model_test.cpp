@@ -10,7 +10,7 @@
 
 #include "physics/shape.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
 
 using Real = long double;
@@ -118,4 +118,4 @@ TEST(ExactModel, IndependentClosedFormSolvesEulerEquations) {
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics

@@ -1,4 +1,6 @@
 // The exact torque-free solution (docs/physics.md §8) and its simulator.
+#include "physics/exact_solution.hpp"
+
 #include <gtest/gtest.h>
 
 #include <boost/math/special_functions/ellint_1.hpp>
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "physics/exact_model.hpp"
-#include "physics/exact_solution.hpp"
 #include "physics/shape.hpp"
 
 namespace bookspin::physics {

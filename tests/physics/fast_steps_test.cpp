@@ -6,8 +6,10 @@
 #include "physics/rigid_quaternion_model.hpp"
 #include "physics/shape.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
+
+using namespace bookspin::physics::testing;  // model_helpers.hpp
 
 using physics::Corners;
 
@@ -33,7 +35,8 @@ TEST(FastSteps, ParticleEulerFollowsThePaperFormulaToRoundOff) {
   physics::ParticleModel model(book, cfg);
   model.reset(initial);
   Corners x = model.corners(), v = model.velocities();
-  const double m = book.mass / 8.0, damping = 2.0 * std::sqrt(cfg.spring_constant * m), dt = 1.0 / 60;
+  const double m = book.mass / 8.0, damping = 2.0 * std::sqrt(cfg.spring_constant * m),
+               dt = 1.0 / 60;
   for (int step = 0; step < 2000; ++step) {
     const Corners f = reference_forces(x, v, book.body_corners(), cfg.spring_constant, damping);
     x += dt * v;
@@ -89,10 +92,11 @@ TEST(FastSteps, NormalizedQuaternionEulerIsTheEigenExpressionToRoundOff) {
     const Eigen::Quaterniond expected =
         reference_quaternion_step(model.orientation(), c.L, c.inverse_moments, c.dt, true);
     model.step(c.dt);
-    worst = std::max(worst, (model.orientation().coeffs() - expected.coeffs()).cwiseAbs().maxCoeff());
+    worst =
+        std::max(worst, (model.orientation().coeffs() - expected.coeffs()).cwiseAbs().maxCoeff());
   }
   EXPECT_LT(worst, 1e-15);
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics

@@ -3,8 +3,10 @@
 
 #include "model_helpers.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
+
+using namespace bookspin::physics::testing;  // model_helpers.hpp
 
 using physics::ModelKind;
 
@@ -28,7 +30,8 @@ TEST(ModelAgreement, StiffParticleFollowsRigidBodyOverFirstFlip) {
   const double flip = first_flip_time(*rigid, dt);
   ASSERT_LT(flip, 2000.0);
   rigid->reset(initial);
-  auto particle = physics::make_simulator(original_book(), config(ModelKind::particle, true, true, 1e4));
+  auto particle =
+      physics::make_simulator(original_book(), config(ModelKind::particle, true, true, 1e4));
   particle->reset(initial);
   const double size = original_book().size.norm();
   double worst = 0.0;
@@ -65,4 +68,4 @@ TEST(ModelAgreement, NormalizedMatrixAndQuaternionAgree) {
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics

@@ -4,7 +4,7 @@
 
 #include "physics/simulator.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics::testing {
 
 inline physics::Book original_book() { return physics::Book{{1.878, 2.9085, 0.5}, 8.0}; }
 
@@ -41,4 +41,4 @@ inline bool run(physics::Simulator& sim, double dt, long steps, long every,
   return true;
 }
 
-}  // namespace bookspin::test
+}  // namespace bookspin::physics::testing

@@ -4,8 +4,10 @@
 #include "model_helpers.hpp"
 #include "physics/shape.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
+
+using namespace bookspin::physics::testing;  // model_helpers.hpp
 
 using physics::ModelKind;
 constexpr double kDt = 1.0 / 60.0;
@@ -82,4 +84,4 @@ TEST(PaperBehaviour, NormalizedRigidModelsKeepShape) {
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics

@@ -5,8 +5,10 @@
 
 #include "model_helpers.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
+
+using namespace bookspin::physics::testing;  // model_helpers.hpp
 
 using physics::ModelKind;
 
@@ -71,4 +73,4 @@ TEST(ParticleNormalization, CentreOfMassStaysAtTheOriginAndAtRest) {
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics

@@ -1,12 +1,12 @@
 // The matrix model's normalization: Newton's polar iteration must give the rotation the
 // SVD gives (it replaced JacobiSVD for speed; docs/physics.md §3).
+#include "physics/polar.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "physics/polar.hpp"
-
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
 
 Eigen::Matrix3d random_rotation(std::mt19937_64& rng) {
@@ -33,7 +33,8 @@ TEST(Polar, NearRotationsMatchTheSvd) {
     for (int i = 0; i < 2000; ++i) {
       const Eigen::Matrix3d m = random_rotation(rng) + random_matrix(rng, size);
       ASSERT_LT(max_gap(physics::nearest_rotation(m), physics::nearest_orthogonal_svd(m)), 1e-14)
-          << "perturbation " << size << "\n" << m;
+          << "perturbation " << size << "\n"
+          << m;
     }
   }
 }
@@ -43,18 +44,22 @@ TEST(Polar, StronglyNonOrthogonalMatricesMatchTheSvd) {
   std::mt19937_64 rng(11);
   int tried = 0;
   while (tried < 2000) {
-    const Eigen::Matrix3d m = random_rotation(rng) * (Eigen::Matrix3d::Identity() + random_matrix(rng, 0.6));
+    const Eigen::Matrix3d m =
+        random_rotation(rng) * (Eigen::Matrix3d::Identity() + random_matrix(rng, 0.6));
     const Eigen::JacobiSVD<Eigen::Matrix3d> svd(m);
-    if (m.determinant() <= 0.0 || svd.singularValues()(0) > 10.0 * svd.singularValues()(2)) continue;
+    if (m.determinant() <= 0.0 || svd.singularValues()(0) > 10.0 * svd.singularValues()(2))
+      continue;
     ++tried;
-    ASSERT_LT(max_gap(physics::nearest_rotation(m), physics::nearest_orthogonal_svd(m)), 1e-14) << m;
+    ASSERT_LT(max_gap(physics::nearest_rotation(m), physics::nearest_orthogonal_svd(m)), 1e-14)
+        << m;
   }
 }
 
 TEST(Polar, ResultIsARotation) {
   std::mt19937_64 rng(3);
   for (int i = 0; i < 1000; ++i) {
-    const Eigen::Matrix3d r = physics::nearest_rotation(random_rotation(rng) + random_matrix(rng, 0.1));
+    const Eigen::Matrix3d r =
+        physics::nearest_rotation(random_rotation(rng) + random_matrix(rng, 0.1));
     EXPECT_LT((r.transpose() * r - Eigen::Matrix3d::Identity()).norm(), 1e-15);
     EXPECT_NEAR(r.determinant(), 1.0, 1e-15);
   }
@@ -75,4 +80,4 @@ TEST(Polar, IsDeterministic) {
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics

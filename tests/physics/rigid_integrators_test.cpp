@@ -6,8 +6,10 @@
 
 #include "model_helpers.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
+
+using namespace bookspin::physics::testing;  // model_helpers.hpp
 
 using Eigen::Vector3d;
 using physics::Integrator;
@@ -60,4 +62,4 @@ TEST(ImplicitMidpoint, ModelsReportNonConvergenceAsADivergedRun) {
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics

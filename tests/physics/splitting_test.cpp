@@ -9,8 +9,10 @@
 #include "physics/exact_solution.hpp"
 #include "physics/rigid_integrators.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
+
+using namespace bookspin::physics::testing;  // model_helpers.hpp
 
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
@@ -172,4 +174,4 @@ TEST(Splitting, KeepsMomentumNormAndBoundsEnergy) {
 }
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics

@@ -5,8 +5,10 @@
 
 #include "model_helpers.hpp"
 
-namespace bookspin::test {
+namespace bookspin::physics {
 namespace {
+
+using namespace bookspin::physics::testing;  // model_helpers.hpp
 
 using physics::ModelKind;
 constexpr double kDt = 1.0 / 60.0;
@@ -54,4 +56,4 @@ INSTANTIATE_TEST_SUITE_P(AllModels, Stability,
                          });
 
 }  // namespace
-}  // namespace bookspin::test
+}  // namespace bookspin::physics
