@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <string>
@@ -128,10 +129,12 @@ class Welder {
     std::vector<int> welded(part.mNumVertices);
     for (unsigned v = 0; v < part.mNumVertices; ++v) {
       const aiVector3D& raw = part.mVertices[v];
-      ++vertex_number_;
-      if (!std::isfinite(raw.x) || !std::isfinite(raw.y) || !std::isfinite(raw.z))
-        reject(path_,
-               "non-finite vertex coordinate (vertex " + std::to_string(vertex_number_) + ")");
+      // assimp renumbers vertices, so the message shows the coordinates, not an index.
+      if (!std::isfinite(raw.x) || !std::isfinite(raw.y) || !std::isfinite(raw.z)) {
+        char where[96];
+        std::snprintf(where, sizeof where, " (%g, %g, %g)", raw.x, raw.y, raw.z);
+        reject(path_, std::string("non-finite vertex coordinate") + where);
+      }
       const aiVector3D p = to_file * raw;
       const std::array<float, 3> key{p.x, p.y, p.z};
       const auto [it, added] = index_of_.emplace(key, static_cast<int>(positions_.size()));
@@ -151,7 +154,6 @@ class Welder {
   std::map<std::array<float, 3>, int> index_of_;
   std::vector<std::array<float, 3>> positions_;
   std::vector<Eigen::Vector3i> triangles_;
-  long vertex_number_ = 0;
 };
 
 }  // namespace

@@ -145,7 +145,7 @@ TEST(LoadMesh, NonFiniteCoordinateIsRejected) {
   std::memcpy(bytes.data() + 84 + 12 + 4, &nan, sizeof nan);  // triangle 1, vertex 1, y
   write_bytes(dir / "box.stl", bytes);
   EXPECT_EQ(error_loading(dir / "box.stl"),
-            (dir / "box.stl").string() + ": non-finite vertex coordinate (vertex 1)");
+            (dir / "box.stl").string() + ": non-finite vertex coordinate (0, nan, 0)");
 }
 
 TEST(LoadMesh, NonPositiveScaleIsRejected) {
