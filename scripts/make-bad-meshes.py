@@ -32,6 +32,10 @@ def main() -> None:
     (OUT / "truncated.stl").write_bytes(header("binary STL cut short", 12) + body + body[:20])
     # Claims 100 million triangles (5 GB) on a 284-byte file.
     (OUT / "huge-claim.stl").write_bytes(header("binary STL claiming 5 GB", 100_000_000) + body)
+    # Claims 2^31 + 2 triangles on a 184-byte file: 84 + 50 * count wraps around to 184 in
+    # 32-bit arithmetic, so a reader checking the size that way would take it as well formed.
+    (OUT / "overflow-claim.stl").write_bytes(
+        header("binary STL whose size check wraps", 2**31 + 2) + body[: 2 * 50])
 
 
 if __name__ == "__main__":
