@@ -89,6 +89,30 @@ TEST(LoadMesh, GltfNodeTranslationIsApplied) {
   expect_box(load_mesh(file), 1.0, Eigen::Vector3d(10.0, -4.0, 0.5));
 }
 
+TEST(LoadMesh, BinaryGltfIsRead) {
+  const fs::path file = fresh_dir("mesh/glb") / "box.glb";
+  write_box_glb(file, kSize, {0.0f, 0.0f, -7.0f});
+  expect_box(load_mesh(file), 1.0, Eigen::Vector3d(0.0, 0.0, -7.0));
+}
+
+// Groups become separate parts in assimp; their shared corners must still be one vertex.
+TEST(LoadMesh, PartsOfOneSurfaceAreWeldedTogether) {
+  const fs::path file = fresh_dir("mesh/groups") / "box.obj";
+  {
+    std::ofstream out(file);
+    for (int i = 0; i < 8; ++i) {
+      const Point p = box_corner(i, kSize);
+      out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    }
+    int face = 0;
+    for (const auto& q : box_quads()) {
+      out << "g side" << face++ << "\nf " << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' '
+          << q[3] + 1 << '\n';
+    }
+  }
+  expect_box(load_mesh(file));
+}
+
 TEST(LoadMesh, MissingFileIsRejected) {
   const fs::path file = fresh_dir("mesh/missing") / "nothing.obj";
   EXPECT_EQ(error_loading(file), file.string() + ": mesh file not found");

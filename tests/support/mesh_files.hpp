@@ -1,6 +1,7 @@
 #pragma once
 // Mesh files written by tests: the box [0, a] × [0, b] × [0, c] as OBJ (quads), ASCII and
-// binary STL (36 unwelded corners, as exporters write them) and glTF 2.0 (embedded buffer).
+// binary STL (36 unwelded corners, as exporters write them) and glTF 2.0 (.gltf with an
+// embedded buffer, .glb).
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -104,28 +105,61 @@ inline std::string base64(const std::string& bytes) {
   return out;
 }
 
-/// glTF 2.0, one node translated by `offset`, its mesh the box (8 float corners, 36 uint16
-/// indices) in an embedded base64 buffer.
-inline void write_box_gltf(const std::filesystem::path& path, const Point& size,
-                           const Point& offset) {
+/// The box's glTF 2.0 buffer: 8 float corners, then 36 uint16 indices.
+inline std::string box_gltf_buffer(const Point& size) {
   std::string buffer;
   for (int i = 0; i < 8; ++i)
     for (float x : box_corner(i, size)) append_bytes(buffer, x);
   for (const auto& t : box_triangles())
     for (int k : t) append_bytes(buffer, static_cast<std::uint16_t>(k));
+  return buffer;
+}
+
+/// The glTF 2.0 document: one node translated by `offset`, its mesh the box; `buffer_uri`
+/// empty for a .glb (the buffer is the binary chunk).
+inline std::string box_gltf_json(const Point& size, const Point& offset, std::size_t buffer_bytes,
+                                 const std::string& buffer_uri) {
   std::ostringstream json;
   json << R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],)"
        << R"("nodes": [{"mesh": 0, "translation": [)" << offset[0] << ", " << offset[1] << ", "
        << offset[2] << "]}],"
        << R"("meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],)"
-       << R"("buffers": [{"byteLength": )" << buffer.size()
-       << R"(, "uri": "data:application/octet-stream;base64,)" << base64(buffer) << "\"}],"
+       << R"("buffers": [{"byteLength": )" << buffer_bytes;
+  if (!buffer_uri.empty()) json << R"(, "uri": ")" << buffer_uri << '"';
+  json << "}],"
        << R"("bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96},)"
        << R"({"buffer": 0, "byteOffset": 96, "byteLength": 72}],)"
        << R"("accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",)"
        << R"("min": [0, 0, 0], "max": [)" << size[0] << ", " << size[1] << ", " << size[2] << "]},"
-       << R"({"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}]})" << '\n';
-  std::ofstream(path) << json.str();
+       << R"({"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}]})";
+  return json.str();
+}
+
+/// glTF 2.0 text, the buffer embedded as a base64 data URI.
+inline void write_box_gltf(const std::filesystem::path& path, const Point& size,
+                           const Point& offset) {
+  const std::string buffer = box_gltf_buffer(size);
+  std::ofstream(path) << box_gltf_json(size, offset, buffer.size(),
+                                       "data:application/octet-stream;base64," + base64(buffer))
+                      << '\n';
+}
+
+/// Binary glTF 2.0 (.glb): 12-byte header, a JSON chunk padded with spaces and a BIN chunk
+/// padded with zeros, each to a multiple of 4 bytes.
+inline void write_box_glb(const std::filesystem::path& path, const Point& size,
+                          const Point& offset) {
+  std::string buffer = box_gltf_buffer(size);
+  std::string json = box_gltf_json(size, offset, buffer.size(), "");
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  buffer.resize((buffer.size() + 3) / 4 * 4, '\0');
+  std::string glb = "glTF";
+  append_bytes(glb, std::uint32_t{2});
+  append_bytes(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + buffer.size()));
+  append_bytes(glb, static_cast<std::uint32_t>(json.size()));
+  glb += "JSON" + json;
+  append_bytes(glb, static_cast<std::uint32_t>(buffer.size()));
+  glb += std::string("BIN\0", 4) + buffer;
+  write_bytes(path, glb);
 }
 
 }  // namespace bookspin::test
