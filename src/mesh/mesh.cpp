@@ -136,6 +136,9 @@ class Welder {
         reject(path_, std::string("non-finite vertex coordinate") + where);
       }
       const aiVector3D p = to_file * raw;
+      // The map below needs ordered keys: no NaN from a node transform either.
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        reject(path_, "non-finite vertex coordinate after the node transforms");
       const std::array<float, 3> key{p.x, p.y, p.z};
       const auto [it, added] = index_of_.emplace(key, static_cast<int>(positions_.size()));
       if (added) positions_.push_back(key);
