@@ -1,6 +1,7 @@
 #include "physics/mass_properties.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
