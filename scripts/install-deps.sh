@@ -7,6 +7,7 @@ packages=(
   libeigen3-dev libtomlplusplus-dev libcli11-dev libboost-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   libpng-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
+  libassimp-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev
   clang libclang-rt-14-dev

@@ -87,6 +87,25 @@ void add_gallery(CLI::App& cli, GalleryOptions& options) {
   cmd->add_option("SCENES", options.scene_paths, "Scene files (TOML), in page order")->required();
 }
 
+void add_inertia(CLI::App& cli, InertiaOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "inertia",
+      "Print the volume, mass, centre of mass and inertia tensor of a closed mesh (OBJ, STL, "
+      "glTF 2.0) of uniform density");
+  cmd->add_option("MESH", options.mesh_path, "Mesh file: .obj, .stl, .gltf or .glb")->required();
+  CLI::Option* mass = cmd->add_option("--mass", options.mass, "Total mass (instead of --density)")
+                          ->check(CLI::PositiveNumber);
+  CLI::Option* density =
+      cmd->add_option("--density", options.density, "Mass per unit volume, after --scale")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+  mass->excludes(density);
+  cmd->add_option("--scale", options.scale, "Multiply every coordinate of the file by S")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_flag("--json", options.json, "Print one JSON object (full precision) instead");
+}
+
 int report(const std::string& message, int code) {
   std::cerr << "bookspin: error: " << message << '\n';
   return code;
@@ -115,6 +134,8 @@ int run_cli(int argc, char** argv) {
   add_plot(cli, plot);
   GalleryOptions gallery;
   add_gallery(cli, gallery);
+  InertiaOptions inertia;
+  add_inertia(cli, inertia);
   cli.add_subcommand("info",
                      "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders");
   try {
@@ -134,6 +155,7 @@ int run_cli(int argc, char** argv) {
     if (cli.got_subcommand("accuracy")) return accuracy_command(accuracy);
     if (cli.got_subcommand("plot")) return plot_command(plot);
     if (cli.got_subcommand("gallery")) return gallery_command(gallery);
+    if (cli.got_subcommand("inertia")) return inertia_command(inertia);
     return static_cast<int>(kExitOk);
   });
 }

@@ -65,6 +65,18 @@ struct GalleryOptions {
 /// (<video>), static plot and diagnostics CSVs, each only where the file exists under OUT.
 int gallery_command(const GalleryOptions& options);
 
+struct InertiaOptions {
+  std::string mesh_path;
+  double mass = 0.0;     ///< total mass; 0 = not given (use density)
+  double density = 1.0;  ///< mass per length³, after scaling
+  double scale = 1.0;    ///< multiplies the file's coordinates
+  bool json = false;     ///< one JSON object instead of the table
+};
+
+/// Prints a mesh file's volume, mass, centre of mass, inertia about the centre of mass and
+/// principal frame (docs/physics.md §11); warnings on stderr.
+int inertia_command(const InertiaOptions& options);
+
 /// "; REASON" for a simulator's divergence reason, "" when it gave none.
 std::string divergence_because(const std::string& reason);
 

@@ -2,6 +2,7 @@
 // Runs a built program (bookspin, bookspin-bench, an example) and captures its exit status
 // and output.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -39,11 +40,37 @@ inline CliResult run_bookspin_env(const std::string& env, const std::string& arg
 
 inline CliResult run_bookspin(const std::string& args) { return run_bookspin_env("", args); }
 
+struct SplitResult {
+  int status = -1;
+  std::string out;  ///< standard output alone
+  std::string err;  ///< standard error alone
+};
+
 inline std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// Runs the built bookspin with `args`, keeping stdout and stderr apart (stderr through a
+/// file named after this process, so parallel tests do not share it).
+inline SplitResult run_bookspin_split(const std::string& args) {
+  const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output";
+  std::filesystem::create_directories(dir);
+  const auto err_file = dir / ("stderr-" + std::to_string(getpid()) + ".txt");
+  const std::string command =
+      std::string(BOOKSPIN_EXE) + " " + args + " 2>'" + err_file.string() + "'";
+  SplitResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) result.out += buffer.data();
+  const int raw = pclose(pipe);
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  result.err = read_file(err_file);
+  std::filesystem::remove(err_file);
+  return result;
 }
 
 inline std::string scene_path(const std::string& name) {

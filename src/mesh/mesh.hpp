@@ -1,0 +1,25 @@
+#pragma once
+// The door of the mesh stage: a mesh file (OBJ, STL ASCII or binary, glTF 2.0) read into a
+// plain triangle mesh. Knows nothing of physics; docs/architecture.md.
+#include <Eigen/Core>
+#include <filesystem>
+
+namespace bookspin::mesh {
+
+/// Triangles over welded vertices, in the file's units times the scale passed to load_mesh.
+struct TriangleMesh {
+  Eigen::Matrix3Xd vertices;   ///< 3×V positions, file axes
+  Eigen::Matrix3Xi triangles;  ///< 3×N indices into vertices, the file's winding
+};
+
+/// Reads `path` (by its extension: .obj, .stl, .gltf, .glb; any case) and returns its
+/// triangles: polygons triangulated, node transforms applied, points and lines dropped, and
+/// vertices at exactly the same position welded into one (also across faces and parts, so a
+/// closed surface shares its edges), each coordinate multiplied by `scale` (> 0).
+/// Throws InputError "FILE: reason" for a missing file, a directory, an unknown extension, a
+/// binary STL whose header's triangle count does not match the file size (checked before
+/// parsing: truncated files and absurd counts), a file assimp cannot read, no triangles, or
+/// a non-finite coordinate.
+TriangleMesh load_mesh(const std::filesystem::path& path, double scale = 1.0);
+
+}  // namespace bookspin::mesh
