@@ -7,12 +7,11 @@
 namespace bookspin::physics {
 
 RigidMatrixModel::RigidMatrixModel(const Book& book, const ModelConfig& config)
-    : book_(book), config_(config), inverse_moments_(book.principal_moments().cwiseInverse()) {}
+    : RigidBody(book, config) {}
 
 void RigidMatrixModel::reset(const InitialState& initial) {
   R_.setIdentity();
-  L_ = initial_angular_momentum(book_, initial);
-  t_ = 0.0;
+  reset_motion(initial);
 }
 
 Eigen::Vector3d RigidMatrixModel::omega_world(const Eigen::Matrix3d& R) const {

@@ -1,6 +1,6 @@
 #pragma once
 // Rigid body with an orientation matrix (paper §4, docs/physics.md §3, Baraff 1997).
-#include "physics/simulator.hpp"
+#include "physics/rigid_body.hpp"
 
 namespace bookspin::physics {
 
@@ -12,7 +12,7 @@ namespace bookspin::physics {
 /// integrators (rk4, implicit-midpoint, splitting, splitting4: docs/physics.md §10) advance the
 /// same state; an implicit-midpoint step that does not converge ends the run (finite()
 /// false, divergence_reason() says why) and leaves R as it was.
-class RigidMatrixModel final : public Simulator {
+class RigidMatrixModel final : public RigidBody {
  public:
   RigidMatrixModel(const Book& book, const ModelConfig& config);
   void reset(const InitialState& initial) override;
@@ -20,7 +20,6 @@ class RigidMatrixModel final : public Simulator {
   Corners corners() const override;
   Diagnostics diagnostics() const override;
   bool finite() const override;
-  std::string divergence_reason() const override { return failure_; }
 
   const Eigen::Matrix3d& orientation() const { return R_; }
 
@@ -30,13 +29,7 @@ class RigidMatrixModel final : public Simulator {
   void euler_step(double dt);
   void normalize();
 
-  Book book_;
-  ModelConfig config_;
-  Eigen::Vector3d inverse_moments_;
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
-  double t_ = 0.0;
-  std::string failure_;  ///< why the run ended early; empty while it runs
 };
 
 }  // namespace bookspin::physics

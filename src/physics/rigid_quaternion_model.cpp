@@ -8,12 +8,11 @@
 namespace bookspin::physics {
 
 RigidQuaternionModel::RigidQuaternionModel(const Book& book, const ModelConfig& config)
-    : book_(book), config_(config), inverse_moments_(book.principal_moments().cwiseInverse()) {}
+    : RigidBody(book, config) {}
 
 void RigidQuaternionModel::reset(const InitialState& initial) {
   q_.setIdentity();
-  L_ = initial_angular_momentum(book_, initial);
-  t_ = 0.0;
+  reset_motion(initial);
 }
 
 // q̇ = ½ (0, ω) ⊗ q with world-frame ω (Baraff 1997, eq. 4-2), coefficients (x, y, z, w).

@@ -2,7 +2,7 @@
 // Rigid body with a quaternion (paper §4.4, docs/physics.md §4, Baraff 1997).
 #include <Eigen/Geometry>
 
-#include "physics/simulator.hpp"
+#include "physics/rigid_body.hpp"
 
 namespace bookspin::physics {
 
@@ -14,7 +14,7 @@ namespace bookspin::physics {
 /// integrators (rk4, implicit-midpoint, splitting, splitting4: docs/physics.md §10) evaluate
 /// ω from R(q/|q|) instead; an implicit-midpoint step that does not converge ends the run
 /// (finite() false, divergence_reason() says why) and leaves q as it was.
-class RigidQuaternionModel final : public Simulator {
+class RigidQuaternionModel final : public RigidBody {
  public:
   RigidQuaternionModel(const Book& book, const ModelConfig& config);
   void reset(const InitialState& initial) override;
@@ -22,7 +22,6 @@ class RigidQuaternionModel final : public Simulator {
   Corners corners() const override;
   Diagnostics diagnostics() const override;
   bool finite() const override;
-  std::string divergence_reason() const override { return failure_; }
 
   const Eigen::Quaterniond& orientation() const { return q_; }
 
@@ -32,13 +31,7 @@ class RigidQuaternionModel final : public Simulator {
   void raw_euler_step(double dt);
   void unit_euler_step(double dt);
 
-  Book book_;
-  ModelConfig config_;
-  Eigen::Vector3d inverse_moments_;
   Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
-  double t_ = 0.0;
-  std::string failure_;  ///< why the run ended early; empty while it runs
 };
 
 }  // namespace bookspin::physics

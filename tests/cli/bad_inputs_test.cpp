@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "support/catalogue.hpp"
 #include "support/cli_runner.hpp"
 
 namespace bookspin::cli {
@@ -19,80 +20,33 @@ namespace fs = std::filesystem;
 
 constexpr std::size_t kMinimumCases = 30;
 
-struct BadScene {
-  std::string name;      ///< file stem, e.g. "dt-zero"
-  fs::path scene;        ///< NAME.toml
-  std::string args;      ///< NAME.args, or empty
-  std::string expected;  ///< the full line, placeholders substituted
+/// A catalogue case plus its NAME.args (extra command-line words), if any.
+struct BadScene : CatalogueCase {
+  std::string args;
 };
-// gtest prints parameters into the names ctest registers; print a stable text, not bytes.
-[[maybe_unused]] void PrintTo(const BadScene& p, std::ostream* out) { *out << p.name; }
 
-fs::path catalogue_dir() { return fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "bad_scenes"; }
-
-std::string trim_line_end(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-  return text;
-}
-
-void replace_all(std::string& text, const std::string& from, const std::string& to) {
-  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
-    text.replace(at, from.size(), to);
-  }
-}
-
-/// The line bookspin must print for `scene`, from NAME.expected.
-std::string expected_line(const fs::path& expected_file, const fs::path& scene) {
-  std::string line = trim_line_end(read_file(expected_file));
-  replace_all(line, "{SCENE_DIR}", scene.parent_path().string());
-  replace_all(line, "{SCENE}", scene.string());
-  return "bookspin: error: " + line + "\n";
-}
-
-BadScene load_case(const fs::path& toml) {
-  BadScene c;
-  c.name = toml.stem().string();
-  c.scene = toml;
-  const fs::path args = fs::path(toml).replace_extension(".args");
-  if (fs::exists(args)) c.args = trim_line_end(read_file(args));
-  const fs::path expected = fs::path(toml).replace_extension(".expected");
-  // A case without its .expected file gets an impossible line, so it fails loudly.
-  c.expected =
-      fs::exists(expected) ? expected_line(expected, toml) : "(missing " + expected.string() + ")";
-  return c;
-}
-
-/// Every NAME.toml in the catalogue, sorted so test order is stable.
-std::vector<BadScene> load_catalogue() {
+std::vector<BadScene> load_scenes() {
   std::vector<BadScene> cases;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(catalogue_dir(), ec)) {
-    if (entry.path().extension() == ".toml") cases.push_back(load_case(entry.path()));
+  for (CatalogueCase& c : load_catalogue(
+           "bad_scenes", [](const fs::path& p) { return p.extension() == ".toml"; },
+           [](const fs::path& scene) {
+             return Placeholders{{"{SCENE_DIR}", scene.parent_path().string()},
+                                 {"{SCENE}", scene.string()}};
+           })) {
+    const fs::path args = fs::path(c.file).replace_extension(".args");
+    cases.push_back({std::move(c), fs::exists(args) ? trim_line_end(read_file(args)) : ""});
   }
-  std::sort(cases.begin(), cases.end(),
-            [](const auto& a, const auto& b) { return a.name < b.name; });
   return cases;
 }
 
 std::vector<BadScene> scene_only_cases() {
-  std::vector<BadScene> cases = load_catalogue();
+  std::vector<BadScene> cases = load_scenes();
   std::erase_if(cases, [](const BadScene& c) { return !c.args.empty(); });
   return cases;
 }
 
-/// GoogleTest names allow only letters, digits and '_'.
 std::string test_name(const ::testing::TestParamInfo<BadScene>& info) {
-  std::string name = info.param.name;
-  std::replace_if(
-      name.begin(), name.end(), [](unsigned char ch) { return !std::isalnum(ch); }, '_');
-  return name;
-}
-
-/// Single-quoted for the shell. Built with append: GCC 12 warns falsely (-Wrestrict) on
-/// "literal" + std::string.
-std::string quoted(const fs::path& path) {
-  std::string out;
-  return out.append("'").append(path.string()).append("'");
+  return case_test_name({info.param, info.index});
 }
 
 /// Every path under `dir`, so a failure shows what was left behind (outputs, temporaries).
@@ -116,12 +70,11 @@ TEST_P(BadSceneRender, ExitsTwoWithTheExactLineAndWritesNothing) {
   const BadScene& c = GetParam();
   const fs::path out = fresh_dir("bad_scenes/render-" + c.name);
   const CliResult r =
-      run_bookspin("render " + quoted(c.scene) + " -o " + quoted(out) + " --no-png " + c.args);
+      run_bookspin("render " + quoted(c.file) + " -o " + quoted(out) + " --no-png " + c.args);
   expect_rejected(r, c.expected, out);
 }
 
-INSTANTIATE_TEST_SUITE_P(Catalogue, BadSceneRender, ::testing::ValuesIn(load_catalogue()),
-                         test_name);
+INSTANTIATE_TEST_SUITE_P(Catalogue, BadSceneRender, ::testing::ValuesIn(load_scenes()), test_name);
 
 // simulate reads scenes through the same parser; the .args cases are render's command line.
 class BadSceneSimulate : public ::testing::TestWithParam<BadScene> {};
@@ -130,7 +83,7 @@ TEST_P(BadSceneSimulate, ExitsTwoWithTheSameLineAndWritesNoCsv) {
   const BadScene& c = GetParam();
   const fs::path out = fresh_dir("bad_scenes/simulate-" + c.name);
   const CliResult r =
-      run_bookspin("simulate " + quoted(c.scene) + " --csv " + quoted(out / "out.csv"));
+      run_bookspin("simulate " + quoted(c.file) + " --csv " + quoted(out / "out.csv"));
   expect_rejected(r, c.expected, out);
 }
 
@@ -138,15 +91,16 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, BadSceneSimulate, ::testing::ValuesIn(scene_
                          test_name);
 
 TEST(BadSceneCatalogue, HasAtLeastThirtyCasesEachWithItsExpectedLine) {
-  const auto cases = load_catalogue();
+  const auto cases = load_scenes();
   EXPECT_GE(cases.size(), kMinimumCases);
   for (const auto& c : cases) {
-    EXPECT_TRUE(fs::exists(fs::path(c.scene).replace_extension(".expected"))) << c.name;
+    EXPECT_TRUE(fs::exists(fs::path(c.file).replace_extension(".expected"))) << c.name;
   }
 }
 
 TEST(BadSceneCatalogue, EveryExpectedOrArgsFileHasItsScene) {
-  for (const auto& entry : fs::directory_iterator(catalogue_dir())) {
+  for (const auto& entry :
+       fs::directory_iterator((fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "bad_scenes"))) {
     const auto ext = entry.path().extension();
     if (ext == ".expected" || ext == ".args") {
       EXPECT_TRUE(fs::exists(fs::path(entry.path()).replace_extension(".toml"))) << entry.path();
@@ -158,7 +112,8 @@ TEST(BadSceneCatalogue, EveryExpectedOrArgsFileHasItsScene) {
 
 TEST(BadSceneFiles, MissingFileIsRejected) {
   const fs::path out = fresh_dir("bad_scenes/missing");
-  const fs::path scene = catalogue_dir() / "no-such-scene.toml";
+  const fs::path scene =
+      (fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "bad_scenes") / "no-such-scene.toml";
   const CliResult r = run_bookspin("render " + quoted(scene) + " -o " + quoted(out) + " --no-png");
   expect_rejected(r, "bookspin: error: " + scene.string() + ": scene file not found\n", out);
 }
@@ -166,9 +121,12 @@ TEST(BadSceneFiles, MissingFileIsRejected) {
 TEST(BadSceneFiles, DirectoryIsRejected) {
   const fs::path out = fresh_dir("bad_scenes/directory");
   const CliResult r =
-      run_bookspin("render " + quoted(catalogue_dir()) + " -o " + quoted(out) + " --no-png");
+      run_bookspin("render " + quoted((fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "bad_scenes")) +
+                   " -o " + quoted(out) + " --no-png");
   expect_rejected(
-      r, "bookspin: error: " + catalogue_dir().string() + ": is a directory, not a scene file\n",
+      r,
+      "bookspin: error: " + (fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "bad_scenes").string() +
+          ": is a directory, not a scene file\n",
       out);
 }
 

@@ -18,18 +18,23 @@ struct CliResult {
   std::string output;  ///< stdout and stderr together
 };
 
+/// Runs a shell `command`, appending its standard output to `out`; returns the exit status
+/// (128 + signal if a signal ended it, -1 if it could not start).
+inline int run_shell(const std::string& command, std::string& out) {
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
+  const int raw = pclose(pipe);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+}
+
 /// Runs `env PROGRAM args` through the shell (args are shell words, quote as needed; env is
 /// "" or "NAME=value ...").
 inline CliResult run_program(const std::string& env, const std::string& program,
                              const std::string& args) {
-  const std::string command = env + " " + program + " " + args + " 2>&1";
   CliResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) result.output += buffer.data();
-  const int raw = pclose(pipe);
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  result.status = run_shell(env + " " + program + " " + args + " 2>&1", result.output);
   return result;
 }
 
@@ -62,12 +67,7 @@ inline SplitResult run_bookspin_split(const std::string& args) {
   const std::string command =
       std::string(BOOKSPIN_EXE) + " " + args + " 2>'" + err_file.string() + "'";
   SplitResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) result.out += buffer.data();
-  const int raw = pclose(pipe);
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  result.status = run_shell(command, result.out);
   result.err = read_file(err_file);
   std::filesystem::remove(err_file);
   return result;
