@@ -12,6 +12,8 @@ extern "C" {
 #include <stdexcept>
 #include <string>
 
+#include "common/non_copyable.hpp"
+
 namespace bookspin::output::libav {
 
 /// av_strerror text for a libav error code, e.g. "No space left on device".
@@ -23,12 +25,10 @@ void configure_logging();
 
 /// While alive, libav error messages logged on this thread are collected in
 /// text() instead of printed (used to explain why an encoder failed to open).
-class LogCapture {
+class LogCapture : NonCopyable {
  public:
   LogCapture();
   ~LogCapture();
-  LogCapture(const LogCapture&) = delete;
-  LogCapture& operator=(const LogCapture&) = delete;
   /// Captured messages joined with "; ", trailing newlines stripped.
   const std::string& text() const { return text_; }
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "common/non_copyable.hpp"
+
 namespace bookspin::render {
 
 /// What the context runs on; the strings behind `bookspin info`.
@@ -23,14 +25,12 @@ struct GlInfo {
 /// GL 3.3 core context: (a) the EGL device platform (env BOOKSPIN_EGL_DEVICE=<index> picks
 /// the device, otherwise hardware devices before software ones); (b) Mesa's surfaceless
 /// platform; (c) the default display. BOOKSPIN_EGL_PLATFORM=device|surfaceless|default
-/// restricts creation to that one step (diagnostics, tests). Throws RenderError (one line listing why each step
-/// failed) if none works, or if libEGL.so.1 cannot be loaded at all.
-class EglContext {
+/// restricts creation to that one step (diagnostics, tests). Throws RenderError (one line listing
+/// why each step failed) if none works, or if libEGL.so.1 cannot be loaded at all.
+class EglContext : NonCopyable {
  public:
   EglContext();
   ~EglContext();
-  EglContext(const EglContext&) = delete;
-  EglContext& operator=(const EglContext&) = delete;
 
   /// Makes this context current on the calling thread (cheap if it already is).
   void make_current();

@@ -60,48 +60,50 @@ GLuint compile(std::string_view name, GLenum type, std::string_view source) {
 
 }  // namespace
 
-std::string gl_error_name(GLenum code) {
-  switch (code) {
-    case GL_NO_ERROR:
-      return "GL_NO_ERROR";
-    case GL_INVALID_ENUM:
-      return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE:
-      return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION:
-      return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION:
-      return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY:
-      return "GL_OUT_OF_MEMORY";
-    default:
-      return hex_name("GL error", code);
-  }
+namespace {
+
+struct NamedCode {
+  GLenum code;
+  const char* name;
+};
+
+/// The GL constant's name from `table`, or `prefix 0x…` for a code not in it.
+template <std::size_t N>
+std::string name_of(GLenum code, const NamedCode (&table)[N], const char* prefix) {
+  for (const NamedCode& entry : table)
+    if (entry.code == code) return entry.name;
+  return hex_name(prefix, code);
 }
 
+#define BOOKSPIN_GL_NAME(code) \
+  { code, #code }
+
+constexpr NamedCode kErrors[] = {BOOKSPIN_GL_NAME(GL_NO_ERROR),
+                                 BOOKSPIN_GL_NAME(GL_INVALID_ENUM),
+                                 BOOKSPIN_GL_NAME(GL_INVALID_VALUE),
+                                 BOOKSPIN_GL_NAME(GL_INVALID_OPERATION),
+                                 BOOKSPIN_GL_NAME(GL_INVALID_FRAMEBUFFER_OPERATION),
+                                 BOOKSPIN_GL_NAME(GL_OUT_OF_MEMORY)};
+
+constexpr NamedCode kFramebufferStatuses[] = {
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_COMPLETE),
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_UNDEFINED),
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT),
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT),
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER),
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER),
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_UNSUPPORTED),
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE),
+    BOOKSPIN_GL_NAME(GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS)};
+
+#undef BOOKSPIN_GL_NAME
+
+}  // namespace
+
+std::string gl_error_name(GLenum code) { return name_of(code, kErrors, "GL error"); }
+
 std::string framebuffer_status_name(GLenum status) {
-  switch (status) {
-    case GL_FRAMEBUFFER_COMPLETE:
-      return "GL_FRAMEBUFFER_COMPLETE";
-    case GL_FRAMEBUFFER_UNDEFINED:
-      return "GL_FRAMEBUFFER_UNDEFINED";
-    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
-      return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
-    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
-      return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
-    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER:
-      return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
-    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER:
-      return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
-    case GL_FRAMEBUFFER_UNSUPPORTED:
-      return "GL_FRAMEBUFFER_UNSUPPORTED";
-    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
-      return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
-    case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS:
-      return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
-    default:
-      return hex_name("framebuffer status", status);
-  }
+  return name_of(status, kFramebufferStatuses, "framebuffer status");
 }
 
 void check_gl(std::string_view what) {

@@ -54,24 +54,28 @@ void stream(GLuint vbo, const std::vector<Vertex>& vertices) {
                vertices.data(), GL_STREAM_DRAW);
 }
 
-struct CameraLocations {
-  GLint view, projection;
-};
-
 /// What every depth-tested solid draw starts with: its program and camera, its vertex array
 /// and this frame's vertices streamed into its buffer.
 template <typename Vertex>
-void begin_solid_draw(GLuint program, CameraLocations locations, const ViewProjection& camera,
-                      GLuint vao, GLuint vbo, const std::vector<Vertex>& vertices) {
+void begin_solid_draw(const SolidProgram& solid, const ViewProjection& camera,
+                      const std::vector<Vertex>& vertices) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glUseProgram(program);
-  set_camera(locations.view, locations.projection, camera);
-  glBindVertexArray(vao);
-  stream(vbo, vertices);
+  glUseProgram(solid.program.get());
+  set_camera(solid.view_location, solid.projection_location, camera);
+  glBindVertexArray(solid.vao.get());
+  stream(solid.vbo.get(), vertices);
 }
 
 }  // namespace
+
+SolidProgram::SolidProgram(std::string_view name, std::string_view vertex_source,
+                           std::string_view fragment_source)
+    : program(build_program(name, vertex_source, fragment_source)),
+      vao(new_vertex_array()),
+      vbo(new_buffer()),
+      view_location(uniform_location(program.get(), "u_view")),
+      projection_location(uniform_location(program.get(), "u_projection")) {}
 
 // ---- background -------------------------------------------------------------------------
 
@@ -96,27 +100,22 @@ void BackgroundPass::draw() const {
 // ---- book -------------------------------------------------------------------------------
 
 BookPass::BookPass(const FaceImages& images, float max_anisotropy)
-    : program_(build_program("book", shaders::book_vert, shaders::book_frag)),
-      vao_(new_vertex_array()),
-      vbo_(new_buffer()),
+    : solid_("book", shaders::book_vert, shaders::book_frag),
       textures_(images, max_anisotropy),
-      view_location_(uniform_location(program_.get(), "u_view")),
-      projection_location_(uniform_location(program_.get(), "u_projection")),
-      specular_location_(uniform_location(program_.get(), "u_specular")),
-      shininess_location_(uniform_location(program_.get(), "u_shininess")) {
-  set_vertex_layout<BookVertex>(vao_.get(), vbo_.get(),
+      specular_location_(uniform_location(solid_.program.get(), "u_specular")),
+      shininess_location_(uniform_location(solid_.program.get(), "u_shininess")) {
+  set_vertex_layout<BookVertex>(solid_.vao.get(), solid_.vbo.get(),
                                 {{0, 3, offsetof(BookVertex, position)},
                                  {1, 3, offsetof(BookVertex, normal)},
                                  {2, 2, offsetof(BookVertex, uv)}});
-  glUseProgram(program_.get());
-  glUniform1i(uniform_location(program_.get(), "u_texture"), 0);
+  glUseProgram(solid_.program.get());
+  glUniform1i(uniform_location(solid_.program.get(), "u_texture"), 0);
   check_gl("setting up the book");
 }
 
 void BookPass::draw(const std::vector<BookVertex>& vertices, const ViewProjection& camera) {
   if (vertices.empty()) return;
-  begin_solid_draw(program_.get(), {view_location_, projection_location_}, camera, vao_.get(),
-                   vbo_.get(), vertices);
+  begin_solid_draw(solid_, camera, vertices);
   glActiveTexture(GL_TEXTURE0);
   for (std::size_t f = 0; f < book_faces.size(); ++f) {
     const bool cover = book_faces[f].image != FaceImage::pages;
@@ -130,13 +129,8 @@ void BookPass::draw(const std::vector<BookVertex>& vertices, const ViewProjectio
 
 // ---- markers ----------------------------------------------------------------------------
 
-MarkerPass::MarkerPass()
-    : program_(build_program("marker", shaders::marker_vert, shaders::marker_frag)),
-      vao_(new_vertex_array()),
-      vbo_(new_buffer()),
-      view_location_(uniform_location(program_.get(), "u_view")),
-      projection_location_(uniform_location(program_.get(), "u_projection")) {
-  set_vertex_layout<MarkerVertex>(vao_.get(), vbo_.get(),
+MarkerPass::MarkerPass() : solid_("marker", shaders::marker_vert, shaders::marker_frag) {
+  set_vertex_layout<MarkerVertex>(solid_.vao.get(), solid_.vbo.get(),
                                   {{0, 3, offsetof(MarkerVertex, position)},
                                    {1, 3, offsetof(MarkerVertex, normal)},
                                    {2, 3, offsetof(MarkerVertex, color)}});
@@ -145,8 +139,7 @@ MarkerPass::MarkerPass()
 
 void MarkerPass::draw(const std::vector<MarkerVertex>& vertices, const ViewProjection& camera) {
   if (vertices.empty()) return;
-  begin_solid_draw(program_.get(), {view_location_, projection_location_}, camera, vao_.get(),
-                   vbo_.get(), vertices);
+  begin_solid_draw(solid_, camera, vertices);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
 }
 

@@ -2,6 +2,7 @@
 // Internal: the three things drawn each frame, each owning its program and buffers.
 // All require the renderer's context to be current.
 #include <Eigen/Dense>
+#include <string_view>
 #include <vector>
 
 #include "render/book_mesh.hpp"
@@ -15,6 +16,17 @@ namespace bookspin::render {
 struct ViewProjection {
   Eigen::Matrix4f view;
   Eigen::Matrix4f projection;
+};
+
+/// What a depth-tested solid drawn from one streamed vertex buffer owns: its program,
+/// vertex array and buffer, and where its camera matrices go.
+struct SolidProgram {
+  SolidProgram(std::string_view name, std::string_view vertex_source,
+               std::string_view fragment_source);
+  ProgramHandle program;
+  VertexArrayHandle vao;
+  BufferHandle vbo;
+  GLint view_location, projection_location;
 };
 
 /// Full-screen vertical gradient; drawn first, without depth.
@@ -36,11 +48,9 @@ class BookPass {
   void draw(const std::vector<BookVertex>& vertices, const ViewProjection& camera);
 
  private:
-  ProgramHandle program_;
-  VertexArrayHandle vao_;
-  BufferHandle vbo_;
+  SolidProgram solid_;
   BookTextures textures_;
-  GLint view_location_, projection_location_, specular_location_, shininess_location_;
+  GLint specular_location_, shininess_location_;
 };
 
 /// Arrows and axes: one streamed vertex buffer, one draw.
@@ -50,10 +60,7 @@ class MarkerPass {
   void draw(const std::vector<MarkerVertex>& vertices, const ViewProjection& camera);
 
  private:
-  ProgramHandle program_;
-  VertexArrayHandle vao_;
-  BufferHandle vbo_;
-  GLint view_location_, projection_location_;
+  SolidProgram solid_;
 };
 
 }  // namespace bookspin::render

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace bookspin::scene {
 
@@ -21,22 +22,17 @@ std::string range_text(double lo, double hi, bool lo_open) {
 /// What a value is, for "expected X, got Y": a float where an integer belongs (300.0 for
 /// 300) is easy to miss without it.
 std::string type_name(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::floating_point:
-      return "a floating-point number";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::table:
-      return "a table";
-    default:
-      return "a date or time";
-  }
+  using toml::node_type;
+  static constexpr std::pair<node_type, const char*> kNames[] = {
+      {node_type::string, "a string"},
+      {node_type::integer, "an integer"},
+      {node_type::floating_point, "a floating-point number"},
+      {node_type::boolean, "a boolean"},
+      {node_type::array, "an array"},
+      {node_type::table, "a table"}};
+  for (const auto& [type, name] : kNames)
+    if (node.type() == type) return name;
+  return "a date or time";
 }
 
 /// Whether some key in `keys` lies below `key` ("time" for "time.dt").

@@ -91,11 +91,7 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, BadSceneSimulate, ::testing::ValuesIn(scene_
                          test_name);
 
 TEST(BadSceneCatalogue, HasAtLeastThirtyCasesEachWithItsExpectedLine) {
-  const auto cases = load_scenes();
-  EXPECT_GE(cases.size(), kMinimumCases);
-  for (const auto& c : cases) {
-    EXPECT_TRUE(fs::exists(fs::path(c.file).replace_extension(".expected"))) << c.name;
-  }
+  expect_complete(load_scenes(), kMinimumCases);
 }
 
 TEST(BadSceneCatalogue, EveryExpectedOrArgsFileHasItsScene) {

@@ -64,6 +64,17 @@ inline std::vector<CatalogueCase> load_catalogue(
   return cases;
 }
 
+/// At least `minimum` cases, each with its .expected file next to it.
+template <typename Case>
+void expect_complete(const std::vector<Case>& cases, std::size_t minimum) {
+  EXPECT_GE(cases.size(), minimum);
+  for (const CatalogueCase& c : cases) {
+    EXPECT_TRUE(
+        std::filesystem::exists(std::filesystem::path(c.file).replace_extension(".expected")))
+        << c.name;
+  }
+}
+
 /// GoogleTest names allow only letters, digits and '_'.
 inline std::string case_test_name(const ::testing::TestParamInfo<CatalogueCase>& info) {
   std::string name = info.param.name;
