@@ -4,10 +4,17 @@
 // the run ended. Each model adds its orientation (a matrix or a quaternion) and its steps.
 #include <string>
 
+#include "physics/rigid_integrators.hpp"
 #include "physics/shape.hpp"
 #include "physics/simulator.hpp"
 
 namespace bookspin::physics {
+
+/// The composition coefficients a rigid model's SplittingStepper runs: Suzuki's 5 stages for
+/// splitting4, the Strang step itself otherwise (docs/physics.md §10).
+inline std::span<const double> splitting_gammas(Integrator integrator) {
+  return integrator == Integrator::splitting4 ? composition4::suzuki5() : strang_gammas();
+}
 
 class RigidBody : public Simulator {
  public:

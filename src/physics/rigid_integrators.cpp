@@ -74,29 +74,47 @@ struct SinCos {
           (1.0 - 0.5 * x2) + x4 * ((c4 - x2 * c6) + x4 * c8)};
 }
 
+/// (c·Pj + s·Pk, c·Pk − s·Pj) for c = cos x, s = sin x and |x| ≤ 1/256, written as one
+/// polynomial in x per component whose coefficients come from Pj and Pk (known before x):
+/// the degree-4 cosine and degree-5 sine series are exact to round-off there (the first
+/// omitted terms, x⁶/720 and x⁷/5040, are below 5e-18 and 7e-19·|x|), and in Estrin's form
+/// each component is ready 5 operations after x instead of the 7 of series, then rotation.
+[[gnu::always_inline]] inline void small_turn(double x, double& Pj, double& Pk) {
+  constexpr double s3 = 1.0 / 6, s5 = 1.0 / 120, c4 = 1.0 / 24;
+  const double j = Pj, k = Pk, x2 = x * x, x4 = x2 * x2;
+  Pj = ((j + x * k) + x2 * (-0.5 * j - x * (s3 * k))) + x4 * (c4 * j + x * (s5 * k));
+  Pk = ((k - x * j) + x2 * (-0.5 * k + x * (s3 * j))) + x4 * (c4 * k - x * (s5 * j));
+}
+
 /// Exact flow of T_A = Π_A²/(2 I_A) for time h: the body turns about its own axis A by
 /// θ = h·Π_A/I_A, so Δ ← Δ ⊗ (cos θ/2, sin θ/2 e_A), and the body-frame momentum turns by
-/// −θ (Π_A is constant along this flow). `half_rate` = ½ h / I_A. The sub-flows form one
-/// chain (each waits on the previous Π), so the short path matters: for the small angles
-/// of any usable dt (|θ| ≤ 1/32; ~2e-3 at dt = 1/60) θ and θ/2 get their own short series,
-/// side by side, and Π waits only on θ's; larger angles take the library's sin and cos of
-/// θ/2 and the double-angle formulas. The axis is a template argument so that every index
-/// is a constant, and it is inlined so that the state stays in registers.
+/// −θ (Π_A is constant along this flow). `rate` = h / I_A. The sub-flows form one chain
+/// (each waits on the previous Π) and Δ hangs off it, so only Π's path is short: for the
+/// angles of any usable dt (|θ| ≤ 1/256 covers dt = 1/60 for the book) small_turn(); up to
+/// |θ| ≤ 1/32 the short series of θ, then the rotation; beyond, the library's sin and cos
+/// of θ/2 and the double-angle formulas. The axis is a template argument so that every
+/// index is a constant, and it is inlined so that the state stays in registers.
 template <int A>
-[[gnu::always_inline]] inline void rotor_flow(double half_rate, RotorState& s) {
+[[gnu::always_inline]] inline void rotor_flow(double rate, RotorState& s) {
   constexpr int j = (A + 1) % 3, k = (A + 2) % 3;  // (A, j, k) is right-handed
-  const double half_angle = half_rate * s.P[A];
-  SinCos angle, half;
-  if (std::abs(half_angle) <= 1.0 / 64) {
-    angle = small_sincos(2.0 * half_angle);
-    half = small_sincos(half_angle);
+  const double angle = rate * s.P[A];
+  SinCos half;
+  if (std::abs(angle) <= 1.0 / 256) {
+    small_turn(angle, s.P[j], s.P[k]);
+    half = small_sincos(0.5 * angle);
   } else {
-    half = {std::sin(half_angle), std::cos(half_angle)};
-    angle = {2.0 * half.sin * half.cos, 1.0 - 2.0 * half.sin * half.sin};
+    SinCos full;
+    if (std::abs(angle) <= 1.0 / 32) {
+      full = small_sincos(angle);
+      half = small_sincos(0.5 * angle);
+    } else {
+      half = {std::sin(0.5 * angle), std::cos(0.5 * angle)};
+      full = {2.0 * half.sin * half.cos, 1.0 - 2.0 * half.sin * half.sin};
+    }
+    const double Pj = s.P[j], Pk = s.P[k];
+    s.P[j] = full.cos * Pj + full.sin * Pk;
+    s.P[k] = full.cos * Pk - full.sin * Pj;
   }
-  const double Pj = s.P[j], Pk = s.P[k];
-  s.P[j] = angle.cos * Pj + angle.sin * Pk;
-  s.P[k] = angle.cos * Pk - angle.sin * Pj;
   // Δ ⊗ (cos θ/2, sin θ/2·e_A), written out: e_A has one non-zero component.
   const double c = half.cos, sn = half.sin;
   const double w = s.w, vA = s.v[A], vj = s.v[j], vk = s.v[k];
@@ -106,16 +124,17 @@ template <int A>
   s.v[k] = c * vk - sn * vj;
 }
 
-/// Strang steps of γ_i·dt in sequence, sub-flows in the order O, M, N, M, O; the outer
-/// half-flow ending one step and the one starting the next are a single flow (T_O commutes
-/// with itself), so s steps cost 4s + 1 sub-flows.
+/// Strang steps of γ_i·dt in sequence, sub-flows in the order O, M, N, M, O, applied to `s`
+/// except for the last outer half-flow, whose time it returns. The outer half-flow ending one
+/// step and the one starting the next are a single flow (T_O commutes with itself), so s
+/// steps cost 4s sub-flows plus the pending one; `pending` is the time of an outer flow left
+/// over from before, merged into the first.
 template <int O, int M, int N>
-Eigen::Quaterniond compose(const Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
-                           double dt, std::span<const double> gammas) {
-  RotorState s{{Pi_body[0], Pi_body[1], Pi_body[2]}, 1.0, {0.0, 0.0, 0.0}};
-  const double rate_O = 0.5 * inverse_moments[O], rate_M = 0.5 * inverse_moments[M],
-               rate_N = 0.5 * inverse_moments[N];
-  double outer_time = 0.5 * gammas[0] * dt;
+double advance(RotorState& s, const Eigen::Vector3d& inverse_moments, double pending, double dt,
+               std::span<const double> gammas) {
+  const double rate_O = inverse_moments[O], rate_M = inverse_moments[M],
+               rate_N = inverse_moments[N];
+  double outer_time = pending + 0.5 * gammas[0] * dt;
   for (std::size_t i = 0; i < gammas.size(); ++i) {
     const double h = gammas[i] * dt;
     rotor_flow<O>(rate_O * outer_time, s);
@@ -124,30 +143,47 @@ Eigen::Quaterniond compose(const Eigen::Vector3d& Pi_body, const Eigen::Vector3d
     rotor_flow<M>(rate_M * (0.5 * h), s);
     outer_time = 0.5 * h + (i + 1 < gammas.size() ? 0.5 * gammas[i + 1] * dt : 0.0);
   }
-  rotor_flow<O>(rate_O * outer_time, s);
-  return Eigen::Quaterniond(s.w, s.v[0], s.v[1], s.v[2]);
+  return outer_time;
 }
 
-/// compose() for a run-time order: one of the six instantiations.
+using AdvanceFunction = double (*)(RotorState&, const Eigen::Vector3d&, double, double,
+                                   std::span<const double>);
+
+/// advance() for a run-time order: one of the six instantiations.
+AdvanceFunction advance_for(const std::array<int, 3>& order) {
+  switch (9 * order[0] + 3 * order[1] + order[2]) {
+    case 9 * 0 + 3 * 1 + 2:
+      return advance<0, 1, 2>;
+    case 9 * 0 + 3 * 2 + 1:
+      return advance<0, 2, 1>;
+    case 9 * 1 + 3 * 0 + 2:
+      return advance<1, 0, 2>;
+    case 9 * 1 + 3 * 2 + 0:
+      return advance<1, 2, 0>;
+    case 9 * 2 + 3 * 0 + 1:
+      return advance<2, 0, 1>;
+    case 9 * 2 + 3 * 1 + 0:
+      return advance<2, 1, 0>;
+  }
+  throw std::invalid_argument("splitting order must be a permutation of the axes 0, 1, 2");
+}
+
+/// The flow of T_axis for time h, for a run-time axis.
+void outer_flow(int axis, double h, const Eigen::Vector3d& inverse_moments, RotorState& s) {
+  const double rate = inverse_moments[axis] * h;
+  if (axis == 0) rotor_flow<0>(rate, s);
+  if (axis == 1) rotor_flow<1>(rate, s);
+  if (axis == 2) rotor_flow<2>(rate, s);
+}
+
+/// Whole steps from Π with Δ starting at the identity: the increment of s Strang steps.
 Eigen::Quaterniond compose(const Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments,
                            double dt, const std::array<int, 3>& order,
                            std::span<const double> gammas) {
-  const int code = 9 * order[0] + 3 * order[1] + order[2];
-  switch (code) {
-    case 9 * 0 + 3 * 1 + 2:
-      return compose<0, 1, 2>(Pi_body, inverse_moments, dt, gammas);
-    case 9 * 0 + 3 * 2 + 1:
-      return compose<0, 2, 1>(Pi_body, inverse_moments, dt, gammas);
-    case 9 * 1 + 3 * 0 + 2:
-      return compose<1, 0, 2>(Pi_body, inverse_moments, dt, gammas);
-    case 9 * 1 + 3 * 2 + 0:
-      return compose<1, 2, 0>(Pi_body, inverse_moments, dt, gammas);
-    case 9 * 2 + 3 * 0 + 1:
-      return compose<2, 0, 1>(Pi_body, inverse_moments, dt, gammas);
-    case 9 * 2 + 3 * 1 + 0:
-      return compose<2, 1, 0>(Pi_body, inverse_moments, dt, gammas);
-  }
-  throw std::invalid_argument("splitting order must be a permutation of the axes 0, 1, 2");
+  RotorState s{{Pi_body[0], Pi_body[1], Pi_body[2]}, 1.0, {0.0, 0.0, 0.0}};
+  const double pending = advance_for(order)(s, inverse_moments, 0.0, dt, gammas);
+  outer_flow(order[0], pending, inverse_moments, s);
+  return Eigen::Quaterniond(s.w, s.v[0], s.v[1], s.v[2]);
 }
 
 constexpr std::array<double, 1> kStrang{1.0};
@@ -164,6 +200,8 @@ Eigen::Quaterniond splitting_increment(const Eigen::Vector3d& Pi_body,
                                        const Eigen::Vector3d& inverse_moments, double dt) {
   return splitting_increment(Pi_body, inverse_moments, dt, axes_by_moment(inverse_moments));
 }
+
+std::span<const double> strang_gammas() { return kStrang; }
 
 namespace composition4 {
 
@@ -196,6 +234,40 @@ Eigen::Quaterniond composed_splitting_increment(const Eigen::Vector3d& Pi_body,
 Eigen::Quaterniond splitting4_increment(const Eigen::Vector3d& Pi_body,
                                         const Eigen::Vector3d& inverse_moments, double dt) {
   return composed_splitting_increment(Pi_body, inverse_moments, dt, composition4::suzuki5());
+}
+
+SplittingStepper::SplittingStepper(const Eigen::Vector3d& inverse_moments,
+                                   std::span<const double> gammas)
+    : inverse_moments_(inverse_moments), gammas_(gammas), order_(axes_by_moment(inverse_moments)) {}
+
+void SplittingStepper::reset(const Eigen::Vector3d& Pi_body) {
+  Pi_lag_ = Pi_body;
+  pending_ = 0.0;
+}
+
+void SplittingStepper::step(double dt, const Eigen::Vector3d& Pi_of_orientation,
+                            Eigen::Quaterniond& orientation) {
+  // Π's own rounding, measured against Rᵀ L at the step's start, beside the sub-flows; added
+  // at the end, it ties Π to the orientation as closely as taking Rᵀ L afresh would.
+  const Eigen::Vector3d correction = Pi_of_orientation - Pi_lag_;
+  RotorState s{{Pi_lag_[0], Pi_lag_[1], Pi_lag_[2]},
+               orientation.w(),
+               {orientation.x(), orientation.y(), orientation.z()}};
+  pending_ = advance_for(order_)(s, inverse_moments_, pending_, dt, gammas_);
+  Pi_lag_ = Eigen::Vector3d(s.P[0], s.P[1], s.P[2]) + correction;
+  orientation = Eigen::Quaterniond(s.w, s.v[0], s.v[1], s.v[2]);
+}
+
+Eigen::Quaterniond SplittingStepper::pending_increment() const {
+  RotorState s{{Pi_lag_[0], Pi_lag_[1], Pi_lag_[2]}, 1.0, {0.0, 0.0, 0.0}};
+  outer_flow(order_[0], pending_, inverse_moments_, s);
+  return Eigen::Quaterniond(s.w, s.v[0], s.v[1], s.v[2]);
+}
+
+Eigen::Vector3d SplittingStepper::Pi_body() const {
+  RotorState s{{Pi_lag_[0], Pi_lag_[1], Pi_lag_[2]}, 1.0, {0.0, 0.0, 0.0}};
+  outer_flow(order_[0], pending_, inverse_moments_, s);
+  return Eigen::Vector3d(s.P[0], s.P[1], s.P[2]);
 }
 
 }  // namespace bookspin::physics

@@ -7,11 +7,21 @@
 namespace bookspin::physics {
 
 RigidMatrixModel::RigidMatrixModel(const Book& book, const ModelConfig& config)
-    : RigidBody(book, config) {}
+    : RigidBody(book, config), splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
 
 void RigidMatrixModel::reset(const InitialState& initial) {
   R_.setIdentity();
   reset_motion(initial);
+  splitting_.reset(R_.transpose() * L_);
+}
+
+bool RigidMatrixModel::splits() const {
+  return config_.integrator == Integrator::splitting ||
+         config_.integrator == Integrator::splitting4;
+}
+
+Eigen::Matrix3d RigidMatrixModel::orientation() const {
+  return splits() ? Eigen::Matrix3d(R_ * splitting_.pending_increment().toRotationMatrix()) : R_;
 }
 
 Eigen::Vector3d RigidMatrixModel::omega_world(const Eigen::Matrix3d& R) const {
@@ -51,11 +61,12 @@ void RigidMatrixModel::step(double dt) {
       break;
     }
     case Integrator::splitting:
-      R_ = R_ * splitting_increment(R_.transpose() * L_, inverse_moments_, dt).toRotationMatrix();
+    case Integrator::splitting4: {
+      Eigen::Quaterniond delta = Eigen::Quaterniond::Identity();
+      splitting_.step(dt, R_.transpose() * L_, delta);
+      R_ = R_ * delta.toRotationMatrix();
       break;
-    case Integrator::splitting4:
-      R_ = R_ * splitting4_increment(R_.transpose() * L_, inverse_moments_, dt).toRotationMatrix();
-      break;
+    }
     default:  // euler, the paper's method
       euler_step(dt);
   }
@@ -63,9 +74,11 @@ void RigidMatrixModel::step(double dt) {
   t_ += dt;
 }
 
-Corners RigidMatrixModel::corners() const { return R_ * book_.body_corners(); }
+Corners RigidMatrixModel::corners() const { return orientation() * book_.body_corners(); }
 
-Diagnostics RigidMatrixModel::diagnostics() const { return rigid_diagnostics(book_, R_, L_, t_); }
+Diagnostics RigidMatrixModel::diagnostics() const {
+  return rigid_diagnostics(book_, orientation(), L_, t_);
+}
 
 bool RigidMatrixModel::finite() const { return failure_.empty() && is_sane(R_); }
 

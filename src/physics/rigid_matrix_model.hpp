@@ -1,6 +1,7 @@
 #pragma once
 // Rigid body with an orientation matrix (paper §4, docs/physics.md §3, Baraff 1997).
 #include "physics/rigid_body.hpp"
+#include "physics/rigid_integrators.hpp"
 
 namespace bookspin::physics {
 
@@ -21,7 +22,9 @@ class RigidMatrixModel final : public RigidBody {
   Diagnostics diagnostics() const override;
   bool finite() const override;
 
-  const Eigen::Matrix3d& orientation() const { return R_; }
+  /// R at the last step's end (for the splittings: the lagging R turned by the pending
+  /// outer half-flow, see SplittingStepper).
+  Eigen::Matrix3d orientation() const;
 
  private:
   Eigen::Vector3d omega_world(const Eigen::Matrix3d& R) const;
@@ -29,7 +32,10 @@ class RigidMatrixModel final : public RigidBody {
   void euler_step(double dt);
   void normalize();
 
-  Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
+  bool splits() const;
+
+  Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();  ///< lags for the splittings
+  SplittingStepper splitting_;                       ///< used by splitting and splitting4 only
 };
 
 }  // namespace bookspin::physics

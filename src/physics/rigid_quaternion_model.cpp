@@ -8,11 +8,21 @@
 namespace bookspin::physics {
 
 RigidQuaternionModel::RigidQuaternionModel(const Book& book, const ModelConfig& config)
-    : RigidBody(book, config) {}
+    : RigidBody(book, config), splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
 
 void RigidQuaternionModel::reset(const InitialState& initial) {
   q_.setIdentity();
   reset_motion(initial);
+  splitting_.reset(body_momentum());
+}
+
+bool RigidQuaternionModel::splits() const {
+  return config_.integrator == Integrator::splitting ||
+         config_.integrator == Integrator::splitting4;
+}
+
+Eigen::Quaterniond RigidQuaternionModel::orientation() const {
+  return splits() ? q_ * splitting_.pending_increment() : q_;
 }
 
 // q̇ = ½ (0, ω) ⊗ q with world-frame ω (Baraff 1997, eq. 4-2), coefficients (x, y, z, w).
@@ -120,11 +130,13 @@ void RigidQuaternionModel::step(double dt) {
       break;
     }
     case Integrator::splitting:
-      q_ = q_ * splitting_increment(body_momentum(), inverse_moments_, dt);
-      break;
     case Integrator::splitting4:
-      q_ = q_ * splitting4_increment(body_momentum(), inverse_moments_, dt);
-      break;
+      // The increments are unit quaternions, so |q| = 1 + O(ε) here and one Newton step
+      // for 1/|q| (1.5 − ½|q|²) is q/|q| to round-off, without the square root and division.
+      splitting_.step(dt, body_momentum(), q_);
+      if (config_.normalize) q_.coeffs() *= 1.5 - 0.5 * q_.squaredNorm();
+      t_ += dt;
+      return;
     default:  // euler, the paper's method; the unit step normalizes itself
       if (config_.normalize)
         unit_euler_step(dt);
@@ -138,12 +150,13 @@ void RigidQuaternionModel::step(double dt) {
 }
 
 Corners RigidQuaternionModel::corners() const {
-  return q_.toRotationMatrix() * book_.body_corners();
+  return orientation().toRotationMatrix() * book_.body_corners();
 }
 
 Diagnostics RigidQuaternionModel::diagnostics() const {
-  Diagnostics d = rigid_diagnostics(book_, q_.toRotationMatrix(), L_, t_);
-  d.quaternion_norm = q_.norm();
+  const Eigen::Quaterniond q = orientation();
+  Diagnostics d = rigid_diagnostics(book_, q.toRotationMatrix(), L_, t_);
+  d.quaternion_norm = q.norm();
   return d;
 }
 

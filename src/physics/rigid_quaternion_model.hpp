@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include "physics/rigid_body.hpp"
+#include "physics/rigid_integrators.hpp"
 
 namespace bookspin::physics {
 
@@ -23,7 +24,9 @@ class RigidQuaternionModel final : public RigidBody {
   Diagnostics diagnostics() const override;
   bool finite() const override;
 
-  const Eigen::Quaterniond& orientation() const { return q_; }
+  /// q at the last step's end (for the splittings: the lagging q turned by the pending
+  /// outer half-flow, see SplittingStepper).
+  Eigen::Quaterniond orientation() const;
 
  private:
   Eigen::Vector4d derivative(const Eigen::Vector4d& q_coeffs) const;
@@ -31,7 +34,10 @@ class RigidQuaternionModel final : public RigidBody {
   void raw_euler_step(double dt);
   void unit_euler_step(double dt);
 
-  Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity();
+  bool splits() const;
+
+  Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity();  ///< lags for the splittings
+  SplittingStepper splitting_;  ///< used by splitting and splitting4 only
 };
 
 }  // namespace bookspin::physics
