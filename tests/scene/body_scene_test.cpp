@@ -70,6 +70,16 @@ TEST(BodyKeys, MeshFileRelativeToTheScene) {
   EXPECT_NEAR(s.body.moments[2], 52.0, 1e-12);
   EXPECT_NEAR(s.book.size.x(), 6.0, 1e-12);
   EXPECT_TRUE(s.warnings.empty());
+  // The same box wound inwards: read, turned around, and the scene carries one warning.
+  {
+    std::ofstream obj(dir / "meshes" / "inward.obj");
+    obj << "v 0 0 0\nv 1 0 0\nv 0 2 0\nv 1 2 0\nv 0 0 3\nv 1 0 3\nv 0 2 3\nv 1 2 3\n"
+           "f 3 7 5 1\nf 6 8 4 2\nf 5 6 2 1\nf 4 8 7 3\nf 2 4 3 1\nf 7 8 6 5\n";
+  }
+  const Scene inward = parse_scene(scene, {"body.mesh=\"meshes/inward.obj\""});
+  ASSERT_EQ(inward.warnings.size(), 1u);
+  EXPECT_NE(inward.warnings[0].find("inward.obj: "), std::string::npos) << inward.warnings[0];
+  EXPECT_TRUE(inward.body.moments.isApprox(s.body.moments, 1e-12));
   fs::remove_all(dir);
 }
 
