@@ -46,6 +46,8 @@ std::string divergence_because(const std::string& reason) {
 int render_command(const RenderArgs& args) {
   install_interrupt_handlers();
   scene::Scene scene = scene::parse_scene(args.scene_path, args.overrides);
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "bookspin: warning: " << warning << '\n';
   if (args.frames > 0) scene.frames = args.frames;
   Progress progress(scene.name, scene.frames);
   const pipeline::ClipRequest request = clip_request(args, std::move(scene), progress);
