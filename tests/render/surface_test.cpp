@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -165,6 +166,14 @@ TEST(SurfaceRender, AFlatFaceShowsItsOwnColourLitAsTheBookIs) {
         << "triangle " << 10 + k << ": got " << got.transpose() << ", expected "
         << expected.transpose();
   }
+  // Another topology on the same renderer: its colours, not the first one's.
+  auto blue = [](int) { return Eigen::Vector3f(0.1f, 0.2f, 0.9f); };
+  const RgbaImage other =
+      renderer.render(surface_frame(topology_of(box_triangles(), blue), corners, corners));
+  const Eigen::Vector2i pixel = project(settings, points[0]);
+  const Eigen::Vector3d expected =
+      lit(blue(0).cast<double>(), Eigen::Vector3d::UnitZ(), points[0], eye);
+  EXPECT_LT((testing::pixel(other, pixel.x(), pixel.y()) - expected).cwiseAbs().maxCoeff(), 2.5);
 }
 
 TEST(SurfaceRender, ANonFinitePositionDrawsOnlyTheBackground) {
@@ -368,12 +377,16 @@ TEST(SurfaceLook, WritesLookImages) {
   if (dir == nullptr || *dir == '\0') GTEST_SKIP() << "set BOOKSPIN_RENDER_LOOK_DIR";
   std::filesystem::create_directories(dir);
   const testing::TestMesh t_shape = testing::t_shape();
-  const testing::TestMesh torus = testing::torus(1.2, 0.45, 100, 100);
+  const testing::TestMesh torus = testing::torus(1.2, 0.45, 32, 16);  // coarse: facets show
+  testing::TestMesh shaken = torus;  // every vertex moved on its own, as a vibrating lattice
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.06);
+  for (Eigen::Index i = 0; i < shaken.positions.size(); ++i) shaken.positions(i) += noise(rng);
   auto t_colour = [](int t) {
     return t < 12 ? Eigen::Vector3f(0.75f, 0.18f, 0.08f) : Eigen::Vector3f(0.55f, 0.55f, 0.6f);
   };
   auto checker = [](int t) {
-    return ((t / 2) / 10 + (t / 2) % 10) % 2 ? Eigen::Vector3f(0.8f, 0.3f, 0.1f)
+    return ((t / 2) / 16 + (t / 2) % 16) % 2 ? Eigen::Vector3f(0.8f, 0.3f, 0.1f)
                                              : Eigen::Vector3f(0.9f, 0.85f, 0.7f);
   };
   struct Look {
@@ -391,6 +404,8 @@ TEST(SurfaceLook, WritesLookImages) {
        some_rotation() * shear},
       {"torus_flat", &torus, topology_of(torus.triangles, checker, false), some_rotation()},
       {"torus_smooth", &torus, topology_of(torus.triangles, checker, true), some_rotation()},
+      {"torus_shaken_smooth", &shaken, topology_of(torus.triangles, checker, true),
+       some_rotation()},
   };
   for (const Look& look : looks) {
     const Eigen::Vector3d low = look.mesh->positions.rowwise().minCoeff();
