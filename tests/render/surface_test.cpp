@@ -290,6 +290,41 @@ TEST(SurfaceRender, ATwentyThousandTriangleSurfaceStreamsFrameAfterFrame) {
   EXPECT_GT(first_count, width * height / 10);
 }
 
+TEST(SurfaceRender, SmoothShadingHidesTheFacetsThatFlatShadingShows) {
+  // One colour on a coarse torus: flat shading jumps in brightness at every facet edge,
+  // smooth shading (interpolated vertex normals) hardly anywhere.
+  const testing::TestMesh torus = testing::torus(1.2, 0.45, 24, 12);
+  Renderer renderer(view_from(Eigen::Vector3d(0.9, 0.6, 3.2).normalized() * 8.0));
+  const RgbaImage background = renderer.render(nothing());
+  const Eigen::Matrix<double, 3, 8> cage = box_corners({3.3, 3.3, 0.9});
+  auto jumps = [&](bool smooth) {
+    const RgbaImage image = renderer.render(
+        surface_frame(topology_of(torus.triangles, grey, smooth), torus.positions, cage));
+    if (const char* dir = std::getenv("BOOKSPIN_RENDER_LOOK_DIR"))
+      output::write_png(std::string(dir) + (smooth ? "/coarse_smooth.png" : "/coarse_flat.png"),
+                        image, 1);
+    int count = 0;
+    for (int y = 0; y < height; ++y) {
+      for (int x = 1; x + 1 < width; ++x) {
+        auto inside = [&](int px) {
+          return (testing::pixel(image, px, y) - testing::pixel(background, px, y))
+                     .cwiseAbs()
+                     .sum() > 24;
+        };
+        if (!inside(x - 1) || !inside(x) || !inside(x + 1)) continue;
+        // A jump: the middle pixel differs from both neighbours' mean by more than 6 levels.
+        const Eigen::Vector3d mean =
+            0.5 * (testing::pixel(image, x - 1, y) + testing::pixel(image, x + 1, y));
+        count += (testing::pixel(image, x, y) - mean).cwiseAbs().maxCoeff() > 6;
+      }
+    }
+    return count;
+  };
+  const int flat = jumps(false), smooth = jumps(true);
+  EXPECT_GT(flat, 100);
+  EXPECT_LT(smooth, flat / 2) << "flat " << flat;  // 1200 and 400 on llvmpipe
+}
+
 TEST(SurfaceRender, MalformedSurfacesAreRejected) {
   Renderer renderer(view_from({0, 0, 10}));
   const Eigen::Matrix<double, 3, 8> corners = box_corners({2.0, 2.0, 2.0});
