@@ -4,6 +4,7 @@
 #include <initializer_list>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "render/book_faces.hpp"
 #include "render/embedded_shaders.hpp"  // generated from shaders/ at build time (build dir)

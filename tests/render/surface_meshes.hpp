@@ -1,8 +1,9 @@
 #pragma once
 // Generated triangle surfaces for the render tests: a box on 8 corners, a torus, a T-shape.
 #include <Eigen/Dense>
+#include <cmath>
 #include <memory>
-#include <vector>
+#include <utility>
 
 #include "render/surface.hpp"
 
