@@ -128,8 +128,7 @@ void add_sweep(CLI::App& cli, SweepOptions& options) {
   cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--merge", options.merge,
                   "Merge shard CSVs into OUT/<scene>-sweep.csv and .png instead of running")
-      ->take_all()
-      ->allow_extra_args(false);
+      ->allow_extra_args(true);
 }
 
 int report(const std::string& message, int code) {
