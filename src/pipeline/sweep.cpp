@@ -360,9 +360,9 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepTable& table) {
       measured.label = group_names[g].empty() ? "measured" : group_names[g];
       exact.label = group_names[g].empty() ? "exact model" : "exact, " + group_names[g];
       overlay::palette_colour(static_cast<int>(g), measured.r, measured.g, measured.b);
-      exact.r = measured.r * 0.5;
-      exact.g = measured.g * 0.5;
-      exact.b = measured.b * 0.5;
+      exact.r = measured.r * 0.3;
+      exact.g = measured.g * 0.3;
+      exact.b = measured.b * 0.3;
       exact.dashed = true;
       for (std::size_t r : groups[g]) {
         const auto& cells = table.rows[r].second;
@@ -373,8 +373,8 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepTable& table) {
           exact.y.push_back(parse_cell(cells[*exact_col]));
         }
       }
-      if (exact_col) spec.series.push_back(std::move(exact));
       spec.series.push_back(std::move(measured));
+      if (exact_col) spec.series.push_back(std::move(exact));  // dashed, on top
     }
     plots.push_back(std::move(spec));
   }

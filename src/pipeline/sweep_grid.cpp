@@ -63,7 +63,8 @@ std::vector<double> VaryRange::values() const {
   const double a = log ? std::log(start) : start;
   const double b = log ? std::log(stop) : stop;
   for (int i = 0; i < count; ++i) {
-    const double x = a + (b - a) * (static_cast<double>(i) / (count - 1));
+    // (b − a)·i first: an integer range with a whole step stays integral (1:1000:1000).
+    const double x = a + (b - a) * static_cast<double>(i) / (count - 1);
     v[static_cast<std::size_t>(i)] = log ? std::exp(x) : x;
   }
   v.front() = start;
