@@ -20,8 +20,9 @@ struct VaryRange {
   int count = 1;
   bool log = false;
 
-  /// The COUNT values: start + (stop − start)·i/(COUNT − 1) (integral where the step is), or the same in log space
-  /// (exp of the linear formula on log start, log stop); the ends are START and STOP exactly.
+  /// The COUNT values: start + (stop − start)·i/(COUNT − 1) (integral where the step is), or the
+  /// same in log space (exp of the linear formula on log start, log stop); the ends are START and
+  /// STOP exactly.
   std::vector<double> values() const;
   /// The range as written after "KEY=", with the numbers in %.17g.
   std::string spec() const;

@@ -38,6 +38,9 @@ TEST(SweepGrid, LinearRangeIsEvenlySpacedWithExactEnds) {
   EXPECT_EQ(v.front(), 0.01);
   EXPECT_EQ(v.back(), 0.05);
   EXPECT_EQ(parse_vary("time.dt=0.25:9:1").values(), std::vector<double>{0.25});
+  // A whole step keeps every value integral, so integer keys (initial.seed) can be swept.
+  const auto seeds = parse_vary("initial.seed=1:1000:1000").values();
+  for (std::size_t i = 0; i < seeds.size(); ++i) ASSERT_EQ(seeds[i], static_cast<double>(i + 1));
 }
 
 TEST(SweepGrid, LogRangeIsGeometricWithExactEnds) {
