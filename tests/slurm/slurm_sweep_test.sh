@@ -29,6 +29,7 @@ cleanup() {
   if [ "${KEEP_SLURM_TMP:-}" = 1 ]; then echo "kept $tmp"; else rm -rf "$tmp"; fi
 }
 trap cleanup EXIT
+trap 'exit 1' INT TERM HUP  # so that the EXIT trap stops the daemons
 
 logs() {
   local f
