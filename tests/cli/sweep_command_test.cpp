@@ -150,5 +150,24 @@ TEST(SweepCommand, BadRangesAndValuesAreOneLineInputErrors) {
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
+TEST(SweepCommand, TheGalleryShowsASweepsPlotAndCsv) {
+  const auto dir = fresh_dir("sweep_gallery");
+  const std::string scene =
+      std::string(BOOKSPIN_SOURCE_DIR) + "/sweeps/flip-time-vs-perturbation.toml";
+  ASSERT_EQ(
+      run_bookspin("sweep " + scene +
+                   " --set time.frames=400 --vary 'initial.angular_velocity[1]=1e-4:1e-2:3:log'"
+                   " --measure first_flip -o " +
+                   dir.string())
+          .status,
+      0);
+  const CliResult r = run_bookspin("gallery " + dir.string() + " " + scene);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string html = read_file(dir / "index.html");
+  EXPECT_NE(html.find("src=\"flip-time-vs-perturbation-sweep.png\""), std::string::npos) << html;
+  EXPECT_NE(html.find("href=\"flip-time-vs-perturbation-sweep.csv\""), std::string::npos) << html;
+  EXPECT_EQ(html.find("not rendered yet"), std::string::npos) << html;
+}
+
 }  // namespace
 }  // namespace bookspin::cli
