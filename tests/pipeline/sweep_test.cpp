@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "common/errors.hpp"
 #include "physics/exact_model.hpp"
@@ -182,6 +184,56 @@ TEST(SweepMeasures, ADivergingRunIsMeasuredUpToItsLastFiniteStep) {
   EXPECT_EQ(std::fmod(*m.diverged_at, 2.0), 0.0);  // a whole number of steps
   EXPECT_FALSE(m.orientation_error);
   EXPECT_GT(*m.energy_drift, 1.0);
+}
+
+/// The cells of a CSV line.
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+TEST(SweepRun, FlipPeriodOfEveryPointMatchesTheClosedFormOnALogGrid) {
+  // The acceptance sweep: 20 log-spaced ε on the exact model (1e-6 … 1e-2) and on
+  // quaternion RK4 at dt = 1/60, whose period is round-off limited below ε ≈ 4e-6
+  // (docs/physics.md §14), so from 5e-6 … 1e-2.
+  const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output" / "sweep_accept";
+  std::filesystem::remove_all(dir);
+  for (const auto& [kind, start] :
+       {std::pair<std::string, std::string>{"exact", "1e-6"}, {"rigid-quaternion", "5e-6"}}) {
+    SweepRequest request;
+    request.scene_path =
+        std::string(BOOKSPIN_SOURCE_DIR) + "/sweeps/flip-time-vs-perturbation.toml";
+    request.overrides = {"model.kind=\"" + kind + "\"", kind == "exact"
+                                                            ? "model.integrator=\"euler\""
+                                                            : "model.integrator=\"rk4\""};
+    request.ranges = {parse_vary("initial.angular_velocity[1]=" + start + ":1e-2:20:log")};
+    request.measures = parse_measures("flip_period,first_flip");
+    request.jobs = 2;
+    request.out_dir = dir / kind;
+    const SweepResult result = run_sweep(request);
+    ASSERT_EQ(result.written.size(), 2u);
+    std::ifstream csv(result.written[0]);
+    std::string line;
+    std::getline(csv, line);
+    ASSERT_EQ(line,
+              "initial.angular_velocity[1],flip_period,first_flip,flip_period_exact,"
+              "first_flip_exact");
+    int rows = 0;
+    double previous_first = 1e300;
+    while (std::getline(csv, line)) {
+      const auto c = cells_of(line);
+      ASSERT_EQ(c.size(), 5u) << line;
+      const double period = std::stod(c[1]), exact = std::stod(c[3]);
+      EXPECT_NEAR(period / exact, 1.0, 1e-6) << kind << " " << line;
+      EXPECT_LT(std::stod(c[2]), previous_first) << line;  // closer to the axis: later flip
+      previous_first = std::stod(c[2]);
+      ++rows;
+    }
+    EXPECT_EQ(rows, 20) << kind;
+  }
 }
 
 }  // namespace
