@@ -150,6 +150,23 @@ TEST(SweepCommand, BadRangesAndValuesAreOneLineInputErrors) {
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
+TEST(SweepCommand, SigintStopsTheSweepWithNothingWritten) {
+  // 400 runs of 1500 time units take many seconds; SIGINT after one ends it with 130.
+  const auto dir = fresh_dir("sweep_interrupt");
+  const std::string command =
+      std::string("{ ") + BOOKSPIN_EXE + " sweep " + BOOKSPIN_SOURCE_DIR +
+      "/sweeps/flip-time-vs-perturbation.toml --vary "
+      "'initial.angular_velocity[1]=1e-6:1e-2:400:log'"
+      " --measure first_flip -j 2 -o " +
+      (dir / "out").string() +
+      " & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo status=$?; } 2>&1";
+  std::string output;
+  run_shell(command, output);
+  EXPECT_NE(output.find("status=130"), std::string::npos) << output;
+  EXPECT_NE(output.find("sweep interrupted; nothing written"), std::string::npos) << output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "flip-time-vs-perturbation-sweep.csv"));
+}
+
 TEST(SweepCommand, TheGalleryShowsASweepsPlotAndCsv) {
   const auto dir = fresh_dir("sweep_gallery");
   const std::string scene =
