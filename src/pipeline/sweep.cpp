@@ -169,15 +169,12 @@ std::filesystem::path shard_path(const std::filesystem::path& dir, const std::st
 std::vector<std::string> plot_header(const SweepTable& table) {
   std::vector<std::string> lines{"Sweep of " + table.scene_name + ": " +
                                  std::to_string(table.rows.size()) + " runs"};
-  std::string ranges = "varied:";
   for (const auto& r : table.ranges) {
-    char text[160];
-    std::snprintf(text, sizeof text, " %s from %.6g to %.6g, %d values%s;", r.key.c_str(), r.start,
-                  r.stop, r.count, r.log ? " (log)" : "");
-    ranges += text;
+    char text[200];
+    std::snprintf(text, sizeof text, "varied: %s from %.6g to %.6g, %d values%s", r.key.c_str(),
+                  r.start, r.stop, r.count, r.log ? " (log spaced)" : "");
+    lines.emplace_back(text);
   }
-  ranges.pop_back();
-  lines.push_back(ranges);
   return lines;
 }
 
@@ -323,22 +320,27 @@ void write_sweep_csv(const SweepTable& table, std::ostream& out) {
 
 std::vector<overlay::PlotSpec> sweep_plots(const SweepTable& table) {
   const std::size_t keys = table.ranges.size();
-  // Rows grouped by the values of the keys after the first, in order of appearance.
+  // Rows grouped by the values of the keys after the first (as written, so values that
+  // print alike at 6 digits stay apart), groups in order of appearance.
   std::vector<std::string> group_names;
   std::vector<std::vector<std::size_t>> groups;
+  std::map<std::string, std::size_t> group_of;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    std::string name;
+    std::string key, name;
     for (std::size_t k = 1; k < keys; ++k) {
+      const std::string& cell_text = table.rows[r].second[k];
+      key += cell_text + ",";
+      char value[40];
+      std::snprintf(value, sizeof value, "%.6g", parse_cell(cell_text));
       if (k > 1) name += ", ";
-      name += table.header[k] + " = " + table.rows[r].second[k];
+      name += table.header[k] + " = " + value;
     }
-    auto it = std::find(group_names.begin(), group_names.end(), name);
-    if (it == group_names.end()) {
+    const auto [it, added] = group_of.emplace(key, groups.size());
+    if (added) {
       group_names.push_back(name);
       groups.emplace_back();
-      it = group_names.end() - 1;
     }
-    groups[static_cast<std::size_t>(it - group_names.begin())].push_back(r);
+    groups[it->second].push_back(r);
   }
   std::vector<overlay::PlotSpec> plots;
   for (std::size_t m = 0; m < table.measures.size(); ++m) {
