@@ -51,7 +51,7 @@ fail() {
   exit 1
 }
 
-for tool in munged mungekey slurmctld slurmd sbatch squeue scontrol; do
+for tool in munged mungekey slurmctld slurmd sbatch squeue sinfo; do
   command -v "$tool" >/dev/null || cannot_start "'$tool' not found"
 done
 
