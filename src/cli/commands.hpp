@@ -77,6 +77,21 @@ struct InertiaOptions {
 /// principal frame (docs/physics.md §11); warnings on stderr.
 int inertia_command(const InertiaOptions& options);
 
+struct SweepOptions {
+  std::string scene_path;              ///< empty with --merge
+  std::vector<std::string> overrides;  ///< --set, before the grid's own
+  std::vector<std::string> vary;       ///< "KEY=START:STOP:COUNT[:log]"
+  std::string measures;                ///< "first_flip,flip_period,…"
+  int jobs = 0;                        ///< threads; 0 = hardware threads
+  std::string shard;                   ///< "K/N", K from 0; empty = the whole grid
+  std::string out_dir = "out";
+  std::vector<std::string> merge;  ///< shard CSVs to merge instead of running
+};
+
+/// Runs a parameter sweep (physics only, docs/physics.md §14) and writes
+/// OUT/<scene>-sweep.csv and .png, or one shard's CSV, or merges shard CSVs.
+int sweep_command(const SweepOptions& options);
+
 /// "; REASON" for a simulator's divergence reason, "" when it gave none.
 std::string divergence_because(const std::string& reason);
 

@@ -50,6 +50,8 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   if (exists(out, scene.name + ".mp4")) e.video = scene.name + ".mp4";
   e.poster = poster_for(out, scene.name);
   if (exists(out, scene.name + "-plot.png")) e.plot = scene.name + "-plot.png";
+  if (exists(out, scene.name + "-sweep.png")) e.sweep = scene.name + "-sweep.png";
+  if (exists(out, scene.name + "-sweep.csv")) e.sweep_csv = scene.name + "-sweep.csv";
   e.csvs = files_in(out, scene.name, "diagnostics", ".csv");
   return e;
 }

@@ -37,13 +37,18 @@ void write_media(std::ostream& out, const GalleryEntry& e) {
     out << "></video>\n";
   } else if (!e.poster.empty()) {
     out << "<img src=" << attr(e.poster) << " alt=\"frame of " << html_escape(e.title) << "\">\n";
-  } else {
+  } else if (e.sweep.empty()) {
     out << "<p class=\"missing\">not rendered yet (no " << html_escape(e.name) << ".mp4)</p>\n";
   }
   if (!e.plot.empty()) {
     out << "<a href=" << attr(e.plot)
         << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.plot) << " alt=\"diagnostics of "
         << html_escape(e.title) << "\"></a>\n";
+  }
+  if (!e.sweep.empty()) {
+    out << "<a href=" << attr(e.sweep)
+        << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.sweep)
+        << " alt=\"parameter sweep of " << html_escape(e.title) << "\"></a>\n";
   }
   out << "</div>\n";
 }
@@ -55,6 +60,8 @@ void write_entry(std::ostream& out, const GalleryEntry& e) {
   write_media(out, e);
   out << "<p class=\"files\">" << html_escape(e.name);
   if (!e.video.empty()) out << " · <a href=" << attr(e.video) << ">MP4</a>";
+  if (!e.sweep_csv.empty())
+    out << " · <a href=" << attr(e.sweep_csv) << ">" << html_escape(e.sweep_csv) << "</a>";
   for (const auto& csv : e.csvs) {
     const std::string file = csv.substr(csv.rfind('/') + 1);  // npos + 1 = 0: the whole path
     out << " · <a href=" << attr(csv) << ">" << html_escape(file) << "</a>";

@@ -14,6 +14,8 @@ struct GalleryEntry {
   std::string video;              ///< "<name>.mp4"
   std::string poster;             ///< a frame PNG shown before the clip plays
   std::string plot;               ///< "<name>-plot.png"
+  std::string sweep;              ///< "<name>-sweep.png" (`bookspin sweep`)
+  std::string sweep_csv;          ///< "<name>-sweep.csv"
   std::vector<std::string> csvs;  ///< diagnostics CSVs
 };
 
