@@ -160,6 +160,7 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
     r.fail("render.preset", "unknown preset '" + o.preset + "'");
   o.png_compression = static_cast<int>(r.integer("render.png_compression", 1, 0, 9));
   o.panel = r.boolean("render.panel", false);
+  o.sphere = r.boolean("render.sphere", false);
   o.anisotropy = static_cast<int>(r.integer("render.anisotropy", 0, 0, 16));
   o.msaa = static_cast<int>(r.integer("render.msaa", o.msaa, 1, 8));
   if (o.msaa != 1 && o.msaa != 2 && o.msaa != 4 && o.msaa != 8)
@@ -194,6 +195,8 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   read_time(r, s);
   s.render = read_render(r, origin);
   s.compare = read_compare(r, origin.string(), overridden, s.model);
+  if (s.render.sphere && !s.compare.empty())
+    r.fail("render.sphere", "the momentum sphere is not available in a comparison scene");
   r.reject_unknown_keys();
   return s;
 }
