@@ -1,0 +1,35 @@
+// The momentum sphere inset (render.sphere; docs/physics.md §15) is part of the picture: the
+// first, middle and last frames of fig09 (Euler: the trail drifts off its polhode) and of
+// exact-unstable-x (the trail stays on it) are pinned, with the plot panel, at 640×360 —
+// large enough for the inset's labels to be read in the goldens.
+#include <gtest/gtest.h>
+
+#include "golden_store.hpp"
+#include "picture_scenes.hpp"
+#include "pipeline/frame.hpp"
+
+namespace bookspin::picture {
+namespace {
+
+const std::vector<std::string> kSphereOn{"render.width=640", "render.height=360",
+                                         "render.sphere=true"};
+
+class SphereGoldens : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SphereGoldens, FirstMiddleAndLastFramesMatch) {
+  const scene::Scene scene = figure_scene(GetParam(), kSphereOn);
+  ASSERT_TRUE(scene.render.sphere);
+  render::Renderer& renderer = renderer_for(scene);
+  for (const int index : pinned_frames(scene.frames)) {
+    const std::string name = "sphere-" + golden_name(scene.name, index);
+    EXPECT_TRUE(matches_golden(name, pipeline::render_still(scene, renderer, index))) << name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, SphereGoldens,
+                         ::testing::Values("fig09-matrix-unstable-x", "exact-unstable-x",
+                                           "fig10-matrix-no-normalization"),
+                         [](const auto& info) { return test_name(info.param); });
+
+}  // namespace
+}  // namespace bookspin::picture
