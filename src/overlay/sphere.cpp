@@ -129,13 +129,13 @@ void draw_sphere(RgbaImage& image, const PixelRect& rect, const SphereSpec& spec
   for (const auto& c : spec.curves)
     stroke_on_sphere(cr, spec, disc, c.points, c.colour, c.width * unit);
   for (const auto& t : spec.trails) {
-    stroke_on_sphere(cr, spec, disc, t.points, t.colour, 1.6 * unit);
+    stroke_on_sphere(cr, spec, disc, t.points, t.colour, t.width * unit);
     if (t.points.empty()) continue;
     double depth = 0;
     const Eigen::Vector2d dot =
         project_to_inset(spec, t.points.back(), disc.cx, disc.cy, disc.r, &depth);
     cairo_new_path(cr);
-    cairo_arc(cr, dot.x(), dot.y(), 3.2 * unit, 0, 2 * M_PI);
+    cairo_arc(cr, dot.x(), dot.y(), (2.0 + 0.8 * t.width) * unit, 0, 2 * M_PI);
     cairo_set_source_rgba(cr, t.colour.r, t.colour.g, t.colour.b, depth >= 0 ? 1.0 : 0.6);
     cairo_fill_preserve(cr);
     cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);

@@ -29,10 +29,11 @@ struct SphereAxis {
   Rgb colour;
 };
 
-/// A run's path on the sphere; its last point is drawn as a dot.
+/// A run's path on the sphere; its last point is drawn as a dot (radius 2 + 0.8 × width).
 struct SphereTrail {
   std::vector<Eigen::Vector3d> points;
   Rgb colour;
+  double width = 1.6;  ///< line width as a share of 1/150 of the inset's side
 };
 
 struct SphereSpec {

@@ -51,6 +51,8 @@ overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments,
     for (const auto& u : run.history->momentum_direction)
       if (u.squaredNorm() > 0 && u.allFinite()) t.points.push_back(u);
     t.colour = run.colour;
+    // Trails drawn later are narrower, so runs in lockstep (one curve) still show every colour.
+    t.width = 1.6 + 0.9 * static_cast<double>(runs.size() - 1 - (&run - runs.data()));
     spec.trails.push_back(std::move(t));
   }
   return spec;
@@ -62,6 +64,13 @@ PixelRect sphere_rect(int width, int height, double book_width) {
   const double margin = 0.012 * std::min(width, height);
   const double top = std::max(margin, 0.19 * height);  // below a three-line caption
   return {margin, top, side, side};
+}
+
+std::pair<PixelRect, PixelRect> split_for_sphere(const PixelRect& column) {
+  const double side = std::min(column.width, 0.42 * column.height);
+  const PixelRect sphere{column.x + 0.5 * (column.width - side), column.y, side, side};
+  const double gap = 0.02 * column.height;
+  return {sphere, {column.x, column.y + side + gap, column.width, column.height - side - gap}};
 }
 
 }  // namespace bookspin::pipeline

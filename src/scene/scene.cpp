@@ -195,8 +195,6 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   read_time(r, s);
   s.render = read_render(r, origin);
   s.compare = read_compare(r, origin.string(), overridden, s.model);
-  if (s.render.sphere && !s.compare.empty())
-    r.fail("render.sphere", "the momentum sphere is not available in a comparison scene");
   r.reject_unknown_keys();
   return s;
 }

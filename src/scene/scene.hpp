@@ -37,8 +37,8 @@ struct RenderOptions {
   /// 60% of the frame and the plots fill the right 40%.
   bool panel = false;
   /// The momentum sphere inset (docs/physics.md §15): polhodes, separatrices and the run's
-  /// body-frame L/|L| with its trail, drawn at the left edge of the book's part of the frame.
-  /// Not available in comparison scenes.
+  /// body-frame L/|L| with its trail, drawn at the left edge of the book's part of the frame
+  /// (a comparison: one trail per tile, atop the plot column).
   bool sphere = false;
 };
 

@@ -111,11 +111,25 @@ TEST(SphereView, InsetStaysInTheBookPartBelowTheCaptionAboveTheBanner) {
   }
 }
 
-TEST(SphereView, SceneKeyDefaultsOffAndIsRefusedInAComparison) {
+TEST(SphereView, SceneKeyDefaultsOffAndIsOnInTheNamedScenes) {
   EXPECT_FALSE(scene_named("fig03-particle-stable-z").render.sphere);
-  EXPECT_TRUE(scene_named("fig09-matrix-unstable-x").render.sphere);
-  const std::string compare = std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/compare-methods-x.toml";
-  EXPECT_THROW(scene::parse_scene(compare, {"render.sphere=true"}), InputError);
+  for (const char* name :
+       {"fig05-particle-unstable-x", "fig09-matrix-unstable-x", "fig10-matrix-no-normalization",
+        "fig11-quaternion-no-normalization", "exact-unstable-x", "compare-methods-x"})
+    EXPECT_TRUE(scene_named(name).render.sphere) << name;
+}
+
+TEST(SphereView, ComparisonColumnGivesTheSphereItsTopAndThePlotsTheRest) {
+  const PixelRect column{800, 40, 470, 660};
+  const auto [sphere, plots] = split_for_sphere(column);
+  EXPECT_EQ(sphere.width, sphere.height);
+  EXPECT_NEAR(sphere.height, 0.42 * 660, 1e-9);
+  EXPECT_GE(sphere.x, column.x);
+  EXPECT_LE(sphere.right(), column.right());
+  EXPECT_EQ(sphere.y, column.y);
+  EXPECT_GT(plots.y, sphere.bottom());  // no overlap
+  EXPECT_NEAR(plots.bottom(), column.bottom(), 1e-9);
+  EXPECT_EQ(plots.width, column.width);
 }
 
 }  // namespace
