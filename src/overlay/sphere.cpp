@@ -26,50 +26,54 @@ Basis basis_of(const SphereSpec& spec) {
 double title_height(const PixelRect& rect) { return 0.1 * rect.height; }
 double font_for(const PixelRect& rect) { return std::max(9.0, 0.052 * rect.height); }
 
-void stroke_polyline(cairo_t* cr, const std::vector<Eigen::Vector2d>& pts, Rgb c, double alpha,
-                     double width, bool dashed) {
-  if (pts.size() < 2) return;
+using Polyline = std::vector<Eigen::Vector2d>;
+
+Eigen::Vector2d project(const Basis& b, const SphereDisc& disc, const Eigen::Vector3d& p) {
+  return {disc.cx + disc.r * p.dot(b.right), disc.cy - disc.r * p.dot(b.up)};
+}
+
+/// Polylines split into runs on the near side and on the far side; a segment belongs to the
+/// side of its midpoint.
+struct SideRuns {
+  std::vector<Polyline> near_side, far_side;
+
+  void add(const Basis& b, const SphereDisc& disc, const std::vector<Eigen::Vector3d>& points) {
+    std::vector<Polyline>* current = nullptr;
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) {
+      auto* side = (points[i] + points[i + 1]).dot(b.towards) >= 0 ? &near_side : &far_side;
+      if (side != current) {
+        side->push_back({project(b, disc, points[i])});
+        current = side;
+      }
+      side->back().push_back(project(b, disc, points[i + 1]));
+    }
+  }
+};
+
+/// Strokes `runs` as one path (one cairo stroke for many curves: the polhodes cost one
+/// stroke per style, not one per curve).
+void stroke_runs(cairo_t* cr, const std::vector<Polyline>& runs, Rgb c, double alpha, double width,
+                 bool dashed) {
   cairo_new_path(cr);
-  cairo_move_to(cr, pts[0].x(), pts[0].y());
-  for (std::size_t i = 1; i < pts.size(); ++i) cairo_line_to(cr, pts[i].x(), pts[i].y());
+  for (const auto& run : runs) {
+    if (run.size() < 2) continue;
+    cairo_move_to(cr, run[0].x(), run[0].y());
+    for (std::size_t i = 1; i < run.size(); ++i) cairo_line_to(cr, run[i].x(), run[i].y());
+  }
   cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
   cairo_set_line_width(cr, width);
   if (dashed) {
     const double dash[] = {2.5 * width, 2.5 * width};
     cairo_set_dash(cr, dash, 2, 0);
-  } else {
-    cairo_set_dash(cr, nullptr, 0, 0);
   }
   cairo_stroke(cr);
   cairo_set_dash(cr, nullptr, 0, 0);
 }
 
-/// Strokes `points` split into runs on the near side (solid) and the far side (faint,
-/// dashed); a segment belongs to the side of its midpoint.
-void stroke_on_sphere(cairo_t* cr, const SphereSpec& spec, const SphereDisc& disc,
-                      const std::vector<Eigen::Vector3d>& points, Rgb c, double width) {
-  if (points.size() < 2) return;
-  std::vector<Eigen::Vector2d> run;
-  bool near_run = true;
-  const auto flush = [&] {
-    stroke_polyline(cr, run, c, near_run ? 1.0 : kFarAlpha, width, !near_run);
-    run.clear();
-  };
-  for (std::size_t i = 0; i + 1 < points.size(); ++i) {
-    const Eigen::Vector3d mid = 0.5 * (points[i] + points[i + 1]);
-    double depth = 0;
-    project_to_inset(spec, mid, disc.cx, disc.cy, disc.r, &depth);
-    const bool near_side = depth >= 0;
-    if (!run.empty() && near_side != near_run) {
-      const Eigen::Vector2d last = run.back();
-      flush();
-      run.push_back(last);
-    }
-    near_run = near_side;
-    if (run.empty()) run.push_back(project_to_inset(spec, points[i], disc.cx, disc.cy, disc.r));
-    run.push_back(project_to_inset(spec, points[i + 1], disc.cx, disc.cy, disc.r));
-  }
-  flush();
+/// Strokes the runs: the far side first (faint, dashed), then the near side (solid).
+void stroke_sides(cairo_t* cr, const SideRuns& runs, Rgb c, double width) {
+  stroke_runs(cr, runs.far_side, c, kFarAlpha, width, true);
+  stroke_runs(cr, runs.near_side, c, 1.0, width, false);
 }
 
 }  // namespace
@@ -122,14 +126,29 @@ void draw_sphere(RgbaImage& image, const PixelRect& rect, const SphereSpec& spec
   cairo_stroke(cr);
 
   // Axes: through the centre, the far half faint; labels just beyond the + end.
+  const Basis basis = basis_of(spec);
   for (const auto& axis : spec.axes) {
-    stroke_on_sphere(cr, spec, disc, {-axis.direction, Eigen::Vector3d::Zero(), axis.direction},
-                     axis.colour, 0.8 * unit);
+    SideRuns runs;
+    runs.add(basis, disc, {-axis.direction, Eigen::Vector3d::Zero(), axis.direction});
+    stroke_sides(cr, runs, axis.colour, 0.8 * unit);
   }
-  for (const auto& c : spec.curves)
-    stroke_on_sphere(cr, spec, disc, c.points, c.colour, c.width * unit);
+  // Consecutive curves of one style go into one stroke.
+  for (std::size_t i = 0; i < spec.curves.size();) {
+    const SphereCurve& first = spec.curves[i];
+    SideRuns runs;
+    for (; i < spec.curves.size(); ++i) {
+      const SphereCurve& c = spec.curves[i];
+      if (c.width != first.width || c.colour.r != first.colour.r || c.colour.g != first.colour.g ||
+          c.colour.b != first.colour.b)
+        break;
+      runs.add(basis, disc, c.points);
+    }
+    stroke_sides(cr, runs, first.colour, first.width * unit);
+  }
   for (const auto& t : spec.trails) {
-    stroke_on_sphere(cr, spec, disc, t.points, t.colour, t.width * unit);
+    SideRuns runs;
+    runs.add(basis, disc, t.points);
+    stroke_sides(cr, runs, t.colour, t.width * unit);
     if (t.points.empty()) continue;
     double depth = 0;
     const Eigen::Vector2d dot =
