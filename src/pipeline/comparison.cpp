@@ -21,9 +21,10 @@ namespace {
 
 /// One panel's run. Not movable: the FrameSource keeps a reference to `scene`.
 struct TileState {
-  explicit TileState(scene::Scene s) : scene(std::move(s)), source(scene) {}
+  explicit TileState(scene::Scene s) : scene(std::move(s)), source(scene), drawing(scene.body) {}
   scene::Scene scene;  ///< the comparison scene with this panel's model
   FrameSource source;
+  BodyDrawing drawing;
   ShownFrame frame;
 };
 using Tiles = std::vector<std::unique_ptr<TileState>>;
@@ -122,7 +123,7 @@ RgbaImage compose(const scene::Scene& scene, const CompareLayout& layout,
   RgbaImage frame = blank_frame(scene.render.width, scene.render.height);
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const PixelRect& tile = layout.tiles[i];
-    blit(frame, renderer.render(frame_input_for(panels[i]->frame.pose)), static_cast<int>(tile.x),
+    blit(frame, renderer.render(panels[i]->drawing.input_for(panels[i]->frame.pose)), static_cast<int>(tile.x),
          static_cast<int>(tile.y));
   }
   decorate(frame, scene, layout, panels);

@@ -17,7 +17,7 @@ constexpr Rgb kPolhodeColour{0.55, 0.57, 0.62};
 
 }  // namespace
 
-Eigen::Vector3d sphere_moments(const scene::Scene& scene) { return scene.book.principal_moments(); }
+Eigen::Vector3d sphere_moments(const scene::Scene& scene) { return scene.body.moments; }
 
 overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments,
                                 const std::vector<SphereRun>& runs) {

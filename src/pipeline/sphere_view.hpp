@@ -16,7 +16,7 @@
 namespace bookspin::pipeline {
 
 /// The principal moments the sphere is drawn for (body frame, mass·length²): the scene's
-/// book. The one place to change when other bodies arrive.
+/// body (docs/physics.md §12).
 Eigen::Vector3d sphere_moments(const scene::Scene& scene);
 
 /// One trail on the sphere: a run's body-frame L/|L| so far, in `colour`.

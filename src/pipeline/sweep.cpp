@@ -259,8 +259,8 @@ double cos_intermediate_L(const physics::Diagnostics& diagnostics,
 
 PointMeasures measure_run(const scene::Scene& scene) {
   PointMeasures result;
-  const Eigen::Vector3d moments = scene.book.principal_moments();
-  auto sim = physics::make_simulator(scene.book, scene.model);
+  const Eigen::Vector3d moments = scene.body.moments;
+  auto sim = physics::make_simulator(scene.body, scene.model);
   sim->reset(scene.initial);
   physics::Diagnostics d = sim->diagnostics();
   const double e0 = d.energy_total;
@@ -298,7 +298,7 @@ PointMeasures measure_run(const scene::Scene& scene) {
   if (flips >= 1) result.first_flip = first;
   if (flips >= 2) result.flip_period = (last - first) / (flips - 1);
 
-  physics::ExactModel reference(scene.book);
+  physics::ExactModel reference(scene.body);
   reference.reset(scene.initial);
   const physics::ExactRotation& exact = reference.rotation();
   const double half = exact.flip_period();
