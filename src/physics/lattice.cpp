@@ -102,9 +102,9 @@ Fill fill_cells(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triang
       y_hi = std::max(y_hi, vertices(1, triangles(e, t)));
     }
     // Sample i sits at origin + step (i + ½).
-    column_range[t] = {std::max(0, static_cast<int>(std::floor((x_lo - origin.x()) / step_x)) - 1),
-                       std::min(columns_x - 1,
-                                static_cast<int>(std::ceil((x_hi - origin.x()) / step_x)))};
+    column_range[t] = {
+        std::max(0, static_cast<int>(std::floor((x_lo - origin.x()) / step_x)) - 1),
+        std::min(columns_x - 1, static_cast<int>(std::ceil((x_hi - origin.x()) / step_x)))};
     const int j0 = std::max(0, static_cast<int>(std::floor((y_lo - origin.y()) / step_y)) - 1);
     const int j1 =
         std::min(columns_y - 1, static_cast<int>(std::ceil((y_hi - origin.y()) / step_y)));
@@ -134,10 +134,12 @@ Fill fill_cells(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triang
                          (v[2].x() - v[0].x()) * (v[1].y() - v[0].y());
         double z = (v[0].z() + v[1].z() + v[2].z()) / 3.0;
         if (d != 0.0) {
-          const double b1 = ((px - v[0].x()) * (v[2].y() - v[0].y()) -
-                             (v[2].x() - v[0].x()) * (py - v[0].y())) / d;
-          const double b2 = ((v[1].x() - v[0].x()) * (py - v[0].y()) -
-                             (px - v[0].x()) * (v[1].y() - v[0].y())) / d;
+          const double b1 =
+              ((px - v[0].x()) * (v[2].y() - v[0].y()) - (v[2].x() - v[0].x()) * (py - v[0].y())) /
+              d;
+          const double b2 =
+              ((v[1].x() - v[0].x()) * (py - v[0].y()) - (px - v[0].x()) * (v[1].y() - v[0].y())) /
+              d;
           z = v[0].z() + b1 * (v[1].z() - v[0].z()) + b2 * (v[2].z() - v[0].z());
         }
         // Counter-clockwise seen from +z (s0 > 0): the outward normal points up, so going up
@@ -174,7 +176,8 @@ Fill fill_cells(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triang
         if (!(zb > za)) continue;
         // The stretch [za, zb] cut by the cells along z.
         int k = static_cast<int>(std::upper_bound(z_nodes.begin(), z_nodes.end(), za) -
-                                 z_nodes.begin()) - 1;
+                                 z_nodes.begin()) -
+                1;
         k = std::clamp(k, 0, cells.z() - 1);
         for (; k < cells.z() && z_nodes[k] < zb; ++k) {
           const double hz = z_nodes[k + 1] - z_nodes[k];
@@ -247,10 +250,12 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
   // Particles: the grid nodes at a corner of a kept cell, numbered in grid order (x fastest).
   const Vector3i nodes = cells + Vector3i::Ones();
   auto node_index = [&](int i, int j, int k) {
-    return i + static_cast<std::int64_t>(nodes.x()) * (j + static_cast<std::int64_t>(nodes.y()) * k);
+    return i +
+           static_cast<std::int64_t>(nodes.x()) * (j + static_cast<std::int64_t>(nodes.y()) * k);
   };
   auto cell_index = [&](int i, int j, int k) {
-    return i + static_cast<std::int64_t>(cells.x()) * (j + static_cast<std::int64_t>(cells.y()) * k);
+    return i +
+           static_cast<std::int64_t>(cells.x()) * (j + static_cast<std::int64_t>(cells.y()) * k);
   };
   // Masses (docs/physics.md §13): half of each cell's filled volume in equal parts to its 8
   // corners, half by the trilinear weights of where the filled part lies (exact first
@@ -276,7 +281,7 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
           used[q] = 1;
         }
       }
-  if (lat.cells_kept == 0) throw std::invalid_argument("lattice: the surface encloses no sample");
+  if (lat.cells_kept == 0) throw std::invalid_argument("lattice: the surface encloses nothing");
   lat.volume = filled_cells * lat.cell_size.prod();
 
   std::vector<int> particle(node_weight.size(), -1);
@@ -372,13 +377,15 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
     double best_distance = std::numeric_limits<double>::infinity();
     double best_count = -1.0;
     for (int radius = 1; best_count < 0.0; ++radius) {
-      const Vector3i a = (home.array() - radius).max(0), b = (home + Vector3i::Constant(radius)).cwiseMin(cells - Vector3i::Ones());
+      const Vector3i a = (home.array() - radius).max(0),
+                     b = (home + Vector3i::Constant(radius)).cwiseMin(cells - Vector3i::Ones());
       for (int k = a.z(); k <= b.z(); ++k)
         for (int j = a.y(); j <= b.y(); ++j)
           for (int i = a.x(); i <= b.x(); ++i) {
             const double c = filled[cell_index(i, j, k)];
             if (!(c > 0.0)) continue;
-            const Vector3d gap = (Vector3d(i, j, k) - u).cwiseMax(u - Vector3d(i + 1, j + 1, k + 1)).cwiseMax(0.0);
+            const Vector3d gap =
+                (Vector3d(i, j, k) - u).cwiseMax(u - Vector3d(i + 1, j + 1, k + 1)).cwiseMax(0.0);
             const double distance = gap.squaredNorm();
             if (distance < best_distance || (distance == best_distance && c > best_count)) {
               best_distance = distance;
@@ -388,9 +395,10 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
           }
     }
     for (int corner = 0; corner < 8; ++corner)
-      lat.vertex_cell(corner, v) = particle[node_index(best.x() + (corner & 1), best.y() + ((corner >> 1) & 1),
-                                                       best.z() + (corner >> 2))];
-    const Vector3d cell_lo(coordinate(0, best.x()), coordinate(1, best.y()), coordinate(2, best.z()));
+      lat.vertex_cell(corner, v) = particle[node_index(
+          best.x() + (corner & 1), best.y() + ((corner >> 1) & 1), best.z() + (corner >> 2))];
+    const Vector3d cell_lo(coordinate(0, best.x()), coordinate(1, best.y()),
+                           coordinate(2, best.z()));
     const Vector3d cell_hi(coordinate(0, best.x() + 1), coordinate(1, best.y() + 1),
                            coordinate(2, best.z() + 1));
     lat.vertex_coords.col(v) = (vertices.col(v) - cell_lo).cwiseQuotient(cell_hi - cell_lo);
@@ -401,7 +409,8 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
   lat.center_of_mass = lat.rest * lat.mass / lat.total_mass;
   for (int p = 0; p < P; ++p) {
     const Vector3d r = lat.rest.col(p) - lat.center_of_mass;
-    lat.inertia += lat.mass[p] * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+    lat.inertia +=
+        lat.mass[p] * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   }
   principal_frame(lat.inertia, lat.principal_moments, lat.principal_axes);
   return lat;
@@ -425,8 +434,7 @@ Eigen::Matrix3Xd Lattice::embed_surface(const Eigen::Matrix3Xd& x) const {
     const Vector3d u = vertex_coords.col(v);
     Vector3d sum = Vector3d::Zero();
     for (int corner = 0; corner < 8; ++corner) {
-      const double w = ((corner & 1) ? u.x() : 1.0 - u.x()) *
-                       ((corner & 2) ? u.y() : 1.0 - u.y()) *
+      const double w = ((corner & 1) ? u.x() : 1.0 - u.x()) * ((corner & 2) ? u.y() : 1.0 - u.y()) *
                        ((corner & 4) ? u.z() : 1.0 - u.z());
       sum += w * x.col(vertex_cell(corner, v));
     }
@@ -439,8 +447,8 @@ Eigen::Matrix3d best_fit_rotation(const Eigen::Matrix3Xd& current, const Eigen::
                                   const Eigen::VectorXd& weights) {
   const double total = weights.sum();
   const Vector3d c = current * weights / total, c0 = rest * weights / total;
-  const Eigen::Matrix3d H = (current.colwise() - c) * weights.asDiagonal() *
-                            (rest.colwise() - c0).transpose();
+  const Eigen::Matrix3d H =
+      (current.colwise() - c) * weights.asDiagonal() * (rest.colwise() - c0).transpose();
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d fix = Eigen::Matrix3d::Identity();
   fix(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0 ? -1.0 : 1.0;

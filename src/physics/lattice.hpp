@@ -15,9 +15,9 @@ inline constexpr int kDefaultLatticeCells = 24;
 /// All positions are in the frame of the surface given to build_lattice() (the body's
 /// principal frame, centre of mass at the origin), length units of that surface.
 struct Lattice {
-  Eigen::Matrix3Xd rest;       ///< 3×P particle positions at rest
-  Eigen::VectorXd mass;        ///< P particle masses, Σ = the body's mass
-  Eigen::Matrix2Xi springs;    ///< 2×S particle indices (i < j), sorted by (i, j)
+  Eigen::Matrix3Xd rest;        ///< 3×P particle positions at rest
+  Eigen::VectorXd mass;         ///< P particle masses, Σ = the body's mass
+  Eigen::Matrix2Xi springs;     ///< 2×S particle indices (i < j), sorted by (i, j)
   Eigen::VectorXd rest_length;  ///< S rest lengths |rest_i − rest_j|
   /// S stiffness factors: the spring constant of spring s is k · stiffness(s), with k the
   /// model's spring constant (docs/physics.md §13: Σ over the cells sharing the spring of
@@ -34,15 +34,15 @@ struct Lattice {
   Eigen::Vector3d cell_size = Eigen::Vector3d::Zero();  ///< cell edges (x, y, z)
   Eigen::Vector3i cells = Eigen::Vector3i::Zero();      ///< cells along x, y, z
   int cells_along_longest = 0;                          ///< n, as asked
-  int cells_kept = 0;  ///< cells with any part of the body in them
-  double volume = 0.0;  ///< sampled volume of the body (length³)
+  int cells_kept = 0;                                   ///< cells with any part of the body in them
+  double volume = 0.0;                                  ///< sampled volume of the body (length³)
 
   double total_mass = 0.0;                                   ///< Σ mass
   Eigen::Vector3d center_of_mass = Eigen::Vector3d::Zero();  ///< Σ m x / M at rest
   /// 3×3 inertia of the particles at rest about their centre of mass, lattice frame:
   /// Σ m (|r|² 1 − r rᵀ).
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d principal_moments = Eigen::Vector3d::Zero();  ///< ascending
+  Eigen::Vector3d principal_moments = Eigen::Vector3d::Zero();   ///< ascending
   Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();  ///< rows, right-handed
 
   int particles() const { return static_cast<int>(rest.cols()); }
@@ -60,17 +60,19 @@ struct Lattice {
 /// side of its bounding box and carrying `mass` (docs/physics.md §13):
 ///   - the grid spans the bounding box exactly, with n_d = max(1, round(n·extent_d/extent_max))
 ///     cells along axis d (nearly cubic cells; a box is one cell at n = 1);
-///   - each cell is sampled at s³ points (s = max(2, ⌈128/n⌉)) classified by the winding
-///     number along z-columns (each closed shell counted once with its outward orientation,
-///     so shells add up as in mass_properties()); a cell is kept when any sample is inside,
-///     and its filled fraction f is the inside share of its samples;
-///   - a particle at every corner of a kept cell, with mass ∝ Σ f/8 over its kept cells;
+///   - each cell is cut by s×s vertical columns (s the smallest power of 2 with s·n ≥ 1024),
+///     along which the winding number is integrated exactly in z (each closed shell counted
+///     with its outward orientation, so shells add up as in mass_properties()); f is the
+///     cell's filled fraction and a cell is kept when f > 0 (inside or touching);
+///   - a particle at every corner of a kept cell; each cell's f goes half in equal parts to
+///     its 8 corners and half by the trilinear weights of its filled part; the masses are
+///     these shares scaled to `mass`;
 ///   - within each kept cell a spring joins every pair of its 8 corners; springs of
 ///     neighbouring cells joining the same two particles are merged, their stiffness factors
 ///     f/n adding up (parallel springs).
 /// Throws std::invalid_argument for n outside [1, kMaxLatticeCells], a mass that is not
 /// finite and positive, no triangles, an index out of range, a non-finite coordinate, a
-/// flat bounding box or a surface that encloses no sample.
+/// flat bounding box or a surface that encloses nothing.
 Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triangles,
                       double mass, int cells_along_longest);
 

@@ -69,9 +69,8 @@ LatticeModel::LatticeModel(Lattice lattice, const Eigen::Vector3d& moments,
 void LatticeModel::reset(const InitialState& initial) {
   // As the particle model (docs/physics.md §5): ω0' = I⁻¹ (I ω0 + δL), I = diag(moments).
   const Eigen::Matrix3d inertia = moments_.asDiagonal();
-  const Eigen::Vector3d omega0 =
-      inertia.inverse() *
-      (inertia * initial.omega0_body + jiggle_delta_L(initial.seed, initial.jiggle));
+  const Eigen::Vector3d omega0 = inertia.inverse() * (inertia * initial.omega0_body +
+                                                      jiggle_delta_L(initial.seed, initial.jiggle));
   x_ = lattice_.rest;
   const Eigen::Vector3d c0 = lattice_.center_of_mass;
   for (int p = 0; p < x_.cols(); ++p) {
@@ -112,8 +111,8 @@ double LatticeModel::forces(const Rows& x, const Rows& v) {
     const double len = std::sqrt(dx * dx + dy * dy + dz * dz);
     const double inverse_len = 1.0 / len;
     const double stretch = len - rest[s];
-    const double c = (b[s] * (dx * dvx + dy * dvy + dz * dvz) * inverse_len + k[s] * stretch) *
-                     inverse_len;
+    const double c =
+        (b[s] * (dx * dvx + dy * dvy + dz * dvz) * inverse_len + k[s] * stretch) * inverse_len;
     energy += stiffness[s] * (stretch * stretch);
     const double fx = c * dx, fy = c * dy, fz = c * dz;
     f0[i] -= fx;
@@ -206,17 +205,23 @@ Corners LatticeModel::corners() const {
   return out;
 }
 
-Diagnostics LatticeModel::diagnostics() const {
-  Diagnostics d;
-  d.t = t_;
+Eigen::Vector3d LatticeModel::angular_momentum() const {
   const Eigen::Vector3d c = center_of_mass();
   Eigen::Vector3d v_mean = Eigen::Vector3d::Zero();
   for (int p = 0; p < v_.cols(); ++p) v_mean += mass_fraction_[p] * v_.col(p);
+  Eigen::Vector3d L = Eigen::Vector3d::Zero();
   for (int p = 0; p < x_.cols(); ++p) {
     const Eigen::Vector3d r = Eigen::Vector3d(x_.col(p)) - c;
     const Eigen::Vector3d u = Eigen::Vector3d(v_.col(p)) - v_mean;
-    d.L += lattice_.mass[p] * r.cross(u);
+    L += lattice_.mass[p] * r.cross(u);
   }
+  return L;
+}
+
+Diagnostics LatticeModel::diagnostics() const {
+  Diagnostics d;
+  d.t = t_;
+  d.L = angular_momentum();
   const Eigen::Matrix3d R = rotation();
   // docs/physics.md §13: the rest inertia of the lattice, not the strained one.
   d.omega_body = inertia_inverse_ * (R.transpose() * d.L);
@@ -240,8 +245,11 @@ Eigen::Vector3d LatticeModel::cos_principal_L() const {
   std::array<int, 3> order{0, 1, 2};
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return moments_[a] < moments_[b]; });
-  const Diagnostics d = diagnostics();
-  return {d.cos_axis_L[order[0]], d.cos_axis_L[order[1]], d.cos_axis_L[order[2]]};
+  const Eigen::Vector3d L = angular_momentum();
+  const Eigen::Matrix3d R = rotation();
+  Eigen::Vector3d out;
+  for (int i = 0; i < 3; ++i) out[i] = R.col(order[i]).dot(L) / L.norm();
+  return out;
 }
 
 Eigen::Matrix3Xd LatticeModel::deformed_surface() const {

@@ -61,6 +61,8 @@ class LatticeModel final : public Simulator {
   double kinetic_energy() const;
   void normalize(double spring_energy_at_start);
   Eigen::Vector3d center_of_mass() const;
+  /// Σ m (x − c) × (v − v̄), world.
+  Eigen::Vector3d angular_momentum() const;
   Eigen::Matrix3d rotation() const;
 
   Lattice lattice_;

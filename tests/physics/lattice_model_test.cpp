@@ -202,17 +202,32 @@ TEST(LatticeModel, TFlipsWithTheExactModel) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double error = flip / exact - 1.0;
-    std::printf("  n=%2d particles %5d springs %6d dt %.2e steps %6ld (%.2f us/step): first flip "
-                "%.4f, exact %.4f, rel %+.4f, lattice moments err %+.4f %+.4f %+.4f, strain %.1e\n",
-                n, lat.particles(), lat.spring_count(), dt, steps, 1e6 * seconds / steps, flip,
-                exact, error,
-                lat.principal_moments[0] / t.props.principal_moments[0] - 1.0,
-                lat.principal_moments[1] / t.props.principal_moments[1] - 1.0,
-                lat.principal_moments[2] / t.props.principal_moments[2] - 1.0, strain);
+    std::printf(
+        "  n=%2d particles %5d springs %6d dt %.2e steps %6ld (%.2f us/step): first flip "
+        "%.4f, exact %.4f, rel %+.4f, lattice moments err %+.4f %+.4f %+.4f, strain %.1e\n",
+        n, lat.particles(), lat.spring_count(), dt, steps, 1e6 * seconds / steps, flip, exact,
+        error, lat.principal_moments[0] / t.props.principal_moments[0] - 1.0,
+        lat.principal_moments[1] / t.props.principal_moments[1] - 1.0,
+        lat.principal_moments[2] / t.props.principal_moments[2] - 1.0, strain);
     EXPECT_GT(flip, 0.0) << "n = " << n;
     if (n == 24) error24 = std::abs(error);
   }
   EXPECT_LE(error24, 0.05);
+}
+
+// cos_principal_L() sorts the axes by moment: the book's smallest moment is about y, its
+// intermediate about x (docs/physics.md §1).
+TEST(LatticeModel, PrincipalCosinesAreSortedByMoment) {
+  const Book book = testing::original_book();
+  ModelConfig config = testing::config(ModelKind::particle, false, true);
+  LatticeModel model = book_lattice_model(book, config);
+  model.reset({Eigen::Vector3d(0.3, 0.1, 0.2), 0.0, 1});
+  for (int s = 0; s < 200; ++s) model.step(1.0 / 60.0);
+  const Eigen::Vector3d cos = model.cos_principal_L(), axis = model.diagnostics().cos_axis_L;
+  EXPECT_NEAR(cos[0], axis[1], 1e-15);
+  EXPECT_NEAR(cos[1], axis[0], 1e-15);
+  EXPECT_NEAR(cos[2], axis[2], 1e-15);
+  EXPECT_GT(std::abs(cos[0] - cos[1]), 1e-3);  // the order matters here
 }
 
 TEST(LatticeModel, RejectsWhatItCannotRun) {

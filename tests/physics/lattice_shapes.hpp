@@ -34,8 +34,7 @@ inline Surface join(const Surface& a, const Surface& b) {
   s.vertices.resize(3, a.vertices.cols() + b.vertices.cols());
   s.vertices << a.vertices, b.vertices;
   s.triangles.resize(3, a.triangles.cols() + b.triangles.cols());
-  s.triangles << a.triangles,
-      (b.triangles.array() + static_cast<int>(a.vertices.cols())).matrix();
+  s.triangles << a.triangles, (b.triangles.array() + static_cast<int>(a.vertices.cols())).matrix();
   return s;
 }
 

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
@@ -98,11 +97,12 @@ std::vector<Row> convergence(const char* name, const Surface& body, double mass,
     const Eigen::Vector3d rel =
         (lat.principal_moments - props.principal_moments).cwiseQuotient(props.principal_moments);
     const double error = rel.cwiseAbs().maxCoeff();
-    std::printf("  n=%2d cells %6d particles %6d springs %7d  moments %.6f %.6f %.6f  "
-                "rel err %+.4f %+.4f %+.4f  volume err %+.5f  com %.1e\n",
-                n, lat.cells_kept, lat.particles(), lat.spring_count(), lat.principal_moments[0],
-                lat.principal_moments[1], lat.principal_moments[2], rel[0], rel[1], rel[2],
-                lat.volume / props.volume - 1.0, lat.center_of_mass.norm());
+    std::printf(
+        "  n=%2d cells %6d particles %6d springs %7d  moments %.6f %.6f %.6f  "
+        "rel err %+.4f %+.4f %+.4f  volume err %+.5f  com %.1e\n",
+        n, lat.cells_kept, lat.particles(), lat.spring_count(), lat.principal_moments[0],
+        lat.principal_moments[1], lat.principal_moments[2], rel[0], rel[1], rel[2],
+        lat.volume / props.volume - 1.0, lat.center_of_mass.norm());
     EXPECT_NEAR(lat.total_mass, mass, 1e-12 * mass);
     rows.push_back({n, error});
   }
@@ -116,8 +116,8 @@ std::vector<Row> convergence(const char* name, const Surface& body, double mass,
 TEST(Lattice, BoxInertiaConverges) {
   const Eigen::Vector3d size(2.0, 1.0, 0.5);
   const double M = 3.0;
-  const auto rows = convergence("box 2 x 1 x 0.5", box_surface({0, 0, 0}, size), M,
-                                {2, 4, 8, 16, 24, 32});
+  const auto rows =
+      convergence("box 2 x 1 x 0.5", box_surface({0, 0, 0}, size), M, {2, 4, 8, 16, 24, 32});
   for (std::size_t r = 1; r < rows.size(); ++r) EXPECT_LT(rows[r].error, rows[r - 1].error);
   for (int n : {2, 8, 24}) {
     const Surface s = box_surface(-0.5 * size, 0.5 * size);
