@@ -23,11 +23,11 @@ using Eigen::Vector3i;
 /// Sign of the edge function of the directed edge (a, b) at the point p in the xy plane,
 /// never 0: the point is moved to p + (ε, ε²) for an infinitesimal ε (simulation of
 /// simplicity, Edelsbrunner & Mücke 1990), so a column through an edge or a vertex is
-/// counted in exactly one of the triangles around it. The edge is evaluated in the order of
-/// its vertex indices and the sign flipped for the other direction, so the two triangles
-/// sharing an edge see the same bits (docs/physics.md §13).
-int edge_sign(int ia, int ib, const Vector3d& a, const Vector3d& b, double px, double py) {
-  const bool flip = ia > ib;
+/// counted in exactly one of the triangles around it. The edge is evaluated from its
+/// lexicographically smaller end and the sign flipped for the other direction, so the two
+/// triangles sharing an edge see the same bits, welded or not (docs/physics.md §13).
+int edge_sign(const Vector3d& a, const Vector3d& b, double px, double py) {
+  const bool flip = std::lexicographical_compare(b.data(), b.data() + 3, a.data(), a.data() + 3);
   const Vector3d& p = flip ? b : a;
   const Vector3d& q = flip ? a : b;
   const double ex = q.x() - p.x(), ey = q.y() - p.y();
@@ -44,10 +44,20 @@ int find(std::vector<int>& parent, int v) {
 }
 
 /// +1 or −1 per triangle: the sign of its shell's signed volume (0 for a shell that
-/// encloses nothing), so every shell counts as wound outward.
+/// encloses nothing), so every shell counts as wound outward. Shells are connected through
+/// shared vertices, and vertices at the same position count as one (an unwelded mesh).
 std::vector<int> shell_signs(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triangles) {
   std::vector<int> parent(vertices.cols());
   std::iota(parent.begin(), parent.end(), 0);
+  std::vector<int> order(vertices.cols());
+  std::iota(order.begin(), order.end(), 0);
+  auto less = [&](int a, int b) {
+    return std::lexicographical_compare(vertices.col(a).data(), vertices.col(a).data() + 3,
+                                        vertices.col(b).data(), vertices.col(b).data() + 3);
+  };
+  std::sort(order.begin(), order.end(), less);
+  for (std::size_t v = 1; v < order.size(); ++v)
+    if (!less(order[v - 1], order[v])) parent[find(parent, order[v])] = find(parent, order[v - 1]);
   for (Eigen::Index t = 0; t < triangles.cols(); ++t)
     for (int e = 1; e < 3; ++e)
       parent[find(parent, triangles(e, t))] = find(parent, triangles(0, t));
@@ -125,9 +135,9 @@ Fill fill_cells(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triang
                                       vertices.col(id[2])};
       for (int i = column_range[t][0]; i <= column_range[t][1]; ++i) {
         const double px = origin.x() + step_x * (i + 0.5);
-        const int s0 = edge_sign(id[0], id[1], v[0], v[1], px, py);
-        const int s1 = edge_sign(id[1], id[2], v[1], v[2], px, py);
-        const int s2 = edge_sign(id[2], id[0], v[2], v[0], px, py);
+        const int s0 = edge_sign(v[0], v[1], px, py);
+        const int s1 = edge_sign(v[1], v[2], px, py);
+        const int s2 = edge_sign(v[2], v[0], px, py);
         if (s0 == 0 || s0 != s1 || s1 != s2) continue;
         // Height of the triangle's plane over the column (barycentric weights in xy).
         const double d = (v[1].x() - v[0].x()) * (v[2].y() - v[0].y()) -
@@ -245,7 +255,13 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
   int s = 2;
   while (s * n < 1024) s *= 2;
   const Fill fill = fill_cells(vertices, triangles, lo, lat.cell_size, cells, z_nodes, s);
-  const std::vector<double>& filled = fill.volume;
+  // A cell is kept when it is filled at all; less than kMinFill of a cell is round-off of a
+  // face lying on a cell boundary (docs/physics.md §13). kept() is its fraction, or 0.
+  constexpr double kMinFill = 1e-9;
+  auto kept = [&](std::int64_t cell) {
+    const double f = fill.volume[cell];
+    return f > kMinFill ? f : 0.0;
+  };
 
   // Particles: the grid nodes at a corner of a kept cell, numbered in grid order (x fastest).
   const Vector3i nodes = cells + Vector3i::Ones();
@@ -267,8 +283,8 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
   for (int k = 0; k < cells.z(); ++k)
     for (int j = 0; j < cells.y(); ++j)
       for (int i = 0; i < cells.x(); ++i) {
-        const double c = filled[cell_index(i, j, k)];
-        if (!(c > 0.0)) continue;
+        const double c = kept(cell_index(i, j, k));
+        if (c == 0.0) continue;
         ++lat.cells_kept;
         filled_cells += c;
         const std::int64_t cell = cell_index(i, j, k);
@@ -346,7 +362,7 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
           for (int oz = 0; oz < options[2]; ++oz)
             for (int oy = 0; oy < options[1]; ++oy)
               for (int ox = 0; ox < options[0]; ++ox)
-                f += filled[cell_index(range[0][ox], range[1][oy], range[2][oz])];
+                f += kept(cell_index(range[0][ox], range[1][oy], range[2][oz]));
           if (f == 0.0) continue;
           first.push_back(a);
           second.push_back(b);
@@ -382,8 +398,8 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
       for (int k = a.z(); k <= b.z(); ++k)
         for (int j = a.y(); j <= b.y(); ++j)
           for (int i = a.x(); i <= b.x(); ++i) {
-            const double c = filled[cell_index(i, j, k)];
-            if (!(c > 0.0)) continue;
+            const double c = kept(cell_index(i, j, k));
+            if (c == 0.0) continue;
             const Vector3d gap =
                 (Vector3d(i, j, k) - u).cwiseMax(u - Vector3d(i + 1, j + 1, k + 1)).cwiseMax(0.0);
             const double distance = gap.squaredNorm();

@@ -157,6 +157,24 @@ TEST(Lattice, ShellsAndWindingDoNotChangeTheFill) {
   EXPECT_EQ(a.particles(), b.particles());
   EXPECT_EQ(a.spring_count(), b.spring_count());
   EXPECT_EQ((a.mass - b.mass).cwiseAbs().maxCoeff(), 0.0);
+  // Unwelded (every triangle with its own three vertices, as a mesh with per-face normals
+  // comes): the same fill.
+  // Moved off the origin, so that some faces' cones from the origin have negative volume.
+  MassProperties props;
+  Surface centred = testing::principal(t, 1.0, props);
+  centred.vertices.colwise() += Eigen::Vector3d(0.3, -0.2, 5.0);
+  Surface loose;
+  loose.vertices.resize(3, 3 * centred.triangles.cols());
+  loose.triangles.resize(3, centred.triangles.cols());
+  for (Eigen::Index tri = 0; tri < centred.triangles.cols(); ++tri)
+    for (int e = 0; e < 3; ++e) {
+      loose.vertices.col(3 * tri + e) = centred.vertices.col(centred.triangles(e, tri));
+      loose.triangles(e, tri) = static_cast<int>(3 * tri + e);
+    }
+  const Lattice c = build_lattice(centred.vertices, centred.triangles, 1.0, 12);
+  const Lattice d = build_lattice(loose.vertices, loose.triangles, 1.0, 12);
+  EXPECT_EQ(c.particles(), d.particles());
+  EXPECT_LE((c.mass - d.mass).cwiseAbs().maxCoeff(), 1e-15);
 }
 
 // Overlapping shells add up (as in mass_properties): a box given twice weighs the same per
