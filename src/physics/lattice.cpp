@@ -441,6 +441,18 @@ double max_angular_frequency(const Lattice& lattice, double k) {
   return std::sqrt(2.0 * sum.cwiseQuotient(lattice.mass).maxCoeff());
 }
 
+double max_damping_rate(const Lattice& lattice, double k) {
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(lattice.particles());
+  for (int s = 0; s < lattice.spring_count(); ++s) {
+    const int i = lattice.springs(0, s), j = lattice.springs(1, s);
+    const double b =
+        2.0 * std::sqrt(k * lattice.stiffness[s] * spring_mass(lattice.mass[i], lattice.mass[j]));
+    sum[i] += b;
+    sum[j] += b;
+  }
+  return 2.0 * sum.cwiseQuotient(lattice.mass).maxCoeff();
+}
+
 Eigen::Matrix3Xd Lattice::embed_surface(const Eigen::Matrix3Xd& x) const {
   if (x.cols() != rest.cols())
     throw std::invalid_argument("embed_surface: expected " + std::to_string(rest.cols()) +

@@ -82,6 +82,20 @@ Lattice build_lattice(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& 
 /// integrators are stable for ω_max·dt < 2 (docs/physics.md §10, §13).
 double max_angular_frequency(const Lattice& lattice, double k);
 
+/// The mass in a spring's critical damping b_s = 2√(k_s m_s) (docs/physics.md §13):
+/// m_s = 2 m_i m_j / (m_i + m_j), twice the pair's reduced mass, exactly m_i when m_i = m_j
+/// (the paper's 2√(km), paper §3.3).
+inline double spring_mass(double m_i, double m_j) {
+  return m_i == m_j ? m_i : 2.0 * m_i * m_j / (m_i + m_j);
+}
+
+/// An upper bound on the damping rate of the lattice's fastest mode with critical damping at
+/// spring constant k (1 per time unit): γ_max ≤ max_p 2 Σ_{springs at p} b_s / m_p
+/// (Gershgorin's bound on M⁻¹B). With damping the explicit integrators are stable for
+/// γ_max·dt < 2 as well (tested; the bound is 2–3 times conservative). Per-spring critical
+/// damping makes γ_max ≈ 10 ω_max for a lattice (docs/physics.md §13).
+double max_damping_rate(const Lattice& lattice, double k);
+
 /// The rotation R (3×3, det +1) minimising Σ w_p |R (rest_p − c0) − (current_p − c)|² with
 /// c, c0 the w-weighted centroids (Kabsch 1976 via the SVD of the weighted covariance).
 /// `current` and `rest` are 3×N, `weights` N (≥ 0, not all 0).

@@ -37,9 +37,7 @@ LatticeModel::LatticeModel(Lattice lattice, const Eigen::Vector3d& moments,
     rest_length_[s] = lattice_.rest_length[s];
     stiffness_[s] = lattice_.stiffness[s];
     k_[s] = k * stiffness_[s];
-    // docs/physics.md §13: m_s = 2 m_i m_j / (m_i + m_j), exactly m when the ends are equal.
-    const double mi = lattice_.mass[i], mj = lattice_.mass[j];
-    const double m = mi == mj ? mi : 2.0 * mi * mj / (mi + mj);
+    const double m = spring_mass(lattice_.mass[i], lattice_.mass[j]);  // docs/physics.md §13
     damping_[s] = config.damping ? 2.0 * std::sqrt(k_[s] * m) : 0.0;
   }
   inverse_mass_.resize(P);

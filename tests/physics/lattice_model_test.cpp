@@ -122,6 +122,31 @@ TEST(LatticeModel, UndampedTConservesMomentumAndEnergy) {
   }
 }
 
+// Damping forces act along the springs too: with damping the spin's angular momentum stays
+// to round-off while the springs' vibration dies out (docs/physics.md §2, §13).
+TEST(LatticeModel, DampedTKeepsItsAngularMomentum) {
+  const TBody t = t_body();
+  const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, 12);
+  ModelConfig config = testing::config(ModelKind::particle, false, true, 2000.0);
+  config.integrator = Integrator::symplectic_euler;
+  LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+  model.reset({Eigen::Vector3d(0.05, 1.0, 0.05), 1e-3, 3});
+  const Diagnostics d0 = model.diagnostics();
+  // Damping bounds the step more than the springs do: γ_max·dt = 1.
+  const double gamma = max_damping_rate(lat, config.spring_constant);
+  EXPECT_GT(gamma, 5.0 * max_angular_frequency(lat, config.spring_constant));
+  const double dt = 1.0 / gamma;
+  for (int step = 1; step <= 20000; ++step) {
+    model.step(dt);
+    if (step % 100 != 0) continue;
+    const Diagnostics d = model.diagnostics();
+    ASSERT_LE((d.L - d0.L).norm(), 1e-12 * d0.L.norm()) << step;
+  }
+  // The springs stretched under the spin and the damping took the vibration's energy.
+  EXPECT_LT(model.diagnostics().energy_total, d0.energy_total * (1.0 - 1e-5));
+  EXPECT_TRUE(model.finite());
+}
+
 // The rigid cage and the deformed surface follow a spin: after a quarter turn about z at
 // rest shape, corners and surface are the rest ones turned by 90° about the centre of mass.
 TEST(LatticeModel, CageAndSurfaceFollowTheLattice) {

@@ -220,6 +220,9 @@ TEST(Lattice, BadInputIsRejected) {
   EXPECT_THROW(build_lattice(nan, s.triangles, 1.0, 4), std::invalid_argument);
   const Lattice lat = build_lattice(s.vertices, s.triangles, 1.0, 2);
   EXPECT_THROW(lat.embed_surface(Eigen::Matrix3Xd(3, 5)), std::invalid_argument);
+  // The finest lattice allowed is built: 64³ cells, 65³ particles.
+  EXPECT_EQ(build_lattice(s.vertices, s.triangles, 1.0, kMaxLatticeCells).particles(),
+            (kMaxLatticeCells + 1) * (kMaxLatticeCells + 1) * (kMaxLatticeCells + 1));
 }
 
 }  // namespace
