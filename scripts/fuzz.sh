@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
-# Builds the scene-parser fuzzer with clang and runs it: first every saved regression input,
-# then RUNS fresh executions (default 1,000,000) from a seed corpus of scenes/ and
-# tests/bad_scenes/. A crash leaves its input in build-fuzz/crash-*; copy it into
-# tests/fuzz/regressions/ so that every later run replays it.
+# Builds the two fuzzers with clang and runs them. The scene parser: first every saved
+# regression input, then RUNS fresh executions (default 1,000,000) from a seed corpus of
+# scenes/ and tests/bad_scenes/. The mesh validation layer (mesh stage + body_from_mesh):
+# MESH_RUNS executions (default 50,000; each writes a file for assimp) from tests/fuzz/mesh_seeds
+# and the bad meshes, with a fixed seed so that a run here repeats in CI. A crash leaves its
+# input in build-fuzz/crash-*; copy it into tests/fuzz/regressions/ (scene) or
+# tests/fuzz/mesh_seeds/ (mesh) so that every later run replays it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${RUNS:-1000000}
+mesh_runs=${MESH_RUNS:-50000}
 cmake -S . -B build-fuzz -DBOOKSPIN_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build-fuzz --target scene_fuzzer -j "$(nproc)"
+cmake --build build-fuzz --target scene_fuzzer mesh_fuzzer -j "$(nproc)"
 corpus=build-fuzz/corpus
 rm -rf "$corpus" && mkdir -p "$corpus"
 cp scenes/*.toml "$corpus"/
@@ -19,4 +23,16 @@ if [ -n "$regressions" ]; then
   build-fuzz/tests/fuzz/scene_fuzzer $regressions
 fi
 echo "fuzz: $runs executions"
-cd build-fuzz && ./tests/fuzz/scene_fuzzer -runs="$runs" -max_len=4096 -print_final_stats=1 corpus 2>&1 | tail -15
+(cd build-fuzz && ./tests/fuzz/scene_fuzzer -runs="$runs" -max_len=4096 -print_final_stats=1 corpus 2>&1 | tail -15)
+
+# Mesh inputs: a format byte (even: OBJ, odd: STL) before the file's bytes.
+mesh_corpus=build-fuzz/mesh-corpus
+rm -rf "$mesh_corpus" && mkdir -p "$mesh_corpus"
+cp tests/fuzz/mesh_seeds/* "$mesh_corpus"/
+for f in tests/bad_meshes/*.obj tests/bad_meshes/*.stl; do
+  [ -f "$f" ] || continue
+  case "$f" in *.obj) byte='\x00' ;; *) byte='\x01' ;; esac
+  { printf "$byte"; head -c 4096 "$f"; } > "$mesh_corpus/$(basename "$f")"
+done
+echo "fuzz: $mesh_runs mesh executions"
+(cd build-fuzz && ./tests/fuzz/mesh_fuzzer -runs="$mesh_runs" -seed=1 -max_len=4096 -print_final_stats=1 mesh-corpus 2>&1 | tail -15)

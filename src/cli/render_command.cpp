@@ -4,6 +4,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "pipeline/clip.hpp"
+#include "pipeline/lattice_note.hpp"
 
 namespace bookspin::cli {
 
@@ -48,6 +49,8 @@ int render_command(const RenderArgs& args) {
   scene::Scene scene = scene::parse_scene(args.scene_path, args.overrides);
   for (const std::string& warning : scene.warnings)
     std::cerr << "bookspin: warning: " << warning << '\n';
+  if (const std::string note = pipeline::lattice_note(scene); !note.empty())
+    std::cerr << "bookspin: " << note << '\n';
   if (args.frames > 0) scene.frames = args.frames;
   Progress progress(scene.name, scene.frames);
   const pipeline::ClipRequest request = clip_request(args, std::move(scene), progress);

@@ -3,6 +3,7 @@
 
 #include "cli/commands.hpp"
 #include "output/atomic_output.hpp"
+#include "pipeline/lattice_note.hpp"
 #include "pipeline/simulation.hpp"
 
 namespace bookspin::cli {
@@ -22,6 +23,8 @@ int simulate_command(const SimulateOptions& options) {
   const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
   for (const std::string& warning : scene.warnings)
     std::cerr << "bookspin: warning: " << warning << '\n';
+  if (const std::string note = pipeline::lattice_note(scene); !note.empty())
+    std::cerr << "bookspin: " << note << '\n';
   if (!scene.compare.empty()) {
     // Several runs do not fit one CSV; `render` writes one per panel.
     throw InputError(options.scene_path +

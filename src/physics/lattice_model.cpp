@@ -228,6 +228,7 @@ Diagnostics LatticeModel::diagnostics() const {
   d.energy_total = d.energy_kinetic + d.energy_potential;
   const double L_norm = d.L.norm();
   for (int axis = 0; axis < 3; ++axis) d.cos_axis_L[axis] = R.col(axis).dot(d.L) / L_norm;
+  d.cos_principal_L = cos_principal_L();
   double worst = 0.0;
   for (std::size_t s = 0; s < first_.size(); ++s) {
     const double len = (x_.col(first_[s]) - x_.col(second_[s])).norm();
@@ -240,9 +241,7 @@ Diagnostics LatticeModel::diagnostics() const {
 }
 
 Eigen::Vector3d LatticeModel::cos_principal_L() const {
-  std::array<int, 3> order{0, 1, 2};
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return moments_[a] < moments_[b]; });
+  const std::array<int, 3> order = principal_order(moments_);
   const Eigen::Vector3d L = angular_momentum();
   const Eigen::Matrix3d R = rotation();
   Eigen::Vector3d out;
@@ -255,5 +254,12 @@ Eigen::Matrix3Xd LatticeModel::deformed_surface() const {
 }
 
 bool LatticeModel::finite() const { return is_sane(x_) && is_sane(v_); }
+
+std::unique_ptr<Simulator> make_body_lattice_model(const Body& body, const ModelConfig& config) {
+  const int cells = config.lattice_cells > 0 ? config.lattice_cells : kDefaultLatticeCells;
+  return std::make_unique<LatticeModel>(
+      build_lattice(body.vertices, body.triangles, body.cage.mass, cells), body.moments,
+      body.cage.body_corners(), config);
+}
 
 }  // namespace bookspin::physics

@@ -1,8 +1,10 @@
 #pragma once
 // The particle model of any body: the mass-spring lattice of lattice.hpp moved with the
 // particle model's integrators (paper §3, docs/physics.md §2 and §13).
+#include <memory>
 #include <vector>
 
+#include "physics/body.hpp"
 #include "physics/lattice.hpp"
 #include "physics/simulator.hpp"
 
@@ -46,7 +48,7 @@ class LatticeModel final : public Simulator {
   /// `moments` (ties in the order x, y, z), each axis moved by the best-fit rotation R.
   Eigen::Vector3d cos_principal_L() const;
   /// The body's surface (3×V, world) carried by the particles (Lattice::embed_surface).
-  Eigen::Matrix3Xd deformed_surface() const;
+  Eigen::Matrix3Xd deformed_surface() const override;
 
   const Lattice& lattice() const { return lattice_; }
   Eigen::Matrix3Xd positions() const { return x_; }   ///< 3×P, world
@@ -79,5 +81,11 @@ class LatticeModel final : public Simulator {
   double energy0_ = 0.0;
   double t_ = 0.0;
 };
+
+/// The particle model of a non-book `body` (docs/physics.md §13): its surface filled by
+/// build_lattice() with config.lattice_cells cells along the longest side (0: the default,
+/// kDefaultLatticeCells) at the body's mass (body.cage.mass), moving the body's cage. Throws
+/// std::invalid_argument as build_lattice() and LatticeModel do.
+std::unique_ptr<Simulator> make_body_lattice_model(const Body& body, const ModelConfig& config);
 
 }  // namespace bookspin::physics

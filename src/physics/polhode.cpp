@@ -39,13 +39,6 @@ std::vector<Eigen::Vector3d> sample_closed(const std::function<Eigen::Vector3d(d
 
 }  // namespace
 
-std::array<int, 3> sorted_axes(const Eigen::Vector3d& moments) {
-  std::array<int, 3> order{0, 1, 2};
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int a, int b) { return moments[a] < moments[b]; });
-  return order;
-}
-
 double energy_ratio(const Eigen::Vector3d& moments, const Eigen::Vector3d& u) {
   return u.cwiseAbs2().cwiseQuotient(moments).sum();
 }
@@ -55,7 +48,7 @@ std::vector<Polhode> polhode_family(const Eigen::Vector3d& moments, int levels, 
     throw std::invalid_argument("polhode_family: principal moments must be finite and > 0");
   if (levels < 1 || !(max_step > 0))
     throw std::invalid_argument("polhode_family: levels ≥ 1 and max_step > 0 required");
-  const auto [lo, mid, hi] = sorted_axes(moments);
+  const auto [lo, mid, hi] = principal_order(moments);
   const Eigen::Vector3d inv = moments.cwiseInverse();
   std::vector<Polhode> curves;
 

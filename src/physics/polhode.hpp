@@ -8,6 +8,7 @@
 #include <array>
 #include <vector>
 
+#include "physics/body.hpp"  // principal_order
 #include "physics/simulator.hpp"
 
 namespace bookspin::physics {
@@ -21,10 +22,6 @@ struct Polhode {
   bool separatrix = false;  ///< one of the two great circles through the intermediate axis
   int pole_axis = -1;       ///< body axis (0, 1, 2) the curve circles; -1 for a separatrix
 };
-
-/// Indices of the principal moments sorted ascending: {smallest, intermediate, largest}
-/// (ties keep axis order).
-std::array<int, 3> sorted_axes(const Eigen::Vector3d& moments);
 
 /// Σ u_i²/I_i for a direction u (body frame, need not be unit) and principal moments I
 /// (mass·length², all > 0): 2E/|L|² when u = L_body/|L|.

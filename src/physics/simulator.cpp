@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "physics/exact_model.hpp"
+#include "physics/lattice_model.hpp"
 #include "physics/particle_model.hpp"
 #include "physics/rigid_matrix_model.hpp"
 #include "physics/rigid_quaternion_model.hpp"
@@ -103,9 +104,8 @@ std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& c
   }
   switch (config.kind) {
     case ModelKind::particle:
-      if (body.shape != BodyShape::book)
-        throw std::invalid_argument("the particle model of a non-book body needs the lattice");
-      return std::make_unique<ParticleModel>(body.cage, config);
+      if (body.shape == BodyShape::book) return std::make_unique<ParticleModel>(body.cage, config);
+      return make_body_lattice_model(body, config);
     case ModelKind::rigid_matrix:
       return std::make_unique<RigidMatrixModel>(body, config);
     case ModelKind::rigid_quaternion:

@@ -95,7 +95,8 @@ void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& 
   if (plots) {
     std::vector<PanelRun> runs;
     for (const auto& p : panels)
-      runs.push_back({p->scene.title, p->scene.model.kind, &p->frame.history});
+      runs.push_back({p->scene.title, p->scene.model.kind, &p->frame.history,
+                      physics::principal_order(p->scene.body.moments)[1]});
     draw_panel(frame, *plots, panel_plots(runs, clip_end_time(scene), t));
   }
   {
@@ -123,8 +124,8 @@ RgbaImage compose(const scene::Scene& scene, const CompareLayout& layout,
   RgbaImage frame = blank_frame(scene.render.width, scene.render.height);
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const PixelRect& tile = layout.tiles[i];
-    blit(frame, renderer.render(panels[i]->drawing.input_for(panels[i]->frame.pose)), static_cast<int>(tile.x),
-         static_cast<int>(tile.y));
+    blit(frame, renderer.render(panels[i]->drawing.input_for(panels[i]->frame.pose)),
+         static_cast<int>(tile.x), static_cast<int>(tile.y));
   }
   decorate(frame, scene, layout, panels);
   return frame;

@@ -29,6 +29,9 @@ struct PanelRun {
   std::string label;  ///< legend text in comparison plots; empty for a single run
   physics::ModelKind kind = physics::ModelKind::particle;  ///< picks the shape measures
   const DiagnosticsHistory* history = nullptr;
+  /// Body axis (0 = x, 1 = y, 2 = z) of the intermediate principal moment, whose ω a
+  /// comparison plots: it changes sign at every flip (x for the book; docs/physics.md §12).
+  int flip_axis = 0;
 };
 
 }  // namespace bookspin::pipeline

@@ -66,8 +66,11 @@ std::vector<overlay::PlotSpec> single_plots(const PanelRun& run, double t_end,
 /// show both colours.
 std::vector<overlay::PlotSpec> comparison_plots(const std::vector<PanelRun>& runs, double t_end,
                                                 std::optional<double> cursor) {
-  auto omega =
-      axes("ω_x, body frame (the flips)", "ω_x (rad / time unit)", kOmegaSpan, t_end, cursor);
+  static const char* const kAxis[3] = {"x", "y", "z"};
+  const int axis = runs.front().flip_axis;
+  const std::string name = std::string("ω_") + kAxis[axis];
+  auto omega = axes(name + ", body frame (the flips)", name + " (rad / time unit)", kOmegaSpan,
+                    t_end, cursor);
   auto drift = axes("relative energy drift", "E/E₀ − 1", kDriftSpan, t_end, cursor);
   auto shape =
       axes("shape error: max strain |ℓ/ℓ₀ − 1|", "dimensionless", kShapeSpan, t_end, cursor);
@@ -76,7 +79,8 @@ std::vector<overlay::PlotSpec> comparison_plots(const std::vector<PanelRun>& run
     const DiagnosticsHistory& h = *runs[i].history;
     const Rgb c = palette_colour(i);  // runs of a comparison
     const bool dashed = i % 2 == 1;
-    omega.series.push_back(series(runs[i].label, h.t, h.omega_x, c, dashed));
+    const std::vector<double>& w = axis == 0 ? h.omega_x : axis == 1 ? h.omega_y : h.omega_z;
+    omega.series.push_back(series(runs[i].label, h.t, w, c, dashed));
     drift.series.push_back(series(runs[i].label, h.t, h.energy_drift, c, dashed));
     shape.series.push_back(series(runs[i].label, h.t, h.strain_max, c, dashed));
   }

@@ -37,8 +37,8 @@ class BodyDrawing {
   render::FrameInput input_for(const physics::BookPose& pose) const;
 
  private:
-  physics::Corners rest_corners_;  ///< 3×8, body frame: the cage at rest
-  Eigen::Matrix3Xd rest_vertices_;  ///< 3×V, body frame
+  physics::Corners rest_corners_;                            ///< 3×8, body frame: the cage at rest
+  Eigen::Matrix3Xd rest_vertices_;                           ///< 3×V, body frame
   std::shared_ptr<const render::SurfaceTopology> topology_;  ///< null for the book
 };
 

@@ -23,7 +23,7 @@ overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments,
                                 const std::vector<SphereRun>& runs) {
   overlay::SphereSpec spec;
   spec.title = "L/|L| in the body frame";
-  const auto order = physics::sorted_axes(moments);
+  const auto order = physics::principal_order(moments);
   static const char* const kRank[3] = {"smallest I", "intermediate I", "largest I"};
   static const char* const kName[3] = {"x", "y", "z"};
   for (int rank = 0; rank < 3; ++rank) {

@@ -159,5 +159,54 @@ TEST(SimulateErrors, TheTableParsesIntoEveryCase) {
 INSTANTIATE_TEST_SUITE_P(BadSetValues, SimulateErrors, ::testing::ValuesIn(bad_inputs()),
                          [](const auto& info) { return info.param.label; });
 
+/// The values of one column of a CSV with a header.
+std::vector<double> column(const std::string& csv, const std::string& name) {
+  const auto lines = lines_of(csv);
+  std::vector<double> values;
+  if (lines.empty()) return values;
+  int index = -1, at = 0;
+  std::istringstream header(lines[0]);
+  for (std::string field; std::getline(header, field, ','); ++at)
+    if (field == name) index = at;
+  for (std::size_t row = 1; row < lines.size() && index >= 0; ++row) {
+    std::istringstream in(lines[row]);
+    std::string field;
+    for (int k = 0; k <= index; ++k) std::getline(in, field, ',');
+    values.push_back(std::stod(field));
+  }
+  return values;
+}
+
+TEST(SimulateCommand, TheTHandleFlipsAgainAndAgain) {
+  // Spun about its intermediate axis, the T-handle turns over every half period: the
+  // intermediate axis reverses against L (docs/physics.md §12) at least four times in its scene.
+  const auto dir = fresh_dir("simulate_t_handle");
+  const CliResult r = run_bookspin("simulate " + scene_path("t-handle-dzhanibekov") + " --csv " +
+                                   (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const auto c = column(read_file(dir / "t.csv"), "cos_intermediate_L");
+  ASSERT_GT(c.size(), 100u);
+  int changes = 0;
+  for (std::size_t i = 1; i < c.size(); ++i) changes += (c[i] > 0) != (c[i - 1] > 0);
+  EXPECT_GE(changes, 4);
+}
+
+TEST(SimulateCommand, ALatticeRunPrintsItsInertiaNextToTheBodys) {
+  const auto dir = fresh_dir("simulate_lattice_note");
+  const CliResult r = run_bookspin(
+      "simulate " + scene_path("t-handle-dzhanibekov") +
+      " --set model.kind='\"particle\"' --set model.lattice_cells=6 --set time.frames=2 --csv " +
+      (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("lattice: 6 cells along the longest side, "), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find(" against the body's 0.209"), std::string::npos) << r.output;
+  // The book is one cell: no lattice line.
+  const CliResult book = run_bookspin("simulate " + scene_path("fig05-particle-unstable-x") +
+                                      " --set time.frames=2 --csv " + (dir / "b.csv").string());
+  ASSERT_EQ(book.status, 0) << book.output;
+  EXPECT_EQ(book.output.find("lattice:"), std::string::npos) << book.output;
+}
+
 }  // namespace
 }  // namespace bookspin::cli

@@ -16,7 +16,7 @@ namespace {
 const Eigen::Vector3d kBookMoments = Book{}.principal_moments();  // I_y < I_x < I_z
 
 TEST(Polhode, SortedAxesOfTheBook) {
-  const auto order = sorted_axes(kBookMoments);
+  const auto order = principal_order(kBookMoments);
   EXPECT_EQ(order[0], 1);  // y: smallest
   EXPECT_EQ(order[1], 0);  // x: intermediate
   EXPECT_EQ(order[2], 2);  // z: largest

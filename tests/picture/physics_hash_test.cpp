@@ -59,10 +59,10 @@ std::string hex(std::uint64_t value) {
 }
 
 /// Standard output of `bookspin simulate scenes/<name>.toml` for the first frames.
-std::string simulate_csv(const std::string& name) {
+std::string simulate_csv(const std::string& name, const std::string& extra = "") {
   const std::string command =
       std::string(BOOKSPIN_EXE) + " simulate " + BOOKSPIN_SOURCE_DIR + "/scenes/" + name +
-      ".toml --set time.frames=" + std::to_string(kHashedFrames) + " --csv - 2>/dev/null";
+      ".toml --set time.frames=" + std::to_string(kHashedFrames) + extra + " --csv - 2>/dev/null";
   std::string csv;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return csv;
@@ -123,6 +123,21 @@ TEST(PhysicsHash, FirstHundredFramesOfEveryFigureAreUnchanged) {
     const std::string csv = simulate_csv(scene);
     ASSERT_GT(csv.size(), 1000u) << scene << ": `bookspin simulate` wrote no CSV";
     actual[scene] = hex(fnv1a64(hashed_columns(csv)));
+  }
+  // The other bodies (docs/physics.md §12, §13), every column: the presets' rigid and exact
+  // runs, and the T-handle's lattice (8 cells, to keep the test short).
+  const std::string lattice =
+      " --set model.kind='\"particle\"' --set model.integrator='\"velocity-verlet\"'"
+      " --set model.damping=false --set model.spring_constant=10000.0 --set model.lattice_cells=8"
+      " --set time.dt=0.00025 --set time.steps_per_frame=40";
+  const std::pair<std::string, std::string> bodies[] = {{"t-handle-dzhanibekov", ""},
+                                                        {"tennis-racket", ""},
+                                                        {"phone-flip", ""},
+                                                        {"t-handle-dzhanibekov", lattice}};
+  for (const auto& [scene, extra] : bodies) {
+    const std::string csv = simulate_csv(scene, extra);
+    ASSERT_GT(csv.size(), 1000u) << scene << ": `bookspin simulate` wrote no CSV";
+    actual[extra.empty() ? scene : "t-handle-lattice"] = hex(fnv1a64(csv));
   }
   if (update_mode()) {
     for (const auto& [scene, hash] : actual)

@@ -36,7 +36,7 @@ double max_polhode_departure(const Eigen::Vector3d& moments, const DiagnosticsHi
 
 /// Whether the trail crosses a separatrix: c − 1/I_mid changes sign.
 bool crosses_separatrix(const Eigen::Vector3d& moments, const DiagnosticsHistory& h) {
-  const double c_sep = 1 / moments[physics::sorted_axes(moments)[1]];
+  const double c_sep = 1 / moments[physics::principal_order(moments)[1]];
   int signs = 0;
   for (const auto& u : h.momentum_direction) {
     if (!u.allFinite() || u.squaredNorm() == 0) continue;

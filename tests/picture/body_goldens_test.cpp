@@ -1,0 +1,53 @@
+// The bodies other than the book (docs/physics.md §12, §13) are pictures too: each body scene's
+// first, middle and last frames are pinned at 512×288 with its panel and momentum sphere, and
+// the lattice comparison at its first flip. Their physics is pinned by hashes of the first
+// frames' diagnostics, as the figures' are.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "golden_store.hpp"
+#include "output/png_writer.hpp"
+#include "picture_scenes.hpp"
+#include "pipeline/frame.hpp"
+
+namespace bookspin::picture {
+namespace {
+
+const std::vector<std::string> kBodySize{"render.width=512", "render.height=288",
+                                         "render.sphere=true"};
+
+class BodyGoldens : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BodyGoldens, FirstMiddleAndLastFramesMatch) {
+  const scene::Scene scene = figure_scene(GetParam(), kBodySize);
+  ASSERT_NE(scene.body.shape, physics::BodyShape::book);
+  render::Renderer& renderer = renderer_for(scene);
+  for (const int index : pinned_frames(scene.frames)) {
+    const std::string name = golden_name(scene.name, index);
+    EXPECT_TRUE(matches_golden(name, pipeline::render_still(scene, renderer, index))) << name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BodyGoldens,
+                         ::testing::Values("t-handle-dzhanibekov", "tennis-racket", "phone-flip"),
+                         [](const auto& info) { return test_name(info.param); });
+
+// The lattice, the rigid body and the exact motion side by side, through `bookspin render`
+// (one simulator per tile), at frame 45 (t = 4.5): just after the first flip, with the three
+// T-handles turned over together.
+TEST(BodyGoldens, LatticeComparisonFlipsWithTheRigidBodyAndTheExactMotion) {
+  const auto dir = fresh_output_dir("body-compare");
+  const std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR +
+                              "/scenes/compare-t-handle-models.toml -o " + dir.string() +
+                              " --frames 46 --set render.width=512 --set render.height=288" +
+                              " --set render.preset='\"ultrafast\"' > /dev/null 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  const RgbaImage frame =
+      output::read_png(dir / "compare-t-handle-models" / "frames" / "frame_00045.png");
+  EXPECT_TRUE(matches_golden("compare-t-handle-models-f0045", frame));
+  if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace bookspin::picture
