@@ -1,9 +1,7 @@
 // `bookspin plot` and `bookspin gallery`.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cctype>
-#include <cstdio>
 
 #include "cli/gallery_page.hpp"
 #include "output/png_writer.hpp"
@@ -114,39 +112,7 @@ TEST(Gallery, ListsAnUnrenderedSceneWithoutBrokenLinks) {
   EXPECT_TRUE(linked_files(html).empty()) << html;
 }
 
-/// Output of a shell command (stdout and stderr), or "" if it could not run.
-std::string shell_output(const std::string& command) {
-  std::string output;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return output;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  pclose(pipe);
-  return output;
-}
-
-// Optional: runs only where a chromium is installed (apt-get install chromium); CI does not
-// need one, the file checks above cover broken links.
-TEST(Gallery, OpensInHeadlessChromiumWithoutConsoleErrors) {
-  if (shell_output("command -v chromium").empty()) GTEST_SKIP() << "chromium is not installed";
-  const fs::path out = fresh_dir("gallery_chromium");
-  ASSERT_EQ(
-      run_bookspin("render " + scene_path("fig09-matrix-unstable-x") +
-                   " --set render.width=64 --set render.height=64 --frames 3 -o " + out.string())
-          .status,
-      0);
-  ASSERT_EQ(
-      run_bookspin("gallery " + out.string() + " " + scene_path("fig09-matrix-unstable-x")).status,
-      0);
-  const std::string log = shell_output(
-      "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
-      "--disable-component-update --disable-sync --no-first-run --user-data-dir=" +
-      (out / "profile").string() +
-      " --enable-logging=stderr --v=0 --window-size=1280,1000 --screenshot=" +
-      (out / "shot.png").string() + " file://" + (out / "index.html").string());
-  EXPECT_TRUE(fs::is_regular_file(out / "shot.png")) << log;
-  EXPECT_EQ(log.find(":CONSOLE"), std::string::npos) << log;
-}
+// The page in a real browser (headless Chromium): tests/browser/gallery_test.py.
 
 }  // namespace
 }  // namespace bookspin::cli
