@@ -44,7 +44,7 @@ TEST(GalleryPage, EscapesTitlesAndAttributes) {
   cli::GalleryEntry e;
   e.name = "x";
   e.title = "<script>alert(1)</script>";
-  const std::string html = cli::gallery_html({e});
+  const std::string html = cli::gallery_html({e}, {});
   EXPECT_EQ(html.find("<script>"), std::string::npos);
   EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
 }
