@@ -33,4 +33,4 @@ update-goldens: build
 	BOOKSPIN_UPDATE_GOLDENS=1 $(BUILD)/tests/picture_tests --gtest_brief=1
 
 clean:
-	rm -rf $(BUILD) out/*/ out/*.mp4
+	rm -rf $(BUILD) out/*/ out/*.mp4 out/.logs

@@ -3,6 +3,7 @@
 
 Renders two tiny scenes, plots them, writes the gallery, serves the folder over a local HTTP
 server (file:// pages may not play media) and checks in Chromium that
+  - the page lists the scenes in paper order under a header saying how it was made,
   - the page logs no console error (no SEVERE browser log entry),
   - every <video> reaches readyState >= 1 (HAVE_METADATA) with duration > 0 and the clip's
     width and height (from ffprobe),
@@ -77,7 +78,8 @@ def build_gallery(bookspin, source, out):
              "-o", out])
         run([bookspin, "plot", scene, "--set", f"time.frames={FRAMES}", "--width", "640",
              "--height", "400", "-o", out])
-    run([bookspin, "gallery", out, *scenes])
+    # Given comparison first: the page puts the paper's figure first all the same.
+    run([bookspin, "gallery", out, *reversed(scenes)])
     return [s.stem for s in scenes]
 
 
@@ -148,6 +150,16 @@ def check_page(driver, url, out, names, screenshot):
         driver.execute_script(f"window.scrollTo(0, {y})")
         time.sleep(0.05)
     driver.execute_script("window.scrollTo(0, 0)")
+
+    sections = driver.execute_script(
+        "return Array.from(document.querySelectorAll('section.clip')).map(s => s.id)")
+    if sections != names:
+        errors.append(f"sections in the order {sections}, expected {names} (paper order)")
+    made = driver.execute_script(
+        "const p = document.querySelector('p.made'); return p ? p.textContent : ''")
+    if "bookspin" not in made or "UTC" not in made:
+        errors.append(f"no header saying how the page was made: {made!r}")
+    print(f"header: {made}")
 
     videos = wait_for(driver, VIDEO_STATE,
                       lambda vs: all(v["readyState"] >= 1 or v["error"] for v in vs))

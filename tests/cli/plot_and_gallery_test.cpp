@@ -49,6 +49,52 @@ TEST(GalleryPage, EscapesTitlesAndAttributes) {
   EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
 }
 
+TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
+  struct Scene {
+    std::string name;
+    bool comparison = false, exact = false;
+  };
+  const std::vector<Scene> given{{"sweep-dt"},
+                                 {"compare-methods-x", true},
+                                 {"fig12-quaternion-pulsating-z"},
+                                 {"mesh-teapot"},
+                                 {"exact-unstable-x", false, true},
+                                 {"fig03-particle-stable-z"},
+                                 {"tennis-racket", false, true},
+                                 {"fig10-matrix-no-normalization"},
+                                 {"many-methods", true},
+                                 {"fig9-short"},
+                                 {"aaa-body"}};
+  std::vector<std::pair<cli::GalleryRank, std::string>> ranked;
+  for (const auto& s : given)
+    ranked.emplace_back(cli::gallery_rank(s.name, s.comparison, s.exact), s.name);
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> order;
+  for (const auto& [rank, name] : ranked) order.push_back(name);
+  const std::vector<std::string> expected{"fig03-particle-stable-z",
+                                          "fig9-short",
+                                          "fig10-matrix-no-normalization",
+                                          "fig12-quaternion-pulsating-z",
+                                          "exact-unstable-x",
+                                          "tennis-racket",
+                                          "compare-methods-x",
+                                          "many-methods",
+                                          "aaa-body",
+                                          "mesh-teapot",
+                                          "sweep-dt"};
+  EXPECT_EQ(order, expected);
+}
+
+TEST(GalleryPage, HeaderSaysWhatAndHowItWasMade) {
+  const cli::GalleryHeader header{"1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC",
+                                  "host <x>, Some CPU, 2 cores"};
+  const std::string html = cli::gallery_html({}, header);
+  EXPECT_NE(html.find("figures 3–12 first"), std::string::npos) << html;
+  EXPECT_NE(html.find("bookspin 1.2.3 (build aaaaaaaaaaaa)"), std::string::npos) << html;
+  EXPECT_NE(html.find("2026-11-22 01:50 UTC"), std::string::npos) << html;
+  EXPECT_NE(html.find("host &lt;x&gt;, Some CPU, 2 cores"), std::string::npos) << html;
+}
+
 /// Every src=, poster= and href= value of `html` that names a file (not a data: URL or #anchor).
 /// (A plain scan: GCC 12's std::regex trips -Wmaybe-uninitialized in its own headers.)
 std::vector<std::string> linked_files(const std::string& html) {
