@@ -132,9 +132,8 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
          "motion, the comparisons of models and methods, other bodies and sweeps. Each clip "
          "comes with a plot of its diagnostics over the whole run (body-frame &omega;, energy "
          "drift, shape error) and its CSV files.</p>\n"
-      << "<p class=\"made\">Made with bookspin "
-      << html_escape(header.version) << " (build " << html_escape(header.build_id.substr(0, 12))
-      << ")";
+      << "<p class=\"made\">Made with bookspin " << html_escape(header.version) << " (build "
+      << html_escape(header.build_id.substr(0, 12)) << ")";
   if (!header.date.empty()) out << ", " << html_escape(header.date);
   if (!header.machine.empty()) out << ", on " << html_escape(header.machine);
   out << ".</p>\n";
