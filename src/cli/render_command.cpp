@@ -106,6 +106,8 @@ bool skip_if_up_to_date(const std::filesystem::path& manifest, const std::string
 int render_command(const RenderArgs& args) {
   install_interrupt_handlers();
   scene::Scene scene = scene::parse_scene(args.scene_path, args.overrides);
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "bookspin: warning: " << warning << '\n';
   if (args.frames > 0) scene.frames = args.frames;
   const std::string name = scene.name;
   Progress progress(name, scene.frames);

@@ -20,6 +20,8 @@ void warn_diverged(const scene::Scene& scene, const pipeline::SimulationResult& 
 
 int simulate_command(const SimulateOptions& options) {
   const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "bookspin: warning: " << warning << '\n';
   if (!scene.compare.empty()) {
     // Several runs do not fit one CSV; `render` writes one per panel.
     throw InputError(options.scene_path +

@@ -18,7 +18,8 @@ void append_number(std::string& out, double value) {
 const std::string& diagnostics_csv_header() {
   static const std::string header =
       "frame,t,omega_x,omega_y,omega_z,L_x,L_y,L_z,energy_kinetic,energy_potential,"
-      "energy_total,cos_x_L,cos_y_L,cos_z_L,strain_max,orthogonality_error,quaternion_norm";
+      "energy_total,cos_x_L,cos_y_L,cos_z_L,strain_max,orthogonality_error,quaternion_norm,"
+      "cos_smallest_L,cos_intermediate_L,cos_largest_L";
   return header;
 }
 
@@ -35,6 +36,7 @@ std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d) {
   append_number(row, d.strain_max);
   append_number(row, d.orthogonality_error);
   append_number(row, d.quaternion_norm);
+  for (int i = 0; i < 3; ++i) append_number(row, d.cos_principal_L[i]);
   return row;
 }
 

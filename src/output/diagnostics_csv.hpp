@@ -8,7 +8,8 @@
 
 namespace bookspin::output {
 
-/// The header line (no newline): frame,t,omega_x,…,quaternion_norm.
+/// The header line (no newline): frame,t,omega_x,…,quaternion_norm, then (added last, so the
+/// earlier columns keep their places) cos_smallest_L,cos_intermediate_L,cos_largest_L.
 const std::string& diagnostics_csv_header();
 
 /// One row (no newline) for `frame`; numbers in shortest round-trip form (std::to_chars), so

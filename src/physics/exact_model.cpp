@@ -6,11 +6,13 @@
 
 namespace bookspin::physics {
 
-ExactModel::ExactModel(const Book& book) : book_(book) { reset(InitialState{}); }
+ExactModel::ExactModel(const Body& body) : body_(body), cage_corners_(body.cage.body_corners()) {
+  reset(InitialState{});
+}
 
 void ExactModel::reset(const InitialState& initial) {
-  const Eigen::Vector3d L0 = initial_angular_momentum(book_, initial);
-  const Eigen::Vector3d moments = book_.principal_moments();
+  const Eigen::Vector3d L0 = initial_angular_momentum(body_.moments, initial);
+  const Eigen::Vector3d& moments = body_.moments;
   rotation_.emplace(moments, L0.cwiseQuotient(moments));
   t_ = t_base_ = dt_ = 0.0;
   steps_ = 0;
@@ -31,25 +33,32 @@ void ExactModel::step(double dt) {
   R_ = rotation_->orientation(t_);
 }
 
-Corners ExactModel::corners() const { return R_ * book_.body_corners(); }
+Corners ExactModel::corners() const { return R_ * cage_corners_; }
 
 Diagnostics ExactModel::diagnostics() const {
   // The shared rigid diagnostics give L, the axis cosines, strain and orthogonality from R;
   // ω and the energy are then taken from the exact ω(t) rather than from R and L.
-  Diagnostics d = rigid_diagnostics(book_, R_, rotation_->angular_momentum_world(), t_);
+  Diagnostics d = rigid_diagnostics(body_, R_, rotation_->angular_momentum_world(), t_);
   d.omega_body = rotation_->omega_body(t_);
-  d.energy_kinetic = 0.5 * d.omega_body.dot(book_.principal_moments().cwiseProduct(d.omega_body));
+  d.energy_kinetic = 0.5 * d.omega_body.dot(body_.moments.cwiseProduct(d.omega_body));
   d.energy_potential = 0.0;
   d.energy_total = d.energy_kinetic;
   d.quaternion_norm = 1.0;
-  if (!d.cos_axis_L.allFinite()) d.cos_axis_L.setZero();  // L = 0: no direction to compare
+  if (!d.cos_axis_L.allFinite()) {  // L = 0: no direction to compare
+    d.cos_axis_L.setZero();
+    d.cos_principal_L.setZero();
+  }
   return d;
 }
 
 bool ExactModel::finite() const { return std::isfinite(t_) && is_sane(R_); }
 
+std::unique_ptr<Simulator> make_exact_simulator(const Body& body) {
+  return std::make_unique<ExactModel>(body);
+}
+
 std::unique_ptr<Simulator> make_exact_simulator(const Book& book) {
-  return std::make_unique<ExactModel>(book);
+  return make_exact_simulator(book_body(book));
 }
 
 }  // namespace bookspin::physics

@@ -10,15 +10,17 @@
 namespace bookspin::physics {
 
 /// Simulator for `ModelKind::exact`. reset() builds an ExactRotation from
-/// ω0' = I_body⁻¹ L0 with L0 = I_body·ω0 + jiggle_delta_L(seed, jiggle), the same jiggled
-/// angular momentum the rigid models start from; step(dt) only advances t, and the state
-/// at t is evaluated exactly (no error accumulates with the number of steps). After n steps
-/// of one dt, t = n·dt as a product, not a running sum of dt (docs/physics.md §10).
-/// Corners are R(t)·body corners (3×8, world frame).
+/// ω0' = I_body⁻¹ L0 (I_body = diag(body.moments)) with L0 = I_body·ω0 + jiggle_delta_L(seed,
+/// jiggle), the same jiggled angular momentum the rigid models start from; step(dt) only advances
+/// t, and the state at t is evaluated exactly (no error accumulates with the number of steps).
+/// After n steps of one dt, t = n·dt as a product, not a running sum of dt (docs/physics.md §10).
+/// Corners are R(t)·body.cage corners (3×8, world frame).
 class ExactModel final : public Simulator {
  public:
   /// Starts in the state of reset(InitialState{}).
-  explicit ExactModel(const Book& book);
+  explicit ExactModel(const Body& body);
+  /// ExactModel(book_body(book)).
+  explicit ExactModel(const Book& book) : ExactModel(book_body(book)) {}
   void reset(const InitialState& initial) override;
   void step(double dt) override;
   Corners corners() const override;
@@ -31,7 +33,8 @@ class ExactModel final : public Simulator {
   double time() const { return t_; }
 
  private:
-  Book book_;
+  Body body_;
+  Corners cage_corners_;  ///< body.cage's corners, body frame (3×8)
   std::optional<ExactRotation> rotation_;
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
   double t_ = 0.0;
@@ -40,7 +43,9 @@ class ExactModel final : public Simulator {
   long steps_ = 0;       ///< steps of dt_ since t_base_
 };
 
-/// The exact model for `book` (make_simulator() returns it for ModelKind::exact).
+/// The exact model for `body` (make_simulator() returns it for ModelKind::exact).
+std::unique_ptr<Simulator> make_exact_simulator(const Body& body);
+/// make_exact_simulator(book_body(book)).
 std::unique_ptr<Simulator> make_exact_simulator(const Book& book);
 
 }  // namespace bookspin::physics

@@ -31,8 +31,7 @@ constexpr Real kTailTolerance = 1e-16L;
 /// whereas a mirror would flip the sign of the cross product.
 Eigen::Matrix3d sorting_rotation(const Eigen::Vector3d& moments) {
   std::array<int, 3> perm{0, 1, 2};
-  std::stable_sort(perm.begin(), perm.end(),
-                   [&](int a, int b) { return moments[a] < moments[b]; });
+  std::stable_sort(perm.begin(), perm.end(), [&](int a, int b) { return moments[a] < moments[b]; });
   Eigen::Matrix3d q = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i) q(i, perm[i]) = 1.0;
   if (q.determinant() < 0.0) q.row(2) *= -1.0;

@@ -22,10 +22,10 @@ enum class ExactCase {
 /// the integrand (built and evaluated in exact_solution.cpp). Panel p holds `degree + 2`
 /// coefficients of the antiderivative on [p·width, (p+1)·width], zero at the panel start.
 struct PrecessionTable {
-  int degree = 0;                 ///< degree of the integrand's Chebyshev interpolant
-  double width = 0.0;             ///< panel width in u
-  std::vector<double> start;      ///< integral from 0 to each panel start (panels + 1 values)
-  std::vector<double> coeffs;     ///< panels × (degree + 2) antiderivative coefficients
+  int degree = 0;              ///< degree of the integrand's Chebyshev interpolant
+  double width = 0.0;          ///< panel width in u
+  std::vector<double> start;   ///< integral from 0 to each panel start (panels + 1 values)
+  std::vector<double> coeffs;  ///< panels × (degree + 2) antiderivative coefficients
   int panels() const { return static_cast<int>(start.size()) - 1; }
 };
 
@@ -69,7 +69,7 @@ class ExactRotation {
   /// Time between successive sign changes of ω about the intermediate axis, T/2 = 2K(k)/λ.
   double flip_period() const;
 
-  double energy() const { return energy_; }  ///< E = ½ ω·I ω, energy units
+  double energy() const { return energy_; }                 ///< E = ½ ω·I ω, energy units
   double angular_momentum_norm() const { return L_norm_; }  ///< |L|
   const Eigen::Vector3d& angular_momentum_world() const { return L_world_; }  ///< L, world
   double modulus() const { return static_cast<double>(k_); }  ///< Jacobi modulus k (not m = k²)
@@ -93,10 +93,10 @@ class ExactRotation {
   Eigen::Matrix3d momentum_frame(const Eigen::Vector3d& L_sorted) const;
   Eigen::Matrix3d rotation_from(const Eigen::Vector3d& L_sorted, double psi) const;
 
-  Eigen::Vector3d moments_;        ///< body x, y, z
-  Eigen::Vector3d omega0_;         ///< body frame
-  Eigen::Matrix3d to_sorted_;      ///< Q: sorted = Q · body, det Q = +1
-  Eigen::Vector3d I_;              ///< sorted moments I1 ≤ I2 ≤ I3
+  Eigen::Vector3d moments_;    ///< body x, y, z
+  Eigen::Vector3d omega0_;     ///< body frame
+  Eigen::Matrix3d to_sorted_;  ///< Q: sorted = Q · body, det Q = +1
+  Eigen::Vector3d I_;          ///< sorted moments I1 ≤ I2 ≤ I3
   Eigen::Vector3d L_world_;
   double energy_ = 0.0, L_norm_ = 0.0;
   ExactCase case_ = ExactCase::steady;
@@ -105,8 +105,8 @@ class ExactRotation {
   long double k_ = 0.0L, kc2_ = 1.0L, lambda_ = 0.0L, u0_ = 0.0L, K_ = 0.0L;  ///< kc2_ = 1 − k²
   Eigen::Matrix3d anchor_ = Eigen::Matrix3d::Identity();  ///< W, fixed by R(0) = I
   PrecessionTable table_;
-  long double psi_half_ = 0.0L;    ///< ∫ dψ/du over one period 2K of u
-  long double psi_u0_ = 0.0L;      ///< ∫ dψ/du from 0 to u0
+  long double psi_half_ = 0.0L;  ///< ∫ dψ/du over one period 2K of u
+  long double psi_u0_ = 0.0L;    ///< ∫ dψ/du from 0 to u0
 };
 
 }  // namespace bookspin::physics

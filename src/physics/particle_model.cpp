@@ -186,6 +186,7 @@ Diagnostics ParticleModel::diagnostics() const {
   d.energy_potential = spring_energy(x_);
   d.energy_total = d.energy_kinetic + d.energy_potential;
   for (int axis = 0; axis < 3; ++axis) d.cos_axis_L[axis] = R.col(axis).dot(d.L) / d.L.norm();
+  d.cos_principal_L = principal_cosines(d.cos_axis_L, book_.principal_moments());
   d.strain_max = strain_max(Corners(x_), rest_);
   d.orthogonality_error = orthogonality_error(R);
   return d;

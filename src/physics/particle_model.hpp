@@ -40,8 +40,8 @@ class ParticleModel final : public Simulator {
   Book book_;
   ModelConfig config_;
   double particle_mass_;
-  double damping_;                       ///< 2√(km) with damping, else 0
-  Corners rest_;                         ///< body corners at rest (3×8)
+  double damping_;                              ///< 2√(km) with damping, else 0
+  Corners rest_;                                ///< body corners at rest (3×8)
   std::array<double, kSprings> rest_length_{};  ///< per corner pair
   CornerRows x_, v_;
   double energy0_ = 0.0;  ///< total energy fixed at reset (all kinetic)

@@ -1,5 +1,5 @@
 #pragma once
-// What the two rigid models share (docs/physics.md §3–4, §10): the book and its settings, the
+// What the two rigid models share (docs/physics.md §3–4, §10): the body and its settings, the
 // constant world angular momentum L, the run's time and, where a step could not be taken, why
 // the run ended. Each model adds its orientation (a matrix or a quaternion) and its steps.
 #include <string>
@@ -21,18 +21,24 @@ class RigidBody : public Simulator {
   std::string divergence_reason() const override { return failure_; }
 
  protected:
-  RigidBody(const Book& book, const ModelConfig& config)
-      : book_(book), config_(config), inverse_moments_(book.principal_moments().cwiseInverse()) {}
+  /// The body's principal moments and cage (docs/physics.md §12); for the book exactly the
+  /// numbers of book.principal_moments() and book.body_corners().
+  RigidBody(const Body& body, const ModelConfig& config)
+      : body_(body),
+        config_(config),
+        cage_corners_(body.cage.body_corners()),
+        inverse_moments_(body.moments.cwiseInverse()) {}
 
   /// L from the initial state (the jiggle included, docs/physics.md §5), t = 0, the run open.
   void reset_motion(const InitialState& initial) {
-    L_ = initial_angular_momentum(book_, initial);
+    L_ = initial_angular_momentum(body_.moments, initial);
     t_ = 0.0;
     failure_.clear();
   }
 
-  Book book_;
+  Body body_;
   ModelConfig config_;
+  Corners cage_corners_;                         ///< body.cage's corners, body frame (3×8)
   Eigen::Vector3d inverse_moments_;              ///< 1 / principal moments, body frame
   Eigen::Vector3d L_ = Eigen::Vector3d::Zero();  ///< world frame, constant
   double t_ = 0.0;                               ///< time units

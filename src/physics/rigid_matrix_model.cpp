@@ -6,8 +6,8 @@
 
 namespace bookspin::physics {
 
-RigidMatrixModel::RigidMatrixModel(const Book& book, const ModelConfig& config)
-    : RigidBody(book, config), splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
+RigidMatrixModel::RigidMatrixModel(const Body& body, const ModelConfig& config)
+    : RigidBody(body, config), splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
 
 void RigidMatrixModel::reset(const InitialState& initial) {
   R_.setIdentity();
@@ -74,10 +74,10 @@ void RigidMatrixModel::step(double dt) {
   t_ += dt;
 }
 
-Corners RigidMatrixModel::corners() const { return orientation() * book_.body_corners(); }
+Corners RigidMatrixModel::corners() const { return orientation() * cage_corners_; }
 
 Diagnostics RigidMatrixModel::diagnostics() const {
-  return rigid_diagnostics(book_, orientation(), L_, t_);
+  return rigid_diagnostics(body_, orientation(), L_, t_);
 }
 
 bool RigidMatrixModel::finite() const { return failure_.empty() && is_sane(R_); }

@@ -15,7 +15,10 @@ namespace bookspin::physics {
 /// false, divergence_reason() says why) and leaves R as it was.
 class RigidMatrixModel final : public RigidBody {
  public:
-  RigidMatrixModel(const Book& book, const ModelConfig& config);
+  RigidMatrixModel(const Body& body, const ModelConfig& config);
+  /// RigidMatrixModel(book_body(book), config).
+  RigidMatrixModel(const Book& book, const ModelConfig& config)
+      : RigidMatrixModel(book_body(book), config) {}
   void reset(const InitialState& initial) override;
   void step(double dt) override;
   Corners corners() const override;

@@ -7,8 +7,8 @@
 
 namespace bookspin::physics {
 
-RigidQuaternionModel::RigidQuaternionModel(const Book& book, const ModelConfig& config)
-    : RigidBody(book, config), splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
+RigidQuaternionModel::RigidQuaternionModel(const Body& body, const ModelConfig& config)
+    : RigidBody(body, config), splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
 
 void RigidQuaternionModel::reset(const InitialState& initial) {
   q_.setIdentity();
@@ -150,12 +150,12 @@ void RigidQuaternionModel::step(double dt) {
 }
 
 Corners RigidQuaternionModel::corners() const {
-  return orientation().toRotationMatrix() * book_.body_corners();
+  return orientation().toRotationMatrix() * cage_corners_;
 }
 
 Diagnostics RigidQuaternionModel::diagnostics() const {
   const Eigen::Quaterniond q = orientation();
-  Diagnostics d = rigid_diagnostics(book_, q.toRotationMatrix(), L_, t_);
+  Diagnostics d = rigid_diagnostics(body_, q.toRotationMatrix(), L_, t_);
   d.quaternion_norm = q.norm();
   return d;
 }

@@ -17,7 +17,10 @@ namespace bookspin::physics {
 /// (finite() false, divergence_reason() says why) and leaves q as it was.
 class RigidQuaternionModel final : public RigidBody {
  public:
-  RigidQuaternionModel(const Book& book, const ModelConfig& config);
+  RigidQuaternionModel(const Body& body, const ModelConfig& config);
+  /// RigidQuaternionModel(book_body(book), config).
+  RigidQuaternionModel(const Book& book, const ModelConfig& config)
+      : RigidQuaternionModel(book_body(book), config) {}
   void reset(const InitialState& initial) override;
   void step(double dt) override;
   Corners corners() const override;

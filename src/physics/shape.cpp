@@ -44,12 +44,22 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& w) {
   return s;
 }
 
+Eigen::Vector3d principal_cosines(const Eigen::Vector3d& cos_axis_L,
+                                  const Eigen::Vector3d& moments) {
+  const std::array<int, 3> order = principal_order(moments);
+  return {cos_axis_L[order[0]], cos_axis_L[order[1]], cos_axis_L[order[2]]};
+}
+
 Diagnostics rigid_diagnostics(const Book& book, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
                               double t) {
-  const Eigen::Vector3d moments = book.principal_moments();
+  return rigid_diagnostics(book_body(book), M, L, t);
+}
+
+Diagnostics rigid_diagnostics(const Body& body, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
+                              double t) {
+  const Eigen::Vector3d& moments = body.moments;
   const Eigen::Matrix3d inertia_world = M * moments.asDiagonal() * M.transpose();
-  const Eigen::Matrix3d inertia_inv_world =
-      M * moments.cwiseInverse().asDiagonal() * M.transpose();
+  const Eigen::Matrix3d inertia_inv_world = M * moments.cwiseInverse().asDiagonal() * M.transpose();
   const Eigen::Vector3d omega_world = inertia_inv_world * L;
   Diagnostics d;
   d.t = t;
@@ -63,14 +73,23 @@ Diagnostics rigid_diagnostics(const Book& book, const Eigen::Matrix3d& M, const 
     const Eigen::Vector3d a = M.col(axis);
     d.cos_axis_L[axis] = a.dot(L) / (a.norm() * L_norm);
   }
-  const Corners body = book.body_corners();
-  d.strain_max = strain_max(M * body, body);
+  d.cos_principal_L = principal_cosines(d.cos_axis_L, moments);
+  const Corners corners = body.cage.body_corners();
+  d.strain_max = strain_max(M * corners, corners);
   d.orthogonality_error = orthogonality_error(M);
   return d;
 }
 
+// The diagonal I_body as a full 3×3 matrix times ω0: the same operations (and so the same
+// bits, signed zeros included) as the book's inertia_body() * ω0 always had.
+Eigen::Vector3d initial_angular_momentum(const Eigen::Vector3d& moments,
+                                         const InitialState& initial) {
+  const Eigen::Matrix3d inertia = moments.asDiagonal();
+  return inertia * initial.omega0_body + jiggle_delta_L(initial.seed, initial.jiggle);
+}
+
 Eigen::Vector3d initial_angular_momentum(const Book& book, const InitialState& initial) {
-  return book.inertia_body() * initial.omega0_body + jiggle_delta_L(initial.seed, initial.jiggle);
+  return initial_angular_momentum(book.principal_moments(), initial);
 }
 
 }  // namespace bookspin::physics

@@ -2,6 +2,7 @@
 // Shape measures shared by all simulators (docs/physics.md §9).
 #include <array>
 
+#include "physics/body.hpp"
 #include "physics/book.hpp"
 #include "physics/simulator.hpp"
 
@@ -34,12 +35,24 @@ bool is_sane(const Eigen::MatrixBase<Derived>& m) {
   return m.allFinite() && m.cwiseAbs().maxCoeff() < kDivergenceLimit;
 }
 
-/// Diagnostics of a rigid model whose corners are `M · body_corners` (M is R or R(q),
-/// possibly not a rotation). L is the world angular momentum. Equations: docs/physics.md §3, §9.
+/// Diagnostics of a rigid model whose corners are `M · body.cage.body_corners()` (M is R or
+/// R(q), possibly not a rotation), with principal moments body.moments. L is the world
+/// angular momentum. Equations: docs/physics.md §3, §9, §12 (cos_principal_L).
+Diagnostics rigid_diagnostics(const Body& body, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
+                              double t);
+/// rigid_diagnostics(book_body(book), M, L, t).
 Diagnostics rigid_diagnostics(const Book& book, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
                               double t);
 
-/// L0 = I_body·ω0 + jiggle_delta_L(seed, jiggle): world angular momentum at reset (identity R).
+/// cos_principal_L from cos_axis_L: the body axes' cosines in principal_order(moments).
+Eigen::Vector3d principal_cosines(const Eigen::Vector3d& cos_axis_L,
+                                  const Eigen::Vector3d& moments);
+
+/// L0 = I_body·ω0 + jiggle_delta_L(seed, jiggle), I_body = diag(moments) (body frame =
+/// principal frame): world angular momentum at reset (identity R).
+Eigen::Vector3d initial_angular_momentum(const Eigen::Vector3d& moments,
+                                         const InitialState& initial);
+/// initial_angular_momentum(book.principal_moments(), initial).
 Eigen::Vector3d initial_angular_momentum(const Book& book, const InitialState& initial);
 
 }  // namespace bookspin::physics

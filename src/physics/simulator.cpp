@@ -92,6 +92,10 @@ bool supports(ModelKind kind, Integrator integrator) {
 }
 
 std::unique_ptr<Simulator> make_simulator(const Book& book, const ModelConfig& config) {
+  return make_simulator(book_body(book), config);
+}
+
+std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& config) {
   if (!supports(config.kind, config.integrator)) {
     throw std::invalid_argument("model '" + std::string(to_string(config.kind)) +
                                 "' does not support integrator '" +
@@ -99,15 +103,17 @@ std::unique_ptr<Simulator> make_simulator(const Book& book, const ModelConfig& c
   }
   switch (config.kind) {
     case ModelKind::particle:
-      return std::make_unique<ParticleModel>(book, config);
+      if (body.shape != BodyShape::book)
+        throw std::invalid_argument("the particle model of a non-book body needs the lattice");
+      return std::make_unique<ParticleModel>(body.cage, config);
     case ModelKind::rigid_matrix:
-      return std::make_unique<RigidMatrixModel>(book, config);
+      return std::make_unique<RigidMatrixModel>(body, config);
     case ModelKind::rigid_quaternion:
-      return std::make_unique<RigidQuaternionModel>(book, config);
+      return std::make_unique<RigidQuaternionModel>(body, config);
     case ModelKind::exact:
       break;
   }
-  return make_exact_simulator(book);
+  return make_exact_simulator(body);
 }
 
 }  // namespace bookspin::physics

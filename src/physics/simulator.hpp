@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "physics/body.hpp"
 #include "physics/book.hpp"
 
 namespace bookspin::physics {
@@ -28,6 +29,9 @@ struct ModelConfig {
   bool normalize = false;         ///< energy (particle), SVD (matrix), |q| (quaternion)
   bool damping = true;            ///< critical spring damping (particle only)
   double spring_constant = 10.0;  ///< k, force per length (particle only)
+  /// Particle lattice of a non-book body: cells along the body's longest side; 0 = default
+  /// (docs/physics.md §13). Not used by the book or the rigid and exact models.
+  int lattice_cells = 0;
 };
 
 /// Initial condition: identity orientation, body-frame ω0, and a seeded jiggle.
@@ -49,6 +53,9 @@ struct Diagnostics {
   double strain_max = 0.0;           ///< max over 28 corner pairs of |len/rest − 1|
   double orthogonality_error = 0.0;  ///< ‖RᵀR − I‖_F of the matrix placing the corners
   double quaternion_norm = 1.0;      ///< |q|, 1 where there is no quaternion
+  /// cos(principal axis in world, L) for the principal axes sorted by moment: smallest,
+  /// intermediate, largest (docs/physics.md §12). For the book: body y, x, z.
+  Eigen::Vector3d cos_principal_L = Eigen::Vector3d::Zero();
 };
 
 /// What the simulator hands to the rest of the pipeline each frame.
@@ -90,8 +97,12 @@ Eigen::Vector3d jiggle_delta_L(std::uint64_t seed, double amplitude);
 /// is unused).
 bool supports(ModelKind kind, Integrator integrator);
 
-/// Creates the simulator for `config`. Throws std::invalid_argument when the model does
-/// not support the integrator.
+/// Creates the simulator of `body` for `config`. The rigid and exact models use
+/// body.moments and move body.cage's corners (docs/physics.md §12). Throws
+/// std::invalid_argument when the model does not support the integrator, or for the
+/// particle model of a non-book body (which needs the lattice, docs/physics.md §13).
+std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& config);
+/// make_simulator(book_body(book), config).
 std::unique_ptr<Simulator> make_simulator(const Book& book, const ModelConfig& config);
 
 std::string_view to_string(ModelKind kind);

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "common/errors.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
@@ -79,6 +80,13 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
   const auto say = [&](const std::string& line) {
     if (request.on_line) request.on_line(line);
   };
+  // The accuracy table measures the book's models (analysis::AccuracySettings holds a Book);
+  // another body would be measured as its cage, a box: refuse rather than answer wrongly.
+  if (scene.body.shape != physics::BodyShape::book) {
+    throw InputError(scene.source.string() +
+                     ": body.shape: accuracy measures the book only, not '" +
+                     std::string(physics::to_string(scene.body.shape)) + "'");
+  }
   analysis::AccuracySettings settings{scene.book, scene.initial, scene.model, request.flips};
   const auto exact = analysis::exact_reference(settings);
   say(format_line("%s: exact flip period T/2 = 2K(k)/lambda = %.9g time units (k = %.9g), %g flips",

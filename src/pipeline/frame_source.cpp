@@ -3,7 +3,7 @@
 namespace bookspin::pipeline {
 
 FrameSource::FrameSource(const scene::Scene& scene)
-    : scene_(scene), simulator_(physics::make_simulator(scene.book, scene.model)) {
+    : scene_(scene), simulator_(physics::make_simulator(scene.body, scene.model)) {
   simulator_->reset(scene.initial);
 }
 

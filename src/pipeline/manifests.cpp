@@ -22,7 +22,8 @@ std::string hash_of(const std::string& role, const std::string& path) {
   return "\"sha256:" + *hash + "\"";
 }
 
-/// "inputs": every file the scene reads as bytes (its textures), by key, with their SHA-256.
+/// "inputs": every file the scene reads as bytes (its textures, its mesh), by key, with their
+/// SHA-256.
 std::string inputs_json(const scene::Scene& scene) {
   std::vector<std::pair<std::string, std::string>> files;
   const auto& r = scene.render;
@@ -32,6 +33,7 @@ std::string inputs_json(const scene::Scene& scene) {
                                   {"render.texture_pages", &r.texture_pages}}) {
     if (!path->empty()) files.emplace_back(key, *path);
   }
+  if (!scene.body_mesh.empty()) files.emplace_back("body.mesh", scene.body_mesh);
   std::ostringstream out;
   out << "  \"inputs\": {";
   for (std::size_t i = 0; i < files.size(); ++i) {
@@ -40,6 +42,21 @@ std::string inputs_json(const scene::Scene& scene) {
   }
   out << (files.empty() ? "},\n" : "\n  },\n");
   return out.str();
+}
+
+/// SHA-256 of the body's surface as simulated and drawn (vertices, triangles, face colours in
+/// the principal frame, docs/physics.md §12), "" for the book: a mesh file written again with
+/// the same geometry is the same body.
+std::string surface_hash(const physics::Body& body) {
+  if (body.vertices.size() == 0) return "";
+  std::string bytes;
+  const auto add = [&bytes](const void* data, std::size_t size) {
+    bytes.append(static_cast<const char*>(data), size);
+  };
+  add(body.vertices.data(), sizeof(double) * static_cast<std::size_t>(body.vertices.size()));
+  add(body.triangles.data(), sizeof(int) * static_cast<std::size_t>(body.triangles.size()));
+  add(body.face_colours.data(), sizeof(float) * static_cast<std::size_t>(body.face_colours.size()));
+  return output::sha256_text(bytes);
 }
 
 /// The head shared by every manifest; `options` are the command's output options as JSON
@@ -54,8 +71,10 @@ std::string head(const std::string& command, const std::string& options,
       << "  \"options\": {\n"
       << options << "  },\n"
       << "  \"scene\": {\n"
-      << scene::canonical_json(scene, 4) << "  },\n"
-      << inputs_json(scene);
+      << scene::canonical_json(scene, 4) << "  },\n";
+  if (const std::string surface = surface_hash(scene.body); !surface.empty())
+    out << "  \"body_surface\": \"sha256:" << surface << "\",\n";
+  out << inputs_json(scene);
   return out.str();
 }
 

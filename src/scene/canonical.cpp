@@ -30,6 +30,7 @@ std::string vector3(const Eigen::Vector3d& v) {
 
 std::string boolean(bool value) { return value ? "true" : "false"; }
 
+/// A file the scene names (texture, mesh), relative to the scene file's folder.
 std::string texture(const std::string& path, const std::filesystem::path& source) {
   if (path.empty()) return json_string("");
   const std::filesystem::path folder = source.parent_path().empty() ? "." : source.parent_path();
@@ -45,6 +46,7 @@ void add_model(Members& m, const std::string& prefix, const physics::ModelConfig
   m.emplace_back(prefix + "normalize", boolean(model.normalize));
   m.emplace_back(prefix + "damping", boolean(model.damping));
   m.emplace_back(prefix + "spring_constant", number(model.spring_constant));
+  m.emplace_back(prefix + "lattice_cells", std::to_string(model.lattice_cells));
 }
 
 void add_render(Members& m, const RenderOptions& r, const std::filesystem::path& source) {
@@ -95,7 +97,17 @@ std::string canonical_json(const Scene& s, int indent) {
   m.emplace_back("scene.title", json_string(s.title));
   m.emplace_back("scene.description", json_string(s.description));
   add_model(m, "model.", s.model);
-  m.emplace_back("book.size", vector3(s.book.size));
+  // The body as simulated (docs/physics.md §12): body.mass and body.scale are in its moments,
+  // cage and volume; its surface's geometry is hashed by the manifests (pipeline/manifests).
+  m.emplace_back("body.shape", json_string(std::string(physics::to_string(s.body.shape))));
+  m.emplace_back("body.mesh", texture(s.body_mesh, s.source));
+  m.emplace_back("body.moments", vector3(s.body.moments));
+  m.emplace_back("body.volume", number(s.body.volume));
+  m.emplace_back("body.surface",
+                 json_string(std::to_string(s.body.vertices.cols()) + " vertices, " +
+                             std::to_string(s.body.triangles.cols()) + " triangles, " +
+                             (s.body.smooth ? "smooth" : "flat")));
+  m.emplace_back("book.size", vector3(s.book.size));  // the body's cage for a non-book body
   m.emplace_back("book.mass", number(s.book.mass));
   m.emplace_back("initial.angular_velocity", vector3(s.initial.omega0_body));
   m.emplace_back("initial.jiggle", number(s.initial.jiggle));

@@ -11,7 +11,9 @@ namespace bookspin::scene {
 
 /// The members of a JSON object (no braces), one `"key": value` per line, each line
 /// indented by `indent` spaces and all but the last ending in ','. Keys are the scene
-/// file's dotted keys (scenes/README.md); comparison tiles are `compare[i].key`. Texture
+/// file's dotted keys (scenes/README.md) as resolved: initial.spin_axis and spin_rate appear
+/// as initial.angular_velocity, body.mass and body.scale as the body's moments, volume and
+/// cage (book.size, book.mass); comparison tiles are `compare[i].key`. Texture and mesh
 /// paths are written relative to the scene file's folder, so the text does not depend on
 /// where the checkout lives. Numbers: shortest round-trip form (%.17g), JSON-valid.
 std::string canonical_json(const Scene& scene, int indent = 4);

@@ -53,6 +53,8 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   m.normalize = r.boolean("model.normalize", fallback.normalize);
   m.damping = r.boolean("model.damping", fallback.damping);
   m.spring_constant = r.number("model.spring_constant", fallback.spring_constant, 0.0, kHuge, true);
+  m.lattice_cells = static_cast<int>(
+      r.integer("model.lattice_cells", fallback.lattice_cells, 0, kMaxLatticeCells));
   return m;
 }
 

@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "mesh/mesh.hpp"
+#include "physics/presets.hpp"
 #include "scene/model_reader.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -178,6 +180,101 @@ void read_identity(TomlReader& r, Scene& s) {
   s.description = r.string("scene.description", "");
 }
 
+/// The [body] table, and [book] for the book (docs/physics.md §12, scenes/README.md).
+void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
+  const std::string name = r.string("body.shape", "book");
+  physics::BodyShape shape = physics::BodyShape::book;
+  if (!physics::parse_body_shape(name, shape)) {
+    r.fail("body.shape",
+           "unknown shape '" + name + "' (expected book, t-handle, tennis-racket, phone, mesh)");
+  }
+  if (shape == physics::BodyShape::book) {
+    s.book.size = r.vector3("book.size", s.book.size, 0.0, 1e6, true);
+    s.book.mass = r.number("book.mass", s.book.mass, 0.0, kHuge, true);
+    for (const char* key : {"body.mesh", "body.mass", "body.scale"}) {
+      if (r.has(key))
+        r.fail(key, "not used by the book (body.shape = \"book\"): give [book] size and mass");
+    }
+    s.body = physics::book_body(s.book);
+    return;
+  }
+  for (const char* key : {"book.size", "book.mass"}) {
+    if (r.has(key)) {
+      r.fail(key, "[book] keys describe the book, but body.shape is '" + name +
+                      "' (use body.mass and body.scale)");
+    }
+  }
+  const double mass = r.number("body.mass", 1.0, 0.0, kHuge, true);
+  const double scale = r.number("body.scale", 1.0, 0.0, 1e6, true);
+  if (shape != physics::BodyShape::mesh) {
+    if (r.has("body.mesh")) r.fail("body.mesh", "only with body.shape = \"mesh\"");
+    s.body = physics::preset_body(shape, mass, scale);
+  } else {
+    if (!r.has("body.mesh")) r.fail("body.shape", "'mesh' needs body.mesh (a mesh file)");
+    std::filesystem::path path(r.string("body.mesh", ""));
+    if (path.empty()) r.fail("body.mesh", "must name a mesh file");
+    if (path.is_relative()) path = origin.parent_path() / path;
+    s.body_mesh = path.string();
+    mesh::TriangleMesh mesh;
+    try {
+      mesh = mesh::load_mesh(path, scale);
+    } catch (const InputError& e) {
+      r.fail("body.mesh", e.what());
+    }
+    const physics::BodyResult body =
+        physics::body_from_mesh(mesh.vertices, mesh.triangles, mass, 1.0);
+    if (!body.ok()) r.fail("body.mesh", path.string() + ": " + body.error);
+    for (const std::string& warning : body.warnings)
+      s.warnings.push_back(path.string() + ": " + warning);
+    s.body = body.body;
+  }
+  s.book = s.body.cage;
+}
+
+/// initial.angular_velocity, or initial.spin_axis with initial.spin_rate (principal frame).
+void read_spin(TomlReader& r, Scene& s) {
+  const bool has_velocity = r.has("initial.angular_velocity");
+  s.initial.omega0_body = r.vector3("initial.angular_velocity", s.initial.omega0_body, -1e6, 1e6);
+  if (!r.has("initial.spin_axis")) {
+    if (r.has("initial.spin_rate")) r.fail("initial.spin_rate", "only with initial.spin_axis");
+    return;
+  }
+  if (has_velocity) {
+    r.fail("initial.spin_axis",
+           "give either initial.spin_axis (with initial.spin_rate) or initial.angular_velocity, "
+           "not both");
+  }
+  const std::string axis = r.string("initial.spin_axis", "");
+  static constexpr std::array<std::string_view, 3> kAxes{"smallest", "intermediate", "largest"};
+  const auto it = std::find(kAxes.begin(), kAxes.end(), axis);
+  if (it == kAxes.end()) {
+    r.fail("initial.spin_axis",
+           "unknown axis '" + axis + "' (expected smallest, intermediate, largest)");
+  }
+  if (!r.has("initial.spin_rate")) {
+    r.fail("initial.spin_axis", "needs initial.spin_rate (rad per time unit)");
+  }
+  const double rate = r.number("initial.spin_rate", 0.0, -1e6, 1e6);
+  const std::array<int, 3> order = physics::principal_order(s.body.moments);
+  s.initial.omega0_body.setZero();
+  s.initial.omega0_body[order[static_cast<std::size_t>(it - kAxes.begin())]] = rate;
+}
+
+/// Until the lattice exists, the particle model simulates only the book.
+void check_particle_body(TomlReader& r, const Scene& s) {
+  if (s.body.shape == physics::BodyShape::book) return;
+  const bool particle = s.model.kind == physics::ModelKind::particle ||
+                        std::any_of(s.compare.begin(), s.compare.end(), [](const CompareTile& t) {
+                          return t.model.kind == physics::ModelKind::particle;
+                        });
+  if (particle) {
+    r.fail(r.has("model.kind") ? "model.kind" : "body.shape",
+           "the particle model simulates only the book for now (body.shape is '" +
+               std::string(physics::to_string(s.body.shape)) +
+               "'); use model.kind = \"rigid-matrix\", \"rigid-quaternion\" or \"exact\"");
+  }
+}
+
 Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
                   const std::set<std::string>& overridden) {
   TomlReader r(root, origin.string(), overridden);
@@ -185,9 +282,8 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   s.source = origin;
   read_identity(r, s);
   s.model = read_model(r, physics::ModelConfig{});
-  s.book.size = r.vector3("book.size", s.book.size, 0.0, 1e6, true);
-  s.book.mass = r.number("book.mass", s.book.mass, 0.0, kHuge, true);
-  s.initial.omega0_body = r.vector3("initial.angular_velocity", s.initial.omega0_body, -1e6, 1e6);
+  read_body(r, s, origin);
+  read_spin(r, s);
   s.initial.jiggle = r.number("initial.jiggle", 0.0, 0.0, 1e6);
   s.initial.seed = static_cast<std::uint64_t>(
       r.integer("initial.seed", 1, 0, std::numeric_limits<int64_t>::max()));
@@ -195,6 +291,7 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   s.render = read_render(r, origin);
   s.compare = read_compare(r, origin.string(), overridden, s.model);
   r.reject_unknown_keys();
+  check_particle_body(r, s);
   return s;
 }
 

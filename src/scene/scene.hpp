@@ -50,7 +50,16 @@ struct Scene {
   std::string name;         ///< output name: file stem unless scene.name is set
   std::string title;        ///< human title (caption, gallery)
   std::string description;  ///< what the clip shows
+  /// The simulated body ([body] table, docs/physics.md §12); the book by default.
+  physics::Body body;
+  /// body.mesh resolved against the scene file's folder; empty unless body.shape = "mesh".
+  std::string body_mesh;
+  /// body.cage: the book itself for the book, else the box around the body's surface in its
+  /// principal frame (kept for code that frames or measures the book).
   physics::Book book;
+  /// Warnings met while reading the scene (e.g. a mesh shell wound inward, turned around),
+  /// one line each, for the command to print.
+  std::vector<std::string> warnings;
   physics::ModelConfig model;
   physics::InitialState initial;
   double dt = 1.0 / 60.0;   ///< time step, time units
@@ -72,10 +81,12 @@ inline constexpr int kMaxFrames = 100000;
 inline constexpr int kMaxStepsPerFrame = 1000000;
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 1 << 20;
 inline constexpr int kMaxCompareTiles = 9;
+inline constexpr int kMaxLatticeCells = 64;  ///< model.lattice_cells
 
 /// Reads and validates `path`, applying `overrides` ("key=value", value in TOML syntax) on
 /// top of the file. Throws InputError on any bad input: unreadable or oversized file, TOML
-/// syntax, unknown key, wrong type, out-of-range value, missing texture file.
+/// syntax, unknown key, wrong type, out-of-range value, missing texture file, a mesh file
+/// that is missing or not a closed mesh.
 Scene parse_scene(const std::filesystem::path& path,
                   const std::vector<std::string>& overrides = {});
 

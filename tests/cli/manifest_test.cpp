@@ -178,6 +178,31 @@ TEST(Manifest, ChangedTextureRendersAgain) {
   EXPECT_TRUE(rendered(r)) << r.output;
 }
 
+/// A closed box, `x` × 2 × 3, as OBJ text (outward winding).
+std::string box_obj(double x) {
+  const std::string a = std::to_string(x);
+  return "v 0 0 0\nv " + a + " 0 0\nv " + a + " 2 0\nv 0 2 0\nv 0 0 3\nv " + a + " 0 3\nv " + a +
+         " 2 3\nv 0 2 3\n"
+         "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n"
+         "f 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n";
+}
+
+TEST(Manifest, ChangedMeshRendersAgain) {
+  const Sandbox box("manifest_mesh");
+  const fs::path obj = box.scene.parent_path() / "box.obj";
+  std::ofstream(obj) << box_obj(1.0);
+  box.write(std::string(kScene) + "[body]\nshape = \"mesh\"\nmesh = \"box.obj\"\n");
+  const CliResult first = box.render();
+  ASSERT_TRUE(rendered(first)) << first.output;
+  const std::string m = read_file(box.out / "tiny" / "manifest.json");
+  EXPECT_NE(m.find("\"body.mesh\": \"sha256:"), std::string::npos) << m;
+  EXPECT_NE(m.find("\"body.mesh\": \"box.obj\""), std::string::npos) << m;
+  EXPECT_TRUE(skipped(box.render()));
+  std::ofstream(obj) << box_obj(1.5);
+  const CliResult changed = box.render();
+  EXPECT_TRUE(rendered(changed)) << changed.output;
+}
+
 TEST(Manifest, FailedRunLeavesNoManifest) {
   const Sandbox box("manifest_failed");
   ASSERT_TRUE(rendered(box.render()));

@@ -1,0 +1,124 @@
+#include "physics/body.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/mass_properties.hpp"
+
+namespace bookspin::physics {
+
+namespace {
+
+constexpr std::array<std::pair<BodyShape, std::string_view>, 5> kShapeNames{{
+    {BodyShape::book, "book"},
+    {BodyShape::t_handle, "t-handle"},
+    {BodyShape::tennis_racket, "tennis-racket"},
+    {BodyShape::phone, "phone"},
+    {BodyShape::mesh, "mesh"},
+}};
+
+}  // namespace
+
+std::string_view to_string(BodyShape shape) {
+  for (const auto& [value, name] : kShapeNames)
+    if (value == shape) return name;
+  return "?";
+}
+
+bool parse_body_shape(std::string_view text, BodyShape& out) {
+  for (const auto& [value, name] : kShapeNames) {
+    if (name == text) {
+      out = value;
+      return true;
+    }
+  }
+  return false;
+}
+
+Body book_body(const Book& book) {
+  Body body;
+  body.shape = BodyShape::book;
+  body.cage = book;
+  body.moments = book.principal_moments();
+  body.volume = book.size.prod();
+  return body;
+}
+
+std::array<int, 3> principal_order(const Eigen::Vector3d& moments) {
+  std::array<int, 3> order{0, 1, 2};
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return moments[a] < moments[b]; });
+  return order;
+}
+
+BodyResult body_from_mesh(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triangles,
+                          double mass, double scale, const Eigen::Matrix3Xf& face_colours,
+                          bool smooth, BodyShape shape) {
+  BodyResult result;
+  if (!(std::isfinite(mass) && mass > 0.0)) {
+    result.error = "mass must be finite and positive";
+    return result;
+  }
+  if (!(std::isfinite(scale) && scale > 0.0)) {
+    result.error = "scale must be finite and positive";
+    return result;
+  }
+  if (face_colours.cols() != 0 && face_colours.cols() != triangles.cols()) {
+    result.error = "face colours: " + std::to_string(face_colours.cols()) + " for " +
+                   std::to_string(triangles.cols()) + " triangles";
+    return result;
+  }
+  const Eigen::Matrix3Xd scaled = scale * vertices;
+  const MassPropertiesResult props = mass_properties(scaled, triangles, 1.0);
+  if (!props.ok()) {
+    result.error = props.error;
+    return result;
+  }
+  const MassProperties p = with_mass(props.properties, mass);
+  result.warnings = p.warnings;
+  Body& body = result.body;
+  body.shape = shape;
+  body.moments = p.principal_moments;
+  body.volume = p.volume;
+  // Row i of principal_axes is axis i in mesh coordinates: x' = A (x − c).
+  body.vertices = p.principal_axes * (scaled.colwise() - p.center_of_mass);
+  body.triangles = triangles;
+  // mass_properties turns an inward-wound shell around; do the same here so that drawing sees
+  // outward faces. A shell is inward when its signed volume is negative.
+  if (!p.warnings.empty()) {
+    // Signed volume per triangle, summed over connected components by union–find.
+    std::vector<int> parent(body.vertices.cols());
+    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+    auto find = [&](int v) {
+      while (parent[v] != v) v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
+      parent[find(triangles(1, t))] = find(triangles(0, t));
+      parent[find(triangles(2, t))] = find(triangles(0, t));
+    }
+    std::vector<double> shell_volume(parent.size(), 0.0);
+    for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
+      const Eigen::Vector3d a = body.vertices.col(triangles(0, t));
+      const Eigen::Vector3d b = body.vertices.col(triangles(1, t));
+      const Eigen::Vector3d c = body.vertices.col(triangles(2, t));
+      shell_volume[find(triangles(0, t))] += a.dot(b.cross(c)) / 6.0;
+    }
+    for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
+      if (shell_volume[find(triangles(0, t))] < 0.0)
+        std::swap(body.triangles(1, t), body.triangles(2, t));
+    }
+  }
+  if (face_colours.cols() == triangles.cols()) {
+    body.face_colours = face_colours;
+  } else {
+    body.face_colours = Eigen::Matrix3Xf::Constant(3, triangles.cols(), 0.6f);
+  }
+  body.smooth = smooth;
+  const Eigen::Vector3d extent = body.vertices.cwiseAbs().rowwise().maxCoeff();
+  body.cage.size = 2.0 * extent;
+  body.cage.mass = mass;
+  return result;
+}
+
+}  // namespace bookspin::physics
