@@ -2,6 +2,7 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 SCENES := $(wildcard scenes/*.toml)
+SWEEPS := $(wildcard sweeps/*.toml)
 
 .PHONY: all deps build figures test render bench update-goldens clean
 all: build
@@ -15,6 +16,10 @@ build: deps
 
 figures: build
 	@bash scripts/render-all.sh $(BUILD)/bookspin out $(SCENES)
+	$(BUILD)/bookspin sweep sweeps/flip-time-vs-perturbation.toml \
+	  --vary 'initial.angular_velocity[1]=1e-6:1e-2:20:log' \
+	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
+	$(BUILD)/bookspin gallery out $(SCENES) $(SWEEPS)
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

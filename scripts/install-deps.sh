@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev libmujoco-dev
   clang libclang-rt-14-dev
   chromium chromium-driver python3-selenium
+  slurm-wlm munge
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -121,6 +121,32 @@ void add_inertia(CLI::App& cli, InertiaOptions& options) {
   cmd->add_flag("--json", options.json, "Print one JSON object (full precision) instead");
 }
 
+void add_sweep(CLI::App& cli, SweepOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "sweep",
+      "Physics-only runs over a grid of scene values, measured: one CSV row per point and a plot");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML), one model (no [[compare]])");
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--vary", options.vary,
+                  "KEY=START:STOP:COUNT[:log] (repeatable; the grid is the product, the first "
+                  "--vary slowest), KEY a scalar scene key or a component such as "
+                  "initial.angular_velocity[1]")
+      ->allow_extra_args(false);
+  cmd->add_option("--measure", options.measures,
+                  "Comma-separated: first_flip, flip_period, energy_drift, orientation_error, "
+                  "diverged_at");
+  cmd->add_option("-j,--jobs", options.jobs, "Threads (0 = hardware threads)")
+      ->capture_default_str();
+  cmd->add_option("--shard", options.shard,
+                  "K/N: only grid points with index = K mod N (K from 0, as SLURM_ARRAY_TASK_ID); "
+                  "writes OUT/<scene>-sweep.shard-K-of-N.csv");
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--merge", options.merge,
+                  "Merge shard CSVs into OUT/<scene>-sweep.csv and .png instead of running")
+      ->allow_extra_args(true);
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/sweep-manifest.json");
+}
+
 int report(const std::string& message, int code) {
   std::cerr << "bookspin: error: " << message << '\n';
   return code;
@@ -151,6 +177,8 @@ int run_cli(int argc, char** argv) {
   add_gallery(cli, gallery);
   InertiaOptions inertia;
   add_inertia(cli, inertia);
+  SweepOptions sweep;
+  add_sweep(cli, sweep);
   cli.add_subcommand("info",
                      "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders");
   try {
@@ -171,6 +199,7 @@ int run_cli(int argc, char** argv) {
     if (cli.got_subcommand("plot")) return plot_command(plot);
     if (cli.got_subcommand("gallery")) return gallery_command(gallery);
     if (cli.got_subcommand("inertia")) return inertia_command(inertia);
+    if (cli.got_subcommand("sweep")) return sweep_command(sweep);
     return static_cast<int>(kExitOk);
   });
 }

@@ -91,6 +91,23 @@ int inertia_command(const InertiaOptions& options);
 bool skip_if_up_to_date(const std::filesystem::path& manifest, const std::string& head,
                         const std::filesystem::path& out, const std::string& name, bool verify);
 
+struct SweepOptions {
+  std::string scene_path;              ///< empty with --merge
+  std::vector<std::string> overrides;  ///< --set, before the grid's own
+  std::vector<std::string> vary;       ///< "KEY=START:STOP:COUNT[:log]"
+  std::string measures;                ///< "first_flip,flip_period,…"
+  int jobs = 0;                        ///< threads; 0 = hardware threads
+  std::string shard;                   ///< "K/N", K from 0; empty = the whole grid
+  std::string out_dir = "out";
+  std::vector<std::string> merge;  ///< shard CSVs to merge instead of running
+  bool force = false;   ///< run even when OUT/<scene>/sweep-manifest.json says up to date
+  bool verify = false;  ///< up-to-date check hashes the CSV and PNG (else sizes only)
+};
+
+/// Runs a parameter sweep (physics only, docs/physics.md §14) and writes
+/// OUT/<scene>-sweep.csv and .png, or one shard's CSV, or merges shard CSVs.
+int sweep_command(const SweepOptions& options);
+
 /// "; REASON" for a simulator's divergence reason, "" when it gave none.
 std::string divergence_because(const std::string& reason);
 

@@ -57,6 +57,8 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   if (exists(out, scene.name + ".mp4")) e.video = scene.name + ".mp4";
   e.poster = poster_for(out, scene.name);
   if (exists(out, scene.name + "-plot.png")) e.plot = scene.name + "-plot.png";
+  if (exists(out, scene.name + "-sweep.png")) e.sweep = scene.name + "-sweep.png";
+  if (exists(out, scene.name + "-sweep.csv")) e.sweep_csv = scene.name + "-sweep.csv";
   e.csvs = files_in(out, scene.name, "diagnostics", ".csv");
   return e;
 }
@@ -106,8 +108,11 @@ int gallery_command(const GalleryOptions& options) {
   for (const auto& path : options.scene_paths) {
     const scene::Scene scene = scene::parse_scene(path);
     const bool exact = scene.compare.empty() && scene.model.kind == physics::ModelKind::exact;
-    ranked.emplace_back(gallery_rank(scene.name, !scene.compare.empty(), exact),
-                        entry_for(out, scene));
+    GalleryEntry entry = entry_for(out, scene);
+    const bool sweep = !entry.sweep.empty() || !entry.sweep_csv.empty() ||
+                       fs::path(path).parent_path().filename() == "sweeps";
+    ranked.emplace_back(gallery_rank(scene.name, !scene.compare.empty(), exact, sweep),
+                        std::move(entry));
   }
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });

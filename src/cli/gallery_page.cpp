@@ -40,13 +40,18 @@ void write_media(std::ostream& out, const GalleryEntry& e) {
     out << "></video>\n";
   } else if (!e.poster.empty()) {
     out << "<img src=" << attr(e.poster) << " alt=\"frame of " << html_escape(e.title) << "\">\n";
-  } else {
+  } else if (e.sweep.empty()) {
     out << "<p class=\"missing\">not rendered yet (no " << html_escape(e.name) << ".mp4)</p>\n";
   }
   if (!e.plot.empty()) {
     out << "<a href=" << attr(e.plot)
         << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.plot) << " alt=\"diagnostics of "
         << html_escape(e.title) << "\"></a>\n";
+  }
+  if (!e.sweep.empty()) {
+    out << "<a href=" << attr(e.sweep)
+        << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.sweep)
+        << " alt=\"parameter sweep of " << html_escape(e.title) << "\"></a>\n";
   }
   out << "</div>\n";
 }
@@ -58,6 +63,8 @@ void write_entry(std::ostream& out, const GalleryEntry& e) {
   write_media(out, e);
   out << "<p class=\"files\">" << html_escape(e.name);
   if (!e.video.empty()) out << " · <a href=" << attr(e.video) << ">MP4</a>";
+  if (!e.sweep_csv.empty())
+    out << " · <a href=" << attr(e.sweep_csv) << ">" << html_escape(e.sweep_csv) << "</a>";
   for (const auto& csv : e.csvs) {
     const std::string file = csv.substr(csv.rfind('/') + 1);  // npos + 1 = 0: the whole path
     out << " · <a href=" << attr(csv) << ">" << html_escape(file) << "</a>";
@@ -100,7 +107,8 @@ bool GalleryRank::operator<(const GalleryRank& o) const {
   return name < o.name;
 }
 
-GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_exact) {
+GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_exact,
+                         bool is_sweep) {
   GalleryRank rank;
   rank.name = name;
   const auto starts = [&name](std::string_view prefix) { return name.rfind(prefix, 0) == 0; };
@@ -110,7 +118,7 @@ GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_ex
   if (starts("fig") && digits > 0 && digits <= 4) {
     rank.group = GalleryGroup::paper_figure;
     rank.figure = std::stoi(name.substr(3, digits));
-  } else if (starts("sweep-")) {
+  } else if (is_sweep || starts("sweep-")) {
     rank.group = GalleryGroup::sweep;
   } else if (is_comparison || starts("compare-")) {
     rank.group = GalleryGroup::comparison;

@@ -14,6 +14,8 @@ struct GalleryEntry {
   std::string video;              ///< "<name>.mp4"
   std::string poster;             ///< a frame PNG shown before the clip plays
   std::string plot;               ///< "<name>-plot.png"
+  std::string sweep;              ///< "<name>-sweep.png" (`bookspin sweep`)
+  std::string sweep_csv;          ///< "<name>-sweep.csv"
   std::vector<std::string> csvs;  ///< diagnostics CSVs
 };
 
@@ -33,7 +35,8 @@ enum class GalleryGroup { paper_figure, exact, comparison, other, sweep };
 ///  2. the exact motion: a single scene of model kind `exact` or named `exact-…`;
 ///  3. comparisons: a scene with [[compare]] entries or named `compare-…`;
 ///  4. every other scene (other bodies, …);
-///  5. sweeps: named `sweep-…`.
+///  5. sweeps: a scene with a parameter sweep's outputs (`<name>-sweep.png` or `.csv`), a
+///     scene file in a `sweeps/` folder, or one named `sweep-…`.
 /// Within a group, by figure number, then by name. Returns a key that sorts in page order.
 struct GalleryRank {
   GalleryGroup group = GalleryGroup::other;
@@ -41,7 +44,8 @@ struct GalleryRank {
   std::string name;
   bool operator<(const GalleryRank& o) const;
 };
-GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_exact);
+GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_exact,
+                         bool is_sweep = false);
 
 /// `text` with &, <, >, " and ' replaced by character references, safe in element text and
 /// in quoted attribute values.

@@ -60,8 +60,12 @@ struct Diagnostics {
 
 /// What the simulator hands to the rest of the pipeline each frame.
 struct BookPose {
-  Corners corners;  ///< 3×8 world-space corners
+  Corners corners;  ///< 3×8 world-space corners (the book's, or the body's cage: §12)
   Diagnostics diagnostics;
+  /// 3×V world-space surface of a body that deforms by itself (the lattice, §13), vertex i
+  /// the body's rest vertex i; empty (0 columns) for every other model, whose surface follows
+  /// the corners.
+  Eigen::Matrix3Xd surface;
 };
 
 /// A book simulator: pure physics, deterministic, no I/O.
@@ -82,8 +86,11 @@ class Simulator {
   /// Why the run stopped when finite() is false for a reason other than overflow (e.g.
   /// "implicit midpoint: fixed-point iteration did not converge at t = …"); empty otherwise.
   virtual std::string divergence_reason() const { return {}; }
+  /// The body's surface as this model deforms it (3×V, world), for models whose surface does
+  /// not follow the 8 corners (the lattice, docs/physics.md §13); empty (3×0) otherwise.
+  virtual Eigen::Matrix3Xd deformed_surface() const { return Eigen::Matrix3Xd(3, 0); }
 
-  BookPose pose() const { return {corners(), diagnostics()}; }
+  BookPose pose() const { return {corners(), diagnostics(), deformed_surface()}; }
 };
 
 /// The seeded, deterministic jiggle (docs/physics.md §5): a vector uniform in

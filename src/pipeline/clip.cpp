@@ -64,6 +64,7 @@ ClipResult render_single(const ClipRequest& request) {
 
   ClipResult result;
   FrameSource source(scene);
+  const BodyDrawing drawing(scene.body);
   ShownFrame frame;  // the simulation side, a frame or two ahead of the display side
   FrameFinisher finisher(request, sinks, result);
   for (int index = 0; index < scene.frames; ++index) {
@@ -71,7 +72,7 @@ ClipResult render_single(const ClipRequest& request) {
     const std::size_t samples = frame.history.size();
     advance(source, index, scene, frame);
     result.diverged_at = frame.diverged_at;
-    renderer.submit(frame_input_for(frame.pose));
+    renderer.submit(drawing.input_for(frame.pose));
     finisher.expect({index, frame.t, frame.diverged_at, frame.pose.diagnostics,
                      frame.history.size() > samples});
     // While this frame is drawn and read back, the previous one is decorated and queued.

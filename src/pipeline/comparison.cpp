@@ -4,6 +4,8 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <tuple>
 
 #include "output/diagnostics_csv.hpp"
 #include "overlay/cairo_canvas.hpp"
@@ -11,6 +13,7 @@
 #include "pipeline/decoration.hpp"
 #include "pipeline/frame.hpp"
 #include "pipeline/render_settings.hpp"
+#include "pipeline/sphere_view.hpp"
 
 namespace bookspin::pipeline {
 
@@ -18,9 +21,10 @@ namespace {
 
 /// One panel's run. Not movable: the FrameSource keeps a reference to `scene`.
 struct TileState {
-  explicit TileState(scene::Scene s) : scene(std::move(s)), source(scene) {}
+  explicit TileState(scene::Scene s) : scene(std::move(s)), source(scene), drawing(scene.body) {}
   scene::Scene scene;  ///< the comparison scene with this panel's model
   FrameSource source;
+  BodyDrawing drawing;
   ShownFrame frame;
 };
 using Tiles = std::vector<std::unique_ptr<TileState>>;
@@ -78,11 +82,21 @@ std::vector<overlay::CaptionLine> tile_caption(const TileState& p) {
 void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& layout,
               const Tiles& panels) {
   const double t = panels.front()->frame.t;
-  if (layout.plots) {
+  std::optional<PixelRect> plots = layout.plots;
+  if (scene.render.sphere) {
+    // One trail per tile, in the tile's colour in the plots (palette order).
+    std::vector<SphereRun> trails;
+    for (std::size_t i = 0; i < panels.size(); ++i)
+      trails.push_back({&panels[i]->frame.history, palette_colour(i)});
+    PixelRect rect = sphere_rect(frame.width, frame.height, frame.width);
+    if (plots) std::tie(rect, *plots) = split_for_sphere(*plots);
+    overlay::draw_sphere(frame, rect, sphere_spec(sphere_moments(scene), trails));
+  }
+  if (plots) {
     std::vector<PanelRun> runs;
     for (const auto& p : panels)
       runs.push_back({p->scene.title, p->scene.model.kind, &p->frame.history});
-    draw_panel(frame, *layout.plots, panel_plots(runs, clip_end_time(scene), t));
+    draw_panel(frame, *plots, panel_plots(runs, clip_end_time(scene), t));
   }
   {
     const PixelRect& strip = layout.header;
@@ -109,7 +123,7 @@ RgbaImage compose(const scene::Scene& scene, const CompareLayout& layout,
   RgbaImage frame = blank_frame(scene.render.width, scene.render.height);
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const PixelRect& tile = layout.tiles[i];
-    blit(frame, renderer.render(frame_input_for(panels[i]->frame.pose)), static_cast<int>(tile.x),
+    blit(frame, renderer.render(panels[i]->drawing.input_for(panels[i]->frame.pose)), static_cast<int>(tile.x),
          static_cast<int>(tile.y));
   }
   decorate(frame, scene, layout, panels);

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "pipeline/panel.hpp"
+#include "pipeline/sphere_view.hpp"
 
 namespace bookspin::pipeline {
 
@@ -54,6 +55,13 @@ void decorate_frame(RgbaImage& image, const scene::Scene& scene, double t,
     draw_panel(image, rect, panel_plots(single_run(scene, history), clip_end_time(scene), t));
     caption.max_width = rect.x - 0.03 * image.height;  // keep clear of the panel
     centre_x = 0.5 * rect.x;
+  }
+  if (scene.render.sphere) {
+    const double book_width = scene.render.panel ? panel_rect(image.width, image.height).x
+                                                 : static_cast<double>(image.width);
+    overlay::draw_sphere(
+        image, sphere_rect(image.width, image.height, book_width),
+        sphere_spec(sphere_moments(scene), {SphereRun{&history, palette_colour(0)}}));
   }
   overlay::draw_caption(image, caption_for(scene, t, diverged_at), caption);
   if (diverged_at) overlay::draw_banner(image, divergence_text(*diverged_at), centre_x);

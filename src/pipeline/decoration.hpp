@@ -23,8 +23,9 @@ std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double 
 std::string model_line(const scene::Scene& scene);
 
 /// Decorates a rendered frame of `scene` at time `t`: with render.panel the live plots of
-/// `history` (every frame so far) on the right, then the caption (kept within the book's
-/// part), then after a divergence the "diverged at" banner.
+/// `history` (every frame so far) on the right, with render.sphere the momentum sphere inset
+/// at the left edge (sphere_view.hpp) with `history`'s trail, then the caption (kept within the
+/// book's part), then after a divergence the "diverged at" banner.
 void decorate_frame(RgbaImage& image, const scene::Scene& scene, double t,
                     std::optional<double> diverged_at, const DiagnosticsHistory& history);
 

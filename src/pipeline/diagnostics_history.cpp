@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "physics/polhode.hpp"
+
 namespace bookspin::pipeline {
 
 void DiagnosticsHistory::add(const physics::Diagnostics& d) {
@@ -16,6 +18,7 @@ void DiagnosticsHistory::add(const physics::Diagnostics& d) {
   strain_max.push_back(d.strain_max);
   quaternion_deviation.push_back(d.quaternion_norm - 1.0);
   orthogonality_error.push_back(d.orthogonality_error);
+  momentum_direction.push_back(physics::momentum_direction_body(d));
 }
 
 }  // namespace bookspin::pipeline

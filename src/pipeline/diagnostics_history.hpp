@@ -15,7 +15,9 @@ struct DiagnosticsHistory {
   std::vector<double> strain_max;                 ///< max |len/rest − 1|
   std::vector<double> quaternion_deviation;       ///< |q| − 1
   std::vector<double> orthogonality_error;        ///< ‖RᵀR − I‖_F
-  double energy0 = 0.0;                           ///< E of the first sample
+  /// u = RᵀL/|L|, body frame, unit (physics::momentum_direction_body; docs/physics.md §15)
+  std::vector<Eigen::Vector3d> momentum_direction;
+  double energy0 = 0.0;  ///< E of the first sample
 
   /// Appends one frame's sample; the first sample fixes E0.
   void add(const physics::Diagnostics& d);

@@ -29,7 +29,7 @@ ShownFrame simulate_to(const scene::Scene& scene, int index) {
 
 RgbaImage render_frame(const scene::Scene& scene, render::Renderer& renderer,
                        const ShownFrame& frame) {
-  RgbaImage image = renderer.render(frame_input_for(frame.pose));
+  RgbaImage image = renderer.render(BodyDrawing(scene.body).input_for(frame.pose));
   decorate_frame(image, scene, frame.t, frame.diverged_at, frame.history);
   return image;
 }

@@ -59,10 +59,10 @@ std::string surface_hash(const physics::Body& body) {
   return output::sha256_text(bytes);
 }
 
-/// The head shared by every manifest; `options` are the command's output options as JSON
-/// members (indented by four spaces, comma-separated).
-std::string head(const std::string& command, const std::string& options,
-                 const scene::Scene& scene) {
+}  // namespace
+
+std::string manifest_head(const std::string& command, const std::string& options,
+                          const scene::Scene& scene) {
   std::ostringstream out;
   out << "  \"manifest\": 1,\n"
       << "  \"command\": " << scene::json_string(command) << ",\n"
@@ -77,8 +77,6 @@ std::string head(const std::string& command, const std::string& options,
   out << inputs_json(scene);
   return out.str();
 }
-
-}  // namespace
 
 std::string program_version() { return BOOKSPIN_VERSION; }
 
@@ -104,7 +102,7 @@ std::string clip_manifest_head(const ClipRequest& request) {
   options << "    \"frames\": " << request.scene.frames << ",\n"
           << "    \"png\": " << (request.write_png ? "true" : "false") << ",\n"
           << "    \"png_compression\": " << sinks.png_compression << "\n";
-  return head("render", options.str(), request.scene);
+  return manifest_head("render", options.str(), request.scene);
 }
 
 std::vector<std::string> clip_outputs(const ClipRequest& request) {
@@ -134,7 +132,7 @@ std::string plot_manifest_head(const PlotRequest& request) {
   std::ostringstream options;
   options << "    \"width\": " << request.width << ",\n"
           << "    \"height\": " << request.height << "\n";
-  return head("plot", options.str(), request.scene);
+  return manifest_head("plot", options.str(), request.scene);
 }
 
 std::vector<std::string> plot_outputs(const PlotRequest& request) {

@@ -36,6 +36,11 @@ std::string clip_manifest_head(const ClipRequest& request);
 /// frame PNG (unless !write_png) and the diagnostics CSVs.
 std::vector<std::string> clip_outputs(const ClipRequest& request);
 
+/// The head of any command's manifest: `options` are its output options as JSON members, each
+/// line indented by four spaces, comma-separated. Throws InputError.
+std::string manifest_head(const std::string& command, const std::string& options,
+                          const scene::Scene& scene);
+
 /// OUT/<name>/plot-manifest.json.
 std::filesystem::path plot_manifest_path(const std::filesystem::path& out_dir,
                                          const std::string& name);

@@ -50,6 +50,15 @@ Camera default_camera(double bounding_radius, int width, int height) {
   return camera;
 }
 
+double bounding_radius(const Eigen::Matrix3Xd& points) {
+  if (points.cols() == 0) throw RenderError("bounding_radius: no points");
+  if (!points.allFinite()) throw RenderError("bounding_radius: a point is not finite");
+  const double radius = points.colwise().norm().maxCoeff();
+  if (!(radius > 0.0) || !std::isfinite(radius))
+    throw RenderError("bounding_radius: the points span no sphere about the origin");
+  return radius;
+}
+
 Eigen::Matrix4d view_matrix(const Camera& camera) {
   validate_camera(camera);
   const Eigen::Vector3d f = (camera.target - camera.eye).normalized();

@@ -9,6 +9,7 @@
 #include "render/book_textures.hpp"
 #include "render/gl_util.hpp"
 #include "render/marker_mesh.hpp"
+#include "render/surface.hpp"
 
 namespace bookspin::render {
 
@@ -51,6 +52,31 @@ class BookPass {
   SolidProgram solid_;
   BookTextures textures_;
   GLint specular_location_, shininess_location_;
+};
+
+/// A lit triangle surface (any body, a deformed lattice) with the book's lights: indices and
+/// face colours uploaded once per topology, positions and normals streamed every frame.
+class SurfacePass {
+ public:
+  SurfacePass();
+  /// Makes `surface.topology` (non-null) the uploaded one if it is not already, and checks
+  /// that the positions cover its indices. Throws std::invalid_argument for a bad topology
+  /// (validate_topology) or fewer positions than its indices need, RenderError if the GL
+  /// cannot hold it (more triangles than GL_MAX_TEXTURE_BUFFER_SIZE).
+  void prepare(const SurfaceFrame& surface);
+  /// Draws `surface` (prepared; positions drawable: positions_drawable).
+  void draw(const SurfaceFrame& surface, const ViewProjection& camera);
+
+ private:
+  void upload(const std::shared_ptr<const SurfaceTopology>& topology);
+
+  SolidProgram solid_;  // its vbo holds the positions
+  BufferHandle normal_vbo_, index_buffer_, colour_buffer_, face_normal_buffer_;
+  TextureHandle colour_texture_, face_normal_texture_;
+  GLint smooth_location_;
+  /// Held, not only compared, so that its address cannot be reused by another topology.
+  std::shared_ptr<const SurfaceTopology> uploaded_;
+  int vertex_count_ = 0;  ///< vertices the uploaded triangles use
 };
 
 /// Arrows and axes: one streamed vertex buffer, one draw.

@@ -59,6 +59,7 @@ struct Renderer::Impl {
   std::optional<BackgroundPass> background;
   std::optional<BookPass> book;
   std::optional<MarkerPass> markers;
+  std::optional<SurfacePass> surface;  ///< made for the first frame that has a surface
   PixelReader reader{kPipelineDepth};
   ViewProjection camera;
   bool background_saved = false;
@@ -86,17 +87,24 @@ struct Renderer::Impl {
       if (context) context->make_current();
     } catch (...) {  // nothing sensible to do in a destructor; the driver frees on exit
     }
+    surface.reset();
     markers.reset();
     book.reset();
     background.reset();
     target.reset();
   }
 
-  /// Where this frame's book and markers can put pixels.
+  /// Where this frame's book (or surface: `surface_positions`, 3×V world, may be empty) and
+  /// markers can put pixels.
   PixelRegion drawn_box(const std::vector<BookVertex>& book_mesh,
+                        const Eigen::Matrix3Xd& surface_positions,
                         const std::vector<MarkerVertex>& marker_mesh) const {
     ScreenBounds bounds(camera.projection * camera.view, settings.width, settings.height);
     add_vertices(bounds, book_mesh);
+    for (Eigen::Index v = 0; v < surface_positions.cols(); ++v) {
+      const Eigen::Vector3f p = surface_positions.col(v).cast<float>();
+      bounds.add({p.x(), p.y(), p.z()});
+    }
     add_vertices(bounds, marker_mesh);
     return bounds.box();
   }
@@ -107,13 +115,23 @@ struct Renderer::Impl {
   /// image is the same as redrawing the whole frame, for a fraction of the work.
   void draw(const FrameInput& frame) {
     context->make_current();
-    const std::vector<BookVertex> book_mesh = build_book_mesh(frame.corners);
+    const bool has_surface = frame.surface.topology != nullptr;
+    if (has_surface) {  // a malformed surface throws before anything is drawn
+      if (!surface) surface.emplace();
+      surface->prepare(frame.surface);
+    }
+    const bool draw_surface = has_surface && positions_drawable(frame.surface.positions);
+    const std::vector<BookVertex> book_mesh =
+        has_surface ? std::vector<BookVertex>{} : build_book_mesh(frame.corners);
+    static const Eigen::Matrix3Xd no_positions(3, 0);
+    const Eigen::Matrix3Xd& surface_positions =
+        draw_surface ? frame.surface.positions : no_positions;
     std::vector<MarkerVertex> marker_mesh;
     if (settings.show_angular_momentum || settings.show_body_axes) {
       marker_mesh = build_markers(frame.corners, frame.angular_momentum_direction,
                                   settings.show_angular_momentum, settings.show_body_axes);
     }
-    const PixelRegion box = drawn_box(book_mesh, marker_mesh);
+    const PixelRegion box = drawn_box(book_mesh, surface_positions, marker_mesh);
     const PixelRegion dirty = united(box, previous_box);
     if (!background_saved) {
       target->bind_for_drawing();
@@ -128,6 +146,7 @@ struct Renderer::Impl {
     glScissor(dirty.x, dirty.y, dirty.width, dirty.height);
     glClear(GL_DEPTH_BUFFER_BIT);  // no colour clear: the background covers every pixel
     book->draw(book_mesh, camera);
+    if (draw_surface) surface->draw(frame.surface, camera);
     if (!marker_mesh.empty()) markers->draw(marker_mesh, camera);
     glDisable(GL_SCISSOR_TEST);
     check_gl("drawing a frame");

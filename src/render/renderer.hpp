@@ -1,6 +1,7 @@
 #pragma once
-// The render stage's door: draws a book given as 8 world-space corners, off-screen, headless
-// (EGL, OpenGL 3.3 core), into an RGBA image. Knows nothing of physics.
+// The render stage's door: draws a book given as 8 world-space corners, or any triangle
+// surface given by its world positions, off-screen, headless (EGL, OpenGL 3.3 core), into an
+// RGBA image. Knows nothing of physics.
 #include <Eigen/Dense>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "render/camera.hpp"
 #include "render/egl_context.hpp"
 #include "render/render_error.hpp"
+#include "render/surface.hpp"
 
 namespace bookspin::render {
 
@@ -40,7 +42,7 @@ struct RenderSettings {
   Camera camera = default_camera(default_bounding_radius, 1280, 720);
   FaceTextures textures;
   bool show_angular_momentum = false;  ///< yellow arrow from the origin along L
-  bool show_body_axes = false;         ///< red x, green y, blue z from the book's centre
+  bool show_body_axes = false;         ///< red x, green y, blue z from the centre of the 8 corners
   int msaa_samples = 4;                ///< 1 = off; clamped to GL_MAX_SAMPLES
   /// Anisotropic texture filtering cap; 1 = trilinear only; 0 = automatic (kAutoAnisotropy):
   /// 4× on a GPU, enough for covers seen nearly edge-on, and trilinear on a software
@@ -53,10 +55,15 @@ struct RenderSettings {
 struct FrameInput {
   /// 3×8, world, column p = corner p (docs/physics.md §1: bit 0 = x, bit 1 = y, bit 2 = z).
   /// Drawn exactly as given (stretched or exploded books too); any non-finite corner →
-  /// no book is drawn, only the background (and the L arrow if enabled).
+  /// no book is drawn, only the background (and the L arrow if enabled). With a surface,
+  /// the book is not drawn and the corners (the body's box) only place the body axes.
   Eigen::Matrix<double, 3, 8> corners = Eigen::Matrix<double, 3, 8>::Zero();
   /// World direction of the angular momentum (any length; zero = no arrow).
   Eigen::Vector3d angular_momentum_direction = Eigen::Vector3d::Zero();
+  /// When surface.topology is set, this surface is drawn instead of the book, lit with the
+  /// book's lights (surface.hpp); a non-finite position → no surface, only the background
+  /// and markers.
+  SurfaceFrame surface{};
 };
 
 /// Owns a headless GL context (EglContext), the face textures and the shaders.
@@ -76,7 +83,9 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   /// Renders one frame: width×height RGBA, top row first, opaque. Throws RenderError on a
-  /// GL failure. Synchronous (tests, stills); frames in flight from submit() are unaffected.
+  /// GL failure, std::invalid_argument for a malformed surface (validate_topology, or fewer
+  /// positions than its triangles use). Synchronous (tests, stills); frames in flight from
+  /// submit() are unaffected.
   RgbaImage render(const FrameInput& frame);
 
   /// Pipelined rendering (the render command's path): draws `frame` and starts its

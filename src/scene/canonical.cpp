@@ -69,6 +69,7 @@ void add_render(Members& m, const RenderOptions& r, const std::filesystem::path&
   m.emplace_back("render.anisotropy", std::to_string(r.anisotropy));
   m.emplace_back("render.msaa", std::to_string(r.msaa));
   m.emplace_back("render.panel", boolean(r.panel));
+  m.emplace_back("render.sphere", boolean(r.sphere));
 }
 
 }  // namespace

@@ -162,6 +162,7 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
     r.fail("render.preset", "unknown preset '" + o.preset + "'");
   o.png_compression = static_cast<int>(r.integer("render.png_compression", 1, 0, 9));
   o.panel = r.boolean("render.panel", false);
+  o.sphere = r.boolean("render.sphere", false);
   o.anisotropy = static_cast<int>(r.integer("render.anisotropy", 0, 0, 16));
   o.msaa = static_cast<int>(r.integer("render.msaa", o.msaa, 1, 8));
   if (o.msaa != 1 && o.msaa != 2 && o.msaa != 4 && o.msaa != 8)

@@ -36,6 +36,10 @@ struct RenderOptions {
   /// Live plots beside the book (ω, energy drift, shape): the book is framed in the left
   /// 60% of the frame and the plots fill the right 40%.
   bool panel = false;
+  /// The momentum sphere inset (docs/physics.md §15): polhodes, separatrices and the run's
+  /// body-frame L/|L| with its trail, drawn at the left edge of the book's part of the frame
+  /// (a comparison: one trail per tile, atop the plot column).
+  bool sphere = false;
 };
 
 /// One tile of a comparison scene (`[[compare]]`): the scene's book, initial state, time

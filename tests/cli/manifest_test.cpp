@@ -240,5 +240,23 @@ TEST(Manifest, PlotAndGallerySkipWhenUpToDate) {
   EXPECT_NE(read_file(box.out / "index.html").find("tiny.mp4"), std::string::npos);
 }
 
+TEST(Manifest, WholeSweepSkipsWhenUpToDate) {
+  const Sandbox box("manifest_sweep");
+  const auto sweep = [&box](const std::string& measures) {
+    return run_bookspin("sweep " + box.scene.string() +
+                        " --vary 'initial.jiggle=0:0.001:2' --measure " + measures + " -j 1 -o " +
+                        box.out.string());
+  };
+  const CliResult first = sweep("energy_drift");
+  ASSERT_EQ(first.status, 0) << first.output;
+  EXPECT_NE(first.output.find("wrote"), std::string::npos) << first.output;
+  const CliResult second = sweep("energy_drift");
+  EXPECT_NE(second.output.find("up to date: tiny-sweep"), std::string::npos) << second.output;
+  EXPECT_NE(sweep("energy_drift,diverged_at").output.find("wrote"), std::string::npos);
+  fs::remove(box.out / "tiny-sweep.png");
+  EXPECT_NE(sweep("energy_drift,diverged_at").output.find("wrote"), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(box.out / "tiny-sweep.png"));
+}
+
 }  // namespace
 }  // namespace bookspin::cli

@@ -52,7 +52,7 @@ TEST(GalleryPage, EscapesTitlesAndAttributes) {
 TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
   struct Scene {
     std::string name;
-    bool comparison = false, exact = false;
+    bool comparison = false, exact = false, sweep = false;
   };
   const std::vector<Scene> given{{"sweep-dt"},
                                  {"compare-methods-x", true},
@@ -64,10 +64,11 @@ TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
                                  {"fig10-matrix-no-normalization"},
                                  {"many-methods", true},
                                  {"fig9-short"},
-                                 {"aaa-body"}};
+                                 {"aaa-body"},
+                                 {"flip-time-vs-perturbation", false, false, true}};
   std::vector<std::pair<cli::GalleryRank, std::string>> ranked;
   for (const auto& s : given)
-    ranked.emplace_back(cli::gallery_rank(s.name, s.comparison, s.exact), s.name);
+    ranked.emplace_back(cli::gallery_rank(s.name, s.comparison, s.exact, s.sweep), s.name);
   std::sort(ranked.begin(), ranked.end());
   std::vector<std::string> order;
   for (const auto& [rank, name] : ranked) order.push_back(name);
@@ -81,6 +82,7 @@ TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
                                           "many-methods",
                                           "aaa-body",
                                           "mesh-teapot",
+                                          "flip-time-vs-perturbation",
                                           "sweep-dt"};
   EXPECT_EQ(order, expected);
 }

@@ -45,6 +45,10 @@ std::vector<std::string> figure_scene_names() {
 
 scene::Scene figure_scene(const std::string& name, std::vector<std::string> overrides) {
   const std::string size = std::to_string(kGoldenSize);
+  const bool sphere_chosen = std::any_of(overrides.begin(), overrides.end(), [](const auto& o) {
+    return o.rfind("render.sphere=", 0) == 0;
+  });
+  if (!sphere_chosen) overrides.insert(overrides.begin(), "render.sphere=false");
   overrides.insert(overrides.begin(), {"render.width=" + size, "render.height=" + size});
   return scene::parse_scene(scenes_dir() / (name + ".toml"), overrides);
 }

@@ -16,7 +16,9 @@ inline constexpr int kGoldenSize = 256;
 /// The stems of scenes/fig*.toml, sorted (every figure gets goldens automatically).
 std::vector<std::string> figure_scene_names();
 
-/// scenes/<name>.toml at kGoldenSize², with further `overrides` ("key=value", TOML).
+/// scenes/<name>.toml at kGoldenSize², with further `overrides` ("key=value", TOML). Without
+/// the momentum sphere (render.sphere=false) unless `overrides` set render.sphere: the
+/// figures' goldens predate it and stay as they are; the sphere has goldens of its own.
 scene::Scene figure_scene(const std::string& name, std::vector<std::string> overrides = {});
 
 /// fig09's rigid book at rest (frame 0 = the identity pose), captioned "Face mapping:

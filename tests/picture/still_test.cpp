@@ -21,7 +21,8 @@ std::string frame_file(int index) {
 
 TEST(RenderStill, IsWhatBookspinRenderWrites) {
   const char* scene_name = "fig09-matrix-unstable-x";
-  const std::vector<std::string> overrides{"time.frames=3", "render.show_angular_momentum=true"};
+  const std::vector<std::string> overrides{"time.frames=3", "render.show_angular_momentum=true",
+                                           "render.sphere=true"};
   const auto dir = fresh_output_dir("render-still");
   std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR + "/scenes/" +
                         scene_name + ".toml -o " + dir.string() +

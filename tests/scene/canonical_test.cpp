@@ -63,6 +63,7 @@ TEST(CanonicalScene, EveryValueChangesIt) {
                                        "initial.seed=2",
                                        "time.dt=0.010000000000000002",
                                        "model.lattice_cells=8",
+                                       "render.sphere=true",
                                        "time.steps_per_frame=7",
                                        "time.frames=11",
                                        "render.width=1282",

@@ -1,0 +1,271 @@
+// The lattice particle model (docs/physics.md §13): the one-cell book is the paper's
+// particle model; the T-handle's lattice conserves what it must and flips with the exact
+// motion.
+#include "physics/lattice_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "lattice_shapes.hpp"
+#include "model_helpers.hpp"
+#include "physics/exact_solution.hpp"
+#include "physics/particle_model.hpp"
+
+namespace bookspin::physics {
+namespace {
+
+using testing::box_surface;
+using testing::principal;
+using testing::Surface;
+using testing::t_surface;
+
+LatticeModel book_lattice_model(const Book& book, const ModelConfig& config) {
+  const Surface s = box_surface(-0.5 * book.size, 0.5 * book.size);
+  return LatticeModel(build_lattice(s.vertices, s.triangles, book.mass, 1),
+                      book.principal_moments(), book.body_corners(), config);
+}
+
+// The one-cell lattice of the book against ParticleModel, 1000 steps of 1/60 with a
+// jiggle, every integrator with and without damping and normalization.
+TEST(LatticeModel, OneCellBookIsTheParticleModel) {
+  const Book book = testing::original_book();
+  for (Integrator integrator :
+       {Integrator::euler, Integrator::symplectic_euler, Integrator::velocity_verlet})
+    for (bool damping : {true, false})
+      for (bool normalize : {false, true}) {
+        ModelConfig config = testing::config(ModelKind::particle, normalize, damping);
+        config.integrator = integrator;
+        ParticleModel reference(book, config);
+        LatticeModel lattice = book_lattice_model(book, config);
+        const InitialState initial{testing::original_omega0(0), 1e-3, 7};
+        reference.reset(initial);
+        lattice.reset(initial);
+        const double L0 = reference.diagnostics().L.norm();
+        const double E0 = reference.diagnostics().energy_total;
+        EXPECT_EQ(lattice.diagnostics().L, reference.diagnostics().L);
+        double worst = 0.0;
+        for (int step = 0; step < 1000; ++step) {
+          reference.step(1.0 / 60.0);
+          lattice.step(1.0 / 60.0);
+          const Corners a = reference.corners(), b = lattice.corners();
+          worst = std::max(worst, (a - b).cwiseAbs().maxCoeff() / a.cwiseAbs().maxCoeff());
+        }
+        std::printf("%-16s damping %d normalize %d: largest relative corner difference %.2e\n",
+                    std::string(to_string(integrator)).c_str(), damping, normalize, worst);
+        EXPECT_LE(worst, 1e-12) << to_string(integrator) << " " << damping << normalize;
+        // Without normalization the arithmetic is the same, operation by operation.
+        if (!normalize) {
+          EXPECT_EQ(worst, 0.0);
+        }
+        const Diagnostics d = reference.diagnostics(), e = lattice.diagnostics();
+        EXPECT_NEAR((d.L - e.L).norm(), 0.0, 1e-12 * L0);
+        EXPECT_NEAR(d.energy_total, e.energy_total, 1e-12 * std::max(E0, d.energy_total));
+        EXPECT_NEAR(d.strain_max, e.strain_max, 1e-12);
+        if (d.L.norm() > 0.1 * L0) {  // cos(axis, L) is ill-conditioned where L has gone
+          EXPECT_NEAR((d.cos_axis_L - e.cos_axis_L).norm(), 0.0, 1e-10);
+        }
+      }
+}
+
+/// The T in its principal frame, mass 1, and its mesh's mass properties.
+struct TBody {
+  Surface surface;
+  MassProperties props;
+};
+
+TBody t_body() {
+  TBody t;
+  t.surface = principal(t_surface(), 1.0, t.props);
+  return t;
+}
+
+/// The box around the surface (3×8), the cage corners() reports.
+Corners bounding_cage(const Surface& s) {
+  const Eigen::Vector3d lo = s.vertices.rowwise().minCoeff(), hi = s.vertices.rowwise().maxCoeff();
+  return box_surface(lo, hi).vertices;
+}
+
+/// A step with ω_max·dt ≤ 1 for the lattice at spring constant k.
+double stable_step(const Lattice& lat, double k) { return 1.0 / max_angular_frequency(lat, k); }
+
+// Undamped, unnormalized: symplectic Euler and velocity Verlet conserve the momentum and
+// the angular momentum (central pair forces) to round-off and keep the energy within a
+// small bounded error (docs/physics.md §10, §13).
+TEST(LatticeModel, UndampedTConservesMomentumAndEnergy) {
+  const TBody t = t_body();
+  const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, 8);
+  for (Integrator integrator : {Integrator::symplectic_euler, Integrator::velocity_verlet}) {
+    ModelConfig config = testing::config(ModelKind::particle, false, false, 2000.0);
+    config.integrator = integrator;
+    LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+    model.reset({Eigen::Vector3d(0.05, 1.0, 0.05), 0.0, 1});
+    const Diagnostics d0 = model.diagnostics();
+    const double dt = 0.5 * stable_step(lat, config.spring_constant);
+    double worst_energy = 0.0;
+    for (int step = 1; step <= 4000; ++step) {
+      model.step(dt);
+      if (step % 100 == 0) {
+        const Diagnostics d = model.diagnostics();
+        worst_energy = std::max(worst_energy, std::abs(d.energy_total / d0.energy_total - 1.0));
+        EXPECT_LE((d.L - d0.L).norm(), 1e-12 * d0.L.norm()) << step;
+      }
+    }
+    const Eigen::Vector3d momentum = model.velocities() * lat.mass;
+    std::printf("%s: dt %.2e, momentum %.1e, worst relative energy error %.2e\n",
+                std::string(to_string(integrator)).c_str(), dt, momentum.norm(), worst_energy);
+    EXPECT_LE(momentum.norm(), 1e-13);
+    EXPECT_LE(worst_energy, 1e-3);
+    EXPECT_TRUE(model.finite());
+  }
+}
+
+// Damping forces act along the springs too: with damping the spin's angular momentum stays
+// to round-off while the springs' vibration dies out (docs/physics.md §2, §13).
+TEST(LatticeModel, DampedTKeepsItsAngularMomentum) {
+  const TBody t = t_body();
+  const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, 12);
+  ModelConfig config = testing::config(ModelKind::particle, false, true, 2000.0);
+  config.integrator = Integrator::symplectic_euler;
+  LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+  model.reset({Eigen::Vector3d(0.05, 1.0, 0.05), 1e-3, 3});
+  const Diagnostics d0 = model.diagnostics();
+  // Damping bounds the step more than the springs do: γ_max·dt = 1.
+  const double gamma = max_damping_rate(lat, config.spring_constant);
+  EXPECT_GT(gamma, 5.0 * max_angular_frequency(lat, config.spring_constant));
+  const double dt = 1.0 / gamma;
+  for (int step = 1; step <= 20000; ++step) {
+    model.step(dt);
+    if (step % 100 != 0) continue;
+    const Diagnostics d = model.diagnostics();
+    ASSERT_LE((d.L - d0.L).norm(), 1e-12 * d0.L.norm()) << step;
+  }
+  // The springs stretched under the spin and the damping took the vibration's energy.
+  EXPECT_LT(model.diagnostics().energy_total, d0.energy_total * (1.0 - 1e-5));
+  EXPECT_TRUE(model.finite());
+}
+
+// The rigid cage and the deformed surface follow a spin: after a quarter turn about z at
+// rest shape, corners and surface are the rest ones turned by 90° about the centre of mass.
+TEST(LatticeModel, CageAndSurfaceFollowTheLattice) {
+  const TBody t = t_body();
+  const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, 8);
+  ModelConfig config = testing::config(ModelKind::particle, false, false, 1e5);
+  config.integrator = Integrator::velocity_verlet;
+  LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+  const double omega = 0.2;
+  // Spin about the largest axis (z), stable.
+  model.reset({Eigen::Vector3d(0.0, 0.0, omega), 0.0, 1});
+  const double dt = 0.5 * stable_step(lat, config.spring_constant);
+  const int steps = static_cast<int>(std::lround(0.5 * M_PI / omega / dt));
+  for (int s = 0; s < steps; ++s) model.step(dt);
+  const double angle = omega * steps * dt;
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Vector3d c0 = lat.center_of_mass;
+  const Corners expected = (R * (bounding_cage(t.surface).colwise() - c0)).colwise() + c0;
+  EXPECT_LE((model.corners() - expected).cwiseAbs().maxCoeff(), 2e-3);
+  const Eigen::Matrix3Xd surface = (R * (t.surface.vertices.colwise() - c0)).colwise() + c0;
+  EXPECT_LE((model.deformed_surface() - surface).cwiseAbs().maxCoeff(), 2e-3);
+  const Eigen::Vector3d cos = model.cos_principal_L();
+  EXPECT_NEAR(cos[2], 1.0, 1e-6);  // largest axis along L
+  // ω_body = I_lattice⁻¹ Rᵀ L: the spin itself, not the mesh's I⁻¹ L.
+  EXPECT_NEAR(model.diagnostics().omega_body.z() / omega, 1.0, 1e-3);
+}
+
+/// First time the sign of cos(intermediate axis, L) differs from its sign at t = 0.
+double first_flip_exact(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0, double dt,
+                        double t_end) {
+  const ExactRotation exact(moments, omega0);
+  const Eigen::Vector3d L = exact.angular_momentum_world();
+  double previous = exact.orientation(0.0).col(1).dot(L);
+  for (double t = dt; t < t_end; t += dt) {
+    const double c = exact.orientation(t).col(1).dot(L);
+    if ((c > 0.0) != (previous > 0.0)) {
+      // Linear interpolation between the samples.
+      return t - dt * c / (c - previous);
+    }
+    previous = c;
+  }
+  return -1.0;
+}
+
+// The paper's claim (docs/physics.md §13): a stiff lattice that knows nothing of the
+// inertia tensor flips with the exact motion of the mesh's inertia. Spin about the
+// intermediate axis (y) with a small tilt: the first flip time of the lattice against the
+// exact one, for n = 8, 12, 16, 24; within 5% at 24.
+TEST(LatticeModel, TFlipsWithTheExactModel) {
+  const TBody t = t_body();
+  const Eigen::Vector3d omega0(0.02, 1.0, 0.02);
+  const double k = 3000.0;
+  const double exact = first_flip_exact(t.props.principal_moments, omega0, 1e-3, 100.0);
+  ASSERT_GT(exact, 0.0);
+  std::printf("T moments %.5f %.5f %.5f, exact first flip at t = %.4f\n",
+              t.props.principal_moments[0], t.props.principal_moments[1],
+              t.props.principal_moments[2], exact);
+  double error24 = 1.0;
+  for (int n : {8, 12, 16, 24}) {
+    const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, n);
+    ModelConfig config = testing::config(ModelKind::particle, false, false, k);
+    config.integrator = Integrator::velocity_verlet;
+    LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+    model.reset({omega0, 0.0, 1});
+    const double dt = 0.5 * stable_step(lat, k);
+    const auto start = std::chrono::steady_clock::now();
+    double previous = model.diagnostics().cos_axis_L[1], flip = -1.0, strain = 0.0;
+    long steps = 0;
+    for (double time = dt; time < 2.0 * exact && flip < 0.0; time += dt, ++steps) {
+      model.step(dt);
+      if (steps % 20 != 0) continue;
+      const Diagnostics d = model.diagnostics();
+      strain = std::max(strain, d.strain_max);
+      if ((d.cos_axis_L[1] > 0.0) != (previous > 0.0))
+        flip = d.t - 20 * dt * d.cos_axis_L[1] / (d.cos_axis_L[1] - previous);
+      previous = d.cos_axis_L[1];
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double error = flip / exact - 1.0;
+    std::printf(
+        "  n=%2d particles %5d springs %6d dt %.2e steps %6ld (%.2f us/step): first flip "
+        "%.4f, exact %.4f, rel %+.4f, lattice moments err %+.4f %+.4f %+.4f, strain %.1e\n",
+        n, lat.particles(), lat.spring_count(), dt, steps, 1e6 * seconds / steps, flip, exact,
+        error, lat.principal_moments[0] / t.props.principal_moments[0] - 1.0,
+        lat.principal_moments[1] / t.props.principal_moments[1] - 1.0,
+        lat.principal_moments[2] / t.props.principal_moments[2] - 1.0, strain);
+    EXPECT_GT(flip, 0.0) << "n = " << n;
+    if (n == 24) error24 = std::abs(error);
+  }
+  EXPECT_LE(error24, 0.05);
+}
+
+// cos_principal_L() sorts the axes by moment: the book's smallest moment is about y, its
+// intermediate about x (docs/physics.md §1).
+TEST(LatticeModel, PrincipalCosinesAreSortedByMoment) {
+  const Book book = testing::original_book();
+  ModelConfig config = testing::config(ModelKind::particle, false, true);
+  LatticeModel model = book_lattice_model(book, config);
+  model.reset({Eigen::Vector3d(0.3, 0.1, 0.2), 0.0, 1});
+  for (int s = 0; s < 200; ++s) model.step(1.0 / 60.0);
+  const Eigen::Vector3d cos = model.cos_principal_L(), axis = model.diagnostics().cos_axis_L;
+  EXPECT_NEAR(cos[0], axis[1], 1e-15);
+  EXPECT_NEAR(cos[1], axis[0], 1e-15);
+  EXPECT_NEAR(cos[2], axis[2], 1e-15);
+  EXPECT_GT(std::abs(cos[0] - cos[1]), 1e-3);  // the order matters here
+}
+
+TEST(LatticeModel, RejectsWhatItCannotRun) {
+  const Book book;
+  const Surface s = box_surface(-0.5 * book.size, 0.5 * book.size);
+  const Lattice lat = build_lattice(s.vertices, s.triangles, book.mass, 1);
+  ModelConfig config;
+  config.integrator = Integrator::rk4;
+  EXPECT_THROW(LatticeModel(lat, book.principal_moments(), book.body_corners(), config),
+               std::invalid_argument);
+  EXPECT_THROW(LatticeModel(lat, Eigen::Vector3d(1, 0, 1), book.body_corners(), ModelConfig{}),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace bookspin::physics
