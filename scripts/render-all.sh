@@ -5,7 +5,8 @@
 # runs, one line per finished scene ("[3/14] fig05-…: rendered, 41 s"); at the end one table
 # (scene, frames, status, seconds), the total time and the disk space under OUT_DIR. Each
 # render's own output goes to OUT_DIR/.logs/<scene>.log. Stops with a non-zero status if any
-# scene fails.
+# scene fails. GALLERY_EXTRA (environment): more scene files the gallery lists (the sweeps,
+# run before).
 #
 # How the cores are shared: one render keeps about two cores busy even with --jobs 1 (the
 # simulation and GL on one thread, llvmpipe's rasterizer, the encoder and a PNG worker
@@ -87,7 +88,8 @@ echo "render-all: plotting"
 printf '%s\n' "${ok[@]}" |
   xargs -P "$cores" -I{} sh -c '"$0" plot "$1" -o "$2" > /dev/null' "$bookspin" {} "$out" ||
   { echo "render-all: some plots failed"; failed=1; }
-"$bookspin" gallery "$out" "${ok[@]}" || { echo "render-all: the gallery failed"; failed=1; }
+# shellcheck disable=SC2086  # GALLERY_EXTRA: more scene files for the page (sweeps), split
+"$bookspin" gallery "$out" "${ok[@]}" ${GALLERY_EXTRA:-} || { echo "render-all: the gallery failed"; failed=1; }
 
 printf '\n%-36s %7s %8s  %s\n' scene frames seconds status
 for scene in "$@"; do

@@ -107,7 +107,9 @@ int gallery_command(const GalleryOptions& options) {
   // Every scene is parsed first, so a bad one fails before anything is written.
   for (const auto& path : options.scene_paths) {
     const scene::Scene scene = scene::parse_scene(path);
-    const bool exact = scene.compare.empty() && scene.model.kind == physics::ModelKind::exact;
+    // The exact motion of the book; other bodies' exact runs go with the other bodies.
+    const bool exact = scene.compare.empty() && scene.model.kind == physics::ModelKind::exact &&
+                       scene.body.shape == physics::BodyShape::book;
     GalleryEntry entry = entry_for(out, scene);
     const bool sweep = !entry.sweep.empty() || !entry.sweep_csv.empty() ||
                        fs::path(path).parent_path().filename() == "sweeps";

@@ -32,7 +32,8 @@ enum class GalleryGroup { paper_figure, exact, comparison, other, sweep };
 
 /// Where a scene goes on the page, by this rule on its name and kind:
 ///  1. `figNN-…`: the paper's figures, by NN;
-///  2. the exact motion: a single scene of model kind `exact` or named `exact-…`;
+///  2. the exact motion: a single scene of the book with model kind `exact`, or named
+///     `exact-…`;
 ///  3. comparisons: a scene with [[compare]] entries or named `compare-…`;
 ///  4. every other scene (other bodies, …);
 ///  5. sweeps: a scene with a parameter sweep's outputs (`<name>-sweep.png` or `.csv`), a
