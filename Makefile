@@ -14,12 +14,13 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j $(JOBS)
 
+# The sweep first, so that the one gallery render-all writes at the end shows it too
+# (GALLERY_EXTRA: scene files the gallery lists beside the rendered ones).
 figures: build
-	@bash scripts/render-all.sh $(BUILD)/bookspin out $(SCENES)
 	$(BUILD)/bookspin sweep sweeps/flip-time-vs-perturbation.toml \
 	  --vary 'initial.angular_velocity[1]=1e-6:1e-2:20:log' \
 	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
-	$(BUILD)/bookspin gallery out $(SCENES) $(SWEEPS)
+	@GALLERY_EXTRA="$(SWEEPS)" bash scripts/render-all.sh $(BUILD)/bookspin out $(SCENES)
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -38,4 +39,4 @@ update-goldens: build
 	BOOKSPIN_UPDATE_GOLDENS=1 $(BUILD)/tests/picture_tests --gtest_brief=1
 
 clean:
-	rm -rf $(BUILD) out/*/ out/*.mp4
+	rm -rf $(BUILD) out/*/ out/*.mp4 out/.logs

@@ -6,11 +6,12 @@ packages=(
   build-essential cmake pkg-config git ca-certificates
   libeigen3-dev libtomlplusplus-dev libcli11-dev libboost-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
-  libpng-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
+  libssl-dev libpng-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
   libassimp-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev
   clang libclang-rt-14-dev
+  chromium chromium-driver python3-selenium
   slurm-wlm munge
 )
 missing=()

@@ -25,6 +25,15 @@ void add_simulate(CLI::App& cli, SimulateOptions& options) {
       ->capture_default_str();
 }
 
+/// --force and --verify of the commands that skip up-to-date outputs.
+void add_freshness_flags(CLI::App* cmd, bool& force, bool& verify, const std::string& manifest) {
+  cmd->add_flag("--force", force,
+                "Make the outputs even when " + manifest + " says they are up to date");
+  cmd->add_flag("--verify", verify,
+                "Up-to-date check: compare every output's SHA-256 with the manifest, not only "
+                "its size");
+}
+
 void add_render(CLI::App& cli, RenderArgs& options) {
   CLI::App* cmd = cli.add_subcommand(
       "render",
@@ -43,6 +52,7 @@ void add_render(CLI::App& cli, RenderArgs& options) {
                   "zlib level of the PNG frames, 0 (fastest) … 9 (smallest); overrides "
                   "render.png_compression")
       ->check(CLI::Range(0, 9));
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/manifest.json");
 }
 
 void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
@@ -76,6 +86,7 @@ void add_plot(CLI::App& cli, PlotOptions& options) {
   cmd->add_option("--height", options.height, "Image height in pixels")
       ->check(CLI::Range(240, scene::kMaxDimension))
       ->capture_default_str();
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/plot-manifest.json");
 }
 
 void add_gallery(CLI::App& cli, GalleryOptions& options) {
@@ -84,7 +95,11 @@ void add_gallery(CLI::App& cli, GalleryOptions& options) {
   cmd->add_option("OUT_DIR", options.out_dir,
                   "Folder holding the rendered clips; the page goes there")
       ->required();
-  cmd->add_option("SCENES", options.scene_paths, "Scene files (TOML), in page order")->required();
+  cmd->add_option("SCENES", options.scene_paths,
+                  "Scene files (TOML); the page orders them (paper figures first, see README)")
+      ->required();
+  cmd->add_flag("--force", options.force,
+                "Write the page even when OUT_DIR/gallery-manifest.json says it is up to date");
 }
 
 void add_inertia(CLI::App& cli, InertiaOptions& options) {
@@ -129,6 +144,7 @@ void add_sweep(CLI::App& cli, SweepOptions& options) {
   cmd->add_option("--merge", options.merge,
                   "Merge shard CSVs into OUT/<scene>-sweep.csv and .png instead of running")
       ->allow_extra_args(true);
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/sweep-manifest.json");
 }
 
 int report(const std::string& message, int code) {

@@ -1,5 +1,6 @@
 #pragma once
 // The bookspin subcommands. Each returns the process exit status.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -23,9 +24,13 @@ struct RenderArgs {
   bool no_png = false;
   int jobs = 0;              ///< worker threads; 0 = number of cores
   int png_compression = -1;  ///< zlib level 0–9 for the frames; −1 = render.png_compression
+  bool force = false;        ///< render even when OUT/<scene>/manifest.json says up to date
+  bool verify = false;       ///< up-to-date check hashes every output (else sizes only)
 };
 
-/// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv.
+/// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv,
+/// then writes out/<name>/manifest.json (output/manifest.hpp). Prints "up to date: <name>"
+/// and renders nothing when the manifest matches this run and its outputs are all there.
 int render_command(const RenderArgs& options);
 
 struct AccuracyOptions {
@@ -47,8 +52,10 @@ struct PlotOptions {
   std::string scene_path;
   std::vector<std::string> overrides;
   std::string out_dir = "out";
-  int width = 1600;   ///< pixels
-  int height = 1000;  ///< pixels
+  int width = 1600;     ///< pixels
+  int height = 1000;    ///< pixels
+  bool force = false;   ///< plot even when OUT/<scene>/plot-manifest.json says up to date
+  bool verify = false;  ///< up-to-date check hashes the PNG (else its size only)
 };
 
 /// Simulates a scene (every panel of a comparison) over its whole run and writes
@@ -59,6 +66,7 @@ int plot_command(const PlotOptions& options);
 struct GalleryOptions {
   std::string out_dir = "out";
   std::vector<std::string> scene_paths;
+  bool force = false;  ///< write the page even when OUT/gallery-manifest.json says up to date
 };
 
 /// Writes OUT/index.html: for each scene its title, description, poster frame, clip
@@ -77,6 +85,12 @@ struct InertiaOptions {
 /// principal frame (docs/physics.md §11); warnings on stderr.
 int inertia_command(const InertiaOptions& options);
 
+/// Prints "up to date: NAME" and returns true when `manifest` vouches for the outputs of a run
+/// with `head` (output::manifest_stale); otherwise notes why they are made again (when there
+/// was a manifest) and returns false.
+bool skip_if_up_to_date(const std::filesystem::path& manifest, const std::string& head,
+                        const std::filesystem::path& out, const std::string& name, bool verify);
+
 struct SweepOptions {
   std::string scene_path;              ///< empty with --merge
   std::vector<std::string> overrides;  ///< --set, before the grid's own
@@ -86,6 +100,8 @@ struct SweepOptions {
   std::string shard;                   ///< "K/N", K from 0; empty = the whole grid
   std::string out_dir = "out";
   std::vector<std::string> merge;  ///< shard CSVs to merge instead of running
+  bool force = false;   ///< run even when OUT/<scene>/sweep-manifest.json says up to date
+  bool verify = false;  ///< up-to-date check hashes the CSV and PNG (else sizes only)
 };
 
 /// Runs a parameter sweep (physics only, docs/physics.md §14) and writes

@@ -1,11 +1,18 @@
 // `bookspin gallery`: OUT/index.html over the clips, frames and plots already under OUT.
+#include <sys/utsname.h>
+
 #include <algorithm>
+#include <ctime>
 #include <fstream>
 #include <iostream>
+#include <thread>
 
 #include "cli/commands.hpp"
 #include "cli/gallery_page.hpp"
 #include "output/atomic_output.hpp"
+#include "output/manifest.hpp"
+#include "output/sha256.hpp"
+#include "pipeline/manifests.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::cli {
@@ -66,18 +73,68 @@ void write_page(const fs::path& path, const std::string& html) {
   file.commit();
 }
 
+/// "HOST, CPU MODEL, N cores" from uname(2) and /proc/cpuinfo (parts it cannot read left out).
+std::string machine() {
+  std::string text;
+  struct utsname u {};
+  if (uname(&u) == 0) text = u.nodename;
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      text += (text.empty() ? "" : ", ") + line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  if (const unsigned cores = std::thread::hardware_concurrency(); cores > 0)
+    text += (text.empty() ? "" : ", ") + std::to_string(cores) + " cores";
+  return text;
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M UTC", &tm);
+  return buffer;
+}
+
 }  // namespace
 
 int gallery_command(const GalleryOptions& options) {
   const fs::path out(options.out_dir);
-  std::vector<GalleryEntry> entries;
+  std::vector<std::pair<GalleryRank, GalleryEntry>> ranked;
   // Every scene is parsed first, so a bad one fails before anything is written.
-  for (const auto& path : options.scene_paths)
-    entries.push_back(entry_for(out, scene::parse_scene(path)));
+  for (const auto& path : options.scene_paths) {
+    const scene::Scene scene = scene::parse_scene(path);
+    // The exact motion of the book; other bodies' exact runs go with the other bodies.
+    const bool exact = scene.compare.empty() && scene.model.kind == physics::ModelKind::exact &&
+                       scene.body.shape == physics::BodyShape::book;
+    GalleryEntry entry = entry_for(out, scene);
+    const bool sweep = !entry.sweep.empty() || !entry.sweep_csv.empty() ||
+                       fs::path(path).parent_path().filename() == "sweeps";
+    ranked.emplace_back(gallery_rank(scene.name, !scene.compare.empty(), exact, sweep),
+                        std::move(entry));
+  }
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<GalleryEntry> entries;
+  for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
+
+  GalleryHeader header{pipeline::program_version(), pipeline::program_build_id(), "", machine()};
+  // Up to date: the same page but for its date (output/manifest.hpp).
+  const std::string head =
+      "  \"manifest\": 1,\n  \"command\": \"gallery\",\n  \"page_sha256\": \"" +
+      output::sha256_text(gallery_html(entries, header)) + "\",\n";
+  const fs::path manifest = out / "gallery-manifest.json";
+  if (!options.force && skip_if_up_to_date(manifest, head, out, "index.html", false))
+    return kExitOk;
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw_output_error("cannot create output directory", out, ec.value());
-  write_page(out / "index.html", gallery_html(entries));
+  header.date = utc_now();
+  write_page(out / "index.html", gallery_html(entries, header));
+  output::write_manifest(manifest, head, "", out, {"index.html"});
   std::cout << "wrote " << (out / "index.html").string() << " (" << entries.size() << " clips)\n";
   return kExitOk;
 }

@@ -1,5 +1,6 @@
 #include "cli/gallery_page.hpp"
 
+#include <cctype>
 #include <sstream>
 
 namespace bookspin::cli {
@@ -19,6 +20,8 @@ h1 { font-size: 1.6rem; }
 .media img.plot { background: #fff; border: 1px solid #ddd; }
 .missing { color: #a33; }
 .files { font-size: .9rem; }
+.about { color: #444; max-width: 60rem; }
+.made { color: #666; font-size: .85rem; }
 )";
 
 /// A path inside an attribute: names are [A-Za-z0-9._-] and '/', escaped anyway. (Built with
@@ -98,13 +101,50 @@ std::string html_escape(std::string_view text) {
   return out;
 }
 
-std::string gallery_html(const std::vector<GalleryEntry>& entries) {
+bool GalleryRank::operator<(const GalleryRank& o) const {
+  if (group != o.group) return group < o.group;
+  if (figure != o.figure) return figure < o.figure;
+  return name < o.name;
+}
+
+GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_exact,
+                         bool is_sweep) {
+  GalleryRank rank;
+  rank.name = name;
+  const auto starts = [&name](std::string_view prefix) { return name.rfind(prefix, 0) == 0; };
+  std::size_t digits = 0;
+  while (3 + digits < name.size() && std::isdigit(static_cast<unsigned char>(name[3 + digits])))
+    ++digits;
+  if (starts("fig") && digits > 0 && digits <= 4) {
+    rank.group = GalleryGroup::paper_figure;
+    rank.figure = std::stoi(name.substr(3, digits));
+  } else if (is_sweep || starts("sweep-")) {
+    rank.group = GalleryGroup::sweep;
+  } else if (is_comparison || starts("compare-")) {
+    rank.group = GalleryGroup::comparison;
+  } else if (is_exact || starts("exact-")) {
+    rank.group = GalleryGroup::exact;
+  }
+  return rank;
+}
+
+std::string gallery_html(const std::vector<GalleryEntry>& entries, const GalleryHeader& header) {
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       << "<link rel=\"icon\" href=\"data:,\">\n"  // no favicon request, so no console error
       << "<title>bookspin: the spinning book, figure by figure</title>\n<style>" << kStyle
-      << "</style>\n</head>\n<body>\n<h1>bookspin: the spinning book, figure by figure</h1>\n";
+      << "</style>\n</head>\n<body>\n<h1>bookspin: the spinning book, figure by figure</h1>\n"
+      << "<p class=\"about\">The clips of bookspin, a simulation of a freely spinning book (the "
+         "tennis-racket or Dzhanibekov effect): the paper's figures 3–12 first, then the exact "
+         "motion, the comparisons of models and methods, other bodies and sweeps. Each clip "
+         "comes with a plot of its diagnostics over the whole run (body-frame &omega;, energy "
+         "drift, shape error) and its CSV files.</p>\n"
+      << "<p class=\"made\">Made with bookspin " << html_escape(header.version) << " (build "
+      << html_escape(header.build_id.substr(0, 12)) << ")";
+  if (!header.date.empty()) out << ", " << html_escape(header.date);
+  if (!header.machine.empty()) out << ", on " << html_escape(header.machine);
+  out << ".</p>\n";
   for (const auto& e : entries) write_entry(out, e);
   out << "</body>\n</html>\n";
   return out.str();

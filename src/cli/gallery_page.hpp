@@ -19,11 +19,41 @@ struct GalleryEntry {
   std::vector<std::string> csvs;  ///< diagnostics CSVs
 };
 
+/// What the page says about how it was made.
+struct GalleryHeader {
+  std::string version;   ///< bookspin's version
+  std::string build_id;  ///< SHA-256 of the bookspin executable (the first 12 digits are shown)
+  std::string date;      ///< when the page was written, e.g. "2026-11-22 01:50 UTC"
+  std::string machine;   ///< host name, CPU model and cores
+};
+
+/// The page's groups, in page order.
+enum class GalleryGroup { paper_figure, exact, comparison, other, sweep };
+
+/// Where a scene goes on the page, by this rule on its name and kind:
+///  1. `figNN-…`: the paper's figures, by NN;
+///  2. the exact motion: a single scene of the book with model kind `exact`, or named
+///     `exact-…`;
+///  3. comparisons: a scene with [[compare]] entries or named `compare-…`;
+///  4. every other scene (other bodies, …);
+///  5. sweeps: a scene with a parameter sweep's outputs (`<name>-sweep.png` or `.csv`), a
+///     scene file in a `sweeps/` folder, or one named `sweep-…`.
+/// Within a group, by figure number, then by name. Returns a key that sorts in page order.
+struct GalleryRank {
+  GalleryGroup group = GalleryGroup::other;
+  int figure = 0;  ///< NN of figNN-…, 0 elsewhere
+  std::string name;
+  bool operator<(const GalleryRank& o) const;
+};
+GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_exact,
+                         bool is_sweep = false);
+
 /// `text` with &, <, >, " and ' replaced by character references, safe in element text and
 /// in quoted attribute values.
 std::string html_escape(std::string_view text);
 
-/// A self-contained HTML5 page (inline CSS, no scripts) listing `entries` in order.
-std::string gallery_html(const std::vector<GalleryEntry>& entries);
+/// A self-contained HTML5 page (inline CSS, no scripts): a header saying what the page is and
+/// how it was made, then `entries` in the order given.
+std::string gallery_html(const std::vector<GalleryEntry>& entries, const GalleryHeader& header);
 
 }  // namespace bookspin::cli

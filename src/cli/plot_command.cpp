@@ -2,6 +2,8 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "output/manifest.hpp"
+#include "pipeline/manifests.hpp"
 #include "pipeline/plot_sheet_run.hpp"
 
 namespace bookspin::cli {
@@ -12,7 +14,15 @@ int plot_command(const PlotOptions& options) {
   request.out_dir = options.out_dir;
   request.width = options.width;
   request.height = options.height;
-  std::cout << "wrote " << pipeline::write_plot_sheet(request).string() << '\n';
+  const auto manifest = pipeline::plot_manifest_path(options.out_dir, request.scene.name);
+  const std::string head = pipeline::plot_manifest_head(request);
+  if (!options.force && skip_if_up_to_date(manifest, head, options.out_dir,
+                                           request.scene.name + "-plot", options.verify))
+    return kExitOk;
+  const auto written = pipeline::write_plot_sheet(request);
+  output::write_manifest(manifest, head, pipeline::manifest_note(request.scene), options.out_dir,
+                         pipeline::plot_outputs(request));
+  std::cout << "wrote " << written.string() << '\n';
   return kExitOk;
 }
 

@@ -1,10 +1,15 @@
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
+#include "output/manifest.hpp"
 #include "pipeline/clip.hpp"
 #include "pipeline/lattice_note.hpp"
+#include "pipeline/manifests.hpp"
+#include "scene/canonical.hpp"
 
 namespace bookspin::cli {
 
@@ -25,23 +30,78 @@ pipeline::ClipRequest clip_request(const RenderArgs& args, scene::Scene scene, P
   return request;
 }
 
-void warn_divergence(const std::string& name, const pipeline::ClipResult& result) {
+/// The divergence warnings of a clip, without the "bookspin: warning: " prefix.
+std::vector<std::string> divergence_warnings(const std::string& name,
+                                             const pipeline::ClipResult& result) {
+  std::vector<std::string> warnings;
   if (result.diverged_at) {
-    std::cerr << "bookspin: warning: " << name
-              << ": simulation diverged at t = " << *result.diverged_at
-              << divergence_because(result.divergence_reason)
-              << "; the clip holds the last finite frame\n";
+    std::ostringstream w;
+    w << name << ": simulation diverged at t = " << *result.diverged_at
+      << divergence_because(result.divergence_reason) << "; the clip holds the last finite frame";
+    warnings.push_back(w.str());
   }
   for (const auto& tile : result.diverged_tiles) {
-    std::cerr << "bookspin: warning: " << name << ": panel '" << tile.label
-              << "' diverged at t = " << tile.t << "; its tile holds the last finite frame\n";
+    std::ostringstream w;
+    w << name << ": panel '" << tile.label << "' diverged at t = " << tile.t
+      << "; its tile holds the last finite frame";
+    warnings.push_back(w.str());
   }
+  return warnings;
+}
+
+/// The manifest's "warnings" member (in its note: recorded, not compared), so that a run
+/// that finds the clip up to date repeats them.
+std::string warnings_json(const std::vector<std::string>& warnings) {
+  std::string json = "  \"warnings\": [";
+  for (std::size_t i = 0; i < warnings.size(); ++i)
+    json.append(i == 0 ? "" : ", ").append(scene::json_string(warnings[i]));
+  return json.append("],\n");
+}
+
+/// The warnings recorded in a manifest by warnings_json(), unescaped (only \" and \\ occur
+/// in them in practice; anything else is kept as written).
+std::vector<std::string> recorded_warnings(const std::filesystem::path& manifest) {
+  std::ifstream in(manifest);
+  std::vector<std::string> warnings;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("  \"warnings\": [", 0) != 0) continue;
+    std::string current;
+    bool inside = false;
+    for (std::size_t i = line.find('[') + 1; i < line.size(); ++i) {
+      const char c = line[i];
+      if (!inside) {
+        inside = c == '"';
+      } else if (c == '\\' && i + 1 < line.size()) {
+        current += line[++i];
+      } else if (c == '"') {
+        warnings.push_back(current);
+        current.clear();
+        inside = false;
+      } else {
+        current += c;
+      }
+    }
+  }
+  return warnings;
 }
 
 }  // namespace
 
 std::string divergence_because(const std::string& reason) {
   return reason.empty() ? "" : "; " + reason;
+}
+
+bool skip_if_up_to_date(const std::filesystem::path& manifest, const std::string& head,
+                        const std::filesystem::path& out, const std::string& name, bool verify) {
+  const std::optional<std::string> stale = output::manifest_stale(manifest, head, out, verify);
+  if (!stale) {
+    std::cout << "up to date: " << name << std::endl;
+    return true;
+  }
+  std::error_code ec;
+  if (std::filesystem::exists(manifest, ec))
+    std::cerr << "bookspin: note: " << name << ": making it again: " << *stale << '\n';
+  return false;
 }
 
 int render_command(const RenderArgs& args) {
@@ -52,16 +112,38 @@ int render_command(const RenderArgs& args) {
   if (const std::string note = pipeline::lattice_note(scene); !note.empty())
     std::cerr << "bookspin: " << note << '\n';
   if (args.frames > 0) scene.frames = args.frames;
-  Progress progress(scene.name, scene.frames);
+  const std::string name = scene.name;
+  Progress progress(name, scene.frames);
   const pipeline::ClipRequest request = clip_request(args, std::move(scene), progress);
-  const pipeline::ClipResult result = pipeline::render_clip(request);
+  const auto manifest = pipeline::clip_manifest_path(args.out_dir, name);
+  const std::string head = pipeline::clip_manifest_head(request);
+  if (!args.force && skip_if_up_to_date(manifest, head, args.out_dir, name, args.verify)) {
+    for (const auto& warning : recorded_warnings(manifest))
+      std::cerr << "bookspin: warning: " << warning << " (when it was rendered)\n";
+    return kExitOk;
+  }
+  // An interrupted render puts no output in place, so the old manifest stays true; one that
+  // fails may have replaced some outputs, so its manifest goes.
+  const pipeline::ClipResult result = [&] {
+    try {
+      return pipeline::render_clip(request);
+    } catch (...) {
+      std::error_code ec;
+      std::filesystem::remove(manifest, ec);
+      throw;
+    }
+  }();
   if (result.signal != 0) {
-    std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << request.scene.name
-              << '\n';
+    std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << name << '\n';
     return 128 + result.signal;
   }
+  const auto warnings = divergence_warnings(name, result);
+  output::write_manifest(manifest, head,
+                         pipeline::manifest_note(request.scene) + warnings_json(warnings),
+                         args.out_dir, pipeline::clip_outputs(request));
   progress.finish(result.frames);
-  warn_divergence(request.scene.name, result);
+  for (const auto& warning : warnings) std::cerr << "bookspin: warning: " << warning << '\n';
+  std::cout << "rendered: " << name << " (" << result.frames << " frames)" << std::endl;
   return kExitOk;
 }
 

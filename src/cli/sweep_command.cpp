@@ -2,11 +2,15 @@
 // (docs/physics.md §14).
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "common/errors.hpp"
+#include "output/manifest.hpp"
+#include "pipeline/manifests.hpp"
 #include "pipeline/sweep.hpp"
+#include "scene/canonical.hpp"
 
 namespace bookspin::cli {
 
@@ -29,6 +33,16 @@ void parse_shard(const std::string& text, int& k, int& n) {
   }
   k = static_cast<int>(kk);
   n = static_cast<int>(nn);
+}
+
+/// The sweep's output options for its manifest: the ranges and the measures as given.
+std::string sweep_options_json(const SweepOptions& options) {
+  std::string json = "    \"vary\": [";
+  for (std::size_t i = 0; i < options.vary.size(); ++i)
+    json.append(i == 0 ? "" : ", ").append(scene::json_string(options.vary[i]));
+  return json.append("],\n    \"measures\": ")
+      .append(scene::json_string(options.measures))
+      .append("\n");
 }
 
 }  // namespace
@@ -57,12 +71,33 @@ int sweep_command(const SweepOptions& options) {
       parse_shard(options.shard, request.shard_index, request.shard_count);
     request.out_dir = options.out_dir;
     request.stop_signal = interrupt_signal;
+    // A whole sweep (not a shard) skips when its manifest says it is up to date
+    // (output/manifest.hpp), like render and plot.
+    const bool whole = options.shard.empty();
+    std::string head;
+    std::filesystem::path manifest;
+    std::optional<scene::Scene> scene;
+    if (whole) {
+      scene = scene::parse_scene(options.scene_path, options.overrides);
+      head = pipeline::manifest_head("sweep", sweep_options_json(options), *scene);
+      manifest = std::filesystem::path(options.out_dir) / scene->name / "sweep-manifest.json";
+      if (!options.force && skip_if_up_to_date(manifest, head, options.out_dir,
+                                               scene->name + "-sweep", options.verify))
+        return kExitOk;
+    }
     const pipeline::SweepResult result = pipeline::run_sweep(request);
     if (result.signal != 0) {
       std::fprintf(stderr, "bookspin: sweep interrupted; nothing written\n");
       return 128 + result.signal;
     }
     written = result.written;
+    if (whole) {
+      std::vector<std::string> outputs;
+      for (const auto& path : written)
+        outputs.push_back(path.lexically_relative(options.out_dir).generic_string());
+      output::write_manifest(manifest, head, pipeline::manifest_note(*scene), options.out_dir,
+                             outputs);
+    }
   }
   for (const auto& path : written) std::printf("wrote %s\n", path.c_str());
   return kExitOk;

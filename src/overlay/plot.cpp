@@ -61,6 +61,8 @@ Axis fit_x(const PlotSpec& spec) {
 }
 
 Axis fit_y(const PlotSpec& spec) {
+  if (spec.y_range && !spec.log_y && spec.y_range->second > spec.y_range->first)
+    return {spec.y_range->first, spec.y_range->second, false};
   return fit_axis(spec.series, false, spec.log_y, spec.min_y_span);
 }
 
@@ -343,6 +345,26 @@ void draw_grid(cairo_t* cr, const Axis& ax, const Axis& ay, const Area& a) {
   cairo_stroke(cr);
 }
 
+/// A triangle on the top or bottom edge of the plot area, in the series' colour, where the
+/// series goes from inside a fixed y range to beyond it (PlotSpec::y_range).
+void mark_range_exits(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, const Area& a) {
+  const double size = 0.45 * a.font;
+  cairo_set_source_rgb(cr, s.r, s.g, s.b);
+  bool inside = true;
+  for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+    if (!usable(s.x[i], ax.log) || !std::isfinite(s.y[i])) continue;
+    const bool above = s.y[i] > ay.hi, below = s.y[i] < ay.lo;
+    if (inside && (above || below)) {
+      const double px = std::clamp(ax.map(s.x[i], a.x0, a.x1), a.x0, a.x1);
+      const double edge = above ? a.y0 : a.y1, tip = above ? edge - size : edge + size;
+      cairo_move_to(cr, px - size, edge), cairo_line_to(cr, px + size, edge);
+      cairo_line_to(cr, px, tip), cairo_close_path(cr);
+      cairo_fill(cr);
+    }
+    inside = !above && !below;
+  }
+}
+
 /// Curves and cursor, clipped to the plot area.
 void draw_data(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay, const Area& a) {
   cairo_save(cr);
@@ -358,6 +380,9 @@ void draw_data(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay
     cairo_move_to(cr, px, a.y0), cairo_line_to(cr, px, a.y1), cairo_stroke(cr);
   }
   cairo_restore(cr);
+  if (spec.y_range && !ay.log) {
+    for (const auto& s : spec.series) mark_range_exits(cr, s, ax, ay, a);
+  }
 }
 
 void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, const Area& a) {

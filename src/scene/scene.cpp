@@ -215,6 +215,7 @@ void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
     std::filesystem::path path(r.string("body.mesh", ""));
     if (path.empty()) r.fail("body.mesh", "must name a mesh file");
     if (path.is_relative()) path = origin.parent_path() / path;
+    s.body_mesh = path.string();
     mesh::TriangleMesh mesh;
     try {
       mesh = mesh::load_mesh(path, scale);

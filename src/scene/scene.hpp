@@ -56,6 +56,8 @@ struct Scene {
   std::string description;  ///< what the clip shows
   /// The simulated body ([body] table, docs/physics.md §12); the book by default.
   physics::Body body;
+  /// body.mesh resolved against the scene file's folder; empty unless body.shape = "mesh".
+  std::string body_mesh;
   /// body.cage: the book itself for the book, else the box around the body's surface in its
   /// principal frame (kept for code that frames or measures the book).
   physics::Book book;

@@ -1,0 +1,140 @@
+#include "output/manifest.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "output/atomic_output.hpp"
+#include "output/sha256.hpp"
+
+namespace bookspin::output {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view kOutputsOpen = "  \"outputs\": [\n";
+constexpr std::string_view kClose = "  ]\n}\n";
+
+struct Entry {
+  std::string path;
+  std::uintmax_t size = 0;
+  std::string sha256;
+};
+
+bool is_hex64(std::string_view s) {
+  if (s.size() != 64) return false;
+  for (char c : s)
+    if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return false;
+  return true;
+}
+
+/// `    {"path": "P", "size": N, "sha256": "H"}` with an optional ',' (written by
+/// write_manifest, which never escapes: output names are [A-Za-z0-9._-/]).
+std::optional<Entry> parse_entry(std::string_view line) {
+  constexpr std::string_view kPath = "    {\"path\": \"",
+                             kSize = "\", \"size\": ", kHash = ", \"sha256\": \"", kEnd = "\"}";
+  if (!line.empty() && line.back() == ',') line.remove_suffix(1);
+  if (line.substr(0, kPath.size()) != kPath) return std::nullopt;
+  line.remove_prefix(kPath.size());
+  const auto path_end = line.find(kSize);
+  if (path_end == std::string_view::npos || path_end == 0) return std::nullopt;
+  Entry e;
+  e.path = std::string(line.substr(0, path_end));
+  if (e.path.find_first_of("\"\\") != std::string::npos) return std::nullopt;
+  line.remove_prefix(path_end + kSize.size());
+  const auto size_end = line.find(kHash);
+  if (size_end == std::string_view::npos || size_end == 0 || size_end > 19) return std::nullopt;
+  for (char c : line.substr(0, size_end)) {
+    if (c < '0' || c > '9') return std::nullopt;
+    e.size = e.size * 10 + static_cast<std::uintmax_t>(c - '0');
+  }
+  line.remove_prefix(size_end + kHash.size());
+  if (line.size() != 64 + kEnd.size() || line.substr(64) != kEnd) return std::nullopt;
+  e.sha256 = std::string(line.substr(0, 64));
+  if (!is_hex64(e.sha256)) return std::nullopt;
+  return e;
+}
+
+/// The outputs listed after `head`, or std::nullopt if the text is not a manifest with
+/// exactly that head.
+std::optional<std::vector<Entry>> entries_after(const std::string& text, std::string_view head,
+                                                bool& head_differs) {
+  head_differs = false;
+  const std::string start = "{\n" + std::string(head);
+  if (text.compare(0, start.size(), start) != 0) {
+    head_differs = true;
+    return std::nullopt;
+  }
+  // The note (not compared) runs up to the outputs.
+  const auto outputs = text.find(kOutputsOpen, start.size());
+  if (outputs == std::string::npos || (outputs != start.size() && text[outputs - 1] != '\n'))
+    return std::nullopt;
+  const std::string expected_start = text.substr(0, outputs) + std::string(kOutputsOpen);
+  if (text.size() < expected_start.size() + kClose.size() ||
+      text.compare(text.size() - kClose.size(), kClose.size(), kClose) != 0)
+    return std::nullopt;
+  std::vector<Entry> entries;
+  std::istringstream lines(
+      text.substr(expected_start.size(), text.size() - expected_start.size() - kClose.size()));
+  std::string line;
+  while (std::getline(lines, line)) {
+    auto e = parse_entry(line);
+    if (!e) return std::nullopt;
+    entries.push_back(std::move(*e));
+  }
+  if (entries.empty()) return std::nullopt;
+  return entries;
+}
+
+}  // namespace
+
+void write_manifest(const fs::path& manifest, std::string_view head, std::string_view note,
+                    const fs::path& root, const std::vector<std::string>& outputs) {
+  std::ostringstream text;
+  text << "{\n" << head << note << kOutputsOpen;
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const fs::path file = root / outputs[i];
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (ec) throw_output_error("cannot read", file, ec.value());
+    const auto hash = sha256_file(file);
+    if (!hash) throw_output_error("cannot read", file, errno);
+    text << "    {\"path\": \"" << outputs[i] << "\", \"size\": " << size << ", \"sha256\": \""
+         << *hash << "\"}" << (i + 1 < outputs.size() ? ",\n" : "\n");
+  }
+  text << kClose;
+  std::error_code ec;
+  fs::create_directories(manifest.parent_path(), ec);
+  if (ec) throw_output_error("cannot create", manifest.parent_path(), ec.value());
+  write_text_file(manifest, text.str());
+}
+
+std::optional<std::string> manifest_stale(const fs::path& manifest, std::string_view head,
+                                          const fs::path& root, bool verify) {
+  std::error_code ec;
+  if (!fs::is_regular_file(manifest, ec)) return "no manifest (" + manifest.string() + ")";
+  std::ifstream in(manifest, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) return "cannot read " + manifest.string();
+  bool head_differs = false;
+  const auto entries = entries_after(text.str(), head, head_differs);
+  if (head_differs) return "the scene, its inputs, the options or the program changed";
+  if (!entries) return manifest.string() + " is not a manifest bookspin wrote";
+  for (const Entry& e : *entries) {
+    const fs::path file = root / e.path;
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (ec || !fs::is_regular_file(file, ec)) return file.string() + " is missing";
+    if (size != e.size)
+      return file.string() + " has " + std::to_string(size) + " bytes, the manifest says " +
+             std::to_string(e.size);
+    if (verify && sha256_file(file) != e.sha256)
+      return file.string() + " does not match its SHA-256 in the manifest";
+  }
+  return std::nullopt;
+}
+
+}  // namespace bookspin::output

@@ -1,0 +1,49 @@
+#pragma once
+// A manifest: what produced a set of outputs and what they were when written, so that a
+// later run can tell whether it would produce the same and skip the work (`bookspin render`,
+// `plot`, `gallery`; README "Figures").
+//
+// The file is JSON with a fixed layout, written by write_manifest() and read back by
+// manifest_stale() alone:
+//
+//   {
+//     <head: the caller's members, each line indented by two spaces, the last ending in ','>
+//     <note: more members, recorded but not compared, e.g. the scene file's path and hash>
+//     "outputs": [
+//       {"path": "fig09.mp4", "size": 1234, "sha256": "<64 hex>"},
+//       ...
+//     ]
+//   }
+//
+// The head holds everything the outputs depend on (program build, options, the resolved
+// scene, the hashes of the inputs read as bytes: textures, meshes); a run is up to date when
+// the manifest's head is this run's head byte for byte and every output is still there with
+// its size (and hash, when verifying). The note records what does not decide: the scene
+// file's own hash changes with its comments, while its resolved keys are in the head.
+// Anything else, a hand-edited or unreadable manifest included, means "render again".
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bookspin::output {
+
+/// Hashes every output (paths relative to `root`, '/'-separated) and writes `manifest`
+/// through an AtomicFile, so it appears only complete. Call it last, after the outputs are in
+/// place. Throws OutputError if an output cannot be read or the manifest cannot be written.
+void write_manifest(const std::filesystem::path& manifest, std::string_view head,
+                    std::string_view note, const std::filesystem::path& root,
+                    const std::vector<std::string>& outputs);
+
+/// Why the outputs listed in `manifest` are not what a run with `head` would produce
+/// ("no manifest", "the scene, options or program changed", "OUT/x.mp4 is missing", "… has
+/// 12 bytes, the manifest says 345", "… does not match its SHA-256"), or std::nullopt when
+/// they are. `verify`: hash every output too (else sizes only). Never throws for a bad
+/// manifest: that is a reason.
+std::optional<std::string> manifest_stale(const std::filesystem::path& manifest,
+                                          std::string_view head, const std::filesystem::path& root,
+                                          bool verify);
+
+}  // namespace bookspin::output

@@ -1,0 +1,24 @@
+#pragma once
+// A scene in canonical form: every key of the resolved Scene (after --set overrides and
+// defaults), one per line, in a fixed order, numbers printed so that they read back to the
+// same double. Two scene files that differ only in comments, layout, key order, number
+// spelling (1.0 vs 1) or keys set to their default value give the same text.
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace bookspin::scene {
+
+/// The members of a JSON object (no braces), one `"key": value` per line, each line
+/// indented by `indent` spaces and all but the last ending in ','. Keys are the scene
+/// file's dotted keys (scenes/README.md) as resolved: initial.spin_axis and spin_rate appear
+/// as initial.angular_velocity, body.mass and body.scale as the body's moments, volume and
+/// cage (book.size, book.mass); comparison tiles are `compare[i].key`. Texture and mesh
+/// paths are written relative to the scene file's folder, so the text does not depend on
+/// where the checkout lives. Numbers: shortest round-trip form (%.17g), JSON-valid.
+std::string canonical_json(const Scene& scene, int indent = 4);
+
+/// `text` as a JSON string literal, quotes included (", \ and control characters escaped).
+std::string json_string(const std::string& text);
+
+}  // namespace bookspin::scene

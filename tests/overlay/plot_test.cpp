@@ -1,0 +1,69 @@
+// Line plots (src/overlay/plot.cpp): a fixed y range cuts curves at the plot's edge and marks
+// where they leave it.
+#include "overlay/plot.hpp"
+
+#include <gtest/gtest.h>
+
+namespace bookspin::overlay {
+namespace {
+
+/// A red curve from 0 up to 0.5 and out to 50 and back, on a bare plot (no title, labels
+/// or legend, so the topmost dark pixel of a column right of the spike is the plot area's
+/// frame).
+PlotSpec spike(std::optional<std::pair<double, double>> y_range) {
+  PlotSpec spec;
+  spec.legend = false;
+  spec.y_range = y_range;
+  Series s;
+  s.r = 1.0;
+  for (int i = 0; i <= 100; ++i) {
+    s.x.push_back(i);
+    s.y.push_back(i >= 40 && i <= 60 ? 50.0 : 0.005 * i);
+  }
+  spec.series = {s};
+  return spec;
+}
+
+bool red(const RgbaImage& image, int x, int y) {
+  const std::uint8_t* p = image.row(y) + 4 * x;
+  return p[0] > 200 && p[1] < 80 && p[2] < 80;
+}
+
+/// Rows from the top: the plot area's top edge (the frame's first dark pixel at 4/5 of the
+/// width) and the first row holding a red pixel.
+std::pair<int, int> frame_top_and_first_red(const RgbaImage& image) {
+  int frame = -1, first_red = -1;
+  for (int y = 0; y < image.height; ++y) {
+    const std::uint8_t* p = image.row(y) + 4 * (image.width * 4 / 5);
+    // The frame is dark grey, 1 px wide and spread over two rows by antialiasing; the grid
+    // is light grey (0.88).
+    if (frame < 0 && p[0] < 200 && p[0] == p[1] && p[1] == p[2]) frame = y;
+    for (int x = 0; x < image.width && first_red < 0; ++x)
+      if (red(image, x, y)) first_red = y;
+  }
+  return {frame, first_red};
+}
+
+TEST(Plot, FixedYRangeCutsTheCurveAndMarksWhereItLeaves) {
+  const RgbaImage fitted = plot_image(spike(std::nullopt), 400, 300);
+  const RgbaImage clipped = plot_image(spike(std::pair{-0.1, 0.6}), 400, 300);
+  const auto [fitted_frame, fitted_red] = frame_top_and_first_red(fitted);
+  const auto [frame, first_red] = frame_top_and_first_red(clipped);
+  ASSERT_GT(fitted_frame, 0);
+  ASSERT_GT(frame, 0);
+  // Fitted to the data, the curve stays inside the frame; on the fixed range its spike is cut
+  // at the edge and a red triangle stands on the frame's top edge, outside it.
+  EXPECT_GE(fitted_red, fitted_frame);
+  EXPECT_LT(first_red, frame);
+  EXPECT_GE(first_red, frame - 12);  // a small marker, not the curve running off the image
+  // Only where the curve leaves the range (x = 40 of 0 … 100): no red above the frame at the
+  // left or right quarter.
+  for (int y = 0; y < frame; ++y) {
+    for (int x = 0; x < clipped.width / 4; ++x) EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
+    for (int x = 3 * clipped.width / 4; x < clipped.width; ++x)
+      EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::overlay
