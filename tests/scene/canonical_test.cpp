@@ -62,7 +62,7 @@ TEST(CanonicalScene, EveryValueChangesIt) {
                                        "initial.jiggle=0.001",
                                        "initial.seed=2",
                                        "time.dt=0.010000000000000002",
-                                       "model.lattice_cells=8",
+                                       "model.lattice_cells=1",  // the book: one cell (0 = default)
                                        "render.sphere=true",
                                        "time.steps_per_frame=7",
                                        "time.frames=11",
