@@ -7,23 +7,15 @@
 
 #include "physics/presets.hpp"
 #include "scene/scene.hpp"
+#include "scene_text.hpp"
 
 namespace bookspin::scene {
 namespace {
 
 namespace fs = std::filesystem;
 
-Scene parse(const std::string& text) { return parse_scene_text(text, "test.toml"); }
-
-/// The InputError message of parsing `text`, or "" if it parses.
-std::string error_of(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::error_of;
+using testing::parse;
 
 TEST(BodyKeys, DefaultIsTheBookAndBookKeysStillWork) {
   const Scene s = parse("[book]\nsize = [1.0, 2.0, 0.5]\nmass = 3.0\n");

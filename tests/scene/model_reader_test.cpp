@@ -2,11 +2,13 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
+#include "scene_text.hpp"
 
 namespace bookspin::scene {
 namespace {
 
-Scene parse(const std::string& text) { return parse_scene_text(text, "test.toml"); }
+using testing::error_of;
+using testing::parse;
 
 /// A scene whose only table is [render] holding `keys` (TOML, one line).
 Scene with_render(const std::string& keys) { return parse("[render]\n" + keys + "\n"); }
@@ -113,15 +115,6 @@ TEST(CompareKeys, SetOverrideOfTheWholeArrayIsNamedAsSuch) {
 
 std::string model_table(const std::string& kind, const std::string& integrator) {
   return "[model]\nkind = \"" + kind + "\"\nintegrator = \"" + integrator + "\"\n";
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(ModelReader, Splitting4ParsesForBothRigidModels) {
