@@ -118,8 +118,12 @@ class Welder {
             scale * static_cast<double>(positions_[i][k]);
     }
     mesh.triangles.resize(3, static_cast<Eigen::Index>(triangles_.size()));
-    for (std::size_t i = 0; i < triangles_.size(); ++i)
+    mesh.face_colours.resize(3, static_cast<Eigen::Index>(triangles_.size()));
+    for (std::size_t i = 0; i < triangles_.size(); ++i) {
       mesh.triangles.col(static_cast<Eigen::Index>(i)) = triangles_[i];
+      mesh.face_colours.col(static_cast<Eigen::Index>(i)) = colours_[i];
+    }
+    mesh.smooth = 2 * smooth_triangles_ > triangles_.size();
     if (!mesh.vertices.allFinite()) reject(path_, "non-finite vertex coordinate after scaling");
     return mesh;
   }
@@ -144,12 +148,35 @@ class Welder {
       if (added) positions_.push_back(key);
       welded[v] = it->second;
     }
+    const Eigen::Vector3f colour = diffuse_colour(part);
     for (unsigned f = 0; f < part.mNumFaces; ++f) {
       const aiFace& face = part.mFaces[f];
       if (face.mNumIndices != 3) continue;  // points and lines bound no volume
       triangles_.emplace_back(welded[face.mIndices[0]], welded[face.mIndices[1]],
                               welded[face.mIndices[2]]);
+      colours_.push_back(colour);
+      if (part.HasNormals() && normals_differ(part, face)) ++smooth_triangles_;
     }
+  }
+
+  /// The part's material diffuse colour, clamped to [0, 1]; grey without one.
+  Eigen::Vector3f diffuse_colour(const aiMesh& part) const {
+    aiColor4D c(0.6f, 0.6f, 0.6f, 1.0f);
+    if (part.mMaterialIndex < scene_.mNumMaterials)
+      scene_.mMaterials[part.mMaterialIndex]->Get(AI_MATKEY_COLOR_DIFFUSE, c);
+    const auto unit = [](float v) { return std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.6f; };
+    return {unit(c.r), unit(c.g), unit(c.b)};
+  }
+
+  /// Whether a triangle's three vertex normals point different ways (more than about 0.5°).
+  static bool normals_differ(const aiMesh& part, const aiFace& face) {
+    const aiVector3D& a = part.mNormals[face.mIndices[0]];
+    for (int k = 1; k < 3; ++k) {
+      const aiVector3D& b = part.mNormals[face.mIndices[k]];
+      const float dot = a * b, len = a.Length() * b.Length();
+      if (!(len > 0.0f) || dot < 0.99996f * len) return len > 0.0f;
+    }
+    return false;
   }
 
   const fs::path& path_;
@@ -157,6 +184,8 @@ class Welder {
   std::map<std::array<float, 3>, int> index_of_;
   std::vector<std::array<float, 3>> positions_;
   std::vector<Eigen::Vector3i> triangles_;
+  std::vector<Eigen::Vector3f> colours_;  ///< one per triangle
+  std::size_t smooth_triangles_ = 0;
 };
 
 }  // namespace

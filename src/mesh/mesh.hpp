@@ -10,6 +10,12 @@ namespace bookspin::mesh {
 struct TriangleMesh {
   Eigen::Matrix3Xd vertices;   ///< 3×V positions, file axes
   Eigen::Matrix3Xi triangles;  ///< 3×N indices into vertices, the file's winding
+  /// 3×N linear RGB in [0, 1] per triangle: the diffuse colour of its part's material
+  /// (OBJ `Kd`, glTF base colour; assimp's grey default where the file names none).
+  Eigen::Matrix3Xf face_colours;
+  /// True when most triangles carry per-vertex normals that differ across the triangle
+  /// (a surface the file means to look smooth); false for faceted files (STL's face normals).
+  bool smooth = false;
 };
 
 /// Reads `path` (by its extension: .obj, .stl, .gltf, .glb; any case) and returns its

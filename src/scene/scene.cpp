@@ -222,8 +222,8 @@ void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
     } catch (const InputError& e) {
       r.fail("body.mesh", e.what());
     }
-    const physics::BodyResult body =
-        physics::body_from_mesh(mesh.vertices, mesh.triangles, mass, 1.0);
+    const physics::BodyResult body = physics::body_from_mesh(mesh.vertices, mesh.triangles, mass,
+                                                             1.0, mesh.face_colours, mesh.smooth);
     if (!body.ok()) r.fail("body.mesh", path.string() + ": " + body.error);
     for (const std::string& warning : body.warnings)
       s.warnings.push_back(path.string() + ": " + warning);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <fstream>
 #include <limits>
 
 #include "common/errors.hpp"
@@ -111,6 +112,42 @@ TEST(LoadMesh, PartsOfOneSurfaceAreWeldedTogether) {
     }
   }
   expect_box(load_mesh(file));
+}
+
+TEST(LoadMesh, MaterialColoursComeFromTheFile) {
+  // Two groups of a tetrahedron with their own MTL materials: the base red, the sides blue.
+  const fs::path dir = fresh_dir("mesh/mtl");
+  std::ofstream(dir / "t.mtl") << "newmtl red\nKd 0.9 0.1 0.1\nnewmtl blue\nKd 0.1 0.2 0.8\n";
+  std::ofstream(dir / "t.obj") << "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                  "g base\nusemtl red\nf 1 3 2\n"
+                                  "g sides\nusemtl blue\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const TriangleMesh m = load_mesh(dir / "t.obj");
+  ASSERT_EQ(m.triangles.cols(), 4);
+  ASSERT_EQ(m.face_colours.cols(), 4);
+  int red = 0, blue = 0;
+  for (Eigen::Index t = 0; t < 4; ++t) {
+    const Eigen::Vector3f c = m.face_colours.col(t);
+    red += c.isApprox(Eigen::Vector3f(0.9f, 0.1f, 0.1f), 1e-6f);
+    blue += c.isApprox(Eigen::Vector3f(0.1f, 0.2f, 0.8f), 1e-6f);
+  }
+  EXPECT_EQ(red, 1);
+  EXPECT_EQ(blue, 3);
+  EXPECT_FALSE(m.smooth);  // no normals in the file
+}
+
+TEST(LoadMesh, SmoothNormalsInTheFileMakeASmoothSurface) {
+  // The same tetrahedron with one normal per corner pointing out from the centre (a file
+  // meant to look round), and as STL (a normal per face): smooth, then flat.
+  const fs::path dir = fresh_dir("mesh/normals");
+  std::ofstream(dir / "round.obj")
+      << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+         "vn -1 -1 -1\nvn 3 -1 -1\nvn -1 3 -1\nvn -1 -1 3\n"
+         "f 1//1 3//3 2//2\nf 1//1 2//2 4//4\nf 1//1 4//4 3//3\nf 2//2 3//3 4//4\n";
+  EXPECT_TRUE(load_mesh(dir / "round.obj").smooth);
+  write_box_ascii_stl(dir / "box.stl", kSize);
+  const TriangleMesh box = load_mesh(dir / "box.stl");
+  EXPECT_FALSE(box.smooth);
+  EXPECT_EQ(box.face_colours.cols(), box.triangles.cols());
 }
 
 TEST(LoadMesh, MissingFileIsRejected) {
