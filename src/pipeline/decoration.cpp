@@ -84,20 +84,24 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
   double centre_x = 0.5 * image.width;
   if (scene.render.panel) {
     const PixelRect rect = panel_rect(image.width, image.height);
-    draw_panel(image, rect, panel_plots(single_run(scene, history), clip_end_time(scene), t));
+    if (!panel_) panel_ = std::make_unique<PanelPainter>();
+    panel_->draw(image, rect, panel_plots(single_run(scene, history), clip_end_time(scene), t));
     caption.max_width = rect.x - 0.03 * image.height;  // keep clear of the panel
     centre_x = 0.5 * rect.x;
     if (times) times->panel += timer.lap();
   }
   if (scene.render.sphere) {
-    const double book_width = scene.render.panel ? panel_rect(image.width, image.height).x
-                                                 : static_cast<double>(image.width);
-    overlay::draw_sphere(
-        image, sphere_rect(image.width, image.height, book_width),
-        sphere_spec(sphere_moments(scene), {SphereRun{&history, palette_colour(0)}}));
+    if (!sphere_ || !sphere_->fits(image)) {
+      const double book_width = scene.render.panel ? panel_rect(image.width, image.height).x
+                                                   : static_cast<double>(image.width);
+      sphere_ = std::make_unique<overlay::SphereInset>(
+          image.width, image.height, sphere_rect(image.width, image.height, book_width),
+          sphere_spec(sphere_moments(scene), {}));
+    }
+    sphere_->draw(image, sphere_trails({SphereRun{&history, palette_colour(0)}}));
     if (times) times->sphere += timer.lap();
   }
-  overlay::draw_caption(image, caption_for(scene, t, diverged_at), caption);
+  caption_.draw(image, caption_for(scene, t, diverged_at), caption);
   if (diverged_at) overlay::draw_banner(image, divergence_text(*diverged_at), centre_x);
   if (times) times->caption += timer.lap();
 }

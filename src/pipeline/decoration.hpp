@@ -7,8 +7,10 @@
 
 #include "common/rgba_image.hpp"
 #include "overlay/caption.hpp"
+#include "overlay/sphere.hpp"
 #include "physics/simulator.hpp"
 #include "pipeline/diagnostics_history.hpp"
+#include "pipeline/panel.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::pipeline {
@@ -52,6 +54,9 @@ class FrameDecorator {
 
  private:
   const scene::Scene& scene_;
+  std::unique_ptr<PanelPainter> panel_;
+  overlay::CaptionPainter caption_;
+  std::unique_ptr<overlay::SphereInset> sphere_;  ///< made for the first frame's size
 };
 
 }  // namespace bookspin::pipeline

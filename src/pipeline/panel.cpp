@@ -125,6 +125,92 @@ void draw_panel(RgbaImage& image, const PixelRect& rect,
   canvas.composite_onto(image);
 }
 
+namespace {
+
+/// `spec` without what changes from frame to frame (its data and cursor).
+overlay::PlotSpec without_data(const overlay::PlotSpec& spec) {
+  overlay::PlotSpec frame = spec;
+  for (auto& s : frame.series) s.x.clear(), s.y.clear();
+  frame.cursor_x.reset();
+  return frame;
+}
+
+bool same_frame(const overlay::PlotSpec& a, const overlay::PlotSpec& b) {
+  if (a.title != b.title || a.x_label != b.x_label || a.y_label != b.y_label ||
+      a.log_x != b.log_x || a.log_y != b.log_y || a.legend != b.legend ||
+      a.legend_placement != b.legend_placement || a.x_range != b.x_range ||
+      a.min_y_span != b.min_y_span || a.background_alpha != b.background_alpha ||
+      a.left_margin != b.left_margin || a.series.size() != b.series.size())
+    return false;
+  for (std::size_t i = 0; i < a.series.size(); ++i) {
+    const overlay::Series &p = a.series[i], &q = b.series[i];
+    if (p.label != q.label || p.r != q.r || p.g != q.g || p.b != q.b || p.dashed != q.dashed)
+      return false;
+  }
+  return true;
+}
+
+bool drawable(const PixelRect& rect, const std::vector<overlay::PlotSpec>& plots) {
+  // Below about 100 px a plot has no room for its ticks and labels: better none than a smudge.
+  return !plots.empty() && rect.width >= 100 && rect.height >= 100;
+}
+
+}  // namespace
+
+PanelPainter::PanelPainter() = default;
+PanelPainter::~PanelPainter() = default;
+
+bool PanelPainter::frame_holds(const RgbaImage& image, const PixelRect& rect,
+                               const std::vector<overlay::PlotSpec>& plots) const {
+  if (!canvas_ || image.width != width_ || image.height != height_ || rect.x != rect_.x ||
+      rect.y != rect_.y || rect.width != rect_.width || rect.height != rect_.height ||
+      plots.size() != frame_specs_.size())
+    return false;
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    // left_margin is set by align_left_margins from the ranges: compare it unaligned.
+    overlay::PlotSpec unaligned = frame_specs_[i];
+    unaligned.left_margin = plots[i].left_margin;
+    if (overlay::plot_ranges(plots[i]) != ranges_[i] || !same_frame(plots[i], unaligned))
+      return false;
+  }
+  return true;
+}
+
+// draw_panel's calls, with the plots' draw_plot split into draw_plot_frame (all plots, kept)
+// and draw_plot_data (every frame).
+void PanelPainter::draw(RgbaImage& image, const PixelRect& rect,
+                        const std::vector<overlay::PlotSpec>& plots) {
+  if (!drawable(rect, plots)) return;
+  const double inset = 0.01 * rect.height;
+  const double each = (rect.height - 2 * inset) / plots.size();
+  if (frame_holds(image, rect, plots)) {
+    canvas_->restore(frame_);
+  } else {
+    width_ = image.width, height_ = image.height, rect_ = rect;
+    canvas_ = std::make_unique<overlay::CairoCanvas>(
+        image.width, image.height,
+        overlay::region_around(rect.x, rect.y, rect.width, rect.height, 2.0, image.width,
+                               image.height));
+    cairo_t* cr = canvas_->cr();
+    cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
+    cairo_set_source_rgba(cr, 0.98, 0.98, 0.97, 0.9);
+    cairo_fill(cr);
+    std::vector<overlay::PlotSpec> aligned = plots;
+    overlay::align_left_margins(cr, each, aligned);
+    frame_specs_.clear(), ranges_.clear(), areas_.clear();
+    for (std::size_t i = 0; i < aligned.size(); ++i) {
+      areas_.push_back(overlay::draw_plot_frame(cr, rect.x + inset, rect.y + inset + i * each,
+                                                rect.width - 2 * inset, each, aligned[i]));
+      ranges_.push_back(overlay::plot_ranges(aligned[i]));
+      frame_specs_.push_back(without_data(aligned[i]));
+    }
+    frame_ = canvas_->snapshot();
+  }
+  for (std::size_t i = 0; i < plots.size(); ++i)
+    overlay::draw_plot_data(canvas_->cr(), areas_[i], plots[i]);
+  canvas_->composite_onto(image);
+}
+
 std::vector<PanelRun> single_run(const scene::Scene& scene, const DiagnosticsHistory& history) {
   return {PanelRun{"", scene.model.kind, &history}};
 }
