@@ -66,8 +66,7 @@ void CairoCanvas::composite_onto(RgbaImage& image) {
   for (int y = 0; y < rows; ++y) {
     const unsigned char* src_row = data + static_cast<std::ptrdiff_t>(y) * stride;
     std::uint8_t* dst = image.row(region_.y + y) + 4 * static_cast<std::ptrdiff_t>(region_.x);
-    for (int x = 0; x < columns; ++x, dst += 4)
-      argb32::blend_over_opaque(argb32::load(src_row + 4 * x), dst);
+    argb32::blend_row_over_opaque(src_row, dst, columns);
   }
 }
 
