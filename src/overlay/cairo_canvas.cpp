@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
-#include <utility>
 
 #include "common/argb32.hpp"
 
@@ -91,41 +90,6 @@ void CairoCanvas::restore(const std::vector<unsigned char>& pixels) {
     throw std::invalid_argument("CairoCanvas::restore: a snapshot of another size");
   if (bytes > 0) std::memcpy(data, pixels.data(), bytes);
   cairo_surface_mark_dirty(surface_);
-}
-
-namespace {
-
-/// The byte range of image rows [first_row, last_row) in a canvas over `region`.
-std::pair<std::size_t, std::size_t> row_bytes(const PixelRegion& region, int stride, int first_row,
-                                              int last_row) {
-  const int y0 = std::clamp(first_row - region.y, 0, region.height);
-  const int y1 = std::clamp(last_row - region.y, y0, region.height);
-  return {static_cast<std::size_t>(y0) * stride, static_cast<std::size_t>(y1) * stride};
-}
-
-}  // namespace
-
-void CairoCanvas::restore_rows(const std::vector<unsigned char>& pixels, int first_row,
-                               int last_row) {
-  cairo_surface_flush(surface_);
-  unsigned char* data = cairo_image_surface_get_data(surface_);
-  const int stride = cairo_image_surface_get_stride(surface_);
-  if (data == nullptr) return;
-  if (pixels.size() != static_cast<std::size_t>(stride) * region_.height)
-    throw std::invalid_argument("CairoCanvas::restore_rows: a snapshot of another size");
-  const auto [begin, end] = row_bytes(region_, stride, first_row, last_row);
-  if (end > begin) std::memcpy(data + begin, pixels.data() + begin, end - begin);
-  cairo_surface_mark_dirty(surface_);
-}
-
-bool CairoCanvas::same_rows(const std::vector<unsigned char>& pixels, int first_row, int last_row) {
-  cairo_surface_flush(surface_);
-  const unsigned char* data = cairo_image_surface_get_data(surface_);
-  const int stride = cairo_image_surface_get_stride(surface_);
-  if (data == nullptr) return true;
-  if (pixels.size() != static_cast<std::size_t>(stride) * region_.height) return false;
-  const auto [begin, end] = row_bytes(region_, stride, first_row, last_row);
-  return end <= begin || std::memcmp(data + begin, pixels.data() + begin, end - begin) == 0;
 }
 
 }  // namespace bookspin::overlay

@@ -46,12 +46,6 @@ class CairoCanvas {
   /// The context's state (source, line width, path, …) is not part of it. Throws
   /// std::invalid_argument for a snapshot of another size.
   void restore(const std::vector<unsigned char>& pixels);
-  /// restore() for the image rows [first_row, last_row) only (clipped to the region).
-  void restore_rows(const std::vector<unsigned char>& pixels, int first_row, int last_row);
-  /// Whether the image rows [first_row, last_row) (clipped to the region) hold exactly the
-  /// pixels of `pixels`, a snapshot of this canvas.
-  bool same_rows(const std::vector<unsigned char>& pixels, int first_row, int last_row);
-  const PixelRegion& region() const { return region_; }
 
  private:
   PixelRegion region_;

@@ -1,7 +1,6 @@
 #include "pipeline/panel.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <iterator>
 
 #include "common/colour.hpp"
@@ -161,103 +160,51 @@ bool drawable(const PixelRect& rect, const std::vector<overlay::PlotSpec>& plots
 PanelPainter::PanelPainter() = default;
 PanelPainter::~PanelPainter() = default;
 
-bool PanelPainter::layout_holds(const RgbaImage& image, const PixelRect& rect,
-                                const std::vector<overlay::PlotSpec>& plots) const {
+bool PanelPainter::frame_holds(const RgbaImage& image, const PixelRect& rect,
+                               const std::vector<overlay::PlotSpec>& plots) const {
   if (!canvas_ || image.width != width_ || image.height != height_ || rect.x != rect_.x ||
       rect.y != rect_.y || rect.width != rect_.width || rect.height != rect_.height ||
       plots.size() != frame_specs_.size())
     return false;
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    // left_margin is set by align_left_margins from the ranges: compared apart.
+    // left_margin is set by align_left_margins from the ranges: compare it unaligned.
     overlay::PlotSpec unaligned = frame_specs_[i];
     unaligned.left_margin = plots[i].left_margin;
-    if (!same_frame(plots[i], unaligned)) return false;
+    if (overlay::plot_ranges(plots[i]) != ranges_[i] || !same_frame(plots[i], unaligned))
+      return false;
   }
   return true;
 }
 
 // draw_panel's calls, with the plots' draw_plot split into draw_plot_frame (all plots, kept)
-// and draw_plot_data (every frame). Also finds out whether each plot's frame stays within
-// its own band of rows (it does in any panel with room for its labels): then a plot whose
-// axis range changes can be drawn again alone.
-void PanelPainter::redraw(const RgbaImage& image, const PixelRect& rect,
-                          const std::vector<overlay::PlotSpec>& plots) {
-  const double inset = 0.01 * rect.height;
-  const double each = (rect.height - 2 * inset) / plots.size();
-  width_ = image.width, height_ = image.height, rect_ = rect;
-  canvas_ = std::make_unique<overlay::CairoCanvas>(
-      image.width, image.height,
-      overlay::region_around(rect.x, rect.y, rect.width, rect.height, 2.0, image.width,
-                             image.height));
-  cairo_t* cr = canvas_->cr();
-  cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
-  cairo_set_source_rgba(cr, 0.98, 0.98, 0.97, 0.9);
-  cairo_fill(cr);
-  fill_ = canvas_->snapshot();
-  std::vector<overlay::PlotSpec> aligned = plots;
-  overlay::align_left_margins(cr, each, aligned);
-  margin_ = aligned.front().left_margin;
-  frame_specs_.clear(), ranges_.clear(), areas_.clear(), bands_.clear();
-  bands_apart_ = true;
-  std::vector<unsigned char> before = fill_;
-  for (std::size_t i = 0; i < aligned.size(); ++i) {
-    const double top = rect.y + inset + i * each;
-    bands_.emplace_back(i == 0 ? canvas_->region().y : static_cast<int>(std::floor(top)),
-                        i + 1 == aligned.size() ? canvas_->region().bottom()
-                                                : static_cast<int>(std::floor(top + each)));
-    areas_.push_back(overlay::draw_plot_frame(cr, rect.x + inset, top, rect.width - 2 * inset, each,
-                                              aligned[i]));
-    ranges_.push_back(overlay::plot_ranges(aligned[i]));
-    frame_specs_.push_back(without_data(aligned[i]));
-    if (bands_apart_ && !stays_in_band(before, i)) bands_apart_ = false;
-    if (bands_apart_ && i + 1 < aligned.size()) before = canvas_->snapshot();
-  }
-  frame_ = canvas_->snapshot();
-}
-
-bool PanelPainter::stays_in_band(const std::vector<unsigned char>& before, std::size_t i) {
-  const PixelRegion& r = canvas_->region();
-  return canvas_->same_rows(before, r.y, bands_[i].first) &&
-         canvas_->same_rows(before, bands_[i].second, r.bottom());
-}
-
+// and draw_plot_data (every frame).
 void PanelPainter::draw(RgbaImage& image, const PixelRect& rect,
                         const std::vector<overlay::PlotSpec>& plots) {
   if (!drawable(rect, plots)) return;
-  bool full = !layout_holds(image, rect, plots);
-  std::vector<std::size_t> changed;
-  std::vector<overlay::PlotSpec> aligned;
   const double inset = 0.01 * rect.height;
   const double each = (rect.height - 2 * inset) / plots.size();
-  if (!full) {
-    for (std::size_t i = 0; i < plots.size(); ++i)
-      if (overlay::plot_ranges(plots[i]) != ranges_[i]) changed.push_back(i);
-    if (!changed.empty()) {
-      aligned = plots;
-      overlay::align_left_margins(canvas_->cr(), each, aligned);
-      full = !bands_apart_ || aligned.front().left_margin != margin_;
-    }
-  }
-  if (full) {
-    redraw(image, rect, plots);
-  } else {
+  if (frame_holds(image, rect, plots)) {
     canvas_->restore(frame_);
-    // Plot i's band holds only the panel's background and plot i's frame: put the
-    // background back there and draw the new frame over it, as redraw() would.
-    for (std::size_t i : changed) {
-      canvas_->restore_rows(fill_, bands_[i].first, bands_[i].second);
-      const overlay::PlotArea area =
-          overlay::draw_plot_frame(canvas_->cr(), rect.x + inset, rect.y + inset + i * each,
-                                   rect.width - 2 * inset, each, aligned[i]);
-      if (!stays_in_band(frame_, i)) {  // the new frame reaches into another band
-        redraw(image, rect, plots);
-        break;
-      }
-      areas_[i] = area;
-      ranges_[i] = overlay::plot_ranges(aligned[i]);
-      frame_specs_[i] = without_data(aligned[i]);
-      frame_ = canvas_->snapshot();
+  } else {
+    width_ = image.width, height_ = image.height, rect_ = rect;
+    canvas_ = std::make_unique<overlay::CairoCanvas>(
+        image.width, image.height,
+        overlay::region_around(rect.x, rect.y, rect.width, rect.height, 2.0, image.width,
+                               image.height));
+    cairo_t* cr = canvas_->cr();
+    cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
+    cairo_set_source_rgba(cr, 0.98, 0.98, 0.97, 0.9);
+    cairo_fill(cr);
+    std::vector<overlay::PlotSpec> aligned = plots;
+    overlay::align_left_margins(cr, each, aligned);
+    frame_specs_.clear(), ranges_.clear(), areas_.clear();
+    for (std::size_t i = 0; i < aligned.size(); ++i) {
+      areas_.push_back(overlay::draw_plot_frame(cr, rect.x + inset, rect.y + inset + i * each,
+                                                rect.width - 2 * inset, each, aligned[i]));
+      ranges_.push_back(overlay::plot_ranges(aligned[i]));
+      frame_specs_.push_back(without_data(aligned[i]));
     }
+    frame_ = canvas_->snapshot();
   }
   for (std::size_t i = 0; i < plots.size(); ++i)
     overlay::draw_plot_data(canvas_->cr(), areas_[i], plots[i]);

@@ -5,7 +5,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "common/pixel_rect.hpp"
@@ -36,9 +35,8 @@ void draw_panel(RgbaImage& image, const PixelRect& rect,
 
 /// draw_panel for the frames of one clip: the panel's background and the plots' frames
 /// (overlay::draw_plot_frame) are drawn once and again only when an axis range, the
-/// rectangle or a plot's texts change (where a plot's frame keeps to its own band of rows,
-/// as it does with room for its labels, only the plot whose range changed); each frame
-/// draws the curves and cursors over a copy of them. The pixels are exactly draw_panel's.
+/// rectangle or a plot's texts change; each frame draws the curves and cursors over a copy
+/// of them. The pixels are exactly draw_panel's.
 class PanelPainter {
  public:
   PanelPainter();
@@ -50,14 +48,8 @@ class PanelPainter {
   void draw(RgbaImage& image, const PixelRect& rect, const std::vector<overlay::PlotSpec>& plots);
 
  private:
-  /// Whether the kept frames fit `plots` but for their axis ranges.
-  bool layout_holds(const RgbaImage& image, const PixelRect& rect,
-                    const std::vector<overlay::PlotSpec>& plots) const;
-  /// Draws the background and every plot's frame anew.
-  void redraw(const RgbaImage& image, const PixelRect& rect,
-              const std::vector<overlay::PlotSpec>& plots);
-  /// Whether the canvas differs from `before` only in plot i's band of rows.
-  bool stays_in_band(const std::vector<unsigned char>& before, std::size_t i);
+  bool frame_holds(const RgbaImage& image, const PixelRect& rect,
+                   const std::vector<overlay::PlotSpec>& plots) const;
 
   std::unique_ptr<overlay::CairoCanvas> canvas_;
   int width_ = 0, height_ = 0;
@@ -65,11 +57,7 @@ class PanelPainter {
   std::vector<overlay::PlotSpec> frame_specs_;  ///< the plots drawn, without their data
   std::vector<overlay::PlotRanges> ranges_;
   std::vector<overlay::PlotArea> areas_;
-  double margin_ = 0;                       ///< the plots' aligned left margin
-  std::vector<std::pair<int, int>> bands_;  ///< each plot's image rows [first, last)
-  bool bands_apart_ = false;                ///< every frame stays within its band
-  std::vector<unsigned char> fill_;         ///< the canvas with only the background
-  std::vector<unsigned char> frame_;        ///< the canvas with the frames drawn
+  std::vector<unsigned char> frame_;  ///< the canvas with only the frames drawn
 };
 
 /// The runs of a single scene, for panel_plots.
