@@ -418,36 +418,6 @@ void draw_plot(cairo_t* cr, double x, double y, double width, double height, con
   cairo_restore(cr);
 }
 
-PlotRanges plot_ranges(const PlotSpec& spec) {
-  const Axis ax = fit_x(spec), ay = fit_y(spec);
-  return {ax.lo, ax.hi, ay.lo, ay.hi, ax.log, ay.log};
-}
-
-// draw_plot without draw_data: the same calls in the same order.
-PlotArea draw_plot_frame(cairo_t* cr, double x, double y, double width, double height,
-                         const PlotSpec& spec) {
-  const double font = font_for(height);
-  cairo_save(cr);
-  if (spec.background_alpha > 0) {
-    cairo_rectangle(cr, x, y, width, height);
-    cairo_set_source_rgba(cr, 1, 1, 1, spec.background_alpha);
-    cairo_fill(cr);
-  }
-  select_overlay_font(cr, false, font);
-  const Axis ay = fit_y(spec);
-  const Area area = layout(cr, x, y, width, height, spec, ay, font);
-  draw_grid(cr, fit_x(spec), ay, area);
-  draw_labels(cr, spec, x, y, area);
-  cairo_restore(cr);
-  return {area.x0, area.x1, area.y0, area.y1, area.font};
-}
-
-void draw_plot_data(cairo_t* cr, const PlotArea& area, const PlotSpec& spec) {
-  cairo_save(cr);
-  draw_data(cr, spec, fit_x(spec), fit_y(spec), {area.x0, area.x1, area.y0, area.y1, area.font});
-  cairo_restore(cr);
-}
-
 RgbaImage plot_image(const PlotSpec& spec, int width, int height) {
   RgbaImage image(width, height);
   std::fill(image.pixels.begin(), image.pixels.end(), 255);

@@ -51,36 +51,6 @@ struct PlotSpec {
 /// the height (height/22, 9 … 18 px).
 void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec);
 
-/// The axis ranges draw_plot fits to `spec` (lo, hi; on a log axis their log10): with the
-/// spec's texts, what a plot's frame (grid, tick labels) depends on.
-struct PlotRanges {
-  double x_lo = 0, x_hi = 1, y_lo = 0, y_hi = 1;
-  bool x_log = false, y_log = false;
-  bool operator==(const PlotRanges& o) const {
-    return x_lo == o.x_lo && x_hi == o.x_hi && y_lo == o.y_lo && y_hi == o.y_hi &&
-           x_log == o.x_log && y_log == o.y_log;
-  }
-  bool operator!=(const PlotRanges& o) const { return !(*this == o); }
-};
-PlotRanges plot_ranges(const PlotSpec& spec);
-
-/// The plot area of a plot drawn by draw_plot_frame, pixels, and its font size.
-struct PlotArea {
-  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;  ///< left, right, top, bottom
-  double font = 0;
-};
-
-/// draw_plot in two parts, for a plot drawn again on every frame of a clip with new data and
-/// the same frame: draw_plot_frame draws everything but the curves and the cursor (the
-/// background, grid, tick labels, axis labels, title and legend) and returns the plot area;
-/// draw_plot_data draws only the curves and the cursor, clipped to that area. The data are
-/// clipped to the plot area and nothing else draw_plot draws after them reaches into it,
-/// so draw_plot_frame then draw_plot_data (with the same plot_ranges) give draw_plot's
-/// pixels, also with other plots' frames drawn in between.
-PlotArea draw_plot_frame(cairo_t* cr, double x, double y, double width, double height,
-                         const PlotSpec& spec);
-void draw_plot_data(cairo_t* cr, const PlotArea& area, const PlotSpec& spec);
-
 /// The pixels left of the plot area that draw_plot needs for `spec` drawn `height` pixels
 /// tall (the rotated y label and the widest y tick label).
 double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec);

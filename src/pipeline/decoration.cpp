@@ -84,8 +84,7 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
   double centre_x = 0.5 * image.width;
   if (scene.render.panel) {
     const PixelRect rect = panel_rect(image.width, image.height);
-    if (!panel_) panel_ = std::make_unique<PanelPainter>();
-    panel_->draw(image, rect, panel_plots(single_run(scene, history), clip_end_time(scene), t));
+    draw_panel(image, rect, panel_plots(single_run(scene, history), clip_end_time(scene), t));
     caption.max_width = rect.x - 0.03 * image.height;  // keep clear of the panel
     centre_x = 0.5 * rect.x;
     if (times) times->panel += timer.lap();

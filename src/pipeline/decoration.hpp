@@ -10,7 +10,6 @@
 #include "overlay/sphere.hpp"
 #include "physics/simulator.hpp"
 #include "pipeline/diagnostics_history.hpp"
-#include "pipeline/panel.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::pipeline {
@@ -54,7 +53,6 @@ class FrameDecorator {
 
  private:
   const scene::Scene& scene_;
-  std::unique_ptr<PanelPainter> panel_;
   overlay::CaptionPainter caption_;
   std::unique_ptr<overlay::SphereInset> sphere_;  ///< made for the first frame's size
 };

@@ -2,14 +2,12 @@
 // The physics panel: three stacked plots of a run's diagnostics (body-frame ω, relative
 // energy drift, shape error) against time, drawn live beside the book in a clip
 // (render.panel) and over the whole run by `bookspin plot`.
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
-#include "overlay/cairo_canvas.hpp"
 #include "overlay/plot.hpp"
 #include "pipeline/diagnostics_history.hpp"
 #include "scene/scene.hpp"
@@ -32,33 +30,6 @@ PixelRect panel_rect(int width, int height);
 /// Draws the plots stacked in `rect` of `image`, on a light translucent background.
 void draw_panel(RgbaImage& image, const PixelRect& rect,
                 const std::vector<overlay::PlotSpec>& plots);
-
-/// draw_panel for the frames of one clip: the panel's background and the plots' frames
-/// (overlay::draw_plot_frame) are drawn once and again only when an axis range, the
-/// rectangle or a plot's texts change; each frame draws the curves and cursors over a copy
-/// of them. The pixels are exactly draw_panel's.
-class PanelPainter {
- public:
-  PanelPainter();
-  ~PanelPainter();
-  PanelPainter(const PanelPainter&) = delete;
-  PanelPainter& operator=(const PanelPainter&) = delete;
-
-  /// As draw_panel(image, rect, plots).
-  void draw(RgbaImage& image, const PixelRect& rect, const std::vector<overlay::PlotSpec>& plots);
-
- private:
-  bool frame_holds(const RgbaImage& image, const PixelRect& rect,
-                   const std::vector<overlay::PlotSpec>& plots) const;
-
-  std::unique_ptr<overlay::CairoCanvas> canvas_;
-  int width_ = 0, height_ = 0;
-  PixelRect rect_{};
-  std::vector<overlay::PlotSpec> frame_specs_;  ///< the plots drawn, without their data
-  std::vector<overlay::PlotRanges> ranges_;
-  std::vector<overlay::PlotArea> areas_;
-  std::vector<unsigned char> frame_;  ///< the canvas with only the frames drawn
-};
 
 /// The runs of a single scene, for panel_plots.
 std::vector<PanelRun> single_run(const scene::Scene& scene, const DiagnosticsHistory& history);
