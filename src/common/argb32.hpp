@@ -54,9 +54,9 @@ inline void blend_row_over_opaque(const unsigned char* src, std::uint8_t* dst, i
 #endif
   for (int x = 0; x < count; ++x, src += 4, dst += 4) {
     const std::uint32_t word = load(src);
-    const std::uint32_t a = alpha(word);
-    if (a == 0) continue;
-    const std::uint32_t keep = 255 - a;
+    // No branch for a = 0 (keep = 255, colour 0): (d·255 + 127) / 255 = d leaves dst as it
+    // is, as blend_over_opaque's early return does; without it the loop vectorizes.
+    const std::uint32_t keep = 255 - alpha(word);
     std::uint32_t d;
     std::memcpy(&d, dst, 4);  // bytes R, G, B, A: little-endian R in the low byte
     const std::uint32_t t_rb = (d & 0x00FF00FFu) * keep + 0x007F007Fu;  // R and B lanes
