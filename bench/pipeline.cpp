@@ -13,6 +13,7 @@
 #include "bench/clock.hpp"
 #include "bench/sections.hpp"
 #include "output/mp4_encoder.hpp"
+#include "output/png_writer.hpp"
 #include "pipeline/clip.hpp"
 #include "pipeline/clip_request.hpp"
 #include "pipeline/decoration.hpp"
@@ -101,14 +102,63 @@ std::vector<RgbaImage> prerender(const scene::Scene& scene) {
 /// that are already rendered. Opening the encoder and finishing the file are included, as
 /// they are in the render's time.
 Timing timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& frames,
-                      const std::filesystem::path& file, int jobs) {
+                      const std::filesystem::path& file, int jobs, double* conversion) {
   const Stopwatch stopwatch;
   output::Mp4Encoder encoder(file, pipeline::encoder_settings(scene, jobs));
   for (const RgbaImage& frame : frames) encoder.add_frame(frame);
   encoder.finish();
   const Timing timing = stopwatch.elapsed();
+  if (conversion) *conversion = encoder.conversion_seconds();
   std::filesystem::remove(file);
   return timing;
+}
+
+/// CPU seconds of each part of the render's work, summed over a clip's frames.
+struct Split {
+  double simulation = 1e300, draw = 1e300, read_back = 1e300, png = 1e300;
+  pipeline::OverlayTimes overlays{1e300, 1e300, 1e300};
+  /// Keeps, part by part, the smaller time of this and `run`.
+  void keep_best(const Split& run) {
+    simulation = std::min(simulation, run.simulation);
+    draw = std::min(draw, run.draw);
+    read_back = std::min(read_back, run.read_back);
+    png = std::min(png, run.png);
+    overlays.panel = std::min(overlays.panel, run.overlays.panel);
+    overlays.sphere = std::min(overlays.sphere, run.overlays.sphere);
+    overlays.caption = std::min(overlays.caption, run.overlays.caption);
+  }
+};
+
+/// The render's parts one after another on this thread, each timed with the CPU time of the
+/// whole process (llvmpipe rasterizes on threads of its own), nothing else running: the
+/// frames of `scene` as the render command makes them, without the encoder.
+Split timed_parts(const scene::Scene& scene, const std::filesystem::path& png_file) {
+  render::Renderer renderer(pipeline::render_settings_for(scene));
+  pipeline::FrameSource source(scene);
+  pipeline::FrameDecorator decorator(scene);
+  const pipeline::BodyDrawing drawing(scene.body);
+  pipeline::ShownFrame frame;
+  Split split{0, 0, 0, 0, {}};
+  for (int index = 0; index < scene.frames; ++index) {
+    double start = process_cpu_seconds();
+    const auto lap = [&start] {
+      const double now = process_cpu_seconds(), elapsed = now - start;
+      start = now;
+      return elapsed;
+    };
+    pipeline::advance(source, index, scene, frame);
+    split.simulation += lap();
+    renderer.draw(drawing.input_for(frame.pose));
+    split.draw += lap();
+    RgbaImage image = renderer.read_back();
+    split.read_back += lap();
+    decorator.decorate(image, frame.t, frame.diverged_at, frame.history, &split.overlays);
+    lap();
+    output::write_png(png_file, image, scene.render.png_compression);
+    split.png += lap();
+  }
+  std::filesystem::remove(png_file);
+  return split;
 }
 
 constexpr int kPipelineWidth = 1280, kPipelineHeight = 720;
@@ -158,6 +208,7 @@ namespace {
 /// The pipeline's timings, each the best over the rounds.
 struct PipelineTimes {
   Timing floor, no_png, png, anisotropic, no_msaa, start_up;
+  double conversion = 0;  ///< CPU seconds of the floor's RGBA → yuv420p conversion
 };
 
 std::string cores_busy(const Timing& t) {
@@ -212,6 +263,29 @@ void report_cpu(BenchReport& report, const PipelineTimes& best, const std::strin
   ratio("render with PNGs", best.png);
 }
 
+/// Per frame: the CPU time the render adds to the encoder's, and its parts.
+void report_split(BenchReport& report, const PipelineTimes& best, const Split& split, int frames) {
+  const auto row = [&](const std::string& metric, double seconds, const std::string& note) {
+    report.add({"pipeline split", metric + ", per frame", 1e3 * seconds / frames, "ms", note});
+  };
+  const std::string parts =
+      "CPU time of the part alone, all parts of a frame in turn on one thread, best of the "
+      "rounds part by part";
+  row("render --no-png minus the floor, CPU time", best.no_png.cpu - best.floor.cpu,
+      "what the render adds to the encoder's work (the best runs above)");
+  row("render with PNGs minus the floor, CPU time", best.png.cpu - best.floor.cpu,
+      "the same with PNG frames");
+  row("simulation", split.simulation, parts);
+  row("GL draw + MSAA resolve", split.draw, parts + "; glFinish after the draw");
+  row("read-back", split.read_back, parts + "; glReadPixels and the row flip");
+  row("overlay: panel plots", split.overlays.panel, parts);
+  row("overlay: momentum sphere inset", split.overlays.sphere, parts);
+  row("overlay: caption", split.overlays.caption, parts);
+  row("PNG", split.png, parts + "; zlib level as the scene's, one thread");
+  row("conversion RGBA to yuv420p", best.conversion,
+      "swscale inside the encoder; part of the floor, not added by the render");
+}
+
 }  // namespace
 
 // The runs are alternated round by round and each keeps its best (shortest) time: on a
@@ -226,17 +300,24 @@ void bench_pipeline(const BenchContext& c) {
       clip_request(c, "anisotropic", w, h, frames, false, {"render.anisotropy=4"});
   const auto no_msaa = clip_request(c, "no-msaa", w, h, frames, false, {"render.msaa=1"});
   PipelineTimes best;
+  Split split;
   for (int round = 0; round < rounds; ++round) {
-    best.floor.keep_best(timed_encoding(scene, rendered, c.scratch / "floor.mp4", c.options.jobs));
+    double conversion = 0;
+    const Timing floor =
+        timed_encoding(scene, rendered, c.scratch / "floor.mp4", c.options.jobs, &conversion);
+    if (floor.wall < best.floor.wall) best.conversion = conversion;
+    best.floor.keep_best(floor);
     best.no_png.keep_best(timed_render(clip_request(c, "no-png", w, h, frames, false)));
     best.png.keep_best(timed_render(clip_request(c, "png", w, h, frames, true)));
     best.anisotropic.keep_best(timed_render(anisotropic));
     best.no_msaa.keep_best(timed_render(no_msaa));
     best.start_up.keep_best(timed_render(clip_request(c, "start-up", w, h, 2, false)));
+    split.keep_best(timed_parts(scene, c.scratch / "split.png"));
   }
   const std::string what = frames_text(frames, w, h);
   report_wall(*c.report, best, scene, what, rounds);
   report_cpu(*c.report, best, what);
+  report_split(*c.report, best, split, frames);
 }
 
 void bench_resolution(const BenchContext& c) {

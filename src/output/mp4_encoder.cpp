@@ -1,5 +1,6 @@
 #include "output/mp4_encoder.hpp"
 
+#include <ctime>
 #include <stdexcept>
 #include <string>
 
@@ -9,6 +10,12 @@
 
 namespace bookspin::output {
 namespace {
+
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
 
 std::string size_text(int width, int height) {
   return std::to_string(width) + "x" + std::to_string(height);
@@ -46,6 +53,7 @@ struct Mp4Encoder::Impl {
   libav::FramePtr frame;
   libav::PacketPtr packet;
   std::int64_t frames_added = 0;
+  double conversion_seconds = 0.0;  ///< CPU time in sws_scale so far
   bool closed = false;
 
   Impl(std::filesystem::path path, const EncoderSettings& s)
@@ -174,8 +182,10 @@ void Mp4Encoder::add_frame(const RgbaImage& image) {
   // sws_scale reads four plane pointers and strides, even for packed RGBA.
   const std::uint8_t* source[4] = {image.pixels.data(), nullptr, nullptr, nullptr};
   const int source_stride[4] = {image.width * 4, 0, 0, 0};
+  const double start = thread_cpu_seconds();
   sws_scale(s.scaler.get(), source, source_stride, 0, image.height, s.frame->data,
             s.frame->linesize);
+  s.conversion_seconds += thread_cpu_seconds() - start;
   s.frame->pts = s.frames_added;
   s.encode(s.frame.get());
   ++s.frames_added;
@@ -200,5 +210,6 @@ std::int64_t Mp4Encoder::frame_count() const { return impl_->frames_added; }
 const std::string& Mp4Encoder::codec_name() const { return impl_->codec_name; }
 const std::string& Mp4Encoder::fallback_message() const { return impl_->fallback_message; }
 const std::filesystem::path& Mp4Encoder::path() const { return impl_->output.final_path(); }
+double Mp4Encoder::conversion_seconds() const { return impl_->conversion_seconds; }
 
 }  // namespace bookspin::output

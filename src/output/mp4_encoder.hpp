@@ -76,6 +76,9 @@ class Mp4Encoder {
   /// Empty if settings.codec was used; otherwise one line on why libx264 was used.
   const std::string& fallback_message() const;
   const std::filesystem::path& path() const;
+  /// CPU seconds spent so far converting RGBA frames to yuv420p (swscale, on the threads
+  /// that called add_frame), for bookspin-bench's split of a frame's cost.
+  double conversion_seconds() const;
 
  private:
   struct Impl;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 
 #include "common/argb32.hpp"
 
@@ -65,9 +66,30 @@ void CairoCanvas::composite_onto(RgbaImage& image) {
   for (int y = 0; y < rows; ++y) {
     const unsigned char* src_row = data + static_cast<std::ptrdiff_t>(y) * stride;
     std::uint8_t* dst = image.row(region_.y + y) + 4 * static_cast<std::ptrdiff_t>(region_.x);
-    for (int x = 0; x < columns; ++x, dst += 4)
-      argb32::blend_over_opaque(argb32::load(src_row + 4 * x), dst);
+    argb32::blend_row_over_opaque(src_row, dst, columns);
   }
+}
+
+std::vector<unsigned char> CairoCanvas::snapshot() {
+  cairo_surface_flush(surface_);
+  const unsigned char* data = cairo_image_surface_get_data(surface_);
+  if (data == nullptr) return {};
+  const std::size_t bytes =
+      static_cast<std::size_t>(cairo_image_surface_get_stride(surface_)) * region_.height;
+  return std::vector<unsigned char>(data, data + bytes);
+}
+
+void CairoCanvas::restore(const std::vector<unsigned char>& pixels) {
+  cairo_surface_flush(surface_);
+  unsigned char* data = cairo_image_surface_get_data(surface_);
+  const std::size_t bytes =
+      data == nullptr
+          ? 0
+          : static_cast<std::size_t>(cairo_image_surface_get_stride(surface_)) * region_.height;
+  if (pixels.size() != bytes)
+    throw std::invalid_argument("CairoCanvas::restore: a snapshot of another size");
+  if (bytes > 0) std::memcpy(data, pixels.data(), bytes);
+  cairo_surface_mark_dirty(surface_);
 }
 
 }  // namespace bookspin::overlay

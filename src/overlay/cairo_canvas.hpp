@@ -3,6 +3,8 @@
 // with alpha.
 #include <cairo.h>
 
+#include <vector>
+
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 
@@ -36,6 +38,14 @@ class CairoCanvas {
 
   cairo_t* cr() const { return cr_; }
   void composite_onto(RgbaImage& image);
+
+  /// A copy of what has been drawn so far (the region's premultiplied ARGB32 pixels).
+  std::vector<unsigned char> snapshot();
+  /// Puts back a snapshot of this canvas: the pixels are then exactly as they were when it
+  /// was taken, so drawing on from there gives the same pixels as drawing on back then.
+  /// The context's state (source, line width, path, …) is not part of it. Throws
+  /// std::invalid_argument for a snapshot of another size.
+  void restore(const std::vector<unsigned char>& pixels);
 
  private:
   PixelRegion region_;

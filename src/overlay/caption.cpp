@@ -1,6 +1,7 @@
 #include "overlay/caption.hpp"
 
 #include <algorithm>
+#include <memory>
 
 #include "overlay/cairo_canvas.hpp"
 
@@ -61,12 +62,19 @@ CaptionBox caption_box(cairo_t* cr, int image_height, const std::vector<CaptionL
   return box;
 }
 
-void draw_caption_box(cairo_t* cr, const std::vector<CaptionLine>& lines, const CaptionBox& box) {
+void fill_caption_box(cairo_t* cr, const CaptionBox& box) {
   cairo_rectangle(cr, box.x, box.y, box.width, box.height);
   cairo_set_source_rgba(cr, 0.05, 0.06, 0.09, 0.62);
   cairo_fill(cr);
+}
+
+/// Lines [first, last) of the caption in `box`.
+void draw_caption_lines(cairo_t* cr, const std::vector<CaptionLine>& lines, std::size_t first,
+                        std::size_t last, const CaptionBox& box) {
   double baseline = box.y + box.pad / 2 + box.size;
-  for (const auto& line : lines) {
+  for (std::size_t i = 0; i < last; ++i, baseline += box.line_height) {
+    if (i < first) continue;
+    const CaptionLine& line = lines[i];
     select_overlay_font(cr, line.bold, box.size);
     if (line.style == CaptionStyle::warning) {
       cairo_set_source_rgb(cr, 1.0, 0.45, 0.35);
@@ -75,8 +83,28 @@ void draw_caption_box(cairo_t* cr, const std::vector<CaptionLine>& lines, const 
     }
     cairo_move_to(cr, box.x + box.pad, baseline);
     cairo_show_text(cr, line.text.c_str());
-    baseline += box.line_height;
   }
+}
+
+void draw_caption_box(cairo_t* cr, const std::vector<CaptionLine>& lines, const CaptionBox& box) {
+  fill_caption_box(cr, box);
+  draw_caption_lines(cr, lines, 0, lines.size(), box);
+}
+
+bool operator==(const CaptionLine& a, const CaptionLine& b) {
+  return a.text == b.text && a.style == b.style && a.bold == b.bold;
+}
+
+bool operator==(const CaptionBox& a, const CaptionBox& b) {
+  return a.size == b.size && a.pad == b.pad && a.line_height == b.line_height && a.x == b.x &&
+         a.y == b.y && a.width == b.width && a.height == b.height;
+}
+
+/// How many leading lines `a` and `b` share.
+std::size_t common_lines(const std::vector<CaptionLine>& a, const std::vector<CaptionLine>& b) {
+  std::size_t n = 0;
+  while (n < a.size() && n < b.size() && a[n] == b[n]) ++n;
+  return n;
 }
 
 }  // namespace
@@ -96,6 +124,46 @@ void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines,
       region_around(box.x, box.y, box.width, box.height, 2.0, image.width, image.height));
   draw_caption_box(canvas.cr(), lines, box);
   canvas.composite_onto(image);
+}
+
+struct CaptionPainter::State {
+  Measure measure;
+  int width = 0, height = 0;
+  CaptionBox box;
+  std::unique_ptr<CairoCanvas> canvas;
+  std::vector<CaptionLine> kept;      ///< the lines drawn in `drawn`
+  std::vector<unsigned char> drawn;   ///< the canvas with the box and `kept` drawn
+  std::vector<CaptionLine> previous;  ///< the last frame's lines
+};
+
+CaptionPainter::CaptionPainter() : state_(std::make_unique<State>()) {}
+CaptionPainter::~CaptionPainter() = default;
+
+// draw_caption's calls, with the box and the lines the frames share drawn once.
+void CaptionPainter::draw(RgbaImage& image, const std::vector<CaptionLine>& lines,
+                          const CaptionLayout& layout) {
+  if (lines.empty()) return;
+  State& s = *state_;
+  const CaptionBox box = caption_box(s.measure.cr, image.height, lines, layout);
+  const std::size_t stable = common_lines(lines, s.previous);
+  s.previous = lines;
+  const bool holds = s.canvas && image.width == s.width && image.height == s.height &&
+                     box == s.box && common_lines(lines, s.kept) == s.kept.size() &&
+                     s.kept.size() >= stable;
+  if (holds) {
+    s.canvas->restore(s.drawn);
+  } else {
+    s.width = image.width, s.height = image.height, s.box = box;
+    s.canvas = std::make_unique<CairoCanvas>(
+        image.width, image.height,
+        region_around(box.x, box.y, box.width, box.height, 2.0, image.width, image.height));
+    fill_caption_box(s.canvas->cr(), box);
+    draw_caption_lines(s.canvas->cr(), lines, 0, stable, box);
+    s.kept.assign(lines.begin(), lines.begin() + static_cast<std::ptrdiff_t>(stable));
+    s.drawn = s.canvas->snapshot();
+  }
+  draw_caption_lines(s.canvas->cr(), lines, s.kept.size(), lines.size(), box);
+  s.canvas->composite_onto(image);
 }
 
 void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines) {

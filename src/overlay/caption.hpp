@@ -2,6 +2,7 @@
 // Text captions composited over a rendered frame (cairo, DejaVu Sans through fontconfig).
 #include <cairo.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,27 @@ struct CaptionLayout {
 /// Same, placed and sized by `layout`.
 void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines,
                   const CaptionLayout& layout);
+
+class CairoCanvas;
+
+/// draw_caption for the frames of one clip, whose first lines (title, model) stay the same:
+/// the box and the lines that were the same as the previous frame's are kept drawn, and
+/// each frame adds only the lines after them over a copy. The pixels are exactly
+/// draw_caption's.
+class CaptionPainter {
+ public:
+  CaptionPainter();
+  ~CaptionPainter();
+  CaptionPainter(const CaptionPainter&) = delete;
+  CaptionPainter& operator=(const CaptionPainter&) = delete;
+
+  /// As draw_caption(image, lines, layout).
+  void draw(RgbaImage& image, const std::vector<CaptionLine>& lines, const CaptionLayout& layout);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 /// The font size (pixels) draw_caption would use for `lines` at `font_size` within a box of
 /// at most `max_width` pixels, so several captions can share the smallest.

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <utility>
 
 #include "overlay/cairo_canvas.hpp"
 
@@ -91,12 +94,11 @@ SphereDisc sphere_disc(const PixelRect& rect) {
   return {rect.x + 0.5 * rect.width, rect.y + top + 0.5 * (rect.height - top), r};
 }
 
-void draw_sphere(RgbaImage& image, const PixelRect& rect, const SphereSpec& spec) {
-  if (rect.width < 60 || rect.height < 60) return;  // no room for a readable sphere
-  CairoCanvas canvas(
-      image.width, image.height,
-      region_around(rect.x, rect.y, rect.width, rect.height, 2.0, image.width, image.height));
-  cairo_t* cr = canvas.cr();
+namespace {
+
+/// Everything but the trails and the axis labels: the background, title, outline, axes and
+/// curves.
+void draw_base(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
@@ -145,6 +147,18 @@ void draw_sphere(RgbaImage& image, const PixelRect& rect, const SphereSpec& spec
     }
     stroke_sides(cr, runs, first.colour, first.width * unit);
   }
+}
+
+/// The trails with their end dots, then the axis labels on top: what draw_base leaves.
+void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
+  cairo_save(cr);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  const SphereDisc disc = sphere_disc(rect);
+  const double unit = rect.height / 150.0;
+  const double font = font_for(rect);
+  const Basis basis = basis_of(spec);
+  cairo_text_extents_t ext;
   for (const auto& t : spec.trails) {
     SideRuns runs;
     runs.add(basis, disc, t.points);
@@ -182,7 +196,46 @@ void draw_sphere(RgbaImage& image, const PixelRect& rect, const SphereSpec& spec
     cairo_move_to(cr, x, y);
     cairo_show_text(cr, axis.label.c_str());
   }
+  cairo_restore(cr);
+}
+
+bool drawable(const PixelRect& rect) { return rect.width >= 60 && rect.height >= 60; }
+
+PixelRegion inset_region(const RgbaImage& image, const PixelRect& rect) {
+  return region_around(rect.x, rect.y, rect.width, rect.height, 2.0, image.width, image.height);
+}
+
+}  // namespace
+
+void draw_sphere(RgbaImage& image, const PixelRect& rect, const SphereSpec& spec) {
+  if (!drawable(rect)) return;  // no room for a readable sphere
+  CairoCanvas canvas(image.width, image.height, inset_region(image, rect));
+  draw_base(canvas.cr(), rect, spec);
+  draw_top(canvas.cr(), rect, spec);
   canvas.composite_onto(image);
+}
+
+SphereInset::SphereInset(int image_width, int image_height, const PixelRect& rect, SphereSpec spec)
+    : width_(image_width), height_(image_height), rect_(rect), spec_(std::move(spec)) {
+  spec_.trails.clear();
+  if (!drawable(rect_)) return;
+  canvas_ = std::make_unique<CairoCanvas>(
+      width_, height_,
+      region_around(rect.x, rect.y, rect.width, rect.height, 2.0, image_width, image_height));
+  draw_base(canvas_->cr(), rect_, spec_);
+  base_ = canvas_->snapshot();
+}
+
+SphereInset::~SphereInset() = default;
+
+void SphereInset::draw(RgbaImage& image, std::vector<SphereTrail> trails) {
+  if (image.width != width_ || image.height != height_)
+    throw std::invalid_argument("SphereInset::draw: an image of another size");
+  if (!canvas_) return;
+  canvas_->restore(base_);
+  spec_.trails = std::move(trails);
+  draw_top(canvas_->cr(), rect_, spec_);
+  canvas_->composite_onto(image);
 }
 
 }  // namespace bookspin::overlay

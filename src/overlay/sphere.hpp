@@ -5,6 +5,7 @@
 #include <cairo.h>
 
 #include <Eigen/Dense>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,5 +61,35 @@ SphereDisc sphere_disc(const PixelRect& rect);
 /// sphere's outline, the axes and their labels, the curves (near side solid, far side faint
 /// and dashed), the trails and their end dots, and the title on top.
 void draw_sphere(RgbaImage& image, const PixelRect& rect, const SphereSpec& spec);
+
+class CairoCanvas;
+
+/// draw_sphere for an inset drawn on every frame of a clip: what does not change (the
+/// background, title, outline, axes and curves) is drawn once, and each frame adds only the
+/// trails and the axis labels over a copy of it. The pixels are exactly draw_sphere's.
+class SphereInset {
+ public:
+  /// An inset `rect` on image_width×image_height images showing `spec` (its trails are
+  /// ignored: draw() gives them).
+  SphereInset(int image_width, int image_height, const PixelRect& rect, SphereSpec spec);
+  ~SphereInset();
+  SphereInset(const SphereInset&) = delete;
+  SphereInset& operator=(const SphereInset&) = delete;
+
+  /// As draw_sphere(image, rect, spec with `trails`). Throws std::invalid_argument for an
+  /// image of another size than the constructor's.
+  void draw(RgbaImage& image, std::vector<SphereTrail> trails);
+  /// Whether `image` has the size this inset was made for.
+  bool fits(const RgbaImage& image) const {
+    return image.width == width_ && image.height == height_;
+  }
+
+ private:
+  int width_, height_;
+  PixelRect rect_;
+  SphereSpec spec_;
+  std::unique_ptr<CairoCanvas> canvas_;  ///< null where the inset is too small to draw
+  std::vector<unsigned char> base_;      ///< the canvas with the unchanging layer drawn
+};
 
 }  // namespace bookspin::overlay

@@ -26,7 +26,7 @@ struct InFlight {
 class FrameFinisher {
  public:
   FrameFinisher(const ClipRequest& request, output::ClipSinks& sinks, ClipResult& result)
-      : request_(request), sinks_(sinks), result_(result) {}
+      : request_(request), sinks_(sinks), result_(result), decorator_(request.scene) {}
 
   void expect(InFlight frame) { in_flight_.push_back(std::move(frame)); }
 
@@ -36,7 +36,7 @@ class FrameFinisher {
     InFlight frame = std::move(in_flight_.front());
     in_flight_.pop_front();
     if (frame.fresh) history_.add(frame.diagnostics);
-    decorate_frame(image, request_.scene, frame.t, frame.diverged_at, history_);
+    decorator_.decorate(image, frame.t, frame.diverged_at, history_);
     physics::Diagnostics row = frame.diagnostics;
     row.t = frame.t;
     sinks_.add(frame.index, std::move(image), row);
@@ -50,6 +50,7 @@ class FrameFinisher {
   ClipResult& result_;
   std::deque<InFlight> in_flight_;
   DiagnosticsHistory history_;  ///< every frame finished so far, like ShownFrame::history
+  FrameDecorator decorator_;
 };
 
 int stop_signal(const ClipRequest& request) {

@@ -1,6 +1,7 @@
 #include "pipeline/decoration.hpp"
 
 #include <cstdio>
+#include <ctime>
 
 #include "pipeline/panel.hpp"
 #include "pipeline/sphere_view.hpp"
@@ -14,6 +15,27 @@ std::string format(const char* pattern, double value) {
   std::snprintf(text, sizeof text, pattern, value);
   return text;
 }
+
+/// CPU time of this thread between laps (the overlays are drawn on one thread).
+class CpuTimer {
+ public:
+  explicit CpuTimer(bool on) : on_(on), last_(on ? now() : 0.0) {}
+  double lap() {
+    if (!on_) return 0.0;
+    const double t = now(), elapsed = t - last_;
+    last_ = t;
+    return elapsed;
+  }
+
+ private:
+  static double now() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  }
+  bool on_;
+  double last_;
+};
 
 }  // namespace
 
@@ -48,6 +70,16 @@ std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double 
 
 void decorate_frame(RgbaImage& image, const scene::Scene& scene, double t,
                     std::optional<double> diverged_at, const DiagnosticsHistory& history) {
+  FrameDecorator(scene).decorate(image, t, diverged_at, history);
+}
+
+FrameDecorator::FrameDecorator(const scene::Scene& scene) : scene_(scene) {}
+FrameDecorator::~FrameDecorator() = default;
+
+void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> diverged_at,
+                              const DiagnosticsHistory& history, OverlayTimes* times) {
+  const scene::Scene& scene = scene_;
+  CpuTimer timer(times != nullptr);
   overlay::CaptionLayout caption;
   double centre_x = 0.5 * image.width;
   if (scene.render.panel) {
@@ -55,16 +87,22 @@ void decorate_frame(RgbaImage& image, const scene::Scene& scene, double t,
     draw_panel(image, rect, panel_plots(single_run(scene, history), clip_end_time(scene), t));
     caption.max_width = rect.x - 0.03 * image.height;  // keep clear of the panel
     centre_x = 0.5 * rect.x;
+    if (times) times->panel += timer.lap();
   }
   if (scene.render.sphere) {
-    const double book_width = scene.render.panel ? panel_rect(image.width, image.height).x
-                                                 : static_cast<double>(image.width);
-    overlay::draw_sphere(
-        image, sphere_rect(image.width, image.height, book_width),
-        sphere_spec(sphere_moments(scene), {SphereRun{&history, palette_colour(0)}}));
+    if (!sphere_ || !sphere_->fits(image)) {
+      const double book_width = scene.render.panel ? panel_rect(image.width, image.height).x
+                                                   : static_cast<double>(image.width);
+      sphere_ = std::make_unique<overlay::SphereInset>(
+          image.width, image.height, sphere_rect(image.width, image.height, book_width),
+          sphere_spec(sphere_moments(scene), {}));
+    }
+    sphere_->draw(image, sphere_trails({SphereRun{&history, palette_colour(0)}}));
+    if (times) times->sphere += timer.lap();
   }
-  overlay::draw_caption(image, caption_for(scene, t, diverged_at), caption);
+  caption_.draw(image, caption_for(scene, t, diverged_at), caption);
   if (diverged_at) overlay::draw_banner(image, divergence_text(*diverged_at), centre_x);
+  if (times) times->caption += timer.lap();
 }
 
 }  // namespace bookspin::pipeline

@@ -46,6 +46,12 @@ overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments,
     c.width = p.separatrix ? 1.4 : 0.8;
     spec.curves.push_back(std::move(c));
   }
+  spec.trails = sphere_trails(runs);
+  return spec;
+}
+
+std::vector<overlay::SphereTrail> sphere_trails(const std::vector<SphereRun>& runs) {
+  std::vector<overlay::SphereTrail> trails;
   for (const auto& run : runs) {
     overlay::SphereTrail t;
     for (const auto& u : run.history->momentum_direction)
@@ -53,9 +59,9 @@ overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments,
     t.colour = run.colour;
     // Trails drawn later are narrower, so runs in lockstep (one curve) still show every colour.
     t.width = 1.6 + 0.9 * static_cast<double>(runs.size() - 1 - (&run - runs.data()));
-    spec.trails.push_back(std::move(t));
+    trails.push_back(std::move(t));
   }
-  return spec;
+  return trails;
 }
 
 PixelRect sphere_rect(int width, int height, double book_width) {

@@ -31,6 +31,9 @@ struct SphereRun {
 /// narrower than the one before, so coinciding trails show every colour).
 overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments, const std::vector<SphereRun>& runs);
 
+/// The trails of sphere_spec(moments, runs) alone (what changes from frame to frame).
+std::vector<overlay::SphereTrail> sphere_trails(const std::vector<SphereRun>& runs);
+
 /// The inset's square in a width×height frame whose book part is `book_width` pixels wide
 /// (the whole width, or the part left of the panel): at the left edge, below the caption,
 /// above the divergence banner; side min(0.45·height, 0.42·book_width).

@@ -181,6 +181,17 @@ Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 RgbaImage Renderer::render(const FrameInput& frame) { return impl_->render(frame); }
+void Renderer::draw(const FrameInput& frame) {
+  impl_->draw(frame);
+  glFinish();
+  check_gl("finishing a frame");
+}
+RgbaImage Renderer::read_back() {
+  impl_->context->make_current();
+  RgbaImage image;
+  impl_->reader.read(*impl_->target, image);
+  return image;
+}
 void Renderer::submit(const FrameInput& frame) { impl_->submit(frame); }
 std::optional<RgbaImage> Renderer::collect() {
   if (impl_->reader.pending() < impl_->reader.ring_size()) return std::nullopt;

@@ -88,6 +88,13 @@ class Renderer {
   /// submit() are unaffected.
   RgbaImage render(const FrameInput& frame);
 
+  /// render() in two halves, so that each can be timed (bookspin-bench): draw() draws
+  /// `frame` (MSAA resolve included) and waits until the GL has finished it; read_back()
+  /// then returns its pixels, exactly what render() would have returned. Same errors as
+  /// render(); read_back() without a draw() first returns the last frame drawn.
+  void draw(const FrameInput& frame);
+  RgbaImage read_back();
+
   /// Pipelined rendering (the render command's path): draws `frame` and starts its
   /// read-back through a ring of pixel-buffer objects without waiting for it. At most
   /// pipeline_depth() frames may be in flight (std::logic_error otherwise), so call

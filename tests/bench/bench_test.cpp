@@ -32,11 +32,12 @@ BenchRun run_bench(const std::string& name, const std::string& args) {
 
 /// The value column of the pipeline CSV row whose metric starts with `metric`; NaN if there
 /// is none. Metrics holding a comma are quoted (and none of these holds a quote).
-double csv_value(const std::string& csv, const std::string& metric) {
+double csv_value(const std::string& csv, const std::string& metric,
+                 const std::string& section = "pipeline") {
   for (const std::string& field : {"\"" + metric, metric}) {
-    const auto at = csv.find("\npipeline," + field);
+    const auto at = csv.find("\n" + section + "," + field);
     if (at == std::string::npos) continue;
-    const auto metric_start = at + std::string("\npipeline,").size();
+    const auto metric_start = at + section.size() + 2;
     const auto metric_end =
         field[0] == '"' ? csv.find("\",", metric_start + 1) + 1 : csv.find(',', metric_start);
     return std::stod(csv.substr(metric_end + 1));
@@ -92,6 +93,21 @@ TEST(Bench, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
                   csv_value(csv, "encoder alone (the floor), CPU time"),
               1e-3 * csv_value(csv, "render --no-png / floor, CPU time"))
       << csv;
+  // The split of a frame's cost: every part measured, in ms per frame; the parts the render
+  // adds cannot together exceed what the whole render costs (the PNG aside, 2 frames: a
+  // generous bound, start-up included in the whole).
+  double parts = 0.0;
+  for (const char* part :
+       {"simulation", "GL draw + MSAA resolve", "read-back", "overlay: panel plots",
+        "overlay: momentum sphere inset", "overlay: caption"}) {
+    const double ms = csv_value(csv, std::string(part) + ", per frame", "pipeline split");
+    EXPECT_GE(ms, 0.0) << part << "\n" << csv;
+    parts += ms;
+  }
+  EXPECT_GT(parts, 0.0) << csv;
+  EXPECT_GT(csv_value(csv, "PNG, per frame", "pipeline split"), 0.0) << csv;
+  EXPECT_GT(csv_value(csv, "conversion RGBA to yuv420p, per frame", "pipeline split"), 0.0) << csv;
+  EXPECT_LE(parts, 1e3 * csv_value(csv, "render --no-png, CPU time") / 2) << csv;
   // The renders went to a scratch directory that is gone: only the CSV is left here.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(run.dir),
                           std::filesystem::directory_iterator()),
