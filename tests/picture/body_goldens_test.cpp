@@ -37,16 +37,11 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BodyGoldens,
 // (one simulator per tile), at frame 45 (t = 4.5): just after the first flip, with the three
 // T-handles turned over together.
 TEST(BodyGoldens, LatticeComparisonFlipsWithTheRigidBodyAndTheExactMotion) {
-  const auto dir = fresh_output_dir("body-compare");
-  const std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR +
-                              "/scenes/compare-t-handle-models.toml -o " + dir.string() +
-                              " --frames 46 --set render.width=512 --set render.height=288" +
-                              " --set render.preset='\"ultrafast\"' > /dev/null 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  const RgbaImage frame =
-      output::read_png(dir / "compare-t-handle-models" / "frames" / "frame_00045.png");
+  const RgbaImage frame = rendered_frame(
+      "compare-t-handle-models", 45,
+      "--set render.width=512 --set render.height=288 --set render.preset='\"ultrafast\"'",
+      "body-compare");
   EXPECT_TRUE(matches_golden("compare-t-handle-models-f0045", frame));
-  if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir);
 }
 
 }  // namespace

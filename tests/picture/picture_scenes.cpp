@@ -1,13 +1,18 @@
 #include "picture_scenes.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <sstream>
 
+#include "golden_store.hpp"
+#include "output/png_writer.hpp"
 #include "pipeline/decoration.hpp"
 #include "pipeline/render_settings.hpp"
 
@@ -89,6 +94,23 @@ std::string test_name(std::string name) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   }
   return name;
+}
+
+RgbaImage rendered_frame(const std::string& scene, int index, const std::string& args,
+                         const std::string& folder) {
+  const auto dir = fresh_output_dir(folder);
+  const std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR +
+                              "/scenes/" + scene + ".toml -o " + dir.string() + " --frames " +
+                              std::to_string(index + 1) + " " + args + " > /dev/null 2>&1";
+  if (std::system(command.c_str()) != 0) {
+    ADD_FAILURE() << "failed: " << command;
+    return RgbaImage{};
+  }
+  char frame[32];
+  std::snprintf(frame, sizeof frame, "frame_%05d.png", index);
+  const RgbaImage image = output::read_png(dir / scene / "frames" / frame);
+  std::filesystem::remove_all(dir);
+  return image;
 }
 
 }  // namespace bookspin::picture

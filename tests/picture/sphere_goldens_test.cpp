@@ -38,17 +38,12 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SphereGoldens,
 // frame 299 the particle model's trail has turned back towards +x while the rigid and exact
 // ones (in lockstep, drawn narrower on top of each other) have not.
 TEST(SphereGoldens, ComparisonDrawsOneTrailPerTile) {
-  const auto dir = fresh_output_dir("sphere-compare");
-  const std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR +
-                              "/scenes/compare-methods-x.toml -o " + dir.string() +
-                              " --frames 300 --set render.width=640 --set render.height=360" +
-                              " --set render.preset='\"ultrafast\"' --set render.sphere=true" +
-                              " > /dev/null 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  const RgbaImage frame =
-      output::read_png(dir / "compare-methods-x" / "frames" / "frame_00299.png");
+  const RgbaImage frame = rendered_frame(
+      "compare-methods-x", 299,
+      "--set render.width=640 --set render.height=360 --set render.preset='\"ultrafast\"'"
+      " --set render.sphere=true",
+      "sphere-compare");
   EXPECT_TRUE(matches_golden("sphere-compare-methods-x-f0299", frame));
-  if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir);
 }
 
 }  // namespace
