@@ -14,11 +14,14 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j $(JOBS)
 
-# The sweep first, so that the one gallery render-all writes at the end shows it too
+# The sweeps first, so that the one gallery render-all writes at the end shows it too
 # (GALLERY_EXTRA: scene files the gallery lists beside the rendered ones).
 figures: build
 	$(BUILD)/bookspin sweep sweeps/flip-time-vs-perturbation.toml \
 	  --vary 'initial.angular_velocity[1]=1e-6:1e-2:20:log' \
+	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
+	$(BUILD)/bookspin sweep sweeps/t-handle-flip-time-vs-perturbation.toml \
+	  --vary 'initial.angular_velocity[0]=1e-6:1e-2:20:log' \
 	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
 	@GALLERY_EXTRA="$(SWEEPS)" bash scripts/render-all.sh $(BUILD)/bookspin out $(SCENES)
 

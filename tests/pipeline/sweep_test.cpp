@@ -153,6 +153,30 @@ TEST(SweepMeasures, FirstFlipGrowsLikeTheLogOfOneOverEpsilon) {
     EXPECT_NEAR((first[i] - first[i - 1]) * sigma / std::log(10.0), 1.0, 1e-3) << i;
 }
 
+TEST(SweepMeasures, TheTHandleSweepSceneFollowsTheSameLogLaw) {
+  // sweeps/t-handle-flip-time-vs-perturbation.toml: spin Ω = 2 about y (intermediate), ε
+  // about x (smallest), quaternion RK4 at dt = 0.001. Same law as the book's, with
+  // σ = Ω·√((I_y − I_x)(I_z − I_y)/(I_x I_z)) from the T-handle's own moments (§12, §14).
+  const std::string path =
+      std::string(BOOKSPIN_SOURCE_DIR) + "/sweeps/t-handle-flip-time-vs-perturbation.toml";
+  std::vector<double> first;
+  double sigma = 0.0;
+  for (double eps : {1e-3, 1e-4, 1e-5}) {
+    const scene::Scene s = scene::parse_scene(
+        path, {"initial.angular_velocity=[" + full_precision(eps) + ",2,0]", "time.frames=161"});
+    const Eigen::Vector3d I = s.body.moments;
+    sigma = 2.0 * std::sqrt((I.y() - I.x()) * (I.z() - I.y()) / (I.x() * I.z()));
+    const PointMeasures m = measure_run(s);
+    ASSERT_TRUE(m.first_flip && m.flip_period) << eps;
+    EXPECT_NEAR(*m.first_flip / *m.first_flip_exact, 1.0, 1e-8) << eps;
+    EXPECT_NEAR(*m.flip_period / *m.flip_period_exact, 1.0, 1e-5) << eps;
+    EXPECT_LT(*m.energy_drift, 1e-12) << eps;
+    first.push_back(*m.first_flip);
+  }
+  for (std::size_t i = 1; i < first.size(); ++i)
+    EXPECT_NEAR((first[i] - first[i - 1]) * sigma / std::log(10.0), 1.0, 1e-3) << i;
+}
+
 TEST(SweepMeasures, ExactModelHasNoErrorAndParticleModelIsMeasuredFromItsCorners) {
   const PointMeasures exact =
       measure_run(near_intermediate(1e-3, "exact", "euler", 1.0 / 60, 3000));
