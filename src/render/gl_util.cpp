@@ -106,6 +106,13 @@ std::string framebuffer_status_name(GLenum status) {
   return name_of(status, kFramebufferStatuses, "framebuffer status");
 }
 
+bool is_software_rasterizer(std::string_view gl_renderer) {
+  for (const char* software : {"llvmpipe", "softpipe", "SWR"}) {
+    if (gl_renderer.find(software) != std::string_view::npos) return true;
+  }
+  return false;
+}
+
 void check_gl(std::string_view what) {
   const GLenum first = glGetError();
   if (first == GL_NO_ERROR) return;

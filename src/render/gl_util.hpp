@@ -13,6 +13,9 @@ std::string gl_error_name(GLenum code);
 /// "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT", ... for a glCheckFramebufferStatus result.
 std::string framebuffer_status_name(GLenum status);
 
+/// Whether a GL_RENDERER string names a software rasterizer (llvmpipe, softpipe, SWR).
+bool is_software_rasterizer(std::string_view gl_renderer);
+
 /// Throws RenderError "OpenGL error GL_... during <what>" if glGetError reports anything
 /// (drains all pending errors and names the first).
 void check_gl(std::string_view what);

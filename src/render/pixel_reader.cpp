@@ -4,6 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "render/gl_util.hpp"
 #include "render/render_error.hpp"
 
 namespace bookspin::render {
@@ -38,9 +39,34 @@ void copy_flipped(const std::uint8_t* gl_rows, int width, int height, RgbaImage&
 
 }  // namespace
 
-PixelReader::PixelReader(int ring_size) : ring_size_(std::max(2, ring_size)) {}
+PixelReader::PixelReader(int ring_size, bool read_directly)
+    : ring_size_(std::max(2, ring_size)), read_directly_(read_directly) {}
+
+bool PixelReader::read_directly_here(const std::string& gl_renderer) {
+  return is_software_rasterizer(gl_renderer) && epoxy_has_gl_extension("GL_MESA_pack_invert");
+}
+
+// GL_PACK_INVERT_MESA makes glReadPixels write the last row first, i.e. top row first. The
+// image's buffer is reused when it has the size already (no allocation, no page faults).
+void PixelReader::read_inverted(const OffscreenTarget& target, RgbaImage& image) {
+  const std::size_t bytes = static_cast<std::size_t>(target.width()) * target.height() * 4;
+  image.width = target.width();
+  image.height = target.height();
+  image.pixels.resize(bytes);
+  bind_for_reading(target);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
+  glReadPixels(0, 0, target.width(), target.height(), GL_RGBA, GL_UNSIGNED_BYTE,
+               image.pixels.data());
+  glPixelStorei(GL_PACK_INVERT_MESA, GL_FALSE);
+  check_gl("reading back the frame (glReadPixels, rows inverted)");
+}
 
 void PixelReader::read(const OffscreenTarget& target, RgbaImage& image) {
+  if (read_directly_) {
+    read_inverted(target, image);
+    return;
+  }
   bind_for_reading(target);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);  // into client memory, not a ring buffer
   gl_rows_.resize(static_cast<std::size_t>(target.width()) * target.height() * 4);
@@ -68,6 +94,13 @@ void PixelReader::start(const OffscreenTarget& target) {
   if (pending_ >= ring_size_) throw std::logic_error("PixelReader::start with the ring full");
   if (slots_.empty()) slots_.resize(static_cast<std::size_t>(ring_size_));
   Slot& slot = slots_[static_cast<std::size_t>(next_)];
+  if (read_directly_) {
+    slot.image = std::move(spare_);
+    read_inverted(target, slot.image);
+    next_ = (next_ + 1) % ring_size_;
+    ++pending_;
+    return;
+  }
   bind_for_reading(target);
   prepare(slot, target.width(), target.height());
   // With a pack buffer bound the pointer is an offset into it: the call only queues the copy.
@@ -83,6 +116,10 @@ RgbaImage PixelReader::finish(RgbaImage reuse) {
   const int oldest = (next_ - pending_ + ring_size_) % ring_size_;
   Slot& slot = slots_[static_cast<std::size_t>(oldest)];
   --pending_;
+  if (read_directly_) {
+    spare_ = std::move(reuse);
+    return std::move(slot.image);
+  }
   glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer.get());
   const auto bytes = static_cast<GLsizeiptr>(slot.width) * slot.height * 4;
   const void* mapped = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, bytes, GL_MAP_READ_BIT);

@@ -45,10 +45,7 @@ ViewProjection view_projection(const RenderSettings& settings) {
 
 float effective_anisotropy(float requested, const std::string& gl_renderer) {
   if (requested != kAutoAnisotropy) return requested;
-  for (const char* software : {"llvmpipe", "softpipe", "SWR"}) {
-    if (gl_renderer.find(software) != std::string::npos) return 1.0f;
-  }
-  return 4.0f;
+  return is_software_rasterizer(gl_renderer) ? 1.0f : 4.0f;
 }
 
 struct Renderer::Impl {
@@ -60,7 +57,7 @@ struct Renderer::Impl {
   std::optional<BookPass> book;
   std::optional<MarkerPass> markers;
   std::optional<SurfacePass> surface;  ///< made for the first frame that has a surface
-  PixelReader reader{kPipelineDepth};
+  std::optional<PixelReader> reader;
   ViewProjection camera;
   bool background_saved = false;
   RgbaImage spare;           ///< a buffer from recycle() for the next read-back
@@ -78,6 +75,7 @@ struct Renderer::Impl {
     book.emplace(images,
                  effective_anisotropy(settings.max_anisotropy, context->info().gl_renderer));
     markers.emplace();
+    reader.emplace(kPipelineDepth, PixelReader::read_directly_here(context->info().gl_renderer));
     previous_box = whole_frame(settings.width, settings.height);
   }
 
@@ -157,21 +155,21 @@ struct Renderer::Impl {
   RgbaImage render(const FrameInput& frame) {
     draw(frame);
     RgbaImage image;
-    reader.read(*target, image);
+    reader->read(*target, image);
     return image;
   }
 
   void submit(const FrameInput& frame) {
-    if (reader.pending() >= reader.ring_size())
+    if (reader->pending() >= reader->ring_size())
       throw std::logic_error("Renderer::submit with the pipeline full: collect() first");
     draw(frame);
-    reader.start(*target);
+    reader->start(*target);
   }
 
   std::optional<RgbaImage> take_oldest() {
-    if (reader.pending() == 0) return std::nullopt;
+    if (reader->pending() == 0) return std::nullopt;
     context->make_current();
-    return reader.finish(std::move(spare));
+    return reader->finish(std::move(spare));
   }
 };
 
@@ -189,17 +187,17 @@ void Renderer::draw(const FrameInput& frame) {
 RgbaImage Renderer::read_back() {
   impl_->context->make_current();
   RgbaImage image;
-  impl_->reader.read(*impl_->target, image);
+  impl_->reader->read(*impl_->target, image);
   return image;
 }
 void Renderer::submit(const FrameInput& frame) { impl_->submit(frame); }
 std::optional<RgbaImage> Renderer::collect() {
-  if (impl_->reader.pending() < impl_->reader.ring_size()) return std::nullopt;
+  if (impl_->reader->pending() < impl_->reader->ring_size()) return std::nullopt;
   return impl_->take_oldest();
 }
 std::optional<RgbaImage> Renderer::flush() { return impl_->take_oldest(); }
 void Renderer::recycle(RgbaImage image) { impl_->spare = std::move(image); }
-int Renderer::pipeline_depth() const { return impl_->reader.ring_size(); }
+int Renderer::pipeline_depth() const { return impl_->reader->ring_size(); }
 const RenderSettings& Renderer::settings() const { return impl_->settings; }
 const GlInfo& Renderer::info() const { return impl_->context->info(); }
 
