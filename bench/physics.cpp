@@ -48,10 +48,10 @@ struct PhysicsBench {
 };
 
 std::unique_ptr<MujocoBook> mujoco_book(const PhysicsBench& b, bool rk4) {
-  const Eigen::Vector3d L0 = physics::initial_angular_momentum(b.settings.book, b.settings.initial);
+  const Eigen::Vector3d L0 = physics::initial_angular_momentum(b.settings.body.cage, b.settings.initial);
   const Eigen::Vector3d omega0 =
-      b.settings.book.principal_moments().cwiseInverse().cwiseProduct(L0);
-  return std::make_unique<MujocoBook>(MujocoSetup{b.settings.book, omega0, b.dt, rk4});
+      b.settings.body.cage.principal_moments().cwiseInverse().cwiseProduct(L0);
+  return std::make_unique<MujocoBook>(MujocoSetup{b.settings.body.cage, omega0, b.dt, rk4});
 }
 
 void report_inertia(const MujocoBook& book, const physics::Book& ours, BenchReport& report) {
@@ -69,7 +69,7 @@ void report_inertia(const MujocoBook& book, const physics::Book& ours, BenchRepo
 
 /// MuJoCo's rows apart from the paired Euler timings: RK4's cost and both errors.
 void report_mujoco(PhysicsBench& b, const physics::ExactRotation& exact, BenchReport& report) {
-  report_inertia(*b.euler, b.settings.book, report);
+  report_inertia(*b.euler, b.settings.body.cage, report);
   for (MujocoBook* book : {b.euler.get(), b.rk4.get()}) {
     const std::string name = book == b.rk4.get() ? "MuJoCo mj_step RK4" : "MuJoCo mj_step Euler";
     if (book == b.rk4.get()) {
@@ -97,7 +97,7 @@ Paired time_paired(const PhysicsBench& b, const analysis::Method& m) {
   physics::ModelConfig config = b.settings.model;
   config.kind = m.kind;
   config.integrator = m.integrator;
-  auto sim = physics::make_simulator(b.settings.book, config);
+  auto sim = physics::make_simulator(b.settings.body, config);
   Paired best;
   for (int r = 0; r < kRepetitions; ++r) {
     const double ns = time_run(
@@ -121,7 +121,7 @@ Paired time_paired(const PhysicsBench& b, const analysis::Method& m) {
 void bench_physics(const BenchContext& c) {
   const scene::Scene scene = scene::parse_scene(c.options.scene_path);
   PhysicsBench b;
-  b.settings = {scene.book, scene.initial, scene.model, 2.0};
+  b.settings = {scene.body, scene.initial, scene.model, 2.0};
   b.settings.model.normalize = true;  // the paper's per-step normalization for every model
   b.dt = scene.dt;
   const auto exact = analysis::exact_reference(b.settings);

@@ -1,5 +1,5 @@
 // Bench sections that time whole renders: the pipeline against the encoder floor, and
-// resolution scaling. Renders go through pipeline::render_clip, in this process, so they
+// resolution scaling. Renders go through clip::render_clip, in this process, so they
 // measure exactly what `bookspin render` does.
 #include <algorithm>
 #include <chrono>
@@ -14,12 +14,12 @@
 #include "bench/sections.hpp"
 #include "output/mp4_encoder.hpp"
 #include "output/png_writer.hpp"
-#include "pipeline/clip.hpp"
-#include "pipeline/clip_request.hpp"
-#include "pipeline/decoration.hpp"
-#include "pipeline/frame.hpp"
-#include "pipeline/frame_source.hpp"
-#include "pipeline/render_settings.hpp"
+#include "clip/clip.hpp"
+#include "clip/clip_request.hpp"
+#include "charts/decoration.hpp"
+#include "clip/frame.hpp"
+#include "analysis/frame_source.hpp"
+#include "clip/render_settings.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::bench {
@@ -55,12 +55,12 @@ std::vector<std::string> size_overrides(int width, int height) {
 
 /// What `render SCENE --set render.width=W --set render.height=H --frames N [--no-png] -o
 /// SCRATCH/NAME` asks of the pipeline, plus `extra` overrides.
-pipeline::ClipRequest clip_request(const BenchContext& c, const std::string& name, int width,
+clip::ClipRequest clip_request(const BenchContext& c, const std::string& name, int width,
                                    int height, int frames, bool png,
                                    std::vector<std::string> extra = {}) {
   std::vector<std::string> overrides = size_overrides(width, height);
   overrides.insert(overrides.end(), extra.begin(), extra.end());
-  pipeline::ClipRequest request;
+  clip::ClipRequest request;
   request.scene = scene::parse_scene(c.options.scene_path, overrides);
   request.scene.frames = frames;
   request.out_dir = c.scratch / name;
@@ -70,9 +70,9 @@ pipeline::ClipRequest clip_request(const BenchContext& c, const std::string& nam
 }
 
 /// Wall and CPU time of a whole clip (start-up, every frame, finishing the files).
-Timing timed_render(const pipeline::ClipRequest& request) {
+Timing timed_render(const clip::ClipRequest& request) {
   const Stopwatch stopwatch;
-  pipeline::render_clip(request);
+  clip::render_clip(request);
   const Timing timing = stopwatch.elapsed();
   std::filesystem::remove_all(request.out_dir);  // leave the disk as the next run found it
   return timing;
@@ -86,14 +86,14 @@ scene::Scene pipeline_scene(const BenchContext& c, int width, int height, int fr
 
 /// Every frame exactly as the render command makes it, held in memory.
 std::vector<RgbaImage> prerender(const scene::Scene& scene) {
-  render::Renderer renderer(pipeline::render_settings_for(scene));
-  pipeline::FrameSource source(scene);
-  pipeline::ShownFrame frame;
+  render::Renderer renderer(clip::render_settings_for(scene));
+  analysis::FrameSource source(scene);
+  clip::ShownFrame frame;
   std::vector<RgbaImage> frames;
   frames.reserve(static_cast<std::size_t>(scene.frames));
   for (int index = 0; index < scene.frames; ++index) {
-    pipeline::advance(source, index, scene, frame);
-    frames.push_back(pipeline::render_frame(scene, renderer, frame));
+    clip::advance(source, index, scene, frame);
+    frames.push_back(clip::render_frame(scene, renderer, frame));
   }
   return frames;
 }
@@ -104,7 +104,7 @@ std::vector<RgbaImage> prerender(const scene::Scene& scene) {
 Timing timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& frames,
                       const std::filesystem::path& file, int jobs, double* conversion) {
   const Stopwatch stopwatch;
-  output::Mp4Encoder encoder(file, pipeline::encoder_settings(scene, jobs));
+  output::Mp4Encoder encoder(file, clip::encoder_settings(scene, jobs));
   for (const RgbaImage& frame : frames) encoder.add_frame(frame);
   encoder.finish();
   const Timing timing = stopwatch.elapsed();
@@ -116,7 +116,7 @@ Timing timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& f
 /// CPU seconds of each part of the render's work, summed over a clip's frames.
 struct Split {
   double simulation = 1e300, draw = 1e300, read_back = 1e300, png = 1e300;
-  pipeline::OverlayTimes overlays{1e300, 1e300, 1e300};
+  charts::OverlayTimes overlays{1e300, 1e300, 1e300};
   /// Keeps, part by part, the smaller time of this and `run`.
   void keep_best(const Split& run) {
     simulation = std::min(simulation, run.simulation);
@@ -133,11 +133,11 @@ struct Split {
 /// whole process (llvmpipe rasterizes on threads of its own), nothing else running: the
 /// frames of `scene` as the render command makes them, without the encoder.
 Split timed_parts(const scene::Scene& scene, const std::filesystem::path& png_file) {
-  render::Renderer renderer(pipeline::render_settings_for(scene));
-  pipeline::FrameSource source(scene);
-  pipeline::FrameDecorator decorator(scene);
-  const pipeline::BodyDrawing drawing(scene.body);
-  pipeline::ShownFrame frame;
+  render::Renderer renderer(clip::render_settings_for(scene));
+  analysis::FrameSource source(scene);
+  charts::FrameDecorator decorator(scene);
+  const clip::BodyDrawing drawing(scene.body);
+  clip::ShownFrame frame;
   Split split{0, 0, 0, 0, {}};
   for (int index = 0; index < scene.frames; ++index) {
     double start = process_cpu_seconds();
@@ -146,7 +146,7 @@ Split timed_parts(const scene::Scene& scene, const std::filesystem::path& png_fi
       start = now;
       return elapsed;
     };
-    pipeline::advance(source, index, scene, frame);
+    clip::advance(source, index, scene, frame);
     split.simulation += lap();
     renderer.draw(drawing.input_for(frame.pose));
     split.draw += lap();

@@ -1,14 +1,16 @@
 // The whole data flow in one screen: scene file → Scene → simulator → pose → renderer →
-// PNG. No caption or panel (that is pipeline/), no MP4 (that is output/clip_sinks).
+// PNG, for any body (the book, a preset, a mesh). No caption or panel (that is charts/), no
+// MP4 (that is output/clip_sinks).
 //
 //   build/examples/one_frame scenes/fig05-particle-unstable-x.toml 120 frame.png
+//   build/examples/one_frame scenes/t-handle-dzhanibekov.toml 60 t-handle.png
 #include <cstdlib>
 #include <iostream>
 #include <string>
 
+#include "clip/render_settings.hpp"
 #include "output/png_writer.hpp"
 #include "physics/simulator.hpp"
-#include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
 using namespace bookspin;
@@ -24,22 +26,17 @@ int main(int argc, char** argv) {
     const int frame = std::stoi(argv[2]);
 
     // 2. Step the simulator from the initial state to the frame's time.
-    auto simulator = physics::make_simulator(scene.book, scene.model);
+    auto simulator = physics::make_simulator(scene.body, scene.model);
     simulator->reset(scene.initial);
     for (long step = 0; step < static_cast<long>(frame) * scene.steps_per_frame; ++step)
       simulator->step(scene.dt);
-    const physics::BookPose pose = simulator->pose();
+    const physics::Pose pose = simulator->pose();
 
-    // 3. Render the book's 8 world corners (the renderer knows nothing of physics).
-    render::RenderSettings settings;
-    settings.width = scene.render.width;
-    settings.height = scene.render.height;
-    settings.camera =
-        render::default_camera(0.5 * scene.book.size.norm(), settings.width, settings.height);
-    render::Renderer renderer(settings);
-    render::FrameInput input;
-    input.corners = pose.corners;
-    const RgbaImage image = renderer.render(input);
+    // 3. Render the pose (the renderer knows nothing of physics: the clip stage translates
+    //    the scene's render keys and the body's pose into its settings and input).
+    render::Renderer renderer(clip::render_settings_for(scene));
+    const clip::BodyDrawing body(scene.body);
+    const RgbaImage image = renderer.render(body.input_for(pose));
 
     // 4. Write one PNG.
     output::write_png(argv[3], image, 6);

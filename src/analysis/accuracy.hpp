@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/motion.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/simulator.hpp"
 
@@ -23,7 +24,7 @@ std::vector<Method> all_methods();
 std::vector<Method> rigid_methods();
 
 struct AccuracySettings {
-  physics::Book book;
+  physics::Body body;  ///< any body: the book, a preset or a mesh (docs/physics.md §12)
   physics::InitialState initial;
   physics::ModelConfig model;  ///< normalize, damping, k; kind and integrator are replaced
   double flips = 10.0;         ///< run length in flip periods T/2 = 2K(k)/λ
@@ -34,12 +35,12 @@ struct AccuracyRow {
   double dt = 0.0;
   long steps = 0;
   double t_end = 0.0;
-  /// Angle (rad) of R_exactᵀ R_fit at t_end, R_fit the best-fit rotation of the corners
-  /// (the orientation itself for rigid models whose R is a rotation).
+  /// Angle (rad) of R_exactᵀ R at t_end, R = Simulator::orientation() (the best-fit rotation
+  /// for the particle models, the nearest rotation for the rigid ones).
   double orientation_error = 0.0;
   double energy_drift = 0.0;       ///< max |E/E0 − 1| over the run
   double L_drift = 0.0;            ///< max ||L|/|L0| − 1| over the run
-  double flip_period = 0.0;        ///< mean spacing of the intermediate axis' sign changes
+  double flip_period = 0.0;        ///< mean spacing of the flips (FlipDetector); NaN if < 2
   double flip_period_error = 0.0;  ///< |flip_period / exact − 1|; NaN if < 2 flips seen
   double ns_per_step = 0.0;        ///< wall time of step() alone
   bool diverged = false;
@@ -55,8 +56,6 @@ AccuracyRow measure(const AccuracySettings& settings, const physics::ExactRotati
 /// The exact reference for `settings` (same jiggled initial L as every model).
 physics::ExactRotation exact_reference(const AccuracySettings& settings);
 
-/// Angle between two rotations, 2·asin(‖A − B‖_F / √8): accurate for tiny angles.
-double rotation_angle_between(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b);
 
 /// Relative energy error of one method along a long run: for each of the equal windows of
 /// the run, the largest |E/E0 − 1| over its steps (E the model's total energy, E0 at t = 0),

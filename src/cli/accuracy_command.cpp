@@ -2,12 +2,12 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
-#include "pipeline/accuracy_report.hpp"
+#include "jobs/accuracy_report.hpp"
 
 namespace bookspin::cli {
 
 int accuracy_command(const AccuracyOptions& options) {
-  pipeline::AccuracyRequest request;
+  jobs::AccuracyRequest request;
   request.scene = scene::parse_scene(options.scene_path, options.overrides);
   request.out_dir = options.out_dir;
   request.flips = options.flips;
@@ -16,7 +16,7 @@ int accuracy_command(const AccuracyOptions& options) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   };
-  for (const auto& path : pipeline::run_accuracy(request)) std::printf("wrote %s\n", path.c_str());
+  for (const auto& path : jobs::run_accuracy(request)) std::printf("wrote %s\n", path.c_str());
   return kExitOk;
 }
 

@@ -12,7 +12,7 @@
 #include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
 #include "output/sha256.hpp"
-#include "pipeline/manifests.hpp"
+#include "cache/manifests.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::cli {
@@ -121,7 +121,7 @@ int gallery_command(const GalleryOptions& options) {
   std::vector<GalleryEntry> entries;
   for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
 
-  GalleryHeader header{pipeline::program_version(), pipeline::program_build_id(), "", machine()};
+  GalleryHeader header{cache::program_version(), cache::program_build_id(), "", machine()};
   // Up to date: the same page but for its date (output/manifest.hpp).
   const std::string head =
       "  \"manifest\": 1,\n  \"command\": \"gallery\",\n  \"page_sha256\": \"" +

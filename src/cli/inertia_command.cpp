@@ -6,7 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "pipeline/mesh_inertia.hpp"
+#include "jobs/mesh_inertia.hpp"
 
 namespace bookspin::cli {
 
@@ -78,12 +78,12 @@ void print_text(const std::string& file, const physics::MassProperties& p) {
 }  // namespace
 
 int inertia_command(const InertiaOptions& options) {
-  pipeline::InertiaRequest request;
+  jobs::InertiaRequest request;
   request.mesh_path = options.mesh_path;
   request.scale = options.scale;
   if (options.mass > 0.0) request.mass = options.mass;
   request.density = options.density;
-  const physics::MassProperties p = pipeline::mesh_inertia(request);
+  const physics::MassProperties p = jobs::mesh_inertia(request);
   for (const auto& warning : p.warnings)
     std::cerr << "bookspin: warning: " << options.mesh_path << ": " << warning << '\n';
   if (options.json) {

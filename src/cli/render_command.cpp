@@ -6,17 +6,17 @@
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "output/manifest.hpp"
-#include "pipeline/clip.hpp"
-#include "pipeline/lattice_note.hpp"
-#include "pipeline/manifests.hpp"
+#include "clip/clip.hpp"
+#include "jobs/lattice_note.hpp"
+#include "cache/manifests.hpp"
 #include "scene/canonical.hpp"
 
 namespace bookspin::cli {
 
 namespace {
 
-pipeline::ClipRequest clip_request(const RenderArgs& args, scene::Scene scene, Progress& progress) {
-  pipeline::ClipRequest request;
+clip::ClipRequest clip_request(const RenderArgs& args, scene::Scene scene, Progress& progress) {
+  clip::ClipRequest request;
   request.scene = std::move(scene);
   request.out_dir = args.out_dir;
   request.write_png = !args.no_png;
@@ -32,7 +32,7 @@ pipeline::ClipRequest clip_request(const RenderArgs& args, scene::Scene scene, P
 
 /// The divergence warnings of a clip, without the "bookspin: warning: " prefix.
 std::vector<std::string> divergence_warnings(const std::string& name,
-                                             const pipeline::ClipResult& result) {
+                                             const clip::ClipResult& result) {
   std::vector<std::string> warnings;
   if (result.diverged_at) {
     std::ostringstream w;
@@ -109,14 +109,14 @@ int render_command(const RenderArgs& args) {
   scene::Scene scene = scene::parse_scene(args.scene_path, args.overrides);
   for (const std::string& warning : scene.warnings)
     std::cerr << "bookspin: warning: " << warning << '\n';
-  if (const std::string note = pipeline::lattice_note(scene); !note.empty())
+  if (const std::string note = jobs::lattice_note(scene); !note.empty())
     std::cerr << "bookspin: " << note << '\n';
   if (args.frames > 0) scene.frames = args.frames;
   const std::string name = scene.name;
   Progress progress(name, scene.frames);
-  const pipeline::ClipRequest request = clip_request(args, std::move(scene), progress);
-  const auto manifest = pipeline::clip_manifest_path(args.out_dir, name);
-  const std::string head = pipeline::clip_manifest_head(request);
+  const clip::ClipRequest request = clip_request(args, std::move(scene), progress);
+  const auto manifest = cache::clip_manifest_path(args.out_dir, name);
+  const std::string head = cache::clip_manifest_head(request);
   if (!args.force && skip_if_up_to_date(manifest, head, args.out_dir, name, args.verify)) {
     for (const auto& warning : recorded_warnings(manifest))
       std::cerr << "bookspin: warning: " << warning << " (when it was rendered)\n";
@@ -124,9 +124,9 @@ int render_command(const RenderArgs& args) {
   }
   // An interrupted render puts no output in place, so the old manifest stays true; one that
   // fails may have replaced some outputs, so its manifest goes.
-  const pipeline::ClipResult result = [&] {
+  const clip::ClipResult result = [&] {
     try {
-      return pipeline::render_clip(request);
+      return clip::render_clip(request);
     } catch (...) {
       std::error_code ec;
       std::filesystem::remove(manifest, ec);
@@ -139,8 +139,8 @@ int render_command(const RenderArgs& args) {
   }
   const auto warnings = divergence_warnings(name, result);
   output::write_manifest(manifest, head,
-                         pipeline::manifest_note(request.scene) + warnings_json(warnings),
-                         args.out_dir, pipeline::clip_outputs(request));
+                         cache::manifest_note(request.scene) + warnings_json(warnings),
+                         args.out_dir, cache::clip_outputs(request));
   progress.finish(result.frames);
   for (const auto& warning : warnings) std::cerr << "bookspin: warning: " << warning << '\n';
   std::cout << "rendered: " << name << " (" << result.frames << " frames)" << std::endl;

@@ -3,14 +3,14 @@
 
 #include "cli/commands.hpp"
 #include "output/atomic_output.hpp"
-#include "pipeline/lattice_note.hpp"
-#include "pipeline/simulation.hpp"
+#include "jobs/lattice_note.hpp"
+#include "jobs/simulation.hpp"
 
 namespace bookspin::cli {
 
 namespace {
 
-void warn_diverged(const scene::Scene& scene, const pipeline::SimulationResult& result) {
+void warn_diverged(const scene::Scene& scene, const jobs::SimulationResult& result) {
   std::cerr << "bookspin: warning: " << scene.name
             << ": simulation diverged at t = " << *result.diverged_at
             << divergence_because(result.divergence_reason) << "; kept the " << result.rows
@@ -23,7 +23,7 @@ int simulate_command(const SimulateOptions& options) {
   const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
   for (const std::string& warning : scene.warnings)
     std::cerr << "bookspin: warning: " << warning << '\n';
-  if (const std::string note = pipeline::lattice_note(scene); !note.empty())
+  if (const std::string note = jobs::lattice_note(scene); !note.empty())
     std::cerr << "bookspin: " << note << '\n';
   if (!scene.compare.empty()) {
     // Several runs do not fit one CSV; `render` writes one per panel.
@@ -31,13 +31,13 @@ int simulate_command(const SimulateOptions& options) {
                      ": a comparison scene ([[compare]]) has one run per panel: `bookspin "
                      "render` writes OUT/<scene>/diagnostics-<panel>.csv for each");
   }
-  pipeline::SimulationResult result;
+  jobs::SimulationResult result;
   if (options.csv_path == "-") {
-    result = pipeline::write_diagnostics_rows(scene, std::cout);
+    result = jobs::write_diagnostics_rows(scene, std::cout);
     std::cout.flush();
   } else {
     output::AtomicTextFile file(options.csv_path);
-    result = pipeline::write_diagnostics_rows(scene, file.stream());
+    result = jobs::write_diagnostics_rows(scene, file.stream());
     file.commit();
   }
   if (result.diverged_at) warn_diverged(scene, result);

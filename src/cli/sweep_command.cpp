@@ -8,8 +8,8 @@
 #include "cli/interrupt.hpp"
 #include "common/errors.hpp"
 #include "output/manifest.hpp"
-#include "pipeline/manifests.hpp"
-#include "pipeline/sweep.hpp"
+#include "cache/manifests.hpp"
+#include "jobs/sweep.hpp"
 #include "scene/canonical.hpp"
 
 namespace bookspin::cli {
@@ -56,15 +56,15 @@ int sweep_command(const SweepOptions& options) {
           "sweep --merge: takes only the shard files and -o (the sweep is in their first line)");
     }
     for (const auto& file : options.merge) written.emplace_back(file);
-    written = pipeline::merge_sweep(written, options.out_dir);
+    written = jobs::merge_sweep(written, options.out_dir);
   } else {
     if (options.scene_path.empty()) throw InputError("sweep: give a SCENE file (or --merge FILE…)");
-    pipeline::SweepRequest request;
+    jobs::SweepRequest request;
     request.scene_path = options.scene_path;
     request.overrides = options.overrides;
-    for (const auto& v : options.vary) request.ranges.push_back(pipeline::parse_vary(v));
+    for (const auto& v : options.vary) request.ranges.push_back(jobs::parse_vary(v));
     if (options.measures.empty()) throw InputError("sweep: give --measure M[,M…]");
-    request.measures = pipeline::parse_measures(options.measures);
+    request.measures = jobs::parse_measures(options.measures);
     if (options.jobs < 0) throw InputError("-j " + std::to_string(options.jobs) + ": must be >= 0");
     request.jobs = options.jobs;
     if (!options.shard.empty())
@@ -79,13 +79,13 @@ int sweep_command(const SweepOptions& options) {
     std::optional<scene::Scene> scene;
     if (whole) {
       scene = scene::parse_scene(options.scene_path, options.overrides);
-      head = pipeline::manifest_head("sweep", sweep_options_json(options), *scene);
+      head = cache::manifest_head("sweep", sweep_options_json(options), *scene);
       manifest = std::filesystem::path(options.out_dir) / scene->name / "sweep-manifest.json";
       if (!options.force && skip_if_up_to_date(manifest, head, options.out_dir,
                                                scene->name + "-sweep", options.verify))
         return kExitOk;
     }
-    const pipeline::SweepResult result = pipeline::run_sweep(request);
+    const jobs::SweepResult result = jobs::run_sweep(request);
     if (result.signal != 0) {
       std::fprintf(stderr, "bookspin: sweep interrupted; nothing written\n");
       return 128 + result.signal;
@@ -95,7 +95,7 @@ int sweep_command(const SweepOptions& options) {
       std::vector<std::string> outputs;
       for (const auto& path : written)
         outputs.push_back(path.lexically_relative(options.out_dir).generic_string());
-      output::write_manifest(manifest, head, pipeline::manifest_note(*scene), options.out_dir,
+      output::write_manifest(manifest, head, cache::manifest_note(*scene), options.out_dir,
                              outputs);
     }
   }

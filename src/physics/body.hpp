@@ -19,7 +19,7 @@ struct Body {
   BodyShape shape = BodyShape::book;
   /// Book: the book itself. Others: the box symmetric about the origin that holds the surface
   /// in the principal frame (size = 2·max|coordinate| per axis), mass = body mass. Its 8
-  /// corners (Book::body_corners, 3×8) are what the simulators move (BookPose::corners) and
+  /// corners (Book::body_corners, 3×8) are what the simulators move (Pose::corners) and
   /// what the drawing interpolates the surface from.
   Book cage;
   /// Principal moments about body x, y, z (mass·length²). Book: cage.principal_moments().

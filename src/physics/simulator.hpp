@@ -1,5 +1,5 @@
 #pragma once
-// The one interface every book simulator implements (docs/physics.md §5, §9 and §10).
+// The one interface every simulator of a body implements (docs/physics.md §5, §9 and §10).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -50,7 +50,9 @@ struct Diagnostics {
   double energy_potential = 0.0;  ///< spring energy (0 for rigid models)
   double energy_total = 0.0;
   Eigen::Vector3d cos_axis_L = Eigen::Vector3d::Zero();  ///< cos(body axis d in world, L)
-  double strain_max = 0.0;           ///< max over 28 corner pairs of |len/rest − 1|
+  /// max |len/rest − 1| over the springs of a particle model (the book: its 28 corner pairs;
+  /// the lattice: every spring); 0 for the rigid and exact models
+  double strain_max = 0.0;
   double orthogonality_error = 0.0;  ///< ‖RᵀR − I‖_F of the matrix placing the corners
   double quaternion_norm = 1.0;      ///< |q|, 1 where there is no quaternion
   /// cos(principal axis in world, L) for the principal axes sorted by moment: smallest,
@@ -59,7 +61,7 @@ struct Diagnostics {
 };
 
 /// What the simulator hands to the rest of the pipeline each frame.
-struct BookPose {
+struct Pose {
   Corners corners;  ///< 3×8 world-space corners (the book's, or the body's cage: §12)
   Diagnostics diagnostics;
   /// 3×V world-space surface of a body that deforms by itself (the lattice, §13), vertex i
@@ -68,7 +70,7 @@ struct BookPose {
   Eigen::Matrix3Xd surface;
 };
 
-/// A book simulator: pure physics, deterministic, no I/O.
+/// A simulator of one body (book, preset or mesh): pure physics, deterministic, no I/O.
 class Simulator {
  public:
   virtual ~Simulator() = default;
@@ -98,7 +100,7 @@ class Simulator {
   /// not follow the 8 corners (the lattice, docs/physics.md §13); empty (3×0) otherwise.
   virtual Eigen::Matrix3Xd deformed_surface() const { return Eigen::Matrix3Xd(3, 0); }
 
-  BookPose pose() const { return {corners(), diagnostics(), deformed_surface()}; }
+  Pose pose() const { return {corners(), diagnostics(), deformed_surface()}; }
 };
 
 /// The seeded, deterministic jiggle (docs/physics.md §5): a vector uniform in

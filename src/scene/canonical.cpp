@@ -108,8 +108,8 @@ std::string canonical_json(const Scene& s, int indent) {
                  json_string(std::to_string(s.body.vertices.cols()) + " vertices, " +
                              std::to_string(s.body.triangles.cols()) + " triangles, " +
                              (s.body.smooth ? "smooth" : "flat")));
-  m.emplace_back("book.size", vector3(s.book.size));  // the body's cage for a non-book body
-  m.emplace_back("book.mass", number(s.book.mass));
+  m.emplace_back("book.size", vector3(s.body.cage.size));  // the body's cage for a non-book body
+  m.emplace_back("book.mass", number(s.body.cage.mass));
   m.emplace_back("initial.angular_velocity", vector3(s.initial.omega0_body));
   m.emplace_back("initial.jiggle", number(s.initial.jiggle));
   m.emplace_back("initial.seed", std::to_string(s.initial.seed));

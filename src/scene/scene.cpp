@@ -190,13 +190,14 @@ void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
            "unknown shape '" + name + "' (expected book, t-handle, tennis-racket, phone, mesh)");
   }
   if (shape == physics::BodyShape::book) {
-    s.book.size = r.vector3("book.size", s.book.size, 0.0, 1e6, true);
-    s.book.mass = r.number("book.mass", s.book.mass, 0.0, kHuge, true);
+    physics::Book book;
+    book.size = r.vector3("book.size", book.size, 0.0, 1e6, true);
+    book.mass = r.number("book.mass", book.mass, 0.0, kHuge, true);
     for (const char* key : {"body.mesh", "body.mass", "body.scale"}) {
       if (r.has(key))
         r.fail(key, "not used by the book (body.shape = \"book\"): give [book] size and mass");
     }
-    s.body = physics::book_body(s.book);
+    s.body = physics::book_body(book);
     return;
   }
   for (const char* key : {"book.size", "book.mass"}) {
@@ -229,7 +230,6 @@ void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
       s.warnings.push_back(path.string() + ": " + warning);
     s.body = body.body;
   }
-  s.book = s.body.cage;
 }
 
 /// initial.angular_velocity, or initial.spin_axis with initial.spin_rate (principal frame).
@@ -261,7 +261,7 @@ void read_spin(TomlReader& r, Scene& s) {
   s.initial.omega0_body[order[static_cast<std::size_t>(it - kAxes.begin())]] = rate;
 }
 
-/// Until the lattice exists, the particle model simulates only the book.
+/// The book is the one-cell lattice; model.lattice_cells refines the lattice of other bodies.
 void check_lattice_cells(TomlReader& r, const Scene& s) {
   // The book is one cell of the lattice, today's particle model (docs/physics.md §13).
   if (s.body.shape == physics::BodyShape::book && s.model.lattice_cells > 1)

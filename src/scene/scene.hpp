@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "physics/lattice.hpp"
 #include "physics/simulator.hpp"
 
 namespace bookspin::scene {
@@ -58,9 +59,6 @@ struct Scene {
   physics::Body body;
   /// body.mesh resolved against the scene file's folder; empty unless body.shape = "mesh".
   std::string body_mesh;
-  /// body.cage: the book itself for the book, else the box around the body's surface in its
-  /// principal frame (kept for code that frames or measures the book).
-  physics::Book book;
   /// Warnings met while reading the scene (e.g. a mesh shell wound inward, turned around),
   /// one line each, for the command to print.
   std::vector<std::string> warnings;
@@ -85,7 +83,7 @@ inline constexpr int kMaxFrames = 100000;
 inline constexpr int kMaxStepsPerFrame = 1000000;
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 1 << 20;
 inline constexpr int kMaxCompareTiles = 9;
-inline constexpr int kMaxLatticeCells = 64;  ///< model.lattice_cells
+using physics::kMaxLatticeCells;  ///< model.lattice_cells (physics/lattice.hpp)
 
 /// Reads and validates `path`, applying `overrides` ("key=value", value in TOML syntax) on
 /// top of the file. Throws InputError on any bad input: unreadable or oversized file, TOML

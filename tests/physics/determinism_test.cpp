@@ -59,7 +59,7 @@ std::string hash_of(const HashedRun& run, long steps) {
   sim->reset(InitialState{{0.114819, 0.0, 0.0}, 0.001, 2012});
   StateHash hash;
   const bool finite = testing::run(*sim, run.dt, steps, 30, [&](const Simulator& s) {
-    const BookPose pose = s.pose();
+    const Pose pose = s.pose();
     const Diagnostics& d = pose.diagnostics;
     hash.add_all(pose.corners);
     hash.add_all(d.omega_body);

@@ -5,7 +5,7 @@
 
 #include "golden_store.hpp"
 #include "picture_scenes.hpp"
-#include "pipeline/frame.hpp"
+#include "clip/frame.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -22,7 +22,7 @@ class FaceMapping : public ::testing::TestWithParam<View> {};
 TEST_P(FaceMapping, BookAtIdentityShowsTheRightFace) {
   const scene::Scene scene = book_at_rest(GetParam().name, GetParam().direction);
   EXPECT_TRUE(matches_golden(std::string("face-") + GetParam().name,
-                             pipeline::render_still(scene, renderer_for(scene), 0)));
+                             clip::render_still(scene, renderer_for(scene), 0)));
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, FaceMapping,
@@ -38,7 +38,7 @@ TEST(Overlays, AngularMomentumAndBodyAxesMatch) {
                    {"render.show_angular_momentum=true", "render.show_body_axes=true"});
   const int index = pinned_frames(scene.frames)[1];
   EXPECT_TRUE(matches_golden(golden_name("overlays-" + scene.name, index),
-                             pipeline::render_still(scene, renderer_for(scene), index)));
+                             clip::render_still(scene, renderer_for(scene), index)));
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 
 #include "golden_store.hpp"
 #include "picture_scenes.hpp"
-#include "pipeline/frame.hpp"
+#include "clip/frame.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -17,7 +17,7 @@ TEST_P(FigureGoldens, FirstMiddleAndLastFramesMatch) {
   render::Renderer& renderer = renderer_for(scene);
   for (const int index : pinned_frames(scene.frames)) {
     const std::string name = golden_name(scene.name, index);
-    EXPECT_TRUE(matches_golden(name, pipeline::render_still(scene, renderer, index))) << name;
+    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
   }
 }
 
@@ -30,7 +30,7 @@ TEST(FigureGoldens, DivergingFiguresEndOnTheDivergenceBanner) {
   for (const char* name : {"fig07-particle-no-normalization", "fig08-particle-neither",
                            "fig10-matrix-no-normalization"}) {
     const scene::Scene scene = figure_scene(name);
-    EXPECT_TRUE(pipeline::simulate_to(scene, pinned_frames(scene.frames).back()).diverged_at)
+    EXPECT_TRUE(clip::simulate_to(scene, pinned_frames(scene.frames).back()).diverged_at)
         << name;
   }
 }

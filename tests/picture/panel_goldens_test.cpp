@@ -8,7 +8,7 @@
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
-#include "pipeline/frame.hpp"
+#include "clip/frame.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -20,7 +20,7 @@ TEST(PanelGoldens, FigureFrameCarriesThePlotPanel) {
   ASSERT_TRUE(scene.render.panel);
   const int index = 250;  // mid-flip: all three ω curves are moving
   EXPECT_TRUE(matches_golden("panel-fig09-matrix-unstable-x-f0250",
-                             pipeline::render_still(scene, renderer_for(scene), index)));
+                             clip::render_still(scene, renderer_for(scene), index)));
 }
 
 // Comparison scenes render through `bookspin render` (several simulators, one tile each).

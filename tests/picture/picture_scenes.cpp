@@ -13,8 +13,8 @@
 
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
-#include "pipeline/decoration.hpp"
-#include "pipeline/render_settings.hpp"
+#include "charts/decoration.hpp"
+#include "clip/render_settings.hpp"
 
 namespace bookspin::picture {
 
@@ -71,7 +71,7 @@ scene::Scene book_at_rest(const std::string& label, const std::string& direction
 
 render::Renderer& renderer_for(const scene::Scene& scene) {
   static std::map<std::string, std::unique_ptr<render::Renderer>> renderers;
-  const render::RenderSettings settings = pipeline::render_settings_for(scene);
+  const render::RenderSettings settings = clip::render_settings_for(scene);
   auto& slot = renderers[settings_key(settings)];
   if (!slot) slot = std::make_unique<render::Renderer>(settings);
   return *slot;

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/render_settings.hpp"
+#include "clip/render_settings.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
@@ -26,7 +26,7 @@ scene::Scene figure_scene(const std::string& name, std::vector<std::string> over
 scene::Scene book_at_rest(const std::string& label, const std::string& direction,
                           std::vector<std::string> overrides = {});
 
-/// A renderer for pipeline::render_settings_for(scene), shared by every scene with the same
+/// A renderer for clip::render_settings_for(scene), shared by every scene with the same
 /// settings in this process.
 render::Renderer& renderer_for(const scene::Scene& scene);
 

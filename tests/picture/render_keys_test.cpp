@@ -5,9 +5,9 @@
 #include "golden_store.hpp"
 #include "image_compare.hpp"
 #include "picture_scenes.hpp"
-#include "pipeline/decoration.hpp"
-#include "pipeline/frame.hpp"
-#include "pipeline/render_settings.hpp"
+#include "charts/decoration.hpp"
+#include "clip/frame.hpp"
+#include "clip/render_settings.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -15,10 +15,10 @@ namespace {
 TEST(RenderKeys, MsaaOffGivesJaggedEdgesOnly) {
   const scene::Scene smooth = figure_scene("fig09-matrix-unstable-x");
   const scene::Scene jagged = figure_scene("fig09-matrix-unstable-x", {"render.msaa=1"});
-  EXPECT_EQ(pipeline::render_settings_for(smooth).msaa_samples, 4);
-  EXPECT_EQ(pipeline::render_settings_for(jagged).msaa_samples, 1);
-  const RgbaImage a = pipeline::render_still(smooth, renderer_for(smooth), 375);
-  const RgbaImage b = pipeline::render_still(jagged, renderer_for(jagged), 375);
+  EXPECT_EQ(clip::render_settings_for(smooth).msaa_samples, 4);
+  EXPECT_EQ(clip::render_settings_for(jagged).msaa_samples, 1);
+  const RgbaImage a = clip::render_still(smooth, renderer_for(smooth), 375);
+  const RgbaImage b = clip::render_still(jagged, renderer_for(jagged), 375);
   const Comparison exact = compare_images(b, a, {0, 1.0});
   const Comparison tolerant = compare_images(b, a);
   EXPECT_GT(exact.differing_pixels, 50) << "MSAA off must change the edges";
@@ -26,9 +26,9 @@ TEST(RenderKeys, MsaaOffGivesJaggedEdgesOnly) {
 }
 
 TEST(RenderKeys, AnisotropySettingReachesTheRenderer) {
-  EXPECT_EQ(pipeline::render_settings_for(figure_scene("fig09-matrix-unstable-x")).max_anisotropy,
+  EXPECT_EQ(clip::render_settings_for(figure_scene("fig09-matrix-unstable-x")).max_anisotropy,
             render::kAutoAnisotropy);
-  EXPECT_EQ(pipeline::render_settings_for(
+  EXPECT_EQ(clip::render_settings_for(
                 figure_scene("fig09-matrix-unstable-x", {"render.anisotropy=8"}))
                 .max_anisotropy,
             8.0f);

@@ -9,7 +9,7 @@
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
-#include "pipeline/frame.hpp"
+#include "clip/frame.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -25,7 +25,7 @@ TEST_P(SphereGoldens, FirstMiddleAndLastFramesMatch) {
   render::Renderer& renderer = renderer_for(scene);
   for (const int index : pinned_frames(scene.frames)) {
     const std::string name = "sphere-" + golden_name(scene.name, index);
-    EXPECT_TRUE(matches_golden(name, pipeline::render_still(scene, renderer, index))) << name;
+    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
   }
 }
 

@@ -1,4 +1,4 @@
-// The goldens are only worth something if pipeline::render_still draws what `bookspin render`
+// The goldens are only worth something if clip::render_still draws what `bookspin render`
 // writes: compare the two byte for byte on the same machine.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
-#include "pipeline/frame.hpp"
+#include "clip/frame.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -33,7 +33,7 @@ TEST(RenderStill, IsWhatBookspinRenderWrites) {
   const scene::Scene scene = figure_scene(scene_name, overrides);
   for (int index = 0; index < scene.frames; ++index) {
     const RgbaImage written = output::read_png(dir / scene.name / "frames" / frame_file(index));
-    const RgbaImage still = pipeline::render_still(scene, renderer_for(scene), index);
+    const RgbaImage still = clip::render_still(scene, renderer_for(scene), index);
     EXPECT_TRUE(written.width == still.width && written.pixels == still.pixels)
         << "frame " << index;
   }

@@ -10,7 +10,7 @@
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
-#include "pipeline/frame.hpp"
+#include "clip/frame.hpp"
 #include "render/face_images.hpp"
 
 namespace bookspin::picture {
@@ -48,7 +48,7 @@ class Teeth : public ::testing::Test {
   /// The golden's frame rendered correctly must pass, or the teeth prove nothing.
   void expect_unchanged_frame_passes(const scene::Scene& scene, int index) {
     ASSERT_TRUE(matches_golden(golden_name(scene.name, index),
-                               pipeline::render_still(scene, renderer_for(scene), index)));
+                               clip::render_still(scene, renderer_for(scene), index)));
   }
 };
 
@@ -65,7 +65,7 @@ TEST_F(Teeth, SwappedFrontAndBackTexturesAreCaught) {
   const scene::Scene scene = figure_scene(
       kScene, {"render.texture_front=\"" + back + "\"", "render.texture_back=\"" + front + "\""});
   expect_unchanged_frame_passes(figure_scene(kScene), 0);
-  expect_caught(golden_name(kScene, 0), pipeline::render_still(scene, renderer_for(scene), 0),
+  expect_caught(golden_name(kScene, 0), clip::render_still(scene, renderer_for(scene), 0),
                 "swapped-textures");
 }
 
@@ -76,7 +76,7 @@ TEST_F(Teeth, MirroredCoverArtIsCaught) {
   output::write_png(path, mirrored(render::generate_face_image(render::FaceImage::front)));
   const scene::Scene scene = book_at_rest("front-from-plus-z", "[0.0, 0.0, 1.0]",
                                           {"render.texture_front=\"" + path.string() + "\""});
-  expect_caught("face-front-from-plus-z", pipeline::render_still(scene, renderer_for(scene), 0),
+  expect_caught("face-front-from-plus-z", clip::render_still(scene, renderer_for(scene), 0),
                 "mirrored-cover");
 }
 
@@ -85,7 +85,7 @@ TEST_F(Teeth, MirroredFrameIsCaught) {
   expect_unchanged_frame_passes(scene, 0);
   const Comparison c =
       expect_caught(golden_name(kScene, 0),
-                    mirrored(pipeline::render_still(scene, renderer_for(scene), 0)), "mirrored");
+                    mirrored(clip::render_still(scene, renderer_for(scene), 0)), "mirrored");
   // Not noise: whole regions change colour, so the PSNR is far below that of sub-pixel
   // rasterization differences (≥ 36 dB even for a half-pixel shift, see tolerance_test.cpp)
   // and some pixels change by most of the range.
@@ -99,12 +99,12 @@ TEST_F(Teeth, BookTurnedByThreeDegreesIsCaught) {
   const scene::Scene scene = figure_scene(kScene);
   const int index = pinned_frames(scene.frames)[1];
   expect_unchanged_frame_passes(scene, index);
-  pipeline::ShownFrame frame = pipeline::simulate_to(scene, index);
+  clip::ShownFrame frame = clip::simulate_to(scene, index);
   const Eigen::Matrix3d turn =
       Eigen::AngleAxisd(3.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
   frame.pose.corners = turn * frame.pose.corners;
   expect_caught(golden_name(kScene, index),
-                pipeline::render_frame(scene, renderer_for(scene), frame), "turned-3deg");
+                clip::render_frame(scene, renderer_for(scene), frame), "turned-3deg");
 }
 
 TEST_F(Teeth, NextFrameIsCaught) {
@@ -112,7 +112,7 @@ TEST_F(Teeth, NextFrameIsCaught) {
   const int index = pinned_frames(scene.frames)[1];
   expect_unchanged_frame_passes(scene, index);
   expect_caught(golden_name(kScene, index),
-                pipeline::render_still(scene, renderer_for(scene), index + 1), "next-frame");
+                clip::render_still(scene, renderer_for(scene), index + 1), "next-frame");
 }
 
 }  // namespace

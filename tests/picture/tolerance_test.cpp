@@ -8,9 +8,9 @@
 
 #include "golden_store.hpp"
 #include "picture_scenes.hpp"
-#include "pipeline/decoration.hpp"
-#include "pipeline/frame.hpp"
-#include "pipeline/render_settings.hpp"
+#include "charts/decoration.hpp"
+#include "clip/frame.hpp"
+#include "clip/render_settings.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -32,11 +32,11 @@ class Tolerance : public ::testing::TestWithParam<std::string> {};
 TEST_P(Tolerance, QuarterPixelShiftStillMatches) {
   if (update_mode()) GTEST_SKIP() << "goldens are being rewritten";
   const scene::Scene scene = figure_scene(GetParam());
-  render::Renderer renderer(shifted(pipeline::render_settings_for(scene), 0.25));
+  render::Renderer renderer(shifted(clip::render_settings_for(scene), 0.25));
   for (const int index : pinned_frames(scene.frames)) {
     const std::string name = golden_name(scene.name, index);
     const Comparison c =
-        compare_images(pipeline::render_still(scene, renderer, index), read_golden(name));
+        compare_images(clip::render_still(scene, renderer, index), read_golden(name));
     std::cout << name << " a quarter pixel off: " << c.summary({}) << '\n';
     EXPECT_TRUE(c.passed) << name << ": " << c.summary({});
   }

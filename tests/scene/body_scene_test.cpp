@@ -20,10 +20,10 @@ using testing::parse;
 TEST(BodyKeys, DefaultIsTheBookAndBookKeysStillWork) {
   const Scene s = parse("[book]\nsize = [1.0, 2.0, 0.5]\nmass = 3.0\n");
   EXPECT_EQ(s.body.shape, physics::BodyShape::book);
-  EXPECT_EQ(s.book.size, Eigen::Vector3d(1.0, 2.0, 0.5));
-  EXPECT_EQ(s.body.cage.size, s.book.size);
+  EXPECT_EQ(s.body.cage.size, Eigen::Vector3d(1.0, 2.0, 0.5));
+  EXPECT_EQ(s.body.cage.size, s.body.cage.size);
   EXPECT_EQ(s.body.cage.mass, 3.0);
-  EXPECT_EQ(s.body.moments, s.book.principal_moments());
+  EXPECT_EQ(s.body.moments, s.body.cage.principal_moments());
   const Scene plain = parse("[body]\nshape = \"book\"\n");
   EXPECT_EQ(plain.body.moments, physics::Book{}.principal_moments());
 }
@@ -35,8 +35,8 @@ TEST(BodyKeys, PresetWithMassAndScale) {
   EXPECT_EQ(s.body.shape, physics::BodyShape::t_handle);
   const physics::Body expected = physics::preset_body(physics::BodyShape::t_handle, 2.0, 0.5);
   EXPECT_EQ(s.body.moments, expected.moments);
-  EXPECT_EQ(s.book.size, expected.cage.size);  // scene.book is the cage
-  EXPECT_EQ(s.book.mass, 2.0);
+  EXPECT_EQ(s.body.cage.size, expected.cage.size);  // scene.book is the cage
+  EXPECT_EQ(s.body.cage.mass, 2.0);
   EXPECT_GT(s.body.triangles.cols(), 0);
 }
 
@@ -60,7 +60,7 @@ TEST(BodyKeys, MeshFileRelativeToTheScene) {
   EXPECT_NEAR(s.body.moments[0], 20.0, 1e-12);
   EXPECT_NEAR(s.body.moments[1], 40.0, 1e-12);
   EXPECT_NEAR(s.body.moments[2], 52.0, 1e-12);
-  EXPECT_NEAR(s.book.size.x(), 6.0, 1e-12);
+  EXPECT_NEAR(s.body.cage.size.x(), 6.0, 1e-12);
   EXPECT_TRUE(s.warnings.empty());
   // The same box wound inwards: read, turned around, and the scene carries one warning.
   {

@@ -1,0 +1,142 @@
+#include "cache/manifests.hpp"
+
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "output/sha256.hpp"
+#include "scene/canonical.hpp"
+
+#ifndef BOOKSPIN_VERSION
+#error "BOOKSPIN_VERSION is set by src/pipeline/CMakeLists.txt"
+#endif
+
+namespace bookspin::cache {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string hash_of(const std::string& role, const std::string& path) {
+  const auto hash = output::sha256_file(path);
+  if (!hash) throw InputError(path + ": cannot read the " + role + " file");
+  return "\"sha256:" + *hash + "\"";
+}
+
+/// "inputs": every file the scene reads as bytes (its textures, its mesh), by key, with their
+/// SHA-256.
+std::string inputs_json(const scene::Scene& scene) {
+  std::vector<std::pair<std::string, std::string>> files;
+  const auto& r = scene.render;
+  for (const auto& [key, path] : {std::pair{"render.texture_front", &r.texture_front},
+                                  {"render.texture_back", &r.texture_back},
+                                  {"render.texture_spine", &r.texture_spine},
+                                  {"render.texture_pages", &r.texture_pages}}) {
+    if (!path->empty()) files.emplace_back(key, *path);
+  }
+  if (!scene.body_mesh.empty()) files.emplace_back("body.mesh", scene.body_mesh);
+  std::ostringstream out;
+  out << "  \"inputs\": {";
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    out << (i == 0 ? "\n" : ",\n") << "    " << scene::json_string(files[i].first) << ": "
+        << hash_of(files[i].first, files[i].second);
+  }
+  out << (files.empty() ? "},\n" : "\n  },\n");
+  return out.str();
+}
+
+/// SHA-256 of the body's surface as simulated and drawn (vertices, triangles, face colours in
+/// the principal frame, docs/physics.md §12), "" for the book: a mesh file written again with
+/// the same geometry is the same body.
+std::string surface_hash(const physics::Body& body) {
+  if (body.vertices.size() == 0) return "";
+  std::string bytes;
+  const auto add = [&bytes](const void* data, std::size_t size) {
+    bytes.append(static_cast<const char*>(data), size);
+  };
+  add(body.vertices.data(), sizeof(double) * static_cast<std::size_t>(body.vertices.size()));
+  add(body.triangles.data(), sizeof(int) * static_cast<std::size_t>(body.triangles.size()));
+  add(body.face_colours.data(), sizeof(float) * static_cast<std::size_t>(body.face_colours.size()));
+  return output::sha256_text(bytes);
+}
+
+}  // namespace
+
+std::string manifest_head(const std::string& command, const std::string& options,
+                          const scene::Scene& scene) {
+  std::ostringstream out;
+  out << "  \"manifest\": 1,\n"
+      << "  \"command\": " << scene::json_string(command) << ",\n"
+      << "  \"bookspin\": {\"version\": " << scene::json_string(program_version())
+      << ", \"build_id\": \"sha256:" << program_build_id() << "\"},\n"
+      << "  \"options\": {\n"
+      << options << "  },\n"
+      << "  \"scene\": {\n"
+      << scene::canonical_json(scene, 4) << "  },\n";
+  if (const std::string surface = surface_hash(scene.body); !surface.empty())
+    out << "  \"body_surface\": \"sha256:" << surface << "\",\n";
+  out << inputs_json(scene);
+  return out.str();
+}
+
+std::string program_version() { return BOOKSPIN_VERSION; }
+
+std::string program_build_id() {
+  static const std::string id = output::sha256_file("/proc/self/exe").value_or("unknown");
+  return id;
+}
+
+fs::path clip_manifest_path(const fs::path& out_dir, const std::string& name) {
+  return out_dir / name / "manifest.json";
+}
+
+std::string manifest_note(const scene::Scene& scene) {
+  std::error_code ec;
+  const fs::path path = fs::weakly_canonical(scene.source, ec);
+  return "  \"scene_file\": {\"path\": " + scene::json_string((ec ? scene.source : path).string()) +
+         ", \"sha256\": " + hash_of("scene", scene.source.string()) + "},\n";
+}
+
+std::string clip_manifest_head(const clip::ClipRequest& request) {
+  const output::SinkOptions sinks = clip::sink_options(request);
+  std::ostringstream options;
+  options << "    \"frames\": " << request.scene.frames << ",\n"
+          << "    \"png\": " << (request.write_png ? "true" : "false") << ",\n"
+          << "    \"png_compression\": " << sinks.png_compression << "\n";
+  return manifest_head("render", options.str(), request.scene);
+}
+
+std::vector<std::string> clip_outputs(const clip::ClipRequest& request) {
+  const scene::Scene& scene = request.scene;
+  std::vector<std::string> files{scene.name + ".mp4"};
+  if (request.write_png) {
+    for (int i = 0; i < scene.frames; ++i) {
+      char name[32];
+      std::snprintf(name, sizeof name, "/frames/frame_%05d.png", i);
+      files.push_back(scene.name + name);
+    }
+  }
+  if (scene.compare.empty()) {
+    files.push_back(scene.name + "/diagnostics.csv");
+  } else {
+    for (const auto& tile : scene.compare)
+      files.push_back(scene.name + "/diagnostics-" + tile.name + ".csv");
+  }
+  return files;
+}
+
+fs::path plot_manifest_path(const fs::path& out_dir, const std::string& name) {
+  return out_dir / name / "plot-manifest.json";
+}
+
+std::string plot_manifest_head(const charts::PlotRequest& request) {
+  std::ostringstream options;
+  options << "    \"width\": " << request.width << ",\n"
+          << "    \"height\": " << request.height << "\n";
+  return manifest_head("plot", options.str(), request.scene);
+}
+
+std::vector<std::string> plot_outputs(const charts::PlotRequest& request) {
+  return {request.scene.name + "-plot.png"};
+}
+
+}  // namespace bookspin::cache

@@ -1,0 +1,128 @@
+#include "charts/accuracy_plots.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <fstream>
+
+#include "output/atomic_output.hpp"
+#include "output/png_writer.hpp"
+
+namespace bookspin::charts {
+
+namespace {
+
+bool same_method(const analysis::Method& a, const analysis::Method& b) {
+  return a.kind == b.kind && a.integrator == b.integrator;
+}
+
+void write_energy_csv(const std::filesystem::path& path,
+                      const std::vector<analysis::EnergyHistory>& histories) {
+  output::AtomicTextFile file(path);
+  std::ostream& out = file.stream();
+  out << "t";
+  for (const auto& h : histories) out << ',' << method_label(h.method);
+  out << '\n';
+  const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
+  for (std::size_t i = 0; i < rows; ++i) {
+    char cell[64];
+    std::snprintf(cell, sizeof cell, "%.9g", histories.front().t[i]);
+    out << cell;
+    for (const auto& h : histories) {
+      // A diverged run's history is shorter: its missing windows stay empty.
+      if (i < h.relative_error.size()) {
+        std::snprintf(cell, sizeof cell, ",%.6e", h.relative_error[i]);
+        out << cell;
+      } else {
+        out << ',';
+      }
+    }
+    out << '\n';
+  }
+  file.commit();
+}
+
+}  // namespace
+
+std::string method_label(const analysis::Method& m) {
+  return std::string(physics::to_string(m.kind)) + " " +
+         std::string(physics::to_string(m.integrator));
+}
+
+void style_series(const analysis::Method& m, overlay::Series& s) {
+  overlay::palette_colour(static_cast<int>(m.integrator), s.r, s.g, s.b);
+  s.dashed = m.kind == physics::ModelKind::rigid_quaternion;
+  if (m.kind == physics::ModelKind::particle)
+    s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(m.integrator);
+}
+
+overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& rows,
+                                      double flips) {
+  overlay::PlotSpec spec;
+  spec.title = "Work-precision: orientation error after " +
+               std::to_string(static_cast<int>(flips)) + " flips vs cost, one point per dt";
+  spec.x_label = "cost: CPU time of step() per simulated time unit (microseconds)";
+  spec.y_label = "orientation error (rad)";
+  spec.log_x = spec.log_y = true;
+  for (const auto& method : analysis::all_methods()) {
+    overlay::Series s;
+    s.label = method_label(method);
+    for (const auto& r : rows) {
+      if (!same_method(r.method, method)) continue;
+      s.x.push_back(r.ns_per_step / r.dt * 1e-3);
+      s.y.push_back(r.orientation_error);
+    }
+    style_series(method, s);
+    spec.series.push_back(std::move(s));
+  }
+  return spec;
+}
+
+overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistory>& histories,
+                                        double flips) {
+  overlay::PlotSpec spec;
+  const double dt = histories.empty() ? 0.0 : histories.front().dt;
+  char title[160];
+  std::snprintf(title, sizeof title,
+                "Relative energy error over %d flip periods at dt = 1/%.0f (largest per window)",
+                static_cast<int>(flips), dt > 0.0 ? 1.0 / dt : 0.0);
+  spec.title = title;
+  spec.x_label = "time t (time units)";
+  spec.y_label = "relative energy error |E/E0 - 1|";
+  spec.log_y = true;
+  for (const auto& h : histories) {
+    overlay::Series s;
+    s.label = method_label(h.method) + (h.diverged ? " (diverged)" : "");
+    s.x = h.t;
+    s.y = h.relative_error;
+    style_series(h.method, s);
+    spec.series.push_back(std::move(s));
+  }
+  return spec;
+}
+
+std::vector<std::filesystem::path> write_accuracy_plots(
+    const std::filesystem::path& out_dir, const std::string& scene_name,
+    const analysis::AccuracySettings& settings, const physics::ExactRotation& exact,
+    const std::vector<analysis::AccuracyRow>& rows) {
+  std::vector<std::filesystem::path> written;
+  const auto work_png = out_dir / (scene_name + "-work-precision.png");
+  output::write_png(work_png,
+                    overlay::plot_image(work_precision_plot(rows, settings.flips), 1400, 900));
+  written.push_back(work_png);
+
+  std::vector<analysis::EnergyHistory> histories;
+  for (const auto& method : analysis::rigid_methods()) {
+    histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
+                                                 kLongTimeFlips, kLongTimeWindows));
+  }
+  const auto energy_png = out_dir / (scene_name + "-energy.png");
+  const auto energy_csv = out_dir / (scene_name + "-energy.csv");
+  write_energy_csv(energy_csv, histories);
+  output::write_png(
+      energy_png, overlay::plot_image(long_time_energy_plot(histories, kLongTimeFlips), 1400, 900));
+  written.push_back(energy_png);
+  written.push_back(energy_csv);
+  return written;
+}
+
+}  // namespace bookspin::charts

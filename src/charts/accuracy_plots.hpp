@@ -1,0 +1,44 @@
+#pragma once
+// The plots of `bookspin accuracy` beyond error-vs-dt: the work–precision diagram and the
+// long-time energy plot (docs/physics.md §10).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/accuracy.hpp"
+#include "overlay/plot.hpp"
+
+namespace bookspin::charts {
+
+/// "rigid-quaternion splitting4": the method as the table and the legends name it.
+std::string method_label(const analysis::Method& m);
+
+/// One look per method in every accuracy plot: colour by integrator, dashed for the
+/// quaternion model, greys for the particle model.
+void style_series(const analysis::Method& m, overlay::Series& s);
+
+/// Work–precision diagram (log–log): orientation error after the run (rad) against the
+/// measured cost per simulated time unit (µs of step() per time unit, ns_per_step/dt), one
+/// line per method through its dt values. Lower left is better.
+overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& rows, double flips);
+
+/// Long-time energy plot: relative energy error |E/E0 − 1| (log scale, the largest in each
+/// window) against t (time units), one line per history.
+overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistory>& histories,
+                                        double flips);
+
+/// The settings of the long-time energy plot: every rigid method at dt = 1/60 over 100 flip
+/// periods, in 400 windows.
+inline constexpr double kLongTimeFlips = 100.0;
+inline constexpr double kLongTimeDt = 1.0 / 60.0;
+inline constexpr int kLongTimeWindows = 400;
+
+/// Runs the long-time energy histories and writes, into `out_dir`, <scene>-work-precision.png
+/// (from `rows`), <scene>-energy.png and <scene>-energy.csv (t, one column per method).
+/// Returns the paths written. Throws OutputError when a file cannot be written.
+std::vector<std::filesystem::path> write_accuracy_plots(
+    const std::filesystem::path& out_dir, const std::string& scene_name,
+    const analysis::AccuracySettings& settings, const physics::ExactRotation& exact,
+    const std::vector<analysis::AccuracyRow>& rows);
+
+}  // namespace bookspin::charts

@@ -1,0 +1,108 @@
+#include "charts/decoration.hpp"
+
+#include <cstdio>
+#include <ctime>
+
+#include "charts/panel.hpp"
+#include "charts/sphere_view.hpp"
+
+namespace bookspin::charts {
+
+namespace {
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+/// CPU time of this thread between laps (the overlays are drawn on one thread).
+class CpuTimer {
+ public:
+  explicit CpuTimer(bool on) : on_(on), last_(on ? now() : 0.0) {}
+  double lap() {
+    if (!on_) return 0.0;
+    const double t = now(), elapsed = t - last_;
+    last_ = t;
+    return elapsed;
+  }
+
+ private:
+  static double now() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+  }
+  bool on_;
+  double last_;
+};
+
+}  // namespace
+
+std::string model_line(const scene::Scene& scene) {
+  const auto& m = scene.model;
+  std::string line = std::string(physics::to_string(m.kind));
+  if (m.kind != physics::ModelKind::exact) {
+    line += ", " + std::string(physics::to_string(m.integrator));
+    line += format(", dt = %.4g", scene.dt);
+    line += m.normalize ? ", normalized" : ", not normalized";
+  }
+  if (m.kind == physics::ModelKind::particle) {
+    line += m.damping ? ", damped" : ", undamped";
+    line += format(", k = %g", m.spring_constant);
+  }
+  return line;
+}
+
+std::string divergence_text(double t) { return format("diverged at t = %.2f", t); }
+
+std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double t,
+                                              std::optional<double> diverged_at) {
+  std::vector<overlay::CaptionLine> lines;
+  lines.push_back({scene.title, overlay::CaptionStyle::normal, true});
+  lines.push_back({model_line(scene)});
+  lines.push_back({format("t = %.1f", t)});
+  if (diverged_at) {
+    lines.push_back({divergence_text(*diverged_at), overlay::CaptionStyle::warning, true});
+  }
+  return lines;
+}
+
+void decorate_frame(RgbaImage& image, const scene::Scene& scene, double t,
+                    std::optional<double> diverged_at, const DiagnosticsHistory& history) {
+  FrameDecorator(scene).decorate(image, t, diverged_at, history);
+}
+
+FrameDecorator::FrameDecorator(const scene::Scene& scene) : scene_(scene) {}
+FrameDecorator::~FrameDecorator() = default;
+
+void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> diverged_at,
+                              const DiagnosticsHistory& history, OverlayTimes* times) {
+  const scene::Scene& scene = scene_;
+  CpuTimer timer(times != nullptr);
+  overlay::CaptionLayout caption;
+  double centre_x = 0.5 * image.width;
+  if (scene.render.panel) {
+    const PixelRect rect = panel_rect(image.width, image.height);
+    draw_panel(image, rect, panel_plots(single_run(scene, history), clip_end_time(scene), t));
+    caption.max_width = rect.x - 0.03 * image.height;  // keep clear of the panel
+    centre_x = 0.5 * rect.x;
+    if (times) times->panel += timer.lap();
+  }
+  if (scene.render.sphere) {
+    if (!sphere_ || !sphere_->fits(image)) {
+      const double book_width = scene.render.panel ? panel_rect(image.width, image.height).x
+                                                   : static_cast<double>(image.width);
+      sphere_ = std::make_unique<overlay::SphereInset>(
+          image.width, image.height, sphere_rect(image.width, image.height, book_width),
+          sphere_spec(sphere_moments(scene), {}));
+    }
+    sphere_->draw(image, sphere_trails({SphereRun{&history, palette_colour(0)}}));
+    if (times) times->sphere += timer.lap();
+  }
+  caption_.draw(image, caption_for(scene, t, diverged_at), caption);
+  if (diverged_at) overlay::draw_banner(image, divergence_text(*diverged_at), centre_x);
+  if (times) times->caption += timer.lap();
+}
+
+}  // namespace bookspin::charts

@@ -1,0 +1,60 @@
+#pragma once
+// The 2D decoration of a frame: caption, plot panel, divergence banner (overlays drawn on
+// the rendered image; the renderer knows nothing of them).
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "common/rgba_image.hpp"
+#include "overlay/caption.hpp"
+#include "overlay/sphere.hpp"
+#include "physics/simulator.hpp"
+#include "charts/diagnostics_history.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::charts {
+
+/// "diverged at t = 31.35".
+std::string divergence_text(double t);
+
+/// The caption of a frame: title, model and toggles, time; plus the divergence warning.
+std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double t,
+                                              std::optional<double> diverged_at);
+
+/// The model line of a caption: "rigid-matrix, euler, dt = 0.01667, normalized".
+std::string model_line(const scene::Scene& scene);
+
+/// Decorates a rendered frame of `scene` at time `t`: with render.panel the live plots of
+/// `history` (every frame so far) on the right, with render.sphere the momentum sphere inset
+/// at the left edge (sphere_view.hpp) with `history`'s trail, then the caption (kept within the
+/// book's part), then after a divergence the "diverged at" banner.
+void decorate_frame(RgbaImage& image, const scene::Scene& scene, double t,
+                    std::optional<double> diverged_at, const DiagnosticsHistory& history);
+
+/// CPU seconds spent in each overlay (accumulated over the frames decorated).
+struct OverlayTimes {
+  double panel = 0.0, sphere = 0.0, caption = 0.0;  ///< caption: with the banner, if any
+};
+
+/// decorate_frame for the frames of one clip: the same pixels, with what does not change
+/// from frame to frame kept between them (the clip's render loop holds one).
+class FrameDecorator {
+ public:
+  /// `scene` must outlive the decorator.
+  explicit FrameDecorator(const scene::Scene& scene);
+  ~FrameDecorator();
+  FrameDecorator(const FrameDecorator&) = delete;
+  FrameDecorator& operator=(const FrameDecorator&) = delete;
+
+  /// As decorate_frame(image, scene, t, diverged_at, history); with `times`, adds the CPU
+  /// time of each overlay to it.
+  void decorate(RgbaImage& image, double t, std::optional<double> diverged_at,
+                const DiagnosticsHistory& history, OverlayTimes* times = nullptr);
+
+ private:
+  const scene::Scene& scene_;
+  overlay::CaptionPainter caption_;
+  std::unique_ptr<overlay::SphereInset> sphere_;  ///< made for the first frame's size
+};
+
+}  // namespace bookspin::charts

@@ -1,0 +1,45 @@
+#pragma once
+// The physics panel: three stacked plots of a run's diagnostics (body-frame ω, relative
+// energy drift, shape error) against time, drawn live beside the book in a clip
+// (render.panel) and over the whole run by `bookspin plot`.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/pixel_rect.hpp"
+#include "common/rgba_image.hpp"
+#include "overlay/plot.hpp"
+#include "charts/diagnostics_history.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::charts {
+
+/// Share of the frame width the book keeps when the panel is shown (the panel has the rest).
+inline constexpr double kBookShare = 0.6;
+
+/// The three plots for `runs`: one run shows ω_x, ω_y, ω_z, E/E0 − 1 and its model's shape
+/// measures (strain; plus ‖RᵀR − I‖ for a matrix, |q| − 1 for a quaternion); several runs
+/// (a comparison) show ω_x, E/E0 − 1 and strain for each, labelled by run. The x axis spans
+/// [0, t_end] time units; `cursor` marks the current time.
+std::vector<overlay::PlotSpec> panel_plots(const std::vector<PanelRun>& runs, double t_end,
+                                           std::optional<double> cursor);
+
+/// The panel column of a width×height frame: the right (1 − kBookShare) of it, inset.
+PixelRect panel_rect(int width, int height);
+
+/// Draws the plots stacked in `rect` of `image`, on a light translucent background.
+void draw_panel(RgbaImage& image, const PixelRect& rect,
+                const std::vector<overlay::PlotSpec>& plots);
+
+/// The runs of a single scene, for panel_plots.
+std::vector<PanelRun> single_run(const scene::Scene& scene, const DiagnosticsHistory& history);
+
+/// Time of the scene's last frame: (frames − 1) × steps_per_frame × dt, time units.
+double clip_end_time(const scene::Scene& scene);
+
+/// A white width×height image: `header` lines on top (the first bold), the plots stacked
+/// below.
+RgbaImage plot_sheet(const std::vector<std::string>& header,
+                     const std::vector<overlay::PlotSpec>& plots, int width, int height);
+
+}  // namespace bookspin::charts

@@ -1,0 +1,143 @@
+#include "charts/plot_sheet.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "output/output_dir.hpp"
+#include "output/png_writer.hpp"
+#include "charts/decoration.hpp"
+#include "analysis/frame_source.hpp"
+#include "charts/panel.hpp"
+
+namespace bookspin::charts {
+
+namespace {
+
+/// One simulated run, start to end (or divergence).
+struct Run {
+  scene::Scene scene;
+  DiagnosticsHistory history;
+  std::optional<double> diverged_at;
+};
+
+Run simulate(const scene::Scene& scene) {
+  Run run{scene, {}, std::nullopt};
+  analysis::FrameSource source(run.scene);
+  physics::Pose pose;
+  while (source.next(pose)) run.history.add(pose.diagnostics);
+  run.diverged_at = source.diverged_at();
+  return run;
+}
+
+std::vector<Run> simulate_all(const scene::Scene& scene) {
+  std::vector<Run> runs;
+  if (scene.compare.empty()) runs.push_back(simulate(scene));
+  for (const auto& panel : scene.compare) runs.push_back(simulate(scene::tile_scene(scene, panel)));
+  return runs;
+}
+
+/// Title, then what was run: the model line (or the panels), and any divergence.
+std::vector<std::string> header(const scene::Scene& scene, const std::vector<Run>& runs) {
+  std::vector<std::string> lines{scene.title};
+  if (scene.compare.empty()) {
+    lines.push_back(model_line(scene));
+  } else {
+    std::string panels = "comparison:";
+    for (const auto& run : runs) panels += (&run == &runs.front() ? " " : " · ") + run.scene.title;
+    lines.push_back(panels);
+  }
+  for (const auto& run : runs) {
+    if (!run.diverged_at) continue;
+    lines.push_back((scene.compare.empty() ? "" : run.scene.title + ": ") +
+                    divergence_text(*run.diverged_at) + " (the curves end there)");
+  }
+  return lines;
+}
+
+/// When a diverged run blew up: its first sample with |E/E0 − 1| ≥ 1 (the energy doubled or
+/// vanished; E is conserved by the exact motion, docs/physics.md §9), else where it diverged.
+/// std::nullopt for a run that did not diverge.
+std::optional<double> blow_up_time(const Run& run) {
+  if (!run.diverged_at) return std::nullopt;
+  const auto& h = run.history;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (!(std::abs(h.energy_drift[i]) < 1.0)) return h.t[i];
+  return run.diverged_at;
+}
+
+/// Keeps plots of a blow-up readable: each linear y axis spans the values of every run up to
+/// its blow-up (`t_blow(series)`, infinite for a run that did not diverge), padded by a
+/// tenth, where some curve leaves that range; the overlay marks where it does
+/// (overlay::PlotSpec::y_range). Returns whether any axis was clipped.
+template <typename BlowUp>
+bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots, const BlowUp& t_blow) {
+  bool clipped = false;
+  for (auto& plot : plots) {
+    if (plot.log_y) continue;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo, all_lo = lo, all_hi = -lo;
+    for (const auto& s : plot.series) {
+      const double until = t_blow(s);
+      for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+        if (!std::isfinite(s.y[i])) continue;
+        all_lo = std::min(all_lo, s.y[i]), all_hi = std::max(all_hi, s.y[i]);
+        if (s.x[i] <= until) lo = std::min(lo, s.y[i]), hi = std::max(hi, s.y[i]);
+      }
+    }
+    if (!std::isfinite(lo)) continue;
+    if (hi - lo < plot.min_y_span) {
+      const double mid = 0.5 * (lo + hi);
+      lo = mid - 0.5 * plot.min_y_span, hi = mid + 0.5 * plot.min_y_span;
+    }
+    const double pad = 0.1 * std::max(hi - lo, 1e-12);
+    if (all_lo >= lo - pad && all_hi <= hi + pad) continue;  // nothing leaves: fit the data
+    plot.y_range = std::pair{lo - pad, hi + pad};
+    clipped = true;
+  }
+  return clipped;
+}
+
+}  // namespace
+
+PlotSheet plot_sheet_for(const scene::Scene& scene) {
+  const std::vector<Run> runs = simulate_all(scene);
+  std::vector<PanelRun> panel_runs;
+  for (const auto& run : runs)
+    panel_runs.emplace_back(run.scene, run.history, run.scene.title);
+  auto plots = panel_plots(panel_runs, clip_end_time(scene), std::nullopt);
+  // A comparison's series are labelled with their run's title (panel.cpp).
+  std::map<std::string, double> blow_ups;
+  std::optional<double> first;
+  for (const auto& run : runs) {
+    const auto t = blow_up_time(run);
+    blow_ups[run.scene.title] = t.value_or(std::numeric_limits<double>::infinity());
+    if (t && (!first || *t < *first)) first = t;
+  }
+  const auto t_blow = [&](const overlay::Series& s) {
+    if (runs.size() == 1) return blow_ups.begin()->second;
+    const auto it = blow_ups.find(s.label);
+    return it == blow_ups.end() ? std::numeric_limits<double>::infinity() : it->second;
+  };
+  auto lines = header(scene, runs);
+  if (first && clip_to_range_before(plots, t_blow)) {
+    std::ostringstream note;
+    note << "the y axes show the range before the blow-up (|E/E\u2080 \u2212 1| \u2265 1, "
+         << (runs.size() == 1 ? "" : "first ") << "at t = " << std::setprecision(4) << *first
+         << "); \u25B2 \u25BC mark where a curve leaves it";
+    lines.push_back(note.str());
+  }
+  return {std::move(lines), std::move(plots)};
+}
+
+std::filesystem::path write_plot_sheet(const PlotRequest& request) {
+  const PlotSheet sheet = plot_sheet_for(request.scene);
+  const auto path = request.out_dir / (request.scene.name + "-plot.png");
+  output::prepare_output_dir(request.out_dir);
+  output::write_png(path, plot_sheet(sheet.lines, sheet.plots, request.width, request.height));
+  return path;
+}
+
+}  // namespace bookspin::charts

@@ -1,0 +1,31 @@
+#include "clip/clip_request.hpp"
+
+#include <algorithm>
+#include <thread>
+
+namespace bookspin::clip {
+
+output::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs) {
+  const scene::RenderOptions& r = scene.render;
+  output::EncoderSettings settings{r.width, r.height, r.fps, r.codec, r.crf, r.preset};
+  settings.threads = jobs;
+  return settings;
+}
+
+output::SinkOptions sink_options(const ClipRequest& request) {
+  output::SinkOptions s;
+  s.write_png = request.write_png;
+  s.png_compression =
+      request.png_compression >= 0 ? request.png_compression : request.scene.render.png_compression;
+  const int jobs =
+      request.jobs > 0 ? request.jobs : static_cast<int>(std::thread::hardware_concurrency());
+  s.png_workers = std::max(1, jobs - 1);
+  s.encoder = encoder_settings(request.scene, request.jobs);
+  return s;
+}
+
+output::ClipPaths clip_paths(const std::filesystem::path& out_dir, const std::string& name) {
+  return {out_dir / (name + ".mp4"), out_dir / name / "frames", out_dir / name / "diagnostics.csv"};
+}
+
+}  // namespace bookspin::clip

@@ -1,0 +1,56 @@
+#pragma once
+// What a caller asks of the pipeline for one clip, and what it gets back. No command-line
+// types: `bookspin render`, the bench and tests build a ClipRequest and call render_clip().
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "output/clip_sinks.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::clip {
+
+struct ClipRequest {
+  scene::Scene scene;             ///< validated; scene.frames is the clip's length
+  std::filesystem::path out_dir;  ///< OUT: OUT/<name>.mp4, OUT/<name>/frames/, CSVs
+  bool write_png = true;          ///< false: MP4 and CSV only
+  int png_compression = -1;       ///< zlib level 0–9 for the frames; −1: render.png_compression
+  int jobs = 0;                   ///< worker threads (PNG, encoder); 0: every core
+  /// Called once before the first frame with a note for the user (the encoder fell back to
+  /// libx264); may be empty.
+  std::function<void(const std::string& note)> on_note;
+  /// Called after each frame is queued, with the number of frames done so far.
+  std::function<void(int done)> on_progress;
+  /// Polled before each frame: the signal asking the clip to stop (SIGINT, SIGTERM), or 0.
+  std::function<int()> stop_signal;
+};
+
+/// A tile of a comparison whose simulation diverged (its tile holds the last finite frame).
+struct TileDivergence {
+  std::string label;
+  double t = 0.0;  ///< time units
+};
+
+struct ClipResult {
+  int frames = 0;                     ///< frames handed to the sinks
+  std::optional<double> diverged_at;  ///< single scene: when its simulation diverged
+  std::string divergence_reason;      ///< single scene: the simulator's reason, if it gave one
+  std::vector<TileDivergence> diverged_tiles;  ///< comparison scene: every diverged tile
+  /// The signal that stopped the clip, 0 if it ran to the end. A stopped clip leaves no
+  /// output behind (every temporary removed), earlier complete files untouched.
+  int signal = 0;
+};
+
+/// The encoder settings of a render of `scene` (render.width, height, fps, codec, crf,
+/// preset) with `jobs` threads (0: the encoder's own choice for all cores).
+output::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs);
+
+/// Sink settings from the scene's render.* keys and the request's options.
+output::SinkOptions sink_options(const ClipRequest& request);
+
+/// OUT/<name>.mp4, OUT/<name>/frames and OUT/<name>/diagnostics.csv.
+output::ClipPaths clip_paths(const std::filesystem::path& out_dir, const std::string& name);
+
+}  // namespace bookspin::clip

@@ -1,0 +1,91 @@
+#include "clip/render_settings.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "clip/body_drawing.hpp"
+#include "charts/panel.hpp"
+#include "charts/sphere_view.hpp"
+
+namespace bookspin::clip {
+
+namespace {
+
+/// Moves eye and target along the image's right vector so that the book's centre projects
+/// to the middle of the columns [left, share) (fractions of the width) of a width×height image.
+void shift_book_left(render::Camera& camera, int width, int height, double share,
+                     double left = 0.0) {
+  const Eigen::Vector3d forward = camera.target - camera.eye;
+  const Eigen::Vector3d right = forward.cross(camera.up);
+  if ((share >= 1.0 && left <= 0.0) || right.norm() < 1e-9) return;  // degenerate: reported later
+  const double aspect = static_cast<double>(width) / height;
+  const double half_width = forward.norm() * std::tan(camera.fov_y_deg * M_PI / 360.0) * aspect;
+  const Eigen::Vector3d shift = (1.0 - share - left) * half_width * right.normalized();
+  camera.eye += shift;
+  camera.target += shift;
+}
+
+}  // namespace
+
+render::RenderSettings render_settings_for(const scene::Scene& scene, int width, int height,
+                                           double book_share, double book_left) {
+  const auto& r = scene.render;
+  render::RenderSettings s;
+  s.width = width;
+  s.height = height;
+  const int book_width =
+      std::max(2, static_cast<int>(std::lround((book_share - book_left) * width)));
+  s.camera = render::default_camera(0.5 * scene.body.cage.size.norm(), book_width, height);
+  s.camera.fov_y_deg = r.fov_y_deg;
+  // Keep the automatic distance for the default field of view, scaled for another one.
+  double distance = (s.camera.eye - s.camera.target).norm() * std::tan(M_PI / 12.0) /
+                    std::tan(r.fov_y_deg * M_PI / 360.0);
+  if (r.camera_distance > 0.0) distance = r.camera_distance;
+  s.camera.eye = s.camera.target + distance * r.camera_direction.normalized();
+  shift_book_left(s.camera, width, height, book_share, book_left);
+  s.textures = {r.texture_front, r.texture_back, r.texture_spine, r.texture_pages};
+  s.show_angular_momentum = r.show_angular_momentum;
+  s.show_body_axes = r.show_body_axes;
+  s.max_anisotropy = static_cast<float>(r.anisotropy);
+  s.msaa_samples = r.msaa;
+  return s;
+}
+
+render::RenderSettings render_settings_for(const scene::Scene& scene) {
+  const int width = scene.render.width, height = scene.render.height;
+  const double share = scene.render.panel ? charts::kBookShare : 1.0;
+  // With the momentum sphere the body is framed right of its inset, so that neither hides
+  // the other.
+  double left = 0.0;
+  if (scene.render.sphere) {
+    const PixelRect inset = charts::sphere_rect(width, height, share * width);
+    left = std::min(share - 0.1, (inset.x + inset.width) / width);
+  }
+  return render_settings_for(scene, width, height, share, left);
+}
+
+render::FrameInput frame_input_for(const physics::Pose& pose) {
+  render::FrameInput input;
+  input.corners = pose.corners;
+  input.angular_momentum_direction = pose.diagnostics.L;
+  return input;
+}
+
+BodyDrawing::BodyDrawing(const physics::Body& body)
+    : rest_corners_(body.cage.body_corners()), rest_vertices_(body.vertices) {
+  if (body.shape == physics::BodyShape::book) return;
+  topology_ = std::make_shared<const render::SurfaceTopology>(
+      render::SurfaceTopology{body.triangles, body.face_colours, body.smooth});
+}
+
+render::FrameInput BodyDrawing::input_for(const physics::Pose& pose) const {
+  render::FrameInput input = frame_input_for(pose);
+  if (!topology_) return input;
+  input.surface.topology = topology_;
+  input.surface.positions = pose.surface.cols() > 0
+                                ? pose.surface
+                                : trilinear_deform(rest_corners_, pose.corners, rest_vertices_);
+  return input;
+}
+
+}  // namespace bookspin::clip

@@ -1,0 +1,25 @@
+#pragma once
+// A mesh file's mass properties: load (src/mesh), integrate (src/physics, docs/physics.md
+// §11), and turn the physics' error reasons into input errors naming the file.
+#include <filesystem>
+#include <optional>
+
+#include "physics/mass_properties.hpp"
+
+namespace bookspin::jobs {
+
+struct InertiaRequest {
+  std::filesystem::path mesh_path;
+  double scale = 1.0;          ///< multiplies every coordinate of the file, > 0
+  std::optional<double> mass;  ///< total mass, > 0; overrides density when set
+  double density = 1.0;        ///< mass per length³ (length after scaling), > 0
+};
+
+/// The mesh's volume, mass, centre of mass, inertia about the centre of mass and principal
+/// frame, in the file's axes and scaled units; warnings (a shell turned around) in
+/// `warnings`. Throws InputError "FILE: reason" for a file that cannot be read (see
+/// mesh::load_mesh) or a mesh that bounds no solid: "open mesh: N boundary edges",
+/// "non-manifold mesh: …", "inconsistent winding: …", "zero volume: …".
+physics::MassProperties mesh_inertia(const InertiaRequest& request);
+
+}  // namespace bookspin::jobs

@@ -1,0 +1,17 @@
+#include "jobs/simulation.hpp"
+
+#include "output/diagnostics_csv.hpp"
+#include "analysis/frame_source.hpp"
+
+namespace bookspin::jobs {
+
+SimulationResult write_diagnostics_rows(const scene::Scene& scene, std::ostream& out) {
+  out << output::diagnostics_csv_header() << '\n';
+  analysis::FrameSource source(scene);
+  physics::Pose pose;
+  while (source.next(pose))
+    out << output::diagnostics_csv_row(source.frame(), pose.diagnostics) << '\n';
+  return {source.diverged_at(), source.frame() + 1, source.divergence_reason()};
+}
+
+}  // namespace bookspin::jobs

@@ -1,0 +1,22 @@
+#pragma once
+// Physics only: a scene's simulation, frame by frame, as diagnostics rows (`bookspin
+// simulate`).
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace bookspin::jobs {
+
+struct SimulationResult {
+  std::optional<double> diverged_at;  ///< time units
+  int rows = 0;                       ///< rows written (frame 0 = the initial state)
+  std::string divergence_reason;      ///< the simulator's own words, where it gave any
+};
+
+/// Writes the diagnostics CSV header and one row per frame (docs/physics.md §9) to `out`
+/// until the clip ends or the simulation diverges.
+SimulationResult write_diagnostics_rows(const scene::Scene& scene, std::ostream& out);
+
+}  // namespace bookspin::jobs

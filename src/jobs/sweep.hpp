@@ -1,0 +1,83 @@
+#pragma once
+// Parameter sweeps (`bookspin sweep`, docs/physics.md §14): one physics-only run per grid
+// point, in parallel threads, measured and written as one CSV row per point plus a plot;
+// shards of the grid for job arrays, and their merge.
+#include <Eigen/Dense>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "analysis/measures.hpp"
+#include "overlay/plot.hpp"
+#include "physics/simulator.hpp"
+#include "jobs/sweep_grid.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::jobs {
+
+/// The measures a sweep writes, in the order given: rows of analysis::measure_table().
+using MeasureList = std::vector<const analysis::Measure*>;
+
+/// Parses "first_flip,flip_period,…" (comma-separated names of analysis::measure_table(), no
+/// repeats). Throws InputError ("--measure TEXT: reason") on an unknown or repeated name or
+/// an empty list.
+MeasureList parse_measures(const std::string& text);
+
+/// A sweep's table: the varied keys, the measures, and the exact reference columns
+/// (`first_flip_exact` where first_flip is measured, `flip_period_exact` likewise).
+struct SweepTable {
+  std::string scene_name;
+  std::vector<VaryRange> ranges;
+  MeasureList measures;
+  std::vector<std::string> header;  ///< CSV column names, in order
+  /// (grid index, cells) per row, cells as written (%.17g or empty), sorted by index.
+  std::vector<std::pair<std::size_t, std::vector<std::string>>> rows;
+};
+
+struct SweepRequest {
+  std::filesystem::path scene_path;
+  std::vector<std::string> overrides;  ///< the user's own --set, applied before the grid's
+  std::vector<VaryRange> ranges;
+  MeasureList measures;
+  int jobs = 0;  ///< threads; 0 = std::thread::hardware_concurrency()
+  /// --shard K/N: only the grid points with index ≡ K (mod N), K from 0 to N − 1 (as Slurm's
+  /// SLURM_ARRAY_TASK_ID runs with --array=0-(N-1)). shard_count 0: the whole grid.
+  int shard_index = 0, shard_count = 0;
+  std::filesystem::path out_dir = "out";
+  /// Polled by the workers before each point: the signal asking the sweep to stop (SIGINT,
+  /// SIGTERM), or 0. May be empty.
+  std::function<int()> stop_signal;
+};
+
+struct SweepResult {
+  std::vector<std::filesystem::path> written;
+  int signal = 0;  ///< the stop signal that ended the sweep early (nothing written), or 0
+};
+
+/// Parses every point's scene first (a bad value is the scene's InputError, naming the key,
+/// before any run), runs them on `jobs` threads, and writes OUT/<scene>-sweep.csv and
+/// OUT/<scene>-sweep.png, or for a shard only OUT/<scene>-sweep.shard-K-of-N.csv (a first
+/// line "# bookspin sweep shard …" recording the scene, the grid size and the ranges, then a
+/// grid_index column before the full CSV's). Returns the paths written. Throws InputError
+/// for a comparison scene, OutputError when a file cannot be written.
+SweepResult run_sweep(const SweepRequest& request);
+
+/// Reads shard CSVs, checks they are shards of one sweep (same first line but K, same
+/// header) that cover its grid exactly once, and writes OUT/<scene>-sweep.csv and .png,
+/// byte-identical to the one-process sweep's. Throws InputError naming the file: unreadable,
+/// not a shard, mismatched sweep or header, a row of another shard, a duplicate grid point,
+/// a missing one (naming the shard file that should hold it).
+std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem::path>& shards,
+                                               const std::filesystem::path& out_dir);
+
+/// Writes the full CSV (header, then one line per row without the grid index) to `out`.
+void write_sweep_csv(const SweepTable& table, std::ostream& out);
+
+/// One plot per measure against the first varied key (log axis where it was :log), one line
+/// per combination of the other keys' values, the exact curve dashed beside the measured one.
+std::vector<overlay::PlotSpec> sweep_plots(const SweepTable& table);
+
+}  // namespace bookspin::jobs

@@ -1,0 +1,266 @@
+// Sweeps (docs/physics.md §14): the grid, the overrides it makes, and the measures against
+// closed forms of the exact motion (docs/physics.md §8).
+#include "analysis/motion.hpp"
+#include "jobs/sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "physics/exact_model.hpp"
+
+namespace bookspin::jobs {
+namespace {
+
+std::string scene_file(const std::string& name) {
+  return std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/" + name + ".toml";
+}
+
+/// exact-unstable-x without jiggle, spin 0.114819 about x (intermediate) plus ε about y.
+scene::Scene near_intermediate(double epsilon, const std::string& kind,
+                               const std::string& integrator, double dt, int frames) {
+  return scene::parse_scene(
+      scene_file("exact-unstable-x"),
+      {"initial.jiggle=0", "initial.angular_velocity=[0.114819," + full_precision(epsilon) + ",0]",
+       "model.kind=\"" + kind + "\"", "model.integrator=\"" + integrator + "\"",
+       "time.dt=" + full_precision(dt), "time.steps_per_frame=1",
+       "time.frames=" + std::to_string(frames)});
+}
+
+TEST(SweepGrid, LinearRangeIsEvenlySpacedWithExactEnds) {
+  const VaryRange r = parse_vary("time.dt=0.01:0.05:5");
+  EXPECT_EQ(r.key, "time.dt");
+  EXPECT_EQ(r.component, -1);
+  EXPECT_FALSE(r.log);
+  const auto v = r.values();
+  ASSERT_EQ(v.size(), 5u);
+  for (int i = 0; i < 5; ++i) EXPECT_NEAR(v[i], 0.01 * (i + 1), 1e-16);
+  EXPECT_EQ(v.front(), 0.01);
+  EXPECT_EQ(v.back(), 0.05);
+  EXPECT_EQ(parse_vary("time.dt=0.25:9:1").values(), std::vector<double>{0.25});
+  // A whole step keeps every value integral, so integer keys (initial.seed) can be swept.
+  const auto seeds = parse_vary("initial.seed=1:1000:1000").values();
+  for (std::size_t i = 0; i < seeds.size(); ++i) ASSERT_EQ(seeds[i], static_cast<double>(i + 1));
+}
+
+TEST(SweepGrid, LogRangeIsGeometricWithExactEnds) {
+  const VaryRange r = parse_vary("initial.angular_velocity[1]=1e-6:1e-2:5:log");
+  EXPECT_EQ(r.scene_key, "initial.angular_velocity");
+  EXPECT_EQ(r.component, 1);
+  EXPECT_TRUE(r.log);
+  const auto v = r.values();
+  ASSERT_EQ(v.size(), 5u);
+  for (int i = 0; i < 5; ++i) EXPECT_NEAR(v[i] / std::pow(10.0, i - 6), 1.0, 1e-13) << i;
+  EXPECT_EQ(v.front(), 1e-6);
+  EXPECT_EQ(v.back(), 1e-2);
+  // The spec written into a shard reads back to the same range.
+  const VaryRange again = parse_vary(r.key + "=" + r.spec());
+  EXPECT_EQ(again.values(), v);
+}
+
+TEST(SweepGrid, FirstRangeVariesSlowestLastFastest) {
+  const SweepGrid grid({parse_vary("a.b=1:2:2"), parse_vary("c.d=10:30:3")});
+  ASSERT_EQ(grid.size(), 6u);
+  const std::vector<std::vector<double>> expected{{1, 10}, {1, 20}, {1, 30},
+                                                  {2, 10}, {2, 20}, {2, 30}};
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(grid.point(i), expected[i]) << i;
+}
+
+TEST(SweepGrid, BadRangesAreInputErrors) {
+  for (const char* bad :
+       {"time.dt", "time.dt=1:2", "time.dt=1:2:3:lin", "time.dt=a:2:3", "time.dt=1:2:0",
+        "time.dt=1:2:2.5", "time.dt=0:1:3:log", "=1:2:3", "initial.angular_velocity[3]=1:2:3",
+        "initial.angular_velocity[x]=1:2:3", "time dt=1:2:3", "time.dt=1:inf:3"}) {
+    EXPECT_THROW(parse_vary(bad), InputError) << bad;
+  }
+  EXPECT_THROW(SweepGrid({}), InputError);
+  EXPECT_THROW(SweepGrid({parse_vary("time.dt=1:2:2"), parse_vary("time.dt=3:4:2")}), InputError);
+  EXPECT_THROW(SweepGrid({parse_vary("book.size=1:2:2"), parse_vary("book.size[0]=3:4:2")}),
+               InputError);
+}
+
+TEST(SweepGrid, VectorComponentsBecomeOneOverrideOfTheWholeVector) {
+  const scene::Scene base = scene::parse_scene(scene_file("exact-unstable-x"));
+  const SweepGrid grid({parse_vary("initial.angular_velocity[2]=0.5:0.75:2"),
+                        parse_vary("time.dt=0.01:0.02:2"),
+                        parse_vary("initial.angular_velocity[1]=1e-3:1e-2:2:log")});
+  const auto overrides = point_overrides(base, grid, 5);  // (0.75, 0.01, 1e-2)
+  ASSERT_EQ(overrides.size(), 2u);
+  EXPECT_EQ(overrides[0], "time.dt=0.01");
+  EXPECT_EQ(overrides[1], "initial.angular_velocity=[0.114819,0.01,0.75]");
+  const scene::Scene placed = scene::parse_scene(scene_file("exact-unstable-x"), overrides);
+  EXPECT_EQ(placed.initial.omega0_body, Eigen::Vector3d(0.114819, 0.01, 0.75));
+  EXPECT_EQ(placed.dt, 0.01);
+  // A component of a key that is not a vector is named.
+  const SweepGrid scalar({parse_vary("time.dt[0]=1:2:2")});
+  EXPECT_THROW(point_overrides(base, scalar, 0), InputError);
+}
+
+TEST(SweepMeasures, ParsesNamesAndRejectsUnknownOrRepeated) {
+  EXPECT_EQ(parse_measures("flip_period,first_flip"),
+            (MeasureList{analysis::find_measure("flip_period"), analysis::find_measure("first_flip")}));
+  EXPECT_EQ(analysis::find_measure("flip_period")->name, "flip_period");
+  EXPECT_THROW(parse_measures("flip_time"), InputError);
+  EXPECT_THROW(parse_measures("first_flip,first_flip"), InputError);
+  EXPECT_THROW(parse_measures(""), InputError);
+}
+
+TEST(SweepMeasures, CosIntermediateUsesTheMiddleMoment) {
+  physics::Diagnostics d;
+  d.cos_axis_L = Eigen::Vector3d(0.1, 0.2, 0.3);
+  EXPECT_EQ(analysis::flip_signal(d, Eigen::Vector3d(2, 1, 3)), 0.1);  // the book: x
+  EXPECT_EQ(analysis::flip_signal(d, Eigen::Vector3d(1, 2, 3)), 0.2);
+  EXPECT_EQ(analysis::flip_signal(d, Eigen::Vector3d(3, 1, 2)), 0.3);
+  const physics::Book book;
+  EXPECT_EQ(analysis::flip_signal(d, book.principal_moments()), 0.1);
+}
+
+TEST(SweepMeasures, RigidRk4FlipPeriodIsTheClosedForm) {
+  // T/2 = 2K(k)/λ (docs/physics.md §8), within 1e-6 relative, from sign changes found at
+  // every step with linear interpolation.
+  for (const char* kind : {"rigid-quaternion", "rigid-matrix"}) {
+    const scene::Scene s = near_intermediate(1e-3, kind, "rk4", 1.0 / 120, 120 * 700);
+    const analysis::RunMeasures m = analysis::measure_run(s);
+    ASSERT_TRUE(m.flip_period && m.flip_period_exact) << kind;
+    EXPECT_NEAR(*m.flip_period / *m.flip_period_exact, 1.0, 1e-6) << kind;
+    physics::ExactModel exact(s.body.cage);
+    exact.reset(s.initial);
+    EXPECT_EQ(*m.flip_period_exact, exact.rotation().flip_period());
+    EXPECT_NEAR(*m.first_flip, *m.first_flip_exact, 1e-6 * *m.first_flip_exact) << kind;
+    EXPECT_LT(*m.energy_drift, 1e-10) << kind;
+    EXPECT_LT(*m.orientation_error, 1e-6) << kind;
+    EXPECT_FALSE(m.diverged_at);
+  }
+}
+
+TEST(SweepMeasures, FirstFlipGrowsLikeTheLogOfOneOverEpsilon) {
+  // Near the intermediate axis a perturbation grows like exp(σt) with
+  // σ = ω0·√((I_x − I_y)(I_z − I_x)/(I_y I_z)) (docs/physics.md §14), so the first flip
+  // comes at t ≈ ln(C/ε)/σ: each factor 10 in ε adds ln(10)/σ.
+  const physics::Book book;
+  const Eigen::Vector3d I = book.principal_moments();
+  const double sigma = 0.114819 * std::sqrt((I.x() - I.y()) * (I.z() - I.x()) / (I.y() * I.z()));
+  std::vector<double> first;
+  for (double eps : {1e-4, 1e-5, 1e-6, 1e-7}) {
+    const analysis::RunMeasures m =
+        analysis::measure_run(near_intermediate(eps, "exact", "euler", 1.0 / 60, 60 * 300));
+    ASSERT_TRUE(m.first_flip) << eps;
+    EXPECT_NEAR(*m.first_flip, *m.first_flip_exact, 1e-6) << eps;
+    first.push_back(*m.first_flip);
+  }
+  for (std::size_t i = 1; i < first.size(); ++i)
+    EXPECT_NEAR((first[i] - first[i - 1]) * sigma / std::log(10.0), 1.0, 1e-3) << i;
+}
+
+TEST(SweepMeasures, TheTHandleSweepSceneFollowsTheSameLogLaw) {
+  // sweeps/t-handle-flip-time-vs-perturbation.toml: spin Ω = 2 about y (intermediate), ε
+  // about x (smallest), quaternion RK4 at dt = 0.001. Same law as the book's, with
+  // σ = Ω·√((I_y − I_x)(I_z − I_y)/(I_x I_z)) from the T-handle's own moments (§12, §14).
+  const std::string path =
+      std::string(BOOKSPIN_SOURCE_DIR) + "/sweeps/t-handle-flip-time-vs-perturbation.toml";
+  std::vector<double> first;
+  double sigma = 0.0;
+  for (double eps : {1e-3, 1e-4, 1e-5}) {
+    const scene::Scene s = scene::parse_scene(
+        path, {"initial.angular_velocity=[" + full_precision(eps) + ",2,0]", "time.frames=161"});
+    const Eigen::Vector3d I = s.body.moments;
+    sigma = 2.0 * std::sqrt((I.y() - I.x()) * (I.z() - I.y()) / (I.x() * I.z()));
+    const analysis::RunMeasures m = analysis::measure_run(s);
+    ASSERT_TRUE(m.first_flip && m.flip_period) << eps;
+    EXPECT_NEAR(*m.first_flip / *m.first_flip_exact, 1.0, 1e-8) << eps;
+    EXPECT_NEAR(*m.flip_period / *m.flip_period_exact, 1.0, 1e-5) << eps;
+    EXPECT_LT(*m.energy_drift, 1e-12) << eps;
+    first.push_back(*m.first_flip);
+  }
+  for (std::size_t i = 1; i < first.size(); ++i)
+    EXPECT_NEAR((first[i] - first[i - 1]) * sigma / std::log(10.0), 1.0, 1e-3) << i;
+}
+
+TEST(SweepMeasures, ExactModelHasNoErrorAndParticleModelIsMeasuredFromItsCorners) {
+  const analysis::RunMeasures exact =
+      analysis::measure_run(near_intermediate(1e-3, "exact", "euler", 1.0 / 60, 3000));
+  EXPECT_LT(*exact.orientation_error, 1e-12);
+  EXPECT_LT(*exact.energy_drift, 1e-13);
+  // The particle model (fig05: stiff springs, damping, normalization) turns like the rigid
+  // book: its best-fit rotation stays within 0.01 rad of the exact one until the first flip
+  // (t = 100 here; it drifts by radians over the later flips), and it flips within 0.2 time
+  // units of the exact first flip.
+  const scene::Scene s =
+      scene::parse_scene(scene_file("fig05-particle-unstable-x"), {"time.frames=201"});
+  const analysis::RunMeasures particle = analysis::measure_run(s);
+  ASSERT_TRUE(particle.orientation_error && particle.first_flip_exact);
+  EXPECT_GT(*particle.orientation_error, 0.0);
+  EXPECT_LT(*particle.orientation_error, 0.01);
+  const analysis::RunMeasures longer =
+      analysis::measure_run(scene::parse_scene(scene_file("fig05-particle-unstable-x"), {"time.frames=260"}));
+  ASSERT_TRUE(longer.first_flip);
+  EXPECT_NEAR(*longer.first_flip, *longer.first_flip_exact, 0.2);
+}
+
+TEST(SweepMeasures, ADivergingRunIsMeasuredUpToItsLastFiniteStep) {
+  // Euler without SVD on the matrix at dt = 2: the matrix grows until it is absurdly large.
+  const scene::Scene s =
+      scene::parse_scene(scene_file("fig10-matrix-no-normalization"), {"time.dt=2"});
+  const analysis::RunMeasures m = analysis::measure_run(s);
+  ASSERT_TRUE(m.diverged_at);
+  EXPECT_GT(*m.diverged_at, 0.0);
+  EXPECT_EQ(std::fmod(*m.diverged_at, 2.0), 0.0);  // a whole number of steps
+  EXPECT_FALSE(m.orientation_error);
+  EXPECT_GT(*m.energy_drift, 1.0);
+}
+
+/// The cells of a CSV line.
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+TEST(SweepRun, FlipPeriodOfEveryPointMatchesTheClosedFormOnALogGrid) {
+  // The acceptance sweep: 20 log-spaced ε on the exact model (1e-6 … 1e-2) and on
+  // quaternion RK4 at dt = 1/60, whose period is round-off limited below ε ≈ 4e-6
+  // (docs/physics.md §14), so from 5e-6 … 1e-2.
+  const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output" / "sweep_accept";
+  std::filesystem::remove_all(dir);
+  for (const auto& [kind, start] :
+       {std::pair<std::string, std::string>{"exact", "1e-6"}, {"rigid-quaternion", "5e-6"}}) {
+    SweepRequest request;
+    request.scene_path =
+        std::string(BOOKSPIN_SOURCE_DIR) + "/sweeps/flip-time-vs-perturbation.toml";
+    request.overrides = {"model.kind=\"" + kind + "\"", kind == "exact"
+                                                            ? "model.integrator=\"euler\""
+                                                            : "model.integrator=\"rk4\""};
+    request.ranges = {parse_vary("initial.angular_velocity[1]=" + start + ":1e-2:20:log")};
+    request.measures = parse_measures("flip_period,first_flip");
+    request.jobs = 2;
+    request.out_dir = dir / kind;
+    const SweepResult result = run_sweep(request);
+    ASSERT_EQ(result.written.size(), 2u);
+    std::ifstream csv(result.written[0]);
+    std::string line;
+    std::getline(csv, line);
+    ASSERT_EQ(line,
+              "initial.angular_velocity[1],flip_period,first_flip,flip_period_exact,"
+              "first_flip_exact");
+    int rows = 0;
+    double previous_first = 1e300;
+    while (std::getline(csv, line)) {
+      const auto c = cells_of(line);
+      ASSERT_EQ(c.size(), 5u) << line;
+      const double period = std::stod(c[1]), exact = std::stod(c[3]);
+      EXPECT_NEAR(period / exact, 1.0, 1e-6) << kind << " " << line;
+      EXPECT_LT(std::stod(c[2]), previous_first) << line;  // closer to the axis: later flip
+      previous_first = std::stod(c[2]);
+      ++rows;
+    }
+    EXPECT_EQ(rows, 20) << kind;
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::jobs
