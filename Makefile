@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 SCENES := $(wildcard scenes/*.toml)
 SWEEPS := $(wildcard sweeps/*.toml)
 
-.PHONY: all deps build figures test render bench update-goldens clean
+.PHONY: all deps build figures test check render bench update-goldens clean
 all: build
 
 deps:
@@ -27,6 +27,13 @@ figures: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The unit tier alone (tests/README.md): no package step, no GL, no program runs; seconds
+# once built.
+check:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j $(JOBS) --target unit_tests
+	cd $(BUILD) && ctest -L unit --output-on-failure -j $(JOBS)
 
 render: build
 	$(BUILD)/bookspin render $(SCENE) -o out

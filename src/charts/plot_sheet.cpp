@@ -36,19 +36,19 @@ Run simulate(const scene::Scene& scene) {
 std::vector<Run> simulate_all(const scene::Scene& scene) {
   std::vector<Run> runs;
   if (scene.compare.empty()) runs.push_back(simulate(scene));
-  for (const auto& panel : scene.compare) runs.push_back(simulate(scene::tile_scene(scene, panel)));
+  for (const auto& tile : scene.compare) runs.push_back(simulate(scene::tile_scene(scene, tile)));
   return runs;
 }
 
-/// Title, then what was run: the model line (or the panels), and any divergence.
+/// Title, then what was run: the model line (or the tiles), and any divergence.
 std::vector<std::string> header(const scene::Scene& scene, const std::vector<Run>& runs) {
   std::vector<std::string> lines{scene.title};
   if (scene.compare.empty()) {
     lines.push_back(model_line(scene));
   } else {
-    std::string panels = "comparison:";
-    for (const auto& run : runs) panels += (&run == &runs.front() ? " " : " · ") + run.scene.title;
-    lines.push_back(panels);
+    std::string tiles = "comparison:";
+    for (const auto& run : runs) tiles += (&run == &runs.front() ? " " : " · ") + run.scene.title;
+    lines.push_back(tiles);
   }
   for (const auto& run : runs) {
     if (!run.diverged_at) continue;

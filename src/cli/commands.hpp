@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "cache/run_cached.hpp"
 #include "cli/run_guarded.hpp"
 
 namespace bookspin::cli {
@@ -85,11 +86,9 @@ struct InertiaOptions {
 /// principal frame (docs/physics.md §11); warnings on stderr.
 int inertia_command(const InertiaOptions& options);
 
-/// Prints "up to date: NAME" and returns true when `manifest` vouches for the outputs of a run
-/// with `head` (output::manifest_stale); otherwise notes why they are made again (when there
-/// was a manifest) and returns false.
-bool skip_if_up_to_date(const std::filesystem::path& manifest, const std::string& head,
-                        const std::filesystem::path& out, const std::string& name, bool verify);
+/// cache::run_cached(job) for the output called `name`, telling the user: "up to date: NAME"
+/// on stdout when nothing was made, and on stderr why an existing manifest did not match.
+cache::CacheOutcome run_cached(cache::CachedJob job, const std::string& name);
 
 struct SweepOptions {
   std::string scene_path;              ///< empty with --merge

@@ -126,15 +126,18 @@ int gallery_command(const GalleryOptions& options) {
   const std::string head =
       "  \"manifest\": 1,\n  \"command\": \"gallery\",\n  \"page_sha256\": \"" +
       output::sha256_text(gallery_html(entries, header)) + "\",\n";
-  const fs::path manifest = out / "gallery-manifest.json";
-  if (!options.force && skip_if_up_to_date(manifest, head, out, "index.html", false))
-    return kExitOk;
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw_output_error("cannot create output directory", out, ec.value());
-  header.date = utc_now();
-  write_page(out / "index.html", gallery_html(entries, header));
-  output::write_manifest(manifest, head, "", out, {"index.html"});
+  const cache::CacheOutcome outcome =
+      run_cached({out / "gallery-manifest.json", head, out, options.force, false,
+                  [&]() -> std::optional<cache::JobOutputs> {
+                    std::error_code ec;
+                    fs::create_directories(out, ec);
+                    if (ec) throw_output_error("cannot create output directory", out, ec.value());
+                    header.date = utc_now();
+                    write_page(out / "index.html", gallery_html(entries, header));
+                    return cache::JobOutputs{"", {"index.html"}};
+                  }},
+                 "index.html");
+  if (outcome == cache::CacheOutcome::up_to_date) return kExitOk;
   std::cout << "wrote " << (out / "index.html").string() << " (" << entries.size() << " clips)\n";
   return kExitOk;
 }

@@ -14,15 +14,17 @@ int plot_command(const PlotOptions& options) {
   request.out_dir = options.out_dir;
   request.width = options.width;
   request.height = options.height;
-  const auto manifest = cache::plot_manifest_path(options.out_dir, request.scene.name);
-  const std::string head = cache::plot_manifest_head(request);
-  if (!options.force && skip_if_up_to_date(manifest, head, options.out_dir,
-                                           request.scene.name + "-plot", options.verify))
-    return kExitOk;
-  const auto written = charts::write_plot_sheet(request);
-  output::write_manifest(manifest, head, cache::manifest_note(request.scene), options.out_dir,
-                         cache::plot_outputs(request));
-  std::cout << "wrote " << written.string() << '\n';
+  std::filesystem::path written;
+  const cache::CacheOutcome outcome = run_cached(
+      {cache::plot_manifest_path(options.out_dir, request.scene.name),
+       cache::plot_manifest_head(request), options.out_dir, options.force, options.verify,
+       [&]() -> std::optional<cache::JobOutputs> {
+         written = charts::write_plot_sheet(request);
+         return cache::JobOutputs{cache::manifest_note(request.scene),
+                                  cache::plot_outputs(request)};
+       }},
+      request.scene.name + "-plot");
+  if (outcome == cache::CacheOutcome::made) std::cout << "wrote " << written.string() << '\n';
   return kExitOk;
 }
 

@@ -91,17 +91,14 @@ std::string divergence_because(const std::string& reason) {
   return reason.empty() ? "" : "; " + reason;
 }
 
-bool skip_if_up_to_date(const std::filesystem::path& manifest, const std::string& head,
-                        const std::filesystem::path& out, const std::string& name, bool verify) {
-  const std::optional<std::string> stale = output::manifest_stale(manifest, head, out, verify);
-  if (!stale) {
+cache::CacheOutcome run_cached(cache::CachedJob job, const std::string& name) {
+  job.on_remake = [&name](const std::string& reason) {
+    std::cerr << "bookspin: note: " << name << ": making it again: " << reason << '\n';
+  };
+  const cache::CacheOutcome outcome = cache::run_cached(job);
+  if (outcome == cache::CacheOutcome::up_to_date)
     std::cout << "up to date: " << name << std::endl;
-    return true;
-  }
-  std::error_code ec;
-  if (std::filesystem::exists(manifest, ec))
-    std::cerr << "bookspin: note: " << name << ": making it again: " << *stale << '\n';
-  return false;
+  return outcome;
 }
 
 int render_command(const RenderArgs& args) {
@@ -116,31 +113,28 @@ int render_command(const RenderArgs& args) {
   Progress progress(name, scene.frames);
   const clip::ClipRequest request = clip_request(args, std::move(scene), progress);
   const auto manifest = cache::clip_manifest_path(args.out_dir, name);
-  const std::string head = cache::clip_manifest_head(request);
-  if (!args.force && skip_if_up_to_date(manifest, head, args.out_dir, name, args.verify)) {
+  // An interrupted render puts no output in place, so the old manifest stays true.
+  clip::ClipResult result;
+  std::vector<std::string> warnings;
+  const cache::CacheOutcome outcome = run_cached(
+      {manifest, cache::clip_manifest_head(request), args.out_dir, args.force, args.verify,
+       [&]() -> std::optional<cache::JobOutputs> {
+         result = clip::render_clip(request);
+         if (result.signal != 0) return std::nullopt;
+         warnings = divergence_warnings(name, result);
+         return cache::JobOutputs{cache::manifest_note(request.scene) + warnings_json(warnings),
+                                  cache::clip_outputs(request)};
+       }},
+      name);
+  if (outcome == cache::CacheOutcome::up_to_date) {
     for (const auto& warning : recorded_warnings(manifest))
       std::cerr << "bookspin: warning: " << warning << " (when it was rendered)\n";
     return kExitOk;
   }
-  // An interrupted render puts no output in place, so the old manifest stays true; one that
-  // fails may have replaced some outputs, so its manifest goes.
-  const clip::ClipResult result = [&] {
-    try {
-      return clip::render_clip(request);
-    } catch (...) {
-      std::error_code ec;
-      std::filesystem::remove(manifest, ec);
-      throw;
-    }
-  }();
-  if (result.signal != 0) {
+  if (outcome == cache::CacheOutcome::interrupted) {
     std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << name << '\n';
     return 128 + result.signal;
   }
-  const auto warnings = divergence_warnings(name, result);
-  output::write_manifest(manifest, head,
-                         cache::manifest_note(request.scene) + warnings_json(warnings),
-                         args.out_dir, cache::clip_outputs(request));
   progress.finish(result.frames);
   for (const auto& warning : warnings) std::cerr << "bookspin: warning: " << warning << '\n';
   std::cout << "rendered: " << name << " (" << result.frames << " frames)" << std::endl;

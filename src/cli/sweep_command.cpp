@@ -73,31 +73,31 @@ int sweep_command(const SweepOptions& options) {
     request.stop_signal = interrupt_signal;
     // A whole sweep (not a shard) skips when its manifest says it is up to date
     // (output/manifest.hpp), like render and plot.
-    const bool whole = options.shard.empty();
-    std::string head;
-    std::filesystem::path manifest;
-    std::optional<scene::Scene> scene;
-    if (whole) {
-      scene = scene::parse_scene(options.scene_path, options.overrides);
-      head = cache::manifest_head("sweep", sweep_options_json(options), *scene);
-      manifest = std::filesystem::path(options.out_dir) / scene->name / "sweep-manifest.json";
-      if (!options.force && skip_if_up_to_date(manifest, head, options.out_dir,
-                                               scene->name + "-sweep", options.verify))
-        return kExitOk;
+    jobs::SweepResult result;
+    if (!options.shard.empty()) {
+      result = jobs::run_sweep(request);
+    } else {
+      const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+      const cache::CacheOutcome outcome = run_cached(
+          {std::filesystem::path(options.out_dir) / scene.name / "sweep-manifest.json",
+           cache::manifest_head("sweep", sweep_options_json(options), scene), options.out_dir,
+           options.force, options.verify,
+           [&]() -> std::optional<cache::JobOutputs> {
+             result = jobs::run_sweep(request);
+             if (result.signal != 0) return std::nullopt;
+             cache::JobOutputs made{cache::manifest_note(scene), {}};
+             for (const auto& path : result.written)
+               made.outputs.push_back(path.lexically_relative(options.out_dir).generic_string());
+             return made;
+           }},
+          scene.name + "-sweep");
+      if (outcome == cache::CacheOutcome::up_to_date) return kExitOk;
     }
-    const jobs::SweepResult result = jobs::run_sweep(request);
     if (result.signal != 0) {
       std::fprintf(stderr, "bookspin: sweep interrupted; nothing written\n");
       return 128 + result.signal;
     }
     written = result.written;
-    if (whole) {
-      std::vector<std::string> outputs;
-      for (const auto& path : written)
-        outputs.push_back(path.lexically_relative(options.out_dir).generic_string());
-      output::write_manifest(manifest, head, cache::manifest_note(*scene), options.out_dir,
-                             outputs);
-    }
   }
   for (const auto& path : written) std::printf("wrote %s\n", path.c_str());
   return kExitOk;

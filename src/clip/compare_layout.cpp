@@ -13,11 +13,11 @@ struct Grid {
   int columns, rows;
 };
 
-Grid best_grid(int panels, double width, double height) {
-  Grid best{panels, 1};
+Grid best_grid(int tiles, double width, double height) {
+  Grid best{tiles, 1};
   double best_side = -1;
-  for (int columns = 1; columns <= panels; ++columns) {
-    const int rows = (panels + columns - 1) / columns;
+  for (int columns = 1; columns <= tiles; ++columns) {
+    const int rows = (tiles + columns - 1) / columns;
     const double side = std::min(width / columns, height / rows);
     if (side > best_side + 0.5) best = {columns, rows}, best_side = side;
   }
@@ -26,18 +26,18 @@ Grid best_grid(int panels, double width, double height) {
 
 }  // namespace
 
-CompareLayout compare_layout(int panels, int width, int height, bool with_plots) {
+CompareLayout compare_layout(int tiles, int width, int height, bool with_plots) {
   CompareLayout layout;
   const double header = std::max(14.0, 0.05 * height);
   layout.header = {0, 0, static_cast<double>(width), header};
   const double gap = std::max(2.0, 0.004 * height);
   const double grid_width = with_plots ? charts::kBookShare * width : width;
   const double grid_height = height - header;
-  const Grid grid = best_grid(panels, grid_width, grid_height);
+  const Grid grid = best_grid(tiles, grid_width, grid_height);
   layout.columns = grid.columns, layout.rows = grid.rows;
   layout.tile_width = even_floor((grid_width - gap * (grid.columns - 1)) / grid.columns);
   layout.tile_height = even_floor((grid_height - gap * (grid.rows - 1)) / grid.rows);
-  for (int i = 0; i < panels; ++i) {
+  for (int i = 0; i < tiles; ++i) {
     const int c = i % grid.columns, r = i / grid.columns;
     layout.tiles.push_back({c * (layout.tile_width + gap), header + r * (layout.tile_height + gap),
                             static_cast<double>(layout.tile_width),

@@ -19,10 +19,10 @@ namespace bookspin::clip {
 
 namespace {
 
-/// One panel's run. Not movable: the FrameSource keeps a reference to `scene`.
+/// One tile's run. Not movable: the FrameSource keeps a reference to `scene`.
 struct TileState {
   explicit TileState(scene::Scene s) : scene(std::move(s)), source(scene), drawing(scene.body) {}
-  scene::Scene scene;  ///< the comparison scene with this panel's model
+  scene::Scene scene;  ///< the comparison scene with this tile's model
   analysis::FrameSource source;
   BodyDrawing drawing;
   ShownFrame frame;
@@ -54,8 +54,8 @@ class TileCsv {
 };
 
 std::filesystem::path csv_path(const std::filesystem::path& out, const scene::Scene& scene,
-                               const scene::CompareTile& panel) {
-  return out / scene.name / ("diagnostics-" + panel.name + ".csv");
+                               const scene::CompareTile& tile) {
+  return out / scene.name / ("diagnostics-" + tile.name + ".csv");
 }
 
 void draw_header(cairo_t* cr, const PixelRect& strip, const std::string& title, double t) {
@@ -73,28 +73,28 @@ void draw_header(cairo_t* cr, const PixelRect& strip, const std::string& title, 
   cairo_show_text(cr, time);
 }
 
-/// The caption of one tile: the panel's label (its scene's title), its model line, t and
+/// The caption of one tile: the tile's label (its scene's title), its model line, t and
 /// any divergence.
 std::vector<overlay::CaptionLine> tile_caption(const TileState& p) {
   return charts::caption_for(p.scene, p.frame.t, p.frame.diverged_at);
 }
 
 void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& layout,
-              const Tiles& panels) {
-  const double t = panels.front()->frame.t;
+              const Tiles& tiles) {
+  const double t = tiles.front()->frame.t;
   std::optional<PixelRect> plots = layout.plots;
   if (scene.render.sphere) {
     // One trail per tile, in the tile's colour in the plots (palette order).
     std::vector<charts::SphereRun> trails;
-    for (std::size_t i = 0; i < panels.size(); ++i)
-      trails.push_back({&panels[i]->frame.history, palette_colour(i)});
+    for (std::size_t i = 0; i < tiles.size(); ++i)
+      trails.push_back({&tiles[i]->frame.history, palette_colour(i)});
     PixelRect rect = charts::sphere_rect(frame.width, frame.height, frame.width);
     if (plots) std::tie(rect, *plots) = charts::split_for_sphere(*plots);
     overlay::draw_sphere(frame, rect, charts::sphere_spec(charts::sphere_moments(scene), trails));
   }
   if (plots) {
     std::vector<charts::PanelRun> runs;
-    for (const auto& p : panels)
+    for (const auto& p : tiles)
       runs.emplace_back(p->scene, p->frame.history, p->scene.title);
     charts::draw_panel(frame, *plots, charts::panel_plots(runs, charts::clip_end_time(scene), t));
   }
@@ -110,23 +110,23 @@ void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& 
   // the labels read as a set.
   double font = std::min(0.026 * frame.height, 0.045 * layout.tile_height);
   const double margin = 0.4 * font, max_width = layout.tile_width - 2 * margin;
-  for (const auto& p : panels) font = overlay::caption_font_size(tile_caption(*p), font, max_width);
-  for (std::size_t i = 0; i < panels.size(); ++i) {
+  for (const auto& p : tiles) font = overlay::caption_font_size(tile_caption(*p), font, max_width);
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
     const PixelRect& tile = layout.tiles[i];
     overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width};
-    overlay::draw_caption(frame, tile_caption(*panels[i]), caption);
+    overlay::draw_caption(frame, tile_caption(*tiles[i]), caption);
   }
 }
 
 RgbaImage compose(const scene::Scene& scene, const CompareLayout& layout,
-                  render::Renderer& renderer, const Tiles& panels) {
+                  render::Renderer& renderer, const Tiles& tiles) {
   RgbaImage frame = blank_frame(scene.render.width, scene.render.height);
-  for (std::size_t i = 0; i < panels.size(); ++i) {
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
     const PixelRect& tile = layout.tiles[i];
-    blit(frame, renderer.render(panels[i]->drawing.input_for(panels[i]->frame.pose)),
+    blit(frame, renderer.render(tiles[i]->drawing.input_for(tiles[i]->frame.pose)),
          static_cast<int>(tile.x), static_cast<int>(tile.y));
   }
-  decorate(frame, scene, layout, panels);
+  decorate(frame, scene, layout, tiles);
   return frame;
 }
 
@@ -140,17 +140,17 @@ physics::Diagnostics row_of(const ShownFrame& frame) {
 
 /// Steps every tile, renders and queues each frame; returns the signal that stopped it, or 0.
 int render_loop(const ClipRequest& request, const CompareLayout& layout, render::Renderer& renderer,
-                Tiles& panels, output::ClipSinks& sinks,
+                Tiles& tiles, output::ClipSinks& sinks,
                 std::vector<std::unique_ptr<TileCsv>>& csvs) {
   const scene::Scene& scene = request.scene;
   for (int index = 0; index < scene.frames; ++index) {
     if (request.stop_signal) {
       if (const int signal = request.stop_signal()) return signal;
     }
-    for (auto& p : panels) advance(p->source, index, p->scene, p->frame);
-    sinks.add(index, compose(scene, layout, renderer, panels), row_of(panels.front()->frame));
-    for (std::size_t i = 1; i < panels.size(); ++i)
-      csvs[i - 1]->add(index, row_of(panels[i]->frame));
+    for (auto& p : tiles) advance(p->source, index, p->scene, p->frame);
+    sinks.add(index, compose(scene, layout, renderer, tiles), row_of(tiles.front()->frame));
+    for (std::size_t i = 1; i < tiles.size(); ++i)
+      csvs[i - 1]->add(index, row_of(tiles[i]->frame));
     if (request.on_progress) request.on_progress(index + 1);
   }
   return 0;
@@ -164,11 +164,11 @@ ClipResult render_comparison(const ClipRequest& request) {
   const CompareLayout layout =
       compare_layout(static_cast<int>(scene.compare.size()), scene.render.width,
                      scene.render.height, scene.render.panel);
-  Tiles panels;
+  Tiles tiles;
   for (const auto& tile : scene.compare)
-    panels.push_back(std::make_unique<TileState>(tile_scene(scene, tile)));
+    tiles.push_back(std::make_unique<TileState>(tile_scene(scene, tile)));
   render::Renderer renderer(
-      render_settings_for(panels.front()->scene, layout.tile_width, layout.tile_height, 1.0));
+      render_settings_for(tiles.front()->scene, layout.tile_width, layout.tile_height, 1.0));
   output::ClipPaths paths{out / (scene.name + ".mp4"), out / scene.name / "frames",
                           csv_path(out, scene, scene.compare[0])};
   output::ClipSinks sinks(paths, sink_options(request));
@@ -178,12 +178,12 @@ ClipResult render_comparison(const ClipRequest& request) {
     csvs.push_back(std::make_unique<TileCsv>(csv_path(out, scene, scene.compare[i])));
   ClipResult result;
   // On a stop, the sinks' and CSVs' destructors remove every temporary.
-  if ((result.signal = render_loop(request, layout, renderer, panels, sinks, csvs)) != 0)
+  if ((result.signal = render_loop(request, layout, renderer, tiles, sinks, csvs)) != 0)
     return result;
   sinks.finish();
   for (auto& csv : csvs) csv->finish();
   result.frames = scene.frames;
-  for (const auto& p : panels) {
+  for (const auto& p : tiles) {
     if (p->frame.diverged_at)
       result.diverged_tiles.push_back({p->scene.title, *p->frame.diverged_at});
   }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "support/physics_printers.hpp"
 #include "physics/particle_model.hpp"
 #include "physics/shape.hpp"
 

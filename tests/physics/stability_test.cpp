@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "model_helpers.hpp"
+#include "support/physics_printers.hpp"
 
 namespace bookspin::physics {
 namespace {

@@ -1,0 +1,28 @@
+#include "cache/run_cached.hpp"
+
+#include "output/manifest.hpp"
+
+namespace bookspin::cache {
+
+CacheOutcome run_cached(const CachedJob& job) {
+  if (!job.force) {
+    const std::optional<std::string> stale =
+        output::manifest_stale(job.manifest, job.head, job.out_dir, job.verify);
+    if (!stale) return CacheOutcome::up_to_date;
+    std::error_code ec;
+    if (job.on_remake && std::filesystem::exists(job.manifest, ec)) job.on_remake(*stale);
+  }
+  std::optional<JobOutputs> made;
+  try {
+    made = job.make();
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(job.manifest, ec);
+    throw;
+  }
+  if (!made) return CacheOutcome::interrupted;
+  output::write_manifest(job.manifest, job.head, made->note, job.out_dir, made->outputs);
+  return CacheOutcome::made;
+}
+
+}  // namespace bookspin::cache
