@@ -1,5 +1,5 @@
 // bookspin-bench: every number in one run, so that ratios compare like with like. It prints
-// measured figures and ratios only; what they should be is the README's business.
+// measured figures and ratios only; what they should be is docs/performance.md's business.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>

@@ -1,7 +1,7 @@
 #pragma once
 // A manifest: what produced a set of outputs and what they were when written, so that a
 // later run can tell whether it would produce the same and skip the work (`bookspin render`,
-// `plot`, `gallery`; README "Figures").
+// `plot`, `gallery`; docs/outputs.md).
 //
 // The file is JSON with a fixed layout, written by write_manifest() and read back by
 // manifest_stale() alone:
