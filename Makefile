@@ -38,8 +38,8 @@ check:
 render: build
 	$(BUILD)/bookspin render $(SCENE) -o out
 
-# Pipeline against the encoder alone, resolutions, physics against MuJoCo, memory (README,
-# "Performance"): a table on stdout and out/bench.csv. Quiet machine, a few minutes.
+# Pipeline against the encoder alone, resolutions, physics against MuJoCo, memory
+# (docs/performance.md): a table on stdout and out/bench.csv. Quiet machine, a few minutes.
 bench: build
 	$(BUILD)/bookspin-bench -o out
 
