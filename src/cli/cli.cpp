@@ -96,7 +96,7 @@ void add_gallery(CLI::App& cli, GalleryOptions& options) {
                   "Folder holding the rendered clips; the page goes there")
       ->required();
   cmd->add_option("SCENES", options.scene_paths,
-                  "Scene files (TOML); the page orders them (paper figures first, see README)")
+                  "Scene files (TOML); the page orders them (paper figures first, see docs/outputs.md)")
       ->required();
   cmd->add_flag("--force", options.force,
                 "Write the page even when OUT_DIR/gallery-manifest.json says it is up to date");
