@@ -4,13 +4,14 @@
 
 namespace bookspin::cache {
 
-CacheOutcome run_cached(const CachedJob& job) {
+CacheOutcome run_cached(const CachedJob& job,
+                        const std::function<void(const std::string& reason)>& on_remake) {
   if (!job.force) {
     const std::optional<std::string> stale =
         output::manifest_stale(job.manifest, job.head, job.out_dir, job.verify);
     if (!stale) return CacheOutcome::up_to_date;
     std::error_code ec;
-    if (job.on_remake && std::filesystem::exists(job.manifest, ec)) job.on_remake(*stale);
+    if (on_remake && std::filesystem::exists(job.manifest, ec)) on_remake(*stale);
   }
   std::optional<JobOutputs> made;
   try {

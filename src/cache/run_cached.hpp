@@ -26,9 +26,6 @@ struct CachedJob {
   bool verify = false;             ///< also compare the outputs' SHA-256
   /// Makes the outputs; empty when interrupted (nothing was put in place).
   std::function<std::optional<JobOutputs>()> make;
-  /// Told, before make(), why an existing manifest did not match (e.g. "scene changed").
-  /// May be empty.
-  std::function<void(const std::string& reason)> on_remake;
 };
 
 enum class CacheOutcome {
@@ -38,11 +35,13 @@ enum class CacheOutcome {
 };
 
 /// Unless `job.force`, returns up_to_date when the manifest matches job.head and every listed
-/// output is there (output::manifest_stale). Otherwise runs job.make() (after on_remake when
-/// a manifest was there but did not match); if it throws, the
+/// output is there (output::manifest_stale). Otherwise runs job.make() (after telling
+/// `on_remake`, if given, why a manifest that was there did not match, e.g. "scene changed");
+/// if it throws, the
 /// manifest is removed (some outputs may have been replaced) and the exception goes on; if
 /// it returns outputs, writes the manifest last. Throws OutputError when the manifest cannot
 /// be written.
-CacheOutcome run_cached(const CachedJob& job);
+CacheOutcome run_cached(const CachedJob& job,
+                        const std::function<void(const std::string& reason)>& on_remake = {});
 
 }  // namespace bookspin::cache

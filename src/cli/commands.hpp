@@ -88,7 +88,7 @@ int inertia_command(const InertiaOptions& options);
 
 /// cache::run_cached(job) for the output called `name`, telling the user: "up to date: NAME"
 /// on stdout when nothing was made, and on stderr why an existing manifest did not match.
-cache::CacheOutcome run_cached(cache::CachedJob job, const std::string& name);
+cache::CacheOutcome run_cached(const cache::CachedJob& job, const std::string& name);
 
 struct SweepOptions {
   std::string scene_path;              ///< empty with --merge

@@ -91,11 +91,10 @@ std::string divergence_because(const std::string& reason) {
   return reason.empty() ? "" : "; " + reason;
 }
 
-cache::CacheOutcome run_cached(cache::CachedJob job, const std::string& name) {
-  job.on_remake = [&name](const std::string& reason) {
+cache::CacheOutcome run_cached(const cache::CachedJob& job, const std::string& name) {
+  const cache::CacheOutcome outcome = cache::run_cached(job, [&name](const std::string& reason) {
     std::cerr << "bookspin: note: " << name << ": making it again: " << reason << '\n';
-  };
-  const cache::CacheOutcome outcome = cache::run_cached(job);
+  });
   if (outcome == cache::CacheOutcome::up_to_date)
     std::cout << "up to date: " << name << std::endl;
   return outcome;
