@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/gallery_page.hpp"
 #include "output/atomic_output.hpp"
+#include "output/output_dir.hpp"
 #include "output/manifest.hpp"
 #include "output/sha256.hpp"
 #include "pipeline/manifests.hpp"
@@ -130,7 +131,7 @@ int gallery_command(const GalleryOptions& options) {
   if (!options.force && skip_if_up_to_date(manifest, head, out, "index.html", false))
     return kExitOk;
   std::error_code ec;
-  fs::create_directories(out, ec);
+  output::make_directories(out, ec);
   if (ec) throw_output_error("cannot create output directory", out, ec.value());
   header.date = utc_now();
   write_page(out / "index.html", gallery_html(entries, header));

@@ -7,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
+#include "output/output_dir.hpp"
 #include "output/sha256.hpp"
 
 namespace bookspin::output {
@@ -107,7 +108,7 @@ void write_manifest(const fs::path& manifest, std::string_view head, std::string
   }
   text << kClose;
   std::error_code ec;
-  fs::create_directories(manifest.parent_path(), ec);
+  make_directories(manifest.parent_path(), ec);
   if (ec) throw_output_error("cannot create", manifest.parent_path(), ec.value());
   write_text_file(manifest, text.str());
 }
