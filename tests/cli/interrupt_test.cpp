@@ -177,6 +177,29 @@ TEST(Interrupt, RenderRemovesOnlyTheTemporariesOfDeadRunsOfItsOwnOutputs) {
   EXPECT_EQ(left, expected_left);
 }
 
+// A sweep, a plot and a gallery clear their outputs' leftovers of dead runs too (every
+// output goes through the same atomic output).
+TEST(Interrupt, SweepPlotAndGalleryRemoveTheTemporariesOfDeadRuns) {
+  const fs::path out = fresh_dir("interrupt-other-commands");
+  const std::string dead = std::to_string(dead_pid());
+  const std::vector<std::string> forged = {".exact-unstable-x-sweep.csv.tmp-" + dead + "-0",
+                                           ".exact-unstable-x-sweep.png.tmp-" + dead + "-1",
+                                           ".exact-unstable-x-plot.png.tmp-" + dead + "-0",
+                                           ".index.html.tmp-" + dead + "-0"};
+  for (const auto& name : forged) write_forged(out / name);
+  ASSERT_EQ(temporaries(out).size(), forged.size());
+  const std::string scene = scene_path("exact-unstable-x");
+  for (const std::string& args :
+       {"sweep " + scene + " --set time.frames=20 --vary time.dt=0.01:0.02:2 --measure "
+                           "energy_drift -o " + out.string(),
+        "plot " + scene + " --set time.frames=20 -o " + out.string(),
+        "gallery " + out.string() + " " + scene}) {
+    const CliResult r = run_bookspin(args);
+    ASSERT_EQ(r.status, 0) << args << "\n" << r.output;
+  }
+  EXPECT_EQ(temporaries(out), std::vector<std::string>{});
+}
+
 // SIGTERM and SIGINT take back the folders the run made (the -o folder and its parents, the
 // clip's folder), and only those: a folder that was there before stays.
 TEST(Interrupt, SigtermAndSigintLeaveNoFolderTheyMade) {
