@@ -12,7 +12,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <mutex>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -62,12 +64,13 @@ bool exists_no_follow(const fs::path& path) {
 
 // ---- Temporaries of dead runs ------------------------------------------------------
 
-// The pid in `.<name>.tmp-<pid>-<n>`, if `entry` is a temporary of `final_name` at all.
-std::optional<pid_t> temporary_owner(const std::string& entry, const std::string& final_name) {
-  const std::string prefix = "." + final_name + ".tmp-";
-  if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0)
+// The pid in `.<name>.tmp-<pid>-<n>` (any name), if `entry` is such a temporary at all.
+std::optional<pid_t> temporary_owner(const std::string& entry) {
+  constexpr std::string_view kTag = ".tmp-";
+  const auto tag = entry.rfind(kTag);
+  if (entry.size() < 2 || entry.front() != '.' || tag == std::string::npos || tag < 2)
     return std::nullopt;
-  const char* p = entry.data() + prefix.size();
+  const char* p = entry.data() + tag + kTag.size();
   const char* end = entry.data() + entry.size();
   long pid = 0;
   unsigned long n = 0;
@@ -112,19 +115,29 @@ bool owner_gone(pid_t pid, const fs::path& temporary) {
   return started && seconds(st.st_mtim) < *started - 1.0;
 }
 
-// Removes the temporaries `.<name>.tmp-<pid>-<n>` of `final_path` that runs now gone left
-// behind (killed with SIGKILL, or a crash), so that a later run of the same output clears
-// them. Errors are ignored: this is tidying, and a temporary it cannot remove harms nothing.
+// Removes the temporaries `.<name>.tmp-<pid>-<n>` in the folder of `final_path` that runs now
+// gone left behind (killed with SIGKILL, or a crash), so that a later run writing there clears
+// them. Each folder is looked through once per process (a frame dump makes one output per
+// frame in one folder). Errors are ignored: this is tidying, and a temporary it cannot remove
+// harms nothing.
 void remove_dead_temporaries(const fs::path& final_path) noexcept {
   try {
     const fs::path dir = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
-    const std::string name = final_path.filename().string();
+    static std::mutex mutex;
+    static std::set<fs::path> looked_through;
+    {
+      std::error_code ec;
+      if (!fs::is_directory(dir, ec)) return;  // no folder yet: nothing to clear
+      const fs::path key = fs::canonical(dir, ec);
+      if (ec) return;
+      const std::lock_guard lock(mutex);
+      if (!looked_through.insert(key).second) return;
+    }
     std::error_code ec;
     fs::directory_iterator it(dir, ec);
     if (ec) return;
     for (const auto& entry : it) {
-      const std::string entry_name = entry.path().filename().string();
-      const std::optional<pid_t> pid = temporary_owner(entry_name, name);
+      const std::optional<pid_t> pid = temporary_owner(entry.path().filename().string());
       if (!pid || !owner_gone(*pid, entry.path())) continue;
       std::error_code type_ec;
       remove_quietly(entry.path(), fs::is_directory(fs::symlink_status(entry.path(), type_ec)));

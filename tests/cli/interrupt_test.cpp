@@ -147,9 +147,9 @@ pid_t dead_pid() {
 
 void write_forged(const fs::path& path) { std::ofstream(path) << "left behind"; }
 
-// Which leftovers a render removes: those of its own outputs whose run is gone, never those of
-// a live run (a concurrent render of the same scene) nor of another output.
-TEST(Interrupt, RenderRemovesOnlyTheTemporariesOfDeadRunsOfItsOwnOutputs) {
+// Which leftovers a render removes: those in its output folders whose run is gone (another
+// output's too), never those of a live run (a concurrent render of the same scene).
+TEST(Interrupt, RenderRemovesOnlyTheTemporariesOfDeadRuns) {
   const fs::path out = fresh_dir("interrupt-forged");
   const fs::path clip_dir = out / kName;
   fs::create_directories(clip_dir);
@@ -164,9 +164,11 @@ TEST(Interrupt, RenderRemovesOnlyTheTemporariesOfDeadRunsOfItsOwnOutputs) {
   write_forged(clip_dir / (".diagnostics.csv.tmp-" + live + "-1"));
   fs::last_write_time(clip_dir / (".diagnostics.csv.tmp-" + live + "-1"),
                       fs::file_time_type::clock::now() - std::chrono::hours(24 * 365 * 20));
-  // Kept: a live run's (written after its process started), another output's, not a temporary.
-  const std::vector<std::string> kept = {mp4 + live + "-7", ".other.mp4.tmp-" + dead + "-0",
-                                         mp4 + dead, mp4 + "x-0", mp4 + dead + "-0-1"};
+  // Gone: another output's, of a dead run.
+  write_forged(out / (".other.mp4.tmp-" + dead + "-0"));
+  // Kept: a live run's (written after its process started), names that are not temporaries.
+  const std::vector<std::string> kept = {mp4 + live + "-7", mp4 + dead, mp4 + "x-0",
+                                         mp4 + dead + "-0-1"};
   for (const auto& name : kept) write_forged(out / name);
 
   ASSERT_EQ(wait_status(start_render(out, 12)), 0);

@@ -165,19 +165,20 @@ pid_t dead_pid() {
   return pid;
 }
 
-// A new AtomicOutput of a final name removes that name's temporaries whose run is gone: the
+// The first AtomicOutput in a folder removes the temporaries there whose run is gone: the
 // pid is dead, or alive but started after the temporary was last written (reused). A live
-// run's temporary, another name's, and names that only look alike stay.
-TEST(AtomicOutput, RemovesTheTemporariesOfDeadRunsOfItsFinalName) {
+// run's temporary, an aside copy (.old-) and names that only look alike stay.
+TEST(AtomicOutput, RemovesTheTemporariesOfDeadRunsInItsFolder) {
   ScratchDir dir;
   const std::string dead = std::to_string(dead_pid()), live = std::to_string(getpid());
   write_text(dir / (".clip.mp4.tmp-" + dead + "-0"), "x");
+  write_text(dir / (".other.png.tmp-" + dead + "-4"), "x");
   fs::create_directories(dir / (".clip.mp4.tmp-" + dead + "-1") / "inner");
   write_text(dir / (".clip.mp4.tmp-" + live + "-2"), "x");
   fs::last_write_time(dir / (".clip.mp4.tmp-" + live + "-2"),
                       fs::file_time_type::clock::now() - std::chrono::hours(24 * 365 * 20));
   const std::vector<std::string> kept = {".clip.mp4.tmp-" + live + "-3", ".clip.mp4.old-" + dead + "-0",
-                                         ".clip.mp4x.tmp-" + dead + "-0", ".clip.mp4.tmp-" + dead,
+                                         ".clip.mp4.tmp-x-0", ".clip.mp4.tmp-" + dead,
                                          "clip.mp4.tmp-" + dead + "-0"};
   for (const auto& name : kept) write_text(dir / name, "x");
   AtomicFile file(dir / "clip.mp4");
