@@ -128,7 +128,8 @@ void remove_dead_temporaries(const fs::path& final_path) noexcept {
     {
       std::error_code ec;
       if (!fs::is_directory(dir, ec)) return;  // no folder yet: nothing to clear
-      const fs::path key = fs::canonical(dir, ec);
+      // As spelled (two spellings of one folder cost a second look, nothing more).
+      const fs::path key = fs::absolute(dir, ec).lexically_normal();
       if (ec) return;
       const std::lock_guard lock(mutex);
       if (!looked_through.insert(key).second) return;

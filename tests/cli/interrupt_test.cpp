@@ -72,13 +72,16 @@ int partial_frames(const fs::path& clip_dir) {
 /// Waits (polling every millisecond, up to a minute) until the render `pid` writing into
 /// `clip_dir` has at least `frames` partial PNGs: the signal then comes at a known point of
 /// the run, whatever the machine's speed or load. False if it exited or the minute passed.
+/// On false the render is killed and reaped, so that no stray process outlives the test.
 bool wait_for_partial_frames(pid_t pid, const fs::path& clip_dir, int frames) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
   while (std::chrono::steady_clock::now() < deadline) {
     if (partial_frames(clip_dir) >= frames) return true;
-    if (waitpid(pid, nullptr, WNOHANG) != 0) return false;
+    if (waitpid(pid, nullptr, WNOHANG) != 0) return false;  // it ended (and is reaped)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
   return false;
 }
 
