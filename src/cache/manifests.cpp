@@ -3,12 +3,9 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "output/manifest.hpp"
 #include "output/sha256.hpp"
 #include "scene/canonical.hpp"
-
-#ifndef BOOKSPIN_VERSION
-#error "BOOKSPIN_VERSION is set by src/pipeline/CMakeLists.txt"
-#endif
 
 namespace bookspin::cache {
 
@@ -66,8 +63,8 @@ std::string manifest_head(const std::string& command, const std::string& options
   std::ostringstream out;
   out << "  \"manifest\": 1,\n"
       << "  \"command\": " << scene::json_string(command) << ",\n"
-      << "  \"bookspin\": {\"version\": " << scene::json_string(program_version())
-      << ", \"build_id\": \"sha256:" << program_build_id() << "\"},\n"
+      << "  \"bookspin\": {\"version\": " << scene::json_string(output::program_version())
+      << ", \"build_id\": \"sha256:" << output::program_build_id() << "\"},\n"
       << "  \"options\": {\n"
       << options << "  },\n"
       << "  \"scene\": {\n"
@@ -76,13 +73,6 @@ std::string manifest_head(const std::string& command, const std::string& options
     out << "  \"body_surface\": \"sha256:" << surface << "\",\n";
   out << inputs_json(scene);
   return out.str();
-}
-
-std::string program_version() { return BOOKSPIN_VERSION; }
-
-std::string program_build_id() {
-  static const std::string id = output::sha256_file("/proc/self/exe").value_or("unknown");
-  return id;
 }
 
 fs::path clip_manifest_path(const fs::path& out_dir, const std::string& name) {

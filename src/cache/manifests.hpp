@@ -17,12 +17,6 @@
 
 namespace bookspin::cache {
 
-/// bookspin's version (CMake's project version).
-std::string program_version();
-
-/// SHA-256 of /proc/self/exe, computed once per process; "unknown" if it cannot be read.
-std::string program_build_id();
-
 /// The note of every manifest: the scene file's absolute path and SHA-256. Throws InputError.
 std::string manifest_note(const scene::Scene& scene);
 

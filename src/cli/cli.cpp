@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/run_guarded.hpp"
+#include "output/output_dir.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::cli {
@@ -191,7 +192,7 @@ int run_cli(int argc, char** argv) {
     return report(std::string(e.what()) + " (see bookspin --help)", kExitUsage);
   }
   cap_gl_threads(cli, render.jobs);
-  return run_guarded([&] {
+  const int status = run_guarded([&] {
     if (cli.got_subcommand("simulate")) return simulate_command(simulate);
     if (cli.got_subcommand("render")) return render_command(render);
     if (cli.got_subcommand("info")) return info_command();
@@ -202,6 +203,10 @@ int run_cli(int argc, char** argv) {
     if (cli.got_subcommand("sweep")) return sweep_command(sweep);
     return static_cast<int>(kExitOk);
   });
+  // A run that stops without its outputs (an interrupt, an error) takes back the folders it
+  // made and left empty; their temporaries are gone already.
+  if (status != kExitOk) output::remove_empty_made_directories();
+  return status;
 }
 
 }  // namespace bookspin::cli

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/gallery_page.hpp"
 #include "output/atomic_output.hpp"
+#include "output/output_dir.hpp"
 #include "output/manifest.hpp"
 #include "output/sha256.hpp"
 #include "cache/manifests.hpp"
@@ -121,7 +122,7 @@ int gallery_command(const GalleryOptions& options) {
   std::vector<GalleryEntry> entries;
   for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
 
-  GalleryHeader header{cache::program_version(), cache::program_build_id(), "", machine()};
+  GalleryHeader header{output::program_version(), output::program_build_id(), "", machine()};
   // Up to date: the same page but for its date (output/manifest.hpp).
   const std::string head =
       "  \"manifest\": 1,\n  \"command\": \"gallery\",\n  \"page_sha256\": \"" +
@@ -130,7 +131,7 @@ int gallery_command(const GalleryOptions& options) {
       run_cached({out / "gallery-manifest.json", head, out, options.force, false,
                   [&]() -> std::optional<cache::JobOutputs> {
                     std::error_code ec;
-                    fs::create_directories(out, ec);
+                    output::make_directories(out, ec);
                     if (ec) throw_output_error("cannot create output directory", out, ec.value());
                     header.date = utc_now();
                     write_page(out / "index.html", gallery_html(entries, header));

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "output/diagnostics_csv.hpp"
+#include "output/output_dir.hpp"
 #include "overlay/cairo_canvas.hpp"
 #include "clip/compare_layout.hpp"
 #include "charts/decoration.hpp"
@@ -34,7 +35,7 @@ class TileCsv {
  public:
   explicit TileCsv(const std::filesystem::path& path) : file_(path) {
     std::error_code ec;
-    std::filesystem::create_directories(path.parent_path(), ec);
+    output::make_directories(path.parent_path(), ec);
     out_.open(file_.temp_path(), std::ios::binary);
     if (!out_) throw_output_error("cannot create", path, errno);
     out_ << output::diagnostics_csv_header() << '\n';

@@ -60,16 +60,21 @@ struct SweepResult {
 /// Parses every point's scene first (a bad value is the scene's InputError, naming the key,
 /// before any run), runs them on `jobs` threads, and writes OUT/<scene>-sweep.csv and
 /// OUT/<scene>-sweep.png, or for a shard only OUT/<scene>-sweep.shard-K-of-N.csv (a first
-/// line "# bookspin sweep shard …" recording the scene, the grid size and the ranges, then a
-/// grid_index column before the full CSV's). Returns the paths written. Throws InputError
+/// line "# bookspin sweep shard …" recording the scene name, the SHA-256 of the resolved
+/// scene in canonical form after --set (scene::canonical_json), bookspin's build id, the grid
+/// size, the ranges and the measures, then a grid_index column before the full CSV's;
+/// docs/physics.md §14). Returns the paths written. Throws InputError
 /// for a comparison scene, OutputError when a file cannot be written.
 SweepResult run_sweep(const SweepRequest& request);
 
-/// Reads shard CSVs, checks they are shards of one sweep (same first line but K, same
-/// header) that cover its grid exactly once, and writes OUT/<scene>-sweep.csv and .png,
-/// byte-identical to the one-process sweep's. Throws InputError naming the file: unreadable,
-/// not a shard, mismatched sweep or header, a row of another shard, a duplicate grid point,
-/// a missing one (naming the shard file that should hold it).
+/// Reads shard CSVs (LF or CRLF line endings), checks they are shards of one sweep (same
+/// scene name, scene SHA-256, build, grid, measures and N; same header) that cover its grid
+/// exactly once, and writes OUT/<scene>-sweep.csv and .png, byte-identical to the
+/// one-process sweep's. Throws InputError naming the file (and line): unreadable, not a
+/// shard, a shard line without scene hash or build, another sweep (naming the first field
+/// that differs), a mismatched header, a row of another shard or an index outside the grid, a
+/// cell that is not a finite number (empty is allowed for a measure, not for a varied value),
+/// a duplicate grid point, a missing one (naming the shard file that should hold it).
 std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem::path>& shards,
                                                const std::filesystem::path& out_dir);
 

@@ -1,16 +1,26 @@
 #include "output/atomic_output.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
+
+#include "output/output_dir.hpp"
 
 namespace bookspin::output {
 namespace fs = std::filesystem;
@@ -50,6 +60,91 @@ fs::path sibling_name(const fs::path& final_path, const char* tag) {
 bool exists_no_follow(const fs::path& path) {
   std::error_code ec;
   return fs::exists(fs::symlink_status(path, ec));
+}
+
+// ---- Temporaries of dead runs ------------------------------------------------------
+
+// The pid in `.<name>.tmp-<pid>-<n>` (any name), if `entry` is such a temporary at all.
+std::optional<pid_t> temporary_owner(const std::string& entry) {
+  constexpr std::string_view kTag = ".tmp-";
+  const auto tag = entry.rfind(kTag);
+  if (entry.size() < 2 || entry.front() != '.' || tag == std::string::npos || tag < 2)
+    return std::nullopt;
+  const char* p = entry.data() + tag + kTag.size();
+  const char* end = entry.data() + entry.size();
+  long pid = 0;
+  unsigned long n = 0;
+  auto [after_pid, pid_ec] = std::from_chars(p, end, pid);
+  if (pid_ec != std::errc() || after_pid == p || pid <= 0 || after_pid == end || *after_pid != '-')
+    return std::nullopt;
+  auto [after_n, n_ec] = std::from_chars(after_pid + 1, end, n);
+  if (n_ec != std::errc() || after_n == after_pid + 1 || after_n != end) return std::nullopt;
+  return static_cast<pid_t>(pid);
+}
+
+double seconds(const timespec& t) { return static_cast<double>(t.tv_sec) + 1e-9 * t.tv_nsec; }
+
+// When the process now holding `pid` started (seconds since the epoch, to a clock tick), from
+// /proc/<pid>/stat field 22 (clock ticks after boot); nullopt where that cannot be read.
+std::optional<double> process_start(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto close = stat.rfind(')');  // the command name may hold spaces and parentheses
+  if (close == std::string::npos) return std::nullopt;
+  std::istringstream fields(stat.substr(close + 1));
+  std::string field;
+  for (int i = 3; i <= 22; ++i) fields >> field;  // fields 3 … 22 follow the name
+  if (!fields) return std::nullopt;
+  const double ticks = std::strtod(field.c_str(), nullptr);
+  const long hz = ::sysconf(_SC_CLK_TCK);
+  timespec now_real{}, now_boot{};
+  if (hz <= 0 || ::clock_gettime(CLOCK_REALTIME, &now_real) != 0 ||
+      ::clock_gettime(CLOCK_BOOTTIME, &now_boot) != 0)
+    return std::nullopt;
+  return seconds(now_real) - (seconds(now_boot) - ticks / static_cast<double>(hz));
+}
+
+// A temporary's run is gone when no process has its pid, or when the process that has it now
+// started after the temporary was last written (the pid was reused). The second test keeps a
+// margin of a second for the clocks, in favour of keeping: a live run's output is never taken.
+bool owner_gone(pid_t pid, const fs::path& temporary) {
+  if (::kill(pid, 0) != 0 && errno == ESRCH) return true;
+  struct stat st {};
+  if (::lstat(temporary.c_str(), &st) != 0) return false;
+  const std::optional<double> started = process_start(pid);
+  return started && seconds(st.st_mtim) < *started - 1.0;
+}
+
+// Removes the temporaries `.<name>.tmp-<pid>-<n>` in the folder of `final_path` that runs now
+// gone left behind (killed with SIGKILL, or a crash), so that a later run writing there clears
+// them. Each folder is looked through once per process (a frame dump makes one output per
+// frame in one folder). Errors are ignored: this is tidying, and a temporary it cannot remove
+// harms nothing.
+void remove_dead_temporaries(const fs::path& final_path) noexcept {
+  try {
+    const fs::path dir = final_path.has_parent_path() ? final_path.parent_path() : fs::path(".");
+    static std::mutex mutex;
+    static std::set<fs::path> looked_through;
+    {
+      std::error_code ec;
+      if (!fs::is_directory(dir, ec)) return;  // no folder yet: nothing to clear
+      // As spelled (two spellings of one folder cost a second look, nothing more).
+      const fs::path key = fs::absolute(dir, ec).lexically_normal();
+      if (ec) return;
+      const std::lock_guard lock(mutex);
+      if (!looked_through.insert(key).second) return;
+    }
+    std::error_code ec;
+    fs::directory_iterator it(dir, ec);
+    if (ec) return;
+    for (const auto& entry : it) {
+      const std::optional<pid_t> pid = temporary_owner(entry.path().filename().string());
+      if (!pid || !owner_gone(*pid, entry.path())) continue;
+      std::error_code type_ec;
+      remove_quietly(entry.path(), fs::is_directory(fs::symlink_status(entry.path(), type_ec)));
+    }
+  } catch (...) {
+  }
 }
 
 }  // namespace
@@ -103,7 +198,7 @@ void make_temporary_directory(const fs::path& final_path, const fs::path& temp_p
                        std::strerror(ENOTDIR));
   }
   if (final_path.has_parent_path()) {
-    fs::create_directories(final_path.parent_path(), ec);
+    make_directories(final_path.parent_path(), ec);
     if (ec)
       throw_output_error("cannot create parent of output directory", final_path, ec.message());
   }
@@ -125,6 +220,7 @@ AtomicOutput::AtomicOutput(fs::path final_path, Kind kind)
     : final_path_(normalise(std::move(final_path))),
       temp_path_(sibling_name(final_path_, "tmp")),
       kind_(kind) {
+  remove_dead_temporaries(final_path_);
   if (kind_ == Kind::directory) make_temporary_directory(final_path_, temp_path_);
 }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "output/diagnostics_csv.hpp"
+#include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 
 namespace bookspin::output {
@@ -18,7 +19,7 @@ std::filesystem::path frame_file(const std::filesystem::path& dir, int index) {
 
 std::filesystem::path make_parent(const std::filesystem::path& file) {
   std::error_code ec;
-  std::filesystem::create_directories(file.parent_path(), ec);
+  make_directories(file.parent_path(), ec);
   if (ec) throw_output_error("cannot create directory", file.parent_path(), ec.value());
   return file;
 }

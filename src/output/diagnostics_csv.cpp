@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "output/output_dir.hpp"
+
 namespace bookspin::output {
 
 namespace {
@@ -44,7 +46,7 @@ namespace {
 
 const std::filesystem::path& with_parent(const std::filesystem::path& path) {
   std::error_code ec;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+  if (path.has_parent_path()) make_directories(path.parent_path(), ec);
   if (ec) throw_output_error("cannot create directory", path.parent_path(), ec.value());
   return path;
 }

@@ -7,7 +7,12 @@
 
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
+#include "output/output_dir.hpp"
 #include "output/sha256.hpp"
+
+#ifndef BOOKSPIN_VERSION
+#error "BOOKSPIN_VERSION is set by src/output/CMakeLists.txt"
+#endif
 
 namespace bookspin::output {
 
@@ -107,7 +112,7 @@ void write_manifest(const fs::path& manifest, std::string_view head, std::string
   }
   text << kClose;
   std::error_code ec;
-  fs::create_directories(manifest.parent_path(), ec);
+  make_directories(manifest.parent_path(), ec);
   if (ec) throw_output_error("cannot create", manifest.parent_path(), ec.value());
   write_text_file(manifest, text.str());
 }
@@ -135,6 +140,13 @@ std::optional<std::string> manifest_stale(const fs::path& manifest, std::string_
       return file.string() + " does not match its SHA-256 in the manifest";
   }
   return std::nullopt;
+}
+
+std::string program_version() { return BOOKSPIN_VERSION; }
+
+std::string program_build_id() {
+  static const std::string id = sha256_file("/proc/self/exe").value_or("unknown");
+  return id;
 }
 
 }  // namespace bookspin::output

@@ -46,4 +46,11 @@ std::optional<std::string> manifest_stale(const std::filesystem::path& manifest,
                                           std::string_view head, const std::filesystem::path& root,
                                           bool verify);
 
+/// bookspin's version (CMake's project version).
+std::string program_version();
+
+/// SHA-256 of /proc/self/exe (the running bookspin), computed once per process; "unknown" if
+/// it cannot be read. Every manifest and sweep shard records it.
+std::string program_build_id();
+
 }  // namespace bookspin::output

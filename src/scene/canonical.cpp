@@ -99,7 +99,7 @@ std::string canonical_json(const Scene& s, int indent) {
   m.emplace_back("scene.description", json_string(s.description));
   add_model(m, "model.", s.model);
   // The body as simulated (docs/physics.md §12): body.mass and body.scale are in its moments,
-  // cage and volume; its surface's geometry is hashed by the manifests (pipeline/manifests).
+  // cage and volume; its surface's geometry is hashed by the manifests (cache/manifests).
   m.emplace_back("body.shape", json_string(std::string(physics::to_string(s.body.shape))));
   m.emplace_back("body.mesh", texture(s.body_mesh, s.source));
   m.emplace_back("body.moments", vector3(s.body.moments));

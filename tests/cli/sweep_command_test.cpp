@@ -2,8 +2,11 @@
 // byte, merge errors, a diverging point as a row, bad ranges as one-line errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "support/cli_runner.hpp"
 
@@ -87,10 +90,9 @@ TEST(SweepCommand, MergeRejectsAMissingShardOrADuplicateNamingTheFile) {
                    shard(parts, 2, 3) + " " + shard(parts, 1, 3) + " -o " + out.string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("shard 1 of 3 is also given"), std::string::npos) << r.output;
-  // A row copied into another shard is a duplicate grid point, named with its line.
+  // A row copied into another shard is not a point of that shard, named with its line.
   {
     const auto rows = lines_of(read_file(shard(parts, 0, 3)));
-    std::ofstream(parts / "copy.csv") << rows[0] << '\n' << rows[1] << '\n';
     std::ofstream(shard(parts, 1, 3), std::ios::app) << rows[2] << '\n';
   }
   r = run_bookspin("sweep --merge " + shard(parts, 0, 3) + " " + shard(parts, 1, 3) + " " +
@@ -111,6 +113,140 @@ TEST(SweepCommand, MergeRejectsAMissingShardOrADuplicateNamingTheFile) {
   EXPECT_NE(r.output.find("edited.csv:2: header differs"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(out / "exact-unstable-x-sweep.csv"));
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+/// `lines` joined with `eol` after each.
+std::string joined(const std::vector<std::string>& lines, const std::string& eol = "\n") {
+  std::string text;
+  for (const auto& line : lines) text += line + eol;
+  return text;
+}
+
+/// Merges shards 0, 1, 2 of `dir` into `dir`/merged and expects exit 2 with one line that
+/// names `culprit` and says `why`, and no merged output.
+void expect_refused(const std::filesystem::path& dir, const std::string& culprit,
+                    const std::string& why) {
+  const auto out = dir / "merged";
+  const CliResult r = run_bookspin("sweep --merge " + shard(dir, 0, 3) + " " + shard(dir, 1, 3) +
+                                   " " + shard(dir, 2, 3) + " -o " + out.string());
+  EXPECT_EQ(r.status, 2) << why << "\n" << r.output;
+  EXPECT_EQ(r.output.rfind("bookspin: error: " + culprit, 0), 0u) << why << "\n" << r.output;
+  EXPECT_NE(r.output.find(why), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out / "exact-unstable-x-sweep.csv"));
+}
+
+/// Replaces shard K of 3 in `dir` by `lines`.
+void rewrite_shard(const std::filesystem::path& dir, int k, const std::vector<std::string>& lines) {
+  std::ofstream(shard(dir, k, 3), std::ios::binary | std::ios::trunc) << joined(lines);
+}
+
+// A shard records its resolved scene (after --set), its build, grid and measures; --merge
+// refuses a shard whose record differs from the first's, and a cell that is not a number.
+TEST(SweepCommand, MergeRefusesShardsOfAnotherSceneSetBuildGridOrMeasures) {
+  const auto dir = fresh_dir("sweep_merge_mixed");
+  const auto redo_shard_1 = [&](const std::string& args) {
+    const CliResult r = run_bookspin(args + " -j 1 --shard 1/3 -o " + dir.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+  };
+  write_shards(dir);
+  const std::string good_1 = read_file(shard(dir, 1, 3));
+  // Another --set.
+  redo_shard_1(kSweep + " --set time.dt=0.02");
+  expect_refused(dir, shard(dir, 1, 3), "the resolved scene differs");
+  // The same scene name, edited: a book of mass 80 instead of 8.
+  {
+    const auto edited_dir = dir / "edited";
+    std::filesystem::create_directories(edited_dir);
+    std::string text = read_file(scene_path("exact-unstable-x"));
+    const auto at = text.find("mass = 8.0");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 10, "mass = 80.0");
+    std::ofstream(edited_dir / "exact-unstable-x.toml") << text;
+    std::string edited_sweep = kSweep;
+    edited_sweep.replace(edited_sweep.find(scene_path("exact-unstable-x")),
+                         scene_path("exact-unstable-x").size(),
+                         (edited_dir / "exact-unstable-x.toml").string());
+    redo_shard_1(edited_sweep);
+    expect_refused(dir, shard(dir, 1, 3), "the resolved scene differs");
+  }
+  // Another build of bookspin (its id edited in the shard line).
+  {
+    auto lines = lines_of(good_1);
+    const auto at = lines[0].find(" build=");
+    ASSERT_NE(at, std::string::npos) << lines[0];
+    lines[0][at + 7] = lines[0][at + 7] == '0' ? '1' : '0';
+    rewrite_shard(dir, 1, lines);
+    expect_refused(dir, shard(dir, 1, 3), "made by another bookspin build");
+  }
+  // Other measures; another grid.
+  {
+    std::string other = kSweep;
+    other.replace(other.find(",diverged_at"), 12, "");
+    redo_shard_1(other);
+    expect_refused(dir, shard(dir, 1, 3), "other measures");
+    std::string grid = kSweep;
+    grid.replace(grid.find("1e-1:7:log"), 10, "1e-2:7:log");
+    redo_shard_1(grid);
+    expect_refused(dir, shard(dir, 1, 3), "another grid");
+  }
+  // Not a number where a number belongs: a measure, and a varied value (never empty).
+  const auto good = lines_of(good_1);
+  auto cells_of_row = [](const std::string& row) {
+    std::vector<std::string> cells;
+    std::stringstream in(row);
+    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+    if (!row.empty() && row.back() == ',') cells.emplace_back();
+    return cells;
+  };
+  auto join_cells = [](const std::vector<std::string>& cells) {
+    std::string row;
+    for (std::size_t i = 0; i < cells.size(); ++i) row += (i ? "," : "") + cells[i];
+    return row;
+  };
+  for (const auto& [column, value] : std::vector<std::pair<int, std::string>>{
+           {2, "abc"}, {2, "1.5x"}, {2, "nan"}, {2, "inf"}, {2, " 1"}, {1, ""}, {3, "1e999"}}) {
+    auto lines = good;
+    auto cells = cells_of_row(lines[2]);
+    ASSERT_GT(cells.size(), 4u) << lines[2];
+    cells[column] = value;
+    lines[2] = join_cells(cells);
+    rewrite_shard(dir, 1, lines);
+    expect_refused(dir, shard(dir, 1, 3) + ":3: ", "'" + value + "' is not a number");
+  }
+  // A grid point twice in its own shard; an index equal to the point count (7 ≡ 1 mod 3).
+  {
+    auto lines = good;
+    lines.push_back(lines[2]);
+    rewrite_shard(dir, 1, lines);
+    expect_refused(dir, shard(dir, 1, 3) + ":5: ", "grid point 1 is duplicated (also at " +
+                                                       shard(dir, 1, 3) + ":3)");
+    lines = good;
+    auto cells = cells_of_row(lines[2]);
+    cells[0] = "7";
+    lines.push_back(join_cells(cells));
+    rewrite_shard(dir, 1, lines);
+    expect_refused(dir, shard(dir, 1, 3) + ":5: ", "grid_index '7' is not a point of shard 1");
+  }
+}
+
+// Shards that went through CRLF line endings merge to the same bytes as one process.
+TEST(SweepCommand, ShardsWithCrlfLineEndingsMergeToTheSameBytes) {
+  const auto one = fresh_dir("sweep_crlf_one");
+  const auto parts = fresh_dir("sweep_crlf_parts");
+  ASSERT_EQ(run_bookspin(kSweep + " -j 2 -o " + one.string()).status, 0);
+  write_shards(parts);
+  for (int k = 0; k < 3; ++k) {
+    const std::string crlf = joined(lines_of(read_file(shard(parts, k, 3))), "\r\n");
+    std::ofstream(shard(parts, k, 3), std::ios::binary | std::ios::trunc) << crlf;
+  }
+  ASSERT_NE(read_file(shard(parts, 0, 3)).find("\r\n"), std::string::npos);
+  const CliResult r = run_bookspin("sweep --merge " + shard(parts, 0, 3) + " " +
+                                   shard(parts, 1, 3) + " " + shard(parts, 2, 3) + " -o " +
+                                   (parts / "merged").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_file(parts / "merged" / "exact-unstable-x-sweep.csv"),
+            read_file(one / "exact-unstable-x-sweep.csv"));
 }
 
 TEST(SweepCommand, ADivergingPointIsARowNotACrash) {

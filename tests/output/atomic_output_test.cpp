@@ -2,9 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <string>
 
+#include "output/output_dir.hpp"
 #include "scratch_dir.hpp"
 
 namespace bookspin::output {
@@ -144,6 +150,57 @@ TEST(AtomicTextFile, UnwritableFolderIsAnOutputErrorNamingThePath) {
   } catch (const OutputError& e) {
     EXPECT_NE(std::string(e.what()).find("missing-folder/rows.csv"), std::string::npos) << e.what();
   }
+}
+
+std::vector<std::string> kept_sorted(std::vector<std::string> names) {
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// A pid no process has: a child that has exited and been reaped.
+pid_t dead_pid() {
+  const pid_t pid = fork();
+  if (pid == 0) _exit(0);
+  waitpid(pid, nullptr, 0);
+  return pid;
+}
+
+// The first AtomicOutput in a folder removes the temporaries there whose run is gone: the
+// pid is dead, or alive but started after the temporary was last written (reused). A live
+// run's temporary, an aside copy (.old-) and names that only look alike stay.
+TEST(AtomicOutput, RemovesTheTemporariesOfDeadRunsInItsFolder) {
+  ScratchDir dir;
+  const std::string dead = std::to_string(dead_pid()), live = std::to_string(getpid());
+  write_text(dir / (".clip.mp4.tmp-" + dead + "-0"), "x");
+  write_text(dir / (".other.png.tmp-" + dead + "-4"), "x");
+  fs::create_directories(dir / (".clip.mp4.tmp-" + dead + "-1") / "inner");
+  write_text(dir / (".clip.mp4.tmp-" + live + "-2"), "x");
+  fs::last_write_time(dir / (".clip.mp4.tmp-" + live + "-2"),
+                      fs::file_time_type::clock::now() - std::chrono::hours(24 * 365 * 20));
+  const std::vector<std::string> kept = {".clip.mp4.tmp-" + live + "-3", ".clip.mp4.old-" + dead + "-0",
+                                         ".clip.mp4.tmp-x-0", ".clip.mp4.tmp-" + dead,
+                                         "clip.mp4.tmp-" + dead + "-0"};
+  for (const auto& name : kept) write_text(dir / name, "x");
+  AtomicFile file(dir / "clip.mp4");
+  EXPECT_EQ(dir.entries(), kept_sorted(kept));
+}
+
+// make_directories notes only what it made; remove_empty_made_directories takes back the
+// empty ones, deepest first, and leaves a folder that holds something.
+TEST(OutputDir, RemovesOnlyTheEmptyFoldersItMade) {
+  ScratchDir dir;
+  fs::create_directories(dir / "there");
+  std::error_code ec;
+  make_directories(dir / "there" / "a" / "b" / "c", ec);
+  ASSERT_FALSE(ec);
+  make_directories(dir / "x" / "y", ec);
+  ASSERT_FALSE(ec);
+  write_text(dir / "x" / "kept.txt", "x");
+  remove_empty_made_directories();
+  EXPECT_TRUE(fs::is_directory(dir / "there"));  // not made here
+  EXPECT_FALSE(fs::exists(dir / "there" / "a"));
+  EXPECT_TRUE(fs::exists(dir / "x" / "kept.txt"));
+  EXPECT_FALSE(fs::exists(dir / "x" / "y"));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/tools/roots.hpp>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -285,6 +286,27 @@ TEST(ExactSolution, PrincipalAxisSpinIsSteady) {
   EXPECT_EQ(plane.motion_case(), ExactCase::steady);
 }
 
+// ω in the plane of two equal moments is an eigenvector of I whatever the order of the
+// moments along x, y, z: ω stays ω0 (docs/physics.md §8, steady).
+TEST(ExactSolution, SymmetricBodyInUnsortedOrderSpinsSteadilyInItsEqualPlane) {
+  const struct {
+    Vector3d moments, omega0;
+  } cases[] = {
+      {{2, 1, 2}, {0.3, 0.0, 0.7}}, {{2, 2, 1}, {-0.4, 0.6, 0.0}}, {{1, 2, 1}, {0.5, 0.0, -0.2}},
+      {{3, 3, 5}, {0.2, -0.1, 0.0}}, {{5, 3, 3}, {0.0, 0.25, 0.5}}, {{3, 5, 3}, {0.1, 0.0, 0.9}},
+  };
+  for (const auto& c : cases) {
+    const ExactRotation exact(c.moments, c.omega0);
+    EXPECT_EQ(exact.motion_case(), ExactCase::steady) << c.moments.transpose();
+    for (double t : {0.0, 1.5, 40.0}) {
+      EXPECT_EQ(exact.omega_body(t), c.omega0) << c.moments.transpose() << " t " << t;
+      const Matrix3d expected =
+          Eigen::AngleAxisd(c.omega0.norm() * t, c.omega0.normalized()).toRotationMatrix();
+      EXPECT_LE((exact.orientation(t) - expected).norm(), 1e-13) << c.moments.transpose();
+    }
+  }
+}
+
 // Axisymmetric body I1 = I2: ω precesses about axis 3 at Ω = (I3 − I1) ω3 / I1 (Landau §33).
 TEST(ExactSolution, AxisymmetricBodyPrecessesAtTheKnownRate) {
   const double I1 = 1.0, I3 = 2.5, w3 = 0.7;
@@ -319,6 +341,40 @@ TEST(ExactSolution, SeparatrixApproachesTheIntermediateAxis) {
     const Matrix3d reference = fine[c] + (fine[c] - coarse[c]) / 15.0;
     EXPECT_LE((exact.orientation(checkpoints[c] * h) - reference).norm(), 1e-10);
   }
+}
+
+// On the separatrix cn and dn take their signs from ω0 each: every sign pattern of a
+// separatrix start, moments in any order, gives ω(0) = ω0 and satisfies Euler's equations.
+// I = (1, 4, 6): L² = 2E·I2 when I1(I2 − I1)ω1² = I3(I3 − I2)ω3², i.e. ω1 = ±2ω3.
+TEST(ExactSolution, SeparatrixStartOfEverySignGivesOmegaZero) {
+  const Vector3d sorted(1.0, 4.0, 6.0);
+  const std::array<std::array<int, 3>, 5> orders{{{0, 1, 2}, {2, 0, 1}, {1, 2, 0}, {1, 0, 2}, {0, 2, 1}}};
+  int separatrices = 0;
+  for (const auto& order : orders)
+    for (double s1 : {1.0, -1.0})
+      for (double s3 : {1.0, -1.0})
+        for (double w2 : {0.0, 0.5, -0.5}) {
+          const Vector3d w_sorted(2.0 * s1, w2, 1.0 * s3);
+          Vector3d moments, w0;  // body axis order[i] carries sorted axis i
+          for (int i = 0; i < 3; ++i) {
+            moments[order[i]] = sorted[i];
+            w0[order[i]] = w_sorted[i];
+          }
+          const ExactRotation exact(moments, w0);
+          if (exact.motion_case() != ExactCase::separatrix) {
+            ADD_FAILURE() << "not on the separatrix: " << w0.transpose();
+            continue;
+          }
+          ++separatrices;
+          EXPECT_LE((exact.omega_body(0.0) - w0).norm(), 1e-14 * w0.norm())
+              << "moments " << moments.transpose() << " omega0 " << w0.transpose();
+          for (double t : {0.3, 2.0}) {
+            const Vector3d w = exact.omega_body(t), w_dot = exact.omega_dot_body(t);
+            EXPECT_LE((moments.cwiseProduct(w_dot) - moments.cwiseProduct(w).cross(w)).norm(),
+                      1e-13);
+          }
+        }
+  EXPECT_EQ(separatrices, 60);
 }
 
 TEST(ExactSolution, RejectsInvalidInput) {

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
+#include <functional>
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 
@@ -108,12 +111,53 @@ TEST(Polhode, RejectsBadMomentsAndSettings) {
 
 TEST(Polhode, SymmetricBodyKeepsOnlyTheFamilyAroundItsOddAxis) {
   const Eigen::Vector3d moments(2.0, 2.0, 5.0);  // I1 = I2 < I3: circles about z
-  for (const auto& c : polhode_family(moments)) {
+  const int levels = 4;
+  int separatrices = 0, around_z = 0;
+  for (const auto& c : polhode_family(moments, levels)) {
+    ASSERT_GT(c.points.size(), 50u);
     if (c.separatrix) {
+      ++separatrices;
       for (const auto& u : c.points) EXPECT_NEAR(u.z(), 0.0, 1e-12);  // the equator
     } else {
+      ++around_z;
       EXPECT_EQ(c.pole_axis, 2);
       for (const auto& u : c.points) EXPECT_NEAR(u.z(), c.points.front().z(), 1e-12);
+    }
+  }
+  EXPECT_EQ(around_z, 2 * levels);  // every level, around +z and −z; none around x or y
+  EXPECT_EQ(separatrices, 2);       // the equator, drawn twice
+}
+
+// The energies are the documented levels (polhode.hpp, docs/physics.md §15): with
+// f = (j + 0.5)/levels, 2E/|L|² = 1/I_mid + f (1/I_min − 1/I_mid) around the smallest axis
+// and 1/I_mid − f (1/I_mid − 1/I_max) around the largest, each around +axis and −axis.
+TEST(Polhode, EnergiesAreTheDocumentedLevels) {
+  for (const Eigen::Vector3d& moments : {kBookMoments, Eigen::Vector3d(3.0, 1.0, 2.0)}) {
+    for (int levels : {1, 4, 7}) {
+      std::vector<double> smallest_axis[2], largest_axis[2];
+      const auto order = principal_order(moments);
+      const double inv_min = 1.0 / moments[order[0]], inv_mid = 1.0 / moments[order[1]],
+                   inv_max = 1.0 / moments[order[2]];
+      for (const auto& c : polhode_family(moments, levels)) {
+        if (c.separatrix) continue;
+        const int side = c.points.front()[c.pole_axis] > 0.0 ? 0 : 1;
+        if (c.pole_axis == order[0]) smallest_axis[side].push_back(c.energy_ratio);
+        else if (c.pole_axis == order[2]) largest_axis[side].push_back(c.energy_ratio);
+        else ADD_FAILURE() << "a polhode around the intermediate axis";
+      }
+      for (int side = 0; side < 2; ++side) {
+        ASSERT_EQ(smallest_axis[side].size(), static_cast<std::size_t>(levels));
+        ASSERT_EQ(largest_axis[side].size(), static_cast<std::size_t>(levels));
+        std::sort(smallest_axis[side].begin(), smallest_axis[side].end());
+        std::sort(largest_axis[side].begin(), largest_axis[side].end(), std::greater<>());
+        for (int j = 0; j < levels; ++j) {
+          const double f = (j + 0.5) / levels;
+          EXPECT_NEAR(smallest_axis[side][j], inv_mid + f * (inv_min - inv_mid), 1e-15 * inv_min)
+              << "levels " << levels << " j " << j;
+          EXPECT_NEAR(largest_axis[side][j], inv_mid - f * (inv_mid - inv_max), 1e-15 * inv_min)
+              << "levels " << levels << " j " << j;
+        }
+      }
     }
   }
 }
