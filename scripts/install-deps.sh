@@ -8,7 +8,7 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   libssl-dev libpng-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
   libassimp-dev
-  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev
   clang libclang-rt-14-dev
   chromium chromium-driver python3-selenium

@@ -37,7 +37,8 @@ void add_freshness_flags(CLI::App* cmd, bool& force, bool& verify, const std::st
 void add_render(CLI::App& cli, RenderArgs& options) {
   CLI::App* cmd = cli.add_subcommand(
       "render",
-      "Render a scene to OUT/<scene>.mp4, OUT/<scene>/frames/ and OUT/<scene>/diagnostics.csv");
+      "Render a scene to OUT/<scene>.mp4 (and/or .webm, .gif), OUT/<scene>/frames/ and "
+      "OUT/<scene>/diagnostics.csv");
   cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
   cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
@@ -52,6 +53,9 @@ void add_render(CLI::App& cli, RenderArgs& options) {
                   "zlib level of the PNG frames, 0 (fastest) … 9 (smallest); overrides "
                   "render.png_compression")
       ->check(CLI::Range(0, 9));
+  cmd->add_option("--format", options.formats,
+                  "Videos to write, comma-separated: mp4 (H.264), webm (VP9), gif (640 px, "
+                  "15 frames/s by default); overrides render.formats (default mp4)");
   add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/manifest.json");
 }
 

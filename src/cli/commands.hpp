@@ -1,6 +1,7 @@
 #pragma once
 // The bookspin subcommands. Each returns the process exit status.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,13 @@ struct RenderArgs {
   int png_compression = -1;  ///< zlib level 0–9 for the frames; −1 = render.png_compression
   bool force = false;        ///< render even when OUT/<scene>/manifest.json says up to date
   bool verify = false;       ///< up-to-date check hashes every output (else sizes only)
+  /// `--format mp4,webm,gif` as given (overrides render.formats); empty optional: not given.
+  std::optional<std::string> formats;
 };
+
+/// The video formats of `--format LIST` (comma-separated, blanks around names ignored).
+/// Throws InputError "--format: …" for an empty list, an unknown or a repeated name.
+std::vector<std::string> parse_format_list(const std::string& list);
 
 /// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv,
 /// then writes out/<name>/manifest.json (output/manifest.hpp). Prints "up to date: <name>"

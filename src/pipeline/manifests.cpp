@@ -107,7 +107,8 @@ std::string clip_manifest_head(const ClipRequest& request) {
 
 std::vector<std::string> clip_outputs(const ClipRequest& request) {
   const scene::Scene& scene = request.scene;
-  std::vector<std::string> files{scene.name + ".mp4"};
+  std::vector<std::string> files;
+  for (const std::string& format : scene.render.formats) files.push_back(scene.name + "." + format);
   if (request.write_png) {
     for (int i = 0; i < scene.frames; ++i) {
       char name[32];
