@@ -195,7 +195,7 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
 }  // namespace
 
 std::string video_formats_problem(const std::vector<std::string>& formats) {
-  const std::string expected = " (expected mp4, webm or gif, separated by commas)";
+  const std::string expected = " (expected mp4, webm or gif)";
   if (formats.empty()) return "no video format given" + expected;
   for (std::size_t i = 0; i < formats.size(); ++i) {
     if (std::find(kVideoFormats.begin(), kVideoFormats.end(), formats[i]) == kVideoFormats.end())
