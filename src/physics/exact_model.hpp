@@ -29,7 +29,7 @@ class ExactModel final : public Simulator {
   bool finite() const override;
 
   const ExactRotation& rotation() const { return *rotation_; }
-  const Eigen::Matrix3d& orientation() const { return R_; }  ///< R(t), body→world
+  Eigen::Matrix3d orientation() const override { return R_; }  ///< R(t), body→world
   double time() const { return t_; }
 
  private:

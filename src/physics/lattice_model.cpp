@@ -186,7 +186,7 @@ Eigen::Vector3d LatticeModel::center_of_mass() const {
   return c;
 }
 
-Eigen::Matrix3d LatticeModel::rotation() const {
+Eigen::Matrix3d LatticeModel::orientation() const {
   return best_fit_rotation(Eigen::Matrix3Xd(x_), lattice_.rest, lattice_.mass);
 }
 
@@ -196,7 +196,7 @@ Corners LatticeModel::corners() const {
     for (int c = 0; c < 8; ++c) out.col(c) = x_.col(cage_particle_[c]);
     return out;
   }
-  const Eigen::Matrix3d R = rotation();
+  const Eigen::Matrix3d R = orientation();
   const Eigen::Vector3d c = center_of_mass();
   for (int corner = 0; corner < 8; ++corner)
     out.col(corner) = R * (cage_rest_.col(corner) - lattice_.center_of_mass) + c;
@@ -220,7 +220,7 @@ Diagnostics LatticeModel::diagnostics() const {
   Diagnostics d;
   d.t = t_;
   d.L = angular_momentum();
-  const Eigen::Matrix3d R = rotation();
+  const Eigen::Matrix3d R = orientation();
   // docs/physics.md §13: the rest inertia of the lattice, not the strained one.
   d.omega_body = inertia_inverse_ * (R.transpose() * d.L);
   d.energy_kinetic = kinetic_energy();
@@ -243,7 +243,7 @@ Diagnostics LatticeModel::diagnostics() const {
 Eigen::Vector3d LatticeModel::cos_principal_L() const {
   const std::array<int, 3> order = principal_order(moments_);
   const Eigen::Vector3d L = angular_momentum();
-  const Eigen::Matrix3d R = rotation();
+  const Eigen::Matrix3d R = orientation();
   Eigen::Vector3d out;
   for (int i = 0; i < 3; ++i) out[i] = R.col(order[i]).dot(L) / L.norm();
   return out;

@@ -38,6 +38,10 @@ class LatticeModel final : public Simulator {
   /// one-cell book), those particles; otherwise the cage moved rigidly with the lattice:
   /// R (cage − c0) + c, R the mass-weighted best-fit rotation (Kabsch), c the centre of mass.
   Corners corners() const override;
+  /// R: the mass-weighted best-fit rotation of the particles onto the lattice at rest.
+  Eigen::Matrix3d orientation() const override;
+  /// c = Σ m x / M, world.
+  Eigen::Vector3d center_of_mass() const override;
   /// t; L = Σ m (x − c) × (v − v̄) (world); ω_body = I_lattice⁻¹ Rᵀ L with I_lattice the
   /// lattice's rest inertia (body frame) and R the best-fit rotation; energies; cos_axis_L
   /// of R's columns; strain_max over every spring; orthogonality_error 0; |q| = 1.
@@ -62,10 +66,8 @@ class LatticeModel final : public Simulator {
   double spring_energy() const;
   double kinetic_energy() const;
   void normalize(double spring_energy_at_start);
-  Eigen::Vector3d center_of_mass() const;
   /// Σ m (x − c) × (v − v̄), world.
   Eigen::Vector3d angular_momentum() const;
-  Eigen::Matrix3d rotation() const;
 
   Lattice lattice_;
   Eigen::Vector3d moments_;

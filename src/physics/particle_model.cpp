@@ -167,6 +167,11 @@ void ParticleModel::normalize(double spring_energy_at_start) {
   x_.colwise() -= x_.rowwise().mean();
 }
 
+Eigen::Matrix3d ParticleModel::orientation() const {
+  const Corners x = x_;
+  return best_fit_rotation(x.colwise() - x.rowwise().mean(), rest_);
+}
+
 Diagnostics ParticleModel::diagnostics() const {
   Diagnostics d;
   d.t = t_;

@@ -24,6 +24,10 @@ class ParticleModel final : public Simulator {
   void reset(const InitialState& initial) override;
   void step(double dt) override;
   Corners corners() const override { return x_; }
+  /// Best-fit rotation of the corners (about their mean) onto the corners at rest.
+  Eigen::Matrix3d orientation() const override;
+  /// The corners' mean (equal masses), world.
+  Eigen::Vector3d center_of_mass() const override { return x_.rowwise().mean(); }
   Diagnostics diagnostics() const override;
   bool finite() const override;
 

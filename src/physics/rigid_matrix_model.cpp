@@ -20,9 +20,11 @@ bool RigidMatrixModel::splits() const {
          config_.integrator == Integrator::splitting4;
 }
 
-Eigen::Matrix3d RigidMatrixModel::orientation() const {
+Eigen::Matrix3d RigidMatrixModel::matrix() const {
   return splits() ? Eigen::Matrix3d(R_ * splitting_.pending_increment().toRotationMatrix()) : R_;
 }
+
+Eigen::Matrix3d RigidMatrixModel::orientation() const { return nearest_rotation(matrix()); }
 
 Eigen::Vector3d RigidMatrixModel::omega_world(const Eigen::Matrix3d& R) const {
   return R * (inverse_moments_.asDiagonal() * (R.transpose() * L_));
@@ -74,10 +76,10 @@ void RigidMatrixModel::step(double dt) {
   t_ += dt;
 }
 
-Corners RigidMatrixModel::corners() const { return orientation() * cage_corners_; }
+Corners RigidMatrixModel::corners() const { return matrix() * cage_corners_; }
 
 Diagnostics RigidMatrixModel::diagnostics() const {
-  return rigid_diagnostics(body_, orientation(), L_, t_);
+  return rigid_diagnostics(body_, matrix(), L_, t_);
 }
 
 bool RigidMatrixModel::finite() const { return failure_.empty() && is_sane(R_); }

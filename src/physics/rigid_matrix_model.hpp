@@ -27,7 +27,9 @@ class RigidMatrixModel final : public RigidBody {
 
   /// R at the last step's end (for the splittings: the lagging R turned by the pending
   /// outer half-flow, see SplittingStepper).
-  Eigen::Matrix3d orientation() const;
+  /// The model's R (3×3, body→world) as integrated: not a rotation without normalization.
+  Eigen::Matrix3d matrix() const;
+  Eigen::Matrix3d orientation() const override;
 
  private:
   Eigen::Vector3d omega_world(const Eigen::Matrix3d& R) const;

@@ -21,8 +21,12 @@ bool RigidQuaternionModel::splits() const {
          config_.integrator == Integrator::splitting4;
 }
 
-Eigen::Quaterniond RigidQuaternionModel::orientation() const {
+Eigen::Quaterniond RigidQuaternionModel::quaternion() const {
   return splits() ? q_ * splitting_.pending_increment() : q_;
+}
+
+Eigen::Matrix3d RigidQuaternionModel::orientation() const {
+  return quaternion().normalized().toRotationMatrix();
 }
 
 // q̇ = ½ (0, ω) ⊗ q with world-frame ω (Baraff 1997, eq. 4-2), coefficients (x, y, z, w).
@@ -150,11 +154,11 @@ void RigidQuaternionModel::step(double dt) {
 }
 
 Corners RigidQuaternionModel::corners() const {
-  return orientation().toRotationMatrix() * cage_corners_;
+  return quaternion().toRotationMatrix() * cage_corners_;
 }
 
 Diagnostics RigidQuaternionModel::diagnostics() const {
-  const Eigen::Quaterniond q = orientation();
+  const Eigen::Quaterniond q = quaternion();
   Diagnostics d = rigid_diagnostics(body_, q.toRotationMatrix(), L_, t_);
   d.quaternion_norm = q.norm();
   return d;

@@ -29,7 +29,9 @@ class RigidQuaternionModel final : public RigidBody {
 
   /// q at the last step's end (for the splittings: the lagging q turned by the pending
   /// outer half-flow, see SplittingStepper).
-  Eigen::Quaterniond orientation() const;
+  /// The model's q (body→world) as integrated: not of unit length without normalization.
+  Eigen::Quaterniond quaternion() const;
+  Eigen::Matrix3d orientation() const override;
 
  private:
   Eigen::Vector4d derivative(const Eigen::Vector4d& q_coeffs) const;

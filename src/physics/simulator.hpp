@@ -78,6 +78,14 @@ class Simulator {
   virtual void step(double dt) = 0;
   /// World-space corners (3×8).
   virtual Corners corners() const = 0;
+  /// The body's orientation R (3×3, body→world, a rotation to round-off): the nearest
+  /// rotation to the rigid matrix model's R (docs/physics.md §3), the normalized quaternion's
+  /// matrix, the exact R(t), and for the models that deform (particle, lattice) the best-fit
+  /// rotation of their particles onto the body at rest (Kabsch; docs/physics.md §13).
+  virtual Eigen::Matrix3d orientation() const = 0;
+  /// The centre of mass (world, length units): the origin for the rigid and exact models, the
+  /// particles' mass-weighted mean for the particle and lattice models.
+  virtual Eigen::Vector3d center_of_mass() const { return Eigen::Vector3d::Zero(); }
   /// Diagnostics of the current state.
   virtual Diagnostics diagnostics() const = 0;
   /// True while every state variable is finite and not absurdly large, and the last step

@@ -17,9 +17,6 @@
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "physics/exact_model.hpp"
-#include "physics/polar.hpp"
-#include "physics/rigid_matrix_model.hpp"
-#include "physics/rigid_quaternion_model.hpp"
 #include "pipeline/panel.hpp"
 
 namespace bookspin::pipeline {
@@ -73,19 +70,6 @@ std::optional<double> exact_first_flip(const physics::ExactRotation& exact, int 
     t0 = t1;
   }
   return std::nullopt;
-}
-
-/// The model's rotation body→world (see measure_run).
-Eigen::Matrix3d model_rotation(const physics::Simulator& sim, const physics::Book& book) {
-  if (const auto* m = dynamic_cast<const physics::RigidMatrixModel*>(&sim))
-    return physics::nearest_rotation(m->orientation());
-  if (const auto* q = dynamic_cast<const physics::RigidQuaternionModel*>(&sim))
-    return q->orientation().normalized().toRotationMatrix();
-  if (const auto* e = dynamic_cast<const physics::ExactModel*>(&sim)) return e->orientation();
-  const physics::Corners x = sim.corners();
-  const Eigen::Vector3d centre = x.rowwise().mean();
-  const Eigen::Matrix3d h = (x.colwise() - centre) * book.body_corners().transpose();
-  return physics::nearest_rotation(h);
 }
 
 /// Rotation angle of a rotation matrix, accurate near 0 (2·atan2(|v|, |w|) of its quaternion).
@@ -307,7 +291,7 @@ PointMeasures measure_run(const scene::Scene& scene) {
   if (!result.diverged_at) {
     const Eigen::Matrix3d r_exact = exact.orientation(static_cast<double>(total) * scene.dt);
     result.orientation_error =
-        rotation_angle(r_exact.transpose() * model_rotation(*sim, scene.book));
+        rotation_angle(r_exact.transpose() * sim->orientation());
   }
   return result;
 }

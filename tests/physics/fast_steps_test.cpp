@@ -78,7 +78,7 @@ TEST(FastSteps, UnnormalizedQuaternionEulerIsBitForBitTheEigenExpression) {
     q = reference_quaternion_step(q, c.L, c.inverse_moments, c.dt, false);
     model.step(c.dt);
   }
-  EXPECT_EQ(model.orientation().coeffs(), q.coeffs());
+  EXPECT_EQ(model.quaternion().coeffs(), q.coeffs());
 }
 
 // Normalized, it takes the body-frame form, the same step for a unit quaternion: every
@@ -90,10 +90,10 @@ TEST(FastSteps, NormalizedQuaternionEulerIsTheEigenExpressionToRoundOff) {
   double worst = 0.0;
   for (int step = 0; step < 20000; ++step) {
     const Eigen::Quaterniond expected =
-        reference_quaternion_step(model.orientation(), c.L, c.inverse_moments, c.dt, true);
+        reference_quaternion_step(model.quaternion(), c.L, c.inverse_moments, c.dt, true);
     model.step(c.dt);
     worst =
-        std::max(worst, (model.orientation().coeffs() - expected.coeffs()).cwiseAbs().maxCoeff());
+        std::max(worst, (model.quaternion().coeffs() - expected.coeffs()).cwiseAbs().maxCoeff());
   }
   EXPECT_LT(worst, 1e-15);
 }
