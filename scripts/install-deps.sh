@@ -7,7 +7,7 @@ packages=(
   libeigen3-dev libtomlplusplus-dev libcli11-dev libboost-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   libssl-dev libpng-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
-  libassimp-dev
+  libassimp-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev
   clang libclang-rt-14-dev

@@ -59,6 +59,20 @@ void add_render(CLI::App& cli, RenderArgs& options) {
   add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/manifest.json");
 }
 
+void add_export(CLI::App& cli, ExportOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "export", "Export a scene's body and its motion for other programs: --gltf writes "
+                "OUT/<scene>.glb (glTF 2.0 binary, one animation, keyframes at render.fps)");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML), one model (no [[compare]])")
+      ->required();
+  cmd->add_flag("--gltf", options.gltf, "Write OUT/<scene>.glb")->required();
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--frames", options.frames,
+                  "Export only the first N frames (overrides time.frames)")
+      ->check(CLI::Range(1, scene::kMaxFrames));
+}
+
 void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
       "accuracy", "Compare every model and integrator with the exact solution over a range of dt");
@@ -173,6 +187,8 @@ int run_cli(int argc, char** argv) {
   add_simulate(cli, simulate);
   RenderArgs render;
   add_render(cli, render);
+  ExportOptions export_options;
+  add_export(cli, export_options);
   AccuracyOptions accuracy;
   add_accuracy(cli, accuracy);
   PlotOptions plot;
@@ -198,6 +214,7 @@ int run_cli(int argc, char** argv) {
   return run_guarded([&] {
     if (cli.got_subcommand("simulate")) return simulate_command(simulate);
     if (cli.got_subcommand("render")) return render_command(render);
+    if (cli.got_subcommand("export")) return export_command(export_options);
     if (cli.got_subcommand("info")) return info_command();
     if (cli.got_subcommand("accuracy")) return accuracy_command(accuracy);
     if (cli.got_subcommand("plot")) return plot_command(plot);

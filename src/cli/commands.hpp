@@ -115,6 +115,17 @@ struct SweepOptions {
 /// OUT/<scene>-sweep.csv and .png, or one shard's CSV, or merges shard CSVs.
 int sweep_command(const SweepOptions& options);
 
+struct ExportOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_dir = "out";
+  int frames = 0;     ///< > 0 overrides time.frames
+  bool gltf = false;  ///< --gltf: the only format so far, and required
+};
+
+/// Writes OUT/<scene>.glb (pipeline::export_gltf): the body and its motion as animated glTF.
+int export_command(const ExportOptions& options);
+
 /// "; REASON" for a simulator's divergence reason, "" when it gave none.
 std::string divergence_because(const std::string& reason);
 
