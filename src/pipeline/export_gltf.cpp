@@ -2,6 +2,7 @@
 
 #include <map>
 #include <tuple>
+#include <utility>
 
 #include "common/errors.hpp"
 #include "output/diagnostics_csv.hpp"
@@ -43,6 +44,15 @@ std::vector<output::GltfPart> book_parts(const scene::Scene& scene) {
         part.uvs.col(v) = Eigen::Vector2f(bv.uv[0], bv.uv[1]);
         part.indices.push_back(static_cast<std::uint32_t>(v));
       }
+    }
+    // glTF's front faces wind counter-clockwise seen from outside (viewers cull the back
+    // faces); the renderer's triangles need not, so each is turned to face along its normal.
+    for (std::size_t t = 0; t + 2 < part.indices.size(); t += 3) {
+      const Eigen::Vector3f a = part.positions.col(part.indices[t]);
+      const Eigen::Vector3f b = part.positions.col(part.indices[t + 1]);
+      const Eigen::Vector3f c = part.positions.col(part.indices[t + 2]);
+      if ((b - a).cross(c - a).dot(part.normals.col(part.indices[t])) < 0.0f)
+        std::swap(part.indices[t + 1], part.indices[t + 2]);
     }
     part.colour = Eigen::Vector3f::Ones();
     part.texture = std::move(images[static_cast<std::size_t>(image)]);
