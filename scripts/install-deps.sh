@@ -7,8 +7,8 @@ packages=(
   libeigen3-dev libtomlplusplus-dev libcli11-dev libboost-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   libssl-dev libpng-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
-  libassimp-dev
-  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev ffmpeg
+  libassimp-dev libtinygltf-dev
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev
   clang libclang-rt-14-dev
   chromium chromium-driver python3-selenium
@@ -18,6 +18,13 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
 done
+# node and npm for the glTF browser test (tests/browser/package.json: the Khronos glTF-Validator,
+# three.js). Debian's nodejs and npm, unless a node with npm is already installed another way.
+if ! command -v npm >/dev/null 2>&1 || ! command -v node >/dev/null 2>&1; then
+  for p in nodejs npm; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+  done
+fi
 [ ${#missing[@]} -eq 0 ] && exit 0
 echo "install-deps: installing ${missing[*]}"
 sudo=""

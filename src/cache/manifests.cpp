@@ -97,7 +97,8 @@ std::string clip_manifest_head(const clip::ClipRequest& request) {
 
 std::vector<std::string> clip_outputs(const clip::ClipRequest& request) {
   const scene::Scene& scene = request.scene;
-  std::vector<std::string> files{scene.name + ".mp4"};
+  std::vector<std::string> files;
+  for (const std::string& format : scene.render.formats) files.push_back(scene.name + "." + format);
   if (request.write_png) {
     for (int i = 0; i < scene.frames; ++i) {
       char name[32];

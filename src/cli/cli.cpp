@@ -38,7 +38,8 @@ void add_freshness_flags(CLI::App* cmd, bool& force, bool& verify, const std::st
 void add_render(CLI::App& cli, RenderArgs& options) {
   CLI::App* cmd = cli.add_subcommand(
       "render",
-      "Render a scene to OUT/<scene>.mp4, OUT/<scene>/frames/ and OUT/<scene>/diagnostics.csv");
+      "Render a scene to OUT/<scene>.mp4 (and/or .webm, .gif), OUT/<scene>/frames/ and "
+      "OUT/<scene>/diagnostics.csv");
   cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
   cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
@@ -53,7 +54,24 @@ void add_render(CLI::App& cli, RenderArgs& options) {
                   "zlib level of the PNG frames, 0 (fastest) … 9 (smallest); overrides "
                   "render.png_compression")
       ->check(CLI::Range(0, 9));
+  cmd->add_option("--format", options.formats,
+                  "Videos to write, comma-separated: mp4 (H.264), webm (VP9), gif (640 px, "
+                  "15 frames/s by default); overrides render.formats (default mp4)");
   add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/manifest.json");
+}
+
+void add_export(CLI::App& cli, ExportOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "export", "Export a scene's body and its motion for other programs: --gltf writes "
+                "OUT/<scene>.glb (glTF 2.0 binary, one animation, keyframes at render.fps)");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML), one model (no [[compare]])")
+      ->required();
+  cmd->add_flag("--gltf", options.gltf, "Write OUT/<scene>.glb")->required();
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--frames", options.frames,
+                  "Export only the first N frames (overrides time.frames)")
+      ->check(CLI::Range(1, scene::kMaxFrames));
 }
 
 void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
@@ -170,6 +188,8 @@ int run_cli(int argc, char** argv) {
   add_simulate(cli, simulate);
   RenderArgs render;
   add_render(cli, render);
+  ExportOptions export_options;
+  add_export(cli, export_options);
   AccuracyOptions accuracy;
   add_accuracy(cli, accuracy);
   PlotOptions plot;
@@ -195,6 +215,7 @@ int run_cli(int argc, char** argv) {
   const int status = run_guarded([&] {
     if (cli.got_subcommand("simulate")) return simulate_command(simulate);
     if (cli.got_subcommand("render")) return render_command(render);
+    if (cli.got_subcommand("export")) return export_command(export_options);
     if (cli.got_subcommand("info")) return info_command();
     if (cli.got_subcommand("accuracy")) return accuracy_command(accuracy);
     if (cli.got_subcommand("plot")) return plot_command(plot);

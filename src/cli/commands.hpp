@@ -1,6 +1,7 @@
 #pragma once
 // The bookspin subcommands. Each returns the process exit status.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,13 @@ struct RenderArgs {
   int png_compression = -1;  ///< zlib level 0–9 for the frames; −1 = render.png_compression
   bool force = false;        ///< render even when OUT/<scene>/manifest.json says up to date
   bool verify = false;       ///< up-to-date check hashes every output (else sizes only)
+  /// `--format mp4,webm,gif` as given (overrides render.formats); empty optional: not given.
+  std::optional<std::string> formats;
 };
+
+/// The video formats of `--format LIST` (comma-separated, blanks around names ignored).
+/// Throws InputError "--format: …" for an empty list, an unknown or a repeated name.
+std::vector<std::string> parse_format_list(const std::string& list);
 
 /// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv,
 /// then writes out/<name>/manifest.json (output/manifest.hpp). Prints "up to date: <name>"
@@ -106,6 +113,17 @@ struct SweepOptions {
 /// Runs a parameter sweep (physics only, docs/physics.md §14) and writes
 /// OUT/<scene>-sweep.csv and .png, or one shard's CSV, or merges shard CSVs.
 int sweep_command(const SweepOptions& options);
+
+struct ExportOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;
+  std::string out_dir = "out";
+  int frames = 0;     ///< > 0 overrides time.frames
+  bool gltf = false;  ///< --gltf: the only format so far, and required
+};
+
+/// Writes OUT/<scene>.glb (clip::export_gltf): the body and its motion as animated glTF.
+int export_command(const ExportOptions& options);
 
 /// "; REASON" for a simulator's divergence reason, "" when it gave none.
 std::string divergence_because(const std::string& reason);

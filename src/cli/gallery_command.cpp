@@ -55,7 +55,11 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   e.name = scene.name;
   e.title = scene.title;
   e.description = scene.description;
-  if (exists(out, scene.name + ".mp4")) e.video = scene.name + ".mp4";
+  if (exists(out, scene.name + ".mp4")) e.mp4 = scene.name + ".mp4";
+  if (exists(out, scene.name + ".webm")) e.webm = scene.name + ".webm";
+  if (exists(out, scene.name + ".gif")) e.gif = scene.name + ".gif";
+  if (exists(out, scene.name + ".glb")) e.glb = scene.name + ".glb";
+  e.video = e.mp4.empty() ? e.webm : e.mp4;
   e.poster = poster_for(out, scene.name);
   if (exists(out, scene.name + "-plot.png")) e.plot = scene.name + "-plot.png";
   if (exists(out, scene.name + "-sweep.png")) e.sweep = scene.name + "-sweep.png";

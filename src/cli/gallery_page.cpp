@@ -62,7 +62,10 @@ void write_entry(std::ostream& out, const GalleryEntry& e) {
   if (!e.description.empty()) out << "<p>" << html_escape(e.description) << "</p>\n";
   write_media(out, e);
   out << "<p class=\"files\">" << html_escape(e.name);
-  if (!e.video.empty()) out << " · <a href=" << attr(e.video) << ">MP4</a>";
+  if (!e.mp4.empty()) out << " · <a href=" << attr(e.mp4) << ">MP4</a>";
+  if (!e.webm.empty()) out << " · <a href=" << attr(e.webm) << ">WebM</a>";
+  if (!e.gif.empty()) out << " · <a href=" << attr(e.gif) << ">GIF</a>";
+  if (!e.glb.empty()) out << " · <a href=" << attr(e.glb) << ">glTF</a>";
   if (!e.sweep_csv.empty())
     out << " · <a href=" << attr(e.sweep_csv) << ">" << html_escape(e.sweep_csv) << "</a>";
   for (const auto& csv : e.csvs) {

@@ -11,7 +11,11 @@ struct GalleryEntry {
   std::string name;               ///< scene.name
   std::string title;              ///< scene.title (plain text; escaped on the page)
   std::string description;        ///< scene.description
-  std::string video;              ///< "<name>.mp4"
+  std::string video;              ///< "<name>.mp4", or "<name>.webm" where there is no MP4
+  std::string mp4;                ///< "<name>.mp4" if rendered (linked)
+  std::string webm;               ///< "<name>.webm" if rendered (linked)
+  std::string gif;                ///< "<name>.gif" if rendered (linked)
+  std::string glb;                ///< "<name>.glb" from `bookspin export --gltf` (linked)
   std::string poster;             ///< a frame PNG shown before the clip plays
   std::string plot;               ///< "<name>-plot.png"
   std::string sweep;              ///< "<name>-sweep.png" (`bookspin sweep`)

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -5,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
+#include "common/errors.hpp"
 #include "output/manifest.hpp"
 #include "clip/clip.hpp"
 #include "jobs/lattice_note.hpp"
@@ -100,9 +102,29 @@ cache::CacheOutcome run_cached(const cache::CachedJob& job, const std::string& n
   return outcome;
 }
 
+std::vector<std::string> parse_format_list(const std::string& list) {
+  std::vector<std::string> formats;
+  std::size_t start = 0;
+  while (!list.empty() && start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    std::string name = list.substr(start, comma - start);
+    const auto first = name.find_first_not_of(" \t");
+    name = first == std::string::npos ? "" : name.substr(first, name.find_last_not_of(" \t") + 1 - first);
+    formats.push_back(name);
+    start = comma + 1;
+  }
+  if (formats.size() == 1 && formats[0].empty()) formats.clear();
+  if (const std::string problem = scene::video_formats_problem(formats); !problem.empty())
+    throw InputError("--format: " + problem);
+  return formats;
+}
+
 int render_command(const RenderArgs& args) {
   install_interrupt_handlers();
+  std::optional<std::vector<std::string>> formats;
+  if (args.formats) formats = parse_format_list(*args.formats);
   scene::Scene scene = scene::parse_scene(args.scene_path, args.overrides);
+  if (formats) scene.render.formats = *formats;
   for (const std::string& warning : scene.warnings)
     std::cerr << "bookspin: warning: " << warning << '\n';
   if (const std::string note = jobs::lattice_note(scene); !note.empty())

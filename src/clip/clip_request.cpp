@@ -21,6 +21,11 @@ output::SinkOptions sink_options(const ClipRequest& request) {
       request.jobs > 0 ? request.jobs : static_cast<int>(std::thread::hardware_concurrency());
   s.png_workers = std::max(1, jobs - 1);
   s.encoder = encoder_settings(request.scene, request.jobs);
+  const scene::RenderOptions& r = request.scene.render;
+  s.formats = r.formats;
+  s.webm_crf = r.webm_crf;
+  s.gif_width = r.gif_width;
+  s.gif_fps = r.gif_fps;
   return s;
 }
 

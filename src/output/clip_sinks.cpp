@@ -1,5 +1,6 @@
 #include "output/clip_sinks.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 
@@ -24,17 +25,51 @@ std::filesystem::path make_parent(const std::filesystem::path& file) {
   return file;
 }
 
+bool wants(const SinkOptions& options, const char* format) {
+  return std::find(options.formats.begin(), options.formats.end(), format) !=
+         options.formats.end();
+}
+
 }  // namespace
+
+std::filesystem::path video_path(const std::filesystem::path& mp4, const std::string& format) {
+  std::filesystem::path path = mp4;
+  return path.replace_extension("." + format);
+}
 
 ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options)
     : paths_(paths),
       options_(options),
-      encoder_(make_parent(paths.mp4), options.encoder),
       csv_(paths.csv),
-      encode_queue_(4),
       png_queue_(2 * static_cast<std::size_t>(std::max(1, options.png_workers))) {
+  if (options_.formats.empty()) throw std::invalid_argument("ClipSinks: no video format");
+  const EncoderSettings& e = options_.encoder;
+  make_parent(paths.mp4);
+  // Each video in its own member, opened before any thread starts; the threads share out
+  // the cores the encoders would otherwise each take for themselves.
+  if (wants(options_, "mp4")) {
+    mp4_.emplace(paths.mp4, e);
+    videos_.push_back(std::make_unique<Video>());
+    videos_.back()->add_frame = [this](const RgbaImage& f) { mp4_->add_frame(f); };
+    videos_.back()->finish = [this] { mp4_->finish(); };
+  }
+  if (wants(options_, "webm")) {
+    webm_.emplace(video_path(paths.mp4, "webm"),
+                  WebmSettings{e.width, e.height, e.fps, options_.webm_crf, e.threads});
+    videos_.push_back(std::make_unique<Video>());
+    videos_.back()->add_frame = [this](const RgbaImage& f) { webm_->add_frame(f); };
+    videos_.back()->finish = [this] { webm_->finish(); };
+  }
+  if (wants(options_, "gif")) {
+    gif_.emplace(video_path(paths.mp4, "gif"),
+                 GifSettings{e.width, e.height, e.fps, options_.gif_width, options_.gif_fps});
+    videos_.push_back(std::make_unique<Video>());
+    videos_.back()->add_frame = [this](const RgbaImage& f) { gif_->add_frame(f); };
+    videos_.back()->finish = [this] { gif_->finish(); };
+  }
+  if (videos_.empty()) throw std::invalid_argument("ClipSinks: unknown video format");
   if (options_.write_png) frames_.emplace(paths.frames_dir);
-  workers_.emplace_back([this] { encode_loop(); });
+  for (auto& video : videos_) workers_.emplace_back([this, v = video.get()] { encode_loop(*v); });
   if (options_.write_png) {
     for (int i = 0; i < std::max(1, options_.png_workers); ++i)
       workers_.emplace_back([this] { png_loop(); });
@@ -43,8 +78,13 @@ ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options)
 
 ClipSinks::~ClipSinks() { stop_workers(); }
 
+const std::string& ClipSinks::encoder_message() const {
+  static const std::string none;
+  return mp4_ ? mp4_->fallback_message() : none;
+}
+
 void ClipSinks::stop_workers() {
-  encode_queue_.close();
+  for (auto& video : videos_) video->queue.close();
   png_queue_.close();
   for (auto& worker : workers_)
     if (worker.joinable()) worker.join();
@@ -56,7 +96,7 @@ void ClipSinks::record_error() {
     std::lock_guard lock(error_mutex_);
     if (!error_) error_ = std::current_exception();
   }
-  encode_queue_.close();
+  for (auto& video : videos_) video->queue.close();
   png_queue_.close();
 }
 
@@ -65,9 +105,9 @@ void ClipSinks::rethrow_if_failed() {
   if (error_) std::rethrow_exception(error_);
 }
 
-void ClipSinks::encode_loop() {
+void ClipSinks::encode_loop(Video& video) {
   try {
-    while (auto frame = encode_queue_.pop()) encoder_.add_frame(**frame);
+    while (auto frame = video.queue.pop()) video.add_frame(**frame);
   } catch (...) {
     record_error();
   }
@@ -89,8 +129,9 @@ void ClipSinks::add(int index, RgbaImage image, const physics::Diagnostics& diag
   csv_.add(index, diagnostics);
   // Shared by the encoder and the PNG queue; whoever lets go last hands the buffer back.
   Frame frame(new RgbaImage(std::move(image)), [this](const RgbaImage* done) { recycle(done); });
-  const bool queued = encode_queue_.push(frame) &&
-                      (!options_.write_png || png_queue_.push({index, std::move(frame)}));
+  bool queued = true;
+  for (auto& video : videos_) queued = queued && video->queue.push(frame);
+  queued = queued && (!options_.write_png || png_queue_.push({index, std::move(frame)}));
   if (!queued) rethrow_if_failed();
 }
 
@@ -115,7 +156,7 @@ void ClipSinks::finish() {
   stop_workers();
   rethrow_if_failed();
   csv_.close();  // a failed CSV write stops here, before the MP4 is put in place
-  encoder_.finish();
+  for (auto& video : videos_) video->finish();
   if (frames_) frames_->commit();
   csv_.commit();
 }

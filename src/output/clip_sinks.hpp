@@ -1,8 +1,10 @@
 #pragma once
-// The sinks of one clip, fed frame by frame: MP4 on an encoder thread, PNG frames on a small
-// worker pool, the diagnostics CSV on the caller's thread. Every output is written under a
+// The sinks of one clip, fed frame by frame: each video (MP4, WebM, GIF) on its own encoder
+// thread, PNG frames on a small worker pool, the diagnostics CSV on the caller's thread. Every output is written under a
 // temporary name and appears under its final name only in finish().
 #include <exception>
+#include <functional>
+#include <string>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -16,12 +18,13 @@
 #include "output/bounded_queue.hpp"
 #include "output/diagnostics_csv.hpp"
 #include "output/mp4_encoder.hpp"
+#include "output/web_encoders.hpp"
 #include "physics/simulator.hpp"
 
 namespace bookspin::output {
 
 struct ClipPaths {
-  std::filesystem::path mp4;         ///< out/<scene>.mp4
+  std::filesystem::path mp4;         ///< out/<scene>.mp4 (.webm and .gif beside it)
   std::filesystem::path frames_dir;  ///< out/<scene>/frames
   std::filesystem::path csv;         ///< out/<scene>/diagnostics.csv
 };
@@ -31,7 +34,16 @@ struct SinkOptions {
   int png_compression = 1;  ///< zlib level 0–9
   int png_workers = 1;      ///< threads compressing PNGs
   output::EncoderSettings encoder;
+  /// Videos to write, each of "mp4", "webm", "gif" at most once (scene::kVideoFormats);
+  /// every one gets the same frames.
+  std::vector<std::string> formats{"mp4"};
+  int webm_crf = 32;   ///< WebmSettings::crf
+  int gif_width = 640; ///< GifSettings::width
+  int gif_fps = 15;    ///< GifSettings::gif_fps
 };
+
+/// The path of video `format` ("mp4", "webm", "gif") of a clip whose MP4 is `mp4`.
+std::filesystem::path video_path(const std::filesystem::path& mp4, const std::string& format);
 
 class ClipSinks {
  public:
@@ -50,12 +62,18 @@ class ClipSinks {
   /// A frame buffer the sinks are done with, to render the next frame into instead of
   /// allocating (and page-faulting) a new one; std::nullopt if none is free now.
   std::optional<RgbaImage> spare_frame();
-  /// Non-empty when the encoder fell back to libx264.
-  const std::string& encoder_message() const { return encoder_.fallback_message(); }
+  /// Non-empty when the MP4 encoder fell back to libx264.
+  const std::string& encoder_message() const;
 
  private:
   using Frame = std::shared_ptr<const RgbaImage>;
-  void encode_loop();
+  /// One video file and the queue of frames its thread encodes.
+  struct Video {
+    std::function<void(const RgbaImage&)> add_frame;
+    std::function<void()> finish;
+    output::BoundedQueue<Frame> queue{4};
+  };
+  void encode_loop(Video& video);
   void png_loop();
   void record_error();
   void rethrow_if_failed();
@@ -64,13 +82,15 @@ class ClipSinks {
 
   ClipPaths paths_;
   SinkOptions options_;
-  output::Mp4Encoder encoder_;
+  std::optional<output::Mp4Encoder> mp4_;
+  std::optional<output::WebmEncoder> webm_;
+  std::optional<output::GifEncoder> gif_;
   std::optional<output::AtomicDirectory> frames_;
   DiagnosticsCsvFile csv_;
   // Before the queues: frames left in them at destruction come back here.
   std::mutex spare_mutex_;
   std::vector<RgbaImage> spares_;
-  output::BoundedQueue<Frame> encode_queue_;
+  std::vector<std::unique_ptr<Video>> videos_;
   output::BoundedQueue<std::pair<int, Frame>> png_queue_;
   std::mutex error_mutex_;
   std::exception_ptr error_;

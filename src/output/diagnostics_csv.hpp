@@ -9,12 +9,19 @@
 namespace bookspin::output {
 
 /// The header line (no newline): frame,t,omega_x,…,quaternion_norm, then (added last, so the
-/// earlier columns keep their places) cos_smallest_L,cos_intermediate_L,cos_largest_L.
+/// earlier columns keep their places) cos_smallest_L,cos_intermediate_L,cos_largest_L, then
+/// the pose: q_w,q_x,q_y,q_z (the unit quaternion of the orientation R, body→world, scalar
+/// first, q_w >= 0; best-fit rotation of the particles for the deforming models) and
+/// com_x,com_y,com_z (centre of mass, world) (docs/outputs.md, "The pose in the CSV").
 const std::string& diagnostics_csv_header();
 
 /// One row (no newline) for `frame`; numbers in shortest round-trip form (std::to_chars), so
 /// the same state always gives the same bytes. Frames: omega body, L world (docs/physics.md §9).
 std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d);
+
+/// The unit quaternion (w, x, y, z) of rotation `orientation` (3×3, body→world), with
+/// w >= 0: v_world = q ⊗ v_body ⊗ q⁻¹. Used for the CSV's q_w…q_z and the glTF animation.
+Eigen::Vector4d pose_quaternion(const Eigen::Matrix3d& orientation);
 
 /// A diagnostics CSV written row by row under a temporary name (its folder made if missing)
 /// and put in place by commit(); without commit() nothing is left behind. Throws

@@ -5,7 +5,9 @@
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <new>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -140,6 +142,31 @@ void write_png(const std::filesystem::path& path, const RgbaImage& image, int co
   // fclose is where a full disk often shows up first (buffered data).
   if (std::fclose(file.release()) != 0) throw_output_error("cannot write PNG", path, errno);
   output.commit();
+}
+
+std::vector<std::uint8_t> encode_png(const RgbaImage& image, int compression_level) {
+  validate_for_writing(image, compression_level);
+  char* data = nullptr;
+  std::size_t size = 0;
+  PngIo io;
+  FilePtr file(open_memstream(&data, &size));
+  if (!file) throw std::bad_alloc();
+  io.file = file.get();
+  bool ok = false;
+  {
+    PngWriteHandle handle;
+    handle.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &io, on_png_error, on_png_warning);
+    if (handle.png) handle.info = png_create_info_struct(handle.png);
+    if (handle.info) {
+      png_set_write_fn(handle.png, &io, write_to_file, flush_file);
+      ok = encode_rows(handle.png, handle.info, image, compression_level);
+    }
+  }
+  std::fclose(file.release());  // sets data and size
+  std::vector<std::uint8_t> bytes(data, data + size);
+  std::free(data);
+  if (!ok) throw std::bad_alloc();  // memory is the only thing that can fail here
+  return bytes;
 }
 
 // ---- Reading -------------------------------------------------------------------

@@ -1,6 +1,8 @@
 #pragma once
 // PNG frames with libpng: 8-bit RGB or RGBA out, any PNG in.
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "common/rgba_image.hpp"
 
@@ -17,6 +19,10 @@ namespace bookspin::output {
 /// error no file is left under `path` or the temporary name.
 void write_png(const std::filesystem::path& path, const RgbaImage& image,
                int compression_level = 1);
+
+/// The same PNG bytes write_png would write, in memory (for images embedded in another file,
+/// e.g. a glTF binary). Throws std::invalid_argument as write_png, std::bad_alloc.
+std::vector<std::uint8_t> encode_png(const RgbaImage& image, int compression_level = 6);
 
 /// Reads any PNG libpng understands (palette, grey, 16-bit, with or without
 /// alpha, interlaced) and returns it as 8-bit RGBA, top row first; missing

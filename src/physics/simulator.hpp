@@ -58,6 +58,10 @@ struct Diagnostics {
   /// cos(principal axis in world, L) for the principal axes sorted by moment: smallest,
   /// intermediate, largest (docs/physics.md §12). For the book: body y, x, z.
   Eigen::Vector3d cos_principal_L = Eigen::Vector3d::Zero();
+  /// The pose as Simulator::orientation() and center_of_mass() give it (R body→world, 3×3;
+  /// centre of mass, world): filled by Simulator::pose(), identity and zero from diagnostics().
+  Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d center_of_mass = Eigen::Vector3d::Zero();
 };
 
 /// What the simulator hands to the rest of the pipeline each frame.
@@ -100,7 +104,12 @@ class Simulator {
   /// not follow the 8 corners (the lattice, docs/physics.md §13); empty (3×0) otherwise.
   virtual Eigen::Matrix3Xd deformed_surface() const { return Eigen::Matrix3Xd(3, 0); }
 
-  Pose pose() const { return {corners(), diagnostics(), deformed_surface()}; }
+  Pose pose() const {
+    Pose pose{corners(), diagnostics(), deformed_surface()};
+    pose.diagnostics.orientation = orientation();
+    pose.diagnostics.center_of_mass = center_of_mass();
+    return pose;
+  }
 };
 
 /// The seeded, deterministic jiggle (docs/physics.md §5): a vector uniform in

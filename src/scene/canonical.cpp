@@ -70,6 +70,12 @@ void add_render(Members& m, const RenderOptions& r, const std::filesystem::path&
   m.emplace_back("render.msaa", std::to_string(r.msaa));
   m.emplace_back("render.panel", boolean(r.panel));
   m.emplace_back("render.sphere", boolean(r.sphere));
+  std::string formats = "[";
+  for (const auto& f : r.formats) formats += (formats.size() > 1 ? ", " : "") + json_string(f);
+  m.emplace_back("render.formats", formats + "]");
+  m.emplace_back("render.gif_width", std::to_string(r.gif_width));
+  m.emplace_back("render.gif_fps", std::to_string(r.gif_fps));
+  m.emplace_back("render.webm_crf", std::to_string(r.webm_crf));
 }
 
 }  // namespace

@@ -134,6 +134,23 @@ int read_dimension(TomlReader& r, std::string_view key, int fallback) {
   return value;
 }
 
+std::vector<std::string> read_formats(TomlReader& r, std::string_view key,
+                                      std::vector<std::string> fallback) {
+  const auto view = r.node(key);
+  if (!view) return fallback;
+  const toml::array* array = view.as_array();
+  if (array == nullptr) r.fail(key, "expected an array of strings such as [\"mp4\", \"gif\"]");
+  std::vector<std::string> formats;
+  for (const toml::node& item : *array) {
+    const auto* text = item.as_string();
+    if (text == nullptr) r.fail(key, "expected an array of strings such as [\"mp4\", \"gif\"]");
+    formats.push_back(text->get());
+  }
+  if (const std::string problem = video_formats_problem(formats); !problem.empty())
+    r.fail(key, problem);
+  return formats;
+}
+
 RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   RenderOptions o;
   o.width = read_dimension(r, "render.width", o.width);
@@ -165,10 +182,32 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   o.sphere = r.boolean("render.sphere", false);
   o.anisotropy = static_cast<int>(r.integer("render.anisotropy", 0, 0, 16));
   o.msaa = static_cast<int>(r.integer("render.msaa", o.msaa, 1, 8));
+  o.formats = read_formats(r, "render.formats", o.formats);
+  o.gif_width = static_cast<int>(r.integer("render.gif_width", std::min(o.gif_width, o.width),
+                                           16, o.width));
+  o.gif_fps = static_cast<int>(r.integer("render.gif_fps", std::min(o.gif_fps, o.fps), 1, o.fps));
+  o.webm_crf = static_cast<int>(r.integer("render.webm_crf", o.webm_crf, 0, 63));
   if (o.msaa != 1 && o.msaa != 2 && o.msaa != 4 && o.msaa != 8)
     r.fail("render.msaa", "must be 1, 2, 4 or 8, got " + std::to_string(o.msaa));
   return o;
 }
+
+}  // namespace
+
+std::string video_formats_problem(const std::vector<std::string>& formats) {
+  const std::string expected = " (expected mp4, webm or gif)";
+  if (formats.empty()) return "no video format given" + expected;
+  for (std::size_t i = 0; i < formats.size(); ++i) {
+    if (std::find(kVideoFormats.begin(), kVideoFormats.end(), formats[i]) == kVideoFormats.end())
+      return "unknown video format '" + formats[i] + "'" + expected;
+    if (std::find(formats.begin(), formats.begin() + static_cast<long>(i), formats[i]) !=
+        formats.begin() + static_cast<long>(i))
+      return "video format '" + formats[i] + "' given twice";
+  }
+  return "";
+}
+
+namespace {
 
 void read_identity(TomlReader& r, Scene& s) {
   s.name = r.string("scene.name", s.source.stem().string());

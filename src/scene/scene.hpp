@@ -41,7 +41,21 @@ struct RenderOptions {
   /// body-frame L/|L| with its trail, drawn at the left edge of the book's part of the frame
   /// (a comparison: one trail per tile, atop the plot column).
   bool sphere = false;
+  /// Video files of one render (render.formats, `render --format`): any of "mp4" (H.264),
+  /// "webm" (VP9) and "gif" (global palette), each at most once, at least one; all fed by
+  /// the same frames (docs/outputs.md).
+  std::vector<std::string> formats{"mp4"};
+  int gif_width = 640;  ///< GIF width in pixels (height keeps the aspect, even); ≤ width
+  int gif_fps = 15;     ///< GIF frame rate target: every round(fps / gif_fps)-th frame is kept
+  int webm_crf = 32;    ///< VP9 constant quality 0 (best) … 63
 };
+
+/// The video formats `render` can write, in the order they are listed in messages.
+inline constexpr std::array<std::string_view, 3> kVideoFormats{"mp4", "webm", "gif"};
+
+/// Why `formats` is not a valid list of video formats (empty, unknown or repeated name), or
+/// "" when it is. The reason names the offending entry and the formats expected.
+std::string video_formats_problem(const std::vector<std::string>& formats);
 
 /// One tile of a comparison scene (`[[compare]]`): the scene's book, initial state, time
 /// and render keys with its own model settings.

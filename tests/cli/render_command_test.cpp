@@ -54,6 +54,49 @@ TEST(RenderCommand, WritesMp4FramesAndCsvWithMatchingCounts) {
   }
 }
 
+/// ffprobe's "codec,width,height,frames" of the first video stream of `file`, decoding every
+/// frame (an independent reader: FFmpeg's command-line tool, not bookspin's code).
+std::string ffprobe_stream(const fs::path& file) {
+  std::string out;
+  run_shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+            "stream=codec_name,width,height,nb_read_frames -of csv=p=0 " + file.string(),
+            out);
+  return out;
+}
+
+TEST(RenderCommand, FormatsWriteMp4WebmAndGifFromOneRenderAndListThemInTheManifest) {
+  const fs::path out = fresh_dir("render_formats");
+  const std::string name = "fig09-matrix-unstable-x";
+  const CliResult r = run_bookspin("render " + scene_path(name) + kSmall +
+                                   " --set render.gif_width=64 --frames 9 --no-png "
+                                   "--format mp4,webm,gif -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(ffprobe_stream(out / (name + ".mp4")), "h264,128,96,9\n");
+  EXPECT_EQ(ffprobe_stream(out / (name + ".webm")), "vp9,128,96,9\n");
+  // 30 frames/s → every 2nd frame at the default 15 frames/s: frames 0, 2, 4, 6, 8.
+  EXPECT_EQ(ffprobe_stream(out / (name + ".gif")), "gif,64,48,5\n");
+  const std::string manifest = read_file(out / name / "manifest.json");
+  for (const char* ext : {".mp4", ".webm", ".gif"})
+    EXPECT_NE(manifest.find("\"" + name + ext + "\""), std::string::npos) << ext << manifest;
+  // Up to date with the same formats; another list is another render.
+  EXPECT_NE(run_bookspin("render " + scene_path(name) + kSmall +
+                         " --set render.gif_width=64 --frames 9 --no-png "
+                         "--format mp4,webm,gif -o " + out.string())
+                .output.find("up to date"),
+            std::string::npos);
+
+  // The scene key alone, without the MP4.
+  const fs::path only = fresh_dir("render_formats_webm");
+  ASSERT_EQ(run_bookspin("render " + scene_path(name) + kSmall +
+                         " --frames 3 --no-png --set 'render.formats=[\"webm\"]' -o " +
+                         only.string())
+                .status,
+            0);
+  EXPECT_EQ(ffprobe_stream(only / (name + ".webm")), "vp9,128,96,3\n");
+  EXPECT_FALSE(fs::exists(only / (name + ".mp4")));
+  EXPECT_FALSE(fs::exists(only / (name + ".gif")));
+}
+
 TEST(RenderCommand, NoPngSkipsTheFrames) {
   const fs::path out = fresh_dir("render_no_png");
   ASSERT_EQ(run_bookspin("render " + scene_path("fig03-particle-stable-z") + kSmall +

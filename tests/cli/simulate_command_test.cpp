@@ -13,7 +13,7 @@ using namespace bookspin::test;  // the shared runner (tests/support)
 constexpr const char* kHeader =
     "frame,t,omega_x,omega_y,omega_z,L_x,L_y,L_z,energy_kinetic,energy_potential,energy_total,"
     "cos_x_L,cos_y_L,cos_z_L,strain_max,orthogonality_error,quaternion_norm,"
-    "cos_smallest_L,cos_intermediate_L,cos_largest_L";
+    "cos_smallest_L,cos_intermediate_L,cos_largest_L,q_w,q_x,q_y,q_z,com_x,com_y,com_z";
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;

@@ -1,0 +1,28 @@
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "clip/export_gltf.hpp"
+#include "jobs/lattice_note.hpp"
+
+namespace bookspin::cli {
+
+int export_command(const ExportOptions& options) {
+  scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "bookspin: warning: " << warning << '\n';
+  if (const std::string note = jobs::lattice_note(scene); !note.empty())
+    std::cerr << "bookspin: " << note << '\n';
+  if (options.frames > 0) scene.frames = options.frames;
+  const clip::GltfExportResult result = clip::export_gltf(
+      scene, options.out_dir,
+      [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; });
+  if (result.diverged_at) {
+    std::cerr << "bookspin: warning: " << scene.name << ": simulation diverged at t = "
+              << *result.diverged_at << "; the animation stops at the last finite frame\n";
+  }
+  std::cout << "exported: " << result.path.string() << " (" << result.keyframes
+            << " keyframes, " << result.vertices << " vertices)" << std::endl;
+  return kExitOk;
+}
+
+}  // namespace bookspin::cli

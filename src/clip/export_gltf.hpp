@@ -1,0 +1,31 @@
+#pragma once
+// `bookspin export --gltf`: a scene's run as an animated glTF binary (docs/outputs.md,
+// "glTF export"): the body's surface in its own frame and one animation of its pose.
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace bookspin::clip {
+
+struct GltfExportResult {
+  std::filesystem::path path;         ///< OUT/<name>.glb
+  int keyframes = 0;                  ///< one per frame produced (all of them unless it diverged)
+  int vertices = 0;                   ///< vertices written, over every part
+  std::optional<double> diverged_at;  ///< when the simulation diverged (keyframes stop there)
+};
+
+/// Runs `scene` frame by frame and writes OUT/<scene.name>.glb with output::write_glb: the book
+/// with its four face images (render::face_images, the scene's textures or the generated
+/// covers), a preset or mesh body with one material per colour; keyframe k at k / render.fps
+/// seconds with the rotation of Simulator::orientation() (unit quaternion, body→world, signs
+/// kept continuous from frame to frame) and the centre of mass as translation. A deforming
+/// model (particle, lattice) exports its best-fit rigid motion: `on_note` is told so.
+/// Throws InputError for a comparison scene (no single motion), render::RenderError for a
+/// missing texture or font, OutputError if the file cannot be written.
+GltfExportResult export_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
+                             const std::function<void(const std::string&)>& on_note = {});
+
+}  // namespace bookspin::clip
