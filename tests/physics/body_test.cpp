@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "support/flip_timer.hpp"
 #include "physics/exact_model.hpp"
 #include "physics/lattice_model.hpp"
 #include "physics/mass_properties.hpp"
@@ -176,17 +177,15 @@ TEST(Presets, AreClosedOutwardAndHaveTheDocumentedDistinctMoments) {
 
 /// Times at which cos_intermediate_L changes sign, by linear interpolation between samples.
 std::vector<double> flip_times(Simulator& sim, double dt, double t_end) {
-  std::vector<double> flips;
-  double t0 = 0.0, c0 = sim.diagnostics().cos_principal_L[1];
-  while (t0 < t_end) {
+  test::FlipTimer timer;
+  Diagnostics d = sim.diagnostics();
+  timer.sample(d.t, d.cos_principal_L[1]);
+  while (d.t < t_end) {
     sim.step(dt);
-    const Diagnostics d = sim.diagnostics();
-    const double c1 = d.cos_principal_L[1];
-    if ((c0 < 0.0) != (c1 < 0.0)) flips.push_back(t0 + dt * c0 / (c0 - c1));
-    t0 = d.t;
-    c0 = c1;
+    d = sim.diagnostics();
+    timer.sample(d.t, d.cos_principal_L[1]);
   }
-  return flips;
+  return timer.flips();
 }
 
 TEST(TwoModels, THandleSpunAboutItsIntermediateAxisFlipsWithTheExactTiming) {

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "support/flip_timer.hpp"
 #include "lattice_shapes.hpp"
 #include "model_helpers.hpp"
 #include "physics/exact_solution.hpp"
@@ -179,16 +180,10 @@ double first_flip_exact(const Eigen::Vector3d& moments, const Eigen::Vector3d& o
                         double t_end) {
   const ExactRotation exact(moments, omega0);
   const Eigen::Vector3d L = exact.angular_momentum_world();
-  double previous = exact.orientation(0.0).col(1).dot(L);
-  for (double t = dt; t < t_end; t += dt) {
-    const double c = exact.orientation(t).col(1).dot(L);
-    if ((c > 0.0) != (previous > 0.0)) {
-      // Linear interpolation between the samples.
-      return t - dt * c / (c - previous);
-    }
-    previous = c;
-  }
-  return -1.0;
+  test::FlipTimer timer;
+  for (double t = 0.0; t < t_end && timer.count() == 0; t += dt)
+    timer.sample(t, exact.orientation(t).col(1).dot(L));
+  return timer.first();
 }
 
 // The paper's claim (docs/physics.md §13): a stiff lattice that knows nothing of the
@@ -213,17 +208,18 @@ TEST(LatticeModel, TFlipsWithTheExactModel) {
     model.reset({omega0, 0.0, 1});
     const double dt = 0.5 * stable_step(lat, k);
     const auto start = std::chrono::steady_clock::now();
-    double previous = model.diagnostics().cos_axis_L[1], flip = -1.0, strain = 0.0;
+    test::FlipTimer timer;
+    timer.sample(0.0, model.diagnostics().cos_axis_L[1]);
+    double strain = 0.0;
     long steps = 0;
-    for (double time = dt; time < 2.0 * exact && flip < 0.0; time += dt, ++steps) {
+    for (double time = dt; time < 2.0 * exact && timer.count() == 0; time += dt, ++steps) {
       model.step(dt);
       if (steps % 20 != 0) continue;
       const Diagnostics d = model.diagnostics();
       strain = std::max(strain, d.strain_max);
-      if ((d.cos_axis_L[1] > 0.0) != (previous > 0.0))
-        flip = d.t - 20 * dt * d.cos_axis_L[1] / (d.cos_axis_L[1] - previous);
-      previous = d.cos_axis_L[1];
+      timer.sample(d.t, d.cos_axis_L[1]);
     }
+    const double flip = timer.first();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double error = flip / exact - 1.0;
