@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "support/scratch.hpp"
 #include "output/png_writer.hpp"
 #include "render_test_util.hpp"
 
@@ -296,7 +297,7 @@ TEST(RendererErrors, MissingOrBrokenTextureFileThrowsNamingIt) {
   RenderSettings settings;
   settings.textures.front = "/nonexistent/cover.png";
   expect_error(settings, "front texture '/nonexistent/cover.png': file not found");
-  const std::string junk = std::filesystem::temp_directory_path() / "bookspin_render_junk.png";
+  const std::string junk = test::fresh_dir("renderer_errors") / "junk.png";
   std::FILE* file = std::fopen(junk.c_str(), "w");
   ASSERT_NE(file, nullptr);
   std::fputs("this is not a PNG", file);
@@ -328,7 +329,7 @@ TEST(RendererTextures, CustomFrontPngIsUsed) {
     green.pixels[i + 1] = 230;
     green.pixels[i + 3] = 255;
   }
-  const std::string path = std::filesystem::temp_directory_path() / "bookspin_render_green.png";
+  const std::string path = test::fresh_dir("renderer_textures") / "green.png";
   output::write_png(path, green, 1);
   RenderSettings settings = axis_view({0, 0, 1});
   settings.textures.front = path;

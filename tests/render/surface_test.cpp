@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "support/scratch.hpp"
 #include "output/png_writer.hpp"
 #include "render/renderer.hpp"
 #include "render_test_util.hpp"
@@ -98,8 +99,7 @@ TEST(SurfaceRender, ACubeSurfaceOnTheBooksCornersLooksLikeTheBook) {
   const std::uint8_t srgb = 200;
   RgbaImage plain(32, 32);
   for (std::size_t i = 0; i < plain.pixels.size(); ++i) plain.pixels[i] = i % 4 == 3 ? 255 : srgb;
-  const std::string texture =
-      std::filesystem::temp_directory_path() / "bookspin_surface_test_plain.png";
+  const std::string texture = test::fresh_dir("surface_textures") / "plain.png";
   output::write_png(texture, plain, 1);
   RenderSettings settings = view_from(Eigen::Vector3d(0.9, 0.6, 3.2).normalized() * 10.0);
   settings.textures = {texture, texture, texture, texture};

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/scratch.hpp"
 #include "physics/presets.hpp"
 #include "scene/scene.hpp"
 #include "scene_text.hpp"
@@ -41,7 +42,7 @@ TEST(BodyKeys, PresetWithMassAndScale) {
 }
 
 TEST(BodyKeys, MeshFileRelativeToTheScene) {
-  const fs::path dir = fs::temp_directory_path() / "bookspin_body_scene_test";
+  const fs::path dir = test::fresh_dir("body_scene_test");
   fs::create_directories(dir / "meshes");
   {
     std::ofstream obj(dir / "meshes" / "box.obj");

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "support/scratch.hpp"
+
 namespace bookspin::test {
 
 struct CliResult {
@@ -77,12 +79,5 @@ inline std::string scene_path(const std::string& name) {
   return std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/" + name + ".toml";
 }
 
-/// A fresh, empty temporary directory for one test.
-inline std::filesystem::path fresh_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output" / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 }  // namespace bookspin::test
