@@ -14,6 +14,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "output/atomic_output.hpp"
@@ -158,47 +159,59 @@ std::uint64_t sum_of_absolute_differences(const std::uint8_t* bytes, std::size_t
   return sum;
 }
 
-/// The image data before compression (§7.3): per scanline, the filter-type byte and the
-/// filtered row of `channels` bytes per pixel (3: the alpha byte dropped).
-std::vector<std::uint8_t> filtered_scanlines(const RgbaImage& image, int channels, bool adaptive) {
+/// Copies row `source` (RGBA) into `out` as `channels` bytes per pixel (3: alpha dropped).
+void pack_row(const std::uint8_t* source, std::size_t width, int channels, std::uint8_t* out) {
+  if (channels == 4) {
+    std::memcpy(out, source, 4 * width);
+    return;
+  }
+  // Four bytes at a time, each store's fourth byte overwritten by the next pixel's.
+  for (std::size_t x = 0; x + 1 < width; ++x) std::memcpy(out + 3 * x, source + 4 * x, 4);
+  std::memcpy(out + 3 * (width - 1), source + 4 * (width - 1), 3);
+}
+
+/// The image data before compression (§7.3) into `data`: per scanline, the filter-type byte
+/// and the filtered row of `channels` bytes per pixel.
+void filtered_scanlines(const RgbaImage& image, int channels, bool adaptive,
+                        std::vector<std::uint8_t>& data) {
   const std::size_t width = static_cast<std::size_t>(image.width);
   const std::size_t bytes = width * static_cast<std::size_t>(channels);
-  std::vector<std::uint8_t> data((bytes + 1) * static_cast<std::size_t>(image.height));
+  data.resize((bytes + 1) * static_cast<std::size_t>(image.height));
+  if (!adaptive) {
+    for (int y = 0; y < image.height; ++y) {
+      std::uint8_t* line = data.data() + (bytes + 1) * static_cast<std::size_t>(y);
+      line[0] = 0;  // filter type None
+      pack_row(image.row(y), width, channels, line + 1);
+    }
+    return;
+  }
   std::vector<std::uint8_t> row(bytes), prior(bytes, 0), trial(bytes), best(bytes);
   for (int y = 0; y < image.height; ++y) {
-    const std::uint8_t* source = image.row(y);
     std::uint8_t* line = data.data() + (bytes + 1) * static_cast<std::size_t>(y);
-    if (channels == 4) {
-      std::memcpy(row.data(), source, bytes);
-    } else {
-      for (std::size_t x = 0; x < width; ++x) {
-        row[3 * x] = source[4 * x];
-        row[3 * x + 1] = source[4 * x + 1];
-        row[3 * x + 2] = source[4 * x + 2];
-      }
-    }
+    pack_row(image.row(y), width, channels, row.data());
     int chosen = 0;
-    if (!adaptive) {
-      std::memcpy(line + 1, row.data(), bytes);
-    } else {
-      std::uint64_t best_sum = UINT64_MAX;
-      for (int type = 0; type <= 4; ++type) {
-        filter_row(type, row.data(), prior.data(), bytes, static_cast<std::size_t>(channels),
-                   trial.data());
-        const std::uint64_t sum = sum_of_absolute_differences(trial.data(), bytes);
-        if (sum < best_sum) {
-          best_sum = sum;
-          chosen = type;
-          best.swap(trial);
-        }
+    std::uint64_t best_sum = UINT64_MAX;
+    for (int type = 0; type <= 4; ++type) {
+      filter_row(type, row.data(), prior.data(), bytes, static_cast<std::size_t>(channels),
+                 trial.data());
+      const std::uint64_t sum = sum_of_absolute_differences(trial.data(), bytes);
+      if (sum < best_sum) {
+        best_sum = sum;
+        chosen = type;
+        best.swap(trial);
       }
-      std::memcpy(line + 1, best.data(), bytes);
     }
     line[0] = static_cast<std::uint8_t>(chosen);
+    std::memcpy(line + 1, best.data(), bytes);
     prior.swap(row);
   }
-  return data;
 }
+
+/// What encoding a frame allocates, kept between frames of one thread: fresh multi-megabyte
+/// buffers would cost a page fault per 4 KiB every frame.
+struct EncodeBuffers {
+  std::vector<std::uint8_t> scanlines, zlib, png;
+};
 
 [[noreturn]] void throw_write_error(const std::filesystem::path& path, int error) {
   throw_output_error("cannot write PNG", path, error);
@@ -206,21 +219,26 @@ std::vector<std::uint8_t> filtered_scanlines(const RgbaImage& image, int channel
 
 }  // namespace
 
-std::vector<std::uint8_t> encode_png(const RgbaImage& image, int compression_level) {
+namespace {
+
+/// encode_png into buffers.png (see encode_png), reusing `buffers`.
+void encode_png_into(const RgbaImage& image, int compression_level, EncodeBuffers& buffers) {
   validate_for_writing(image, compression_level);
   const bool opaque = is_opaque(image);  // rendered frames: RGB carries a quarter less
   const int channels = opaque ? 3 : 4;
-  const std::vector<std::uint8_t> scanlines =
-      filtered_scanlines(image, channels, compression_level > kUnfilteredUpTo);
+  filtered_scanlines(image, channels, compression_level > kUnfilteredUpTo, buffers.scanlines);
+  const std::vector<std::uint8_t>& scanlines = buffers.scanlines;
 
   libdeflate_compressor* compressor = compressor_for(libdeflate_level(compression_level));
-  std::vector<std::uint8_t> zlib(libdeflate_zlib_compress_bound(compressor, scanlines.size()));
+  std::vector<std::uint8_t>& zlib = buffers.zlib;
+  zlib.resize(libdeflate_zlib_compress_bound(compressor, scanlines.size()));
   const std::size_t zlib_size = libdeflate_zlib_compress(compressor, scanlines.data(),
                                                          scanlines.size(), zlib.data(), zlib.size());
   if (zlib_size == 0) throw std::logic_error("encode_png: libdeflate exceeded its own bound");
 
   const std::size_t idat_chunks = (zlib_size + kMaxIdatBytes - 1) / kMaxIdatBytes;
-  std::vector<std::uint8_t> png(8 + (12 + 13) + 12 * idat_chunks + zlib_size + 12);
+  std::vector<std::uint8_t>& png = buffers.png;
+  png.resize(8 + (12 + 13) + 12 * idat_chunks + zlib_size + 12);
   std::uint8_t* out = png.data();
   static constexpr std::uint8_t kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};  // §5.2
   std::memcpy(out, kSignature, 8);
@@ -229,21 +247,30 @@ std::vector<std::uint8_t> encode_png(const RgbaImage& image, int compression_lev
   std::uint8_t* h = header;
   put_u32(h, static_cast<std::uint32_t>(image.width));
   put_u32(h, static_cast<std::uint32_t>(image.height));
-  h[0] = 8;                 // bit depth
-  h[1] = opaque ? 2 : 6;    // colour type: truecolour, or truecolour with alpha
-  h[2] = h[3] = h[4] = 0;   // deflate, filter method 0, no interlace
+  h[0] = 8;                // bit depth
+  h[1] = opaque ? 2 : 6;   // colour type: truecolour, or truecolour with alpha
+  h[2] = h[3] = h[4] = 0;  // deflate, filter method 0, no interlace
   put_chunk(out, "IHDR", header, sizeof header);
   for (std::size_t at = 0; at < zlib_size; at += kMaxIdatBytes) {  // §11.2.4: IDATs concatenate
     put_chunk(out, "IDAT", zlib.data() + at, std::min(kMaxIdatBytes, zlib_size - at));
   }
   put_chunk(out, "IEND", nullptr, 0);
   if (out != png.data() + png.size()) throw std::logic_error("encode_png: size miscounted");
-  return png;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_png(const RgbaImage& image, int compression_level) {
+  EncodeBuffers buffers;
+  encode_png_into(image, compression_level, buffers);
+  return std::move(buffers.png);
 }
 
 void write_png(std::FILE* file, const std::filesystem::path& path, const RgbaImage& image,
                int compression_level) {
-  const std::vector<std::uint8_t> png = encode_png(image, compression_level);
+  thread_local EncodeBuffers buffers;
+  encode_png_into(image, compression_level, buffers);
+  const std::vector<std::uint8_t>& png = buffers.png;
   if (std::fwrite(png.data(), 1, png.size(), file) != png.size()) throw_write_error(path, errno);
   if (std::fflush(file) != 0) throw_write_error(path, errno);
 }

@@ -42,7 +42,8 @@ void write_png(const std::filesystem::path& path, const RgbaImage& image,
                int compression_level = 1);
 
 /// Writes encode_png(image, compression_level) to the open `file` (a device, a pipe, a file
-/// the caller owns) and flushes it; `path` is the name used in error messages. Throws what
+/// the caller owns) and flushes it; `path` is the name used in error messages. Keeps its
+/// working buffers (about 2.2× the image's RGB size) per thread for the next frame. Throws what
 /// encode_png throws, and OutputError naming `path` and the OS reason if writing or flushing
 /// fails (a full disk: "No space left on device"). Does not close `file`.
 void write_png(std::FILE* file, const std::filesystem::path& path, const RgbaImage& image,
