@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "output/atomic_output.hpp"
+
 namespace bookspin::bench {
 
 namespace {
@@ -41,13 +43,15 @@ bool encode(png_structp png, png_infop info, std::FILE* file, const RgbaImage& i
 
 void write_png_with_zlib(const std::filesystem::path& path, const RgbaImage& image,
                          int compression_level) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
+  output::AtomicFile output(path);  // as the former writer: a temporary, renamed when complete
+  std::FILE* file = std::fopen(output.temp_path().c_str(), "wb");
   if (!file) throw std::runtime_error("bench: cannot create " + path.string());
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, on_error, on_warning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   const bool ok = info && encode(png, info, file, image, compression_level);
   png_destroy_write_struct(&png, &info);
   if (std::fclose(file) != 0 || !ok) throw std::runtime_error("bench: cannot write " + path.string());
+  output.commit();
 }
 
 }  // namespace bookspin::bench

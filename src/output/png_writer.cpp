@@ -79,13 +79,6 @@ void validate_for_writing(const RgbaImage& image, int compression_level) {
   }
 }
 
-bool is_opaque(const RgbaImage& image) {
-  for (std::size_t i = 3; i < image.pixels.size(); i += 4) {
-    if (image.pixels[i] != 255) return false;
-  }
-  return true;
-}
-
 /// The project's level 0…9 on libdeflate's 0…12 (see encode_png).
 int libdeflate_level(int compression_level) { return compression_level == 9 ? 12 : compression_level; }
 
@@ -160,19 +153,27 @@ std::uint64_t sum_of_absolute_differences(const std::uint8_t* bytes, std::size_t
 }
 
 /// Copies row `source` (RGBA) into `out` as `channels` bytes per pixel (3: alpha dropped).
-void pack_row(const std::uint8_t* source, std::size_t width, int channels, std::uint8_t* out) {
+/// Returns the AND of the row's alpha bytes (255 when every pixel of it is opaque).
+std::uint8_t pack_row(const std::uint8_t* source, std::size_t width, int channels,
+                      std::uint8_t* out) {
   if (channels == 4) {
     std::memcpy(out, source, 4 * width);
-    return;
+    return 0;  // not asked
   }
   // Four bytes at a time, each store's fourth byte overwritten by the next pixel's.
-  for (std::size_t x = 0; x + 1 < width; ++x) std::memcpy(out + 3 * x, source + 4 * x, 4);
+  std::uint8_t alpha = 255;
+  for (std::size_t x = 0; x + 1 < width; ++x) {
+    std::memcpy(out + 3 * x, source + 4 * x, 4);
+    alpha &= source[4 * x + 3];
+  }
   std::memcpy(out + 3 * (width - 1), source + 4 * (width - 1), 3);
+  return alpha & source[4 * width - 1];
 }
 
 /// The image data before compression (§7.3) into `data`: per scanline, the filter-type byte
-/// and the filtered row of `channels` bytes per pixel.
-void filtered_scanlines(const RgbaImage& image, int channels, bool adaptive,
+/// and the filtered row of `channels` bytes per pixel. With channels 3 (the caller's guess that
+/// the image is opaque) returns false, and stops, at the first row holding a pixel that is not.
+bool filtered_scanlines(const RgbaImage& image, int channels, bool adaptive,
                         std::vector<std::uint8_t>& data) {
   const std::size_t width = static_cast<std::size_t>(image.width);
   const std::size_t bytes = width * static_cast<std::size_t>(channels);
@@ -181,14 +182,14 @@ void filtered_scanlines(const RgbaImage& image, int channels, bool adaptive,
     for (int y = 0; y < image.height; ++y) {
       std::uint8_t* line = data.data() + (bytes + 1) * static_cast<std::size_t>(y);
       line[0] = 0;  // filter type None
-      pack_row(image.row(y), width, channels, line + 1);
+      if (pack_row(image.row(y), width, channels, line + 1) != 255 && channels == 3) return false;
     }
-    return;
+    return true;
   }
   std::vector<std::uint8_t> row(bytes), prior(bytes, 0), trial(bytes), best(bytes);
   for (int y = 0; y < image.height; ++y) {
     std::uint8_t* line = data.data() + (bytes + 1) * static_cast<std::size_t>(y);
-    pack_row(image.row(y), width, channels, row.data());
+    if (pack_row(image.row(y), width, channels, row.data()) != 255 && channels == 3) return false;
     int chosen = 0;
     std::uint64_t best_sum = UINT64_MAX;
     for (int type = 0; type <= 4; ++type) {
@@ -205,6 +206,7 @@ void filtered_scanlines(const RgbaImage& image, int channels, bool adaptive,
     std::memcpy(line + 1, best.data(), bytes);
     prior.swap(row);
   }
+  return true;
 }
 
 /// What encoding a frame allocates, kept between frames of one thread: fresh multi-megabyte
@@ -224,9 +226,11 @@ namespace {
 /// encode_png into buffers.png (see encode_png), reusing `buffers`.
 void encode_png_into(const RgbaImage& image, int compression_level, EncodeBuffers& buffers) {
   validate_for_writing(image, compression_level);
-  const bool opaque = is_opaque(image);  // rendered frames: RGB carries a quarter less
-  const int channels = opaque ? 3 : 4;
-  filtered_scanlines(image, channels, compression_level > kUnfilteredUpTo, buffers.scanlines);
+  // Rendered frames are opaque: RGB carries a quarter less. Packed as RGB while checking
+  // that, and again as RGBA at the first pixel that is not.
+  const bool adaptive = compression_level > kUnfilteredUpTo;
+  const bool opaque = filtered_scanlines(image, 3, adaptive, buffers.scanlines);
+  if (!opaque) filtered_scanlines(image, 4, adaptive, buffers.scanlines);
   const std::vector<std::uint8_t>& scanlines = buffers.scanlines;
 
   libdeflate_compressor* compressor = compressor_for(libdeflate_level(compression_level));
