@@ -9,10 +9,10 @@
 namespace bookspin::bench {
 
 struct MujocoRenderSetup {
-  Eigen::Vector3d book_size{1, 1, 1};  ///< full edge lengths, body frame
-  int width = 1280, height = 720;      ///< pixels
-  int msaa = 4;                        ///< samples of the off-screen buffer
-  double fov_y_deg = 30.0;             ///< vertical field of view, degrees
+  Eigen::Vector3d book_size{1, 1, 1};             ///< full edge lengths, body frame
+  int width = 1280, height = 720;                 ///< pixels
+  int msaa = 4;                                   ///< samples of the off-screen buffer
+  double fov_y_deg = 30.0;                        ///< vertical field of view, degrees
   Eigen::Vector3d eye{0, 0, 8}, target{0, 0, 0};  ///< bookspin's camera, world frame (+y up)
 };
 

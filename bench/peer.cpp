@@ -4,8 +4,8 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <chrono>
-#include <memory>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -58,7 +58,8 @@ void timed_frames(int frames, DrawAndRead&& draw_and_read, const scene::Scene& s
   const auto wall_start = std::chrono::steady_clock::now();
   const double cpu_start = process_cpu_seconds();
   std::unique_ptr<output::Mp4Encoder> encoder;
-  if (file) encoder = std::make_unique<output::Mp4Encoder>(*file, pipeline::encoder_settings(scene, jobs));
+  if (file)
+    encoder = std::make_unique<output::Mp4Encoder>(*file, pipeline::encoder_settings(scene, jobs));
   for (int i = 0; i < frames; ++i) {
     RgbaImage image = draw_and_read(i);
     if (encoder) encoder->add_frame(image);
@@ -80,7 +81,8 @@ void bench_peer(const BenchContext& c) {
   }
   const int w = 1280, h = 720, frames = c.options.frames;
   scene::Scene scene = scene::parse_scene(
-      c.options.scene_path, {"render.width=" + std::to_string(w), "render.height=" + std::to_string(h)});
+      c.options.scene_path,
+      {"render.width=" + std::to_string(w), "render.height=" + std::to_string(h)});
   scene.frames = frames;
   // The book alone, framed in the whole image: what both renderers draw.
   const render::RenderSettings settings = pipeline::render_settings_for(scene, w, h, 1.0, 0.0);
@@ -149,16 +151,17 @@ void bench_peer(const BenchContext& c) {
                               " preset " + scene.render.preset;
   row("bookspin draw + read-back", own, "render::Renderer draw() and read_back(), 4x MSAA");
   row("MuJoCo mjr_render + mjr_readPixels", mujoco,
-      "free textured box of the book's size, off-screen EGL buffer, " +
-          std::to_string(setup.msaa) + "x MSAA, flipped to RGBA top-first");
+      "free textured box of the book's size, off-screen EGL buffer, " + std::to_string(setup.msaa) +
+          "x MSAA, flipped to RGBA top-first");
   row("bookspin draw + read-back + encoder", own_encoded, encoder);
   row("MuJoCo mjr_render + mjr_readPixels + encoder", mujoco_encoded, encoder);
   c.report->add({"peer", "MuJoCo / bookspin, draw + read-back", mujoco.wall / own.wall, "x",
                  "wall time; above 1: bookspin is faster"});
-  c.report->add({"peer", "MuJoCo / bookspin, draw + read-back, CPU time", mujoco.cpu / own.cpu,
-                 "x", "process CPU time, every thread (llvmpipe's too)"});
-  c.report->add({"peer", "MuJoCo / bookspin, with the encoder", mujoco_encoded.wall / own_encoded.wall,
-                 "x", "wall time, the same encoder for both"});
+  c.report->add({"peer", "MuJoCo / bookspin, draw + read-back, CPU time", mujoco.cpu / own.cpu, "x",
+                 "process CPU time, every thread (llvmpipe's too)"});
+  c.report->add({"peer", "MuJoCo / bookspin, with the encoder",
+                 mujoco_encoded.wall / own_encoded.wall, "x",
+                 "wall time, the same encoder for both"});
 }
 
 }  // namespace bookspin::bench

@@ -50,7 +50,8 @@ void write_png_with_zlib(const std::filesystem::path& path, const RgbaImage& ima
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   const bool ok = info && encode(png, info, file, image, compression_level);
   png_destroy_write_struct(&png, &info);
-  if (std::fclose(file) != 0 || !ok) throw std::runtime_error("bench: cannot write " + path.string());
+  if (std::fclose(file) != 0 || !ok)
+    throw std::runtime_error("bench: cannot write " + path.string());
   output.commit();
 }
 

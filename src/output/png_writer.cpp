@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <cerrno>
 #include <csetjmp>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <new>
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -80,7 +80,9 @@ void validate_for_writing(const RgbaImage& image, int compression_level) {
 }
 
 /// The project's level 0…9 on libdeflate's 0…12 (see encode_png).
-int libdeflate_level(int compression_level) { return compression_level == 9 ? 12 : compression_level; }
+int libdeflate_level(int compression_level) {
+  return compression_level == 9 ? 12 : compression_level;
+}
 
 /// One compressor per thread and level, kept: allocating one costs more than compressing a
 /// small frame. libdeflate compressors must not be shared between threads.
@@ -119,7 +121,7 @@ void put_chunk(std::uint8_t*& out, const char (&type)[5], const std::uint8_t* da
   put_u32(out, libdeflate_crc32(0, type_at, 4 + length));
 }
 
-/// The Paeth predictor (§9.4).
+/// The Paeth predictor (§9, PaethPredictor).
 inline std::uint8_t paeth(int a, int b, int c) {
   const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
   if (pa <= pb && pa <= pc) return static_cast<std::uint8_t>(a);
@@ -135,11 +137,20 @@ void filter_row(int type, const std::uint8_t* row, const std::uint8_t* prior, st
     const int a = i >= bpp ? row[i - bpp] : 0, b = prior[i], c = i >= bpp ? prior[i - bpp] : 0;
     int predicted = 0;
     switch (type) {
-      case 1: predicted = a; break;
-      case 2: predicted = b; break;
-      case 3: predicted = (a + b) / 2; break;
-      case 4: predicted = paeth(a, b, c); break;
-      default: break;
+      case 1:
+        predicted = a;
+        break;
+      case 2:
+        predicted = b;
+        break;
+      case 3:
+        predicted = (a + b) / 2;
+        break;
+      case 4:
+        predicted = paeth(a, b, c);
+        break;
+      default:
+        break;
     }
     out[i] = static_cast<std::uint8_t>(row[i] - predicted);
   }
@@ -148,7 +159,8 @@ void filter_row(int type, const std::uint8_t* row, const std::uint8_t* prior, st
 /// §12.8's heuristic: the sum of the filtered bytes taken as signed values, absolute.
 std::uint64_t sum_of_absolute_differences(const std::uint8_t* bytes, std::size_t n) {
   std::uint64_t sum = 0;
-  for (std::size_t i = 0; i < n; ++i) sum += static_cast<std::uint64_t>(std::abs(static_cast<std::int8_t>(bytes[i])));
+  for (std::size_t i = 0; i < n; ++i)
+    sum += static_cast<std::uint64_t>(std::abs(static_cast<std::int8_t>(bytes[i])));
   return sum;
 }
 
@@ -236,8 +248,8 @@ void encode_png_into(const RgbaImage& image, int compression_level, EncodeBuffer
   libdeflate_compressor* compressor = compressor_for(libdeflate_level(compression_level));
   std::vector<std::uint8_t>& zlib = buffers.zlib;
   zlib.resize(libdeflate_zlib_compress_bound(compressor, scanlines.size()));
-  const std::size_t zlib_size = libdeflate_zlib_compress(compressor, scanlines.data(),
-                                                         scanlines.size(), zlib.data(), zlib.size());
+  const std::size_t zlib_size = libdeflate_zlib_compress(
+      compressor, scanlines.data(), scanlines.size(), zlib.data(), zlib.size());
   if (zlib_size == 0) throw std::logic_error("encode_png: libdeflate exceeded its own bound");
 
   const std::size_t idat_chunks = (zlib_size + kMaxIdatBytes - 1) / kMaxIdatBytes;

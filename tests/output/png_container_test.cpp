@@ -150,8 +150,7 @@ TEST(PngContainer, EveryGoldenAndOddSizeDecodesThroughLibpngToTheWrittenPixels) 
         ASSERT_EQ(back.width, s.width);
         ASSERT_EQ(back.height, s.height);
         EXPECT_TRUE(back.pixels == image.pixels)
-            << s.width << "x" << s.height << (translucent ? " RGBA" : " RGB") << " level "
-            << level;
+            << s.width << "x" << s.height << (translucent ? " RGBA" : " RGB") << " level " << level;
         ++files;
       }
     }
@@ -183,8 +182,8 @@ TEST(PngContainer, ChunksAreSignatureIhdrIdatIendWithTheirCrcs) {
       const std::uint8_t* ihdr = chunks.front().data.data();
       EXPECT_EQ(be32(ihdr), static_cast<std::uint32_t>(s.width));
       EXPECT_EQ(be32(ihdr + 4), static_cast<std::uint32_t>(s.height));
-      EXPECT_EQ(ihdr[8], 8);                     // bit depth
-      EXPECT_EQ(ihdr[9], translucent ? 6 : 2);   // RGBA : RGB
+      EXPECT_EQ(ihdr[8], 8);                         // bit depth
+      EXPECT_EQ(ihdr[9], translucent ? 6 : 2);       // RGBA : RGB
       EXPECT_EQ(ihdr[10] + ihdr[11] + ihdr[12], 0);  // deflate, filter method 0, no interlace
       EXPECT_EQ(chunks.back().type, "IEND");
       EXPECT_TRUE(chunks.back().data.empty());
@@ -226,7 +225,8 @@ TEST(PngContainer, PngcheckAcceptsEveryLevelAndSize) {
         write_png(path, sample_frame(s.width, s.height, translucent), level);
         std::string output;
         EXPECT_TRUE(pngcheck_accepts(path, &output))
-            << s.width << "x" << s.height << " level " << level << ":\n" << output;
+            << s.width << "x" << s.height << " level " << level << ":\n"
+            << output;
       }
     }
   }
