@@ -4,19 +4,27 @@ JOBS ?= $(shell nproc)
 SCENES := $(wildcard scenes/*.toml)
 SWEEPS := $(wildcard sweeps/*.toml)
 
-.PHONY: all deps build figures test check render bench update-goldens clean
+.PHONY: all deps configure build bookspin figures test check render bench update-goldens clean
 all: build
 
 deps:
 	@bash scripts/install-deps.sh
 
-build: deps
+configure: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+# Everything: the program, the benchmark, the example and every test program.
+build: configure
 	cmake --build $(BUILD) -j $(JOBS)
+
+# The program alone: what figures and render run. The test programs and the benchmark are
+# built by `make test` and `make bench`, so a first `make figures` does not wait for them.
+bookspin: configure
+	cmake --build $(BUILD) -j $(JOBS) --target bookspin
 
 # The sweeps first, so that the one gallery render-all writes at the end shows it too
 # (GALLERY_EXTRA: scene files the gallery lists beside the rendered ones).
-figures: build
+figures: bookspin
 	$(BUILD)/bookspin sweep sweeps/flip-time-vs-perturbation.toml \
 	  --vary 'initial.angular_velocity[1]=1e-6:1e-2:20:log' \
 	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
@@ -35,17 +43,20 @@ check:
 	cmake --build $(BUILD) -j $(JOBS) --target unit_tests
 	cd $(BUILD) && ctest -L unit --output-on-failure -j $(JOBS)
 
-render: build
+render: bookspin
 	$(BUILD)/bookspin render $(SCENE) -o out
 
-# Pipeline against the encoder alone, resolutions, physics against MuJoCo, memory
-# (docs/performance.md): a table on stdout and out/bench.csv. Quiet machine, a few minutes.
-bench: build
+# Pipeline against the encoder alone, resolutions, physics against MuJoCo and MuJoCo's renderer,
+# memory (docs/performance.md): a table on stdout and out/bench.csv. Quiet machine, a few
+# minutes.
+bench: configure
+	cmake --build $(BUILD) -j $(JOBS) --target bookspin-bench
 	$(BUILD)/bookspin-bench -o out
 
 # Rewrites tests/golden/ from the current build (on llvmpipe, the reference) and prints, for
 # each golden, whether it is new, unchanged or changed (PSNR, share of differing pixels).
-update-goldens: build
+update-goldens: configure
+	cmake --build $(BUILD) -j $(JOBS) --target picture_tests
 	BOOKSPIN_UPDATE_GOLDENS=1 $(BUILD)/tests/picture_tests --gtest_brief=1
 
 clean:

@@ -79,8 +79,8 @@ void add_options(CLI::App& cmd, BenchOptions& options) {
   cmd.add_option("-j,--jobs", options.jobs, "As render --jobs (default: all cores)")
       ->check(CLI::Range(1, 256));
   cmd.add_option("--only", options.only,
-                 "Run only these sections: pipeline, resolution, physics, memory")
-      ->check(CLI::IsMember({"pipeline", "resolution", "physics", "memory"}))
+                 "Run only these sections: pipeline, peer, resolution, physics, memory")
+      ->check(CLI::IsMember({"pipeline", "peer", "resolution", "physics", "memory"}))
       ->take_all();
 }
 
@@ -100,6 +100,7 @@ int bench_command(const BenchOptions& options) {
   // peak (until it execs), so it must fork while the bench is still small.
   if (wanted(options, "memory")) bench_memory(context);
   if (wanted(options, "pipeline")) bench_pipeline(context);
+  if (wanted(options, "peer")) bench_peer(context);
   if (wanted(options, "resolution")) bench_resolution(context);
   if (wanted(options, "physics")) bench_physics(context);
   if (!options.out_dir.empty()) {
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
   using namespace bookspin;
   CLI::App cli{
       "bookspin-bench: time the render pipeline against the encoder alone, "
-      "resolutions, the physics against MuJoCo, and memory; print ratios",
+      "MuJoCo's renderer, resolutions, the physics against MuJoCo, and memory; print ratios",
       "bookspin-bench"};
   bench::BenchOptions options;
   bench::add_options(cli, options);

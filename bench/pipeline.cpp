@@ -12,6 +12,7 @@
 
 #include "bench/clock.hpp"
 #include "bench/sections.hpp"
+#include "bench/zlib_png.hpp"
 #include "output/mp4_encoder.hpp"
 #include "output/png_writer.hpp"
 #include "clip/clip.hpp"
@@ -115,7 +116,8 @@ Timing timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& f
 
 /// CPU seconds of each part of the render's work, summed over a clip's frames.
 struct Split {
-  double simulation = 1e300, draw = 1e300, read_back = 1e300, png = 1e300;
+  double simulation = 1e300, draw = 1e300, read_back = 1e300, png = 1e300, png_zlib = 1e300;
+  double png_bytes = 0, png_zlib_bytes = 0;  ///< file sizes summed over the frames
   charts::OverlayTimes overlays{1e300, 1e300, 1e300};
   /// Keeps, part by part, the smaller time of this and `run`.
   void keep_best(const Split& run) {
@@ -123,6 +125,9 @@ struct Split {
     draw = std::min(draw, run.draw);
     read_back = std::min(read_back, run.read_back);
     png = std::min(png, run.png);
+    png_zlib = std::min(png_zlib, run.png_zlib);
+    png_bytes = run.png_bytes;  // the same frames every round
+    png_zlib_bytes = run.png_zlib_bytes;
     overlays.panel = std::min(overlays.panel, run.overlays.panel);
     overlays.sphere = std::min(overlays.sphere, run.overlays.sphere);
     overlays.caption = std::min(overlays.caption, run.overlays.caption);
@@ -138,7 +143,7 @@ Split timed_parts(const scene::Scene& scene, const std::filesystem::path& png_fi
   charts::FrameDecorator decorator(scene);
   const clip::BodyDrawing drawing(scene.body);
   clip::ShownFrame frame;
-  Split split{0, 0, 0, 0, {}};
+  Split split{0, 0, 0, 0, 0, 0, 0, {}};
   for (int index = 0; index < scene.frames; ++index) {
     double start = process_cpu_seconds();
     const auto lap = [&start] {
@@ -156,6 +161,13 @@ Split timed_parts(const scene::Scene& scene, const std::filesystem::path& png_fi
     lap();
     output::write_png(png_file, image, scene.render.png_compression);
     split.png += lap();
+    split.png_bytes += static_cast<double>(std::filesystem::file_size(png_file));
+    lap();
+    // The yardstick: the same frame through libpng and zlib at the same level.
+    write_png_with_zlib(png_file, image, scene.render.png_compression);
+    split.png_zlib += lap();
+    split.png_zlib_bytes += static_cast<double>(std::filesystem::file_size(png_file));
+    lap();
   }
   std::filesystem::remove(png_file);
   return split;
@@ -232,7 +244,7 @@ void report_wall(BenchReport& report, const PipelineTimes& best, const scene::Sc
       r.codec + " crf " + std::to_string(r.crf) + " preset " + r.preset +
           ", frames rendered beforehand");
   row("render --no-png", best.no_png, "in-process render_clip");
-  row("render with PNGs", best.png, "PNG zlib level " + std::to_string(r.png_compression));
+  row("render with PNGs", best.png, "PNG level " + std::to_string(r.png_compression));
   row("render --no-png, 4x anisotropic filtering", best.anisotropic,
       "forced; on a software rasterizer the default is trilinear");
   row("render --no-png, render.msaa = 1", best.no_msaa, "forced; no anti-aliasing");
@@ -264,7 +276,8 @@ void report_cpu(BenchReport& report, const PipelineTimes& best, const std::strin
 }
 
 /// Per frame: the CPU time the render adds to the encoder's, and its parts.
-void report_split(BenchReport& report, const PipelineTimes& best, const Split& split, int frames) {
+void report_split(BenchReport& report, const PipelineTimes& best, const Split& split,
+                  const scene::Scene& scene, int frames) {
   const auto row = [&](const std::string& metric, double seconds, const std::string& note) {
     report.add({"pipeline split", metric + ", per frame", 1e3 * seconds / frames, "ms", note});
   };
@@ -281,7 +294,17 @@ void report_split(BenchReport& report, const PipelineTimes& best, const Split& s
   row("overlay: panel plots", split.overlays.panel, parts);
   row("overlay: momentum sphere inset", split.overlays.sphere, parts);
   row("overlay: caption", split.overlays.caption, parts);
-  row("PNG", split.png, parts + "; zlib level as the scene's, one thread");
+  const std::string level = std::to_string(scene.render.png_compression);
+  row("PNG (libdeflate, as render writes it)", split.png,
+      parts + "; level " + level + " as the scene's, one thread");
+  row("PNG through libpng and zlib (the former writer)", split.png_zlib,
+      parts + "; zlib level " + level + ", the same frames, one thread");
+  report.add({"pipeline split", "PNG libdeflate / libpng+zlib, CPU time", split.png / split.png_zlib,
+              "x", "the two rows above"});
+  report.add({"pipeline split", "PNG file (libdeflate), per frame", split.png_bytes / frames / 1e3,
+              "kB", "mean size of the frames' files"});
+  report.add({"pipeline split", "PNG file (libpng+zlib), per frame",
+              split.png_zlib_bytes / frames / 1e3, "kB", "mean size of the same frames' files"});
   row("conversion RGBA to yuv420p", best.conversion,
       "swscale inside the encoder; part of the floor, not added by the render");
 }
@@ -317,7 +340,7 @@ void bench_pipeline(const BenchContext& c) {
   const std::string what = frames_text(frames, w, h);
   report_wall(*c.report, best, scene, what, rounds);
   report_cpu(*c.report, best, what);
-  report_split(*c.report, best, split, frames);
+  report_split(*c.report, best, split, scene, frames);
 }
 
 void bench_resolution(const BenchContext& c) {

@@ -16,7 +16,7 @@ struct BenchOptions {
   int memory_frames = 10000;      ///< the long run of the memory check
   int rounds = 3;                 ///< pipeline runs alternated this many times; best of each kept
   int jobs = 0;                   ///< as render --jobs
-  std::vector<std::string> only;  ///< sections to run (pipeline, resolution, physics, memory)
+  std::vector<std::string> only;  ///< sections to run (pipeline, peer, resolution, physics, memory)
 };
 
 /// The machine cannot hold what the bench was asked to measure (exit status 1).
@@ -42,6 +42,9 @@ void bench_pipeline(const BenchContext& context);
 void bench_resolution(const BenchContext& context);
 /// ns per step and accuracy of every model × integrator, and of MuJoCo's mj_step.
 void bench_physics(const BenchContext& context);
+/// bookspin's draw + read-back against MuJoCo's renderer (mjr_render, mjr_readPixels) on the
+/// same poses at 1280×720, alone and with the encoder; skipped without MuJoCo.
+void bench_peer(const BenchContext& context);
 /// Peak resident memory of a short and a long render, each in a child process.
 void bench_memory(const BenchContext& context);
 

@@ -25,7 +25,7 @@ struct RenderArgs {
   int frames = 0;  ///< > 0 overrides time.frames
   bool no_png = false;
   int jobs = 0;              ///< worker threads; 0 = number of cores
-  int png_compression = -1;  ///< zlib level 0–9 for the frames; −1 = render.png_compression
+  int png_compression = -1;  ///< deflate level 0–9 for the frames; −1 = render.png_compression
   bool force = false;        ///< render even when OUT/<scene>/manifest.json says up to date
   bool verify = false;       ///< up-to-date check hashes every output (else sizes only)
   /// `--format mp4,webm,gif` as given (overrides render.formats); empty optional: not given.

@@ -31,7 +31,7 @@ struct ClipPaths {
 
 struct SinkOptions {
   bool write_png = true;
-  int png_compression = 1;  ///< zlib level 0–9
+  int png_compression = 1;  ///< deflate level 0–9 (output::write_png)
   int png_workers = 1;      ///< threads compressing PNGs
   output::EncoderSettings encoder;
   /// Videos to write, each of "mp4", "webm", "gif" at most once (scene::kVideoFormats);

@@ -105,13 +105,50 @@ TEST(Bench, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
     parts += ms;
   }
   EXPECT_GT(parts, 0.0) << csv;
-  EXPECT_GT(csv_value(csv, "PNG, per frame", "pipeline split"), 0.0) << csv;
+  // The PNG writer and its yardstick, the former libpng + zlib writer, on the same frames.
+  const double png = csv_value(csv, "PNG (libdeflate, as render writes it), per frame",
+                               "pipeline split");
+  const double zlib = csv_value(csv, "PNG through libpng and zlib (the former writer), per frame",
+                                "pipeline split");
+  EXPECT_GT(png, 0.0) << csv;
+  EXPECT_GT(zlib, 0.0) << csv;
+  EXPECT_NEAR(csv_value(csv, "PNG libdeflate / libpng+zlib, CPU time", "pipeline split"),
+              png / zlib, 1e-3 * png / zlib)
+      << csv;
+  EXPECT_GT(csv_value(csv, "PNG file (libdeflate), per frame", "pipeline split"), 10.0) << csv;
+  EXPECT_GT(csv_value(csv, "PNG file (libpng+zlib), per frame", "pipeline split"), 10.0) << csv;
   EXPECT_GT(csv_value(csv, "conversion RGBA to yuv420p, per frame", "pipeline split"), 0.0) << csv;
   EXPECT_LE(parts, 1e3 * csv_value(csv, "render --no-png, CPU time") / 2) << csv;
   // The renders went to a scratch directory that is gone: only the CSV is left here.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(run.dir),
                           std::filesystem::directory_iterator()),
             1);
+}
+
+// MuJoCo's renderer beside bookspin's on the same poses: both rows, with and without the
+// encoder, and their ratios; the middle frame of each written for a look.
+TEST(Bench, PeerSectionTimesMujocosRendererAgainstBookspinsOnTheSamePoses) {
+  const BenchRun run = run_bench("bench-peer", "--only peer --frames 4 --rounds 1");
+  ASSERT_EQ(run.result.status, 0) << run.result.output;
+  const std::string& csv = run.csv;
+  if (run.result.output.find("peer: skipped") != std::string::npos) {
+    GTEST_SKIP() << "bookspin-bench was built without MuJoCo";
+  }
+  const double own = csv_value(csv, "bookspin draw + read-back,", "peer");
+  const double mujoco = csv_value(csv, "MuJoCo mjr_render + mjr_readPixels,", "peer");
+  const double own_encoded = csv_value(csv, "bookspin draw + read-back + encoder", "peer");
+  const double mujoco_encoded =
+      csv_value(csv, "MuJoCo mjr_render + mjr_readPixels + encoder", "peer");
+  for (double seconds : {own, mujoco, own_encoded, mujoco_encoded}) EXPECT_GT(seconds, 0.0) << csv;
+  EXPECT_NEAR(csv_value(csv, "MuJoCo / bookspin, draw + read-back", "peer"), mujoco / own,
+              1e-3 * mujoco / own)
+      << csv;
+  EXPECT_NEAR(csv_value(csv, "MuJoCo / bookspin, with the encoder", "peer"),
+              mujoco_encoded / own_encoded, 1e-3 * mujoco_encoded / own_encoded)
+      << csv;
+  EXPECT_NE(csv.find("4 poses 1280x720, best of 1 alternated runs"), std::string::npos) << csv;
+  EXPECT_TRUE(std::filesystem::exists(run.dir / "peer-bookspin.png"));
+  EXPECT_TRUE(std::filesystem::exists(run.dir / "peer-mujoco.png"));
 }
 
 TEST(Bench, RefusesUpFrontAPipelineWhoseFramesWouldNotFitInMemory) {
