@@ -51,22 +51,22 @@ std::string model_xml(const MujocoSetup& s) {
   return xml;
 }
 
-mjModel* load_model(const std::string& xml) {
-  mjVFS vfs;
-  mj_defaultVFS(&vfs);
-  const char* name = "book.xml";
-  if (mj_makeEmptyFileVFS(&vfs, name, static_cast<int>(xml.size())) != 0)
-    throw std::runtime_error("MuJoCo: cannot create a virtual file");
-  std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, name)], xml.data(), xml.size());
-  char error[1000] = "";
-  mjModel* model = mj_loadXML(name, &vfs, error, sizeof error);
-  mj_deleteVFS(&vfs);
-  if (model == nullptr)
-    throw std::runtime_error(std::string("MuJoCo rejected the book model: ") + error);
-  return model;
-}
 
 }  // namespace
+
+mjModel* load_mjcf(const std::string& xml, const char* file_name, const char* what) {
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  if (mj_makeEmptyFileVFS(&vfs, file_name, static_cast<int>(xml.size())) != 0)
+    throw std::runtime_error("MuJoCo: cannot create a virtual file");
+  std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, file_name)], xml.data(), xml.size());
+  char error[1000] = "";
+  mjModel* model = mj_loadXML(file_name, &vfs, error, sizeof error);
+  mj_deleteVFS(&vfs);
+  if (model == nullptr)
+    throw std::runtime_error(std::string("MuJoCo rejected ") + what + ": " + error);
+  return model;
+}
 
 std::string mujoco_missing() { return {}; }
 
@@ -81,7 +81,7 @@ struct MujocoBook::Impl {
 };
 
 MujocoBook::MujocoBook(const MujocoSetup& setup) : impl_(std::make_unique<Impl>()) {
-  impl_->model = load_model(model_xml(setup));
+  impl_->model = load_mjcf(model_xml(setup), "book.xml", "the book model");
   impl_->data = mj_makeData(impl_->model);
   if (impl_->data == nullptr) throw std::runtime_error("MuJoCo: cannot allocate mjData");
   impl_->omega0 = setup.omega0_body;

@@ -6,6 +6,10 @@
 
 #include "physics/book.hpp"
 
+#ifdef BOOKSPIN_HAVE_MUJOCO
+#include <mujoco/mujoco.h>
+#endif
+
 namespace bookspin::bench {
 
 struct MujocoSetup {
@@ -41,5 +45,12 @@ class MujocoBook {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+#ifdef BOOKSPIN_HAVE_MUJOCO
+/// Loads an MJCF model from `xml` through MuJoCo's virtual file system, as file `file_name`.
+/// Throws std::runtime_error naming `what` (e.g. "the book model") if MuJoCo rejects it. The
+/// caller owns the model (mj_deleteModel).
+mjModel* load_mjcf(const std::string& xml, const char* file_name, const char* what);
+#endif
 
 }  // namespace bookspin::bench

@@ -1,5 +1,7 @@
 #include "bench/mujoco_render.hpp"
 
+#include "bench/mujoco.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -66,20 +68,6 @@ std::string model_xml(const MujocoRenderSetup& s) {
   return xml;
 }
 
-mjModel* load_model(const std::string& xml) {
-  mjVFS vfs;
-  mj_defaultVFS(&vfs);
-  const char* name = "book-render.xml";
-  if (mj_makeEmptyFileVFS(&vfs, name, static_cast<int>(xml.size())) != 0)
-    throw std::runtime_error("MuJoCo: cannot create a virtual file");
-  std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, name)], xml.data(), xml.size());
-  char error[1000] = "";
-  mjModel* model = mj_loadXML(name, &vfs, error, sizeof error);
-  mj_deleteVFS(&vfs);
-  if (model == nullptr)
-    throw std::runtime_error(std::string("MuJoCo rejected the render model: ") + error);
-  return model;
-}
 
 std::string egl_error(const char* what) {
   char text[96];
@@ -146,7 +134,7 @@ MujocoRenderer::MujocoRenderer(const MujocoRenderSetup& setup) : impl_(std::make
   Impl& m = *impl_;
   m.setup = setup;
   m.make_context();
-  m.model = load_model(model_xml(setup));
+  m.model = load_mjcf(model_xml(setup), "book-render.xml", "the render model");
   m.data = mj_makeData(m.model);
   if (m.data == nullptr) throw std::runtime_error("MuJoCo: cannot allocate mjData");
   mjv_defaultScene(&m.scene);
