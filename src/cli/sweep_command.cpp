@@ -77,7 +77,8 @@ int sweep_command(const SweepOptions& options) {
     if (!options.shard.empty()) {
       result = jobs::run_sweep(request);
     } else {
-      const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+      request.scene = scene::parse_scene(options.scene_path, options.overrides);
+      const scene::Scene& scene = *request.scene;
       const cache::CacheOutcome outcome = run_cached(
           {std::filesystem::path(options.out_dir) / scene.name / "sweep-manifest.json",
            cache::manifest_head("sweep", sweep_options_json(options), scene), options.out_dir,

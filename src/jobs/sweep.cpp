@@ -214,7 +214,8 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepTable& table) {
 }
 
 SweepResult run_sweep(const SweepRequest& request) {
-  const scene::Scene base = scene::parse_scene(request.scene_path, request.overrides);
+  const scene::Scene base =
+      request.scene ? *request.scene : scene::parse_scene(request.scene_path, request.overrides);
   if (!base.compare.empty()) {
     throw InputError(request.scene_path.string() +
                      ": a comparison scene ([[compare]]) has one run per tile; sweep a "

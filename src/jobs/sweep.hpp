@@ -40,6 +40,9 @@ struct SweepTable {
 struct SweepRequest {
   std::filesystem::path scene_path;
   std::vector<std::string> overrides;  ///< the user's own --set, applied before the grid's
+  /// scene_path parsed with `overrides`, when the caller has it already (it is then not
+  /// parsed again); empty: run_sweep parses it.
+  std::optional<scene::Scene> scene;
   std::vector<VaryRange> ranges;
   MeasureList measures;
   int jobs = 0;  ///< threads; 0 = std::thread::hardware_concurrency()
