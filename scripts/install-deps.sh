@@ -13,7 +13,11 @@ packages=(
   clang libclang-rt-14-dev
   chromium chromium-driver python3-selenium
   slurm-wlm munge
+  emscripten
 )
+# The explorer page (web/): node and npm, unless a node is installed already (e.g. NodeSource's,
+# which carries its own npm and conflicts with Debian's npm package).
+command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

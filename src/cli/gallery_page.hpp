@@ -16,6 +16,9 @@ struct GalleryEntry {
   std::string webm;               ///< "<name>.webm" if rendered (linked)
   std::string gif;                ///< "<name>.gif" if rendered (linked)
   std::string glb;                ///< "<name>.glb" from `bookspin export --gltf` (linked)
+  /// "explorer.html?scene=<name>" where OUT/explorer.html exists (web/build.sh) and the
+  /// scene's body is not a mesh (the explorer holds the book and the presets); else empty.
+  std::string explorer;
   std::string poster;             ///< a frame PNG shown before the clip plays
   std::string plot;               ///< "<name>-plot.png"
   std::string sweep;              ///< "<name>-sweep.png" (`bookspin sweep`)

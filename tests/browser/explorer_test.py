@@ -1,0 +1,274 @@
+#!/usr/bin/env python3
+"""The explorer page (web/, docs/explorer.md) in a real browser: headless Chromium driven by
+Selenium, the page opened straight from disk (file://) with the network off.
+
+Builds out/explorer.html with web/build.sh into BINARY_DIR/test-output/explorer and checks:
+  - the page loads with no console error and draws the body: the book's colours (its
+    dark blue cover, its cream pages) fill part of the 3D view, the background the rest;
+  - ω at t = 100 in the page equals `bookspin simulate` of the same settings to 1e-10
+    relative, for the rigid models (matrix and quaternion, several integrators, with and
+    without normalization) and the exact model, the book and the T-handle;
+  - wiring: the T-handle scene with the spin axis set to the largest axis through the page's
+    select shows no flip in 300 time units (driven through the time slider); set to the
+    intermediate axis it flips;
+  - compare mode (its checkbox) draws two trails on the momentum sphere (both colours);
+  - the page's URL, opened anew, restores the same state and the same ω.
+Screenshots go to BINARY_DIR/test-output/browser/explorer-*.png.
+
+Usage: explorer_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
+Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
+under CI=true, where that is a failure.
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+SKIP = 77
+TOL = 1e-10
+
+
+def fail(message):
+    print(f"FAIL: {message}", file=sys.stderr)
+    sys.exit(1)
+
+
+def missing(what):
+    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
+        fail(f"{what} (CI=true: the explorer test must run; install with scripts/install-deps.sh)")
+    print(f"SKIPPED: {what}; install it (scripts/install-deps.sh) to run the explorer test")
+    sys.exit(SKIP)
+
+
+def run(cmd, **kw):
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kw)
+    if r.returncode != 0:
+        fail(f"{' '.join(map(str, cmd))} exited {r.returncode}:\n{r.stdout}")
+    return r.stdout
+
+
+def open_browser(chromium, driver_path, profile):
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    options = webdriver.ChromeOptions()
+    options.binary_location = chromium
+    for arg in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage",
+                "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+                "--disable-background-networking", "--disable-component-update",
+                "--disable-sync", "--no-first-run", "--window-size=1280,720",
+                "--proxy-server=http://127.0.0.1:9", "--proxy-bypass-list=<-loopback>",
+                f"--user-data-dir={profile}"):
+        options.add_argument(arg)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    driver = webdriver.Chrome(service=Service(executable_path=driver_path), options=options)
+    # The page's viewport at the projector's 1280×720 (the window size includes no chrome
+    # in headless mode, but fix it to be sure).
+    driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                           {"width": 1280, "height": 720, "deviceScaleFactor": 1, "mobile": False})
+    return driver
+
+
+def load(driver, url):
+    driver.get(url)
+    for _ in range(300):
+        if driver.execute_script("return !!(window.explorer && window.explorer.ready)"):
+            return
+        time.sleep(0.1)
+    fail(f"the page never became ready: {url}\n{driver.get_log('browser')}")
+
+
+def console_errors(driver):
+    return [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+
+
+def simulate_omega(bookspin, scene, settings):
+    """ω (body) at t = 100 from `bookspin simulate`: steps of dt 0.01, rows every 100 steps."""
+    sets = []
+    for key, value in settings.items():
+        sets += ["--set", f"{key}={value}"]
+    out = run([bookspin, "simulate", scene, *sets, "--set", "time.dt=0.01",
+               "--set", "time.steps_per_frame=100", "--set", "time.frames=101"])
+    rows = [r for r in out.strip().splitlines() if r and r[0].isdigit()]
+    last = rows[-1].split(",")
+    if abs(float(last[1]) - 100.0) > 1e-9:
+        fail(f"bookspin simulate ended at t = {last[1]}, not 100")
+    return [float(x) for x in last[2:5]]
+
+
+def view_pixels(driver):
+    """Counts in the 3D view: background, dark blue (cover), cream (pages), other."""
+    return driver.execute_script("""
+      const v = document.getElementById('view');
+      const c = document.createElement('canvas'); c.width = v.width; c.height = v.height;
+      const g = c.getContext('2d'); g.drawImage(v, 0, 0);
+      const d = g.getImageData(0, 0, c.width, c.height).data;
+      let bg = 0, blue = 0, cream = 0, other = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        const r = d[i], gg = d[i+1], b = d[i+2];
+        if (Math.abs(r - 0x20) < 6 && Math.abs(gg - 0x24) < 6 && Math.abs(b - 0x2c) < 6) bg++;
+        else if (b > r + 12 && b >= gg && b > 35) blue++;
+        else if (r > 150 && gg > 140 && b > 110 && r >= b) cream++;
+        else other++;
+      }
+      return {bg, blue, cream, other, total: d.length / 4};
+    """)
+
+
+def sphere_colours(driver):
+    return driver.execute_script("""
+      const v = document.getElementById('sphere');
+      const d = v.getContext('2d').getImageData(0, 0, v.width, v.height).data;
+      const near = (i, r, g, b) => Math.abs(d[i]-r) + Math.abs(d[i+1]-g) + Math.abs(d[i+2]-b) < 30;
+      let first = 0, second = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        if (near(i, 0xe8, 0xb0, 0x0b)) first++;
+        if (near(i, 0x35, 0xc0, 0xf0)) second++;
+      }
+      return [first, second];
+    """)
+
+
+def main(bookspin, source, binary):
+    source, binary = Path(source), Path(binary)
+    try:
+        import selenium  # noqa: F401
+    except ImportError:
+        missing(f"python module selenium not found by {sys.executable}")
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    driver_path = shutil.which("chromedriver") or (
+        "/usr/bin/chromedriver" if os.path.exists("/usr/bin/chromedriver") else None)
+    if not chromium:
+        missing("chromium not found on PATH")
+    if not driver_path:
+        missing("chromedriver not found (Debian package chromium-driver)")
+    if not shutil.which("em++"):
+        missing("em++ not found (Debian package emscripten)")
+    if not shutil.which("npm"):
+        missing("npm not found (Debian packages nodejs, npm)")
+
+    out = binary / "test-output" / "explorer"
+    shots = binary / "test-output" / "browser"
+    shots.mkdir(parents=True, exist_ok=True)
+    run(["bash", str(source / "web" / "build.sh"), str(binary), str(out),
+         *sorted(str(p) for p in (source / "scenes").glob("*.toml"))])
+    page = (out / "explorer.html").resolve().as_uri()
+    book_scene = str(source / "scenes" / "fig09-matrix-unstable-x.toml")
+    t_handle = str(source / "scenes" / "t-handle-dzhanibekov.toml")
+
+    profile = tempfile.mkdtemp(prefix="bookspin-explorer-")
+    driver = open_browser(chromium, driver_path, profile)
+    try:
+        # 1. Opens from disk, no console error, draws the book.
+        load(driver, page + "?scene=fig09-matrix-unstable-x")
+        time.sleep(1.0)
+        errors = console_errors(driver)
+        if errors:
+            fail(f"console errors on load: {errors}")
+        px = view_pixels(driver)
+        driver.save_screenshot(str(shots / "explorer-book.png"))
+        if px["bg"] < 0.5 * px["total"]:
+            fail(f"the view is not mostly background: {px}")
+        if px["blue"] + px["cream"] < 0.01 * px["total"] or px["blue"] == 0 or px["cream"] == 0:
+            fail(f"the book's colours (blue cover, cream pages) are not drawn: {px}")
+        print(f"view pixels: {px}")
+
+        # 2. ω at t = 100 against bookspin simulate.
+        cases = [
+            (book_scene, {"model.kind": '"rigid-matrix"', "model.integrator": '"euler"', "model.normalize": "true"}),
+            (book_scene, {"model.kind": '"rigid-matrix"', "model.integrator": '"rk4"', "model.normalize": "false"}),
+            (book_scene, {"model.kind": '"rigid-matrix"', "model.integrator": '"implicit-midpoint"', "model.normalize": "false"}),
+            (book_scene, {"model.kind": '"rigid-quaternion"', "model.integrator": '"euler"', "model.normalize": "true"}),
+            (book_scene, {"model.kind": '"rigid-quaternion"', "model.integrator": '"splitting"', "model.normalize": "false"}),
+            (book_scene, {"model.kind": '"rigid-quaternion"', "model.integrator": '"splitting4"', "model.normalize": "true"}),
+            (book_scene, {"model.kind": '"exact"'}),
+            (t_handle, {"model.kind": '"exact"'}),
+            (t_handle, {"model.kind": '"rigid-quaternion"', "model.integrator": '"rk4"', "model.normalize": "true"}),
+        ]
+        worst = 0.0
+        for scene, settings in cases:
+            expected = simulate_omega(bookspin, scene, settings)
+            q = {"scene": Path(scene).stem, "dt": "0.01",
+                 "model": settings["model.kind"].strip('"'),
+                 "integrator": settings.get("model.integrator", '"euler"').strip('"'),
+                 "normalize": "1" if settings.get("model.normalize") == "true" else "0"}
+            url = page + "?" + "&".join(f"{k}={v}" for k, v in q.items())
+            load(driver, url)
+            got = driver.execute_script("return window.explorer.omegaAt(100)")[0]
+            norm = max(abs(x) for x in expected)
+            rel = max(abs(a - b) for a, b in zip(got, expected)) / norm
+            worst = max(worst, rel)
+            print(f"{Path(scene).stem} {settings}: page {got} simulate {expected} rel {rel:.2e}")
+            if not rel <= TOL:
+                fail(f"ω at t = 100 differs by {rel:.3e} relative (> {TOL}) for {scene} {settings}: "
+                     f"page {got}, bookspin simulate {expected}")
+        print(f"ω agreement: worst {worst:.2e} relative over {len(cases)} cases")
+
+        # 3. Wiring through the controls: largest axis, no flip; intermediate, flips.
+        from selenium.webdriver.support.ui import Select
+        load(driver, page + "?scene=t-handle-dzhanibekov")
+        flips = {}
+        for axis in ("largest", "intermediate"):
+            Select(driver.find_element("id", "axis")).select_by_value(axis)
+            driver.find_element("id", "rate").clear()
+            driver.find_element("id", "rate").send_keys("2\n")
+            driver.execute_script("""
+              const s = document.getElementById('slider');
+              s.max = 300; s.value = 300; s.dispatchEvent(new Event('input'));""")
+            state = driver.execute_script("return window.explorer.state()")
+            if state["axis"] != axis or abs(state["t"] - 300) > 1e-6:
+                fail(f"the controls did not set axis {axis} and t = 300: {state}")
+            flips[axis] = driver.execute_script("return window.explorer.flips()")[0]
+            text = driver.find_element("id", "status").text
+            if f"flips {flips[axis]}" not in text:
+                fail(f"the readout does not show the flips: {text!r}")
+            driver.save_screenshot(str(shots / f"explorer-t-handle-{axis}.png"))
+        print(f"flips in 300 time units: {flips}")
+        if flips["largest"] != 0:
+            fail(f"spin about the largest axis flipped {flips['largest']} times in 300 time units")
+        if flips["intermediate"] < 1:
+            fail("spin about the intermediate axis did not flip in 300 time units")
+
+        # 4. Compare mode: two trails on the sphere.
+        load(driver, page + "?scene=fig09-matrix-unstable-x&dt=0.01")
+        driver.find_element("id", "compare").click()
+        Select(driver.find_element("id", "model2")).select_by_value("exact")
+        driver.execute_script("""
+          const s = document.getElementById('slider');
+          s.max = 200; s.value = 200; s.dispatchEvent(new Event('input'));""")
+        trails = driver.execute_script("return window.explorer.trails()")
+        colours = sphere_colours(driver)
+        driver.save_screenshot(str(shots / "explorer-compare.png"))
+        print(f"compare: trails {trails}, sphere pixels of each colour {colours}")
+        if len(trails) != 2 or min(t["points"] for t in trails) < 100:
+            fail(f"compare mode does not run two methods: {trails}")
+        if min(colours) < 30:
+            fail(f"the sphere does not show both trails: pixels {colours}")
+
+        # 5. The URL restores the state.
+        url = driver.current_url
+        before = driver.execute_script("return window.explorer.state()")
+        omega = driver.execute_script("return window.explorer.omegaAt(50)")
+        load(driver, url)
+        after = driver.execute_script("return window.explorer.state()")
+        if json.dumps(before, sort_keys=True) != json.dumps(after, sort_keys=True):
+            fail(f"the shared URL did not restore the state:\n{before}\n{after}")
+        if driver.execute_script("return window.explorer.omegaAt(50)") != omega:
+            fail("the shared URL does not reproduce the run")
+        errors = console_errors(driver)
+        if errors:
+            fail(f"console errors: {errors}")
+        print(f"shared URL restores the state: {url.split('?', 1)[1]}")
+    finally:
+        driver.quit()
+        shutil.rmtree(profile, ignore_errors=True)
+    print("OK")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        sys.exit(__doc__)
+    main(*sys.argv[1:])

@@ -1,0 +1,235 @@
+// embind bindings of src/physics for the browser explorer (docs/explorer.md).
+// The physics is compiled unchanged; this file only translates between Eigen and JavaScript
+// arrays. Shapes: corners 3×8 and surfaces 3×V are flattened column by column (x, y, z of
+// column 0, then column 1, …), body frame or world frame as stated on each method.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "physics/body.hpp"
+#include "physics/book.hpp"
+#include "physics/polhode.hpp"
+#include "physics/presets.hpp"
+#include "physics/simulator.hpp"
+
+namespace {
+
+using namespace bookspin::physics;
+using emscripten::val;
+
+/// A Float64Array copy of `n` doubles.
+val f64(const double* data, std::size_t n) {
+  val out = val::global("Float64Array").new_(n);
+  out.call<void>("set", val(emscripten::typed_memory_view(n, data)));
+  return out;
+}
+
+val f32(const float* data, std::size_t n) {
+  val out = val::global("Float32Array").new_(n);
+  out.call<void>("set", val(emscripten::typed_memory_view(n, data)));
+  return out;
+}
+
+val i32(const int* data, std::size_t n) {
+  val out = val::global("Int32Array").new_(n);
+  out.call<void>("set", val(emscripten::typed_memory_view(n, data)));
+  return out;
+}
+
+val vec3(const Eigen::Vector3d& v) { return f64(v.data(), 3); }
+
+BodyShape shape_of(const std::string& name) {
+  BodyShape shape{};
+  if (!parse_body_shape(name, shape) || shape == BodyShape::mesh)
+    throw std::invalid_argument("unknown body '" + name +
+                                "' (expected book, t-handle, tennis-racket, phone)");
+  return shape;
+}
+
+/// The book of `size` (a, b, c, length units) and `mass`, or a preset of `mass` and `scale`
+/// (docs/physics.md §1, §12).
+Body make_body(const std::string& name, double mass, double scale, double a, double b,
+               double c) {
+  const BodyShape shape = shape_of(name);
+  if (shape == BodyShape::book) {
+    Book book;
+    book.size = {a, b, c};
+    book.mass = mass;
+    return book_body(book);
+  }
+  return preset_body(shape, mass, scale);
+}
+
+/// One simulator with the settings of the page: body, model, integrator, toggles.
+class Session {
+ public:
+  Session(const std::string& body, double mass, double scale, double a, double b, double c)
+      : body_(make_body(body, mass, scale, a, b, c)) {}
+
+  /// Creates the simulator (docs/physics.md §5, §9, §10). Throws std::invalid_argument (a
+  /// JavaScript exception) for an unknown name or an integrator the model does not support.
+  void configure(const std::string& model, const std::string& integrator, bool normalize,
+                 bool damping, double spring_constant, int lattice_cells) {
+    ModelConfig config;
+    if (!parse_model_kind(model, config.kind))
+      throw std::invalid_argument("unknown model '" + model + "'");
+    if (!parse_integrator(integrator, config.integrator))
+      throw std::invalid_argument("unknown integrator '" + integrator + "'");
+    config.normalize = normalize;
+    config.damping = damping;
+    config.spring_constant = spring_constant;
+    config.lattice_cells = lattice_cells;
+    simulator_ = make_simulator(body_, config);
+    steps_ = 0;
+  }
+
+  /// Resets to identity orientation at t = 0: body-frame ω0 (rad per time unit) and the
+  /// seeded jiggle of L (docs/physics.md §5).
+  void reset(double wx, double wy, double wz, double jiggle, double seed) {
+    InitialState initial;
+    initial.omega0_body = {wx, wy, wz};
+    initial.jiggle = jiggle;
+    initial.seed = static_cast<std::uint64_t>(seed);
+    sim().reset(initial);
+    steps_ = 0;
+  }
+
+  /// Advances `n` steps of `dt`; stops early (returns false) when the state stops being finite.
+  bool step(double dt, int n) {
+    for (int i = 0; i < n; ++i) {
+      sim().step(dt);
+      ++steps_;
+      if (!sim().finite()) return false;
+    }
+    return true;
+  }
+
+  double steps() const { return static_cast<double>(steps_); }
+  bool finite() const { return simulator_ && simulator_->finite(); }
+  std::string divergence_reason() const {
+    return simulator_ ? simulator_->divergence_reason() : std::string();
+  }
+
+  /// Diagnostics of docs/physics.md §9 as a plain object (vectors as Float64Array(3)).
+  val diagnostics() const {
+    const Diagnostics d = sim().diagnostics();
+    val out = val::object();
+    out.set("t", d.t);
+    out.set("omega_body", vec3(d.omega_body));
+    out.set("L", vec3(d.L));
+    out.set("energy_kinetic", d.energy_kinetic);
+    out.set("energy_potential", d.energy_potential);
+    out.set("energy_total", d.energy_total);
+    out.set("cos_axis_L", vec3(d.cos_axis_L));
+    out.set("strain_max", d.strain_max);
+    out.set("orthogonality_error", d.orthogonality_error);
+    out.set("quaternion_norm", d.quaternion_norm);
+    out.set("cos_principal_L", vec3(d.cos_principal_L));
+    out.set("momentum_direction", vec3(momentum_direction_body(d)));
+    return out;
+  }
+
+  /// World corners, 3×8 column-major (24 numbers).
+  val corners() const {
+    const Corners c = sim().corners();
+    return f64(c.data(), 24);
+  }
+  /// The lattice's deformed surface 3×V (world), empty otherwise.
+  val deformed_surface() const {
+    const Eigen::Matrix3Xd s = sim().deformed_surface();
+    return f64(s.data(), static_cast<std::size_t>(s.size()));
+  }
+
+  /// Principal moments about body x, y, z (mass·length²).
+  val moments() const { return vec3(body_.moments); }
+  /// Body axes sorted by ascending moment (Int32Array(3)).
+  val principal_order() const {
+    const std::array<int, 3> o = bookspin::physics::principal_order(body_.moments);
+    return i32(o.data(), 3);
+  }
+  /// The cage's 8 body-frame corners, 3×8 column-major; the book: its own corners.
+  val body_corners() const {
+    const Corners c = body_.cage.body_corners();
+    return f64(c.data(), 24);
+  }
+  val cage_size() const { return vec3(body_.cage.size); }
+  /// Surface vertices 3×V (principal frame), triangles 3×N, face colours 3×N (linear RGB);
+  /// empty for the book.
+  val surface_vertices() const {
+    return f64(body_.vertices.data(), static_cast<std::size_t>(body_.vertices.size()));
+  }
+  val surface_triangles() const {
+    return i32(body_.triangles.data(), static_cast<std::size_t>(body_.triangles.size()));
+  }
+  val surface_colours() const {
+    return f32(body_.face_colours.data(), static_cast<std::size_t>(body_.face_colours.size()));
+  }
+
+ private:
+  Simulator& sim() const {
+    if (!simulator_) throw std::logic_error("Session: configure() before use");
+    return *simulator_;
+  }
+  Body body_;
+  std::unique_ptr<Simulator> simulator_;
+  long long steps_ = 0;
+};
+
+/// The polhode family of moments (Ix, Iy, Iz) (docs/physics.md §15): an array of
+/// {points: Float64Array(3·n) body frame, separatrix, pole_axis, energy_ratio}.
+val polhodes(double ix, double iy, double iz, int levels, double max_step) {
+  const std::vector<Polhode> family = polhode_family({ix, iy, iz}, levels, max_step);
+  val out = val::array();
+  for (const Polhode& p : family) {
+    std::vector<double> flat;
+    flat.reserve(p.points.size() * 3);
+    for (const Eigen::Vector3d& u : p.points) flat.insert(flat.end(), {u.x(), u.y(), u.z()});
+    val curve = val::object();
+    curve.set("points", f64(flat.data(), flat.size()));
+    curve.set("separatrix", p.separatrix);
+    curve.set("pole_axis", p.pole_axis);
+    curve.set("energy_ratio", p.energy_ratio);
+    out.call<void>("push", curve);
+  }
+  return out;
+}
+
+bool supports_names(const std::string& model, const std::string& integrator) {
+  ModelKind kind{};
+  Integrator in{};
+  return parse_model_kind(model, kind) && parse_integrator(integrator, in) && supports(kind, in);
+}
+
+std::string error_message(std::intptr_t pointer) {
+  return reinterpret_cast<const std::exception*>(pointer)->what();
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(bookspin_physics) {
+  emscripten::class_<Session>("Session")
+      .constructor<std::string, double, double, double, double, double>()
+      .function("configure", &Session::configure)
+      .function("reset", &Session::reset)
+      .function("step", &Session::step)
+      .function("steps", &Session::steps)
+      .function("finite", &Session::finite)
+      .function("divergenceReason", &Session::divergence_reason)
+      .function("diagnostics", &Session::diagnostics)
+      .function("corners", &Session::corners)
+      .function("deformedSurface", &Session::deformed_surface)
+      .function("moments", &Session::moments)
+      .function("principalOrder", &Session::principal_order)
+      .function("bodyCorners", &Session::body_corners)
+      .function("cageSize", &Session::cage_size)
+      .function("surfaceVertices", &Session::surface_vertices)
+      .function("surfaceTriangles", &Session::surface_triangles)
+      .function("surfaceColours", &Session::surface_colours);
+  emscripten::function("polhodes", &polhodes);
+  emscripten::function("supports", &supports_names);
+  emscripten::function("errorMessage", &error_message);
+}
