@@ -70,6 +70,8 @@ void add_render(Members& m, const RenderOptions& r, const std::filesystem::path&
   m.emplace_back("render.msaa", std::to_string(r.msaa));
   m.emplace_back("render.panel", boolean(r.panel));
   m.emplace_back("render.sphere", boolean(r.sphere));
+  // Only when on, so that the canonical form (and the manifests) of every other scene stay.
+  if (r.poinsot) m.emplace_back("render.poinsot", boolean(r.poinsot));
 }
 
 }  // namespace

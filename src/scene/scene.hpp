@@ -40,6 +40,10 @@ struct RenderOptions {
   /// body-frame L/|L| with its trail, drawn at the left edge of the book's part of the frame
   /// (a comparison: one trail per tile, atop the plot column).
   bool sphere = false;
+  /// Poinsot's construction inset (docs/physics.md §16): the inertia ellipsoid rolling on the
+  /// invariable plane in the world frame, with the polhode and the herpolhode so far; at the
+  /// top of the plot column with render.panel, else at the right edge. Single runs only.
+  bool poinsot = false;
 };
 
 /// One tile of a comparison scene (`[[compare]]`): the scene's book, initial state, time
