@@ -5,6 +5,7 @@
 
 #include "charts/panel.hpp"
 #include "charts/sphere_view.hpp"
+#include "charts/poinsot_view.hpp"
 
 namespace bookspin::charts {
 
@@ -84,7 +85,9 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
   double centre_x = 0.5 * image.width;
   if (scene.render.panel) {
     const PixelRect rect = panel_rect(image.width, image.height);
-    draw_panel(image, rect, panel_plots(single_run(scene, history), clip_end_time(scene), t));
+    // With Poinsot's construction on top of the column, the plots below it.
+    const PixelRect plots = scene.render.poinsot ? split_for_sphere(rect).second : rect;
+    draw_panel(image, plots, panel_plots(single_run(scene, history), clip_end_time(scene), t));
     caption.max_width = rect.x - 0.03 * image.height;  // keep clear of the panel
     centre_x = 0.5 * rect.x;
     if (times) times->panel += timer.lap();
@@ -98,6 +101,14 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
           sphere_spec(sphere_moments(scene), {}));
     }
     sphere_->draw(image, sphere_trails({SphereRun{&history, palette_colour(0)}}));
+    if (times) times->sphere += timer.lap();
+  }
+  if (scene.render.poinsot && !history.orientation.empty()) {
+    const PixelRect column = panel_rect(image.width, image.height);
+    overlay::draw_poinsot(image,
+                          poinsot_rect(image.width, image.height,
+                                       scene.render.panel ? &column : nullptr),
+                          poinsot_spec(sphere_moments(scene), history));
     if (times) times->sphere += timer.lap();
   }
   caption_.draw(image, caption_for(scene, t, diverged_at), caption);

@@ -3,11 +3,12 @@
 #include <cmath>
 
 #include "analysis/motion.hpp"
+#include "physics/poinsot.hpp"
 #include "physics/polhode.hpp"
 
 namespace bookspin::charts {
 
-void DiagnosticsHistory::add(const physics::Diagnostics& d) {
+void DiagnosticsHistory::add(const physics::Diagnostics& d, const physics::Corners* corners) {
   if (t.empty()) energy0 = d.energy_total;
   t.push_back(d.t);
   omega_x.push_back(d.omega_body.x());
@@ -20,6 +21,8 @@ void DiagnosticsHistory::add(const physics::Diagnostics& d) {
   quaternion_deviation.push_back(d.quaternion_norm - 1.0);
   orthogonality_error.push_back(d.orthogonality_error);
   momentum_direction.push_back(physics::momentum_direction_body(d));
+  angular_momentum.push_back(d.L);
+  if (corners) orientation.push_back(physics::rotation_from_corners(*corners));
 }
 
 PanelRun::PanelRun(const scene::Scene& scene, const DiagnosticsHistory& history, std::string label)

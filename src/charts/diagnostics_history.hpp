@@ -18,10 +18,16 @@ struct DiagnosticsHistory {
   std::vector<double> orthogonality_error;        ///< ‖RᵀR − I‖_F
   /// u = RᵀL/|L|, body frame, unit (physics::momentum_direction_body; docs/physics.md §15)
   std::vector<Eigen::Vector3d> momentum_direction;
+  /// L, world frame (the invariable plane's normal, docs/physics.md §16)
+  std::vector<Eigen::Vector3d> angular_momentum;
+  /// R, body → world, from the corners (physics::rotation_from_corners); one per sample when
+  /// add() was given the corners, else empty
+  std::vector<Eigen::Matrix3d> orientation;
   double energy0 = 0.0;  ///< E of the first sample
 
-  /// Appends one frame's sample; the first sample fixes E0.
-  void add(const physics::Diagnostics& d);
+  /// Appends one frame's sample; the first sample fixes E0. With `corners` (3×8, world)
+  /// also the orientation.
+  void add(const physics::Diagnostics& d, const physics::Corners* corners = nullptr);
   std::size_t size() const { return t.size(); }
 };
 

@@ -19,6 +19,7 @@ struct InFlight {
   double t = 0.0;
   std::optional<double> diverged_at;
   physics::Diagnostics diagnostics;
+  physics::Corners corners;  ///< for the orientation (Poinsot's construction)
   bool fresh = false;  ///< a newly simulated pose (else the held last finite one)
 };
 
@@ -35,7 +36,7 @@ class FrameFinisher {
   void finish(RgbaImage image) {
     InFlight frame = std::move(in_flight_.front());
     in_flight_.pop_front();
-    if (frame.fresh) history_.add(frame.diagnostics);
+    if (frame.fresh) history_.add(frame.diagnostics, &frame.corners);
     decorator_.decorate(image, frame.t, frame.diverged_at, history_);
     physics::Diagnostics row = frame.diagnostics;
     row.t = frame.t;
@@ -75,7 +76,7 @@ ClipResult render_single(const ClipRequest& request) {
     result.diverged_at = frame.diverged_at;
     renderer.submit(drawing.input_for(frame.pose));
     finisher.expect({index, frame.t, frame.diverged_at, frame.pose.diagnostics,
-                     frame.history.size() > samples});
+                     frame.pose.corners, frame.history.size() > samples});
     // While this frame is drawn and read back, the previous one is decorated and queued.
     if (auto spare = sinks.spare_frame()) renderer.recycle(std::move(*spare));
     if (auto image = renderer.collect()) finisher.finish(std::move(*image));

@@ -13,7 +13,7 @@ void advance(analysis::FrameSource& source, int index, const scene::Scene& scene
   const bool fresh = source.next(frame.pose);
   frame.diverged_at = source.diverged_at();
   frame.t = fresh ? frame.pose.diagnostics.t : index * scene.steps_per_frame * scene.dt;
-  if (fresh) frame.history.add(frame.pose.diagnostics);
+  if (fresh) frame.history.add(frame.pose.diagnostics, &frame.pose.corners);
 }
 
 ShownFrame simulate_to(const scene::Scene& scene, int index) {

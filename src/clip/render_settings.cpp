@@ -6,6 +6,7 @@
 #include "clip/body_drawing.hpp"
 #include "charts/panel.hpp"
 #include "charts/sphere_view.hpp"
+#include "charts/poinsot_view.hpp"
 
 namespace bookspin::clip {
 
@@ -61,7 +62,12 @@ render::RenderSettings render_settings_for(const scene::Scene& scene) {
     const PixelRect inset = charts::sphere_rect(width, height, share * width);
     left = std::min(share - 0.1, (inset.x + inset.width) / width);
   }
-  return render_settings_for(scene, width, height, share, left);
+  // Without the panel, Poinsot's construction takes the right edge: the body is framed left
+  // of it.
+  double right = share;
+  if (scene.render.poinsot && !scene.render.panel)
+    right = std::max(left + 0.1, charts::poinsot_rect(width, height, nullptr).x / width);
+  return render_settings_for(scene, width, height, right, left);
 }
 
 render::FrameInput frame_input_for(const physics::Pose& pose) {

@@ -180,6 +180,7 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   o.png_compression = static_cast<int>(r.integer("render.png_compression", 1, 0, 9));
   o.panel = r.boolean("render.panel", false);
   o.sphere = r.boolean("render.sphere", false);
+  o.poinsot = r.boolean("render.poinsot", false);
   o.anisotropy = static_cast<int>(r.integer("render.anisotropy", 0, 0, 16));
   o.msaa = static_cast<int>(r.integer("render.msaa", o.msaa, 1, 8));
   o.formats = read_formats(r, "render.formats", o.formats);
@@ -325,6 +326,8 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   s.compare = read_compare(r, origin.string(), overridden, s.model);
   r.reject_unknown_keys();
   check_lattice_cells(r, s);
+  if (s.render.poinsot && !s.compare.empty())
+    r.fail("render.poinsot", "Poinsot's construction is for a single run, not a [[compare]] scene");
   return s;
 }
 

@@ -48,6 +48,10 @@ struct RenderOptions {
   int gif_width = 640;  ///< GIF width in pixels (height keeps the aspect, even); ≤ width
   int gif_fps = 15;     ///< GIF frame rate target: every round(fps / gif_fps)-th frame is kept
   int webm_crf = 32;    ///< VP9 constant quality 0 (best) … 63
+  /// Poinsot's construction inset (docs/physics.md §16): the inertia ellipsoid rolling on the
+  /// invariable plane in the world frame, with the polhode and the herpolhode so far; at the
+  /// top of the plot column with render.panel, else at the right edge. Single runs only.
+  bool poinsot = false;
 };
 
 /// The video formats `render` can write, in the order they are listed in messages.
