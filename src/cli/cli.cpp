@@ -1,4 +1,6 @@
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 
@@ -15,6 +17,34 @@ namespace {
 constexpr const char* kSetHelp =
     "Override a scene key, value in TOML syntax (repeatable), e.g. --set time.dt=0.01 "
     "--set model.kind='\"rigid-matrix\"' --set book.size=[1,2,0.5]";
+
+/// A finite number > 0 (CLI::PositiveNumber lets NaN and infinity through).
+const CLI::Validator kFinitePositive(
+    [](std::string& text) -> std::string {
+      double value = 0.0;
+      if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || !(value > 0.0))
+        return "Value " + text + " is not a finite positive number";
+      return {};
+    },
+    "POSITIVE");
+
+/// A finite number in [low, high], printed in short form.
+CLI::Validator finite_range(double low, double high) {
+  char description[64];
+  std::snprintf(description, sizeof description, "FINITE in [%g - %g]", low, high);
+  return CLI::Validator(
+      [low, high](std::string& text) -> std::string {
+        double value = 0.0;
+        if (CLI::detail::lexical_cast(text, value) && std::isfinite(value) && value >= low &&
+            value <= high)
+          return {};
+        char message[128];
+        std::snprintf(message, sizeof message, "Value %s not a finite number in [%g, %g]",
+                      text.c_str(), low, high);
+        return message;
+      },
+      description);
+}
 
 void add_simulate(CLI::App& cli, SimulateOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
@@ -83,10 +113,10 @@ void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
   cmd->add_option("-o,--out", options.out_dir, "Output directory for the CSV and the plot")
       ->capture_default_str();
   cmd->add_option("--flips", options.flips, "Run length in exact flip periods")
-      ->check(CLI::Range(1.0, 1000.0))
+      ->check(finite_range(1.0, 1000.0))
       ->capture_default_str();
   cmd->add_option("--dt", options.dts, "Time steps to try (time units)")
-      ->check(CLI::PositiveNumber)
+      ->check(kFinitePositive)
       ->take_all();
 }
 
@@ -128,14 +158,14 @@ void add_inertia(CLI::App& cli, InertiaOptions& options) {
       "glTF 2.0) of uniform density");
   cmd->add_option("MESH", options.mesh_path, "Mesh file: .obj, .stl, .gltf or .glb")->required();
   CLI::Option* mass = cmd->add_option("--mass", options.mass, "Total mass (instead of --density)")
-                          ->check(CLI::PositiveNumber);
+                          ->check(kFinitePositive);
   CLI::Option* density =
       cmd->add_option("--density", options.density, "Mass per unit volume, after --scale")
-          ->check(CLI::PositiveNumber)
+          ->check(kFinitePositive)
           ->capture_default_str();
   mass->excludes(density);
   cmd->add_option("--scale", options.scale, "Multiply every coordinate of the file by S")
-      ->check(CLI::PositiveNumber)
+      ->check(kFinitePositive)
       ->capture_default_str();
   cmd->add_flag("--json", options.json, "Print one JSON object (full precision) instead");
 }

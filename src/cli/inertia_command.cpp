@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "common/errors.hpp"
 #include "jobs/mesh_inertia.hpp"
 
 namespace bookspin::cli {
@@ -83,7 +84,26 @@ int inertia_command(const InertiaOptions& options) {
   request.scale = options.scale;
   if (options.mass > 0.0) request.mass = options.mass;
   request.density = options.density;
-  const physics::MassProperties p = jobs::mesh_inertia(request);
+  // The options a number beyond the double range comes from, named in the error.
+  char given[160];
+  if (options.mass > 0.0)
+    std::snprintf(given, sizeof given, " (from --mass %g and --scale %g)", options.mass,
+                  options.scale);
+  else
+    std::snprintf(given, sizeof given, " (from --density %g and --scale %g)", options.density,
+                  options.scale);
+  physics::MassProperties p;
+  try {
+    p = jobs::mesh_inertia(request);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    const bool range = message.find(physics::kOverflow) != std::string::npos ||
+                       message.find("mesh size out of range") != std::string::npos;
+    if (range) throw InputError(message + given);
+    throw;
+  }
+  if (!physics::all_finite(p))  // never print NaN or infinity
+    throw InputError(options.mesh_path + ": " + physics::kOverflow + given);
   for (const auto& warning : p.warnings)
     std::cerr << "bookspin: warning: " << options.mesh_path << ": " << warning << '\n';
   if (options.json) {

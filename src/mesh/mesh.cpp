@@ -93,9 +93,14 @@ std::string one_line(std::string text) {
   return text.empty() ? "unknown reason" : text;
 }
 
-/// Every triangle of every part placed by the node tree, with vertices welded by exact
-/// position (assimp's JoinIdenticalVertices keeps apart vertices whose normals differ, as
-/// STL's do at every edge, which would make a closed solid look open).
+/// Welding tolerance relative to the bounding box's longest side: 2⁻²², about four float32
+/// roundings of the largest coordinate.
+constexpr double kWeldTolerance = 0x1p-22;
+
+/// Every triangle of every part placed by the node tree, with vertices welded by position:
+/// exactly equal first, then within kWeldTolerance of the mesh's size (assimp's
+/// JoinIdenticalVertices keeps apart vertices whose normals differ, as STL's do at every
+/// edge, and its tolerance is absolute).
 class Welder {
  public:
   Welder(const fs::path& path, const aiScene& scene) : path_(path), scene_(scene) {}
@@ -108,8 +113,9 @@ class Welder {
     for (unsigned i = 0; i < node.mNumChildren; ++i) add_node(*node.mChildren[i], to_file);
   }
 
-  TriangleMesh mesh(double scale) const {
+  TriangleMesh mesh(double scale) {
     if (triangles_.empty()) reject(path_, "empty mesh: no triangles");
+    weld_near();
     TriangleMesh mesh;
     mesh.vertices.resize(3, static_cast<Eigen::Index>(positions_.size()));
     for (std::size_t i = 0; i < positions_.size(); ++i) {
@@ -129,6 +135,67 @@ class Welder {
   }
 
  private:
+  /// Welds vertices closer than kWeldTolerance × the bounding box's longest side (in each
+  /// coordinate) into the first of them: corners that a file means to be one but wrote with
+  /// a rounding apart. Relative to the mesh's size, so a mesh welds the same at any scale
+  /// (docs/physics.md §11, "Welding").
+  void weld_near() {
+    std::array<float, 3> low = positions_[0], high = low;
+    for (const auto& p : positions_) {
+      for (int k = 0; k < 3; ++k) {
+        low[k] = std::min(low[k], p[k]);
+        high[k] = std::max(high[k], p[k]);
+      }
+    }
+    double extent = 0.0;
+    for (int k = 0; k < 3; ++k)
+      extent = std::max(extent, static_cast<double>(high[k]) - static_cast<double>(low[k]));
+    const double tolerance = kWeldTolerance * extent;
+    if (!(tolerance > 0.0)) return;
+    using Cell = std::array<std::int64_t, 3>;
+    const auto cell_of = [&](const std::array<float, 3>& p) {
+      Cell cell;
+      for (int k = 0; k < 3; ++k)
+        cell[k] = static_cast<std::int64_t>(
+            std::floor((static_cast<double>(p[k]) - static_cast<double>(low[k])) / tolerance));
+      return cell;
+    };
+    std::map<Cell, std::vector<int>> kept_in_cell;
+    std::vector<int> target(positions_.size());
+    std::vector<std::array<float, 3>> kept;
+    for (std::size_t i = 0; i < positions_.size(); ++i) {
+      const std::array<float, 3>& p = positions_[i];
+      const Cell cell = cell_of(p);
+      int found = -1;
+      for (int dx = -1; dx <= 1 && found < 0; ++dx)
+        for (int dy = -1; dy <= 1 && found < 0; ++dy)
+          for (int dz = -1; dz <= 1 && found < 0; ++dz) {
+            const auto it = kept_in_cell.find({cell[0] + dx, cell[1] + dy, cell[2] + dz});
+            if (it == kept_in_cell.end()) continue;
+            for (const int j : it->second) {
+              const auto& q = kept[static_cast<std::size_t>(j)];
+              bool near = true;
+              for (int k = 0; k < 3; ++k)
+                near = near && std::abs(static_cast<double>(p[k]) - q[k]) <= tolerance;
+              if (near) {
+                found = j;
+                break;
+              }
+            }
+          }
+      if (found < 0) {
+        found = static_cast<int>(kept.size());
+        kept.push_back(p);
+        kept_in_cell[cell].push_back(found);
+      }
+      target[i] = found;
+    }
+    if (kept.size() == positions_.size()) return;
+    for (auto& t : triangles_)
+      for (int k = 0; k < 3; ++k) t[k] = target[static_cast<std::size_t>(t[k])];
+    positions_ = std::move(kept);
+  }
+
   void add_part(const aiMesh& part, const aiMatrix4x4& to_file) {
     std::vector<int> welded(part.mNumVertices);
     for (unsigned v = 0; v < part.mNumVertices; ++v) {
@@ -191,15 +258,19 @@ class Welder {
 }  // namespace
 
 TriangleMesh load_mesh(const fs::path& path, double scale) {
-  if (!(std::isfinite(scale) && scale > 0.0))
-    reject(path, "scale must be a positive number, not " + std::to_string(scale));
+  if (!(std::isfinite(scale) && scale > 0.0)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "scale must be a positive number, not %g", scale);
+    reject(path, text);
+  }
   check_file(path);
   if (extension_of(path) == "stl") check_binary_stl_size(path);
   Assimp::Importer importer;
-  // Triangulate polygons and weld what assimp can; the node transforms (glTF) are applied
-  // while collecting, so a file without meshes is "empty", not an assimp error.
-  const aiScene* scene =
-      importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
+  // Triangulate polygons only: assimp's JoinIdenticalVertices welds with an absolute
+  // tolerance (it collapses the corners of a small mesh); the Welder welds relative to the
+  // mesh's size. The node transforms (glTF) are applied while collecting, so a file without
+  // meshes is "empty", not an assimp error.
+  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_Triangulate);
   if (scene == nullptr) reject(path, "cannot read mesh: " + one_line(importer.GetErrorString()));
   Welder welder(path, *scene);
   if (scene->mRootNode != nullptr) welder.add_node(*scene->mRootNode, aiMatrix4x4());

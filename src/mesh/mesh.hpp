@@ -20,8 +20,11 @@ struct TriangleMesh {
 
 /// Reads `path` (by its extension: .obj, .stl, .gltf, .glb; any case) and returns its
 /// triangles: polygons triangulated, node transforms applied, points and lines dropped, and
-/// vertices at exactly the same position welded into one (also across faces and parts, so a
-/// closed surface shares its edges), each coordinate multiplied by `scale` (> 0).
+/// vertices at the same position welded into one (also across faces and parts, so a closed
+/// surface shares its edges): exactly equal, or within 2⁻²² of the bounding box's longest
+/// side in each coordinate (a tolerance relative to the mesh's size, so the same at any
+/// scale; a triangle smaller than that collapses and mass_properties reports it as
+/// degenerate). Each coordinate is then multiplied by `scale` (> 0).
 /// Throws InputError "FILE: reason" for a missing file, a directory, an unknown extension, a
 /// binary STL whose header's triangle count does not match the file size (checked before
 /// parsing: truncated files and absurd counts), a file assimp cannot read, no triangles, or

@@ -75,6 +75,10 @@ BodyResult body_from_mesh(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3
     return result;
   }
   const MassProperties p = with_mass(props.properties, mass);
+  if (!all_finite(p)) {
+    result.error = kOverflow;
+    return result;
+  }
   result.warnings = p.warnings;
   Body& body = result.body;
   body.shape = shape;
@@ -83,32 +87,10 @@ BodyResult body_from_mesh(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3
   // Row i of principal_axes is axis i in mesh coordinates: x' = A (x − c).
   body.vertices = p.principal_axes * (scaled.colwise() - p.center_of_mass);
   body.triangles = triangles;
-  // mass_properties turns an inward-wound shell around; do the same here so that drawing sees
-  // outward faces. A shell is inward when its signed volume is negative.
-  if (!p.warnings.empty()) {
-    // Signed volume per triangle, summed over connected components by union–find.
-    std::vector<int> parent(body.vertices.cols());
-    for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
-    auto find = [&](int v) {
-      while (parent[v] != v) v = parent[v] = parent[parent[v]];
-      return v;
-    };
-    for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
-      parent[find(triangles(1, t))] = find(triangles(0, t));
-      parent[find(triangles(2, t))] = find(triangles(0, t));
-    }
-    std::vector<double> shell_volume(parent.size(), 0.0);
-    for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
-      const Eigen::Vector3d a = body.vertices.col(triangles(0, t));
-      const Eigen::Vector3d b = body.vertices.col(triangles(1, t));
-      const Eigen::Vector3d c = body.vertices.col(triangles(2, t));
-      shell_volume[find(triangles(0, t))] += a.dot(b.cross(c)) / 6.0;
-    }
-    for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
-      if (shell_volume[find(triangles(0, t))] < 0.0)
-        std::swap(body.triangles(1, t), body.triangles(2, t));
-    }
-  }
+  // mass_properties turns around a shell wound inward on its own (a cavity keeps its inward
+  // winding, which faces out of the solid); do the same here so that drawing sees the
+  // solid's outside.
+  for (const int t : p.turned_triangles) std::swap(body.triangles(1, t), body.triangles(2, t));
   if (face_colours.cols() == triangles.cols()) {
     body.face_colours = face_colours;
   } else {

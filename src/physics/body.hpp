@@ -49,7 +49,9 @@ struct BodyResult {
 /// after scaling every coordinate by `scale` (> 0): the centre of mass goes to the origin and
 /// the rows of MassProperties::principal_axes (ascending moments, right-handed) become x, y, z,
 /// so the moments come out ascending. Uniform density, total mass `mass` (> 0). Winding is
-/// kept (a shell wound inward is turned around, with a warning, as mass_properties does).
+/// kept (a shell wound inward on its own is turned around, with a warning, as mass_properties
+/// does; a cavity keeps its inward winding). A mass or inertia beyond the double range is the
+/// error physics::kOverflow.
 /// `face_colours` (3×N, or empty: a default grey) and `smooth` are passed through; `shape`
 /// is recorded. No I/O, no exceptions for bad input: a bad mesh or a non-positive or
 /// non-finite mass or scale gives an error string. docs/physics.md §11–12.

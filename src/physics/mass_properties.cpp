@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -107,6 +108,34 @@ std::string shell_name(int k, int shells) {
                      : "shell " + std::to_string(k + 1) + " of " + std::to_string(shells);
 }
 
+/// The first vertex of shell `k`'s first triangle.
+int first_vertex_of_shell(const std::vector<Eigen::Vector3i>& triangles,
+                          const std::vector<int>& shell_of_triangle, int k) {
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    if (shell_of_triangle[i] == k) return triangles[i][0];
+  return triangles[0][0];
+}
+
+/// The winding number of closed shell `j` about point `p`: the triangles' solid angles seen
+/// from p (Van Oosterom & Strackee 1983) summed over 4π; ±1 inside (the sign of the shell's
+/// winding), 0 outside (docs/physics.md §11, "Shells").
+double winding_number(const Eigen::Matrix3Xd& vertices,
+                      const std::vector<Eigen::Vector3i>& triangles,
+                      const std::vector<int>& shell_of_triangle, int j, const Vector3d& p) {
+  double total = 0.0;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    if (shell_of_triangle[i] != j) continue;
+    const Vector3d a = vertices.col(triangles[i][0]) - p;
+    const Vector3d b = vertices.col(triangles[i][1]) - p;
+    const Vector3d c = vertices.col(triangles[i][2]) - p;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double numerator = a.dot(b.cross(c));
+    const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+    total += 2.0 * std::atan2(numerator, denominator);
+  }
+  return total / (4.0 * M_PI);
+}
+
 }  // namespace
 
 void principal_frame(const Matrix3d& I_body, Vector3d& moments, Matrix3d& axes) {
@@ -138,6 +167,8 @@ MassPropertiesResult mass_properties(const Eigen::Matrix3Xd& vertices,
   }
   // Triangles that repeat a vertex enclose nothing and would look like open edges.
   std::vector<Eigen::Vector3i> kept;
+  std::vector<int> kept_index;  // column of `triangles` of each kept triangle
+  long degenerate = 0;
   kept.reserve(static_cast<std::size_t>(triangles.cols()));
   for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
     const Eigen::Vector3i tri = triangles.col(t);
@@ -148,7 +179,12 @@ MassPropertiesResult mass_properties(const Eigen::Matrix3Xd& vertices,
         return result;
       }
     }
-    if (tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0]) kept.push_back(tri);
+    if (tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0]) {
+      kept.push_back(tri);
+      kept_index.push_back(static_cast<int>(t));
+    } else {
+      ++degenerate;
+    }
   }
   if (kept.empty()) {
     result.error = "empty mesh: no triangles";
@@ -189,23 +225,61 @@ MassPropertiesResult mass_properties(const Eigen::Matrix3Xd& vertices,
                     vertices.col(t[2]) - reference, per_shell[shell_of_triangle[i]]);
   }
 
-  // A closed shell thinner than round-off relative to the mesh's size encloses nothing.
+  // Sizes outside this range would overflow or underflow the fifth powers of the length that
+  // the second moments carry (docs/physics.md §11, "Range").
   const double extent = (high - low).maxCoeff();
+  if (!(extent >= kMinExtent && extent <= kMaxExtent)) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "mesh size out of range: the bounding box's longest side is %g, outside "
+                  "[%g, %g]",
+                  extent, kMinExtent, kMaxExtent);
+    result.error = text;
+    return result;
+  }
+  // A closed shell thinner than round-off relative to the mesh's size encloses nothing.
   const double tiny = 1e-12 * extent * extent * extent;
-  Moments total;
   for (int k = 0; k < shells; ++k) {
-    Moments& m = per_shell[static_cast<std::size_t>(k)];
+    const Moments& m = per_shell[static_cast<std::size_t>(k)];
     if (!(std::abs(m.volume) > tiny)) {
       result.error = "zero volume: " + shell_name(k, shells) + " encloses no space";
       return result;
     }
+  }
+  // Orientation by nesting: a shell wound inward that lies inside a shell wound outward is a
+  // cavity and subtracts; one wound inward on its own is turned around, with a warning.
+  std::vector<bool> turned(static_cast<std::size_t>(shells), false);
+  Moments total;
+  for (int k = 0; k < shells; ++k) {
+    Moments& m = per_shell[static_cast<std::size_t>(k)];
     if (m.volume < 0.0) {
-      m.turn_around();
-      result.properties.warnings.push_back(shell_name(k, shells) +
-                                           " is wound inward (negative volume); turned around");
+      const Vector3d probe = vertices.col(first_vertex_of_shell(kept, shell_of_triangle, k));
+      bool cavity = false;
+      for (int j = 0; j < shells && !cavity; ++j) {
+        if (j == k || per_shell[static_cast<std::size_t>(j)].volume <= 0.0) continue;
+        cavity = std::abs(winding_number(vertices, kept, shell_of_triangle, j, probe)) > 0.5;
+      }
+      if (!cavity) {
+        m.turn_around();
+        turned[static_cast<std::size_t>(k)] = true;
+        result.properties.warnings.push_back(
+            shell_name(k, shells) + " is wound inward (negative volume) and lies inside no "
+                                    "other shell; turned around");
+      }
     }
     total.add(m);
   }
+  if (!(total.volume > tiny)) {
+    result.error = "zero volume: the cavities take up the whole solid";
+    return result;
+  }
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    if (turned[static_cast<std::size_t>(shell_of_triangle[i])])
+      result.properties.turned_triangles.push_back(kept_index[i]);
+  if (degenerate > 0)
+    result.properties.warnings.push_back(
+        std::to_string(degenerate) +
+        " degenerate triangles skipped (two corners at one welded vertex)");
 
   MassProperties& p = result.properties;
   p.shells = shells;
@@ -219,15 +293,27 @@ MassPropertiesResult mass_properties(const Eigen::Matrix3Xd& vertices,
   Matrix3d I = C.trace() * Matrix3d::Identity() - C;
   p.I_body = 0.5 * (I + I.transpose());
   principal_frame(p.I_body, p.principal_moments, p.principal_axes);
+  if (!all_finite(p)) result.error = kOverflow;
   return result;
 }
 
 MassProperties with_mass(MassProperties p, double mass) {
   const double factor = mass / p.mass;
+  if (std::isfinite(factor) && factor > 0.0) {
+    p.I_body *= factor;
+    p.principal_moments *= factor;
+  } else {  // a ratio beyond the double range: divide first
+    p.I_body = (p.I_body / p.mass) * mass;
+    p.principal_moments = (p.principal_moments / p.mass) * mass;
+  }
   p.mass = mass;
-  p.I_body *= factor;
-  p.principal_moments *= factor;
   return p;
+}
+
+bool all_finite(const MassProperties& p) {
+  return std::isfinite(p.volume) && std::isfinite(p.mass) && p.center_of_mass.allFinite() &&
+         p.I_body.allFinite() && p.principal_moments.allFinite() &&
+         p.principal_axes.allFinite();
 }
 
 }  // namespace bookspin::physics

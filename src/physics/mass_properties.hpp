@@ -22,8 +22,12 @@ struct MassProperties {
   /// (determinant +1), each of rows 0 and 1 with its largest-magnitude component positive.
   Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();
   int shells = 0;  ///< connected components (triangles linked by shared vertices)
-  /// One line each, e.g. a shell wound inward that was turned around.
+  /// One line each: a shell wound inward on its own that was turned around, degenerate
+  /// triangles skipped.
   std::vector<std::string> warnings;
+  /// Columns of the input's triangles whose shell was turned around (wound inward and inside
+  /// no other shell), ascending; a drawing reverses them to face outward.
+  std::vector<int> turned_triangles;
 };
 
 /// The outcome of mass_properties(): the properties, or why there are none.
@@ -31,24 +35,38 @@ struct MassPropertiesResult {
   MassProperties properties;  ///< meaningful only when ok()
   /// Empty on success, else one line: "empty mesh: no triangles", "non-finite vertex
   /// coordinate (vertex N)", "open mesh: N boundary edges", "non-manifold mesh: …",
-  /// "inconsistent winding: …", "zero volume: …", "triangle N refers to missing vertex M".
+  /// "inconsistent winding: …", "mesh size out of range: …", "zero volume: …",
+  /// "triangle N refers to missing vertex M", or kOverflow.
   std::string error;
   bool ok() const { return error.empty(); }
 };
 
+/// The error of a result that would not fit in a double (density × volume, say).
+inline constexpr const char* kOverflow =
+    "overflow: the mass or inertia is beyond the range of a double";
+/// The longest side of a mesh's bounding box must lie in [kMinExtent, kMaxExtent] (length
+/// units): the second moments grow as the fifth power of it.
+inline constexpr double kMinExtent = 1e-50;
+inline constexpr double kMaxExtent = 1e50;
+
 /// Volume, centre of mass, inertia about the centre of mass and principal frame of the solid
 /// bounded by `triangles` (3×N vertex indices into `vertices`, 3×V, any units) at uniform
 /// `density` (mass / length³, > 0). Each shell (connected component) must be closed and
-/// consistently wound; shells add up as separate solids, and a shell wound inward (negative
-/// signed volume) is turned around with a warning. Triangles that repeat a vertex enclose
-/// nothing and are skipped. Divergence theorem over signed tetrahedra (Tonon 2004; Eberly,
+/// consistently wound. Shells wound outward add up as separate solids; a shell wound inward
+/// (negative signed volume) inside a shell wound outward is a cavity and subtracts; one wound
+/// inward inside no other shell is turned around with a warning. Triangles that repeat a
+/// vertex enclose nothing and are skipped with a warning. A result beyond the double range
+/// is the error kOverflow, never NaN or infinity. Divergence theorem over signed tetrahedra (Tonon 2004; Eberly,
 /// "Polyhedral Mass Properties (Revisited)"); docs/physics.md §11.
 MassPropertiesResult mass_properties(const Eigen::Matrix3Xd& vertices,
                                      const Eigen::Matrix3Xi& triangles, double density = 1.0);
 
 /// The same body at total mass `mass` (> 0): mass and inertia scale by mass / p.mass; the
-/// volume, centre of mass and axes stay.
+/// volume, centre of mass and axes stay. May overflow: check with all_finite().
 MassProperties with_mass(MassProperties p, double mass);
+
+/// Whether every number of `p` is finite.
+bool all_finite(const MassProperties& p);
 
 /// The principal moments (ascending) and a right-handed principal frame (rows) of a
 /// symmetric 3×3 inertia tensor; see MassProperties for the sign convention of the axes.

@@ -36,7 +36,7 @@ TEST(BodyKeys, PresetWithMassAndScale) {
   EXPECT_EQ(s.body.shape, physics::BodyShape::t_handle);
   const physics::Body expected = physics::preset_body(physics::BodyShape::t_handle, 2.0, 0.5);
   EXPECT_EQ(s.body.moments, expected.moments);
-  EXPECT_EQ(s.body.cage.size, expected.cage.size);  // scene.book is the cage
+  EXPECT_EQ(s.body.cage.size, expected.cage.size);  // the [book] keys describe the cage
   EXPECT_EQ(s.body.cage.mass, 2.0);
   EXPECT_GT(s.body.triangles.cols(), 0);
 }
