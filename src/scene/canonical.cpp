@@ -76,8 +76,7 @@ void add_render(Members& m, const RenderOptions& r, const std::filesystem::path&
   m.emplace_back("render.gif_width", std::to_string(r.gif_width));
   m.emplace_back("render.gif_fps", std::to_string(r.gif_fps));
   m.emplace_back("render.webm_crf", std::to_string(r.webm_crf));
-  // Only when on, so that the canonical form (and the manifests) of every other scene stay.
-  if (r.poinsot) m.emplace_back("render.poinsot", boolean(r.poinsot));
+  m.emplace_back("render.poinsot", boolean(r.poinsot));
 }
 
 }  // namespace
