@@ -19,20 +19,6 @@ void check_moments(const Eigen::Vector3d& moments) {
     throw std::invalid_argument("Poinsot construction: principal moments must be finite and > 0");
 }
 
-/// Appends curve(φ) for φ in (a, b], halving while a chord is longer than max_step.
-void refine(const std::function<Eigen::Vector3d(double)>& curve, double a, double b,
-            const Eigen::Vector3d& pa, const Eigen::Vector3d& pb, double max_step, int depth,
-            std::vector<Eigen::Vector3d>& out) {
-  if (depth < 16 && (pb - pa).norm() > max_step) {
-    const double m = 0.5 * (a + b);
-    const Eigen::Vector3d pm = curve(m);
-    refine(curve, a, m, pa, pm, max_step, depth + 1, out);
-    refine(curve, m, b, pm, pb, max_step, depth + 1, out);
-    return;
-  }
-  out.push_back(pb);
-}
-
 }  // namespace
 
 PoinsotState poinsot_state(const Eigen::Vector3d& moments, const Eigen::Matrix3d& rotation,
@@ -124,14 +110,7 @@ std::vector<Eigen::Vector3d> polhode_on_ellipsoid(const Eigen::Vector3d& moments
     u[pole] = sign * std::sqrt(std::max(0.0, 1.0 - u[b] * u[b] - u[d] * u[d]));
     return u;
   };
-  constexpr int kStart = 64;
-  constexpr double kTwoPi = 6.283185307179586;
-  std::vector<Eigen::Vector3d> sphere{curve(0.0)};
-  for (int i = 0; i < kStart; ++i) {
-    const double a = kTwoPi * i / kStart, e = kTwoPi * (i + 1) / kStart;
-    refine(curve, a, e, sphere.back(), i + 1 == kStart ? sphere.front() : curve(e), max_step, 0,
-           sphere);
-  }
+  const std::vector<Eigen::Vector3d> sphere = sample_closed_curve(curve, max_step);
   std::vector<Eigen::Vector3d> out;
   out.reserve(sphere.size());
   for (const auto& u : sphere) out.push_back(to_ellipsoid(u));

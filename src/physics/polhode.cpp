@@ -24,7 +24,10 @@ void refine(const std::function<Eigen::Vector3d(double)>& curve, double a, doubl
   out.push_back(pb);
 }
 
-std::vector<Eigen::Vector3d> sample_closed(const std::function<Eigen::Vector3d(double)>& curve,
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> sample_closed_curve(const std::function<Eigen::Vector3d(double)>& curve,
                                            double max_step) {
   constexpr int kStart = 64;
   constexpr double kTwoPi = 6.283185307179586;
@@ -36,8 +39,6 @@ std::vector<Eigen::Vector3d> sample_closed(const std::function<Eigen::Vector3d(d
   }
   return points;
 }
-
-}  // namespace
 
 double energy_ratio(const Eigen::Vector3d& moments, const Eigen::Vector3d& u) {
   return u.cwiseAbs2().cwiseQuotient(moments).sum();
@@ -72,7 +73,7 @@ std::vector<Polhode> polhode_family(const Eigen::Vector3d& moments, int levels, 
           u[pole] = sign * std::sqrt(std::max(0.0, 1.0 - u[b] * u[b] - u[d] * u[d]));
           return u;
         };
-        curves.push_back({sample_closed(curve, max_step), c, false, pole});
+        curves.push_back({sample_closed_curve(curve, max_step), c, false, pole});
       }
     }
   };
@@ -93,7 +94,7 @@ std::vector<Polhode> polhode_family(const Eigen::Vector3d& moments, int levels, 
       const auto curve = [&](double phi) {
         return Eigen::Vector3d(std::cos(phi) * e_mid + std::sin(phi) * in_plane);
       };
-      curves.push_back({sample_closed(curve, max_step), inv[mid], true, -1});
+      curves.push_back({sample_closed_curve(curve, max_step), inv[mid], true, -1});
     }
   }
   return curves;

@@ -6,6 +6,7 @@
 // Goldstein, Classical Mechanics (3rd ed.), §5.6.
 #include <Eigen/Dense>
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "physics/body.hpp"  // principal_order
@@ -47,5 +48,12 @@ std::vector<Polhode> polhode_family(const Eigen::Vector3d& moments, int levels =
 /// body frame (docs/physics.md §9). Renormalized to the sphere (a rigid matrix that is not
 /// orthogonal leaves it slightly off). Zero when L = 0.
 Eigen::Vector3d momentum_direction_body(const Diagnostics& d);
+
+/// Points of the closed curve `curve`(φ), φ in [0, 2π), from φ = 0 round to the start again
+/// (the last point is curve(0)): 64 equal intervals of φ, each halved while its chord is
+/// longer than `max_step` (depth-limited: 2^20 points per interval at most). Used for the
+/// polhodes on the sphere and on the inertia ellipsoid (docs/physics.md §15, §16).
+std::vector<Eigen::Vector3d> sample_closed_curve(const std::function<Eigen::Vector3d(double)>& curve,
+                                                 double max_step);
 
 }  // namespace bookspin::physics
