@@ -15,24 +15,37 @@ packages=(
   slurm-wlm munge
   emscripten
 )
-# The explorer page (web/): node and npm, unless a node is installed already (e.g. NodeSource's,
-# which carries its own npm and conflicts with Debian's npm package).
-command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
 done
-# node and npm for the glTF browser test (tests/browser/package.json: the Khronos glTF-Validator,
-# three.js). Debian's nodejs and npm, unless a node with npm is already installed another way.
+# node and npm for the explorer page (web/package.json: three.js, esbuild) and the glTF browser
+# test (tests/browser/package.json: the Khronos glTF-Validator, three.js). Debian's nodejs and
+# npm, unless a node with npm is already installed another way (e.g. NodeSource's, which
+# carries its own npm and conflicts with Debian's npm package).
 if ! command -v npm >/dev/null 2>&1 || ! command -v node >/dev/null 2>&1; then
   for p in nodejs npm; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
   done
 fi
-[ ${#missing[@]} -eq 0 ] && exit 0
+install_web_packages() {
+  # The explorer's pinned npm packages (web/package-lock.json), here in the install step so that
+  # `make figures` downloads nothing; skipped when they are in place or npm is missing.
+  local web
+  web="$(cd "$(dirname "$0")/../web" && pwd)"
+  if command -v npm >/dev/null 2>&1 &&
+     { [ ! -d "$web/node_modules" ] || [ "$web/package-lock.json" -nt "$web/node_modules/.package-lock.json" ]; }; then
+    (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+}
+if [ ${#missing[@]} -eq 0 ]; then
+  install_web_packages
+  exit 0
+fi
 echo "install-deps: installing ${missing[*]}"
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 export DEBIAN_FRONTEND=noninteractive
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_web_packages
