@@ -28,6 +28,9 @@ import tempfile
 import time
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from gallery_test import find_browser  # noqa: E402
+
 SKIP = 77
 TOL = 1e-10
 
@@ -134,17 +137,7 @@ def sphere_colours(driver):
 
 def main(bookspin, source, binary):
     source, binary = Path(source), Path(binary)
-    try:
-        import selenium  # noqa: F401
-    except ImportError:
-        missing(f"python module selenium not found by {sys.executable}")
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    driver_path = shutil.which("chromedriver") or (
-        "/usr/bin/chromedriver" if os.path.exists("/usr/bin/chromedriver") else None)
-    if not chromium:
-        missing("chromium not found on PATH")
-    if not driver_path:
-        missing("chromedriver not found (Debian package chromium-driver)")
+    chromium, driver_path = find_browser()  # the gallery test's: a skip or, under CI, a failure
     if not shutil.which("em++"):
         missing("em++ not found (Debian package emscripten)")
     if not shutil.which("npm"):
