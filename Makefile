@@ -24,7 +24,8 @@ bookspin: configure
 
 # The sweeps first, so that the one gallery render-all writes at the end shows it too
 # (GALLERY_EXTRA: scene files the gallery lists beside the rendered ones); then the explorer
-# page (web/build.sh, docs/explorer.md), so that the gallery links each clip to it.
+# page (web/build.sh builds its program, bookspin explore writes the scenes into it;
+# docs/explorer.md), so that the gallery links each clip to it.
 figures: bookspin
 	$(BUILD)/bookspin sweep sweeps/flip-time-vs-perturbation.toml \
 	  --vary 'initial.angular_velocity[1]=1e-6:1e-2:20:log' \
@@ -33,8 +34,7 @@ figures: bookspin
 	  --vary 'initial.angular_velocity[0]=1e-6:1e-2:20:log' \
 	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
 	@if command -v em++ >/dev/null && command -v npm >/dev/null; then \
-	  cmake --build $(BUILD) -j $(JOBS) --target bookspin-explorer-data && \
-	  bash web/build.sh $(BUILD) out $(SCENES); \
+	  bash web/build.sh $(BUILD) && $(BUILD)/bookspin explore $(SCENES) $(SWEEPS) -o out; \
 	else echo "figures: no emscripten or npm: out/explorer.html not made (scripts/install-deps.sh)"; fi
 	@GALLERY_EXTRA="$(SWEEPS)" bash scripts/render-all.sh $(BUILD)/bookspin out $(SCENES)
 

@@ -64,11 +64,57 @@ Body make_body(const std::string& name, double mass, double scale, double a, dou
   return preset_body(shape, mass, scale);
 }
 
+/// `array[i]` of a JavaScript array of numbers, as `count` values (or throws).
+template <typename T>
+std::vector<T> numbers(const val& spec, const char* key, std::size_t count) {
+  const std::vector<T> v = emscripten::vecFromJSArray<T>(spec[key]);
+  if (v.size() != count)
+    throw std::invalid_argument(std::string("body.") + key + ": expected " +
+                                std::to_string(count) + " numbers, got " +
+                                std::to_string(v.size()));
+  return v;
+}
+
+/// The Body exactly as bookspin built it (src/clip/explorer_page.hpp, `body`): shape, mass, principal
+/// moments about x, y, z, cage size, volume, the surface 3×V (principal frame) with its
+/// triangles 3×N and face colours 3×N flattened column by column, smooth. Nothing is computed
+/// again, so the page starts from bookspin's own doubles (a mesh body needs no mesh reader).
+Body body_of(const val& spec) {
+  Body body;
+  const std::string shape = spec["shape"].as<std::string>();
+  if (!parse_body_shape(shape, body.shape) || body.shape == BodyShape::book)
+    throw std::invalid_argument("body: unknown shape '" + shape + "'");
+  body.cage.mass = spec["mass"].as<double>();
+  const std::vector<double> moments = numbers<double>(spec, "moments", 3);
+  const std::vector<double> cage = numbers<double>(spec, "cage", 3);
+  body.moments = {moments[0], moments[1], moments[2]};
+  body.cage.size = {cage[0], cage[1], cage[2]};
+  body.volume = spec["volume"].as<double>();
+  const std::vector<double> vertices = emscripten::vecFromJSArray<double>(spec["vertices"]);
+  const std::vector<int> triangles = emscripten::vecFromJSArray<int>(spec["triangles"]);
+  if (vertices.size() % 3 != 0 || triangles.size() % 3 != 0 || triangles.empty())
+    throw std::invalid_argument("body: vertices and triangles must be 3×V and 3×N, N > 0");
+  const auto n = static_cast<Eigen::Index>(triangles.size() / 3);
+  body.vertices = Eigen::Map<const Eigen::Matrix3Xd>(vertices.data(), 3,
+                                                     static_cast<Eigen::Index>(vertices.size() / 3));
+  body.triangles = Eigen::Map<const Eigen::Matrix3Xi>(triangles.data(), 3, n);
+  const std::vector<float> colours = numbers<float>(spec, "colours", triangles.size());
+  body.face_colours = Eigen::Map<const Eigen::Matrix3Xf>(colours.data(), 3, n);
+  body.smooth = spec["smooth"].as<bool>();
+  for (Eigen::Index i = 0; i < body.triangles.size(); ++i) {
+    if (body.triangles.data()[i] < 0 || body.triangles.data()[i] >= body.vertices.cols())
+      throw std::invalid_argument("body: a triangle names a vertex that does not exist");
+  }
+  return body;
+}
+
 /// One simulator with the settings of the page: body, model, integrator, toggles.
 class Session {
  public:
   Session(const std::string& body, double mass, double scale, double a, double b, double c)
       : body_(make_body(body, mass, scale, a, b, c)) {}
+  /// A body given whole (body_of): a mesh scene's body as bookspin built it.
+  explicit Session(const val& body) : body_(body_of(body)) {}
 
   /// Creates the simulator (docs/physics.md §5, §9, §10). Throws std::invalid_argument (a
   /// JavaScript exception) for an unknown name or an integrator the model does not support.
@@ -213,6 +259,7 @@ std::string error_message(std::intptr_t pointer) {
 EMSCRIPTEN_BINDINGS(bookspin_physics) {
   emscripten::class_<Session>("Session")
       .constructor<std::string, double, double, double, double, double>()
+      .constructor<val>()
       .function("configure", &Session::configure)
       .function("reset", &Session::reset)
       .function("step", &Session::step)

@@ -104,6 +104,17 @@ void add_export(CLI::App& cli, ExportOptions& options) {
       ->check(CLI::Range(1, scene::kMaxFrames));
 }
 
+void add_explore(CLI::App& cli, ExploreOptions& options) {
+  CLI::App* cmd = cli.add_subcommand(
+      "explore", "Write OUT/explorer.html: the physics in the browser, one file that opens from "
+                 "disk, with these scenes (docs/explorer.md)");
+  cmd->add_option("SCENE", options.scene_paths, "Scene files (TOML)")->required();
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--shell", options.shell,
+                  "The page without its scenes, as web/build.sh writes it (default: "
+                  "web/explorer-shell.html beside the bookspin program)");
+}
+
 void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
       "accuracy", "Compare every model and integrator with the exact solution over a range of dt");
@@ -220,6 +231,8 @@ int run_cli(int argc, char** argv) {
   add_render(cli, render);
   ExportOptions export_options;
   add_export(cli, export_options);
+  ExploreOptions explore;
+  add_explore(cli, explore);
   AccuracyOptions accuracy;
   add_accuracy(cli, accuracy);
   PlotOptions plot;
@@ -246,6 +259,7 @@ int run_cli(int argc, char** argv) {
     if (cli.got_subcommand("simulate")) return simulate_command(simulate);
     if (cli.got_subcommand("render")) return render_command(render);
     if (cli.got_subcommand("export")) return export_command(export_options);
+    if (cli.got_subcommand("explore")) return explore_command(explore);
     if (cli.got_subcommand("info")) return info_command();
     if (cli.got_subcommand("accuracy")) return accuracy_command(accuracy);
     if (cli.got_subcommand("plot")) return plot_command(plot);

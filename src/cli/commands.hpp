@@ -125,6 +125,17 @@ struct ExportOptions {
 /// Writes OUT/<scene>.glb (clip::export_gltf): the body and its motion as animated glTF.
 int export_command(const ExportOptions& options);
 
+struct ExploreOptions {
+  std::vector<std::string> scene_paths;  ///< the page's scenes, in this order
+  std::string out_dir = "out";
+  std::string shell;  ///< the page without data; empty: web/explorer-shell.html beside bookspin
+};
+
+/// Writes OUT/explorer.html (clip::write_explorer_page): the explorer page with these scenes.
+/// The default shell missing (the page's program not built: web/build.sh) is exit 1 with a
+/// line saying how to build it; a --shell that is not one is an input error.
+int explore_command(const ExploreOptions& options);
+
 /// "; REASON" for a simulator's divergence reason, "" when it gave none.
 std::string divergence_because(const std::string& reason);
 

@@ -59,7 +59,7 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   if (exists(out, scene.name + ".webm")) e.webm = scene.name + ".webm";
   if (exists(out, scene.name + ".gif")) e.gif = scene.name + ".gif";
   if (exists(out, scene.name + ".glb")) e.glb = scene.name + ".glb";
-  if (exists(out, "explorer.html") && scene.body.shape != physics::BodyShape::mesh)
+  if (exists(out, "explorer.html"))
     e.explorer = "explorer.html?scene=" + scene.name;
   e.video = e.mp4.empty() ? e.webm : e.mp4;
   e.poster = poster_for(out, scene.name);

@@ -26,14 +26,19 @@ function sceneBase(name) {
   return scene ? { ...DEFAULTS, ...scene.state, scene: name } : DEFAULTS;
 }
 
+/**
+ * The simulator's session for the state's body. The scene's own body comes whole from bookspin
+ * (its `body`: moments, cage and surface as `bookspin simulate` builds them, a mesh included);
+ * another preset is built by the physics from its shape, the book from the scene's size.
+ */
 function bodySession() {
   const scene = SCENES.find((s) => s.name === state.scene);
-  const book = scene && scene.book ? scene.book : { size: [1.878, 2.9085, 0.5], mass: 8 };
-  const mass = scene && scene.mass ? scene.mass : 1;
-  const scale = scene && scene.scale ? scene.scale : 1;
+  if (scene && scene.body && state.body === scene.body.shape) return new wasm.Session(scene.body);
+  if (state.body === 'mesh') throw new Error('no mesh body in this scene: choose a mesh scene');
+  const book = scene && scene.book && !scene.body ? scene.book : { size: [1.878, 2.9085, 0.5], mass: 8 };
   if (state.body === 'book')
     return new wasm.Session('book', book.mass, 1, book.size[0], book.size[1], book.size[2]);
-  return new wasm.Session(state.body, mass, scale, 1, 1, 1);
+  return new wasm.Session(state.body, 1, 1, 1, 1, 1);
 }
 
 /** ω0 (body frame) of the state: a principal axis at `rate`, or the custom components. */
@@ -47,7 +52,7 @@ function omega0(session) {
 
 function makeRun(model, integrator, normalize, colour) {
   const session = bodySession();
-  session.configure(model, integrator, normalize, state.damping, state.k, 0);
+  session.configure(model, integrator, normalize, state.damping, state.k, state.cells);
   const w = omega0(session);
   session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
   const run = { session, model, integrator, normalize, colour, trail: [], history: [],
@@ -376,6 +381,7 @@ function readControls() {
   state.normalize = $('normalize').checked;
   state.damping = $('damping').checked;
   state.k = Number($('k').value);
+  state.cells = Number($('cells').value);
   state.dt = Number($('dt').value);
   state.axis = $('axis').value;
   state.rate = Number($('rate').value);
@@ -392,13 +398,18 @@ function readControls() {
 }
 
 function writeControls() {
-  for (const id of ['scene', 'body', 'model', 'integrator', 'k', 'dt', 'axis', 'rate', 'jiggle',
+  for (const id of ['scene', 'body', 'model', 'integrator', 'k', 'cells', 'dt', 'axis', 'rate', 'jiggle',
     'seed', 'speed', 'model2', 'integrator2']) $(id).value = state[id];
   for (const id of ['normalize', 'damping', 'compare', 'normalize2', 'showL', 'showAxes']) $(id).checked = state[id];
   ['wx', 'wy', 'wz'].forEach((id, i) => { $(id).value = state.w[i]; });
   $('custom').style.display = state.axis === 'custom' ? '' : 'none';
   $('rateRow').style.display = state.axis === 'custom' ? 'none' : '';
   $('second').style.display = state.compare ? '' : 'none';
+  // 'mesh' is the scene's own mesh body: offered only where the scene has one.
+  const scene = SCENES.find((x) => x.name === state.scene);
+  const mesh = $('body').querySelector('option[value="mesh"]');
+  mesh.disabled = !(scene && scene.body && scene.body.shape === 'mesh');
+  mesh.textContent = mesh.disabled ? 'mesh (a mesh scene)' : `mesh (${scene.name})`;
 }
 
 function writeUrl() {
@@ -511,7 +522,7 @@ window.explorer = {
   /** Wall-clock ns per step of a fresh run of `model`/`integrator` (benchmark). */
   nsPerStep(model, integrator, normalize, steps) {
     const s = bodySession();
-    s.configure(model, integrator, normalize, state.damping, state.k, 0);
+    s.configure(model, integrator, normalize, state.damping, state.k, state.cells);
     const w = omega0(s);
     s.reset(w[0], w[1], w[2], state.jiggle, state.seed);
     const t0 = performance.now();

@@ -4,7 +4,7 @@
 export const MODELS = ['particle', 'rigid-matrix', 'rigid-quaternion', 'exact'];
 export const INTEGRATORS = ['euler', 'symplectic-euler', 'velocity-verlet', 'rk4',
   'implicit-midpoint', 'splitting', 'splitting4'];
-export const BODIES = ['book', 't-handle', 'tennis-racket', 'phone'];
+export const BODIES = ['book', 't-handle', 'tennis-racket', 'phone', 'mesh'];  // mesh: the scene's own
 export const AXES = ['smallest', 'intermediate', 'largest', 'custom'];
 
 export const DEFAULTS = {
@@ -15,6 +15,7 @@ export const DEFAULTS = {
   normalize: true,
   damping: true,
   k: 10,
+  cells: 0,          // lattice cells along the longest side (particle model, not the book); 0: default
   dt: 1 / 60,
   axis: 'custom',
   rate: 0.114819,
@@ -40,7 +41,7 @@ const PARSE = {
   body: oneOf(BODIES), model: oneOf(MODELS), integrator: oneOf(INTEGRATORS),
   model2: oneOf(MODELS), integrator2: oneOf(INTEGRATORS), axis: oneOf(AXES),
   normalize: bool, damping: bool, normalize2: bool, compare: bool, showL: bool, showAxes: bool,
-  k: num, dt: num, rate: num, jiggle: num, seed: num, speed: num, t: num,
+  k: num, cells: num, dt: num, rate: num, jiggle: num, seed: num, speed: num, t: num,
   w: (v, d) => {
     const parts = String(v).split(',').map(Number);
     return parts.length === 3 && parts.every(Number.isFinite) ? parts : d;

@@ -1,0 +1,131 @@
+#include "clip/explorer_page.hpp"
+
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "output/atomic_output.hpp"
+#include "output/data_url.hpp"
+#include "output/png_writer.hpp"
+#include "physics/presets.hpp"
+#include "render/face_images.hpp"
+#include "scene/canonical.hpp"
+
+namespace bookspin::clip {
+
+namespace {
+
+/// Numbers to 17 significant digits: the page's doubles are the same as bookspin's.
+template <typename Matrix>
+void json_numbers(std::ostream& out, const Matrix& m) {
+  out << '[';
+  for (Eigen::Index i = 0; i < m.size(); ++i) out << (i ? "," : "") << m.data()[i];
+  out << ']';
+}
+
+void method(std::ostream& out, const physics::ModelConfig& m, const char* suffix) {
+  out << "\"model" << suffix << "\":" << scene::json_string(std::string(physics::to_string(m.kind)))
+      << ",\"integrator" << suffix
+      << "\":" << scene::json_string(std::string(physics::to_string(m.integrator)))
+      << ",\"normalize" << suffix << "\":" << (m.normalize ? "true" : "false");
+}
+
+/// `text` safe inside a <script> element: "</" cannot close it early.
+std::string script_safe(std::string text) {
+  for (auto at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
+    text.replace(at, 2, "<\\/");
+  return text;
+}
+
+std::string read_shell(const std::filesystem::path& shell) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(shell, ec))
+    throw InputError(shell.string() + ": the explorer page's shell is missing (web/build.sh)");
+  std::ifstream in(shell, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in) throw InputError(shell.string() + ": cannot read the explorer page's shell");
+  return text.str();
+}
+
+}  // namespace
+
+std::string explorer_scene_json(const scene::Scene& s) {
+  std::ostringstream out;
+  out << std::setprecision(17);
+  const physics::ModelConfig& first = s.compare.empty() ? s.model : s.compare.front().model;
+  out << "{\"name\":" << scene::json_string(s.name) << ",\"title\":" << scene::json_string(s.title)
+      << ",\"description\":" << scene::json_string(s.description) << ",\"state\":{"
+      << "\"body\":" << scene::json_string(std::string(physics::to_string(s.body.shape))) << ',';
+  method(out, first, "");
+  out << ",\"damping\":" << (first.damping ? "true" : "false") << ",\"k\":" << first.spring_constant
+      << ",\"cells\":" << first.lattice_cells << ",\"dt\":" << s.dt << ",\"axis\":\"custom\",\"w\":";
+  json_numbers(out, s.initial.omega0_body);
+  out << ",\"jiggle\":" << s.initial.jiggle << ",\"seed\":" << s.initial.seed
+      << ",\"speed\":" << s.dt * s.steps_per_frame * s.render.fps
+      << ",\"showL\":" << (s.render.show_angular_momentum ? "true" : "false")
+      << ",\"showAxes\":" << (s.render.show_body_axes ? "true" : "false");
+  if (s.compare.size() >= 2) {
+    // The page compares two methods: the first tile with the last (e.g. Euler and exact).
+    out << ",\"compare\":true,";
+    method(out, s.compare.back().model, "2");
+  }
+  out << "},\"book\":{\"size\":";
+  json_numbers(out, s.body.cage.size);
+  out << ",\"mass\":" << s.body.cage.mass << '}';
+  if (s.body.shape != physics::BodyShape::book) {
+    const physics::Body& b = s.body;
+    out << ",\"body\":{\"shape\":" << scene::json_string(std::string(physics::to_string(b.shape)))
+        << ",\"mass\":" << b.cage.mass << ",\"moments\":";
+    json_numbers(out, b.moments);
+    out << ",\"cage\":";
+    json_numbers(out, b.cage.size);
+    out << ",\"volume\":" << b.volume << ",\"vertices\":";
+    json_numbers(out, b.vertices);
+    out << ",\"triangles\":";
+    json_numbers(out, b.triangles);
+    out << ",\"colours\":";
+    json_numbers(out, b.face_colours);
+    out << ",\"smooth\":" << (b.smooth ? "true" : "false") << '}';
+  }
+  out << '}';
+  return out.str();
+}
+
+ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
+  std::set<std::string> names;
+  for (const scene::Scene& s : request.scenes) {
+    if (!names.insert(s.name).second)
+      throw InputError(s.source.string() + ": scene.name: '" + s.name +
+                       "' is the name of another scene given to the explorer");
+  }
+  std::string page = read_shell(request.shell);
+  const auto at = page.find(kExplorerDataMarker);
+  if (at == std::string::npos)
+    throw InputError(request.shell.string() + ": not an explorer shell (no " +
+                     std::string(kExplorerDataMarker) + " marker; web/build.sh makes one)");
+
+  std::ostringstream data;
+  data << "<script>window.BOOKSPIN_SCENES=[";
+  for (std::size_t i = 0; i < request.scenes.size(); ++i)
+    data << (i ? ",\n" : "\n") << script_safe(explorer_scene_json(request.scenes[i]));
+  data << "];\nwindow.BOOKSPIN_BOOK_ART={";
+  const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
+  for (int f = 0; f < 4; ++f) {
+    const RgbaImage image = render::generate_face_image(static_cast<render::FaceImage>(f));
+    data << (f ? "," : "") << '"' << faces[f]
+         << "\":\"" << output::data_url("image/png", output::encode_png(image, 6)) << '"';
+  }
+  data << "};</script>";
+  page.replace(at, std::string(kExplorerDataMarker).size(), data.str());
+
+  ExplorerPageResult result;
+  result.path = request.out_dir / "explorer.html";
+  output::write_text_file(result.path, page);
+  result.bytes = page.size();
+  return result;
+}
+
+}  // namespace bookspin::clip

@@ -1,0 +1,52 @@
+#pragma once
+// `bookspin explore`: the explorer page (docs/explorer.md) for a set of scenes. The page's
+// program (the physics compiled to WebAssembly, the app bundled with three.js) is built once
+// by web/build.sh into a shell file; this writes the scenes into it and the result is one
+// self-contained HTML file that opens from disk with the network off.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace bookspin::clip {
+
+/// Where the shell of the page (web/build.sh BUILD_DIR writes BUILD_DIR/web/) is looked for.
+inline constexpr const char* kExplorerShellName = "explorer-shell.html";
+
+/// The marker in the shell that the scenes' data replaces (web/src/index.html).
+inline constexpr const char* kExplorerDataMarker = "<!--BOOKSPIN_DATA-->";
+
+/// One scene as the page reads it (web/src/main.js, window.BOOKSPIN_SCENES[i]): a JSON object
+/// with name, title, description, `state` (the page's state, web/src/state.js: body, model,
+/// integrator, normalize, damping, k, cells, dt, axis "custom" with ω0 `w` (body frame,
+/// rad per time unit), jiggle, seed, speed in time units per second, the markers; a
+/// [[compare]] scene compares its first tile with its last), `book` (size, mass) and, for
+/// other bodies, `body`: the Body itself as simulate builds it (shape, mass, principal moments about
+/// x, y, z, cage size, volume, surface 3×V principal frame flattened column by column,
+/// triangles 3×N, face colours 3×N, smooth), so that the page's physics starts from the
+/// same doubles (printed to 17 digits) and needs no mesh reader. No I/O.
+std::string explorer_scene_json(const scene::Scene& scene);
+
+struct ExplorerPageRequest {
+  std::vector<scene::Scene> scenes;  ///< in the page's order; names must differ
+  std::filesystem::path shell;       ///< the page without data (web/build.sh)
+  std::filesystem::path out_dir;     ///< writes OUT/explorer.html
+};
+
+struct ExplorerPageResult {
+  std::filesystem::path path;  ///< OUT/explorer.html
+  std::uintmax_t bytes = 0;    ///< its size
+};
+
+/// Writes OUT/explorer.html: the shell with its data marker replaced by one script that sets
+/// window.BOOKSPIN_SCENES (explorer_scene_json of each scene) and window.BOOKSPIN_BOOK_ART
+/// (the book's four default face images, render::generate_face_image, as PNG data: URLs).
+/// Throws InputError when two scenes share a name or the shell is missing, unreadable or
+/// lacks the marker (naming the shell), render::RenderError when the
+/// fonts of the covers are missing, OutputError when the page cannot be written (atomic:
+/// an earlier page stays until the new one is complete).
+ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request);
+
+}  // namespace bookspin::clip

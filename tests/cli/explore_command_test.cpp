@@ -1,0 +1,172 @@
+// `bookspin explore SCENE… -o OUT`: the scenes written into the explorer page's shell
+// (docs/explorer.md). These tests use a small shell of their own, so they need neither
+// emscripten nor a browser; tests/browser/explorer_test.py runs the real page.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+
+#include "support/cli_runner.hpp"
+#include "support/scratch.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+using namespace bookspin::test;
+namespace fs = std::filesystem;
+
+const char* kShell = "<!doctype html><html><body>\n<!--BOOKSPIN_DATA-->\n<script>app()</script>\n</body></html>\n";
+
+fs::path write_shell(const fs::path& dir, const std::string& text = kShell) {
+  const fs::path shell = dir / "shell.html";
+  std::ofstream(shell) << text;
+  return shell;
+}
+
+/// The entry of scene `name` in the page's BOOKSPIN_SCENES (its JSON object, one line).
+std::string scene_entry(const std::string& page, const std::string& name) {
+  const auto at = page.find("{\"name\":\"" + name + "\"");
+  if (at == std::string::npos) return "";
+  return page.substr(at, page.find('\n', at) - at);
+}
+
+std::vector<double> numbers_after(const std::string& text, const std::string& key) {
+  std::smatch m;
+  std::vector<double> out;
+  if (!std::regex_search(text, m, std::regex("\"" + key + "\":\\[([^\\]]*)\\]"))) return out;
+  std::istringstream list(m[1].str());
+  for (std::string item; std::getline(list, item, ',');) out.push_back(std::stod(item));
+  return out;
+}
+
+TEST(ExploreCommand, WritesEveryScenesSettingsAndTheMeshBodyIntoTheShell) {
+  const fs::path dir = fresh_dir("explore/page");
+  const fs::path shell = write_shell(dir);
+  const CliResult r = run_bookspin("explore " + scene_path("fig09-matrix-unstable-x") + " " +
+                                   scene_path("major-axis-rule") + " " +
+                                   scene_path("t-handle-dzhanibekov") + " --shell " +
+                                   shell.string() + " -o " + (dir / "out").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("3 scenes"), std::string::npos) << r.output;
+  const std::string page = read_file(dir / "out" / "explorer.html");
+  // The shell is kept around the data, which replaces the marker.
+  EXPECT_EQ(page.find("<!--BOOKSPIN_DATA-->"), std::string::npos);
+  EXPECT_EQ(page.rfind("<!doctype html><html><body>\n<script>window.BOOKSPIN_SCENES=[", 0), 0u);
+  EXPECT_NE(page.find("</script>\n<script>app()</script>\n</body></html>\n"), std::string::npos);
+
+  // fig09: the paper's book and spin (the original program's ω0 about x, scenes/fig09-…).
+  const std::string book = scene_entry(page, "fig09-matrix-unstable-x");
+  ASSERT_FALSE(book.empty());
+  EXPECT_NE(book.find("\"body\":\"book\",\"model\":\"rigid-matrix\",\"integrator\":\"euler\""),
+            std::string::npos) << book;
+  EXPECT_EQ(numbers_after(book, "w"), (std::vector<double>{0.114819, 0.0, 0.0}));
+  EXPECT_EQ(book.find("\"body\":{"), std::string::npos) << "the book is built by the page";
+
+  // The long box 2.0 × 1.2 × 0.3 of mass 1: moments m(b² + c²)/12 … in ascending order, the
+  // spin of 6 about the smallest axis (x), the lattice of 8 cells, the two tiles compared.
+  const std::string box = scene_entry(page, "major-axis-rule");
+  ASSERT_FALSE(box.empty());
+  const std::vector<double> moments = numbers_after(box, "moments");
+  ASSERT_EQ(moments.size(), 3u) << box.substr(0, 400);
+  EXPECT_NEAR(moments[0], (1.2 * 1.2 + 0.3 * 0.3) / 12, 1e-7);
+  EXPECT_NEAR(moments[1], (2.0 * 2.0 + 0.3 * 0.3) / 12, 1e-7);
+  EXPECT_NEAR(moments[2], (2.0 * 2.0 + 1.2 * 1.2) / 12, 1e-7);
+  EXPECT_EQ(numbers_after(box, "w"), (std::vector<double>{6.0, 0.0, 0.0}));
+  // The mesh file's coordinates arrive as float32 (assimp): ~1e-7 relative.
+  const std::vector<double> cage = numbers_after(box, "cage");
+  ASSERT_EQ(cage.size(), 3u);
+  EXPECT_NEAR(cage[0], 2.0, 2e-7);
+  EXPECT_NEAR(cage[1], 1.2, 2e-7);
+  EXPECT_NEAR(cage[2], 0.3, 2e-7);
+  const std::vector<double> vertices = numbers_after(box, "vertices");
+  const std::vector<double> triangles = numbers_after(box, "triangles");
+  EXPECT_EQ(vertices.size(), 3u * 8u);     // the box's 8 corners
+  EXPECT_EQ(triangles.size(), 3u * 12u);   // 12 triangles
+  EXPECT_EQ(numbers_after(box, "colours").size(), 3u * 12u);
+  for (const double v : vertices) {
+    const double a = std::abs(v);
+    EXPECT_TRUE(std::abs(a - 1.0) < 1e-7 || std::abs(a - 0.6) < 1e-7 || std::abs(a - 0.15) < 1e-7)
+        << v;
+  }
+  EXPECT_NE(box.find("\"model\":\"particle\",\"integrator\":\"velocity-verlet\""), std::string::npos);
+  EXPECT_NE(box.find("\"cells\":8"), std::string::npos);
+  EXPECT_NE(box.find("\"compare\":true,\"model2\":\"rigid-quaternion\",\"integrator2\":\"splitting\""),
+            std::string::npos);
+  EXPECT_NE(box.find("\"shape\":\"mesh\""), std::string::npos);
+
+  // The T-handle: its body given whole, the preset's shape named.
+  const std::string t_handle = scene_entry(page, "t-handle-dzhanibekov");
+  EXPECT_NE(t_handle.find("\"body\":{\"shape\":\"t-handle\""), std::string::npos);
+
+  // The book's four faces as PNG data: URLs.
+  for (const char* face : {"front", "back", "spine", "pages"})
+    EXPECT_NE(page.find(std::string("\"") + face + "\":\"data:image/png;base64,iVBORw0KGgo"),
+              std::string::npos) << face;
+}
+
+TEST(ExploreCommand, TextThatWouldCloseTheScriptIsEscaped) {
+  const fs::path dir = fresh_dir("explore/escape");
+  const fs::path scene = dir / "sneaky.toml";
+  std::ofstream(scene) << "[scene]\ntitle = \"a </script><script>alert(1)</script> b\"\n";
+  const CliResult r = run_bookspin("explore " + scene.string() + " --shell " +
+                                   write_shell(dir).string() + " -o " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string page = read_file(dir / "explorer.html");
+  EXPECT_NE(page.find("a <\\/script><script>alert(1)<\\/script> b"), std::string::npos);
+  EXPECT_EQ(page.find("alert(1)</script>"), std::string::npos);
+}
+
+TEST(ExploreCommand, BadInputsAreOneLineExitTwoAndWriteNothing) {
+  const fs::path dir = fresh_dir("explore/bad");
+  const fs::path shell = write_shell(dir);
+  const fs::path no_marker = dir / "plain.html";
+  std::ofstream(no_marker) << "<html></html>\n";
+  const fs::path bad_scene = dir / "bad.toml";
+  std::ofstream(bad_scene) << "[time]\ndt = -1\n";
+  const std::string out = " -o " + (dir / "out").string();
+  const std::string fig09 = scene_path("fig09-matrix-unstable-x");
+  struct Case {
+    std::string args;
+    std::string says;
+  };
+  const Case cases[] = {
+      {fig09 + " --shell " + (dir / "missing.html").string(), "missing.html: the explorer page's shell is missing"},
+      {fig09 + " --shell " + no_marker.string(), "plain.html: not an explorer shell"},
+      {bad_scene.string() + " --shell " + shell.string(), "bad.toml"},
+      {fig09 + " " + fig09 + " --shell " + shell.string(), "is the name of another scene"},
+      {"--shell " + shell.string(), "SCENE is required"},
+  };
+  for (const Case& c : cases) {
+    const CliResult r = run_bookspin("explore " + c.args + out);
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.args << "\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out" / "explorer.html")) << c.args;
+  }
+}
+
+TEST(ExploreCommand, WithoutTheBuiltShellSaysHowToBuildItAndExitsOne) {
+  // A copy of the program in a folder with no web/explorer-shell.html beside it.
+  const fs::path dir = fresh_dir("explore/unbuilt");
+  fs::copy_file(BOOKSPIN_EXE, dir / "bookspin");
+  CliResult r = run_program("", (dir / "bookspin").string(),
+                            "explore " + scene_path("fig09-matrix-unstable-x") + " -o " +
+                                (dir / "out").string());
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("bookspin: error: the explorer page's program is not built: no " +
+                          (dir / "web" / "explorer-shell.html").string()),
+            std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("web/build.sh"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  // With the shell in place it works.
+  fs::create_directories(dir / "web");
+  write_shell(dir / "web");
+  fs::rename(dir / "web" / "shell.html", dir / "web" / "explorer-shell.html");
+  r = run_program("", (dir / "bookspin").string(),
+                  "explore " + scene_path("fig09-matrix-unstable-x") + " -o " + (dir / "out").string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / "explorer.html"));
+}
+
+}  // namespace
+}  // namespace bookspin::cli
