@@ -15,7 +15,10 @@ explorer.html with `bookspin explore` (every scene, and a mesh scene of its own)
     select shows no flip in 300 time units (driven through the time slider); set to the
     intermediate axis it flips;
   - compare mode (its checkbox) draws two trails on the momentum sphere (both colours);
-  - the page's URL, opened anew, restores the same state and the same ω.
+  - the page's URL, opened anew, restores the same state and the same ω;
+  - the gallery written beside the page links every entry to the explorer on its own scene,
+    and four of those links (a book figure, the T-handle, a comparison, the mesh scene) open
+    it on that scene without an error.
 Screenshots go to BINARY_DIR/test-output/browser/explorer-*.png.
 
 Usage: explorer_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -317,6 +320,42 @@ def main(bookspin, source, binary):
         if errors:
             fail(f"console errors: {errors}")
         print(f"shared URL restores the state: {url.split('?', 1)[1]}")
+
+        # 6. The gallery beside the page links every entry to the explorer on its own scene;
+        #    four of them opened: a book figure, the T-handle, a comparison, the mesh scene.
+        scene_files = sorted((source / "scenes").glob("*.toml"))
+        run([bookspin, "gallery", str(out), *map(str, scene_files)])
+        driver.get((out / "index.html").resolve().as_uri())
+        links = driver.execute_script("""
+          return [...document.querySelectorAll('section.clip')].map((s) => {
+            const a = [...s.querySelectorAll('a')].find((x) => x.textContent === 'open in the explorer');
+            return [s.id, a ? a.getAttribute('href') : null];
+          });""")
+        if sorted(name for name, _ in links) != sorted(p.stem for p in scene_files):
+            fail(f"the gallery's entries are not the scenes: {links}")
+        for name, href in links:
+            if href != f"explorer.html?scene={name}":
+                fail(f"gallery entry {name} links {href!r}, not the explorer on its scene")
+        for name in ("fig05-particle-unstable-x", "t-handle-dzhanibekov", "compare-methods-x",
+                     "major-axis-rule"):
+            driver.get((out / "index.html").resolve().as_uri())
+            driver.execute_script(f"document.querySelector('#{name} a[href^=\"explorer.html\"]').click()")
+            for _ in range(300):
+                if driver.execute_script("return !!(window.explorer && window.explorer.ready)"):
+                    break
+                time.sleep(0.1)
+            state = driver.execute_script("return window.explorer.state()")
+            message = driver.find_element("id", "message").text
+            trails = driver.execute_script("return window.explorer.trails()")
+            driver.save_screenshot(str(shots / f"explorer-from-gallery-{name}.png"))
+            print(f"gallery → {name}: body {state['body']}, model {state['model']}, "
+                  f"compare {state['compare']}, runs {len(trails)}")
+            if state["scene"] != name or message or console_errors(driver):
+                fail(f"the gallery's link did not open {name} cleanly: scene {state['scene']!r}, "
+                     f"message {message!r}, console {console_errors(driver)}")
+            expected_runs = 2 if name in ("compare-methods-x", "major-axis-rule") else 1  # [[compare]]
+            if len(trails) != expected_runs:
+                fail(f"{name} opened with {len(trails)} runs, not {expected_runs}")
     finally:
         driver.quit()
         shutil.rmtree(profile, ignore_errors=True)

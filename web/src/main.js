@@ -56,7 +56,7 @@ function makeRun(model, integrator, normalize, colour) {
   const w = omega0(session);
   session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
   const run = { session, model, integrator, normalize, colour, trail: [], history: [],
-    label: `${model}${model === 'exact' ? '' : ', ' + integrator}${normalize ? ', normalized' : ''}`,
+    label: `${model}${model === 'exact' ? '' : ', ' + integrator}${normalize && model !== 'exact' ? ', normalized' : ''}`,
     diverged: '' };
   record(run);
   run.E0 = run.history[0].E;
