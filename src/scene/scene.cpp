@@ -326,6 +326,11 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   check_lattice_cells(r, s);
   if (s.render.poinsot && !s.compare.empty())
     r.fail("render.poinsot", "Poinsot's construction is for a single run, not a [[compare]] scene");
+  // The invariable plane is normal to L (docs/physics.md §16): a body at rest has none.
+  if (s.render.poinsot && s.initial.omega0_body.isZero(0.0) && s.initial.jiggle == 0.0)
+    r.fail("render.poinsot",
+           "Poinsot's construction needs a spinning body, but initial.angular_velocity is "
+           "[0, 0, 0] and initial.jiggle is 0 (at rest: L = 0)");
   return s;
 }
 

@@ -103,12 +103,13 @@ void TomlReader::check_range(const Limit& limit, double value, bool component) c
   }
 }
 
-void TomlReader::check_smallest(const Limit& limit, double magnitude, bool vector) const {
+void TomlReader::check_smallest(const Limit& limit, double value, bool vector) const {
+  const double magnitude = std::abs(value);
   if (magnitude != 0.0 && magnitude < limit.smallest_nonzero) {
     fail(limit.key, std::string(vector ? "must be [0, 0, 0] or at least " : "must be 0 or at least ") +
                         format_number(limit.smallest_nonzero) +
                         (vector ? " long, got length " : " in magnitude, got ") +
-                        format_number(magnitude));
+                        format_number(value));
   }
 }
 
@@ -126,7 +127,7 @@ double TomlReader::number(const Limit& limit, double fallback) {
     fail(limit.key, "expected a number, got " + type_name(*view.node()));
   }
   check_range(limit, value, false);
-  check_smallest(limit, std::abs(value), false);
+  check_smallest(limit, value, false);
   return value;
 }
 
@@ -188,7 +189,7 @@ Eigen::Vector3d TomlReader::vector3(const Limit& limit, const Eigen::Vector3d& f
     }
     check_range(limit, out[d], true);
   }
-  check_smallest(limit, out.stableNorm(), true);
+  check_smallest(limit, std::hypot(out[0], out[1], out[2]), true);
   return out;
 }
 

@@ -46,9 +46,9 @@ class TomlReader {
   toml::node_view<const toml::node> find(std::string_view key);
   /// Fails unless `value` (finite) lies in the range of `limit` ("each component" for a vector).
   void check_range(const Limit& limit, double value, bool component) const;
-  /// Fails for a magnitude (a vector's length when `vector`) that is neither 0 nor as large
-  /// as limit.smallest_nonzero.
-  void check_smallest(const Limit& limit, double magnitude, bool vector) const;
+  /// Fails for a value (a vector's length when `vector`) that is neither 0 nor as large in
+  /// magnitude as limit.smallest_nonzero.
+  void check_smallest(const Limit& limit, double value, bool vector) const;
   /// The InputError "FILE:LINE: KEY: reason" (or "--set KEY: reason") for `key` at `node`.
   InputError error_at(std::string_view key, const toml::node* node, std::string_view reason) const;
   bool from_override(const std::string& full_key) const;
