@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "output/atomic_output.hpp"
+#include "output/finite_number.hpp"
 #include "output/png_writer.hpp"
 
 namespace bookspin::charts {
@@ -25,12 +26,13 @@ void write_energy_csv(const std::filesystem::path& path,
   const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
   for (std::size_t i = 0; i < rows; ++i) {
     char cell[64];
-    std::snprintf(cell, sizeof cell, "%.9g", histories.front().t[i]);
+    std::snprintf(cell, sizeof cell, "%.9g", output::finite(histories.front().t[i], "energy CSV t"));
     out << cell;
     for (const auto& h : histories) {
       // A diverged run's history is shorter: its missing windows stay empty.
       if (i < h.relative_error.size()) {
-        std::snprintf(cell, sizeof cell, ",%.6e", h.relative_error[i]);
+        std::snprintf(cell, sizeof cell, ",%.6e",
+                      output::finite(h.relative_error[i], "energy CSV relative error"));
         out << cell;
       } else {
         out << ',';

@@ -28,22 +28,28 @@ const CLI::Validator kFinitePositive(
     },
     "POSITIVE");
 
-/// A finite number in [low, high], printed in short form.
-CLI::Validator finite_range(double low, double high) {
+/// A finite number in [low, high] ((low, high] when `low_open`), printed in short form.
+CLI::Validator finite_range(double low, double high, bool low_open = false) {
+  const char open = low_open ? '(' : '[';
   char description[64];
-  std::snprintf(description, sizeof description, "FINITE in [%g - %g]", low, high);
+  std::snprintf(description, sizeof description, "FINITE in %c%g - %g]", open, low, high);
   return CLI::Validator(
-      [low, high](std::string& text) -> std::string {
+      [low, high, low_open, open](std::string& text) -> std::string {
         double value = 0.0;
         if (CLI::detail::lexical_cast(text, value) && std::isfinite(value) && value >= low &&
-            value <= high)
+            value <= high && !(low_open && value == low))
           return {};
         char message[128];
-        std::snprintf(message, sizeof message, "Value %s not a finite number in [%g, %g]",
-                      text.c_str(), low, high);
+        std::snprintf(message, sizeof message, "Value %s not a finite number in %c%g, %g]",
+                      text.c_str(), open, low, high);
         return message;
       },
       description);
+}
+
+/// The range of a scene key's limit (scene/limits.hpp), for an option that stands for it.
+CLI::Validator finite_range(const scene::Limit& limit) {
+  return finite_range(limit.min, limit.max, limit.min_open);
 }
 
 void add_simulate(CLI::App& cli, SimulateOptions& options) {
@@ -127,7 +133,7 @@ void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
       ->check(finite_range(1.0, 1000.0))
       ->capture_default_str();
   cmd->add_option("--dt", options.dts, "Time steps to try (time units)")
-      ->check(kFinitePositive)
+      ->check(finite_range(scene::limit("time.dt")))
       ->take_all();
 }
 

@@ -1,6 +1,5 @@
 // `bookspin inertia`: a mesh file's volume, mass, centre of mass and inertia tensor
 // (docs/physics.md §11), as text or as one JSON object.
-#include <charconv>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -8,16 +7,16 @@
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
 #include "jobs/mesh_inertia.hpp"
+#include "output/finite_number.hpp"
 
 namespace bookspin::cli {
 
 namespace {
 
-/// The shortest text that reads back as exactly `x` (std::to_chars), valid JSON.
-std::string exact(double x) {
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
-  return std::string(buffer, end);
+/// The shortest text that reads back as exactly `x` (std::to_chars), valid JSON: finite, or
+/// an internal error naming the field (output/finite_number.hpp).
+std::string exact(double x, std::string_view field) {
+  return output::finite_text(x, "inertia JSON field " + std::string(field));
 }
 
 /// Ten significant digits, for people.
@@ -33,28 +32,32 @@ std::string row(const Eigen::RowVector3d& v, Format format, const char* sep) {
 }
 
 // Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
-std::string json_vector(const Eigen::RowVector3d& v) {
+std::string json_vector(const Eigen::RowVector3d& v, std::string_view field) {
+  const auto number = [field](double x) { return exact(x, field); };
   std::string out;
-  return out.append("[").append(row(v, exact, ", ")).append("]");
+  return out.append("[").append(row(v, number, ", ")).append("]");
 }
 
-std::string json_matrix(const Eigen::Matrix3d& m) {
+std::string json_matrix(const Eigen::Matrix3d& m, std::string_view field) {
   std::string out;
   return out.append("[")
-      .append(json_vector(m.row(0)))
+      .append(json_vector(m.row(0), field))
       .append(", ")
-      .append(json_vector(m.row(1)))
+      .append(json_vector(m.row(1), field))
       .append(", ")
-      .append(json_vector(m.row(2)))
+      .append(json_vector(m.row(2), field))
       .append("]");
 }
 
 void print_json(const physics::MassProperties& p) {
-  std::cout << "{\"volume\": " << exact(p.volume) << ", \"mass\": " << exact(p.mass)
-            << ", \"center_of_mass\": " << json_vector(p.center_of_mass.transpose())
-            << ", \"inertia\": " << json_matrix(p.I_body)
-            << ", \"principal_moments\": " << json_vector(p.principal_moments.transpose())
-            << ", \"principal_axes\": " << json_matrix(p.principal_axes) << "}\n";
+  std::cout << "{\"volume\": " << exact(p.volume, "volume")
+            << ", \"mass\": " << exact(p.mass, "mass")
+            << ", \"center_of_mass\": " << json_vector(p.center_of_mass.transpose(), "center_of_mass")
+            << ", \"inertia\": " << json_matrix(p.I_body, "inertia")
+            << ", \"principal_moments\": "
+            << json_vector(p.principal_moments.transpose(), "principal_moments")
+            << ", \"principal_axes\": " << json_matrix(p.principal_axes, "principal_axes")
+            << "}\n";
 }
 
 void print_text(const std::string& file, const physics::MassProperties& p) {
@@ -98,12 +101,14 @@ int inertia_command(const InertiaOptions& options) {
   } catch (const InputError& e) {
     const std::string message = e.what();
     const bool range = message.find(physics::kOverflow) != std::string::npos ||
+                       message.find(physics::kUnderflow) != std::string::npos ||
                        message.find("mesh size out of range") != std::string::npos;
     if (range) throw InputError(message + given);
     throw;
   }
-  if (!physics::all_finite(p))  // never print NaN or infinity
-    throw InputError(options.mesh_path + ": " + physics::kOverflow + given);
+  // Never print NaN, infinity, or a mass or moment that underflowed to 0.
+  if (const std::string range = physics::range_error(p); !range.empty())
+    throw InputError(options.mesh_path + ": " + range + given);
   for (const auto& warning : p.warnings)
     std::cerr << "bookspin: warning: " << options.mesh_path << ": " << warning << '\n';
   if (options.json) {

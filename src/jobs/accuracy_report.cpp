@@ -1,9 +1,11 @@
 #include "jobs/accuracy_report.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
+#include "output/finite_number.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "overlay/plot.hpp"
@@ -13,21 +15,39 @@ namespace bookspin::jobs {
 
 namespace {
 
+/// `value` in printf `format`, checked finite (output/finite_number.hpp); or "" (an empty
+/// cell) when `empty`: no orientation error after a divergence, no flip period where fewer
+/// than two flips were seen (docs/outputs.md, "Numbers").
+std::string cell(const char* format, double value, const char* column, bool empty = false) {
+  if (empty) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, format,
+                output::finite(value, std::string("accuracy CSV column ") + column));
+  return text;
+}
+
 std::string csv_line(const analysis::AccuracyRow& r) {
-  char line[512];
-  std::snprintf(line, sizeof line, "%s,%s,%.17g,%ld,%.17g,%.6e,%.6e,%.6e,%.17g,%.6e,%.2f,%d",
-                std::string(physics::to_string(r.method.kind)).c_str(),
-                std::string(physics::to_string(r.method.integrator)).c_str(), r.dt, r.steps,
-                r.t_end, r.orientation_error, r.energy_drift, r.L_drift, r.flip_period,
-                r.flip_period_error, r.ns_per_step, r.diverged ? 1 : 0);
-  return line;
+  const bool no_flips = std::isnan(r.flip_period);
+  return std::string(physics::to_string(r.method.kind)) + "," +
+         std::string(physics::to_string(r.method.integrator)) + "," + cell("%.17g", r.dt, "dt") +
+         "," + std::to_string(r.steps) + "," + cell("%.17g", r.t_end, "t_end") + "," +
+         cell("%.6e", r.orientation_error, "orientation_error_rad", r.diverged) + "," +
+         cell("%.6e", r.energy_drift, "energy_drift") + "," +
+         cell("%.6e", r.L_drift, "L_drift") + "," +
+         cell("%.17g", r.flip_period, "flip_period", no_flips) + "," +
+         cell("%.6e", r.flip_period_error, "flip_period_error", no_flips) + "," +
+         cell("%.2f", r.ns_per_step, "ns_per_step") + "," + (r.diverged ? "1" : "0");
 }
 
 std::string table_row(const analysis::AccuracyRow& r) {
+  // Fewer than two flips seen: no flip period to compare, shown as "-".
+  char flip_error[32] = "-";
+  if (!std::isnan(r.flip_period_error))
+    std::snprintf(flip_error, sizeof flip_error, "%.3e", r.flip_period_error);
   char line[512];
-  std::snprintf(line, sizeof line, "%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12.3e %9.1f%s%s\n",
+  std::snprintf(line, sizeof line, "%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12s %9.1f%s%s\n",
                 charts::method_label(r.method).c_str(), 1.0 / r.dt, r.orientation_error,
-                r.energy_drift, r.L_drift, r.flip_period_error, r.ns_per_step,
+                r.energy_drift, r.L_drift, flip_error, r.ns_per_step,
                 r.diverged ? "  diverged" : "",
                 r.divergence_reason.empty() ? "" : (": " + r.divergence_reason).c_str());
   return line;
@@ -67,6 +87,19 @@ overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, 
 
 namespace {
 
+/// Every dt must make a run of at least one step and at most kMaxAccuracySteps.
+void check_step_counts(const AccuracyRequest& request, double flip_period) {
+  for (double dt : request.dts) {
+    const double steps = request.flips * flip_period / dt;
+    if (steps >= 1.0 && steps <= kMaxAccuracySteps) continue;
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "--dt %g: %g steps for %g flip periods of %g time units (expected 1 to %g)", dt,
+                  steps, request.flips, flip_period, kMaxAccuracySteps);
+    throw InputError(message);
+  }
+}
+
 std::string format_line(const char* pattern, const std::string& a, double b, double c, double d) {
   char line[256];
   std::snprintf(line, sizeof line, pattern, a.c_str(), b, c, d);
@@ -82,6 +115,7 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
   };
   analysis::AccuracySettings settings{scene.body, scene.initial, scene.model, request.flips};
   const auto exact = analysis::exact_reference(settings);
+  check_step_counts(request, exact.flip_period());
   say(format_line("%s: exact flip period T/2 = 2K(k)/lambda = %.9g time units (k = %.9g), %g flips",
                   scene.name, exact.flip_period(), exact.modulus(), request.flips));
   char header[256];

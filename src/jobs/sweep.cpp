@@ -17,6 +17,7 @@
 
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
+#include "output/finite_number.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "charts/panel.hpp"
@@ -32,15 +33,21 @@ constexpr const char* kShardMagic = "# bookspin sweep shard ";
 constexpr int kPlotWidth = 1400;
 constexpr int kPlotHeightPerMeasure = 330;
 
-std::string cell(const std::optional<double>& v) { return v ? full_precision(*v) : std::string(); }
+/// A measure's cell: empty where the run does not reach it (no flip), else its value, checked
+/// finite on the way out (output/finite_number.hpp).
+std::string cell(const std::optional<double>& v, std::string_view column) {
+  return v ? full_precision(output::finite(*v, "sweep CSV column " + std::string(column)))
+           : std::string();
+}
 
 std::vector<std::string> row_cells(const std::vector<double>& point, const MeasureList& measures,
                                    const analysis::RunMeasures& m) {
   std::vector<std::string> cells;
-  for (double v : point) cells.push_back(full_precision(v));
-  for (const analysis::Measure* measure : measures) cells.push_back(cell(m.*(measure->value)));
+  for (double v : point) cells.push_back(full_precision(output::finite(v, "sweep grid value")));
   for (const analysis::Measure* measure : measures)
-    if (measure->exact) cells.push_back(cell(m.*(measure->exact)));
+    cells.push_back(cell(m.*(measure->value), measure->name));
+  for (const analysis::Measure* measure : measures)
+    if (measure->exact) cells.push_back(cell(m.*(measure->exact), measure->exact_name));
   return cells;
 }
 

@@ -1,19 +1,39 @@
 #include "output/diagnostics_csv.hpp"
 
 #include <Eigen/Geometry>
-#include <charconv>
+#include <optional>
+#include <sstream>
+#include <vector>
 
+#include "output/finite_number.hpp"
 #include "output/output_dir.hpp"
 
 namespace bookspin::output {
 
 namespace {
 
-void append_number(std::string& out, double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+/// The CSV's column names, in order.
+const std::vector<std::string>& column_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    std::stringstream header(diagnostics_csv_header());
+    for (std::string name; std::getline(header, name, ',');)
+      out.push_back("diagnostics CSV column " + name);
+    return out;
+  }();
+  return names;
+}
+
+/// Appends ",value" for the next column (finite, or an internal error naming the column).
+void append_number(std::string& out, std::size_t& column, double value) {
   out.push_back(',');
-  out.append(buffer, result.ptr);
+  out.append(finite_text(value, column_names()[column++]));
+}
+
+/// Appends ",value", or "," (an empty cell) for nullopt.
+void append_cell(std::string& out, std::size_t& column, const std::optional<double>& value) {
+  out.push_back(',');
+  out.append(finite_text(value, column_names()[column++]));
 }
 
 }  // namespace
@@ -40,20 +60,27 @@ const std::string& diagnostics_csv_header() {
 std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d) {
   std::string row = std::to_string(frame);
   row.reserve(400);
-  append_number(row, d.t);
-  for (int i = 0; i < 3; ++i) append_number(row, d.omega_body[i]);
-  for (int i = 0; i < 3; ++i) append_number(row, d.L[i]);
-  append_number(row, d.energy_kinetic);
-  append_number(row, d.energy_potential);
-  append_number(row, d.energy_total);
-  for (int i = 0; i < 3; ++i) append_number(row, d.cos_axis_L[i]);
-  append_number(row, d.strain_max);
-  append_number(row, d.orthogonality_error);
-  append_number(row, d.quaternion_norm);
-  for (int i = 0; i < 3; ++i) append_number(row, d.cos_principal_L[i]);
+  std::size_t column = 1;
+  // The cosines with L have no value when L = 0 (a body at rest): empty cells, not NaN
+  // (docs/outputs.md).
+  const bool at_rest = d.L.isZero(0.0);
+  const auto cosine = [at_rest](double value) {
+    return at_rest ? std::nullopt : std::optional<double>(value);
+  };
+  append_number(row, column, d.t);
+  for (int i = 0; i < 3; ++i) append_number(row, column, d.omega_body[i]);
+  for (int i = 0; i < 3; ++i) append_number(row, column, d.L[i]);
+  append_number(row, column, d.energy_kinetic);
+  append_number(row, column, d.energy_potential);
+  append_number(row, column, d.energy_total);
+  for (int i = 0; i < 3; ++i) append_cell(row, column, cosine(d.cos_axis_L[i]));
+  append_number(row, column, d.strain_max);
+  append_number(row, column, d.orthogonality_error);
+  append_number(row, column, d.quaternion_norm);
+  for (int i = 0; i < 3; ++i) append_cell(row, column, cosine(d.cos_principal_L[i]));
   const Eigen::Vector4d q = pose_quaternion(d.orientation);
-  for (int i = 0; i < 4; ++i) append_number(row, q[i]);
-  for (int i = 0; i < 3; ++i) append_number(row, d.center_of_mass[i]);
+  for (int i = 0; i < 4; ++i) append_number(row, column, q[i]);
+  for (int i = 0; i < 3; ++i) append_number(row, column, d.center_of_mass[i]);
   return row;
 }
 

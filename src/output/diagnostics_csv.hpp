@@ -17,6 +17,8 @@ const std::string& diagnostics_csv_header();
 
 /// One row (no newline) for `frame`; numbers in shortest round-trip form (std::to_chars), so
 /// the same state always gives the same bytes. Frames: omega body, L world (docs/physics.md §9).
+/// The six cos_*_L cells are empty when L = 0 (at rest: no direction); any other number that
+/// is not finite throws InternalError naming its column (output/finite_number.hpp).
 std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d);
 
 /// The unit quaternion (w, x, y, z) of rotation `orientation` (3×3, body→world), with

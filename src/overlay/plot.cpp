@@ -43,7 +43,13 @@ Axis fit_axis(const std::vector<Series>& series, bool use_x, bool log, double mi
     lo = mid - 0.5 * min_span, hi = mid + 0.5 * min_span;
     return {lo, hi, false};
   }
-  if (hi - lo < 1e-12) lo -= 0.5, hi += 0.5;
+  // A (nearly) constant series: widen it by ±0.5, or by a millionth of its size where ±0.5
+  // would be lost in rounding (values of 10¹⁶ and more).
+  const double size = std::max(std::abs(lo), std::abs(hi));
+  if (hi - lo < 1e-12 * std::max(1.0, size)) {
+    const double half = std::max(0.5, 1e-6 * size);
+    lo -= half, hi += half;
+  }
   if (log) {
     lo = std::floor(lo), hi = std::ceil(hi);
   } else if (!use_x) {
@@ -82,8 +88,16 @@ std::vector<double> ticks(const Axis& a) {
     return out;
   }
   const double step = nice_step(a.hi - a.lo);
-  for (double v = std::ceil(a.lo / step) * step; v <= a.hi + 1e-9 * step; v += step)
+  if (!(step > 0.0) || !std::isfinite(step)) return out;
+  // Counted, not summed: the k-th tick is k × step, and at most kMaxTicks of them, so that
+  // a step lost in rounding next to huge values cannot loop forever.
+  constexpr int kMaxTicks = 50;
+  const double first = std::ceil(a.lo / step);
+  for (int i = 0; i < kMaxTicks; ++i) {
+    const double v = (first + i) * step;
+    if (!(v <= a.hi + 1e-9 * step) || (!out.empty() && !(v > out.back()))) break;
     out.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  }
   return out;
 }
 

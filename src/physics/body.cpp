@@ -75,8 +75,8 @@ BodyResult body_from_mesh(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3
     return result;
   }
   const MassProperties p = with_mass(props.properties, mass);
-  if (!all_finite(p)) {
-    result.error = kOverflow;
+  if (const std::string range = range_error(p); !range.empty()) {
+    result.error = range;
     return result;
   }
   result.warnings = p.warnings;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -293,7 +294,7 @@ MassPropertiesResult mass_properties(const Eigen::Matrix3Xd& vertices,
   Matrix3d I = C.trace() * Matrix3d::Identity() - C;
   p.I_body = 0.5 * (I + I.transpose());
   principal_frame(p.I_body, p.principal_moments, p.principal_axes);
-  if (!all_finite(p)) result.error = kOverflow;
+  result.error = range_error(p);
   return result;
 }
 
@@ -314,6 +315,13 @@ bool all_finite(const MassProperties& p) {
   return std::isfinite(p.volume) && std::isfinite(p.mass) && p.center_of_mass.allFinite() &&
          p.I_body.allFinite() && p.principal_moments.allFinite() &&
          p.principal_axes.allFinite();
+}
+
+std::string range_error(const MassProperties& p) {
+  if (!all_finite(p)) return kOverflow;
+  const double smallest = std::numeric_limits<double>::min();
+  if (!(p.mass >= smallest && p.principal_moments.minCoeff() >= smallest)) return kUnderflow;
+  return "";
 }
 
 }  // namespace bookspin::physics

@@ -68,6 +68,15 @@ MassProperties with_mass(MassProperties p, double mass);
 /// Whether every number of `p` is finite.
 bool all_finite(const MassProperties& p);
 
+/// The error of a mass or moment so small that it underflows (0 or subnormal): a body that
+/// has volume has a positive mass and positive principal moments.
+inline constexpr const char* kUnderflow =
+    "underflow: the mass or inertia is below the range of a double";
+
+/// Why `p` does not fit in doubles: kOverflow (a number that is not finite), kUnderflow (a
+/// mass or principal moment below the smallest normal double), or "" when it does.
+std::string range_error(const MassProperties& p);
+
 /// The principal moments (ascending) and a right-handed principal frame (rows) of a
 /// symmetric 3×3 inertia tensor; see MassProperties for the sign convention of the axes.
 void principal_frame(const Eigen::Matrix3d& I_body, Eigen::Vector3d& moments,

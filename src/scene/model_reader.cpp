@@ -6,8 +6,6 @@ namespace bookspin::scene {
 
 namespace {
 
-constexpr double kHuge = 1e12;
-
 /// "compare[i]." — built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + string.
 std::string entry_prefix(std::size_t index) {
   std::string prefix("compare[");
@@ -52,9 +50,9 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   }
   m.normalize = r.boolean("model.normalize", fallback.normalize);
   m.damping = r.boolean("model.damping", fallback.damping);
-  m.spring_constant = r.number("model.spring_constant", fallback.spring_constant, 0.0, kHuge, true);
-  m.lattice_cells = static_cast<int>(
-      r.integer("model.lattice_cells", fallback.lattice_cells, 0, kMaxLatticeCells));
+  m.spring_constant = r.number(limit("model.spring_constant"), fallback.spring_constant);
+  m.lattice_cells =
+      static_cast<int>(r.integer(limit("model.lattice_cells"), fallback.lattice_cells));
   return m;
 }
 

@@ -16,8 +16,6 @@ namespace bookspin::scene {
 
 namespace {
 
-constexpr double kHuge = 1e12;
-
 bool is_key_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
 }
@@ -110,9 +108,9 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
 }
 
 void read_time(TomlReader& r, Scene& s) {
-  s.dt = r.number("time.dt", 1.0 / 60.0, 0.0, 1e3, true);
-  s.steps_per_frame = static_cast<int>(r.integer("time.steps_per_frame", 6, 1, kMaxStepsPerFrame));
-  s.frames = static_cast<int>(r.integer("time.frames", 300, 1, kMaxFrames));
+  s.dt = r.number(limit("time.dt"));
+  s.steps_per_frame = static_cast<int>(r.integer(limit("time.steps_per_frame")));
+  s.frames = static_cast<int>(r.integer(limit("time.frames")));
 }
 
 std::string read_texture(TomlReader& r, std::string_view key, const std::filesystem::path& origin) {
@@ -126,10 +124,10 @@ std::string read_texture(TomlReader& r, std::string_view key, const std::filesys
   return path.string();
 }
 
-int read_dimension(TomlReader& r, std::string_view key, int fallback) {
-  const int value = static_cast<int>(r.integer(key, fallback, 16, kMaxDimension));
+int read_dimension(TomlReader& r, const Limit& limit) {
+  const int value = static_cast<int>(r.integer(limit));
   if (value % 2 != 0) {
-    r.fail(key, "must be even (4:2:0 video needs even sizes), got " + std::to_string(value));
+    r.fail(limit.key, "must be even (4:2:0 video needs even sizes), got " + std::to_string(value));
   }
   return value;
 }
@@ -153,12 +151,12 @@ std::vector<std::string> read_formats(TomlReader& r, std::string_view key,
 
 RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   RenderOptions o;
-  o.width = read_dimension(r, "render.width", o.width);
-  o.height = read_dimension(r, "render.height", o.height);
-  o.fps = static_cast<int>(r.integer("render.fps", o.fps, 1, 240));
-  o.fov_y_deg = r.number("render.fov_y", o.fov_y_deg, 1.0, 170.0);
-  o.camera_distance = r.number("render.camera_distance", 0.0, 0.0, 1e4);
-  o.camera_direction = r.vector3("render.camera_direction", o.camera_direction, -kHuge, kHuge);
+  o.width = read_dimension(r, limit("render.width"));
+  o.height = read_dimension(r, limit("render.height"));
+  o.fps = static_cast<int>(r.integer(limit("render.fps")));
+  o.fov_y_deg = r.number(limit("render.fov_y"));
+  o.camera_distance = r.number(limit("render.camera_distance"));
+  o.camera_direction = r.vector3(limit("render.camera_direction"), o.camera_direction);
   if (o.camera_direction.norm() == 0.0) r.fail("render.camera_direction", "must not be zero");
   o.show_angular_momentum = r.boolean("render.show_angular_momentum", false);
   o.show_body_axes = r.boolean("render.show_body_axes", false);
@@ -170,24 +168,25 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   if (o.codec != "libx264" && o.codec != "h264_nvenc") {
     r.fail("render.codec", "unknown codec '" + o.codec + "' (expected libx264 or h264_nvenc)");
   }
-  o.crf = static_cast<int>(r.integer("render.crf", o.crf, 0, 51));
+  o.crf = static_cast<int>(r.integer(limit("render.crf")));
   o.preset = r.string("render.preset", o.preset);
   static constexpr std::array<std::string_view, 9> kPresets{"ultrafast", "superfast", "veryfast",
                                                             "faster",    "fast",      "medium",
                                                             "slow",      "slower",    "veryslow"};
   if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end())
     r.fail("render.preset", "unknown preset '" + o.preset + "'");
-  o.png_compression = static_cast<int>(r.integer("render.png_compression", 1, 0, 9));
+  o.png_compression = static_cast<int>(r.integer(limit("render.png_compression")));
   o.panel = r.boolean("render.panel", false);
   o.sphere = r.boolean("render.sphere", false);
   o.poinsot = r.boolean("render.poinsot", false);
-  o.anisotropy = static_cast<int>(r.integer("render.anisotropy", 0, 0, 16));
-  o.msaa = static_cast<int>(r.integer("render.msaa", o.msaa, 1, 8));
+  o.anisotropy = static_cast<int>(r.integer(limit("render.anisotropy")));
+  o.msaa = static_cast<int>(r.integer(limit("render.msaa")));
   o.formats = read_formats(r, "render.formats", o.formats);
-  o.gif_width = static_cast<int>(r.integer("render.gif_width", std::min(o.gif_width, o.width),
-                                           16, o.width));
-  o.gif_fps = static_cast<int>(r.integer("render.gif_fps", std::min(o.gif_fps, o.fps), 1, o.fps));
-  o.webm_crf = static_cast<int>(r.integer("render.webm_crf", o.webm_crf, 0, 63));
+  o.gif_width = static_cast<int>(
+      r.integer(limit("render.gif_width"), std::min(o.gif_width, o.width), o.width));
+  o.gif_fps =
+      static_cast<int>(r.integer(limit("render.gif_fps"), std::min(o.gif_fps, o.fps), o.fps));
+  o.webm_crf = static_cast<int>(r.integer(limit("render.webm_crf")));
   if (o.msaa != 1 && o.msaa != 2 && o.msaa != 4 && o.msaa != 8)
     r.fail("render.msaa", "must be 1, 2, 4 or 8, got " + std::to_string(o.msaa));
   return o;
@@ -231,8 +230,8 @@ void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
   }
   if (shape == physics::BodyShape::book) {
     physics::Book book;
-    book.size = r.vector3("book.size", book.size, 0.0, 1e6, true);
-    book.mass = r.number("book.mass", book.mass, 0.0, kHuge, true);
+    book.size = r.vector3(limit("book.size"), book.size);
+    book.mass = r.number(limit("book.mass"));
     for (const char* key : {"body.mesh", "body.mass", "body.scale"}) {
       if (r.has(key))
         r.fail(key, "not used by the book (body.shape = \"book\"): give [book] size and mass");
@@ -246,8 +245,8 @@ void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
                       "' (use body.mass and body.scale)");
     }
   }
-  const double mass = r.number("body.mass", 1.0, 0.0, kHuge, true);
-  const double scale = r.number("body.scale", 1.0, 0.0, 1e6, true);
+  const double mass = r.number(limit("body.mass"));
+  const double scale = r.number(limit("body.scale"));
   if (shape != physics::BodyShape::mesh) {
     if (r.has("body.mesh")) r.fail("body.mesh", "only with body.shape = \"mesh\"");
     s.body = physics::preset_body(shape, mass, scale);
@@ -275,7 +274,7 @@ void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
 /// initial.angular_velocity, or initial.spin_axis with initial.spin_rate (principal frame).
 void read_spin(TomlReader& r, Scene& s) {
   const bool has_velocity = r.has("initial.angular_velocity");
-  s.initial.omega0_body = r.vector3("initial.angular_velocity", s.initial.omega0_body, -1e6, 1e6);
+  s.initial.omega0_body = r.vector3(limit("initial.angular_velocity"), s.initial.omega0_body);
   if (!r.has("initial.spin_axis")) {
     if (r.has("initial.spin_rate")) r.fail("initial.spin_rate", "only with initial.spin_axis");
     return;
@@ -295,7 +294,7 @@ void read_spin(TomlReader& r, Scene& s) {
   if (!r.has("initial.spin_rate")) {
     r.fail("initial.spin_axis", "needs initial.spin_rate (rad per time unit)");
   }
-  const double rate = r.number("initial.spin_rate", 0.0, -1e6, 1e6);
+  const double rate = r.number(limit("initial.spin_rate"), 0.0);
   const std::array<int, 3> order = physics::principal_order(s.body.moments);
   s.initial.omega0_body.setZero();
   s.initial.omega0_body[order[static_cast<std::size_t>(it - kAxes.begin())]] = rate;
@@ -318,9 +317,8 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   s.model = read_model(r, physics::ModelConfig{});
   read_body(r, s, origin);
   read_spin(r, s);
-  s.initial.jiggle = r.number("initial.jiggle", 0.0, 0.0, 1e6);
-  s.initial.seed = static_cast<std::uint64_t>(
-      r.integer("initial.seed", 1, 0, std::numeric_limits<int64_t>::max()));
+  s.initial.jiggle = r.number(limit("initial.jiggle"));
+  s.initial.seed = static_cast<std::uint64_t>(r.integer(limit("initial.seed")));
   read_time(r, s);
   s.render = read_render(r, origin);
   s.compare = read_compare(r, origin.string(), overridden, s.model);
@@ -328,6 +326,11 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   check_lattice_cells(r, s);
   if (s.render.poinsot && !s.compare.empty())
     r.fail("render.poinsot", "Poinsot's construction is for a single run, not a [[compare]] scene");
+  // The invariable plane is normal to L (docs/physics.md §16): a body at rest has none.
+  if (s.render.poinsot && s.initial.omega0_body.isZero(0.0) && s.initial.jiggle == 0.0)
+    r.fail("render.poinsot",
+           "Poinsot's construction needs a spinning body, but initial.angular_velocity is "
+           "[0, 0, 0] and initial.jiggle is 0 (at rest: L = 0)");
   return s;
 }
 

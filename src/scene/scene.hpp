@@ -11,6 +11,7 @@
 #include "common/errors.hpp"
 #include "physics/lattice.hpp"
 #include "physics/simulator.hpp"
+#include "scene/limits.hpp"
 
 namespace bookspin::scene {
 
@@ -95,13 +96,15 @@ struct Scene {
 /// The single-model scene a comparison tile stands for: `scene` with the tile's model.
 Scene tile_scene(const Scene& scene, const CompareTile& tile);
 
-/// Limits enforced by validation (documented in scenes/README.md).
-inline constexpr int kMaxDimension = 7680;
-inline constexpr int kMaxFrames = 100000;
-inline constexpr int kMaxStepsPerFrame = 1000000;
+/// Limits enforced by validation (documented in scenes/README.md); the numeric keys' ranges
+/// are in the one table kLimits (scene/limits.hpp).
+inline constexpr int kMaxDimension = static_cast<int>(limit("render.width").max);
+inline constexpr int kMaxFrames = static_cast<int>(limit("time.frames").max);
+inline constexpr int kMaxStepsPerFrame = static_cast<int>(limit("time.steps_per_frame").max);
 inline constexpr std::uintmax_t kMaxSceneFileBytes = 1 << 20;
 inline constexpr int kMaxCompareTiles = 9;
 using physics::kMaxLatticeCells;  ///< model.lattice_cells (physics/lattice.hpp)
+static_assert(limit("model.lattice_cells").max == kMaxLatticeCells);
 
 /// Reads and validates `path`, applying `overrides` ("key=value", value in TOML syntax) on
 /// top of the file. Throws InputError on any bad input: unreadable or oversized file, TOML

@@ -1,6 +1,8 @@
 #include "scene/toml_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -92,9 +94,29 @@ void TomlReader::fail(std::string_view key, const std::string& reason) const {
   throw error_at(key, root_.at_path(key).node(), reason);
 }
 
-double TomlReader::number(std::string_view key, double fallback, double lo, double hi,
-                          bool lo_open) {
-  const auto view = find(key);
+void TomlReader::check_range(const Limit& limit, double value, bool component) const {
+  if (!std::isfinite(value)) fail(limit.key, "must be finite, got " + format_number(value));
+  if (value < limit.min || value > limit.max || (limit.min_open && value == limit.min)) {
+    fail(limit.key, std::string(component ? "each component must be " : "must be ") +
+                        range_text(limit.min, limit.max, limit.min_open) + ", got " +
+                        format_number(value));
+  }
+}
+
+void TomlReader::check_smallest(const Limit& limit, double value, bool vector) const {
+  const double magnitude = std::abs(value);
+  if (magnitude != 0.0 && magnitude < limit.smallest_nonzero) {
+    fail(limit.key, std::string(vector ? "must be [0, 0, 0] or at least " : "must be 0 or at least ") +
+                        format_number(limit.smallest_nonzero) +
+                        (vector ? " long, got length " : " in magnitude, got ") +
+                        format_number(value));
+  }
+}
+
+double TomlReader::number(const Limit& limit) { return number(limit, limit.fallback.value()); }
+
+double TomlReader::number(const Limit& limit, double fallback) {
+  const auto view = find(limit.key);
   if (!view) return fallback;
   double value = 0.0;
   if (auto i = view.value_exact<int64_t>()) {
@@ -102,24 +124,29 @@ double TomlReader::number(std::string_view key, double fallback, double lo, doub
   } else if (auto f = view.value_exact<double>()) {
     value = *f;
   } else {
-    fail(key, "expected a number, got " + type_name(*view.node()));
+    fail(limit.key, "expected a number, got " + type_name(*view.node()));
   }
-  if (!std::isfinite(value)) fail(key, "must be finite, got " + format_number(value));
-  if (value < lo || value > hi || (lo_open && value == lo)) {
-    fail(key, "must be " + range_text(lo, hi, lo_open) + ", got " + format_number(value));
-  }
+  check_range(limit, value, false);
+  check_smallest(limit, value, false);
   return value;
 }
 
-long long TomlReader::integer(std::string_view key, long long fallback, long long lo,
-                              long long hi) {
-  const auto view = find(key);
+long long TomlReader::integer(const Limit& limit) {
+  const double fallback = limit.fallback.value();
+  return integer(limit, static_cast<long long>(fallback));
+}
+
+long long TomlReader::integer(const Limit& limit, long long fallback, long long hi) {
+  const auto view = find(limit.key);
   if (!view) return fallback;
   const auto value = view.value_exact<int64_t>();
-  if (!value) fail(key, "expected an integer, got " + type_name(*view.node()));
+  if (!value) fail(limit.key, "expected an integer, got " + type_name(*view.node()));
+  const auto lo = static_cast<long long>(limit.min);
+  // 2⁶³ − 1 rounds up to 2⁶³ as a double, which no long long holds.
+  if (limit.max < kInt64Max) hi = std::min(hi, static_cast<long long>(limit.max));
   if (*value < lo || *value > hi) {
-    fail(key, "must be >= " + std::to_string(lo) + " and <= " + std::to_string(hi) + ", got " +
-                  std::to_string(*value));
+    fail(limit.key, "must be >= " + std::to_string(lo) + " and <= " + std::to_string(hi) +
+                        ", got " + std::to_string(*value));
   }
   return *value;
 }
@@ -140,8 +167,8 @@ std::string TomlReader::string(std::string_view key, std::string fallback) {
   return *value;
 }
 
-Eigen::Vector3d TomlReader::vector3(std::string_view key, const Eigen::Vector3d& fallback,
-                                    double lo, double hi, bool lo_open) {
+Eigen::Vector3d TomlReader::vector3(const Limit& limit, const Eigen::Vector3d& fallback) {
+  const std::string_view key = limit.key;
   const auto view = find(key);
   if (!view) return fallback;
   const toml::array* array = view.as_array();
@@ -160,12 +187,9 @@ Eigen::Vector3d TomlReader::vector3(std::string_view key, const Eigen::Vector3d&
       fail(key, "expected an array of 3 numbers, but element " + std::to_string(d + 1) + " is " +
                     type_name(item));
     }
-    if (!std::isfinite(out[d])) fail(key, "must be finite, got " + format_number(out[d]));
-    if (out[d] < lo || out[d] > hi || (lo_open && out[d] == lo)) {
-      fail(key, "each component must be " + range_text(lo, hi, lo_open) + ", got " +
-                    format_number(out[d]));
-    }
+    check_range(limit, out[d], true);
   }
+  check_smallest(limit, std::hypot(out[0], out[1], out[2]), true);
   return out;
 }
 

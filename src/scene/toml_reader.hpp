@@ -3,10 +3,12 @@
 // every other key can be reported as unknown. Internal to src/scene.
 #include <toml++/toml.h>
 
+#include <limits>
 #include <set>
 #include <string>
 #include <string_view>
 
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::scene {
@@ -19,14 +21,18 @@ class TomlReader {
   TomlReader(const toml::table& root, std::string origin, std::set<std::string> overridden,
              std::string key_prefix = "", const toml::node* anchor = nullptr);
 
-  /// A finite number in [lo, hi] (lo excluded when `lo_open`); integers are accepted.
-  double number(std::string_view key, double fallback, double lo, double hi, bool lo_open = false);
-  long long integer(std::string_view key, long long fallback, long long lo, long long hi);
+  /// A finite number in the range of `limit` (src/scene/limits.hpp; integers are accepted),
+  /// `fallback` when the key is missing (the table's default when not given).
+  double number(const Limit& limit);
+  double number(const Limit& limit, double fallback);
+  /// An integer in the range of `limit`, and at most `hi` where another key caps it.
+  long long integer(const Limit& limit);
+  long long integer(const Limit& limit, long long fallback,
+                    long long hi = std::numeric_limits<long long>::max());
   bool boolean(std::string_view key, bool fallback);
   std::string string(std::string_view key, std::string fallback);
-  /// An array of exactly three finite numbers, each in [lo, hi] (lo excluded when lo_open).
-  Eigen::Vector3d vector3(std::string_view key, const Eigen::Vector3d& fallback, double lo,
-                          double hi, bool lo_open = false);
+  /// An array of exactly three finite numbers, each in the range of `limit`.
+  Eigen::Vector3d vector3(const Limit& limit, const Eigen::Vector3d& fallback);
   bool has(std::string_view key) const;
   /// The raw node at `key` (empty view if absent), marking the key as known.
   toml::node_view<const toml::node> node(std::string_view key) { return find(key); }
@@ -38,6 +44,11 @@ class TomlReader {
 
  private:
   toml::node_view<const toml::node> find(std::string_view key);
+  /// Fails unless `value` (finite) lies in the range of `limit` ("each component" for a vector).
+  void check_range(const Limit& limit, double value, bool component) const;
+  /// Fails for a value (a vector's length when `vector`) that is neither 0 nor as large in
+  /// magnitude as limit.smallest_nonzero.
+  void check_smallest(const Limit& limit, double value, bool vector) const;
   /// The InputError "FILE:LINE: KEY: reason" (or "--set KEY: reason") for `key` at `node`.
   InputError error_at(std::string_view key, const toml::node* node, std::string_view reason) const;
   bool from_override(const std::string& full_key) const;

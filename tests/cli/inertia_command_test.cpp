@@ -217,5 +217,17 @@ TEST(InertiaCommand, NonPositiveMassIsAUsageError) {
   EXPECT_EQ(r.out, "");
 }
 
+/// A mass that underflows to 0 is not a mass (docs/outputs.md, "Numbers").
+TEST(InertiaCommand, MassThatUnderflowsIsBadInputNamingTheOptions) {
+  const fs::path file = box_obj("tiny");
+  const SplitResult r =
+      run_bookspin_split("inertia " + quoted(file) + " --json --density 1e-300 --scale 1e-40");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "bookspin: error: " + file.string() +
+                       ": underflow: the mass or inertia is below the range of a double (from "
+                       "--density 1e-300 and --scale 1e-40)\n");
+}
+
 }  // namespace
 }  // namespace bookspin::cli

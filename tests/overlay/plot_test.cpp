@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace bookspin::overlay {
 namespace {
 
@@ -62,6 +64,29 @@ TEST(Plot, FixedYRangeCutsTheCurveAndMarksWhereItLeaves) {
     for (int x = 0; x < clipped.width / 4; ++x) EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
     for (int x = 3 * clipped.width / 4; x < clipped.width; ++x)
       EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
+  }
+}
+
+/// Huge values that are constant, or differ by less than their rounding: the axis widens
+/// around them and the ticks are counted, so the plot is drawn (it used to loop on a step lost
+/// in rounding until memory ran out, as ω ≈ 10³⁰ of the smallest book does in a comparison).
+TEST(Plot, HugeNearlyConstantValuesAreDrawn) {
+  for (const double base : {1e30, -1e30, 1e300, 1e16}) {
+    SCOPED_TRACE(base);
+    PlotSpec spec;
+    Series s;
+    s.r = 1.0;
+    for (int i = 0; i <= 10; ++i) {
+      s.x.push_back(i);
+      s.y.push_back(i % 2 == 0 ? base : std::nextafter(base, 0.0));
+    }
+    spec.series = {s};
+    const RgbaImage image = plot_image(spec, 400, 300);
+    ASSERT_EQ(image.width, 400);
+    bool any_red = false;
+    for (int y = 0; y < image.height && !any_red; ++y)
+      for (int x = 0; x < image.width && !any_red; ++x) any_red = red(image, x, y);
+    EXPECT_TRUE(any_red);
   }
 }
 

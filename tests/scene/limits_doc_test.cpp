@@ -1,0 +1,204 @@
+// The one table of limits (src/scene/limits.hpp) against scenes/README.md's "Limits" table,
+// and against what the reader does: each bound is the first value refused, each default
+// what a missing key gives.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scene/limits.hpp"
+#include "scene_text.hpp"
+
+namespace bookspin::scene {
+namespace {
+
+using testing::error_of;
+using testing::parse;
+
+struct DocumentedLimit {
+  std::string type, minimum, maximum, smallest_nonzero, fallback;
+};
+
+std::string trim(const std::string& text) {
+  const auto begin = text.find_first_not_of(' ');
+  if (begin == std::string::npos) return "";
+  return text.substr(begin, text.find_last_not_of(' ') - begin + 1);
+}
+
+/// The rows of the table under "## Limits" in scenes/README.md, by key.
+std::map<std::string, DocumentedLimit> documented_limits() {
+  std::ifstream readme(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/README.md");
+  std::map<std::string, DocumentedLimit> rows;
+  bool in_section = false;
+  for (std::string line; std::getline(readme, line);) {
+    if (line.rfind("## ", 0) == 0) in_section = line == "## Limits";
+    if (!in_section || line.rfind("| `", 0) != 0) continue;
+    std::vector<std::string> cells;
+    for (auto at = std::size_t{1}; at < line.size();) {
+      const auto bar = line.find('|', at);
+      if (bar == std::string::npos) break;
+      cells.push_back(trim(line.substr(at, bar - at)));
+      at = bar + 1;
+    }
+    if (cells.size() != 6) {
+      ADD_FAILURE() << "a Limits row needs 6 cells: " << line;
+      continue;
+    }
+    const std::string key = cells[0].substr(1, cells[0].size() - 2);  // without the backticks
+    EXPECT_EQ(rows.count(key), 0u) << key << " documented twice";
+    rows[key] = {cells[1], cells[2], cells[3], cells[4], cells[5]};
+  }
+  return rows;
+}
+
+/// A documented number: decimal or e-notation, or a fraction such as "1/60".
+double read_number(const std::string& text) {
+  std::size_t used = 0;
+  const double value = std::stod(text, &used);
+  if (used < text.size() && text[used] == '/') return value / std::stod(text.substr(used + 1));
+  EXPECT_EQ(used, text.size()) << "not a number: '" << text << "'";
+  return value;
+}
+
+TEST(LimitsTable, MatchesScenesReadme) {
+  const auto rows = documented_limits();
+  EXPECT_EQ(rows.size(), kLimits.size()) << "a key in one table and not in the other";
+  for (const Limit& limit : kLimits) {
+    const std::string key(limit.key);
+    SCOPED_TRACE(key);
+    const auto it = rows.find(key);
+    if (it == rows.end()) {
+      ADD_FAILURE() << key << " is not in scenes/README.md's Limits table";
+      continue;
+    }
+    const DocumentedLimit& doc = it->second;
+    const bool vector = doc.type == "3 numbers";
+    EXPECT_EQ(limit.integer, doc.type == "integer") << doc.type;
+    if (!limit.integer) EXPECT_TRUE(vector || doc.type == "number") << doc.type;
+    const std::string open = limit.min_open ? "> " : "≥ ";
+    ASSERT_EQ(doc.minimum.rfind(open, 0), 0u) << "minimum '" << doc.minimum << "'";
+    EXPECT_EQ(read_number(doc.minimum.substr(open.size())), limit.min);
+    EXPECT_EQ(read_number(doc.maximum), limit.max);
+    if (limit.smallest_nonzero == 0.0) {
+      EXPECT_EQ(doc.smallest_nonzero, "");
+    } else {
+      EXPECT_EQ(read_number(doc.smallest_nonzero), limit.smallest_nonzero);
+    }
+    if (limit.fallback) {
+      EXPECT_NEAR(read_number(doc.fallback), *limit.fallback, 1e-15 * std::abs(*limit.fallback));
+    } else {
+      EXPECT_EQ(doc.fallback, "—");
+    }
+  }
+}
+
+/// `key = value` as a scene; vector keys get the value in all three components. Keys that
+/// need another key beside them (a body's mass, a GIF's width) get it.
+std::string scene_with(const Limit& limit, const std::string& value, bool vector) {
+  const std::string key(limit.key);
+  const auto dot = key.find('.');
+  const std::string table = key.substr(0, dot);
+  std::string text = "[scene]\nname = \"limits\"\n";
+  // A body key, or a lattice finer than the book's one cell: a non-book body.
+  if (table == "body" || key == "model.lattice_cells") text += "[body]\nshape = \"phone\"\n";
+  if (table != "body") text += "[" + table + "]\n";
+  if (key == "render.gif_width") text += "width = 7680\n";
+  if (key == "render.gif_fps") text += "fps = 240\n";
+  if (key == "initial.spin_rate") text += "spin_axis = \"largest\"\n";
+  text += key.substr(dot + 1) + " = ";
+  text += vector ? "[" + value + ", " + value + ", " + value + "]\n" : value + "\n";
+  return text;
+}
+
+std::string number_text(double value, bool integer) {
+  if (integer) return std::to_string(static_cast<long long>(value));
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  std::string text = buffer;
+  if (text.find_first_of(".en") == std::string::npos) text += ".0";
+  return text;
+}
+
+/// The reader refuses each bound's first value outside and accepts the bound itself.
+TEST(LimitsTable, BoundsAreWhatTheReaderEnforces) {
+  for (const Limit& limit : kLimits) {
+    const std::string key(limit.key);
+    SCOPED_TRACE(key);
+    const bool vector = key == "book.size" || key == "initial.angular_velocity" ||
+                        key == "render.camera_direction";
+    if (key == "initial.seed") continue;  // 2⁶³ − 1 is not a double; its bounds: below
+    const double step = limit.integer ? 1.0 : 0.0;
+    const double below = step > 0        ? limit.min - step
+                         : limit.min_open ? limit.min
+                                          : std::nextafter(limit.min, -INFINITY);
+    const double above = step > 0 ? limit.max + step : std::nextafter(limit.max, INFINITY);
+    // 16 and the largest widths are even; a width of 15 or 7681 is odd, which says more.
+    if (key != "render.width" && key != "render.height") {
+      EXPECT_NE(error_of(scene_with(limit, number_text(below, limit.integer), vector))
+                    .find(key + ": "),
+                std::string::npos);
+      EXPECT_NE(error_of(scene_with(limit, number_text(above, limit.integer), vector))
+                    .find(key + ": "),
+                std::string::npos);
+    }
+    if (!limit.min_open)
+      EXPECT_EQ(error_of(scene_with(limit, number_text(limit.min, limit.integer), vector)), "");
+    EXPECT_EQ(error_of(scene_with(limit, number_text(limit.max, limit.integer), vector)), "");
+    if (limit.smallest_nonzero > 0.0) {
+      const double tiny = 0.99 * limit.smallest_nonzero / (vector ? std::sqrt(3.0) : 1.0);
+      EXPECT_NE(error_of(scene_with(limit, number_text(tiny, false), vector))
+                    .find(key + ": must be "),
+                std::string::npos);
+      EXPECT_EQ(error_of(scene_with(limit, number_text(limit.smallest_nonzero, false), vector)), "");
+    }
+  }
+  EXPECT_NE(error_of("[initial]\nseed = -1\n").find("initial.seed: "), std::string::npos);
+  EXPECT_EQ(error_of("[initial]\nseed = 9223372036854775807\n"), "");
+}
+
+/// A scene without the key gets the table's default.
+TEST(LimitsTable, DefaultsAreWhatAMissingKeyGives) {
+  const Scene s = parse("[scene]\nname = \"defaults\"\n");
+  const std::map<std::string, double> got{
+      {"model.spring_constant", s.model.spring_constant},
+      {"model.lattice_cells", s.model.lattice_cells},
+      {"book.mass", s.body.cage.mass},
+      {"initial.jiggle", s.initial.jiggle},
+      {"initial.seed", static_cast<double>(s.initial.seed)},
+      {"time.dt", s.dt},
+      {"time.steps_per_frame", s.steps_per_frame},
+      {"time.frames", s.frames},
+      {"render.width", s.render.width},
+      {"render.height", s.render.height},
+      {"render.fps", s.render.fps},
+      {"render.fov_y", s.render.fov_y_deg},
+      {"render.camera_distance", s.render.camera_distance},
+      {"render.crf", s.render.crf},
+      {"render.png_compression", s.render.png_compression},
+      {"render.anisotropy", s.render.anisotropy},
+      {"render.msaa", s.render.msaa},
+      {"render.webm_crf", s.render.webm_crf}};
+  const Scene phone = parse("[body]\nshape = \"phone\"\n");
+  const Scene twice = parse("[body]\nshape = \"phone\"\nscale = 2.0\n");
+  for (const Limit& limit : kLimits) {
+    const std::string key(limit.key);
+    SCOPED_TRACE(key);
+    if (!limit.fallback) continue;
+    if (key == "body.mass") {
+      EXPECT_EQ(phone.body.cage.mass, *limit.fallback);
+    } else if (key == "body.scale") {  // moments grow as scale²: twice the default, 4 times
+      const double ratio = 2.0 / *limit.fallback;
+      EXPECT_NEAR(twice.body.moments[0], ratio * ratio * phone.body.moments[0],
+                  1e-12 * twice.body.moments[0]);
+    } else {
+      ASSERT_EQ(got.count(key), 1u) << "no check for this default";
+      EXPECT_EQ(got.at(key), *limit.fallback);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::scene
