@@ -8,6 +8,7 @@
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
 #include "output/data_url.hpp"
+#include "output/finite_number.hpp"
 #include "output/png_writer.hpp"
 #include "physics/presets.hpp"
 #include "render/face_images.hpp"
@@ -17,12 +18,18 @@ namespace bookspin::clip {
 
 namespace {
 
-/// Numbers to 17 significant digits: the page's doubles are the same as bookspin's.
+/// Numbers in shortest round-trip form, checked finite (output::finite_text): the page's
+/// doubles are the same as bookspin's.
 template <typename Matrix>
-void json_numbers(std::ostream& out, const Matrix& m) {
+void json_numbers(std::ostream& out, const Matrix& m, std::string_view what) {
   out << '[';
-  for (Eigen::Index i = 0; i < m.size(); ++i) out << (i ? "," : "") << m.data()[i];
+  for (Eigen::Index i = 0; i < m.size(); ++i)
+    out << (i ? "," : "") << output::finite_text(static_cast<double>(m.data()[i]), what);
   out << ']';
+}
+
+std::string number(double value, std::string_view what) {
+  return output::finite_text(value, what);
 }
 
 void method(std::ostream& out, const physics::ModelConfig& m, const char* suffix) {
@@ -54,17 +61,16 @@ std::string read_shell(const std::filesystem::path& shell) {
 
 std::string explorer_scene_json(const scene::Scene& s) {
   std::ostringstream out;
-  out << std::setprecision(17);
   const physics::ModelConfig& first = s.compare.empty() ? s.model : s.compare.front().model;
   out << "{\"name\":" << scene::json_string(s.name) << ",\"title\":" << scene::json_string(s.title)
       << ",\"description\":" << scene::json_string(s.description) << ",\"state\":{"
       << "\"body\":" << scene::json_string(std::string(physics::to_string(s.body.shape))) << ',';
   method(out, first, "");
-  out << ",\"damping\":" << (first.damping ? "true" : "false") << ",\"k\":" << first.spring_constant
-      << ",\"cells\":" << first.lattice_cells << ",\"dt\":" << s.dt << ",\"axis\":\"custom\",\"w\":";
-  json_numbers(out, s.initial.omega0_body);
-  out << ",\"jiggle\":" << s.initial.jiggle << ",\"seed\":" << s.initial.seed
-      << ",\"speed\":" << s.dt * s.steps_per_frame * s.render.fps
+  out << ",\"damping\":" << (first.damping ? "true" : "false") << ",\"k\":" << number(first.spring_constant, "explorer page: model.spring_constant")
+      << ",\"cells\":" << first.lattice_cells << ",\"dt\":" << number(s.dt, "explorer page: time.dt") << ",\"axis\":\"custom\",\"w\":";
+  json_numbers(out, s.initial.omega0_body, "explorer page: initial.angular_velocity");
+  out << ",\"jiggle\":" << number(s.initial.jiggle, "explorer page: initial.jiggle") << ",\"seed\":" << s.initial.seed
+      << ",\"speed\":" << number(s.dt * s.steps_per_frame * s.render.fps, "explorer page: speed")
       << ",\"showL\":" << (s.render.show_angular_momentum ? "true" : "false")
       << ",\"showAxes\":" << (s.render.show_body_axes ? "true" : "false");
   if (s.compare.size() >= 2) {
@@ -73,21 +79,21 @@ std::string explorer_scene_json(const scene::Scene& s) {
     method(out, s.compare.back().model, "2");
   }
   out << "},\"book\":{\"size\":";
-  json_numbers(out, s.body.cage.size);
-  out << ",\"mass\":" << s.body.cage.mass << '}';
+  json_numbers(out, s.body.cage.size, "explorer page: book.size");
+  out << ",\"mass\":" << number(s.body.cage.mass, "explorer page: book.mass") << '}';
   if (s.body.shape != physics::BodyShape::book) {
     const physics::Body& b = s.body;
     out << ",\"body\":{\"shape\":" << scene::json_string(std::string(physics::to_string(b.shape)))
-        << ",\"mass\":" << b.cage.mass << ",\"moments\":";
-    json_numbers(out, b.moments);
+        << ",\"mass\":" << number(b.cage.mass, "explorer page: body.mass") << ",\"moments\":";
+    json_numbers(out, b.moments, "explorer page: body moments");
     out << ",\"cage\":";
-    json_numbers(out, b.cage.size);
-    out << ",\"volume\":" << b.volume << ",\"vertices\":";
-    json_numbers(out, b.vertices);
+    json_numbers(out, b.cage.size, "explorer page: body cage");
+    out << ",\"volume\":" << number(b.volume, "explorer page: body volume") << ",\"vertices\":";
+    json_numbers(out, b.vertices, "explorer page: body vertices");
     out << ",\"triangles\":";
-    json_numbers(out, b.triangles);
+    json_numbers(out, b.triangles, "explorer page: body triangles");
     out << ",\"colours\":";
-    json_numbers(out, b.face_colours);
+    json_numbers(out, b.face_colours, "explorer page: body colours");
     out << ",\"smooth\":" << (b.smooth ? "true" : "false") << '}';
   }
   out << '}';

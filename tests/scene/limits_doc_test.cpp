@@ -77,7 +77,9 @@ TEST(LimitsTable, MatchesScenesReadme) {
     const DocumentedLimit& doc = it->second;
     const bool vector = doc.type == "3 numbers";
     EXPECT_EQ(limit.integer, doc.type == "integer") << doc.type;
-    if (!limit.integer) EXPECT_TRUE(vector || doc.type == "number") << doc.type;
+    if (!limit.integer) {
+      EXPECT_TRUE(vector || doc.type == "number") << doc.type;
+    }
     const std::string open = limit.min_open ? "> " : "≥ ";
     ASSERT_EQ(doc.minimum.rfind(open, 0), 0u) << "minimum '" << doc.minimum << "'";
     EXPECT_EQ(read_number(doc.minimum.substr(open.size())), limit.min);
@@ -144,8 +146,9 @@ TEST(LimitsTable, BoundsAreWhatTheReaderEnforces) {
                     .find(key + ": "),
                 std::string::npos);
     }
-    if (!limit.min_open)
+    if (!limit.min_open) {
       EXPECT_EQ(error_of(scene_with(limit, number_text(limit.min, limit.integer), vector)), "");
+    }
     EXPECT_EQ(error_of(scene_with(limit, number_text(limit.max, limit.integer), vector)), "");
     if (limit.smallest_nonzero > 0.0) {
       const double tiny = 0.99 * limit.smallest_nonzero / (vector ? std::sqrt(3.0) : 1.0);
