@@ -64,12 +64,13 @@ bench: configure
 # bench/results/explorer-MACHINE.csv. EXPLORER=path/to/explorer.html times that page instead
 # of building out/explorer.html.
 EXPLORER ?=
+PYTHON ?= /usr/bin/python3
 bench-explorer: configure
 	cmake --build $(BUILD) -j $(JOBS) --target bookspin-bench
 	@if [ -z "$(EXPLORER)" ]; then \
 	  cmake --build $(BUILD) -j $(JOBS) --target bookspin-explorer-data && \
 	  bash web/build.sh $(BUILD) out $(SCENES); fi
-	python3 bench/explorer_bench.py $(or $(EXPLORER),out/explorer.html) $(BUILD)/bookspin-bench
+	$(PYTHON) bench/explorer_bench.py $(or $(EXPLORER),out/explorer.html) $(BUILD)/bookspin-bench
 
 # Rewrites tests/golden/ from the current build (on llvmpipe, the reference) and prints, for
 # each golden, whether it is new, unchanged or changed (PSNR, share of differing pixels).

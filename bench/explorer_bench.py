@@ -123,6 +123,7 @@ def main():
     chromium, driver_path = find_browser()
     profile = tempfile.mkdtemp(prefix="bookspin-explorer-bench-")
     driver = open_browser(chromium, driver_path, profile)
+    driver.set_script_timeout(600)
     try:
         load(driver, f"{page.as_uri()}?scene={scene_name}")
         if driver.execute_script("return window.explorer.state().scene") != scene_name:

@@ -90,6 +90,7 @@ function rebuild() {
   });
   $('message').textContent = errors.join('; ');
   runs.forEach((r, k) => { r.mesh = makeBodyMesh(r.session); bodyGroup.add(r.mesh); r.offset = k; });
+  frameBodies(false);
   polhodeCache = null;
   const target = state.t;
   state.t = 0;
@@ -213,11 +214,77 @@ function cageMatrix(corners, size) {
   return { m, ex, ey, ez, centre };
 }
 
+// ---------- framing: where the bodies sit and where the camera looks from ----------
+
+let layout = { radius: 1, step: new THREE.Vector3() };
+let framedFor = '';  // the layout the camera was last fitted to
+
+/** The radius of the sphere a body sweeps about its centre of mass: its farthest surface
+ * vertex, or cage corner where it has no surface (the book). */
+function sweepRadius(session) {
+  const c = session.bodyCorners();
+  let r = 0;
+  for (let p = 0; p < 8; ++p) r = Math.max(r, Math.hypot(c[3 * p], c[3 * p + 1], c[3 * p + 2]));
+  // A surface is drawn about the cage's centre (cageMatrix), which may sit off the centre of mass.
+  const centre = [0, 1, 2].map((d) => { let s = 0; for (let p = 0; p < 8; ++p) s += c[3 * p + d]; return s / 8; });
+  const v = session.surfaceVertices();
+  let rv = 0;
+  for (let i = 0; i < v.length; i += 3) rv = Math.max(rv, Math.hypot(v[i], v[i + 1], v[i + 2]));
+  return rv > 0 ? Math.min(r, rv + Math.hypot(...centre)) : r;
+}
+
+/** Where run k's centre of mass is drawn: side by side (one above the other in a view taller
+ * than wide), a sweep diameter and a gap apart, the pair centred on the orbit target. */
+function offsetOf(k) {
+  return layout.step.clone().multiplyScalar(k - (runs.length - 1) / 2);
+}
+
+/** Lays the runs out and, when the layout changed (or `force`: the view was resized), puts the
+ * camera on its current line of sight at the nearest distance that shows every run's whole
+ * sweep sphere (and the L arrow) inside the view with a margin. */
+function frameBodies(force) {
+  if (!runs.length) return;
+  const r = Math.max(...runs.map((run) => sweepRadius(run.session)));
+  const tall = camera.aspect < 1;
+  const step = runs.length > 1 ? 2.2 * r : 0;
+  const key = `${runs.length} ${r} ${tall}`;
+  layout = { radius: r, step: new THREE.Vector3(tall ? 0 : step, tall ? -step : 0, 0) };
+  arrowL.setLength(1.5 * r, 0.2 * r, 0.1 * r);
+  axisArrows.forEach((a) => a.setLength(1.1 * r, 0.12 * r, 0.06 * r));
+  if (!force && key === framedFor) return;
+  framedFor = key;
+  // Each sweep sphere (centre c, radius ρ) must lie within 80% of the half-angles of the view:
+  // atan(|x|/z) + asin(ρ/|c|) ≤ α, horizontally and vertically, in the camera's frame.
+  const rho = r * (state.showL ? 1.2 : 1);
+  const halfV = Math.atan(0.8 * Math.tan(THREE.MathUtils.degToRad(camera.fov / 2)));
+  const halfH = Math.atan(0.8 * Math.tan(THREE.MathUtils.degToRad(camera.fov / 2)) * camera.aspect);
+  const target = controls.target.clone();
+  const dir = camera.position.clone().sub(target).normalize();
+  const fits = (d) => {
+    camera.position.copy(target).addScaledVector(dir, d);
+    camera.lookAt(target);
+    camera.updateMatrixWorld();
+    return runs.every((_, k) => {
+      const p = offsetOf(k).add(target).applyMatrix4(camera.matrixWorldInverse);
+      const z = -p.z, dist = p.length();
+      if (z <= 0 || dist <= rho) return false;
+      const a = Math.asin(rho / dist);
+      return Math.atan(Math.abs(p.x) / z) + a <= halfH && Math.atan(Math.abs(p.y) / z) + a <= halfV;
+    });
+  };
+  let lo = rho, hi = 200 * rho;
+  for (let i = 0; i < 60; ++i) { const mid = 0.5 * (lo + hi); if (fits(mid)) hi = mid; else lo = mid; }
+  fits(hi);
+  camera.near = Math.max(1e-3, 0.05 * hi);
+  camera.far = 20 * hi;
+  camera.updateProjectionMatrix();
+  controls.update();
+}
+
 function updatePoses() {
-  const spread = runs.length > 1 ? 4.5 : 0;
   runs.forEach((r, k) => {
     const { m, ex, ey, ez } = cageMatrix(r.session.corners(), r.mesh.userData.size);
-    const shift = new THREE.Matrix4().makeTranslation((k - (runs.length - 1) / 2) * spread, 0, 0);
+    const shift = new THREE.Matrix4().setPosition(offsetOf(k));
     r.mesh.matrix.copy(shift.multiply(m));
     r.mesh.visible = r.session.finite();
     if (k === 0) {
@@ -225,7 +292,7 @@ function updatePoses() {
       const L = new THREE.Vector3(d.L[0], d.L[1], d.L[2]);
       arrowL.visible = state.showL && L.length() > 0;
       if (L.length() > 0) arrowL.setDirection(L.normalize());
-      arrowL.position.set((0 - (runs.length - 1) / 2) * spread, 0, 0);
+      arrowL.position.copy(offsetOf(0));
       [ex, ey, ez].forEach((e, i) => {
         const a = axisArrows[i];
         a.visible = state.showAxes;
@@ -470,6 +537,8 @@ function resize() {
   renderer.setSize(w, h, false);
   camera.aspect = w / Math.max(1, h);
   camera.updateProjectionMatrix();
+  frameBodies(true);
+  if (runs.length) updatePoses();
 }
 
 function draw() {
