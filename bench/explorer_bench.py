@@ -75,7 +75,23 @@ def page_times(driver, methods, steps, repetitions):
     return times
 
 
-def frames_per_second(driver, page, scene_name, seconds):
+def browser_cpu_seconds(profile):
+    """CPU seconds (user + system) used so far by the browser's processes: those started with
+    this profile (the browser, its renderer and its GPU process, where SwiftShader draws)."""
+    total = 0.0
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            cmdline = Path(f"/proc/{pid}/cmdline").read_bytes()
+            if f"--user-data-dir={profile}".encode() not in cmdline:
+                continue
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+            total += (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+        except OSError:
+            continue
+    return total
+
+
+def frames_per_second(driver, page, scene_name, seconds, profile):
     load(driver, f"{page}?scene={scene_name}")
     info = driver.execute_script("""
       const v = document.getElementById('view');
@@ -88,13 +104,19 @@ def frames_per_second(driver, page, scene_name, seconds):
     """)
     driver.execute_script("window.explorer.setPlaying(true)")
     time.sleep(1.0)
-    f0, t0 = driver.execute_script("return [window.explorer.framesDrawn(), performance.now()]")
+    cpu0 = browser_cpu_seconds(profile)
+    f0, t0, c0 = driver.execute_script(
+        "return [window.explorer.framesDrawn(), performance.now(), window.explorer.frameCosts()]")
     time.sleep(seconds)
-    f1, t1, t = driver.execute_script(
-        "return [window.explorer.framesDrawn(), performance.now(), window.explorer.state().t]")
+    f1, t1, c1, t = driver.execute_script(
+        "return [window.explorer.framesDrawn(), performance.now(), window.explorer.frameCosts(), "
+        "window.explorer.state().t]")
+    cpu1 = browser_cpu_seconds(profile)
     driver.execute_script("window.explorer.setPlaying(false)")
+    frames = max(1, f1 - f0)
     info.update(frames=f1 - f0, seconds=(t1 - t0) / 1000, fps=(f1 - f0) / ((t1 - t0) / 1000),
-                t=t)
+                t=t, costs={k: (c1[k] - c0[k]) / frames for k in c1},
+                cpu_ms=1000 * (cpu1 - cpu0) / frames, load=os.getloadavg()[0])
     return info
 
 
@@ -108,6 +130,8 @@ def main():
     ap.add_argument("--rounds", type=int, default=3, help="native/page alternations")
     ap.add_argument("--repetitions", type=int, default=3, help="timings per side per round")
     ap.add_argument("--seconds", type=float, default=5.0, help="wall time of the fps count")
+    ap.add_argument("--fps-only", action="store_true",
+                    help="only the frames per second (printed; no CSV written)")
     ap.add_argument("--machine", default=os.environ.get("BOOKSPIN_MACHINE") or machine_slug())
     ap.add_argument("--out", help="CSV (default bench/results/explorer-MACHINE.csv)")
     a = ap.parse_args()
@@ -129,19 +153,25 @@ def main():
         if driver.execute_script("return window.explorer.state().scene") != scene_name:
             sys.exit(f"explorer_bench: the page has no scene {scene_name}")
         native, wasm = {}, {}
-        for r in range(a.rounds):
+        for r in range(0 if a.fps_only else a.rounds):
             n = native_times(a.bench, scene, a.steps, a.repetitions)
             w = page_times(driver, list(n), a.steps, a.repetitions)
             for k in n:
                 native[k] = min(native.get(k, n[k]), n[k])
                 wasm[k] = min(wasm.get(k, w[k]), w[k])
             print(f"round {r + 1}/{a.rounds} done", file=sys.stderr)
-        fps = frames_per_second(driver, page.as_uri(), scene_name, a.seconds)
+        fps = frames_per_second(driver, page.as_uri(), scene_name, a.seconds, profile)
     finally:
         driver.quit()
         shutil.rmtree(profile, ignore_errors=True)
 
     software = "SwiftShader" in fps["renderer"]
+    if a.fps_only:
+        print(f"{fps['fps']:.1f} frames/s ({fps['frames']} in {fps['seconds']:.1f} s), view "
+              f"{fps['width']}x{fps['height']}, {fps['renderer']}; browser CPU "
+              f"{fps['cpu_ms']:.0f} ms per frame, load average {fps['load']:.1f}; main-thread ms "
+              "per frame: " + ", ".join(f"{k} {v:.2f}" for k, v in fps["costs"].items()))
+        return
     rows = []
     for (model, integrator), ns in native.items():
         rows.append({"model": model, "integrator": "" if model == "exact" else integrator,
@@ -155,7 +185,8 @@ def main():
                  "frames_per_second": f"{fps['fps']:.1f}",
                  "note": f"playing {scene_name}, view canvas {fps['width']}x{fps['height']} in a "
                          f"{fps['inner'][0]}x{fps['inner'][1]} window, {fps['frames']} frames in "
-                         f"{fps['seconds']:.1f} s, WebGL: {fps['renderer']}"})
+                         f"{fps['seconds']:.1f} s, browser CPU {fps['cpu_ms']:.0f} ms per frame, "
+                         f"load average {fps['load']:.1f}, WebGL: {fps['renderer']}"})
     for row in rows:
         row.update(machine=machine, date=date)
     out.parent.mkdir(parents=True, exist_ok=True)
@@ -174,6 +205,9 @@ def main():
     print(f"frames per second playing at 1280x720: {fps['fps']:.1f} ({fps['frames']} frames in "
           f"{fps['seconds']:.1f} s; view {fps['width']}x{fps['height']}; WebGL renderer "
           f"{fps['renderer']}{': software, on the CPU' if software else ''})")
+    print(f"browser CPU {fps['cpu_ms']:.0f} ms per frame (all its processes; load average "
+          f"{fps['load']:.1f} on {os.cpu_count()} cores); main-thread ms per frame: " +
+          ", ".join(f"{k} {v:.2f}" for k, v in fps["costs"].items()))
     print(f"wrote {out}")
 
 

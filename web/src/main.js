@@ -309,9 +309,25 @@ function updatePoses() {
 let polhodeCache = null;
 let sphereRot = new THREE.Matrix3().set(0.80, -0.60, 0, 0.25, 0.33, 0.91, -0.55, -0.73, 0.41);
 
+// The 2D panels draw in software (a canvas in memory, copied to the screen when it changed):
+// long polylines stroked through a software WebGL (SwiftShader, headless Chromium without a
+// GPU) cost a tenth of a second and more per redraw, on the CPU, in the GPU process.
+const CANVAS_2D = { willReadFrequently: true };
+
+// The polhodes and the trails drawn so far are kept on canvases of their own (layers) and
+// copied in each frame, so that a frame strokes only the trail points added since the last:
+// stroking every curve each frame cost most of a frame under a software WebGL (SwiftShader).
+const sphereLayers = { key: null, back: null, trails: null, drawn: [] };
+
+function layerCanvas(W, H) {
+  const c = document.createElement('canvas');
+  c.width = W; c.height = H;
+  return c;
+}
+
 function drawSphere() {
   const cv = $('sphere');
-  const g = cv.getContext('2d');
+  const g = cv.getContext('2d', CANVAS_2D);
   const W = cv.width, H = cv.height, R = Math.min(W, H) * 0.42, cx = W / 2, cy = H / 2;
   g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
   g.strokeStyle = '#555'; g.beginPath(); g.arc(cx, cy, R, 0, 2 * Math.PI); g.stroke();
@@ -323,32 +339,57 @@ function drawSphere() {
   const e = sphereRot.elements;  // column-major
   const proj = (u) => [e[0] * u[0] + e[3] * u[1] + e[6] * u[2], e[1] * u[0] + e[4] * u[1] + e[7] * u[2],
     e[2] * u[0] + e[5] * u[1] + e[8] * u[2]];
-  const curve = (pts, colour, width) => {
-    g.lineWidth = width;
+  const curve = (ctx, pts, colour, width) => {
+    ctx.lineWidth = width;
     for (let pass = 0; pass < 2; ++pass) {  // back half dim, front half bright
-      g.strokeStyle = colour; g.globalAlpha = pass ? 1 : 0.25;
-      g.beginPath();
+      ctx.strokeStyle = colour; ctx.globalAlpha = pass ? 1 : 0.25;
+      ctx.beginPath();
       let pen = false;
       for (const u of pts) {
         const p = proj(u);
         const front = p[2] >= 0;
         if (front === !!pass) {
           const x = cx + R * p[0], y = cy - R * p[1];
-          if (pen) g.lineTo(x, y); else g.moveTo(x, y);
+          if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
           pen = true;
         } else pen = false;
       }
-      g.stroke();
+      ctx.stroke();
     }
-    g.globalAlpha = 1;
+    ctx.globalAlpha = 1;
   };
-  for (const c of polhodeCache) {
-    const pts = [];
-    for (let i = 0; i < c.points.length; i += 3) pts.push([c.points[i], c.points[i + 1], c.points[i + 2]]);
-    curve(pts, c.separatrix ? '#e04848' : '#7a8699', c.separatrix ? 2 : 1);
+  // The layers hold one view (rotation, size) of one set of runs: redrawn whole when any changes.
+  const key = [W, H, ...e].join() + (polhodeCache === sphereLayers.polhodes ? '' : '*');
+  const trailsShrank = runs.some((r, k) => !(k in sphereLayers.drawn) || r.trail !== sphereLayers.drawn[k].trail ||
+    r.trail.length < sphereLayers.drawn[k].n);
+  if (key !== sphereLayers.key || sphereLayers.drawn.length !== runs.length) {
+    sphereLayers.back = layerCanvas(W, H);
+    const b = sphereLayers.back.getContext('2d', CANVAS_2D);
+    for (const c of polhodeCache) {
+      const pts = [];
+      for (let i = 0; i < c.points.length; i += 3) pts.push([c.points[i], c.points[i + 1], c.points[i + 2]]);
+      curve(b, pts, c.separatrix ? '#e04848' : '#7a8699', c.separatrix ? 2 : 1);
+    }
+    sphereLayers.polhodes = polhodeCache;
+    sphereLayers.key = [W, H, ...e].join();
+    sphereLayers.trails = null;
   }
+  if (!sphereLayers.trails || trailsShrank) {
+    sphereLayers.trails = layerCanvas(W, H);
+    sphereLayers.drawn = runs.map((r) => ({ trail: r.trail, n: 0 }));
+  }
+  const t = sphereLayers.trails.getContext('2d', CANVAS_2D);
+  runs.forEach((r, k) => {
+    const done = sphereLayers.drawn[k];
+    if (r.trail.length > done.n) {
+      // From the last point drawn, so that the new piece joins the old.
+      curve(t, r.trail.slice(Math.max(0, done.n - 1)), r.colour, 2.5);
+      done.n = r.trail.length;
+    }
+  });
+  g.drawImage(sphereLayers.back, 0, 0);
+  g.drawImage(sphereLayers.trails, 0, 0);
   for (const r of runs) {
-    curve(r.trail, r.colour, 2.5);
     const p = proj(r.trail[r.trail.length - 1]);
     g.fillStyle = r.colour; g.beginPath(); g.arc(cx + R * p[0], cy - R * p[1], 5, 0, 2 * Math.PI); g.fill();
   }
@@ -375,7 +416,7 @@ function drawSphere() {
 
 function drawPlots() {
   const cv = $('plots');
-  const g = cv.getContext('2d');
+  const g = cv.getContext('2d', CANVAS_2D);
   const W = cv.width, H = cv.height;
   g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
   if (!runs.length) return;
@@ -401,12 +442,22 @@ function drawPlots() {
         g.strokeStyle = n === 3 ? wcol[c] : r.colour;
         g.setLineDash(ri ? [4, 3] : []);
         g.beginPath();
-        r.history.forEach((s, i) => {
+        // One pixel column at a time: its first, lowest, highest and last point (the curve's
+        // envelope, at a fraction of the points when the history is longer than the plot is wide).
+        let col = null, first, low, high, last, pen = false;
+        const flush = () => {
+          if (col === null) return;
+          for (const y of [first, low, high, last]) { if (pen) g.lineTo(col, y); else g.moveTo(col, y); pen = true; }
+        };
+        for (const s of r.history) {
           const v = f(s, r)[c];
-          if (!Number.isFinite(v)) return;
-          const x = 4 + (W - 8) * s.t / tmax, y = y0 + h - h * (v - lo) / (hi - lo);
-          if (i) g.lineTo(x, y); else g.moveTo(x, y);
-        });
+          if (!Number.isFinite(v)) continue;
+          const x = Math.round(4 + (W - 8) * s.t / tmax), y = y0 + h - h * (v - lo) / (hi - lo);
+          if (x !== col) { flush(); col = x; first = low = high = last = y; } else {
+            low = Math.min(low, y); high = Math.max(high, y); last = y;
+          }
+        }
+        flush();
         g.stroke();
       }
     });
@@ -469,7 +520,7 @@ function writeControls() {
 }
 
 function writeUrl() {
-  const q = formatState(state);
+  const q = formatState(state, sceneBase(state.scene));
   history.replaceState(null, '', q ? `?${q}` : location.pathname);
 }
 
@@ -541,11 +592,35 @@ function resize() {
   if (runs.length) updatePoses();
 }
 
+// Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
+const costs = { physics: 0, view: 0, sphere: 0, plots: 0, readout: 0 };
+let plotsDrawnAt = -Infinity;
+
+/** Whether `parts` (arrays and numbers) differ from what `memo.seen` held; remembers them. */
+function changed(memo, parts) {
+  const same = memo.seen && memo.seen.length === parts.length && parts.every((p, i) => p === memo.seen[i]);
+  memo.seen = parts;
+  return !same;
+}
+const sphereSeen = {}, plotsSeen = {};
+
 function draw() {
-  renderer.render(scene3, camera);
-  drawSphere();
-  drawPlots();
-  readout();
+  let t0 = performance.now();
+  const lap = (part) => { const t1 = performance.now(); costs[part] += t1 - t0; t0 = t1; };
+  renderer.render(scene3, camera); lap('view');
+  // The 2D panels only when what they show changed; while playing, the plots (their whole
+  // history rescaled each time) ten times a second, the sphere every frame.
+  const sphere = $('sphere'), plots = $('plots');
+  if (changed(sphereSeen, [sphere.width, sphere.height, ...sphereRot.elements, polhodeCache,
+    ...runs.flatMap((r) => [r.trail, r.trail.length])])) drawSphere();
+  lap('sphere');
+  if ((!playing || t0 - plotsDrawnAt >= 100) &&
+      changed(plotsSeen, [plots.width, plots.height, ...runs.flatMap((r) => [r.history, r.history.length])])) {
+    drawPlots();
+    plotsDrawnAt = t0;
+  }
+  lap('plots');
+  readout(); lap('readout');
   framesDrawn += 1;
 }
 
@@ -556,7 +631,9 @@ function frame(now) {
       stepDebt += dtWall * state.speed / state.dt;
       const n = Math.floor(stepDebt);
       stepDebt -= n;
+      const t0 = performance.now();
       if (n > 0) { advanceTo(state.t + n * state.dt); updatePoses(); }
+      costs.physics += performance.now() - t0;
     }
     lastFrame = now;
   }
@@ -573,6 +650,8 @@ window.explorer = {
   url: () => location.search,
   setPlaying,
   framesDrawn: () => framesDrawn,
+  /** Milliseconds spent so far in the frames' physics, 3D view, sphere, plots and readout. */
+  frameCosts: () => ({ ...costs }),
   /** ω (body frame) of each run at time t (steps round(t/dt) from the start). */
   omegaAt(t) { state.t = 0; rebuild(); advanceTo(t); updatePoses(); draw(); return runs.map((r) => Array.from(r.session.diagnostics().omega_body)); },
   flips: () => runs.map(flips),
