@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 SCENES := $(wildcard scenes/*.toml)
 SWEEPS := $(wildcard sweeps/*.toml)
 
-.PHONY: all deps configure build bookspin figures test check render bench update-goldens clean
+.PHONY: all deps configure build bookspin figures test check render bench bench-explorer update-goldens clean
 all: build
 
 deps:
@@ -57,6 +57,19 @@ render: bookspin
 bench: configure
 	cmake --build $(BUILD) -j $(JOBS) --target bookspin-bench
 	$(BUILD)/bookspin-bench -o out
+
+# The explorer page against the native build (bench/explorer_bench.py, docs/explorer.md): ns
+# per step of each method in WebAssembly (headless Chromium) and natively, alternated in one
+# run, and the page's frames per second at 1280×720; a table on stdout and
+# bench/results/explorer-MACHINE.csv. EXPLORER=path/to/explorer.html times that page instead
+# of building out/explorer.html.
+EXPLORER ?=
+PYTHON ?= /usr/bin/python3
+bench-explorer: configure
+	cmake --build $(BUILD) -j $(JOBS) --target bookspin-bench bookspin
+	@if [ -z "$(EXPLORER)" ]; then \
+	  bash web/build.sh $(BUILD) && $(BUILD)/bookspin explore $(SCENES) $(SWEEPS) -o out; fi
+	$(PYTHON) bench/explorer_bench.py $(or $(EXPLORER),out/explorer.html) $(BUILD)/bookspin-bench
 
 # Rewrites tests/golden/ from the current build (on llvmpipe, the reference) and prints, for
 # each golden, whether it is new, unchanged or changed (PSNR, share of differing pixels).

@@ -73,14 +73,20 @@ void add_options(CLI::App& cmd, BenchOptions& options) {
       ->check(CLI::Range(100, 100000))
       ->capture_default_str();
   cmd.add_option("--rounds", options.rounds,
-                 "Pipeline runs alternated this many times; each timing keeps its best")
+                 "Pipeline runs alternated (explorer timings repeated) this many times; each "
+                 "timing keeps its best")
       ->check(CLI::Range(1, 20))
       ->capture_default_str();
   cmd.add_option("-j,--jobs", options.jobs, "As render --jobs (default: all cores)")
       ->check(CLI::Range(1, 256));
+  cmd.add_option("--explorer-steps", options.explorer_steps,
+                 "Steps of each explorer timing (ns per step of the page's methods, natively)")
+      ->check(CLI::Range(1L, 100000000L))
+      ->capture_default_str();
   cmd.add_option("--only", options.only,
-                 "Run only these sections: pipeline, peer, resolution, physics, memory")
-      ->check(CLI::IsMember({"pipeline", "peer", "resolution", "physics", "memory"}))
+                 "Run only these sections: pipeline, peer, resolution, physics, memory, explorer "
+                 "(explorer runs only when named)")
+      ->check(CLI::IsMember({"pipeline", "peer", "resolution", "physics", "memory", "explorer"}))
       ->take_all();
 }
 
@@ -103,6 +109,8 @@ int bench_command(const BenchOptions& options) {
   if (wanted(options, "peer")) bench_peer(context);
   if (wanted(options, "resolution")) bench_resolution(context);
   if (wanted(options, "physics")) bench_physics(context);
+  // Not part of a plain bench: bench/explorer_bench.py (make bench-explorer) asks for it.
+  if (!options.only.empty() && wanted(options, "explorer")) bench_explorer(context);
   if (!options.out_dir.empty()) {
     const auto csv = std::filesystem::path(options.out_dir) / "bench.csv";
     report.write_csv(csv);

@@ -16,7 +16,8 @@ struct BenchOptions {
   int memory_frames = 10000;      ///< the long run of the memory check
   int rounds = 3;                 ///< pipeline runs alternated this many times; best of each kept
   int jobs = 0;                   ///< as render --jobs
-  std::vector<std::string> only;  ///< sections to run (pipeline, peer, resolution, physics, memory)
+  long explorer_steps = 100000;   ///< steps of each explorer timing
+  std::vector<std::string> only;  ///< sections to run (pipeline, peer, resolution, physics, memory, explorer)
 };
 
 /// The machine cannot hold what the bench was asked to measure (exit status 1).
@@ -42,6 +43,9 @@ void bench_pipeline(const BenchContext& context);
 void bench_resolution(const BenchContext& context);
 /// ns per step and accuracy of every model × integrator, and of MuJoCo's mj_step.
 void bench_physics(const BenchContext& context);
+/// ns per step of the explorer page's methods natively (`rounds` timings, the best kept), the
+/// loop of web/bindings.cpp's Session::step; bench/explorer_bench.py pairs them with the page's.
+void bench_explorer(const BenchContext& context);
 /// bookspin's draw + read-back against MuJoCo's renderer (mjr_render, mjr_readPixels) on the
 /// same poses at 1280×720, alone and with the encoder; skipped without MuJoCo.
 void bench_peer(const BenchContext& context);

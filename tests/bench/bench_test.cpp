@@ -171,6 +171,21 @@ TEST(Bench, BadSceneStopsTheBenchWithTheScenesOwnMessage) {
       << r.output;
 }
 
+TEST(Bench, ExplorerSectionTimesEveryMethodOfThePage) {
+  const BenchRun run = run_bench("bench-explorer", "--only explorer --explorer-steps 50 --rounds 1");
+  ASSERT_EQ(run.result.status, 0) << run.result.output;
+  for (const char* method :
+       {"particle euler", "particle symplectic-euler", "particle velocity-verlet",
+        "rigid-matrix euler", "rigid-matrix rk4", "rigid-matrix implicit-midpoint",
+        "rigid-matrix splitting", "rigid-matrix splitting4", "rigid-quaternion euler",
+        "rigid-quaternion rk4", "rigid-quaternion implicit-midpoint", "rigid-quaternion splitting",
+        "rigid-quaternion splitting4", "exact"}) {
+    EXPECT_GT(csv_value(run.csv, method, "explorer"), 0.0) << method << "\n" << run.csv;
+  }
+  EXPECT_NE(run.csv.find("50 steps of dt 0.016667, best of 1, wall time"), std::string::npos)
+      << run.csv;
+}
+
 TEST(Bench, UnknownSectionIsAUsageError) {
   EXPECT_EQ(run_program("", BOOKSPIN_BENCH_EXE, "--only nonsense").status, 2);
 }

@@ -11,11 +11,13 @@ explorer.html with `bookspin explore` (every scene, and a mesh scene of its own)
     without normalization) and the exact model, the book, the T-handle and a mesh body (the
     long box, its surface and moments carried by the page from bookspin);
   - the mesh body is drawn (its grey faces where the body is);
-  - wiring: the T-handle scene with the spin axis set to the largest axis through the page's
-    select shows no flip in 300 time units (driven through the time slider); set to the
-    intermediate axis it flips;
-  - compare mode (its checkbox) draws two trails on the momentum sphere (both colours);
-  - the page's URL, opened anew, restores the same state and the same ω;
+  - wiring: the T-handle scene with the spin axis and rate set through the page's controls
+    (largest axis: no flip in 300 time units, driven through the time slider; intermediate
+    axis: flips), ω at t = 300 equal to `bookspin simulate` with that spin axis and rate;
+  - compare mode (its checkbox, the second method through its selects): each run's ω equals
+    `bookspin simulate` of its own method, and both trails are drawn on the momentum sphere;
+  - the page's URL, with every control set away from the scene's value, opened anew, restores
+    the same state and the same ω;
   - the gallery written beside the page links every entry to the explorer on its own scene,
     and four of those links (a book figure, the T-handle, a comparison, the mesh scene) open
     it on that scene without an error.
@@ -107,18 +109,23 @@ def console_errors(driver):
     return [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
 
 
-def simulate_omega(bookspin, scene, settings):
-    """ω (body) at t = 100 from `bookspin simulate`: steps of dt 0.01, rows every 100 steps."""
+def simulate_omega(bookspin, scene, settings, t=100.0, dt=0.01):
+    """ω (body) at time t from `bookspin simulate`: steps of dt, one row at t = 0 and one at t."""
     sets = []
     for key, value in settings.items():
         sets += ["--set", f"{key}={value}"]
-    out = run([bookspin, "simulate", scene, *sets, "--set", "time.dt=0.01",
-               "--set", "time.steps_per_frame=100", "--set", "time.frames=101"])
+    steps = round(t / dt)
+    out = run([bookspin, "simulate", scene, *sets, "--set", f"time.dt={dt!r}",
+               "--set", f"time.steps_per_frame={steps}", "--set", "time.frames=2"])
     rows = [r for r in out.strip().splitlines() if r and r[0].isdigit()]
     last = rows[-1].split(",")
-    if abs(float(last[1]) - 100.0) > 1e-9:
-        fail(f"bookspin simulate ended at t = {last[1]}, not 100")
+    if abs(float(last[1]) - t) > 1e-9 * max(1.0, t):
+        fail(f"bookspin simulate ended at t = {last[1]}, not {t}")
     return [float(x) for x in last[2:5]]
+
+
+def relative(got, expected):
+    return max(abs(a - b) for a, b in zip(got, expected)) / max(abs(x) for x in expected)
 
 
 # JavaScript: `d`, the RGBA bytes of the 3D view (the WebGL canvas drawn into a 2D one).
@@ -244,8 +251,7 @@ def main(bookspin, source, binary):
             url = page + "?" + "&".join(f"{k}={v}" for k, v in q.items())
             load(driver, url)
             got = driver.execute_script("return window.explorer.omegaAt(100)")[0]
-            norm = max(abs(x) for x in expected)
-            rel = max(abs(a - b) for a, b in zip(got, expected)) / norm
+            rel = relative(got, expected)
             worst = max(worst, rel)
             print(f"{Path(scene).stem} {settings}: page {got} simulate {expected} rel {rel:.2e}")
             if not rel <= TOL:
@@ -265,35 +271,72 @@ def main(bookspin, source, binary):
         if grey < 0.01 * px["total"]:
             fail(f"the mesh body is not drawn: {grey} grey pixels")
 
-        # 3. Wiring through the controls: largest axis, no flip; intermediate, flips.
+        # 3. Wiring through the controls: largest axis, no flip; intermediate, flips; and ω at
+        #    t = 300 is bookspin simulate's for that spin axis and rate (the scene spins at 2
+        #    about the intermediate axis: the page must take both from the controls).
         from selenium.webdriver.support.ui import Select
         load(driver, page + "?scene=t-handle-dzhanibekov")
         flips = {}
         for axis in ("largest", "intermediate"):
             Select(driver.find_element("id", "axis")).select_by_value(axis)
             driver.find_element("id", "rate").clear()
-            driver.find_element("id", "rate").send_keys("2\n")
+            driver.find_element("id", "rate").send_keys("1.5\n")
             driver.execute_script("""
               const s = document.getElementById('slider');
               s.max = 300; s.value = 300; s.dispatchEvent(new Event('input'));""")
             state = driver.execute_script("return window.explorer.state()")
-            if state["axis"] != axis or abs(state["t"] - 300) > 1e-6:
-                fail(f"the controls did not set axis {axis} and t = 300: {state}")
+            if state["axis"] != axis or state["rate"] != 1.5 or abs(state["t"] - 300) > 1e-6:
+                fail(f"the controls did not set axis {axis}, rate 1.5 and t = 300: {state}")
             flips[axis] = driver.execute_script("return window.explorer.flips()")[0]
             text = driver.find_element("id", "status").text
             if f"flips {flips[axis]}" not in text:
                 fail(f"the readout does not show the flips: {text!r}")
             driver.save_screenshot(str(shots / f"explorer-t-handle-{axis}.png"))
+            got = driver.execute_script("return window.explorer.omegaAt(300)")[0]
+            expected = simulate_omega(bookspin, t_handle, {"initial.spin_axis": f'"{axis}"',
+                                                           "initial.spin_rate": "1.5"},
+                                      t=300.0, dt=state["dt"])
+            rel = relative(got, expected)
+            print(f"t-handle about the {axis} axis at 1.5: page {got} simulate {expected} rel {rel:.2e}")
+            if not rel <= TOL:
+                fail(f"ω at t = 300 spun about the {axis} axis through the controls differs by "
+                     f"{rel:.3e} relative from bookspin simulate: page {got}, simulate {expected}")
         print(f"flips in 300 time units: {flips}")
         if flips["largest"] != 0:
             fail(f"spin about the largest axis flipped {flips['largest']} times in 300 time units")
         if flips["intermediate"] < 1:
             fail("spin about the intermediate axis did not flip in 300 time units")
 
-        # 4. Compare mode: two trails on the sphere.
+        # 4. Compare mode: the second method set through its controls runs beside the first,
+        #    each equal to bookspin simulate of its own method; two trails on the sphere.
         load(driver, page + "?scene=fig09-matrix-unstable-x&dt=0.01")
+        base = driver.execute_script("return window.explorer.state()")
+        # One method first: its trail (more than the position marker, a disc of radius 5 of
+        # about 80 pixels) and nothing of the second colour.
+        driver.execute_script("""
+          const s = document.getElementById('slider');
+          s.max = 200; s.value = 200; s.dispatchEvent(new Event('input'));""")
+        colours = sphere_colours(driver)
+        print(f"one method: sphere pixels of each colour {colours}")
+        if colours[0] < 300 or colours[1] > 0:
+            fail(f"the sphere does not show the one run's trail alone: pixels {colours}")
         driver.find_element("id", "compare").click()
-        Select(driver.find_element("id", "model2")).select_by_value("exact")
+        Select(driver.find_element("id", "model2")).select_by_value("rigid-quaternion")
+        Select(driver.find_element("id", "integrator2")).select_by_value("splitting")
+        driver.find_element("id", "normalize2").click()
+        omegas = driver.execute_script("return window.explorer.omegaAt(100)")
+        if len(omegas) != 2:
+            fail(f"compare mode does not run two methods: ω {omegas}")
+        first = simulate_omega(bookspin, book_scene, {})
+        second = simulate_omega(bookspin, book_scene, {
+            "model.kind": '"rigid-quaternion"', "model.integrator": '"splitting"',
+            "model.normalize": "true"})
+        if relative(first, second) < 1e-8:
+            fail(f"the two methods of the compare check agree too closely to tell apart: {first}")
+        print(f"compare at t = 100: page {omegas}, simulate {first} and {second}")
+        if not (relative(omegas[0], first) <= TOL and relative(omegas[1], second) <= TOL):
+            fail(f"compare mode's runs are not the two methods: page {omegas}, bookspin simulate "
+                 f"{first} (first method) and {second} (rigid-quaternion splitting, normalized)")
         driver.execute_script("""
           const s = document.getElementById('slider');
           s.max = 200; s.value = 200; s.dispatchEvent(new Event('input'));""")
@@ -303,12 +346,26 @@ def main(bookspin, source, binary):
         print(f"compare: trails {trails}, sphere pixels of each colour {colours}")
         if len(trails) != 2 or min(t["points"] for t in trails) < 100:
             fail(f"compare mode does not run two methods: {trails}")
-        if min(colours) < 30:
+        # The second trail, drawn over the first (which it nearly follows), is more than its
+        # marker; of the first, at least its marker shows.
+        if colours[0] < 30 or colours[1] < 300:
             fail(f"the sphere does not show both trails: pixels {colours}")
 
-        # 5. The URL restores the state.
+        # 5. The URL restores the state: every control set away from the scene's value (the
+        #    speed to the page's default, which the scene does not use) and read back.
+        Select(driver.find_element("id", "integrator")).select_by_value("rk4")
+        Select(driver.find_element("id", "axis")).select_by_value("largest")
+        for field, value in (("rate", "0.3"), ("dt", "0.02"), ("k", "3"), ("jiggle", "0.002"),
+                             ("seed", "11"), ("speed", "5")):
+            driver.find_element("id", field).clear()
+            driver.find_element("id", field).send_keys(value + "\n")
+        for box in ("normalize", "damping", "showL", "showAxes"):
+            driver.find_element("id", box).click()
         url = driver.current_url
         before = driver.execute_script("return window.explorer.state()")
+        same = sorted(k for k in before if k != "t" and before[k] == base[k])
+        if same != ["body", "model", "scene", "w"]:
+            fail(f"the URL check leaves fields at the scene's values: {same}")
         omega = driver.execute_script("return window.explorer.omegaAt(50)")
         load(driver, url)
         after = driver.execute_script("return window.explorer.state()")

@@ -95,6 +95,7 @@ function rebuild() {
   });
   $('message').textContent = errors.join('; ');
   runs.forEach((r, k) => { r.mesh = makeBodyMesh(r.session); bodyGroup.add(r.mesh); r.offset = k; });
+  frameBodies(false);
   polhodeCache = null;
   const target = state.t;
   state.t = 0;
@@ -143,7 +144,7 @@ scene3.add(markers);
 function bookMaterials() {
   // BoxGeometry faces: +x, −x, +y, −y, +z, −z. The book's faces (docs/physics.md §1):
   // spine +x, fore-edge −x, top +y, bottom −y, front cover +z, back cover −z; the images are
-  // bookspin's own (bookspin-explorer-data), plain colours without them.
+  // bookspin's own (bookspin explore), plain colours without them.
   const load = (face, rotation = 0) => {
     if (!BOOK_ART || !BOOK_ART[face]) return null;
     const tex = new THREE.TextureLoader().load(BOOK_ART[face]);
@@ -218,11 +219,77 @@ function cageMatrix(corners, size) {
   return { m, ex, ey, ez, centre };
 }
 
+// ---------- framing: where the bodies sit and where the camera looks from ----------
+
+let layout = { radius: 1, step: new THREE.Vector3() };
+let framedFor = '';  // the layout the camera was last fitted to
+
+/** The radius of the sphere a body sweeps about its centre of mass: its farthest surface
+ * vertex, or cage corner where it has no surface (the book). */
+function sweepRadius(session) {
+  const c = session.bodyCorners();
+  let r = 0;
+  for (let p = 0; p < 8; ++p) r = Math.max(r, Math.hypot(c[3 * p], c[3 * p + 1], c[3 * p + 2]));
+  // A surface is drawn about the cage's centre (cageMatrix), which may sit off the centre of mass.
+  const centre = [0, 1, 2].map((d) => { let s = 0; for (let p = 0; p < 8; ++p) s += c[3 * p + d]; return s / 8; });
+  const v = session.surfaceVertices();
+  let rv = 0;
+  for (let i = 0; i < v.length; i += 3) rv = Math.max(rv, Math.hypot(v[i], v[i + 1], v[i + 2]));
+  return rv > 0 ? Math.min(r, rv + Math.hypot(...centre)) : r;
+}
+
+/** Where run k's centre of mass is drawn: side by side (one above the other in a view taller
+ * than wide), a sweep diameter and a gap apart, the pair centred on the orbit target. */
+function offsetOf(k) {
+  return layout.step.clone().multiplyScalar(k - (runs.length - 1) / 2);
+}
+
+/** Lays the runs out and, when the layout changed (or `force`: the view was resized), puts the
+ * camera on its current line of sight at the nearest distance that shows every run's whole
+ * sweep sphere (and the L arrow) inside the view with a margin. */
+function frameBodies(force) {
+  if (!runs.length) return;
+  const r = Math.max(...runs.map((run) => sweepRadius(run.session)));
+  const tall = camera.aspect < 1;
+  const step = runs.length > 1 ? 2.2 * r : 0;
+  const key = `${runs.length} ${r} ${tall}`;
+  layout = { radius: r, step: new THREE.Vector3(tall ? 0 : step, tall ? -step : 0, 0) };
+  arrowL.setLength(1.5 * r, 0.2 * r, 0.1 * r);
+  axisArrows.forEach((a) => a.setLength(1.1 * r, 0.12 * r, 0.06 * r));
+  if (!force && key === framedFor) return;
+  framedFor = key;
+  // Each sweep sphere (centre c, radius ρ) must lie within 80% of the half-angles of the view:
+  // atan(|x|/z) + asin(ρ/|c|) ≤ α, horizontally and vertically, in the camera's frame.
+  const rho = r * (state.showL ? 1.2 : 1);
+  const halfV = Math.atan(0.8 * Math.tan(THREE.MathUtils.degToRad(camera.fov / 2)));
+  const halfH = Math.atan(0.8 * Math.tan(THREE.MathUtils.degToRad(camera.fov / 2)) * camera.aspect);
+  const target = controls.target.clone();
+  const dir = camera.position.clone().sub(target).normalize();
+  const fits = (d) => {
+    camera.position.copy(target).addScaledVector(dir, d);
+    camera.lookAt(target);
+    camera.updateMatrixWorld();
+    return runs.every((_, k) => {
+      const p = offsetOf(k).add(target).applyMatrix4(camera.matrixWorldInverse);
+      const z = -p.z, dist = p.length();
+      if (z <= 0 || dist <= rho) return false;
+      const a = Math.asin(rho / dist);
+      return Math.atan(Math.abs(p.x) / z) + a <= halfH && Math.atan(Math.abs(p.y) / z) + a <= halfV;
+    });
+  };
+  let lo = rho, hi = 200 * rho;
+  for (let i = 0; i < 60; ++i) { const mid = 0.5 * (lo + hi); if (fits(mid)) hi = mid; else lo = mid; }
+  fits(hi);
+  camera.near = Math.max(1e-3, 0.05 * hi);
+  camera.far = 20 * hi;
+  camera.updateProjectionMatrix();
+  controls.update();
+}
+
 function updatePoses() {
-  const spread = runs.length > 1 ? 4.5 : 0;
   runs.forEach((r, k) => {
     const { m, ex, ey, ez } = cageMatrix(r.session.corners(), r.mesh.userData.size);
-    const shift = new THREE.Matrix4().makeTranslation((k - (runs.length - 1) / 2) * spread, 0, 0);
+    const shift = new THREE.Matrix4().setPosition(offsetOf(k));
     r.mesh.matrix.copy(shift.multiply(m));
     r.mesh.visible = r.session.finite();
     if (k === 0) {
@@ -230,7 +297,7 @@ function updatePoses() {
       const L = new THREE.Vector3(d.L[0], d.L[1], d.L[2]);
       arrowL.visible = state.showL && L.length() > 0;
       if (L.length() > 0) arrowL.setDirection(L.normalize());
-      arrowL.position.set((0 - (runs.length - 1) / 2) * spread, 0, 0);
+      arrowL.position.copy(offsetOf(0));
       [ex, ey, ez].forEach((e, i) => {
         const a = axisArrows[i];
         a.visible = state.showAxes;
@@ -247,9 +314,25 @@ function updatePoses() {
 let polhodeCache = null;
 let sphereRot = new THREE.Matrix3().set(0.80, -0.60, 0, 0.25, 0.33, 0.91, -0.55, -0.73, 0.41);
 
+// The 2D panels draw in software (a canvas in memory, copied to the screen when it changed):
+// long polylines stroked through a software WebGL (SwiftShader, headless Chromium without a
+// GPU) cost a tenth of a second and more per redraw, on the CPU, in the GPU process.
+const CANVAS_2D = { willReadFrequently: true };
+
+// The polhodes and the trails drawn so far are kept on canvases of their own (layers) and
+// copied in each frame, so that a frame strokes only the trail points added since the last:
+// stroking every curve each frame cost most of a frame under a software WebGL (SwiftShader).
+const sphereLayers = { key: null, back: null, trails: null, drawn: [] };
+
+function layerCanvas(W, H) {
+  const c = document.createElement('canvas');
+  c.width = W; c.height = H;
+  return c;
+}
+
 function drawSphere() {
   const cv = $('sphere');
-  const g = cv.getContext('2d');
+  const g = cv.getContext('2d', CANVAS_2D);
   const W = cv.width, H = cv.height, R = Math.min(W, H) * 0.42, cx = W / 2, cy = H / 2;
   g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
   g.strokeStyle = '#555'; g.beginPath(); g.arc(cx, cy, R, 0, 2 * Math.PI); g.stroke();
@@ -261,32 +344,57 @@ function drawSphere() {
   const e = sphereRot.elements;  // column-major
   const proj = (u) => [e[0] * u[0] + e[3] * u[1] + e[6] * u[2], e[1] * u[0] + e[4] * u[1] + e[7] * u[2],
     e[2] * u[0] + e[5] * u[1] + e[8] * u[2]];
-  const curve = (pts, colour, width) => {
-    g.lineWidth = width;
+  const curve = (ctx, pts, colour, width) => {
+    ctx.lineWidth = width;
     for (let pass = 0; pass < 2; ++pass) {  // back half dim, front half bright
-      g.strokeStyle = colour; g.globalAlpha = pass ? 1 : 0.25;
-      g.beginPath();
+      ctx.strokeStyle = colour; ctx.globalAlpha = pass ? 1 : 0.25;
+      ctx.beginPath();
       let pen = false;
       for (const u of pts) {
         const p = proj(u);
         const front = p[2] >= 0;
         if (front === !!pass) {
           const x = cx + R * p[0], y = cy - R * p[1];
-          if (pen) g.lineTo(x, y); else g.moveTo(x, y);
+          if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
           pen = true;
         } else pen = false;
       }
-      g.stroke();
+      ctx.stroke();
     }
-    g.globalAlpha = 1;
+    ctx.globalAlpha = 1;
   };
-  for (const c of polhodeCache) {
-    const pts = [];
-    for (let i = 0; i < c.points.length; i += 3) pts.push([c.points[i], c.points[i + 1], c.points[i + 2]]);
-    curve(pts, c.separatrix ? '#e04848' : '#7a8699', c.separatrix ? 2 : 1);
+  // The layers hold one view (rotation, size) of one set of runs: redrawn whole when any changes.
+  const key = [W, H, ...e].join() + (polhodeCache === sphereLayers.polhodes ? '' : '*');
+  const trailsShrank = runs.some((r, k) => !(k in sphereLayers.drawn) || r.trail !== sphereLayers.drawn[k].trail ||
+    r.trail.length < sphereLayers.drawn[k].n);
+  if (key !== sphereLayers.key || sphereLayers.drawn.length !== runs.length) {
+    sphereLayers.back = layerCanvas(W, H);
+    const b = sphereLayers.back.getContext('2d', CANVAS_2D);
+    for (const c of polhodeCache) {
+      const pts = [];
+      for (let i = 0; i < c.points.length; i += 3) pts.push([c.points[i], c.points[i + 1], c.points[i + 2]]);
+      curve(b, pts, c.separatrix ? '#e04848' : '#7a8699', c.separatrix ? 2 : 1);
+    }
+    sphereLayers.polhodes = polhodeCache;
+    sphereLayers.key = [W, H, ...e].join();
+    sphereLayers.trails = null;
   }
+  if (!sphereLayers.trails || trailsShrank) {
+    sphereLayers.trails = layerCanvas(W, H);
+    sphereLayers.drawn = runs.map((r) => ({ trail: r.trail, n: 0 }));
+  }
+  const t = sphereLayers.trails.getContext('2d', CANVAS_2D);
+  runs.forEach((r, k) => {
+    const done = sphereLayers.drawn[k];
+    if (r.trail.length > done.n) {
+      // From the last point drawn, so that the new piece joins the old.
+      curve(t, r.trail.slice(Math.max(0, done.n - 1)), r.colour, 2.5);
+      done.n = r.trail.length;
+    }
+  });
+  g.drawImage(sphereLayers.back, 0, 0);
+  g.drawImage(sphereLayers.trails, 0, 0);
   for (const r of runs) {
-    curve(r.trail, r.colour, 2.5);
     const p = proj(r.trail[r.trail.length - 1]);
     g.fillStyle = r.colour; g.beginPath(); g.arc(cx + R * p[0], cy - R * p[1], 5, 0, 2 * Math.PI); g.fill();
   }
@@ -313,7 +421,7 @@ function drawSphere() {
 
 function drawPlots() {
   const cv = $('plots');
-  const g = cv.getContext('2d');
+  const g = cv.getContext('2d', CANVAS_2D);
   const W = cv.width, H = cv.height;
   g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
   if (!runs.length) return;
@@ -339,12 +447,22 @@ function drawPlots() {
         g.strokeStyle = n === 3 ? wcol[c] : r.colour;
         g.setLineDash(ri ? [4, 3] : []);
         g.beginPath();
-        r.history.forEach((s, i) => {
+        // One pixel column at a time: its first, lowest, highest and last point (the curve's
+        // envelope, at a fraction of the points when the history is longer than the plot is wide).
+        let col = null, first, low, high, last, pen = false;
+        const flush = () => {
+          if (col === null) return;
+          for (const y of [first, low, high, last]) { if (pen) g.lineTo(col, y); else g.moveTo(col, y); pen = true; }
+        };
+        for (const s of r.history) {
           const v = f(s, r)[c];
-          if (!Number.isFinite(v)) return;
-          const x = 4 + (W - 8) * s.t / tmax, y = y0 + h - h * (v - lo) / (hi - lo);
-          if (i) g.lineTo(x, y); else g.moveTo(x, y);
-        });
+          if (!Number.isFinite(v)) continue;
+          const x = Math.round(4 + (W - 8) * s.t / tmax), y = y0 + h - h * (v - lo) / (hi - lo);
+          if (x !== col) { flush(); col = x; first = low = high = last = y; } else {
+            low = Math.min(low, y); high = Math.max(high, y); last = y;
+          }
+        }
+        flush();
         g.stroke();
       }
     });
@@ -413,7 +531,7 @@ function writeControls() {
 }
 
 function writeUrl() {
-  const q = formatState(state);
+  const q = formatState(state, sceneBase(state.scene));
   history.replaceState(null, '', q ? `?${q}` : location.pathname);
 }
 
@@ -481,13 +599,39 @@ function resize() {
   renderer.setSize(w, h, false);
   camera.aspect = w / Math.max(1, h);
   camera.updateProjectionMatrix();
+  frameBodies(true);
+  if (runs.length) updatePoses();
 }
 
+// Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
+const costs = { physics: 0, view: 0, sphere: 0, plots: 0, readout: 0 };
+let plotsDrawnAt = -Infinity;
+
+/** Whether `parts` (arrays and numbers) differ from what `memo.seen` held; remembers them. */
+function changed(memo, parts) {
+  const same = memo.seen && memo.seen.length === parts.length && parts.every((p, i) => p === memo.seen[i]);
+  memo.seen = parts;
+  return !same;
+}
+const sphereSeen = {}, plotsSeen = {};
+
 function draw() {
-  renderer.render(scene3, camera);
-  drawSphere();
-  drawPlots();
-  readout();
+  let t0 = performance.now();
+  const lap = (part) => { const t1 = performance.now(); costs[part] += t1 - t0; t0 = t1; };
+  renderer.render(scene3, camera); lap('view');
+  // The 2D panels only when what they show changed; while playing, the plots (their whole
+  // history rescaled each time) ten times a second, the sphere every frame.
+  const sphere = $('sphere'), plots = $('plots');
+  if (changed(sphereSeen, [sphere.width, sphere.height, ...sphereRot.elements, polhodeCache,
+    ...runs.flatMap((r) => [r.trail, r.trail.length])])) drawSphere();
+  lap('sphere');
+  if ((!playing || t0 - plotsDrawnAt >= 100) &&
+      changed(plotsSeen, [plots.width, plots.height, ...runs.flatMap((r) => [r.history, r.history.length])])) {
+    drawPlots();
+    plotsDrawnAt = t0;
+  }
+  lap('plots');
+  readout(); lap('readout');
   framesDrawn += 1;
 }
 
@@ -498,7 +642,9 @@ function frame(now) {
       stepDebt += dtWall * state.speed / state.dt;
       const n = Math.floor(stepDebt);
       stepDebt -= n;
+      const t0 = performance.now();
       if (n > 0) { advanceTo(state.t + n * state.dt); updatePoses(); }
+      costs.physics += performance.now() - t0;
     }
     lastFrame = now;
   }
@@ -515,6 +661,8 @@ window.explorer = {
   url: () => location.search,
   setPlaying,
   framesDrawn: () => framesDrawn,
+  /** Milliseconds spent so far in the frames' physics, 3D view, sphere, plots and readout. */
+  frameCosts: () => ({ ...costs }),
   /** ω (body frame) of each run at time t (steps round(t/dt) from the start). */
   omegaAt(t) { state.t = 0; rebuild(); advanceTo(t); updatePoses(); draw(); return runs.map((r) => Array.from(r.session.diagnostics().omega_body)); },
   flips: () => runs.map(flips),

@@ -58,12 +58,13 @@ export function parseState(search, base = DEFAULTS) {
   return state;
 }
 
-/** The query string of `state`: only keys that differ from DEFAULTS. */
-export function formatState(state) {
+/** The query string of `state`: the scene's name, and only the keys that differ from `base`
+ * (what parseState starts from: DEFAULTS, or the scene's settings over them). */
+export function formatState(state, base = DEFAULTS) {
   const params = new URLSearchParams();
   for (const key of Object.keys(DEFAULTS)) {
     const v = state[key];
-    const d = DEFAULTS[key];
+    const d = key === 'scene' ? DEFAULTS.scene : base[key];
     if (JSON.stringify(v) === JSON.stringify(d)) continue;
     params.set(key, Array.isArray(v) ? v.join(',') : typeof v === 'boolean' ? (v ? '1' : '0') : String(v));
   }

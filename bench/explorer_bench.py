@@ -1,0 +1,215 @@
+#!/usr/bin/env python3
+"""The benchmark of the explorer page (docs/explorer.md): ns per step of each of the page's
+methods in WebAssembly (headless Chromium, the page's `explorer.nsPerStep` hook) against the
+native build on the same machine in the same run (`bookspin-bench --only explorer`, the same
+loop, scene, body, initial state, dt and step count), and the page's frames per second while
+playing at 1280×720.
+
+The native and the WebAssembly timings are taken in alternation, `--rounds` times, each side
+keeping its best (a shared machine disturbs both alike). Both are wall time. The frames per
+second count `explorer.framesDrawn()` over `--seconds` of wall time after a second of warm-up;
+the WebGL renderer the page got (SwiftShader on the CPU, or a GPU) is read from the page and
+written beside it.
+
+Usage: explorer_bench.py EXPLORER_HTML BOOKSPIN_BENCH [--scene SCENE.toml] [--out CSV]
+Writes CSV (default bench/results/explorer-MACHINE.csv) and prints a table.
+"""
+import argparse
+import csv
+import datetime
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "tests" / "browser"))
+from explorer_test import load, open_browser  # noqa: E402
+from gallery_test import find_browser  # noqa: E402
+
+RIGID = ("rigid-matrix", "rigid-quaternion", "exact")
+
+
+def cpu_model():
+    for line in Path("/proc/cpuinfo").read_text().splitlines():
+        if line.startswith("model name"):
+            return line.split(":", 1)[1].strip()
+    return "unknown CPU"
+
+
+def machine_slug():
+    words = re.sub(r"\(.*?\)|processor|cpu|@.*", "", cpu_model(), flags=re.I).split()
+    return f"{os.cpu_count()}core-" + "-".join(w.lower() for w in words[:3])
+
+
+def native_times(bench, scene, steps, repetitions):
+    """{(model, integrator): ns/step} from `bookspin-bench --only explorer`."""
+    with tempfile.TemporaryDirectory(prefix="bookspin-explorer-bench-") as out:
+        r = subprocess.run([bench, str(scene), "--only", "explorer", "--explorer-steps", str(steps),
+                            "--rounds", str(repetitions), "-o", out],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        if r.returncode != 0:
+            sys.exit(f"explorer_bench: {bench} exited {r.returncode}:\n{r.stdout}")
+        times = {}
+        with open(Path(out) / "bench.csv", newline="") as f:
+            for row in csv.DictReader(f):
+                if row["section"] != "explorer":
+                    continue
+                model, _, integrator = row["metric"].partition(" ")
+                times[(model, integrator or "euler")] = float(row["value"])
+        return times
+
+
+def page_times(driver, methods, steps, repetitions):
+    times = {}
+    for model, integrator in methods:
+        times[(model, integrator)] = min(
+            driver.execute_script("return window.explorer.nsPerStep(arguments[0], arguments[1], "
+                                  "arguments[2], arguments[3])",
+                                  model, integrator, model != "exact", steps)
+            for _ in range(repetitions))
+    return times
+
+
+def browser_cpu_seconds(profile):
+    """CPU seconds (user + system) used so far by the browser's processes: those started with
+    this profile (the browser, its renderer and its GPU process, where SwiftShader draws)."""
+    total = 0.0
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            cmdline = Path(f"/proc/{pid}/cmdline").read_bytes()
+            if f"--user-data-dir={profile}".encode() not in cmdline:
+                continue
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+            total += (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+        except OSError:
+            continue
+    return total
+
+
+def frames_per_second(driver, page, scene_name, seconds, profile):
+    load(driver, f"{page}?scene={scene_name}")
+    info = driver.execute_script("""
+      const v = document.getElementById('view');
+      const gl = document.createElement('canvas').getContext('webgl2');
+      const ext = gl && gl.getExtension('WEBGL_debug_renderer_info');
+      return {width: v.width, height: v.height,
+              inner: [window.innerWidth, window.innerHeight],
+              renderer: ext ? gl.getParameter(ext.UNMASKED_RENDERER_WEBGL) : 'unknown',
+              model: window.explorer.state().model, integrator: window.explorer.state().integrator};
+    """)
+    driver.execute_script("window.explorer.setPlaying(true)")
+    time.sleep(1.0)
+    cpu0 = browser_cpu_seconds(profile)
+    f0, t0, c0 = driver.execute_script(
+        "return [window.explorer.framesDrawn(), performance.now(), window.explorer.frameCosts()]")
+    time.sleep(seconds)
+    f1, t1, c1, t = driver.execute_script(
+        "return [window.explorer.framesDrawn(), performance.now(), window.explorer.frameCosts(), "
+        "window.explorer.state().t]")
+    cpu1 = browser_cpu_seconds(profile)
+    driver.execute_script("window.explorer.setPlaying(false)")
+    frames = max(1, f1 - f0)
+    info.update(frames=f1 - f0, seconds=(t1 - t0) / 1000, fps=(f1 - f0) / ((t1 - t0) / 1000),
+                t=t, costs={k: (c1[k] - c0[k]) / frames for k in c1},
+                cpu_ms=1000 * (cpu1 - cpu0) / frames, load=os.getloadavg()[0])
+    return info
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("page", help="a built explorer.html")
+    ap.add_argument("bench", help="the bookspin-bench program")
+    ap.add_argument("--scene", default=str(ROOT / "scenes" / "fig09-matrix-unstable-x.toml"),
+                    help="scene file whose settings both sides run (the page: ?scene=its stem)")
+    ap.add_argument("--steps", type=int, default=100000, help="steps of each timing")
+    ap.add_argument("--rounds", type=int, default=3, help="native/page alternations")
+    ap.add_argument("--repetitions", type=int, default=3, help="timings per side per round")
+    ap.add_argument("--seconds", type=float, default=5.0, help="wall time of the fps count")
+    ap.add_argument("--fps-only", action="store_true",
+                    help="only the frames per second (printed; no CSV written)")
+    ap.add_argument("--machine", default=os.environ.get("BOOKSPIN_MACHINE") or machine_slug())
+    ap.add_argument("--out", help="CSV (default bench/results/explorer-MACHINE.csv)")
+    a = ap.parse_args()
+    page = Path(a.page).resolve()
+    if not page.is_file():
+        sys.exit(f"explorer_bench: no page at {a.page} (web/build.sh BUILD OUT SCENE... makes it)")
+    scene = Path(a.scene).resolve()
+    scene_name = scene.stem
+    out = Path(a.out) if a.out else ROOT / "bench" / "results" / f"explorer-{a.machine}.csv"
+    date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    machine = f"{cpu_model()}, {os.cpu_count()} cores"
+
+    chromium, driver_path = find_browser()
+    profile = tempfile.mkdtemp(prefix="bookspin-explorer-bench-")
+    driver = open_browser(chromium, driver_path, profile)
+    driver.set_script_timeout(600)
+    try:
+        load(driver, f"{page.as_uri()}?scene={scene_name}")
+        if driver.execute_script("return window.explorer.state().scene") != scene_name:
+            sys.exit(f"explorer_bench: the page has no scene {scene_name}")
+        native, wasm = {}, {}
+        for r in range(0 if a.fps_only else a.rounds):
+            n = native_times(a.bench, scene, a.steps, a.repetitions)
+            w = page_times(driver, list(n), a.steps, a.repetitions)
+            for k in n:
+                native[k] = min(native.get(k, n[k]), n[k])
+                wasm[k] = min(wasm.get(k, w[k]), w[k])
+            print(f"round {r + 1}/{a.rounds} done", file=sys.stderr)
+        fps = frames_per_second(driver, page.as_uri(), scene_name, a.seconds, profile)
+    finally:
+        driver.quit()
+        shutil.rmtree(profile, ignore_errors=True)
+
+    software = "SwiftShader" in fps["renderer"]
+    if a.fps_only:
+        print(f"{fps['fps']:.1f} frames/s ({fps['frames']} in {fps['seconds']:.1f} s), view "
+              f"{fps['width']}x{fps['height']}, {fps['renderer']}; browser CPU "
+              f"{fps['cpu_ms']:.0f} ms per frame, load average {fps['load']:.1f}; main-thread ms "
+              "per frame: " + ", ".join(f"{k} {v:.2f}" for k, v in fps["costs"].items()))
+        return
+    rows = []
+    for (model, integrator), ns in native.items():
+        rows.append({"model": model, "integrator": "" if model == "exact" else integrator,
+                     "steps": a.steps, "wasm_ns_per_step": f"{wasm[(model, integrator)]:.1f}",
+                     "native_ns_per_step": f"{ns:.1f}",
+                     "ratio": f"{wasm[(model, integrator)] / ns:.2f}", "frames_per_second": "",
+                     "note": f"scene {scene_name}, normalized" if model != "exact" else
+                             f"scene {scene_name}"})
+    rows.append({"model": fps["model"], "integrator": fps["integrator"], "steps": "",
+                 "wasm_ns_per_step": "", "native_ns_per_step": "", "ratio": "",
+                 "frames_per_second": f"{fps['fps']:.1f}",
+                 "note": f"playing {scene_name}, view canvas {fps['width']}x{fps['height']} in a "
+                         f"{fps['inner'][0]}x{fps['inner'][1]} window, {fps['frames']} frames in "
+                         f"{fps['seconds']:.1f} s, browser CPU {fps['cpu_ms']:.0f} ms per frame, "
+                         f"load average {fps['load']:.1f}, WebGL: {fps['renderer']}"})
+    for row in rows:
+        row.update(machine=machine, date=date)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with open(out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+
+    print(f"explorer bench: {machine}, {date}; scene {scene_name}, {a.steps} steps per timing, "
+          f"best of {a.rounds}×{a.repetitions}, wall time")
+    print(f"{'model':18} {'integrator':18} {'wasm ns':>9} {'native ns':>9} {'ratio':>6}")
+    for row in rows[:-1]:
+        mark = "" if row["model"] not in RIGID or float(row["ratio"]) <= 2.5 else "  > 2.5x"
+        print(f"{row['model']:18} {row['integrator']:18} {row['wasm_ns_per_step']:>9} "
+              f"{row['native_ns_per_step']:>9} {row['ratio']:>6}{mark}")
+    print(f"frames per second playing at 1280x720: {fps['fps']:.1f} ({fps['frames']} frames in "
+          f"{fps['seconds']:.1f} s; view {fps['width']}x{fps['height']}; WebGL renderer "
+          f"{fps['renderer']}{': software, on the CPU' if software else ''})")
+    print(f"browser CPU {fps['cpu_ms']:.0f} ms per frame (all its processes; load average "
+          f"{fps['load']:.1f} on {os.cpu_count()} cores); main-thread ms per frame: " +
+          ", ".join(f"{k} {v:.2f}" for k, v in fps["costs"].items()))
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
