@@ -52,7 +52,10 @@ void bench_explorer(const BenchContext& c) {
     volatile double keep = sim->corners()(0, 0);  // the steps' result stays observable
     (void)keep;
     std::string name = std::string(physics::to_string(m.kind));
-    if (m.kind != physics::ModelKind::exact) name += " " + std::string(physics::to_string(m.integrator));
+    if (m.kind != physics::ModelKind::exact) {
+      name += ' ';
+      name += physics::to_string(m.integrator);
+    }
     c.report->add({"explorer", name, best, "ns/step",
                    std::to_string(done) + " steps of dt " + std::to_string(scene.dt) +
                        ", best of " + std::to_string(c.options.rounds) + ", wall time"});

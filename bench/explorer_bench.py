@@ -137,7 +137,7 @@ def main():
     a = ap.parse_args()
     page = Path(a.page).resolve()
     if not page.is_file():
-        sys.exit(f"explorer_bench: no page at {a.page} (web/build.sh BUILD OUT SCENE... makes it)")
+        sys.exit(f"explorer_bench: no page at {a.page} (make bench-explorer makes it: web/build.sh BUILD, then BUILD/bookspin explore SCENE... -o OUT)")
     scene = Path(a.scene).resolve()
     scene_name = scene.stem
     out = Path(a.out) if a.out else ROOT / "bench" / "results" / f"explorer-{a.machine}.csv"

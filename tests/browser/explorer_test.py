@@ -355,8 +355,8 @@ def main(bookspin, source, binary):
         #    speed to the page's default, which the scene does not use) and read back.
         Select(driver.find_element("id", "integrator")).select_by_value("rk4")
         Select(driver.find_element("id", "axis")).select_by_value("largest")
-        for field, value in (("rate", "0.3"), ("dt", "0.02"), ("k", "3"), ("jiggle", "0.002"),
-                             ("seed", "11"), ("speed", "5")):
+        for field, value in (("rate", "0.3"), ("dt", "0.02"), ("k", "3"), ("cells", "5"),
+                             ("jiggle", "0.002"), ("seed", "11"), ("speed", "5")):
             driver.find_element("id", field).clear()
             driver.find_element("id", field).send_keys(value + "\n")
         for box in ("normalize", "damping", "showL", "showAxes"):
