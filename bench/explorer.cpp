@@ -17,8 +17,7 @@ namespace {
 
 /// Wall-clock seconds: the page's performance.now() is wall time too.
 double wall_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 }  // namespace

@@ -51,7 +51,6 @@ std::string model_xml(const MujocoSetup& s) {
   return xml;
 }
 
-
 }  // namespace
 
 mjModel* load_mjcf(const std::string& xml, const char* file_name, const char* what) {

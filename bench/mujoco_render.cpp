@@ -1,9 +1,9 @@
 #include "bench/mujoco_render.hpp"
 
-#include "bench/mujoco.hpp"
-
 #include <stdexcept>
 #include <string>
+
+#include "bench/mujoco.hpp"
 
 #ifdef BOOKSPIN_HAVE_MUJOCO
 #include <EGL/egl.h>
@@ -67,7 +67,6 @@ std::string model_xml(const MujocoRenderSetup& s) {
                 s.width, s.height, s.fov_y_deg, s.msaa, half.x(), half.y(), half.z());
   return xml;
 }
-
 
 std::string egl_error(const char* what) {
   char text[96];

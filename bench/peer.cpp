@@ -9,22 +9,21 @@
 #include <string>
 #include <vector>
 
+#include "analysis/frame_source.hpp"
 #include "bench/clock.hpp"
 #include "bench/mujoco.hpp"
 #include "bench/mujoco_render.hpp"
 #include "bench/sections.hpp"
-#include "output/mp4_encoder.hpp"
-#include "output/png_writer.hpp"
 #include "clip/clip_request.hpp"
 #include "clip/frame.hpp"
-#include "analysis/frame_source.hpp"
 #include "clip/render_settings.hpp"
+#include "output/mp4_encoder.hpp"
+#include "output/png_writer.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::bench {
 
 namespace {
-
 
 /// Wall and process CPU seconds; keep_best keeps the run with the shorter wall time.
 struct PeerTiming {

@@ -48,7 +48,8 @@ struct PhysicsBench {
 };
 
 std::unique_ptr<MujocoBook> mujoco_book(const PhysicsBench& b, bool rk4) {
-  const Eigen::Vector3d L0 = physics::initial_angular_momentum(b.settings.body.cage, b.settings.initial);
+  const Eigen::Vector3d L0 =
+      physics::initial_angular_momentum(b.settings.body.cage, b.settings.initial);
   const Eigen::Vector3d omega0 =
       b.settings.body.cage.principal_moments().cwiseInverse().cwiseProduct(L0);
   return std::make_unique<MujocoBook>(MujocoSetup{b.settings.body.cage, omega0, b.dt, rk4});

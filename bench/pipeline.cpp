@@ -10,17 +10,17 @@
 #include <string>
 #include <vector>
 
+#include "analysis/frame_source.hpp"
 #include "bench/clock.hpp"
 #include "bench/sections.hpp"
 #include "bench/zlib_png.hpp"
-#include "output/mp4_encoder.hpp"
-#include "output/png_writer.hpp"
+#include "charts/decoration.hpp"
 #include "clip/clip.hpp"
 #include "clip/clip_request.hpp"
-#include "charts/decoration.hpp"
 #include "clip/frame.hpp"
-#include "analysis/frame_source.hpp"
 #include "clip/render_settings.hpp"
+#include "output/mp4_encoder.hpp"
+#include "output/png_writer.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::bench {
@@ -57,8 +57,8 @@ std::vector<std::string> size_overrides(int width, int height) {
 /// What `render SCENE --set render.width=W --set render.height=H --frames N [--no-png] -o
 /// SCRATCH/NAME` asks of the pipeline, plus `extra` overrides.
 clip::ClipRequest clip_request(const BenchContext& c, const std::string& name, int width,
-                                   int height, int frames, bool png,
-                                   std::vector<std::string> extra = {}) {
+                               int height, int frames, bool png,
+                               std::vector<std::string> extra = {}) {
   std::vector<std::string> overrides = size_overrides(width, height);
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   clip::ClipRequest request;
@@ -299,8 +299,8 @@ void report_split(BenchReport& report, const PipelineTimes& best, const Split& s
       parts + "; level " + level + " as the scene's, one thread");
   row("PNG through libpng and zlib (the former writer)", split.png_zlib,
       parts + "; zlib level " + level + ", the same frames, one thread");
-  report.add({"pipeline split", "PNG libdeflate / libpng+zlib, CPU time", split.png / split.png_zlib,
-              "x", "the two rows above"});
+  report.add({"pipeline split", "PNG libdeflate / libpng+zlib, CPU time",
+              split.png / split.png_zlib, "x", "the two rows above"});
   report.add({"pipeline split", "PNG file (libdeflate), per frame", split.png_bytes / frames / 1e3,
               "kB", "mean size of the frames' files"});
   report.add({"pipeline split", "PNG file (libpng+zlib), per frame",

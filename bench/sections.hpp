@@ -11,13 +11,14 @@ namespace bookspin::bench {
 
 struct BenchOptions {
   std::string scene_path = "scenes/fig09-matrix-unstable-x.toml";  ///< the 720p pipeline scene
-  std::string out_dir;            ///< non-empty: also write OUT/bench.csv
-  int frames = 150;               ///< pipeline frames at 1280×720
-  int memory_frames = 10000;      ///< the long run of the memory check
-  int rounds = 3;                 ///< pipeline runs alternated this many times; best of each kept
-  int jobs = 0;                   ///< as render --jobs
-  long explorer_steps = 100000;   ///< steps of each explorer timing
-  std::vector<std::string> only;  ///< sections to run (pipeline, peer, resolution, physics, memory, explorer)
+  std::string out_dir;           ///< non-empty: also write OUT/bench.csv
+  int frames = 150;              ///< pipeline frames at 1280×720
+  int memory_frames = 10000;     ///< the long run of the memory check
+  int rounds = 3;                ///< pipeline runs alternated this many times; best of each kept
+  int jobs = 0;                  ///< as render --jobs
+  long explorer_steps = 100000;  ///< steps of each explorer timing
+  std::vector<std::string>
+      only;  ///< sections to run (pipeline, peer, resolution, physics, memory, explorer)
 };
 
 /// The machine cannot hold what the bench was asked to measure (exit status 1).

@@ -52,8 +52,7 @@ BodyShape shape_of(const std::string& name) {
 
 /// The book of `size` (a, b, c, length units) and `mass`, or a preset of `mass` and `scale`
 /// (docs/physics.md §1, §12).
-Body make_body(const std::string& name, double mass, double scale, double a, double b,
-               double c) {
+Body make_body(const std::string& name, double mass, double scale, double a, double b, double c) {
   const BodyShape shape = shape_of(name);
   if (shape == BodyShape::book) {
     Book book;
@@ -69,14 +68,13 @@ template <typename T>
 std::vector<T> numbers(const val& spec, const char* key, std::size_t count) {
   const std::vector<T> v = emscripten::vecFromJSArray<T>(spec[key]);
   if (v.size() != count)
-    throw std::invalid_argument(std::string("body.") + key + ": expected " +
-                                std::to_string(count) + " numbers, got " +
-                                std::to_string(v.size()));
+    throw std::invalid_argument(std::string("body.") + key + ": expected " + std::to_string(count) +
+                                " numbers, got " + std::to_string(v.size()));
   return v;
 }
 
-/// The Body exactly as bookspin built it (src/clip/explorer_page.hpp, `body`): shape, mass, principal
-/// moments about x, y, z, cage size, volume, the surface 3×V (principal frame) with its
+/// The Body exactly as bookspin built it (src/clip/explorer_page.hpp, `body`): shape, mass,
+/// principal moments about x, y, z, cage size, volume, the surface 3×V (principal frame) with its
 /// triangles 3×N and face colours 3×N flattened column by column, smooth. Nothing is computed
 /// again, so the page starts from bookspin's own doubles (a mesh body needs no mesh reader).
 Body body_of(const val& spec) {
@@ -95,8 +93,8 @@ Body body_of(const val& spec) {
   if (vertices.size() % 3 != 0 || triangles.size() % 3 != 0 || triangles.empty())
     throw std::invalid_argument("body: vertices and triangles must be 3×V and 3×N, N > 0");
   const auto n = static_cast<Eigen::Index>(triangles.size() / 3);
-  body.vertices = Eigen::Map<const Eigen::Matrix3Xd>(vertices.data(), 3,
-                                                     static_cast<Eigen::Index>(vertices.size() / 3));
+  body.vertices = Eigen::Map<const Eigen::Matrix3Xd>(
+      vertices.data(), 3, static_cast<Eigen::Index>(vertices.size() / 3));
   body.triangles = Eigen::Map<const Eigen::Matrix3Xi>(triangles.data(), 3, n);
   const std::vector<float> colours = numbers<float>(spec, "colours", triangles.size());
   body.face_colours = Eigen::Map<const Eigen::Matrix3Xf>(colours.data(), 3, n);

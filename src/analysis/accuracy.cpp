@@ -88,7 +88,6 @@ physics::ExactRotation exact_reference(const AccuracySettings& s) {
   return model.rotation();
 }
 
-
 double orientation_error_at(const AccuracySettings& s, const physics::ExactRotation& exact,
                             const Method& m, double dt, double t_end) {
   auto sim = start(s, m);
@@ -108,7 +107,7 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
   row.dt = dt;
   row.steps = std::lround(s.flips * flip / dt);
   row.t_end = row.steps * dt;
-    auto sim = start(s, m);
+  auto sim = start(s, m);
   const physics::Diagnostics d0 = sim->diagnostics();
   FlipDetector flips;
   flips.observe(0.0, flip_signal(d0, s.body.moments));
@@ -126,8 +125,7 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
   row.orientation_error =
-      row.diverged ? nan
-                   : rotation_angle_between(exact.orientation(row.t_end), sim->orientation());
+      row.diverged ? nan : rotation_angle_between(exact.orientation(row.t_end), sim->orientation());
   row.flip_period = flips.flip_period().value_or(std::numeric_limits<double>::quiet_NaN());
   row.flip_period_error = std::abs(row.flip_period / flip - 1.0);
   row.ns_per_step = time_steps(s, m, dt, row.steps);

@@ -56,7 +56,6 @@ AccuracyRow measure(const AccuracySettings& settings, const physics::ExactRotati
 /// The exact reference for `settings` (same jiggled initial L as every model).
 physics::ExactRotation exact_reference(const AccuracySettings& settings);
 
-
 /// Relative energy error of one method along a long run: for each of the equal windows of
 /// the run, the largest |E/E0 − 1| over its steps (E the model's total energy, E0 at t = 0),
 /// plotted at the window's end time t (time units). Stops at a divergence.

@@ -10,8 +10,8 @@ namespace bookspin::analysis {
 
 const std::vector<Measure>& measure_table() {
   static const std::vector<Measure> table{
-      {"first_flip", "first flip (time units)", false, &RunMeasures::first_flip,
-       "first_flip_exact", &RunMeasures::first_flip_exact},
+      {"first_flip", "first flip (time units)", false, &RunMeasures::first_flip, "first_flip_exact",
+       &RunMeasures::first_flip_exact},
       {"flip_period", "flip period (time units)", false, &RunMeasures::flip_period,
        "flip_period_exact", &RunMeasures::flip_period_exact},
       {"energy_drift", "max |E/E0 - 1|", true, &RunMeasures::energy_drift, "", nullptr},

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "clip/clip_request.hpp"
 #include "charts/plot_sheet.hpp"
+#include "clip/clip_request.hpp"
 
 namespace bookspin::cache {
 

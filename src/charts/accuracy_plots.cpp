@@ -26,7 +26,8 @@ void write_energy_csv(const std::filesystem::path& path,
   const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
   for (std::size_t i = 0; i < rows; ++i) {
     char cell[64];
-    std::snprintf(cell, sizeof cell, "%.9g", output::finite(histories.front().t[i], "energy CSV t"));
+    std::snprintf(cell, sizeof cell, "%.9g",
+                  output::finite(histories.front().t[i], "energy CSV t"));
     out << cell;
     for (const auto& h : histories) {
       // A diverged run's history is shorter: its missing windows stay empty.

@@ -4,8 +4,8 @@
 #include <ctime>
 
 #include "charts/panel.hpp"
-#include "charts/sphere_view.hpp"
 #include "charts/poinsot_view.hpp"
+#include "charts/sphere_view.hpp"
 
 namespace bookspin::charts {
 
@@ -105,10 +105,9 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
   }
   if (scene.render.poinsot && !history.orientation.empty()) {
     const PixelRect column = panel_rect(image.width, image.height);
-    overlay::draw_poinsot(image,
-                          poinsot_rect(image.width, image.height,
-                                       scene.render.panel ? &column : nullptr),
-                          poinsot_spec(sphere_moments(scene), history));
+    overlay::draw_poinsot(
+        image, poinsot_rect(image.width, image.height, scene.render.panel ? &column : nullptr),
+        poinsot_spec(sphere_moments(scene), history));
     if (times) times->sphere += timer.lap();
   }
   caption_.draw(image, caption_for(scene, t, diverged_at), caption);

@@ -5,11 +5,11 @@
 #include <optional>
 #include <vector>
 
+#include "charts/diagnostics_history.hpp"
 #include "common/rgba_image.hpp"
 #include "overlay/caption.hpp"
 #include "overlay/sphere.hpp"
 #include "physics/simulator.hpp"
-#include "charts/diagnostics_history.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::charts {

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "charts/diagnostics_history.hpp"
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 #include "overlay/plot.hpp"
-#include "charts/diagnostics_history.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::charts {

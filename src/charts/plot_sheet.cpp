@@ -7,11 +7,11 @@
 #include <map>
 #include <sstream>
 
+#include "analysis/frame_source.hpp"
+#include "charts/decoration.hpp"
+#include "charts/panel.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
-#include "charts/decoration.hpp"
-#include "analysis/frame_source.hpp"
-#include "charts/panel.hpp"
 
 namespace bookspin::charts {
 
@@ -105,8 +105,7 @@ bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots, const BlowUp& t
 PlotSheet plot_sheet_for(const scene::Scene& scene) {
   const std::vector<Run> runs = simulate_all(scene);
   std::vector<PanelRun> panel_runs;
-  for (const auto& run : runs)
-    panel_runs.emplace_back(run.scene, run.history, run.scene.title);
+  for (const auto& run : runs) panel_runs.emplace_back(run.scene, run.history, run.scene.title);
   auto plots = panel_plots(panel_runs, clip_end_time(scene), std::nullopt);
   // A comparison's series are labelled with their run's title (panel.cpp).
   std::map<std::string, double> blow_ups;

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "overlay/plot.hpp"
-
 #include "scene/scene.hpp"
 
 namespace bookspin::charts {
@@ -20,9 +19,9 @@ struct PlotRequest {
 
 /// What a plot sheet shows: its header lines and its plots.
 struct PlotSheet {
-  std::vector<std::string> lines;         ///< title, model line or tiles, divergences, notes
-  std::vector<overlay::PlotSpec> plots;   ///< body-frame ω (a comparison: ω about the
-                                          ///< intermediate axis), E/E0 − 1, shape error
+  std::vector<std::string> lines;        ///< title, model line or tiles, divergences, notes
+  std::vector<overlay::PlotSpec> plots;  ///< body-frame ω (a comparison: ω about the
+                                         ///< intermediate axis), E/E0 − 1, shape error
 };
 
 /// Simulates the scene (every tile of a comparison) to its end or divergence and lays out

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "physics/poinsot.hpp"
 #include "charts/sphere_view.hpp"
+#include "physics/poinsot.hpp"
 
 namespace bookspin::charts {
 

@@ -4,9 +4,9 @@
 // overlay::PoinsotSpec, and placing the inset in the frame.
 #include <Eigen/Dense>
 
+#include "charts/diagnostics_history.hpp"
 #include "common/pixel_rect.hpp"
 #include "overlay/poinsot.hpp"
-#include "charts/diagnostics_history.hpp"
 
 namespace bookspin::charts {
 
@@ -17,7 +17,8 @@ namespace bookspin::charts {
 /// the plane's disc 1.25 times the herpolhode's closed-form outer bound (at least half the
 /// largest semi-axis). Throws std::invalid_argument for an empty history, one without
 /// orientations, or L = 0.
-overlay::PoinsotSpec poinsot_spec(const Eigen::Vector3d& moments, const DiagnosticsHistory& history);
+overlay::PoinsotSpec poinsot_spec(const Eigen::Vector3d& moments,
+                                  const DiagnosticsHistory& history);
 
 /// The inset's square in a width×height frame: with the plot panel (`panel_column`, the
 /// panel's rectangle) on top of the column, the plots below (split_for_sphere); without it at

@@ -6,11 +6,11 @@
 #include <utility>
 #include <vector>
 
+#include "charts/diagnostics_history.hpp"
 #include "common/colour.hpp"
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 #include "overlay/sphere.hpp"
-#include "charts/diagnostics_history.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::charts {

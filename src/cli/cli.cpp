@@ -98,8 +98,9 @@ void add_render(CLI::App& cli, RenderArgs& options) {
 
 void add_export(CLI::App& cli, ExportOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
-      "export", "Export a scene's body and its motion for other programs: --gltf writes "
-                "OUT/<scene>.glb (glTF 2.0 binary, one animation, keyframes at render.fps)");
+      "export",
+      "Export a scene's body and its motion for other programs: --gltf writes "
+      "OUT/<scene>.glb (glTF 2.0 binary, one animation, keyframes at render.fps)");
   cmd->add_option("SCENE", options.scene_path, "Scene file (TOML), one model (no [[compare]])")
       ->required();
   cmd->add_flag("--gltf", options.gltf, "Write OUT/<scene>.glb")->required();
@@ -112,8 +113,9 @@ void add_export(CLI::App& cli, ExportOptions& options) {
 
 void add_explore(CLI::App& cli, ExploreOptions& options) {
   CLI::App* cmd = cli.add_subcommand(
-      "explore", "Write OUT/explorer.html: the physics in the browser, one file that opens from "
-                 "disk, with these scenes (docs/explorer.md)");
+      "explore",
+      "Write OUT/explorer.html: the physics in the browser, one file that opens from "
+      "disk, with these scenes (docs/explorer.md)");
   cmd->add_option("SCENE", options.scene_paths, "Scene files (TOML)")->required();
   cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--shell", options.shell,
@@ -161,8 +163,9 @@ void add_gallery(CLI::App& cli, GalleryOptions& options) {
   cmd->add_option("OUT_DIR", options.out_dir,
                   "Folder holding the rendered clips; the page goes there")
       ->required();
-  cmd->add_option("SCENES", options.scene_paths,
-                  "Scene files (TOML); the page orders them (paper figures first, see docs/outputs.md)")
+  cmd->add_option(
+         "SCENES", options.scene_paths,
+         "Scene files (TOML); the page orders them (paper figures first, see docs/outputs.md)")
       ->required();
   cmd->add_flag("--force", options.force,
                 "Write the page even when OUT_DIR/gallery-manifest.json says it is up to date");

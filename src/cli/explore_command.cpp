@@ -42,8 +42,8 @@ int explore_command(const ExploreOptions& options) {
   }
   output::prepare_output_dir(request.out_dir);
   const clip::ExplorerPageResult result = clip::write_explorer_page(request);
-  std::cout << "explorer: " << result.path.string() << " (" << request.scenes.size()
-            << " scenes, " << result.bytes << " bytes)" << std::endl;
+  std::cout << "explorer: " << result.path.string() << " (" << request.scenes.size() << " scenes, "
+            << result.bytes << " bytes)" << std::endl;
   return kExitOk;
 }
 

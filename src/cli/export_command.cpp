@@ -17,11 +17,12 @@ int export_command(const ExportOptions& options) {
       scene, options.out_dir,
       [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; });
   if (result.diverged_at) {
-    std::cerr << "bookspin: warning: " << scene.name << ": simulation diverged at t = "
-              << *result.diverged_at << "; the animation stops at the last finite frame\n";
+    std::cerr << "bookspin: warning: " << scene.name
+              << ": simulation diverged at t = " << *result.diverged_at
+              << "; the animation stops at the last finite frame\n";
   }
-  std::cout << "exported: " << result.path.string() << " (" << result.keyframes
-            << " keyframes, " << result.vertices << " vertices)" << std::endl;
+  std::cout << "exported: " << result.path.string() << " (" << result.keyframes << " keyframes, "
+            << result.vertices << " vertices)" << std::endl;
   return kExitOk;
 }
 

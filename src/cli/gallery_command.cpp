@@ -7,13 +7,13 @@
 #include <iostream>
 #include <thread>
 
+#include "cache/manifests.hpp"
 #include "cli/commands.hpp"
 #include "cli/gallery_page.hpp"
 #include "output/atomic_output.hpp"
-#include "output/output_dir.hpp"
 #include "output/manifest.hpp"
+#include "output/output_dir.hpp"
 #include "output/sha256.hpp"
-#include "cache/manifests.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::cli {
@@ -59,8 +59,7 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   if (exists(out, scene.name + ".webm")) e.webm = scene.name + ".webm";
   if (exists(out, scene.name + ".gif")) e.gif = scene.name + ".gif";
   if (exists(out, scene.name + ".glb")) e.glb = scene.name + ".glb";
-  if (exists(out, "explorer.html"))
-    e.explorer = "explorer.html?scene=" + scene.name;
+  if (exists(out, "explorer.html")) e.explorer = "explorer.html?scene=" + scene.name;
   e.video = e.mp4.empty() ? e.webm : e.mp4;
   e.poster = poster_for(out, scene.name);
   if (exists(out, scene.name + "-plot.png")) e.plot = scene.name + "-plot.png";

@@ -66,8 +66,7 @@ void write_entry(std::ostream& out, const GalleryEntry& e) {
   if (!e.webm.empty()) out << " · <a href=" << attr(e.webm) << ">WebM</a>";
   if (!e.gif.empty()) out << " · <a href=" << attr(e.gif) << ">GIF</a>";
   if (!e.glb.empty()) out << " · <a href=" << attr(e.glb) << ">glTF</a>";
-  if (!e.explorer.empty())
-    out << " · <a href=" << attr(e.explorer) << ">open in the explorer</a>";
+  if (!e.explorer.empty()) out << " · <a href=" << attr(e.explorer) << ">open in the explorer</a>";
   if (!e.sweep_csv.empty())
     out << " · <a href=" << attr(e.sweep_csv) << ">" << html_escape(e.sweep_csv) << "</a>";
   for (const auto& csv : e.csvs) {

@@ -8,14 +8,14 @@ namespace bookspin::cli {
 
 /// One clip on the page. Paths are relative to the page's folder; empty: not there.
 struct GalleryEntry {
-  std::string name;               ///< scene.name
-  std::string title;              ///< scene.title (plain text; escaped on the page)
-  std::string description;        ///< scene.description
-  std::string video;              ///< "<name>.mp4", or "<name>.webm" where there is no MP4
-  std::string mp4;                ///< "<name>.mp4" if rendered (linked)
-  std::string webm;               ///< "<name>.webm" if rendered (linked)
-  std::string gif;                ///< "<name>.gif" if rendered (linked)
-  std::string glb;                ///< "<name>.glb" from `bookspin export --gltf` (linked)
+  std::string name;         ///< scene.name
+  std::string title;        ///< scene.title (plain text; escaped on the page)
+  std::string description;  ///< scene.description
+  std::string video;        ///< "<name>.mp4", or "<name>.webm" where there is no MP4
+  std::string mp4;          ///< "<name>.mp4" if rendered (linked)
+  std::string webm;         ///< "<name>.webm" if rendered (linked)
+  std::string gif;          ///< "<name>.gif" if rendered (linked)
+  std::string glb;          ///< "<name>.glb" from `bookspin export --gltf` (linked)
   /// "explorer.html?scene=<name>" where OUT/explorer.html exists (web/build.sh) and the
   /// scene's body is not a mesh (the explorer holds the book and the presets); else empty.
   std::string explorer;

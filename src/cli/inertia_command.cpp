@@ -51,13 +51,11 @@ std::string json_matrix(const Eigen::Matrix3d& m, std::string_view field) {
 
 void print_json(const physics::MassProperties& p) {
   std::cout << "{\"volume\": " << exact(p.volume, "volume")
-            << ", \"mass\": " << exact(p.mass, "mass")
-            << ", \"center_of_mass\": " << json_vector(p.center_of_mass.transpose(), "center_of_mass")
-            << ", \"inertia\": " << json_matrix(p.I_body, "inertia")
-            << ", \"principal_moments\": "
+            << ", \"mass\": " << exact(p.mass, "mass") << ", \"center_of_mass\": "
+            << json_vector(p.center_of_mass.transpose(), "center_of_mass")
+            << ", \"inertia\": " << json_matrix(p.I_body, "inertia") << ", \"principal_moments\": "
             << json_vector(p.principal_moments.transpose(), "principal_moments")
-            << ", \"principal_axes\": " << json_matrix(p.principal_axes, "principal_axes")
-            << "}\n";
+            << ", \"principal_axes\": " << json_matrix(p.principal_axes, "principal_axes") << "}\n";
 }
 
 void print_text(const std::string& file, const physics::MassProperties& p) {

@@ -1,10 +1,10 @@
 // `bookspin plot`: the panel's curves over a whole run, as a PNG for papers and slides.
 #include <iostream>
 
-#include "cli/commands.hpp"
-#include "output/manifest.hpp"
 #include "cache/manifests.hpp"
 #include "charts/plot_sheet.hpp"
+#include "cli/commands.hpp"
+#include "output/manifest.hpp"
 
 namespace bookspin::cli {
 

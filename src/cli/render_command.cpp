@@ -3,14 +3,14 @@
 #include <iostream>
 #include <sstream>
 
+#include "cache/manifests.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
-#include "common/errors.hpp"
-#include "output/manifest.hpp"
 #include "clip/clip.hpp"
+#include "common/errors.hpp"
 #include "jobs/lattice_note.hpp"
-#include "cache/manifests.hpp"
+#include "output/manifest.hpp"
 #include "scene/canonical.hpp"
 
 namespace bookspin::cli {
@@ -97,8 +97,7 @@ cache::CacheOutcome run_cached(const cache::CachedJob& job, const std::string& n
   const cache::CacheOutcome outcome = cache::run_cached(job, [&name](const std::string& reason) {
     std::cerr << "bookspin: note: " << name << ": making it again: " << reason << '\n';
   });
-  if (outcome == cache::CacheOutcome::up_to_date)
-    std::cout << "up to date: " << name << std::endl;
+  if (outcome == cache::CacheOutcome::up_to_date) std::cout << "up to date: " << name << std::endl;
   return outcome;
 }
 
@@ -109,7 +108,9 @@ std::vector<std::string> parse_format_list(const std::string& list) {
     const std::size_t comma = std::min(list.find(',', start), list.size());
     std::string name = list.substr(start, comma - start);
     const auto first = name.find_first_not_of(" \t");
-    name = first == std::string::npos ? "" : name.substr(first, name.find_last_not_of(" \t") + 1 - first);
+    name = first == std::string::npos
+               ? ""
+               : name.substr(first, name.find_last_not_of(" \t") + 1 - first);
     formats.push_back(name);
     start = comma + 1;
   }

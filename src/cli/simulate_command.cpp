@@ -2,9 +2,9 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "output/atomic_output.hpp"
 #include "jobs/lattice_note.hpp"
 #include "jobs/simulation.hpp"
+#include "output/atomic_output.hpp"
 
 namespace bookspin::cli {
 

@@ -4,12 +4,12 @@
 #include <cstdlib>
 #include <optional>
 
+#include "cache/manifests.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "common/errors.hpp"
-#include "output/manifest.hpp"
-#include "cache/manifests.hpp"
 #include "jobs/sweep.hpp"
+#include "output/manifest.hpp"
 #include "scene/canonical.hpp"
 
 namespace bookspin::cli {

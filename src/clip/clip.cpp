@@ -2,11 +2,11 @@
 
 #include <deque>
 
-#include "output/output_dir.hpp"
-#include "clip/comparison.hpp"
 #include "charts/decoration.hpp"
+#include "clip/comparison.hpp"
 #include "clip/frame.hpp"
 #include "clip/render_settings.hpp"
+#include "output/output_dir.hpp"
 
 namespace bookspin::clip {
 
@@ -20,7 +20,7 @@ struct InFlight {
   std::optional<double> diverged_at;
   physics::Diagnostics diagnostics;
   physics::Corners corners;  ///< for the orientation (Poinsot's construction)
-  bool fresh = false;  ///< a newly simulated pose (else the held last finite one)
+  bool fresh = false;        ///< a newly simulated pose (else the held last finite one)
 };
 
 /// The display side of the loop: finishes frames in the order they were submitted.
@@ -75,8 +75,8 @@ ClipResult render_single(const ClipRequest& request) {
     advance(source, index, scene, frame);
     result.diverged_at = frame.diverged_at;
     renderer.submit(drawing.input_for(frame.pose));
-    finisher.expect({index, frame.t, frame.diverged_at, frame.pose.diagnostics,
-                     frame.pose.corners, frame.history.size() > samples});
+    finisher.expect({index, frame.t, frame.diverged_at, frame.pose.diagnostics, frame.pose.corners,
+                     frame.history.size() > samples});
     // While this frame is drawn and read back, the previous one is decorated and queued.
     if (auto spare = sinks.spare_frame()) renderer.recycle(std::move(*spare));
     if (auto image = renderer.collect()) finisher.finish(std::move(*image));

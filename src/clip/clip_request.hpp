@@ -16,8 +16,8 @@ struct ClipRequest {
   scene::Scene scene;             ///< validated; scene.frames is the clip's length
   std::filesystem::path out_dir;  ///< OUT: OUT/<name>.mp4, OUT/<name>/frames/, CSVs
   bool write_png = true;          ///< false: MP4 and CSV only
-  int png_compression = -1;       ///< deflate level 0–9 for the frames; −1: render.png_compression
-  int jobs = 0;                   ///< worker threads (PNG, encoder); 0: every core
+  int png_compression = -1;  ///< deflate level 0–9 for the frames; −1: render.png_compression
+  int jobs = 0;              ///< worker threads (PNG, encoder); 0: every core
   /// Called once before the first frame with a note for the user (the encoder fell back to
   /// libx264); may be empty.
   std::function<void(const std::string& note)> on_note;

@@ -4,8 +4,8 @@
 #include <optional>
 #include <vector>
 
-#include "common/rgba_image.hpp"
 #include "charts/panel.hpp"
+#include "common/rgba_image.hpp"
 
 namespace bookspin::clip {
 

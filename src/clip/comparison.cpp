@@ -7,14 +7,14 @@
 #include <optional>
 #include <tuple>
 
+#include "charts/decoration.hpp"
+#include "charts/sphere_view.hpp"
+#include "clip/compare_layout.hpp"
+#include "clip/frame.hpp"
+#include "clip/render_settings.hpp"
 #include "output/diagnostics_csv.hpp"
 #include "output/output_dir.hpp"
 #include "overlay/cairo_canvas.hpp"
-#include "clip/compare_layout.hpp"
-#include "charts/decoration.hpp"
-#include "clip/frame.hpp"
-#include "clip/render_settings.hpp"
-#include "charts/sphere_view.hpp"
 
 namespace bookspin::clip {
 
@@ -95,8 +95,7 @@ void decorate(RgbaImage& frame, const scene::Scene& scene, const CompareLayout& 
   }
   if (plots) {
     std::vector<charts::PanelRun> runs;
-    for (const auto& p : tiles)
-      runs.emplace_back(p->scene, p->frame.history, p->scene.title);
+    for (const auto& p : tiles) runs.emplace_back(p->scene, p->frame.history, p->scene.title);
     charts::draw_panel(frame, *plots, charts::panel_plots(runs, charts::clip_end_time(scene), t));
   }
   {
@@ -150,8 +149,7 @@ int render_loop(const ClipRequest& request, const CompareLayout& layout, render:
     }
     for (auto& p : tiles) advance(p->source, index, p->scene, p->frame);
     sinks.add(index, compose(scene, layout, renderer, tiles), row_of(tiles.front()->frame));
-    for (std::size_t i = 1; i < tiles.size(); ++i)
-      csvs[i - 1]->add(index, row_of(tiles[i]->frame));
+    for (std::size_t i = 1; i < tiles.size(); ++i) csvs[i - 1]->add(index, row_of(tiles[i]->frame));
     if (request.on_progress) request.on_progress(index + 1);
   }
   return 0;

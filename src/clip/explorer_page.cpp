@@ -28,9 +28,7 @@ void json_numbers(std::ostream& out, const Matrix& m, std::string_view what) {
   out << ']';
 }
 
-std::string number(double value, std::string_view what) {
-  return output::finite_text(value, what);
-}
+std::string number(double value, std::string_view what) { return output::finite_text(value, what); }
 
 void method(std::ostream& out, const physics::ModelConfig& m, const char* suffix) {
   out << "\"model" << suffix << "\":" << scene::json_string(std::string(physics::to_string(m.kind)))
@@ -66,10 +64,13 @@ std::string explorer_scene_json(const scene::Scene& s) {
       << ",\"description\":" << scene::json_string(s.description) << ",\"state\":{"
       << "\"body\":" << scene::json_string(std::string(physics::to_string(s.body.shape))) << ',';
   method(out, first, "");
-  out << ",\"damping\":" << (first.damping ? "true" : "false") << ",\"k\":" << number(first.spring_constant, "explorer page: model.spring_constant")
-      << ",\"cells\":" << first.lattice_cells << ",\"dt\":" << number(s.dt, "explorer page: time.dt") << ",\"axis\":\"custom\",\"w\":";
+  out << ",\"damping\":" << (first.damping ? "true" : "false")
+      << ",\"k\":" << number(first.spring_constant, "explorer page: model.spring_constant")
+      << ",\"cells\":" << first.lattice_cells
+      << ",\"dt\":" << number(s.dt, "explorer page: time.dt") << ",\"axis\":\"custom\",\"w\":";
   json_numbers(out, s.initial.omega0_body, "explorer page: initial.angular_velocity");
-  out << ",\"jiggle\":" << number(s.initial.jiggle, "explorer page: initial.jiggle") << ",\"seed\":" << s.initial.seed
+  out << ",\"jiggle\":" << number(s.initial.jiggle, "explorer page: initial.jiggle")
+      << ",\"seed\":" << s.initial.seed
       << ",\"speed\":" << number(s.dt * s.steps_per_frame * s.render.fps, "explorer page: speed")
       << ",\"showL\":" << (s.render.show_angular_momentum ? "true" : "false")
       << ",\"showAxes\":" << (s.render.show_body_axes ? "true" : "false");
@@ -121,8 +122,8 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
   for (int f = 0; f < 4; ++f) {
     const RgbaImage image = render::generate_face_image(static_cast<render::FaceImage>(f));
-    data << (f ? "," : "") << '"' << faces[f]
-         << "\":\"" << output::data_url("image/png", output::encode_png(image, 6)) << '"';
+    data << (f ? "," : "") << '"' << faces[f] << "\":\""
+         << output::data_url("image/png", output::encode_png(image, 6)) << '"';
   }
   data << "};</script>";
   page.replace(at, std::string(kExplorerDataMarker).size(), data.str());

@@ -23,8 +23,8 @@ inline constexpr const char* kExplorerDataMarker = "<!--BOOKSPIN_DATA-->";
 /// integrator, normalize, damping, k, cells, dt, axis "custom" with ω0 `w` (body frame,
 /// rad per time unit), jiggle, seed, speed in time units per second, the markers; a
 /// [[compare]] scene compares its first tile with its last), `book` (size, mass) and, for
-/// other bodies, `body`: the Body itself as simulate builds it (shape, mass, principal moments about
-/// x, y, z, cage size, volume, surface 3×V principal frame flattened column by column,
+/// other bodies, `body`: the Body itself as simulate builds it (shape, mass, principal moments
+/// about x, y, z, cage size, volume, surface 3×V principal frame flattened column by column,
 /// triangles 3×N, face colours 3×N, smooth), so that the page's physics starts from the
 /// same doubles (printed to 17 digits) and needs no mesh reader. No I/O.
 std::string explorer_scene_json(const scene::Scene& scene);

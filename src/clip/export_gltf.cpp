@@ -4,10 +4,10 @@
 #include <tuple>
 #include <utility>
 
+#include "analysis/frame_source.hpp"
 #include "common/errors.hpp"
 #include "output/diagnostics_csv.hpp"
 #include "output/gltf_writer.hpp"
-#include "analysis/frame_source.hpp"
 #include "render/book_faces.hpp"
 #include "render/book_mesh.hpp"
 #include "render/face_images.hpp"
@@ -22,7 +22,8 @@ std::vector<output::GltfPart> book_parts(const scene::Scene& scene) {
   const scene::RenderOptions& r = scene.render;
   render::FaceImages images =
       render::face_images(r.texture_front, r.texture_back, r.texture_spine, r.texture_pages);
-  const std::vector<render::BookVertex> mesh = render::build_book_mesh(scene.body.cage.body_corners());
+  const std::vector<render::BookVertex> mesh =
+      render::build_book_mesh(scene.body.cage.body_corners());
   static constexpr const char* kNames[4] = {"front cover", "back cover", "spine", "pages"};
   std::vector<output::GltfPart> parts;
   for (int image = 0; image < 4; ++image) {
@@ -38,7 +39,8 @@ std::vector<output::GltfPart> book_parts(const scene::Scene& scene) {
     int v = 0;
     for (const int f : faces) {
       for (int i = 0; i < render::vertices_per_face; ++i, ++v) {
-        const render::BookVertex& bv = mesh[static_cast<std::size_t>(f * render::vertices_per_face + i)];
+        const render::BookVertex& bv =
+            mesh[static_cast<std::size_t>(f * render::vertices_per_face + i)];
         part.positions.col(v) = Eigen::Vector3f(bv.position[0], bv.position[1], bv.position[2]);
         part.normals.col(v) = Eigen::Vector3f(bv.normal[0], bv.normal[1], bv.normal[2]);
         part.uvs.col(v) = Eigen::Vector2f(bv.uv[0], bv.uv[1]);
@@ -68,8 +70,8 @@ std::vector<output::GltfPart> surface_parts(const physics::Body& body) {
   const Eigen::Index n = body.triangles.cols();
   Eigen::Matrix3Xf colours = body.face_colours;
   if (colours.cols() != n) colours = Eigen::Matrix3Xf::Constant(3, n, 0.7f);
-  const Eigen::Matrix3Xf normals = body.smooth ? render::vertex_normals(body.vertices, body.triangles)
-                                               : Eigen::Matrix3Xf(3, 0);
+  const Eigen::Matrix3Xf normals =
+      body.smooth ? render::vertex_normals(body.vertices, body.triangles) : Eigen::Matrix3Xf(3, 0);
   std::map<std::tuple<float, float, float>, std::vector<Eigen::Index>> by_colour;
   for (Eigen::Index t = 0; t < n; ++t)
     by_colour[{colours(0, t), colours(1, t), colours(2, t)}].push_back(t);
@@ -132,7 +134,8 @@ GltfExportResult export_gltf(const scene::Scene& scene, const std::filesystem::p
     Eigen::Vector4d xyzw(wxyz[1], wxyz[2], wxyz[3], wxyz[0]);
     if (xyzw.dot(previous) < 0.0) xyzw = -xyzw;
     previous = xyzw;
-    animation.times.push_back(static_cast<float>(source.frame()) / static_cast<float>(scene.render.fps));
+    animation.times.push_back(static_cast<float>(source.frame()) /
+                              static_cast<float>(scene.render.fps));
     rotations.push_back(xyzw.cast<float>());
     translations.push_back(pose.diagnostics.center_of_mass.cast<float>());
   }

@@ -3,13 +3,14 @@
 #include <stdexcept>
 #include <string>
 
-#include "overlay/caption.hpp"
 #include "charts/decoration.hpp"
 #include "clip/render_settings.hpp"
+#include "overlay/caption.hpp"
 
 namespace bookspin::clip {
 
-void advance(analysis::FrameSource& source, int index, const scene::Scene& scene, ShownFrame& frame) {
+void advance(analysis::FrameSource& source, int index, const scene::Scene& scene,
+             ShownFrame& frame) {
   const bool fresh = source.next(frame.pose);
   frame.diverged_at = source.diverged_at();
   frame.t = fresh ? frame.pose.diagnostics.t : index * scene.steps_per_frame * scene.dt;

@@ -4,11 +4,11 @@
 // the render loop and the golden-image tests, so the goldens pin what the clips show.
 #include <optional>
 
+#include "analysis/frame_source.hpp"
+#include "charts/diagnostics_history.hpp"
+#include "clip/render_settings.hpp"
 #include "common/rgba_image.hpp"
 #include "physics/simulator.hpp"
-#include "charts/diagnostics_history.hpp"
-#include "analysis/frame_source.hpp"
-#include "clip/render_settings.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
@@ -17,14 +17,15 @@ namespace bookspin::clip {
 /// What one video frame shows: the pose, its time and whether the simulation has diverged.
 struct ShownFrame {
   physics::Pose pose;  ///< after a divergence: the last finite pose
-  double t = 0.0;          ///< frame time; after a divergence index × frame time, so it runs on
+  double t = 0.0;      ///< frame time; after a divergence index × frame time, so it runs on
   std::optional<double> diverged_at;
   charts::DiagnosticsHistory history;  ///< every simulated frame so far: the panel's curves
 };
 
 /// Moves `frame` to video frame `index` (call with 0, 1, 2, … in turn). After a divergence
 /// the last finite pose stays in `frame`, so the clip keeps its length.
-void advance(analysis::FrameSource& source, int index, const scene::Scene& scene, ShownFrame& frame);
+void advance(analysis::FrameSource& source, int index, const scene::Scene& scene,
+             ShownFrame& frame);
 
 /// Simulates from the start to video frame `index` (0 ≤ index < scene.frames, else
 /// std::out_of_range).

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "clip/body_drawing.hpp"
 #include "charts/panel.hpp"
-#include "charts/sphere_view.hpp"
 #include "charts/poinsot_view.hpp"
+#include "charts/sphere_view.hpp"
+#include "clip/body_drawing.hpp"
 
 namespace bookspin::clip {
 

@@ -3,13 +3,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "charts/accuracy_plots.hpp"
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
 #include "output/finite_number.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "overlay/plot.hpp"
-#include "charts/accuracy_plots.hpp"
 
 namespace bookspin::jobs {
 
@@ -32,9 +32,8 @@ std::string csv_line(const analysis::AccuracyRow& r) {
          std::string(physics::to_string(r.method.integrator)) + "," + cell("%.17g", r.dt, "dt") +
          "," + std::to_string(r.steps) + "," + cell("%.17g", r.t_end, "t_end") + "," +
          cell("%.6e", r.orientation_error, "orientation_error_rad", r.diverged) + "," +
-         cell("%.6e", r.energy_drift, "energy_drift") + "," +
-         cell("%.6e", r.L_drift, "L_drift") + "," +
-         cell("%.17g", r.flip_period, "flip_period", no_flips) + "," +
+         cell("%.6e", r.energy_drift, "energy_drift") + "," + cell("%.6e", r.L_drift, "L_drift") +
+         "," + cell("%.17g", r.flip_period, "flip_period", no_flips) + "," +
          cell("%.6e", r.flip_period_error, "flip_period_error", no_flips) + "," +
          cell("%.2f", r.ns_per_step, "ns_per_step") + "," + (r.diverged ? "1" : "0");
 }

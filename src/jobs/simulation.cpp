@@ -1,7 +1,7 @@
 #include "jobs/simulation.hpp"
 
-#include "output/diagnostics_csv.hpp"
 #include "analysis/frame_source.hpp"
+#include "output/diagnostics_csv.hpp"
 
 namespace bookspin::jobs {
 

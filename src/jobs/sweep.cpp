@@ -15,13 +15,13 @@
 #include <sstream>
 #include <thread>
 
+#include "charts/panel.hpp"
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
 #include "output/finite_number.hpp"
+#include "output/manifest.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
-#include "charts/panel.hpp"
-#include "output/manifest.hpp"
 #include "output/sha256.hpp"
 #include "scene/canonical.hpp"
 
@@ -74,7 +74,8 @@ std::string join(const std::vector<std::string>& cells, const std::string& first
 /// sweep. scene_sha256 is the SHA-256 of the resolved scene in canonical form (after --set
 /// and defaults, before the grid's values: scene::canonical_json, as in the manifests), build
 /// the SHA-256 of the bookspin that ran it (program_build_id).
-std::string shard_meta(const SweepTable& table, std::size_t points, const std::string& scene_sha256) {
+std::string shard_meta(const SweepTable& table, std::size_t points,
+                       const std::string& scene_sha256) {
   std::string meta = "scene=" + table.scene_name + " scene_sha256=" + scene_sha256 +
                      " build=" + output::program_build_id() + " points=" + std::to_string(points);
   for (const auto& r : table.ranges) meta += " vary=" + r.key + "=" + r.spec();
@@ -116,7 +117,8 @@ std::vector<std::filesystem::path> write_full_outputs(const SweepTable& table,
   }
   const auto plots = sweep_plots(table);
   const int height = 120 + kPlotHeightPerMeasure * static_cast<int>(plots.size());
-  output::write_png(png, charts::plot_sheet(plot_header(table), plots, kPlotWidth, height + height % 2));
+  output::write_png(png,
+                    charts::plot_sheet(plot_header(table), plots, kPlotWidth, height + height % 2));
   return {csv, png};
 }
 
@@ -335,12 +337,18 @@ ShardLine parse_shard_line(const std::string& meta) {
   std::istringstream words(meta);
   for (std::string word; words >> word;) {
     const auto value = [&](const char* key) { return word.substr(std::strlen(key)); };
-    if (word.rfind("scene=", 0) == 0) line.scene = value("scene=");
-    else if (word.rfind("scene_sha256=", 0) == 0) line.scene_sha256 = value("scene_sha256=");
-    else if (word.rfind("build=", 0) == 0) line.build = value("build=");
-    else if (word.rfind("points=", 0) == 0) line.points = value("points=");
-    else if (word.rfind("vary=", 0) == 0) line.vary.push_back(value("vary="));
-    else if (word.rfind("measure=", 0) == 0) line.measure = value("measure=");
+    if (word.rfind("scene=", 0) == 0)
+      line.scene = value("scene=");
+    else if (word.rfind("scene_sha256=", 0) == 0)
+      line.scene_sha256 = value("scene_sha256=");
+    else if (word.rfind("build=", 0) == 0)
+      line.build = value("build=");
+    else if (word.rfind("points=", 0) == 0)
+      line.points = value("points=");
+    else if (word.rfind("vary=", 0) == 0)
+      line.vary.push_back(value("vary="));
+    else if (word.rfind("measure=", 0) == 0)
+      line.measure = value("measure=");
   }
   return line;
 }
@@ -402,7 +410,8 @@ std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem
       first_line = line;
       shard_count = n;
       if (line.scene_sha256.empty() || line.build.empty())
-        throw InputError(name + ":1: the shard line records no scene_sha256 or build (made by "
+        throw InputError(name +
+                         ":1: the shard line records no scene_sha256 or build (made by "
                          "an older bookspin: run the shards again)");
       std::vector<VaryRange> ranges;
       for (const auto& v : line.vary) ranges.push_back(parse_vary(v));
@@ -419,8 +428,7 @@ std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem
                        ": " + why);
     } else if (n != shard_count) {
       throw InputError(name + ":1: a shard of another sweep than " + shards.front().string() +
-                       ": of " + std::to_string(n) + " shards, not " +
-                       std::to_string(shard_count));
+                       ": of " + std::to_string(n) + " shards, not " + std::to_string(shard_count));
     }
     if (!shard_files.emplace(k, path).second) {
       throw InputError(name + ": shard " + std::to_string(k) + " of " + std::to_string(n) +

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "analysis/measures.hpp"
+#include "jobs/sweep_grid.hpp"
 #include "overlay/plot.hpp"
 #include "physics/simulator.hpp"
-#include "jobs/sweep_grid.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {

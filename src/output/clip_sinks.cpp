@@ -26,8 +26,7 @@ std::filesystem::path make_parent(const std::filesystem::path& file) {
 }
 
 bool wants(const SinkOptions& options, const char* format) {
-  return std::find(options.formats.begin(), options.formats.end(), format) !=
-         options.formats.end();
+  return std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end();
 }
 
 }  // namespace

@@ -1,15 +1,15 @@
 #pragma once
 // The sinks of one clip, fed frame by frame: each video (MP4, WebM, GIF) on its own encoder
-// thread, PNG frames on a small worker pool, the diagnostics CSV on the caller's thread. Every output is written under a
-// temporary name and appears under its final name only in finish().
+// thread, PNG frames on a small worker pool, the diagnostics CSV on the caller's thread. Every
+// output is written under a temporary name and appears under its final name only in finish().
 #include <exception>
-#include <functional>
-#include <string>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -37,9 +37,9 @@ struct SinkOptions {
   /// Videos to write, each of "mp4", "webm", "gif" at most once (scene::kVideoFormats);
   /// every one gets the same frames.
   std::vector<std::string> formats{"mp4"};
-  int webm_crf = 32;   ///< WebmSettings::crf
-  int gif_width = 640; ///< GifSettings::width
-  int gif_fps = 15;    ///< GifSettings::gif_fps
+  int webm_crf = 32;    ///< WebmSettings::crf
+  int gif_width = 640;  ///< GifSettings::width
+  int gif_fps = 15;     ///< GifSettings::gif_fps
 };
 
 /// The path of video `format` ("mp4", "webm", "gif") of a clip whose MP4 is `mp4`.

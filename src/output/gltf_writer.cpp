@@ -43,7 +43,8 @@ class BufferBuilder {
   int floats(const Matrix& m, int type, int target, bool with_bounds) {
     const Eigen::MatrixXf packed = m.template cast<float>();  // column-major: one element a column
     tinygltf::Accessor a;
-    a.bufferView = view(packed.data(), sizeof(float) * static_cast<std::size_t>(packed.size()), target);
+    a.bufferView =
+        view(packed.data(), sizeof(float) * static_cast<std::size_t>(packed.size()), target);
     a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
     a.count = static_cast<std::size_t>(packed.cols());
     a.type = type;
@@ -77,12 +78,14 @@ void validate(const std::vector<GltfPart>& parts, const GltfAnimation& animation
     const auto v = p.positions.cols();
     if (v == 0 || p.indices.empty() || p.indices.size() % 3 != 0)
       throw std::invalid_argument("write_glb: part '" + p.name + "' has no triangles");
-    if ((p.normals.cols() != 0 && p.normals.cols() != v) || (p.uvs.cols() != 0 && p.uvs.cols() != v))
+    if ((p.normals.cols() != 0 && p.normals.cols() != v) ||
+        (p.uvs.cols() != 0 && p.uvs.cols() != v))
       throw std::invalid_argument("write_glb: part '" + p.name + "': attribute sizes differ");
     if (!p.positions.allFinite() || !p.normals.allFinite() || !p.uvs.allFinite())
       throw std::invalid_argument("write_glb: part '" + p.name + "' is not finite");
     for (const std::uint32_t i : p.indices)
-      if (i >= v) throw std::invalid_argument("write_glb: part '" + p.name + "': index out of range");
+      if (i >= v)
+        throw std::invalid_argument("write_glb: part '" + p.name + "': index out of range");
     if (p.texture.width > 0 && p.uvs.cols() == 0)
       throw std::invalid_argument("write_glb: part '" + p.name + "' has a texture but no uvs");
   }
@@ -174,13 +177,13 @@ void write_glb(const std::filesystem::path& path, const std::string& name,
 
   tinygltf::Animation motion;
   motion.name = name;
-  const Eigen::Map<const Eigen::RowVectorXf> times(animation.times.data(),
-                                                   static_cast<Eigen::Index>(animation.times.size()));
+  const Eigen::Map<const Eigen::RowVectorXf> times(
+      animation.times.data(), static_cast<Eigen::Index>(animation.times.size()));
   const int input = buffers.floats(times, TINYGLTF_TYPE_SCALAR, 0, true);  // min/max required
   const int rotations = buffers.floats(animation.rotations, TINYGLTF_TYPE_VEC4, 0, false);
   const int translations = buffers.floats(animation.translations, TINYGLTF_TYPE_VEC3, 0, false);
-  for (const auto& [output, target] : {std::pair{rotations, "rotation"},
-                                       std::pair{translations, "translation"}}) {
+  for (const auto& [output, target] :
+       {std::pair{rotations, "rotation"}, std::pair{translations, "translation"}}) {
     tinygltf::AnimationSampler sampler;
     sampler.input = input;
     sampler.output = output;

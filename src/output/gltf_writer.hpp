@@ -16,9 +16,9 @@ namespace bookspin::output {
 /// calls them metres).
 struct GltfPart {
   std::string name;
-  Eigen::Matrix3Xf positions;  ///< 3×V, body frame
-  Eigen::Matrix3Xf normals;    ///< 3×V unit, body frame; or 3×0 (viewers then shade flat)
-  Eigen::Matrix2Xf uvs;        ///< 2×V, u right, v down (0 = the image's top row); or 2×0
+  Eigen::Matrix3Xf positions;          ///< 3×V, body frame
+  Eigen::Matrix3Xf normals;            ///< 3×V unit, body frame; or 3×0 (viewers then shade flat)
+  Eigen::Matrix2Xf uvs;                ///< 2×V, u right, v down (0 = the image's top row); or 2×0
   std::vector<std::uint32_t> indices;  ///< 3 per triangle, counter-clockwise from outside
   Eigen::Vector3f colour{0.8f, 0.8f, 0.8f};  ///< linear RGB base colour in [0, 1]
   RgbaImage texture;  ///< base colour image (needs uvs); empty (0×0): the colour alone
@@ -28,9 +28,9 @@ struct GltfPart {
 /// rotation rotations.col(k) (unit quaternion x, y, z, w as glTF stores it, body→world) and
 /// translation translations.col(k) (world); linear interpolation (glTF's slerp for rotations).
 struct GltfAnimation {
-  std::vector<float> times;           ///< K ≥ 1
-  Eigen::Matrix4Xf rotations;         ///< 4×K, (x, y, z, w)
-  Eigen::Matrix3Xf translations;      ///< 3×K
+  std::vector<float> times;       ///< K ≥ 1
+  Eigen::Matrix4Xf rotations;     ///< 4×K, (x, y, z, w)
+  Eigen::Matrix3Xf translations;  ///< 3×K
 };
 
 /// Writes `path` (.glb): one scene, one node named `name` holding one mesh of `parts` (one

@@ -26,10 +26,10 @@ namespace bookspin::output {
 /// mapped onto libdeflate's 0…12: 0…8 unchanged (libdeflate's scale follows zlib's there), 9 →
 /// 12 (libdeflate's smallest). Levels 0…3 leave every row unfiltered (filter type 0; on the
 /// clips' frames, a dithered gradient behind the book, adaptive filtering made zlib's fast
-/// levels slower and the files larger); levels 4…9 choose each row's filter by the minimum sum of absolute
-/// differences (§12.8 of the specification). Throws std::invalid_argument for an empty image, a
-/// pixel buffer whose size is not width·height·4, or a level outside 0…9; std::bad_alloc when
-/// memory runs out.
+/// levels slower and the files larger); levels 4…9 choose each row's filter by the minimum sum of
+/// absolute differences (§12.8 of the specification). Throws std::invalid_argument for an empty
+/// image, a pixel buffer whose size is not width·height·4, or a level outside 0…9; std::bad_alloc
+/// when memory runs out.
 std::vector<std::uint8_t> encode_png(const RgbaImage& image, int compression_level = 1);
 
 /// Writes encode_png(image, compression_level) to `path`. The file is written under a temporary

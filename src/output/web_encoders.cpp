@@ -50,7 +50,8 @@ struct StreamFile {
   std::int64_t frames = 0;
   bool closed = false;
 
-  StreamFile(const char* label_, std::filesystem::path path) : label(label_), output(std::move(path)) {}
+  StreamFile(const char* label_, std::filesystem::path path)
+      : label(label_), output(std::move(path)) {}
 
   [[noreturn]] void throw_io(const std::string& action, int rc) const {
     throw_output_error(action, output.final_path(), libav::error_text(rc));
@@ -108,8 +109,8 @@ struct StreamFile {
   void encode(const AVFrame* frame) {
     int rc = avcodec_send_frame(codec.get(), frame);
     if (rc < 0) {
-      throw EncoderError(std::string(codec->codec->name) + " rejected a frame: " +
-                         libav::error_text(rc));
+      throw EncoderError(std::string(codec->codec->name) +
+                         " rejected a frame: " + libav::error_text(rc));
     }
     if (frame != nullptr) ++frames;
     for (;;) {
@@ -131,7 +132,8 @@ struct StreamFile {
     if (closed) throw std::logic_error(std::string(label) + " finish called twice");
     closed = true;
     if (frames == 0)
-      throw EncoderError(std::string(label) + " \"" + output.final_path().string() + "\" has no frames");
+      throw EncoderError(std::string(label) + " \"" + output.final_path().string() +
+                         "\" has no frames");
     encode(nullptr);
     int rc = av_write_trailer(format.get());
     if (rc < 0) throw_io(std::string("cannot finish ") + label, rc);
@@ -161,7 +163,8 @@ struct WebmEncoder::Impl {
   StreamFile file;
   libav::SwsPtr scaler;
   libav::FramePtr frame;
-  Impl(std::filesystem::path path, const WebmSettings& s) : settings(s), file("WebM", std::move(path)) {}
+  Impl(std::filesystem::path path, const WebmSettings& s)
+      : settings(s), file("WebM", std::move(path)) {}
 };
 
 WebmEncoder::WebmEncoder(std::filesystem::path path, const WebmSettings& s) {
@@ -247,7 +250,8 @@ struct GifEncoder::Impl {
   AVFilterContext* source = nullptr;  // owned by `graph`
   AVFilterContext* sink = nullptr;
   libav::FramePtr filtered;
-  Impl(std::filesystem::path path, const GifSettings& s) : settings(s), file("GIF", std::move(path)) {}
+  Impl(std::filesystem::path path, const GifSettings& s)
+      : settings(s), file("GIF", std::move(path)) {}
 
   void build_graph();
   /// Encodes every frame the graph has ready; at the end (`eof`) until it has none left.
@@ -258,12 +262,12 @@ void GifEncoder::Impl::build_graph() {
   graph.reset(avfilter_graph_alloc());
   if (!graph) throw EncoderError("out of memory allocating the GIF filter graph");
   graph->nb_threads = 1;
-  const std::string args = "video_size=" + size_text(settings.source_width, settings.source_height) +
-                           ":pix_fmt=" + std::to_string(AV_PIX_FMT_RGBA) + ":time_base=" +
-                           std::to_string(step) + "/" + std::to_string(settings.fps) +
-                           ":pixel_aspect=1/1";
-  int rc = avfilter_graph_create_filter(&source, avfilter_get_by_name("buffer"), "in",
-                                        args.c_str(), nullptr, graph.get());
+  const std::string args =
+      "video_size=" + size_text(settings.source_width, settings.source_height) +
+      ":pix_fmt=" + std::to_string(AV_PIX_FMT_RGBA) + ":time_base=" + std::to_string(step) + "/" +
+      std::to_string(settings.fps) + ":pixel_aspect=1/1";
+  int rc = avfilter_graph_create_filter(&source, avfilter_get_by_name("buffer"), "in", args.c_str(),
+                                        nullptr, graph.get());
   if (rc < 0) throw EncoderError("GIF filter source: " + libav::error_text(rc));
   rc = avfilter_graph_create_filter(&sink, avfilter_get_by_name("buffersink"), "out", nullptr,
                                     nullptr, graph.get());
@@ -271,10 +275,10 @@ void GifEncoder::Impl::build_graph() {
   // One palette for the whole clip (palettegen over every frame), applied with a small
   // ordered dither: ordered patterns stay put from frame to frame, so LZW and the frame
   // differences (diff_mode=rectangle) keep the file small.
-  const std::string description =
-      "scale=" + std::to_string(settings.width) + ":" + std::to_string(height) +
-      ":flags=lanczos,split[a][b];[a]palettegen=stats_mode=full[p];"
-      "[b][p]paletteuse=dither=bayer:bayer_scale=4:diff_mode=rectangle";
+  const std::string description = "scale=" + std::to_string(settings.width) + ":" +
+                                  std::to_string(height) +
+                                  ":flags=lanczos,split[a][b];[a]palettegen=stats_mode=full[p];"
+                                  "[b][p]paletteuse=dither=bayer:bayer_scale=4:diff_mode=rectangle";
   AVFilterInOut* outputs = avfilter_inout_alloc();
   AVFilterInOut* inputs = avfilter_inout_alloc();
   if (outputs == nullptr || inputs == nullptr) {
@@ -293,8 +297,8 @@ void GifEncoder::Impl::build_graph() {
     avfilter_inout_free(&outputs);
     avfilter_inout_free(&inputs);
     if (rc < 0) {
-      throw EncoderError("GIF palette filters (palettegen, paletteuse): " + capture.text() +
-                         " (" + libav::error_text(rc) + ")");
+      throw EncoderError("GIF palette filters (palettegen, paletteuse): " + capture.text() + " (" +
+                         libav::error_text(rc) + ")");
     }
   }
 }

@@ -13,11 +13,11 @@ namespace bookspin::output {
 /// A WebM clip: one VP9 stream (libvpx-vp9), yuv420p BT.709 limited range, constant frame
 /// rate fps/1, at the frames' own size.
 struct WebmSettings {
-  int width = 0;   ///< pixels, even
-  int height = 0;  ///< pixels, even
-  int fps = 30;    ///< frames per second, 1…1000
-  int crf = 32;    ///< VP9 constant quality, 0 (best) … 63
-  int threads = 0; ///< encoder threads; 0 = one per core
+  int width = 0;    ///< pixels, even
+  int height = 0;   ///< pixels, even
+  int fps = 30;     ///< frames per second, 1…1000
+  int crf = 32;     ///< VP9 constant quality, 0 (best) … 63
+  int threads = 0;  ///< encoder threads; 0 = one per core
 };
 
 /// A GIF clip with one global 256-colour palette computed over the whole clip (FFmpeg's
@@ -25,11 +25,11 @@ struct WebmSettings {
 /// Every `step`-th frame is kept (step = max(1, round(fps / gif_fps))), so the GIF plays at
 /// fps/step frames per second for the clip's own duration; it loops forever.
 struct GifSettings {
-  int source_width = 0;   ///< pixels of the frames handed to add_frame
+  int source_width = 0;  ///< pixels of the frames handed to add_frame
   int source_height = 0;
-  int fps = 30;           ///< frame rate of the frames handed to add_frame, 1…1000
-  int width = 640;        ///< GIF width in pixels, 16 … source_width
-  int gif_fps = 15;       ///< target GIF frame rate, 1 … fps
+  int fps = 30;      ///< frame rate of the frames handed to add_frame, 1…1000
+  int width = 640;   ///< GIF width in pixels, 16 … source_width
+  int gif_fps = 15;  ///< target GIF frame rate, 1 … fps
 };
 
 /// The GIF's height for `settings`: the source aspect kept, rounded to an even number.

@@ -49,16 +49,18 @@ Eigen::Vector2d project(const View& v, const Eigen::Vector3d& p) {
 void path_of(cairo_t* cr, const View& v, const std::vector<Eigen::Vector3d>& points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector2d s = project(v, points[i]);
-    if (i == 0) cairo_move_to(cr, s.x(), s.y());
-    else cairo_line_to(cr, s.x(), s.y());
+    if (i == 0)
+      cairo_move_to(cr, s.x(), s.y());
+    else
+      cairo_line_to(cr, s.x(), s.y());
   }
 }
 
 /// Strokes a curve on the ellipsoid: segments whose surface normal faces the viewer solid,
 /// the others faint and dashed.
 void stroke_on_ellipsoid(cairo_t* cr, const View& v, const Eigen::Matrix3d& inverse_axes,
-                         const std::vector<Eigen::Vector3d>& points, double r, double g,
-                         double b, double width) {
+                         const std::vector<Eigen::Vector3d>& points, double r, double g, double b,
+                         double width) {
   // At x = axes·s (s on the unit sphere) the outward normal is along axes⁻ᵀ s.
   const Eigen::Vector3d facing = inverse_axes * v.towards;
   for (const bool near : {false, true}) {
@@ -81,8 +83,7 @@ void stroke_on_ellipsoid(cairo_t* cr, const View& v, const Eigen::Matrix3d& inve
   }
 }
 
-void label(cairo_t* cr, const std::string& text, double x, double y, double r, double g,
-           double b) {
+void label(cairo_t* cr, const std::string& text, double x, double y, double r, double g, double b) {
   cairo_set_source_rgb(cr, r, g, b);
   cairo_move_to(cr, x, y);
   cairo_show_text(cr, text.c_str());
@@ -98,13 +99,13 @@ Eigen::Vector2d poinsot_to_inset(const PoinsotSpec& spec, const PixelRect& rect,
 void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& spec) {
   if (!spec.normal.allFinite() || !(spec.normal.norm() > 0) || !spec.semi_axes.allFinite() ||
       !spec.contact.allFinite() || !std::isfinite(spec.plane_distance) ||
-      !(spec.plane_distance > 0) || !std::isfinite(spec.plane_radius) ||
-      !(spec.plane_radius > 0) || std::abs(spec.semi_axes.determinant()) == 0)
+      !(spec.plane_distance > 0) || !std::isfinite(spec.plane_radius) || !(spec.plane_radius > 0) ||
+      std::abs(spec.semi_axes.determinant()) == 0)
     throw std::invalid_argument("draw_poinsot: the construction must be finite and not degenerate");
   if (rect.width < 16 || rect.height < 16) return;
-  CairoCanvas canvas(image.width, image.height,
-                     region_around(rect.x, rect.y, rect.width, rect.height, 1.0, image.width,
-                                   image.height));
+  CairoCanvas canvas(
+      image.width, image.height,
+      region_around(rect.x, rect.y, rect.width, rect.height, 1.0, image.width, image.height));
   cairo_t* cr = canvas.cr();
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
@@ -118,8 +119,7 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
   const double unit = rect.height / 150.0;
   const double font = font_for(rect);
   const Eigen::Vector3d n = spec.normal.normalized();
-  const Eigen::Vector3d e1 = (spec.across - spec.across.dot(n) * n).normalized(),
-                        e2 = n.cross(e1);
+  const Eigen::Vector3d e1 = (spec.across - spec.across.dot(n) * n).normalized(), e2 = n.cross(e1);
   const Eigen::Vector3d foot = spec.plane_distance * n;
 
   // The invariable plane: a disc about the foot of the normal, seen from below.
@@ -160,8 +160,10 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
     const double a = 2 * kPi * i / 120;
     const Eigen::Vector2d s = root * Eigen::Vector2d(std::cos(a), std::sin(a));
     const double x = v.cx + v.scale * s.x(), y = v.cy - v.scale * s.y();
-    if (i == 0) cairo_move_to(cr, x, y);
-    else cairo_line_to(cr, x, y);
+    if (i == 0)
+      cairo_move_to(cr, x, y);
+    else
+      cairo_line_to(cr, x, y);
   }
   cairo_close_path(cr);
   cairo_set_source_rgba(cr, 0.96, 0.78, 0.52, 0.55);

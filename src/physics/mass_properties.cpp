@@ -264,8 +264,9 @@ MassPropertiesResult mass_properties(const Eigen::Matrix3Xd& vertices,
         m.turn_around();
         turned[static_cast<std::size_t>(k)] = true;
         result.properties.warnings.push_back(
-            shell_name(k, shells) + " is wound inward (negative volume) and lies inside no "
-                                    "other shell; turned around");
+            shell_name(k, shells) +
+            " is wound inward (negative volume) and lies inside no "
+            "other shell; turned around");
       }
     }
     total.add(m);
@@ -313,8 +314,7 @@ MassProperties with_mass(MassProperties p, double mass) {
 
 bool all_finite(const MassProperties& p) {
   return std::isfinite(p.volume) && std::isfinite(p.mass) && p.center_of_mass.allFinite() &&
-         p.I_body.allFinite() && p.principal_moments.allFinite() &&
-         p.principal_axes.allFinite();
+         p.I_body.allFinite() && p.principal_moments.allFinite() && p.principal_axes.allFinite();
 }
 
 std::string range_error(const MassProperties& p) {

@@ -56,8 +56,8 @@ inline constexpr double kMaxExtent = 1e50;
 /// (negative signed volume) inside a shell wound outward is a cavity and subtracts; one wound
 /// inward inside no other shell is turned around with a warning. Triangles that repeat a
 /// vertex enclose nothing and are skipped with a warning. A result beyond the double range
-/// is the error kOverflow, never NaN or infinity. Divergence theorem over signed tetrahedra (Tonon 2004; Eberly,
-/// "Polyhedral Mass Properties (Revisited)"); docs/physics.md §11.
+/// is the error kOverflow, never NaN or infinity. Divergence theorem over signed tetrahedra (Tonon
+/// 2004; Eberly, "Polyhedral Mass Properties (Revisited)"); docs/physics.md §11.
 MassPropertiesResult mass_properties(const Eigen::Matrix3Xd& vertices,
                                      const Eigen::Matrix3Xi& triangles, double density = 1.0);
 

@@ -82,8 +82,7 @@ HerpolhodeBounds herpolhode_bounds(const Eigen::Vector3d& moments, double L_norm
 }
 
 std::vector<Eigen::Vector3d> polhode_on_ellipsoid(const Eigen::Vector3d& moments,
-                                                  const Eigen::Vector3d& u_in,
-                                                  double max_step) {
+                                                  const Eigen::Vector3d& u_in, double max_step) {
   check_moments(moments);
   if (!u_in.allFinite() || !(u_in.norm() > 0) || !(max_step > 0))
     throw std::invalid_argument("polhode_on_ellipsoid: u must be finite and not zero");

@@ -13,12 +13,12 @@ namespace bookspin::physics {
 
 /// The construction at one instant, world frame.
 struct PoinsotState {
-  Eigen::Vector3d normal;      ///< L/|L| (unit), the invariable plane's normal
-  double plane_distance = 0;   ///< √(2E)/|L|, length/√(mass·length²) = 1/√(mass)
-  Eigen::Vector3d contact;     ///< ρ = R ω_body/√(2E), on the plane and on the ellipsoid
-  Eigen::Matrix3d rotation;    ///< R, body → world (the ellipsoid's axes are its columns)
-  Eigen::Vector3d semi_axes;   ///< 1/√I_i of the inertia ellipsoid, body axes x, y, z
-  double energy = 0;           ///< E = ½ Σ L_i²/I_i (L_i body components)
+  Eigen::Vector3d normal;     ///< L/|L| (unit), the invariable plane's normal
+  double plane_distance = 0;  ///< √(2E)/|L|, length/√(mass·length²) = 1/√(mass)
+  Eigen::Vector3d contact;    ///< ρ = R ω_body/√(2E), on the plane and on the ellipsoid
+  Eigen::Matrix3d rotation;   ///< R, body → world (the ellipsoid's axes are its columns)
+  Eigen::Vector3d semi_axes;  ///< 1/√I_i of the inertia ellipsoid, body axes x, y, z
+  double energy = 0;          ///< E = ½ Σ L_i²/I_i (L_i body components)
 };
 
 /// The construction for principal moments `moments` (body, mass·length², > 0), orientation
@@ -50,8 +50,7 @@ HerpolhodeBounds herpolhode_bounds(const Eigen::Vector3d& moments, double L_norm
 /// momentum sphere through u (3×N body-frame points, closed: last = first; one point for a
 /// steady spin). Same sampling as polhode_family (chord ≤ max_step on the sphere).
 std::vector<Eigen::Vector3d> polhode_on_ellipsoid(const Eigen::Vector3d& moments,
-                                                  const Eigen::Vector3d& u,
-                                                  double max_step = 0.02);
+                                                  const Eigen::Vector3d& u, double max_step = 0.02);
 
 /// The body → world rotation of a rigidly moved box from its 8 corners (3×8, numbering of
 /// docs/physics.md §1: corner p at −size/2 + size·bit(p, d) on body axis d): column d is the

@@ -24,11 +24,10 @@ void refine(const std::function<Eigen::Vector3d(double)>& curve, double a, doubl
   out.push_back(pb);
 }
 
-
 }  // namespace
 
-std::vector<Eigen::Vector3d> sample_closed_curve(const std::function<Eigen::Vector3d(double)>& curve,
-                                           double max_step) {
+std::vector<Eigen::Vector3d> sample_closed_curve(
+    const std::function<Eigen::Vector3d(double)>& curve, double max_step) {
   constexpr int kStart = 64;
   constexpr double kTwoPi = 6.283185307179586;
   std::vector<Eigen::Vector3d> points{curve(0.0)};

@@ -53,7 +53,7 @@ Eigen::Vector3d momentum_direction_body(const Diagnostics& d);
 /// (the last point is curve(0)): 64 equal intervals of φ, each halved while its chord is
 /// longer than `max_step` (depth-limited: 2^20 points per interval at most). Used for the
 /// polhodes on the sphere and on the inertia ellipsoid (docs/physics.md §15, §16).
-std::vector<Eigen::Vector3d> sample_closed_curve(const std::function<Eigen::Vector3d(double)>& curve,
-                                                 double max_step);
+std::vector<Eigen::Vector3d> sample_closed_curve(
+    const std::function<Eigen::Vector3d(double)>& curve, double max_step);
 
 }  // namespace bookspin::physics

@@ -27,9 +27,10 @@ Eigen::Vector3d safe_unit(const Eigen::Vector3d& v) {
 }
 
 BookVertex make_vertex(const Eigen::Vector3d& p, const Eigen::Vector3d& n, float u, float v) {
-  return BookVertex{{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())},
-                    {static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())},
-                    {u, v}};
+  return BookVertex{
+      {static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())},
+      {static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())},
+      {u, v}};
 }
 
 void append_face(const Eigen::Matrix<double, 3, 8>& corners, int face_index,

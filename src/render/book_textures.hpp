@@ -3,8 +3,8 @@
 #include <array>
 
 #include "render/book_faces.hpp"
-#include "render/gl_util.hpp"
 #include "render/face_images.hpp"
+#include "render/gl_util.hpp"
 
 namespace bookspin::render {
 

@@ -37,8 +37,8 @@ Camera default_camera(double bounding_radius, int width, int height) {
     throw RenderError("default_camera: bounding radius must be finite and > 0, got " +
                       std::to_string(bounding_radius));
   if (width <= 0 || height <= 0)
-    throw RenderError("default_camera: image size must be positive, got " +
-                      std::to_string(width) + "x" + std::to_string(height));
+    throw RenderError("default_camera: image size must be positive, got " + std::to_string(width) +
+                      "x" + std::to_string(height));
   Camera camera;
   const double half_y = half_fov_y_rad(camera);
   const double aspect = static_cast<double>(width) / height;

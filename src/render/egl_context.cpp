@@ -40,8 +40,8 @@ std::optional<int> requested_device() {
   char* end = nullptr;
   const long value = std::strtol(text, &end, 10);
   if (*end != '\0' || value < 0 || value > 1000)
-    throw RenderError(std::string("BOOKSPIN_EGL_DEVICE must be a device index >= 0, got '") +
-                      text + "'");
+    throw RenderError(std::string("BOOKSPIN_EGL_DEVICE must be a device index >= 0, got '") + text +
+                      "'");
   return static_cast<int>(value);
 }
 
@@ -76,9 +76,11 @@ std::vector<int> device_order(const std::vector<EGLDeviceEXT>& devices) {
 }
 
 std::string describe_device(EGLDeviceEXT device, int index) {
-  std::string text = "device " + std::to_string(index) + (is_software(device) ? " (software" : " (hardware");
+  std::string text =
+      "device " + std::to_string(index) + (is_software(device) ? " (software" : " (hardware");
   if (has_extension(eglQueryDeviceStringEXT(device, EGL_EXTENSIONS), "EGL_EXT_device_drm")) {
-    if (const char* file = eglQueryDeviceStringEXT(device, EGL_DRM_DEVICE_FILE_EXT)) text += ", " + std::string(file);
+    if (const char* file = eglQueryDeviceStringEXT(device, EGL_DRM_DEVICE_FILE_EXT))
+      text += ", " + std::string(file);
   }
   return text + ")";
 }
@@ -90,8 +92,9 @@ Step try_device_platform(const char* client_extensions) {
                           has_extension(client_extensions, "EGL_EXT_device_base");
   if (!enumerable || !has_extension(client_extensions, "EGL_EXT_platform_device")) {
     if (requested_device())
-      throw RenderError("BOOKSPIN_EGL_DEVICE is set but EGL has no device platform "
-                        "(EGL_EXT_device_enumeration + EGL_EXT_platform_device)");
+      throw RenderError(
+          "BOOKSPIN_EGL_DEVICE is set but EGL has no device platform "
+          "(EGL_EXT_device_enumeration + EGL_EXT_platform_device)");
     step.attempt.failure = "no EGL_EXT_device_enumeration/EGL_EXT_platform_device";
     return step;
   }

@@ -29,8 +29,7 @@ std::string resolved_family(const std::string& family) {
   FcResult result = FcResultNoMatch;
   PatternPtr match(FcFontMatch(nullptr, pattern.get(), &result), &FcPatternDestroy);
   FcChar8* found = nullptr;
-  if (!match || FcPatternGetString(match.get(), FC_FAMILY, 0, &found) != FcResultMatch)
-    return {};
+  if (!match || FcPatternGetString(match.get(), FC_FAMILY, 0, &found) != FcResultMatch) return {};
   return reinterpret_cast<const char*>(found);
 }
 
@@ -47,10 +46,14 @@ void require_default_fonts() {
 RgbaImage draw_face_image(FaceImage which) {
   require_default_fonts();
   switch (which) {
-    case FaceImage::front: return art::front_cover();
-    case FaceImage::back: return art::back_cover();
-    case FaceImage::spine: return art::spine();
-    case FaceImage::pages: return art::pages();
+    case FaceImage::front:
+      return art::front_cover();
+    case FaceImage::back:
+      return art::back_cover();
+    case FaceImage::spine:
+      return art::spine();
+    case FaceImage::pages:
+      return art::pages();
   }
   throw RenderError("unknown face image");
 }
@@ -101,8 +104,8 @@ RgbaImage load_face_image(const std::string& path, const char* face) {
   return draw::to_rgba(flat.get());
 }
 
-FaceImages face_images(const std::string& front, const std::string& back,
-                       const std::string& spine, const std::string& pages) {
+FaceImages face_images(const std::string& front, const std::string& back, const std::string& spine,
+                       const std::string& pages) {
   const auto one = [](const std::string& path, FaceImage which, const char* face) {
     return path.empty() ? generate_face_image(which) : load_face_image(path, face);
   };

@@ -24,8 +24,8 @@ using FaceImages = std::array<RgbaImage, 4>;
 
 /// For each face image: the PNG at the given path, or the generated default if the path is
 /// empty (front, back, spine, pages in FaceImage order). Throws as the two functions above.
-FaceImages face_images(const std::string& front, const std::string& back,
-                       const std::string& spine, const std::string& pages);
+FaceImages face_images(const std::string& front, const std::string& back, const std::string& spine,
+                       const std::string& pages);
 
 /// Throws RenderError unless fontconfig resolves `family` (e.g. "DejaVu Serif") to itself
 /// rather than to a fallback font.

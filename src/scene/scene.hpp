@@ -29,7 +29,8 @@ struct RenderOptions {
   std::string codec = "libx264";
   int crf = 18;
   std::string preset = "medium";
-  int png_compression = 1;  ///< deflate level 0–9 for frame PNGs (output::write_png maps it onto libdeflate's)
+  int png_compression =
+      1;  ///< deflate level 0–9 for frame PNGs (output::write_png maps it onto libdeflate's)
   /// Anisotropic texture filtering cap, 1 … 16 (1 = trilinear only); 0 = automatic: 4× on a
   /// GPU, trilinear on a software rasterizer (see render::RenderSettings::max_anisotropy).
   int anisotropy = 0;

@@ -106,10 +106,10 @@ void TomlReader::check_range(const Limit& limit, double value, bool component) c
 void TomlReader::check_smallest(const Limit& limit, double value, bool vector) const {
   const double magnitude = std::abs(value);
   if (magnitude != 0.0 && magnitude < limit.smallest_nonzero) {
-    fail(limit.key, std::string(vector ? "must be [0, 0, 0] or at least " : "must be 0 or at least ") +
-                        format_number(limit.smallest_nonzero) +
-                        (vector ? " long, got length " : " in magnitude, got ") +
-                        format_number(value));
+    fail(limit.key,
+         std::string(vector ? "must be [0, 0, 0] or at least " : "must be 0 or at least ") +
+             format_number(limit.smallest_nonzero) +
+             (vector ? " long, got length " : " in magnitude, got ") + format_number(value));
   }
 }
 

@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "support/physics_printers.hpp"
 #include "physics/particle_model.hpp"
 #include "physics/shape.hpp"
+#include "support/physics_printers.hpp"
 
 namespace bookspin::analysis {
 namespace {

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "physics/polhode.hpp"
 #include "analysis/frame_source.hpp"
+#include "physics/polhode.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::analysis {
@@ -49,11 +49,11 @@ TEST(MajorAxisRule, TheDampedLatticeEndsAboutItsLargestAxisWithLFixed) {
     }
   }
   const double drop = 1 - rows.back().energy_total / rows.front().energy_total;
-  std::printf("|L| relative deviation %.3g, largest frame-to-frame energy rise %.3g, energy lost "
-              "%.3f, cos(smallest, L) %.4f -> %.4f, cos(largest, L) %.4f -> %.4f\n",
-              worst_L, worst_rise, drop, rows.front().cos_principal_L[0],
-              rows.back().cos_principal_L[0], rows.front().cos_principal_L[2],
-              rows.back().cos_principal_L[2]);
+  std::printf(
+      "|L| relative deviation %.3g, largest frame-to-frame energy rise %.3g, energy lost "
+      "%.3f, cos(smallest, L) %.4f -> %.4f, cos(largest, L) %.4f -> %.4f\n",
+      worst_L, worst_rise, drop, rows.front().cos_principal_L[0], rows.back().cos_principal_L[0],
+      rows.front().cos_principal_L[2], rows.back().cos_principal_L[2]);
   EXPECT_LT(worst_L, 1e-9);
   EXPECT_LT(worst_rise, 1e-6);
   EXPECT_GT(std::abs(rows.front().cos_principal_L[0]), 0.99);

@@ -106,8 +106,8 @@ TEST(Bench, PipelineSectionReportsBestOfAlternatedRunsAndTheRatios) {
   }
   EXPECT_GT(parts, 0.0) << csv;
   // The PNG writer and its yardstick, the former libpng + zlib writer, on the same frames.
-  const double png = csv_value(csv, "PNG (libdeflate, as render writes it), per frame",
-                               "pipeline split");
+  const double png =
+      csv_value(csv, "PNG (libdeflate, as render writes it), per frame", "pipeline split");
   const double zlib = csv_value(csv, "PNG through libpng and zlib (the former writer), per frame",
                                 "pipeline split");
   EXPECT_GT(png, 0.0) << csv;
@@ -172,7 +172,8 @@ TEST(Bench, BadSceneStopsTheBenchWithTheScenesOwnMessage) {
 }
 
 TEST(Bench, ExplorerSectionTimesEveryMethodOfThePage) {
-  const BenchRun run = run_bench("bench-explorer", "--only explorer --explorer-steps 50 --rounds 1");
+  const BenchRun run =
+      run_bench("bench-explorer", "--only explorer --explorer-steps 50 --rounds 1");
   ASSERT_EQ(run.result.status, 0) << run.result.output;
   for (const char* method :
        {"particle euler", "particle symplectic-euler", "particle velocity-verlet",

@@ -9,9 +9,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "physics/polhode.hpp"
-#include "clip/frame.hpp"
 #include "charts/panel.hpp"
+#include "clip/frame.hpp"
+#include "physics/polhode.hpp"
 
 namespace bookspin::charts {
 namespace {
@@ -45,7 +45,9 @@ bool crosses_separatrix(const Eigen::Vector3d& moments, const DiagnosticsHistory
   return signs == 3;
 }
 
-clip::ShownFrame whole_run(const scene::Scene& scene) { return clip::simulate_to(scene, scene.frames - 1); }
+clip::ShownFrame whole_run(const scene::Scene& scene) {
+  return clip::simulate_to(scene, scene.frames - 1);
+}
 
 TEST(SphereView, EulerTrailLeavesItsPolhodeTheExactOneStaysOnIt) {
   const auto exact = scene_named("exact-unstable-x");

@@ -70,7 +70,7 @@ double worst_rebuild_error(const std::string& name, int frames) {
     EXPECT_GE(w, 0.0);
     Eigen::Matrix3d R;
     R << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),  //
-        2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),    //
+        2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),   //
         2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y);
     const Eigen::Vector3d com(row[cx], row[cx + 1], row[cx + 2]);
     const physics::Corners rebuilt = (R * rest).colwise() + com;

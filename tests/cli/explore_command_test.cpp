@@ -15,7 +15,8 @@ namespace {
 using namespace bookspin::test;
 namespace fs = std::filesystem;
 
-const char* kShell = "<!doctype html><html><body>\n<!--BOOKSPIN_DATA-->\n<script>app()</script>\n</body></html>\n";
+const char* kShell =
+    "<!doctype html><html><body>\n<!--BOOKSPIN_DATA-->\n<script>app()</script>\n</body></html>\n";
 
 fs::path write_shell(const fs::path& dir, const std::string& text = kShell) {
   const fs::path shell = dir / "shell.html";
@@ -42,10 +43,10 @@ std::vector<double> numbers_after(const std::string& text, const std::string& ke
 TEST(ExploreCommand, WritesEveryScenesSettingsAndTheMeshBodyIntoTheShell) {
   const fs::path dir = fresh_dir("explore/page");
   const fs::path shell = write_shell(dir);
-  const CliResult r = run_bookspin("explore " + scene_path("fig09-matrix-unstable-x") + " " +
-                                   scene_path("major-axis-rule") + " " +
-                                   scene_path("t-handle-dzhanibekov") + " --shell " +
-                                   shell.string() + " -o " + (dir / "out").string());
+  const CliResult r =
+      run_bookspin("explore " + scene_path("fig09-matrix-unstable-x") + " " +
+                   scene_path("major-axis-rule") + " " + scene_path("t-handle-dzhanibekov") +
+                   " --shell " + shell.string() + " -o " + (dir / "out").string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("3 scenes"), std::string::npos) << r.output;
   const std::string page = read_file(dir / "out" / "explorer.html");
@@ -58,7 +59,8 @@ TEST(ExploreCommand, WritesEveryScenesSettingsAndTheMeshBodyIntoTheShell) {
   const std::string book = scene_entry(page, "fig09-matrix-unstable-x");
   ASSERT_FALSE(book.empty());
   EXPECT_NE(book.find("\"body\":\"book\",\"model\":\"rigid-matrix\",\"integrator\":\"euler\""),
-            std::string::npos) << book;
+            std::string::npos)
+      << book;
   EXPECT_EQ(numbers_after(book, "w"), (std::vector<double>{0.114819, 0.0, 0.0}));
   EXPECT_EQ(book.find("\"body\":{"), std::string::npos) << "the book is built by the page";
 
@@ -80,18 +82,20 @@ TEST(ExploreCommand, WritesEveryScenesSettingsAndTheMeshBodyIntoTheShell) {
   EXPECT_NEAR(cage[2], 0.3, 2e-7);
   const std::vector<double> vertices = numbers_after(box, "vertices");
   const std::vector<double> triangles = numbers_after(box, "triangles");
-  EXPECT_EQ(vertices.size(), 3u * 8u);     // the box's 8 corners
-  EXPECT_EQ(triangles.size(), 3u * 12u);   // 12 triangles
+  EXPECT_EQ(vertices.size(), 3u * 8u);    // the box's 8 corners
+  EXPECT_EQ(triangles.size(), 3u * 12u);  // 12 triangles
   EXPECT_EQ(numbers_after(box, "colours").size(), 3u * 12u);
   for (const double v : vertices) {
     const double a = std::abs(v);
     EXPECT_TRUE(std::abs(a - 1.0) < 1e-7 || std::abs(a - 0.6) < 1e-7 || std::abs(a - 0.15) < 1e-7)
         << v;
   }
-  EXPECT_NE(box.find("\"model\":\"particle\",\"integrator\":\"velocity-verlet\""), std::string::npos);
-  EXPECT_NE(box.find("\"cells\":8"), std::string::npos);
-  EXPECT_NE(box.find("\"compare\":true,\"model2\":\"rigid-quaternion\",\"integrator2\":\"splitting\""),
+  EXPECT_NE(box.find("\"model\":\"particle\",\"integrator\":\"velocity-verlet\""),
             std::string::npos);
+  EXPECT_NE(box.find("\"cells\":8"), std::string::npos);
+  EXPECT_NE(
+      box.find("\"compare\":true,\"model2\":\"rigid-quaternion\",\"integrator2\":\"splitting\""),
+      std::string::npos);
   EXPECT_NE(box.find("\"shape\":\"mesh\""), std::string::npos);
 
   // The T-handle: its body given whole, the preset's shape named.
@@ -101,7 +105,8 @@ TEST(ExploreCommand, WritesEveryScenesSettingsAndTheMeshBodyIntoTheShell) {
   // The book's four faces as PNG data: URLs.
   for (const char* face : {"front", "back", "spine", "pages"})
     EXPECT_NE(page.find(std::string("\"") + face + "\":\"data:image/png;base64,iVBORw0KGgo"),
-              std::string::npos) << face;
+              std::string::npos)
+        << face;
 }
 
 TEST(ExploreCommand, TextThatWouldCloseTheScriptIsEscaped) {
@@ -130,7 +135,8 @@ TEST(ExploreCommand, BadInputsAreOneLineExitTwoAndWriteNothing) {
     std::string says;
   };
   const Case cases[] = {
-      {fig09 + " --shell " + (dir / "missing.html").string(), "missing.html: the explorer page's shell is missing"},
+      {fig09 + " --shell " + (dir / "missing.html").string(),
+       "missing.html: the explorer page's shell is missing"},
       {fig09 + " --shell " + no_marker.string(), "plain.html: not an explorer shell"},
       {bad_scene.string() + " --shell " + shell.string(), "bad.toml"},
       {fig09 + " " + fig09 + " --shell " + shell.string(), "is the name of another scene"},
@@ -149,21 +155,23 @@ TEST(ExploreCommand, WithoutTheBuiltShellSaysHowToBuildItAndExitsOne) {
   // A copy of the program in a folder with no web/explorer-shell.html beside it.
   const fs::path dir = fresh_dir("explore/unbuilt");
   fs::copy_file(BOOKSPIN_EXE, dir / "bookspin");
-  CliResult r = run_program("", (dir / "bookspin").string(),
-                            "explore " + scene_path("fig09-matrix-unstable-x") + " -o " +
-                                (dir / "out").string());
+  CliResult r = run_program(
+      "", (dir / "bookspin").string(),
+      "explore " + scene_path("fig09-matrix-unstable-x") + " -o " + (dir / "out").string());
   EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_NE(r.output.find("bookspin: error: the explorer page's program is not built: no " +
                           (dir / "web" / "explorer-shell.html").string()),
-            std::string::npos) << r.output;
+            std::string::npos)
+      << r.output;
   EXPECT_NE(r.output.find("web/build.sh"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "out"));
   // With the shell in place it works.
   fs::create_directories(dir / "web");
   write_shell(dir / "web");
   fs::rename(dir / "web" / "shell.html", dir / "web" / "explorer-shell.html");
-  r = run_program("", (dir / "bookspin").string(),
-                  "explore " + scene_path("fig09-matrix-unstable-x") + " -o " + (dir / "out").string());
+  r = run_program(
+      "", (dir / "bookspin").string(),
+      "explore " + scene_path("fig09-matrix-unstable-x") + " -o " + (dir / "out").string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir / "out" / "explorer.html"));
 }

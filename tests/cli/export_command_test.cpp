@@ -2,10 +2,10 @@
 // the vertices written, one animation whose rotation and translation keys are the run's
 // frames at render.fps, and rotations equal to the CSV's quaternions (docs/outputs.md).
 // The Khronos validator and three.js check the same files in tests/browser/gltf_test.py.
+#include <assimp/scene.h>
 #include <gtest/gtest.h>
 
 #include <assimp/Importer.hpp>
-#include <assimp/scene.h>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -57,7 +57,8 @@ Readback read_glb(Assimp::Importer& importer, const fs::path& path) {
   if (r.scene == nullptr) return r;
   r.meshes = r.scene->mNumMeshes;
   r.materials = r.scene->mNumMaterials;
-  for (unsigned i = 0; i < r.scene->mNumMeshes; ++i) r.vertices += r.scene->mMeshes[i]->mNumVertices;
+  for (unsigned i = 0; i < r.scene->mNumMeshes; ++i)
+    r.vertices += r.scene->mMeshes[i]->mNumVertices;
   return r;
 }
 
@@ -77,11 +78,12 @@ void expect_keys_match_csv(const aiScene* scene, const std::vector<Quaternion>& 
     const aiQuatKey& key = channel->mRotationKeys[k];
     EXPECT_NEAR(key.mTime / ticks, static_cast<double>(k) / fps, 1e-5) << "key " << k;
     const Quaternion& q = csv[k];
-    const double dot = key.mValue.w * q.w + key.mValue.x * q.x + key.mValue.y * q.y +
-                       key.mValue.z * q.z;
+    const double dot =
+        key.mValue.w * q.w + key.mValue.x * q.x + key.mValue.y * q.y + key.mValue.z * q.z;
     const double sign = dot < 0 ? -1.0 : 1.0;
-    worst = std::max({worst, std::abs(sign * key.mValue.w - q.w), std::abs(sign * key.mValue.x - q.x),
-                      std::abs(sign * key.mValue.y - q.y), std::abs(sign * key.mValue.z - q.z)});
+    worst =
+        std::max({worst, std::abs(sign * key.mValue.w - q.w), std::abs(sign * key.mValue.x - q.x),
+                  std::abs(sign * key.mValue.y - q.y), std::abs(sign * key.mValue.z - q.z)});
   }
   EXPECT_LT(worst, 1e-6);  // stored as float: ~6e-8
 }
@@ -89,15 +91,16 @@ void expect_keys_match_csv(const aiScene* scene, const std::vector<Quaternion>& 
 TEST(ExportCommand, TexturedBookGlbReadsBackWithItsVerticesKeysAndTheCsvRotations) {
   const fs::path out = fresh_dir("export_book");
   const std::string scene = scene_path("fig09-matrix-unstable-x");
-  const SplitResult r = run_bookspin_split("export " + scene + " --gltf --frames 40 -o " + out.string());
+  const SplitResult r =
+      run_bookspin_split("export " + scene + " --gltf --frames 40 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "exported: " + (out / "fig09-matrix-unstable-x.glb").string() +
                        " (40 keyframes, 72 vertices)\n");
   Assimp::Importer importer;
   const Readback glb = read_glb(importer, out / "fig09-matrix-unstable-x.glb");
   ASSERT_NE(glb.scene, nullptr);
-  EXPECT_EQ(glb.vertices, 72u);  // 6 faces × 12, as the renderer draws them
-  EXPECT_EQ(glb.meshes, 4u);     // front, back, spine, pages
+  EXPECT_EQ(glb.vertices, 72u);            // 6 faces × 12, as the renderer draws them
+  EXPECT_EQ(glb.meshes, 4u);               // front, back, spine, pages
   EXPECT_EQ(glb.scene->mNumTextures, 4u);  // the cover art, embedded
   expect_keys_match_csv(glb.scene, csv_quaternions(scene, " --set time.frames=40"), 30.0);
 }
@@ -134,8 +137,7 @@ TEST(ExportCommand, PresetAndMeshBodiesCarryTheirColoursAsMaterials) {
   for (unsigned i = 0; i < glb.scene->mNumMeshes; ++i) {  // the meshes' materials
     aiColor4D c;
     const aiMaterial* material = glb.scene->mMaterials[glb.scene->mMeshes[i]->mMaterialIndex];
-    if (material->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS)
-      colours.push_back({c.r, c.g, c.b});
+    if (material->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS) colours.push_back({c.r, c.g, c.b});
   }
   std::sort(colours.begin(), colours.end());
   EXPECT_EQ(colours, (std::vector<std::array<float, 3>>{{0, 0, 1}, {1, 0, 0}}));

@@ -73,7 +73,8 @@ TEST(FiniteOutputs, ABodyAtRestLeavesTheCosineCellsEmptyInEveryModel) {
     const CliResult r = run_bookspin("simulate " + scene_path("fig09-matrix-unstable-x") + kAtRest +
                                      " --set 'model.kind=\"" + kind +
                                      "\"' --set 'model.integrator=\"euler\"' --set time.frames=4"
-                                     " --csv " + quoted(csv));
+                                     " --csv " +
+                                     quoted(csv));
     ASSERT_EQ(r.status, 0) << r.output;
     const std::string text = read_file(csv);
     // 4 rows × 6 cosine columns, every other cell a finite number (L = 0, ω = 0).
@@ -85,8 +86,9 @@ TEST(FiniteOutputs, ABodyAtRestLeavesTheCosineCellsEmptyInEveryModel) {
 
 TEST(FiniteOutputs, ARenderAndAComparisonAtRestWriteEmptyCosineCells) {
   const auto dir = fresh_dir("finite_render_at_rest");
-  const CliResult single = run_bookspin("render " + scene_path("fig05-particle-unstable-x") +
-                                        kAtRest + " --set time.frames=2 --no-png -o " + quoted(dir));
+  const CliResult single =
+      run_bookspin("render " + scene_path("fig05-particle-unstable-x") + kAtRest +
+                   " --set time.frames=2 --no-png -o " + quoted(dir));
   ASSERT_EQ(single.status, 0) << single.output;
   EXPECT_EQ(expect_finite_cells(read_file(dir / "fig05-particle-unstable-x" / "diagnostics.csv"),
                                 is_cosine_column),
@@ -118,7 +120,8 @@ TEST(FiniteOutputs, TheLargestAndSmallestBodiesAndSpinsStayFiniteInEveryModel) {
       const CliResult r = run_bookspin("simulate " + scene_path("fig09-matrix-unstable-x") +
                                        extreme + " --set 'model.kind=\"" + kind +
                                        "\"' --set 'model.integrator=\"euler\"'"
-                                       " --set time.frames=10 --csv " + quoted(csv));
+                                       " --set time.frames=10 --csv " +
+                                       quoted(csv));
       ASSERT_EQ(r.status, 0) << r.output;  // a divergence keeps the finite rows and warns
       expect_finite_cells(read_file(csv), never_empty);
     }
@@ -182,8 +185,7 @@ TEST(FiniteOutputs, AccuracyLeavesTheCellsOfADivergedRunEmpty) {
   // The particle models blow up at dt = 0.5 (no orientation to compare); most rigid ones see
   // fewer than two flips in one flip period (no flip period to measure).
   const int empty = expect_finite_cells(csv, [](const std::string& name) {
-    return name == "orientation_error_rad" || name == "flip_period" ||
-           name == "flip_period_error";
+    return name == "orientation_error_rad" || name == "flip_period" || name == "flip_period_error";
   });
   EXPECT_GE(empty, 3) << csv;
   for (const auto& row : cells_of(csv)) {

@@ -190,7 +190,8 @@ TEST(InertiaCommand, InwardWoundMeshWarnsAndStillReports) {
   const SplitResult r = run_bookspin_split("inertia " + quoted(file) + " --json");
   EXPECT_EQ(r.status, 0);
   EXPECT_EQ(r.err, "bookspin: warning: " + file.string() +
-                       ": the mesh is wound inward (negative volume) and lies inside no other shell; turned around\n");
+                       ": the mesh is wound inward (negative volume) and lies inside no other "
+                       "shell; turned around\n");
   expect_box_1x2x3(JsonReader(r.out).object(), 6.0, 1.0);
 }
 

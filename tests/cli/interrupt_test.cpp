@@ -194,11 +194,12 @@ TEST(Interrupt, SweepPlotAndGalleryRemoveTheTemporariesOfDeadRuns) {
   for (const auto& name : forged) write_forged(out / name);
   ASSERT_EQ(temporaries(out).size(), forged.size());
   const std::string scene = scene_path("exact-unstable-x");
-  for (const std::string& args :
-       {"sweep " + scene + " --set time.frames=20 --vary time.dt=0.01:0.02:2 --measure "
-                           "energy_drift -o " + out.string(),
-        "plot " + scene + " --set time.frames=20 -o " + out.string(),
-        "gallery " + out.string() + " " + scene}) {
+  for (const std::string& args : {"sweep " + scene +
+                                      " --set time.frames=20 --vary time.dt=0.01:0.02:2 --measure "
+                                      "energy_drift -o " +
+                                      out.string(),
+                                  "plot " + scene + " --set time.frames=20 -o " + out.string(),
+                                  "gallery " + out.string() + " " + scene}) {
     const CliResult r = run_bookspin(args);
     ASSERT_EQ(r.status, 0) << args << "\n" << r.output;
   }

@@ -130,10 +130,10 @@ panel = true
     const std::string size =
         " --set render.width=64 --set render.height=64 --set 'render.preset=\"ultrafast\"'";
     const std::string formats = scene == odd.string() ? " --format mp4,webm,gif" : "";
-    ASSERT_EQ(run_bookspin("render " + scene + size + formats + " --frames 5 --jobs 2 -o " +
-                           out.string())
-                  .status,
-              0);
+    ASSERT_EQ(
+        run_bookspin("render " + scene + size + formats + " --frames 5 --jobs 2 -o " + out.string())
+            .status,
+        0);
     ASSERT_EQ(run_bookspin("plot " + scene + " --set time.frames=5 --width 640 --height 400 -o " +
                            out.string())
                   .status,
@@ -146,9 +146,9 @@ panel = true
   const std::string html = read_file(out / "index.html");
   EXPECT_NE(html.find("Book &lt;&amp;&gt; &quot;spin&quot;"), std::string::npos);
   const auto files = linked_files(html);
-  for (const char* expected : {"odd-title.mp4", "odd-title.webm", "odd-title.gif",
-                               "odd-title.glb", "odd-title-plot.png", "compare-methods-x.mp4",
-                               "compare-methods-x/frames/frame_00002.png"}) {
+  for (const char* expected :
+       {"odd-title.mp4", "odd-title.webm", "odd-title.gif", "odd-title.glb", "odd-title-plot.png",
+        "compare-methods-x.mp4", "compare-methods-x/frames/frame_00002.png"}) {
     EXPECT_NE(std::find(files.begin(), files.end(), expected), files.end()) << expected << '\n'
                                                                             << html;
   }

@@ -58,9 +58,11 @@ TEST(RenderCommand, WritesMp4FramesAndCsvWithMatchingCounts) {
 /// frame (an independent reader: FFmpeg's command-line tool, not bookspin's code).
 std::string ffprobe_stream(const fs::path& file) {
   std::string out;
-  run_shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-            "stream=codec_name,width,height,nb_read_frames -of csv=p=0 " + file.string(),
-            out);
+  run_shell(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=codec_name,width,height,nb_read_frames -of csv=p=0 " +
+          file.string(),
+      out);
   return out;
 }
 
@@ -69,7 +71,8 @@ TEST(RenderCommand, FormatsWriteMp4WebmAndGifFromOneRenderAndListThemInTheManife
   const std::string name = "fig09-matrix-unstable-x";
   const CliResult r = run_bookspin("render " + scene_path(name) + kSmall +
                                    " --set render.gif_width=64 --frames 9 --no-png "
-                                   "--format mp4,webm,gif -o " + out.string());
+                                   "--format mp4,webm,gif -o " +
+                                   out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(ffprobe_stream(out / (name + ".mp4")), "h264,128,96,9\n");
   EXPECT_EQ(ffprobe_stream(out / (name + ".webm")), "vp9,128,96,9\n");
@@ -81,17 +84,18 @@ TEST(RenderCommand, FormatsWriteMp4WebmAndGifFromOneRenderAndListThemInTheManife
   // Up to date with the same formats; another list is another render.
   EXPECT_NE(run_bookspin("render " + scene_path(name) + kSmall +
                          " --set render.gif_width=64 --frames 9 --no-png "
-                         "--format mp4,webm,gif -o " + out.string())
+                         "--format mp4,webm,gif -o " +
+                         out.string())
                 .output.find("up to date"),
             std::string::npos);
 
   // The scene key alone, without the MP4.
   const fs::path only = fresh_dir("render_formats_webm");
-  ASSERT_EQ(run_bookspin("render " + scene_path(name) + kSmall +
-                         " --frames 3 --no-png --set 'render.formats=[\"webm\"]' -o " +
-                         only.string())
-                .status,
-            0);
+  ASSERT_EQ(
+      run_bookspin("render " + scene_path(name) + kSmall +
+                   " --frames 3 --no-png --set 'render.formats=[\"webm\"]' -o " + only.string())
+          .status,
+      0);
   EXPECT_EQ(ffprobe_stream(only / (name + ".webm")), "vp9,128,96,3\n");
   EXPECT_FALSE(fs::exists(only / (name + ".mp4")));
   EXPECT_FALSE(fs::exists(only / (name + ".gif")));

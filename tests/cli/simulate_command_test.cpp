@@ -3,8 +3,8 @@
 
 #include <sstream>
 
-#include "support/flip_timer.hpp"
 #include "support/cli_runner.hpp"
+#include "support/flip_timer.hpp"
 
 namespace bookspin::cli {
 namespace {

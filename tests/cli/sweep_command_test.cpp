@@ -219,8 +219,8 @@ TEST(SweepCommand, MergeRefusesShardsOfAnotherSceneSetBuildGridOrMeasures) {
     auto lines = good;
     lines.push_back(lines[2]);
     rewrite_shard(dir, 1, lines);
-    expect_refused(dir, shard(dir, 1, 3) + ":5: ", "grid point 1 is duplicated (also at " +
-                                                       shard(dir, 1, 3) + ":3)");
+    expect_refused(dir, shard(dir, 1, 3) + ":5: ",
+                   "grid point 1 is duplicated (also at " + shard(dir, 1, 3) + ":3)");
     lines = good;
     auto cells = cells_of_row(lines[2]);
     cells[0] = "7";
@@ -241,9 +241,9 @@ TEST(SweepCommand, ShardsWithCrlfLineEndingsMergeToTheSameBytes) {
     std::ofstream(shard(parts, k, 3), std::ios::binary | std::ios::trunc) << crlf;
   }
   ASSERT_NE(read_file(shard(parts, 0, 3)).find("\r\n"), std::string::npos);
-  const CliResult r = run_bookspin("sweep --merge " + shard(parts, 0, 3) + " " +
-                                   shard(parts, 1, 3) + " " + shard(parts, 2, 3) + " -o " +
-                                   (parts / "merged").string());
+  const CliResult r =
+      run_bookspin("sweep --merge " + shard(parts, 0, 3) + " " + shard(parts, 1, 3) + " " +
+                   shard(parts, 2, 3) + " -o " + (parts / "merged").string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(read_file(parts / "merged" / "exact-unstable-x-sweep.csv"),
             read_file(one / "exact-unstable-x-sweep.csv"));

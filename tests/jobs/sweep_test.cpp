@@ -1,6 +1,5 @@
 // Sweeps (docs/physics.md §14): the grid, the overrides it makes, and the measures against
 // closed forms of the exact motion (docs/physics.md §8).
-#include "analysis/motion.hpp"
 #include "jobs/sweep.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +11,7 @@
 #include <optional>
 #include <sstream>
 
+#include "analysis/motion.hpp"
 #include "common/errors.hpp"
 #include "physics/exact_model.hpp"
 
@@ -74,8 +74,7 @@ Recomputed recompute(const scene::Scene& s) {
       r.diverged_at = static_cast<double>(n) * s.dt;
       break;
     }
-    r.energy_drift =
-        std::max(r.energy_drift, std::abs(sim->diagnostics().energy_total / e0 - 1.0));
+    r.energy_drift = std::max(r.energy_drift, std::abs(sim->diagnostics().energy_total / e0 - 1.0));
   }
   return r;
 }
@@ -139,8 +138,7 @@ TEST(SweepGrid, LimitsAreInclusive) {
   ASSERT_EQ(kMaxGridPoints, 10000000u);
   EXPECT_EQ(parse_vary("a.b=1:2:1000000").count, 1000000);
   EXPECT_THROW(parse_vary("a.b=1:2:1000001"), InputError);
-  EXPECT_EQ(SweepGrid({parse_vary("a.b=1:2:1000000"), parse_vary("c.d=1:2:10")}).size(),
-            10000000u);
+  EXPECT_EQ(SweepGrid({parse_vary("a.b=1:2:1000000"), parse_vary("c.d=1:2:10")}).size(), 10000000u);
   // 10 000 001 = 11 · 909 091.
   EXPECT_THROW(SweepGrid({parse_vary("a.b=1:2:909091"), parse_vary("c.d=1:2:11")}), InputError);
 }
@@ -163,8 +161,9 @@ TEST(SweepGrid, VectorComponentsBecomeOneOverrideOfTheWholeVector) {
 }
 
 TEST(SweepMeasures, ParsesNamesAndRejectsUnknownOrRepeated) {
-  EXPECT_EQ(parse_measures("flip_period,first_flip"),
-            (MeasureList{analysis::find_measure("flip_period"), analysis::find_measure("first_flip")}));
+  EXPECT_EQ(
+      parse_measures("flip_period,first_flip"),
+      (MeasureList{analysis::find_measure("flip_period"), analysis::find_measure("first_flip")}));
   EXPECT_EQ(analysis::find_measure("flip_period")->name, "flip_period");
   EXPECT_THROW(parse_measures("flip_time"), InputError);
   EXPECT_THROW(parse_measures("first_flip,first_flip"), InputError);
@@ -190,8 +189,9 @@ TEST(SweepMeasures, RigidRk4FlipPeriodIsTheClosedForm) {
     ASSERT_TRUE(m.flip_period && m.flip_period_exact) << kind;
     EXPECT_NEAR(*m.flip_period / *m.flip_period_exact, 1.0, 1e-6) << kind;
     // The exact column against 2K(k)/λ from the invariants (no jiggle here, so ω(0) is ω0).
-    EXPECT_NEAR(*m.flip_period_exact / closed_form_flip_period(s.body.moments, s.initial.omega0_body),
-                1.0, 1e-9)
+    EXPECT_NEAR(
+        *m.flip_period_exact / closed_form_flip_period(s.body.moments, s.initial.omega0_body), 1.0,
+        1e-9)
         << kind;
     EXPECT_NEAR(*m.first_flip, *m.first_flip_exact, 1e-6 * *m.first_flip_exact) << kind;
     // The drift is the largest over the run, not the last step's (which is smaller here).
@@ -263,8 +263,8 @@ TEST(SweepMeasures, ExactModelHasNoErrorAndParticleModelIsMeasuredFromItsCorners
   ASSERT_TRUE(particle.orientation_error && particle.first_flip_exact);
   EXPECT_GT(*particle.orientation_error, 0.0);
   EXPECT_LT(*particle.orientation_error, 0.01);
-  const analysis::RunMeasures longer =
-      analysis::measure_run(scene::parse_scene(scene_file("fig05-particle-unstable-x"), {"time.frames=260"}));
+  const analysis::RunMeasures longer = analysis::measure_run(
+      scene::parse_scene(scene_file("fig05-particle-unstable-x"), {"time.frames=260"}));
   ASSERT_TRUE(longer.first_flip);
   EXPECT_NEAR(*longer.first_flip, *longer.first_flip_exact, 0.2);
 }

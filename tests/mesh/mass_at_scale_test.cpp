@@ -116,9 +116,9 @@ void write_prism(const fs::path& path, int n, double r, double h) {
   std::vector<std::array<int, 3>> t;
   for (int k = 0; k < n; ++k) {
     const int next = (k + 1) % n;
-    t.push_back({bottom, next, k});                // bottom cap, facing −z
-    t.push_back({bottom + 1, n + k, n + next});    // top cap, facing +z
-    t.push_back({k, next, n + next});              // side
+    t.push_back({bottom, next, k});              // bottom cap, facing −z
+    t.push_back({bottom + 1, n + k, n + next});  // top cap, facing +z
+    t.push_back({k, next, n + next});            // side
     t.push_back({k, n + next, n + k});
   }
   write_obj(path, v, t);
@@ -168,8 +168,7 @@ TEST(MassAtScale, CubeWithCubicCavitySubtractsTheCavityAtEveryScale) {
     write_obj(file, v, t);
     const double A = a, B = b, C = c;
     const double outer = C * C * C, inner = (B - A) * (B - A) * (B - A);
-    const double moment =
-        outer * (2 * C * C) / 12 - inner * (2 * (B - A) * (B - A)) / 12;
+    const double moment = outer * (2 * C * C) / 12 - inner * (2 * (B - A) * (B - A)) / 12;
     const ClosedForm want{outer - inner, Eigen::Vector3d::Constant(C / 2),
                           Eigen::Vector3d::Constant(moment)};
     const physics::MassPropertiesResult r = measure(file);

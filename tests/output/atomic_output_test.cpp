@@ -1,7 +1,6 @@
 #include "output/atomic_output.hpp"
 
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -177,9 +176,9 @@ TEST(AtomicOutput, RemovesTheTemporariesOfDeadRunsInItsFolder) {
   write_text(dir / (".clip.mp4.tmp-" + live + "-2"), "x");
   fs::last_write_time(dir / (".clip.mp4.tmp-" + live + "-2"),
                       fs::file_time_type::clock::now() - std::chrono::hours(24 * 365 * 20));
-  const std::vector<std::string> kept = {".clip.mp4.tmp-" + live + "-3", ".clip.mp4.old-" + dead + "-0",
-                                         ".clip.mp4.tmp-x-0", ".clip.mp4.tmp-" + dead,
-                                         "clip.mp4.tmp-" + dead + "-0"};
+  const std::vector<std::string> kept = {".clip.mp4.tmp-" + live + "-3",
+                                         ".clip.mp4.old-" + dead + "-0", ".clip.mp4.tmp-x-0",
+                                         ".clip.mp4.tmp-" + dead, "clip.mp4.tmp-" + dead + "-0"};
   for (const auto& name : kept) write_text(dir / name, "x");
   AtomicFile file(dir / "clip.mp4");
   EXPECT_EQ(dir.entries(), kept_sorted(kept));

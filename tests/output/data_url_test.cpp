@@ -1,10 +1,10 @@
 // data: URLs (RFC 2397) with base64 (RFC 4648 §4): the RFC's own test vectors (§10), and
 // every byte value through a decoder written here from the RFC's alphabet.
+#include "output/data_url.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
-
-#include "output/data_url.hpp"
 
 namespace bookspin::output {
 namespace {
@@ -12,16 +12,19 @@ namespace {
 std::vector<std::uint8_t> bytes_of(const std::string& text) { return {text.begin(), text.end()}; }
 
 TEST(DataUrl, Rfc4648TestVectors) {
-  const std::pair<const char*, const char*> vectors[] = {
-      {"", ""},         {"f", "Zg=="},         {"fo", "Zm8="},         {"foo", "Zm9v"},
-      {"foob", "Zm9vYg=="}, {"fooba", "Zm9vYmE="}, {"foobar", "Zm9vYmFy"}};
+  const std::pair<const char*, const char*> vectors[] = {{"", ""},
+                                                         {"f", "Zg=="},
+                                                         {"fo", "Zm8="},
+                                                         {"foo", "Zm9v"},
+                                                         {"foob", "Zm9vYg=="},
+                                                         {"fooba", "Zm9vYmE="},
+                                                         {"foobar", "Zm9vYmFy"}};
   for (const auto& [in, out] : vectors)
     EXPECT_EQ(data_url("text/plain", bytes_of(in)), std::string("data:text/plain;base64,") + out);
 }
 
 TEST(DataUrl, EveryByteValueDecodesBack) {
-  const std::string alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   for (std::size_t n : {254u, 255u, 256u}) {  // the three paddings
     std::vector<std::uint8_t> in(n);
     for (std::size_t i = 0; i < n; ++i) in[i] = static_cast<std::uint8_t>((i * 7 + 3) % 256);

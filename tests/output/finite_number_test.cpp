@@ -1,5 +1,7 @@
 // The closing check on numbers written out (output/finite_number.hpp) and the diagnostics
 // CSV row that uses it (docs/outputs.md, "Numbers").
+#include "output/finite_number.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 
 #include "common/errors.hpp"
 #include "output/diagnostics_csv.hpp"
-#include "output/finite_number.hpp"
 
 namespace bookspin::output {
 namespace {

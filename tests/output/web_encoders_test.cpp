@@ -58,8 +58,8 @@ TEST(WebmEncoder, RoundTripIsVp9AtSizeRateAndFrameCountWithTheColours) {
   for (int i = 0; i < kFrames; ++i) {
     const RgbaImage original = moving_square_frame(kWidth, kHeight, i);
     const testing::Square sq = testing::moving_square(i);
-    EXPECT_LT(mean_rgb_error(probe.frames[i], original, 1, sq.x + 2, sq.y + 2,
-                             sq.x + sq.size - 2, sq.y + sq.size - 2),
+    EXPECT_LT(mean_rgb_error(probe.frames[i], original, 1, sq.x + 2, sq.y + 2, sq.x + sq.size - 2,
+                             sq.y + sq.size - 2),
               8.0)
         << "square of frame " << i;
     EXPECT_LT(mean_rgb_error(probe.frames[i], original, 1, 0, 0, kWidth, kHeight), 6.0)
@@ -103,14 +103,17 @@ TEST(GifEncoder, KeepsEveryStepthFrameScaledWithOnePaletteAndTheColours) {
 
 TEST(WebEncoders, BadSettingsThrowBeforeAnythingIsWrittenAndUnfinishedClipsLeaveNothing) {
   ScratchDir dir;
-  EXPECT_THROW(WebmEncoder(dir / "a.webm", WebmSettings{129, 96, 24, 32, 1}), std::invalid_argument);
-  EXPECT_THROW(WebmEncoder(dir / "a.webm", WebmSettings{128, 96, 24, 64, 1}), std::invalid_argument);
+  EXPECT_THROW(WebmEncoder(dir / "a.webm", WebmSettings{129, 96, 24, 32, 1}),
+               std::invalid_argument);
+  EXPECT_THROW(WebmEncoder(dir / "a.webm", WebmSettings{128, 96, 24, 64, 1}),
+               std::invalid_argument);
   EXPECT_THROW(GifEncoder(dir / "a.gif", GifSettings{128, 96, 24, 256, 12}), std::invalid_argument);
   EXPECT_THROW(GifEncoder(dir / "a.gif", GifSettings{128, 96, 24, 64, 25}), std::invalid_argument);
   {
     WebmEncoder webm(dir / "b.webm", WebmSettings{kWidth, kHeight, kFps, 32, 1});
     GifEncoder gif(dir / "b.gif", GifSettings{kWidth, kHeight, kFps, 64, 12});
-    EXPECT_THROW(webm.add_frame(moving_square_frame(kWidth + 2, kHeight, 0)), std::invalid_argument);
+    EXPECT_THROW(webm.add_frame(moving_square_frame(kWidth + 2, kHeight, 0)),
+                 std::invalid_argument);
     EXPECT_THROW(gif.add_frame(moving_square_frame(kWidth + 2, kHeight, 0)), std::invalid_argument);
     webm.add_frame(moving_square_frame(kWidth, kHeight, 0));
     gif.add_frame(moving_square_frame(kWidth, kHeight, 0));

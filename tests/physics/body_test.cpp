@@ -8,13 +8,13 @@
 #include <stdexcept>
 #include <vector>
 
-#include "support/flip_timer.hpp"
 #include "physics/exact_model.hpp"
 #include "physics/lattice_model.hpp"
 #include "physics/mass_properties.hpp"
 #include "physics/presets.hpp"
 #include "physics/shape.hpp"
 #include "physics/simulator.hpp"
+#include "support/flip_timer.hpp"
 
 namespace bookspin::physics {
 namespace {

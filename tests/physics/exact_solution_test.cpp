@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/tools/roots.hpp>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -292,7 +292,7 @@ TEST(ExactSolution, SymmetricBodyInUnsortedOrderSpinsSteadilyInItsEqualPlane) {
   const struct {
     Vector3d moments, omega0;
   } cases[] = {
-      {{2, 1, 2}, {0.3, 0.0, 0.7}}, {{2, 2, 1}, {-0.4, 0.6, 0.0}}, {{1, 2, 1}, {0.5, 0.0, -0.2}},
+      {{2, 1, 2}, {0.3, 0.0, 0.7}},  {{2, 2, 1}, {-0.4, 0.6, 0.0}}, {{1, 2, 1}, {0.5, 0.0, -0.2}},
       {{3, 3, 5}, {0.2, -0.1, 0.0}}, {{5, 3, 3}, {0.0, 0.25, 0.5}}, {{3, 5, 3}, {0.1, 0.0, 0.9}},
   };
   for (const auto& c : cases) {
@@ -348,7 +348,8 @@ TEST(ExactSolution, SeparatrixApproachesTheIntermediateAxis) {
 // I = (1, 4, 6): L² = 2E·I2 when I1(I2 − I1)ω1² = I3(I3 − I2)ω3², i.e. ω1 = ±2ω3.
 TEST(ExactSolution, SeparatrixStartOfEverySignGivesOmegaZero) {
   const Vector3d sorted(1.0, 4.0, 6.0);
-  const std::array<std::array<int, 3>, 5> orders{{{0, 1, 2}, {2, 0, 1}, {1, 2, 0}, {1, 0, 2}, {0, 2, 1}}};
+  const std::array<std::array<int, 3>, 5> orders{
+      {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}, {1, 0, 2}, {0, 2, 1}}};
   int separatrices = 0;
   for (const auto& order : orders)
     for (double s1 : {1.0, -1.0})

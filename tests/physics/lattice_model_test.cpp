@@ -9,11 +9,11 @@
 #include <chrono>
 #include <cstdio>
 
-#include "support/flip_timer.hpp"
 #include "lattice_shapes.hpp"
 #include "model_helpers.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/particle_model.hpp"
+#include "support/flip_timer.hpp"
 
 namespace bookspin::physics {
 namespace {
@@ -259,14 +259,14 @@ TEST(LatticeModel, BodyFrameOmegaFollowsTheExactMotionOfAGeneralSpin) {
     const double t = static_cast<double>(step) * dt;
     const Diagnostics d = model.diagnostics();
     const double error = (d.omega_body - exact.omega_body(t)).norm() / omega0.norm();
-    ASSERT_TRUE(std::isfinite(error)) << d.omega_body.transpose() << " / "
-                                      << exact.omega_body(t).transpose();
+    ASSERT_TRUE(std::isfinite(error))
+        << d.omega_body.transpose() << " / " << exact.omega_body(t).transpose();
     worst = std::max(worst, error);
     turned = std::max(turned, Eigen::AngleAxisd(exact.orientation(t)).angle());
   }
   std::printf("largest |omega_body - exact| / |omega0|: %.2e (turned up to %.2f rad)\n", worst,
               turned);
-  EXPECT_GT(turned, 2.0);  // far from the start: R is far from I and from a z rotation
+  EXPECT_GT(turned, 2.0);    // far from the start: R is far from I and from a z rotation
   EXPECT_LE(worst, 1.2e-5);  // 6.1e-6 here
 }
 

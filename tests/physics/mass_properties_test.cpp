@@ -293,7 +293,9 @@ TEST(MassProperties, InwardWoundBoxIsTurnedAroundWithAWarning) {
   expect_properties(p, size.prod(), size.prod(), kShift,
                     R * box_inertia(size.prod(), size) * R.transpose());
   ASSERT_EQ(p.warnings.size(), 1u);
-  EXPECT_EQ(p.warnings[0], "the mesh is wound inward (negative volume) and lies inside no other shell; turned around");
+  EXPECT_EQ(
+      p.warnings[0],
+      "the mesh is wound inward (negative volume) and lies inside no other shell; turned around");
 }
 
 TEST(MassProperties, OnlyTheInwardShellIsTurnedAround) {
@@ -302,7 +304,9 @@ TEST(MassProperties, OnlyTheInwardShellIsTurnedAround) {
   const MassProperties p = properties_of(two);
   expect_close(p.volume, 3.0, "volume");
   ASSERT_EQ(p.warnings.size(), 1u);
-  EXPECT_EQ(p.warnings[0], "shell 2 of 2 is wound inward (negative volume) and lies inside no other shell; turned around");
+  EXPECT_EQ(p.warnings[0],
+            "shell 2 of 2 is wound inward (negative volume) and lies inside no other shell; turned "
+            "around");
 }
 
 TEST(MassProperties, WithMassScalesMassAndInertiaOnly) {

@@ -27,13 +27,13 @@ std::vector<Sample> exact_run(const Eigen::Vector3d& omega0, int count, int ever
   auto sim = make_simulator(book, testing::config(ModelKind::exact, false));
   sim->reset({omega0, 1e-3, 2012});
   std::vector<Sample> out;
-  testing::run(*sim, 1.0 / 60.0, static_cast<long>(count - 1) * every, every,
-               [&](const Simulator& s) {
-                 const Diagnostics d = s.diagnostics();
-                 out.push_back({poinsot_state(book.principal_moments(),
-                                              rotation_from_corners(s.corners()), d.L),
-                                d.L});
-               });
+  testing::run(
+      *sim, 1.0 / 60.0, static_cast<long>(count - 1) * every, every, [&](const Simulator& s) {
+        const Diagnostics d = s.diagnostics();
+        out.push_back(
+            {poinsot_state(book.principal_moments(), rotation_from_corners(s.corners()), d.L),
+             d.L});
+      });
   return out;
 }
 

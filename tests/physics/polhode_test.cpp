@@ -6,12 +6,12 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <vector>
-#include <functional>
 #include <algorithm>
+#include <cmath>
+#include <functional>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
 namespace bookspin::physics {
 namespace {
@@ -141,9 +141,12 @@ TEST(Polhode, EnergiesAreTheDocumentedLevels) {
       for (const auto& c : polhode_family(moments, levels)) {
         if (c.separatrix) continue;
         const int side = c.points.front()[c.pole_axis] > 0.0 ? 0 : 1;
-        if (c.pole_axis == order[0]) smallest_axis[side].push_back(c.energy_ratio);
-        else if (c.pole_axis == order[2]) largest_axis[side].push_back(c.energy_ratio);
-        else ADD_FAILURE() << "a polhode around the intermediate axis";
+        if (c.pole_axis == order[0])
+          smallest_axis[side].push_back(c.energy_ratio);
+        else if (c.pole_axis == order[2])
+          largest_axis[side].push_back(c.energy_ratio);
+        else
+          ADD_FAILURE() << "a polhode around the intermediate axis";
       }
       for (int side = 0; side < 2; ++side) {
         ASSERT_EQ(smallest_axis[side].size(), static_cast<std::size_t>(levels));

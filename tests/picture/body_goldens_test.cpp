@@ -6,10 +6,10 @@
 
 #include <cstdlib>
 
+#include "clip/frame.hpp"
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
-#include "clip/frame.hpp"
 
 namespace bookspin::picture {
 namespace {

@@ -3,9 +3,9 @@
 // edges (−x), upright and unmirrored; plus a figure frame with both 3-D overlays on.
 #include <gtest/gtest.h>
 
+#include "clip/frame.hpp"
 #include "golden_store.hpp"
 #include "picture_scenes.hpp"
-#include "clip/frame.hpp"
 
 namespace bookspin::picture {
 namespace {

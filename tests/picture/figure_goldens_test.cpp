@@ -3,9 +3,9 @@
 // physics (a changed simulator moves the book) and the caption and banner overlays.
 #include <gtest/gtest.h>
 
+#include "clip/frame.hpp"
 #include "golden_store.hpp"
 #include "picture_scenes.hpp"
-#include "clip/frame.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -30,8 +30,7 @@ TEST(FigureGoldens, DivergingFiguresEndOnTheDivergenceBanner) {
   for (const char* name : {"fig07-particle-no-normalization", "fig08-particle-neither",
                            "fig10-matrix-no-normalization"}) {
     const scene::Scene scene = figure_scene(name);
-    EXPECT_TRUE(clip::simulate_to(scene, pinned_frames(scene.frames).back()).diverged_at)
-        << name;
+    EXPECT_TRUE(clip::simulate_to(scene, pinned_frames(scene.frames).back()).diverged_at) << name;
   }
 }
 

@@ -2,10 +2,10 @@
 // The golden files in tests/golden/ and the one switch that rewrites them:
 // BOOKSPIN_UPDATE_GOLDENS=1 (what `make update-goldens` sets). Without it the tests only
 // compare; a missing golden is a failure, never created silently.
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "common/rgba_image.hpp"
 #include "image_compare.hpp"

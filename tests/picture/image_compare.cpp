@@ -44,13 +44,15 @@ bool same_size(const RgbaImage& a, const RgbaImage& b) {
 std::string Comparison::summary(const Tolerance& tolerance) const {
   if (!same_size) return "the images differ in size";
   char text[200];
-  std::snprintf(text, sizeof text, "PSNR %.1f dB, %.2f%% of pixels differ by > %d/255 (allowed %.2f%%), max %d/255",
+  std::snprintf(text, sizeof text,
+                "PSNR %.1f dB, %.2f%% of pixels differ by > %d/255 (allowed %.2f%%), max %d/255",
                 psnr_db, 100 * differing_fraction, tolerance.channel_threshold,
                 100 * tolerance.max_differing_fraction, max_channel_difference);
   return text;
 }
 
-Comparison compare_images(const RgbaImage& actual, const RgbaImage& expected, const Tolerance& tolerance) {
+Comparison compare_images(const RgbaImage& actual, const RgbaImage& expected,
+                          const Tolerance& tolerance) {
   Comparison result;
   result.same_size = same_size(actual, expected);
   if (!result.same_size) {
@@ -71,8 +73,10 @@ Comparison compare_images(const RgbaImage& actual, const RgbaImage& expected, co
   return result;
 }
 
-RgbaImage diff_image(const RgbaImage& actual, const RgbaImage& expected, const Tolerance& tolerance) {
-  if (!same_size(actual, expected)) throw std::invalid_argument("diff_image: the images differ in size");
+RgbaImage diff_image(const RgbaImage& actual, const RgbaImage& expected,
+                     const Tolerance& tolerance) {
+  if (!same_size(actual, expected))
+    throw std::invalid_argument("diff_image: the images differ in size");
   RgbaImage diff(actual.width, actual.height);
   for (std::size_t i = 0; i < std::size_t(actual.width) * actual.height; ++i) {
     const std::uint8_t* e = &expected.pixels[4 * i];

@@ -1,9 +1,9 @@
 // The comparison itself, on small synthetic images.
+#include "image_compare.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "image_compare.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -23,7 +23,8 @@ TEST(ImageCompare, IdenticalImagesPassWithInfinitePsnr) {
 
 TEST(ImageCompare, DifferencesUpToTheThresholdAreNotCounted) {
   const Tolerance tolerance;
-  const Comparison c = compare_images(flat(10, 10, 100 + tolerance.channel_threshold), flat(10, 10, 100));
+  const Comparison c =
+      compare_images(flat(10, 10, 100 + tolerance.channel_threshold), flat(10, 10, 100));
   EXPECT_TRUE(c.passed);
   EXPECT_EQ(c.differing_pixels, 0);
   EXPECT_EQ(c.max_channel_difference, tolerance.channel_threshold);

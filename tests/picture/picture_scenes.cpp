@@ -11,10 +11,10 @@
 #include <memory>
 #include <sstream>
 
-#include "golden_store.hpp"
-#include "output/png_writer.hpp"
 #include "charts/decoration.hpp"
 #include "clip/render_settings.hpp"
+#include "golden_store.hpp"
+#include "output/png_writer.hpp"
 
 namespace bookspin::picture {
 

@@ -2,12 +2,12 @@
 // way it should: anti-aliasing only at edges, anisotropy only on steeply seen faces.
 #include <gtest/gtest.h>
 
-#include "golden_store.hpp"
-#include "image_compare.hpp"
-#include "picture_scenes.hpp"
 #include "charts/decoration.hpp"
 #include "clip/frame.hpp"
 #include "clip/render_settings.hpp"
+#include "golden_store.hpp"
+#include "image_compare.hpp"
+#include "picture_scenes.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -28,10 +28,10 @@ TEST(RenderKeys, MsaaOffGivesJaggedEdgesOnly) {
 TEST(RenderKeys, AnisotropySettingReachesTheRenderer) {
   EXPECT_EQ(clip::render_settings_for(figure_scene("fig09-matrix-unstable-x")).max_anisotropy,
             render::kAutoAnisotropy);
-  EXPECT_EQ(clip::render_settings_for(
-                figure_scene("fig09-matrix-unstable-x", {"render.anisotropy=8"}))
-                .max_anisotropy,
-            8.0f);
+  EXPECT_EQ(
+      clip::render_settings_for(figure_scene("fig09-matrix-unstable-x", {"render.anisotropy=8"}))
+          .max_anisotropy,
+      8.0f);
 }
 
 }  // namespace

@@ -7,10 +7,10 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "clip/frame.hpp"
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
-#include "clip/frame.hpp"
 #include "render/face_images.hpp"
 
 namespace bookspin::picture {
@@ -103,8 +103,8 @@ TEST_F(Teeth, BookTurnedByThreeDegreesIsCaught) {
   const Eigen::Matrix3d turn =
       Eigen::AngleAxisd(3.0 * M_PI / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
   frame.pose.corners = turn * frame.pose.corners;
-  expect_caught(golden_name(kScene, index),
-                clip::render_frame(scene, renderer_for(scene), frame), "turned-3deg");
+  expect_caught(golden_name(kScene, index), clip::render_frame(scene, renderer_for(scene), frame),
+                "turned-3deg");
 }
 
 TEST_F(Teeth, NextFrameIsCaught) {

@@ -6,11 +6,11 @@
 
 #include <cmath>
 
-#include "golden_store.hpp"
-#include "picture_scenes.hpp"
 #include "charts/decoration.hpp"
 #include "clip/frame.hpp"
 #include "clip/render_settings.hpp"
+#include "golden_store.hpp"
+#include "picture_scenes.hpp"
 
 namespace bookspin::picture {
 namespace {

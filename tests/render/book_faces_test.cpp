@@ -1,10 +1,11 @@
 // The face mapping and the CPU mesh (no GL needed).
+#include "render/book_faces.hpp"
+
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
 
-#include "render/book_faces.hpp"
 #include "render/book_mesh.hpp"
 #include "render_test_util.hpp"
 
@@ -22,8 +23,8 @@ Eigen::Vector3d axis_vector(const FaceSpec& face) {
 
 TEST(BookFaces, MatchPhysicsDocSection1) {
   const std::pair<const char*, Eigen::Vector3d> expected[] = {
-      {"front", {0, 0, 1}}, {"back", {0, 0, -1}}, {"spine", {1, 0, 0}},
-      {"fore-edge", {-1, 0, 0}}, {"top", {0, 1, 0}}, {"bottom", {0, -1, 0}}};
+      {"front", {0, 0, 1}},      {"back", {0, 0, -1}}, {"spine", {1, 0, 0}},
+      {"fore-edge", {-1, 0, 0}}, {"top", {0, 1, 0}},   {"bottom", {0, -1, 0}}};
   for (const auto& [name, normal] : expected) {
     bool found = false;
     for (const FaceSpec& face : book_faces) {

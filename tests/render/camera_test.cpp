@@ -1,9 +1,10 @@
+#include "render/camera.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "render/camera.hpp"
 #include "render/render_error.hpp"
 
 namespace bookspin::render {
@@ -38,8 +39,8 @@ TEST(Camera, DefaultKeepsTheBoundingSphereInView) {
       // Fibonacci sphere directions.
       const double z = 1.0 - 2.0 * (i + 0.5) / 2000;
       const double phi = i * std::numbers::pi * (3.0 - std::sqrt(5.0));
-      const Eigen::Vector3d p =
-          1.75 * Eigen::Vector3d(std::sqrt(1 - z * z) * std::cos(phi), std::sqrt(1 - z * z) * std::sin(phi), z);
+      const Eigen::Vector3d p = 1.75 * Eigen::Vector3d(std::sqrt(1 - z * z) * std::cos(phi),
+                                                       std::sqrt(1 - z * z) * std::sin(phi), z);
       const Eigen::Vector3d ndc = to_ndc(camera, aspect, p);
       EXPECT_LT(ndc.head<2>().cwiseAbs().maxCoeff(), 1.0) << w << "x" << h;
       EXPECT_LT(std::abs(ndc.z()), 1.0);

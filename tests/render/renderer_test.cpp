@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <memory>
 
-#include "support/scratch.hpp"
 #include "output/png_writer.hpp"
 #include "render_test_util.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::render {
 namespace {

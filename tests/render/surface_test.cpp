@@ -13,10 +13,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "support/scratch.hpp"
 #include "output/png_writer.hpp"
 #include "render/renderer.hpp"
 #include "render_test_util.hpp"
+#include "support/scratch.hpp"
 #include "surface_meshes.hpp"
 
 namespace bookspin::render {

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "support/scratch.hpp"
 #include "physics/presets.hpp"
 #include "scene/scene.hpp"
 #include "scene_text.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::scene {
 namespace {

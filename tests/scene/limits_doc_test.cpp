@@ -129,22 +129,22 @@ TEST(LimitsTable, BoundsAreWhatTheReaderEnforces) {
   for (const Limit& limit : kLimits) {
     const std::string key(limit.key);
     SCOPED_TRACE(key);
-    const bool vector = key == "book.size" || key == "initial.angular_velocity" ||
-                        key == "render.camera_direction";
+    const bool vector =
+        key == "book.size" || key == "initial.angular_velocity" || key == "render.camera_direction";
     if (key == "initial.seed") continue;  // 2⁶³ − 1 is not a double; its bounds: below
     const double step = limit.integer ? 1.0 : 0.0;
-    const double below = step > 0        ? limit.min - step
+    const double below = step > 0         ? limit.min - step
                          : limit.min_open ? limit.min
                                           : std::nextafter(limit.min, -INFINITY);
     const double above = step > 0 ? limit.max + step : std::nextafter(limit.max, INFINITY);
     // 16 and the largest widths are even; a width of 15 or 7681 is odd, which says more.
     if (key != "render.width" && key != "render.height") {
-      EXPECT_NE(error_of(scene_with(limit, number_text(below, limit.integer), vector))
-                    .find(key + ": "),
-                std::string::npos);
-      EXPECT_NE(error_of(scene_with(limit, number_text(above, limit.integer), vector))
-                    .find(key + ": "),
-                std::string::npos);
+      EXPECT_NE(
+          error_of(scene_with(limit, number_text(below, limit.integer), vector)).find(key + ": "),
+          std::string::npos);
+      EXPECT_NE(
+          error_of(scene_with(limit, number_text(above, limit.integer), vector)).find(key + ": "),
+          std::string::npos);
     }
     if (!limit.min_open) {
       EXPECT_EQ(error_of(scene_with(limit, number_text(limit.min, limit.integer), vector)), "");
@@ -152,10 +152,11 @@ TEST(LimitsTable, BoundsAreWhatTheReaderEnforces) {
     EXPECT_EQ(error_of(scene_with(limit, number_text(limit.max, limit.integer), vector)), "");
     if (limit.smallest_nonzero > 0.0) {
       const double tiny = 0.99 * limit.smallest_nonzero / (vector ? std::sqrt(3.0) : 1.0);
-      EXPECT_NE(error_of(scene_with(limit, number_text(tiny, false), vector))
-                    .find(key + ": must be "),
-                std::string::npos);
-      EXPECT_EQ(error_of(scene_with(limit, number_text(limit.smallest_nonzero, false), vector)), "");
+      EXPECT_NE(
+          error_of(scene_with(limit, number_text(tiny, false), vector)).find(key + ": must be "),
+          std::string::npos);
+      EXPECT_EQ(error_of(scene_with(limit, number_text(limit.smallest_nonzero, false), vector)),
+                "");
     }
   }
   EXPECT_NE(error_of("[initial]\nseed = -1\n").find("initial.seed: "), std::string::npos);
@@ -165,25 +166,24 @@ TEST(LimitsTable, BoundsAreWhatTheReaderEnforces) {
 /// A scene without the key gets the table's default.
 TEST(LimitsTable, DefaultsAreWhatAMissingKeyGives) {
   const Scene s = parse("[scene]\nname = \"defaults\"\n");
-  const std::map<std::string, double> got{
-      {"model.spring_constant", s.model.spring_constant},
-      {"model.lattice_cells", s.model.lattice_cells},
-      {"book.mass", s.body.cage.mass},
-      {"initial.jiggle", s.initial.jiggle},
-      {"initial.seed", static_cast<double>(s.initial.seed)},
-      {"time.dt", s.dt},
-      {"time.steps_per_frame", s.steps_per_frame},
-      {"time.frames", s.frames},
-      {"render.width", s.render.width},
-      {"render.height", s.render.height},
-      {"render.fps", s.render.fps},
-      {"render.fov_y", s.render.fov_y_deg},
-      {"render.camera_distance", s.render.camera_distance},
-      {"render.crf", s.render.crf},
-      {"render.png_compression", s.render.png_compression},
-      {"render.anisotropy", s.render.anisotropy},
-      {"render.msaa", s.render.msaa},
-      {"render.webm_crf", s.render.webm_crf}};
+  const std::map<std::string, double> got{{"model.spring_constant", s.model.spring_constant},
+                                          {"model.lattice_cells", s.model.lattice_cells},
+                                          {"book.mass", s.body.cage.mass},
+                                          {"initial.jiggle", s.initial.jiggle},
+                                          {"initial.seed", static_cast<double>(s.initial.seed)},
+                                          {"time.dt", s.dt},
+                                          {"time.steps_per_frame", s.steps_per_frame},
+                                          {"time.frames", s.frames},
+                                          {"render.width", s.render.width},
+                                          {"render.height", s.render.height},
+                                          {"render.fps", s.render.fps},
+                                          {"render.fov_y", s.render.fov_y_deg},
+                                          {"render.camera_distance", s.render.camera_distance},
+                                          {"render.crf", s.render.crf},
+                                          {"render.png_compression", s.render.png_compression},
+                                          {"render.anisotropy", s.render.anisotropy},
+                                          {"render.msaa", s.render.msaa},
+                                          {"render.webm_crf", s.render.webm_crf}};
   const Scene phone = parse("[body]\nshape = \"phone\"\n");
   const Scene twice = parse("[body]\nshape = \"phone\"\nscale = 2.0\n");
   for (const Limit& limit : kLimits) {

@@ -79,5 +79,4 @@ inline std::string scene_path(const std::string& name) {
   return std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/" + name + ".toml";
 }
 
-
 }  // namespace bookspin::test

@@ -14,7 +14,8 @@ class FlipTimer {
   /// (value > 0) differs from the previous sample's.
   void sample(double t, double value) {
     if (has_previous_ && (value > 0.0) != (previous_value_ > 0.0) && value != previous_value_)
-      flips_.push_back(previous_t_ + (t - previous_t_) * previous_value_ / (previous_value_ - value));
+      flips_.push_back(previous_t_ +
+                       (t - previous_t_) * previous_value_ / (previous_value_ - value));
     previous_t_ = t;
     previous_value_ = value;
     has_previous_ = true;
