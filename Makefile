@@ -41,9 +41,10 @@ figures: bookspin
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-# The unit tier alone (tests/README.md): no package step, no GL, no program runs; seconds
-# once built.
+# The format check (scripts/check-format.sh), then the unit tier alone (tests/README.md): no
+# package step, no GL, no program runs; seconds once built.
 check:
+	bash scripts/check-format.sh
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j $(JOBS) --target unit_tests
 	cd $(BUILD) && ctest -L unit --output-on-failure -j $(JOBS)
