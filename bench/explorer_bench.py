@@ -147,8 +147,8 @@ def main():
     chromium, driver_path = find_browser()
     profile = tempfile.mkdtemp(prefix="bookspin-explorer-bench-")
     try:
-        with open_browser(chromium, driver_path, profile=profile, **EXPLORER_WINDOW) as driver:
-            driver.set_script_timeout(600)
+        with open_browser(chromium, driver_path, profile=profile, script_timeout=600,
+                          **EXPLORER_WINDOW) as driver:
             load(driver, f"{page.as_uri()}?scene={scene_name}")
             if driver.execute_script("return window.explorer.state().scene") != scene_name:
                 sys.exit(f"explorer_bench: the page has no scene {scene_name}")

@@ -29,8 +29,7 @@ def main():
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     chromium, driver_path = find_browser()
-    with open_browser(chromium, driver_path, **EXPLORER_WINDOW) as driver:
-        driver.set_script_timeout(600)
+    with open_browser(chromium, driver_path, script_timeout=600, **EXPLORER_WINDOW) as driver:
         for size in a.size or ["1280x720"]:
             w, h = (int(x) for x in size.split("x"))
             driver.set_window_size(w, h)

@@ -114,7 +114,7 @@ def serve(folder):
 
 @contextlib.contextmanager
 def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media=False,
-                 offline=False, exact_viewport=False, profile=None):
+                 offline=False, exact_viewport=False, profile=None, script_timeout=300):
     """Headless Chromium for the length of the with block; yields the Selenium driver and
     quits it after.
 
@@ -123,7 +123,9 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
     autoplay without a user gesture. offline: every request but those to 127.0.0.1 goes to a
     closed port. exact_viewport: the page's viewport set to `size` exactly through the DevTools
     protocol. profile: the user-data folder (default: a temporary one, removed after).
-    The browser's console is kept at every level: see console_errors()."""
+    The browser's console is kept at every level: see console_errors(). A script the test
+    runs in the page may take up to `script_timeout` seconds (Selenium's default, 30 s, is
+    too short for a long run of the physics on a loaded 2-core machine)."""
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
 
@@ -148,6 +150,7 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = webdriver.Chrome(service=Service(executable_path=driver_path), options=options)
     try:
+        driver.set_script_timeout(script_timeout)
         if exact_viewport:
             driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
                                    {"width": size[0], "height": size[1], "deviceScaleFactor": 1,
