@@ -21,6 +21,7 @@
 #include "clip/render_settings.hpp"
 #include "output/mp4_encoder.hpp"
 #include "output/png_writer.hpp"
+#include "products/clip.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::bench {
@@ -61,13 +62,13 @@ clip::ClipRequest clip_request(const BenchContext& c, const std::string& name, i
                                std::vector<std::string> extra = {}) {
   std::vector<std::string> overrides = size_overrides(width, height);
   overrides.insert(overrides.end(), extra.begin(), extra.end());
-  clip::ClipRequest request;
-  request.scene = scene::parse_scene(c.options.scene_path, overrides);
-  request.scene.frames = frames;
-  request.out_dir = c.scratch / name;
-  request.write_png = png;
-  request.jobs = c.options.jobs;
-  return request;
+  products::ClipJob job;
+  job.scene = scene::parse_scene(c.options.scene_path, overrides);
+  job.scene.frames = frames;
+  job.out_dir = c.scratch / name;
+  job.write_png = png;
+  job.jobs = c.options.jobs;
+  return products::clip_request(job);
 }
 
 /// Wall and CPU time of a whole clip (start-up, every frame, finishing the files).
@@ -75,7 +76,8 @@ Timing timed_render(const clip::ClipRequest& request) {
   const Stopwatch stopwatch;
   clip::render_clip(request);
   const Timing timing = stopwatch.elapsed();
-  std::filesystem::remove_all(request.out_dir);  // leave the disk as the next run found it
+  // Leave the disk as the next run found it (the clip's folder under the scratch folder).
+  std::filesystem::remove_all(request.paths.mp4.parent_path());
   return timing;
 }
 

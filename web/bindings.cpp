@@ -73,7 +73,7 @@ std::vector<T> numbers(const val& spec, const char* key, std::size_t count) {
   return v;
 }
 
-/// The Body exactly as bookspin built it (src/clip/explorer_page.hpp, `body`): shape, mass,
+/// The Body exactly as bookspin built it (src/products/explorer.hpp, `body`): shape, mass,
 /// principal moments about x, y, z, cage size, volume, the surface 3×V (principal frame) with its
 /// triangles 3×N and face colours 3×N flattened column by column, smooth. Nothing is computed
 /// again, so the page starts from bookspin's own doubles (a mesh body needs no mesh reader).

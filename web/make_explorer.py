@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Inlines the explorer's program into the page's shell: the physics (emscripten's single-file
 JS with the WebAssembly inside) and the esbuild bundle of the app go into web/src/index.html.
-The scenes' data marker stays: `bookspin explore` fills it (src/clip/explorer_page.hpp).
+The scenes' data marker stays: `bookspin explore` fills it (src/products/explorer.hpp).
 
 Usage: make_explorer.py INDEX_HTML WASM_JS BUNDLE_JS OUT_HTML
 """

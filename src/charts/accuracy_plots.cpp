@@ -104,11 +104,10 @@ overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistor
 }
 
 std::vector<std::filesystem::path> write_accuracy_plots(
-    const std::filesystem::path& out_dir, const std::string& scene_name,
-    const analysis::AccuracySettings& settings, const physics::ExactRotation& exact,
-    const std::vector<analysis::AccuracyRow>& rows) {
+    const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
+    const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows) {
   std::vector<std::filesystem::path> written;
-  const auto work_png = out_dir / (scene_name + "-work-precision.png");
+  const auto& work_png = paths.work_precision_png;
   output::write_png(work_png,
                     overlay::plot_image(work_precision_plot(rows, settings.flips), 1400, 900));
   written.push_back(work_png);
@@ -118,8 +117,8 @@ std::vector<std::filesystem::path> write_accuracy_plots(
     histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
                                                  kLongTimeFlips, kLongTimeWindows));
   }
-  const auto energy_png = out_dir / (scene_name + "-energy.png");
-  const auto energy_csv = out_dir / (scene_name + "-energy.csv");
+  const auto& energy_png = paths.energy_png;
+  const auto& energy_csv = paths.energy_csv;
   write_energy_csv(energy_csv, histories);
   output::write_png(
       energy_png, overlay::plot_image(long_time_energy_plot(histories, kLongTimeFlips), 1400, 900));

@@ -33,12 +33,18 @@ inline constexpr double kLongTimeFlips = 100.0;
 inline constexpr double kLongTimeDt = 1.0 / 60.0;
 inline constexpr int kLongTimeWindows = 400;
 
-/// Runs the long-time energy histories and writes, into `out_dir`, <scene>-work-precision.png
-/// (from `rows`), <scene>-energy.png and <scene>-energy.csv (t, one column per method).
-/// Returns the paths written. Throws OutputError when a file cannot be written.
+/// Where write_accuracy_plots() writes (the accuracy product names them).
+struct AccuracyPlotPaths {
+  std::filesystem::path work_precision_png;  ///< error against cost, from the rows
+  std::filesystem::path energy_png;          ///< the long-time energy plot
+  std::filesystem::path energy_csv;          ///< its data: t, one column per method
+};
+
+/// Runs the long-time energy histories and writes the work–precision plot (from `rows`), the
+/// energy plot and its CSV. Returns the paths written. Throws OutputError when a file cannot
+/// be written.
 std::vector<std::filesystem::path> write_accuracy_plots(
-    const std::filesystem::path& out_dir, const std::string& scene_name,
-    const analysis::AccuracySettings& settings, const physics::ExactRotation& exact,
-    const std::vector<analysis::AccuracyRow>& rows);
+    const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
+    const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows);
 
 }  // namespace bookspin::charts

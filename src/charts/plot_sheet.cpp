@@ -131,12 +131,11 @@ PlotSheet plot_sheet_for(const scene::Scene& scene) {
   return {std::move(lines), std::move(plots)};
 }
 
-std::filesystem::path write_plot_sheet(const PlotRequest& request) {
+void write_plot_sheet(const PlotRequest& request) {
   const PlotSheet sheet = plot_sheet_for(request.scene);
-  const auto path = request.out_dir / (request.scene.name + "-plot.png");
-  output::prepare_output_dir(request.out_dir);
-  output::write_png(path, plot_sheet(sheet.lines, sheet.plots, request.width, request.height));
-  return path;
+  output::prepare_output_dir(request.png.parent_path());
+  output::write_png(request.png,
+                    plot_sheet(sheet.lines, sheet.plots, request.width, request.height));
 }
 
 }  // namespace bookspin::charts

@@ -11,10 +11,10 @@
 namespace bookspin::charts {
 
 struct PlotRequest {
-  scene::Scene scene;             ///< a single or a comparison scene (every tile is plotted)
-  std::filesystem::path out_dir;  ///< OUT
-  int width = 1600;               ///< pixels
-  int height = 1000;              ///< pixels
+  scene::Scene scene;         ///< a single or a comparison scene (every tile is plotted)
+  std::filesystem::path png;  ///< the sheet's file (the plot product names it)
+  int width = 1600;           ///< pixels
+  int height = 1000;          ///< pixels
 };
 
 /// What a plot sheet shows: its header lines and its plots.
@@ -29,9 +29,8 @@ struct PlotSheet {
 PlotSheet plot_sheet_for(const scene::Scene& scene);
 
 /// Simulates the scene (every tile of a comparison) to its end or divergence and writes
-/// OUT/<scene>-plot.png: a header (title, model line, divergences) and the panel's plots
-/// (body-frame ω, E/E0 − 1, shape error) against time. Returns the path. Throws
-/// OutputError.
-std::filesystem::path write_plot_sheet(const PlotRequest& request);
+/// request.png: a header (title, model line, divergences) and the panel's plots
+/// (body-frame ω, E/E0 − 1, shape error) against time. Throws OutputError.
+void write_plot_sheet(const PlotRequest& request);
 
 }  // namespace bookspin::charts

@@ -2,21 +2,21 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
-#include "jobs/accuracy_report.hpp"
+#include "products/accuracy.hpp"
 
 namespace bookspin::cli {
 
 int accuracy_command(const AccuracyOptions& options) {
-  jobs::AccuracyRequest request;
-  request.scene = scene::parse_scene(options.scene_path, options.overrides);
-  request.out_dir = options.out_dir;
-  request.flips = options.flips;
-  request.dts = options.dts;
-  request.on_line = [](const std::string& line) {
+  products::AccuracyJob job;
+  job.request.scene = scene::parse_scene(options.scene_path, options.overrides);
+  job.request.flips = options.flips;
+  job.request.dts = options.dts;
+  job.request.on_line = [](const std::string& line) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   };
-  for (const auto& path : jobs::run_accuracy(request)) std::printf("wrote %s\n", path.c_str());
+  job.out_dir = options.out_dir;
+  for (const auto& path : products::make_accuracy(job)) std::printf("wrote %s\n", path.c_str());
   return kExitOk;
 }
 

@@ -228,6 +228,11 @@ void cap_gl_threads(const CLI::App& cli, int jobs) {
     setenv("LP_NUM_THREADS", std::to_string(jobs).c_str(), /*overwrite=*/0);
 }
 
+/// `--frames N` is `--set time.frames=N`, after the user's own --set (so it wins).
+void frames_as_override(int frames, std::vector<std::string>& overrides) {
+  if (frames > 0) overrides.push_back("time.frames=" + std::to_string(frames));
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
@@ -264,6 +269,8 @@ int run_cli(int argc, char** argv) {
     return report(std::string(e.what()) + " (see bookspin --help)", kExitUsage);
   }
   cap_gl_threads(cli, render.jobs);
+  frames_as_override(render.frames, render.overrides);
+  frames_as_override(export_options.frames, export_options.overrides);
   const int status = run_guarded([&] {
     if (cli.got_subcommand("simulate")) return simulate_command(simulate);
     if (cli.got_subcommand("render")) return render_command(render);

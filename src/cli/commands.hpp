@@ -5,7 +5,6 @@
 #include <string>
 #include <vector>
 
-#include "cache/run_cached.hpp"
 #include "cli/run_guarded.hpp"
 
 namespace bookspin::cli {
@@ -22,7 +21,7 @@ struct RenderArgs {
   std::string scene_path;
   std::vector<std::string> overrides;
   std::string out_dir = "out";
-  int frames = 0;  ///< > 0 overrides time.frames
+  int frames = 0;  ///< --frames: > 0 is appended to `overrides` as time.frames by run_cli
   bool no_png = false;
   int jobs = 0;              ///< worker threads; 0 = number of cores
   int png_compression = -1;  ///< deflate level 0–9 for the frames; −1 = render.png_compression
@@ -36,9 +35,9 @@ struct RenderArgs {
 /// Throws InputError "--format: …" for an empty list, an unknown or a repeated name.
 std::vector<std::string> parse_format_list(const std::string& list);
 
-/// Renders a scene to out/<name>.mp4, out/<name>/frames/ and out/<name>/diagnostics.csv,
-/// then writes out/<name>/manifest.json (output/manifest.hpp). Prints "up to date: <name>"
-/// and renders nothing when the manifest matches this run and its outputs are all there.
+/// Renders a scene's clip (products::make_clip: its videos, frames, diagnostics CSVs and
+/// manifest). Prints "up to date: <name>" and renders nothing when the manifest matches this
+/// run and its outputs are all there.
 int render_command(const RenderArgs& options);
 
 struct AccuracyOptions {
@@ -93,9 +92,9 @@ struct InertiaOptions {
 /// principal frame (docs/physics.md §11); warnings on stderr.
 int inertia_command(const InertiaOptions& options);
 
-/// cache::run_cached(job) for the output called `name`, telling the user: "up to date: NAME"
-/// on stdout when nothing was made, and on stderr why an existing manifest did not match.
-cache::CacheOutcome run_cached(const cache::CachedJob& job, const std::string& name);
+/// Every product's on_remake: tells the user on stderr why the existing manifest of the output
+/// called `name` did not match ("bookspin: note: NAME: making it again: REASON").
+void remake_note(const std::string& name, const std::string& reason);
 
 struct SweepOptions {
   std::string scene_path;              ///< empty with --merge
@@ -118,7 +117,7 @@ struct ExportOptions {
   std::string scene_path;
   std::vector<std::string> overrides;
   std::string out_dir = "out";
-  int frames = 0;     ///< > 0 overrides time.frames
+  int frames = 0;     ///< --frames: > 0 is appended to `overrides` as time.frames by run_cli
   bool gltf = false;  ///< --gltf: the only format so far, and required
 };
 

@@ -1,28 +1,15 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "clip/explorer_page.hpp"
-#include "output/output_dir.hpp"
+#include "products/explorer.hpp"
 
 namespace bookspin::cli {
 
-namespace {
-
-/// web/explorer-shell.html in the folder of the running program (the build folder, where
-/// web/build.sh BUILD_DIR writes it).
-std::filesystem::path default_shell() {
-  std::error_code ec;
-  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return (ec ? std::filesystem::path(".") : exe.parent_path()) / "web" / clip::kExplorerShellName;
-}
-
-}  // namespace
-
 int explore_command(const ExploreOptions& options) {
-  clip::ExplorerPageRequest request;
+  products::ExplorerPageRequest request;
   request.out_dir = options.out_dir;
   if (options.shell.empty()) {
-    request.shell = default_shell();
+    request.shell = products::default_explorer_shell();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(request.shell, ec)) {
       std::cerr << "bookspin: error: the explorer page's program is not built: no "
@@ -40,8 +27,7 @@ int explore_command(const ExploreOptions& options) {
       std::cerr << "bookspin: warning: " << warning << '\n';
     request.scenes.push_back(std::move(scene));
   }
-  output::prepare_output_dir(request.out_dir);
-  const clip::ExplorerPageResult result = clip::write_explorer_page(request);
+  const products::ExplorerPageResult result = products::write_explorer_page(request);
   std::cout << "explorer: " << result.path.string() << " (" << request.scenes.size() << " scenes, "
             << result.bytes << " bytes)" << std::endl;
   return kExitOk;

@@ -1,8 +1,8 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "clip/export_gltf.hpp"
 #include "jobs/lattice_note.hpp"
+#include "products/gltf.hpp"
 
 namespace bookspin::cli {
 
@@ -12,8 +12,7 @@ int export_command(const ExportOptions& options) {
     std::cerr << "bookspin: warning: " << warning << '\n';
   if (const std::string note = jobs::lattice_note(scene); !note.empty())
     std::cerr << "bookspin: " << note << '\n';
-  if (options.frames > 0) scene.frames = options.frames;
-  const clip::GltfExportResult result = clip::export_gltf(
+  const products::GltfExportResult result = products::make_gltf(
       scene, options.out_dir,
       [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; });
   if (result.diverged_at) {

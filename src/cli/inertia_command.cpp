@@ -7,77 +7,8 @@
 #include "cli/commands.hpp"
 #include "common/errors.hpp"
 #include "jobs/mesh_inertia.hpp"
-#include "output/finite_number.hpp"
 
 namespace bookspin::cli {
-
-namespace {
-
-/// The shortest text that reads back as exactly `x` (std::to_chars), valid JSON: finite, or
-/// an internal error naming the field (output/finite_number.hpp).
-std::string exact(double x, std::string_view field) {
-  return output::finite_text(x, "inertia JSON field " + std::string(field));
-}
-
-/// Ten significant digits, for people.
-std::string readable(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.10g", x);
-  return buffer;
-}
-
-template <typename Format>
-std::string row(const Eigen::RowVector3d& v, Format format, const char* sep) {
-  return format(v(0)) + sep + format(v(1)) + sep + format(v(2));
-}
-
-// Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
-std::string json_vector(const Eigen::RowVector3d& v, std::string_view field) {
-  const auto number = [field](double x) { return exact(x, field); };
-  std::string out;
-  return out.append("[").append(row(v, number, ", ")).append("]");
-}
-
-std::string json_matrix(const Eigen::Matrix3d& m, std::string_view field) {
-  std::string out;
-  return out.append("[")
-      .append(json_vector(m.row(0), field))
-      .append(", ")
-      .append(json_vector(m.row(1), field))
-      .append(", ")
-      .append(json_vector(m.row(2), field))
-      .append("]");
-}
-
-void print_json(const physics::MassProperties& p) {
-  std::cout << "{\"volume\": " << exact(p.volume, "volume")
-            << ", \"mass\": " << exact(p.mass, "mass") << ", \"center_of_mass\": "
-            << json_vector(p.center_of_mass.transpose(), "center_of_mass")
-            << ", \"inertia\": " << json_matrix(p.I_body, "inertia") << ", \"principal_moments\": "
-            << json_vector(p.principal_moments.transpose(), "principal_moments")
-            << ", \"principal_axes\": " << json_matrix(p.principal_axes, "principal_axes") << "}\n";
-}
-
-void print_text(const std::string& file, const physics::MassProperties& p) {
-  const auto line = [](const Eigen::RowVector3d& v) { return "  " + row(v, readable, "  "); };
-  std::cout << "mesh               " << file << " (" << p.shells
-            << (p.shells == 1 ? " shell)" : " shells)") << '\n'
-            << "volume             " << readable(p.volume) << '\n'
-            << "mass               " << readable(p.mass) << '\n'
-            << "centre of mass     " << row(p.center_of_mass.transpose(), readable, "  ") << '\n'
-            << "inertia about the centre of mass, mesh axes:\n"
-            << line(p.I_body.row(0)) << '\n'
-            << line(p.I_body.row(1)) << '\n'
-            << line(p.I_body.row(2)) << '\n'
-            << "principal moments  " << row(p.principal_moments.transpose(), readable, "  ")
-            << "  (ascending)\n"
-            << "principal axes, one row per moment (right-handed):\n"
-            << line(p.principal_axes.row(0)) << '\n'
-            << line(p.principal_axes.row(1)) << '\n'
-            << line(p.principal_axes.row(2)) << '\n';
-}
-
-}  // namespace
 
 int inertia_command(const InertiaOptions& options) {
   jobs::InertiaRequest request;
@@ -110,9 +41,9 @@ int inertia_command(const InertiaOptions& options) {
   for (const auto& warning : p.warnings)
     std::cerr << "bookspin: warning: " << options.mesh_path << ": " << warning << '\n';
   if (options.json) {
-    print_json(p);
+    std::cout << jobs::inertia_json(p);
   } else {
-    print_text(options.mesh_path, p);
+    std::cout << jobs::inertia_table(options.mesh_path, p);
   }
   return kExitOk;
 }

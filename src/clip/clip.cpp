@@ -61,7 +61,7 @@ int stop_signal(const ClipRequest& request) {
 ClipResult render_single(const ClipRequest& request) {
   const scene::Scene& scene = request.scene;
   render::Renderer renderer(render_settings_for(scene));
-  output::ClipSinks sinks(clip_paths(request.out_dir, scene.name), sink_options(request));
+  output::ClipSinks sinks(request.paths, sink_options(request));
   if (request.on_note && !sinks.encoder_message().empty()) request.on_note(sinks.encoder_message());
 
   ClipResult result;
@@ -90,7 +90,7 @@ ClipResult render_single(const ClipRequest& request) {
 }  // namespace
 
 ClipResult render_clip(const ClipRequest& request) {
-  output::prepare_output_dir(request.out_dir);
+  output::prepare_output_dir(request.paths.mp4.parent_path());
   if (!request.scene.compare.empty()) return render_comparison(request);
   return render_single(request);
 }

@@ -29,8 +29,4 @@ output::SinkOptions sink_options(const ClipRequest& request) {
   return s;
 }
 
-output::ClipPaths clip_paths(const std::filesystem::path& out_dir, const std::string& name) {
-  return {out_dir / (name + ".mp4"), out_dir / name / "frames", out_dir / name / "diagnostics.csv"};
-}
-
 }  // namespace bookspin::clip

@@ -1,6 +1,7 @@
 #pragma once
 // What a caller asks of the pipeline for one clip, and what it gets back. No command-line
-// types: `bookspin render`, the bench and tests build a ClipRequest and call render_clip().
+// types: the clip product (products/clip.hpp), the bench and tests build a ClipRequest and
+// call render_clip().
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -13,9 +14,13 @@
 namespace bookspin::clip {
 
 struct ClipRequest {
-  scene::Scene scene;             ///< validated; scene.frames is the clip's length
-  std::filesystem::path out_dir;  ///< OUT: OUT/<name>.mp4, OUT/<name>/frames/, CSVs
-  bool write_png = true;          ///< false: MP4 and CSV only
+  scene::Scene scene;  ///< validated; scene.frames is the clip's length
+  /// Where the videos, frames and the diagnostics CSV (a comparison's first tile's) go: the
+  /// clip product's layout (products/clip.hpp).
+  output::ClipPaths paths;
+  /// A comparison: the diagnostics CSVs of its tiles after the first, in tile order.
+  std::vector<std::filesystem::path> tile_csvs;
+  bool write_png = true;     ///< false: MP4 and CSV only
   int png_compression = -1;  ///< deflate level 0–9 for the frames; −1: render.png_compression
   int jobs = 0;              ///< worker threads (PNG, encoder); 0: every core
   /// Called once before the first frame with a note for the user (the encoder fell back to
@@ -49,8 +54,5 @@ output::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs);
 
 /// Sink settings from the scene's render.* keys and the request's options.
 output::SinkOptions sink_options(const ClipRequest& request);
-
-/// OUT/<name>.mp4, OUT/<name>/frames and OUT/<name>/diagnostics.csv.
-output::ClipPaths clip_paths(const std::filesystem::path& out_dir, const std::string& name);
 
 }  // namespace bookspin::clip

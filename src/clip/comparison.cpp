@@ -12,6 +12,7 @@
 #include "clip/compare_layout.hpp"
 #include "clip/frame.hpp"
 #include "clip/render_settings.hpp"
+#include "common/errors.hpp"
 #include "output/diagnostics_csv.hpp"
 #include "output/output_dir.hpp"
 #include "overlay/cairo_canvas.hpp"
@@ -53,11 +54,6 @@ class TileCsv {
   output::AtomicFile file_;
   std::ofstream out_;
 };
-
-std::filesystem::path csv_path(const std::filesystem::path& out, const scene::Scene& scene,
-                               const scene::CompareTile& tile) {
-  return out / scene.name / ("diagnostics-" + tile.name + ".csv");
-}
 
 void draw_header(cairo_t* cr, const PixelRect& strip, const std::string& title, double t) {
   const double font = 0.5 * strip.height;
@@ -159,7 +155,6 @@ int render_loop(const ClipRequest& request, const CompareLayout& layout, render:
 
 ClipResult render_comparison(const ClipRequest& request) {
   const scene::Scene& scene = request.scene;
-  const std::filesystem::path& out = request.out_dir;
   const CompareLayout layout =
       compare_layout(static_cast<int>(scene.compare.size()), scene.render.width,
                      scene.render.height, scene.render.panel);
@@ -168,13 +163,11 @@ ClipResult render_comparison(const ClipRequest& request) {
     tiles.push_back(std::make_unique<TileState>(tile_scene(scene, tile)));
   render::Renderer renderer(
       render_settings_for(tiles.front()->scene, layout.tile_width, layout.tile_height, 1.0));
-  output::ClipPaths paths{out / (scene.name + ".mp4"), out / scene.name / "frames",
-                          csv_path(out, scene, scene.compare[0])};
-  output::ClipSinks sinks(paths, sink_options(request));
+  BOOKSPIN_ASSERT(request.tile_csvs.size() + 1 == scene.compare.size());
+  output::ClipSinks sinks(request.paths, sink_options(request));
   if (request.on_note && !sinks.encoder_message().empty()) request.on_note(sinks.encoder_message());
   std::vector<std::unique_ptr<TileCsv>> csvs;
-  for (std::size_t i = 1; i < scene.compare.size(); ++i)
-    csvs.push_back(std::make_unique<TileCsv>(csv_path(out, scene, scene.compare[i])));
+  for (const auto& path : request.tile_csvs) csvs.push_back(std::make_unique<TileCsv>(path));
   ClipResult result;
   // On a stop, the sinks' and CSVs' destructors remove every temporary.
   if ((result.signal = render_loop(request, layout, renderer, tiles, sinks, csvs)) != 0)

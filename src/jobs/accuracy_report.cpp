@@ -128,13 +128,12 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
       say(table_row(rows.back()));
     }
   }
-  const std::filesystem::path& out = request.out_dir;
-  output::prepare_output_dir(out);
-  std::vector<std::filesystem::path> written{out / (scene.name + "-accuracy.csv"),
-                                             out / (scene.name + "-accuracy.png")};
+  const AccuracyPaths& paths = request.paths;
+  output::prepare_output_dir(paths.csv.parent_path());
+  std::vector<std::filesystem::path> written{paths.csv, paths.png};
   write_csv(written[0], rows);
   output::write_png(written[1], overlay::plot_image(accuracy_plot(rows, request.flips), 1400, 900));
-  for (const auto& path : charts::write_accuracy_plots(out, scene.name, settings, exact, rows))
+  for (const auto& path : charts::write_accuracy_plots(paths.plots, settings, exact, rows))
     written.push_back(path);
   return written;
 }

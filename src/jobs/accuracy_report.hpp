@@ -6,13 +6,21 @@
 #include <string>
 #include <vector>
 
+#include "charts/accuracy_plots.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
 
+/// Where the report goes (the accuracy product names every path).
+struct AccuracyPaths {
+  std::filesystem::path csv;  ///< one row per method and dt
+  std::filesystem::path png;  ///< error against dt, log–log
+  charts::AccuracyPlotPaths plots;
+};
+
 struct AccuracyRequest {
   scene::Scene scene;  ///< the book, initial spin and model toggles
-  std::filesystem::path out_dir;
+  AccuracyPaths paths;
   double flips = 10.0;      ///< run length in exact flip periods
   std::vector<double> dts;  ///< time steps to try, time units
   /// Receives the table, a line at a time as each row is measured (no newline).
@@ -22,9 +30,8 @@ struct AccuracyRequest {
 /// The most steps one method may take at one dt (flips × flip period / dt).
 inline constexpr double kMaxAccuracySteps = 1e8;
 
-/// Measures every method of analysis::all_methods() at every dt and writes, under OUT,
-/// <scene>-accuracy.csv, <scene>-accuracy.png (error against dt, log–log),
-/// <scene>-work-precision.png, <scene>-energy.png and <scene>-energy.csv. Returns the paths
+/// Measures every method of analysis::all_methods() at every dt and writes the CSV, the
+/// error plot, the work–precision plot, the energy plot and its CSV. Returns the paths
 /// written. The CSV's flip_period and flip_period_error cells are empty where fewer than two
 /// flips were seen. Throws InputError (the motion has no flip period, a dt that makes fewer
 /// than 1 or more than kMaxAccuracySteps steps), OutputError.

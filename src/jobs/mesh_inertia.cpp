@@ -1,10 +1,13 @@
 #include "jobs/mesh_inertia.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 #include <string>
 
 #include "common/errors.hpp"
 #include "mesh/mesh.hpp"
+#include "output/finite_number.hpp"
 
 namespace bookspin::jobs {
 
@@ -19,6 +22,77 @@ physics::MassProperties mesh_inertia(const InertiaRequest& request) {
       physics::mass_properties(mesh.vertices, mesh.triangles, by_mass ? 1.0 : request.density);
   if (!result.ok()) throw InputError(file + ": " + result.error);
   return by_mass ? physics::with_mass(result.properties, *request.mass) : result.properties;
+}
+
+namespace {
+
+/// The shortest text that reads back as exactly `x` (std::to_chars), valid JSON: finite, or
+/// an internal error naming the field (output/finite_number.hpp).
+std::string exact(double x, std::string_view field) {
+  return output::finite_text(x, "inertia JSON field " + std::string(field));
+}
+
+/// Ten significant digits, for people.
+std::string readable(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.10g", x);
+  return buffer;
+}
+
+template <typename Format>
+std::string row(const Eigen::RowVector3d& v, Format format, const char* sep) {
+  return format(v(0)) + sep + format(v(1)) + sep + format(v(2));
+}
+
+// Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
+std::string json_vector(const Eigen::RowVector3d& v, std::string_view field) {
+  const auto number = [field](double x) { return exact(x, field); };
+  std::string out;
+  return out.append("[").append(row(v, number, ", ")).append("]");
+}
+
+std::string json_matrix(const Eigen::Matrix3d& m, std::string_view field) {
+  std::string out;
+  return out.append("[")
+      .append(json_vector(m.row(0), field))
+      .append(", ")
+      .append(json_vector(m.row(1), field))
+      .append(", ")
+      .append(json_vector(m.row(2), field))
+      .append("]");
+}
+
+}  // namespace
+
+std::string inertia_json(const physics::MassProperties& p) {
+  std::ostringstream out;
+  out << "{\"volume\": " << exact(p.volume, "volume") << ", \"mass\": " << exact(p.mass, "mass")
+      << ", \"center_of_mass\": " << json_vector(p.center_of_mass.transpose(), "center_of_mass")
+      << ", \"inertia\": " << json_matrix(p.I_body, "inertia") << ", \"principal_moments\": "
+      << json_vector(p.principal_moments.transpose(), "principal_moments")
+      << ", \"principal_axes\": " << json_matrix(p.principal_axes, "principal_axes") << "}\n";
+  return out.str();
+}
+
+std::string inertia_table(const std::string& file, const physics::MassProperties& p) {
+  const auto line = [](const Eigen::RowVector3d& v) { return "  " + row(v, readable, "  "); };
+  std::ostringstream out;
+  out << "mesh               " << file << " (" << p.shells
+      << (p.shells == 1 ? " shell)" : " shells)") << '\n'
+      << "volume             " << readable(p.volume) << '\n'
+      << "mass               " << readable(p.mass) << '\n'
+      << "centre of mass     " << row(p.center_of_mass.transpose(), readable, "  ") << '\n'
+      << "inertia about the centre of mass, mesh axes:\n"
+      << line(p.I_body.row(0)) << '\n'
+      << line(p.I_body.row(1)) << '\n'
+      << line(p.I_body.row(2)) << '\n'
+      << "principal moments  " << row(p.principal_moments.transpose(), readable, "  ")
+      << "  (ascending)\n"
+      << "principal axes, one row per moment (right-handed):\n"
+      << line(p.principal_axes.row(0)) << '\n'
+      << line(p.principal_axes.row(1)) << '\n'
+      << line(p.principal_axes.row(2)) << '\n';
+  return out.str();
 }
 
 }  // namespace bookspin::jobs

@@ -3,6 +3,7 @@
 // §11), and turn the physics' error reasons into input errors naming the file.
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "physics/mass_properties.hpp"
 
@@ -21,5 +22,14 @@ struct InertiaRequest {
 /// mesh::load_mesh) or a mesh that bounds no solid: "open mesh: N boundary edges",
 /// "non-manifold mesh: …", "inconsistent winding: …", "zero volume: …".
 physics::MassProperties mesh_inertia(const InertiaRequest& request);
+
+/// `p` as one line of JSON: volume, mass, center_of_mass, inertia (3×3 rows), principal_moments,
+/// principal_axes (3×3, one row per moment), each number the shortest text that reads back
+/// exactly. A non-finite number is an internal error naming the field (output/finite_number.hpp).
+std::string inertia_json(const physics::MassProperties& p);
+
+/// `p` as the table `bookspin inertia` prints for people (ten significant digits), headed by
+/// the mesh file's name and its shell count.
+std::string inertia_table(const std::string& file, const physics::MassProperties& p);
 
 }  // namespace bookspin::jobs

@@ -87,11 +87,6 @@ std::string shard_meta(const SweepTable& table, std::size_t points,
   return meta;
 }
 
-std::filesystem::path shard_path(const std::filesystem::path& dir, const std::string& scene, int k,
-                                 int n) {
-  return dir / (scene + "-sweep.shard-" + std::to_string(k) + "-of-" + std::to_string(n) + ".csv");
-}
-
 /// The header lines of the plot image: the sweep, then its ranges.
 std::vector<std::string> plot_header(const SweepTable& table) {
   std::vector<std::string> lines{"Sweep of " + table.scene_name + ": " +
@@ -106,10 +101,10 @@ std::vector<std::string> plot_header(const SweepTable& table) {
 }
 
 std::vector<std::filesystem::path> write_full_outputs(const SweepTable& table,
-                                                      const std::filesystem::path& out_dir) {
-  output::prepare_output_dir(out_dir);
-  const auto csv = out_dir / (table.scene_name + "-sweep.csv");
-  const auto png = out_dir / (table.scene_name + "-sweep.png");
+                                                      const SweepPaths& paths) {
+  const std::filesystem::path& csv = paths.csv;
+  const std::filesystem::path& png = paths.png;
+  output::prepare_output_dir(csv.parent_path());
   {
     output::AtomicTextFile file(csv);
     write_sweep_csv(table, file.stream());
@@ -297,12 +292,12 @@ SweepResult run_sweep(const SweepRequest& request) {
     table.rows.emplace_back(indices[r],
                             row_cells(grid.point(indices[r]), table.measures, results[r]));
   if (!sharded) {
-    result.written = write_full_outputs(table, request.out_dir);
+    result.written = write_full_outputs(table, request.layout(table.scene_name));
     return result;
   }
-  output::prepare_output_dir(request.out_dir);
   const auto path =
-      shard_path(request.out_dir, table.scene_name, request.shard_index, request.shard_count);
+      request.layout(table.scene_name).shard(request.shard_index, request.shard_count);
+  output::prepare_output_dir(path.parent_path());
   output::AtomicTextFile file(path);
   file.stream() << kShardMagic << request.shard_index << " of " << request.shard_count << ": "
                 << shard_meta(table, grid.size(),
@@ -381,7 +376,7 @@ bool is_number(const std::string& cell) {
 }  // namespace
 
 std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem::path>& shards,
-                                               const std::filesystem::path& out_dir) {
+                                               const SweepLayout& layout) {
   if (shards.empty()) throw InputError("sweep --merge: give the shard CSV files");
   SweepTable table;
   ShardLine first_line;  // the first file's, which every other must repeat
@@ -472,15 +467,14 @@ std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem
     if (rows.count(i)) continue;
     const int k = static_cast<int>(i % static_cast<std::size_t>(shard_count));
     const auto it = shard_files.find(k);
-    const std::string file =
-        it != shard_files.end()
-            ? it->second.string()
-            : shard_path(shards.front().parent_path(), table.scene_name, k, shard_count).string();
+    const std::string file = it != shard_files.end()
+                                 ? it->second.string()
+                                 : layout(table.scene_name).shard(k, shard_count).string();
     throw InputError(file + ": grid point " + std::to_string(i) + " of " + std::to_string(points) +
                      " is missing" + (it == shard_files.end() ? " (shard not given)" : ""));
   }
   for (auto& [index, cells] : rows) table.rows.emplace_back(index, std::move(cells));
-  return write_full_outputs(table, out_dir);
+  return write_full_outputs(table, layout(table.scene_name));
 }
 
 }  // namespace bookspin::jobs

@@ -37,6 +37,17 @@ struct SweepTable {
   std::vector<std::pair<std::size_t, std::vector<std::string>>> rows;
 };
 
+/// Where a sweep's files go: the sweep product names them (products/sweep.hpp).
+struct SweepPaths {
+  std::filesystem::path csv;  ///< the full CSV
+  std::filesystem::path png;  ///< its plots
+  /// The CSV of shard k of n (k from 0).
+  std::function<std::filesystem::path(int k, int n)> shard;
+};
+
+/// The paths of the sweep of the scene called `scene_name`.
+using SweepLayout = std::function<SweepPaths(const std::string& scene_name)>;
+
 struct SweepRequest {
   std::filesystem::path scene_path;
   std::vector<std::string> overrides;  ///< the user's own --set, applied before the grid's
@@ -49,7 +60,7 @@ struct SweepRequest {
   /// --shard K/N: only the grid points with index ≡ K (mod N), K from 0 to N − 1 (as Slurm's
   /// SLURM_ARRAY_TASK_ID runs with --array=0-(N-1)). shard_count 0: the whole grid.
   int shard_index = 0, shard_count = 0;
-  std::filesystem::path out_dir = "out";
+  SweepLayout layout;  ///< where the CSV, the plots or the shard go
   /// Polled by the workers before each point: the signal asking the sweep to stop (SIGINT,
   /// SIGTERM), or 0. May be empty.
   std::function<int()> stop_signal;
@@ -61,8 +72,8 @@ struct SweepResult {
 };
 
 /// Parses every point's scene first (a bad value is the scene's InputError, naming the key,
-/// before any run), runs them on `jobs` threads, and writes OUT/<scene>-sweep.csv and
-/// OUT/<scene>-sweep.png, or for a shard only OUT/<scene>-sweep.shard-K-of-N.csv (a first
+/// before any run), runs them on `jobs` threads, and writes the layout's CSV and plots, or
+/// for a shard only the layout's shard CSV (a first
 /// line "# bookspin sweep shard …" recording the scene name, the SHA-256 of the resolved
 /// scene in canonical form after --set (scene::canonical_json), bookspin's build id, the grid
 /// size, the ranges and the measures, then a grid_index column before the full CSV's;
@@ -72,14 +83,14 @@ SweepResult run_sweep(const SweepRequest& request);
 
 /// Reads shard CSVs (LF or CRLF line endings), checks they are shards of one sweep (same
 /// scene name, scene SHA-256, build, grid, measures and N; same header) that cover its grid
-/// exactly once, and writes OUT/<scene>-sweep.csv and .png, byte-identical to the
+/// exactly once, and writes the layout's CSV and plots, byte-identical to the
 /// one-process sweep's. Throws InputError naming the file (and line): unreadable, not a
 /// shard, a shard line without scene hash or build, another sweep (naming the first field
 /// that differs), a mismatched header, a row of another shard or an index outside the grid, a
 /// cell that is not a finite number (empty is allowed for a measure, not for a varied value),
 /// a duplicate grid point, a missing one (naming the shard file that should hold it).
 std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem::path>& shards,
-                                               const std::filesystem::path& out_dir);
+                                               const SweepLayout& layout);
 
 /// Writes the full CSV (header, then one line per row without the grid index) to `out`.
 void write_sweep_csv(const SweepTable& table, std::ostream& out);

@@ -12,12 +12,6 @@ namespace bookspin::output {
 
 namespace {
 
-std::filesystem::path frame_file(const std::filesystem::path& dir, int index) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%05d.png", index);
-  return dir / name;
-}
-
 std::filesystem::path make_parent(const std::filesystem::path& file) {
   std::error_code ec;
   make_directories(file.parent_path(), ec);
@@ -31,9 +25,10 @@ bool wants(const SinkOptions& options, const char* format) {
 
 }  // namespace
 
-std::filesystem::path video_path(const std::filesystem::path& mp4, const std::string& format) {
-  std::filesystem::path path = mp4;
-  return path.replace_extension("." + format);
+std::string frame_file_name(int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05d.png", index);
+  return name;
 }
 
 ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options)
@@ -43,24 +38,23 @@ ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options)
       png_queue_(2 * static_cast<std::size_t>(std::max(1, options.png_workers))) {
   if (options_.formats.empty()) throw std::invalid_argument("ClipSinks: no video format");
   const EncoderSettings& e = options_.encoder;
-  make_parent(paths.mp4);
   // Each video in its own member, opened before any thread starts; the threads share out
   // the cores the encoders would otherwise each take for themselves.
   if (wants(options_, "mp4")) {
-    mp4_.emplace(paths.mp4, e);
+    mp4_.emplace(make_parent(paths.mp4), e);
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { mp4_->add_frame(f); };
     videos_.back()->finish = [this] { mp4_->finish(); };
   }
   if (wants(options_, "webm")) {
-    webm_.emplace(video_path(paths.mp4, "webm"),
+    webm_.emplace(make_parent(paths.webm),
                   WebmSettings{e.width, e.height, e.fps, options_.webm_crf, e.threads});
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { webm_->add_frame(f); };
     videos_.back()->finish = [this] { webm_->finish(); };
   }
   if (wants(options_, "gif")) {
-    gif_.emplace(video_path(paths.mp4, "gif"),
+    gif_.emplace(make_parent(paths.gif),
                  GifSettings{e.width, e.height, e.fps, options_.gif_width, options_.gif_fps});
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { gif_->add_frame(f); };
@@ -115,7 +109,7 @@ void ClipSinks::encode_loop(Video& video) {
 void ClipSinks::png_loop() {
   try {
     while (auto item = png_queue_.pop()) {
-      output::write_png(frame_file(frames_->temp_path(), item->first), *item->second,
+      output::write_png(frames_->temp_path() / frame_file_name(item->first), *item->second,
                         options_.png_compression);
     }
   } catch (...) {

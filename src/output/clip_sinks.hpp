@@ -23,11 +23,18 @@
 
 namespace bookspin::output {
 
+/// Where a clip's outputs go (the clip product names them: products/clip.hpp). Only the
+/// videos of SinkOptions::formats are written; the frames only with SinkOptions::write_png.
 struct ClipPaths {
-  std::filesystem::path mp4;         ///< out/<scene>.mp4 (.webm and .gif beside it)
-  std::filesystem::path frames_dir;  ///< out/<scene>/frames
-  std::filesystem::path csv;         ///< out/<scene>/diagnostics.csv
+  std::filesystem::path mp4;         ///< the H.264 video
+  std::filesystem::path webm;        ///< the VP9 video
+  std::filesystem::path gif;         ///< the GIF
+  std::filesystem::path frames_dir;  ///< the PNG frames, frame_file_name(i) each
+  std::filesystem::path csv;         ///< the diagnostics CSV
 };
+
+/// The file name of frame `index` (from 0) in ClipPaths::frames_dir: "frame_00042.png".
+std::string frame_file_name(int index);
 
 struct SinkOptions {
   bool write_png = true;
@@ -41,9 +48,6 @@ struct SinkOptions {
   int gif_width = 640;  ///< GifSettings::width
   int gif_fps = 15;     ///< GifSettings::gif_fps
 };
-
-/// The path of video `format` ("mp4", "webm", "gif") of a clip whose MP4 is `mp4`.
-std::filesystem::path video_path(const std::filesystem::path& mp4, const std::string& format);
 
 class ClipSinks {
  public:

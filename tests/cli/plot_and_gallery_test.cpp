@@ -3,8 +3,8 @@
 
 #include <cctype>
 
-#include "cli/gallery_page.hpp"
 #include "output/png_writer.hpp"
+#include "products/gallery_page.hpp"
 #include "support/cli_runner.hpp"
 
 namespace bookspin::cli {
@@ -40,11 +40,12 @@ TEST(PlotCommand, BadSceneExitsTwoAndWritesNothing) {
 }
 
 TEST(GalleryPage, EscapesTitlesAndAttributes) {
-  EXPECT_EQ(cli::html_escape("a <b> & \"c\" 'd'"), "a &lt;b&gt; &amp; &quot;c&quot; &#39;d&#39;");
-  cli::GalleryEntry e;
+  EXPECT_EQ(products::html_escape("a <b> & \"c\" 'd'"),
+            "a &lt;b&gt; &amp; &quot;c&quot; &#39;d&#39;");
+  products::GalleryEntry e;
   e.name = "x";
   e.title = "<script>alert(1)</script>";
-  const std::string html = cli::gallery_html({e}, {});
+  const std::string html = products::gallery_html({e}, {});
   EXPECT_EQ(html.find("<script>"), std::string::npos);
   EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
 }
@@ -66,9 +67,9 @@ TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
                                  {"fig9-short"},
                                  {"aaa-body"},
                                  {"flip-time-vs-perturbation", false, false, true}};
-  std::vector<std::pair<cli::GalleryRank, std::string>> ranked;
+  std::vector<std::pair<products::GalleryRank, std::string>> ranked;
   for (const auto& s : given)
-    ranked.emplace_back(cli::gallery_rank(s.name, s.comparison, s.exact, s.sweep), s.name);
+    ranked.emplace_back(products::gallery_rank(s.name, s.comparison, s.exact, s.sweep), s.name);
   std::sort(ranked.begin(), ranked.end());
   std::vector<std::string> order;
   for (const auto& [rank, name] : ranked) order.push_back(name);
@@ -88,9 +89,9 @@ TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
 }
 
 TEST(GalleryPage, HeaderSaysWhatAndHowItWasMade) {
-  const cli::GalleryHeader header{"1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC",
-                                  "host <x>, Some CPU, 2 cores"};
-  const std::string html = cli::gallery_html({}, header);
+  const products::GalleryHeader header{"1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC",
+                                       "host <x>, Some CPU, 2 cores"};
+  const std::string html = products::gallery_html({}, header);
   EXPECT_NE(html.find("figures 3–12 first"), std::string::npos) << html;
   EXPECT_NE(html.find("bookspin 1.2.3 (build aaaaaaaaaaaa)"), std::string::npos) << html;
   EXPECT_NE(html.find("2026-11-22 01:50 UTC"), std::string::npos) << html;

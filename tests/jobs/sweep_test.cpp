@@ -310,7 +310,9 @@ TEST(SweepRun, FlipPeriodOfEveryPointMatchesTheClosedFormOnALogGrid) {
     request.ranges = {parse_vary("initial.angular_velocity[1]=" + start + ":1e-2:20:log")};
     request.measures = parse_measures("flip_period,first_flip");
     request.jobs = 2;
-    request.out_dir = dir / kind;
+    request.layout = [out = dir / kind](const std::string& name) {
+      return SweepPaths{out / (name + "-sweep.csv"), out / (name + "-sweep.png"), {}};
+    };
     const SweepResult result = run_sweep(request);
     ASSERT_EQ(result.written.size(), 2u);
     std::ifstream csv(result.written[0]);

@@ -1,6 +1,7 @@
 #pragma once
-// `bookspin export --gltf`: a scene's run as an animated glTF binary (docs/outputs.md,
-// "glTF export"): the body's surface in its own frame and one animation of its pose.
+// The glTF product (`bookspin export --gltf`): a scene's run as an animated glTF binary
+// (docs/outputs.md, "glTF export"): the body's surface in its own frame and one animation of
+// its pose. Not cached: every export writes it anew.
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -8,7 +9,7 @@
 
 #include "scene/scene.hpp"
 
-namespace bookspin::clip {
+namespace bookspin::products {
 
 struct GltfExportResult {
   std::filesystem::path path;         ///< OUT/<name>.glb
@@ -17,15 +18,18 @@ struct GltfExportResult {
   std::optional<double> diverged_at;  ///< when the simulation diverged (keyframes stop there)
 };
 
-/// Runs `scene` frame by frame and writes OUT/<scene.name>.glb with output::write_glb: the book
-/// with its four face images (render::face_images, the scene's textures or the generated
+/// OUT/<name>.glb, the one file an export of `scene` into `out_dir` writes.
+std::filesystem::path gltf_path(const std::filesystem::path& out_dir, const scene::Scene& scene);
+
+/// Runs `scene` frame by frame and writes gltf_path(out_dir, scene) with output::write_glb: the
+/// book with its four face images (render::face_images, the scene's textures or the generated
 /// covers), a preset or mesh body with one material per colour; keyframe k at k / render.fps
 /// seconds with the rotation of Simulator::orientation() (unit quaternion, body→world, signs
 /// kept continuous from frame to frame) and the centre of mass as translation. A deforming
 /// model (particle, lattice) exports its best-fit rigid motion: `on_note` is told so.
 /// Throws InputError for a comparison scene (no single motion), render::RenderError for a
 /// missing texture or font, OutputError if the file cannot be written.
-GltfExportResult export_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
-                             const std::function<void(const std::string&)>& on_note = {});
+GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
+                           const std::function<void(const std::string&)>& on_note = {});
 
-}  // namespace bookspin::clip
+}  // namespace bookspin::products

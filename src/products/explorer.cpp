@@ -1,4 +1,4 @@
-#include "clip/explorer_page.hpp"
+#include "products/explorer.hpp"
 
 #include <fstream>
 #include <iomanip>
@@ -9,12 +9,13 @@
 #include "output/atomic_output.hpp"
 #include "output/data_url.hpp"
 #include "output/finite_number.hpp"
+#include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "physics/presets.hpp"
 #include "render/face_images.hpp"
 #include "scene/canonical.hpp"
 
-namespace bookspin::clip {
+namespace bookspin::products {
 
 namespace {
 
@@ -56,6 +57,16 @@ std::string read_shell(const std::filesystem::path& shell) {
 }
 
 }  // namespace
+
+std::filesystem::path explorer_page_path(const std::filesystem::path& out_dir) {
+  return out_dir / "explorer.html";
+}
+
+std::filesystem::path default_explorer_shell() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return (ec ? std::filesystem::path(".") : exe.parent_path()) / "web" / kExplorerShellName;
+}
 
 std::string explorer_scene_json(const scene::Scene& s) {
   std::ostringstream out;
@@ -129,10 +140,11 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   page.replace(at, std::string(kExplorerDataMarker).size(), data.str());
 
   ExplorerPageResult result;
-  result.path = request.out_dir / "explorer.html";
+  result.path = explorer_page_path(request.out_dir);
+  output::prepare_output_dir(request.out_dir);
   output::write_text_file(result.path, page);
   result.bytes = page.size();
   return result;
 }
 
-}  // namespace bookspin::clip
+}  // namespace bookspin::products

@@ -1,9 +1,9 @@
-#include "cli/gallery_page.hpp"
+#include "products/gallery_page.hpp"
 
 #include <cctype>
 #include <sstream>
 
-namespace bookspin::cli {
+namespace bookspin::products {
 
 namespace {
 
@@ -154,4 +154,4 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
   return out.str();
 }
 
-}  // namespace bookspin::cli
+}  // namespace bookspin::products

@@ -4,7 +4,7 @@
 #include <string_view>
 #include <vector>
 
-namespace bookspin::cli {
+namespace bookspin::products {
 
 /// One clip on the page. Paths are relative to the page's folder; empty: not there.
 struct GalleryEntry {
@@ -16,8 +16,8 @@ struct GalleryEntry {
   std::string webm;         ///< "<name>.webm" if rendered (linked)
   std::string gif;          ///< "<name>.gif" if rendered (linked)
   std::string glb;          ///< "<name>.glb" from `bookspin export --gltf` (linked)
-  /// "explorer.html?scene=<name>" where OUT/explorer.html exists (web/build.sh) and the
-  /// scene's body is not a mesh (the explorer holds the book and the presets); else empty.
+  /// "explorer.html?scene=<name>" where OUT/explorer.html exists (`bookspin explore`, which
+  /// carries every body, meshes included); else empty.
   std::string explorer;
   std::string poster;             ///< a frame PNG shown before the clip plays
   std::string plot;               ///< "<name>-plot.png"
@@ -63,4 +63,4 @@ std::string html_escape(std::string_view text);
 /// how it was made, then `entries` in the order given.
 std::string gallery_html(const std::vector<GalleryEntry>& entries, const GalleryHeader& header);
 
-}  // namespace bookspin::cli
+}  // namespace bookspin::products

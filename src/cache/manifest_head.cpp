@@ -1,4 +1,4 @@
-#include "cache/manifests.hpp"
+#include "cache/manifest_head.hpp"
 
 #include <sstream>
 
@@ -75,59 +75,11 @@ std::string manifest_head(const std::string& command, const std::string& options
   return out.str();
 }
 
-fs::path clip_manifest_path(const fs::path& out_dir, const std::string& name) {
-  return out_dir / name / "manifest.json";
-}
-
 std::string manifest_note(const scene::Scene& scene) {
   std::error_code ec;
   const fs::path path = fs::weakly_canonical(scene.source, ec);
   return "  \"scene_file\": {\"path\": " + scene::json_string((ec ? scene.source : path).string()) +
          ", \"sha256\": " + hash_of("scene", scene.source.string()) + "},\n";
-}
-
-std::string clip_manifest_head(const clip::ClipRequest& request) {
-  const output::SinkOptions sinks = clip::sink_options(request);
-  std::ostringstream options;
-  options << "    \"frames\": " << request.scene.frames << ",\n"
-          << "    \"png\": " << (request.write_png ? "true" : "false") << ",\n"
-          << "    \"png_compression\": " << sinks.png_compression << "\n";
-  return manifest_head("render", options.str(), request.scene);
-}
-
-std::vector<std::string> clip_outputs(const clip::ClipRequest& request) {
-  const scene::Scene& scene = request.scene;
-  std::vector<std::string> files;
-  for (const std::string& format : scene.render.formats) files.push_back(scene.name + "." + format);
-  if (request.write_png) {
-    for (int i = 0; i < scene.frames; ++i) {
-      char name[32];
-      std::snprintf(name, sizeof name, "/frames/frame_%05d.png", i);
-      files.push_back(scene.name + name);
-    }
-  }
-  if (scene.compare.empty()) {
-    files.push_back(scene.name + "/diagnostics.csv");
-  } else {
-    for (const auto& tile : scene.compare)
-      files.push_back(scene.name + "/diagnostics-" + tile.name + ".csv");
-  }
-  return files;
-}
-
-fs::path plot_manifest_path(const fs::path& out_dir, const std::string& name) {
-  return out_dir / name / "plot-manifest.json";
-}
-
-std::string plot_manifest_head(const charts::PlotRequest& request) {
-  std::ostringstream options;
-  options << "    \"width\": " << request.width << ",\n"
-          << "    \"height\": " << request.height << "\n";
-  return manifest_head("plot", options.str(), request.scene);
-}
-
-std::vector<std::string> plot_outputs(const charts::PlotRequest& request) {
-  return {request.scene.name + "-plot.png"};
 }
 
 }  // namespace bookspin::cache

@@ -1,8 +1,8 @@
 #pragma once
-// `bookspin explore`: the explorer page (docs/explorer.md) for a set of scenes. The page's
-// program (the physics compiled to WebAssembly, the app bundled with three.js) is built once
-// by web/build.sh into a shell file; this writes the scenes into it and the result is one
-// self-contained HTML file that opens from disk with the network off.
+// The explorer product (`bookspin explore`): the explorer page (docs/explorer.md) for a set of
+// scenes. The page's program (the physics compiled to WebAssembly, the app bundled with three.js)
+// is built once by web/build.sh into a shell file; this writes the scenes into it and the result is
+// one self-contained HTML file that opens from disk with the network off.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -10,10 +10,17 @@
 
 #include "scene/scene.hpp"
 
-namespace bookspin::clip {
+namespace bookspin::products {
 
 /// Where the shell of the page (web/build.sh BUILD_DIR writes BUILD_DIR/web/) is looked for.
 inline constexpr const char* kExplorerShellName = "explorer-shell.html";
+
+/// web/explorer-shell.html in the folder of the running program (the build folder, where
+/// web/build.sh BUILD_DIR writes it): the shell `bookspin explore` uses by default.
+std::filesystem::path default_explorer_shell();
+
+/// OUT/explorer.html, the one file the page's product writes.
+std::filesystem::path explorer_page_path(const std::filesystem::path& out_dir);
 
 /// The marker in the shell that the scenes' data replaces (web/src/index.html).
 inline constexpr const char* kExplorerDataMarker = "<!--BOOKSPIN_DATA-->";
@@ -40,13 +47,13 @@ struct ExplorerPageResult {
   std::uintmax_t bytes = 0;    ///< its size
 };
 
-/// Writes OUT/explorer.html: the shell with its data marker replaced by one script that sets
-/// window.BOOKSPIN_SCENES (explorer_scene_json of each scene) and window.BOOKSPIN_BOOK_ART
-/// (the book's four default face images, render::generate_face_image, as PNG data: URLs).
-/// Throws InputError when two scenes share a name or the shell is missing, unreadable or
-/// lacks the marker (naming the shell), render::RenderError when the
-/// fonts of the covers are missing, OutputError when the page cannot be written (atomic:
-/// an earlier page stays until the new one is complete).
+/// Writes explorer_page_path(request.out_dir): the shell with its data marker replaced by one
+/// script that sets window.BOOKSPIN_SCENES (explorer_scene_json of each scene) and
+/// window.BOOKSPIN_BOOK_ART (the book's four default face images, render::generate_face_image, as
+/// PNG data: URLs). Throws InputError when two scenes share a name or the shell is missing,
+/// unreadable or lacks the marker (naming the shell), render::RenderError when the fonts of the
+/// covers are missing, OutputError when the page cannot be written (atomic: an earlier page stays
+/// until the new one is complete).
 ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request);
 
-}  // namespace bookspin::clip
+}  // namespace bookspin::products

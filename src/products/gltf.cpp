@@ -1,4 +1,4 @@
-#include "clip/export_gltf.hpp"
+#include "products/gltf.hpp"
 
 #include <map>
 #include <tuple>
@@ -13,7 +13,7 @@
 #include "render/face_images.hpp"
 #include "render/surface.hpp"
 
-namespace bookspin::clip {
+namespace bookspin::products {
 namespace {
 
 /// The book: one part per face image, each face's vertices as the renderer builds them at
@@ -103,8 +103,12 @@ std::vector<output::GltfPart> surface_parts(const physics::Body& body) {
 
 }  // namespace
 
-GltfExportResult export_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
-                             const std::function<void(const std::string&)>& on_note) {
+std::filesystem::path gltf_path(const std::filesystem::path& out_dir, const scene::Scene& scene) {
+  return out_dir / (scene.name + ".glb");
+}
+
+GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
+                           const std::function<void(const std::string&)>& on_note) {
   if (!scene.compare.empty()) {
     throw InputError(scene.source.string() +
                      ": --gltf: a comparison scene ([[compare]]) has no single motion to export; "
@@ -147,7 +151,7 @@ GltfExportResult export_gltf(const scene::Scene& scene, const std::filesystem::p
     animation.translations.col(i) = translations[static_cast<std::size_t>(i)];
   }
   GltfExportResult result;
-  result.path = out_dir / (scene.name + ".glb");
+  result.path = gltf_path(out_dir, scene);
   result.keyframes = static_cast<int>(k);
   for (const auto& part : parts) result.vertices += static_cast<int>(part.positions.cols());
   result.diverged_at = source.diverged_at();
@@ -158,4 +162,4 @@ GltfExportResult export_gltf(const scene::Scene& scene, const std::filesystem::p
   return result;
 }
 
-}  // namespace bookspin::clip
+}  // namespace bookspin::products

@@ -1,0 +1,26 @@
+#pragma once
+// What every product's manifest head and note hold (output/manifest.hpp has the file format;
+// each product in src/products/ adds its own options and names its manifest's path).
+//
+// Head, in this order: manifest format, command, bookspin version and build id (SHA-256 of
+// the running executable, so any rebuild with changed code or libraries invalidates), the
+// output options, the resolved scene (scene::canonical_json) and the SHA-256 of every file
+// the scene reads as bytes (textures, the mesh). Everything an output depends on and nothing
+// else: not --jobs, not the path the scene was given by, not the scene file's comments. The
+// scene file's path and SHA-256 go in the manifest's note (recorded, not compared).
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace bookspin::cache {
+
+/// The note of every manifest: the scene file's absolute path and SHA-256. Throws InputError.
+std::string manifest_note(const scene::Scene& scene);
+
+/// The head of any command's manifest: `options` are its output options as JSON members, each
+/// line indented by four spaces, comma-separated. Throws InputError when an input file cannot
+/// be read.
+std::string manifest_head(const std::string& command, const std::string& options,
+                          const scene::Scene& scene);
+
+}  // namespace bookspin::cache

@@ -1,0 +1,158 @@
+#include "products/clip.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "cache/manifest_head.hpp"
+#include "clip/clip.hpp"
+#include "scene/canonical.hpp"
+
+namespace bookspin::products {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The divergence warnings of a clip, without the "bookspin: warning: " prefix.
+std::vector<std::string> divergence_warnings(const std::string& name,
+                                             const clip::ClipResult& result) {
+  std::vector<std::string> warnings;
+  if (result.diverged_at) {
+    std::ostringstream w;
+    w << name << ": simulation diverged at t = " << *result.diverged_at
+      << (result.divergence_reason.empty() ? "" : "; " + result.divergence_reason)
+      << "; the clip holds the last finite frame";
+    warnings.push_back(w.str());
+  }
+  for (const auto& tile : result.diverged_tiles) {
+    std::ostringstream w;
+    w << name << ": panel '" << tile.label << "' diverged at t = " << tile.t
+      << "; its tile holds the last finite frame";
+    warnings.push_back(w.str());
+  }
+  return warnings;
+}
+
+/// The manifest's "warnings" member (in its note: recorded, not compared), so that a run
+/// that finds the clip up to date repeats them.
+std::string warnings_json(const std::vector<std::string>& warnings) {
+  std::string json = "  \"warnings\": [";
+  for (std::size_t i = 0; i < warnings.size(); ++i)
+    json.append(i == 0 ? "" : ", ").append(scene::json_string(warnings[i]));
+  return json.append("],\n");
+}
+
+/// The warnings recorded in a manifest by warnings_json(), unescaped (only \" and \\ occur
+/// in them in practice; anything else is kept as written).
+std::vector<std::string> recorded_warnings(const fs::path& manifest) {
+  std::ifstream in(manifest);
+  std::vector<std::string> warnings;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("  \"warnings\": [", 0) != 0) continue;
+    std::string current;
+    bool inside = false;
+    for (std::size_t i = line.find('[') + 1; i < line.size(); ++i) {
+      const char c = line[i];
+      if (!inside) {
+        inside = c == '"';
+      } else if (c == '\\' && i + 1 < line.size()) {
+        current += line[++i];
+      } else if (c == '"') {
+        warnings.push_back(current);
+        current.clear();
+        inside = false;
+      } else {
+        current += c;
+      }
+    }
+  }
+  return warnings;
+}
+
+/// OUT/<name>.<format>: a video of the clip.
+fs::path video_path(const fs::path& out_dir, const scene::Scene& scene, const std::string& format) {
+  return out_dir / (scene.name + "." + format);
+}
+
+/// Paths relative to OUT of every file a render of `job` writes.
+std::vector<std::string> clip_outputs(const ClipJob& job, const ClipLayout& layout) {
+  std::vector<std::string> files;
+  const auto relative = [&job](const fs::path& path) {
+    return path.lexically_relative(job.out_dir).generic_string();
+  };
+  for (const fs::path& video : layout.videos) files.push_back(relative(video));
+  if (job.write_png) {
+    for (int i = 0; i < job.scene.frames; ++i)
+      files.push_back(relative(layout.frames_dir / output::frame_file_name(i)));
+  }
+  for (const fs::path& csv : layout.csvs) files.push_back(relative(csv));
+  return files;
+}
+
+}  // namespace
+
+ClipLayout clip_layout(const fs::path& out_dir, const scene::Scene& scene) {
+  ClipLayout layout;
+  const fs::path folder = out_dir / scene.name;
+  layout.manifest = folder / "manifest.json";
+  for (const std::string& format : scene.render.formats)
+    layout.videos.push_back(video_path(out_dir, scene, format));
+  layout.frames_dir = folder / "frames";
+  if (scene.compare.empty()) {
+    layout.csvs.push_back(folder / "diagnostics.csv");
+  } else {
+    for (const auto& tile : scene.compare)
+      layout.csvs.push_back(folder / ("diagnostics-" + tile.name + ".csv"));
+  }
+  return layout;
+}
+
+clip::ClipRequest clip_request(const ClipJob& job) {
+  const ClipLayout layout = clip_layout(job.out_dir, job.scene);
+  clip::ClipRequest request;
+  request.scene = job.scene;
+  const auto video = [&job](const char* format) {
+    return video_path(job.out_dir, job.scene, format);
+  };
+  request.paths = {video("mp4"), video("webm"), video("gif"), layout.frames_dir,
+                   layout.csvs.front()};
+  request.tile_csvs.assign(layout.csvs.begin() + 1, layout.csvs.end());
+  request.write_png = job.write_png;
+  request.png_compression = job.png_compression;
+  request.jobs = job.jobs;
+  request.on_note = job.on_note;
+  request.on_progress = job.on_progress;
+  request.stop_signal = job.stop_signal;
+  return request;
+}
+
+std::string clip_manifest_head(const ClipJob& job) {
+  const int compression =
+      job.png_compression >= 0 ? job.png_compression : job.scene.render.png_compression;
+  std::ostringstream options;
+  options << "    \"png\": " << (job.write_png ? "true" : "false") << ",\n"
+          << "    \"png_compression\": " << compression << "\n";
+  return cache::manifest_head("render", options.str(), job.scene);
+}
+
+ClipOutcome make_clip(const ClipJob& job) {
+  const ClipLayout layout = clip_layout(job.out_dir, job.scene);
+  const std::string head = clip_manifest_head(job);
+  ClipOutcome done;
+  done.outcome = cache::run_cached(
+      {layout.manifest, head, job.out_dir, job.force, job.verify,
+       [&]() -> std::optional<cache::JobOutputs> {
+         done.result = clip::render_clip(clip_request(job));
+         if (done.result.signal != 0) return std::nullopt;
+         done.warnings = divergence_warnings(job.scene.name, done.result);
+         return cache::JobOutputs{cache::manifest_note(job.scene) + warnings_json(done.warnings),
+                                  clip_outputs(job, layout)};
+       }},
+      remake_note_for(job.on_remake, job.scene.name));
+  if (done.outcome == cache::CacheOutcome::up_to_date)
+    done.warnings = recorded_warnings(layout.manifest);
+  return done;
+}
+
+}  // namespace bookspin::products

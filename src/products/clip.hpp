@@ -1,0 +1,66 @@
+#pragma once
+// The clip product (`bookspin render`): a scene's videos, frames and diagnostics CSVs, or a
+// comparison's, with their manifest (docs/outputs.md). Every path a clip writes is named here
+// and nowhere else; the frame loop itself is the clip stage's (clip/clip.hpp).
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "clip/clip_request.hpp"
+#include "products/outcome.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::products {
+
+/// Every path a render of one scene into OUT writes.
+struct ClipLayout {
+  std::filesystem::path manifest;  ///< OUT/<name>/manifest.json
+  /// OUT/<name>.<format> for each of render.formats, in their order.
+  std::vector<std::filesystem::path> videos;
+  std::filesystem::path frames_dir;  ///< OUT/<name>/frames (frame file names: output)
+  /// OUT/<name>/diagnostics.csv, or for a comparison OUT/<name>/diagnostics-<tile>.csv per
+  /// tile, in tile order.
+  std::vector<std::filesystem::path> csvs;
+};
+
+/// The layout of `scene` rendered into `out_dir`. No I/O.
+ClipLayout clip_layout(const std::filesystem::path& out_dir, const scene::Scene& scene);
+
+/// What `bookspin render` asks for.
+struct ClipJob {
+  scene::Scene scene;             ///< validated; scene.frames is the clip's length
+  std::filesystem::path out_dir;  ///< OUT
+  bool write_png = true;          ///< false: videos and CSVs only
+  int png_compression = -1;       ///< 0–9; −1: render.png_compression
+  int jobs = 0;                   ///< worker threads; 0: every core
+  bool force = false;             ///< render even when the manifest says up to date
+  bool verify = false;            ///< the up-to-date check hashes every output
+  std::function<void(const std::string& note)> on_note;  ///< see clip::ClipRequest
+  std::function<void(int done)> on_progress;             ///< see clip::ClipRequest
+  std::function<int()> stop_signal;                      ///< see clip::ClipRequest
+  RemakeNote on_remake;  ///< why a manifest did not match (may be empty)
+};
+
+/// The frame loop's request for `job`: its scene, options and the layout's paths.
+clip::ClipRequest clip_request(const ClipJob& job);
+
+/// The manifest head of `job` (cache::manifest_head: "render", the PNG options, the scene).
+/// Throws InputError if an input file cannot be read.
+std::string clip_manifest_head(const ClipJob& job);
+
+/// What make_clip() did.
+struct ClipOutcome {
+  Outcome outcome = Outcome::made;
+  clip::ClipResult result;  ///< the frame loop's result (when made or interrupted)
+  /// The run's divergence warnings without the "bookspin: warning: " prefix: this run's when
+  /// made, the ones recorded in the manifest when up to date.
+  std::vector<std::string> warnings;
+};
+
+/// Renders `job` unless its manifest says the outputs are up to date, then writes the
+/// manifest (its note records the scene file and the warnings). Same errors as
+/// clip::render_clip(), and InputError for an unreadable input file.
+ClipOutcome make_clip(const ClipJob& job);
+
+}  // namespace bookspin::products

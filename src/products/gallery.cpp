@@ -1,0 +1,178 @@
+#include "products/gallery.hpp"
+
+#include <sys/utsname.h>
+
+#include <algorithm>
+#include <ctime>
+#include <fstream>
+#include <thread>
+
+#include "output/atomic_output.hpp"
+#include "output/manifest.hpp"
+#include "output/output_dir.hpp"
+#include "output/sha256.hpp"
+#include "products/clip.hpp"
+#include "products/explorer.hpp"
+#include "products/gallery_page.hpp"
+#include "products/gltf.hpp"
+#include "products/plot.hpp"
+#include "products/sweep.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::products {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool exists(const fs::path& out, const std::string& relative) {
+  std::error_code ec;
+  return fs::is_regular_file(out / relative, ec);
+}
+
+/// Files under OUT/<dir> whose names start with `prefix` and end with `suffix`, sorted,
+/// as paths relative to OUT.
+std::vector<std::string> files_in(const fs::path& out, const std::string& dir,
+                                  const std::string& prefix, const std::string& suffix) {
+  std::vector<std::string> found;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(out / dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const bool match = name.size() >= prefix.size() + suffix.size() && name.rfind(prefix, 0) == 0 &&
+                       name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+    if (match && e.is_regular_file(ec)) found.push_back(dir + "/" + name);
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+std::string path_in_out(const fs::path& out, const fs::path& path) {
+  return path.lexically_relative(out).generic_string();
+}
+
+/// OUT/<name>/poster.png if there is one, else the middle one of the clip's frames.
+std::string poster_for(const fs::path& out, const ClipLayout& clip, const std::string& name) {
+  if (exists(out, name + "/poster.png")) return name + "/poster.png";
+  const auto frames = files_in(out, path_in_out(out, clip.frames_dir), "", ".png");
+  return frames.empty() ? "" : frames[frames.size() / 2];
+}
+
+/// The path relative to OUT of `path` if that file exists, else "".
+std::string if_there(const fs::path& out, const fs::path& path) {
+  std::error_code ec;
+  return fs::is_regular_file(path, ec) ? path_in_out(out, path) : "";
+}
+
+GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
+  GalleryEntry e;
+  e.name = scene.name;
+  e.title = scene.title;
+  e.description = scene.description;
+  // Every video format, whichever the scene names (a render's --format may differ).
+  scene::Scene every_format = scene;
+  every_format.render.formats = {"mp4", "webm", "gif"};
+  const ClipLayout clip = clip_layout(out, every_format);
+  e.mp4 = if_there(out, clip.videos[0]);
+  e.webm = if_there(out, clip.videos[1]);
+  e.gif = if_there(out, clip.videos[2]);
+  e.glb = if_there(out, gltf_path(out, scene));
+  if (const std::string page = if_there(out, explorer_page_path(out)); !page.empty())
+    e.explorer = page + "?scene=" + scene.name;
+  e.video = e.mp4.empty() ? e.webm : e.mp4;
+  e.poster = poster_for(out, clip, scene.name);
+  e.plot = if_there(out, plot_layout(out, scene).png);
+  const jobs::SweepPaths sweep = sweep_paths(out, scene.name);
+  e.sweep = if_there(out, sweep.png);
+  e.sweep_csv = if_there(out, sweep.csv);
+  for (const fs::path& csv : clip.csvs) {
+    if (const std::string there = if_there(out, csv); !there.empty()) e.csvs.push_back(there);
+  }
+  return e;
+}
+
+void write_page(const fs::path& path, const std::string& html) {
+  output::AtomicFile file(path);
+  std::ofstream page(file.temp_path(), std::ios::binary);
+  if (!page) throw_output_error("cannot create", path, errno);
+  page << html;
+  page.close();
+  if (!page) throw_output_error("cannot write", path, errno);
+  file.commit();
+}
+
+/// "HOST, CPU MODEL, N cores" from uname(2) and /proc/cpuinfo (parts it cannot read left out).
+std::string machine() {
+  std::string text;
+  struct utsname u {};
+  if (uname(&u) == 0) text = u.nodename;
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      text += (text.empty() ? "" : ", ") + line.substr(line.find(':') + 2);
+      break;
+    }
+  }
+  if (const unsigned cores = std::thread::hardware_concurrency(); cores > 0)
+    text += (text.empty() ? "" : ", ") + std::to_string(cores) + " cores";
+  return text;
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M UTC", &tm);
+  return buffer;
+}
+
+}  // namespace
+
+GalleryLayout gallery_layout(const fs::path& out_dir) {
+  return {out_dir / "index.html", out_dir / "gallery-manifest.json"};
+}
+
+GalleryOutcome make_gallery(const GalleryJob& job) {
+  const fs::path& out = job.out_dir;
+  const GalleryLayout layout = gallery_layout(out);
+  std::vector<std::pair<GalleryRank, GalleryEntry>> ranked;
+  // Every scene is parsed first, so a bad one fails before anything is written.
+  for (const auto& path : job.scene_paths) {
+    const scene::Scene scene = scene::parse_scene(path);
+    // The exact motion of the book; other bodies' exact runs go with the other bodies.
+    const bool exact = scene.compare.empty() && scene.model.kind == physics::ModelKind::exact &&
+                       scene.body.shape == physics::BodyShape::book;
+    GalleryEntry entry = entry_for(out, scene);
+    const bool sweep = !entry.sweep.empty() || !entry.sweep_csv.empty() ||
+                       fs::path(path).parent_path().filename() == "sweeps";
+    ranked.emplace_back(gallery_rank(scene.name, !scene.compare.empty(), exact, sweep),
+                        std::move(entry));
+  }
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<GalleryEntry> entries;
+  for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
+
+  GalleryHeader header{output::program_version(), output::program_build_id(), "", machine()};
+  // Up to date: the same page but for its date (output/manifest.hpp).
+  const std::string head =
+      "  \"manifest\": 1,\n  \"command\": \"gallery\",\n  \"page_sha256\": \"" +
+      output::sha256_text(gallery_html(entries, header)) + "\",\n";
+  GalleryOutcome done;
+  done.entries = entries.size();
+  done.outcome =
+      cache::run_cached({layout.manifest, head, out, job.force, false,
+                         [&]() -> std::optional<cache::JobOutputs> {
+                           std::error_code ec;
+                           output::make_directories(out, ec);
+                           if (ec)
+                             throw_output_error("cannot create output directory", out, ec.value());
+                           header.date = utc_now();
+                           write_page(layout.page, gallery_html(entries, header));
+                           return cache::JobOutputs{"", {path_in_out(out, layout.page)}};
+                         }},
+                        remake_note_for(job.on_remake, layout.page.filename().string()));
+  return done;
+}
+
+}  // namespace bookspin::products

@@ -1,0 +1,40 @@
+#pragma once
+// The plot product (`bookspin plot`): a scene's panel curves over its whole run as one PNG,
+// with its manifest (docs/outputs.md). The drawing is the charts stage's (plot_sheet.hpp).
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "products/outcome.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::products {
+
+/// Every path a plot of one scene into OUT writes.
+struct PlotLayout {
+  std::filesystem::path png;       ///< OUT/<name>-plot.png
+  std::filesystem::path manifest;  ///< OUT/<name>/plot-manifest.json
+};
+
+/// The layout of `scene`'s plot in `out_dir`. No I/O.
+PlotLayout plot_layout(const std::filesystem::path& out_dir, const scene::Scene& scene);
+
+/// What `bookspin plot` asks for.
+struct PlotJob {
+  scene::Scene scene;  ///< a single or a comparison scene (every tile is plotted)
+  std::filesystem::path out_dir;
+  int width = 1600;      ///< pixels
+  int height = 1000;     ///< pixels
+  bool force = false;    ///< plot even when the manifest says up to date
+  bool verify = false;   ///< the up-to-date check hashes the PNG
+  RemakeNote on_remake;  ///< why a manifest did not match (may be empty)
+};
+
+/// The manifest head of `job` ("plot", the image size, the scene). Throws InputError.
+std::string plot_manifest_head(const PlotJob& job);
+
+/// Writes the plot sheet (charts::write_plot_sheet) unless its manifest says it is up to date,
+/// then its manifest. Throws InputError, OutputError.
+Outcome make_plot(const PlotJob& job);
+
+}  // namespace bookspin::products

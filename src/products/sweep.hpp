@@ -1,0 +1,58 @@
+#pragma once
+// The sweep product (`bookspin sweep`, docs/physics.md §14): a parameter sweep's CSV and
+// plots with their manifest, one shard's CSV of a job array, or the merge of shards. Every
+// path a sweep writes is named here; the runs, the table and the shard format are the jobs
+// stage's (jobs/sweep.hpp).
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "jobs/sweep.hpp"
+#include "products/outcome.hpp"
+
+namespace bookspin::products {
+
+/// Every path a sweep of the scene called `scene_name` into `out_dir` writes:
+/// OUT/<name>-sweep.csv, OUT/<name>-sweep.png, shards OUT/<name>-sweep.shard-K-of-N.csv.
+jobs::SweepPaths sweep_paths(const std::filesystem::path& out_dir, const std::string& scene_name);
+
+/// OUT/<name>/sweep-manifest.json.
+std::filesystem::path sweep_manifest_path(const std::filesystem::path& out_dir,
+                                          const std::string& scene_name);
+
+/// What `bookspin sweep SCENE` asks for.
+struct SweepJob {
+  std::filesystem::path scene_path;
+  std::vector<std::string> overrides;  ///< the user's --set, before the grid's own
+  std::vector<std::string> vary;       ///< "KEY=START:STOP:COUNT[:log]" as given
+  std::string measures;                ///< "first_flip,flip_period,…" as given
+  int jobs = 0;                        ///< threads; 0: hardware threads
+  /// Shard k of n (k from 0); n = 0: the whole grid, which is cached by its manifest.
+  int shard_index = 0, shard_count = 0;
+  std::filesystem::path out_dir;
+  bool force = false;                ///< run even when the manifest says up to date
+  bool verify = false;               ///< the up-to-date check hashes the CSV and PNG
+  std::function<int()> stop_signal;  ///< polled by the workers
+  RemakeNote on_remake;              ///< why a manifest did not match (may be empty)
+};
+
+struct SweepOutcome {
+  Outcome outcome = Outcome::made;
+  std::string name;                            ///< the scene's name
+  std::vector<std::filesystem::path> written;  ///< when made
+  int signal = 0;                              ///< the signal that stopped it (interrupted)
+};
+
+/// Parses the scene, the ranges and the measures (InputError naming what is wrong), then runs
+/// the sweep unless its manifest says it is up to date (a shard always runs and has no
+/// manifest). Throws InputError, OutputError.
+SweepOutcome make_sweep(const SweepJob& job);
+
+/// Merges shard CSVs into the one-process sweep's CSV and plots under `out_dir`
+/// (jobs::merge_sweep; a missing shard is named beside the given ones). Returns the paths
+/// written.
+std::vector<std::filesystem::path> merge_sweep_shards(
+    const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out_dir);
+
+}  // namespace bookspin::products
