@@ -16,8 +16,8 @@ struct GalleryEntry {
   std::string webm;         ///< "<name>.webm" if rendered (linked)
   std::string gif;          ///< "<name>.gif" if rendered (linked)
   std::string glb;          ///< "<name>.glb" from `bookspin export --gltf` (linked)
-  /// "explorer.html?scene=<name>" where OUT/explorer.html exists (web/build.sh) and the
-  /// scene's body is not a mesh (the explorer holds the book and the presets); else empty.
+  /// "explorer.html?scene=<name>" where OUT/explorer.html exists (`bookspin explore`); else
+  /// empty. Every scene has one, mesh bodies too: the page carries each scene's body whole.
   std::string explorer;
   std::string poster;             ///< a frame PNG shown before the clip plays
   std::string plot;               ///< "<name>-plot.png"
