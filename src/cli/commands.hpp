@@ -121,7 +121,7 @@ struct ExportOptions {
   bool gltf = false;  ///< --gltf: the only format so far, and required
 };
 
-/// Writes OUT/<scene>.glb (clip::export_gltf): the body and its motion as animated glTF.
+/// Writes OUT/<scene>.glb (products::make_gltf): the body and its motion as animated glTF.
 int export_command(const ExportOptions& options);
 
 struct ExploreOptions {
@@ -130,7 +130,7 @@ struct ExploreOptions {
   std::string shell;  ///< the page without data; empty: web/explorer-shell.html beside bookspin
 };
 
-/// Writes OUT/explorer.html (clip::write_explorer_page): the explorer page with these scenes.
+/// Writes OUT/explorer.html (products::write_explorer_page): the explorer page with these scenes.
 /// The default shell missing (the page's program not built: web/build.sh) is exit 1 with a
 /// line saying how to build it; a --shell that is not one is an input error.
 int explore_command(const ExploreOptions& options);

@@ -11,7 +11,6 @@
 #include <charconv>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -20,6 +19,7 @@
 #include <system_error>
 #include <vector>
 
+#include "common/text_file.hpp"
 #include "output/output_dir.hpp"
 
 namespace bookspin::output {
@@ -87,8 +87,8 @@ double seconds(const timespec& t) { return static_cast<double>(t.tv_sec) + 1e-9 
 // When the process now holding `pid` started (seconds since the epoch, to a clock tick), from
 // /proc/<pid>/stat field 22 (clock ticks after boot); nullopt where that cannot be read.
 std::optional<double> process_start(pid_t pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
-  std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string stat =
+      try_read_text_file("/proc/" + std::to_string(pid) + "/stat").value_or(std::string());
   const auto close = stat.rfind(')');  // the command name may hold spaces and parentheses
   if (close == std::string::npos) return std::nullopt;
   std::istringstream fields(stat.substr(close + 1));

@@ -2,10 +2,10 @@
 
 #include <cerrno>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/text_file.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/sha256.hpp"
@@ -121,12 +121,10 @@ std::optional<std::string> manifest_stale(const fs::path& manifest, std::string_
                                           const fs::path& root, bool verify) {
   std::error_code ec;
   if (!fs::is_regular_file(manifest, ec)) return "no manifest (" + manifest.string() + ")";
-  std::ifstream in(manifest, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) return "cannot read " + manifest.string();
+  const std::optional<std::string> text = try_read_text_file(manifest);
+  if (!text) return "cannot read " + manifest.string();
   bool head_differs = false;
-  const auto entries = entries_after(text.str(), head, head_differs);
+  const auto entries = entries_after(*text, head, head_differs);
   if (head_differs) return "the scene, its inputs, the options or the program changed";
   if (!entries) return manifest.string() + " is not a manifest bookspin wrote";
   for (const Entry& e : *entries) {

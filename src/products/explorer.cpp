@@ -1,11 +1,11 @@
 #include "products/explorer.hpp"
 
-#include <fstream>
 #include <iomanip>
 #include <set>
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/text_file.hpp"
 #include "output/atomic_output.hpp"
 #include "output/data_url.hpp"
 #include "output/finite_number.hpp"
@@ -49,11 +49,7 @@ std::string read_shell(const std::filesystem::path& shell) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(shell, ec))
     throw InputError(shell.string() + ": the explorer page's shell is missing (web/build.sh)");
-  std::ifstream in(shell, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw InputError(shell.string() + ": cannot read the explorer page's shell");
-  return text.str();
+  return read_text_file(shell, "the explorer page's shell");
 }
 
 }  // namespace

@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
+#include "common/text_file.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/presets.hpp"
 #include "scene/model_reader.hpp"
@@ -379,11 +378,7 @@ Scene parse_scene(const std::filesystem::path& path, const std::vector<std::stri
     throw InputError(path.string() + ": scene file is larger than " +
                      std::to_string(kMaxSceneFileBytes) + " bytes");
   }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in) throw InputError(path.string() + ": cannot read the scene file");
-  return parse_scene_text(text.str(), path, overrides);
+  return parse_scene_text(read_text_file(path, "the scene file"), path, overrides);
 }
 
 }  // namespace bookspin::scene

@@ -14,6 +14,7 @@
 #include "analysis/motion.hpp"
 #include "common/errors.hpp"
 #include "physics/exact_model.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::jobs {
 namespace {
@@ -297,8 +298,7 @@ TEST(SweepRun, FlipPeriodOfEveryPointMatchesTheClosedFormOnALogGrid) {
   // The acceptance sweep: 20 log-spaced ε on the exact model (1e-6 … 1e-2) and on
   // quaternion RK4 at dt = 1/60, whose period is round-off limited below ε ≈ 4e-6
   // (docs/physics.md §14), so from 5e-6 … 1e-2.
-  const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output" / "sweep_accept";
-  std::filesystem::remove_all(dir);
+  const auto dir = test::fresh_dir("sweep_accept");
   for (const auto& [kind, start] :
        {std::pair<std::string, std::string>{"exact", "1e-6"}, {"rigid-quaternion", "5e-6"}}) {
     SweepRequest request;

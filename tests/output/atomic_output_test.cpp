@@ -10,12 +10,12 @@
 #include <string>
 
 #include "output/output_dir.hpp"
-#include "scratch_dir.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::output {
 namespace {
 namespace fs = std::filesystem;
-using testing::ScratchDir;
+using bookspin::test::ScratchDir;
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 

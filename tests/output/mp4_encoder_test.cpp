@@ -13,15 +13,15 @@
 #include "output/atomic_output.hpp"
 #include "output/bounded_queue.hpp"
 #include "output/ffmpeg_info.hpp"
-#include "scratch_dir.hpp"
+#include "support/scratch.hpp"
 #include "test_images.hpp"
 
 namespace bookspin::output {
 namespace {
 namespace fs = std::filesystem;
+using bookspin::test::ScratchDir;
 using testing::moving_square_frame;
 using testing::noise_frame;
-using testing::ScratchDir;
 
 constexpr int kWidth = 128, kHeight = 96, kFps = 24, kFrames = 24;
 

@@ -15,13 +15,13 @@
 
 #include "output/atomic_output.hpp"
 #include "output/png_writer.hpp"
-#include "scratch_dir.hpp"
+#include "support/scratch.hpp"
 #include "test_images.hpp"
 
 namespace bookspin::output {
 namespace {
 namespace fs = std::filesystem;
-using testing::ScratchDir;
+using bookspin::test::ScratchDir;
 
 std::vector<std::uint8_t> file_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -10,14 +10,14 @@
 #include <string>
 
 #include "output/atomic_output.hpp"
-#include "scratch_dir.hpp"
+#include "support/scratch.hpp"
 #include "test_images.hpp"
 
 namespace bookspin::output {
 namespace {
 namespace fs = std::filesystem;
+using bookspin::test::ScratchDir;
 using testing::noise_frame;
-using testing::ScratchDir;
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;

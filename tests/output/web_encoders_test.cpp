@@ -8,14 +8,14 @@
 
 #include "mp4_probe.hpp"
 #include "output/atomic_output.hpp"
-#include "scratch_dir.hpp"
+#include "support/scratch.hpp"
 #include "test_images.hpp"
 
 namespace bookspin::output {
 namespace {
 namespace fs = std::filesystem;
+using bookspin::test::ScratchDir;
 using testing::moving_square_frame;
-using testing::ScratchDir;
 
 constexpr int kWidth = 128, kHeight = 96, kFps = 24, kFrames = 24;
 

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "output/png_writer.hpp"
+#include "support/scratch.hpp"
 
 #ifndef GTEST_FLAG_GET  // GoogleTest before 1.12
 #define GTEST_FLAG_GET(name) ::testing::GTEST_FLAG(name)
@@ -73,13 +74,6 @@ std::filesystem::path golden_dir() {
   return std::filesystem::path(BOOKSPIN_SOURCE_DIR) / "tests" / "golden";
 }
 
-std::filesystem::path fresh_output_dir(const std::string& name) {
-  const auto dir = std::filesystem::path(BOOKSPIN_BINARY_DIR) / "test-output" / "picture" / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
 void note_golden_used(const std::string& file) { used_goldens().insert(file); }
 
 std::string write_failure_images(const std::filesystem::path& dir, const RgbaImage& actual,
@@ -105,7 +99,7 @@ RgbaImage read_golden(const std::string& name) {
                                           const Tolerance& tolerance) {
   note_golden_used(name + ".png");
   if (update_mode()) return update_golden(name, actual, tolerance);
-  const auto dir = fresh_output_dir(name);
+  const auto dir = test::fresh_dir("picture/" + name);
   if (!std::filesystem::exists(golden_path(name))) {
     output::write_png(dir / "actual.png", actual);
     return ::testing::AssertionFailure()

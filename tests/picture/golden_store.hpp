@@ -18,9 +18,6 @@ bool update_mode();
 /// tests/golden/ in the source tree.
 std::filesystem::path golden_dir();
 
-/// BUILD/test-output/picture/<name>/, emptied: where a failed check leaves its images.
-std::filesystem::path fresh_output_dir(const std::string& name);
-
 /// Records that a test uses tests/golden/<file>, so that update mode can name goldens no
 /// test uses any more.
 void note_golden_used(const std::string& file);

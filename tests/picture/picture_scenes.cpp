@@ -15,6 +15,7 @@
 #include "clip/render_settings.hpp"
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::picture {
 
@@ -98,7 +99,7 @@ std::string test_name(std::string name) {
 
 RgbaImage rendered_frame(const std::string& scene, int index, const std::string& args,
                          const std::string& folder) {
-  const auto dir = fresh_output_dir(folder);
+  const auto dir = test::fresh_dir("picture/" + folder);
   const std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR +
                               "/scenes/" + scene + ".toml -o " + dir.string() + " --frames " +
                               std::to_string(index + 1) + " " + args + " > /dev/null 2>&1";

@@ -9,6 +9,7 @@
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -23,7 +24,7 @@ TEST(RenderStill, IsWhatBookspinRenderWrites) {
   const char* scene_name = "fig09-matrix-unstable-x";
   const std::vector<std::string> overrides{"time.frames=3", "render.show_angular_momentum=true",
                                            "render.sphere=true"};
-  const auto dir = fresh_output_dir("render-still");
+  const auto dir = test::fresh_dir("picture/render-still");
   std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR + "/scenes/" +
                         scene_name + ".toml -o " + dir.string() +
                         " --set render.width=" + std::to_string(kGoldenSize) +

@@ -12,6 +12,7 @@
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
 #include "render/face_images.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::picture {
 namespace {
@@ -36,7 +37,7 @@ class Teeth : public ::testing::Test {
     const RgbaImage expected = read_golden(golden);
     const Comparison c = compare_images(buggy, expected, tolerance);
     const std::string images =
-        write_failure_images(fresh_output_dir("teeth-" + bug), buggy, expected, tolerance);
+        write_failure_images(test::fresh_dir("picture/teeth-" + bug), buggy, expected, tolerance);
     std::cout << bug << ": " << c.summary(tolerance) << images << '\n';
     EXPECT_TRUE(c.same_size) << bug;
     EXPECT_FALSE(c.passed) << bug << " was not caught: " << c.summary(tolerance);
@@ -54,7 +55,7 @@ class Teeth : public ::testing::Test {
 
 /// Writes the generated default image of a face to a PNG, for render.texture_* keys.
 std::string exported_face(render::FaceImage which, const std::string& file) {
-  const auto path = fresh_output_dir("teeth-textures-" + file) / (file + ".png");
+  const auto path = test::fresh_dir("picture/teeth-textures-" + file) / (file + ".png");
   output::write_png(path, render::generate_face_image(which));
   return path.string();
 }
@@ -72,7 +73,7 @@ TEST_F(Teeth, SwappedFrontAndBackTexturesAreCaught) {
 // A renderer that flips a texture's u (the cover reads right to left) moves no edge of the
 // book; only the artwork inside the cover changes.
 TEST_F(Teeth, MirroredCoverArtIsCaught) {
-  const auto path = fresh_output_dir("teeth-textures-mirrored-front") / "front.png";
+  const auto path = test::fresh_dir("picture/teeth-textures-mirrored-front") / "front.png";
   output::write_png(path, mirrored(render::generate_face_image(render::FaceImage::front)));
   const scene::Scene scene = book_at_rest("front-from-plus-z", "[0.0, 0.0, 1.0]",
                                           {"render.texture_front=\"" + path.string() + "\""});

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "common/text_file.hpp"
 #include "support/scratch.hpp"
 
 namespace bookspin::test {
@@ -54,10 +55,7 @@ struct SplitResult {
 };
 
 inline std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return try_read_text_file(path).value_or(std::string());
 }
 
 /// Runs the built bookspin with `args`, keeping stdout and stderr apart (stderr through a

@@ -1,9 +1,14 @@
 #pragma once
-// The tests' one scratch directory: build/test-output/<name>, emptied when a test asks for it
-// (so a failed test's files stay there to look at until the next run) and never outside the
-// build tree.
+// The tests' one scratch directory: BUILD/test-output/<name>, never outside the build tree.
+// fresh_dir() empties it when a test asks for it (so a failed test's files stay there to look
+// at until the next run); ScratchDir is a fresh_dir named after the running test, removed
+// when the test passed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace bookspin::test {
 
@@ -14,5 +19,39 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
   std::filesystem::create_directories(dir);
   return dir;
 }
+
+/// fresh_dir("scratch/<Suite>.<Test>") of the running GoogleTest test, removed again at the
+/// end of the scope unless the test has failed.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fresh_dir("scratch/" + std::string(info->test_suite_name()) + "." + info->name());
+  }
+  ~ScratchDir() {
+    if (!::testing::Test::HasFailure()) {
+      std::error_code ec;
+      std::filesystem::remove_all(path_, ec);
+    }
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+  /// Every name in the directory, hidden ones included, sorted.
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(path_)) {
+      names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
 
 }  // namespace bookspin::test

@@ -6,7 +6,7 @@ import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { parseState, formatState, DEFAULTS, MODELS, INTEGRATORS, BODIES, AXES } from './state.js';
 
 const $ = (id) => document.getElementById(id);
-const SCENES = window.BOOKSPIN_SCENES || [];   // inlined by web/make-explorer.py
+const SCENES = window.BOOKSPIN_SCENES || [];   // inlined by web/make_explorer.py
 const BOOK_ART = window.BOOKSPIN_BOOK_ART || null;  // data: URL of the cover, if inlined
 
 let wasm = null;

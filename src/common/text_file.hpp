@@ -1,0 +1,22 @@
+#pragma once
+// The one whole-file reader: a scene, a manifest, the explorer page's shell, read as bytes
+// (no newline translation, no encoding check), for every stage.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace bookspin {
+
+/// The bytes of the regular file `path`, or std::nullopt when there are none to read: not a
+/// regular file ("no such file", "is a directory", "not a regular file"), or the file cannot
+/// be opened or read to its end (the OS error, e.g. "Permission denied"); `reason`, when
+/// given, is set to which. Never throws for a bad file.
+std::optional<std::string> try_read_text_file(const std::filesystem::path& path,
+                                              std::string* reason = nullptr);
+
+/// The bytes of the regular file `path`. Throws InputError "PATH: cannot read WHAT: REASON"
+/// (`what`: e.g. "the scene file"; REASON as for try_read_text_file()) when there are none.
+std::string read_text_file(const std::filesystem::path& path, std::string_view what);
+
+}  // namespace bookspin

@@ -1,0 +1,101 @@
+// run_cached (cache/run_cached.hpp): check the manifest, make, record. Counted against a make
+// function that writes one file and counts its calls: made once, then up to date; made again
+// when the head changes, an output is missing or changed size, or when forced; no manifest
+// after a make that threw or was interrupted.
+#include "cache/run_cached.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <stdexcept>
+
+#include "support/scratch.hpp"
+
+namespace bookspin::cache {
+namespace {
+
+using test::ScratchDir;
+
+/// A job writing `out/result.txt` with `content`, counting its calls in `calls`.
+CachedJob counting_job(const ScratchDir& dir, const std::string& head, const std::string& content,
+                       int& calls) {
+  CachedJob job;
+  job.manifest = dir / "manifest.json";
+  job.head = head;
+  job.out_dir = dir.path();
+  job.make = [&dir, content, &calls]() -> std::optional<JobOutputs> {
+    ++calls;
+    std::ofstream(dir / "result.txt") << content;
+    return JobOutputs{"  \"note\": \"test\",\n", {"result.txt"}};
+  };
+  return job;
+}
+
+const std::string kHead = "  \"what\": \"one\",\n";
+
+TEST(RunCached, MakesOnceThenIsUpToDate) {
+  ScratchDir dir;
+  int calls = 0;
+  const CachedJob job = counting_job(dir, kHead, "abc", calls);
+  EXPECT_EQ(run_cached(job), CacheOutcome::made);
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "manifest.json"));
+  EXPECT_EQ(run_cached(job), CacheOutcome::up_to_date);
+  EXPECT_EQ(run_cached(job), CacheOutcome::up_to_date);
+  EXPECT_EQ(calls, 1);
+}
+
+TEST(RunCached, MakesAgainWhenTheHeadChangesAndSaysWhy) {
+  ScratchDir dir;
+  int calls = 0;
+  EXPECT_EQ(run_cached(counting_job(dir, kHead, "abc", calls)), CacheOutcome::made);
+  std::vector<std::string> reasons;
+  const auto note = [&reasons](const std::string& reason) { reasons.push_back(reason); };
+  const CachedJob changed = counting_job(dir, "  \"what\": \"two\",\n", "abc", calls);
+  EXPECT_EQ(run_cached(changed, note), CacheOutcome::made);
+  EXPECT_EQ(run_cached(changed, note), CacheOutcome::up_to_date);
+  EXPECT_EQ(calls, 2);
+  ASSERT_EQ(reasons.size(), 1u);  // only the remake, and only because a manifest was there
+  EXPECT_FALSE(reasons[0].empty());
+}
+
+TEST(RunCached, MakesAgainWhenAnOutputIsMissingOrChangedSize) {
+  ScratchDir dir;
+  int calls = 0;
+  const CachedJob job = counting_job(dir, kHead, "abc", calls);
+  EXPECT_EQ(run_cached(job), CacheOutcome::made);
+  std::filesystem::remove(dir / "result.txt");
+  EXPECT_EQ(run_cached(job), CacheOutcome::made);
+  std::ofstream(dir / "result.txt") << "abcd";  // one byte more than the manifest says
+  EXPECT_EQ(run_cached(job), CacheOutcome::made);
+  EXPECT_EQ(run_cached(job), CacheOutcome::up_to_date);
+  EXPECT_EQ(calls, 3);
+}
+
+TEST(RunCached, ForceMakesEvenWhenUpToDate) {
+  ScratchDir dir;
+  int calls = 0;
+  CachedJob job = counting_job(dir, kHead, "abc", calls);
+  EXPECT_EQ(run_cached(job), CacheOutcome::made);
+  job.force = true;
+  EXPECT_EQ(run_cached(job), CacheOutcome::made);
+  EXPECT_EQ(calls, 2);
+}
+
+TEST(RunCached, AThrowingMakeRemovesTheManifestAndAnInterruptedOneWritesNone) {
+  ScratchDir dir;
+  int calls = 0;
+  EXPECT_EQ(run_cached(counting_job(dir, kHead, "abc", calls)), CacheOutcome::made);
+  CachedJob failing = counting_job(dir, "  \"what\": \"two\",\n", "abc", calls);
+  failing.make = []() -> std::optional<JobOutputs> { throw std::runtime_error("disk full"); };
+  EXPECT_THROW(run_cached(failing), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(dir / "manifest.json"));  // the outputs may be half new
+
+  CachedJob interrupted = counting_job(dir, kHead, "abc", calls);
+  interrupted.make = []() -> std::optional<JobOutputs> { return std::nullopt; };
+  EXPECT_EQ(run_cached(interrupted), CacheOutcome::interrupted);
+  EXPECT_FALSE(std::filesystem::exists(dir / "manifest.json"));
+  EXPECT_EQ(calls, 1);
+}
+
+}  // namespace
+}  // namespace bookspin::cache
