@@ -62,7 +62,8 @@ struct SweepResult {
 
 /// Parses every point's scene first (a bad value is the scene's InputError, naming the key,
 /// before any run), runs them on `jobs` threads, and writes OUT/<scene>-sweep.csv and
-/// OUT/<scene>-sweep.png, or for a shard only OUT/<scene>-sweep.shard-K-of-N.csv (a first
+/// OUT/<scene>-sweep.png (sweep_plots; for two keys a heat map per measure,
+/// charts::heat_map_sheet), or for a shard only OUT/<scene>-sweep.shard-K-of-N.csv (a first
 /// line "# bookspin sweep shard …" recording the scene name, the SHA-256 of the resolved
 /// scene in canonical form after --set (scene::canonical_json), bookspin's build id, the grid
 /// size, the ranges and the measures, then a grid_index column before the full CSV's;
