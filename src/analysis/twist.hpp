@@ -56,8 +56,8 @@ class TwistMeter {
   struct Sample {
     double t, phi, phi_dot, theta, theta_dot;  ///< φ and θ unwrapped (rad)
   };
-  Eigen::Vector3d pole_, b_, c_;       ///< body frame: the pole and two axes normal to it
-  Eigen::Vector3d l_, g1_, g2_;        ///< world: L/|L| at the start and a plane normal to it
+  Eigen::Vector3d pole_, b_, c_;  ///< body frame: the pole and two axes normal to it
+  Eigen::Vector3d l_, g1_, g2_;   ///< world: L/|L| at the start and a plane normal to it
   bool started_ = false, done_ = false;
   Sample first_{}, previous_{};
   std::optional<double> twist_;

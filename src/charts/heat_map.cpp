@@ -106,7 +106,8 @@ void draw_map(cairo_t* cr, const HeatMapSpec& map, const MapRect& region, const 
                 map.value.size(), map.empty_meaning.c_str(), empty);
   text_at(cr, region.left + 0.5 * region.width, region.top + 1.9 * font, legend, 0.5, 0.0);
   // Cells.
-  const double cw = cells.width / static_cast<double>(nx), ch = cells.height / static_cast<double>(ny);
+  const double cw = cells.width / static_cast<double>(nx),
+               ch = cells.height / static_cast<double>(ny);
   for (std::size_t j = 0; j < ny; ++j) {
     for (std::size_t i = 0; i < nx; ++i) {
       const std::size_t c = j * nx + i;
@@ -143,12 +144,13 @@ void draw_map(cairo_t* cr, const HeatMapSpec& map, const MapRect& region, const 
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
   const std::size_t x_step = std::max<std::size_t>(1, (nx + 9) / 10);
   for (std::size_t i = 0; i < nx; i += x_step)
-    text_at(cr, cells.left + (static_cast<double>(i) + 0.5) * cw, cells.top + cells.height + 0.4 * font,
-            short_number(map.x[i]), 0.5, 0.0);
+    text_at(cr, cells.left + (static_cast<double>(i) + 0.5) * cw,
+            cells.top + cells.height + 0.4 * font, short_number(map.x[i]), 0.5, 0.0);
   const std::size_t y_step = std::max<std::size_t>(1, (ny + 9) / 10);
   for (std::size_t j = 0; j < ny; j += y_step)
-    text_at(cr, cells.left - 0.4 * font, cells.top + cells.height - (static_cast<double>(j) + 0.5) * ch,
-            short_number(map.y[j]), 1.0, 0.5);
+    text_at(cr, cells.left - 0.4 * font,
+            cells.top + cells.height - (static_cast<double>(j) + 0.5) * ch, short_number(map.y[j]),
+            1.0, 0.5);
   overlay::select_overlay_font(cr, false, 0.85 * font);
   text_at(cr, cells.left + 0.5 * cells.width, cells.top + cells.height + 1.7 * font,
           map.x_label + (map.log_x ? " (log scale)" : ""), 0.5, 0.0);
@@ -177,8 +179,8 @@ void draw_map(cairo_t* cr, const HeatMapSpec& map, const MapRect& region, const 
               short_number(v), 0.0, 0.5);
     }
   } else {
-    text_at(cr, bar_left + bar_width + 0.3 * font, cells.top + 0.5 * cells.height, "no values",
-            0.0, 0.5);
+    text_at(cr, bar_left + bar_width + 0.3 * font, cells.top + 0.5 * cells.height, "no values", 0.0,
+            0.5);
   }
   cairo_save(cr);
   cairo_translate(cr, region.left + region.width - 0.5 * font, cells.top + 0.5 * cells.height);
@@ -237,18 +239,15 @@ MapRect heat_map_cells(int width, int height, std::size_t header_lines, std::siz
 
 std::array<unsigned char, 3> heat_colour(double fraction) {
   // Six stops of a dark-blue → teal → green → yellow ramp, lightness rising throughout.
-  static constexpr std::array<std::array<double, 3>, 6> kStops{{{68, 1, 84},
-                                                                {65, 68, 135},
-                                                                {42, 120, 142},
-                                                                {34, 168, 132},
-                                                                {122, 209, 81},
-                                                                {253, 231, 37}}};
+  static constexpr std::array<std::array<double, 3>, 6> kStops{
+      {{68, 1, 84}, {65, 68, 135}, {42, 120, 142}, {34, 168, 132}, {122, 209, 81}, {253, 231, 37}}};
   const double f = std::clamp(std::isfinite(fraction) ? fraction : 0.0, 0.0, 1.0) * 5.0;
   const int k = std::min(4, static_cast<int>(f));
   const double t = f - k;
   std::array<unsigned char, 3> rgb{};
   for (int c = 0; c < 3; ++c)
-    rgb[c] = static_cast<unsigned char>(std::lround(kStops[k][c] + t * (kStops[k + 1][c] - kStops[k][c])));
+    rgb[c] = static_cast<unsigned char>(
+        std::lround(kStops[k][c] + t * (kStops[k + 1][c] - kStops[k][c])));
   return rgb;
 }
 

@@ -62,8 +62,7 @@ RunMeasures exact_run(const std::string& text, double length, double dt) {
   char time[160];
   std::snprintf(time, sizeof time, "\n[time]\ndt = %.17g\nsteps_per_frame = 1\nduration = %.17g\n",
                 dt, length);
-  return measure_run(
-      scene::parse_scene_text(text + time, "twist.toml", {"model.kind=\"exact\""}));
+  return measure_run(scene::parse_scene_text(text + time, "twist.toml", {"model.kind=\"exact\""}));
 }
 
 // The twist measured from the exact model's R(t) (van Zon & Schofield's precession, §8) and

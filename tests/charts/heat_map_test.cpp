@@ -44,8 +44,8 @@ TEST(HeatMap, EveryCellIsWhereItsRowSaysInItsValuesColour) {
   }
   const std::vector<std::string> header{"time.dt", "model.normalize_every", "orientation_error",
                                         "diverged_at"};
-  const std::vector<const analysis::Measure*> measures{
-      analysis::find_measure("orientation_error"), analysis::find_measure("diverged_at")};
+  const std::vector<const analysis::Measure*> measures{analysis::find_measure("orientation_error"),
+                                                       analysis::find_measure("diverged_at")};
   const auto maps = sweep_heat_maps(header, rows, dt, true, every, false, measures);
   ASSERT_EQ(maps.size(), 2u);
   EXPECT_EQ(maps[0].x_label, "time.dt");
@@ -84,7 +84,7 @@ TEST(HeatMap, DivergedAtMapsTheTimeAndCountsTheRunsThatFinished) {
   ASSERT_EQ(maps.size(), 1u);
   EXPECT_EQ(maps[0].empty_meaning, "ran to the end");
   EXPECT_EQ(maps[0].diverged, (std::vector<char>{0, 0, 1, 1}));  // j·nx + i
-  EXPECT_EQ(maps[0].value[2], 5.0);                               // (x = 1, y = 2)
+  EXPECT_EQ(maps[0].value[2], 5.0);                              // (x = 1, y = 2)
   EXPECT_EQ(maps[0].value[3], 7.0);
 }
 

@@ -20,7 +20,8 @@ TEST(NormalizeEveryKey, NeedsNormalizeAndReachesEveryTile) {
   // A comparison tile inherits the interval; one that turns normalization off ignores it.
   const Scene s = parse(
       "[model]\nkind = \"rigid-matrix\"\nnormalize = true\nnormalize_every = 5\n"
-      "[[compare]]\nlabel = \"every 5\"\n[[compare]]\nlabel = \"never\"\nmodel.normalize = false\n");
+      "[[compare]]\nlabel = \"every 5\"\n[[compare]]\nlabel = \"never\"\nmodel.normalize = "
+      "false\n");
   EXPECT_EQ(s.compare[0].model.normalize_every, 5);
   EXPECT_FALSE(s.compare[1].model.normalize);
 }
