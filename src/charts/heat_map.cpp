@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "charts/panel.hpp"
 #include "overlay/cairo_canvas.hpp"
 
 namespace bookspin::charts {
@@ -233,7 +234,7 @@ MapRect heat_map_cells(int width, int height, std::size_t header_lines, std::siz
   const MapRect r = map_region(width, height, header_lines, count, index);
   const double font = map_font(height);
   const double left = r.left + 6.0 * font, top = r.top + 3.2 * font;
-  const double right = r.left + r.width - 6.5 * font, bottom = r.top + r.height - 3.0 * font;
+  const double right = r.left + r.width - 8.0 * font, bottom = r.top + r.height - 3.0 * font;
   return {left, top, std::max(1.0, right - left), std::max(1.0, bottom - top)};
 }
 
@@ -257,15 +258,7 @@ RgbaImage heat_map_sheet(const std::vector<std::string>& header,
   std::fill(image.pixels.begin(), image.pixels.end(), 255);
   overlay::CairoCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  const double font = header_font(height);
-  double y = 0.4 * font;
-  for (std::size_t i = 0; i < header.size(); ++i) {
-    overlay::select_overlay_font(cr, i == 0, i == 0 ? font : 0.8 * font);
-    y += 1.35 * (i == 0 ? font : 0.8 * font);
-    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    cairo_move_to(cr, font, y);
-    cairo_show_text(cr, header[i].c_str());
-  }
+  draw_sheet_header(cr, header, header_font(height));
   for (std::size_t m = 0; m < maps.size(); ++m) {
     draw_map(cr, maps[m], map_region(width, height, header.size(), maps.size(), m),
              heat_map_cells(width, height, header.size(), maps.size(), m), map_font(height));
