@@ -33,6 +33,13 @@ figures: bookspin
 	$(BUILD)/bookspin sweep sweeps/t-handle-flip-time-vs-perturbation.toml \
 	  --vary 'initial.angular_velocity[0]=1e-6:1e-2:20:log' \
 	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
+	for f in sweeps/when-to-normalize*.toml; do \
+	  $(BUILD)/bookspin sweep $$f --vary 'time.dt=0.0020833333333333333:0.125:7:log' \
+	    --vary 'model.normalize_every=1:10000:9:log' \
+	    --measure orientation_error,diverged_at -o out || exit 1; \
+	done
+	$(BUILD)/bookspin sweep sweeps/tennis-racket-twist.toml \
+	  --vary 'initial.angular_velocity[0]=1e-3:3:25:log' --measure twist,flip_period -o out
 	@if command -v em++ >/dev/null && command -v npm >/dev/null; then \
 	  bash web/build.sh $(BUILD) && $(BUILD)/bookspin explore $(SCENES) $(SWEEPS) -o out; \
 	else echo "figures: no emscripten or npm: out/explorer.html not made (scripts/install-deps.sh)"; fi

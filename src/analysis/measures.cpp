@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/motion.hpp"
+#include "analysis/twist.hpp"
 #include "physics/exact_model.hpp"
 
 namespace bookspin::analysis {
@@ -18,6 +19,8 @@ const std::vector<Measure>& measure_table() {
       {"orientation_error", "orientation error at the end (rad)", true,
        &RunMeasures::orientation_error, "", nullptr},
       {"diverged_at", "diverged at t (time units)", false, &RunMeasures::diverged_at, "", nullptr},
+      {"twist", "twist about L per period (rad)", false, &RunMeasures::twist, "twist_exact",
+       &RunMeasures::twist_exact},
   };
   return table;
 }
@@ -41,6 +44,9 @@ std::string measure_names() {
 RunMeasures measure_run(const scene::Scene& scene) {
   RunMeasures result;
   const Eigen::Vector3d moments = scene.body.moments;
+  physics::ExactModel reference(scene.body);
+  reference.reset(scene.initial);
+  const physics::ExactRotation& exact = reference.rotation();
   auto sim = physics::make_simulator(scene.body, scene.model);
   sim->reset(scene.initial);
   physics::Diagnostics d = sim->diagnostics();
@@ -48,6 +54,13 @@ RunMeasures measure_run(const scene::Scene& scene) {
   double drift = 0.0;
   FlipDetector flips;
   flips.observe(0.0, flip_signal(d, moments));
+  // The twist is measured over the first period only (docs/physics.md §19).
+  const auto pole = twist_pole(exact);
+  std::optional<TwistMeter> twist;
+  if (pole) {
+    twist.emplace(*pole);
+    twist->observe(0.0, sim->orientation(), d.omega_body, d.L);
+  }
   const long long total = static_cast<long long>(scene.frames - 1) * scene.steps_per_frame;
   for (long long n = 1; n <= total; ++n) {
     sim->step(scene.dt);
@@ -60,14 +73,14 @@ RunMeasures measure_run(const scene::Scene& scene) {
     drift =
         std::max(drift, e0 != 0.0 ? std::abs(d.energy_total / e0 - 1.0) : std::abs(d.energy_total));
     flips.observe(t, flip_signal(d, moments));
+    if (twist && !twist->done()) twist->observe(t, sim->orientation(), d.omega_body, d.L);
   }
+  if (twist) result.twist = twist->twist();
   result.energy_drift = drift;
   result.first_flip = flips.first_flip();
   result.flip_period = flips.flip_period();
 
-  physics::ExactModel reference(scene.body);
-  reference.reset(scene.initial);
-  const physics::ExactRotation& exact = reference.rotation();
+  result.twist_exact = twist_exact(exact);
   const double half = exact.flip_period();
   if (std::isfinite(half)) result.flip_period_exact = half;
   result.first_flip_exact = exact_first_flip(exact, intermediate_axis(moments));

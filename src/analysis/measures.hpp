@@ -22,7 +22,12 @@ struct RunMeasures {
   std::optional<double> energy_drift;       ///< max over every step of |E/E0 − 1|
   std::optional<double> orientation_error;  ///< angle of R_exactᵀ R_model at the run's end
   std::optional<double> diverged_at;        ///< t of the step that diverged; empty if none
+  /// Rotation about L over the first period of the body-frame motion (TwistMeter,
+  /// docs/physics.md §19), rad in (−π, π]; empty before a period ends, for a run that leaves
+  /// the pole's hemisphere, and for steady and separatrix motion.
+  std::optional<double> twist;
   std::optional<double> first_flip_exact, flip_period_exact;
+  std::optional<double> twist_exact;  ///< Montgomery's 2E·T/|L| − Ω (analysis::twist_exact)
 };
 
 /// One row of the measure table.
@@ -37,7 +42,7 @@ struct Measure {
 };
 
 /// The table, in the order the help text lists it: first_flip, flip_period, energy_drift,
-/// orientation_error, diverged_at.
+/// orientation_error, diverged_at, twist.
 const std::vector<Measure>& measure_table();
 
 /// The row named `name`, or null.

@@ -133,13 +133,7 @@ double clip_end_time(const scene::Scene& scene) {
   return static_cast<double>(scene.frames - 1) * scene.steps_per_frame * scene.dt;
 }
 
-RgbaImage plot_sheet(const std::vector<std::string>& header,
-                     const std::vector<overlay::PlotSpec>& plots, int width, int height) {
-  RgbaImage image(width, height);
-  std::fill(image.pixels.begin(), image.pixels.end(), 255);
-  overlay::CairoCanvas canvas(width, height);
-  cairo_t* cr = canvas.cr();
-  const double font = std::max(10.0, 0.024 * height);
+double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font) {
   double y = 0.4 * font;
   for (std::size_t i = 0; i < header.size(); ++i) {
     overlay::select_overlay_font(cr, i == 0, i == 0 ? font : 0.8 * font);
@@ -148,6 +142,17 @@ RgbaImage plot_sheet(const std::vector<std::string>& header,
     cairo_move_to(cr, font, y);
     cairo_show_text(cr, header[i].c_str());
   }
+  return y;
+}
+
+RgbaImage plot_sheet(const std::vector<std::string>& header,
+                     const std::vector<overlay::PlotSpec>& plots, int width, int height) {
+  RgbaImage image(width, height);
+  std::fill(image.pixels.begin(), image.pixels.end(), 255);
+  overlay::CairoCanvas canvas(width, height);
+  cairo_t* cr = canvas.cr();
+  const double font = std::max(10.0, 0.024 * height);
+  double y = draw_sheet_header(cr, header, font);
   y += 0.6 * font;
   const double each = plots.empty() ? 0 : (height - y) / plots.size();
   std::vector<overlay::PlotSpec> aligned = plots;

@@ -37,6 +37,11 @@ std::vector<PanelRun> single_run(const scene::Scene& scene, const DiagnosticsHis
 /// Time of the scene's last frame: (frames − 1) × steps_per_frame × dt, time units.
 double clip_end_time(const scene::Scene& scene);
 
+/// Draws a sheet's `header` lines on `cr` from its top, the first bold at `font` pixels, the
+/// others regular at 0.8·font, 1.35 line heights apart; returns the last line's baseline (y,
+/// pixels).
+double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font);
+
 /// A white width×height image: `header` lines on top (the first bold), the plots stacked
 /// below.
 RgbaImage plot_sheet(const std::vector<std::string>& header,

@@ -203,7 +203,7 @@ void add_sweep(CLI::App& cli, SweepOptions& options) {
       ->allow_extra_args(false);
   cmd->add_option("--measure", options.measures,
                   "Comma-separated: first_flip, flip_period, energy_drift, orientation_error, "
-                  "diverged_at");
+                  "diverged_at, twist");
   cmd->add_option("-j,--jobs", options.jobs, "Threads (0 = hardware threads)")
       ->capture_default_str();
   cmd->add_option("--shard", options.shard,

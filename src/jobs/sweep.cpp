@@ -15,6 +15,7 @@
 #include <sstream>
 #include <thread>
 
+#include "charts/heat_map.hpp"
 #include "charts/panel.hpp"
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
@@ -32,6 +33,7 @@ namespace {
 constexpr const char* kShardMagic = "# bookspin sweep shard ";
 constexpr int kPlotWidth = 1400;
 constexpr int kPlotHeightPerMeasure = 330;
+constexpr int kMapHeightPerRow = 560;  ///< two heat maps a row
 
 /// A measure's cell: empty where the run does not reach it (no flip), else its value, checked
 /// finite on the way out (output/finite_number.hpp).
@@ -100,6 +102,17 @@ std::vector<std::string> plot_header(const SweepTable& table) {
   return lines;
 }
 
+/// A two-key sweep's picture: one heat map per measure, first key on x (charts/heat_map.hpp).
+RgbaImage sweep_heat_map_sheet(const SweepTable& table) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& row : table.rows) rows.push_back(row.second);
+  const auto maps =
+      charts::sweep_heat_maps(table.header, rows, table.ranges[0].values(), table.ranges[0].log,
+                              table.ranges[1].values(), table.ranges[1].log, table.measures);
+  const int height = 120 + kMapHeightPerRow * static_cast<int>((maps.size() + 1) / 2);
+  return charts::heat_map_sheet(plot_header(table), maps, kPlotWidth, height + height % 2);
+}
+
 std::vector<std::filesystem::path> write_full_outputs(const SweepTable& table,
                                                       const SweepPaths& paths) {
   const std::filesystem::path& csv = paths.csv;
@@ -109,6 +122,10 @@ std::vector<std::filesystem::path> write_full_outputs(const SweepTable& table,
     output::AtomicTextFile file(csv);
     write_sweep_csv(table, file.stream());
     file.commit();
+  }
+  if (table.ranges.size() == 2) {
+    output::write_png(png, sweep_heat_map_sheet(table));
+    return {csv, png};
   }
   const auto plots = sweep_plots(table);
   const int height = 120 + kPlotHeightPerMeasure * static_cast<int>(plots.size());

@@ -72,8 +72,9 @@ struct SweepResult {
 };
 
 /// Parses every point's scene first (a bad value is the scene's InputError, naming the key,
-/// before any run), runs them on `jobs` threads, and writes the layout's CSV and plots, or
-/// for a shard only the layout's shard CSV (a first
+/// before any run), runs them on `jobs` threads, and writes the layout's CSV and plots
+/// (sweep_plots; for two keys a heat map per measure, charts::heat_map_sheet), or for a shard
+/// only the layout's shard CSV (a first
 /// line "# bookspin sweep shard …" recording the scene name, the SHA-256 of the resolved
 /// scene in canonical form after --set (scene::canonical_json), bookspin's build id, the grid
 /// size, the ranges and the measures, then a grid_index column before the full CSV's;

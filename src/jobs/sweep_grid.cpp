@@ -6,6 +6,7 @@
 #include <map>
 
 #include "common/errors.hpp"
+#include "scene/limits.hpp"
 
 namespace bookspin::jobs {
 
@@ -67,6 +68,11 @@ std::vector<double> VaryRange::values() const {
     const double x = a + (b - a) * static_cast<double>(i) / (count - 1);
     v[static_cast<std::size_t>(i)] = log ? std::exp(x) : x;
   }
+  // An integer key (model.normalize_every: 1, 3, 10, 32, … on a log range) takes the nearest
+  // whole number, which the scene reader accepts.
+  for (const scene::Limit& limit : scene::kLimits)
+    if (limit.integer && limit.key == key)
+      for (double& value : v) value = std::round(value);
   v.front() = start;
   v.back() = stop;
   return v;

@@ -22,7 +22,8 @@ struct VaryRange {
 
   /// The COUNT values: start + (stop − start)·i/(COUNT − 1) (integral where the step is), or the
   /// same in log space (exp of the linear formula on log start, log stop); the ends are START and
-  /// STOP exactly.
+  /// STOP exactly. For an integer scene key (scene::kLimits) each value is rounded to the
+  /// nearest whole number.
   std::vector<double> values() const;
   /// The range as written after "KEY=", with the numbers in %.17g.
   std::string spec() const;

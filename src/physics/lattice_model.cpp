@@ -14,7 +14,11 @@ namespace bookspin::physics {
 
 LatticeModel::LatticeModel(Lattice lattice, const Eigen::Vector3d& moments,
                            const Corners& cage_rest, const ModelConfig& config)
-    : lattice_(std::move(lattice)), moments_(moments), cage_rest_(cage_rest), config_(config) {
+    : lattice_(std::move(lattice)),
+      moments_(moments),
+      cage_rest_(cage_rest),
+      config_(config),
+      schedule_(config) {
   const int P = lattice_.particles(), S = lattice_.spring_count();
   if (P == 0) throw std::invalid_argument("lattice model: no particles");
   if (!moments.allFinite() || moments.minCoeff() <= 0.0)
@@ -77,6 +81,7 @@ void LatticeModel::reset(const InitialState& initial) {
   }
   energy0_ = kinetic_energy();
   t_ = 0.0;
+  schedule_.reset();
 }
 
 // The particle model's spring force (docs/physics.md §2, paper §3.3) per spring s = (i, j):
@@ -163,7 +168,7 @@ void LatticeModel::step(double dt) {
       drift(dt);
       kick(dt);
   }
-  if (config_.normalize) normalize(energy_at_start);
+  if (schedule_.due()) normalize(energy_at_start);
   t_ += dt;
 }
 

@@ -73,6 +73,7 @@ class LatticeModel final : public Simulator {
   Eigen::Vector3d moments_;
   Corners cage_rest_;
   ModelConfig config_;
+  NormalizeSchedule schedule_;      ///< which steps normalize (model.normalize_every)
   std::vector<int> cage_particle_;  ///< 8 particle indices, or empty: rigid cage
   // Springs, structure of arrays.
   std::vector<int> first_, second_;

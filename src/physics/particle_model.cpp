@@ -82,6 +82,7 @@ CornerRows corner_forces(const SpringVectors& on_second) {
 ParticleModel::ParticleModel(const Book& book, const ModelConfig& config)
     : book_(book),
       config_(config),
+      schedule_(config),
       particle_mass_(book.mass / 8.0),
       damping_(config.damping ? 2.0 * std::sqrt(config.spring_constant * particle_mass_) : 0.0),
       rest_(book.body_corners()) {
@@ -98,6 +99,7 @@ void ParticleModel::reset(const InitialState& initial) {
   for (int p = 0; p < 8; ++p) v_.col(p) = omega0.cross(x_.col(p));
   energy0_ = kinetic_energy();
   t_ = 0.0;
+  schedule_.reset();
 }
 
 // Each spring pulls its ends together with −c·(x_i − x_j) on i and +c·(x_i − x_j) on j,
@@ -151,7 +153,7 @@ void ParticleModel::step(double dt) {
       x_ += dt * v_;
       v_ += (dt * inv_m) * f;
   }
-  if (config_.normalize) normalize(energy_at_start);
+  if (schedule_.due()) normalize(energy_at_start);
   t_ += dt;
 }
 

@@ -43,6 +43,7 @@ class ParticleModel final : public Simulator {
 
   Book book_;
   ModelConfig config_;
+  NormalizeSchedule schedule_;  ///< which steps normalize (model.normalize_every)
   double particle_mass_;
   double damping_;                              ///< 2√(km) with damping, else 0
   Corners rest_;                                ///< body corners at rest (3×8)

@@ -26,6 +26,7 @@ class RigidBody : public Simulator {
   RigidBody(const Body& body, const ModelConfig& config)
       : body_(body),
         config_(config),
+        schedule_(config),
         cage_corners_(body.cage.body_corners()),
         inverse_moments_(body.moments.cwiseInverse()) {}
 
@@ -34,10 +35,12 @@ class RigidBody : public Simulator {
     L_ = initial_angular_momentum(body_.moments, initial);
     t_ = 0.0;
     failure_.clear();
+    schedule_.reset();
   }
 
   Body body_;
   ModelConfig config_;
+  NormalizeSchedule schedule_;                   ///< which steps normalize (normalize_every)
   Corners cage_corners_;                         ///< body.cage's corners, body frame (3×8)
   Eigen::Vector3d inverse_moments_;              ///< 1 / principal moments, body frame
   Eigen::Vector3d L_ = Eigen::Vector3d::Zero();  ///< world frame, constant

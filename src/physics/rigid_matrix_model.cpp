@@ -72,7 +72,7 @@ void RigidMatrixModel::step(double dt) {
     default:  // euler, the paper's method
       euler_step(dt);
   }
-  if (config_.normalize) normalize();
+  if (schedule_.due()) normalize();
   t_ += dt;
 }
 

@@ -138,18 +138,24 @@ void RigidQuaternionModel::step(double dt) {
       // The increments are unit quaternions, so |q| = 1 + O(ε) here and one Newton step
       // for 1/|q| (1.5 − ½|q|²) is q/|q| to round-off, without the square root and division.
       splitting_.step(dt, body_momentum(), q_);
-      if (config_.normalize) q_.coeffs() *= 1.5 - 0.5 * q_.squaredNorm();
+      if (schedule_.due()) q_.coeffs() *= 1.5 - 0.5 * q_.squaredNorm();
       t_ += dt;
       return;
-    default:  // euler, the paper's method; the unit step normalizes itself
-      if (config_.normalize)
+    default:  // euler, the paper's method
+      // Normalized every step, the unit step (which normalizes itself); every N-th step
+      // (docs/physics.md §18), the paper's step and q/|q| after each N-th: q is not a unit
+      // quaternion in between, where the unit step's body-frame form does not hold.
+      if (config_.normalize && config_.normalize_every == 1) {
+        schedule_.due();
         unit_euler_step(dt);
-      else
+      } else {
         raw_euler_step(dt);
+        if (schedule_.due()) q_.normalize();
+      }
       t_ += dt;
       return;
   }
-  if (config_.normalize) q_.normalize();
+  if (schedule_.due()) q_.normalize();
   t_ += dt;
 }
 

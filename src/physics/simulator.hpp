@@ -26,7 +26,10 @@ enum class Integrator {
 struct ModelConfig {
   ModelKind kind = ModelKind::particle;
   Integrator integrator = Integrator::euler;
-  bool normalize = false;         ///< energy (particle), SVD (matrix), |q| (quaternion)
+  bool normalize = false;  ///< energy (particle), SVD (matrix), |q| (quaternion)
+  /// With normalize: normalize after every N-th step only (steps N, 2N, 3N, … of a run;
+  /// docs/physics.md §18). 1 = every step, the paper's method.
+  int normalize_every = 1;
   bool damping = true;            ///< critical spring damping (particle only)
   double spring_constant = 10.0;  ///< k, force per length (particle only)
   /// Particle lattice of a non-book body: cells along the body's longest side; 0 = default
@@ -62,6 +65,27 @@ struct Diagnostics {
   /// centre of mass, world): filled by Simulator::pose(), identity and zero from diagnostics().
   Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d center_of_mass = Eigen::Vector3d::Zero();
+};
+
+/// Which steps of a run normalize (docs/physics.md §18): with config.normalize, steps
+/// N, 2N, 3N, … (N = config.normalize_every, counted from reset()); none without it.
+class NormalizeSchedule {
+ public:
+  explicit NormalizeSchedule(const ModelConfig& config)
+      : every_(config.normalize ? config.normalize_every : 0) {}
+  /// Starts counting again from step 1 (Simulator::reset()).
+  void reset() { since_ = 0; }
+  /// Counts one step; true when this step is to normalize.
+  bool due() {
+    if (every_ <= 0) return false;
+    if (++since_ < every_) return false;
+    since_ = 0;
+    return true;
+  }
+
+ private:
+  int every_ = 0;  ///< N, or 0: never
+  int since_ = 0;  ///< steps since the last normalization
 };
 
 /// What the simulator hands to the rest of the pipeline each frame.

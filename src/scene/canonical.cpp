@@ -44,6 +44,10 @@ void add_model(Members& m, const std::string& prefix, const physics::ModelConfig
   m.emplace_back(prefix + "integrator",
                  json_string(std::string(physics::to_string(model.integrator))));
   m.emplace_back(prefix + "normalize", boolean(model.normalize));
+  // Listed only where it is not 1, so that the manifests written before the key existed
+  // (normalize every step, today's runs) still describe the same scenes.
+  if (model.normalize_every != 1)
+    m.emplace_back(prefix + "normalize_every", std::to_string(model.normalize_every));
   m.emplace_back(prefix + "damping", boolean(model.damping));
   m.emplace_back(prefix + "spring_constant", number(model.spring_constant));
   m.emplace_back(prefix + "lattice_cells", std::to_string(model.lattice_cells));

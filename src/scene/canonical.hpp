@@ -16,6 +16,9 @@ namespace bookspin::scene {
 /// cage (book.size, book.mass); comparison tiles are `compare[i].key`. Texture and mesh
 /// paths are written relative to the scene file's folder, so the text does not depend on
 /// where the checkout lives. Numbers: shortest round-trip form (%.17g), JSON-valid.
+/// model.normalize_every is listed only where it is not 1 (normalizing every step), so that
+/// the manifests written before the key existed still match; time.duration appears as the
+/// time.frames it gives.
 std::string canonical_json(const Scene& scene, int indent = 4);
 
 /// `text` as a JSON string literal, quotes included (", \ and control characters escaped).

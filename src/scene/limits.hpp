@@ -35,6 +35,7 @@ inline constexpr double kInt64Max = 9223372036854775807.0;
 inline constexpr std::array kLimits{
     Limit{"model.spring_constant", 0.0, 1e12, true, 10.0},
     Limit{"model.lattice_cells", 0, 64, false, 0.0, true},
+    Limit{"model.normalize_every", 1, 1000000, false, 1.0, true},
     Limit{"body.mass", 1e-12, 1e12, false, 1.0},
     Limit{"body.scale", 1e-6, 1e6, false, 1.0},
     Limit{"book.size", 1e-6, 1e6, false, std::nullopt},
@@ -46,6 +47,7 @@ inline constexpr std::array kLimits{
     Limit{"time.dt", 0.0, 1e3, true, 1.0 / 60.0},
     Limit{"time.steps_per_frame", 1, 1000000, false, 6.0, true},
     Limit{"time.frames", 1, 100000, false, 300.0, true},
+    Limit{"time.duration", 0.0, 1e6, true, std::nullopt},
     Limit{"render.width", 16, 7680, false, 1280.0, true},
     Limit{"render.height", 16, 7680, false, 720.0, true},
     Limit{"render.fps", 1, 240, false, 30.0, true},

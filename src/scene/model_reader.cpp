@@ -49,6 +49,12 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
            "model '" + kind + "' does not support integrator '" + integrator + "'");
   }
   m.normalize = r.boolean("model.normalize", fallback.normalize);
+  m.normalize_every =
+      static_cast<int>(r.integer(limit("model.normalize_every"), fallback.normalize_every));
+  // An interval means nothing without the normalization it spaces (docs/physics.md §18).
+  if (r.has("model.normalize_every") && !m.normalize)
+    r.fail("model.normalize_every",
+           "needs model.normalize = true (it says how often to normalize)");
   m.damping = r.boolean("model.damping", fallback.damping);
   m.spring_constant = r.number(limit("model.spring_constant"), fallback.spring_constant);
   m.lattice_cells =

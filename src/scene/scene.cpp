@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <limits>
 
 #include "common/text_file.hpp"
@@ -110,6 +111,18 @@ void read_time(TomlReader& r, Scene& s) {
   s.dt = r.number(limit("time.dt"));
   s.steps_per_frame = static_cast<int>(r.integer(limit("time.steps_per_frame")));
   s.frames = static_cast<int>(r.integer(limit("time.frames")));
+  if (!r.has("time.duration")) return;
+  // A run of a given length whatever dt is (a sweep over dt): the frames that cover it.
+  if (r.has("time.frames"))
+    r.fail("time.duration", "give either time.frames or time.duration, not both");
+  const double duration = r.number(limit("time.duration"), 0.0);
+  const double frames = 1.0 + std::ceil(duration / (s.dt * s.steps_per_frame) - 1e-9);
+  if (frames > limit("time.frames").max) {
+    r.fail("time.duration", "needs " + std::to_string(static_cast<long long>(frames)) +
+                                " frames at time.dt × time.steps_per_frame, more than 100000: "
+                                "raise time.steps_per_frame");
+  }
+  s.frames = static_cast<int>(frames);
 }
 
 std::string read_texture(TomlReader& r, std::string_view key, const std::filesystem::path& origin) {

@@ -107,6 +107,8 @@ std::string scene_with(const Limit& limit, const std::string& value, bool vector
   // A body key, or a lattice finer than the book's one cell: a non-book body.
   if (table == "body" || key == "model.lattice_cells") text += "[body]\nshape = \"phone\"\n";
   if (table != "body") text += "[" + table + "]\n";
+  if (key == "model.normalize_every") text += "normalize = true\n";
+  if (key == "time.duration") text += "steps_per_frame = 1000000\n";
   if (key == "render.gif_width") text += "width = 7680\n";
   if (key == "render.gif_fps") text += "fps = 240\n";
   if (key == "initial.spin_rate") text += "spin_axis = \"largest\"\n";
@@ -168,6 +170,7 @@ TEST(LimitsTable, DefaultsAreWhatAMissingKeyGives) {
   const Scene s = parse("[scene]\nname = \"defaults\"\n");
   const std::map<std::string, double> got{{"model.spring_constant", s.model.spring_constant},
                                           {"model.lattice_cells", s.model.lattice_cells},
+                                          {"model.normalize_every", s.model.normalize_every},
                                           {"book.mass", s.body.cage.mass},
                                           {"initial.jiggle", s.initial.jiggle},
                                           {"initial.seed", static_cast<double>(s.initial.seed)},

@@ -1,0 +1,270 @@
+#include "charts/heat_map.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+
+#include "charts/panel.hpp"
+#include "overlay/cairo_canvas.hpp"
+
+namespace bookspin::charts {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The sheet's header font and the maps' font (pixels), from the sheet's height.
+double header_font(int height) { return std::clamp(0.024 * height, 10.0, 22.0); }
+double map_font(int height) { return 0.8 * header_font(height); }
+
+double header_height(int height, std::size_t lines) {
+  const double font = header_font(height);
+  double y = 0.4 * font;
+  for (std::size_t i = 0; i < lines; ++i) y += 1.35 * (i == 0 ? font : 0.8 * font);
+  return y + 0.6 * font;
+}
+
+/// The region of map `index` (title, legend, axes, colour bar and cells).
+MapRect map_region(int width, int height, std::size_t header_lines, std::size_t count,
+                   std::size_t index) {
+  const std::size_t columns = count >= 2 ? 2 : 1;
+  const std::size_t rows = (count + columns - 1) / columns;
+  const double top = header_height(height, header_lines);
+  const double w = static_cast<double>(width) / columns;
+  const double h = (height - top) / static_cast<double>(std::max<std::size_t>(rows, 1));
+  return {w * static_cast<double>(index % columns), top + h * static_cast<double>(index / columns),
+          w, h};
+}
+
+/// The grid index of `value` among `grid` (the cell's text parsed back), or -1.
+int grid_index(const std::vector<double>& grid, double value) {
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (std::abs(grid[i] - value) <= 1e-12 * std::max(std::abs(grid[i]), 1e-300))
+      return static_cast<int>(i);
+  return -1;
+}
+
+double parse(const std::string& text) {
+  return text.empty() ? kNaN : std::strtod(text.c_str(), nullptr);
+}
+
+std::string short_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+void text_at(cairo_t* cr, double x, double y, const std::string& text, double align_x,
+             double align_y) {
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text.c_str(), &e);
+  cairo_move_to(cr, x - align_x * e.width - e.x_bearing, y - align_y * e.height - e.y_bearing);
+  cairo_show_text(cr, text.c_str());
+}
+
+/// The range of the finite (and, on a log scale, positive) values, in log10 where log.
+bool value_range(const HeatMapSpec& map, double& lo, double& hi) {
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  for (double v : map.value) {
+    if (!std::isfinite(v) || (map.log_value && v <= 0.0)) continue;
+    const double s = map.log_value ? std::log10(v) : v;
+    lo = std::min(lo, s);
+    hi = std::max(hi, s);
+  }
+  return lo <= hi;
+}
+
+double scaled(const HeatMapSpec& map, double v) {
+  if (map.log_value) return v > 0.0 ? std::log10(v) : -std::numeric_limits<double>::infinity();
+  return v;
+}
+
+void draw_map(cairo_t* cr, const HeatMapSpec& map, const MapRect& region, const MapRect& cells,
+              double font) {
+  const std::size_t nx = map.x.size(), ny = map.y.size();
+  double lo = 0.0, hi = 1.0;
+  const bool any = value_range(map, lo, hi);
+  int diverged = 0, empty = 0;
+  for (std::size_t c = 0; c < map.value.size(); ++c) {
+    if (map.diverged[c])
+      ++diverged;
+    else if (!std::isfinite(map.value[c]))
+      ++empty;
+  }
+  // Title and legend.
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  overlay::select_overlay_font(cr, true, font);
+  text_at(cr, region.left + 0.5 * region.width, region.top + 0.5 * font, map.title, 0.5, 0.0);
+  overlay::select_overlay_font(cr, false, 0.85 * font);
+  char legend[200];
+  std::snprintf(legend, sizeof legend, "\u00d7 diverged: %d of %zu cells    grey: %s, %d", diverged,
+                map.value.size(), map.empty_meaning.c_str(), empty);
+  text_at(cr, region.left + 0.5 * region.width, region.top + 1.9 * font, legend, 0.5, 0.0);
+  // Cells.
+  const double cw = cells.width / static_cast<double>(nx),
+               ch = cells.height / static_cast<double>(ny);
+  for (std::size_t j = 0; j < ny; ++j) {
+    for (std::size_t i = 0; i < nx; ++i) {
+      const std::size_t c = j * nx + i;
+      const double v = map.value[c];
+      const double x0 = cells.left + static_cast<double>(i) * cw;
+      const double y0 = cells.top + cells.height - static_cast<double>(j + 1) * ch;
+      if (std::isfinite(v) && any) {
+        const double f = hi > lo ? (scaled(map, v) - lo) / (hi - lo) : 0.5;
+        const auto rgb = heat_colour(f);
+        cairo_set_source_rgb(cr, rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
+      } else {
+        cairo_set_source_rgb(cr, 0.82, 0.82, 0.82);
+      }
+      cairo_rectangle(cr, x0, y0, cw, ch);
+      cairo_fill(cr);
+      if (map.diverged[c]) {
+        cairo_set_source_rgb(cr, 0.0, 0.0, 0.0);
+        cairo_set_line_width(cr, std::max(1.5, 0.06 * std::min(cw, ch)));
+        const double m = 0.2 * std::min(cw, ch);
+        cairo_move_to(cr, x0 + m, y0 + m);
+        cairo_line_to(cr, x0 + cw - m, y0 + ch - m);
+        cairo_move_to(cr, x0 + cw - m, y0 + m);
+        cairo_line_to(cr, x0 + m, y0 + ch - m);
+        cairo_stroke(cr);
+      }
+    }
+  }
+  cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+  cairo_set_line_width(cr, 1.0);
+  cairo_rectangle(cr, cells.left, cells.top, cells.width, cells.height);
+  cairo_stroke(cr);
+  // Axes: every grid value at its cell's centre (every k-th where they would crowd).
+  overlay::select_overlay_font(cr, false, 0.8 * font);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  const std::size_t x_step = std::max<std::size_t>(1, (nx + 9) / 10);
+  for (std::size_t i = 0; i < nx; i += x_step)
+    text_at(cr, cells.left + (static_cast<double>(i) + 0.5) * cw,
+            cells.top + cells.height + 0.4 * font, short_number(map.x[i]), 0.5, 0.0);
+  const std::size_t y_step = std::max<std::size_t>(1, (ny + 9) / 10);
+  for (std::size_t j = 0; j < ny; j += y_step)
+    text_at(cr, cells.left - 0.4 * font,
+            cells.top + cells.height - (static_cast<double>(j) + 0.5) * ch, short_number(map.y[j]),
+            1.0, 0.5);
+  overlay::select_overlay_font(cr, false, 0.85 * font);
+  text_at(cr, cells.left + 0.5 * cells.width, cells.top + cells.height + 1.7 * font,
+          map.x_label + (map.log_x ? " (log scale)" : ""), 0.5, 0.0);
+  cairo_save(cr);
+  cairo_translate(cr, region.left + 0.6 * font, cells.top + 0.5 * cells.height);
+  cairo_rotate(cr, -M_PI / 2);
+  text_at(cr, 0, 0, map.y_label + (map.log_y ? " (log scale)" : ""), 0.5, 0.0);
+  cairo_restore(cr);
+  // Colour bar: the scale from its smallest value (bottom) to its largest (top).
+  const double bar_left = cells.left + cells.width + 1.2 * font, bar_width = 1.2 * font;
+  const int stripes = 64;
+  for (int s = 0; s < stripes; ++s) {
+    const auto rgb = heat_colour((s + 0.5) / stripes);
+    cairo_set_source_rgb(cr, rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0);
+    const double y1 = cells.top + cells.height * (1.0 - static_cast<double>(s + 1) / stripes);
+    cairo_rectangle(cr, bar_left, y1, bar_width, cells.height / stripes + 0.5);
+    cairo_fill(cr);
+  }
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  overlay::select_overlay_font(cr, false, 0.8 * font);
+  if (any) {
+    for (int k = 0; k <= 2; ++k) {
+      const double s = lo + (hi - lo) * k / 2.0;
+      const double v = map.log_value ? std::pow(10.0, s) : s;
+      text_at(cr, bar_left + bar_width + 0.3 * font, cells.top + cells.height * (1.0 - k / 2.0),
+              short_number(v), 0.0, 0.5);
+    }
+  } else {
+    text_at(cr, bar_left + bar_width + 0.3 * font, cells.top + 0.5 * cells.height, "no values", 0.0,
+            0.5);
+  }
+  cairo_save(cr);
+  cairo_translate(cr, region.left + region.width - 0.5 * font, cells.top + 0.5 * cells.height);
+  cairo_rotate(cr, -M_PI / 2);
+  overlay::select_overlay_font(cr, false, 0.85 * font);
+  text_at(cr, 0, 0, map.value_label + (map.log_value ? " (log scale)" : ""), 0.5, 0.5);
+  cairo_restore(cr);
+}
+
+}  // namespace
+
+std::vector<HeatMapSpec> sweep_heat_maps(const std::vector<std::string>& header,
+                                         const std::vector<std::vector<std::string>>& rows,
+                                         const std::vector<double>& x, bool log_x,
+                                         const std::vector<double>& y, bool log_y,
+                                         const std::vector<const analysis::Measure*>& measures) {
+  std::optional<std::size_t> diverged_column;
+  for (std::size_t m = 0; m < measures.size(); ++m)
+    if (measures[m]->name == "diverged_at") diverged_column = 2 + m;
+  std::vector<HeatMapSpec> maps;
+  for (std::size_t m = 0; m < measures.size(); ++m) {
+    HeatMapSpec map;
+    map.title = std::string(measures[m]->name);
+    map.x_label = header.at(0);
+    map.y_label = header.at(1);
+    map.value_label = std::string(measures[m]->axis_label);
+    map.log_x = log_x;
+    map.log_y = log_y;
+    map.log_value = measures[m]->log_scale;
+    map.x = x;
+    map.y = y;
+    map.value.assign(x.size() * y.size(), kNaN);
+    map.diverged.assign(x.size() * y.size(), 0);
+    if (measures[m]->name == "diverged_at") map.empty_meaning = "ran to the end";
+    for (const auto& cells : rows) {
+      const int i = grid_index(x, parse(cells.at(0)));
+      const int j = grid_index(y, parse(cells.at(1)));
+      if (i < 0 || j < 0) throw std::invalid_argument("sweep row off the grid: " + cells.at(0));
+      const std::size_t c = static_cast<std::size_t>(j) * x.size() + static_cast<std::size_t>(i);
+      map.value[c] = parse(cells.at(2 + m));
+      if (diverged_column) map.diverged[c] = !cells.at(*diverged_column).empty();
+    }
+    maps.push_back(std::move(map));
+  }
+  return maps;
+}
+
+MapRect heat_map_cells(int width, int height, std::size_t header_lines, std::size_t count,
+                       std::size_t index) {
+  const MapRect r = map_region(width, height, header_lines, count, index);
+  const double font = map_font(height);
+  const double left = r.left + 6.0 * font, top = r.top + 3.2 * font;
+  const double right = r.left + r.width - 8.0 * font, bottom = r.top + r.height - 3.0 * font;
+  return {left, top, std::max(1.0, right - left), std::max(1.0, bottom - top)};
+}
+
+std::array<unsigned char, 3> heat_colour(double fraction) {
+  // Six stops of a dark-blue → teal → green → yellow ramp, lightness rising throughout.
+  static constexpr std::array<std::array<double, 3>, 6> kStops{
+      {{68, 1, 84}, {65, 68, 135}, {42, 120, 142}, {34, 168, 132}, {122, 209, 81}, {253, 231, 37}}};
+  const double f = std::clamp(std::isfinite(fraction) ? fraction : 0.0, 0.0, 1.0) * 5.0;
+  const int k = std::min(4, static_cast<int>(f));
+  const double t = f - k;
+  std::array<unsigned char, 3> rgb{};
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = static_cast<unsigned char>(
+        std::lround(kStops[k][c] + t * (kStops[k + 1][c] - kStops[k][c])));
+  return rgb;
+}
+
+RgbaImage heat_map_sheet(const std::vector<std::string>& header,
+                         const std::vector<HeatMapSpec>& maps, int width, int height) {
+  RgbaImage image(width, height);
+  std::fill(image.pixels.begin(), image.pixels.end(), 255);
+  overlay::CairoCanvas canvas(width, height);
+  cairo_t* cr = canvas.cr();
+  draw_sheet_header(cr, header, header_font(height));
+  for (std::size_t m = 0; m < maps.size(); ++m) {
+    draw_map(cr, maps[m], map_region(width, height, header.size(), maps.size(), m),
+             heat_map_cells(width, height, header.size(), maps.size(), m), map_font(height));
+  }
+  canvas.composite_onto(image);
+  return image;
+}
+
+}  // namespace bookspin::charts

@@ -1,0 +1,63 @@
+#pragma once
+// A sweep over two keys drawn as maps (docs/sweeps.md): one heat map per measure, the first
+// key on x, the second on y, a colour bar with the measure's unit, diverged cells marked.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "analysis/measures.hpp"
+#include "common/rgba_image.hpp"
+
+namespace bookspin::charts {
+
+/// One measure over a two-key grid. Cell (i, j) is x[i], y[j]; the cells are equal in size,
+/// as the grid is evenly spaced on each axis (in log(value) where log).
+struct HeatMapSpec {
+  std::string title;        ///< the measure's name
+  std::string x_label;      ///< the first key
+  std::string y_label;      ///< the second key
+  std::string value_label;  ///< the colour bar's label, with the measure's unit
+  bool log_x = false, log_y = false, log_value = false;
+  std::vector<double> x, y;  ///< the grid's values, in the order of the ranges
+  /// value[j·x.size() + i]: the measure at (x[i], y[j]); NaN where the cell is empty
+  std::vector<double> value;
+  /// same layout: the run diverged (the sweep's diverged_at is set)
+  std::vector<char> diverged;
+  /// What an empty cell means, for the legend: "no value", or for diverged_at itself "ran to
+  /// the end".
+  std::string empty_meaning = "no value";
+};
+
+/// A rectangle in pixels.
+struct MapRect {
+  double left, top, width, height;
+};
+
+/// The maps of a sweep's table (header and rows as written: %.17g cells, empty where a measure
+/// is undefined; keys in columns 0 and 1, then the measures in order): one per measure, the
+/// cell of each row placed at its two key values. A cell is diverged where the table has a
+/// non-empty diverged_at column. Throws std::invalid_argument for a row whose key values are
+/// not on the grid (`x`, `y` of the ranges).
+std::vector<HeatMapSpec> sweep_heat_maps(const std::vector<std::string>& header,
+                                         const std::vector<std::vector<std::string>>& rows,
+                                         const std::vector<double>& x, bool log_x,
+                                         const std::vector<double>& y, bool log_y,
+                                         const std::vector<const analysis::Measure*>& measures);
+
+/// Where map `index` of `count` draws its cells in a width×height sheet with `header_lines`
+/// lines of header (two maps a row): cell (i, j) of an nx×ny map is the rectangle
+/// [left + i·width/nx, left + (i+1)·width/nx] × [top + height − (j+1)·height/ny, …], y up.
+MapRect heat_map_cells(int width, int height, std::size_t header_lines, std::size_t count,
+                       std::size_t index);
+
+/// The colour of `fraction` (0 … 1, clamped) on the maps' scale: dark blue through green to
+/// yellow (a viridis-like ramp of six stops), 8-bit RGB.
+std::array<unsigned char, 3> heat_colour(double fraction);
+
+/// The sheet: `header` lines (the first bold), then the maps, two a row, each with its
+/// title, a legend line (cells diverged, marked ×, and cells empty, each counted), axes
+/// with the grid values, and a colour bar labelled with the unit.
+RgbaImage heat_map_sheet(const std::vector<std::string>& header,
+                         const std::vector<HeatMapSpec>& maps, int width, int height);
+
+}  // namespace bookspin::charts

@@ -1,0 +1,98 @@
+// A two-key sweep's heat maps (charts/heat_map.hpp): every cell is drawn where its CSV row's
+// two key values say, in the colour of its value, and diverged cells are marked.
+#include "charts/heat_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace bookspin::charts {
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ',')) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+std::string number(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
+// A 4 × 3 grid as `bookspin sweep` writes it (first key slowest): time.dt on a log range,
+// normalize_every on a linear one. orientation_error = 10^(i + 4j) ranks every cell apart on
+// its log colour scale; the run at (dt[3], every[0]) diverged (diverged_at set, no error).
+TEST(HeatMap, EveryCellIsWhereItsRowSaysInItsValuesColour) {
+  const std::vector<double> dt{1.0 / 480, 1.0 / 120, 1.0 / 30, 1.0 / 8};  // log spaced, ×4
+  const std::vector<double> every{1, 11, 21};
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 0; i < dt.size(); ++i) {
+    for (std::size_t j = 0; j < every.size(); ++j) {
+      const bool diverged = i == 3 && j == 0;
+      const std::string line = number(dt[i]) + "," + number(every[j]) + "," +
+                               (diverged ? "" : number(std::pow(10.0, i + 4.0 * j))) + "," +
+                               (diverged ? "1234.5" : "");
+      rows.push_back(split(line));
+    }
+  }
+  const std::vector<std::string> header{"time.dt", "model.normalize_every", "orientation_error",
+                                        "diverged_at"};
+  const std::vector<const analysis::Measure*> measures{analysis::find_measure("orientation_error"),
+                                                       analysis::find_measure("diverged_at")};
+  const auto maps = sweep_heat_maps(header, rows, dt, true, every, false, measures);
+  ASSERT_EQ(maps.size(), 2u);
+  EXPECT_EQ(maps[0].x_label, "time.dt");
+  EXPECT_EQ(maps[0].y_label, "model.normalize_every");
+  EXPECT_NE(maps[0].value_label.find("(rad)"), std::string::npos);  // the unit on the bar
+
+  const int width = 1400, height = 680;
+  const std::vector<std::string> lines{"Sweep", "varied: time.dt", "varied: normalize_every"};
+  const RgbaImage image = heat_map_sheet(lines, maps, width, height);
+  const MapRect cells = heat_map_cells(width, height, lines.size(), maps.size(), 0);
+  for (std::size_t i = 0; i < dt.size(); ++i) {
+    for (std::size_t j = 0; j < every.size(); ++j) {
+      SCOPED_TRACE("cell dt[" + std::to_string(i) + "], every[" + std::to_string(j) + "]");
+      // y grows upwards: row j from the bottom.
+      const int px = static_cast<int>((cells.left + (i + 0.5) * cells.width / dt.size()));
+      const int py =
+          static_cast<int>(cells.top + cells.height - (j + 0.5) * cells.height / every.size());
+      const std::uint8_t* p = image.row(py) + 4 * px;
+      if (i == 3 && j == 0) {  // the diverged run: the × crosses the cell's centre
+        EXPECT_LT(p[0] + p[1] + p[2], 60);
+        continue;
+      }
+      // log10 of the values spans 0 (dt[0], every[0]) … 11 (dt[3], every[2]).
+      const auto rgb = heat_colour((i + 4.0 * j) / 11.0);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], rgb[c], 2) << "channel " << c;
+    }
+  }
+}
+
+TEST(HeatMap, DivergedAtMapsTheTimeAndCountsTheRunsThatFinished) {
+  const std::vector<double> x{1, 2}, y{1, 2};
+  const std::vector<std::vector<std::string>> rows{
+      {"1", "1", ""}, {"1", "2", "5"}, {"2", "1", ""}, {"2", "2", "7"}};
+  const auto maps = sweep_heat_maps({"a", "b", "diverged_at"}, rows, x, false, y, false,
+                                    {analysis::find_measure("diverged_at")});
+  ASSERT_EQ(maps.size(), 1u);
+  EXPECT_EQ(maps[0].empty_meaning, "ran to the end");
+  EXPECT_EQ(maps[0].diverged, (std::vector<char>{0, 0, 1, 1}));  // j·nx + i
+  EXPECT_EQ(maps[0].value[2], 5.0);                              // (x = 1, y = 2)
+  EXPECT_EQ(maps[0].value[3], 7.0);
+}
+
+TEST(HeatMap, ARowOffTheGridIsAnError) {
+  EXPECT_THROW(sweep_heat_maps({"a", "b", "twist"}, {{"1", "3", "0.5"}}, {1, 2}, false, {1, 2},
+                               false, {analysis::find_measure("twist")}),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace bookspin::charts
