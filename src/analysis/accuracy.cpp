@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "engines/models.hpp"
 #include "physics/exact_model.hpp"
 
 namespace bookspin::analysis {
@@ -19,7 +20,7 @@ std::unique_ptr<physics::Simulator> start(const AccuracySettings& s, const Metho
   physics::ModelConfig config = s.model;
   config.kind = m.kind;
   config.integrator = m.integrator;
-  auto sim = physics::make_simulator(s.body, config);
+  auto sim = engines::make_model(s.body, config);
   sim->reset(s.initial);
   return sim;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "analysis/motion.hpp"
+#include "engines/models.hpp"
 #include "physics/exact_model.hpp"
 
 namespace bookspin::analysis {
@@ -41,7 +42,7 @@ std::string measure_names() {
 RunMeasures measure_run(const scene::Scene& scene) {
   RunMeasures result;
   const Eigen::Vector3d moments = scene.body.moments;
-  auto sim = physics::make_simulator(scene.body, scene.model);
+  auto sim = engines::make_model(scene.body, scene.model);
   sim->reset(scene.initial);
   physics::Diagnostics d = sim->diagnostics();
   const double e0 = d.energy_total;
