@@ -47,13 +47,28 @@ std::vector<Method> all_methods() {
     for (Integrator i : {Integrator::euler, Integrator::rk4, Integrator::implicit_midpoint,
                          Integrator::splitting, Integrator::splitting4})
       methods.push_back({kind, i});
+  for (const Method& m : engine_methods()) methods.push_back(m);
   return methods;
+}
+
+std::vector<Method> engine_methods() {
+  return {{ModelKind::mujoco, Integrator::euler},
+          {ModelKind::mujoco, Integrator::rk4},
+          {ModelKind::mujoco, Integrator::implicit},
+          {ModelKind::bullet, Integrator::implicit_body},
+          {ModelKind::bullet, Integrator::implicit_world},
+          {ModelKind::bullet, Integrator::explicit_gyro},
+          {ModelKind::bullet, Integrator::none},
+          {ModelKind::ode, Integrator::step},
+          {ModelKind::ode, Integrator::quickstep},
+          {ModelKind::ode, Integrator::none}};
 }
 
 std::vector<Method> rigid_methods() {
   std::vector<Method> methods;
   for (const Method& m : all_methods())
-    if (m.kind != ModelKind::particle) methods.push_back(m);
+    if (m.kind == ModelKind::rigid_matrix || m.kind == ModelKind::rigid_quaternion)
+      methods.push_back(m);
   return methods;
 }
 
@@ -129,6 +144,16 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
       row.diverged ? nan : rotation_angle_between(exact.orientation(row.t_end), sim->orientation());
   row.flip_period = flips.flip_period().value_or(std::numeric_limits<double>::quiet_NaN());
   row.flip_period_error = std::abs(row.flip_period / flip - 1.0);
+  row.first_flip = flips.first_flip().value_or(nan);
+  row.flips = flips.count();
+  const int intermediate = physics::principal_order(s.body.moments)[1];
+  if (const auto first_exact = exact_first_flip(exact, intermediate)) {
+    row.first_flip_error = std::abs(row.first_flip / *first_exact - 1.0);
+    if (row.t_end >= *first_exact)
+      row.flips_exact = 1 + static_cast<int>(std::floor((row.t_end - *first_exact) / flip));
+  } else {
+    row.first_flip_error = nan;
+  }
   row.ns_per_step = time_steps(s, m, dt, row.steps);
   return row;
 }

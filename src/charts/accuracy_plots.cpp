@@ -53,7 +53,11 @@ std::string method_label(const analysis::Method& m) {
 
 void style_series(const analysis::Method& m, overlay::Series& s) {
   overlay::palette_colour(static_cast<int>(m.integrator), s.r, s.g, s.b);
-  s.dashed = m.kind == physics::ModelKind::rigid_quaternion;
+  const auto engines = analysis::engine_methods();
+  for (std::size_t i = 0; i < engines.size(); ++i)  // each engine mode its own colour
+    if (same_method(engines[i], m)) overlay::palette_colour(7 + static_cast<int>(i), s.r, s.g, s.b);
+  // The engines (docs/engines.md) dashed like the quaternion: their state is a quaternion too.
+  s.dashed = m.kind == physics::ModelKind::rigid_quaternion || physics::is_engine(m.kind);
   if (m.kind == physics::ModelKind::particle)
     s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(m.integrator);
 }

@@ -9,6 +9,11 @@ namespace bookspin::engines {
 
 namespace {
 
+// MuJoCo prints a warning and resets mjData when the state turns bad (NaN or huge qpos, qvel,
+// qacc); bookspin ends the run there instead (finite() false, divergence_reason()), so the
+// warning is kept quiet and read from mjData's warning counters.
+void quiet_warning(const char*) {}
+
 std::mutex& mujoco_loader_mutex() {
   static std::mutex mutex;
   return mutex;
@@ -48,6 +53,7 @@ const char* mujoco_integrator_name(physics::Integrator integrator) {
 
 mjModel* load_mjcf(const std::string& xml, const char* file_name, const char* what) {
   const std::lock_guard<std::mutex> lock(mujoco_loader_mutex());
+  mju_user_warning = quiet_warning;
   mjVFS vfs;
   mj_defaultVFS(&vfs);
   if (mj_makeEmptyFileVFS(&vfs, file_name, static_cast<int>(xml.size())) != 0)
@@ -82,13 +88,24 @@ void MujocoModel::reset(const physics::InitialState& initial) {
   const Eigen::Vector3d omega = initial_omega(initial);
   for (int i = 0; i < 3; ++i) data_->qvel[3 + i] = omega[i];
   t_ = 0.0;
+  failure_.clear();
 }
 
 void MujocoModel::step(double dt) {
+  if (!failure_.empty()) return;  // the run has ended
   model_->opt.timestep = dt;
   mj_step(model_, data_);
+  for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC}) {
+    if (data_->warning[w].number == 0) continue;
+    char reason[96];
+    std::snprintf(reason, sizeof reason, "MuJoCo reset its state (a bad number) at t = %.6g", t_);
+    failure_ = reason;
+    return;
+  }
   t_ += dt;
 }
+
+bool MujocoModel::finite() const { return failure_.empty() && EngineBody::finite(); }
 
 Eigen::Quaterniond MujocoModel::engine_quaternion() const {
   const mjtNum* q = data_->qpos + 3;

@@ -28,12 +28,17 @@ class MujocoModel final : public EngineBody {
   MujocoModel& operator=(const MujocoModel&) = delete;
 
   void reset(const physics::InitialState& initial) override;
+  /// One mj_step of dt. Where MuJoCo finds a bad number and resets its state, the run ends
+  /// instead: finite() turns false and divergence_reason() says when.
   void step(double dt) override;
+  bool finite() const override;
+  std::string divergence_reason() const override { return failure_; }
 
  private:
   Eigen::Quaterniond engine_quaternion() const override;
   Eigen::Vector3d engine_omega_body() const override;
 
+  std::string failure_;  ///< why the run ended; empty while it runs
   mjModel* model_ = nullptr;
   mjData* data_ = nullptr;
 };
