@@ -221,7 +221,8 @@ TEST(EngineModels, WithoutTheGyroscopicTermOmegaStaysPut) {
 }
 
 // A spin about the largest axis (the book's z) with a little of the others stays about it in
-// every mode: the cosine of the largest principal axis with L stays near 1 for 100 time units.
+// every mode: the cosine of the largest principal axis with L stays near 1 for 400 time units
+// (about two flip periods of a spin that near the intermediate axis).
 TEST(EngineModels, SpinAboutTheLargestAxisStaysPut) {
   const physics::Body book = physics::book_body(physics::Book{});
   physics::InitialState initial;
@@ -230,7 +231,7 @@ TEST(EngineModels, SpinAboutTheLargestAxisStaysPut) {
     auto sim = make_model(book, {mode.kind, mode.integrator});
     sim->reset(initial);
     double worst = 1.0;
-    for (int i = 0; i < 6000; ++i) {
+    for (int i = 0; i < 24000; ++i) {
       sim->step(1.0 / 60.0);
       worst = std::min(worst, std::abs(sim->diagnostics().cos_principal_L[2]));
     }
