@@ -52,16 +52,10 @@ std::vector<Method> all_methods() {
 }
 
 std::vector<Method> engine_methods() {
-  return {{ModelKind::mujoco, Integrator::euler},
-          {ModelKind::mujoco, Integrator::rk4},
-          {ModelKind::mujoco, Integrator::implicit},
-          {ModelKind::bullet, Integrator::implicit_body},
-          {ModelKind::bullet, Integrator::implicit_world},
-          {ModelKind::bullet, Integrator::explicit_gyro},
-          {ModelKind::bullet, Integrator::none},
-          {ModelKind::ode, Integrator::step},
-          {ModelKind::ode, Integrator::quickstep},
-          {ModelKind::ode, Integrator::none}};
+  std::vector<Method> methods;
+  for (const engines::EngineMode& m : engines::engine_modes())
+    methods.push_back({m.kind, m.integrator});
+  return methods;
 }
 
 std::vector<Method> rigid_methods() {

@@ -9,6 +9,21 @@
 
 namespace bookspin::engines {
 
+std::vector<EngineMode> engine_modes() {
+  using physics::Integrator;
+  using physics::ModelKind;
+  return {{ModelKind::mujoco, Integrator::euler},
+          {ModelKind::mujoco, Integrator::rk4},
+          {ModelKind::mujoco, Integrator::implicit},
+          {ModelKind::bullet, Integrator::implicit_body},
+          {ModelKind::bullet, Integrator::implicit_world},
+          {ModelKind::bullet, Integrator::explicit_gyro},
+          {ModelKind::bullet, Integrator::none},
+          {ModelKind::ode, Integrator::step},
+          {ModelKind::ode, Integrator::quickstep},
+          {ModelKind::ode, Integrator::none}};
+}
+
 std::unique_ptr<physics::Simulator> make_model(const physics::Body& body,
                                                const physics::ModelConfig& config) {
   if (!physics::is_engine(config.kind)) return physics::make_simulator(body, config);

@@ -3,6 +3,7 @@
 // ODE; docs/engines.md), built from a body and a ModelConfig. Callers above physics make their
 // simulators here, so that every job and clip runs the engines unchanged.
 #include <memory>
+#include <vector>
 
 #include "physics/simulator.hpp"
 
@@ -14,5 +15,16 @@ namespace bookspin::engines {
 /// the model does not support the integrator (physics::supports), or as make_simulator does.
 std::unique_ptr<physics::Simulator> make_model(const physics::Body& body,
                                                const physics::ModelConfig& config);
+
+/// One mode of another engine: its kind and its model.integrator value.
+struct EngineMode {
+  physics::ModelKind kind;
+  physics::Integrator integrator;
+};
+
+/// Every engine mode (docs/engines.md), each engine's default first: mujoco × {euler, rk4,
+/// implicit}, bullet × {implicit-body, implicit-world, explicit, none}, ode × {step,
+/// quickstep, none}.
+std::vector<EngineMode> engine_modes();
 
 }  // namespace bookspin::engines

@@ -23,23 +23,10 @@ namespace {
 using physics::Integrator;
 using physics::ModelKind;
 
-struct Mode {
-  ModelKind kind;
-  Integrator integrator;
-};
+using Mode = EngineMode;
 
-std::vector<Mode> every_mode() {
-  return {{ModelKind::mujoco, Integrator::euler},
-          {ModelKind::mujoco, Integrator::rk4},
-          {ModelKind::mujoco, Integrator::implicit},
-          {ModelKind::bullet, Integrator::implicit_body},
-          {ModelKind::bullet, Integrator::implicit_world},
-          {ModelKind::bullet, Integrator::explicit_gyro},
-          {ModelKind::bullet, Integrator::none},
-          {ModelKind::ode, Integrator::step},
-          {ModelKind::ode, Integrator::quickstep},
-          {ModelKind::ode, Integrator::none}};
-}
+/// Every mode the room offers; AccuracyFlips.EveryEngineModeIsARowOfAllMethods counts them.
+std::vector<Mode> every_mode() { return engine_modes(); }
 
 std::string name(const Mode& m) {
   return std::string(physics::to_string(m.kind)) + " " +
