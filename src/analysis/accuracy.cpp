@@ -47,6 +47,11 @@ std::vector<Method> all_methods() {
     for (Integrator i : {Integrator::euler, Integrator::rk4, Integrator::implicit_midpoint,
                          Integrator::splitting, Integrator::splitting4})
       methods.push_back({kind, i});
+  return methods;
+}
+
+std::vector<Method> accuracy_methods() {
+  std::vector<Method> methods = all_methods();
   for (const Method& m : engine_methods()) methods.push_back(m);
   return methods;
 }

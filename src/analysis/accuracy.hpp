@@ -15,10 +15,13 @@ struct Method {
   physics::Integrator integrator;
 };
 
-/// Every supported pair except "exact": particle × {euler, symplectic-euler,
+/// bookspin's own supported pairs except "exact": particle × {euler, symplectic-euler,
 /// velocity-verlet}, rigid-matrix and rigid-quaternion × {euler, rk4, implicit-midpoint,
-/// splitting, splitting4}, then engine_methods().
+/// splitting, splitting4}.
 std::vector<Method> all_methods();
+
+/// The rows of `bookspin accuracy`: all_methods(), then engine_methods().
+std::vector<Method> accuracy_methods();
 
 /// The other engines' modes (docs/engines.md), each engine's default first: mujoco × {euler,
 /// rk4, implicit}, bullet × {implicit-body, implicit-world, explicit, none}, ode × {step,

@@ -70,7 +70,7 @@ overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& 
   spec.x_label = "cost: CPU time of step() per simulated time unit (microseconds)";
   spec.y_label = "orientation error (rad)";
   spec.log_x = spec.log_y = true;
-  for (const auto& method : analysis::all_methods()) {
+  for (const auto& method : analysis::accuracy_methods()) {
     overlay::Series s;
     s.label = method_label(method);
     for (const auto& r : rows) {

@@ -76,7 +76,7 @@ overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, 
   spec.x_label = "time step dt (time units)";
   spec.y_label = "orientation error (rad)";
   spec.log_x = spec.log_y = true;
-  for (const auto& method : analysis::all_methods()) {
+  for (const auto& method : analysis::accuracy_methods()) {
     overlay::Series s;
     s.label = charts::method_label(method);
     for (const auto& r : rows) {
@@ -131,7 +131,7 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
                 "flips/exact", "ns/step");
   say(header);
   std::vector<analysis::AccuracyRow> rows;
-  for (const auto& method : analysis::all_methods()) {
+  for (const auto& method : analysis::accuracy_methods()) {
     for (double dt : request.dts) {
       rows.push_back(analysis::measure(settings, exact, method, dt));
       say(table_row(rows.back()));

@@ -25,7 +25,8 @@ using physics::ModelKind;
 
 using Mode = EngineMode;
 
-/// Every mode the room offers; AccuracyFlips.EveryEngineModeIsARowOfAllMethods counts them.
+/// Every mode the room offers; AccuracyFlips.EveryEngineModeIsAnAccuracyRowAndNoneOfAllMethods
+/// counts them.
 std::vector<Mode> every_mode() { return engine_modes(); }
 
 std::string name(const Mode& m) {
