@@ -53,20 +53,6 @@ std::string model_xml(const MujocoSetup& s) {
 
 }  // namespace
 
-mjModel* load_mjcf(const std::string& xml, const char* file_name, const char* what) {
-  mjVFS vfs;
-  mj_defaultVFS(&vfs);
-  if (mj_makeEmptyFileVFS(&vfs, file_name, static_cast<int>(xml.size())) != 0)
-    throw std::runtime_error("MuJoCo: cannot create a virtual file");
-  std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, file_name)], xml.data(), xml.size());
-  char error[1000] = "";
-  mjModel* model = mj_loadXML(file_name, &vfs, error, sizeof error);
-  mj_deleteVFS(&vfs);
-  if (model == nullptr)
-    throw std::runtime_error(std::string("MuJoCo rejected ") + what + ": " + error);
-  return model;
-}
-
 std::string mujoco_missing() { return {}; }
 
 struct MujocoBook::Impl {

@@ -8,6 +8,8 @@
 
 #ifdef BOOKSPIN_HAVE_MUJOCO
 #include <mujoco/mujoco.h>
+
+#include "engines/mujoco_model.hpp"
 #endif
 
 namespace bookspin::bench {
@@ -47,10 +49,8 @@ class MujocoBook {
 };
 
 #ifdef BOOKSPIN_HAVE_MUJOCO
-/// Loads an MJCF model from `xml` through MuJoCo's virtual file system, as file `file_name`.
-/// Throws std::runtime_error naming `what` (e.g. "the book model") if MuJoCo rejects it. The
-/// caller owns the model (mj_deleteModel).
-mjModel* load_mjcf(const std::string& xml, const char* file_name, const char* what);
+/// The engines room's MJCF loader (src/engines/mujoco_model.hpp).
+using engines::load_mjcf;
 #endif
 
 }  // namespace bookspin::bench

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "clip/render_settings.hpp"
+#include "engines/models.hpp"
 #include "output/png_writer.hpp"
 #include "physics/simulator.hpp"
 #include "scene/scene.hpp"
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
     const int frame = std::stoi(argv[2]);
 
     // 2. Step the simulator from the initial state to the frame's time.
-    auto simulator = physics::make_simulator(scene.body, scene.model);
+    auto simulator = engines::make_model(scene.body, scene.model);
     simulator->reset(scene.initial);
     for (long step = 0; step < static_cast<long>(frame) * scene.steps_per_frame; ++step)
       simulator->step(scene.dt);

@@ -9,7 +9,7 @@ packages=(
   libssl-dev libpng-dev libdeflate-dev pngcheck libcairo2-dev libfreetype-dev fonts-dejavu-core
   libassimp-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
-  libgtest-dev libbenchmark-dev libmujoco-dev
+  libgtest-dev libbenchmark-dev libmujoco-dev libbullet-dev libode-dev
   clang clang-format libclang-rt-14-dev
   chromium chromium-driver python3-selenium
   slurm-wlm munge

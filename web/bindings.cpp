@@ -245,7 +245,9 @@ val polhodes(double ix, double iy, double iz, int levels, double max_step) {
 bool supports_names(const std::string& model, const std::string& integrator) {
   ModelKind kind{};
   Integrator in{};
-  return parse_model_kind(model, kind) && parse_integrator(integrator, in) && supports(kind, in);
+  // The other engines' models (docs/engines.md) are not in the page: it binds src/physics alone.
+  return parse_model_kind(model, kind) && !is_engine(kind) && parse_integrator(integrator, in) &&
+         supports(kind, in);
 }
 
 std::string error_message(std::intptr_t pointer) {

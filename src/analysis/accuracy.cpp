@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "engines/models.hpp"
 #include "physics/exact_model.hpp"
 
 namespace bookspin::analysis {
@@ -19,7 +20,7 @@ std::unique_ptr<physics::Simulator> start(const AccuracySettings& s, const Metho
   physics::ModelConfig config = s.model;
   config.kind = m.kind;
   config.integrator = m.integrator;
-  auto sim = physics::make_simulator(s.body, config);
+  auto sim = engines::make_model(s.body, config);
   sim->reset(s.initial);
   return sim;
 }
@@ -49,10 +50,24 @@ std::vector<Method> all_methods() {
   return methods;
 }
 
+std::vector<Method> accuracy_methods() {
+  std::vector<Method> methods = all_methods();
+  for (const Method& m : engine_methods()) methods.push_back(m);
+  return methods;
+}
+
+std::vector<Method> engine_methods() {
+  std::vector<Method> methods;
+  for (const engines::EngineMode& m : engines::engine_modes())
+    methods.push_back({m.kind, m.integrator});
+  return methods;
+}
+
 std::vector<Method> rigid_methods() {
   std::vector<Method> methods;
   for (const Method& m : all_methods())
-    if (m.kind != ModelKind::particle) methods.push_back(m);
+    if (m.kind == ModelKind::rigid_matrix || m.kind == ModelKind::rigid_quaternion)
+      methods.push_back(m);
   return methods;
 }
 
@@ -128,6 +143,16 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
       row.diverged ? nan : rotation_angle_between(exact.orientation(row.t_end), sim->orientation());
   row.flip_period = flips.flip_period().value_or(std::numeric_limits<double>::quiet_NaN());
   row.flip_period_error = std::abs(row.flip_period / flip - 1.0);
+  row.first_flip = flips.first_flip().value_or(nan);
+  row.flips = flips.count();
+  const int intermediate = physics::principal_order(s.body.moments)[1];
+  if (const auto first_exact = exact_first_flip(exact, intermediate)) {
+    row.first_flip_error = std::abs(row.first_flip / *first_exact - 1.0);
+    if (row.t_end >= *first_exact)
+      row.flips_exact = 1 + static_cast<int>(std::floor((row.t_end - *first_exact) / flip));
+  } else {
+    row.first_flip_error = nan;
+  }
   row.ns_per_step = time_steps(s, m, dt, row.steps);
   return row;
 }

@@ -15,10 +15,18 @@ struct Method {
   physics::Integrator integrator;
 };
 
-/// Every supported pair except "exact": particle × {euler, symplectic-euler,
+/// bookspin's own supported pairs except "exact": particle × {euler, symplectic-euler,
 /// velocity-verlet}, rigid-matrix and rigid-quaternion × {euler, rk4, implicit-midpoint,
 /// splitting, splitting4}.
 std::vector<Method> all_methods();
+
+/// The rows of `bookspin accuracy`: all_methods(), then engine_methods().
+std::vector<Method> accuracy_methods();
+
+/// The other engines' modes (docs/engines.md), each engine's default first: mujoco × {euler,
+/// rk4, implicit}, bullet × {implicit-body, implicit-world, explicit, none}, ode × {step,
+/// quickstep, none}.
+std::vector<Method> engine_methods();
 
 /// The rigid pairs only (rigid-matrix and rigid-quaternion × every rigid integrator).
 std::vector<Method> rigid_methods();
@@ -42,7 +50,12 @@ struct AccuracyRow {
   double L_drift = 0.0;            ///< max ||L|/|L0| − 1| over the run
   double flip_period = 0.0;        ///< mean spacing of the flips (FlipDetector); NaN if < 2
   double flip_period_error = 0.0;  ///< |flip_period / exact − 1|; NaN if < 2 flips seen
-  double ns_per_step = 0.0;        ///< wall time of step() alone
+  /// First flip (FlipDetector) and |first_flip / exact first flip − 1|; NaN if none seen.
+  double first_flip = 0.0;
+  double first_flip_error = 0.0;
+  int flips = 0;             ///< flips seen over the run (FlipDetector::count)
+  int flips_exact = 0;       ///< flips of the exact motion in [0, t_end] (exact_first_flip + k T/2)
+  double ns_per_step = 0.0;  ///< wall time of step() alone
   bool diverged = false;
   std::string divergence_reason;  ///< the simulator's reason, if it gave one
 };

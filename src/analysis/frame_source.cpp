@@ -1,9 +1,11 @@
 #include "analysis/frame_source.hpp"
 
+#include "engines/models.hpp"
+
 namespace bookspin::analysis {
 
 FrameSource::FrameSource(const scene::Scene& scene)
-    : scene_(scene), simulator_(physics::make_simulator(scene.body, scene.model)) {
+    : scene_(scene), simulator_(engines::make_model(scene.body, scene.model)) {
   simulator_->reset(scene.initial);
 }
 

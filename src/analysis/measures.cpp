@@ -5,6 +5,7 @@
 
 #include "analysis/motion.hpp"
 #include "analysis/twist.hpp"
+#include "engines/models.hpp"
 #include "physics/exact_model.hpp"
 
 namespace bookspin::analysis {
@@ -47,7 +48,7 @@ RunMeasures measure_run(const scene::Scene& scene) {
   physics::ExactModel reference(scene.body);
   reference.reset(scene.initial);
   const physics::ExactRotation& exact = reference.rotation();
-  auto sim = physics::make_simulator(scene.body, scene.model);
+  auto sim = engines::make_model(scene.body, scene.model);
   sim->reset(scene.initial);
   physics::Diagnostics d = sim->diagnostics();
   const double e0 = d.energy_total;

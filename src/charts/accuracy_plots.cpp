@@ -53,7 +53,11 @@ std::string method_label(const analysis::Method& m) {
 
 void style_series(const analysis::Method& m, overlay::Series& s) {
   overlay::palette_colour(static_cast<int>(m.integrator), s.r, s.g, s.b);
-  s.dashed = m.kind == physics::ModelKind::rigid_quaternion;
+  const auto engines = analysis::engine_methods();
+  for (std::size_t i = 0; i < engines.size(); ++i)  // each engine mode its own colour
+    if (same_method(engines[i], m)) overlay::palette_colour(7 + static_cast<int>(i), s.r, s.g, s.b);
+  // The engines (docs/engines.md) dashed like the quaternion: their state is a quaternion too.
+  s.dashed = m.kind == physics::ModelKind::rigid_quaternion || physics::is_engine(m.kind);
   if (m.kind == physics::ModelKind::particle)
     s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(m.integrator);
 }
@@ -66,7 +70,7 @@ overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& 
   spec.x_label = "cost: CPU time of step() per simulated time unit (microseconds)";
   spec.y_label = "orientation error (rad)";
   spec.log_x = spec.log_y = true;
-  for (const auto& method : analysis::all_methods()) {
+  for (const auto& method : analysis::accuracy_methods()) {
     overlay::Series s;
     s.label = method_label(method);
     for (const auto& r : rows) {

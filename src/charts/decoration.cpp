@@ -46,7 +46,8 @@ std::string model_line(const scene::Scene& scene) {
   if (m.kind != physics::ModelKind::exact) {
     line += ", " + std::string(physics::to_string(m.integrator));
     line += format(", dt = %.4g", scene.dt);
-    line += m.normalize ? ", normalized" : ", not normalized";
+    if (!physics::is_engine(m.kind))  // the engines have no such switch (docs/engines.md)
+      line += m.normalize ? ", normalized" : ", not normalized";
   }
   if (m.kind == physics::ModelKind::particle) {
     line += m.damping ? ", damped" : ", undamped";

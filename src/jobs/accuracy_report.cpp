@@ -35,7 +35,10 @@ std::string csv_line(const analysis::AccuracyRow& r) {
          cell("%.6e", r.energy_drift, "energy_drift") + "," + cell("%.6e", r.L_drift, "L_drift") +
          "," + cell("%.17g", r.flip_period, "flip_period", no_flips) + "," +
          cell("%.6e", r.flip_period_error, "flip_period_error", no_flips) + "," +
-         cell("%.2f", r.ns_per_step, "ns_per_step") + "," + (r.diverged ? "1" : "0");
+         cell("%.2f", r.ns_per_step, "ns_per_step") + "," + (r.diverged ? "1" : "0") + "," +
+         cell("%.17g", r.first_flip, "first_flip", std::isnan(r.first_flip)) + "," +
+         cell("%.6e", r.first_flip_error, "first_flip_error", std::isnan(r.first_flip_error)) +
+         "," + std::to_string(r.flips) + "," + std::to_string(r.flips_exact);
 }
 
 std::string table_row(const analysis::AccuracyRow& r) {
@@ -43,11 +46,15 @@ std::string table_row(const analysis::AccuracyRow& r) {
   char flip_error[32] = "-";
   if (!std::isnan(r.flip_period_error))
     std::snprintf(flip_error, sizeof flip_error, "%.3e", r.flip_period_error);
+  char first_error[32] = "-";
+  if (!std::isnan(r.first_flip_error))
+    std::snprintf(first_error, sizeof first_error, "%.2e", r.first_flip_error);
   char line[512];
-  std::snprintf(line, sizeof line, "%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12s %9.1f%s%s\n",
+  std::snprintf(line, sizeof line,
+                "%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12s %11s %5d/%-5d %9.1f%s%s\n",
                 charts::method_label(r.method).c_str(), 1.0 / r.dt, r.orientation_error,
-                r.energy_drift, r.L_drift, flip_error, r.ns_per_step,
-                r.diverged ? "  diverged" : "",
+                r.energy_drift, r.L_drift, flip_error, first_error, r.flips, r.flips_exact,
+                r.ns_per_step, r.diverged ? "  diverged" : "",
                 r.divergence_reason.empty() ? "" : (": " + r.divergence_reason).c_str());
   return line;
 }
@@ -56,7 +63,8 @@ void write_csv(const std::filesystem::path& path, const std::vector<analysis::Ac
   output::AtomicTextFile file(path);
   std::ostream& out = file.stream();
   out << "model,integrator,dt,steps,t_end,orientation_error_rad,energy_drift,L_drift,"
-         "flip_period,flip_period_error,ns_per_step,diverged\n";
+         "flip_period,flip_period_error,ns_per_step,diverged,first_flip,first_flip_error,flips,"
+         "flips_exact\n";
   for (const auto& r : rows) out << csv_line(r) << '\n';
   file.commit();
 }
@@ -68,7 +76,7 @@ overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, 
   spec.x_label = "time step dt (time units)";
   spec.y_label = "orientation error (rad)";
   spec.log_x = spec.log_y = true;
-  for (const auto& method : analysis::all_methods()) {
+  for (const auto& method : analysis::accuracy_methods()) {
     overlay::Series s;
     s.label = charts::method_label(method);
     for (const auto& r : rows) {
@@ -118,11 +126,12 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
   say(format_line("%s: exact flip period T/2 = 2K(k)/lambda = %.9g time units (k = %.9g), %g flips",
                   scene.name, exact.flip_period(), exact.modulus(), request.flips));
   char header[256];
-  std::snprintf(header, sizeof header, "%-28s %-7s %12s %11s %11s %12s %9s", "method", "dt",
-                "orient. err", "energy drift", "|L| drift", "flip T err", "ns/step");
+  std::snprintf(header, sizeof header, "%-28s %-7s %12s %11s %11s %12s %11s %11s %9s", "method",
+                "dt", "orient. err", "energy drift", "|L| drift", "flip T err", "1st flip err",
+                "flips/exact", "ns/step");
   say(header);
   std::vector<analysis::AccuracyRow> rows;
-  for (const auto& method : analysis::all_methods()) {
+  for (const auto& method : analysis::accuracy_methods()) {
     for (double dt : request.dts) {
       rows.push_back(analysis::measure(settings, exact, method, dt));
       say(table_row(rows.back()));

@@ -14,14 +14,17 @@ namespace bookspin::physics {
 
 namespace {
 
-constexpr std::array<std::pair<ModelKind, std::string_view>, 4> kModelNames{{
+constexpr std::array<std::pair<ModelKind, std::string_view>, 7> kModelNames{{
     {ModelKind::particle, "particle"},
     {ModelKind::rigid_matrix, "rigid-matrix"},
     {ModelKind::rigid_quaternion, "rigid-quaternion"},
     {ModelKind::exact, "exact"},
+    {ModelKind::mujoco, "mujoco"},
+    {ModelKind::bullet, "bullet"},
+    {ModelKind::ode, "ode"},
 }};
 
-constexpr std::array<std::pair<Integrator, std::string_view>, 7> kIntegratorNames{{
+constexpr std::array<std::pair<Integrator, std::string_view>, 14> kIntegratorNames{{
     {Integrator::euler, "euler"},
     {Integrator::symplectic_euler, "symplectic-euler"},
     {Integrator::velocity_verlet, "velocity-verlet"},
@@ -29,6 +32,13 @@ constexpr std::array<std::pair<Integrator, std::string_view>, 7> kIntegratorName
     {Integrator::implicit_midpoint, "implicit-midpoint"},
     {Integrator::splitting, "splitting"},
     {Integrator::splitting4, "splitting4"},
+    {Integrator::implicit, "implicit"},
+    {Integrator::implicit_body, "implicit-body"},
+    {Integrator::implicit_world, "implicit-world"},
+    {Integrator::explicit_gyro, "explicit"},
+    {Integrator::none, "none"},
+    {Integrator::step, "step"},
+    {Integrator::quickstep, "quickstep"},
 }};
 
 template <typename Enum, std::size_t N>
@@ -87,8 +97,32 @@ bool supports(ModelKind kind, Integrator integrator) {
       return is_particle_integrator(integrator);
     case ModelKind::exact:
       return integrator == Integrator::euler;  // the integrator key is ignored by "exact"
+    case ModelKind::mujoco:
+      return integrator == Integrator::euler || integrator == Integrator::rk4 ||
+             integrator == Integrator::implicit;
+    case ModelKind::bullet:
+      return integrator == Integrator::implicit_body || integrator == Integrator::implicit_world ||
+             integrator == Integrator::explicit_gyro || integrator == Integrator::none;
+    case ModelKind::ode:
+      return integrator == Integrator::step || integrator == Integrator::quickstep ||
+             integrator == Integrator::none;
     default:
       return is_rigid_integrator(integrator);
+  }
+}
+
+bool is_engine(ModelKind kind) {
+  return kind == ModelKind::mujoco || kind == ModelKind::bullet || kind == ModelKind::ode;
+}
+
+Integrator default_integrator(ModelKind kind) {
+  switch (kind) {
+    case ModelKind::bullet:
+      return Integrator::implicit_body;
+    case ModelKind::ode:
+      return Integrator::step;
+    default:
+      return Integrator::euler;
   }
 }
 
@@ -112,6 +146,11 @@ std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& c
       return std::make_unique<RigidQuaternionModel>(body, config);
     case ModelKind::exact:
       break;
+    case ModelKind::mujoco:
+    case ModelKind::bullet:
+    case ModelKind::ode:
+      throw std::invalid_argument("model '" + std::string(to_string(config.kind)) +
+                                  "' is another engine's: engines::make_model builds it");
   }
   return make_exact_simulator(body);
 }

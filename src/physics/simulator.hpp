@@ -10,7 +10,9 @@
 
 namespace bookspin::physics {
 
-enum class ModelKind { particle, rigid_matrix, rigid_quaternion, exact };
+/// The models. mujoco, bullet and ode are other engines' rigid bodies (docs/engines.md): the
+/// physics room only names them; src/engines builds them (engines::make_model).
+enum class ModelKind { particle, rigid_matrix, rigid_quaternion, exact, mujoco, bullet, ode };
 
 /// Time integrators. Which ones a model accepts is checked by make_simulator().
 enum class Integrator {
@@ -21,6 +23,14 @@ enum class Integrator {
   implicit_midpoint,  ///< rigid
   splitting,          ///< rigid: symplectic splitting of the free rotor (DLM 1997 / NO_SQUISH)
   splitting4,         ///< rigid: fourth-order composition of `splitting` (docs/physics.md §10)
+  // The engines' own modes (docs/engines.md), each accepted by its engine only:
+  implicit,        ///< mujoco: integrator="implicit" (implicit in velocity)
+  implicit_body,   ///< bullet: BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY (Bullet's default)
+  implicit_world,  ///< bullet: BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD
+  explicit_gyro,   ///< bullet: BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT ("explicit")
+  none,            ///< bullet: no gyroscopic flag; ode: dWorldStep, gyroscopic mode off
+  step,            ///< ode: dWorldStep, gyroscopic mode on (ODE's default)
+  quickstep,       ///< ode: dWorldQuickStep, gyroscopic mode on
 };
 
 struct ModelConfig {
@@ -144,23 +154,35 @@ Eigen::Vector3d jiggle_delta_L(std::uint64_t seed, double amplitude);
 
 /// Whether a model accepts an integrator (particle: euler, symplectic-euler, velocity-verlet;
 /// rigid: euler, rk4, implicit-midpoint, splitting, splitting4; exact: euler, i.e. the key
-/// is unused).
+/// is unused; mujoco: euler, rk4, implicit; bullet: implicit-body, implicit-world, explicit,
+/// none; ode: step, quickstep, none).
 bool supports(ModelKind kind, Integrator integrator);
+
+/// True for the other engines' models (mujoco, bullet, ode), which make_simulator() cannot
+/// build: engines::make_model() does.
+bool is_engine(ModelKind kind);
+
+/// The integrator a model runs when the scene names none: an engine's own default (mujoco:
+/// euler, bullet: implicit-body, ode: step), euler for bookspin's models.
+Integrator default_integrator(ModelKind kind);
 
 /// Creates the simulator of `body` for `config`. The rigid and exact models use
 /// body.moments and move body.cage's corners (docs/physics.md §12). Throws
-/// std::invalid_argument when the model does not support the integrator, or for the
-/// particle model of a non-book body (which needs the lattice, docs/physics.md §13).
+/// std::invalid_argument when the model does not support the integrator, for the
+/// particle model of a non-book body (which needs the lattice, docs/physics.md §13), and
+/// for an engine's model (is_engine(): engines::make_model() builds those).
 std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& config);
 /// make_simulator(book_body(book), config).
 std::unique_ptr<Simulator> make_simulator(const Book& book, const ModelConfig& config);
 
 std::string_view to_string(ModelKind kind);
 std::string_view to_string(Integrator integrator);
-/// Parses "particle" | "rigid-matrix" | "rigid-quaternion" | "exact"; false if unknown.
+/// Parses "particle" | "rigid-matrix" | "rigid-quaternion" | "exact" | "mujoco" | "bullet" |
+/// "ode"; false if unknown.
 bool parse_model_kind(std::string_view text, ModelKind& out);
 /// Parses "euler" | "symplectic-euler" | "velocity-verlet" | "rk4" | "implicit-midpoint" |
-/// "splitting" | "splitting4"; false if unknown.
+/// "splitting" | "splitting4" | "implicit" | "implicit-body" | "implicit-world" | "explicit" |
+/// "none" | "step" | "quickstep"; false if unknown.
 bool parse_integrator(std::string_view text, Integrator& out);
 
 }  // namespace bookspin::physics

@@ -3,6 +3,7 @@
 #include <iomanip>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
@@ -45,6 +46,17 @@ std::string script_safe(std::string text) {
   return text;
 }
 
+/// The models the page can run: every tile but the other engines' (the page binds src/physics
+/// alone, docs/engines.md), or the scene's model; the exact motion where none is left.
+std::vector<physics::ModelConfig> page_models(const scene::Scene& s) {
+  std::vector<physics::ModelConfig> models;
+  if (s.compare.empty()) models.push_back(s.model);
+  for (const scene::CompareTile& tile : s.compare) models.push_back(tile.model);
+  std::erase_if(models, [](const physics::ModelConfig& m) { return physics::is_engine(m.kind); });
+  if (models.empty()) models.push_back({physics::ModelKind::exact, physics::Integrator::euler});
+  return models;
+}
+
 std::string read_shell(const std::filesystem::path& shell) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(shell, ec))
@@ -66,7 +78,8 @@ std::filesystem::path default_explorer_shell() {
 
 std::string explorer_scene_json(const scene::Scene& s) {
   std::ostringstream out;
-  const physics::ModelConfig& first = s.compare.empty() ? s.model : s.compare.front().model;
+  const std::vector<physics::ModelConfig> models = page_models(s);
+  const physics::ModelConfig& first = models.front();
   out << "{\"name\":" << scene::json_string(s.name) << ",\"title\":" << scene::json_string(s.title)
       << ",\"description\":" << scene::json_string(s.description) << ",\"state\":{"
       << "\"body\":" << scene::json_string(std::string(physics::to_string(s.body.shape))) << ',';
@@ -81,10 +94,10 @@ std::string explorer_scene_json(const scene::Scene& s) {
       << ",\"speed\":" << number(s.dt * s.steps_per_frame * s.render.fps, "explorer page: speed")
       << ",\"showL\":" << (s.render.show_angular_momentum ? "true" : "false")
       << ",\"showAxes\":" << (s.render.show_body_axes ? "true" : "false");
-  if (s.compare.size() >= 2) {
+  if (models.size() >= 2) {
     // The page compares two methods: the first tile with the last (e.g. Euler and exact).
     out << ",\"compare\":true,";
-    method(out, s.compare.back().model, "2");
+    method(out, models.back(), "2");
   }
   out << "},\"book\":{\"size\":";
   json_numbers(out, s.body.cage.size, "explorer page: book.size");

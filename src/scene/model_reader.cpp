@@ -28,6 +28,21 @@ CompareTile read_tile(const toml::table& entry, std::size_t index, const std::st
   return panel;
 }
 
+/// " (expected …)": an engine's modes, for its unsupported-integrator error; empty for
+/// bookspin's own models.
+std::string engine_modes(physics::ModelKind kind) {
+  switch (kind) {
+    case physics::ModelKind::mujoco:
+      return " (expected euler, rk4, implicit)";
+    case physics::ModelKind::bullet:
+      return " (expected implicit-body, implicit-world, explicit, none)";
+    case physics::ModelKind::ode:
+      return " (expected step, quickstep, none)";
+    default:
+      return {};
+  }
+}
+
 }  // namespace
 
 physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallback) {
@@ -35,18 +50,36 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   const std::string kind = r.string("model.kind", std::string(physics::to_string(fallback.kind)));
   if (!physics::parse_model_kind(kind, m.kind)) {
     r.fail("model.kind", "unknown model '" + kind +
-                             "' (expected particle, rigid-matrix, rigid-quaternion, exact)");
+                             "' (expected particle, rigid-matrix, rigid-quaternion, exact, "
+                             "mujoco, bullet, ode)");
   }
+  // An engine's own default when the integrator is not named here and the model changes to
+  // or from an engine (a tile's engine does not inherit another model's integrator).
+  const bool engine = physics::is_engine(m.kind);
+  const physics::Integrator fallback_integrator =
+      m.kind != fallback.kind && (engine || physics::is_engine(fallback.kind))
+          ? physics::default_integrator(m.kind)
+          : fallback.integrator;
   const std::string integrator =
-      r.string("model.integrator", std::string(physics::to_string(fallback.integrator)));
+      r.string("model.integrator", std::string(physics::to_string(fallback_integrator)));
   if (!physics::parse_integrator(integrator, m.integrator)) {
     r.fail("model.integrator", "unknown integrator '" + integrator +
                                    "' (expected euler, symplectic-euler, velocity-verlet, rk4, "
-                                   "implicit-midpoint, splitting, splitting4)");
+                                   "implicit-midpoint, splitting, splitting4, implicit, "
+                                   "implicit-body, implicit-world, explicit, none, step, "
+                                   "quickstep)");
   }
   if (!physics::supports(m.kind, m.integrator)) {
-    r.fail("model.integrator",
-           "model '" + kind + "' does not support integrator '" + integrator + "'");
+    r.fail("model.integrator", "model '" + kind + "' does not support integrator '" + integrator +
+                                   "'" + engine_modes(m.kind));
+  }
+  if (engine) {
+    // The engines' models have no such settings (docs/engines.md): refused, never ignored.
+    for (const char* key :
+         {"model.normalize", "model.damping", "model.spring_constant", "model.lattice_cells"}) {
+      if (r.has(key)) r.fail(key, "model '" + kind + "' (another engine) has no such setting");
+    }
+    return m;
   }
   m.normalize = r.boolean("model.normalize", fallback.normalize);
   m.normalize_every =

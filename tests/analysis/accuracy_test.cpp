@@ -199,3 +199,35 @@ TEST(AccuracyTarget, FineRk4FlipSpacingMatchesEllipticPeriod) {
 
 }  // namespace
 }  // namespace bookspin::analysis
+
+namespace bookspin::analysis {
+namespace {
+
+// The flip columns: ten exact flip periods T/2 hold exactly ten flips of the exact motion (one
+// zero of sn per half period, docs/physics.md §14); RK4 sees each of them, its first within
+// 1e-9 of the exact first flip. An engine without its gyroscopic term never flips
+// (docs/engines.md): no first flip, none counted.
+TEST(AccuracyFlips, TenFlipPeriodsHoldTenFlipsAndTheEnginesWithoutTheTermNone) {
+  const analysis::AccuracySettings s = original_x_spin();
+  const auto exact = exact_reference(s);
+  const auto rk4 = measure(s, exact, {ModelKind::rigid_quaternion, Integrator::rk4}, 1.0 / 60.0);
+  EXPECT_EQ(rk4.flips_exact, 10);
+  EXPECT_EQ(rk4.flips, 10);
+  EXPECT_LT(rk4.first_flip_error, 1e-9);
+  const auto none = measure(s, exact, {ModelKind::ode, Integrator::none}, 1.0 / 60.0);
+  EXPECT_EQ(none.flips_exact, 10);
+  EXPECT_EQ(none.flips, 0);
+  EXPECT_TRUE(std::isnan(none.first_flip));
+}
+
+// The accuracy rows are bookspin's methods and every engine mode; all_methods() (which the
+// bench and the explorer's benchmark time against the page) holds no engine.
+TEST(AccuracyFlips, EveryEngineModeIsAnAccuracyRowAndNoneOfAllMethods) {
+  int engines = 0;
+  for (const Method& m : accuracy_methods()) engines += physics::is_engine(m.kind) ? 1 : 0;
+  EXPECT_EQ(engines, 3 + 4 + 3);  // mujoco 3 modes, bullet 4, ode 3 (docs/engines.md)
+  for (const Method& m : all_methods()) EXPECT_FALSE(physics::is_engine(m.kind));
+}
+
+}  // namespace
+}  // namespace bookspin::analysis

@@ -13,6 +13,7 @@
 
 #include "analysis/motion.hpp"
 #include "common/errors.hpp"
+#include "engines/models.hpp"
 #include "physics/exact_model.hpp"
 #include "support/scratch.hpp"
 
@@ -64,7 +65,7 @@ struct Recomputed {
   std::optional<double> diverged_at;
 };
 Recomputed recompute(const scene::Scene& s) {
-  auto sim = physics::make_simulator(s.body, s.model);
+  auto sim = engines::make_model(s.body, s.model);
   sim->reset(s.initial);
   const double e0 = sim->diagnostics().energy_total;
   Recomputed r;

@@ -137,9 +137,47 @@ TEST(ModelReader, Splitting4IsRejectedByTheParticleAndExactModels) {
 TEST(ModelReader, UnknownIntegratorListsEveryName) {
   const std::string message = error_of(model_table("rigid-matrix", "leapfrog"));
   EXPECT_NE(message.find("(expected euler, symplectic-euler, velocity-verlet, rk4, "
-                         "implicit-midpoint, splitting, splitting4)"),
+                         "implicit-midpoint, splitting, splitting4, implicit, implicit-body, "
+                         "implicit-world, explicit, none, step, quickstep)"),
             std::string::npos)
       << message;
+}
+
+// Each engine's default mode when the scene names none (docs/engines.md), also for a tile
+// whose base model is another kind.
+TEST(ModelReader, EnginesTakeTheirOwnDefaultIntegrator) {
+  const std::pair<std::string, physics::Integrator> defaults[] = {
+      {"mujoco", physics::Integrator::euler},
+      {"bullet", physics::Integrator::implicit_body},
+      {"ode", physics::Integrator::step}};
+  for (const auto& [kind, integrator] : defaults) {
+    const Scene s = parse(
+        "[model]\nkind = \"rigid-quaternion\"\nintegrator = "
+        "\"rk4\"\n[[compare]]\nlabel = \"e\"\nmodel.kind = \"" +
+        kind + "\"\n");
+    EXPECT_EQ(s.compare[0].model.integrator, integrator) << kind;
+    const Scene alone = parse("[model]\nkind = \"" + kind + "\"\n");
+    EXPECT_EQ(alone.model.integrator, integrator) << kind;
+  }
+}
+
+TEST(ModelReader, EnginesRefuseOtherEnginesModesAndBookspinsSettings) {
+  EXPECT_NE(error_of(model_table("bullet", "rk4"))
+                .find("model 'bullet' does not support integrator 'rk4' (expected implicit-body, "
+                      "implicit-world, explicit, none)"),
+            std::string::npos);
+  EXPECT_NE(error_of(model_table("mujoco", "quickstep")).find("(expected euler, rk4, implicit)"),
+            std::string::npos);
+  EXPECT_NE(error_of(model_table("ode", "implicit-body")).find("(expected step, quickstep, none)"),
+            std::string::npos);
+  for (const std::string key :
+       {"normalize = true", "damping = false", "spring_constant = 5.0", "lattice_cells = 4"}) {
+    const std::string message = error_of(model_table("ode", "step") + key + "\n");
+    const std::string name = key.substr(0, key.find(' '));
+    EXPECT_NE(message.find("model." + name + ": model 'ode' (another engine) has no such setting"),
+              std::string::npos)
+        << message;
+  }
 }
 
 }  // namespace
