@@ -100,6 +100,9 @@ def open_browser(chromium, driver_path, profile):
         options.add_argument(arg)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = webdriver.Chrome(service=Service(executable_path=driver_path), options=options)
+    # The exact model's start near the book's separatrix takes seconds in WebAssembly (its
+    # long double is emulated), tens of seconds on a loaded machine: more than the default 30.
+    driver.set_script_timeout(300)
     # The page's viewport at the projector's 1280×720 (the window size includes no chrome
     # in headless mode, but fix it to be sure).
     driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
@@ -205,15 +208,17 @@ def rect(driver, element_id):
 
 
 # The controls a run needs (issue: scene, body, model, integrator, dt, spin, Play, Step,
-# Reset, speed, the time slider).
-RUN_CONTROLS = ("scene", "body", "model", "integrator", "dt", "axis", "rate", "play",
-                "stepOnce", "reset", "speed", "slider")
+# Reset, speed, the time slider); the spin is its axis and either its rate or ω0's components.
+RUN_CONTROLS = ("scene", "body", "model", "integrator", "dt", "axis", "play", "stepOnce",
+                "reset", "speed", "slider")
+SPIN_RATE, SPIN_OMEGA = ("rate",), ("wx", "wy", "wz")
 
 
 def check_layout(driver, shots):
     """At 1280×720 every control of a run inside the viewport; at 760×1000 the view ≥ 700 px
     wide and ≥ 45% of the height; what the exact model ignores hidden."""
-    for element_id in RUN_CONTROLS:
+    spin = SPIN_RATE if rect(driver, "rate")["shown"] else SPIN_OMEGA
+    for element_id in RUN_CONTROLS + spin:
         r = rect(driver, element_id)
         if not (r["shown"] and r["left"] >= 0 and r["top"] >= 0 and r["right"] <= 1280
                 and r["bottom"] <= 720 and r["width"] > 0 and r["height"] > 0):
@@ -245,9 +250,9 @@ def check_model_controls(driver, page):
             "return [...document.getElementById('integrator').options].map((o) => o.value)")
         if offered != integrators:
             fail(f"the {model} model offers the integrators {offered}, not {integrators}")
-    shown = driver.execute_script("return document.getElementById('kRow').offsetParent !== null")
-    if not shown:
-        fail("the particle model does not show its spring constant k")
+        k_shown = driver.execute_script("return document.getElementById('kRow').offsetParent !== null")
+        if k_shown != (model == "particle"):
+            fail(f"the {model} model {'hides' if model == 'particle' else 'shows'} the spring constant k")
 
 
 # The book of the fig09 scene (size a, b, c and mass m): principal moments about x, y, z in
