@@ -28,8 +28,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "tests" / "browser"))
-from explorer_test import load, open_browser  # noqa: E402
-from gallery_test import find_browser  # noqa: E402
+from browser import find_browser, open_browser  # noqa: E402
+from explorer_test import EXPLORER_WINDOW, load  # noqa: E402
 
 RIGID = ("rigid-matrix", "rigid-quaternion", "exact")
 
@@ -146,23 +146,22 @@ def main():
 
     chromium, driver_path = find_browser()
     profile = tempfile.mkdtemp(prefix="bookspin-explorer-bench-")
-    driver = open_browser(chromium, driver_path, profile)
-    driver.set_script_timeout(600)
     try:
-        load(driver, f"{page.as_uri()}?scene={scene_name}")
-        if driver.execute_script("return window.explorer.state().scene") != scene_name:
-            sys.exit(f"explorer_bench: the page has no scene {scene_name}")
-        native, wasm = {}, {}
-        for r in range(0 if a.fps_only else a.rounds):
-            n = native_times(a.bench, scene, a.steps, a.repetitions)
-            w = page_times(driver, list(n), a.steps, a.repetitions)
-            for k in n:
-                native[k] = min(native.get(k, n[k]), n[k])
-                wasm[k] = min(wasm.get(k, w[k]), w[k])
-            print(f"round {r + 1}/{a.rounds} done", file=sys.stderr)
-        fps = frames_per_second(driver, page.as_uri(), scene_name, a.seconds, profile)
+        with open_browser(chromium, driver_path, profile=profile, script_timeout=600,
+                          **EXPLORER_WINDOW) as driver:
+            load(driver, f"{page.as_uri()}?scene={scene_name}")
+            if driver.execute_script("return window.explorer.state().scene") != scene_name:
+                sys.exit(f"explorer_bench: the page has no scene {scene_name}")
+            native, wasm = {}, {}
+            for r in range(0 if a.fps_only else a.rounds):
+                n = native_times(a.bench, scene, a.steps, a.repetitions)
+                w = page_times(driver, list(n), a.steps, a.repetitions)
+                for k in n:
+                    native[k] = min(native.get(k, n[k]), n[k])
+                    wasm[k] = min(wasm.get(k, w[k]), w[k])
+                print(f"round {r + 1}/{a.rounds} done", file=sys.stderr)
+            fps = frames_per_second(driver, page.as_uri(), scene_name, a.seconds, profile)
     finally:
-        driver.quit()
         shutil.rmtree(profile, ignore_errors=True)
 
     software = "SwiftShader" in fps["renderer"]

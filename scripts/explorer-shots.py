@@ -8,15 +8,13 @@ Usage: explorer-shots.py EXPLORER_HTML OUT_DIR [--size WxH ...] [--t T] QUERY...
          (the time slider's way). Writes OUT_DIR/<n>-<WxH>.png and prints each path.
 """
 import argparse
-import shutil
 import sys
-import tempfile
 import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests" / "browser"))
-from explorer_test import load, open_browser  # noqa: E402
-from gallery_test import find_browser  # noqa: E402
+from browser import find_browser, open_browser  # noqa: E402
+from explorer_test import EXPLORER_WINDOW, load  # noqa: E402
 
 
 def main():
@@ -31,10 +29,7 @@ def main():
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     chromium, driver_path = find_browser()
-    profile = tempfile.mkdtemp(prefix="bookspin-explorer-shots-")
-    driver = open_browser(chromium, driver_path, profile)
-    driver.set_script_timeout(600)
-    try:
+    with open_browser(chromium, driver_path, script_timeout=600, **EXPLORER_WINDOW) as driver:
         for size in a.size or ["1280x720"]:
             w, h = (int(x) for x in size.split("x"))
             driver.set_window_size(w, h)
@@ -51,9 +46,6 @@ def main():
                 path = out / f"{n}-{size}.png"
                 driver.save_screenshot(str(path))
                 print(f"{path}: {query}")
-    finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
 
 
 if __name__ == "__main__":

@@ -36,21 +36,21 @@ Screenshots go to BINARY_DIR/test-output/browser/explorer-*.png.
 
 Usage: explorer_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
-under CI=true, where that is a failure.
+under CI=true, where that is a failure (browser.py).
 """
 import json
-import os
-import shutil
-import subprocess
 import sys
-import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from gallery_test import find_browser  # noqa: E402
+from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
 
-SKIP = 77
+# The page's window, for this test, scripts/explorer-shots.py and bench/explorer_bench.py:
+# WebGL on the CPU, the network off (a proxy on a closed port), the viewport exactly the
+# projector's 1280×720 (the window size includes no chrome in headless mode, but fix it to
+# be sure).
+EXPLORER_WINDOW = dict(size=(1280, 720), webgl=True, offline=True, exact_viewport=True)
+
 TOL = 1e-10
 
 MESH_SCENE = """[scene]
@@ -67,60 +67,16 @@ seed = 5
 """
 
 
-def fail(message):
-    print(f"FAIL: {message}", file=sys.stderr)
-    sys.exit(1)
-
-
-def missing(what):
-    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
-        fail(f"{what} (CI=true: the explorer test must run; install with scripts/install-deps.sh)")
-    print(f"SKIPPED: {what}; install it (scripts/install-deps.sh) to run the explorer test")
-    sys.exit(SKIP)
-
-
-def run(cmd, **kw):
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kw)
-    if r.returncode != 0:
-        fail(f"{' '.join(map(str, cmd))} exited {r.returncode}:\n{r.stdout}")
-    return r.stdout
-
-
-def open_browser(chromium, driver_path, profile):
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    options = webdriver.ChromeOptions()
-    options.binary_location = chromium
-    for arg in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage",
-                "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                "--disable-background-networking", "--disable-component-update",
-                "--disable-sync", "--no-first-run", "--window-size=1280,720",
-                "--proxy-server=http://127.0.0.1:9", "--proxy-bypass-list=<-loopback>",
-                f"--user-data-dir={profile}"):
-        options.add_argument(arg)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    driver = webdriver.Chrome(service=Service(executable_path=driver_path), options=options)
-    # The exact model's start near the book's separatrix takes seconds in WebAssembly (its
-    # long double is emulated), tens of seconds on a loaded machine: more than the default 30.
-    driver.set_script_timeout(300)
-    # The page's viewport at the projector's 1280×720 (the window size includes no chrome
-    # in headless mode, but fix it to be sure).
-    driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
-                           {"width": 1280, "height": 720, "deviceScaleFactor": 1, "mobile": False})
-    return driver
-
-
-def load(driver, url):
-    driver.get(url)
+def load(driver, url=None):
+    """Opens url (None: the page the driver is on, say after a click) and waits until the
+    explorer is ready; fail() after 30 s."""
+    if url is not None:
+        driver.get(url)
     for _ in range(300):
         if driver.execute_script("return !!(window.explorer && window.explorer.ready)"):
             return
         time.sleep(0.1)
-    fail(f"the page never became ready: {url}\n{driver.get_log('browser')}")
-
-
-def console_errors(driver):
-    return [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+    fail(f"the page never became ready: {url or driver.current_url}\n{driver.get_log('browser')}")
 
 
 def simulate_omega(bookspin, scene, settings, t=100.0, dt=0.01):
@@ -394,13 +350,11 @@ def check_flips_against_sweep(driver, page, bookspin, source, workdir):
                  f"period {period}, {count} flips by t = {t_end})")
 
 
-def main(bookspin, source, binary):
-    source, binary = Path(source), Path(binary)
-    chromium, driver_path = find_browser()  # the gallery test's: a skip or, under CI, a failure
-    if not shutil.which("em++"):
-        missing("em++ not found (Debian package emscripten)")
-    if not shutil.which("npm"):
-        missing("npm not found (Debian packages nodejs, npm)")
+
+def main():
+    bookspin, source, binary = test_arguments(__doc__)
+    chromium, driver_path = find_browser()
+    require("em++", "npm")
 
     out = binary / "test-output" / "explorer"
     shots = binary / "test-output" / "browser"
@@ -420,9 +374,7 @@ def main(bookspin, source, binary):
     book_scene = str(source / "scenes" / "fig09-matrix-unstable-x.toml")
     t_handle = str(source / "scenes" / "t-handle-dzhanibekov.toml")
 
-    profile = tempfile.mkdtemp(prefix="bookspin-explorer-")
-    driver = open_browser(chromium, driver_path, profile)
-    try:
+    with open_browser(chromium, driver_path, **EXPLORER_WINDOW) as driver:
         # 1. Opens from disk, no console error, draws the book.
         load(driver, page + "?scene=fig09-matrix-unstable-x")
         time.sleep(1.0)
@@ -622,29 +574,22 @@ def main(bookspin, source, binary):
                      "major-axis-rule"):
             driver.get((out / "index.html").resolve().as_uri())
             driver.execute_script(f"document.querySelector('#{name} a[href^=\"explorer.html\"]').click()")
-            for _ in range(300):
-                if driver.execute_script("return !!(window.explorer && window.explorer.ready)"):
-                    break
-                time.sleep(0.1)
+            load(driver)
             state = driver.execute_script("return window.explorer.state()")
             message = driver.find_element("id", "message").text
             trails = driver.execute_script("return window.explorer.trails()")
             driver.save_screenshot(str(shots / f"explorer-from-gallery-{name}.png"))
             print(f"gallery → {name}: body {state['body']}, model {state['model']}, "
                   f"compare {state['compare']}, runs {len(trails)}")
-            if state["scene"] != name or message or console_errors(driver):
+            errors = console_errors(driver)
+            if state["scene"] != name or message or errors:
                 fail(f"the gallery's link did not open {name} cleanly: scene {state['scene']!r}, "
-                     f"message {message!r}, console {console_errors(driver)}")
+                     f"message {message!r}, console {errors}")
             expected_runs = 2 if name in ("compare-methods-x", "major-axis-rule") else 1  # [[compare]]
             if len(trails) != expected_runs:
                 fail(f"{name} opened with {len(trails)} runs, not {expected_runs}")
-    finally:
-        driver.quit()
-        shutil.rmtree(profile, ignore_errors=True)
     print("OK")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 4:
-        sys.exit(__doc__)
-    main(*sys.argv[1:])
+    sys.exit(main())

@@ -15,57 +15,18 @@ Usage: gallery_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Needs Debian's chromium, chromium-driver and python3-selenium (scripts/install-deps.sh). Where
 one is missing the test is skipped (exit 77), except under CI=true, where that is a failure.
 """
-import functools
-import http.server
+import base64
 import json
-import os
 import shutil
-import subprocess
 import sys
-import threading
 import time
 import urllib.request
-from pathlib import Path
 
-SKIP = 77
+from browser import (console_errors, fail, find_browser, open_browser, run, serve,
+                     test_arguments, wait_for)
+
 CLIP_W, CLIP_H = 160, 96  # even sizes: H.264 4:2:0 needs them
 FRAMES = 8
-
-
-def fail(message):
-    print(f"FAIL: {message}", file=sys.stderr)
-    sys.exit(1)
-
-
-def missing(what):
-    """A missing browser piece: a failure under CI, a skip elsewhere."""
-    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
-        fail(f"{what} (CI=true: the browser test must run; install with scripts/install-deps.sh)")
-    print(f"SKIPPED: {what}; install chromium, chromium-driver and python3-selenium "
-          "(scripts/install-deps.sh) to run the browser test")
-    sys.exit(SKIP)
-
-
-def find_browser():
-    try:
-        import selenium  # noqa: F401
-    except ImportError:
-        missing(f"python module selenium not found by {sys.executable}")
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    driver = shutil.which("chromedriver") or (
-        "/usr/bin/chromedriver" if os.path.exists("/usr/bin/chromedriver") else None)
-    if not chromium:
-        missing("chromium not found on PATH")
-    if not driver:
-        missing("chromedriver not found (Debian package chromium-driver)")
-    return chromium, driver
-
-
-def run(cmd):
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if r.returncode != 0:
-        fail(f"{' '.join(map(str, cmd))} exited {r.returncode}:\n{r.stdout}")
-    return r.stdout
 
 
 def build_gallery(bookspin, source, out):
@@ -91,33 +52,6 @@ def clip_size(mp4):
     return stream["width"], stream["height"]
 
 
-class QuietHandler(http.server.SimpleHTTPRequestHandler):
-    def log_message(self, *args):
-        pass
-
-
-def serve(folder):
-    handler = functools.partial(QuietHandler, directory=str(folder))
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    return server, f"http://127.0.0.1:{server.server_address[1]}/"
-
-
-def open_browser(chromium, driver_path, profile):
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-
-    options = webdriver.ChromeOptions()
-    options.binary_location = chromium
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--disable-background-networking", "--disable-component-update",
-                "--disable-sync", "--no-first-run", "--mute-audio", "--window-size=1280,1000",
-                "--autoplay-policy=no-user-gesture-required", f"--user-data-dir={profile}"):
-        options.add_argument(arg)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    return webdriver.Chrome(service=Service(executable_path=driver_path), options=options)
-
-
 VIDEO_STATE = """
 return Array.from(document.querySelectorAll('video')).map(v => ({
   src: v.getAttribute('src'), poster: v.getAttribute('poster'), readyState: v.readyState,
@@ -129,16 +63,6 @@ IMAGE_STATE = """
 return Array.from(document.querySelectorAll('img')).map(i => ({
   src: i.getAttribute('src'), complete: i.complete, naturalWidth: i.naturalWidth}));
 """
-
-
-def wait_for(driver, script, done, timeout=60):
-    """Runs `script` until done(result) or the timeout; returns the last result."""
-    deadline = time.monotonic() + timeout
-    while True:
-        result = driver.execute_script(script)
-        if done(result) or time.monotonic() > deadline:
-            return result
-        time.sleep(0.25)
 
 
 def check_page(driver, url, out, names, screenshot):
@@ -211,21 +135,15 @@ def check_page(driver, url, out, names, screenshot):
     shot = driver.execute_cdp_cmd("Page.captureScreenshot", {
         "format": "png", "captureBeyondViewport": True,
         "clip": {"x": 0, "y": 0, "width": size["width"], "height": size["height"], "scale": 1}})
-    import base64
     screenshot.write_bytes(base64.b64decode(shot["data"]))
     print(f"screenshot {screenshot}")
 
-    for entry in driver.get_log("browser"):
-        if entry["level"] == "SEVERE":
-            errors.append(f"console: {entry['message']}")
+    errors += [f"console: {entry['message']}" for entry in console_errors(driver)]
     return errors
 
 
 def main():
-    if len(sys.argv) != 4:
-        print(__doc__, file=sys.stderr)
-        return 2
-    bookspin, source, binary = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[3])
+    bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
     root = binary / "test-output" / "browser"
     shutil.rmtree(root, ignore_errors=True)
@@ -233,13 +151,9 @@ def main():
     out.mkdir(parents=True)
     names = build_gallery(bookspin, source, out)
 
-    server, url = serve(out)
-    driver = open_browser(chromium, driver_path, root / "profile")
-    try:
+    with serve(out) as url, open_browser(chromium, driver_path, size=(1280, 1000),
+                                         media=True) as driver:
         errors = check_page(driver, url, out, names, root / "gallery.png")
-    finally:
-        driver.quit()
-        server.shutdown()
     if errors:
         fail("\n  " + "\n  ".join(errors))
     print("PASS: the gallery opens in Chromium; videos, images and links all load")

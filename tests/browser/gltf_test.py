@@ -13,30 +13,25 @@ Chromium (three.js's GLTFLoader; a <video> element).
 
 Usage: gltf_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Needs node and npm (the pinned tests/browser/package-lock.json is installed with `npm ci`
-into BINARY_DIR/test-output/gltf-npm) and what gallery_test.py needs. A missing piece skips
-(exit 77), except under CI=true, where it fails.
+into BINARY_DIR/test-output/gltf-npm) and Chromium with Selenium (browser.py). A missing piece
+skips (exit 77), except under CI=true, where it fails.
 """
 import filecmp
 import json
 import shutil
-import subprocess
 import sys
-import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from gallery_test import fail, find_browser, missing, run, serve, wait_for  # noqa: E402
+from browser import (console_errors, fail, find_browser, open_browser, require, run, serve,
+                     test_arguments, wait_for)
 
-SKIP = 77
 FRAMES = 150
 FPS = 30
 
 
 def npm_tools(source, binary):
     """node_modules with gltf-validator and three, from the pinned lockfile."""
-    node, npm = shutil.which("node"), shutil.which("npm")
-    if not node or not npm:
-        missing("node or npm not found on PATH (scripts/install-deps.sh installs them)")
+    node, npm = require("node", "npm")
     folder = binary / "test-output" / "gltf-npm"
     folder.mkdir(parents=True, exist_ok=True)
     here = source / "tests" / "browser"
@@ -74,29 +69,8 @@ def write_mesh_scene(folder):
     return scene
 
 
-def open_webgl_browser(chromium, driver_path, profile):
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-
-    options = webdriver.ChromeOptions()
-    options.binary_location = chromium
-    # WebGL on the CPU: SwiftShader through ANGLE (no GPU on the test machines).
-    for arg in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage",
-                "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-                "--ignore-gpu-blocklist", "--disable-background-networking",
-                "--disable-component-update", "--disable-sync", "--no-first-run",
-                "--mute-audio", "--window-size=1000,800",
-                "--autoplay-policy=no-user-gesture-required", f"--user-data-dir={profile}"):
-        options.add_argument(arg)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    return webdriver.Chrome(service=Service(executable_path=driver_path), options=options)
-
-
 def main():
-    if len(sys.argv) != 4:
-        print(__doc__, file=sys.stderr)
-        return 2
-    bookspin, source, binary = sys.argv[1], Path(sys.argv[2]), Path(sys.argv[3])
+    bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
     node, site = npm_tools(source, binary)
     shots = binary / "test-output" / "browser"
@@ -133,11 +107,8 @@ def main():
         '<!doctype html><html><head><link rel="icon" href="data:,"></head><body><video id="v" src="clip.webm" muted autoplay loop '
         'playsinline></video></body></html>')
 
-    server, url = serve(site)
-    profile = binary / "test-output" / "gltf-chromium-profile"
-    shutil.rmtree(profile, ignore_errors=True)
-    driver = open_webgl_browser(chromium, driver_path, profile)
-    try:
+    with serve(site) as url, open_browser(chromium, driver_path, size=(1000, 800), webgl=True,
+                                          media=True) as driver:
         for name, (scene, frame) in cases.items():
             t = frame / FPS
             driver.get(f"{url}gltf_page.html?file={name}.glb&t={t!r}")
@@ -156,7 +127,7 @@ def main():
             if error > 1e-6:
                 fail(f"{name}: three.js's orientation differs from the CSV's by {error}")
             driver.save_screenshot(str(shots / f"gltf-{name}.png"))
-        severe = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+        severe = console_errors(driver)
         if severe:
             fail(f"console errors: {severe}")
 
@@ -169,9 +140,6 @@ def main():
         if state["error"] or state["ready"] < 4 or state["time"] <= 0.2 or \
                 (state["w"], state["h"]) != (320, 180):
             fail(f"the WebM did not play in Chromium: {state}")
-    finally:
-        driver.quit()
-        server.shutdown()
     print("gltf_test: validator, three.js and WebM playback all agree")
     return 0
 

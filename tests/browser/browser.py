@@ -1,0 +1,178 @@
+"""What the browser tests share: their arguments, skip-or-fail, running bookspin, headless
+Chromium driven by Selenium, a local HTTP server, waiting on the page.
+
+The tests (gallery_test.py, gltf_test.py, explorer_test.py) are run by ctest as
+`TEST.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR` with Debian's /usr/bin/python3, which has
+python3-selenium. A missing piece (chromium, chromedriver, selenium, node, npm, em++) skips
+the test with exit status 77, except under CI=true, where it is a failure: in CI the browser
+tests must run. Install the pieces with scripts/install-deps.sh.
+
+    from browser import open_browser, test_arguments
+    bookspin, source, binary = test_arguments(__doc__)
+    chromium, driver_path = find_browser()
+    with open_browser(chromium, driver_path, webgl=True) as driver:
+        ...
+"""
+import contextlib
+import functools
+import http.server
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from pathlib import Path
+
+SKIP = 77
+
+
+def fail(message):
+    """Ends the test as failed (exit 1), the message on stderr."""
+    print(f"FAIL: {message}", file=sys.stderr)
+    sys.exit(1)
+
+
+def under_ci():
+    return os.environ.get("CI", "").lower() in ("1", "true", "yes")
+
+
+def missing(what):
+    """A missing tool: a failure under CI=true, a skip (exit 77) elsewhere."""
+    test = Path(sys.argv[0]).stem
+    if under_ci():
+        fail(f"{what} (CI=true: {test} must run; install it with scripts/install-deps.sh)")
+    print(f"SKIPPED: {what}; install it (scripts/install-deps.sh) to run {test}")
+    sys.exit(SKIP)
+
+
+def require(*programs):
+    """The path of each program on PATH, in order; missing() for the first that is not."""
+    found = []
+    for name in programs:
+        path = shutil.which(name)
+        if not path:
+            missing(f"{name} not found on PATH")
+        found.append(path)
+    return found
+
+
+def find_browser():
+    """(chromium, chromedriver): the browser and its driver, and selenium importable; a
+    missing one is missing()."""
+    try:
+        import selenium  # noqa: F401
+    except ImportError:
+        missing(f"python module selenium (python3-selenium) not found by {sys.executable}")
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    driver = shutil.which("chromedriver") or (
+        "/usr/bin/chromedriver" if os.path.exists("/usr/bin/chromedriver") else None)
+    if not chromium:
+        missing("chromium not found on PATH")
+    if not driver:
+        missing("chromedriver not found (Debian package chromium-driver)")
+    return chromium, driver
+
+
+def test_arguments(usage):
+    """(bookspin, source, binary) from `TEST.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR`, the last
+    two as Paths; prints `usage` and exits 2 on any other command line."""
+    if len(sys.argv) != 4:
+        print(usage, file=sys.stderr)
+        sys.exit(2)
+    return sys.argv[1], Path(sys.argv[2]), Path(sys.argv[3])
+
+
+def run(cmd, **kw):
+    """Runs cmd (any of its parts may be a Path) and returns its stdout and stderr together;
+    fail() with that text when it exits non-zero."""
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kw)
+    if r.returncode != 0:
+        fail(f"{' '.join(map(str, cmd))} exited {r.returncode}:\n{r.stdout}")
+    return r.stdout
+
+
+class _QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+@contextlib.contextmanager
+def serve(folder):
+    """An HTTP server on 127.0.0.1 serving `folder` (file:// pages may not play media, nor
+    fetch), for the length of the with block; yields its URL, ending in '/'."""
+    handler = functools.partial(_QuietHandler, directory=str(folder))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+        server.server_close()
+
+
+@contextlib.contextmanager
+def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media=False,
+                 offline=False, exact_viewport=False, profile=None, script_timeout=300):
+    """Headless Chromium for the length of the with block; yields the Selenium driver and
+    quits it after.
+
+    size: the window (width, height) in CSS pixels. webgl: WebGL on the CPU, SwiftShader
+    through ANGLE (no GPU on the test machines); otherwise the GPU is off. media: sound muted,
+    autoplay without a user gesture. offline: every request but those to 127.0.0.1 goes to a
+    closed port. exact_viewport: the page's viewport set to `size` exactly through the DevTools
+    protocol. profile: the user-data folder (default: a temporary one, removed after).
+    The browser's console is kept at every level: see console_errors(). A script the test
+    runs in the page may take up to `script_timeout` seconds (Selenium's default, 30 s, is
+    too short for a long run of the physics on a loaded 2-core machine)."""
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+
+    temporary = None
+    if profile is None:
+        temporary = profile = tempfile.mkdtemp(prefix="bookspin-chromium-")
+    args = ["--headless=new", "--no-sandbox", "--disable-dev-shm-usage",
+            "--disable-background-networking", "--disable-component-update", "--disable-sync",
+            "--no-first-run", f"--window-size={size[0]},{size[1]}", f"--user-data-dir={profile}"]
+    if webgl:
+        args += ["--use-angle=swiftshader", "--enable-unsafe-swiftshader"]
+    else:
+        args += ["--disable-gpu"]
+    if media:
+        args += ["--mute-audio", "--autoplay-policy=no-user-gesture-required"]
+    if offline:
+        args += ["--proxy-server=http://127.0.0.1:9", "--proxy-bypass-list=<-loopback>"]
+    options = webdriver.ChromeOptions()
+    options.binary_location = chromium
+    for arg in args:
+        options.add_argument(arg)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    driver = webdriver.Chrome(service=Service(executable_path=driver_path), options=options)
+    try:
+        driver.set_script_timeout(script_timeout)
+        if exact_viewport:
+            driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                                   {"width": size[0], "height": size[1], "deviceScaleFactor": 1,
+                                    "mobile": False})
+        yield driver
+    finally:
+        driver.quit()
+        if temporary:
+            shutil.rmtree(temporary, ignore_errors=True)
+
+
+def console_errors(driver):
+    """The SEVERE entries of the browser's console since the last call."""
+    return [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+
+
+def wait_for(driver, script, done, timeout=60):
+    """Runs `script` in the page until done(result) or the timeout (seconds); returns the last
+    result."""
+    deadline = time.monotonic() + timeout
+    while True:
+        result = driver.execute_script(script)
+        if done(result) or time.monotonic() > deadline:
+            return result
+        time.sleep(0.25)
