@@ -1,15 +1,22 @@
-// embind bindings of src/physics for the browser explorer (docs/explorer.md).
-// The physics is compiled unchanged; this file only translates between Eigen and JavaScript
-// arrays. Shapes: corners 3×8 and surfaces 3×V are flattened column by column (x, y, z of
-// column 0, then column 1, …), body frame or world frame as stated on each method.
+// embind bindings of src/physics for the browser explorer (docs/explorer.md), with the two
+// measures the page shows taken from where bookspin takes them: the flip detector and the
+// intermediate axis of src/analysis/motion.hpp, and the clip stage's trilinear cage
+// (src/clip/body_drawing.hpp) that carries a surface with the 8 corners. Everything is compiled
+// unchanged; this file only translates between Eigen and JavaScript arrays. Shapes: corners
+// 3×8 and surfaces 3×V are flattened column by column (x, y, z of column 0, then column 1, …),
+// body frame or world frame as stated on each method.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "analysis/motion.hpp"
+#include "clip/body_drawing.hpp"
 #include "physics/body.hpp"
 #include "physics/book.hpp"
 #include "physics/polhode.hpp"
@@ -19,7 +26,13 @@
 namespace {
 
 using namespace bookspin::physics;
+using bookspin::analysis::FlipDetector;
 using emscripten::val;
+
+/// `value` or JavaScript null.
+val optional_number(const std::optional<double>& value) {
+  return value ? val(*value) : val::null();
+}
 
 /// A Float64Array copy of `n` doubles.
 val f64(const double* data, std::size_t n) {
@@ -140,16 +153,50 @@ class Session {
     initial.seed = static_cast<std::uint64_t>(seed);
     sim().reset(initial);
     steps_ = 0;
+    flips_ = FlipDetector();
+    flips_.observe(0.0, bookspin::analysis::flip_signal(sim().diagnostics(), body_.moments));
   }
 
   /// Advances `n` steps of `dt`; stops early (returns false) when the state stops being finite.
+  /// The flip detector sees every step at t = steps·dt (a product), as analysis::measure_run
+  /// does for `bookspin sweep` (docs/physics.md §14), so the counts agree.
   bool step(double dt, int n) {
     for (int i = 0; i < n; ++i) {
       sim().step(dt);
       ++steps_;
       if (!sim().finite()) return false;
+      flips_.observe(static_cast<double>(steps_) * dt,
+                     bookspin::analysis::flip_signal(sim().diagnostics(), body_.moments));
     }
     return true;
+  }
+
+  /// The flips since reset (docs/physics.md §14): sign changes of cos(intermediate axis, L)
+  /// seen after every step, as {count, first (time units or null), period (time units or
+  /// null: fewer than two)}.
+  val flips() const {
+    val out = val::object();
+    out.set("count", flips_.count());
+    out.set("first", optional_number(flips_.first_flip()));
+    out.set("period", optional_number(flips_.flip_period()));
+    return out;
+  }
+  /// The body axis (0 = x, 1 = y, 2 = z) of the intermediate principal moment.
+  int intermediate_axis() const { return bookspin::analysis::intermediate_axis(body_.moments); }
+
+  /// The body-frame ω0 (rad per time unit) whose angular momentum I·ω0 points along the
+  /// body-frame direction (ux, uy, uz) with magnitude `L` (mass·length²/time): ω0_d = L·u_d/I_d
+  /// with u normalized, I the principal moments about body x, y, z (docs/physics.md §5, §15).
+  /// Throws std::invalid_argument for a zero or non-finite direction or a negative L.
+  val omega_for_momentum(double ux, double uy, double uz, double L) const {
+    const Eigen::Vector3d u(ux, uy, uz);
+    if (!u.allFinite() || !(u.norm() > 0.0) || !(L >= 0.0) || !std::isfinite(L))
+      throw std::invalid_argument("momentum direction must be a finite non-zero vector");
+    return vec3((L * u.normalized()).cwiseQuotient(body_.moments));
+  }
+  /// |I·ω| (mass·length²/time) for body-frame ω (rad per time unit), I the principal moments.
+  double momentum_magnitude(double wx, double wy, double wz) const {
+    return body_.moments.cwiseProduct(Eigen::Vector3d(wx, wy, wz)).norm();
   }
 
   double steps() const { return static_cast<double>(steps_); }
@@ -182,10 +229,31 @@ class Session {
     const Corners c = sim().corners();
     return f64(c.data(), 24);
   }
-  /// The lattice's deformed surface 3×V (world), empty otherwise.
-  val deformed_surface() const {
-    const Eigen::Matrix3Xd s = sim().deformed_surface();
+  /// The body's surface as bookspin draws it, 3×V (world; vertex i the body's rest vertex i):
+  /// the lattice's own deformed surface (docs/physics.md §13), else the rest surface carried by
+  /// the moved cage corners (clip::trilinear_deform, as clip::BodyDrawing). Empty for the book.
+  val surface_world() const {
+    Eigen::Matrix3Xd s = sim().deformed_surface();
+    if (s.cols() == 0 && body_.vertices.cols() > 0)
+      s = bookspin::clip::trilinear_deform(body_.cage.body_corners(), sim().corners(),
+                                           body_.vertices);
     return f64(s.data(), static_cast<std::size_t>(s.size()));
+  }
+  /// Body-frame points 3×N (flattened column by column) carried by the moved cage corners
+  /// (clip::trilinear_deform) to world, 3×N: the book's box drawn as bookspin draws it.
+  val carry(const val& points) const {
+    const std::vector<double> p = emscripten::vecFromJSArray<double>(points);
+    if (p.size() % 3 != 0) throw std::invalid_argument("carry: points must be 3×N");
+    const Eigen::Matrix3Xd rest =
+        Eigen::Map<const Eigen::Matrix3Xd>(p.data(), 3, static_cast<Eigen::Index>(p.size() / 3));
+    const Eigen::Matrix3Xd world =
+        bookspin::clip::trilinear_deform(body_.cage.body_corners(), sim().corners(), rest);
+    return f64(world.data(), static_cast<std::size_t>(world.size()));
+  }
+  /// The orientation R (body→world, 3×3 column-major): Simulator::orientation().
+  val orientation() const {
+    const Eigen::Matrix3d r = sim().orientation();
+    return f64(r.data(), 9);
   }
 
   /// Principal moments about body x, y, z (mass·length²).
@@ -221,6 +289,7 @@ class Session {
   Body body_;
   std::unique_ptr<Simulator> simulator_;
   long long steps_ = 0;
+  FlipDetector flips_;
 };
 
 /// The polhode family of moments (Ix, Iy, Iz) (docs/physics.md §15): an array of
@@ -268,7 +337,13 @@ EMSCRIPTEN_BINDINGS(bookspin_physics) {
       .function("divergenceReason", &Session::divergence_reason)
       .function("diagnostics", &Session::diagnostics)
       .function("corners", &Session::corners)
-      .function("deformedSurface", &Session::deformed_surface)
+      .function("flips", &Session::flips)
+      .function("intermediateAxis", &Session::intermediate_axis)
+      .function("omegaForMomentum", &Session::omega_for_momentum)
+      .function("momentumMagnitude", &Session::momentum_magnitude)
+      .function("surfaceWorld", &Session::surface_world)
+      .function("carry", &Session::carry)
+      .function("orientation", &Session::orientation)
       .function("moments", &Session::moments)
       .function("principalOrder", &Session::principal_order)
       .function("bodyCorners", &Session::body_corners)

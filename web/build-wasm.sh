@@ -19,10 +19,13 @@ flags=(-std=c++20 -O3 -DNDEBUG -I"$root/src" -I/usr/include/eigen3 -isystem "$ou
        -Wall -Wextra -fexceptions)
 objs=()
 pids=()
-for src in "$root"/src/physics/*.cpp "$here/bindings.cpp"; do
+# The physics whole; of analysis and clip only the two pure-Eigen files the page measures and
+# draws with (the flip detector, the trilinear cage), which include nothing but src/physics.
+for src in "$root"/src/physics/*.cpp "$root/src/analysis/motion.cpp" \
+           "$root/src/clip/body_drawing.cpp" "$here/bindings.cpp"; do
   obj="$out/obj/$(basename "${src%.cpp}").o"
   objs+=("$obj")
-  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
+  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
     em++ "${flags[@]}" -c "$src" -o "$obj" &
     pids+=($!)
     # two compilers at a time

@@ -1,0 +1,91 @@
+// The control column: the state shown in the page's inputs and read back from them. Only what
+// the chosen model uses is shown: its own integrators (physics::supports through the
+// WebAssembly module), normalization where it has one, damping and k for the particle model,
+// lattice cells for a particle body other than the book.
+import { MODELS, INTEGRATORS, BODIES, AXES } from './state.js';
+
+const $ = (id) => document.getElementById(id);
+const NUMBERS = ['k', 'cells', 'dt', 'rate', 'jiggle', 'seed', 'speed'];
+const CHOICES = ['scene', 'body', 'model', 'integrator', 'axis', 'model2', 'integrator2'];
+const BOXES = ['normalize', 'damping', 'compare', 'normalize2', 'showL', 'showAxes'];
+/** Controls that change only the drawing, not the run. */
+export const VIEW_CONTROLS = ['showL', 'showAxes', 'speed'];
+
+function fillSelect(id, list) {
+  $(id).innerHTML = list.map((x) => `<option value="${x}">${x}</option>`).join('');
+}
+
+function show(id, visible) {
+  $(id).hidden = !visible;
+}
+
+export class Controls {
+  /** `supports(model, integrator)`: whether the physics accepts the pair. */
+  constructor(scenes, supports) {
+    this.scenes = scenes;
+    this.supports = supports;
+    fillSelect('scene', [''].concat(scenes.map((s) => s.name)));
+    $('scene').options[0].textContent = '(custom)';
+    fillSelect('body', BODIES);
+    fillSelect('model', MODELS); fillSelect('model2', MODELS);
+    fillSelect('axis', AXES);
+  }
+
+  /** The integrators `model` accepts. */
+  integratorsOf(model) {
+    return INTEGRATORS.filter((i) => this.supports(model, i));
+  }
+
+  /** The state from the inputs; an integrator the model does not take becomes its first. */
+  read(state) {
+    const next = { ...state };
+    for (const id of CHOICES) next[id] = $(id).value;
+    for (const id of NUMBERS) next[id] = Number($(id).value);
+    for (const id of BOXES) next[id] = $(id).checked;
+    next.w = ['wx', 'wy', 'wz'].map((id) => Number($(id).value));
+    return this.fit(next);
+  }
+
+  /** `state` with each integrator one its model takes (else the model's first). */
+  fit(state) {
+    const next = { ...state };
+    for (const [m, i] of [['model', 'integrator'], ['model2', 'integrator2']]) {
+      const list = this.integratorsOf(next[m]);
+      if (!list.includes(next[i])) next[i] = list[0];
+    }
+    return next;
+  }
+
+  /** Shows `state` in the inputs, hiding what its models do not use. */
+  write(state) {
+    fillSelect('integrator', this.integratorsOf(state.model));
+    fillSelect('integrator2', this.integratorsOf(state.model2));
+    for (const id of CHOICES) $(id).value = state[id];
+    for (const id of NUMBERS) $(id).value = state[id];
+    for (const id of BOXES) $(id).checked = state[id];
+    ['wx', 'wy', 'wz'].forEach((id, i) => { $(id).value = state.w[i]; });
+    const exact = state.model === 'exact', particle = state.model === 'particle';
+    show('integratorRow', !exact);
+    show('normalizeRow', !exact);
+    show('dampingRow', particle);
+    show('kRow', particle);
+    show('cellsRow', particle && state.body !== 'book');
+    show('custom', state.axis === 'custom');
+    show('rateRow', state.axis !== 'custom');
+    show('second', state.compare);
+    show('integrator2Row', state.model2 !== 'exact');
+    show('normalize2Row', state.model2 !== 'exact');
+    // 'mesh' is the scene's own mesh body: offered only where the scene has one.
+    const scene = this.scenes.find((x) => x.name === state.scene);
+    const mesh = $('body').querySelector('option[value="mesh"]');
+    mesh.disabled = !(scene && scene.body && scene.body.shape === 'mesh');
+    mesh.textContent = mesh.disabled ? 'mesh (a mesh scene)' : `mesh (${scene.name})`;
+  }
+
+  /** Calls `onChange(id)` when an input of the column or the transport changes. */
+  listen(onChange) {
+    for (const el of document.querySelectorAll('#controls input, #controls select, #speed')) {
+      el.addEventListener('change', () => onChange(el.id));
+    }
+  }
+}

@@ -1,0 +1,131 @@
+// The physics runs of the page: one simulator session per method (web/bindings.cpp), stepped,
+// recorded for the plots and the sphere's trail. Every number comes from the WebAssembly
+// module, flips included (analysis::FlipDetector, fed every step); nothing is computed here.
+import { DEFAULTS, AXES } from './state.js';
+
+const TRAIL_COLOURS = ['#e8b00b', '#35c0f0'];
+
+/** The state a scene starts from: the page's defaults under the scene's own settings. */
+export function sceneBase(scenes, name) {
+  const scene = scenes.find((s) => s.name === name);
+  return scene ? { ...DEFAULTS, ...scene.state, scene: name } : DEFAULTS;
+}
+
+/** The methods of `state`: the first, and the second in compare mode. */
+function methodsOf(state) {
+  const methods = [[state.model, state.integrator, state.normalize]];
+  if (state.compare) methods.push([state.model2, state.integrator2, state.normalize2]);
+  return methods;
+}
+
+function labelOf(model, integrator, normalize) {
+  if (model === 'exact') return 'exact';
+  return `${model}, ${integrator}${normalize ? ', normalized' : ''}`;
+}
+
+export class Runs {
+  constructor(wasm, scenes) {
+    this.wasm = wasm;
+    this.scenes = scenes;
+    this.list = [];  // {session, model, integrator, normalize, colour, label, trail, history, E0, diverged}
+  }
+
+  /**
+   * The simulator's session for the state's body. The scene's own body comes whole from bookspin
+   * (its `body`: moments, cage and surface as `bookspin simulate` builds them, a mesh included);
+   * another preset is built by the physics from its shape, the book from the scene's size.
+   */
+  bodySession(state) {
+    const scene = this.scenes.find((s) => s.name === state.scene);
+    if (scene && scene.body && state.body === scene.body.shape) return new this.wasm.Session(scene.body);
+    if (state.body === 'mesh') throw new Error('no mesh body in this scene: choose a mesh scene');
+    const book = scene && scene.book && !scene.body ? scene.book : { size: [1.878, 2.9085, 0.5], mass: 8 };
+    if (state.body === 'book')
+      return new this.wasm.Session('book', book.mass, 1, book.size[0], book.size[1], book.size[2]);
+    return new this.wasm.Session(state.body, 1, 1, 1, 1, 1);
+  }
+
+  /** ω0 (body frame) of the state: a principal axis at `rate`, or the custom components. */
+  static omega0(session, state) {
+    if (state.axis === 'custom') return state.w.slice();
+    const order = session.principalOrder();
+    const w = [0, 0, 0];
+    w[order[AXES.indexOf(state.axis)]] = state.rate;
+    return w;
+  }
+
+  /** A fresh session of `model` configured and reset to the state's start. */
+  startSession(state, model, integrator, normalize) {
+    const session = this.bodySession(state);
+    try {
+      session.configure(model, integrator, normalize, state.damping, state.k, state.cells);
+      const w = Runs.omega0(session, state);
+      session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
+    } catch (e) {
+      session.delete();
+      throw e;
+    }
+    return session;
+  }
+
+  /** Starts every method of `state` from t = 0; returns the error messages of those that failed. */
+  rebuild(state) {
+    this.dispose();
+    const errors = [];
+    methodsOf(state).forEach(([model, integrator, normalize], k) => {
+      try {
+        const session = this.startSession(state, model, integrator, normalize);
+        const run = { session, model, integrator, normalize, colour: TRAIL_COLOURS[k],
+          label: labelOf(model, integrator, normalize), trail: [], history: [], diverged: '' };
+        this.record(run, state.dt);
+        run.E0 = run.history[0].E;
+        this.list.push(run);
+      } catch (e) {
+        errors.push(typeof e === 'number' ? this.wasm.errorMessage(e) : String(e.message || e));
+      }
+    });
+    return errors;
+  }
+
+  record(run, dt) {
+    const d = run.session.diagnostics();
+    const u = d.momentum_direction;
+    run.trail.push([u[0], u[1], u[2]]);
+    const shape = run.model === 'particle' ? d.strain_max
+      : run.model === 'rigid-matrix' ? d.orthogonality_error
+        : Math.abs(d.quaternion_norm - 1);
+    run.history.push({ t: run.session.steps() * dt, w: Array.from(d.omega_body), E: d.energy_total, shape });
+    if (run.trail.length > 20000) run.trail = run.trail.slice(10000);
+    if (run.history.length > 4000) run.history = run.history.filter((_, i) => i % 2 === 0);
+  }
+
+  /** Steps every run to time t (the step count round(t/dt)), recording every 0.05 time units;
+   * returns the time reached. */
+  advanceTo(t, dt) {
+    const total = Math.round(t / dt);
+    const chunk = Math.max(1, Math.round(0.05 / dt));
+    for (const r of this.list) {
+      let left = total - r.session.steps();
+      while (left > 0 && !r.diverged) {
+        const n = Math.min(chunk, left);
+        if (!r.session.step(dt, n)) {
+          const reason = r.session.divergenceReason();
+          r.diverged = `diverged at t = ${(r.session.steps() * dt).toFixed(3)}${reason ? ': ' + reason : ''}`;
+        }
+        left -= n;
+        this.record(r, dt);
+      }
+    }
+    return total * dt;
+  }
+
+  /** The flip count of each run (analysis::FlipDetector on every step, docs/physics.md §14). */
+  flips() {
+    return this.list.map((r) => r.session.flips().count);
+  }
+
+  dispose() {
+    for (const r of this.list) r.session.delete();
+    this.list = [];
+  }
+}

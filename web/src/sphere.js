@@ -1,0 +1,161 @@
+// The momentum sphere: L/|L| in the body frame on a 2D canvas, orthographic, with the polhodes
+// and separatrices of the body (physics::polhode_family through the WebAssembly module) and each
+// run's trail. Drag (mouse or touch) turns it; a click or tap on it picks the start direction of
+// L there (`onPick(u)`, u a body-frame unit vector).
+import * as THREE from 'three';
+
+// The 2D panels draw in software (a canvas in memory, copied to the screen when it changed):
+// long polylines stroked through a software WebGL (SwiftShader, headless Chromium without a
+// GPU) cost a tenth of a second and more per redraw, on the CPU, in the GPU process.
+export const CANVAS_2D = { willReadFrequently: true };
+
+const DRAG_PIXELS = 5;  // a press that moves less than this is a click, not a drag
+
+function layerCanvas(W, H) {
+  const c = document.createElement('canvas');
+  c.width = W; c.height = H;
+  return c;
+}
+
+export class Sphere {
+  constructor(canvas, wasm, onPick) {
+    this.canvas = canvas;
+    this.wasm = wasm;
+    this.onPick = onPick;
+    // body → view (orthographic: x right, y up, z towards the viewer)
+    this.rotation = new THREE.Matrix3().set(0.80, -0.60, 0, 0.25, 0.33, 0.91, -0.55, -0.73, 0.41);
+    this.polhodes = null;
+    this.moments = '';
+    // The polhodes and the trails drawn so far are kept on canvases of their own (layers) and
+    // copied in each frame, so that a frame strokes only the trail points added since the last.
+    this.layers = { key: null, back: null, trails: null, drawn: [] };
+    this.redraw = true;
+    this.wire();
+  }
+
+  geometry() {
+    const W = this.canvas.width, H = this.canvas.height;
+    return { W, H, R: Math.min(W, H) * 0.42, cx: W / 2, cy: H / 2 };
+  }
+
+  project(u) {
+    const e = this.rotation.elements;  // column-major
+    return [e[0] * u[0] + e[3] * u[1] + e[6] * u[2], e[1] * u[0] + e[4] * u[1] + e[7] * u[2],
+      e[2] * u[0] + e[5] * u[1] + e[8] * u[2]];
+  }
+
+  /** The body-frame unit vector under canvas pixel (x, y) on the sphere's front half, or null
+   * outside the disc: the view point (X, Y, √(1 − X² − Y²)) taken back through the inverse of
+   * the view rotation. */
+  bodyDirectionAt(x, y) {
+    const { R, cx, cy } = this.geometry();
+    const X = (x - cx) / R, Y = (cy - y) / R;
+    const rr = X * X + Y * Y;
+    if (rr > 1) return null;
+    const v = new THREE.Vector3(X, Y, Math.sqrt(1 - rr));
+    v.applyMatrix3(this.rotation.clone().invert());
+    return v.normalize().toArray();
+  }
+
+  wire() {
+    const cv = this.canvas;
+    let press = null;
+    const pixel = (ev) => {
+      const box = cv.getBoundingClientRect();
+      return [(ev.clientX - box.left) * cv.width / box.width, (ev.clientY - box.top) * cv.height / box.height];
+    };
+    cv.addEventListener('pointerdown', (ev) => {
+      press = { start: [ev.clientX, ev.clientY], last: [ev.clientX, ev.clientY], dragged: false };
+      cv.setPointerCapture(ev.pointerId);
+    });
+    cv.addEventListener('pointermove', (ev) => {
+      if (!press) return;
+      if (Math.hypot(ev.clientX - press.start[0], ev.clientY - press.start[1]) >= DRAG_PIXELS) press.dragged = true;
+      if (!press.dragged) return;
+      const dx = (ev.clientX - press.last[0]) * 0.01, dy = (ev.clientY - press.last[1]) * 0.01;
+      press.last = [ev.clientX, ev.clientY];
+      const q = new THREE.Matrix4().makeRotationY(dx).multiply(new THREE.Matrix4().makeRotationX(dy));
+      this.rotation = new THREE.Matrix3().setFromMatrix4(q).multiply(this.rotation);
+      this.redraw = true;
+    });
+    cv.addEventListener('pointerup', (ev) => {
+      const was = press;
+      press = null;
+      if (!was || was.dragged) return;
+      const [x, y] = pixel(ev);
+      const u = this.bodyDirectionAt(x, y);
+      if (u) this.onPick(u);
+    });
+    cv.addEventListener('pointercancel', () => { press = null; });
+  }
+
+  curve(ctx, pts, colour, width) {
+    const { R, cx, cy } = this.geometry();
+    ctx.lineWidth = width;
+    for (let pass = 0; pass < 2; ++pass) {  // back half dim, front half bright
+      ctx.strokeStyle = colour; ctx.globalAlpha = pass ? 1 : 0.25;
+      ctx.beginPath();
+      let pen = false;
+      for (const u of pts) {
+        const p = this.project(u);
+        if ((p[2] >= 0) === !!pass) {
+          const x = cx + R * p[0], y = cy - R * p[1];
+          if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+          pen = true;
+        } else pen = false;
+      }
+      ctx.stroke();
+    }
+    ctx.globalAlpha = 1;
+  }
+
+  /** Draws the sphere for `runs` (the first run's body gives the polhodes). */
+  draw(runs) {
+    const g = this.canvas.getContext('2d', CANVAS_2D);
+    const { W, H, R, cx, cy } = this.geometry();
+    g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
+    g.strokeStyle = '#555'; g.beginPath(); g.arc(cx, cy, R, 0, 2 * Math.PI); g.stroke();
+    g.fillStyle = '#ccc'; g.font = '14px sans-serif';
+    g.fillText('L/|L| in the body frame · click: start here', 8, 18);
+    if (!runs.length) return;
+    const I = runs[0].session.moments();
+    if (I.join() !== this.moments) {
+      this.polhodes = this.wasm.polhodes(I[0], I[1], I[2], 5, 0.03);
+      this.moments = I.join();
+    }
+    const L = this.layers;
+    const key = [W, H, ...this.rotation.elements, this.moments].join();
+    if (key !== L.key || L.drawn.length !== runs.length) {
+      L.back = layerCanvas(W, H);
+      const b = L.back.getContext('2d', CANVAS_2D);
+      for (const c of this.polhodes) {
+        const pts = [];
+        for (let i = 0; i < c.points.length; i += 3) pts.push([c.points[i], c.points[i + 1], c.points[i + 2]]);
+        this.curve(b, pts, c.separatrix ? '#e04848' : '#7a8699', c.separatrix ? 2 : 1);
+      }
+      L.key = key;
+      L.trails = null;
+    }
+    const shrank = runs.some((r, k) => !(k in L.drawn) || r.trail !== L.drawn[k].trail || r.trail.length < L.drawn[k].n);
+    if (!L.trails || shrank) {
+      L.trails = layerCanvas(W, H);
+      L.drawn = runs.map((r) => ({ trail: r.trail, n: 0 }));
+    }
+    const t = L.trails.getContext('2d', CANVAS_2D);
+    runs.forEach((r, k) => {
+      const done = L.drawn[k];
+      if (r.trail.length > done.n) {
+        // From the last point drawn, so that the new piece joins the old.
+        this.curve(t, r.trail.slice(Math.max(0, done.n - 1)), r.colour, 2.5);
+        done.n = r.trail.length;
+      }
+    });
+    g.drawImage(L.back, 0, 0);
+    g.drawImage(L.trails, 0, 0);
+    for (const r of runs) {
+      const p = this.project(r.trail[r.trail.length - 1]);
+      g.fillStyle = r.colour; g.beginPath(); g.arc(cx + R * p[0], cy - R * p[1], 5, 0, 2 * Math.PI); g.fill();
+    }
+    this.redraw = false;
+  }
+}

@@ -1,0 +1,205 @@
+// The 3D view: the bodies drawn with three.js under an orbit camera (mouse and touch), the L
+// arrow and the body axes. Positions come from the WebAssembly module: a surface as bookspin
+// draws it (the lattice's own, or carried by the clip stage's trilinear cage), the book's box
+// carried by the same cage; nothing is deformed here.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+
+function bookMaterials(art) {
+  // BoxGeometry faces: +x, −x, +y, −y, +z, −z. The book's faces (docs/physics.md §1):
+  // spine +x, fore-edge −x, top +y, bottom −y, front cover +z, back cover −z; the images are
+  // bookspin's own (bookspin explore), plain colours without them.
+  const load = (face, rotation) => {
+    if (!art || !art[face]) return null;
+    const tex = new THREE.TextureLoader().load(art[face]);
+    tex.colorSpace = THREE.SRGBColorSpace;
+    tex.center.set(0.5, 0.5);
+    tex.rotation = rotation;
+    return tex;
+  };
+  const mat = (face, colour, rotation) => {
+    const map = load(face, rotation);
+    return new THREE.MeshLambertMaterial(map ? { map } : { color: colour });
+  };
+  const pages = mat('pages', 0xf2ecd8, 0);
+  return [mat('spine', 0x1f3f6a, Math.PI / 2), pages, pages, pages,
+    mat('front', 0x1f4f8a, 0), mat('back', 0x7a1f1f, 0)];
+}
+
+/** A body's mesh and how to pose it: `update(session)` writes its world vertices. */
+function makeBody(session, art) {
+  const v = session.surfaceVertices();
+  if (v.length === 0) {
+    // The book: a box whose rest vertices (its corners, one set per face) the cage carries.
+    const size = session.cageSize();
+    const geometry = new THREE.BoxGeometry(size[0], size[1], size[2]);
+    const position = geometry.getAttribute('position');
+    const rest = Float64Array.from(position.array);
+    const mesh = new THREE.Mesh(geometry, bookMaterials(art));
+    const update = (s) => {
+      position.array.set(s.carry(rest));
+      position.needsUpdate = true;
+      geometry.computeVertexNormals();
+    };
+    return { mesh, update };
+  }
+  const tri = session.surfaceTriangles();
+  const col = session.surfaceColours();
+  const pos = new Float32Array(tri.length * 3);
+  const rgb = new Float32Array(tri.length * 3);
+  for (let f = 0; f < tri.length / 3; ++f) {
+    for (let k = 0; k < 3; ++k) rgb.set([col[3 * f], col[3 * f + 1], col[3 * f + 2]], 9 * f + 3 * k);
+  }
+  const geometry = new THREE.BufferGeometry();
+  const position = new THREE.BufferAttribute(pos, 3);
+  geometry.setAttribute('position', position);
+  geometry.setAttribute('color', new THREE.BufferAttribute(rgb, 3));
+  const mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({ vertexColors: true }));
+  const update = (s) => {
+    const w = s.surfaceWorld();
+    for (let i = 0; i < tri.length; ++i) {
+      const vi = tri[i];
+      pos[3 * i] = w[3 * vi]; pos[3 * i + 1] = w[3 * vi + 1]; pos[3 * i + 2] = w[3 * vi + 2];
+    }
+    position.needsUpdate = true;
+    geometry.computeVertexNormals();
+    geometry.computeBoundingSphere();
+  };
+  return { mesh, update };
+}
+
+/** The radius of the sphere a body sweeps about its centre of mass: its farthest surface
+ * vertex, or cage corner where it has no surface (the book). */
+function sweepRadius(session) {
+  const c = session.bodyCorners();
+  let r = 0;
+  for (let p = 0; p < 8; ++p) r = Math.max(r, Math.hypot(c[3 * p], c[3 * p + 1], c[3 * p + 2]));
+  const v = session.surfaceVertices();
+  let rv = 0;
+  for (let i = 0; i < v.length; i += 3) rv = Math.max(rv, Math.hypot(v[i], v[i + 1], v[i + 2]));
+  return rv > 0 ? Math.min(r, rv) : r;
+}
+
+export class View3D {
+  constructor(canvas, art) {
+    this.art = art;
+    this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(1);
+    this.scene = new THREE.Scene();
+    this.scene.background = new THREE.Color(0x20242c);
+    this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 200);
+    this.camera.position.set(4.2, 2.6, 6.3);
+    this.controls = new OrbitControls(this.camera, canvas);  // mouse, wheel and touch
+    this.scene.add(new THREE.AmbientLight(0xffffff, 0.45));
+    const sun = new THREE.DirectionalLight(0xffffff, 1.1);
+    sun.position.set(4, 8, 6);
+    this.scene.add(sun);
+    this.bodies = new THREE.Group();
+    this.scene.add(this.bodies);
+    this.drawn = [];  // {mesh, update} per run
+    this.arrowL = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 3, 0xffcc00, 0.4, 0.2);
+    this.scene.add(this.arrowL);
+    this.axisArrows = [0xff4040, 0x40d040, 0x4080ff].map((c) => {
+      const a = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 2, c, 0.25, 0.12);
+      this.scene.add(a);
+      return a;
+    });
+    this.layout = { radius: 1, step: new THREE.Vector3(), count: 0 };
+    this.framedFor = '';
+  }
+
+  /** New bodies for new runs (their sessions). */
+  setRuns(runs, showL) {
+    for (const d of this.drawn) { this.bodies.remove(d.mesh); d.mesh.geometry.dispose(); }
+    this.drawn = runs.map((r) => makeBody(r.session, this.art));
+    for (const d of this.drawn) this.bodies.add(d.mesh);
+    this.frame(runs, showL, false);
+  }
+
+  /** Where run k of n is drawn: side by side (one above the other in a view taller than
+   * wide), a sweep diameter and a gap apart, the set centred on the orbit target. */
+  offsetOf(k) {
+    return this.layout.step.clone().multiplyScalar(k - (this.layout.count - 1) / 2);
+  }
+
+  /** Lays the runs out and, when the layout changed (or `force`: the view was resized), puts
+   * the camera on its current line of sight at the nearest distance that shows every run's
+   * whole sweep sphere (and the L arrow) inside the view with a margin. */
+  frame(runs, showL, force) {
+    if (!runs.length) return;
+    const camera = this.camera;
+    const r = Math.max(...runs.map((run) => sweepRadius(run.session)));
+    const tall = camera.aspect < 1;
+    const step = runs.length > 1 ? 2.2 * r : 0;
+    const key = `${runs.length} ${r} ${tall}`;
+    this.layout = { radius: r, step: new THREE.Vector3(tall ? 0 : step, tall ? -step : 0, 0), count: runs.length };
+    this.arrowL.setLength(1.5 * r, 0.2 * r, 0.1 * r);
+    this.axisArrows.forEach((a) => a.setLength(1.1 * r, 0.12 * r, 0.06 * r));
+    if (!force && key === this.framedFor) return;
+    this.framedFor = key;
+    // Each sweep sphere (centre c, radius ρ) must lie within 80% of the half-angles of the
+    // view: atan(|x|/z) + asin(ρ/|c|) ≤ α, horizontally and vertically, in the camera's frame.
+    const rho = r * (showL ? 1.2 : 1);
+    const tanV = 0.8 * Math.tan(THREE.MathUtils.degToRad(camera.fov / 2));
+    const halfV = Math.atan(tanV), halfH = Math.atan(tanV * camera.aspect);
+    const target = this.controls.target.clone();
+    const dir = camera.position.clone().sub(target).normalize();
+    const fits = (d) => {
+      camera.position.copy(target).addScaledVector(dir, d);
+      camera.lookAt(target);
+      camera.updateMatrixWorld();
+      return runs.every((_, k) => {
+        const p = this.offsetOf(k).add(target).applyMatrix4(camera.matrixWorldInverse);
+        const z = -p.z, dist = p.length();
+        if (z <= 0 || dist <= rho) return false;
+        const a = Math.asin(rho / dist);
+        return Math.atan(Math.abs(p.x) / z) + a <= halfH && Math.atan(Math.abs(p.y) / z) + a <= halfV;
+      });
+    };
+    let lo = rho, hi = 200 * rho;
+    for (let i = 0; i < 60; ++i) { const mid = 0.5 * (lo + hi); if (fits(mid)) hi = mid; else lo = mid; }
+    fits(hi);
+    camera.near = Math.max(1e-3, 0.05 * hi);
+    camera.far = 20 * hi;
+    camera.updateProjectionMatrix();
+    this.controls.update();
+  }
+
+  /** Moves each body to its run's state, the L arrow and body axes to the first run's. */
+  pose(runs, showL, showAxes) {
+    runs.forEach((r, k) => {
+      const d = this.drawn[k];
+      d.mesh.visible = r.session.finite();
+      if (!d.mesh.visible) return;
+      d.update(r.session);
+      d.mesh.position.copy(this.offsetOf(k));
+    });
+    if (!runs.length) return;
+    const first = runs[0].session;
+    const finite = first.finite();
+    const L = new THREE.Vector3(...first.diagnostics().L);
+    this.arrowL.visible = showL && finite && L.length() > 0;
+    if (L.length() > 0) this.arrowL.setDirection(L.normalize());
+    this.arrowL.position.copy(this.offsetOf(0));
+    const R = finite ? first.orientation() : null;  // body → world, column-major
+    this.axisArrows.forEach((a, i) => {
+      a.visible = showAxes && finite;
+      if (R) a.setDirection(new THREE.Vector3(R[3 * i], R[3 * i + 1], R[3 * i + 2]));
+      a.position.copy(this.arrowL.position);
+    });
+  }
+
+  resize(runs, showL) {
+    const v = this.renderer.domElement;
+    const w = v.clientWidth, h = v.clientHeight;
+    this.renderer.setSize(w, h, false);
+    this.camera.aspect = w / Math.max(1, h);
+    this.camera.updateProjectionMatrix();
+    this.frame(runs, showL, true);
+  }
+
+  render() {
+    this.controls.update();
+    this.renderer.render(this.scene, this.camera);
+  }
+}
