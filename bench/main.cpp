@@ -83,10 +83,26 @@ void add_options(CLI::App& cmd, BenchOptions& options) {
                  "Steps of each explorer timing (ns per step of the page's methods, natively)")
       ->check(CLI::Range(1L, 100000000L))
       ->capture_default_str();
+  cmd.add_option("--preset-frames", options.preset_frames,
+                 "Frames of each clip the presets section encodes")
+      ->check(CLI::Range(2, 100000))
+      ->capture_default_str();
+  cmd.add_option("--preset-crfs", options.preset_crfs, "CRFs the presets section tries (18 always)")
+      ->check(CLI::Range(0, 51))
+      ->capture_default_str();
+  cmd.add_option("--preset-scenes", options.preset_scenes, "Clips the presets section encodes")
+      ->capture_default_str();
+  cmd.add_option("--gif-scene", options.gif_scene, "Scene of the GIF memory runs")
+      ->capture_default_str();
+  cmd.add_option("--gif-frames", options.gif_frames,
+                 "Frames of the GIF memory runs (0: the scene's own)")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
   cmd.add_option("--only", options.only,
-                 "Run only these sections: pipeline, peer, resolution, physics, memory, explorer "
-                 "(explorer runs only when named)")
-      ->check(CLI::IsMember({"pipeline", "peer", "resolution", "physics", "memory", "explorer"}))
+                 "Run only these sections: pipeline, peer, resolution, physics, memory, "
+                 "gif-memory, explorer, presets (explorer and presets run only when named)")
+      ->check(CLI::IsMember({"pipeline", "peer", "resolution", "physics", "memory", "gif-memory",
+                             "explorer", "presets"}))
       ->take_all();
 }
 
@@ -96,6 +112,9 @@ int bench_command(const BenchOptions& options) {
   // Checked up front: a bad scene fails with its own message (the memory section's child
   // renders could only report that they failed), and an oversized run before minutes of work.
   (void)scene::parse_scene(options.scene_path, {});
+  if (!options.only.empty() && wanted(options, "presets"))
+    for (const auto& path : options.preset_scenes) (void)scene::parse_scene(path, {});
+  if (wanted(options, "gif-memory")) (void)scene::parse_scene(options.gif_scene, {});
   if (wanted(options, "pipeline")) check_pipeline_memory(options);
   if (!options.out_dir.empty()) std::filesystem::create_directories(options.out_dir);
   ScratchDirectory scratch;
@@ -105,12 +124,15 @@ int bench_command(const BenchOptions& options) {
   // Memory first: a forked child starts with the bench's resident pages counted in its
   // peak (until it execs), so it must fork while the bench is still small.
   if (wanted(options, "memory")) bench_memory(context);
+  if (wanted(options, "gif-memory")) bench_gif_memory(context);
   if (wanted(options, "pipeline")) bench_pipeline(context);
   if (wanted(options, "peer")) bench_peer(context);
   if (wanted(options, "resolution")) bench_resolution(context);
   if (wanted(options, "physics")) bench_physics(context);
   // Not part of a plain bench: bench/explorer_bench.py (make bench-explorer) asks for it.
   if (!options.only.empty() && wanted(options, "explorer")) bench_explorer(context);
+  // Minutes of encoding: only when named (docs/performance.md, "The default x264 preset").
+  if (!options.only.empty() && wanted(options, "presets")) bench_presets(context);
   if (!options.out_dir.empty()) {
     const auto csv = std::filesystem::path(options.out_dir) / "bench.csv";
     report.write_csv(csv);

@@ -88,7 +88,40 @@ double own_rss_mib() {
          (1024.0 * 1024.0);
 }
 
+/// `bookspin render GIF_SCENE --no-png --format FORMAT [--frames N] -o SCRATCH/gif-FORMAT`.
+std::vector<std::string> format_arguments(const BenchContext& c, const std::string& format) {
+  std::vector<std::string> args = {bookspin_executable().string(),
+                                   "render",
+                                   c.options.gif_scene,
+                                   "--no-png",
+                                   "--format",
+                                   format,
+                                   "-o",
+                                   (c.scratch / ("gif-memory-" + format)).string()};
+  if (c.options.gif_frames > 0)
+    args.insert(args.end(), {"--frames", std::to_string(c.options.gif_frames)});
+  if (c.options.jobs > 0) args.insert(args.end(), {"--jobs", std::to_string(c.options.jobs)});
+  return args;
+}
+
 }  // namespace
+
+// The scene as `make figures` renders it (its own size and length unless --gif-frames): the
+// GIF sink's memory must not grow with the clip, so it is measured on a long one.
+void bench_gif_memory(const BenchContext& c) {
+  const std::string what =
+      std::filesystem::path(c.options.gif_scene).stem().string() +
+      (c.options.gif_frames > 0 ? ", " + std::to_string(c.options.gif_frames) + " frames"
+                                : ", the scene's frames");
+  const std::string note = "child process, wait4 ru_maxrss; --no-png";
+  const double mp4 = peak_rss_kib(format_arguments(c, "mp4")) / 1024.0;
+  c.report->add({"memory", "peak RSS, render --format mp4, " + what, mp4, "MiB", note});
+  const double gif = peak_rss_kib(format_arguments(c, "gif")) / 1024.0;
+  c.report->add({"memory", "peak RSS, render --format gif, " + what, gif, "MiB", note});
+  c.report->add({"memory", "peak RSS gif / mp4", gif / mp4, "x", "the two rows above"});
+  std::filesystem::remove_all(c.scratch / "gif-memory-mp4");
+  std::filesystem::remove_all(c.scratch / "gif-memory-gif");
+}
 
 void bench_memory(const BenchContext& c) {
   const int short_frames = 100, long_frames = c.options.memory_frames;

@@ -2,7 +2,6 @@
 // resolution scaling. Renders go through clip::render_clip, in this process, so they
 // measure exactly what `bookspin render` does.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "analysis/frame_source.hpp"
+#include "bench/clip_runs.hpp"
 #include "bench/clock.hpp"
 #include "bench/sections.hpp"
 #include "bench/zlib_png.hpp"
@@ -28,38 +28,14 @@ namespace bookspin::bench {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-/// One timed run: wall time and the CPU time of every thread of this process meanwhile.
-struct Timing {
-  double wall = 1e300, cpu = 0.0;
-  /// Keeps `run` when its wall time is shorter: the best run, and that run's CPU time.
-  void keep_best(const Timing& run) {
-    if (run.wall < wall) *this = run;
-  }
-};
-
-class Stopwatch {
- public:
-  Timing elapsed() const {
-    return {std::chrono::duration<double>(Clock::now() - wall_start_).count(),
-            process_cpu_seconds() - cpu_start_};
-  }
-
- private:
-  Clock::time_point wall_start_ = Clock::now();
-  double cpu_start_ = process_cpu_seconds();
-};
-
 std::vector<std::string> size_overrides(int width, int height) {
   return {"render.width=" + std::to_string(width), "render.height=" + std::to_string(height)};
 }
 
-/// What `render SCENE --set render.width=W --set render.height=H --frames N [--no-png] -o
-/// SCRATCH/NAME` asks of the pipeline, plus `extra` overrides.
+}  // namespace
+
 clip::ClipRequest clip_request(const BenchContext& c, const std::string& name, int width,
-                               int height, int frames, bool png,
-                               std::vector<std::string> extra = {}) {
+                               int height, int frames, bool png, std::vector<std::string> extra) {
   std::vector<std::string> overrides = size_overrides(width, height);
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   products::ClipJob job;
@@ -71,7 +47,6 @@ clip::ClipRequest clip_request(const BenchContext& c, const std::string& name, i
   return products::clip_request(job);
 }
 
-/// Wall and CPU time of a whole clip (start-up, every frame, finishing the files).
 Timing timed_render(const clip::ClipRequest& request) {
   const Stopwatch stopwatch;
   clip::render_clip(request);
@@ -80,6 +55,8 @@ Timing timed_render(const clip::ClipRequest& request) {
   std::filesystem::remove_all(request.paths.mp4.parent_path());
   return timing;
 }
+
+namespace {
 
 scene::Scene pipeline_scene(const BenchContext& c, int width, int height, int frames) {
   scene::Scene scene = scene::parse_scene(c.options.scene_path, size_overrides(width, height));

@@ -17,8 +17,15 @@ struct BenchOptions {
   int rounds = 3;                ///< pipeline runs alternated this many times; best of each kept
   int jobs = 0;                  ///< as render --jobs
   long explorer_steps = 100000;  ///< steps of each explorer timing
-  std::vector<std::string>
-      only;  ///< sections to run (pipeline, peer, resolution, physics, memory, explorer)
+  int preset_frames = 90;        ///< frames of each clip the presets section encodes
+  std::vector<int> preset_crfs = {14, 15, 16, 17, 18};  ///< CRFs of every preset (18 always)
+  std::vector<std::string> preset_scenes = {
+      "scenes/fig05-particle-unstable-x.toml", "scenes/fig09-matrix-unstable-x.toml",
+      "scenes/t-handle-dzhanibekov.toml", "scenes/compare-methods-x.toml"};
+  std::string gif_scene = "scenes/fig05-particle-unstable-x.toml";  ///< the GIF memory runs
+  int gif_frames = 0;             ///< frames of the GIF memory runs; 0: the scene's own
+  std::vector<std::string> only;  ///< sections to run (pipeline, peer, resolution, physics,
+                                  ///< memory, gif-memory, explorer, presets)
 };
 
 /// The machine cannot hold what the bench was asked to measure (exit status 1).
@@ -52,5 +59,13 @@ void bench_explorer(const BenchContext& context);
 void bench_peer(const BenchContext& context);
 /// Peak resident memory of a short and a long render, each in a child process.
 void bench_memory(const BenchContext& context);
+/// Peak resident memory of `render --format gif` and `--format mp4` of `gif_scene`, each in a
+/// child process, and their ratio.
+void bench_gif_memory(const BenchContext& context);
+/// Every x264 preset from ultrafast to medium × `preset_crfs` on `preset_frames` frames of
+/// each of `preset_scenes`: SSIM, PSNR, size and encoding CPU time against medium/CRF 18
+/// (OUT/presets.csv), the pair the default rule picks, and `frames` frames of the bench's
+/// scene rendered with the old default and the pick.
+void bench_presets(const BenchContext& context);
 
 }  // namespace bookspin::bench

@@ -3,8 +3,10 @@
 # (OUT_DIR/<scene>-plot.png) and writes the gallery OUT_DIR/index.html. A scene whose
 # outputs are up to date (OUT_DIR/<scene>/manifest.json) is not rendered again. While it
 # runs, one line per finished scene ("[3/14] fig05-…: rendered, 41 s"); at the end one table
-# (scene, frames, status, seconds), the total time and the disk space under OUT_DIR. Each
-# render's own output goes to OUT_DIR/.logs/<scene>.log. Stops with a non-zero status if any
+# (scene, frames, seconds, CPU seconds of the render with all its threads, its peak resident
+# memory, status), the total time, CPU time and the disk space under OUT_DIR; the same table
+# in OUT_DIR/.logs/summary.tsv. Each render's own output goes to OUT_DIR/.logs/<scene>.log,
+# its CPU time and peak memory (GNU time) to OUT_DIR/.logs/<scene>.time. Stops with a non-zero status if any
 # scene fails. GALLERY_EXTRA (environment): more scene files the gallery lists (the sweeps,
 # run before).
 #
@@ -39,15 +41,20 @@ diverged() {
   echo "$status${tile:+ ($tile)}"
 }
 
-# One scene: render it, classify the result from the render's output and exit status, write
-# OUT/.logs/<stem>.status ("frames<TAB>status<TAB>seconds") and print the progress line.
+# One scene: render it under GNU time (user + system CPU seconds, peak resident KiB), classify
+# the result from the render's output and exit status, write OUT/.logs/<stem>.status
+# ("frames<TAB>status<TAB>seconds<TAB>cpu<TAB>peak MiB") and print the progress line.
 render_one() {
-  local scene=$1 total=$2 stem log t0 rc=0 status frames seconds name done
+  local scene=$1 total=$2 stem log t0 rc=0 status frames seconds name done cpu peak
   stem=$(basename "$scene" .toml)
   log="$logs/$stem.log"
   t0=$(date +%s.%N)
-  "$bookspin" render "$scene" -o "$out" --jobs "$jobs" > "$log" 2>&1 || rc=$?
+  /usr/bin/time -f '%U %S %M' -o "$logs/$stem.time" \
+    "$bookspin" render "$scene" -o "$out" --jobs "$jobs" > "$log" 2>&1 || rc=$?
   seconds=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
+  # The last line: GNU time puts "Command exited with non-zero status" before it on a failure.
+  read -r cpu peak < <(tail -n 1 "$logs/$stem.time" |
+                       awk '{ printf "%.1f %.0f\n", $1 + $2, $3 / 1024 }')
   frames=$(sed -n 's/^rendered: .* (\([0-9]*\) frames)$/\1/p' "$log" | tail -n 1)
   if [ "$rc" -ne 0 ]; then
     reason=$(grep -E 'bookspin: (error|internal error):' "$log" | tail -n 1 |
@@ -65,7 +72,8 @@ render_one() {
   else
     status="rendered"
   fi
-  printf '%s\t%s\t%s\n' "${frames:--}" "$status" "$seconds" > "$logs/$stem.status"
+  printf '%s\t%s\t%s\t%s\t%s\n' "${frames:--}" "$status" "$seconds" "${cpu:--}" "${peak:--}" \
+    > "$logs/$stem.status"
   {
     flock 9
     done=$(( $(cat "$logs/done") + 1 ))
@@ -91,15 +99,20 @@ printf '%s\n' "${ok[@]}" |
 # shellcheck disable=SC2086  # GALLERY_EXTRA: more scene files for the page (sweeps), split
 "$bookspin" gallery "$out" "${ok[@]}" ${GALLERY_EXTRA:-} || { echo "render-all: the gallery failed"; failed=1; }
 
-printf '\n%-36s %7s %8s  %s\n' scene frames seconds status
+printf '\n%-36s %7s %8s %8s %8s  %s\n' scene frames seconds cpu-s peak-MiB status
+printf 'scene\tframes\tseconds\tcpu_seconds\tpeak_rss_mib\tstatus\n' > "$logs/summary.tsv"
+cpu_total=0
 for scene in "$@"; do
   stem=$(basename "$scene" .toml)
-  IFS=$'\t' read -r frames status seconds < "$logs/$stem.status"
-  printf '%-36s %7s %8s  %s\n' "$stem" "$frames" "$seconds" "$status"
+  IFS=$'\t' read -r frames status seconds cpu peak < "$logs/$stem.status"
+  printf '%-36s %7s %8s %8s %8s  %s\n' "$stem" "$frames" "$seconds" "$cpu" "$peak" "$status"
+  printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$stem" "$frames" "$seconds" "$cpu" "$peak" "$status" \
+    >> "$logs/summary.tsv"
+  [ "$cpu" = - ] || cpu_total=$(awk -v a="$cpu_total" -v b="$cpu" 'BEGIN { printf "%.1f", a + b }')
   case $status in failed*) failed=1 ;; esac
 done
 total=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.0f", b - a }')
-printf 'render-all: %d scenes in %d min %d s; %s under %s/\n' "$#" $(( total / 60 )) \
-  $(( total % 60 )) "$(du -sh "$out" | cut -f 1)" "$out"
+printf 'render-all: %d scenes in %d min %d s, %s CPU-s of renders; %s under %s/\n' "$#" \
+  $(( total / 60 )) $(( total % 60 )) "$cpu_total" "$(du -sh "$out" | cut -f 1)" "$out"
 echo "render-all: clips in $out/, gallery $out/index.html, logs in $logs/"
 exit "$failed"

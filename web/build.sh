@@ -6,12 +6,26 @@
 #   3. both inlined into the page by web/make_explorer.py.
 # `bookspin explore SCENE… -o OUT` (found beside the shell: BUILD_DIR/bookspin) then writes the
 # scenes into it: OUT/explorer.html.
+# Nothing to do, nothing done: BUILD_DIR/web/inputs.sha256 holds the hash of every input (these
+# scripts, web/bindings.cpp, web/src/, package.json and its lockfile, src/physics/), written
+# after a build; while it matches and the shell is there, the script rebuilds and rewrites
+# nothing.
 # Usage: web/build.sh BUILD_DIR
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 [ $# -eq 1 ] || { echo "usage: web/build.sh BUILD_DIR" >&2; exit 2; }
 mkdir -p "$1"; build="$(cd "$1" && pwd)"
 work="$build/web"
+root="$(dirname "$here")"
+stamp="$work/inputs.sha256"
+inputs=$(cd "$root" && find web/build.sh web/build-wasm.sh web/make_explorer.py web/bindings.cpp \
+           web/src web/package.json web/package-lock.json src/physics -type f -print0 |
+         sort -z | xargs -0 sha256sum | sha256sum | cut -d ' ' -f 1)
+if [ -f "$work/explorer-shell.html" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$inputs" ]; then
+  echo "web: up to date: $work/explorer-shell.html"
+  exit 0
+fi
+rm -f "$stamp"
 "$here/build-wasm.sh" "$work"
 if [ ! -x "$here/node_modules/.bin/esbuild" ] || [ "$here/package-lock.json" -nt "$here/node_modules/.package-lock.json" ]; then
   (cd "$here" && npm ci --no-audit --no-fund --loglevel=error)
@@ -20,3 +34,4 @@ fi
   --target=es2020 --log-level=warning --outfile="$work/explorer.bundle.js"
 python3 "$here/make_explorer.py" "$here/src/index.html" "$work/bookspin_physics.js" \
   "$work/explorer.bundle.js" "$work/explorer-shell.html"
+echo "$inputs" > "$stamp"

@@ -27,9 +27,13 @@ int explore_command(const ExploreOptions& options) {
       std::cerr << "bookspin: warning: " << warning << '\n';
     request.scenes.push_back(std::move(scene));
   }
-  const products::ExplorerPageResult result = products::write_explorer_page(request);
-  std::cout << "explorer: " << result.path.string() << " (" << request.scenes.size() << " scenes, "
-            << result.bytes << " bytes)" << std::endl;
+  const products::ExplorerOutcome done = products::make_explorer_page(request);
+  if (done.outcome == products::Outcome::up_to_date) {
+    std::cout << "explorer: up to date: " << done.result.path.string() << std::endl;
+    return kExitOk;
+  }
+  std::cout << "explorer: " << done.result.path.string() << " (" << request.scenes.size()
+            << " scenes, " << done.result.bytes << " bytes)" << std::endl;
   return kExitOk;
 }
 

@@ -8,11 +8,20 @@ extern "C" {
 #include <libavutil/opt.h>
 }
 
+#include <fcntl.h>
+#include <libdeflate.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "output/atomic_output.hpp"
 #include "output/libav_support.hpp"
@@ -240,70 +249,192 @@ std::int64_t gif_frame_count(const GifSettings& s, std::int64_t source_frames) {
   return (source_frames + step - 1) / step;
 }
 
+namespace {
+
+/// The scaled frames between the GIF's two passes: each deflated (libdeflate, level 1) and
+/// appended to a file of no name in the GIF's folder (O_TMPFILE, or a name removed at once),
+/// so the clip's length costs disk, not memory, and the file goes with the process.
+class FrameSpill {
+ public:
+  FrameSpill(const std::filesystem::path& gif, std::size_t frame_bytes)
+      : gif_(gif), frame_bytes_(frame_bytes) {
+    const std::filesystem::path dir = gif.has_parent_path() ? gif.parent_path() : ".";
+    fd_ = open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+    if (fd_ < 0) {  // a file system without O_TMPFILE: a name, removed once open
+      std::string name = ".";
+      name += gif.filename().string();
+      name += ".frames-";
+      name += std::to_string(getpid());
+      const std::filesystem::path named = dir / name;
+      fd_ = open(named.c_str(), O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC, 0600);
+      if (fd_ >= 0) unlink(named.c_str());
+    }
+    if (fd_ < 0) throw_output_error("cannot create the GIF's frame store for", gif, errno);
+    compressor_ = libdeflate_alloc_compressor(1);
+    decompressor_ = libdeflate_alloc_decompressor();
+    if (compressor_ == nullptr || decompressor_ == nullptr)
+      throw EncoderError("out of memory allocating the GIF's frame store");
+    buffer_.resize(libdeflate_deflate_compress_bound(compressor_, frame_bytes_));
+  }
+  ~FrameSpill() {
+    libdeflate_free_compressor(compressor_);
+    libdeflate_free_decompressor(decompressor_);
+    if (fd_ >= 0) close(fd_);
+  }
+  FrameSpill(const FrameSpill&) = delete;
+  FrameSpill& operator=(const FrameSpill&) = delete;
+
+  /// Stores `frame_bytes` bytes at `data` after the frames stored so far.
+  void append(const std::uint8_t* data) {
+    const std::uint64_t size = libdeflate_deflate_compress(compressor_, data, frame_bytes_,
+                                                           buffer_.data(), buffer_.size());
+    if (size == 0) throw EncoderError("libdeflate could not compress a GIF frame");
+    write_all(&size, sizeof size);
+    write_all(buffer_.data(), size);
+  }
+  /// The next stored frame into `data` (frame_bytes), from the first on; false after the last.
+  bool read_next(std::uint8_t* data) {
+    std::uint64_t size = 0;
+    if (read_offset_ >= write_offset_) return false;
+    read_all(&size, sizeof size);
+    if (size > buffer_.size()) throw std::logic_error("GIF frame store: a record is too long");
+    read_all(buffer_.data(), size);
+    std::size_t out = 0;
+    if (libdeflate_deflate_decompress(decompressor_, buffer_.data(), size, data, frame_bytes_,
+                                      &out) != LIBDEFLATE_SUCCESS ||
+        out != frame_bytes_) {
+      throw std::logic_error("GIF frame store: a frame does not decompress to its size");
+    }
+    return true;
+  }
+
+ private:
+  void write_all(const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const std::uint8_t*>(data);
+    while (bytes > 0) {
+      const ssize_t n = pwrite(fd_, p, bytes, write_offset_);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) throw_output_error("cannot store the frames of", gif_, n < 0 ? errno : ENOSPC);
+      p += n;
+      bytes -= static_cast<std::size_t>(n);
+      write_offset_ += n;
+    }
+  }
+  void read_all(void* data, std::size_t bytes) {
+    auto* p = static_cast<std::uint8_t*>(data);
+    while (bytes > 0) {
+      const ssize_t n = pread(fd_, p, bytes, read_offset_);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) throw_output_error("cannot read back the frames of", gif_, n < 0 ? errno : EIO);
+      p += n;
+      bytes -= static_cast<std::size_t>(n);
+      read_offset_ += n;
+    }
+  }
+
+  std::filesystem::path gif_;
+  std::size_t frame_bytes_;
+  int fd_ = -1;
+  off_t write_offset_ = 0, read_offset_ = 0;
+  libdeflate_compressor* compressor_ = nullptr;
+  libdeflate_decompressor* decompressor_ = nullptr;
+  std::vector<std::uint8_t> buffer_;
+};
+
+/// A buffer source named `name` for frames of `width`×`height` in `format` at `time_base`.
+AVFilterContext* add_source(AVFilterGraph* graph, const char* name, int width, int height,
+                            AVPixelFormat format, AVRational time_base) {
+  const std::string args = "video_size=" + size_text(width, height) +
+                           ":pix_fmt=" + std::to_string(format) +
+                           ":time_base=" + std::to_string(time_base.num) + "/" +
+                           std::to_string(time_base.den) + ":pixel_aspect=1/1";
+  AVFilterContext* source = nullptr;
+  const int rc = avfilter_graph_create_filter(&source, avfilter_get_by_name("buffer"), name,
+                                              args.c_str(), nullptr, graph);
+  if (rc < 0) throw EncoderError("GIF filter source: " + libav::error_text(rc));
+  return source;
+}
+
+/// A graph from `sources` (named as in `description`) through `description` into one sink.
+FilterGraphPtr make_graph(const std::vector<std::pair<const char*, AVFilterContext**>>& sources,
+                          const std::string& description,
+                          const std::function<void(AVFilterGraph*)>& add_sources,
+                          AVFilterContext** sink) {
+  FilterGraphPtr graph(avfilter_graph_alloc());
+  if (!graph) throw EncoderError("out of memory allocating the GIF filter graph");
+  graph->nb_threads = 1;
+  add_sources(graph.get());
+  int rc = avfilter_graph_create_filter(sink, avfilter_get_by_name("buffersink"), "out", nullptr,
+                                        nullptr, graph.get());
+  if (rc < 0) throw EncoderError("GIF filter sink: " + libav::error_text(rc));
+  AVFilterInOut* outputs = nullptr;
+  AVFilterInOut* inputs = avfilter_inout_alloc();
+  for (auto it = sources.rbegin(); it != sources.rend(); ++it) {
+    AVFilterInOut* out = avfilter_inout_alloc();
+    if (out == nullptr) break;
+    out->name = av_strdup(it->first);
+    out->filter_ctx = *it->second;
+    out->next = outputs;
+    outputs = out;
+  }
+  if (outputs == nullptr || inputs == nullptr) {
+    avfilter_inout_free(&outputs);
+    avfilter_inout_free(&inputs);
+    throw EncoderError("out of memory building the GIF filter graph");
+  }
+  inputs->name = av_strdup("out");
+  inputs->filter_ctx = *sink;
+  libav::LogCapture capture;
+  rc = avfilter_graph_parse_ptr(graph.get(), description.c_str(), &inputs, &outputs, nullptr);
+  if (rc >= 0) rc = avfilter_graph_config(graph.get(), nullptr);
+  avfilter_inout_free(&outputs);
+  avfilter_inout_free(&inputs);
+  if (rc < 0) {
+    throw EncoderError("GIF palette filters (palettegen, paletteuse): " + capture.text() + " (" +
+                       libav::error_text(rc) + ")");
+  }
+  return graph;
+}
+
+/// Hands `frame` (null: end of stream) to `source` and runs the graph on it at once, so that
+/// no frame waits in the graph's queues.
+void push(AVFilterContext* source, AVFrame* frame) {
+  const int rc = av_buffersrc_add_frame_flags(source, frame,
+                                              AV_BUFFERSRC_FLAG_KEEP_REF | AV_BUFFERSRC_FLAG_PUSH);
+  if (rc < 0) throw EncoderError("GIF palette filters rejected a frame: " + libav::error_text(rc));
+}
+
+}  // namespace
+
+// Two passes, so that memory does not grow with the clip: while frames come, each kept one is
+// scaled, counted into the palette (palettegen over every frame) and stored deflated on disk;
+// at the end the palette is applied to the stored frames one at a time (paletteuse) and each
+// is encoded.
 struct GifEncoder::Impl {
   GifSettings settings;
   int step = 1;
   int height = 0;
   std::int64_t seen = 0;  ///< frames handed to add_frame
   StreamFile file;
-  FilterGraphPtr graph;
-  AVFilterContext* source = nullptr;  // owned by `graph`
-  AVFilterContext* sink = nullptr;
+  libav::SwsPtr scaler;
+  libav::FramePtr scaled;  ///< the last kept frame, scaled, RGB32 as palettegen takes it
+  FilterGraphPtr palette_graph;
+  AVFilterContext* palette_source = nullptr;  // owned by palette_graph
+  AVFilterContext* palette_sink = nullptr;
+  std::optional<FrameSpill> spill;
   libav::FramePtr filtered;
   Impl(std::filesystem::path path, const GifSettings& s)
       : settings(s), file("GIF", std::move(path)) {}
 
-  void build_graph();
-  /// Encodes every frame the graph has ready; at the end (`eof`) until it has none left.
-  void pull(bool eof);
+  AVRational time_base() const { return AVRational{step, settings.fps}; }
+  std::size_t frame_bytes() const { return static_cast<std::size_t>(settings.width) * height * 4; }
+  /// Applies `palette` to every stored frame and encodes them in order.
+  void apply_palette(AVFrame* palette);
+  /// Encodes every frame `sink` has ready; at the end (`eof`) until it has none left.
+  void pull(AVFilterContext* sink, bool eof);
 };
 
-void GifEncoder::Impl::build_graph() {
-  graph.reset(avfilter_graph_alloc());
-  if (!graph) throw EncoderError("out of memory allocating the GIF filter graph");
-  graph->nb_threads = 1;
-  const std::string args =
-      "video_size=" + size_text(settings.source_width, settings.source_height) +
-      ":pix_fmt=" + std::to_string(AV_PIX_FMT_RGBA) + ":time_base=" + std::to_string(step) + "/" +
-      std::to_string(settings.fps) + ":pixel_aspect=1/1";
-  int rc = avfilter_graph_create_filter(&source, avfilter_get_by_name("buffer"), "in", args.c_str(),
-                                        nullptr, graph.get());
-  if (rc < 0) throw EncoderError("GIF filter source: " + libav::error_text(rc));
-  rc = avfilter_graph_create_filter(&sink, avfilter_get_by_name("buffersink"), "out", nullptr,
-                                    nullptr, graph.get());
-  if (rc < 0) throw EncoderError("GIF filter sink: " + libav::error_text(rc));
-  // One palette for the whole clip (palettegen over every frame), applied with a small
-  // ordered dither: ordered patterns stay put from frame to frame, so LZW and the frame
-  // differences (diff_mode=rectangle) keep the file small.
-  const std::string description = "scale=" + std::to_string(settings.width) + ":" +
-                                  std::to_string(height) +
-                                  ":flags=lanczos,split[a][b];[a]palettegen=stats_mode=full[p];"
-                                  "[b][p]paletteuse=dither=bayer:bayer_scale=4:diff_mode=rectangle";
-  AVFilterInOut* outputs = avfilter_inout_alloc();
-  AVFilterInOut* inputs = avfilter_inout_alloc();
-  if (outputs == nullptr || inputs == nullptr) {
-    avfilter_inout_free(&outputs);
-    avfilter_inout_free(&inputs);
-    throw EncoderError("out of memory building the GIF filter graph");
-  }
-  outputs->name = av_strdup("in");
-  outputs->filter_ctx = source;
-  inputs->name = av_strdup("out");
-  inputs->filter_ctx = sink;
-  {
-    libav::LogCapture capture;
-    rc = avfilter_graph_parse_ptr(graph.get(), description.c_str(), &inputs, &outputs, nullptr);
-    if (rc >= 0) rc = avfilter_graph_config(graph.get(), nullptr);
-    avfilter_inout_free(&outputs);
-    avfilter_inout_free(&inputs);
-    if (rc < 0) {
-      throw EncoderError("GIF palette filters (palettegen, paletteuse): " + capture.text() + " (" +
-                         libav::error_text(rc) + ")");
-    }
-  }
-}
-
-void GifEncoder::Impl::pull(bool eof) {
+void GifEncoder::Impl::pull(AVFilterContext* sink, bool eof) {
   for (;;) {
     av_frame_unref(filtered.get());
     const int rc = av_buffersink_get_frame(sink, filtered.get());
@@ -314,6 +445,39 @@ void GifEncoder::Impl::pull(bool eof) {
     filtered->pict_type = AV_PICTURE_TYPE_NONE;
     file.encode(filtered.get());
   }
+}
+
+void GifEncoder::Impl::apply_palette(AVFrame* palette) {
+  AVFilterContext* frames_source = nullptr;
+  AVFilterContext* palette_in = nullptr;
+  AVFilterContext* sink = nullptr;
+  // A small ordered dither: ordered patterns stay put from frame to frame, so LZW and the
+  // frame differences (diff_mode=rectangle) keep the file small.
+  const FilterGraphPtr graph = make_graph(
+      {{"frames", &frames_source}, {"palette", &palette_in}},
+      "[frames][palette]paletteuse=dither=bayer:bayer_scale=4:diff_mode=rectangle",
+      [&](AVFilterGraph* g) {
+        frames_source =
+            add_source(g, "frames", settings.width, height, AV_PIX_FMT_RGB32, time_base());
+        palette_in = add_source(g, "palette", palette->width, palette->height,
+                                static_cast<AVPixelFormat>(palette->format), time_base());
+      },
+      &sink);
+  palette->pts = 0;
+  push(palette_in, palette);
+  push(palette_in, nullptr);  // one palette for the whole clip
+  for (std::int64_t index = 0;; ++index) {
+    const int rc = av_frame_make_writable(scaled.get());
+    if (rc < 0) throw EncoderError("frame buffer: " + libav::error_text(rc));
+    if (scaled->linesize[0] != settings.width * 4)
+      throw std::logic_error("GIF frame rows are padded");
+    if (!spill->read_next(scaled->data[0])) break;
+    scaled->pts = index;
+    push(frames_source, scaled.get());
+    pull(sink, false);
+  }
+  push(frames_source, nullptr);
+  pull(sink, true);
 }
 
 GifEncoder::GifEncoder(std::filesystem::path path, const GifSettings& s) {
@@ -336,9 +500,20 @@ GifEncoder::GifEncoder(std::filesystem::path path, const GifSettings& s) {
   c->width = s.width;
   c->height = g.height;
   c->pix_fmt = AV_PIX_FMT_PAL8;
-  c->time_base = AVRational{g.step, s.fps};
+  c->time_base = g.time_base();
   c->framerate = AVRational{s.fps, g.step};
-  g.build_graph();
+  g.palette_graph = make_graph(
+      {{"in", &g.palette_source}}, "palettegen=stats_mode=full",
+      [&](AVFilterGraph* graph) {
+        g.palette_source =
+            add_source(graph, "in", s.width, g.height, AV_PIX_FMT_RGB32, g.time_base());
+      },
+      &g.palette_sink);
+  g.scaler.reset(sws_getContext(s.source_width, s.source_height, AV_PIX_FMT_RGBA, s.width, g.height,
+                                AV_PIX_FMT_RGB32, SWS_LANCZOS, nullptr, nullptr, nullptr));
+  if (!g.scaler) throw EncoderError("swscale cannot scale the GIF's frames");
+  g.scaled = make_frame(AV_PIX_FMT_RGB32, s.width, g.height);
+  g.spill.emplace(g.file.output.final_path(), g.frame_bytes());
   g.file.start(nullptr);
   g.filtered.reset(av_frame_alloc());
   if (!g.filtered) throw EncoderError("out of memory allocating a frame");
@@ -352,22 +527,28 @@ void GifEncoder::add_frame(const RgbaImage& image) {
   check_frame(image, g.settings.source_width, g.settings.source_height, "GIF source");
   const std::int64_t index = g.seen++;
   if (index % g.step != 0) return;
-  // The graph keeps a reference to each frame until the palette is known: a fresh buffer each.
-  libav::FramePtr frame = make_frame(AV_PIX_FMT_RGBA, image.width, image.height);
-  av_image_copy_plane(frame->data[0], frame->linesize[0], image.pixels.data(), image.width * 4,
-                      image.width * 4, image.height);
-  frame->pts = index / g.step;
-  const int rc = av_buffersrc_add_frame_flags(g.source, frame.get(), 0);
-  if (rc < 0) throw EncoderError("GIF palette filters rejected a frame: " + libav::error_text(rc));
-  g.pull(false);
+  const int rc = av_frame_make_writable(g.scaled.get());
+  if (rc < 0) throw EncoderError("frame buffer: " + libav::error_text(rc));
+  if (g.scaled->linesize[0] != g.settings.width * 4)
+    throw std::logic_error("GIF frame rows are padded");
+  const std::uint8_t* source[4] = {image.pixels.data(), nullptr, nullptr, nullptr};
+  const int stride[4] = {image.width * 4, 0, 0, 0};
+  sws_scale(g.scaler.get(), source, stride, 0, image.height, g.scaled->data, g.scaled->linesize);
+  g.scaled->pts = index / g.step;
+  push(g.palette_source, g.scaled.get());
+  g.spill->append(g.scaled->data[0]);
 }
 
 void GifEncoder::finish() {
   Impl& g = *impl_;
   if (!g.file.closed && g.seen > 0) {
-    const int rc = av_buffersrc_add_frame_flags(g.source, nullptr, 0);  // end of stream
-    if (rc < 0) throw EncoderError("GIF palette filters: " + libav::error_text(rc));
-    g.pull(true);
+    push(g.palette_source, nullptr);  // end of stream: palettegen gives its palette
+    libav::FramePtr palette(av_frame_alloc());
+    if (!palette) throw EncoderError("out of memory allocating a frame");
+    const int rc = av_buffersink_get_frame(g.palette_sink, palette.get());
+    if (rc < 0) throw EncoderError("GIF palette (palettegen): " + libav::error_text(rc));
+    g.palette_graph.reset();  // its counts are no longer needed
+    g.apply_palette(palette.get());
   }
   g.file.finish();
 }

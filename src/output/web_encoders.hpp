@@ -61,8 +61,11 @@ class WebmEncoder {
   std::unique_ptr<Impl> impl_;
 };
 
-/// See GifSettings. The palette needs every frame, so the scaled frames (width × height × 4
-/// bytes each) are held until finish(): about 0.9 MB per kept frame at 640×360.
+/// See GifSettings. The palette needs every frame, so the GIF is made in two passes: each kept
+/// frame is scaled, counted into the palette and stored deflated in a file of no name beside
+/// `path` (disk, not memory: what the encoder holds does not grow with the clip); finish()
+/// applies the palette to the stored frames one at a time. A frame store that cannot be
+/// created or written → OutputError naming `path`.
 class GifEncoder {
  public:
   GifEncoder(std::filesystem::path path, const GifSettings& settings);

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
 #include "output/atomic_output.hpp"
@@ -12,6 +13,7 @@
 #include "output/finite_number.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
+#include "output/sha256.hpp"
 #include "physics/presets.hpp"
 #include "render/face_images.hpp"
 #include "scene/canonical.hpp"
@@ -154,6 +156,30 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   output::write_text_file(result.path, page);
   result.bytes = page.size();
   return result;
+}
+
+std::filesystem::path explorer_manifest_path(const std::filesystem::path& out_dir) {
+  return out_dir / "explorer-manifest.json";
+}
+
+ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
+  std::string scenes;
+  for (const scene::Scene& scene : request.scenes)
+    scenes += cache::manifest_head("explore", "", scene);
+  const std::string head =
+      "  \"manifest\": 1,\n  \"command\": \"explore\",\n  \"shell\": \"sha256:" +
+      output::sha256_file(request.shell).value_or("unreadable") +
+      "\",\n  \"scenes\": \"sha256:" + output::sha256_text(scenes) + "\",\n";
+  ExplorerOutcome done;
+  done.result.path = explorer_page_path(request.out_dir);
+  done.outcome = cache::run_cached(
+      {explorer_manifest_path(request.out_dir), head, request.out_dir, false, false,
+       [&]() -> std::optional<cache::JobOutputs> {
+         done.result = write_explorer_page(request);
+         return cache::JobOutputs{
+             "", {done.result.path.lexically_relative(request.out_dir).generic_string()}};
+       }});
+  return done;
 }
 
 }  // namespace bookspin::products

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "products/outcome.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -56,5 +57,20 @@ struct ExplorerPageResult {
 /// covers are missing, OutputError when the page cannot be written (atomic: an earlier page stays
 /// until the new one is complete).
 ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request);
+
+/// OUT/explorer-manifest.json.
+std::filesystem::path explorer_manifest_path(const std::filesystem::path& out_dir);
+
+struct ExplorerOutcome {
+  Outcome outcome = Outcome::made;
+  ExplorerPageResult result;  ///< the page (its size only when made)
+};
+
+/// write_explorer_page(request) unless the page's manifest says it is up to date: its head
+/// holds the shell's SHA-256 (the web sources, lockfile and physics built into it) and every
+/// scene's manifest head (cache::manifest_head: the program, the resolved scene and its input
+/// files), so an unchanged set of inputs leaves the page's bytes and modification time alone.
+/// Same errors as write_explorer_page.
+ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request);
 
 }  // namespace bookspin::products

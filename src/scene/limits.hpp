@@ -54,7 +54,7 @@ inline constexpr std::array kLimits{
     Limit{"render.fov_y", 1.0, 170.0, false, 30.0},
     Limit{"render.camera_distance", 0.0, 1e4, false, 0.0},
     Limit{"render.camera_direction", -1e12, 1e12, false, std::nullopt},
-    Limit{"render.crf", 0, 51, false, 18.0, true},
+    Limit{"render.crf", 0, 51, false, 16.0, true},
     Limit{"render.png_compression", 0, 9, false, 1.0, true},
     Limit{"render.anisotropy", 0, 16, false, 0.0, true},
     Limit{"render.msaa", 1, 8, false, 4.0, true},

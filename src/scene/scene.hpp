@@ -27,8 +27,9 @@ struct RenderOptions {
   /// Face textures (PNG paths, resolved against the scene's folder); empty: generated.
   std::string texture_front, texture_back, texture_spine, texture_pages;
   std::string codec = "libx264";
-  int crf = 18;
-  std::string preset = "medium";
+  /// faster at CRF 16: medium at 18's picture for less encoding (docs/performance.md).
+  int crf = 16;
+  std::string preset = "faster";
   int png_compression =
       1;  ///< deflate level 0–9 for frame PNGs (output::write_png maps it onto libdeflate's)
   /// Anisotropic texture filtering cap, 1 … 16 (1 = trilinear only); 0 = automatic: 4× on a

@@ -2,10 +2,14 @@
 // the numbers depend on the machine; only that they are measured and written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <sstream>
 #include <thread>
+#include <vector>
 
 #include "support/cli_runner.hpp"
 
@@ -184,6 +188,88 @@ TEST(Bench, ExplorerSectionTimesEveryMethodOfThePage) {
     EXPECT_GT(csv_value(run.csv, method, "explorer"), 0.0) << method << "\n" << run.csv;
   }
   EXPECT_NE(run.csv.find("50 steps of dt 0.016667, best of 1, wall time"), std::string::npos)
+      << run.csv;
+}
+
+/// The rows of a CSV without quoted fields, each split at its commas (the header first).
+std::vector<std::vector<std::string>> csv_rows(const std::string& csv) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(csv);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> fields;
+    std::istringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) fields.push_back(cell);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+// Every preset from ultrafast to medium at CRF 17 and 18 on a few frames of one clip: one row
+// each in presets.csv, medium/CRF 18 the reference, and the pick in bench.csv the pair this
+// test's own reading of the rule picks from those rows.
+TEST(Bench, PresetsSectionWritesEveryPresetAndCrfAndPicksByTheRule) {
+  const BenchRun run =
+      run_bench("bench-presets",
+                "--only presets --preset-frames 4 --preset-crfs 17 --frames 3 --rounds 1 "
+                "--preset-scenes " +
+                    scene_path("fig09-matrix-unstable-x"));
+  ASSERT_EQ(run.result.status, 0) << run.result.output;
+  const auto rows = csv_rows(read_file(run.dir / "presets.csv"));
+  ASSERT_EQ(rows.size(), 1u + 6 * 2) << read_file(run.dir / "presets.csv");
+  ASSERT_EQ(rows[0][4], "preset");
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(rows[0].begin(), rows[0].end(), name) -
+                                    rows[0].begin());
+  };
+  const std::size_t preset = column("preset"), crf = column("crf"), ssim = column("ssim"),
+                    psnr = column("psnr_db"), bytes = column("bytes"), cpu = column("encode_cpu_s");
+  ASSERT_LT(cpu, rows[0].size());
+  std::map<std::pair<std::string, int>, std::vector<double>> by_pair;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& r = rows[i];
+    EXPECT_EQ(r[0], "fig09-matrix-unstable-x");
+    EXPECT_EQ(r[1], "4");
+    EXPECT_EQ(r[2] + "x" + r[3], "1280x720");
+    by_pair[{r[preset], std::stoi(r[crf])}] = {std::stod(r[ssim]), std::stod(r[psnr]),
+                                               std::stod(r[bytes]), std::stod(r[cpu])};
+    EXPECT_GT(std::stod(r[ssim]), 0.9) << r[preset];
+    EXPECT_LE(std::stod(r[ssim]), 1.0) << r[preset];
+    EXPECT_GT(std::stod(r[psnr]), 30.0) << r[preset];
+  }
+  ASSERT_EQ(by_pair.size(), 12u);
+  const std::vector<double>& ref = by_pair.at({"medium", 18});
+  // ultrafast turns off CABAC and most of the search: a larger file at the same CRF.
+  EXPECT_GT(by_pair.at({"ultrafast", 18})[2], ref[2]);
+  // The rule, read from the rows: the least CPU among pairs within 0.0005 SSIM, 0.1 dB PSNR
+  // and 1.25x the size of medium/CRF 18.
+  std::pair<std::string, int> pick{"medium", 18};
+  for (const auto& [pair, v] : by_pair) {
+    if (v[0] >= ref[0] - 0.0005 && v[1] >= ref[1] - 0.1 && v[2] <= 1.25 * ref[2] &&
+        v[3] < by_pair.at(pick)[3])
+      pick = pair;
+  }
+  const std::string picked =
+      "the rule's pick: " + pick.first + " crf " + std::to_string(pick.second);
+  EXPECT_NE(run.csv.find(picked), std::string::npos) << picked << "\n" << run.csv;
+  EXPECT_GT(csv_value(run.csv, "pick / medium crf 18, wall time", "presets"), 0.0) << run.csv;
+  EXPECT_GT(csv_value(run.csv, "medium crf 18, render --no-png 3 frames 1280x720", "presets"), 0.0)
+      << run.csv;
+}
+
+TEST(Bench, GifMemorySectionMeasuresTheGifAgainstTheMp4) {
+  const BenchRun run =
+      run_bench("bench-gif-memory", "--only gif-memory --gif-frames 20 --gif-scene " +
+                                        scene_path("fig09-matrix-unstable-x"));
+  ASSERT_EQ(run.result.status, 0) << run.result.output;
+  const double mp4 =
+      csv_value(run.csv, "peak RSS, render --format mp4, fig09-matrix-unstable-x", "memory");
+  const double gif =
+      csv_value(run.csv, "peak RSS, render --format gif, fig09-matrix-unstable-x", "memory");
+  EXPECT_GT(mp4, 10.0) << run.csv;
+  EXPECT_GT(gif, 10.0) << run.csv;
+  EXPECT_NEAR(csv_value(run.csv, "peak RSS gif / mp4", "memory"), gif / mp4, 1e-3 * gif / mp4)
       << run.csv;
 }
 

@@ -109,6 +109,43 @@ TEST(ExploreCommand, WritesEveryScenesSettingsAndTheMeshBodyIntoTheShell) {
         << face;
 }
 
+// Nothing to do, nothing done: run again with the same shell and scenes, the page keeps its
+// bytes and its modification time; a comment is no change; a changed scene or shell rewrites it.
+TEST(ExploreCommand, UnchangedInputsLeaveThePageAloneAndAChangeRewritesIt) {
+  const fs::path dir = fresh_dir("explore/cached");
+  const fs::path shell = write_shell(dir);
+  const fs::path scene = dir / "s.toml";
+  std::ofstream(scene) << "[scene]\ntitle = \"first title\"\n";
+  const std::string args =
+      "explore " + scene.string() + " --shell " + shell.string() + " -o " + (dir / "out").string();
+  const fs::path page = dir / "out" / "explorer.html";
+  ASSERT_EQ(run_bookspin(args).status, 0);
+  const std::string bytes = read_file(page);
+  const auto written = fs::last_write_time(page);
+  const auto same = [&](const std::string& why) {
+    const CliResult r = run_bookspin(args);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("up to date"), std::string::npos) << why << "\n" << r.output;
+    EXPECT_EQ(read_file(page), bytes) << why;
+    EXPECT_EQ(fs::last_write_time(page), written) << why;
+  };
+  same("nothing changed");
+  std::ofstream(scene, std::ios::app) << "# a comment only\n";
+  same("a comment");
+
+  std::ofstream(scene) << "[scene]\ntitle = \"second title\"\n";
+  CliResult r = run_bookspin(args);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("up to date"), std::string::npos) << r.output;
+  EXPECT_NE(read_file(page).find("second title"), std::string::npos);
+
+  write_shell(dir, std::string(kShell) + "<!-- another shell -->\n");
+  r = run_bookspin(args);
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("up to date"), std::string::npos) << r.output;
+  EXPECT_NE(read_file(page).find("another shell"), std::string::npos);
+}
+
 TEST(ExploreCommand, TextThatWouldCloseTheScriptIsEscaped) {
   const fs::path dir = fresh_dir("explore/escape");
   const fs::path scene = dir / "sneaky.toml";

@@ -64,7 +64,7 @@ void expect_valid_clip(const fs::path& path, int frames) {
 TEST(Mp4Encoder, RoundTripKeepsFormatRateFrameCountAndColours) {
   ScratchDir dir;
   EncoderSettings settings = small_settings();
-  settings.preset = "medium";  // the default, as the app will use it
+  settings.preset = "faster";  // the default, as the app will use it
   {
     Mp4Encoder encoder(dir / "clip.mp4", settings);
     EXPECT_EQ(encoder.codec_name(), "libx264");
