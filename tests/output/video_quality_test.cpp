@@ -10,7 +10,7 @@
 
 #include "mp4_probe.hpp"
 #include "output/mp4_encoder.hpp"
-#include "scratch_dir.hpp"
+#include "support/scratch.hpp"
 #include "test_images.hpp"
 
 namespace bookspin::output {
@@ -68,7 +68,7 @@ TEST(VideoQuality, MismatchedOrTinyFramesAreRejected) {
 // An H.264 clip decoded back: every frame, in order, close to what was encoded and to what
 // the tests' own decoder makes of it.
 TEST(VideoQuality, DecodeVideoGivesEveryFrameOfAClipInOrder) {
-  testing::ScratchDir dir;
+  test::ScratchDir dir;
   constexpr int kWidth = 128, kHeight = 96, kFrames = 20;
   {
     EncoderSettings settings;
