@@ -19,6 +19,7 @@
 #include "output/mp4_encoder.hpp"
 #include "output/png_writer.hpp"
 #include "output/video_quality.hpp"
+#include "products/clip.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::bench {
@@ -45,22 +46,19 @@ struct Encoding {
 
 /// The first `frames` frames of `scene_path` rendered once with PNG frames, read back.
 RawClip render_raw(const BenchContext& c, const std::string& scene_path, int frames) {
-  clip::ClipRequest request;
-  request.scene = scene::parse_scene(scene_path, {});
-  request.scene.frames = std::min(frames, request.scene.frames);
-  request.out_dir = c.scratch / "presets-raw";
-  request.write_png = true;
-  request.png_compression = 1;
-  request.jobs = c.options.jobs;
+  products::ClipJob job;
+  job.scene = scene::parse_scene(scene_path, {});
+  job.scene.frames = std::min(frames, job.scene.frames);
+  job.out_dir = c.scratch / "presets-raw";
+  job.write_png = true;
+  job.png_compression = 1;
+  job.jobs = c.options.jobs;
+  const clip::ClipRequest request = products::clip_request(job);
   clip::render_clip(request);
-  RawClip raw{request.scene.name, request.scene.render.fps, {}};
-  const auto dir = clip::clip_paths(request.out_dir, request.scene.name).frames_dir;
-  for (int i = 0; i < request.scene.frames; ++i) {
-    char file[32];
-    std::snprintf(file, sizeof file, "frame_%05d.png", i);
-    raw.frames.push_back(output::read_png(dir / file));
-  }
-  std::filesystem::remove_all(request.out_dir);
+  RawClip raw{job.scene.name, job.scene.render.fps, {}};
+  for (int i = 0; i < job.scene.frames; ++i)
+    raw.frames.push_back(output::read_png(request.paths.frames_dir / output::frame_file_name(i)));
+  std::filesystem::remove_all(job.out_dir);
   return raw;
 }
 
