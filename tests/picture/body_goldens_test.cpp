@@ -38,10 +38,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BodyGoldens,
 // (one simulator per tile), at frame 45 (t = 4.5): just after the first flip, with the three
 // T-handles turned over together.
 TEST(BodyGoldens, LatticeComparisonFlipsWithTheRigidBodyAndTheExactMotion) {
-  const RgbaImage frame = rendered_frame(
-      "compare-t-handle-models", 45,
-      "--set render.width=512 --set render.height=288 --set render.preset='\"ultrafast\"'",
-      "body-compare");
+  const RgbaImage frame =
+      rendered_frame("compare-t-handle-models", 45, 512, 288, {}, "body-compare");
   EXPECT_TRUE(matches_golden("compare-t-handle-models-f0045", frame));
 }
 

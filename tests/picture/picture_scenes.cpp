@@ -96,8 +96,12 @@ std::string test_name(std::string name) {
   return name;
 }
 
-RgbaImage rendered_frame(const std::string& scene, int index, const std::string& args,
-                         const std::string& folder) {
+RgbaImage rendered_frame(const std::string& scene, int index, int width, int height,
+                         const std::vector<std::string>& sets, const std::string& folder) {
+  std::string args = "--set render.width=" + std::to_string(width) +
+                     " --set render.height=" + std::to_string(height) +
+                     " --set render.preset='\"ultrafast\"'";
+  for (const std::string& set : sets) args += " --set " + set;
   const auto dir = fresh_output_dir(folder);
   const std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR +
                               "/scenes/" + scene + ".toml -o " + dir.string() + " --frames " +

@@ -39,11 +39,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SphereGoldens,
 // frame 299 the particle model's trail has turned back towards +x while the rigid and exact
 // ones (in lockstep, drawn narrower on top of each other) have not.
 TEST(SphereGoldens, ComparisonDrawsOneTrailPerTile) {
-  const RgbaImage frame = rendered_frame(
-      "compare-methods-x", 299,
-      "--set render.width=640 --set render.height=360 --set render.preset='\"ultrafast\"'"
-      " --set render.sphere=true",
-      "sphere-compare");
+  const RgbaImage frame =
+      rendered_frame("compare-methods-x", 299, 640, 360, {"render.sphere=true"}, "sphere-compare");
   EXPECT_TRUE(matches_golden("sphere-compare-methods-x-f0299", frame));
 }
 
