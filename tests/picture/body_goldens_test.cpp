@@ -6,7 +6,6 @@
 
 #include <cstdlib>
 
-#include "clip/frame.hpp"
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
@@ -23,11 +22,7 @@ class BodyGoldens : public ::testing::TestWithParam<std::string> {};
 TEST_P(BodyGoldens, FirstMiddleAndLastFramesMatch) {
   const scene::Scene scene = figure_scene(GetParam(), kBodySize);
   ASSERT_NE(scene.body.shape, physics::BodyShape::book);
-  render::Renderer& renderer = renderer_for(scene);
-  for (const int index : pinned_frames(scene.frames)) {
-    const std::string name = golden_name(scene.name, index);
-    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
-  }
+  expect_pinned_frames_match(scene);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BodyGoldens,

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "charts/decoration.hpp"
+#include "clip/frame.hpp"
 #include "clip/render_settings.hpp"
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
@@ -94,6 +95,14 @@ std::string test_name(std::string name) {
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   }
   return name;
+}
+
+void expect_pinned_frames_match(const scene::Scene& scene, const std::string& prefix) {
+  render::Renderer& renderer = renderer_for(scene);
+  for (const int index : pinned_frames(scene.frames)) {
+    const std::string name = prefix + golden_name(scene.name, index);
+    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
+  }
 }
 
 RgbaImage rendered_frame(const std::string& scene, int index, int width, int height,

@@ -37,6 +37,10 @@ std::vector<int> pinned_frames(int frames);
 /// "fig05-particle-unstable-x-f0375": the golden's name for frame `index` of `scene`.
 std::string golden_name(const std::string& scene, int index);
 
+/// Expects each of pinned_frames(scene.frames), drawn by clip::render_still with
+/// renderer_for(scene), to match the golden `prefix` + golden_name(scene.name, index).
+void expect_pinned_frames_match(const scene::Scene& scene, const std::string& prefix = "");
+
 /// `name` with every character GoogleTest does not allow in a test name replaced by '_'.
 std::string test_name(std::string name);
 
