@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
 
 namespace bookspin::overlay {
@@ -46,14 +47,32 @@ Eigen::Vector2d project(const View& v, const Eigen::Vector3d& p) {
   return {v.cx + v.scale * p.dot(v.right), v.cy - v.scale * p.dot(v.up)};
 }
 
-void path_of(cairo_t* cr, const View& v, const std::vector<Eigen::Vector3d>& points) {
+/// Adds the polyline through `points` (pixels) to the current path.
+void polyline(cairo_t* cr, const std::vector<Eigen::Vector2d>& points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector2d s = project(v, points[i]);
     if (i == 0)
-      cairo_move_to(cr, s.x(), s.y());
+      cairo_move_to(cr, points[i].x(), points[i].y());
     else
-      cairo_line_to(cr, s.x(), s.y());
+      cairo_line_to(cr, points[i].x(), points[i].y());
   }
+}
+
+void path_of(cairo_t* cr, const View& v, const std::vector<Eigen::Vector3d>& points) {
+  std::vector<Eigen::Vector2d> screen;
+  screen.reserve(points.size());
+  for (const Eigen::Vector3d& p : points) screen.push_back(project(v, p));
+  polyline(cr, screen);
+}
+
+/// Closes the current path, fills it with `fill` at opacity `alpha` and strokes its outline
+/// in `line`, `width` pixels wide.
+void fill_and_outline(cairo_t* cr, const Rgb& fill, double alpha, const Rgb& line, double width) {
+  cairo_close_path(cr);
+  cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, alpha);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgb(cr, line.r, line.g, line.b);
+  cairo_set_line_width(cr, width);
+  cairo_stroke(cr);
 }
 
 /// Strokes a curve on the ellipsoid: segments whose surface normal faces the viewer solid,
@@ -130,12 +149,7 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
   }
   cairo_new_path(cr);
   path_of(cr, v, rim);
-  cairo_close_path(cr);
-  cairo_set_source_rgba(cr, 0.72, 0.80, 0.92, 0.55);
-  cairo_fill_preserve(cr);
-  cairo_set_source_rgb(cr, 0.35, 0.45, 0.60);
-  cairo_set_line_width(cr, 0.9 * unit);
-  cairo_stroke(cr);
+  fill_and_outline(cr, {0.72, 0.80, 0.92}, 0.55, {0.35, 0.45, 0.60}, 0.9 * unit);
 
   // The herpolhode so far, on the plane.
   if (spec.herpolhode.size() >= 2) {
@@ -155,22 +169,15 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(M);
   const Eigen::Matrix2d root =
       eig.eigenvectors() * eig.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal();
-  cairo_new_path(cr);
+  std::vector<Eigen::Vector2d> outline;
   for (int i = 0; i <= 120; ++i) {
     const double a = 2 * kPi * i / 120;
     const Eigen::Vector2d s = root * Eigen::Vector2d(std::cos(a), std::sin(a));
-    const double x = v.cx + v.scale * s.x(), y = v.cy - v.scale * s.y();
-    if (i == 0)
-      cairo_move_to(cr, x, y);
-    else
-      cairo_line_to(cr, x, y);
+    outline.emplace_back(v.cx + v.scale * s.x(), v.cy - v.scale * s.y());
   }
-  cairo_close_path(cr);
-  cairo_set_source_rgba(cr, 0.96, 0.78, 0.52, 0.55);
-  cairo_fill_preserve(cr);
-  cairo_set_source_rgb(cr, 0.55, 0.35, 0.15);
-  cairo_set_line_width(cr, 1.1 * unit);
-  cairo_stroke(cr);
+  cairo_new_path(cr);
+  polyline(cr, outline);
+  fill_and_outline(cr, {0.96, 0.78, 0.52}, 0.55, {0.55, 0.35, 0.15}, 1.1 * unit);
 
   // Its three principal sections (fixed in the body: they show it turning).
   const Eigen::Matrix3d inverse_axes = spec.semi_axes.inverse();

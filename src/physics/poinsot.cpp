@@ -100,16 +100,8 @@ std::vector<Eigen::Vector3d> polhode_on_ellipsoid(const Eigen::Vector3d& moments
   const double db = std::abs(inv[b] - inv[pole]), dd = std::abs(inv[d] - inv[pole]);
   if (gap <= 1e-12 * inv[pole] || db <= 1e-12 * inv[pole] || dd <= 1e-12 * inv[pole])
     return {to_ellipsoid(u0)};  // a steady spin (or a symmetric body's circle: not drawn)
-  const double rb = std::sqrt(gap / db), rd = std::sqrt(gap / dd);
   const double sign = u0[pole] < 0 ? -1.0 : 1.0;
-  const auto curve = [&](double phi) {
-    Eigen::Vector3d u;
-    u[b] = rb * std::cos(phi);
-    u[d] = rd * std::sin(phi);
-    u[pole] = sign * std::sqrt(std::max(0.0, 1.0 - u[b] * u[b] - u[d] * u[d]));
-    return u;
-  };
-  const std::vector<Eigen::Vector3d> sphere = sample_closed_curve(curve, max_step);
+  const std::vector<Eigen::Vector3d> sphere = polhode_about(moments, pole, b, d, c, sign, max_step);
   std::vector<Eigen::Vector3d> out;
   out.reserve(sphere.size());
   for (const auto& u : sphere) out.push_back(to_ellipsoid(u));

@@ -43,6 +43,22 @@ double energy_ratio(const Eigen::Vector3d& moments, const Eigen::Vector3d& u) {
   return u.cwiseAbs2().cwiseQuotient(moments).sum();
 }
 
+std::vector<Eigen::Vector3d> polhode_about(const Eigen::Vector3d& moments, int pole, int b, int d,
+                                           double c, double sign, double max_step) {
+  const Eigen::Vector3d inv = moments.cwiseInverse();
+  const double gap = std::abs(c - inv[pole]);
+  const double rb = std::sqrt(gap / std::abs(inv[b] - inv[pole]));
+  const double rd = std::sqrt(gap / std::abs(inv[d] - inv[pole]));
+  const auto curve = [&](double phi) {
+    Eigen::Vector3d u;
+    u[b] = rb * std::cos(phi);
+    u[d] = rd * std::sin(phi);
+    u[pole] = sign * std::sqrt(std::max(0.0, 1.0 - u[b] * u[b] - u[d] * u[d]));
+    return u;
+  };
+  return sample_closed_curve(curve, max_step);
+}
+
 std::vector<Polhode> polhode_family(const Eigen::Vector3d& moments, int levels, double max_step) {
   if (!moments.allFinite() || (moments.array() <= 0).any())
     throw std::invalid_argument("polhode_family: principal moments must be finite and > 0");
@@ -61,19 +77,8 @@ std::vector<Polhode> polhode_family(const Eigen::Vector3d& moments, int levels, 
     for (int j = 0; j < levels; ++j) {
       const double f = (j + 0.5) / levels;
       const double c = c_sep + f * (inv[pole] - c_sep);
-      const double gap = std::abs(c - inv[pole]);
-      const double rb = std::sqrt(gap / std::abs(inv[b] - inv[pole]));
-      const double rd = std::sqrt(gap / std::abs(inv[d] - inv[pole]));
-      for (const double sign : {1.0, -1.0}) {
-        const auto curve = [&](double phi) {
-          Eigen::Vector3d u;
-          u[b] = rb * std::cos(phi);
-          u[d] = rd * std::sin(phi);
-          u[pole] = sign * std::sqrt(std::max(0.0, 1.0 - u[b] * u[b] - u[d] * u[d]));
-          return u;
-        };
-        curves.push_back({sample_closed_curve(curve, max_step), c, false, pole});
-      }
+      for (const double sign : {1.0, -1.0})
+        curves.push_back({polhode_about(moments, pole, b, d, c, sign, max_step), c, false, pole});
     }
   };
   family(lo, mid, hi, inv[mid]);

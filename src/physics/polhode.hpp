@@ -56,4 +56,13 @@ Eigen::Vector3d momentum_direction_body(const Diagnostics& d);
 std::vector<Eigen::Vector3d> sample_closed_curve(
     const std::function<Eigen::Vector3d(double)>& curve, double max_step);
 
+/// The polhode of 2E/|L|² = `c` about the `sign` (±1) end of body axis `pole`, for principal
+/// moments `moments` (body frame, mass·length², all > 0; `b` and `d` the other two axes): with
+/// u_pole² = 1 − u_b² − u_d², Σ u_i²/I_i = c is the ellipse u_b = r_b cos φ, u_d = r_d sin φ,
+/// r_i = √(|c − 1/I_pole| / |1/I_i − 1/I_pole|) (docs/physics.md §15). Unit 3-vectors, body
+/// frame, sampled by sample_closed_curve at most `max_step` apart. The caller keeps `c`
+/// between 1/I_pole and the separatrix's 1/I_mid and 1/I_b, 1/I_d away from 1/I_pole.
+std::vector<Eigen::Vector3d> polhode_about(const Eigen::Vector3d& moments, int pole, int b, int d,
+                                           double c, double sign, double max_step);
+
 }  // namespace bookspin::physics

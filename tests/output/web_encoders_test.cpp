@@ -12,6 +12,7 @@ extern "C" {
 #include <cmath>
 #include <fstream>
 
+#include "decoded_clip.hpp"
 #include "mp4_probe.hpp"
 #include "output/atomic_output.hpp"
 #include "support/scratch.hpp"
@@ -24,21 +25,6 @@ using bookspin::test::ScratchDir;
 using testing::moving_square_frame;
 
 constexpr int kWidth = 128, kHeight = 96, kFps = 24, kFrames = 24;
-
-// Mean absolute difference per channel (R, G, B) of `decoded` against `expected` over a
-// rectangle of `decoded`; `scale` maps decoded pixels to expected ones (2: half size).
-double mean_rgb_error(const RgbaImage& decoded, const RgbaImage& expected, int scale, int x0,
-                      int y0, int x1, int y1) {
-  double sum = 0;
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
-      for (int c = 0; c < 3; ++c) {
-        sum += std::abs(decoded.row(y)[4 * x + c] - expected.row(y * scale)[4 * x * scale + c]);
-      }
-    }
-  }
-  return sum / (3.0 * (x1 - x0) * (y1 - y0));
-}
 
 TEST(WebmEncoder, RoundTripIsVp9AtSizeRateAndFrameCountWithTheColours) {
   ScratchDir dir;
@@ -53,24 +39,10 @@ TEST(WebmEncoder, RoundTripIsVp9AtSizeRateAndFrameCountWithTheColours) {
   const testing::Mp4Probe probe = testing::probe_mp4(dir / "clip.webm");
   EXPECT_EQ(probe.format_name, "matroska,webm");
   EXPECT_EQ(probe.video_streams, 1);
-  EXPECT_EQ(probe.codec, "vp9");
-  EXPECT_EQ(probe.pix_fmt, "yuv420p");
-  EXPECT_EQ(probe.color_space, "bt709");
-  EXPECT_EQ(probe.width, kWidth);
-  EXPECT_EQ(probe.height, kHeight);
-  EXPECT_EQ(probe.r_frame_rate_num, kFps);
-  EXPECT_EQ(probe.r_frame_rate_den, 1);
+  testing::expect_video_stream(probe, "vp9", kWidth, kHeight, kFps);
   ASSERT_EQ(static_cast<int>(probe.frames.size()), kFrames);
-  for (int i = 0; i < kFrames; ++i) {
-    const RgbaImage original = moving_square_frame(kWidth, kHeight, i);
-    const testing::Square sq = testing::moving_square(i);
-    EXPECT_LT(mean_rgb_error(probe.frames[i], original, 1, sq.x + 2, sq.y + 2, sq.x + sq.size - 2,
-                             sq.y + sq.size - 2),
-              8.0)
-        << "square of frame " << i;
-    EXPECT_LT(mean_rgb_error(probe.frames[i], original, 1, 0, 0, kWidth, kHeight), 6.0)
-        << "frame " << i;
-  }
+  for (int i = 0; i < kFrames; ++i)
+    testing::expect_moving_square(probe.frames[i], kWidth, kHeight, i, 1, 8.0, 6.0);
 }
 
 TEST(GifEncoder, KeepsEveryStepthFrameScaledWithOnePaletteAndTheColours) {
@@ -95,16 +67,8 @@ TEST(GifEncoder, KeepsEveryStepthFrameScaledWithOnePaletteAndTheColours) {
   ASSERT_EQ(static_cast<int>(probe.frames.size()), 12);
   // GIF frame j is source frame 2j at half size: the square is where that frame had it, in
   // its red (palette and dither keep it within a few levels), and the gradient follows.
-  for (int j = 0; j < 12; ++j) {
-    const RgbaImage original = moving_square_frame(kWidth, kHeight, 2 * j);
-    const testing::Square sq = testing::moving_square(2 * j);
-    EXPECT_LT(mean_rgb_error(probe.frames[j], original, 2, sq.x / 2 + 2, sq.y / 2 + 2,
-                             (sq.x + sq.size) / 2 - 2, (sq.y + sq.size) / 2 - 2),
-              10.0)
-        << "square of GIF frame " << j;
-    EXPECT_LT(mean_rgb_error(probe.frames[j], original, 2, 0, 0, 64, 48), 10.0)
-        << "GIF frame " << j;
-  }
+  for (int j = 0; j < 12; ++j)
+    testing::expect_moving_square(probe.frames[j], kWidth, kHeight, 2 * j, 2, 10.0, 10.0);
 }
 
 /// Each video packet's duration in seconds as the container stores it (a GIF: each frame's
@@ -142,9 +106,9 @@ TEST(GifEncoder, DecodedGifHasTheClipsFrameCountAndDuration) {
   ASSERT_EQ(static_cast<int>(probe.frames.size()), 21);
   for (int j = 0; j < 21; ++j) {
     const testing::Square sq = testing::moving_square(3 * j);
-    EXPECT_LT(mean_rgb_error(probe.frames[j], moving_square_frame(kWidth, kHeight, 3 * j), 2,
-                             sq.x / 2 + 2, sq.y / 2 + 2, (sq.x + sq.size) / 2 - 2,
-                             (sq.y + sq.size) / 2 - 2),
+    EXPECT_LT(testing::mean_rgb_error(probe.frames[j], moving_square_frame(kWidth, kHeight, 3 * j),
+                                      2, sq.x / 2 + 2, sq.y / 2 + 2, (sq.x + sq.size) / 2 - 2,
+                                      (sq.y + sq.size) / 2 - 2),
               10.0)
         << "GIF frame " << j;
   }

@@ -92,19 +92,28 @@ Corners bounding_cage(const Surface& s) {
 /// A step with ω_max·dt ≤ 1 for the lattice at spring constant k.
 double stable_step(const Lattice& lat, double k) { return 1.0 / max_angular_frequency(lat, k); }
 
+/// The particle model on the T's lattice of `cells` cells along its longest side (mass 1,
+/// docs/physics.md §13): unnormalized, damped or not, spring constant `k`, `integrator`.
+LatticeModel t_lattice_model(const TBody& t, int cells, bool damping, double k,
+                             Integrator integrator) {
+  ModelConfig config = testing::config(ModelKind::particle, false, damping, k);
+  config.integrator = integrator;
+  return LatticeModel(build_lattice(t.surface.vertices, t.surface.triangles, 1.0, cells),
+                      t.props.principal_moments, bounding_cage(t.surface), config);
+}
+
 // Undamped, unnormalized: symplectic Euler and velocity Verlet conserve the momentum and
 // the angular momentum (central pair forces) to round-off and keep the energy within a
 // small bounded error (docs/physics.md §10, §13).
 TEST(LatticeModel, UndampedTConservesMomentumAndEnergy) {
   const TBody t = t_body();
-  const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, 8);
+  const double k = 2000.0;
   for (Integrator integrator : {Integrator::symplectic_euler, Integrator::velocity_verlet}) {
-    ModelConfig config = testing::config(ModelKind::particle, false, false, 2000.0);
-    config.integrator = integrator;
-    LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+    LatticeModel model = t_lattice_model(t, 8, false, k, integrator);
+    const Lattice& lat = model.lattice();
     model.reset({Eigen::Vector3d(0.05, 1.0, 0.05), 0.0, 1});
     const Diagnostics d0 = model.diagnostics();
-    const double dt = 0.5 * stable_step(lat, config.spring_constant);
+    const double dt = 0.5 * stable_step(lat, k);
     double worst_energy = 0.0;
     for (int step = 1; step <= 4000; ++step) {
       model.step(dt);
@@ -126,16 +135,14 @@ TEST(LatticeModel, UndampedTConservesMomentumAndEnergy) {
 // Damping forces act along the springs too: with damping the spin's angular momentum stays
 // to round-off while the springs' vibration dies out (docs/physics.md §2, §13).
 TEST(LatticeModel, DampedTKeepsItsAngularMomentum) {
-  const TBody t = t_body();
-  const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, 12);
-  ModelConfig config = testing::config(ModelKind::particle, false, true, 2000.0);
-  config.integrator = Integrator::symplectic_euler;
-  LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+  const double k = 2000.0;
+  LatticeModel model = t_lattice_model(t_body(), 12, true, k, Integrator::symplectic_euler);
+  const Lattice& lat = model.lattice();
   model.reset({Eigen::Vector3d(0.05, 1.0, 0.05), 1e-3, 3});
   const Diagnostics d0 = model.diagnostics();
   // Damping bounds the step more than the springs do: γ_max·dt = 1.
-  const double gamma = max_damping_rate(lat, config.spring_constant);
-  EXPECT_GT(gamma, 5.0 * max_angular_frequency(lat, config.spring_constant));
+  const double gamma = max_damping_rate(lat, k);
+  EXPECT_GT(gamma, 5.0 * max_angular_frequency(lat, k));
   const double dt = 1.0 / gamma;
   for (int step = 1; step <= 20000; ++step) {
     model.step(dt);
@@ -152,14 +159,13 @@ TEST(LatticeModel, DampedTKeepsItsAngularMomentum) {
 // rest shape, corners and surface are the rest ones turned by 90° about the centre of mass.
 TEST(LatticeModel, CageAndSurfaceFollowTheLattice) {
   const TBody t = t_body();
-  const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, 8);
-  ModelConfig config = testing::config(ModelKind::particle, false, false, 1e5);
-  config.integrator = Integrator::velocity_verlet;
-  LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+  const double k = 1e5;
+  LatticeModel model = t_lattice_model(t, 8, false, k, Integrator::velocity_verlet);
+  const Lattice& lat = model.lattice();
   const double omega = 0.2;
   // Spin about the largest axis (z), stable.
   model.reset({Eigen::Vector3d(0.0, 0.0, omega), 0.0, 1});
-  const double dt = 0.5 * stable_step(lat, config.spring_constant);
+  const double dt = 0.5 * stable_step(lat, k);
   const int steps = static_cast<int>(std::lround(0.5 * M_PI / omega / dt));
   for (int s = 0; s < steps; ++s) model.step(dt);
   const double angle = omega * steps * dt;
@@ -201,10 +207,8 @@ TEST(LatticeModel, TFlipsWithTheExactModel) {
               t.props.principal_moments[2], exact);
   double error24 = 1.0;
   for (int n : {8, 12, 16, 24}) {
-    const Lattice lat = build_lattice(t.surface.vertices, t.surface.triangles, 1.0, n);
-    ModelConfig config = testing::config(ModelKind::particle, false, false, k);
-    config.integrator = Integrator::velocity_verlet;
-    LatticeModel model(lat, t.props.principal_moments, bounding_cage(t.surface), config);
+    LatticeModel model = t_lattice_model(t, n, false, k, Integrator::velocity_verlet);
+    const Lattice& lat = model.lattice();
     model.reset({omega0, 0.0, 1});
     const double dt = 0.5 * stable_step(lat, k);
     const auto start = std::chrono::steady_clock::now();

@@ -112,6 +112,23 @@ TEST(Poinsot, PolhodeOnTheEllipsoidHoldsTheRunsContactPoints) {
   }
 }
 
+// The curve passes through the start's own point ρ0 = I⁻¹u0/√(Σ u_i²/I_i) (docs/physics.md
+// §16), about either end of either pole axis.
+TEST(Poinsot, PolhodeOnEllipsoidPassesThroughItsStartAtEitherEnd) {
+  const Eigen::Vector3d moments(1.0, 2.0, 3.0);
+  for (const Eigen::Vector3d& u :
+       {Eigen::Vector3d(0.9, 0.3, 0.2), Eigen::Vector3d(-0.9, 0.3, 0.2),
+        Eigen::Vector3d(0.2, 0.3, 0.9), Eigen::Vector3d(0.2, 0.3, -0.9)}) {
+    const Eigen::Vector3d u0 = u.normalized();
+    const Eigen::Vector3d rho0 =
+        u0.cwiseQuotient(moments) / std::sqrt(u0.cwiseAbs2().cwiseQuotient(moments).sum());
+    const auto curve = polhode_on_ellipsoid(moments, u0, 0.005);
+    double nearest = 1e300;
+    for (const Eigen::Vector3d& p : curve) nearest = std::min(nearest, (p - rho0).norm());
+    EXPECT_LT(nearest, 0.005) << u0.transpose();
+  }
+}
+
 TEST(Poinsot, RotationFromCornersOfARotatedBox) {
   const Eigen::Matrix3d R =
       Eigen::AngleAxisd(2.1, Eigen::Vector3d(-1, 0.3, 0.4).normalized()).matrix();

@@ -6,7 +6,6 @@
 
 #include <cstdlib>
 
-#include "clip/frame.hpp"
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
@@ -23,11 +22,7 @@ class BodyGoldens : public ::testing::TestWithParam<std::string> {};
 TEST_P(BodyGoldens, FirstMiddleAndLastFramesMatch) {
   const scene::Scene scene = figure_scene(GetParam(), kBodySize);
   ASSERT_NE(scene.body.shape, physics::BodyShape::book);
-  render::Renderer& renderer = renderer_for(scene);
-  for (const int index : pinned_frames(scene.frames)) {
-    const std::string name = golden_name(scene.name, index);
-    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
-  }
+  expect_pinned_frames_match(scene);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BodyGoldens,
@@ -38,10 +33,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BodyGoldens,
 // (one simulator per tile), at frame 45 (t = 4.5): just after the first flip, with the three
 // T-handles turned over together.
 TEST(BodyGoldens, LatticeComparisonFlipsWithTheRigidBodyAndTheExactMotion) {
-  const RgbaImage frame = rendered_frame(
-      "compare-t-handle-models", 45,
-      "--set render.width=512 --set render.height=288 --set render.preset='\"ultrafast\"'",
-      "body-compare");
+  const RgbaImage frame =
+      rendered_frame("compare-t-handle-models", 45, 512, 288, {}, "body-compare");
   EXPECT_TRUE(matches_golden("compare-t-handle-models-f0045", frame));
 }
 

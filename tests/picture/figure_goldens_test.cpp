@@ -14,11 +14,7 @@ class FigureGoldens : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(FigureGoldens, FirstMiddleAndLastFramesMatch) {
   const scene::Scene scene = figure_scene(GetParam());
-  render::Renderer& renderer = renderer_for(scene);
-  for (const int index : pinned_frames(scene.frames)) {
-    const std::string name = golden_name(scene.name, index);
-    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
-  }
+  expect_pinned_frames_match(scene);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, FigureGoldens, ::testing::ValuesIn(figure_scene_names()),

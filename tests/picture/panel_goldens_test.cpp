@@ -26,11 +26,8 @@ TEST(PanelGoldens, FigureFrameCarriesThePlotPanel) {
 // Comparison scenes render through `bookspin render` (several simulators, one tile each).
 TEST(PanelGoldens, ComparisonFrameShowsAllPanelsInLockstep) {
   // Frame 105: the exact, matrix and quaternion books are mid-flip at the same angle.
-  const RgbaImage frame = rendered_frame(
-      "compare-methods-x", 105,
-      "--set render.width=512 --set render.height=288 --set render.preset='\"ultrafast\"'"
-      " --set render.sphere=false",
-      "panel-compare");
+  const RgbaImage frame =
+      rendered_frame("compare-methods-x", 105, 512, 288, {"render.sphere=false"}, "panel-compare");
   EXPECT_TRUE(matches_golden("compare-methods-x-f0105", frame));
 }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "charts/decoration.hpp"
+#include "clip/frame.hpp"
 #include "clip/render_settings.hpp"
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
@@ -97,8 +98,20 @@ std::string test_name(std::string name) {
   return name;
 }
 
-RgbaImage rendered_frame(const std::string& scene, int index, const std::string& args,
-                         const std::string& folder) {
+void expect_pinned_frames_match(const scene::Scene& scene, const std::string& prefix) {
+  render::Renderer& renderer = renderer_for(scene);
+  for (const int index : pinned_frames(scene.frames)) {
+    const std::string name = prefix + golden_name(scene.name, index);
+    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
+  }
+}
+
+RgbaImage rendered_frame(const std::string& scene, int index, int width, int height,
+                         const std::vector<std::string>& sets, const std::string& folder) {
+  std::string args = "--set render.width=" + std::to_string(width) +
+                     " --set render.height=" + std::to_string(height) +
+                     " --set render.preset='\"ultrafast\"'";
+  for (const std::string& set : sets) args += " --set " + set;
   const auto dir = test::fresh_dir("picture/" + folder);
   const std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR +
                               "/scenes/" + scene + ".toml -o " + dir.string() + " --frames " +

@@ -37,14 +37,19 @@ std::vector<int> pinned_frames(int frames);
 /// "fig05-particle-unstable-x-f0375": the golden's name for frame `index` of `scene`.
 std::string golden_name(const std::string& scene, int index);
 
+/// Expects each of pinned_frames(scene.frames), drawn by clip::render_still with
+/// renderer_for(scene), to match the golden `prefix` + golden_name(scene.name, index).
+void expect_pinned_frames_match(const scene::Scene& scene, const std::string& prefix = "");
+
 /// `name` with every character GoogleTest does not allow in a test name replaced by '_'.
 std::string test_name(std::string name);
 
-/// Frame `index` of `bookspin render scenes/<scene>.toml --frames index+1 <args>` (the CLI's
-/// own path: a comparison runs one simulator per tile), rendered into a fresh folder named
-/// `folder` and read back from its PNG; the folder is removed once read. A failed render is a
-/// test failure and gives an empty (0×0) image.
-RgbaImage rendered_frame(const std::string& scene, int index, const std::string& args,
-                         const std::string& folder);
+/// Frame `index` of `bookspin render scenes/<scene>.toml --frames index+1` at `width`×`height`
+/// pixels with the fastest MP4 preset (the MP4 is not looked at) and the further overrides
+/// `sets` ("key=value", TOML; the CLI's own path: a comparison runs one simulator per tile),
+/// rendered into a fresh folder named `folder` and read back from its PNG; the folder is
+/// removed once read. A failed render is a test failure and gives an empty (0×0) image.
+RgbaImage rendered_frame(const std::string& scene, int index, int width, int height,
+                         const std::vector<std::string>& sets, const std::string& folder);
 
 }  // namespace bookspin::picture

@@ -4,8 +4,6 @@
 // forms in tests/physics/poinsot_test.cpp; these pin what the inset draws of it.
 #include <gtest/gtest.h>
 
-#include "clip/frame.hpp"
-#include "golden_store.hpp"
 #include "picture_scenes.hpp"
 
 namespace bookspin::picture {
@@ -19,11 +17,7 @@ class PoinsotGoldens : public ::testing::TestWithParam<std::string> {};
 TEST_P(PoinsotGoldens, FirstMiddleAndLastFramesMatch) {
   const scene::Scene scene = figure_scene(GetParam(), kPoinsotOn);
   ASSERT_TRUE(scene.render.poinsot);
-  render::Renderer& renderer = renderer_for(scene);
-  for (const int index : pinned_frames(scene.frames)) {
-    const std::string name = "poinsot-" + golden_name(scene.name, index);
-    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
-  }
+  expect_pinned_frames_match(scene, "poinsot-");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PoinsotGoldens,

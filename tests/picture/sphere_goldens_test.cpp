@@ -6,7 +6,6 @@
 
 #include <cstdlib>
 
-#include "clip/frame.hpp"
 #include "golden_store.hpp"
 #include "output/png_writer.hpp"
 #include "picture_scenes.hpp"
@@ -23,11 +22,7 @@ class SphereGoldens : public ::testing::TestWithParam<std::string> {};
 TEST_P(SphereGoldens, FirstMiddleAndLastFramesMatch) {
   const scene::Scene scene = figure_scene(GetParam(), kSphereOn);
   ASSERT_TRUE(scene.render.sphere);
-  render::Renderer& renderer = renderer_for(scene);
-  for (const int index : pinned_frames(scene.frames)) {
-    const std::string name = "sphere-" + golden_name(scene.name, index);
-    EXPECT_TRUE(matches_golden(name, clip::render_still(scene, renderer, index))) << name;
-  }
+  expect_pinned_frames_match(scene, "sphere-");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SphereGoldens,
@@ -39,11 +34,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, SphereGoldens,
 // frame 299 the particle model's trail has turned back towards +x while the rigid and exact
 // ones (in lockstep, drawn narrower on top of each other) have not.
 TEST(SphereGoldens, ComparisonDrawsOneTrailPerTile) {
-  const RgbaImage frame = rendered_frame(
-      "compare-methods-x", 299,
-      "--set render.width=640 --set render.height=360 --set render.preset='\"ultrafast\"'"
-      " --set render.sphere=true",
-      "sphere-compare");
+  const RgbaImage frame =
+      rendered_frame("compare-methods-x", 299, 640, 360, {"render.sphere=true"}, "sphere-compare");
   EXPECT_TRUE(matches_golden("sphere-compare-methods-x-f0299", frame));
 }
 

@@ -77,26 +77,27 @@ TEST(BodyKeys, MeshFileRelativeToTheScene) {
 }
 
 TEST(BodyKeys, ErrorsNameTheKey) {
-  EXPECT_NE(error_of("[body]\nshape = \"cube\"\n").find("body.shape: unknown shape 'cube'"),
-            std::string::npos);
-  EXPECT_NE(error_of("[model]\nkind = \"exact\"\n[body]\nshape = \"mesh\"\n")
-                .find("body.shape: 'mesh' needs body.mesh"),
-            std::string::npos);
-  EXPECT_NE(error_of("[model]\nkind = \"exact\"\n[body]\nshape = \"phone\"\nmesh = \"a.obj\"\n")
-                .find("body.mesh: only with"),
-            std::string::npos);
-  EXPECT_NE(error_of("[model]\nkind = \"exact\"\n[body]\nshape = \"phone\"\n[book]\nsize = [1, "
-                     "1, 1]\n")
-                .find("book.size: [book] keys describe the book"),
-            std::string::npos);
-  EXPECT_NE(error_of("[body]\nmass = 2.0\n").find("body.mass: not used by the book"),
-            std::string::npos);
-  EXPECT_NE(error_of("[model]\nkind = \"exact\"\n[body]\nshape = \"phone\"\nmass = 0\n")
-                .find("body.mass: must be"),
-            std::string::npos);
-  EXPECT_NE(error_of("[model]\nkind = \"exact\"\n[body]\nshape = \"mesh\"\nmesh = \"nope.stl\"\n")
-                .find("body.mesh: nope.stl: "),
-            std::string::npos);
+  struct BadBody {
+    const char* toml;
+    const char* message;  ///< part of the one error line
+  };
+  const BadBody cases[] = {
+      {"[body]\nshape = \"cube\"\n", "body.shape: unknown shape 'cube'"},
+      {"[model]\nkind = \"exact\"\n[body]\nshape = \"mesh\"\n",
+       "body.shape: 'mesh' needs body.mesh"},
+      {"[model]\nkind = \"exact\"\n[body]\nshape = \"phone\"\nmesh = \"a.obj\"\n",
+       "body.mesh: only with"},
+      {"[model]\nkind = \"exact\"\n[body]\nshape = \"phone\"\n[book]\nsize = [1, 1, 1]\n",
+       "book.size: [book] keys describe the book"},
+      {"[body]\nmass = 2.0\n", "body.mass: not used by the book"},
+      {"[model]\nkind = \"exact\"\n[body]\nshape = \"phone\"\nmass = 0\n", "body.mass: must be"},
+      {"[model]\nkind = \"exact\"\n[body]\nshape = \"mesh\"\nmesh = \"nope.stl\"\n",
+       "body.mesh: nope.stl: "},
+  };
+  for (const BadBody& c : cases) {
+    const std::string error = error_of(c.toml);
+    EXPECT_NE(error.find(c.message), std::string::npos) << c.toml << "gave: " << error;
+  }
 }
 
 TEST(BodyKeys, LatticeCellsAreForBodiesOtherThanTheBook) {
