@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "physics/particle_model.hpp"
 #include "physics/shape.hpp"
 
 namespace bookspin::physics {
@@ -176,9 +177,8 @@ void LatticeModel::step(double dt) {
 // the kinetic energy is max(E0 − U_start, 0.1·E0), remove the centre-of-mass drift (mass
 // weighted) and put the centre of mass back where it was at rest.
 void LatticeModel::normalize(double spring_energy_at_start) {
-  const double kinetic = kinetic_energy();
-  const double target = std::max(energy0_ - spring_energy_at_start, 0.1 * energy0_);
-  const double scale = kinetic > 0.0 ? std::sqrt(target / kinetic) : 1.0;
+  const double scale =
+      energy_normalization_scale(kinetic_energy(), energy0_, spring_energy_at_start);
   Eigen::Vector3d v_mean = Eigen::Vector3d::Zero();
   for (int p = 0; p < v_.cols(); ++p) v_mean += mass_fraction_[p] * v_.col(p);
   v_ = scale * (v_.colwise() - v_mean);

@@ -157,12 +157,16 @@ void ParticleModel::step(double dt) {
   t_ += dt;
 }
 
+double energy_normalization_scale(double kinetic, double energy0, double spring_energy_at_start) {
+  const double target = std::max(energy0 - spring_energy_at_start, 0.1 * energy0);
+  return kinetic > 0.0 ? std::sqrt(target / kinetic) : 1.0;
+}
+
 // Paper §3.2: scale all velocities by one factor so that kinetic energy = E − U, never
 // below 0.1·E (docs/physics.md §2), then remove the centre-of-mass drift.
 void ParticleModel::normalize(double spring_energy_at_start) {
-  const double kinetic = kinetic_energy();
-  const double target = std::max(energy0_ - spring_energy_at_start, 0.1 * energy0_);
-  const double scale = kinetic > 0.0 ? std::sqrt(target / kinetic) : 1.0;
+  const double scale =
+      energy_normalization_scale(kinetic_energy(), energy0_, spring_energy_at_start);
   // s·v − mean(s·v) as s·(v − mean v): the mean need not wait for the square root.
   const Eigen::Vector3d v_mean = v_.rowwise().mean();
   v_ = scale * (v_.colwise() - v_mean);

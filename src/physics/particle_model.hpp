@@ -18,6 +18,12 @@ using CornerRows = Eigen::Matrix<double, 3, 8, Eigen::RowMajor>;
 /// x += dt·v, then v += dt·a), `symplectic-euler` (v first, then x), `velocity-verlet`
 /// (Swope et al. 1982; with damping the velocity-dependent force uses the half-step
 /// velocity). Optional critical damping and energy normalization (paper §3.2–3.3).
+/// The paper's energy normalization (§3.2, docs/physics.md §2), shared by the particle book
+/// and the lattice: the factor that scales every velocity so that the kinetic energy
+/// `kinetic` becomes E0 − U (`energy0` minus the spring energy at the step's start), never
+/// below 0.1·E0; 1 for a body at rest. Energies in mass·length²/time².
+double energy_normalization_scale(double kinetic, double energy0, double spring_energy_at_start);
+
 class ParticleModel final : public Simulator {
  public:
   ParticleModel(const Book& book, const ModelConfig& config);
