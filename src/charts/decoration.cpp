@@ -114,7 +114,8 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
       const double book_width = scene.render.panel ? panel_rect(image.width, image.height).x
                                                    : static_cast<double>(image.width);
       sphere_ = std::make_unique<overlay::SphereInset>(
-          image.width, image.height, sphere_rect(image.width, image.height, book_width),
+          image.width, image.height,
+          sphere_rect(image.width, image.height, book_width, twist_line_ ? 4 : 3),
           sphere_spec(sphere_moments(scene), {}));
     }
     sphere_->draw(image, sphere_trails({SphereRun{&history, palette_colour(0)}}));

@@ -35,8 +35,8 @@ std::pair<double, double> numbers_of(const std::string& line) {
 }
 
 TEST(TwistCaption, TennisRacketLineHoldsTheMeasuredAndTheClosedFormTwist) {
-  const scene::Scene scene = scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) +
-                                                "/scenes/tennis-racket.toml");
+  const scene::Scene scene =
+      scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/tennis-racket.toml");
   ASSERT_TRUE(scene.render.caption_twist);
   const FrameDecorator decorator(scene);
   ASSERT_TRUE(decorator.twist_caption().has_value());
@@ -79,8 +79,8 @@ TEST(TwistCaption, LineNamesEachNumberWithItsSignAndNoneForAMissingOne) {
 }
 
 TEST(TwistCaption, CaptionShowsTheTwistBelowTheModelLineOnlyWhenGiven) {
-  const scene::Scene scene = scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) +
-                                                "/scenes/tennis-racket.toml");
+  const scene::Scene scene =
+      scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/tennis-racket.toml");
   const auto plain = caption_for(scene, 1.0, std::nullopt);
   const auto with = caption_for(scene, 1.0, std::nullopt, std::string("twist line"));
   ASSERT_EQ(with.size(), plain.size() + 1);
