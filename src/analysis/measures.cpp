@@ -92,4 +92,28 @@ RunMeasures measure_run(const scene::Scene& scene) {
   return result;
 }
 
+TwistMeasure measure_twist(const scene::Scene& scene) {
+  physics::ExactModel reference(scene.body);
+  reference.reset(scene.initial);
+  const physics::ExactRotation& exact = reference.rotation();
+  const auto pole = twist_pole(exact);
+  if (!pole) return {};
+  TwistMeasure result;
+  result.closed_form = twist_exact(exact);
+  auto sim = engines::make_model(scene.body, scene.model);
+  sim->reset(scene.initial);
+  TwistMeter meter(*pole);
+  const physics::Diagnostics d0 = sim->diagnostics();
+  meter.observe(0.0, sim->orientation(), d0.omega_body, d0.L);
+  const auto steps = static_cast<long long>(std::ceil(2.0 * exact.period() / scene.dt));
+  for (long long n = 1; n <= steps && !meter.done(); ++n) {
+    sim->step(scene.dt);
+    if (!sim->finite()) break;
+    const physics::Diagnostics d = sim->diagnostics();
+    meter.observe(static_cast<double>(n) * scene.dt, sim->orientation(), d.omega_body, d.L);
+  }
+  result.measured = meter.twist();
+  return result;
+}
+
 }  // namespace bookspin::analysis

@@ -58,4 +58,14 @@ std::string measure_names();
 /// that deform) against the exact R(t).
 RunMeasures measure_run(const scene::Scene& scene);
 
+/// The twist of one run (docs/physics.md §19), rad in (−π, π]: `measured` by a TwistMeter
+/// over the first body-frame period of `scene`'s model (not a comparison), stepped by dt past
+/// the clip's end if the period is longer, for at most twice the exact period T; empty when
+/// the run diverges, leaves the pole's hemisphere or takes longer. `closed_form` is
+/// twist_exact() of the same initial state. Both empty for steady and separatrix motion.
+struct TwistMeasure {
+  std::optional<double> measured, closed_form;
+};
+TwistMeasure measure_twist(const scene::Scene& scene);
+
 }  // namespace bookspin::analysis

@@ -1,5 +1,6 @@
 #include "charts/decoration.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 
@@ -58,11 +59,24 @@ std::string model_line(const scene::Scene& scene) {
 
 std::string divergence_text(double t) { return format("diverged at t = %.2f", t); }
 
+std::string twist_line(const analysis::TwistMeasure& twist) {
+  auto angle = [](const std::optional<double>& value) -> std::string {
+    if (!value || !std::isfinite(*value)) return "none";
+    const std::string digits = format("%.3f rad", std::abs(*value));
+    // The sign of what is printed: a value that rounds to zero is shown as 0.000.
+    return *value < 0.0 && digits != "0.000 rad" ? "\u2212" + digits : digits;
+  };
+  return "twist per period: measured " + angle(twist.measured) + ", closed form " +
+         angle(twist.closed_form);
+}
+
 std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double t,
-                                              std::optional<double> diverged_at) {
+                                              std::optional<double> diverged_at,
+                                              const std::optional<std::string>& twist) {
   std::vector<overlay::CaptionLine> lines;
   lines.push_back({scene.title, overlay::CaptionStyle::normal, true});
   lines.push_back({model_line(scene)});
+  if (twist) lines.push_back({*twist});
   lines.push_back({format("t = %.1f", t)});
   if (diverged_at) {
     lines.push_back({divergence_text(*diverged_at), overlay::CaptionStyle::warning, true});
@@ -75,7 +89,9 @@ void decorate_frame(RgbaImage& image, const scene::Scene& scene, double t,
   FrameDecorator(scene).decorate(image, t, diverged_at, history);
 }
 
-FrameDecorator::FrameDecorator(const scene::Scene& scene) : scene_(scene) {}
+FrameDecorator::FrameDecorator(const scene::Scene& scene) : scene_(scene) {
+  if (scene.render.caption_twist) twist_line_ = twist_line(analysis::measure_twist(scene));
+}
 FrameDecorator::~FrameDecorator() = default;
 
 void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> diverged_at,
@@ -98,7 +114,8 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
       const double book_width = scene.render.panel ? panel_rect(image.width, image.height).x
                                                    : static_cast<double>(image.width);
       sphere_ = std::make_unique<overlay::SphereInset>(
-          image.width, image.height, sphere_rect(image.width, image.height, book_width),
+          image.width, image.height,
+          sphere_rect(image.width, image.height, book_width, twist_line_ ? 4 : 3),
           sphere_spec(sphere_moments(scene), {}));
     }
     sphere_->draw(image, sphere_trails({SphereRun{&history, palette_colour(0)}}));
@@ -111,7 +128,7 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
         poinsot_spec(sphere_moments(scene), history));
     if (times) times->sphere += timer.lap();
   }
-  caption_.draw(image, caption_for(scene, t, diverged_at), caption);
+  caption_.draw(image, caption_for(scene, t, diverged_at, twist_line_), caption);
   if (diverged_at) overlay::draw_banner(image, divergence_text(*diverged_at), centre_x);
   if (times) times->caption += timer.lap();
 }

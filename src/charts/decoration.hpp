@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/measures.hpp"
 #include "charts/diagnostics_history.hpp"
 #include "common/rgba_image.hpp"
 #include "overlay/caption.hpp"
@@ -17,9 +18,16 @@ namespace bookspin::charts {
 /// "diverged at t = 31.35".
 std::string divergence_text(double t);
 
-/// The caption of a frame: title, model and toggles, time; plus the divergence warning.
+/// The caption of a frame: title, model and toggles, the `twist` line when given (it stays the
+/// same through a clip), time; plus the divergence warning.
 std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double t,
-                                              std::optional<double> diverged_at);
+                                              std::optional<double> diverged_at,
+                                              const std::optional<std::string>& twist = {});
+
+/// The caption line of render.caption_twist, angles in rad to 3 decimals with a minus sign
+/// (U+2212): "twist per period: measured −1.234 rad, closed form −1.234 rad"; a missing
+/// number reads "none" (docs/physics.md §19: no full period measured, or no period).
+std::string twist_line(const analysis::TwistMeasure& twist);
 
 /// The model line of a caption: "rigid-matrix, euler, dt = 0.01667, normalized".
 std::string model_line(const scene::Scene& scene);
@@ -40,11 +48,15 @@ struct OverlayTimes {
 /// from frame to frame kept between them (the clip's render loop holds one).
 class FrameDecorator {
  public:
-  /// `scene` must outlive the decorator.
+  /// `scene` must outlive the decorator. With render.caption_twist, measures the twist here
+  /// (analysis::measure_twist), once for the clip.
   explicit FrameDecorator(const scene::Scene& scene);
   ~FrameDecorator();
   FrameDecorator(const FrameDecorator&) = delete;
   FrameDecorator& operator=(const FrameDecorator&) = delete;
+
+  /// The twist line of the caption (twist_line()); empty without render.caption_twist.
+  const std::optional<std::string>& twist_caption() const { return twist_line_; }
 
   /// As decorate_frame(image, scene, t, diverged_at, history); with `times`, adds the CPU
   /// time of each overlay to it.
@@ -54,6 +66,7 @@ class FrameDecorator {
  private:
   const scene::Scene& scene_;
   overlay::CaptionPainter caption_;
+  std::optional<std::string> twist_line_;         ///< with render.caption_twist, measured once
   std::unique_ptr<overlay::SphereInset> sphere_;  ///< made for the first frame's size
 };
 

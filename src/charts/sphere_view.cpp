@@ -64,11 +64,16 @@ std::vector<overlay::SphereTrail> sphere_trails(const std::vector<SphereRun>& ru
   return trails;
 }
 
-PixelRect sphere_rect(int width, int height, double book_width) {
+PixelRect sphere_rect(int width, int height, double book_width, int caption_lines) {
   (void)width;
   const double side = std::min(0.45 * height, 0.42 * book_width);
   const double margin = 0.012 * std::min(width, height);
-  const double top = std::max(margin, 0.19 * height);  // below a three-line caption
+  double top = std::max(margin, 0.19 * height);  // below a three-line caption
+  if (caption_lines > 3) {
+    // overlay/caption.cpp's box: margin and padding 0.6 font sizes, lines 1.35 apart.
+    const double font = std::max(10.0, 0.026 * height);
+    top = std::max(top + (caption_lines - 3) * 1.35 * font, (1.2 + 1.35 * caption_lines) * font);
+  }
   return {margin, top, side, side};
 }
 

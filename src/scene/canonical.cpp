@@ -81,6 +81,7 @@ void add_render(Members& m, const RenderOptions& r, const std::filesystem::path&
   m.emplace_back("render.gif_fps", std::to_string(r.gif_fps));
   m.emplace_back("render.webm_crf", std::to_string(r.webm_crf));
   m.emplace_back("render.poinsot", boolean(r.poinsot));
+  m.emplace_back("render.caption_twist", boolean(r.caption_twist));
 }
 
 }  // namespace

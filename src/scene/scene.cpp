@@ -8,6 +8,7 @@
 
 #include "common/text_file.hpp"
 #include "mesh/mesh.hpp"
+#include "physics/exact_model.hpp"
 #include "physics/presets.hpp"
 #include "scene/model_reader.hpp"
 #include "scene/toml_reader.hpp"
@@ -191,6 +192,7 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   o.panel = r.boolean("render.panel", false);
   o.sphere = r.boolean("render.sphere", false);
   o.poinsot = r.boolean("render.poinsot", false);
+  o.caption_twist = r.boolean("render.caption_twist", false);
   o.anisotropy = static_cast<int>(r.integer(limit("render.anisotropy")));
   o.msaa = static_cast<int>(r.integer(limit("render.msaa")));
   o.formats = read_formats(r, "render.formats", o.formats);
@@ -320,6 +322,30 @@ void check_lattice_cells(TomlReader& r, const Scene& s) {
            "the book is one cell; a finer lattice is for other bodies (body.shape)");
 }
 
+/// render.caption_twist needs one run whose body-frame motion has a period (docs/physics.md
+/// §19): not a comparison, not a body at rest, not a steady spin or the separatrix.
+void check_caption_twist(TomlReader& r, const Scene& s) {
+  if (!s.render.caption_twist) return;
+  const char* key = "render.caption_twist";
+  if (!s.compare.empty())
+    r.fail(key, "the twist caption is for a single run, not a [[compare]] scene");
+  if (s.initial.omega0_body.isZero(0.0) && s.initial.jiggle == 0.0)
+    r.fail(key,
+           "the twist needs a spinning body, but initial.angular_velocity is [0, 0, 0] and "
+           "initial.jiggle is 0 (at rest: L = 0)");
+  physics::ExactModel exact(s.body);
+  exact.reset(s.initial);
+  const physics::ExactCase motion = exact.rotation().motion_case();
+  if (motion == physics::ExactCase::steady)
+    r.fail(key,
+           "the twist needs a body-frame motion with a period, but this spin is steady (about a "
+           "principal axis, without initial.jiggle)");
+  if (motion == physics::ExactCase::separatrix)
+    r.fail(key,
+           "the twist needs a body-frame motion with a period, but this spin is on the "
+           "separatrix (no period)");
+}
+
 Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
                   const std::set<std::string>& overridden) {
   TomlReader r(root, origin.string(), overridden);
@@ -343,6 +369,7 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
     r.fail("render.poinsot",
            "Poinsot's construction needs a spinning body, but initial.angular_velocity is "
            "[0, 0, 0] and initial.jiggle is 0 (at rest: L = 0)");
+  check_caption_twist(r, s);
   return s;
 }
 

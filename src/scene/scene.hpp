@@ -55,6 +55,10 @@ struct RenderOptions {
   /// invariable plane in the world frame, with the polhode and the herpolhode so far; at the
   /// top of the plot column with render.panel, else at the right edge. Single runs only.
   bool poinsot = false;
+  /// A caption line with the twist about L per body-frame period, measured from the run and
+  /// in Montgomery's closed form (docs/physics.md §19), computed once before the first frame.
+  /// Single runs whose body-frame motion is periodic only.
+  bool caption_twist = false;
 };
 
 /// The video formats `render` can write, in the order they are listed in messages.
