@@ -24,6 +24,7 @@
 #include "engines/models.hpp"
 #include "jobs/accuracy_report.hpp"
 #include "jobs/closed_form_flips.hpp"
+#include "jobs/csv_text.hpp"
 #include "jobs/simulation.hpp"
 #include "jobs/sweep.hpp"
 #include "physics/exact_solution.hpp"
@@ -35,34 +36,6 @@ namespace bookspin::jobs {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-/// A CSV file read back as text cells.
-struct Csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-};
-
-std::vector<std::string> split_cells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::size_t start = 0;
-  for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
-    cells.push_back(line.substr(start, comma - start));
-  cells.push_back(line.substr(start));
-  return cells;
-}
-
-Csv read_csv(std::istream& in) {
-  Csv csv;
-  std::string line;
-  if (std::getline(in, line)) csv.header = split_cells(line);
-  while (std::getline(in, line)) csv.rows.push_back(split_cells(line));
-  return csv;
-}
-
-Csv read_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  return read_csv(in);
-}
 
 /// What one cell must hold: a number within a tolerance, an empty cell, or a text.
 struct Expected {
@@ -296,33 +269,46 @@ TEST(CsvColumns, SweepTwistColumnsOfASymmetricTopAreTheHandFormula) {
   }
 }
 
+/// The sweep row of a spin about z (a steady motion: ω and E constant, no flip, no twist,
+/// and no exact column, since it has no finite period) at ω_z = `omega`, with its
+/// orientation error and divergence cells.
+ExpectedRow steady_spin_row(double omega, const Expected& orientation_error,
+                            const Expected& diverged_at) {
+  return {{"initial.angular_velocity[2]", near(omega, 1e-15)},
+          {"first_flip", empty()},
+          {"flip_period", empty()},
+          {"energy_drift", near(0.0, 1e-13)},
+          {"orientation_error", orientation_error},
+          {"diverged_at", diverged_at},
+          {"twist", empty()},
+          {"first_flip_exact", empty()},
+          {"flip_period_exact", empty()},
+          {"twist_exact", empty()}};
+}
+
+/// The book spun about z by the matrix model with Euler steps of `dt`, with or without the
+/// polar factor, swept over ω_z = 0.5 and 1 measuring everything.
+Csv sweep_z_spin(const std::filesystem::path& dir, bool normalize, double dt, int frames) {
+  const std::string toml =
+      std::string("[model]\nkind = \"rigid-matrix\"\nintegrator = \"euler\"\n") +
+      "normalize = " + (normalize ? "true" : "false") +
+      "\n[initial]\njiggle = 0\nangular_velocity = [0, 0, 1]\n[time]\ndt = " + full_precision(dt) +
+      "\nsteps_per_frame = 1\nframes = " + std::to_string(frames) + "\n";
+  return sweep(dir, "z-spin", toml, "initial.angular_velocity[2]=0.5:1:2", kAllMeasures);
+}
+
 // A steady spin about z with the matrix model, Euler and the polar factor: each step turns
 // the book by atan(h) for the exact motion's h = ω dt (docs/physics.md §3), so after N steps
 // the orientation error is N(h − atan h); ω and E stay constant; no flip, no period, no twist,
 // and every exact column is empty (steady motion has no finite period).
 TEST(CsvColumns, SweepRowsOfASteadySpinHoldTheEulerLagAndNothingElse) {
   test::ScratchDir dir;
-  const std::string toml =
-      "[model]\nkind = \"rigid-matrix\"\nintegrator = \"euler\"\nnormalize = true\n"
-      "[initial]\njiggle = 0\nangular_velocity = [0, 0, 1]\n"
-      "[time]\ndt = 0.1\nsteps_per_frame = 1\nframes = 1001\n";
-  const Csv csv =
-      sweep(dir.path(), "steady", toml, "initial.angular_velocity[2]=0.5:1:2", kAllMeasures);
+  const Csv csv = sweep_z_spin(dir.path(), true, 0.1, 1001);
   ASSERT_EQ(csv.rows.size(), 2u);
   for (std::size_t r = 0; r < 2; ++r) {
     const double omega = 0.5 * static_cast<double>(r + 1), h = omega * 0.1;
     const double lag = 1000 * (h - std::atan(h));
-    expect_row(csv, r,
-               {{"initial.angular_velocity[2]", near(omega, 1e-15)},
-                {"first_flip", empty()},
-                {"flip_period", empty()},
-                {"energy_drift", near(0.0, 1e-13)},
-                {"orientation_error", near(lag, 1e-9)},
-                {"diverged_at", empty()},
-                {"twist", empty()},
-                {"first_flip_exact", empty()},
-                {"flip_period_exact", empty()},
-                {"twist_exact", empty()}});
+    expect_row(csv, r, steady_spin_row(omega, near(lag, 1e-9), empty()));
   }
 }
 
@@ -333,12 +319,7 @@ TEST(CsvColumns, SweepRowsOfASteadySpinHoldTheEulerLagAndNothingElse) {
 // along z), and a diverged run has no orientation error.
 TEST(CsvColumns, SweepRowsOfADivergingRunDivergeAtTheClosedFormStep) {
   test::ScratchDir dir;
-  const std::string toml =
-      "[model]\nkind = \"rigid-matrix\"\nintegrator = \"euler\"\nnormalize = false\n"
-      "[initial]\njiggle = 0\nangular_velocity = [0, 0, 1]\n"
-      "[time]\ndt = 1\nsteps_per_frame = 1\nframes = 201\n";
-  const Csv csv =
-      sweep(dir.path(), "growing", toml, "initial.angular_velocity[2]=0.5:1:2", kAllMeasures);
+  const Csv csv = sweep_z_spin(dir.path(), false, 1.0, 201);
   ASSERT_EQ(csv.rows.size(), 2u);
   for (std::size_t r = 0; r < 2; ++r) {
     const double h = 0.5 * static_cast<double>(r + 1);
@@ -349,17 +330,7 @@ TEST(CsvColumns, SweepRowsOfADivergingRunDivergeAtTheClosedFormStep) {
            1e6)
       ++n;
     EXPECT_EQ(n, r == 0 ? 125 : 40);  // the closed form checked once by hand: 2^20 ≥ 1e6 > 2^19
-    expect_row(csv, r,
-               {{"initial.angular_velocity[2]", near(h, 1e-15)},
-                {"first_flip", empty()},
-                {"flip_period", empty()},
-                {"energy_drift", near(0.0, 1e-13)},
-                {"orientation_error", empty()},
-                {"diverged_at", near(n * 1.0, 0.0)},
-                {"twist", empty()},
-                {"first_flip_exact", empty()},
-                {"flip_period_exact", empty()},
-                {"twist_exact", empty()}});
+    expect_row(csv, r, steady_spin_row(h, empty(), near(n * 1.0, 0.0)));
   }
 }
 

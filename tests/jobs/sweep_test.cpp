@@ -15,6 +15,7 @@
 #include "common/errors.hpp"
 #include "engines/models.hpp"
 #include "jobs/closed_form_flips.hpp"
+#include "jobs/csv_text.hpp"
 #include "physics/exact_model.hpp"
 #include "support/scratch.hpp"
 
@@ -263,15 +264,6 @@ TEST(SweepMeasures, ADivergingRunIsMeasuredUpToItsLastFiniteStep) {
   EXPECT_FALSE(m.orientation_error);
   EXPECT_EQ(*m.energy_drift, expected.energy_drift);  // over the finite steps only
   EXPECT_GT(*m.energy_drift, 1.0);
-}
-
-/// The cells of a CSV line.
-std::vector<std::string> cells_of(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
 }
 
 TEST(SweepRun, FlipPeriodOfEveryPointMatchesTheClosedFormOnALogGrid) {
