@@ -58,7 +58,7 @@ Expected positive() { return {Expected::Kind::positive, 0.0, 0.0, {}}; }
 /// The expected cells of one row, by column name.
 using ExpectedRow = std::map<std::string, Expected>;
 
-/// Compares every cell of `row` with the expected value of its column, looked up by the
+/// Compares every cell of row `r` with the expected value of its column, looked up by the
 /// column's name in the header. A column with no expected value fails: adding a column to a
 /// CSV means adding its independent value to the test that reads it.
 void expect_row(const Csv& csv, std::size_t r, const ExpectedRow& expected) {
