@@ -62,9 +62,9 @@ std::string table_row(const analysis::AccuracyRow& r) {
 void write_csv(const std::filesystem::path& path, const std::vector<analysis::AccuracyRow>& rows) {
   output::AtomicTextFile file(path);
   std::ostream& out = file.stream();
-  out << "model,integrator,dt,steps,t_end,orientation_error_rad,energy_drift,L_drift,"
-         "flip_period,flip_period_error,ns_per_step,diverged,first_flip,first_flip_error,flips,"
-         "flips_exact\n";
+  const auto& columns = accuracy_csv_columns();
+  for (std::size_t i = 0; i < columns.size(); ++i) out << (i > 0 ? "," : "") << columns[i];
+  out << '\n';
   for (const auto& r : rows) out << csv_line(r) << '\n';
   file.commit();
 }
@@ -120,6 +120,18 @@ std::string format_line(const char* pattern, const std::string& a, double b, dou
 }
 
 }  // namespace
+
+const std::vector<std::string>& accuracy_csv_columns() {
+  static const std::vector<std::string> columns{"model",        "integrator",
+                                                "dt",           "steps",
+                                                "t_end",        "orientation_error_rad",
+                                                "energy_drift", "L_drift",
+                                                "flip_period",  "flip_period_error",
+                                                "ns_per_step",  "diverged",
+                                                "first_flip",   "first_flip_error",
+                                                "flips",        "flips_exact"};
+  return columns;
+}
 
 std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) {
   const scene::Scene& scene = request.scene;

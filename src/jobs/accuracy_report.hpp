@@ -32,6 +32,10 @@ struct AccuracyRequest {
 /// The most steps one method may take at one dt (flips × flip period / dt).
 inline constexpr double kMaxAccuracySteps = 1e8;
 
+/// The accuracy CSV's column names, in order (docs/accuracy.md): model, integrator, dt, steps,
+/// t_end, orientation_error_rad, …, flips, flips_exact; one row per method and dt.
+const std::vector<std::string>& accuracy_csv_columns();
+
 /// Measures every method of `request.methods` at every dt and writes the CSV, the error plot,
 /// the work–precision plot, the energy error against dt, the energy plot and its CSV. Returns the
 /// paths written. The CSV's flip_period and flip_period_error cells are empty where fewer than two
