@@ -381,7 +381,8 @@ TEST(CsvColumns, AccuracyAndEnergyCsvRowsMatchTheReplayAndTheClosedForm) {
   request.dts = {0.05, 0.1};
   request.paths = {dir.path() / "accuracy.csv",
                    dir.path() / "accuracy.png",
-                   {dir.path() / "work.png", dir.path() / "energy.png", dir.path() / "energy.csv"}};
+                   {dir.path() / "work.png", dir.path() / "energy-vs-dt.png",
+                    dir.path() / "energy.png", dir.path() / "energy.csv"}};
   run_accuracy(request);
   const scene::Scene& s = request.scene;
   const ClosedFormFlips exact = closed_form_flips(s.body.moments, omega);
