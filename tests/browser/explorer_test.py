@@ -43,7 +43,8 @@ import sys
 import time
 from pathlib import Path
 
-from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
+from browser import (console_errors, fail, find_browser, open_browser, require, run, test_arguments,
+                     wait_for)
 
 # The page's window, for this test, scripts/explorer-shots.py and bench/explorer_bench.py:
 # WebGL on the CPU, the network off (a proxy on a closed port), the viewport exactly the
@@ -460,6 +461,8 @@ def main():
             driver.execute_script("""
               const s = document.getElementById('slider');
               s.max = 300; s.value = 300; s.dispatchEvent(new Event('input'));""")
+            # The page catches up to the slider's time in pieces, one per frame (pacing.js).
+            wait_for(driver, "return window.explorer.settled()", bool, timeout=240)
             state = driver.execute_script("return window.explorer.state()")
             if state["axis"] != axis or state["rate"] != 1.5 or abs(state["t"] - 300) > 1e-6:
                 fail(f"the controls did not set axis {axis}, rate 1.5 and t = 300: {state}")
