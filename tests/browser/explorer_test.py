@@ -80,6 +80,15 @@ def load(driver, url=None):
     fail(f"the page never became ready: {url or driver.current_url}\n{driver.get_log('browser')}")
 
 
+def slide_to(driver, t):
+    """Drags the time slider to t and waits until the page has caught up to it (it steps in
+    pieces, one per animation frame: web/src/pacing.js)."""
+    driver.execute_script(f"""
+      const s = document.getElementById('slider');
+      s.max = {t!r}; s.value = {t!r}; s.dispatchEvent(new Event('input'));""")
+    wait_for(driver, "return window.explorer.settled()", bool, timeout=240)
+
+
 def simulate_omega(bookspin, scene, settings, t=100.0, dt=0.01):
     """ω (body) at time t from `bookspin simulate`: steps of dt, one row at t = 0 and one at t."""
     sets = []
@@ -458,11 +467,7 @@ def main():
             Select(driver.find_element("id", "axis")).select_by_value(axis)
             driver.find_element("id", "rate").clear()
             driver.find_element("id", "rate").send_keys("1.5\n")
-            driver.execute_script("""
-              const s = document.getElementById('slider');
-              s.max = 300; s.value = 300; s.dispatchEvent(new Event('input'));""")
-            # The page catches up to the slider's time in pieces, one per frame (pacing.js).
-            wait_for(driver, "return window.explorer.settled()", bool, timeout=240)
+            slide_to(driver, 300)
             state = driver.execute_script("return window.explorer.state()")
             if state["axis"] != axis or state["rate"] != 1.5 or abs(state["t"] - 300) > 1e-6:
                 fail(f"the controls did not set axis {axis}, rate 1.5 and t = 300: {state}")
@@ -490,9 +495,7 @@ def main():
         base = driver.execute_script("return window.explorer.state()")
         # One method first: its trail (more than the position marker, a disc of radius 5 of
         # about 80 pixels) and nothing of the second colour.
-        driver.execute_script("""
-          const s = document.getElementById('slider');
-          s.max = 200; s.value = 200; s.dispatchEvent(new Event('input'));""")
+        slide_to(driver, 200)
         colours = sphere_colours(driver)
         print(f"one method: sphere pixels of each colour {colours}")
         if colours[0] < 300 or colours[1] > 0:
@@ -514,9 +517,7 @@ def main():
         if not (relative(omegas[0], first) <= TOL and relative(omegas[1], second) <= TOL):
             fail(f"compare mode's runs are not the two methods: page {omegas}, bookspin simulate "
                  f"{first} (first method) and {second} (rigid-quaternion splitting, normalized)")
-        driver.execute_script("""
-          const s = document.getElementById('slider');
-          s.max = 200; s.value = 200; s.dispatchEvent(new Event('input'));""")
+        slide_to(driver, 200)
         trails = driver.execute_script("return window.explorer.trails()")
         colours = sphere_colours(driver)
         driver.save_screenshot(str(shots / "explorer-compare.png"))

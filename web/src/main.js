@@ -2,10 +2,8 @@
 // the body drawn with three.js, the momentum sphere and plots on 2D canvases. No physics and no
 // measuring here: every number drawn comes from the WebAssembly module (docs/explorer.md).
 // This file wires the parts: state and URL (state.js), runs (runs.js), 3D view (view3d.js),
-// sphere (sphere.js), plots (plots.js), controls (controls.js); the JavaScript engines, when
-// the page has them (bookspin explore --engines), come as window.BOOKSPIN_ENGINES (engines/).
-// Work is bounded per animation frame (a link's t, the slider, playing at any speed), so that no
-// link or value freezes the tab.
+// sphere (sphere.js), plots (plots.js), controls (controls.js), the work per frame (pacing.js);
+// the JavaScript engines, with --engines, come as window.BOOKSPIN_ENGINES (engines/).
 import { parseState, formatState } from './state.js';
 import { Pacer, FIRST_BUDGET_MS } from './pacing.js';
 import { testHooks } from './hooks.js';
@@ -26,7 +24,6 @@ function startApp(wasm, engines) {
     controls: new Controls(SCENES, (m, i) => wasm.supports(m, i), engines),
     playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, plotsDrawnAt: -Infinity,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
-
     seen: { sphere: null, plots: null },
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
     costs: { physics: 0, view: 0, sphere: 0, plots: 0, readout: 0 },
@@ -192,5 +189,9 @@ function startApp(wasm, engines) {
   requestAnimationFrame(frame);
 }
 
-const ENGINES = window.BOOKSPIN_ENGINES || [];  // bookspin explore --engines
-Promise.all([BookspinPhysics(), ...ENGINES.map((e) => e.load())]).then(([wasm]) => startApp(wasm, ENGINES));
+// The JavaScript engines (bookspin explore --engines); one that fails to load is left out.
+const ENGINES = (window.BOOKSPIN_ENGINES || []).map((e) => e.load().then(() => e, (err) => {
+  console.warn(`${e.label}: not loaded: ${err}`);
+  return null;
+}));
+Promise.all([BookspinPhysics(), ...ENGINES]).then(([wasm, ...engines]) => startApp(wasm, engines.filter(Boolean)));
