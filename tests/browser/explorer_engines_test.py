@@ -25,6 +25,7 @@ import json
 import time
 
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
+from explorer_test import load as load_page
 
 WINDOW = dict(size=(1280, 720), webgl=True, offline=True, exact_viewport=True)
 TOL = 1e-12
@@ -38,12 +39,8 @@ RESPONSIVE_S = 2.0
 
 
 def load(driver, url):
-    driver.get(url)
-    for _ in range(600):
-        if driver.execute_script("return !!(window.explorer && window.explorer.ready)"):
-            return
-        time.sleep(0.1)
-    fail(f"the page never became ready: {url}\n{driver.get_log('browser')}")
+    """explorer_test.load with more time: the engines' WebAssembly compiles as the page opens."""
+    load_page(driver, url, timeout=60)
 
 
 def answered(driver, script, what):

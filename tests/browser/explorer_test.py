@@ -68,12 +68,12 @@ seed = 5
 """
 
 
-def load(driver, url=None):
+def load(driver, url=None, timeout=30):
     """Opens url (None: the page the driver is on, say after a click) and waits until the
-    explorer is ready; fail() after 30 s."""
+    explorer is ready; fail() after `timeout` seconds."""
     if url is not None:
         driver.get(url)
-    for _ in range(300):
+    for _ in range(10 * timeout):
         if driver.execute_script("return !!(window.explorer && window.explorer.ready)"):
             return
         time.sleep(0.1)
