@@ -118,7 +118,8 @@ TEST(RenderRuns, ARerunHoldsTheOutputsOfOneRunOnlyAndTheGalleryLinksOnlyThose) {
   EXPECT_EQ(manifest.find(gif + "\""), std::string::npos) << manifest;
   EXPECT_EQ(manifest.find("frames/"), std::string::npos) << manifest;
 
-  fs::copy_file(out / (kScene + ".mp4"), out / gif);  // a file the last run did not make
+  fs::copy_file(out / (kScene + ".mp4"), out / gif,
+                fs::copy_options::overwrite_existing);  // a file the last run did not make
   fs::create_directories(out / kScene / "frames");
   fs::copy_file(out / (kScene + ".mp4"), out / kScene / "frames" / "frame_00000.png");
   ASSERT_EQ(run_bookspin("gallery " + out.string() + " " + scene_path(kScene)).status, 0);
