@@ -24,16 +24,6 @@ const std::string kSmall =
     " --set render.width=128 --set render.height=96 --set render.preset='\"ultrafast\"'"
     " --set render.gif_width=64";
 
-/// Every file and folder under `dir`, hidden ones included: relative path → bytes ("<dir>").
-std::map<std::string, std::string> tree(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string name = e.path().lexically_relative(dir).generic_string();
-    files[name] = e.is_directory() ? "<dir>" : read_file(e.path());
-  }
-  return files;
-}
-
 std::vector<std::string> names(const std::map<std::string, std::string>& files) {
   std::vector<std::string> list;
   for (const auto& [name, bytes] : files) list.push_back(name);
@@ -54,7 +44,7 @@ TEST(RenderRuns, AFailedRerunLeavesTheEarlierOutputsAndManifestByteForByte) {
   ASSERT_EQ(render(out, "--frames 6 --format mp4,webm").status, 0);
   fs::create_directories(out / (kScene + ".gif"));
   std::ofstream(out / (kScene + ".gif") / "notes.txt") << "someone else's";
-  const auto before = tree(out);
+  const auto before = tree_of(out);
   ASSERT_EQ(before.count(kScene + "/manifest.json"), 1u) << testing::PrintToString(names(before));
   ASSERT_EQ(before.count(kScene + "/frames/frame_00005.png"), 1u);
 
@@ -64,7 +54,7 @@ TEST(RenderRuns, AFailedRerunLeavesTheEarlierOutputsAndManifestByteForByte) {
   EXPECT_NE(failed.output.find("bookspin: error: cannot "), std::string::npos) << failed.output;
   EXPECT_NE(failed.output.find(kScene + ".gif"), std::string::npos) << failed.output;
   EXPECT_EQ(failed.output.find(" @ 0x"), std::string::npos) << failed.output;  // no FFmpeg line
-  EXPECT_EQ(tree(out), before) << testing::PrintToString(names(tree(out)));
+  EXPECT_EQ(tree_of(out), before) << testing::PrintToString(names(tree_of(out)));
 
   // Bad input: refused before anything is written.
   const CliResult bad = render(out,
@@ -72,7 +62,7 @@ TEST(RenderRuns, AFailedRerunLeavesTheEarlierOutputsAndManifestByteForByte) {
                                "--format mp4,webm,gif");
   EXPECT_EQ(bad.status, 2) << bad.output;
   EXPECT_NE(bad.output.find("render.gif_fps: "), std::string::npos) << bad.output;
-  EXPECT_EQ(tree(out), before);
+  EXPECT_EQ(tree_of(out), before);
 
   // Still up to date: the manifest tells the truth about the earlier run.
   EXPECT_NE(render(out, "--frames 6 --format mp4,webm").output.find("up to date"),
@@ -111,7 +101,7 @@ TEST(RenderRuns, ARerunHoldsTheOutputsOfOneRunOnlyAndTheGalleryLinksOnlyThose) {
   const CliResult rerun = render(out, "--frames 5 --no-png --format mp4");
   ASSERT_EQ(rerun.status, 0) << rerun.output;
   EXPECT_EQ(
-      names(tree(out)),  // sorted: '.' comes before '/'
+      names(tree_of(out)),  // sorted: '.' comes before '/'
       (std::vector<std::string>{kScene, kScene + ".mp4", kScene + "/diagnostics.csv",
                                 kScene + "/manifest.json", "gallery-manifest.json", "index.html"}));
   const std::string manifest = read_file(out / kScene / "manifest.json");

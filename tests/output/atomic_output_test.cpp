@@ -17,6 +17,7 @@ namespace bookspin::output {
 namespace {
 namespace fs = std::filesystem;
 using bookspin::test::ScratchDir;
+using bookspin::test::tree_of;
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -187,16 +188,6 @@ TEST(AtomicOutput, RemovesTheTemporariesOfDeadRunsInItsFolder) {
 
 // ---- OutputSet: the outputs of one run, all or nothing (docs/outputs.md) ----------------
 
-/// Every file under `dir` (hidden ones included) with its bytes, relative path → contents.
-std::map<std::string, std::string> tree(const fs::path& dir) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string name = e.path().lexically_relative(dir).generic_string();
-    files[name] = e.is_directory() ? "<dir>" : read_text(e.path());
-  }
-  return files;
-}
-
 TEST(OutputSet, CommitPutsEveryOutputInPlaceAndLeavesNothingAside) {
   ScratchDir dir;
   write_text(dir / "clip.mp4", "old mp4");
@@ -220,7 +211,7 @@ TEST(OutputSet, CommitPutsEveryOutputInPlaceAndLeavesNothingAside) {
                                                     {"clip.mp4", "new mp4"},
                                                     {"frames", "<dir>"},
                                                     {"frames/frame_1.png", "new frame"}};
-  EXPECT_EQ(tree(dir.path()), expected);
+  EXPECT_EQ(tree_of(dir.path()), expected);
   EXPECT_THROW(set.commit(), std::logic_error);
 }
 
@@ -235,7 +226,7 @@ TEST(OutputSet, AnOutputThatCannotBePutInPlaceLeavesTheFolderAsItWas) {
   write_text(dir / "frames" / "frame_0.png", "old frame");
   fs::create_directory(dir / "clip.gif");
   write_text(dir / "clip.gif" / "someone's.txt", "occupied");
-  const auto before = tree(dir.path());
+  const auto before = tree_of(dir.path());
   {
     AtomicFile mp4(dir / "clip.mp4");
     AtomicDirectory frames(dir / "frames");
@@ -256,9 +247,9 @@ TEST(OutputSet, AnOutputThatCannotBePutInPlaceLeavesTheFolderAsItWas) {
           << e.what();
     }
     EXPECT_FALSE(mp4.committed());
-    EXPECT_EQ(tree(dir.path()), before);  // before the outputs' destructors, too
+    EXPECT_EQ(tree_of(dir.path()), before);  // before the outputs' destructors, too
   }
-  EXPECT_EQ(tree(dir.path()), before);
+  EXPECT_EQ(tree_of(dir.path()), before);
 }
 
 TEST(OutputSet, AddingAFinishedOutputIsALogicError) {

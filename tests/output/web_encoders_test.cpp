@@ -74,22 +74,29 @@ TEST(GifEncoder, KeepsEveryStepthFrameScaledWithOnePaletteAndTheColours) {
     testing::expect_moving_square(probe.frames[j], kWidth, kHeight, 2 * j, 2, 10.0, 10.0);
 }
 
-/// Each video packet's duration in seconds as the container stores it (a GIF: each frame's
-/// delay), read with libavformat directly.
-std::vector<double> packet_durations(const fs::path& path) {
+/// Each video packet's start and duration in seconds as the container stores them (a GIF:
+/// each frame's delay), in the order stored, read with libavformat directly.
+struct PacketTimes {
+  std::vector<double> starts, durations;
+};
+
+PacketTimes packet_times(const fs::path& path) {
   AVFormatContext* format = nullptr;
-  std::vector<double> durations;
-  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return durations;
+  PacketTimes times;
+  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return times;
   AVPacket* packet = av_packet_alloc();
   while (av_read_frame(format, packet) >= 0) {
-    durations.push_back(static_cast<double>(packet->duration) *
-                        av_q2d(format->streams[packet->stream_index]->time_base));
+    const double unit = av_q2d(format->streams[packet->stream_index]->time_base);
+    times.starts.push_back(static_cast<double>(packet->pts) * unit);
+    times.durations.push_back(static_cast<double>(packet->duration) * unit);
     av_packet_unref(packet);
   }
   av_packet_free(&packet);
   avformat_close_input(&format);
-  return durations;
+  return times;
 }
+
+std::vector<double> packet_durations(const fs::path& path) { return packet_times(path).durations; }
 
 // 61 frames at 30 frames/s as a 10 frames/s GIF: every 3rd frame (21 of them), each shown
 // 3/30 s, so the GIF lasts 2.1 s, the clip's 61/30 s rounded up to whole GIF frames; frame j
@@ -124,22 +131,6 @@ TEST(GifEncoder, DecodedGifHasTheClipsFrameCountAndDuration) {
   }
   EXPECT_NEAR(total, 2.1, 1e-9);
   EXPECT_LT(total - static_cast<double>(kSourceFrames) / kSourceFps, 3.0 / kSourceFps);
-}
-
-/// Each video packet's presentation time in seconds, in the order stored (libavformat).
-std::vector<double> packet_starts(const fs::path& path) {
-  AVFormatContext* format = nullptr;
-  std::vector<double> starts;
-  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return starts;
-  AVPacket* packet = av_packet_alloc();
-  while (av_read_frame(format, packet) >= 0) {
-    starts.push_back(static_cast<double>(packet->pts) *
-                     av_q2d(format->streams[packet->stream_index]->time_base));
-    av_packet_unref(packet);
-  }
-  av_packet_free(&packet);
-  avformat_close_input(&format);
-  return starts;
 }
 
 // A GIF's delays are whole centiseconds and browsers show delays under 2 cs as 10 cs, so a
@@ -191,7 +182,7 @@ TEST(WebEncoders, HighFrameRatesGiveIncreasingTimesInEveryFormat) {
           {".webm", kFrames48, 1.0 / fps},
           {".gif", gif_frames, static_cast<double>(step) / fps}}) {
       const fs::path file = dir / (tag + ext);
-      std::vector<double> starts = packet_starts(file);
+      std::vector<double> starts = packet_times(file).starts;
       std::sort(starts.begin(), starts.end());  // H.264 stores B-frames out of order
       ASSERT_EQ(static_cast<int>(starts.size()), count) << file;
       for (std::size_t k = 1; k < starts.size(); ++k) EXPECT_GT(starts[k], starts[k - 1]) << file;
