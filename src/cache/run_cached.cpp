@@ -18,11 +18,17 @@ CacheOutcome run_cached(const CachedJob& job,
     made = job.make();
   } catch (...) {
     std::error_code ec;
-    std::filesystem::remove(job.manifest, ec);
+    if (!job.all_or_nothing) std::filesystem::remove(job.manifest, ec);
     throw;
   }
   if (!made) return CacheOutcome::interrupted;
-  output::write_manifest(job.manifest, job.head, made->note, job.out_dir, made->outputs);
+  try {
+    output::write_manifest(job.manifest, job.head, made->note, job.out_dir, made->outputs);
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(job.manifest, ec);  // it describes the outputs just replaced
+    throw;
+  }
   return CacheOutcome::made;
 }
 

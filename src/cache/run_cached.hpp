@@ -26,6 +26,9 @@ struct CachedJob {
   bool verify = false;             ///< also compare the outputs' SHA-256
   /// Makes the outputs; empty when interrupted (nothing was put in place).
   std::function<std::optional<JobOutputs>()> make;
+  /// make() puts its outputs in place together or not at all (output::OutputSet), so when it
+  /// throws, the earlier outputs and their manifest are still true and the manifest is kept.
+  bool all_or_nothing = false;
 };
 
 enum class CacheOutcome {
@@ -37,10 +40,10 @@ enum class CacheOutcome {
 /// Unless `job.force`, returns up_to_date when the manifest matches job.head and every listed
 /// output is there (output::manifest_stale). Otherwise runs job.make() (after telling
 /// `on_remake`, if given, why a manifest that was there did not match, e.g. "scene changed");
-/// if it throws, the
-/// manifest is removed (some outputs may have been replaced) and the exception goes on; if
-/// it returns outputs, writes the manifest last. Throws OutputError when the manifest cannot
-/// be written.
+/// if it throws, the manifest is removed (some outputs may have been replaced; kept for an
+/// `all_or_nothing` job) and the exception goes on; if it returns outputs, writes the
+/// manifest last. Throws OutputError when the manifest cannot be written (the earlier
+/// manifest, which no longer tells the truth, is then removed).
 CacheOutcome run_cached(const CachedJob& job,
                         const std::function<void(const std::string& reason)>& on_remake = {});
 

@@ -82,8 +82,10 @@ ClipResult render_single(const ClipRequest& request) {
     if (auto image = renderer.collect()) finisher.finish(std::move(*image));
   }
   while (auto image = renderer.flush()) finisher.finish(std::move(*image));
-  sinks.finish();
   result.divergence_reason = source.divergence_reason();
+  output::OutputSet outputs;
+  sinks.finish(outputs);
+  result.signal = commit_unless_stopped(request, outputs);
   return result;
 }
 

@@ -55,4 +55,9 @@ output::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs);
 /// Sink settings from the scene's render.* keys and the request's options.
 output::SinkOptions sink_options(const ClipRequest& request);
 
+/// The end of a clip: unless request.stop_signal() asks to stop (the signal is returned and
+/// nothing is put in place), puts every complete output of the run in place together
+/// (`outputs.commit()`: all or none) and returns 0. Throws OutputError from the commit.
+int commit_unless_stopped(const ClipRequest& request, output::OutputSet& outputs);
+
 }  // namespace bookspin::clip

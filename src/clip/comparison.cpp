@@ -31,7 +31,7 @@ struct TileState {
 };
 using Tiles = std::vector<std::unique_ptr<TileState>>;
 
-/// A diagnostics CSV written under a temporary name, renamed into place by finish().
+/// A diagnostics CSV written under a temporary name, added by finish() to the run's outputs.
 class TileCsv {
  public:
   explicit TileCsv(const std::filesystem::path& path) : file_(path) {
@@ -44,10 +44,10 @@ class TileCsv {
   void add(int index, const physics::Diagnostics& row) {
     out_ << output::diagnostics_csv_row(index, row) << '\n';
   }
-  void finish() {
+  void finish(output::OutputSet& set) {
     out_.close();
     if (!out_) throw_output_error("cannot write", file_.final_path(), errno);
-    file_.commit();
+    set.add(file_);
   }
 
  private:
@@ -172,8 +172,10 @@ ClipResult render_comparison(const ClipRequest& request) {
   // On a stop, the sinks' and CSVs' destructors remove every temporary.
   if ((result.signal = render_loop(request, layout, renderer, tiles, sinks, csvs)) != 0)
     return result;
-  sinks.finish();
-  for (auto& csv : csvs) csv->finish();
+  output::OutputSet outputs;
+  sinks.finish(outputs);
+  for (auto& csv : csvs) csv->finish(outputs);
+  if ((result.signal = commit_unless_stopped(request, outputs)) != 0) return result;
   result.frames = scene.frames;
   for (const auto& p : tiles) {
     if (p->frame.diverged_at)

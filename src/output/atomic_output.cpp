@@ -250,6 +250,106 @@ void AtomicOutput::abandon() noexcept {
   done_ = true;
 }
 
+// ---- OutputSet -----------------------------------------------------------------------
+
+namespace {
+
+/// One output of a set put in place: where the earlier output under its final name is kept
+/// until the whole set is in place (empty: there was none).
+struct Placed {
+  AtomicOutput* output;
+  fs::path aside;
+  bool exchanged = false;  ///< a directory swapped with its temporary (renameat2)
+};
+
+bool is_directory_no_follow(const fs::path& path) {
+  std::error_code ec;
+  return fs::is_directory(fs::symlink_status(path, ec));
+}
+
+/// Puts the complete temporary `temp` of `final_path` in place, keeping what was there aside
+/// (returned in Placed::aside). Throws OutputError naming `final_path`; `final_path` is then
+/// as it was.
+Placed put_in_place(AtomicOutput& output, const fs::path& temp, bool directory) {
+  const fs::path& final_path = output.final_path();
+  Placed placed{&output, {}, false};
+  if (!exists_no_follow(final_path)) {
+    if (std::rename(temp.c_str(), final_path.c_str()) != 0)
+      throw_output_error("cannot rename temporary into place as", final_path, errno);
+    return placed;
+  }
+  if (is_directory_no_follow(final_path) != directory) {
+    throw_output_error(directory ? "cannot replace non-directory with output directory"
+                                 : "cannot replace a directory with output file",
+                       final_path, std::strerror(directory ? ENOTDIR : EISDIR));
+  }
+  if (directory &&
+      ::renameat2(AT_FDCWD, temp.c_str(), AT_FDCWD, final_path.c_str(), RENAME_EXCHANGE) == 0) {
+    placed.aside = temp;  // now holds the earlier directory
+    placed.exchanged = true;
+    return placed;
+  }
+  placed.aside = sibling_name(final_path, "tmp");
+  // A file: a second name for the earlier one, so that the final name never goes missing.
+  const bool linked = !directory && ::link(final_path.c_str(), placed.aside.c_str()) == 0;
+  if (!linked && std::rename(final_path.c_str(), placed.aside.c_str()) != 0)
+    throw_output_error("cannot move the earlier output aside", final_path, errno);
+  if (std::rename(temp.c_str(), final_path.c_str()) != 0) {
+    const int err = errno;
+    if (linked) {
+      remove_quietly(placed.aside, false);
+    } else {
+      std::rename(placed.aside.c_str(), final_path.c_str());
+    }
+    throw_output_error("cannot rename temporary into place as", final_path, err);
+  }
+  return placed;
+}
+
+/// Undoes put_in_place(): the earlier output back under its name, or the new one removed.
+void take_back(const Placed& placed, bool directory) noexcept {
+  const fs::path& final_path = placed.output->final_path();
+  if (placed.aside.empty()) {
+    remove_quietly(final_path, directory);
+  } else if (placed.exchanged) {
+    if (::renameat2(AT_FDCWD, placed.aside.c_str(), AT_FDCWD, final_path.c_str(),
+                    RENAME_EXCHANGE) == 0)
+      remove_quietly(placed.aside, true);  // now holds the new one
+  } else {
+    if (directory) remove_quietly(final_path, true);
+    std::rename(placed.aside.c_str(), final_path.c_str());
+  }
+}
+
+}  // namespace
+
+void OutputSet::add(AtomicOutput& output) {
+  if (done_ || output.done_) throw std::logic_error("OutputSet::add of a finished output");
+  outputs_.push_back(&output);
+}
+
+void OutputSet::commit() {
+  if (done_) throw std::logic_error("OutputSet::commit called twice");
+  done_ = true;
+  std::vector<Placed> placed;
+  try {
+    for (AtomicOutput* output : outputs_) {
+      placed.push_back(put_in_place(*output, output->temp_path_,
+                                    output->kind_ == AtomicOutput::Kind::directory));
+    }
+  } catch (...) {
+    for (auto it = placed.rbegin(); it != placed.rend(); ++it)
+      take_back(*it, it->output->kind_ == AtomicOutput::Kind::directory);
+    for (AtomicOutput* output : outputs_) output->abandon();
+    throw;
+  }
+  for (const Placed& p : placed) {
+    if (!p.aside.empty()) remove_quietly(p.aside, p.output->kind_ == AtomicOutput::Kind::directory);
+    p.output->committed_ = true;
+    p.output->done_ = true;
+  }
+}
+
 // ---- Text files ----------------------------------------------------------------------
 
 AtomicTextFile::AtomicTextFile(const fs::path& final_path) : file_(final_path) {
@@ -266,6 +366,11 @@ void AtomicTextFile::close() {
 void AtomicTextFile::commit() {
   close();
   file_.commit();
+}
+
+void AtomicTextFile::finish(OutputSet& set) {
+  close();
+  set.add(file_);
 }
 
 void write_text_file(const fs::path& path, std::string_view text) {

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "common/errors.hpp"
 
@@ -51,10 +52,41 @@ class AtomicOutput {
   void abandon() noexcept;
 
  private:
+  friend class OutputSet;
   std::filesystem::path final_path_;
   std::filesystem::path temp_path_;
   Kind kind_;
   bool committed_ = false;
+  bool done_ = false;
+};
+
+/// The outputs of one run, put in place together or not at all (docs/outputs.md, "One run's
+/// outputs, all or nothing"). Each output is written complete under its temporary name and
+/// added; commit() then puts every one in place in the order added, keeping each earlier
+/// output under the final name aside (a hard link, or for a directory the exchanged
+/// temporary) until all are in place. If any cannot be put in place, the ones already put in
+/// place are undone (the earlier outputs back under their names, byte for byte; where there
+/// was none, the new one removed), every temporary is removed and the error goes on: a
+/// failed commit leaves the folder as it was. Not copyable; the outputs added must outlive
+/// commit(). Without commit() (an error or an interrupt before it) nothing is put in place:
+/// the outputs' own destructors remove their temporaries.
+class OutputSet {
+ public:
+  OutputSet() = default;
+  OutputSet(const OutputSet&) = delete;
+  OutputSet& operator=(const OutputSet&) = delete;
+
+  /// Adds `output`, whose temporary is complete (written and closed). Throws std::logic_error
+  /// if it was committed or abandoned already, or after commit().
+  void add(AtomicOutput& output);
+  /// The outputs added so far.
+  std::size_t size() const { return outputs_.size(); }
+  /// Puts every output in place, or none. Throws OutputError naming the output that could not
+  /// be put in place (after undoing the others); std::logic_error if called twice.
+  void commit();
+
+ private:
+  std::vector<AtomicOutput*> outputs_;
   bool done_ = false;
 };
 
@@ -83,6 +115,9 @@ class AtomicTextFile {
   void close();
   /// close(), then puts the file in place.
   void commit();
+  /// close(), then adds the file to `set`, which puts it in place with the run's other
+  /// outputs.
+  void finish(OutputSet& set);
 
  private:
   AtomicFile file_;

@@ -1,7 +1,8 @@
 #pragma once
 // The sinks of one clip, fed frame by frame: each video (MP4, WebM, GIF) on its own encoder
 // thread, PNG frames on a small worker pool, the diagnostics CSV on the caller's thread. Every
-// output is written under a temporary name and appears under its final name only in finish().
+// output is written under a temporary name; finish() completes them and adds them to the
+// run's OutputSet, whose commit() puts them in place together (docs/outputs.md).
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -61,8 +62,11 @@ class ClipSinks {
   /// Queues frame `index` (blocks while the queues are full, so memory stays bounded) and
   /// writes its CSV row. Rethrows the first error of a worker.
   void add(int index, RgbaImage image, const physics::Diagnostics& diagnostics);
-  /// Drains the queues, then renames every output into place.
-  void finish();
+  /// Drains the queues and completes every output under its temporary name, adding each to
+  /// `set` (videos in the order of SinkOptions::formats, then the frames, then the CSV);
+  /// nothing is in place until set.commit(), which must come before these sinks are
+  /// destroyed. Rethrows the first error of a worker.
+  void finish(OutputSet& set);
   /// A frame buffer the sinks are done with, to render the next frame into instead of
   /// allocating (and page-faulting) a new one; std::nullopt if none is free now.
   std::optional<RgbaImage> spare_frame();
@@ -74,7 +78,7 @@ class ClipSinks {
   /// One video file and the queue of frames its thread encodes.
   struct Video {
     std::function<void(const RgbaImage&)> add_frame;
-    std::function<void()> finish;
+    std::function<void(OutputSet&)> finish;
     output::BoundedQueue<Frame> queue{4};
   };
   void encode_loop(Video& video);

@@ -35,6 +35,8 @@ class DiagnosticsCsvFile {
   /// Closes the file and checks every write (idempotent); commit() does it too.
   void close() { file_.close(); }
   void commit() { file_.commit(); }
+  /// Closes the file and adds it to `set`, which puts it in place with the run's outputs.
+  void finish(OutputSet& set) { file_.finish(set); }
 
  private:
   AtomicTextFile file_;

@@ -9,6 +9,8 @@ namespace {
 // The capture target of the calling thread; libav calls the log callback on
 // the thread that triggered the message, so this needs no locking.
 thread_local std::string* capture_target = nullptr;
+// The last message logged on this thread outside a capture, for failure_text().
+thread_local std::string last_message;
 
 void append_line(std::string& text, const char* line) {
   std::string trimmed(line);
@@ -20,14 +22,15 @@ void append_line(std::string& text, const char* line) {
 
 void log_callback(void* context, int level, const char* format, va_list args) {
   if (level > av_log_get_level()) return;
-  if (capture_target == nullptr) {
-    av_log_default_callback(context, level, format, args);
-    return;
-  }
   char line[1024];
   int print_prefix = 0;  // drop "[h264_nvenc @ 0x…]": the caller names the encoder
   av_log_format_line2(context, level, format, args, line, sizeof line, &print_prefix);
-  append_line(*capture_target, line);
+  if (capture_target != nullptr) {
+    append_line(*capture_target, line);
+  } else {
+    last_message.clear();
+    append_line(last_message, line);
+  }
 }
 
 }  // namespace
@@ -38,6 +41,13 @@ std::string error_text(int code) {
     return "libav error " + std::to_string(code);
   }
   return buffer;
+}
+
+std::string failure_text(int code) {
+  std::string text = error_text(code);
+  if (!last_message.empty()) text += " (" + last_message + ")";
+  last_message.clear();
+  return text;
 }
 
 void configure_logging() {

@@ -20,8 +20,15 @@ namespace bookspin::output::libav {
 std::string error_text(int code);
 
 /// Once per process: libav logs only AV_LOG_ERROR and worse, through a
-/// callback that diverts messages into an active LogCapture on this thread.
+/// callback that diverts messages into an active LogCapture on this thread. No
+/// line of FFmpeg's reaches stderr as it is: without a capture, the thread's
+/// last message is kept for failure_text() (and dropped when no failure follows).
 void configure_logging();
+
+/// error_text(code) followed by what libav last logged on this thread, if
+/// anything, in parentheses ("Invalid argument (Application provided invalid, non
+/// monotonically increasing dts to muxer …)"); takes that message, so it is told once.
+std::string failure_text(int code);
 
 /// While alive, libav error messages logged on this thread are collected in
 /// text() instead of printed (used to explain why an encoder failed to open).

@@ -140,6 +140,17 @@ std::optional<std::string> manifest_stale(const fs::path& manifest, std::string_
   return std::nullopt;
 }
 
+std::vector<std::string> manifest_outputs(const fs::path& manifest) {
+  const std::optional<std::string> text = try_read_text_file(manifest);
+  if (!text) return {};
+  bool head_differs = false;
+  const auto entries = entries_after(*text, "", head_differs);  // any head
+  std::vector<std::string> paths;
+  if (entries)
+    for (const Entry& e : *entries) paths.push_back(e.path);
+  return paths;
+}
+
 std::string program_version() { return BOOKSPIN_VERSION; }
 
 std::string program_build_id() {

@@ -46,6 +46,11 @@ std::optional<std::string> manifest_stale(const std::filesystem::path& manifest,
                                           std::string_view head, const std::filesystem::path& root,
                                           bool verify);
 
+/// The outputs `manifest` lists (paths relative to its root, '/'-separated, in its order),
+/// whatever its head: what the run that wrote it made. Empty when there is no manifest or it
+/// is not one bookspin wrote. Never throws for a bad manifest.
+std::vector<std::string> manifest_outputs(const std::filesystem::path& manifest);
+
 /// bookspin's version (CMake's project version).
 std::string program_version();
 

@@ -60,7 +60,7 @@ struct Mp4Encoder::Impl {
       : settings(s), output(std::move(path)) {}
 
   [[noreturn]] void throw_io(const char* action, int rc) const {
-    throw_output_error(action, output.final_path(), libav::error_text(rc));
+    throw_output_error(action, output.final_path(), libav::failure_text(rc));
   }
 
   void open_container();
@@ -127,7 +127,7 @@ void Mp4Encoder::Impl::make_converter() {
 
 void Mp4Encoder::Impl::encode(const AVFrame* input) {
   const int rc = avcodec_send_frame(codec.get(), input);
-  if (rc < 0) throw EncoderError(codec_name + " rejected a frame: " + libav::error_text(rc));
+  if (rc < 0) throw EncoderError(codec_name + " rejected a frame: " + libav::failure_text(rc));
   drain(input == nullptr);
 }
 
@@ -137,7 +137,7 @@ void Mp4Encoder::Impl::drain(bool flushing) {
   for (;;) {
     int rc = avcodec_receive_packet(codec.get(), packet.get());
     if (rc == AVERROR_EOF || (!flushing && rc == AVERROR(EAGAIN))) return;
-    if (rc < 0) throw EncoderError(codec_name + " failed: " + libav::error_text(rc));
+    if (rc < 0) throw EncoderError(codec_name + " failed: " + libav::failure_text(rc));
     // Every packet is one frame of 1/fps; without a duration the muxer would
     // have to guess the last frame's length and avg_frame_rate would drift.
     if (packet->duration == 0) packet->duration = 1;
@@ -191,7 +191,7 @@ void Mp4Encoder::add_frame(const RgbaImage& image) {
   ++s.frames_added;
 }
 
-void Mp4Encoder::finish() {
+void Mp4Encoder::finish(OutputSet* set) {
   Impl& s = *impl_;
   if (s.closed) throw std::logic_error("Mp4Encoder::finish called twice");
   s.closed = true;  // a failed finish cannot be retried; the destructor cleans up
@@ -203,7 +203,11 @@ void Mp4Encoder::finish() {
   if (rc < 0) s.throw_io("cannot finish MP4", rc);
   rc = avio_closep(&s.format->pb);  // flushes: a full disk may show up only here
   if (rc < 0) s.throw_io("cannot finish MP4", rc);
-  s.output.commit();
+  if (set != nullptr) {
+    set->add(s.output);
+  } else {
+    s.output.commit();
+  }
 }
 
 std::int64_t Mp4Encoder::frame_count() const { return impl_->frames_added; }

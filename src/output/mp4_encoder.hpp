@@ -10,6 +10,8 @@
 
 namespace bookspin::output {
 
+class OutputSet;
+
 /// libav refused something (encoder missing or failing, bad frame). File
 /// system failures are reported as OutputError instead.
 class EncoderError : public std::runtime_error {
@@ -64,10 +66,12 @@ class Mp4Encoder {
   void add_frame(const RgbaImage& frame);
 
   /// Drains the encoder, writes the trailer (moving moov to the front), closes
-  /// the file and renames it onto the final path. Throws EncoderError if no
+  /// the file and renames it onto the final path; with `set`, the complete file is
+  /// added to it instead and put in place by set->commit() with the run's other
+  /// outputs (the encoder must live until then). Throws EncoderError if no
   /// frame was added, OutputError on write/rename failure (no file is left
   /// then), std::logic_error if called twice.
-  void finish();
+  void finish(OutputSet* set = nullptr);
 
   /// Frames accepted by add_frame so far.
   std::int64_t frame_count() const;

@@ -63,7 +63,7 @@ struct StreamFile {
       : label(label_), output(std::move(path)) {}
 
   [[noreturn]] void throw_io(const std::string& action, int rc) const {
-    throw_output_error(action, output.final_path(), libav::error_text(rc));
+    throw_output_error(action, output.final_path(), libav::failure_text(rc));
   }
 
   /// Opens muxer `muxer` on the temporary and allocates encoder `encoder` (not opened yet).
@@ -119,14 +119,14 @@ struct StreamFile {
     int rc = avcodec_send_frame(codec.get(), frame);
     if (rc < 0) {
       throw EncoderError(std::string(codec->codec->name) +
-                         " rejected a frame: " + libav::error_text(rc));
+                         " rejected a frame: " + libav::failure_text(rc));
     }
     if (frame != nullptr) ++frames;
     for (;;) {
       rc = avcodec_receive_packet(codec.get(), packet.get());
       if (rc == AVERROR_EOF || (frame != nullptr && rc == AVERROR(EAGAIN))) return;
       if (rc < 0) {
-        throw EncoderError(std::string(codec->codec->name) + " failed: " + libav::error_text(rc));
+        throw EncoderError(std::string(codec->codec->name) + " failed: " + libav::failure_text(rc));
       }
       if (packet->duration == 0) packet->duration = 1;  // one frame of the time base
       av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
@@ -136,8 +136,9 @@ struct StreamFile {
     }
   }
 
-  /// Flushes the encoder, writes the trailer, closes and renames the file into place.
-  void finish() {
+  /// Flushes the encoder, writes the trailer, closes and renames the file into place (with
+  /// `set`: adds it to the set, which puts it in place).
+  void finish(OutputSet* set) {
     if (closed) throw std::logic_error(std::string(label) + " finish called twice");
     closed = true;
     if (frames == 0)
@@ -148,7 +149,11 @@ struct StreamFile {
     if (rc < 0) throw_io(std::string("cannot finish ") + label, rc);
     rc = avio_closep(&format->pb);
     if (rc < 0) throw_io(std::string("cannot finish ") + label, rc);
-    output.commit();
+    if (set != nullptr) {
+      set->add(output);
+    } else {
+      output.commit();
+    }
   }
 };
 
@@ -230,7 +235,7 @@ void WebmEncoder::add_frame(const RgbaImage& image) {
   s.file.encode(s.frame.get());
 }
 
-void WebmEncoder::finish() { impl_->file.finish(); }
+void WebmEncoder::finish(OutputSet* set) { impl_->file.finish(set); }
 std::int64_t WebmEncoder::frame_count() const { return impl_->file.frames; }
 
 // ----------------------------------------------------------------------------------- GIF
@@ -492,6 +497,11 @@ GifEncoder::GifEncoder(std::filesystem::path path, const GifSettings& s) {
   if (s.width < 16 || s.width > s.source_width)
     throw std::invalid_argument("GIF width " + std::to_string(s.width) + " is outside 16…" +
                                 std::to_string(s.source_width));
+  if (s.fps > kGifMaxFps * gif_step(s)) {
+    throw std::invalid_argument("GIF fps " + std::to_string(s.gif_fps) + " of " +
+                                std::to_string(s.fps) + " frames/s plays faster than " +
+                                std::to_string(kGifMaxFps) + " frames/s");
+  }
   impl_ = std::make_unique<Impl>(std::move(path), s);
   Impl& g = *impl_;
   g.step = gif_step(s);
@@ -539,7 +549,7 @@ void GifEncoder::add_frame(const RgbaImage& image) {
   g.spill->append(g.scaled->data[0]);
 }
 
-void GifEncoder::finish() {
+void GifEncoder::finish(OutputSet* set) {
   Impl& g = *impl_;
   if (!g.file.closed && g.seen > 0) {
     push(g.palette_source, nullptr);  // end of stream: palettegen gives its palette
@@ -550,7 +560,7 @@ void GifEncoder::finish() {
     g.palette_graph.reset();  // its counts are no longer needed
     g.apply_palette(palette.get());
   }
-  g.file.finish();
+  g.file.finish(set);
 }
 
 std::int64_t GifEncoder::frame_count() const { return impl_->file.frames; }

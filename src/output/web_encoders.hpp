@@ -20,10 +20,19 @@ struct WebmSettings {
   int threads = 0;  ///< encoder threads; 0 = one per core
 };
 
+/// The fastest a GIF plays, in frames per second: a GIF stores each frame's delay in whole
+/// centiseconds, and browsers show a delay under 2 cs as 10 cs, so 2 cs is the shortest
+/// (docs/outputs.md, "Video formats"). FFmpeg's GIF muxer counts in centiseconds too: a faster
+/// rate would give frames of equal timestamps, which it refuses.
+inline constexpr int kGifMaxFps = 50;
+
 /// A GIF clip with one global 256-colour palette computed over the whole clip (FFmpeg's
 /// palettegen, then paletteuse with ordered dithering), scaled to `width` pixels wide.
 /// Every `step`-th frame is kept (step = max(1, round(fps / gif_fps))), so the GIF plays at
-/// fps/step frames per second for the clip's own duration; it loops forever.
+/// fps/step frames per second (at most kGifMaxFps) for the clip's own duration; it loops
+/// forever. Frame k of the GIF starts at k·step/fps s, rounded to the centisecond by the
+/// muxer, so delays alternate between the two nearest whole centiseconds and the total
+/// stays the clip's.
 struct GifSettings {
   int source_width = 0;  ///< pixels of the frames handed to add_frame
   int source_height = 0;
@@ -40,7 +49,8 @@ int gif_step(const GifSettings& settings);
 std::int64_t gif_frame_count(const GifSettings& settings, std::int64_t source_frames);
 
 /// Both encoders write under a temporary name next to `path`, which appears only when
-/// finish() succeeds; destroying the encoder earlier removes it. Not thread-safe per object,
+/// finish() succeeds (with an OutputSet: when the set commits; the encoder must live until
+/// then); destroying the encoder earlier removes it. Not thread-safe per object,
 /// but free of thread affinity (one thread at a time). Errors as Mp4Encoder: bad settings →
 /// std::invalid_argument, libav refusing → EncoderError, file system → OutputError naming
 /// the path; add_frame on a size mismatch → std::invalid_argument; finish() with no frame
@@ -53,7 +63,7 @@ class WebmEncoder {
   WebmEncoder& operator=(const WebmEncoder&) = delete;
   /// `frame`: RGBA, top row first, exactly width×height.
   void add_frame(const RgbaImage& frame);
-  void finish();
+  void finish(OutputSet* set = nullptr);
   std::int64_t frame_count() const;
 
  private:
@@ -75,7 +85,7 @@ class GifEncoder {
   /// `frame`: RGBA, top row first, exactly source_width×source_height; only every step-th
   /// call (the first included) reaches the GIF.
   void add_frame(const RgbaImage& frame);
-  void finish();
+  void finish(OutputSet* set = nullptr);
   /// Frames written to the GIF so far (after finish(): all of them).
   std::int64_t frame_count() const;
 

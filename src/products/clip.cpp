@@ -1,11 +1,14 @@
 #include "products/clip.hpp"
 
+#include <algorithm>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <thread>
 
 #include "cache/manifest_head.hpp"
 #include "clip/clip.hpp"
+#include "output/manifest.hpp"
 #include "scene/canonical.hpp"
 
 namespace bookspin::products {
@@ -90,6 +93,34 @@ std::vector<std::string> clip_outputs(const ClipJob& job, const ClipLayout& layo
   return files;
 }
 
+/// Removes the files an earlier run listed in its manifest (`earlier`, relative to OUT) that
+/// this run (`now`) did not make, e.g. the GIF of a run with another render.formats, and the
+/// folders that leaves empty: OUT holds the outputs of one run only (docs/outputs.md). Only
+/// plain relative paths inside OUT are touched; errors are ignored (an output left behind is
+/// no longer listed, so nothing links it).
+void remove_outputs_of_earlier_run(const fs::path& out_dir, const std::vector<std::string>& earlier,
+                                   const std::vector<std::string>& now) {
+  const std::set<std::string> kept(now.begin(), now.end());
+  std::set<fs::path> folders;
+  for (const std::string& listed : earlier) {
+    const fs::path relative(listed);
+    if (kept.count(listed) != 0 || relative.empty() || relative.is_absolute() ||
+        relative.lexically_normal() != relative ||
+        std::find(relative.begin(), relative.end(), "..") != relative.end())
+      continue;
+    std::error_code ec;
+    const fs::path file = out_dir / relative;
+    if (!fs::is_regular_file(fs::symlink_status(file, ec)) || !fs::remove(file, ec)) continue;
+    for (fs::path folder = relative.parent_path(); !folder.empty(); folder = folder.parent_path())
+      folders.insert(folder);
+  }
+  // Deepest first: a folder's subfolders go before it.
+  for (auto it = folders.rbegin(); it != folders.rend(); ++it) {
+    std::error_code ec;
+    if (fs::is_empty(out_dir / *it, ec) && !ec) fs::remove(out_dir / *it, ec);
+  }
+}
+
 }  // namespace
 
 ClipLayout clip_layout(const fs::path& out_dir, const scene::Scene& scene) {
@@ -143,12 +174,17 @@ ClipOutcome make_clip(const ClipJob& job) {
   done.outcome = cache::run_cached(
       {layout.manifest, head, job.out_dir, job.force, job.verify,
        [&]() -> std::optional<cache::JobOutputs> {
+         const std::vector<std::string> earlier = output::manifest_outputs(layout.manifest);
+         // Every output of the run is put in place together, or none (clip::render_clip).
          done.result = clip::render_clip(clip_request(job));
          if (done.result.signal != 0) return std::nullopt;
          done.warnings = divergence_warnings(job.scene.name, done.result);
-         return cache::JobOutputs{cache::manifest_note(job.scene) + warnings_json(done.warnings),
-                                  clip_outputs(job, layout)};
-       }},
+         cache::JobOutputs made{cache::manifest_note(job.scene) + warnings_json(done.warnings),
+                                clip_outputs(job, layout)};
+         remove_outputs_of_earlier_run(job.out_dir, earlier, made.outputs);
+         return made;
+       },
+       /*all_or_nothing=*/true},
       remake_note_for(job.on_remake, job.scene.name));
   if (done.outcome == cache::CacheOutcome::up_to_date)
     done.warnings = recorded_warnings(layout.manifest);

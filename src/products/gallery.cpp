@@ -30,37 +30,53 @@ bool exists(const fs::path& out, const std::string& relative) {
   return fs::is_regular_file(out / relative, ec);
 }
 
-/// Files under OUT/<dir> whose names start with `prefix` and end with `suffix`, sorted,
-/// as paths relative to OUT.
-std::vector<std::string> files_in(const fs::path& out, const std::string& dir,
-                                  const std::string& prefix, const std::string& suffix) {
-  std::vector<std::string> found;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(out / dir, ec)) {
-    const std::string name = e.path().filename().string();
-    const bool match = name.size() >= prefix.size() + suffix.size() && name.rfind(prefix, 0) == 0 &&
-                       name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
-    if (match && e.is_regular_file(ec)) found.push_back(dir + "/" + name);
-  }
-  std::sort(found.begin(), found.end());
-  return found;
-}
-
 std::string path_in_out(const fs::path& out, const fs::path& path) {
   return path.lexically_relative(out).generic_string();
-}
-
-/// OUT/<name>/poster.png if there is one, else the middle one of the clip's frames.
-std::string poster_for(const fs::path& out, const ClipLayout& clip, const std::string& name) {
-  if (exists(out, name + "/poster.png")) return name + "/poster.png";
-  const auto frames = files_in(out, path_in_out(out, clip.frames_dir), "", ".png");
-  return frames.empty() ? "" : frames[frames.size() / 2];
 }
 
 /// The path relative to OUT of `path` if that file exists, else "".
 std::string if_there(const fs::path& out, const fs::path& path) {
   std::error_code ec;
   return fs::is_regular_file(path, ec) ? path_in_out(out, path) : "";
+}
+
+/// The outputs of the last run of a product, as its manifest lists them: only these are
+/// linked, so a file left from an earlier run (another render.formats) never is.
+class Listed {
+ public:
+  Listed(const fs::path& out, const fs::path& manifest)
+      : out_(out), paths_(output::manifest_outputs(manifest)) {}
+  /// The path relative to OUT of `path` if the manifest lists it and it exists, else "".
+  std::string operator()(const fs::path& path) const {
+    const std::string relative = path_in_out(out_, path);
+    return std::find(paths_.begin(), paths_.end(), relative) != paths_.end() ? if_there(out_, path)
+                                                                             : "";
+  }
+  /// The listed files in `folder` (relative to OUT) ending in `suffix`, in the manifest's order.
+  std::vector<std::string> in_folder(const fs::path& folder, const std::string& suffix) const {
+    const std::string prefix = path_in_out(out_, folder) + "/";
+    std::vector<std::string> found;
+    for (const std::string& p : paths_) {
+      if (p.rfind(prefix, 0) == 0 && p.size() > prefix.size() + suffix.size() &&
+          p.compare(p.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+          p.find('/', prefix.size()) == std::string::npos && exists(out_, p))
+        found.push_back(p);
+    }
+    return found;
+  }
+
+ private:
+  fs::path out_;
+  std::vector<std::string> paths_;
+};
+
+/// OUT/<name>/poster.png if there is one, else the middle one of the clip's frames that its
+/// manifest lists.
+std::string poster_for(const fs::path& out, const Listed& clip_outputs, const ClipLayout& clip,
+                       const std::string& name) {
+  if (exists(out, name + "/poster.png")) return name + "/poster.png";
+  const auto frames = clip_outputs.in_folder(clip.frames_dir, ".png");
+  return frames.empty() ? "" : frames[frames.size() / 2];
 }
 
 GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
@@ -72,20 +88,23 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   scene::Scene every_format = scene;
   every_format.render.formats = {"mp4", "webm", "gif"};
   const ClipLayout clip = clip_layout(out, every_format);
-  e.mp4 = if_there(out, clip.videos[0]);
-  e.webm = if_there(out, clip.videos[1]);
-  e.gif = if_there(out, clip.videos[2]);
+  // The clip's files only as its last render made them (docs/outputs.md).
+  const Listed rendered(out, clip.manifest);
+  e.mp4 = rendered(clip.videos[0]);
+  e.webm = rendered(clip.videos[1]);
+  e.gif = rendered(clip.videos[2]);
   e.glb = if_there(out, gltf_path(out, scene));
   if (const std::string page = if_there(out, explorer_page_path(out)); !page.empty())
     e.explorer = page + "?scene=" + scene.name;
   e.video = e.mp4.empty() ? e.webm : e.mp4;
-  e.poster = poster_for(out, clip, scene.name);
-  e.plot = if_there(out, plot_layout(out, scene).png);
+  e.poster = poster_for(out, rendered, clip, scene.name);
+  const PlotLayout plot = plot_layout(out, scene);
+  e.plot = Listed(out, plot.manifest)(plot.png);
   const jobs::SweepPaths sweep = sweep_paths(out, scene.name);
   e.sweep = if_there(out, sweep.png);
   e.sweep_csv = if_there(out, sweep.csv);
   for (const fs::path& csv : clip.csvs) {
-    if (const std::string there = if_there(out, csv); !there.empty()) e.csvs.push_back(there);
+    if (const std::string there = rendered(csv); !there.empty()) e.csvs.push_back(there);
   }
   return e;
 }

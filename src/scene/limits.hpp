@@ -59,7 +59,7 @@ inline constexpr std::array kLimits{
     Limit{"render.anisotropy", 0, 16, false, 0.0, true},
     Limit{"render.msaa", 1, 8, false, 4.0, true},
     Limit{"render.gif_width", 16, 7680, false, std::nullopt, true},
-    Limit{"render.gif_fps", 1, 240, false, std::nullopt, true},
+    Limit{"render.gif_fps", 1, 50, false, std::nullopt, true},
     Limit{"render.webm_crf", 0, 63, false, 32.0, true},
 };
 

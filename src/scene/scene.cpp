@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "common/text_file.hpp"
 #include "mesh/mesh.hpp"
@@ -162,6 +163,33 @@ std::vector<std::string> read_formats(TomlReader& r, std::string_view key,
   return formats;
 }
 
+// The GIF keeps every round(fps / gif_fps)-th frame (output::gif_step) and so plays at
+// fps / step frames per second. A GIF stores each frame's delay in whole centiseconds and
+// browsers show delays under 2 cs as 10 cs: it plays at most 50 frames/s
+// (output::kGifMaxFps; docs/outputs.md, "Video formats").
+constexpr int kGifMaxFps = 50;
+
+int gif_step(int fps, int gif_fps) {
+  return std::max(1, static_cast<int>(std::lround(static_cast<double>(fps) / gif_fps)));
+}
+
+bool gif_rate_storable(int fps, int gif_fps) { return fps <= kGifMaxFps * gif_step(fps, gif_fps); }
+
+/// Refuses a render.gif_fps whose GIF would play faster than a GIF can, naming the largest
+/// one allowed with this render.fps.
+void check_gif_rate(const TomlReader& r, int fps, int gif_fps) {
+  if (gif_rate_storable(fps, gif_fps)) return;
+  int allowed = std::min(fps, kGifMaxFps);
+  while (allowed > 1 && !gif_rate_storable(fps, allowed)) --allowed;
+  std::ostringstream rate;
+  rate << static_cast<double>(fps) / gif_step(fps, gif_fps);
+  r.fail("render.gif_fps", "the GIF would play at " + rate.str() +
+                               " frames/s; a GIF plays at most " + std::to_string(kGifMaxFps) +
+                               " (its frame delays are whole centiseconds, at least 2): at most " +
+                               std::to_string(allowed) + " with render.fps = " +
+                               std::to_string(fps) + ", got " + std::to_string(gif_fps));
+}
+
 RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   RenderOptions o;
   o.width = read_dimension(r, limit("render.width"));
@@ -200,6 +228,7 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
       r.integer(limit("render.gif_width"), std::min(o.gif_width, o.width), o.width));
   o.gif_fps =
       static_cast<int>(r.integer(limit("render.gif_fps"), std::min(o.gif_fps, o.fps), o.fps));
+  check_gif_rate(r, o.fps, o.gif_fps);
   o.webm_crf = static_cast<int>(r.integer(limit("render.webm_crf")));
   if (o.msaa != 1 && o.msaa != 2 && o.msaa != 4 && o.msaa != 8)
     r.fail("render.msaa", "must be 1, 2, 4 or 8, got " + std::to_string(o.msaa));

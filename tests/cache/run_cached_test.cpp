@@ -1,14 +1,17 @@
 // run_cached (cache/run_cached.hpp): check the manifest, make, record. Counted against a make
 // function that writes one file and counts its calls: made once, then up to date; made again
 // when the head changes, an output is missing or changed size, or when forced; no manifest
-// after a make that threw or was interrupted.
+// after a make that threw (unless it puts its outputs in place all or nothing) or was
+// interrupted.
 #include "cache/run_cached.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
+#include "common/errors.hpp"
 #include "support/scratch.hpp"
 
 namespace bookspin::cache {
@@ -95,6 +98,33 @@ TEST(RunCached, AThrowingMakeRemovesTheManifestAndAnInterruptedOneWritesNone) {
   EXPECT_EQ(run_cached(interrupted), CacheOutcome::interrupted);
   EXPECT_FALSE(std::filesystem::exists(dir / "manifest.json"));
   EXPECT_EQ(calls, 1);
+}
+
+// A job whose outputs go in place together or not at all (output::OutputSet): when its make
+// throws, nothing of the earlier outputs changed, so their manifest keeps its bytes. A
+// manifest that cannot be written after a make that succeeded (an output it lists cannot be
+// read) is removed: it would describe the outputs just replaced.
+TEST(RunCached, AllOrNothingKeepsTheManifestOnAThrowAndDropsOneItCannotRewrite) {
+  ScratchDir dir;
+  int calls = 0;
+  EXPECT_EQ(run_cached(counting_job(dir, kHead, "abc", calls)), CacheOutcome::made);
+  std::ifstream in(dir / "manifest.json");
+  const std::string before(std::istreambuf_iterator<char>(in), {});
+  CachedJob failing = counting_job(dir, "  \"what\": \"two\",\n", "abc", calls);
+  failing.all_or_nothing = true;
+  failing.make = []() -> std::optional<JobOutputs> { throw std::runtime_error("muxer failed"); };
+  EXPECT_THROW(run_cached(failing), std::runtime_error);
+  std::ifstream again(dir / "manifest.json");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(again), {}), before);
+  EXPECT_EQ(run_cached(counting_job(dir, kHead, "abc", calls)), CacheOutcome::up_to_date);
+
+  CachedJob unlisted = counting_job(dir, "  \"what\": \"three\",\n", "abc", calls);
+  unlisted.all_or_nothing = true;
+  unlisted.make = []() -> std::optional<JobOutputs> {
+    return JobOutputs{"", {"result.txt", "never-written.txt"}};
+  };
+  EXPECT_THROW(run_cached(unlisted), OutputError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "manifest.json"));
 }
 
 }  // namespace

@@ -204,16 +204,25 @@ TEST(Manifest, ChangedMeshRendersAgain) {
   EXPECT_TRUE(rendered(changed)) << changed.output;
 }
 
-TEST(Manifest, FailedRunLeavesNoManifest) {
+TEST(Manifest, FailedRunKeepsTheEarlierOutputsAndManifest) {
   const Sandbox box("manifest_failed");
   ASSERT_TRUE(rendered(box.render()));
-  // The output directory's frames path taken by a file: the render fails, and its old
-  // manifest goes, so the next run renders again instead of trusting it. (An interrupted
-  // render keeps it: tests/cli/interrupt_test.cpp finds the earlier clip untouched.)
+  // The output directory's frames path taken by a file: the render fails before anything is
+  // put in place (docs/outputs.md, "One run's outputs, all or nothing"), so the MP4, the CSV
+  // and the manifest keep their bytes. The frames it lists are gone (removed here), so once
+  // the path is free the next run renders again instead of trusting it. (An interrupted
+  // render keeps it too: tests/cli/interrupt_test.cpp finds the earlier clip untouched.)
+  const fs::path manifest = box.out / "tiny" / "manifest.json";
+  const std::string manifest_bytes = read_file(manifest), mp4 = read_file(box.mp4()),
+                    csv = read_file(box.out / "tiny" / "diagnostics.csv");
   fs::remove_all(box.out / "tiny" / "frames");
   std::ofstream(box.out / "tiny" / "frames") << "not a directory";
   EXPECT_NE(box.render(" --force").status, 0);
-  EXPECT_FALSE(fs::exists(box.out / "tiny" / "manifest.json"));
+  EXPECT_EQ(read_file(manifest), manifest_bytes);
+  EXPECT_EQ(read_file(box.mp4()), mp4);
+  EXPECT_EQ(read_file(box.out / "tiny" / "diagnostics.csv"), csv);
+  fs::remove(box.out / "tiny" / "frames");
+  EXPECT_TRUE(rendered(box.render()));
 }
 
 TEST(Manifest, PlotAndGallerySkipWhenUpToDate) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include "output/output_dir.hpp"
@@ -16,6 +17,7 @@ namespace bookspin::output {
 namespace {
 namespace fs = std::filesystem;
 using bookspin::test::ScratchDir;
+using bookspin::test::tree_of;
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -182,6 +184,81 @@ TEST(AtomicOutput, RemovesTheTemporariesOfDeadRunsInItsFolder) {
   for (const auto& name : kept) write_text(dir / name, "x");
   AtomicFile file(dir / "clip.mp4");
   EXPECT_EQ(dir.entries(), kept_sorted(kept));
+}
+
+// ---- OutputSet: the outputs of one run, all or nothing (docs/outputs.md) ----------------
+
+TEST(OutputSet, CommitPutsEveryOutputInPlaceAndLeavesNothingAside) {
+  ScratchDir dir;
+  write_text(dir / "clip.mp4", "old mp4");
+  fs::create_directory(dir / "frames");
+  write_text(dir / "frames" / "frame_0.png", "old frame");
+  AtomicFile mp4(dir / "clip.mp4");
+  AtomicFile gif(dir / "clip.gif");  // no earlier GIF
+  AtomicDirectory frames(dir / "frames");
+  write_text(mp4.temp_path(), "new mp4");
+  write_text(gif.temp_path(), "new gif");
+  write_text(frames.temp_path() / "frame_1.png", "new frame");
+  OutputSet set;
+  set.add(mp4);
+  set.add(gif);
+  set.add(frames);
+  EXPECT_EQ(read_text(dir / "clip.mp4"), "old mp4");  // nothing in place before commit()
+  EXPECT_FALSE(fs::exists(dir / "clip.gif"));
+  set.commit();
+  EXPECT_TRUE(mp4.committed() && gif.committed() && frames.committed());
+  const std::map<std::string, std::string> expected{{"clip.gif", "new gif"},
+                                                    {"clip.mp4", "new mp4"},
+                                                    {"frames", "<dir>"},
+                                                    {"frames/frame_1.png", "new frame"}};
+  EXPECT_EQ(tree_of(dir.path()), expected);
+  EXPECT_THROW(set.commit(), std::logic_error);
+}
+
+// The muxer or a rename failing on the last output must not cost the ones before it: an
+// occupied GIF path (a folder with a file in it) cannot be replaced by a file, so the set
+// puts back the MP4 and the frames it had already put in place, removes the CSV that had no
+// earlier version, and leaves no temporary.
+TEST(OutputSet, AnOutputThatCannotBePutInPlaceLeavesTheFolderAsItWas) {
+  ScratchDir dir;
+  write_text(dir / "clip.mp4", "old mp4");
+  fs::create_directory(dir / "frames");
+  write_text(dir / "frames" / "frame_0.png", "old frame");
+  fs::create_directory(dir / "clip.gif");
+  write_text(dir / "clip.gif" / "someone's.txt", "occupied");
+  const auto before = tree_of(dir.path());
+  {
+    AtomicFile mp4(dir / "clip.mp4");
+    AtomicDirectory frames(dir / "frames");
+    AtomicFile csv(dir / "diagnostics.csv");
+    AtomicFile gif(dir / "clip.gif");
+    write_text(mp4.temp_path(), "new mp4");
+    write_text(frames.temp_path() / "frame_1.png", "new frame");
+    write_text(csv.temp_path(), "new csv");
+    write_text(gif.temp_path(), "new gif");
+    OutputSet set;
+    for (AtomicOutput* output : std::initializer_list<AtomicOutput*>{&mp4, &frames, &csv, &gif})
+      set.add(*output);
+    try {
+      set.commit();
+      FAIL() << "a GIF replaced a folder";
+    } catch (const OutputError& e) {
+      EXPECT_NE(std::string(e.what()).find((dir / "clip.gif").string()), std::string::npos)
+          << e.what();
+    }
+    EXPECT_FALSE(mp4.committed());
+    EXPECT_EQ(tree_of(dir.path()), before);  // before the outputs' destructors, too
+  }
+  EXPECT_EQ(tree_of(dir.path()), before);
+}
+
+TEST(OutputSet, AddingAFinishedOutputIsALogicError) {
+  ScratchDir dir;
+  AtomicFile file(dir / "a.txt");
+  write_text(file.temp_path(), "a");
+  file.commit();
+  OutputSet set;
+  EXPECT_THROW(set.add(file), std::logic_error);
 }
 
 // make_directories notes only what it made; remove_empty_made_directories takes back the

@@ -9,8 +9,11 @@ extern "C" {
 }
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <tuple>
+#include <utility>
 
 #include "decoded_clip.hpp"
 #include "mp4_probe.hpp"
@@ -71,22 +74,29 @@ TEST(GifEncoder, KeepsEveryStepthFrameScaledWithOnePaletteAndTheColours) {
     testing::expect_moving_square(probe.frames[j], kWidth, kHeight, 2 * j, 2, 10.0, 10.0);
 }
 
-/// Each video packet's duration in seconds as the container stores it (a GIF: each frame's
-/// delay), read with libavformat directly.
-std::vector<double> packet_durations(const fs::path& path) {
+/// Each video packet's start and duration in seconds as the container stores them (a GIF:
+/// each frame's delay), in the order stored, read with libavformat directly.
+struct PacketTimes {
+  std::vector<double> starts, durations;
+};
+
+PacketTimes packet_times(const fs::path& path) {
   AVFormatContext* format = nullptr;
-  std::vector<double> durations;
-  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return durations;
+  PacketTimes times;
+  if (avformat_open_input(&format, path.c_str(), nullptr, nullptr) < 0) return times;
   AVPacket* packet = av_packet_alloc();
   while (av_read_frame(format, packet) >= 0) {
-    durations.push_back(static_cast<double>(packet->duration) *
-                        av_q2d(format->streams[packet->stream_index]->time_base));
+    const double unit = av_q2d(format->streams[packet->stream_index]->time_base);
+    times.starts.push_back(static_cast<double>(packet->pts) * unit);
+    times.durations.push_back(static_cast<double>(packet->duration) * unit);
     av_packet_unref(packet);
   }
   av_packet_free(&packet);
   avformat_close_input(&format);
-  return durations;
+  return times;
 }
+
+std::vector<double> packet_durations(const fs::path& path) { return packet_times(path).durations; }
 
 // 61 frames at 30 frames/s as a 10 frames/s GIF: every 3rd frame (21 of them), each shown
 // 3/30 s, so the GIF lasts 2.1 s, the clip's 61/30 s rounded up to whole GIF frames; frame j
@@ -121,6 +131,67 @@ TEST(GifEncoder, DecodedGifHasTheClipsFrameCountAndDuration) {
   }
   EXPECT_NEAR(total, 2.1, 1e-9);
   EXPECT_LT(total - static_cast<double>(kSourceFrames) / kSourceFps, 3.0 / kSourceFps);
+}
+
+// A GIF's delays are whole centiseconds and browsers show delays under 2 cs as 10 cs, so a
+// GIF plays at most 50 frames/s: the rate fps / round(fps / gif_fps) beyond it is refused
+// (before the muxer could see two frames in one centisecond).
+TEST(GifEncoder, RefusesARateFasterThanFiftyFramesPerSecond) {
+  ScratchDir dir;
+  // {fps, gif_fps}: the played rates by hand are 240, 120, 60 (round(2.4) = 2) and 55.
+  for (const auto& [fps, gif_fps] : {std::pair{240, 240}, {120, 120}, {120, 50}, {55, 50}}) {
+    EXPECT_THROW(GifEncoder(dir / "a.gif", GifSettings{kWidth, kHeight, fps, 64, gif_fps}),
+                 std::invalid_argument)
+        << fps << " " << gif_fps;
+  }
+  // 50 (every frame), 40 (round(2.5) = 3), 48 (round(4.8) = 5), 50 (every 2nd of 100).
+  for (const auto& [fps, gif_fps] : {std::pair{50, 50}, {120, 48}, {240, 50}, {100, 50}})
+    EXPECT_NO_THROW(GifEncoder(dir / "b.gif", GifSettings{kWidth, kHeight, fps, 64, gif_fps}));
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+// 48 frames at the highest rates of the limits table, the GIF at the fastest it may play: the
+// muxers take every frame (no "non monotonically increasing" refusal), store strictly
+// increasing times, and each file lasts what the clip does.
+TEST(WebEncoders, HighFrameRatesGiveIncreasingTimesInEveryFormat) {
+  ScratchDir dir;
+  constexpr int kFrames48 = 48;
+  // {fps, gif_fps, step by hand}: 120 / 48 → every 3rd frame (40 frames/s); 240 / 50 → every
+  // 5th (48 frames/s).
+  for (const auto& [fps, gif_fps, step] : {std::tuple{120, 48, 3}, {240, 50, 5}}) {
+    const std::string tag = std::to_string(fps);
+    {
+      EncoderSettings mp4_settings{kWidth, kHeight, fps};
+      mp4_settings.preset = "ultrafast";
+      Mp4Encoder mp4(dir / (tag + ".mp4"), mp4_settings);
+      WebmEncoder webm(dir / (tag + ".webm"), WebmSettings{kWidth, kHeight, fps, 40, 1});
+      GifEncoder gif(dir / (tag + ".gif"), GifSettings{kWidth, kHeight, fps, 64, gif_fps});
+      for (int i = 0; i < kFrames48; ++i) {
+        const RgbaImage frame = moving_square_frame(kWidth, kHeight, i);
+        mp4.add_frame(frame);
+        webm.add_frame(frame);
+        gif.add_frame(frame);
+      }
+      mp4.finish();
+      webm.finish();
+      gif.finish();
+    }
+    const int gif_frames = (kFrames48 + step - 1) / step;
+    for (const auto& [ext, count, frame_s] :
+         {std::tuple{".mp4", kFrames48, 1.0 / fps},
+          {".webm", kFrames48, 1.0 / fps},
+          {".gif", gif_frames, static_cast<double>(step) / fps}}) {
+      const fs::path file = dir / (tag + ext);
+      std::vector<double> starts = packet_times(file).starts;
+      std::sort(starts.begin(), starts.end());  // H.264 stores B-frames out of order
+      ASSERT_EQ(static_cast<int>(starts.size()), count) << file;
+      for (std::size_t k = 1; k < starts.size(); ++k) EXPECT_GT(starts[k], starts[k - 1]) << file;
+      // Frame k starts at k × frame_s: to the millisecond (WebM) or centisecond (GIF).
+      for (int k = 0; k < count; ++k)
+        EXPECT_NEAR(starts[k] - starts[0], k * frame_s, 0.0051) << file << " frame " << k;
+    }
+    for (double delay : packet_durations(dir / (tag + ".gif"))) EXPECT_GE(delay, 0.02 - 1e-9);
+  }
 }
 
 /// This process's resident memory in bytes (/proc/self/statm).

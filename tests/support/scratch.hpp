@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,23 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+/// Every file and folder under `dir`, hidden ones included, as path relative to `dir` ('/'
+/// separated) → the file's bytes ("<dir>" for a folder): two calls compare equal only when
+/// nothing under `dir` was added, removed or changed.
+inline std::map<std::string, std::string> tree_of(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string name = e.path().lexically_relative(dir).generic_string();
+    if (e.is_directory()) {
+      files[name] = "<dir>";
+    } else {
+      std::ifstream in(e.path(), std::ios::binary);
+      files[name].assign(std::istreambuf_iterator<char>(in), {});
+    }
+  }
+  return files;
 }
 
 /// fresh_dir("scratch/<Suite>.<Test>") of the running GoogleTest test, removed again at the
