@@ -27,8 +27,9 @@ std::string other_format(const std::vector<unsigned char>& bytes) {
   };
   if (starts("\xff\xd8\xff")) return "a JPEG file, not a PNG";
   if (starts("GIF8")) return "a GIF file, not a PNG";
-  if (starts("RIFF") && bytes.size() >= 12 && std::string_view("WEBP") ==
-      std::string_view(reinterpret_cast<const char*>(bytes.data()) + 8, 4))
+  if (starts("RIFF") && bytes.size() >= 12 &&
+      std::string_view("WEBP") ==
+          std::string_view(reinterpret_cast<const char*>(bytes.data()) + 8, 4))
     return "a WebP file, not a PNG";
   if (starts("BM")) return "a BMP file, not a PNG";
   return "not a PNG file (no PNG signature)";
@@ -54,8 +55,8 @@ std::string check_header(const unsigned char* data, std::uint32_t length) {
   if (length != 13) return "its IHDR chunk is " + std::to_string(length) + " bytes, not 13";
   const std::uint32_t width = big_endian(data), height = big_endian(data + 4);
   if (width == 0 || height == 0 || width > kMaxTextureSide || height > kMaxTextureSide)
-    return "its size " + std::to_string(width) + "x" + std::to_string(height) +
-           " is outside 1 … " + std::to_string(kMaxTextureSide) + " a side";
+    return "its size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1 … " +
+           std::to_string(kMaxTextureSide) + " a side";
   if (!valid_depth(data[9], data[8]))
     return "its IHDR has bit depth " + std::to_string(data[8]) + " with colour type " +
            std::to_string(data[9]) + ", which PNG does not allow";

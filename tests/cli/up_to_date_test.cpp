@@ -178,6 +178,21 @@ TEST(Manifest, ChangedTextureRendersAgain) {
   EXPECT_TRUE(rendered(r)) << r.output;
 }
 
+// The page edges' texture is an input as much as the covers' (the plant of a manifest that
+// left it out went unnoticed once): a new pages.png renders again.
+TEST(Manifest, ChangedPagesTextureRendersAgain) {
+  const Sandbox box("manifest_texture_pages");
+  const fs::path golden = fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "golden";
+  fs::copy_file(golden / "face-pages-from-minus-x.png", box.scene.parent_path() / "pages.png");
+  box.write(replace(kScene, "[render]\n", "[render]\ntexture_pages = \"pages.png\"\n"));
+  ASSERT_TRUE(rendered(box.render()));
+  EXPECT_TRUE(skipped(box.render()));
+  fs::copy_file(golden / "face-spine-from-plus-x.png", box.scene.parent_path() / "pages.png",
+                fs::copy_options::overwrite_existing);
+  const CliResult r = box.render();
+  EXPECT_TRUE(rendered(r)) << r.output;
+}
+
 /// A closed box, `x` × 2 × 3, as OBJ text (outward winding).
 std::string box_obj(double x) {
   const std::string a = std::to_string(x);
@@ -201,6 +216,22 @@ TEST(Manifest, ChangedMeshRendersAgain) {
   std::ofstream(obj) << box_obj(1.5);
   const CliResult changed = box.render();
   EXPECT_TRUE(rendered(changed)) << changed.output;
+}
+
+// An OBJ recoloured through its .mtl file: the .obj's bytes and the geometry are the same,
+// the body's face colours are not, so the clip renders again.
+TEST(Manifest, MeshRecolouredThroughItsMtlRendersAgain) {
+  const Sandbox box("manifest_mtl");
+  const fs::path obj = box.scene.parent_path() / "box.obj";
+  const fs::path mtl = box.scene.parent_path() / "box.mtl";
+  std::ofstream(obj) << "mtllib box.mtl\nusemtl paint\n" << box_obj(1.0);
+  std::ofstream(mtl) << "newmtl paint\nKd 0.8 0.1 0.1\n";
+  box.write(std::string(kScene) + "[body]\nshape = \"mesh\"\nmesh = \"box.obj\"\n");
+  ASSERT_TRUE(rendered(box.render()));
+  EXPECT_TRUE(skipped(box.render()));
+  std::ofstream(mtl) << "newmtl paint\nKd 0.1 0.1 0.8\n";
+  const CliResult r = box.render();
+  EXPECT_TRUE(rendered(r)) << r.output;
 }
 
 TEST(Manifest, FailedRunLeavesNoManifest) {

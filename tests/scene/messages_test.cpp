@@ -42,8 +42,7 @@ std::string error_with_overrides(const std::string& text, const std::vector<std:
 
 TEST(Messages, ControlCharactersInAValueAreEscaped) {
   // TOML's escapes put a newline, a tab, ESC (a colour sequence) and CSI (U+009B) in the name.
-  const std::string name_error =
-      error_of("[scene]\nname = \"a\\nb\\tc\\u001b[31md\\u009b2J\"\n");
+  const std::string name_error = error_of("[scene]\nname = \"a\\nb\\tc\\u001b[31md\\u009b2J\"\n");
   EXPECT_EQ(name_error,
             "test.toml:2: scene.name: 'a\\nb\\tc\\x1b[31md\\u009b2J' is not a safe output name "
             "(letters, digits, '.', '_', '-'; no '/' or '..')");
@@ -90,7 +89,8 @@ TEST(Messages, ABodyTooSmallToFrameIsRefusedNamingItsKey) {
       std::string::npos);
   EXPECT_EQ(error_of(mesh_scene(small, "3e-6")), "");
   // A value just below the bound is not printed as the bound.
-  const std::string edge = error_of(mesh_scene(write_box(dir, "edge.obj", {0.5e-6f, 0.5e-6f, 0.99999999999e-6f}), "1.0"));
+  const std::string edge = error_of(
+      mesh_scene(write_box(dir, "edge.obj", {0.5e-6f, 0.5e-6f, 0.99999999999e-6f}), "1.0"));
   const auto at = edge.find("the body is ");
   ASSERT_NE(at, std::string::npos) << edge;
   EXPECT_LT(std::strtod(edge.c_str() + at + 12, nullptr), 1e-6) << edge;

@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 using Bytes = std::vector<unsigned char>;
 
 void put32(Bytes& out, std::uint32_t v) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<unsigned char>(v >> shift));
+  for (int shift = 24; shift >= 0; shift -= 8)
+    out.push_back(static_cast<unsigned char>(v >> shift));
 }
 
 /// One chunk: length, type, data, CRC over type and data.
@@ -43,7 +44,8 @@ Bytes one_pixel_png(std::uint32_t width = 1, std::uint32_t height = 1) {
   chunk(png, "IHDR", ihdr);
   // zlib: 0x78 0x01, a stored block of 2 bytes (LEN 2, NLEN ~2), then the Adler-32 of
   // {0x00, 0x80}: a = 1 + 0 + 0x80 = 0x81, b = 1 + 0x81 = 0x82 → 0x00820081.
-  chunk(png, "IDAT", {0x78, 0x01, 0x01, 0x02, 0x00, 0xfd, 0xff, 0x00, 0x80, 0x00, 0x82, 0x00, 0x81});
+  chunk(png, "IDAT",
+        {0x78, 0x01, 0x01, 0x02, 0x00, 0xfd, 0xff, 0x00, 0x80, 0x00, 0x82, 0x00, 0x81});
   chunk(png, "IEND", {});
   return png;
 }
@@ -52,7 +54,8 @@ fs::path write(const std::string& name, const Bytes& bytes) {
   const fs::path dir = test::fresh_dir("texture_file_test/" + name);
   const fs::path path = dir / name;
   std::ofstream(path, std::ios::binary)
-      .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+      .write(reinterpret_cast<const char*>(bytes.data()),
+             static_cast<std::streamsize>(bytes.size()));
   return path;
 }
 
@@ -115,11 +118,14 @@ TEST(TextureFile, CorruptChunksAndHeadersAreCaught) {
 
 TEST(TextureFile, TheSceneNamesTheKeyOfAnUnreadableTexture) {
   const fs::path jpeg = write("cover.jpg", {0xff, 0xd8, 0xff, 0xdb, 0, 0});
-  const std::string error = testing::error_of("[render]\ntexture_back = \"" + jpeg.string() + "\"\n");
-  EXPECT_EQ(error, "test.toml:2: render.texture_back: " + jpeg.string() + ": a JPEG file, not a PNG");
+  const std::string error =
+      testing::error_of("[render]\ntexture_back = \"" + jpeg.string() + "\"\n");
+  EXPECT_EQ(error,
+            "test.toml:2: render.texture_back: " + jpeg.string() + ": a JPEG file, not a PNG");
   const fs::path good = write("good.png", one_pixel_png());
-  EXPECT_EQ(testing::parse("[render]\ntexture_pages = \"" + good.string() + "\"\n").render.texture_pages,
-            good.string());
+  EXPECT_EQ(
+      testing::parse("[render]\ntexture_pages = \"" + good.string() + "\"\n").render.texture_pages,
+      good.string());
 }
 
 }  // namespace
