@@ -1,5 +1,6 @@
 // Every input of a cached product in its up-to-date check (docs/outputs.md, "Manifests and
-// up-to-date checks"). The list below names each input a clip or a plot reads: every scene key
+// up-to-date checks"). The list below names each input a clip, a plot or an accuracy report
+// reads: every scene key
 // (scenes/README.md, "Keys", and the [[compare]] keys), each texture file, the mesh file and
 // what it pulls in (an OBJ's .mtl, a glTF's .bin), the mesh's geometry and face colours, the
 // job's options and the program. Each is changed in turn, and the product's manifest head
@@ -21,7 +22,9 @@
 #include <string>
 #include <vector>
 
+#include "analysis/accuracy.hpp"
 #include "cache/run_cached.hpp"
+#include "products/accuracy.hpp"
 #include "products/clip.hpp"
 #include "products/plot.hpp"
 #include "scene/scene.hpp"
@@ -41,14 +44,18 @@ const fs::path kGolden = fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "golden";
 enum class Base { book, obj, gltf };
 
 /// One input: what is changed, before (`before`: --set overrides of both runs) and after (`set`:
-/// more overrides; `edit`: files changed in the scene's folder; `job`: the job's options).
+/// more overrides; `edit`: files changed in the scene's folder; `clip`, `plot`, `accuracy`: an
+/// option of that product's job, an input of that product alone).
 struct Input {
   std::string name;
   Base base = Base::book;
   std::vector<std::string> before = {};
   std::vector<std::string> set = {};
   std::function<void(const fs::path& dir)> edit = {};
-  std::function<void(ClipJob&)> job = {};
+  std::function<void(ClipJob&)> clip = {};
+  std::function<void(PlotJob&)> plot = {};
+  std::function<void(AccuracyJob&)> accuracy = {};
+  bool is_option() const { return clip || plot || accuracy; }
 };
 
 /// The OBJ box with its two parts coloured by `box.mtl`.
@@ -235,9 +242,22 @@ std::vector<Input> inputs() {
   list.push_back({"file:body.mesh .bin geometry", Base::gltf, {}, {}, [](const fs::path& dir) {
                     write_bytes(dir / "box.bin", box_gltf_buffer({1.0f, 2.0f, 3.5f}));
                   }});
+  // Each product's own options.
   list.push_back({"job:png", Base::book, {}, {}, {}, [](ClipJob& job) { job.write_png = false; }});
   list.push_back({"job:png_compression", Base::book, {}, {}, {}, [](ClipJob& job) {
                     job.png_compression = 6;
+                  }});
+  list.push_back({"job:width", Base::book, {}, {}, {}, {}, [](PlotJob& job) { job.width = 800; }});
+  list.push_back(
+      {"job:height", Base::book, {}, {}, {}, {}, [](PlotJob& job) { job.height = 500; }});
+  list.push_back({"job:flips", Base::book, {}, {}, {}, {}, {}, [](AccuracyJob& job) {
+                    job.request.flips = 3.0;
+                  }});
+  list.push_back({"job:dt", Base::book, {}, {}, {}, {}, {}, [](AccuracyJob& job) {
+                    job.request.dts = {0.01, 0.02};
+                  }});
+  list.push_back({"job:methods", Base::book, {}, {}, {}, {}, {}, [](AccuracyJob& job) {
+                    job.request.methods = analysis::parse_methods("rigid");
                   }});
   return list;
 }
@@ -249,15 +269,25 @@ std::string clip_head(const scene::Scene& scene, const Input& input, bool after)
   ClipJob job;
   job.scene = scene;
   job.out_dir = "out";
-  if (after && input.job) input.job(job);
+  if (after && input.clip) input.clip(job);
   return clip_manifest_head(job);
 }
 
-std::string plot_head(const scene::Scene& scene, const Input&, bool) {
+std::string plot_head(const scene::Scene& scene, const Input& input, bool after) {
   PlotJob job;
   job.scene = scene;
   job.out_dir = "out";
+  if (after && input.plot) input.plot(job);
   return plot_manifest_head(job);
+}
+
+std::string accuracy_head(const scene::Scene& scene, const Input& input, bool after) {
+  AccuracyJob job;
+  job.request.scene = scene;
+  job.request.dts = {0.01};
+  job.out_dir = "out";
+  if (after && input.accuracy) input.accuracy(job);
+  return accuracy_manifest_head(job);
 }
 
 scene::Scene scene_of(const fs::path& dir, const Input& input, bool after) {
@@ -289,7 +319,11 @@ std::string folder_name(std::string name) {
 
 void expect_each_input_makes_again(const std::string& product, const HeadOf& head_of) {
   for (const Input& input : inputs()) {
-    if (product != "clip" && input.job) continue;  // the clip's own options
+    // Another product's option.
+    if (input.is_option() && !(product == "clip"   ? bool(input.clip)
+                               : product == "plot" ? bool(input.plot)
+                                                   : bool(input.accuracy)))
+      continue;
     SCOPED_TRACE(product + ": " + input.name);
     const fs::path dir = fresh_dir("products/inputs/" + product + "/" + folder_name(input.name));
     write_sandbox(dir);
@@ -310,6 +344,10 @@ TEST(ProductInputs, EachInputChangedMakesTheClipAgainAndNothingChangedDoesNot) {
 
 TEST(ProductInputs, EachInputChangedMakesThePlotAgainAndNothingChangedDoesNot) {
   expect_each_input_makes_again("plot", plot_head);
+}
+
+TEST(ProductInputs, EachInputChangedMakesTheAccuracyReportAgainAndNothingChangedDoesNot) {
+  expect_each_input_makes_again("accuracy", accuracy_head);
 }
 
 // The program: a manifest written by another build (its build id) is stale.
@@ -383,7 +421,8 @@ TEST(ProductInputs, TheListNamesEveryDeclaredInput) {
   const std::vector<std::string> tile_keys = first_cells(readme, "| key (in each `[[compare]]`)");
   EXPECT_GT(tile_keys.size(), 5u);
   for (const std::string& key : tile_keys) EXPECT_TRUE(has_entry("compare." + key)) << key;
-  // What the heads of a clip and a plot hold, for a mesh comparison and the textured book.
+  // What the heads of a clip, a plot and an accuracy report hold, for a mesh comparison and the
+  // textured book.
   // Members derived from others are changed through them.
   const std::map<std::string, std::string> derived{
       {"manifest", ""},                                       // the format's version: not an input
@@ -404,7 +443,8 @@ TEST(ProductInputs, TheListNamesEveryDeclaredInput) {
   std::set<std::string> seen;
   for (const Input* input : {&mesh_compare, &book}) {
     const scene::Scene s = scene_of(dir, *input, false);
-    for (const std::string& head : {clip_head(s, *input, false), plot_head(s, *input, false)}) {
+    for (const std::string& head : {clip_head(s, *input, false), plot_head(s, *input, false),
+                                    accuracy_head(s, *input, false)}) {
       for (const std::string& m : members(head, "", 2)) seen.insert(m);
       for (const std::string& m : members(head, "  \"scene\": {\n", 4)) {
         static const std::regex tile("^compare\\[[0-9]+\\]\\.");
@@ -423,8 +463,6 @@ TEST(ProductInputs, TheListNamesEveryDeclaredInput) {
       }
       continue;
     }
-    // A plot's options (its image size) are the plot's: not in the clip's list.
-    if (name == "job:width" || name == "job:height") continue;
     EXPECT_TRUE(has_entry(name)) << name << " is in a manifest head but not in the list";
   }
 }
