@@ -8,6 +8,7 @@ namespace bookspin::cli {
 
 int export_command(const ExportOptions& options) {
   scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+  products::check_gltf_scene(scene);  // before any note or warning about the scene
   for (const std::string& warning : scene.warnings)
     std::cerr << "bookspin: warning: " << warning << '\n';
   if (const std::string note = jobs::lattice_note(scene); !note.empty())

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -115,6 +116,7 @@ class Welder {
 
   TriangleMesh mesh(double scale) {
     if (triangles_.empty()) reject(path_, "empty mesh: no triangles");
+    check_extent();
     weld_near();
     TriangleMesh mesh;
     mesh.vertices.resize(3, static_cast<Eigen::Index>(positions_.size()));
@@ -135,6 +137,28 @@ class Welder {
   }
 
  private:
+  /// Rejects a mesh whose size underflows single precision, in which assimp reads it: the
+  /// longest side of its bounding box must be a normal float (at least FLT_MIN, 1.2e-38).
+  /// Smaller coordinates read as 0 or as subnormals with a few bits left, so the triangles
+  /// collapse: that is the file's units, not its shape, and it is said so.
+  void check_extent() const {
+    float extent = 0.0f;
+    for (int k = 0; k < 3; ++k) {
+      float low = positions_[0][k], high = low;
+      for (const auto& p : positions_) {
+        low = std::min(low, p[k]);
+        high = std::max(high, p[k]);
+      }
+      extent = std::max(extent, high - low);
+    }
+    if (extent >= std::numeric_limits<float>::min()) return;
+    char size[64];
+    std::snprintf(size, sizeof size, "%g", static_cast<double>(extent));
+    reject(path_, std::string("vertex coordinates underflow: the mesh is ") + size +
+                      " across in single precision, in which meshes are read (numbers below "
+                      "1.2e-38 lose their digits or become 0); write it in larger units");
+  }
+
   /// Welds vertices closer than kWeldTolerance × the bounding box's longest side (in each
   /// coordinate) into the first of them: corners that a file means to be one but wrote with
   /// a rounding apart. Relative to the mesh's size, so a mesh welds the same at any scale
@@ -204,7 +228,11 @@ class Welder {
       if (!std::isfinite(raw.x) || !std::isfinite(raw.y) || !std::isfinite(raw.z)) {
         char where[96];
         std::snprintf(where, sizeof where, " (%g, %g, %g)", raw.x, raw.y, raw.z);
-        reject(path_, std::string("non-finite vertex coordinate") + where);
+        if (std::isnan(raw.x) || std::isnan(raw.y) || std::isnan(raw.z))
+          reject(path_, std::string("non-finite vertex coordinate") + where);
+        reject(path_, std::string("vertex coordinate overflows") + where +
+                          ": single precision, in which meshes are read, holds at most 3.4e38; "
+                          "write it in smaller units");
       }
       const aiVector3D p = to_file * raw;
       // The map below needs ordered keys: no NaN from a node transform either.

@@ -27,8 +27,10 @@ struct TriangleMesh {
 /// degenerate). Each coordinate is then multiplied by `scale` (> 0).
 /// Throws InputError "FILE: reason" for a missing file, a directory, an unknown extension, a
 /// binary STL whose header's triangle count does not match the file size (checked before
-/// parsing: truncated files and absurd counts), a file assimp cannot read, no triangles, or
-/// a non-finite coordinate.
+/// parsing: truncated files and absurd counts), a file assimp cannot read, no triangles, a
+/// NaN coordinate, a coordinate that overflows single precision (beyond ±3.4e38, which
+/// assimp reads as infinite) or a mesh whose size underflows it (bounding box under 1.2e-38
+/// across, FLT_MIN: its coordinates read as 0 or subnormal).
 TriangleMesh load_mesh(const std::filesystem::path& path, double scale = 1.0);
 
 }  // namespace bookspin::mesh

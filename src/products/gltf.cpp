@@ -107,13 +107,17 @@ std::filesystem::path gltf_path(const std::filesystem::path& out_dir, const scen
   return out_dir / (scene.name + ".glb");
 }
 
-GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
-                           const std::function<void(const std::string&)>& on_note) {
+void check_gltf_scene(const scene::Scene& scene) {
   if (!scene.compare.empty()) {
     throw InputError(scene.source.string() +
                      ": --gltf: a comparison scene ([[compare]]) has no single motion to export; "
                      "export one model's scene at a time");
   }
+}
+
+GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
+                           const std::function<void(const std::string&)>& on_note) {
+  check_gltf_scene(scene);
   // The particle model of the book, and of any other body (the lattice, docs/physics.md §13).
   const bool deforms = scene.model.kind == physics::ModelKind::particle;
   if (deforms && on_note) {

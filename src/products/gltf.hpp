@@ -21,6 +21,11 @@ struct GltfExportResult {
 /// OUT/<name>.glb, the one file an export of `scene` into `out_dir` writes.
 std::filesystem::path gltf_path(const std::filesystem::path& out_dir, const scene::Scene& scene);
 
+/// Throws InputError when `scene` cannot be exported (a comparison scene: no single motion).
+/// make_gltf() checks it first too; a command calls it before it prints anything about the
+/// scene, so that no note comes before an error that makes it moot.
+void check_gltf_scene(const scene::Scene& scene);
+
 /// Runs `scene` frame by frame and writes gltf_path(out_dir, scene) with output::write_glb: the
 /// book with its four face images (render::face_images, the scene's textures or the generated
 /// covers), a preset or mesh body with one material per colour; keyframe k at k / render.fps

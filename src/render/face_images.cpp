@@ -60,8 +60,9 @@ RgbaImage draw_face_image(FaceImage which) {
 
 std::string describe(cairo_status_t status, const std::string& path) {
   if (!std::filesystem::exists(path)) return "file not found";
-  if (status == CAIRO_STATUS_READ_ERROR) return "not a readable PNG";
-  return cairo_status_to_string(status);
+  // cairo reports a file it cannot decode as a PNG as "out of memory" (its libpng error
+  // path): say what it is, with cairo's words for what went wrong.
+  return std::string("not a readable PNG (cairo: ") + cairo_status_to_string(status) + ")";
 }
 
 }  // namespace

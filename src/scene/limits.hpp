@@ -29,6 +29,14 @@ struct Limit {
 /// Largest value of an integer limit that is std::int64_t's maximum (2⁶³ − 1 is not a double).
 inline constexpr double kInt64Max = 9223372036854775807.0;
 
+/// The smallest body, in length units: the longest side of the box that holds it in its
+/// principal frame (the book's largest `book.size` component) must be at least this, the
+/// smallest `book.size` and a unit-size mesh at the smallest `body.scale`. The automatic
+/// camera stands 1.1 to 126 times the body's radius away and refuses an eye within 1e-12 of
+/// its target (render/camera.cpp), 10⁶ times below; a camera placed by
+/// `render.camera_distance` must be as far from the centre. scenes/README.md, "Limits".
+inline constexpr double kMinBodySize = 1e-6;
+
 /// Every numeric scene key (scenes/README.md, "Keys" and "Limits"). Masses, lengths and spins
 /// are bounded on both sides so that moments (mass × length², 1e-24 … 1e24), angular momenta
 /// and energies stay well inside the double range for every model.
@@ -52,7 +60,7 @@ inline constexpr std::array kLimits{
     Limit{"render.height", 16, 7680, false, 720.0, true},
     Limit{"render.fps", 1, 240, false, 30.0, true},
     Limit{"render.fov_y", 1.0, 170.0, false, 30.0},
-    Limit{"render.camera_distance", 0.0, 1e4, false, 0.0},
+    Limit{"render.camera_distance", 0.0, 1e4, false, 0.0, false, kMinBodySize},
     Limit{"render.camera_direction", -1e12, 1e12, false, std::nullopt},
     Limit{"render.crf", 0, 51, false, 16.0, true},
     Limit{"render.png_compression", 0, 9, false, 1.0, true},

@@ -4,6 +4,8 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 
@@ -12,6 +14,7 @@
 #include "physics/exact_model.hpp"
 #include "physics/presets.hpp"
 #include "scene/model_reader.hpp"
+#include "scene/texture_file.hpp"
 #include "scene/toml_reader.hpp"
 
 namespace bookspin::scene {
@@ -86,14 +89,16 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   const std::string key = assignment.substr(0, eq);
   if (eq == std::string::npos || !is_dotted_key(key)) {
-    throw InputError("--set " + assignment + ": expected key=value, e.g. time.dt=0.01");
+    throw InputError("--set " + escape_controls(assignment) +
+                     ": expected key=value, e.g. time.dt=0.01");
   }
   toml::table parsed;
   try {
     const std::string doc = "value = " + assignment.substr(eq + 1);
     parsed = toml::parse(std::string_view(doc), std::string_view("--set"));
   } catch (const toml::parse_error& e) {
-    throw InputError("--set " + key + ": value is not valid TOML (" + first_line(e.description()) +
+    throw InputError("--set " + key + ": value is not valid TOML (" +
+                     escape_controls(first_line(e.description())) +
                      "); strings need quotes, e.g. key=\"text\"");
   }
   toml::table* table = &root;
@@ -135,6 +140,8 @@ std::string read_texture(TomlReader& r, std::string_view key, const std::filesys
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     r.fail(key, "texture file not found: " + path.string());
+  if (const std::string problem = png_problem(path); !problem.empty())
+    r.fail(key, path.string() + ": " + problem);
   return path.string();
 }
 
@@ -263,6 +270,25 @@ void read_identity(TomlReader& r, Scene& s) {
   s.description = r.string("scene.description", "");
 }
 
+/// A body so small that the camera cannot frame it is bad input here, before anything runs:
+/// the longest side of its box (principal frame, after body.scale) must be at least
+/// kMinBodySize (scene/limits.hpp). Presets and books meet it by their keys' limits; a mesh
+/// file in tiny units need not.
+void check_body_size(TomlReader& r, const Scene& s, double scale) {
+  const double size = s.body.cage.size.maxCoeff();
+  if (size >= kMinBodySize) return;
+  const bool mesh = s.body.shape == physics::BodyShape::mesh;
+  // Three digits say how far off it is, unless they round up to the bound itself.
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", size);
+  const std::string shown = std::strtod(text, nullptr) < kMinBodySize ? text : format_number(size);
+  r.fail(mesh ? "body.mesh" : "body.scale",
+         (mesh ? s.body_mesh + ": " : std::string()) + "the body is " + shown +
+             " across at body.scale = " + format_number(scale) +
+             " (the longest side of the box that holds it); a body must be at least " +
+             format_number(kMinBodySize) + " across for the camera to frame it");
+}
+
 /// The [body] table, and [book] for the book (docs/physics.md §12, scenes/README.md).
 void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
   const std::string name = r.string("body.shape", "book");
@@ -312,6 +338,7 @@ void read_body(TomlReader& r, Scene& s, const std::filesystem::path& origin) {
       s.warnings.push_back(path.string() + ": " + warning);
     s.body = body.body;
   }
+  check_body_size(r, s, scale);
 }
 
 /// initial.angular_velocity, or initial.spin_axis with initial.spin_rate (principal frame).
@@ -423,8 +450,9 @@ Scene parse_scene_text(std::string_view text, const std::filesystem::path& origi
     const std::string origin_name = origin.string();
     root = toml::parse(text, std::string_view(origin_name));
   } catch (const toml::parse_error& e) {
-    throw InputError(origin.string() + ":" + std::to_string(e.source().begin.line) +
-                     ": TOML syntax error: " + describe_syntax_error(e, text));
+    throw InputError(escape_controls(origin.string()) + ":" +
+                     std::to_string(e.source().begin.line) +
+                     ": TOML syntax error: " + escape_controls(describe_syntax_error(e, text)));
   }
   // Valid TOML, and every key has a default, but a file with no keys at all is almost
   // certainly a mistake (a truncated copy, the wrong file), not a request for the defaults.

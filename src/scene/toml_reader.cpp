@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -9,13 +11,6 @@
 namespace bookspin::scene {
 
 namespace {
-
-std::string format_number(double value) {
-  std::ostringstream out;
-  out.precision(10);
-  out << value;
-  return out.str();
-}
 
 std::string range_text(double lo, double hi, bool lo_open) {
   return std::string(lo_open ? "> " : ">= ") + format_number(lo) + " and <= " + format_number(hi);
@@ -46,6 +41,42 @@ bool has_key_below(const Keys& keys, const std::string& key) {
 }
 
 }  // namespace
+
+std::string format_number(double value) {
+  std::string text;
+  for (int digits = 10; digits <= 17; ++digits) {
+    std::ostringstream out;
+    out.precision(digits);
+    out << value;
+    text = out.str();
+    if (!std::isfinite(value) || std::strtod(text.c_str(), nullptr) == value) break;
+  }
+  return text;
+}
+
+std::string escape_controls(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    char buffer[8];
+    if (u == '\n' || u == '\t' || u == '\r') {
+      out += '\\';
+      out += u == '\n' ? 'n' : u == '\t' ? 't' : 'r';
+    } else if (u < 0x20 || u == 0x7f) {
+      std::snprintf(buffer, sizeof buffer, "\\x%02x", u);
+      out += buffer;
+    } else if (u == 0xc2 && i + 1 < text.size() &&
+               static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+               static_cast<unsigned char>(text[i + 1]) <= 0x9f) {
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned char>(text[++i]));
+      out += buffer;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
 
 TomlReader::TomlReader(const toml::table& root, std::string origin,
                        std::set<std::string> overridden, std::string key_prefix,
@@ -83,11 +114,12 @@ InputError TomlReader::error_at(std::string_view key, const toml::node* node,
   if (from_override(full_key)) {
     std::string where = "--set ";
     where.append(full_key).append(": ").append(reason);
-    return InputError(where);
+    return InputError(escape_controls(where));
   }
   if (!node) node = anchor_;
   const int line = node ? static_cast<int>(node->source().begin.line) : 0;
-  return InputError(origin_, line, full_key, reason);
+  return InputError(escape_controls(origin_), line, escape_controls(full_key),
+                    escape_controls(reason));
 }
 
 void TomlReader::fail(std::string_view key, const std::string& reason) const {

@@ -8,6 +8,7 @@
 #include <assimp/Importer.hpp>
 #include <charconv>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include "support/cli_runner.hpp"
@@ -165,6 +166,24 @@ TEST(ExportCommand, ComparisonSceneOrNoFormatIsOneLineExitTwoAndNothingWritten) 
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--gltf"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out / "o"));
+}
+
+// A comparison of a lattice body cannot be exported: the error comes alone, not after the
+// lattice's informational line (which it makes moot).
+TEST(ExportCommand, AComparisonIsRefusedBeforeAnyNoteAboutItsLattice) {
+  const fs::path dir = fresh_dir("export_compare_lattice");
+  std::ofstream(dir / "handles.toml") << "[body]\nshape = \"t-handle\"\n[time]\nframes = 2\n"
+                                         "[[compare]]\nlabel = \"lattice\"\n"
+                                         "model.kind = \"particle\"\n[[compare]]\n"
+                                         "label = \"exact\"\nmodel.kind = \"exact\"\n";
+  const SplitResult r = run_bookspin_split("export " + (dir / "handles.toml").string() +
+                                           " --gltf -o " + (dir / "o").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "bookspin: error: " + (dir / "handles.toml").string() +
+                       ": --gltf: a comparison scene ([[compare]]) has no single motion to "
+                       "export; export one model's scene at a time\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(dir / "o"));
 }
 
 }  // namespace

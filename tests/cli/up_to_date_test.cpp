@@ -166,17 +166,24 @@ TEST(Manifest, ForceOtherBuildOrBrokenManifestRendersAgain) {
   EXPECT_TRUE(rendered(box.render()));
 }
 
+// A cover's texture and the page edges' alike (a manifest that left the pages out once went
+// unnoticed): a changed file renders again.
 TEST(Manifest, ChangedTextureRendersAgain) {
-  const Sandbox box("manifest_texture");
   const fs::path golden = fs::path(BOOKSPIN_SOURCE_DIR) / "tests" / "golden";
-  fs::copy_file(golden / "face-front-from-plus-z.png", box.scene.parent_path() / "cover.png");
-  box.write(replace(kScene, "[render]\n", "[render]\ntexture_front = \"cover.png\"\n"));
-  ASSERT_TRUE(rendered(box.render()));
-  EXPECT_TRUE(skipped(box.render()));
-  fs::copy_file(golden / "face-back-from-minus-z.png", box.scene.parent_path() / "cover.png",
-                fs::copy_options::overwrite_existing);
-  const CliResult r = box.render();
-  EXPECT_TRUE(rendered(r)) << r.output;
+  for (const std::string face : {"front", "pages"}) {
+    SCOPED_TRACE(face);
+    const Sandbox box("manifest_texture_" + face);
+    const fs::path file = box.scene.parent_path() / (face + ".png");
+    fs::copy_file(golden / "face-front-from-plus-z.png", file);
+    box.write(
+        replace(kScene, "[render]\n", "[render]\ntexture_" + face + " = \"" + face + ".png\"\n"));
+    ASSERT_TRUE(rendered(box.render()));
+    EXPECT_TRUE(skipped(box.render()));
+    fs::copy_file(golden / "face-back-from-minus-z.png", file,
+                  fs::copy_options::overwrite_existing);
+    const CliResult r = box.render();
+    EXPECT_TRUE(rendered(r)) << r.output;
+  }
 }
 
 /// A closed box, `x` × 2 × 3, as OBJ text (outward winding).
@@ -202,6 +209,22 @@ TEST(Manifest, ChangedMeshRendersAgain) {
   std::ofstream(obj) << box_obj(1.5);
   const CliResult changed = box.render();
   EXPECT_TRUE(rendered(changed)) << changed.output;
+}
+
+// An OBJ recoloured through its .mtl file: the .obj's bytes and the geometry are the same,
+// the body's face colours are not, so the clip renders again.
+TEST(Manifest, MeshRecolouredThroughItsMtlRendersAgain) {
+  const Sandbox box("manifest_mtl");
+  const fs::path obj = box.scene.parent_path() / "box.obj";
+  const fs::path mtl = box.scene.parent_path() / "box.mtl";
+  std::ofstream(obj) << "mtllib box.mtl\nusemtl paint\n" << box_obj(1.0);
+  std::ofstream(mtl) << "newmtl paint\nKd 0.8 0.1 0.1\n";
+  box.write(std::string(kScene) + "[body]\nshape = \"mesh\"\nmesh = \"box.obj\"\n");
+  ASSERT_TRUE(rendered(box.render()));
+  EXPECT_TRUE(skipped(box.render()));
+  std::ofstream(mtl) << "newmtl paint\nKd 0.1 0.1 0.8\n";
+  const CliResult r = box.render();
+  EXPECT_TRUE(rendered(r)) << r.output;
 }
 
 TEST(Manifest, FailedRunKeepsTheEarlierOutputsAndManifest) {

@@ -150,6 +150,37 @@ TEST(LoadMesh, SmoothNormalsInTheFileMakeASmoothSurface) {
   EXPECT_EQ(box.face_colours.cols(), box.triangles.cols());
 }
 
+// Meshes are read in single precision: a box 1e-90 across reads as one point, one 1e300
+// across as infinite coordinates. Each is refused saying so, not as "no triangles" or a bare
+// "non-finite" coordinate.
+TEST(LoadMesh, CoordinatesThatUnderOrOverflowAreSaidToDoSo) {
+  const fs::path dir = fresh_dir("mesh/float-range");
+  const auto tetrahedron = [&dir](const std::string& name, const std::string& size) {
+    std::ofstream(dir / name) << "v 0 0 0\nv " << size << " 0 0\nv 0 " << size << " 0\nv 0 0 "
+                              << size << "\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    return dir / name;
+  };
+  const fs::path tiny = tetrahedron("tiny.obj", "1e-90");
+  EXPECT_EQ(error_loading(tiny),
+            tiny.string() +
+                ": vertex coordinates underflow: the mesh is 0 across in single precision, in "
+                "which meshes are read (numbers below 1.2e-38 lose their digits or become 0); "
+                "write it in larger units");
+  // 1e-40 is a subnormal float: not 0, but below FLT_MIN = 1.17549435e-38.
+  EXPECT_NE(
+      error_loading(tetrahedron("subnormal.obj", "1e-40")).find("vertex coordinates underflow"),
+      std::string::npos);
+  const fs::path huge = tetrahedron("huge.obj", "1e300");
+  EXPECT_EQ(error_loading(huge),
+            huge.string() +
+                ": vertex coordinate overflows (0, inf, 0): single precision, in which meshes are "
+                "read, holds at most 3.4e38; write it in smaller units");
+  // Just inside single precision either way: read, and at the file's size.
+  EXPECT_EQ(error_loading(tetrahedron("small.obj", "1e-37")), "(no error)");
+  const TriangleMesh big = load_mesh(tetrahedron("big.obj", "1e38"));
+  EXPECT_NEAR(big.vertices.maxCoeff(), 1e38, 1e31);
+}
+
 TEST(LoadMesh, MissingFileIsRejected) {
   const fs::path file = fresh_dir("mesh/missing") / "nothing.obj";
   EXPECT_EQ(error_loading(file), file.string() + ": mesh file not found");

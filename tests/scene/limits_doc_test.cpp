@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <string>
@@ -163,6 +164,38 @@ TEST(LimitsTable, BoundsAreWhatTheReaderEnforces) {
   }
   EXPECT_NE(error_of("[initial]\nseed = -1\n").find("initial.seed: "), std::string::npos);
   EXPECT_EQ(error_of("[initial]\nseed = 9223372036854775807\n"), "");
+}
+
+/// The number after "got " at the end of `message`, read back; NaN when there is none.
+double got_value(const std::string& message) {
+  const auto at = message.rfind("got ");
+  if (at == std::string::npos) return NAN;
+  return std::strtod(message.c_str() + at + 4, nullptr);
+}
+
+/// A value one double past a bound is printed as itself, never rounded onto the bound
+/// ("must be <= 1e+12, got 1e+12"): the number after "got " reads back to the value typed.
+TEST(LimitsTable, MessagesShowTheValueTypedNotTheBound) {
+  for (const Limit& limit : kLimits) {
+    const std::string key(limit.key);
+    SCOPED_TRACE(key);
+    if (limit.integer) continue;  // integers print exactly
+    const bool vector =
+        key == "book.size" || key == "initial.angular_velocity" || key == "render.camera_direction";
+    const double above = std::nextafter(limit.max, INFINITY);
+    const std::string error = error_of(scene_with(limit, number_text(above, false), vector));
+    EXPECT_EQ(got_value(error), above) << error;
+    if (!limit.min_open && limit.min != 0.0) {
+      const double below = std::nextafter(limit.min, -INFINITY);
+      const std::string low = error_of(scene_with(limit, number_text(below, false), vector));
+      EXPECT_EQ(got_value(low), below) << low;
+    }
+    if (limit.smallest_nonzero > 0.0 && !vector) {
+      const double tiny = std::nextafter(limit.smallest_nonzero, 0.0);
+      const std::string small = error_of(scene_with(limit, number_text(tiny, false), vector));
+      EXPECT_EQ(got_value(small), tiny) << small;
+    }
+  }
 }
 
 /// A scene without the key gets the table's default.
