@@ -109,18 +109,22 @@ overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistor
 
 std::vector<std::filesystem::path> write_accuracy_plots(
     const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
-    const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows) {
+    const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows,
+    const StopPoll& stop) {
+  // Every history first: a stop while they run leaves every file as it was.
+  std::vector<analysis::EnergyHistory> histories;
+  for (const auto& method : analysis::rigid_methods()) {
+    histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
+                                                 kLongTimeFlips, kLongTimeWindows,
+                                                 stop_predicate(stop, "accuracy energy")));
+    stop_if_asked(stop, "accuracy energy");
+  }
   std::vector<std::filesystem::path> written;
   const auto& work_png = paths.work_precision_png;
   output::write_png(work_png,
                     overlay::plot_image(work_precision_plot(rows, settings.flips), 1400, 900));
   written.push_back(work_png);
 
-  std::vector<analysis::EnergyHistory> histories;
-  for (const auto& method : analysis::rigid_methods()) {
-    histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
-                                                 kLongTimeFlips, kLongTimeWindows));
-  }
   const auto& energy_png = paths.energy_png;
   const auto& energy_csv = paths.energy_csv;
   write_energy_csv(energy_csv, histories);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/accuracy.hpp"
+#include "common/stop.hpp"
 #include "overlay/plot.hpp"
 
 namespace bookspin::charts {
@@ -40,11 +41,13 @@ struct AccuracyPlotPaths {
   std::filesystem::path energy_csv;          ///< its data: t, one column per method
 };
 
-/// Runs the long-time energy histories and writes the work–precision plot (from `rows`), the
-/// energy plot and its CSV. Returns the paths written. Throws OutputError when a file cannot
-/// be written.
+/// Runs the long-time energy histories, then writes the work–precision plot (from `rows`), the
+/// energy plot and its CSV. Returns the paths written. `stop` is polled while the histories
+/// run ("accuracy energy"): a signal throws Interrupted before any file is written. Throws
+/// OutputError when a file cannot be written.
 std::vector<std::filesystem::path> write_accuracy_plots(
     const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
-    const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows);
+    const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows,
+    const StopPoll& stop = {});
 
 }  // namespace bookspin::charts

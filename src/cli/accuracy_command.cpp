@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "products/accuracy.hpp"
 
 namespace bookspin::cli {
@@ -15,6 +16,7 @@ int accuracy_command(const AccuracyOptions& options) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   };
+  job.request.stop_signal = stop_poll();
   job.out_dir = options.out_dir;
   for (const auto& path : products::make_accuracy(job)) std::printf("wrote %s\n", path.c_str());
   return kExitOk;

@@ -26,6 +26,7 @@ output::SinkOptions sink_options(const ClipRequest& request) {
   s.webm_crf = r.webm_crf;
   s.gif_width = r.gif_width;
   s.gif_fps = r.gif_fps;
+  s.stop = request.stop_signal;
   return s;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "charts/accuracy_plots.hpp"
+#include "common/stop.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
@@ -25,6 +26,9 @@ struct AccuracyRequest {
   std::vector<double> dts;  ///< time steps to try, time units
   /// Receives the table, a line at a time as each row is measured (no newline).
   std::function<void(const std::string& line)> on_line;
+  /// Polled while the runs go ("accuracy runs", "accuracy energy"; every few dozen steps): a
+  /// signal throws Interrupted before any file is written. May be empty.
+  StopPoll stop_signal;
 };
 
 /// The most steps one method may take at one dt (flips × flip period / dt).

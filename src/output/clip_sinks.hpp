@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/rgba_image.hpp"
+#include "common/stop.hpp"
 #include "output/atomic_output.hpp"
 #include "output/bounded_queue.hpp"
 #include "output/diagnostics_csv.hpp"
@@ -47,6 +48,9 @@ struct SinkOptions {
   int webm_crf = 32;    ///< WebmSettings::crf
   int gif_width = 640;  ///< GifSettings::width
   int gif_fps = 15;     ///< GifSettings::gif_fps
+  /// Polled by finish() while the encoders finish their long passes (the MP4's and WebM's
+  /// flushes, the GIF's palette pass): a signal throws Interrupted (common/stop.hpp).
+  StopPoll stop;
 };
 
 class ClipSinks {
@@ -61,7 +65,9 @@ class ClipSinks {
   /// Queues frame `index` (blocks while the queues are full, so memory stays bounded) and
   /// writes its CSV row. Rethrows the first error of a worker.
   void add(int index, RgbaImage image, const physics::Diagnostics& diagnostics);
-  /// Drains the queues, then renames every output into place.
+  /// Drains the queues, then renames every output into place. Throws Interrupted when
+  /// SinkOptions::stop answers a signal while an encoder finishes; the destructor then
+  /// removes what is not in place.
   void finish();
   /// A frame buffer the sinks are done with, to render the next frame into instead of
   /// allocating (and page-faulting) a new one; std::nullopt if none is free now.

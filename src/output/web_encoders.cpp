@@ -114,8 +114,9 @@ struct StreamFile {
     if (rc < 0) throw_io(std::string("cannot write the header of ") + label, rc);
   }
 
-  /// Encodes `frame` (null: flush) and muxes the packets that are ready.
-  void encode(const AVFrame* frame) {
+  /// Encodes `frame` (null: flush) and muxes the packets that are ready. While flushing,
+  /// `stop` is polled before each packet (`stage`): a signal throws Interrupted.
+  void encode(const AVFrame* frame, const StopPoll& stop = {}, std::string_view stage = {}) {
     int rc = avcodec_send_frame(codec.get(), frame);
     if (rc < 0) {
       throw EncoderError(std::string(codec->codec->name) +
@@ -123,6 +124,7 @@ struct StreamFile {
     }
     if (frame != nullptr) ++frames;
     for (;;) {
+      if (frame == nullptr) stop_if_asked(stop, stage);
       rc = avcodec_receive_packet(codec.get(), packet.get());
       if (rc == AVERROR_EOF || (frame != nullptr && rc == AVERROR(EAGAIN))) return;
       if (rc < 0) {
@@ -136,14 +138,15 @@ struct StreamFile {
     }
   }
 
-  /// Flushes the encoder, writes the trailer, closes and renames the file into place.
-  void finish() {
+  /// Flushes the encoder (polling `stop` at `stage`, see encode()), writes the trailer,
+  /// closes and renames the file into place.
+  void finish(const StopPoll& stop = {}, std::string_view stage = {}) {
     if (closed) throw std::logic_error(std::string(label) + " finish called twice");
     closed = true;
     if (frames == 0)
       throw EncoderError(std::string(label) + " \"" + output.final_path().string() +
                          "\" has no frames");
-    encode(nullptr);
+    encode(nullptr, stop, stage);
     int rc = av_write_trailer(format.get());
     if (rc < 0) throw_io(std::string("cannot finish ") + label, rc);
     rc = avio_closep(&format->pb);
@@ -230,7 +233,7 @@ void WebmEncoder::add_frame(const RgbaImage& image) {
   s.file.encode(s.frame.get());
 }
 
-void WebmEncoder::finish() { impl_->file.finish(); }
+void WebmEncoder::finish(const StopPoll& stop) { impl_->file.finish(stop, "webm flush"); }
 std::int64_t WebmEncoder::frame_count() const { return impl_->file.frames; }
 
 // ----------------------------------------------------------------------------------- GIF
@@ -428,14 +431,16 @@ struct GifEncoder::Impl {
 
   AVRational time_base() const { return AVRational{step, settings.fps}; }
   std::size_t frame_bytes() const { return static_cast<std::size_t>(settings.width) * height * 4; }
-  /// Applies `palette` to every stored frame and encodes them in order.
-  void apply_palette(AVFrame* palette);
+  /// Applies `palette` to every stored frame and encodes them in order, polling `stop`
+  /// ("gif palette") before each.
+  void apply_palette(AVFrame* palette, const StopPoll& stop);
   /// Encodes every frame `sink` has ready; at the end (`eof`) until it has none left.
-  void pull(AVFilterContext* sink, bool eof);
+  void pull(AVFilterContext* sink, bool eof, const StopPoll& stop = {});
 };
 
-void GifEncoder::Impl::pull(AVFilterContext* sink, bool eof) {
+void GifEncoder::Impl::pull(AVFilterContext* sink, bool eof, const StopPoll& stop) {
   for (;;) {
+    if (eof) stop_if_asked(stop, "gif palette");
     av_frame_unref(filtered.get());
     const int rc = av_buffersink_get_frame(sink, filtered.get());
     if (rc == AVERROR(EAGAIN) && !eof) return;
@@ -447,7 +452,7 @@ void GifEncoder::Impl::pull(AVFilterContext* sink, bool eof) {
   }
 }
 
-void GifEncoder::Impl::apply_palette(AVFrame* palette) {
+void GifEncoder::Impl::apply_palette(AVFrame* palette, const StopPoll& stop) {
   AVFilterContext* frames_source = nullptr;
   AVFilterContext* palette_in = nullptr;
   AVFilterContext* sink = nullptr;
@@ -467,6 +472,7 @@ void GifEncoder::Impl::apply_palette(AVFrame* palette) {
   push(palette_in, palette);
   push(palette_in, nullptr);  // one palette for the whole clip
   for (std::int64_t index = 0;; ++index) {
+    stop_if_asked(stop, "gif palette");
     const int rc = av_frame_make_writable(scaled.get());
     if (rc < 0) throw EncoderError("frame buffer: " + libav::error_text(rc));
     if (scaled->linesize[0] != settings.width * 4)
@@ -477,7 +483,7 @@ void GifEncoder::Impl::apply_palette(AVFrame* palette) {
     pull(sink, false);
   }
   push(frames_source, nullptr);
-  pull(sink, true);
+  pull(sink, true, stop);
 }
 
 GifEncoder::GifEncoder(std::filesystem::path path, const GifSettings& s) {
@@ -539,7 +545,7 @@ void GifEncoder::add_frame(const RgbaImage& image) {
   g.spill->append(g.scaled->data[0]);
 }
 
-void GifEncoder::finish() {
+void GifEncoder::finish(const StopPoll& stop) {
   Impl& g = *impl_;
   if (!g.file.closed && g.seen > 0) {
     push(g.palette_source, nullptr);  // end of stream: palettegen gives its palette
@@ -548,9 +554,9 @@ void GifEncoder::finish() {
     const int rc = av_buffersink_get_frame(g.palette_sink, palette.get());
     if (rc < 0) throw EncoderError("GIF palette (palettegen): " + libav::error_text(rc));
     g.palette_graph.reset();  // its counts are no longer needed
-    g.apply_palette(palette.get());
+    g.apply_palette(palette.get(), stop);
   }
-  g.file.finish();
+  g.file.finish(stop, "gif palette");
 }
 
 std::int64_t GifEncoder::frame_count() const { return impl_->file.frames; }

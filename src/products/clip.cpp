@@ -142,12 +142,15 @@ ClipOutcome make_clip(const ClipJob& job) {
   ClipOutcome done;
   done.outcome = cache::run_cached(
       {layout.manifest, head, job.out_dir, job.force, job.verify,
-       [&]() -> std::optional<cache::JobOutputs> {
-         done.result = clip::render_clip(clip_request(job));
-         if (done.result.signal != 0) return std::nullopt;
-         done.warnings = divergence_warnings(job.scene.name, done.result);
-         return cache::JobOutputs{cache::manifest_note(job.scene) + warnings_json(done.warnings),
-                                  clip_outputs(job, layout)};
+       [&] {
+         // Stopped between frames (result.signal) or while the encoders finished (Interrupted).
+         return unless_interrupted(done.result.signal, [&]() -> std::optional<cache::JobOutputs> {
+           done.result = clip::render_clip(clip_request(job));
+           if (done.result.signal != 0) return std::nullopt;
+           done.warnings = divergence_warnings(job.scene.name, done.result);
+           return cache::JobOutputs{cache::manifest_note(job.scene) + warnings_json(done.warnings),
+                                    clip_outputs(job, layout)};
+         });
        }},
       remake_note_for(job.on_remake, job.scene.name));
   if (done.outcome == cache::CacheOutcome::up_to_date)

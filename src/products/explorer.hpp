@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/stop.hpp"
 #include "products/outcome.hpp"
 #include "scene/scene.hpp"
 
@@ -42,6 +43,9 @@ struct ExplorerPageRequest {
   std::vector<scene::Scene> scenes;  ///< in the page's order; names must differ
   std::filesystem::path shell;       ///< the page without data (web/build.sh)
   std::filesystem::path out_dir;     ///< writes OUT/explorer.html
+  /// Polled before each scene ("explore scenes") and before the page is written ("explore
+  /// write"): a signal throws Interrupted; the earlier page and its manifest stay.
+  StopPoll stop_signal;
 };
 
 struct ExplorerPageResult {

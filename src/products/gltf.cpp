@@ -108,7 +108,8 @@ std::filesystem::path gltf_path(const std::filesystem::path& out_dir, const scen
 }
 
 GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
-                           const std::function<void(const std::string&)>& on_note) {
+                           const std::function<void(const std::string&)>& on_note,
+                           const StopPoll& stop) {
   if (!scene.compare.empty()) {
     throw InputError(scene.source.string() +
                      ": --gltf: a comparison scene ([[compare]]) has no single motion to export; "
@@ -131,7 +132,9 @@ GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::pat
   analysis::FrameSource source(scene);
   physics::Pose pose;
   Eigen::Vector4d previous(0, 0, 0, 1);
-  while (source.next(pose)) {
+  for (;;) {
+    stop_if_asked(stop, "export frames");
+    if (!source.next(pose)) break;
     // (w, x, y, z) with w ≥ 0, then the sign nearest the previous keyframe's: q and −q are the
     // same rotation, and interpolating between keyframes of opposite sign would spin the long way.
     const Eigen::Vector4d wxyz = output::pose_quaternion(pose.diagnostics.orientation);
@@ -158,6 +161,7 @@ GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::pat
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw_output_error("cannot create directory", out_dir, ec.value());
+  stop_if_asked(stop, "export write");
   output::write_glb(result.path, scene.name, parts, animation);
   return result;
 }

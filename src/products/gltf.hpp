@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "common/stop.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -27,9 +28,12 @@ std::filesystem::path gltf_path(const std::filesystem::path& out_dir, const scen
 /// seconds with the rotation of Simulator::orientation() (unit quaternion, body→world, signs
 /// kept continuous from frame to frame) and the centre of mass as translation. A deforming
 /// model (particle, lattice) exports its best-fit rigid motion: `on_note` is told so.
+/// `stop` is polled before each frame ("export frames") and once more before the file is
+/// written ("export write"): a signal throws Interrupted, and the previous file stays.
 /// Throws InputError for a comparison scene (no single motion), render::RenderError for a
 /// missing texture or font, OutputError if the file cannot be written.
 GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
-                           const std::function<void(const std::string&)>& on_note = {});
+                           const std::function<void(const std::string&)>& on_note = {},
+                           const StopPoll& stop = {});
 
 }  // namespace bookspin::products
