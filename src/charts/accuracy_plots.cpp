@@ -114,9 +114,10 @@ std::vector<std::filesystem::path> write_accuracy_plots(
   // Every history first: a stop while they run leaves every file as it was.
   std::vector<analysis::EnergyHistory> histories;
   for (const auto& method : analysis::rigid_methods()) {
+    stop_if_asked(stop, "accuracy energy");
     histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
                                                  kLongTimeFlips, kLongTimeWindows,
-                                                 stop_predicate(stop, "accuracy energy")));
+                                                 stop_predicate(stop, "accuracy energy steps")));
     stop_if_asked(stop, "accuracy energy");
   }
   std::vector<std::filesystem::path> written;

@@ -42,8 +42,9 @@ struct AccuracyPlotPaths {
 };
 
 /// Runs the long-time energy histories, then writes the work–precision plot (from `rows`), the
-/// energy plot and its CSV. Returns the paths written. `stop` is polled while the histories
-/// run ("accuracy energy"): a signal throws Interrupted before any file is written. Throws
+/// energy plot and its CSV. Returns the paths written. `stop` is polled around each history
+/// ("accuracy energy") and inside it ("accuracy energy steps"): a signal throws Interrupted
+/// before any file is written. Throws
 /// OutputError when a file cannot be written.
 std::vector<std::filesystem::path> write_accuracy_plots(
     const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,

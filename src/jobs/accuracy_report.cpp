@@ -133,8 +133,9 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
   std::vector<analysis::AccuracyRow> rows;
   for (const auto& method : analysis::accuracy_methods()) {
     for (double dt : request.dts) {
+      stop_if_asked(request.stop_signal, "accuracy runs");
       rows.push_back(analysis::measure(settings, exact, method, dt,
-                                       stop_predicate(request.stop_signal, "accuracy runs")));
+                                       stop_predicate(request.stop_signal, "accuracy steps")));
       stop_if_asked(request.stop_signal, "accuracy runs");  // the row of a stopped run is cut
       say(table_row(rows.back()));
     }

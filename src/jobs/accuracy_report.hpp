@@ -26,7 +26,8 @@ struct AccuracyRequest {
   std::vector<double> dts;  ///< time steps to try, time units
   /// Receives the table, a line at a time as each row is measured (no newline).
   std::function<void(const std::string& line)> on_line;
-  /// Polled while the runs go ("accuracy runs", "accuracy energy"; every few dozen steps): a
+  /// Polled before and after each run ("accuracy runs") and inside it every few dozen steps
+  /// ("accuracy steps"), and so in the long-time energy runs (charts::write_accuracy_plots): a
   /// signal throws Interrupted before any file is written. May be empty.
   StopPoll stop_signal;
 };

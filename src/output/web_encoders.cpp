@@ -547,6 +547,7 @@ void GifEncoder::add_frame(const RgbaImage& image) {
 
 void GifEncoder::finish(const StopPoll& stop) {
   Impl& g = *impl_;
+  stop_if_asked(stop, "gif finish");
   if (!g.file.closed && g.seen > 0) {
     push(g.palette_source, nullptr);  // end of stream: palettegen gives its palette
     libav::FramePtr palette(av_frame_alloc());

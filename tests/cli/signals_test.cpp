@@ -2,9 +2,11 @@
 // passes, sweep, accuracy, explore, gallery) within a second, with exit status 130 or 143, the
 // previous outputs and their manifest byte-identical and no temporary left (docs/outputs.md,
 // "Signals"). Each signal comes at a named stage of the run (the command line's test hooks,
-// src/cli/interrupt.hpp): on a long stage the test signals as soon as the stage's first line
-// appears, so the time to exit measures how often that loop polls; a stage too short to catch in
-// flight is held at its first poll until the signal has arrived.
+// src/cli/interrupt.hpp): for a long loop the test signals on the line of the stage polled just
+// before the loop starts ("gif finish" before the palette pass, "sweep point" before a point's
+// steps, "accuracy runs" before a run's steps), so the time to exit measures how often the loop
+// itself polls; a stage too short to catch in flight is held at its first poll until the signal
+// has arrived.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -64,15 +66,14 @@ TEST_P(ExportSignal, StopsTheFrameLoopAndKeepsThePreviousGlb) {
   const ScratchDir dir;
   const fs::path out = dir.path() / "out";
   const std::vector<std::string> common = words({"export", kFig09, "--gltf", "-o", out.string()});
-  const CliResult first = run_bookspin("export " + kFig09 + " --gltf -o " + out.string() +
-                                       " --frames 10");
+  const CliResult first =
+      run_bookspin("export " + kFig09 + " --gltf -o " + out.string() + " --frames 10");
   ASSERT_EQ(first.status, 0) << first.output;
   const auto before = snapshot(out);
   ASSERT_EQ(before.size(), 1u);
   // 20000 frames of 300 steps: seconds, even on a fast machine.
-  expect_stopped_cleanly(
-      common + words({"--frames", "20000", "--set", "time.steps_per_frame=300"}), kReport,
-      "export frames", GetParam(), out, before);
+  expect_stopped_cleanly(common + words({"--frames", "20000", "--set", "time.steps_per_frame=300"}),
+                         kReport, "export frames", GetParam(), out, before);
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, ExportSignal, ::testing::Values(SIGINT, SIGTERM),
@@ -113,16 +114,16 @@ INSTANTIATE_TEST_SUITE_P(
     Signals, RenderFinishSignal,
     ::testing::Values(
         // 150 frames of 640 × 360, every one kept: a palette pass of seconds.
-        FinishCase{"gif", "gif palette", kReport, SIGINT,
+        FinishCase{"gif", "gif finish", kReport, SIGINT,
                    words({"--frames", "150", "--no-png", "--set", "render.width=640", "--set",
                           "render.height=360", "--set", "render.gif_width=640", "--set",
                           "render.gif_fps=30", "--set", "render.panel=false"})},
-        FinishCase{"webm", "webm flush", kHold, SIGTERM,
-                   words({"--frames", "20", "--set", "render.width=96", "--set",
-                          "render.height=64"})},
-        FinishCase{"mp4", "mp4 flush", kHold, SIGINT,
-                   words({"--frames", "20", "--set", "render.width=96", "--set",
-                          "render.height=64"})}),
+        FinishCase{
+            "webm", "webm flush", kHold, SIGTERM,
+            words({"--frames", "20", "--set", "render.width=96", "--set", "render.height=64"})},
+        FinishCase{
+            "mp4", "mp4 flush", kHold, SIGINT,
+            words({"--frames", "20", "--set", "render.width=96", "--set", "render.height=64"})}),
     [](const auto& info) { return info.param.format; });
 
 // A sweep's running points are abandoned: their physics loops poll every 64 steps.
@@ -138,10 +139,10 @@ TEST(Signals, SweepAbandonsItsRunningPointsAndKeepsThePreviousSweep) {
   ASSERT_TRUE(before.count("fig09-matrix-unstable-x-sweep.csv"));
   ASSERT_TRUE(before.count("fig09-matrix-unstable-x/sweep-manifest.json"));
   // Two points of 100000 frames on two threads: each runs for seconds.
-  expect_stopped_cleanly(words({"sweep", kFig09, "--vary", "time.dt=0.01:0.02:2", "--measure",
-                                "energy_drift", "-j", "2", "-o", out.string(), "--set",
-                                "time.frames=100000"}),
-                         kReport, "sweep steps", SIGINT, out, before);
+  expect_stopped_cleanly(
+      words({"sweep", kFig09, "--vary", "time.dt=0.01:0.02:2", "--measure", "energy_drift", "-j",
+             "2", "-o", out.string(), "--set", "time.frames=100000"}),
+      kReport, "sweep point", SIGINT, out, before);
 }
 
 /// Writes `text` to `path`.
@@ -155,8 +156,8 @@ void write_text(const fs::path& path, const std::string& text) {
 TEST(Signals, AccuracyStopsItsRunsAndKeepsThePreviousReport) {
   const ScratchDir dir;
   const fs::path out = dir.path() / "out";
-  for (const char* suffix : {"-accuracy.csv", "-accuracy.png", "-work-precision.png",
-                             "-energy.png", "-energy.csv"})
+  for (const char* suffix :
+       {"-accuracy.csv", "-accuracy.png", "-work-precision.png", "-energy.png", "-energy.csv"})
     write_text(out / (std::string("exact-unstable-x") + suffix), std::string("earlier ") + suffix);
   const auto before = snapshot(out);
   // 100 flips at dt = 0.001: 2·10⁷ steps a method.
@@ -178,8 +179,8 @@ TEST(Signals, ExploreKeepsThePreviousPageAndManifest) {
   const ScratchDir dir;
   const fs::path out = dir.path() / "out";
   const std::string shell = fake_shell(dir.path()).string();
-  const CliResult first = run_bookspin("explore " + kFig09 + " --shell " + shell + " -o " +
-                                       out.string());
+  const CliResult first =
+      run_bookspin("explore " + kFig09 + " --shell " + shell + " -o " + out.string());
   ASSERT_EQ(first.status, 0) << first.output;
   const auto before = snapshot(out);
   ASSERT_TRUE(before.count("explorer.html"));
@@ -201,8 +202,8 @@ TEST(Signals, GalleryKeepsThePreviousPageAndManifest) {
   ASSERT_TRUE(before.count("gallery-manifest.json"));
   for (const char* stage : {"gallery scenes", "gallery write"}) {
     expect_stopped_cleanly(
-        words({"gallery", out.string(), kFig09, scene_path("exact-unstable-x"), "--force"}),
-        kHold, stage, SIGINT, out, before);
+        words({"gallery", out.string(), kFig09, scene_path("exact-unstable-x"), "--force"}), kHold,
+        stage, SIGINT, out, before);
   }
 }
 

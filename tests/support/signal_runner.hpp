@@ -57,7 +57,8 @@ struct SignalledRun {
 /// Starts bookspin with `args` (one word each; stdout to /dev/null, stderr read here) and the
 /// environment variable `hook` ("BOOKSPIN_TEST_REPORT_STAGES" or "BOOKSPIN_TEST_HOLD_AT") set to
 /// `stage`; on reading the line "bookspin: stage: <stage>" sends `signal` and waits for the
-/// exit. A run that has not reached the stage within five minutes is killed.
+/// exit. A run that has not reached the stage within five minutes, or not ended half a minute
+/// after the signal, is killed (status 137).
 inline SignalledRun signal_at_stage(const std::vector<std::string>& args, const std::string& hook,
                                     const std::string& stage, int signal) {
   using Clock = std::chrono::steady_clock;
@@ -97,15 +98,15 @@ inline SignalledRun signal_at_stage(const std::vector<std::string>& args, const 
       signalled = Clock::now();
       kill(pid, signal);
     }
-    if (!run.reached && Clock::now() > deadline) {
+    // Not there within five minutes, or still running half a minute after the signal.
+    if (Clock::now() > (run.reached ? signalled + std::chrono::seconds(30) : deadline)) {
       kill(pid, SIGKILL);
       break;
     }
   }
   close(fds[0]);
   run.status = wait_status(pid);
-  if (run.reached)
-    run.to_exit_s = std::chrono::duration<double>(Clock::now() - signalled).count();
+  if (run.reached) run.to_exit_s = std::chrono::duration<double>(Clock::now() - signalled).count();
   return run;
 }
 
