@@ -53,9 +53,12 @@ StopPoll stop_poll() {
     };
   }
   if (std::getenv("BOOKSPIN_TEST_REPORT_STAGES") != nullptr) {
+    // The signal as it was before the line: a test that signals on reading the line meets
+    // the loop after this poll, never this poll itself, whatever the threads' timing.
     return [](std::string_view stage) {
+      const int signal = interrupt_signal();
       report_stage(stage);
-      return interrupt_signal();
+      return signal;
     };
   }
   return [](std::string_view) { return interrupt_signal(); };

@@ -431,8 +431,8 @@ struct GifEncoder::Impl {
 
   AVRational time_base() const { return AVRational{step, settings.fps}; }
   std::size_t frame_bytes() const { return static_cast<std::size_t>(settings.width) * height * 4; }
-  /// Applies `palette` to every stored frame and encodes them in order, polling `stop`
-  /// ("gif palette") before each.
+  /// Applies `palette` to every stored frame and encodes them in order, polling `stop` as
+  /// it starts ("gif palette pass") and before each frame ("gif palette frames").
   void apply_palette(AVFrame* palette, const StopPoll& stop);
   /// Encodes every frame `sink` has ready; at the end (`eof`) until it has none left.
   void pull(AVFilterContext* sink, bool eof, const StopPoll& stop = {});
@@ -440,7 +440,7 @@ struct GifEncoder::Impl {
 
 void GifEncoder::Impl::pull(AVFilterContext* sink, bool eof, const StopPoll& stop) {
   for (;;) {
-    if (eof) stop_if_asked(stop, "gif palette");
+    if (eof) stop_if_asked(stop, "gif palette frames");
     av_frame_unref(filtered.get());
     const int rc = av_buffersink_get_frame(sink, filtered.get());
     if (rc == AVERROR(EAGAIN) && !eof) return;
@@ -471,8 +471,9 @@ void GifEncoder::Impl::apply_palette(AVFrame* palette, const StopPoll& stop) {
   palette->pts = 0;
   push(palette_in, palette);
   push(palette_in, nullptr);  // one palette for the whole clip
+  stop_if_asked(stop, "gif palette pass");
   for (std::int64_t index = 0;; ++index) {
-    stop_if_asked(stop, "gif palette");
+    stop_if_asked(stop, "gif palette frames");
     const int rc = av_frame_make_writable(scaled.get());
     if (rc < 0) throw EncoderError("frame buffer: " + libav::error_text(rc));
     if (scaled->linesize[0] != settings.width * 4)
@@ -557,7 +558,7 @@ void GifEncoder::finish(const StopPoll& stop) {
     g.palette_graph.reset();  // its counts are no longer needed
     g.apply_palette(palette.get(), stop);
   }
-  g.file.finish(stop, "gif palette");
+  g.file.finish(stop, "gif palette frames");
 }
 
 std::int64_t GifEncoder::frame_count() const { return impl_->file.frames; }

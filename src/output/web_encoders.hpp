@@ -46,9 +46,9 @@ std::int64_t gif_frame_count(const GifSettings& settings, std::int64_t source_fr
 /// std::invalid_argument, libav refusing → EncoderError, file system → OutputError naming
 /// the path; add_frame on a size mismatch → std::invalid_argument; finish() with no frame
 /// → EncoderError. finish(stop) polls `stop` between the units of its long passes (the
-/// WebM's flush: "webm flush", each packet; the GIF: "gif finish" as it starts, then "gif
-/// palette" for each frame of the palette pass): a signal throws Interrupted and the
-/// temporary goes with the encoder (nothing put in place).
+/// WebM's flush: "webm flush", each packet; the GIF: "gif finish" as it starts, "gif palette
+/// pass" once the palette is made, then "gif palette frames" for each frame of the pass): a
+/// signal throws Interrupted and the temporary goes with the encoder (nothing put in place).
 class WebmEncoder {
  public:
   WebmEncoder(std::filesystem::path path, const WebmSettings& settings);

@@ -3,10 +3,10 @@
 // previous outputs and their manifest byte-identical and no temporary left (docs/outputs.md,
 // "Signals"). Each signal comes at a named stage of the run (the command line's test hooks,
 // src/cli/interrupt.hpp): for a long loop the test signals on the line of the stage polled just
-// before the loop starts ("gif finish" before the palette pass, "sweep point" before a point's
-// steps, "accuracy runs" before a run's steps), so the time to exit measures how often the loop
-// itself polls; a stage too short to catch in flight is held at its first poll until the signal
-// has arrived.
+// before the loop starts ("gif palette pass" before the GIF's second pass, "sweep point" before a
+// point's steps, "accuracy runs" before a run's steps), so the time to exit measures how often the
+// loop itself polls; a stage too short to catch in flight is held at its first poll until the
+// signal has arrived.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -87,6 +87,9 @@ struct FinishCase {
   const char* hook;
   int signal;
   std::vector<std::string> settings;  ///< the interrupted run's own --set and options
+  friend void PrintTo(const FinishCase& c, std::ostream* os) {
+    *os << c.format << " at " << c.stage;
+  }
 };
 
 class RenderFinishSignal : public ::testing::TestWithParam<FinishCase> {};
@@ -113,9 +116,9 @@ TEST_P(RenderFinishSignal, StopsTheEncoderAndKeepsThePreviousClip) {
 INSTANTIATE_TEST_SUITE_P(
     Signals, RenderFinishSignal,
     ::testing::Values(
-        // 150 frames of 640 × 360, every one kept: a palette pass of seconds.
-        FinishCase{"gif", "gif finish", kReport, SIGINT,
-                   words({"--frames", "150", "--no-png", "--set", "render.width=640", "--set",
+        // 240 frames of 640 × 360, every one kept: a palette pass of 3.5 s here (2026-11-23).
+        FinishCase{"gif", "gif palette pass", kReport, SIGINT,
+                   words({"--frames", "240", "--no-png", "--set", "render.width=640", "--set",
                           "render.height=360", "--set", "render.gif_width=640", "--set",
                           "render.gif_fps=30", "--set", "render.panel=false"})},
         FinishCase{
