@@ -40,6 +40,10 @@ figures: bookspin
 	done
 	$(BUILD)/bookspin sweep sweeps/tennis-racket-twist.toml \
 	  --vary 'initial.angular_velocity[0]=1e-3:3:25:log' --measure twist,flip_period -o out
+	$(BUILD)/bookspin accuracy sweeps/engines-energy-vs-dt.toml \
+	  --methods engines,rigid-quaternion:rk4,rigid-quaternion:implicit-midpoint,rigid-quaternion:splitting4 \
+	  --dt 0.03333333333333333 0.016666666666666666 0.008333333333333333 0.004 0.002 0.001 \
+	  0.0005 0.00025 -o out
 	@if command -v em++ >/dev/null && command -v npm >/dev/null; then \
 	  bash web/build.sh $(BUILD) && $(BUILD)/bookspin explore $(SCENES) $(SWEEPS) -o out; \
 	else echo "figures: no emscripten or npm: out/explorer.html not made (scripts/install-deps.sh)"; fi

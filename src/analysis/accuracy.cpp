@@ -1,5 +1,6 @@
 #include "analysis/accuracy.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -71,6 +72,70 @@ std::vector<Method> engine_methods() {
   std::vector<Method> methods;
   for (const engines::EngineMode& m : engines::engine_modes())
     methods.push_back({m.kind, m.integrator});
+  return methods;
+}
+
+namespace {
+std::string quoted(const std::string& text) {
+  std::string out(1, '"');
+  out.append(text);
+  out.push_back('"');
+  return out;
+}
+}  // namespace
+
+std::vector<Method> parse_methods(const std::string& list) {
+  const auto fail = [&](const std::string& reason) -> void {
+    throw InputError("--methods " + list + ": " + reason);
+  };
+  std::vector<bool> chosen(accuracy_methods().size(), false);
+  const std::vector<Method> every = accuracy_methods();
+  const auto choose = [&](const auto& wanted) {
+    for (std::size_t i = 0; i < every.size(); ++i)
+      if (wanted(every[i])) chosen[i] = true;
+  };
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', start), list.size());
+    const std::string item = list.substr(start, comma - start);
+    start = comma + 1;
+    if (item.empty()) fail("an empty item (expected e.g. engines,rigid-quaternion:rk4)");
+    if (item == "all") {
+      choose([](const Method&) { return true; });
+      continue;
+    }
+    if (item == "engines" || item == "rigid") {
+      const bool engines = item == "engines";
+      choose([&](const Method& m) {
+        return engines ? physics::is_engine(m.kind)
+                       : m.kind == ModelKind::rigid_matrix || m.kind == ModelKind::rigid_quaternion;
+      });
+      continue;
+    }
+    const std::size_t colon = item.find(':');
+    ModelKind kind{};
+    const std::string kind_name = item.substr(0, colon);
+    if (!physics::parse_model_kind(kind_name, kind))
+      fail(quoted(kind_name) +
+           " is not a model (all, engines, rigid, particle, rigid-matrix, rigid-quaternion, "
+           "mujoco, bullet, ode, or KIND:INTEGRATOR)");
+    if (kind == ModelKind::exact)
+      fail("the exact model is the reference every row is measured against");
+    if (colon == std::string::npos) {
+      choose([&](const Method& m) { return m.kind == kind; });
+      continue;
+    }
+    Integrator integrator{};
+    const std::string integrator_name = item.substr(colon + 1);
+    if (!physics::parse_integrator(integrator_name, integrator) ||
+        !physics::supports(kind, integrator))
+      fail(quoted(integrator_name) + " is not an integrator of " +
+           std::string(physics::to_string(kind)));
+    choose([&](const Method& m) { return m.kind == kind && m.integrator == integrator; });
+  }
+  std::vector<Method> methods;
+  for (std::size_t i = 0; i < every.size(); ++i)
+    if (chosen[i]) methods.push_back(every[i]);
   return methods;
 }
 

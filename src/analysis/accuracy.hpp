@@ -32,6 +32,13 @@ std::vector<Method> engine_methods();
 /// The rigid pairs only (rigid-matrix and rigid-quaternion × every rigid integrator).
 std::vector<Method> rigid_methods();
 
+/// The methods a comma-separated list names, in the order of accuracy_methods() and each
+/// once: "all" (accuracy_methods()), "engines" (engine_methods()), "rigid" (rigid_methods()),
+/// a model kind ("mujoco": every mode of it) or "KIND:INTEGRATOR" ("rigid-quaternion:rk4").
+/// Throws InputError ("--methods TEXT: reason") for an empty list or item, an unknown name,
+/// the exact model (the reference itself) or a pair the model does not support.
+std::vector<Method> parse_methods(const std::string& list);
+
 struct AccuracySettings {
   physics::Body body;  ///< any body: the book, a preset or a mesh (docs/physics.md §12)
   physics::InitialState initial;

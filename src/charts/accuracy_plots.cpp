@@ -53,13 +53,42 @@ std::string method_label(const analysis::Method& m) {
 
 void style_series(const analysis::Method& m, overlay::Series& s) {
   overlay::palette_colour(static_cast<int>(m.integrator), s.r, s.g, s.b);
-  const auto engines = analysis::engine_methods();
-  for (std::size_t i = 0; i < engines.size(); ++i)  // each engine mode its own colour
-    if (same_method(engines[i], m)) overlay::palette_colour(7 + static_cast<int>(i), s.r, s.g, s.b);
-  // The engines (docs/engines.md) dashed like the quaternion: their state is a quaternion too.
-  s.dashed = m.kind == physics::ModelKind::rigid_quaternion || physics::is_engine(m.kind);
+  s.dashed = m.kind == physics::ModelKind::rigid_quaternion;
   if (m.kind == physics::ModelKind::particle)
     s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(m.integrator);
+  if (!physics::is_engine(m.kind)) return;
+  // The engines (docs/engines.md): one mark per engine, one colour per mode within it, solid.
+  s.marker = m.kind == physics::ModelKind::mujoco   ? overlay::Marker::square
+             : m.kind == physics::ModelKind::bullet ? overlay::Marker::triangle
+                                                    : overlay::Marker::diamond;
+  int mode = 0;
+  for (const auto& e : analysis::engine_methods()) {
+    if (same_method(e, m)) break;
+    if (e.kind == m.kind) ++mode;
+  }
+  overlay::palette_colour(mode, s.r, s.g, s.b);
+}
+
+overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
+                                    const std::vector<analysis::Method>& methods, double flips) {
+  overlay::PlotSpec spec;
+  spec.title = "Largest relative energy error over " + std::to_string(static_cast<int>(flips)) +
+               " exact flip periods, against the time step";
+  spec.x_label = "time step dt (time units)";
+  spec.y_label = "relative energy error max |E/E0 - 1|";
+  spec.log_x = spec.log_y = true;
+  for (const auto& method : methods) {
+    overlay::Series s;
+    s.label = method_label(method);
+    for (const auto& r : rows) {
+      if (!same_method(r.method, method) || r.diverged) continue;
+      s.x.push_back(r.dt);
+      s.y.push_back(r.energy_drift);
+    }
+    style_series(method, s);
+    spec.series.push_back(std::move(s));
+  }
+  return spec;
 }
 
 overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& rows,
@@ -78,6 +107,7 @@ overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& 
       s.x.push_back(r.ns_per_step / r.dt * 1e-3);
       s.y.push_back(r.orientation_error);
     }
+    if (s.x.empty()) continue;  // a method the report did not run (--methods)
     style_series(method, s);
     spec.series.push_back(std::move(s));
   }
@@ -110,10 +140,16 @@ overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistor
 std::vector<std::filesystem::path> write_accuracy_plots(
     const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
     const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows,
-    const StopPoll& stop) {
+    const std::vector<analysis::Method>& methods, const StopPoll& stop) {
   // Every history first: a stop while they run leaves every file as it was.
+  std::vector<analysis::Method> long_time = analysis::rigid_methods();
+  if (methods.size() != analysis::accuracy_methods().size()) {
+    long_time.clear();
+    for (const auto& m : methods)
+      if (m.kind != physics::ModelKind::particle) long_time.push_back(m);
+  }
   std::vector<analysis::EnergyHistory> histories;
-  for (const auto& method : analysis::rigid_methods()) {
+  for (const auto& method : long_time) {
     stop_if_asked(stop, "accuracy energy");
     histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
                                                  kLongTimeFlips, kLongTimeWindows,
@@ -125,6 +161,10 @@ std::vector<std::filesystem::path> write_accuracy_plots(
   output::write_png(work_png,
                     overlay::plot_image(work_precision_plot(rows, settings.flips), 1400, 900));
   written.push_back(work_png);
+  output::write_png(
+      paths.energy_vs_dt_png,
+      overlay::plot_image(energy_vs_dt_plot(rows, methods, settings.flips), 1400, 900));
+  written.push_back(paths.energy_vs_dt_png);
 
   const auto& energy_png = paths.energy_png;
   const auto& energy_csv = paths.energy_csv;

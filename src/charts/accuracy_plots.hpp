@@ -23,6 +23,12 @@ void style_series(const analysis::Method& m, overlay::Series& s);
 /// line per method through its dt values. Lower left is better.
 overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& rows, double flips);
 
+/// Energy error against the step (log–log): the largest relative energy error |E/E0 − 1|
+/// over the run (flips exact flip periods) against dt (time units), one line per method of
+/// `methods` through its rows' dt values; diverged rows are left out.
+overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
+                                    const std::vector<analysis::Method>& methods, double flips);
+
 /// Long-time energy plot: relative energy error |E/E0 − 1| (log scale, the largest in each
 /// window) against t (time units), one line per history.
 overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistory>& histories,
@@ -37,18 +43,21 @@ inline constexpr int kLongTimeWindows = 400;
 /// Where write_accuracy_plots() writes (the accuracy product names them).
 struct AccuracyPlotPaths {
   std::filesystem::path work_precision_png;  ///< error against cost, from the rows
+  std::filesystem::path energy_vs_dt_png;    ///< energy error against dt, from the rows
   std::filesystem::path energy_png;          ///< the long-time energy plot
   std::filesystem::path energy_csv;          ///< its data: t, one column per method
 };
 
-/// Runs the long-time energy histories, then writes the work–precision plot (from `rows`), the
-/// energy plot and its CSV. Returns the paths written. `stop` is polled around each history
-/// ("accuracy energy") and inside it ("accuracy energy steps"): a signal throws Interrupted
-/// before any file is written. Throws
-/// OutputError when a file cannot be written.
+/// Runs the long-time energy histories, then writes the work–precision plot and the energy
+/// error against dt (from `rows`, one line per method of `methods`), the energy plot and its
+/// CSV. The long-time histories are those of analysis::rigid_methods() when `methods` is every
+/// method (analysis::accuracy_methods()), else of every method of `methods` but the particle
+/// model's. Returns the paths written. `stop` is polled around each history ("accuracy
+/// energy") and inside it ("accuracy energy steps"): a signal throws Interrupted before any
+/// file is written. Throws OutputError when a file cannot be written.
 std::vector<std::filesystem::path> write_accuracy_plots(
     const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
     const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows,
-    const StopPoll& stop = {});
+    const std::vector<analysis::Method>& methods, const StopPoll& stop = {});
 
 }  // namespace bookspin::charts

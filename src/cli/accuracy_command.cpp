@@ -1,6 +1,7 @@
 // `bookspin accuracy`: builds the request and prints what the pipeline measures.
 #include <cstdio>
 
+#include "analysis/accuracy.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "products/accuracy.hpp"
@@ -12,13 +13,22 @@ int accuracy_command(const AccuracyOptions& options) {
   job.request.scene = scene::parse_scene(options.scene_path, options.overrides);
   job.request.flips = options.flips;
   job.request.dts = options.dts;
+  job.request.methods = analysis::parse_methods(options.methods);
   job.request.on_line = [](const std::string& line) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   };
   job.request.stop_signal = stop_poll();
   job.out_dir = options.out_dir;
-  for (const auto& path : products::make_accuracy(job)) std::printf("wrote %s\n", path.c_str());
+  job.force = options.force;
+  job.verify = options.verify;
+  job.on_remake = remake_note;
+  const products::Outcome outcome = products::make_accuracy(job);
+  if (outcome == products::Outcome::up_to_date)
+    std::printf("up to date: %s-accuracy\n", job.request.scene.name.c_str());
+  if (outcome == products::Outcome::made)
+    for (const auto& path : products::accuracy_layout(job.out_dir, job.request.scene).outputs())
+      std::printf("wrote %s\n", path.c_str());
   return kExitOk;
 }
 

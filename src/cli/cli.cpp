@@ -137,6 +137,11 @@ void add_accuracy(CLI::App& cli, AccuracyOptions& options) {
   cmd->add_option("--dt", options.dts, "Time steps to try (time units)")
       ->check(finite_range(scene::limit("time.dt")))
       ->take_all();
+  cmd->add_option("--methods", options.methods,
+                  "Methods to measure, comma-separated: all, engines, rigid, a model kind "
+                  "(every mode of it) or KIND:INTEGRATOR, e.g. engines,rigid-quaternion:rk4")
+      ->capture_default_str();
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/accuracy-manifest.json");
 }
 
 void add_plot(CLI::App& cli, PlotOptions& options) {

@@ -46,6 +46,9 @@ struct AccuracyOptions {
   std::string out_dir = "out";
   double flips = 10.0;
   std::vector<double> dts{1.0 / 15, 1.0 / 30, 1.0 / 60, 1.0 / 120, 1.0 / 240};
+  std::string methods = "all";  ///< analysis::parse_methods()
+  bool force = false;
+  bool verify = false;
 };
 
 /// Every model × integrator × dt against the exact solution: table on stdout,

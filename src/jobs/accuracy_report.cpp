@@ -51,7 +51,7 @@ std::string table_row(const analysis::AccuracyRow& r) {
     std::snprintf(first_error, sizeof first_error, "%.2e", r.first_flip_error);
   char line[512];
   std::snprintf(line, sizeof line,
-                "%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12s %11s %5d/%-5d %9.1f%s%s\n",
+                "%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12s %11s %5d/%-5d %9.1f%s%s",
                 charts::method_label(r.method).c_str(), 1.0 / r.dt, r.orientation_error,
                 r.energy_drift, r.L_drift, flip_error, first_error, r.flips, r.flips_exact,
                 r.ns_per_step, r.diverged ? "  diverged" : "",
@@ -62,9 +62,9 @@ std::string table_row(const analysis::AccuracyRow& r) {
 void write_csv(const std::filesystem::path& path, const std::vector<analysis::AccuracyRow>& rows) {
   output::AtomicTextFile file(path);
   std::ostream& out = file.stream();
-  out << "model,integrator,dt,steps,t_end,orientation_error_rad,energy_drift,L_drift,"
-         "flip_period,flip_period_error,ns_per_step,diverged,first_flip,first_flip_error,flips,"
-         "flips_exact\n";
+  const auto& columns = accuracy_csv_columns();
+  for (std::size_t i = 0; i < columns.size(); ++i) out << (i > 0 ? "," : "") << columns[i];
+  out << '\n';
   for (const auto& r : rows) out << csv_line(r) << '\n';
   file.commit();
 }
@@ -84,6 +84,7 @@ overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, 
       s.x.push_back(r.dt);
       s.y.push_back(r.orientation_error);
     }
+    if (s.x.empty()) continue;  // a method the report did not run (--methods)
     charts::style_series(method, s);
     spec.series.push_back(std::move(s));
   }
@@ -96,6 +97,11 @@ namespace {
 
 /// Every dt must make a run of at least one step and at most kMaxAccuracySteps.
 void check_step_counts(const AccuracyRequest& request, double flip_period) {
+  if (!std::isfinite(flip_period))
+    throw InputError(request.scene.name +
+                     ": the motion never flips (its L starts on a principal axis or on the "
+                     "separatrix), so there is no flip period to measure the runs over: "
+                     "initial.jiggle or initial.angular_velocity off the axis gives one");
   for (double dt : request.dts) {
     const double steps = request.flips * flip_period / dt;
     if (steps >= 1.0 && steps <= kMaxAccuracySteps) continue;
@@ -115,6 +121,18 @@ std::string format_line(const char* pattern, const std::string& a, double b, dou
 
 }  // namespace
 
+const std::vector<std::string>& accuracy_csv_columns() {
+  static const std::vector<std::string> columns{"model",        "integrator",
+                                                "dt",           "steps",
+                                                "t_end",        "orientation_error_rad",
+                                                "energy_drift", "L_drift",
+                                                "flip_period",  "flip_period_error",
+                                                "ns_per_step",  "diverged",
+                                                "first_flip",   "first_flip_error",
+                                                "flips",        "flips_exact"};
+  return columns;
+}
+
 std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) {
   const scene::Scene& scene = request.scene;
   const auto say = [&](const std::string& line) {
@@ -130,8 +148,10 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
                 "dt", "orient. err", "energy drift", "|L| drift", "flip T err", "1st flip err",
                 "flips/exact", "ns/step");
   say(header);
+  const std::vector<analysis::Method> methods =
+      request.methods.empty() ? analysis::accuracy_methods() : request.methods;
   std::vector<analysis::AccuracyRow> rows;
-  for (const auto& method : analysis::accuracy_methods()) {
+  for (const auto& method : methods) {
     for (double dt : request.dts) {
       stop_if_asked(request.stop_signal, "accuracy runs");
       rows.push_back(analysis::measure(settings, exact, method, dt,
@@ -144,7 +164,8 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
   output::prepare_output_dir(paths.csv.parent_path());
   // The plots run the long-time histories (a stop there writes nothing), then every file.
   const std::vector<std::filesystem::path> plots =
-      charts::write_accuracy_plots(paths.plots, settings, exact, rows, request.stop_signal);
+      charts::write_accuracy_plots(paths.plots, settings, exact, rows, methods,
+                                   request.stop_signal);
   std::vector<std::filesystem::path> written{paths.csv, paths.png};
   write_csv(written[0], rows);
   output::write_png(written[1], overlay::plot_image(accuracy_plot(rows, request.flips), 1400, 900));

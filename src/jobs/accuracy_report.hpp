@@ -24,6 +24,8 @@ struct AccuracyRequest {
   AccuracyPaths paths;
   double flips = 10.0;      ///< run length in exact flip periods
   std::vector<double> dts;  ///< time steps to try, time units
+  /// The methods to measure (analysis::parse_methods()); empty: analysis::accuracy_methods().
+  std::vector<analysis::Method> methods;
   /// Receives the table, a line at a time as each row is measured (no newline).
   std::function<void(const std::string& line)> on_line;
   /// Polled before and after each run ("accuracy runs") and inside it every few dozen steps
@@ -35,9 +37,13 @@ struct AccuracyRequest {
 /// The most steps one method may take at one dt (flips × flip period / dt).
 inline constexpr double kMaxAccuracySteps = 1e8;
 
-/// Measures every method of analysis::all_methods() at every dt and writes the CSV, the
-/// error plot, the work–precision plot, the energy plot and its CSV. Returns the paths
-/// written. The CSV's flip_period and flip_period_error cells are empty where fewer than two
+/// The accuracy CSV's column names, in order (docs/accuracy.md): model, integrator, dt, steps,
+/// t_end, orientation_error_rad, …, flips, flips_exact; one row per method and dt.
+const std::vector<std::string>& accuracy_csv_columns();
+
+/// Measures every method of `request.methods` at every dt and writes the CSV, the error plot,
+/// the work–precision plot, the energy error against dt, the energy plot and its CSV. Returns the
+/// paths written. The CSV's flip_period and flip_period_error cells are empty where fewer than two
 /// flips were seen. Throws InputError (the motion has no flip period, a dt that makes fewer
 /// than 1 or more than kMaxAccuracySteps steps), OutputError.
 std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request);

@@ -53,16 +53,6 @@ std::vector<std::string> row_cells(const std::vector<double>& point, const Measu
   return cells;
 }
 
-std::vector<std::string> table_header(const std::vector<VaryRange>& ranges,
-                                      const MeasureList& measures) {
-  std::vector<std::string> header;
-  for (const auto& r : ranges) header.push_back(r.key);
-  for (const analysis::Measure* m : measures) header.emplace_back(m->name);
-  for (const analysis::Measure* m : measures)
-    if (m->exact) header.emplace_back(m->exact_name);
-  return header;
-}
-
 std::string join(const std::vector<std::string>& cells, const std::string& first = {}) {
   std::string line = first;
   for (std::size_t i = 0; i < cells.size(); ++i) {
@@ -163,6 +153,16 @@ MeasureList parse_measures(const std::string& text) {
     measures.push_back(found);
   }
   return measures;
+}
+
+std::vector<std::string> sweep_csv_header(const std::vector<VaryRange>& ranges,
+                                          const MeasureList& measures) {
+  std::vector<std::string> header;
+  for (const auto& r : ranges) header.push_back(r.key);
+  for (const analysis::Measure* m : measures) header.emplace_back(m->name);
+  for (const analysis::Measure* m : measures)
+    if (m->exact) header.emplace_back(m->exact_name);
+  return header;
 }
 
 void write_sweep_csv(const SweepTable& table, std::ostream& out) {
@@ -309,7 +309,7 @@ SweepResult run_sweep(const SweepRequest& request) {
   table.scene_name = base.name;
   table.ranges = grid.ranges();
   table.measures = request.measures;
-  table.header = table_header(table.ranges, table.measures);
+  table.header = sweep_csv_header(table.ranges, table.measures);
   for (std::size_t r = 0; r < indices.size(); ++r)
     table.rows.emplace_back(indices[r],
                             row_cells(grid.point(indices[r]), table.measures, results[r]));
@@ -439,7 +439,7 @@ std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem
       if (table.scene_name.empty() || grid.size() != points || table.measures.empty())
         throw InputError(name + ":1: the shard line does not describe a sweep");
       table.ranges = ranges;
-      table.header = table_header(table.ranges, table.measures);
+      table.header = sweep_csv_header(table.ranges, table.measures);
     } else if (const std::string why = shard_line_difference(line, first_line); !why.empty()) {
       throw InputError(name + ":1: a shard of another sweep than " + shards.front().string() +
                        ": " + why);

@@ -96,6 +96,11 @@ SweepResult run_sweep(const SweepRequest& request);
 std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem::path>& shards,
                                                const SweepLayout& layout);
 
+/// The full CSV's column names, in order: the varied keys (VaryRange::key), the measures'
+/// names, then the exact columns (Measure::exact_name) of the measures that have one.
+std::vector<std::string> sweep_csv_header(const std::vector<VaryRange>& ranges,
+                                          const MeasureList& measures);
+
 /// Writes the full CSV (header, then one line per row without the grid index) to `out`.
 void write_sweep_csv(const SweepTable& table, std::ostream& out);
 

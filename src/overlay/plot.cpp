@@ -194,6 +194,32 @@ Polyline series_polyline(const Series& s, const Axis& ax, const Axis& ay, double
   return points;
 }
 
+/// A filled mark of `radius` pixels centred on (x, y).
+void draw_marker(cairo_t* cr, Marker marker, double x, double y, double radius) {
+  switch (marker) {
+    case Marker::circle:
+      cairo_arc(cr, x, y, radius, 0, 2 * M_PI);
+      break;
+    case Marker::square:
+      cairo_rectangle(cr, x - 1.15 * radius, y - 1.15 * radius, 2.3 * radius, 2.3 * radius);
+      break;
+    case Marker::triangle:
+      cairo_move_to(cr, x, y - 1.5 * radius);
+      cairo_line_to(cr, x + 1.35 * radius, y + 0.9 * radius);
+      cairo_line_to(cr, x - 1.35 * radius, y + 0.9 * radius);
+      cairo_close_path(cr);
+      break;
+    case Marker::diamond:
+      cairo_move_to(cr, x, y - 1.6 * radius);
+      cairo_line_to(cr, x + 1.3 * radius, y);
+      cairo_line_to(cr, x, y + 1.6 * radius);
+      cairo_line_to(cr, x - 1.3 * radius, y);
+      cairo_close_path(cr);
+      break;
+  }
+  cairo_fill(cr);
+}
+
 void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, double x0, double x1,
                  double y0, double y1, double line_width) {
   cairo_set_source_rgb(cr, s.r, s.g, s.b);
@@ -216,8 +242,7 @@ void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, d
   if (s.x.size() <= 16) {  // few points: mark them
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
       if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) continue;
-      cairo_arc(cr, ax.map(s.x[i], x0, x1), ay.map(s.y[i], y1, y0), 1.6 * line_width, 0, 2 * M_PI);
-      cairo_fill(cr);
+      draw_marker(cr, s.marker, ax.map(s.x[i], x0, x1), ay.map(s.y[i], y1, y0), 1.6 * line_width);
     }
   }
 }
@@ -231,6 +256,8 @@ void legend_sample(cairo_t* cr, const Series& s, double x, double y, double font
   cairo_line_to(cr, x + 1.8 * font, y - 0.35 * font);
   cairo_stroke(cr);
   cairo_set_dash(cr, nullptr, 0, 0);
+  if (s.marker != Marker::circle)
+    draw_marker(cr, s.marker, x + 0.9 * font, y - 0.35 * font, 0.22 * font);
 }
 
 double legend_box_width(cairo_t* cr, const PlotSpec& spec, double font) {

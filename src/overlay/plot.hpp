@@ -12,12 +12,17 @@
 
 namespace bookspin::overlay {
 
+/// The mark at each point of a series with few points (≤ 16). The legend shows every mark
+/// but the default circle.
+enum class Marker { circle, square, triangle, diamond };
+
 struct Series {
   std::string label;
   std::vector<double> x, y;  ///< same length; non-finite or (on a log axis) non-positive
                              ///< points break the line
   double r = 0, g = 0, b = 0;
   bool dashed = false;
+  Marker marker = Marker::circle;
 };
 
 /// Where the legend goes: right of the plot area (wide plots), or in rows between the

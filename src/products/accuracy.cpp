@@ -1,19 +1,67 @@
 #include "products/accuracy.hpp"
 
+#include <cstdio>
+#include <sstream>
+
+#include "cache/manifest_head.hpp"
+#include "charts/accuracy_plots.hpp"
+
 namespace bookspin::products {
 
-jobs::AccuracyPaths accuracy_paths(const std::filesystem::path& out_dir,
-                                   const scene::Scene& scene) {
-  const auto file = [&](const char* suffix) { return out_dir / (scene.name + suffix); };
-  return {file("-accuracy.csv"),
-          file("-accuracy.png"),
-          {file("-work-precision.png"), file("-energy.png"), file("-energy.csv")}};
+std::vector<std::filesystem::path> AccuracyLayout::outputs() const {
+  return {report.csv,
+          report.png,
+          report.plots.work_precision_png,
+          report.plots.energy_vs_dt_png,
+          report.plots.energy_png,
+          report.plots.energy_csv};
 }
 
-std::vector<std::filesystem::path> make_accuracy(const AccuracyJob& job) {
+AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene::Scene& scene) {
+  const auto file = [&](const char* suffix) { return out_dir / (scene.name + suffix); };
+  return {{file("-accuracy.csv"),
+           file("-accuracy.png"),
+           {file("-work-precision.png"), file("-energy-vs-dt.png"), file("-energy.png"),
+            file("-energy.csv")}},
+          out_dir / scene.name / "accuracy-manifest.json"};
+}
+
+std::string accuracy_manifest_head(const AccuracyJob& job) {
+  const jobs::AccuracyRequest& r = job.request;
+  std::ostringstream options;
+  char number[32];
+  std::snprintf(number, sizeof number, "%.17g", r.flips);
+  options << "    \"flips\": " << number << ",\n    \"dt\": [";
+  for (std::size_t i = 0; i < r.dts.size(); ++i) {
+    std::snprintf(number, sizeof number, "%.17g", r.dts[i]);
+    options << (i ? ", " : "") << number;
+  }
+  options << "],\n    \"methods\": [";
+  const auto methods = r.methods.empty() ? analysis::accuracy_methods() : r.methods;
+  for (std::size_t i = 0; i < methods.size(); ++i)
+    options << (i ? ", " : "") << '"' << charts::method_label(methods[i]) << '"';
+  options << "]\n";
+  return cache::manifest_head("accuracy", options.str(), r.scene);
+}
+
+Outcome make_accuracy(const AccuracyJob& job) {
+  const AccuracyLayout layout = accuracy_layout(job.out_dir, job.request.scene);
   jobs::AccuracyRequest request = job.request;
-  request.paths = accuracy_paths(job.out_dir, request.scene);
-  return jobs::run_accuracy(request);
+  request.paths = layout.report;
+  int signal = 0;
+  const Outcome outcome = cache::run_cached(
+      {layout.manifest, accuracy_manifest_head(job), job.out_dir, job.force, job.verify,
+       [&] {
+         return unless_interrupted(signal, [&]() -> std::optional<cache::JobOutputs> {
+           cache::JobOutputs made{cache::manifest_note(request.scene), {}};
+           for (const auto& path : jobs::run_accuracy(request))
+             made.outputs.push_back(path.lexically_relative(job.out_dir).generic_string());
+           return made;
+         });
+       }},
+      remake_note_for(job.on_remake, request.scene.name + "-accuracy"));
+  if (signal != 0) throw Interrupted(signal);  // the earlier report and its manifest untouched
+  return outcome;
 }
 
 }  // namespace bookspin::products

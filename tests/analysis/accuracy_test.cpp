@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include "common/errors.hpp"
 #include "physics/particle_model.hpp"
 #include "physics/shape.hpp"
 #include "support/physics_printers.hpp"
@@ -227,6 +230,38 @@ TEST(AccuracyFlips, EveryEngineModeIsAnAccuracyRowAndNoneOfAllMethods) {
   for (const Method& m : accuracy_methods()) engines += physics::is_engine(m.kind) ? 1 : 0;
   EXPECT_EQ(engines, 3 + 4 + 3);  // mujoco 3 modes, bullet 4, ode 3 (docs/engines.md)
   for (const Method& m : all_methods()) EXPECT_FALSE(physics::is_engine(m.kind));
+}
+
+// --methods: the names a user types, against the pairs of docs/accuracy.md spelled out here.
+TEST(AccuracyMethods, AListNamesTheMethodsInTableOrderEachOnce) {
+  const auto names = [](const std::vector<Method>& methods) {
+    std::vector<std::string> out;
+    for (const Method& m : methods)
+      out.push_back(std::string(physics::to_string(m.kind)) + ":" +
+                    std::string(physics::to_string(m.integrator)));
+    return out;
+  };
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(names(parse_methods("mujoco")),
+            (Names{"mujoco:euler", "mujoco:rk4", "mujoco:implicit"}));
+  EXPECT_EQ(names(parse_methods("ode:none,rigid-quaternion:rk4,ode")),
+            (Names{"rigid-quaternion:rk4", "ode:step", "ode:quickstep", "ode:none"}));
+  EXPECT_EQ(names(parse_methods("engines")),
+            (Names{"mujoco:euler", "mujoco:rk4", "mujoco:implicit", "bullet:implicit-body",
+                   "bullet:implicit-world", "bullet:explicit", "bullet:none", "ode:step",
+                   "ode:quickstep", "ode:none"}));
+  EXPECT_EQ(parse_methods("rigid").size(), 10u);  // 2 models × 5 integrators
+  EXPECT_EQ(parse_methods("particle").size(), 3u);
+  EXPECT_EQ(parse_methods("all").size(), 3u + 10u + 10u);
+  EXPECT_EQ(parse_methods("rigid,all").size(), 23u);
+}
+
+TEST(AccuracyMethods, UnknownEmptyExactOrUnsupportedNamesAreInputErrors) {
+  for (const char* bad : {"", ",", "rk4", "engines,", "exact", "exact:euler", "mujoco:step",
+                          "particle:rk4", "rigid-matrix:", "bullet:implicit"}) {
+    SCOPED_TRACE(bad);
+    EXPECT_THROW(parse_methods(bad), InputError);
+  }
 }
 
 }  // namespace

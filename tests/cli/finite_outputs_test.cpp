@@ -162,7 +162,22 @@ TEST(FiniteOutputs, AccuracyRefusesNonFiniteAndOutOfRangeOptions) {
        "to 1e+08)"},
       {"--flips 1 --dt 500",
        "--dt 500: 0.441893 steps for 1 flip periods of 220.946 time units (expected 1 to "
-       "1e+08)"}};
+       "1e+08)"},
+      {"--methods bogus",
+       "--methods bogus: \"bogus\" is not a model (all, engines, rigid, particle, "
+       "rigid-matrix, rigid-quaternion, mujoco, bullet, ode, or KIND:INTEGRATOR)"},
+      {"--methods exact",
+       "--methods exact: the exact model is the reference every row is "
+       "measured against"},
+      {"--methods engines,rigid-matrix:step",
+       "--methods engines,rigid-matrix:step: \"step\" is not an integrator of rigid-matrix"},
+      {"--methods engines,",
+       "--methods engines,: an empty item (expected e.g. "
+       "engines,rigid-quaternion:rk4)"},
+      {"--set initial.jiggle=0",
+       "exact-unstable-x: the motion never flips (its L starts on a principal axis or on the "
+       "separatrix), so there is no flip period to measure the runs over: initial.jiggle or "
+       "initial.angular_velocity off the axis gives one"}};
   for (const BadOption& c : cases) {
     SCOPED_TRACE(c.args);
     const fs::path out = dir / "out";

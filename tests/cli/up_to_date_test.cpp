@@ -1,7 +1,8 @@
-// Up-to-date skipping of `bookspin render`, `plot` and `gallery` through their manifests
-// (src/output/manifest.hpp): what makes a run skip and what makes it render again.
+// Up-to-date skipping of `bookspin render`, `plot`, `gallery`, `sweep` and `accuracy` through their
+// manifests (src/output/manifest.hpp): what makes a run skip and what makes it render again.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "support/cli_runner.hpp"
@@ -256,6 +257,38 @@ TEST(Manifest, WholeSweepSkipsWhenUpToDate) {
   fs::remove(box.out / "tiny-sweep.png");
   EXPECT_NE(sweep("energy_drift,diverged_at").output.find("wrote"), std::string::npos);
   EXPECT_TRUE(fs::is_regular_file(box.out / "tiny-sweep.png"));
+}
+
+TEST(Manifest, AccuracyReportSkipsWhenUpToDateAndRemeasuresOnAnyOptionChange) {
+  const Sandbox box("manifest_accuracy");
+  const auto accuracy = [&box](const std::string& options) {
+    return run_bookspin("accuracy " + box.scene.string() +
+                        " --set initial.jiggle=0.001 --flips 1 " + options + " -o " +
+                        box.out.string());
+  };
+  const std::string options = "--dt 1 0.5 --methods rigid-quaternion:rk4,mujoco:euler";
+  const CliResult first = accuracy(options);
+  ASSERT_EQ(first.status, 0) << first.output;
+  EXPECT_NE(first.output.find("wrote " + (box.out / "tiny-energy-vs-dt.png").string()),
+            std::string::npos)
+      << first.output;
+  const std::string csv = read_file(box.out / "tiny-accuracy.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 2) << csv;  // 2 methods × 2 dt
+  const CliResult second = accuracy(options);
+  EXPECT_NE(second.output.find("up to date: tiny-accuracy"), std::string::npos) << second.output;
+  EXPECT_EQ(second.output.find("rigid-quaternion rk4"), std::string::npos);  // not measured
+  EXPECT_EQ(read_file(box.out / "tiny-accuracy.csv"), csv);
+  for (const std::string changed : {"--dt 1 0.25 --methods rigid-quaternion:rk4,mujoco:euler",
+                                    "--dt 1 0.5 --methods rigid-quaternion:rk4",
+                                    "--dt 1 0.5 --methods rigid-quaternion:rk4,mujoco:euler "
+                                    "--force"}) {
+    SCOPED_TRACE(changed);
+    EXPECT_NE(accuracy(changed).output.find("wrote"), std::string::npos);
+  }
+  fs::remove(box.out / "tiny-energy-vs-dt.png");
+  EXPECT_NE(accuracy("--dt 1 0.5 --methods rigid-quaternion:rk4").output.find("wrote"),
+            std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(box.out / "tiny-energy-vs-dt.png"));
 }
 
 }  // namespace

@@ -14,6 +14,8 @@
 #include "analysis/motion.hpp"
 #include "common/errors.hpp"
 #include "engines/models.hpp"
+#include "jobs/closed_form_flips.hpp"
+#include "jobs/csv_text.hpp"
 #include "physics/exact_model.hpp"
 #include "support/scratch.hpp"
 
@@ -33,28 +35,6 @@ scene::Scene near_intermediate(double epsilon, const std::string& kind,
        "model.kind=\"" + kind + "\"", "model.integrator=\"" + integrator + "\"",
        "time.dt=" + full_precision(dt), "time.steps_per_frame=1",
        "time.frames=" + std::to_string(frames)});
-}
-
-/// The half period T/2 = 2K(k)/λ of docs/physics.md §8, computed here from the invariants
-/// (not by ExactRotation): sort the moments, Case A or B by the sign of L² − 2E·I2.
-double closed_form_flip_period(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega) {
-  std::array<int, 3> order{0, 1, 2};
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return moments[a] < moments[b]; });
-  const long double I1 = moments[order[0]], I2 = moments[order[1]], I3 = moments[order[2]];
-  long double L2 = 0, E2 = 0;
-  for (int i = 0; i < 3; ++i) {
-    L2 += static_cast<long double>(moments[i]) * moments[i] * omega[i] * omega[i];
-    E2 += static_cast<long double>(moments[i]) * omega[i] * omega[i];
-  }
-  long double lambda = 0, k2 = 0;
-  if (L2 > E2 * I2) {  // Case A
-    lambda = std::sqrt((I3 - I2) * (L2 - E2 * I1) / (I1 * I2 * I3));
-    k2 = (I2 - I1) * (E2 * I3 - L2) / ((I3 - I2) * (L2 - E2 * I1));
-  } else {  // Case B
-    lambda = std::sqrt((I2 - I1) * (E2 * I3 - L2) / (I1 * I2 * I3));
-    k2 = (I3 - I2) * (L2 - E2 * I1) / ((I2 - I1) * (E2 * I3 - L2));
-  }
-  return static_cast<double>(2.0L * std::comp_ellint_1(std::sqrt(k2)) / lambda);
 }
 
 /// max over every step of |E/E0 − 1|, and the time of the first step whose state is not
@@ -192,8 +172,8 @@ TEST(SweepMeasures, RigidRk4FlipPeriodIsTheClosedForm) {
     EXPECT_NEAR(*m.flip_period / *m.flip_period_exact, 1.0, 1e-6) << kind;
     // The exact column against 2K(k)/λ from the invariants (no jiggle here, so ω(0) is ω0).
     EXPECT_NEAR(
-        *m.flip_period_exact / closed_form_flip_period(s.body.moments, s.initial.omega0_body), 1.0,
-        1e-9)
+        *m.flip_period_exact / closed_form_flips(s.body.moments, s.initial.omega0_body).half_period,
+        1.0, 1e-9)
         << kind;
     EXPECT_NEAR(*m.first_flip, *m.first_flip_exact, 1e-6 * *m.first_flip_exact) << kind;
     // The drift is the largest over the run, not the last step's (which is smaller here).
@@ -284,15 +264,6 @@ TEST(SweepMeasures, ADivergingRunIsMeasuredUpToItsLastFiniteStep) {
   EXPECT_FALSE(m.orientation_error);
   EXPECT_EQ(*m.energy_drift, expected.energy_drift);  // over the finite steps only
   EXPECT_GT(*m.energy_drift, 1.0);
-}
-
-/// The cells of a CSV line.
-std::vector<std::string> cells_of(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
 }
 
 TEST(SweepRun, FlipPeriodOfEveryPointMatchesTheClosedFormOnALogGrid) {

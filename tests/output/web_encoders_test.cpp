@@ -135,6 +135,11 @@ double resident_bytes() {
 // the encoder keeps them on disk, so what it holds does not grow with the clip. The frames
 // repeat every 20, so the palette's colour counts are complete before the measurement.
 TEST(GifEncoder, MemoryDoesNotGrowWithTheNumberOfFrames) {
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer keeps freed blocks in its quarantine (256 MB by default), so resident
+  // memory grows with every freed frame; the Release pass of the suite measures this.
+  GTEST_SKIP() << "resident memory is not the encoder's under AddressSanitizer";
+#endif
   ScratchDir dir;
   constexpr int kW = 320, kH = 240, kMany = 320;
   const double frame_bytes = 4.0 * kW * kH;

@@ -90,5 +90,33 @@ TEST(Plot, HugeNearlyConstantValuesAreDrawn) {
   }
 }
 
+/// Red pixels of a bare plot holding one point drawn with `marker` (one point: no line).
+int red_pixels_of_one_point(Marker marker) {
+  PlotSpec spec;
+  spec.legend = false;
+  Series s;
+  s.r = 1.0;
+  s.marker = marker;
+  s.x = {1.0};
+  s.y = {1.0};
+  spec.series = {s};
+  const RgbaImage image = plot_image(spec, 400, 300);
+  int count = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) count += red(image, x, y) ? 1 : 0;
+  return count;
+}
+
+// The marks' areas in units of r² (plot.cpp's draw_marker): circle π, square 2.3² = 5.29,
+// triangle 2.7 × 2.4 / 2 = 3.24, diamond 2.6 × 3.2 / 2 = 4.16; r is a few pixels, so the
+// counts follow the areas to within the antialiased rim.
+TEST(Plot, EachMarkerDrawsItsOwnShape) {
+  const double circle = red_pixels_of_one_point(Marker::circle);
+  ASSERT_GT(circle, 4);
+  EXPECT_NEAR(red_pixels_of_one_point(Marker::square) / circle, 5.29 / M_PI, 0.45);
+  EXPECT_NEAR(red_pixels_of_one_point(Marker::diamond) / circle, 4.16 / M_PI, 0.45);
+  EXPECT_GT(red_pixels_of_one_point(Marker::triangle), 0.6 * circle);
+}
+
 }  // namespace
 }  // namespace bookspin::overlay

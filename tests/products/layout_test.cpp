@@ -63,12 +63,13 @@ TEST(ProductLayout, PlotSweepAccuracyGltfExplorerAndGallery) {
   EXPECT_EQ(sweep.png, "out/fig05-sweep.png");
   EXPECT_EQ(sweep.shard(2, 8), "out/fig05-sweep.shard-2-of-8.csv");
   EXPECT_EQ(sweep_manifest_path("out", "fig05"), "out/fig05/sweep-manifest.json");
-  const jobs::AccuracyPaths accuracy = accuracy_paths("out", s);
-  EXPECT_EQ(accuracy.csv, "out/fig05-accuracy.csv");
-  EXPECT_EQ(accuracy.png, "out/fig05-accuracy.png");
-  EXPECT_EQ(accuracy.plots.work_precision_png, "out/fig05-work-precision.png");
-  EXPECT_EQ(accuracy.plots.energy_png, "out/fig05-energy.png");
-  EXPECT_EQ(accuracy.plots.energy_csv, "out/fig05-energy.csv");
+  const AccuracyLayout accuracy = accuracy_layout("out", s);
+  EXPECT_EQ(accuracy.outputs(),
+            (std::vector<std::filesystem::path>{
+                "out/fig05-accuracy.csv", "out/fig05-accuracy.png", "out/fig05-work-precision.png",
+                "out/fig05-energy-vs-dt.png", "out/fig05-energy.png", "out/fig05-energy.csv"}));
+  EXPECT_EQ(accuracy.report.plots.energy_vs_dt_png, "out/fig05-energy-vs-dt.png");
+  EXPECT_EQ(accuracy.manifest, "out/fig05/accuracy-manifest.json");
   EXPECT_EQ(gltf_path("out", s), "out/fig05.glb");
   EXPECT_EQ(explorer_page_path("out"), "out/explorer.html");
   EXPECT_EQ(gallery_layout("out").page, "out/index.html");

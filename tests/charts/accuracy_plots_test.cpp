@@ -1,0 +1,63 @@
+// The accuracy report's plots (src/charts/accuracy_plots.cpp): which rows make which line, and
+// how the methods are told apart.
+#include "charts/accuracy_plots.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace bookspin::charts {
+namespace {
+
+using analysis::AccuracyRow;
+using analysis::Method;
+using physics::Integrator;
+using physics::ModelKind;
+
+AccuracyRow row(Method m, double dt, double energy_drift, bool diverged = false) {
+  AccuracyRow r;
+  r.method = m;
+  r.dt = dt;
+  r.energy_drift = energy_drift;
+  r.diverged = diverged;
+  return r;
+}
+
+// One line per asked method, through its own rows' (dt, energy drift) in row order; a
+// diverged row has no energy to compare and is left out.
+TEST(AccuracyPlots, EnergyAgainstDtHasOneLinePerMethodThroughItsRows) {
+  const Method rk4{ModelKind::rigid_quaternion, Integrator::rk4};
+  const Method bullet{ModelKind::bullet, Integrator::implicit_body};
+  const Method ode_none{ModelKind::ode, Integrator::none};
+  const std::vector<AccuracyRow> rows{row(rk4, 0.1, 1e-3),         row(rk4, 0.01, 1e-7),
+                                      row(bullet, 0.1, 0.5, true), row(bullet, 0.01, 0.05),
+                                      row(ode_none, 0.1, 2e-15),   row(ode_none, 0.01, 1e-15)};
+  const overlay::PlotSpec spec = energy_vs_dt_plot(rows, {bullet, rk4}, 10.0);
+  ASSERT_EQ(spec.series.size(), 2u);
+  EXPECT_EQ(spec.series[0].label, "bullet implicit-body");
+  EXPECT_EQ(spec.series[0].x, (std::vector<double>{0.01}));
+  EXPECT_EQ(spec.series[0].y, (std::vector<double>{0.05}));
+  EXPECT_EQ(spec.series[1].label, "rigid-quaternion rk4");
+  EXPECT_EQ(spec.series[1].x, (std::vector<double>{0.1, 0.01}));
+  EXPECT_EQ(spec.series[1].y, (std::vector<double>{1e-3, 1e-7}));
+  EXPECT_TRUE(spec.log_x && spec.log_y);
+}
+
+// Every accuracy method looks different from every other: colour, dash and mark together.
+TEST(AccuracyPlots, NoTwoMethodsShareALook) {
+  const auto methods = analysis::accuracy_methods();
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    overlay::Series a;
+    style_series(methods[i], a);
+    for (std::size_t j = 0; j < i; ++j) {
+      overlay::Series b;
+      style_series(methods[j], b);
+      EXPECT_FALSE(a.r == b.r && a.g == b.g && a.b == b.b && a.dashed == b.dashed &&
+                   a.marker == b.marker)
+          << method_label(methods[i]) << " looks like " << method_label(methods[j]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::charts

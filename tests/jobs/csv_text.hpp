@@ -1,0 +1,40 @@
+#pragma once
+// A CSV file of the jobs read back as text cells, for the tests that compare its columns.
+#include <filesystem>
+#include <fstream>
+#include <istream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace bookspin::jobs {
+
+/// The cells of a CSV line (a trailing comma ends in an empty cell).
+inline std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+/// A CSV read back: its header's column names and its rows' cells.
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+inline Csv read_csv(std::istream& in) {
+  Csv csv;
+  std::string line;
+  if (std::getline(in, line)) csv.header = cells_of(line);
+  while (std::getline(in, line)) csv.rows.push_back(cells_of(line));
+  return csv;
+}
+
+inline Csv read_csv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return read_csv(in);
+}
+
+}  // namespace bookspin::jobs
