@@ -163,9 +163,8 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
   const AccuracyPaths& paths = request.paths;
   output::prepare_output_dir(paths.csv.parent_path());
   // The plots run the long-time histories (a stop there writes nothing), then every file.
-  const std::vector<std::filesystem::path> plots =
-      charts::write_accuracy_plots(paths.plots, settings, exact, rows, methods,
-                                   request.stop_signal);
+  const std::vector<std::filesystem::path> plots = charts::write_accuracy_plots(
+      paths.plots, settings, exact, rows, methods, request.stop_signal);
   std::vector<std::filesystem::path> written{paths.csv, paths.png};
   write_csv(written[0], rows);
   output::write_png(written[1], overlay::plot_image(accuracy_plot(rows, request.flips), 1400, 900));

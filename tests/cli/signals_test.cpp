@@ -155,13 +155,15 @@ void write_text(const fs::path& path, const std::string& text) {
 }
 
 // An accuracy run polls every 64 steps. A full report takes a quarter of a minute, so the
-// previous outputs here are stand-ins at the report's paths: they must keep their bytes.
+// previous outputs here are stand-ins at the report's paths, its manifest too: they must keep
+// their bytes.
 TEST(Signals, AccuracyStopsItsRunsAndKeepsThePreviousReport) {
   const ScratchDir dir;
   const fs::path out = dir.path() / "out";
-  for (const char* suffix :
-       {"-accuracy.csv", "-accuracy.png", "-work-precision.png", "-energy.png", "-energy.csv"})
-    write_text(out / (std::string("exact-unstable-x") + suffix), std::string("earlier ") + suffix);
+  for (const char* name :
+       {"-accuracy.csv", "-accuracy.png", "-work-precision.png", "-energy-vs-dt.png", "-energy.png",
+        "-energy.csv", "/accuracy-manifest.json"})
+    write_text(out / (std::string("exact-unstable-x") + name), std::string("earlier ") + name);
   const auto before = snapshot(out);
   // 100 flips at dt = 0.001: 2·10⁷ steps a method.
   expect_stopped_cleanly(words({"accuracy", scene_path("exact-unstable-x"), "-o", out.string(),
