@@ -14,7 +14,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests" / "browser"))
 from browser import find_browser, open_browser  # noqa: E402
-from explorer_test import EXPLORER_WINDOW, load  # noqa: E402
+from explorer_test import EXPLORER_WINDOW, load, slide_to  # noqa: E402
 
 
 def main():
@@ -39,9 +39,7 @@ def main():
             for n, query in enumerate(a.queries):
                 load(driver, f"{page}?{query}")
                 if a.t > 0:
-                    driver.execute_script(f"""
-                      const s = document.getElementById('slider');
-                      s.max = {a.t}; s.value = {a.t}; s.dispatchEvent(new Event('input'));""")
+                    slide_to(driver, a.t)
                 time.sleep(0.5)
                 path = out / f"{n}-{size}.png"
                 driver.save_screenshot(str(path))

@@ -17,6 +17,7 @@
 
 #include "analysis/motion.hpp"
 #include "clip/body_drawing.hpp"
+#include "engines/engine_body.hpp"
 #include "physics/body.hpp"
 #include "physics/book.hpp"
 #include "physics/polhode.hpp"
@@ -119,6 +120,37 @@ Body body_of(const val& spec) {
   return body;
 }
 
+/// A rigid body whose state a JavaScript engine holds (cannon-es, Rapier, Jolt: web/src/engines/):
+/// the page sets q and ω after each of the engine's steps, and corners, orientation and diagnostics
+/// come from them as engines::EngineBody makes them for MuJoCo, Bullet and ODE (header only,
+/// physics alone). reset() starts at the identity with ω0 = I⁻¹·L0, L0 with the jiggle
+/// (docs/physics.md §5), which the page hands to the engine; step() is the engine's, not this.
+class PoseBody : public bookspin::engines::EngineBody {
+ public:
+  explicit PoseBody(const Body& body) : EngineBody(body) {}
+  void reset(const InitialState& initial) override {
+    q_ = Eigen::Quaterniond::Identity();
+    omega_ = initial_omega(initial);
+    t_ = 0.0;
+  }
+  void step(double /*dt*/) override {
+    throw std::logic_error("PoseBody: a JavaScript engine steps this body, not the physics");
+  }
+  /// The engine's state at time t: q body → world (w x y z, as stored), ω in the world frame
+  /// (rad per time unit), taken to the body frame by R(q)ᵀ.
+  void set(const Eigen::Quaterniond& q, const Eigen::Vector3d& omega_world, double t) {
+    q_ = q;
+    omega_ = q_.normalized().toRotationMatrix().transpose() * omega_world;
+    t_ = t;
+  }
+
+ private:
+  Eigen::Quaterniond engine_quaternion() const override { return q_; }
+  Eigen::Vector3d engine_omega_body() const override { return omega_; }
+  Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d omega_ = Eigen::Vector3d::Zero();
+};
+
 /// One simulator with the settings of the page: body, model, integrator, toggles.
 class Session {
  public:
@@ -142,6 +174,28 @@ class Session {
     config.lattice_cells = lattice_cells;
     simulator_ = make_simulator(body_, config);
     steps_ = 0;
+  }
+
+  /// Makes the body one a JavaScript engine steps (PoseBody): step() is refused, observe() takes
+  /// the engine's state after each of its steps.
+  void configure_engine() {
+    simulator_ = std::make_unique<PoseBody>(body_);
+    steps_ = 0;
+  }
+
+  /// One step of a JavaScript engine done: its q (body → world, w x y z) and world-frame ω
+  /// (rad per time unit) after the step, at t = steps·dt. The flip detector sees it as step()
+  /// feeds it (docs/physics.md §14). Returns false when the state stops being finite.
+  bool observe(double qw, double qx, double qy, double qz, double wx, double wy, double wz,
+               double dt) {
+    auto* pose = dynamic_cast<PoseBody*>(simulator_.get());
+    if (!pose) throw std::logic_error("Session: observe() needs configureEngine()");
+    ++steps_;
+    const double t = static_cast<double>(steps_) * dt;
+    pose->set(Eigen::Quaterniond(qw, qx, qy, qz), Eigen::Vector3d(wx, wy, wz), t);
+    if (!pose->finite()) return false;
+    flips_.observe(t, bookspin::analysis::flip_signal(pose->diagnostics(), body_.moments));
+    return true;
   }
 
   /// Resets to identity orientation at t = 0: body-frame ω0 (rad per time unit) and the
@@ -258,6 +312,8 @@ class Session {
 
   /// Principal moments about body x, y, z (mass·length²).
   val moments() const { return vec3(body_.moments); }
+  /// The body's mass (mass units).
+  double mass() const { return body_.cage.mass; }
   /// Body axes sorted by ascending moment (Int32Array(3)).
   val principal_order() const {
     const std::array<int, 3> o = bookspin::physics::principal_order(body_.moments);
@@ -330,6 +386,8 @@ EMSCRIPTEN_BINDINGS(bookspin_physics) {
       .constructor<std::string, double, double, double, double, double>()
       .constructor<val>()
       .function("configure", &Session::configure)
+      .function("configureEngine", &Session::configure_engine)
+      .function("observe", &Session::observe)
       .function("reset", &Session::reset)
       .function("step", &Session::step)
       .function("steps", &Session::steps)
@@ -345,6 +403,7 @@ EMSCRIPTEN_BINDINGS(bookspin_physics) {
       .function("carry", &Session::carry)
       .function("orientation", &Session::orientation)
       .function("moments", &Session::moments)
+      .function("mass", &Session::mass)
       .function("principalOrder", &Session::principal_order)
       .function("bodyCorners", &Session::body_corners)
       .function("cageSize", &Session::cage_size)

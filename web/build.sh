@@ -3,7 +3,10 @@
 #   1. the physics to WebAssembly (web/build-wasm.sh, Debian's emscripten),
 #   2. the app bundled with esbuild (three.js; npm ci from web/package-lock.json when the
 #      install step has not put the packages in place),
-#   3. both inlined into the page by web/make_explorer.py.
+#   3. both inlined into the page by web/make_explorer.py;
+#   4. beside it, the JavaScript engines (cannon-es, Rapier, Jolt: web/src/engines/) as a second
+#      bundle, BUILD_DIR/web/explorer-engines.js, which only `bookspin explore --engines` writes
+#      into the page (the WebAssembly of Rapier and Jolt is inlined in their packages, base64).
 # `bookspin explore SCENE… -o OUT` (found beside the shell: BUILD_DIR/bookspin) then writes the
 # scenes into it: OUT/explorer.html.
 # Nothing to do, nothing done: BUILD_DIR/web/inputs.sha256 holds the hash of every input (these
@@ -21,7 +24,7 @@ stamp="$work/inputs.sha256"
 inputs=$(cd "$root" && find web/build.sh web/build-wasm.sh web/make_explorer.py web/bindings.cpp \
            web/src web/package.json web/package-lock.json src/physics -type f -print0 |
          sort -z | xargs -0 sha256sum | sha256sum | cut -d ' ' -f 1)
-if [ -f "$work/explorer-shell.html" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$inputs" ]; then
+if [ -f "$work/explorer-shell.html" ] && [ -f "$work/explorer-engines.js" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$inputs" ]; then
   echo "web: up to date: $work/explorer-shell.html"
   exit 0
 fi
@@ -32,6 +35,10 @@ if [ ! -x "$here/node_modules/.bin/esbuild" ] || [ "$here/package-lock.json" -nt
 fi
 "$here/node_modules/.bin/esbuild" "$here/src/main.js" --bundle --format=iife --minify \
   --target=es2020 --log-level=warning --outfile="$work/explorer.bundle.js"
+# The engines' bundle: the node branch of Jolt's loader (import("node:module")) stays unbundled
+# and never runs in a browser.
+"$here/node_modules/.bin/esbuild" "$here/src/engines/index.js" --bundle --format=iife --minify \
+  --target=es2020 --external:'node:*' --log-level=warning --outfile="$work/explorer-engines.js"
 python3 "$here/make_explorer.py" "$here/src/index.html" "$work/bookspin_physics.js" \
   "$work/explorer.bundle.js" "$work/explorer-shell.html"
 echo "$inputs" > "$stamp"

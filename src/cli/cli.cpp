@@ -121,6 +121,9 @@ void add_explore(CLI::App& cli, ExploreOptions& options) {
   cmd->add_option("--shell", options.shell,
                   "The page without its scenes, as web/build.sh writes it (default: "
                   "web/explorer-shell.html beside the bookspin program)");
+  cmd->add_flag("--engines", options.engines,
+                "Also run the JavaScript engines cannon-es, Rapier and Jolt in the page, as "
+                "models (about 8 MB more; docs/explorer.md)");
 }
 
 void add_accuracy(CLI::App& cli, AccuracyOptions& options) {

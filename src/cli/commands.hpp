@@ -130,7 +130,8 @@ int export_command(const ExportOptions& options);
 struct ExploreOptions {
   std::vector<std::string> scene_paths;  ///< the page's scenes, in this order
   std::string out_dir = "out";
-  std::string shell;  ///< the page without data; empty: web/explorer-shell.html beside bookspin
+  std::string shell;     ///< the page without data; empty: web/explorer-shell.html beside bookspin
+  bool engines = false;  ///< also the JavaScript engines (explorer-engines.js beside the shell)
 };
 
 /// Writes OUT/explorer.html (products::write_explorer_page): the explorer page with these scenes.

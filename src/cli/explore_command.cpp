@@ -23,6 +23,15 @@ int explore_command(const ExploreOptions& options) {
   } else {
     request.shell = options.shell;
   }
+  if (options.engines) {
+    request.engines = products::explorer_engines_beside(request.shell);
+    std::error_code ec;
+    if (options.shell.empty() && !std::filesystem::is_regular_file(request.engines, ec)) {
+      std::cerr << "bookspin: error: the explorer's JavaScript engines are not built: no "
+                << request.engines.string() << " (run web/build.sh with the build folder)\n";
+      return kExitFailure;
+    }
+  }
   for (const std::string& path : options.scene_paths) {
     scene::Scene scene = scene::parse_scene(path);
     for (const std::string& warning : scene.warnings)

@@ -72,6 +72,10 @@ std::filesystem::path explorer_page_path(const std::filesystem::path& out_dir) {
   return out_dir / "explorer.html";
 }
 
+std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell) {
+  return shell.parent_path() / kExplorerEnginesName;
+}
+
 std::filesystem::path default_explorer_shell() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
@@ -153,6 +157,25 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   data << "};</script>";
   page.replace(at, std::string(kExplorerDataMarker).size(), data.str());
 
+  const std::string engines_marker = kExplorerEnginesMarker;
+  const auto engines_at = page.find(engines_marker);
+  if (!request.engines.empty()) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(request.engines, ec))
+      throw InputError(request.engines.string() +
+                       ": the explorer's JavaScript engines are missing (web/build.sh writes "
+                       "them beside the shell)");
+    if (engines_at == std::string::npos)
+      throw InputError(request.shell.string() + ": this shell has no place for the engines (no " +
+                       engines_marker + " marker; web/build.sh makes one)");
+    page.replace(engines_at, engines_marker.size(),
+                 "<script>" +
+                     script_safe(read_text_file(request.engines, "the explorer's engines")) +
+                     "</script>");
+  } else if (engines_at != std::string::npos) {
+    page.erase(engines_at, engines_marker.size());
+  }
+
   ExplorerPageResult result;
   result.path = explorer_page_path(request.out_dir);
   stop_if_asked(request.stop_signal, "explore write");
@@ -172,8 +195,12 @@ ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
     scenes += cache::manifest_head("explore", "", scene);
   const std::string head =
       "  \"manifest\": 1,\n  \"command\": \"explore\",\n  \"shell\": \"sha256:" +
-      output::sha256_file(request.shell).value_or("unreadable") +
-      "\",\n  \"scenes\": \"sha256:" + output::sha256_text(scenes) + "\",\n";
+      output::sha256_file(request.shell).value_or("unreadable") + "\",\n" +
+      (request.engines.empty()
+           ? std::string()
+           : "  \"engines\": \"sha256:" +
+                 output::sha256_file(request.engines).value_or("unreadable") + "\",\n") +
+      "  \"scenes\": \"sha256:" + output::sha256_text(scenes) + "\",\n";
   ExplorerOutcome done;
   done.result.path = explorer_page_path(request.out_dir);
   int signal = 0;

@@ -27,6 +27,14 @@ std::filesystem::path explorer_page_path(const std::filesystem::path& out_dir);
 /// The marker in the shell that the scenes' data replaces (web/src/index.html).
 inline constexpr const char* kExplorerDataMarker = "<!--BOOKSPIN_DATA-->";
 
+/// The JavaScript engines' bundle (cannon-es, Rapier, Jolt: web/src/engines/), which web/build.sh
+/// writes beside the shell, and the shell's marker it replaces with `--engines` (else removed).
+inline constexpr const char* kExplorerEnginesName = "explorer-engines.js";
+inline constexpr const char* kExplorerEnginesMarker = "<!--BOOKSPIN_ENGINES-->";
+
+/// explorer-engines.js in the folder of `shell`: the engines' bundle that goes with that shell.
+std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell);
+
 /// One scene as the page reads it (web/src/main.js, window.BOOKSPIN_SCENES[i]): a JSON object
 /// with name, title, description, `state` (the page's state, web/src/state.js: body, model,
 /// integrator, normalize, damping, k, cells, dt, axis "custom" with ω0 `w` (body frame,
@@ -42,7 +50,10 @@ std::string explorer_scene_json(const scene::Scene& scene);
 struct ExplorerPageRequest {
   std::vector<scene::Scene> scenes;  ///< in the page's order; names must differ
   std::filesystem::path shell;       ///< the page without data (web/build.sh)
-  std::filesystem::path out_dir;     ///< writes OUT/explorer.html
+  /// The JavaScript engines' bundle to write into the page (explorer_engines_beside); empty:
+  /// none, and the page offers bookspin's own models only.
+  std::filesystem::path engines;
+  std::filesystem::path out_dir;  ///< writes OUT/explorer.html
   /// Polled before each scene ("explore scenes") and before the page is written ("explore
   /// write"): a signal throws Interrupted; the earlier page and its manifest stay.
   StopPoll stop_signal;
@@ -56,10 +67,12 @@ struct ExplorerPageResult {
 /// Writes explorer_page_path(request.out_dir): the shell with its data marker replaced by one
 /// script that sets window.BOOKSPIN_SCENES (explorer_scene_json of each scene) and
 /// window.BOOKSPIN_BOOK_ART (the book's four default face images, render::generate_face_image, as
-/// PNG data: URLs). Throws InputError when two scenes share a name or the shell is missing,
-/// unreadable or lacks the marker (naming the shell), render::RenderError when the fonts of the
-/// covers are missing, OutputError when the page cannot be written (atomic: an earlier page stays
-/// until the new one is complete).
+/// PNG data: URLs); the engines' marker replaced by request.engines as one script (it sets
+/// window.BOOKSPIN_ENGINES) or, without engines, by nothing. Throws InputError when two scenes
+/// share a name, the shell is missing, unreadable or lacks the marker (naming the shell), or the
+/// engines' bundle is missing or unreadable or the shell has no place for it (naming the file),
+/// render::RenderError when the fonts of the covers are missing, OutputError when the page cannot
+/// be written (atomic: an earlier page stays until the new one is complete).
 ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request);
 
 /// OUT/explorer-manifest.json.
@@ -71,7 +84,8 @@ struct ExplorerOutcome {
 };
 
 /// write_explorer_page(request) unless the page's manifest says it is up to date: its head
-/// holds the shell's SHA-256 (the web sources, lockfile and physics built into it) and every
+/// holds the shell's SHA-256 (the web sources, lockfile and physics built into it), the engines'
+/// bundle's when there is one, and every
 /// scene's manifest head (cache::manifest_head: the program, the resolved scene and its input
 /// files), so an unchanged set of inputs leaves the page's bytes and modification time alone.
 /// Same errors as write_explorer_page.

@@ -43,7 +43,8 @@ import sys
 import time
 from pathlib import Path
 
-from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
+from browser import (console_errors, fail, find_browser, open_browser, require, run, test_arguments,
+                     wait_for)
 
 # The page's window, for this test, scripts/explorer-shots.py and bench/explorer_bench.py:
 # WebGL on the CPU, the network off (a proxy on a closed port), the viewport exactly the
@@ -67,16 +68,25 @@ seed = 5
 """
 
 
-def load(driver, url=None):
+def load(driver, url=None, timeout=30):
     """Opens url (None: the page the driver is on, say after a click) and waits until the
-    explorer is ready; fail() after 30 s."""
+    explorer is ready; fail() after `timeout` seconds."""
     if url is not None:
         driver.get(url)
-    for _ in range(300):
+    for _ in range(10 * timeout):
         if driver.execute_script("return !!(window.explorer && window.explorer.ready)"):
             return
         time.sleep(0.1)
     fail(f"the page never became ready: {url or driver.current_url}\n{driver.get_log('browser')}")
+
+
+def slide_to(driver, t):
+    """Drags the time slider to t and waits until the page has caught up to it (it steps in
+    pieces, one per animation frame: web/src/pacing.js)."""
+    driver.execute_script(f"""
+      const s = document.getElementById('slider');
+      s.max = {t!r}; s.value = {t!r}; s.dispatchEvent(new Event('input'));""")
+    wait_for(driver, "return window.explorer.settled()", bool, timeout=240)
 
 
 def simulate_omega(bookspin, scene, settings, t=100.0, dt=0.01):
@@ -457,9 +467,7 @@ def main():
             Select(driver.find_element("id", "axis")).select_by_value(axis)
             driver.find_element("id", "rate").clear()
             driver.find_element("id", "rate").send_keys("1.5\n")
-            driver.execute_script("""
-              const s = document.getElementById('slider');
-              s.max = 300; s.value = 300; s.dispatchEvent(new Event('input'));""")
+            slide_to(driver, 300)
             state = driver.execute_script("return window.explorer.state()")
             if state["axis"] != axis or state["rate"] != 1.5 or abs(state["t"] - 300) > 1e-6:
                 fail(f"the controls did not set axis {axis}, rate 1.5 and t = 300: {state}")
@@ -487,9 +495,7 @@ def main():
         base = driver.execute_script("return window.explorer.state()")
         # One method first: its trail (more than the position marker, a disc of radius 5 of
         # about 80 pixels) and nothing of the second colour.
-        driver.execute_script("""
-          const s = document.getElementById('slider');
-          s.max = 200; s.value = 200; s.dispatchEvent(new Event('input'));""")
+        slide_to(driver, 200)
         colours = sphere_colours(driver)
         print(f"one method: sphere pixels of each colour {colours}")
         if colours[0] < 300 or colours[1] > 0:
@@ -511,9 +517,7 @@ def main():
         if not (relative(omegas[0], first) <= TOL and relative(omegas[1], second) <= TOL):
             fail(f"compare mode's runs are not the two methods: page {omegas}, bookspin simulate "
                  f"{first} (first method) and {second} (rigid-quaternion splitting, normalized)")
-        driver.execute_script("""
-          const s = document.getElementById('slider');
-          s.max = 200; s.value = 200; s.dispatchEvent(new Event('input'));""")
+        slide_to(driver, 200)
         trails = driver.execute_script("return window.explorer.trails()")
         colours = sphere_colours(driver)
         driver.save_screenshot(str(shots / "explorer-compare.png"))

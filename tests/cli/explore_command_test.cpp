@@ -213,5 +213,57 @@ TEST(ExploreCommand, WithoutTheBuiltShellSaysHowToBuildItAndExitsOne) {
   EXPECT_TRUE(fs::exists(dir / "out" / "explorer.html"));
 }
 
+TEST(ExploreCommand, EnginesGoInOnlyWithTheFlagAndCountInTheUpToDateCheck) {
+  // A shell with the engines' marker, and the engines' bundle beside it (web/build.sh).
+  const fs::path dir = fresh_dir("explore/engines");
+  const fs::path shell = write_shell(
+      dir,
+      "<html>\n<!--BOOKSPIN_DATA-->\n<!--BOOKSPIN_ENGINES-->\n<script>app()</script>\n</html>\n");
+  const fs::path engines = dir / "explorer-engines.js";
+  std::ofstream(engines) << "window.BOOKSPIN_ENGINES=['first'];";
+  const fs::path page = dir / "out" / "explorer.html";
+  const std::string args = "explore " + scene_path("fig09-matrix-unstable-x") + " --shell " +
+                           shell.string() + " -o " + (dir / "out").string();
+
+  CliResult r = run_bookspin(args);
+  ASSERT_EQ(r.status, 0) << r.output;
+  std::string text = read_file(page);
+  EXPECT_EQ(text.find("BOOKSPIN_ENGINES"), std::string::npos) << "no engines without the flag";
+  EXPECT_NE(text.find("</script>\n\n<script>app()</script>"), std::string::npos);
+
+  r = run_bookspin(args + " --engines");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("up to date"), std::string::npos) << r.output;
+  text = read_file(page);
+  EXPECT_NE(text.find("\n<script>window.BOOKSPIN_ENGINES=['first'];</script>\n<script>app()"),
+            std::string::npos)
+      << text.substr(text.size() - 200);
+  EXPECT_NE(run_bookspin(args + " --engines").output.find("up to date"), std::string::npos);
+  std::ofstream(engines) << "window.BOOKSPIN_ENGINES=['second'];";
+  r = run_bookspin(args + " --engines");
+  EXPECT_EQ(r.output.find("up to date"), std::string::npos) << "a changed bundle rewrites the page";
+  EXPECT_NE(read_file(page).find("['second']"), std::string::npos);
+  r = run_bookspin(args);
+  EXPECT_EQ(r.output.find("up to date"), std::string::npos) << "without the flag again";
+  EXPECT_EQ(read_file(page).find("BOOKSPIN_ENGINES"), std::string::npos);
+
+  // The bundle missing, or a shell with no place for it: exit 2 naming the file, nothing written.
+  fs::remove_all(dir / "out");
+  fs::remove(engines);
+  r = run_bookspin(args + " --engines");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(engines.string() + ": the explorer's JavaScript engines are missing"),
+            std::string::npos)
+      << r.output;
+  fs::create_directories(dir / "old");
+  const fs::path old_shell = write_shell(dir / "old", kShell);
+  std::ofstream(dir / "old" / "explorer-engines.js") << "window.BOOKSPIN_ENGINES=[];";
+  r = run_bookspin("explore " + scene_path("fig09-matrix-unstable-x") + " --shell " +
+                   old_shell.string() + " --engines -o " + (dir / "out").string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("has no place for the engines"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(page));
+}
+
 }  // namespace
 }  // namespace bookspin::cli

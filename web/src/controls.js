@@ -1,7 +1,8 @@
 // The control column: the state shown in the page's inputs and read back from them. Only what
 // the chosen model uses is shown: its own integrators (physics::supports through the
 // WebAssembly module), normalization where it has one, damping and k for the particle model,
-// lattice cells for a particle body other than the book.
+// lattice cells for a particle body other than the book. The JavaScript engines' models (a page
+// written with --engines) have neither integrator nor normalization of bookspin's.
 import { MODELS, INTEGRATORS, BODIES, AXES } from './state.js';
 
 const $ = (id) => document.getElementById(id);
@@ -20,20 +21,28 @@ function show(id, visible) {
 }
 
 export class Controls {
-  /** `supports(model, integrator)`: whether the physics accepts the pair. */
-  constructor(scenes, supports) {
+  /** `supports(model, integrator)`: whether the physics accepts the pair; `engines`: the
+   * JavaScript engines' adapters (web/src/engines/), offered as models after bookspin's own. */
+  constructor(scenes, supports, engines = []) {
     this.scenes = scenes;
     this.supports = supports;
+    this.engineModels = engines.map((e) => e.model);
     fillSelect('scene', [''].concat(scenes.map((s) => s.name)));
     $('scene').options[0].textContent = '(custom)';
     fillSelect('body', BODIES);
-    fillSelect('model', MODELS); fillSelect('model2', MODELS);
+    fillSelect('model', MODELS.concat(this.engineModels)); fillSelect('model2', MODELS.concat(this.engineModels));
     fillSelect('axis', AXES);
   }
 
-  /** The integrators `model` accepts. */
+  /** The integrators `model` accepts (an engine's model: its own, named 'euler' in the state). */
   integratorsOf(model) {
+    if (this.engineModels.includes(model)) return ['euler'];
     return INTEGRATORS.filter((i) => this.supports(model, i));
+  }
+
+  /** Whether `model` has bookspin's integrators and normalization (not exact, not an engine). */
+  integrated(model) {
+    return model !== 'exact' && !this.engineModels.includes(model);
   }
 
   /** The state from the inputs; an integrator the model does not take becomes its first. */
@@ -51,7 +60,7 @@ export class Controls {
     const next = { ...state };
     for (const [m, i] of [['model', 'integrator'], ['model2', 'integrator2']]) {
       const list = this.integratorsOf(next[m]);
-      if (!list.includes(next[i])) next[i] = list[0];
+      if (list.length && !list.includes(next[i])) next[i] = list[0];
     }
     return next;
   }
@@ -64,17 +73,17 @@ export class Controls {
     for (const id of NUMBERS) $(id).value = state[id];
     for (const id of BOXES) $(id).checked = state[id];
     ['wx', 'wy', 'wz'].forEach((id, i) => { $(id).value = state.w[i]; });
-    const exact = state.model === 'exact', particle = state.model === 'particle';
-    show('integratorRow', !exact);
-    show('normalizeRow', !exact);
+    const particle = state.model === 'particle';
+    show('integratorRow', this.integrated(state.model));
+    show('normalizeRow', this.integrated(state.model));
     show('dampingRow', particle);
     show('kRow', particle);
     show('cellsRow', particle && state.body !== 'book');
     show('custom', state.axis === 'custom');
     show('rateRow', state.axis !== 'custom');
     show('second', state.compare);
-    show('integrator2Row', state.model2 !== 'exact');
-    show('normalize2Row', state.model2 !== 'exact');
+    show('integrator2Row', this.integrated(state.model2));
+    show('normalize2Row', this.integrated(state.model2));
     // 'mesh' is the scene's own mesh body: offered only where the scene has one.
     const scene = this.scenes.find((x) => x.name === state.scene);
     const mesh = $('body').querySelector('option[value="mesh"]');

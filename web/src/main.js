@@ -2,8 +2,11 @@
 // the body drawn with three.js, the momentum sphere and plots on 2D canvases. No physics and no
 // measuring here: every number drawn comes from the WebAssembly module (docs/explorer.md).
 // This file wires the parts: state and URL (state.js), runs (runs.js), 3D view (view3d.js),
-// sphere (sphere.js), plots (plots.js), controls (controls.js).
+// sphere (sphere.js), plots (plots.js), controls (controls.js), the work per frame (pacing.js);
+// the JavaScript engines, with --engines, come as window.BOOKSPIN_ENGINES (engines/).
 import { parseState, formatState } from './state.js';
+import { Pacer, FIRST_BUDGET_MS } from './pacing.js';
+import { testHooks } from './hooks.js';
 import { Runs, sceneBase } from './runs.js';
 import { View3D } from './view3d.js';
 import { Sphere } from './sphere.js';
@@ -12,19 +15,26 @@ import { Controls, VIEW_CONTROLS } from './controls.js';
 
 const $ = (id) => document.getElementById(id);
 
-function startApp(wasm) {
+function startApp(wasm, engines) {
   const SCENES = window.BOOKSPIN_SCENES || [];  // inlined by bookspin explore
   const app = {
     state: parseState(location.search, sceneBase(SCENES, new URLSearchParams(location.search).get('scene') || '')),
-    runs: new Runs(wasm, SCENES),
+    runs: new Runs(wasm, SCENES, engines),
     view: new View3D($('view'), window.BOOKSPIN_BOOK_ART || null),
-    controls: new Controls(SCENES, (m, i) => wasm.supports(m, i)),
+    controls: new Controls(SCENES, (m, i) => wasm.supports(m, i), engines),
     playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, plotsDrawnAt: -Infinity,
+    pacer: new Pacer((text) => { $('notice').textContent = text; }),
     seen: { sphere: null, plots: null },
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
     costs: { physics: 0, view: 0, sphere: 0, plots: 0, readout: 0 },
   };
   const base = () => sceneBase(SCENES, app.state.scene);
+
+  /** Steps towards time `target` (for at most `ms`, the rest a piece per frame). */
+  function catchUp(target, ms) {
+    app.pacer.catchUp(app.runs, app.state, target, ms);
+    app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
+  }
 
   function writeUrl() {
     const q = formatState(app.state, base());
@@ -37,8 +47,8 @@ function startApp(wasm) {
     app.view.setRuns(runs.list, state.showL);
     const target = state.t;
     state.t = 0;
-    if (target > 0) state.t = runs.advanceTo(target, state.dt);
-    app.view.pose(runs.list, state.showL, state.showAxes);
+    app.pacer.stop();
+    catchUp(target, FIRST_BUDGET_MS);
     writeUrl();
   }
 
@@ -111,14 +121,21 @@ function startApp(wasm) {
   }
 
   function frame(now) {
-    if (app.playing && app.runs.list.length) {
+    const t0 = performance.now();
+    if (app.pacer.continue(app.runs, app.state)) {
+      app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
+      if (app.pacer.target === null) writeUrl();
+      app.costs.physics += performance.now() - t0;
+    } else if (app.playing && app.runs.list.length) {
       if (app.lastFrame !== null) {
         const dtWall = Math.min(0.1, (now - app.lastFrame) / 1000);
         app.stepDebt += dtWall * app.state.speed / app.state.dt;
         const n = Math.floor(app.stepDebt);
         app.stepDebt -= n;
-        const t0 = performance.now();
-        if (n > 0) advance(app.state.t + n * app.state.dt);
+        if (n > 0) {
+          app.pacer.play(app.runs, app.state, n, t0);
+          app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
+        }
         app.costs.physics += performance.now() - t0;
       }
       app.lastFrame = now;
@@ -140,6 +157,7 @@ function startApp(wasm) {
       app.state = app.controls.read(app.state);
       app.state.t = VIEW_CONTROLS.includes(id) ? t : 0;
     }
+    app.state = app.pacer.limit(app.state, base());
     app.controls.write(app.state);
     if (VIEW_CONTROLS.includes(id)) { app.view.pose(app.runs.list, app.state.showL, app.state.showAxes); writeUrl(); } else rebuild();
     draw();
@@ -150,7 +168,7 @@ function startApp(wasm) {
   $('slider').addEventListener('input', () => {
     setPlaying(false);
     const target = Number($('slider').value);
-    if (target < app.state.t) { app.state.t = target; rebuild(); } else advance(target);
+    if (target < app.state.t) { app.state.t = target; rebuild(); } else catchUp(target, FIRST_BUDGET_MS);
     draw(); writeUrl();
   });
   window.addEventListener('keydown', (ev) => {
@@ -161,33 +179,8 @@ function startApp(wasm) {
   window.addEventListener('resize', resize);
 
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
-  window.explorer = {
-    ready: false,
-    state: () => structuredClone(app.state),
-    url: () => location.search,
-    setPlaying,
-    framesDrawn: () => app.framesDrawn,
-    /** Milliseconds spent so far in the frames' physics, 3D view, sphere, plots and readout. */
-    frameCosts: () => ({ ...app.costs }),
-    /** ω (body frame) of each run at time t (steps round(t/dt) from the start). */
-    omegaAt(t) { app.state.t = 0; rebuild(); advance(t); draw(); return app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body)); },
-    flips: () => app.runs.flips(),
-    /** Each run's flip detector: {count, first, period} (analysis::FlipDetector). */
-    flipMeasures: () => app.runs.list.map((r) => r.session.flips()),
-    trails: () => app.runs.list.map((r) => ({ colour: r.colour, points: r.trail.length, label: r.label })),
-    /** The sphere's view rotation (body → view), row-major 3×3. */
-    sphereRotation: () => { const e = sphere.rotation.elements; return [0, 1, 2].map((i) => [e[i], e[i + 3], e[i + 6]]); },
-    /** Wall-clock ns per step of a fresh run of `model`/`integrator` (benchmark). */
-    nsPerStep(model, integrator, normalize, steps) {
-      const s = app.runs.startSession(app.state, model, integrator, normalize);
-      const t0 = performance.now();
-      s.step(app.state.dt, steps);
-      const ns = (performance.now() - t0) * 1e6 / steps;
-      s.delete();
-      return ns;
-    },
-  };
-  app.state = app.controls.fit(app.state);
+  window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying });
+  app.state = app.pacer.limit(app.controls.fit(app.state), base());
   app.controls.write(app.state);
   resize();
   rebuild();
@@ -196,4 +189,9 @@ function startApp(wasm) {
   requestAnimationFrame(frame);
 }
 
-BookspinPhysics().then(startApp);
+// The JavaScript engines (bookspin explore --engines); one that fails to load is left out.
+const ENGINES = (window.BOOKSPIN_ENGINES || []).map((e) => e.load().then(() => e, (err) => {
+  console.warn(`${e.label}: not loaded: ${err}`);
+  return null;
+}));
+Promise.all([BookspinPhysics(), ...ENGINES]).then(([wasm, ...engines]) => startApp(wasm, engines.filter(Boolean)));

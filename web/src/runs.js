@@ -1,9 +1,14 @@
 // The physics runs of the page: one simulator session per method (web/bindings.cpp), stepped,
 // recorded for the plots and the sphere's trail. Every number comes from the WebAssembly
 // module, flips included (analysis::FlipDetector, fed every step); nothing is computed here.
+// A JavaScript engine's run (web/src/engines/) is stepped by its engine; after every step its q
+// and ω go into a WebAssembly session (Session.observe), which measures and draws it alike.
 import { DEFAULTS, AXES } from './state.js';
 
 const TRAIL_COLOURS = ['#e8b00b', '#35c0f0'];
+/** Steps between records at most (one record per 0.05 time units otherwise), so that a tiny dt
+ * still returns to the page between pieces of work. */
+const MAX_CHUNK = 2000;
 
 /** The state a scene starts from: the page's defaults under the scene's own settings. */
 export function sceneBase(scenes, name) {
@@ -18,16 +23,27 @@ function methodsOf(state) {
   return methods;
 }
 
-function labelOf(model, integrator, normalize) {
+function labelOf(model, integrator, normalize, engine) {
+  if (engine) return engine.label;
   if (model === 'exact') return 'exact';
   return `${model}, ${integrator}${normalize ? ', normalized' : ''}`;
 }
 
 export class Runs {
-  constructor(wasm, scenes) {
+  /** `engines`: the JavaScript engines' adapters (web/src/engines/engine.js), loaded; [] in a
+   * page written without `--engines`. */
+  constructor(wasm, scenes, engines = []) {
     this.wasm = wasm;
     this.scenes = scenes;
-    this.list = [];  // {session, model, integrator, normalize, colour, label, trail, history, E0, diverged}
+    this.engines = engines;
+    // {session, engine (an EngineRun or null), model, integrator, normalize, colour, label, trail,
+    //  history, E0, diverged}
+    this.list = [];
+  }
+
+  /** The engine adapter of `model`, or undefined for bookspin's own models. */
+  engineOf(model) {
+    return this.engines.find((e) => e.model === model);
   }
 
   /**
@@ -54,18 +70,39 @@ export class Runs {
     return w;
   }
 
-  /** A fresh session of `model` configured and reset to the state's start. */
-  startSession(state, model, integrator, normalize) {
+  /** A fresh session of `model` configured and reset to the state's start: {session, engine},
+   * `engine` the JavaScript engine's run of an engine model (else null), started from the
+   * session's jiggled ω0 with the body's mass and principal moments. */
+  startRun(state, model, integrator, normalize) {
+    const adapter = this.engineOf(model);
+    if (!adapter && !['particle', 'rigid-matrix', 'rigid-quaternion', 'exact'].includes(model))
+      throw new Error(`${model}: this page has no JavaScript engines (bookspin explore --engines writes them)`);
     const session = this.bodySession(state);
     try {
-      session.configure(model, integrator, normalize, state.damping, state.k, state.cells);
+      if (adapter) session.configureEngine();
+      else session.configure(model, integrator, normalize, state.damping, state.k, state.cells);
       const w = Runs.omega0(session, state);
       session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
+      const engine = adapter ? adapter.start({
+        mass: session.mass(), moments: Array.from(session.moments()), size: Array.from(session.cageSize()),
+        omega0: Array.from(session.diagnostics().omega_body),
+      }, state.dt) : null;
+      return { session, engine };
     } catch (e) {
       session.delete();
       throw e;
     }
-    return session;
+  }
+
+  /** `n` steps of `dt` of `run`; false when its state stopped being finite. */
+  static step(run, dt, n) {
+    if (!run.engine) return run.session.step(dt, n);
+    for (let i = 0; i < n; ++i) {
+      run.engine.step();
+      const q = run.engine.quaternion(), w = run.engine.omegaWorld();
+      if (!run.session.observe(q[0], q[1], q[2], q[3], w[0], w[1], w[2], dt)) return false;
+    }
+    return true;
   }
 
   /** Starts every method of `state` from t = 0; returns the error messages of those that failed. */
@@ -74,9 +111,10 @@ export class Runs {
     const errors = [];
     methodsOf(state).forEach(([model, integrator, normalize], k) => {
       try {
-        const session = this.startSession(state, model, integrator, normalize);
-        const run = { session, model, integrator, normalize, colour: TRAIL_COLOURS[k],
-          label: labelOf(model, integrator, normalize), trail: [], history: [], diverged: '' };
+        const { session, engine } = this.startRun(state, model, integrator, normalize);
+        const run = { session, engine, model, integrator, normalize, colour: TRAIL_COLOURS[k],
+          label: labelOf(model, integrator, normalize, this.engineOf(model)), trail: [], history: [],
+          diverged: '' };
         this.record(run, state.dt);
         run.E0 = run.history[0].E;
         this.list.push(run);
@@ -99,24 +137,29 @@ export class Runs {
     if (run.history.length > 4000) run.history = run.history.filter((_, i) => i % 2 === 0);
   }
 
-  /** Steps every run to time t (the step count round(t/dt)), recording every 0.05 time units;
-   * returns the time reached. */
-  advanceTo(t, dt) {
+  /** Steps every run towards time t (the step count round(t/dt)), the runs side by side in
+   * pieces of 0.05 time units (at most MAX_CHUNK steps), recording after each; stops after the
+   * piece that passes `deadline` (performance.now() milliseconds). Returns the time every run
+   * has reached (t when done; a diverged run has stopped for good and counts as done). */
+  advanceTo(t, dt, deadline = Infinity) {
     const total = Math.round(t / dt);
-    const chunk = Math.max(1, Math.round(0.05 / dt));
-    for (const r of this.list) {
-      let left = total - r.session.steps();
-      while (left > 0 && !r.diverged) {
-        const n = Math.min(chunk, left);
-        if (!r.session.step(dt, n)) {
+    const chunk = Math.max(1, Math.min(MAX_CHUNK, Math.round(0.05 / dt)));
+    for (let busy = true; busy;) {
+      busy = false;
+      for (const r of this.list) {
+        const left = total - r.session.steps();
+        if (left <= 0 || r.diverged) continue;
+        if (!Runs.step(r, dt, Math.min(chunk, left))) {
           const reason = r.session.divergenceReason();
           r.diverged = `diverged at t = ${(r.session.steps() * dt).toFixed(3)}${reason ? ': ' + reason : ''}`;
         }
-        left -= n;
         this.record(r, dt);
+        busy = true;
       }
+      if (busy && performance.now() > deadline) break;
     }
-    return total * dt;
+    const live = this.list.filter((r) => !r.diverged).map((r) => r.session.steps());
+    return Math.min(total, ...live) * dt;
   }
 
   /** The flip count of each run (analysis::FlipDetector on every step, docs/physics.md §14). */
@@ -125,7 +168,10 @@ export class Runs {
   }
 
   dispose() {
-    for (const r of this.list) r.session.delete();
+    for (const r of this.list) {
+      if (r.engine) r.engine.dispose();
+      r.session.delete();
+    }
     this.list = [];
   }
 }

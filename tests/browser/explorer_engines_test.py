@@ -1,0 +1,170 @@
+#!/usr/bin/env python3
+"""The explorer page's JavaScript engines and its bounded work (web/src/engines/, web/src/pacing.js,
+docs/explorer.md) in headless Chromium, the page opened from disk with the network off.
+
+Builds the page's program with web/build.sh BINARY_DIR, writes the page of every scene twice with
+`bookspin explore`, with and without `--engines`, and checks:
+  - without --engines the page holds no engine (no window.BOOKSPIN_ENGINES, no model of theirs
+    in the selects) and is smaller than the page with them by at least the engines' bundle;
+  - each JavaScript engine in the page (cannon-es, Rapier, Jolt without and with
+    mApplyGyroscopicForce), two at a time in compare mode, gives the same body-frame ω at t = 20
+    as the same npm package run under node on the same body and step (tests/browser/
+    engines_node.mjs, written apart from the page's adapters, the book's principal moments in
+    closed form m(b² + c²)/12…), to 1e-12 relative; each run draws its trail and shows its flips;
+  - links with extreme values keep the tab responsive: t = 1e9, dt = 1e-9 and speed = 1e9 are
+    refused with a visible notice; a long catch-up (t = 1e5, six million steps) goes on in pieces
+    with its progress shown and stops on Reset; playing faster than the machine steps says so;
+    every script run in the page meanwhile answers within 2 s.
+Screenshots go to BINARY_DIR/test-output/browser/explorer-engines-*.png.
+
+Usage: explorer_engines_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
+Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten, node or npm is missing,
+except under CI=true, where that is a failure (browser.py).
+"""
+import json
+import time
+
+from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
+from explorer_test import load as load_page
+
+WINDOW = dict(size=(1280, 720), webgl=True, offline=True, exact_viewport=True)
+TOL = 1e-12
+ENGINES = ("cannon-es", "rapier", "jolt", "jolt-gyroscopic")
+# The book of scenes/exact-unstable-x.toml near its intermediate axis x, no jiggle, so that node
+# starts from the same ω0: the page's ω0 is L0/I with L0 = I·w (docs/physics.md §5).
+BOOK = dict(size=(1.878, 2.9085, 0.5), mass=8.0)
+W0 = (5.0, 0.01, 0.02)
+T_END = 20.0
+RESPONSIVE_S = 2.0
+
+
+def load(driver, url):
+    """explorer_test.load with more time: the engines' WebAssembly compiles as the page opens."""
+    load_page(driver, url, timeout=60)
+
+
+def answered(driver, script, what):
+    """Runs `script` in the page; fail() when it takes longer than RESPONSIVE_S."""
+    t0 = time.monotonic()
+    result = driver.execute_script(script)
+    took = time.monotonic() - t0
+    if took > RESPONSIVE_S:
+        fail(f"{what}: the page took {took:.1f} s to answer a script (limit {RESPONSIVE_S} s)")
+    return result
+
+
+def node_omega(node, modules, tests, engine, dt, steps):
+    a, b, c = BOOK["size"]
+    m = BOOK["mass"]
+    moments = [m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12]
+    spec = dict(mass=m, moments=moments, size=list(BOOK["size"]),
+                omega0=[(i * w) / i for i, w in zip(moments, W0)], dt=dt, steps=steps)
+    out = run([node, str(tests / "engines_node.mjs"), str(modules), engine, json.dumps(spec)])
+    return json.loads(out.strip().splitlines()[-1])["omega_body"]
+
+
+def check_size(plain, with_engines, bundle):
+    text = plain.read_text()
+    if "BOOKSPIN_ENGINES=" in text or "<!--BOOKSPIN_ENGINES-->" in text:
+        fail("the page written without --engines carries the engines (or their marker)")
+    grown = with_engines.stat().st_size - plain.stat().st_size
+    if grown < bundle.stat().st_size:
+        fail(f"the page with --engines is only {grown} bytes larger than without; the engines' "
+             f"bundle is {bundle.stat().st_size}")
+    print(f"pages: {plain.stat().st_size} bytes without the engines, "
+          f"{with_engines.stat().st_size} with them")
+
+
+def check_engines(driver, page, node, modules, tests, shots):
+    for first, second in (("cannon-es", "rapier"), ("jolt", "jolt-gyroscopic")):
+        w = ",".join(map(repr, W0))
+        load(driver, f"{page}?scene=exact-unstable-x&axis=custom&w={w}&jiggle=0&model={first}"
+                     f"&compare=1&model2={second}")
+        options = driver.execute_script(
+            "return [...document.getElementById('model2').options].map((o) => o.value)")
+        if not set(ENGINES) <= set(options):
+            fail(f"the compare select does not offer every engine: {options}")
+        dt = driver.execute_script("return window.explorer.state().dt")
+        steps = round(T_END / dt)
+        got = driver.execute_script(f"return window.explorer.omegaAt({T_END!r})")
+        for engine, omega in zip((first, second), got):
+            expected = node_omega(node, modules, tests, engine, dt, steps)
+            err = max(abs(x - y) for x, y in zip(omega, expected)) / max(abs(x) for x in expected)
+            print(f"{engine}: page ω({T_END}) = {omega}, node {expected}: {err:.1e} relative")
+            if not err <= TOL:
+                fail(f"{engine}: ω at t = {T_END} in the page {omega} is not node's {expected} "
+                     f"({err:.2e} relative, limit {TOL})")
+        trails = driver.execute_script("return window.explorer.trails()")
+        if len(trails) != 2 or min(t["points"] for t in trails) < 100:
+            fail(f"compare mode of {first} and {second} did not draw both trails: {trails}")
+        status = driver.find_element("id", "status").text
+        flips = driver.execute_script("return window.explorer.flips()")
+        if status.count("flips ") != 2 or any(f"flips {n}" not in status for n in flips):
+            fail(f"the readout does not show both runs' flips {flips}: {status!r}")
+        driver.save_screenshot(str(shots / f"explorer-engines-{first}-{second}.png"))
+        errors = console_errors(driver)
+        if errors:
+            fail(f"console errors with {first} and {second}: {errors}")
+
+
+def check_extreme_links(driver, page, shots):
+    notice = "return document.getElementById('notice').textContent"
+    for query, key in (("t=1e9", "t = 1000000000 refused"), ("dt=1e-9", "dt = 1e-9 refused"),
+                       ("speed=1e9", "speed = 1000000000 refused")):
+        load(driver, f"{page}?scene=fig09-matrix-unstable-x&{query}")
+        text = answered(driver, notice, query)
+        if key not in text:
+            fail(f"?{query}: no visible refusal ({key!r}) but {text!r}")
+        state = answered(driver, "return window.explorer.state()", query)
+        if not (state["t"] == 0 and state["dt"] < 1 and state["speed"] <= 1e4):
+            fail(f"?{query}: the refused value is still in the state: {state}")
+        print(f"?{query}: {text}")
+    # A long but allowed catch-up: six million steps, in pieces, with its progress.
+    load(driver, f"{page}?scene=fig09-matrix-unstable-x&t=100000")
+    first = answered(driver, "return window.explorer.state().t", "t=1e5")
+    time.sleep(1.0)
+    later = answered(driver, "return [window.explorer.state().t, window.explorer.settled()]", "t=1e5")
+    text = answered(driver, notice, "t=1e5")
+    driver.save_screenshot(str(shots / "explorer-engines-catch-up.png"))
+    if later[1] or not (0 <= first < later[0] < 100000) or "simulating to t = 100000" not in text:
+        fail(f"?t=1e5: no catch-up in pieces with its progress: t {first} then {later}, {text!r}")
+    print(f"?t=1e5: t = {first} at ready, {later[0]} a second later: {text}")
+    driver.find_element("id", "reset").click()
+    after = answered(driver, "return [window.explorer.state().t, window.explorer.settled()]", "reset")
+    if after != [0, True] or answered(driver, notice, "reset"):
+        fail(f"Reset did not stop the catch-up: {after}")
+    # Playing faster than the machine steps: a frame's budget, and a notice.
+    load(driver, f"{page}?scene=fig09-matrix-unstable-x&dt=1e-6&speed=10000")
+    answered(driver, "window.explorer.setPlaying(true)", "play")
+    time.sleep(1.5)
+    text = answered(driver, notice, "play")
+    frames = answered(driver, "return window.explorer.framesDrawn()", "play")
+    if "playing slower" not in text:
+        fail(f"playing 1e10 steps a second: no notice that it plays slower: {text!r}")
+    print(f"dt=1e-6 speed=1e4: {text} ({frames} frames drawn)")
+
+
+def main():
+    bookspin, source, binary = test_arguments(__doc__)
+    chromium, driver_path = find_browser()
+    require("em++", "npm")
+    node = require("node")[0]
+    out = binary / "test-output" / "explorer-engines"
+    shots = binary / "test-output" / "browser"
+    shots.mkdir(parents=True, exist_ok=True)
+    run(["bash", str(source / "web" / "build.sh"), str(binary)])
+    scenes = sorted(str(p) for p in (source / "scenes").glob("*.toml"))
+    run([bookspin, "explore", *scenes, "-o", str(out / "plain")])
+    run([bookspin, "explore", *scenes, "--engines", "-o", str(out / "engines")])
+    check_size(out / "plain" / "explorer.html", out / "engines" / "explorer.html",
+               binary / "web" / "explorer-engines.js")
+    modules = source / "web" / "node_modules"
+    with open_browser(chromium, driver_path, **WINDOW) as driver:
+        check_engines(driver, (out / "engines" / "explorer.html").resolve().as_uri(), node,
+                      modules, source / "tests" / "browser", shots)
+        check_extreme_links(driver, (out / "plain" / "explorer.html").resolve().as_uri(), shots)
+    print("explorer engines: OK")
+
+
+if __name__ == "__main__":
+    main()

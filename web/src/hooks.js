@@ -1,0 +1,40 @@
+// The page's hooks for its tests and benchmark (tests/browser/explorer_test.py,
+// tests/browser/explorer_engines_test.py, bench/explorer_bench.py): window.explorer.
+import { Runs } from './runs.js';
+
+/** The hooks over `app` (main.js) and its sphere; `fns`: main.js's rebuild, advance, draw,
+ * setPlaying. */
+export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying }) {
+  return {
+    ready: false,
+    state: () => structuredClone(app.state),
+    /** Whether the page has caught up with its time (no piece of a catch-up left). */
+    settled: () => app.pacer.target === null,
+    url: () => location.search,
+    setPlaying,
+    framesDrawn: () => app.framesDrawn,
+    /** Milliseconds spent so far in the frames' physics, 3D view, sphere, plots and readout. */
+    frameCosts: () => ({ ...app.costs }),
+    /** ω (body frame) of each run at time t (steps round(t/dt) from the start), in one go. */
+    omegaAt(t) {
+      app.state.t = 0; rebuild(); advance(t); app.pacer.stop(); app.pacer.notice(app.state); draw();
+      return app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body));
+    },
+    flips: () => app.runs.flips(),
+    /** Each run's flip detector: {count, first, period} (analysis::FlipDetector). */
+    flipMeasures: () => app.runs.list.map((r) => r.session.flips()),
+    trails: () => app.runs.list.map((r) => ({ colour: r.colour, points: r.trail.length, label: r.label })),
+    /** The sphere's view rotation (body → view), row-major 3×3. */
+    sphereRotation: () => { const e = sphere.rotation.elements; return [0, 1, 2].map((i) => [e[i], e[i + 3], e[i + 6]]); },
+    /** Wall-clock ns per step of a fresh run of `model`/`integrator` (benchmark). */
+    nsPerStep(model, integrator, normalize, steps) {
+      const run = app.runs.startRun(app.state, model, integrator, normalize);
+      const t0 = performance.now();
+      Runs.step(run, app.state.dt, steps);
+      const ns = (performance.now() - t0) * 1e6 / steps;
+      if (run.engine) run.engine.dispose();
+      run.session.delete();
+      return ns;
+    },
+  };
+}
