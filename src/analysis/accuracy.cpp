@@ -26,11 +26,22 @@ std::unique_ptr<physics::Simulator> start(const AccuracySettings& s, const Metho
   return sim;
 }
 
-double time_steps(const AccuracySettings& s, const Method& m, double dt, long steps) {
+/// Steps between two questions of a run's `stop` (as measures.hpp's kStopPollSteps).
+constexpr long kStopEvery = 64;
+
+bool stop_now(const std::function<bool()>& stop, long step) {
+  return stop && step % kStopEvery == 0 && stop();
+}
+
+double time_steps(const AccuracySettings& s, const Method& m, double dt, long steps,
+                  const std::function<bool()>& stop) {
   auto sim = start(s, m);
   const long n = std::min<long>(steps, 200000);
   const auto begin = std::chrono::steady_clock::now();
-  for (long i = 0; i < n; ++i) sim->step(dt);
+  for (long i = 0; i < n; ++i) {
+    if (stop_now(stop, i + 1)) return 0.0;
+    sim->step(dt);
+  }
   const auto end = std::chrono::steady_clock::now();
   volatile double sink = sim->corners()(0, 0);  // keep the loop's result observable
   (void)sink;
@@ -137,7 +148,8 @@ std::vector<Method> rigid_methods() {
 }
 
 EnergyHistory energy_history(const AccuracySettings& s, const physics::ExactRotation& exact,
-                             const Method& m, double dt, double flips, int windows) {
+                             const Method& m, double dt, double flips, int windows,
+                             const std::function<bool()>& stop) {
   EnergyHistory history;
   history.method = m;
   history.dt = dt;
@@ -147,6 +159,7 @@ EnergyHistory energy_history(const AccuracySettings& s, const physics::ExactRota
   const double E0 = sim->diagnostics().energy_total;
   double worst = 0.0;
   for (long i = 1; i <= steps; ++i) {
+    if (stop_now(stop, i)) return history;
     sim->step(dt);
     if (!sim->finite()) {
       history.diverged = true;
@@ -177,7 +190,7 @@ double orientation_error_at(const AccuracySettings& s, const physics::ExactRotat
 }
 
 AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exact, const Method& m,
-                    double dt) {
+                    double dt, const std::function<bool()>& stop) {
   const double flip = exact.flip_period();
   if (!std::isfinite(flip)) {
     throw InputError("the exact motion has no flip period (separatrix or pure spin)");
@@ -192,6 +205,7 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
   FlipDetector flips;
   flips.observe(0.0, flip_signal(d0, s.body.moments));
   for (long i = 1; i <= row.steps; ++i) {
+    if (stop_now(stop, i)) return row;
     sim->step(dt);
     if (!sim->finite()) {
       row.diverged = true;
@@ -218,7 +232,7 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
   } else {
     row.first_flip_error = nan;
   }
-  row.ns_per_step = time_steps(s, m, dt, row.steps);
+  row.ns_per_step = time_steps(s, m, dt, row.steps, stop);
   return row;
 }
 

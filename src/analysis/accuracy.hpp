@@ -1,6 +1,7 @@
 #pragma once
 // How far each model × integrator is from the exact motion (docs/physics.md §8–10). The door of
 // src/analysis: pure computation on top of src/physics (timing by std::chrono only).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -69,9 +70,10 @@ struct AccuracyRow {
 
 /// Runs one method at one dt from `settings.initial` for `settings.flips` exact flip periods.
 /// Throws InputError if the exact motion has no flip period (separatrix or a
-/// pure principal-axis spin).
+/// pure principal-axis spin). `stop` (may be empty), asked every few dozen steps, abandons the
+/// run: it returns at once and the row means nothing (the caller discards it).
 AccuracyRow measure(const AccuracySettings& settings, const physics::ExactRotation& exact,
-                    const Method& method, double dt);
+                    const Method& method, double dt, const std::function<bool()>& stop = {});
 
 /// The exact reference for `settings` (same jiggled initial L as every model).
 physics::ExactRotation exact_reference(const AccuracySettings& settings);
@@ -87,9 +89,11 @@ struct EnergyHistory {
   bool diverged = false;
 };
 
-/// Runs `method` at step `dt` for `flips` exact flip periods in `windows` windows.
+/// Runs `method` at step `dt` for `flips` exact flip periods in `windows` windows. `stop` as
+/// measure()'s: the history is then cut short and means nothing.
 EnergyHistory energy_history(const AccuracySettings& settings, const physics::ExactRotation& exact,
-                             const Method& method, double dt, double flips, int windows);
+                             const Method& method, double dt, double flips, int windows,
+                             const std::function<bool()>& stop = {});
 
 /// Orientation error at time t_end of `method` at step `dt` (no flip bookkeeping; for
 /// convergence-order checks).

@@ -42,7 +42,7 @@ std::string measure_names() {
   return names;
 }
 
-RunMeasures measure_run(const scene::Scene& scene) {
+RunMeasures measure_run(const scene::Scene& scene, const std::function<bool()>& stop) {
   RunMeasures result;
   const Eigen::Vector3d moments = scene.body.moments;
   physics::ExactModel reference(scene.body);
@@ -64,6 +64,7 @@ RunMeasures measure_run(const scene::Scene& scene) {
   }
   const long long total = static_cast<long long>(scene.frames - 1) * scene.steps_per_frame;
   for (long long n = 1; n <= total; ++n) {
+    if (stop && n % kStopPollSteps == 0 && stop()) return result;
     sim->step(scene.dt);
     const double t = static_cast<double>(n) * scene.dt;  // a product, as FrameSource does
     if (!sim->finite()) {

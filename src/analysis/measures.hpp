@@ -2,6 +2,7 @@
 // The measures of one run of a scene (docs/physics.md §14), as one table: a measure's name
 // (CSV column and `--measure` word), its plot label and the field that holds it. Adding a
 // measure is a row of measure_table() and its value in measure_run().
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -55,8 +56,14 @@ std::string measure_names();
 /// of dt, evaluating the flip signal and E after every step (not every frame), and measures
 /// it. A diverging run stops there and is measured up to its last finite step. The
 /// orientation is physics::Simulator::orientation() (the best-fit rotation for the models
-/// that deform) against the exact R(t).
-RunMeasures measure_run(const scene::Scene& scene);
+/// that deform) against the exact R(t). `stop` (may be empty), asked every kStopPollSteps
+/// steps, abandons the run: it then returns at once and its measures mean nothing (the caller
+/// discards them; a sweep stopped by a signal).
+RunMeasures measure_run(const scene::Scene& scene, const std::function<bool()>& stop = {});
+
+/// Steps between two questions of measure_run's `stop`: a few milliseconds of the slowest
+/// model (the particle book), so that a stopped sweep's running points end within a second.
+inline constexpr long long kStopPollSteps = 64;
 
 /// The twist of one run (docs/physics.md §19), rad in (−π, π]: `measured` by a TwistMeter
 /// over the first body-frame period of `scene`'s model (not a comparison), stepped by dt past

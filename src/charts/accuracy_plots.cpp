@@ -140,7 +140,22 @@ overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistor
 std::vector<std::filesystem::path> write_accuracy_plots(
     const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
     const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows,
-    const std::vector<analysis::Method>& methods) {
+    const std::vector<analysis::Method>& methods, const StopPoll& stop) {
+  // Every history first: a stop while they run leaves every file as it was.
+  std::vector<analysis::Method> long_time = analysis::rigid_methods();
+  if (methods.size() != analysis::accuracy_methods().size()) {
+    long_time.clear();
+    for (const auto& m : methods)
+      if (m.kind != physics::ModelKind::particle) long_time.push_back(m);
+  }
+  std::vector<analysis::EnergyHistory> histories;
+  for (const auto& method : long_time) {
+    stop_if_asked(stop, "accuracy energy");
+    histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
+                                                 kLongTimeFlips, kLongTimeWindows,
+                                                 stop_predicate(stop, "accuracy energy steps")));
+    stop_if_asked(stop, "accuracy energy");
+  }
   std::vector<std::filesystem::path> written;
   const auto& work_png = paths.work_precision_png;
   output::write_png(work_png,
@@ -151,17 +166,6 @@ std::vector<std::filesystem::path> write_accuracy_plots(
       overlay::plot_image(energy_vs_dt_plot(rows, methods, settings.flips), 1400, 900));
   written.push_back(paths.energy_vs_dt_png);
 
-  std::vector<analysis::Method> long_time = analysis::rigid_methods();
-  if (methods.size() != analysis::accuracy_methods().size()) {
-    long_time.clear();
-    for (const auto& m : methods)
-      if (m.kind != physics::ModelKind::particle) long_time.push_back(m);
-  }
-  std::vector<analysis::EnergyHistory> histories;
-  for (const auto& method : long_time) {
-    histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
-                                                 kLongTimeFlips, kLongTimeWindows));
-  }
   const auto& energy_png = paths.energy_png;
   const auto& energy_csv = paths.energy_csv;
   write_energy_csv(energy_csv, histories);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/accuracy.hpp"
+#include "common/stop.hpp"
 #include "overlay/plot.hpp"
 
 namespace bookspin::charts {
@@ -47,14 +48,16 @@ struct AccuracyPlotPaths {
   std::filesystem::path energy_csv;          ///< its data: t, one column per method
 };
 
-/// Runs the long-time energy histories and writes the work–precision plot and the energy
+/// Runs the long-time energy histories, then writes the work–precision plot and the energy
 /// error against dt (from `rows`, one line per method of `methods`), the energy plot and its
 /// CSV. The long-time histories are those of analysis::rigid_methods() when `methods` is every
 /// method (analysis::accuracy_methods()), else of every method of `methods` but the particle
-/// model's. Returns the paths written. Throws OutputError when a file cannot be written.
+/// model's. Returns the paths written. `stop` is polled around each history ("accuracy
+/// energy") and inside it ("accuracy energy steps"): a signal throws Interrupted before any
+/// file is written. Throws OutputError when a file cannot be written.
 std::vector<std::filesystem::path> write_accuracy_plots(
     const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
     const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows,
-    const std::vector<analysis::Method>& methods);
+    const std::vector<analysis::Method>& methods, const StopPoll& stop = {});
 
 }  // namespace bookspin::charts

@@ -3,6 +3,7 @@
 
 #include "analysis/accuracy.hpp"
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "products/accuracy.hpp"
 
 namespace bookspin::cli {
@@ -17,6 +18,7 @@ int accuracy_command(const AccuracyOptions& options) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   };
+  job.request.stop_signal = stop_poll();
   job.out_dir = options.out_dir;
   job.force = options.force;
   job.verify = options.verify;

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "products/explorer.hpp"
 
 namespace bookspin::cli {
@@ -8,6 +9,7 @@ namespace bookspin::cli {
 int explore_command(const ExploreOptions& options) {
   products::ExplorerPageRequest request;
   request.out_dir = options.out_dir;
+  request.stop_signal = stop_poll();
   if (options.shell.empty()) {
     request.shell = products::default_explorer_shell();
     std::error_code ec;

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "jobs/lattice_note.hpp"
 #include "products/gltf.hpp"
 
@@ -15,7 +16,8 @@ int export_command(const ExportOptions& options) {
     std::cerr << "bookspin: " << note << '\n';
   const products::GltfExportResult result = products::make_gltf(
       scene, options.out_dir,
-      [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; });
+      [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; },
+      stop_poll());
   if (result.diverged_at) {
     std::cerr << "bookspin: warning: " << scene.name
               << ": simulation diverged at t = " << *result.diverged_at

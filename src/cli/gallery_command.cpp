@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "products/gallery.hpp"
 
 namespace bookspin::cli {
@@ -12,6 +13,7 @@ int gallery_command(const GalleryOptions& options) {
   job.scene_paths = options.scene_paths;
   job.force = options.force;
   job.on_remake = remake_note;
+  job.stop_signal = stop_poll();
   const products::GalleryOutcome done = products::make_gallery(job);
   const std::string page = products::gallery_layout(job.out_dir).page.string();
   if (done.outcome == products::Outcome::up_to_date) {

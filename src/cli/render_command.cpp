@@ -59,7 +59,7 @@ int render_command(const RenderArgs& args) {
   job.verify = args.verify;
   job.on_note = [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; };
   job.on_progress = [&progress](int done) { progress.update(done); };
-  job.stop_signal = interrupt_signal;
+  job.stop_signal = stop_poll();
   job.on_remake = remake_note;
   const products::ClipOutcome done = products::make_clip(job);
   if (done.outcome == products::Outcome::up_to_date) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "common/stop.hpp"
 #include "output/mp4_encoder.hpp"
 #include "render/render_error.hpp"
 
@@ -22,6 +23,9 @@ int report(const char* kind, const std::string& message, int code) {
 int run_guarded(const std::function<int()>& command) {
   try {
     return command();
+  } catch (const Interrupted& stop) {
+    std::cerr << "\nbookspin: interrupted; nothing written\n";
+    return 128 + stop.signal();
   } catch (const InputError& e) {
     return report("error", e.what(), kExitUsage);
   } catch (const OutputError& e) {

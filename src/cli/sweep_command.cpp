@@ -58,7 +58,7 @@ int sweep_command(const SweepOptions& options) {
     job.out_dir = options.out_dir;
     job.force = options.force;
     job.verify = options.verify;
-    job.stop_signal = interrupt_signal;
+    job.stop_signal = stop_poll();
     job.on_remake = remake_note;
     const products::SweepOutcome done = products::make_sweep(job);
     if (done.outcome == products::Outcome::up_to_date) {

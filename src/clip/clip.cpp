@@ -54,10 +54,6 @@ class FrameFinisher {
   charts::FrameDecorator decorator_;
 };
 
-int stop_signal(const ClipRequest& request) {
-  return request.stop_signal ? request.stop_signal() : 0;
-}
-
 ClipResult render_single(const ClipRequest& request) {
   const scene::Scene& scene = request.scene;
   render::Renderer renderer(render_settings_for(scene));
@@ -70,7 +66,8 @@ ClipResult render_single(const ClipRequest& request) {
   ShownFrame frame;  // the simulation side, a frame or two ahead of the display side
   FrameFinisher finisher(request, sinks, result);
   for (int index = 0; index < scene.frames; ++index) {
-    if ((result.signal = stop_signal(request)) != 0) return result;  // sinks clean up
+    if ((result.signal = stop_signal(request.stop_signal, "render frames")) != 0)
+      return result;  // sinks clean up
     const std::size_t samples = frame.history.size();
     advance(source, index, scene, frame);
     result.diverged_at = frame.diverged_at;

@@ -11,7 +11,7 @@ namespace bookspin::clip {
 /// diagnostics CSV(s) under request.out_dir. Each frame is pixel for pixel what
 /// render_frame() (frame.hpp) makes of it. After a divergence the last finite pose is held
 /// with a "diverged at t = …" caption, so the clip keeps its length. Stops early, leaving
-/// nothing unfinished behind, when request.stop_signal() returns a signal.
+/// nothing unfinished behind, when request.stop_signal answers a signal.
 /// Throws OutputError (an output cannot be written), output::EncoderError,
 /// render::RenderError (no usable EGL/GL).
 ClipResult render_clip(const ClipRequest& request);

@@ -26,13 +26,15 @@ output::SinkOptions sink_options(const ClipRequest& request) {
   s.webm_crf = r.webm_crf;
   s.gif_width = r.gif_width;
   s.gif_fps = r.gif_fps;
+  s.stop = request.stop_signal;
   return s;
 }
 
 int commit_unless_stopped(const ClipRequest& request, output::OutputSet& outputs) {
   // Asked to stop while the videos were finalized: abandon the run. Nothing is in place yet,
   // and the outputs' owners remove their temporaries.
-  if (const int signal = request.stop_signal ? request.stop_signal() : 0; signal != 0)
+  if (const int signal = request.stop_signal ? request.stop_signal("commit outputs") : 0;
+      signal != 0)
     return signal;
   outputs.commit();  // every output of the run, or none
   return 0;

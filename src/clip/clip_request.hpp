@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/stop.hpp"
 #include "output/clip_sinks.hpp"
 #include "scene/scene.hpp"
 
@@ -28,8 +29,9 @@ struct ClipRequest {
   std::function<void(const std::string& note)> on_note;
   /// Called after each frame is queued, with the number of frames done so far.
   std::function<void(int done)> on_progress;
-  /// Polled before each frame: the signal asking the clip to stop (SIGINT, SIGTERM), or 0.
-  std::function<int()> stop_signal;
+  /// Polled before each frame ("render frames") and while the encoders finish (see
+  /// output::SinkOptions::stop): the signal asking the clip to stop (SIGINT, SIGTERM), or 0.
+  StopPoll stop_signal;
 };
 
 /// A tile of a comparison whose simulation diverged (its tile holds the last finite frame).

@@ -140,9 +140,7 @@ int render_loop(const ClipRequest& request, const CompareLayout& layout, render:
                 std::vector<std::unique_ptr<TileCsv>>& csvs) {
   const scene::Scene& scene = request.scene;
   for (int index = 0; index < scene.frames; ++index) {
-    if (request.stop_signal) {
-      if (const int signal = request.stop_signal()) return signal;
-    }
+    if (const int signal = stop_signal(request.stop_signal, "render frames")) return signal;
     for (auto& p : tiles) advance(p->source, index, p->scene, p->frame);
     sinks.add(index, compose(scene, layout, renderer, tiles), row_of(tiles.front()->frame));
     for (std::size_t i = 1; i < tiles.size(); ++i) csvs[i - 1]->add(index, row_of(tiles[i]->frame));

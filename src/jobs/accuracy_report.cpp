@@ -153,17 +153,22 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
   std::vector<analysis::AccuracyRow> rows;
   for (const auto& method : methods) {
     for (double dt : request.dts) {
-      rows.push_back(analysis::measure(settings, exact, method, dt));
+      stop_if_asked(request.stop_signal, "accuracy runs");
+      rows.push_back(analysis::measure(settings, exact, method, dt,
+                                       stop_predicate(request.stop_signal, "accuracy steps")));
+      stop_if_asked(request.stop_signal, "accuracy runs");  // the row of a stopped run is cut
       say(table_row(rows.back()));
     }
   }
   const AccuracyPaths& paths = request.paths;
   output::prepare_output_dir(paths.csv.parent_path());
+  // The plots run the long-time histories (a stop there writes nothing), then every file.
+  const std::vector<std::filesystem::path> plots = charts::write_accuracy_plots(
+      paths.plots, settings, exact, rows, methods, request.stop_signal);
   std::vector<std::filesystem::path> written{paths.csv, paths.png};
   write_csv(written[0], rows);
   output::write_png(written[1], overlay::plot_image(accuracy_plot(rows, request.flips), 1400, 900));
-  for (const auto& path : charts::write_accuracy_plots(paths.plots, settings, exact, rows, methods))
-    written.push_back(path);
+  written.insert(written.end(), plots.begin(), plots.end());
   return written;
 }
 

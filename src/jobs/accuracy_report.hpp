@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "charts/accuracy_plots.hpp"
+#include "common/stop.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
@@ -27,6 +28,10 @@ struct AccuracyRequest {
   std::vector<analysis::Method> methods;
   /// Receives the table, a line at a time as each row is measured (no newline).
   std::function<void(const std::string& line)> on_line;
+  /// Polled before and after each run ("accuracy runs") and inside it every few dozen steps
+  /// ("accuracy steps"), and so in the long-time energy runs (charts::write_accuracy_plots): a
+  /// signal throws Interrupted before any file is written. May be empty.
+  StopPoll stop_signal;
 };
 
 /// The most steps one method may take at one dt (flips × flip period / dt).

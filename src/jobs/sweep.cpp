@@ -269,14 +269,19 @@ SweepResult run_sweep(const SweepRequest& request) {
   std::atomic<int> signal{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
+  // A running point stops within a few steps of a signal (or of another point's failure): its
+  // physics loop asks this predicate, which records the signal for the others.
+  const std::function<bool()> abandon = [&] {
+    if (signal != 0) return true;
+    if (const int s = stop_signal(request.stop_signal, "sweep steps")) signal = s;
+    return signal != 0;
+  };
   const auto work = [&] {
     for (std::size_t i; (i = next++) < indices.size();) {
-      if (request.stop_signal) {
-        if (const int s = request.stop_signal()) signal = s;
-      }
+      if (const int s = stop_signal(request.stop_signal, "sweep point")) signal = s;
       if (signal != 0) return;
       try {
-        results[i] = analysis::measure_run(scenes[i]);
+        results[i] = analysis::measure_run(scenes[i], abandon);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();

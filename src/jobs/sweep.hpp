@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "analysis/measures.hpp"
+#include "common/stop.hpp"
 #include "jobs/sweep_grid.hpp"
 #include "overlay/plot.hpp"
 #include "physics/simulator.hpp"
@@ -61,9 +62,11 @@ struct SweepRequest {
   /// SLURM_ARRAY_TASK_ID runs with --array=0-(N-1)). shard_count 0: the whole grid.
   int shard_index = 0, shard_count = 0;
   SweepLayout layout;  ///< where the CSV, the plots or the shard go
-  /// Polled by the workers before each point: the signal asking the sweep to stop (SIGINT,
-  /// SIGTERM), or 0. May be empty.
-  std::function<int()> stop_signal;
+  /// Polled by the workers before each point ("sweep point") and by each running point's
+  /// physics loop ("sweep steps", every analysis::kStopPollSteps steps): the signal asking the
+  /// sweep to stop (SIGINT, SIGTERM), or 0. Running points are then abandoned and nothing is
+  /// written. May be empty.
+  StopPoll stop_signal;
 };
 
 struct SweepResult {

@@ -44,21 +44,21 @@ ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options)
     mp4_.emplace(make_parent(paths.mp4), e);
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { mp4_->add_frame(f); };
-    videos_.back()->finish = [this](OutputSet& set) { mp4_->finish(&set); };
+    videos_.back()->finish = [this](OutputSet& set) { mp4_->finish(&set, options_.stop); };
   }
   if (wants(options_, "webm")) {
     webm_.emplace(make_parent(paths.webm),
                   WebmSettings{e.width, e.height, e.fps, options_.webm_crf, e.threads});
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { webm_->add_frame(f); };
-    videos_.back()->finish = [this](OutputSet& set) { webm_->finish(&set); };
+    videos_.back()->finish = [this](OutputSet& set) { webm_->finish(&set, options_.stop); };
   }
   if (wants(options_, "gif")) {
     gif_.emplace(make_parent(paths.gif),
                  GifSettings{e.width, e.height, e.fps, options_.gif_width, options_.gif_fps});
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { gif_->add_frame(f); };
-    videos_.back()->finish = [this](OutputSet& set) { gif_->finish(&set); };
+    videos_.back()->finish = [this](OutputSet& set) { gif_->finish(&set, options_.stop); };
   }
   if (videos_.empty()) throw std::invalid_argument("ClipSinks: unknown video format");
   if (options_.write_png) frames_.emplace(paths.frames_dir);

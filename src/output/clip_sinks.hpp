@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/rgba_image.hpp"
+#include "common/stop.hpp"
 #include "output/atomic_output.hpp"
 #include "output/bounded_queue.hpp"
 #include "output/diagnostics_csv.hpp"
@@ -48,6 +49,9 @@ struct SinkOptions {
   int webm_crf = 32;    ///< WebmSettings::crf
   int gif_width = 640;  ///< GifSettings::width
   int gif_fps = 15;     ///< GifSettings::gif_fps
+  /// Polled by finish() while the encoders finish their long passes (the MP4's and WebM's
+  /// flushes, the GIF's palette pass): a signal throws Interrupted (common/stop.hpp).
+  StopPoll stop;
 };
 
 class ClipSinks {
@@ -65,7 +69,8 @@ class ClipSinks {
   /// Drains the queues and completes every output under its temporary name, adding each to
   /// `set` (videos in the order of SinkOptions::formats, then the frames, then the CSV);
   /// nothing is in place until set.commit(), which must come before these sinks are
-  /// destroyed. Rethrows the first error of a worker.
+  /// destroyed. Rethrows the first error of a worker. Throws Interrupted when
+  /// SinkOptions::stop answers a signal while an encoder finishes (nothing put in place).
   void finish(OutputSet& set);
   /// A frame buffer the sinks are done with, to render the next frame into instead of
   /// allocating (and page-faulting) a new one; std::nullopt if none is free now.

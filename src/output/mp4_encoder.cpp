@@ -67,8 +67,8 @@ struct Mp4Encoder::Impl {
   void add_stream();
   void write_header();
   void make_converter();
-  void encode(const AVFrame* input);
-  void drain(bool flushing);
+  void encode(const AVFrame* input, const StopPoll& stop = {});
+  void drain(bool flushing, const StopPoll& stop = {});
 };
 
 void Mp4Encoder::Impl::open_container() {
@@ -125,16 +125,17 @@ void Mp4Encoder::Impl::make_converter() {
   if (rc < 0) throw EncoderError("frame buffer: " + libav::error_text(rc));
 }
 
-void Mp4Encoder::Impl::encode(const AVFrame* input) {
+void Mp4Encoder::Impl::encode(const AVFrame* input, const StopPoll& stop) {
   const int rc = avcodec_send_frame(codec.get(), input);
   if (rc < 0) throw EncoderError(codec_name + " rejected a frame: " + libav::failure_text(rc));
-  drain(input == nullptr);
+  drain(input == nullptr, stop);
 }
 
 // Moves every packet the encoder has ready into the muxer. When flushing,
 // runs until the encoder reports end of stream.
-void Mp4Encoder::Impl::drain(bool flushing) {
+void Mp4Encoder::Impl::drain(bool flushing, const StopPoll& stop) {
   for (;;) {
+    if (flushing) stop_if_asked(stop, "mp4 flush");
     int rc = avcodec_receive_packet(codec.get(), packet.get());
     if (rc == AVERROR_EOF || (!flushing && rc == AVERROR(EAGAIN))) return;
     if (rc < 0) throw EncoderError(codec_name + " failed: " + libav::failure_text(rc));
@@ -191,14 +192,14 @@ void Mp4Encoder::add_frame(const RgbaImage& image) {
   ++s.frames_added;
 }
 
-void Mp4Encoder::finish(OutputSet* set) {
+void Mp4Encoder::finish(OutputSet* set, const StopPoll& stop) {
   Impl& s = *impl_;
   if (s.closed) throw std::logic_error("Mp4Encoder::finish called twice");
   s.closed = true;  // a failed finish cannot be retried; the destructor cleans up
   if (s.frames_added == 0) {
     throw EncoderError("MP4 \"" + s.output.final_path().string() + "\" has no frames");
   }
-  s.encode(nullptr);
+  s.encode(nullptr, stop);
   int rc = av_write_trailer(s.format.get());  // also the faststart rewrite
   if (rc < 0) s.throw_io("cannot finish MP4", rc);
   rc = avio_closep(&s.format->pb);  // flushes: a full disk may show up only here

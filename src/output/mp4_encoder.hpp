@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/rgba_image.hpp"
+#include "common/stop.hpp"
 
 namespace bookspin::output {
 
@@ -70,8 +71,10 @@ class Mp4Encoder {
   /// added to it instead and put in place by set->commit() with the run's other
   /// outputs (the encoder must live until then). Throws EncoderError if no
   /// frame was added, OutputError on write/rename failure (no file is left
-  /// then), std::logic_error if called twice.
-  void finish(OutputSet* set = nullptr);
+  /// then), std::logic_error if called twice. `stop` is polled for each packet of the
+  /// drain ("mp4 flush"): when it answers a signal, finish() throws Interrupted and the
+  /// temporary is left for the destructor to remove (nothing put in place).
+  void finish(OutputSet* set = nullptr, const StopPoll& stop = {});
 
   /// Frames accepted by add_frame so far.
   std::int64_t frame_count() const;

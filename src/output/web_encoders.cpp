@@ -114,8 +114,9 @@ struct StreamFile {
     if (rc < 0) throw_io(std::string("cannot write the header of ") + label, rc);
   }
 
-  /// Encodes `frame` (null: flush) and muxes the packets that are ready.
-  void encode(const AVFrame* frame) {
+  /// Encodes `frame` (null: flush) and muxes the packets that are ready. While flushing,
+  /// `stop` is polled before each packet (`stage`): a signal throws Interrupted.
+  void encode(const AVFrame* frame, const StopPoll& stop = {}, std::string_view stage = {}) {
     int rc = avcodec_send_frame(codec.get(), frame);
     if (rc < 0) {
       throw EncoderError(std::string(codec->codec->name) +
@@ -123,6 +124,7 @@ struct StreamFile {
     }
     if (frame != nullptr) ++frames;
     for (;;) {
+      if (frame == nullptr) stop_if_asked(stop, stage);
       rc = avcodec_receive_packet(codec.get(), packet.get());
       if (rc == AVERROR_EOF || (frame != nullptr && rc == AVERROR(EAGAIN))) return;
       if (rc < 0) {
@@ -136,15 +138,16 @@ struct StreamFile {
     }
   }
 
-  /// Flushes the encoder, writes the trailer, closes and renames the file into place (with
-  /// `set`: adds it to the set, which puts it in place).
-  void finish(OutputSet* set) {
+  /// Flushes the encoder (polling `stop` at `stage`, see encode()), writes the trailer,
+  /// closes and renames the file into place (with `set`: adds it to the set, which puts it
+  /// in place).
+  void finish(OutputSet* set, const StopPoll& stop = {}, std::string_view stage = {}) {
     if (closed) throw std::logic_error(std::string(label) + " finish called twice");
     closed = true;
     if (frames == 0)
       throw EncoderError(std::string(label) + " \"" + output.final_path().string() +
                          "\" has no frames");
-    encode(nullptr);
+    encode(nullptr, stop, stage);
     int rc = av_write_trailer(format.get());
     if (rc < 0) throw_io(std::string("cannot finish ") + label, rc);
     rc = avio_closep(&format->pb);
@@ -235,7 +238,9 @@ void WebmEncoder::add_frame(const RgbaImage& image) {
   s.file.encode(s.frame.get());
 }
 
-void WebmEncoder::finish(OutputSet* set) { impl_->file.finish(set); }
+void WebmEncoder::finish(OutputSet* set, const StopPoll& stop) {
+  impl_->file.finish(set, stop, "webm flush");
+}
 std::int64_t WebmEncoder::frame_count() const { return impl_->file.frames; }
 
 // ----------------------------------------------------------------------------------- GIF
@@ -433,14 +438,16 @@ struct GifEncoder::Impl {
 
   AVRational time_base() const { return AVRational{step, settings.fps}; }
   std::size_t frame_bytes() const { return static_cast<std::size_t>(settings.width) * height * 4; }
-  /// Applies `palette` to every stored frame and encodes them in order.
-  void apply_palette(AVFrame* palette);
+  /// Applies `palette` to every stored frame and encodes them in order, polling `stop` as
+  /// it starts ("gif palette pass") and before each frame ("gif palette frames").
+  void apply_palette(AVFrame* palette, const StopPoll& stop);
   /// Encodes every frame `sink` has ready; at the end (`eof`) until it has none left.
-  void pull(AVFilterContext* sink, bool eof);
+  void pull(AVFilterContext* sink, bool eof, const StopPoll& stop = {});
 };
 
-void GifEncoder::Impl::pull(AVFilterContext* sink, bool eof) {
+void GifEncoder::Impl::pull(AVFilterContext* sink, bool eof, const StopPoll& stop) {
   for (;;) {
+    if (eof) stop_if_asked(stop, "gif palette frames");
     av_frame_unref(filtered.get());
     const int rc = av_buffersink_get_frame(sink, filtered.get());
     if (rc == AVERROR(EAGAIN) && !eof) return;
@@ -452,7 +459,7 @@ void GifEncoder::Impl::pull(AVFilterContext* sink, bool eof) {
   }
 }
 
-void GifEncoder::Impl::apply_palette(AVFrame* palette) {
+void GifEncoder::Impl::apply_palette(AVFrame* palette, const StopPoll& stop) {
   AVFilterContext* frames_source = nullptr;
   AVFilterContext* palette_in = nullptr;
   AVFilterContext* sink = nullptr;
@@ -471,7 +478,9 @@ void GifEncoder::Impl::apply_palette(AVFrame* palette) {
   palette->pts = 0;
   push(palette_in, palette);
   push(palette_in, nullptr);  // one palette for the whole clip
+  stop_if_asked(stop, "gif palette pass");
   for (std::int64_t index = 0;; ++index) {
+    stop_if_asked(stop, "gif palette frames");
     const int rc = av_frame_make_writable(scaled.get());
     if (rc < 0) throw EncoderError("frame buffer: " + libav::error_text(rc));
     if (scaled->linesize[0] != settings.width * 4)
@@ -482,7 +491,7 @@ void GifEncoder::Impl::apply_palette(AVFrame* palette) {
     pull(sink, false);
   }
   push(frames_source, nullptr);
-  pull(sink, true);
+  pull(sink, true, stop);
 }
 
 GifEncoder::GifEncoder(std::filesystem::path path, const GifSettings& s) {
@@ -549,8 +558,9 @@ void GifEncoder::add_frame(const RgbaImage& image) {
   g.spill->append(g.scaled->data[0]);
 }
 
-void GifEncoder::finish(OutputSet* set) {
+void GifEncoder::finish(OutputSet* set, const StopPoll& stop) {
   Impl& g = *impl_;
+  stop_if_asked(stop, "gif finish");
   if (!g.file.closed && g.seen > 0) {
     push(g.palette_source, nullptr);  // end of stream: palettegen gives its palette
     libav::FramePtr palette(av_frame_alloc());
@@ -558,9 +568,9 @@ void GifEncoder::finish(OutputSet* set) {
     const int rc = av_buffersink_get_frame(g.palette_sink, palette.get());
     if (rc < 0) throw EncoderError("GIF palette (palettegen): " + libav::error_text(rc));
     g.palette_graph.reset();  // its counts are no longer needed
-    g.apply_palette(palette.get());
+    g.apply_palette(palette.get(), stop);
   }
-  g.file.finish(set);
+  g.file.finish(set, stop, "gif palette frames");
 }
 
 std::int64_t GifEncoder::frame_count() const { return impl_->file.frames; }

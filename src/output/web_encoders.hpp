@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "common/rgba_image.hpp"
+#include "common/stop.hpp"
 #include "output/mp4_encoder.hpp"
 
 namespace bookspin::output {
@@ -54,7 +55,10 @@ std::int64_t gif_frame_count(const GifSettings& settings, std::int64_t source_fr
 /// but free of thread affinity (one thread at a time). Errors as Mp4Encoder: bad settings →
 /// std::invalid_argument, libav refusing → EncoderError, file system → OutputError naming
 /// the path; add_frame on a size mismatch → std::invalid_argument; finish() with no frame
-/// → EncoderError.
+/// → EncoderError. finish(stop) polls `stop` between the units of its long passes (the
+/// WebM's flush: "webm flush", each packet; the GIF: "gif finish" as it starts, "gif palette
+/// pass" once the palette is made, then "gif palette frames" for each frame of the pass): a
+/// signal throws Interrupted and the temporary goes with the encoder (nothing put in place).
 class WebmEncoder {
  public:
   WebmEncoder(std::filesystem::path path, const WebmSettings& settings);
@@ -63,7 +67,7 @@ class WebmEncoder {
   WebmEncoder& operator=(const WebmEncoder&) = delete;
   /// `frame`: RGBA, top row first, exactly width×height.
   void add_frame(const RgbaImage& frame);
-  void finish(OutputSet* set = nullptr);
+  void finish(OutputSet* set = nullptr, const StopPoll& stop = {});
   std::int64_t frame_count() const;
 
  private:
@@ -85,7 +89,7 @@ class GifEncoder {
   /// `frame`: RGBA, top row first, exactly source_width×source_height; only every step-th
   /// call (the first included) reaches the GIF.
   void add_frame(const RgbaImage& frame);
-  void finish(OutputSet* set = nullptr);
+  void finish(OutputSet* set = nullptr, const StopPoll& stop = {});
   /// Frames written to the GIF so far (after finish(): all of them).
   std::int64_t frame_count() const;
 

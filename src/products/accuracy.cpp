@@ -48,15 +48,20 @@ Outcome make_accuracy(const AccuracyJob& job) {
   const AccuracyLayout layout = accuracy_layout(job.out_dir, job.request.scene);
   jobs::AccuracyRequest request = job.request;
   request.paths = layout.report;
-  return cache::run_cached(
+  int signal = 0;
+  const Outcome outcome = cache::run_cached(
       {layout.manifest, accuracy_manifest_head(job), job.out_dir, job.force, job.verify,
-       [&]() -> std::optional<cache::JobOutputs> {
-         cache::JobOutputs made{cache::manifest_note(request.scene), {}};
-         for (const auto& path : jobs::run_accuracy(request))
-           made.outputs.push_back(path.lexically_relative(job.out_dir).generic_string());
-         return made;
+       [&] {
+         return unless_interrupted(signal, [&]() -> std::optional<cache::JobOutputs> {
+           cache::JobOutputs made{cache::manifest_note(request.scene), {}};
+           for (const auto& path : jobs::run_accuracy(request))
+             made.outputs.push_back(path.lexically_relative(job.out_dir).generic_string());
+           return made;
+         });
        }},
       remake_note_for(job.on_remake, request.scene.name + "-accuracy"));
+  if (signal != 0) throw Interrupted(signal);  // the earlier report and its manifest untouched
+  return outcome;
 }
 
 }  // namespace bookspin::products

@@ -173,16 +173,19 @@ ClipOutcome make_clip(const ClipJob& job) {
   ClipOutcome done;
   done.outcome = cache::run_cached(
       {layout.manifest, head, job.out_dir, job.force, job.verify,
-       [&]() -> std::optional<cache::JobOutputs> {
+       [&] {
+         // Stopped between frames (result.signal) or while the encoders finished (Interrupted);
+         // every output of the run is put in place together, or none (clip::render_clip).
          const std::vector<std::string> earlier = output::manifest_outputs(layout.manifest);
-         // Every output of the run is put in place together, or none (clip::render_clip).
-         done.result = clip::render_clip(clip_request(job));
-         if (done.result.signal != 0) return std::nullopt;
-         done.warnings = divergence_warnings(job.scene.name, done.result);
-         cache::JobOutputs made{cache::manifest_note(job.scene) + warnings_json(done.warnings),
-                                clip_outputs(job, layout)};
-         remove_outputs_of_earlier_run(job.out_dir, earlier, made.outputs);
-         return made;
+         return unless_interrupted(done.result.signal, [&]() -> std::optional<cache::JobOutputs> {
+           done.result = clip::render_clip(clip_request(job));
+           if (done.result.signal != 0) return std::nullopt;
+           done.warnings = divergence_warnings(job.scene.name, done.result);
+           cache::JobOutputs made{cache::manifest_note(job.scene) + warnings_json(done.warnings),
+                                  clip_outputs(job, layout)};
+           remove_outputs_of_earlier_run(job.out_dir, earlier, made.outputs);
+           return made;
+         });
        },
        /*all_or_nothing=*/true},
       remake_note_for(job.on_remake, job.scene.name));

@@ -38,7 +38,7 @@ struct ClipJob {
   bool verify = false;            ///< the up-to-date check hashes every output
   std::function<void(const std::string& note)> on_note;  ///< see clip::ClipRequest
   std::function<void(int done)> on_progress;             ///< see clip::ClipRequest
-  std::function<int()> stop_signal;                      ///< see clip::ClipRequest
+  StopPoll stop_signal;                                  ///< see clip::ClipRequest
   RemakeNote on_remake;  ///< why a manifest did not match (may be empty)
 };
 

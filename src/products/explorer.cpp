@@ -142,11 +142,14 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
 
   std::ostringstream data;
   data << "<script>window.BOOKSPIN_SCENES=[";
-  for (std::size_t i = 0; i < request.scenes.size(); ++i)
+  for (std::size_t i = 0; i < request.scenes.size(); ++i) {
+    stop_if_asked(request.stop_signal, "explore scenes");
     data << (i ? ",\n" : "\n") << script_safe(explorer_scene_json(request.scenes[i]));
+  }
   data << "];\nwindow.BOOKSPIN_BOOK_ART={";
   const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
   for (int f = 0; f < 4; ++f) {
+    stop_if_asked(request.stop_signal, "explore scenes");
     const RgbaImage image = render::generate_face_image(static_cast<render::FaceImage>(f));
     data << (f ? "," : "") << '"' << faces[f] << "\":\""
          << output::data_url("image/png", output::encode_png(image, 6)) << '"';
@@ -175,6 +178,7 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
 
   ExplorerPageResult result;
   result.path = explorer_page_path(request.out_dir);
+  stop_if_asked(request.stop_signal, "explore write");
   output::prepare_output_dir(request.out_dir);
   output::write_text_file(result.path, page);
   result.bytes = page.size();
@@ -199,13 +203,16 @@ ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
       "  \"scenes\": \"sha256:" + output::sha256_text(scenes) + "\",\n";
   ExplorerOutcome done;
   done.result.path = explorer_page_path(request.out_dir);
+  int signal = 0;
   done.outcome = cache::run_cached(
-      {explorer_manifest_path(request.out_dir), head, request.out_dir, false, false,
-       [&]() -> std::optional<cache::JobOutputs> {
-         done.result = write_explorer_page(request);
-         return cache::JobOutputs{
-             "", {done.result.path.lexically_relative(request.out_dir).generic_string()}};
+      {explorer_manifest_path(request.out_dir), head, request.out_dir, false, false, [&] {
+         return unless_interrupted(signal, [&] {
+           done.result = write_explorer_page(request);
+           return cache::JobOutputs{
+               "", {done.result.path.lexically_relative(request.out_dir).generic_string()}};
+         });
        }});
+  if (signal != 0) throw Interrupted(signal);  // the earlier page and manifest untouched
   return done;
 }
 

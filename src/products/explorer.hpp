@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/stop.hpp"
 #include "products/outcome.hpp"
 #include "scene/scene.hpp"
 
@@ -53,6 +54,9 @@ struct ExplorerPageRequest {
   /// none, and the page offers bookspin's own models only.
   std::filesystem::path engines;
   std::filesystem::path out_dir;  ///< writes OUT/explorer.html
+  /// Polled before each scene ("explore scenes") and before the page is written ("explore
+  /// write"): a signal throws Interrupted; the earlier page and its manifest stay.
+  StopPoll stop_signal;
 };
 
 struct ExplorerPageResult {

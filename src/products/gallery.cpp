@@ -157,6 +157,7 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   std::vector<std::pair<GalleryRank, GalleryEntry>> ranked;
   // Every scene is parsed first, so a bad one fails before anything is written.
   for (const auto& path : job.scene_paths) {
+    stop_if_asked(job.stop_signal, "gallery scenes");
     const scene::Scene scene = scene::parse_scene(path);
     // The exact motion of the book; other bodies' exact runs go with the other bodies.
     const bool exact = scene.compare.empty() && scene.model.kind == physics::ModelKind::exact &&
@@ -179,18 +180,22 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
       output::sha256_text(gallery_html(entries, header)) + "\",\n";
   GalleryOutcome done;
   done.entries = entries.size();
-  done.outcome =
-      cache::run_cached({layout.manifest, head, out, job.force, false,
-                         [&]() -> std::optional<cache::JobOutputs> {
-                           std::error_code ec;
-                           output::make_directories(out, ec);
-                           if (ec)
-                             throw_output_error("cannot create output directory", out, ec.value());
-                           header.date = utc_now();
-                           write_page(layout.page, gallery_html(entries, header));
-                           return cache::JobOutputs{"", {path_in_out(out, layout.page)}};
-                         }},
-                        remake_note_for(job.on_remake, layout.page.filename().string()));
+  int signal = 0;
+  done.outcome = cache::run_cached(
+      {layout.manifest, head, out, job.force, false,
+       [&] {
+         return unless_interrupted(signal, [&] {
+           stop_if_asked(job.stop_signal, "gallery write");
+           std::error_code ec;
+           output::make_directories(out, ec);
+           if (ec) throw_output_error("cannot create output directory", out, ec.value());
+           header.date = utc_now();
+           write_page(layout.page, gallery_html(entries, header));
+           return cache::JobOutputs{"", {path_in_out(out, layout.page)}};
+         });
+       }},
+      remake_note_for(job.on_remake, layout.page.filename().string()));
+  if (signal != 0) throw Interrupted(signal);  // the earlier page and manifest untouched
   return done;
 }
 

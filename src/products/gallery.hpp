@@ -25,6 +25,9 @@ struct GalleryJob {
   std::vector<std::string> scene_paths;  ///< every scene on the page
   bool force = false;                    ///< write the page even when it is up to date
   RemakeNote on_remake;                  ///< why a manifest did not match (may be empty)
+  /// Polled before each scene ("gallery scenes") and before the page is written ("gallery
+  /// write"): a signal throws Interrupted; the earlier page and its manifest stay.
+  StopPoll stop_signal;
 };
 
 struct GalleryOutcome {

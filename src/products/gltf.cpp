@@ -116,7 +116,8 @@ void check_gltf_scene(const scene::Scene& scene) {
 }
 
 GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
-                           const std::function<void(const std::string&)>& on_note) {
+                           const std::function<void(const std::string&)>& on_note,
+                           const StopPoll& stop) {
   check_gltf_scene(scene);
   // The particle model of the book, and of any other body (the lattice, docs/physics.md §13).
   const bool deforms = scene.model.kind == physics::ModelKind::particle;
@@ -135,7 +136,9 @@ GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::pat
   analysis::FrameSource source(scene);
   physics::Pose pose;
   Eigen::Vector4d previous(0, 0, 0, 1);
-  while (source.next(pose)) {
+  for (;;) {
+    stop_if_asked(stop, "export frames");
+    if (!source.next(pose)) break;
     // (w, x, y, z) with w ≥ 0, then the sign nearest the previous keyframe's: q and −q are the
     // same rotation, and interpolating between keyframes of opposite sign would spin the long way.
     const Eigen::Vector4d wxyz = output::pose_quaternion(pose.diagnostics.orientation);
@@ -162,6 +165,7 @@ GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::pat
   std::error_code ec;
   std::filesystem::create_directories(out_dir, ec);
   if (ec) throw_output_error("cannot create directory", out_dir, ec.value());
+  stop_if_asked(stop, "export write");
   output::write_glb(result.path, scene.name, parts, animation);
   return result;
 }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "common/stop.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -32,9 +33,12 @@ void check_gltf_scene(const scene::Scene& scene);
 /// seconds with the rotation of Simulator::orientation() (unit quaternion, body→world, signs
 /// kept continuous from frame to frame) and the centre of mass as translation. A deforming
 /// model (particle, lattice) exports its best-fit rigid motion: `on_note` is told so.
+/// `stop` is polled before each frame ("export frames") and once more before the file is
+/// written ("export write"): a signal throws Interrupted, and the previous file stays.
 /// Throws InputError for a comparison scene (no single motion), render::RenderError for a
 /// missing texture or font, OutputError if the file cannot be written.
 GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
-                           const std::function<void(const std::string&)>& on_note = {});
+                           const std::function<void(const std::string&)>& on_note = {},
+                           const StopPoll& stop = {});
 
 }  // namespace bookspin::products

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <thread>
 
-#include "support/cli_runner.hpp"
+#include "support/signal_runner.hpp"
 
 namespace bookspin::cli {
 namespace {
@@ -41,21 +41,6 @@ pid_t start_render(const fs::path& out, int frames) {
   return pid;
 }
 
-int wait_status(pid_t pid) {
-  int raw = 0;
-  waitpid(pid, &raw, 0);
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-}
-
-/// Every entry under `dir` (recursively) with its size and content for files.
-std::map<std::string, std::string> snapshot(const fs::path& dir) {
-  std::map<std::string, std::string> out;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    out[fs::relative(e.path(), dir).string()] = e.is_regular_file() ? read_file(e.path()) : "<dir>";
-  }
-  return out;
-}
-
 /// The PNGs written so far into the frames temporary `.frames.tmp-*` under `clip_dir`.
 int partial_frames(const fs::path& clip_dir) {
   std::error_code ec;
@@ -83,15 +68,6 @@ bool wait_for_partial_frames(pid_t pid, const fs::path& clip_dir, int frames) {
   kill(pid, SIGKILL);
   waitpid(pid, nullptr, 0);
   return false;
-}
-
-std::vector<std::string> temporaries(const fs::path& dir) {
-  std::vector<std::string> found;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) {
-    const std::string name = fs::relative(e.path(), dir).string();
-    if (name.find(".tmp-") != std::string::npos) found.push_back(name);
-  }
-  return found;
 }
 
 const std::string kName = "fig09-matrix-unstable-x";

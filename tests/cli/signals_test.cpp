@@ -1,0 +1,230 @@
+// SIGINT and SIGTERM stop every command that writes (export, render in its encoders' finishing
+// passes, sweep, accuracy, explore, gallery) within a second, with exit status 130 or 143, the
+// previous outputs and their manifest byte-identical and no temporary left (docs/outputs.md,
+// "Signals"). Each signal comes at a named stage of the run (the command line's test hooks,
+// src/cli/interrupt.hpp): for a long loop the test signals on the line of the stage polled just
+// before the loop starts ("gif palette pass" before the GIF's second pass, "sweep point" before a
+// point's steps, "accuracy runs" before a run's steps), so the time to exit measures how often the
+// loop itself polls; a stage too short to catch in flight is held at its first poll until the
+// signal has arrived.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+
+#include "support/signal_runner.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+using namespace bookspin::test;  // the shared runner (tests/support)
+
+namespace fs = std::filesystem;
+
+// From the signal to the exit. The loops poll every frame, packet or 64 physics steps
+// (milliseconds); the rest is unwinding and removing the temporaries. Measured on the 2-core
+// machine shared by six builds (2026-11-23): 0.01–0.2 s; without the polls, seconds (the stage
+// runs to its end) or never (exit 0). One second leaves room for a loaded machine.
+constexpr double kMaxSecondsToExit = 1.0;
+
+constexpr const char* kReport = "BOOKSPIN_TEST_REPORT_STAGES";
+constexpr const char* kHold = "BOOKSPIN_TEST_HOLD_AT";
+
+std::vector<std::string> words(std::initializer_list<std::string> list) { return list; }
+
+std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+std::string signal_name(int signal) { return signal == SIGINT ? "SIGINT" : "SIGTERM"; }
+
+/// Runs `args` signalled by `signal` at `stage` (held there with kHold) and checks the contract:
+/// status 128 + signal, out within kMaxSecondsToExit, `out` as `before`, no temporary there.
+void expect_stopped_cleanly(const std::vector<std::string>& args, const char* hook,
+                            const std::string& stage, int signal, const fs::path& out,
+                            const std::map<std::string, std::string>& before) {
+  const SignalledRun run = signal_at_stage(args, hook, stage, signal);
+  ASSERT_TRUE(run.reached) << "stage '" << stage << "' never came (status " << run.status << ")\n"
+                           << run.err;
+  std::cout << "[ timing   ] " << signal_name(signal) << " at " << stage << ": exit after "
+            << run.to_exit_s << " s\n";
+  EXPECT_EQ(run.status, 128 + signal) << run.err;
+  EXPECT_LT(run.to_exit_s, kMaxSecondsToExit) << stage;
+  EXPECT_EQ(temporaries(out), std::vector<std::string>{});
+  EXPECT_EQ(snapshot(out), before) << "the previous outputs changed";
+}
+
+const std::string kFig09 = scene_path("fig09-matrix-unstable-x");
+
+// The export's frame loop polls every frame: a signal in a long export stops it before the
+// file is written, and the previous .glb stays.
+class ExportSignal : public ::testing::TestWithParam<int> {};
+
+TEST_P(ExportSignal, StopsTheFrameLoopAndKeepsThePreviousGlb) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  const std::vector<std::string> common = words({"export", kFig09, "--gltf", "-o", out.string()});
+  const CliResult first =
+      run_bookspin("export " + kFig09 + " --gltf -o " + out.string() + " --frames 10");
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  ASSERT_EQ(before.size(), 1u);
+  // 20000 frames of 300 steps: seconds, even on a fast machine.
+  expect_stopped_cleanly(common + words({"--frames", "20000", "--set", "time.steps_per_frame=300"}),
+                         kReport, "export frames", GetParam(), out, before);
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, ExportSignal, ::testing::Values(SIGINT, SIGTERM),
+                         [](const auto& info) { return signal_name(info.param); });
+
+// A render stopped while its encoders finish: the GIF's palette pass (long: signalled in
+// flight), the WebM's and the MP4's flushes (held at their first packet).
+struct FinishCase {
+  std::string format;
+  std::string stage;
+  const char* hook;
+  int signal;
+  std::vector<std::string> settings;  ///< the interrupted run's own --set and options
+  friend void PrintTo(const FinishCase& c, std::ostream* os) {
+    *os << c.format << " at " << c.stage;
+  }
+};
+
+class RenderFinishSignal : public ::testing::TestWithParam<FinishCase> {};
+
+TEST_P(RenderFinishSignal, StopsTheEncoderAndKeepsThePreviousClip) {
+  const FinishCase& c = GetParam();
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  const std::vector<std::string> common =
+      words({"render", kFig09, "-o", out.string(), "--format", c.format, "--jobs", "2", "--set",
+             "render.preset=\"ultrafast\""});
+  std::string first_args;
+  for (const auto& w : common + words({"--frames", "12", "--set", "render.width=96", "--set",
+                                       "render.height=64", "--set", "render.gif_width=64"}))
+    first_args += "'" + w + "' ";
+  const CliResult first = run_bookspin(first_args);
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  std::stringstream formats(c.format);
+  for (std::string format; std::getline(formats, format, ',');)
+    ASSERT_TRUE(before.count("fig09-matrix-unstable-x." + format)) << format;
+  ASSERT_TRUE(before.count("fig09-matrix-unstable-x/manifest.json"));
+  expect_stopped_cleanly(common + c.settings, c.hook, c.stage, c.signal, out, before);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Signals, RenderFinishSignal,
+    ::testing::Values(
+        // 240 frames of 640 × 360, every one kept: a palette pass of 3.5 s here (2026-11-23).
+        FinishCase{"gif", "gif palette pass", kReport, SIGINT,
+                   words({"--frames", "240", "--no-png", "--set", "render.width=640", "--set",
+                          "render.height=360", "--set", "render.gif_width=640", "--set",
+                          "render.gif_fps=30", "--set", "render.panel=false"})},
+        // Both formats: the MP4 is finished before the GIF's palette pass, and must not be
+        // put in place when the GIF is stopped (one run's outputs go in together, or none).
+        FinishCase{"mp4,gif", "gif palette pass", kReport, SIGTERM,
+                   words({"--frames", "240", "--no-png", "--set", "render.width=640", "--set",
+                          "render.height=360", "--set", "render.gif_width=640", "--set",
+                          "render.gif_fps=30", "--set", "render.panel=false"})},
+        FinishCase{
+            "webm", "webm flush", kHold, SIGTERM,
+            words({"--frames", "20", "--set", "render.width=96", "--set", "render.height=64"})},
+        FinishCase{
+            "mp4", "mp4 flush", kHold, SIGINT,
+            words({"--frames", "20", "--set", "render.width=96", "--set", "render.height=64"})}),
+    [](const auto& info) {
+      std::string name = info.param.format;
+      std::replace(name.begin(), name.end(), ',', '_');
+      return name;
+    });
+
+// A sweep's running points are abandoned: their physics loops poll every 64 steps.
+TEST(Signals, SweepAbandonsItsRunningPointsAndKeepsThePreviousSweep) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  const std::string sweep = "sweep " + kFig09 +
+                            " --vary time.dt=0.01:0.02:2 --measure energy_drift -j 2 -o " +
+                            out.string();
+  const CliResult first = run_bookspin(sweep + " --set time.frames=20");
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  ASSERT_TRUE(before.count("fig09-matrix-unstable-x-sweep.csv"));
+  ASSERT_TRUE(before.count("fig09-matrix-unstable-x/sweep-manifest.json"));
+  // Two points of 100000 frames on two threads: each runs for seconds.
+  expect_stopped_cleanly(
+      words({"sweep", kFig09, "--vary", "time.dt=0.01:0.02:2", "--measure", "energy_drift", "-j",
+             "2", "-o", out.string(), "--set", "time.frames=100000"}),
+      kReport, "sweep point", SIGINT, out, before);
+}
+
+/// Writes `text` to `path`.
+void write_text(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// An accuracy run polls every 64 steps. A full report takes a quarter of a minute, so the
+// previous outputs here are stand-ins at the report's paths, its manifest too: they must keep
+// their bytes.
+TEST(Signals, AccuracyStopsItsRunsAndKeepsThePreviousReport) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  for (const char* name :
+       {"-accuracy.csv", "-accuracy.png", "-work-precision.png", "-energy-vs-dt.png", "-energy.png",
+        "-energy.csv", "/accuracy-manifest.json"})
+    write_text(out / (std::string("exact-unstable-x") + name), std::string("earlier ") + name);
+  const auto before = snapshot(out);
+  // 100 flips at dt = 0.001: 2·10⁷ steps a method.
+  expect_stopped_cleanly(words({"accuracy", scene_path("exact-unstable-x"), "-o", out.string(),
+                                "--flips", "100", "--dt", "0.001"}),
+                         kReport, "accuracy runs", SIGTERM, out, before);
+}
+
+/// A shell as web/build.sh writes it, reduced to its data marker.
+fs::path fake_shell(const fs::path& dir) {
+  const fs::path shell = dir / "shell.html";
+  write_text(shell, "<!doctype html><title>explorer</title><!--BOOKSPIN_DATA-->\n");
+  return shell;
+}
+
+// The explorer page and the gallery are made in a fraction of a second: each is held at a
+// stage until the signal arrives, and the earlier page and its manifest stay.
+TEST(Signals, ExploreKeepsThePreviousPageAndManifest) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  const std::string shell = fake_shell(dir.path()).string();
+  const CliResult first =
+      run_bookspin("explore " + kFig09 + " --shell " + shell + " -o " + out.string());
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  ASSERT_TRUE(before.count("explorer.html"));
+  ASSERT_TRUE(before.count("explorer-manifest.json"));
+  for (const char* stage : {"explore scenes", "explore write"}) {
+    expect_stopped_cleanly(words({"explore", kFig09, scene_path("exact-unstable-x"), "--shell",
+                                  shell, "-o", out.string()}),
+                           kHold, stage, SIGTERM, out, before);
+  }
+}
+
+TEST(Signals, GalleryKeepsThePreviousPageAndManifest) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  const CliResult first = run_bookspin("gallery " + out.string() + " " + kFig09);
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  ASSERT_TRUE(before.count("index.html"));
+  ASSERT_TRUE(before.count("gallery-manifest.json"));
+  for (const char* stage : {"gallery scenes", "gallery write"}) {
+    expect_stopped_cleanly(
+        words({"gallery", out.string(), kFig09, scene_path("exact-unstable-x"), "--force"}), kHold,
+        stage, SIGINT, out, before);
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::cli

@@ -1,0 +1,113 @@
+#pragma once
+// Runs the built bookspin and signals it at a named stage of its run (the command line's test
+// hooks, src/cli/interrupt.hpp): what the interrupt and signal tests of tests/cli share, with
+// the snapshot of an output folder they compare before and after.
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "support/cli_runner.hpp"
+
+namespace bookspin::test {
+
+/// The exit status of the child `pid` (waits for it), or 128 + signal if a signal ended it.
+inline int wait_status(pid_t pid) {
+  int raw = 0;
+  waitpid(pid, &raw, 0);
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+}
+
+/// Every entry under `dir` (recursively) with the content of each file ("<dir>" for a folder).
+inline std::map<std::string, std::string> snapshot(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    out[std::filesystem::relative(e.path(), dir).string()] =
+        e.is_regular_file() ? read_file(e.path()) : "<dir>";
+  }
+  return out;
+}
+
+/// The temporaries under `dir` (recursively): names holding ".tmp-" (output::AtomicOutput's).
+inline std::vector<std::string> temporaries(const std::filesystem::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string name = std::filesystem::relative(e.path(), dir).string();
+    if (name.find(".tmp-") != std::string::npos) found.push_back(name);
+  }
+  return found;
+}
+
+/// How a run signalled at a stage ended.
+struct SignalledRun {
+  bool reached = false;     ///< the stage's line came before the program ended
+  int status = -1;          ///< exit status, or 128 + signal
+  double to_exit_s = -1.0;  ///< seconds from the signal to the program's exit (reached only)
+  std::string err;          ///< its standard error
+};
+
+/// Starts bookspin with `args` (one word each; stdout to /dev/null, stderr read here) and the
+/// environment variable `hook` ("BOOKSPIN_TEST_REPORT_STAGES" or "BOOKSPIN_TEST_HOLD_AT") set to
+/// `stage`; on reading the line "bookspin: stage: <stage>" sends `signal` and waits for the
+/// exit. A run that has not reached the stage within five minutes, or not ended half a minute
+/// after the signal, is killed (status 137).
+inline SignalledRun signal_at_stage(const std::vector<std::string>& args, const std::string& hook,
+                                    const std::string& stage, int signal) {
+  using Clock = std::chrono::steady_clock;
+  int fds[2];
+  SignalledRun run;
+  if (pipe(fds) != 0) return run;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setenv(hook.c_str(), stage.c_str(), 1);
+    dup2(fds[1], STDERR_FILENO);
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, STDOUT_FILENO);
+    close(fds[0]);
+    close(fds[1]);
+    std::vector<std::string> words = args;
+    std::vector<char*> argv{const_cast<char*>(BOOKSPIN_EXE)};
+    for (auto& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    execv(BOOKSPIN_EXE, argv.data());
+    _exit(127);
+  }
+  close(fds[1]);
+  const std::string marker = "bookspin: stage: " + stage + "\n";
+  const auto deadline = Clock::now() + std::chrono::minutes(5);
+  Clock::time_point signalled;
+  char buffer[4096];
+  for (;;) {
+    pollfd p{fds[0], POLLIN, 0};
+    const int ready = poll(&p, 1, 100);
+    if (ready > 0) {
+      const ssize_t n = read(fds[0], buffer, sizeof buffer);
+      if (n <= 0) break;  // the program closed stderr: it is ending
+      run.err.append(buffer, static_cast<std::size_t>(n));
+    }
+    if (!run.reached && run.err.find(marker) != std::string::npos) {
+      run.reached = true;
+      signalled = Clock::now();
+      kill(pid, signal);
+    }
+    // Not there within five minutes, or still running half a minute after the signal.
+    if (Clock::now() > (run.reached ? signalled + std::chrono::seconds(30) : deadline)) {
+      kill(pid, SIGKILL);
+      break;
+    }
+  }
+  close(fds[0]);
+  run.status = wait_status(pid);
+  if (run.reached) run.to_exit_s = std::chrono::duration<double>(Clock::now() - signalled).count();
+  return run;
+}
+
+}  // namespace bookspin::test
