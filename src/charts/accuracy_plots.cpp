@@ -69,25 +69,51 @@ void style_series(const analysis::Method& m, overlay::Series& s) {
   overlay::palette_colour(mode, s.r, s.g, s.b);
 }
 
-overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
-                                    const std::vector<analysis::Method>& methods, double flips) {
+namespace {
+
+/// One line per method of `methods` through its rows' (dt, value(row)), log–log; a method
+/// without rows (not run) gets no line, a diverged row is left out unless `keep_diverged`.
+overlay::PlotSpec against_dt(const std::vector<analysis::AccuracyRow>& rows,
+                             const std::vector<analysis::Method>& methods, bool keep_diverged,
+                             double (*value)(const analysis::AccuracyRow&)) {
   overlay::PlotSpec spec;
-  spec.title = "Largest relative energy error over " + std::to_string(static_cast<int>(flips)) +
-               " exact flip periods, against the time step";
   spec.x_label = "time step dt (time units)";
-  spec.y_label = "relative energy error max |E/E0 - 1|";
   spec.log_x = spec.log_y = true;
   for (const auto& method : methods) {
     overlay::Series s;
     s.label = method_label(method);
     for (const auto& r : rows) {
-      if (!same_method(r.method, method) || r.diverged) continue;
+      if (!same_method(r.method, method) || (r.diverged && !keep_diverged)) continue;
       s.x.push_back(r.dt);
-      s.y.push_back(r.energy_drift);
+      s.y.push_back(value(r));
     }
+    if (s.x.empty()) continue;
     style_series(method, s);
     spec.series.push_back(std::move(s));
   }
+  return spec;
+}
+
+}  // namespace
+
+overlay::PlotSpec orientation_error_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
+                                               const std::vector<analysis::Method>& methods,
+                                               double flips) {
+  overlay::PlotSpec spec = against_dt(
+      rows, methods, true, [](const analysis::AccuracyRow& r) { return r.orientation_error; });
+  spec.title = "Orientation error after " + std::to_string(static_cast<int>(flips)) +
+               " flips, against the exact solution";
+  spec.y_label = "orientation error (rad)";
+  return spec;
+}
+
+overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
+                                    const std::vector<analysis::Method>& methods, double flips) {
+  overlay::PlotSpec spec = against_dt(
+      rows, methods, false, [](const analysis::AccuracyRow& r) { return r.energy_drift; });
+  spec.title = "Largest relative energy error over " + std::to_string(static_cast<int>(flips)) +
+               " exact flip periods, against the time step";
+  spec.y_label = "relative energy error max |E/E0 - 1|";
   return spec;
 }
 

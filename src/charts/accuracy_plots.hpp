@@ -23,6 +23,13 @@ void style_series(const analysis::Method& m, overlay::Series& s);
 /// line per method through its dt values. Lower left is better.
 overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& rows, double flips);
 
+/// Orientation error against the step (log–log): the angle of R_exactᵀ R after the run (rad)
+/// against dt (time units), one line per method of `methods` through its rows' dt values (a
+/// diverged row's error is NaN and breaks the line).
+overlay::PlotSpec orientation_error_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
+                                               const std::vector<analysis::Method>& methods,
+                                               double flips);
+
 /// Energy error against the step (log–log): the largest relative energy error |E/E0 − 1|
 /// over the run (flips exact flip periods) against dt (time units), one line per method of
 /// `methods` through its rows' dt values; diverged rows are left out.

@@ -69,28 +69,6 @@ void write_csv(const std::filesystem::path& path, const std::vector<analysis::Ac
   file.commit();
 }
 
-overlay::PlotSpec accuracy_plot(const std::vector<analysis::AccuracyRow>& rows, double flips) {
-  overlay::PlotSpec spec;
-  spec.title = "Orientation error after " + std::to_string(static_cast<int>(flips)) +
-               " flips, against the exact solution";
-  spec.x_label = "time step dt (time units)";
-  spec.y_label = "orientation error (rad)";
-  spec.log_x = spec.log_y = true;
-  for (const auto& method : analysis::accuracy_methods()) {
-    overlay::Series s;
-    s.label = charts::method_label(method);
-    for (const auto& r : rows) {
-      if (r.method.kind != method.kind || r.method.integrator != method.integrator) continue;
-      s.x.push_back(r.dt);
-      s.y.push_back(r.orientation_error);
-    }
-    if (s.x.empty()) continue;  // a method the report did not run (--methods)
-    charts::style_series(method, s);
-    spec.series.push_back(std::move(s));
-  }
-  return spec;
-}
-
 }  // namespace
 
 namespace {
@@ -167,7 +145,9 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
       paths.plots, settings, exact, rows, methods, request.stop_signal);
   std::vector<std::filesystem::path> written{paths.csv, paths.png};
   write_csv(written[0], rows);
-  output::write_png(written[1], overlay::plot_image(accuracy_plot(rows, request.flips), 1400, 900));
+  output::write_png(written[1], overlay::plot_image(charts::orientation_error_vs_dt_plot(
+                                                        rows, methods, request.flips),
+                                                    1400, 900));
   written.insert(written.end(), plots.begin(), plots.end());
   return written;
 }

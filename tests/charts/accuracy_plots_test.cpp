@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 namespace bookspin::charts {
@@ -41,6 +42,23 @@ TEST(AccuracyPlots, EnergyAgainstDtHasOneLinePerMethodThroughItsRows) {
   EXPECT_EQ(spec.series[1].x, (std::vector<double>{0.1, 0.01}));
   EXPECT_EQ(spec.series[1].y, (std::vector<double>{1e-3, 1e-7}));
   EXPECT_TRUE(spec.log_x && spec.log_y);
+}
+
+// The orientation error keeps a diverged row (its NaN error breaks the line where it diverged)
+// and leaves out a method without rows.
+TEST(AccuracyPlots, OrientationErrorAgainstDtKeepsDivergedRows) {
+  const Method euler{ModelKind::rigid_matrix, Integrator::euler};
+  const Method rk4{ModelKind::rigid_matrix, Integrator::rk4};
+  AccuracyRow coarse = row(euler, 0.1, 0.5, true);
+  coarse.orientation_error = std::nan("");
+  AccuracyRow fine = row(euler, 0.01, 1e-3);
+  fine.orientation_error = 0.25;
+  const overlay::PlotSpec spec = orientation_error_vs_dt_plot({coarse, fine}, {rk4, euler}, 10.0);
+  ASSERT_EQ(spec.series.size(), 1u);
+  EXPECT_EQ(spec.series[0].label, "rigid-matrix euler");
+  EXPECT_EQ(spec.series[0].x, (std::vector<double>{0.1, 0.01}));
+  EXPECT_TRUE(std::isnan(spec.series[0].y[0]));
+  EXPECT_EQ(spec.series[0].y[1], 0.25);
 }
 
 // Every accuracy method looks different from every other: colour, dash and mark together.
