@@ -2,7 +2,7 @@
 # Builds the two fuzzers with clang and runs them. The scene parser: first every saved
 # regression input, then RUNS fresh executions (default 1,000,000) from a seed corpus of
 # scenes/ and tests/bad_scenes/. The mesh validation layer (mesh stage + body_from_mesh):
-# MESH_RUNS executions (default 10,000; each writes a file for assimp, ~100 per second) from tests/fuzz/mesh_seeds
+# MESH_RUNS executions (default 10,000; each writes a file for assimp, about 25 a second on the 2-core machine) from tests/fuzz/mesh_seeds
 # and the bad meshes, with a fixed seed so that a run here repeats in CI. A crash leaves its
 # input in build-fuzz/crash-*; copy it into tests/fuzz/regressions/ (scene) or
 # tests/fuzz/mesh_seeds/ (mesh) so that every later run replays it.
