@@ -1,5 +1,7 @@
 #include "scene/texture_file.hpp"
 
+#include <libdeflate.h>
+
 #include <array>
 #include <cstdint>
 #include <fstream>
@@ -68,18 +70,7 @@ std::string check_header(const unsigned char* data, std::uint32_t length) {
 }  // namespace
 
 unsigned long png_crc32(const unsigned char* data, std::size_t size) {
-  static const std::array<std::uint32_t, 256> table = [] {
-    std::array<std::uint32_t, 256> t{};
-    for (std::uint32_t n = 0; n < 256; ++n) {
-      std::uint32_t c = n;
-      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xedb88320u ^ (c >> 1) : c >> 1;
-      t[n] = c;
-    }
-    return t;
-  }();
-  std::uint32_t c = 0xffffffffu;
-  for (std::size_t i = 0; i < size; ++i) c = table[(c ^ data[i]) & 0xff] ^ (c >> 8);
-  return c ^ 0xffffffffu;
+  return libdeflate_crc32(0, data, size);  // PNG's CRC-32 is zlib's (PNG specification §5.5)
 }
 
 std::string png_problem(const std::filesystem::path& path) {
