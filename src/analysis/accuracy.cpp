@@ -88,8 +88,8 @@ std::vector<Method> parse_methods(const std::string& list) {
   const auto fail = [&](const std::string& reason) -> void {
     throw InputError("--methods " + list + ": " + reason);
   };
-  std::vector<bool> chosen(accuracy_methods().size(), false);
   const std::vector<Method> every = accuracy_methods();
+  std::vector<bool> chosen(every.size(), false);
   const auto choose = [&](const auto& wanted) {
     for (std::size_t i = 0; i < every.size(); ++i)
       if (wanted(every[i])) chosen[i] = true;
