@@ -9,7 +9,7 @@
 #      into the page (the WebAssembly of Rapier and Jolt is inlined in their packages, base64).
 # `bookspin explore SCENE… -o OUT` (found beside the shell: BUILD_DIR/bookspin) then writes the
 # scenes into it: OUT/explorer.html.
-# Nothing to do, nothing done: BUILD_DIR/web/inputs.sha256 holds the hash of every input (these
+# One caller at a time (a lock in BUILD_DIR/web). Nothing to do, nothing done: BUILD_DIR/web/inputs.sha256 holds the hash of every input (these
 # scripts, web/bindings.cpp, web/src/, package.json and its lockfile, src/physics/), written
 # after a build; while it matches and the shell is there, the script rebuilds and rewrites
 # nothing.
@@ -21,6 +21,12 @@ mkdir -p "$1"; build="$(cd "$1" && pwd)"
 work="$build/web"
 root="$(dirname "$here")"
 stamp="$work/inputs.sha256"
+# One build at a time per BUILD_DIR: the browser tests call this script at once from a fresh
+# build tree, and two em++ runs writing the same .wasm break each other. The second waits,
+# then finds the first's build up to date.
+mkdir -p "$work"
+exec 9>"$work/.build.lock"
+flock 9
 inputs=$(cd "$root" && find web/build.sh web/build-wasm.sh web/make_explorer.py web/bindings.cpp \
            web/src web/package.json web/package-lock.json src/physics -type f -print0 |
          sort -z | xargs -0 sha256sum | sha256sum | cut -d ' ' -f 1)
