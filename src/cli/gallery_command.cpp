@@ -11,8 +11,7 @@ int gallery_command(const GalleryOptions& options) {
   products::GalleryJob job;
   job.out_dir = options.out_dir;
   job.scene_paths = options.scene_paths;
-  job.force = options.force;
-  job.on_remake = remake_note;
+  job.freshness = {options.force, false, remake_note};
   job.stop_signal = stop_poll();
   const products::GalleryOutcome done = products::make_gallery(job);
   const std::string page = products::gallery_layout(job.out_dir).page.string();

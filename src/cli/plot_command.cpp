@@ -12,10 +12,8 @@ int plot_command(const PlotOptions& options) {
   job.out_dir = options.out_dir;
   job.width = options.width;
   job.height = options.height;
-  job.force = options.force;
-  job.verify = options.verify;
+  job.freshness = {options.force, options.verify, remake_note};
   const std::string name = job.scene.name + "-plot";
-  job.on_remake = remake_note;
   const products::Outcome outcome = products::make_plot(job);
   if (outcome == products::Outcome::up_to_date) std::cout << "up to date: " << name << std::endl;
   if (outcome == products::Outcome::made)

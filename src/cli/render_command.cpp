@@ -55,12 +55,10 @@ int render_command(const RenderArgs& args) {
   job.write_png = !args.no_png;
   job.png_compression = args.png_compression;
   job.jobs = args.jobs;
-  job.force = args.force;
-  job.verify = args.verify;
+  job.freshness = {args.force, args.verify, remake_note};
   job.on_note = [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; };
   job.on_progress = [&progress](int done) { progress.update(done); };
   job.stop_signal = stop_poll();
-  job.on_remake = remake_note;
   const products::ClipOutcome done = products::make_clip(job);
   if (done.outcome == products::Outcome::up_to_date) {
     std::cout << "up to date: " << name << std::endl;

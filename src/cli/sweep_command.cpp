@@ -56,10 +56,8 @@ int sweep_command(const SweepOptions& options) {
     job.jobs = options.jobs;
     if (!options.shard.empty()) parse_shard(options.shard, job.shard_index, job.shard_count);
     job.out_dir = options.out_dir;
-    job.force = options.force;
-    job.verify = options.verify;
+    job.freshness = {options.force, options.verify, remake_note};
     job.stop_signal = stop_poll();
-    job.on_remake = remake_note;
     const products::SweepOutcome done = products::make_sweep(job);
     if (done.outcome == products::Outcome::up_to_date) {
       std::cout << "up to date: " << done.name << "-sweep" << std::endl;

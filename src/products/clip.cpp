@@ -78,18 +78,14 @@ fs::path video_path(const fs::path& out_dir, const scene::Scene& scene, const st
   return out_dir / (scene.name + "." + format);
 }
 
-/// Paths relative to OUT of every file a render of `job` writes.
-std::vector<std::string> clip_outputs(const ClipJob& job, const ClipLayout& layout) {
-  std::vector<std::string> files;
-  const auto relative = [&job](const fs::path& path) {
-    return path.lexically_relative(job.out_dir).generic_string();
-  };
-  for (const fs::path& video : layout.videos) files.push_back(relative(video));
+/// Every file a render of `job` writes.
+std::vector<fs::path> clip_outputs(const ClipJob& job, const ClipLayout& layout) {
+  std::vector<fs::path> files = layout.videos;
   if (job.write_png) {
     for (int i = 0; i < job.scene.frames; ++i)
-      files.push_back(relative(layout.frames_dir / output::frame_file_name(i)));
+      files.push_back(layout.frames_dir / output::frame_file_name(i));
   }
-  for (const fs::path& csv : layout.csvs) files.push_back(relative(csv));
+  files.insert(files.end(), layout.csvs.begin(), layout.csvs.end());
   return files;
 }
 
@@ -99,8 +95,9 @@ std::vector<std::string> clip_outputs(const ClipJob& job, const ClipLayout& layo
 /// plain relative paths inside OUT are touched; errors are ignored (an output left behind is
 /// no longer listed, so nothing links it).
 void remove_outputs_of_earlier_run(const fs::path& out_dir, const std::vector<std::string>& earlier,
-                                   const std::vector<std::string>& now) {
-  const std::set<std::string> kept(now.begin(), now.end());
+                                   const std::vector<fs::path>& now) {
+  std::set<std::string> kept;
+  for (const fs::path& path : now) kept.insert(path.lexically_relative(out_dir).generic_string());
   std::set<fs::path> folders;
   for (const std::string& listed : earlier) {
     const fs::path relative(listed);
@@ -169,26 +166,26 @@ std::string clip_manifest_head(const ClipJob& job) {
 
 ClipOutcome make_clip(const ClipJob& job) {
   const ClipLayout layout = clip_layout(job.out_dir, job.scene);
-  const std::string head = clip_manifest_head(job);
+  const CachedOutputs cached{
+      job.scene.name,         layout.manifest, clip_manifest_head(job), job.out_dir, &job.scene,
+      /*all_or_nothing=*/true};
   ClipOutcome done;
-  done.outcome = cache::run_cached(
-      {layout.manifest, head, job.out_dir, job.force, job.verify,
-       [&] {
-         // Stopped between frames (result.signal) or while the encoders finished (Interrupted);
-         // every output of the run is put in place together, or none (clip::render_clip).
-         const std::vector<std::string> earlier = output::manifest_outputs(layout.manifest);
-         return unless_interrupted(done.result.signal, [&]() -> std::optional<cache::JobOutputs> {
-           done.result = clip::render_clip(clip_request(job));
-           if (done.result.signal != 0) return std::nullopt;
-           done.warnings = divergence_warnings(job.scene.name, done.result);
-           cache::JobOutputs made{cache::manifest_note(job.scene) + warnings_json(done.warnings),
-                                  clip_outputs(job, layout)};
-           remove_outputs_of_earlier_run(job.out_dir, earlier, made.outputs);
-           return made;
-         });
-       },
-       /*all_or_nothing=*/true},
-      remake_note_for(job.on_remake, job.scene.name));
+  const CachedOutcome cached_outcome =
+      make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
+        // Stopped between frames (result.signal) or while the encoders finished
+        // (Interrupted); every output of the run is put in place together, or
+        // none (clip::render_clip).
+        const std::vector<std::string> earlier = output::manifest_outputs(layout.manifest);
+        done.result = clip::render_clip(clip_request(job));
+        if (done.result.signal != 0) return std::nullopt;
+        done.warnings = divergence_warnings(job.scene.name, done.result);
+        Made made{clip_outputs(job, layout), warnings_json(done.warnings)};
+        remove_outputs_of_earlier_run(job.out_dir, earlier, made.outputs);
+        return made;
+      });
+  done.outcome = cached_outcome.outcome;
+  if (cached_outcome.signal != 0)
+    done.result.signal = cached_outcome.signal;  // while the encoders finished
   if (done.outcome == cache::CacheOutcome::up_to_date)
     done.warnings = recorded_warnings(layout.manifest);
   return done;

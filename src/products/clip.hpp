@@ -34,12 +34,10 @@ struct ClipJob {
   bool write_png = true;          ///< false: videos and CSVs only
   int png_compression = -1;       ///< 0–9; −1: render.png_compression
   int jobs = 0;                   ///< worker threads; 0: every core
-  bool force = false;             ///< render even when the manifest says up to date
-  bool verify = false;            ///< the up-to-date check hashes every output
+  Freshness freshness;            ///< --force, --verify and the remake note
   std::function<void(const std::string& note)> on_note;  ///< see clip::ClipRequest
   std::function<void(int done)> on_progress;             ///< see clip::ClipRequest
   StopPoll stop_signal;                                  ///< see clip::ClipRequest
-  RemakeNote on_remake;  ///< why a manifest did not match (may be empty)
 };
 
 /// The frame loop's request for `job`: its scene, options and the layout's paths.

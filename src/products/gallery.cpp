@@ -180,22 +180,18 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
       output::sha256_text(gallery_html(entries, header)) + "\",\n";
   GalleryOutcome done;
   done.entries = entries.size();
-  int signal = 0;
-  done.outcome = cache::run_cached(
-      {layout.manifest, head, out, job.force, false,
-       [&] {
-         return unless_interrupted(signal, [&] {
-           stop_if_asked(job.stop_signal, "gallery write");
-           std::error_code ec;
-           output::make_directories(out, ec);
-           if (ec) throw_output_error("cannot create output directory", out, ec.value());
-           header.date = utc_now();
-           write_page(layout.page, gallery_html(entries, header));
-           return cache::JobOutputs{"", {path_in_out(out, layout.page)}};
-         });
-       }},
-      remake_note_for(job.on_remake, layout.page.filename().string()));
-  if (signal != 0) throw Interrupted(signal);  // the earlier page and manifest untouched
+  const CachedOutputs cached{layout.page.filename().string(), layout.manifest, head, out};
+  const CachedOutcome made = make_cached(cached, job.freshness, [&] {
+    stop_if_asked(job.stop_signal, "gallery write");
+    std::error_code ec;
+    output::make_directories(out, ec);
+    if (ec) throw_output_error("cannot create output directory", out, ec.value());
+    header.date = utc_now();
+    write_page(layout.page, gallery_html(entries, header));
+    return std::optional<Made>{Made{{layout.page}}};
+  });
+  if (made.signal != 0) throw Interrupted(made.signal);  // the earlier page and manifest untouched
+  done.outcome = made.outcome;
   return done;
 }
 

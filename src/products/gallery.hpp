@@ -23,8 +23,7 @@ GalleryLayout gallery_layout(const std::filesystem::path& out_dir);
 struct GalleryJob {
   std::filesystem::path out_dir;
   std::vector<std::string> scene_paths;  ///< every scene on the page
-  bool force = false;                    ///< write the page even when it is up to date
-  RemakeNote on_remake;                  ///< why a manifest did not match (may be empty)
+  Freshness freshness;                   ///< --force (write it even when up to date), note
   /// Polled before each scene ("gallery scenes") and before the page is written ("gallery
   /// write"): a signal throws Interrupted; the earlier page and its manifest stay.
   StopPoll stop_signal;

@@ -20,15 +20,14 @@ std::string plot_manifest_head(const PlotJob& job) {
 
 Outcome make_plot(const PlotJob& job) {
   const PlotLayout layout = plot_layout(job.out_dir, job.scene);
-  const std::string head = plot_manifest_head(job);
-  return cache::run_cached(
-      {layout.manifest, head, job.out_dir, job.force, job.verify,
-       [&]() -> std::optional<cache::JobOutputs> {
-         charts::write_plot_sheet({job.scene, layout.png, job.width, job.height});
-         return cache::JobOutputs{cache::manifest_note(job.scene),
-                                  {layout.png.lexically_relative(job.out_dir).generic_string()}};
-       }},
-      remake_note_for(job.on_remake, job.scene.name + "-plot"));
+  const CachedOutputs cached{job.scene.name + "-plot", layout.manifest, plot_manifest_head(job),
+                             job.out_dir, &job.scene};
+  return make_cached(cached, job.freshness,
+                     [&]() -> std::optional<Made> {
+                       charts::write_plot_sheet({job.scene, layout.png, job.width, job.height});
+                       return Made{{layout.png}};
+                     })
+      .outcome;
 }
 
 }  // namespace bookspin::products

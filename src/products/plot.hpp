@@ -23,11 +23,9 @@ PlotLayout plot_layout(const std::filesystem::path& out_dir, const scene::Scene&
 struct PlotJob {
   scene::Scene scene;  ///< a single or a comparison scene (every tile is plotted)
   std::filesystem::path out_dir;
-  int width = 1600;      ///< pixels
-  int height = 1000;     ///< pixels
-  bool force = false;    ///< plot even when the manifest says up to date
-  bool verify = false;   ///< the up-to-date check hashes the PNG
-  RemakeNote on_remake;  ///< why a manifest did not match (may be empty)
+  int width = 1600;     ///< pixels
+  int height = 1000;    ///< pixels
+  Freshness freshness;  ///< --force, --verify (the PNG's hash) and the remake note
 };
 
 /// The manifest head of `job` ("plot", the image size, the scene). Throws InputError.

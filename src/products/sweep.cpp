@@ -58,19 +58,14 @@ SweepOutcome make_sweep(const SweepJob& job) {
     request.scene = scene::parse_scene(job.scene_path, job.overrides);
     const scene::Scene& scene = *request.scene;
     done.name = scene.name;
-    done.outcome = cache::run_cached(
-        {sweep_manifest_path(job.out_dir, scene.name),
-         cache::manifest_head("sweep", sweep_options_json(job), scene), job.out_dir, job.force,
-         job.verify,
-         [&]() -> std::optional<cache::JobOutputs> {
-           result = jobs::run_sweep(request);
-           if (result.signal != 0) return std::nullopt;
-           cache::JobOutputs made{cache::manifest_note(scene), {}};
-           for (const auto& path : result.written)
-             made.outputs.push_back(path.lexically_relative(job.out_dir).generic_string());
-           return made;
-         }},
-        remake_note_for(job.on_remake, scene.name + "-sweep"));
+    const CachedOutputs cached{scene.name + "-sweep", sweep_manifest_path(job.out_dir, scene.name),
+                               cache::manifest_head("sweep", sweep_options_json(job), scene),
+                               job.out_dir, &scene};
+    done.outcome = make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
+                     result = jobs::run_sweep(request);
+                     if (result.signal != 0) return std::nullopt;
+                     return Made{result.written};
+                   }).outcome;
   }
   if (result.signal != 0) done.outcome = Outcome::interrupted;
   done.signal = result.signal;

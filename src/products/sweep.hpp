@@ -31,10 +31,8 @@ struct SweepJob {
   /// Shard k of n (k from 0); n = 0: the whole grid, which is cached by its manifest.
   int shard_index = 0, shard_count = 0;
   std::filesystem::path out_dir;
-  bool force = false;    ///< run even when the manifest says up to date
-  bool verify = false;   ///< the up-to-date check hashes the CSV and PNG
+  Freshness freshness;   ///< --force, --verify (the CSV's and PNG's hashes), remake note
   StopPoll stop_signal;  ///< polled by the workers (jobs::SweepRequest)
-  RemakeNote on_remake;  ///< why a manifest did not match (may be empty)
 };
 
 struct SweepOutcome {
