@@ -7,8 +7,8 @@ namespace bookspin::products {
 CachedOutcome make_cached(const CachedOutputs& cached, const Freshness& freshness,
                           const std::function<std::optional<Made>()>& make) {
   CachedOutcome done;
-  cache::CachedJob job{cached.manifest, cached.head, cached.out_dir, freshness.force,
-                       freshness.verify, {}, cached.all_or_nothing};
+  cache::CachedJob job{cached.manifest,  cached.head, cached.out_dir,       freshness.force,
+                       freshness.verify, {},          cached.all_or_nothing};
   job.make = [&]() -> std::optional<cache::JobOutputs> {
     std::optional<Made> made;
     try {
