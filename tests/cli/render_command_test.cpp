@@ -115,10 +115,8 @@ TEST(RenderCommand, NoPngSkipsTheFrames) {
 // render pipeline are those of the pose each frame shows, not of the simulation ahead of it.
 TEST(RenderCommand, CsvIsByteForByteWhatSimulateWrites) {
   const fs::path out = fresh_dir("render_csv_is_simulate");
-  const CliResult r = run_bookspin("render " + scene_path("fig09-matrix-unstable-x") +
-                                   " --set render.width=128 --set render.height=96 --no-png"
-                                   " --frames 6 --jobs 2 -o " +
-                                   out.string());
+  const CliResult r = run_bookspin("render " + scene_path("fig09-matrix-unstable-x") + kSmall +
+                                   " --no-png --frames 6 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const fs::path csv = out / "simulated.csv";
   ASSERT_EQ(run_bookspin("simulate " + scene_path("fig09-matrix-unstable-x") +
