@@ -3,19 +3,37 @@
 #include <deque>
 
 #include "charts/decoration.hpp"
-#include "clip/comparison.hpp"
-#include "clip/frame.hpp"
-#include "clip/render_settings.hpp"
+#include "clip/composer.hpp"
+#include "common/errors.hpp"
 #include "output/output_dir.hpp"
 
 namespace bookspin::clip {
 
 namespace {
 
-/// A frame between Renderer::submit() and its collection: what its decoration and its CSV
-/// row need, since the simulation has moved on by then.
+/// A single scene: the one picture is the frame, decorated as render_frame() does (frame.hpp).
+class SingleComposer final : public Composer {
+ public:
+  explicit SingleComposer(const scene::Scene& scene) : decorator_(scene) {}
+  render::RenderSettings picture_settings(const scene::Scene& first_tile) const override {
+    return render_settings_for(first_tile);
+  }
+  RgbaImage compose(std::vector<RgbaImage>& pictures, const Tiles& tiles) override {
+    RgbaImage frame = std::move(pictures.front());
+    const TileShown& shown = tiles.front()->shown;
+    decorator_.decorate(frame, shown.t, shown.diverged_at, shown.history);
+    return frame;
+  }
+
+ private:
+  charts::FrameDecorator decorator_;
+};
+
+/// A tile's picture between Renderer::submit() and its collection: what the frame's
+/// decoration and CSV rows need, since the simulation has moved on by then.
 struct InFlight {
-  int index = 0;
+  int index = 0;         ///< the video frame
+  std::size_t tile = 0;  ///< its tile
   double t = 0.0;
   std::optional<double> diverged_at;
   physics::Diagnostics diagnostics;
@@ -23,75 +41,112 @@ struct InFlight {
   bool fresh = false;        ///< a newly simulated pose (else the held last finite one)
 };
 
-/// The display side of the loop: finishes frames in the order they were submitted.
+/// The display side of the loop: takes the tiles' pictures in the order they were
+/// submitted and, once a frame's are all there, composes it and hands it to the sinks.
 class FrameFinisher {
  public:
-  FrameFinisher(const ClipRequest& request, output::ClipSinks& sinks, ClipResult& result)
-      : request_(request), sinks_(sinks), result_(result), decorator_(request.scene) {}
+  FrameFinisher(const ClipRequest& request, Composer& composer, Tiles& tiles,
+                output::ClipSinks& sinks, ClipResult& result)
+      : request_(request), composer_(composer), tiles_(tiles), sinks_(sinks), result_(result) {}
 
-  void expect(InFlight frame) { in_flight_.push_back(std::move(frame)); }
+  void expect(InFlight picture) { in_flight_.push_back(std::move(picture)); }
 
-  /// Decorates the oldest frame in flight with the panel curves as they were at its time,
-  /// then queues it and its CSV row.
-  void finish(RgbaImage image) {
-    InFlight frame = std::move(in_flight_.front());
+  /// Moves the oldest picture's tile on to the pose it shows, with the panel curves as they
+  /// were at its time; after the frame's last tile, composes the frame and queues it and its
+  /// CSV rows.
+  void take(RgbaImage picture) {
+    InFlight shown = std::move(in_flight_.front());
     in_flight_.pop_front();
-    if (frame.fresh) history_.add(frame.diagnostics, &frame.corners);
-    decorator_.decorate(image, frame.t, frame.diverged_at, history_);
-    physics::Diagnostics row = frame.diagnostics;
-    row.t = frame.t;
-    sinks_.add(frame.index, std::move(image), row);
-    result_.frames = frame.index + 1;
+    TileShown& tile = tiles_[shown.tile]->shown;
+    if (shown.fresh) tile.history.add(shown.diagnostics, &shown.corners);
+    tile.t = shown.t;
+    tile.diverged_at = shown.diverged_at;
+    tile.diagnostics = shown.diagnostics;
+    pictures_.push_back(std::move(picture));
+    if (pictures_.size() < tiles_.size()) return;
+    rows_.clear();
+    for (const auto& run : tiles_) rows_.push_back(run->shown.row());
+    RgbaImage frame = composer_.compose(pictures_, tiles_);
+    pictures_.clear();
+    sinks_.add(shown.index, std::move(frame), rows_);
+    result_.frames = shown.index + 1;
     if (request_.on_progress) request_.on_progress(result_.frames);
   }
 
  private:
   const ClipRequest& request_;
+  Composer& composer_;
+  Tiles& tiles_;
   output::ClipSinks& sinks_;
   ClipResult& result_;
   std::deque<InFlight> in_flight_;
-  charts::DiagnosticsHistory history_;  ///< every frame finished so far, like ShownFrame::history
-  charts::FrameDecorator decorator_;
+  std::vector<RgbaImage> pictures_;  ///< the frame's pictures taken so far, in tile order
+  std::vector<physics::Diagnostics> rows_;
 };
 
-ClipResult render_single(const ClipRequest& request) {
-  const scene::Scene& scene = request.scene;
-  render::Renderer renderer(render_settings_for(scene));
-  output::ClipSinks sinks(request.paths, sink_options(request));
-  if (request.on_note && !sinks.encoder_message().empty()) request.on_note(sinks.encoder_message());
+/// The tiles of `scene`: itself, or one per [[compare]] entry (scene::tile_scene).
+Tiles tiles_of(const scene::Scene& scene) {
+  Tiles tiles;
+  if (scene.compare.empty()) tiles.push_back(std::make_unique<TileRun>(scene));
+  for (const auto& tile : scene.compare)
+    tiles.push_back(std::make_unique<TileRun>(tile_scene(scene, tile)));
+  return tiles;
+}
 
-  ClipResult result;
-  analysis::FrameSource source(scene);
-  const BodyDrawing drawing(scene.body);
-  ShownFrame frame;  // the simulation side, a frame or two ahead of the display side
-  FrameFinisher finisher(request, sinks, result);
-  for (int index = 0; index < scene.frames; ++index) {
-    if ((result.signal = stop_signal(request.stop_signal, "render frames")) != 0)
-      return result;  // sinks clean up
-    const std::size_t samples = frame.history.size();
-    advance(source, index, scene, frame);
-    result.diverged_at = frame.diverged_at;
-    renderer.submit(drawing.input_for(frame.pose));
-    finisher.expect({index, frame.t, frame.diverged_at, frame.pose.diagnostics, frame.pose.corners,
-                     frame.history.size() > samples});
-    // While this frame is drawn and read back, the previous one is decorated and queued.
-    if (auto spare = sinks.spare_frame()) renderer.recycle(std::move(*spare));
-    if (auto image = renderer.collect()) finisher.finish(std::move(*image));
+/// A single scene's divergence (time and the simulator's reason), or every diverged tile of
+/// a comparison.
+void record_divergence(const scene::Scene& scene, const Tiles& tiles, ClipResult& result) {
+  if (scene.compare.empty()) {
+    result.diverged_at = tiles.front()->frame.diverged_at;
+    result.divergence_reason = tiles.front()->source.divergence_reason();
+    return;
   }
-  while (auto image = renderer.flush()) finisher.finish(std::move(*image));
-  result.divergence_reason = source.divergence_reason();
-  output::OutputSet outputs;
-  sinks.finish(outputs);
-  result.signal = commit_unless_stopped(request, outputs);
-  return result;
+  for (const auto& tile : tiles) {
+    if (tile->frame.diverged_at)
+      result.diverged_tiles.push_back({tile->scene.title, *tile->frame.diverged_at});
+  }
 }
 
 }  // namespace
 
+std::unique_ptr<Composer> single_composer(const scene::Scene& scene) {
+  return std::make_unique<SingleComposer>(scene);
+}
+
 ClipResult render_clip(const ClipRequest& request) {
   output::prepare_output_dir(request.paths.mp4.parent_path());
-  if (!request.scene.compare.empty()) return render_comparison(request);
-  return render_single(request);
+  const scene::Scene& scene = request.scene;
+  Tiles tiles = tiles_of(scene);
+  BOOKSPIN_ASSERT(request.tile_csvs.size() + 1 == tiles.size());
+  const std::unique_ptr<Composer> composer =
+      scene.compare.empty() ? single_composer(scene) : comparison_composer(scene);
+  render::Renderer renderer(composer->picture_settings(tiles.front()->scene));
+  output::ClipSinks sinks(request.paths, sink_options(request), request.tile_csvs);
+  if (request.on_note && !sinks.encoder_message().empty()) request.on_note(sinks.encoder_message());
+
+  ClipResult result;
+  FrameFinisher finisher(request, *composer, tiles, sinks, result);
+  for (int index = 0; index < scene.frames; ++index) {
+    if ((result.signal = stop_signal(request.stop_signal, "render frames")) != 0)
+      return result;  // the sinks remove their temporaries
+    for (std::size_t i = 0; i < tiles.size(); ++i) {
+      TileRun& tile = *tiles[i];
+      const std::size_t samples = tile.frame.history.size();
+      advance(tile.source, index, tile.scene, tile.frame);
+      renderer.submit(tile.drawing.input_for(tile.frame.pose));
+      finisher.expect({index, i, tile.frame.t, tile.frame.diverged_at, tile.frame.pose.diagnostics,
+                       tile.frame.pose.corners, tile.frame.history.size() > samples});
+      // While this picture is drawn and read back, the previous one is composed and queued.
+      if (auto spare = sinks.spare_frame()) renderer.recycle(std::move(*spare));
+      if (auto picture = renderer.collect()) finisher.take(std::move(*picture));
+    }
+  }
+  while (auto picture = renderer.flush()) finisher.take(std::move(*picture));
+  record_divergence(scene, tiles, result);
+  output::OutputSet outputs;
+  sinks.finish(outputs);
+  result.signal = commit_unless_stopped(request, outputs);
+  return result;
 }
 
 }  // namespace bookspin::clip

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <stdexcept>
 
 #include "output/diagnostics_csv.hpp"
 #include "output/output_dir.hpp"
@@ -31,12 +32,15 @@ std::string frame_file_name(int index) {
   return name;
 }
 
-ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options)
+ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options,
+                     const std::vector<std::filesystem::path>& tile_csvs)
     : paths_(paths),
       options_(options),
       csv_(paths.csv),
       png_queue_(2 * static_cast<std::size_t>(std::max(1, options.png_workers))) {
   if (options_.formats.empty()) throw std::invalid_argument("ClipSinks: no video format");
+  for (const auto& path : tile_csvs)
+    tile_csvs_.push_back(std::make_unique<DiagnosticsCsvFile>(path));
   const EncoderSettings& e = options_.encoder;
   // Each video in its own member, opened before any thread starts; the threads share out
   // the cores the encoders would otherwise each take for themselves.
@@ -117,9 +121,12 @@ void ClipSinks::png_loop() {
   }
 }
 
-void ClipSinks::add(int index, RgbaImage image, const physics::Diagnostics& diagnostics) {
+void ClipSinks::add(int index, RgbaImage image, std::span<const physics::Diagnostics> rows) {
+  if (rows.size() != 1 + tile_csvs_.size())
+    throw std::invalid_argument("ClipSinks::add: one row per diagnostics CSV");
   rethrow_if_failed();
-  csv_.add(index, diagnostics);
+  csv_.add(index, rows[0]);
+  for (std::size_t i = 0; i < tile_csvs_.size(); ++i) tile_csvs_[i]->add(index, rows[1 + i]);
   // Shared by the encoder and the PNG queue; whoever lets go last hands the buffer back.
   Frame frame(new RgbaImage(std::move(image)), [this](const RgbaImage* done) { recycle(done); });
   bool queued = true;
@@ -148,10 +155,13 @@ std::optional<RgbaImage> ClipSinks::spare_frame() {
 void ClipSinks::finish(OutputSet& set) {
   stop_workers();
   rethrow_if_failed();
-  csv_.close();  // a failed CSV write stops here, before the videos are finalized
+  // A failed CSV write stops here, before the videos are finalized.
+  csv_.close();
+  for (auto& csv : tile_csvs_) csv->close();
   for (auto& video : videos_) video->finish(set);
   if (frames_) set.add(*frames_);
   csv_.finish(set);
+  for (auto& csv : tile_csvs_) csv->finish(set);
 }
 
 }  // namespace bookspin::output

@@ -1,6 +1,7 @@
 #pragma once
 // The sinks of one clip, fed frame by frame: each video (MP4, WebM, GIF) on its own encoder
-// thread, PNG frames on a small worker pool, the diagnostics CSV on the caller's thread. Every
+// thread, PNG frames on a small worker pool, the diagnostics CSVs (one, or a comparison's one
+// per tile) on the caller's thread. Every
 // output is written under a temporary name; finish() completes them and adds them to the
 // run's OutputSet, whose commit() puts them in place together (docs/outputs.md).
 #include <exception>
@@ -10,6 +11,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -32,7 +34,7 @@ struct ClipPaths {
   std::filesystem::path webm;        ///< the VP9 video
   std::filesystem::path gif;         ///< the GIF
   std::filesystem::path frames_dir;  ///< the PNG frames, frame_file_name(i) each
-  std::filesystem::path csv;         ///< the diagnostics CSV
+  std::filesystem::path csv;         ///< the diagnostics CSV (a comparison's first tile's)
 };
 
 /// The file name of frame `index` (from 0) in ClipPaths::frames_dir: "frame_00042.png".
@@ -56,18 +58,27 @@ struct SinkOptions {
 
 class ClipSinks {
  public:
-  /// Opens all outputs (temporaries). Throws OutputError, EncoderError, std::invalid_argument.
-  ClipSinks(const ClipPaths& paths, const SinkOptions& options);
+  /// Opens all outputs (temporaries). `tile_csvs`: a comparison's diagnostics CSVs of its
+  /// tiles after the first (whose CSV is paths.csv), in tile order. Throws OutputError,
+  /// EncoderError, std::invalid_argument.
+  ClipSinks(const ClipPaths& paths, const SinkOptions& options,
+            const std::vector<std::filesystem::path>& tile_csvs = {});
   /// Without finish(): stops the workers and removes every temporary. Never throws.
   ~ClipSinks();
   ClipSinks(const ClipSinks&) = delete;
   ClipSinks& operator=(const ClipSinks&) = delete;
 
   /// Queues frame `index` (blocks while the queues are full, so memory stays bounded) and
-  /// writes its CSV row. Rethrows the first error of a worker.
-  void add(int index, RgbaImage image, const physics::Diagnostics& diagnostics);
+  /// writes its CSV rows: rows[0] to ClipPaths::csv, rows[1 + i] to tile_csvs[i]
+  /// (std::invalid_argument unless there is one row per CSV). Rethrows the first error of a
+  /// worker.
+  void add(int index, RgbaImage image, std::span<const physics::Diagnostics> rows);
+  /// Same for a clip with one CSV.
+  void add(int index, RgbaImage image, const physics::Diagnostics& diagnostics) {
+    add(index, std::move(image), std::span(&diagnostics, 1));
+  }
   /// Drains the queues and completes every output under its temporary name, adding each to
-  /// `set` (videos in the order of SinkOptions::formats, then the frames, then the CSV);
+  /// `set` (videos in the order of SinkOptions::formats, then the frames, then the CSVs);
   /// nothing is in place until set.commit(), which must come before these sinks are
   /// destroyed. Rethrows the first error of a worker. Throws Interrupted when
   /// SinkOptions::stop answers a signal while an encoder finishes (nothing put in place).
@@ -100,6 +111,7 @@ class ClipSinks {
   std::optional<output::GifEncoder> gif_;
   std::optional<output::AtomicDirectory> frames_;
   DiagnosticsCsvFile csv_;
+  std::vector<std::unique_ptr<DiagnosticsCsvFile>> tile_csvs_;
   // Before the queues: frames left in them at destruction come back here.
   std::mutex spare_mutex_;
   std::vector<RgbaImage> spares_;

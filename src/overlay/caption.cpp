@@ -1,6 +1,7 @@
 #include "overlay/caption.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 
 #include "overlay/cairo_canvas.hpp"
@@ -197,6 +198,25 @@ void draw_banner(RgbaImage& image, const std::string& text, double centre_x) {
   select_overlay_font(cr, true, size);
   cairo_move_to(cr, x, y);
   cairo_show_text(cr, text.c_str());
+  canvas.composite_onto(image);
+}
+
+void draw_title_strip(RgbaImage& image, const PixelRect& strip, const std::string& title,
+                      double t) {
+  CairoCanvas canvas(
+      image.width, image.height,
+      region_around(strip.x, strip.y, strip.width, strip.height, 0.0, image.width, image.height));
+  cairo_t* cr = canvas.cr();
+  const double font = 0.5 * strip.height, margin = 0.6 * font;
+  select_overlay_font(cr, true, font);
+  cairo_set_source_rgb(cr, 0.95, 0.95, 0.92);
+  const double baseline = strip.y + 0.5 * strip.height + 0.36 * font;
+  cairo_move_to(cr, strip.x + margin, baseline);
+  cairo_show_text(cr, title.c_str());
+  char time[32];
+  std::snprintf(time, sizeof time, "t = %.1f", t);
+  cairo_move_to(cr, strip.x + strip.width - text_width(cr, time) - margin, baseline);
+  cairo_show_text(cr, time);
   canvas.composite_onto(image);
 }
 

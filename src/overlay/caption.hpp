@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 
 namespace bookspin::overlay {
@@ -62,5 +63,11 @@ double caption_font_size(const std::vector<CaptionLine>& lines, double font_size
 /// Draws one large centred warning banner near the bottom of `image` (e.g. "diverged at
 /// t = 31.35"), white on red, centred on column `centre_x` (pixels; < 0: the middle).
 void draw_banner(RgbaImage& image, const std::string& text, double centre_x = -1.0);
+
+/// Draws a title strip's text over `strip` (pixels, within `image`; its background is the
+/// caller's): `title` in bold at the left and "t = 12.3" (`t` in time units, one decimal) at
+/// the right, in light grey, half the strip's height high and centred on it vertically.
+/// A comparison's header above its tiles.
+void draw_title_strip(RgbaImage& image, const PixelRect& strip, const std::string& title, double t);
 
 }  // namespace bookspin::overlay

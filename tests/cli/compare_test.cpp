@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 
 #include "support/cli_runner.hpp"
 
@@ -54,6 +55,52 @@ TEST(Compare, PanelsShareTheInitialStateAndTime) {
   // Frame 0 is the same initial state; every panel has the same frames and times.
   EXPECT_EQ(rows("matrix-svd"), rows("quaternion-not-normalized"));
   EXPECT_EQ(rows("particle-normalized").size(), 4u);
+}
+
+// Each tile's CSV is byte for byte what `bookspin simulate` writes for the tile's own scene:
+// the comparison's keys without its [[compare]] entries, with the tile's model.* keys set
+// (scenes/README.md, "Comparison scenes").
+TEST(Compare, EachTilesCsvIsTheSimulationOfItsOwnScene) {
+  struct Tile {
+    const char* scene;
+    const char* name;
+    std::string model;  ///< the entry's model.* keys, as --set arguments
+  };
+  const std::vector<Tile> tiles = {
+      {"compare-normalization", "particle-normalized",
+       "--set 'model.kind=\"particle\"' --set model.normalize=true"},
+      {"compare-normalization", "matrix-no-svd",
+       "--set 'model.kind=\"rigid-matrix\"' --set model.normalize=false"},
+      {"compare-normalization", "quaternion-not-normalized",
+       "--set 'model.kind=\"rigid-quaternion\"' --set model.normalize=false"},
+      {"compare-methods-x", "particle-mass-spring-euler",
+       "--set 'model.kind=\"particle\"' --set 'model.integrator=\"euler\"'"},
+      {"compare-methods-x", "rigid-body-quaternion-rk4",
+       "--set 'model.kind=\"rigid-quaternion\"' --set 'model.integrator=\"rk4\"'"},
+      {"compare-methods-x", "exact-jacobi-elliptic-functions", "--set 'model.kind=\"exact\"'"}};
+  const fs::path out = fresh_dir("compare_tile_csvs");
+  for (const char* scene : {"compare-normalization", "compare-methods-x"}) {
+    const CliResult r = run_bookspin("render " + scene_path(scene) +
+                                     " --set render.width=128 --set render.height=96 --no-png"
+                                     " --frames 6 --jobs 2 -o " +
+                                     (out / "render").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string text = read_file(scene_path(scene));
+    std::ofstream(out / (std::string(scene) + ".toml")) << text.substr(0, text.find("[[compare]]"));
+  }
+  for (const Tile& tile : tiles) {
+    const fs::path csv = out / (std::string(tile.name) + ".csv");
+    const CliResult r =
+        run_bookspin("simulate " + (out / (std::string(tile.scene) + ".toml")).string() + " " +
+                     tile.model + " --set time.frames=6 --csv " + csv.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string simulated = read_file(csv);
+    EXPECT_EQ(line_count(simulated), 7u) << csv;  // header + 6 frames
+    EXPECT_EQ(
+        read_file(out / "render" / tile.scene / ("diagnostics-" + std::string(tile.name) + ".csv")),
+        simulated)
+        << tile.scene << ": " << tile.name;
+  }
 }
 
 // Bad [[compare]] keys are cases of the bad-input catalogue (tests/bad_scenes/compare-*).

@@ -111,6 +111,21 @@ TEST(RenderCommand, NoPngSkipsTheFrames) {
   EXPECT_FALSE(fs::exists(out / "fig03-particle-stable-z" / "frames"));
 }
 
+// The clip's rows are the simulation's, frame for frame: the rows of the frames still in the
+// render pipeline are those of the pose each frame shows, not of the simulation ahead of it.
+TEST(RenderCommand, CsvIsByteForByteWhatSimulateWrites) {
+  const fs::path out = fresh_dir("render_csv_is_simulate");
+  const CliResult r = run_bookspin("render " + scene_path("fig09-matrix-unstable-x") + kSmall +
+                                   " --no-png --frames 6 -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  const fs::path csv = out / "simulated.csv";
+  ASSERT_EQ(run_bookspin("simulate " + scene_path("fig09-matrix-unstable-x") +
+                         " --set time.frames=6 --csv " + csv.string())
+                .status,
+            0);
+  EXPECT_EQ(read_file(out / "fig09-matrix-unstable-x/diagnostics.csv"), read_file(csv));
+}
+
 TEST(RenderCommand, DivergedSceneRendersToTheEndAndWarns) {
   const fs::path out = fresh_dir("render_diverged");
   const CliResult r =
