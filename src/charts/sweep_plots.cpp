@@ -30,8 +30,7 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
   for (const SweepAxis& a : chart.axes) {
     char text[200];
     std::snprintf(text, sizeof text, "varied: %s from %.6g to %.6g, %d values%s", a.key.c_str(),
-                  a.start, a.stop, static_cast<int>(a.values.size()),
-                  a.log ? " (log spaced)" : "");
+                  a.start, a.stop, static_cast<int>(a.values.size()), a.log ? " (log spaced)" : "");
     lines.emplace_back(text);
   }
   return lines;
@@ -39,9 +38,9 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
 
 /// A two-key sweep's picture: one heat map per measure, first key on x (heat_map.hpp).
 RgbaImage heat_map_picture(const SweepChart& chart) {
-  const auto maps = sweep_heat_maps(chart.header, chart.rows, chart.axes[0].values,
-                                    chart.axes[0].log, chart.axes[1].values, chart.axes[1].log,
-                                    chart.measures);
+  const auto maps =
+      sweep_heat_maps(chart.header, chart.rows, chart.axes[0].values, chart.axes[0].log,
+                      chart.axes[1].values, chart.axes[1].log, chart.measures);
   const int height = 120 + kMapHeightPerRow * static_cast<int>((maps.size() + 1) / 2);
   return heat_map_sheet(sheet_header(chart), maps, kSheetWidth, height + height % 2);
 }

@@ -102,8 +102,8 @@ bool is_number(const std::string& cell) {
 
 }  // namespace
 
-void write_sweep_shard(const SweepTable& table, const scene::Scene& scene,
-                       std::size_t grid_points, int k, int n, const std::filesystem::path& path) {
+void write_sweep_shard(const SweepTable& table, const scene::Scene& scene, std::size_t grid_points,
+                       int k, int n, const std::filesystem::path& path) {
   output::prepare_output_dir(path.parent_path());
   output::AtomicTextFile file(path);
   file.stream() << kShardMagic << k << " of " << n << ": "

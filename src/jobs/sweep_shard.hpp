@@ -20,8 +20,8 @@ namespace bookspin::jobs {
 /// (scene::canonical_json, as in the manifests), bookspin's build id, `grid_points` (the whole
 /// grid's size), each range (VaryRange::spec) and the measures; then the header with
 /// grid_index first, then one line per row. Throws OutputError.
-void write_sweep_shard(const SweepTable& table, const scene::Scene& scene,
-                       std::size_t grid_points, int k, int n, const std::filesystem::path& path);
+void write_sweep_shard(const SweepTable& table, const scene::Scene& scene, std::size_t grid_points,
+                       int k, int n, const std::filesystem::path& path);
 
 /// Where shard k of n of the sweep of the scene called `scene_name` would be: named when it
 /// is missing.

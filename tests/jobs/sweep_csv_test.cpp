@@ -35,9 +35,9 @@ TEST(SweepCsv, ARowIsTheFullPrecisionValuesWithEmptyCellsForWhatARunDidNotReach)
   m.first_flip_exact = 0.1;  // 0.1 is not a binary fraction: 17 digits show it
   m.energy_drift = 2.0e-3;   // no flip_period: the run flipped once
   const MeasureList measures = parse_measures("first_flip,flip_period,energy_drift");
-  EXPECT_EQ(sweep_row_cells({0.25, 3.0}, measures, m),
-            (std::vector<std::string>{"0.25", "3", "12.5", "", "0.002", "0.10000000000000001",
-                                      ""}));
+  EXPECT_EQ(
+      sweep_row_cells({0.25, 3.0}, measures, m),
+      (std::vector<std::string>{"0.25", "3", "12.5", "", "0.002", "0.10000000000000001", ""}));
 }
 
 TEST(SweepCsv, TheFileIsTheHeaderThenOneLinePerRowWithoutTheGridIndex) {
