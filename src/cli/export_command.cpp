@@ -18,11 +18,9 @@ int export_command(const ExportOptions& options) {
   if (const std::string note = jobs::lattice_note(scene); !note.empty())
     std::cerr << "bookspin: " << note << '\n';
   job.out_dir = options.out_dir;
-  job.force = options.force;
-  job.verify = options.verify;
+  job.freshness = {options.force, options.verify, remake_note};
   job.on_note = [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; };
   job.stop = stop_poll();
-  job.on_remake = remake_note;
   const products::GltfExportResult result = products::make_gltf(job);
   if (result.outcome == products::Outcome::up_to_date) {
     std::cout << "up to date: " << scene.name << ".glb" << std::endl;

@@ -178,21 +178,16 @@ std::string gltf_manifest_head(const GltfJob& job) {
 GltfExportResult make_gltf(const GltfJob& job) {
   check_gltf_scene(job.scene);
   const GltfLayout layout = gltf_layout(job.out_dir, job.scene);
-  const std::string head = gltf_manifest_head(job);
-  const std::string note = cache::manifest_note(job.scene);
-  const auto on_remake = remake_note_for(job.on_remake, job.scene.name + ".glb");
+  const CachedOutputs cached{job.scene.name + ".glb", layout.manifest, gltf_manifest_head(job),
+                             job.out_dir, &job.scene};
   GltfExportResult result;
   result.path = layout.glb;
-  int signal = 0;
-  const auto make = [&] {
-    return unless_interrupted(signal, [&]() -> std::optional<cache::JobOutputs> {
-      result = export_glb(job.scene, layout.glb, job.on_note, job.stop);
-      return cache::JobOutputs{note, {layout.glb.lexically_relative(job.out_dir).generic_string()}};
-    });
-  };
-  result.outcome = cache::run_cached(
-      {layout.manifest, head, job.out_dir, job.force, job.verify, make}, on_remake);
-  if (signal != 0) throw Interrupted(signal);  // the earlier file and its manifest untouched
+  const CachedOutcome done = make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
+    result = export_glb(job.scene, layout.glb, job.on_note, job.stop);
+    return Made{{layout.glb}};
+  });
+  if (done.signal != 0) throw Interrupted(done.signal);  // the earlier file and manifest untouched
+  result.outcome = done.outcome;
   return result;
 }
 

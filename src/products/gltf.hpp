@@ -27,14 +27,12 @@ GltfLayout gltf_layout(const std::filesystem::path& out_dir, const scene::Scene&
 struct GltfJob {
   scene::Scene scene;  ///< one model (no [[compare]]); --frames is its time.frames
   std::filesystem::path out_dir;
-  bool force = false;   ///< export even when the manifest says up to date
-  bool verify = false;  ///< the up-to-date check hashes the .glb
+  Freshness freshness;  ///< --force, --verify (the .glb's hash) and the remake note
   /// Told that a deforming model exports its best-fit rigid motion (may be empty).
   std::function<void(const std::string&)> on_note;
   /// Polled before each frame ("export frames") and before the file is written ("export
   /// write"). May be empty.
   StopPoll stop;
-  RemakeNote on_remake;  ///< why a manifest did not match (may be empty)
 };
 
 struct GltfExportResult {
