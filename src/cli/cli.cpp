@@ -109,6 +109,7 @@ void add_export(CLI::App& cli, ExportOptions& options) {
   cmd->add_option("--frames", options.frames,
                   "Export only the first N frames (overrides time.frames)")
       ->check(CLI::Range(1, scene::kMaxFrames));
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/gltf-manifest.json");
 }
 
 void add_explore(CLI::App& cli, ExploreOptions& options) {

@@ -120,11 +120,14 @@ struct ExportOptions {
   std::string scene_path;
   std::vector<std::string> overrides;
   std::string out_dir = "out";
-  int frames = 0;     ///< --frames: > 0 is appended to `overrides` as time.frames by run_cli
-  bool gltf = false;  ///< --gltf: the only format so far, and required
+  int frames = 0;       ///< --frames: > 0 is appended to `overrides` as time.frames by run_cli
+  bool gltf = false;    ///< --gltf: the only format so far, and required
+  bool force = false;   ///< export even when OUT/<scene>/gltf-manifest.json says up to date
+  bool verify = false;  ///< up-to-date check hashes the .glb (else its size only)
 };
 
-/// Writes OUT/<scene>.glb (products::make_gltf): the body and its motion as animated glTF.
+/// Writes OUT/<scene>.glb (products::make_gltf): the body and its motion as animated glTF,
+/// unless its manifest says it is up to date.
 int export_command(const ExportOptions& options);
 
 struct ExploreOptions {

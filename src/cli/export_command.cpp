@@ -1,3 +1,4 @@
+// `bookspin export --gltf`: a scene's body and its motion as an animated glTF binary.
 #include <iostream>
 
 #include "cli/commands.hpp"
@@ -8,16 +9,23 @@
 namespace bookspin::cli {
 
 int export_command(const ExportOptions& options) {
-  scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
+  products::GltfJob job;
+  job.scene = scene::parse_scene(options.scene_path, options.overrides);
+  const scene::Scene& scene = job.scene;
   products::check_gltf_scene(scene);  // before any note or warning about the scene
   for (const std::string& warning : scene.warnings)
     std::cerr << "bookspin: warning: " << warning << '\n';
   if (const std::string note = jobs::lattice_note(scene); !note.empty())
     std::cerr << "bookspin: " << note << '\n';
-  const products::GltfExportResult result = products::make_gltf(
-      scene, options.out_dir,
-      [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; },
-      stop_poll());
+  job.out_dir = options.out_dir;
+  job.freshness = {options.force, options.verify, remake_note};
+  job.on_note = [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; };
+  job.stop = stop_poll();
+  const products::GltfExportResult result = products::make_gltf(job);
+  if (result.outcome == products::Outcome::up_to_date) {
+    std::cout << "up to date: " << scene.name << ".glb" << std::endl;
+    return kExitOk;
+  }
   if (result.diverged_at) {
     std::cerr << "bookspin: warning: " << scene.name
               << ": simulation diverged at t = " << *result.diverged_at

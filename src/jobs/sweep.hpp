@@ -1,42 +1,21 @@
 #pragma once
-// Parameter sweeps (`bookspin sweep`, docs/physics.md §14): one physics-only run per grid
-// point, in parallel threads, measured and written as one CSV row per point plus a plot;
-// shards of the grid for job arrays, and their merge.
-#include <Eigen/Dense>
+// Parameter sweeps (`bookspin sweep`, docs/physics.md §14), the jobs stage's door to them:
+// one physics-only run per grid point, in parallel threads, measured and written as one CSV
+// row per point plus a picture; shards of the grid for job arrays, and their merge. The grid
+// is sweep_grid.hpp's, the table and its CSV sweep_csv.hpp's, the shard format
+// sweep_shard.hpp's, the picture charts/sweep_plots.hpp's.
 #include <filesystem>
 #include <functional>
 #include <optional>
-#include <ostream>
 #include <string>
 #include <vector>
 
-#include "analysis/measures.hpp"
 #include "common/stop.hpp"
+#include "jobs/sweep_csv.hpp"
 #include "jobs/sweep_grid.hpp"
-#include "overlay/plot.hpp"
-#include "physics/simulator.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
-
-/// The measures a sweep writes, in the order given: rows of analysis::measure_table().
-using MeasureList = std::vector<const analysis::Measure*>;
-
-/// Parses "first_flip,flip_period,…" (comma-separated names of analysis::measure_table(), no
-/// repeats). Throws InputError ("--measure TEXT: reason") on an unknown or repeated name or
-/// an empty list.
-MeasureList parse_measures(const std::string& text);
-
-/// A sweep's table: the varied keys, the measures, and the exact reference columns
-/// (`first_flip_exact` where first_flip is measured, `flip_period_exact` likewise).
-struct SweepTable {
-  std::string scene_name;
-  std::vector<VaryRange> ranges;
-  MeasureList measures;
-  std::vector<std::string> header;  ///< CSV column names, in order
-  /// (grid index, cells) per row, cells as written (%.17g or empty), sorted by index.
-  std::vector<std::pair<std::size_t, std::vector<std::string>>> rows;
-};
 
 /// Where a sweep's files go: the sweep product names them (products/sweep.hpp).
 struct SweepPaths {
@@ -75,37 +54,17 @@ struct SweepResult {
 };
 
 /// Parses every point's scene first (a bad value is the scene's InputError, naming the key,
-/// before any run), runs them on `jobs` threads, and writes the layout's CSV and plots
-/// (sweep_plots; for two keys a heat map per measure, charts::heat_map_sheet), or for a shard
-/// only the layout's shard CSV (a first
-/// line "# bookspin sweep shard …" recording the scene name, the SHA-256 of the resolved
-/// scene in canonical form after --set (scene::canonical_json), bookspin's build id, the grid
-/// size, the ranges and the measures, then a grid_index column before the full CSV's;
-/// docs/physics.md §14). Returns the paths written. Throws InputError
-/// for a comparison scene, OutputError when a file cannot be written.
+/// before any run), runs them on `jobs` threads, and writes the layout's CSV and picture
+/// (charts::sweep_sheet: line plots, or for two keys a heat map per measure), or for a shard
+/// only the layout's shard CSV (write_sweep_shard). Returns the paths written. Throws
+/// InputError for a comparison scene, OutputError when a file cannot be written.
 SweepResult run_sweep(const SweepRequest& request);
 
-/// Reads shard CSVs (LF or CRLF line endings), checks they are shards of one sweep (same
-/// scene name, scene SHA-256, build, grid, measures and N; same header) that cover its grid
-/// exactly once, and writes the layout's CSV and plots, byte-identical to the
-/// one-process sweep's. Throws InputError naming the file (and line): unreadable, not a
-/// shard, a shard line without scene hash or build, another sweep (naming the first field
-/// that differs), a mismatched header, a row of another shard or an index outside the grid, a
-/// cell that is not a finite number (empty is allowed for a measure, not for a varied value),
-/// a duplicate grid point, a missing one (naming the shard file that should hold it).
+/// Reads shard CSVs into their sweep's table (read_sweep_shards: every shard of one sweep, its
+/// grid covered exactly once; a missing shard is named by the layout's shard path) and writes
+/// the layout's CSV and picture, byte-identical to the one-process sweep's. Throws InputError
+/// naming the file (and line), OutputError when a file cannot be written.
 std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem::path>& shards,
                                                const SweepLayout& layout);
-
-/// The full CSV's column names, in order: the varied keys (VaryRange::key), the measures'
-/// names, then the exact columns (Measure::exact_name) of the measures that have one.
-std::vector<std::string> sweep_csv_header(const std::vector<VaryRange>& ranges,
-                                          const MeasureList& measures);
-
-/// Writes the full CSV (header, then one line per row without the grid index) to `out`.
-void write_sweep_csv(const SweepTable& table, std::ostream& out);
-
-/// One plot per measure against the first varied key (log axis where it was :log), one line
-/// per combination of the other keys' values, the exact curve dashed beside the measured one.
-std::vector<overlay::PlotSpec> sweep_plots(const SweepTable& table);
 
 }  // namespace bookspin::jobs

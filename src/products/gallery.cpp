@@ -93,7 +93,8 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   e.mp4 = rendered(clip.videos[0]);
   e.webm = rendered(clip.videos[1]);
   e.gif = rendered(clip.videos[2]);
-  e.glb = if_there(out, gltf_path(out, scene));
+  const GltfLayout gltf = gltf_layout(out, scene);
+  e.glb = Listed(out, gltf.manifest)(gltf.glb);
   if (const std::string page = if_there(out, explorer_page_path(out)); !page.empty())
     e.explorer = page + "?scene=" + scene.name;
   e.video = e.mp4.empty() ? e.webm : e.mp4;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "analysis/frame_source.hpp"
+#include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
 #include "output/diagnostics_csv.hpp"
 #include "output/gltf_writer.hpp"
@@ -101,24 +102,10 @@ std::vector<output::GltfPart> surface_parts(const physics::Body& body) {
   return parts;
 }
 
-}  // namespace
-
-std::filesystem::path gltf_path(const std::filesystem::path& out_dir, const scene::Scene& scene) {
-  return out_dir / (scene.name + ".glb");
-}
-
-void check_gltf_scene(const scene::Scene& scene) {
-  if (!scene.compare.empty()) {
-    throw InputError(scene.source.string() +
-                     ": --gltf: a comparison scene ([[compare]]) has no single motion to export; "
-                     "export one model's scene at a time");
-  }
-}
-
-GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::path& out_dir,
-                           const std::function<void(const std::string&)>& on_note,
-                           const StopPoll& stop) {
-  check_gltf_scene(scene);
+/// Runs the scene and writes `glb` (make_gltf's work, without the manifest).
+GltfExportResult export_glb(const scene::Scene& scene, const std::filesystem::path& glb,
+                            const std::function<void(const std::string&)>& on_note,
+                            const StopPoll& stop) {
   // The particle model of the book, and of any other body (the lattice, docs/physics.md §13).
   const bool deforms = scene.model.kind == physics::ModelKind::particle;
   if (deforms && on_note) {
@@ -158,15 +145,49 @@ GltfExportResult make_gltf(const scene::Scene& scene, const std::filesystem::pat
     animation.translations.col(i) = translations[static_cast<std::size_t>(i)];
   }
   GltfExportResult result;
-  result.path = gltf_path(out_dir, scene);
+  result.path = glb;
   result.keyframes = static_cast<int>(k);
   for (const auto& part : parts) result.vertices += static_cast<int>(part.positions.cols());
   result.diverged_at = source.diverged_at();
   std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (ec) throw_output_error("cannot create directory", out_dir, ec.value());
+  std::filesystem::create_directories(glb.parent_path(), ec);
+  if (ec) throw_output_error("cannot create directory", glb.parent_path(), ec.value());
   stop_if_asked(stop, "export write");
   output::write_glb(result.path, scene.name, parts, animation);
+  return result;
+}
+
+}  // namespace
+
+GltfLayout gltf_layout(const std::filesystem::path& out_dir, const scene::Scene& scene) {
+  return {out_dir / (scene.name + ".glb"), out_dir / scene.name / "gltf-manifest.json"};
+}
+
+void check_gltf_scene(const scene::Scene& scene) {
+  if (!scene.compare.empty()) {
+    throw InputError(scene.source.string() +
+                     ": --gltf: a comparison scene ([[compare]]) has no single motion to export; "
+                     "export one model's scene at a time");
+  }
+}
+
+std::string gltf_manifest_head(const GltfJob& job) {
+  return cache::manifest_head("export", "    \"format\": \"glb\"\n", job.scene);
+}
+
+GltfExportResult make_gltf(const GltfJob& job) {
+  check_gltf_scene(job.scene);
+  const GltfLayout layout = gltf_layout(job.out_dir, job.scene);
+  const CachedOutputs cached{job.scene.name + ".glb", layout.manifest, gltf_manifest_head(job),
+                             job.out_dir, &job.scene};
+  GltfExportResult result;
+  result.path = layout.glb;
+  const CachedOutcome done = make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
+    result = export_glb(job.scene, layout.glb, job.on_note, job.stop);
+    return Made{{layout.glb}};
+  });
+  if (done.signal != 0) throw Interrupted(done.signal);  // the earlier file and manifest untouched
+  result.outcome = done.outcome;
   return result;
 }
 

@@ -40,6 +40,7 @@ fs::path sweep_manifest_path(const fs::path& out_dir, const std::string& scene_n
 
 SweepOutcome make_sweep(const SweepJob& job) {
   jobs::SweepRequest request;
+  request.layout = [out = job.out_dir](const std::string& name) { return sweep_paths(out, name); };
   request.scene_path = job.scene_path;
   request.overrides = job.overrides;
   for (const auto& v : job.vary) request.ranges.push_back(jobs::parse_vary(v));
@@ -48,7 +49,6 @@ SweepOutcome make_sweep(const SweepJob& job) {
   request.jobs = job.jobs;
   request.shard_index = job.shard_index;
   request.shard_count = job.shard_count;
-  request.layout = [out = job.out_dir](const std::string& name) { return sweep_paths(out, name); };
   request.stop_signal = job.stop_signal;
   SweepOutcome done;
   jobs::SweepResult result;
@@ -58,9 +58,10 @@ SweepOutcome make_sweep(const SweepJob& job) {
     request.scene = scene::parse_scene(job.scene_path, job.overrides);
     const scene::Scene& scene = *request.scene;
     done.name = scene.name;
-    const CachedOutputs cached{scene.name + "-sweep", sweep_manifest_path(job.out_dir, scene.name),
-                               cache::manifest_head("sweep", sweep_options_json(job), scene),
-                               job.out_dir, &scene};
+    const fs::path manifest = sweep_manifest_path(job.out_dir, scene.name);
+    const std::string options = sweep_options_json(job);
+    const CachedOutputs cached{scene.name + "-sweep", manifest,
+                               cache::manifest_head("sweep", options, scene), job.out_dir, &scene};
     done.outcome = make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
                      result = jobs::run_sweep(request);
                      if (result.signal != 0) return std::nullopt;

@@ -1,5 +1,6 @@
-// Up-to-date skipping of `bookspin render`, `plot`, `gallery`, `sweep` and `accuracy` through their
-// manifests (src/output/manifest.hpp): what makes a run skip and what makes it render again.
+// Up-to-date skipping of `bookspin render`, `plot`, `gallery`, `sweep`, `accuracy` and `export`
+// through their manifests (src/output/manifest.hpp): what makes a run skip and what makes it render
+// again.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -289,6 +290,42 @@ TEST(Manifest, WholeSweepSkipsWhenUpToDate) {
   fs::remove(box.out / "tiny-sweep.png");
   EXPECT_NE(sweep("energy_drift,diverged_at").output.find("wrote"), std::string::npos);
   EXPECT_TRUE(fs::is_regular_file(box.out / "tiny-sweep.png"));
+}
+
+TEST(Manifest, GltfExportSkipsWhenUpToDateAndTheGalleryLinksOnlyAListedGlb) {
+  const Sandbox box("manifest_gltf");
+  const auto exported = [&box](const std::string& options) {
+    return run_bookspin("export " + box.scene.string() + " --gltf " + options + " -o " +
+                        box.out.string());
+  };
+  const auto made = [](const CliResult& r) {
+    return r.status == 0 && r.output.find("exported: ") != std::string::npos &&
+           r.output.find("up to date") == std::string::npos;
+  };
+  const auto skipped_glb = [](const CliResult& r) {
+    return r.status == 0 && r.output.find("up to date: tiny.glb") != std::string::npos &&
+           r.output.find("exported:") == std::string::npos;
+  };
+  ASSERT_TRUE(made(exported("")));
+  const fs::path glb = box.out / "tiny.glb";
+  const std::string bytes = read_file(glb);
+  const CliResult second = exported("");
+  EXPECT_TRUE(skipped_glb(second)) << second.output;
+  EXPECT_EQ(read_file(glb), bytes);
+  box.write(std::string(kScene) + "# a comment only\n");
+  EXPECT_TRUE(skipped_glb(exported("")));
+  EXPECT_TRUE(made(exported("--frames 3")));  // the scene's time.frames changed
+  EXPECT_TRUE(skipped_glb(exported("--frames 3")));
+  EXPECT_TRUE(made(exported("--frames 3 --force")));
+  fs::remove(glb);
+  EXPECT_TRUE(made(exported("--frames 3")));
+  // The gallery links the .glb while its manifest lists it, and not once the manifest is gone.
+  const std::string gallery = "gallery " + box.out.string() + " " + box.scene.string();
+  ASSERT_EQ(run_bookspin(gallery).status, 0);
+  EXPECT_NE(read_file(box.out / "index.html").find("tiny.glb"), std::string::npos);
+  fs::remove(box.out / "tiny" / "gltf-manifest.json");
+  ASSERT_EQ(run_bookspin(gallery + " --force").status, 0);
+  EXPECT_EQ(read_file(box.out / "index.html").find("tiny.glb"), std::string::npos);
 }
 
 TEST(Manifest, AccuracyReportSkipsWhenUpToDateAndRemeasuresOnAnyOptionChange) {

@@ -1,6 +1,6 @@
 // Every input of a cached product in its up-to-date check (docs/outputs.md, "Manifests and
-// up-to-date checks"). The list below names each input a clip, a plot or an accuracy report
-// reads: every scene key
+// up-to-date checks"). The list below names each input a clip, a plot, an accuracy report or
+// a glTF export reads: every scene key
 // (scenes/README.md, "Keys", and the [[compare]] keys), each texture file, the mesh file and
 // what it pulls in (an OBJ's .mtl, a glTF's .bin), the mesh's geometry and face colours, the
 // job's options and the program. Each is changed in turn, and the product's manifest head
@@ -26,6 +26,7 @@
 #include "cache/run_cached.hpp"
 #include "products/accuracy.hpp"
 #include "products/clip.hpp"
+#include "products/gltf.hpp"
 #include "products/plot.hpp"
 #include "scene/scene.hpp"
 #include "support/cli_runner.hpp"
@@ -56,6 +57,12 @@ struct Input {
   std::function<void(PlotJob&)> plot = {};
   std::function<void(AccuracyJob&)> accuracy = {};
   bool is_option() const { return clip || plot || accuracy; }
+  /// An option of `product`'s job ("clip", "plot", "accuracy"; the export has none of its own).
+  bool is_option_of(const std::string& product) const {
+    return product == "clip"   ? bool(clip)
+           : product == "plot" ? bool(plot)
+                               : product == "accuracy" && bool(accuracy);
+  }
 };
 
 /// The OBJ box with its two parts coloured by `box.mtl`.
@@ -290,6 +297,13 @@ std::string accuracy_head(const scene::Scene& scene, const Input& input, bool af
   return accuracy_manifest_head(job);
 }
 
+std::string gltf_head(const scene::Scene& scene, const Input&, bool) {
+  GltfJob job;
+  job.scene = scene;
+  job.out_dir = "out";
+  return gltf_manifest_head(job);
+}
+
 scene::Scene scene_of(const fs::path& dir, const Input& input, bool after) {
   std::vector<std::string> overrides = input.before;
   if (after) overrides.insert(overrides.end(), input.set.begin(), input.set.end());
@@ -319,11 +333,7 @@ std::string folder_name(std::string name) {
 
 void expect_each_input_makes_again(const std::string& product, const HeadOf& head_of) {
   for (const Input& input : inputs()) {
-    // Another product's option.
-    if (input.is_option() && !(product == "clip"   ? bool(input.clip)
-                               : product == "plot" ? bool(input.plot)
-                                                   : bool(input.accuracy)))
-      continue;
+    if (input.is_option() && !input.is_option_of(product)) continue;  // another product's
     SCOPED_TRACE(product + ": " + input.name);
     const fs::path dir = fresh_dir("products/inputs/" + product + "/" + folder_name(input.name));
     write_sandbox(dir);
@@ -348,6 +358,10 @@ TEST(ProductInputs, EachInputChangedMakesThePlotAgainAndNothingChangedDoesNot) {
 
 TEST(ProductInputs, EachInputChangedMakesTheAccuracyReportAgainAndNothingChangedDoesNot) {
   expect_each_input_makes_again("accuracy", accuracy_head);
+}
+
+TEST(ProductInputs, EachInputChangedMakesTheGltfExportAgainAndNothingChangedDoesNot) {
+  expect_each_input_makes_again("gltf", gltf_head);
 }
 
 // The program: a manifest written by another build (its build id) is stale.
@@ -421,18 +435,18 @@ TEST(ProductInputs, TheListNamesEveryDeclaredInput) {
   const std::vector<std::string> tile_keys = first_cells(readme, "| key (in each `[[compare]]`)");
   EXPECT_GT(tile_keys.size(), 5u);
   for (const std::string& key : tile_keys) EXPECT_TRUE(has_entry("compare." + key)) << key;
-  // What the heads of a clip, a plot and an accuracy report hold, for a mesh comparison and the
-  // textured book.
-  // Members derived from others are changed through them.
+  // What the heads of a clip, a plot, an accuracy report and an export hold, for a mesh comparison
+  // and the textured book. Members derived from others are changed through them.
   const std::map<std::string, std::string> derived{
-      {"manifest", ""},                                       // the format's version: not an input
-      {"command", ""},                                        // the product itself
-      {"bookspin", "program"},                                // version and build id
-      {"options", ""},                                        // its members are checked below
-      {"scene", ""},                                          // ditto
-      {"inputs", ""},                                         // ditto
-      {"body.moments", "body.mass"},                          // mass, scale and the mesh's geometry
-      {"body.volume", "body.scale"},                          // scale and the mesh's geometry
+      {"manifest", ""},               // the format's version: not an input
+      {"command", ""},                // the product itself
+      {"bookspin", "program"},        // version and build id
+      {"options", ""},                // its members are checked below
+      {"job:format", ""},             // the export's format: glb, the one so far, not a choice
+      {"scene", ""},                  // ditto
+      {"inputs", ""},                 // ditto
+      {"body.moments", "body.mass"},  // mass, scale and the mesh's geometry
+      {"body.volume", "body.scale"},  // scale and the mesh's geometry
       {"body.surface", "file:body.mesh geometry"},            // vertex and triangle counts, smooth
       {"body_surface", "file:body.mesh .mtl face colours"}};  // geometry and face colours
   const fs::path dir = fresh_dir("products/inputs/declared");
@@ -444,7 +458,7 @@ TEST(ProductInputs, TheListNamesEveryDeclaredInput) {
   for (const Input* input : {&mesh_compare, &book}) {
     const scene::Scene s = scene_of(dir, *input, false);
     for (const std::string& head : {clip_head(s, *input, false), plot_head(s, *input, false),
-                                    accuracy_head(s, *input, false)}) {
+                                    accuracy_head(s, *input, false), gltf_head(s, *input, false)}) {
       for (const std::string& m : members(head, "", 2)) seen.insert(m);
       for (const std::string& m : members(head, "  \"scene\": {\n", 4)) {
         static const std::regex tile("^compare\\[[0-9]+\\]\\.");

@@ -70,7 +70,8 @@ TEST(ProductLayout, PlotSweepAccuracyGltfExplorerAndGallery) {
                 "out/fig05-energy-vs-dt.png", "out/fig05-energy.png", "out/fig05-energy.csv"}));
   EXPECT_EQ(accuracy.report.plots.energy_vs_dt_png, "out/fig05-energy-vs-dt.png");
   EXPECT_EQ(accuracy.manifest, "out/fig05/accuracy-manifest.json");
-  EXPECT_EQ(gltf_path("out", s), "out/fig05.glb");
+  EXPECT_EQ(gltf_layout("out", s).glb, "out/fig05.glb");
+  EXPECT_EQ(gltf_layout("out", s).manifest, "out/fig05/gltf-manifest.json");
   EXPECT_EQ(explorer_page_path("out"), "out/explorer.html");
   EXPECT_EQ(gallery_layout("out").page, "out/index.html");
   EXPECT_EQ(gallery_layout("out").manifest, "out/gallery-manifest.json");

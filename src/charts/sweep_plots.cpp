@@ -1,0 +1,121 @@
+#include "charts/sweep_plots.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <optional>
+
+#include "charts/heat_map.hpp"
+#include "charts/panel.hpp"
+
+namespace bookspin::charts {
+
+namespace {
+
+constexpr int kSheetWidth = 1400;
+constexpr int kPlotHeightPerMeasure = 330;
+constexpr int kMapHeightPerRow = 560;  ///< two heat maps a row
+
+/// A cell as a number: NaN where it is empty (a measure the run did not reach).
+double number(const std::string& text) {
+  if (text.empty()) return std::nan("");
+  return std::strtod(text.c_str(), nullptr);
+}
+
+/// The header lines of the picture: the sweep, then its ranges.
+std::vector<std::string> sheet_header(const SweepChart& chart) {
+  std::vector<std::string> lines{"Sweep of " + chart.scene_name + ": " +
+                                 std::to_string(chart.rows.size()) + " runs"};
+  for (const SweepAxis& a : chart.axes) {
+    char text[200];
+    std::snprintf(text, sizeof text, "varied: %s from %.6g to %.6g, %d values%s", a.key.c_str(),
+                  a.start, a.stop, static_cast<int>(a.values.size()), a.log ? " (log spaced)" : "");
+    lines.emplace_back(text);
+  }
+  return lines;
+}
+
+/// A two-key sweep's picture: one heat map per measure, first key on x (heat_map.hpp).
+RgbaImage heat_map_picture(const SweepChart& chart) {
+  const auto maps =
+      sweep_heat_maps(chart.header, chart.rows, chart.axes[0].values, chart.axes[0].log,
+                      chart.axes[1].values, chart.axes[1].log, chart.measures);
+  const int height = 120 + kMapHeightPerRow * static_cast<int>((maps.size() + 1) / 2);
+  return heat_map_sheet(sheet_header(chart), maps, kSheetWidth, height + height % 2);
+}
+
+}  // namespace
+
+std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart) {
+  const std::size_t keys = chart.axes.size();
+  // Rows grouped by the values of the keys after the first (as written, so values that
+  // print alike at 6 digits stay apart), groups in order of appearance.
+  std::vector<std::string> group_names;
+  std::vector<std::vector<std::size_t>> groups;
+  std::map<std::string, std::size_t> group_of;
+  for (std::size_t r = 0; r < chart.rows.size(); ++r) {
+    std::string key, name;
+    for (std::size_t k = 1; k < keys; ++k) {
+      const std::string& cell_text = chart.rows[r][k];
+      key += cell_text + ",";
+      char value[40];
+      std::snprintf(value, sizeof value, "%.6g", number(cell_text));
+      if (k > 1) name += ", ";
+      name += chart.header[k] + " = " + value;
+    }
+    const auto [it, added] = group_of.emplace(key, groups.size());
+    if (added) {
+      group_names.push_back(name);
+      groups.emplace_back();
+    }
+    groups[it->second].push_back(r);
+  }
+  std::vector<overlay::PlotSpec> plots;
+  for (std::size_t m = 0; m < chart.measures.size(); ++m) {
+    const std::string column(chart.measures[m]->name);
+    const std::size_t col = keys + m;
+    std::optional<std::size_t> exact_col;
+    for (std::size_t c = keys + chart.measures.size(); c < chart.header.size(); ++c)
+      if (chart.header[c] == column + "_exact") exact_col = c;
+    overlay::PlotSpec spec;
+    spec.title = column + (exact_col ? " (measured: solid; exact model: dashed)" : "");
+    spec.x_label = chart.header[0] + (chart.axes[0].log ? " (log scale)" : "");
+    spec.y_label = std::string(chart.measures[m]->axis_label);
+    spec.log_x = chart.axes[0].log;
+    spec.log_y = chart.measures[m]->log_scale;
+    spec.legend = true;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      overlay::Series measured, exact;
+      measured.label = group_names[g].empty() ? "measured" : group_names[g];
+      exact.label = group_names[g].empty() ? "exact model" : "exact, " + group_names[g];
+      overlay::palette_colour(static_cast<int>(g), measured.r, measured.g, measured.b);
+      exact.r = measured.r * 0.3;
+      exact.g = measured.g * 0.3;
+      exact.b = measured.b * 0.3;
+      exact.dashed = true;
+      for (std::size_t r : groups[g]) {
+        const auto& cells = chart.rows[r];
+        measured.x.push_back(number(cells[0]));
+        measured.y.push_back(number(cells[col]));
+        if (exact_col) {
+          exact.x.push_back(number(cells[0]));
+          exact.y.push_back(number(cells[*exact_col]));
+        }
+      }
+      spec.series.push_back(std::move(measured));
+      if (exact_col) spec.series.push_back(std::move(exact));  // dashed, on top
+    }
+    plots.push_back(std::move(spec));
+  }
+  return plots;
+}
+
+RgbaImage sweep_sheet(const SweepChart& chart) {
+  if (chart.axes.size() == 2) return heat_map_picture(chart);
+  const auto plots = sweep_plots(chart);
+  const int height = 120 + kPlotHeightPerMeasure * static_cast<int>(plots.size());
+  return plot_sheet(sheet_header(chart), plots, kSheetWidth, height + height % 2);
+}
+
+}  // namespace bookspin::charts
