@@ -1,6 +1,6 @@
 #pragma once
-// The one "check the manifest, make the outputs, write the manifest" of every cached command
-// (render, plot, sweep, gallery): an output whose manifest matches is not made again
+// The one "check the manifest, make the outputs, write the manifest" of every cached product
+// (through products::make_cached): an output whose manifest matches is not made again
 // (output/manifest.hpp has the file format and what "matches" means).
 #include <filesystem>
 #include <functional>
