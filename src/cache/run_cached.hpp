@@ -41,8 +41,10 @@ enum class CacheOutcome {
 /// output is there (output::manifest_stale). Otherwise runs job.make() (after telling
 /// `on_remake`, if given, why a manifest that was there did not match, e.g. "scene changed");
 /// if it throws, the manifest is removed (some outputs may have been replaced; kept for an
-/// `all_or_nothing` job) and the exception goes on; if it returns outputs, writes the
-/// manifest last. Throws OutputError when the manifest cannot be written (the earlier
+/// `all_or_nothing` job) and the exception goes on; if it returns outputs, removes the files
+/// the earlier manifest listed that this run did not make (plain paths inside out_dir only,
+/// and the folders that leaves empty: out_dir holds one run's outputs, docs/outputs.md), then
+/// writes the manifest last. Throws OutputError when the manifest cannot be written (the earlier
 /// manifest, which no longer tells the truth, is then removed).
 CacheOutcome run_cached(const CachedJob& job,
                         const std::function<void(const std::string& reason)>& on_remake = {});

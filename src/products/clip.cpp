@@ -1,10 +1,7 @@
 #include "products/clip.hpp"
 
-#include <algorithm>
 #include <fstream>
-#include <set>
 #include <sstream>
-#include <thread>
 
 #include "cache/manifest_head.hpp"
 #include "clip/clip.hpp"
@@ -89,35 +86,6 @@ std::vector<fs::path> clip_outputs(const ClipJob& job, const ClipLayout& layout)
   return files;
 }
 
-/// Removes the files an earlier run listed in its manifest (`earlier`, relative to OUT) that
-/// this run (`now`) did not make, e.g. the GIF of a run with another render.formats, and the
-/// folders that leaves empty: OUT holds the outputs of one run only (docs/outputs.md). Only
-/// plain relative paths inside OUT are touched; errors are ignored (an output left behind is
-/// no longer listed, so nothing links it).
-void remove_outputs_of_earlier_run(const fs::path& out_dir, const std::vector<std::string>& earlier,
-                                   const std::vector<fs::path>& now) {
-  std::set<std::string> kept;
-  for (const fs::path& path : now) kept.insert(path.lexically_relative(out_dir).generic_string());
-  std::set<fs::path> folders;
-  for (const std::string& listed : earlier) {
-    const fs::path relative(listed);
-    if (kept.count(listed) != 0 || relative.empty() || relative.is_absolute() ||
-        relative.lexically_normal() != relative ||
-        std::find(relative.begin(), relative.end(), "..") != relative.end())
-      continue;
-    std::error_code ec;
-    const fs::path file = out_dir / relative;
-    if (!fs::is_regular_file(fs::symlink_status(file, ec)) || !fs::remove(file, ec)) continue;
-    for (fs::path folder = relative.parent_path(); !folder.empty(); folder = folder.parent_path())
-      folders.insert(folder);
-  }
-  // Deepest first: a folder's subfolders go before it.
-  for (auto it = folders.rbegin(); it != folders.rend(); ++it) {
-    std::error_code ec;
-    if (fs::is_empty(out_dir / *it, ec) && !ec) fs::remove(out_dir / *it, ec);
-  }
-}
-
 }  // namespace
 
 ClipLayout clip_layout(const fs::path& out_dir, const scene::Scene& scene) {
@@ -166,6 +134,7 @@ std::string clip_manifest_head(const ClipJob& job) {
 
 ClipOutcome make_clip(const ClipJob& job) {
   const ClipLayout layout = clip_layout(job.out_dir, job.scene);
+  const clip::ClipRequest request = clip_request(job);
   const CachedOutputs cached{
       job.scene.name,         layout.manifest, clip_manifest_head(job), job.out_dir, &job.scene,
       /*all_or_nothing=*/true};
@@ -175,13 +144,10 @@ ClipOutcome make_clip(const ClipJob& job) {
         // Stopped between frames (result.signal) or while the encoders finished
         // (Interrupted); every output of the run is put in place together, or
         // none (clip::render_clip).
-        const std::vector<std::string> earlier = output::manifest_outputs(layout.manifest);
-        done.result = clip::render_clip(clip_request(job));
+        done.result = clip::render_clip(request);
         if (done.result.signal != 0) return std::nullopt;
         done.warnings = divergence_warnings(job.scene.name, done.result);
-        Made made{clip_outputs(job, layout), warnings_json(done.warnings)};
-        remove_outputs_of_earlier_run(job.out_dir, earlier, made.outputs);
-        return made;
+        return Made{clip_outputs(job, layout), warnings_json(done.warnings)};
       });
   done.outcome = cached_outcome.outcome;
   if (cached_outcome.signal != 0)

@@ -127,5 +127,54 @@ TEST(RunCached, AllOrNothingKeepsTheManifestOnAThrowAndDropsOneItCannotRewrite) 
   EXPECT_FALSE(std::filesystem::exists(dir / "manifest.json"));
 }
 
+// A run that makes fewer outputs than the earlier one (another format, no frames) removes the
+// files the earlier manifest listed and it did not make, and the folders that leaves empty;
+// nothing it did not list, nothing outside out_dir, and nothing when interrupted.
+TEST(RunCached, RemovesWhatTheEarlierRunListedAndThisOneDidNotMake) {
+  ScratchDir dir;
+  const std::filesystem::path out = dir / "out";
+  std::filesystem::create_directories(out / "frames" / "deep");
+  std::ofstream(dir / "outside.txt") << "not ours";
+  CachedJob job;
+  job.manifest = out / "manifest.json";
+  job.out_dir = out;
+  job.head = kHead;
+  job.make = [&out]() -> std::optional<JobOutputs> {
+    for (const char* name : {"kept.txt", "gone.gif", "frames/deep/f.png", "unlisted.txt"})
+      std::ofstream(out / name) << name;
+    return JobOutputs{"", {"kept.txt", "gone.gif", "frames/deep/f.png"}};
+  };
+  ASSERT_EQ(run_cached(job), CacheOutcome::made);
+  // A hand-edited earlier manifest may name a path outside OUT: it is never touched.
+  {
+    std::ifstream in(job.manifest);
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    const std::string outputs = "  \"outputs\": [\n";
+    ASSERT_NE(text.find(outputs), std::string::npos);
+    text.insert(text.find(outputs) + outputs.size(),
+                "    {\"path\": \"../outside.txt\", \"size\": 8, \"sha256\": \"" +
+                    std::string(64, '0') + "\"},\n");
+    std::ofstream(job.manifest) << text;
+  }
+
+  CachedJob interrupted = job;
+  interrupted.head = "  \"what\": \"two\",\n";
+  interrupted.make = []() -> std::optional<JobOutputs> { return std::nullopt; };
+  EXPECT_EQ(run_cached(interrupted), CacheOutcome::interrupted);
+  EXPECT_TRUE(std::filesystem::exists(out / "gone.gif"));  // nothing removed when interrupted
+
+  CachedJob fewer = interrupted;
+  fewer.make = [&out]() -> std::optional<JobOutputs> {
+    std::ofstream(out / "kept.txt") << "again";
+    return JobOutputs{"", {"kept.txt"}};
+  };
+  EXPECT_EQ(run_cached(fewer), CacheOutcome::made);
+  EXPECT_TRUE(std::filesystem::exists(out / "kept.txt"));
+  EXPECT_FALSE(std::filesystem::exists(out / "gone.gif"));
+  EXPECT_FALSE(std::filesystem::exists(out / "frames"));  // left empty, so removed
+  EXPECT_TRUE(std::filesystem::exists(out / "unlisted.txt"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "outside.txt"));
+}
+
 }  // namespace
 }  // namespace bookspin::cache
