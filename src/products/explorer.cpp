@@ -1,8 +1,6 @@
 #include "products/explorer.hpp"
 
-#include <iomanip>
 #include <set>
-#include <sstream>
 #include <vector>
 
 #include "cache/manifest_head.hpp"
@@ -10,35 +8,24 @@
 #include "common/text_file.hpp"
 #include "output/atomic_output.hpp"
 #include "output/data_url.hpp"
-#include "output/finite_number.hpp"
+#include "output/json_writer.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "output/sha256.hpp"
 #include "physics/presets.hpp"
 #include "render/face_images.hpp"
-#include "scene/canonical.hpp"
 
 namespace bookspin::products {
 
 namespace {
 
-/// Numbers in shortest round-trip form, checked finite (output::finite_text): the page's
-/// doubles are the same as bookspin's.
-template <typename Matrix>
-void json_numbers(std::ostream& out, const Matrix& m, std::string_view what) {
-  out << '[';
-  for (Eigen::Index i = 0; i < m.size(); ++i)
-    out << (i ? "," : "") << output::finite_text(static_cast<double>(m.data()[i]), what);
-  out << ']';
-}
-
-std::string number(double value, std::string_view what) { return output::finite_text(value, what); }
-
-void method(std::ostream& out, const physics::ModelConfig& m, const char* suffix) {
-  out << "\"model" << suffix << "\":" << scene::json_string(std::string(physics::to_string(m.kind)))
-      << ",\"integrator" << suffix
-      << "\":" << scene::json_string(std::string(physics::to_string(m.integrator)))
-      << ",\"normalize" << suffix << "\":" << (m.normalize ? "true" : "false");
+/// The members model, integrator and normalize of `m`, each name followed by `suffix` ("" for
+/// the page's first method, "2" for the one it compares with).
+void add_method(output::JsonObject& state, const physics::ModelConfig& m,
+                const std::string& suffix) {
+  state.push_back({"model" + suffix, {std::string(physics::to_string(m.kind))}});
+  state.push_back({"integrator" + suffix, {std::string(physics::to_string(m.integrator))}});
+  state.push_back({"normalize" + suffix, {m.normalize}});
 }
 
 /// `text` safe inside a <script> element: "</" cannot close it early.
@@ -59,11 +46,10 @@ std::vector<physics::ModelConfig> page_models(const scene::Scene& s) {
   return models;
 }
 
-std::string read_shell(const std::filesystem::path& shell) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(shell, ec))
-    throw InputError(shell.string() + ": the explorer page's shell is missing (web/build.sh)");
-  return read_text_file(shell, "the explorer page's shell");
+/// The entries of `m` as doubles, column by column (Eigen's order: a 3×N matrix flattened).
+template <typename Matrix>
+output::JsonValue numbers(const Matrix& m) {
+  return {std::vector<double>(m.data(), m.data() + m.size())};
 }
 
 }  // namespace
@@ -82,49 +68,47 @@ std::filesystem::path default_explorer_shell() {
   return (ec ? std::filesystem::path(".") : exe.parent_path()) / "web" / kExplorerShellName;
 }
 
-std::string explorer_scene_json(const scene::Scene& s) {
-  std::ostringstream out;
+output::JsonObject explorer_scene_data(const scene::Scene& s) {
   const std::vector<physics::ModelConfig> models = page_models(s);
   const physics::ModelConfig& first = models.front();
-  out << "{\"name\":" << scene::json_string(s.name) << ",\"title\":" << scene::json_string(s.title)
-      << ",\"description\":" << scene::json_string(s.description) << ",\"state\":{"
-      << "\"body\":" << scene::json_string(std::string(physics::to_string(s.body.shape))) << ',';
-  method(out, first, "");
-  out << ",\"damping\":" << (first.damping ? "true" : "false")
-      << ",\"k\":" << number(first.spring_constant, "explorer page: model.spring_constant")
-      << ",\"cells\":" << first.lattice_cells
-      << ",\"dt\":" << number(s.dt, "explorer page: time.dt") << ",\"axis\":\"custom\",\"w\":";
-  json_numbers(out, s.initial.omega0_body, "explorer page: initial.angular_velocity");
-  out << ",\"jiggle\":" << number(s.initial.jiggle, "explorer page: initial.jiggle")
-      << ",\"seed\":" << s.initial.seed
-      << ",\"speed\":" << number(s.dt * s.steps_per_frame * s.render.fps, "explorer page: speed")
-      << ",\"showL\":" << (s.render.show_angular_momentum ? "true" : "false")
-      << ",\"showAxes\":" << (s.render.show_body_axes ? "true" : "false");
+  output::JsonObject state{{"body", {std::string(physics::to_string(s.body.shape))}}};
+  add_method(state, first, "");
+  state.insert(state.end(), {{"damping", {first.damping}},
+                             {"k", {first.spring_constant}},
+                             {"cells", {std::int64_t{first.lattice_cells}}},
+                             {"dt", {s.dt}},
+                             {"axis", {std::string("custom")}},
+                             {"w", numbers(s.initial.omega0_body)},
+                             {"jiggle", {s.initial.jiggle}},
+                             {"seed", {static_cast<std::int64_t>(s.initial.seed)}},
+                             {"speed", {s.dt * s.steps_per_frame * s.render.fps}},
+                             {"showL", {s.render.show_angular_momentum}},
+                             {"showAxes", {s.render.show_body_axes}}});
   if (models.size() >= 2) {
     // The page compares two methods: the first tile with the last (e.g. Euler and exact).
-    out << ",\"compare\":true,";
-    method(out, models.back(), "2");
+    state.push_back({"compare", {true}});
+    add_method(state, models.back(), "2");
   }
-  out << "},\"book\":{\"size\":";
-  json_numbers(out, s.body.cage.size, "explorer page: book.size");
-  out << ",\"mass\":" << number(s.body.cage.mass, "explorer page: book.mass") << '}';
-  if (s.body.shape != physics::BodyShape::book) {
-    const physics::Body& b = s.body;
-    out << ",\"body\":{\"shape\":" << scene::json_string(std::string(physics::to_string(b.shape)))
-        << ",\"mass\":" << number(b.cage.mass, "explorer page: body.mass") << ",\"moments\":";
-    json_numbers(out, b.moments, "explorer page: body moments");
-    out << ",\"cage\":";
-    json_numbers(out, b.cage.size, "explorer page: body cage");
-    out << ",\"volume\":" << number(b.volume, "explorer page: body volume") << ",\"vertices\":";
-    json_numbers(out, b.vertices, "explorer page: body vertices");
-    out << ",\"triangles\":";
-    json_numbers(out, b.triangles, "explorer page: body triangles");
-    out << ",\"colours\":";
-    json_numbers(out, b.face_colours, "explorer page: body colours");
-    out << ",\"smooth\":" << (b.smooth ? "true" : "false") << '}';
+  const physics::Body& b = s.body;
+  output::JsonObject scene{
+      {"name", {s.name}},
+      {"title", {s.title}},
+      {"description", {s.description}},
+      {"state", {std::move(state)}},
+      {"book", {output::JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}}};
+  if (b.shape != physics::BodyShape::book) {
+    scene.push_back({"body",
+                     {output::JsonObject{{"shape", {std::string(physics::to_string(b.shape))}},
+                                         {"mass", {b.cage.mass}},
+                                         {"moments", numbers(b.moments)},
+                                         {"cage", numbers(b.cage.size)},
+                                         {"volume", {b.volume}},
+                                         {"vertices", numbers(b.vertices)},
+                                         {"triangles", numbers(b.triangles)},
+                                         {"colours", numbers(b.face_colours)},
+                                         {"smooth", {b.smooth}}}}});
   }
-  out << '}';
-  return out.str();
+  return scene;
 }
 
 ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
@@ -134,33 +118,34 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
       throw InputError(s.source.string() + ": scene.name: '" + s.name +
                        "' is the name of another scene given to the explorer");
   }
-  std::string page = read_shell(request.shell);
+  // The page's data first, as a plain value: every scene, then the book's faces.
+  output::JsonArray scenes;
+  for (const scene::Scene& s : request.scenes) {
+    scenes.push_back({explorer_scene_data(s)});
+    stop_if_asked(request.stop_signal, "explore scenes");
+  }
+  output::JsonObject book_art;
+  const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
+  for (int f = 0; f < 4; ++f) {
+    const RgbaImage image = render::generate_face_image(static_cast<render::FaceImage>(f));
+    book_art.push_back({faces[f], {output::data_url("image/png", output::encode_png(image, 6))}});
+    stop_if_asked(request.stop_signal, "explore scenes");
+  }
+
+  // Then the shell and the engines' bundle it is filled with.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(request.shell, ec))
+    throw InputError(request.shell.string() +
+                     ": the explorer page's shell is missing (web/build.sh)");
+  std::string page = read_text_file(request.shell, "the explorer page's shell");
   const auto at = page.find(kExplorerDataMarker);
   if (at == std::string::npos)
     throw InputError(request.shell.string() + ": not an explorer shell (no " +
                      std::string(kExplorerDataMarker) + " marker; web/build.sh makes one)");
-
-  std::ostringstream data;
-  data << "<script>window.BOOKSPIN_SCENES=[";
-  for (std::size_t i = 0; i < request.scenes.size(); ++i) {
-    stop_if_asked(request.stop_signal, "explore scenes");
-    data << (i ? ",\n" : "\n") << script_safe(explorer_scene_json(request.scenes[i]));
-  }
-  data << "];\nwindow.BOOKSPIN_BOOK_ART={";
-  const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
-  for (int f = 0; f < 4; ++f) {
-    stop_if_asked(request.stop_signal, "explore scenes");
-    const RgbaImage image = render::generate_face_image(static_cast<render::FaceImage>(f));
-    data << (f ? "," : "") << '"' << faces[f] << "\":\""
-         << output::data_url("image/png", output::encode_png(image, 6)) << '"';
-  }
-  data << "};</script>";
-  page.replace(at, std::string(kExplorerDataMarker).size(), data.str());
-
   const std::string engines_marker = kExplorerEnginesMarker;
   const auto engines_at = page.find(engines_marker);
+  std::string engines;
   if (!request.engines.empty()) {
-    std::error_code ec;
     if (!std::filesystem::is_regular_file(request.engines, ec))
       throw InputError(request.engines.string() +
                        ": the explorer's JavaScript engines are missing (web/build.sh writes "
@@ -168,13 +153,27 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
     if (engines_at == std::string::npos)
       throw InputError(request.shell.string() + ": this shell has no place for the engines (no " +
                        engines_marker + " marker; web/build.sh makes one)");
-    page.replace(engines_at, engines_marker.size(),
-                 "<script>" +
-                     script_safe(read_text_file(request.engines, "the explorer's engines")) +
-                     "</script>");
-  } else if (engines_at != std::string::npos) {
-    page.erase(engines_at, engines_marker.size());
+    engines = read_text_file(request.engines, "the explorer's engines");
   }
+
+  // The data goes into the shell as JSON, handed to the writer once per script variable.
+  const std::string data =
+      "<script>window.BOOKSPIN_SCENES=" +
+      script_safe(output::json_text({std::move(scenes)}, "explorer page scene",
+                                    output::JsonLayout::element_per_line)) +
+      ";\nwindow.BOOKSPIN_BOOK_ART=" +
+      script_safe(output::json_text({std::move(book_art)}, "explorer page book art")) +
+      ";</script>";
+  // Both markers found in the shell itself (never in the data), replaced the later first so
+  // that the earlier one's place stands.
+  const auto fill_engines = [&] {
+    if (engines_at == std::string::npos) return;
+    page.replace(engines_at, engines_marker.size(),
+                 engines.empty() ? std::string() : "<script>" + script_safe(engines) + "</script>");
+  };
+  if (engines_at != std::string::npos && engines_at > at) fill_engines();
+  page.replace(at, std::string(kExplorerDataMarker).size(), data);
+  if (engines_at != std::string::npos && engines_at < at) fill_engines();
 
   ExplorerPageResult result;
   result.path = explorer_page_path(request.out_dir);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/stop.hpp"
+#include "output/json_writer.hpp"
 #include "products/outcome.hpp"
 #include "scene/scene.hpp"
 
@@ -35,17 +36,18 @@ inline constexpr const char* kExplorerEnginesMarker = "<!--BOOKSPIN_ENGINES-->";
 /// explorer-engines.js in the folder of `shell`: the engines' bundle that goes with that shell.
 std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell);
 
-/// One scene as the page reads it (web/src/main.js, window.BOOKSPIN_SCENES[i]): a JSON object
-/// with name, title, description, `state` (the page's state, web/src/state.js: body, model,
-/// integrator, normalize, damping, k, cells, dt, axis "custom" with ω0 `w` (body frame,
-/// rad per time unit), jiggle, seed, speed in time units per second, the markers; a
+/// One scene as the page reads it (web/src/main.js, window.BOOKSPIN_SCENES[i]), as a plain value
+/// that output::json_text writes: a JSON object with name, title, description, `state` (the page's
+/// state, web/src/state.js: body, model, integrator, normalize, damping, k, cells, dt, axis
+/// "custom" with ω0 `w` (body frame, rad per time unit), jiggle, seed, speed in time units per
+/// second, the markers; a
 /// [[compare]] scene compares its first tile with its last, of those the page can run: the
 /// other engines' tiles are left out, docs/engines.md), `book` (size, mass) and, for
 /// other bodies, `body`: the Body itself as simulate builds it (shape, mass, principal moments
 /// about x, y, z, cage size, volume, surface 3×V principal frame flattened column by column,
 /// triangles 3×N, face colours 3×N, smooth), so that the page's physics starts from the
-/// same doubles (printed to 17 digits) and needs no mesh reader. No I/O.
-std::string explorer_scene_json(const scene::Scene& scene);
+/// same doubles (written in shortest round-trip form) and needs no mesh reader. No I/O.
+output::JsonObject explorer_scene_data(const scene::Scene& scene);
 
 struct ExplorerPageRequest {
   std::vector<scene::Scene> scenes;  ///< in the page's order; names must differ
@@ -54,8 +56,9 @@ struct ExplorerPageRequest {
   /// none, and the page offers bookspin's own models only.
   std::filesystem::path engines;
   std::filesystem::path out_dir;  ///< writes OUT/explorer.html
-  /// Polled before each scene ("explore scenes") and before the page is written ("explore
-  /// write"): a signal throws Interrupted; the earlier page and its manifest stay.
+  /// Polled after each scene's data and each face image ("explore scenes") and before the page
+  /// is written ("explore write"): a signal throws Interrupted; the earlier page and its
+  /// manifest stay.
   StopPoll stop_signal;
 };
 
@@ -65,7 +68,7 @@ struct ExplorerPageResult {
 };
 
 /// Writes explorer_page_path(request.out_dir): the shell with its data marker replaced by one
-/// script that sets window.BOOKSPIN_SCENES (explorer_scene_json of each scene) and
+/// script that sets window.BOOKSPIN_SCENES (explorer_scene_data of each scene, one a line) and
 /// window.BOOKSPIN_BOOK_ART (the book's four default face images, render::generate_face_image, as
 /// PNG data: URLs); the engines' marker replaced by request.engines as one script (it sets
 /// window.BOOKSPIN_ENGINES) or, without engines, by nothing. Throws InputError when two scenes

@@ -86,24 +86,6 @@ void add_render(Members& m, const RenderOptions& r, const std::filesystem::path&
 
 }  // namespace
 
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (u < 0x20) {
-      char buffer[8];
-      std::snprintf(buffer, sizeof buffer, "\\u%04x", u);
-      out += buffer;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 std::string canonical_json(const Scene& s, int indent) {
   Members m;
   m.emplace_back("scene.name", json_string(s.name));

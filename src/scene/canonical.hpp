@@ -5,6 +5,7 @@
 // spelling (1.0 vs 1) or keys set to their default value give the same text.
 #include <string>
 
+#include "common/json_string.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::scene {
@@ -21,7 +22,8 @@ namespace bookspin::scene {
 /// time.frames it gives.
 std::string canonical_json(const Scene& scene, int indent = 4);
 
-/// `text` as a JSON string literal, quotes included (", \ and control characters escaped).
-std::string json_string(const std::string& text);
+/// The JSON string escaper the canonical form uses (common/json_string.hpp), under the name its
+/// callers in the manifests know it by.
+using bookspin::json_string;
 
 }  // namespace bookspin::scene

@@ -15,6 +15,11 @@ bool has(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
+/// One scene's data as the page reads it.
+std::string explorer_scene_json(const scene::Scene& scene) {
+  return output::json_text({explorer_scene_data(scene)}, "test scene");
+}
+
 TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {
   const std::string engines_only =
       explorer_scene_json(scene::parse_scene_text("[[compare]]\nlabel = \"exact\"\nmodel.kind = "
@@ -38,6 +43,26 @@ TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {
   const std::string alone =
       explorer_scene_json(scene::parse_scene_text("[model]\nkind = \"ode\"\n", "test.toml", {}));
   EXPECT_TRUE(has(alone, "\"model\":\"exact\"")) << alone;
+}
+
+// A book scene whose every number is given, as the page reads it: the text written out by hand
+// from the scene file (speed = dt × steps_per_frame × fps = 0.5 × 2 × 25 time units per second).
+TEST(ExplorerSceneJson, ABookSceneIsTheTextThePageReads) {
+  const std::string json = explorer_scene_json(scene::parse_scene_text(
+      "[scene]\nname = \"b\"\ntitle = \"A \\\"book\\\"\"\ndescription = \"x</script>\"\n"
+      "[model]\nkind = \"rigid-quaternion\"\nintegrator = \"rk4\"\nnormalize = true\n"
+      "damping = false\nspring_constant = 2.5\n"
+      "[book]\nsize = [1.5, 2, 0.25]\nmass = 3\n"
+      "[initial]\nangular_velocity = [0.1, -2, 0]\njiggle = 0.001\nseed = 9223372036854775807\n"
+      "[time]\ndt = 0.5\nsteps_per_frame = 2\n[render]\nfps = 25\nshow_body_axes = true\n",
+      "test.toml", {}));
+  EXPECT_EQ(json,
+            "{\"name\":\"b\",\"title\":\"A \\\"book\\\"\",\"description\":\"x</script>\","
+            "\"state\":{\"body\":\"book\",\"model\":\"rigid-quaternion\",\"integrator\":\"rk4\","
+            "\"normalize\":true,\"damping\":false,\"k\":2.5,\"cells\":0,\"dt\":0.5,"
+            "\"axis\":\"custom\",\"w\":[0.1,-2,0],\"jiggle\":0.001,\"seed\":9223372036854775807,"
+            "\"speed\":25,\"showL\":false,\"showAxes\":true},"
+            "\"book\":{\"size\":[1.5,2,0.25],\"mass\":3}}");
 }
 
 }  // namespace

@@ -1,0 +1,13 @@
+#pragma once
+// The one JSON string escaper, for every stage that writes JSON: the canonical scene and the
+// manifests (scene/canonical.hpp, cache/), and the JSON writer of the outputs
+// (output/json_writer.hpp).
+#include <string>
+
+namespace bookspin {
+
+/// `text` as a JSON string literal, quotes included (", \ and control characters escaped; the
+/// bytes of any other character, UTF-8 included, are kept).
+std::string json_string(const std::string& text);
+
+}  // namespace bookspin

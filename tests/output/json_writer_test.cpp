@@ -1,0 +1,72 @@
+// The JSON writer (output/json_writer.hpp): texts written out by hand, the escaping of the one
+// escaper (common/json_string.hpp), and the finiteness check naming where the number sits.
+#include "output/json_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "common/errors.hpp"
+
+namespace bookspin::output {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// The InternalError message of `f()`, or "" when it does not throw one.
+template <typename F>
+std::string internal_error_of(F f) {
+  try {
+    f();
+  } catch (const InternalError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(JsonWriter, WritesEveryKindOfValueCompactlyInTheOrderGiven) {
+  const JsonObject inner{{"w", {std::vector<double>{0.1, -2.0, 1e-7}}}, {"n", {std::int64_t{-42}}}};
+  const JsonValue value{JsonObject{{"name", {std::string("book")}},
+                                   {"on", {true}},
+                                   {"off", {false}},
+                                   {"dt", {1.0 / 60.0}},
+                                   {"seed", {std::int64_t{9223372036854775807}}},
+                                   {"list", {JsonArray{{1.5}, {std::string("x")}, {JsonArray{}}}}},
+                                   {"inner", {inner}},
+                                   {"empty", {JsonObject{}}}}};
+  // Written out by hand: 1/60 in shortest round-trip form is 0.016666666666666666 (17 digits).
+  EXPECT_EQ(json_text(value, "test"),
+            "{\"name\":\"book\",\"on\":true,\"off\":false,\"dt\":0.016666666666666666,"
+            "\"seed\":9223372036854775807,\"list\":[1.5,\"x\",[]],"
+            "\"inner\":{\"w\":[0.1,-2,1e-07],\"n\":-42},\"empty\":{}}");
+}
+
+TEST(JsonWriter, EscapesKeysAndStringsWithTheOneEscaper) {
+  const JsonValue value{JsonObject{{"a\"b", {std::string("back\\slash\nline\x01 \xc3\xa9")}}}};
+  EXPECT_EQ(json_text(value, "test"), "{\"a\\\"b\":\"back\\\\slash\\u000aline\\u0001 \xc3\xa9\"}");
+}
+
+TEST(JsonWriter, ElementPerLinePutsEachElementOfTheTopArrayOnItsOwnLine) {
+  const JsonValue list{JsonArray{{JsonObject{{"a", {1.0}}}}, {JsonArray{{2.0}, {3.0}}}}};
+  EXPECT_EQ(json_text(list, "test", JsonLayout::element_per_line), "[\n{\"a\":1},\n[2,3]]");
+  EXPECT_EQ(json_text(list, "test"), "[{\"a\":1},[2,3]]");
+  EXPECT_EQ(json_text({JsonArray{}}, "test", JsonLayout::element_per_line), "[]");
+  // Only an array has elements: anything else is written as it is.
+  EXPECT_EQ(json_text({2.5}, "test", JsonLayout::element_per_line), "2.5");
+}
+
+TEST(JsonWriter, NonFiniteNumberIsAnInternalErrorNamingItsPlace) {
+  const JsonValue scenes{JsonArray{{JsonObject{{"state", {JsonObject{{"dt", {0.5}}}}}}},
+                                   {JsonObject{{"state", {JsonObject{{"dt", {kNan}}}}}}}}};
+  EXPECT_EQ(internal_error_of([&] { json_text(scenes, "page scene"); }),
+            "non-finite page scene [1].state.dt in an output: nan");
+  const JsonValue body{JsonObject{{"vertices", {std::vector<double>{0.0, -kInf}}}}};
+  EXPECT_EQ(internal_error_of([&] { json_text(body, "page"); }),
+            "non-finite page vertices in an output: -inf");
+  EXPECT_EQ(internal_error_of([&] { json_text({kInf}, "page"); }),
+            "non-finite page in an output: inf");
+}
+
+}  // namespace
+}  // namespace bookspin::output
