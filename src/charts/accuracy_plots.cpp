@@ -1,12 +1,6 @@
 #include "charts/accuracy_plots.hpp"
 
-#include <cerrno>
 #include <cstdio>
-#include <fstream>
-
-#include "output/atomic_output.hpp"
-#include "output/finite_number.hpp"
-#include "output/png_writer.hpp"
 
 namespace bookspin::charts {
 
@@ -14,34 +8,6 @@ namespace {
 
 bool same_method(const analysis::Method& a, const analysis::Method& b) {
   return a.kind == b.kind && a.integrator == b.integrator;
-}
-
-void write_energy_csv(const std::filesystem::path& path,
-                      const std::vector<analysis::EnergyHistory>& histories) {
-  output::AtomicTextFile file(path);
-  std::ostream& out = file.stream();
-  out << "t";
-  for (const auto& h : histories) out << ',' << method_label(h.method);
-  out << '\n';
-  const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
-  for (std::size_t i = 0; i < rows; ++i) {
-    char cell[64];
-    std::snprintf(cell, sizeof cell, "%.9g",
-                  output::finite(histories.front().t[i], "energy CSV t"));
-    out << cell;
-    for (const auto& h : histories) {
-      // A diverged run's history is shorter: its missing windows stay empty.
-      if (i < h.relative_error.size()) {
-        std::snprintf(cell, sizeof cell, ",%.6e",
-                      output::finite(h.relative_error[i], "energy CSV relative error"));
-        out << cell;
-      } else {
-        out << ',';
-      }
-    }
-    out << '\n';
-  }
-  file.commit();
 }
 
 }  // namespace
@@ -163,43 +129,12 @@ overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistor
   return spec;
 }
 
-std::vector<std::filesystem::path> write_accuracy_plots(
-    const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
-    const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows,
-    const std::vector<analysis::Method>& methods, const StopPoll& stop) {
-  // Every history first: a stop while they run leaves every file as it was.
-  std::vector<analysis::Method> long_time = analysis::rigid_methods();
-  if (methods.size() != analysis::accuracy_methods().size()) {
-    long_time.clear();
-    for (const auto& m : methods)
-      if (m.kind != physics::ModelKind::particle) long_time.push_back(m);
-  }
-  std::vector<analysis::EnergyHistory> histories;
-  for (const auto& method : long_time) {
-    stop_if_asked(stop, "accuracy energy");
-    histories.push_back(analysis::energy_history(settings, exact, method, kLongTimeDt,
-                                                 kLongTimeFlips, kLongTimeWindows,
-                                                 stop_predicate(stop, "accuracy energy steps")));
-    stop_if_asked(stop, "accuracy energy");
-  }
-  std::vector<std::filesystem::path> written;
-  const auto& work_png = paths.work_precision_png;
-  output::write_png(work_png,
-                    overlay::plot_image(work_precision_plot(rows, settings.flips), 1400, 900));
-  written.push_back(work_png);
-  output::write_png(
-      paths.energy_vs_dt_png,
-      overlay::plot_image(energy_vs_dt_plot(rows, methods, settings.flips), 1400, 900));
-  written.push_back(paths.energy_vs_dt_png);
-
-  const auto& energy_png = paths.energy_png;
-  const auto& energy_csv = paths.energy_csv;
-  write_energy_csv(energy_csv, histories);
-  output::write_png(
-      energy_png, overlay::plot_image(long_time_energy_plot(histories, kLongTimeFlips), 1400, 900));
-  written.push_back(energy_png);
-  written.push_back(energy_csv);
-  return written;
+AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
+                             const std::vector<analysis::Method>& methods, double flips,
+                             const std::vector<analysis::EnergyHistory>& histories,
+                             double history_flips) {
+  return {orientation_error_vs_dt_plot(rows, methods, flips), work_precision_plot(rows, flips),
+          energy_vs_dt_plot(rows, methods, flips), long_time_energy_plot(histories, history_flips)};
 }
 
 }  // namespace bookspin::charts

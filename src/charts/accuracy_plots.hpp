@@ -1,12 +1,11 @@
 #pragma once
-// The plots of `bookspin accuracy` beyond error-vs-dt: the work–precision diagram and the
-// long-time energy plot (docs/physics.md §10).
-#include <filesystem>
+// The plots of `bookspin accuracy` (docs/physics.md §10): error and energy error against dt, the
+// work–precision diagram and the long-time energy plot, as plot specs; the jobs stage measures
+// and writes them (jobs/accuracy_report.hpp).
 #include <string>
 #include <vector>
 
 #include "analysis/accuracy.hpp"
-#include "common/stop.hpp"
 #include "overlay/plot.hpp"
 
 namespace bookspin::charts {
@@ -41,30 +40,19 @@ overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& ro
 overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistory>& histories,
                                         double flips);
 
-/// The settings of the long-time energy plot: every rigid method at dt = 1/60 over 100 flip
-/// periods, in 400 windows.
-inline constexpr double kLongTimeFlips = 100.0;
-inline constexpr double kLongTimeDt = 1.0 / 60.0;
-inline constexpr int kLongTimeWindows = 400;
-
-/// Where write_accuracy_plots() writes (the accuracy product names them).
-struct AccuracyPlotPaths {
-  std::filesystem::path work_precision_png;  ///< error against cost, from the rows
-  std::filesystem::path energy_vs_dt_png;    ///< energy error against dt, from the rows
-  std::filesystem::path energy_png;          ///< the long-time energy plot
-  std::filesystem::path energy_csv;          ///< its data: t, one column per method
+/// The report's four plots, from what it measured.
+struct AccuracyPlots {
+  overlay::PlotSpec orientation_error_vs_dt;  ///< orientation_error_vs_dt_plot
+  overlay::PlotSpec work_precision;           ///< work_precision_plot
+  overlay::PlotSpec energy_vs_dt;             ///< energy_vs_dt_plot
+  overlay::PlotSpec long_time_energy;         ///< long_time_energy_plot
 };
 
-/// Runs the long-time energy histories, then writes the work–precision plot and the energy
-/// error against dt (from `rows`, one line per method of `methods`), the energy plot and its
-/// CSV. The long-time histories are those of analysis::rigid_methods() when `methods` is every
-/// method (analysis::accuracy_methods()), else of every method of `methods` but the particle
-/// model's. Returns the paths written. `stop` is polled around each history ("accuracy
-/// energy") and inside it ("accuracy energy steps"): a signal throws Interrupted before any
-/// file is written. Throws OutputError when a file cannot be written.
-std::vector<std::filesystem::path> write_accuracy_plots(
-    const AccuracyPlotPaths& paths, const analysis::AccuracySettings& settings,
-    const physics::ExactRotation& exact, const std::vector<analysis::AccuracyRow>& rows,
-    const std::vector<analysis::Method>& methods, const StopPoll& stop = {});
+/// The four plots of a report: `rows` (one line per method of `methods`, runs of `flips` exact
+/// flip periods) and the long-time energy `histories` (runs of `history_flips` periods). No I/O.
+AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
+                             const std::vector<analysis::Method>& methods, double flips,
+                             const std::vector<analysis::EnergyHistory>& histories,
+                             double history_flips);
 
 }  // namespace bookspin::charts

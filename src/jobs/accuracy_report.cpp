@@ -1,12 +1,13 @@
 #include "jobs/accuracy_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "charts/accuracy_plots.hpp"
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
-#include "output/finite_number.hpp"
+#include "output/csv_writer.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "overlay/plot.hpp"
@@ -15,30 +16,49 @@ namespace bookspin::jobs {
 
 namespace {
 
-/// `value` in printf `format`, checked finite (output/finite_number.hpp); or "" (an empty
-/// cell) when `empty`: no orientation error after a divergence, no flip period where fewer
-/// than two flips were seen (docs/outputs.md, "Numbers").
-std::string cell(const char* format, double value, const char* column, bool empty = false) {
-  if (empty) return "";
-  char text[64];
-  std::snprintf(text, sizeof text, format,
-                output::finite(value, std::string("accuracy CSV column ") + column));
-  return text;
+/// The accuracy CSV as a table, one row per method and dt. A cell is empty where there is no
+/// value: no orientation error after a divergence, no flip period where fewer than two flips
+/// were seen, no first flip where none was (docs/outputs.md, "Numbers").
+output::CsvTable accuracy_table(const std::vector<analysis::AccuracyRow>& rows) {
+  const auto unless = [](bool empty, double value) {
+    return empty ? std::optional<double>() : std::optional<double>(value);
+  };
+  output::CsvTable table{accuracy_csv_columns(), {}};
+  for (const auto& r : rows) {
+    const bool no_flips = std::isnan(r.flip_period);
+    table.rows.push_back(
+        {std::string(physics::to_string(r.method.kind)),
+         std::string(physics::to_string(r.method.integrator)), output::CsvNumber{r.dt},
+         std::to_string(r.steps), output::CsvNumber{r.t_end},
+         output::CsvNumber{unless(r.diverged, r.orientation_error), "%.6e"},
+         output::CsvNumber{r.energy_drift, "%.6e"}, output::CsvNumber{r.L_drift, "%.6e"},
+         output::CsvNumber{unless(no_flips, r.flip_period)},
+         output::CsvNumber{unless(no_flips, r.flip_period_error), "%.6e"},
+         output::CsvNumber{r.ns_per_step, "%.2f"}, std::string(r.diverged ? "1" : "0"),
+         output::CsvNumber{unless(std::isnan(r.first_flip), r.first_flip)},
+         output::CsvNumber{unless(std::isnan(r.first_flip_error), r.first_flip_error), "%.6e"},
+         std::to_string(r.flips), std::to_string(r.flips_exact)});
+  }
+  return table;
 }
 
-std::string csv_line(const analysis::AccuracyRow& r) {
-  const bool no_flips = std::isnan(r.flip_period);
-  return std::string(physics::to_string(r.method.kind)) + "," +
-         std::string(physics::to_string(r.method.integrator)) + "," + cell("%.17g", r.dt, "dt") +
-         "," + std::to_string(r.steps) + "," + cell("%.17g", r.t_end, "t_end") + "," +
-         cell("%.6e", r.orientation_error, "orientation_error_rad", r.diverged) + "," +
-         cell("%.6e", r.energy_drift, "energy_drift") + "," + cell("%.6e", r.L_drift, "L_drift") +
-         "," + cell("%.17g", r.flip_period, "flip_period", no_flips) + "," +
-         cell("%.6e", r.flip_period_error, "flip_period_error", no_flips) + "," +
-         cell("%.2f", r.ns_per_step, "ns_per_step") + "," + (r.diverged ? "1" : "0") + "," +
-         cell("%.17g", r.first_flip, "first_flip", std::isnan(r.first_flip)) + "," +
-         cell("%.6e", r.first_flip_error, "first_flip_error", std::isnan(r.first_flip_error)) +
-         "," + std::to_string(r.flips) + "," + std::to_string(r.flips_exact);
+/// The long-time energy CSV as a table: t, then one column per history
+/// (charts::method_label); a diverged run's history is shorter, and its missing windows stay
+/// empty.
+output::CsvTable energy_table(const std::vector<analysis::EnergyHistory>& histories) {
+  output::CsvTable table{{"t"}, {}};
+  for (const auto& h : histories) table.columns.push_back(charts::method_label(h.method));
+  const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
+  for (std::size_t i = 0; i < rows; ++i) {
+    std::vector<output::CsvCell> row{output::CsvNumber{histories.front().t[i], "%.9g"}};
+    for (const auto& h : histories)
+      row.push_back(output::CsvNumber{i < h.relative_error.size()
+                                          ? std::optional<double>(h.relative_error[i])
+                                          : std::optional<double>(),
+                                      "%.6e"});
+    table.rows.push_back(std::move(row));
+  }
+  return table;
 }
 
 std::string table_row(const analysis::AccuracyRow& r) {
@@ -57,16 +77,6 @@ std::string table_row(const analysis::AccuracyRow& r) {
                 r.ns_per_step, r.diverged ? "  diverged" : "",
                 r.divergence_reason.empty() ? "" : (": " + r.divergence_reason).c_str());
   return line;
-}
-
-void write_csv(const std::filesystem::path& path, const std::vector<analysis::AccuracyRow>& rows) {
-  output::AtomicTextFile file(path);
-  std::ostream& out = file.stream();
-  const auto& columns = accuracy_csv_columns();
-  for (std::size_t i = 0; i < columns.size(); ++i) out << (i > 0 ? "," : "") << columns[i];
-  out << '\n';
-  for (const auto& r : rows) out << csv_line(r) << '\n';
-  file.commit();
 }
 
 }  // namespace
@@ -111,7 +121,20 @@ const std::vector<std::string>& accuracy_csv_columns() {
   return columns;
 }
 
-std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) {
+std::vector<analysis::Method> long_time_methods(const std::vector<analysis::Method>& methods) {
+  const auto same = [](const analysis::Method& a, const analysis::Method& b) {
+    return a.kind == b.kind && a.integrator == b.integrator;
+  };
+  const std::vector<analysis::Method> every = analysis::accuracy_methods();
+  if (std::equal(methods.begin(), methods.end(), every.begin(), every.end(), same))
+    return analysis::rigid_methods();
+  std::vector<analysis::Method> long_time;
+  for (const auto& m : methods)
+    if (m.kind != physics::ModelKind::particle) long_time.push_back(m);
+  return long_time;
+}
+
+AccuracyReport measure_accuracy(const AccuracyRequest& request) {
   const scene::Scene& scene = request.scene;
   const auto say = [&](const std::string& line) {
     if (request.on_line) request.on_line(line);
@@ -126,30 +149,53 @@ std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) 
                 "dt", "orient. err", "energy drift", "|L| drift", "flip T err", "1st flip err",
                 "flips/exact", "ns/step");
   say(header);
-  const std::vector<analysis::Method> methods =
-      request.methods.empty() ? analysis::accuracy_methods() : request.methods;
-  std::vector<analysis::AccuracyRow> rows;
-  for (const auto& method : methods) {
+  AccuracyReport report;
+  report.flips = request.flips;
+  report.methods = request.methods.empty() ? analysis::accuracy_methods() : request.methods;
+  const std::vector<analysis::Method> long_time = long_time_methods(report.methods);
+  for (const auto& method : report.methods) {
     for (double dt : request.dts) {
       stop_if_asked(request.stop_signal, "accuracy runs");
-      rows.push_back(analysis::measure(settings, exact, method, dt,
-                                       stop_predicate(request.stop_signal, "accuracy steps")));
+      report.rows.push_back(analysis::measure(
+          settings, exact, method, dt, stop_predicate(request.stop_signal, "accuracy steps")));
       stop_if_asked(request.stop_signal, "accuracy runs");  // the row of a stopped run is cut
-      say(table_row(rows.back()));
+      say(table_row(report.rows.back()));
     }
   }
-  const AccuracyPaths& paths = request.paths;
+  for (const auto& method : long_time) {
+    stop_if_asked(request.stop_signal, "accuracy energy");
+    report.energy.push_back(analysis::energy_history(
+        settings, exact, method, kLongTimeDt, kLongTimeFlips, kLongTimeWindows,
+        stop_predicate(request.stop_signal, "accuracy energy steps")));
+    stop_if_asked(request.stop_signal, "accuracy energy");
+  }
+  return report;
+}
+
+std::vector<std::filesystem::path> write_accuracy_report(const AccuracyPaths& paths,
+                                                         const AccuracyReport& report) {
+  // The report's two tables and four plots first, then its files.
+  const output::CsvTable accuracy = accuracy_table(report.rows);
+  const output::CsvTable energy = energy_table(report.energy);
+  const charts::AccuracyPlots plots = charts::accuracy_plots(
+      report.rows, report.methods, report.flips, report.energy, kLongTimeFlips);
+  const auto image = [](const overlay::PlotSpec& spec) {
+    return overlay::plot_image(spec, 1400, 900);
+  };
   output::prepare_output_dir(paths.csv.parent_path());
-  // The plots run the long-time histories (a stop there writes nothing), then every file.
-  const std::vector<std::filesystem::path> plots = charts::write_accuracy_plots(
-      paths.plots, settings, exact, rows, methods, request.stop_signal);
-  std::vector<std::filesystem::path> written{paths.csv, paths.png};
-  write_csv(written[0], rows);
-  output::write_png(written[1], overlay::plot_image(charts::orientation_error_vs_dt_plot(
-                                                        rows, methods, request.flips),
-                                                    1400, 900));
-  written.insert(written.end(), plots.begin(), plots.end());
-  return written;
+  output::write_text_file(paths.csv, output::csv_text(accuracy, "accuracy CSV"));
+  output::write_png(paths.png, image(plots.orientation_error_vs_dt));
+  output::write_png(paths.work_precision_png, image(plots.work_precision));
+  output::write_png(paths.energy_vs_dt_png, image(plots.energy_vs_dt));
+  output::write_png(paths.energy_png, image(plots.long_time_energy));
+  output::write_text_file(paths.energy_csv, output::csv_text(energy, "energy CSV"));
+  return {paths.csv,        paths.png,       paths.work_precision_png, paths.energy_vs_dt_png,
+          paths.energy_png, paths.energy_csv};
+}
+
+std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request) {
+  const AccuracyReport report = measure_accuracy(request);
+  return write_accuracy_report(request.paths, report);
 }
 
 }  // namespace bookspin::jobs

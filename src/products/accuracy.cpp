@@ -9,20 +9,14 @@
 namespace bookspin::products {
 
 std::vector<std::filesystem::path> AccuracyLayout::outputs() const {
-  return {report.csv,
-          report.png,
-          report.plots.work_precision_png,
-          report.plots.energy_vs_dt_png,
-          report.plots.energy_png,
-          report.plots.energy_csv};
+  return {report.csv,        report.png,       report.work_precision_png, report.energy_vs_dt_png,
+          report.energy_png, report.energy_csv};
 }
 
 AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene::Scene& scene) {
   const auto file = [&](const char* suffix) { return out_dir / (scene.name + suffix); };
-  return {{file("-accuracy.csv"),
-           file("-accuracy.png"),
-           {file("-work-precision.png"), file("-energy-vs-dt.png"), file("-energy.png"),
-            file("-energy.csv")}},
+  return {{file("-accuracy.csv"), file("-accuracy.png"), file("-work-precision.png"),
+           file("-energy-vs-dt.png"), file("-energy.png"), file("-energy.csv")},
           out_dir / scene.name / "accuracy-manifest.json"};
 }
 
@@ -45,12 +39,14 @@ std::string accuracy_manifest_head(const AccuracyJob& job) {
 }
 
 Outcome make_accuracy(const AccuracyJob& job) {
+  const auto on_remake = remake_note_for(job.on_remake, job.request.scene.name + "-accuracy");
   const AccuracyLayout layout = accuracy_layout(job.out_dir, job.request.scene);
+  const std::string head = accuracy_manifest_head(job);
   jobs::AccuracyRequest request = job.request;
   request.paths = layout.report;
   int signal = 0;
   const Outcome outcome = cache::run_cached(
-      {layout.manifest, accuracy_manifest_head(job), job.out_dir, job.force, job.verify,
+      {layout.manifest, head, job.out_dir, job.force, job.verify,
        [&] {
          return unless_interrupted(signal, [&]() -> std::optional<cache::JobOutputs> {
            cache::JobOutputs made{cache::manifest_note(request.scene), {}};
@@ -59,7 +55,7 @@ Outcome make_accuracy(const AccuracyJob& job) {
            return made;
          });
        }},
-      remake_note_for(job.on_remake, request.scene.name + "-accuracy"));
+      on_remake);
   if (signal != 0) throw Interrupted(signal);  // the earlier report and its manifest untouched
   return outcome;
 }

@@ -40,8 +40,9 @@ struct AccuracyJob {
 /// scene). Throws InputError.
 std::string accuracy_manifest_head(const AccuracyJob& job);
 
-/// Runs the report (jobs::run_accuracy) into the accuracy layout unless its manifest says it
-/// is up to date, then writes the manifest. Same errors as jobs::run_accuracy.
+/// Runs the report (jobs::run_accuracy: measured, then written) into the accuracy layout unless
+/// its manifest says it is up to date, then writes the manifest. Same errors as
+/// jobs::run_accuracy.
 Outcome make_accuracy(const AccuracyJob& job);
 
 }  // namespace bookspin::products

@@ -196,12 +196,10 @@ TEST(CsvColumnList, EveryEnergyColumnHasAnIndependentCheck) {
       "energy.toml");
   request.flips = 1.0;
   request.dts = {0.1};
-  request.paths = {
-      dir / "accuracy.csv",
-      dir / "accuracy.png",
-      {dir / "work.png", dir / "energy-vs-dt.png", dir / "energy.png", dir / "energy.csv"}};
+  request.paths = {dir / "accuracy.csv",     dir / "accuracy.png", dir / "work.png",
+                   dir / "energy-vs-dt.png", dir / "energy.png",   dir / "energy.csv"};
   jobs::run_accuracy(request);
-  std::ifstream energy(request.paths.plots.energy_csv);
+  std::ifstream energy(request.paths.energy_csv);
   std::string header;
   std::getline(energy, header);
   expect_listed(split(header), kEnergyColumns, "energy CSV");

@@ -379,10 +379,9 @@ TEST(CsvColumns, AccuracyAndEnergyCsvRowsMatchTheReplayAndTheClosedForm) {
       "accuracy.toml");
   request.flips = 2.0;
   request.dts = {0.05, 0.1};
-  request.paths = {dir.path() / "accuracy.csv",
-                   dir.path() / "accuracy.png",
-                   {dir.path() / "work.png", dir.path() / "energy-vs-dt.png",
-                    dir.path() / "energy.png", dir.path() / "energy.csv"}};
+  request.paths = {dir.path() / "accuracy.csv", dir.path() / "accuracy.png",
+                   dir.path() / "work.png",     dir.path() / "energy-vs-dt.png",
+                   dir.path() / "energy.png",   dir.path() / "energy.csv"};
   run_accuracy(request);
   const scene::Scene& s = request.scene;
   const ClosedFormFlips exact = closed_form_flips(s.body.moments, omega);
@@ -444,7 +443,7 @@ TEST(CsvColumns, AccuracyAndEnergyCsvRowsMatchTheReplayAndTheClosedForm) {
 
   // The energy CSV: t at the end of each of the 400 windows of 100 flip periods at
   // dt = 1/60, and per rigid method the largest |E/E0 − 1| in each window.
-  const Csv energy = read_csv(request.paths.plots.energy_csv);
+  const Csv energy = read_csv(request.paths.energy_csv);
   const double dt = 1.0 / 60.0;
   const long steps = std::lround(100 * exact.half_period / dt);
   const long per_window = std::max(1L, steps / 400);
