@@ -4,26 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include <limits>
-
-#include "common/errors.hpp"
+#include "internal_error_of.hpp"
 
 namespace bookspin::output {
 namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// The InternalError message of `f()`, or "" when it does not throw one.
-template <typename F>
-std::string internal_error_of(F f) {
-  try {
-    f();
-  } catch (const InternalError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(CsvWriter, WritesTheHeaderThenEachRowInItsCellsFormats) {
   const CsvTable table{{"model", "dt", "error", "cost", "flips"},

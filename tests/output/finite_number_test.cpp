@@ -5,27 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 
-#include "common/errors.hpp"
+#include "internal_error_of.hpp"
 #include "output/diagnostics_csv.hpp"
 
 namespace bookspin::output {
 namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// The InternalError message of `f()`, or "" when it does not throw one.
-template <typename F>
-std::string internal_error_of(F f) {
-  try {
-    f();
-  } catch (const InternalError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(FiniteNumber, PassesFiniteNumbersInShortestRoundTripForm) {
   EXPECT_EQ(finite(0.1, "x"), 0.1);

@@ -4,26 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include <limits>
-
-#include "common/errors.hpp"
+#include "internal_error_of.hpp"
 
 namespace bookspin::output {
 namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// The InternalError message of `f()`, or "" when it does not throw one.
-template <typename F>
-std::string internal_error_of(F f) {
-  try {
-    f();
-  } catch (const InternalError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(JsonWriter, WritesEveryKindOfValueCompactlyInTheOrderGiven) {
   const JsonObject inner{{"w", {std::vector<double>{0.1, -2.0, 1e-7}}}, {"n", {std::int64_t{-42}}}};
