@@ -26,18 +26,24 @@ output::CsvTable accuracy_table(const std::vector<analysis::AccuracyRow>& rows) 
   output::CsvTable table{accuracy_csv_columns(), {}};
   for (const auto& r : rows) {
     const bool no_flips = std::isnan(r.flip_period);
-    table.rows.push_back(
-        {std::string(physics::to_string(r.method.kind)),
-         std::string(physics::to_string(r.method.integrator)), output::CsvNumber{r.dt},
-         std::to_string(r.steps), output::CsvNumber{r.t_end},
-         output::CsvNumber{unless(r.diverged, r.orientation_error), "%.6e"},
-         output::CsvNumber{r.energy_drift, "%.6e"}, output::CsvNumber{r.L_drift, "%.6e"},
-         output::CsvNumber{unless(no_flips, r.flip_period)},
-         output::CsvNumber{unless(no_flips, r.flip_period_error), "%.6e"},
-         output::CsvNumber{r.ns_per_step, "%.2f"}, std::string(r.diverged ? "1" : "0"),
-         output::CsvNumber{unless(std::isnan(r.first_flip), r.first_flip)},
-         output::CsvNumber{unless(std::isnan(r.first_flip_error), r.first_flip_error), "%.6e"},
-         std::to_string(r.flips), std::to_string(r.flips_exact)});
+    table.rows.push_back({
+        std::string(physics::to_string(r.method.kind)),
+        std::string(physics::to_string(r.method.integrator)),
+        output::CsvNumber{r.dt},
+        std::to_string(r.steps),
+        output::CsvNumber{r.t_end},
+        output::CsvNumber{unless(r.diverged, r.orientation_error), "%.6e"},
+        output::CsvNumber{r.energy_drift, "%.6e"},
+        output::CsvNumber{r.L_drift, "%.6e"},
+        output::CsvNumber{unless(no_flips, r.flip_period)},
+        output::CsvNumber{unless(no_flips, r.flip_period_error), "%.6e"},
+        output::CsvNumber{r.ns_per_step, "%.2f"},
+        std::string(r.diverged ? "1" : "0"),
+        output::CsvNumber{unless(std::isnan(r.first_flip), r.first_flip)},
+        output::CsvNumber{unless(std::isnan(r.first_flip_error), r.first_flip_error), "%.6e"},
+        std::to_string(r.flips),
+        std::to_string(r.flips_exact),
+    });
   }
   return table;
 }
