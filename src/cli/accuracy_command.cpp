@@ -20,9 +20,7 @@ int accuracy_command(const AccuracyOptions& options) {
   };
   job.request.stop_signal = stop_poll();
   job.out_dir = options.out_dir;
-  job.force = options.force;
-  job.verify = options.verify;
-  job.on_remake = remake_note;
+  job.freshness = {options.force, options.verify, remake_note};
   const products::Outcome outcome = products::make_accuracy(job);
   if (outcome == products::Outcome::up_to_date)
     std::printf("up to date: %s-accuracy\n", job.request.scene.name.c_str());

@@ -39,25 +39,16 @@ std::string accuracy_manifest_head(const AccuracyJob& job) {
 }
 
 Outcome make_accuracy(const AccuracyJob& job) {
-  const auto on_remake = remake_note_for(job.on_remake, job.request.scene.name + "-accuracy");
   const AccuracyLayout layout = accuracy_layout(job.out_dir, job.request.scene);
-  const std::string head = accuracy_manifest_head(job);
   jobs::AccuracyRequest request = job.request;
   request.paths = layout.report;
-  int signal = 0;
-  const Outcome outcome = cache::run_cached(
-      {layout.manifest, head, job.out_dir, job.force, job.verify,
-       [&] {
-         return unless_interrupted(signal, [&]() -> std::optional<cache::JobOutputs> {
-           cache::JobOutputs made{cache::manifest_note(request.scene), {}};
-           for (const auto& path : jobs::run_accuracy(request))
-             made.outputs.push_back(path.lexically_relative(job.out_dir).generic_string());
-           return made;
-         });
-       }},
-      on_remake);
-  if (signal != 0) throw Interrupted(signal);  // the earlier report and its manifest untouched
-  return outcome;
+  const CachedOutputs cached{request.scene.name + "-accuracy", layout.manifest,
+                             accuracy_manifest_head(job), job.out_dir, &request.scene};
+  const CachedOutcome done = make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
+    return Made{jobs::run_accuracy(request)};
+  });
+  if (done.signal != 0) throw Interrupted(done.signal);  // the earlier report and manifest stay
+  return done.outcome;
 }
 
 }  // namespace bookspin::products

@@ -31,9 +31,7 @@ AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene
 struct AccuracyJob {
   jobs::AccuracyRequest request;  ///< everything but request.paths
   std::filesystem::path out_dir;
-  bool force = false;    ///< measure even when the manifest says up to date
-  bool verify = false;   ///< the up-to-date check hashes the outputs
-  RemakeNote on_remake;  ///< why a manifest did not match (may be empty)
+  Freshness freshness;  ///< --force (measure even when up to date), --verify, the remake note
 };
 
 /// The manifest head of `job` ("accuracy", the flips, the dt list and the methods, the

@@ -202,16 +202,14 @@ ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
       "  \"scenes\": \"sha256:" + output::sha256_text(scenes) + "\",\n";
   ExplorerOutcome done;
   done.result.path = explorer_page_path(request.out_dir);
-  int signal = 0;
-  done.outcome = cache::run_cached(
-      {explorer_manifest_path(request.out_dir), head, request.out_dir, false, false, [&] {
-         return unless_interrupted(signal, [&] {
-           done.result = write_explorer_page(request);
-           return cache::JobOutputs{
-               "", {done.result.path.lexically_relative(request.out_dir).generic_string()}};
-         });
-       }});
-  if (signal != 0) throw Interrupted(signal);  // the earlier page and manifest untouched
+  const CachedOutputs cached{"explorer.html", explorer_manifest_path(request.out_dir), head,
+                             request.out_dir};
+  const CachedOutcome made = make_cached(cached, {}, [&]() -> std::optional<Made> {
+    done.result = write_explorer_page(request);
+    return Made{{done.result.path}};
+  });
+  if (made.signal != 0) throw Interrupted(made.signal);  // the earlier page and manifest untouched
+  done.outcome = made.outcome;
   return done;
 }
 
