@@ -52,6 +52,40 @@ output::JsonValue numbers(const Matrix& m) {
   return {std::vector<double>(m.data(), m.data() + m.size())};
 }
 
+/// The page's shell (web/build.sh) and the engines' bundle that fills its engines marker.
+struct Shell {
+  std::string page;                            ///< the shell's bytes
+  std::size_t data_at = std::string::npos;     ///< where kExplorerDataMarker stands
+  std::size_t engines_at = std::string::npos;  ///< where kExplorerEnginesMarker stands, if it does
+  std::string engines;                         ///< the engines' bundle; empty: none asked for
+};
+
+/// request.shell and request.engines read and checked. Throws InputError naming the file (see
+/// write_explorer_page).
+Shell read_shell(const ExplorerPageRequest& request) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(request.shell, ec))
+    throw InputError(request.shell.string() +
+                     ": the explorer page's shell is missing (web/build.sh)");
+  Shell shell;
+  shell.page = read_text_file(request.shell, "the explorer page's shell");
+  shell.data_at = shell.page.find(kExplorerDataMarker);
+  if (shell.data_at == std::string::npos)
+    throw InputError(request.shell.string() + ": not an explorer shell (no " +
+                     std::string(kExplorerDataMarker) + " marker; web/build.sh makes one)");
+  shell.engines_at = shell.page.find(kExplorerEnginesMarker);
+  if (request.engines.empty()) return shell;
+  if (!std::filesystem::is_regular_file(request.engines, ec))
+    throw InputError(request.engines.string() +
+                     ": the explorer's JavaScript engines are missing (web/build.sh writes "
+                     "them beside the shell)");
+  if (shell.engines_at == std::string::npos)
+    throw InputError(request.shell.string() + ": this shell has no place for the engines (no " +
+                     std::string(kExplorerEnginesMarker) + " marker; web/build.sh makes one)");
+  shell.engines = read_text_file(request.engines, "the explorer's engines");
+  return shell;
+}
+
 }  // namespace
 
 std::filesystem::path explorer_page_path(const std::filesystem::path& out_dir) {
@@ -118,42 +152,20 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
       throw InputError(s.source.string() + ": scene.name: '" + s.name +
                        "' is the name of another scene given to the explorer");
   }
-  // The page's data first, as a plain value: every scene, then the book's faces.
+  Shell shell = read_shell(request);  // checked before any work
+
+  // The page's data, as a plain value: every scene, then the book's faces.
   output::JsonArray scenes;
   for (const scene::Scene& s : request.scenes) {
-    scenes.push_back({explorer_scene_data(s)});
     stop_if_asked(request.stop_signal, "explore scenes");
+    scenes.push_back({explorer_scene_data(s)});
   }
   output::JsonObject book_art;
   const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
   for (int f = 0; f < 4; ++f) {
+    stop_if_asked(request.stop_signal, "explore scenes");
     const RgbaImage image = render::generate_face_image(static_cast<render::FaceImage>(f));
     book_art.push_back({faces[f], {output::data_url("image/png", output::encode_png(image, 6))}});
-    stop_if_asked(request.stop_signal, "explore scenes");
-  }
-
-  // Then the shell and the engines' bundle it is filled with.
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(request.shell, ec))
-    throw InputError(request.shell.string() +
-                     ": the explorer page's shell is missing (web/build.sh)");
-  std::string page = read_text_file(request.shell, "the explorer page's shell");
-  const auto at = page.find(kExplorerDataMarker);
-  if (at == std::string::npos)
-    throw InputError(request.shell.string() + ": not an explorer shell (no " +
-                     std::string(kExplorerDataMarker) + " marker; web/build.sh makes one)");
-  const std::string engines_marker = kExplorerEnginesMarker;
-  const auto engines_at = page.find(engines_marker);
-  std::string engines;
-  if (!request.engines.empty()) {
-    if (!std::filesystem::is_regular_file(request.engines, ec))
-      throw InputError(request.engines.string() +
-                       ": the explorer's JavaScript engines are missing (web/build.sh writes "
-                       "them beside the shell)");
-    if (engines_at == std::string::npos)
-      throw InputError(request.shell.string() + ": this shell has no place for the engines (no " +
-                       engines_marker + " marker; web/build.sh makes one)");
-    engines = read_text_file(request.engines, "the explorer's engines");
   }
 
   // The data goes into the shell as JSON, handed to the writer once per script variable.
@@ -164,16 +176,19 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
       ";\nwindow.BOOKSPIN_BOOK_ART=" +
       script_safe(output::json_text({std::move(book_art)}, "explorer page book art")) +
       ";</script>";
-  // Both markers found in the shell itself (never in the data), replaced the later first so
-  // that the earlier one's place stands.
+  // Both markers were found in the shell itself (never in the data): the later is replaced
+  // first, so that the earlier one's place stands.
+  std::string page = std::move(shell.page);
+  const std::string engines_marker = kExplorerEnginesMarker;
   const auto fill_engines = [&] {
-    if (engines_at == std::string::npos) return;
-    page.replace(engines_at, engines_marker.size(),
-                 engines.empty() ? std::string() : "<script>" + script_safe(engines) + "</script>");
+    if (shell.engines_at == std::string::npos) return;
+    page.replace(shell.engines_at, engines_marker.size(),
+                 shell.engines.empty() ? std::string()
+                                       : "<script>" + script_safe(shell.engines) + "</script>");
   };
-  if (engines_at != std::string::npos && engines_at > at) fill_engines();
-  page.replace(at, std::string(kExplorerDataMarker).size(), data);
-  if (engines_at != std::string::npos && engines_at < at) fill_engines();
+  if (shell.engines_at != std::string::npos && shell.engines_at > shell.data_at) fill_engines();
+  page.replace(shell.data_at, std::string(kExplorerDataMarker).size(), data);
+  if (shell.engines_at != std::string::npos && shell.engines_at < shell.data_at) fill_engines();
 
   ExplorerPageResult result;
   result.path = explorer_page_path(request.out_dir);

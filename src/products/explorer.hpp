@@ -56,9 +56,9 @@ struct ExplorerPageRequest {
   /// none, and the page offers bookspin's own models only.
   std::filesystem::path engines;
   std::filesystem::path out_dir;  ///< writes OUT/explorer.html
-  /// Polled after each scene's data and each face image ("explore scenes") and before the page
-  /// is written ("explore write"): a signal throws Interrupted; the earlier page and its
-  /// manifest stay.
+  /// Polled before each scene and each face image ("explore scenes") and before the page is
+  /// written ("explore write"): a signal throws Interrupted; the earlier page and its manifest
+  /// stay.
   StopPoll stop_signal;
 };
 
