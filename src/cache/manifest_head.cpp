@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/json_string.hpp"
 #include "output/manifest.hpp"
 #include "output/sha256.hpp"
 #include "scene/canonical.hpp"
@@ -34,7 +35,7 @@ std::string inputs_json(const scene::Scene& scene) {
   std::ostringstream out;
   out << "  \"inputs\": {";
   for (std::size_t i = 0; i < files.size(); ++i) {
-    out << (i == 0 ? "\n" : ",\n") << "    " << scene::json_string(files[i].first) << ": "
+    out << (i == 0 ? "\n" : ",\n") << "    " << json_string(files[i].first) << ": "
         << hash_of(files[i].first, files[i].second);
   }
   out << (files.empty() ? "},\n" : "\n  },\n");
@@ -62,8 +63,8 @@ std::string manifest_head(const std::string& command, const std::string& options
                           const scene::Scene& scene) {
   std::ostringstream out;
   out << "  \"manifest\": 1,\n"
-      << "  \"command\": " << scene::json_string(command) << ",\n"
-      << "  \"bookspin\": {\"version\": " << scene::json_string(output::program_version())
+      << "  \"command\": " << json_string(command) << ",\n"
+      << "  \"bookspin\": {\"version\": " << json_string(output::program_version())
       << ", \"build_id\": \"sha256:" << output::program_build_id() << "\"},\n"
       << "  \"options\": {\n"
       << options << "  },\n"
@@ -78,7 +79,7 @@ std::string manifest_head(const std::string& command, const std::string& options
 std::string manifest_note(const scene::Scene& scene) {
   std::error_code ec;
   const fs::path path = fs::weakly_canonical(scene.source, ec);
-  return "  \"scene_file\": {\"path\": " + scene::json_string((ec ? scene.source : path).string()) +
+  return "  \"scene_file\": {\"path\": " + json_string((ec ? scene.source : path).string()) +
          ", \"sha256\": " + hash_of("scene", scene.source.string()) + "},\n";
 }
 

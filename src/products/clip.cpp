@@ -5,8 +5,8 @@
 
 #include "cache/manifest_head.hpp"
 #include "clip/clip.hpp"
+#include "common/json_string.hpp"
 #include "output/manifest.hpp"
-#include "scene/canonical.hpp"
 
 namespace bookspin::products {
 
@@ -39,7 +39,7 @@ std::vector<std::string> divergence_warnings(const std::string& name,
 std::string warnings_json(const std::vector<std::string>& warnings) {
   std::string json = "  \"warnings\": [";
   for (std::size_t i = 0; i < warnings.size(); ++i)
-    json.append(i == 0 ? "" : ", ").append(scene::json_string(warnings[i]));
+    json.append(i == 0 ? "" : ", ").append(json_string(warnings[i]));
   return json.append("],\n");
 }
 

@@ -2,7 +2,7 @@
 
 #include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
-#include "scene/canonical.hpp"
+#include "common/json_string.hpp"
 
 namespace bookspin::products {
 
@@ -21,10 +21,8 @@ std::function<fs::path(int, int)> shard_in(const fs::path& dir, const std::strin
 std::string sweep_options_json(const SweepJob& job) {
   std::string json = "    \"vary\": [";
   for (std::size_t i = 0; i < job.vary.size(); ++i)
-    json.append(i == 0 ? "" : ", ").append(scene::json_string(job.vary[i]));
-  return json.append("],\n    \"measures\": ")
-      .append(scene::json_string(job.measures))
-      .append("\n");
+    json.append(i == 0 ? "" : ", ").append(json_string(job.vary[i]));
+  return json.append("],\n    \"measures\": ").append(json_string(job.measures)).append("\n");
 }
 
 }  // namespace

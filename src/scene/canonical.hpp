@@ -22,8 +22,4 @@ namespace bookspin::scene {
 /// time.frames it gives.
 std::string canonical_json(const Scene& scene, int indent = 4);
 
-/// The JSON string escaper the canonical form uses (common/json_string.hpp), under the name its
-/// callers in the manifests know it by.
-using bookspin::json_string;
-
 }  // namespace bookspin::scene
