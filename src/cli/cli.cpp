@@ -1,3 +1,6 @@
+// The command line: every subcommand's options and help texts (CLI11), parsed into the
+// options structs of commands.hpp and handed to the subcommand's function; the exit status
+// of bad options (2) and of each command (run_guarded.hpp).
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
