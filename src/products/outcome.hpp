@@ -66,24 +66,4 @@ struct CachedOutcome {
 CachedOutcome make_cached(const CachedOutputs& cached, const Freshness& freshness,
                           const std::function<std::optional<Made>()>& make);
 
-/// The outputs `make()` returns, or none when a signal stopped it (Interrupted, before it put
-/// anything in place): the signal is kept in `signal`, for cache::run_cached, which then leaves
-/// the old manifest alone (a throw would make it remove the manifest).
-template <typename Make>
-std::optional<cache::JobOutputs> unless_interrupted(int& signal, const Make& make) {
-  try {
-    return make();
-  } catch (const Interrupted& stop) {
-    signal = stop.signal();
-    return std::nullopt;
-  }
-}
-
-/// `note` bound to the output called `name`, as cache::run_cached takes it (empty if `note` is).
-inline std::function<void(const std::string& reason)> remake_note_for(const RemakeNote& note,
-                                                                      const std::string& name) {
-  if (!note) return {};
-  return [note, name](const std::string& reason) { note(name, reason); };
-}
-
 }  // namespace bookspin::products
