@@ -22,32 +22,11 @@ build: configure
 bookspin: configure
 	cmake --build $(BUILD) -j $(JOBS) --target bookspin
 
-# The sweeps first, so that the one gallery render-all writes at the end shows it too
-# (GALLERY_EXTRA: scene files the gallery lists beside the rendered ones); then the explorer
-# page (web/build.sh builds its program, bookspin explore writes the scenes into it;
-# docs/explorer.md), so that the gallery links each clip to it.
+# The sweeps, the engines' accuracy report, the explorer page (where emscripten and npm are
+# installed), then every scene rendered and plotted and the gallery: scripts/figures.sh, which
+# the figures test runs with --quick.
 figures: bookspin
-	$(BUILD)/bookspin sweep sweeps/flip-time-vs-perturbation.toml \
-	  --vary 'initial.angular_velocity[1]=1e-6:1e-2:20:log' \
-	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
-	$(BUILD)/bookspin sweep sweeps/t-handle-flip-time-vs-perturbation.toml \
-	  --vary 'initial.angular_velocity[0]=1e-6:1e-2:20:log' \
-	  --measure first_flip,flip_period,energy_drift,orientation_error -o out
-	for f in sweeps/when-to-normalize*.toml; do \
-	  $(BUILD)/bookspin sweep $$f --vary 'time.dt=0.0020833333333333333:0.125:7:log' \
-	    --vary 'model.normalize_every=1:10000:9:log' \
-	    --measure orientation_error,diverged_at -o out || exit 1; \
-	done
-	$(BUILD)/bookspin sweep sweeps/tennis-racket-twist.toml \
-	  --vary 'initial.angular_velocity[0]=1e-3:3:25:log' --measure twist,flip_period -o out
-	$(BUILD)/bookspin accuracy sweeps/engines-energy-vs-dt.toml \
-	  --methods engines,rigid-quaternion:rk4,rigid-quaternion:implicit-midpoint,rigid-quaternion:splitting4 \
-	  --dt 0.03333333333333333 0.016666666666666666 0.008333333333333333 0.004 0.002 0.001 \
-	  0.0005 0.00025 -o out
-	@if command -v em++ >/dev/null && command -v npm >/dev/null; then \
-	  bash web/build.sh $(BUILD) && $(BUILD)/bookspin explore $(SCENES) $(SWEEPS) -o out; \
-	else echo "figures: no emscripten or npm: out/explorer.html not made (scripts/install-deps.sh)"; fi
-	@GALLERY_EXTRA="$(SWEEPS)" bash scripts/render-all.sh $(BUILD)/bookspin out $(SCENES)
+	bash scripts/figures.sh $(BUILD) out
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

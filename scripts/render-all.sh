@@ -8,7 +8,8 @@
 # in OUT_DIR/.logs/summary.tsv. Each render's own output goes to OUT_DIR/.logs/<scene>.log,
 # its CPU time and peak memory (GNU time) to OUT_DIR/.logs/<scene>.time. Stops with a non-zero status if any
 # scene fails. GALLERY_EXTRA (environment): more scene files the gallery lists (the sweeps,
-# run before).
+# run before); RENDER_ARGS and PLOT_ARGS: more arguments for every render and every plot
+# (scripts/figures.sh --quick: a few small frames).
 #
 # How the cores are shared: one render keeps about two cores busy even with --jobs 1 (the
 # simulation and GL on one thread, llvmpipe's rasterizer, the encoder and a PNG worker
@@ -18,6 +19,7 @@
 # workers alike). On the 2-core reference machine two scenes at --jobs 1 finished 7% sooner
 # than one after the other at --jobs 2.
 set -euo pipefail
+RENDER_ARGS=${RENDER_ARGS:-} PLOT_ARGS=${PLOT_ARGS:-}
 bookspin=$1 out=$2
 shift 2
 cores=$(nproc)
@@ -49,8 +51,9 @@ render_one() {
   stem=$(basename "$scene" .toml)
   log="$logs/$stem.log"
   t0=$(date +%s.%N)
+  # shellcheck disable=SC2086  # RENDER_ARGS: words, split
   /usr/bin/time -f '%U %S %M' -o "$logs/$stem.time" \
-    "$bookspin" render "$scene" -o "$out" --jobs "$jobs" > "$log" 2>&1 || rc=$?
+    "$bookspin" render "$scene" -o "$out" --jobs "$jobs" ${RENDER_ARGS:-} > "$log" 2>&1 || rc=$?
   seconds=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }')
   # The last line: GNU time puts "Command exited with non-zero status" before it on a failure.
   read -r cpu peak < <(tail -n 1 "$logs/$stem.time" |
@@ -82,7 +85,7 @@ render_one() {
   } 9> "$logs/lock"
 }
 export -f render_one diverged
-export bookspin out jobs logs
+export bookspin out jobs logs RENDER_ARGS PLOT_ARGS
 
 printf '%s\n' "$@" | xargs -P "$parallel" -I{} bash -c 'render_one "$1" "$2"' _ {} "$#"
 
@@ -94,7 +97,7 @@ done
 failed=0
 echo "render-all: plotting"
 printf '%s\n' "${ok[@]}" |
-  xargs -P "$cores" -I{} sh -c '"$0" plot "$1" -o "$2" > /dev/null' "$bookspin" {} "$out" ||
+  xargs -P "$cores" -I{} sh -c '"$0" plot "$1" -o "$2" ${PLOT_ARGS:-} > /dev/null' "$bookspin" {} "$out" ||
   { echo "render-all: some plots failed"; failed=1; }
 # shellcheck disable=SC2086  # GALLERY_EXTRA: more scene files for the page (sweeps), split
 "$bookspin" gallery "$out" "${ok[@]}" ${GALLERY_EXTRA:-} || { echo "render-all: the gallery failed"; failed=1; }

@@ -11,6 +11,7 @@
 #include "output/manifest.hpp"
 #include "output/output_dir.hpp"
 #include "output/sha256.hpp"
+#include "products/accuracy.hpp"
 #include "products/clip.hpp"
 #include "products/explorer.hpp"
 #include "products/gallery_page.hpp"
@@ -104,6 +105,13 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   const jobs::SweepPaths sweep = sweep_paths(out, scene.name);
   e.sweep = if_there(out, sweep.png);
   e.sweep_csv = if_there(out, sweep.csv);
+  const AccuracyLayout accuracy = accuracy_layout(out, scene);
+  const Listed reported(out, accuracy.manifest);
+  for (const fs::path& file : accuracy.outputs()) {
+    const std::string there = reported(file);
+    if (there.empty()) continue;
+    (file.extension() == ".png" ? e.report_charts : e.report_csvs).push_back(there);
+  }
   for (const fs::path& csv : clip.csvs) {
     if (const std::string there = rendered(csv); !there.empty()) e.csvs.push_back(there);
   }

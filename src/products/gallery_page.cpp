@@ -40,7 +40,7 @@ void write_media(std::ostream& out, const GalleryEntry& e) {
     out << "></video>\n";
   } else if (!e.poster.empty()) {
     out << "<img src=" << attr(e.poster) << " alt=\"frame of " << html_escape(e.title) << "\">\n";
-  } else if (e.sweep.empty()) {
+  } else if (e.sweep.empty() && e.report_charts.empty()) {
     out << "<p class=\"missing\">not rendered yet (no " << html_escape(e.name) << ".mp4)</p>\n";
   }
   if (!e.plot.empty()) {
@@ -52,6 +52,10 @@ void write_media(std::ostream& out, const GalleryEntry& e) {
     out << "<a href=" << attr(e.sweep)
         << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.sweep)
         << " alt=\"parameter sweep of " << html_escape(e.title) << "\"></a>\n";
+  }
+  for (const auto& chart : e.report_charts) {
+    out << "<a href=" << attr(chart) << "><img class=\"plot\" loading=\"lazy\" src=" << attr(chart)
+        << " alt=\"accuracy report of " << html_escape(e.title) << "\"></a>\n";
   }
   out << "</div>\n";
 }
@@ -69,6 +73,8 @@ void write_entry(std::ostream& out, const GalleryEntry& e) {
   if (!e.explorer.empty()) out << " · <a href=" << attr(e.explorer) << ">open in the explorer</a>";
   if (!e.sweep_csv.empty())
     out << " · <a href=" << attr(e.sweep_csv) << ">" << html_escape(e.sweep_csv) << "</a>";
+  for (const auto& csv : e.report_csvs)
+    out << " · <a href=" << attr(csv) << ">" << html_escape(csv) << "</a>";
   for (const auto& csv : e.csvs) {
     const std::string file = csv.substr(csv.rfind('/') + 1);  // npos + 1 = 0: the whole path
     out << " · <a href=" << attr(csv) << ">" << html_escape(file) << "</a>";

@@ -19,10 +19,15 @@ struct GalleryEntry {
   /// "explorer.html?scene=<name>" where OUT/explorer.html exists (`bookspin explore`, which
   /// carries every body, meshes included); else empty.
   std::string explorer;
-  std::string poster;             ///< a frame PNG shown before the clip plays
-  std::string plot;               ///< "<name>-plot.png"
-  std::string sweep;              ///< "<name>-sweep.png" (`bookspin sweep`)
-  std::string sweep_csv;          ///< "<name>-sweep.csv"
+  std::string poster;     ///< a frame PNG shown before the clip plays
+  std::string plot;       ///< "<name>-plot.png"
+  std::string sweep;      ///< "<name>-sweep.png" (`bookspin sweep`)
+  std::string sweep_csv;  ///< "<name>-sweep.csv"
+  /// The accuracy report's charts (`bookspin accuracy`: "<name>-accuracy.png",
+  /// "<name>-work-precision.png", …) and its tables ("<name>-accuracy.csv", …), as its
+  /// manifest lists them.
+  std::vector<std::string> report_charts;
+  std::vector<std::string> report_csvs;
   std::vector<std::string> csvs;  ///< diagnostics CSVs
 };
 

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Every figure of `make figures` into OUT: the sweeps, the engines' accuracy report, the explorer
+# page (where emscripten and npm are installed), then every scene rendered and plotted and the
+# gallery OUT/index.html (scripts/render-all.sh), in that order, so that the one gallery written
+# at the end shows them all (docs/outputs.md).
+#
+# Usage: scripts/figures.sh BUILD_DIR OUT [--quick]
+#   --quick: the same commands on the same scenes and sweeps, each made small (a few frames at
+#   160×96, three points per swept key, two time steps, one flip): what the figures test
+#   (tests/figures/) runs to check the page `make figures` writes, in about a minute.
+set -euo pipefail
+[ $# -ge 2 ] && [ $# -le 3 ] || { echo "usage: scripts/figures.sh BUILD_DIR OUT [--quick]" >&2; exit 2; }
+build=$1 out=$2 quick=${3:-}
+[ -z "$quick" ] || [ "$quick" = --quick ] || { echo "figures: unknown option $quick" >&2; exit 2; }
+root="$(cd "$(dirname "$0")/.." && pwd)"
+bookspin="$build/bookspin"
+cd "$root"
+
+# The swept points: full, or three per key with --quick.
+points() { if [ -n "$quick" ]; then echo 3; else echo "$1"; fi; }
+frames=() duration=()
+dts=(0.03333333333333333 0.016666666666666666 0.008333333333333333 0.004 0.002 0.001 0.0005 0.00025)
+flips=()
+if [ -n "$quick" ]; then
+  frames=(--set time.frames=4) duration=(--set time.duration=2)
+  dts=(0.03333333333333333 0.016666666666666666)
+  flips=(--flips 1)
+  export RENDER_ARGS='--frames 3 --set render.width=160 --set render.height=96 --set render.preset="ultrafast"'
+  export PLOT_ARGS='--set time.frames=3 --width 640 --height 400'
+fi
+
+"$bookspin" sweep sweeps/flip-time-vs-perturbation.toml "${frames[@]}" \
+  --vary "initial.angular_velocity[1]=1e-6:1e-2:$(points 20):log" \
+  --measure first_flip,flip_period,energy_drift,orientation_error -o "$out"
+"$bookspin" sweep sweeps/t-handle-flip-time-vs-perturbation.toml "${frames[@]}" \
+  --vary "initial.angular_velocity[0]=1e-6:1e-2:$(points 20):log" \
+  --measure first_flip,flip_period,energy_drift,orientation_error -o "$out"
+for f in sweeps/when-to-normalize*.toml; do
+  "$bookspin" sweep "$f" "${duration[@]}" --vary "time.dt=0.0020833333333333333:0.125:$(points 7):log" \
+    --vary "model.normalize_every=1:10000:$(points 9):log" \
+    --measure orientation_error,diverged_at -o "$out"
+done
+"$bookspin" sweep sweeps/tennis-racket-twist.toml "${duration[@]}" \
+  --vary "initial.angular_velocity[0]=1e-3:3:$(points 25):log" --measure twist,flip_period -o "$out"
+"$bookspin" accuracy sweeps/engines-energy-vs-dt.toml "${flips[@]}" \
+  --methods engines,rigid-quaternion:rk4,rigid-quaternion:implicit-midpoint,rigid-quaternion:splitting4 \
+  --dt "${dts[@]}" -o "$out"
+if command -v em++ >/dev/null && command -v npm >/dev/null; then
+  bash web/build.sh "$build" && "$bookspin" explore scenes/*.toml sweeps/*.toml -o "$out"
+else
+  echo "figures: no emscripten or npm: $out/explorer.html not made (scripts/install-deps.sh)"
+fi
+GALLERY_EXTRA="$(echo sweeps/*.toml)" bash scripts/render-all.sh "$bookspin" "$out" scenes/*.toml
