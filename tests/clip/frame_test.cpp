@@ -16,10 +16,10 @@ namespace {
 // The exact model spun about the book's largest axis (z, its thickness) alone: a steady
 // rotation, so at time t the corners are the rest corners turned by angle ω t about z.
 TEST(Frame, FrameKShowsTheSteadySpinAtItsTime) {
-  const scene::Scene scene = scene::parse_scene_text(
-      "[scene]\ntitle = \"A test\"\n", "frame_test.toml",
-      {"model.kind=\"exact\"", "initial.angular_velocity=[0.0, 0.0, 0.5]", "time.dt=0.01",
-       "time.steps_per_frame=10", "time.frames=40"});
+  const scene::Scene scene =
+      scene::parse_scene_text("[scene]\ntitle = \"A test\"\n", "frame_test.toml",
+                              {"model.kind=\"exact\"", "initial.angular_velocity=[0.0, 0.0, 0.5]",
+                               "time.dt=0.01", "time.steps_per_frame=10", "time.frames=40"});
   const ShownFrame frame = simulate_to(scene, 30);
   EXPECT_NEAR(frame.t, 3.0, 1e-12);  // 30 frames × 10 steps × 0.01
   EXPECT_FALSE(frame.diverged_at.has_value());
@@ -34,8 +34,8 @@ TEST(Frame, FrameKShowsTheSteadySpinAtItsTime) {
 }
 
 TEST(Frame, AFrameOutsideTheClipIsOutOfRange) {
-  const scene::Scene scene =
-      scene::parse_scene_text("[scene]\ntitle = \"A test\"\n", "frame_test.toml", {"time.frames=5", "scene.name=\"five\""});
+  const scene::Scene scene = scene::parse_scene_text(
+      "[scene]\ntitle = \"A test\"\n", "frame_test.toml", {"time.frames=5", "scene.name=\"five\""});
   EXPECT_NO_THROW(simulate_to(scene, 4));
   EXPECT_THROW(simulate_to(scene, 5), std::out_of_range);
   EXPECT_THROW(simulate_to(scene, -1), std::out_of_range);

@@ -14,7 +14,8 @@ namespace bookspin::clip {
 namespace {
 
 scene::Scene scene_with(const std::vector<std::string>& overrides) {
-  return scene::parse_scene_text("[scene]\ntitle = \"A test\"\n", "render_settings_test.toml", overrides);
+  return scene::parse_scene_text("[scene]\ntitle = \"A test\"\n", "render_settings_test.toml",
+                                 overrides);
 }
 
 /// Where the world point `p` lands in normalized device x (−1 left edge … 1 right edge) of a
@@ -42,7 +43,8 @@ TEST(RenderSettings, TheScenesRenderKeysAreTheRenderersSettings) {
   EXPECT_FLOAT_EQ(s.max_anisotropy, 8.0f);
   EXPECT_EQ(s.msaa_samples, 2);
   EXPECT_TRUE(s.textures.front.empty());  // no texture: the generated covers
-  const render::RenderSettings axes = render_settings_for(scene_with({"render.show_body_axes=true"}));
+  const render::RenderSettings axes =
+      render_settings_for(scene_with({"render.show_body_axes=true"}));
   EXPECT_FALSE(axes.show_angular_momentum);
   EXPECT_TRUE(axes.show_body_axes);
   EXPECT_EQ(axes.msaa_samples, 4);
