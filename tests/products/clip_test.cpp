@@ -78,9 +78,9 @@ TEST(ClipProduct, UpToDateItDrawsNothingAndRepeatsTheRecordedWarnings) {
   const ClipOutcome done = make_clip(job);
   EXPECT_EQ(done.outcome, Outcome::up_to_date);
   EXPECT_EQ(done.result.frames, 0);  // nothing rendered
-  EXPECT_EQ(done.warnings, (std::vector<std::string>{
-                               "tiny: simulation diverged at t = 1.5; the \"held\" frame",
-                               "back\\slash"}));
+  EXPECT_EQ(done.warnings,
+            (std::vector<std::string>{"tiny: simulation diverged at t = 1.5; the \"held\" frame",
+                                      "back\\slash"}));
 }
 
 }  // namespace

@@ -13,8 +13,7 @@ namespace bookspin::products {
 namespace {
 
 TEST(GalleryPage, EscapesTitlesAndAttributes) {
-  EXPECT_EQ(html_escape("a <b> & \"c\" 'd'"),
-            "a &lt;b&gt; &amp; &quot;c&quot; &#39;d&#39;");
+  EXPECT_EQ(html_escape("a <b> & \"c\" 'd'"), "a &lt;b&gt; &amp; &quot;c&quot; &#39;d&#39;");
   GalleryEntry e;
   e.name = "x";
   e.title = "<script>alert(1)</script>";
@@ -63,7 +62,7 @@ TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
 
 TEST(GalleryPage, HeaderSaysWhatAndHowItWasMade) {
   const GalleryHeader header{"1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC",
-                                       "host <x>, Some CPU, 2 cores"};
+                             "host <x>, Some CPU, 2 cores"};
   const std::string html = gallery_html({}, header);
   EXPECT_NE(html.find("figures 3–12 first"), std::string::npos) << html;
   EXPECT_NE(html.find("bookspin 1.2.3 (build aaaaaaaaaaaa)"), std::string::npos) << html;
@@ -77,8 +76,9 @@ TEST(GalleryPage, AnEntryWithoutAClipSaysNotRenderedYetUnlessItHasASweepOrAFrame
   GalleryEntry bare;
   bare.name = "fig03";
   bare.title = "Figure 3";
-  EXPECT_NE(gallery_html({bare}, {}).find("<p class=\"missing\">not rendered yet (no fig03.mp4)</p>"),
-            std::string::npos);
+  EXPECT_NE(
+      gallery_html({bare}, {}).find("<p class=\"missing\">not rendered yet (no fig03.mp4)</p>"),
+      std::string::npos);
   GalleryEntry sweep = bare;
   sweep.sweep = "fig03-sweep.png";
   const std::string with_sweep = gallery_html({sweep}, {});
@@ -90,8 +90,9 @@ TEST(GalleryPage, AnEntryWithoutAClipSaysNotRenderedYetUnlessItHasASweepOrAFrame
   poster.poster = "fig03/frames/frame_00001.png";
   const std::string with_poster = gallery_html({poster}, {});
   EXPECT_EQ(with_poster.find("not rendered yet"), std::string::npos);
-  EXPECT_NE(with_poster.find("<img src=\"fig03/frames/frame_00001.png\" alt=\"frame of Figure 3\">"),
-            std::string::npos)
+  EXPECT_NE(
+      with_poster.find("<img src=\"fig03/frames/frame_00001.png\" alt=\"frame of Figure 3\">"),
+      std::string::npos)
       << with_poster;
   GalleryEntry clip = poster;
   clip.video = clip.mp4 = "fig03.mp4";

@@ -41,10 +41,10 @@ TEST(Gallery, LinksOnlyWhatTheManifestsListAndExists) {
   std::ofstream(dir / "scenes" / "bare.toml") << "[scene]\ntitle = \"Nothing yet\"\n";
   // The clip's last render: the MP4, three frames and the CSV. A GIF and a fourth frame from
   // an earlier run are there but not listed.
-  for (const char* file : {"demo.mp4", "demo.gif", "demo/frames/frame_00000.png",
-                           "demo/frames/frame_00001.png", "demo/frames/frame_00002.png",
-                           "demo/frames/frame_00003.png", "demo/diagnostics.csv", "demo.glb",
-                           "demo-plot.png", "demo-sweep.png", "demo-sweep.csv"})
+  for (const char* file :
+       {"demo.mp4", "demo.gif", "demo/frames/frame_00000.png", "demo/frames/frame_00001.png",
+        "demo/frames/frame_00002.png", "demo/frames/frame_00003.png", "demo/diagnostics.csv",
+        "demo.glb", "demo-plot.png", "demo-sweep.png", "demo-sweep.csv"})
     touch(out / file);
   list_in_manifest(out, out / "demo" / "manifest.json",
                    {"demo.mp4", "demo/frames/frame_00000.png", "demo/frames/frame_00001.png",
@@ -63,8 +63,7 @@ TEST(Gallery, LinksOnlyWhatTheManifestsListAndExists) {
   for (const char* linked :
        {"src=\"demo.mp4\"", "poster=\"demo/frames/frame_00001.png\"", "href=\"demo.mp4\">MP4</a>",
         "href=\"demo.glb\">glTF</a>", "href=\"demo/diagnostics.csv\"", "src=\"demo-sweep.png\"",
-        "href=\"demo-sweep.csv\"", "<h2>Demo &lt;1&gt;</h2>",
-        "not rendered yet (no bare.mp4)"})
+        "href=\"demo-sweep.csv\"", "<h2>Demo &lt;1&gt;</h2>", "not rendered yet (no bare.mp4)"})
     EXPECT_NE(html.find(linked), std::string::npos) << linked << '\n' << html;
   for (const char* unlisted : {"demo.gif", "demo-plot.png", "frame_00003.png", "demo.webm"})
     EXPECT_EQ(html.find(unlisted), std::string::npos) << unlisted << '\n' << html;

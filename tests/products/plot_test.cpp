@@ -37,7 +37,8 @@ TEST(Plot, TheHeadNamesTheCommandAndTheImageSize) {
   EXPECT_NE(head.find("\"options\": {\n    \"width\": 320,\n    \"height\": 200\n  }"),
             std::string::npos)
       << head;
-  EXPECT_NE(head.find("\"scene.name\": \"tiny\""), std::string::npos) << head;  // the resolved scene
+  EXPECT_NE(head.find("\"scene.name\": \"tiny\""), std::string::npos)
+      << head;  // the resolved scene
 }
 
 TEST(Plot, WritesThePngOfTheSizeAndItsManifestThenIsUpToDate) {
