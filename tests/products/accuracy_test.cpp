@@ -21,8 +21,8 @@ namespace {
 namespace fs = std::filesystem;
 
 AccuracyJob quaternion_rk4(const test::ScratchDir& dir) {
-  fs::copy_file(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "exact-unstable-x.toml",
-                dir / "x.toml", fs::copy_options::overwrite_existing);
+  fs::copy_file(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "exact-unstable-x.toml", dir / "x.toml",
+                fs::copy_options::overwrite_existing);
   AccuracyJob job;
   job.request.scene = scene::parse_scene(dir / "x.toml", {"scene.name=\"x\""});
   job.request.flips = 1.5;
@@ -52,7 +52,7 @@ TEST(Accuracy, AReportWritesItsSixFilesAndManifestThenIsUpToDate) {
   test::ScratchDir dir;
   const AccuracyJob job = quaternion_rk4(dir);
   EXPECT_EQ(make_accuracy(job), Outcome::made);
-  const std::vector<std::string> files{"x-accuracy.csv",      "x-accuracy.png",
+  const std::vector<std::string> files{"x-accuracy.csv",       "x-accuracy.png",
                                        "x-work-precision.png", "x-energy-vs-dt.png",
                                        "x-energy.png",         "x-energy.csv"};
   for (const std::string& file : files)
