@@ -101,8 +101,7 @@ void write_surface_looks(const std::filesystem::path& dir) {
        turn * shear},
       {"torus_flat", &torus, testing::topology_of(torus.triangles, checker, false), turn},
       {"torus_smooth", &torus, testing::topology_of(torus.triangles, checker, true), turn},
-      {"torus_shaken_smooth", &shaken, testing::topology_of(torus.triangles, checker, true),
-       turn},
+      {"torus_shaken_smooth", &shaken, testing::topology_of(torus.triangles, checker, true), turn},
       {"coarse_flat", &coarse, testing::topology_of(coarse.triangles, grey, false), turn},
       {"coarse_smooth", &coarse, testing::topology_of(coarse.triangles, grey, true), turn},
   };
