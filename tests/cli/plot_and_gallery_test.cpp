@@ -1,10 +1,10 @@
-// `bookspin plot` and `bookspin gallery`.
+// `bookspin plot` and `bookspin gallery` (the page's text alone:
+// tests/products/gallery_page_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cctype>
 
 #include "output/png_writer.hpp"
-#include "products/gallery_page.hpp"
 #include "support/cli_runner.hpp"
 
 namespace bookspin::cli {
@@ -37,65 +37,6 @@ TEST(PlotCommand, BadSceneExitsTwoAndWritesNothing) {
                                    " --set time.dt=-1 -o " + out.string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_TRUE(fs::is_empty(out));
-}
-
-TEST(GalleryPage, EscapesTitlesAndAttributes) {
-  EXPECT_EQ(products::html_escape("a <b> & \"c\" 'd'"),
-            "a &lt;b&gt; &amp; &quot;c&quot; &#39;d&#39;");
-  products::GalleryEntry e;
-  e.name = "x";
-  e.title = "<script>alert(1)</script>";
-  const std::string html = products::gallery_html({e}, {});
-  EXPECT_EQ(html.find("<script>"), std::string::npos);
-  EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
-}
-
-TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
-  struct Scene {
-    std::string name;
-    bool comparison = false, exact = false, sweep = false;
-  };
-  const std::vector<Scene> given{{"sweep-dt"},
-                                 {"compare-methods-x", true},
-                                 {"fig12-quaternion-pulsating-z"},
-                                 {"mesh-teapot"},
-                                 {"exact-unstable-x", false, true},
-                                 {"fig03-particle-stable-z"},
-                                 {"tennis-racket", false, true},
-                                 {"fig10-matrix-no-normalization"},
-                                 {"many-methods", true},
-                                 {"fig9-short"},
-                                 {"aaa-body"},
-                                 {"flip-time-vs-perturbation", false, false, true}};
-  std::vector<std::pair<products::GalleryRank, std::string>> ranked;
-  for (const auto& s : given)
-    ranked.emplace_back(products::gallery_rank(s.name, s.comparison, s.exact, s.sweep), s.name);
-  std::sort(ranked.begin(), ranked.end());
-  std::vector<std::string> order;
-  for (const auto& [rank, name] : ranked) order.push_back(name);
-  const std::vector<std::string> expected{"fig03-particle-stable-z",
-                                          "fig9-short",
-                                          "fig10-matrix-no-normalization",
-                                          "fig12-quaternion-pulsating-z",
-                                          "exact-unstable-x",
-                                          "tennis-racket",
-                                          "compare-methods-x",
-                                          "many-methods",
-                                          "aaa-body",
-                                          "mesh-teapot",
-                                          "flip-time-vs-perturbation",
-                                          "sweep-dt"};
-  EXPECT_EQ(order, expected);
-}
-
-TEST(GalleryPage, HeaderSaysWhatAndHowItWasMade) {
-  const products::GalleryHeader header{"1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC",
-                                       "host <x>, Some CPU, 2 cores"};
-  const std::string html = products::gallery_html({}, header);
-  EXPECT_NE(html.find("figures 3–12 first"), std::string::npos) << html;
-  EXPECT_NE(html.find("bookspin 1.2.3 (build aaaaaaaaaaaa)"), std::string::npos) << html;
-  EXPECT_NE(html.find("2026-11-22 01:50 UTC"), std::string::npos) << html;
-  EXPECT_NE(html.find("host &lt;x&gt;, Some CPU, 2 cores"), std::string::npos) << html;
 }
 
 /// Every src=, poster= and href= value of `html` that names a file (not a data: URL or #anchor).

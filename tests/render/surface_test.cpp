@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
-#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -300,9 +299,6 @@ TEST(SurfaceRender, SmoothShadingHidesTheFacetsThatFlatShadingShows) {
   auto jumps = [&](bool smooth) {
     const RgbaImage image = renderer.render(
         surface_frame(topology_of(torus.triangles, grey, smooth), torus.positions, cage));
-    if (const char* dir = std::getenv("BOOKSPIN_RENDER_LOOK_DIR"))
-      output::write_png(std::string(dir) + (smooth ? "/coarse_smooth.png" : "/coarse_flat.png"),
-                        image, 1);
     int count = 0;
     for (int y = 0; y < height; ++y) {
       for (int x = 1; x + 1 < width; ++x) {
@@ -403,59 +399,6 @@ TEST(SurfaceFraming, BoundingRadiusIsTheFarthestPointFromTheOrigin) {
   EXPECT_THROW(bounding_radius(Eigen::Matrix3Xd::Zero(3, 2)), RenderError);
   points(0, 0) = std::nan("");
   EXPECT_THROW(bounding_radius(points), RenderError);
-}
-
-// Writes 1280×720 images of generated bodies for a human to look at when
-// BOOKSPIN_RENDER_LOOK_DIR names an output folder (as look_test.cpp does for the book).
-TEST(SurfaceLook, WritesLookImages) {
-  const char* dir = std::getenv("BOOKSPIN_RENDER_LOOK_DIR");
-  if (dir == nullptr || *dir == '\0') GTEST_SKIP() << "set BOOKSPIN_RENDER_LOOK_DIR";
-  std::filesystem::create_directories(dir);
-  const testing::TestMesh t_shape = testing::t_shape();
-  const testing::TestMesh torus = testing::torus(1.2, 0.45, 32, 16);  // coarse: facets show
-  testing::TestMesh shaken = torus;  // every vertex moved on its own, as a vibrating lattice
-  std::mt19937 rng(5);
-  std::normal_distribution<double> noise(0.0, 0.06);
-  for (Eigen::Index i = 0; i < shaken.positions.size(); ++i) shaken.positions(i) += noise(rng);
-  auto t_colour = [](int t) {
-    return t < 12 ? Eigen::Vector3f(0.75f, 0.18f, 0.08f) : Eigen::Vector3f(0.55f, 0.55f, 0.6f);
-  };
-  auto checker = [](int t) {
-    return ((t / 2) / 16 + (t / 2) % 16) % 2 ? Eigen::Vector3f(0.8f, 0.3f, 0.1f)
-                                             : Eigen::Vector3f(0.9f, 0.85f, 0.7f);
-  };
-  struct Look {
-    std::string name;
-    const testing::TestMesh* mesh;
-    std::shared_ptr<const SurfaceTopology> topology;
-    Eigen::Matrix3d map;  // applied to the mesh and its box (non-orthogonal: a sheared state)
-  };
-  Eigen::Matrix3d shear = Eigen::Matrix3d::Identity();
-  shear(0, 1) = 0.6;
-  shear(2, 2) = 1.3;
-  const Look looks[] = {
-      {"t_shape", &t_shape, topology_of(t_shape.triangles, t_colour), some_rotation()},
-      {"t_shape_sheared", &t_shape, topology_of(t_shape.triangles, t_colour),
-       some_rotation() * shear},
-      {"torus_flat", &torus, topology_of(torus.triangles, checker, false), some_rotation()},
-      {"torus_smooth", &torus, topology_of(torus.triangles, checker, true), some_rotation()},
-      {"torus_shaken_smooth", &shaken, topology_of(torus.triangles, checker, true),
-       some_rotation()},
-  };
-  for (const Look& look : looks) {
-    const Eigen::Vector3d low = look.mesh->positions.rowwise().minCoeff();
-    const Eigen::Vector3d high = look.mesh->positions.rowwise().maxCoeff();
-    const Eigen::Matrix<double, 3, 8> cage = look.map * testing::aligned_box(low, high);
-    RenderSettings settings;
-    settings.camera = default_camera(bounding_radius(cage), 1280, 720);
-    settings.show_body_axes = true;
-    settings.show_angular_momentum = true;
-    Renderer renderer(settings);
-    FrameInput frame = surface_frame(look.topology, look.map * look.mesh->positions, cage);
-    frame.angular_momentum_direction = Eigen::Vector3d(0.2, 1.0, 0.3);
-    output::write_png(std::string(dir) + "/surface_" + look.name + ".png", renderer.render(frame),
-                      1);
-  }
 }
 
 }  // namespace

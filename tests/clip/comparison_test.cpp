@@ -1,0 +1,102 @@
+// The comparison composer without a GL context: the tiles' pictures are given (flat colours
+// here), and it lays them out under the title strip (compare_layout's rectangles, worked out
+// by hand below), fills the gaps with the dark background and writes a caption on each tile.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "clip/compare_layout.hpp"
+#include "clip/composer.hpp"
+
+namespace bookspin::clip {
+namespace {
+
+using Rgb = std::array<int, 3>;
+
+Rgb at(const RgbaImage& image, int x, int y) {
+  const std::uint8_t* p = image.row(y) + 4 * x;
+  return {p[0], p[1], p[2]};
+}
+
+RgbaImage flat(int width, int height, const Rgb& colour) {
+  RgbaImage image(width, height);
+  for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
+    for (int c = 0; c < 3; ++c) image.pixels[i + c] = static_cast<std::uint8_t>(colour[c]);
+    image.pixels[i + 3] = 255;
+  }
+  return image;
+}
+
+/// compare-methods-x (four tiles) at 640×360, without the plot column and the sphere.
+scene::Scene four_tiles() {
+  return scene::parse_scene(
+      std::filesystem::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "compare-methods-x.toml",
+      {"render.width=640", "render.height=360", "render.panel=false", "render.sphere=false",
+       "time.frames=3"});
+}
+
+// 640×360: header max(14, 18) = 18, gap max(2, 1.44) = 2, grid 640 × 342. Four tiles: 2×2
+// (sides 171; 4×1 gives 160), each (640 − 2) / 2 = 319 → 318 wide, (342 − 2) / 2 = 170 high,
+// at x = 0 and 320, y = 18 and 190.
+constexpr int kTileWidth = 318, kTileHeight = 170;
+constexpr int kTileX[4] = {0, 320, 0, 320}, kTileY[4] = {18, 18, 190, 190};
+
+TEST(Comparison, ThePicturesAreTheSizeOfATile) {
+  const scene::Scene scene = four_tiles();
+  const auto composer = comparison_composer(scene);
+  const render::RenderSettings settings =
+      composer->picture_settings(tile_scene(scene, scene.compare.front()));
+  EXPECT_EQ(settings.width, kTileWidth);
+  EXPECT_EQ(settings.height, kTileHeight);
+}
+
+TEST(Comparison, EachPictureGoesToItsTileUnderTheStripWithACaption) {
+  const scene::Scene scene = four_tiles();
+  Tiles tiles;
+  for (const auto& tile : scene.compare)
+    tiles.push_back(std::make_unique<TileRun>(tile_scene(scene, tile)));
+  const Rgb colours[4] = {{200, 0, 0}, {0, 200, 0}, {0, 0, 200}, {200, 200, 0}};
+  std::vector<RgbaImage> pictures;
+  for (const Rgb& c : colours) pictures.push_back(flat(kTileWidth, kTileHeight, c));
+  const auto composer = comparison_composer(scene);
+  const RgbaImage frame = composer->compose(pictures, tiles);
+  ASSERT_EQ(frame.width, 640);
+  ASSERT_EQ(frame.height, 360);
+  const Rgb gap = at(blank_frame(1, 1), 0, 0);
+  for (int i = 0; i < 4; ++i) {
+    SCOPED_TRACE(i);
+    const int x = kTileX[i], y = kTileY[i];
+    // The tile's lower right part is its picture, untouched; its corners too.
+    EXPECT_EQ(at(frame, x + kTileWidth - 1, y + kTileHeight - 1), colours[i]);
+    EXPECT_EQ(at(frame, x + kTileWidth / 2, y + kTileHeight - 2), colours[i]);
+    EXPECT_EQ(at(frame, x + kTileWidth - 1, y), colours[i]);
+    // Just right of it and just below it: the gap.
+    if (x + kTileWidth < 640) {
+      EXPECT_EQ(at(frame, x + kTileWidth, y + kTileHeight / 2), gap);
+    }
+    if (y + kTileHeight < 360) {
+      EXPECT_EQ(at(frame, x + kTileWidth / 2, y + kTileHeight), gap);
+    }
+    // The caption: in the tile's top left quarter some pixels are no longer the picture's.
+    int written = 0;
+    for (int yy = y; yy < y + kTileHeight / 4; ++yy)
+      for (int xx = x; xx < x + kTileWidth / 2; ++xx) written += at(frame, xx, yy) != colours[i];
+    EXPECT_GT(written, 100);
+  }
+  // The title strip across the top holds no tile's colour, and its text is drawn.
+  int text = 0;
+  for (int y = 0; y < 18; ++y) {
+    for (int x = 0; x < 640; ++x) {
+      const Rgb p = at(frame, x, y);
+      for (const Rgb& c : colours) EXPECT_NE(p, c) << x << ',' << y;
+      text += p != at(frame, 639, 0);
+    }
+  }
+  EXPECT_GT(text, 100);
+}
+
+}  // namespace
+}  // namespace bookspin::clip

@@ -1,0 +1,126 @@
+// The scene → renderer translation: the render.* keys carried over, the camera framed on the
+// body's bounding sphere (render/camera.hpp's rule: distance = 1.1 · r / sin(fov/2)) or at
+// render.camera_distance, the book moved into the left 60% with the panel; a pose's corners
+// and L as the renderer's input, and a body's surface carried by its corners.
+#include "clip/render_settings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace bookspin::clip {
+namespace {
+
+scene::Scene scene_with(const std::vector<std::string>& overrides) {
+  return scene::parse_scene_text("[scene]\ntitle = \"A test\"\n", "render_settings_test.toml",
+                                 overrides);
+}
+
+/// Where the world point `p` lands in normalized device x (−1 left edge … 1 right edge) of a
+/// width×height image seen by `camera` (a symmetric perspective about eye → target).
+double ndc_x(const render::Camera& camera, const Eigen::Vector3d& p, int width, int height) {
+  const Eigen::Vector3d forward = (camera.target - camera.eye).normalized();
+  const Eigen::Vector3d right = forward.cross(camera.up).normalized();
+  const Eigen::Vector3d v = p - camera.eye;
+  const double aspect = static_cast<double>(width) / height;
+  return v.dot(right) / (v.dot(forward) * std::tan(camera.fov_y_deg * M_PI / 360.0) * aspect);
+}
+
+// The default book, 1.878 × 2.9085 × 0.5 (scenes/README.md): its bounding sphere.
+const double kBookRadius = 0.5 * std::sqrt(1.878 * 1.878 + 2.9085 * 2.9085 + 0.5 * 0.5);
+
+TEST(RenderSettings, TheScenesRenderKeysAreTheRenderersSettings) {
+  const render::RenderSettings s = render_settings_for(
+      scene_with({"render.width=640", "render.height=480", "render.fov_y=40.0",
+                  "render.show_angular_momentum=true", "render.anisotropy=8", "render.msaa=2"}));
+  EXPECT_EQ(s.width, 640);
+  EXPECT_EQ(s.height, 480);
+  EXPECT_DOUBLE_EQ(s.camera.fov_y_deg, 40.0);
+  EXPECT_TRUE(s.show_angular_momentum);
+  EXPECT_FALSE(s.show_body_axes);
+  EXPECT_FLOAT_EQ(s.max_anisotropy, 8.0f);
+  EXPECT_EQ(s.msaa_samples, 2);
+  EXPECT_TRUE(s.textures.front.empty());  // no texture: the generated covers
+  const render::RenderSettings axes =
+      render_settings_for(scene_with({"render.show_body_axes=true"}));
+  EXPECT_FALSE(axes.show_angular_momentum);
+  EXPECT_TRUE(axes.show_body_axes);
+  EXPECT_EQ(axes.msaa_samples, 4);
+  EXPECT_FLOAT_EQ(axes.max_anisotropy, 0.0f);  // automatic
+}
+
+TEST(RenderSettings, TheCameraFramesTheBooksBoundingSphereFromTheSceneDirection) {
+  const render::RenderSettings s = render_settings_for(scene_with({}));
+  EXPECT_NEAR(s.camera.target.norm(), 0.0, 1e-12);
+  const Eigen::Vector3d eye = s.camera.eye;
+  // 1280×720: the vertical field of view (30°) is the narrower one.
+  EXPECT_NEAR(eye.norm(), 1.1 * kBookRadius / std::sin(15.0 * M_PI / 180.0), 1e-9);
+  EXPECT_NEAR(eye.normalized().dot(Eigen::Vector3d(0.9, 0.6, 3.2).normalized()), 1.0, 1e-12);
+  // Another field of view: the same picture height of the book, tan(15°) / tan(30°) closer.
+  const render::RenderSettings wide = render_settings_for(scene_with({"render.fov_y=60.0"}));
+  EXPECT_NEAR(wide.camera.eye.norm(),
+              eye.norm() * std::tan(15.0 * M_PI / 180.0) / std::tan(30.0 * M_PI / 180.0), 1e-9);
+}
+
+TEST(RenderSettings, AGivenCameraDistanceAndDirectionPlaceTheEye) {
+  const render::RenderSettings s = render_settings_for(
+      scene_with({"render.camera_distance=10.0", "render.camera_direction=[0.0, 0.0, 2.0]"}));
+  EXPECT_NEAR((s.camera.eye - Eigen::Vector3d(0, 0, 10)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(s.camera.target.norm(), 0.0, 1e-12);
+}
+
+// With the panel the book's centre is seen in the middle of the left 60% of the frame: at
+// 30% of the width, NDC x = −0.4; the eye moves sideways, so its distance stays.
+TEST(RenderSettings, WithThePanelTheBookIsFramedInTheLeftSixtyPercent) {
+  const render::RenderSettings s = render_settings_for(scene_with({"render.panel=true"}));
+  EXPECT_NEAR(ndc_x(s.camera, Eigen::Vector3d::Zero(), 1280, 720), -0.4, 1e-9);
+  EXPECT_NEAR((s.camera.eye - s.camera.target).norm(),
+              1.1 * kBookRadius / std::sin(15.0 * M_PI / 180.0), 1e-9);
+  const render::RenderSettings alone = render_settings_for(scene_with({}));
+  EXPECT_NEAR(ndc_x(alone.camera, Eigen::Vector3d::Zero(), 1280, 720), 0.0, 1e-12);
+  // Columns [0.25, 0.75) of a 400×400 image: the centre at 50%, NDC 0.
+  const render::RenderSettings middle = render_settings_for(scene_with({}), 400, 400, 0.75, 0.25);
+  EXPECT_NEAR(ndc_x(middle.camera, Eigen::Vector3d::Zero(), 400, 400), 0.0, 1e-12);
+  // Columns [0, 0.5): the centre at 25%, NDC −0.5.
+  const render::RenderSettings half = render_settings_for(scene_with({}), 400, 400, 0.5);
+  EXPECT_NEAR(ndc_x(half.camera, Eigen::Vector3d::Zero(), 400, 400), -0.5, 1e-9);
+}
+
+TEST(RenderSettings, APoseIsItsCornersAndL) {
+  physics::Pose pose;
+  for (int p = 0; p < 8; ++p) pose.corners.col(p) = Eigen::Vector3d(p, 2.0 * p, -p);
+  pose.diagnostics.L = Eigen::Vector3d(0.5, -1.0, 2.0);
+  const render::FrameInput input = frame_input_for(pose);
+  EXPECT_EQ(input.corners, pose.corners);
+  EXPECT_EQ(input.angular_momentum_direction, Eigen::Vector3d(0.5, -1.0, 2.0));
+  EXPECT_EQ(input.surface.topology, nullptr);
+}
+
+TEST(RenderSettings, ABodysSurfaceIsCarriedByItsCornersAndTheBookHasNone) {
+  const scene::Scene book = scene_with({});
+  const scene::Scene handle = scene_with({"body.shape=\"t-handle\""});
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.8, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Vector3d b(0.5, -2.0, 1.0);
+  physics::Pose pose;
+  pose.corners = (R * handle.body.cage.body_corners()).colwise() + b;
+  EXPECT_EQ(BodyDrawing(book.body).input_for(pose).surface.topology, nullptr);
+
+  const render::FrameInput input = BodyDrawing(handle.body).input_for(pose);
+  ASSERT_NE(input.surface.topology, nullptr);
+  EXPECT_EQ(input.surface.topology->triangles, handle.body.triangles);
+  EXPECT_EQ(input.surface.topology->face_colours, handle.body.face_colours);
+  const Eigen::Matrix3Xd expected = (R * handle.body.vertices).colwise() + b;
+  ASSERT_EQ(input.surface.positions.cols(), expected.cols());
+  EXPECT_LT((input.surface.positions - expected).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(input.corners, pose.corners);
+
+  // A deforming body's own surface (the lattice) is drawn as the pose gives it.
+  pose.surface = expected.array() + 1.0;
+  EXPECT_EQ(BodyDrawing(handle.body).input_for(pose).surface.positions, pose.surface);
+}
+
+}  // namespace
+}  // namespace bookspin::clip

@@ -1,0 +1,110 @@
+// The gallery page's text (products/gallery_page.hpp, no file access): escaping, the order of
+// the scenes (docs/outputs.md, "Gallery order"), the header, and what an entry shows.
+#include "products/gallery_page.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bookspin::products {
+namespace {
+
+TEST(GalleryPage, EscapesTitlesAndAttributes) {
+  EXPECT_EQ(html_escape("a <b> & \"c\" 'd'"), "a &lt;b&gt; &amp; &quot;c&quot; &#39;d&#39;");
+  GalleryEntry e;
+  e.name = "x";
+  e.title = "<script>alert(1)</script>";
+  const std::string html = gallery_html({e}, {});
+  EXPECT_EQ(html.find("<script>"), std::string::npos);
+  EXPECT_NE(html.find("&lt;script&gt;alert(1)&lt;/script&gt;"), std::string::npos);
+}
+
+TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
+  struct Scene {
+    std::string name;
+    bool comparison = false, exact = false, sweep = false;
+  };
+  const std::vector<Scene> given{{"sweep-dt"},
+                                 {"compare-methods-x", true},
+                                 {"fig12-quaternion-pulsating-z"},
+                                 {"mesh-teapot"},
+                                 {"exact-unstable-x", false, true},
+                                 {"fig03-particle-stable-z"},
+                                 {"tennis-racket", false, true},
+                                 {"fig10-matrix-no-normalization"},
+                                 {"many-methods", true},
+                                 {"fig9-short"},
+                                 {"aaa-body"},
+                                 {"flip-time-vs-perturbation", false, false, true}};
+  std::vector<std::pair<GalleryRank, std::string>> ranked;
+  for (const auto& s : given)
+    ranked.emplace_back(gallery_rank(s.name, s.comparison, s.exact, s.sweep), s.name);
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> order;
+  for (const auto& [rank, name] : ranked) order.push_back(name);
+  const std::vector<std::string> expected{"fig03-particle-stable-z",
+                                          "fig9-short",
+                                          "fig10-matrix-no-normalization",
+                                          "fig12-quaternion-pulsating-z",
+                                          "exact-unstable-x",
+                                          "tennis-racket",
+                                          "compare-methods-x",
+                                          "many-methods",
+                                          "aaa-body",
+                                          "mesh-teapot",
+                                          "flip-time-vs-perturbation",
+                                          "sweep-dt"};
+  EXPECT_EQ(order, expected);
+}
+
+TEST(GalleryPage, HeaderSaysWhatAndHowItWasMade) {
+  const GalleryHeader header{"1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC",
+                             "host <x>, Some CPU, 2 cores"};
+  const std::string html = gallery_html({}, header);
+  EXPECT_NE(html.find("figures 3–12 first"), std::string::npos) << html;
+  EXPECT_NE(html.find("bookspin 1.2.3 (build aaaaaaaaaaaa)"), std::string::npos) << html;
+  EXPECT_NE(html.find("2026-11-22 01:50 UTC"), std::string::npos) << html;
+  EXPECT_NE(html.find("host &lt;x&gt;, Some CPU, 2 cores"), std::string::npos) << html;
+}
+
+// An entry with nothing rendered says so, naming the MP4 it lacks; a sweep's picture stands
+// in for the clip; a poster alone is shown as an image.
+TEST(GalleryPage, AnEntryWithoutAClipSaysNotRenderedYetUnlessItHasASweepOrAFrame) {
+  GalleryEntry bare;
+  bare.name = "fig03";
+  bare.title = "Figure 3";
+  EXPECT_NE(
+      gallery_html({bare}, {}).find("<p class=\"missing\">not rendered yet (no fig03.mp4)</p>"),
+      std::string::npos);
+  GalleryEntry sweep = bare;
+  sweep.sweep = "fig03-sweep.png";
+  const std::string with_sweep = gallery_html({sweep}, {});
+  EXPECT_EQ(with_sweep.find("not rendered yet"), std::string::npos) << with_sweep;
+  EXPECT_NE(with_sweep.find("<img class=\"plot\" loading=\"lazy\" src=\"fig03-sweep.png\""),
+            std::string::npos)
+      << with_sweep;
+  GalleryEntry poster = bare;
+  poster.poster = "fig03/frames/frame_00001.png";
+  const std::string with_poster = gallery_html({poster}, {});
+  EXPECT_EQ(with_poster.find("not rendered yet"), std::string::npos);
+  EXPECT_NE(
+      with_poster.find("<img src=\"fig03/frames/frame_00001.png\" alt=\"frame of Figure 3\">"),
+      std::string::npos)
+      << with_poster;
+  GalleryEntry clip = poster;
+  clip.video = clip.mp4 = "fig03.mp4";
+  clip.csvs = {"fig03/diagnostics.csv"};
+  const std::string with_clip = gallery_html({clip}, {});
+  EXPECT_NE(with_clip.find("<video controls preload=\"metadata\" src=\"fig03.mp4\" "
+                           "poster=\"fig03/frames/frame_00001.png\"></video>"),
+            std::string::npos)
+      << with_clip;
+  EXPECT_NE(with_clip.find("<a href=\"fig03/diagnostics.csv\">diagnostics.csv</a>"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace bookspin::products

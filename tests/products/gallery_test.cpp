@@ -1,0 +1,94 @@
+// make_gallery over an OUT laid out by hand: it links a product's files only where they exist
+// and the product's last manifest lists them (docs/outputs.md, "Gallery"), takes the middle
+// listed frame as the poster, orders the scenes by the page's rule, writes its manifest and
+// is up to date the second time.
+#include "products/gallery.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "common/errors.hpp"
+#include "output/manifest.hpp"
+#include "support/cli_runner.hpp"
+#include "support/scratch.hpp"
+
+namespace bookspin::products {
+namespace {
+
+namespace fs = std::filesystem;
+
+void touch(const fs::path& file) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << file.filename().string();
+}
+
+/// A manifest of bookspin's format at `manifest` listing `outputs` (relative to `out`).
+void list_in_manifest(const fs::path& out, const fs::path& manifest,
+                      const std::vector<std::string>& outputs) {
+  fs::create_directories(manifest.parent_path());
+  output::write_manifest(manifest, "  \"manifest\": 1,\n", "", out, outputs);
+}
+
+TEST(Gallery, LinksOnlyWhatTheManifestsListAndExists) {
+  test::ScratchDir dir;
+  const fs::path out = dir / "out";
+  fs::create_directories(dir / "scenes");
+  std::ofstream(dir / "scenes" / "demo.toml") << "[scene]\ntitle = \"Demo <1>\"\n";
+  std::ofstream(dir / "scenes" / "bare.toml") << "[scene]\ntitle = \"Nothing yet\"\n";
+  // The clip's last render: the MP4, three frames and the CSV. A GIF and a fourth frame from
+  // an earlier run are there but not listed.
+  for (const char* file :
+       {"demo.mp4", "demo.gif", "demo/frames/frame_00000.png", "demo/frames/frame_00001.png",
+        "demo/frames/frame_00002.png", "demo/frames/frame_00003.png", "demo/diagnostics.csv",
+        "demo.glb", "demo-plot.png", "demo-sweep.png", "demo-sweep.csv"})
+    touch(out / file);
+  list_in_manifest(out, out / "demo" / "manifest.json",
+                   {"demo.mp4", "demo/frames/frame_00000.png", "demo/frames/frame_00001.png",
+                    "demo/frames/frame_00002.png", "demo/diagnostics.csv"});
+  list_in_manifest(out, out / "demo" / "gltf-manifest.json", {"demo.glb"});
+  // demo-plot.png has no manifest: not linked. The sweep's files are linked where they are.
+
+  GalleryJob job;
+  job.out_dir = out;
+  job.scene_paths = {(dir / "scenes" / "demo.toml").string(),
+                     (dir / "scenes" / "bare.toml").string()};
+  const GalleryOutcome made = make_gallery(job);
+  EXPECT_EQ(made.outcome, Outcome::made);
+  EXPECT_EQ(made.entries, 2u);
+  const std::string html = test::read_file(out / "index.html");
+  for (const char* linked :
+       {"src=\"demo.mp4\"", "poster=\"demo/frames/frame_00001.png\"", "href=\"demo.mp4\">MP4</a>",
+        "href=\"demo.glb\">glTF</a>", "href=\"demo/diagnostics.csv\"", "src=\"demo-sweep.png\"",
+        "href=\"demo-sweep.csv\"", "<h2>Demo &lt;1&gt;</h2>", "not rendered yet (no bare.mp4)"})
+    EXPECT_NE(html.find(linked), std::string::npos) << linked << '\n' << html;
+  for (const char* unlisted : {"demo.gif", "demo-plot.png", "frame_00003.png", "demo.webm"})
+    EXPECT_EQ(html.find(unlisted), std::string::npos) << unlisted << '\n' << html;
+  // "bare" is another scene; "demo", with a sweep's outputs, goes with the sweeps, last.
+  EXPECT_LT(html.find("id=\"bare\""), html.find("id=\"demo\""));
+  // The page's manifest lists the page.
+  EXPECT_EQ(output::manifest_outputs(out / "gallery-manifest.json"),
+            (std::vector<std::string>{"index.html"}));
+
+  // Nothing changed: up to date. The plot listed now: the page changes, made again.
+  EXPECT_EQ(make_gallery(job).outcome, Outcome::up_to_date);
+  list_in_manifest(out, out / "demo" / "plot-manifest.json", {"demo-plot.png"});
+  EXPECT_EQ(make_gallery(job).outcome, Outcome::made);
+  EXPECT_NE(test::read_file(out / "index.html").find("src=\"demo-plot.png\""), std::string::npos);
+}
+
+TEST(Gallery, ABadSceneFailsBeforeAnythingIsWritten) {
+  test::ScratchDir dir;
+  std::ofstream(dir / "bad.toml") << "[time]\ndt = -1.0\n";
+  GalleryJob job;
+  job.out_dir = dir / "out";
+  job.scene_paths = {(dir / "bad.toml").string()};
+  EXPECT_THROW(make_gallery(job), InputError);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace bookspin::products
