@@ -80,6 +80,39 @@ TEST(Gallery, LinksOnlyWhatTheManifestsListAndExists) {
   EXPECT_NE(test::read_file(out / "index.html").find("src=\"demo-plot.png\""), std::string::npos);
 }
 
+// An accuracy report (`bookspin accuracy`, e.g. the engines' energy against the step of `make
+// figures`) shows its four charts and links its two tables, as its manifest lists them; it is
+// not "not rendered yet".
+TEST(Gallery, ShowsAnAccuracyReportsChartsAndTables) {
+  test::ScratchDir dir;
+  const fs::path out = dir / "out";
+  fs::create_directories(dir / "sweeps");
+  std::ofstream(dir / "sweeps" / "report.toml") << "[scene]\ntitle = \"A report\"\n";
+  const std::vector<std::string> files{"report-accuracy.csv",       "report-accuracy.png",
+                                       "report-work-precision.png", "report-energy-vs-dt.png",
+                                       "report-energy.png",         "report-energy.csv"};
+  for (const std::string& file : files) touch(out / file);
+  GalleryJob job;
+  job.out_dir = out;
+  job.scene_paths = {(dir / "sweeps" / "report.toml").string()};
+  // No manifest yet: nothing linked.
+  make_gallery(job);
+  EXPECT_NE(test::read_file(out / "index.html").find("not rendered yet"), std::string::npos);
+  list_in_manifest(out, out / "report" / "accuracy-manifest.json", files);
+  make_gallery(job);
+  const std::string html = test::read_file(out / "index.html");
+  EXPECT_EQ(html.find("not rendered yet"), std::string::npos) << html;
+  std::size_t at = 0;
+  for (const char* chart : {"src=\"report-accuracy.png\"", "src=\"report-work-precision.png\"",
+                            "src=\"report-energy-vs-dt.png\"", "src=\"report-energy.png\""}) {
+    const std::size_t found = html.find(chart, at);
+    EXPECT_NE(found, std::string::npos) << chart << " in this order\n" << html;
+    at = found == std::string::npos ? at : found;
+  }
+  for (const char* table : {"href=\"report-accuracy.csv\"", "href=\"report-energy.csv\""})
+    EXPECT_NE(html.find(table), std::string::npos) << table << '\n' << html;
+}
+
 TEST(Gallery, ABadSceneFailsBeforeAnythingIsWritten) {
   test::ScratchDir dir;
   std::ofstream(dir / "bad.toml") << "[time]\ndt = -1.0\n";
