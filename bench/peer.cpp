@@ -17,9 +17,9 @@
 #include "clip/clip_request.hpp"
 #include "clip/frame.hpp"
 #include "clip/render_settings.hpp"
-#include "output/mp4_encoder.hpp"
 #include "output/png_writer.hpp"
 #include "scene/scene.hpp"
+#include "video/video.hpp"
 
 namespace bookspin::bench {
 
@@ -55,9 +55,9 @@ void timed_frames(int frames, DrawAndRead&& draw_and_read, const scene::Scene& s
                   const std::filesystem::path* file, PeerTiming* timing, RgbaImage* kept) {
   const auto wall_start = std::chrono::steady_clock::now();
   const double cpu_start = process_cpu_seconds();
-  std::unique_ptr<output::Mp4Encoder> encoder;
+  std::unique_ptr<video::Mp4Encoder> encoder;
   if (file)
-    encoder = std::make_unique<output::Mp4Encoder>(*file, clip::encoder_settings(scene, jobs));
+    encoder = std::make_unique<video::Mp4Encoder>(*file, clip::encoder_settings(scene, jobs));
   for (int i = 0; i < frames; ++i) {
     RgbaImage image = draw_and_read(i);
     if (encoder) encoder->add_frame(image);

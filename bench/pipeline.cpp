@@ -19,10 +19,10 @@
 #include "clip/clip_request.hpp"
 #include "clip/frame.hpp"
 #include "clip/render_settings.hpp"
-#include "output/mp4_encoder.hpp"
 #include "output/png_writer.hpp"
 #include "products/clip.hpp"
 #include "scene/scene.hpp"
+#include "video/video.hpp"
 
 namespace bookspin::bench {
 
@@ -84,7 +84,7 @@ std::vector<RgbaImage> prerender(const scene::Scene& scene) {
 Timing timed_encoding(const scene::Scene& scene, const std::vector<RgbaImage>& frames,
                       const std::filesystem::path& file, int jobs, double* conversion) {
   const Stopwatch stopwatch;
-  output::Mp4Encoder encoder(file, clip::encoder_settings(scene, jobs));
+  video::Mp4Encoder encoder(file, clip::encoder_settings(scene, jobs));
   for (const RgbaImage& frame : frames) encoder.add_frame(frame);
   encoder.finish();
   const Timing timing = stopwatch.elapsed();

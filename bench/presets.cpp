@@ -1,7 +1,7 @@
 // Bench section `presets`: which x264 preset and CRF give medium/CRF 18's picture for less
 // encoding. Real clips' frames are rendered once, encoded with every preset from ultrafast
 // to medium over a CRF range, decoded back to RGB and compared with the frames
-// (output/video_quality.hpp: SSIM of the luma and PSNR over R, G, B, our own code). The rule
+// (video/video_quality.hpp: SSIM of the luma and PSNR over R, G, B, our own code). The rule
 // (docs/performance.md): the fastest pair whose SSIM and PSNR are within 0.0005 and 0.1 dB
 // of medium/CRF 18's on every clip, at no more than 1.25× its file size.
 #include <algorithm>
@@ -16,11 +16,10 @@
 #include "bench/sections.hpp"
 #include "clip/clip.hpp"
 #include "output/atomic_output.hpp"
-#include "output/mp4_encoder.hpp"
 #include "output/png_writer.hpp"
-#include "output/video_quality.hpp"
 #include "products/clip.hpp"
 #include "scene/scene.hpp"
+#include "video/video.hpp"
 
 namespace bookspin::bench {
 
@@ -57,7 +56,7 @@ RawClip render_raw(const BenchContext& c, const std::string& scene_path, int fra
   clip::render_clip(request);
   RawClip raw{job.scene.name, job.scene.render.fps, {}};
   for (int i = 0; i < job.scene.frames; ++i)
-    raw.frames.push_back(output::read_png(request.paths.frames_dir / output::frame_file_name(i)));
+    raw.frames.push_back(output::read_png(request.paths.frames_dir / clip::frame_file_name(i)));
   std::filesystem::remove_all(job.out_dir);
   return raw;
 }
@@ -65,7 +64,7 @@ RawClip render_raw(const BenchContext& c, const std::string& scene_path, int fra
 Encoding encode_and_compare(const BenchContext& c, const RawClip& raw, const std::string& preset,
                             int crf) {
   const auto file = c.scratch / "presets.mp4";
-  output::EncoderSettings settings;
+  video::EncoderSettings settings;
   settings.width = raw.frames.front().width;
   settings.height = raw.frames.front().height;
   settings.fps = raw.fps;
@@ -75,7 +74,7 @@ Encoding encode_and_compare(const BenchContext& c, const RawClip& raw, const std
   Encoding e;
   {
     const Stopwatch stopwatch;
-    output::Mp4Encoder encoder(file, settings);
+    video::Mp4Encoder encoder(file, settings);
     for (const RgbaImage& frame : raw.frames) encoder.add_frame(frame);
     encoder.finish();
     e.cpu = stopwatch.elapsed().cpu;
@@ -84,17 +83,17 @@ Encoding encode_and_compare(const BenchContext& c, const RawClip& raw, const std
   double ssim = 0, squared = 0;
   std::int64_t samples = 0;
   std::size_t index = 0;
-  output::decode_video(file, [&](const RgbaImage& decoded) {
+  video::decode_video(file, [&](const RgbaImage& decoded) {
     if (index >= raw.frames.size())
       throw std::runtime_error("bench: more frames decoded than encoded");
-    const output::FrameQuality q = output::frame_quality(raw.frames[index++], decoded);
+    const video::FrameQuality q = video::frame_quality(raw.frames[index++], decoded);
     ssim += q.ssim;
     squared += q.squared_error;
     samples += q.samples;
   });
   if (index != raw.frames.size()) throw std::runtime_error("bench: decoded frames are missing");
   e.ssim = ssim / static_cast<double>(index);
-  e.psnr = output::psnr_db(squared, samples);
+  e.psnr = video::psnr_db(squared, samples);
   std::filesystem::remove(file);
   return e;
 }

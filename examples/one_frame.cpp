@@ -1,6 +1,6 @@
 // The whole data flow in one screen: scene file → Scene → simulator → pose → renderer →
 // PNG, for any body (the book, a preset, a mesh). No caption or panel (that is charts/), no
-// MP4 (that is output/clip_sinks).
+// MP4 (that is clip/clip_sinks).
 //
 //   build/examples/one_frame scenes/fig05-particle-unstable-x.toml 120 frame.png
 //   build/examples/one_frame scenes/t-handle-dzhanibekov.toml 60 t-handle.png

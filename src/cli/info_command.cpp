@@ -2,13 +2,13 @@
 #include <string>
 
 #include "cli/commands.hpp"
-#include "output/ffmpeg_info.hpp"
 #include "render/renderer.hpp"
+#include "video/video.hpp"
 
 namespace bookspin::cli {
 
 int info_command() {
-  for (const auto& line : output::ffmpeg_info()) std::cout << line << '\n';
+  for (const auto& line : video::ffmpeg_info()) std::cout << line << '\n';
   std::cout.flush();
   const render::GlInfo gl = render::gl_info();
   for (const auto& line : gl.lines()) std::cout << line << '\n';

@@ -6,8 +6,8 @@
 
 #include "common/errors.hpp"
 #include "common/stop.hpp"
-#include "output/mp4_encoder.hpp"
 #include "render/render_error.hpp"
+#include "video/video.hpp"
 
 namespace bookspin::cli {
 
@@ -32,7 +32,7 @@ int run_guarded(const std::function<int()>& command) {
     return report("error", e.what(), kExitFailure);
   } catch (const render::RenderError& e) {
     return report("error", e.what(), kExitFailure);
-  } catch (const output::EncoderError& e) {
+  } catch (const video::EncoderError& e) {
     return report("error", e.what(), kExitFailure);
   } catch (const std::exception& e) {
     return report("internal error", e.what(), kExitInternal);

@@ -12,7 +12,7 @@ enum ExitCode { kExitOk = 0, kExitFailure = 1, kExitUsage = 2, kExitInternal = 7
 /// Runs `command` and returns its status; an exception that escapes it is printed as one
 /// line on stderr and mapped: Interrupted (a signal stopped the run before it put anything in
 /// place) → "bookspin: interrupted; nothing written", 128 + signal; InputError → "bookspin: error:
-/// …", 2; OutputError, render::RenderError, output::EncoderError → "bookspin: error: …", 1;
+/// …", 2; OutputError, render::RenderError, video::EncoderError → "bookspin: error: …", 1;
 /// anything else → "bookspin: internal error: …", 70.
 int run_guarded(const std::function<int()>& command);
 

@@ -45,8 +45,8 @@ struct InFlight {
 /// submitted and, once a frame's are all there, composes it and hands it to the sinks.
 class FrameFinisher {
  public:
-  FrameFinisher(const ClipRequest& request, Composer& composer, Tiles& tiles,
-                output::ClipSinks& sinks, ClipResult& result)
+  FrameFinisher(const ClipRequest& request, Composer& composer, Tiles& tiles, ClipSinks& sinks,
+                ClipResult& result)
       : request_(request), composer_(composer), tiles_(tiles), sinks_(sinks), result_(result) {}
 
   void expect(InFlight picture) { in_flight_.push_back(std::move(picture)); }
@@ -77,7 +77,7 @@ class FrameFinisher {
   const ClipRequest& request_;
   Composer& composer_;
   Tiles& tiles_;
-  output::ClipSinks& sinks_;
+  ClipSinks& sinks_;
   ClipResult& result_;
   std::deque<InFlight> in_flight_;
   std::vector<RgbaImage> pictures_;  ///< the frame's pictures taken so far, in tile order
@@ -121,7 +121,7 @@ ClipResult render_clip(const ClipRequest& request) {
   const std::unique_ptr<Composer> composer =
       scene.compare.empty() ? single_composer(scene) : comparison_composer(scene);
   render::Renderer renderer(composer->picture_settings(tiles.front()->scene));
-  output::ClipSinks sinks(request.paths, sink_options(request), request.tile_csvs);
+  ClipSinks sinks(request.paths, sink_options(request), request.tile_csvs);
   if (request.on_note && !sinks.encoder_message().empty()) request.on_note(sinks.encoder_message());
 
   ClipResult result;

@@ -17,7 +17,7 @@ namespace bookspin::clip {
 /// divergence the last finite pose is held with a "diverged at t = …" caption (a comparison:
 /// in that tile), so the clip keeps its length. Stops early, leaving nothing unfinished behind,
 /// when request.stop_signal answers a signal.
-/// Throws OutputError (an output cannot be written), output::EncoderError,
+/// Throws OutputError (an output cannot be written), video::EncoderError,
 /// render::RenderError (no usable EGL/GL).
 ClipResult render_clip(const ClipRequest& request);
 

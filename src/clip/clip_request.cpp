@@ -5,15 +5,15 @@
 
 namespace bookspin::clip {
 
-output::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs) {
+video::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs) {
   const scene::RenderOptions& r = scene.render;
-  output::EncoderSettings settings{r.width, r.height, r.fps, r.codec, r.crf, r.preset};
+  video::EncoderSettings settings{r.width, r.height, r.fps, r.codec, r.crf, r.preset};
   settings.threads = jobs;
   return settings;
 }
 
-output::SinkOptions sink_options(const ClipRequest& request) {
-  output::SinkOptions s;
+SinkOptions sink_options(const ClipRequest& request) {
+  SinkOptions s;
   s.write_png = request.write_png;
   s.png_compression =
       request.png_compression >= 0 ? request.png_compression : request.scene.render.png_compression;

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "clip/clip_sinks.hpp"
 #include "common/stop.hpp"
-#include "output/clip_sinks.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::clip {
@@ -18,7 +18,7 @@ struct ClipRequest {
   scene::Scene scene;  ///< validated; scene.frames is the clip's length
   /// Where the videos, frames and the diagnostics CSV (a comparison's first tile's) go: the
   /// clip product's layout (products/clip.hpp).
-  output::ClipPaths paths;
+  ClipPaths paths;
   /// A comparison: the diagnostics CSVs of its tiles after the first, in tile order.
   std::vector<std::filesystem::path> tile_csvs;
   bool write_png = true;     ///< false: MP4 and CSV only
@@ -30,7 +30,7 @@ struct ClipRequest {
   /// Called after each frame is queued, with the number of frames done so far.
   std::function<void(int done)> on_progress;
   /// Polled before each frame ("render frames") and while the encoders finish (see
-  /// output::SinkOptions::stop): the signal asking the clip to stop (SIGINT, SIGTERM), or 0.
+  /// SinkOptions::stop): the signal asking the clip to stop (SIGINT, SIGTERM), or 0.
   StopPoll stop_signal;
 };
 
@@ -52,10 +52,10 @@ struct ClipResult {
 
 /// The encoder settings of a render of `scene` (render.width, height, fps, codec, crf,
 /// preset) with `jobs` threads (0: the encoder's own choice for all cores).
-output::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs);
+video::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs);
 
 /// Sink settings from the scene's render.* keys and the request's options.
-output::SinkOptions sink_options(const ClipRequest& request);
+SinkOptions sink_options(const ClipRequest& request);
 
 /// The end of a clip: unless request.stop_signal() asks to stop (the signal is returned and
 /// nothing is put in place), puts every complete output of the run in place together

@@ -80,7 +80,7 @@ std::vector<fs::path> clip_outputs(const ClipJob& job, const ClipLayout& layout)
   std::vector<fs::path> files = layout.videos;
   if (job.write_png) {
     for (int i = 0; i < job.scene.frames; ++i)
-      files.push_back(layout.frames_dir / output::frame_file_name(i));
+      files.push_back(layout.frames_dir / clip::frame_file_name(i));
   }
   files.insert(files.end(), layout.csvs.begin(), layout.csvs.end());
   return files;

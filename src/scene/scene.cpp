@@ -170,10 +170,10 @@ std::vector<std::string> read_formats(TomlReader& r, std::string_view key,
   return formats;
 }
 
-// The GIF keeps every round(fps / gif_fps)-th frame (output::gif_step) and so plays at
+// The GIF keeps every round(fps / gif_fps)-th frame (video::gif_step) and so plays at
 // fps / step frames per second. A GIF stores each frame's delay in whole centiseconds and
 // browsers show delays under 2 cs as 10 cs: it plays at most 50 frames/s
-// (output::kGifMaxFps; docs/outputs.md, "Video formats").
+// (video::kGifMaxFps; docs/outputs.md, "Video formats").
 constexpr int kGifMaxFps = 50;
 
 int gif_step(int fps, int gif_fps) {

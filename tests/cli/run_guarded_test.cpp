@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
-#include "output/mp4_encoder.hpp"
 #include "render/render_error.hpp"
+#include "video/video.hpp"
 
 namespace bookspin::cli {
 namespace {
@@ -59,7 +59,7 @@ TEST(RunGuarded, FailedWritesAndMissingMachineryAreStatus1) {
   EXPECT_EQ(o.stderr_text,
             "bookspin: error: cannot write \"out/a.csv\": No space left on device\n");
   EXPECT_EQ(run([]() -> int { throw render::RenderError("no EGL display"); }).status, 1);
-  EXPECT_EQ(run([]() -> int { throw output::EncoderError("libx264 missing"); }).status, 1);
+  EXPECT_EQ(run([]() -> int { throw video::EncoderError("libx264 missing"); }).status, 1);
 }
 
 TEST(RunGuarded, PassesTheCommandsOwnStatusThrough) {

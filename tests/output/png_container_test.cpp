@@ -16,7 +16,7 @@
 #include "output/atomic_output.hpp"
 #include "output/png_writer.hpp"
 #include "support/scratch.hpp"
-#include "test_images.hpp"
+#include "support/test_images.hpp"
 
 namespace bookspin::output {
 namespace {
@@ -121,8 +121,8 @@ void require_pngcheck() {
 /// A frame like the renders: an opaque smooth dithered gradient with a square; `translucent`
 /// makes one pixel in 97 (the first included) translucent, so the file goes out as RGBA.
 RgbaImage sample_frame(int width, int height, bool translucent) {
-  RgbaImage image = testing::moving_square_frame(width, height, 2);
-  const RgbaImage noise = testing::noise_frame(width, height, 11);
+  RgbaImage image = test::moving_square_frame(width, height, 2);
+  const RgbaImage noise = test::noise_frame(width, height, 11);
   for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
     image.pixels[i] = static_cast<std::uint8_t>(image.pixels[i] ^ (noise.pixels[i] & 3));  // dither
     if (translucent && (i / 4) % 97 == 0) image.pixels[i + 3] = noise.pixels[i + 3] & 0x7f;
@@ -195,7 +195,7 @@ TEST(PngContainer, ChunksAreSignatureIhdrIdatIendWithTheirCrcs) {
 // Filter bytes (§9): type 0 for every row at the fast levels, a per-row choice among 0…4
 // at the others, and on a smooth gradient that choice is not always None.
 TEST(PngContainer, FastLevelsLeaveRowsUnfilteredHigherLevelsChooseFilters) {
-  const RgbaImage image = testing::moving_square_frame(97, 64, 1);  // opaque, smooth
+  const RgbaImage image = test::moving_square_frame(97, 64, 1);  // opaque, smooth
   const std::size_t row_bytes = 1 + 97 * 3;
   for (int level : {0, 1, 3, 4, 9}) {
     const std::vector<std::uint8_t> scanlines =
@@ -236,7 +236,7 @@ TEST(PngContainer, PngcheckAcceptsEveryLevelAndSize) {
 // at level 0 is 2.7 MB of stored blocks.
 TEST(PngContainer, LargeFramesSpanSeveralIdatChunksAndStillDecode) {
   ScratchDir dir;
-  RgbaImage image = testing::noise_frame(1280, 720, 5);
+  RgbaImage image = test::noise_frame(1280, 720, 5);
   for (std::size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;
   write_png(dir / "big.png", image, 0);
   const std::vector<Chunk> chunks = parse_chunks(file_bytes(dir / "big.png"));
@@ -255,7 +255,7 @@ TEST(PngContainer, AFullDiskThrowsOutputErrorNamingThePathAndTheReason) {
   if (!full) GTEST_SKIP() << "/dev/full cannot be opened here";
   std::string message;
   try {
-    write_png(full, "/dev/full", testing::noise_frame(64, 64, 2), 1);
+    write_png(full, "/dev/full", test::noise_frame(64, 64, 2), 1);
   } catch (const OutputError& e) {
     message = e.what();
   }
@@ -269,7 +269,7 @@ TEST(PngContainer, ADirectoryInTheWayThrowsOutputErrorAndLeavesItAlone) {
   fs::create_directory(dir / "frame.png");
   std::string message;
   try {
-    write_png(dir / "frame.png", testing::noise_frame(8, 8, 3), 1);
+    write_png(dir / "frame.png", test::noise_frame(8, 8, 3), 1);
   } catch (const OutputError& e) {
     message = e.what();
   }

@@ -11,13 +11,13 @@
 
 #include "output/atomic_output.hpp"
 #include "support/scratch.hpp"
-#include "test_images.hpp"
+#include "support/test_images.hpp"
 
 namespace bookspin::output {
 namespace {
 namespace fs = std::filesystem;
 using bookspin::test::ScratchDir;
-using testing::noise_frame;
+using test::noise_frame;
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
@@ -66,7 +66,7 @@ unsigned char colour_type(const fs::path& file) {
 // transparency keeps its alpha. Both read back exactly.
 TEST(PngWriter, OpaqueImagesAreWrittenAsRgbOthersAsRgba) {
   ScratchDir dir;
-  const RgbaImage opaque = testing::moving_square_frame(64, 48, 3);
+  const RgbaImage opaque = test::moving_square_frame(64, 48, 3);
   RgbaImage translucent = opaque;
   translucent.pixels[4 * 100 + 3] = 128;
   write_png(dir / "opaque.png", opaque, 1);
@@ -79,7 +79,7 @@ TEST(PngWriter, OpaqueImagesAreWrittenAsRgbOthersAsRgba) {
 
 TEST(PngWriter, WritesEightBitAndHigherLevelsCompressSmoothImagesMore) {
   ScratchDir dir;
-  const RgbaImage image = testing::moving_square_frame(128, 96, 0);
+  const RgbaImage image = test::moving_square_frame(128, 96, 0);
   write_png(dir / "fast.png", image, 1);
   write_png(dir / "small.png", image, 9);
   write_png(dir / "none.png", image, 0);

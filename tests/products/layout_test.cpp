@@ -31,7 +31,7 @@ TEST(ProductLayout, AClipNamesItsVideosFramesCsvAndManifest) {
   EXPECT_EQ(layout.frames_dir, "out/fig09/frames");
   ASSERT_EQ(layout.csvs.size(), 1u);
   EXPECT_EQ(layout.csvs[0], "out/fig09/diagnostics.csv");
-  EXPECT_EQ(output::frame_file_name(42), "frame_00042.png");
+  EXPECT_EQ(clip::frame_file_name(42), "frame_00042.png");
 }
 
 TEST(ProductLayout, AComparisonHasOneCsvPerTileAndTheRequestCarriesThem) {

@@ -8,7 +8,7 @@
 
 #include "common/rgba_image.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 
 /// Decodes every video frame of the first video stream of `path` (any container and codec
 /// FFmpeg reads) and hands each, in display order, to `on_frame` as RGBA (alpha 255), top
@@ -37,4 +37,4 @@ FrameQuality frame_quality(const RgbaImage& original, const RgbaImage& decoded);
 double psnr_db(double squared_error, std::int64_t samples);
 inline constexpr double kPsnrIdentical = 100.0;
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

@@ -1,6 +1,6 @@
 // WebM (VP9) and GIF (palettegen/paletteuse) clips, decoded back independently with
 // libavformat/libavcodec (mp4_probe.cpp demuxes any container FFmpeg reads).
-#include "output/web_encoders.hpp"
+#include "video/web_encoders.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,13 +19,13 @@ extern "C" {
 #include "mp4_probe.hpp"
 #include "output/atomic_output.hpp"
 #include "support/scratch.hpp"
-#include "test_images.hpp"
+#include "support/test_images.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 namespace fs = std::filesystem;
 using bookspin::test::ScratchDir;
-using testing::moving_square_frame;
+using test::moving_square_frame;
 
 constexpr int kWidth = 128, kHeight = 96, kFps = 24, kFrames = 24;
 
@@ -115,7 +115,7 @@ TEST(GifEncoder, DecodedGifHasTheClipsFrameCountAndDuration) {
   const testing::Mp4Probe probe = testing::probe_mp4(dir / "clip.gif");
   ASSERT_EQ(static_cast<int>(probe.frames.size()), 21);
   for (int j = 0; j < 21; ++j) {
-    const testing::Square sq = testing::moving_square(3 * j);
+    const test::Square sq = test::moving_square(3 * j);
     EXPECT_LT(testing::mean_rgb_error(probe.frames[j], moving_square_frame(kWidth, kHeight, 3 * j),
                                       2, sq.x / 2 + 2, sq.y / 2 + 2, (sq.x + sq.size) / 2 - 2,
                                       (sq.y + sq.size) / 2 - 2),
@@ -250,4 +250,4 @@ TEST(WebEncoders, BadSettingsThrowBeforeAnythingIsWrittenAndUnfinishedClipsLeave
 }
 
 }  // namespace
-}  // namespace bookspin::output
+}  // namespace bookspin::video

@@ -1,4 +1,4 @@
-#include "output/mp4_encoder.hpp"
+#include "video/mp4_encoder.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -9,20 +9,20 @@
 #include <iostream>
 #include <thread>
 
+#include "clip/bounded_queue.hpp"
 #include "decoded_clip.hpp"
 #include "mp4_probe.hpp"
 #include "output/atomic_output.hpp"
-#include "output/bounded_queue.hpp"
-#include "output/ffmpeg_info.hpp"
 #include "support/scratch.hpp"
-#include "test_images.hpp"
+#include "support/test_images.hpp"
+#include "video/ffmpeg_info.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 namespace fs = std::filesystem;
 using bookspin::test::ScratchDir;
-using testing::moving_square_frame;
-using testing::noise_frame;
+using test::moving_square_frame;
+using test::noise_frame;
 
 constexpr int kWidth = 128, kHeight = 96, kFps = 24, kFrames = 24;
 
@@ -220,7 +220,7 @@ TEST(Mp4Encoder, WriteErrorSurfacesAsOutputErrorAndLeavesNothing) {
 // encoder running on its own thread.
 TEST(Mp4Encoder, EncodesFromAQueueOnAnotherThread) {
   ScratchDir dir;
-  BoundedQueue<RgbaImage> queue(4);
+  clip::BoundedQueue<RgbaImage> queue(4);
   Mp4Encoder encoder(dir / "clip.mp4", small_settings());
   std::thread writer([&] {
     while (auto frame = queue.pop()) encoder.add_frame(*frame);
@@ -243,4 +243,4 @@ TEST(FfmpegInfo, ReportsLibrariesAndAUsableLibx264) {
 }
 
 }  // namespace
-}  // namespace bookspin::output
+}  // namespace bookspin::video

@@ -1,9 +1,9 @@
-#include "output/libav_support.hpp"
+#include "video/libav_support.hpp"
 
 #include <cstdarg>
 #include <mutex>
 
-namespace bookspin::output::libav {
+namespace bookspin::video::libav {
 namespace {
 
 // The capture target of the calling thread; libav calls the log callback on
@@ -70,4 +70,4 @@ void OutputFormatDeleter::operator()(AVFormatContext* context) const {
   avformat_free_context(context);
 }
 
-}  // namespace bookspin::output::libav
+}  // namespace bookspin::video::libav

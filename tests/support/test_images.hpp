@@ -4,7 +4,7 @@
 
 #include "common/rgba_image.hpp"
 
-namespace bookspin::output::testing {
+namespace bookspin::test {
 
 struct Square {
   int x, y, size;
@@ -44,4 +44,4 @@ inline RgbaImage noise_frame(int width, int height, std::uint32_t seed) {
   return image;
 }
 
-}  // namespace bookspin::output::testing
+}  // namespace bookspin::test

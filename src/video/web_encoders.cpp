@@ -1,4 +1,4 @@
-#include "output/web_encoders.hpp"
+#include "video/web_encoders.hpp"
 
 extern "C" {
 #include <libavfilter/avfilter.h>
@@ -24,9 +24,9 @@ extern "C" {
 #include <vector>
 
 #include "output/atomic_output.hpp"
-#include "output/libav_support.hpp"
+#include "video/libav_support.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 
 std::string size_text(int width, int height) {
@@ -51,7 +51,7 @@ using FilterGraphPtr = std::unique_ptr<AVFilterGraph, FilterGraphDeleter>;
 /// Member order: the libav objects (and the file, via `format`) go before `output`.
 struct StreamFile {
   const char* label;
-  AtomicFile output;
+  output::AtomicFile output;
   libav::OutputFormatPtr format;
   libav::CodecContextPtr codec;
   AVStream* stream = nullptr;  // owned by `format`
@@ -141,7 +141,7 @@ struct StreamFile {
   /// Flushes the encoder (polling `stop` at `stage`, see encode()), writes the trailer,
   /// closes and renames the file into place (with `set`: adds it to the set, which puts it
   /// in place).
-  void finish(OutputSet* set, const StopPoll& stop = {}, std::string_view stage = {}) {
+  void finish(output::OutputSet* set, const StopPoll& stop = {}, std::string_view stage = {}) {
     if (closed) throw std::logic_error(std::string(label) + " finish called twice");
     closed = true;
     if (frames == 0)
@@ -238,7 +238,7 @@ void WebmEncoder::add_frame(const RgbaImage& image) {
   s.file.encode(s.frame.get());
 }
 
-void WebmEncoder::finish(OutputSet* set, const StopPoll& stop) {
+void WebmEncoder::finish(output::OutputSet* set, const StopPoll& stop) {
   impl_->file.finish(set, stop, "webm flush");
 }
 std::int64_t WebmEncoder::frame_count() const { return impl_->file.frames; }
@@ -558,7 +558,7 @@ void GifEncoder::add_frame(const RgbaImage& image) {
   g.spill->append(g.scaled->data[0]);
 }
 
-void GifEncoder::finish(OutputSet* set, const StopPoll& stop) {
+void GifEncoder::finish(output::OutputSet* set, const StopPoll& stop) {
   Impl& g = *impl_;
   stop_if_asked(stop, "gif finish");
   if (!g.file.closed && g.seen > 0) {
@@ -575,4 +575,4 @@ void GifEncoder::finish(OutputSet* set, const StopPoll& stop) {
 
 std::int64_t GifEncoder::frame_count() const { return impl_->file.frames; }
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

@@ -1,6 +1,6 @@
 #pragma once
-// Internal to the output stage: RAII owners and error/log plumbing for FFmpeg.
-// Nothing outside src/output (and its tests) should include this: it drags in libav headers.
+// Internal to the video stage: RAII owners and error/log plumbing for FFmpeg.
+// Nothing outside src/video (and its tests) should include this: it drags in libav headers.
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -14,7 +14,7 @@ extern "C" {
 
 #include "common/non_copyable.hpp"
 
-namespace bookspin::output::libav {
+namespace bookspin::video::libav {
 
 /// av_strerror text for a libav error code, e.g. "No space left on device".
 std::string error_text(int code);
@@ -70,4 +70,4 @@ using PacketPtr = std::unique_ptr<AVPacket, PacketDeleter>;
 using SwsPtr = std::unique_ptr<SwsContext, SwsDeleter>;
 using OutputFormatPtr = std::unique_ptr<AVFormatContext, OutputFormatDeleter>;
 
-}  // namespace bookspin::output::libav
+}  // namespace bookspin::video::libav

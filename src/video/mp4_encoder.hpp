@@ -10,8 +10,10 @@
 #include "common/stop.hpp"
 
 namespace bookspin::output {
-
 class OutputSet;
+}  // namespace bookspin::output
+
+namespace bookspin::video {
 
 /// libav refused something (encoder missing or failing, bad frame). File
 /// system failures are reported as OutputError instead.
@@ -40,7 +42,7 @@ struct EncoderSettings {
 ///
 /// Not thread-safe per object, but holds no thread affinity: add_frame and
 /// finish may be called from any one thread at a time (e.g. a writer thread
-/// draining a BoundedQueue).
+/// draining a clip::BoundedQueue, as the clip sinks do).
 class Mp4Encoder {
  public:
   /// Opens the encoder and the temporary output file, writes the header.
@@ -74,7 +76,7 @@ class Mp4Encoder {
   /// then), std::logic_error if called twice. `stop` is polled for each packet of the
   /// drain ("mp4 flush"): when it answers a signal, finish() throws Interrupted and the
   /// temporary is left for the destructor to remove (nothing put in place).
-  void finish(OutputSet* set = nullptr, const StopPoll& stop = {});
+  void finish(output::OutputSet* set = nullptr, const StopPoll& stop = {});
 
   /// Frames accepted by add_frame so far.
   std::int64_t frame_count() const;
@@ -92,4 +94,4 @@ class Mp4Encoder {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

@@ -1,4 +1,4 @@
-#include "output/codec_selection.hpp"
+#include "video/codec_selection.hpp"
 
 extern "C" {
 #include <libavutil/opt.h>
@@ -10,7 +10,7 @@ extern "C" {
 
 #include "common/errors.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 
 constexpr const char* kFallbackEncoder = "libx264";
@@ -150,4 +150,4 @@ std::string probe_encoder(const std::string& name) {
   return context ? std::string() : why;
 }
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

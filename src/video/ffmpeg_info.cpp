@@ -1,9 +1,9 @@
-#include "output/ffmpeg_info.hpp"
+#include "video/ffmpeg_info.hpp"
 
-#include "output/codec_selection.hpp"
-#include "output/libav_support.hpp"
+#include "video/codec_selection.hpp"
+#include "video/libav_support.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 
 std::string version_text(unsigned version) {
@@ -48,4 +48,4 @@ std::vector<std::string> ffmpeg_info() {
   return lines;
 }
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

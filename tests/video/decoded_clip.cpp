@@ -4,9 +4,9 @@
 
 #include <cstdlib>
 
-#include "test_images.hpp"
+#include "support/test_images.hpp"
 
-namespace bookspin::output::testing {
+namespace bookspin::video::testing {
 
 double mean_rgb_error(const RgbaImage& decoded, const RgbaImage& expected, int scale, int x0,
                       int y0, int x1, int y1) {
@@ -34,8 +34,8 @@ void expect_video_stream(const Mp4Probe& probe, const std::string& codec, int wi
 
 void expect_moving_square(const RgbaImage& decoded, int width, int height, int index, int scale,
                           double square_max, double frame_max) {
-  const RgbaImage original = moving_square_frame(width, height, index);
-  const Square sq = moving_square(index);
+  const RgbaImage original = test::moving_square_frame(width, height, index);
+  const test::Square sq = test::moving_square(index);
   const int inset = 2;
   EXPECT_LT(mean_rgb_error(decoded, original, scale, sq.x / scale + inset, sq.y / scale + inset,
                            (sq.x + sq.size) / scale - inset, (sq.y + sq.size) / scale - inset),
@@ -46,4 +46,4 @@ void expect_moving_square(const RgbaImage& decoded, int width, int height, int i
       << "source frame " << index;
 }
 
-}  // namespace bookspin::output::testing
+}  // namespace bookspin::video::testing

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-namespace bookspin::output {
+namespace bookspin::video {
 
 /// Human-readable lines: one per library ("libavcodec 59.37.100 (built with
 /// 59.37.100)"), then one per H.264 encoder with whether it opens here
@@ -15,4 +15,4 @@ std::vector<std::string> ffmpeg_info();
 /// libavcodec's order (present, not necessarily usable: see ffmpeg_info()).
 std::vector<std::string> h264_encoders();
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

@@ -12,9 +12,9 @@ extern "C" {
 #include <memory>
 #include <stdexcept>
 
-#include "output/libav_support.hpp"
+#include "video/libav_support.hpp"
 
-namespace bookspin::output::testing {
+namespace bookspin::video::testing {
 namespace {
 
 struct InputCloser {
@@ -136,4 +136,4 @@ std::vector<std::string> top_level_boxes(const std::filesystem::path& path) {
   return types;
 }
 
-}  // namespace bookspin::output::testing
+}  // namespace bookspin::video::testing

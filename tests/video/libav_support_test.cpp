@@ -1,13 +1,13 @@
-// FFmpeg's own log lines never reach the user as they are: once the output stage has set up
+// FFmpeg's own log lines never reach the user as they are: once the video stage has set up
 // logging, a message libav logs goes into the error that follows it, or nowhere.
-#include "output/libav_support.hpp"
+#include "video/libav_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 #include <thread>
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 
 TEST(LibavLogging, MessagesGoIntoTheNextFailureNotToStderr) {
@@ -39,4 +39,4 @@ TEST(LibavLogging, ACaptureTakesTheMessagesOfItsThreadAndOthersAreKeptApart) {
 }
 
 }  // namespace
-}  // namespace bookspin::output
+}  // namespace bookspin::video

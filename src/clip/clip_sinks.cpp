@@ -1,4 +1,4 @@
-#include "output/clip_sinks.hpp"
+#include "clip/clip_sinks.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -9,13 +9,13 @@
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 
-namespace bookspin::output {
+namespace bookspin::clip {
 
 namespace {
 
 std::filesystem::path make_parent(const std::filesystem::path& file) {
   std::error_code ec;
-  make_directories(file.parent_path(), ec);
+  output::make_directories(file.parent_path(), ec);
   if (ec) throw_output_error("cannot create directory", file.parent_path(), ec.value());
   return file;
 }
@@ -40,29 +40,29 @@ ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options,
       png_queue_(2 * static_cast<std::size_t>(std::max(1, options.png_workers))) {
   if (options_.formats.empty()) throw std::invalid_argument("ClipSinks: no video format");
   for (const auto& path : tile_csvs)
-    tile_csvs_.push_back(std::make_unique<DiagnosticsCsvFile>(path));
-  const EncoderSettings& e = options_.encoder;
+    tile_csvs_.push_back(std::make_unique<output::DiagnosticsCsvFile>(path));
+  const video::EncoderSettings& e = options_.encoder;
   // Each video in its own member, opened before any thread starts; the threads share out
   // the cores the encoders would otherwise each take for themselves.
   if (wants(options_, "mp4")) {
     mp4_.emplace(make_parent(paths.mp4), e);
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { mp4_->add_frame(f); };
-    videos_.back()->finish = [this](OutputSet& set) { mp4_->finish(&set, options_.stop); };
+    videos_.back()->finish = [this](output::OutputSet& set) { mp4_->finish(&set, options_.stop); };
   }
   if (wants(options_, "webm")) {
     webm_.emplace(make_parent(paths.webm),
-                  WebmSettings{e.width, e.height, e.fps, options_.webm_crf, e.threads});
+                  video::WebmSettings{e.width, e.height, e.fps, options_.webm_crf, e.threads});
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { webm_->add_frame(f); };
-    videos_.back()->finish = [this](OutputSet& set) { webm_->finish(&set, options_.stop); };
+    videos_.back()->finish = [this](output::OutputSet& set) { webm_->finish(&set, options_.stop); };
   }
   if (wants(options_, "gif")) {
-    gif_.emplace(make_parent(paths.gif),
-                 GifSettings{e.width, e.height, e.fps, options_.gif_width, options_.gif_fps});
+    gif_.emplace(make_parent(paths.gif), video::GifSettings{e.width, e.height, e.fps,
+                                                            options_.gif_width, options_.gif_fps});
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { gif_->add_frame(f); };
-    videos_.back()->finish = [this](OutputSet& set) { gif_->finish(&set, options_.stop); };
+    videos_.back()->finish = [this](output::OutputSet& set) { gif_->finish(&set, options_.stop); };
   }
   if (videos_.empty()) throw std::invalid_argument("ClipSinks: unknown video format");
   if (options_.write_png) frames_.emplace(paths.frames_dir);
@@ -152,7 +152,7 @@ std::optional<RgbaImage> ClipSinks::spare_frame() {
   return image;
 }
 
-void ClipSinks::finish(OutputSet& set) {
+void ClipSinks::finish(output::OutputSet& set) {
   stop_workers();
   rethrow_if_failed();
   // A failed CSV write stops here, before the videos are finalized.
@@ -164,4 +164,4 @@ void ClipSinks::finish(OutputSet& set) {
   for (auto& csv : tile_csvs_) csv->finish(set);
 }
 
-}  // namespace bookspin::output
+}  // namespace bookspin::clip

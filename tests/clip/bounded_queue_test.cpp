@@ -1,4 +1,4 @@
-#include "output/bounded_queue.hpp"
+#include "clip/bounded_queue.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-namespace bookspin::output {
+namespace bookspin::clip {
 namespace {
 
 TEST(BoundedQueue, IsFifoAndDrainsAfterClose) {
@@ -71,4 +71,4 @@ TEST(BoundedQueue, ManyProducersAndConsumersLoseNothing) {
 }
 
 }  // namespace
-}  // namespace bookspin::output
+}  // namespace bookspin::clip

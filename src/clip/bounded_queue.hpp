@@ -8,7 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
-namespace bookspin::output {
+namespace bookspin::clip {
 
 /// Multi-producer, multi-consumer. push() blocks while full, pop() blocks
 /// while empty; close() wakes everyone: later pushes fail, pops drain what is
@@ -76,4 +76,4 @@ class BoundedQueue {
   bool closed_ = false;
 };
 
-}  // namespace bookspin::output
+}  // namespace bookspin::clip

@@ -1,12 +1,12 @@
 #pragma once
-// Internal to the output stage: choose and open an H.264 encoder, falling back
+// Internal to the video stage: choose and open an H.264 encoder, falling back
 // to libx264 when the requested one is missing or refuses to open.
 #include <string>
 
-#include "output/libav_support.hpp"
-#include "output/mp4_encoder.hpp"
+#include "video/libav_support.hpp"
+#include "video/mp4_encoder.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 
 struct OpenedEncoder {
   libav::CodecContextPtr context;
@@ -27,4 +27,4 @@ std::string probe_encoder(const std::string& name);
 /// True for x264's preset names, "ultrafast" … "placebo".
 bool is_x264_preset(const std::string& preset);
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

@@ -8,7 +8,7 @@
 
 #include "common/rgba_image.hpp"
 
-namespace bookspin::output::testing {
+namespace bookspin::video::testing {
 
 struct Mp4Probe {
   std::string format_name;  ///< demuxer, e.g. "mov,mp4,m4a,3gp,3g2,mj2"
@@ -29,4 +29,4 @@ Mp4Probe probe_mp4(const std::filesystem::path& path);
 /// The file's top-level box types in order, e.g. {"ftyp", "moov", "free", "mdat"}.
 std::vector<std::string> top_level_boxes(const std::filesystem::path& path);
 
-}  // namespace bookspin::output::testing
+}  // namespace bookspin::video::testing

@@ -1,14 +1,14 @@
-#include "output/mp4_encoder.hpp"
+#include "video/mp4_encoder.hpp"
 
 #include <ctime>
 #include <stdexcept>
 #include <string>
 
 #include "output/atomic_output.hpp"
-#include "output/codec_selection.hpp"
-#include "output/libav_support.hpp"
+#include "video/codec_selection.hpp"
+#include "video/libav_support.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 
 double thread_cpu_seconds() {
@@ -43,7 +43,7 @@ void validate(const EncoderSettings& settings) {
 // open file, via `format`) are released before `output` deletes the temporary.
 struct Mp4Encoder::Impl {
   EncoderSettings settings;
-  AtomicFile output;
+  output::AtomicFile output;
   std::string codec_name;
   std::string fallback_message;
   libav::OutputFormatPtr format;
@@ -192,7 +192,7 @@ void Mp4Encoder::add_frame(const RgbaImage& image) {
   ++s.frames_added;
 }
 
-void Mp4Encoder::finish(OutputSet* set, const StopPoll& stop) {
+void Mp4Encoder::finish(output::OutputSet* set, const StopPoll& stop) {
   Impl& s = *impl_;
   if (s.closed) throw std::logic_error("Mp4Encoder::finish called twice");
   s.closed = true;  // a failed finish cannot be retried; the destructor cleans up
@@ -217,4 +217,4 @@ const std::string& Mp4Encoder::fallback_message() const { return impl_->fallback
 const std::filesystem::path& Mp4Encoder::path() const { return impl_->output.final_path(); }
 double Mp4Encoder::conversion_seconds() const { return impl_->conversion_seconds; }
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

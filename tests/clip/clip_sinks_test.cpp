@@ -1,6 +1,6 @@
 // ClipSinks with a comparison's CSVs: every tile's rows in its own file, put in place with
 // the run's other outputs or not at all.
-#include "output/clip_sinks.hpp"
+#include "clip/clip_sinks.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,13 +10,13 @@
 #include <stdexcept>
 
 #include "support/scratch.hpp"
-#include "test_images.hpp"
+#include "support/test_images.hpp"
 
-namespace bookspin::output {
+namespace bookspin::clip {
 namespace {
 namespace fs = std::filesystem;
 using bookspin::test::ScratchDir;
-using testing::moving_square_frame;
+using test::moving_square_frame;
 
 constexpr int kWidth = 64, kHeight = 48, kFrames = 3, kTiles = 3;
 
@@ -70,7 +70,7 @@ TEST(ClipSinks, WritesEveryTilesRowsToItsOwnCsv) {
       const std::vector<physics::Diagnostics> rows{row_of(i, 0), row_of(i, 1), row_of(i, 2)};
       sinks.add(i, moving_square_frame(kWidth, kHeight, i), rows);
     }
-    OutputSet outputs;
+    output::OutputSet outputs;
     sinks.finish(outputs);
     for (const char* name : {"clip.mp4", "clip/diagnostics-a.csv", "clip/diagnostics-b.csv"})
       EXPECT_FALSE(fs::exists(dir / name)) << name << " in place before the commit";
@@ -93,7 +93,7 @@ TEST(ClipSinks, WritesEveryTilesRowsToItsOwnCsv) {
                                         "2,2.5,0,0,0,0,0,0,0,0,3,,,,0,0,1,,,,1,0,0,0,0,0,0"}};
   const char* names[kTiles] = {"a", "b", "c"};
   for (int tile = 0; tile < kTiles; ++tile) {
-    std::string expected = diagnostics_csv_header() + "\n";
+    std::string expected = output::diagnostics_csv_header() + "\n";
     for (const char* row : rows[tile]) expected += std::string(row) + "\n";
     EXPECT_EQ(read_file(dir / ("clip/diagnostics-" + std::string(names[tile]) + ".csv")), expected)
         << "tile " << names[tile];
@@ -118,4 +118,4 @@ TEST(ClipSinks, RefusesFramesWithoutOneRowPerCsv) {
 }
 
 }  // namespace
-}  // namespace bookspin::output
+}  // namespace bookspin::clip

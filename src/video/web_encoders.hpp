@@ -7,9 +7,9 @@
 
 #include "common/rgba_image.hpp"
 #include "common/stop.hpp"
-#include "output/mp4_encoder.hpp"
+#include "video/mp4_encoder.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 
 /// A WebM clip: one VP9 stream (libvpx-vp9), yuv420p BT.709 limited range, constant frame
 /// rate fps/1, at the frames' own size.
@@ -67,7 +67,7 @@ class WebmEncoder {
   WebmEncoder& operator=(const WebmEncoder&) = delete;
   /// `frame`: RGBA, top row first, exactly width×height.
   void add_frame(const RgbaImage& frame);
-  void finish(OutputSet* set = nullptr, const StopPoll& stop = {});
+  void finish(output::OutputSet* set = nullptr, const StopPoll& stop = {});
   std::int64_t frame_count() const;
 
  private:
@@ -89,7 +89,7 @@ class GifEncoder {
   /// `frame`: RGBA, top row first, exactly source_width×source_height; only every step-th
   /// call (the first included) reaches the GIF.
   void add_frame(const RgbaImage& frame);
-  void finish(OutputSet* set = nullptr, const StopPoll& stop = {});
+  void finish(output::OutputSet* set = nullptr, const StopPoll& stop = {});
   /// Frames written to the GIF so far (after finish(): all of them).
   std::int64_t frame_count() const;
 
@@ -98,4 +98,4 @@ class GifEncoder {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

@@ -6,7 +6,7 @@
 #include "common/rgba_image.hpp"
 #include "mp4_probe.hpp"
 
-namespace bookspin::output::testing {
+namespace bookspin::video::testing {
 
 /// Mean absolute difference per channel (R, G, B), 0…255, of `decoded` against `expected`
 /// over the rectangle [x0, x1) × [y0, y1) of `decoded`; `scale` maps decoded pixels to
@@ -26,4 +26,4 @@ void expect_video_stream(const Mp4Probe& probe, const std::string& codec, int wi
 void expect_moving_square(const RgbaImage& decoded, int width, int height, int index, int scale,
                           double square_max, double frame_max);
 
-}  // namespace bookspin::output::testing
+}  // namespace bookspin::video::testing

@@ -16,16 +16,15 @@
 #include <thread>
 #include <vector>
 
+#include "clip/bounded_queue.hpp"
 #include "common/rgba_image.hpp"
 #include "common/stop.hpp"
 #include "output/atomic_output.hpp"
-#include "output/bounded_queue.hpp"
 #include "output/diagnostics_csv.hpp"
-#include "output/mp4_encoder.hpp"
-#include "output/web_encoders.hpp"
 #include "physics/simulator.hpp"
+#include "video/video.hpp"
 
-namespace bookspin::output {
+namespace bookspin::clip {
 
 /// Where a clip's outputs go (the clip product names them: products/clip.hpp). Only the
 /// videos of SinkOptions::formats are written; the frames only with SinkOptions::write_png.
@@ -44,13 +43,13 @@ struct SinkOptions {
   bool write_png = true;
   int png_compression = 1;  ///< deflate level 0–9 (output::write_png)
   int png_workers = 1;      ///< threads compressing PNGs
-  output::EncoderSettings encoder;
+  video::EncoderSettings encoder;
   /// Videos to write, each of "mp4", "webm", "gif" at most once (scene::kVideoFormats);
   /// every one gets the same frames.
   std::vector<std::string> formats{"mp4"};
-  int webm_crf = 32;    ///< WebmSettings::crf
-  int gif_width = 640;  ///< GifSettings::width
-  int gif_fps = 15;     ///< GifSettings::gif_fps
+  int webm_crf = 32;    ///< video::WebmSettings::crf
+  int gif_width = 640;  ///< video::GifSettings::width
+  int gif_fps = 15;     ///< video::GifSettings::gif_fps
   /// Polled by finish() while the encoders finish their long passes (the MP4's and WebM's
   /// flushes, the GIF's palette pass): a signal throws Interrupted (common/stop.hpp).
   StopPoll stop;
@@ -60,7 +59,7 @@ class ClipSinks {
  public:
   /// Opens all outputs (temporaries). `tile_csvs`: a comparison's diagnostics CSVs of its
   /// tiles after the first (whose CSV is paths.csv), in tile order. Throws OutputError,
-  /// EncoderError, std::invalid_argument.
+  /// video::EncoderError, std::invalid_argument.
   ClipSinks(const ClipPaths& paths, const SinkOptions& options,
             const std::vector<std::filesystem::path>& tile_csvs = {});
   /// Without finish(): stops the workers and removes every temporary. Never throws.
@@ -82,7 +81,7 @@ class ClipSinks {
   /// nothing is in place until set.commit(), which must come before these sinks are
   /// destroyed. Rethrows the first error of a worker. Throws Interrupted when
   /// SinkOptions::stop answers a signal while an encoder finishes (nothing put in place).
-  void finish(OutputSet& set);
+  void finish(output::OutputSet& set);
   /// A frame buffer the sinks are done with, to render the next frame into instead of
   /// allocating (and page-faulting) a new one; std::nullopt if none is free now.
   std::optional<RgbaImage> spare_frame();
@@ -94,8 +93,8 @@ class ClipSinks {
   /// One video file and the queue of frames its thread encodes.
   struct Video {
     std::function<void(const RgbaImage&)> add_frame;
-    std::function<void(OutputSet&)> finish;
-    output::BoundedQueue<Frame> queue{4};
+    std::function<void(output::OutputSet&)> finish;
+    BoundedQueue<Frame> queue{4};
   };
   void encode_loop(Video& video);
   void png_loop();
@@ -106,20 +105,20 @@ class ClipSinks {
 
   ClipPaths paths_;
   SinkOptions options_;
-  std::optional<output::Mp4Encoder> mp4_;
-  std::optional<output::WebmEncoder> webm_;
-  std::optional<output::GifEncoder> gif_;
+  std::optional<video::Mp4Encoder> mp4_;
+  std::optional<video::WebmEncoder> webm_;
+  std::optional<video::GifEncoder> gif_;
   std::optional<output::AtomicDirectory> frames_;
-  DiagnosticsCsvFile csv_;
-  std::vector<std::unique_ptr<DiagnosticsCsvFile>> tile_csvs_;
+  output::DiagnosticsCsvFile csv_;
+  std::vector<std::unique_ptr<output::DiagnosticsCsvFile>> tile_csvs_;
   // Before the queues: frames left in them at destruction come back here.
   std::mutex spare_mutex_;
   std::vector<RgbaImage> spares_;
   std::vector<std::unique_ptr<Video>> videos_;
-  output::BoundedQueue<std::pair<int, Frame>> png_queue_;
+  BoundedQueue<std::pair<int, Frame>> png_queue_;
   std::mutex error_mutex_;
   std::exception_ptr error_;
   std::vector<std::thread> workers_;
 };
 
-}  // namespace bookspin::output
+}  // namespace bookspin::clip

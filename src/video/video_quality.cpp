@@ -1,4 +1,4 @@
-#include "output/video_quality.hpp"
+#include "video/video_quality.hpp"
 
 #include <array>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "output/libav_support.hpp"
-#include "output/mp4_encoder.hpp"
+#include "video/libav_support.hpp"
+#include "video/mp4_encoder.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 
 struct InputFormatDeleter {
@@ -167,4 +167,4 @@ double psnr_db(double squared_error, std::int64_t samples) {
   return std::min(kPsnrIdentical, 10.0 * std::log10(255.0 * 255.0 / mse));
 }
 
-}  // namespace bookspin::output
+}  // namespace bookspin::video

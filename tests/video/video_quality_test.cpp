@@ -1,6 +1,6 @@
 // SSIM and PSNR against closed forms worked by hand, and a clip decoded back to RGB against
 // its frames and against the tests' own decoder (mp4_probe.cpp).
-#include "output/video_quality.hpp"
+#include "video/video_quality.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "mp4_probe.hpp"
-#include "output/mp4_encoder.hpp"
 #include "support/scratch.hpp"
-#include "test_images.hpp"
+#include "support/test_images.hpp"
+#include "video/mp4_encoder.hpp"
 
-namespace bookspin::output {
+namespace bookspin::video {
 namespace {
 
 constexpr double kC1 = 6.5025, kC2 = 58.5225;  // (0.01·255)², (0.03·255)²
@@ -33,7 +33,7 @@ RgbaImage grey_checker(int width, int height, int a, int b) {
 }
 
 TEST(VideoQuality, IdenticalFramesHaveSsimOneAndTheCappedPsnr) {
-  const RgbaImage frame = testing::moving_square_frame(64, 48, 3);
+  const RgbaImage frame = test::moving_square_frame(64, 48, 3);
   const FrameQuality q = frame_quality(frame, frame);
   EXPECT_NEAR(q.ssim, 1.0, 1e-12);
   EXPECT_EQ(q.squared_error, 0.0);
@@ -80,7 +80,7 @@ TEST(VideoQuality, DecodeVideoGivesEveryFrameOfAClipInOrder) {
     settings.threads = 1;
     Mp4Encoder encoder(dir / "clip.mp4", settings);
     for (int i = 0; i < kFrames; ++i)
-      encoder.add_frame(testing::moving_square_frame(kWidth, kHeight, i));
+      encoder.add_frame(test::moving_square_frame(kWidth, kHeight, i));
     encoder.finish();
   }
   const testing::Mp4Probe probe = testing::probe_mp4(dir / "clip.mp4");
@@ -89,13 +89,13 @@ TEST(VideoQuality, DecodeVideoGivesEveryFrameOfAClipInOrder) {
   const std::int64_t decoded = decode_video(dir / "clip.mp4", [&](const RgbaImage& frame) {
     ASSERT_LT(index, kFrames);
     const FrameQuality original =
-        frame_quality(testing::moving_square_frame(kWidth, kHeight, index), frame);
+        frame_quality(test::moving_square_frame(kWidth, kHeight, index), frame);
     // 4:2:0 chroma blurs the red square's edges: about 35 dB at CRF 12.
     EXPECT_GT(psnr_db(original.squared_error, original.samples), 33.0) << "frame " << index;
     EXPECT_GT(original.ssim, 0.97) << "frame " << index;
     // A frame taken for another (order lost) would put the square 3 px away.
     const FrameQuality neighbour =
-        frame_quality(testing::moving_square_frame(kWidth, kHeight, (index + 1) % kFrames), frame);
+        frame_quality(test::moving_square_frame(kWidth, kHeight, (index + 1) % kFrames), frame);
     EXPECT_LT(psnr_db(neighbour.squared_error, neighbour.samples),
               psnr_db(original.squared_error, original.samples) - 6.0);
     const FrameQuality probed = frame_quality(probe.frames[index], frame);
@@ -108,4 +108,4 @@ TEST(VideoQuality, DecodeVideoGivesEveryFrameOfAClipInOrder) {
 }
 
 }  // namespace
-}  // namespace bookspin::output
+}  // namespace bookspin::video
