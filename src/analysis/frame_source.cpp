@@ -1,5 +1,7 @@
 #include "analysis/frame_source.hpp"
 
+#include <sstream>
+
 #include "engines/models.hpp"
 
 namespace bookspin::analysis {
@@ -27,6 +29,28 @@ bool FrameSource::next(physics::Pose& pose) {
   // Frame time from the step count, not the simulator's running sum, so rows are exact.
   pose.diagnostics.t = static_cast<double>(steps_) * scene_.dt;
   return true;
+}
+
+std::vector<RunFrames> run_frames(const scene::Scene& scene) {
+  const auto run = [](const scene::Scene& s) {
+    RunFrames frames{s, {}, std::nullopt};
+    FrameSource source(frames.scene);
+    physics::Pose pose;
+    while (source.next(pose)) frames.frames.push_back(pose.diagnostics);
+    frames.diverged_at = source.diverged_at();
+    return frames;
+  };
+  std::vector<RunFrames> runs;
+  if (scene.compare.empty()) runs.push_back(run(scene));
+  for (const auto& tile : scene.compare) runs.push_back(run(scene::tile_scene(scene, tile)));
+  return runs;
+}
+
+std::string divergence_warning(const std::string& who, double t, const std::string& reason,
+                               const std::string& kept) {
+  std::ostringstream w;
+  w << who << " diverged at t = " << t << (reason.empty() ? "" : "; " + reason) << "; " << kept;
+  return w.str();
 }
 
 }  // namespace bookspin::analysis

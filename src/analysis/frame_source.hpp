@@ -3,6 +3,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "physics/simulator.hpp"
 #include "scene/scene.hpp"
@@ -34,5 +35,23 @@ class FrameSource {
   std::optional<double> diverged_at_;
   std::string divergence_reason_;
 };
+
+/// One run of a scene from frame 0 to its end or divergence.
+struct RunFrames {
+  scene::Scene scene;                        ///< the run's scene (a comparison: its tile's)
+  std::vector<physics::Diagnostics> frames;  ///< every frame's diagnostics, frame 0 first
+  std::optional<double> diverged_at;         ///< when it diverged (FrameSource::diverged_at)
+};
+
+/// scene => its runs, each to its end or divergence: a single scene one run, a comparison one
+/// per [[compare]] tile (scene::tile_scene), in tile order.
+std::vector<RunFrames> run_frames(const scene::Scene& scene);
+
+/// The one warning of a run that diverged at `t` (time units), without "bookspin: warning: ":
+/// "<who> diverged at t = <t>[; <reason>]; <kept>", e.g. who "fig09: simulation", reason
+/// FrameSource::divergence_reason() (may be empty), kept "the clip holds the last finite
+/// frame". `t` as a stream writes a double (six significant digits).
+std::string divergence_warning(const std::string& who, double t, const std::string& reason,
+                               const std::string& kept);
 
 }  // namespace bookspin::analysis

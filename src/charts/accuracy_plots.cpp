@@ -137,4 +137,16 @@ AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
           energy_vs_dt_plot(rows, methods, flips), long_time_energy_plot(histories, history_flips)};
 }
 
+AccuracyImages accuracy_images(const std::vector<analysis::AccuracyRow>& rows,
+                               const std::vector<analysis::Method>& methods, double flips,
+                               const std::vector<analysis::EnergyHistory>& histories,
+                               double history_flips) {
+  const AccuracyPlots plots = accuracy_plots(rows, methods, flips, histories, history_flips);
+  const auto image = [](const overlay::PlotSpec& spec) {
+    return overlay::plot_image(spec, 1400, 900);
+  };
+  return {image(plots.orientation_error_vs_dt), image(plots.work_precision),
+          image(plots.energy_vs_dt), image(plots.long_time_energy)};
+}
+
 }  // namespace bookspin::charts

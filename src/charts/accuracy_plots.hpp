@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/accuracy.hpp"
+#include "common/rgba_image.hpp"
 #include "overlay/plot.hpp"
 
 namespace bookspin::charts {
@@ -54,5 +55,19 @@ AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
                              const std::vector<analysis::Method>& methods, double flips,
                              const std::vector<analysis::EnergyHistory>& histories,
                              double history_flips);
+
+/// The report's four plots drawn, 1400 × 900 pixels each.
+struct AccuracyImages {
+  RgbaImage orientation_error_vs_dt;
+  RgbaImage work_precision;
+  RgbaImage energy_vs_dt;
+  RgbaImage long_time_energy;
+};
+
+/// (rows, methods, histories) => the four plots of accuracy_plots(), drawn. No I/O.
+AccuracyImages accuracy_images(const std::vector<analysis::AccuracyRow>& rows,
+                               const std::vector<analysis::Method>& methods, double flips,
+                               const std::vector<analysis::EnergyHistory>& histories,
+                               double history_flips);
 
 }  // namespace bookspin::charts

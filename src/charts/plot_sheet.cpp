@@ -7,37 +7,27 @@
 #include <map>
 #include <sstream>
 
-#include "analysis/frame_source.hpp"
 #include "charts/decoration.hpp"
 #include "charts/panel.hpp"
-#include "output/output_dir.hpp"
-#include "output/png_writer.hpp"
 
 namespace bookspin::charts {
 
 namespace {
 
-/// One simulated run, start to end (or divergence).
+/// One run, start to end (or divergence), as the panel's curves.
 struct Run {
-  scene::Scene scene;
+  const scene::Scene& scene;
   DiagnosticsHistory history;
   std::optional<double> diverged_at;
 };
 
-Run simulate(const scene::Scene& scene) {
-  Run run{scene, {}, std::nullopt};
-  analysis::FrameSource source(run.scene);
-  physics::Pose pose;
-  while (source.next(pose)) run.history.add(pose.diagnostics);
-  run.diverged_at = source.diverged_at();
-  return run;
-}
-
-std::vector<Run> simulate_all(const scene::Scene& scene) {
-  std::vector<Run> runs;
-  if (scene.compare.empty()) runs.push_back(simulate(scene));
-  for (const auto& tile : scene.compare) runs.push_back(simulate(scene::tile_scene(scene, tile)));
-  return runs;
+std::vector<Run> histories_of(const std::vector<analysis::RunFrames>& runs) {
+  std::vector<Run> histories;
+  for (const auto& run : runs) {
+    histories.push_back({run.scene, {}, run.diverged_at});
+    for (const physics::Diagnostics& d : run.frames) histories.back().history.add(d);
+  }
+  return histories;
 }
 
 /// Title, then what was run: the model line (or the tiles), and any divergence.
@@ -102,8 +92,9 @@ bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots, const BlowUp& t
 
 }  // namespace
 
-PlotSheet plot_sheet_for(const scene::Scene& scene) {
-  const std::vector<Run> runs = simulate_all(scene);
+PlotSheet plot_sheet_for(const scene::Scene& scene,
+                         const std::vector<analysis::RunFrames>& frames) {
+  const std::vector<Run> runs = histories_of(frames);
   std::vector<PanelRun> panel_runs;
   for (const auto& run : runs) panel_runs.emplace_back(run.scene, run.history, run.scene.title);
   auto plots = panel_plots(panel_runs, clip_end_time(scene), std::nullopt);
@@ -131,11 +122,10 @@ PlotSheet plot_sheet_for(const scene::Scene& scene) {
   return {std::move(lines), std::move(plots)};
 }
 
-void write_plot_sheet(const PlotRequest& request) {
-  const PlotSheet sheet = plot_sheet_for(request.scene);
-  output::prepare_output_dir(request.png.parent_path());
-  output::write_png(request.png,
-                    plot_sheet(sheet.lines, sheet.plots, request.width, request.height));
+RgbaImage plot_sheet_image(const scene::Scene& scene, const std::vector<analysis::RunFrames>& runs,
+                           int width, int height) {
+  const PlotSheet sheet = plot_sheet_for(scene, runs);
+  return plot_sheet(sheet.lines, sheet.plots, width, height);
 }
 
 }  // namespace bookspin::charts

@@ -1,21 +1,15 @@
 #pragma once
 // A run's diagnostics over its whole length as one picture (`bookspin plot`): the panel's
 // curves without the cursor, for papers and slides.
-#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "analysis/frame_source.hpp"
+#include "common/rgba_image.hpp"
 #include "overlay/plot.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::charts {
-
-struct PlotRequest {
-  scene::Scene scene;         ///< a single or a comparison scene (every tile is plotted)
-  std::filesystem::path png;  ///< the sheet's file (the plot product names it)
-  int width = 1600;           ///< pixels
-  int height = 1000;          ///< pixels
-};
 
 /// What a plot sheet shows: its header lines and its plots.
 struct PlotSheet {
@@ -24,13 +18,13 @@ struct PlotSheet {
                                          ///< intermediate axis), E/E0 − 1, shape error
 };
 
-/// Simulates the scene (every tile of a comparison) to its end or divergence and lays out
-/// its sheet (no drawing, no files).
-PlotSheet plot_sheet_for(const scene::Scene& scene);
+/// The sheet of `scene` from its runs (analysis::run_frames: one, or one per tile of a
+/// comparison): a header (title, model line or tiles, divergences) and the panel's plots
+/// (body-frame ω, E/E0 − 1, shape error) against time. No drawing, no files.
+PlotSheet plot_sheet_for(const scene::Scene& scene, const std::vector<analysis::RunFrames>& runs);
 
-/// Simulates the scene (every tile of a comparison) to its end or divergence and writes
-/// request.png: a header (title, model line, divergences) and the panel's plots
-/// (body-frame ω, E/E0 − 1, shape error) against time. Throws OutputError.
-void write_plot_sheet(const PlotRequest& request);
+/// (scene, runs) => the sheet of plot_sheet_for() drawn, `width` × `height` pixels. No files.
+RgbaImage plot_sheet_image(const scene::Scene& scene, const std::vector<analysis::RunFrames>& runs,
+                           int width, int height);
 
 }  // namespace bookspin::charts

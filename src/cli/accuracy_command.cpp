@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "analysis/accuracy.hpp"
+#include "cache/freshness.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "products/accuracy.hpp"
@@ -21,10 +22,10 @@ int accuracy_command(const AccuracyOptions& options) {
   job.request.stop_signal = stop_poll();
   job.out_dir = options.out_dir;
   job.freshness = {options.force, options.verify, remake_note};
-  const products::Outcome outcome = products::make_accuracy(job);
-  if (outcome == products::Outcome::up_to_date)
+  const cache::Outcome outcome = products::make_accuracy(job);
+  if (outcome == cache::Outcome::up_to_date)
     std::printf("up to date: %s-accuracy\n", job.request.scene.name.c_str());
-  if (outcome == products::Outcome::made)
+  if (outcome == cache::Outcome::made)
     for (const auto& path : products::accuracy_layout(job.out_dir, job.request.scene).outputs())
       std::printf("wrote %s\n", path.c_str());
   return kExitOk;

@@ -142,9 +142,6 @@ struct ExploreOptions {
 /// line saying how to build it; a --shell that is not one is an input error.
 int explore_command(const ExploreOptions& options);
 
-/// "; REASON" for a simulator's divergence reason, "" when it gave none.
-std::string divergence_because(const std::string& reason);
-
 /// Parses argv and runs the chosen subcommand.
 int run_cli(int argc, char** argv);
 

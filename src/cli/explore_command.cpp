@@ -1,5 +1,6 @@
 #include <iostream>
 
+#include "cache/freshness.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "products/explorer.hpp"
@@ -39,7 +40,7 @@ int explore_command(const ExploreOptions& options) {
     request.scenes.push_back(std::move(scene));
   }
   const products::ExplorerOutcome done = products::make_explorer_page(request);
-  if (done.outcome == products::Outcome::up_to_date) {
+  if (done.outcome == cache::Outcome::up_to_date) {
     std::cout << "explorer: up to date: " << done.result.path.string() << std::endl;
     return kExitOk;
   }

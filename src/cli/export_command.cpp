@@ -1,6 +1,8 @@
 // `bookspin export --gltf`: a scene's body and its motion as an animated glTF binary.
 #include <iostream>
 
+#include "analysis/frame_source.hpp"
+#include "cache/freshness.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "jobs/lattice_note.hpp"
@@ -22,14 +24,15 @@ int export_command(const ExportOptions& options) {
   job.on_note = [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; };
   job.stop = stop_poll();
   const products::GltfExportResult result = products::make_gltf(job);
-  if (result.outcome == products::Outcome::up_to_date) {
+  if (result.outcome == cache::Outcome::up_to_date) {
     std::cout << "up to date: " << scene.name << ".glb" << std::endl;
     return kExitOk;
   }
   if (result.diverged_at) {
-    std::cerr << "bookspin: warning: " << scene.name
-              << ": simulation diverged at t = " << *result.diverged_at
-              << "; the animation stops at the last finite frame\n";
+    std::cerr << "bookspin: warning: "
+              << analysis::divergence_warning(scene.name + ": simulation", *result.diverged_at, "",
+                                              "the animation stops at the last finite frame")
+              << '\n';
   }
   std::cout << "exported: " << result.path.string() << " (" << result.keyframes << " keyframes, "
             << result.vertices << " vertices)" << std::endl;

@@ -1,6 +1,7 @@
 // `bookspin gallery`: OUT/index.html over the clips, frames and plots already under OUT.
 #include <iostream>
 
+#include "cache/freshness.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "products/gallery.hpp"
@@ -15,7 +16,7 @@ int gallery_command(const GalleryOptions& options) {
   job.stop_signal = stop_poll();
   const products::GalleryOutcome done = products::make_gallery(job);
   const std::string page = products::gallery_layout(job.out_dir).page.string();
-  if (done.outcome == products::Outcome::up_to_date) {
+  if (done.outcome == cache::Outcome::up_to_date) {
     std::cout << "up to date: " << std::filesystem::path(page).filename().string() << std::endl;
     return kExitOk;
   }

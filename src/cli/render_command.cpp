@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "cache/freshness.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
@@ -10,10 +11,6 @@
 #include "scene/scene.hpp"
 
 namespace bookspin::cli {
-
-std::string divergence_because(const std::string& reason) {
-  return reason.empty() ? "" : "; " + reason;
-}
 
 void remake_note(const std::string& name, const std::string& reason) {
   std::cerr << "bookspin: note: " << name << ": making it again: " << reason << '\n';
@@ -60,15 +57,11 @@ int render_command(const RenderArgs& args) {
   job.on_progress = [&progress](int done) { progress.update(done); };
   job.stop_signal = stop_poll();
   const products::ClipOutcome done = products::make_clip(job);
-  if (done.outcome == products::Outcome::up_to_date) {
+  if (done.outcome == cache::Outcome::up_to_date) {
     std::cout << "up to date: " << name << std::endl;
     for (const auto& warning : done.warnings)
       std::cerr << "bookspin: warning: " << warning << " (when it was rendered)\n";
     return kExitOk;
-  }
-  if (done.outcome == products::Outcome::interrupted) {
-    std::cerr << "\nbookspin: interrupted; removed the unfinished outputs of " << name << '\n';
-    return 128 + done.result.signal;
   }
   progress.finish(done.result.frames);
   for (const auto& warning : done.warnings) std::cerr << "bookspin: warning: " << warning << '\n';

@@ -1,6 +1,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "analysis/frame_source.hpp"
 #include "cli/commands.hpp"
 #include "jobs/lattice_note.hpp"
 #include "jobs/simulation.hpp"
@@ -11,10 +12,11 @@ namespace bookspin::cli {
 namespace {
 
 void warn_diverged(const scene::Scene& scene, const jobs::SimulationResult& result) {
-  std::cerr << "bookspin: warning: " << scene.name
-            << ": simulation diverged at t = " << *result.diverged_at
-            << divergence_because(result.divergence_reason) << "; kept the " << result.rows
-            << " rows before it\n";
+  std::cerr << "bookspin: warning: "
+            << analysis::divergence_warning(
+                   scene.name + ": simulation", *result.diverged_at, result.divergence_reason,
+                   "kept the " + std::to_string(result.rows) + " rows before it")
+            << '\n';
 }
 
 }  // namespace

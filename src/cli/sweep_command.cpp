@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cache/freshness.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "common/errors.hpp"
@@ -59,13 +60,9 @@ int sweep_command(const SweepOptions& options) {
     job.freshness = {options.force, options.verify, remake_note};
     job.stop_signal = stop_poll();
     const products::SweepOutcome done = products::make_sweep(job);
-    if (done.outcome == products::Outcome::up_to_date) {
+    if (done.outcome == cache::Outcome::up_to_date) {
       std::cout << "up to date: " << done.name << "-sweep" << std::endl;
       return kExitOk;
-    }
-    if (done.outcome == products::Outcome::interrupted) {
-      std::fprintf(stderr, "bookspin: sweep interrupted; nothing written\n");
-      return 128 + done.signal;
     }
     written = done.written;
   }

@@ -127,8 +127,7 @@ ClipResult render_clip(const ClipRequest& request) {
   ClipResult result;
   FrameFinisher finisher(request, *composer, tiles, sinks, result);
   for (int index = 0; index < scene.frames; ++index) {
-    if ((result.signal = stop_signal(request.stop_signal, "render frames")) != 0)
-      return result;  // the sinks remove their temporaries
+    stop_if_asked(request.stop_signal, "render frames");  // the sinks remove their temporaries
     for (std::size_t i = 0; i < tiles.size(); ++i) {
       TileRun& tile = *tiles[i];
       const std::size_t samples = tile.frame.history.size();
@@ -145,7 +144,7 @@ ClipResult render_clip(const ClipRequest& request) {
   record_divergence(scene, tiles, result);
   output::OutputSet outputs;
   sinks.finish(outputs);
-  result.signal = commit_unless_stopped(request, outputs);
+  commit_unless_stopped(request, outputs);
   return result;
 }
 

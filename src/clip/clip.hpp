@@ -15,10 +15,9 @@ namespace bookspin::clip {
 /// diagnostics CSV(s) at request.paths (and a comparison's request.tile_csvs). Each frame of a
 /// single scene is pixel for pixel what render_frame() (frame.hpp) makes of it. After a
 /// divergence the last finite pose is held with a "diverged at t = …" caption (a comparison:
-/// in that tile), so the clip keeps its length. Stops early, leaving nothing unfinished behind,
-/// when request.stop_signal answers a signal.
-/// Throws OutputError (an output cannot be written), video::EncoderError,
-/// render::RenderError (no usable EGL/GL).
+/// in that tile), so the clip keeps its length. Throws Interrupted, leaving nothing unfinished
+/// behind and nothing put in place, when request.stop_signal answers a signal; OutputError (an
+/// output cannot be written), video::EncoderError, render::RenderError (no usable EGL/GL).
 ClipResult render_clip(const ClipRequest& request);
 
 }  // namespace bookspin::clip

@@ -30,14 +30,11 @@ SinkOptions sink_options(const ClipRequest& request) {
   return s;
 }
 
-int commit_unless_stopped(const ClipRequest& request, output::OutputSet& outputs) {
+void commit_unless_stopped(const ClipRequest& request, output::OutputSet& outputs) {
   // Asked to stop while the videos were finalized: abandon the run. Nothing is in place yet,
   // and the outputs' owners remove their temporaries.
-  if (const int signal = request.stop_signal ? request.stop_signal("commit outputs") : 0;
-      signal != 0)
-    return signal;
+  stop_if_asked(request.stop_signal, "commit outputs");
   outputs.commit();  // every output of the run, or none
-  return 0;
 }
 
 }  // namespace bookspin::clip

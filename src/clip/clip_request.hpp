@@ -45,9 +45,6 @@ struct ClipResult {
   std::optional<double> diverged_at;  ///< single scene: when its simulation diverged
   std::string divergence_reason;      ///< single scene: the simulator's reason, if it gave one
   std::vector<TileDivergence> diverged_tiles;  ///< comparison scene: every diverged tile
-  /// The signal that stopped the clip, 0 if it ran to the end. A stopped clip leaves no
-  /// output behind (every temporary removed), earlier complete files untouched.
-  int signal = 0;
 };
 
 /// The encoder settings of a render of `scene` (render.width, height, fps, codec, crf,
@@ -57,9 +54,9 @@ video::EncoderSettings encoder_settings(const scene::Scene& scene, int jobs);
 /// Sink settings from the scene's render.* keys and the request's options.
 SinkOptions sink_options(const ClipRequest& request);
 
-/// The end of a clip: unless request.stop_signal() asks to stop (the signal is returned and
+/// The end of a clip: unless request.stop_signal() asks to stop (Interrupted is thrown and
 /// nothing is put in place), puts every complete output of the run in place together
-/// (`outputs.commit()`: all or none) and returns 0. Throws OutputError from the commit.
-int commit_unless_stopped(const ClipRequest& request, output::OutputSet& outputs);
+/// (`outputs.commit()`: all or none). Throws OutputError from the commit.
+void commit_unless_stopped(const ClipRequest& request, output::OutputSet& outputs);
 
 }  // namespace bookspin::clip

@@ -3,9 +3,10 @@
 // handler only records the signal; every long loop of a command that writes (a clip's frames,
 // the encoders' finishing passes, a sweep point's steps, an accuracy run, an export's frames,
 // the explorer's and the gallery's scenes) polls a StopPoll between units of work and, when it
-// answers a signal, throws Interrupted before anything is put in place. Each product turns
-// Interrupted into its "interrupted" outcome (the previous outputs and their manifest stay as
-// they were); the command line exits 128 + signal (130, 143).
+// answers a signal, throws Interrupted before anything is put in place. Interrupted goes up
+// through the product untouched (cache::make_cached keeps the previous outputs and their
+// manifest as they were) to the command line, which catches it once and exits 128 + signal
+// (130, 143).
 #include <exception>
 #include <functional>
 #include <string>
@@ -19,8 +20,8 @@ namespace bookspin {
 /// stops.
 using StopPoll = std::function<int(std::string_view stage)>;
 
-/// A run stopped by `signal` before it put its outputs in place: not an error. The caller that
-/// owns the outputs catches it (products/*), or the command line maps it to 128 + signal.
+/// A run stopped by `signal` before it put its outputs in place: not an error. Caught once, by
+/// the command line (cli/run_guarded.hpp), which maps it to 128 + signal.
 class Interrupted : public std::exception {
  public:
   explicit Interrupted(int signal)

@@ -1,27 +1,18 @@
 #pragma once
-// `bookspin accuracy`: every model × integrator × dt against the exact motion, as a table,
-// a CSV and plots (docs/physics.md §8, §10). Measured first, into one value (AccuracyReport);
-// then that value is handed once to the writer of the report's files.
-#include <filesystem>
+// `bookspin accuracy`: every model × integrator × dt against the exact motion (docs/physics.md
+// §8, §10), measured into one value (AccuracyReport), and that value as the report's two CSV
+// tables. Its plots are the charts stage's (charts/accuracy_plots.hpp), its files the accuracy
+// product's (products/accuracy.hpp).
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "analysis/accuracy.hpp"
 #include "common/stop.hpp"
+#include "output/csv_writer.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
-
-/// Where the report goes (the accuracy product names every path).
-struct AccuracyPaths {
-  std::filesystem::path csv;                 ///< one row per method and dt
-  std::filesystem::path png;                 ///< error against dt, log–log
-  std::filesystem::path work_precision_png;  ///< error against cost, from the rows
-  std::filesystem::path energy_vs_dt_png;    ///< energy error against dt, from the rows
-  std::filesystem::path energy_png;          ///< the long-time energy plot
-  std::filesystem::path energy_csv;          ///< its data: t, one column per method
-};
 
 /// The settings of the long-time energy plot: each of its methods at dt = 1/60 over 100 flip
 /// periods, in 400 windows.
@@ -30,8 +21,7 @@ inline constexpr double kLongTimeDt = 1.0 / 60.0;
 inline constexpr int kLongTimeWindows = 400;
 
 struct AccuracyRequest {
-  scene::Scene scene;  ///< the book, initial spin and model toggles
-  AccuracyPaths paths;
+  scene::Scene scene;       ///< the book, initial spin and model toggles
   double flips = 10.0;      ///< run length in exact flip periods
   std::vector<double> dts;  ///< time steps to try, time units
   /// The methods to measure (analysis::parse_methods()); empty: analysis::accuracy_methods().
@@ -44,7 +34,7 @@ struct AccuracyRequest {
   StopPoll stop_signal;
 };
 
-/// Everything one report measures, in one value: what write_accuracy_report() writes.
+/// Everything one report measures, in one value.
 struct AccuracyReport {
   double flips = 0.0;                       ///< run length of the rows, in exact flip periods
   std::vector<analysis::Method> methods;    ///< the methods measured, in the table's order
@@ -72,14 +62,15 @@ std::vector<analysis::Method> long_time_methods(const std::vector<analysis::Meth
 /// kMaxAccuracySteps steps), Interrupted.
 AccuracyReport measure_accuracy(const AccuracyRequest& request);
 
-/// Writes `report` to `paths`: the CSV (its flip_period and flip_period_error cells empty where
-/// fewer than two flips were seen), the error plot, the work–precision plot, the energy error
-/// against dt, the energy plot and its CSV. Returns the paths written, in that order. Throws
-/// OutputError.
-std::vector<std::filesystem::path> write_accuracy_report(const AccuracyPaths& paths,
-                                                         const AccuracyReport& report);
+/// The accuracy CSV of `report` (accuracy_csv_columns()), one row per method and dt: a cell is
+/// empty where there is no value (no orientation error after a divergence, no flip period
+/// where fewer than two flips were seen, no first flip where none was; docs/outputs.md,
+/// "Numbers").
+output::CsvTable accuracy_csv(const AccuracyReport& report);
 
-/// write_accuracy_report(request.paths, measure_accuracy(request)).
-std::vector<std::filesystem::path> run_accuracy(const AccuracyRequest& request);
+/// The long-time energy CSV of `report`: t, then one column per history
+/// (charts::method_label); a diverged run's history is shorter, and its missing windows stay
+/// empty.
+output::CsvTable energy_csv(const AccuracyReport& report);
 
 }  // namespace bookspin::jobs

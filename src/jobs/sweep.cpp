@@ -6,20 +6,11 @@
 #include <mutex>
 #include <thread>
 
-#include "charts/sweep_plots.hpp"
 #include "common/errors.hpp"
-#include "jobs/sweep_shard.hpp"
-#include "output/atomic_output.hpp"
-#include "output/output_dir.hpp"
-#include "output/png_writer.hpp"
 
 namespace bookspin::jobs {
 
-namespace {
-
-/// The table as its picture reads it (charts/sweep_plots.hpp): the ranges as axes, the rows'
-/// cells without their grid index.
-charts::SweepChart chart_of(const SweepTable& table) {
+charts::SweepChart sweep_chart(const SweepTable& table) {
   charts::SweepChart chart{table.scene_name, {}, table.measures, table.header, {}};
   for (const VaryRange& r : table.ranges)
     chart.axes.push_back({r.key, r.start, r.stop, r.log, r.values()});
@@ -27,22 +18,7 @@ charts::SweepChart chart_of(const SweepTable& table) {
   return chart;
 }
 
-/// The full CSV and its picture, at the layout's paths.
-std::vector<std::filesystem::path> write_full_outputs(const SweepTable& table,
-                                                      const SweepPaths& paths) {
-  output::prepare_output_dir(paths.csv.parent_path());
-  {
-    output::AtomicTextFile file(paths.csv);
-    write_sweep_csv(table, file.stream());
-    file.commit();
-  }
-  output::write_png(paths.png, charts::sweep_sheet(chart_of(table)));
-  return {paths.csv, paths.png};
-}
-
-}  // namespace
-
-SweepResult run_sweep(const SweepRequest& request) {
+SweepTable measure_sweep(const SweepRequest& request) {
   const scene::Scene base =
       request.scene ? *request.scene : scene::parse_scene(request.scene_path, request.overrides);
   if (!base.compare.empty()) {
@@ -107,11 +83,7 @@ SweepResult run_sweep(const SweepRequest& request) {
   work();
   for (auto& t : threads) t.join();
   if (failure) std::rethrow_exception(failure);
-  SweepResult result;
-  if (signal > 0) {
-    result.signal = signal;
-    return result;
-  }
+  if (signal > 0) throw Interrupted(signal);
 
   SweepTable table;
   table.scene_name = base.name;
@@ -121,24 +93,7 @@ SweepResult run_sweep(const SweepRequest& request) {
   for (std::size_t r = 0; r < indices.size(); ++r)
     table.rows.emplace_back(indices[r],
                             sweep_row_cells(grid.point(indices[r]), table.measures, results[r]));
-  if (!sharded) {
-    result.written = write_full_outputs(table, request.layout(table.scene_name));
-    return result;
-  }
-  const auto path =
-      request.layout(table.scene_name).shard(request.shard_index, request.shard_count);
-  write_sweep_shard(table, base, grid.size(), request.shard_index, request.shard_count, path);
-  result.written.push_back(path);
-  return result;
-}
-
-std::vector<std::filesystem::path> merge_sweep(const std::vector<std::filesystem::path>& shards,
-                                               const SweepLayout& layout) {
-  const SweepTable table =
-      read_sweep_shards(shards, [&layout](const std::string& scene_name, int k, int n) {
-        return layout(scene_name).shard(k, n);
-      });
-  return write_full_outputs(table, layout(table.scene_name));
+  return table;
 }
 
 }  // namespace bookspin::jobs

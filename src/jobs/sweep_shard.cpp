@@ -11,9 +11,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
-#include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
-#include "output/output_dir.hpp"
 #include "output/sha256.hpp"
 #include "scene/canonical.hpp"
 
@@ -102,18 +100,16 @@ bool is_number(const std::string& cell) {
 
 }  // namespace
 
-void write_sweep_shard(const SweepTable& table, const scene::Scene& scene, std::size_t grid_points,
-                       int k, int n, const std::filesystem::path& path) {
-  output::prepare_output_dir(path.parent_path());
-  output::AtomicTextFile file(path);
-  file.stream() << kShardMagic << k << " of " << n << ": "
-                << shard_meta(table, grid_points,
-                              output::sha256_text(scene::canonical_json(scene, 0)))
-                << '\n'
-                << csv_line(table.header, "grid_index") << '\n';
+std::string sweep_shard_text(const SweepTable& table, const scene::Scene& scene,
+                             std::size_t grid_points, int k, int n) {
+  std::ostringstream text;
+  text << kShardMagic << k << " of " << n << ": "
+       << shard_meta(table, grid_points, output::sha256_text(scene::canonical_json(scene, 0)))
+       << '\n'
+       << csv_line(table.header, "grid_index") << '\n';
   for (const auto& [index, cells] : table.rows)
-    file.stream() << csv_line(cells, std::to_string(index)) << '\n';
-  file.commit();
+    text << csv_line(cells, std::to_string(index)) << '\n';
+  return text.str();
 }
 
 SweepTable read_sweep_shards(const std::vector<std::filesystem::path>& shards,

@@ -14,14 +14,13 @@
 
 namespace bookspin::jobs {
 
-/// Writes shard k of n (k from 0) of `table` to `path`, through output::AtomicTextFile: the
-/// first line "# bookspin sweep shard K of N: " then the scene name, the SHA-256 of `scene`
-/// (the resolved scene after --set, before the grid's values) in canonical form
-/// (scene::canonical_json, as in the manifests), bookspin's build id, `grid_points` (the whole
-/// grid's size), each range (VaryRange::spec) and the measures; then the header with
-/// grid_index first, then one line per row. Throws OutputError.
-void write_sweep_shard(const SweepTable& table, const scene::Scene& scene, std::size_t grid_points,
-                       int k, int n, const std::filesystem::path& path);
+/// The text of shard k of n (k from 0) of `table`: the first line "# bookspin sweep shard K
+/// of N: " then the scene name, the SHA-256 of `scene` (the resolved scene after --set, before
+/// the grid's values) in canonical form (scene::canonical_json, as in the manifests),
+/// bookspin's build id, `grid_points` (the whole grid's size), each range (VaryRange::spec)
+/// and the measures; then the header with grid_index first, then one line per row. No I/O.
+std::string sweep_shard_text(const SweepTable& table, const scene::Scene& scene,
+                             std::size_t grid_points, int k, int n);
 
 /// Where shard k of n of the sweep of the scene called `scene_name` would be: named when it
 /// is missing.

@@ -2,9 +2,11 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "common/json_string.hpp"
 #include "common/text_file.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
@@ -22,6 +24,7 @@ namespace {
 
 constexpr std::string_view kOutputsOpen = "  \"outputs\": [\n";
 constexpr std::string_view kClose = "  ]\n}\n";
+constexpr std::string_view kWarningsOpen = "  \"warnings\": [";
 
 struct Entry {
   std::string path;
@@ -94,6 +97,37 @@ std::optional<std::vector<Entry>> entries_after(const std::string& text, std::st
   return entries;
 }
 
+/// The JSON strings from `at` up to the line's closing ']', unescaped (json_string writes \",
+/// \\ and \u00XX; any other escape keeps the character after the backslash).
+std::vector<std::string> strings_in(const std::string& text, std::size_t at) {
+  std::vector<std::string> strings;
+  std::string current;
+  bool inside = false;
+  for (std::size_t i = at; i < text.size() && text[i] != '\n'; ++i) {
+    const char c = text[i];
+    if (!inside) {
+      if (c == ']') break;
+      inside = c == '"';
+    } else if (c == '\\' && i + 1 < text.size()) {
+      const char escaped = text[++i];
+      const std::string digits = escaped == 'u' ? text.substr(i + 1, 4) : "";
+      if (digits.size() == 4 && digits.find_first_not_of("0123456789abcdef") == std::string::npos) {
+        current += static_cast<char>(std::strtol(digits.c_str(), nullptr, 16));
+        i += 4;
+      } else {
+        current += escaped;
+      }
+    } else if (c == '"') {
+      strings.push_back(current);
+      current.clear();
+      inside = false;
+    } else {
+      current += c;
+    }
+  }
+  return strings;
+}
+
 }  // namespace
 
 void write_manifest(const fs::path& manifest, std::string_view head, std::string_view note,
@@ -140,15 +174,25 @@ std::optional<std::string> manifest_stale(const fs::path& manifest, std::string_
   return std::nullopt;
 }
 
-std::vector<std::string> manifest_outputs(const fs::path& manifest) {
+ManifestRecord read_manifest(const fs::path& manifest) {
   const std::optional<std::string> text = try_read_text_file(manifest);
   if (!text) return {};
   bool head_differs = false;
   const auto entries = entries_after(*text, "", head_differs);  // any head
-  std::vector<std::string> paths;
-  if (entries)
-    for (const Entry& e : *entries) paths.push_back(e.path);
-  return paths;
+  if (!entries) return {};
+  ManifestRecord record;
+  for (const Entry& e : *entries) record.outputs.push_back(e.path);
+  const auto at = text->find(std::string("\n") + std::string(kWarningsOpen));
+  if (at != std::string::npos && at < text->find(kOutputsOpen))
+    record.warnings = strings_in(*text, at + 1 + kWarningsOpen.size());
+  return record;
+}
+
+std::string warnings_note(const std::vector<std::string>& warnings) {
+  std::string json(kWarningsOpen);
+  for (std::size_t i = 0; i < warnings.size(); ++i)
+    json.append(i == 0 ? "" : ", ").append(json_string(warnings[i]));
+  return json.append("],\n");
 }
 
 std::string program_version() { return BOOKSPIN_VERSION; }

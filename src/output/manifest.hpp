@@ -3,8 +3,8 @@
 // later run can tell whether it would produce the same and skip the work (`bookspin render`,
 // `plot`, `gallery`; docs/outputs.md).
 //
-// The file is JSON with a fixed layout, written by write_manifest() and read back by
-// manifest_stale() alone:
+// The file is JSON with a fixed layout, written by write_manifest() and read back here alone
+// (manifest_stale(), read_manifest()):
 //
 //   {
 //     <head: the caller's members, each line indented by two spaces, the last ending in ','>
@@ -46,10 +46,23 @@ std::optional<std::string> manifest_stale(const std::filesystem::path& manifest,
                                           std::string_view head, const std::filesystem::path& root,
                                           bool verify);
 
-/// The outputs `manifest` lists (paths relative to its root, '/'-separated, in its order),
-/// whatever its head: what the run that wrote it made. Empty when there is no manifest or it
-/// is not one bookspin wrote. Never throws for a bad manifest.
-std::vector<std::string> manifest_outputs(const std::filesystem::path& manifest);
+/// What a manifest records, whatever its head.
+struct ManifestRecord {
+  /// The outputs it lists (paths relative to its root, '/'-separated, in its order): what the
+  /// run that wrote it made.
+  std::vector<std::string> outputs;
+  /// The warnings its note holds (warnings_note()), unescaped: what that run warned of.
+  std::vector<std::string> warnings;
+};
+
+/// Reads `manifest`, whatever its head. Empty when there is no manifest or it is not one
+/// bookspin wrote. Never throws for a bad manifest.
+ManifestRecord read_manifest(const std::filesystem::path& manifest);
+
+/// `  "warnings": ["…", …],` and a newline: a run's warnings (each written by json_string) as
+/// a member of its manifest's note, so that a later run that finds the outputs up to date can
+/// repeat them (read_manifest()).
+std::string warnings_note(const std::vector<std::string>& warnings);
 
 /// bookspin's version (CMake's project version).
 std::string program_version();

@@ -1,11 +1,11 @@
 #include "products/clip.hpp"
 
-#include <fstream>
 #include <sstream>
 
+#include "analysis/frame_source.hpp"
+#include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
 #include "clip/clip.hpp"
-#include "common/json_string.hpp"
 #include "output/manifest.hpp"
 
 namespace bookspin::products {
@@ -19,53 +19,13 @@ std::vector<std::string> divergence_warnings(const std::string& name,
                                              const clip::ClipResult& result) {
   std::vector<std::string> warnings;
   if (result.diverged_at) {
-    std::ostringstream w;
-    w << name << ": simulation diverged at t = " << *result.diverged_at
-      << (result.divergence_reason.empty() ? "" : "; " + result.divergence_reason)
-      << "; the clip holds the last finite frame";
-    warnings.push_back(w.str());
+    warnings.push_back(analysis::divergence_warning(name + ": simulation", *result.diverged_at,
+                                                    result.divergence_reason,
+                                                    "the clip holds the last finite frame"));
   }
   for (const auto& tile : result.diverged_tiles) {
-    std::ostringstream w;
-    w << name << ": panel '" << tile.label << "' diverged at t = " << tile.t
-      << "; its tile holds the last finite frame";
-    warnings.push_back(w.str());
-  }
-  return warnings;
-}
-
-/// The manifest's "warnings" member (in its note: recorded, not compared), so that a run
-/// that finds the clip up to date repeats them.
-std::string warnings_json(const std::vector<std::string>& warnings) {
-  std::string json = "  \"warnings\": [";
-  for (std::size_t i = 0; i < warnings.size(); ++i)
-    json.append(i == 0 ? "" : ", ").append(json_string(warnings[i]));
-  return json.append("],\n");
-}
-
-/// The warnings recorded in a manifest by warnings_json(), unescaped (only \" and \\ occur
-/// in them in practice; anything else is kept as written).
-std::vector<std::string> recorded_warnings(const fs::path& manifest) {
-  std::ifstream in(manifest);
-  std::vector<std::string> warnings;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("  \"warnings\": [", 0) != 0) continue;
-    std::string current;
-    bool inside = false;
-    for (std::size_t i = line.find('[') + 1; i < line.size(); ++i) {
-      const char c = line[i];
-      if (!inside) {
-        inside = c == '"';
-      } else if (c == '\\' && i + 1 < line.size()) {
-        current += line[++i];
-      } else if (c == '"') {
-        warnings.push_back(current);
-        current.clear();
-        inside = false;
-      } else {
-        current += c;
-      }
-    }
+    warnings.push_back(analysis::divergence_warning(name + ": panel '" + tile.label + "'", tile.t,
+                                                    "", "its tile holds the last finite frame"));
   }
   return warnings;
 }
@@ -135,25 +95,18 @@ std::string clip_manifest_head(const ClipJob& job) {
 ClipOutcome make_clip(const ClipJob& job) {
   const ClipLayout layout = clip_layout(job.out_dir, job.scene);
   const clip::ClipRequest request = clip_request(job);
-  const CachedOutputs cached{
+  const cache::CachedOutputs cached{
       job.scene.name,         layout.manifest, clip_manifest_head(job), job.out_dir, &job.scene,
       /*all_or_nothing=*/true};
   ClipOutcome done;
-  const CachedOutcome cached_outcome =
-      make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
-        // Stopped between frames (result.signal) or while the encoders finished
-        // (Interrupted); every output of the run is put in place together, or
-        // none (clip::render_clip).
-        done.result = clip::render_clip(request);
-        if (done.result.signal != 0) return std::nullopt;
-        done.warnings = divergence_warnings(job.scene.name, done.result);
-        return Made{clip_outputs(job, layout), warnings_json(done.warnings)};
-      });
-  done.outcome = cached_outcome.outcome;
-  if (cached_outcome.signal != 0)
-    done.result.signal = cached_outcome.signal;  // while the encoders finished
-  if (done.outcome == cache::CacheOutcome::up_to_date)
-    done.warnings = recorded_warnings(layout.manifest);
+  done.outcome = cache::make_cached(cached, job.freshness, [&] {
+    // Every output of the run is put in place together, or none (clip::render_clip).
+    done.result = clip::render_clip(request);
+    done.warnings = divergence_warnings(job.scene.name, done.result);
+    return cache::Made{clip_outputs(job, layout), output::warnings_note(done.warnings)};
+  });
+  if (done.outcome == cache::Outcome::up_to_date)
+    done.warnings = output::read_manifest(layout.manifest).warnings;
   return done;
 }
 

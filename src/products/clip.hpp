@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "cache/freshness.hpp"
 #include "clip/clip_request.hpp"
-#include "products/outcome.hpp"
+#include "common/stop.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -34,7 +35,7 @@ struct ClipJob {
   bool write_png = true;          ///< false: videos and CSVs only
   int png_compression = -1;       ///< 0–9; −1: render.png_compression
   int jobs = 0;                   ///< worker threads; 0: every core
-  Freshness freshness;            ///< --force, --verify and the remake note
+  cache::Freshness freshness;     ///< --force, --verify and the remake note
   std::function<void(const std::string& note)> on_note;  ///< see clip::ClipRequest
   std::function<void(int done)> on_progress;             ///< see clip::ClipRequest
   StopPoll stop_signal;                                  ///< see clip::ClipRequest
@@ -49,13 +50,15 @@ std::string clip_manifest_head(const ClipJob& job);
 
 /// What make_clip() did.
 struct ClipOutcome {
-  Outcome outcome = Outcome::made;
-  clip::ClipResult result;  ///< the frame loop's result (when made or interrupted)
+  cache::Outcome outcome = cache::Outcome::made;
+  clip::ClipResult result;  ///< the frame loop's result (when made)
   /// The run's divergence warnings without the "bookspin: warning: " prefix: this run's when
   /// made, the ones recorded in the manifest when up to date.
   std::vector<std::string> warnings;
 };
 
+/// (scene, options) => OUT/<scene>.<format> for each format, OUT/<scene>/frames/,
+/// OUT/<scene>/diagnostics*.csv + manifest.
 /// Renders `job` unless its manifest says the outputs are up to date, then writes the
 /// manifest (its note records the scene file and the warnings). Same errors as
 /// clip::render_clip(), and InputError for an unreadable input file.

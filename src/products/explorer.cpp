@@ -3,6 +3,7 @@
 #include <set>
 #include <vector>
 
+#include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
 #include "common/text_file.hpp"
@@ -217,14 +218,12 @@ ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
       "  \"scenes\": \"sha256:" + output::sha256_text(scenes) + "\",\n";
   ExplorerOutcome done;
   done.result.path = explorer_page_path(request.out_dir);
-  const CachedOutputs cached{"explorer.html", explorer_manifest_path(request.out_dir), head,
-                             request.out_dir};
-  const CachedOutcome made = make_cached(cached, {}, [&]() -> std::optional<Made> {
+  const cache::CachedOutputs cached{"explorer.html", explorer_manifest_path(request.out_dir), head,
+                                    request.out_dir};
+  done.outcome = cache::make_cached(cached, {}, [&] {
     done.result = write_explorer_page(request);
-    return Made{{done.result.path}};
+    return cache::Made{{done.result.path}};
   });
-  if (made.signal != 0) throw Interrupted(made.signal);  // the earlier page and manifest untouched
-  done.outcome = made.outcome;
   return done;
 }
 

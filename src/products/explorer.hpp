@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "cache/freshness.hpp"
 #include "common/stop.hpp"
 #include "output/json_writer.hpp"
-#include "products/outcome.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -82,10 +82,11 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request);
 std::filesystem::path explorer_manifest_path(const std::filesystem::path& out_dir);
 
 struct ExplorerOutcome {
-  Outcome outcome = Outcome::made;
+  cache::Outcome outcome = cache::Outcome::made;
   ExplorerPageResult result;  ///< the page (its size only when made)
 };
 
+/// (scenes, shell, engines) => OUT/explorer.html + manifest.
 /// write_explorer_page(request) unless the page's manifest says it is up to date: its head
 /// holds the shell's SHA-256 (the web sources, lockfile and physics built into it), the engines'
 /// bundle's when there is one, and every

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <thread>
 
+#include "cache/make_cached.hpp"
 #include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
 #include "output/output_dir.hpp"
@@ -46,7 +47,7 @@ std::string if_there(const fs::path& out, const fs::path& path) {
 class Listed {
  public:
   Listed(const fs::path& out, const fs::path& manifest)
-      : out_(out), paths_(output::manifest_outputs(manifest)) {}
+      : out_(out), paths_(output::read_manifest(manifest).outputs) {}
   /// The path relative to OUT of `path` if the manifest lists it and it exists, else "".
   std::string operator()(const fs::path& path) const {
     const std::string relative = path_in_out(out_, path);
@@ -102,7 +103,7 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   e.poster = poster_for(out, rendered, clip, scene.name);
   const PlotLayout plot = plot_layout(out, scene);
   e.plot = Listed(out, plot.manifest)(plot.png);
-  const jobs::SweepPaths sweep = sweep_paths(out, scene.name);
+  const SweepPaths sweep = sweep_paths(out, scene.name);
   e.sweep = if_there(out, sweep.png);
   e.sweep_csv = if_there(out, sweep.csv);
   const AccuracyLayout accuracy = accuracy_layout(out, scene);
@@ -189,18 +190,16 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
       output::sha256_text(gallery_html(entries, header)) + "\",\n";
   GalleryOutcome done;
   done.entries = entries.size();
-  const CachedOutputs cached{layout.page.filename().string(), layout.manifest, head, out};
-  const CachedOutcome made = make_cached(cached, job.freshness, [&] {
+  const cache::CachedOutputs cached{layout.page.filename().string(), layout.manifest, head, out};
+  done.outcome = cache::make_cached(cached, job.freshness, [&] {
     stop_if_asked(job.stop_signal, "gallery write");
     std::error_code ec;
     output::make_directories(out, ec);
     if (ec) throw_output_error("cannot create output directory", out, ec.value());
     header.date = utc_now();
     write_page(layout.page, gallery_html(entries, header));
-    return std::optional<Made>{Made{{layout.page}}};
+    return cache::Made{{layout.page}};
   });
-  if (made.signal != 0) throw Interrupted(made.signal);  // the earlier page and manifest untouched
-  done.outcome = made.outcome;
   return done;
 }
 

@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "products/outcome.hpp"
+#include "cache/freshness.hpp"
+#include "common/stop.hpp"
 
 namespace bookspin::products {
 
@@ -23,17 +24,18 @@ GalleryLayout gallery_layout(const std::filesystem::path& out_dir);
 struct GalleryJob {
   std::filesystem::path out_dir;
   std::vector<std::string> scene_paths;  ///< every scene on the page
-  Freshness freshness;                   ///< --force (write it even when up to date), note
+  cache::Freshness freshness;            ///< --force (write it even when up to date), note
   /// Polled before each scene ("gallery scenes") and before the page is written ("gallery
   /// write"): a signal throws Interrupted; the earlier page and its manifest stay.
   StopPoll stop_signal;
 };
 
 struct GalleryOutcome {
-  Outcome outcome = Outcome::made;
+  cache::Outcome outcome = cache::Outcome::made;
   std::size_t entries = 0;  ///< scenes on the page
 };
 
+/// (OUT, scenes) => OUT/index.html + manifest.
 /// Parses every scene first (a bad one fails before anything is written), then writes the
 /// page unless its manifest says the same page (but for its date) is there. Throws
 /// InputError, OutputError.

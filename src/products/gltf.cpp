@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "analysis/frame_source.hpp"
+#include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
 #include "output/diagnostics_csv.hpp"
@@ -178,16 +179,14 @@ std::string gltf_manifest_head(const GltfJob& job) {
 GltfExportResult make_gltf(const GltfJob& job) {
   check_gltf_scene(job.scene);
   const GltfLayout layout = gltf_layout(job.out_dir, job.scene);
-  const CachedOutputs cached{job.scene.name + ".glb", layout.manifest, gltf_manifest_head(job),
-                             job.out_dir, &job.scene};
+  const cache::CachedOutputs cached{job.scene.name + ".glb", layout.manifest,
+                                    gltf_manifest_head(job), job.out_dir, &job.scene};
   GltfExportResult result;
   result.path = layout.glb;
-  const CachedOutcome done = make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
+  result.outcome = cache::make_cached(cached, job.freshness, [&] {
     result = export_glb(job.scene, layout.glb, job.on_note, job.stop);
-    return Made{{layout.glb}};
+    return cache::Made{{layout.glb}};
   });
-  if (done.signal != 0) throw Interrupted(done.signal);  // the earlier file and manifest untouched
-  result.outcome = done.outcome;
   return result;
 }
 

@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "cache/freshness.hpp"
 #include "common/stop.hpp"
-#include "products/outcome.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -27,7 +27,7 @@ GltfLayout gltf_layout(const std::filesystem::path& out_dir, const scene::Scene&
 struct GltfJob {
   scene::Scene scene;  ///< one model (no [[compare]]); --frames is its time.frames
   std::filesystem::path out_dir;
-  Freshness freshness;  ///< --force, --verify (the .glb's hash) and the remake note
+  cache::Freshness freshness;  ///< --force, --verify (the .glb's hash) and the remake note
   /// Told that a deforming model exports its best-fit rigid motion (may be empty).
   std::function<void(const std::string&)> on_note;
   /// Polled before each frame ("export frames") and before the file is written ("export
@@ -36,8 +36,8 @@ struct GltfJob {
 };
 
 struct GltfExportResult {
-  Outcome outcome = Outcome::made;    ///< up to date: nothing below is measured
-  std::filesystem::path path;         ///< OUT/<name>.glb
+  cache::Outcome outcome = cache::Outcome::made;  ///< up to date: nothing below is measured
+  std::filesystem::path path;                     ///< OUT/<name>.glb
   int keyframes = 0;                  ///< one per frame produced (all of them unless it diverged)
   int vertices = 0;                   ///< vertices written, over every part
   std::optional<double> diverged_at;  ///< when the simulation diverged (keyframes stop there)
@@ -51,6 +51,7 @@ void check_gltf_scene(const scene::Scene& scene);
 /// The manifest head of `job` ("export", the format "glb", the scene). Throws InputError.
 std::string gltf_manifest_head(const GltfJob& job);
 
+/// (scene) => OUT/<scene>.glb + manifest.
 /// Unless its manifest says it is up to date, runs the scene frame by frame and writes
 /// gltf_layout(out_dir, scene).glb with output::write_glb, then the manifest: the book with
 /// its four face images (render::face_images, the scene's textures or the generated covers),

@@ -2,8 +2,12 @@
 
 #include <sstream>
 
+#include "analysis/frame_source.hpp"
+#include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
 #include "charts/plot_sheet.hpp"
+#include "output/output_dir.hpp"
+#include "output/png_writer.hpp"
 
 namespace bookspin::products {
 
@@ -18,16 +22,17 @@ std::string plot_manifest_head(const PlotJob& job) {
   return cache::manifest_head("plot", options.str(), job.scene);
 }
 
-Outcome make_plot(const PlotJob& job) {
+cache::Outcome make_plot(const PlotJob& job) {
   const PlotLayout layout = plot_layout(job.out_dir, job.scene);
-  const CachedOutputs cached{job.scene.name + "-plot", layout.manifest, plot_manifest_head(job),
-                             job.out_dir, &job.scene};
-  return make_cached(cached, job.freshness,
-                     [&]() -> std::optional<Made> {
-                       charts::write_plot_sheet({job.scene, layout.png, job.width, job.height});
-                       return Made{{layout.png}};
-                     })
-      .outcome;
+  const cache::CachedOutputs cached{job.scene.name + "-plot", layout.manifest,
+                                    plot_manifest_head(job), job.out_dir, &job.scene};
+  return cache::make_cached(cached, job.freshness, [&] {
+    const std::vector<analysis::RunFrames> runs = analysis::run_frames(job.scene);
+    const RgbaImage sheet = charts::plot_sheet_image(job.scene, runs, job.width, job.height);
+    output::prepare_output_dir(layout.png.parent_path());
+    output::write_png(layout.png, sheet);
+    return cache::Made{{layout.png}};
+  });
 }
 
 }  // namespace bookspin::products

@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-#include "products/outcome.hpp"
+#include "cache/freshness.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -23,16 +23,18 @@ PlotLayout plot_layout(const std::filesystem::path& out_dir, const scene::Scene&
 struct PlotJob {
   scene::Scene scene;  ///< a single or a comparison scene (every tile is plotted)
   std::filesystem::path out_dir;
-  int width = 1600;     ///< pixels
-  int height = 1000;    ///< pixels
-  Freshness freshness;  ///< --force, --verify (the PNG's hash) and the remake note
+  int width = 1600;            ///< pixels
+  int height = 1000;           ///< pixels
+  cache::Freshness freshness;  ///< --force, --verify (the PNG's hash) and the remake note
 };
 
 /// The manifest head of `job` ("plot", the image size, the scene). Throws InputError.
 std::string plot_manifest_head(const PlotJob& job);
 
-/// Writes the plot sheet (charts::write_plot_sheet) unless its manifest says it is up to date,
-/// then its manifest. Throws InputError, OutputError.
-Outcome make_plot(const PlotJob& job);
+/// (scene, width, height) => OUT/<scene>-plot.png + manifest.
+/// Unless its manifest says the plot is up to date: runs the scene (analysis::run_frames),
+/// draws its sheet (charts::plot_sheet_image) and writes the PNG, then the manifest. Throws
+/// InputError, OutputError.
+cache::Outcome make_plot(const PlotJob& job);
 
 }  // namespace bookspin::products

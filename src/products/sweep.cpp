@@ -1,8 +1,16 @@
 #include "products/sweep.hpp"
 
+#include <sstream>
+
+#include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
+#include "charts/sweep_plots.hpp"
 #include "common/errors.hpp"
 #include "common/json_string.hpp"
+#include "jobs/sweep_shard.hpp"
+#include "output/atomic_output.hpp"
+#include "output/output_dir.hpp"
+#include "output/png_writer.hpp"
 
 namespace bookspin::products {
 
@@ -25,9 +33,21 @@ std::string sweep_options_json(const SweepJob& job) {
   return json.append("],\n    \"measures\": ").append(json_string(job.measures)).append("\n");
 }
 
+/// table => the sweep's CSV and picture at `paths`, made first and then written.
+std::vector<fs::path> write_sweep(const jobs::SweepTable& table, const SweepPaths& paths) {
+  std::ostringstream csv;
+  jobs::write_sweep_csv(table, csv);
+  const charts::SweepChart chart = jobs::sweep_chart(table);
+  const RgbaImage picture = charts::sweep_sheet(chart);
+  output::prepare_output_dir(paths.csv.parent_path());
+  output::write_text_file(paths.csv, csv.str());
+  output::write_png(paths.png, picture);
+  return {paths.csv, paths.png};
+}
+
 }  // namespace
 
-jobs::SweepPaths sweep_paths(const fs::path& out_dir, const std::string& scene_name) {
+SweepPaths sweep_paths(const fs::path& out_dir, const std::string& scene_name) {
   return {out_dir / (scene_name + "-sweep.csv"), out_dir / (scene_name + "-sweep.png"),
           shard_in(out_dir, scene_name)};
 }
@@ -37,8 +57,8 @@ fs::path sweep_manifest_path(const fs::path& out_dir, const std::string& scene_n
 }
 
 SweepOutcome make_sweep(const SweepJob& job) {
+  const std::string options = sweep_options_json(job);
   jobs::SweepRequest request;
-  request.layout = [out = job.out_dir](const std::string& name) { return sweep_paths(out, name); };
   request.scene_path = job.scene_path;
   request.overrides = job.overrides;
   for (const auto& v : job.vary) request.ranges.push_back(jobs::parse_vary(v));
@@ -48,38 +68,40 @@ SweepOutcome make_sweep(const SweepJob& job) {
   request.shard_index = job.shard_index;
   request.shard_count = job.shard_count;
   request.stop_signal = job.stop_signal;
+  request.scene = scene::parse_scene(job.scene_path, job.overrides);
+  const scene::Scene& scene = *request.scene;
   SweepOutcome done;
-  jobs::SweepResult result;
+  done.name = scene.name;
+  const SweepPaths paths = sweep_paths(job.out_dir, scene.name);
+  const fs::path manifest = sweep_manifest_path(job.out_dir, scene.name);
   if (job.shard_count > 0) {
-    result = jobs::run_sweep(request);
-  } else {
-    request.scene = scene::parse_scene(job.scene_path, job.overrides);
-    const scene::Scene& scene = *request.scene;
-    done.name = scene.name;
-    const fs::path manifest = sweep_manifest_path(job.out_dir, scene.name);
-    const std::string options = sweep_options_json(job);
-    const CachedOutputs cached{scene.name + "-sweep", manifest,
-                               cache::manifest_head("sweep", options, scene), job.out_dir, &scene};
-    done.outcome = make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
-                     result = jobs::run_sweep(request);
-                     if (result.signal != 0) return std::nullopt;
-                     return Made{result.written};
-                   }).outcome;
+    const jobs::SweepTable table = jobs::measure_sweep(request);
+    const std::string text = jobs::sweep_shard_text(
+        table, scene, jobs::SweepGrid(request.ranges).size(), job.shard_index, job.shard_count);
+    const fs::path shard = paths.shard(job.shard_index, job.shard_count);
+    output::prepare_output_dir(shard.parent_path());
+    output::write_text_file(shard, text);
+    done.written = {shard};
+    return done;
   }
-  if (result.signal != 0) done.outcome = Outcome::interrupted;
-  done.signal = result.signal;
-  done.written = result.written;
+  const cache::CachedOutputs cached{scene.name + "-sweep", manifest,
+                                    cache::manifest_head("sweep", options, scene), job.out_dir,
+                                    &scene};
+  done.outcome = cache::make_cached(cached, job.freshness, [&] {
+    const jobs::SweepTable table = jobs::measure_sweep(request);
+    done.written = write_sweep(table, paths);
+    return cache::Made{done.written};
+  });
   return done;
 }
 
 std::vector<fs::path> merge_sweep_shards(const std::vector<fs::path>& shards,
                                          const fs::path& out_dir) {
   const fs::path beside = shards.empty() ? out_dir : shards.front().parent_path();
-  return jobs::merge_sweep(shards, [&](const std::string& name) {
-    jobs::SweepPaths paths = sweep_paths(out_dir, name);
-    paths.shard = shard_in(beside, name);
-    return paths;
-  });
+  const jobs::SweepTable table = jobs::read_sweep_shards(
+      shards, [&](const std::string& name, int k, int n) { return shard_in(beside, name)(k, n); });
+  const SweepPaths paths = sweep_paths(out_dir, table.scene_name);
+  return write_sweep(table, paths);
 }
 
 }  // namespace bookspin::products

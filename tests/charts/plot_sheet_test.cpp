@@ -16,7 +16,7 @@ TEST(PlotSheet, TheTHandleComparisonPlotsOmegaAboutItsIntermediateAxisY) {
   // jiggle's share) in every tile, and ω_x near 0. The heading names the axis that flips.
   const scene::Scene scene = scene::parse_scene(
       std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/compare-t-handle-models.toml", {"time.frames=6"});
-  const PlotSheet sheet = plot_sheet_for(scene);
+  const PlotSheet sheet = plot_sheet_for(scene, analysis::run_frames(scene));
   ASSERT_FALSE(sheet.plots.empty());
   const overlay::PlotSpec& flips = sheet.plots.front();
   EXPECT_EQ(flips.title, "ω_y, body frame (the flips)");
@@ -31,7 +31,7 @@ TEST(PlotSheet, TheBookComparisonPlotsOmegaAboutItsIntermediateAxisX) {
   // The book's intermediate axis is x (docs/physics.md §12); compare-methods-x spins it about x.
   const scene::Scene scene = scene::parse_scene(
       std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/compare-methods-x.toml", {"time.frames=3"});
-  const PlotSheet sheet = plot_sheet_for(scene);
+  const PlotSheet sheet = plot_sheet_for(scene, analysis::run_frames(scene));
   ASSERT_FALSE(sheet.plots.empty());
   EXPECT_EQ(sheet.plots.front().title, "ω_x, body frame (the flips)");
   for (const overlay::Series& s : sheet.plots.front().series)

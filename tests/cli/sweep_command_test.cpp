@@ -299,7 +299,7 @@ TEST(SweepCommand, SigintStopsTheSweepWithNothingWritten) {
   std::string output;
   run_shell(command, output);
   EXPECT_NE(output.find("status=130"), std::string::npos) << output;
-  EXPECT_NE(output.find("sweep interrupted; nothing written"), std::string::npos) << output;
+  EXPECT_NE(output.find("bookspin: interrupted; nothing written"), std::string::npos) << output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "flip-time-vs-perturbation-sweep.csv"));
 }
 

@@ -27,6 +27,8 @@
 #include "jobs/csv_text.hpp"
 #include "jobs/simulation.hpp"
 #include "jobs/sweep.hpp"
+#include "output/atomic_output.hpp"
+#include "output/csv_writer.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/particle_model.hpp"
 #include "scene/scene.hpp"
@@ -175,11 +177,9 @@ Csv sweep(const std::filesystem::path& dir, const std::string& name, const std::
   request.ranges = {parse_vary(vary)};
   request.measures = parse_measures(measures);
   request.jobs = 2;
-  request.layout = [dir](const std::string& scene_name) {
-    return SweepPaths{dir / (scene_name + "-sweep.csv"), dir / (scene_name + "-sweep.png"), {}};
-  };
-  const SweepResult result = run_sweep(request);
-  EXPECT_EQ(result.written.size(), 2u);
+  std::ofstream csv(dir / (name + "-sweep.csv"));
+  write_sweep_csv(measure_sweep(request), csv);
+  csv.close();
   return read_csv(dir / (name + "-sweep.csv"));
 }
 
@@ -379,15 +379,15 @@ TEST(CsvColumns, AccuracyAndEnergyCsvRowsMatchTheReplayAndTheClosedForm) {
       "accuracy.toml");
   request.flips = 2.0;
   request.dts = {0.05, 0.1};
-  request.paths = {dir.path() / "accuracy.csv", dir.path() / "accuracy.png",
-                   dir.path() / "work.png",     dir.path() / "energy-vs-dt.png",
-                   dir.path() / "energy.png",   dir.path() / "energy.csv"};
-  run_accuracy(request);
+  const AccuracyReport report = measure_accuracy(request);
+  output::write_text_file(dir / "accuracy.csv",
+                          output::csv_text(accuracy_csv(report), "accuracy CSV"));
+  output::write_text_file(dir / "energy.csv", output::csv_text(energy_csv(report), "energy CSV"));
   const scene::Scene& s = request.scene;
   const ClosedFormFlips exact = closed_form_flips(s.body.moments, omega);
   const physics::ExactRotation rotation(s.body.moments, omega);
 
-  const Csv accuracy = read_csv(request.paths.csv);
+  const Csv accuracy = read_csv(dir / "accuracy.csv");
   const auto methods = analysis::accuracy_methods();
   ASSERT_EQ(accuracy.rows.size(), methods.size() * request.dts.size());
   std::size_t r = 0;
@@ -443,7 +443,7 @@ TEST(CsvColumns, AccuracyAndEnergyCsvRowsMatchTheReplayAndTheClosedForm) {
 
   // The energy CSV: t at the end of each of the 400 windows of 100 flip periods at
   // dt = 1/60, and per rigid method the largest |E/E0 − 1| in each window.
-  const Csv energy = read_csv(request.paths.energy_csv);
+  const Csv energy = read_csv(dir / "energy.csv");
   const double dt = 1.0 / 60.0;
   const long steps = std::lround(100 * exact.half_period / dt);
   const long per_window = std::max(1L, steps / 400);

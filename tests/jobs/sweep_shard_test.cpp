@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "common/errors.hpp"
+#include "output/atomic_output.hpp"
 #include "support/scratch.hpp"
 
 namespace bookspin::jobs {
@@ -65,7 +66,8 @@ ShardPath nowhere() {
 TEST(SweepShard, TheFileRecordsTheSweepThenTheGridIndexBeforeEachRow) {
   const test::ScratchDir dir;
   const fs::path path = dir.path() / "shard.csv";
-  write_sweep_shard(shard_of(two_by_two(), 1, 2), base_scene(), 4, 1, 2, path);
+  output::write_text_file(path,
+                          sweep_shard_text(shard_of(two_by_two(), 1, 2), base_scene(), 4, 1, 2));
   const auto lines = lines_of(path);
   ASSERT_EQ(lines.size(), 4u);
   static const std::regex first(
@@ -82,8 +84,8 @@ TEST(SweepShard, ShardsReadBackInAnyOrderAsTheWholeTableAndCrlfReadsAlike) {
   const test::ScratchDir dir;
   const SweepTable table = two_by_two();
   const fs::path a = dir.path() / "a.csv", b = dir.path() / "b.csv";
-  write_sweep_shard(shard_of(table, 0, 2), base_scene(), 4, 0, 2, a);
-  write_sweep_shard(shard_of(table, 1, 2), base_scene(), 4, 1, 2, b);
+  output::write_text_file(a, sweep_shard_text(shard_of(table, 0, 2), base_scene(), 4, 0, 2));
+  output::write_text_file(b, sweep_shard_text(shard_of(table, 1, 2), base_scene(), 4, 1, 2));
   // b through Windows: every line ending CRLF.
   std::string crlf;
   for (const std::string& line : lines_of(b)) crlf += line + "\r\n";
@@ -100,7 +102,7 @@ TEST(SweepShard, ShardsReadBackInAnyOrderAsTheWholeTableAndCrlfReadsAlike) {
 TEST(SweepShard, AMissingShardIsNamedWhereItWouldBe) {
   const test::ScratchDir dir;
   const fs::path a = dir.path() / "a.csv";
-  write_sweep_shard(shard_of(two_by_two(), 0, 2), base_scene(), 4, 0, 2, a);
+  output::write_text_file(a, sweep_shard_text(shard_of(two_by_two(), 0, 2), base_scene(), 4, 0, 2));
   try {
     read_sweep_shards({a}, nowhere());
     FAIL() << "no error";

@@ -4,7 +4,7 @@
 // (scenes/README.md, "Keys", and the [[compare]] keys), each texture file, the mesh file and
 // what it pulls in (an OBJ's .mtl, a glTF's .bin), the mesh's geometry and face colours, the
 // job's options and the program. Each is changed in turn, and the product's manifest head
-// (the one run_cached compares) must then make the product again; changing nothing must not.
+// (the one make_cached compares) must then make the product again; changing nothing must not.
 // The list is checked against what the product declares: every member of its manifest head's
 // scene and inputs, and every documented key, needs an entry, so an input added without one
 // fails here.
@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "analysis/accuracy.hpp"
-#include "cache/run_cached.hpp"
+#include "cache/make_cached.hpp"
 #include "products/accuracy.hpp"
 #include "products/clip.hpp"
 #include "products/gltf.hpp"
@@ -310,18 +310,13 @@ scene::Scene scene_of(const fs::path& dir, const Input& input, bool after) {
   return scene::parse_scene(dir / scene_file(input.base), overrides);
 }
 
-/// The check-make-record of every cached product (cache::run_cached) with `head`, and a make
+/// The check-make-record of every cached product (cache::make_cached) with `head`, and a make
 /// that writes one file: made, or up to date.
-cache::CacheOutcome run(const fs::path& dir, const std::string& head) {
-  cache::CachedJob job;
-  job.manifest = dir / "manifest.json";
-  job.head = head;
-  job.out_dir = dir;
-  job.make = [&dir]() -> std::optional<cache::JobOutputs> {
+cache::Outcome run(const fs::path& dir, const std::string& head) {
+  return cache::make_cached({"made", dir / "manifest.json", head, dir}, {}, [&dir] {
     std::ofstream(dir / "made.txt") << "made";
-    return cache::JobOutputs{"", {"made.txt"}};
-  };
-  return cache::run_cached(job);
+    return cache::Made{{dir / "made.txt"}};
+  });
 }
 
 /// Folder-safe form of an input's name.
@@ -337,14 +332,12 @@ void expect_each_input_makes_again(const std::string& product, const HeadOf& hea
     SCOPED_TRACE(product + ": " + input.name);
     const fs::path dir = fresh_dir("products/inputs/" + product + "/" + folder_name(input.name));
     write_sandbox(dir);
-    ASSERT_EQ(run(dir, head_of(scene_of(dir, input, false), input, false)),
-              cache::CacheOutcome::made);
+    ASSERT_EQ(run(dir, head_of(scene_of(dir, input, false), input, false)), cache::Outcome::made);
     // Nothing changed: read again, the same head, nothing made.
     EXPECT_EQ(run(dir, head_of(scene_of(dir, input, false), input, false)),
-              cache::CacheOutcome::up_to_date);
+              cache::Outcome::up_to_date);
     if (input.edit) input.edit(dir);
-    EXPECT_EQ(run(dir, head_of(scene_of(dir, input, true), input, true)),
-              cache::CacheOutcome::made);
+    EXPECT_EQ(run(dir, head_of(scene_of(dir, input, true), input, true)), cache::Outcome::made);
   }
 }
 
@@ -370,15 +363,15 @@ TEST(ProductInputs, AnotherBuildOfTheProgramMakesAgain) {
   write_sandbox(dir);
   const Input book{"program", Base::book};
   const std::string head = clip_head(scene_of(dir, book, false), book, false);
-  ASSERT_EQ(run(dir, head), cache::CacheOutcome::made);
-  ASSERT_EQ(run(dir, head), cache::CacheOutcome::up_to_date);
+  ASSERT_EQ(run(dir, head), cache::Outcome::made);
+  ASSERT_EQ(run(dir, head), cache::Outcome::up_to_date);
   const std::string marker = "\"build_id\": \"sha256:";
   ASSERT_NE(head.find(marker), std::string::npos) << head;
   std::string manifest = read_file(dir / "manifest.json");
   const auto at = manifest.find(marker) + marker.size();
   manifest[at] = manifest[at] == '0' ? '1' : '0';
   std::ofstream(dir / "manifest.json", std::ios::binary) << manifest;
-  EXPECT_EQ(run(dir, head), cache::CacheOutcome::made);
+  EXPECT_EQ(run(dir, head), cache::Outcome::made);
 }
 
 /// The names in backquotes in the first cell of each row of the Markdown table under the line

@@ -58,7 +58,7 @@ TEST(ProductLayout, PlotSweepAccuracyGltfExplorerAndGallery) {
   const scene::Scene s = named("fig05");
   EXPECT_EQ(plot_layout("out", s).png, "out/fig05-plot.png");
   EXPECT_EQ(plot_layout("out", s).manifest, "out/fig05/plot-manifest.json");
-  const jobs::SweepPaths sweep = sweep_paths("out", "fig05");
+  const SweepPaths sweep = sweep_paths("out", "fig05");
   EXPECT_EQ(sweep.csv, "out/fig05-sweep.csv");
   EXPECT_EQ(sweep.png, "out/fig05-sweep.png");
   EXPECT_EQ(sweep.shard(2, 8), "out/fig05-sweep.shard-2-of-8.csv");
@@ -68,7 +68,7 @@ TEST(ProductLayout, PlotSweepAccuracyGltfExplorerAndGallery) {
             (std::vector<std::filesystem::path>{
                 "out/fig05-accuracy.csv", "out/fig05-accuracy.png", "out/fig05-work-precision.png",
                 "out/fig05-energy-vs-dt.png", "out/fig05-energy.png", "out/fig05-energy.csv"}));
-  EXPECT_EQ(accuracy.report.energy_vs_dt_png, "out/fig05-energy-vs-dt.png");
+  EXPECT_EQ(accuracy.energy_vs_dt_png, "out/fig05-energy-vs-dt.png");
   EXPECT_EQ(accuracy.manifest, "out/fig05/accuracy-manifest.json");
   EXPECT_EQ(gltf_layout("out", s).glb, "out/fig05.glb");
   EXPECT_EQ(gltf_layout("out", s).manifest, "out/fig05/gltf-manifest.json");

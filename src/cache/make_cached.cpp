@@ -1,8 +1,11 @@
-#include "cache/run_cached.hpp"
+#include "cache/make_cached.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
+#include "cache/manifest_head.hpp"
+#include "common/stop.hpp"
 #include "output/manifest.hpp"
 
 namespace bookspin::cache {
@@ -41,34 +44,41 @@ void remove_outputs_of_earlier_run(const fs::path& out_dir, const std::vector<st
 
 }  // namespace
 
-CacheOutcome run_cached(const CachedJob& job,
-                        const std::function<void(const std::string& reason)>& on_remake) {
-  if (!job.force) {
+Outcome make_cached(const CachedOutputs& cached, const Freshness& freshness,
+                    const std::function<Made()>& make) {
+  if (!freshness.force) {
     const std::optional<std::string> stale =
-        output::manifest_stale(job.manifest, job.head, job.out_dir, job.verify);
-    if (!stale) return CacheOutcome::up_to_date;
+        output::manifest_stale(cached.manifest, cached.head, cached.out_dir, freshness.verify);
+    if (!stale) return Outcome::up_to_date;
     std::error_code ec;
-    if (on_remake && std::filesystem::exists(job.manifest, ec)) on_remake(*stale);
+    if (freshness.on_remake && fs::exists(cached.manifest, ec))
+      freshness.on_remake(cached.name, *stale);
   }
-  const std::vector<std::string> earlier = output::manifest_outputs(job.manifest);
-  std::optional<JobOutputs> made;
+  const std::vector<std::string> earlier = output::read_manifest(cached.manifest).outputs;
+  Made made;
+  std::string note;
   try {
-    made = job.make();
+    made = make();
+    note = (cached.scene ? manifest_note(*cached.scene) : std::string()) + made.note;
+  } catch (const Interrupted&) {
+    throw;  // nothing was put in place: the earlier outputs and their manifest stay
   } catch (...) {
     std::error_code ec;
-    if (!job.all_or_nothing) std::filesystem::remove(job.manifest, ec);
+    if (!cached.all_or_nothing) fs::remove(cached.manifest, ec);
     throw;
   }
-  if (!made) return CacheOutcome::interrupted;
-  remove_outputs_of_earlier_run(job.out_dir, earlier, made->outputs);
+  std::vector<std::string> outputs;
+  for (const auto& path : made.outputs)
+    outputs.push_back(path.lexically_relative(cached.out_dir).generic_string());
+  remove_outputs_of_earlier_run(cached.out_dir, earlier, outputs);
   try {
-    output::write_manifest(job.manifest, job.head, made->note, job.out_dir, made->outputs);
+    output::write_manifest(cached.manifest, cached.head, note, cached.out_dir, outputs);
   } catch (...) {
     std::error_code ec;
-    std::filesystem::remove(job.manifest, ec);  // it describes the outputs just replaced
+    fs::remove(cached.manifest, ec);  // it describes the outputs just replaced
     throw;
   }
-  return CacheOutcome::made;
+  return Outcome::made;
 }
 
 }  // namespace bookspin::cache

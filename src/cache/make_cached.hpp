@@ -1,0 +1,50 @@
+#pragma once
+// The one "check the manifest, make the outputs, record them" of every cached product: an
+// output whose manifest matches is not made again (output/manifest.hpp has the file format
+// and what "matches" means; manifest_head.hpp what a product's head holds).
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cache/freshness.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::cache {
+
+/// One product's cached outputs: what its manifest is called and holds.
+struct CachedOutputs {
+  std::string name;                ///< the outputs' name in notes ("fig09", "fig09-plot")
+  std::filesystem::path manifest;  ///< the manifest file (the product's layout names it)
+  std::string head;                ///< what the outputs depend on (manifest_head.hpp)
+  std::filesystem::path out_dir;   ///< OUT: the manifest lists outputs relative to it
+  /// The scene they are made from: its file's path and SHA-256 open the manifest's note
+  /// (manifest_note). None for a product of many scenes.
+  const scene::Scene* scene = nullptr;
+  /// make() puts its outputs in place together or not at all (output::OutputSet), so when it
+  /// throws, the earlier outputs and their manifest are still true and the manifest is kept.
+  bool all_or_nothing = false;
+};
+
+/// What a product's make() put in place.
+struct Made {
+  std::vector<std::filesystem::path> outputs;  ///< every file, under CachedOutputs::out_dir
+  std::string note = {};  ///< more of the manifest's note (recorded, not compared), JSON members
+};
+
+/// Unless `freshness.force`, returns up_to_date when `cached`'s manifest matches its head and
+/// every listed output is there (output::manifest_stale). Otherwise tells
+/// `freshness.on_remake` why (if a manifest was there), runs `make`, removes the files the
+/// earlier manifest listed that this run did not make (plain paths inside out_dir only, and
+/// the folders that leaves empty: out_dir holds one run's outputs, docs/outputs.md), then
+/// writes the manifest last and returns made.
+///
+/// `make` throws Interrupted (common/stop.hpp) when a signal stopped it before it put anything
+/// in place: the earlier outputs and their manifest are untouched and Interrupted goes on.
+/// Any other exception goes on too, after removing the manifest (some outputs may have been
+/// replaced; kept when `cached.all_or_nothing`). Throws OutputError when the manifest cannot
+/// be written (the earlier manifest, which no longer tells the truth, is then removed).
+Outcome make_cached(const CachedOutputs& cached, const Freshness& freshness,
+                    const std::function<Made()>& make);
+
+}  // namespace bookspin::cache
