@@ -57,7 +57,7 @@ TEST(Accuracy, AReportWritesItsSixFilesAndManifestThenIsUpToDate) {
                                        "x-energy.png",         "x-energy.csv"};
   for (const std::string& file : files)
     EXPECT_TRUE(fs::is_regular_file(dir / "out" / file)) << file;
-  EXPECT_EQ(output::manifest_outputs(dir / "out" / "x" / "accuracy-manifest.json"), files);
+  EXPECT_EQ(output::read_manifest(dir / "out" / "x" / "accuracy-manifest.json").outputs, files);
   // The table: the header and one row per dt.
   std::ifstream csv(dir / "out" / "x-accuracy.csv");
   int lines = 0;

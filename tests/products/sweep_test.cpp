@@ -51,7 +51,7 @@ TEST(Sweep, AWholeSweepWritesItsCsvPngAndManifestThenIsUpToDate) {
                                                  dir / "out" / "tiny-sweep.png"}));
   EXPECT_EQ(lines_of(dir / "out" / "tiny-sweep.csv").size(), 3u);  // the header, two points
   const fs::path manifest = dir / "out" / "tiny" / "sweep-manifest.json";
-  EXPECT_EQ(output::manifest_outputs(manifest),
+  EXPECT_EQ(output::read_manifest(manifest).outputs,
             (std::vector<std::string>{"tiny-sweep.csv", "tiny-sweep.png"}));
   const std::string text = test::read_file(manifest);
   EXPECT_NE(text.find("\"command\": \"sweep\""), std::string::npos) << text;
