@@ -5,9 +5,9 @@
 #include <cstdio>
 
 #include "charts/accuracy_plots.hpp"
+#include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 #include "output/atomic_output.hpp"
-#include "output/csv_writer.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "overlay/plot.hpp"
@@ -19,28 +19,28 @@ namespace {
 /// The accuracy CSV as a table, one row per method and dt. A cell is empty where there is no
 /// value: no orientation error after a divergence, no flip period where fewer than two flips
 /// were seen, no first flip where none was (docs/outputs.md, "Numbers").
-output::CsvTable accuracy_table(const std::vector<analysis::AccuracyRow>& rows) {
+CsvTable accuracy_table(const std::vector<analysis::AccuracyRow>& rows) {
   const auto unless = [](bool empty, double value) {
     return empty ? std::optional<double>() : std::optional<double>(value);
   };
-  output::CsvTable table{accuracy_csv_columns(), {}};
+  CsvTable table{accuracy_csv_columns(), {}};
   for (const auto& r : rows) {
     const bool no_flips = std::isnan(r.flip_period);
     table.rows.push_back({
         std::string(physics::to_string(r.method.kind)),
         std::string(physics::to_string(r.method.integrator)),
-        output::CsvNumber{r.dt},
+        CsvNumber{r.dt},
         std::to_string(r.steps),
-        output::CsvNumber{r.t_end},
-        output::CsvNumber{unless(r.diverged, r.orientation_error), "%.6e"},
-        output::CsvNumber{r.energy_drift, "%.6e"},
-        output::CsvNumber{r.L_drift, "%.6e"},
-        output::CsvNumber{unless(no_flips, r.flip_period)},
-        output::CsvNumber{unless(no_flips, r.flip_period_error), "%.6e"},
-        output::CsvNumber{r.ns_per_step, "%.2f"},
+        CsvNumber{r.t_end},
+        CsvNumber{unless(r.diverged, r.orientation_error), "%.6e"},
+        CsvNumber{r.energy_drift, "%.6e"},
+        CsvNumber{r.L_drift, "%.6e"},
+        CsvNumber{unless(no_flips, r.flip_period)},
+        CsvNumber{unless(no_flips, r.flip_period_error), "%.6e"},
+        CsvNumber{r.ns_per_step, "%.2f"},
         std::string(r.diverged ? "1" : "0"),
-        output::CsvNumber{unless(std::isnan(r.first_flip), r.first_flip)},
-        output::CsvNumber{unless(std::isnan(r.first_flip_error), r.first_flip_error), "%.6e"},
+        CsvNumber{unless(std::isnan(r.first_flip), r.first_flip)},
+        CsvNumber{unless(std::isnan(r.first_flip_error), r.first_flip_error), "%.6e"},
         std::to_string(r.flips),
         std::to_string(r.flips_exact),
     });
@@ -51,17 +51,17 @@ output::CsvTable accuracy_table(const std::vector<analysis::AccuracyRow>& rows) 
 /// The long-time energy CSV as a table: t, then one column per history
 /// (charts::method_label); a diverged run's history is shorter, and its missing windows stay
 /// empty.
-output::CsvTable energy_table(const std::vector<analysis::EnergyHistory>& histories) {
-  output::CsvTable table{{"t"}, {}};
+CsvTable energy_table(const std::vector<analysis::EnergyHistory>& histories) {
+  CsvTable table{{"t"}, {}};
   for (const auto& h : histories) table.columns.push_back(charts::method_label(h.method));
   const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
   for (std::size_t i = 0; i < rows; ++i) {
-    std::vector<output::CsvCell> row{output::CsvNumber{histories.front().t[i], "%.9g"}};
+    std::vector<CsvCell> row{CsvNumber{histories.front().t[i], "%.9g"}};
     for (const auto& h : histories)
-      row.push_back(output::CsvNumber{i < h.relative_error.size()
-                                          ? std::optional<double>(h.relative_error[i])
-                                          : std::optional<double>(),
-                                      "%.6e"});
+      row.push_back(CsvNumber{i < h.relative_error.size()
+                                  ? std::optional<double>(h.relative_error[i])
+                                  : std::optional<double>(),
+                              "%.6e"});
     table.rows.push_back(std::move(row));
   }
   return table;
@@ -181,20 +181,20 @@ AccuracyReport measure_accuracy(const AccuracyRequest& request) {
 std::vector<std::filesystem::path> write_accuracy_report(const AccuracyPaths& paths,
                                                          const AccuracyReport& report) {
   // The report's two tables and four plots first, then its files.
-  const output::CsvTable accuracy = accuracy_table(report.rows);
-  const output::CsvTable energy = energy_table(report.energy);
+  const CsvTable accuracy = accuracy_table(report.rows);
+  const CsvTable energy = energy_table(report.energy);
   const charts::AccuracyPlots plots = charts::accuracy_plots(
       report.rows, report.methods, report.flips, report.energy, kLongTimeFlips);
   const auto image = [](const overlay::PlotSpec& spec) {
     return overlay::plot_image(spec, 1400, 900);
   };
   output::prepare_output_dir(paths.csv.parent_path());
-  output::write_text_file(paths.csv, output::csv_text(accuracy, "accuracy CSV"));
+  output::write_text_file(paths.csv, csv_text(accuracy, "accuracy CSV"));
   output::write_png(paths.png, image(plots.orientation_error_vs_dt));
   output::write_png(paths.work_precision_png, image(plots.work_precision));
   output::write_png(paths.energy_vs_dt_png, image(plots.energy_vs_dt));
   output::write_png(paths.energy_png, image(plots.long_time_energy));
-  output::write_text_file(paths.energy_csv, output::csv_text(energy, "energy CSV"));
+  output::write_text_file(paths.energy_csv, csv_text(energy, "energy CSV"));
   return {paths.csv,        paths.png,       paths.work_precision_png, paths.energy_vs_dt_png,
           paths.energy_png, paths.energy_csv};
 }

@@ -1,8 +1,5 @@
 #include "products/accuracy.hpp"
 
-#include <cstdio>
-#include <sstream>
-
 #include "cache/manifest_head.hpp"
 #include "charts/accuracy_plots.hpp"
 
@@ -22,20 +19,14 @@ AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene
 
 std::string accuracy_manifest_head(const AccuracyJob& job) {
   const jobs::AccuracyRequest& r = job.request;
-  std::ostringstream options;
-  char number[32];
-  std::snprintf(number, sizeof number, "%.17g", r.flips);
-  options << "    \"flips\": " << number << ",\n    \"dt\": [";
-  for (std::size_t i = 0; i < r.dts.size(); ++i) {
-    std::snprintf(number, sizeof number, "%.17g", r.dts[i]);
-    options << (i ? ", " : "") << number;
-  }
-  options << "],\n    \"methods\": [";
-  const auto methods = r.methods.empty() ? analysis::accuracy_methods() : r.methods;
-  for (std::size_t i = 0; i < methods.size(); ++i)
-    options << (i ? ", " : "") << '"' << charts::method_label(methods[i]) << '"';
-  options << "]\n";
-  return cache::manifest_head("accuracy", options.str(), r.scene);
+  JsonArray dts, labels;
+  for (const double dt : r.dts) dts.push_back({JsonNumber{dt, NumberStyle::digits17}});
+  for (const auto& m : r.methods.empty() ? analysis::accuracy_methods() : r.methods)
+    labels.push_back({charts::method_label(m)});
+  const JsonObject options{{"flips", {JsonNumber{r.flips, NumberStyle::digits17}}},
+                           {"dt", {std::move(dts)}},
+                           {"methods", {std::move(labels)}}};
+  return cache::manifest_head("accuracy", options, r.scene);
 }
 
 Outcome make_accuracy(const AccuracyJob& job) {

@@ -5,7 +5,7 @@
 
 #include "cache/manifest_head.hpp"
 #include "clip/clip.hpp"
-#include "common/json_string.hpp"
+#include "common/json_writer.hpp"
 #include "output/manifest.hpp"
 
 namespace bookspin::products {
@@ -37,10 +37,9 @@ std::vector<std::string> divergence_warnings(const std::string& name,
 /// The manifest's "warnings" member (in its note: recorded, not compared), so that a run
 /// that finds the clip up to date repeats them.
 std::string warnings_json(const std::vector<std::string>& warnings) {
-  std::string json = "  \"warnings\": [";
-  for (std::size_t i = 0; i < warnings.size(); ++i)
-    json.append(i == 0 ? "" : ", ").append(json_string(warnings[i]));
-  return json.append("],\n");
+  JsonArray list;
+  for (const std::string& w : warnings) list.push_back({w});
+  return json_member_lines({{"warnings", {std::move(list)}}}, "manifest note", 2, false);
 }
 
 /// The warnings recorded in a manifest by warnings_json(), unescaped (only \" and \\ occur
@@ -126,10 +125,9 @@ clip::ClipRequest clip_request(const ClipJob& job) {
 std::string clip_manifest_head(const ClipJob& job) {
   const int compression =
       job.png_compression >= 0 ? job.png_compression : job.scene.render.png_compression;
-  std::ostringstream options;
-  options << "    \"png\": " << (job.write_png ? "true" : "false") << ",\n"
-          << "    \"png_compression\": " << compression << "\n";
-  return cache::manifest_head("render", options.str(), job.scene);
+  const JsonObject options{{"png", {job.write_png}},
+                           {"png_compression", {std::int64_t{compression}}}};
+  return cache::manifest_head("render", options, job.scene);
 }
 
 ClipOutcome make_clip(const ClipJob& job) {

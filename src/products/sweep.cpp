@@ -2,7 +2,6 @@
 
 #include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
-#include "common/json_string.hpp"
 
 namespace bookspin::products {
 
@@ -18,11 +17,10 @@ std::function<fs::path(int, int)> shard_in(const fs::path& dir, const std::strin
 }
 
 /// The sweep's output options for its manifest: the ranges and the measures as given.
-std::string sweep_options_json(const SweepJob& job) {
-  std::string json = "    \"vary\": [";
-  for (std::size_t i = 0; i < job.vary.size(); ++i)
-    json.append(i == 0 ? "" : ", ").append(json_string(job.vary[i]));
-  return json.append("],\n    \"measures\": ").append(json_string(job.measures)).append("\n");
+JsonObject sweep_options(const SweepJob& job) {
+  JsonArray vary;
+  for (const std::string& v : job.vary) vary.push_back({v});
+  return {{"vary", {std::move(vary)}}, {"measures", {job.measures}}};
 }
 
 }  // namespace
@@ -57,7 +55,7 @@ SweepOutcome make_sweep(const SweepJob& job) {
     const scene::Scene& scene = *request.scene;
     done.name = scene.name;
     const fs::path manifest = sweep_manifest_path(job.out_dir, scene.name);
-    const std::string options = sweep_options_json(job);
+    const JsonObject options = sweep_options(job);
     const CachedOutputs cached{scene.name + "-sweep", manifest,
                                cache::manifest_head("sweep", options, scene), job.out_dir, &scene};
     done.outcome = make_cached(cached, job.freshness, [&]() -> std::optional<Made> {
