@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "common/csv_writer.hpp"
 #include "output/atomic_output.hpp"
 
 namespace bookspin::bench {
@@ -25,14 +26,6 @@ std::string format_value(double value) {
   return text;
 }
 
-// CSV fields: quoted when they hold a comma or a quote.
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + '"';
-}
-
 }  // namespace
 
 void BenchReport::add(BenchRow row) {
@@ -51,13 +44,13 @@ void BenchReport::remark(const std::string& text) const {
 void BenchReport::write_csv(const std::filesystem::path& path) const {
   output::AtomicFile file(path);
   std::ofstream out(file.temp_path(), std::ios::binary);
-  out << "section,metric,value,unit,note\n";
+  CsvTable table{{"section", "metric", "value", "unit", "note"}, {}};
   for (const BenchRow& r : rows_) {
-    char value[32];
-    std::snprintf(value, sizeof value, "%.9g", r.value);
-    out << csv_field(r.section) << ',' << csv_field(r.metric) << ',' << value << ','
-        << csv_field(r.unit) << ',' << csv_field(r.note) << '\n';
+    // A measurement that could not be made (n/a on the screen) is an empty cell.
+    const auto value = std::isfinite(r.value) ? std::optional<double>(r.value) : std::nullopt;
+    table.rows.push_back({r.section, r.metric, CsvNumber{value, "%.9g"}, r.unit, r.note});
   }
+  out << csv_text(table, "bench CSV");
   out.close();
   if (!out) throw_output_error("cannot write", path, errno);
   file.commit();

@@ -21,7 +21,8 @@ class BenchReport {
   void add(BenchRow row);
   /// A line of text in the table (a skipped section, a machine description).
   void remark(const std::string& text) const;
-  /// section,metric,value,unit,note with a header line; throws OutputError.
+  /// section,metric,value,unit,note with a header line (common/csv_writer.hpp; value in %.9g,
+  /// empty where it is not finite); throws OutputError.
   void write_csv(const std::filesystem::path& path) const;
   const std::vector<BenchRow>& rows() const { return rows_; }
 

@@ -1,9 +1,6 @@
 #include "cache/manifest_head.hpp"
 
-#include <sstream>
-
 #include "common/errors.hpp"
-#include "common/json_string.hpp"
 #include "output/manifest.hpp"
 #include "output/sha256.hpp"
 #include "scene/canonical.hpp"
@@ -17,12 +14,12 @@ namespace {
 std::string hash_of(const std::string& role, const std::string& path) {
   const auto hash = output::sha256_file(path);
   if (!hash) throw InputError(path + ": cannot read the " + role + " file");
-  return "\"sha256:" + *hash + "\"";
+  return "sha256:" + *hash;
 }
 
 /// "inputs": every file the scene reads as bytes (its textures, its mesh), by key, with their
 /// SHA-256.
-std::string inputs_json(const scene::Scene& scene) {
+JsonValue inputs_json(const scene::Scene& scene) {
   std::vector<std::pair<std::string, std::string>> files;
   const auto& r = scene.render;
   for (const auto& [key, path] : {std::pair{"render.texture_front", &r.texture_front},
@@ -32,14 +29,10 @@ std::string inputs_json(const scene::Scene& scene) {
     if (!path->empty()) files.emplace_back(key, *path);
   }
   if (!scene.body_mesh.empty()) files.emplace_back("body.mesh", scene.body_mesh);
-  std::ostringstream out;
-  out << "  \"inputs\": {";
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    out << (i == 0 ? "\n" : ",\n") << "    " << json_string(files[i].first) << ": "
-        << hash_of(files[i].first, files[i].second);
-  }
-  out << (files.empty() ? "},\n" : "\n  },\n");
-  return out.str();
+  JsonObject inputs;
+  for (const auto& [key, path] : files) inputs.push_back({key, {hash_of(key, path)}});
+  const bool lines = !inputs.empty();  // "{}" when the scene reads no file
+  return {std::move(inputs), lines};
 }
 
 /// SHA-256 of the body's surface as simulated and drawn (vertices, triangles, face colours in
@@ -59,28 +52,31 @@ std::string surface_hash(const physics::Body& body) {
 
 }  // namespace
 
-std::string manifest_head(const std::string& command, const std::string& options,
+std::string manifest_head(const std::string& command, const JsonObject& members) {
+  JsonObject head{{"manifest", {std::int64_t{1}}}, {"command", {command}}};
+  head.insert(head.end(), members.begin(), members.end());
+  return json_member_lines(head, "manifest head", 2, false);
+}
+
+std::string manifest_head(const std::string& command, const JsonObject& options,
                           const scene::Scene& scene) {
-  std::ostringstream out;
-  out << "  \"manifest\": 1,\n"
-      << "  \"command\": " << json_string(command) << ",\n"
-      << "  \"bookspin\": {\"version\": " << json_string(output::program_version())
-      << ", \"build_id\": \"sha256:" << output::program_build_id() << "\"},\n"
-      << "  \"options\": {\n"
-      << options << "  },\n"
-      << "  \"scene\": {\n"
-      << scene::canonical_json(scene, 4) << "  },\n";
+  JsonObject head{{"bookspin",
+                   {JsonObject{{"version", {output::program_version()}},
+                               {"build_id", {"sha256:" + output::program_build_id()}}}}},
+                  {"options", {options, true}},
+                  {"scene", {scene::canonical_scene(scene), true}}};
   if (const std::string surface = surface_hash(scene.body); !surface.empty())
-    out << "  \"body_surface\": \"sha256:" << surface << "\",\n";
-  out << inputs_json(scene);
-  return out.str();
+    head.push_back({"body_surface", {"sha256:" + surface}});
+  head.push_back({"inputs", inputs_json(scene)});
+  return manifest_head(command, head);
 }
 
 std::string manifest_note(const scene::Scene& scene) {
   std::error_code ec;
   const fs::path path = fs::weakly_canonical(scene.source, ec);
-  return "  \"scene_file\": {\"path\": " + json_string((ec ? scene.source : path).string()) +
-         ", \"sha256\": " + hash_of("scene", scene.source.string()) + "},\n";
+  const JsonObject file{{"path", {(ec ? scene.source : path).string()}},
+                        {"sha256", {hash_of("scene", scene.source.string())}}};
+  return json_member_lines({{"scene_file", {file}}}, "manifest note", 2, false);
 }
 
 }  // namespace bookspin::cache

@@ -10,17 +10,26 @@
 // scene file's path and SHA-256 go in the manifest's note (recorded, not compared).
 #include <string>
 
+#include "common/json_writer.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::cache {
 
+// A head and a note are JSON members written by the one JSON writer (common/json_writer.hpp,
+// json_member_lines: indented by two spaces, each line ending in ','), the text that
+// output::write_manifest puts between the manifest's "{" and its "outputs".
+
 /// The note of every manifest: the scene file's absolute path and SHA-256. Throws InputError.
 std::string manifest_note(const scene::Scene& scene);
 
-/// The head of any command's manifest: `options` are its output options as JSON members, each
-/// line indented by four spaces, comma-separated. Throws InputError when an input file cannot
-/// be read.
-std::string manifest_head(const std::string& command, const std::string& options,
+/// The head of a manifest that names no scene (the explorer page, the gallery): the manifest
+/// format, `command`, then `members`.
+std::string manifest_head(const std::string& command, const JsonObject& members);
+
+/// The head of a command's manifest for one scene: `options` are its output options (an object
+/// written over lines, "{\n  }" when empty). Throws InputError when an input file cannot be
+/// read.
+std::string manifest_head(const std::string& command, const JsonObject& options,
                           const scene::Scene& scene);
 
 }  // namespace bookspin::cache

@@ -1,7 +1,7 @@
 #pragma once
 // The one JSON string escaper, for every stage that writes JSON: the canonical scene and the
 // manifests (scene/canonical.hpp, cache/), and the JSON writer of the outputs
-// (output/json_writer.hpp).
+// (json_writer.hpp).
 #include <string>
 
 namespace bookspin {

@@ -5,8 +5,8 @@
 #include <cstdio>
 
 #include "charts/accuracy_plots.hpp"
+#include "common/csv_writer.hpp"
 #include "common/errors.hpp"
-#include "output/csv_writer.hpp"
 
 namespace bookspin::jobs {
 
@@ -123,28 +123,28 @@ AccuracyReport measure_accuracy(const AccuracyRequest& request) {
   return report;
 }
 
-output::CsvTable accuracy_csv(const AccuracyReport& report) {
+CsvTable accuracy_csv(const AccuracyReport& report) {
   const auto unless = [](bool empty, double value) {
     return empty ? std::optional<double>() : std::optional<double>(value);
   };
-  output::CsvTable table{accuracy_csv_columns(), {}};
+  CsvTable table{accuracy_csv_columns(), {}};
   for (const auto& r : report.rows) {
     const bool no_flips = std::isnan(r.flip_period);
     table.rows.push_back({
         std::string(physics::to_string(r.method.kind)),
         std::string(physics::to_string(r.method.integrator)),
-        output::CsvNumber{r.dt},
+        CsvNumber{r.dt},
         std::to_string(r.steps),
-        output::CsvNumber{r.t_end},
-        output::CsvNumber{unless(r.diverged, r.orientation_error), "%.6e"},
-        output::CsvNumber{r.energy_drift, "%.6e"},
-        output::CsvNumber{r.L_drift, "%.6e"},
-        output::CsvNumber{unless(no_flips, r.flip_period)},
-        output::CsvNumber{unless(no_flips, r.flip_period_error), "%.6e"},
-        output::CsvNumber{r.ns_per_step, "%.2f"},
+        CsvNumber{r.t_end},
+        CsvNumber{unless(r.diverged, r.orientation_error), "%.6e"},
+        CsvNumber{r.energy_drift, "%.6e"},
+        CsvNumber{r.L_drift, "%.6e"},
+        CsvNumber{unless(no_flips, r.flip_period)},
+        CsvNumber{unless(no_flips, r.flip_period_error), "%.6e"},
+        CsvNumber{r.ns_per_step, "%.2f"},
         std::string(r.diverged ? "1" : "0"),
-        output::CsvNumber{unless(std::isnan(r.first_flip), r.first_flip)},
-        output::CsvNumber{unless(std::isnan(r.first_flip_error), r.first_flip_error), "%.6e"},
+        CsvNumber{unless(std::isnan(r.first_flip), r.first_flip)},
+        CsvNumber{unless(std::isnan(r.first_flip_error), r.first_flip_error), "%.6e"},
         std::to_string(r.flips),
         std::to_string(r.flips_exact),
     });
@@ -152,15 +152,15 @@ output::CsvTable accuracy_csv(const AccuracyReport& report) {
   return table;
 }
 
-output::CsvTable energy_csv(const AccuracyReport& report) {
+CsvTable energy_csv(const AccuracyReport& report) {
   const std::vector<analysis::EnergyHistory>& histories = report.energy;
-  output::CsvTable table{{"t"}, {}};
+  CsvTable table{{"t"}, {}};
   for (const auto& h : histories) table.columns.push_back(charts::method_label(h.method));
   const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
   for (std::size_t i = 0; i < rows; ++i) {
-    std::vector<output::CsvCell> row{output::CsvNumber{histories.front().t[i], "%.9g"}};
+    std::vector<CsvCell> row{CsvNumber{histories.front().t[i], "%.9g"}};
     for (const auto& h : histories)
-      row.push_back(output::CsvNumber{i < h.relative_error.size()
+      row.push_back(CsvNumber{i < h.relative_error.size()
                                           ? std::optional<double>(h.relative_error[i])
                                           : std::optional<double>(),
                                       "%.6e"});

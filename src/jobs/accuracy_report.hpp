@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "analysis/accuracy.hpp"
+#include "common/csv_writer.hpp"
 #include "common/stop.hpp"
-#include "output/csv_writer.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
@@ -66,11 +66,11 @@ AccuracyReport measure_accuracy(const AccuracyRequest& request);
 /// empty where there is no value (no orientation error after a divergence, no flip period
 /// where fewer than two flips were seen, no first flip where none was; docs/outputs.md,
 /// "Numbers").
-output::CsvTable accuracy_csv(const AccuracyReport& report);
+CsvTable accuracy_csv(const AccuracyReport& report);
 
 /// The long-time energy CSV of `report`: t, then one column per history
 /// (charts::method_label); a diverged run's history is shorter, and its missing windows stay
 /// empty.
-output::CsvTable energy_csv(const AccuracyReport& report);
+CsvTable energy_csv(const AccuracyReport& report);
 
 }  // namespace bookspin::jobs

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "common/json_writer.hpp"
 #include "mesh/mesh.hpp"
-#include "output/finite_number.hpp"
 
 namespace bookspin::jobs {
 
@@ -26,12 +26,6 @@ physics::MassProperties mesh_inertia(const InertiaRequest& request) {
 
 namespace {
 
-/// The shortest text that reads back as exactly `x` (std::to_chars), valid JSON: finite, or
-/// an internal error naming the field (output/finite_number.hpp).
-std::string exact(double x, std::string_view field) {
-  return output::finite_text(x, "inertia JSON field " + std::string(field));
-}
-
 /// Ten significant digits, for people.
 std::string readable(double x) {
   char buffer[32];
@@ -44,34 +38,24 @@ std::string row(const Eigen::RowVector3d& v, Format format, const char* sep) {
   return format(v(0)) + sep + format(v(1)) + sep + format(v(2));
 }
 
-// Built with append: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string.
-std::string json_vector(const Eigen::RowVector3d& v, std::string_view field) {
-  const auto number = [field](double x) { return exact(x, field); };
-  std::string out;
-  return out.append("[").append(row(v, number, ", ")).append("]");
-}
+/// A row as a JSON array of three numbers.
+JsonValue json_vector(const Eigen::RowVector3d& v) { return {JsonArray{{v(0)}, {v(1)}, {v(2)}}}; }
 
-std::string json_matrix(const Eigen::Matrix3d& m, std::string_view field) {
-  std::string out;
-  return out.append("[")
-      .append(json_vector(m.row(0), field))
-      .append(", ")
-      .append(json_vector(m.row(1), field))
-      .append(", ")
-      .append(json_vector(m.row(2), field))
-      .append("]");
+/// A matrix as a JSON array of its rows.
+JsonValue json_matrix(const Eigen::Matrix3d& m) {
+  return {JsonArray{json_vector(m.row(0)), json_vector(m.row(1)), json_vector(m.row(2))}};
 }
 
 }  // namespace
 
 std::string inertia_json(const physics::MassProperties& p) {
-  std::ostringstream out;
-  out << "{\"volume\": " << exact(p.volume, "volume") << ", \"mass\": " << exact(p.mass, "mass")
-      << ", \"center_of_mass\": " << json_vector(p.center_of_mass.transpose(), "center_of_mass")
-      << ", \"inertia\": " << json_matrix(p.I_body, "inertia") << ", \"principal_moments\": "
-      << json_vector(p.principal_moments.transpose(), "principal_moments")
-      << ", \"principal_axes\": " << json_matrix(p.principal_axes, "principal_axes") << "}\n";
-  return out.str();
+  const JsonObject members{{"volume", {p.volume}},
+                           {"mass", {p.mass}},
+                           {"center_of_mass", json_vector(p.center_of_mass.transpose())},
+                           {"inertia", json_matrix(p.I_body)},
+                           {"principal_moments", json_vector(p.principal_moments.transpose())},
+                           {"principal_axes", json_matrix(p.principal_axes)}};
+  return json_text({members}, "inertia JSON field", JsonLayout::indented) + "\n";
 }
 
 std::string inertia_table(const std::string& file, const physics::MassProperties& p) {

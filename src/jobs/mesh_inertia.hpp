@@ -25,7 +25,7 @@ physics::MassProperties mesh_inertia(const InertiaRequest& request);
 
 /// `p` as one line of JSON: volume, mass, center_of_mass, inertia (3×3 rows), principal_moments,
 /// principal_axes (3×3, one row per moment), each number the shortest text that reads back
-/// exactly. A non-finite number is an internal error naming the field (output/finite_number.hpp).
+/// exactly. A non-finite number is an internal error naming the field (common/number_text.hpp).
 std::string inertia_json(const physics::MassProperties& p);
 
 /// `p` as the table `bookspin inertia` prints for people (ten significant digits), headed by

@@ -4,18 +4,17 @@
 #include <optional>
 #include <string_view>
 
+#include "common/csv_writer.hpp"
 #include "common/errors.hpp"
-#include "output/finite_number.hpp"
 
 namespace bookspin::jobs {
 
 namespace {
 
 /// A measure's cell: empty where the run does not reach it (no flip), else its value, checked
-/// finite on the way out (output/finite_number.hpp).
+/// finite on the way out (common/number_text.hpp).
 std::string cell(const std::optional<double>& v, std::string_view column) {
-  return v ? full_precision(output::finite(*v, "sweep CSV column " + std::string(column)))
-           : std::string();
+  return finite_text(v, "sweep CSV column " + std::string(column), NumberStyle::digits17);
 }
 
 }  // namespace
@@ -49,7 +48,7 @@ std::vector<std::string> sweep_row_cells(const std::vector<double>& point,
                                          const MeasureList& measures,
                                          const analysis::RunMeasures& m) {
   std::vector<std::string> cells;
-  for (double v : point) cells.push_back(full_precision(output::finite(v, "sweep grid value")));
+  for (double v : point) cells.push_back(finite_text(v, "sweep grid value", NumberStyle::digits17));
   for (const analysis::Measure* measure : measures)
     cells.push_back(cell(m.*(measure->value), measure->name));
   for (const analysis::Measure* measure : measures)
@@ -57,12 +56,9 @@ std::vector<std::string> sweep_row_cells(const std::vector<double>& point,
   return cells;
 }
 
-std::string csv_line(const std::vector<std::string>& cells, const std::string& first) {
-  std::string line = first;
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    if (i > 0 || !first.empty()) line += ',';
-    line += cells[i];
-  }
+std::vector<std::string> after(const std::string& first, const std::vector<std::string>& cells) {
+  std::vector<std::string> line{first};
+  line.insert(line.end(), cells.begin(), cells.end());
   return line;
 }
 
@@ -76,8 +72,8 @@ std::vector<std::string> csv_cells(const std::string& line) {
 }
 
 void write_sweep_csv(const SweepTable& table, std::ostream& out) {
-  out << csv_line(table.header) << '\n';
-  for (const auto& [index, cells] : table.rows) out << csv_line(cells) << '\n';
+  out << csv_row(table.header) << '\n';
+  for (const auto& [index, cells] : table.rows) out << csv_row(cells) << '\n';
 }
 
 }  // namespace bookspin::jobs

@@ -39,18 +39,18 @@ std::vector<std::string> sweep_csv_header(const std::vector<VaryRange>& ranges,
 
 /// One grid point's cells in sweep_csv_header's order: `point`'s values (one per range), then
 /// each measure of `m`, then the exact columns; each %.17g, a measure empty where the run does
-/// not reach it (no flip). Throws an internal error (output/finite_number.hpp) for a value
+/// not reach it (no flip). Throws an internal error (common/number_text.hpp) for a value
 /// that is not finite.
 std::vector<std::string> sweep_row_cells(const std::vector<double>& point,
                                          const MeasureList& measures,
                                          const analysis::RunMeasures& m);
 
-/// `cells` joined by commas into one CSV line (no line ending), after `first` when it is not
-/// empty (a shard's grid_index).
-std::string csv_line(const std::vector<std::string>& cells, const std::string& first = {});
+/// `first`, then `cells`: a shard's line, its grid index first (common/csv_writer.hpp's
+/// csv_row writes it).
+std::vector<std::string> after(const std::string& first, const std::vector<std::string>& cells);
 
-/// A CSV line's cells, split at every comma (the sweep's cells hold none): the inverse of
-/// csv_line.
+/// A CSV line's cells, split at every comma (the sweep's cells, scene keys, measure names and
+/// numbers, hold none, so csv_row writes them as they are): the inverse of csv_row.
 std::vector<std::string> csv_cells(const std::string& line);
 
 /// Writes the full CSV (header, then one line per row without the grid index) to `out`.

@@ -1,11 +1,11 @@
 #include "jobs/sweep_grid.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <map>
 
 #include "common/errors.hpp"
+#include "common/number_text.hpp"
 #include "scene/limits.hpp"
 
 namespace bookspin::jobs {
@@ -50,9 +50,7 @@ const Eigen::Vector3d* vector_value(const scene::Scene& scene, const std::string
 }  // namespace
 
 std::string full_precision(double value) {
-  char cell[40];
-  std::snprintf(cell, sizeof cell, "%.17g", value);
-  return cell;
+  return finite_text(value, "sweep grid value", NumberStyle::digits17);
 }
 
 std::vector<double> VaryRange::values() const {

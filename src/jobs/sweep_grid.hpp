@@ -65,7 +65,8 @@ class SweepGrid {
 std::vector<std::string> point_overrides(const scene::Scene& base, const SweepGrid& grid,
                                          std::size_t index);
 
-/// "%.17g" of `value`: 17 significant digits, which read back to the same double.
+/// "%.17g" of `value` (NumberStyle::digits17 of common/number_text.hpp): 17 significant digits,
+/// which read back to the same double. Throws InternalError for a value that is not finite.
 std::string full_precision(double value);
 
 }  // namespace bookspin::jobs

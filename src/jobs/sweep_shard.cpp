@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 #include "output/manifest.hpp"
 #include "output/sha256.hpp"
@@ -106,9 +107,9 @@ std::string sweep_shard_text(const SweepTable& table, const scene::Scene& scene,
   text << kShardMagic << k << " of " << n << ": "
        << shard_meta(table, grid_points, output::sha256_text(scene::canonical_json(scene, 0)))
        << '\n'
-       << csv_line(table.header, "grid_index") << '\n';
+       << csv_row(after("grid_index", table.header)) << '\n';
   for (const auto& [index, cells] : table.rows)
-    text << csv_line(cells, std::to_string(index)) << '\n';
+    text << csv_row(after(std::to_string(index), cells)) << '\n';
   return text.str();
 }
 
@@ -166,9 +167,9 @@ SweepTable read_sweep_shards(const std::vector<std::filesystem::path>& shards,
       throw InputError(name + ": shard " + std::to_string(k) + " of " + std::to_string(n) +
                        " is also given as " + shard_files[k].string());
     }
-    if (!read_line(in, header) || header != csv_line(table.header, "grid_index"))
-      throw InputError(name + ":2: header differs from the sweep's: expected grid_index," +
-                       csv_line(table.header));
+    if (!read_line(in, header) || header != csv_row(after("grid_index", table.header)))
+      throw InputError(name + ":2: header differs from the sweep's: expected " +
+                       csv_row(after("grid_index", table.header)));
     // Cells 1 … ranges are the varied values (always numbers); the rest are measures and
     // their exact columns, empty where undefined.
     const std::size_t varied = table.ranges.size();

@@ -5,36 +5,43 @@
 #include <sstream>
 #include <vector>
 
-#include "output/finite_number.hpp"
+#include "common/csv_writer.hpp"
+#include "common/errors.hpp"
 #include "output/output_dir.hpp"
 
 namespace bookspin::output {
 
 namespace {
 
-/// The CSV's column names, in order.
-const std::vector<std::string>& column_names() {
+/// The CSV's columns, in order.
+const std::vector<std::string>& columns() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> out;
-    std::stringstream header(diagnostics_csv_header());
-    for (std::string name; std::getline(header, name, ',');)
-      out.push_back("diagnostics CSV column " + name);
+    std::istringstream list(
+        "frame t omega_x omega_y omega_z L_x L_y L_z energy_kinetic energy_potential energy_total "
+        "cos_x_L cos_y_L cos_z_L strain_max orthogonality_error quaternion_norm cos_smallest_L "
+        "cos_intermediate_L cos_largest_L q_w q_x q_y q_z com_x com_y com_z");
+    for (std::string name; list >> name;) out.push_back(name);
     return out;
   }();
   return names;
 }
 
-/// Appends ",value" for the next column (finite, or an internal error naming the column).
-void append_number(std::string& out, std::size_t& column, double value) {
-  out.push_back(',');
-  out.append(finite_text(value, column_names()[column++]));
-}
+/// A row's cells, each number checked finite under its column's name as it is added.
+struct Cells {
+  std::vector<std::string> cells;
 
-/// Appends ",value", or "," (an empty cell) for nullopt.
-void append_cell(std::string& out, std::size_t& column, const std::optional<double>& value) {
-  out.push_back(',');
-  out.append(finite_text(value, column_names()[column++]));
-}
+  void number(double value) { cell(std::optional<double>(value)); }
+  /// An empty cell for nullopt.
+  void cell(const std::optional<double>& value) {
+    static const std::vector<std::string> names = [] {
+      std::vector<std::string> out;
+      for (const std::string& column : columns()) out.push_back("diagnostics CSV column " + column);
+      return out;
+    }();
+    cells.push_back(finite_text(value, names[cells.size()]));
+  }
+};
 
 }  // namespace
 
@@ -50,38 +57,35 @@ Eigen::Vector4d pose_quaternion(const Eigen::Matrix3d& orientation) {
 }
 
 const std::string& diagnostics_csv_header() {
-  static const std::string header =
-      "frame,t,omega_x,omega_y,omega_z,L_x,L_y,L_z,energy_kinetic,energy_potential,"
-      "energy_total,cos_x_L,cos_y_L,cos_z_L,strain_max,orthogonality_error,quaternion_norm,"
-      "cos_smallest_L,cos_intermediate_L,cos_largest_L,q_w,q_x,q_y,q_z,com_x,com_y,com_z";
+  static const std::string header = csv_row(columns());
   return header;
 }
 
 std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d) {
-  std::string row = std::to_string(frame);
-  row.reserve(400);
-  std::size_t column = 1;
+  Cells row{{std::to_string(frame)}};
+  row.cells.reserve(columns().size());
   // The cosines with L have no value when L = 0 (a body at rest): empty cells, not NaN
   // (docs/outputs.md).
   const bool at_rest = d.L.isZero(0.0);
   const auto cosine = [at_rest](double value) {
     return at_rest ? std::nullopt : std::optional<double>(value);
   };
-  append_number(row, column, d.t);
-  for (int i = 0; i < 3; ++i) append_number(row, column, d.omega_body[i]);
-  for (int i = 0; i < 3; ++i) append_number(row, column, d.L[i]);
-  append_number(row, column, d.energy_kinetic);
-  append_number(row, column, d.energy_potential);
-  append_number(row, column, d.energy_total);
-  for (int i = 0; i < 3; ++i) append_cell(row, column, cosine(d.cos_axis_L[i]));
-  append_number(row, column, d.strain_max);
-  append_number(row, column, d.orthogonality_error);
-  append_number(row, column, d.quaternion_norm);
-  for (int i = 0; i < 3; ++i) append_cell(row, column, cosine(d.cos_principal_L[i]));
+  row.number(d.t);
+  for (int i = 0; i < 3; ++i) row.number(d.omega_body[i]);
+  for (int i = 0; i < 3; ++i) row.number(d.L[i]);
+  row.number(d.energy_kinetic);
+  row.number(d.energy_potential);
+  row.number(d.energy_total);
+  for (int i = 0; i < 3; ++i) row.cell(cosine(d.cos_axis_L[i]));
+  row.number(d.strain_max);
+  row.number(d.orthogonality_error);
+  row.number(d.quaternion_norm);
+  for (int i = 0; i < 3; ++i) row.cell(cosine(d.cos_principal_L[i]));
   const Eigen::Vector4d q = pose_quaternion(d.orientation);
-  for (int i = 0; i < 4; ++i) append_number(row, column, q[i]);
-  for (int i = 0; i < 3; ++i) append_number(row, column, d.center_of_mass[i]);
-  return row;
+  for (int i = 0; i < 4; ++i) row.number(q[i]);
+  for (int i = 0; i < 3; ++i) row.number(d.center_of_mass[i]);
+  BOOKSPIN_ASSERT(row.cells.size() == columns().size());
+  return csv_row(row.cells);
 }
 
 namespace {

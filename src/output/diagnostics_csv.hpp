@@ -15,10 +15,11 @@ namespace bookspin::output {
 /// com_x,com_y,com_z (centre of mass, world) (docs/outputs.md, "The pose in the CSV").
 const std::string& diagnostics_csv_header();
 
-/// One row (no newline) for `frame`; numbers in shortest round-trip form (std::to_chars), so
+/// One row (no newline, common/csv_writer.hpp's csv_row) for `frame`; numbers in shortest
+/// round-trip form (NumberStyle::shortest), so
 /// the same state always gives the same bytes. Frames: omega body, L world (docs/physics.md §9).
 /// The six cos_*_L cells are empty when L = 0 (at rest: no direction); any other number that
-/// is not finite throws InternalError naming its column (output/finite_number.hpp).
+/// is not finite throws InternalError naming its column (common/number_text.hpp).
 std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d);
 
 /// The unit quaternion (w, x, y, z) of rotation `orientation` (3×3, body→world), with

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
-#include "common/json_string.hpp"
+#include "common/json_writer.hpp"
 #include "common/text_file.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
@@ -40,7 +40,8 @@ bool is_hex64(std::string_view s) {
 }
 
 /// `    {"path": "P", "size": N, "sha256": "H"}` with an optional ',' (written by
-/// write_manifest, which never escapes: output names are [A-Za-z0-9._-/]).
+/// write_manifest through the JSON writer, which leaves output names as they are: they are
+/// [A-Za-z0-9._-/]).
 std::optional<Entry> parse_entry(std::string_view line) {
   constexpr std::string_view kPath = "    {\"path\": \"",
                              kSize = "\", \"size\": ", kHash = ", \"sha256\": \"", kEnd = "\"}";
@@ -132,23 +133,26 @@ std::vector<std::string> strings_in(const std::string& text, std::size_t at) {
 
 void write_manifest(const fs::path& manifest, std::string_view head, std::string_view note,
                     const fs::path& root, const std::vector<std::string>& outputs) {
-  std::ostringstream text;
-  text << "{\n" << head << note << kOutputsOpen;
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    const fs::path file = root / outputs[i];
+  JsonArray entries;
+  for (const std::string& output : outputs) {
+    const fs::path file = root / output;
     std::error_code ec;
     const std::uintmax_t size = fs::file_size(file, ec);
     if (ec) throw_output_error("cannot read", file, ec.value());
     const auto hash = sha256_file(file);
     if (!hash) throw_output_error("cannot read", file, errno);
-    text << "    {\"path\": \"" << outputs[i] << "\", \"size\": " << size << ", \"sha256\": \""
-         << *hash << "\"}" << (i + 1 < outputs.size() ? ",\n" : "\n");
+    entries.push_back({JsonObject{
+        {"path", {output}}, {"size", {static_cast<std::int64_t>(size)}}, {"sha256", {*hash}}}});
   }
-  text << kClose;
+  // The outputs, one a line: what entries_after() reads back.
+  const std::string text =
+      "{\n" + std::string(head) + std::string(note) +
+      json_member_lines({{"outputs", {std::move(entries), true}}}, "manifest outputs", 2, true) +
+      "}\n";
   std::error_code ec;
   make_directories(manifest.parent_path(), ec);
   if (ec) throw_output_error("cannot create", manifest.parent_path(), ec.value());
-  write_text_file(manifest, text.str());
+  write_text_file(manifest, text);
 }
 
 std::optional<std::string> manifest_stale(const fs::path& manifest, std::string_view head,
@@ -189,10 +193,9 @@ ManifestRecord read_manifest(const fs::path& manifest) {
 }
 
 std::string warnings_note(const std::vector<std::string>& warnings) {
-  std::string json(kWarningsOpen);
-  for (std::size_t i = 0; i < warnings.size(); ++i)
-    json.append(i == 0 ? "" : ", ").append(json_string(warnings[i]));
-  return json.append("],\n");
+  JsonArray list;
+  for (const std::string& w : warnings) list.push_back({w});
+  return json_member_lines({{"warnings", {std::move(list)}}}, "manifest note", 2, false);
 }
 
 std::string program_version() { return BOOKSPIN_VERSION; }

@@ -3,8 +3,9 @@
 // later run can tell whether it would produce the same and skip the work (`bookspin render`,
 // `plot`, `gallery`; docs/outputs.md).
 //
-// The file is JSON with a fixed layout, written by write_manifest() and read back here alone
-// (manifest_stale(), read_manifest()):
+// The file is JSON with a fixed layout, written by write_manifest() (through the one JSON
+// writer, common/json_writer.hpp, as are the heads and notes of cache/) and read back here
+// alone (manifest_stale(), read_manifest()):
 //
 //   {
 //     <head: the caller's members, each line indented by two spaces, the last ending in ','>

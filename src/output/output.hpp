@@ -11,16 +11,16 @@
 //   png_writer.hpp       PNG frames written with libdeflate in a container of our own (8-bit
 //                        RGB or RGBA), read with libpng
 //   gltf_writer.hpp      animated glTF 2.0 binaries (.glb) of one rigid body, with tinygltf
-//   csv_writer.hpp       a CSV table as a plain value, and its writer
-//   json_writer.hpp      JSON as a plain value, and its writer
-//   finite_number.hpp    the closing check that every number a CSV or JSON writer writes is
-//                        finite
 //   diagnostics_csv.hpp  the diagnostics CSV of a run, one row per frame with the pose
 //                        (docs/physics.md §9)
 //   manifest.hpp         manifest files (what produced a set of outputs, and their sizes and
 //                        hashes), the program's version and build id
 //   sha256.hpp           SHA-256 of files and text (libcrypto)
 //   data_url.hpp         bytes as a data: URL (base64, libcrypto)
+//
+// The CSV and JSON writers and the number formatter every CSV or JSON file goes through are
+// common's (common/csv_writer.hpp, common/json_writer.hpp, common/number_text.hpp), since the
+// scene's canonical form is JSON too.
 //
 // Units: image sizes in pixels, images RGBA top row first (common/rgba_image.hpp); numbers in
 // a CSV or JSON file in the units of their column or key (docs/outputs.md).
@@ -33,12 +33,9 @@
 // or missing manifest is no error, only "make it again". An output that failed or was
 // interrupted leaves no half-written file under its final name.
 #include "output/atomic_output.hpp"
-#include "output/csv_writer.hpp"
 #include "output/data_url.hpp"
 #include "output/diagnostics_csv.hpp"
-#include "output/finite_number.hpp"
 #include "output/gltf_writer.hpp"
-#include "output/json_writer.hpp"
 #include "output/manifest.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"

@@ -1,13 +1,10 @@
 #include "products/accuracy.hpp"
 
-#include <cstdio>
-#include <sstream>
-
 #include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
 #include "charts/accuracy_plots.hpp"
 #include "output/atomic_output.hpp"
-#include "output/csv_writer.hpp"
+#include "common/csv_writer.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 
@@ -30,20 +27,14 @@ AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene
 
 std::string accuracy_manifest_head(const AccuracyJob& job) {
   const jobs::AccuracyRequest& r = job.request;
-  std::ostringstream options;
-  char number[32];
-  std::snprintf(number, sizeof number, "%.17g", r.flips);
-  options << "    \"flips\": " << number << ",\n    \"dt\": [";
-  for (std::size_t i = 0; i < r.dts.size(); ++i) {
-    std::snprintf(number, sizeof number, "%.17g", r.dts[i]);
-    options << (i ? ", " : "") << number;
-  }
-  options << "],\n    \"methods\": [";
-  const auto methods = r.methods.empty() ? analysis::accuracy_methods() : r.methods;
-  for (std::size_t i = 0; i < methods.size(); ++i)
-    options << (i ? ", " : "") << '"' << charts::method_label(methods[i]) << '"';
-  options << "]\n";
-  return cache::manifest_head("accuracy", options.str(), r.scene);
+  JsonArray dts, labels;
+  for (const double dt : r.dts) dts.push_back({JsonNumber{dt, NumberStyle::digits17}});
+  for (const auto& m : r.methods.empty() ? analysis::accuracy_methods() : r.methods)
+    labels.push_back({charts::method_label(m)});
+  const JsonObject options{{"flips", {JsonNumber{r.flips, NumberStyle::digits17}}},
+                           {"dt", {std::move(dts)}},
+                           {"methods", {std::move(labels)}}};
+  return cache::manifest_head("accuracy", options, r.scene);
 }
 
 cache::Outcome make_accuracy(const AccuracyJob& job) {
@@ -52,17 +43,17 @@ cache::Outcome make_accuracy(const AccuracyJob& job) {
                                     accuracy_manifest_head(job), job.out_dir, &job.request.scene};
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::AccuracyReport report = jobs::measure_accuracy(job.request);
-    const output::CsvTable table = jobs::accuracy_csv(report);
-    const output::CsvTable energy = jobs::energy_csv(report);
+    const CsvTable table = jobs::accuracy_csv(report);
+    const CsvTable energy = jobs::energy_csv(report);
     const charts::AccuracyImages plots = charts::accuracy_images(
         report.rows, report.methods, report.flips, report.energy, jobs::kLongTimeFlips);
     output::prepare_output_dir(layout.csv.parent_path());
-    output::write_text_file(layout.csv, output::csv_text(table, "accuracy CSV"));
+    output::write_text_file(layout.csv, csv_text(table, "accuracy CSV"));
     output::write_png(layout.png, plots.orientation_error_vs_dt);
     output::write_png(layout.work_precision_png, plots.work_precision);
     output::write_png(layout.energy_vs_dt_png, plots.energy_vs_dt);
     output::write_png(layout.energy_png, plots.long_time_energy);
-    output::write_text_file(layout.energy_csv, output::csv_text(energy, "energy CSV"));
+    output::write_text_file(layout.energy_csv, csv_text(energy, "energy CSV"));
     return cache::Made{layout.outputs()};
   });
 }

@@ -86,10 +86,9 @@ clip::ClipRequest clip_request(const ClipJob& job) {
 std::string clip_manifest_head(const ClipJob& job) {
   const int compression =
       job.png_compression >= 0 ? job.png_compression : job.scene.render.png_compression;
-  std::ostringstream options;
-  options << "    \"png\": " << (job.write_png ? "true" : "false") << ",\n"
-          << "    \"png_compression\": " << compression << "\n";
-  return cache::manifest_head("render", options.str(), job.scene);
+  const JsonObject options{{"png", {job.write_png}},
+                           {"png_compression", {std::int64_t{compression}}}};
+  return cache::manifest_head("render", options, job.scene);
 }
 
 ClipOutcome make_clip(const ClipJob& job) {

@@ -6,10 +6,10 @@
 #include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
+#include "common/json_writer.hpp"
 #include "common/text_file.hpp"
 #include "output/atomic_output.hpp"
 #include "output/data_url.hpp"
-#include "output/json_writer.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "output/sha256.hpp"
@@ -22,8 +22,7 @@ namespace {
 
 /// The members model, integrator and normalize of `m`, each name followed by `suffix` ("" for
 /// the page's first method, "2" for the one it compares with).
-void add_method(output::JsonObject& state, const physics::ModelConfig& m,
-                const std::string& suffix) {
+void add_method(JsonObject& state, const physics::ModelConfig& m, const std::string& suffix) {
   state.push_back({"model" + suffix, {std::string(physics::to_string(m.kind))}});
   state.push_back({"integrator" + suffix, {std::string(physics::to_string(m.integrator))}});
   state.push_back({"normalize" + suffix, {m.normalize}});
@@ -49,7 +48,7 @@ std::vector<physics::ModelConfig> page_models(const scene::Scene& s) {
 
 /// The entries of `m` as doubles, column by column (Eigen's order: a 3×N matrix flattened).
 template <typename Matrix>
-output::JsonValue numbers(const Matrix& m) {
+JsonValue numbers(const Matrix& m) {
   return {std::vector<double>(m.data(), m.data() + m.size())};
 }
 
@@ -103,10 +102,10 @@ std::filesystem::path default_explorer_shell() {
   return (ec ? std::filesystem::path(".") : exe.parent_path()) / "web" / kExplorerShellName;
 }
 
-output::JsonObject explorer_scene_data(const scene::Scene& s) {
+JsonObject explorer_scene_data(const scene::Scene& s) {
   const std::vector<physics::ModelConfig> models = page_models(s);
   const physics::ModelConfig& first = models.front();
-  output::JsonObject state{{"body", {std::string(physics::to_string(s.body.shape))}}};
+  JsonObject state{{"body", {std::string(physics::to_string(s.body.shape))}}};
   add_method(state, first, "");
   state.insert(state.end(), {{"damping", {first.damping}},
                              {"k", {first.spring_constant}},
@@ -125,23 +124,22 @@ output::JsonObject explorer_scene_data(const scene::Scene& s) {
     add_method(state, models.back(), "2");
   }
   const physics::Body& b = s.body;
-  output::JsonObject scene{
-      {"name", {s.name}},
-      {"title", {s.title}},
-      {"description", {s.description}},
-      {"state", {std::move(state)}},
-      {"book", {output::JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}}};
+  JsonObject scene{{"name", {s.name}},
+                   {"title", {s.title}},
+                   {"description", {s.description}},
+                   {"state", {std::move(state)}},
+                   {"book", {JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}}};
   if (b.shape != physics::BodyShape::book) {
     scene.push_back({"body",
-                     {output::JsonObject{{"shape", {std::string(physics::to_string(b.shape))}},
-                                         {"mass", {b.cage.mass}},
-                                         {"moments", numbers(b.moments)},
-                                         {"cage", numbers(b.cage.size)},
-                                         {"volume", {b.volume}},
-                                         {"vertices", numbers(b.vertices)},
-                                         {"triangles", numbers(b.triangles)},
-                                         {"colours", numbers(b.face_colours)},
-                                         {"smooth", {b.smooth}}}}});
+                     {JsonObject{{"shape", {std::string(physics::to_string(b.shape))}},
+                                 {"mass", {b.cage.mass}},
+                                 {"moments", numbers(b.moments)},
+                                 {"cage", numbers(b.cage.size)},
+                                 {"volume", {b.volume}},
+                                 {"vertices", numbers(b.vertices)},
+                                 {"triangles", numbers(b.triangles)},
+                                 {"colours", numbers(b.face_colours)},
+                                 {"smooth", {b.smooth}}}}});
   }
   return scene;
 }
@@ -156,12 +154,12 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   Shell shell = read_shell(request);  // checked before any work
 
   // The page's data, as a plain value: every scene, then the book's faces.
-  output::JsonArray scenes;
+  JsonArray scenes;
   for (const scene::Scene& s : request.scenes) {
     stop_if_asked(request.stop_signal, "explore scenes");
     scenes.push_back({explorer_scene_data(s)});
   }
-  output::JsonObject book_art;
+  JsonObject book_art;
   const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
   for (int f = 0; f < 4; ++f) {
     stop_if_asked(request.stop_signal, "explore scenes");
@@ -170,13 +168,12 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   }
 
   // The data goes into the shell as JSON, handed to the writer once per script variable.
-  const std::string data =
-      "<script>window.BOOKSPIN_SCENES=" +
-      script_safe(output::json_text({std::move(scenes)}, "explorer page scene",
-                                    output::JsonLayout::element_per_line)) +
-      ";\nwindow.BOOKSPIN_BOOK_ART=" +
-      script_safe(output::json_text({std::move(book_art)}, "explorer page book art")) +
-      ";</script>";
+  const std::string data = "<script>window.BOOKSPIN_SCENES=" +
+                           script_safe(json_text({std::move(scenes)}, "explorer page scene",
+                                                 JsonLayout::element_per_line)) +
+                           ";\nwindow.BOOKSPIN_BOOK_ART=" +
+                           script_safe(json_text({std::move(book_art)}, "explorer page book art")) +
+                           ";</script>";
   // Both markers were found in the shell itself (never in the data): the later is replaced
   // first, so that the earlier one's place stands.
   std::string page = std::move(shell.page);
@@ -207,15 +204,15 @@ std::filesystem::path explorer_manifest_path(const std::filesystem::path& out_di
 ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
   std::string scenes;
   for (const scene::Scene& scene : request.scenes)
-    scenes += cache::manifest_head("explore", "", scene);
-  const std::string head =
-      "  \"manifest\": 1,\n  \"command\": \"explore\",\n  \"shell\": \"sha256:" +
-      output::sha256_file(request.shell).value_or("unreadable") + "\",\n" +
-      (request.engines.empty()
-           ? std::string()
-           : "  \"engines\": \"sha256:" +
-                 output::sha256_file(request.engines).value_or("unreadable") + "\",\n") +
-      "  \"scenes\": \"sha256:" + output::sha256_text(scenes) + "\",\n";
+    scenes += cache::manifest_head("explore", JsonObject{}, scene);
+  const auto sha256 = [](const std::optional<std::string>& hash) -> JsonValue {
+    return {"sha256:" + hash.value_or("unreadable")};
+  };
+  JsonObject members{{"shell", sha256(output::sha256_file(request.shell))}};
+  if (!request.engines.empty())
+    members.push_back({"engines", sha256(output::sha256_file(request.engines))});
+  members.push_back({"scenes", sha256(output::sha256_text(scenes))});
+  const std::string head = cache::manifest_head("explore", members);
   ExplorerOutcome done;
   done.result.path = explorer_page_path(request.out_dir);
   const cache::CachedOutputs cached{"explorer.html", explorer_manifest_path(request.out_dir), head,

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cache/freshness.hpp"
+#include "common/json_writer.hpp"
 #include "common/stop.hpp"
-#include "output/json_writer.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -37,7 +37,7 @@ inline constexpr const char* kExplorerEnginesMarker = "<!--BOOKSPIN_ENGINES-->";
 std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell);
 
 /// One scene as the page reads it (web/src/main.js, window.BOOKSPIN_SCENES[i]), as a plain value
-/// that output::json_text writes: a JSON object with name, title, description, `state` (the page's
+/// that json_text writes: a JSON object with name, title, description, `state` (the page's
 /// state, web/src/state.js: body, model, integrator, normalize, damping, k, cells, dt, axis
 /// "custom" with ω0 `w` (body frame, rad per time unit), jiggle, seed, speed in time units per
 /// second, the markers; a
@@ -47,7 +47,7 @@ std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell
 /// about x, y, z, cage size, volume, surface 3×V principal frame flattened column by column,
 /// triangles 3×N, face colours 3×N, smooth), so that the page's physics starts from the
 /// same doubles (written in shortest round-trip form) and needs no mesh reader. No I/O.
-output::JsonObject explorer_scene_data(const scene::Scene& scene);
+JsonObject explorer_scene_data(const scene::Scene& scene);
 
 struct ExplorerPageRequest {
   std::vector<scene::Scene> scenes;  ///< in the page's order; names must differ

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "cache/make_cached.hpp"
+#include "cache/manifest_head.hpp"
 #include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
 #include "output/output_dir.hpp"
@@ -185,9 +186,8 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
 
   GalleryHeader header{output::program_version(), output::program_build_id(), "", machine()};
   // Up to date: the same page but for its date (output/manifest.hpp).
-  const std::string head =
-      "  \"manifest\": 1,\n  \"command\": \"gallery\",\n  \"page_sha256\": \"" +
-      output::sha256_text(gallery_html(entries, header)) + "\",\n";
+  const std::string head = cache::manifest_head(
+      "gallery", {{"page_sha256", {output::sha256_text(gallery_html(entries, header))}}});
   GalleryOutcome done;
   done.entries = entries.size();
   const cache::CachedOutputs cached{layout.page.filename().string(), layout.manifest, head, out};

@@ -173,7 +173,7 @@ void check_gltf_scene(const scene::Scene& scene) {
 }
 
 std::string gltf_manifest_head(const GltfJob& job) {
-  return cache::manifest_head("export", "    \"format\": \"glb\"\n", job.scene);
+  return cache::manifest_head("export", {{"format", {std::string("glb")}}}, job.scene);
 }
 
 GltfExportResult make_gltf(const GltfJob& job) {

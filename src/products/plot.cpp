@@ -1,7 +1,5 @@
 #include "products/plot.hpp"
 
-#include <sstream>
-
 #include "analysis/frame_source.hpp"
 #include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
@@ -16,10 +14,9 @@ PlotLayout plot_layout(const std::filesystem::path& out_dir, const scene::Scene&
 }
 
 std::string plot_manifest_head(const PlotJob& job) {
-  std::ostringstream options;
-  options << "    \"width\": " << job.width << ",\n"
-          << "    \"height\": " << job.height << "\n";
-  return cache::manifest_head("plot", options.str(), job.scene);
+  const JsonObject options{{"width", {std::int64_t{job.width}}},
+                           {"height", {std::int64_t{job.height}}}};
+  return cache::manifest_head("plot", options, job.scene);
 }
 
 cache::Outcome make_plot(const PlotJob& job) {

@@ -6,7 +6,6 @@
 #include "cache/manifest_head.hpp"
 #include "charts/sweep_plots.hpp"
 #include "common/errors.hpp"
-#include "common/json_string.hpp"
 #include "jobs/sweep_shard.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
@@ -26,11 +25,10 @@ std::function<fs::path(int, int)> shard_in(const fs::path& dir, const std::strin
 }
 
 /// The sweep's output options for its manifest: the ranges and the measures as given.
-std::string sweep_options_json(const SweepJob& job) {
-  std::string json = "    \"vary\": [";
-  for (std::size_t i = 0; i < job.vary.size(); ++i)
-    json.append(i == 0 ? "" : ", ").append(json_string(job.vary[i]));
-  return json.append("],\n    \"measures\": ").append(json_string(job.measures)).append("\n");
+JsonObject sweep_options(const SweepJob& job) {
+  JsonArray vary;
+  for (const std::string& v : job.vary) vary.push_back({v});
+  return {{"vary", {std::move(vary)}}, {"measures", {job.measures}}};
 }
 
 /// table => the sweep's CSV and picture at `paths`, made first and then written.
@@ -57,7 +55,7 @@ fs::path sweep_manifest_path(const fs::path& out_dir, const std::string& scene_n
 }
 
 SweepOutcome make_sweep(const SweepJob& job) {
-  const std::string options = sweep_options_json(job);
+  const JsonObject options = sweep_options(job);
   jobs::SweepRequest request;
   request.scene_path = job.scene_path;
   request.overrides = job.overrides;

@@ -20,7 +20,7 @@
 #include "common/text_file.hpp"
 #include "jobs/accuracy_report.hpp"
 #include "jobs/sweep.hpp"
-#include "output/csv_writer.hpp"
+#include "common/csv_writer.hpp"
 #include "output/diagnostics_csv.hpp"
 #include "scene/scene.hpp"
 
@@ -195,7 +195,7 @@ TEST(CsvColumnList, EveryEnergyColumnHasAnIndependentCheck) {
   request.flips = 1.0;
   request.dts = {0.1};
   const std::string energy =
-      output::csv_text(jobs::energy_csv(jobs::measure_accuracy(request)), "energy CSV");
+      csv_text(jobs::energy_csv(jobs::measure_accuracy(request)), "energy CSV");
   const std::string header = energy.substr(0, energy.find('\n'));
   expect_listed(split(header), kEnergyColumns, "energy CSV");
 }

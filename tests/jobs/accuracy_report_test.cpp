@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "output/csv_writer.hpp"
+#include "common/csv_writer.hpp"
 
 namespace bookspin::jobs {
 namespace {
@@ -74,13 +74,13 @@ TEST(AccuracyReport, TheTablesLeaveCellsEmptyWhereThereIsNoValue) {
   row.ns_per_step = 12.345;
   row.diverged = true;
   const AccuracyReport report{10.0, {row.method}, {row}, {}};
-  EXPECT_EQ(output::csv_text(accuracy_csv(report), "accuracy CSV"),
+  EXPECT_EQ(csv_text(accuracy_csv(report), "accuracy CSV"),
             "model,integrator,dt,steps,t_end,orientation_error_rad,energy_drift,L_drift,"
             "flip_period,flip_period_error,ns_per_step,diverged,first_flip,first_flip_error,"
             "flips,flips_exact\n"
             "rigid-matrix,euler,0.5,20,10,,2.500000e-01,1.250000e-01,,,12.35,1,3.5,6.250000e-02,"
             "1,2\n");
-  EXPECT_EQ(output::csv_text(energy_csv(report), "energy CSV"), "t\n");
+  EXPECT_EQ(csv_text(energy_csv(report), "energy CSV"), "t\n");
 }
 
 }  // namespace

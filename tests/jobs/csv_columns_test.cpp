@@ -28,7 +28,7 @@
 #include "jobs/simulation.hpp"
 #include "jobs/sweep.hpp"
 #include "output/atomic_output.hpp"
-#include "output/csv_writer.hpp"
+#include "common/csv_writer.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/particle_model.hpp"
 #include "scene/scene.hpp"
@@ -381,8 +381,8 @@ TEST(CsvColumns, AccuracyAndEnergyCsvRowsMatchTheReplayAndTheClosedForm) {
   request.dts = {0.05, 0.1};
   const AccuracyReport report = measure_accuracy(request);
   output::write_text_file(dir / "accuracy.csv",
-                          output::csv_text(accuracy_csv(report), "accuracy CSV"));
-  output::write_text_file(dir / "energy.csv", output::csv_text(energy_csv(report), "energy CSV"));
+                          csv_text(accuracy_csv(report), "accuracy CSV"));
+  output::write_text_file(dir / "energy.csv", csv_text(energy_csv(report), "energy CSV"));
   const scene::Scene& s = request.scene;
   const ClosedFormFlips exact = closed_form_flips(s.body.moments, omega);
   const physics::ExactRotation rotation(s.body.moments, omega);

@@ -6,6 +6,7 @@
 
 #include <sstream>
 
+#include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 
 namespace bookspin::jobs {
@@ -51,8 +52,8 @@ TEST(SweepCsv, TheFileIsTheHeaderThenOneLinePerRowWithoutTheGridIndex) {
 
 TEST(SweepCsv, ALineSplitsBackIntoItsCellsEmptyOnesIncluded) {
   const std::vector<std::string> cells{"", "1", "", "2.5", ""};
-  EXPECT_EQ(csv_line(cells), ",1,,2.5,");
-  EXPECT_EQ(csv_line(cells, "7"), "7,,1,,2.5,");
+  EXPECT_EQ(csv_row(cells), ",1,,2.5,");
+  EXPECT_EQ(csv_row(after("7", cells)), "7,,1,,2.5,");
   EXPECT_EQ(csv_cells(",1,,2.5,"), cells);
   EXPECT_EQ(csv_cells("x"), std::vector<std::string>{"x"});
 }

@@ -17,7 +17,7 @@ bool has(const std::string& text, const std::string& part) {
 
 /// One scene's data as the page reads it.
 std::string explorer_scene_json(const scene::Scene& scene) {
-  return output::json_text({explorer_scene_data(scene)}, "test scene");
+  return json_text({explorer_scene_data(scene)}, "test scene");
 }
 
 TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {

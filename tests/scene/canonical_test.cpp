@@ -8,6 +8,8 @@
 #include <map>
 #include <sstream>
 
+#include "common/json_string.hpp"
+
 namespace bookspin::scene {
 namespace {
 

@@ -1,12 +1,12 @@
 #pragma once
-// What the output suite's checks of non-finite numbers share: the message of the InternalError a
+// What the suites' checks of non-finite numbers share: the message of the InternalError a
 // call throws, and the numbers that must never be written.
 #include <limits>
 #include <string>
 
 #include "common/errors.hpp"
 
-namespace bookspin::output {
+namespace bookspin {
 
 inline constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -22,4 +22,4 @@ std::string internal_error_of(F f) {
   return "";
 }
 
-}  // namespace bookspin::output
+}  // namespace bookspin

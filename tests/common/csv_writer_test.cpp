@@ -1,12 +1,12 @@
-// The CSV writer (output/csv_writer.hpp): texts written out by hand, empty cells, quoting, and
+// The CSV writer (common/csv_writer.hpp): texts written out by hand, empty cells, quoting, and
 // the finiteness check naming the column.
-#include "output/csv_writer.hpp"
+#include "common/csv_writer.hpp"
 
 #include <gtest/gtest.h>
 
-#include "internal_error_of.hpp"
+#include "support/internal_error_of.hpp"
 
-namespace bookspin::output {
+namespace bookspin {
 namespace {
 
 TEST(CsvWriter, WritesTheHeaderThenEachRowInItsCellsFormats) {
@@ -31,6 +31,19 @@ TEST(CsvWriter, QuotesATextCellThatHoldsACommaAQuoteOrALineBreak) {
   EXPECT_EQ(csv_text(table, "test CSV"), "name,\"a,b\"\n\"say \"\"hi\"\"\",\"x\ny\"\nplain,-\n");
 }
 
+TEST(CsvWriter, ARowIsItsFieldsJoinedByCommasQuotedAsInATable) {
+  EXPECT_EQ(csv_row({"3", "", "0.5", ""}), "3,,0.5,");
+  EXPECT_EQ(csv_row({"a,b", "c\"d", "e\rf", "g"}), "\"a,b\",\"c\"\"d\",\"e\rf\",g");
+  EXPECT_EQ(csv_row({}), "");
+  EXPECT_EQ(csv_field("initial.angular_velocity[1]"), "initial.angular_velocity[1]");
+  EXPECT_EQ(csv_field(""), "");
+  // A table's cells are the same fields.
+  EXPECT_EQ(csv_text({{"a,b", "c"},
+                      {{std::string("x\"y"), CsvNumber{0.25, nullptr, NumberStyle::shortest}}}},
+                     "test CSV"),
+            "\"a,b\",c\n\"x\"\"y\",0.25\n");
+}
+
 TEST(CsvWriter, NonFiniteNumberIsAnInternalErrorNamingItsColumn) {
   const CsvTable nan{{"t", "energy"},
                      {{CsvNumber{0.5}, CsvNumber{1e-3}}, {CsvNumber{1.0}, CsvNumber{kNan}}}};
@@ -49,4 +62,4 @@ TEST(CsvWriter, ARowThatDoesNotMatchTheColumnsIsAnInternalError) {
 }
 
 }  // namespace
-}  // namespace bookspin::output
+}  // namespace bookspin

@@ -1,47 +1,42 @@
-#include "output/csv_writer.hpp"
-
-#include <cstdio>
+#include "common/csv_writer.hpp"
 
 #include "common/errors.hpp"
-#include "output/finite_number.hpp"
 
-namespace bookspin::output {
+namespace bookspin {
 
-namespace {
-
-/// `text` as one CSV field: as it is, or quoted with its quotes doubled where it must be.
-std::string field(const std::string& text) {
+std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
   std::string quoted = "\"";
   for (const char c : text) quoted.append(c == '"' ? "\"\"" : std::string(1, c));
   return quoted + "\"";
 }
 
-}  // namespace
+std::string csv_row(const std::vector<std::string>& cells) {
+  std::string line;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    line.append(i ? "," : "").append(csv_field(cells[i]));
+  return line;
+}
 
 std::string csv_text(const CsvTable& table, std::string_view what) {
-  std::string out;
-  for (std::size_t i = 0; i < table.columns.size(); ++i)
-    out.append(i ? "," : "").append(field(table.columns[i]));
-  out += '\n';
+  std::string out = csv_row(table.columns) + '\n';
   for (const auto& row : table.rows) {
     BOOKSPIN_ASSERT(row.size() == table.columns.size());
     for (std::size_t i = 0; i < row.size(); ++i) {
       if (i) out += ',';
       if (const auto* text = std::get_if<std::string>(&row[i])) {
-        out += field(*text);
+        out += csv_field(*text);
         continue;
       }
       const CsvNumber& number = std::get<CsvNumber>(row[i]);
       if (!number.value) continue;
-      const double value = finite(*number.value, std::string(what) + " column " + table.columns[i]);
-      char cell[64];
-      std::snprintf(cell, sizeof cell, number.format, value);
-      out += cell;
+      const std::string name = std::string(what) + " column " + table.columns[i];
+      out += number.format ? finite_text(*number.value, name, number.format)
+                           : finite_text(*number.value, name, number.style);
     }
     out += '\n';
   }
   return out;
 }
 
-}  // namespace bookspin::output
+}  // namespace bookspin

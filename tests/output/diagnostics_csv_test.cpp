@@ -1,34 +1,15 @@
-// The closing check on numbers written out (output/finite_number.hpp) and the diagnostics
-// CSV row that uses it (docs/outputs.md, "Numbers").
-#include "output/finite_number.hpp"
+// The diagnostics CSV row (output/diagnostics_csv.hpp): every cell against numbers written out
+// by hand, its empty cells, and the closing check naming the column (docs/outputs.md, "Numbers").
+#include "output/diagnostics_csv.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "internal_error_of.hpp"
-#include "output/diagnostics_csv.hpp"
+#include "support/internal_error_of.hpp"
 
 namespace bookspin::output {
 namespace {
-
-TEST(FiniteNumber, PassesFiniteNumbersInShortestRoundTripForm) {
-  EXPECT_EQ(finite(0.1, "x"), 0.1);
-  EXPECT_EQ(finite_text(0.1, "x"), "0.1");
-  EXPECT_EQ(finite_text(1e300, "x"), "1e+300");
-  EXPECT_EQ(finite_text(std::numeric_limits<double>::denorm_min(), "x"), "5e-324");
-  EXPECT_EQ(finite_text(std::optional<double>(), "x"), "");
-  EXPECT_EQ(finite_text(std::optional<double>(-2.5), "x"), "-2.5");
-}
-
-TEST(FiniteNumber, NonFiniteIsAnInternalErrorNamingTheField) {
-  EXPECT_EQ(internal_error_of([] { finite(kNan, "CSV column a"); }),
-            "non-finite CSV column a in an output: nan");
-  EXPECT_EQ(internal_error_of([] { finite_text(kInf, "JSON field b"); }),
-            "non-finite JSON field b in an output: inf");
-  EXPECT_EQ(internal_error_of([] { finite_text(std::optional<double>(-kInf), "c"); }),
-            "non-finite c in an output: -inf");
-}
 
 physics::Diagnostics spinning() {
   physics::Diagnostics d;

@@ -1,0 +1,48 @@
+#pragma once
+// The one CSV writer, for every CSV bookspin writes: a sweep's table and its shards, the
+// accuracy report's tables, a clip's diagnostics CSV (row by row, as the frames come) and the
+// bench's report. A caller builds its cells and hands them here: a text cell is quoted where it
+// must be (RFC 4180), and every number is spelled and checked finite by the one formatter
+// (number_text.hpp), so the writer, not each caller, keeps NaN and infinity out of the outputs
+// (docs/outputs.md, "Numbers").
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "common/number_text.hpp"
+
+namespace bookspin {
+
+/// A number cell: `value` in the printf `format` ("%.6e"), or in `style` where `format` is null,
+/// or an empty cell where there is no value (nullopt).
+struct CsvNumber {
+  std::optional<double> value;
+  const char* format = nullptr;
+  NumberStyle style = NumberStyle::digits17;
+};
+
+/// One cell: text as it is (a name, an integer, a flag, a number the caller spelled with
+/// number_text.hpp; "" is an empty cell) or a number.
+using CsvCell = std::variant<std::string, CsvNumber>;
+
+struct CsvTable {
+  std::vector<std::string> columns;        ///< the header's names, in order
+  std::vector<std::vector<CsvCell>> rows;  ///< each as many cells as there are columns
+};
+
+/// `text` as one CSV field: as it is, or in double quotes with its quotes doubled where it holds
+/// a comma, a double quote or a line break (RFC 4180).
+std::string csv_field(const std::string& text);
+
+/// One line of text cells, each through csv_field(), joined by commas; no line end. For a CSV
+/// written line by line (the diagnostics CSV, a sweep's shard).
+std::string csv_row(const std::vector<std::string>& cells);
+
+/// The header line, then one line per row, each ending in '\n'. Throws InternalError
+/// "non-finite WHAT column NAME in an output: nan" for a NaN or infinite number, and for a row
+/// whose cells do not match the columns.
+std::string csv_text(const CsvTable& table, std::string_view what);
+
+}  // namespace bookspin

@@ -1,0 +1,37 @@
+#pragma once
+// The one number formatter: every number bookspin writes into a CSV or JSON file (the writers of
+// csv_writer.hpp and json_writer.hpp, the canonical scene, a mesh's inertia, a sweep's grid
+// values) is spelled here, and checked finite here. Every stage before keeps its numbers finite
+// or reports bad input, so a NaN or infinity at this point is a bug, never something to write
+// down: the run ends with an internal error (exit 70; docs/outputs.md, "Numbers").
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace bookspin {
+
+/// How a number is spelled. Every style reads back to the same double except a printf format
+/// that says otherwise ("%.6e").
+enum class NumberStyle {
+  shortest,  ///< std::to_chars: the shortest text that reads back (1e-05, 0.1, 1234.5)
+  digits17,  ///< "%.17g": 17 significant digits (0.10000000000000001)
+  fewest_g,  ///< the first of "%.15g", "%.16g", "%.17g" that reads back (0.1, 1.0000000000000002)
+};
+
+/// `value` itself when finite; else throws InternalError "non-finite WHAT in an output: nan"
+/// (`what` names the column or field, e.g. "diagnostics CSV column energy_total").
+double finite(double value, std::string_view what);
+
+/// `value` spelled in `style`, checked by finite().
+std::string finite_text(double value, std::string_view what,
+                        NumberStyle style = NumberStyle::shortest);
+
+/// The same, or "" (an empty cell) for nullopt: for the columns that allow empty cells.
+std::string finite_text(const std::optional<double>& value, std::string_view what,
+                        NumberStyle style = NumberStyle::shortest);
+
+/// `value` in the printf `format` (one conversion of a double: "%.6e", "%.2f"), checked by
+/// finite().
+std::string finite_text(double value, std::string_view what, const char* format);
+
+}  // namespace bookspin

@@ -1,0 +1,57 @@
+// The one number formatter (common/number_text.hpp): each style against texts written out by
+// hand, and the closing check naming the field (docs/outputs.md, "Numbers").
+#include "common/number_text.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/internal_error_of.hpp"
+
+namespace bookspin {
+namespace {
+
+TEST(FiniteNumber, PassesFiniteNumbersInShortestRoundTripForm) {
+  EXPECT_EQ(finite(0.1, "x"), 0.1);
+  EXPECT_EQ(finite_text(0.1, "x"), "0.1");
+  EXPECT_EQ(finite_text(1e300, "x"), "1e+300");
+  EXPECT_EQ(finite_text(std::numeric_limits<double>::denorm_min(), "x"), "5e-324");
+  EXPECT_EQ(finite_text(std::optional<double>(), "x"), "");
+  EXPECT_EQ(finite_text(std::optional<double>(-2.5), "x"), "-2.5");
+}
+
+TEST(FiniteNumber, EachStyleHasItsOwnSpelling) {
+  // Written out by hand: %g drops trailing zeros and switches to an exponent below 1e-4;
+  // to_chars takes the shorter of the two forms.
+  EXPECT_EQ(finite_text(0.0001, "x", NumberStyle::shortest), "1e-04");
+  EXPECT_EQ(finite_text(0.0001, "x", NumberStyle::digits17), "0.0001");
+  EXPECT_EQ(finite_text(0.0001, "x", NumberStyle::fewest_g), "0.0001");
+  EXPECT_EQ(finite_text(2.0 / 3.0, "x", NumberStyle::shortest), "0.6666666666666666");
+  EXPECT_EQ(finite_text(2.0 / 3.0, "x", NumberStyle::digits17), "0.66666666666666663");
+  EXPECT_EQ(finite_text(2.0 / 3.0, "x", NumberStyle::fewest_g), "0.6666666666666666");
+  EXPECT_EQ(finite_text(0.1, "x", NumberStyle::digits17), "0.10000000000000001");
+  EXPECT_EQ(finite_text(0.1, "x", NumberStyle::fewest_g), "0.1");
+  EXPECT_EQ(finite_text(1e21, "x", NumberStyle::fewest_g), "1e+21");
+  EXPECT_EQ(finite_text(std::numeric_limits<double>::denorm_min(), "x", NumberStyle::fewest_g),
+            "4.94065645841247e-324");
+  EXPECT_EQ(finite_text(12345.678, "x", "%.6e"), "1.234568e+04");
+  EXPECT_EQ(finite_text(2.5, "x", "%.2f"), "2.50");
+  EXPECT_EQ(finite_text(std::optional<double>(0.1), "x", NumberStyle::digits17),
+            "0.10000000000000001");
+}
+
+TEST(FiniteNumber, NonFiniteIsAnInternalErrorNamingTheField) {
+  EXPECT_EQ(internal_error_of([] { finite(kNan, "CSV column a"); }),
+            "non-finite CSV column a in an output: nan");
+  EXPECT_EQ(internal_error_of([] { finite_text(kInf, "JSON field b"); }),
+            "non-finite JSON field b in an output: inf");
+  EXPECT_EQ(internal_error_of([] { finite_text(std::optional<double>(-kInf), "c"); }),
+            "non-finite c in an output: -inf");
+  EXPECT_EQ(internal_error_of([] { finite_text(kNan, "d", NumberStyle::fewest_g); }),
+            "non-finite d in an output: nan");
+  EXPECT_EQ(internal_error_of([] { finite_text(kInf, "e", "%.6e"); }),
+            "non-finite e in an output: inf");
+}
+
+}  // namespace
+}  // namespace bookspin
