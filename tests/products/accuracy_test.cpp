@@ -51,7 +51,7 @@ TEST(Accuracy, TheHeadHoldsTheFlipsTheStepsAndTheMethods) {
 TEST(Accuracy, AReportWritesItsSixFilesAndManifestThenIsUpToDate) {
   test::ScratchDir dir;
   const AccuracyJob job = quaternion_rk4(dir);
-  EXPECT_EQ(make_accuracy(job), Outcome::made);
+  EXPECT_EQ(make_accuracy(job), cache::Outcome::made);
   const std::vector<std::string> files{"x-accuracy.csv",       "x-accuracy.png",
                                        "x-work-precision.png", "x-energy-vs-dt.png",
                                        "x-energy.png",         "x-energy.csv"};
@@ -64,7 +64,7 @@ TEST(Accuracy, AReportWritesItsSixFilesAndManifestThenIsUpToDate) {
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, 3);
   const std::string before = test::read_file(dir / "out" / "x-accuracy.csv");
-  EXPECT_EQ(make_accuracy(job), Outcome::up_to_date);
+  EXPECT_EQ(make_accuracy(job), cache::Outcome::up_to_date);
   EXPECT_EQ(test::read_file(dir / "out" / "x-accuracy.csv"), before);  // not measured again
 }
 

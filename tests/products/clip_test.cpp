@@ -76,7 +76,7 @@ TEST(ClipProduct, UpToDateItDrawsNothingAndRepeatsTheRecordedWarnings) {
   output::write_manifest(dir / "tiny" / "manifest.json", clip_manifest_head(job), note, dir.path(),
                          outputs);
   const ClipOutcome done = make_clip(job);
-  EXPECT_EQ(done.outcome, Outcome::up_to_date);
+  EXPECT_EQ(done.outcome, cache::Outcome::up_to_date);
   EXPECT_EQ(done.result.frames, 0);  // nothing rendered
   EXPECT_EQ(done.warnings,
             (std::vector<std::string>{"tiny: simulation diverged at t = 1.5; the \"held\" frame",

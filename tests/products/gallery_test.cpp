@@ -57,7 +57,7 @@ TEST(Gallery, LinksOnlyWhatTheManifestsListAndExists) {
   job.scene_paths = {(dir / "scenes" / "demo.toml").string(),
                      (dir / "scenes" / "bare.toml").string()};
   const GalleryOutcome made = make_gallery(job);
-  EXPECT_EQ(made.outcome, Outcome::made);
+  EXPECT_EQ(made.outcome, cache::Outcome::made);
   EXPECT_EQ(made.entries, 2u);
   const std::string html = test::read_file(out / "index.html");
   for (const char* linked :
@@ -74,9 +74,9 @@ TEST(Gallery, LinksOnlyWhatTheManifestsListAndExists) {
             (std::vector<std::string>{"index.html"}));
 
   // Nothing changed: up to date. The plot listed now: the page changes, made again.
-  EXPECT_EQ(make_gallery(job).outcome, Outcome::up_to_date);
+  EXPECT_EQ(make_gallery(job).outcome, cache::Outcome::up_to_date);
   list_in_manifest(out, out / "demo" / "plot-manifest.json", {"demo-plot.png"});
-  EXPECT_EQ(make_gallery(job).outcome, Outcome::made);
+  EXPECT_EQ(make_gallery(job).outcome, cache::Outcome::made);
   EXPECT_NE(test::read_file(out / "index.html").find("src=\"demo-plot.png\""), std::string::npos);
 }
 

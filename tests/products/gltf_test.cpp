@@ -49,7 +49,7 @@ TEST(Gltf, WritesAGlbWithAKeyframePerFrameAndItsManifest) {
             std::string::npos)
       << gltf_manifest_head(job);
   const GltfExportResult result = make_gltf(job);
-  EXPECT_EQ(result.outcome, Outcome::made);
+  EXPECT_EQ(result.outcome, cache::Outcome::made);
   EXPECT_EQ(result.path, dir / "handle.glb");
   EXPECT_EQ(result.keyframes, 5);
   EXPECT_FALSE(result.diverged_at.has_value());
@@ -61,7 +61,7 @@ TEST(Gltf, WritesAGlbWithAKeyframePerFrameAndItsManifest) {
   EXPECT_EQ(le32(glb, 8), glb.size());
   EXPECT_EQ(output::read_manifest(dir / "handle" / "gltf-manifest.json").outputs,
             (std::vector<std::string>{"handle.glb"}));
-  EXPECT_EQ(make_gltf(job).outcome, Outcome::up_to_date);
+  EXPECT_EQ(make_gltf(job).outcome, cache::Outcome::up_to_date);
 }
 
 TEST(Gltf, AComparisonIsRefusedBeforeAnythingIsWritten) {

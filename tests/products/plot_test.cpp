@@ -44,20 +44,20 @@ TEST(Plot, TheHeadNamesTheCommandAndTheImageSize) {
 TEST(Plot, WritesThePngOfTheSizeAndItsManifestThenIsUpToDate) {
   test::ScratchDir dir;
   PlotJob job = small_plot(dir.path());
-  EXPECT_EQ(make_plot(job), Outcome::made);
+  EXPECT_EQ(make_plot(job), cache::Outcome::made);
   const RgbaImage png = output::read_png(dir / "tiny-plot.png");
   EXPECT_EQ(png.width, 320);
   EXPECT_EQ(png.height, 200);
   EXPECT_EQ(output::read_manifest(dir / "tiny" / "plot-manifest.json").outputs,
             (std::vector<std::string>{"tiny-plot.png"}));
-  EXPECT_EQ(make_plot(job), Outcome::up_to_date);
+  EXPECT_EQ(make_plot(job), cache::Outcome::up_to_date);
   job.freshness.force = true;
-  EXPECT_EQ(make_plot(job), Outcome::made);
+  EXPECT_EQ(make_plot(job), cache::Outcome::made);
   job.freshness.force = false;
   job.height = 240;
   std::string reason;
   job.freshness.on_remake = [&](const std::string& name, const std::string&) { reason = name; };
-  EXPECT_EQ(make_plot(job), Outcome::made);
+  EXPECT_EQ(make_plot(job), cache::Outcome::made);
   EXPECT_EQ(reason, "tiny-plot");
   EXPECT_EQ(output::read_png(dir / "tiny-plot.png").height, 240);
 }

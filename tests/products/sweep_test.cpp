@@ -45,7 +45,7 @@ TEST(Sweep, AWholeSweepWritesItsCsvPngAndManifestThenIsUpToDate) {
   test::ScratchDir dir;
   const SweepJob job = tiny_sweep(dir);
   const SweepOutcome done = make_sweep(job);
-  EXPECT_EQ(done.outcome, Outcome::made);
+  EXPECT_EQ(done.outcome, cache::Outcome::made);
   EXPECT_EQ(done.name, "tiny");
   EXPECT_EQ(done.written, (std::vector<fs::path>{dir / "out" / "tiny-sweep.csv",
                                                  dir / "out" / "tiny-sweep.png"}));
@@ -59,10 +59,10 @@ TEST(Sweep, AWholeSweepWritesItsCsvPngAndManifestThenIsUpToDate) {
                       "    \"measures\": \"energy_drift\"\n  }"),
             std::string::npos)
       << text;
-  EXPECT_EQ(make_sweep(job).outcome, Outcome::up_to_date);
+  EXPECT_EQ(make_sweep(job).outcome, cache::Outcome::up_to_date);
   SweepJob more = job;
   more.measures = "energy_drift,first_flip";
-  EXPECT_EQ(make_sweep(more).outcome, Outcome::made);
+  EXPECT_EQ(make_sweep(more).outcome, cache::Outcome::made);
 }
 
 TEST(Sweep, NoMeasureIsABadInput) {
@@ -86,7 +86,7 @@ TEST(Sweep, ShardsWriteTheirCsvsWithoutAManifestAndMergeIntoTheWholeSweep) {
   for (int k = 0; k < 2; ++k) {
     job.shard_index = k;
     const SweepOutcome done = make_sweep(job);
-    EXPECT_EQ(done.outcome, Outcome::made);
+    EXPECT_EQ(done.outcome, cache::Outcome::made);
     const fs::path shard = dir / "out" / ("tiny-sweep.shard-" + std::to_string(k) + "-of-2.csv");
     EXPECT_TRUE(fs::is_regular_file(shard)) << shard;
     shards.push_back(shard);
@@ -105,7 +105,7 @@ TEST(Sweep, ShardsWriteTheirCsvsWithoutAManifestAndMergeIntoTheWholeSweep) {
                                            dir / "merged" / "tiny-sweep.png"}));
   // The same table as the one-process sweep's.
   const SweepOutcome whole = make_sweep(tiny_sweep(dir));
-  ASSERT_EQ(whole.outcome, Outcome::made);
+  ASSERT_EQ(whole.outcome, cache::Outcome::made);
   EXPECT_EQ(test::read_file(dir / "merged" / "tiny-sweep.csv"),
             test::read_file(dir / "out" / "tiny-sweep.csv"));
 }
