@@ -4,7 +4,7 @@ cmake_minimum_required(VERSION 3.20)
 #   cmake -DSOURCE_DIR=<repo> -P tests/architecture/check_includes.cmake
 set(allowed_common "common")
 set(allowed_physics "physics")
-set(allowed_engines "physics;engines")
+set(allowed_engines "common;physics;engines")
 set(allowed_scene "common;physics;mesh;scene")
 set(allowed_mesh "common;mesh")
 set(allowed_analysis "common;physics;engines;scene;analysis")
