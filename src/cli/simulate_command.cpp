@@ -1,7 +1,11 @@
 #include <iostream>
+#include <memory>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/subcommand.hpp"
 #include "jobs/lattice_note.hpp"
 #include "jobs/simulation.hpp"
 #include "output/atomic_output.hpp"
@@ -10,14 +14,18 @@ namespace bookspin::cli {
 
 namespace {
 
+struct SimulateOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;  ///< "key=value", value in TOML syntax
+  std::string csv_path = "-";          ///< "-" is standard output
+};
+
 void warn_diverged(const scene::Scene& scene, const jobs::SimulationResult& result) {
   std::cerr << "bookspin: warning: " << scene.name
             << ": simulation diverged at t = " << *result.diverged_at
             << divergence_because(result.divergence_reason) << "; kept the " << result.rows
             << " rows before it\n";
 }
-
-}  // namespace
 
 int simulate_command(const SimulateOptions& options) {
   const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
@@ -42,6 +50,21 @@ int simulate_command(const SimulateOptions& options) {
   }
   if (result.diverged_at) warn_diverged(scene, result);
   return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_simulate(CLI::App& cli) {
+  const auto stored = std::make_shared<SimulateOptions>();
+  SimulateOptions& options = *stored;
+  CLI::App* cmd = cli.add_subcommand(
+      "simulate", "Run a scene's simulation without rendering and write the diagnostics CSV");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--csv", options.csv_path,
+                  "Output CSV, one row per frame (frame 0 = initial state); '-' for stdout")
+      ->capture_default_str();
+  return {cmd, [stored] { return simulate_command(*stored); }};
 }
 
 }  // namespace bookspin::cli
