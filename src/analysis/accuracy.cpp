@@ -9,6 +9,7 @@
 #include "common/errors.hpp"
 #include "engines/models.hpp"
 #include "physics/exact_model.hpp"
+#include "physics/model_modes.hpp"
 
 namespace bookspin::analysis {
 
@@ -52,13 +53,9 @@ double time_steps(const AccuracySettings& s, const Method& m, double dt, long st
 
 std::vector<Method> all_methods() {
   std::vector<Method> methods;
-  for (Integrator i :
-       {Integrator::euler, Integrator::symplectic_euler, Integrator::velocity_verlet})
-    methods.push_back({ModelKind::particle, i});
-  for (ModelKind kind : {ModelKind::rigid_matrix, ModelKind::rigid_quaternion})
-    for (Integrator i : {Integrator::euler, Integrator::rk4, Integrator::implicit_midpoint,
-                         Integrator::splitting, Integrator::splitting4})
-      methods.push_back({kind, i});
+  for (const physics::ModelMode& m : physics::model_modes())
+    if (!physics::is_engine(m.kind) && m.kind != ModelKind::exact)
+      methods.push_back({m.kind, m.integrator});
   return methods;
 }
 
@@ -81,6 +78,15 @@ std::string quoted(const std::string& text) {
   out.append(text);
   out.push_back('"');
   return out;
+}
+
+/// "all, engines, rigid, particle, …, or KIND:INTEGRATOR": what an item of --methods may be,
+/// every model but the exact one by its name.
+std::string method_items() {
+  std::string items = "all, engines, rigid, ";
+  for (ModelKind kind : physics::model_kinds())
+    if (kind != ModelKind::exact) items.append(physics::to_string(kind)).append(", ");
+  return items.append("or KIND:INTEGRATOR");
 }
 }  // namespace
 
@@ -116,9 +122,7 @@ std::vector<Method> parse_methods(const std::string& list) {
     ModelKind kind{};
     const std::string kind_name = item.substr(0, colon);
     if (!physics::parse_model_kind(kind_name, kind))
-      fail(quoted(kind_name) +
-           " is not a model (all, engines, rigid, particle, rigid-matrix, rigid-quaternion, "
-           "mujoco, bullet, ode, or KIND:INTEGRATOR)");
+      fail(quoted(kind_name) + " is not a model (" + method_items() + ")");
     if (kind == ModelKind::exact)
       fail("the exact model is the reference every row is measured against");
     if (colon == std::string::npos) {

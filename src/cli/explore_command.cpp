@@ -1,12 +1,28 @@
+#include <filesystem>
 #include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "cache/freshness.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/subcommand.hpp"
 #include "products/explorer.hpp"
 
 namespace bookspin::cli {
+namespace {
 
+struct ExploreOptions {
+  std::vector<std::string> scene_paths;  ///< the page's scenes, in this order
+  std::string out_dir = "out";
+  std::string shell;     ///< the page without data; empty: web/explorer-shell.html beside bookspin
+  bool engines = false;  ///< also the JavaScript engines (explorer-engines.js beside the shell)
+};
+
+/// Writes OUT/explorer.html (products::write_explorer_page): the explorer page with these scenes.
+/// The default shell missing (the page's program not built: web/build.sh) is exit 1 with a
+/// line saying how to build it; a --shell that is not one is an input error.
 int explore_command(const ExploreOptions& options) {
   products::ExplorerPageRequest request;
   request.out_dir = options.out_dir;
@@ -47,6 +63,26 @@ int explore_command(const ExploreOptions& options) {
   std::cout << "explorer: " << done.result.path.string() << " (" << request.scenes.size()
             << " scenes, " << done.result.bytes << " bytes)" << std::endl;
   return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_explore(CLI::App& cli) {
+  const auto stored = std::make_shared<ExploreOptions>();
+  ExploreOptions& options = *stored;
+  CLI::App* cmd = cli.add_subcommand(
+      "explore",
+      "Write OUT/explorer.html: the physics in the browser, one file that opens from "
+      "disk, with these scenes (docs/explorer.md)");
+  cmd->add_option("SCENE", options.scene_paths, "Scene files (TOML)")->required();
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--shell", options.shell,
+                  "The page without its scenes, as web/build.sh writes it (default: "
+                  "web/explorer-shell.html beside the bookspin program)");
+  cmd->add_flag("--engines", options.engines,
+                "Also run the JavaScript engines cannon-es, Rapier and Jolt in the page, as "
+                "models (about 8 MB more; docs/explorer.md)");
+  return {cmd, [stored] { return explore_command(*stored); }};
 }
 
 }  // namespace bookspin::cli

@@ -2,11 +2,15 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/subcommand.hpp"
 #include "render/renderer.hpp"
 #include "video/video.hpp"
 
 namespace bookspin::cli {
 
+namespace {
+
+/// Prints the EGL/GL and FFmpeg set-up.
 int info_command() {
   for (const auto& line : video::ffmpeg_info()) std::cout << line << '\n';
   std::cout.flush();
@@ -18,6 +22,15 @@ int info_command() {
                                   : std::string("trilinear (software rasterizer)"))
             << '\n';
   return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_info(CLI::App& cli) {
+  return {
+      cli.add_subcommand(
+          "info", "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders"),
+      [] { return info_command(); }};
 }
 
 }  // namespace bookspin::cli

@@ -1,8 +1,12 @@
 #include <iostream>
+#include <memory>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "analysis/frame_source.hpp"
 #include "cli/commands.hpp"
+#include "cli/subcommand.hpp"
 #include "jobs/lattice_note.hpp"
 #include "jobs/simulation.hpp"
 #include "output/atomic_output.hpp"
@@ -11,6 +15,12 @@ namespace bookspin::cli {
 
 namespace {
 
+struct SimulateOptions {
+  std::string scene_path;
+  std::vector<std::string> overrides;  ///< "key=value", value in TOML syntax
+  std::string csv_path = "-";          ///< "-" is standard output
+};
+
 void warn_diverged(const scene::Scene& scene, const jobs::SimulationResult& result) {
   std::cerr << "bookspin: warning: "
             << analysis::divergence_warning(
@@ -18,8 +28,6 @@ void warn_diverged(const scene::Scene& scene, const jobs::SimulationResult& resu
                    "kept the " + std::to_string(result.rows) + " rows before it")
             << '\n';
 }
-
-}  // namespace
 
 int simulate_command(const SimulateOptions& options) {
   const scene::Scene scene = scene::parse_scene(options.scene_path, options.overrides);
@@ -44,6 +52,21 @@ int simulate_command(const SimulateOptions& options) {
   }
   if (result.diverged_at) warn_diverged(scene, result);
   return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_simulate(CLI::App& cli) {
+  const auto stored = std::make_shared<SimulateOptions>();
+  SimulateOptions& options = *stored;
+  CLI::App* cmd = cli.add_subcommand(
+      "simulate", "Run a scene's simulation without rendering and write the diagnostics CSV");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--csv", options.csv_path,
+                  "Output CSV, one row per frame (frame 0 = initial state); '-' for stdout")
+      ->capture_default_str();
+  return {cmd, [stored] { return simulate_command(*stored); }};
 }
 
 }  // namespace bookspin::cli

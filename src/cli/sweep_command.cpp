@@ -2,18 +2,36 @@
 // (docs/physics.md §14).
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "cache/freshness.hpp"
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/subcommand.hpp"
 #include "common/errors.hpp"
 #include "products/sweep.hpp"
 
 namespace bookspin::cli {
 
 namespace {
+
+struct SweepOptions {
+  std::string scene_path;              ///< empty with --merge
+  std::vector<std::string> overrides;  ///< --set, before the grid's own
+  std::vector<std::string> vary;       ///< "KEY=START:STOP:COUNT[:log]"
+  std::string measures;                ///< "first_flip,flip_period,…"
+  int jobs = 0;                        ///< threads; 0 = hardware threads
+  std::string shard;                   ///< "K/N", K from 0; empty = the whole grid
+  std::string out_dir = "out";
+  std::vector<std::string> merge;  ///< shard CSVs to merge instead of running
+  bool force = false;   ///< run even when OUT/<scene>/sweep-manifest.json says up to date
+  bool verify = false;  ///< up-to-date check hashes the CSV and PNG (else sizes only)
+};
 
 /// "K/N" with 0 ≤ K < N (K counts from 0, as SLURM_ARRAY_TASK_ID with --array=0-(N-1)).
 void parse_shard(const std::string& text, int& k, int& n) {
@@ -34,8 +52,8 @@ void parse_shard(const std::string& text, int& k, int& n) {
   n = static_cast<int>(nn);
 }
 
-}  // namespace
-
+/// Runs a parameter sweep (physics only, docs/physics.md §14) and writes
+/// OUT/<scene>-sweep.csv and .png, or one shard's CSV, or merges shard CSVs.
 int sweep_command(const SweepOptions& options) {
   std::vector<std::filesystem::path> written;
   if (!options.merge.empty()) {
@@ -68,6 +86,37 @@ int sweep_command(const SweepOptions& options) {
   }
   for (const auto& path : written) std::printf("wrote %s\n", path.c_str());
   return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_sweep(CLI::App& cli) {
+  const auto stored = std::make_shared<SweepOptions>();
+  SweepOptions& options = *stored;
+  CLI::App* cmd = cli.add_subcommand(
+      "sweep",
+      "Physics-only runs over a grid of scene values, measured: one CSV row per point and a plot");
+  cmd->add_option("SCENE", options.scene_path, "Scene file (TOML), one model (no [[compare]])");
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  cmd->add_option("--vary", options.vary,
+                  "KEY=START:STOP:COUNT[:log] (repeatable; the grid is the product, the first "
+                  "--vary slowest), KEY a scalar scene key or a component such as "
+                  "initial.angular_velocity[1]")
+      ->allow_extra_args(false);
+  cmd->add_option("--measure", options.measures,
+                  "Comma-separated: first_flip, flip_period, energy_drift, orientation_error, "
+                  "diverged_at, twist");
+  cmd->add_option("-j,--jobs", options.jobs, "Threads (0 = hardware threads)")
+      ->capture_default_str();
+  cmd->add_option("--shard", options.shard,
+                  "K/N: only grid points with index = K mod N (K from 0, as SLURM_ARRAY_TASK_ID); "
+                  "writes OUT/<scene>-sweep.shard-K-of-N.csv");
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--merge", options.merge,
+                  "Merge shard CSVs into OUT/<scene>-sweep.csv and .png instead of running")
+      ->allow_extra_args(true);
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/<scene>/sweep-manifest.json");
+  return {cmd, [stored] { return sweep_command(*stored); }};
 }
 
 }  // namespace bookspin::cli

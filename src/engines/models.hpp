@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "physics/model_modes.hpp"
 #include "physics/simulator.hpp"
 
 namespace bookspin::engines {
@@ -12,19 +13,17 @@ namespace bookspin::engines {
 /// The simulator of `body` for `config`: physics::make_simulator() for bookspin's models, the
 /// engine's model for mujoco, bullet and ode (each given body.cage.mass and body.moments in
 /// the principal frame, never a collision shape's inertia). Throws std::invalid_argument when
-/// the model does not support the integrator (physics::supports), or as make_simulator does.
+/// the model does not support the integrator (physics::supports), or as make_simulator does;
+/// InternalError for a kind that is no model's, or an engine's kind that has no model here
+/// (bugs, never another model in its place).
 std::unique_ptr<physics::Simulator> make_model(const physics::Body& body,
                                                const physics::ModelConfig& config);
 
 /// One mode of another engine: its kind and its model.integrator value.
-struct EngineMode {
-  physics::ModelKind kind;
-  physics::Integrator integrator;
-};
+using EngineMode = physics::ModelMode;
 
-/// Every engine mode (docs/engines.md), each engine's default first: mujoco × {euler, rk4,
-/// implicit}, bullet × {implicit-body, implicit-world, explicit, none}, ode × {step,
-/// quickstep, none}.
+/// Every engine mode: the rows of physics::model_modes() whose kind is another engine's
+/// (physics::is_engine), in that table's order, each engine's default first (docs/engines.md).
 std::vector<EngineMode> engine_modes();
 
 }  // namespace bookspin::engines

@@ -6,6 +6,7 @@
 
 #include "physics/exact_model.hpp"
 #include "physics/lattice_model.hpp"
+#include "physics/model_modes.hpp"
 #include "physics/particle_model.hpp"
 #include "physics/rigid_matrix_model.hpp"
 #include "physics/rigid_quaternion_model.hpp"
@@ -14,17 +15,53 @@ namespace bookspin::physics {
 
 namespace {
 
-constexpr std::array<std::pair<ModelKind, std::string_view>, 7> kModelNames{{
+template <typename Enum>
+struct Named {
+  Enum value;
+  std::string_view name;
+  bool engine = false;  ///< a model of another engine's (docs/engines.md): src/engines builds it
+};
+
+/// Every model: its name, and whether it is another engine's.
+constexpr std::array<Named<ModelKind>, 7> kModelNames{{
     {ModelKind::particle, "particle"},
     {ModelKind::rigid_matrix, "rigid-matrix"},
     {ModelKind::rigid_quaternion, "rigid-quaternion"},
     {ModelKind::exact, "exact"},
-    {ModelKind::mujoco, "mujoco"},
-    {ModelKind::bullet, "bullet"},
-    {ModelKind::ode, "ode"},
+    {ModelKind::mujoco, "mujoco", true},
+    {ModelKind::bullet, "bullet", true},
+    {ModelKind::ode, "ode", true},
 }};
 
-constexpr std::array<std::pair<Integrator, std::string_view>, 14> kIntegratorNames{{
+/// Every model's modes, each model's default first (model_modes()).
+constexpr ModelMode kModes[] = {
+    {ModelKind::particle, Integrator::euler},
+    {ModelKind::particle, Integrator::symplectic_euler},
+    {ModelKind::particle, Integrator::velocity_verlet},
+    {ModelKind::rigid_matrix, Integrator::euler},
+    {ModelKind::rigid_matrix, Integrator::rk4},
+    {ModelKind::rigid_matrix, Integrator::implicit_midpoint},
+    {ModelKind::rigid_matrix, Integrator::splitting},
+    {ModelKind::rigid_matrix, Integrator::splitting4},
+    {ModelKind::rigid_quaternion, Integrator::euler},
+    {ModelKind::rigid_quaternion, Integrator::rk4},
+    {ModelKind::rigid_quaternion, Integrator::implicit_midpoint},
+    {ModelKind::rigid_quaternion, Integrator::splitting},
+    {ModelKind::rigid_quaternion, Integrator::splitting4},
+    {ModelKind::exact, Integrator::euler},  // the integrator key is unused by "exact"
+    {ModelKind::mujoco, Integrator::euler},
+    {ModelKind::mujoco, Integrator::rk4},
+    {ModelKind::mujoco, Integrator::implicit},
+    {ModelKind::bullet, Integrator::implicit_body},
+    {ModelKind::bullet, Integrator::implicit_world},
+    {ModelKind::bullet, Integrator::explicit_gyro},
+    {ModelKind::bullet, Integrator::none},
+    {ModelKind::ode, Integrator::step},
+    {ModelKind::ode, Integrator::quickstep},
+    {ModelKind::ode, Integrator::none},
+};
+
+constexpr std::array<Named<Integrator>, 14> kIntegratorNames{{
     {Integrator::euler, "euler"},
     {Integrator::symplectic_euler, "symplectic-euler"},
     {Integrator::velocity_verlet, "velocity-verlet"},
@@ -42,32 +79,21 @@ constexpr std::array<std::pair<Integrator, std::string_view>, 14> kIntegratorNam
 }};
 
 template <typename Enum, std::size_t N>
-std::string_view name_of(const std::array<std::pair<Enum, std::string_view>, N>& table, Enum e) {
-  for (const auto& [value, name] : table)
-    if (value == e) return name;
+std::string_view name_of(const std::array<Named<Enum>, N>& table, Enum e) {
+  for (const Named<Enum>& entry : table)
+    if (entry.value == e) return entry.name;
   return "?";
 }
 
 template <typename Enum, std::size_t N>
-bool value_of(const std::array<std::pair<Enum, std::string_view>, N>& table, std::string_view text,
-              Enum& out) {
-  for (const auto& [value, name] : table) {
-    if (name == text) {
-      out = value;
+bool value_of(const std::array<Named<Enum>, N>& table, std::string_view text, Enum& out) {
+  for (const Named<Enum>& entry : table) {
+    if (entry.name == text) {
+      out = entry.value;
       return true;
     }
   }
   return false;
-}
-
-bool is_particle_integrator(Integrator i) {
-  return i == Integrator::euler || i == Integrator::symplectic_euler ||
-         i == Integrator::velocity_verlet;
-}
-
-bool is_rigid_integrator(Integrator i) {
-  return i == Integrator::euler || i == Integrator::rk4 || i == Integrator::implicit_midpoint ||
-         i == Integrator::splitting || i == Integrator::splitting4;
 }
 
 }  // namespace
@@ -80,6 +106,16 @@ bool parse_model_kind(std::string_view text, ModelKind& out) {
 bool parse_integrator(std::string_view text, Integrator& out) {
   return value_of(kIntegratorNames, text, out);
 }
+std::vector<ModelKind> model_kinds() {
+  std::vector<ModelKind> kinds;
+  for (const Named<ModelKind>& entry : kModelNames) kinds.push_back(entry.value);
+  return kinds;
+}
+std::vector<Integrator> integrators() {
+  std::vector<Integrator> all;
+  for (const Named<Integrator>& entry : kIntegratorNames) all.push_back(entry.value);
+  return all;
+}
 
 Eigen::Vector3d jiggle_delta_L(std::uint64_t seed, double amplitude) {
   std::mt19937_64 engine(seed);
@@ -91,39 +127,25 @@ Eigen::Vector3d jiggle_delta_L(std::uint64_t seed, double amplitude) {
   return delta;
 }
 
+std::span<const ModelMode> model_modes() { return kModes; }
+
 bool supports(ModelKind kind, Integrator integrator) {
-  switch (kind) {
-    case ModelKind::particle:
-      return is_particle_integrator(integrator);
-    case ModelKind::exact:
-      return integrator == Integrator::euler;  // the integrator key is ignored by "exact"
-    case ModelKind::mujoco:
-      return integrator == Integrator::euler || integrator == Integrator::rk4 ||
-             integrator == Integrator::implicit;
-    case ModelKind::bullet:
-      return integrator == Integrator::implicit_body || integrator == Integrator::implicit_world ||
-             integrator == Integrator::explicit_gyro || integrator == Integrator::none;
-    case ModelKind::ode:
-      return integrator == Integrator::step || integrator == Integrator::quickstep ||
-             integrator == Integrator::none;
-    default:
-      return is_rigid_integrator(integrator);
-  }
+  for (const ModelMode& mode : kModes)
+    if (mode.kind == kind && mode.integrator == integrator) return true;
+  return false;
 }
 
 bool is_engine(ModelKind kind) {
-  return kind == ModelKind::mujoco || kind == ModelKind::bullet || kind == ModelKind::ode;
+  for (const Named<ModelKind>& entry : kModelNames)
+    if (entry.value == kind) return entry.engine;
+  return false;
 }
 
 Integrator default_integrator(ModelKind kind) {
-  switch (kind) {
-    case ModelKind::bullet:
-      return Integrator::implicit_body;
-    case ModelKind::ode:
-      return Integrator::step;
-    default:
-      return Integrator::euler;
-  }
+  for (const ModelMode& mode : kModes)
+    if (mode.kind == kind) return mode.integrator;
+  throw std::logic_error("physics::default_integrator: model kind " +
+                         std::to_string(static_cast<int>(kind)) + " has no modes");
 }
 
 std::unique_ptr<Simulator> make_simulator(const Book& book, const ModelConfig& config) {
@@ -136,6 +158,10 @@ std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& c
                                 "' does not support integrator '" +
                                 std::string(to_string(config.integrator)) + "'");
   }
+  if (is_engine(config.kind)) {
+    throw std::invalid_argument("model '" + std::string(to_string(config.kind)) +
+                                "' is another engine's: engines::make_model builds it");
+  }
   switch (config.kind) {
     case ModelKind::particle:
       if (body.shape == BodyShape::book) return std::make_unique<ParticleModel>(body.cage, config);
@@ -145,14 +171,13 @@ std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& c
     case ModelKind::rigid_quaternion:
       return std::make_unique<RigidQuaternionModel>(body, config);
     case ModelKind::exact:
+      return make_exact_simulator(body);
+    default:
       break;
-    case ModelKind::mujoco:
-    case ModelKind::bullet:
-    case ModelKind::ode:
-      throw std::invalid_argument("model '" + std::string(to_string(config.kind)) +
-                                  "' is another engine's: engines::make_model builds it");
   }
-  return make_exact_simulator(body);
+  // A model with modes in kModes but no case here: a bug, never another model in its place.
+  throw std::logic_error("physics::make_simulator: no simulator for model '" +
+                         std::string(to_string(config.kind)) + "'");
 }
 
 }  // namespace bookspin::physics

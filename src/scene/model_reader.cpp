@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include "physics/model_modes.hpp"
+
 namespace bookspin::scene {
 
 namespace {
@@ -28,19 +30,23 @@ CompareTile read_tile(const toml::table& entry, std::size_t index, const std::st
   return panel;
 }
 
-/// " (expected …)": an engine's modes, for its unsupported-integrator error; empty for
-/// bookspin's own models.
+/// " (expected …)": an engine's modes (physics::model_modes()), for its unsupported-integrator
+/// error; empty for bookspin's own models.
 std::string engine_modes(physics::ModelKind kind) {
-  switch (kind) {
-    case physics::ModelKind::mujoco:
-      return " (expected euler, rk4, implicit)";
-    case physics::ModelKind::bullet:
-      return " (expected implicit-body, implicit-world, explicit, none)";
-    case physics::ModelKind::ode:
-      return " (expected step, quickstep, none)";
-    default:
-      return {};
-  }
+  if (!physics::is_engine(kind)) return {};
+  std::string modes;
+  for (const physics::ModelMode& mode : physics::model_modes())
+    if (mode.kind == kind)
+      modes.append(modes.empty() ? "" : ", ").append(physics::to_string(mode.integrator));
+  return " (expected " + modes + ")";
+}
+
+/// "a, b, c": the names of `values`, in their order.
+template <typename Enum>
+std::string names(const std::vector<Enum>& values) {
+  std::string text;
+  for (Enum value : values) text.append(text.empty() ? "" : ", ").append(physics::to_string(value));
+  return text;
 }
 
 }  // namespace
@@ -49,9 +55,8 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   physics::ModelConfig m;
   const std::string kind = r.string("model.kind", std::string(physics::to_string(fallback.kind)));
   if (!physics::parse_model_kind(kind, m.kind)) {
-    r.fail("model.kind", "unknown model '" + kind +
-                             "' (expected particle, rigid-matrix, rigid-quaternion, exact, "
-                             "mujoco, bullet, ode)");
+    r.fail("model.kind",
+           "unknown model '" + kind + "' (expected " + names(physics::model_kinds()) + ")");
   }
   // An engine's own default when the integrator is not named here and the model changes to
   // or from an engine (a tile's engine does not inherit another model's integrator).
@@ -63,11 +68,8 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   const std::string integrator =
       r.string("model.integrator", std::string(physics::to_string(fallback_integrator)));
   if (!physics::parse_integrator(integrator, m.integrator)) {
-    r.fail("model.integrator", "unknown integrator '" + integrator +
-                                   "' (expected euler, symplectic-euler, velocity-verlet, rk4, "
-                                   "implicit-midpoint, splitting, splitting4, implicit, "
-                                   "implicit-body, implicit-world, explicit, none, step, "
-                                   "quickstep)");
+    r.fail("model.integrator", "unknown integrator '" + integrator + "' (expected " +
+                                   names(physics::integrators()) + ")");
   }
   if (!physics::supports(m.kind, m.integrator)) {
     r.fail("model.integrator", "model '" + kind + "' does not support integrator '" + integrator +

@@ -10,11 +10,14 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "physics/exact_solution.hpp"
+#include "physics/model_modes.hpp"
 #include "physics/presets.hpp"
 
 namespace bookspin::engines {
@@ -32,6 +35,14 @@ std::vector<Mode> every_mode() { return engine_modes(); }
 std::string name(const Mode& m) {
   return std::string(physics::to_string(m.kind)) + " " +
          std::string(physics::to_string(m.integrator));
+}
+
+/// The modes of one engine, in the order of engine_modes().
+std::vector<Mode> rows_of(ModelKind kind) {
+  std::vector<Mode> rows;
+  for (const Mode& m : engine_modes())
+    if (m.kind == kind) rows.push_back(m);
+  return rows;
 }
 
 // --- Each engine called directly: a plain program's use of its API, written here on its own. ---
@@ -120,9 +131,12 @@ Eigen::Vector3d direct(const Mode& mode, double mass, const Eigen::Vector3d& I,
                                                                         : 0;
       return bullet_direct(mass, I, omega0, flags, dt, steps);
     }
-    default:
+    case ModelKind::ode:
       return ode_direct(mass, I, omega0, mode.integrator != Integrator::none,
                         mode.integrator == Integrator::quickstep, dt, steps);
+    default:
+      ADD_FAILURE() << name(mode) << ": no engine to call directly";
+      return Eigen::Vector3d::Constant(NAN);
   }
 }
 
@@ -225,6 +239,53 @@ TEST(EngineModels, SpinAboutTheLargestAxisStaysPut) {
     }
     EXPECT_GT(worst, 0.99) << name(mode);
   }
+}
+
+// The accuracy rows are the engines' rows of the one table of modes (physics::model_modes(),
+// whose rows tests/physics/model_modes_test.cpp holds against the docs), in its order, each
+// engine's default first.
+TEST(EngineModes, TheAccuracyRowsAreTheTablesEngineRows) {
+  std::vector<std::string> rows;
+  for (const Mode& m : engine_modes()) rows.push_back(name(m));
+  std::vector<std::string> table;
+  for (const physics::ModelMode& m : physics::model_modes())
+    if (physics::is_engine(m.kind)) table.push_back(name(m));
+  EXPECT_EQ(rows, table);
+  for (const Mode& m : engine_modes())
+    EXPECT_EQ(name({m.kind, physics::default_integrator(m.kind)}), name(rows_of(m.kind).front()));
+}
+
+// Every engine kind's modes, as the table says, make a model that steps; every other
+// integrator is refused; a kind that is no model's is an internal error, never built as
+// another engine.
+TEST(EngineModes, EveryModeOfTheTableMakesAModelAndNoOther) {
+  const physics::Body book = physics::book_body(physics::Book{});
+  int made = 0;
+  for (ModelKind kind : physics::model_kinds()) {
+    if (!physics::is_engine(kind)) continue;
+    for (Integrator integrator : physics::integrators()) {
+      const Mode mode{kind, integrator};
+      if (!physics::supports(kind, integrator)) {
+        EXPECT_THROW(make_model(book, {kind, integrator}), std::invalid_argument) << name(mode);
+        continue;
+      }
+      std::unique_ptr<physics::Simulator> sim;
+      ASSERT_NO_THROW(sim = make_model(book, {kind, integrator})) << name(mode);
+      physics::InitialState initial;
+      initial.omega0_body = Eigen::Vector3d(0.114819, 0.002, 0.003);
+      sim->reset(initial);
+      for (int i = 0; i < 10; ++i) sim->step(1.0 / 60.0);
+      EXPECT_TRUE(sim->finite()) << name(mode);
+      EXPECT_NEAR(sim->diagnostics().t, 10.0 / 60.0, 1e-12) << name(mode);
+      ++made;
+    }
+  }
+  EXPECT_EQ(made, static_cast<int>(engine_modes().size()));
+  EXPECT_GT(made, 0);
+  const auto unknown = static_cast<ModelKind>(99);
+  EXPECT_FALSE(physics::is_engine(unknown));
+  EXPECT_THROW(make_model(book, {unknown, Integrator::step}), InternalError);
+  EXPECT_THROW(make_model(book, {unknown, Integrator::euler}), InternalError);
 }
 
 }  // namespace

@@ -1,0 +1,34 @@
+#pragma once
+// One subcommand of the bookspin program. src/cli/NAME_command.cpp holds all of it: its
+// options, their CLI11 names, help texts and validators, and what runs with them, joined by its
+// `Subcommand add_NAME(CLI::App& cli)`; cli.cpp lists every NAME once (BOOKSPIN_SUBCOMMANDS).
+// What several subcommands' options share is here.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace bookspin::cli {
+
+/// A subcommand added to the program: its CLI11 app (whether it was chosen, after parsing)
+/// and what runs it with the options parsed into it, returning the process exit status
+/// (called inside run_guarded()).
+struct Subcommand {
+  CLI::App* app = nullptr;
+  std::function<int()> run;
+};
+
+/// The help text of --set, the option of every command that reads a scene.
+inline constexpr const char* kSetHelp =
+    "Override a scene key, value in TOML syntax (repeatable), e.g. --set time.dt=0.01 "
+    "--set model.kind='\"rigid-matrix\"' --set book.size=[1,2,0.5]";
+
+/// --force and --verify of the commands that skip up-to-date outputs; `manifest` is the
+/// manifest file their help names.
+void add_freshness_flags(CLI::App* cmd, bool& force, bool& verify, const std::string& manifest);
+
+/// `--frames N` is `--set time.frames=N`, after the user's own --set (so it wins); N = 0: not
+/// given, nothing appended.
+void frames_as_override(int frames, std::vector<std::string>& overrides);
+
+}  // namespace bookspin::cli
