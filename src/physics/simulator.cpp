@@ -6,6 +6,7 @@
 
 #include "physics/exact_model.hpp"
 #include "physics/lattice_model.hpp"
+#include "physics/names.hpp"
 #include "physics/particle_model.hpp"
 #include "physics/rigid_matrix_model.hpp"
 #include "physics/rigid_quaternion_model.hpp"
@@ -41,6 +42,18 @@ constexpr std::array<std::pair<Integrator, std::string_view>, 14> kIntegratorNam
     {Integrator::quickstep, "quickstep"},
 }};
 
+/// The values of `table`, in its order.
+template <typename Enum, std::size_t N>
+constexpr std::array<Enum, N> values_of(
+    const std::array<std::pair<Enum, std::string_view>, N>& table) {
+  std::array<Enum, N> values{};
+  for (std::size_t i = 0; i < N; ++i) values[i] = table[i].first;
+  return values;
+}
+
+constexpr std::array kModelKinds = values_of(kModelNames);
+constexpr std::array kIntegrators = values_of(kIntegratorNames);
+
 template <typename Enum, std::size_t N>
 std::string_view name_of(const std::array<std::pair<Enum, std::string_view>, N>& table, Enum e) {
   for (const auto& [value, name] : table)
@@ -72,6 +85,8 @@ bool is_rigid_integrator(Integrator i) {
 
 }  // namespace
 
+std::span<const ModelKind> model_kinds() { return kModelKinds; }
+std::span<const Integrator> integrators() { return kIntegrators; }
 std::string_view to_string(ModelKind kind) { return name_of(kModelNames, kind); }
 std::string_view to_string(Integrator integrator) { return name_of(kIntegratorNames, integrator); }
 bool parse_model_kind(std::string_view text, ModelKind& out) {
