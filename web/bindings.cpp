@@ -13,6 +13,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "analysis/motion.hpp"
@@ -20,6 +21,7 @@
 #include "engines/engine_body.hpp"
 #include "physics/body.hpp"
 #include "physics/book.hpp"
+#include "physics/names.hpp"
 #include "physics/polhode.hpp"
 #include "physics/presets.hpp"
 #include "physics/simulator.hpp"
@@ -367,12 +369,74 @@ val polhodes(double ix, double iy, double iz, int levels, double max_step) {
   return out;
 }
 
-bool supports_names(const std::string& model, const std::string& integrator) {
-  ModelKind kind{};
-  Integrator in{};
-  // The other engines' models (docs/engines.md) are not in the page: it binds src/physics alone.
-  return parse_model_kind(model, kind) && !is_engine(kind) && parse_integrator(integrator, in) &&
-         supports(kind, in);
+/// A JavaScript array of strings.
+val strings(const std::vector<std::string_view>& names) {
+  val out = val::array();
+  for (std::string_view name : names) out.call<void>("push", std::string(name));
+  return out;
+}
+
+/// A plain JavaScript array of 3 numbers (not a typed array: the page's state compares and
+/// writes its values as JSON).
+val array3(const Eigen::Vector3d& v) {
+  val out = val::array();
+  for (int i = 0; i < 3; ++i) out.call<void>("push", v[i]);
+  return out;
+}
+
+/// The names the page offers, from the physics' own tables, each list in the physics' order:
+/// {models: the models of src/physics (the other engines' models, physics::is_engine, are not in
+/// the page: it binds src/physics alone), integrators: every integrator one of those models
+/// accepts, supports: {model: the integrators it accepts (physics::supports)}, bodies: every
+/// body shape ("mesh": a mesh scene's own body)}.
+val physics_names() {
+  std::vector<std::string_view> models, integrators;
+  val supported = val::object();
+  for (ModelKind kind : model_kinds()) {
+    if (is_engine(kind)) continue;
+    models.push_back(to_string(kind));
+    std::vector<std::string_view> own;
+    for (Integrator integrator : bookspin::physics::integrators())
+      if (supports(kind, integrator)) own.push_back(to_string(integrator));
+    supported.set(std::string(to_string(kind)), strings(own));
+  }
+  for (Integrator integrator : bookspin::physics::integrators()) {
+    for (ModelKind kind : model_kinds()) {
+      if (!is_engine(kind) && supports(kind, integrator)) {
+        integrators.push_back(to_string(integrator));
+        break;
+      }
+    }
+  }
+  std::vector<std::string_view> bodies;
+  for (BodyShape shape : body_shapes()) bodies.push_back(to_string(shape));
+  val out = val::object();
+  out.set("models", strings(models));
+  out.set("integrators", strings(integrators));
+  out.set("supports", supported);
+  out.set("bodies", strings(bodies));
+  return out;
+}
+
+/// The settings whose default the physics owns: {book: {size: [a, b, c] (length units), mass
+/// (mass units)} the default book (physics::Book, docs/physics.md §1), k (force per length),
+/// cells (lattice cells, 0: the default) and damping of physics::ModelConfig, w: the body-frame
+/// ω0 of physics::InitialState (rad per time unit) and rate: its magnitude}.
+val physics_defaults() {
+  const Book book;
+  const ModelConfig model;
+  const InitialState initial;
+  val out = val::object();
+  val b = val::object();
+  b.set("size", array3(book.size));
+  b.set("mass", book.mass);
+  out.set("book", b);
+  out.set("k", model.spring_constant);
+  out.set("cells", model.lattice_cells);
+  out.set("damping", model.damping);
+  out.set("w", array3(initial.omega0_body));
+  out.set("rate", initial.omega0_body.norm());
+  return out;
 }
 
 std::string error_message(std::intptr_t pointer) {
@@ -411,6 +475,7 @@ EMSCRIPTEN_BINDINGS(bookspin_physics) {
       .function("surfaceTriangles", &Session::surface_triangles)
       .function("surfaceColours", &Session::surface_colours);
   emscripten::function("polhodes", &polhodes);
-  emscripten::function("supports", &supports_names);
+  emscripten::function("physicsNames", &physics_names);
+  emscripten::function("physicsDefaults", &physics_defaults);
   emscripten::function("errorMessage", &error_message);
 }

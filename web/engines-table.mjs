@@ -1,9 +1,10 @@
 // The table of docs/explorer.md ("JavaScript engines"): each JavaScript engine of the page
 // (web/src/engines/) and two of bookspin's own methods against the exact motion, for the book of
-// scenes/exact-unstable-x.toml spun near its intermediate axis, ω0 = (5, 0.01, 0.02) rad/s in
-// the body frame, no jiggle, over 20 s at dt = 1/60 and 1/240: flips (analysis::FlipDetector),
-// the first flip, and |ω − ω_exact| / |ω_exact| at t = 20 (body frame). Everything as the page
-// does it: the WebAssembly physics (Session; an engine's q and ω through Session.observe).
+// scenes/exact-unstable-x.toml (the physics' default book: physicsDefaults) spun near its
+// intermediate axis, ω0 = (5, 0.01, 0.02) rad/s in the body frame, no jiggle, over 20 s at
+// dt = 1/60 and 1/240: flips (analysis::FlipDetector), the first flip, and
+// |ω − ω_exact| / |ω_exact| at t = 20 (body frame). Everything as the page does it: the
+// WebAssembly physics (Session; an engine's q and ω through Session.observe).
 // Usage: node web/engines-table.mjs BUILD/web/bookspin_physics.js
 import { createRequire } from 'node:module';
 import { cannon } from './src/engines/cannon.js';
@@ -14,7 +15,8 @@ const BookspinPhysics = createRequire(import.meta.url)(process.argv[2]);
 const wasm = await BookspinPhysics();
 const W0 = [5, 0.01, 0.02];
 const T = 20;
-const book = () => new wasm.Session('book', 8, 1, 1.878, 2.9085, 0.5);
+const { size, mass } = wasm.physicsDefaults().book;
+const book = () => new wasm.Session('book', mass, 1, size[0], size[1], size[2]);
 
 function measure(session, step, dt) {
   const n = Math.round(T / dt);

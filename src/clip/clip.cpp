@@ -130,11 +130,10 @@ ClipResult render_clip(const ClipRequest& request) {
     stop_if_asked(request.stop_signal, "render frames");  // the sinks remove their temporaries
     for (std::size_t i = 0; i < tiles.size(); ++i) {
       TileRun& tile = *tiles[i];
-      const std::size_t samples = tile.frame.history.size();
-      advance(tile.source, index, tile.scene, tile.frame);
+      const bool fresh = advance(tile.source, index, tile.scene, tile.frame);
       renderer.submit(tile.drawing.input_for(tile.frame.pose));
       finisher.expect({index, i, tile.frame.t, tile.frame.diverged_at, tile.frame.pose.diagnostics,
-                       tile.frame.pose.corners, tile.frame.history.size() > samples});
+                       tile.frame.pose.corners, fresh});
       // While this picture is drawn and read back, the previous one is composed and queued.
       if (auto spare = sinks.spare_frame()) renderer.recycle(std::move(*spare));
       if (auto picture = renderer.collect()) finisher.take(std::move(*picture));

@@ -18,9 +18,10 @@
 namespace bookspin::clip {
 
 /// A tile as the frame being composed shows it. The simulation runs up to the renderer's
-/// pipeline depth ahead, so this is kept apart from the simulation's ShownFrame.
+/// pipeline depth ahead, so this is kept apart from the simulation's SimulatedFrame; the tile's
+/// one diagnostics history is here, grown as its frames are shown.
 struct TileShown {
-  double t = 0.0;  ///< the frame's time (ShownFrame::t)
+  double t = 0.0;  ///< the frame's time (SimulatedFrame::t)
   std::optional<double> diverged_at;
   physics::Diagnostics diagnostics;    ///< the shown pose's (held after a divergence)
   charts::DiagnosticsHistory history;  ///< every frame up to this one: the panel's curves
@@ -39,8 +40,8 @@ struct TileRun {
   scene::Scene scene;  ///< a single clip's scene, or the comparison's with this tile's model
   analysis::FrameSource source;
   BodyDrawing drawing;
-  ShownFrame frame;  ///< the simulation side: the frame last handed to the renderer
-  TileShown shown;   ///< the display side: the frame last composed
+  SimulatedFrame frame;  ///< the simulation side: the frame last handed to the renderer
+  TileShown shown;       ///< the display side: the frame last composed
 };
 using Tiles = std::vector<std::unique_ptr<TileRun>>;
 

@@ -9,12 +9,18 @@
 
 namespace bookspin::clip {
 
-void advance(analysis::FrameSource& source, int index, const scene::Scene& scene,
-             ShownFrame& frame) {
+bool advance(analysis::FrameSource& source, int index, const scene::Scene& scene,
+             SimulatedFrame& frame) {
   const bool fresh = source.next(frame.pose);
   frame.diverged_at = source.diverged_at();
   frame.t = fresh ? frame.pose.diagnostics.t : index * scene.steps_per_frame * scene.dt;
-  if (fresh) frame.history.add(frame.pose.diagnostics, &frame.pose.corners);
+  return fresh;
+}
+
+void advance(analysis::FrameSource& source, int index, const scene::Scene& scene,
+             ShownFrame& frame) {
+  if (advance(source, index, scene, static_cast<SimulatedFrame&>(frame)))
+    frame.history.add(frame.pose.diagnostics, &frame.pose.corners);
 }
 
 ShownFrame simulate_to(const scene::Scene& scene, int index) {

@@ -14,16 +14,27 @@
 
 namespace bookspin::clip {
 
-/// What one video frame shows: the pose, its time and whether the simulation has diverged.
-struct ShownFrame {
+/// The simulation's side of one video frame: the pose, its time and whether the simulation
+/// has diverged.
+struct SimulatedFrame {
   physics::Pose pose;  ///< after a divergence: the last finite pose
   double t = 0.0;      ///< frame time; after a divergence index × frame time, so it runs on
   std::optional<double> diverged_at;
+};
+
+/// What one video frame shows: the simulated frame and the panel's curves up to it.
+struct ShownFrame : SimulatedFrame {
   charts::DiagnosticsHistory history;  ///< every simulated frame so far: the panel's curves
 };
 
 /// Moves `frame` to video frame `index` (call with 0, 1, 2, … in turn). After a divergence
-/// the last finite pose stays in `frame`, so the clip keeps its length.
+/// the last finite pose stays in `frame`, so the clip keeps its length. Returns whether the
+/// pose is newly simulated (false: the last finite one, held), that is whether the frame adds
+/// a sample to the panel's curves.
+bool advance(analysis::FrameSource& source, int index, const scene::Scene& scene,
+             SimulatedFrame& frame);
+
+/// The same, and the new pose's sample added to `frame.history`.
 void advance(analysis::FrameSource& source, int index, const scene::Scene& scene,
              ShownFrame& frame);
 

@@ -1,9 +1,11 @@
 #include "physics/body.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "physics/mass_properties.hpp"
+#include "physics/names.hpp"
 
 namespace bookspin::physics {
 
@@ -17,7 +19,15 @@ constexpr std::array<std::pair<BodyShape, std::string_view>, 5> kShapeNames{{
     {BodyShape::mesh, "mesh"},
 }};
 
+constexpr std::array<BodyShape, kShapeNames.size()> kShapes = [] {
+  std::array<BodyShape, kShapeNames.size()> shapes{};
+  for (std::size_t i = 0; i < shapes.size(); ++i) shapes[i] = kShapeNames[i].first;
+  return shapes;
+}();
+
 }  // namespace
+
+std::span<const BodyShape> body_shapes() { return kShapes; }
 
 std::string_view to_string(BodyShape shape) {
   for (const auto& [value, name] : kShapeNames)

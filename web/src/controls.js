@@ -1,9 +1,9 @@
 // The control column: the state shown in the page's inputs and read back from them. Only what
-// the chosen model uses is shown: its own integrators (physics::supports through the
-// WebAssembly module), normalization where it has one, damping and k for the particle model,
-// lattice cells for a particle body other than the book. The JavaScript engines' models (a page
-// written with --engines) have neither integrator nor normalization of bookspin's.
-import { MODELS, INTEGRATORS, BODIES, AXES } from './state.js';
+// the chosen model uses is shown: its own integrators (physics::supports, as the WebAssembly
+// module lists them: state.js), normalization where it has one, damping and k for the particle
+// model, lattice cells for a particle body other than the book. The JavaScript engines' models
+// (a page written with --engines) have neither integrator nor normalization of bookspin's.
+import { AXES } from './state.js';
 
 const $ = (id) => document.getElementById(id);
 const NUMBERS = ['k', 'cells', 'dt', 'rate', 'jiggle', 'seed', 'speed'];
@@ -21,23 +21,25 @@ function show(id, visible) {
 }
 
 export class Controls {
-  /** `supports(model, integrator)`: whether the physics accepts the pair; `engines`: the
-   * JavaScript engines' adapters (web/src/engines/), offered as models after bookspin's own. */
-  constructor(scenes, supports, engines = []) {
+  /** `space`: the page's StateSpace (state.js: the physics' models, their integrators, the
+   * bodies); `engines`: the JavaScript engines' adapters (web/src/engines/), loaded, offered as
+   * models after bookspin's own. */
+  constructor(space, scenes, engines = []) {
+    this.space = space;
     this.scenes = scenes;
-    this.supports = supports;
     this.engineModels = engines.map((e) => e.model);
     fillSelect('scene', [''].concat(scenes.map((s) => s.name)));
     $('scene').options[0].textContent = '(custom)';
-    fillSelect('body', BODIES);
-    fillSelect('model', MODELS.concat(this.engineModels)); fillSelect('model2', MODELS.concat(this.engineModels));
+    fillSelect('body', space.bodies);
+    const models = space.models.concat(this.engineModels);
+    fillSelect('model', models); fillSelect('model2', models);
     fillSelect('axis', AXES);
   }
 
   /** The integrators `model` accepts (an engine's model: its own, named 'euler' in the state). */
   integratorsOf(model) {
     if (this.engineModels.includes(model)) return ['euler'];
-    return INTEGRATORS.filter((i) => this.supports(model, i));
+    return this.space.supports[model] || [];
   }
 
   /** Whether `model` has bookspin's integrators and normalization (not exact, not an engine). */

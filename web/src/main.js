@@ -4,10 +4,10 @@
 // This file wires the parts: state and URL (state.js), runs (runs.js), 3D view (view3d.js),
 // sphere (sphere.js), plots (plots.js), controls (controls.js), the work per frame (pacing.js);
 // the JavaScript engines, with --engines, come as window.BOOKSPIN_ENGINES (engines/).
-import { parseState, formatState } from './state.js';
+import { StateSpace } from './state.js';
 import { Pacer, FIRST_BUDGET_MS } from './pacing.js';
 import { testHooks } from './hooks.js';
-import { Runs, sceneBase } from './runs.js';
+import { Runs } from './runs.js';
 import { View3D } from './view3d.js';
 import { Sphere } from './sphere.js';
 import { drawPlots } from './plots.js';
@@ -17,18 +17,19 @@ const $ = (id) => document.getElementById(id);
 
 function startApp(wasm, engines) {
   const SCENES = window.BOOKSPIN_SCENES || [];  // inlined by bookspin explore
+  const space = new StateSpace(wasm);  // the physics' names and defaults
   const app = {
-    state: parseState(location.search, sceneBase(SCENES, new URLSearchParams(location.search).get('scene') || '')),
-    runs: new Runs(wasm, SCENES, engines),
+    state: space.parse(location.search, space.sceneBase(SCENES, new URLSearchParams(location.search).get('scene') || '')),
+    runs: new Runs(wasm, space, SCENES, engines),
     view: new View3D($('view'), window.BOOKSPIN_BOOK_ART || null),
-    controls: new Controls(SCENES, (m, i) => wasm.supports(m, i), engines),
+    controls: new Controls(space, SCENES, engines),
     playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, plotsDrawnAt: -Infinity,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
     seen: { sphere: null, plots: null },
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
     costs: { physics: 0, view: 0, sphere: 0, plots: 0, readout: 0 },
   };
-  const base = () => sceneBase(SCENES, app.state.scene);
+  const base = () => space.sceneBase(SCENES, app.state.scene);
 
   /** Steps towards time `target` (for at most `ms`, the rest a piece per frame). */
   function catchUp(target, ms) {
@@ -37,7 +38,7 @@ function startApp(wasm, engines) {
   }
 
   function writeUrl() {
-    const q = formatState(app.state, base());
+    const q = space.format(app.state, base());
     history.replaceState(null, '', q ? `?${q}` : location.pathname);
   }
 
@@ -151,7 +152,7 @@ function startApp(wasm, engines) {
 
   app.controls.listen((id) => {
     if (id === 'scene') {
-      app.state = sceneBase(SCENES, $('scene').value);
+      app.state = space.sceneBase(SCENES, $('scene').value);
     } else {
       const t = app.state.t;
       app.state = app.controls.read(app.state);

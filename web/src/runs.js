@@ -3,18 +3,12 @@
 // module, flips included (analysis::FlipDetector, fed every step); nothing is computed here.
 // A JavaScript engine's run (web/src/engines/) is stepped by its engine; after every step its q
 // and ω go into a WebAssembly session (Session.observe), which measures and draws it alike.
-import { DEFAULTS, AXES } from './state.js';
+import { AXES } from './state.js';
 
 const TRAIL_COLOURS = ['#e8b00b', '#35c0f0'];
 /** Steps between records at most (one record per 0.05 time units otherwise), so that a tiny dt
  * still returns to the page between pieces of work. */
 const MAX_CHUNK = 2000;
-
-/** The state a scene starts from: the page's defaults under the scene's own settings. */
-export function sceneBase(scenes, name) {
-  const scene = scenes.find((s) => s.name === name);
-  return scene ? { ...DEFAULTS, ...scene.state, scene: name } : DEFAULTS;
-}
 
 /** The methods of `state`: the first, and the second in compare mode. */
 function methodsOf(state) {
@@ -30,10 +24,12 @@ function labelOf(model, integrator, normalize, engine) {
 }
 
 export class Runs {
-  /** `engines`: the JavaScript engines' adapters (web/src/engines/engine.js), loaded; [] in a
+  /** `space`: the page's StateSpace (state.js: the physics' models and default book);
+   * `engines`: the JavaScript engines' adapters (web/src/engines/engine.js), loaded; [] in a
    * page written without `--engines`. */
-  constructor(wasm, scenes, engines = []) {
+  constructor(wasm, space, scenes, engines = []) {
     this.wasm = wasm;
+    this.space = space;
     this.scenes = scenes;
     this.engines = engines;
     // {session, engine (an EngineRun or null), model, integrator, normalize, colour, label, trail,
@@ -49,13 +45,14 @@ export class Runs {
   /**
    * The simulator's session for the state's body. The scene's own body comes whole from bookspin
    * (its `body`: moments, cage and surface as `bookspin simulate` builds them, a mesh included);
-   * another preset is built by the physics from its shape, the book from the scene's size.
+   * another preset is built by the physics from its shape, the book from the scene's size (with no
+   * scene, or a scene of another body: the physics' default book).
    */
   bodySession(state) {
     const scene = this.scenes.find((s) => s.name === state.scene);
     if (scene && scene.body && state.body === scene.body.shape) return new this.wasm.Session(scene.body);
     if (state.body === 'mesh') throw new Error('no mesh body in this scene: choose a mesh scene');
-    const book = scene && scene.book && !scene.body ? scene.book : { size: [1.878, 2.9085, 0.5], mass: 8 };
+    const book = scene && scene.book && !scene.body ? scene.book : this.space.book;
     if (state.body === 'book')
       return new this.wasm.Session('book', book.mass, 1, book.size[0], book.size[1], book.size[2]);
     return new this.wasm.Session(state.body, 1, 1, 1, 1, 1);
@@ -75,7 +72,7 @@ export class Runs {
    * session's jiggled ω0 with the body's mass and principal moments. */
   startRun(state, model, integrator, normalize) {
     const adapter = this.engineOf(model);
-    if (!adapter && !['particle', 'rigid-matrix', 'rigid-quaternion', 'exact'].includes(model))
+    if (!adapter && !this.space.models.includes(model))
       throw new Error(`${model}: this page has no JavaScript engines (bookspin explore --engines writes them)`);
     const session = this.bodySession(state);
     try {

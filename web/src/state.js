@@ -1,63 +1,102 @@
 // The explorer's whole state, read from and written to the URL's query (a shared link
 // reproduces the run). Every key has a default; unknown or malformed values fall back to it
-// and are reported once on the page.
-export const MODELS = ['particle', 'rigid-matrix', 'rigid-quaternion', 'exact'];
-/** The JavaScript engines' models (web/src/engines/), in a page written with `--engines`. */
-export const ENGINE_MODELS = ['cannon-es', 'rapier', 'jolt', 'jolt-gyroscopic'];
-export const INTEGRATORS = ['euler', 'symplectic-euler', 'velocity-verlet', 'rk4',
-  'implicit-midpoint', 'splitting', 'splitting4'];
-export const BODIES = ['book', 't-handle', 'tennis-racket', 'phone', 'mesh'];  // mesh: the scene's own
-export const AXES = ['smallest', 'intermediate', 'largest', 'custom'];
+// and are reported once on the page. The names a state may hold and the defaults the physics
+// owns come from the WebAssembly module (web/bindings.cpp: physicsNames, physicsDefaults), the
+// JavaScript engines' models from engines/models.js; the rest are the page's own choices.
+import { ENGINE_MODELS } from './engines/models.js';
 
-export const DEFAULTS = {
-  scene: '',
-  body: 'book',
-  model: 'rigid-matrix',
-  integrator: 'euler',
-  normalize: true,
-  damping: true,
-  k: 10,
-  cells: 0,          // lattice cells along the longest side (particle model, not the book); 0: default
-  dt: 1 / 60,
-  axis: 'custom',
-  rate: 0.114819,
-  w: [0.114819, 0, 0],
-  jiggle: 0.001,
-  seed: 2012,
-  speed: 5,
-  compare: false,
-  model2: 'exact',
-  integrator2: 'euler',
-  normalize2: false,
-  showL: true,
-  showAxes: false,
-  t: 0,
-};
+export const AXES = ['smallest', 'intermediate', 'largest', 'custom'];
 
 const num = (v, d) => { const x = Number(v); return Number.isFinite(x) ? x : d; };
 const bool = (v, d) => (v === '1' || v === 'true' ? true : v === '0' || v === 'false' ? false : d);
 const oneOf = (list) => (v, d) => (list.includes(v) ? v : d);
 
-const PARSE = {
-  scene: (v) => v,
-  body: oneOf(BODIES), model: oneOf([...MODELS, ...ENGINE_MODELS]), integrator: oneOf(INTEGRATORS),
-  model2: oneOf([...MODELS, ...ENGINE_MODELS]), integrator2: oneOf(INTEGRATORS), axis: oneOf(AXES),
-  normalize: bool, damping: bool, normalize2: bool, compare: bool, showL: bool, showAxes: bool,
-  k: num, cells: num, dt: num, rate: num, jiggle: num, seed: num, speed: num, t: num,
-  w: (v, d) => {
-    const parts = String(v).split(',').map(Number);
-    return parts.length === 3 && parts.every(Number.isFinite) ? parts : d;
-  },
-};
-
-/** The state of `search` (a URL query string) over `base` (defaults or a scene's settings). */
-export function parseState(search, base = DEFAULTS) {
-  const params = new URLSearchParams(search);
-  const state = structuredClone(base);
-  for (const [key, value] of params) {
-    if (key in PARSE) state[key] = PARSE[key](value, state[key]);
+/** The states the page can be in: the physics' names and defaults (`wasm`, the WebAssembly
+ * module), reading and writing the URL's query. */
+export class StateSpace {
+  constructor(wasm) {
+    const names = wasm.physicsNames();
+    const physics = wasm.physicsDefaults();
+    /** bookspin's own models (src/physics), in the physics' order. */
+    this.models = names.models;
+    /** The JavaScript engines' models, known even in a page without them (a link may name one). */
+    this.engineModels = ENGINE_MODELS;
+    /** Every integrator of the models, and {model: the integrators it accepts} (physics::supports). */
+    this.integrators = names.integrators;
+    this.supports = names.supports;
+    /** The body shapes ('mesh': a mesh scene's own body). */
+    this.bodies = names.bodies;
+    /** The default book {size: [a, b, c], mass} (physics::Book). */
+    this.book = physics.book;
+    /** The state with no scene: the physics' defaults (k, cells, damping, ω0) and the page's. */
+    this.defaults = {
+      scene: '',
+      body: 'book',
+      model: 'rigid-matrix',
+      integrator: 'euler',
+      normalize: true,
+      damping: physics.damping,
+      k: physics.k,
+      cells: physics.cells,  // lattice cells along the longest side (particle model, not the book); 0: default
+      dt: 1 / 60,
+      axis: 'custom',
+      rate: physics.rate,
+      w: physics.w,
+      jiggle: 0.001,
+      seed: 2012,
+      speed: 5,
+      compare: false,
+      model2: 'exact',
+      integrator2: 'euler',
+      normalize2: false,
+      showL: true,
+      showAxes: false,
+      t: 0,
+    };
+    const models = oneOf([...this.models, ...this.engineModels]);
+    const integrators = oneOf(this.integrators);
+    this.parsers = {
+      scene: (v) => v,
+      body: oneOf(this.bodies), model: models, integrator: integrators,
+      model2: models, integrator2: integrators, axis: oneOf(AXES),
+      normalize: bool, damping: bool, normalize2: bool, compare: bool, showL: bool, showAxes: bool,
+      k: num, cells: num, dt: num, rate: num, jiggle: num, seed: num, speed: num, t: num,
+      w: (v, d) => {
+        const parts = String(v).split(',').map(Number);
+        return parts.length === 3 && parts.every(Number.isFinite) ? parts : d;
+      },
+    };
   }
-  return state;
+
+  /** The state a scene of `scenes` starts from: the defaults under the scene's own settings
+   * (the defaults where there is no scene of that name). */
+  sceneBase(scenes, name) {
+    const scene = scenes.find((s) => s.name === name);
+    return scene ? { ...this.defaults, ...scene.state, scene: name } : this.defaults;
+  }
+
+  /** The state of `search` (a URL query string) over `base` (defaults or a scene's settings). */
+  parse(search, base = this.defaults) {
+    const params = new URLSearchParams(search);
+    const state = structuredClone(base);
+    for (const [key, value] of params) {
+      if (key in this.parsers) state[key] = this.parsers[key](value, state[key]);
+    }
+    return state;
+  }
+
+  /** The query string of `state`: the scene's name, and only the keys that differ from `base`
+   * (what parse starts from: the defaults, or the scene's settings over them). */
+  format(state, base = this.defaults) {
+    const params = new URLSearchParams();
+    for (const key of Object.keys(this.defaults)) {
+      const v = state[key];
+      const d = key === 'scene' ? this.defaults.scene : base[key];
+      if (JSON.stringify(v) === JSON.stringify(d)) continue;
+      params.set(key, Array.isArray(v) ? v.join(',') : typeof v === 'boolean' ? (v ? '1' : '0') : String(v));
+    }
+    return params.toString();
+  }
 }
 
 /**
@@ -72,7 +111,7 @@ export const MAX_STEPS = 1e7;
 
 /** `state` with every value outside LIMITS put back to `base`'s (a `t` beyond MAX_STEPS steps:
  * 0), and one line per value refused, saying why. */
-export function withinLimits(state, base = DEFAULTS) {
+export function withinLimits(state, base) {
   const next = { ...state };
   const notes = [];
   for (const [key, [lo, hi]] of Object.entries(LIMITS)) {
@@ -88,17 +127,4 @@ export function withinLimits(state, base = DEFAULTS) {
     next.t = 0;
   }
   return [next, notes];
-}
-
-/** The query string of `state`: the scene's name, and only the keys that differ from `base`
- * (what parseState starts from: DEFAULTS, or the scene's settings over them). */
-export function formatState(state, base = DEFAULTS) {
-  const params = new URLSearchParams();
-  for (const key of Object.keys(DEFAULTS)) {
-    const v = state[key];
-    const d = key === 'scene' ? DEFAULTS.scene : base[key];
-    if (JSON.stringify(v) === JSON.stringify(d)) continue;
-    params.set(key, Array.isArray(v) ? v.join(',') : typeof v === 'boolean' ? (v ? '1' : '0') : String(v));
-  }
-  return params.toString();
 }

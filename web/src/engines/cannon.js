@@ -5,9 +5,10 @@
 // torque alone (semi-implicit Euler, no gyroscopic term), so a free body's ω stays fixed in the
 // world frame (docs/explorer.md).
 import { World, Body, Box, Vec3 } from 'cannon-es';
+import { ENGINE_MODEL } from './models.js';
 
 export const cannon = {
-  model: 'cannon-es',
+  model: ENGINE_MODEL.cannon,
   label: 'cannon-es 0.20',
   load: () => Promise.resolve(),
   start(body, dt) {

@@ -1,6 +1,7 @@
 // What every JavaScript engine adapter of the page offers (docs/explorer.md, "JavaScript
 // engines"). An adapter is a plain object:
-//   model:  the name the page's model selects and URL use ('cannon-es', 'rapier', …);
+//   model:  the name the page's model selects and URL use ('cannon-es', 'rapier', …), from
+//           models.js, the one list of the engines' names;
 //   label:  what the page shows;
 //   load(): a promise that resolves once the package is ready (Rapier and Jolt compile their
 //           WebAssembly here; it is inlined in the page, so this works from file://);

@@ -4,6 +4,7 @@
 // given (EOverrideMassProperties_MassAndInertiaProvided: diag(Ix, Iy, Iz), not the box's), no
 // gravity, no damping, no sleeping, no angular velocity limit, JoltInterface.Step(dt, 1).
 import initJolt from 'jolt-physics/wasm-compat';
+import { ENGINE_MODEL } from './models.js';
 
 function joltAdapter(model, label, gyroscopic) {
   return {
@@ -63,5 +64,5 @@ function joltAdapter(model, label, gyroscopic) {
   };
 }
 
-export const jolt = joltAdapter('jolt', 'Jolt 1.1', false);
-export const joltGyroscopic = joltAdapter('jolt-gyroscopic', 'Jolt 1.1, mApplyGyroscopicForce', true);
+export const jolt = joltAdapter(ENGINE_MODEL.jolt, 'Jolt 1.1', false);
+export const joltGyroscopic = joltAdapter(ENGINE_MODEL.joltGyroscopic, 'Jolt 1.1, mApplyGyroscopicForce', true);

@@ -4,9 +4,10 @@
 // (setAdditionalMassProperties, principal frame = body frame), no gravity, no damping, no
 // sleeping, World.step() at timestep dt.
 import RAPIER from '@dimforge/rapier3d-compat';
+import { ENGINE_MODEL } from './models.js';
 
 export const rapier = {
-  model: 'rapier',
+  model: ENGINE_MODEL.rapier,
   label: 'Rapier 0.21',
   load: () => RAPIER.init(),
   start(body, dt) {

@@ -1,0 +1,14 @@
+// The names of the JavaScript engines' models (the adapters of this folder, engine.js): the one
+// list of them. The adapters take their `model` from here, and so does the page's state
+// (state.js), which must know them in a page written without `--engines` too, where a link may
+// still name one (the page then says how to get the engines). Only names here: this module is
+// in the page's own bundle, the engines' packages are not.
+export const ENGINE_MODEL = {
+  cannon: 'cannon-es',
+  rapier: 'rapier',
+  jolt: 'jolt',
+  joltGyroscopic: 'jolt-gyroscopic',
+};
+
+/** Every engine's model, in the order the page offers them (index.js). */
+export const ENGINE_MODELS = Object.values(ENGINE_MODEL);
