@@ -12,7 +12,6 @@ namespace bookspin::cli {
 /// called `name` did not match ("bookspin: note: NAME: making it again: REASON").
 void remake_note(const std::string& name, const std::string& reason);
 
-
 /// Parses argv and runs the chosen subcommand.
 int run_cli(int argc, char** argv);
 

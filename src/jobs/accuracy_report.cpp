@@ -161,9 +161,9 @@ CsvTable energy_csv(const AccuracyReport& report) {
     std::vector<CsvCell> row{CsvNumber{histories.front().t[i], "%.9g"}};
     for (const auto& h : histories)
       row.push_back(CsvNumber{i < h.relative_error.size()
-                                          ? std::optional<double>(h.relative_error[i])
-                                          : std::optional<double>(),
-                                      "%.6e"});
+                                  ? std::optional<double>(h.relative_error[i])
+                                  : std::optional<double>(),
+                              "%.6e"});
     table.rows.push_back(std::move(row));
   }
   return table;

@@ -3,8 +3,8 @@
 #include "cache/make_cached.hpp"
 #include "cache/manifest_head.hpp"
 #include "charts/accuracy_plots.hpp"
-#include "output/atomic_output.hpp"
 #include "common/csv_writer.hpp"
+#include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 

@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "analysis/measures.hpp"
+#include "common/csv_writer.hpp"
 #include "common/text_file.hpp"
 #include "jobs/accuracy_report.hpp"
 #include "jobs/sweep.hpp"
-#include "common/csv_writer.hpp"
 #include "output/diagnostics_csv.hpp"
 #include "scene/scene.hpp"
 

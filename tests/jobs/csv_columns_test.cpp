@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "analysis/accuracy.hpp"
+#include "common/csv_writer.hpp"
 #include "engines/models.hpp"
 #include "jobs/accuracy_report.hpp"
 #include "jobs/closed_form_flips.hpp"
@@ -28,7 +29,6 @@
 #include "jobs/simulation.hpp"
 #include "jobs/sweep.hpp"
 #include "output/atomic_output.hpp"
-#include "common/csv_writer.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/particle_model.hpp"
 #include "scene/scene.hpp"
@@ -380,8 +380,7 @@ TEST(CsvColumns, AccuracyAndEnergyCsvRowsMatchTheReplayAndTheClosedForm) {
   request.flips = 2.0;
   request.dts = {0.05, 0.1};
   const AccuracyReport report = measure_accuracy(request);
-  output::write_text_file(dir / "accuracy.csv",
-                          csv_text(accuracy_csv(report), "accuracy CSV"));
+  output::write_text_file(dir / "accuracy.csv", csv_text(accuracy_csv(report), "accuracy CSV"));
   output::write_text_file(dir / "energy.csv", csv_text(energy_csv(report), "energy CSV"));
   const scene::Scene& s = request.scene;
   const ClosedFormFlips exact = closed_form_flips(s.body.moments, omega);
