@@ -11,21 +11,10 @@
 
 #include "charts/decoration.hpp"
 #include "clip/composer.hpp"
+#include "support/test_images.hpp"
 
 namespace bookspin::clip {
 namespace {
-
-RgbaImage gradient(int width, int height) {
-  RgbaImage image(width, height);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      std::uint8_t* p = image.row(y) + 4 * x;
-      p[0] = static_cast<std::uint8_t>(x), p[1] = static_cast<std::uint8_t>(y), p[2] = 90;
-      p[3] = 255;
-    }
-  }
-  return image;
-}
 
 scene::Scene small_scene(std::vector<std::string> more = {}) {
   more.insert(more.end(), {"render.width=320", "render.height=240", "time.frames=4"});
@@ -52,17 +41,17 @@ TEST(Clip, ASingleScenesFrameIsThePictureDecoratedAsAStill) {
     Tiles tiles;
     tiles.push_back(std::make_unique<TileRun>(scene));
     tiles.front()->shown.t = 2.5;
-    std::vector<RgbaImage> pictures{gradient(320, 240)};
+    std::vector<RgbaImage> pictures{test::gradient_frame(320, 240)};
     const auto composer = single_composer(scene);
     const RgbaImage frame = composer->compose(pictures, tiles);
 
-    RgbaImage expected = gradient(320, 240);
+    RgbaImage expected = test::gradient_frame(320, 240);
     charts::decorate_frame(expected, scene, 2.5, std::nullopt, charts::DiagnosticsHistory{});
     EXPECT_EQ(frame.width, 320);
     EXPECT_EQ(frame.height, 240);
     EXPECT_TRUE(frame.pixels == expected.pixels);
     // And the decoration is there: the frame is not the bare picture.
-    EXPECT_FALSE(frame.pixels == gradient(320, 240).pixels);
+    EXPECT_FALSE(frame.pixels == test::gradient_frame(320, 240).pixels);
   }
 }
 

@@ -9,21 +9,10 @@
 #include "overlay/cairo_canvas.hpp"
 #include "overlay/caption.hpp"
 #include "overlay/plot.hpp"
+#include "support/test_images.hpp"
 
 namespace bookspin::picture {
 namespace {
-
-RgbaImage gradient(int width, int height) {
-  RgbaImage image(width, height);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      std::uint8_t* p = image.row(y) + 4 * x;
-      p[0] = static_cast<std::uint8_t>(x), p[1] = static_cast<std::uint8_t>(y), p[2] = 90,
-      p[3] = 255;
-    }
-  }
-  return image;
-}
 
 void draw_sample(cairo_t* cr) {
   cairo_rectangle(cr, 40.5, 30.25, 70, 35);
@@ -37,7 +26,7 @@ void draw_sample(cairo_t* cr) {
 }
 
 TEST(PixelRegion, DrawsTheSamePixelsAsAWholeFrameCanvas) {
-  RgbaImage whole = gradient(200, 120), part = whole;
+  RgbaImage whole = test::gradient_frame(200, 120), part = whole;
   overlay::CairoCanvas full(200, 120);
   draw_sample(full.cr());
   full.composite_onto(whole);
@@ -45,17 +34,17 @@ TEST(PixelRegion, DrawsTheSamePixelsAsAWholeFrameCanvas) {
   draw_sample(region.cr());
   region.composite_onto(part);
   EXPECT_EQ(whole.pixels, part.pixels);
-  EXPECT_NE(whole.pixels, gradient(200, 120).pixels);  // something was drawn
+  EXPECT_NE(whole.pixels, test::gradient_frame(200, 120).pixels);  // something was drawn
 }
 
 TEST(PixelRegion, DrawingOutsideTheRegionIsClippedAway) {
-  RgbaImage image = gradient(200, 120);
+  RgbaImage image = test::gradient_frame(200, 120);
   overlay::CairoCanvas canvas(200, 120, {150, 80, 20, 20});
   cairo_rectangle(canvas.cr(), 0, 0, 200, 120);
   cairo_set_source_rgb(canvas.cr(), 0, 0, 0);
   cairo_fill(canvas.cr());
   canvas.composite_onto(image);
-  const RgbaImage before = gradient(200, 120);
+  const RgbaImage before = test::gradient_frame(200, 120);
   for (int y = 0; y < 120; ++y) {
     for (int x = 0; x < 200; ++x) {
       const bool inside = x >= 150 && x < 170 && y >= 80 && y < 100;
@@ -78,18 +67,18 @@ TEST(PixelRegion, RegionAroundIsClippedToTheImage) {
   EXPECT_EQ(huge.height, 50);
   const auto outside = overlay::region_around(500, 500, 10, 10, 2, 100, 50);
   EXPECT_EQ(outside.width * outside.height, 0);
-  RgbaImage image = gradient(100, 50);
+  RgbaImage image = test::gradient_frame(100, 50);
   overlay::CairoCanvas empty(100, 50, outside);  // an empty region draws nothing, safely
   draw_sample(empty.cr());
   empty.composite_onto(image);
-  EXPECT_EQ(image.pixels, gradient(100, 50).pixels);
+  EXPECT_EQ(image.pixels, test::gradient_frame(100, 50).pixels);
 }
 
 TEST(PixelRegion, CaptionAndBannerStillDrawWhereTheyDid) {
-  RgbaImage image = gradient(256, 144);
+  RgbaImage image = test::gradient_frame(256, 144);
   overlay::draw_caption(image, {{"Figure 5", overlay::CaptionStyle::normal, true}, {"t = 1.0"}});
   overlay::draw_banner(image, "diverged at t = 31.35");
-  const RgbaImage before = gradient(256, 144);
+  const RgbaImage before = test::gradient_frame(256, 144);
   const auto changed = [&](int x, int y) {
     return image.row(y)[4 * x + 2] != before.row(y)[4 * x + 2];
   };

@@ -32,6 +32,20 @@ inline RgbaImage moving_square_frame(int width, int height, int index) {
   return image;
 }
 
+/// A smooth gradient: red = x, green = y (mod 256), blue 90, opaque. Content under an overlay,
+/// so that the overlay's pixels can be told from it.
+inline RgbaImage gradient_frame(int width, int height) {
+  RgbaImage image(width, height);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      std::uint8_t* p = image.row(y) + 4 * x;
+      p[0] = static_cast<std::uint8_t>(x), p[1] = static_cast<std::uint8_t>(y), p[2] = 90;
+      p[3] = 255;
+    }
+  }
+  return image;
+}
+
 /// Pseudo-random bytes, alpha included (exercises every PNG filter and makes
 /// video incompressible).
 inline RgbaImage noise_frame(int width, int height, std::uint32_t seed) {
