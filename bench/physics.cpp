@@ -22,11 +22,6 @@ constexpr long kSteps = 100000;       // ≥ 4 ms per timed run even for the che
 constexpr long kMujocoSteps = 10000;  // about as long for mj_step
 constexpr int kRepetitions = 7;
 
-std::string method_name(const analysis::Method& m) {
-  return std::string(physics::to_string(m.kind)) + " " +
-         std::string(physics::to_string(m.integrator));
-}
-
 std::string time_text(double t) {
   char text[64];
   std::snprintf(text, sizeof text, "at t = %.1f (2 exact flip periods)", t);
@@ -137,7 +132,7 @@ void bench_physics(const BenchContext& c) {
   }
   double mujoco_best = INFINITY;
   for (const analysis::Method& m : analysis::all_methods()) {
-    const std::string name = method_name(m) + ", normalized";
+    const std::string name = m.label + ", normalized";
     const Paired t = time_paired(b, m);
     report.add({"physics", name, t.method_ns, "ns/step",
                 "best of " + std::to_string(kRepetitions) + ", thread CPU time"});
@@ -147,7 +142,7 @@ void bench_physics(const BenchContext& c) {
     if (!t.mujoco_ns) continue;
     mujoco_best = std::min(mujoco_best, *t.mujoco_ns);
     const double ratio = *t.mujoco_ns / t.method_ns;
-    report.add({"physics", "MuJoCo Euler / " + method_name(m), ratio, "x",
+    report.add({"physics", "MuJoCo Euler / " + m.label, ratio, "x",
                 "times cheaper than mj_step (timed in alternation)"});
   }
   if (std::isfinite(mujoco_best))

@@ -51,11 +51,17 @@ double time_steps(const AccuracySettings& s, const Method& m, double dt, long st
 
 }  // namespace
 
+Method::Method(physics::ModelKind kind, physics::Integrator integrator)
+    : kind(kind),
+      integrator(integrator),
+      label(std::string(physics::to_string(kind)) + " " +
+            std::string(physics::to_string(integrator))) {}
+
 std::vector<Method> all_methods() {
   std::vector<Method> methods;
   for (const physics::ModelMode& m : physics::model_modes())
     if (!physics::is_engine(m.kind) && m.kind != ModelKind::exact)
-      methods.push_back({m.kind, m.integrator});
+      methods.push_back(Method(m.kind, m.integrator));
   return methods;
 }
 
@@ -68,7 +74,7 @@ std::vector<Method> accuracy_methods() {
 std::vector<Method> engine_methods() {
   std::vector<Method> methods;
   for (const engines::EngineMode& m : engines::engine_modes())
-    methods.push_back({m.kind, m.integrator});
+    methods.push_back(Method(m.kind, m.integrator));
   return methods;
 }
 

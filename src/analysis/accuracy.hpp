@@ -11,9 +11,17 @@
 
 namespace bookspin::analysis {
 
+/// One row of the accuracy report: a model × integrator pair and its name as every table,
+/// chart and manifest prints it.
 struct Method {
-  physics::ModelKind kind;
-  physics::Integrator integrator;
+  Method() = default;
+  /// `kind` × `integrator`, labelled "<model> <integrator>" in physics' names
+  /// ("rigid-quaternion rk4", "mujoco implicit").
+  Method(physics::ModelKind kind, physics::Integrator integrator);
+
+  physics::ModelKind kind{};
+  physics::Integrator integrator{};
+  std::string label;
 };
 
 /// bookspin's own supported pairs except "exact": particle × {euler, symplectic-euler,

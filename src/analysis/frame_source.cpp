@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "engines/models.hpp"
+#include "scene/model_line.hpp"
 
 namespace bookspin::analysis {
 
@@ -33,11 +34,12 @@ bool FrameSource::next(physics::Pose& pose) {
 
 std::vector<RunFrames> run_frames(const scene::Scene& scene) {
   const auto run = [](const scene::Scene& s) {
-    RunFrames frames{s, {}, std::nullopt};
+    RunFrames frames{s, {}, std::nullopt, {}};
     FrameSource source(frames.scene);
     physics::Pose pose;
     while (source.next(pose)) frames.frames.push_back(pose.diagnostics);
     frames.diverged_at = source.diverged_at();
+    frames.model_line = scene::model_line(frames.scene);
     return frames;
   };
   std::vector<RunFrames> runs;

@@ -41,10 +41,11 @@ struct RunFrames {
   scene::Scene scene;                        ///< the run's scene (a comparison: its tile's)
   std::vector<physics::Diagnostics> frames;  ///< every frame's diagnostics, frame 0 first
   std::optional<double> diverged_at;         ///< when it diverged (FrameSource::diverged_at)
+  std::string model_line;                    ///< what was run, in words (scene::model_line)
 };
 
-/// scene => its runs, each to its end or divergence: a single scene one run, a comparison one
-/// per [[compare]] tile (scene::tile_scene), in tile order.
+/// scene => its runs (with their model lines), each to its end or divergence: a single scene one
+/// run, a comparison one per [[compare]] tile (scene::tile_scene), in tile order.
 std::vector<RunFrames> run_frames(const scene::Scene& scene);
 
 /// The one warning of a run that diverged at `t` (time units), without "bookspin: warning: ":

@@ -44,11 +44,17 @@ void remove_outputs_of_earlier_run(const fs::path& out_dir, const std::vector<st
 
 }  // namespace
 
+std::string cached_head(const CachedOutputs& cached) {
+  return cached.scene ? manifest_head(cached.command, cached.options, *cached.scene)
+                      : manifest_head(cached.command, cached.options);
+}
+
 Outcome make_cached(const CachedOutputs& cached, const Freshness& freshness,
                     const std::function<Made()>& make) {
+  const std::string head = cached_head(cached);
   if (!freshness.force) {
     const std::optional<std::string> stale =
-        output::manifest_stale(cached.manifest, cached.head, cached.out_dir, freshness.verify);
+        output::manifest_stale(cached.manifest, head, cached.out_dir, freshness.verify);
     if (!stale) return Outcome::up_to_date;
     std::error_code ec;
     if (freshness.on_remake && fs::exists(cached.manifest, ec))
@@ -72,7 +78,7 @@ Outcome make_cached(const CachedOutputs& cached, const Freshness& freshness,
     outputs.push_back(path.lexically_relative(cached.out_dir).generic_string());
   remove_outputs_of_earlier_run(cached.out_dir, earlier, outputs);
   try {
-    output::write_manifest(cached.manifest, cached.head, note, cached.out_dir, outputs);
+    output::write_manifest(cached.manifest, head, note, cached.out_dir, outputs);
   } catch (...) {
     std::error_code ec;
     fs::remove(cached.manifest, ec);  // it describes the outputs just replaced

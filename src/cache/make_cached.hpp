@@ -8,18 +8,25 @@
 #include <vector>
 
 #include "cache/freshness.hpp"
+#include "common/json_writer.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::cache {
 
-/// One product's cached outputs: what its manifest is called and holds.
+/// One product's cached outputs: what its manifest is called and holds. Its head, what the
+/// outputs depend on, is cached_head(): the product says its command and options, and
+/// make_cached() builds the head from them (manifest_head.hpp).
 struct CachedOutputs {
   std::string name;                ///< the outputs' name in notes ("fig09", "fig09-plot")
   std::filesystem::path manifest;  ///< the manifest file (the product's layout names it)
-  std::string head;                ///< what the outputs depend on (manifest_head.hpp)
-  std::filesystem::path out_dir;   ///< OUT: the manifest lists outputs relative to it
-  /// The scene they are made from: its file's path and SHA-256 open the manifest's note
-  /// (manifest_note). None for a product of many scenes.
+  std::string command;             ///< the head's command ("render", "plot", "gallery", …)
+  /// With a `scene`: the output options (manifest_head(command, options, scene)). Without:
+  /// every member of the head after the command (manifest_head(command, options)).
+  JsonObject options;
+  std::filesystem::path out_dir;  ///< OUT: the manifest lists outputs relative to it
+  /// The scene they are made from: its canonical form and input files' SHA-256 go in the head,
+  /// its file's path and SHA-256 open the manifest's note (manifest_note). None for a product
+  /// of many scenes.
   const scene::Scene* scene = nullptr;
   /// make() puts its outputs in place together or not at all (output::OutputSet), so when it
   /// throws, the earlier outputs and their manifest are still true and the manifest is kept.
@@ -32,6 +39,14 @@ struct Made {
   std::string note = {};  ///< more of the manifest's note (recorded, not compared), JSON members
 };
 
+/// The head of `cached`'s manifest (manifest_head.hpp): command, options and, with a scene, the
+/// program, the resolved scene and its input files' SHA-256. Throws InputError when an input
+/// file cannot be read.
+std::string cached_head(const CachedOutputs& cached);
+
+/// (cached, freshness, make) => the outputs make() puts in place + their manifest, or nothing
+/// when they are up to date.
+///
 /// Unless `freshness.force`, returns up_to_date when `cached`'s manifest matches its head and
 /// every listed output is there (output::manifest_stale). Otherwise tells
 /// `freshness.on_remake` why (if a manifest was there), runs `make`, removes the files the

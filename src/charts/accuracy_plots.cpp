@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "common/colour.hpp"
+
 namespace bookspin::charts {
 
 namespace {
@@ -10,29 +12,47 @@ bool same_method(const analysis::Method& a, const analysis::Method& b) {
   return a.kind == b.kind && a.integrator == b.integrator;
 }
 
-}  // namespace
-
-std::string method_label(const analysis::Method& m) {
-  return std::string(physics::to_string(m.kind)) + " " +
-         std::string(physics::to_string(m.integrator));
+/// `pattern` with the whole number of `flips` in its one %d: a plot's title.
+std::string title_of(const char* pattern, double flips) {
+  char title[160];
+  std::snprintf(title, sizeof title, pattern, static_cast<int>(flips));
+  return title;
 }
 
+/// `s` in the palette's colour `index` (common/colour.hpp, cycled).
+void paint(overlay::Series& s, std::size_t index) {
+  const Rgb& c = kPalette[index % kPalette.size()];
+  s.r = c.r, s.g = c.g, s.b = c.b;
+}
+
+}  // namespace
+
 void style_series(const analysis::Method& m, overlay::Series& s) {
-  overlay::palette_colour(static_cast<int>(m.integrator), s.r, s.g, s.b);
+  paint(s, static_cast<std::size_t>(m.integrator));
   s.dashed = m.kind == physics::ModelKind::rigid_quaternion;
   if (m.kind == physics::ModelKind::particle)
     s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(m.integrator);
-  if (!physics::is_engine(m.kind)) return;
   // The engines (docs/engines.md): one mark per engine, one colour per mode within it, solid.
-  s.marker = m.kind == physics::ModelKind::mujoco   ? overlay::Marker::square
-             : m.kind == physics::ModelKind::bullet ? overlay::Marker::triangle
-                                                    : overlay::Marker::diamond;
-  int mode = 0;
+  // bookspin's own models have no mark.
+  switch (m.kind) {
+    case physics::ModelKind::mujoco:
+      s.marker = overlay::Marker::square;
+      break;
+    case physics::ModelKind::bullet:
+      s.marker = overlay::Marker::triangle;
+      break;
+    case physics::ModelKind::ode:
+      s.marker = overlay::Marker::diamond;
+      break;
+    default:
+      return;
+  }
+  std::size_t mode = 0;
   for (const auto& e : analysis::engine_methods()) {
     if (same_method(e, m)) break;
     if (e.kind == m.kind) ++mode;
   }
-  overlay::palette_colour(mode, s.r, s.g, s.b);
+  paint(s, mode);
 }
 
 namespace {
@@ -47,7 +67,7 @@ overlay::PlotSpec against_dt(const std::vector<analysis::AccuracyRow>& rows,
   spec.log_x = spec.log_y = true;
   for (const auto& method : methods) {
     overlay::Series s;
-    s.label = method_label(method);
+    s.label = method.label;
     for (const auto& r : rows) {
       if (!same_method(r.method, method) || (r.diverged && !keep_diverged)) continue;
       s.x.push_back(r.dt);
@@ -67,8 +87,7 @@ overlay::PlotSpec orientation_error_vs_dt_plot(const std::vector<analysis::Accur
                                                double flips) {
   overlay::PlotSpec spec = against_dt(
       rows, methods, true, [](const analysis::AccuracyRow& r) { return r.orientation_error; });
-  spec.title = "Orientation error after " + std::to_string(static_cast<int>(flips)) +
-               " flips, against the exact solution";
+  spec.title = title_of("Orientation error after %d flips, against the exact solution", flips);
   spec.y_label = "orientation error (rad)";
   return spec;
 }
@@ -77,8 +96,8 @@ overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& ro
                                     const std::vector<analysis::Method>& methods, double flips) {
   overlay::PlotSpec spec = against_dt(
       rows, methods, false, [](const analysis::AccuracyRow& r) { return r.energy_drift; });
-  spec.title = "Largest relative energy error over " + std::to_string(static_cast<int>(flips)) +
-               " exact flip periods, against the time step";
+  spec.title = title_of(
+      "Largest relative energy error over %d exact flip periods, against the time step", flips);
   spec.y_label = "relative energy error max |E/E0 - 1|";
   return spec;
 }
@@ -86,14 +105,14 @@ overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& ro
 overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& rows,
                                       double flips) {
   overlay::PlotSpec spec;
-  spec.title = "Work-precision: orientation error after " +
-               std::to_string(static_cast<int>(flips)) + " flips vs cost, one point per dt";
+  spec.title =
+      title_of("Work-precision: orientation error after %d flips vs cost, one point per dt", flips);
   spec.x_label = "cost: CPU time of step() per simulated time unit (microseconds)";
   spec.y_label = "orientation error (rad)";
   spec.log_x = spec.log_y = true;
   for (const auto& method : analysis::accuracy_methods()) {
     overlay::Series s;
-    s.label = method_label(method);
+    s.label = method.label;
     for (const auto& r : rows) {
       if (!same_method(r.method, method)) continue;
       s.x.push_back(r.ns_per_step / r.dt * 1e-3);
@@ -120,7 +139,7 @@ overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistor
   spec.log_y = true;
   for (const auto& h : histories) {
     overlay::Series s;
-    s.label = method_label(h.method) + (h.diverged ? " (diverged)" : "");
+    s.label = h.method.label + (h.diverged ? " (diverged)" : "");
     s.x = h.t;
     s.y = h.relative_error;
     style_series(h.method, s);

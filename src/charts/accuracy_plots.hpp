@@ -11,9 +11,6 @@
 
 namespace bookspin::charts {
 
-/// "rigid-quaternion splitting4": the method as the table and the legends name it.
-std::string method_label(const analysis::Method& m);
-
 /// One look per method in every accuracy plot: colour by integrator, dashed for the
 /// quaternion model, greys for the particle model.
 void style_series(const analysis::Method& m, overlay::Series& s);

@@ -7,6 +7,7 @@
 #include "charts/panel.hpp"
 #include "charts/poinsot_view.hpp"
 #include "charts/sphere_view.hpp"
+#include "scene/model_line.hpp"
 
 namespace bookspin::charts {
 
@@ -41,22 +42,6 @@ class CpuTimer {
 
 }  // namespace
 
-std::string model_line(const scene::Scene& scene) {
-  const auto& m = scene.model;
-  std::string line = std::string(physics::to_string(m.kind));
-  if (m.kind != physics::ModelKind::exact) {
-    line += ", " + std::string(physics::to_string(m.integrator));
-    line += format(", dt = %.4g", scene.dt);
-    if (!physics::is_engine(m.kind))  // the engines have no such switch (docs/engines.md)
-      line += m.normalize ? ", normalized" : ", not normalized";
-  }
-  if (m.kind == physics::ModelKind::particle) {
-    line += m.damping ? ", damped" : ", undamped";
-    line += format(", k = %g", m.spring_constant);
-  }
-  return line;
-}
-
 std::string divergence_text(double t) { return format("diverged at t = %.2f", t); }
 
 std::string twist_line(const analysis::TwistMeasure& twist) {
@@ -75,7 +60,7 @@ std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double 
                                               const std::optional<std::string>& twist) {
   std::vector<overlay::CaptionLine> lines;
   lines.push_back({scene.title, overlay::CaptionStyle::normal, true});
-  lines.push_back({model_line(scene)});
+  lines.push_back({scene::model_line(scene)});
   if (twist) lines.push_back({*twist});
   lines.push_back({format("t = %.1f", t)});
   if (diverged_at) {

@@ -29,9 +29,6 @@ std::vector<overlay::CaptionLine> caption_for(const scene::Scene& scene, double 
 /// number reads "none" (docs/physics.md §19: no full period measured, or no period).
 std::string twist_line(const analysis::TwistMeasure& twist);
 
-/// The model line of a caption: "rigid-matrix, euler, dt = 0.01667, normalized".
-std::string model_line(const scene::Scene& scene);
-
 /// Decorates a rendered frame of `scene` at time `t`: with render.panel the live plots of
 /// `history` (every frame so far) on the right, with render.sphere the momentum sphere inset
 /// at the left edge (sphere_view.hpp) with `history`'s trail, then the caption (kept within the

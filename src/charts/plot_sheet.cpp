@@ -19,12 +19,13 @@ struct Run {
   const scene::Scene& scene;
   DiagnosticsHistory history;
   std::optional<double> diverged_at;
+  const std::string& model_line;  ///< analysis::RunFrames::model_line
 };
 
 std::vector<Run> histories_of(const std::vector<analysis::RunFrames>& runs) {
   std::vector<Run> histories;
   for (const auto& run : runs) {
-    histories.push_back({run.scene, {}, run.diverged_at});
+    histories.push_back({run.scene, {}, run.diverged_at, run.model_line});
     for (const physics::Diagnostics& d : run.frames) histories.back().history.add(d);
   }
   return histories;
@@ -34,7 +35,7 @@ std::vector<Run> histories_of(const std::vector<analysis::RunFrames>& runs) {
 std::vector<std::string> header(const scene::Scene& scene, const std::vector<Run>& runs) {
   std::vector<std::string> lines{scene.title};
   if (scene.compare.empty()) {
-    lines.push_back(model_line(scene));
+    lines.push_back(runs.front().model_line);
   } else {
     std::string tiles = "comparison:";
     for (const auto& run : runs) tiles += (&run == &runs.front() ? " " : " · ") + run.scene.title;

@@ -5,7 +5,6 @@
 #include "charts/decoration.hpp"
 #include "clip/composer.hpp"
 #include "common/errors.hpp"
-#include "output/output_dir.hpp"
 
 namespace bookspin::clip {
 
@@ -73,6 +72,20 @@ class FrameFinisher {
     if (request_.on_progress) request_.on_progress(result_.frames);
   }
 
+  /// After the last frame: a single scene's divergence (time and the simulator's reason), or
+  /// every diverged tile of a comparison, into the result.
+  void record_divergence() {
+    if (request_.scene.compare.empty()) {
+      result_.diverged_at = tiles_.front()->frame.diverged_at;
+      result_.divergence_reason = tiles_.front()->source.divergence_reason();
+      return;
+    }
+    for (const auto& tile : tiles_) {
+      if (tile->frame.diverged_at)
+        result_.diverged_tiles.push_back({tile->scene.title, *tile->frame.diverged_at});
+    }
+  }
+
  private:
   const ClipRequest& request_;
   Composer& composer_;
@@ -93,20 +106,6 @@ Tiles tiles_of(const scene::Scene& scene) {
   return tiles;
 }
 
-/// A single scene's divergence (time and the simulator's reason), or every diverged tile of
-/// a comparison.
-void record_divergence(const scene::Scene& scene, const Tiles& tiles, ClipResult& result) {
-  if (scene.compare.empty()) {
-    result.diverged_at = tiles.front()->frame.diverged_at;
-    result.divergence_reason = tiles.front()->source.divergence_reason();
-    return;
-  }
-  for (const auto& tile : tiles) {
-    if (tile->frame.diverged_at)
-      result.diverged_tiles.push_back({tile->scene.title, *tile->frame.diverged_at});
-  }
-}
-
 }  // namespace
 
 std::unique_ptr<Composer> single_composer(const scene::Scene& scene) {
@@ -114,14 +113,14 @@ std::unique_ptr<Composer> single_composer(const scene::Scene& scene) {
 }
 
 ClipResult render_clip(const ClipRequest& request) {
-  output::prepare_output_dir(request.paths.mp4.parent_path());
   const scene::Scene& scene = request.scene;
+  const SinkOptions options = sink_options(request);
   Tiles tiles = tiles_of(scene);
   BOOKSPIN_ASSERT(request.tile_csvs.size() + 1 == tiles.size());
   const std::unique_ptr<Composer> composer =
       scene.compare.empty() ? single_composer(scene) : comparison_composer(scene);
   render::Renderer renderer(composer->picture_settings(tiles.front()->scene));
-  ClipSinks sinks(request.paths, sink_options(request), request.tile_csvs);
+  ClipSinks sinks(request.paths, options, request.tile_csvs);
   if (request.on_note && !sinks.encoder_message().empty()) request.on_note(sinks.encoder_message());
 
   ClipResult result;
@@ -140,7 +139,7 @@ ClipResult render_clip(const ClipRequest& request) {
     }
   }
   while (auto picture = renderer.flush()) finisher.take(std::move(*picture));
-  record_divergence(scene, tiles, result);
+  finisher.record_divergence();
   output::OutputSet outputs;
   sinks.finish(outputs);
   commit_unless_stopped(request, outputs);

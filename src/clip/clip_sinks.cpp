@@ -13,15 +13,21 @@ namespace bookspin::clip {
 
 namespace {
 
-std::filesystem::path make_parent(const std::filesystem::path& file) {
-  std::error_code ec;
-  output::make_directories(file.parent_path(), ec);
-  if (ec) throw_output_error("cannot create directory", file.parent_path(), ec.value());
-  return file;
-}
-
 bool wants(const SinkOptions& options, const char* format) {
   return std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end();
+}
+
+/// Checks the clip's output folder (output::prepare_output_dir) and makes the folder of every
+/// video `options` asks for.
+void make_folders(const ClipPaths& paths, const SinkOptions& options) {
+  output::prepare_output_dir(paths.mp4.parent_path());
+  for (const auto& [format, file] : {std::pair{"mp4", &paths.mp4}, std::pair{"webm", &paths.webm},
+                                     std::pair{"gif", &paths.gif}}) {
+    if (!wants(options, format)) continue;
+    std::error_code ec;
+    output::make_directories(file->parent_path(), ec);
+    if (ec) throw_output_error("cannot create directory", file->parent_path(), ec.value());
+  }
 }
 
 }  // namespace
@@ -39,27 +45,28 @@ ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options,
       csv_(paths.csv),
       png_queue_(2 * static_cast<std::size_t>(std::max(1, options.png_workers))) {
   if (options_.formats.empty()) throw std::invalid_argument("ClipSinks: no video format");
+  make_folders(paths, options_);
   for (const auto& path : tile_csvs)
     tile_csvs_.push_back(std::make_unique<output::DiagnosticsCsvFile>(path));
   const video::EncoderSettings& e = options_.encoder;
   // Each video in its own member, opened before any thread starts; the threads share out
   // the cores the encoders would otherwise each take for themselves.
   if (wants(options_, "mp4")) {
-    mp4_.emplace(make_parent(paths.mp4), e);
+    mp4_.emplace(paths.mp4, e);
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { mp4_->add_frame(f); };
     videos_.back()->finish = [this](output::OutputSet& set) { mp4_->finish(&set, options_.stop); };
   }
   if (wants(options_, "webm")) {
-    webm_.emplace(make_parent(paths.webm),
+    webm_.emplace(paths.webm,
                   video::WebmSettings{e.width, e.height, e.fps, options_.webm_crf, e.threads});
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { webm_->add_frame(f); };
     videos_.back()->finish = [this](output::OutputSet& set) { webm_->finish(&set, options_.stop); };
   }
   if (wants(options_, "gif")) {
-    gif_.emplace(make_parent(paths.gif), video::GifSettings{e.width, e.height, e.fps,
-                                                            options_.gif_width, options_.gif_fps});
+    gif_.emplace(paths.gif, video::GifSettings{e.width, e.height, e.fps, options_.gif_width,
+                                               options_.gif_fps});
     videos_.push_back(std::make_unique<Video>());
     videos_.back()->add_frame = [this](const RgbaImage& f) { gif_->add_frame(f); };
     videos_.back()->finish = [this](output::OutputSet& set) { gif_->finish(&set, options_.stop); };

@@ -44,11 +44,4 @@ inline void stop_if_asked(const StopPoll& poll, std::string_view stage) {
   if (const int signal = stop_signal(poll, stage)) throw Interrupted(signal);
 }
 
-/// `poll` at `stage` as a plain "stop now?" predicate, for the physics-only loops below a job
-/// (analysis), which know nothing of signals. Empty when `poll` is.
-inline std::function<bool()> stop_predicate(const StopPoll& poll, std::string stage) {
-  if (!poll) return {};
-  return [poll, stage = std::move(stage)] { return poll(stage) != 0; };
-}
-
 }  // namespace bookspin

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "charts/accuracy_plots.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 
@@ -23,9 +22,9 @@ std::string table_row(const analysis::AccuracyRow& r) {
   char line[512];
   std::snprintf(line, sizeof line,
                 "%-28s 1/%-5.0f %12.3e %11.2e %11.2e %12s %11s %5d/%-5d %9.1f%s%s",
-                charts::method_label(r.method).c_str(), 1.0 / r.dt, r.orientation_error,
-                r.energy_drift, r.L_drift, flip_error, first_error, r.flips, r.flips_exact,
-                r.ns_per_step, r.diverged ? "  diverged" : "",
+                r.method.label.c_str(), 1.0 / r.dt, r.orientation_error, r.energy_drift, r.L_drift,
+                flip_error, first_error, r.flips, r.flips_exact, r.ns_per_step,
+                r.diverged ? "  diverged" : "",
                 r.divergence_reason.empty() ? "" : (": " + r.divergence_reason).c_str());
   return line;
 }
@@ -50,6 +49,13 @@ void check_step_counts(const AccuracyRequest& request, double flip_period) {
                   steps, request.flips, flip_period, kMaxAccuracySteps);
     throw InputError(message);
   }
+}
+
+/// `poll` at `stage` as a plain "stop now?" predicate, for analysis' physics loops, which know
+/// nothing of signals. Empty when `poll` is.
+std::function<bool()> stop_predicate(const StopPoll& poll, std::string stage) {
+  if (!poll) return {};
+  return [poll, stage = std::move(stage)] { return poll(stage) != 0; };
 }
 
 std::string format_line(const char* pattern, const std::string& a, double b, double c, double d) {
@@ -86,6 +92,9 @@ std::vector<analysis::Method> long_time_methods(const std::vector<analysis::Meth
 }
 
 AccuracyReport measure_accuracy(const AccuracyRequest& request) {
+  const std::function<bool()> stop_steps = stop_predicate(request.stop_signal, "accuracy steps");
+  const std::function<bool()> stop_energy_steps =
+      stop_predicate(request.stop_signal, "accuracy energy steps");
   const scene::Scene& scene = request.scene;
   const auto say = [&](const std::string& line) {
     if (request.on_line) request.on_line(line);
@@ -107,8 +116,7 @@ AccuracyReport measure_accuracy(const AccuracyRequest& request) {
   for (const auto& method : report.methods) {
     for (double dt : request.dts) {
       stop_if_asked(request.stop_signal, "accuracy runs");
-      report.rows.push_back(analysis::measure(
-          settings, exact, method, dt, stop_predicate(request.stop_signal, "accuracy steps")));
+      report.rows.push_back(analysis::measure(settings, exact, method, dt, stop_steps));
       stop_if_asked(request.stop_signal, "accuracy runs");  // the row of a stopped run is cut
       say(table_row(report.rows.back()));
     }
@@ -116,10 +124,11 @@ AccuracyReport measure_accuracy(const AccuracyRequest& request) {
   for (const auto& method : long_time) {
     stop_if_asked(request.stop_signal, "accuracy energy");
     report.energy.push_back(analysis::energy_history(
-        settings, exact, method, kLongTimeDt, kLongTimeFlips, kLongTimeWindows,
-        stop_predicate(request.stop_signal, "accuracy energy steps")));
+        settings, exact, method, kLongTimeDt, kLongTimeFlips, kLongTimeWindows, stop_energy_steps));
     stop_if_asked(request.stop_signal, "accuracy energy");
   }
+  report.table = accuracy_csv(report);
+  report.energy_table = energy_csv(report);
   return report;
 }
 
@@ -155,7 +164,7 @@ CsvTable accuracy_csv(const AccuracyReport& report) {
 CsvTable energy_csv(const AccuracyReport& report) {
   const std::vector<analysis::EnergyHistory>& histories = report.energy;
   CsvTable table{{"t"}, {}};
-  for (const auto& h : histories) table.columns.push_back(charts::method_label(h.method));
+  for (const auto& h : histories) table.columns.push_back(h.method.label);
   const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
   for (std::size_t i = 0; i < rows; ++i) {
     std::vector<CsvCell> row{CsvNumber{histories.front().t[i], "%.9g"}};

@@ -42,6 +42,8 @@ struct AccuracyReport {
   /// The long-time energy plot's histories (long_time_methods(methods), kLongTimeDt,
   /// kLongTimeFlips, kLongTimeWindows), one per method.
   std::vector<analysis::EnergyHistory> energy;
+  CsvTable table;         ///< the accuracy CSV of the above (accuracy_csv)
+  CsvTable energy_table;  ///< the long-time energy CSV of the above (energy_csv)
 };
 
 /// The most steps one method may take at one dt (flips × flip period / dt).
@@ -69,7 +71,7 @@ AccuracyReport measure_accuracy(const AccuracyRequest& request);
 CsvTable accuracy_csv(const AccuracyReport& report);
 
 /// The long-time energy CSV of `report`: t, then one column per history
-/// (charts::method_label); a diverged run's history is shorter, and its missing windows stay
+/// (analysis::Method::label); a diverged run's history is shorter, and its missing windows stay
 /// empty.
 CsvTable energy_csv(const AccuracyReport& report);
 

@@ -178,8 +178,11 @@ std::optional<std::string> manifest_stale(const fs::path& manifest, std::string_
   return std::nullopt;
 }
 
-ManifestRecord read_manifest(const fs::path& manifest) {
-  const std::optional<std::string> text = try_read_text_file(manifest);
+namespace {
+
+/// The outputs and warnings a manifest's `text` lists; none when there is no text or it is not
+/// a manifest.
+ManifestRecord record_in(const std::optional<std::string>& text) {
   if (!text) return {};
   bool head_differs = false;
   const auto entries = entries_after(*text, "", head_differs);  // any head
@@ -190,6 +193,12 @@ ManifestRecord read_manifest(const fs::path& manifest) {
   if (at != std::string::npos && at < text->find(kOutputsOpen))
     record.warnings = strings_in(*text, at + 1 + kWarningsOpen.size());
   return record;
+}
+
+}  // namespace
+
+ManifestRecord read_manifest(const fs::path& manifest) {
+  return record_in(try_read_text_file(manifest));
 }
 
 std::string warnings_note(const std::vector<std::string>& warnings) {

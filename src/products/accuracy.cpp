@@ -1,7 +1,6 @@
 #include "products/accuracy.hpp"
 
 #include "cache/make_cached.hpp"
-#include "cache/manifest_head.hpp"
 #include "charts/accuracy_plots.hpp"
 #include "common/csv_writer.hpp"
 #include "output/atomic_output.hpp"
@@ -25,35 +24,42 @@ AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene
           out_dir / scene.name / "accuracy-manifest.json"};
 }
 
-std::string accuracy_manifest_head(const AccuracyJob& job) {
+namespace {
+
+cache::CachedOutputs accuracy_cached(const AccuracyJob& job, const AccuracyLayout& layout) {
   const jobs::AccuracyRequest& r = job.request;
   JsonArray dts, labels;
   for (const double dt : r.dts) dts.push_back({JsonNumber{dt, NumberStyle::digits17}});
   for (const auto& m : r.methods.empty() ? analysis::accuracy_methods() : r.methods)
-    labels.push_back({charts::method_label(m)});
+    labels.push_back({m.label});
   const JsonObject options{{"flips", {JsonNumber{r.flips, NumberStyle::digits17}}},
                            {"dt", {std::move(dts)}},
                            {"methods", {std::move(labels)}}};
-  return cache::manifest_head("accuracy", options, r.scene);
+  return {r.scene.name + "-accuracy", layout.manifest, "accuracy", options, job.out_dir, &r.scene};
+}
+
+}  // namespace
+
+std::string accuracy_manifest_head(const AccuracyJob& job) {
+  return cache::cached_head(accuracy_cached(job, accuracy_layout(job.out_dir, job.request.scene)));
 }
 
 cache::Outcome make_accuracy(const AccuracyJob& job) {
   const AccuracyLayout layout = accuracy_layout(job.out_dir, job.request.scene);
-  const cache::CachedOutputs cached{job.request.scene.name + "-accuracy", layout.manifest,
-                                    accuracy_manifest_head(job), job.out_dir, &job.request.scene};
+  const cache::CachedOutputs cached{accuracy_cached(job, layout)};
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::AccuracyReport report = jobs::measure_accuracy(job.request);
-    const CsvTable table = jobs::accuracy_csv(report);
-    const CsvTable energy = jobs::energy_csv(report);
+    const std::string table = csv_text(report.table, "accuracy CSV");
+    const std::string energy = csv_text(report.energy_table, "energy CSV");
     const charts::AccuracyImages plots = charts::accuracy_images(
         report.rows, report.methods, report.flips, report.energy, jobs::kLongTimeFlips);
     output::prepare_output_dir(layout.csv.parent_path());
-    output::write_text_file(layout.csv, csv_text(table, "accuracy CSV"));
     output::write_png(layout.png, plots.orientation_error_vs_dt);
     output::write_png(layout.work_precision_png, plots.work_precision);
     output::write_png(layout.energy_vs_dt_png, plots.energy_vs_dt);
     output::write_png(layout.energy_png, plots.long_time_energy);
-    output::write_text_file(layout.energy_csv, csv_text(energy, "energy CSV"));
+    output::write_text_file(layout.csv, table);
+    output::write_text_file(layout.energy_csv, energy);
     return cache::Made{layout.outputs()};
   });
 }

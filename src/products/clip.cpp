@@ -4,7 +4,6 @@
 
 #include "analysis/frame_source.hpp"
 #include "cache/make_cached.hpp"
-#include "cache/manifest_head.hpp"
 #include "clip/clip.hpp"
 #include "output/manifest.hpp"
 
@@ -83,26 +82,35 @@ clip::ClipRequest clip_request(const ClipJob& job) {
   return request;
 }
 
-std::string clip_manifest_head(const ClipJob& job) {
+namespace {
+
+/// Every output of a clip's run is put in place together, or none (clip::render_clip).
+cache::CachedOutputs clip_cached(const ClipJob& job, const ClipLayout& layout) {
   const int compression =
       job.png_compression >= 0 ? job.png_compression : job.scene.render.png_compression;
   const JsonObject options{{"png", {job.write_png}},
                            {"png_compression", {std::int64_t{compression}}}};
-  return cache::manifest_head("render", options, job.scene);
+  return {job.scene.name, layout.manifest,        "render", options, job.out_dir,
+          &job.scene,     /*all_or_nothing=*/true};
+}
+
+}  // namespace
+
+std::string clip_manifest_head(const ClipJob& job) {
+  return cache::cached_head(clip_cached(job, clip_layout(job.out_dir, job.scene)));
 }
 
 ClipOutcome make_clip(const ClipJob& job) {
   const ClipLayout layout = clip_layout(job.out_dir, job.scene);
   const clip::ClipRequest request = clip_request(job);
-  const cache::CachedOutputs cached{
-      job.scene.name,         layout.manifest, clip_manifest_head(job), job.out_dir, &job.scene,
-      /*all_or_nothing=*/true};
+  const cache::CachedOutputs cached{clip_cached(job, layout)};
   ClipOutcome done;
+  const std::vector<fs::path> outputs = clip_outputs(job, layout);
   done.outcome = cache::make_cached(cached, job.freshness, [&] {
     // Every output of the run is put in place together, or none (clip::render_clip).
     done.result = clip::render_clip(request);
-    done.warnings = divergence_warnings(job.scene.name, done.result);
-    return cache::Made{clip_outputs(job, layout), output::warnings_note(done.warnings)};
+    done.warnings = divergence_warnings(cached.name, done.result);
+    return cache::Made{outputs, output::warnings_note(done.warnings)};
   });
   if (done.outcome == cache::Outcome::up_to_date)
     done.warnings = output::read_manifest(layout.manifest).warnings;

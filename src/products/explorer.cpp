@@ -201,7 +201,12 @@ std::filesystem::path explorer_manifest_path(const std::filesystem::path& out_di
   return out_dir / "explorer-manifest.json";
 }
 
-ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
+namespace {
+
+/// The head of the page's manifest after its command: the SHA-256 of the shell, of the
+/// engines' bundle when given, and of every scene's head (the program, the resolved scene and
+/// its input files).
+JsonObject explorer_head(const ExplorerPageRequest& request) {
   std::string scenes;
   for (const scene::Scene& scene : request.scenes)
     scenes += cache::manifest_head("explore", JsonObject{}, scene);
@@ -212,11 +217,16 @@ ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
   if (!request.engines.empty())
     members.push_back({"engines", sha256(output::sha256_file(request.engines))});
   members.push_back({"scenes", sha256(output::sha256_text(scenes))});
-  const std::string head = cache::manifest_head("explore", members);
+  return members;
+}
+
+}  // namespace
+
+ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
   ExplorerOutcome done;
   done.result.path = explorer_page_path(request.out_dir);
-  const cache::CachedOutputs cached{"explorer.html", explorer_manifest_path(request.out_dir), head,
-                                    request.out_dir};
+  const cache::CachedOutputs cached{"explorer.html", explorer_manifest_path(request.out_dir),
+                                    "explore", explorer_head(request), request.out_dir};
   done.outcome = cache::make_cached(cached, {}, [&] {
     done.result = write_explorer_page(request);
     return cache::Made{{done.result.path}};

@@ -8,7 +8,6 @@
 #include <thread>
 
 #include "cache/make_cached.hpp"
-#include "cache/manifest_head.hpp"
 #include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
 #include "output/output_dir.hpp"
@@ -186,11 +185,14 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
 
   GalleryHeader header{output::program_version(), output::program_build_id(), "", machine()};
   // Up to date: the same page but for its date (output/manifest.hpp).
-  const std::string head = cache::manifest_head(
-      "gallery", {{"page_sha256", {output::sha256_text(gallery_html(entries, header))}}});
   GalleryOutcome done;
   done.entries = entries.size();
-  const cache::CachedOutputs cached{layout.page.filename().string(), layout.manifest, head, out};
+  const cache::CachedOutputs cached{
+      layout.page.filename().string(),
+      layout.manifest,
+      "gallery",
+      {{"page_sha256", {output::sha256_text(gallery_html(entries, header))}}},
+      out};
   done.outcome = cache::make_cached(cached, job.freshness, [&] {
     stop_if_asked(job.stop_signal, "gallery write");
     std::error_code ec;

@@ -6,7 +6,6 @@
 
 #include "analysis/frame_source.hpp"
 #include "cache/make_cached.hpp"
-#include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
 #include "output/diagnostics_csv.hpp"
 #include "output/gltf_writer.hpp"
@@ -172,15 +171,27 @@ void check_gltf_scene(const scene::Scene& scene) {
   }
 }
 
+namespace {
+
+cache::CachedOutputs gltf_cached(const GltfJob& job, const GltfLayout& layout) {
+  return {job.scene.name + ".glb",
+          layout.manifest,
+          "export",
+          {{"format", {std::string("glb")}}},
+          job.out_dir,
+          &job.scene};
+}
+
+}  // namespace
+
 std::string gltf_manifest_head(const GltfJob& job) {
-  return cache::manifest_head("export", {{"format", {std::string("glb")}}}, job.scene);
+  return cache::cached_head(gltf_cached(job, gltf_layout(job.out_dir, job.scene)));
 }
 
 GltfExportResult make_gltf(const GltfJob& job) {
   check_gltf_scene(job.scene);
   const GltfLayout layout = gltf_layout(job.out_dir, job.scene);
-  const cache::CachedOutputs cached{job.scene.name + ".glb", layout.manifest,
-                                    gltf_manifest_head(job), job.out_dir, &job.scene};
+  const cache::CachedOutputs cached{gltf_cached(job, layout)};
   GltfExportResult result;
   result.path = layout.glb;
   result.outcome = cache::make_cached(cached, job.freshness, [&] {

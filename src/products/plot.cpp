@@ -2,7 +2,6 @@
 
 #include "analysis/frame_source.hpp"
 #include "cache/make_cached.hpp"
-#include "cache/manifest_head.hpp"
 #include "charts/plot_sheet.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
@@ -13,16 +12,23 @@ PlotLayout plot_layout(const std::filesystem::path& out_dir, const scene::Scene&
   return {out_dir / (scene.name + "-plot.png"), out_dir / scene.name / "plot-manifest.json"};
 }
 
-std::string plot_manifest_head(const PlotJob& job) {
+namespace {
+
+cache::CachedOutputs plot_cached(const PlotJob& job, const PlotLayout& layout) {
   const JsonObject options{{"width", {std::int64_t{job.width}}},
                            {"height", {std::int64_t{job.height}}}};
-  return cache::manifest_head("plot", options, job.scene);
+  return {job.scene.name + "-plot", layout.manifest, "plot", options, job.out_dir, &job.scene};
+}
+
+}  // namespace
+
+std::string plot_manifest_head(const PlotJob& job) {
+  return cache::cached_head(plot_cached(job, plot_layout(job.out_dir, job.scene)));
 }
 
 cache::Outcome make_plot(const PlotJob& job) {
   const PlotLayout layout = plot_layout(job.out_dir, job.scene);
-  const cache::CachedOutputs cached{job.scene.name + "-plot", layout.manifest,
-                                    plot_manifest_head(job), job.out_dir, &job.scene};
+  const cache::CachedOutputs cached{plot_cached(job, layout)};
   return cache::make_cached(cached, job.freshness, [&] {
     const std::vector<analysis::RunFrames> runs = analysis::run_frames(job.scene);
     const RgbaImage sheet = charts::plot_sheet_image(job.scene, runs, job.width, job.height);

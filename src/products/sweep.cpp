@@ -3,7 +3,6 @@
 #include <sstream>
 
 #include "cache/make_cached.hpp"
-#include "cache/manifest_head.hpp"
 #include "charts/sweep_plots.hpp"
 #include "common/errors.hpp"
 #include "jobs/sweep_shard.hpp"
@@ -82,9 +81,8 @@ SweepOutcome make_sweep(const SweepJob& job) {
     done.written = {shard};
     return done;
   }
-  const cache::CachedOutputs cached{scene.name + "-sweep", manifest,
-                                    cache::manifest_head("sweep", options, scene), job.out_dir,
-                                    &scene};
+  const cache::CachedOutputs cached{scene.name + "-sweep", manifest, "sweep", options,
+                                    job.out_dir,           &scene};
   done.outcome = cache::make_cached(cached, job.freshness, [&] {
     const jobs::SweepTable table = jobs::measure_sweep(request);
     done.written = write_sweep(table, paths);

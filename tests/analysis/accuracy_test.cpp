@@ -258,6 +258,14 @@ TEST(AccuracyMethods, AListNamesTheMethodsInTableOrderEachOnce) {
   EXPECT_EQ(parse_methods("rigid,all").size(), 23u);
 }
 
+TEST(AccuracyMethods, EachMethodIsLabelledByItsModelAndIntegratorNames) {
+  // The names of scenes/README.md's model.kind and model.integrator rows, as the tables print them.
+  EXPECT_EQ(parse_methods("rigid-quaternion:rk4").front().label, "rigid-quaternion rk4");
+  EXPECT_EQ(parse_methods("bullet:implicit-world").front().label, "bullet implicit-world");
+  EXPECT_EQ(parse_methods("particle:velocity-verlet").front().label, "particle velocity-verlet");
+  for (const Method& m : accuracy_methods()) EXPECT_FALSE(m.label.empty());
+}
+
 TEST(AccuracyMethods, UnknownEmptyExactOrUnsupportedNamesAreInputErrors) {
   for (const char* bad : {"", ",", "rk4", "engines,", "exact", "exact:euler", "mujoco:step",
                           "particle:rk4", "rigid-matrix:", "bullet:implicit"}) {

@@ -20,9 +20,9 @@ namespace {
 
 using test::ScratchDir;
 
-/// The outputs `out/result.txt` under `head`.
-CachedOutputs cached_in(const ScratchDir& dir, const std::string& head) {
-  return {"result", dir / "manifest.json", head, dir.path()};
+/// The outputs `out/result.txt` under a head whose one member is "what": `what`.
+CachedOutputs cached_in(const ScratchDir& dir, const std::string& what) {
+  return {"result", dir / "manifest.json", "test", {{"what", {what}}}, dir.path()};
 }
 
 /// A make writing `out/result.txt` with `content`, counting its calls in `calls`.
@@ -39,7 +39,7 @@ Outcome run(const CachedOutputs& cached, const std::function<Made()>& make, bool
   return make_cached(cached, {force, false, {}}, make);
 }
 
-const std::string kHead = "  \"what\": \"one\",\n";
+const std::string kHead = "one";
 
 TEST(MakeCached, MakesOnceThenIsUpToDate) {
   ScratchDir dir;
@@ -63,7 +63,7 @@ TEST(MakeCached, MakesAgainWhenTheHeadChangesAndSaysWhy) {
                               names.push_back(name);
                               reasons.push_back(reason);
                             }};
-  const CachedOutputs changed = cached_in(dir, "  \"what\": \"two\",\n");
+  const CachedOutputs changed = cached_in(dir, "two");
   EXPECT_EQ(make_cached(changed, freshness, make), Outcome::made);
   EXPECT_EQ(make_cached(changed, freshness, make), Outcome::up_to_date);
   EXPECT_EQ(calls, 2);
@@ -110,7 +110,7 @@ TEST(MakeCached, AnInterruptedMakeKeepsTheManifestAndAThrowingOneRemovesIt) {
   int calls = 0;
   EXPECT_EQ(run(cached_in(dir, kHead), counting_make(dir, "abc", calls)), Outcome::made);
   const std::string before = bytes_of(dir / "manifest.json");
-  const CachedOutputs changed = cached_in(dir, "  \"what\": \"two\",\n");
+  const CachedOutputs changed = cached_in(dir, "two");
 
   try {
     run(changed, []() -> Made { throw Interrupted(2); });
@@ -136,14 +136,14 @@ TEST(MakeCached, AllOrNothingKeepsTheManifestOnAThrowAndDropsOneItCannotRewrite)
   int calls = 0;
   EXPECT_EQ(run(cached_in(dir, kHead), counting_make(dir, "abc", calls)), Outcome::made);
   const std::string before = bytes_of(dir / "manifest.json");
-  CachedOutputs failing = cached_in(dir, "  \"what\": \"two\",\n");
+  CachedOutputs failing = cached_in(dir, "two");
   failing.all_or_nothing = true;
   EXPECT_THROW(run(failing, []() -> Made { throw std::runtime_error("muxer failed"); }),
                std::runtime_error);
   EXPECT_EQ(bytes_of(dir / "manifest.json"), before);
   EXPECT_EQ(run(cached_in(dir, kHead), counting_make(dir, "abc", calls)), Outcome::up_to_date);
 
-  CachedOutputs unlisted = cached_in(dir, "  \"what\": \"three\",\n");
+  CachedOutputs unlisted = cached_in(dir, "three");
   unlisted.all_or_nothing = true;
   EXPECT_THROW(run(unlisted,
                    [&dir] {
@@ -161,7 +161,7 @@ TEST(MakeCached, RemovesWhatTheEarlierRunListedAndThisOneDidNotMake) {
   const std::filesystem::path out = dir / "out";
   std::filesystem::create_directories(out / "frames" / "deep");
   std::ofstream(dir / "outside.txt") << "not ours";
-  const CachedOutputs cached{"out", out / "manifest.json", kHead, out};
+  const CachedOutputs cached{"out", out / "manifest.json", "test", {{"what", {kHead}}}, out};
   ASSERT_EQ(
       run(cached,
           [&out] {
@@ -182,7 +182,7 @@ TEST(MakeCached, RemovesWhatTheEarlierRunListedAndThisOneDidNotMake) {
   }
 
   CachedOutputs changed = cached;
-  changed.head = "  \"what\": \"two\",\n";
+  changed.options = {{"what", {std::string("two")}}};
   EXPECT_THROW(run(changed, []() -> Made { throw Interrupted(15); }), Interrupted);
   EXPECT_TRUE(std::filesystem::exists(out / "gone.gif"));  // nothing removed when interrupted
 

@@ -72,7 +72,7 @@ TEST(AccuracyPlots, NoTwoMethodsShareALook) {
       style_series(methods[j], b);
       EXPECT_FALSE(a.r == b.r && a.g == b.g && a.b == b.b && a.dashed == b.dashed &&
                    a.marker == b.marker)
-          << method_label(methods[i]) << " looks like " << method_label(methods[j]);
+          << methods[i].label << " looks like " << methods[j].label;
     }
   }
 }

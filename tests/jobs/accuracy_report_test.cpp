@@ -36,12 +36,12 @@ TEST(AccuracyReport, EveryMethodRunsTheRigidPairsOverTheLongTime) {
 }
 
 TEST(AccuracyReport, AChosenListRunsItsMethodsButTheParticleModels) {
-  const std::vector<Method> chosen{{ModelKind::particle, Integrator::euler},
-                                   {ModelKind::rigid_quaternion, Integrator::rk4},
-                                   {ModelKind::mujoco, Integrator::rk4}};
+  const std::vector<Method> chosen{Method(ModelKind::particle, Integrator::euler),
+                                   Method(ModelKind::rigid_quaternion, Integrator::rk4),
+                                   Method(ModelKind::mujoco, Integrator::rk4)};
   EXPECT_EQ(names(long_time_methods(chosen)),
             (std::vector<std::string>{"rigid-quaternion:rk4", "mujoco:rk4"}));
-  EXPECT_TRUE(long_time_methods({{ModelKind::particle, Integrator::euler}}).empty());
+  EXPECT_TRUE(long_time_methods({Method(ModelKind::particle, Integrator::euler)}).empty());
 
   // As many methods as every method, but not every method: the list itself, no particles.
   std::vector<Method> as_many = analysis::accuracy_methods();

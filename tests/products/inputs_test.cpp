@@ -310,10 +310,11 @@ scene::Scene scene_of(const fs::path& dir, const Input& input, bool after) {
   return scene::parse_scene(dir / scene_file(input.base), overrides);
 }
 
-/// The check-make-record of every cached product (cache::make_cached) with `head`, and a make
-/// that writes one file: made, or up to date.
+/// The check-make-record of every cached product (cache::make_cached) with a head that holds
+/// `head` (a product's), and a make that writes one file: made, or up to date.
 cache::Outcome run(const fs::path& dir, const std::string& head) {
-  return cache::make_cached({"made", dir / "manifest.json", head, dir}, {}, [&dir] {
+  const cache::CachedOutputs cached{"made", dir / "manifest.json", "test", {{"head", {head}}}, dir};
+  return cache::make_cached(cached, {}, [&dir] {
     std::ofstream(dir / "made.txt") << "made";
     return cache::Made{{dir / "made.txt"}};
   });
