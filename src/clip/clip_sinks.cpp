@@ -14,20 +14,25 @@ namespace bookspin::clip {
 namespace {
 
 bool wants(const SinkOptions& options, const char* format) {
-  return std::find(options.formats.begin(), options.formats.end(), format) != options.formats.end();
+  for (const std::string& wanted : options.formats)
+    if (wanted == format) return true;
+  return false;
 }
 
-/// Checks the clip's output folder (output::prepare_output_dir) and makes the folder of every
-/// video `options` asks for.
-void make_folders(const ClipPaths& paths, const SinkOptions& options) {
-  output::prepare_output_dir(paths.mp4.parent_path());
+/// `paths`, once the clip's output folder is checked (output::prepare_output_dir) and the folder
+/// of every video `options` asks for is made: before any sink opens a file.
+const ClipPaths& with_folders(const ClipPaths& paths, const SinkOptions& options) {
+  std::vector<std::filesystem::path> folders;
   for (const auto& [format, file] : {std::pair{"mp4", &paths.mp4}, std::pair{"webm", &paths.webm},
-                                     std::pair{"gif", &paths.gif}}) {
-    if (!wants(options, format)) continue;
+                                     std::pair{"gif", &paths.gif}})
+    if (wants(options, format)) folders.push_back(file->parent_path());
+  output::prepare_output_dir(paths.mp4.parent_path());
+  for (const auto& folder : folders) {
     std::error_code ec;
-    output::make_directories(file->parent_path(), ec);
-    if (ec) throw_output_error("cannot create directory", file->parent_path(), ec.value());
+    output::make_directories(folder, ec);
+    if (ec) throw_output_error("cannot create directory", folder, ec.value());
   }
+  return paths;
 }
 
 }  // namespace
@@ -40,12 +45,11 @@ std::string frame_file_name(int index) {
 
 ClipSinks::ClipSinks(const ClipPaths& paths, const SinkOptions& options,
                      const std::vector<std::filesystem::path>& tile_csvs)
-    : paths_(paths),
+    : paths_(with_folders(paths, options)),
       options_(options),
       csv_(paths.csv),
       png_queue_(2 * static_cast<std::size_t>(std::max(1, options.png_workers))) {
   if (options_.formats.empty()) throw std::invalid_argument("ClipSinks: no video format");
-  make_folders(paths, options_);
   for (const auto& path : tile_csvs)
     tile_csvs_.push_back(std::make_unique<output::DiagnosticsCsvFile>(path));
   const video::EncoderSettings& e = options_.encoder;
