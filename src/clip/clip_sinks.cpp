@@ -23,8 +23,8 @@ bool wants(const SinkOptions& options, const char* format) {
 /// of every video `options` asks for is made: before any sink opens a file.
 const ClipPaths& with_folders(const ClipPaths& paths, const SinkOptions& options) {
   std::vector<std::filesystem::path> folders;
-  for (const auto& [format, file] : {std::pair{"mp4", &paths.mp4}, std::pair{"webm", &paths.webm},
-                                     std::pair{"gif", &paths.gif}})
+  for (const auto& [format, file] :
+       {std::pair{"mp4", &paths.mp4}, std::pair{"webm", &paths.webm}, std::pair{"gif", &paths.gif}})
     if (wants(options, format)) folders.push_back(file->parent_path());
   output::prepare_output_dir(paths.mp4.parent_path());
   for (const auto& folder : folders) {
