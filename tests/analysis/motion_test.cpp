@@ -4,6 +4,8 @@
 // axes (no turn-over, many sign changes) and on the exact motion near its unstable axis, whose
 // count and first flip come from the closed form (tests/support/closed_form_flips.hpp: the
 // standard library's elliptic integrals, not physics::ExactRotation).
+#include "analysis/motion.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
@@ -11,7 +13,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "analysis/motion.hpp"
 #include "physics/book.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/shape.hpp"
@@ -37,8 +38,8 @@ TEST(FlipDetector, CountsATurnOverAtItsZeroCrossingNotADip) {
 // sample keeps the sign before it (the crossing is placed between 0 and the next sample).
 TEST(FlipDetector, CountsEveryPassageAndSpacesThemByTheCrossings) {
   FlipDetector flips;
-  const double samples[][2] = {{0.0, -0.9}, {1.0, -0.1}, {2.0, 0.7}, {3.0, 0.0}, {4.0, -0.6},
-                               {5.0, 0.2},  {6.0, 0.9}};
+  const double samples[][2] = {{0.0, -0.9}, {1.0, -0.1}, {2.0, 0.7}, {3.0, 0.0},
+                               {4.0, -0.6}, {5.0, 0.2},  {6.0, 0.9}};
   for (const auto& s : samples) flips.observe(s[0], s[1]);
   EXPECT_EQ(flips.count(), 3);
   EXPECT_DOUBLE_EQ(*flips.first_flip(), 1.0 + 0.1 / 0.8);
@@ -137,8 +138,8 @@ TEST(FlipDetector, CountsTheExactMotionsTurnOversAsTheClosedForm) {
       SampledRun run;
       sample_exact(omega0, dt, steps, run);
       const double t_last = static_cast<double>(steps) * dt;
-      const int expected = 1 + static_cast<int>(std::floor((t_last - closed.first_flip) /
-                                                           closed.half_period));
+      const int expected =
+          1 + static_cast<int>(std::floor((t_last - closed.first_flip) / closed.half_period));
       EXPECT_EQ(expected, 10);
       EXPECT_EQ(run.flips, expected);
       ASSERT_TRUE(run.detector.first_flip());
