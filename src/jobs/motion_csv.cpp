@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "common/errors.hpp"
+#include "common/number_text.hpp"
 #include "common/text_file.hpp"
 
 namespace bookspin::jobs {
@@ -111,7 +112,7 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
     if (std::abs(t - n * dt) > 1e-6 * dt) {
       throw InputError(file, line_number, std::string(names[0]),
                        "t = " + std::string(cells[at[0]]) +
-                           " is not a whole number of steps of dt = " + std::to_string(dt));
+                           " is not a whole number of steps of dt = " + finite_text(dt, "dt"));
     }
     const auto step = static_cast<long long>(n);
     const long long index = static_cast<long long>(motion.rows.size());
