@@ -26,8 +26,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 Scenario scenario(const std::string& name) {
-  return scenario_of(scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/" +
-                                        name + ".toml"));
+  return scenario_of(
+      scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/" + name + ".toml"));
 }
 
 /// The exact motion of `s` every `stride` steps (q from R(t), ω body), as an engine would
@@ -57,8 +57,8 @@ TEST(Conformance, TheExactMotionPassesEveryScenarioAtRoundOff) {
     EXPECT_LT(c.L_drift, 1e-13);
     EXPECT_LT(c.orientation_error, 1e-13);
     EXPECT_EQ(c.stride, stride);
-    const bool stable = std::string(name).find("axis") != std::string::npos ||
-                        std::string(name) == "symmetric-top";
+    const bool stable =
+        std::string(name).find("axis") != std::string::npos || std::string(name) == "symmetric-top";
     EXPECT_EQ(c.stable_spin, stable);
     if (stable) {
       EXPECT_EQ(c.flips_exact, 0);

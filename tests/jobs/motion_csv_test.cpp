@@ -48,10 +48,10 @@ TEST(MotionCsv, ReadsBodyFrameRowsAtEveryStepAndIgnoresOtherColumns) {
 // world x, spins about body −y.
 TEST(MotionCsv, TurnsWorldFrameOmegaIntoTheBodyFrame) {
   const double h = std::sqrt(0.5);
-  const MotionFile m = parse_motion_csv(
-      "t,qw,qx,qy,qz,wx_world,wy_world,wz_world\n0,1,0,0,0,0,0,1\n0.3," + std::to_string(h) +
-          ",0,0," + std::to_string(h) + ",2,0,0\n",
-      "run.csv", 0.1, 10);
+  const MotionFile m =
+      parse_motion_csv("t,qw,qx,qy,qz,wx_world,wy_world,wz_world\n0,1,0,0,0,0,0,1\n0.3," +
+                           std::to_string(h) + ",0,0," + std::to_string(h) + ",2,0,0\n",
+                       "run.csv", 0.1, 10);
   EXPECT_EQ(m.omega_frame, OmegaFrame::world);
   EXPECT_EQ(m.stride, 3);
   EXPECT_TRUE(m.rows[1].omega_body.isApprox(Eigen::Vector3d(0, -2, 0), 1e-6));
@@ -73,7 +73,8 @@ TEST(MotionCsv, EachBadFileIsOneLineNamingItsLineAndColumn) {
   EXPECT_EQ(error_of("t,qw,qx,qy,qz,wx,wy\n0,1,0,0,0,1,2\n"),
             "run.csv:1: wx_world: no column wx,wy,wz (body frame) or wx_world,wy_world,wz_world "
             "in the header");
-  EXPECT_EQ(error_of("t,qw,qx,qz,wx,wy,wz\n"), "run.csv:1: qy: no column qy (or q_y) in the header");
+  EXPECT_EQ(error_of("t,qw,qx,qz,wx,wy,wz\n"),
+            "run.csv:1: qy: no column qy (or q_y) in the header");
   EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,nan,3\n"),
             "run.csv:3: wy: \"nan\" is not a finite number");
   EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,2,\n"), "run.csv:3: wz: empty cell");
@@ -114,8 +115,8 @@ double relative(double a, double b) { return b == 0.0 ? std::abs(a) : std::abs(a
 // relative: the CSV's shortest round-trip numbers lose nothing, and E, |L| and the cosine
 // come from q and ω as the engine models' diagnostics do.
 TEST(MotionCsv, TheJudgementOfSimulatesCsvIsTheAccuracyRowOfTheSameRun) {
-  for (const auto& [kind, integrator] : {std::pair{"mujoco", "rk4"}, std::pair{"mujoco", "euler"},
-                                         std::pair{"ode", "step"}}) {
+  for (const auto& [kind, integrator] :
+       {std::pair{"mujoco", "rk4"}, std::pair{"mujoco", "euler"}, std::pair{"ode", "step"}}) {
     SCOPED_TRACE(std::string(kind) + " " + integrator);
     const scene::Scene probe = simulated(kind, integrator, 1);
     const analysis::AccuracySettings settings{probe.body, probe.initial, probe.model, 4.0};
