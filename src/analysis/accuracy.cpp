@@ -235,10 +235,9 @@ AccuracyRow measure(const AccuracySettings& s, const physics::ExactRotation& exa
   row.first_flip = flips.first_flip().value_or(nan);
   row.flips = flips.count();
   const int intermediate = physics::principal_order(s.body.moments)[1];
+  row.flips_exact = exact_flip_count(exact, intermediate, row.t_end);
   if (const auto first_exact = exact_first_flip(exact, intermediate)) {
     row.first_flip_error = std::abs(row.first_flip / *first_exact - 1.0);
-    if (row.t_end >= *first_exact)
-      row.flips_exact = 1 + static_cast<int>(std::floor((row.t_end - *first_exact) / flip));
   } else {
     row.first_flip_error = nan;
   }

@@ -70,7 +70,7 @@ struct AccuracyRow {
   double first_flip = 0.0;
   double first_flip_error = 0.0;
   int flips = 0;             ///< flips seen over the run (FlipDetector::count)
-  int flips_exact = 0;       ///< flips of the exact motion in [0, t_end] (exact_first_flip + k T/2)
+  int flips_exact = 0;       ///< the exact motion's turn-overs in [0, t_end] (exact_flip_count)
   double ns_per_step = 0.0;  ///< wall time of step() alone
   bool diverged = false;
   std::string divergence_reason;  ///< the simulator's reason, if it gave one

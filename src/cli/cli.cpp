@@ -23,6 +23,7 @@
   X(gallery)                    \
   X(inertia)                    \
   X(sweep)                      \
+  X(flipcheck)                  \
   X(info)
 
 namespace bookspin::cli {

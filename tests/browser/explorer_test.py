@@ -488,6 +488,9 @@ def main():
         print(f"flips in 300 time units: {flips}")
         if flips["intermediate"] < 1:
             fail("spin about the intermediate axis did not flip in 300 time units")
+        if flips["largest"] != 0:
+            fail(f"the wobble about the largest axis counted {flips['largest']} flips, not 0 "
+                 "(a flip is a turn-over, docs/physics.md §14)")
 
         # 4. Compare mode: the second method set through its controls runs beside the first,
         #    each equal to bookspin simulate of its own method; two trails on the sphere.

@@ -24,7 +24,6 @@
 #include "common/csv_writer.hpp"
 #include "engines/models.hpp"
 #include "jobs/accuracy_report.hpp"
-#include "jobs/closed_form_flips.hpp"
 #include "jobs/csv_text.hpp"
 #include "jobs/simulation.hpp"
 #include "jobs/sweep.hpp"
@@ -32,10 +31,14 @@
 #include "physics/exact_solution.hpp"
 #include "physics/particle_model.hpp"
 #include "scene/scene.hpp"
+#include "support/closed_form_flips.hpp"
 #include "support/scratch.hpp"
 
 namespace bookspin::jobs {
 namespace {
+
+using test::closed_form_flips;
+using test::ClosedFormFlips;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -136,7 +139,11 @@ Replay replay(const physics::Body& body, const physics::ModelConfig& model,
   const physics::Diagnostics d0 = sim->diagnostics();
   const double e0 = energy_of(model, body.moments, d0), L0 = d0.L.norm();
   Replay r;
+  // Turn-overs (docs/physics.md §14): a sign change of cos(intermediate axis, L) counts once
+  // the cosine has gone past 0.5 on the new side; it is placed at the zero crossing.
   double previous_t = 0.0, previous = d0.cos_principal_L[1];
+  bool from_positive = previous > 0.0;
+  double crossing = 0.0;  // set by the sign change that must come before the margin
   for (long long n = 1; n <= steps; ++n) {
     sim->step(dt);
     const double t = static_cast<double>(n) * dt;
@@ -148,8 +155,13 @@ Replay replay(const physics::Body& body, const physics::ModelConfig& model,
     r.energy_drift = std::max(r.energy_drift, std::abs(energy_of(model, body.moments, d) / e0 - 1));
     r.L_drift = std::max(r.L_drift, std::abs(d.L.norm() / L0 - 1));
     const double now = d.cos_principal_L[1];
-    if (now != 0.0 && previous != 0.0 && (now > 0.0) != (previous > 0.0))
-      r.flips.push_back(previous_t + (t - previous_t) * previous / (previous - now));
+    if (now != 0.0 && previous != 0.0 && (now > 0.0) != (previous > 0.0) &&
+        (now > 0.0) != from_positive)
+      crossing = previous_t + (t - previous_t) * previous / (previous - now);
+    if (from_positive ? now < -0.5 : now > 0.5) {
+      r.flips.push_back(crossing);
+      from_positive = !from_positive;
+    }
     if (now != 0.0) {
       previous = now;
       previous_t = t;

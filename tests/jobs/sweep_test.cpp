@@ -16,12 +16,15 @@
 #include "analysis/motion.hpp"
 #include "common/errors.hpp"
 #include "engines/models.hpp"
-#include "jobs/closed_form_flips.hpp"
 #include "jobs/csv_text.hpp"
 #include "physics/exact_model.hpp"
+#include "support/closed_form_flips.hpp"
 
 namespace bookspin::jobs {
 namespace {
+
+using test::closed_form_flips;
+using test::ClosedFormFlips;
 
 std::string scene_file(const std::string& name) {
   return std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/" + name + ".toml";

@@ -1,13 +1,13 @@
 #pragma once
 // The exact motion's flips in closed form (docs/physics.md §8, §14), computed from the
 // invariants with the standard library's elliptic integrals, not by physics::ExactRotation:
-// the jobs tests' independent numbers for the flip columns.
+// the tests' independent numbers for the flip counts and columns.
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-namespace bookspin::jobs {
+namespace bookspin::test {
 
 struct ClosedFormFlips {
   double half_period = 0.0;  ///< T/2 = 2K(k)/λ: the spacing of the flips (time units)
@@ -62,4 +62,4 @@ inline ClosedFormFlips closed_form_flips(const Eigen::Vector3d& moments,
           static_cast<double>((growing ? 2.0L * K - u : u) / lambda)};
 }
 
-}  // namespace bookspin::jobs
+}  // namespace bookspin::test

@@ -1,0 +1,105 @@
+// `bookspin flipcheck`: the conformance kit (docs/flipcheck.md). `export` writes each
+// scenario's start and exact motion for any engine; `judge` compares motions an engine wrote
+// with the exact one and says pass or fail.
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/conformance.hpp"
+#include "cache/freshness.hpp"
+#include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
+#include "cli/subcommand.hpp"
+#include "products/flipcheck.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+struct FlipcheckOptions {
+  std::vector<std::string> scenarios;  ///< export: SCENARIO...
+  std::string scenario;                ///< judge: SCENARIO
+  std::vector<std::string> motions;    ///< judge: MOTION.csv...
+  std::vector<std::string> overrides;
+  std::string out_dir = "out/flipcheck";
+  bool force = false;
+  bool verify = false;
+};
+
+/// Writes OUT/<scenario>.json and OUT/<scenario>-exact.csv for each scenario.
+int export_scenarios(const FlipcheckOptions& options) {
+  std::vector<scene::Scene> scenes;  // every scenario read before anything is written
+  for (const std::string& path : options.scenarios) {
+    scenes.push_back(scene::parse_scene(path, options.overrides));
+    analysis::scenario_of(scenes.back());  // a comparison scene is refused here
+  }
+  for (const scene::Scene& s : scenes) {
+    products::FlipcheckExportJob job{
+        s, options.out_dir, {options.force, options.verify, remake_note}, stop_poll()};
+    const cache::Outcome outcome = products::make_flipcheck_export(job);
+    const products::FlipcheckExportLayout layout =
+        products::flipcheck_export_layout(options.out_dir, s);
+    std::cout << (outcome == cache::Outcome::up_to_date ? "up to date: " : "exported: ")
+              << layout.json.string() << ", " << layout.csv.string() << std::endl;
+  }
+  return kExitOk;
+}
+
+/// Judges each motion against the scenario's exact motion: one verdict line each, and
+/// OUT/<scenario>-judge.csv.
+int judge_motions(const FlipcheckOptions& options) {
+  products::FlipcheckJudgeJob job;
+  job.scene = scene::parse_scene(options.scenario, options.overrides);
+  for (const std::string& m : options.motions) job.motions.emplace_back(m);
+  job.out_dir = options.out_dir;
+  job.freshness = {options.force, options.verify, remake_note};
+  const products::FlipcheckJudgeResult result = products::make_flipcheck_judge(job);
+  for (const products::JudgedMotion& j : result.judged)
+    std::cout << job.scene.name << " " << j.file.string() << ": "
+              << analysis::verdict_line(j.result) << '\n';
+  const auto layout = products::flipcheck_judge_layout(options.out_dir, job.scene);
+  std::cout << (result.outcome == cache::Outcome::up_to_date ? "up to date: " : "wrote: ")
+            << layout.csv.string() << std::endl;
+  return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_flipcheck(CLI::App& cli) {
+  const auto stored = std::make_shared<FlipcheckOptions>();
+  FlipcheckOptions& options = *stored;
+  CLI::App* cmd = cli.add_subcommand(
+      "flipcheck",
+      "The conformance kit for any engine (docs/flipcheck.md): export scenarios and their exact "
+      "motion, judge the motion an engine wrote");
+  cmd->require_subcommand(1);
+  CLI::App* exporter = cmd->add_subcommand(
+      "export",
+      "Write OUT/<scenario>.json (mass, principal moments, q0, omega0, dt, steps) and "
+      "OUT/<scenario>-exact.csv (the exact motion at every step) for each scenario");
+  exporter
+      ->add_option("SCENARIO", options.scenarios,
+                   "Scenario files (TOML, e.g. "
+                   "scenes/flipcheck/*.toml)")
+      ->required();
+  exporter->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  exporter->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  add_freshness_flags(exporter, options.force, options.verify,
+                      "OUT/<scenario>/flipcheck-export-manifest.json");
+  CLI::App* judge = cmd->add_subcommand(
+      "judge",
+      "Compare motion CSVs (t,qw,qx,qy,qz and wx,wy,wz or wx_world,wy_world,wz_world) with the "
+      "scenario's exact motion: a verdict line each and OUT/<scenario>-judge.csv");
+  judge->add_option("SCENARIO", options.scenario, "Scenario file (TOML)")->required();
+  judge->add_option("MOTION", options.motions, "Motion CSV files written by an engine")->required();
+  judge->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  judge->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  add_freshness_flags(judge, options.force, options.verify,
+                      "OUT/<scenario>/flipcheck-judge-manifest.json");
+  return {cmd, [stored, exporter] {
+            return exporter->parsed() ? export_scenarios(*stored) : judge_motions(*stored);
+          }};
+}
+
+}  // namespace bookspin::cli

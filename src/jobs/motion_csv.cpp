@@ -1,0 +1,153 @@
+#include "jobs/motion_csv.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <optional>
+
+#include "common/errors.hpp"
+#include "common/number_text.hpp"
+#include "common/text_file.hpp"
+
+namespace bookspin::jobs {
+
+namespace {
+
+std::string_view trimmed(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> cells_of(std::string_view line) {
+  std::vector<std::string_view> cells;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    cells.push_back(trimmed(line.substr(start, comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return cells;
+}
+
+/// The index of the first of `names` in `header`, or nullopt.
+std::optional<std::size_t> column(const std::vector<std::string_view>& header,
+                                  std::initializer_list<std::string_view> names) {
+  for (std::string_view name : names)
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name) return i;
+  return std::nullopt;
+}
+
+}  // namespace
+
+MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
+                            long long steps) {
+  MotionFile motion;
+  std::vector<std::string_view> header;
+  std::array<std::size_t, 8> at{};  // t, qw, qx, qy, qz, ω x, y, z
+  std::array<std::string_view, 8> names{};
+  int line_number = 0;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = trimmed(text.substr(start, end - start));
+    start = end + 1;
+    ++line_number;
+    if (line.empty() || line.front() == '#') continue;
+    if (header.empty()) {
+      header = cells_of(line);
+      const auto need = [&](std::initializer_list<std::string_view> options,
+                            std::string_view what) {
+        const auto i = column(header, options);
+        if (!i) {
+          throw InputError(file, line_number, std::string(*options.begin()),
+                           "no column " + std::string(what) + " in the header");
+        }
+        return *i;
+      };
+      at[0] = need({"t"}, "t (time units)");
+      const char* q_names[4][2] = {{"qw", "q_w"}, {"qx", "q_x"}, {"qy", "q_y"}, {"qz", "q_z"}};
+      for (int k = 0; k < 4; ++k)
+        at[1 + k] = need({q_names[k][0], q_names[k][1]},
+                         std::string(q_names[k][0]) + " (or " + q_names[k][1] + ")");
+      const auto wx = column(header, {"wx", "omega_x"}), wy = column(header, {"wy", "omega_y"}),
+                 wz = column(header, {"wz", "omega_z"});
+      if (wx && wy && wz) {
+        at[5] = *wx, at[6] = *wy, at[7] = *wz;
+      } else {
+        motion.omega_frame = OmegaFrame::world;
+        at[5] = need({"wx_world"}, "wx,wy,wz (body frame) or wx_world,wy_world,wz_world");
+        at[6] = need({"wy_world"}, "wy_world");
+        at[7] = need({"wz_world"}, "wz_world");
+      }
+      for (std::size_t k = 0; k < at.size(); ++k) names[k] = header[at[k]];
+      continue;
+    }
+    const std::vector<std::string_view> cells = cells_of(line);
+    if (cells.size() != header.size()) {
+      throw InputError(file, line_number, "",
+                       std::to_string(cells.size()) + " cells where the header has " +
+                           std::to_string(header.size()));
+    }
+    std::array<double, 8> v{};
+    for (std::size_t k = 0; k < at.size(); ++k) {
+      const std::string_view cell = cells[at[k]];
+      const std::string column_name(names[k]);
+      if (cell.empty()) throw InputError(file, line_number, column_name, "empty cell");
+      const char* first = cell.data();
+      const char* last = first + cell.size();
+      if (*first == '+') ++first;
+      const auto [ptr, ec] = std::from_chars(first, last, v[k]);
+      if (ec != std::errc() || ptr != last || !std::isfinite(v[k])) {
+        throw InputError(file, line_number, column_name,
+                         "\"" + std::string(cell) + "\" is not a finite number");
+      }
+    }
+    const double t = v[0];
+    const double n = std::round(t / dt);
+    if (std::abs(t - n * dt) > 1e-6 * dt) {
+      throw InputError(file, line_number, std::string(names[0]),
+                       "t = " + std::string(cells[at[0]]) +
+                           " is not a whole number of steps of dt = " + finite_text(dt, "dt"));
+    }
+    const auto step = static_cast<long long>(n);
+    const long long index = static_cast<long long>(motion.rows.size());
+    if (index == 0 && step != 0)
+      throw InputError(file, line_number, std::string(names[0]), "the first row must be t = 0");
+    if (index == 1) {
+      if (step <= 0)
+        throw InputError(file, line_number, std::string(names[0]), "t does not increase");
+      motion.stride = step;
+    }
+    if (index > 1 && step != index * motion.stride) {
+      throw InputError(file, line_number, std::string(names[0]),
+                       "t = " + std::string(cells[at[0]]) + " is not step " +
+                           std::to_string(index * motion.stride) + " (rows every " +
+                           std::to_string(motion.stride) + " steps from t = 0)");
+    }
+    if (step > steps) {
+      throw InputError(file, line_number, std::string(names[0]),
+                       "t = " + std::string(cells[at[0]]) + " is past the scenario's " +
+                           std::to_string(steps) + " steps");
+    }
+    Eigen::Quaterniond q(v[1], v[2], v[3], v[4]);
+    if (!(q.norm() > 0.0)) throw InputError(file, line_number, std::string(names[1]), "q is zero");
+    q.normalize();
+    Eigen::Vector3d omega(v[5], v[6], v[7]);
+    if (motion.omega_frame == OmegaFrame::world) omega = q.toRotationMatrix().transpose() * omega;
+    motion.rows.push_back({step, q, omega});
+  }
+  if (header.empty()) throw InputError(file, 0, "", "no header row (t,qw,qx,qy,qz,wx,wy,wz)");
+  if (motion.rows.empty()) throw InputError(file, line_number, "", "no rows after the header");
+  return motion;
+}
+
+MotionFile read_motion_csv(const std::filesystem::path& path, double dt, long long steps) {
+  return parse_motion_csv(read_text_file(path, "the motion file"), path.string(), dt, steps);
+}
+
+}  // namespace bookspin::jobs

@@ -1,0 +1,39 @@
+#pragma once
+// The motion file the conformance kit judges (`bookspin flipcheck judge`, docs/flipcheck.md,
+// "The motion file"): a CSV written by any engine, read into analysis::MotionSample rows.
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "analysis/conformance.hpp"
+
+namespace bookspin::jobs {
+
+/// Which columns a motion file gave its ω in.
+enum class OmegaFrame { body, world };
+
+struct MotionFile {
+  std::vector<analysis::MotionSample> rows;  ///< step 0 first, then every `stride` steps
+  long long stride = 1;                      ///< steps of dt between rows
+  OmegaFrame omega_frame = OmegaFrame::body;
+};
+
+/// Parses a motion CSV's `text` (named `file` in messages) for a scenario of step `dt` (time
+/// units) and `steps` steps. A header row naming `t`, the orientation `qw,qx,qy,qz` (body →
+/// world, either sign; bookspin's `q_w,q_x,q_y,q_z` too) and ω either in the body frame
+/// `wx,wy,wz` (bookspin's `omega_x,omega_y,omega_z` too) or in the world frame
+/// `wx_world,wy_world,wz_world` (body frame preferred when both are there; turned into the
+/// body frame by R(q)ᵀ); other columns ignored; lines starting with `#` and empty lines
+/// skipped; CRLF read as LF. Each row's t must be a whole number of steps of dt (to 1e-6 of a
+/// step), the first 0, the next ones one stride apart, none past `steps`. Throws InputError
+/// "FILE:LINE: COLUMN: reason" (the line of the file; the column where there is one) for a
+/// missing column, a missing or extra cell, a cell that is not a finite number, q = 0, a
+/// misplaced t, and for a file without rows.
+MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
+                            long long steps);
+
+/// parse_motion_csv() of the file at `path` (read whole; InputError when it cannot be read).
+MotionFile read_motion_csv(const std::filesystem::path& path, double dt, long long steps);
+
+}  // namespace bookspin::jobs

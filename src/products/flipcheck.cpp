@@ -1,0 +1,161 @@
+#include "products/flipcheck.hpp"
+
+#include "cache/make_cached.hpp"
+#include "cache/manifest_head.hpp"
+#include "common/errors.hpp"
+#include "jobs/motion_csv.hpp"
+#include "output/atomic_output.hpp"
+#include "output/output_dir.hpp"
+#include "output/sha256.hpp"
+
+namespace bookspin::products {
+
+namespace {
+
+JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.y()}, {v.z()}}}; }
+
+CsvNumber number(double value) { return CsvNumber{value, nullptr, NumberStyle::shortest}; }
+
+CsvNumber maybe(const std::optional<double>& value) {
+  return CsvNumber{value, nullptr, NumberStyle::shortest};
+}
+
+}  // namespace
+
+FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_dir,
+                                              const scene::Scene& scene) {
+  return {out_dir / (scene.name + ".json"), out_dir / (scene.name + "-exact.csv"),
+          out_dir / scene.name / "flipcheck-export-manifest.json"};
+}
+
+JsonValue scenario_json(const jobs::ExactMotion& m) {
+  const analysis::Scenario& s = m.scenario;
+  JsonObject units{{"time", {std::string("time unit (any: the motion scales with 1/time)")}},
+                   {"length", {std::string("length unit")}},
+                   {"mass", {std::string("mass unit")}},
+                   {"angle", {std::string("radian")}},
+                   {"angular_velocity", {std::string("rad per time unit")}},
+                   {"moments", {std::string("mass * length^2")}}};
+  JsonObject object{
+      {"scenario", {s.name}},
+      {"units", {std::move(units), true}},
+      {"mass", {m.mass}},
+      {"principal_moments", vector_json(s.body.moments)},
+      {"principal_axes", {std::string("body x, y, z (the moments are about these axes)")}},
+      {"q0", {JsonArray{{1.0}, {0.0}, {0.0}, {0.0}}}},
+      {"q_convention", {std::string("w, x, y, z; body to world")}},
+      {"omega0_body", vector_json(m.omega0_body)},
+      {"omega0_world", vector_json(m.omega0_world)},
+      {"dt", {JsonNumber{s.dt, NumberStyle::shortest}}},
+      {"steps", {static_cast<std::int64_t>(s.steps)}},
+      {"gravity", {std::string("none; no damping, no contacts")}},
+      {"exact_motion", {s.name + "-exact.csv"}},
+  };
+  return {std::move(object), true};
+}
+
+CsvTable exact_motion_csv(const jobs::ExactMotion& m) {
+  CsvTable table;
+  table.columns = {"t",        "qw",       "qx",       "qy", "qz", "wx", "wy", "wz",
+                   "wx_world", "wy_world", "wz_world", "Lx", "Ly", "Lz", "E"};
+  table.rows.reserve(m.rows.size());
+  for (const jobs::ExactMotionRow& r : m.rows) {
+    table.rows.push_back({number(r.t), number(r.q[0]), number(r.q[1]), number(r.q[2]),
+                          number(r.q[3]), number(r.omega_body.x()), number(r.omega_body.y()),
+                          number(r.omega_body.z()), number(r.omega_world.x()),
+                          number(r.omega_world.y()), number(r.omega_world.z()), number(r.L.x()),
+                          number(r.L.y()), number(r.L.z()), number(r.E)});
+  }
+  return table;
+}
+
+cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
+  const analysis::Scenario scenario = analysis::scenario_of(job.scene);
+  const FlipcheckExportLayout layout = flipcheck_export_layout(job.out_dir, job.scene);
+  const cache::CachedOutputs cached{job.scene.name + "-flipcheck", layout.manifest,
+                                    cache::manifest_head("flipcheck export", {}, job.scene),
+                                    job.out_dir, &job.scene};
+  return cache::make_cached(cached, job.freshness, [&] {
+    const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
+    const std::string json =
+        json_text(scenario_json(motion), "flipcheck scenario", JsonLayout::indented) + "\n";
+    const std::string csv = csv_text(exact_motion_csv(motion), "flipcheck exact motion CSV");
+    output::prepare_output_dir(layout.json.parent_path());
+    output::write_text_file(layout.json, json);
+    output::write_text_file(layout.csv, csv);
+    return cache::Made{{layout.json, layout.csv}};
+  });
+}
+
+FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir,
+                                            const scene::Scene& scene) {
+  return {out_dir / (scene.name + "-judge.csv"),
+          out_dir / scene.name / "flipcheck-judge-manifest.json"};
+}
+
+CsvTable judge_csv(const analysis::Scenario& scenario, const std::vector<JudgedMotion>& judged) {
+  CsvTable table;
+  table.columns = {"scenario",
+                   "motion",
+                   "verdict",
+                   "stride",
+                   "last_step",
+                   "start_error",
+                   "energy_drift",
+                   "L_drift",
+                   "flips",
+                   "flips_exact",
+                   "first_flip",
+                   "first_flip_exact",
+                   "first_flip_error",
+                   "orientation_error",
+                   "stable_spin",
+                   "tumble_time",
+                   "separatrix_ratio_drift",
+                   "separatrix_approach",
+                   "failures"};
+  for (const JudgedMotion& j : judged) {
+    const analysis::Conformance& c = j.result;
+    std::string failures;
+    for (const std::string& f : c.failures) failures += (failures.empty() ? "" : "; ") + f;
+    table.rows.push_back(
+        {scenario.name, j.file.filename().string(), std::string(c.pass() ? "pass" : "fail"),
+         std::to_string(c.stride), std::to_string(c.last_step), number(c.start_error),
+         number(c.energy_drift), number(c.L_drift), std::to_string(c.flips),
+         std::to_string(c.flips_exact), maybe(c.first_flip), maybe(c.first_flip_exact),
+         maybe(c.first_flip_error), number(c.orientation_error),
+         std::string(c.stable_spin ? "1" : "0"),
+         maybe(c.stable_spin ? c.tumble_time : std::nullopt),
+         maybe(c.stable_spin ? std::optional<double>(c.separatrix_ratio_drift) : std::nullopt),
+         maybe(c.stable_spin ? std::optional<double>(c.separatrix_approach) : std::nullopt),
+         failures});
+  }
+  return table;
+}
+
+FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
+  const analysis::Scenario scenario = analysis::scenario_of(job.scene);
+  FlipcheckJudgeResult result;
+  JsonArray hashes;
+  for (const std::filesystem::path& file : job.motions) {
+    const jobs::MotionFile motion = jobs::read_motion_csv(file, scenario.dt, scenario.steps);
+    result.judged.push_back({file, analysis::judge_motion(scenario, motion.rows)});
+    const auto hash = output::sha256_file(file);
+    if (!hash) throw InputError(file.string() + ": cannot read the motion file");
+    hashes.push_back({JsonObject{{"file", {file.filename().string()}}, {"sha256", {*hash}}}});
+  }
+  const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, job.scene);
+  const JsonObject options{{"motions", {std::move(hashes), true}}};
+  const cache::CachedOutputs cached{job.scene.name + "-judge", layout.manifest,
+                                    cache::manifest_head("flipcheck judge", options, job.scene),
+                                    job.out_dir, &job.scene};
+  result.outcome = cache::make_cached(cached, job.freshness, [&] {
+    const std::string csv = csv_text(judge_csv(scenario, result.judged), "flipcheck judge CSV");
+    output::prepare_output_dir(layout.csv.parent_path());
+    output::write_text_file(layout.csv, csv);
+    return cache::Made{{layout.csv}};
+  });
+  return result;
+}
+
+}  // namespace bookspin::products

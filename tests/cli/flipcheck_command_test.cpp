@@ -1,0 +1,93 @@
+// `bookspin flipcheck export` then `judge` (docs/flipcheck.md): every exported exact motion
+// passes its scenario; `bookspin simulate`'s CSV of an engine mode reads as a motion file; a
+// file judge cannot use is one line naming file, line and column, exit 2, nothing written; a
+// comparison scene is no scenario.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/cli_runner.hpp"
+#include "support/scratch.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+using namespace bookspin::test;
+namespace fs = std::filesystem;
+
+std::string scenario(const std::string& name) {
+  return std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/" + name + ".toml";
+}
+
+std::string quoted(const fs::path& p) {
+  std::string text(1, '\'');
+  text += p.string();
+  text += '\'';
+  return text;
+}
+
+TEST(FlipcheckCommand, EveryExportedExactMotionPassesItsScenario) {
+  ScratchDir dir;
+  const char* names[] = {"book-intermediate-0.05", "book-intermediate-0.2", "mujoco-test-box",
+                         "symmetric-top"};
+  std::string list;
+  for (const char* name : names) list.append(" ").append(scenario(name));
+  const CliResult exported = run_bookspin("flipcheck export" + list + " -o " + quoted(dir.path()));
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  for (const char* name : names) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(fs::is_regular_file(dir / (std::string(name) + ".json")));
+    const fs::path csv = dir / (std::string(name) + "-exact.csv");
+    const SplitResult judged = run_bookspin_split("flipcheck judge " + scenario(name) + " " +
+                                                  quoted(csv) + " -o " + quoted(dir / "judge"));
+    EXPECT_EQ(judged.status, 0) << judged.err;
+    EXPECT_NE(judged.out.find(": PASS: turn-overs "), std::string::npos) << judged.out;
+    EXPECT_TRUE(fs::is_regular_file(dir / "judge" / (std::string(name) + "-judge.csv")));
+  }
+}
+
+TEST(FlipcheckCommand, JudgesSimulatesCsvOfAnEngineMode) {
+  ScratchDir dir;
+  const std::string set = " --set 'model.kind=\"mujoco\"' --set 'model.integrator=\"euler\"'";
+  const CliResult simulated = run_bookspin("simulate " + scenario("mujoco-test-box") + set +
+                                           " --csv " + quoted(dir / "euler.csv"));
+  ASSERT_EQ(simulated.status, 0) << simulated.output;
+  const SplitResult judged = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") +
+                                                " " + quoted(dir / "euler.csv") + " -o " +
+                                                quoted(dir.path()));
+  EXPECT_EQ(judged.status, 0) << judged.err;
+  // MuJoCo's own test: E/E0 = 1.0869 after 500 explicit steps of its box.
+  EXPECT_NE(judged.out.find("FAIL (energy drift 0.0869;"), std::string::npos) << judged.out;
+}
+
+TEST(FlipcheckCommand, ABadMotionFileIsOneLineAndExitTwoWithNothingWritten) {
+  ScratchDir dir;
+  std::ofstream(dir / "bad.csv") << "t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.01,1,0,0,0,1,inf,3\n";
+  const SplitResult r = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + " " +
+                                           quoted(dir / "bad.csv") + " -o " + quoted(dir / "out"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "bookspin: error: " + (dir / "bad.csv").string() +
+                       ":3: wy: \"inf\" is not a finite number\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  const SplitResult missing = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") +
+                                                 " " + quoted(dir / "none.csv") + " -o " +
+                                                 quoted(dir / "out"));
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+TEST(FlipcheckCommand, AComparisonSceneIsNoScenario) {
+  ScratchDir dir;
+  const SplitResult r =
+      run_bookspin_split("flipcheck export " + std::string(BOOKSPIN_SOURCE_DIR) +
+                         "/scenes/compare-engines.toml -o " + quoted(dir / "out"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("a comparison scene ([[compare]]) is no scenario"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace bookspin::cli

@@ -1,0 +1,109 @@
+// The conformance kit's products (docs/flipcheck.md): the export writes the scenario's JSON
+// (the numbers an engine needs, read back by value) and the exact motion's CSV (its header
+// and a row a step) under its layout with a manifest, and is up to date the second time; the
+// judgement writes one row per motion file, and a changed motion file makes it again.
+#include "products/flipcheck.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "output/manifest.hpp"
+#include "support/cli_runner.hpp"
+#include "support/scratch.hpp"
+
+namespace bookspin::products {
+namespace {
+
+namespace fs = std::filesystem;
+
+scene::Scene box() {
+  return scene::parse_scene(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck" /
+                            "mujoco-test-box.toml");
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  for (std::size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1)
+    lines.push_back(text.substr(start, end - start));
+  return lines;
+}
+
+TEST(Flipcheck, TheExportWritesTheScenarioAndItsExactMotionThenIsUpToDate) {
+  test::ScratchDir dir;
+  const FlipcheckExportJob job{box(), dir / "out", {}, {}};
+  EXPECT_EQ(make_flipcheck_export(job), cache::Outcome::made);
+  const FlipcheckExportLayout layout = flipcheck_export_layout(dir / "out", job.scene);
+  EXPECT_EQ(layout.json, dir / "out" / "mujoco-test-box.json");
+  EXPECT_EQ(layout.csv, dir / "out" / "mujoco-test-box-exact.csv");
+  EXPECT_EQ(output::read_manifest(layout.manifest).outputs,
+            (std::vector<std::string>{"mujoco-test-box.json", "mujoco-test-box-exact.csv"}));
+  const std::string json = test::read_file(layout.json);
+  // MuJoCo's box: mass 1, I = m/3 (b² + c²) … with half-sizes 0.1, 0.2, 0.3, ω = (1, 2, 3).
+  for (const std::string& member :
+       {std::string("\"mass\": 1,"),
+        std::string("\"principal_moments\": [0.043333333333333335, 0.03333333333333333, "
+                    "0.01666666666666667],"),
+        std::string("\"q0\": [1, 0, 0, 0],"), std::string("\"omega0_body\": [1, 2, 3],"),
+        std::string("\"omega0_world\": [1, 2, 3],"), std::string("\"dt\": 0.01,"),
+        std::string("\"steps\": 500,"), std::string("\"angular_velocity\": \"rad per time unit\"")})
+    EXPECT_NE(json.find(member), std::string::npos) << member << "\n" << json;
+  const std::vector<std::string> csv = lines_of(test::read_file(layout.csv));
+  ASSERT_EQ(csv.size(), 502u);  // the header and steps + 1 rows
+  EXPECT_EQ(csv[0], "t,qw,qx,qy,qz,wx,wy,wz,wx_world,wy_world,wz_world,Lx,Ly,Lz,E");
+  EXPECT_EQ(csv[1].substr(0, 20), "0,1,0,0,0,1,2,3,0.99");  // R(0) = I to round-off
+  EXPECT_EQ(csv[501].substr(0, 2), "5,");                   // t = 500 · 0.01
+  EXPECT_EQ(make_flipcheck_export(job), cache::Outcome::up_to_date);
+}
+
+TEST(Flipcheck, TheJudgementIsARowPerMotionAndIsRemadeWhenAMotionChanges) {
+  test::ScratchDir dir;
+  const scene::Scene scene = box();
+  make_flipcheck_export({scene, dir / "exact", {}, {}});
+  const fs::path exact = dir / "exact" / "mujoco-test-box-exact.csv";
+  // A second motion: the exact one with every other row's q negated (the same rotations).
+  const std::vector<std::string> lines = lines_of(test::read_file(exact));
+  std::ofstream negated(dir / "negated.csv");
+  negated << "t,qw,qx,qy,qz,wx,wy,wz\n";
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::vector<std::string> cells;
+    std::size_t start = 0;
+    for (int k = 0; k < 8; ++k) {
+      const std::size_t comma = lines[i].find(',', start);
+      cells.push_back(lines[i].substr(start, comma - start));
+      start = comma + 1;
+    }
+    for (int k = 0; k < 8; ++k) {
+      std::string cell = cells[static_cast<std::size_t>(k)];
+      if (i % 2 == 0 && k >= 1 && k <= 4)
+        cell = cell[0] == '-' ? cell.substr(1) : (cell == "0" ? cell : "-" + cell);
+      negated << (k ? "," : "") << cell;
+    }
+    negated << '\n';
+  }
+  negated.close();
+  FlipcheckJudgeJob job{scene, {exact, dir / "negated.csv"}, dir / "out", {}};
+  const FlipcheckJudgeResult result = make_flipcheck_judge(job);
+  EXPECT_EQ(result.outcome, cache::Outcome::made);
+  ASSERT_EQ(result.judged.size(), 2u);
+  for (const JudgedMotion& j : result.judged) EXPECT_TRUE(j.result.pass()) << j.file;
+  const std::vector<std::string> csv =
+      lines_of(test::read_file(flipcheck_judge_layout(dir / "out", scene).csv));
+  ASSERT_EQ(csv.size(), 3u);
+  EXPECT_EQ(csv[0],
+            "scenario,motion,verdict,stride,last_step,start_error,energy_drift,L_drift,flips,"
+            "flips_exact,first_flip,first_flip_exact,first_flip_error,orientation_error,"
+            "stable_spin,tumble_time,separatrix_ratio_drift,separatrix_approach,failures");
+  EXPECT_EQ(csv[1].substr(0, 53), "mujoco-test-box,mujoco-test-box-exact.csv,pass,1,500,");
+  EXPECT_EQ(csv[2].substr(0, 39), "mujoco-test-box,negated.csv,pass,1,500,");
+  EXPECT_EQ(make_flipcheck_judge(job).outcome, cache::Outcome::up_to_date);
+  std::ofstream(dir / "negated.csv", std::ios::app) << "# a comment changes the file\n";
+  EXPECT_EQ(make_flipcheck_judge(job).outcome, cache::Outcome::made);
+}
+
+}  // namespace
+}  // namespace bookspin::products
