@@ -10,9 +10,9 @@
 namespace bookspin::fit {
 namespace {
 
-constexpr int kHalfWindow = 2;       // samples each side of the derivative's quadratic
-constexpr double kGapFactor = 5.0;   // a step this many median intervals long is a gap
-constexpr int kMinFitSamples = 10;   // a flight shorter than this cannot be fitted
+constexpr int kHalfWindow = 2;      // samples each side of the derivative's quadratic
+constexpr double kGapFactor = 5.0;  // a step this many median intervals long is a gap
+constexpr int kMinFitSamples = 10;  // a flight shorter than this cannot be fitted
 
 std::string seconds(double value) {
   std::ostringstream text;
@@ -180,8 +180,7 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     const Eigen::Matrix3d I = euler_inertia(omega, rate, indices);
     std::vector<double> residuals;
     for (int i : indices) residuals.push_back(torque_residual(I, omega[i], rate[i]));
-    std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2,
-                     residuals.end());
+    std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
     const double threshold = std::max(6.0 * residuals[residuals.size() / 2], 0.01);
     std::vector<std::pair<int, int>> next;
     for (const auto& [first, last] : kept) {
@@ -239,8 +238,8 @@ FlightSearch hand_flights(const GyroRecording& recording,
                        std::to_string(kMinFitSamples));
     for (const auto& [begin, end] : segs)
       if (first < begin && last >= begin)
-        throw InputError(option + " " + range + ": spans a pause or a gap of " +
-                         recording.source + " (at " + seconds(t[begin]) + " s)");
+        throw InputError(option + " " + range + ": spans a pause or a gap of " + recording.source +
+                         " (at " + seconds(t[begin]) + " s)");
     search.flights.push_back({first, last, t[first], t[last]});
   }
   return search;

@@ -33,8 +33,8 @@ struct FlightSearch {
 
 /// The finder's thresholds.
 struct FinderSettings {
-  double rest_omega = 0.5;  ///< rad/s: at rest below this (bias included)
-  double min_rest = 0.3;    ///< s: a rest stretch at least this long measures the bias
+  double rest_omega = 0.5;    ///< rad/s: at rest below this (bias included)
+  double min_rest = 0.3;      ///< s: a rest stretch at least this long measures the bias
   double flight_omega = 2.0;  ///< rad/s: a free flight turns at least this fast throughout
   double min_flight = 0.3;    ///< s: a shorter flight is dropped (too short to fit)
 };

@@ -156,9 +156,9 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
     const auto& [number, line] = lines[i];
     const std::vector<std::string> cells = split_cells(line, separator);
     if (cells.size() < 4)
-      throw InputError(file, number, "", "a row of " + std::to_string(cells.size()) +
-                                             " cells, expected " +
-                                             std::to_string(header.size()));
+      throw InputError(file, number, "",
+                       "a row of " + std::to_string(cells.size()) + " cells, expected " +
+                           std::to_string(header.size()));
     double values[4];
     for (int c = 0; c < 4; ++c) {
       const std::optional<double> value = parse_number(cells[c], decimal_comma);

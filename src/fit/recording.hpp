@@ -13,9 +13,9 @@ namespace bookspin::fit {
 /// One recording: the body-frame angular velocity as the gyroscope measured it, in the phone's
 /// own axes (x to the right of the screen, y up the screen, z out of it).
 struct GyroRecording {
-  std::string name;            ///< the recording's name (folder, zip or file stem), file-safe
-  std::string source;          ///< the file the samples came from, for messages
-  std::vector<double> t;       ///< seconds of experiment time, strictly increasing
+  std::string name;       ///< the recording's name (folder, zip or file stem), file-safe
+  std::string source;     ///< the file the samples came from, for messages
+  std::vector<double> t;  ///< seconds of experiment time, strictly increasing
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame, as measured (bias included)
   /// Experiment times (s) at which the recording was paused: no flight spans one.
   std::vector<double> pauses;

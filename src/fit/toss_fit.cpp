@@ -26,7 +26,7 @@ Eigen::Matrix3d rotation(const double* aa) {
 
 /// The samples of one toss, bias removed, times from the toss's start.
 struct TossData {
-  std::vector<double> tau;  ///< s since t_start
+  std::vector<double> tau;             ///< s since t_start
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame
 };
 
@@ -161,8 +161,7 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
     cost->AddParameterBlock(2);
     cost->AddParameterBlock(3);
     cost->SetNumResiduals(3 * samples);
-    problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(),
-                              p.omega0[k].data());
+    problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data());
     residual_count += 3 * samples;
   }
   if (options.body_fixed || options.moments_fixed)
@@ -268,8 +267,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   body.moments_fixed = fixed;
   // Uncertainties: (JᵀJ)⁻¹ scaled by the residual variance (Ceres assumes unit variance).
   const int parameter_count = (fixed ? 3 : 5) + 3 * static_cast<int>(data.size());
-  const double variance =
-      2.0 * solved.cost / std::max(1, solved.residuals - parameter_count);
+  const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count);
   ceres::Covariance::Options covariance_options;
   covariance_options.algorithm_type = ceres::DENSE_SVD;
   ceres::Covariance covariance(covariance_options);
@@ -375,9 +373,9 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       if (solve(alone, others, options).usable) {
         const Eigen::Matrix3d axes = others.axes();
         const physics::ExactRotation predicted(
-            others.moments(), axes.transpose() * Eigen::Vector3d(others.omega0[0][0],
-                                                                 others.omega0[0][1],
-                                                                 others.omega0[0][2]),
+            others.moments(),
+            axes.transpose() *
+                Eigen::Vector3d(others.omega0[0][0], others.omega0[0][1], others.omega0[0][2]),
             physics::ExactParts::omega_only);
         if (std::isfinite(predicted.flip_period()))
           toss.half_period_predicted = predicted.flip_period();

@@ -24,9 +24,9 @@ struct BodyEstimate {
   /// direction (degrees), from the fit's covariance scaled by its residual variance; nullopt
   /// where the covariance could not be computed (a fit that cannot tell them apart).
   std::optional<Eigen::Vector3d> ratio_sigma, axis_sigma_deg;
-  bool moments_fixed = false;       ///< given by --moments: not fitted
-  bool moments_determined = true;   ///< false: every toss stable, the moments poorly known
-  std::vector<std::string> notes;   ///< what the reader should know (one line each)
+  bool moments_fixed = false;      ///< given by --moments: not fitted
+  bool moments_determined = true;  ///< false: every toss stable, the moments poorly known
+  std::vector<std::string> notes;  ///< what the reader should know (one line each)
 };
 
 /// One toss as fitted.

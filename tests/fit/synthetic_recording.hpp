@@ -5,9 +5,8 @@
 // with Boost's elliptic integral; around them rest with the gyroscope's bias and noise, a
 // throw (a ramp with spikes), a catch (spikes, then rest), 100 Hz sampling with jitter, and
 // pauses. Written in each CSV dialect phyphox exports.
-#include <boost/math/special_functions/ellint_1.hpp>
-
 #include <Eigen/Dense>
+#include <boost/math/special_functions/ellint_1.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -89,7 +88,7 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
   // The truth as a function of time, piece by piece.
   struct Piece {
     double t0, t1;
-    int kind;  // 0 rest, 1 throw, 2 flight, 3 catch
+    int kind;              // 0 rest, 1 throw, 2 flight, 3 catch
     Eigen::Vector3d a, b;  // throw: 0 → b; flight: ω0 (principal) in a; catch: a → 0
   };
   std::vector<Piece> pieces;
@@ -102,8 +101,7 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
     now += 0.15;
     pieces.push_back({now, now + toss.flight, 2, toss.omega0_principal, Eigen::Vector3d::Zero()});
     rec.tosses.push_back({now, now + toss.flight,
-                          closed_form_half_period(body.moments, toss.omega0_principal),
-                          w0_phone});
+                          closed_form_half_period(body.moments, toss.omega0_principal), w0_phone});
     const Eigen::Vector3d w_end = body.axes * rk4(body.moments, toss.omega0_principal, toss.flight);
     now += toss.flight;
     pieces.push_back({now, now + 0.12, 3, w_end, Eigen::Vector3d::Zero()});
@@ -204,8 +202,8 @@ inline SyntheticBody phone_alone() {
 inline SyntheticBody phone_on_book() {
   SyntheticBody body;
   body.moments = Eigen::Vector3d(1.0, 1.6, 2.3);
-  body.axes =
-      Eigen::AngleAxisd(20.0 * M_PI / 180.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  body.axes = Eigen::AngleAxisd(20.0 * M_PI / 180.0, Eigen::Vector3d(1, 2, 3).normalized())
+                  .toRotationMatrix();
   return body;
 }
 
@@ -213,8 +211,8 @@ inline SyntheticBody phone_on_book() {
 inline SyntheticBody racquet() {
   SyntheticBody body;
   body.moments = Eigen::Vector3d(0.1, 0.9, 1.0);
-  body.axes =
-      Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d(0, 1, 1).normalized()).toRotationMatrix();
+  body.axes = Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d(0, 1, 1).normalized())
+                  .toRotationMatrix();
   return body;
 }
 

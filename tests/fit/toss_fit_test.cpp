@@ -50,27 +50,27 @@ void expect_body_recovered(const SyntheticBody& body, const std::vector<Syntheti
     EXPECT_NEAR(*toss.half_period_predicted, truth, 0.02 * truth) << "toss " << k;
     ASSERT_TRUE(toss.half_period_fitted.has_value());
     EXPECT_NEAR(*toss.half_period_fitted, truth, 0.01 * truth) << "toss " << k;
-    EXPECT_LT(toss.residual_rms, 0.05);  // the noise is 0.01 rad/s a component
+    EXPECT_LT(toss.residual_rms, 0.05);       // the noise is 0.01 rad/s a component
     EXPECT_LT(std::abs(toss.L_decay), 0.02);  // no drag in the synthetic flights
   }
 }
 
 TEST(TossFit, RecoversAPhoneAlone) {
-  expect_body_recovered(test::phone_alone(),
-                        {{{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 1.1}, {{0.5, -15.0, -0.3}, 1.3}},
-                        11);
+  expect_body_recovered(
+      test::phone_alone(),
+      {{{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 1.1}, {{0.5, -15.0, -0.3}, 1.3}}, 11);
 }
 
 TEST(TossFit, RecoversAPhoneOnABook) {
-  expect_body_recovered(test::phone_on_book(),
-                        {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.2}, {{0.6, -13.0, -0.5}, 1.1}},
-                        12);
+  expect_body_recovered(
+      test::phone_on_book(),
+      {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.2}, {{0.6, -13.0, -0.5}, 1.1}}, 12);
 }
 
 TEST(TossFit, RecoversARacquetWithTwoNearlyEqualMoments) {
-  expect_body_recovered(test::racquet(),
-                        {{{0.4, 14.0, 0.8}, 1.2}, {{-0.6, 12.0, 0.9}, 1.3}, {{0.5, -13.0, -0.7}, 1.2}},
-                        13);
+  expect_body_recovered(
+      test::racquet(),
+      {{{0.4, 14.0, 0.8}, 1.2}, {{-0.6, 12.0, 0.9}, 1.3}, {{0.5, -13.0, -0.7}, 1.2}}, 13);
 }
 
 }  // namespace
