@@ -54,8 +54,7 @@ int fit_command(const FitOptions& options) {
     for (const std::string& range : split(options.tosses, ',')) {
       const std::vector<std::string> ends = split(range, ':');
       if (ends.size() != 2) throw InputError("--tosses: \"" + range + "\" is not START:END");
-      job.tosses.emplace_back(parse_number(ends[0], "--tosses"),
-                              parse_number(ends[1], "--tosses"));
+      job.tosses.emplace_back(parse_number(ends[0], "--tosses"), parse_number(ends[1], "--tosses"));
     }
   if (!options.moments.empty()) {
     const std::vector<std::string> parts = split(options.moments, ',');

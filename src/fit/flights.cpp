@@ -172,7 +172,9 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
   }
   // 2. Torque-free: the inertia that Euler's equations fit best on the candidates, then each
   // candidate cut to its longest stretch whose torque residual stays at the noise's level;
-  // twice, the second time with the inertia of the stretches kept the first.
+  // three times, each cutting the candidates anew with the inertia of the stretches the
+  // previous pass kept (so that a first inertia spoilt by a wind-up cuts nothing for good).
+  const std::vector<std::pair<int, int>> candidates = kept;
   for (int pass = 0; pass < 3 && !kept.empty(); ++pass) {
     std::vector<int> indices;
     for (const auto& [first, last] : kept)
@@ -183,7 +185,7 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
     const double threshold = std::max(6.0 * residuals[residuals.size() / 2], 0.01);
     std::vector<std::pair<int, int>> next;
-    for (const auto& [first, last] : kept) {
+    for (const auto& [first, last] : candidates) {
       int best_first = first, best_last = first - 1, start = -1;
       for (int i = first; i <= last + 1; ++i) {
         const bool ok = i <= last && torque_residual(I, omega[i], rate[i]) <= threshold;

@@ -34,7 +34,9 @@ std::vector<std::filesystem::path> FitLayout::outputs() const {
 }
 
 FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses) {
-  FitLayout layout{out_dir / (name + "-fit.csv"), out_dir / (name + "-fit-body.csv"), {},
+  FitLayout layout{out_dir / (name + "-fit.csv"),
+                   out_dir / (name + "-fit-body.csv"),
+                   {},
                    out_dir / name / "fit-manifest.json"};
   for (int k = 1; k <= tosses; ++k)
     layout.pngs.push_back(out_dir / (name + "-toss" + std::to_string(k) + ".png"));
@@ -42,10 +44,10 @@ FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& na
 }
 
 CsvTable fit_toss_csv(const fit::FitResult& fit) {
-  CsvTable table{{"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z",
-                  "half_period_measured", "half_period_fitted", "half_period_predicted",
-                  "residual_rms", "L_decay", "stable"},
-                 {}};
+  CsvTable table{
+      {"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z", "half_period_measured",
+       "half_period_fitted", "half_period_predicted", "residual_rms", "L_decay", "stable"},
+      {}};
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const fit::TossFit& t = fit.tosses[k];
     table.rows.push_back({std::to_string(k + 1), number(t.flight.t_start), number(t.flight.t_end),
@@ -59,20 +61,21 @@ CsvTable fit_toss_csv(const fit::FitResult& fit) {
 
 CsvTable fit_body_csv(const fit::FitResult& fit) {
   const fit::BodyEstimate& b = fit.body;
-  CsvTable table{{"I1_over_I3", "I2_over_I3", "I3_over_I3", "I1_sigma", "I2_sigma", "axis1_x",
-                  "axis1_y", "axis1_z", "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y",
-                  "axis3_z", "axis1_sigma_deg", "axis2_sigma_deg", "axis3_sigma_deg",
-                  "moments", "tosses"},
-                 {}};
+  CsvTable table{
+      {"I1_over_I3", "I2_over_I3", "I3_over_I3", "I1_sigma", "I2_sigma", "axis1_x", "axis1_y",
+       "axis1_z", "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z",
+       "axis1_sigma_deg", "axis2_sigma_deg", "axis3_sigma_deg", "moments", "tosses"},
+      {}};
   std::vector<CsvCell> row{number(b.ratios[0]), number(b.ratios[1]), number(b.ratios[2])};
   for (int i = 0; i < 2; ++i)
-    row.push_back(number(b.ratio_sigma ? std::optional<double>((*b.ratio_sigma)[i]) : std::nullopt));
+    row.push_back(
+        number(b.ratio_sigma ? std::optional<double>((*b.ratio_sigma)[i]) : std::nullopt));
   for (int a = 0; a < 3; ++a)
     for (int c = 0; c < 3; ++c) row.push_back(number(b.axes(c, a)));
   for (int a = 0; a < 3; ++a)
     row.push_back(
         number(b.axis_sigma_deg ? std::optional<double>((*b.axis_sigma_deg)[a]) : std::nullopt));
-  row.push_back(std::string(b.moments_fixed         ? "given"
+  row.push_back(std::string(b.moments_fixed        ? "given"
                             : b.moments_determined ? "fitted"
                                                    : "poorly determined"));
   row.push_back(std::to_string(fit.tosses.size()));
@@ -90,14 +93,14 @@ std::vector<std::string> fit_summary(const fit::FitResult& fit) {
                       : "no rest in the recording: the gyroscope's bias is not removed");
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const fit::TossFit& t = fit.tosses[k];
-    lines.push_back("kept toss " + std::to_string(k + 1) + ": " + fixed(t.flight.t_start, 3) +
-                    "–" + fixed(t.flight.t_end, 3) + " s" + (t.stable ? " (stable: no flip)" : ""));
+    lines.push_back("kept toss " + std::to_string(k + 1) + ": " + fixed(t.flight.t_start, 3) + "–" +
+                    fixed(t.flight.t_end, 3) + " s" + (t.stable ? " (stable: no flip)" : ""));
   }
   for (const fit::DroppedStretch& d : fit.search.dropped)
     lines.push_back("dropped " + fixed(d.t_start, 3) + "–" + fixed(d.t_end, 3) + " s: " + d.reason);
   const fit::BodyEstimate& b = fit.body;
-  lines.push_back("moments I1 : I2 : I3 = " + fixed(b.ratios[0], 4) + " : " + fixed(b.ratios[1], 4) +
-                  " : 1" + (b.moments_fixed ? " (given)" : ""));
+  lines.push_back("moments I1 : I2 : I3 = " + fixed(b.ratios[0], 4) + " : " +
+                  fixed(b.ratios[1], 4) + " : 1" + (b.moments_fixed ? " (given)" : ""));
   for (const std::string& note : b.notes) lines.push_back("note: " + note);
   return lines;
 }
@@ -133,8 +136,8 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
   const cache::CachedOutputs cached{recording.name + "-fit", manifest,
                                     cache::manifest_head("fit", members), job.out_dir, nullptr};
   return cache::make_cached(cached, job.freshness, [&] {
-    const fit::FlightSearch search =
-        job.tosses.empty() ? fit::find_flights(recording) : fit::hand_flights(recording, job.tosses);
+    const fit::FlightSearch search = job.tosses.empty() ? fit::find_flights(recording)
+                                                        : fit::hand_flights(recording, job.tosses);
     fit::FitSettings settings;
     settings.moments = job.moments;
     const fit::FitResult result = fit::fit_recording(recording, search, settings);
@@ -142,8 +145,8 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
         fit_layout(job.out_dir, recording.name, static_cast<int>(result.tosses.size()));
     std::vector<RgbaImage> charts;
     for (std::size_t k = 0; k < result.tosses.size(); ++k)
-      charts.push_back(charts::toss_image(recording, result, static_cast<int>(k), job.width,
-                                          job.height));
+      charts.push_back(
+          charts::toss_image(recording, result, static_cast<int>(k), job.width, job.height));
     output::prepare_output_dir(layout.csv.parent_path());
     output::write_text_file(layout.csv, csv_text(fit_toss_csv(result), "fit CSV"));
     output::write_text_file(layout.body_csv, csv_text(fit_body_csv(result), "fit body CSV"));

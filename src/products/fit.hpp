@@ -17,10 +17,10 @@ namespace bookspin::products {
 
 /// Every path a fit of one recording into OUT writes.
 struct FitLayout {
-  std::filesystem::path csv;              ///< OUT/<recording>-fit.csv: one row per toss
-  std::filesystem::path body_csv;         ///< OUT/<recording>-fit-body.csv: the body's one row
+  std::filesystem::path csv;                ///< OUT/<recording>-fit.csv: one row per toss
+  std::filesystem::path body_csv;           ///< OUT/<recording>-fit-body.csv: the body's one row
   std::vector<std::filesystem::path> pngs;  ///< OUT/<recording>-toss<N>.png, N = 1, 2, ...
-  std::filesystem::path manifest;         ///< OUT/<recording>/fit-manifest.json
+  std::filesystem::path manifest;           ///< OUT/<recording>/fit-manifest.json
   std::vector<std::filesystem::path> outputs() const;
 };
 

@@ -45,8 +45,8 @@ void expect_bad(const std::string& name, const std::string& text, const std::str
                 const std::string& extra = "") {
   const fs::path dir = bookspin::test::fresh_dir("cli/fit/bad-" + name);
   std::ofstream(dir / (name + ".csv")) << text;
-  const auto result = bookspin::test::run_bookspin("fit " + quoted(dir / (name + ".csv")) +
-                                                   " -o " + quoted(dir / "out") + " " + extra);
+  const auto result = bookspin::test::run_bookspin("fit " + quoted(dir / (name + ".csv")) + " -o " +
+                                                   quoted(dir / "out") + " " + extra);
   EXPECT_EQ(result.status, 2) << result.output;
   EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
   EXPECT_NE(result.output.find(expected), std::string::npos) << result.output;

@@ -34,8 +34,9 @@ void expect_flights_found(const test::SyntheticBody& body,
 }
 
 TEST(Flights, FindsEveryFlightOfAPhoneAlone) {
-  expect_flights_found(test::phone_alone(),
-                       {{{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 0.8}, {{0.5, -15.0, -0.3}, 1.3}});
+  expect_flights_found(
+      test::phone_alone(),
+      {{{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 0.8}, {{0.5, -15.0, -0.3}, 1.3}});
 }
 
 TEST(Flights, FindsEveryFlightOfAPhoneOnABook) {
@@ -46,9 +47,22 @@ TEST(Flights, FindsEveryFlightOfARacquet) {
   expect_flights_found(test::racquet(), {{{0.4, 14.0, 0.8}, 1.2}, {{-0.6, 12.0, 0.9}, 1.0}});
 }
 
+TEST(Flights, ASmoothWindUpIsNotFlight) {
+  // A 0.4 s throw without spikes: its ramp's |ω̇| (35 rad/s²) is within what Euler's equations
+  // allow once |ω| > 7.4 rad/s, so only the torque the ramp needs tells it from flight.
+  const test::SyntheticRecording synthetic = test::make_recording(
+      test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 1.0}}, 7, 0.01, 0.4, 0.0);
+  const FlightSearch search = find_flights(as_recording(synthetic));
+  ASSERT_EQ(search.flights.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_NEAR(search.flights[k].t_start, synthetic.tosses[k].t_start, 0.05) << "toss " << k;
+    EXPECT_NEAR(search.flights[k].t_end, synthetic.tosses[k].t_end, 0.05) << "toss " << k;
+  }
+}
+
 TEST(Flights, ATooShortFlightIsDroppedAndSaysWhy) {
-  const test::SyntheticRecording synthetic =
-      test::make_recording(test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.2}, {{0.3, 14.0, 0.5}, 0.15}});
+  const test::SyntheticRecording synthetic = test::make_recording(
+      test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.2}, {{0.3, 14.0, 0.5}, 0.15}});
   const FlightSearch search = find_flights(as_recording(synthetic));
   ASSERT_EQ(search.flights.size(), 1u);
   ASSERT_EQ(search.dropped.size(), 1u);

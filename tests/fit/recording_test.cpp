@@ -16,7 +16,8 @@ namespace bookspin::fit {
 namespace {
 
 test::SyntheticRecording small_recording() {
-  return test::make_recording(test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.0}, {{0.3, 14.0, 0.5}, 1.0}});
+  return test::make_recording(test::phone_alone(),
+                              {{{0.3, 14.0, 0.5}, 1.0}, {{0.3, 14.0, 0.5}, 1.0}});
 }
 
 void expect_same_samples(const GyroRecording& read, const test::SyntheticRecording& written) {
@@ -32,9 +33,9 @@ void expect_same_samples(const GyroRecording& read, const test::SyntheticRecordi
 TEST(Recording, ReadsEachPhyphoxDialectFromItsFolder) {
   const test::SyntheticRecording written = small_recording();
   const auto dir = bookspin::test::fresh_dir("fit/dialects");
-  for (auto [dialect, name] : {std::pair{test::Dialect::comma, "comma"},
-                               std::pair{test::Dialect::tab, "tab"},
-                               std::pair{test::Dialect::semicolon, "semicolon"}}) {
+  for (auto [dialect, name] :
+       {std::pair{test::Dialect::comma, "comma"}, std::pair{test::Dialect::tab, "tab"},
+        std::pair{test::Dialect::semicolon, "semicolon"}}) {
     const auto folder = dir / (std::string("Gyroscope rotation rate ") + name);
     test::write_export(folder, written, dialect);
     const GyroRecording by_folder = read_recording(folder);

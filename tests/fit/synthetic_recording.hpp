@@ -75,11 +75,13 @@ inline double closed_form_half_period(const Eigen::Vector3d& I, const Eigen::Vec
   return 2.0 * boost::math::ellint_1(std::sqrt(k2)) / std::sqrt(lambda2);
 }
 
-/// A recording of `tosses` of `body`: 1.5 s rest, then per toss a 0.15 s throw, the flight, a
+/// A recording of `tosses` of `body`: 1.5 s rest, then per toss a throw (`throw_time` s, a ramp
+/// to ω0 with Gaussian spikes of `throw_spikes` rad/s), the flight, a
 /// 0.12 s catch and 1.2 s rest; a pause after the second toss's rest.
 inline SyntheticRecording make_recording(const SyntheticBody& body,
                                          const std::vector<SyntheticToss>& tosses,
-                                         unsigned seed = 1, double noise = 0.01) {
+                                         unsigned seed = 1, double noise = 0.01,
+                                         double throw_time = 0.15, double throw_spikes = 4.0) {
   std::mt19937 random(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -97,8 +99,8 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
   now += 1.5;
   for (const SyntheticToss& toss : tosses) {
     const Eigen::Vector3d w0_phone = body.axes * toss.omega0_principal;
-    pieces.push_back({now, now + 0.15, 1, Eigen::Vector3d::Zero(), w0_phone});
-    now += 0.15;
+    pieces.push_back({now, now + throw_time, 1, Eigen::Vector3d::Zero(), w0_phone});
+    now += throw_time;
     pieces.push_back({now, now + toss.flight, 2, toss.omega0_principal, Eigen::Vector3d::Zero()});
     rec.tosses.push_back({now, now + toss.flight,
                           closed_form_half_period(body.moments, toss.omega0_principal), w0_phone});
@@ -120,7 +122,7 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
     if (piece.kind == 0) {
       w = 0.03 * Eigen::Vector3d(std::sin(3.1 * t), std::sin(2.3 * t + 1), std::sin(1.7 * t + 2));
     } else if (piece.kind == 1) {
-      w = s * piece.b + 4.0 * Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
+      w = s * piece.b + throw_spikes * Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
     } else if (piece.kind == 2) {
       w = body.axes * rk4(body.moments, piece.a, t - piece.t0);
     } else {
