@@ -16,7 +16,8 @@ std::vector<int> columns_of(const RgbaImage& image, int r, int g, int b) {
   std::vector<int> count(image.width, 0);
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      const std::uint8_t* p = image.pixels.data() + 4 * (static_cast<std::size_t>(y) * image.width + x);
+      const std::uint8_t* p =
+          image.pixels.data() + 4 * (static_cast<std::size_t>(y) * image.width + x);
       if (std::abs(p[0] - r) <= 10 && std::abs(p[1] - g) <= 10 && std::abs(p[2] - b) <= 10)
         ++count[x];
     }
@@ -37,8 +38,8 @@ TEST(TossPlots, ComponentsInThePaletteAndTheFlipsMarked) {
   for (int c = 0; c < 3; ++c) {
     double r, g, b;
     overlay::palette_colour(c, r, g, b);
-    const std::vector<int> cols = columns_of(image, int(255 * r + 0.5), int(255 * g + 0.5),
-                                             int(255 * b + 0.5));
+    const std::vector<int> cols =
+        columns_of(image, int(255 * r + 0.5), int(255 * g + 0.5), int(255 * b + 0.5));
     int total = 0;
     for (int n : cols) total += n;
     EXPECT_GT(total, 1500) << "component " << c;

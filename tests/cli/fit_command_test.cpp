@@ -14,7 +14,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
+std::string quoted(const fs::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
+}
 
 TEST(FitCommand, FitsASyntheticExportIntoItsCsvsAndCharts) {
   const fs::path dir = bookspin::test::fresh_dir("cli/fit/good");
