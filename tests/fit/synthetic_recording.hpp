@@ -76,12 +76,14 @@ inline double closed_form_half_period(const Eigen::Vector3d& I, const Eigen::Vec
 }
 
 /// A recording of `tosses` of `body`: 1.5 s rest, then per toss a throw (`throw_time` s, a ramp
-/// to ω0 with Gaussian spikes of `throw_spikes` rad/s), the flight, a
+/// to ω0 with Gaussian spikes of `throw_spikes` rad/s), the flight (|ω| shrinking as
+/// e^(−drag·τ): 0 is torque-free), the flight, a
 /// 0.12 s catch and 1.2 s rest; a pause after the second toss's rest.
 inline SyntheticRecording make_recording(const SyntheticBody& body,
                                          const std::vector<SyntheticToss>& tosses,
                                          unsigned seed = 1, double noise = 0.01,
-                                         double throw_time = 0.15, double throw_spikes = 4.0) {
+                                         double throw_time = 0.15, double throw_spikes = 4.0,
+                                         double drag = 0.0) {
   std::mt19937 random(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -104,7 +106,9 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
     pieces.push_back({now, now + toss.flight, 2, toss.omega0_principal, Eigen::Vector3d::Zero()});
     rec.tosses.push_back({now, now + toss.flight,
                           closed_form_half_period(body.moments, toss.omega0_principal), w0_phone});
-    const Eigen::Vector3d w_end = body.axes * rk4(body.moments, toss.omega0_principal, toss.flight);
+    const Eigen::Vector3d w_end =
+        std::exp(-drag * toss.flight) *
+        (body.axes * rk4(body.moments, toss.omega0_principal, toss.flight));
     now += toss.flight;
     pieces.push_back({now, now + 0.12, 3, w_end, Eigen::Vector3d::Zero()});
     now += 0.12;
@@ -124,7 +128,8 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
     } else if (piece.kind == 1) {
       w = s * piece.b + throw_spikes * Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
     } else if (piece.kind == 2) {
-      w = body.axes * rk4(body.moments, piece.a, t - piece.t0);
+      // Drag, when asked for: ω (so |L|) shrinks as e^(−drag·τ), its direction torque-free.
+      w = std::exp(-drag * (t - piece.t0)) * (body.axes * rk4(body.moments, piece.a, t - piece.t0));
     } else {
       w = (1.0 - s) * piece.a + 6.0 * Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
     }
