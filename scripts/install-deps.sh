@@ -10,6 +10,7 @@ packages=(
   libassimp-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev libbullet-dev libode-dev
+  libceres-dev libminizip-dev
   clang clang-format libclang-rt-14-dev
   chromium chromium-driver python3-selenium
   slurm-wlm munge

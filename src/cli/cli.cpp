@@ -22,6 +22,7 @@
   X(plot)                       \
   X(gallery)                    \
   X(inertia)                    \
+  X(fit)                        \
   X(sweep)                      \
   X(flipcheck)                  \
   X(info)

@@ -228,6 +228,18 @@ void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, d
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   const double dash[] = {4 * line_width, 2.5 * line_width};
   cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
+  if (s.dots) {
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) continue;
+      const double px = ax.map(s.x[i], x0, x1), py = ay.map(s.y[i], y1, y0);
+      if (px < x0 || px > x1 || py < y0 || py > y1) continue;
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, px, py, 1.2 * line_width, 0, 2 * 3.14159265358979323846);
+    }
+    cairo_fill(cr);
+    cairo_set_dash(cr, nullptr, 0, 0);
+    return;
+  }
   bool pen_down = false;
   for (const auto& [px, py] : series_polyline(s, ax, ay, x0, x1, y0, y1)) {
     if (std::isnan(px)) {

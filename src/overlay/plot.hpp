@@ -23,6 +23,8 @@ struct Series {
   double r = 0, g = 0, b = 0;
   bool dashed = false;
   Marker marker = Marker::circle;
+  /// A dot at every point and no line (measured samples, e.g. a gyroscope's).
+  bool dots = false;
 };
 
 /// Where the legend goes: right of the plot area (wide plots), or in rows between the

@@ -151,8 +151,9 @@ Real table_integral(const PrecessionTable& table, Real w) {
 
 }  // namespace
 
-ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body)
-    : moments_(moments), omega0_(omega0_body) {
+ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
+                             ExactParts parts)
+    : moments_(moments), omega0_(omega0_body), parts_(parts) {
   if (!moments.allFinite() || (moments.array() <= 0.0).any())
     throw std::invalid_argument("ExactRotation: principal moments must be finite and positive");
   if (!omega0_body.allFinite())
@@ -166,7 +167,7 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   classify(w);
   if (case_ == ExactCase::steady) return;
   set_phase(w);
-  if (case_ != ExactCase::separatrix) {
+  if (case_ != ExactCase::separatrix && parts_ == ExactParts::omega_and_orientation) {
     table_ = build_table([this](Real u) { return precession_rate_u(u); }, 2.0L * K_);
     psi_half_ = table_.start.back();
     psi_u0_ = precession_integral(u0_);
@@ -312,6 +313,8 @@ long double ExactRotation::precession_integral(long double u) const {
 
 double ExactRotation::precession_angle(double t) const {
   if (case_ == ExactCase::steady) return omega0_.norm() * t;
+  if (parts_ == ExactParts::omega_only)
+    throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
   if (case_ == ExactCase::separatrix) {
     // Not periodic: adaptive Gauss–Kronrod over [u0, u(t)] (slow, but a measure-zero case).
     const Real u = phase(t);

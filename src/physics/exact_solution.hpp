@@ -18,6 +18,11 @@ enum class ExactCase {
   separatrix,       ///< L² = 2E·I2, k = 1: ω tends to axis 2 forever, no period
 };
 
+/// What an ExactRotation is built for: ω and the orientation, or ω alone (a fit that evaluates
+/// ω(t) for thousands of trial bodies: the precession table is then not built, which is most of
+/// the constructor's time, and orientation() and precession_angle() throw std::logic_error).
+enum class ExactParts { omega_and_orientation, omega_only };
+
 /// ψ(u) = ∫ (dψ/du) du tabulated as piecewise Chebyshev series over one period [0, 2K] of
 /// the integrand (built and evaluated in exact_solution.cpp). Panel p holds `degree + 2`
 /// coefficients of the antiderivative on [p·width, (p+1)·width], zero at the panel start.
@@ -49,7 +54,8 @@ struct PrecessionTable {
 class ExactRotation {
  public:
   /// Throws std::invalid_argument if a moment is not finite and positive or ω0 is not finite.
-  ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body);
+  ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
+                ExactParts parts = ExactParts::omega_and_orientation);
 
   /// Body-frame angular velocity ω(t) (rad per time unit); ω(0) = ω0 to round-off.
   Eigen::Vector3d omega_body(double t) const;
@@ -100,6 +106,7 @@ class ExactRotation {
   Eigen::Vector3d L_world_;
   double energy_ = 0.0, L_norm_ = 0.0;
   ExactCase case_ = ExactCase::steady;
+  ExactParts parts_ = ExactParts::omega_and_orientation;
   int cn_axis_ = 0, dn_axis_ = 2;  ///< sorted axes carrying cn and dn (sn is always axis 2)
   std::array<long double, 3> amplitude_{};  ///< signed, per sorted axis
   long double k_ = 0.0L, kc2_ = 1.0L, lambda_ = 0.0L, u0_ = 0.0L, K_ = 0.0L;  ///< kc2_ = 1 − k²

@@ -17,7 +17,8 @@ cmake_minimum_required(VERSION 3.20)
 #   4. only src/engines links or includes the other engines (the libraries its CMakeLists.txt
 #      links besides bookspin's own; their headers by the patterns below);
 #   5. bench/ and examples/ sit on top beside the command line: they may not include cli/;
-#   6. only src/video links FFmpeg or includes a libav header.
+#   6. only src/video links FFmpeg or includes a libav header;
+#   7. only src/fit links Ceres or includes a ceres/ header.
 # Run by ctest:
 #   cmake -DSOURCE_DIR=<repo> -P tests/architecture/check_includes.cmake
 # ARCHITECTURE_DOC=<file> reads the table from another file (to try the check on a changed
@@ -250,6 +251,25 @@ foreach(file IN LISTS non_video)
   file(STRINGS "${file}" lines REGEX "^#include <lib(av|sw)")
   foreach(line IN LISTS lines)
     list(APPEND violations "${rel}: ${line} (only src/video includes FFmpeg)")
+  endforeach()
+endforeach()
+
+# --- 7. Ceres is the fit stage's alone: no other stage links it or includes a ceres/ header. ---
+foreach(cmake IN LISTS stage_cmakes)
+  file(READ "${cmake}" text)
+  file(RELATIVE_PATH rel "${SOURCE_DIR}" "${cmake}")
+  if(text MATCHES "Ceres::" AND NOT rel STREQUAL "src/fit/CMakeLists.txt")
+    list(APPEND violations "${rel} links Ceres (only src/fit does)")
+  endif()
+endforeach()
+foreach(file IN LISTS non_video)
+  file(RELATIVE_PATH rel "${SOURCE_DIR}" "${file}")
+  if(rel MATCHES "^src/fit/")
+    continue()
+  endif()
+  file(STRINGS "${file}" lines REGEX "^#include <ceres/")
+  foreach(line IN LISTS lines)
+    list(APPEND violations "${rel}: ${line} (only src/fit includes Ceres)")
   endforeach()
 endforeach()
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -433,6 +434,24 @@ TEST(ExactModel, DiagnosticsAreConsistentAndCosXLFlipsWithOmegaX) {
       EXPECT_NEAR(zeros[i] - zeros[i - 1], flip, 1e-9 * flip);
     }
   }
+}
+
+}  // namespace
+}  // namespace bookspin::physics
+
+namespace bookspin::physics {
+namespace {
+
+// Built for ω alone (the fit's many trial bodies), the motion is the same ω(t) and flip period,
+// and asking it for an orientation is a bug it reports.
+TEST(ExactSolutionOmegaOnly, SameOmegaNoOrientation) {
+  const Eigen::Vector3d moments(1.0, 2.0, 3.0), w0(0.1, 2.0, 0.2);
+  const ExactRotation full(moments, w0);
+  const ExactRotation omega_only(moments, w0, ExactParts::omega_only);
+  for (double t : {0.0, 0.7, 3.1, 12.5})
+    EXPECT_EQ(omega_only.omega_body(t), full.omega_body(t)) << t;
+  EXPECT_EQ(omega_only.flip_period(), full.flip_period());
+  EXPECT_THROW(omega_only.orientation(1.0), std::logic_error);
 }
 
 }  // namespace

@@ -1,0 +1,99 @@
+// `bookspin fit`: the phone-toss lab (docs/phone-lab.md): a gyroscope recording's free flights
+// found and fitted with the exact motion.
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/subcommand.hpp"
+#include "common/errors.hpp"
+#include "products/fit.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+struct FitOptions {
+  std::string recording;
+  std::string out_dir = "out";
+  std::string tosses;   ///< "a:b,c:d" (s)
+  std::string moments;  ///< "I1,I2,I3"
+  bool force = false;
+  bool verify = false;
+};
+
+double parse_number(const std::string& text, const std::string& option) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value))
+    throw InputError(option + ": \"" + text + "\" is not a number");
+  return value;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t end = text.find(separator, begin);
+    parts.push_back(text.substr(begin, end == std::string::npos ? end : end - begin));
+    if (end == std::string::npos) return parts;
+    begin = end + 1;
+  }
+}
+
+/// Fits OUT/<recording>-fit.csv, -fit-body.csv and a chart per toss; prints what was kept,
+/// dropped and found.
+int fit_command(const FitOptions& options) {
+  products::FitJob job;
+  job.recording = options.recording;
+  job.out_dir = options.out_dir;
+  if (!options.tosses.empty())
+    for (const std::string& range : split(options.tosses, ',')) {
+      const std::vector<std::string> ends = split(range, ':');
+      if (ends.size() != 2) throw InputError("--tosses: \"" + range + "\" is not START:END");
+      job.tosses.emplace_back(parse_number(ends[0], "--tosses"), parse_number(ends[1], "--tosses"));
+    }
+  if (!options.moments.empty()) {
+    const std::vector<std::string> parts = split(options.moments, ',');
+    if (parts.size() != 3) throw InputError("--moments: expected I1,I2,I3");
+    Eigen::Vector3d m;
+    for (int i = 0; i < 3; ++i) {
+      m[i] = parse_number(parts[i], "--moments");
+      if (m[i] <= 0) throw InputError("--moments: \"" + parts[i] + "\" is not positive");
+    }
+    job.moments = m;
+  }
+  job.freshness = {options.force, options.verify, remake_note};
+  std::vector<std::string> summary;
+  const cache::Outcome outcome = products::make_fit(job, &summary);
+  if (outcome == cache::Outcome::up_to_date)
+    std::cout << "up to date: " << options.recording << std::endl;
+  for (const std::string& line : summary) std::cout << line << '\n';
+  return kExitOk;
+}
+
+}  // namespace
+
+Subcommand add_fit(CLI::App& cli) {
+  const auto stored = std::make_shared<FitOptions>();
+  FitOptions& options = *stored;
+  CLI::App* cmd = cli.add_subcommand(
+      "fit",
+      "Fit the exact motion to a phone toss's gyroscope recording (phyphox) into "
+      "OUT/<recording>-fit.csv");
+  cmd->add_option("RECORDING", options.recording,
+                  "A phyphox export (folder, Raw Data.csv or zip) or a t,wx,wy,wz CSV (rad/s)")
+      ->required();
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--tosses", options.tosses,
+                  "The flights by hand, START:END seconds, comma-separated (default: found)");
+  cmd->add_option("--moments", options.moments,
+                  "Principal moments I1,I2,I3 (any scale): fixed instead of fitted");
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/<recording>/fit-manifest.json");
+  return {cmd, [stored] { return fit_command(*stored); }};
+}
+
+}  // namespace bookspin::cli

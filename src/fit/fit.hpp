@@ -1,0 +1,7 @@
+#pragma once
+// The phone-toss lab's physics (docs/phone-lab.md): a gyroscope recording read
+// (recording.hpp), its free flights found (flights.hpp), and the exact motion fitted to them
+// (toss_fit.hpp). Eigen and Ceres; no GL, and no file written.
+#include "fit/flights.hpp"
+#include "fit/recording.hpp"
+#include "fit/toss_fit.hpp"

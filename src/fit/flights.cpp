@@ -1,0 +1,250 @@
+#include "fit/flights.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "common/errors.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+constexpr int kHalfWindow = 2;      // samples each side of the derivative's quadratic
+constexpr double kGapFactor = 5.0;  // a step this many median intervals long is a gap
+constexpr int kMinFitSamples = 10;  // a flight shorter than this cannot be fitted
+
+std::string seconds(double value) {
+  std::ostringstream text;
+  text.precision(3);
+  text << std::fixed << value;
+  return text.str();
+}
+
+/// Index ranges [begin, end) of samples with no pause and no gap inside.
+std::vector<std::pair<int, int>> segments(const GyroRecording& recording) {
+  const std::vector<double>& t = recording.t;
+  const int n = static_cast<int>(t.size());
+  std::vector<double> steps;
+  for (int i = 1; i < n; ++i) steps.push_back(t[i] - t[i - 1]);
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  const double median_step = steps[steps.size() / 2];
+  std::vector<std::pair<int, int>> result;
+  int begin = 0;
+  for (int i = 1; i < n; ++i) {
+    bool cut = t[i] - t[i - 1] > kGapFactor * median_step;
+    for (double pause : recording.pauses)
+      if (t[i - 1] < pause && t[i] >= pause) cut = true;
+    if (cut) {
+      result.emplace_back(begin, i);
+      begin = i;
+    }
+  }
+  result.emplace_back(begin, n);
+  return result;
+}
+
+/// Runs [first, last] (inclusive) of consecutive `true` within each segment.
+std::vector<std::pair<int, int>> runs(const std::vector<char>& mask,
+                                      const std::vector<std::pair<int, int>>& segs) {
+  std::vector<std::pair<int, int>> result;
+  for (const auto& [begin, end] : segs) {
+    int start = -1;
+    for (int i = begin; i <= end; ++i) {
+      const bool on = i < end && mask[i];
+      if (on && start < 0) start = i;
+      if (!on && start >= 0) {
+        result.emplace_back(start, i - 1);
+        start = -1;
+      }
+    }
+  }
+  return result;
+}
+
+/// The bias: the mean ω over the rest stretches (|ω| < rest_omega for min_rest s or longer).
+void measure_bias(const GyroRecording& recording, const FinderSettings& settings,
+                  const std::vector<std::pair<int, int>>& segs, FlightSearch& search) {
+  const int n = static_cast<int>(recording.t.size());
+  std::vector<char> still(n);
+  for (int i = 0; i < n; ++i) still[i] = recording.omega[i].norm() < settings.rest_omega;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (const auto& [first, last] : runs(still, segs)) {
+    if (recording.t[last] - recording.t[first] < settings.min_rest) continue;
+    for (int i = first; i <= last; ++i) sum += recording.omega[i];
+    count += last - first + 1;
+  }
+  search.rest_samples = count;
+  search.bias = count > 0 ? Eigen::Vector3d(sum / count) : Eigen::Vector3d::Zero();
+}
+
+/// |I ω̇ + ω × I ω| / |ω|² at sample i: the torque Euler's equations leave (I scaled to a
+/// largest moment of 1), which free flight keeps at the noise's level.
+double torque_residual(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
+                       const Eigen::Vector3d& w_dot) {
+  return (I * w_dot + w.cross(I * w)).norm() / std::max(w.squaredNorm(), 1e-12);
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> omega_rate(const std::vector<double>& t,
+                                        const std::vector<Eigen::Vector3d>& omega) {
+  const int n = static_cast<int>(t.size());
+  std::vector<Eigen::Vector3d> rate(n, Eigen::Vector3d::Zero());
+  for (int i = 0; i < n; ++i) {
+    const int lo = std::max(0, i - kHalfWindow), hi = std::min(n - 1, i + kHalfWindow);
+    const int m = hi - lo + 1;
+    if (m < 2) continue;
+    // Least squares ω ≈ a + b τ + c τ² (τ = t − t_i); a line where there are only 2 points.
+    const int terms = m >= 3 ? 3 : 2;
+    Eigen::MatrixXd A(m, terms);
+    Eigen::MatrixXd y(m, 3);
+    for (int k = 0; k < m; ++k) {
+      const double tau = t[lo + k] - t[i];
+      A(k, 0) = 1.0;
+      A(k, 1) = tau;
+      if (terms == 3) A(k, 2) = tau * tau;
+      y.row(k) = omega[lo + k].transpose();
+    }
+    const Eigen::MatrixXd coeffs = A.colPivHouseholderQr().solve(y);
+    rate[i] = coeffs.row(1).transpose();
+  }
+  return rate;
+}
+
+Eigen::Matrix3d euler_inertia(const std::vector<Eigen::Vector3d>& omega,
+                              const std::vector<Eigen::Vector3d>& omega_dot,
+                              const std::vector<int>& indices) {
+  // The six symmetric basis matrices: xx, yy, zz, xy, xz, yz.
+  std::array<Eigen::Matrix3d, 6> basis;
+  for (auto& b : basis) b.setZero();
+  basis[0](0, 0) = basis[1](1, 1) = basis[2](2, 2) = 1.0;
+  basis[3](0, 1) = basis[3](1, 0) = 1.0;
+  basis[4](0, 2) = basis[4](2, 0) = 1.0;
+  basis[5](1, 2) = basis[5](2, 1) = 1.0;
+  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+  for (int i : indices) {
+    const Eigen::Vector3d& w = omega[i];
+    const double scale = 1.0 / std::max(w.squaredNorm(), 1e-12);
+    Eigen::Matrix<double, 3, 6> rows;
+    for (int k = 0; k < 6; ++k)
+      rows.col(k) = scale * (basis[k] * omega_dot[i] + w.cross(basis[k] * w));
+    normal += rows.transpose() * rows;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> solver(normal);
+  const Eigen::Matrix<double, 6, 1> v = solver.eigenvectors().col(0);
+  Eigen::Matrix3d I = Eigen::Matrix3d::Zero();
+  for (int k = 0; k < 6; ++k) I += v[k] * basis[k];
+  if (I.trace() < 0) I = -I;
+  const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues().maxCoeff();
+  return largest > 0 ? Eigen::Matrix3d(I / largest) : I;
+}
+
+FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings) {
+  FlightSearch search;
+  const std::vector<std::pair<int, int>> segs = segments(recording);
+  measure_bias(recording, settings, segs, search);
+  const int n = static_cast<int>(recording.t.size());
+  const std::vector<double>& t = recording.t;
+  std::vector<Eigen::Vector3d> omega(n);
+  for (int i = 0; i < n; ++i) omega[i] = recording.omega[i] - search.bias;
+  // The rate within each segment only (a derivative never reaches across a pause).
+  std::vector<Eigen::Vector3d> rate(n);
+  for (const auto& [begin, end] : segs) {
+    const std::vector<double> ts(t.begin() + begin, t.begin() + end);
+    const std::vector<Eigen::Vector3d> ws(omega.begin() + begin, omega.begin() + end);
+    const std::vector<Eigen::Vector3d> rs = omega_rate(ts, ws);
+    std::copy(rs.begin(), rs.end(), rate.begin() + begin);
+  }
+  // 1. Candidates: fast enough, and |ω̇| within what Euler's equations allow a body whose
+  // moments obey the triangle inequality, |ω̇| ≤ |ω|²/√3 (docs/physics.md §8), plus noise.
+  std::vector<char> moving(n), candidate(n);
+  for (int i = 0; i < n; ++i) {
+    const double w2 = omega[i].squaredNorm();
+    moving[i] = std::sqrt(w2) >= settings.rest_omega;
+    candidate[i] = std::sqrt(w2) >= settings.flight_omega && rate[i].norm() <= 0.6 * w2 + 3.0;
+  }
+  std::vector<std::pair<int, int>> kept;
+  for (const auto& [first, last] : runs(candidate, segs)) {
+    if (t[last] - t[first] < settings.min_flight) continue;
+    kept.emplace_back(first, last);
+  }
+  // 2. Torque-free: the inertia that Euler's equations fit best on the candidates, then each
+  // candidate cut to its longest stretch whose torque residual stays at the noise's level;
+  // three times, each cutting the candidates anew with the inertia of the stretches the
+  // previous pass kept (so that a first inertia spoilt by a wind-up cuts nothing for good).
+  const std::vector<std::pair<int, int>> candidates = kept;
+  for (int pass = 0; pass < 3 && !kept.empty(); ++pass) {
+    std::vector<int> indices;
+    for (const auto& [first, last] : kept)
+      for (int i = first; i <= last; ++i) indices.push_back(i);
+    const Eigen::Matrix3d I = euler_inertia(omega, rate, indices);
+    std::vector<double> residuals;
+    for (int i : indices) residuals.push_back(torque_residual(I, omega[i], rate[i]));
+    std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
+    const double threshold = std::max(6.0 * residuals[residuals.size() / 2], 0.01);
+    std::vector<std::pair<int, int>> next;
+    for (const auto& [first, last] : candidates) {
+      int best_first = first, best_last = first - 1, start = -1;
+      for (int i = first; i <= last + 1; ++i) {
+        const bool ok = i <= last && torque_residual(I, omega[i], rate[i]) <= threshold;
+        if (ok && start < 0) start = i;
+        if (!ok && start >= 0) {
+          if (i - 1 - start > best_last - best_first) best_first = start, best_last = i - 1;
+          start = -1;
+        }
+      }
+      if (best_last >= best_first) next.emplace_back(best_first, best_last);
+    }
+    kept = next;
+  }
+  // 3. What was kept, and why the other moving stretches were dropped.
+  for (const auto& [first, last] : kept) {
+    if (t[last] - t[first] < settings.min_flight || last - first + 1 < kMinFitSamples) continue;
+    search.flights.push_back({first, last, t[first], t[last]});
+  }
+  for (const auto& [first, last] : runs(moving, segs)) {
+    bool has_flight = false;
+    for (const Flight& f : search.flights)
+      if (f.first >= first && f.last <= last) has_flight = true;
+    if (has_flight) continue;
+    double peak = 0.0;
+    for (int i = first; i <= last; ++i) peak = std::max(peak, omega[i].norm());
+    std::string reason;
+    if (peak < settings.flight_omega)
+      reason = "turning slower than " + seconds(settings.flight_omega) + " rad/s";
+    else
+      reason = "no torque-free stretch of " + seconds(settings.min_flight) +
+               " s or longer (held, or a flight too short to fit)";
+    search.dropped.push_back({t[first], t[last], reason});
+  }
+  return search;
+}
+
+FlightSearch hand_flights(const GyroRecording& recording,
+                          const std::vector<std::pair<double, double>>& ranges,
+                          const std::string& option, const FinderSettings& settings) {
+  FlightSearch search;
+  const std::vector<std::pair<int, int>> segs = segments(recording);
+  measure_bias(recording, settings, segs, search);
+  const std::vector<double>& t = recording.t;
+  for (const auto& [a, b] : ranges) {
+    const std::string range = seconds(a) + ":" + seconds(b);
+    if (!(b > a)) throw InputError(option + " " + range + ": the end is not after the start");
+    const int first = static_cast<int>(std::lower_bound(t.begin(), t.end(), a) - t.begin());
+    const int last = static_cast<int>(std::upper_bound(t.begin(), t.end(), b) - t.begin()) - 1;
+    if (last - first + 1 < kMinFitSamples)
+      throw InputError(option + " " + range + ": " + std::to_string(std::max(0, last - first + 1)) +
+                       " samples of " + recording.source + " in it; a toss needs at least " +
+                       std::to_string(kMinFitSamples));
+    for (const auto& [begin, end] : segs)
+      if (first < begin && last >= begin)
+        throw InputError(option + " " + range + ": spans a pause or a gap of " + recording.source +
+                         " (at " + seconds(t[begin]) + " s)");
+    search.flights.push_back({first, last, t[first], t[last]});
+  }
+  return search;
+}
+
+}  // namespace bookspin::fit

@@ -1,0 +1,67 @@
+#pragma once
+// The free flights of a gyroscope recording (docs/phone-lab.md, "How the flights are found"):
+// rest (the gyroscope's bias measured there), the throw (spikes), free flight (torque-free:
+// Euler's equations hold, docs/physics.md §8), the catch (spikes).
+#include <Eigen/Dense>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fit/recording.hpp"
+
+namespace bookspin::fit {
+
+/// One free flight: samples first … last (inclusive) of the recording.
+struct Flight {
+  int first = 0, last = 0;
+  double t_start = 0.0, t_end = 0.0;  ///< s, the first and last sample's time
+};
+
+/// A stretch of motion that was not kept, and why (one line).
+struct DroppedStretch {
+  double t_start = 0.0, t_end = 0.0;  ///< s
+  std::string reason;
+};
+
+/// What the finder found.
+struct FlightSearch {
+  Eigen::Vector3d bias = Eigen::Vector3d::Zero();  ///< rad/s, phone frame: the rest's mean
+  int rest_samples = 0;  ///< samples at rest the bias was measured on (0: not removed)
+  std::vector<Flight> flights;
+  std::vector<DroppedStretch> dropped;
+};
+
+/// The finder's thresholds.
+struct FinderSettings {
+  double rest_omega = 0.5;    ///< rad/s: at rest below this (bias included)
+  double min_rest = 0.3;      ///< s: a rest stretch at least this long measures the bias
+  double flight_omega = 2.0;  ///< rad/s: a free flight turns at least this fast throughout
+  double min_flight = 0.3;    ///< s: a shorter flight is dropped (too short to fit)
+};
+
+/// ω̇ (rad/s², phone frame) at each sample: the slope of a quadratic fitted by least squares to
+/// the samples within ±2 of it (fewer at an end), with their own times (jitter allowed).
+std::vector<Eigen::Vector3d> omega_rate(const std::vector<double>& t,
+                                        const std::vector<Eigen::Vector3d>& omega);
+
+/// The symmetric inertia tensor (phone frame, up to scale: largest eigenvalue 1) that best
+/// satisfies Euler's equations I ω̇ + ω × (I ω) = 0 (docs/physics.md §8) on the samples
+/// `indices`, as the smallest right singular vector of the linear system in its six entries.
+Eigen::Matrix3d euler_inertia(const std::vector<Eigen::Vector3d>& omega,
+                              const std::vector<Eigen::Vector3d>& omega_dot,
+                              const std::vector<int>& indices);
+
+/// Finds the free flights of `recording` (bias removed from the omega it judges). No flight
+/// spans a pause or a gap of more than five sample intervals. Never throws for a recording
+/// with no flight (flights is then empty, and dropped says why).
+FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings = {});
+
+/// The flights given by hand, [t_start, t_end] s each (the bias measured as find_flights
+/// does). Throws InputError naming `option` when a range holds fewer than 10 samples, is
+/// reversed, or spans a pause.
+FlightSearch hand_flights(const GyroRecording& recording,
+                          const std::vector<std::pair<double, double>>& ranges,
+                          const std::string& option = "--tosses",
+                          const FinderSettings& settings = {});
+
+}  // namespace bookspin::fit

@@ -1,0 +1,240 @@
+#include "fit/recording.hpp"
+
+#include <unzip.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "common/errors.hpp"
+#include "common/text_file.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+constexpr int kMinSamples = 10;
+
+/// The cells of one line split at `separator`, each trimmed of spaces and of one pair of
+/// double quotes.
+std::vector<std::string> split_cells(std::string_view line, char separator) {
+  std::vector<std::string> cells;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t end = line.find(separator, begin);
+    std::string_view cell = line.substr(begin, end == std::string_view::npos ? end : end - begin);
+    while (!cell.empty() && (cell.front() == ' ' || cell.front() == '\r')) cell.remove_prefix(1);
+    while (!cell.empty() && (cell.back() == ' ' || cell.back() == '\r')) cell.remove_suffix(1);
+    if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"')
+      cell = cell.substr(1, cell.size() - 2);
+    cells.emplace_back(cell);
+    if (end == std::string_view::npos) break;
+    begin = end + 1;
+  }
+  return cells;
+}
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+/// The lines of `text` (without their ends), with their 1-based numbers; blank lines left out.
+std::vector<std::pair<int, std::string_view>> lines_of(std::string_view text) {
+  std::vector<std::pair<int, std::string_view>> lines;
+  int number = 0;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(begin, end - begin);
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.find_first_not_of(" \t") != std::string_view::npos) lines.emplace_back(number, line);
+    begin = end + 1;
+  }
+  return lines;
+}
+
+/// A number cell: '.' or (decimal_comma) ',' as the decimal mark, scientific notation allowed;
+/// nullopt for text. NaN and infinity are returned as such (the caller names them).
+std::optional<double> parse_number(std::string cell, bool decimal_comma) {
+  if (decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
+  if (!cell.empty() && cell.front() == '+') cell.erase(0, 1);
+  double value = 0.0;
+  const char* end = cell.data() + cell.size();
+  const auto [ptr, ec] = std::from_chars(cell.data(), end, value);
+  if (cell.empty() || ec != std::errc() || ptr != end) return std::nullopt;
+  return value;
+}
+
+bool is_phyphox_gyro_header(const std::vector<std::string>& header) {
+  if (header.size() != 4 && header.size() != 5) return false;
+  const std::string axes = "xyz";
+  if (lower(header[0]).rfind("time (s)", 0) != 0) return false;
+  for (int i = 0; i < 3; ++i) {
+    const std::string cell = lower(header[i + 1]);
+    if (cell != std::string("gyroscope ") + axes[i] + " (rad/s)") return false;
+  }
+  return header.size() == 4 || lower(header[4]).rfind("absolute", 0) == 0;
+}
+
+bool is_plain_header(const std::vector<std::string>& header) {
+  return header == std::vector<std::string>{"t", "wx", "wy", "wz"};
+}
+
+/// File-safe: letters, digits, '.', '_' and '-' kept, anything else '-'.
+std::string file_safe(const std::string& name) {
+  std::string safe = name;
+  for (char& c : safe)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') c = '-';
+  return safe.empty() ? std::string("recording") : safe;
+}
+
+struct ZipCloser {
+  void operator()(void* zip) const { unzClose(zip); }
+};
+
+/// Every entry of the zip `path` whose name ends in `suffix`, the first one's bytes; nullopt
+/// when none. Throws InputError when the file is not a readable zip.
+std::optional<std::string> zip_entry(const std::filesystem::path& path, std::string_view suffix) {
+  const std::unique_ptr<void, ZipCloser> zip(unzOpen64(path.string().c_str()));
+  if (!zip) throw InputError(path.string() + ": not a zip file");
+  for (int status = unzGoToFirstFile(zip.get()); status == UNZ_OK;
+       status = unzGoToNextFile(zip.get())) {
+    unz_file_info64 info{};
+    char name[1024];
+    if (unzGetCurrentFileInfo64(zip.get(), &info, name, sizeof name, nullptr, 0, nullptr, 0) !=
+        UNZ_OK)
+      throw InputError(path.string() + ": a damaged zip file");
+    const std::string entry = name;
+    if (entry.size() < suffix.size() ||
+        entry.compare(entry.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    // "meta/time.csv" must not match "othermeta/time.csv": a folder boundary before it.
+    if (entry.size() > suffix.size() && entry[entry.size() - suffix.size() - 1] != '/') continue;
+    if (unzOpenCurrentFile(zip.get()) != UNZ_OK)
+      throw InputError(path.string() + ": " + entry + ": cannot open the zip entry");
+    std::string bytes;
+    char buffer[65536];
+    int got = 0;
+    while ((got = unzReadCurrentFile(zip.get(), buffer, sizeof buffer)) > 0)
+      bytes.append(buffer, static_cast<std::size_t>(got));
+    const int closed = unzCloseCurrentFile(zip.get());
+    if (got < 0 || closed != UNZ_OK)
+      throw InputError(path.string() + ": " + entry + ": a damaged zip entry");
+    return bytes;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
+                             const std::string& name) {
+  const auto lines = lines_of(text);
+  if (lines.empty()) throw InputError(file, 0, "", "not a gyroscope recording: the file is empty");
+  const std::string_view head = lines.front().second;
+  const char separator = head.find('\t') != std::string_view::npos  ? '\t'
+                         : head.find(';') != std::string_view::npos ? ';'
+                                                                    : ',';
+  const bool decimal_comma = separator == ';';
+  const std::vector<std::string> header = split_cells(head, separator);
+  const bool phyphox = is_phyphox_gyro_header(header);
+  if (!phyphox && !is_plain_header(header))
+    throw InputError(file, lines.front().first, "header",
+                     "not a gyroscope recording: expected phyphox's \"Time (s)\", \"Gyroscope x "
+                     "(rad/s)\", ... or t,wx,wy,wz");
+  GyroRecording recording;
+  recording.name = file_safe(name);
+  recording.source = file;
+  recording.t.reserve(lines.size());
+  recording.omega.reserve(lines.size());
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto& [number, line] = lines[i];
+    const std::vector<std::string> cells = split_cells(line, separator);
+    if (cells.size() < 4)
+      throw InputError(file, number, "",
+                       "a row of " + std::to_string(cells.size()) + " cells, expected " +
+                           std::to_string(header.size()));
+    double values[4];
+    for (int c = 0; c < 4; ++c) {
+      const std::optional<double> value = parse_number(cells[c], decimal_comma);
+      if (!value) throw InputError(file, number, header[c], "not a number: \"" + cells[c] + "\"");
+      if (!std::isfinite(*value))
+        throw InputError(file, number, header[c], "not a finite number: \"" + cells[c] + "\"");
+      values[c] = *value;
+    }
+    if (!recording.t.empty() && values[0] <= recording.t.back())
+      throw InputError(file, number, header[0],
+                       "time does not increase (" + cells[0] + " after the previous row's)");
+    recording.t.push_back(values[0]);
+    recording.omega.emplace_back(values[1], values[2], values[3]);
+  }
+  if (static_cast<int>(recording.t.size()) < kMinSamples)
+    throw InputError(file, 0, "",
+                     "a gyroscope recording of " + std::to_string(recording.t.size()) +
+                         " samples; at least " + std::to_string(kMinSamples) + " are needed");
+  return recording;
+}
+
+std::vector<double> parse_time_csv(std::string_view text, const std::string& file) {
+  std::vector<double> pauses;
+  const auto lines = lines_of(text);
+  if (lines.empty()) return pauses;
+  const std::string_view head = lines.front().second;
+  const char separator = head.find('\t') != std::string_view::npos  ? '\t'
+                         : head.find(';') != std::string_view::npos ? ';'
+                                                                    : ',';
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto& [number, line] = lines[i];
+    const std::vector<std::string> cells = split_cells(line, separator);
+    if (cells.size() < 2) throw InputError(file, number, "", "expected an event and its time");
+    if (cells[0] != "PAUSE") continue;
+    const std::optional<double> time = parse_number(cells[1], separator == ';');
+    if (!time || !std::isfinite(*time))
+      throw InputError(file, number, "experiment time", "not a number: \"" + cells[1] + "\"");
+    pauses.push_back(*time);
+  }
+  std::sort(pauses.begin(), pauses.end());
+  return pauses;
+}
+
+GyroRecording read_recording(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!fs::exists(status)) throw InputError(path.string() + ": no such file or folder");
+  if (fs::is_directory(status)) {
+    const fs::path raw = path / "Raw Data.csv";
+    if (!fs::exists(raw))
+      throw InputError(path.string() +
+                       ": not a gyroscope recording: the folder holds no \"Raw Data.csv\"");
+    return read_recording(raw);
+  }
+  const std::string name = path.stem().string();
+  if (lower(path.extension().string()) == ".zip") {
+    const std::optional<std::string> raw = zip_entry(path, "Raw Data.csv");
+    if (!raw)
+      throw InputError(path.string() +
+                       ": not a gyroscope recording: the zip holds no \"Raw Data.csv\"");
+    GyroRecording recording = parse_gyro_csv(*raw, path.string() + ":Raw Data.csv", name);
+    if (const std::optional<std::string> time = zip_entry(path, "meta/time.csv"))
+      recording.pauses = parse_time_csv(*time, path.string() + ":meta/time.csv");
+    return recording;
+  }
+  const std::string text = read_text_file(path, "the recording");
+  // A phyphox export is named after its folder; a plain CSV after itself.
+  const bool in_export = path.filename() == "Raw Data.csv";
+  const fs::path folder = fs::absolute(path).parent_path();
+  GyroRecording recording =
+      parse_gyro_csv(text, path.string(), in_export ? folder.filename().string() : name);
+  const fs::path time_csv = folder / "meta" / "time.csv";
+  if (in_export && fs::exists(time_csv))
+    recording.pauses = parse_time_csv(read_text_file(time_csv, "the pauses"), time_csv.string());
+  return recording;
+}
+
+}  // namespace bookspin::fit

@@ -1,0 +1,39 @@
+#pragma once
+// A gyroscope recording read into memory: a phyphox export (its folder, its `Raw Data.csv`, or
+// a zip of the folder; every CSV dialect phyphox writes; the pauses of `meta/time.csv`) or a
+// plain CSV `t,wx,wy,wz` (docs/phone-lab.md, "The recording").
+#include <Eigen/Dense>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace bookspin::fit {
+
+/// One recording: the body-frame angular velocity as the gyroscope measured it, in the phone's
+/// own axes (x to the right of the screen, y up the screen, z out of it).
+struct GyroRecording {
+  std::string name;       ///< the recording's name (folder, zip or file stem), file-safe
+  std::string source;     ///< the file the samples came from, for messages
+  std::vector<double> t;  ///< seconds of experiment time, strictly increasing
+  std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame, as measured (bias included)
+  /// Experiment times (s) at which the recording was paused: no flight spans one.
+  std::vector<double> pauses;
+};
+
+/// Reads `path`: a phyphox export folder (holding `Raw Data.csv`, optionally `meta/time.csv`),
+/// a `Raw Data.csv` (its folder's `meta/time.csv` read too), a `.zip` of such a folder, or a
+/// plain CSV whose header is `t,wx,wy,wz` (rad/s). Throws InputError, one line naming the
+/// file, row (1-based line) and column: no such file, not a gyroscope recording (the header),
+/// a text or NaN cell, a row with too few cells, time not increasing, fewer than 10 samples.
+GyroRecording read_recording(const std::filesystem::path& path);
+
+/// The samples of CSV `text` (as read_recording(); `file` names it in messages, `name` is
+/// the recording's). Throws InputError.
+GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
+                             const std::string& name);
+
+/// The PAUSE events' experiment times of a phyphox `meta/time.csv` `text`. Throws InputError.
+std::vector<double> parse_time_csv(std::string_view text, const std::string& file);
+
+}  // namespace bookspin::fit

@@ -1,0 +1,400 @@
+#include "fit/toss_fit.hpp"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "common/errors.hpp"
+#include "physics/exact_solution.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+constexpr double kStableDegrees = 25.0;
+constexpr double kPi = 3.14159265358979323846;
+
+/// A rotation from an angle-axis vector (radians).
+Eigen::Matrix3d rotation(const double* aa) {
+  const Eigen::Vector3d v(aa[0], aa[1], aa[2]);
+  const double angle = v.norm();
+  if (angle < 1e-300) return Eigen::Matrix3d::Identity();
+  return Eigen::AngleAxisd(angle, v / angle).toRotationMatrix();
+}
+
+/// The samples of one toss, bias removed, times from the toss's start.
+struct TossData {
+  std::vector<double> tau;             ///< s since t_start
+  std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame
+};
+
+/// The toss's body-frame ω, exactly (docs/physics.md §8): principal axes R0·exp(aa) (columns,
+/// phone frame), moments (e^p1, e^p2, 1) about them, ω(0) = omega0 (phone frame).
+struct Motion {
+  Eigen::Matrix3d axes;
+  physics::ExactRotation exact;
+  Motion(const Eigen::Matrix3d& R0, const double* aa, const double* log_ratios,
+         const double* omega0)
+      : axes(R0 * rotation(aa)),
+        exact(Eigen::Vector3d(std::exp(log_ratios[0]), std::exp(log_ratios[1]), 1.0),
+              axes.transpose() * Eigen::Vector3d(omega0[0], omega0[1], omega0[2]),
+              physics::ExactParts::omega_only) {}
+  Eigen::Vector3d omega(double tau) const { return axes * exact.omega_body(tau); }
+};
+
+/// Residuals ω_fitted(τ_i) − ω_measured(τ_i), three per sample, rad/s.
+struct TossCost {
+  const TossData* data;
+  int samples;  ///< the first `samples` of the toss
+  Eigen::Matrix3d R0;
+  bool operator()(double const* const* parameters, double* residuals) const {
+    try {
+      const Motion motion(R0, parameters[0], parameters[1], parameters[2]);
+      for (int i = 0; i < samples; ++i) {
+        const Eigen::Vector3d r = motion.omega(data->tau[i]) - data->omega[i];
+        residuals[3 * i] = r[0];
+        residuals[3 * i + 1] = r[1];
+        residuals[3 * i + 2] = r[2];
+      }
+      return true;
+    } catch (const std::invalid_argument&) {
+      return false;  // a step to non-finite values: Ceres tries a shorter one
+    }
+  }
+};
+
+/// The fit's parameters: the shared body, then each toss's ω0.
+struct Parameters {
+  Eigen::Matrix3d R0 = Eigen::Matrix3d::Identity();
+  std::array<double, 3> aa{0, 0, 0};
+  std::array<double, 2> log_ratios{0, 0};
+  std::vector<std::array<double, 3>> omega0;
+  Eigen::Matrix3d axes() const { return R0 * rotation(aa.data()); }
+  Eigen::Vector3d moments() const {
+    return {std::exp(log_ratios[0]), std::exp(log_ratios[1]), 1.0};
+  }
+};
+
+/// Sorts the moments ascending with the largest 1, the axes with them (right-handed, the sign
+/// convention of BodyEstimate::axes), and moves the rotation into R0 (aa = 0); the motion is the
+/// same.
+void normalise(Parameters& p) {
+  const Eigen::Vector3d m = p.moments();
+  Eigen::Matrix3d axes = p.axes();
+  std::array<int, 3> order{0, 1, 2};
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return m[a] < m[b]; });
+  Eigen::Matrix3d sorted;
+  for (int k = 0; k < 3; ++k) sorted.col(k) = axes.col(order[k]);
+  for (int k = 0; k < 2; ++k) {
+    Eigen::Index big = 0;
+    sorted.col(k).cwiseAbs().maxCoeff(&big);
+    if (sorted(big, k) < 0) sorted.col(k) = -sorted.col(k);
+  }
+  sorted.col(2) = sorted.col(0).cross(sorted.col(1));
+  p.R0 = sorted;
+  p.aa = {0, 0, 0};
+  p.log_ratios = {std::log(m[order[0]] / m[order[2]]), std::log(m[order[1]] / m[order[2]])};
+}
+
+/// Starting values: the inertia that Euler's equations fit best on every flight's samples
+/// (flights.hpp: euler_inertia), or the moments given; each ω0 the first sample's.
+Parameters start(const std::vector<TossData>& data, const FitSettings& settings,
+                 const std::vector<double>& times_unused) {
+  (void)times_unused;
+  std::vector<Eigen::Vector3d> omega, rate;
+  std::vector<int> indices;
+  for (const TossData& d : data) {
+    const std::vector<Eigen::Vector3d> r = omega_rate(d.tau, d.omega);
+    for (std::size_t i = 0; i < d.omega.size(); ++i) {
+      indices.push_back(static_cast<int>(omega.size()));
+      omega.push_back(d.omega[i]);
+      rate.push_back(r[i]);
+    }
+  }
+  const Eigen::Matrix3d I = euler_inertia(omega, rate, indices);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(I);
+  Parameters p;
+  p.R0 = eigen.eigenvectors();
+  if (p.R0.determinant() < 0) p.R0.col(0) = -p.R0.col(0);
+  Eigen::Vector3d m = eigen.eigenvalues() / eigen.eigenvalues().maxCoeff();
+  if (settings.moments) {
+    Eigen::Vector3d given = *settings.moments;
+    std::sort(given.data(), given.data() + 3);
+    m = given / given[2];
+  }
+  p.log_ratios = {std::log(std::clamp(m[0], 0.02, 1.0)), std::log(std::clamp(m[1], 0.02, 1.0))};
+  for (const TossData& d : data) p.omega0.push_back({d.omega[0][0], d.omega[0][1], d.omega[0][2]});
+  normalise(p);
+  return p;
+}
+
+struct SolveOptions {
+  bool body_fixed = false;     ///< axes and moments held (only the ω0 fitted)
+  bool moments_fixed = false;  ///< moments held (axes and ω0 fitted)
+  double fraction = 1.0;       ///< each toss's first fraction of samples only
+  double window = 0.0;         ///< > 0: each toss's first `window` seconds only
+};
+
+struct Solved {
+  double cost = 0.0;
+  int residuals = 0;
+  bool usable = false;
+};
+
+Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOptions& options,
+             std::unique_ptr<ceres::Problem>* keep = nullptr) {
+  ceres::Problem::Options problem_options;
+  auto problem = std::make_unique<ceres::Problem>(problem_options);
+  int residual_count = 0;
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    const TossData& d = data[k];
+    int samples = static_cast<int>(std::ceil(options.fraction * d.tau.size()));
+    if (options.window > 0)
+      samples = static_cast<int>(std::upper_bound(d.tau.begin(), d.tau.end(), options.window) -
+                                 d.tau.begin());
+    samples = std::clamp(samples, std::min<int>(4, d.tau.size()), static_cast<int>(d.tau.size()));
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<TossCost, ceres::CENTRAL>(
+        new TossCost{&d, samples, p.R0});
+    cost->AddParameterBlock(3);
+    cost->AddParameterBlock(2);
+    cost->AddParameterBlock(3);
+    cost->SetNumResiduals(3 * samples);
+    problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data());
+    residual_count += 3 * samples;
+  }
+  if (options.body_fixed || options.moments_fixed)
+    problem->SetParameterBlockConstant(p.log_ratios.data());
+  if (options.body_fixed) problem->SetParameterBlockConstant(p.aa.data());
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::DENSE_QR;
+  solver_options.max_num_iterations = 200;
+  solver_options.function_tolerance = 1e-10;
+  solver_options.gradient_tolerance = 1e-12;
+  solver_options.parameter_tolerance = 1e-10;
+  solver_options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, problem.get(), &summary);
+  Solved solved{summary.final_cost, residual_count,
+                summary.IsSolutionUsable() && std::isfinite(summary.final_cost)};
+  if (keep) *keep = std::move(problem);
+  return solved;
+}
+
+/// Times of the sign changes of `values` (hysteresis at ±`band`), by linear interpolation.
+std::vector<double> sign_changes(const std::vector<double>& t, const std::vector<double>& values,
+                                 double band) {
+  std::vector<double> crossings;
+  int sign = 0;
+  int last_index = -1;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const int s = values[i] > band ? 1 : values[i] < -band ? -1 : 0;
+    if (s == 0) continue;
+    if (sign != 0 && s != sign) {
+      // The crossing: the last zero of the line between the samples around it.
+      std::size_t j = static_cast<std::size_t>(last_index);
+      for (std::size_t k = j; k < i; ++k)
+        if ((values[k] > 0) != (values[k + 1] > 0)) j = k;
+      const double a = values[j], b = values[j + 1];
+      crossings.push_back(t[j] + (t[j + 1] - t[j]) * a / (a - b));
+    }
+    sign = s;
+    last_index = static_cast<int>(i);
+  }
+  return crossings;
+}
+
+}  // namespace
+
+Eigen::Vector3d fitted_omega(const FitResult& fit, int toss, double t) {
+  const TossFit& f = fit.tosses.at(toss);
+  const physics::ExactRotation exact(fit.body.ratios, fit.body.axes.transpose() * f.omega0,
+                                     physics::ExactParts::omega_only);
+  return fit.body.axes * exact.omega_body(t - f.flight.t_start);
+}
+
+void measured_omega(const GyroRecording& recording, const FitResult& fit, int toss,
+                    std::vector<double>& t, std::vector<Eigen::Vector3d>& omega) {
+  const Flight& flight = fit.tosses.at(toss).flight;
+  t.assign(recording.t.begin() + flight.first, recording.t.begin() + flight.last + 1);
+  omega.clear();
+  for (int i = flight.first; i <= flight.last; ++i)
+    omega.push_back(recording.omega[i] - fit.search.bias);
+}
+
+FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
+                        const FitSettings& settings) {
+  FitResult result;
+  result.search = search;
+  if (search.flights.empty()) {
+    std::string why;
+    for (const DroppedStretch& d : search.dropped)
+      why += (why.empty() ? " (" : "; ") + std::to_string(d.t_start) + "–" +
+             std::to_string(d.t_end) + " s: " + d.reason;
+    if (!why.empty()) why += ")";
+    throw InputError(recording.source + ": no free flight found" + why);
+  }
+  std::vector<TossData> data;
+  for (const Flight& f : search.flights) {
+    TossData d;
+    for (int i = f.first; i <= f.last; ++i) {
+      d.tau.push_back(recording.t[i] - f.t_start);
+      d.omega.push_back(recording.omega[i] - search.bias);
+    }
+    data.push_back(std::move(d));
+  }
+  const bool fixed = settings.moments.has_value();
+  Parameters p = start(data, settings, recording.t);
+  // Grown over each toss, so that a rough start does not lock onto a wrong phase.
+  for (double fraction : {0.3, 0.6, 1.0}) {
+    SolveOptions options;
+    options.moments_fixed = fixed;
+    options.fraction = fraction;
+    if (!solve(data, p, options).usable)
+      throw InputError(recording.source + ": the fit did not converge");
+    normalise(p);
+  }
+  std::unique_ptr<ceres::Problem> problem;
+  SolveOptions full;
+  full.moments_fixed = fixed;
+  const Solved solved = solve(data, p, full, &problem);
+  if (!solved.usable) throw InputError(recording.source + ": the fit did not converge");
+
+  BodyEstimate& body = result.body;
+  body.ratios = p.moments();
+  body.axes = p.axes();
+  body.moments_fixed = fixed;
+  // Uncertainties: (JᵀJ)⁻¹ scaled by the residual variance (Ceres assumes unit variance).
+  const int parameter_count = (fixed ? 3 : 5) + 3 * static_cast<int>(data.size());
+  const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count);
+  ceres::Covariance::Options covariance_options;
+  covariance_options.algorithm_type = ceres::DENSE_SVD;
+  ceres::Covariance covariance(covariance_options);
+  std::vector<std::pair<const double*, const double*>> blocks{{p.aa.data(), p.aa.data()}};
+  if (!fixed) blocks.emplace_back(p.log_ratios.data(), p.log_ratios.data());
+  for (auto& w : p.omega0) blocks.emplace_back(w.data(), w.data());
+  const bool have_covariance = covariance.Compute(blocks, problem.get());
+  std::vector<std::optional<Eigen::Vector3d>> omega0_sigma(data.size());
+  if (have_covariance) {
+    double c_aa[9];
+    covariance.GetCovarianceBlock(p.aa.data(), p.aa.data(), c_aa);
+    Eigen::Vector3d axis_sigma;
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      axis_sigma[i] = std::sqrt(variance * (c_aa[4 * j] + c_aa[4 * k])) * 180.0 / kPi;
+    }
+    body.axis_sigma_deg = axis_sigma;
+    if (fixed) {
+      body.ratio_sigma = Eigen::Vector3d::Zero();
+    } else {
+      double c_r[4];
+      covariance.GetCovarianceBlock(p.log_ratios.data(), p.log_ratios.data(), c_r);
+      body.ratio_sigma = Eigen::Vector3d(body.ratios[0] * std::sqrt(variance * c_r[0]),
+                                         body.ratios[1] * std::sqrt(variance * c_r[3]), 0.0);
+    }
+    for (std::size_t k = 0; k < data.size(); ++k) {
+      double c[9];
+      covariance.GetCovarianceBlock(p.omega0[k].data(), p.omega0[k].data(), c);
+      omega0_sigma[k] = Eigen::Vector3d(std::sqrt(variance * c[0]), std::sqrt(variance * c[4]),
+                                        std::sqrt(variance * c[8]));
+    }
+  } else {
+    body.notes.push_back("the fit cannot tell every value apart: no uncertainties");
+  }
+
+  const Parameters joint = p;
+  int stable_count = 0;
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    const TossData& d = data[k];
+    TossFit toss;
+    toss.flight = search.flights[k];
+    toss.omega0 = Eigen::Vector3d(joint.omega0[k][0], joint.omega0[k][1], joint.omega0[k][2]);
+    toss.omega0_sigma = omega0_sigma[k];
+    const physics::ExactRotation exact(body.ratios, body.axes.transpose() * toss.omega0,
+                                       physics::ExactParts::omega_only);
+    if (std::isfinite(exact.flip_period())) toss.half_period_fitted = exact.flip_period();
+    // Residual, |L| (L = I ω, principal frame), the angle to the circled axis.
+    double sum2 = 0.0, max_angle = 0.0;
+    const int circled = exact.motion_case() == physics::ExactCase::around_smallest ? 0 : 2;
+    std::vector<double> L(d.tau.size()), along(d.tau.size());
+    for (std::size_t i = 0; i < d.tau.size(); ++i) {
+      const Eigen::Vector3d w_fit = body.axes * exact.omega_body(d.tau[i]);
+      sum2 += (w_fit - d.omega[i]).squaredNorm();
+      const Eigen::Vector3d w_principal = body.axes.transpose() * d.omega[i];
+      L[i] = body.ratios.cwiseProduct(w_principal).norm();
+      along[i] = w_principal[1];
+      const Eigen::Vector3d wf = body.axes.transpose() * w_fit;
+      max_angle = std::max(max_angle, std::acos(std::min(1.0, std::abs(wf[circled]) / wf.norm())));
+    }
+    toss.residual_rms = std::sqrt(sum2 / d.tau.size());
+    toss.stable = exact.motion_case() == physics::ExactCase::steady ||
+                  max_angle * 180.0 / kPi < kStableDegrees;
+    if (toss.stable) ++stable_count;
+    // L_decay: −slope/intercept of the least-squares line through |L|(τ).
+    {
+      const double n = static_cast<double>(d.tau.size());
+      double st = 0, sl = 0, stt = 0, stl = 0;
+      for (std::size_t i = 0; i < d.tau.size(); ++i) {
+        st += d.tau[i], sl += L[i], stt += d.tau[i] * d.tau[i], stl += d.tau[i] * L[i];
+      }
+      const double slope = (n * stl - st * sl) / (n * stt - st * st);
+      const double intercept = (sl - slope * st) / n;
+      toss.L_decay = intercept > 0 ? -slope / intercept : 0.0;
+    }
+    // The measured flips: sign changes of ω about the intermediate axis.
+    double peak = 0.0;
+    for (double v : along) peak = std::max(peak, std::abs(v));
+    const std::vector<double> crossings = sign_changes(d.tau, along, 0.2 * peak);
+    if (crossings.size() >= 2)
+      toss.half_period_measured =
+          (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+    // Prediction: the body from the other tosses (or --moments), ω0 from this toss's start.
+    if (data.size() >= 2 || fixed) {
+      Parameters others = joint;
+      if (data.size() >= 2) {
+        std::vector<TossData> rest;
+        Parameters q = joint;
+        q.omega0.clear();
+        for (std::size_t j = 0; j < data.size(); ++j)
+          if (j != k) rest.push_back(data[j]), q.omega0.push_back(joint.omega0[j]);
+        SolveOptions options;
+        options.moments_fixed = fixed;
+        if (solve(rest, q, options).usable) {
+          others.R0 = q.R0, others.aa = q.aa, others.log_ratios = q.log_ratios;
+        }
+      }
+      std::vector<TossData> alone{d};
+      others.omega0 = {joint.omega0[k]};
+      others.omega0[0] = {d.omega[0][0], d.omega[0][1], d.omega[0][2]};
+      SolveOptions options;
+      options.body_fixed = true;
+      options.window = settings.predict_window;
+      if (solve(alone, others, options).usable) {
+        const Eigen::Matrix3d axes = others.axes();
+        const physics::ExactRotation predicted(
+            others.moments(),
+            axes.transpose() *
+                Eigen::Vector3d(others.omega0[0][0], others.omega0[0][1], others.omega0[0][2]),
+            physics::ExactParts::omega_only);
+        if (std::isfinite(predicted.flip_period()))
+          toss.half_period_predicted = predicted.flip_period();
+      }
+    }
+    result.tosses.push_back(toss);
+  }
+  if (stable_count == static_cast<int>(data.size()) && !fixed) {
+    body.moments_determined = false;
+    body.notes.push_back(
+        "every toss is stable (no flip): the moment ratios are poorly determined; give "
+        "--moments I1,I2,I3 to fix them");
+  } else if (stable_count > 0) {
+    body.notes.push_back(std::to_string(stable_count) +
+                         " stable toss(es) (no flip) fitted with the body the others determine");
+  }
+  if (data.size() < 2 && !fixed)
+    body.notes.push_back("one toss: no half_period_predicted (it needs the other tosses' body)");
+  return result;
+}
+
+}  // namespace bookspin::fit

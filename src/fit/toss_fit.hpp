@@ -1,0 +1,79 @@
+#pragma once
+// The exact motion fitted to a recording's free flights (docs/phone-lab.md, "The fit"): the
+// body's inertia in the phone frame up to scale (principal axes and two moment ratios), shared
+// by every toss, and each toss's initial ω, by nonlinear least squares (Ceres) of the closed-form
+// body-frame ω(t) of physics::ExactRotation (docs/physics.md §8) against the measured ω.
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fit/flights.hpp"
+#include "fit/recording.hpp"
+
+namespace bookspin::fit {
+
+/// The body as the fit found it.
+struct BodyEstimate {
+  /// Principal moments over the largest, ascending: (I1/I3, I2/I3, 1).
+  Eigen::Vector3d ratios = Eigen::Vector3d::Ones();
+  /// Columns: the principal axes 1, 2, 3 (unit, phone frame, right-handed; each axis's sign
+  /// is a convention: its largest phone component positive, the third then fixed by det +1).
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  /// One standard deviation of each ratio (the third is exactly 1: σ 0) and of each axis's
+  /// direction (degrees), from the fit's covariance scaled by its residual variance; nullopt
+  /// where the covariance could not be computed (a fit that cannot tell them apart).
+  std::optional<Eigen::Vector3d> ratio_sigma, axis_sigma_deg;
+  bool moments_fixed = false;      ///< given by --moments: not fitted
+  bool moments_determined = true;  ///< false: every toss stable, the moments poorly known
+  std::vector<std::string> notes;  ///< what the reader should know (one line each)
+};
+
+/// One toss as fitted.
+struct TossFit {
+  Flight flight;
+  Eigen::Vector3d omega0 = Eigen::Vector3d::Zero();  ///< rad/s, phone frame, at t_start
+  std::optional<Eigen::Vector3d> omega0_sigma;       ///< rad/s, one standard deviation
+  /// Mean time between the measured ω's sign changes about the fitted intermediate axis (s);
+  /// nullopt with fewer than two sign changes in the flight.
+  std::optional<double> half_period_measured;
+  /// T/2 of the fitted exact motion (s); nullopt for a steady motion (no period).
+  std::optional<double> half_period_fitted;
+  /// T/2 predicted: the body fitted on the other tosses (or --moments), this toss's ω0 fitted
+  /// on its first `predict_window` seconds alone; nullopt with no other toss and no --moments.
+  std::optional<double> half_period_predicted;
+  double residual_rms = 0.0;  ///< rad/s, RMS of |ω_measured − ω_fitted| over the flight
+  /// Fractional loss of the measured |L| (L = I ω with the fitted I) per second (1/s), from a
+  /// straight line fitted to |L|(t): 0 for torque-free flight, > 0 under air drag.
+  double L_decay = 0.0;
+  bool stable = false;  ///< ω stays within 25° of the axis it circles: it cannot tell moments
+};
+
+/// What the fit is given besides the flights.
+struct FitSettings {
+  /// Principal moments given by --moments (any scale, any order): fixed, not fitted.
+  std::optional<Eigen::Vector3d> moments;
+  double predict_window = 0.2;  ///< s, the start of a toss that half_period_predicted sees
+};
+
+struct FitResult {
+  FlightSearch search;  ///< the flights fitted (and the bias removed, the stretches dropped)
+  BodyEstimate body;
+  std::vector<TossFit> tosses;  ///< one per flight, in order
+};
+
+/// Fits `search`'s flights of `recording`. Throws InputError naming the recording when there
+/// is no flight ("no free flight found", with why each stretch was dropped) or when the
+/// solver cannot fit them.
+FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
+                        const FitSettings& settings = {});
+
+/// The fitted exact body-frame ω (rad/s, phone frame) of toss `toss` at time `t` (s, the
+/// recording's time).
+Eigen::Vector3d fitted_omega(const FitResult& fit, int toss, double t);
+
+/// The measured ω (rad/s, phone frame, bias removed) of toss `toss`'s samples, and their times.
+void measured_omega(const GyroRecording& recording, const FitResult& fit, int toss,
+                    std::vector<double>& t, std::vector<Eigen::Vector3d>& omega);
+
+}  // namespace bookspin::fit

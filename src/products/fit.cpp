@@ -1,0 +1,163 @@
+#include "products/fit.hpp"
+
+#include <sstream>
+
+#include "cache/make_cached.hpp"
+#include "cache/manifest_head.hpp"
+#include "charts/toss_plots.hpp"
+#include "output/atomic_output.hpp"
+#include "output/output_dir.hpp"
+#include "output/png_writer.hpp"
+#include "output/sha256.hpp"
+
+namespace bookspin::products {
+namespace {
+
+CsvNumber number(double value) { return {value, nullptr, NumberStyle::shortest}; }
+CsvNumber number(const std::optional<double>& value) {
+  return {value, nullptr, NumberStyle::shortest};
+}
+
+std::string fixed(double value, int digits) {
+  std::ostringstream text;
+  text.precision(digits);
+  text << std::fixed << value;
+  return text.str();
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> FitLayout::outputs() const {
+  std::vector<std::filesystem::path> all{csv, body_csv};
+  all.insert(all.end(), pngs.begin(), pngs.end());
+  return all;
+}
+
+FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses) {
+  FitLayout layout{out_dir / (name + "-fit.csv"),
+                   out_dir / (name + "-fit-body.csv"),
+                   {},
+                   out_dir / name / "fit-manifest.json"};
+  for (int k = 1; k <= tosses; ++k)
+    layout.pngs.push_back(out_dir / (name + "-toss" + std::to_string(k) + ".png"));
+  return layout;
+}
+
+CsvTable fit_toss_csv(const fit::FitResult& fit) {
+  CsvTable table{
+      {"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z", "half_period_measured",
+       "half_period_fitted", "half_period_predicted", "residual_rms", "L_decay", "stable"},
+      {}};
+  for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
+    const fit::TossFit& t = fit.tosses[k];
+    table.rows.push_back({std::to_string(k + 1), number(t.flight.t_start), number(t.flight.t_end),
+                          number(t.omega0[0]), number(t.omega0[1]), number(t.omega0[2]),
+                          number(t.half_period_measured), number(t.half_period_fitted),
+                          number(t.half_period_predicted), number(t.residual_rms),
+                          number(t.L_decay), std::string(t.stable ? "yes" : "no")});
+  }
+  return table;
+}
+
+CsvTable fit_body_csv(const fit::FitResult& fit) {
+  const fit::BodyEstimate& b = fit.body;
+  CsvTable table{
+      {"I1_over_I3", "I2_over_I3", "I3_over_I3", "I1_sigma", "I2_sigma", "axis1_x", "axis1_y",
+       "axis1_z", "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z",
+       "axis1_sigma_deg", "axis2_sigma_deg", "axis3_sigma_deg", "moments", "tosses"},
+      {}};
+  std::vector<CsvCell> row{number(b.ratios[0]), number(b.ratios[1]), number(b.ratios[2])};
+  for (int i = 0; i < 2; ++i)
+    row.push_back(
+        number(b.ratio_sigma ? std::optional<double>((*b.ratio_sigma)[i]) : std::nullopt));
+  for (int a = 0; a < 3; ++a)
+    for (int c = 0; c < 3; ++c) row.push_back(number(b.axes(c, a)));
+  for (int a = 0; a < 3; ++a)
+    row.push_back(
+        number(b.axis_sigma_deg ? std::optional<double>((*b.axis_sigma_deg)[a]) : std::nullopt));
+  row.push_back(std::string(b.moments_fixed        ? "given"
+                            : b.moments_determined ? "fitted"
+                                                   : "poorly determined"));
+  row.push_back(std::to_string(fit.tosses.size()));
+  table.rows.push_back(std::move(row));
+  return table;
+}
+
+std::vector<std::string> fit_summary(const fit::FitResult& fit) {
+  std::vector<std::string> lines;
+  const Eigen::Vector3d& bias = fit.search.bias;
+  lines.push_back(fit.search.rest_samples > 0
+                      ? "bias (rad/s, from " + std::to_string(fit.search.rest_samples) +
+                            " samples at rest): " + fixed(bias[0], 4) + ", " + fixed(bias[1], 4) +
+                            ", " + fixed(bias[2], 4)
+                      : "no rest in the recording: the gyroscope's bias is not removed");
+  for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
+    const fit::TossFit& t = fit.tosses[k];
+    lines.push_back("kept toss " + std::to_string(k + 1) + ": " + fixed(t.flight.t_start, 3) + "–" +
+                    fixed(t.flight.t_end, 3) + " s" + (t.stable ? " (stable: no flip)" : ""));
+  }
+  for (const fit::DroppedStretch& d : fit.search.dropped)
+    lines.push_back("dropped " + fixed(d.t_start, 3) + "–" + fixed(d.t_end, 3) + " s: " + d.reason);
+  const fit::BodyEstimate& b = fit.body;
+  lines.push_back("moments I1 : I2 : I3 = " + fixed(b.ratios[0], 4) + " : " +
+                  fixed(b.ratios[1], 4) + " : 1" + (b.moments_fixed ? " (given)" : ""));
+  for (const std::string& note : b.notes) lines.push_back("note: " + note);
+  return lines;
+}
+
+cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
+  // The recording is read before the manifest check: its name names the outputs, and its
+  // samples are what the outputs depend on.
+  const fit::GyroRecording recording = fit::read_recording(job.recording);
+  JsonArray tosses;
+  for (const auto& [a, b] : job.tosses)
+    tosses.push_back({JsonArray{{JsonNumber{a, NumberStyle::digits17}},
+                                {JsonNumber{b, NumberStyle::digits17}}}});
+  JsonArray moments;
+  if (job.moments)
+    for (int i = 0; i < 3; ++i)
+      moments.push_back({JsonNumber{(*job.moments)[i], NumberStyle::digits17}});
+  // The samples' exact bits (and the pauses'): a changed sample or pause remakes the fit.
+  std::string samples;
+  const auto append = [&](double value) {
+    samples.append(reinterpret_cast<const char*>(&value), sizeof value);
+  };
+  for (std::size_t i = 0; i < recording.t.size(); ++i) {
+    append(recording.t[i]);
+    for (int c = 0; c < 3; ++c) append(recording.omega[i][c]);
+  }
+  for (double pause : recording.pauses) append(pause);
+  const JsonObject members{{"recording", {output::sha256_text(samples)}},
+                           {"tosses", {std::move(tosses)}},
+                           {"moments", {std::move(moments)}},
+                           {"width", {std::int64_t{job.width}}},
+                           {"height", {std::int64_t{job.height}}}};
+  const std::filesystem::path manifest = job.out_dir / recording.name / "fit-manifest.json";
+  const cache::CachedOutputs cached{recording.name + "-fit", manifest,
+                                    cache::manifest_head("fit", members), job.out_dir, nullptr};
+  return cache::make_cached(cached, job.freshness, [&] {
+    const fit::FlightSearch search = job.tosses.empty() ? fit::find_flights(recording)
+                                                        : fit::hand_flights(recording, job.tosses);
+    fit::FitSettings settings;
+    settings.moments = job.moments;
+    const fit::FitResult result = fit::fit_recording(recording, search, settings);
+    const FitLayout layout =
+        fit_layout(job.out_dir, recording.name, static_cast<int>(result.tosses.size()));
+    std::vector<RgbaImage> charts;
+    for (std::size_t k = 0; k < result.tosses.size(); ++k)
+      charts.push_back(
+          charts::toss_image(recording, result, static_cast<int>(k), job.width, job.height));
+    output::prepare_output_dir(layout.csv.parent_path());
+    output::write_text_file(layout.csv, csv_text(fit_toss_csv(result), "fit CSV"));
+    output::write_text_file(layout.body_csv, csv_text(fit_body_csv(result), "fit body CSV"));
+    for (std::size_t k = 0; k < charts.size(); ++k) output::write_png(layout.pngs[k], charts[k]);
+    if (summary) {
+      *summary = fit_summary(result);
+      summary->push_back("wrote " + layout.csv.string() + ", " + layout.body_csv.string() +
+                         " and " + std::to_string(layout.pngs.size()) + " chart(s)");
+    }
+    return cache::Made{layout.outputs()};
+  });
+}
+
+}  // namespace bookspin::products

@@ -1,0 +1,56 @@
+#pragma once
+// The phone-toss lab's product (`bookspin fit`): a gyroscope recording's tosses fitted with the
+// exact motion, as two CSVs and a chart per toss, with its manifest (docs/outputs.md, "The
+// fit"; docs/phone-lab.md). The physics is the fit stage's, the chart the charts stage's.
+#include <Eigen/Dense>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cache/freshness.hpp"
+#include "common/csv_writer.hpp"
+#include "fit/fit.hpp"
+
+namespace bookspin::products {
+
+/// Every path a fit of one recording into OUT writes.
+struct FitLayout {
+  std::filesystem::path csv;                ///< OUT/<recording>-fit.csv: one row per toss
+  std::filesystem::path body_csv;           ///< OUT/<recording>-fit-body.csv: the body's one row
+  std::vector<std::filesystem::path> pngs;  ///< OUT/<recording>-toss<N>.png, N = 1, 2, ...
+  std::filesystem::path manifest;           ///< OUT/<recording>/fit-manifest.json
+  std::vector<std::filesystem::path> outputs() const;
+};
+
+/// The layout of recording `name`'s fit of `tosses` tosses in `out_dir`. No I/O.
+FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses);
+
+/// What `bookspin fit` asks for.
+struct FitJob {
+  std::filesystem::path recording;  ///< a phyphox export (folder, Raw Data.csv, zip) or t,wx,wy,wz
+  std::filesystem::path out_dir;
+  std::vector<std::pair<double, double>> tosses;  ///< --tosses by hand (s); empty: found
+  std::optional<Eigen::Vector3d> moments;         ///< --moments: fixed
+  int width = 1400, height = 700;                 ///< each chart's pixels
+  cache::Freshness freshness;
+};
+
+/// The fit's per-toss table and the body's row (docs/outputs.md, "The fit").
+CsvTable fit_toss_csv(const fit::FitResult& fit);
+CsvTable fit_body_csv(const fit::FitResult& fit);
+
+/// What the fit says besides its CSVs: the bias, the flights kept and the stretches dropped,
+/// the body's notes (one line each), for the command to print.
+std::vector<std::string> fit_summary(const fit::FitResult& fit);
+
+/// (recording, tosses, moments) => OUT/<recording>-fit.csv + -fit-body.csv + -toss<N>.png +
+/// manifest.
+/// Reads the recording (fit::read_recording), finds its flights (or takes the given ones),
+/// fits them (fit::fit_recording), draws each toss (charts::toss_image) and writes the files,
+/// unless the manifest says they are up to date. `summary`, when given, receives fit_summary's
+/// lines of a made fit. Throws InputError (the recording, a toss, no flight), OutputError.
+cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary = nullptr);
+
+}  // namespace bookspin::products

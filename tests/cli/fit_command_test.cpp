@@ -1,0 +1,84 @@
+// `bookspin fit` run as a program: a synthetic phyphox export (tests/fit/synthetic_recording.hpp)
+// fitted into its CSVs and charts, and bad input answered with one line and exit 2, nothing
+// written.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "fit/synthetic_recording.hpp"
+#include "support/cli_runner.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string quoted(const fs::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
+}
+
+TEST(FitCommand, FitsASyntheticExportIntoItsCsvsAndCharts) {
+  const fs::path dir = bookspin::test::fresh_dir("cli/fit/good");
+  const auto synthetic = fit::test::make_recording(
+      fit::test::phone_on_book(), {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.2}}, 3);
+  fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::tab);
+  const auto result =
+      bookspin::test::run_bookspin("fit " + quoted(dir / "toss") + " -o " + quoted(dir / "out"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("kept toss 2"), std::string::npos) << result.output;
+  for (const char* name : {"toss-fit.csv", "toss-fit-body.csv", "toss-toss1.png", "toss-toss2.png",
+                           "toss/fit-manifest.json"})
+    EXPECT_TRUE(fs::exists(dir / "out" / name)) << name;
+  const std::string csv = read_text_file(dir / "out" / "toss-fit.csv", "the CSV");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
+            "half_period_fitted,half_period_predicted,residual_rms,L_decay,stable");
+  // Run again: up to date.
+  const auto again =
+      bookspin::test::run_bookspin("fit " + quoted(dir / "toss") + " -o " + quoted(dir / "out"));
+  EXPECT_EQ(again.status, 0);
+  EXPECT_NE(again.output.find("up to date"), std::string::npos) << again.output;
+}
+
+/// Runs `bookspin fit FILE extra` on `text` written to FILE; expects exit 2, one line
+/// holding `expected`, and no output folder.
+void expect_bad(const std::string& name, const std::string& text, const std::string& expected,
+                const std::string& extra = "") {
+  const fs::path dir = bookspin::test::fresh_dir("cli/fit/bad-" + name);
+  std::ofstream(dir / (name + ".csv")) << text;
+  const auto result = bookspin::test::run_bookspin("fit " + quoted(dir / (name + ".csv")) + " -o " +
+                                                   quoted(dir / "out") + " " + extra);
+  EXPECT_EQ(result.status, 2) << result.output;
+  EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+  EXPECT_NE(result.output.find(expected), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(dir / "out")) << name;
+}
+
+std::string rest_rows(int n, double t0 = 0.0) {
+  std::string text;
+  for (int i = 0; i < n; ++i) text += std::to_string(t0 + 0.01 * i) + ",0.01,0.02,0.01\n";
+  return text;
+}
+
+TEST(FitCommand, BadInputIsOneLineAndExitTwo) {
+  expect_bad("accelerometer", "\"Time (s)\",\"Acceleration x (m/s^2)\",\"y\",\"z\"\n0,1,2,3\n",
+             "accelerometer.csv:1: header: not a gyroscope recording");
+  expect_bad("backwards", "t,wx,wy,wz\n" + rest_rows(20) + "0.05,1,2,3\n",
+             "backwards.csv:22: t: time does not increase");
+  expect_bad("nan", "t,wx,wy,wz\n" + rest_rows(5) + "0.5,nan,1,1\n" + rest_rows(10, 1.0),
+             "nan.csv:7: wx: not a finite number");
+  expect_bad("text", "t,wx,wy,wz\n" + rest_rows(5) + "0.5,1,x,1\n" + rest_rows(10, 1.0),
+             "text.csv:7: wy: not a number");
+  expect_bad("still", "t,wx,wy,wz\n" + rest_rows(300), "still.csv: no free flight found");
+  expect_bad("short", "t,wx,wy,wz\n" + rest_rows(300), "--tosses 0.100:0.120: 3 samples",
+             "--tosses 0.1:0.12");
+  expect_bad("moments", "t,wx,wy,wz\n" + rest_rows(300), "--moments: expected I1,I2,I3",
+             "--moments 1,2");
+}
+
+}  // namespace
+}  // namespace bookspin::cli

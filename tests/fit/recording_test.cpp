@@ -1,0 +1,126 @@
+// The recording reader: phyphox's three CSV dialects, its folder, its Raw Data.csv and a zip of
+// the folder, the pauses of meta/time.csv, a plain t,wx,wy,wz CSV, and bad input (one line
+// naming file, row and column).
+#include "fit/recording.hpp"
+
+#include <gtest/gtest.h>
+#include <zip.h>
+
+#include <fstream>
+
+#include "common/errors.hpp"
+#include "support/scratch.hpp"
+#include "synthetic_recording.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+test::SyntheticRecording small_recording() {
+  return test::make_recording(test::phone_alone(),
+                              {{{0.3, 14.0, 0.5}, 1.0}, {{0.3, 14.0, 0.5}, 1.0}});
+}
+
+void expect_same_samples(const GyroRecording& read, const test::SyntheticRecording& written) {
+  ASSERT_EQ(read.t.size(), written.t.size());
+  for (std::size_t i = 0; i < read.t.size(); i += 37) {
+    EXPECT_NEAR(read.t[i], written.t[i], 1e-8 * (1 + written.t[i]));
+    EXPECT_LT((read.omega[i] - written.omega[i]).norm(), 1e-7 * (1 + written.omega[i].norm()));
+  }
+  ASSERT_EQ(read.pauses.size(), written.pauses.size());
+  EXPECT_NEAR(read.pauses[0], written.pauses[0], 1e-8);
+}
+
+TEST(Recording, ReadsEachPhyphoxDialectFromItsFolder) {
+  const test::SyntheticRecording written = small_recording();
+  const auto dir = bookspin::test::fresh_dir("fit/dialects");
+  for (auto [dialect, name] :
+       {std::pair{test::Dialect::comma, "comma"}, std::pair{test::Dialect::tab, "tab"},
+        std::pair{test::Dialect::semicolon, "semicolon"}}) {
+    const auto folder = dir / (std::string("Gyroscope rotation rate ") + name);
+    test::write_export(folder, written, dialect);
+    const GyroRecording by_folder = read_recording(folder);
+    expect_same_samples(by_folder, written);
+    EXPECT_EQ(by_folder.name, std::string("Gyroscope-rotation-rate-") + name);
+    expect_same_samples(read_recording(folder / "Raw Data.csv"), written);
+  }
+}
+
+TEST(Recording, ReadsAZipOfTheFolder) {
+  const test::SyntheticRecording written = small_recording();
+  const auto dir = bookspin::test::fresh_dir("fit/zip");
+  const auto path = dir / "toss.zip";
+  zipFile zip = zipOpen64(path.string().c_str(), APPEND_STATUS_CREATE);
+  ASSERT_NE(zip, nullptr);
+  const std::string files[][2] = {
+      {"toss/Raw Data.csv", test::raw_data_csv(written, test::Dialect::comma)},
+      {"toss/meta/time.csv", test::time_csv(written)}};
+  for (const auto& [name, bytes] : files) {
+    ASSERT_EQ(zipOpenNewFileInZip64(zip, name.c_str(), nullptr, nullptr, 0, nullptr, 0, nullptr,
+                                    Z_DEFLATED, Z_DEFAULT_COMPRESSION, 1),
+              ZIP_OK);
+    ASSERT_EQ(zipWriteInFileInZip(zip, bytes.data(), static_cast<unsigned>(bytes.size())), ZIP_OK);
+    zipCloseFileInZip(zip);
+  }
+  zipClose(zip, nullptr);
+  const GyroRecording read = read_recording(path);
+  expect_same_samples(read, written);
+  EXPECT_EQ(read.name, "toss");
+}
+
+TEST(Recording, ReadsAPlainCsv) {
+  const GyroRecording read = parse_gyro_csv(
+      "t,wx,wy,wz\n0,1,2,3\n0.01,1.5,2,3\n0.02,1,2,3\n0.03,1,2,3\n0.04,1,2,3\n"
+      "0.05,1,2,3\n0.06,1,2,3\n0.07,1,2,3\n0.08,1,2,3\n0.09,1,2,-3e-1\n",
+      "plain.csv", "plain");
+  ASSERT_EQ(read.t.size(), 10u);
+  EXPECT_DOUBLE_EQ(read.omega[1][0], 1.5);
+  EXPECT_DOUBLE_EQ(read.omega[9][2], -0.3);
+  EXPECT_TRUE(read.pauses.empty());
+}
+
+/// The one line of the InputError that parsing `text` throws.
+std::string error_of(const std::string& text) {
+  try {
+    parse_gyro_csv(text, "bad.csv", "bad");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string rows(int n) {
+  std::string text;
+  for (int i = 0; i < n; ++i) text += std::to_string(0.01 * (i + 1)) + ",1,2,3\n";
+  return text;
+}
+
+TEST(Recording, BadInputNamesFileRowAndColumn) {
+  EXPECT_EQ(error_of("a,b,c\n1,2,3\n"),
+            "bad.csv:1: header: not a gyroscope recording: expected phyphox's \"Time (s)\", "
+            "\"Gyroscope x (rad/s)\", ... or t,wx,wy,wz");
+  EXPECT_EQ(error_of("\"Time (s)\",\"Linear Acceleration x (m/s^2)\",\"y\",\"z\"\n" + rows(10))
+                .substr(0, 20),
+            "bad.csv:1: header: n");
+  EXPECT_EQ(error_of("t,wx,wy,wz\n0,1,2,3\n" + rows(10) + "0.05,1,2,3\n"),
+            "bad.csv:13: t: time does not increase (0.05 after the previous row's)");
+  EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3) + "0.5,1,nan,3\n" + "0.6,1,1,1\n"),
+            "bad.csv:5: wy: not a finite number: \"nan\"");
+  EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3) + "0.5,1,fast,3\n"),
+            "bad.csv:5: wy: not a number: \"fast\"");
+  EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3) + "0.5,1,2\n"),
+            "bad.csv:5: a row of 3 cells, expected 4");
+  EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3)),
+            "bad.csv: a gyroscope recording of 3 samples; at least 10 are needed");
+  EXPECT_EQ(error_of(""), "bad.csv: not a gyroscope recording: the file is empty");
+}
+
+TEST(Recording, AMissingFileOrAFolderWithoutRawDataIsBadInput) {
+  const auto dir = bookspin::test::fresh_dir("fit/missing");
+  EXPECT_THROW(read_recording(dir / "nothing.csv"), InputError);
+  EXPECT_THROW(read_recording(dir), InputError);
+  std::ofstream(dir / "not.zip") << "plain text";
+  EXPECT_THROW(read_recording(dir / "not.zip"), InputError);
+}
+
+}  // namespace
+}  // namespace bookspin::fit
