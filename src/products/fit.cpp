@@ -3,7 +3,6 @@
 #include <sstream>
 
 #include "cache/make_cached.hpp"
-#include "cache/manifest_head.hpp"
 #include "charts/toss_plots.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
@@ -133,8 +132,7 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
                            {"width", {std::int64_t{job.width}}},
                            {"height", {std::int64_t{job.height}}}};
   const std::filesystem::path manifest = job.out_dir / recording.name / "fit-manifest.json";
-  const cache::CachedOutputs cached{recording.name + "-fit", manifest,
-                                    cache::manifest_head("fit", members), job.out_dir, nullptr};
+  const cache::CachedOutputs cached{recording.name + "-fit", manifest, "fit", members, job.out_dir};
   return cache::make_cached(cached, job.freshness, [&] {
     const fit::FlightSearch search = job.tosses.empty() ? fit::find_flights(recording)
                                                         : fit::hand_flights(recording, job.tosses);

@@ -1,7 +1,6 @@
 #include "products/flipcheck.hpp"
 
 #include "cache/make_cached.hpp"
-#include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
 #include "jobs/motion_csv.hpp"
 #include "output/atomic_output.hpp"
@@ -72,9 +71,12 @@ CsvTable exact_motion_csv(const jobs::ExactMotion& m) {
 cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
   const analysis::Scenario scenario = analysis::scenario_of(job.scene);
   const FlipcheckExportLayout layout = flipcheck_export_layout(job.out_dir, job.scene);
-  const cache::CachedOutputs cached{job.scene.name + "-flipcheck", layout.manifest,
-                                    cache::manifest_head("flipcheck export", {}, job.scene),
-                                    job.out_dir, &job.scene};
+  const cache::CachedOutputs cached{job.scene.name + "-flipcheck",
+                                    layout.manifest,
+                                    "flipcheck export",
+                                    {},
+                                    job.out_dir,
+                                    &job.scene};
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
     const std::string json =
@@ -146,9 +148,12 @@ FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   }
   const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, job.scene);
   const JsonObject options{{"motions", {std::move(hashes), true}}};
-  const cache::CachedOutputs cached{job.scene.name + "-judge", layout.manifest,
-                                    cache::manifest_head("flipcheck judge", options, job.scene),
-                                    job.out_dir, &job.scene};
+  const cache::CachedOutputs cached{job.scene.name + "-judge",
+                                    layout.manifest,
+                                    "flipcheck judge",
+                                    options,
+                                    job.out_dir,
+                                    &job.scene};
   result.outcome = cache::make_cached(cached, job.freshness, [&] {
     const std::string csv = csv_text(judge_csv(scenario, result.judged), "flipcheck judge CSV");
     output::prepare_output_dir(layout.csv.parent_path());
