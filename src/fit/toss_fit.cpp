@@ -15,6 +15,7 @@ namespace bookspin::fit {
 namespace {
 
 constexpr double kStableDegrees = 25.0;
+constexpr double kPoorFit = 0.03;  // residual_rms over mean |ω| beyond which a toss is not fitted
 constexpr double kPi = 3.14159265358979323846;
 
 /// A rotation from an angle-axis vector (radians).
@@ -367,6 +368,15 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       max_angle = std::max(max_angle, std::acos(std::min(1.0, std::abs(wf[circled]) / wf.norm())));
     }
     toss.residual_rms = std::sqrt(sum2 / d.tau.size());
+    double mean_omega = 0.0;
+    for (const Eigen::Vector3d& w : d.omega) mean_omega += w.norm() / d.omega.size();
+    toss.poor_fit = toss.residual_rms > kPoorFit * mean_omega;
+    if (toss.poor_fit)
+      body.notes.push_back(
+          "toss " + std::to_string(k + 1) + ": the exact motion does not fit it (residual " +
+          std::to_string(toss.residual_rms) + " rad/s of " + std::to_string(mean_omega) +
+          "): not a free flight, or not a rigid body; its values are not to "
+          "be trusted");
     toss.stable = exact.motion_case() == physics::ExactCase::steady ||
                   max_angle * 180.0 / kPi < kStableDegrees;
     if (toss.stable) ++stable_count;
