@@ -172,9 +172,9 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
     cost->AddParameterBlock(3);
     cost->AddParameterBlock(2);
     cost->AddParameterBlock(3);
-    cost->SetNumResiduals(3 * samples);
+    cost->SetNumResiduals(3 * kept);
     problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data());
-    residual_count += 3 * samples;
+    residual_count += 3 * kept;
   }
   if (options.body_fixed || options.moments_fixed)
     problem->SetParameterBlockConstant(p.log_ratios.data());
@@ -339,6 +339,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
         if (j % fold_body.size() != f) rest.push_back(data[j]), q.omega0.push_back(joint.omega0[j]);
       SolveOptions options;
       options.moments_fixed = fixed;
+      options.spacing = 0.01;  // at 100 Hz whatever the rate: five fits of nearly every toss
       if (solve(rest, q, options).usable) fold_body[f] = q;
     }
   } else if (fixed) {
