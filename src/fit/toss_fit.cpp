@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 
 #include "common/errors.hpp"
 #include "physics/exact_solution.hpp"
@@ -14,6 +15,7 @@ namespace bookspin::fit {
 namespace {
 
 constexpr double kStableDegrees = 25.0;
+constexpr double kPoorFit = 0.03;  // residual_rms over mean |ω| beyond which a toss is not fitted
 constexpr double kPi = 3.14159265358979323846;
 
 /// A rotation from an angle-axis vector (radians).
@@ -48,15 +50,16 @@ struct Motion {
 struct TossCost {
   const TossData* data;
   int samples;  ///< the first `samples` of the toss
+  int stride;   ///< every stride-th of them
   Eigen::Matrix3d R0;
   bool operator()(double const* const* parameters, double* residuals) const {
     try {
       const Motion motion(R0, parameters[0], parameters[1], parameters[2]);
-      for (int i = 0; i < samples; ++i) {
+      for (int i = 0, n = 0; i < samples; i += stride, ++n) {
         const Eigen::Vector3d r = motion.omega(data->tau[i]) - data->omega[i];
-        residuals[3 * i] = r[0];
-        residuals[3 * i + 1] = r[1];
-        residuals[3 * i + 2] = r[2];
+        residuals[3 * n] = r[0];
+        residuals[3 * n + 1] = r[1];
+        residuals[3 * n + 2] = r[2];
       }
       return true;
     } catch (const std::invalid_argument&) {
@@ -135,6 +138,9 @@ struct SolveOptions {
   bool moments_fixed = false;  ///< moments held (axes and ω0 fitted)
   double fraction = 1.0;       ///< each toss's first fraction of samples only
   double window = 0.0;         ///< > 0: each toss's first `window` seconds only
+  /// > 0: every sample within this many seconds of the last one kept is left out (the start's
+  /// rough stages at 100 Hz whatever the rate; the final fit sees every sample).
+  double spacing = 0.0;
 };
 
 struct Solved {
@@ -155,25 +161,34 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
       samples = static_cast<int>(std::upper_bound(d.tau.begin(), d.tau.end(), options.window) -
                                  d.tau.begin());
     samples = std::clamp(samples, std::min<int>(4, d.tau.size()), static_cast<int>(d.tau.size()));
+    int stride = 1;
+    if (options.spacing > 0 && d.tau.size() >= 2) {
+      const double step = d.tau.back() / static_cast<double>(d.tau.size() - 1);
+      stride = std::max(1, static_cast<int>(options.spacing / step));
+    }
+    const int kept = (samples + stride - 1) / stride;
     auto* cost = new ceres::DynamicNumericDiffCostFunction<TossCost, ceres::CENTRAL>(
-        new TossCost{&d, samples, p.R0});
+        new TossCost{&d, samples, stride, p.R0});
     cost->AddParameterBlock(3);
     cost->AddParameterBlock(2);
     cost->AddParameterBlock(3);
-    cost->SetNumResiduals(3 * samples);
+    cost->SetNumResiduals(3 * kept);
     problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data());
-    residual_count += 3 * samples;
+    residual_count += 3 * kept;
   }
   if (options.body_fixed || options.moments_fixed)
     problem->SetParameterBlockConstant(p.log_ratios.data());
   if (options.body_fixed) problem->SetParameterBlockConstant(p.aa.data());
   ceres::Solver::Options solver_options;
-  solver_options.linear_solver_type = ceres::DENSE_QR;
+  // The tosses' ω0 blocks are independent given the body: eliminated (Schur complement), the
+  // linear system is the body's five parameters, however many tosses there are.
+  solver_options.linear_solver_type = ceres::DENSE_SCHUR;
   solver_options.max_num_iterations = 200;
   solver_options.function_tolerance = 1e-10;
   solver_options.gradient_tolerance = 1e-12;
   solver_options.parameter_tolerance = 1e-10;
   solver_options.logging_type = ceres::SILENT;
+  solver_options.num_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem.get(), &summary);
   Solved solved{summary.final_cost, residual_count,
@@ -251,6 +266,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     SolveOptions options;
     options.moments_fixed = fixed;
     options.fraction = fraction;
+    options.spacing = 0.01;
     if (!solve(data, p, options).usable)
       throw InputError(recording.source + ": the fit did not converge");
     normalise(p);
@@ -270,6 +286,8 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count);
   ceres::Covariance::Options covariance_options;
   covariance_options.algorithm_type = ceres::DENSE_SVD;
+  covariance_options.num_threads =
+      static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   ceres::Covariance covariance(covariance_options);
   std::vector<std::pair<const double*, const double*>> blocks{{p.aa.data(), p.aa.data()}};
   if (!fixed) blocks.emplace_back(p.log_ratios.data(), p.log_ratios.data());
@@ -304,6 +322,29 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   }
 
   const Parameters joint = p;
+  // The body each toss's prediction uses, fitted without it: the tosses are dealt into at most
+  // five folds (toss k into fold k mod folds) and each fold's body is fitted on the tosses of
+  // the other folds, so that with up to five tosses it is the body of all the others, and with
+  // more the fits stay five, not one per toss. With --moments and one toss, the moments given,
+  // and the axes fitted with ω0 on the toss's first predict_window s below. None when a fold's
+  // fit fails: no prediction then.
+  std::vector<std::optional<Parameters>> fold_body(
+      std::max<std::size_t>(1, std::min<std::size_t>(data.size(), 5)));
+  if (data.size() >= 2) {
+    for (std::size_t f = 0; f < fold_body.size(); ++f) {
+      std::vector<TossData> rest;
+      Parameters q = joint;
+      q.omega0.clear();
+      for (std::size_t j = 0; j < data.size(); ++j)
+        if (j % fold_body.size() != f) rest.push_back(data[j]), q.omega0.push_back(joint.omega0[j]);
+      SolveOptions options;
+      options.moments_fixed = fixed;
+      options.spacing = 0.01;  // at 100 Hz whatever the rate: five fits of nearly every toss
+      if (solve(rest, q, options).usable) fold_body[f] = q;
+    }
+  } else if (fixed) {
+    fold_body[0] = joint;
+  }
   int stable_count = 0;
   for (std::size_t k = 0; k < data.size(); ++k) {
     const TossData& d = data[k];
@@ -328,6 +369,15 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       max_angle = std::max(max_angle, std::acos(std::min(1.0, std::abs(wf[circled]) / wf.norm())));
     }
     toss.residual_rms = std::sqrt(sum2 / d.tau.size());
+    double mean_omega = 0.0;
+    for (const Eigen::Vector3d& w : d.omega) mean_omega += w.norm() / d.omega.size();
+    toss.poor_fit = toss.residual_rms > kPoorFit * mean_omega;
+    if (toss.poor_fit)
+      body.notes.push_back(
+          "toss " + std::to_string(k + 1) + ": the exact motion does not fit it (residual " +
+          std::to_string(toss.residual_rms) + " rad/s of " + std::to_string(mean_omega) +
+          "): not a free flight, or not a rigid body; its values are not to "
+          "be trusted");
     toss.stable = exact.motion_case() == physics::ExactCase::steady ||
                   max_angle * 180.0 / kPi < kStableDegrees;
     if (toss.stable) ++stable_count;
@@ -350,25 +400,16 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       toss.half_period_measured =
           (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
     // Prediction: the body from the other tosses (or --moments), ω0 from this toss's start.
-    if (data.size() >= 2 || fixed) {
-      Parameters others = joint;
-      if (data.size() >= 2) {
-        std::vector<TossData> rest;
-        Parameters q = joint;
-        q.omega0.clear();
-        for (std::size_t j = 0; j < data.size(); ++j)
-          if (j != k) rest.push_back(data[j]), q.omega0.push_back(joint.omega0[j]);
-        SolveOptions options;
-        options.moments_fixed = fixed;
-        if (solve(rest, q, options).usable) {
-          others.R0 = q.R0, others.aa = q.aa, others.log_ratios = q.log_ratios;
-        }
-      }
+    const std::optional<Parameters>& held_out = fold_body[k % fold_body.size()];
+    if (held_out) {
+      Parameters others = *held_out;
       std::vector<TossData> alone{d};
       others.omega0 = {joint.omega0[k]};
       others.omega0[0] = {d.omega[0][0], d.omega[0][1], d.omega[0][2]};
       SolveOptions options;
-      options.body_fixed = true;
+      // One toss with --moments: its axes too from the first predict_window s alone.
+      options.body_fixed = data.size() >= 2;
+      options.moments_fixed = true;
       options.window = settings.predict_window;
       if (solve(alone, others, options).usable) {
         const Eigen::Matrix3d axes = others.axes();

@@ -47,6 +47,9 @@ struct TossFit {
   /// straight line fitted to |L|(t): 0 for torque-free flight, > 0 under air drag.
   double L_decay = 0.0;
   bool stable = false;  ///< ω stays within 25° of the axis it circles: it cannot tell moments
+  /// residual_rms over 3 % of the toss's mean |ω|: the exact motion does not fit it (a throw or
+  /// catch inside the stretch, a body that is not rigid); said in BodyEstimate::notes.
+  bool poor_fit = false;
 };
 
 /// What the fit is given besides the flights.

@@ -43,17 +43,18 @@ FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& na
 }
 
 CsvTable fit_toss_csv(const fit::FitResult& fit) {
-  CsvTable table{
-      {"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z", "half_period_measured",
-       "half_period_fitted", "half_period_predicted", "residual_rms", "L_decay", "stable"},
-      {}};
+  CsvTable table{{"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z",
+                  "half_period_measured", "half_period_fitted", "half_period_predicted",
+                  "residual_rms", "L_decay", "stable", "poor_fit"},
+                 {}};
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const fit::TossFit& t = fit.tosses[k];
     table.rows.push_back({std::to_string(k + 1), number(t.flight.t_start), number(t.flight.t_end),
                           number(t.omega0[0]), number(t.omega0[1]), number(t.omega0[2]),
                           number(t.half_period_measured), number(t.half_period_fitted),
                           number(t.half_period_predicted), number(t.residual_rms),
-                          number(t.L_decay), std::string(t.stable ? "yes" : "no")});
+                          number(t.L_decay), std::string(t.stable ? "yes" : "no"),
+                          std::string(t.poor_fit ? "yes" : "no")});
   }
   return table;
 }

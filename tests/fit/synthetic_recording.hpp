@@ -77,13 +77,13 @@ inline double closed_form_half_period(const Eigen::Vector3d& I, const Eigen::Vec
 
 /// A recording of `tosses` of `body`: 1.5 s rest, then per toss a throw (`throw_time` s, a ramp
 /// to ω0 with Gaussian spikes of `throw_spikes` rad/s), the flight (|ω| shrinking as
-/// e^(−drag·τ): 0 is torque-free), the flight, a
+/// e^(−drag·τ): 0 is torque-free), sampled at `rate` Hz with ±10 % jitter, the flight, a
 /// 0.12 s catch and 1.2 s rest; a pause after the second toss's rest.
 inline SyntheticRecording make_recording(const SyntheticBody& body,
                                          const std::vector<SyntheticToss>& tosses,
                                          unsigned seed = 1, double noise = 0.01,
                                          double throw_time = 0.15, double throw_spikes = 4.0,
-                                         double drag = 0.0) {
+                                         double drag = 0.0, double rate = 100.0) {
   std::mt19937 random(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -136,7 +136,7 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
     rec.t.push_back(t);
     rec.omega.push_back(w + rec.bias +
                         noise * Eigen::Vector3d(gauss(random), gauss(random), gauss(random)));
-    t += 0.01 * (1.0 + 0.1 * uniform(random));
+    t += (1.0 + 0.1 * uniform(random)) / rate;
   }
   return rec;
 }

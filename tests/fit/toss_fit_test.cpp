@@ -142,6 +142,26 @@ TEST(TossFit, GivenMomentsAreKeptAndOneTossIsPredicted) {
   EXPECT_FALSE(alone.tosses[0].half_period_predicted.has_value());
 }
 
+TEST(TossFit, AStretchHoldingTheThrowIsAPoorFitAndSaysSo) {
+  // By hand, a stretch that starts 0.1 s before the release: the throw's ramp and spikes are in
+  // it, and no exact motion fits them.
+  const test::SyntheticRecording synthetic = test::make_recording(
+      test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 25);
+  const GyroRecording recording = as_recording(synthetic);
+  const auto& truth = synthetic.tosses;
+  const FitResult fit = fit_recording(
+      recording, hand_flights(recording, {{truth[0].t_start + 0.02, truth[0].t_end - 0.02},
+                                          {truth[1].t_start - 0.1, truth[1].t_end - 0.02}}));
+  ASSERT_EQ(fit.tosses.size(), 2u);
+  EXPECT_TRUE(fit.tosses[1].poor_fit);
+  bool said = false;
+  for (const std::string& note : fit.body.notes) said |= note.rfind("toss 2: ", 0) == 0;
+  EXPECT_TRUE(said);
+  // The clean stretches of the other tests are not.
+  const FitResult clean = fit_recording(recording, find_flights(recording));
+  for (const TossFit& toss : clean.tosses) EXPECT_FALSE(toss.poor_fit);
+}
+
 TEST(TossFit, DragShowsAsLDecay) {
   // |ω| shrinking as e^(−0.05 τ): |L| loses 5 % a second; the straight line through
   // e^(−0.05 τ) over 1.2 s has slope/intercept −0.0515 (least squares), within 5 % of 0.05.

@@ -1,0 +1,78 @@
+// The fit product: its layout, its two CSVs' exact bytes for a fit given by hand, and make_fit
+// on a synthetic export: every file made, up to date the second time, made again with --force.
+#include "products/fit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "common/text_file.hpp"
+#include "fit/synthetic_recording.hpp"
+#include "support/scratch.hpp"
+
+namespace bookspin::products {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(FitProduct, LayoutNamesEveryFile) {
+  const FitLayout layout = fit_layout("out", "rec", 2);
+  EXPECT_EQ(layout.csv, fs::path("out/rec-fit.csv"));
+  EXPECT_EQ(layout.body_csv, fs::path("out/rec-fit-body.csv"));
+  EXPECT_EQ(layout.pngs, (std::vector<fs::path>{"out/rec-toss1.png", "out/rec-toss2.png"}));
+  EXPECT_EQ(layout.manifest, fs::path("out/rec/fit-manifest.json"));
+  EXPECT_EQ(layout.outputs().size(), 4u);
+}
+
+TEST(FitProduct, CsvsOfAFitGivenByHand) {
+  fit::FitResult result;
+  fit::TossFit toss;
+  toss.flight = {10, 120, 1.5, 2.75};
+  toss.omega0 = Eigen::Vector3d(0.25, 14, -0.5);
+  toss.half_period_fitted = 0.625;
+  toss.half_period_predicted = 0.5;
+  toss.residual_rms = 0.01;
+  toss.L_decay = 0.125;
+  result.tosses.push_back(toss);
+  result.body.ratios = Eigen::Vector3d(0.25, 0.75, 1.0);
+  result.body.axes = Eigen::Matrix3d::Identity();
+  result.body.ratio_sigma = Eigen::Vector3d(0.001, 0.002, 0.0);
+  EXPECT_EQ(csv_text(fit_toss_csv(result), "fit CSV"),
+            "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
+            "half_period_fitted,half_period_predicted,residual_rms,L_decay,stable,poor_fit\n"
+            "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,0.01,0.125,no,no\n");
+  EXPECT_EQ(csv_text(fit_body_csv(result), "fit body CSV"),
+            "I1_over_I3,I2_over_I3,I3_over_I3,I1_sigma,I2_sigma,axis1_x,axis1_y,axis1_z,axis2_x,"
+            "axis2_y,axis2_z,axis3_x,axis3_y,axis3_z,axis1_sigma_deg,axis2_sigma_deg,"
+            "axis3_sigma_deg,moments,tosses\n"
+            "0.25,0.75,1,0.001,0.002,1,0,0,0,1,0,0,0,1,,,,fitted,1\n");
+}
+
+TEST(FitProduct, MakesEveryFileThenIsUpToDate) {
+  const fs::path dir = bookspin::test::fresh_dir("products/fit");
+  const auto synthetic = fit::test::make_recording(
+      fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 6);
+  fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::comma);
+  FitJob job;
+  job.recording = dir / "toss";
+  job.out_dir = dir / "out";
+  job.width = 640;
+  job.height = 360;
+  std::vector<std::string> summary;
+  EXPECT_EQ(make_fit(job, &summary), cache::Outcome::made);
+  const FitLayout layout = fit_layout(job.out_dir, "toss", 2);
+  for (const fs::path& path : layout.outputs()) EXPECT_TRUE(fs::exists(path)) << path;
+  EXPECT_TRUE(fs::exists(layout.manifest));
+  ASSERT_FALSE(summary.empty());
+  EXPECT_EQ(summary[0].rfind("bias (rad/s, from ", 0), 0u) << summary[0];
+  EXPECT_EQ(make_fit(job), cache::Outcome::up_to_date);
+  job.freshness.force = true;
+  EXPECT_EQ(make_fit(job), cache::Outcome::made);
+  // Another --moments is another fit.
+  job.freshness.force = false;
+  job.moments = Eigen::Vector3d(49.64, 225.64, 274.0);
+  EXPECT_EQ(make_fit(job), cache::Outcome::made);
+}
+
+}  // namespace
+}  // namespace bookspin::products
