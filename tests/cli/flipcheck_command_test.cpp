@@ -54,9 +54,9 @@ TEST(FlipcheckCommand, JudgesSimulatesCsvOfAnEngineMode) {
   const CliResult simulated = run_bookspin("simulate " + scenario("mujoco-test-box") + set +
                                            " --csv " + quoted(dir / "euler.csv"));
   ASSERT_EQ(simulated.status, 0) << simulated.output;
-  const SplitResult judged = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") +
-                                                " " + quoted(dir / "euler.csv") + " -o " +
-                                                quoted(dir.path()));
+  const SplitResult judged =
+      run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + " " +
+                         quoted(dir / "euler.csv") + " -o " + quoted(dir.path()));
   EXPECT_EQ(judged.status, 0) << judged.err;
   // MuJoCo's own test: E/E0 = 1.0869 after 500 explicit steps of its box.
   EXPECT_NE(judged.out.find("FAIL (energy drift 0.0869;"), std::string::npos) << judged.out;
@@ -64,16 +64,17 @@ TEST(FlipcheckCommand, JudgesSimulatesCsvOfAnEngineMode) {
 
 TEST(FlipcheckCommand, ABadMotionFileIsOneLineAndExitTwoWithNothingWritten) {
   ScratchDir dir;
-  std::ofstream(dir / "bad.csv") << "t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.01,1,0,0,0,1,inf,3\n";
+  std::ofstream(dir / "bad.csv")
+      << "t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.01,1,0,0,0,1,inf,3\n";
   const SplitResult r = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + " " +
                                            quoted(dir / "bad.csv") + " -o " + quoted(dir / "out"));
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "bookspin: error: " + (dir / "bad.csv").string() +
                        ":3: wy: \"inf\" is not a finite number\n");
   EXPECT_FALSE(fs::exists(dir / "out"));
-  const SplitResult missing = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") +
-                                                 " " + quoted(dir / "none.csv") + " -o " +
-                                                 quoted(dir / "out"));
+  const SplitResult missing =
+      run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + " " +
+                         quoted(dir / "none.csv") + " -o " + quoted(dir / "out"));
   EXPECT_EQ(missing.status, 2);
   EXPECT_FALSE(fs::exists(dir / "out"));
 }

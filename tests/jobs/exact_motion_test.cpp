@@ -17,8 +17,8 @@ namespace bookspin::jobs {
 namespace {
 
 analysis::Scenario scenario(const std::string& name) {
-  return analysis::scenario_of(scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) +
-                                                  "/scenes/flipcheck/" + name + ".toml"));
+  return analysis::scenario_of(
+      scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/" + name + ".toml"));
 }
 
 Eigen::Quaterniond quaternion(const Eigen::Vector4d& wxyz) {
@@ -32,10 +32,9 @@ TEST(ExactMotion, StartsWhereTheScenarioSaysAndKeepsLAndE) {
     const ExactMotion m = exact_motion(s);
     ASSERT_EQ(m.rows.size(), static_cast<std::size_t>(s.steps) + 1);
     const Eigen::Vector3d& I = s.body.moments;
-    const Eigen::Vector3d omega0 =
-        (I.cwiseProduct(s.initial.omega0_body) +
-         physics::jiggle_delta_L(s.initial.seed, s.initial.jiggle))
-            .cwiseQuotient(I);
+    const Eigen::Vector3d omega0 = (I.cwiseProduct(s.initial.omega0_body) +
+                                    physics::jiggle_delta_L(s.initial.seed, s.initial.jiggle))
+                                       .cwiseQuotient(I);
     EXPECT_TRUE(m.omega0_body.isApprox(omega0, 1e-15));
     EXPECT_EQ(m.omega0_world, m.omega0_body);
     EXPECT_EQ(m.mass, s.body.cage.mass);
@@ -68,7 +67,8 @@ TEST(ExactMotion, TheQuaternionFollowsTheAngularVelocity) {
     if (after.dot(now) < 0) after.coeffs() *= -1;
     const Eigen::Vector4d rate = (after.coeffs() - before.coeffs()) / (2 * s.dt);
     const Eigen::Vector3d& w = m.rows[n].omega_body;
-    const Eigen::Vector4d expected = 0.5 * (now * Eigen::Quaterniond(0, w.x(), w.y(), w.z())).coeffs();
+    const Eigen::Vector4d expected =
+        0.5 * (now * Eigen::Quaterniond(0, w.x(), w.y(), w.z())).coeffs();
     worst = std::max(worst, (rate - expected).norm() / expected.norm());
   }
   // (ω dt)²/6 for |ω| ≈ 3.8, dt = 0.01: 2.4e-4.
