@@ -23,8 +23,8 @@ using physics::Integrator;
 using physics::ModelKind;
 
 Scenario scenario(const std::string& name) {
-  return scenario_of(scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/" +
-                                        name + ".toml"));
+  return scenario_of(
+      scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/" + name + ".toml"));
 }
 
 std::unique_ptr<physics::Simulator> rescaled(const Scenario& s, ModelKind kind) {
@@ -113,7 +113,7 @@ TEST(RescaledEuler, AboutAStableAxisTheEnergyDriftsGeometricallyAtOmegaSquaredDt
 /// back Ω² dt · δ.
 double averaged_tumble_time(const Eigen::Vector3d& I, const StableAxis& a, double L, double delta0,
                             double dt) {
-  const int mid = 0;                   // the book's intermediate axis x
+  const int mid = 0;                      // the book's intermediate axis x
   const int other = a.axis == 2 ? 1 : 2;  // the third axis, 0 at the orbit's point chosen
   const double sign = a.axis == 2 ? 1.0 : -1.0;
   const auto rate = [&](double delta) {
