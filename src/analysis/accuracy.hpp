@@ -26,7 +26,7 @@ struct Method {
 
 /// bookspin's own supported pairs except "exact": particle × {euler, symplectic-euler,
 /// velocity-verlet}, rigid-matrix and rigid-quaternion × {euler, rk4, implicit-midpoint,
-/// splitting, splitting4}.
+/// splitting, splitting4, rescaled-euler}.
 std::vector<Method> all_methods();
 
 /// The rows of `bookspin accuracy`: all_methods(), then engine_methods().

@@ -27,6 +27,11 @@ Scenario scenario_of(const scene::Scene& scene) {
                      ": flipcheck: a comparison scene ([[compare]]) is no scenario; give a scene "
                      "of one model");
   }
+  if (scene.initial.omega0_body.isZero() && scene.initial.jiggle == 0.0) {
+    throw InputError(scene.source.string() +
+                     ": flipcheck: the body is at rest (initial.angular_velocity = [0, 0, 0], "
+                     "no jiggle): nothing to judge");
+  }
   Scenario s;
   s.name = scene.name;
   s.body = scene.body;

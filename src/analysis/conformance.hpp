@@ -24,7 +24,8 @@ struct Scenario {
 };
 
 /// The scenario of a scene: its body and start, dt = time.dt and (frames − 1)·steps_per_frame
-/// steps (a sweep's and `simulate`'s run). Throws InputError for a comparison scene.
+/// steps (a sweep's and `simulate`'s run). Throws InputError for a comparison scene and for a
+/// body at rest (no ω0, no jiggle: every measure would divide by zero).
 Scenario scenario_of(const scene::Scene& scene);
 
 /// The jiggled start every model begins from: ω0 = I_body⁻¹ L0, L0 = I_body ω0 + the jiggle

@@ -109,6 +109,11 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
     }
     const double t = v[0];
     const double n = std::round(t / dt);
+    if (!(n >= 0.0 && n <= static_cast<double>(steps))) {
+      throw InputError(file, line_number, std::string(names[0]),
+                       "t = " + std::string(cells[at[0]]) + " is outside the scenario's 0 … " +
+                           finite_text(static_cast<double>(steps) * dt, "t_end"));
+    }
     if (std::abs(t - n * dt) > 1e-6 * dt) {
       throw InputError(file, line_number, std::string(names[0]),
                        "t = " + std::string(cells[at[0]]) +
@@ -128,11 +133,6 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
                        "t = " + std::string(cells[at[0]]) + " is not step " +
                            std::to_string(index * motion.stride) + " (rows every " +
                            std::to_string(motion.stride) + " steps from t = 0)");
-    }
-    if (step > steps) {
-      throw InputError(file, line_number, std::string(names[0]),
-                       "t = " + std::string(cells[at[0]]) + " is past the scenario's " +
-                           std::to_string(steps) + " steps");
     }
     Eigen::Quaterniond q(v[1], v[2], v[3], v[4]);
     if (!(q.norm() > 0.0)) throw InputError(file, line_number, std::string(names[1]), "q is zero");

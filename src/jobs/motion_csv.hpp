@@ -26,7 +26,7 @@ struct MotionFile {
 /// `wx_world,wy_world,wz_world` (body frame preferred when both are there; turned into the
 /// body frame by R(q)ᵀ); other columns ignored; lines starting with `#` and empty lines
 /// skipped; CRLF read as LF. Each row's t must be a whole number of steps of dt (to 1e-6 of a
-/// step), the first 0, the next ones one stride apart, none past `steps`. Throws InputError
+/// step), the first 0, the next ones one stride apart, none outside 0 … `steps`. Throws InputError
 /// "FILE:LINE: COLUMN: reason" (the line of the file; the column where there is one) for a
 /// missing column, a missing or extra cell, a cell that is not a finite number, q = 0, a
 /// misplaced t, and for a file without rows.

@@ -19,10 +19,10 @@ struct ModelMode {
 
 /// Every mode of every model, by model in the order of ModelKind, each model's default
 /// integrator first: particle × {euler, symplectic-euler, velocity-verlet}; rigid-matrix and
-/// rigid-quaternion × {euler, rk4, implicit-midpoint, splitting, splitting4}; exact × {euler}
-/// (the key is unused); mujoco × {euler, rk4, implicit}; bullet × {implicit-body,
-/// implicit-world, explicit, none}; ode × {step, quickstep, none}. A kind with no row makes
-/// no simulator.
+/// rigid-quaternion × {euler, rk4, implicit-midpoint, splitting, splitting4,
+/// rescaled-euler}; exact × {euler} (the key is unused); mujoco × {euler, rk4, implicit};
+/// bullet × {implicit-body, implicit-world, explicit, none}; ode × {step, quickstep, none}. A
+/// kind with no row makes no simulator.
 std::span<const ModelMode> model_modes();
 
 /// Every model kind, in the order of ModelKind (the names parse_model_kind() accepts).

@@ -40,12 +40,13 @@ class RigidBody : public Simulator {
 
   Body body_;
   ModelConfig config_;
-  NormalizeSchedule schedule_;                   ///< which steps normalize (normalize_every)
-  Corners cage_corners_;                         ///< body.cage's corners, body frame (3×8)
-  Eigen::Vector3d inverse_moments_;              ///< 1 / principal moments, body frame
-  Eigen::Vector3d L_ = Eigen::Vector3d::Zero();  ///< world frame, constant
-  double t_ = 0.0;                               ///< time units
-  std::string failure_;                          ///< why the run ended early; empty while it runs
+  NormalizeSchedule schedule_;       ///< which steps normalize (normalize_every)
+  Corners cage_corners_;             ///< body.cage's corners, body frame (3×8)
+  Eigen::Vector3d inverse_moments_;  ///< 1 / principal moments, body frame
+  /// World frame; constant but under `rescaled-euler`, whose step turns it (§10.7).
+  Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
+  double t_ = 0.0;       ///< time units
+  std::string failure_;  ///< why the run ended early; empty while it runs
 };
 
 }  // namespace bookspin::physics

@@ -7,6 +7,21 @@
 
 namespace bookspin::physics {
 
+RescaledEulerStep rescaled_euler_step(const Eigen::Vector3d& Pi_body,
+                                      const Eigen::Vector3d& inverse_moments, double dt) {
+  // docs/physics.md §10.7: Π̇ = Π × ω (Euler's equations in the body frame), one explicit
+  // step; |Π − dt ω × Π|² = |Π|² + dt²|ω × Π|², so the rescaling only shrinks it back.
+  const Eigen::Vector3d omega = inverse_moments.cwiseProduct(Pi_body);
+  Eigen::Vector3d Pi = Pi_body - dt * omega.cross(Pi_body);
+  const double squared = Pi.squaredNorm();
+  if (squared > 0.0) Pi *= std::sqrt(Pi_body.squaredNorm() / squared);
+  const Eigen::Vector3d turn = dt * inverse_moments.cwiseProduct(Pi);  // ω'·dt, body frame
+  const double angle = turn.norm();
+  Eigen::Quaterniond increment = Eigen::Quaterniond::Identity();
+  if (angle > 0.0) increment = Eigen::Quaterniond(Eigen::AngleAxisd(angle, turn / angle));
+  return {Pi, increment};
+}
+
 std::optional<Eigen::Quaterniond> implicit_midpoint_increment(
     const Eigen::Vector3d& Pi_body, const Eigen::Vector3d& inverse_moments, double dt) {
   // Solve Π_mid = Π_n + (dt/2) Π_mid × I⁻¹Π_mid; a contraction for dt·|ω| ≪ 1.

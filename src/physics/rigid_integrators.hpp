@@ -21,6 +21,19 @@ State rk4_step(const State& y, double dt, F&& f) {
   return y + (dt / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
 }
 
+/// One step of Jolt's and Rapier's gyroscopic integration (`rescaled-euler`,
+/// docs/physics.md §10.7): explicit Euler on the body-frame momentum, Π' = Π − dt·ω × Π with
+/// ω = I⁻¹Π, rescaled to |Π'| = |Π|, then the body turned about the new ω = I⁻¹Π' by the
+/// angle |ω|·dt (the exponential map). First order; keeps |L| exactly, not the energy (it
+/// drifts towards the separatrix value L²/(2 I2)) and not the direction of world L.
+/// `inverse_moments` = diagonal of I_body⁻¹; `Pi_body` body frame; dt in time units.
+struct RescaledEulerStep {
+  Eigen::Vector3d Pi_body;       ///< Π' in the body frame after the step (= before the turn)
+  Eigen::Quaterniond increment;  ///< the body-frame turn, exp(½ dt ω')
+};
+RescaledEulerStep rescaled_euler_step(const Eigen::Vector3d& Pi_body,
+                                      const Eigen::Vector3d& inverse_moments, double dt);
+
 /// Most fixed-point iterations implicit_midpoint_increment() takes before it gives up.
 inline constexpr int kMidpointMaxIterations = 50;
 

@@ -62,6 +62,13 @@ void RigidMatrixModel::step(double dt) {
       R_ = R_ * delta->toRotationMatrix();
       break;
     }
+    case Integrator::rescaled_euler: {
+      // World L turns with the step (docs/physics.md §10.7): L = R' Π'.
+      const RescaledEulerStep s = rescaled_euler_step(R_.transpose() * L_, inverse_moments_, dt);
+      R_ = R_ * s.increment.toRotationMatrix();
+      L_ = R_ * s.Pi_body;
+      break;
+    }
     case Integrator::splitting:
     case Integrator::splitting4: {
       Eigen::Quaterniond delta = Eigen::Quaterniond::Identity();

@@ -10,8 +10,8 @@ namespace bookspin::physics {
 /// optionally R ← U Vᵀ from the SVD R = U Σ Vᵀ (computed as the polar factor of R, see
 /// polar.hpp; the same matrix as JacobiSVD's U Vᵀ to round-off). Corners are R·body
 /// corners, so an unnormalized R stretches the book (paper Figure 10). The other
-/// integrators (rk4, implicit-midpoint, splitting, splitting4: docs/physics.md §10) advance the
-/// same state; an implicit-midpoint step that does not converge ends the run (finite()
+/// integrators (rk4, implicit-midpoint, splitting, splitting4, rescaled-euler: docs/physics.md §10)
+/// advance the same state; an implicit-midpoint step that does not converge ends the run (finite()
 /// false, divergence_reason() says why) and leaves R as it was.
 class RigidMatrixModel final : public RigidBody {
  public:

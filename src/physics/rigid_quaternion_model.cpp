@@ -133,6 +133,15 @@ void RigidQuaternionModel::step(double dt) {
       q_ = q_ * *delta;
       break;
     }
+    case Integrator::rescaled_euler: {
+      // World L turns with the step (docs/physics.md §10.7): the body-frame Π' is carried
+      // through the turn about ω' unchanged, so L = R' Π'.
+      const RescaledEulerStep s = rescaled_euler_step(body_momentum(), inverse_moments_, dt);
+      q_ = (q_ * s.increment).normalized();
+      L_ = q_.toRotationMatrix() * s.Pi_body;
+      t_ += dt;
+      return;
+    }
     case Integrator::splitting:
     case Integrator::splitting4:
       // The increments are unit quaternions, so |q| = 1 + O(ε) here and one Newton step

@@ -12,8 +12,8 @@ namespace bookspin::physics {
 /// by |q|²), ω = R(q) I_body⁻¹ R(q)ᵀ L (world frame), q += ½ dt (0, ω) ⊗ q, then optionally
 /// q /= |q|. The same R(q) places the corners, so with |q| = s ≠ 1 the book is drawn as
 /// (1 − s²) I + s² R(q/s): it distorts and pulsates (paper Figures 11–12). The other
-/// integrators (rk4, implicit-midpoint, splitting, splitting4: docs/physics.md §10) evaluate
-/// ω from R(q/|q|) instead; an implicit-midpoint step that does not converge ends the run
+/// integrators (rk4, implicit-midpoint, splitting, splitting4, rescaled-euler: docs/physics.md §10)
+/// evaluate ω from R(q/|q|) instead; an implicit-midpoint step that does not converge ends the run
 /// (finite() false, divergence_reason() says why) and leaves q as it was.
 class RigidQuaternionModel final : public RigidBody {
  public:

@@ -43,11 +43,13 @@ constexpr ModelMode kModes[] = {
     {ModelKind::rigid_matrix, Integrator::implicit_midpoint},
     {ModelKind::rigid_matrix, Integrator::splitting},
     {ModelKind::rigid_matrix, Integrator::splitting4},
+    {ModelKind::rigid_matrix, Integrator::rescaled_euler},
     {ModelKind::rigid_quaternion, Integrator::euler},
     {ModelKind::rigid_quaternion, Integrator::rk4},
     {ModelKind::rigid_quaternion, Integrator::implicit_midpoint},
     {ModelKind::rigid_quaternion, Integrator::splitting},
     {ModelKind::rigid_quaternion, Integrator::splitting4},
+    {ModelKind::rigid_quaternion, Integrator::rescaled_euler},
     {ModelKind::exact, Integrator::euler},  // the integrator key is unused by "exact"
     {ModelKind::mujoco, Integrator::euler},
     {ModelKind::mujoco, Integrator::rk4},
@@ -61,7 +63,7 @@ constexpr ModelMode kModes[] = {
     {ModelKind::ode, Integrator::none},
 };
 
-constexpr std::array<Named<Integrator>, 14> kIntegratorNames{{
+constexpr std::array<Named<Integrator>, 15> kIntegratorNames{{
     {Integrator::euler, "euler"},
     {Integrator::symplectic_euler, "symplectic-euler"},
     {Integrator::velocity_verlet, "velocity-verlet"},
@@ -76,6 +78,7 @@ constexpr std::array<Named<Integrator>, 14> kIntegratorNames{{
     {Integrator::none, "none"},
     {Integrator::step, "step"},
     {Integrator::quickstep, "quickstep"},
+    {Integrator::rescaled_euler, "rescaled-euler"},
 }};
 
 template <typename Enum, std::size_t N>

@@ -31,6 +31,9 @@ enum class Integrator {
   none,            ///< bullet: no gyroscopic flag; ode: dWorldStep, gyroscopic mode off
   step,            ///< ode: dWorldStep, gyroscopic mode on (ODE's default)
   quickstep,       ///< ode: dWorldQuickStep, gyroscopic mode on
+  /// rigid: Jolt's and Rapier's gyroscopic step, explicit Euler on the body-frame L rescaled to
+  /// keep |L|, then the orientation turned by the new ω (docs/physics.md §10.7)
+  rescaled_euler,
 };
 
 struct ModelConfig {
@@ -153,9 +156,9 @@ class Simulator {
 Eigen::Vector3d jiggle_delta_L(std::uint64_t seed, double amplitude);
 
 /// Whether a model accepts an integrator (particle: euler, symplectic-euler, velocity-verlet;
-/// rigid: euler, rk4, implicit-midpoint, splitting, splitting4; exact: euler, i.e. the key
-/// is unused; mujoco: euler, rk4, implicit; bullet: implicit-body, implicit-world, explicit,
-/// none; ode: step, quickstep, none).
+/// rigid: euler, rk4, implicit-midpoint, splitting, splitting4, rescaled-euler; exact: euler, i.e.
+/// the key is unused; mujoco: euler, rk4, implicit; bullet: implicit-body, implicit-world,
+/// explicit, none; ode: step, quickstep, none).
 bool supports(ModelKind kind, Integrator integrator);
 
 /// True for the other engines' models (mujoco, bullet, ode), which make_simulator() cannot

@@ -252,10 +252,10 @@ TEST(AccuracyMethods, AListNamesTheMethodsInTableOrderEachOnce) {
             (Names{"mujoco:euler", "mujoco:rk4", "mujoco:implicit", "bullet:implicit-body",
                    "bullet:implicit-world", "bullet:explicit", "bullet:none", "ode:step",
                    "ode:quickstep", "ode:none"}));
-  EXPECT_EQ(parse_methods("rigid").size(), 10u);  // 2 models × 5 integrators
+  EXPECT_EQ(parse_methods("rigid").size(), 12u);  // 2 models × 6 integrators
   EXPECT_EQ(parse_methods("particle").size(), 3u);
-  EXPECT_EQ(parse_methods("all").size(), 3u + 10u + 10u);
-  EXPECT_EQ(parse_methods("rigid,all").size(), 23u);
+  EXPECT_EQ(parse_methods("all").size(), 3u + 12u + 10u);
+  EXPECT_EQ(parse_methods("rigid,all").size(), 25u);
 }
 
 TEST(AccuracyMethods, EachMethodIsLabelledByItsModelAndIntegratorNames) {

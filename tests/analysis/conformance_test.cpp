@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "analysis/accuracy.hpp"
+#include "common/errors.hpp"
 #include "engines/models.hpp"
 #include "scene/scene.hpp"
 #include "support/closed_form_flips.hpp"
@@ -120,6 +121,18 @@ TEST(Conformance, KnownChangesOfTheMotionReadBackAsThatChange) {
   const Conformance started = judge_motion(s, off);
   EXPECT_NEAR(started.start_error, 1e-5, 1e-12);
   EXPECT_FALSE(started.pass());
+}
+
+// A comparison scene has no single motion and a body at rest none to judge: both are bad input.
+TEST(Conformance, AComparisonOrABodyAtRestIsNoScenario) {
+  EXPECT_THROW(scenario_of(scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) +
+                                              "/scenes/compare-engines.toml")),
+               InputError);
+  EXPECT_THROW(scenario_of(scene::parse_scene_text("[initial]\nangular_velocity = [0, 0, 0]\n",
+                                                   "rest.toml")),
+               InputError);
+  EXPECT_NO_THROW(scenario_of(scene::parse_scene_text(
+      "[initial]\nangular_velocity = [0, 0, 0]\njiggle = 0.01\n", "jiggled.toml")));
 }
 
 /// The book spun about its largest axis z, L (fixed length) leaning towards x by α = α_end·t/t_end

@@ -209,7 +209,8 @@ def check_model_controls(driver, page):
         fail(f"the exact model leaves controls it does not use shown: hidden are only {hidden}")
     from selenium.webdriver.support.ui import Select
     expected = {"particle": ["euler", "symplectic-euler", "velocity-verlet"],
-                "rigid-quaternion": ["euler", "rk4", "implicit-midpoint", "splitting", "splitting4"]}
+                "rigid-quaternion": ["euler", "rk4", "implicit-midpoint", "splitting", "splitting4",
+                                     "rescaled-euler"]}
     for model, integrators in expected.items():
         Select(driver.find_element("id", "model")).select_by_value(model)
         offered = driver.execute_script(

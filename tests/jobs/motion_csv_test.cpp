@@ -89,7 +89,11 @@ TEST(MotionCsv, EachBadFileIsOneLineNamingItsLineAndColumn) {
             "run.csv:4: t: t = 0.3 is not step 4 (rows every 2 steps from t = 0)");
   EXPECT_EQ(error_of(head + row0 + "0,1,0,0,0,1,2,3\n"), "run.csv:3: t: t does not increase");
   EXPECT_EQ(error_of(head + row0 + "1.1,1,0,0,0,1,2,3\n"),
-            "run.csv:3: t: t = 1.1 is past the scenario's 10 steps");
+            "run.csv:3: t: t = 1.1 is outside the scenario's 0 … 1");
+  EXPECT_EQ(error_of(head + row0 + "1e300,1,0,0,0,1,2,3\n"),
+            "run.csv:3: t: t = 1e300 is outside the scenario's 0 … 1");
+  EXPECT_EQ(error_of(head + "-0.1,1,0,0,0,1,2,3\n"),
+            "run.csv:2: t: t = -0.1 is outside the scenario's 0 … 1");
   EXPECT_EQ(error_of(head + row0 + "0.1,0,0,0,0,1,2,3\n"), "run.csv:3: qw: q is zero");
 }
 

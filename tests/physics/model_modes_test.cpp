@@ -26,11 +26,13 @@ const std::vector<std::string> kDocumented{"particle:euler",
                                            "rigid-matrix:implicit-midpoint",
                                            "rigid-matrix:splitting",
                                            "rigid-matrix:splitting4",
+                                           "rigid-matrix:rescaled-euler",
                                            "rigid-quaternion:euler",
                                            "rigid-quaternion:rk4",
                                            "rigid-quaternion:implicit-midpoint",
                                            "rigid-quaternion:splitting",
                                            "rigid-quaternion:splitting4",
+                                           "rigid-quaternion:rescaled-euler",
                                            "exact:euler",
                                            "mujoco:euler",
                                            "mujoco:rk4",
@@ -62,7 +64,7 @@ TEST(ModelModes, SupportsAndTheDefaultReadTheTable) {
       supported += documented ? 1 : 0;
     }
   }
-  EXPECT_EQ(supported, 24);
+  EXPECT_EQ(supported, 26);
   EXPECT_EQ(default_integrator(ModelKind::particle), Integrator::euler);
   EXPECT_EQ(default_integrator(ModelKind::rigid_quaternion), Integrator::euler);
   EXPECT_EQ(default_integrator(ModelKind::exact), Integrator::euler);

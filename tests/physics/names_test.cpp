@@ -42,7 +42,8 @@ TEST(Names, IntegratorsListEveryIntegratorOnceInOrder) {
                                          Integrator::explicit_gyro,
                                          Integrator::none,
                                          Integrator::step,
-                                         Integrator::quickstep};
+                                         Integrator::quickstep,
+                                         Integrator::rescaled_euler};
   EXPECT_EQ(listed, expected);
   for (Integrator integrator : listed) {
     Integrator parsed =

@@ -138,7 +138,7 @@ TEST(ModelReader, UnknownIntegratorListsEveryName) {
   const std::string message = error_of(model_table("rigid-matrix", "leapfrog"));
   EXPECT_NE(message.find("(expected euler, symplectic-euler, velocity-verlet, rk4, "
                          "implicit-midpoint, splitting, splitting4, implicit, implicit-body, "
-                         "implicit-world, explicit, none, step, quickstep)"),
+                         "implicit-world, explicit, none, step, quickstep, rescaled-euler)"),
             std::string::npos)
       << message;
 }
