@@ -19,6 +19,11 @@ std::string short_number(double value) {
   return text;
 }
 
+/// A judgement CSV's number: shortest round-trip form, an empty cell for none.
+CsvNumber number(const std::optional<double>& value) {
+  return CsvNumber{value, nullptr, NumberStyle::shortest};
+}
+
 }  // namespace
 
 Scenario scenario_of(const scene::Scene& scene) {
@@ -49,10 +54,12 @@ Eigen::Vector3d start_omega(const Scenario& scenario) {
 Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& motion,
                          const ConformanceThresholds& limits) {
   BOOKSPIN_ASSERT(!motion.empty() && motion.front().step == 0);
+  // The physics first (start, exact motion, the rows' diagnostics), then the measures of
+  // analysis/motion.hpp over them.
   const Eigen::Vector3d& moments = s.body.moments;
   const Eigen::Vector3d omega0 = start_omega(s);
   const physics::ExactRotation exact(moments, omega0);
-  const int mid = intermediate_axis(moments);
+  const int mid = physics::principal_order(moments)[1];  // the intermediate axis
   const double I2 = moments[mid];
 
   Conformance c;
@@ -85,6 +92,8 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
   for (const MotionSample& row : motion) {
     const double t = static_cast<double>(row.step) * s.dt;
     const physics::Diagnostics d = row.step == 0 ? d0 : diagnostics_of(row);
+    const Eigen::Vector3d L_exact = exact.angular_momentum_body(t);
+    if (std::abs(L_exact[c.spin_axis]) < 0.5 * exact.angular_momentum_norm()) exact_tumbles = true;
     c.energy_drift = std::max(c.energy_drift, std::abs(d.energy_total / E0 - 1.0));
     c.L_drift = std::max(c.L_drift, std::abs(d.L.norm() / L0 - 1.0));
     flips.observe(t, d.cos_axis_L[mid]);
@@ -92,8 +101,6 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
     const double r = ratio(d);
     c.separatrix_ratio_drift = std::max(c.separatrix_ratio_drift, std::abs(r / r0 - 1.0));
     c.separatrix_approach = std::max(c.separatrix_approach, (r - r0) / (1.0 - r0));
-    const Eigen::Vector3d L_exact = exact.angular_momentum_body(t);
-    if (std::abs(L_exact[c.spin_axis]) < 0.5 * exact.angular_momentum_norm()) exact_tumbles = true;
   }
   c.stable_spin = c.spin_axis != mid && !exact_tumbles;
   const double t_last = static_cast<double>(c.last_step) * s.dt;
@@ -141,6 +148,47 @@ std::string verdict_line(const Conformance& c) {
   if (c.stable_spin)
     line += c.tumble_time ? ", tumbles at t = " + short_number(*c.tumble_time) : ", no tumble";
   return line;
+}
+
+CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotion>& judged) {
+  CsvTable table;
+  table.columns = {"scenario",
+                   "motion",
+                   "verdict",
+                   "stride",
+                   "last_step",
+                   "start_error",
+                   "energy_drift",
+                   "L_drift",
+                   "flips",
+                   "flips_exact",
+                   "first_flip",
+                   "first_flip_exact",
+                   "first_flip_error",
+                   "orientation_error",
+                   "stable_spin",
+                   "tumble_time",
+                   "separatrix_ratio_drift",
+                   "separatrix_approach",
+                   "failures"};
+  for (const JudgedMotion& j : judged) {
+    const Conformance& c = j.result;
+    std::string failures;
+    for (const std::string& f : c.failures) failures += (failures.empty() ? "" : "; ") + f;
+    const auto if_stable = [&c](double value) {
+      return number(c.stable_spin ? std::optional<double>(value) : std::nullopt);
+    };
+    table.rows.push_back(
+        {scenario.name, j.file.filename().string(), std::string(c.pass() ? "pass" : "fail"),
+         std::to_string(c.stride), std::to_string(c.last_step), number(c.start_error),
+         number(c.energy_drift), number(c.L_drift), std::to_string(c.flips),
+         std::to_string(c.flips_exact), number(c.first_flip), number(c.first_flip_exact),
+         number(c.first_flip_error), number(c.orientation_error),
+         std::string(c.stable_spin ? "1" : "0"),
+         number(c.stable_spin ? c.tumble_time : std::nullopt), if_stable(c.separatrix_ratio_drift),
+         if_stable(c.separatrix_approach), failures});
+  }
+  return table;
 }
 
 }  // namespace bookspin::analysis

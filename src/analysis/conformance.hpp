@@ -3,10 +3,12 @@
 // written by any engine against the exact motion from the same start (docs/physics.md §8,
 // §14). Physics only: the motion comes in as values (jobs/motion_csv.hpp reads the file).
 #include <Eigen/Geometry>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "common/csv_writer.hpp"
 #include "physics/body.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/simulator.hpp"
@@ -83,5 +85,16 @@ Conformance judge_motion(const Scenario& scenario, const std::vector<MotionSampl
 
 /// One line: "PASS" or "FAIL (reasons)", then the measures.
 std::string verdict_line(const Conformance& c);
+
+/// One motion file judged: the file as given and how its motion compares.
+struct JudgedMotion {
+  std::filesystem::path file;
+  Conformance result;
+};
+
+/// The judgement as a table (docs/flipcheck.md, "The judgement CSV"): one row per motion, in
+/// the order given, named by its file name; every number in shortest round-trip form, an
+/// empty cell where a value does not apply (no flip, not a stable spin). A value, no I/O.
+CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotion>& judged);
 
 }  // namespace bookspin::analysis

@@ -45,8 +45,11 @@ void remove_outputs_of_earlier_run(const fs::path& out_dir, const std::vector<st
 }  // namespace
 
 std::string cached_head(const CachedOutputs& cached) {
-  return cached.scene ? manifest_head(cached.command, cached.options, *cached.scene)
-                      : manifest_head(cached.command, cached.options);
+  JsonObject options = cached.options;
+  if (!cached.input_files.empty())
+    options.push_back({"input_files", input_files_json(cached.input_files)});
+  return cached.scene ? manifest_head(cached.command, options, *cached.scene)
+                      : manifest_head(cached.command, options);
 }
 
 Outcome make_cached(const CachedOutputs& cached, const Freshness& freshness,

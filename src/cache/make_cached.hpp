@@ -31,6 +31,10 @@ struct CachedOutputs {
   /// make() puts its outputs in place together or not at all (output::OutputSet), so when it
   /// throws, the earlier outputs and their manifest are still true and the manifest is kept.
   bool all_or_nothing = false;
+  /// Files the outputs are read from besides the scene's own (the motion files a judgement
+  /// reads): the head's options gain `input_files`, each file's name and SHA-256
+  /// (manifest_head.hpp, input_files_json).
+  std::vector<std::filesystem::path> input_files = {};
 };
 
 /// What a product's make() put in place.
@@ -40,8 +44,8 @@ struct Made {
 };
 
 /// The head of `cached`'s manifest (manifest_head.hpp): command, options and, with a scene, the
-/// program, the resolved scene and its input files' SHA-256. Throws InputError when an input
-/// file cannot be read.
+/// program, the resolved scene and its input files' SHA-256, and the SHA-256 of
+/// `cached.input_files`. Throws InputError when an input file cannot be read.
 std::string cached_head(const CachedOutputs& cached);
 
 /// (cached, freshness, make) => the outputs make() puts in place + their manifest, or nothing

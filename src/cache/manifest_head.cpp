@@ -52,6 +52,15 @@ std::string surface_hash(const physics::Body& body) {
 
 }  // namespace
 
+JsonValue input_files_json(const std::vector<std::filesystem::path>& files) {
+  JsonArray entries;
+  for (const fs::path& file : files) {
+    entries.push_back({JsonObject{{"file", {file.filename().string()}},
+                                  {"sha256", {hash_of("input", file.string())}}}});
+  }
+  return {std::move(entries), true};
+}
+
 std::string manifest_head(const std::string& command, const JsonObject& members) {
   JsonObject head{{"manifest", {std::int64_t{1}}}, {"command", {command}}};
   head.insert(head.end(), members.begin(), members.end());

@@ -8,7 +8,9 @@
 // the scene reads as bytes (textures, the mesh). Everything an output depends on and nothing
 // else: not --jobs, not the path the scene was given by, not the scene file's comments. The
 // scene file's path and SHA-256 go in the manifest's note (recorded, not compared).
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "common/json_writer.hpp"
 #include "scene/scene.hpp"
@@ -21,6 +23,10 @@ namespace bookspin::cache {
 
 /// The note of every manifest: the scene file's absolute path and SHA-256. Throws InputError.
 std::string manifest_note(const scene::Scene& scene);
+
+/// Files an output is read from, as a head member: one object per file, its file name and
+/// "sha256:<hex>" of its bytes, over lines. Throws InputError naming a file that cannot be read.
+JsonValue input_files_json(const std::vector<std::filesystem::path>& files);
 
 /// The head of a manifest that names no scene (the explorer page, the gallery): the manifest
 /// format, `command`, then `members`.

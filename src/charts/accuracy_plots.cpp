@@ -25,10 +25,18 @@ void paint(overlay::Series& s, std::size_t index) {
   s.r = c.r, s.g = c.g, s.b = c.b;
 }
 
+/// The palette index of bookspin's own integrator: its place in physics::Integrator, except
+/// rescaled_euler, whose place would cycle onto splitting's colour (an engine's mode is
+/// painted by its place among that engine's modes, in style_series).
+std::size_t integrator_colour(physics::Integrator integrator) {
+  return integrator == physics::Integrator::rescaled_euler ? 7
+                                                           : static_cast<std::size_t>(integrator);
+}
+
 }  // namespace
 
 void style_series(const analysis::Method& m, overlay::Series& s) {
-  paint(s, static_cast<std::size_t>(m.integrator));
+  paint(s, integrator_colour(m.integrator));
   s.dashed = m.kind == physics::ModelKind::rigid_quaternion;
   if (m.kind == physics::ModelKind::particle)
     s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(m.integrator);

@@ -55,7 +55,7 @@ int judge_motions(const FlipcheckOptions& options) {
   job.out_dir = options.out_dir;
   job.freshness = {options.force, options.verify, remake_note};
   const products::FlipcheckJudgeResult result = products::make_flipcheck_judge(job);
-  for (const products::JudgedMotion& j : result.judged)
+  for (const analysis::JudgedMotion& j : result.judged)
     std::cout << job.scene.name << " " << j.file.string() << ": "
               << analysis::verdict_line(j.result) << '\n';
   const auto layout = products::flipcheck_judge_layout(options.out_dir, job.scene);

@@ -5,7 +5,6 @@
 #include "jobs/motion_csv.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
-#include "output/sha256.hpp"
 
 namespace bookspin::products {
 
@@ -14,10 +13,6 @@ namespace {
 JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.y()}, {v.z()}}}; }
 
 CsvNumber number(double value) { return CsvNumber{value, nullptr, NumberStyle::shortest}; }
-
-CsvNumber maybe(const std::optional<double>& value) {
-  return CsvNumber{value, nullptr, NumberStyle::shortest};
-}
 
 }  // namespace
 
@@ -69,8 +64,8 @@ CsvTable exact_motion_csv(const jobs::ExactMotion& m) {
 }
 
 cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
-  const analysis::Scenario scenario = analysis::scenario_of(job.scene);
   const FlipcheckExportLayout layout = flipcheck_export_layout(job.out_dir, job.scene);
+  const analysis::Scenario scenario = analysis::scenario_of(job.scene);
   const cache::CachedOutputs cached{job.scene.name + "-flipcheck",
                                     layout.manifest,
                                     "flipcheck export",
@@ -79,9 +74,10 @@ cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
                                     &job.scene};
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
-    const std::string json =
-        json_text(scenario_json(motion), "flipcheck scenario", JsonLayout::indented) + "\n";
-    const std::string csv = csv_text(exact_motion_csv(motion), "flipcheck exact motion CSV");
+    const JsonValue start = scenario_json(motion);
+    const CsvTable table = exact_motion_csv(motion);
+    const std::string json = json_text(start, "flipcheck scenario", JsonLayout::indented) + "\n";
+    const std::string csv = csv_text(table, "flipcheck exact motion CSV");
     output::prepare_output_dir(layout.json.parent_path());
     output::write_text_file(layout.json, json);
     output::write_text_file(layout.csv, csv);
@@ -95,69 +91,21 @@ FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir
           out_dir / scene.name / "flipcheck-judge-manifest.json"};
 }
 
-CsvTable judge_csv(const analysis::Scenario& scenario, const std::vector<JudgedMotion>& judged) {
-  CsvTable table;
-  table.columns = {"scenario",
-                   "motion",
-                   "verdict",
-                   "stride",
-                   "last_step",
-                   "start_error",
-                   "energy_drift",
-                   "L_drift",
-                   "flips",
-                   "flips_exact",
-                   "first_flip",
-                   "first_flip_exact",
-                   "first_flip_error",
-                   "orientation_error",
-                   "stable_spin",
-                   "tumble_time",
-                   "separatrix_ratio_drift",
-                   "separatrix_approach",
-                   "failures"};
-  for (const JudgedMotion& j : judged) {
-    const analysis::Conformance& c = j.result;
-    std::string failures;
-    for (const std::string& f : c.failures) failures += (failures.empty() ? "" : "; ") + f;
-    table.rows.push_back(
-        {scenario.name, j.file.filename().string(), std::string(c.pass() ? "pass" : "fail"),
-         std::to_string(c.stride), std::to_string(c.last_step), number(c.start_error),
-         number(c.energy_drift), number(c.L_drift), std::to_string(c.flips),
-         std::to_string(c.flips_exact), maybe(c.first_flip), maybe(c.first_flip_exact),
-         maybe(c.first_flip_error), number(c.orientation_error),
-         std::string(c.stable_spin ? "1" : "0"),
-         maybe(c.stable_spin ? c.tumble_time : std::nullopt),
-         maybe(c.stable_spin ? std::optional<double>(c.separatrix_ratio_drift) : std::nullopt),
-         maybe(c.stable_spin ? std::optional<double>(c.separatrix_approach) : std::nullopt),
-         failures});
-  }
-  return table;
-}
-
 FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
+  const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, job.scene);
   const analysis::Scenario scenario = analysis::scenario_of(job.scene);
   FlipcheckJudgeResult result;
-  JsonArray hashes;
   for (const std::filesystem::path& file : job.motions) {
     const jobs::MotionFile motion = jobs::read_motion_csv(file, scenario.dt, scenario.steps);
     result.judged.push_back({file, analysis::judge_motion(scenario, motion.rows)});
-    const auto hash = output::sha256_file(file);
-    if (!hash) throw InputError(file.string() + ": cannot read the motion file");
-    hashes.push_back({JsonObject{{"file", {file.filename().string()}}, {"sha256", {*hash}}}});
   }
-  const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, job.scene);
-  const JsonObject options{{"motions", {std::move(hashes), true}}};
-  const cache::CachedOutputs cached{job.scene.name + "-judge",
-                                    layout.manifest,
-                                    "flipcheck judge",
-                                    options,
-                                    job.out_dir,
-                                    &job.scene};
+  const CsvTable table = analysis::judgement_table(scenario, result.judged);
+  const cache::CachedOutputs cached{
+      job.scene.name + "-judge", layout.manifest, "flipcheck judge", {}, job.out_dir, &job.scene,
+      /*all_or_nothing=*/false,  job.motions};
   result.outcome = cache::make_cached(cached, job.freshness, [&] {
-    const std::string csv = csv_text(judge_csv(scenario, result.judged), "flipcheck judge CSV");
     output::prepare_output_dir(layout.csv.parent_path());
-    output::write_text_file(layout.csv, csv);
+    output::write_text_file(layout.csv, csv_text(table, "flipcheck judge CSV"));
     return cache::Made{{layout.csv}};
   });
   return result;

@@ -66,19 +66,10 @@ struct FlipcheckJudgeJob {
   cache::Freshness freshness;
 };
 
-/// One motion judged.
-struct JudgedMotion {
-  std::filesystem::path file;
-  analysis::Conformance result;
-};
-
 struct FlipcheckJudgeResult {
   cache::Outcome outcome = cache::Outcome::made;
-  std::vector<JudgedMotion> judged;  ///< in the order given (also when up to date)
+  std::vector<analysis::JudgedMotion> judged;  ///< in the order given (also when up to date)
 };
-
-/// The judgement's CSV: one row per motion (docs/flipcheck.md, "The judgement CSV").
-CsvTable judge_csv(const analysis::Scenario& scenario, const std::vector<JudgedMotion>& judged);
 
 /// (scenario, motions) => OUT/<scenario>-judge.csv + manifest.
 /// Reads every motion file (jobs::read_motion_csv, before anything is written: a bad file is

@@ -90,11 +90,13 @@ const std::vector<Covered> kEnergyColumns{
     {"rigid-matrix implicit-midpoint", kAccuracy},
     {"rigid-matrix splitting", kAccuracy},
     {"rigid-matrix splitting4", kAccuracy},
+    {"rigid-matrix rescaled-euler", kAccuracy},
     {"rigid-quaternion euler", kAccuracy},
     {"rigid-quaternion rk4", kAccuracy},
     {"rigid-quaternion implicit-midpoint", kAccuracy},
     {"rigid-quaternion splitting", kAccuracy},
     {"rigid-quaternion splitting4", kAccuracy},
+    {"rigid-quaternion rescaled-euler", kAccuracy},
 };
 
 /// The diagnostics CSV (docs/physics.md §9). The centre of mass stays at the origin in every

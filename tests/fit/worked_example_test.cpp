@@ -16,7 +16,7 @@ namespace {
 std::string three(const std::optional<double>& value) {
   if (!value) return "-";
   char text[32];
-  std::snprintf(text, sizeof text, "%.3f", value);
+  std::snprintf(text, sizeof text, "%.3f", *value);
   return text;
 }
 

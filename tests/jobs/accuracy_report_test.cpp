@@ -74,7 +74,7 @@ TEST(AccuracyReport, TheTablesLeaveCellsEmptyWhereThereIsNoValue) {
   row.flips_exact = 2;
   row.ns_per_step = 12.345;
   row.diverged = true;
-  const AccuracyReport report{10.0, {row.method}, {row}, {}};
+  const AccuracyReport report{10.0, {row.method}, {row}, {}, {}, {}};
   EXPECT_EQ(csv_text(accuracy_csv(report), "accuracy CSV"),
             "model,integrator,dt,steps,t_end,orientation_error_rad,energy_drift,L_drift,"
             "flip_period,flip_period_error,ns_per_step,diverged,first_flip,first_flip_error,"

@@ -62,7 +62,9 @@ TEST(NormalizeEvery, NormalizesExactlyOnStepsNTwoNAndAfterReset) {
         for (int s = 1; s < kEvery; ++s) {
           every->step(dt);
           never->step(dt);
-          if (block == 0) ASSERT_EQ(state_of(*every), state_of(*never)) << "step " << s;
+          if (block == 0) {
+            ASSERT_EQ(state_of(*every), state_of(*never)) << "step " << s;
+          }
         }
         every->step(dt);
         never->step(dt);

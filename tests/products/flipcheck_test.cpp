@@ -90,7 +90,7 @@ TEST(Flipcheck, TheJudgementIsARowPerMotionAndIsRemadeWhenAMotionChanges) {
   const FlipcheckJudgeResult result = make_flipcheck_judge(job);
   EXPECT_EQ(result.outcome, cache::Outcome::made);
   ASSERT_EQ(result.judged.size(), 2u);
-  for (const JudgedMotion& j : result.judged) EXPECT_TRUE(j.result.pass()) << j.file;
+  for (const analysis::JudgedMotion& j : result.judged) EXPECT_TRUE(j.result.pass()) << j.file;
   const std::vector<std::string> csv =
       lines_of(test::read_file(flipcheck_judge_layout(dir / "out", scene).csv));
   ASSERT_EQ(csv.size(), 3u);
