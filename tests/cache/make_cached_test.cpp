@@ -72,6 +72,24 @@ TEST(MakeCached, MakesAgainWhenTheHeadChangesAndSaysWhy) {
   EXPECT_EQ(names[0], "result");
 }
 
+TEST(MakeCached, MakesAgainWhenAnInputFileChangesAndRefusesOneItCannotRead) {
+  ScratchDir dir;
+  int calls = 0;
+  const auto make = counting_make(dir, "abc", calls);
+  std::ofstream(dir / "motion.csv") << "t\n0\n";
+  CachedOutputs cached = cached_in(dir, kHead);
+  cached.input_files = {dir / "motion.csv"};
+  EXPECT_EQ(run(cached, make), Outcome::made);
+  EXPECT_NE(cached_head(cached).find("\"file\": \"motion.csv\""), std::string::npos);
+  EXPECT_EQ(run(cached, make), Outcome::up_to_date);
+  std::ofstream(dir / "motion.csv") << "t\n1\n";  // same size, other bytes
+  EXPECT_EQ(run(cached, make), Outcome::made);
+  EXPECT_EQ(calls, 2);
+  cached.input_files = {dir / "missing.csv"};
+  EXPECT_THROW(run(cached, make), InputError);
+  EXPECT_EQ(calls, 2);
+}
+
 TEST(MakeCached, MakesAgainWhenAnOutputIsMissingOrChangedSize) {
   ScratchDir dir;
   int calls = 0;
