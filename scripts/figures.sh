@@ -46,7 +46,7 @@ done
   --methods engines,rigid-quaternion:rk4,rigid-quaternion:implicit-midpoint,rigid-quaternion:splitting4 \
   --dt "${dts[@]}" -o "$out"
 if command -v em++ >/dev/null && command -v npm >/dev/null; then
-  bash web/build.sh "$build" && "$bookspin" explore scenes/*.toml sweeps/*.toml -o "$out"
+  bash web/build.sh "$build" && "$bookspin" explore --engines scenes/*.toml sweeps/*.toml -o "$out"
 else
   echo "figures: no emscripten or npm: $out/explorer.html not made (scripts/install-deps.sh)"
 fi
