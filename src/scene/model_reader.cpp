@@ -58,11 +58,13 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
     r.fail("model.kind",
            "unknown model '" + kind + "' (expected " + names(physics::model_kinds()) + ")");
   }
-  // An engine's own default when the integrator is not named here and the model changes to
-  // or from an engine (a tile's engine does not inherit another model's integrator).
+  // A tile takes only the keys that apply to its model: when the integrator is not named here
+  // and the model changes to or from an engine, or to a model without the inherited integrator
+  // (an exact or particle tile in an rk4 scene), the model's own default integrator.
   const bool engine = physics::is_engine(m.kind);
   const physics::Integrator fallback_integrator =
-      m.kind != fallback.kind && (engine || physics::is_engine(fallback.kind))
+      m.kind != fallback.kind && (engine || physics::is_engine(fallback.kind) ||
+                                  !physics::supports(m.kind, fallback.integrator))
           ? physics::default_integrator(m.kind)
           : fallback.integrator;
   const std::string integrator =

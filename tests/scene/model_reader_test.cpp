@@ -161,6 +161,37 @@ TEST(ModelReader, EnginesTakeTheirOwnDefaultIntegrator) {
   }
 }
 
+// A tile takes only the keys that apply to its model: the exact and the particle model have no
+// rk4, so their tiles in an rk4 scene take their own default (euler); a rigid tile keeps the
+// scene's rk4; a tile that names rk4 for a model without it is still refused.
+TEST(ModelReader, TilesOfModelsWithoutTheScenesIntegratorTakeTheirOwnDefault) {
+  const Scene s = parse(R"toml(
+[model]
+kind = "rigid-quaternion"
+integrator = "rk4"
+normalize = true
+[[compare]]
+label = "exact"
+model.kind = "exact"
+[[compare]]
+label = "particle"
+model.kind = "particle"
+[[compare]]
+label = "matrix"
+model.kind = "rigid-matrix"
+)toml");
+  ASSERT_EQ(s.compare.size(), 3u);
+  EXPECT_EQ(s.compare[0].model.integrator, physics::Integrator::euler);
+  EXPECT_EQ(s.compare[1].model.integrator, physics::Integrator::euler);
+  EXPECT_EQ(s.compare[2].model.integrator, physics::Integrator::rk4);
+  EXPECT_TRUE(s.compare[2].model.normalize);
+  EXPECT_NE(error_of("[model]\nkind = \"rigid-quaternion\"\nintegrator = \"rk4\"\n[[compare]]\n"
+                     "label = \"x\"\nmodel.kind = \"exact\"\nmodel.integrator = \"rk4\"\n")
+                .find("compare[1].model.integrator: model 'exact' does not support integrator "
+                      "'rk4'"),
+            std::string::npos);
+}
+
 TEST(ModelReader, EnginesRefuseOtherEnginesModesAndBookspinsSettings) {
   EXPECT_NE(error_of(model_table("bullet", "rk4"))
                 .find("model 'bullet' does not support integrator 'rk4' (expected implicit-body, "
