@@ -1,6 +1,9 @@
 #include "charts/accuracy_plots.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "common/colour.hpp"
 
@@ -33,6 +36,64 @@ std::size_t integrator_colour(physics::Integrator integrator) {
                                                            : static_cast<std::size_t>(integrator);
 }
 
+/// The turn-over chart's y range: 0 (never turns over) to twice the exact count; a ratio beyond
+/// is drawn to the top edge, with a mark where its line leaves the range.
+constexpr double kMaxTurnoverRatio = 2.0;
+
+/// The energy chart's top: a relative energy error of 100 (E off by a hundred times E0); a
+/// larger one is drawn at the top edge with a mark.
+constexpr double kMaxEnergyError = 1e2;
+
+/// The families of the engines' modes (docs/engines.md), which the charts colour alike.
+enum class ModeFamily { explicit_euler, implicit_euler, rk4, no_gyroscopic_term };
+
+ModeFamily family_of(physics::Integrator integrator) {
+  switch (integrator) {
+    case physics::Integrator::euler:          // MuJoCo's semi-implicit Euler: explicit gyroscopic
+    case physics::Integrator::explicit_gyro:  // Bullet's explicit gyroscopic force
+      return ModeFamily::explicit_euler;
+    case physics::Integrator::rk4:
+      return ModeFamily::rk4;
+    case physics::Integrator::none:
+      return ModeFamily::no_gyroscopic_term;
+    default:  // MuJoCo's implicit, Bullet's implicit body and world, ODE's step and quickstep
+      return ModeFamily::implicit_euler;
+  }
+}
+
+/// The palette index of a family: explicit as bookspin's Euler (blue), RK4 as bookspin's RK4
+/// (pink), implicit green, no gyroscopic term brown.
+std::size_t family_colour(ModeFamily family) {
+  switch (family) {
+    case ModeFamily::explicit_euler:
+      return integrator_colour(physics::Integrator::euler);
+    case ModeFamily::rk4:
+      return integrator_colour(physics::Integrator::rk4);
+    case ModeFamily::no_gyroscopic_term:
+      return 8;
+    default:
+      return 2;
+  }
+}
+
+/// "; |ω0| = 6.28 rad/t, ω·dt = 0.0016 … 0.21 rad": the spin of the run (rad per time unit)
+/// and the angle it turns per step at the rows' smallest and largest dt, short enough to share
+/// a title line; "" without a spin.
+std::string spin_text(double spin_rate, const std::vector<analysis::AccuracyRow>& rows) {
+  if (!(spin_rate > 0.0) || rows.empty()) return "";
+  double lo = rows.front().dt, hi = lo;
+  for (const auto& r : rows) lo = std::min(lo, r.dt), hi = std::max(hi, r.dt);
+  char text[120];
+  if (lo == hi) {
+    std::snprintf(text, sizeof text, "; |ω0| = %.3g rad/t, ω·dt = %.2g rad", spin_rate,
+                  spin_rate * lo);
+  } else {
+    std::snprintf(text, sizeof text, "; |ω0| = %.3g rad/t, ω·dt = %.2g … %.2g rad", spin_rate,
+                  spin_rate * lo, spin_rate * hi);
+  }
+  return text;
+}
+
 }  // namespace
 
 void style_series(const analysis::Method& m, overlay::Series& s) {
@@ -40,8 +101,8 @@ void style_series(const analysis::Method& m, overlay::Series& s) {
   s.dashed = m.kind == physics::ModelKind::rigid_quaternion;
   if (m.kind == physics::ModelKind::particle)
     s.r = s.g = s.b = 0.55 - 0.15 * static_cast<int>(m.integrator);
-  // The engines (docs/engines.md): one mark per engine, one colour per mode within it, solid.
-  // bookspin's own models have no mark.
+  // The engines (docs/engines.md): one mark per engine, one colour per family of modes
+  // (explicit, implicit, RK4, no gyroscopic term), solid; bookspin's own models have no mark.
   switch (m.kind) {
     case physics::ModelKind::mujoco:
       s.marker = overlay::Marker::square;
@@ -55,12 +116,20 @@ void style_series(const analysis::Method& m, overlay::Series& s) {
     default:
       return;
   }
-  std::size_t mode = 0;
+  const ModeFamily family = family_of(m.integrator);
+  paint(s, family_colour(family));
+  // A second mode of the same family in one engine (Bullet's implicit body and world, ODE's
+  // step and quickstep): the family's colour, lighter, so the two lines stay apart.
+  int before = 0;
   for (const auto& e : analysis::engine_methods()) {
     if (same_method(e, m)) break;
-    if (e.kind == m.kind) ++mode;
+    if (e.kind == m.kind && family_of(e.integrator) == family) ++before;
   }
-  paint(s, mode);
+  if (before > 0) {
+    const double toward_white = 0.5;
+    s.r += (1.0 - s.r) * toward_white, s.g += (1.0 - s.g) * toward_white;
+    s.b += (1.0 - s.b) * toward_white;
+  }
 }
 
 namespace {
@@ -92,21 +161,63 @@ overlay::PlotSpec against_dt(const std::vector<analysis::AccuracyRow>& rows,
 
 overlay::PlotSpec orientation_error_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
                                                const std::vector<analysis::Method>& methods,
-                                               double flips) {
+                                               double flips, double spin_rate) {
   overlay::PlotSpec spec = against_dt(
       rows, methods, true, [](const analysis::AccuracyRow& r) { return r.orientation_error; });
-  spec.title = title_of("Orientation error after %d flips, against the exact solution", flips);
+  spec.title = spin_rate > 0.0 ? title_of("Orientation error after %d flips", flips) +
+                                     spin_text(spin_rate, rows)
+                               : title_of(
+                                     "Orientation error after %d flips, against the exact "
+                                     "solution",
+                                     flips);
   spec.y_label = "orientation error (rad)";
   return spec;
 }
 
 overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
-                                    const std::vector<analysis::Method>& methods, double flips) {
+                                    const std::vector<analysis::Method>& methods, double flips,
+                                    double spin_rate) {
   overlay::PlotSpec spec = against_dt(
-      rows, methods, false, [](const analysis::AccuracyRow& r) { return r.energy_drift; });
-  spec.title = title_of(
-      "Largest relative energy error over %d exact flip periods, against the time step", flips);
+      rows, methods, true, [](const analysis::AccuracyRow& r) { return r.energy_drift; });
+  // An error beyond kMaxEnergyError (a run that blew up, its largest error before it did) is
+  // drawn at the top edge with a mark, not off the chart and not left out.
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (const overlay::Series& s : spec.series) {
+    for (double y : s.y) {
+      if (!(std::isfinite(y) && y > 0.0)) continue;
+      lo = std::min(lo, y), hi = std::max(hi, y);
+    }
+  }
+  if (hi > kMaxEnergyError)
+    spec.y_range = std::pair{std::pow(10.0, std::floor(std::log10(lo))), kMaxEnergyError};
+  spec.title =
+      spin_rate > 0.0
+          ? title_of("Energy error over %d flip periods", flips) + spin_text(spin_rate, rows)
+          : title_of(
+                "Largest relative energy error over %d exact flip periods, against the time "
+                "step",
+                flips);
   spec.y_label = "relative energy error max |E/E0 - 1|";
+  return spec;
+}
+
+overlay::PlotSpec turnovers_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
+                                       const std::vector<analysis::Method>& methods, double flips,
+                                       double spin_rate) {
+  overlay::PlotSpec spec = against_dt(rows, methods, false, [](const analysis::AccuracyRow& r) {
+    return r.flips_exact > 0 ? static_cast<double>(r.flips) / r.flips_exact : std::nan("");
+  });
+  spec.title =
+      title_of("Turn-overs / exact over %d flip periods", flips) + spin_text(spin_rate, rows);
+  spec.y_label = "turn-overs / exact turn-overs (1: right)";
+  spec.log_y = false;
+  spec.y_range = std::pair{0.0, kMaxTurnoverRatio};
+  for (overlay::Series& s : spec.series) {
+    bool turns = false;
+    for (const auto& r : rows)
+      if (r.method.label == s.label && r.flips > 0) turns = true;
+    if (!turns) s.label += " (never turns over)";
+  }
   return spec;
 }
 
@@ -158,22 +269,27 @@ overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistor
 
 AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
                              const std::vector<analysis::Method>& methods, double flips,
+                             double spin_rate,
                              const std::vector<analysis::EnergyHistory>& histories,
                              double history_flips) {
-  return {orientation_error_vs_dt_plot(rows, methods, flips), work_precision_plot(rows, flips),
-          energy_vs_dt_plot(rows, methods, flips), long_time_energy_plot(histories, history_flips)};
+  return {orientation_error_vs_dt_plot(rows, methods, flips, spin_rate),
+          work_precision_plot(rows, flips), energy_vs_dt_plot(rows, methods, flips, spin_rate),
+          turnovers_vs_dt_plot(rows, methods, flips, spin_rate),
+          long_time_energy_plot(histories, history_flips)};
 }
 
 AccuracyImages accuracy_images(const std::vector<analysis::AccuracyRow>& rows,
                                const std::vector<analysis::Method>& methods, double flips,
+                               double spin_rate,
                                const std::vector<analysis::EnergyHistory>& histories,
                                double history_flips) {
-  const AccuracyPlots plots = accuracy_plots(rows, methods, flips, histories, history_flips);
+  const AccuracyPlots plots =
+      accuracy_plots(rows, methods, flips, spin_rate, histories, history_flips);
   const auto image = [](const overlay::PlotSpec& spec) {
     return overlay::plot_image(spec, 1400, 900);
   };
   return {image(plots.orientation_error_vs_dt), image(plots.work_precision),
-          image(plots.energy_vs_dt), image(plots.long_time_energy)};
+          image(plots.energy_vs_dt), image(plots.turnovers_vs_dt), image(plots.long_time_energy)};
 }
 
 }  // namespace bookspin::charts

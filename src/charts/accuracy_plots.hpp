@@ -1,7 +1,7 @@
 #pragma once
-// The plots of `bookspin accuracy` (docs/physics.md §10): error and energy error against dt, the
-// work–precision diagram and the long-time energy plot, as plot specs; the jobs stage measures
-// and writes them (jobs/accuracy_report.hpp).
+// The plots of `bookspin accuracy` (docs/physics.md §10): error, energy error and turn-overs
+// against dt, the work–precision diagram and the long-time energy plot, as plot specs; the jobs
+// stage measures (jobs/accuracy_report.hpp), the accuracy product writes them.
 #include <string>
 #include <vector>
 
@@ -11,8 +11,11 @@
 
 namespace bookspin::charts {
 
-/// One look per method in every accuracy plot: colour by integrator, dashed for the
-/// quaternion model, greys for the particle model.
+/// One look per method in every accuracy plot: bookspin's own methods coloured by integrator,
+/// dashed for the quaternion model, greys for the particle model, no mark; the engines marked
+/// by engine (MuJoCo a square, Bullet a triangle, ODE a diamond), solid, coloured by the family
+/// of the mode (explicit as bookspin's Euler, RK4 as bookspin's RK4, implicit green, no
+/// gyroscopic term brown; a second mode of one family in one engine lighter).
 void style_series(const analysis::Method& m, overlay::Series& s);
 
 /// Work–precision diagram (log–log): orientation error after the run (rad) against the
@@ -25,45 +28,67 @@ overlay::PlotSpec work_precision_plot(const std::vector<analysis::AccuracyRow>& 
 /// diverged row's error is NaN and breaks the line).
 overlay::PlotSpec orientation_error_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
                                                const std::vector<analysis::Method>& methods,
-                                               double flips);
+                                               double flips, double spin_rate = 0.0);
 
 /// Energy error against the step (log–log): the largest relative energy error |E/E0 − 1|
 /// over the run (flips exact flip periods) against dt (time units), one line per method of
-/// `methods` through its rows' dt values; diverged rows are left out.
+/// `methods` through its rows' dt values (a diverged row with its largest error before it
+/// diverged); when an error exceeds 100 the y range is fixed to end there, and a line leaving
+/// it is marked at the top edge.
+///
+/// These plots' titles say the run's spin when `spin_rate` (|ω0|, rad per time unit) is
+/// positive: "; |ω0| = … rad/t, ω·dt = … … … rad" over the rows' dt (shorter titles then, to
+/// fit one line).
 overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
-                                    const std::vector<analysis::Method>& methods, double flips);
+                                    const std::vector<analysis::Method>& methods, double flips,
+                                    double spin_rate = 0.0);
+
+/// Turn-overs against the step: the turn-overs a method counted (analysis::FlipDetector, a
+/// wobble is none) divided by the exact motion's over the same run, against dt (log, time
+/// units), on a fixed linear range 0 … 2 (1 is right; a larger ratio is drawn at the top edge
+/// with a mark), one line per method of `methods`; diverged rows and rows whose exact motion
+/// has no turn-over are left out; a method that counted none at every dt is labelled "(never
+/// turns over)". Beside the energy, the chart that says whether the motion is right.
+overlay::PlotSpec turnovers_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
+                                       const std::vector<analysis::Method>& methods, double flips,
+                                       double spin_rate);
 
 /// Long-time energy plot: relative energy error |E/E0 − 1| (log scale, the largest in each
 /// window) against t (time units), one line per history.
 overlay::PlotSpec long_time_energy_plot(const std::vector<analysis::EnergyHistory>& histories,
                                         double flips);
 
-/// The report's four plots, from what it measured.
+/// The report's five plots, from what it measured.
 struct AccuracyPlots {
   overlay::PlotSpec orientation_error_vs_dt;  ///< orientation_error_vs_dt_plot
   overlay::PlotSpec work_precision;           ///< work_precision_plot
   overlay::PlotSpec energy_vs_dt;             ///< energy_vs_dt_plot
+  overlay::PlotSpec turnovers_vs_dt;          ///< turnovers_vs_dt_plot
   overlay::PlotSpec long_time_energy;         ///< long_time_energy_plot
 };
 
-/// The four plots of a report: `rows` (one line per method of `methods`, runs of `flips` exact
-/// flip periods) and the long-time energy `histories` (runs of `history_flips` periods). No I/O.
+/// The five plots of a report: `rows` (one line per method of `methods`, runs of `flips` exact
+/// flip periods from a spin of |ω0| = `spin_rate` rad per time unit) and the long-time energy
+/// `histories` (runs of `history_flips` periods). No I/O.
 AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
                              const std::vector<analysis::Method>& methods, double flips,
+                             double spin_rate,
                              const std::vector<analysis::EnergyHistory>& histories,
                              double history_flips);
 
-/// The report's four plots drawn, 1400 × 900 pixels each.
+/// The report's five plots drawn, 1400 × 900 pixels each.
 struct AccuracyImages {
   RgbaImage orientation_error_vs_dt;
   RgbaImage work_precision;
   RgbaImage energy_vs_dt;
+  RgbaImage turnovers_vs_dt;
   RgbaImage long_time_energy;
 };
 
-/// (rows, methods, histories) => the four plots of accuracy_plots(), drawn. No I/O.
+/// (rows, methods, histories) => the five plots of accuracy_plots(), drawn. No I/O.
 AccuracyImages accuracy_images(const std::vector<analysis::AccuracyRow>& rows,
                                const std::vector<analysis::Method>& methods, double flips,
+                               double spin_rate,
                                const std::vector<analysis::EnergyHistory>& histories,
                                double history_flips);
 

@@ -111,6 +111,7 @@ AccuracyReport measure_accuracy(const AccuracyRequest& request) {
   say(header);
   AccuracyReport report;
   report.flips = request.flips;
+  report.spin_rate = request.scene.initial.omega0_body.norm();
   report.methods = request.methods.empty() ? analysis::accuracy_methods() : request.methods;
   const std::vector<analysis::Method> long_time = long_time_methods(report.methods);
   for (const auto& method : report.methods) {

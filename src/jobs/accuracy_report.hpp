@@ -44,6 +44,7 @@ struct AccuracyReport {
   std::vector<analysis::EnergyHistory> energy;
   CsvTable table;         ///< the accuracy CSV of the above (accuracy_csv)
   CsvTable energy_table;  ///< the long-time energy CSV of the above (energy_csv)
+  double spin_rate = 0.0;  ///< |ω0| of the scene's start, rad per time unit (the charts' titles)
 };
 
 /// The most steps one method may take at one dt (flips × flip period / dt).

@@ -59,6 +59,12 @@ Axis fit_axis(const std::vector<Series>& series, bool use_x, bool log, double mi
   return {lo, hi, log};
 }
 
+/// Whether spec.y_range fixes the y axis: a range from low to high, both positive on a log axis.
+bool fixed_y_range(const PlotSpec& spec) {
+  return spec.y_range && spec.y_range->second > spec.y_range->first &&
+         (!spec.log_y || spec.y_range->first > 0.0);
+}
+
 Axis fit_x(const PlotSpec& spec) {
   if (spec.x_range && !spec.log_x && spec.x_range->second > spec.x_range->first) {
     return {spec.x_range->first, spec.x_range->second, false};
@@ -67,8 +73,10 @@ Axis fit_x(const PlotSpec& spec) {
 }
 
 Axis fit_y(const PlotSpec& spec) {
-  if (spec.y_range && !spec.log_y && spec.y_range->second > spec.y_range->first)
-    return {spec.y_range->first, spec.y_range->second, false};
+  if (fixed_y_range(spec)) {
+    const auto [lo, hi] = *spec.y_range;
+    return spec.log_y ? Axis{std::log10(lo), std::log10(hi), true} : Axis{lo, hi, false};
+  }
   return fit_axis(spec.series, false, spec.log_y, spec.min_y_span);
 }
 
@@ -405,8 +413,9 @@ void mark_range_exits(cairo_t* cr, const Series& s, const Axis& ax, const Axis& 
   cairo_set_source_rgb(cr, s.r, s.g, s.b);
   bool inside = true;
   for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-    if (!usable(s.x[i], ax.log) || !std::isfinite(s.y[i])) continue;
-    const bool above = s.y[i] > ay.hi, below = s.y[i] < ay.lo;
+    if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) continue;
+    const double y = ay.log ? std::log10(s.y[i]) : s.y[i];
+    const bool above = y > ay.hi, below = y < ay.lo;
     if (inside && (above || below)) {
       const double px = std::clamp(ax.map(s.x[i], a.x0, a.x1), a.x0, a.x1);
       const double edge = above ? a.y0 : a.y1, tip = above ? edge - size : edge + size;
@@ -433,7 +442,7 @@ void draw_data(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay
     cairo_move_to(cr, px, a.y0), cairo_line_to(cr, px, a.y1), cairo_stroke(cr);
   }
   cairo_restore(cr);
-  if (spec.y_range && !ay.log) {
+  if (fixed_y_range(spec)) {
     for (const auto& s : spec.series) mark_range_exits(cr, s, ax, ay, a);
   }
 }

@@ -47,10 +47,10 @@ struct PlotSpec {
   /// Smallest y span (linear axes), centred on the data, so that round-off noise in a
   /// quantity that should be constant draws as a flat line rather than as wild swings.
   double min_y_span = 0.0;
-  /// Fixed y range (linear axes), e.g. the range before a run blew up: curves beyond it are
-  /// cut at the plot's edge, and each place a curve leaves the range is marked by a small
-  /// triangle in its colour on that edge (pointing up at the top, down at the bottom).
-  /// Unset: fitted to the data.
+  /// Fixed y range, e.g. the range before a run blew up (on a log axis both ends positive,
+  /// else ignored): curves beyond it are cut at the plot's edge, and each place a curve leaves
+  /// the range is marked by a small triangle in its colour on that edge (pointing up at the
+  /// top, down at the bottom). Unset: fitted to the data.
   std::optional<std::pair<double, double>> y_range;
   /// Opacity of a white background behind the whole plot (0: none).
   double background_alpha = 0.0;

@@ -10,7 +10,7 @@
 namespace bookspin::products {
 
 std::vector<std::filesystem::path> AccuracyLayout::outputs() const {
-  return {csv, png, work_precision_png, energy_vs_dt_png, energy_png, energy_csv};
+  return {csv, png, work_precision_png, energy_vs_dt_png, turnovers_png, energy_png, energy_csv};
 }
 
 AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene::Scene& scene) {
@@ -19,6 +19,7 @@ AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene
           file("-accuracy.png"),
           file("-work-precision.png"),
           file("-energy-vs-dt.png"),
+          file("-turnovers.png"),
           file("-energy.png"),
           file("-energy.csv"),
           out_dir / scene.name / "accuracy-manifest.json"};
@@ -51,12 +52,14 @@ cache::Outcome make_accuracy(const AccuracyJob& job) {
     const jobs::AccuracyReport report = jobs::measure_accuracy(job.request);
     const std::string table = csv_text(report.table, "accuracy CSV");
     const std::string energy = csv_text(report.energy_table, "energy CSV");
-    const charts::AccuracyImages plots = charts::accuracy_images(
-        report.rows, report.methods, report.flips, report.energy, jobs::kLongTimeFlips);
+    const charts::AccuracyImages plots =
+        charts::accuracy_images(report.rows, report.methods, report.flips, report.spin_rate,
+                                report.energy, jobs::kLongTimeFlips);
     output::prepare_output_dir(layout.csv.parent_path());
     output::write_png(layout.png, plots.orientation_error_vs_dt);
     output::write_png(layout.work_precision_png, plots.work_precision);
     output::write_png(layout.energy_vs_dt_png, plots.energy_vs_dt);
+    output::write_png(layout.turnovers_png, plots.turnovers_vs_dt);
     output::write_png(layout.energy_png, plots.long_time_energy);
     output::write_text_file(layout.csv, table);
     output::write_text_file(layout.energy_csv, energy);

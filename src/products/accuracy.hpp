@@ -19,6 +19,7 @@ struct AccuracyLayout {
   std::filesystem::path png;                 ///< OUT/<name>-accuracy.png: error against dt
   std::filesystem::path work_precision_png;  ///< OUT/<name>-work-precision.png: against cost
   std::filesystem::path energy_vs_dt_png;    ///< OUT/<name>-energy-vs-dt.png
+  std::filesystem::path turnovers_png;       ///< OUT/<name>-turnovers.png: counted / exact
   std::filesystem::path energy_png;          ///< OUT/<name>-energy.png: the long-time energy
   std::filesystem::path energy_csv;          ///< OUT/<name>-energy.csv: its data
   std::filesystem::path manifest;            ///< OUT/<name>/accuracy-manifest.json

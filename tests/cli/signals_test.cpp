@@ -177,8 +177,8 @@ TEST(Signals, AccuracyStopsItsRunsAndKeepsThePreviousReport) {
   const ScratchDir dir;
   const fs::path out = dir.path() / "out";
   for (const char* name :
-       {"-accuracy.csv", "-accuracy.png", "-work-precision.png", "-energy-vs-dt.png", "-energy.png",
-        "-energy.csv", "/accuracy-manifest.json"})
+       {"-accuracy.csv", "-accuracy.png", "-work-precision.png", "-energy-vs-dt.png",
+        "-turnovers.png", "-energy.png", "-energy.csv", "/accuracy-manifest.json"})
     write_text(out / (std::string("exact-unstable-x") + name), std::string("earlier ") + name);
   const auto before = snapshot(out);
   // 100 flips at dt = 0.001: 2·10⁷ steps a method.

@@ -85,7 +85,8 @@ def main():
     report = [v for tag, attr, v in page.sections.get("engines-energy-vs-dt", [])
               if tag == "img" and attr == "src"]
     expected = [f"engines-energy-vs-dt{s}.png"
-                for s in ("-accuracy", "-work-precision", "-energy-vs-dt", "-energy")]
+                for s in ("-accuracy", "-work-precision", "-energy-vs-dt", "-turnovers",
+                          "-energy")]
     if report != expected:
         failures.append(f"the engines' accuracy report shows {report}, not {expected}")
     for f in failures:

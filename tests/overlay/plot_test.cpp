@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bookspin::overlay {
@@ -64,6 +65,29 @@ TEST(Plot, FixedYRangeCutsTheCurveAndMarksWhereItLeaves) {
     for (int x = 0; x < clipped.width / 4; ++x) EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
     for (int x = 3 * clipped.width / 4; x < clipped.width; ++x)
       EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
+  }
+}
+
+// The same on a log axis: the spike (50) above a fixed range 1e-3 … 1 is cut at the top edge
+// and marked there; a range with a non-positive end is ignored on a log axis (fitted instead).
+TEST(Plot, FixedLogYRangeCutsTheCurveAndMarksWhereItLeaves) {
+  const auto log_spike = [](std::optional<std::pair<double, double>> y_range) {
+    PlotSpec spec = spike(y_range);
+    spec.log_y = true;
+    for (double& y : spec.series[0].y) y = std::max(y, 1e-3);
+    return spec;
+  };
+  const RgbaImage fitted = plot_image(log_spike(std::pair{0.0, 1.0}), 400, 300);
+  const RgbaImage clipped = plot_image(log_spike(std::pair{1e-3, 1.0}), 400, 300);
+  const auto [fitted_frame, fitted_red] = frame_top_and_first_red(fitted);
+  const auto [frame, first_red] = frame_top_and_first_red(clipped);
+  ASSERT_GT(fitted_frame, 0);
+  ASSERT_GT(frame, 0);
+  EXPECT_GE(fitted_red, fitted_frame);
+  EXPECT_LT(first_red, frame);
+  EXPECT_GE(first_red, frame - 12);
+  for (int y = 0; y < frame; ++y) {
+    for (int x = 0; x < clipped.width / 4; ++x) EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
   }
 }
 

@@ -1,6 +1,6 @@
 // The accuracy product: its manifest head holds --flips, --dt and --methods (docs/outputs.md:
 // "`--flips`, `--dt` and `--methods` in its head", numbers to 17 digits, methods as "KIND
-// INTEGRATOR"); a report writes the six files of its layout and their manifest, and is up to
+// INTEGRATOR"); a report writes the seven files of its layout and their manifest, and is up to
 // date the second time (its ns/step column then the first run's timing, docs/accuracy.md).
 #include "products/accuracy.hpp"
 
@@ -48,13 +48,14 @@ TEST(Accuracy, TheHeadHoldsTheFlipsTheStepsAndTheMethods) {
       << head;
 }
 
-TEST(Accuracy, AReportWritesItsSixFilesAndManifestThenIsUpToDate) {
+TEST(Accuracy, AReportWritesItsSevenFilesAndManifestThenIsUpToDate) {
   test::ScratchDir dir;
   const AccuracyJob job = quaternion_rk4(dir);
   EXPECT_EQ(make_accuracy(job), cache::Outcome::made);
   const std::vector<std::string> files{"x-accuracy.csv",       "x-accuracy.png",
                                        "x-work-precision.png", "x-energy-vs-dt.png",
-                                       "x-energy.png",         "x-energy.csv"};
+                                       "x-turnovers.png",      "x-energy.png",
+                                       "x-energy.csv"};
   for (const std::string& file : files)
     EXPECT_TRUE(fs::is_regular_file(dir / "out" / file)) << file;
   EXPECT_EQ(output::read_manifest(dir / "out" / "x" / "accuracy-manifest.json").outputs, files);

@@ -88,9 +88,10 @@ TEST(Gallery, ShowsAnAccuracyReportsChartsAndTables) {
   const fs::path out = dir / "out";
   fs::create_directories(dir / "sweeps");
   std::ofstream(dir / "sweeps" / "report.toml") << "[scene]\ntitle = \"A report\"\n";
-  const std::vector<std::string> files{"report-accuracy.csv",       "report-accuracy.png",
-                                       "report-work-precision.png", "report-energy-vs-dt.png",
-                                       "report-energy.png",         "report-energy.csv"};
+  const std::vector<std::string> files{
+      "report-accuracy.csv",     "report-accuracy.png",  "report-work-precision.png",
+      "report-energy-vs-dt.png", "report-turnovers.png", "report-energy.png",
+      "report-energy.csv"};
   for (const std::string& file : files) touch(out / file);
   GalleryJob job;
   job.out_dir = out;
@@ -104,7 +105,8 @@ TEST(Gallery, ShowsAnAccuracyReportsChartsAndTables) {
   EXPECT_EQ(html.find("not rendered yet"), std::string::npos) << html;
   std::size_t at = 0;
   for (const char* chart : {"src=\"report-accuracy.png\"", "src=\"report-work-precision.png\"",
-                            "src=\"report-energy-vs-dt.png\"", "src=\"report-energy.png\""}) {
+                            "src=\"report-energy-vs-dt.png\"", "src=\"report-turnovers.png\"",
+                            "src=\"report-energy.png\""}) {
     const std::size_t found = html.find(chart, at);
     EXPECT_NE(found, std::string::npos) << chart << " in this order\n" << html;
     at = found == std::string::npos ? at : found;

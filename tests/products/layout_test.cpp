@@ -67,7 +67,8 @@ TEST(ProductLayout, PlotSweepAccuracyGltfExplorerAndGallery) {
   EXPECT_EQ(accuracy.outputs(),
             (std::vector<std::filesystem::path>{
                 "out/fig05-accuracy.csv", "out/fig05-accuracy.png", "out/fig05-work-precision.png",
-                "out/fig05-energy-vs-dt.png", "out/fig05-energy.png", "out/fig05-energy.csv"}));
+                "out/fig05-energy-vs-dt.png", "out/fig05-turnovers.png", "out/fig05-energy.png",
+                "out/fig05-energy.csv"}));
   EXPECT_EQ(accuracy.energy_vs_dt_png, "out/fig05-energy-vs-dt.png");
   EXPECT_EQ(accuracy.manifest, "out/fig05/accuracy-manifest.json");
   EXPECT_EQ(gltf_layout("out", s).glb, "out/fig05.glb");
