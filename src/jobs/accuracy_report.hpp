@@ -42,8 +42,8 @@ struct AccuracyReport {
   /// The long-time energy plot's histories (long_time_methods(methods), kLongTimeDt,
   /// kLongTimeFlips, kLongTimeWindows), one per method.
   std::vector<analysis::EnergyHistory> energy;
-  CsvTable table;         ///< the accuracy CSV of the above (accuracy_csv)
-  CsvTable energy_table;  ///< the long-time energy CSV of the above (energy_csv)
+  CsvTable table;          ///< the accuracy CSV of the above (accuracy_csv)
+  CsvTable energy_table;   ///< the long-time energy CSV of the above (energy_csv)
   double spin_rate = 0.0;  ///< |ω0| of the scene's start, rad per time unit (the charts' titles)
 };
 

@@ -15,14 +15,10 @@ std::vector<std::filesystem::path> AccuracyLayout::outputs() const {
 
 AccuracyLayout accuracy_layout(const std::filesystem::path& out_dir, const scene::Scene& scene) {
   const auto file = [&](const char* suffix) { return out_dir / (scene.name + suffix); };
-  return {file("-accuracy.csv"),
-          file("-accuracy.png"),
-          file("-work-precision.png"),
-          file("-energy-vs-dt.png"),
-          file("-turnovers.png"),
-          file("-energy.png"),
-          file("-energy.csv"),
-          out_dir / scene.name / "accuracy-manifest.json"};
+  return {file("-accuracy.csv"),       file("-accuracy.png"),
+          file("-work-precision.png"), file("-energy-vs-dt.png"),
+          file("-turnovers.png"),      file("-energy.png"),
+          file("-energy.csv"),         out_dir / scene.name / "accuracy-manifest.json"};
 }
 
 namespace {

@@ -52,10 +52,9 @@ TEST(Accuracy, AReportWritesItsSevenFilesAndManifestThenIsUpToDate) {
   test::ScratchDir dir;
   const AccuracyJob job = quaternion_rk4(dir);
   EXPECT_EQ(make_accuracy(job), cache::Outcome::made);
-  const std::vector<std::string> files{"x-accuracy.csv",       "x-accuracy.png",
-                                       "x-work-precision.png", "x-energy-vs-dt.png",
-                                       "x-turnovers.png",      "x-energy.png",
-                                       "x-energy.csv"};
+  const std::vector<std::string> files{
+      "x-accuracy.csv",  "x-accuracy.png", "x-work-precision.png", "x-energy-vs-dt.png",
+      "x-turnovers.png", "x-energy.png",   "x-energy.csv"};
   for (const std::string& file : files)
     EXPECT_TRUE(fs::is_regular_file(dir / "out" / file)) << file;
   EXPECT_EQ(output::read_manifest(dir / "out" / "x" / "accuracy-manifest.json").outputs, files);

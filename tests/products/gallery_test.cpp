@@ -88,10 +88,10 @@ TEST(Gallery, ShowsAnAccuracyReportsChartsAndTables) {
   const fs::path out = dir / "out";
   fs::create_directories(dir / "sweeps");
   std::ofstream(dir / "sweeps" / "report.toml") << "[scene]\ntitle = \"A report\"\n";
-  const std::vector<std::string> files{
-      "report-accuracy.csv",     "report-accuracy.png",  "report-work-precision.png",
-      "report-energy-vs-dt.png", "report-turnovers.png", "report-energy.png",
-      "report-energy.csv"};
+  const std::vector<std::string> files{"report-accuracy.csv",       "report-accuracy.png",
+                                       "report-work-precision.png", "report-energy-vs-dt.png",
+                                       "report-turnovers.png",      "report-energy.png",
+                                       "report-energy.csv"};
   for (const std::string& file : files) touch(out / file);
   GalleryJob job;
   job.out_dir = out;
