@@ -18,6 +18,8 @@ struct ExploreOptions {
   std::string out_dir = "out";
   std::string shell;     ///< the page without data; empty: web/explorer-shell.html beside bookspin
   bool engines = false;  ///< also the JavaScript engines (explorer-engines.js beside the shell)
+  bool force = false;    ///< write the page even when OUT/explorer-manifest.json says up to date
+  bool verify = false;   ///< up-to-date check hashes the page (else its size only)
 };
 
 /// Writes OUT/explorer.html (products::write_explorer_page): the explorer page with these scenes.
@@ -27,6 +29,7 @@ int explore_command(const ExploreOptions& options) {
   products::ExplorerPageRequest request;
   request.out_dir = options.out_dir;
   request.stop_signal = stop_poll();
+  request.freshness = {options.force, options.verify, remake_note};
   if (options.shell.empty()) {
     request.shell = products::default_explorer_shell();
     std::error_code ec;
@@ -82,6 +85,7 @@ Subcommand add_explore(CLI::App& cli) {
   cmd->add_flag("--engines", options.engines,
                 "Also run the JavaScript engines cannon-es, Rapier and Jolt in the page, as "
                 "models (about 8 MB more; docs/explorer.md)");
+  add_freshness_flags(cmd, options.force, options.verify, "OUT/explorer-manifest.json");
   return {cmd, [stored] { return explore_command(*stored); }};
 }
 

@@ -227,7 +227,7 @@ ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
   done.result.path = explorer_page_path(request.out_dir);
   const cache::CachedOutputs cached{"explorer.html", explorer_manifest_path(request.out_dir),
                                     "explore", explorer_head(request), request.out_dir};
-  done.outcome = cache::make_cached(cached, {}, [&] {
+  done.outcome = cache::make_cached(cached, request.freshness, [&] {
     done.result = write_explorer_page(request);
     return cache::Made{{done.result.path}};
   });

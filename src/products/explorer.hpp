@@ -60,6 +60,7 @@ struct ExplorerPageRequest {
   /// written ("explore write"): a signal throws Interrupted; the earlier page and its manifest
   /// stay.
   StopPoll stop_signal;
+  cache::Freshness freshness;  ///< --force, --verify and the remake note (make_explorer_page)
 };
 
 struct ExplorerPageResult {
@@ -87,7 +88,8 @@ struct ExplorerOutcome {
 };
 
 /// (scenes, shell, engines) => OUT/explorer.html + manifest.
-/// write_explorer_page(request) unless the page's manifest says it is up to date: its head
+/// write_explorer_page(request) unless the page's manifest says it is up to date
+/// (request.freshness: --force makes it anyway, --verify hashes the page): its head
 /// holds the shell's SHA-256 (the web sources, lockfile and physics built into it), the engines'
 /// bundle's when there is one, and every
 /// scene's manifest head (cache::manifest_head: the program, the resolved scene and its input

@@ -146,6 +146,38 @@ TEST(ExploreCommand, UnchangedInputsLeaveThePageAloneAndAChangeRewritesIt) {
   EXPECT_NE(read_file(page).find("another shell"), std::string::npos);
 }
 
+// A page corrupted at the same size stays "up to date" on sizes; --verify hashes it and writes
+// it again, --force writes it whatever the manifest says (docs/outputs.md).
+TEST(ExploreCommand, VerifySeesASameSizeCorruptionAndForceRewrites) {
+  const fs::path dir = fresh_dir("explore/verify");
+  const fs::path shell = write_shell(dir);
+  const fs::path scene = dir / "s.toml";
+  std::ofstream(scene) << "[scene]\ntitle = \"a title\"\n";
+  const std::string args =
+      "explore " + scene.string() + " --shell " + shell.string() + " -o " + (dir / "out").string();
+  const fs::path page = dir / "out" / "explorer.html";
+  ASSERT_EQ(run_bookspin(args).status, 0);
+  const std::string bytes = read_file(page);
+  std::string corrupted = bytes;
+  corrupted[corrupted.find("a title")] = 'A';
+  std::ofstream(page, std::ios::binary) << corrupted;
+  CliResult r = run_bookspin(args);
+  EXPECT_NE(r.output.find("up to date"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(page), corrupted);
+  r = run_bookspin(args + " --verify");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("up to date"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(page), bytes);
+  r = run_bookspin(args + " --verify");
+  EXPECT_NE(r.output.find("up to date"), std::string::npos) << r.output;
+  const auto written = fs::last_write_time(page);
+  r = run_bookspin(args + " --force");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("up to date"), std::string::npos) << r.output;
+  EXPECT_EQ(read_file(page), bytes);
+  EXPECT_GE(fs::last_write_time(page), written);
+}
+
 TEST(ExploreCommand, TextThatWouldCloseTheScriptIsEscaped) {
   const fs::path dir = fresh_dir("explore/escape");
   const fs::path scene = dir / "sneaky.toml";
