@@ -32,12 +32,13 @@ bool FrameSource::next(physics::Pose& pose) {
   return true;
 }
 
-std::vector<RunFrames> run_frames(const scene::Scene& scene) {
-  const auto run = [](const scene::Scene& s) {
+std::vector<RunFrames> run_frames(const scene::Scene& scene, const StopPoll& stop) {
+  const auto run = [&stop](const scene::Scene& s) {
     RunFrames frames{s, {}, std::nullopt, {}};
     FrameSource source(frames.scene);
     physics::Pose pose;
-    while (source.next(pose)) frames.frames.push_back(pose.diagnostics);
+    for (stop_if_asked(stop, "plot frames"); source.next(pose); stop_if_asked(stop, "plot frames"))
+      frames.frames.push_back(pose.diagnostics);
     frames.diverged_at = source.diverged_at();
     frames.model_line = scene::model_line(frames.scene);
     return frames;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/stop.hpp"
 #include "physics/simulator.hpp"
 #include "scene/scene.hpp"
 
@@ -45,8 +46,9 @@ struct RunFrames {
 };
 
 /// scene => its runs (with their model lines), each to its end or divergence: a single scene one
-/// run, a comparison one per [[compare]] tile (scene::tile_scene), in tile order.
-std::vector<RunFrames> run_frames(const scene::Scene& scene);
+/// run, a comparison one per [[compare]] tile (scene::tile_scene), in tile order. `stop` is
+/// polled before every frame ("plot frames"): a signal throws Interrupted (common/stop.hpp).
+std::vector<RunFrames> run_frames(const scene::Scene& scene, const StopPoll& stop = {});
 
 /// The one warning of a run that diverged at `t` (time units), without "bookspin: warning: ":
 /// "<who> diverged at t = <t>[; <reason>]; <kept>", e.g. who "fig09: simulation", reason

@@ -6,6 +6,7 @@
 
 #include "cache/manifest_head.hpp"
 #include "common/stop.hpp"
+#include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
 
 namespace bookspin::cache {
@@ -58,7 +59,14 @@ Outcome make_cached(const CachedOutputs& cached, const Freshness& freshness,
   if (!freshness.force) {
     const std::optional<std::string> stale =
         output::manifest_stale(cached.manifest, head, cached.out_dir, freshness.verify);
-    if (!stale) return Outcome::up_to_date;
+    if (!stale) {
+      // A run killed here (SIGKILL) left its temporaries beside the outputs this one keeps:
+      // cleared as a run that writes would (docs/outputs.md, "Signals").
+      output::remove_dead_temporaries(cached.manifest);
+      for (const std::string& output : output::read_manifest(cached.manifest).outputs)
+        output::remove_dead_temporaries(cached.out_dir / output);
+      return Outcome::up_to_date;
+    }
     std::error_code ec;
     if (freshness.on_remake && fs::exists(cached.manifest, ec))
       freshness.on_remake(cached.name, *stale);

@@ -52,7 +52,8 @@ std::string cached_head(const CachedOutputs& cached);
 /// when they are up to date.
 ///
 /// Unless `freshness.force`, returns up_to_date when `cached`'s manifest matches its head and
-/// every listed output is there (output::manifest_stale). Otherwise tells
+/// every listed output is there (output::manifest_stale), after removing the temporaries a
+/// killed run left beside them (output::remove_dead_temporaries). Otherwise tells
 /// `freshness.on_remake` why (if a manifest was there), runs `make`, removes the files the
 /// earlier manifest listed that this run did not make (plain paths inside out_dir only, and
 /// the folders that leaves empty: out_dir holds one run's outputs, docs/outputs.md), then

@@ -40,6 +40,7 @@ void install_interrupt_handlers() {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
+  sigaction(SIGHUP, &action, nullptr);  // a closed terminal: stopped like Ctrl-C, exit 129
 }
 
 int interrupt_signal() { return received; }

@@ -1,7 +1,7 @@
 #pragma once
-// SIGINT/SIGTERM: the handler only records the signal; every long loop of a command that writes
-// polls it (common/stop.hpp), stops cleanly, removes its temporaries and the command exits
-// 128 + signal (130 / 143). docs/outputs.md, "Signals".
+// SIGINT/SIGTERM/SIGHUP: the handler only records the signal; every long loop of a command that
+// writes polls it (common/stop.hpp), stops cleanly, removes its temporaries and the command exits
+// 128 + signal (130 / 143 / 129). docs/outputs.md, "Signals".
 #include "common/stop.hpp"
 
 namespace bookspin::cli {

@@ -6,6 +6,7 @@
 
 #include "cache/freshness.hpp"
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "products/plot.hpp"
 #include "scene/scene.hpp"
@@ -33,6 +34,7 @@ int plot_command(const PlotOptions& options) {
   job.width = options.width;
   job.height = options.height;
   job.freshness = {options.force, options.verify, remake_note};
+  job.stop = stop_poll();
   const std::string name = job.scene.name + "-plot";
   const cache::Outcome outcome = products::make_plot(job);
   if (outcome == cache::Outcome::up_to_date) std::cout << "up to date: " << name << std::endl;

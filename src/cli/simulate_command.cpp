@@ -6,6 +6,7 @@
 
 #include "analysis/frame_source.hpp"
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "jobs/lattice_note.hpp"
 #include "jobs/simulation.hpp"
@@ -43,11 +44,11 @@ int simulate_command(const SimulateOptions& options) {
   }
   jobs::SimulationResult result;
   if (options.csv_path == "-") {
-    result = jobs::write_diagnostics_rows(scene, std::cout);
+    result = jobs::write_diagnostics_rows(scene, std::cout, stop_poll());
     std::cout.flush();
   } else {
     output::AtomicTextFile file(options.csv_path);
-    result = jobs::write_diagnostics_rows(scene, file.stream());
+    result = jobs::write_diagnostics_rows(scene, file.stream(), stop_poll());
     file.commit();
   }
   if (result.diverged_at) warn_diverged(scene, result);

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <string>
 
+#include "common/stop.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
@@ -16,7 +17,10 @@ struct SimulationResult {
 };
 
 /// Writes the diagnostics CSV header and one row per frame (docs/physics.md §9) to `out`
-/// until the clip ends or the simulation diverges.
-SimulationResult write_diagnostics_rows(const scene::Scene& scene, std::ostream& out);
+/// until the clip ends or the simulation diverges. `stop` is polled before every frame
+/// ("simulate rows"): a signal throws Interrupted, the rows written so far left to the caller
+/// (an atomic file it does not commit).
+SimulationResult write_diagnostics_rows(const scene::Scene& scene, std::ostream& out,
+                                        const StopPoll& stop = {});
 
 }  // namespace bookspin::jobs

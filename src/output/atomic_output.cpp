@@ -115,6 +115,8 @@ bool owner_gone(pid_t pid, const fs::path& temporary) {
   return started && seconds(st.st_mtim) < *started - 1.0;
 }
 
+}  // namespace
+
 // Removes the temporaries `.<name>.tmp-<pid>-<n>` in the folder of `final_path` that runs now
 // gone left behind (killed with SIGKILL, or a crash), so that a later run writing there clears
 // them. Each folder is looked through once per process (a frame dump makes one output per
@@ -146,8 +148,6 @@ void remove_dead_temporaries(const fs::path& final_path) noexcept {
   } catch (...) {
   }
 }
-
-}  // namespace
 
 namespace {
 

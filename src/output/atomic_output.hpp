@@ -127,4 +127,11 @@ class AtomicTextFile {
 /// Writes `text` to `path` through an AtomicTextFile. Throws OutputError.
 void write_text_file(const std::filesystem::path& path, std::string_view text);
 
+/// Removes the temporaries `.<name>.tmp-<pid>-<n>` (and `.old-`) in the folder of `final_path`
+/// whose run is gone (killed with SIGKILL, or a crash; a process with that pid that started
+/// after the temporary was written is another one), once per folder and process. Every
+/// AtomicOutput does this in its folder; an up-to-date run (cache::make_cached) does it beside
+/// the outputs it keeps. Errors are ignored (tidying: a temporary left harms nothing).
+void remove_dead_temporaries(const std::filesystem::path& final_path) noexcept;
+
 }  // namespace bookspin::output

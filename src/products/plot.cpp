@@ -30,7 +30,7 @@ cache::Outcome make_plot(const PlotJob& job) {
   const PlotLayout layout = plot_layout(job.out_dir, job.scene);
   const cache::CachedOutputs cached{plot_cached(job, layout)};
   return cache::make_cached(cached, job.freshness, [&] {
-    const std::vector<analysis::RunFrames> runs = analysis::run_frames(job.scene);
+    const std::vector<analysis::RunFrames> runs = analysis::run_frames(job.scene, job.stop);
     const RgbaImage sheet = charts::plot_sheet_image(job.scene, runs, job.width, job.height);
     output::prepare_output_dir(layout.png.parent_path());
     output::write_png(layout.png, sheet);

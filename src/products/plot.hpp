@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cache/freshness.hpp"
+#include "common/stop.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::products {
@@ -26,6 +27,9 @@ struct PlotJob {
   int width = 1600;            ///< pixels
   int height = 1000;           ///< pixels
   cache::Freshness freshness;  ///< --force, --verify (the PNG's hash) and the remake note
+  /// Polled before every frame of the run ("plot frames"): a signal throws Interrupted and the
+  /// earlier plot and its manifest stay as they were.
+  StopPoll stop;
 };
 
 /// The manifest head of `job` ("plot", the image size, the scene). Throws InputError.

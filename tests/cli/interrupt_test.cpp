@@ -158,6 +158,28 @@ TEST(Interrupt, RenderRemovesOnlyTheTemporariesOfDeadRuns) {
   EXPECT_EQ(left, expected_left);
 }
 
+// A run that finds its outputs up to date clears a killed run's leftovers beside them too (the
+// MP4's in OUT, the frames folder's in the clip's folder), and still says "up to date".
+TEST(Interrupt, AnUpToDateRunRemovesTheTemporariesOfDeadRuns) {
+  const fs::path out = fresh_dir("interrupt-up-to-date");
+  ASSERT_EQ(wait_status(start_render(out, 12)), 0);
+  const auto before = snapshot(out);
+  const std::string dead = std::to_string(dead_pid());
+  const std::string live = std::to_string(getpid());
+  write_forged(out / ("." + kName + ".mp4.tmp-" + dead + "-0"));
+  fs::create_directories(out / kName / (".frames.tmp-" + dead + "-1"));
+  write_forged(out / kName / (".frames.tmp-" + dead + "-1") / "frame_00000.png");
+  write_forged(out / ("." + kName + ".mp4.tmp-" + live + "-3"));  // a live run's: kept
+  ASSERT_EQ(temporaries(out).size(), 4u);  // the frames folder and the PNG in it count
+  const fs::path manifest = out / kName / "manifest.json";
+  const auto written = fs::last_write_time(manifest);
+  ASSERT_EQ(wait_status(start_render(out, 12)), 0);
+  EXPECT_EQ(fs::last_write_time(manifest), written) << "up to date: nothing made again";
+  EXPECT_EQ(temporaries(out), std::vector<std::string>{"." + kName + ".mp4.tmp-" + live + "-3"});
+  fs::remove(out / ("." + kName + ".mp4.tmp-" + live + "-3"));
+  EXPECT_EQ(snapshot(out), before);
+}
+
 // A sweep, a plot and a gallery clear their outputs' leftovers of dead runs too (every
 // output goes through the same atomic output).
 TEST(Interrupt, SweepPlotAndGalleryRemoveTheTemporariesOfDeadRuns) {

@@ -1,5 +1,6 @@
-// SIGINT and SIGTERM stop every command that writes (export, render in its encoders' finishing
-// passes, sweep, accuracy, explore, gallery) within a second, with exit status 130 or 143, the
+// SIGINT, SIGTERM and SIGHUP stop every command that writes (export, render in its encoders'
+// finishing passes, sweep, accuracy, plot, simulate, explore, gallery) within a second, with exit
+// status 130, 143 or 129, the
 // previous outputs and their manifest byte-identical and no temporary left (docs/outputs.md,
 // "Signals"). Each signal comes at a named stage of the run (the command line's test hooks,
 // src/cli/interrupt.hpp): for a long loop the test signals on the line of the stage polled just
@@ -40,7 +41,9 @@ std::vector<std::string> operator+(std::vector<std::string> a, const std::vector
   return a;
 }
 
-std::string signal_name(int signal) { return signal == SIGINT ? "SIGINT" : "SIGTERM"; }
+std::string signal_name(int signal) {
+  return signal == SIGINT ? "SIGINT" : signal == SIGHUP ? "SIGHUP" : "SIGTERM";
+}
 
 /// Runs `args` signalled by `signal` at `stage` (held there with kHold) and checks the contract:
 /// status 128 + signal, out within kMaxSecondsToExit, `out` as `before`, no temporary there.
@@ -227,6 +230,40 @@ TEST(Signals, GalleryKeepsThePreviousPageAndManifest) {
         stage, SIGINT, out, before);
   }
 }
+
+// plot and simulate poll every frame of their run: a long one stopped by any of the three
+// signals (SIGHUP: the terminal closed) keeps the earlier PNG and its manifest, or the earlier
+// CSV, byte for byte, and leaves no temporary. Signalled at the loop's first poll, so the
+// time to exit measures how often the loop polls (without the polls: tens of seconds, exit 0).
+class PlotSimulateSignal : public ::testing::TestWithParam<int> {};
+
+TEST_P(PlotSimulateSignal, StopsTheRunAndKeepsTheEarlierOutput) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  const CliResult first =
+      run_bookspin("plot " + kFig09 + " --set time.frames=20 -o " + out.string());
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  ASSERT_TRUE(before.count("fig09-matrix-unstable-x-plot.png"));
+  ASSERT_TRUE(before.count("fig09-matrix-unstable-x/plot-manifest.json"));
+  // 100000 frames of 300 steps: minutes, even on a fast machine.
+  const std::vector<std::string> long_run =
+      words({"--set", "time.frames=100000", "--set", "time.steps_per_frame=300"});
+  expect_stopped_cleanly(words({"plot", kFig09, "-o", out.string(), "--force"}) + long_run, kReport,
+                         "plot frames", GetParam(), out, before);
+
+  const fs::path csv = out / "fig09.csv";
+  const CliResult simulated =
+      run_bookspin("simulate " + kFig09 + " --set time.frames=5 --csv " + csv.string());
+  ASSERT_EQ(simulated.status, 0) << simulated.output;
+  const auto with_csv = snapshot(out);
+  ASSERT_TRUE(with_csv.count("fig09.csv"));
+  expect_stopped_cleanly(words({"simulate", kFig09, "--csv", csv.string()}) + long_run, kReport,
+                         "simulate rows", GetParam(), out, with_csv);
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, PlotSimulateSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
+                         [](const auto& info) { return signal_name(info.param); });
 
 }  // namespace
 }  // namespace bookspin::cli
