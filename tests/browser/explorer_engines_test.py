@@ -110,14 +110,26 @@ def check_engines(driver, page, node, modules, tests, shots):
 def check_extreme_links(driver, page, shots):
     notice = "return document.getElementById('notice').textContent"
     for query, key in (("t=1e9", "t = 1000000000 refused"), ("dt=1e-9", "dt = 1e-9 refused"),
-                       ("speed=1e9", "speed = 1000000000 refused")):
+                       ("speed=1e9", "speed = 1000000000 refused"),
+                       ("model=particle&k=-10", "k = -10 refused"),
+                       ("compare=1&model2=particle&k=-1", "k = -1 refused"),
+                       ("axis=intermediate&rate=1e308", "rate = 1e+308 refused"),
+                       ("axis=custom&w=1e308,0,0", "w = 1e+308,0,0 refused"),
+                       ("jiggle=-1", "jiggle = -1 refused"),
+                       ("t=1e308", "t = 1e+308 refused"),
+                       ("model=exact&axis=custom&w=1e308,0,0", "w = 1e+308,0,0 refused")):
         load(driver, f"{page}?scene=fig09-matrix-unstable-x&{query}")
         text = answered(driver, notice, query)
         if key not in text:
             fail(f"?{query}: no visible refusal ({key!r}) but {text!r}")
         state = answered(driver, "return window.explorer.state()", query)
-        if not (state["t"] == 0 and state["dt"] < 1 and state["speed"] <= 1e4):
+        if not (state["t"] == 0 and state["dt"] < 1 and state["speed"] <= 1e4 and state["k"] > 0
+                and abs(state["rate"]) <= 1e6 and all(abs(x) <= 1e6 for x in state["w"])
+                and state["jiggle"] >= 0):
             fail(f"?{query}: the refused value is still in the state: {state}")
+        page_text = answered(driver, "return document.body.innerText", query)
+        if "NaN" in page_text or "Infinity" in page_text:
+            fail(f"?{query}: the page shows NaN or Infinity: {page_text[:400]!r}")
         print(f"?{query}: {text}")
     # A long but allowed catch-up: six million steps, in pieces, with its progress.
     load(driver, f"{page}?scene=fig09-matrix-unstable-x&t=100000")

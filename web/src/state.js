@@ -100,13 +100,22 @@ export class StateSpace {
 }
 
 /**
- * What the page will run, whatever a link or a field says, so that the tab stays responsive:
- * `dt` in [1e-6, 1000] time units (the scene's own limit is (0, 1000]; below 1e-6 one time unit
- * is more than a million steps), `speed` in [0, 10 000] time units per second, and the start
- * time `t` at most MAX_STEPS steps of `dt` (the page catches up to it in bounded pieces, one
- * per animation frame, showing its progress).
+ * What the page will run, whatever a link or a field says, so that the tab stays responsive
+ * and never shows NaN: `dt` in [1e-6, 1000] time units (the scene's own limit is (0, 1000];
+ * below 1e-6 one time unit is more than a million steps), `speed` in [0, 10 000] time units
+ * per second, the start time `t` at most MAX_STEPS steps of `dt` (the page catches up to it in
+ * bounded pieces, one per animation frame, showing its progress); and the scene's own limits
+ * (src/scene/limits.hpp, scenes/README.md) for the spring constant `k` (1e-12 … 1e12: the
+ * scene's is positive), the lattice's `cells` (0 … 64), the spin `rate` and each component of
+ * ω0 `w` (−1e6 … 1e6 rad per time unit), the `jiggle` (0 … 1e6) and the `seed` (0 … 2^53,
+ * the integers a link can carry exactly).
  */
-export const LIMITS = { dt: [1e-6, 1000], speed: [0, 1e4] };
+export const LIMITS = {
+  dt: [1e-6, 1000], speed: [0, 1e4], k: [1e-12, 1e12], cells: [0, 64], rate: [-1e6, 1e6],
+  jiggle: [0, 1e6], seed: [0, 2 ** 53],
+};
+/** Each component of ω0 (`w`), rad per time unit. */
+export const W_LIMIT = 1e6;
 export const MAX_STEPS = 1e7;
 
 /** `state` with every value outside LIMITS put back to `base`'s (a `t` beyond MAX_STEPS steps:
@@ -120,9 +129,15 @@ export function withinLimits(state, base) {
       next[key] = base[key];
     }
   }
+  if (!(Array.isArray(next.w) && next.w.every((x) => Math.abs(x) <= W_LIMIT))) {
+    notes.push(`w = ${next.w} refused: the page takes each component from ${-W_LIMIT} to ${W_LIMIT}; ` +
+      `w = ${base.w} instead`);
+    next.w = base.w;
+  }
   const steps = next.t / next.dt;
   if (!(next.t >= 0) || steps > MAX_STEPS) {
-    notes.push(`t = ${next.t} refused: ${steps > MAX_STEPS ? `${steps.toPrecision(3)} steps of dt = ${next.dt}, ` +
+    const count = Number.isFinite(steps) ? `${steps.toPrecision(3)} steps` : 'more steps than a number holds';
+    notes.push(`t = ${next.t} refused: ${steps > MAX_STEPS ? `${count} of dt = ${next.dt}, ` +
       `more than the page's ${MAX_STEPS.toExponential()}` : 'negative'}; starting at t = 0`);
     next.t = 0;
   }
