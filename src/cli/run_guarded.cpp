@@ -14,7 +14,7 @@ namespace bookspin::cli {
 namespace {
 
 int report(const char* kind, const std::string& message, int code) {
-  std::cerr << "bookspin: " << kind << ": " << message << '\n';
+  std::cerr << "bookspin: " << kind << ": " << escape_controls(message) << '\n';
   return code;
 }
 

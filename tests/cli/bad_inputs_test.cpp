@@ -166,5 +166,25 @@ frames = 2
   EXPECT_TRUE(fs::exists(dir / "out.csv"));
 }
 
+// Option values are quoted escaped, CLI11's own messages too: one line, no control sequence
+// reaches the terminal (the values made by printf in the shell: ESC, CR, LF).
+TEST(BadInputs, OptionValuesAreEscapedInEveryMessage) {
+  const std::string scene = scene_path("fig09-matrix-unstable-x");
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"render --frames \"$(printf '1\\033')\" " + scene,
+            "--frames: Value 1\\x1b not in range"},
+           {"render " + scene + " --format \"$(printf 'mp4\\r')\" -o /nonexistent-dir",
+            "unknown video format 'mp4\\r'"},
+           {"accuracy " + scene + " --methods \"$(printf 'mujoco:rk4\\nx')\" -o /nonexistent-dir",
+            "--methods mujoco:rk4\\nx"}}) {
+    const SplitResult r = run_bookspin_split(args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\r'), std::string::npos) << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace bookspin::cli

@@ -53,6 +53,16 @@ TEST(RunGuarded, BadInputIsStatus2WithTheInputLine) {
   EXPECT_EQ(o.stderr_text, "bookspin: error: scene.toml:3: time.dt: must be > 0, got 0\n");
 }
 
+// Whatever a message quotes (an option's value, a path), the line stays one line and sends no
+// control sequence to the terminal: newline, carriage return, tab and ESC written as escapes.
+TEST(RunGuarded, ControlCharactersInAMessageAreEscaped) {
+  const Outcome o = run([]() -> int {
+    throw InputError(std::string("--methods mu\x1b[31mjoco:rk4\nx\r\t: unknown"));
+  });
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.stderr_text, "bookspin: error: --methods mu\\x1b[31mjoco:rk4\\nx\\r\\t: unknown\n");
+}
+
 TEST(RunGuarded, FailedWritesAndMissingMachineryAreStatus1) {
   const Outcome o = run([]() -> int { throw_output_error("cannot write", "out/a.csv", ENOSPC); });
   EXPECT_EQ(o.status, 1);
