@@ -35,11 +35,26 @@ namespace {
 
 /// Every dt must make a run of at least one step and at most kMaxAccuracySteps.
 void check_step_counts(const AccuracyRequest& request, double flip_period) {
-  if (!std::isfinite(flip_period))
+  if (!std::isfinite(flip_period)) {
+    // The cause: a body without an intermediate axis never flips, whatever its start.
+    const Eigen::Vector3d& I = request.scene.body.moments;
+    const double lo = I.minCoeff(), hi = I.maxCoeff(), mid = I.sum() - lo - hi;
+    const auto equal = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); };
+    if (equal(lo, hi))
+      throw InputError(request.scene.name +
+                       ": the body's three principal moments are equal (a cube or a sphere: "
+                       "every axis is principal), so it never flips, whatever its spin or "
+                       "jiggle: no flip period to measure the runs over");
+    if (equal(lo, mid) || equal(mid, hi))
+      throw InputError(request.scene.name +
+                       ": two of the body's principal moments are equal (a symmetric body: no "
+                       "intermediate axis), so it never flips, whatever its spin or jiggle: no "
+                       "flip period to measure the runs over");
     throw InputError(request.scene.name +
                      ": the motion never flips (its L starts on a principal axis or on the "
                      "separatrix), so there is no flip period to measure the runs over: "
                      "initial.jiggle or initial.angular_velocity off the axis gives one");
+  }
   for (double dt : request.dts) {
     const double steps = request.flips * flip_period / dt;
     if (steps >= 1.0 && steps <= kMaxAccuracySteps) continue;
