@@ -47,11 +47,19 @@ std::vector<Method> rigid_methods();
 /// the exact model (the reference itself) or a pair the model does not support.
 std::vector<Method> parse_methods(const std::string& list);
 
+/// The most steps measure() times for AccuracyRow::ns_per_step (docs/accuracy.md: "up to
+/// 200,000 steps of each method").
+constexpr long kMaxTimedSteps = 200000;
+
 struct AccuracySettings {
   physics::Body body;  ///< any body: the book, a preset or a mesh (docs/physics.md §12)
   physics::InitialState initial;
   physics::ModelConfig model;  ///< normalize, damping, k; kind and integrator are replaced
   double flips = 10.0;         ///< run length in flip periods T/2 = 2K(k)/λ
+  /// The clock measure() reads before and after the steps it times (nanoseconds from any
+  /// fixed origin); empty: std::chrono::steady_clock. A test hands in its own clock to see
+  /// what the time is divided by, without timing anything.
+  std::function<double()> clock_ns = {};
 };
 
 struct AccuracyRow {
@@ -69,9 +77,11 @@ struct AccuracyRow {
   /// First flip (FlipDetector) and |first_flip / exact first flip − 1|; NaN if none seen.
   double first_flip = 0.0;
   double first_flip_error = 0.0;
-  int flips = 0;             ///< flips seen over the run (FlipDetector::count)
-  int flips_exact = 0;       ///< the exact motion's turn-overs in [0, t_end] (exact_flip_count)
-  double ns_per_step = 0.0;  ///< wall time of step() alone
+  int flips = 0;        ///< flips seen over the run (FlipDetector::count)
+  int flips_exact = 0;  ///< the exact motion's turn-overs in [0, t_end] (exact_flip_count)
+  /// Wall time of step() alone (ns): a fresh run's first min(steps, kMaxTimedSteps) steps
+  /// timed, divided by that count.
+  double ns_per_step = 0.0;
   bool diverged = false;
   std::string divergence_reason;  ///< the simulator's reason, if it gave one
 };

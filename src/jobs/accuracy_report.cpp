@@ -181,9 +181,14 @@ CsvTable energy_csv(const AccuracyReport& report) {
   const std::vector<analysis::EnergyHistory>& histories = report.energy;
   CsvTable table{{"t"}, {}};
   for (const auto& h : histories) table.columns.push_back(h.method.label);
-  const std::size_t rows = histories.empty() ? 0 : histories.front().t.size();
+  // Every history has the same windows (one dt, run length and window count); a diverged
+  // one stops early, whichever it is, so the rows and their times are the longest history's.
+  const analysis::EnergyHistory* longest = nullptr;
+  for (const auto& h : histories)
+    if (longest == nullptr || h.t.size() > longest->t.size()) longest = &h;
+  const std::size_t rows = longest == nullptr ? 0 : longest->t.size();
   for (std::size_t i = 0; i < rows; ++i) {
-    std::vector<CsvCell> row{CsvNumber{histories.front().t[i], "%.9g"}};
+    std::vector<CsvCell> row{CsvNumber{longest->t[i], "%.9g"}};
     for (const auto& h : histories)
       row.push_back(CsvNumber{i < h.relative_error.size()
                                   ? std::optional<double>(h.relative_error[i])

@@ -79,8 +79,8 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   }
   if (engine) {
     // The engines' models have no such settings (docs/engines.md): refused, never ignored.
-    for (const char* key :
-         {"model.normalize", "model.damping", "model.spring_constant", "model.lattice_cells"}) {
+    for (const char* key : {"model.normalize", "model.normalize_every", "model.damping",
+                            "model.spring_constant", "model.lattice_cells"}) {
       if (r.has(key)) r.fail(key, "model '" + kind + "' (another engine) has no such setting");
     }
     return m;

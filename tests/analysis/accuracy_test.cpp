@@ -224,6 +224,32 @@ TEST(AccuracyFlips, TenFlipPeriodsHoldTenFlipsAndTheEnginesWithoutTheTermNone) {
   EXPECT_TRUE(std::isnan(none.first_flip));
 }
 
+// ns_per_step is the time of the steps timed over their count: up to 200,000 steps of each
+// method (docs/accuracy.md), not every step of the run. A clock that moves by exactly 1e9 ns
+// between its readings stands in for the steady clock, so nothing is timed: a run of one flip
+// at dt = 1/1000 (about 221,000 steps) costs 1e9 / 200,000 = 5000 ns a step, and one at
+// dt = 1/60 (about 13,000 steps, all timed) 1e9 / steps.
+TEST(AccuracyCost, NsPerStepIsTheClocksTimeOverTheStepsTimed) {
+  analysis::AccuracySettings s = original_x_spin();
+  s.flips = 1;
+  int readings = 0;
+  s.clock_ns = [&readings] { return 1e9 * ++readings; };
+  const auto exact = exact_reference(s);
+  const Method euler{ModelKind::rigid_quaternion, Integrator::euler};
+
+  const auto fine = measure(s, exact, euler, 1.0 / 1000.0);
+  EXPECT_EQ(readings, 2);  // once before the timed steps, once after
+  ASSERT_GT(fine.steps, 200000);
+  EXPECT_DOUBLE_EQ(fine.ns_per_step, 5000.0);
+
+  readings = 0;
+  const auto coarse = measure(s, exact, euler, 1.0 / 60.0);
+  EXPECT_EQ(readings, 2);
+  ASSERT_LT(coarse.steps, 200000);
+  ASSERT_GT(coarse.steps, 10000);
+  EXPECT_DOUBLE_EQ(coarse.ns_per_step, 1e9 / static_cast<double>(coarse.steps));
+}
+
 // The accuracy rows are bookspin's methods and every engine mode; all_methods() (which the
 // bench and the explorer's benchmark time against the page) holds no engine.
 TEST(AccuracyFlips, EveryEngineModeIsAnAccuracyRowAndNoneOfAllMethods) {

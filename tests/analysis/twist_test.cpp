@@ -52,6 +52,36 @@ TEST(Twist, ClosedFormOfTheSymmetricTopByHand) {
   EXPECT_NEAR(angle_gap(*twist_exact(rod), prolate.twist()), 0.0, 1e-9);
 }
 
+// The twist is an angle in (−π, π] (docs/physics.md §19), and the tops above turn by more
+// than π about L in a period: the oblate top by |L|·T/I⊥ = 15.7720 rad (2.51 turns), whose
+// nearest angle is 15.7720 − 3·2π = −3.0775; the prolate by 6.2228 rad, nearest −0.0604.
+// Compared here without wrapping either side, against the whole turns counted by hand.
+TEST(Twist, ClosedFormBeyondPiIsTheNearestAngle) {
+  const SymmetricTop oblate{1.0, 1.7, 0.4, 0.9};
+  const double oblate_turn = oblate.L() * oblate.period() / oblate.I_perp;
+  ASSERT_NEAR(oblate_turn, 15.7720, 1e-4);
+  const double oblate_twist =
+      *twist_exact(physics::ExactRotation({1.0, 1.0, 1.7}, {0.4, 0.0, 0.9}));
+  EXPECT_NEAR(oblate_twist, oblate_turn - 3 * 2 * kPi, 1e-9);
+  EXPECT_NEAR(oblate_twist, -3.0775, 1e-4);
+
+  const SymmetricTop prolate{2.0, 0.6, 0.5, -0.8};
+  const double prolate_turn = prolate.L() * prolate.period() / prolate.I_perp;
+  ASSERT_NEAR(prolate_turn, 6.2228, 1e-4);
+  const double prolate_twist =
+      *twist_exact(physics::ExactRotation({0.6, 2.0, 2.0}, {-0.8, 0.0, 0.5}));
+  EXPECT_NEAR(prolate_twist, prolate_turn - 2 * kPi, 1e-9);
+
+  // wrap_angle itself: to the nearest angle either way round, π kept and −π made π.
+  EXPECT_DOUBLE_EQ(wrap_angle(4.0), 4.0 - 2 * kPi);
+  EXPECT_DOUBLE_EQ(wrap_angle(-4.0), 2 * kPi - 4.0);
+  EXPECT_DOUBLE_EQ(wrap_angle(15.0), 15.0 - 2 * 2 * kPi);
+  EXPECT_DOUBLE_EQ(wrap_angle(-15.0), 2 * 2 * kPi - 15.0);
+  EXPECT_DOUBLE_EQ(wrap_angle(1.0), 1.0);
+  EXPECT_EQ(wrap_angle(kPi), kPi);
+  EXPECT_EQ(wrap_angle(-kPi), kPi);
+}
+
 TEST(Twist, EmptyWithoutAPeriod) {
   EXPECT_FALSE(twist_exact(physics::ExactRotation({1.0, 2.0, 3.0}, {0.0, 0.0, 1.0})));
   EXPECT_FALSE(twist_exact(physics::ExactRotation({1.0, 2.0, 3.0}, {0.0, 0.5, 0.0})));

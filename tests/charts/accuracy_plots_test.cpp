@@ -142,6 +142,34 @@ TEST(AccuracyPlots, EnginesAreColouredByFamilyAndMarkedByEngine) {
   EXPECT_EQ(look(ModelKind::rigid_quaternion, Integrator::rk4).marker, overlay::Marker::circle);
 }
 
+// The work–precision cost is the CPU time per simulated time unit: ns_per_step / dt ns, shown
+// in µs. Worked by hand: 50 ns a step at dt = 0.01 is 100 steps per time unit, 5000 ns = 5 µs;
+// 30 ns at dt = 0.1 is 0.3 µs; 400 ns at dt = 1/60 is 24 µs. The error is each row's own.
+TEST(AccuracyPlots, WorkPrecisionCostIsNsPerStepOverDtInMicroseconds) {
+  const Method rk4{ModelKind::rigid_quaternion, Integrator::rk4};
+  const Method mujoco{ModelKind::mujoco, Integrator::euler};
+  AccuracyRow coarse = row(rk4, 0.1, 0.0), fine = row(rk4, 0.01, 0.0),
+              engine = row(mujoco, 1.0 / 60.0, 0.0);
+  coarse.ns_per_step = 30.0;
+  coarse.orientation_error = 1e-3;
+  fine.ns_per_step = 50.0;
+  fine.orientation_error = 1e-7;
+  engine.ns_per_step = 400.0;
+  engine.orientation_error = 0.5;
+  const overlay::PlotSpec spec = work_precision_plot({coarse, engine, fine}, 10.0);
+  ASSERT_EQ(spec.series.size(), 2u);  // accuracy_methods() order: bookspin's, then engines'
+  EXPECT_EQ(spec.series[0].label, "rigid-quaternion rk4");
+  ASSERT_EQ(spec.series[0].x.size(), 2u);
+  EXPECT_NEAR(spec.series[0].x[0], 0.3, 1e-12);
+  EXPECT_NEAR(spec.series[0].x[1], 5.0, 1e-12);
+  EXPECT_EQ(spec.series[0].y, (std::vector<double>{1e-3, 1e-7}));
+  EXPECT_EQ(spec.series[1].label, "mujoco euler");
+  ASSERT_EQ(spec.series[1].x.size(), 1u);
+  EXPECT_NEAR(spec.series[1].x[0], 24.0, 1e-12);
+  EXPECT_EQ(spec.series[1].y, (std::vector<double>{0.5}));
+  EXPECT_TRUE(spec.log_x && spec.log_y);
+}
+
 // Every accuracy method looks different from every other: colour, dash and mark together.
 TEST(AccuracyPlots, NoTwoMethodsShareALook) {
   const auto methods = analysis::accuracy_methods();

@@ -328,6 +328,41 @@ TEST(Manifest, GltfExportSkipsWhenUpToDateAndTheGalleryLinksOnlyAListedGlb) {
   EXPECT_EQ(read_file(box.out / "index.html").find("tiny.glb"), std::string::npos);
 }
 
+// Same size, other bytes: a plain export trusts the .glb's size in its manifest and says up to
+// date; --verify hashes it, finds it changed and exports it again, byte for byte the first
+// export; then --verify finds it as its manifest says.
+TEST(Manifest, GltfExportVerifyRemakesAGlbChangedAtTheSameSize) {
+  const Sandbox box("manifest_gltf_verify");
+  const auto exported = [&box](const std::string& options) {
+    return run_bookspin("export " + box.scene.string() + " --gltf " + options + " -o " +
+                        box.out.string());
+  };
+  const auto made = [](const CliResult& r) {
+    return r.status == 0 && r.output.find("exported: ") != std::string::npos &&
+           r.output.find("up to date") == std::string::npos;
+  };
+  const auto skipped_glb = [](const CliResult& r) {
+    return r.status == 0 && r.output.find("up to date: tiny.glb") != std::string::npos &&
+           r.output.find("exported:") == std::string::npos;
+  };
+  ASSERT_TRUE(made(exported("")));
+  const fs::path glb = box.out / "tiny.glb";
+  const std::string bytes = read_file(glb);
+  ASSERT_GT(bytes.size(), 100u);
+  std::string changed = bytes;
+  changed[changed.size() - 5] = static_cast<char>(~changed[changed.size() - 5]);
+  std::ofstream(glb, std::ios::binary) << changed;
+  ASSERT_EQ(fs::file_size(glb), bytes.size());
+  const CliResult plain = exported("");
+  EXPECT_TRUE(skipped_glb(plain)) << plain.output;
+  EXPECT_TRUE(read_file(glb) == changed) << "a plain run rewrote the .glb";  // not printed: MBs
+  const CliResult verified = exported("--verify");
+  EXPECT_TRUE(made(verified)) << verified.output;
+  EXPECT_TRUE(read_file(glb) == bytes) << "--verify did not export the .glb again";
+  const CliResult again = exported("--verify");
+  EXPECT_TRUE(skipped_glb(again)) << again.output;
+}
+
 TEST(Manifest, AccuracyReportSkipsWhenUpToDateAndRemeasuresOnAnyOptionChange) {
   const Sandbox box("manifest_accuracy");
   const auto accuracy = [&box](const std::string& options) {

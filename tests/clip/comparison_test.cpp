@@ -10,6 +10,7 @@
 
 #include "clip/compare_layout.hpp"
 #include "clip/composer.hpp"
+#include "overlay/caption.hpp"
 
 namespace bookspin::clip {
 namespace {
@@ -96,6 +97,37 @@ TEST(Comparison, EachPictureGoesToItsTileUnderTheStripWithACaption) {
     }
   }
   EXPECT_GT(text, 100);
+}
+
+// The header's "t = …" is the time of the frame shown (TileRun::shown: the composer shows the
+// tiles as shown holds them, composer.hpp), not of the simulation side, which runs up to the
+// renderer's pipeline depth ahead. The strip (the top 18 rows, worked out above) is compared
+// pixel for pixel with overlay's title strip drawn directly on the background with the shown
+// time, and told apart from the one drawn with the simulation's.
+TEST(Comparison, TheHeaderTimeIsTheShownFramesNotTheSimulations) {
+  const scene::Scene scene = four_tiles();
+  Tiles tiles;
+  for (const auto& tile : scene.compare) {
+    tiles.push_back(std::make_unique<TileRun>(tile_scene(scene, tile)));
+    tiles.back()->shown.t = 12.5;  // the frame composed now
+    tiles.back()->frame.t = 57.4;  // the simulation, frames ahead
+  }
+  std::vector<RgbaImage> pictures(4, flat(kTileWidth, kTileHeight, {90, 90, 90}));
+  const RgbaImage frame = comparison_composer(scene)->compose(pictures, tiles);
+  const auto strip_with = [&](double t) {
+    RgbaImage image = blank_frame(640, 360);
+    overlay::draw_title_strip(image, PixelRect{0, 0, 640, 18}, scene.title, t);
+    return image;
+  };
+  const RgbaImage shown = strip_with(12.5), simulated = strip_with(57.4);
+  int differ_from_shown = 0, differ_from_simulated = 0;
+  for (int y = 0; y < 18; ++y)
+    for (int x = 0; x < 640; ++x) {
+      differ_from_shown += at(frame, x, y) != at(shown, x, y);
+      differ_from_simulated += at(frame, x, y) != at(simulated, x, y);
+    }
+  EXPECT_EQ(differ_from_shown, 0);
+  EXPECT_GT(differ_from_simulated, 20);  // "t = 57.4" is not "t = 12.5"
 }
 
 }  // namespace

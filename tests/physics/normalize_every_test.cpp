@@ -1,8 +1,10 @@
 // model.normalize_every (docs/physics.md §18): which steps normalize, that N = 1 is the
-// every-step normalization, and that a long interval lets the paper's Euler step diverge.
+// every-step normalization, and that a long interval lets the paper's Euler step diverge;
+// for every model that normalizes, the lattice of a non-book body (§13) among them.
 #include <gtest/gtest.h>
 
 #include "model_helpers.hpp"
+#include "physics/presets.hpp"
 #include "physics/shape.hpp"
 
 namespace bookspin::physics {
@@ -14,22 +16,39 @@ constexpr double kDt = 1.0 / 60.0;
 
 physics::InitialState x_spin() { return {original_omega0(0), 0.001, 7}; }
 
-std::unique_ptr<physics::Simulator> make(physics::ModelKind kind, physics::Integrator integrator,
-                                         bool normalize, int every) {
-  physics::ModelConfig c = config(kind, normalize);
-  c.integrator = integrator;
+struct Method {
+  physics::ModelKind kind;
+  physics::Integrator integrator;
+  /// The particle model of the T-handle, a lattice (LatticeModel, docs/physics.md §13),
+  /// instead of the book's.
+  bool lattice = false;
+};
+
+std::string name(const Method& m) {
+  return std::string(to_string(m.kind)) + " " + std::string(to_string(m.integrator)) +
+         (m.lattice ? " (T-handle lattice)" : "");
+}
+
+/// The book, or for a lattice method the T-handle of mass 1 (a lattice of 4 cells along its
+/// longest side: a few dozen particles, enough to be a lattice and quick to step).
+std::unique_ptr<physics::Simulator> make_simulator(const Method& method, physics::ModelConfig c) {
+  c.integrator = method.integrator;
+  if (!method.lattice) return physics::make_simulator(original_book(), c);
+  c.lattice_cells = 4;
+  return physics::make_simulator(physics::preset_body(BodyShape::t_handle, 1.0, 1.0), c);
+}
+
+std::unique_ptr<physics::Simulator> make(const Method& method, bool normalize, int every) {
+  physics::ModelConfig c = config(method.kind, normalize);
   c.normalize_every = every;
-  auto sim = physics::make_simulator(original_book(), c);
+  auto sim = make_simulator(method, c);
   sim->reset(x_spin());
   return sim;
 }
 
-struct Method {
-  physics::ModelKind kind;
-  physics::Integrator integrator;
-};
-
 const Method kMethods[] = {{ModelKind::particle, Integrator::euler},
+                           {ModelKind::particle, Integrator::euler, true},
+                           {ModelKind::particle, Integrator::velocity_verlet, true},
                            {ModelKind::rigid_matrix, Integrator::euler},
                            {ModelKind::rigid_matrix, Integrator::rk4},
                            {ModelKind::rigid_quaternion, Integrator::euler},
@@ -48,16 +67,16 @@ std::pair<Corners, double> state_of(const Simulator& sim) {
 TEST(NormalizeEvery, NormalizesExactlyOnStepsNTwoNAndAfterReset) {
   constexpr int kEvery = 7;
   for (const Method& method : kMethods) {
-    SCOPED_TRACE(std::string(to_string(method.kind)) + " " +
-                 std::string(to_string(method.integrator)));
+    SCOPED_TRACE(name(method));
     const double dt = method.kind == ModelKind::particle ? kDt : 0.25;
     for (int round = 0; round < 2; ++round) {
-      auto every = make(method.kind, method.integrator, true, kEvery);
+      auto every = make(method, true, kEvery);
       if (round == 1) {  // the count starts again at reset
         for (int s = 0; s < 3; ++s) every->step(dt);
         every->reset(x_spin());
       }
-      auto never = make(method.kind, method.integrator, false, 1);
+      auto never = make(method, false, 1);
+      const Eigen::Vector3d com_at_rest = never->center_of_mass();
       for (int block = 0; block < 2; ++block) {
         for (int s = 1; s < kEvery; ++s) {
           every->step(dt);
@@ -77,8 +96,11 @@ TEST(NormalizeEvery, NormalizesExactlyOnStepsNTwoNAndAfterReset) {
           EXPECT_LT(every->diagnostics().orthogonality_error, 1e-13);
           EXPECT_GT(never->diagnostics().orthogonality_error, 1e-11);
         }
-        if (method.kind == ModelKind::particle) {
+        if (method.kind == ModelKind::particle && !method.lattice) {
           EXPECT_LT(every->center_of_mass().norm(), 1e-15);
+        }
+        if (method.lattice) {  // back where the lattice's was at rest
+          EXPECT_LT((every->center_of_mass() - com_at_rest).norm(), 1e-14);
         }
       }
     }
@@ -89,16 +111,14 @@ TEST(NormalizeEvery, NormalizesExactlyOnStepsNTwoNAndAfterReset) {
 /// for every model and integrator that normalizes (the physics hashes pin the default).
 TEST(NormalizeEvery, OneIsEveryStep) {
   for (const Method& method : kMethods) {
-    auto one = make(method.kind, method.integrator, true, 1);
-    physics::ModelConfig c = config(method.kind, true);
-    c.integrator = method.integrator;
-    auto standard = physics::make_simulator(original_book(), c);
+    auto one = make(method, true, 1);
+    auto standard = make_simulator(method, config(method.kind, true));
     standard->reset(x_spin());
     for (int s = 0; s < 600; ++s) {
       one->step(kDt);
       standard->step(kDt);
     }
-    EXPECT_EQ(one->corners(), standard->corners()) << to_string(method.kind);
+    EXPECT_EQ(one->corners(), standard->corners()) << name(method);
     EXPECT_EQ(one->diagnostics().energy_total, standard->diagnostics().energy_total);
   }
 }
@@ -112,7 +132,7 @@ TEST(NormalizeEvery, ALongerIntervalLetsTheParticleBookDiverge) {
   constexpr double dt = 1.0 / 8.0;
   const long steps = static_cast<long>(2210.0 / dt);  // 10 flips of T/2 = 221
   auto diverged_at = [&](int every) {
-    auto sim = make(ModelKind::particle, Integrator::euler, true, every);
+    auto sim = make({ModelKind::particle, Integrator::euler}, true, every);
     for (long s = 1; s <= steps; ++s) {
       sim->step(dt);
       if (!sim->finite()) return s * dt;

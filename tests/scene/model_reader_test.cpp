@@ -201,8 +201,8 @@ TEST(ModelReader, EnginesRefuseOtherEnginesModesAndBookspinsSettings) {
             std::string::npos);
   EXPECT_NE(error_of(model_table("ode", "implicit-body")).find("(expected step, quickstep, none)"),
             std::string::npos);
-  for (const std::string key :
-       {"normalize = true", "damping = false", "spring_constant = 5.0", "lattice_cells = 4"}) {
+  for (const std::string key : {"normalize = true", "normalize_every = 4", "damping = false",
+                                "spring_constant = 5.0", "lattice_cells = 4"}) {
     const std::string message = error_of(model_table("ode", "step") + key + "\n");
     const std::string name = key.substr(0, key.find(' '));
     EXPECT_NE(message.find("model." + name + ": model 'ode' (another engine) has no such setting"),
