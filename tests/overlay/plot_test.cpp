@@ -47,25 +47,28 @@ std::pair<int, int> frame_top_and_first_red(const RgbaImage& image) {
   return {frame, first_red};
 }
 
-TEST(Plot, FixedYRangeCutsTheCurveAndMarksWhereItLeaves) {
-  const RgbaImage fitted = plot_image(spike(std::nullopt), 400, 300);
-  const RgbaImage clipped = plot_image(spike(std::pair{-0.1, 0.6}), 400, 300);
+/// `fitted` (no fixed range) keeps the red curve inside its frame; `clipped` (a fixed range
+/// the spike leaves) cuts it at the edge, with a red triangle standing on the frame's top edge,
+/// outside it, and only where the curve leaves the range (x = 40 of 0 … 100): no red above the
+/// frame at the left or right quarter.
+void expect_cut_and_marked(const RgbaImage& fitted, const RgbaImage& clipped) {
   const auto [fitted_frame, fitted_red] = frame_top_and_first_red(fitted);
   const auto [frame, first_red] = frame_top_and_first_red(clipped);
   ASSERT_GT(fitted_frame, 0);
   ASSERT_GT(frame, 0);
-  // Fitted to the data, the curve stays inside the frame; on the fixed range its spike is cut
-  // at the edge and a red triangle stands on the frame's top edge, outside it.
   EXPECT_GE(fitted_red, fitted_frame);
   EXPECT_LT(first_red, frame);
   EXPECT_GE(first_red, frame - 12);  // a small marker, not the curve running off the image
-  // Only where the curve leaves the range (x = 40 of 0 … 100): no red above the frame at the
-  // left or right quarter.
   for (int y = 0; y < frame; ++y) {
     for (int x = 0; x < clipped.width / 4; ++x) EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
     for (int x = 3 * clipped.width / 4; x < clipped.width; ++x)
       EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
   }
+}
+
+TEST(Plot, FixedYRangeCutsTheCurveAndMarksWhereItLeaves) {
+  expect_cut_and_marked(plot_image(spike(std::nullopt), 400, 300),
+                        plot_image(spike(std::pair{-0.1, 0.6}), 400, 300));
 }
 
 // The same on a log axis: the spike (50) above a fixed range 1e-3 … 1 is cut at the top edge
@@ -77,18 +80,8 @@ TEST(Plot, FixedLogYRangeCutsTheCurveAndMarksWhereItLeaves) {
     for (double& y : spec.series[0].y) y = std::max(y, 1e-3);
     return spec;
   };
-  const RgbaImage fitted = plot_image(log_spike(std::pair{0.0, 1.0}), 400, 300);
-  const RgbaImage clipped = plot_image(log_spike(std::pair{1e-3, 1.0}), 400, 300);
-  const auto [fitted_frame, fitted_red] = frame_top_and_first_red(fitted);
-  const auto [frame, first_red] = frame_top_and_first_red(clipped);
-  ASSERT_GT(fitted_frame, 0);
-  ASSERT_GT(frame, 0);
-  EXPECT_GE(fitted_red, fitted_frame);
-  EXPECT_LT(first_red, frame);
-  EXPECT_GE(first_red, frame - 12);
-  for (int y = 0; y < frame; ++y) {
-    for (int x = 0; x < clipped.width / 4; ++x) EXPECT_FALSE(red(clipped, x, y)) << x << ',' << y;
-  }
+  expect_cut_and_marked(plot_image(log_spike(std::pair{0.0, 1.0}), 400, 300),
+                        plot_image(log_spike(std::pair{1e-3, 1.0}), 400, 300));
 }
 
 /// Huge values that are constant, or differ by less than their rounding: the axis widens
