@@ -8,7 +8,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/run_guarded.hpp"
 #include "cli/subcommand.hpp"
-#include "common/errors.hpp"
+#include "scene/toml_reader.hpp"
 #include "output/output_dir.hpp"
 
 // Every subcommand, once, in the order `bookspin --help` lists them. X(NAME) stands for
@@ -43,7 +43,7 @@ constexpr AddSubcommand kSubcommands[] = {BOOKSPIN_SUBCOMMANDS(BOOKSPIN_LIST_SUB
 #undef BOOKSPIN_LIST_SUBCOMMAND
 
 int report(const std::string& message, int code) {
-  std::cerr << "bookspin: error: " << escape_controls(message) << '\n';
+  std::cerr << "bookspin: error: " << scene::escape_controls(message) << '\n';
   return code;
 }
 

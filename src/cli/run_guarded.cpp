@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "common/stop.hpp"
 #include "render/render_error.hpp"
+#include "scene/toml_reader.hpp"
 #include "video/video.hpp"
 
 namespace bookspin::cli {
@@ -14,7 +15,7 @@ namespace bookspin::cli {
 namespace {
 
 int report(const char* kind, const std::string& message, int code) {
-  std::cerr << "bookspin: " << kind << ": " << escape_controls(message) << '\n';
+  std::cerr << "bookspin: " << kind << ": " << scene::escape_controls(message) << '\n';
   return code;
 }
 

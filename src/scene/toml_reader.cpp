@@ -54,6 +54,30 @@ std::string format_number(double value) {
   return text;
 }
 
+std::string escape_controls(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto u = static_cast<unsigned char>(text[i]);
+    char buffer[8];
+    if (u == '\n' || u == '\t' || u == '\r') {
+      out += '\\';
+      out += u == '\n' ? 'n' : u == '\t' ? 't' : 'r';
+    } else if (u < 0x20 || u == 0x7f) {
+      std::snprintf(buffer, sizeof buffer, "\\x%02x", u);
+      out += buffer;
+    } else if (u == 0xc2 && i + 1 < text.size() &&
+               static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+               static_cast<unsigned char>(text[i + 1]) <= 0x9f) {
+      std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned char>(text[++i]));
+      out += buffer;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
 TomlReader::TomlReader(const toml::table& root, std::string origin,
                        std::set<std::string> overridden, std::string key_prefix,
                        const toml::node* anchor)

@@ -18,6 +18,14 @@ namespace bookspin::scene {
 /// not, so that a value just past a bound never prints as the bound itself.
 std::string format_number(double value);
 
+/// `text` with every control character written as an escape, so that a value quoted in a
+/// message keeps the message on one line and sends nothing to the terminal: newline, tab and
+/// carriage return as `\n`, `\t`, `\r`, any other C0 control and DEL as `\xHH` (ESC:
+/// `\x1b`), a C1 control (U+0080 … U+009F, two bytes in UTF-8) as `\u00HH`. Other bytes are
+/// kept, so escaped text passes through unchanged. The command line writes every error line
+/// through it (CLI11's own messages too).
+std::string escape_controls(std::string_view text);
+
 class TomlReader {
  public:
   /// `origin` names the file in messages; keys in `overridden` came from `--set`.
