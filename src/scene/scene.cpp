@@ -407,6 +407,35 @@ void check_caption_twist(TomlReader& r, const Scene& s) {
            "separatrix (no period)");
 }
 
+/// What the engines cannot run, refused here rather than aborting in them (scenes/README.md,
+/// "Engine limits"): ODE asserts and aborts on a subnormal step (its quaternion update cannot
+/// normalize), MuJoCo rejects a body whose mass or principal moment is at most its mjMINVAL
+/// (1e-15). Checked for the scene's model and every [[compare]] tile's.
+void check_engine_limits(TomlReader& r, const Scene& s) {
+  std::vector<physics::ModelKind> kinds{s.model.kind};
+  for (const CompareTile& tile : s.compare) kinds.push_back(tile.model.kind);
+  const auto uses = [&kinds](physics::ModelKind kind) {
+    return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
+  };
+  if (uses(physics::ModelKind::ode) && s.dt < std::numeric_limits<double>::min())
+    r.fail("time.dt", "ODE cannot step by a subnormal dt (below " +
+                          format_number(std::numeric_limits<double>::min()) + ", got " +
+                          format_number(s.dt) + "): its quaternion update cannot normalize");
+  constexpr double kMujocoMinVal = 1e-15;  // MuJoCo's mjMINVAL (mjmodel.h)
+  if (uses(physics::ModelKind::mujoco)) {
+    const double smallest = s.body.moments.minCoeff();
+    const char* key = s.body.shape == physics::BodyShape::book ? "book.size" : "body.scale";
+    if (s.body.cage.mass <= kMujocoMinVal)
+      r.fail(s.body.shape == physics::BodyShape::book ? "book.mass" : "body.mass",
+             "MuJoCo needs a mass above its mjMINVAL (1e-15), got " +
+                 format_number(s.body.cage.mass));
+    if (smallest <= kMujocoMinVal)
+      r.fail(key, "MuJoCo needs every principal moment above its mjMINVAL (1e-15); this body's "
+                  "smallest is " +
+                      format_number(smallest) + " (a larger or heavier body)");
+  }
+}
+
 Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
                   const std::set<std::string>& overridden) {
   TomlReader r(root, origin.string(), overridden);
@@ -431,6 +460,7 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
            "Poinsot's construction needs a spinning body, but initial.angular_velocity is "
            "[0, 0, 0] and initial.jiggle is 0 (at rest: L = 0)");
   check_caption_twist(r, s);
+  check_engine_limits(r, s);
   return s;
 }
 
