@@ -8,8 +8,8 @@
 #include "cli/interrupt.hpp"
 #include "cli/run_guarded.hpp"
 #include "cli/subcommand.hpp"
-#include "scene/toml_reader.hpp"
 #include "output/output_dir.hpp"
+#include "scene/toml_reader.hpp"
 
 // Every subcommand, once, in the order `bookspin --help` lists them. X(NAME) stands for
 // src/cli/NAME_command.cpp, which defines `Subcommand add_NAME(CLI::App& cli)`: a new

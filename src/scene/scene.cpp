@@ -426,13 +426,14 @@ void check_engine_limits(TomlReader& r, const Scene& s) {
     const double smallest = s.body.moments.minCoeff();
     const char* key = s.body.shape == physics::BodyShape::book ? "book.size" : "body.scale";
     if (s.body.cage.mass <= kMujocoMinVal)
-      r.fail(s.body.shape == physics::BodyShape::book ? "book.mass" : "body.mass",
-             "MuJoCo needs a mass above its mjMINVAL (1e-15), got " +
-                 format_number(s.body.cage.mass));
+      r.fail(
+          s.body.shape == physics::BodyShape::book ? "book.mass" : "body.mass",
+          "MuJoCo needs a mass above its mjMINVAL (1e-15), got " + format_number(s.body.cage.mass));
     if (smallest <= kMujocoMinVal)
-      r.fail(key, "MuJoCo needs every principal moment above its mjMINVAL (1e-15); this body's "
-                  "smallest is " +
-                      format_number(smallest) + " (a larger or heavier body)");
+      r.fail(key,
+             "MuJoCo needs every principal moment above its mjMINVAL (1e-15); this body's "
+             "smallest is " +
+                 format_number(smallest) + " (a larger or heavier body)");
   }
 }
 
