@@ -19,11 +19,6 @@ std::string short_number(double value) {
   return text;
 }
 
-/// A judgement CSV's number: shortest round-trip form, an empty cell for none.
-CsvNumber number(const std::optional<double>& value) {
-  return CsvNumber{value, nullptr, NumberStyle::shortest};
-}
-
 }  // namespace
 
 Scenario scenario_of(const scene::Scene& scene) {
@@ -176,17 +171,17 @@ CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotio
     std::string failures;
     for (const std::string& f : c.failures) failures += (failures.empty() ? "" : "; ") + f;
     const auto if_stable = [&c](double value) {
-      return number(c.stable_spin ? std::optional<double>(value) : std::nullopt);
+      return shortest_cell(c.stable_spin ? std::optional<double>(value) : std::nullopt);
     };
     table.rows.push_back(
         {scenario.name, j.file.filename().string(), std::string(c.pass() ? "pass" : "fail"),
-         std::to_string(c.stride), std::to_string(c.last_step), number(c.start_error),
-         number(c.energy_drift), number(c.L_drift), std::to_string(c.flips),
-         std::to_string(c.flips_exact), number(c.first_flip), number(c.first_flip_exact),
-         number(c.first_flip_error), number(c.orientation_error),
-         std::string(c.stable_spin ? "1" : "0"),
-         number(c.stable_spin ? c.tumble_time : std::nullopt), if_stable(c.separatrix_ratio_drift),
-         if_stable(c.separatrix_approach), failures});
+         std::to_string(c.stride), std::to_string(c.last_step), shortest_cell(c.start_error),
+         shortest_cell(c.energy_drift), shortest_cell(c.L_drift), std::to_string(c.flips),
+         std::to_string(c.flips_exact), shortest_cell(c.first_flip),
+         shortest_cell(c.first_flip_exact), shortest_cell(c.first_flip_error),
+         shortest_cell(c.orientation_error), std::string(c.stable_spin ? "1" : "0"),
+         shortest_cell(c.stable_spin ? c.tumble_time : std::nullopt),
+         if_stable(c.separatrix_ratio_drift), if_stable(c.separatrix_approach), failures});
   }
   return table;
 }

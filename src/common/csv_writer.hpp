@@ -23,6 +23,11 @@ struct CsvNumber {
   NumberStyle style = NumberStyle::digits17;
 };
 
+/// A number cell in shortest round-trip form (NumberStyle::shortest); an empty cell for none.
+inline CsvNumber shortest_cell(std::optional<double> value) {
+  return {value, nullptr, NumberStyle::shortest};
+}
+
 /// One cell: text as it is (a name, an integer, a flag, a number the caller spelled with
 /// number_text.hpp; "" is an empty cell) or a number.
 using CsvCell = std::variant<std::string, CsvNumber>;

@@ -12,11 +12,6 @@
 namespace bookspin::products {
 namespace {
 
-CsvNumber number(double value) { return {value, nullptr, NumberStyle::shortest}; }
-CsvNumber number(const std::optional<double>& value) {
-  return {value, nullptr, NumberStyle::shortest};
-}
-
 std::string fixed(double value, int digits) {
   std::ostringstream text;
   text.precision(digits);
@@ -49,12 +44,13 @@ CsvTable fit_toss_csv(const fit::FitResult& fit) {
                  {}};
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const fit::TossFit& t = fit.tosses[k];
-    table.rows.push_back({std::to_string(k + 1), number(t.flight.t_start), number(t.flight.t_end),
-                          number(t.omega0[0]), number(t.omega0[1]), number(t.omega0[2]),
-                          number(t.half_period_measured), number(t.half_period_fitted),
-                          number(t.half_period_predicted), number(t.residual_rms),
-                          number(t.L_decay), std::string(t.stable ? "yes" : "no"),
-                          std::string(t.poor_fit ? "yes" : "no")});
+    table.rows.push_back(
+        {std::to_string(k + 1), shortest_cell(t.flight.t_start), shortest_cell(t.flight.t_end),
+         shortest_cell(t.omega0[0]), shortest_cell(t.omega0[1]), shortest_cell(t.omega0[2]),
+         shortest_cell(t.half_period_measured), shortest_cell(t.half_period_fitted),
+         shortest_cell(t.half_period_predicted), shortest_cell(t.residual_rms),
+         shortest_cell(t.L_decay), std::string(t.stable ? "yes" : "no"),
+         std::string(t.poor_fit ? "yes" : "no")});
   }
   return table;
 }
@@ -66,15 +62,16 @@ CsvTable fit_body_csv(const fit::FitResult& fit) {
        "axis1_z", "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z",
        "axis1_sigma_deg", "axis2_sigma_deg", "axis3_sigma_deg", "moments", "tosses"},
       {}};
-  std::vector<CsvCell> row{number(b.ratios[0]), number(b.ratios[1]), number(b.ratios[2])};
+  std::vector<CsvCell> row{shortest_cell(b.ratios[0]), shortest_cell(b.ratios[1]),
+                           shortest_cell(b.ratios[2])};
   for (int i = 0; i < 2; ++i)
     row.push_back(
-        number(b.ratio_sigma ? std::optional<double>((*b.ratio_sigma)[i]) : std::nullopt));
+        shortest_cell(b.ratio_sigma ? std::optional<double>((*b.ratio_sigma)[i]) : std::nullopt));
   for (int a = 0; a < 3; ++a)
-    for (int c = 0; c < 3; ++c) row.push_back(number(b.axes(c, a)));
+    for (int c = 0; c < 3; ++c) row.push_back(shortest_cell(b.axes(c, a)));
   for (int a = 0; a < 3; ++a)
-    row.push_back(
-        number(b.axis_sigma_deg ? std::optional<double>((*b.axis_sigma_deg)[a]) : std::nullopt));
+    row.push_back(shortest_cell(b.axis_sigma_deg ? std::optional<double>((*b.axis_sigma_deg)[a])
+                                                 : std::nullopt));
   row.push_back(std::string(b.moments_fixed        ? "given"
                             : b.moments_determined ? "fitted"
                                                    : "poorly determined"));

@@ -12,8 +12,6 @@ namespace {
 
 JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.y()}, {v.z()}}}; }
 
-CsvNumber number(double value) { return CsvNumber{value, nullptr, NumberStyle::shortest}; }
-
 }  // namespace
 
 FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_dir,
@@ -54,11 +52,12 @@ CsvTable exact_motion_csv(const jobs::ExactMotion& m) {
                    "wx_world", "wy_world", "wz_world", "Lx", "Ly", "Lz", "E"};
   table.rows.reserve(m.rows.size());
   for (const jobs::ExactMotionRow& r : m.rows) {
-    table.rows.push_back({number(r.t), number(r.q[0]), number(r.q[1]), number(r.q[2]),
-                          number(r.q[3]), number(r.omega_body.x()), number(r.omega_body.y()),
-                          number(r.omega_body.z()), number(r.omega_world.x()),
-                          number(r.omega_world.y()), number(r.omega_world.z()), number(r.L.x()),
-                          number(r.L.y()), number(r.L.z()), number(r.E)});
+    table.rows.push_back(
+        {shortest_cell(r.t), shortest_cell(r.q[0]), shortest_cell(r.q[1]), shortest_cell(r.q[2]),
+         shortest_cell(r.q[3]), shortest_cell(r.omega_body.x()), shortest_cell(r.omega_body.y()),
+         shortest_cell(r.omega_body.z()), shortest_cell(r.omega_world.x()),
+         shortest_cell(r.omega_world.y()), shortest_cell(r.omega_world.z()), shortest_cell(r.L.x()),
+         shortest_cell(r.L.y()), shortest_cell(r.L.z()), shortest_cell(r.E)});
   }
   return table;
 }
