@@ -109,16 +109,26 @@ TEST(ExploreCommand, WritesEveryScenesSettingsAndTheMeshBodyIntoTheShell) {
         << face;
 }
 
+/// A fresh folder with the test shell and a one-line scene titled `title` (DIR/s.toml), and
+/// the command that writes its page to DIR/out/explorer.html.
+struct OnePage {
+  fs::path dir, scene, page;
+  std::string args;
+  OnePage(const std::string& name, const std::string& title)
+      : dir(fresh_dir(name)), scene(dir / "s.toml"), page(dir / "out" / "explorer.html") {
+    const fs::path shell = write_shell(dir);
+    std::ofstream(scene) << "[scene]\ntitle = \"" << title << "\"\n";
+    args = "explore " + scene.string() + " --shell " + shell.string() + " -o " +
+           (dir / "out").string();
+  }
+};
+
 // Nothing to do, nothing done: run again with the same shell and scenes, the page keeps its
 // bytes and its modification time; a comment is no change; a changed scene or shell rewrites it.
 TEST(ExploreCommand, UnchangedInputsLeaveThePageAloneAndAChangeRewritesIt) {
-  const fs::path dir = fresh_dir("explore/cached");
-  const fs::path shell = write_shell(dir);
-  const fs::path scene = dir / "s.toml";
-  std::ofstream(scene) << "[scene]\ntitle = \"first title\"\n";
-  const std::string args =
-      "explore " + scene.string() + " --shell " + shell.string() + " -o " + (dir / "out").string();
-  const fs::path page = dir / "out" / "explorer.html";
+  const OnePage one("explore/cached", "first title");
+  const fs::path &dir = one.dir, &scene = one.scene, &page = one.page;
+  const std::string& args = one.args;
   ASSERT_EQ(run_bookspin(args).status, 0);
   const std::string bytes = read_file(page);
   const auto written = fs::last_write_time(page);
@@ -149,13 +159,9 @@ TEST(ExploreCommand, UnchangedInputsLeaveThePageAloneAndAChangeRewritesIt) {
 // A page corrupted at the same size stays "up to date" on sizes; --verify hashes it and writes
 // it again, --force writes it whatever the manifest says (docs/outputs.md).
 TEST(ExploreCommand, VerifySeesASameSizeCorruptionAndForceRewrites) {
-  const fs::path dir = fresh_dir("explore/verify");
-  const fs::path shell = write_shell(dir);
-  const fs::path scene = dir / "s.toml";
-  std::ofstream(scene) << "[scene]\ntitle = \"a title\"\n";
-  const std::string args =
-      "explore " + scene.string() + " --shell " + shell.string() + " -o " + (dir / "out").string();
-  const fs::path page = dir / "out" / "explorer.html";
+  const OnePage one("explore/verify", "a title");
+  const fs::path& page = one.page;
+  const std::string& args = one.args;
   ASSERT_EQ(run_bookspin(args).status, 0);
   const std::string bytes = read_file(page);
   std::string corrupted = bytes;

@@ -292,20 +292,25 @@ TEST(Manifest, WholeSweepSkipsWhenUpToDate) {
   EXPECT_TRUE(fs::is_regular_file(box.out / "tiny-sweep.png"));
 }
 
+/// `bookspin export --gltf` of the sandbox's scene with `options`.
+CliResult export_gltf(const Sandbox& box, const std::string& options) {
+  return run_bookspin("export " + box.scene.string() + " --gltf " + options + " -o " +
+                      box.out.string());
+}
+
+/// An export that made the .glb, and one that found it up to date.
+bool made(const CliResult& r) {
+  return r.status == 0 && r.output.find("exported: ") != std::string::npos &&
+         r.output.find("up to date") == std::string::npos;
+}
+bool skipped_glb(const CliResult& r) {
+  return r.status == 0 && r.output.find("up to date: tiny.glb") != std::string::npos &&
+         r.output.find("exported:") == std::string::npos;
+}
+
 TEST(Manifest, GltfExportSkipsWhenUpToDateAndTheGalleryLinksOnlyAListedGlb) {
   const Sandbox box("manifest_gltf");
-  const auto exported = [&box](const std::string& options) {
-    return run_bookspin("export " + box.scene.string() + " --gltf " + options + " -o " +
-                        box.out.string());
-  };
-  const auto made = [](const CliResult& r) {
-    return r.status == 0 && r.output.find("exported: ") != std::string::npos &&
-           r.output.find("up to date") == std::string::npos;
-  };
-  const auto skipped_glb = [](const CliResult& r) {
-    return r.status == 0 && r.output.find("up to date: tiny.glb") != std::string::npos &&
-           r.output.find("exported:") == std::string::npos;
-  };
+  const auto exported = [&box](const std::string& options) { return export_gltf(box, options); };
   ASSERT_TRUE(made(exported("")));
   const fs::path glb = box.out / "tiny.glb";
   const std::string bytes = read_file(glb);
@@ -333,18 +338,7 @@ TEST(Manifest, GltfExportSkipsWhenUpToDateAndTheGalleryLinksOnlyAListedGlb) {
 // export; then --verify finds it as its manifest says.
 TEST(Manifest, GltfExportVerifyRemakesAGlbChangedAtTheSameSize) {
   const Sandbox box("manifest_gltf_verify");
-  const auto exported = [&box](const std::string& options) {
-    return run_bookspin("export " + box.scene.string() + " --gltf " + options + " -o " +
-                        box.out.string());
-  };
-  const auto made = [](const CliResult& r) {
-    return r.status == 0 && r.output.find("exported: ") != std::string::npos &&
-           r.output.find("up to date") == std::string::npos;
-  };
-  const auto skipped_glb = [](const CliResult& r) {
-    return r.status == 0 && r.output.find("up to date: tiny.glb") != std::string::npos &&
-           r.output.find("exported:") == std::string::npos;
-  };
+  const auto exported = [&box](const std::string& options) { return export_gltf(box, options); };
   ASSERT_TRUE(made(exported("")));
   const fs::path glb = box.out / "tiny.glb";
   const std::string bytes = read_file(glb);
