@@ -37,15 +37,13 @@ namespace {
 void check_step_counts(const AccuracyRequest& request, double flip_period) {
   if (!std::isfinite(flip_period)) {
     // The cause: a body without an intermediate axis never flips, whatever its start.
-    const Eigen::Vector3d& I = request.scene.body.moments;
-    const double lo = I.minCoeff(), hi = I.maxCoeff(), mid = I.sum() - lo - hi;
-    const auto equal = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); };
-    if (equal(lo, hi))
+    const int distinct = physics::distinct_moments(request.scene.body.moments);
+    if (distinct == 1)
       throw InputError(request.scene.name +
                        ": the body's three principal moments are equal (a cube or a sphere: "
                        "every axis is principal), so it never flips, whatever its spin or "
                        "jiggle: no flip period to measure the runs over");
-    if (equal(lo, mid) || equal(mid, hi))
+    if (distinct == 2)
       throw InputError(request.scene.name +
                        ": two of the body's principal moments are equal (a symmetric body: no "
                        "intermediate axis), so it never flips, whatever its spin or jiggle: no "

@@ -61,6 +61,14 @@ std::array<int, 3> principal_order(const Eigen::Vector3d& moments) {
   return order;
 }
 
+int distinct_moments(const Eigen::Vector3d& moments) {
+  const std::array<int, 3> o = principal_order(moments);
+  const auto same = [&](int a, int b) {
+    return moments[b] - moments[a] <= 1e-12 * std::abs(moments[b]);
+  };
+  return 1 + (same(o[0], o[1]) ? 0 : 1) + (same(o[1], o[2]) ? 0 : 1);
+}
+
 BodyResult body_from_mesh(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3Xi& triangles,
                           double mass, double scale, const Eigen::Matrix3Xf& face_colours,
                           bool smooth, BodyShape shape) {

@@ -63,6 +63,11 @@ BodyResult body_from_mesh(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3
 /// default book {1, 0, 2} (y, x, z), for every other body {0, 1, 2}.
 std::array<int, 3> principal_order(const Eigen::Vector3d& moments);
 
+/// How many of the three principal moments differ (two count as one within 1e-12 of the
+/// larger): 1 for a cube or a sphere (every axis principal, every spin steady), 2 for a
+/// symmetric body (no intermediate axis: it never flips), 3 otherwise.
+int distinct_moments(const Eigen::Vector3d& moments);
+
 /// "book" | "t-handle" | "tennis-racket" | "phone" | "mesh".
 std::string_view to_string(BodyShape shape);
 /// Parses the names of to_string(BodyShape); false if unknown.

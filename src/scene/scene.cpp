@@ -392,8 +392,7 @@ void check_caption_twist(TomlReader& r, const Scene& s) {
   physics::ExactModel exact(s.body);
   exact.reset(s.initial);
   const physics::ExactCase motion = exact.rotation().motion_case();
-  const Eigen::Vector3d& I = s.body.moments;
-  if (motion == physics::ExactCase::steady && I.maxCoeff() - I.minCoeff() <= 1e-12 * I.maxCoeff())
+  if (motion == physics::ExactCase::steady && physics::distinct_moments(s.body.moments) == 1)
     r.fail(key,
            "the twist needs a body-frame motion with a period, but the body's three principal "
            "moments are equal (a cube or a sphere): every spin is steady, whatever its jiggle");

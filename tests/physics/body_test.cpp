@@ -48,6 +48,21 @@ TEST(Body, BookBodyIsTheBookWithItsMomentsAndNoSurface) {
   EXPECT_EQ(book_order, (std::array<int, 3>{1, 0, 2}));  // the default book: y, x, z
 }
 
+// A cube's moments m(a² + a²)/12 are one value; a 1 × 1 × 2 box's are two (the square's axis
+// apart); the book's three differ. Within 1e-12 counts as equal, 1e-9 apart does not.
+TEST(Body, DistinctMomentsCountsTheCubeTheSymmetricBodyAndTheBook) {
+  Book cube;
+  cube.size = {1.0, 1.0, 1.0};
+  EXPECT_EQ(distinct_moments(cube.principal_moments()), 1);
+  Book bar;
+  bar.size = {1.0, 1.0, 2.0};
+  EXPECT_EQ(distinct_moments(bar.principal_moments()), 2);
+  EXPECT_EQ(distinct_moments(Book{}.principal_moments()), 3);
+  EXPECT_EQ(distinct_moments({2.0, 2.0 * (1 + 1e-13), 2.0}), 1);
+  EXPECT_EQ(distinct_moments({2.0, 2.0 * (1 + 1e-9), 2.0}), 2);
+  EXPECT_EQ(distinct_moments({3.0, 1.0, 3.0}), 2);
+}
+
 TEST(Body, ShapeNamesRoundTrip) {
   for (BodyShape shape : {BodyShape::book, BodyShape::t_handle, BodyShape::tennis_racket,
                           BodyShape::phone, BodyShape::mesh}) {
