@@ -45,6 +45,23 @@ done
 "$bookspin" accuracy sweeps/engines-energy-vs-dt.toml "${flips[@]}" \
   --methods engines,rigid-quaternion:rk4,rigid-quaternion:implicit-midpoint,rigid-quaternion:splitting4 \
   --dt "${dts[@]}" -o "$out"
+# The conformance kit's league table (docs/flipcheck.md): the scenarios exported, the
+# JavaScript engines run on them under node (where web/node_modules is installed), then every
+# method and mode bookspin has judged beside them: OUT/flipcheck-league.html, which the gallery
+# links. --quick: two methods (the scenarios as they are: seconds).
+league_methods=all
+[ -z "$quick" ] || league_methods=rigid-quaternion:rk4,mujoco:rk4
+"$bookspin" flipcheck export scenes/flipcheck/*.toml -o "$out/flipcheck"
+motions=("$out"/flipcheck/*-exact.csv)
+if command -v node >/dev/null && [ -d web/node_modules/jolt-physics ]; then
+  rm -rf "$out/flipcheck/motions"
+  node web/flipcheck-engines.mjs "$out/flipcheck/motions" "$out"/flipcheck/*.json
+  motions+=("$out"/flipcheck/motions/*.csv)
+else
+  echo "figures: no node or web/node_modules: the league table without the JavaScript engines"
+fi
+"$bookspin" flipcheck league scenes/flipcheck/*.toml --motions "${motions[@]}" \
+  --methods "$league_methods" -o "$out"
 if command -v em++ >/dev/null && command -v npm >/dev/null; then
   bash web/build.sh "$build" && "$bookspin" explore --engines scenes/*.toml sweeps/*.toml -o "$out"
 else

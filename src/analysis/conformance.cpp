@@ -6,6 +6,7 @@
 
 #include "analysis/motion.hpp"
 #include "common/errors.hpp"
+#include "engines/models.hpp"
 #include "physics/shape.hpp"
 
 namespace bookspin::analysis {
@@ -44,6 +45,34 @@ Scenario scenario_of(const scene::Scene& scene) {
 Eigen::Vector3d start_omega(const Scenario& scenario) {
   const Eigen::Vector3d& moments = scenario.body.moments;
   return physics::initial_angular_momentum(moments, scenario.initial).cwiseQuotient(moments);
+}
+
+std::vector<MotionSample> simulated_motion(const Scenario& scenario, const Method& method,
+                                           const physics::ModelConfig& model, long long stride,
+                                           const StopPoll& stop) {
+  BOOKSPIN_ASSERT(stride > 0);
+  physics::ModelConfig config = model;
+  config.kind = method.kind;
+  config.integrator = method.integrator;
+  const auto sim = engines::make_model(scenario.body, config);
+  sim->reset(scenario.initial);
+  std::vector<MotionSample> rows;
+  rows.reserve(static_cast<std::size_t>(scenario.steps / stride + 1));
+  for (long long step = 0;; ++step) {
+    if (step % stride == 0) {
+      stop_if_asked(stop, "flipcheck steps");
+      if (!sim->finite()) break;
+      MotionSample row;
+      row.step = step;
+      row.q = Eigen::Quaterniond(sim->orientation());
+      row.omega_body = sim->diagnostics().omega_body;
+      if (!row.q.coeffs().allFinite() || !row.omega_body.allFinite()) break;
+      rows.push_back(row);
+    }
+    if (step >= scenario.steps) break;
+    sim->step(scenario.dt);
+  }
+  return rows;
 }
 
 Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& motion,
@@ -174,12 +203,12 @@ CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotio
       return shortest_cell(c.stable_spin ? std::optional<double>(value) : std::nullopt);
     };
     table.rows.push_back(
-        {scenario.name, j.file.filename().string(), std::string(c.pass() ? "pass" : "fail"),
-         std::to_string(c.stride), std::to_string(c.last_step), shortest_cell(c.start_error),
-         shortest_cell(c.energy_drift), shortest_cell(c.L_drift), std::to_string(c.flips),
-         std::to_string(c.flips_exact), shortest_cell(c.first_flip),
-         shortest_cell(c.first_flip_exact), shortest_cell(c.first_flip_error),
-         shortest_cell(c.orientation_error), std::string(c.stable_spin ? "1" : "0"),
+        {scenario.name, j.name, std::string(c.pass() ? "pass" : "fail"), std::to_string(c.stride),
+         std::to_string(c.last_step), shortest_cell(c.start_error), shortest_cell(c.energy_drift),
+         shortest_cell(c.L_drift), std::to_string(c.flips), std::to_string(c.flips_exact),
+         shortest_cell(c.first_flip), shortest_cell(c.first_flip_exact),
+         shortest_cell(c.first_flip_error), shortest_cell(c.orientation_error),
+         std::string(c.stable_spin ? "1" : "0"),
          shortest_cell(c.stable_spin ? c.tumble_time : std::nullopt),
          if_stable(c.separatrix_ratio_drift), if_stable(c.separatrix_approach), failures});
   }

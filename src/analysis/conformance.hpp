@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "analysis/accuracy.hpp"
 #include "common/csv_writer.hpp"
+#include "common/stop.hpp"
 #include "physics/body.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/simulator.hpp"
@@ -40,6 +42,17 @@ struct MotionSample {
   Eigen::Quaterniond q;        ///< orientation, body → world (either sign; normalized here)
   Eigen::Vector3d omega_body;  ///< rad per time unit, body frame
 };
+
+/// `method` (one of bookspin's models × integrators or an engine's mode, made by
+/// engines::make_model() as the accuracy report makes it, with `model`'s other settings) run
+/// from the scenario's start for its steps, a row every `stride` steps from step 0: q from
+/// Simulator::orientation(), ω (body frame) from its diagnostics. A run whose state stops being
+/// finite ends at its last finite row (judge_motion says where it ended). `stop` is asked every
+/// row ("flipcheck steps"): a signal throws Interrupted. Throws InputError where the model
+/// refuses the scenario's body.
+std::vector<MotionSample> simulated_motion(const Scenario& scenario, const Method& method,
+                                           const physics::ModelConfig& model, long long stride,
+                                           const StopPoll& stop = {});
 
 /// The pass/fail thresholds of docs/flipcheck.md ("Thresholds"), where each is reasoned.
 struct ConformanceThresholds {
@@ -86,14 +99,16 @@ Conformance judge_motion(const Scenario& scenario, const std::vector<MotionSampl
 /// One line: "PASS" or "FAIL (reasons)", then the measures.
 std::string verdict_line(const Conformance& c);
 
-/// One motion file judged: the file as given and how its motion compares.
+/// One motion judged: the file as given (empty for a motion bookspin ran itself), its name in
+/// the tables (the file's name, or the method's label: "mujoco rk4") and how it compares.
 struct JudgedMotion {
   std::filesystem::path file;
+  std::string name;
   Conformance result;
 };
 
 /// The judgement as a table (docs/flipcheck.md, "The judgement CSV"): one row per motion, in
-/// the order given, named by its file name; every number in shortest round-trip form, an
+/// the order given, named by JudgedMotion::name; every number in shortest round-trip form, an
 /// empty cell where a value does not apply (no flip, not a stable spin). A value, no I/O.
 CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotion>& judged);
 

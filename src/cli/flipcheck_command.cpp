@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
+#include "common/errors.hpp"
 #include "products/flipcheck.hpp"
 #include "scene/scene.hpp"
 
@@ -20,7 +21,8 @@ namespace {
 struct FlipcheckOptions {
   std::vector<std::string> scenarios;  ///< export: SCENARIO...
   std::string scenario;                ///< judge: SCENARIO
-  std::vector<std::string> motions;    ///< judge: MOTION.csv...
+  std::vector<std::string> motions;    ///< judge: MOTION.csv...; league: --motions
+  std::string methods;                 ///< judge, league: analysis::parse_methods(), or none
   std::vector<std::string> overrides;
   std::string out_dir = "out/flipcheck";
   bool force = false;
@@ -52,15 +54,43 @@ int judge_motions(const FlipcheckOptions& options) {
   products::FlipcheckJudgeJob job;
   job.scene = scene::parse_scene(options.scenario, options.overrides);
   for (const std::string& m : options.motions) job.motions.emplace_back(m);
+  if (!options.methods.empty()) job.methods = analysis::parse_methods(options.methods);
+  if (job.motions.empty() && job.methods.empty())
+    throw InputError("flipcheck judge: nothing to judge: give MOTION files or --methods");
   job.out_dir = options.out_dir;
   job.freshness = {options.force, options.verify, remake_note};
+  job.stop = stop_poll();
   const products::FlipcheckJudgeResult result = products::make_flipcheck_judge(job);
   for (const analysis::JudgedMotion& j : result.judged)
-    std::cout << job.scene.name << " " << j.file.string() << ": "
+    std::cout << job.scene.name << " " << (j.file.empty() ? j.name : j.file.string()) << ": "
               << analysis::verdict_line(j.result) << '\n';
   const auto layout = products::flipcheck_judge_layout(options.out_dir, job.scene);
   std::cout << (result.outcome == cache::Outcome::up_to_date ? "up to date: " : "wrote: ")
             << layout.csv.string() << std::endl;
+  return kExitOk;
+}
+
+/// Judges every motion file and method in every scenario: OUT/flipcheck-league.csv and
+/// OUT/flipcheck-league.html.
+int league_table(const FlipcheckOptions& options) {
+  products::FlipcheckLeagueJob job;
+  for (const std::string& path : options.scenarios) {
+    job.scenes.push_back(scene::parse_scene(path, options.overrides));
+    analysis::scenario_of(job.scenes.back());  // a comparison scene is refused here
+  }
+  for (const std::string& m : options.motions) job.motions.emplace_back(m);
+  if (!options.methods.empty()) job.methods = analysis::parse_methods(options.methods);
+  if (job.motions.empty() && job.methods.empty())
+    throw InputError("flipcheck league: nothing to judge: give --motions files or --methods");
+  job.out_dir = options.out_dir;
+  job.freshness = {options.force, options.verify, remake_note};
+  job.stop = stop_poll();
+  const products::FlipcheckLeagueResult result = products::make_flipcheck_league(job);
+  const auto layout = products::flipcheck_league_layout(options.out_dir);
+  std::cout << (result.outcome == cache::Outcome::up_to_date ? "up to date: " : "wrote: ")
+            << layout.html.string() << ", " << layout.csv.string() << " (" << result.motions
+            << " motions in " << job.scenes.size() << " scenarios, " << result.passed
+            << " pass every one)" << std::endl;
   return kExitOk;
 }
 
@@ -92,13 +122,33 @@ Subcommand add_flipcheck(CLI::App& cli) {
       "Compare motion CSVs (t,qw,qx,qy,qz and wx,wy,wz or wx_world,wy_world,wz_world) with the "
       "scenario's exact motion: a verdict line each and OUT/<scenario>-judge.csv");
   judge->add_option("SCENARIO", options.scenario, "Scenario file (TOML)")->required();
-  judge->add_option("MOTION", options.motions, "Motion CSV files written by an engine")->required();
+  judge->add_option("MOTION", options.motions, "Motion CSV files written by an engine");
+  const char* methods_help =
+      "bookspin's own methods and the engines' modes to run from the scenario's start and "
+      "judge too, comma-separated: all, engines, rigid, a model kind (every mode of it) or "
+      "KIND:INTEGRATOR, e.g. engines,rigid-quaternion:rk4";
+  judge->add_option("--methods", options.methods, methods_help);
   judge->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
   judge->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
   add_freshness_flags(judge, options.force, options.verify,
                       "OUT/<scenario>/flipcheck-judge-manifest.json");
-  return {cmd, [stored, exporter] {
-            return exporter->parsed() ? export_scenarios(*stored) : judge_motions(*stored);
+  CLI::App* league = cmd->add_subcommand(
+      "league",
+      "Judge motion files and methods in every scenario: OUT/flipcheck-league.html (a motion "
+      "per row, a scenario per column) and OUT/flipcheck-league.csv");
+  league->add_option("SCENARIO", options.scenarios, "Scenario files (TOML)")->required();
+  league
+      ->add_option("--motions", options.motions,
+                   "Motion CSV files, each named <scenario>-<motion>.csv (the exported "
+                   "<scenario>-exact.csv among them)")
+      ->take_all();
+  league->add_option("--methods", options.methods, methods_help);
+  league->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  league->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  add_freshness_flags(league, options.force, options.verify, "OUT/flipcheck-league-manifest.json");
+  return {cmd, [stored, exporter, league] {
+            if (exporter->parsed()) return export_scenarios(*stored);
+            return league->parsed() ? league_table(*stored) : judge_motions(*stored);
           }};
 }
 

@@ -1,16 +1,58 @@
 #include "products/flipcheck.hpp"
 
+#include <algorithm>
+#include <map>
+#include <sstream>
+
 #include "cache/make_cached.hpp"
 #include "common/errors.hpp"
 #include "jobs/motion_csv.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
+#include "output/sha256.hpp"
+#include "products/gallery_page.hpp"
 
 namespace bookspin::products {
 
 namespace {
 
 JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.y()}, {v.z()}}}; }
+
+/// Every motion of one scenario judged: the files (read first, so a bad one fails before any
+/// run), then the methods, each run from the scenario's start a row every steps_per_frame
+/// steps with the scene's other model settings. `names`: each file's name in the tables.
+std::vector<analysis::JudgedMotion> judge_all(const scene::Scene& scene,
+                                              const std::vector<std::filesystem::path>& files,
+                                              const std::vector<std::string>& names,
+                                              const std::vector<analysis::Method>& methods,
+                                              const StopPoll& stop) {
+  const analysis::Scenario scenario = analysis::scenario_of(scene);
+  std::vector<jobs::MotionFile> read;
+  for (const std::filesystem::path& file : files)
+    read.push_back(jobs::read_motion_csv(file, scenario.dt, scenario.steps));
+  std::vector<analysis::JudgedMotion> judged;
+  for (std::size_t i = 0; i < files.size(); ++i)
+    judged.push_back({files[i], names[i], analysis::judge_motion(scenario, read[i].rows)});
+  for (const analysis::Method& m : methods) {
+    const auto rows =
+        analysis::simulated_motion(scenario, m, scene.model, scene.steps_per_frame, stop);
+    if (rows.empty()) throw InternalError("flipcheck: " + m.label + " gave no finite start");
+    judged.push_back({{}, m.label, analysis::judge_motion(scenario, rows)});
+  }
+  return judged;
+}
+
+JsonValue method_labels(const std::vector<analysis::Method>& methods) {
+  JsonArray labels;
+  for (const analysis::Method& m : methods) labels.push_back({m.label});
+  return {std::move(labels)};
+}
+
+std::vector<std::string> file_names(const std::vector<std::filesystem::path>& files) {
+  std::vector<std::string> names;
+  for (const auto& f : files) names.push_back(f.filename().string());
+  return names;
+}
 
 }  // namespace
 
@@ -94,18 +136,168 @@ FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, job.scene);
   const analysis::Scenario scenario = analysis::scenario_of(job.scene);
   FlipcheckJudgeResult result;
-  for (const std::filesystem::path& file : job.motions) {
-    const jobs::MotionFile motion = jobs::read_motion_csv(file, scenario.dt, scenario.steps);
-    result.judged.push_back({file, analysis::judge_motion(scenario, motion.rows)});
-  }
+  result.judged = judge_all(job.scene, job.motions, file_names(job.motions), job.methods, job.stop);
   const CsvTable table = analysis::judgement_table(scenario, result.judged);
-  const cache::CachedOutputs cached{
-      job.scene.name + "-judge", layout.manifest, "flipcheck judge", {}, job.out_dir, &job.scene,
-      /*all_or_nothing=*/false,  job.motions};
+  JsonObject options;
+  if (!job.methods.empty()) options.push_back({"methods", method_labels(job.methods)});
+  const cache::CachedOutputs cached{job.scene.name + "-judge", layout.manifest, "flipcheck judge",
+                                    std::move(options),        job.out_dir,     &job.scene,
+                                    /*all_or_nothing=*/false,  job.motions};
   result.outcome = cache::make_cached(cached, job.freshness, [&] {
     output::prepare_output_dir(layout.csv.parent_path());
     output::write_text_file(layout.csv, csv_text(table, "flipcheck judge CSV"));
     return cache::Made{{layout.csv}};
+  });
+  return result;
+}
+
+FlipcheckLeagueLayout flipcheck_league_layout(const std::filesystem::path& out_dir) {
+  return {out_dir / "flipcheck-league.csv", out_dir / "flipcheck-league.html",
+          out_dir / "flipcheck-league-manifest.json"};
+}
+
+namespace {
+
+/// One scenario's column of the league: its name and every motion judged in it.
+struct LeagueColumn {
+  std::string scenario;
+  std::string title;
+  std::vector<analysis::JudgedMotion> judged;
+};
+
+/// "pass 6/6", "fail 0/6", "fail, tumbles at 42.6": a league cell (the docs' table).
+std::string league_cell(const analysis::Conformance& c) {
+  std::string cell = c.pass() ? "pass" : "fail";
+  if (c.stable_spin && c.tumble_time) {
+    std::ostringstream t;
+    t.precision(3);
+    t << *c.tumble_time;
+    return cell + ", tumbles at " + t.str();
+  }
+  return cell + " " + std::to_string(c.flips) + "/" + std::to_string(c.flips_exact);
+}
+
+/// The league page: a self-contained HTML5 table, a motion per row in order of first
+/// appearance, a scenario per column; a failed cell lists its reasons.
+std::string league_html(const std::vector<LeagueColumn>& columns) {
+  std::vector<std::string> rows;
+  for (const LeagueColumn& col : columns)
+    for (const auto& j : col.judged)
+      if (std::find(rows.begin(), rows.end(), j.name) == rows.end()) rows.push_back(j.name);
+  std::ostringstream page;
+  page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+          "<title>bookspin flipcheck: the league table</title>\n<style>\n"
+          "body { font-family: sans-serif; margin: 2em; color: #222; }\n"
+          "table { border-collapse: collapse; font-size: 0.95em; }\n"
+          "th, td { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; }\n"
+          "td.pass { background: #e3f4e1; } td.fail { background: #f9e0de; }\n"
+          "td.none { color: #999; } td small { color: #555; }\n</style>\n</head>\n<body>\n"
+          "<h1>Does the engine get the flip right? The league table</h1>\n"
+          "<p>Each motion judged against the exact motion from the same start "
+          "(<code>bookspin flipcheck</code>, docs/flipcheck.md): pass or fail against the "
+          "documented thresholds, the turn-overs counted against the exact count, and for a "
+          "stable spin the time it starts to tumble; under a failure, its reasons. Every "
+          "number is in <a href=\"flipcheck-league.csv\">flipcheck-league.csv"
+          "</a>.</p>\n<table>\n<tr><th>motion</th>";
+  for (const LeagueColumn& col : columns)
+    page << "<th title=\"" << html_escape(col.title) << "\">" << html_escape(col.scenario)
+         << "</th>";
+  page << "</tr>\n";
+  for (const std::string& row : rows) {
+    page << "<tr><th>" << html_escape(row) << "</th>";
+    for (const LeagueColumn& col : columns) {
+      const auto it = std::find_if(col.judged.begin(), col.judged.end(),
+                                   [&](const analysis::JudgedMotion& j) { return j.name == row; });
+      if (it == col.judged.end()) {
+        page << "<td class=\"none\">not run</td>";
+        continue;
+      }
+      std::string reasons;
+      for (const std::string& f : it->result.failures) reasons += (reasons.empty() ? "" : "; ") + f;
+      page << "<td class=\"" << (it->result.pass() ? "pass" : "fail") << "\">"
+           << html_escape(league_cell(it->result));
+      if (!reasons.empty()) page << "<br><small>" << html_escape(reasons) << "</small>";
+      page << "</td>";
+    }
+    page << "</tr>\n";
+  }
+  page << "</table>\n</body>\n</html>\n";
+  return page.str();
+}
+
+}  // namespace
+
+FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
+  const FlipcheckLeagueLayout layout = flipcheck_league_layout(job.out_dir);
+  // Each file to the scenario whose "<name>-" its name starts with, the longest such name.
+  std::vector<std::vector<std::filesystem::path>> files(job.scenes.size());
+  std::vector<std::vector<std::string>> names(job.scenes.size());
+  for (const std::filesystem::path& file : job.motions) {
+    const std::string base = file.filename().string();
+    std::size_t best = job.scenes.size();
+    for (std::size_t i = 0; i < job.scenes.size(); ++i) {
+      const std::string prefix = job.scenes[i].name + "-";
+      if (base.size() > prefix.size() && base.rfind(prefix, 0) == 0 &&
+          (best == job.scenes.size() || prefix.size() > job.scenes[best].name.size() + 1))
+        best = i;
+    }
+    if (best == job.scenes.size()) {
+      std::string scenarios;
+      for (const auto& s : job.scenes) scenarios += (scenarios.empty() ? "" : ", ") + s.name;
+      throw InputError(file.string() +
+                       ": flipcheck league: the file's name starts with no scenario's (expected "
+                       "<scenario>-<motion>.csv; scenarios: " +
+                       scenarios + ")");
+    }
+    std::string name = base.substr(job.scenes[best].name.size() + 1);
+    if (const std::size_t dot = name.rfind('.'); dot != std::string::npos && dot > 0)
+      name.erase(dot);
+    files[best].push_back(file);
+    names[best].push_back(name);
+  }
+  std::vector<LeagueColumn> columns;
+  CsvTable table;
+  for (std::size_t i = 0; i < job.scenes.size(); ++i) {
+    stop_if_asked(job.stop, "flipcheck league");
+    const scene::Scene& scene = job.scenes[i];
+    LeagueColumn col{scene.name, scene.title,
+                     judge_all(scene, files[i], names[i], job.methods, job.stop)};
+    CsvTable part = analysis::judgement_table(analysis::scenario_of(scene), col.judged);
+    table.columns = part.columns;
+    for (auto& row : part.rows) table.rows.push_back(std::move(row));
+    columns.push_back(std::move(col));
+  }
+  const std::string csv = csv_text(table, "flipcheck league CSV");
+  const std::string html = league_html(columns);
+
+  FlipcheckLeagueResult result;
+  std::map<std::string, bool> passes;
+  for (const LeagueColumn& col : columns)
+    for (const auto& j : col.judged) {
+      const auto [it, fresh] = passes.emplace(j.name, true);
+      it->second = it->second && j.result.pass();
+    }
+  result.motions = static_cast<int>(passes.size());
+  for (const auto& [name, pass] : passes) result.passed += pass ? 1 : 0;
+  // Up to date: the same table and page (as the gallery's), from whatever scenes and files.
+  const cache::CachedOutputs cached{layout.html.filename().string(),
+                                    layout.manifest,
+                                    "flipcheck league",
+                                    {{"tables_sha256", {output::sha256_text(csv + html)}}},
+                                    job.out_dir,
+                                    nullptr,
+                                    /*all_or_nothing=*/true};
+  result.outcome = cache::make_cached(cached, job.freshness, [&] {
+    stop_if_asked(job.stop, "flipcheck league write");
+    output::prepare_output_dir(job.out_dir);
+    output::OutputSet set;
+    output::AtomicTextFile csv_file(layout.csv), html_file(layout.html);
+    csv_file.stream() << csv;
+    html_file.stream() << html;
+    csv_file.finish(set);
+    html_file.finish(set);
+    set.commit();
+    return cache::Made{{layout.csv, layout.html}};
   });
   return result;
 }

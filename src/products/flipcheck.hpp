@@ -64,6 +64,11 @@ struct FlipcheckJudgeJob {
   std::vector<std::filesystem::path> motions;  ///< motion CSVs (jobs/motion_csv.hpp)
   std::filesystem::path out_dir;
   cache::Freshness freshness;
+  /// bookspin's own methods and the engines' modes, each run from the scenario's start with
+  /// the scene's other model settings (analysis::simulated_motion), a row every
+  /// time.steps_per_frame steps; judged after the files
+  std::vector<analysis::Method> methods = {};
+  StopPoll stop = {};  ///< may be empty
 };
 
 struct FlipcheckJudgeResult {
@@ -71,11 +76,51 @@ struct FlipcheckJudgeResult {
   std::vector<analysis::JudgedMotion> judged;  ///< in the order given (also when up to date)
 };
 
-/// (scenario, motions) => OUT/<scenario>-judge.csv + manifest.
+/// (scenario, motions, methods) => OUT/<scenario>-judge.csv + manifest.
 /// Reads every motion file (jobs::read_motion_csv, before anything is written: a bad file is
-/// an InputError naming its file, line and column) and judges it (analysis::judge_motion);
-/// writes the CSV unless its manifest, whose head holds every motion file's SHA-256, says it
-/// is up to date. Throws InputError, OutputError.
+/// an InputError naming its file, line and column), runs every method, and judges each
+/// (analysis::judge_motion); writes the CSV unless its manifest, whose head holds every motion
+/// file's SHA-256 and the methods, says it is up to date. Throws InputError, OutputError,
+/// Interrupted.
 FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job);
+
+/// Every path a league table into OUT writes.
+struct FlipcheckLeagueLayout {
+  std::filesystem::path csv;       ///< OUT/flipcheck-league.csv: every scenario's judgement rows
+  std::filesystem::path html;      ///< OUT/flipcheck-league.html: a motion per row, a scenario
+                                   ///< per column
+  std::filesystem::path manifest;  ///< OUT/flipcheck-league-manifest.json
+};
+
+FlipcheckLeagueLayout flipcheck_league_layout(const std::filesystem::path& out_dir);
+
+struct FlipcheckLeagueJob {
+  std::vector<scene::Scene> scenes;  ///< the scenarios, in the table's column order
+  /// Motion files an engine wrote, each named "<scenario>-<motion>.csv" after the scenario it
+  /// runs (the exported "<scenario>-exact.csv" among them); its row is "<motion>".
+  std::vector<std::filesystem::path> motions;
+  std::vector<analysis::Method> methods;  ///< run in every scenario, as FlipcheckJudgeJob's
+  std::filesystem::path out_dir;
+  cache::Freshness freshness;
+  StopPoll stop = {};  ///< may be empty
+};
+
+struct FlipcheckLeagueResult {
+  cache::Outcome outcome = cache::Outcome::made;
+  int motions = 0;  ///< the table's rows
+  int passed = 0;   ///< the rows that pass every scenario they ran
+};
+
+/// (scenarios, motions, methods) => OUT/flipcheck-league.csv + OUT/flipcheck-league.html +
+/// manifest (docs/flipcheck.md, "The league table").
+/// Gives each motion file to the scenario its name starts with (the longest such name; a file
+/// that names none is an InputError), reads and runs everything before writing anything, and
+/// judges it as make_flipcheck_judge() does; the CSV is the scenarios' judgement tables one
+/// after the other, the page the league table: a row per motion (files by their <motion>
+/// part, methods by label), a column per scenario, each cell pass or fail with the turn-overs
+/// against the exact count, a stable spin's tumble time and the reasons of a failure.
+/// Both files together or neither; up to date when the same table would be written. Throws
+/// InputError, OutputError, Interrupted.
+FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job);
 
 }  // namespace bookspin::products

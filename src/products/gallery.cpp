@@ -15,6 +15,7 @@
 #include "products/accuracy.hpp"
 #include "products/clip.hpp"
 #include "products/explorer.hpp"
+#include "products/flipcheck.hpp"
 #include "products/gallery_page.hpp"
 #include "products/gltf.hpp"
 #include "products/plot.hpp"
@@ -184,6 +185,12 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
 
   GalleryHeader header{output::program_version(), output::program_build_id(), "", machine()};
+  const FlipcheckLeagueLayout league = flipcheck_league_layout(out);
+  if (exists(out, path_in_out(out, league.manifest))) {
+    const Listed tabled(out, league.manifest);
+    header.flipcheck_league = tabled(league.html);
+    header.flipcheck_league_csv = tabled(league.csv);
+  }
   // Up to date: the same page but for its date (output/manifest.hpp).
   GalleryOutcome done;
   done.entries = entries.size();

@@ -155,6 +155,16 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
   if (!header.date.empty()) out << ", " << html_escape(header.date);
   if (!header.machine.empty()) out << ", on " << html_escape(header.machine);
   out << ".</p>\n";
+  if (!header.flipcheck_league.empty()) {
+    out << "<section class=\"kit\" id=\"flipcheck-league\">\n<h2>Does an engine get the flip "
+           "right?</h2>\n<p>The conformance kit (<code>bookspin flipcheck</code>): every model "
+           "and engine bookspin runs, and the JavaScript engines of the explorer, judged against "
+           "the exact motion in seven scenarios: <a href="
+        << attr(header.flipcheck_league) << ">the league table</a>";
+    if (!header.flipcheck_league_csv.empty())
+      out << " · <a href=" << attr(header.flipcheck_league_csv) << ">its CSV</a>";
+    out << ".</p>\n</section>\n";
+  }
   for (const auto& e : entries) write_entry(out, e);
   out << "</body>\n</html>\n";
   return out.str();

@@ -37,6 +37,10 @@ struct GalleryHeader {
   std::string build_id;  ///< SHA-256 of the bookspin executable (the first 12 digits are shown)
   std::string date;      ///< when the page was written, e.g. "2026-11-22 01:50 UTC"
   std::string machine;   ///< host name, CPU model and cores
+  /// The conformance kit's league table ("flipcheck-league.html", and its CSV) where their
+  /// manifest lists them (`bookspin flipcheck league`, docs/flipcheck.md); else empty.
+  std::string flipcheck_league;
+  std::string flipcheck_league_csv;
 };
 
 /// The page's groups, in page order.

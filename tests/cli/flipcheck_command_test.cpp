@@ -90,5 +90,34 @@ TEST(FlipcheckCommand, AComparisonSceneIsNoScenario) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// `judge --methods` runs the method itself: MuJoCo's Euler on its box gives MuJoCo's own
+// E/E0 = 1.0869 after 500 steps, as its simulate CSV does above. `league` writes its page and
+// CSV and says how many pass. Neither motion files nor --methods: exit 2, nothing written.
+TEST(FlipcheckCommand, JudgeAndLeagueRunMethodsThemselves) {
+  ScratchDir dir;
+  const SplitResult judged = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") +
+                                                " --methods mujoco:euler -o " + quoted(dir.path()));
+  EXPECT_EQ(judged.status, 0) << judged.err;
+  EXPECT_NE(judged.out.find("mujoco-test-box mujoco euler: FAIL (energy drift 0.0869;"),
+            std::string::npos)
+      << judged.out;
+  const SplitResult league = run_bookspin_split(
+      "flipcheck league " + scenario("mujoco-test-box") + " " + scenario("symmetric-top") +
+      " --methods mujoco:rk4,mujoco:euler -o " + quoted(dir / "league"));
+  EXPECT_EQ(league.status, 0) << league.err;
+  EXPECT_NE(league.out.find("flipcheck-league.csv (2 motions in 2 scenarios, 1 pass every one)"),
+            std::string::npos)
+      << league.out;
+  EXPECT_TRUE(fs::is_regular_file(dir / "league" / "flipcheck-league.html"));
+  for (const char* command : {"judge", "league"}) {
+    const SplitResult none =
+        run_bookspin_split("flipcheck " + std::string(command) + " " + scenario("mujoco-test-box") +
+                           " -o " + quoted(dir / "none"));
+    EXPECT_EQ(none.status, 2) << command;
+    EXPECT_NE(none.err.find("nothing to judge"), std::string::npos) << none.err;
+    EXPECT_FALSE(fs::exists(dir / "none"));
+  }
+}
+
 }  // namespace
 }  // namespace bookspin::cli

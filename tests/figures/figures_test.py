@@ -8,7 +8,9 @@ writes:
   - every scene file of scenes/ and sweeps/ has its section, and every section shows media (a
     video, a frame or a chart),
   - every file the page links or shows (src=, href=, relative) exists under OUT,
-  - the engines' accuracy report (an accuracy product, not a sweep) shows its four charts.
+  - the engines' accuracy report (an accuracy product, not a sweep) shows its four charts,
+  - the conformance kit's league table (flipcheck-league.html) is linked, and in it the exact
+    motion passes every scenario of scenes/flipcheck/ (docs/flipcheck.md).
 
 Usage: figures_test.py SOURCE_DIR BINARY_DIR
 """
@@ -89,6 +91,16 @@ def main():
                           "-energy")]
     if report != expected:
         failures.append(f"the engines' accuracy report shows {report}, not {expected}")
+    league = [v for tag, attr, v in page.sections.get("flipcheck-league", []) if tag == "a"]
+    if "flipcheck-league.html" not in league:
+        failures.append(f"the gallery does not link the league table (links: {league})")
+    else:
+        table = (out / "flipcheck-league.html").read_text(encoding="utf-8")
+        scenarios = len(list((source / "scenes" / "flipcheck").glob("*.toml")))
+        exact = [line for line in table.splitlines() if line.startswith("<tr><th>exact</th>")]
+        if not exact or exact[0].count('<td class="pass">') != scenarios:
+            failures.append(f"the league table's exact row does not pass all {scenarios} "
+                            f"scenarios: {exact}")
     for f in failures:
         print("FAIL:", f)
     if failures:

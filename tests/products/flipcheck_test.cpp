@@ -8,9 +8,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "common/errors.hpp"
+#include "jobs/simulation.hpp"
 #include "output/manifest.hpp"
 #include "support/cli_runner.hpp"
 #include "support/scratch.hpp"
@@ -103,6 +106,104 @@ TEST(Flipcheck, TheJudgementIsARowPerMotionAndIsRemadeWhenAMotionChanges) {
   EXPECT_EQ(make_flipcheck_judge(job).outcome, cache::Outcome::up_to_date);
   std::ofstream(dir / "negated.csv", std::ios::app) << "# a comment changes the file\n";
   EXPECT_EQ(make_flipcheck_judge(job).outcome, cache::Outcome::made);
+}
+
+// A method run in-process (--methods) is judged as the same method's `simulate` CSV is, which
+// goes through the diagnostics writer and the motion reader instead (docs/flipcheck.md: "judge
+// on a bookspin engine mode's CSV gives the same numbers"): every measure to 1e-9 relative.
+TEST(Flipcheck, AMethodJudgedInProcessEqualsItsSimulateCsvJudged) {
+  test::ScratchDir dir;
+  for (const char* method : {"mujoco:rk4", "rigid-quaternion:rescaled-euler"}) {
+    scene::Scene scene = box();
+    const std::vector<analysis::Method> methods = analysis::parse_methods(method);
+    scene::Scene simulated = scene;
+    simulated.model.kind = methods[0].kind;
+    simulated.model.integrator = methods[0].integrator;
+    const fs::path csv = dir / "simulated.csv";
+    {
+      std::ofstream file(csv);
+      jobs::write_diagnostics_rows(simulated, file);
+    }
+    FlipcheckJudgeJob job{scene, {csv}, dir / "out", {}};
+    job.methods = methods;
+    const FlipcheckJudgeResult result = make_flipcheck_judge(job);
+    ASSERT_EQ(result.judged.size(), 2u);
+    EXPECT_EQ(result.judged[1].name, methods[0].label);
+    EXPECT_TRUE(result.judged[1].file.empty());
+    const analysis::Conformance& a = result.judged[0].result;
+    const analysis::Conformance& b = result.judged[1].result;
+    EXPECT_EQ(a.stride, b.stride);
+    EXPECT_EQ(a.last_step, b.last_step);
+    EXPECT_EQ(a.flips, b.flips);
+    EXPECT_EQ(a.flips_exact, b.flips_exact);
+    EXPECT_EQ(a.failures, b.failures);
+    const auto near = [](double x, double y) {
+      return std::abs(x - y) <= 1e-9 * std::abs(y) + 1e-15;
+    };
+    EXPECT_TRUE(near(a.energy_drift, b.energy_drift))
+        << method << a.energy_drift << " " << b.energy_drift;
+    EXPECT_TRUE(near(a.L_drift, b.L_drift)) << method;
+    EXPECT_TRUE(near(a.orientation_error, b.orientation_error)) << method;
+    ASSERT_TRUE(a.first_flip && b.first_flip) << method;
+    EXPECT_TRUE(near(*a.first_flip, *b.first_flip)) << method;
+    // The box turns over 3 times in its 500 steps (docs/flipcheck.md's league table): MuJoCo's
+    // RK4 passes, the rescaled Euler step drifts the energy by 2.5 % and fails.
+    EXPECT_EQ(b.flips_exact, 3) << method;
+    EXPECT_EQ(b.pass(), std::string(method) == "mujoco:rk4") << method;
+  }
+}
+
+// The league: each motion file goes to the scenario its name starts with, the longest such
+// name ("box-long-exact.csv" is box-long's "exact", not box's "long-exact"); a row per motion,
+// a column per scenario; a file that names no scenario is refused before anything is written.
+TEST(Flipcheck, TheLeagueGivesEachFileToItsScenarioARowPerMotion) {
+  test::ScratchDir dir;
+  const fs::path source = fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck";
+  const scene::Scene short_box =
+      scene::parse_scene(source / "mujoco-test-box.toml", {"scene.name=\"box\""});
+  const scene::Scene long_box = scene::parse_scene(source / "mujoco-test-box.toml",
+                                                   {"scene.name=\"box-long\"", "time.frames=21"});
+  for (const scene::Scene& s : {short_box, long_box})
+    make_flipcheck_export({s, dir / "exact", {}, {}});
+  FlipcheckLeagueJob job;
+  job.scenes = {short_box, long_box};
+  job.motions = {dir / "exact" / "box-long-exact.csv", dir / "exact" / "box-exact.csv"};
+  job.methods = analysis::parse_methods("rigid-quaternion:euler");
+  job.out_dir = dir / "out";
+  const FlipcheckLeagueResult result = make_flipcheck_league(job);
+  EXPECT_EQ(result.outcome, cache::Outcome::made);
+  EXPECT_EQ(result.motions, 2);  // "exact" and "rigid-quaternion euler"
+  EXPECT_EQ(result.passed, 1);   // the exact motion
+  const FlipcheckLeagueLayout layout = flipcheck_league_layout(dir / "out");
+  const std::vector<std::string> csv = lines_of(test::read_file(layout.csv));
+  ASSERT_EQ(csv.size(), 5u);  // the header, two rows per scenario
+  EXPECT_EQ(csv[1].substr(0, 21), "box,exact,pass,1,500,");
+  EXPECT_EQ(csv[2].substr(0, 32), "box,rigid-quaternion euler,fail,");
+  EXPECT_EQ(csv[3].substr(0, 26), "box-long,exact,pass,1,200,");
+  EXPECT_EQ(csv[4].substr(0, 37), "box-long,rigid-quaternion euler,fail,");
+  const std::string html = test::read_file(layout.html);
+  EXPECT_NE(html.find("<tr><th>motion</th><th title=\"flipcheck: MuJoCo&#39;s test box\">box</th>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<tr><th>exact</th><td class=\"pass\">pass 3/3</td><td class=\"pass\">pass "),
+            std::string::npos)
+      << html;
+  EXPECT_EQ(output::read_manifest(layout.manifest).outputs,
+            (std::vector<std::string>{"flipcheck-league.csv", "flipcheck-league.html"}));
+  EXPECT_EQ(make_flipcheck_league(job).outcome, cache::Outcome::up_to_date);
+
+  job.motions.push_back(dir / "exact" / "mujoco-test-box-exact.csv");
+  job.out_dir = dir / "refused";
+  try {
+    make_flipcheck_league(job);
+    ADD_FAILURE() << "a file naming no scenario was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("mujoco-test-box-exact.csv: flipcheck league: the file's "
+                                         "name starts with no scenario's"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "refused"));
 }
 
 }  // namespace

@@ -80,6 +80,30 @@ TEST(Gallery, LinksOnlyWhatTheManifestsListAndExists) {
   EXPECT_NE(test::read_file(out / "index.html").find("src=\"demo-plot.png\""), std::string::npos);
 }
 
+// The conformance kit's league table (`bookspin flipcheck league`) is linked, page and CSV, once
+// its manifest lists them; an HTML file by that name without the manifest is not.
+TEST(Gallery, LinksTheLeagueTableItsManifestLists) {
+  test::ScratchDir dir;
+  const fs::path out = dir / "out";
+  fs::create_directories(dir / "scenes");
+  std::ofstream(dir / "scenes" / "demo.toml") << "[scene]\ntitle = \"Demo\"\n";
+  touch(out / "flipcheck-league.html");
+  touch(out / "flipcheck-league.csv");
+  GalleryJob job;
+  job.out_dir = out;
+  job.scene_paths = {(dir / "scenes" / "demo.toml").string()};
+  make_gallery(job);
+  EXPECT_EQ(test::read_file(out / "index.html").find("flipcheck-league"), std::string::npos);
+  list_in_manifest(out, out / "flipcheck-league-manifest.json",
+                   {"flipcheck-league.csv", "flipcheck-league.html"});
+  EXPECT_EQ(make_gallery(job).outcome, cache::Outcome::made);
+  const std::string html = test::read_file(out / "index.html");
+  for (const char* linked :
+       {"id=\"flipcheck-league\"", "href=\"flipcheck-league.html\">the league table</a>",
+        "href=\"flipcheck-league.csv\">its CSV</a>"})
+    EXPECT_NE(html.find(linked), std::string::npos) << linked << '\n' << html;
+}
+
 // An accuracy report (`bookspin accuracy`, e.g. the engines' energy against the step of `make
 // figures`) shows its four charts and links its two tables, as its manifest lists them; it is
 // not "not rendered yet".
