@@ -159,7 +159,7 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
     out << "<section class=\"kit\" id=\"flipcheck-league\">\n<h2>Does an engine get the flip "
            "right?</h2>\n<p>The conformance kit (<code>bookspin flipcheck</code>): every model "
            "and engine bookspin runs, and the JavaScript engines of the explorer, judged against "
-           "the exact motion in seven scenarios: <a href="
+           "the exact motion in the kit's scenarios: <a href="
         << attr(header.flipcheck_league) << ">the league table</a>";
     if (!header.flipcheck_league_csv.empty())
       out << " · <a href=" << attr(header.flipcheck_league_csv) << ">its CSV</a>";

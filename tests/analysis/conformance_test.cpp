@@ -17,7 +17,6 @@
 
 #include "analysis/accuracy.hpp"
 #include "common/errors.hpp"
-#include "engines/models.hpp"
 #include "scene/scene.hpp"
 #include "support/closed_form_flips.hpp"
 
@@ -170,25 +169,6 @@ TEST(Conformance, ASpinLeaningAwayTumblesAtSixtyDegreesAndNearsTheSeparatrixAsSi
   EXPECT_NE(verdict_line(far).find("tumbles at t = "), std::string::npos);
 }
 
-/// `method` run through scenario `s` from its start (engines::make_model, as `bookspin
-/// accuracy` runs it), a row every `stride` steps; stops at a divergence.
-std::vector<MotionSample> simulate(const Scenario& s, const Method& method, long long stride) {
-  physics::ModelConfig config;
-  config.kind = method.kind;
-  config.integrator = method.integrator;
-  auto sim = engines::make_model(s.body, config);
-  sim->reset(s.initial);
-  std::vector<MotionSample> rows;
-  rows.push_back({0, Eigen::Quaterniond(sim->orientation()), sim->diagnostics().omega_body});
-  for (long long n = 1; n <= s.steps; ++n) {
-    sim->step(s.dt);
-    if (!sim->finite()) break;
-    if (n % stride == 0)
-      rows.push_back({n, Eigen::Quaterniond(sim->orientation()), sim->diagnostics().omega_body});
-  }
-  return rows;
-}
-
 // The turn-over count is the exact one on the intermediate-axis scenarios for every bookspin
 // method whose orientation error stays below 0.1 rad, and 0 on the stable spins for every
 // method that does not tumble (docs/flipcheck.md). The particle models, whose ω is that of
@@ -203,7 +183,7 @@ TEST(Conformance, EveryMethodThatKeepsTheOrientationTurnsOverAsTheExactMotion) {
       if (long_run && m.kind == physics::ModelKind::particle) continue;
       SCOPED_TRACE(std::string(name) + " " + std::string(physics::to_string(m.kind)) + " " +
                    std::string(physics::to_string(m.integrator)));
-      const Conformance c = judge_motion(s, simulate(s, m, long_run ? 10 : 1));
+      const Conformance c = judge_motion(s, simulated_motion(s, m, {}, long_run ? 10 : 1));
       if (c.stable_spin) {
         if (!c.tumble_time && c.complete) {
           EXPECT_EQ(c.flips, 0);
