@@ -6,6 +6,8 @@
 //                        hidden temporary name next to its final path, put in place by
 //                        commit(); OutputSet: a run's outputs put in place together or not at
 //                        all (docs/outputs.md); write_text_file()
+//   staged_files.hpp     StagedFiles: a product's several text and PNG files, each written
+//                        whole under its temporary name, then put in place together
 //   output_dir.hpp       the one check that an output directory is usable, made before any
 //                        work, and make_directories(), which remembers the folders it made
 //   png_writer.hpp       PNG frames written with libdeflate in a container of our own (8-bit
@@ -40,3 +42,4 @@
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "output/sha256.hpp"
+#include "output/staged_files.hpp"

@@ -6,6 +6,7 @@
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
+#include "output/staged_files.hpp"
 
 namespace bookspin::products {
 
@@ -32,7 +33,8 @@ cache::CachedOutputs accuracy_cached(const AccuracyJob& job, const AccuracyLayou
   const JsonObject options{{"flips", {JsonNumber{r.flips, NumberStyle::digits17}}},
                            {"dt", {std::move(dts)}},
                            {"methods", {std::move(labels)}}};
-  return {r.scene.name + "-accuracy", layout.manifest, "accuracy", options, job.out_dir, &r.scene};
+  return {r.scene.name + "-accuracy", layout.manifest, "accuracy", options, job.out_dir, &r.scene,
+          /*all_or_nothing=*/true};
 }
 
 }  // namespace
@@ -52,13 +54,15 @@ cache::Outcome make_accuracy(const AccuracyJob& job) {
         charts::accuracy_images(report.rows, report.methods, report.flips, report.spin_rate,
                                 report.energy, jobs::kLongTimeFlips);
     output::prepare_output_dir(layout.csv.parent_path());
-    output::write_png(layout.png, plots.orientation_error_vs_dt);
-    output::write_png(layout.work_precision_png, plots.work_precision);
-    output::write_png(layout.energy_vs_dt_png, plots.energy_vs_dt);
-    output::write_png(layout.turnovers_png, plots.turnovers_vs_dt);
-    output::write_png(layout.energy_png, plots.long_time_energy);
-    output::write_text_file(layout.csv, table);
-    output::write_text_file(layout.energy_csv, energy);
+    output::StagedFiles files;  // all seven in place together, or none
+    files.png(layout.png, plots.orientation_error_vs_dt);
+    files.png(layout.work_precision_png, plots.work_precision);
+    files.png(layout.energy_vs_dt_png, plots.energy_vs_dt);
+    files.png(layout.turnovers_png, plots.turnovers_vs_dt);
+    files.png(layout.energy_png, plots.long_time_energy);
+    files.text(layout.csv, table);
+    files.text(layout.energy_csv, energy);
+    files.commit();
     return cache::Made{layout.outputs()};
   });
 }

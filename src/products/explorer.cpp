@@ -225,8 +225,13 @@ JsonObject explorer_head(const ExplorerPageRequest& request) {
 ExplorerOutcome make_explorer_page(const ExplorerPageRequest& request) {
   ExplorerOutcome done;
   done.result.path = explorer_page_path(request.out_dir);
-  const cache::CachedOutputs cached{"explorer.html", explorer_manifest_path(request.out_dir),
-                                    "explore", explorer_head(request), request.out_dir};
+  const cache::CachedOutputs cached{"explorer.html",
+                                    explorer_manifest_path(request.out_dir),
+                                    "explore",
+                                    explorer_head(request),
+                                    request.out_dir,
+                                    nullptr,
+                                    /*all_or_nothing=*/true};  // one page, whole or not at all
   done.outcome = cache::make_cached(cached, request.freshness, [&] {
     done.result = write_explorer_page(request);
     return cache::Made{{done.result.path}};

@@ -8,6 +8,7 @@
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "output/sha256.hpp"
+#include "output/staged_files.hpp"
 
 namespace bookspin::products {
 namespace {
@@ -130,7 +131,9 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
                            {"width", {std::int64_t{job.width}}},
                            {"height", {std::int64_t{job.height}}}};
   const std::filesystem::path manifest = job.out_dir / recording.name / "fit-manifest.json";
-  const cache::CachedOutputs cached{recording.name + "-fit", manifest, "fit", members, job.out_dir};
+  const cache::CachedOutputs cached{
+      recording.name + "-fit", manifest, "fit", members, job.out_dir, nullptr,
+      /*all_or_nothing=*/true};
   return cache::make_cached(cached, job.freshness, [&] {
     const fit::FlightSearch search = job.tosses.empty() ? fit::find_flights(recording)
                                                         : fit::hand_flights(recording, job.tosses);
@@ -144,9 +147,11 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
       charts.push_back(
           charts::toss_image(recording, result, static_cast<int>(k), job.width, job.height));
     output::prepare_output_dir(layout.csv.parent_path());
-    output::write_text_file(layout.csv, csv_text(fit_toss_csv(result), "fit CSV"));
-    output::write_text_file(layout.body_csv, csv_text(fit_body_csv(result), "fit body CSV"));
-    for (std::size_t k = 0; k < charts.size(); ++k) output::write_png(layout.pngs[k], charts[k]);
+    output::StagedFiles files;  // the tables and every chart together, or none
+    files.text(layout.csv, csv_text(fit_toss_csv(result), "fit CSV"));
+    files.text(layout.body_csv, csv_text(fit_body_csv(result), "fit body CSV"));
+    for (std::size_t k = 0; k < charts.size(); ++k) files.png(layout.pngs[k], charts[k]);
+    files.commit();
     if (summary) {
       *summary = fit_summary(result);
       summary->push_back("wrote " + layout.csv.string() + ", " + layout.body_csv.string() +

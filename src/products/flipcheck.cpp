@@ -10,6 +10,7 @@
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/sha256.hpp"
+#include "output/staged_files.hpp"
 #include "products/gallery_page.hpp"
 
 namespace bookspin::products {
@@ -112,7 +113,8 @@ cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
                                     "flipcheck export",
                                     {},
                                     job.out_dir,
-                                    &job.scene};
+                                    &job.scene,
+                                    /*all_or_nothing=*/true};
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
     const JsonValue start = scenario_json(motion);
@@ -120,8 +122,10 @@ cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
     const std::string json = json_text(start, "flipcheck scenario", JsonLayout::indented) + "\n";
     const std::string csv = csv_text(table, "flipcheck exact motion CSV");
     output::prepare_output_dir(layout.json.parent_path());
-    output::write_text_file(layout.json, json);
-    output::write_text_file(layout.csv, csv);
+    output::StagedFiles files;
+    files.text(layout.json, json);
+    files.text(layout.csv, csv);
+    files.commit();
     return cache::Made{{layout.json, layout.csv}};
   });
 }
@@ -142,7 +146,7 @@ FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   if (!job.methods.empty()) options.push_back({"methods", method_labels(job.methods)});
   const cache::CachedOutputs cached{job.scene.name + "-judge", layout.manifest, "flipcheck judge",
                                     std::move(options),        job.out_dir,     &job.scene,
-                                    /*all_or_nothing=*/false,  job.motions};
+                                    /*all_or_nothing=*/true,   job.motions};
   result.outcome = cache::make_cached(cached, job.freshness, [&] {
     output::prepare_output_dir(layout.csv.parent_path());
     output::write_text_file(layout.csv, csv_text(table, "flipcheck judge CSV"));
@@ -290,13 +294,10 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   result.outcome = cache::make_cached(cached, job.freshness, [&] {
     stop_if_asked(job.stop, "flipcheck league write");
     output::prepare_output_dir(job.out_dir);
-    output::OutputSet set;
-    output::AtomicTextFile csv_file(layout.csv), html_file(layout.html);
-    csv_file.stream() << csv;
-    html_file.stream() << html;
-    csv_file.finish(set);
-    html_file.finish(set);
-    set.commit();
+    output::StagedFiles files;
+    files.text(layout.csv, csv);
+    files.text(layout.html, html);
+    files.commit();
     return cache::Made{{layout.csv, layout.html}};
   });
   return result;

@@ -184,7 +184,8 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   std::vector<GalleryEntry> entries;
   for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
 
-  GalleryHeader header{output::program_version(), output::program_build_id(), "", machine()};
+  GalleryHeader header{
+      output::program_version(), output::program_build_id(), "", machine(), "", ""};
   const FlipcheckLeagueLayout league = flipcheck_league_layout(out);
   if (exists(out, path_in_out(out, league.manifest))) {
     const Listed tabled(out, league.manifest);
@@ -199,7 +200,9 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
       layout.manifest,
       "gallery",
       {{"page_sha256", {output::sha256_text(gallery_html(entries, header))}}},
-      out};
+      out,
+      nullptr,
+      /*all_or_nothing=*/true};  // one page, whole or not at all (write_page)
   done.outcome = cache::make_cached(cached, job.freshness, [&] {
     stop_if_asked(job.stop_signal, "gallery write");
     std::error_code ec;

@@ -179,7 +179,8 @@ cache::CachedOutputs gltf_cached(const GltfJob& job, const GltfLayout& layout) {
           "export",
           {{"format", {std::string("glb")}}},
           job.out_dir,
-          &job.scene};
+          &job.scene,
+          /*all_or_nothing=*/true};  // one GLB, put in place whole or not at all
 }
 
 }  // namespace

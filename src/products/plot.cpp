@@ -17,7 +17,8 @@ namespace {
 cache::CachedOutputs plot_cached(const PlotJob& job, const PlotLayout& layout) {
   const JsonObject options{{"width", {std::int64_t{job.width}}},
                            {"height", {std::int64_t{job.height}}}};
-  return {job.scene.name + "-plot", layout.manifest, "plot", options, job.out_dir, &job.scene};
+  return {job.scene.name + "-plot", layout.manifest, "plot", options, job.out_dir, &job.scene,
+          /*all_or_nothing=*/true};  // one PNG, put in place whole or not at all
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
+#include "output/staged_files.hpp"
 
 namespace bookspin::products {
 
@@ -37,8 +38,10 @@ std::vector<fs::path> write_sweep(const jobs::SweepTable& table, const SweepPath
   const charts::SweepChart chart = jobs::sweep_chart(table);
   const RgbaImage picture = charts::sweep_sheet(chart);
   output::prepare_output_dir(paths.csv.parent_path());
-  output::write_text_file(paths.csv, csv.str());
-  output::write_png(paths.png, picture);
+  output::StagedFiles files;
+  files.text(paths.csv, csv.str());
+  files.png(paths.png, picture);
+  files.commit();
   return {paths.csv, paths.png};
 }
 
@@ -81,8 +84,9 @@ SweepOutcome make_sweep(const SweepJob& job) {
     done.written = {shard};
     return done;
   }
-  const cache::CachedOutputs cached{scene.name + "-sweep", manifest, "sweep", options,
-                                    job.out_dir,           &scene};
+  const cache::CachedOutputs cached{
+      scene.name + "-sweep",  manifest, "sweep", options, job.out_dir, &scene,
+      /*all_or_nothing=*/true};
   done.outcome = cache::make_cached(cached, job.freshness, [&] {
     const jobs::SweepTable table = jobs::measure_sweep(request);
     done.written = write_sweep(table, paths);
