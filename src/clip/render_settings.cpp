@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "charts/panel.hpp"
 #include "charts/poinsot_view.hpp"
@@ -42,7 +43,13 @@ render::RenderSettings render_settings_for(const scene::Scene& scene, int width,
   double distance = (s.camera.eye - s.camera.target).norm() * std::tan(M_PI / 12.0) /
                     std::tan(r.fov_y_deg * M_PI / 360.0);
   if (r.camera_distance > 0.0) distance = r.camera_distance;
-  s.camera.eye = s.camera.target + distance * r.camera_direction.normalized();
+  // A direction whose squared norm underflows (render.camera_direction = [1e-300, 0, 0]) is
+  // scaled by its largest component first (Eigen's stableNormalized); others as they are.
+  const Eigen::Vector3d& direction = r.camera_direction;
+  const Eigen::Vector3d unit = direction.squaredNorm() >= std::numeric_limits<double>::min()
+                                   ? direction.normalized()
+                                   : direction.stableNormalized();
+  s.camera.eye = s.camera.target + distance * unit;
   shift_book_left(s.camera, width, height, book_share, book_left);
   s.textures = {r.texture_front, r.texture_back, r.texture_spine, r.texture_pages};
   s.show_angular_momentum = r.show_angular_momentum;

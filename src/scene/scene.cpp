@@ -35,10 +35,15 @@ bool is_dotted_key(std::string_view key) {
 }
 
 /// A file name that cannot leave the output directory: [A-Za-z0-9][A-Za-z0-9._-]*, no "..".
-bool is_safe_name(std::string_view name) {
-  if (name.empty() || !std::isalnum(static_cast<unsigned char>(name.front()))) return false;
-  if (name.find("..") != std::string_view::npos) return false;
-  return std::all_of(name.begin(), name.end(), [](char c) { return is_key_char(c) || c == '.'; });
+/// Why `name` is not such a name, or "" when it is.
+std::string unsafe_name_reason(std::string_view name) {
+  if (name.empty()) return "it is empty";
+  if (!std::isalnum(static_cast<unsigned char>(name.front())))
+    return "it must start with a letter or a digit";
+  if (name.find("..") != std::string_view::npos) return "it must not hold '..'";
+  if (!std::all_of(name.begin(), name.end(), [](char c) { return is_key_char(c) || c == '.'; }))
+    return "only letters, digits, '.', '_' and '-' (no '/')";
+  return "";
 }
 
 std::string first_line(std::string_view text) {
@@ -205,7 +210,9 @@ RenderOptions read_render(TomlReader& r, const std::filesystem::path& origin) {
   o.fov_y_deg = r.number(limit("render.fov_y"));
   o.camera_distance = r.number(limit("render.camera_distance"));
   o.camera_direction = r.vector3(limit("render.camera_direction"), o.camera_direction);
-  if (o.camera_direction.norm() == 0.0) r.fail("render.camera_direction", "must not be zero");
+  // Any nonzero vector: one as short as [1e-300, 0, 0] (whose norm underflows) is a direction too.
+  if (o.camera_direction.cwiseAbs().maxCoeff() == 0.0)
+    r.fail("render.camera_direction", "must not be zero");
   o.show_angular_momentum = r.boolean("render.show_angular_momentum", false);
   o.show_body_axes = r.boolean("render.show_body_axes", false);
   o.texture_front = read_texture(r, "render.texture_front", origin);
@@ -261,11 +268,8 @@ namespace {
 
 void read_identity(TomlReader& r, Scene& s) {
   s.name = r.string("scene.name", s.source.stem().string());
-  if (!is_safe_name(s.name)) {
-    r.fail("scene.name",
-           "'" + s.name +
-               "' is not a safe output name (letters, digits, '.', '_', '-'; no '/' or '..')");
-  }
+  if (const std::string why = unsafe_name_reason(s.name); !why.empty())
+    r.fail("scene.name", "'" + s.name + "' is not a safe output name: " + why);
   s.title = r.string("scene.title", s.name);
   s.description = r.string("scene.description", "");
 }

@@ -69,6 +69,12 @@ TEST(RenderSettings, AGivenCameraDistanceAndDirectionPlaceTheEye) {
       scene_with({"render.camera_distance=10.0", "render.camera_direction=[0.0, 0.0, 2.0]"}));
   EXPECT_NEAR((s.camera.eye - Eigen::Vector3d(0, 0, 10)).norm(), 0.0, 1e-12);
   EXPECT_NEAR(s.camera.target.norm(), 0.0, 1e-12);
+  // Any nonzero direction, also one whose squared norm underflows (1e-600 → 0) or is subnormal.
+  for (const char* tiny : {"[0.0, 0.0, 1e-300]", "[0.0, 0.0, 1e-160]"}) {
+    const render::RenderSettings t = render_settings_for(scene_with(
+        {"render.camera_distance=10.0", std::string("render.camera_direction=") + tiny}));
+    EXPECT_NEAR((t.camera.eye - Eigen::Vector3d(0, 0, 10)).norm(), 0.0, 1e-12) << tiny;
+  }
 }
 
 // With the panel the book's centre is seen in the middle of the left 60% of the frame: at
