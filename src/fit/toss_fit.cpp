@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "common/errors.hpp"
+#include "fit/toss_model.hpp"
 #include "physics/exact_solution.hpp"
 
 namespace bookspin::fit {
@@ -18,54 +19,51 @@ constexpr double kStableDegrees = 25.0;
 constexpr double kPoorFit = 0.03;  // residual_rms over mean |ω| beyond which a toss is not fitted
 constexpr double kPi = 3.14159265358979323846;
 
-/// A rotation from an angle-axis vector (radians).
-Eigen::Matrix3d rotation(const double* aa) {
-  const Eigen::Vector3d v(aa[0], aa[1], aa[2]);
-  const double angle = v.norm();
-  if (angle < 1e-300) return Eigen::Matrix3d::Identity();
-  return Eigen::AngleAxisd(angle, v / angle).toRotationMatrix();
-}
-
 /// The samples of one toss, bias removed, times from the toss's start.
 struct TossData {
   std::vector<double> tau;             ///< s since t_start
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame
 };
 
-/// The toss's body-frame ω, exactly (docs/physics.md §8): principal axes R0·exp(aa) (columns,
-/// phone frame), moments (e^p1, e^p2, 1) about them, ω(0) = omega0 (phone frame).
-struct Motion {
-  Eigen::Matrix3d axes;
-  physics::ExactRotation exact;
-  Motion(const Eigen::Matrix3d& R0, const double* aa, const double* log_ratios,
-         const double* omega0)
-      : axes(R0 * rotation(aa)),
-        exact(Eigen::Vector3d(std::exp(log_ratios[0]), std::exp(log_ratios[1]), 1.0),
-              axes.transpose() * Eigen::Vector3d(omega0[0], omega0[1], omega0[2]),
-              physics::ExactParts::omega_only) {}
-  Eigen::Vector3d omega(double tau) const { return axes * exact.omega_body(tau); }
-};
-
-/// Residuals ω_fitted(τ_i) − ω_measured(τ_i), three per sample, rad/s.
-struct TossCost {
-  const TossData* data;
-  int samples;  ///< the first `samples` of the toss
-  int stride;   ///< every stride-th of them
-  Eigen::Matrix3d R0;
-  bool operator()(double const* const* parameters, double* residuals) const {
+/// Residuals ω_fitted(τ_i) − ω_measured(τ_i), three per sample, rad/s, and their derivatives
+/// with respect to the body's axes (aa), its log moment ratios and the toss's ω0 (TossModel).
+class TossCost : public ceres::CostFunction {
+ public:
+  /// The first `samples` of `data`, every `stride`-th of them.
+  TossCost(const TossData* data, int samples, int stride, const Eigen::Matrix3d& R0)
+      : data_(data), samples_(samples), stride_(stride), R0_(R0) {
+    set_num_residuals(3 * ((samples + stride - 1) / stride));
+    *mutable_parameter_block_sizes() = {3, 2, 3};
+  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
     try {
-      const Motion motion(R0, parameters[0], parameters[1], parameters[2]);
-      for (int i = 0, n = 0; i < samples; i += stride, ++n) {
-        const Eigen::Vector3d r = motion.omega(data->tau[i]) - data->omega[i];
-        residuals[3 * n] = r[0];
-        residuals[3 * n + 1] = r[1];
-        residuals[3 * n + 2] = r[2];
+      const TossModel model(R0_, parameters[0], parameters[1], parameters[2], jacobians != nullptr);
+      TossModel::Jacobian J;
+      constexpr int kSizes[3] = {3, 2, 3}, kOffsets[3] = {0, 3, 5};
+      for (int i = 0, n = 0; i < samples_; i += stride_, ++n) {
+        const Eigen::Vector3d r =
+            model.omega(data_->tau[i], jacobians ? &J : nullptr) - data_->omega[i];
+        for (int c = 0; c < 3; ++c) residuals[3 * n + c] = r[c];
+        if (!jacobians) continue;
+        for (int block = 0; block < 3; ++block) {
+          if (!jacobians[block]) continue;
+          for (int c = 0; c < 3; ++c)
+            for (int j = 0; j < kSizes[block]; ++j)
+              jacobians[block][(3 * n + c) * kSizes[block] + j] = J(c, kOffsets[block] + j);
+        }
       }
       return true;
     } catch (const std::invalid_argument&) {
       return false;  // a step to non-finite values: Ceres tries a shorter one
     }
   }
+
+ private:
+  const TossData* data_;
+  int samples_;  ///< the first `samples` of the toss
+  int stride_;   ///< every stride-th of them
+  Eigen::Matrix3d R0_;
 };
 
 /// The fit's parameters: the shared body, then each toss's ω0.
@@ -74,7 +72,7 @@ struct Parameters {
   std::array<double, 3> aa{0, 0, 0};
   std::array<double, 2> log_ratios{0, 0};
   std::vector<std::array<double, 3>> omega0;
-  Eigen::Matrix3d axes() const { return R0 * rotation(aa.data()); }
+  Eigen::Matrix3d axes() const { return R0 * rotation_from_angle_axis(aa.data()); }
   Eigen::Vector3d moments() const {
     return {std::exp(log_ratios[0]), std::exp(log_ratios[1]), 1.0};
   }
@@ -166,15 +164,9 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
       const double step = d.tau.back() / static_cast<double>(d.tau.size() - 1);
       stride = std::max(1, static_cast<int>(options.spacing / step));
     }
-    const int kept = (samples + stride - 1) / stride;
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<TossCost, ceres::CENTRAL>(
-        new TossCost{&d, samples, stride, p.R0});
-    cost->AddParameterBlock(3);
-    cost->AddParameterBlock(2);
-    cost->AddParameterBlock(3);
-    cost->SetNumResiduals(3 * kept);
+    auto* cost = new TossCost(&d, samples, stride, p.R0);
     problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data());
-    residual_count += 3 * kept;
+    residual_count += cost->num_residuals();
   }
   if (options.body_fixed || options.moments_fixed)
     problem->SetParameterBlockConstant(p.log_ratios.data());
