@@ -102,7 +102,10 @@ RgbaImage toss_image(const fit::GyroRecording& recording, const fit::FitResult& 
   flips.dashed = true;
   const Eigen::Vector3d axis2 = fit.body.axes.col(1);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t i = 1; i < tf.size(); ++i) {
+  // A stable toss's ω circles an end axis: its component about axis 2 changes sign with the
+  // wobble, and those are not flips.
+  const bool stable = fit.tosses.at(toss).stable;
+  for (std::size_t i = 1; i < tf.size() && !stable; ++i) {
     const double a = axis2.dot(wf[i - 1]), b = axis2.dot(wf[i]);
     if ((a > 0) == (b > 0)) continue;
     const double when = tf[i - 1] + (tf[i] - tf[i - 1]) * a / (a - b);

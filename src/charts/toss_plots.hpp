@@ -26,7 +26,8 @@ overlay::SphereSpec toss_sphere_spec(const fit::GyroRecording& recording, const 
 /// Toss `toss` of `fit` (0-based) on a white width×height image: on the left the measured ω's
 /// three phone-frame components (rad/s, bias removed) as dots against the recording's time
 /// (s), the fitted exact ω as lines in the same colours, and each flip of the fitted motion (a
-/// sign change of ω about the intermediate axis) as a grey dashed vertical line; on the right,
+/// sign change of ω about the intermediate axis; none for a stable toss, whose wobble changes
+/// that sign without flipping) as a grey dashed vertical line; on the right,
 /// in a square of side min(height, 0.4·width), toss_sphere_spec's sphere.
 RgbaImage toss_image(const fit::GyroRecording& recording, const fit::FitResult& fit, int toss,
                      int width, int height);

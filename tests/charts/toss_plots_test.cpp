@@ -66,6 +66,33 @@ TEST(TossPlots, ComponentsInThePaletteAndTheFlipsMarked) {
   EXPECT_EQ(lines, flips);
 }
 
+TEST(TossPlots, AStableTossHasNoFlipsMarked) {
+  // Two flips about the intermediate axis, then a spin about the largest wobbling 5°: its ω
+  // about axis 2 changes sign every half wobble, but it never flips.
+  const auto synthetic = fit::test::make_recording(
+      fit::test::phone_on_book(),
+      {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.2}, {{0.6, 0.5, 12.0}, 1.0}}, 21);
+  fit::GyroRecording recording;
+  recording.name = recording.source = "synthetic";
+  recording.t = synthetic.t;
+  recording.omega = synthetic.omega;
+  const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
+  ASSERT_EQ(fit.tosses.size(), 3u);
+  ASSERT_TRUE(fit.tosses[2].stable);
+  const Eigen::Vector3d axis2 = fit.body.axes.col(1);
+  int sign_changes = 0;
+  for (double t = fit.tosses[2].flight.t_start; t + 0.001 <= fit.tosses[2].flight.t_end; t += 0.001)
+    if ((axis2.dot(fit::fitted_omega(fit, 2, t)) > 0) !=
+        (axis2.dot(fit::fitted_omega(fit, 2, t + 0.001)) > 0))
+      ++sign_changes;
+  ASSERT_GE(sign_changes, 2);  // what the chart would have marked
+  const RgbaImage image = toss_image(recording, fit, 2, 1000, 500);
+  const std::vector<int> grey = columns_of(image, 128, 128, 128);
+  int flip_columns = 0;
+  for (int x = 0; x < image.width; ++x) flip_columns += grey[x] > 150 && grey[x] < 300;
+  EXPECT_EQ(flip_columns, 0);
+}
+
 TEST(TossPlots, TheSphereShowsTheMeasuredLOnTheFittedOrbit) {
   // A phone on a book: principal axes turned 20° from the phone's (a symmetric axes matrix
   // would hide a transposed one).
