@@ -1,5 +1,6 @@
 #include "fit/elliptic.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -7,9 +8,11 @@
 
 namespace bookspin::fit {
 
-JacobiAgm::JacobiAgm(double k, double kc2) : k_(k), kc2_(kc2) {
-  if (!(k >= 0.0 && k < 1.0 && kc2 > 0.0 && kc2 <= 1.0))
+JacobiAgm::JacobiAgm(double k, double kc2) : k_(k), kc2_(std::min(kc2, 1.0)) {
+  // k'² a rounding above 1 (a tiny k formed from the motion's invariants) is 1.
+  if (!(k >= 0.0 && k < 1.0 && kc2 > 0.0 && kc2 <= 1.0 + 1e-12))
     throw std::invalid_argument("JacobiAgm: the modulus must lie in [0, 1)");
+  kc2 = kc2_;
   // The AGM scale (Abramowitz & Stegun 16.4, 17.6): c_n = c_{n−1}²/(4 a_n) rather than
   // (a_{n−1} − b_{n−1})/2, which cancels as a and b meet.
   double a = 1.0, b = std::sqrt(kc2), c = k;

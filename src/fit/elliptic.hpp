@@ -15,7 +15,8 @@ namespace bookspin::fit {
 class JacobiAgm {
  public:
   /// `k` in [0, 1) and `kc2` = 1 − k² (passed separately: near k = 1 it is known better than
-  /// 1 − k² gives). Throws std::invalid_argument outside 0 ≤ k < 1 or kc2 ≤ 0.
+  /// 1 − k² gives; a rounding above 1, up to 1 + 1e-12, is taken as 1). Throws
+  /// std::invalid_argument outside 0 ≤ k < 1, or for kc2 ≤ 0 or beyond that.
   JacobiAgm(double k, double kc2);
 
   struct Values {

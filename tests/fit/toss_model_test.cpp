@@ -42,6 +42,11 @@ TEST(JacobiAgm, RefusesAModulusOutsideZeroToOne) {
   EXPECT_THROW(JacobiAgm(1.0, 0.0), std::invalid_argument);
   EXPECT_THROW(JacobiAgm(-0.1, 0.99), std::invalid_argument);
   EXPECT_THROW(JacobiAgm(std::nan(""), 0.5), std::invalid_argument);
+  EXPECT_THROW(JacobiAgm(0.1, 1.1), std::invalid_argument);
+  // A tiny modulus whose k'², formed from the invariants, rounds just above 1 is k'² = 1.
+  const JacobiAgm tiny(1e-9, std::nextafter(1.0, 2.0));
+  EXPECT_NEAR(tiny(0.7).sn, std::sin(0.7), 1e-15);
+  EXPECT_NEAR(tiny(0.7).dn, 1.0, 1e-15);
 }
 
 /// θ = (aa, log ratios, ω0) of a toss.
