@@ -98,12 +98,16 @@ void add_options(CLI::App& cmd, BenchOptions& options) {
                  "Frames of the GIF memory runs (0: the scene's own)")
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();
-  cmd.add_option(
-         "--only", options.only,
-         "Run only these sections: pipeline, peer, resolution, physics, memory, "
-         "gif-memory, explorer, presets (gif-memory, explorer and presets run only when named)")
+  cmd.add_option("--fit-minutes", options.fit_minutes,
+                 "Minutes of the fit section's 500 Hz recording")
+      ->check(CLI::Range(0.1, 60.0))
+      ->capture_default_str();
+  cmd.add_option("--only", options.only,
+                 "Run only these sections: pipeline, peer, resolution, physics, memory, "
+                 "gif-memory, explorer, presets, fit (gif-memory, explorer, presets and fit run "
+                 "only when named)")
       ->check(CLI::IsMember({"pipeline", "peer", "resolution", "physics", "memory", "gif-memory",
-                             "explorer", "presets"}))
+                             "explorer", "presets", "fit"}))
       ->take_all();
 }
 
@@ -136,6 +140,8 @@ int bench_command(const BenchOptions& options) {
   if (!options.only.empty() && wanted(options, "explorer")) bench_explorer(context);
   // Minutes of encoding: only when named (docs/performance.md, "The default x264 preset").
   if (!options.only.empty() && wanted(options, "presets")) bench_presets(context);
+  // A long recording's fit: only when named (docs/performance.md, "The phone-toss fit").
+  if (!options.only.empty() && wanted(options, "fit")) bench_fit(context);
   if (!options.out_dir.empty()) {
     const auto csv = std::filesystem::path(options.out_dir) / "bench.csv";
     report.write_csv(csv);

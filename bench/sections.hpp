@@ -24,8 +24,9 @@ struct BenchOptions {
       "scenes/t-handle-dzhanibekov.toml", "scenes/compare-methods-x.toml"};
   std::string gif_scene = "scenes/fig05-particle-unstable-x.toml";  ///< the GIF memory runs
   int gif_frames = 0;             ///< frames of the GIF memory runs; 0: the scene's own
+  double fit_minutes = 10.0;      ///< minutes of the fit section's 500 Hz recording
   std::vector<std::string> only;  ///< sections to run (pipeline, peer, resolution, physics,
-                                  ///< memory, gif-memory, explorer, presets)
+                                  ///< memory, gif-memory, explorer, presets, fit)
 };
 
 /// The machine cannot hold what the bench was asked to measure (exit status 1).
@@ -67,5 +68,9 @@ void bench_gif_memory(const BenchContext& context);
 /// (OUT/presets.csv), the pair the default rule picks, and `frames` frames of the bench's
 /// scene rendered with the old default and the pick.
 void bench_presets(const BenchContext& context);
+/// `bookspin fit`'s read, flight search and fit of a synthetic phyphox recording of
+/// `fit_minutes` minutes at 500 Hz (the exact motion with noise and bias) against reading the
+/// file alone.
+void bench_fit(const BenchContext& context);
 
 }  // namespace bookspin::bench

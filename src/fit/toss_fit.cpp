@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "common/errors.hpp"
+#include "fit/toss_model.hpp"
 #include "physics/exact_solution.hpp"
 
 namespace bookspin::fit {
@@ -18,54 +19,51 @@ constexpr double kStableDegrees = 25.0;
 constexpr double kPoorFit = 0.03;  // residual_rms over mean |ω| beyond which a toss is not fitted
 constexpr double kPi = 3.14159265358979323846;
 
-/// A rotation from an angle-axis vector (radians).
-Eigen::Matrix3d rotation(const double* aa) {
-  const Eigen::Vector3d v(aa[0], aa[1], aa[2]);
-  const double angle = v.norm();
-  if (angle < 1e-300) return Eigen::Matrix3d::Identity();
-  return Eigen::AngleAxisd(angle, v / angle).toRotationMatrix();
-}
-
 /// The samples of one toss, bias removed, times from the toss's start.
 struct TossData {
   std::vector<double> tau;             ///< s since t_start
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame
 };
 
-/// The toss's body-frame ω, exactly (docs/physics.md §8): principal axes R0·exp(aa) (columns,
-/// phone frame), moments (e^p1, e^p2, 1) about them, ω(0) = omega0 (phone frame).
-struct Motion {
-  Eigen::Matrix3d axes;
-  physics::ExactRotation exact;
-  Motion(const Eigen::Matrix3d& R0, const double* aa, const double* log_ratios,
-         const double* omega0)
-      : axes(R0 * rotation(aa)),
-        exact(Eigen::Vector3d(std::exp(log_ratios[0]), std::exp(log_ratios[1]), 1.0),
-              axes.transpose() * Eigen::Vector3d(omega0[0], omega0[1], omega0[2]),
-              physics::ExactParts::omega_only) {}
-  Eigen::Vector3d omega(double tau) const { return axes * exact.omega_body(tau); }
-};
-
-/// Residuals ω_fitted(τ_i) − ω_measured(τ_i), three per sample, rad/s.
-struct TossCost {
-  const TossData* data;
-  int samples;  ///< the first `samples` of the toss
-  int stride;   ///< every stride-th of them
-  Eigen::Matrix3d R0;
-  bool operator()(double const* const* parameters, double* residuals) const {
+/// Residuals ω_fitted(τ_i) − ω_measured(τ_i), three per sample, rad/s, and their derivatives
+/// with respect to the body's axes (aa), its log moment ratios and the toss's ω0 (TossModel).
+class TossCost : public ceres::CostFunction {
+ public:
+  /// The first `samples` of `data`, every `stride`-th of them.
+  TossCost(const TossData* data, int samples, int stride, const Eigen::Matrix3d& R0)
+      : data_(data), samples_(samples), stride_(stride), R0_(R0) {
+    set_num_residuals(3 * ((samples + stride - 1) / stride));
+    *mutable_parameter_block_sizes() = {3, 2, 3};
+  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
     try {
-      const Motion motion(R0, parameters[0], parameters[1], parameters[2]);
-      for (int i = 0, n = 0; i < samples; i += stride, ++n) {
-        const Eigen::Vector3d r = motion.omega(data->tau[i]) - data->omega[i];
-        residuals[3 * n] = r[0];
-        residuals[3 * n + 1] = r[1];
-        residuals[3 * n + 2] = r[2];
+      const TossModel model(R0_, parameters[0], parameters[1], parameters[2], jacobians != nullptr);
+      TossModel::Jacobian J;
+      constexpr int kSizes[3] = {3, 2, 3}, kOffsets[3] = {0, 3, 5};
+      for (int i = 0, n = 0; i < samples_; i += stride_, ++n) {
+        const Eigen::Vector3d r =
+            model.omega(data_->tau[i], jacobians ? &J : nullptr) - data_->omega[i];
+        for (int c = 0; c < 3; ++c) residuals[3 * n + c] = r[c];
+        if (!jacobians) continue;
+        for (int block = 0; block < 3; ++block) {
+          if (!jacobians[block]) continue;
+          for (int c = 0; c < 3; ++c)
+            for (int j = 0; j < kSizes[block]; ++j)
+              jacobians[block][(3 * n + c) * kSizes[block] + j] = J(c, kOffsets[block] + j);
+        }
       }
       return true;
     } catch (const std::invalid_argument&) {
       return false;  // a step to non-finite values: Ceres tries a shorter one
     }
   }
+
+ private:
+  const TossData* data_;
+  int samples_;  ///< the first `samples` of the toss
+  int stride_;   ///< every stride-th of them
+  Eigen::Matrix3d R0_;
 };
 
 /// The fit's parameters: the shared body, then each toss's ω0.
@@ -74,7 +72,7 @@ struct Parameters {
   std::array<double, 3> aa{0, 0, 0};
   std::array<double, 2> log_ratios{0, 0};
   std::vector<std::array<double, 3>> omega0;
-  Eigen::Matrix3d axes() const { return R0 * rotation(aa.data()); }
+  Eigen::Matrix3d axes() const { return R0 * rotation_from_angle_axis(aa.data()); }
   Eigen::Vector3d moments() const {
     return {std::exp(log_ratios[0]), std::exp(log_ratios[1]), 1.0};
   }
@@ -149,8 +147,7 @@ struct Solved {
   bool usable = false;
 };
 
-Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOptions& options,
-             std::unique_ptr<ceres::Problem>* keep = nullptr) {
+Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOptions& options) {
   ceres::Problem::Options problem_options;
   auto problem = std::make_unique<ceres::Problem>(problem_options);
   int residual_count = 0;
@@ -166,15 +163,9 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
       const double step = d.tau.back() / static_cast<double>(d.tau.size() - 1);
       stride = std::max(1, static_cast<int>(options.spacing / step));
     }
-    const int kept = (samples + stride - 1) / stride;
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<TossCost, ceres::CENTRAL>(
-        new TossCost{&d, samples, stride, p.R0});
-    cost->AddParameterBlock(3);
-    cost->AddParameterBlock(2);
-    cost->AddParameterBlock(3);
-    cost->SetNumResiduals(3 * kept);
+    auto* cost = new TossCost(&d, samples, stride, p.R0);
     problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data());
-    residual_count += 3 * kept;
+    residual_count += cost->num_residuals();
   }
   if (options.body_fixed || options.moments_fixed)
     problem->SetParameterBlockConstant(p.log_ratios.data());
@@ -193,8 +184,56 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
   ceres::Solve(solver_options, problem.get(), &summary);
   Solved solved{summary.final_cost, residual_count,
                 summary.IsSolutionUsable() && std::isfinite(summary.final_cost)};
-  if (keep) *keep = std::move(problem);
   return solved;
+}
+
+/// The fit's covariance (JᵀJ)⁻¹ at `p`, unscaled, in the blocks the report needs: the body's
+/// (aa then the log ratios; aa alone with the moments fixed) and each toss's ω0. J is
+/// TossModel's over every sample. The ω0 blocks are eliminated as the solver does (Schur
+/// complement S = B − Σ E_k C_k⁻¹ E_kᵀ of the normal matrix [B E; Eᵀ diag(C_k)]):
+/// cov(body) = S⁻¹, cov(ω0_k) = C_k⁻¹ + C_k⁻¹ E_kᵀ S⁻¹ E_k C_k⁻¹; O(tosses) rather than the
+/// O(tosses³) of the whole matrix. nullopt when S or a C_k is singular to working precision
+/// (reciprocal condition below 1e-14: the fit cannot tell every value apart).
+struct Covariances {
+  Eigen::MatrixXd body;
+  std::vector<Eigen::Matrix3d> omega0;
+};
+std::optional<Covariances> covariances(const std::vector<TossData>& data, const Parameters& p,
+                                       bool moments_fixed) {
+  const int nb = moments_fixed ? 3 : 5;
+  constexpr double kMinReciprocalCondition = 1e-14;
+  const auto well_conditioned = [&](const Eigen::MatrixXd& m) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(m, Eigen::EigenvaluesOnly);
+    const Eigen::VectorXd v = eigen.eigenvalues();
+    return v.minCoeff() > kMinReciprocalCondition * v.cwiseAbs().maxCoeff();
+  };
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(nb, nb);
+  std::vector<Eigen::MatrixXd> E(data.size());
+  std::vector<Eigen::Matrix3d> C_inverse(data.size());
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), true);
+    Eigen::Matrix<double, 8, 8> N = Eigen::Matrix<double, 8, 8>::Zero();
+    TossModel::Jacobian J;
+    for (double tau : data[k].tau) {
+      model.omega(tau, &J);
+      N.selfadjointView<Eigen::Upper>().rankUpdate(J.transpose());
+    }
+    N = N.selfadjointView<Eigen::Upper>();
+    const Eigen::Matrix3d C = N.bottomRightCorner<3, 3>();
+    if (!well_conditioned(C)) return std::nullopt;
+    C_inverse[k] = C.inverse();
+    E[k] = N.topRightCorner(nb, 3);
+    S += N.topLeftCorner(nb, nb) - E[k] * C_inverse[k] * E[k].transpose();
+  }
+  S = 0.5 * (S + S.transpose());
+  if (!well_conditioned(S)) return std::nullopt;
+  Covariances result;
+  result.body = S.inverse();
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    const Eigen::MatrixXd G = E[k] * C_inverse[k];  // nb × 3
+    result.omega0.push_back(C_inverse[k] + G.transpose() * result.body * G);
+  }
+  return result;
 }
 
 /// Times of the sign changes of `values` (hysteresis at ±`band`), by linear interpolation.
@@ -271,52 +310,36 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       throw InputError(recording.source + ": the fit did not converge");
     normalise(p);
   }
-  std::unique_ptr<ceres::Problem> problem;
   SolveOptions full;
   full.moments_fixed = fixed;
-  const Solved solved = solve(data, p, full, &problem);
+  const Solved solved = solve(data, p, full);
   if (!solved.usable) throw InputError(recording.source + ": the fit did not converge");
 
   BodyEstimate& body = result.body;
   body.ratios = p.moments();
   body.axes = p.axes();
   body.moments_fixed = fixed;
-  // Uncertainties: (JᵀJ)⁻¹ scaled by the residual variance (Ceres assumes unit variance).
+  // Uncertainties: (JᵀJ)⁻¹ scaled by the residual variance.
   const int parameter_count = (fixed ? 3 : 5) + 3 * static_cast<int>(data.size());
   const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count);
-  ceres::Covariance::Options covariance_options;
-  covariance_options.algorithm_type = ceres::DENSE_SVD;
-  covariance_options.num_threads =
-      static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  ceres::Covariance covariance(covariance_options);
-  std::vector<std::pair<const double*, const double*>> blocks{{p.aa.data(), p.aa.data()}};
-  if (!fixed) blocks.emplace_back(p.log_ratios.data(), p.log_ratios.data());
-  for (auto& w : p.omega0) blocks.emplace_back(w.data(), w.data());
-  const bool have_covariance = covariance.Compute(blocks, problem.get());
+  const std::optional<Covariances> covariance = covariances(data, p, fixed);
   std::vector<std::optional<Eigen::Vector3d>> omega0_sigma(data.size());
-  if (have_covariance) {
-    double c_aa[9];
-    covariance.GetCovarianceBlock(p.aa.data(), p.aa.data(), c_aa);
+  if (covariance) {
+    const Eigen::MatrixXd& c = covariance->body;
     Eigen::Vector3d axis_sigma;
     for (int i = 0; i < 3; ++i) {
+      // Axis i turns by the rotation's components about the other two axes.
       const int j = (i + 1) % 3, k = (i + 2) % 3;
-      axis_sigma[i] = std::sqrt(variance * (c_aa[4 * j] + c_aa[4 * k])) * 180.0 / kPi;
+      axis_sigma[i] = std::sqrt(variance * (c(j, j) + c(k, k))) * 180.0 / kPi;
     }
     body.axis_sigma_deg = axis_sigma;
-    if (fixed) {
+    if (fixed)
       body.ratio_sigma = Eigen::Vector3d::Zero();
-    } else {
-      double c_r[4];
-      covariance.GetCovarianceBlock(p.log_ratios.data(), p.log_ratios.data(), c_r);
-      body.ratio_sigma = Eigen::Vector3d(body.ratios[0] * std::sqrt(variance * c_r[0]),
-                                         body.ratios[1] * std::sqrt(variance * c_r[3]), 0.0);
-    }
-    for (std::size_t k = 0; k < data.size(); ++k) {
-      double c[9];
-      covariance.GetCovarianceBlock(p.omega0[k].data(), p.omega0[k].data(), c);
-      omega0_sigma[k] = Eigen::Vector3d(std::sqrt(variance * c[0]), std::sqrt(variance * c[4]),
-                                        std::sqrt(variance * c[8]));
-    }
+    else
+      body.ratio_sigma = Eigen::Vector3d(body.ratios[0] * std::sqrt(variance * c(3, 3)),
+                                         body.ratios[1] * std::sqrt(variance * c(4, 4)), 0.0);
+    for (std::size_t k = 0; k < data.size(); ++k)
+      omega0_sigma[k] = (variance * covariance->omega0[k].diagonal()).cwiseSqrt();
   } else {
     body.notes.push_back("the fit cannot tell every value apart: no uncertainties");
   }

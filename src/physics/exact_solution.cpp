@@ -275,6 +275,22 @@ Eigen::Vector3d ExactRotation::sorted_omega(const Jacobi& j) const {
   return w;
 }
 
+ExactOmegaForm ExactRotation::omega_form() const {
+  if (case_ == ExactCase::steady || case_ == ExactCase::separatrix)
+    throw std::logic_error("ExactRotation: a steady or separatrix motion has no omega_form");
+  ExactOmegaForm form;
+  const Eigen::Matrix3d back = to_sorted_.transpose();
+  form.A.col(0) = back.col(cn_axis_) * static_cast<double>(amplitude_[cn_axis_]);
+  form.A.col(1) = back.col(1) * static_cast<double>(amplitude_[1]);
+  form.A.col(2) = back.col(dn_axis_) * static_cast<double>(amplitude_[dn_axis_]);
+  form.lambda = static_cast<double>(lambda_);
+  form.u0 = static_cast<double>(u0_);
+  form.k = static_cast<double>(k_);
+  form.kc2 = static_cast<double>(kc2_);
+  form.K = static_cast<double>(K_);
+  return form;
+}
+
 Eigen::Vector3d ExactRotation::omega_body(double t) const {
   if (case_ == ExactCase::steady) return omega0_;
   return to_sorted_.transpose() * sorted_omega(jacobi(phase(t)));

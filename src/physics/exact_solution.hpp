@@ -23,6 +23,20 @@ enum class ExactCase {
 /// the constructor's time, and orientation() and precession_angle() throw std::logic_error).
 enum class ExactParts { omega_and_orientation, omega_only };
 
+/// ω(t)'s closed form (docs/physics.md §8) for a motion that is neither steady nor on the
+/// separatrix: ω_body(t) = A · (cn u, sn u, dn u)ᵀ with u = λ t + u0, Jacobi's functions of
+/// modulus k.
+struct ExactOmegaForm {
+  /// Body frame, rad per time unit: column 0 multiplies cn, 1 sn, 2 dn (each along one
+  /// principal axis).
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  double lambda = 0.0;  ///< λ, rad per time unit
+  double u0 = 0.0;      ///< the phase at t = 0
+  double k = 0.0;       ///< modulus, 0 ≤ k < 1
+  double kc2 = 1.0;     ///< k'² = 1 − k², computed without cancellation (§8)
+  double K = 0.0;       ///< K(k): ω has period 4K in u
+};
+
 /// ψ(u) = ∫ (dψ/du) du tabulated as piecewise Chebyshev series over one period [0, 2K] of
 /// the integrand (built and evaluated in exact_solution.cpp). Panel p holds `degree + 2`
 /// coefficients of the antiderivative on [p·width, (p+1)·width], zero at the panel start.
@@ -69,6 +83,10 @@ class ExactRotation {
   Eigen::Matrix3d orientation(double t) const;
   /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion.
   double precession_angle(double t) const;
+
+  /// The closed form of omega_body(). Throws std::logic_error for a steady motion or the
+  /// separatrix (motion_case()), which have none.
+  ExactOmegaForm omega_form() const;
 
   /// Period of ω, T = 4K(k)/λ (time units); infinite for steady motion and the separatrix.
   double period() const;

@@ -191,6 +191,24 @@ TEST(Bench, ExplorerSectionTimesEveryMethodOfThePage) {
       << run.csv;
 }
 
+TEST(Bench, FitSectionTimesTheFitAgainstReadingTheFile) {
+  // 0.2 minutes at 500 Hz: five tosses of the bench's phone on a book.
+  const BenchRun run = run_bench("bench-fit", "--only fit --fit-minutes 0.2");
+  ASSERT_EQ(run.result.status, 0) << run.result.output;
+  const double floor = csv_value(run.csv, "read Raw Data.csv alone (the floor)", "fit");
+  const double fit = csv_value(run.csv, "read, find the flights and fit, wall clock", "fit");
+  ASSERT_GT(floor, 0.0) << run.csv;
+  ASSERT_GT(fit, 0.0) << run.csv;
+  EXPECT_GT(csv_value(run.csv, "read, find the flights and fit, CPU time", "fit"), 0.0);
+  EXPECT_NEAR(csv_value(run.csv, "read, find and fit / floor", "fit"), fit / floor,
+              1e-6 * fit / floor)
+      << run.csv;
+  // The body the bench made was found (the 1 % and 1°).
+  EXPECT_LT(csv_value(run.csv, "moment ratios' largest relative error", "fit"), 0.01) << run.csv;
+  EXPECT_LT(csv_value(run.csv, "principal axes' largest error", "fit"), 1.0) << run.csv;
+  EXPECT_NE(run.csv.find("0.2 min at 500 Hz, 5 tosses"), std::string::npos) << run.csv;
+}
+
 /// The rows of a CSV without quoted fields, each split at its commas (the header first).
 std::vector<std::vector<std::string>> csv_rows(const std::string& csv) {
   std::vector<std::vector<std::string>> rows;

@@ -66,5 +66,87 @@ TEST(TossPlots, ComponentsInThePaletteAndTheFlipsMarked) {
   EXPECT_EQ(lines, flips);
 }
 
+TEST(TossPlots, AStableTossHasNoFlipsMarked) {
+  // Two flips about the intermediate axis, then a spin about the largest wobbling 5°: its ω
+  // about axis 2 changes sign every half wobble, but it never flips.
+  const auto synthetic = fit::test::make_recording(
+      fit::test::phone_on_book(),
+      {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.2}, {{0.6, 0.5, 12.0}, 1.0}}, 21);
+  fit::GyroRecording recording;
+  recording.name = recording.source = "synthetic";
+  recording.t = synthetic.t;
+  recording.omega = synthetic.omega;
+  const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
+  ASSERT_EQ(fit.tosses.size(), 3u);
+  ASSERT_TRUE(fit.tosses[2].stable);
+  const Eigen::Vector3d axis2 = fit.body.axes.col(1);
+  int sign_changes = 0;
+  for (double t = fit.tosses[2].flight.t_start; t + 0.001 <= fit.tosses[2].flight.t_end; t += 0.001)
+    if ((axis2.dot(fit::fitted_omega(fit, 2, t)) > 0) !=
+        (axis2.dot(fit::fitted_omega(fit, 2, t + 0.001)) > 0))
+      ++sign_changes;
+  ASSERT_GE(sign_changes, 2);  // what the chart would have marked
+  const RgbaImage image = toss_image(recording, fit, 2, 1000, 500);
+  const std::vector<int> grey = columns_of(image, 128, 128, 128);
+  int flip_columns = 0;
+  for (int x = 0; x < image.width; ++x) flip_columns += grey[x] > 150 && grey[x] < 300;
+  EXPECT_EQ(flip_columns, 0);
+}
+
+TEST(TossPlots, TheSphereShowsTheMeasuredLOnTheFittedOrbit) {
+  // A phone on a book: principal axes turned 20° from the phone's (a symmetric axes matrix
+  // would hide a transposed one).
+  const fit::test::SyntheticBody body = fit::test::phone_on_book();
+  const Eigen::Vector3d omega0(0.5, 12.0, 0.4);  // principal frame
+  const auto synthetic =
+      fit::test::make_recording(body, {{omega0, 1.3}, {{-0.3, 11.0, 0.7}, 1.2}}, 4);
+  fit::GyroRecording recording;
+  recording.name = recording.source = "synthetic";
+  recording.t = synthetic.t;
+  recording.omega = synthetic.omega;
+  const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
+  const overlay::SphereSpec spec = toss_sphere_spec(recording, fit, 0);
+  // The truth: L/|L| of Euler's equations by RK4 (the generator's), principal frame (the
+  // book's axes have their largest phone component positive: the fit's sign convention).
+  const fit::Flight& flight = fit.tosses[0].flight;
+  const double t0 = synthetic.tosses[0].t_start;
+  std::vector<Eigen::Vector3d> truth;
+  for (int i = flight.first; i <= flight.last; ++i)
+    truth.push_back(
+        body.moments.cwiseProduct(fit::test::rk4(body.moments, omega0, recording.t[i] - t0))
+            .normalized());
+  // The measured trail: one point a sample, each within 0.02 (about 1°) of the true L/|L|.
+  ASSERT_EQ(spec.trails.size(), 1u);
+  const overlay::SphereTrail& trail = spec.trails[0];
+  EXPECT_EQ(trail.colour.r, kMeasuredLColour.r);
+  ASSERT_EQ(trail.points.size(), truth.size());
+  for (std::size_t i = 0; i < truth.size(); ++i)
+    EXPECT_LT((trail.points[i] - truth[i]).norm(), 0.02) << "sample " << i;
+  // The fitted orbit: the curve in its colour, closed (one period), passing within 0.02 of
+  // every true L/|L| of the flight.
+  const overlay::SphereCurve* orbit = nullptr;
+  for (const overlay::SphereCurve& c : spec.curves)
+    if (c.colour.r == kFittedOrbitColour.r && c.colour.b == kFittedOrbitColour.b) orbit = &c;
+  ASSERT_NE(orbit, nullptr);
+  EXPECT_LT((orbit->points.front() - orbit->points.back()).norm(), 1e-6);
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    double nearest = 2.0;
+    for (const Eigen::Vector3d& p : orbit->points)
+      nearest = std::min(nearest, (p - truth[i]).norm());
+    EXPECT_LT(nearest, 0.02) << "sample " << i;
+  }
+  // Drawn: both colours in the sphere's square, right of the plot (1000 − 400 px).
+  const RgbaImage image = toss_image(recording, fit, 0, 1000, 500);
+  const auto count_right = [&](const Rgb& c) {
+    const std::vector<int> cols =
+        columns_of(image, int(255 * c.r + 0.5), int(255 * c.g + 0.5), int(255 * c.b + 0.5));
+    int n = 0;
+    for (int x = 600; x < image.width; ++x) n += cols[x];
+    return n;
+  };
+  EXPECT_GT(count_right(kMeasuredLColour), 100);
+  EXPECT_GT(count_right(kFittedOrbitColour), 100);
+}
+
 }  // namespace
 }  // namespace bookspin::charts

@@ -162,6 +162,42 @@ TEST(TossFit, AStretchHoldingTheThrowIsAPoorFitAndSaysSo) {
   for (const TossFit& toss : clean.tosses) EXPECT_FALSE(toss.poor_fit);
 }
 
+TEST(TossFit, UncertaintiesAreTheScatterOverTheNoise) {
+  // The same two tosses of a phone on a book, twelve times with fresh noise (0.05 rad/s): the
+  // spread of the fitted ratios and axes about the truth is what the reported σ says, within a
+  // factor of two (the spread of twelve is itself uncertain by about a fifth).
+  const SyntheticBody body = test::phone_on_book();
+  constexpr int kSeeds = 12;
+  Eigen::Vector2d ratio_sum2 = Eigen::Vector2d::Zero(), ratio_sigma = Eigen::Vector2d::Zero();
+  Eigen::Vector3d axis_sum2 = Eigen::Vector3d::Zero(), axis_sigma = Eigen::Vector3d::Zero();
+  for (int seed = 0; seed < kSeeds; ++seed) {
+    const test::SyntheticRecording synthetic = test::make_recording(
+        body, {{{0.5, 12.0, 0.4}, 1.0}, {{-0.3, 11.0, 0.7}, 1.0}}, 100 + seed, 0.05);
+    const FitResult fit =
+        fit_recording(as_recording(synthetic), find_flights(as_recording(synthetic)));
+    ASSERT_EQ(fit.tosses.size(), 2u);
+    ASSERT_TRUE(fit.body.ratio_sigma && fit.body.axis_sigma_deg);
+    for (int i = 0; i < 2; ++i) {
+      ratio_sum2[i] += std::pow(fit.body.ratios[i] - body.moments[i] / body.moments[2], 2);
+      ratio_sigma[i] += (*fit.body.ratio_sigma)[i] / kSeeds;
+    }
+    for (int i = 0; i < 3; ++i) {
+      axis_sum2[i] += std::pow(axis_angle(fit.body.axes.col(i), body.axes.col(i)), 2);
+      axis_sigma[i] += (*fit.body.axis_sigma_deg)[i] / kSeeds;
+    }
+  }
+  for (int i = 0; i < 2; ++i) {
+    const double spread = std::sqrt(ratio_sum2[i] / kSeeds);
+    EXPECT_GT(spread / ratio_sigma[i], 0.5) << "ratio " << i;
+    EXPECT_LT(spread / ratio_sigma[i], 2.0) << "ratio " << i;
+  }
+  for (int i = 0; i < 3; ++i) {
+    const double spread = std::sqrt(axis_sum2[i] / kSeeds);  // the angle has two components
+    EXPECT_GT(spread / axis_sigma[i], 0.5) << "axis " << i;
+    EXPECT_LT(spread / axis_sigma[i], 2.0) << "axis " << i;
+  }
+}
+
 TEST(TossFit, DragShowsAsLDecay) {
   // |ω| shrinking as e^(−0.05 τ): |L| loses 5 % a second; the straight line through
   // e^(−0.05 τ) over 1.2 s has slope/intercept −0.0515 (least squares), within 5 % of 0.05.

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <cstdio>
@@ -452,6 +453,31 @@ TEST(ExactSolutionOmegaOnly, SameOmegaNoOrientation) {
     EXPECT_EQ(omega_only.omega_body(t), full.omega_body(t)) << t;
   EXPECT_EQ(omega_only.flip_period(), full.flip_period());
   EXPECT_THROW(omega_only.orientation(1.0), std::logic_error);
+}
+
+// The closed form ω = A (cn u, sn u, dn u)ᵀ, u = λt + u0, that the fit differentiates: with
+// Boost's Jacobi functions evaluated here it is omega_body() (unsorted moments, both cases),
+// each column along one body axis; a steady motion has none.
+TEST(ExactSolutionOmegaForm, ReproducesOmegaWithJacobiFunctions) {
+  const Eigen::Vector3d moments(2.0, 3.0, 1.0);  // unsorted: the sorting rotation is not I
+  for (const Eigen::Vector3d& w0 : {Eigen::Vector3d(0.3, 0.2, 2.0), Eigen::Vector3d(2.0, 0.2, 0.3),
+                                    Eigen::Vector3d(-0.4, -1.5, 0.6)}) {
+    const ExactRotation exact(moments, w0, ExactParts::omega_only);
+    const ExactOmegaForm form = exact.omega_form();
+    EXPECT_NEAR(form.kc2, 1.0 - form.k * form.k, 1e-12);
+    EXPECT_NEAR(4.0 * form.K / form.lambda, exact.period(), 1e-12 * exact.period());
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ((form.A.col(c).array() != 0.0).count(), 1) << "column " << c;
+    for (double t : {0.0, 0.4, 1.7, 9.3}) {
+      double cn = 0, dn = 0;
+      const double sn = boost::math::jacobi_elliptic(form.k, form.lambda * t + form.u0, &cn, &dn);
+      EXPECT_LT((form.A * Eigen::Vector3d(cn, sn, dn) - exact.omega_body(t)).norm(),
+                1e-10 * w0.norm())
+          << "t " << t << " w0 " << w0.transpose();
+    }
+  }
+  EXPECT_THROW(ExactRotation(moments, Eigen::Vector3d(0.0, 0.0, 2.0)).omega_form(),
+               std::logic_error);
 }
 
 }  // namespace
