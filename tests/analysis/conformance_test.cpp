@@ -243,7 +243,9 @@ TEST(Conformance, AJudgementAtEveryStepGivesTheAccuracyReportsNumbers) {
         << c.orientation_error << " " << row.orientation_error;
     EXPECT_EQ(c.flips, row.flips);
     EXPECT_EQ(c.flips_exact, row.flips_exact);
-    if (c.first_flip) EXPECT_TRUE(near(*c.first_flip, row.first_flip)) << *c.first_flip;
+    if (c.first_flip) {
+      EXPECT_TRUE(near(*c.first_flip, row.first_flip)) << *c.first_flip;
+    }
   }
 }
 
