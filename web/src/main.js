@@ -12,8 +12,11 @@ import { View3D } from './view3d.js';
 import { Sphere } from './sphere.js';
 import { drawPlots } from './plots.js';
 import { Controls, VIEW_CONTROLS } from './controls.js';
+import { PrecessionTables } from './tables.js';
 
 const $ = (id) => document.getElementById(id);
+/** `x` to `digits` decimals, without a "-0.00". */
+const fixed = (x, digits) => (Math.abs(x) < 0.5 * 10 ** -digits ? 0 : x).toFixed(digits);
 
 function startApp(wasm, engines) {
   const SCENES = window.BOOKSPIN_SCENES || [];  // inlined by bookspin explore
@@ -25,6 +28,8 @@ function startApp(wasm, engines) {
     controls: new Controls(space, SCENES, engines),
     playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, plotsDrawnAt: -Infinity,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
+    tables: new PrecessionTables(wasm),
+    waitingSince: null,  // performance.now() when a run began waiting for its precession table
     seen: { sphere: null, plots: null },
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
     costs: { physics: 0, view: 0, sphere: 0, plots: 0, readout: 0 },
@@ -49,8 +54,37 @@ function startApp(wasm, engines) {
     const target = state.t;
     state.t = 0;
     app.pacer.stop();
+    requestTables();
     catchUp(target, FIRST_BUDGET_MS);
     writeUrl();
+  }
+
+  /** Each run waiting for its exact orientation gets its precession table, built off the main
+   * thread (tables.js); the page goes on meanwhile, the run held at t = 0, a notice saying so. */
+  function requestTables() {
+    const waiting = app.runs.list.filter((r) => r.pending);
+    app.waitingSince = waiting.length ? performance.now() : null;
+    waitingNotice();
+    for (const run of waiting) {
+      app.tables.get(run.session.moments(), run.session.startOmega()).then((table) => {
+        if (!app.runs.supply(run, table)) return;
+        if (!app.runs.pending()) app.waitingSince = null;
+        waitingNotice();
+        if (app.pacer.target === null && app.state.t > 0) app.pacer.target = app.state.t;
+        app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
+        draw();
+      }, (err) => {
+        $('message').textContent = `exact motion: ${err.message || err}`;
+      });
+    }
+  }
+
+  function waitingNotice() {
+    const since = app.waitingSince;
+    app.pacer.waiting = since === null ? '' :
+      `computing the exact motion's orientation (its precession table) in the background: ` +
+      `${((performance.now() - since) / 1000).toFixed(1)} s; the exact run waits at t = 0, the page stays live`;
+    app.pacer.notice(app.state);
   }
 
   function advance(t) {
@@ -80,16 +114,30 @@ function startApp(wasm, engines) {
     if (!p) writeUrl();
   }
 
+  /** The readout a class reads from the back: t, and for each run its flips (the method's own
+   * turn-over detector, docs/physics.md §14) and its first flip beside the exact motion's. */
   function readout() {
     const { state, runs } = app;
-    $('time').textContent = `t = ${state.t.toFixed(2)}`;
+    const t = fixed(state.t, 2);
+    $('time').textContent = `t = ${t}`;
+    $('clock').textContent = `t = ${t}`;
     $('slider').max = Math.max(Number($('slider').max), Math.ceil(state.t));
     $('slider').value = state.t;
-    $('status').innerHTML = runs.list.map((r) => {
+    const html = runs.list.map((r) => {
       const h = r.history[r.history.length - 1];
-      return `<div style="color:${r.colour}">${r.label}: ω = (${h.w.map((x) => x.toFixed(4)).join(', ')}), ` +
-        `flips ${r.session.flips().count}${r.diverged ? ' — ' + r.diverged : ''}</div>`;
+      const own = r.session.flips();
+      const exact = r.closedForm ? own : r.session.exactFlips(state.t);
+      const first = own.first === null ? '—' : fixed(own.first, 2);
+      const exactFirst = exact.first === null ? 'never (a wobble)' : fixed(exact.first, 2);
+      const beside = r.closedForm ? '(the exact motion)'
+        : `exact: ${exact.count} flip${exact.count === 1 ? '' : 's'}, first at ${exactFirst}`;
+      return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
+        `<div class="counts"><span class="big flips">flips ${own.count}</span> ` +
+        `<span class="big first">first flip at t = ${first}</span> <span class="exact">${beside}</span></div>` +
+        `<div class="omega">ω = (${h.w.map((x) => x.toFixed(4)).join(', ')})</div></div>`;
     }).join('');
+    if (html !== app.seen.readout) { $('status').innerHTML = html; app.seen.readout = html; }
+    if (app.waitingSince !== null) waitingNotice();
   }
 
   /** Whether `parts` differ from what `seen[name]` held; remembers them. */
