@@ -245,11 +245,12 @@ def solve3(m, p):
 
 def pick_expectation(driver, px, py):
     """ω0 that a pick at canvas pixel (px, py) should give: the view point (X, Y, √(1−X²−Y²)),
-    X = (px − W/2)/R, Y = (H/2 − py)/R, R = 0.42·min(W, H), back through the sphere's rotation
-    M (body → view) to the body frame, u = M⁻¹·p, then ω = |L|·u/|u| / I componentwise."""
+    X = (px − W/2)/R, Y = (0.53·H − py)/R, R = 0.36·min(W, H) (the disc a little below the
+    middle, under the sphere's title), back through the sphere's rotation M (body → view) to the
+    body frame, u = M⁻¹·p, then ω = |L|·u/|u| / I componentwise."""
     w, h = driver.execute_script("const c = document.getElementById('sphere'); return [c.width, c.height];")
-    radius = 0.42 * min(w, h)
-    x, y = (px - w / 2) / radius, (h / 2 - py) / radius
+    radius = 0.36 * min(w, h)
+    x, y = (px - w / 2) / radius, (0.53 * h - py) / radius
     view_point = [x, y, (1 - x * x - y * y) ** 0.5]
     u = solve3(driver.execute_script("return window.explorer.sphereRotation()"), view_point)
     norm = sum(c * c for c in u) ** 0.5
@@ -299,9 +300,11 @@ def check_sphere_pick(driver, page):
                  f"not the direction of {expected}")
         if abs(momentum(state["w"]) / L0 - 1) > 1e-9:
             fail(f"the sphere pick changed |L|: {momentum(state['w'])}, not {L0}")
+        # The fields show ω0 to 6 significant digits and carry it exactly (data-exact).
         shown = [float(driver.find_element("id", f).get_attribute("value")) for f in ("wx", "wy", "wz")]
-        if shown != state["w"]:
-            fail(f"the ω0 fields show {shown}, not the picked {state['w']}")
+        exact = [float(driver.find_element("id", f).get_attribute("data-exact")) for f in ("wx", "wy", "wz")]
+        if exact != state["w"] or any(abs(a - b) > 5e-6 * abs(b) for a, b in zip(shown, state["w"])):
+            fail(f"the ω0 fields show {shown} (exactly {exact}), not the picked {state['w']}")
     picked = state["w"]
     # A touch drag turns the sphere and picks nothing.
     before = driver.execute_script("return window.explorer.sphereRotation()")

@@ -15,6 +15,10 @@ import { Controls, VIEW_CONTROLS } from './controls.js';
 import { PrecessionTables } from './tables.js';
 
 const $ = (id) => document.getElementById(id);
+/** Time units of one Step (and of → and ←), at least. */
+const STEP_TIME = 0.5;
+/** While playing, the address is rewritten every 60 ms to 1 s, so that it keeps t. */
+const URL_MIN_MS = 60, URL_MAX_MS = 1000;
 /** `x` to `digits` decimals, without a "-0.00". */
 const fixed = (x, digits) => (Math.abs(x) < 0.5 * 10 ** -digits ? 0 : x).toFixed(digits);
 
@@ -130,7 +134,7 @@ function startApp(wasm, engines) {
       const first = own.first === null ? '—' : fixed(own.first, 2);
       const exactFirst = exact.first === null ? 'never (a wobble)' : fixed(exact.first, 2);
       const beside = r.closedForm ? '(the exact motion)'
-        : `exact: ${exact.count} flip${exact.count === 1 ? '' : 's'}, first at ${exactFirst}`;
+        : `exact motion: first flip at ${exactFirst}, count ${exact.count}`;
       return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
         `<div class="counts"><span class="big flips">flips ${own.count}</span> ` +
         `<span class="big first">first flip at t = ${first}</span> <span class="exact">${beside}</span></div>` +
@@ -151,7 +155,7 @@ function startApp(wasm, engines) {
     let t0 = performance.now();
     const lap = (part) => { const t1 = performance.now(); app.costs[part] += t1 - t0; t0 = t1; };
     const list = app.runs.list;
-    app.view.render(); lap('view');
+    app.view.render(list); lap('view');
     // The 2D panels only when what they show changed; while playing, the plots (their whole
     // history rescaled each time) ten times a second, the sphere every frame.
     const s = $('sphere'), p = $('plots');
@@ -161,11 +165,12 @@ function startApp(wasm, engines) {
     lap('sphere');
     if ((!app.playing || t0 - app.plotsDrawnAt >= 100) &&
         changed('plots', [p.width, p.height, ...list.flatMap((r) => [r.history, r.history.length])])) {
-      drawPlots(p, list);
+      app.plotSpans = drawPlots(p, list);
       app.plotsDrawnAt = t0;
     }
     lap('plots');
     readout(); lap('readout');
+    if (app.framesDrawn === 0) app.firstFrameAt = performance.now();
     app.framesDrawn += 1;
   }
 
@@ -185,6 +190,10 @@ function startApp(wasm, engines) {
           app.pacer.play(app.runs, app.state, n, t0);
           app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
         }
+        // Every half time unit, as often as browsers let a page rewrite its address (about
+        // 200 times in 10 s), at least once a second.
+        const every = Math.min(URL_MAX_MS, Math.max(URL_MIN_MS, 500 / Math.max(app.state.speed, 1e-9)));
+        if (now - (app.urlWrittenAt || 0) >= every) { writeUrl(); app.urlWrittenAt = now; }
         app.costs.physics += performance.now() - t0;
       }
       app.lastFrame = now;
@@ -193,7 +202,18 @@ function startApp(wasm, engines) {
     requestAnimationFrame(frame);
   }
 
+  /** `canvas`'s backing store at its displayed size times the screen's pixel density. */
+  function fitCanvas(canvas) {
+    const dpr = window.devicePixelRatio || 1;
+    const box = canvas.getBoundingClientRect();
+    const w = Math.max(1, Math.round(box.width * dpr)), h = Math.max(1, Math.round(box.height * dpr));
+    if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
+  }
+
   function resize() {
+    fitCanvas($('sphere'));
+    fitCanvas($('plots'));
+    sphere.redraw = true;
     app.view.resize(app.runs.list, app.state.showL);
     if (app.runs.list.length) app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
   }
@@ -212,23 +232,64 @@ function startApp(wasm, engines) {
     draw();
   });
   $('play').addEventListener('click', () => setPlaying(!app.playing));
-  $('stepOnce').addEventListener('click', () => { setPlaying(false); advance(app.state.t + app.state.dt); draw(); writeUrl(); });
-  $('reset').addEventListener('click', () => { setPlaying(false); app.state.t = 0; rebuild(); draw(); });
-  $('slider').addEventListener('input', () => {
+  /** To time `target`: forwards by catching up, backwards by starting again from t = 0. */
+  function seek(target) {
     setPlaying(false);
-    const target = Number($('slider').value);
+    target = Math.max(0, target);
     if (target < app.state.t) { app.state.t = target; rebuild(); } else catchUp(target, FIRST_BUDGET_MS);
     draw(); writeUrl();
-  });
+  }
+  /** A step of the Step button and the arrow keys: 0.5 time units (whole steps of dt), so that
+   * a class sees the book move. */
+  const stepSize = () => Math.max(1, Math.round(STEP_TIME / app.state.dt)) * app.state.dt;
+  function reset() { setPlaying(false); app.state.t = 0; rebuild(); draw(); }
+  function toggleFullscreen() {
+    if (document.fullscreenElement) document.exitFullscreen();
+    else document.documentElement.requestFullscreen().catch((e) => { $('message').textContent = `full screen: ${e.message}`; });
+  }
+  function copyLink() {
+    writeUrl();
+    const done = () => { $('copyLink').textContent = 'Link copied'; setTimeout(() => { $('copyLink').textContent = 'Copy link'; }, 2000); };
+    const fallback = () => {
+      const box = document.createElement('textarea');
+      box.value = location.href;
+      document.body.appendChild(box); box.select();
+      const ok = document.execCommand('copy');
+      box.remove();
+      if (ok) done(); else window.prompt('Copy this link:', location.href);
+    };
+    if (navigator.clipboard && window.isSecureContext) navigator.clipboard.writeText(location.href).then(done, fallback);
+    else fallback();
+  }
+  $('stepOnce').addEventListener('click', () => seek(app.state.t + stepSize()));
+  $('reset').addEventListener('click', reset);
+  $('slider').addEventListener('input', () => seek(Number($('slider').value)));
+  $('fullscreen').addEventListener('click', toggleFullscreen);
+  $('copyLink').addEventListener('click', copyLink);
+  $('camera').addEventListener('click', () => { app.view.resetCamera(app.runs.list, app.state.showL); draw(); });
+  // Keys, except while typing in a field: space plays, → and ← step 0.5 time units (never the
+  // menu under the focus), R resets, F goes full screen.
   window.addEventListener('keydown', (ev) => {
-    if (ev.code === 'Space' && !(ev.target instanceof HTMLInputElement && ev.target.type === 'number')) {
-      ev.preventDefault(); setPlaying(!app.playing);
-    }
-  });
+    const typing = ev.target instanceof HTMLInputElement && ev.target.type !== 'checkbox' && ev.target.type !== 'range';
+    if (typing || ev.ctrlKey || ev.metaKey || ev.altKey) return;
+    const act = {
+      Space: () => setPlaying(!app.playing),
+      ArrowRight: () => seek(app.state.t + stepSize()),
+      ArrowLeft: () => seek(app.state.t - stepSize()),
+      KeyR: reset,
+      KeyF: toggleFullscreen,
+    }[ev.code];
+    if (!act) return;
+    ev.preventDefault();
+    ev.stopPropagation();
+    if (ev.target instanceof HTMLSelectElement) ev.target.blur();
+    act();
+  }, true);
   window.addEventListener('resize', resize);
+  document.addEventListener('fullscreenchange', resize);
 
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
-  window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying });
+  window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
   app.state = app.pacer.limit(app.controls.fit(app.state), base());
   app.controls.write(app.state);
   resize();

@@ -49,7 +49,8 @@ export class Pacer {
     const want = state.t + n * state.dt;
     state.t = runs.advanceTo(want, state.dt, t0 + FRAME_BUDGET_MS);
     // A run waiting for its table holds t: that is the waiting notice's, not slowness.
-    this.slow = state.t < want && !runs.pending() ? `speed ${state.speed} is more than this machine steps: playing slower` : '';
+    // Reached to the step (t is a whole number of steps of dt, `want` a sum of them).
+    this.slow = state.t < want - 0.5 * state.dt && !runs.pending() ? `speed ${state.speed} is more than this machine steps: playing slower` : '';
     this.notice(state);
   }
 

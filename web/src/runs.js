@@ -4,6 +4,7 @@
 // A JavaScript engine's run (web/src/engines/) is stepped by its engine; after every step its q
 // and ω go into a WebAssembly session (Session.observe), which measures and draws it alike.
 import { AXES } from './state.js';
+import { WITHOUT_GYROSCOPIC_TERM } from './engines/models.js';
 
 const TRAIL_COLOURS = ['#e8b00b', '#35c0f0'];
 /** Steps between records at most (one record per 0.05 time units otherwise), so that a tiny dt
@@ -20,7 +21,7 @@ function methodsOf(state) {
 }
 
 function labelOf(model, integrator, normalize, engine) {
-  if (engine) return engine.label;
+  if (engine) return engine.label + (WITHOUT_GYROSCOPIC_TERM.includes(model) ? ' (no gyroscopic term)' : '');
   if (model === 'exact') return 'exact';
   return `${model}, ${integrator}${normalize ? ', normalized' : ''}`;
 }
