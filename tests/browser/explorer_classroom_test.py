@@ -21,7 +21,7 @@ import time
 import tomllib
 
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments, wait_for
-from explorer_test import EXPLORER_WINDOW, load
+from explorer_test import EXPLORER_WINDOW, body_label_reach, load
 
 FIRST_FRAME_MS = 2000
 CONTROL_BACK_MS = 1000
@@ -84,6 +84,18 @@ def check_exact_scene(driver, page):
     print(f"  scrub back 60 → 48: {scrub:.0f} ms")
     if scrub > SCRUB_BACK_MS:
         fail(f"a scrub back held the page {scrub:.0f} ms, more than {SCRUB_BACK_MS}")
+
+
+def check_compare_labels(driver, page):
+    """Compare mode: each book labelled with its method within 50 px of it."""
+    load(driver, page + "?scene=fig09-matrix-unstable-x&compare=1&model2=rigid-quaternion&integrator2=rk4")
+    driver.execute_script("window.explorer.omegaAt(30)")
+    time.sleep(0.3)
+    reach = body_label_reach(driver)
+    print(f"compare: body labels and the drawn pixels within 50 px: {reach}")
+    if [label for label, _ in reach] != ["rigid-matrix, euler, normalized", "rigid-quaternion, rk4"] or \
+            any(n < 200 for _, n in reach):
+        fail(f"the compared books are not each labelled within 50 px: {reach}")
 
 
 def check_readout(driver, page):
@@ -287,6 +299,7 @@ def main():
     with open_browser(chromium, driver_path, **EXPLORER_WINDOW) as driver:
         check_exact_scene(driver, page)
         check_readout(driver, page)
+        check_compare_labels(driver, page)
         check_sphere(driver, page)
         check_canvases(driver, page, shots)
         check_teacher(driver, page, source)

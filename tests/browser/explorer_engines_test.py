@@ -25,7 +25,7 @@ import json
 import time
 
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
-from explorer_test import load as load_page
+from explorer_test import body_label_reach, load as load_page
 
 WINDOW = dict(size=(1280, 720), webgl=True, offline=True, exact_viewport=True)
 TOL = 1e-12
@@ -101,6 +101,26 @@ def check_engines(driver, page, node, modules, tests, shots):
         flips = driver.execute_script("return window.explorer.flips()")
         if status.count("flips ") != 2 or any(f"flips {n}" not in status for n in flips):
             fail(f"the readout does not show both runs' flips {flips}: {status!r}")
+        # Legible: each book labelled by its method within 50 px of it, the engines without
+        # the gyroscopic term said to be; cannon-es's energy (round-off, 1e-16) drawn flat,
+        # Rapier's rise (9e-4 of E0 by t = 20) drawn as one.
+        reach = body_label_reach(driver)
+        print(f"body labels and the drawn pixels within 50 px: {reach}")
+        if len(reach) != 2 or any(n < 200 for _, n in reach):
+            fail(f"a book of {first} and {second} has no label within 50 px: {reach}")
+        labels = [label for label, _ in reach]
+        for label in labels:
+            without = label.startswith(("cannon-es", "Jolt 1.1")) and "mApplyGyroscopicForce" not in label
+            if without != ("no gyroscopic term" in label):
+                fail(f"the label {label!r} says the gyroscopic term wrongly")
+        spans = {s["run"]: s["px"] for s in driver.execute_script("return window.explorer.plotSpans()")
+                 if s["panel"].startswith("energy drift")}
+        print(f"energy lines drawn (px tall): {spans}")
+        for label, px in spans.items():
+            if label.startswith("cannon-es") and px > 1:
+                fail(f"cannon-es's energy, constant to round-off, is drawn {px:.1f} px tall")
+            if label.startswith("Rapier") and px < 10:
+                fail(f"Rapier's energy rise is drawn only {px:.1f} px tall")
         driver.save_screenshot(str(shots / f"explorer-engines-{first}-{second}.png"))
         errors = console_errors(driver)
         if errors:

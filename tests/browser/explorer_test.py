@@ -132,6 +132,26 @@ def view_pixels(driver):
     """)
 
 
+def body_label_reach(driver, reach=50):
+    """For each body label of compare mode (HTML over the 3D view): its text and the count of
+    the view's drawn (not background) pixels within `reach` CSS px of its box."""
+    return driver.execute_script(VIEW_PIXELS + f"""
+      const box = v.getBoundingClientRect(), sx = v.width / box.width, sy = v.height / box.height;
+      return [...document.querySelectorAll('.bodyLabel')].filter((l) => !l.hidden).map((l) => {{
+        const r = l.getBoundingClientRect();
+        const x0 = Math.max(0, Math.floor((r.left - box.left - {reach}) * sx));
+        const x1 = Math.min(v.width, Math.ceil((r.right - box.left + {reach}) * sx));
+        const y0 = Math.max(0, Math.floor((r.top - box.top - {reach}) * sy));
+        const y1 = Math.min(v.height, Math.ceil((r.bottom - box.top + {reach}) * sy));
+        let n = 0;
+        for (let y = y0; y < y1; ++y) for (let x = x0; x < x1; ++x) {{
+          const i = 4 * (y * v.width + x);
+          if (Math.abs(d[i] - 0x20) + Math.abs(d[i + 1] - 0x24) + Math.abs(d[i + 2] - 0x2c) > 30) n++;
+        }}
+        return [l.textContent, n];
+      }});""")
+
+
 def grey_pixels(driver):
     """Pixels of the 3D view in the lit greys of a mesh's default colour (not background)."""
     return driver.execute_script(VIEW_PIXELS + """
