@@ -67,6 +67,10 @@ def check_size(plain, with_engines, bundle):
     text = plain.read_text()
     if "BOOKSPIN_ENGINES=" in text or "<!--BOOKSPIN_ENGINES-->" in text:
         fail("the page written without --engines carries the engines (or their marker)")
+    # The page a student opens from disk stays small without the engines: under 6.6 MB with
+    # every scene (6.11 MB measured 2026-11-24).
+    if plain.stat().st_size >= 6.6e6:
+        fail(f"the page without the engines is {plain.stat().st_size} bytes, not under 6.6 MB")
     grown = with_engines.stat().st_size - plain.stat().st_size
     if grown < bundle.stat().st_size:
         fail(f"the page with --engines is only {grown} bytes larger than without; the engines' "
@@ -125,6 +129,21 @@ def check_engines(driver, page, node, modules, tests, shots):
         errors = console_errors(driver)
         if errors:
             fail(f"console errors with {first} and {second}: {errors}")
+
+
+def check_flat_energy(driver, page, shots):
+    """cannon-es alone: its energy, constant to round-off (1e-16 of E0), drawn as a flat line,
+    not stretched to fill its panel."""
+    w = ",".join(map(repr, W0))
+    load(driver, f"{page}?scene=exact-unstable-x&axis=custom&w={w}&jiggle=0&model=cannon-es")
+    driver.execute_script(f"window.explorer.omegaAt({T_END!r})")
+    time.sleep(0.3)
+    spans = [s for s in driver.execute_script("return window.explorer.plotSpans()")
+             if s["panel"].startswith("energy drift")]
+    print(f"cannon-es alone: energy line drawn {spans[0]['px'] if spans else None} px tall")
+    driver.save_screenshot(str(shots / "explorer-engines-cannon-es.png"))
+    if len(spans) != 1 or spans[0]["px"] > 1:
+        fail(f"cannon-es's energy, constant to round-off, is not drawn flat: {spans}")
 
 
 def check_extreme_links(driver, page, shots):
@@ -194,6 +213,7 @@ def main():
     with open_browser(chromium, driver_path, **WINDOW) as driver:
         check_engines(driver, (out / "engines" / "explorer.html").resolve().as_uri(), node,
                       modules, source / "tests" / "browser", shots)
+        check_flat_energy(driver, (out / "engines" / "explorer.html").resolve().as_uri(), shots)
         check_extreme_links(driver, (out / "plain" / "explorer.html").resolve().as_uri(), shots)
     print("explorer engines: OK")
 

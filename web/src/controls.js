@@ -101,6 +101,10 @@ export class Controls {
     const scene = this.scenes.find((x) => x.name === state.scene);
     $('sceneTitle').textContent = scene ? scene.title || scene.name : '';
     $('sceneDescription').textContent = scene ? scene.description || '' : '';
+    // A comparison of more methods than the page runs says what it left out.
+    const left = scene && scene.left_out ? scene.left_out : [];
+    $('sceneLeftOut').textContent = left.length ? `The page runs two of this scene's methods; ` +
+      `left out: ${left.join('; ')} (the scene's clip shows them all).` : '';
     const particle = state.model === 'particle';
     show('integratorRow', this.integrated(state.model));
     show('normalizeRow', this.integrated(state.model));

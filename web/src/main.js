@@ -132,9 +132,9 @@ function startApp(wasm, engines) {
       const own = r.session.flips();
       const exact = r.closedForm ? own : r.session.exactFlips(state.t);
       const first = own.first === null ? '—' : fixed(own.first, 2);
-      const exactFirst = exact.first === null ? 'never (a wobble)' : fixed(exact.first, 2);
-      const beside = r.closedForm ? '(the exact motion)'
-        : `exact motion: first flip at ${exactFirst}, count ${exact.count}`;
+      const beside = r.closedForm ? '(the exact motion)' : exact.first === null
+        ? 'exact motion: never turns over (a wobble)'
+        : `exact motion: first flip at ${fixed(exact.first, 2)}, count ${exact.count}`;
       return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
         `<div class="counts"><span class="big flips">flips ${own.count}</span> ` +
         `<span class="big first">first flip at t = ${first}</span> <span class="exact">${beside}</span></div>` +
