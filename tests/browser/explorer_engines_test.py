@@ -144,6 +144,15 @@ def check_flat_energy(driver, page, shots):
     driver.save_screenshot(str(shots / "explorer-engines-cannon-es.png"))
     if len(spans) != 1 or spans[0]["px"] > 1:
         fail(f"cannon-es's energy, constant to round-off, is not drawn flat: {spans}")
+    # An engine switch hands the page back within 1 s (timed in the page around the handler).
+    for model in ("rapier", "jolt-gyroscopic", "exact"):
+        ms = driver.execute_script(f"""
+          const t0 = performance.now(), m = document.getElementById('model');
+          m.value = '{model}'; m.dispatchEvent(new Event('change'));
+          return performance.now() - t0;""")
+        print(f"switch to {model}: control back after {ms:.0f} ms")
+        if ms > 1000:
+            fail(f"switching to {model} held the page {ms:.0f} ms, more than 1000")
 
 
 def check_extreme_links(driver, page, shots):
