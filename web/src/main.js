@@ -138,7 +138,9 @@ function startApp(wasm, engines) {
       return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
         `<div class="counts"><span class="big flips">flips ${own.count}</span> ` +
         `<span class="big first">first flip at t = ${first}</span> <span class="exact">${beside}</span></div>` +
-        `<div class="omega">ω = (${h.w.map((x) => x.toFixed(4)).join(', ')})</div></div>`;
+        // ω in numbers for one run; in compare mode the plots show it, and the books stay in view.
+        (runs.list.length > 1 ? '' : `<div class="omega">ω = (${h.w.map((x) => x.toFixed(4)).join(', ')})</div>`) +
+        '</div>';
     }).join('');
     if (html !== app.seen.readout) { $('status').innerHTML = html; app.seen.readout = html; }
     if (app.waitingSince !== null) waitingNotice();
