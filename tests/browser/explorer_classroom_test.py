@@ -234,7 +234,7 @@ def check_canvases(driver, page, shots):
 
 
 def check_teacher(driver, page, source):
-    """The scene's title shown; every label, field and button at least 16 px; F full screen;
+    """The scene's title shown; every label, field and button at least 16 px; F full screen, R reset;
     → steps 0.5 time units and keeps the scene; the address keeps t while playing."""
     from selenium.webdriver.common.action_chains import ActionChains
     load(driver, page + "?scene=fig09-matrix-unstable-x")
@@ -283,6 +283,11 @@ def check_teacher(driver, page, source):
     print(f"  playing at speed 5: the address's t at most {worst:.2f} from the time shown")
     if worst > 1 or t < 1:
         fail(f"the address does not keep t while playing: {worst:.2f} off (t = {t})")
+    ActionChains(driver).move_to_element(body).send_keys("r").perform()
+    time.sleep(0.3)
+    state = driver.execute_script("return window.explorer.state()")
+    if state["t"] != 0 or state["scene"] != "fig09-matrix-unstable-x":
+        fail(f"R did not reset the run: t = {state['t']}, scene {state['scene']}")
 
 
 def main():
