@@ -21,9 +21,12 @@
 #include "engines/engine_body.hpp"
 #include "physics/body.hpp"
 #include "physics/book.hpp"
+#include "physics/exact_model.hpp"
+#include "physics/exact_solution.hpp"
 #include "physics/names.hpp"
 #include "physics/polhode.hpp"
 #include "physics/presets.hpp"
+#include "physics/shape.hpp"
 #include "physics/simulator.hpp"
 
 namespace {
@@ -203,20 +206,66 @@ class Session {
   /// Resets to identity orientation at t = 0: body-frame ω0 (rad per time unit) and the
   /// seeded jiggle of L (docs/physics.md §5).
   void reset(double wx, double wy, double wz, double jiggle, double seed) {
-    InitialState initial;
-    initial.omega0_body = {wx, wy, wz};
-    initial.jiggle = jiggle;
-    initial.seed = static_cast<std::uint64_t>(seed);
-    sim().reset(initial);
+    start(wx, wy, wz, jiggle, seed);
+    if (auto* exact = exact_model(); exact && !exact->has_orientation())
+      exact->set_precession_table(
+          ExactRotation(body_.moments, exact->rotation().omega0_body()).precession_table());
+  }
+
+  /// reset(), except that the exact model's precession table, most of its start's time (seconds
+  /// near the separatrix: long double is emulated in software in WebAssembly), is left to
+  /// setPrecessionTable(), built elsewhere by precessionTable() (the page: a Web Worker). Until
+  /// then the exact model stays at t = 0 (R = I) and needsPrecessionTable() is true.
+  void start(double wx, double wy, double wz, double jiggle, double seed) {
+    initial_ = InitialState{};
+    initial_.omega0_body = {wx, wy, wz};
+    initial_.jiggle = jiggle;
+    initial_.seed = static_cast<std::uint64_t>(seed);
+    if (auto* exact = exact_model())
+      exact->reset(initial_, ExactParts::omega_only);
+    else
+      sim().reset(initial_);
+    // The motion this start would have without any method's error, for the flips' exact values
+    // beside the method's (omega only: no table, milliseconds).
+    exact_.emplace(body_.moments, start_omega_body(), ExactParts::omega_only);
+    exact_first_ = bookspin::analysis::exact_flip_amplitude(*exact_) > FlipDetector::kMargin
+                       ? bookspin::analysis::exact_first_flip(*exact_, intermediate_axis())
+                       : std::nullopt;
     steps_ = 0;
     flips_ = FlipDetector();
     flips_.observe(0.0, bookspin::analysis::flip_signal(sim().diagnostics(), body_.moments));
   }
+  /// Whether the exact model waits for setPrecessionTable().
+  bool needs_precession_table() const {
+    const auto* exact = exact_model();
+    return exact && !exact->has_orientation();
+  }
+  /// The table of precessionTable() for this start: {degree, width, start, coeffs}.
+  void set_precession_table(const val& table) {
+    auto* exact = exact_model();
+    if (!exact) throw std::logic_error("Session: setPrecessionTable() is for the exact model");
+    PrecessionTable t;
+    t.degree = table["degree"].as<int>();
+    t.width = table["width"].as<double>();
+    t.start = emscripten::vecFromJSArray<double>(table["start"]);
+    t.coeffs = emscripten::vecFromJSArray<double>(table["coeffs"]);
+    exact->set_precession_table(std::move(t));
+  }
+  /// The start's body-frame ω0' = I⁻¹·L0, L0 with the jiggle (docs/physics.md §5): what every
+  /// model starts from, and what precessionTable() needs.
+  val start_omega() const { return vec3(start_omega_body()); }
 
   /// Advances `n` steps of `dt`; stops early (returns false) when the state stops being finite.
   /// The flip detector sees every step at t = steps·dt (a product), as analysis::measure_run
   /// does for `bookspin sweep` (docs/physics.md §14), so the counts agree.
   bool step(double dt, int n) {
+    if (auto* exact = exact_model()) {
+      // The exact motion is a closed form in t: evaluated once, at the end (docs/physics.md §8);
+      // its flips are the closed form's (flips()), not sampled.
+      exact->advance(dt, n);
+      steps_ += n;
+      return exact->finite();
+    }
     for (int i = 0; i < n; ++i) {
       sim().step(dt);
       ++steps_;
@@ -230,11 +279,31 @@ class Session {
   /// The flips since reset (docs/physics.md §14): sign changes of cos(intermediate axis, L)
   /// seen after every step, as {count, first (time units or null), period (time units or
   /// null: fewer than two)}.
+  /// The exact model's flips are those of its closed form up to its t (analysis::
+  /// exact_flip_count: the zeros of ω about the intermediate axis, a wobble whose cosine stays
+  /// within the detector's margin counting none), not a detector fed samples.
   val flips() const {
     val out = val::object();
+    if (const auto* exact = exact_model()) {
+      const int count = exact_flip_count(exact->time());
+      out.set("count", count);
+      out.set("first", count > 0 ? optional_number(exact_first_) : val::null());
+      out.set("period", count > 1 ? val(exact_->flip_period()) : val::null());
+      return out;
+    }
     out.set("count", flips_.count());
     out.set("first", optional_number(flips_.first_flip()));
     out.set("period", optional_number(flips_.flip_period()));
+    return out;
+  }
+  /// The exact motion's flips from this start up to time `t` (docs/physics.md §14), whatever the
+  /// model: {count, first (null for a wobble or before any), period}: the values a method's own
+  /// flips are read beside.
+  val exact_flips(double t) const {
+    val out = val::object();
+    out.set("count", exact_flip_count(t));
+    out.set("first", optional_number(exact_first_));
+    out.set("period", exact_first_ ? val(exact_->flip_period()) : val::null());
     return out;
   }
   /// The body axis (0 = x, 1 = y, 2 = z) of the intermediate principal moment.
@@ -344,7 +413,18 @@ class Session {
     if (!simulator_) throw std::logic_error("Session: configure() before use");
     return *simulator_;
   }
+  ExactModel* exact_model() const { return dynamic_cast<ExactModel*>(simulator_.get()); }
+  Eigen::Vector3d start_omega_body() const {
+    return initial_angular_momentum(body_.moments, initial_).cwiseQuotient(body_.moments);
+  }
+  /// The exact motion's turn-overs from this start up to t (analysis::exact_flip_count).
+  int exact_flip_count(double t) const {
+    return exact_ ? bookspin::analysis::exact_flip_count(*exact_, exact_first_, t) : 0;
+  }
   Body body_;
+  InitialState initial_;
+  std::optional<ExactRotation> exact_;  ///< this start's exact motion, ω only
+  std::optional<double> exact_first_;   ///< its first flip; empty for a wobble
   std::unique_ptr<Simulator> simulator_;
   long long steps_ = 0;
   FlipDetector flips_;
@@ -366,6 +446,20 @@ val polhodes(double ix, double iy, double iz, int levels, double max_step) {
     curve.set("energy_ratio", p.energy_ratio);
     out.call<void>("push", curve);
   }
+  return out;
+}
+
+/// The exact motion's precession table (docs/physics.md §8) for principal moments (mx, my, mz)
+/// and body-frame start ω0' (Session.startOmega): {degree, width, start, coeffs}, for
+/// Session.setPrecessionTable. Seconds near the separatrix: the page builds it in a Web Worker.
+val precession_table(double mx, double my, double mz, double wx, double wy, double wz) {
+  const ExactRotation exact({mx, my, mz}, {wx, wy, wz});
+  const PrecessionTable& t = exact.precession_table();
+  val out = val::object();
+  out.set("degree", t.degree);
+  out.set("width", t.width);
+  out.set("start", f64(t.start.data(), t.start.size()));
+  out.set("coeffs", f64(t.coeffs.data(), t.coeffs.size()));
   return out;
 }
 
@@ -453,6 +547,11 @@ EMSCRIPTEN_BINDINGS(bookspin_physics) {
       .function("configureEngine", &Session::configure_engine)
       .function("observe", &Session::observe)
       .function("reset", &Session::reset)
+      .function("start", &Session::start)
+      .function("needsPrecessionTable", &Session::needs_precession_table)
+      .function("setPrecessionTable", &Session::set_precession_table)
+      .function("startOmega", &Session::start_omega)
+      .function("exactFlips", &Session::exact_flips)
       .function("step", &Session::step)
       .function("steps", &Session::steps)
       .function("finite", &Session::finite)
@@ -475,6 +574,7 @@ EMSCRIPTEN_BINDINGS(bookspin_physics) {
       .function("surfaceTriangles", &Session::surface_triangles)
       .function("surfaceColours", &Session::surface_colours);
   emscripten::function("polhodes", &polhodes);
+  emscripten::function("precessionTable", &precession_table);
   emscripten::function("physicsNames", &physics_names);
   emscripten::function("physicsDefaults", &physics_defaults);
   emscripten::function("errorMessage", &error_message);

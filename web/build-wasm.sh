@@ -35,5 +35,5 @@ done
 for p in "${pids[@]}"; do wait "$p"; done
 em++ -O3 -fexceptions --bind "${objs[@]}" -o "$out/bookspin_physics.js" \
   -sSINGLE_FILE=1 -sMODULARIZE=1 -sEXPORT_NAME=BookspinPhysics -sALLOW_MEMORY_GROWTH=1 \
-  -sENVIRONMENT=web,node -sDISABLE_EXCEPTION_CATCHING=0
+  -sENVIRONMENT=web,worker,node -sDISABLE_EXCEPTION_CATCHING=0
 echo "build-wasm: $out/bookspin_physics.js ($(stat -c %s "$out/bookspin_physics.js") bytes)"

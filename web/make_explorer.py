@@ -10,20 +10,22 @@ import sys
 from pathlib import Path
 
 
-def script(text):
+def script(text, element_id=None):
     # "</script" inside a script would end it early.
-    return "<script>" + text.replace("</script", "<\\/script") + "</script>"
+    opening = f'<script id="{element_id}">' if element_id else "<script>"
+    return opening + text.replace("</script", "<\\/script") + "</script>"
 
 
 def main(index, wasm_js, bundle_js, out):
     html = Path(index).read_text()
     if "<!--BOOKSPIN_DATA-->" not in html:
         sys.exit(f"make_explorer: {index}: marker <!--BOOKSPIN_DATA--> missing")
-    for marker, text in (("<!--BOOKSPIN_WASM-->", Path(wasm_js).read_text()),
-                         ("<!--BOOKSPIN_APP-->", Path(bundle_js).read_text())):
+    # The physics' script has an id: the page starts a Web Worker from its text (web/src/tables.js).
+    for marker, text, element_id in (("<!--BOOKSPIN_WASM-->", Path(wasm_js).read_text(), "bookspin-physics"),
+                                     ("<!--BOOKSPIN_APP-->", Path(bundle_js).read_text(), None)):
         if marker not in html:
             sys.exit(f"make_explorer: {index}: marker {marker} missing")
-        html = html.replace(marker, script(text), 1)
+        html = html.replace(marker, script(text, element_id), 1)
     tmp = Path(out).with_suffix(".html.tmp")
     tmp.write_text(html)
     os.replace(tmp, out)

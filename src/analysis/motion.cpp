@@ -111,7 +111,12 @@ double exact_flip_amplitude(const physics::ExactRotation& exact) {
 
 int exact_flip_count(const physics::ExactRotation& exact, int axis, double t_end) {
   if (exact_flip_amplitude(exact) <= FlipDetector::kMargin) return 0;
-  const auto first = exact_first_flip(exact, axis);
+  return exact_flip_count(exact, exact_first_flip(exact, axis), t_end);
+}
+
+int exact_flip_count(const physics::ExactRotation& exact, std::optional<double> first,
+                     double t_end) {
+  if (exact_flip_amplitude(exact) <= FlipDetector::kMargin) return 0;
   if (!first || t_end < *first) return 0;
   return 1 + static_cast<int>(std::floor((t_end - *first) / exact.flip_period()));
 }

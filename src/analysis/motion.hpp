@@ -70,6 +70,10 @@ double exact_flip_amplitude(const physics::ExactRotation& exact);
 /// body `axis`, exact_first_flip + k·T/2 ≤ t_end, when the orbit takes the cosine past
 /// FlipDetector::kMargin (exact_flip_amplitude), else 0 (a wobble).
 int exact_flip_count(const physics::ExactRotation& exact, int axis, double t_end);
+/// The same count from exact_first_flip(exact, axis) computed once (`first`), for a caller that
+/// asks at many t_end: first + k·T/2 ≤ t_end, 0 for a wobble or no first flip.
+int exact_flip_count(const physics::ExactRotation& exact, std::optional<double> first,
+                     double t_end);
 
 /// Angle (rad) between two rotations a and b (3×3), 2·asin(‖a − b‖_F / √8): the angle of
 /// aᵀb, accurate for tiny angles (‖a − b‖_F = 2√2 sin(θ/2) for rotations).

@@ -1,6 +1,8 @@
 #include "physics/exact_model.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 #include "physics/shape.hpp"
 
@@ -11,24 +13,40 @@ ExactModel::ExactModel(const Body& body) : body_(body), cage_corners_(body.cage.
 }
 
 void ExactModel::reset(const InitialState& initial) {
+  reset(initial, ExactParts::omega_and_orientation);
+}
+
+void ExactModel::reset(const InitialState& initial, ExactParts parts) {
   const Eigen::Vector3d L0 = initial_angular_momentum(body_.moments, initial);
   const Eigen::Vector3d& moments = body_.moments;
-  rotation_.emplace(moments, L0.cwiseQuotient(moments));
+  rotation_.emplace(moments, L0.cwiseQuotient(moments), parts);
   t_ = t_base_ = dt_ = 0.0;
   steps_ = 0;
+  has_orientation_ = parts == ExactParts::omega_and_orientation;
+  R_ = has_orientation_ ? rotation_->orientation(t_) : Eigen::Matrix3d::Identity();
+}
+
+void ExactModel::set_precession_table(PrecessionTable table) {
+  const Eigen::Vector3d omega0 = rotation_->omega0_body();  // emplace destroys the old first
+  rotation_.emplace(body_.moments, omega0, std::move(table));
+  has_orientation_ = true;
   R_ = rotation_->orientation(t_);
 }
 
 // t = t_base + n·dt from the step count n, not a running sum of dt: the sum's rounding
 // grows with every step (1.7e-9 time units by t = 2300 at dt = 1/60, ~2e-10 rad), far
 // above the solution's own 1e-13 (docs/physics.md §10). A new dt starts a new count from t.
-void ExactModel::step(double dt) {
+void ExactModel::step(double dt) { advance(dt, 1); }
+
+void ExactModel::advance(double dt, long n) {
+  if (!has_orientation_)
+    throw std::logic_error("ExactModel: no precession table yet (set_precession_table)");
   if (dt != dt_) {
     t_base_ = t_;
     dt_ = dt;
     steps_ = 0;
   }
-  ++steps_;
+  steps_ += n;
   t_ = t_base_ + static_cast<double>(steps_) * dt_;
   R_ = rotation_->orientation(t_);
 }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace bookspin::physics {
 
@@ -48,20 +49,32 @@ Eigen::Matrix3d rotation_z(double psi) {
   return r;
 }
 
+/// The n + 1 Chebyshev points of the first kind on [−1, 1] and the cosines of the discrete
+/// cosine transform that takes values there to Chebyshev coefficients, the same for every
+/// panel: computed once per table (in long double each is a software cosine in WebAssembly).
+struct ChebyshevBasis {
+  explicit ChebyshevBasis(int n) : n(n), x(n + 1), cosines((n + 1) * (n + 1)) {
+    const int points = n + 1;
+    for (int m = 0; m < points; ++m)
+      x[m] = std::cos(std::numbers::pi_v<Real> * (m + 0.5L) / points);
+    for (int j = 0; j < points; ++j)
+      for (int m = 0; m < points; ++m)
+        cosines[j * points + m] = std::cos(std::numbers::pi_v<Real> * j * (m + 0.5L) / points);
+  }
+  int n;
+  std::vector<Real> x, cosines;
+};
+
 /// Chebyshev coefficients c_0..c_n of the degree-n interpolant of f on [a, a + h] at the
 /// n + 1 Chebyshev points of the first kind (f ≈ Σ c_j T_j(x), x ∈ [−1, 1]).
 template <class F>
-std::vector<Real> chebyshev_fit(F& f, Real a, Real h, int n) {
-  const int points = n + 1;
+std::vector<Real> chebyshev_fit(F& f, Real a, Real h, const ChebyshevBasis& basis) {
+  const int points = basis.n + 1;
   std::vector<Real> values(points);
-  for (int m = 0; m < points; ++m) {
-    const Real x = std::cos(std::numbers::pi_v<Real> * (m + 0.5L) / points);
-    values[m] = f(a + 0.5L * (x + 1.0L) * h);
-  }
+  for (int m = 0; m < points; ++m) values[m] = f(a + 0.5L * (basis.x[m] + 1.0L) * h);
   std::vector<Real> c(points, 0.0L);
   for (int j = 0; j < points; ++j) {
-    for (int m = 0; m < points; ++m)
-      c[j] += values[m] * std::cos(std::numbers::pi_v<Real> * j * (m + 0.5L) / points);
+    for (int m = 0; m < points; ++m) c[j] += values[m] * basis.cosines[j * points + m];
     c[j] *= 2.0L / points;
   }
   c[0] *= 0.5L;
@@ -106,8 +119,9 @@ bool fill_table(F& f, Real length, int panels, PrecessionTable& table) {
   const Real h = length / panels;
   bool converged = true;
   Real total = 0.0L;
+  const ChebyshevBasis basis(kChebyshevDegree);
   for (int p = 0; p < panels; ++p) {
-    const std::vector<Real> c = chebyshev_fit(f, p * h, h, kChebyshevDegree);
+    const std::vector<Real> c = chebyshev_fit(f, p * h, h, basis);
     Real scale = 0.0L, tail = 0.0L;
     for (int j = 0; j <= kChebyshevDegree; ++j) scale = std::max(scale, std::abs(c[j]));
     for (int j = kChebyshevDegree - 2; j <= kChebyshevDegree; ++j)
@@ -173,6 +187,23 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
     psi_u0_ = precession_integral(u0_);
   }
   anchor_ = (momentum_frame(I_.cwiseProduct(w)) * to_sorted_).transpose();
+}
+
+ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
+                             PrecessionTable table)
+    : ExactRotation(moments, omega0_body, ExactParts::omega_only) {
+  parts_ = ExactParts::omega_and_orientation;
+  const bool needed = case_ != ExactCase::steady && case_ != ExactCase::separatrix;
+  const bool shaped = table.degree >= 0 && table.panels() >= 1 && table.width > 0.0 &&
+                      table.coeffs.size() == static_cast<std::size_t>(table.panels()) *
+                                                 static_cast<std::size_t>(table.degree + 2);
+  if (needed != shaped)
+    throw std::invalid_argument(needed ? "ExactRotation: the precession table has the wrong shape"
+                                       : "ExactRotation: this motion has no precession table");
+  if (!needed) return;
+  table_ = std::move(table);
+  psi_half_ = table_.start.back();
+  psi_u0_ = precession_integral(u0_);
 }
 
 void ExactRotation::classify(const Eigen::Vector3d& w) {

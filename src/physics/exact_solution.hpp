@@ -70,6 +70,14 @@ class ExactRotation {
   /// Throws std::invalid_argument if a moment is not finite and positive or ω0 is not finite.
   ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
                 ExactParts parts = ExactParts::omega_and_orientation);
+  /// The same motion with its precession table built elsewhere, by an ExactRotation of the same
+  /// moments and ω0 (precession_table(): another thread, another process; docs/physics.md §8):
+  /// identical ω and orientation, without the constructor's tabulation (most of its time, seconds
+  /// near the separatrix where long double is emulated in software). Throws
+  /// std::invalid_argument for a table of the wrong shape (none at all, while the motion needs
+  /// one: not steady, not the separatrix).
+  ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
+                PrecessionTable table);
 
   /// Body-frame angular velocity ω(t) (rad per time unit); ω(0) = ω0 to round-off.
   Eigen::Vector3d omega_body(double t) const;
@@ -99,6 +107,8 @@ class ExactRotation {
   double modulus() const { return static_cast<double>(k_); }  ///< Jacobi modulus k (not m = k²)
   double lambda() const { return static_cast<double>(lambda_); }  ///< λ in u = λt + u0, rad/time
   ExactCase motion_case() const { return case_; }
+  /// The precession table (empty for ExactParts::omega_only, steady and separatrix motion).
+  const PrecessionTable& precession_table() const { return table_; }
   const Eigen::Vector3d& moments() const { return moments_; }  ///< body x, y, z
   const Eigen::Vector3d& omega0_body() const { return omega0_; }
 

@@ -46,6 +46,21 @@ std::vector<physics::ModelConfig> page_models(const scene::Scene& s) {
   return models;
 }
 
+/// The labels of the [[compare]] tiles the page does not run: the other engines' (the page binds
+/// src/physics alone) and those between the first and the last it compares; empty without
+/// [[compare]].
+JsonArray left_out_tiles(const scene::Scene& s) {
+  std::vector<std::size_t> runnable;
+  for (std::size_t i = 0; i < s.compare.size(); ++i)
+    if (!physics::is_engine(s.compare[i].model.kind)) runnable.push_back(i);
+  JsonArray out;
+  for (std::size_t i = 0; i < s.compare.size(); ++i) {
+    const bool shown = !runnable.empty() && (i == runnable.front() || i == runnable.back());
+    if (!shown) out.push_back({s.compare[i].label});
+  }
+  return out;
+}
+
 /// The entries of `m` as doubles, column by column (Eigen's order: a 3×N matrix flattened).
 template <typename Matrix>
 JsonValue numbers(const Matrix& m) {
@@ -129,6 +144,9 @@ JsonObject explorer_scene_data(const scene::Scene& s) {
                    {"description", {s.description}},
                    {"state", {std::move(state)}},
                    {"book", {JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}}};
+  // What of a comparison the page leaves out, which it says under the scene's description.
+  if (JsonArray left_out = left_out_tiles(s); !left_out.empty())
+    scene.push_back({"left_out", {std::move(left_out)}});
   if (b.shape != physics::BodyShape::book) {
     scene.push_back({"body",
                      {JsonObject{{"shape", {std::string(physics::to_string(b.shape))}},

@@ -25,7 +25,7 @@ import json
 import time
 
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
-from explorer_test import load as load_page
+from explorer_test import body_label_reach, load as load_page
 
 WINDOW = dict(size=(1280, 720), webgl=True, offline=True, exact_viewport=True)
 TOL = 1e-12
@@ -67,6 +67,10 @@ def check_size(plain, with_engines, bundle):
     text = plain.read_text()
     if "BOOKSPIN_ENGINES=" in text or "<!--BOOKSPIN_ENGINES-->" in text:
         fail("the page written without --engines carries the engines (or their marker)")
+    # The page a student opens from disk stays small without the engines: under 6.6 MB with
+    # every scene (6.11 MB measured 2026-11-24).
+    if plain.stat().st_size >= 6.6e6:
+        fail(f"the page without the engines is {plain.stat().st_size} bytes, not under 6.6 MB")
     grown = with_engines.stat().st_size - plain.stat().st_size
     if grown < bundle.stat().st_size:
         fail(f"the page with --engines is only {grown} bytes larger than without; the engines' "
@@ -101,10 +105,54 @@ def check_engines(driver, page, node, modules, tests, shots):
         flips = driver.execute_script("return window.explorer.flips()")
         if status.count("flips ") != 2 or any(f"flips {n}" not in status for n in flips):
             fail(f"the readout does not show both runs' flips {flips}: {status!r}")
+        # Legible: each book labelled by its method within 50 px of it, the engines without
+        # the gyroscopic term said to be; cannon-es's energy (round-off, 1e-16) drawn flat,
+        # Rapier's rise (9e-4 of E0 by t = 20) drawn as one.
+        reach = body_label_reach(driver)
+        print(f"body labels and the drawn pixels within 50 px: {reach}")
+        if len(reach) != 2 or any(n < 200 for _, n in reach):
+            fail(f"a book of {first} and {second} has no label within 50 px: {reach}")
+        labels = [label for label, _ in reach]
+        for label in labels:
+            without = label.startswith(("cannon-es", "Jolt 1.1")) and "mApplyGyroscopicForce" not in label
+            if without != ("no gyroscopic term" in label):
+                fail(f"the label {label!r} says the gyroscopic term wrongly")
+        spans = {s["run"]: s["px"] for s in driver.execute_script("return window.explorer.plotSpans()")
+                 if s["panel"].startswith("energy drift")}
+        print(f"energy lines drawn (px tall): {spans}")
+        for label, px in spans.items():
+            if label.startswith("cannon-es") and px > 1:
+                fail(f"cannon-es's energy, constant to round-off, is drawn {px:.1f} px tall")
+            if label.startswith("Rapier") and px < 10:
+                fail(f"Rapier's energy rise is drawn only {px:.1f} px tall")
         driver.save_screenshot(str(shots / f"explorer-engines-{first}-{second}.png"))
         errors = console_errors(driver)
         if errors:
             fail(f"console errors with {first} and {second}: {errors}")
+
+
+def check_flat_energy(driver, page, shots):
+    """cannon-es alone: its energy, constant to round-off (1e-16 of E0), drawn as a flat line,
+    not stretched to fill its panel."""
+    w = ",".join(map(repr, W0))
+    load(driver, f"{page}?scene=exact-unstable-x&axis=custom&w={w}&jiggle=0&model=cannon-es")
+    driver.execute_script(f"window.explorer.omegaAt({T_END!r})")
+    time.sleep(0.3)
+    spans = [s for s in driver.execute_script("return window.explorer.plotSpans()")
+             if s["panel"].startswith("energy drift")]
+    print(f"cannon-es alone: energy line drawn {spans[0]['px'] if spans else None} px tall")
+    driver.save_screenshot(str(shots / "explorer-engines-cannon-es.png"))
+    if len(spans) != 1 or spans[0]["px"] > 1:
+        fail(f"cannon-es's energy, constant to round-off, is not drawn flat: {spans}")
+    # An engine switch hands the page back within 1 s (timed in the page around the handler).
+    for model in ("rapier", "jolt-gyroscopic", "exact"):
+        ms = driver.execute_script(f"""
+          const t0 = performance.now(), m = document.getElementById('model');
+          m.value = '{model}'; m.dispatchEvent(new Event('change'));
+          return performance.now() - t0;""")
+        print(f"switch to {model}: control back after {ms:.0f} ms")
+        if ms > 1000:
+            fail(f"switching to {model} held the page {ms:.0f} ms, more than 1000")
 
 
 def check_extreme_links(driver, page, shots):
@@ -174,6 +222,7 @@ def main():
     with open_browser(chromium, driver_path, **WINDOW) as driver:
         check_engines(driver, (out / "engines" / "explorer.html").resolve().as_uri(), node,
                       modules, source / "tests" / "browser", shots)
+        check_flat_energy(driver, (out / "engines" / "explorer.html").resolve().as_uri(), shots)
         check_extreme_links(driver, (out / "plain" / "explorer.html").resolve().as_uri(), shots)
     print("explorer engines: OK")
 

@@ -132,6 +132,26 @@ def view_pixels(driver):
     """)
 
 
+def body_label_reach(driver, reach=50):
+    """For each body label of compare mode (HTML over the 3D view): its text and the count of
+    the view's drawn (not background) pixels within `reach` CSS px of its box."""
+    return driver.execute_script(VIEW_PIXELS + f"""
+      const box = v.getBoundingClientRect(), sx = v.width / box.width, sy = v.height / box.height;
+      return [...document.querySelectorAll('.bodyLabel')].filter((l) => !l.hidden).map((l) => {{
+        const r = l.getBoundingClientRect();
+        const x0 = Math.max(0, Math.floor((r.left - box.left - {reach}) * sx));
+        const x1 = Math.min(v.width, Math.ceil((r.right - box.left + {reach}) * sx));
+        const y0 = Math.max(0, Math.floor((r.top - box.top - {reach}) * sy));
+        const y1 = Math.min(v.height, Math.ceil((r.bottom - box.top + {reach}) * sy));
+        let n = 0;
+        for (let y = y0; y < y1; ++y) for (let x = x0; x < x1; ++x) {{
+          const i = 4 * (y * v.width + x);
+          if (Math.abs(d[i] - 0x20) + Math.abs(d[i + 1] - 0x24) + Math.abs(d[i + 2] - 0x2c) > 30) n++;
+        }}
+        return [l.textContent, n];
+      }});""")
+
+
 def grey_pixels(driver):
     """Pixels of the 3D view in the lit greys of a mesh's default colour (not background)."""
     return driver.execute_script(VIEW_PIXELS + """
@@ -245,11 +265,12 @@ def solve3(m, p):
 
 def pick_expectation(driver, px, py):
     """ω0 that a pick at canvas pixel (px, py) should give: the view point (X, Y, √(1−X²−Y²)),
-    X = (px − W/2)/R, Y = (H/2 − py)/R, R = 0.42·min(W, H), back through the sphere's rotation
-    M (body → view) to the body frame, u = M⁻¹·p, then ω = |L|·u/|u| / I componentwise."""
+    X = (px − W/2)/R, Y = (0.53·H − py)/R, R = 0.36·min(W, H) (the disc a little below the
+    middle, under the sphere's title), back through the sphere's rotation M (body → view) to the
+    body frame, u = M⁻¹·p, then ω = |L|·u/|u| / I componentwise."""
     w, h = driver.execute_script("const c = document.getElementById('sphere'); return [c.width, c.height];")
-    radius = 0.42 * min(w, h)
-    x, y = (px - w / 2) / radius, (h / 2 - py) / radius
+    radius = 0.36 * min(w, h)
+    x, y = (px - w / 2) / radius, (0.53 * h - py) / radius
     view_point = [x, y, (1 - x * x - y * y) ** 0.5]
     u = solve3(driver.execute_script("return window.explorer.sphereRotation()"), view_point)
     norm = sum(c * c for c in u) ** 0.5
@@ -299,9 +320,11 @@ def check_sphere_pick(driver, page):
                  f"not the direction of {expected}")
         if abs(momentum(state["w"]) / L0 - 1) > 1e-9:
             fail(f"the sphere pick changed |L|: {momentum(state['w'])}, not {L0}")
+        # The fields show ω0 to 6 significant digits and carry it exactly (data-exact).
         shown = [float(driver.find_element("id", f).get_attribute("value")) for f in ("wx", "wy", "wz")]
-        if shown != state["w"]:
-            fail(f"the ω0 fields show {shown}, not the picked {state['w']}")
+        exact = [float(driver.find_element("id", f).get_attribute("data-exact")) for f in ("wx", "wy", "wz")]
+        if exact != state["w"] or any(abs(a - b) > 5e-6 * abs(b) for a, b in zip(shown, state["w"])):
+            fail(f"the ω0 fields show {shown} (exactly {exact}), not the picked {state['w']}")
     picked = state["w"]
     # A touch drag turns the sphere and picks nothing.
     before = driver.execute_script("return window.explorer.sphereRotation()")

@@ -480,5 +480,57 @@ TEST(ExactSolutionOmegaForm, ReproducesOmegaWithJacobiFunctions) {
                std::logic_error);
 }
 
+// A table built by another instance of the same start (another thread, as the explorer's page
+// does) gives the same orientation bit for bit, near the separatrix too; a table of the wrong
+// shape, or one for a motion that has none, is refused.
+TEST(ExactSolutionTableFromElsewhere, SameOrientationAsBuildingIt) {
+  const Eigen::Vector3d moments = book_moments();
+  const Eigen::Vector3d w0 = perturbed_x_spin(Eigen::Vector3d(0.0, 1e-3, 1e-3) * moments.x());
+  const ExactRotation built(moments, w0);
+  const ExactRotation given(moments, w0, built.precession_table());
+  for (double t : {0.0, 0.7, 31.0, 104.4, 1234.5}) {
+    EXPECT_EQ(given.orientation(t), built.orientation(t)) << t;
+    EXPECT_EQ(given.omega_body(t), built.omega_body(t)) << t;
+  }
+  PrecessionTable short_table = built.precession_table();
+  short_table.coeffs.pop_back();
+  EXPECT_THROW(ExactRotation(moments, w0, short_table), std::invalid_argument);
+  EXPECT_THROW(ExactRotation(moments, w0, PrecessionTable{}), std::invalid_argument);
+  const Eigen::Vector3d steady(0.0, 0.0, 1.0);  // about a principal axis: no table
+  EXPECT_THROW(ExactRotation(moments, steady, built.precession_table()), std::invalid_argument);
+  EXPECT_NO_THROW(ExactRotation(moments, steady, PrecessionTable{}));
+}
+
+// The model reset without a table stays at t = 0 (R = I) until given one, then steps as a model
+// reset with it; advance(dt, n) lands on the same state as n steps of dt.
+TEST(ExactModelTableLater, StepsAsIfBuiltAndAdvancesInOneEvaluation) {
+  InitialState initial;
+  initial.omega0_body = {0.114819, 0.0, 0.0};
+  initial.jiggle = 1e-3;
+  initial.seed = 2012;
+  ExactModel full(Book{});
+  full.reset(initial);
+  ExactModel later(Book{});
+  later.reset(initial, ExactParts::omega_only);
+  EXPECT_FALSE(later.has_orientation());
+  EXPECT_EQ(later.orientation(), Eigen::Matrix3d::Identity());
+  EXPECT_THROW(later.step(0.1), std::logic_error);
+  later.set_precession_table(full.rotation().precession_table());
+  EXPECT_TRUE(later.has_orientation());
+  ExactModel jump(Book{});
+  jump.reset(initial, ExactParts::omega_only);
+  jump.set_precession_table(full.rotation().precession_table());
+  const double dt = 1.0 / 60.0;
+  for (int i = 0; i < 6000; ++i) {
+    full.step(dt);
+    later.step(dt);
+  }
+  jump.advance(dt, 6000);
+  EXPECT_EQ(later.orientation(), full.orientation());
+  EXPECT_EQ(jump.time(), full.time());
+  EXPECT_EQ(jump.orientation(), full.orientation());
+  EXPECT_EQ(jump.diagnostics().omega_body, full.diagnostics().omega_body);
+}
+
 }  // namespace
 }  // namespace bookspin::physics

@@ -39,6 +39,17 @@ TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {
   EXPECT_TRUE(has(mixed, "\"compare\":true")) << mixed;
   EXPECT_TRUE(has(mixed, "\"model2\":\"exact\"")) << mixed;
   EXPECT_FALSE(has(mixed, "mujoco")) << mixed;
+  // The page says which tiles it leaves out: the engine's, by its label.
+  EXPECT_TRUE(has(mixed, "\"left_out\":[\"m\"]")) << mixed;
+  EXPECT_TRUE(has(engines_only, "\"left_out\":[\"b\"]")) << engines_only;
+
+  // Four methods of the page's own: it compares the first with the last, the middle two left out.
+  const std::string four = explorer_scene_json(scene::parse_scene_text(
+      "[[compare]]\nlabel = \"e\"\nmodel.kind = \"rigid-matrix\"\n[[compare]]\nlabel = \"q\"\n"
+      "model.kind = \"rigid-quaternion\"\n[[compare]]\nlabel = \"p\"\nmodel.kind = \"particle\"\n"
+      "[[compare]]\nlabel = \"x\"\nmodel.kind = \"exact\"\n",
+      "test.toml", {}));
+  EXPECT_TRUE(has(four, "\"left_out\":[\"q\",\"p\"]")) << four;
 
   const std::string alone =
       explorer_scene_json(scene::parse_scene_text("[model]\nkind = \"ode\"\n", "test.toml", {}));

@@ -16,6 +16,27 @@ function fillSelect(id, list) {
   $(id).innerHTML = list.map((x) => `<option value="${x}">${x}</option>`).join('');
 }
 
+/** A number as a field shows it: an integer whole, anything else to 6 significant digits
+ * (1/60 as 0.0166667, not 0.016666666666666666). */
+export function shownNumber(x) {
+  return Number.isInteger(x) || !Number.isFinite(x) ? String(x) : String(Number(x.toPrecision(6)));
+}
+
+/** Shows `x` in field `id`, rounded; the exact value kept beside it (data-exact). */
+function writeNumber(id, x) {
+  const el = $(id);
+  el.value = shownNumber(x);
+  el.dataset.exact = String(x);
+  el.dataset.shown = el.value;
+}
+
+/** The field's number: the exact value it was given while it still shows it rounded, else
+ * what was typed. */
+function readNumber(id) {
+  const el = $(id);
+  return el.value === el.dataset.shown ? Number(el.dataset.exact) : Number(el.value);
+}
+
 function show(id, visible) {
   $(id).hidden = !visible;
 }
@@ -30,6 +51,8 @@ export class Controls {
     this.engineModels = engines.map((e) => e.model);
     fillSelect('scene', [''].concat(scenes.map((s) => s.name)));
     $('scene').options[0].textContent = '(custom)';
+    // The menu lists the scenes by title (the value stays the scene's name, as in a link).
+    scenes.forEach((s, i) => { if (s.title) $('scene').options[i + 1].textContent = s.title; });
     fillSelect('body', space.bodies);
     const models = space.models.concat(this.engineModels);
     fillSelect('model', models); fillSelect('model2', models);
@@ -51,9 +74,9 @@ export class Controls {
   read(state) {
     const next = { ...state };
     for (const id of CHOICES) next[id] = $(id).value;
-    for (const id of NUMBERS) next[id] = Number($(id).value);
+    for (const id of NUMBERS) next[id] = readNumber(id);
     for (const id of BOXES) next[id] = $(id).checked;
-    next.w = ['wx', 'wy', 'wz'].map((id) => Number($(id).value));
+    next.w = ['wx', 'wy', 'wz'].map(readNumber);
     return this.fit(next);
   }
 
@@ -72,9 +95,16 @@ export class Controls {
     fillSelect('integrator', this.integratorsOf(state.model));
     fillSelect('integrator2', this.integratorsOf(state.model2));
     for (const id of CHOICES) $(id).value = state[id];
-    for (const id of NUMBERS) $(id).value = state[id];
+    for (const id of NUMBERS) writeNumber(id, state[id]);
     for (const id of BOXES) $(id).checked = state[id];
-    ['wx', 'wy', 'wz'].forEach((id, i) => { $(id).value = state.w[i]; });
+    ['wx', 'wy', 'wz'].forEach((id, i) => writeNumber(id, state.w[i]));
+    const scene = this.scenes.find((x) => x.name === state.scene);
+    $('sceneTitle').textContent = scene ? scene.title || scene.name : '';
+    $('sceneDescription').textContent = scene ? scene.description || '' : '';
+    // A comparison of more methods than the page runs says what it left out.
+    const left = scene && scene.left_out ? scene.left_out : [];
+    $('sceneLeftOut').textContent = left.length ? `The page runs two of this scene's methods; ` +
+      `left out: ${left.join('; ')} (the scene's clip shows them all).` : '';
     const particle = state.model === 'particle';
     show('integratorRow', this.integrated(state.model));
     show('normalizeRow', this.integrated(state.model));
@@ -87,7 +117,6 @@ export class Controls {
     show('integrator2Row', this.integrated(state.model2));
     show('normalize2Row', this.integrated(state.model2));
     // 'mesh' is the scene's own mesh body: offered only where the scene has one.
-    const scene = this.scenes.find((x) => x.name === state.scene);
     const mesh = $('body').querySelector('option[value="mesh"]');
     mesh.disabled = !(scene && scene.body && scene.body.shape === 'mesh');
     mesh.textContent = mesh.disabled ? 'mesh (a mesh scene)' : `mesh (${scene.name})`;
@@ -96,7 +125,11 @@ export class Controls {
   /** Calls `onChange(id)` when an input of the column or the transport changes. */
   listen(onChange) {
     for (const el of document.querySelectorAll('#controls input, #controls select, #speed')) {
-      el.addEventListener('change', () => onChange(el.id));
+      el.addEventListener('change', () => {
+        // A menu keeps no focus once chosen: the arrow keys then step time, not the menu.
+        if (el.tagName === 'SELECT') el.blur();
+        onChange(el.id);
+      });
     }
   }
 }

@@ -4,9 +4,13 @@ import { Runs } from './runs.js';
 
 /** The hooks over `app` (main.js) and its sphere; `fns`: main.js's rebuild, advance, draw,
  * setPlaying. */
-export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying }) {
+export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart }) {
   return {
     ready: false,
+    /** performance.now() (ms after navigation began) when the first frame was drawn. */
+    firstFrameAt: () => app.firstFrameAt,
+    /** A pick on the sphere of body-frame direction `u`, as a click there makes it. */
+    pick: (u) => pickStart(u),
     state: () => structuredClone(app.state),
     /** Whether the page has caught up with its time (no piece of a catch-up left). */
     settled: () => app.pacer.target === null,
@@ -17,12 +21,27 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying }) {
     frameCosts: () => ({ ...app.costs }),
     /** ω (body frame) of each run at time t (steps round(t/dt) from the start), in one go. */
     omegaAt(t) {
-      app.state.t = 0; rebuild(); advance(t); app.pacer.stop(); app.pacer.notice(app.state); draw();
+      app.state.t = 0; rebuild();
+      // The exact runs' precession tables at once (on this thread, unless built already).
+      for (const r of app.runs.list.filter((x) => x.pending))
+        app.runs.supply(r, app.tables.now(r.session.moments(), r.session.startOmega()));
+      advance(t); app.pacer.stop(); app.pacer.notice(app.state); draw();
       return app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body));
     },
     flips: () => app.runs.flips(),
-    /** Each run's flip detector: {count, first, period} (analysis::FlipDetector). */
+    /** The sphere's L dots as drawn: {x, y (canvas pixels), u}; the axis names drawn. */
+    sphereDots: () => sphere.dots.map((d) => ({ x: d.x, y: d.y, u: d.u })),
+    sphereAxisLabels: () => sphere.axisLabels.slice(),
+    /** ω (body frame) of each run now. */
+    omegaNow: () => app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body)),
+    /** Each plotted line's drawn height in CSS pixels: {panel, run, component, px}. */
+    plotSpans: () => app.plotSpans || [],
+    /** Each run's flip detector: {count, first, period} (analysis::FlipDetector; the exact
+     * model's closed form), and the exact motion's from the same start at the page's t. */
     flipMeasures: () => app.runs.list.map((r) => r.session.flips()),
+    exactFlips: () => app.runs.list.map((r) => r.session.exactFlips(app.state.t)),
+    /** Whether a run still waits for its precession table (tables.js). */
+    waiting: () => app.runs.pending(),
     trails: () => app.runs.list.map((r) => ({ colour: r.colour, points: r.trail.length, label: r.label })),
     /** The sphere's view rotation (body → view), row-major 3×3. */
     sphereRotation: () => { const e = sphere.rotation.elements; return [0, 1, 2].map((i) => [e[i], e[i + 3], e[i + 6]]); },

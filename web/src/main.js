@@ -12,8 +12,15 @@ import { View3D } from './view3d.js';
 import { Sphere } from './sphere.js';
 import { drawPlots } from './plots.js';
 import { Controls, VIEW_CONTROLS } from './controls.js';
+import { PrecessionTables } from './tables.js';
 
 const $ = (id) => document.getElementById(id);
+/** Time units of one Step (and of → and ←), at least. */
+const STEP_TIME = 0.5;
+/** While playing, the address is rewritten every 60 ms to 1 s, so that it keeps t. */
+const URL_MIN_MS = 60, URL_MAX_MS = 1000;
+/** `x` to `digits` decimals, without a "-0.00". */
+const fixed = (x, digits) => (Math.abs(x) < 0.5 * 10 ** -digits ? 0 : x).toFixed(digits);
 
 function startApp(wasm, engines) {
   const SCENES = window.BOOKSPIN_SCENES || [];  // inlined by bookspin explore
@@ -25,6 +32,8 @@ function startApp(wasm, engines) {
     controls: new Controls(space, SCENES, engines),
     playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, plotsDrawnAt: -Infinity,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
+    tables: new PrecessionTables(wasm),
+    waitingSince: null,  // performance.now() when a run began waiting for its precession table
     seen: { sphere: null, plots: null },
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
     costs: { physics: 0, view: 0, sphere: 0, plots: 0, readout: 0 },
@@ -49,8 +58,37 @@ function startApp(wasm, engines) {
     const target = state.t;
     state.t = 0;
     app.pacer.stop();
+    requestTables();
     catchUp(target, FIRST_BUDGET_MS);
     writeUrl();
+  }
+
+  /** Each run waiting for its exact orientation gets its precession table, built off the main
+   * thread (tables.js); the page goes on meanwhile, the run held at t = 0, a notice saying so. */
+  function requestTables() {
+    const waiting = app.runs.list.filter((r) => r.pending);
+    app.waitingSince = waiting.length ? performance.now() : null;
+    waitingNotice();
+    for (const run of waiting) {
+      app.tables.get(run.session.moments(), run.session.startOmega()).then((table) => {
+        if (!app.runs.supply(run, table)) return;
+        if (!app.runs.pending()) app.waitingSince = null;
+        waitingNotice();
+        if (app.pacer.target === null && app.state.t > 0) app.pacer.target = app.state.t;
+        app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
+        draw();
+      }, (err) => {
+        $('message').textContent = `exact motion: ${err.message || err}`;
+      });
+    }
+  }
+
+  function waitingNotice() {
+    const since = app.waitingSince;
+    app.pacer.waiting = since === null ? '' :
+      `computing the exact motion's orientation (its precession table) in the background: ` +
+      `${((performance.now() - since) / 1000).toFixed(1)} s; the exact run waits at t = 0, the page stays live`;
+    app.pacer.notice(app.state);
   }
 
   function advance(t) {
@@ -80,16 +118,32 @@ function startApp(wasm, engines) {
     if (!p) writeUrl();
   }
 
+  /** The readout a class reads from the back: t, and for each run its flips (the method's own
+   * turn-over detector, docs/physics.md §14) and its first flip beside the exact motion's. */
   function readout() {
     const { state, runs } = app;
-    $('time').textContent = `t = ${state.t.toFixed(2)}`;
+    const t = fixed(state.t, 2);
+    $('time').textContent = `t = ${t}`;
+    $('clock').textContent = `t = ${t}`;
     $('slider').max = Math.max(Number($('slider').max), Math.ceil(state.t));
     $('slider').value = state.t;
-    $('status').innerHTML = runs.list.map((r) => {
+    const html = runs.list.map((r) => {
       const h = r.history[r.history.length - 1];
-      return `<div style="color:${r.colour}">${r.label}: ω = (${h.w.map((x) => x.toFixed(4)).join(', ')}), ` +
-        `flips ${r.session.flips().count}${r.diverged ? ' — ' + r.diverged : ''}</div>`;
+      const own = r.session.flips();
+      const exact = r.closedForm ? own : r.session.exactFlips(state.t);
+      const first = own.first === null ? '—' : fixed(own.first, 2);
+      const beside = r.closedForm ? '(the exact motion)' : exact.first === null
+        ? 'exact motion: never turns over (a wobble)'
+        : `exact motion: first flip at ${fixed(exact.first, 2)}, count ${exact.count}`;
+      return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
+        `<div class="counts"><span class="big flips">flips ${own.count}</span> ` +
+        `<span class="big first">first flip at t = ${first}</span> <span class="exact">${beside}</span></div>` +
+        // ω in numbers for one run; in compare mode the plots show it, and the books stay in view.
+        (runs.list.length > 1 ? '' : `<div class="omega">ω = (${h.w.map((x) => x.toFixed(4)).join(', ')})</div>`) +
+        '</div>';
     }).join('');
+    if (html !== app.seen.readout) { $('status').innerHTML = html; app.seen.readout = html; }
+    if (app.waitingSince !== null) waitingNotice();
   }
 
   /** Whether `parts` differ from what `seen[name]` held; remembers them. */
@@ -103,7 +157,7 @@ function startApp(wasm, engines) {
     let t0 = performance.now();
     const lap = (part) => { const t1 = performance.now(); app.costs[part] += t1 - t0; t0 = t1; };
     const list = app.runs.list;
-    app.view.render(); lap('view');
+    app.view.render(list); lap('view');
     // The 2D panels only when what they show changed; while playing, the plots (their whole
     // history rescaled each time) ten times a second, the sphere every frame.
     const s = $('sphere'), p = $('plots');
@@ -113,11 +167,12 @@ function startApp(wasm, engines) {
     lap('sphere');
     if ((!app.playing || t0 - app.plotsDrawnAt >= 100) &&
         changed('plots', [p.width, p.height, ...list.flatMap((r) => [r.history, r.history.length])])) {
-      drawPlots(p, list);
+      app.plotSpans = drawPlots(p, list);
       app.plotsDrawnAt = t0;
     }
     lap('plots');
     readout(); lap('readout');
+    if (app.framesDrawn === 0) app.firstFrameAt = performance.now();
     app.framesDrawn += 1;
   }
 
@@ -137,6 +192,10 @@ function startApp(wasm, engines) {
           app.pacer.play(app.runs, app.state, n, t0);
           app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
         }
+        // Every half time unit, as often as browsers let a page rewrite its address (about
+        // 200 times in 10 s), at least once a second.
+        const every = Math.min(URL_MAX_MS, Math.max(URL_MIN_MS, 500 / Math.max(app.state.speed, 1e-9)));
+        if (now - (app.urlWrittenAt || 0) >= every) { writeUrl(); app.urlWrittenAt = now; }
         app.costs.physics += performance.now() - t0;
       }
       app.lastFrame = now;
@@ -145,7 +204,18 @@ function startApp(wasm, engines) {
     requestAnimationFrame(frame);
   }
 
+  /** `canvas`'s backing store at its displayed size times the screen's pixel density. */
+  function fitCanvas(canvas) {
+    const dpr = window.devicePixelRatio || 1;
+    const box = canvas.getBoundingClientRect();
+    const w = Math.max(1, Math.round(box.width * dpr)), h = Math.max(1, Math.round(box.height * dpr));
+    if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
+  }
+
   function resize() {
+    fitCanvas($('sphere'));
+    fitCanvas($('plots'));
+    sphere.redraw = true;
     app.view.resize(app.runs.list, app.state.showL);
     if (app.runs.list.length) app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
   }
@@ -164,23 +234,64 @@ function startApp(wasm, engines) {
     draw();
   });
   $('play').addEventListener('click', () => setPlaying(!app.playing));
-  $('stepOnce').addEventListener('click', () => { setPlaying(false); advance(app.state.t + app.state.dt); draw(); writeUrl(); });
-  $('reset').addEventListener('click', () => { setPlaying(false); app.state.t = 0; rebuild(); draw(); });
-  $('slider').addEventListener('input', () => {
+  /** To time `target`: forwards by catching up, backwards by starting again from t = 0. */
+  function seek(target) {
     setPlaying(false);
-    const target = Number($('slider').value);
+    target = Math.max(0, target);
     if (target < app.state.t) { app.state.t = target; rebuild(); } else catchUp(target, FIRST_BUDGET_MS);
     draw(); writeUrl();
-  });
+  }
+  /** A step of the Step button and the arrow keys: 0.5 time units (whole steps of dt), so that
+   * a class sees the book move. */
+  const stepSize = () => Math.max(1, Math.round(STEP_TIME / app.state.dt)) * app.state.dt;
+  function reset() { setPlaying(false); app.state.t = 0; rebuild(); draw(); }
+  function toggleFullscreen() {
+    if (document.fullscreenElement) document.exitFullscreen();
+    else document.documentElement.requestFullscreen().catch((e) => { $('message').textContent = `full screen: ${e.message}`; });
+  }
+  function copyLink() {
+    writeUrl();
+    const done = () => { $('copyLink').textContent = 'Link copied'; setTimeout(() => { $('copyLink').textContent = 'Copy link'; }, 2000); };
+    const fallback = () => {
+      const box = document.createElement('textarea');
+      box.value = location.href;
+      document.body.appendChild(box); box.select();
+      const ok = document.execCommand('copy');
+      box.remove();
+      if (ok) done(); else window.prompt('Copy this link:', location.href);
+    };
+    if (navigator.clipboard && window.isSecureContext) navigator.clipboard.writeText(location.href).then(done, fallback);
+    else fallback();
+  }
+  $('stepOnce').addEventListener('click', () => seek(app.state.t + stepSize()));
+  $('reset').addEventListener('click', reset);
+  $('slider').addEventListener('input', () => seek(Number($('slider').value)));
+  $('fullscreen').addEventListener('click', toggleFullscreen);
+  $('copyLink').addEventListener('click', copyLink);
+  $('camera').addEventListener('click', () => { app.view.resetCamera(app.runs.list, app.state.showL); draw(); });
+  // Keys, except while typing in a field: space plays, → and ← step 0.5 time units (never the
+  // menu under the focus), R resets, F goes full screen.
   window.addEventListener('keydown', (ev) => {
-    if (ev.code === 'Space' && !(ev.target instanceof HTMLInputElement && ev.target.type === 'number')) {
-      ev.preventDefault(); setPlaying(!app.playing);
-    }
-  });
+    const typing = ev.target instanceof HTMLInputElement && ev.target.type !== 'checkbox' && ev.target.type !== 'range';
+    if (typing || ev.ctrlKey || ev.metaKey || ev.altKey) return;
+    const act = {
+      Space: () => setPlaying(!app.playing),
+      ArrowRight: () => seek(app.state.t + stepSize()),
+      ArrowLeft: () => seek(app.state.t - stepSize()),
+      KeyR: reset,
+      KeyF: toggleFullscreen,
+    }[ev.code];
+    if (!act) return;
+    ev.preventDefault();
+    ev.stopPropagation();
+    if (ev.target instanceof HTMLSelectElement) ev.target.blur();
+    act();
+  }, true);
   window.addEventListener('resize', resize);
+  document.addEventListener('fullscreenchange', resize);
 
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
-  window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying });
+  window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
   app.state = app.pacer.limit(app.controls.fit(app.state), base());
   app.controls.write(app.state);
   resize();

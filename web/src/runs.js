@@ -4,11 +4,14 @@
 // A JavaScript engine's run (web/src/engines/) is stepped by its engine; after every step its q
 // and ω go into a WebAssembly session (Session.observe), which measures and draws it alike.
 import { AXES } from './state.js';
+import { WITHOUT_GYROSCOPIC_TERM } from './engines/models.js';
 
 const TRAIL_COLOURS = ['#e8b00b', '#35c0f0'];
 /** Steps between records at most (one record per 0.05 time units otherwise), so that a tiny dt
  * still returns to the page between pieces of work. */
 const MAX_CHUNK = 2000;
+/** Records of the exact motion per advance at most (it is evaluated at each, not stepped). */
+const CLOSED_FORM_RECORDS = 1000;
 
 /** The methods of `state`: the first, and the second in compare mode. */
 function methodsOf(state) {
@@ -18,7 +21,7 @@ function methodsOf(state) {
 }
 
 function labelOf(model, integrator, normalize, engine) {
-  if (engine) return engine.label;
+  if (engine) return engine.label + (WITHOUT_GYROSCOPIC_TERM.includes(model) ? ' (no gyroscopic term)' : '');
   if (model === 'exact') return 'exact';
   return `${model}, ${integrator}${normalize ? ', normalized' : ''}`;
 }
@@ -68,9 +71,10 @@ export class Runs {
   }
 
   /** A fresh session of `model` configured and reset to the state's start: {session, engine},
+   * the exact model's orientation table built at once, or with `later` left to supply(),
    * `engine` the JavaScript engine's run of an engine model (else null), started from the
    * session's jiggled ω0 with the body's mass and principal moments. */
-  startRun(state, model, integrator, normalize) {
+  startRun(state, model, integrator, normalize, later = false) {
     const adapter = this.engineOf(model);
     if (!adapter && !this.space.models.includes(model))
       throw new Error(`${model}: this page has no JavaScript engines (bookspin explore --engines writes them)`);
@@ -79,7 +83,10 @@ export class Runs {
       if (adapter) session.configureEngine();
       else session.configure(model, integrator, normalize, state.damping, state.k, state.cells);
       const w = Runs.omega0(session, state);
-      session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
+      // `later`: the exact model's precession table is left to be built off the main thread
+      // (tables.js; the run waits at t = 0 meanwhile), else built here.
+      if (later) session.start(w[0], w[1], w[2], state.jiggle, state.seed);
+      else session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
       const engine = adapter ? adapter.start({
         mass: session.mass(), moments: Array.from(session.moments()), size: Array.from(session.cageSize()),
         omega0: Array.from(session.diagnostics().omega_body),
@@ -108,10 +115,10 @@ export class Runs {
     const errors = [];
     methodsOf(state).forEach(([model, integrator, normalize], k) => {
       try {
-        const { session, engine } = this.startRun(state, model, integrator, normalize);
+        const { session, engine } = this.startRun(state, model, integrator, normalize, true);
         const run = { session, engine, model, integrator, normalize, colour: TRAIL_COLOURS[k],
           label: labelOf(model, integrator, normalize, this.engineOf(model)), trail: [], history: [],
-          diverged: '' };
+          diverged: '', pending: session.needsPrecessionTable(), closedForm: model === 'exact' };
         this.record(run, state.dt);
         run.E0 = run.history[0].E;
         this.list.push(run);
@@ -120,6 +127,19 @@ export class Runs {
       }
     });
     return errors;
+  }
+
+  /** Whether a run waits for its precession table (supply). */
+  pending() {
+    return this.list.some((r) => r.pending);
+  }
+
+  /** `table` (tables.js) for `run`, if it is still one of the runs; true when it was. */
+  supply(run, table) {
+    if (!this.list.includes(run) || !run.pending) return false;
+    run.session.setPrecessionTable(table);
+    run.pending = false;
+    return true;
   }
 
   record(run, dt) {
@@ -141,12 +161,16 @@ export class Runs {
   advanceTo(t, dt, deadline = Infinity) {
     const total = Math.round(t / dt);
     const chunk = Math.max(1, Math.min(MAX_CHUNK, Math.round(0.05 / dt)));
+    // The exact motion is evaluated at the time asked directly (a closed form in t): at most
+    // CLOSED_FORM_RECORDS records on the way, for the plots and the trail, however far.
+    const stride = new Map(this.list.map((r) => [r, r.closedForm
+      ? Math.max(chunk, Math.ceil((total - r.session.steps()) / CLOSED_FORM_RECORDS)) : chunk]));
     for (let busy = true; busy;) {
       busy = false;
       for (const r of this.list) {
         const left = total - r.session.steps();
-        if (left <= 0 || r.diverged) continue;
-        if (!Runs.step(r, dt, Math.min(chunk, left))) {
+        if (left <= 0 || r.diverged || r.pending) continue;
+        if (!Runs.step(r, dt, Math.min(stride.get(r), left))) {
           const reason = r.session.divergenceReason();
           r.diverged = `diverged at t = ${(r.session.steps() * dt).toFixed(3)}${reason ? ': ' + reason : ''}`;
         }
@@ -159,7 +183,8 @@ export class Runs {
     return Math.min(total, ...live) * dt;
   }
 
-  /** The flip count of each run (analysis::FlipDetector on every step, docs/physics.md §14). */
+  /** The flip count of each run (analysis::FlipDetector on every step, docs/physics.md §14; the
+   * exact model's from its closed form, analysis::exact_flip_count). */
   flips() {
     return this.list.map((r) => r.session.flips().count);
   }

@@ -10,6 +10,10 @@ import * as THREE from 'three';
 export const CANVAS_2D = { willReadFrequently: true };
 
 const DRAG_PIXELS = 5;  // a press that moves less than this is a click, not a drag
+const DOT_REACH_PX = 10;  // a click this close to a drawn L dot (CSS px) picks that dot's L
+const FONT_PX = 16;
+/** The principal axes by ascending moment (physics::principal_order), as the sphere names them. */
+const AXIS_NAMES = ['smallest', 'intermediate', 'largest'];
 
 function layerCanvas(W, H) {
   const c = document.createElement('canvas');
@@ -30,12 +34,20 @@ export class Sphere {
     // copied in each frame, so that a frame strokes only the trail points added since the last.
     this.layers = { key: null, back: null, trails: null, drawn: [] };
     this.redraw = true;
+    this.axisLabels = [];  // the axis names drawn
+    this.dots = [];  // the L dots drawn: {x, y (canvas pixels), u (body-frame L/|L|)}
     this.wire();
+  }
+
+  /** Backing-store pixels per CSS pixel (main.js sizes the canvas at the screen's density). */
+  scale() {
+    return this.canvas.width / Math.max(1, this.canvas.clientWidth || this.canvas.width);
   }
 
   geometry() {
     const W = this.canvas.width, H = this.canvas.height;
-    return { W, H, R: Math.min(W, H) * 0.42, cx: W / 2, cy: H / 2 };
+    // Room above the disc for the title, around it for the axes' names.
+    return { W, H, R: Math.min(W, H) * 0.36, cx: W / 2, cy: H / 2 + 0.03 * H };
   }
 
   project(u) {
@@ -83,7 +95,11 @@ export class Sphere {
       press = null;
       if (!was || was.dragged) return;
       const [x, y] = pixel(ev);
-      const u = this.bodyDirectionAt(x, y);
+      // On a drawn L dot (front or back: the dot a student sees and aims at), the L it marks;
+      // elsewhere the front half's point under the pointer.
+      const reach = DOT_REACH_PX * this.scale();
+      const dot = this.dots.find((d) => Math.hypot(d.x - x, d.y - y) <= reach);
+      const u = dot ? dot.u : this.bodyDirectionAt(x, y);
       if (u) this.onPick(u);
     });
     cv.addEventListener('pointercancel', () => { press = null; });
@@ -91,7 +107,7 @@ export class Sphere {
 
   curve(ctx, pts, colour, width) {
     const { R, cx, cy } = this.geometry();
-    ctx.lineWidth = width;
+    ctx.lineWidth = width * this.scale();
     for (let pass = 0; pass < 2; ++pass) {  // back half dim, front half bright
       ctx.strokeStyle = colour; ctx.globalAlpha = pass ? 1 : 0.25;
       ctx.beginPath();
@@ -109,14 +125,45 @@ export class Sphere {
     ctx.globalAlpha = 1;
   }
 
+  /** The body's principal axes where they pierce the sphere, named by moment (`order`: body
+   * axes by ascending moment); the ends on the far side dimmed. */
+  drawAxes(g, order) {
+    const { R, cx, cy } = this.geometry();
+    const k = this.scale();
+    g.font = `${FONT_PX * k}px sans-serif`;
+    this.axisLabels = [];
+    order.forEach((axis, rank) => {
+      for (const sign of [1, -1]) {
+        const u = [0, 0, 0];
+        u[axis] = sign;
+        const p = this.project(u);
+        const x = cx + R * p[0], y = cy - R * p[1];
+        g.globalAlpha = p[2] >= 0 ? 1 : 0.35;
+        g.fillStyle = '#e6e6e6';
+        g.beginPath(); g.arc(x, y, 3 * k, 0, 2 * Math.PI); g.fill();
+        const text = `${sign > 0 ? '+' : '−'}${'xyz'[axis]} ${AXIS_NAMES[rank]}`;
+        const w = g.measureText(text).width;
+        // Outside the disc, on the side the axis points to, kept on the canvas.
+        const tx = Math.min(Math.max(x + (p[0] >= 0 ? 6 * k : -6 * k - w), 2 * k), this.canvas.width - w - 2 * k);
+        const ty = Math.min(Math.max(y + (p[1] >= 0 ? -6 * k : FONT_PX * k + 2 * k), FONT_PX * k), this.canvas.height - 4 * k);
+        g.fillText(text, tx, ty);
+        this.axisLabels.push(text);
+      }
+    });
+    g.globalAlpha = 1;
+  }
+
   /** Draws the sphere for `runs` (the first run's body gives the polhodes). */
   draw(runs) {
     const g = this.canvas.getContext('2d', CANVAS_2D);
     const { W, H, R, cx, cy } = this.geometry();
     g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
+    const k = this.scale();
+    g.lineWidth = k;
     g.strokeStyle = '#555'; g.beginPath(); g.arc(cx, cy, R, 0, 2 * Math.PI); g.stroke();
-    g.fillStyle = '#ccc'; g.font = '14px sans-serif';
-    g.fillText('L/|L| in the body frame · click: start here', 8, 18);
+    g.fillStyle = '#ccc'; g.font = `${FONT_PX * k}px sans-serif`;
+    g.fillText('L/|L| in the body frame · click: start here', 8 * k, (FONT_PX + 2) * k);
+    this.dots = [];
     if (!runs.length) return;
     const I = runs[0].session.moments();
     if (I.join() !== this.moments) {
@@ -152,9 +199,17 @@ export class Sphere {
     });
     g.drawImage(L.back, 0, 0);
     g.drawImage(L.trails, 0, 0);
+    this.drawAxes(g, runs[0].session.principalOrder());
+    // Each run's current L: a filled dot on the front half, a dim ring on the far side.
     for (const r of runs) {
-      const p = this.project(r.trail[r.trail.length - 1]);
-      g.fillStyle = r.colour; g.beginPath(); g.arc(cx + R * p[0], cy - R * p[1], 5, 0, 2 * Math.PI); g.fill();
+      const u = r.trail[r.trail.length - 1];
+      const p = this.project(u);
+      const x = cx + R * p[0], y = cy - R * p[1];
+      g.beginPath(); g.arc(x, y, 6 * k, 0, 2 * Math.PI);
+      if (p[2] >= 0) { g.fillStyle = r.colour; g.fill(); } else {
+        g.globalAlpha = 0.45; g.strokeStyle = r.colour; g.lineWidth = 2 * k; g.stroke(); g.globalAlpha = 1;
+      }
+      this.dots.push({ x, y, u: u.slice() });
     }
     this.redraw = false;
   }

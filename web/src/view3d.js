@@ -80,16 +80,23 @@ function sweepRadius(session) {
   return rv > 0 ? Math.min(r, rv) : r;
 }
 
+/** The camera's first line of sight (from the orbit target), where resetCamera() puts it back. */
+const HOME = [4.2, 2.6, 6.3];
+
 export class View3D {
   constructor(canvas, art) {
     this.art = art;
     this.renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(1);
+    // At the screen's pixel density (a phone at 3×: sharp), the backing store the displayed
+    // size times devicePixelRatio (resize()).
+    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0x20242c);
     this.camera = new THREE.PerspectiveCamera(35, 1, 0.1, 200);
-    this.camera.position.set(4.2, 2.6, 6.3);
+    this.camera.position.set(...HOME);
     this.controls = new OrbitControls(this.camera, canvas);  // mouse, wheel and touch
+    // Each run's label, under the body it names (the method's name, in its colour).
+    this.labels = [];
     this.scene.add(new THREE.AmbientLight(0xffffff, 0.45));
     const sun = new THREE.DirectionalLight(0xffffff, 1.1);
     sun.position.set(4, 8, 6);
@@ -113,7 +120,47 @@ export class View3D {
     for (const d of this.drawn) { this.bodies.remove(d.mesh); d.mesh.geometry.dispose(); }
     this.drawn = runs.map((r) => makeBody(r.session, this.art));
     for (const d of this.drawn) this.bodies.add(d.mesh);
+    for (const l of this.labels) l.remove();
+    // Labels only where there is more than one body to tell apart (compare mode).
+    this.labels = runs.length > 1 ? runs.map((r) => {
+      const l = document.createElement('div');
+      l.className = 'bodyLabel';
+      l.style.color = r.colour;
+      l.textContent = r.label;
+      this.renderer.domElement.parentElement.appendChild(l);
+      return l;
+    }) : [];
     this.frame(runs, showL, false);
+  }
+
+  /** The camera back on its first line of sight, framing every body again. */
+  resetCamera(runs, showL) {
+    this.controls.target.set(0, 0, 0);
+    this.camera.position.set(...HOME);
+    this.frame(runs, showL, true);
+  }
+
+  /** Each label centred under its body as drawn now: the bottom of its moved cage corners
+   * (world, session.corners) projected to the view's CSS pixels. */
+  placeLabels(runs) {
+    if (!this.labels.length) return;
+    const v = this.renderer.domElement;
+    const w = v.clientWidth, h = v.clientHeight;
+    this.camera.updateMatrixWorld();
+    runs.forEach((r, k) => {
+      const label = this.labels[k];
+      if (!label) return;
+      const c = r.session.corners(), offset = this.offsetOf(k);
+      let left = Infinity, right = -Infinity, bottom = -Infinity;
+      for (let p = 0; p < 8; ++p) {
+        const q = new THREE.Vector3(c[3 * p], c[3 * p + 1], c[3 * p + 2]).add(offset).project(this.camera);
+        const x = (q.x + 1) / 2 * w, y = (1 - q.y) / 2 * h;
+        left = Math.min(left, x); right = Math.max(right, x); bottom = Math.max(bottom, y);
+      }
+      label.style.left = `${(left + right) / 2}px`;
+      label.style.top = `${Math.min(bottom + 6, h - 24)}px`;
+      label.hidden = !Number.isFinite(bottom);
+    });
   }
 
   /** Where run k of n is drawn: side by side (one above the other in a view taller than
@@ -187,19 +234,22 @@ export class View3D {
       if (R) a.setDirection(new THREE.Vector3(R[3 * i], R[3 * i + 1], R[3 * i + 2]));
       a.position.copy(this.arrowL.position);
     });
+    this.placeLabels(runs);
   }
 
   resize(runs, showL) {
     const v = this.renderer.domElement;
     const w = v.clientWidth, h = v.clientHeight;
+    this.renderer.setPixelRatio(window.devicePixelRatio || 1);
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / Math.max(1, h);
     this.camera.updateProjectionMatrix();
     this.frame(runs, showL, true);
   }
 
-  render() {
+  render(runs) {
     this.controls.update();
+    if (runs) this.placeLabels(runs);
     this.renderer.render(this.scene, this.camera);
   }
 }
