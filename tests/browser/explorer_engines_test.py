@@ -11,6 +11,9 @@ Builds the page's program with web/build.sh BINARY_DIR, writes the page of every
     as the same npm package run under node on the same body and step (tests/browser/
     engines_node.mjs, written apart from the page's adapters, the book's principal moments in
     closed form m(b² + c²)/12…), to 1e-12 relative; each run draws its trail and shows its flips;
+    once more at dt = 1/120 (not Rapier's default 1/60) from a jiggled start, node starting from
+    the page's own start ω0', so an engine stepped at its default step or started without the
+    jiggle fails;
   - links with extreme values keep the tab responsive: t = 1e9, dt = 1e-9 and speed = 1e9 are
     refused with a visible notice; a long catch-up (t = 1e5, six million steps) goes on in pieces
     with its progress shown and stops on Reset; playing faster than the machine steps says so;
@@ -53,12 +56,14 @@ def answered(driver, script, what):
     return result
 
 
-def node_omega(node, modules, tests, engine, dt, steps):
+def node_omega(node, modules, tests, engine, dt, steps, omega0=None):
+    """ω (body frame) after `steps` of `dt` under node from body-frame `omega0` (default W0)."""
     a, b, c = BOOK["size"]
     m = BOOK["mass"]
     moments = [m * (b * b + c * c) / 12, m * (a * a + c * c) / 12, m * (a * a + b * b) / 12]
-    spec = dict(mass=m, moments=moments, size=list(BOOK["size"]),
-                omega0=[(i * w) / i for i, w in zip(moments, W0)], dt=dt, steps=steps)
+    start = omega0 or [(i * w) / i for i, w in zip(moments, W0)]
+    spec = dict(mass=m, moments=moments, size=list(BOOK["size"]), omega0=start, dt=dt,
+                steps=steps)
     out = run([node, str(tests / "engines_node.mjs"), str(modules), engine, json.dumps(spec)])
     return json.loads(out.strip().splitlines()[-1])["omega_body"]
 
@@ -79,10 +84,18 @@ def check_size(plain, with_engines, bundle):
           f"{with_engines.stat().st_size} with them")
 
 
+# Each pair of engines in compare mode and its link's step and start. The last pair runs at
+# dt = 1/120, not Rapier's default 1/60, with a jiggled start: node starts from the page's own
+# start ω0' (window.explorer.startOmegas, the jiggle in it), so an engine stepped at its own
+# default step or started without the jiggle does not match.
+PAIRS = (("cannon-es", "rapier", "&jiggle=0"), ("jolt", "jolt-gyroscopic", "&jiggle=0"),
+         ("rapier", "jolt-gyroscopic", "&jiggle=0.001&seed=7&dt=0.008333333333333333"))
+
+
 def check_engines(driver, page, node, modules, tests, shots):
-    for first, second in (("cannon-es", "rapier"), ("jolt", "jolt-gyroscopic")):
+    for first, second, start in PAIRS:
         w = ",".join(map(repr, W0))
-        load(driver, f"{page}?scene=exact-unstable-x&axis=custom&w={w}&jiggle=0&model={first}"
+        load(driver, f"{page}?scene=exact-unstable-x&axis=custom&w={w}{start}&model={first}"
                      f"&compare=1&model2={second}")
         options = driver.execute_script(
             "return [...document.getElementById('model2').options].map((o) => o.value)")
@@ -91,8 +104,14 @@ def check_engines(driver, page, node, modules, tests, shots):
         dt = driver.execute_script("return window.explorer.state().dt")
         steps = round(T_END / dt)
         got = driver.execute_script(f"return window.explorer.omegaAt({T_END!r})")
-        for engine, omega in zip((first, second), got):
-            expected = node_omega(node, modules, tests, engine, dt, steps)
+        starts = driver.execute_script("return window.explorer.startOmegas()")
+        if starts[0] != starts[1]:
+            fail(f"the two runs of {first} and {second} start apart: {starts}")
+        jiggled = max(abs(x - y) for x, y in zip(starts[0], W0)) > 1e-6
+        if jiggled != ("jiggle=0&" not in start + "&"):
+            fail(f"{first} and {second} start at {starts[0]}: the link's {start} not applied")
+        for engine, omega, omega0 in zip((first, second), got, starts):
+            expected = node_omega(node, modules, tests, engine, dt, steps, omega0)
             err = max(abs(x - y) for x, y in zip(omega, expected)) / max(abs(x) for x in expected)
             print(f"{engine}: page ω({T_END}) = {omega}, node {expected}: {err:.1e} relative")
             if not err <= TOL:

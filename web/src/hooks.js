@@ -29,6 +29,8 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
       return app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body));
     },
     flips: () => app.runs.flips(),
+    /** Each run's start: body-frame ω0' = I⁻¹·L0, L0 with the jiggle (Session.startOmega). */
+    startOmegas: () => app.runs.list.map((r) => Array.from(r.session.startOmega())),
     /** The sphere's L dots as drawn: {x, y (canvas pixels), u}; the axis names drawn. */
     sphereDots: () => sphere.dots.map((d) => ({ x: d.x, y: d.y, u: d.u })),
     sphereAxisLabels: () => sphere.axisLabels.slice(),
