@@ -48,18 +48,26 @@ int export_scenarios(const FlipcheckOptions& options) {
   return kExitOk;
 }
 
+/// What judge and league share: the --methods parsed (a list that names nothing is refused
+/// before anything runs), the freshness flags and the stop poll, set on `job`.
+template <typename Job>
+void set_common(Job& job, const FlipcheckOptions& options, const char* command, const char* files) {
+  if (!options.methods.empty()) job.methods = analysis::parse_methods(options.methods);
+  if (job.motions.empty() && job.methods.empty())
+    throw InputError(std::string("flipcheck ") + command + ": nothing to judge: give " + files +
+                     " or --methods");
+  job.out_dir = options.out_dir;
+  job.freshness = {options.force, options.verify, remake_note};
+  job.stop = stop_poll();
+}
+
 /// Judges each motion against the scenario's exact motion: one verdict line each, and
 /// OUT/<scenario>-judge.csv.
 int judge_motions(const FlipcheckOptions& options) {
   products::FlipcheckJudgeJob job;
   job.scene = scene::parse_scene(options.scenario, options.overrides);
   for (const std::string& m : options.motions) job.motions.emplace_back(m);
-  if (!options.methods.empty()) job.methods = analysis::parse_methods(options.methods);
-  if (job.motions.empty() && job.methods.empty())
-    throw InputError("flipcheck judge: nothing to judge: give MOTION files or --methods");
-  job.out_dir = options.out_dir;
-  job.freshness = {options.force, options.verify, remake_note};
-  job.stop = stop_poll();
+  set_common(job, options, "judge", "MOTION files");
   const products::FlipcheckJudgeResult result = products::make_flipcheck_judge(job);
   for (const analysis::JudgedMotion& j : result.judged)
     std::cout << job.scene.name << " " << (j.file.empty() ? j.name : j.file.string()) << ": "
@@ -79,12 +87,7 @@ int league_table(const FlipcheckOptions& options) {
     analysis::scenario_of(job.scenes.back());  // a comparison scene is refused here
   }
   for (const std::string& m : options.motions) job.motions.emplace_back(m);
-  if (!options.methods.empty()) job.methods = analysis::parse_methods(options.methods);
-  if (job.motions.empty() && job.methods.empty())
-    throw InputError("flipcheck league: nothing to judge: give --motions files or --methods");
-  job.out_dir = options.out_dir;
-  job.freshness = {options.force, options.verify, remake_note};
-  job.stop = stop_poll();
+  set_common(job, options, "league", "--motions files");
   const products::FlipcheckLeagueResult result = products::make_flipcheck_league(job);
   const auto layout = products::flipcheck_league_layout(options.out_dir);
   std::cout << (result.outcome == cache::Outcome::up_to_date ? "up to date: " : "wrote: ")

@@ -23,11 +23,11 @@ JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.
 /// run), then the methods, each run from the scenario's start a row every steps_per_frame
 /// steps with the scene's other model settings. `names`: each file's name in the tables.
 std::vector<analysis::JudgedMotion> judge_all(const scene::Scene& scene,
+                                              const analysis::Scenario& scenario,
                                               const std::vector<std::filesystem::path>& files,
                                               const std::vector<std::string>& names,
                                               const std::vector<analysis::Method>& methods,
                                               const StopPoll& stop) {
-  const analysis::Scenario scenario = analysis::scenario_of(scene);
   std::vector<jobs::MotionFile> read;
   for (const std::filesystem::path& file : files)
     read.push_back(jobs::read_motion_csv(file, scenario.dt, scenario.steps));
@@ -140,7 +140,8 @@ FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, job.scene);
   const analysis::Scenario scenario = analysis::scenario_of(job.scene);
   FlipcheckJudgeResult result;
-  result.judged = judge_all(job.scene, job.motions, file_names(job.motions), job.methods, job.stop);
+  result.judged =
+      judge_all(job.scene, scenario, job.motions, file_names(job.motions), job.methods, job.stop);
   const CsvTable table = analysis::judgement_table(scenario, result.judged);
   JsonObject options;
   if (!job.methods.empty()) options.push_back({"methods", method_labels(job.methods)});
@@ -264,9 +265,10 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   for (std::size_t i = 0; i < job.scenes.size(); ++i) {
     stop_if_asked(job.stop, "flipcheck league");
     const scene::Scene& scene = job.scenes[i];
+    const analysis::Scenario scenario = analysis::scenario_of(scene);
     LeagueColumn col{scene.name, scene.title,
-                     judge_all(scene, files[i], names[i], job.methods, job.stop)};
-    CsvTable part = analysis::judgement_table(analysis::scenario_of(scene), col.judged);
+                     judge_all(scene, scenario, files[i], names[i], job.methods, job.stop)};
+    CsvTable part = analysis::judgement_table(scenario, col.judged);
     table.columns = part.columns;
     for (auto& row : part.rows) table.rows.push_back(std::move(row));
     columns.push_back(std::move(col));
