@@ -1,5 +1,6 @@
 #include "charts/sweep_plots.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -25,8 +26,27 @@ double number(const std::string& text) {
 
 /// The header lines of the picture: the sweep, then its ranges.
 std::vector<std::string> sheet_header(const SweepChart& chart) {
-  std::vector<std::string> lines{"Sweep of " + chart.scene_name + ": " +
-                                 std::to_string(chart.rows.size()) + " runs"};
+  // Points the engine refused (the `refused` column, jobs/sweep_csv.hpp): counted, the first
+  // reason shown; their measures are gaps in the plots and maps.
+  std::size_t refused = 0;
+  std::string first_reason;
+  const auto column = std::find(chart.header.begin(), chart.header.end(), "refused");
+  if (column != chart.header.end()) {
+    const auto c = static_cast<std::size_t>(column - chart.header.begin());
+    for (const auto& row : chart.rows) {
+      if (c >= row.size() || row[c].empty()) continue;
+      if (refused++ == 0) first_reason = row[c];
+    }
+  }
+  std::string head =
+      "Sweep of " + chart.scene_name + ": " + std::to_string(chart.rows.size() - refused) + " runs";
+  if (refused > 0)
+    head += ", " + std::to_string(refused) + (refused == 1 ? " point" : " points") +
+            " refused by the engine";
+  std::vector<std::string> lines{head};
+  if (refused > 0)
+    lines.push_back("refused" + std::string(refused > 1 ? " (the first)" : "") + ": " +
+                    first_reason);
   for (const SweepAxis& a : chart.axes) {
     char text[200];
     std::snprintf(text, sizeof text, "varied: %s from %.6g to %.6g, %d values%s", a.key.c_str(),

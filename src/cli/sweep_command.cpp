@@ -83,6 +83,10 @@ int sweep_command(const SweepOptions& options) {
       return kExitOk;
     }
     written = done.written;
+    if (done.refused > 0)
+      std::cerr << "bookspin: note: the engine refused " << done.refused << " of the "
+                << done.points << " points (first: " << done.first_refusal
+                << "); their rows' refused column says why" << std::endl;
   }
   for (const auto& path : written) std::printf("wrote %s\n", path.c_str());
   return kExitOk;

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "common/errors.hpp"
@@ -39,13 +40,43 @@ SweepTable measure_sweep(const SweepRequest& request) {
                         static_cast<std::size_t>(request.shard_index))
       indices.push_back(i);
   }
-  // Every point's scene first: a bad value fails the sweep before any run.
-  std::vector<scene::Scene> scenes;
+  // Every point's scene first: a bad value fails the sweep before any run; a value the model's
+  // engine refuses is that point's reason (unless it is every point's).
+  std::vector<std::optional<scene::Scene>> scenes;
+  std::vector<std::string> refused(indices.size());
+  std::optional<scene::EngineRefusal> first_refusal;
   scenes.reserve(indices.size());
-  for (std::size_t i : indices) {
+  for (std::size_t r = 0; r < indices.size(); ++r) {
     std::vector<std::string> overrides = request.overrides;
-    for (auto& o : point_overrides(base, grid, i)) overrides.push_back(std::move(o));
-    scenes.push_back(scene::parse_scene(request.scene_path, overrides));
+    for (auto& o : point_overrides(base, grid, indices[r])) overrides.push_back(std::move(o));
+    try {
+      scenes.emplace_back(scene::parse_scene(request.scene_path, overrides));
+    } catch (const scene::EngineRefusal& e) {
+      scenes.emplace_back();
+      refused[r] = e.refused_key() + ": " + e.reason();
+      if (!first_refusal) first_refusal = e;
+    }
+  }
+  // Refused at every point of the grid (a shard's own points and, for a shard, the others'),
+  // the sweep is bad input as a whole.
+  const auto runs = [](const auto& s) { return s.has_value(); };
+  if (first_refusal && std::none_of(scenes.begin(), scenes.end(), runs)) {
+    bool elsewhere = false;
+    for (std::size_t i = 0; sharded && !elsewhere && i < grid.size(); ++i) {
+      if (i % static_cast<std::size_t>(request.shard_count) ==
+          static_cast<std::size_t>(request.shard_index))
+        continue;
+      std::vector<std::string> overrides = request.overrides;
+      for (auto& o : point_overrides(base, grid, i)) overrides.push_back(std::move(o));
+      try {
+        scene::parse_scene(request.scene_path, overrides);
+        elsewhere = true;
+      } catch (const scene::EngineRefusal&) {
+      }
+    }
+    if (!elsewhere)
+      throw InputError(std::string(first_refusal->what()) + " (at every one of the " +
+                       std::to_string(grid.size()) + " points)");
   }
 
   std::vector<analysis::RunMeasures> results(indices.size());
@@ -64,8 +95,9 @@ SweepTable measure_sweep(const SweepRequest& request) {
     for (std::size_t i; (i = next++) < indices.size();) {
       if (const int s = stop_signal(request.stop_signal, "sweep point")) signal = s;
       if (signal != 0) return;
+      if (!scenes[i]) continue;  // refused: its row says why
       try {
-        results[i] = analysis::measure_run(scenes[i], abandon);
+        results[i] = analysis::measure_run(*scenes[i], abandon);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();
@@ -90,9 +122,12 @@ SweepTable measure_sweep(const SweepRequest& request) {
   table.ranges = grid.ranges();
   table.measures = request.measures;
   table.header = sweep_csv_header(table.ranges, table.measures);
-  for (std::size_t r = 0; r < indices.size(); ++r)
-    table.rows.emplace_back(indices[r],
-                            sweep_row_cells(grid.point(indices[r]), table.measures, results[r]));
+  for (std::size_t r = 0; r < indices.size(); ++r) {
+    const std::vector<double> point = grid.point(indices[r]);
+    table.rows.emplace_back(
+        indices[r], refused[r].empty() ? sweep_row_cells(point, table.measures, results[r])
+                                       : sweep_refused_cells(point, table.measures, refused[r]));
+  }
   return table;
 }
 

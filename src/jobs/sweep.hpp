@@ -39,8 +39,10 @@ struct SweepRequest {
 /// (scene, ranges, measures, shard) => the table of the grid's points (or the shard's).
 /// Parses every point's scene first (a bad value is the scene's InputError, naming the key,
 /// before any run), runs them on `jobs` threads and returns their rows in grid order. No files.
-/// Throws InputError for a comparison scene, Interrupted when request.stop_signal answers a
-/// signal.
+/// A point whose value the model's engine cannot run (scene::EngineRefusal: ODE's subnormal
+/// dt, MuJoCo's smallest mass and moment) is not run: its row's `refused` cell says why.
+/// Throws InputError for a comparison scene, or when the engine refuses every point (the
+/// first refusal's message); Interrupted when request.stop_signal answers a signal.
 SweepTable measure_sweep(const SweepRequest& request);
 
 /// `table` as its picture reads it (charts::sweep_sheet): the ranges as axes, the rows' cells

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <string_view>
 
 #include "common/csv_writer.hpp"
@@ -21,7 +22,12 @@ std::string cell(const std::optional<double>& v, std::string_view column) {
 
 MeasureList parse_measures(const std::string& text) {
   MeasureList measures;
-  for (const std::string& name : csv_cells(text)) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
+    names.push_back(text.substr(start, comma - start));
+  names.push_back(text.substr(start));
+  for (const std::string& name : names) {
     const analysis::Measure* found = analysis::find_measure(name);
     if (!found) {
       throw InputError("--measure " + text + ": unknown measure '" + name + "' (" +
@@ -41,6 +47,7 @@ std::vector<std::string> sweep_csv_header(const std::vector<VaryRange>& ranges,
   for (const analysis::Measure* m : measures) header.emplace_back(m->name);
   for (const analysis::Measure* m : measures)
     if (m->exact) header.emplace_back(m->exact_name);
+  header.emplace_back(kRefusedColumn);
   return header;
 }
 
@@ -53,6 +60,21 @@ std::vector<std::string> sweep_row_cells(const std::vector<double>& point,
     cells.push_back(cell(m.*(measure->value), measure->name));
   for (const analysis::Measure* measure : measures)
     if (measure->exact) cells.push_back(cell(m.*(measure->exact), measure->exact_name));
+  cells.emplace_back();  // refused: no
+  return cells;
+}
+
+std::vector<std::string> sweep_refused_cells(const std::vector<double>& point,
+                                             const MeasureList& measures,
+                                             const std::string& reason) {
+  std::vector<std::string> cells;
+  for (double v : point) cells.push_back(finite_text(v, "sweep grid value", NumberStyle::digits17));
+  for (const analysis::Measure* measure : measures) {
+    cells.emplace_back();
+    if (measure->exact) cells.emplace_back();
+  }
+  BOOKSPIN_ASSERT(!reason.empty());
+  cells.push_back(reason);
   return cells;
 }
 
@@ -63,11 +85,30 @@ std::vector<std::string> after(const std::string& first, const std::vector<std::
 }
 
 std::vector<std::string> csv_cells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::size_t start = 0;
-  for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
-    cells.push_back(line.substr(start, comma - start));
-  cells.push_back(line.substr(start));
+  std::vector<std::string> cells(1);
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == ',') {
+      cells.emplace_back();
+    } else if (c == '"' && cells.back().empty() && (i == 0 || line[i - 1] == ',')) {
+      // A quoted cell: up to the quote not doubled, which must end the cell.
+      for (++i;; ++i) {
+        if (i >= line.size()) throw std::invalid_argument("a quoted cell is not closed");
+        if (line[i] != '"') {
+          cells.back() += line[i];
+        } else if (i + 1 < line.size() && line[i + 1] == '"') {
+          cells.back() += '"';
+          ++i;
+        } else {
+          break;
+        }
+      }
+      if (i + 1 < line.size() && line[i + 1] != ',')
+        throw std::invalid_argument("text after a quoted cell's closing quote");
+    } else {
+      cells.back() += c;
+    }
+  }
   return cells;
 }
 

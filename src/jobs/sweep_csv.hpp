@@ -33,24 +33,36 @@ struct SweepTable {
 };
 
 /// The full CSV's column names, in order: the varied keys (VaryRange::key), the measures'
-/// names, then the exact columns (Measure::exact_name) of the measures that have one.
+/// names, the exact columns (Measure::exact_name) of the measures that have one, then
+/// `refused` (kRefusedColumn).
 std::vector<std::string> sweep_csv_header(const std::vector<VaryRange>& ranges,
                                           const MeasureList& measures);
 
+/// The last column: empty where the point ran, else why its model's engine refused it
+/// ("KEY: reason", scene::EngineRefusal), its measures and exact columns then empty.
+inline constexpr const char* kRefusedColumn = "refused";
+
 /// One grid point's cells in sweep_csv_header's order: `point`'s values (one per range), then
-/// each measure of `m`, then the exact columns; each %.17g, a measure empty where the run does
-/// not reach it (no flip). Throws an internal error (common/number_text.hpp) for a value
-/// that is not finite.
+/// each measure of `m`, then the exact columns, then an empty `refused`; each %.17g, a measure
+/// empty where the run does not reach it (no flip). Throws an internal error
+/// (common/number_text.hpp) for a value that is not finite.
 std::vector<std::string> sweep_row_cells(const std::vector<double>& point,
                                          const MeasureList& measures,
                                          const analysis::RunMeasures& m);
+
+/// A grid point the engine refused: `point`'s values, every measure and exact column empty,
+/// then `reason` in `refused`.
+std::vector<std::string> sweep_refused_cells(const std::vector<double>& point,
+                                             const MeasureList& measures,
+                                             const std::string& reason);
 
 /// `first`, then `cells`: a shard's line, its grid index first (common/csv_writer.hpp's
 /// csv_row writes it).
 std::vector<std::string> after(const std::string& first, const std::vector<std::string>& cells);
 
-/// A CSV line's cells, split at every comma (the sweep's cells, scene keys, measure names and
-/// numbers, hold none, so csv_row writes them as they are): the inverse of csv_row.
+/// A CSV line's cells: the inverse of csv_row (RFC 4180 on one line: a cell in double quotes
+/// may hold commas and doubled quotes, as a `refused` reason does). Throws
+/// std::invalid_argument for a quote that is not closed, or text after a closing quote.
 std::vector<std::string> csv_cells(const std::string& line);
 
 /// Writes the full CSV (header, then one line per row without the grid index) to `out`.

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
@@ -177,7 +178,12 @@ SweepTable read_sweep_shards(const std::vector<std::filesystem::path>& shards,
     for (std::string row; read_line(in, row);) {
       ++line_number;
       const std::string where = name + ":" + std::to_string(line_number);
-      auto cells = csv_cells(row);
+      std::vector<std::string> cells;
+      try {
+        cells = csv_cells(row);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(where + ": " + e.what());
+      }
       if (cells.size() != table.header.size() + 1)
         throw InputError(where + ": expected " + std::to_string(table.header.size() + 1) +
                          " cells");
@@ -188,10 +194,19 @@ SweepTable read_sweep_shards(const std::vector<std::filesystem::path>& shards,
           index % static_cast<unsigned long long>(n) != static_cast<unsigned long long>(k))
         throw InputError(where + ": grid_index '" + cells[0] + "' is not a point of shard " +
                          std::to_string(k) + " of " + std::to_string(n));
-      for (std::size_t c = 1; c < cells.size(); ++c) {
+      // The last cell, `refused`, is text: empty, or the reason of a point that did not run
+      // and so has no measure.
+      const std::size_t refused = cells.size() - 1;
+      for (std::size_t c = 1; c < refused; ++c) {
         if (is_number(cells[c]) || (c > varied && cells[c].empty())) continue;
         throw InputError(where + ": " + table.header[c - 1] + " '" + cells[c] +
                          "' is not a number");
+      }
+      if (!cells[refused].empty()) {
+        for (std::size_t c = varied + 1; c < refused; ++c)
+          if (!cells[c].empty())
+            throw InputError(where + ": " + table.header[c - 1] +
+                             " has a value in a refused point's row");
       }
       cells.erase(cells.begin());
       if (!rows.emplace(index, std::move(cells)).second) {

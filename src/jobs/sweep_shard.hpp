@@ -31,8 +31,9 @@ using ShardPath = std::function<std::filesystem::path(const std::string& scene_n
 /// exactly once, and returns the sweep's table, rows in grid order. Throws InputError naming
 /// the file (and line): no shards given, unreadable, not a shard, a shard line without scene
 /// hash or build, another sweep (naming the first field that differs), a mismatched header, a
-/// row of another shard or an index outside the grid, a cell that is not a finite number
-/// (empty is allowed for a measure, not for a varied value), a duplicate grid point, a missing
+/// row of another shard or an index outside the grid, a quoted cell not closed, a cell that is
+/// not a finite number (empty is allowed for a measure, not for a varied value; `refused` is
+/// text), a refused point's row with a measure, a duplicate grid point, a missing
 /// one (naming the shard file that should hold it: the given one, else `missing`'s).
 SweepTable read_sweep_shards(const std::vector<std::filesystem::path>& shards,
                              const ShardPath& missing);

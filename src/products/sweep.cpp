@@ -45,6 +45,15 @@ std::vector<fs::path> write_sweep(const jobs::SweepTable& table, const SweepPath
   return {paths.csv, paths.png};
 }
 
+/// The refused points of `table` into `done` (SweepOutcome::refused).
+void count_refused(const jobs::SweepTable& table, SweepOutcome& done) {
+  done.points = table.rows.size();
+  for (const auto& row : table.rows) {
+    if (row.second.back().empty()) continue;
+    if (done.refused++ == 0) done.first_refusal = row.second.back();
+  }
+}
+
 }  // namespace
 
 SweepPaths sweep_paths(const fs::path& out_dir, const std::string& scene_name) {
@@ -76,6 +85,7 @@ SweepOutcome make_sweep(const SweepJob& job) {
   const fs::path manifest = sweep_manifest_path(job.out_dir, scene.name);
   if (job.shard_count > 0) {
     const jobs::SweepTable table = jobs::measure_sweep(request);
+    count_refused(table, done);
     const std::string text = jobs::sweep_shard_text(
         table, scene, jobs::SweepGrid(request.ranges).size(), job.shard_index, job.shard_count);
     const fs::path shard = paths.shard(job.shard_index, job.shard_count);
@@ -89,6 +99,7 @@ SweepOutcome make_sweep(const SweepJob& job) {
       /*all_or_nothing=*/true};
   done.outcome = cache::make_cached(cached, job.freshness, [&] {
     const jobs::SweepTable table = jobs::measure_sweep(request);
+    count_refused(table, done);
     done.written = write_sweep(table, paths);
     return cache::Made{done.written};
   });

@@ -48,6 +48,10 @@ struct SweepOutcome {
   cache::Outcome outcome = cache::Outcome::made;
   std::string name;                            ///< the scene's name
   std::vector<std::filesystem::path> written;  ///< when made
+  /// When made: the points the engine refused (their rows' `refused` cell) and the first's
+  /// reason.
+  std::size_t refused = 0, points = 0;
+  std::string first_refusal;
 };
 
 /// (scene, ranges, measures) => OUT/<scene>-sweep.csv and -sweep.png + manifest, or with a

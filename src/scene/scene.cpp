@@ -420,8 +420,16 @@ void check_engine_limits(TomlReader& r, const Scene& s) {
   const auto uses = [&kinds](physics::ModelKind kind) {
     return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
   };
+  // r.fail's message (file and line, or --set), kept with the key and reason on their own.
+  const auto refuse = [&r](const std::string& key, const std::string& reason) {
+    try {
+      r.fail(key, reason);
+    } catch (const InputError& e) {
+      throw EngineRefusal(e, key, reason);
+    }
+  };
   if (uses(physics::ModelKind::ode) && s.dt < std::numeric_limits<double>::min())
-    r.fail("time.dt", "ODE cannot step by a subnormal dt (below " +
+    refuse("time.dt", "ODE cannot step by a subnormal dt (below " +
                           format_number(std::numeric_limits<double>::min()) + ", got " +
                           format_number(s.dt) + "): its quaternion update cannot normalize");
   constexpr double kMujocoMinVal = 1e-15;  // MuJoCo's mjMINVAL (mjmodel.h)
@@ -429,11 +437,11 @@ void check_engine_limits(TomlReader& r, const Scene& s) {
     const double smallest = s.body.moments.minCoeff();
     const char* key = s.body.shape == physics::BodyShape::book ? "book.size" : "body.scale";
     if (s.body.cage.mass <= kMujocoMinVal)
-      r.fail(
+      refuse(
           s.body.shape == physics::BodyShape::book ? "book.mass" : "body.mass",
           "MuJoCo needs a mass above its mjMINVAL (1e-15), got " + format_number(s.body.cage.mass));
     if (smallest <= kMujocoMinVal)
-      r.fail(key,
+      refuse(key,
              "MuJoCo needs every principal moment above its mjMINVAL (1e-15); this body's "
              "smallest is " +
                  format_number(smallest) + " (a larger or heavier body)");

@@ -112,10 +112,27 @@ inline constexpr int kMaxCompareTiles = 9;
 using physics::kMaxLatticeCells;  ///< model.lattice_cells (physics/lattice.hpp)
 static_assert(limit("model.lattice_cells").max == kMaxLatticeCells);
 
+/// A scene its model's engine cannot run (scenes/README.md, "Engine limits": ODE's subnormal
+/// dt, MuJoCo's mjMINVAL): bad input like every other InputError (what() names the file, line
+/// or --set, and the key), and the one refusal a sweep records as its point's reason instead
+/// of refusing the whole sweep (jobs/sweep.hpp).
+class EngineRefusal : public InputError {
+ public:
+  EngineRefusal(const InputError& error, std::string key, std::string reason)
+      : InputError(error), refused_key_(std::move(key)), reason_(std::move(reason)) {}
+  /// The key refused ("time.dt", "book.mass", …) and why, without the file or line.
+  const std::string& refused_key() const { return refused_key_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string refused_key_, reason_;
+};
+
 /// Reads and validates `path`, applying `overrides` ("key=value", value in TOML syntax) on
 /// top of the file. Throws InputError on any bad input: unreadable or oversized file, TOML
 /// syntax, unknown key, wrong type, out-of-range value, missing texture file, a mesh file
-/// that is missing or not a closed mesh.
+/// that is missing or not a closed mesh; EngineRefusal (an InputError) for a value the
+/// model's engine cannot run.
 Scene parse_scene(const std::filesystem::path& path,
                   const std::vector<std::string>& overrides = {});
 

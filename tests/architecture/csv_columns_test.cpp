@@ -41,6 +41,9 @@ const std::string kSweepSteady =
     "jobs/csv_columns_test.cpp: CsvColumns.SweepRowsOfASteadySpinHoldTheEulerLagAndNothingElse";
 const std::string kSweepDiverging =
     "jobs/csv_columns_test.cpp: CsvColumns.SweepRowsOfADivergingRunDivergeAtTheClosedFormStep";
+const std::string kSweepRefused =
+    "jobs/csv_columns_test.cpp: "
+    "CsvColumns.SweepRowsOfPointsTheEngineRefusesSayWhyAndMeasureNothing";
 const std::string kOrientation =
     "analysis/orientation_error_test.cpp: "
     "OrientationErrorMeasure.EulerStepsOfASteadySpinLagByTheClosedFormAngle";
@@ -61,13 +64,13 @@ const std::vector<Covered> kMeasures{
 };
 
 /// The sweep CSV's columns after the varied keys (each key's cells are the grid values,
-/// checked in every sweep test): the measures, then their exact columns.
+/// checked in every sweep test): the measures, their exact columns, then refused.
 const std::vector<Covered> kSweepColumns{
     {"first_flip", kSweepFlipping},       {"flip_period", kSweepFlipping},
     {"energy_drift", kSweepFlipping},     {"orientation_error", kSweepSteady},
     {"diverged_at", kSweepDiverging},     {"twist", kSweepTwist},
     {"first_flip_exact", kSweepFlipping}, {"flip_period_exact", kSweepFlipping},
-    {"twist_exact", kSweepTwist},
+    {"twist_exact", kSweepTwist},         {"refused", kSweepRefused},
 };
 
 /// The accuracy CSV. ns_per_step is a measured time: checked finite and positive only.

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -52,7 +54,7 @@ TEST(SweepCommand, WritesOneRowPerPointWithTheVariedValuesThenTheMeasures) {
   ASSERT_EQ(lines.size(), 8u);
   EXPECT_EQ(lines[0],
             "initial.angular_velocity[1],first_flip,flip_period,energy_drift,orientation_error,"
-            "diverged_at,first_flip_exact,flip_period_exact");
+            "diverged_at,first_flip_exact,flip_period_exact,refused");
   EXPECT_EQ(lines[1].rfind("0.0001,", 0), 0u) << lines[1];
   EXPECT_EQ(lines[7].rfind("0.10000000000000001,", 0), 0u) << lines[7];
   EXPECT_TRUE(std::filesystem::file_size(dir / "exact-unstable-x-sweep.png") > 10000);
@@ -75,6 +77,79 @@ TEST(SweepCommand, MergedShardsAreByteIdenticalToOneProcess) {
             read_file(one / "exact-unstable-x-sweep.csv"));
   EXPECT_EQ(read_file(merged / "exact-unstable-x-sweep.png"),
             read_file(one / "exact-unstable-x-sweep.png"));
+}
+
+// A point its engine refuses (scenes/README.md, "Engine limits") is its row's reason, not a
+// dead sweep: MuJoCo over book.mass for a 1e-6 cube, whose moments m·(2e-12)/12 reach MuJoCo's
+// 1e-15 at m = 6e-3, so exactly the two lightest of three points (worked out here from the
+// grid) are refused, each naming the key and saying why; the third ran; the note says how
+// many; shards merge to the same bytes, the reason's comma and all. When every point is
+// refused the sweep is refused whole: exit 2, one line, nothing written.
+TEST(SweepCommand, APointTheEngineRefusesIsItsRowsReasonNotADeadSweep) {
+  const auto one = fresh_dir("sweep_refused_one");
+  const auto scene = one.parent_path() / "refusing.toml";
+  std::ofstream(scene) << "[model]\nkind = \"mujoco\"\n[book]\nsize = [1e-6, 1e-6, 1e-6]\n"
+                          "[time]\nframes = 20\n";
+  const std::string sweep = "sweep " + scene.string() + " --measure energy_drift,diverged_at";
+  const std::string vary = " --vary book.mass=1e-4:1e-2:3:log";  // 1e-4, 1e-3, 1e-2
+  CliResult r = run_bookspin(sweep + vary + " -j 2 -o " + one.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("bookspin: note: the engine refused 2 of the 3 points (first: book.size: "
+                          "MuJoCo needs every principal moment above its mjMINVAL (1e-15)"),
+            std::string::npos)
+      << r.output;
+  const auto lines = lines_of(read_file(one / "refusing-sweep.csv"));
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0], "book.mass,energy_drift,diverged_at,refused");
+  for (int i = 0; i < 3; ++i) {
+    const double mass = std::pow(10.0, -4.0 + i);
+    const bool refused = mass * 2e-12 / 12 <= 1e-15;
+    EXPECT_EQ(refused, i < 2);
+    const std::string& line = lines[static_cast<std::size_t>(i) + 1];
+    if (refused) {
+      // ",,,book.size: … smallest is <I> (a larger or heavier body)": no measure, and the
+      // moment printed is this point's, m·(2e-12)/12.
+      const std::string head =
+          ",,,book.size: MuJoCo needs every principal moment above its mjMINVAL (1e-15); this "
+          "body's smallest is ";
+      const std::string tail = " (a larger or heavier body)";
+      const auto at = line.find(head);
+      ASSERT_NE(at, std::string::npos) << line;
+      ASSERT_GT(line.size(), at + head.size() + tail.size()) << line;
+      EXPECT_EQ(line.substr(line.size() - tail.size()), tail) << line;
+      const std::string moment =
+          line.substr(at + head.size(), line.size() - at - head.size() - tail.size());
+      EXPECT_NEAR(std::stod(moment) / (mass * 2e-12 / 12), 1.0, 1e-12) << moment;
+    } else {
+      EXPECT_EQ(line.back(), ',') << line;  // ran: refused empty
+      EXPECT_NE(line.rfind("0.01,", 0), std::string::npos) << line;
+      EXPECT_EQ(line.find(",,,"), std::string::npos) << line;  // energy_drift measured
+    }
+  }
+  EXPECT_TRUE(std::filesystem::file_size(one / "refusing-sweep.png") > 10000);
+  // Shards 0 and 1 of 2, merged: the same bytes.
+  const auto parts = fresh_dir("sweep_refused_parts");
+  for (int k = 0; k < 2; ++k) {
+    r = run_bookspin(sweep + vary + " -j 1 --shard " + std::to_string(k) + "/2 -o " +
+                     parts.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+  }
+  const auto part = [&](int k) {
+    return (parts / ("refusing-sweep.shard-" + std::to_string(k) + "-of-2.csv")).string();
+  };
+  r = run_bookspin("sweep --merge " + part(1) + " " + part(0) + " -o " + (parts / "m").string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read_file(parts / "m" / "refusing-sweep.csv"), read_file(one / "refusing-sweep.csv"));
+  // Every point refused: the sweep is.
+  const auto none = fresh_dir("sweep_refused_all");
+  r = run_bookspin(sweep + " --vary book.mass=1e-4:1e-3:2:log -o " + none.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("refusing.toml:4: book.size: MuJoCo needs every principal moment"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("(at every one of the 2 points)"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_TRUE(std::filesystem::is_empty(none)) << none;
 }
 
 TEST(SweepCommand, MergeRejectsAMissingShardOrADuplicateNamingTheFile) {

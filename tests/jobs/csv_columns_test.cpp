@@ -87,10 +87,13 @@ void expect_row(const Csv& csv, std::size_t r, const ExpectedRow& expected) {
       case Expected::Kind::text:
         EXPECT_EQ(cell, e.text);
         break;
-      case Expected::Kind::number:
+      case Expected::Kind::number: {
         ASSERT_FALSE(cell.empty());
-        EXPECT_NEAR(std::stod(cell), e.value, e.tolerance);
+        char* end = nullptr;  // strtod, not stod: a subnormal cell is a number here
+        EXPECT_NEAR(std::strtod(cell.c_str(), &end), e.value, e.tolerance);
+        EXPECT_EQ(*end, '\0');
         break;
+      }
       case Expected::Kind::positive:
         ASSERT_FALSE(cell.empty());
         EXPECT_GT(std::stod(cell), 0.0);
@@ -243,7 +246,8 @@ TEST(CsvColumns, SweepRowsOfAFlippingRunMatchTheReplayAndTheClosedForm) {
                 {"orientation_error", near(orientation, 1e-6 * orientation + 1e-12)},
                 {"diverged_at", empty()},
                 {"first_flip_exact", relative(exact.first_flip, 1e-10)},
-                {"flip_period_exact", relative(exact.half_period, 1e-10)}});
+                {"flip_period_exact", relative(exact.half_period, 1e-10)},
+                {"refused", empty()}});
   }
 }
 
@@ -277,7 +281,8 @@ TEST(CsvColumns, SweepTwistColumnsOfASymmetricTopAreTheHandFormula) {
     expect_row(csv, r,
                {{"initial.angular_velocity[2]", near(omega3, 1e-15)},
                 {"twist", near(twist, 1e-8)},
-                {"twist_exact", near(twist, 1e-9)}});
+                {"twist_exact", near(twist, 1e-9)},
+                {"refused", empty()}});
   }
 }
 
@@ -295,7 +300,8 @@ ExpectedRow steady_spin_row(double omega, const Expected& orientation_error,
           {"twist", empty()},
           {"first_flip_exact", empty()},
           {"flip_period_exact", empty()},
-          {"twist_exact", empty()}};
+          {"twist_exact", empty()},
+          {"refused", empty()}};
 }
 
 /// The book spun about z by the matrix model with Euler steps of `dt`, with or without the
@@ -344,6 +350,45 @@ TEST(CsvColumns, SweepRowsOfADivergingRunDivergeAtTheClosedFormStep) {
     EXPECT_EQ(n, r == 0 ? 125 : 40);  // the closed form checked once by hand: 2^20 ≥ 1e6 > 2^19
     expect_row(csv, r, steady_spin_row(h, empty(), near(n * 1.0, 0.0)));
   }
+}
+
+// A sweep of ODE over time.dt from a subnormal step up (scenes/README.md, "Engine limits"):
+// exactly the points below the smallest normal double, found here from the grid's own values,
+// are refused, their row saying so with the key and ODE's reason in full (the reason's commas
+// quoted, read back whole); every other point ran (a 4-frame spin about z does not diverge).
+TEST(CsvColumns, SweepRowsOfPointsTheEngineRefusesSayWhyAndMeasureNothing) {
+  test::ScratchDir dir;
+  const std::string toml =
+      "[model]\nkind = \"ode\"\n[initial]\njiggle = 0\nangular_velocity = [0, 0, 1]\n"
+      "[time]\ndt = 0.01\nsteps_per_frame = 1\nframes = 4\n";
+  const Csv csv = sweep(dir.path(), "ode-dt", toml, "time.dt=1e-322:1e-300:4:log", "diverged_at");
+  ASSERT_EQ(csv.rows.size(), 4u);
+  int refused = 0;
+  for (std::size_t r = 0; r < 4; ++r) {
+    // Log spaced from the start as read: 1e-322 is the subnormal 9.88e-323.
+    const double start = std::log10(1e-322);
+    const double dt = std::pow(10.0, start + (-300.0 - start) * static_cast<double>(r) / 3.0);
+    const bool subnormal = dt < std::numeric_limits<double>::min();
+    refused += subnormal;
+    const std::string& cell = csv.rows[r].back();
+    if (subnormal) {
+      // "time.dt: ODE cannot step by a subnormal dt (below DBL_MIN, got <dt>): …", <dt> the
+      // point's value (DBL_MIN to the 17 digits that tell it from its neighbours).
+      const std::string head =
+          "time.dt: ODE cannot step by a subnormal dt (below 2.2250738585072014e-308, got ";
+      const std::string tail = "): its quaternion update cannot normalize";
+      ASSERT_EQ(cell.rfind(head, 0), 0u) << cell;
+      ASSERT_GT(cell.size(), head.size() + tail.size()) << cell;
+      EXPECT_EQ(cell.substr(cell.size() - tail.size()), tail) << cell;
+      const std::string got = cell.substr(head.size(), cell.size() - head.size() - tail.size());
+      EXPECT_NEAR(std::strtod(got.c_str(), nullptr) / dt, 1.0, 1e-9) << got;  // stod: ERANGE
+    }
+    expect_row(csv, r,
+               {{"time.dt", near(dt, 1e-9 * dt + 1e-322)},  // a few subnormal steps
+                {"diverged_at", empty()},
+                {"refused", subnormal ? text(cell) : empty()}});
+  }
+  EXPECT_EQ(refused, 2);  // 9.9e-323 and 2.1e-315 refused; 4.6e-308 and 1e-300 ran
 }
 
 /// "model integrator", as the accuracy table and the energy CSV name a method.

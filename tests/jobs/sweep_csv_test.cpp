@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <stdexcept>
 
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
@@ -21,13 +22,13 @@ TEST(SweepMeasures, ParsesNamesAndRejectsUnknownOrRepeated) {
   EXPECT_THROW(parse_measures("first_flip,first_flip"), InputError);
   EXPECT_THROW(parse_measures(""), InputError);
 }
-TEST(SweepCsv, TheColumnsAreTheKeysTheMeasuresThenTheirExactColumns) {
+TEST(SweepCsv, TheColumnsAreTheKeysTheMeasuresTheirExactColumnsThenRefused) {
   const std::vector<VaryRange> ranges{parse_vary("time.dt=0.01:0.02:2"),
                                       parse_vary("initial.angular_velocity[1]=1e-3:1e-2:2:log")};
   EXPECT_EQ(sweep_csv_header(ranges, parse_measures("energy_drift,flip_period,first_flip")),
             (std::vector<std::string>{"time.dt", "initial.angular_velocity[1]", "energy_drift",
                                       "flip_period", "first_flip", "flip_period_exact",
-                                      "first_flip_exact"}));
+                                      "first_flip_exact", "refused"}));
 }
 
 TEST(SweepCsv, ARowIsTheFullPrecisionValuesWithEmptyCellsForWhatARunDidNotReach) {
@@ -38,7 +39,14 @@ TEST(SweepCsv, ARowIsTheFullPrecisionValuesWithEmptyCellsForWhatARunDidNotReach)
   const MeasureList measures = parse_measures("first_flip,flip_period,energy_drift");
   EXPECT_EQ(
       sweep_row_cells({0.25, 3.0}, measures, m),
-      (std::vector<std::string>{"0.25", "3", "12.5", "", "0.002", "0.10000000000000001", ""}));
+      (std::vector<std::string>{"0.25", "3", "12.5", "", "0.002", "0.10000000000000001", "", ""}));
+}
+
+TEST(SweepCsv, ARefusedPointHasItsValuesNoMeasureAndItsReasonLast) {
+  const MeasureList measures = parse_measures("first_flip,flip_period,energy_drift");
+  EXPECT_EQ(sweep_refused_cells({1e-320, 3.0}, measures, "time.dt: a reason, with a comma"),
+            (std::vector<std::string>{"9.9998886718268301e-321", "3", "", "", "", "", "",
+                                      "time.dt: a reason, with a comma"}));
 }
 
 TEST(SweepCsv, TheFileIsTheHeaderThenOneLinePerRowWithoutTheGridIndex) {
@@ -56,6 +64,22 @@ TEST(SweepCsv, ALineSplitsBackIntoItsCellsEmptyOnesIncluded) {
   EXPECT_EQ(csv_row(after("7", cells)), "7,,1,,2.5,");
   EXPECT_EQ(csv_cells(",1,,2.5,"), cells);
   EXPECT_EQ(csv_cells("x"), std::vector<std::string>{"x"});
+}
+
+TEST(SweepCsv, AQuotedCellReadsBackWithItsCommasAndQuotes) {
+  // RFC 4180 by hand: a field with a comma or a quote is quoted, its quotes doubled.
+  const std::vector<std::string> cells{
+      "3", "", "time.dt: ODE (below 2.2e-308, got 1e-320)", "say \"no\"", ",", "\"\""};
+  const std::string line =
+      "3,,\"time.dt: ODE (below 2.2e-308, got 1e-320)\",\"say \"\"no\"\"\","
+      "\",\",\"\"\"\"\"\"";
+  EXPECT_EQ(csv_row(cells), line);
+  EXPECT_EQ(csv_cells(line), cells);
+  EXPECT_EQ(csv_cells("\"\""), std::vector<std::string>{""});
+  EXPECT_EQ(csv_cells("a,\"b\""), (std::vector<std::string>{"a", "b"}));
+  EXPECT_THROW(csv_cells("1,\"open"), std::invalid_argument);
+  EXPECT_THROW(csv_cells("1,\"closed\"x,2"), std::invalid_argument);
+  EXPECT_THROW(csv_cells("\"a\"\""), std::invalid_argument);  // a doubled quote, never closed
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// A 2 × 2 sweep's table, rows 0 … 3 with their cells; first_flip empty where a run did not
-/// flip.
+/// flip; point 1 refused by its engine, with a reason that holds a comma and quotes.
 SweepTable two_by_two() {
   SweepTable table;
   table.scene_name = "exact-unstable-x";
@@ -27,10 +27,10 @@ SweepTable two_by_two() {
                   parse_vary("initial.angular_velocity[1]=1e-3:1e-2:2:log")};
   table.measures = parse_measures("first_flip");
   table.header = sweep_csv_header(table.ranges, table.measures);
-  table.rows = {{0, {"0.01", "0.001", "40.5", "40.25"}},
-                {1, {"0.01", "0.01", "", "20"}},
-                {2, {"0.02", "0.001", "41", "40.25"}},
-                {3, {"0.02", "0.01", "19.5", "20"}}};
+  table.rows = {{0, {"0.01", "0.001", "40.5", "40.25", ""}},
+                {1, {"0.01", "0.01", "", "", "time.dt: refused, \"why\""}},
+                {2, {"0.02", "0.001", "41", "40.25", ""}},
+                {3, {"0.02", "0.01", "19.5", "20", ""}}};
   return table;
 }
 
@@ -75,9 +75,10 @@ TEST(SweepShard, TheFileRecordsTheSweepThenTheGridIndexBeforeEachRow) {
       "build=[0-9a-f]{64} points=4 vary=time\\.dt=0\\.01:0\\.02:2 "
       "vary=initial\\.angular_velocity\\[1\\]=0\\.001:0\\.01:2:log measure=first_flip");
   EXPECT_TRUE(std::regex_match(lines[0], first)) << lines[0];
-  EXPECT_EQ(lines[1], "grid_index,time.dt,initial.angular_velocity[1],first_flip,first_flip_exact");
-  EXPECT_EQ(lines[2], "1,0.01,0.01,,20");
-  EXPECT_EQ(lines[3], "3,0.02,0.01,19.5,20");
+  EXPECT_EQ(lines[1],
+            "grid_index,time.dt,initial.angular_velocity[1],first_flip,first_flip_exact,refused");
+  EXPECT_EQ(lines[2], "1,0.01,0.01,,,\"time.dt: refused, \"\"why\"\"\"");
+  EXPECT_EQ(lines[3], "3,0.02,0.01,19.5,20,");
 }
 
 TEST(SweepShard, ShardsReadBackInAnyOrderAsTheWholeTableAndCrlfReadsAlike) {
@@ -111,6 +112,38 @@ TEST(SweepShard, AMissingShardIsNamedWhereItWouldBe) {
                  "/nowhere/exact-unstable-x.1-2: grid point 1 of 4 is missing (shard not given)");
   }
   EXPECT_THROW(read_sweep_shards({}, nowhere()), InputError);
+}
+
+/// The message of reading shard `b` after editing its line 3 to `row`, beside shard 0.
+std::string edited_row_error(const fs::path& dir, const std::string& row) {
+  const fs::path a = dir / "a.csv", b = dir / "b.csv";
+  output::write_text_file(a, sweep_shard_text(shard_of(two_by_two(), 0, 2), base_scene(), 4, 0, 2));
+  std::string text = sweep_shard_text(shard_of(two_by_two(), 1, 2), base_scene(), 4, 1, 2);
+  const std::size_t third = text.find('\n', text.find('\n') + 1) + 1;
+  text.replace(third, text.find('\n', third) - third, row);
+  output::write_text_file(b, text);
+  try {
+    read_sweep_shards({a, b}, nowhere());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(SweepShard, ARefusedRowWithAMeasureOrAQuoteNotClosedIsNamedByLine) {
+  const test::ScratchDir dir;
+  const std::string b3 = (dir.path() / "b.csv").string() + ":3: ";
+  EXPECT_EQ(edited_row_error(dir.path(), "1,0.01,0.01,20.5,,\"time.dt: refused\""),
+            b3 + "first_flip has a value in a refused point's row");
+  EXPECT_EQ(edited_row_error(dir.path(), "1,0.01,0.01,,20,\"time.dt: refused\""),
+            b3 + "first_flip_exact has a value in a refused point's row");
+  EXPECT_EQ(edited_row_error(dir.path(), "1,0.01,0.01,,,\"time.dt: refused"),
+            b3 + "a quoted cell is not closed");
+  EXPECT_EQ(edited_row_error(dir.path(), "1,0.01,0.01,,,\"time.dt\": refused"),
+            b3 + "text after a quoted cell's closing quote");
+  // The row as written reads back.
+  EXPECT_EQ(edited_row_error(dir.path(), "1,0.01,0.01,,,\"time.dt: refused, \"\"why\"\"\""),
+            "no error");
 }
 
 }  // namespace

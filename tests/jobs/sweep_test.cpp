@@ -200,12 +200,13 @@ TEST(SweepRun, FlipPeriodOfEveryPointMatchesTheClosedFormOnALogGrid) {
     std::getline(csv, line);
     ASSERT_EQ(line,
               "initial.angular_velocity[1],flip_period,first_flip,flip_period_exact,"
-              "first_flip_exact");
+              "first_flip_exact,refused");
     int rows = 0;
     double previous_first = 1e300;
     while (std::getline(csv, line)) {
       const auto c = cells_of(line);
-      ASSERT_EQ(c.size(), 5u) << line;
+      ASSERT_EQ(c.size(), 6u) << line;
+      EXPECT_EQ(c[5], "") << line;  // no point refused
       const double period = std::stod(c[1]), exact = std::stod(c[3]);
       EXPECT_NEAR(period / exact, 1.0, 1e-6) << kind << " " << line;
       EXPECT_LT(std::stod(c[2]), previous_first) << line;  // closer to the axis: later flip
