@@ -32,6 +32,12 @@ TEST(BoundedQueue, ProducerBlocksAtCapacityUntilAConsumerPops) {
       ++pushed;
     }
   });
+  // The first two pushes land however loaded the machine is (up to 30 s); then, 50 ms on,
+  // the third still waits for room. A queue that did not block would have taken it at once.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (pushed.load() < 2 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(pushed.load(), 2);  // (no ASSERT: the pop below lets the producer finish)
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
   EXPECT_EQ(pushed.load(), 2);  // third push waits for room
   EXPECT_EQ(queue.size(), 2u);
