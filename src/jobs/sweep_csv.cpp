@@ -67,14 +67,9 @@ std::vector<std::string> sweep_row_cells(const std::vector<double>& point,
 std::vector<std::string> sweep_refused_cells(const std::vector<double>& point,
                                              const MeasureList& measures,
                                              const std::string& reason) {
-  std::vector<std::string> cells;
-  for (double v : point) cells.push_back(finite_text(v, "sweep grid value", NumberStyle::digits17));
-  for (const analysis::Measure* measure : measures) {
-    cells.emplace_back();
-    if (measure->exact) cells.emplace_back();
-  }
   BOOKSPIN_ASSERT(!reason.empty());
-  cells.push_back(reason);
+  std::vector<std::string> cells = sweep_row_cells(point, measures, analysis::RunMeasures{});
+  cells.back() = reason;  // every measure empty: nothing ran
   return cells;
 }
 
