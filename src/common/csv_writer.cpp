@@ -1,5 +1,7 @@
 #include "common/csv_writer.hpp"
 
+#include <stdexcept>
+
 #include "common/errors.hpp"
 
 namespace bookspin {
@@ -16,6 +18,34 @@ std::string csv_row(const std::vector<std::string>& cells) {
   for (std::size_t i = 0; i < cells.size(); ++i)
     line.append(i ? "," : "").append(csv_field(cells[i]));
   return line;
+}
+
+std::vector<std::string> csv_cells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == ',') {
+      cells.emplace_back();
+    } else if (c == '"' && cells.back().empty() && (i == 0 || line[i - 1] == ',')) {
+      // A quoted cell: up to the quote not doubled, which must end the cell.
+      for (++i;; ++i) {
+        if (i >= line.size()) throw std::invalid_argument("a quoted cell is not closed");
+        if (line[i] != '"') {
+          cells.back() += line[i];
+        } else if (i + 1 < line.size() && line[i + 1] == '"') {
+          cells.back() += '"';
+          ++i;
+        } else {
+          break;
+        }
+      }
+      if (i + 1 < line.size() && line[i + 1] != ',')
+        throw std::invalid_argument("text after a quoted cell's closing quote");
+    } else {
+      cells.back() += c;
+    }
+  }
+  return cells;
 }
 
 std::string csv_text(const CsvTable& table, std::string_view what) {

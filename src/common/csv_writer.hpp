@@ -45,6 +45,11 @@ std::string csv_field(const std::string& text);
 /// written line by line (the diagnostics CSV, a sweep's shard).
 std::string csv_row(const std::vector<std::string>& cells);
 
+/// A CSV line's cells: the inverse of csv_row (RFC 4180 on one line: a cell in double quotes
+/// may hold commas and doubled quotes, as a sweep's `refused` reason does). Throws
+/// std::invalid_argument for a quote that is not closed, or text after a closing quote.
+std::vector<std::string> csv_cells(const std::string& line);
+
 /// The header line, then one line per row, each ending in '\n'. Throws InternalError
 /// "non-finite WHAT column NAME in an output: nan" for a NaN or infinite number, and for a row
 /// whose cells do not match the columns.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <stdexcept>
 #include <string_view>
 
 #include "common/csv_writer.hpp"
@@ -77,34 +76,6 @@ std::vector<std::string> after(const std::string& first, const std::vector<std::
   std::vector<std::string> line{first};
   line.insert(line.end(), cells.begin(), cells.end());
   return line;
-}
-
-std::vector<std::string> csv_cells(const std::string& line) {
-  std::vector<std::string> cells(1);
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (c == ',') {
-      cells.emplace_back();
-    } else if (c == '"' && cells.back().empty() && (i == 0 || line[i - 1] == ',')) {
-      // A quoted cell: up to the quote not doubled, which must end the cell.
-      for (++i;; ++i) {
-        if (i >= line.size()) throw std::invalid_argument("a quoted cell is not closed");
-        if (line[i] != '"') {
-          cells.back() += line[i];
-        } else if (i + 1 < line.size() && line[i + 1] == '"') {
-          cells.back() += '"';
-          ++i;
-        } else {
-          break;
-        }
-      }
-      if (i + 1 < line.size() && line[i + 1] != ',')
-        throw std::invalid_argument("text after a quoted cell's closing quote");
-    } else {
-      cells.back() += c;
-    }
-  }
-  return cells;
 }
 
 void write_sweep_csv(const SweepTable& table, std::ostream& out) {

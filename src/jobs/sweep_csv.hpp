@@ -60,11 +60,6 @@ std::vector<std::string> sweep_refused_cells(const std::vector<double>& point,
 /// csv_row writes it).
 std::vector<std::string> after(const std::string& first, const std::vector<std::string>& cells);
 
-/// A CSV line's cells: the inverse of csv_row (RFC 4180 on one line: a cell in double quotes
-/// may hold commas and doubled quotes, as a `refused` reason does). Throws
-/// std::invalid_argument for a quote that is not closed, or text after a closing quote.
-std::vector<std::string> csv_cells(const std::string& line);
-
 /// Writes the full CSV (header, then one line per row without the grid index) to `out`.
 void write_sweep_csv(const SweepTable& table, std::ostream& out);
 

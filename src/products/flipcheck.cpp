@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "cache/make_cached.hpp"
+#include "common/csv_writer.hpp"
 #include "common/errors.hpp"
+#include "common/text_file.hpp"
 #include "jobs/motion_csv.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
@@ -260,48 +263,70 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
     files[best].push_back(file);
     names[best].push_back(name);
   }
-  std::vector<LeagueColumn> columns;
-  CsvTable table;
-  for (std::size_t i = 0; i < job.scenes.size(); ++i) {
-    stop_if_asked(job.stop, "flipcheck league");
-    const scene::Scene& scene = job.scenes[i];
-    const analysis::Scenario scenario = analysis::scenario_of(scene);
-    LeagueColumn col{scene.name, scene.title,
-                     judge_all(scene, scenario, files[i], names[i], job.methods, job.stop)};
-    CsvTable part = analysis::judgement_table(scenario, col.judged);
-    table.columns = part.columns;
-    for (auto& row : part.rows) table.rows.push_back(std::move(row));
-    columns.push_back(std::move(col));
+  // Up to date: the same scenarios (each its canonical form, input files and bookspin build:
+  // a scene's own head), methods and motion files (each name and SHA-256), so that an
+  // unchanged league is not judged again.
+  JsonArray scenario_heads, method_labels;
+  for (const scene::Scene& scene : job.scenes) {
+    const cache::CachedOutputs of_scene{scene.name, {},          "flipcheck scenario",
+                                        {},         job.out_dir, &scene};
+    scenario_heads.push_back({output::sha256_text(cache::cached_head(of_scene))});
   }
-  const std::string csv = csv_text(table, "flipcheck league CSV");
-  const std::string html = league_html(columns);
-
+  for (const analysis::Method& m : job.methods) method_labels.push_back({m.label});
+  const cache::CachedOutputs cached{
+      layout.html.filename().string(),
+      layout.manifest,
+      "flipcheck league",
+      {{"scenarios", {std::move(scenario_heads)}}, {"methods", {std::move(method_labels)}}},
+      job.out_dir,
+      nullptr,
+      /*all_or_nothing=*/true,
+      job.motions};
   FlipcheckLeagueResult result;
-  std::map<std::string, bool> passes;
-  for (const LeagueColumn& col : columns)
-    for (const auto& j : col.judged) {
-      const auto [it, fresh] = passes.emplace(j.name, true);
-      it->second = it->second && j.result.pass();
-    }
-  result.motions = static_cast<int>(passes.size());
-  for (const auto& [name, pass] : passes) result.passed += pass ? 1 : 0;
-  // Up to date: the same table and page (as the gallery's), from whatever scenes and files.
-  const cache::CachedOutputs cached{layout.html.filename().string(),
-                                    layout.manifest,
-                                    "flipcheck league",
-                                    {{"tables_sha256", {output::sha256_text(csv + html)}}},
-                                    job.out_dir,
-                                    nullptr,
-                                    /*all_or_nothing=*/true};
+  std::string csv;
   result.outcome = cache::make_cached(cached, job.freshness, [&] {
+    std::vector<LeagueColumn> columns;
+    CsvTable table;
+    for (std::size_t i = 0; i < job.scenes.size(); ++i) {
+      stop_if_asked(job.stop, "flipcheck league");
+      const scene::Scene& scene = job.scenes[i];
+      const analysis::Scenario scenario = analysis::scenario_of(scene);
+      LeagueColumn col{scene.name, scene.title,
+                       judge_all(scene, scenario, files[i], names[i], job.methods, job.stop)};
+      CsvTable part = analysis::judgement_table(scenario, col.judged);
+      table.columns = part.columns;
+      for (auto& row : part.rows) table.rows.push_back(std::move(row));
+      columns.push_back(std::move(col));
+    }
+    csv = csv_text(table, "flipcheck league CSV");
+    const std::string html = league_html(columns);
     stop_if_asked(job.stop, "flipcheck league write");
     output::prepare_output_dir(job.out_dir);
-    output::StagedFiles files;
-    files.text(layout.csv, csv);
-    files.text(layout.html, html);
-    files.commit();
+    output::StagedFiles staged;
+    staged.text(layout.csv, csv);
+    staged.text(layout.html, html);
+    staged.commit();
     return cache::Made{{layout.csv, layout.html}};
   });
+  if (result.outcome == cache::Outcome::up_to_date)
+    csv = read_text_file(layout.csv, "the league's CSV");
+  // The counts from the table's CSV (made now or up to date): its motion and pass columns.
+  std::map<std::string, bool> passes;
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);  // the header: scenario, motion, pass, …
+  while (std::getline(lines, line)) {
+    std::vector<std::string> cells;
+    try {
+      cells = csv_cells(line);
+    } catch (const std::invalid_argument&) {
+    }
+    if (cells.size() < 3) continue;  // not a row as written (edited): not counted
+    const auto [it, fresh] = passes.emplace(cells[1], true);
+    it->second = it->second && cells[2] == "pass";
+  }
+  result.motions = static_cast<int>(passes.size());
+  for (const auto& [name, pass] : passes) result.passed += pass ? 1 : 0;
   return result;
 }
 

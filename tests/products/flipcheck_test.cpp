@@ -190,7 +190,25 @@ TEST(Flipcheck, TheLeagueGivesEachFileToItsScenarioARowPerMotion) {
       << html;
   EXPECT_EQ(output::read_manifest(layout.manifest).outputs,
             (std::vector<std::string>{"flipcheck-league.csv", "flipcheck-league.html"}));
-  EXPECT_EQ(make_flipcheck_league(job).outcome, cache::Outcome::up_to_date);
+  // Up to date, the league judges nothing (a stop poll that always answers SIGINT is never
+  // asked) and counts the table it keeps; another method, or a motion file changed, remakes it.
+  {
+    FlipcheckLeagueJob again = job;
+    int asked = 0;
+    again.stop = [&asked](std::string_view) { return ++asked, 2; };
+    const FlipcheckLeagueResult kept = make_flipcheck_league(again);
+    EXPECT_EQ(kept.outcome, cache::Outcome::up_to_date);
+    EXPECT_EQ(asked, 0);
+    EXPECT_EQ(kept.motions, 2);
+    EXPECT_EQ(kept.passed, 1);
+    again.stop = {};
+    again.methods = analysis::parse_methods("rigid-quaternion:rk4");
+    EXPECT_EQ(make_flipcheck_league(again).outcome, cache::Outcome::made);
+    EXPECT_EQ(make_flipcheck_league(job).outcome, cache::Outcome::made);
+    EXPECT_EQ(make_flipcheck_league(job).outcome, cache::Outcome::up_to_date);
+    std::ofstream(job.motions[0], std::ios::app) << "\n";  // a blank line: the same motion
+    EXPECT_EQ(make_flipcheck_league(job).outcome, cache::Outcome::made);
+  }
 
   job.motions.push_back(dir / "exact" / "mujoco-test-box-exact.csv");
   job.out_dir = dir / "refused";
