@@ -88,14 +88,17 @@ Eigen::Matrix3d ExactInFrame::orientation(double t) const {
 
 ReplayModel::ReplayModel(const Body& body, const Eigen::Matrix3d& placement,
                          const Eigen::Matrix3d& inertia,
-                         std::shared_ptr<const PrescribedMotion> motion)
+                         std::shared_ptr<const PrescribedMotion> motion,
+                         const std::optional<Eigen::Matrix3d>& omega_axes)
     : body_(body),
       cage_corners_(body.cage.body_corners()),
       placement_(placement),
       inertia_(inertia),
+      omega_axes_(omega_axes.value_or(placement.transpose())),
       motion_(std::move(motion)) {
   require_rotation(placement, "ReplayModel: placement");
-  if (!inertia.allFinite()) throw std::invalid_argument("ReplayModel: inertia is not finite");
+  if (!inertia.allFinite() || !omega_axes_.allFinite())
+    throw std::invalid_argument("ReplayModel: inertia or omega_axes is not finite");
   if (!motion_) throw std::invalid_argument("ReplayModel: no motion");
   update();
 }
@@ -130,7 +133,7 @@ Diagnostics ReplayModel::diagnostics() const {
   // The axis cosines, strain and orthogonality of the drawn body's pose; ω and the energy are
   // the motion's own, with the motion frame's inertia.
   Diagnostics d = rigid_diagnostics(body_, orientation(), L, t_);
-  d.omega_body = placement_.transpose() * omega_;
+  d.omega_body = omega_axes_ * omega_;
   d.energy_kinetic = 0.5 * omega_.dot(inertia_ * omega_);
   d.energy_potential = 0.0;
   d.energy_total = d.energy_kinetic;

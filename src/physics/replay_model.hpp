@@ -5,6 +5,7 @@
 // either for a drawn body, so that the clip draws and measures it as any other model.
 #include <Eigen/Dense>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "physics/body.hpp"
@@ -79,7 +80,9 @@ class ExactInFrame final : public PrescribedMotion {
 /// rotation), so the pose it hands on is R_body(t) = R(t) · placement. `inertia` is the
 /// inertia tensor in the motion frame (any scale): L = R(t) · inertia · ω(t) (world) and the
 /// energy ½ ω·inertia·ω, which the motion need not conserve (a measured ω does not, exactly).
-/// Diagnostics::omega_body is placementᵀ ω(t), the drawn body's frame like its corners.
+/// Diagnostics::omega_body is placementᵀ ω(t), the drawn body's frame like its corners, or
+/// with `omega_axes` given, omega_axes · ω(t) (e.g. ω about the fitted principal axes in the
+/// drawn body's axes of the same moment order, so that the panel's flip axis shows the flips).
 /// reset() returns to t = 0 (InitialState is not used: the motion is given); step(dt) only
 /// advances t, n steps of one dt giving t = n·dt as ExactModel does (§10.6).
 class ReplayModel final : public Simulator {
@@ -87,7 +90,8 @@ class ReplayModel final : public Simulator {
   /// Throws std::invalid_argument when `placement` is not a rotation (to 1e-9), `inertia` is
   /// not finite or `motion` is null.
   ReplayModel(const Body& body, const Eigen::Matrix3d& placement, const Eigen::Matrix3d& inertia,
-              std::shared_ptr<const PrescribedMotion> motion);
+              std::shared_ptr<const PrescribedMotion> motion,
+              const std::optional<Eigen::Matrix3d>& omega_axes = std::nullopt);
   void reset(const InitialState& initial) override;
   void step(double dt) override;
   Corners corners() const override;
@@ -100,7 +104,7 @@ class ReplayModel final : public Simulator {
   void update();
   Body body_;
   Corners cage_corners_;  ///< body frame (3×8)
-  Eigen::Matrix3d placement_, inertia_;
+  Eigen::Matrix3d placement_, inertia_, omega_axes_;
   std::shared_ptr<const PrescribedMotion> motion_;
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();  ///< motion frame → world
   Eigen::Vector3d omega_ = Eigen::Vector3d::Zero();  ///< motion frame

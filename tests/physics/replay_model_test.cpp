@@ -117,7 +117,8 @@ TEST(OmegaReplay, ASampledExactTossMatchesTheExactOrientation) {
   for (double s = 0.0; s <= t.back(); s += 1e-3)
     omega_ddot = std::max(
         omega_ddot, ((exact.omega_dot_body(s + d) - exact.omega_dot_body(s - d)) / (2 * d)).norm());
-  const double bound = t.back() * h_max * h_max / 12.0 * omega_ddot + h_max * h_max * h_max * omega_ddot;
+  const double bound =
+      t.back() * h_max * h_max / 12.0 * omega_ddot + h_max * h_max * h_max * omega_ddot;
   ASSERT_GT(exact.period(), 0.5);  // a flipping motion, not a steady spin
   ASSERT_LT(bound, 0.1);
   const OmegaReplay replay(t, omega);
@@ -184,8 +185,8 @@ TEST(ReplayModel, DrawsTheBodyPlacedInTheMotionFrame) {
   const Eigen::Vector3d w(0.5, 12.0, -1.0);
   auto motion = std::make_shared<OmegaReplay>(std::vector<double>{0.0, 0.5, 2.0},
                                               std::vector<Eigen::Vector3d>{w, w, w});
-  const Eigen::Matrix3d inertia = askew_axes() * Eigen::Vector3d(0.2, 0.8, 1.0).asDiagonal() *
-                                  askew_axes().transpose();
+  const Eigen::Matrix3d inertia =
+      askew_axes() * Eigen::Vector3d(0.2, 0.8, 1.0).asDiagonal() * askew_axes().transpose();
   ReplayModel model(body, placement, inertia, motion);
   model.reset(InitialState{});
   for (int i = 0; i < 30; ++i) model.step(1.0 / 120);
