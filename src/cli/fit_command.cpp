@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "common/errors.hpp"
 #include "products/fit.hpp"
@@ -78,6 +79,7 @@ int fit_command(const FitOptions& options) {
     job.render = render;
   }
   job.freshness = {options.force, options.verify, remake_note};
+  job.stop_signal = stop_poll();
   std::vector<std::string> summary;
   const cache::Outcome outcome = products::make_fit(job, &summary);
   if (outcome == cache::Outcome::up_to_date)

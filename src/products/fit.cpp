@@ -42,6 +42,7 @@ void render_toss_clips(const FitJob& job, const scene::Scene& base,
     request.tile_csvs = {folder / (name + "-exact-fit.csv")};
     request.tile_models = toss_tile_models(recording, fit, toss, request.scene.body);
     request.write_png = false;
+    request.stop_signal = job.stop_signal;
     clip::render_clip(request);
     for (std::size_t f = 0; f < formats.size(); ++f)
       files.adopt(layout.videos[k * formats.size() + f], folder / (name + "." + formats[f]));

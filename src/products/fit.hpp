@@ -11,6 +11,7 @@
 
 #include "cache/freshness.hpp"
 #include "common/csv_writer.hpp"
+#include "common/stop.hpp"
 #include "fit/fit.hpp"
 #include "products/fit_clip.hpp"
 
@@ -41,6 +42,9 @@ struct FitJob {
   std::optional<Eigen::Vector3d> moments;         ///< --moments: fixed
   int width = 1400, height = 700;                 ///< each chart's pixels
   std::optional<FitRender> render;                ///< --render: a clip of each toss
+  /// Polled before each clip frame and while its encoders finish (clip::ClipRequest): a signal
+  /// throws Interrupted, nothing put in place.
+  StopPoll stop_signal;
   cache::Freshness freshness;
 };
 
@@ -61,7 +65,8 @@ std::vector<std::string> fit_summary(const fit::FitResult& fit);
 /// rest, all or nothing. `summary`, when given, receives fit_summary's lines of a made fit.
 /// Throws InputError (the recording, a toss, no flight; with `render` a bad scene file or
 /// --slow-motion, and a fit whose every toss is stable without --moments: no moments to
-/// show), OutputError, and what clip::render_clip throws (render::RenderError,
+/// show), OutputError, Interrupted (a signal while the clips are made), and what
+/// clip::render_clip throws (render::RenderError,
 /// video::EncoderError): then nothing is put in place and the earlier outputs and manifest
 /// stay.
 cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary = nullptr);
