@@ -1,13 +1,12 @@
 // SIGINT, SIGTERM and SIGHUP stop every command that writes (export, render in its encoders'
-// finishing passes, sweep, accuracy, plot, simulate, explore, gallery, fit --render) within a second, with exit
-// status 130, 143 or 129, the
-// previous outputs and their manifest byte-identical and no temporary left (docs/outputs.md,
-// "Signals"). Each signal comes at a named stage of the run (the command line's test hooks,
-// src/cli/interrupt.hpp): for a long loop the test signals on the line of the stage polled just
-// before the loop starts ("gif palette pass" before the GIF's second pass, "sweep point" before a
-// point's steps, "accuracy runs" before a run's steps), so the time to exit measures how often the
-// loop itself polls; a stage too short to catch in flight is held at its first poll until the
-// signal has arrived.
+// finishing passes, sweep, accuracy, plot, simulate, explore, gallery, fit --render) within a
+// second, with exit status 130, 143 or 129, the previous outputs and their manifest byte-identical
+// and no temporary left (docs/outputs.md, "Signals"). Each signal comes at a named stage of the run
+// (the command line's test hooks, src/cli/interrupt.hpp): for a long loop the test signals on the
+// line of the stage polled just before the loop starts ("gif palette pass" before the GIF's second
+// pass, "sweep point" before a point's steps, "accuracy runs" before a run's steps), so the time to
+// exit measures how often the loop itself polls; a stage too short to catch in flight is held at
+// its first poll until the signal has arrived.
 #include <gtest/gtest.h>
 #include <signal.h>
 
