@@ -1,6 +1,7 @@
 #include "analysis/frame_source.hpp"
 
 #include <sstream>
+#include <stdexcept>
 
 #include "engines/models.hpp"
 #include "scene/model_line.hpp"
@@ -8,7 +9,11 @@
 namespace bookspin::analysis {
 
 FrameSource::FrameSource(const scene::Scene& scene)
-    : scene_(scene), simulator_(engines::make_model(scene.body, scene.model)) {
+    : FrameSource(scene, engines::make_model(scene.body, scene.model)) {}
+
+FrameSource::FrameSource(const scene::Scene& scene, std::unique_ptr<physics::Simulator> simulator)
+    : scene_(scene), simulator_(std::move(simulator)) {
+  if (!simulator_) throw std::invalid_argument("FrameSource: no simulator");
   simulator_->reset(scene.initial);
 }
 

@@ -18,6 +18,10 @@ namespace bookspin::analysis {
 class FrameSource {
  public:
   explicit FrameSource(const scene::Scene& scene);
+  /// The same with a simulator made by the caller instead of the scene's model (a motion
+  /// given rather than simulated: physics::ReplayModel); reset with scene.initial. Throws
+  /// std::invalid_argument for a null simulator.
+  FrameSource(const scene::Scene& scene, std::unique_ptr<physics::Simulator> simulator);
 
   /// Advances to the next frame (the first call yields frame 0). False when the clip is
   /// over or the simulation diverged; `pose` is untouched then.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "common/errors.hpp"
 #include "products/fit.hpp"
@@ -18,8 +19,11 @@ namespace {
 struct FitOptions {
   std::string recording;
   std::string out_dir = "out";
-  std::string tosses;   ///< "a:b,c:d" (s)
-  std::string moments;  ///< "I1,I2,I3"
+  std::string tosses;      ///< "a:b,c:d" (s)
+  std::string moments;     ///< "I1,I2,I3"
+  bool render = false;     ///< --render: a clip of each toss
+  std::string scene_file;  ///< --scene: the clips' body and render keys
+  double slow_motion = 4.0;
   bool force = false;
   bool verify = false;
 };
@@ -44,8 +48,8 @@ std::vector<std::string> split(const std::string& text, char separator) {
   }
 }
 
-/// Fits OUT/<recording>-fit.csv, -fit-body.csv and a chart per toss; prints what was kept,
-/// dropped and found.
+/// Fits OUT/<recording>-fit.csv, -fit-body.csv and a chart per toss (with --render a clip per
+/// toss); prints what was kept, dropped and found.
 int fit_command(const FitOptions& options) {
   products::FitJob job;
   job.recording = options.recording;
@@ -66,7 +70,16 @@ int fit_command(const FitOptions& options) {
     }
     job.moments = m;
   }
+  if (!options.render && !options.scene_file.empty())
+    throw InputError("--scene: only with --render (it gives the clips' body and render keys)");
+  if (options.render) {
+    products::FitRender render;
+    if (!options.scene_file.empty()) render.scene_file = options.scene_file;
+    render.slow_motion = options.slow_motion;
+    job.render = render;
+  }
   job.freshness = {options.force, options.verify, remake_note};
+  job.stop_signal = stop_poll();
   std::vector<std::string> summary;
   const cache::Outcome outcome = products::make_fit(job, &summary);
   if (outcome == cache::Outcome::up_to_date)
@@ -92,6 +105,16 @@ Subcommand add_fit(CLI::App& cli) {
                   "The flights by hand, START:END seconds, comma-separated (default: found)");
   cmd->add_option("--moments", options.moments,
                   "Principal moments I1,I2,I3 (any scale): fixed instead of fitted");
+  cmd->add_flag("--render", options.render,
+                "Also a clip of each toss, OUT/<recording>-toss<N>.mp4: the body turning as the "
+                "phone turned (its measured ω integrated) beside the fitted exact motion");
+  cmd->add_option("--scene", options.scene_file,
+                  "With --render: a scene file whose body and render.* keys the clips take "
+                  "(default: the phone preset)");
+  cmd->add_option("--slow-motion", options.slow_motion,
+                  "With --render: the clips play the flight this many times slower")
+      ->capture_default_str()
+      ->check(CLI::Range(products::kMinSlowMotion, products::kMaxSlowMotion));
   add_freshness_flags(cmd, options.force, options.verify, "OUT/<recording>/fit-manifest.json");
   return {cmd, [stored] { return fit_command(*stored); }};
 }

@@ -97,12 +97,21 @@ class FrameFinisher {
   std::vector<physics::Diagnostics> rows_;
 };
 
-/// The tiles of `scene`: itself, or one per [[compare]] entry (scene::tile_scene).
-Tiles tiles_of(const scene::Scene& scene) {
+/// The tiles of `scene`: itself, or one per [[compare]] entry (scene::tile_scene), each
+/// simulating its scene's model or, given `models`, the caller's.
+Tiles tiles_of(const scene::Scene& scene, const std::vector<TileModel>& models) {
+  std::vector<scene::Scene> scenes;
+  if (scene.compare.empty()) scenes.push_back(scene);
+  for (const auto& tile : scene.compare) scenes.push_back(tile_scene(scene, tile));
+  BOOKSPIN_ASSERT(models.empty() || models.size() == scenes.size());
   Tiles tiles;
-  if (scene.compare.empty()) tiles.push_back(std::make_unique<TileRun>(scene));
-  for (const auto& tile : scene.compare)
-    tiles.push_back(std::make_unique<TileRun>(tile_scene(scene, tile)));
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    if (models.empty())
+      tiles.push_back(std::make_unique<TileRun>(std::move(scenes[i])));
+    else
+      tiles.push_back(
+          std::make_unique<TileRun>(std::move(scenes[i]), models[i].make(), models[i].model_line));
+  }
   return tiles;
 }
 
@@ -115,7 +124,7 @@ std::unique_ptr<Composer> single_composer(const scene::Scene& scene) {
 ClipResult render_clip(const ClipRequest& request) {
   const scene::Scene& scene = request.scene;
   const SinkOptions options = sink_options(request);
-  Tiles tiles = tiles_of(scene);
+  Tiles tiles = tiles_of(scene, request.tile_models);
   BOOKSPIN_ASSERT(request.tile_csvs.size() + 1 == tiles.size());
   const std::unique_ptr<Composer> composer =
       scene.compare.empty() ? single_composer(scene) : comparison_composer(scene);

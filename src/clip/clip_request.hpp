@@ -4,6 +4,7 @@
 // call render_clip().
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,13 @@
 
 namespace bookspin::clip {
 
+/// A tile's simulator made by the caller rather than from its scene's model (a motion given,
+/// not simulated: physics::ReplayModel), and the caption's words for it.
+struct TileModel {
+  std::function<std::unique_ptr<physics::Simulator>()> make;  ///< called once, at the start
+  std::string model_line;  ///< replaces scene::model_line() in the tile's caption
+};
+
 struct ClipRequest {
   scene::Scene scene;  ///< validated; scene.frames is the clip's length
   /// Where the videos, frames and the diagnostics CSV (a comparison's first tile's) go: the
@@ -21,6 +29,9 @@ struct ClipRequest {
   ClipPaths paths;
   /// A comparison: the diagnostics CSVs of its tiles after the first, in tile order.
   std::vector<std::filesystem::path> tile_csvs;
+  /// One per tile (a single scene: one), in tile order, or empty: every tile simulates its
+  /// scene's model (engines::make_model).
+  std::vector<TileModel> tile_models;
   bool write_png = true;     ///< false: MP4 and CSV only
   int png_compression = -1;  ///< deflate level 0–9 for the frames; −1: render.png_compression
   int jobs = 0;              ///< worker threads (PNG, encoder); 0: every core

@@ -15,7 +15,10 @@ namespace {
 /// The caption of one tile: the tile's label (its scene's title), its model line, t and
 /// any divergence.
 std::vector<overlay::CaptionLine> tile_caption(const TileRun& tile) {
-  return charts::caption_for(tile.scene, tile.shown.t, tile.shown.diverged_at);
+  std::vector<overlay::CaptionLine> lines =
+      charts::caption_for(tile.scene, tile.shown.t, tile.shown.diverged_at);
+  if (!tile.model_line.empty()) lines[1].text = tile.model_line;  // the model's line
+  return lines;
 }
 
 class ComparisonComposer final : public Composer {

@@ -37,7 +37,16 @@ struct TileShown {
 /// One tile's run. Not movable: the FrameSource keeps a reference to `scene`.
 struct TileRun {
   explicit TileRun(scene::Scene s) : scene(std::move(s)), source(scene), drawing(scene.body) {}
+  /// A tile whose simulator the caller made (ClipRequest::tile_models), captioned with
+  /// `line` for its model.
+  TileRun(scene::Scene s, std::unique_ptr<physics::Simulator> simulator, std::string line)
+      : scene(std::move(s)),
+        model_line(std::move(line)),
+        source(scene, std::move(simulator)),
+        drawing(scene.body) {}
   scene::Scene scene;  ///< a single clip's scene, or the comparison's with this tile's model
+  /// The caption's words for the model; empty: scene::model_line(scene).
+  std::string model_line;
   analysis::FrameSource source;
   BodyDrawing drawing;
   SimulatedFrame frame;  ///< the simulation side: the frame last handed to the renderer

@@ -44,6 +44,15 @@ void StagedFiles::png(const std::filesystem::path& path, const RgbaImage& image)
   files_.push_back(std::move(file));
 }
 
+void StagedFiles::adopt(const std::filesystem::path& path, const std::filesystem::path& made) {
+  auto file = std::make_unique<AtomicFile>(path);
+  std::error_code ec;
+  std::filesystem::rename(made, file->temp_path(), ec);
+  if (ec) throw_output_error("cannot write", path, ec.message());
+  set_.add(*file);
+  files_.push_back(std::move(file));
+}
+
 void StagedFiles::commit() { set_.commit(); }
 
 }  // namespace bookspin::output

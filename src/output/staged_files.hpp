@@ -22,6 +22,10 @@ class StagedFiles : NonCopyable {
   /// Writes `image` as a PNG (png_writer.hpp's encode_png) whole under `path`'s temporary
   /// name. Throws as text() does, and what encode_png throws.
   void png(const std::filesystem::path& path, const RgbaImage& image);
+  /// Moves `made`, a complete file written elsewhere in the same filesystem (a clip rendered
+  /// into a scratch folder of the run), to `path`'s temporary name, to be put in place with the
+  /// others. Throws OutputError naming `path` when it cannot be moved.
+  void adopt(const std::filesystem::path& path, const std::filesystem::path& made);
   /// Puts every file written in place, in the order written, or none (OutputSet::commit()).
   /// Throws OutputError naming the file that could not be put in place.
   void commit();

@@ -102,6 +102,7 @@ BodyResult body_from_mesh(const Eigen::Matrix3Xd& vertices, const Eigen::Matrix3
   body.shape = shape;
   body.moments = p.principal_moments;
   body.volume = p.volume;
+  body.principal_axes = p.principal_axes;
   // Row i of principal_axes is axis i in mesh coordinates: x' = A (x − c).
   body.vertices = p.principal_axes * (scaled.colwise() - p.center_of_mass);
   body.triangles = triangles;

@@ -32,6 +32,11 @@ struct Body {
   Eigen::Matrix3Xf face_colours;  ///< 3×N linear RGB in [0, 1], one per triangle
   bool smooth = false;            ///< smooth (per-vertex) normals when drawing, else flat
   double volume = 0.0;            ///< length³ (0 for the book: not needed)
+  /// Rows: the principal axes x, y, z in the axes the body was built in (a preset's
+  /// construction frame, a mesh file's axes), so that a surface point's built coordinates are
+  /// c + principal_axesᵀ · v (c the centre of mass, v its principal-frame coordinates; a
+  /// rotation, det +1). Identity for the book, whose body frame is its own.
+  Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();
 };
 
 /// The book as a Body: cage = book, moments = book.principal_moments(), no surface mesh.

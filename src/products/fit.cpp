@@ -4,11 +4,13 @@
 
 #include "cache/make_cached.hpp"
 #include "charts/toss_plots.hpp"
+#include "clip/clip.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "output/sha256.hpp"
 #include "output/staged_files.hpp"
+#include "scene/canonical.hpp"
 
 namespace bookspin::products {
 namespace {
@@ -20,21 +22,53 @@ std::string fixed(double value, int digits) {
   return text.str();
 }
 
+/// Renders every toss's clip (fit_clip.hpp) into a scratch folder of the run, which the clip
+/// loop puts its complete videos in, and stages them into `files` under the layout's names:
+/// they go in place with the tables and charts or not at all. The scratch folder (a hidden
+/// temporary beside the manifest, with the tiles' diagnostics CSVs) is removed either way.
+void render_toss_clips(const FitJob& job, const scene::Scene& base,
+                       const fit::GyroRecording& recording, const fit::FitResult& fit,
+                       const FitLayout& layout, output::StagedFiles& files) {
+  const output::AtomicDirectory scratch(layout.manifest.parent_path() / "render");
+  const std::filesystem::path& folder = scratch.temp_path();
+  const std::vector<std::string>& formats = base.render.formats;
+  for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
+    const int toss = static_cast<int>(k);
+    clip::ClipRequest request;
+    request.scene = toss_clip_scene(base, recording.name, fit, toss, job.render->slow_motion);
+    const std::string name = "toss" + std::to_string(k + 1);
+    request.paths = {folder / (name + ".mp4"), folder / (name + ".webm"), folder / (name + ".gif"),
+                     folder / (name + "-frames"), folder / (name + "-measured.csv")};
+    request.tile_csvs = {folder / (name + "-exact-fit.csv")};
+    request.tile_models = toss_tile_models(recording, fit, toss, request.scene.body);
+    request.write_png = false;
+    request.stop_signal = job.stop_signal;
+    clip::render_clip(request);
+    for (std::size_t f = 0; f < formats.size(); ++f)
+      files.adopt(layout.videos[k * formats.size() + f], folder / (name + "." + formats[f]));
+  }
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> FitLayout::outputs() const {
   std::vector<std::filesystem::path> all{csv, body_csv};
   all.insert(all.end(), pngs.begin(), pngs.end());
+  all.insert(all.end(), videos.begin(), videos.end());
   return all;
 }
 
-FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses) {
+FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses,
+                     const std::vector<std::string>& video_formats) {
   FitLayout layout{out_dir / (name + "-fit.csv"),
                    out_dir / (name + "-fit-body.csv"),
                    {},
                    out_dir / name / "fit-manifest.json"};
   for (int k = 1; k <= tosses; ++k)
     layout.pngs.push_back(out_dir / (name + "-toss" + std::to_string(k) + ".png"));
+  for (int k = 1; k <= tosses; ++k)
+    for (const std::string& format : video_formats)
+      layout.videos.push_back(out_dir / (name + "-toss" + std::to_string(k) + "." + format));
   return layout;
 }
 
@@ -125,23 +159,44 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
     for (int c = 0; c < 3; ++c) append(recording.omega[i][c]);
   }
   for (double pause : recording.pauses) append(pause);
-  const JsonObject members{{"recording", {output::sha256_text(samples)}},
-                           {"tosses", {std::move(tosses)}},
-                           {"moments", {std::move(moments)}},
-                           {"width", {std::int64_t{job.width}}},
-                           {"height", {std::int64_t{job.height}}}};
+  JsonObject members{{"recording", {output::sha256_text(samples)}},
+                     {"tosses", {std::move(tosses)}},
+                     {"moments", {std::move(moments)}},
+                     {"width", {std::int64_t{job.width}}},
+                     {"height", {std::int64_t{job.height}}}};
+  // --render: the clips' scene (before anything is made: a bad scene writes nothing), its
+  // resolved keys and the files it reads in the head.
+  const std::optional<scene::Scene> clip_scene =
+      job.render ? std::optional(fit_clip_scene(*job.render)) : std::nullopt;
+  std::vector<std::filesystem::path> input_files;
+  if (clip_scene) {
+    const JsonObject render{{"slow_motion", {JsonNumber{job.render->slow_motion}}},
+                            {"scene", {scene::canonical_scene(*clip_scene), true}}};
+    // First: a head that only added members after the plain fit's would begin with the plain
+    // head, which manifest_stale() matches as a prefix.
+    members.insert(members.begin(), {"render", {render, true}});
+    const scene::RenderOptions& r = clip_scene->render;
+    for (const std::string& file :
+         {r.texture_front, r.texture_back, r.texture_spine, r.texture_pages, clip_scene->body_mesh})
+      if (!file.empty()) input_files.emplace_back(file);
+  }
   const std::filesystem::path manifest = job.out_dir / recording.name / "fit-manifest.json";
   const cache::CachedOutputs cached{
-      recording.name + "-fit", manifest, "fit", members, job.out_dir, nullptr,
-      /*all_or_nothing=*/true};
+      recording.name + "-fit", manifest,   "fit", members, job.out_dir, nullptr,
+      /*all_or_nothing=*/true, input_files};
   return cache::make_cached(cached, job.freshness, [&] {
     const fit::FlightSearch search = job.tosses.empty() ? fit::find_flights(recording)
                                                         : fit::hand_flights(recording, job.tosses);
     fit::FitSettings settings;
     settings.moments = job.moments;
     const fit::FitResult result = fit::fit_recording(recording, search, settings);
+    if (clip_scene && !result.body.moments_determined && !result.body.moments_fixed)
+      throw InputError(recording.source +
+                       ": --render: every toss is stable (no flip), so the fit cannot tell the "
+                       "moments apart and has no motion to show; give --moments");
     const FitLayout layout =
-        fit_layout(job.out_dir, recording.name, static_cast<int>(result.tosses.size()));
+        fit_layout(job.out_dir, recording.name, static_cast<int>(result.tosses.size()),
+                   clip_scene ? clip_scene->render.formats : std::vector<std::string>{});
     std::vector<RgbaImage> charts;
     for (std::size_t k = 0; k < result.tosses.size(); ++k)
       charts.push_back(
@@ -151,11 +206,15 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
     files.text(layout.csv, csv_text(fit_toss_csv(result), "fit CSV"));
     files.text(layout.body_csv, csv_text(fit_body_csv(result), "fit body CSV"));
     for (std::size_t k = 0; k < charts.size(); ++k) files.png(layout.pngs[k], charts[k]);
+    if (clip_scene) render_toss_clips(job, *clip_scene, recording, result, layout, files);
     files.commit();
     if (summary) {
       *summary = fit_summary(result);
       summary->push_back("wrote " + layout.csv.string() + ", " + layout.body_csv.string() +
-                         " and " + std::to_string(layout.pngs.size()) + " chart(s)");
+                         " and " + std::to_string(layout.pngs.size()) + " chart(s)" +
+                         (layout.videos.empty()
+                              ? std::string()
+                              : ", " + std::to_string(layout.videos.size()) + " video(s)"));
     }
     return cache::Made{layout.outputs()};
   });

@@ -11,7 +11,9 @@
 
 #include "cache/freshness.hpp"
 #include "common/csv_writer.hpp"
+#include "common/stop.hpp"
 #include "fit/fit.hpp"
+#include "products/fit_clip.hpp"
 
 namespace bookspin::products {
 
@@ -21,11 +23,16 @@ struct FitLayout {
   std::filesystem::path body_csv;           ///< OUT/<recording>-fit-body.csv: the body's one row
   std::vector<std::filesystem::path> pngs;  ///< OUT/<recording>-toss<N>.png, N = 1, 2, ...
   std::filesystem::path manifest;           ///< OUT/<recording>/fit-manifest.json
+  /// With --render: OUT/<recording>-toss<N>.<format>, toss by toss, each in render.formats'
+  /// order (products/fit_clip.hpp); empty without.
+  std::vector<std::filesystem::path> videos;
   std::vector<std::filesystem::path> outputs() const;
 };
 
-/// The layout of recording `name`'s fit of `tosses` tosses in `out_dir`. No I/O.
-FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses);
+/// The layout of recording `name`'s fit of `tosses` tosses in `out_dir`, with a video of each
+/// toss in each of `video_formats` (--render's render.formats; none without). No I/O.
+FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses,
+                     const std::vector<std::string>& video_formats = {});
 
 /// What `bookspin fit` asks for.
 struct FitJob {
@@ -34,6 +41,10 @@ struct FitJob {
   std::vector<std::pair<double, double>> tosses;  ///< --tosses by hand (s); empty: found
   std::optional<Eigen::Vector3d> moments;         ///< --moments: fixed
   int width = 1400, height = 700;                 ///< each chart's pixels
+  std::optional<FitRender> render;                ///< --render: a clip of each toss
+  /// Polled before each clip frame and while its encoders finish (clip::ClipRequest): a signal
+  /// throws Interrupted, nothing put in place.
+  StopPoll stop_signal;
   cache::Freshness freshness;
 };
 
@@ -45,12 +56,19 @@ CsvTable fit_body_csv(const fit::FitResult& fit);
 /// the body's notes (one line each), for the command to print.
 std::vector<std::string> fit_summary(const fit::FitResult& fit);
 
-/// (recording, tosses, moments) => OUT/<recording>-fit.csv + -fit-body.csv + -toss<N>.png +
-/// manifest.
+/// (recording, tosses, moments[, render]) => OUT/<recording>-fit.csv + -fit-body.csv +
+/// -toss<N>.png [+ -toss<N>.mp4] + manifest.
 /// Reads the recording (fit::read_recording), finds its flights (or takes the given ones),
 /// fits them (fit::fit_recording), draws each toss (charts::toss_image) and writes the files,
-/// unless the manifest says they are up to date. `summary`, when given, receives fit_summary's
-/// lines of a made fit. Throws InputError (the recording, a toss, no flight), OutputError.
+/// unless the manifest says they are up to date; with `render`, also renders each toss's clip
+/// (products/fit_clip.hpp) into a scratch folder of the run and puts it in place with the
+/// rest, all or nothing. `summary`, when given, receives fit_summary's lines of a made fit.
+/// Throws InputError (the recording, a toss, no flight; with `render` a bad scene file or
+/// --slow-motion, and a fit whose every toss is stable without --moments: no moments to
+/// show), OutputError, Interrupted (a signal while the clips are made), and what
+/// clip::render_clip throws (render::RenderError,
+/// video::EncoderError): then nothing is put in place and the earlier outputs and manifest
+/// stay.
 cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary = nullptr);
 
 }  // namespace bookspin::products

@@ -78,6 +78,34 @@ TEST(FitCommand, BadInputIsOneLineAndExitTwo) {
              "--tosses 0.1:0.12");
   expect_bad("moments", "t,wx,wy,wz\n" + rest_rows(300), "--moments: expected I1,I2,I3",
              "--moments 1,2");
+  expect_bad("scene", "t,wx,wy,wz\n" + rest_rows(300), "--scene: only with --render",
+             "--scene x.toml");
+  expect_bad("slow", "t,wx,wy,wz\n" + rest_rows(300), "--slow-motion: Value 0.5 not in range",
+             "--render --slow-motion 0.5");
+}
+
+TEST(FitCommand, RenderMakesAClipPerTossAndABadSceneWritesNothing) {
+  const fs::path dir = bookspin::test::fresh_dir("cli/fit/render");
+  const auto synthetic = fit::test::make_recording(
+      fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 6);
+  fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::comma);
+  std::ofstream(dir / "bad.toml") << "body.shape = \"phone\"\nrender.fps = 0\n";
+  const auto bad =
+      bookspin::test::run_bookspin("fit " + quoted(dir / "toss") + " --render --scene " +
+                                   quoted(dir / "bad.toml") + " -o " + quoted(dir / "out"));
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+  EXPECT_NE(bad.output.find("bad.toml:2: render.fps"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  std::ofstream(dir / "small.toml") << "body.shape = \"phone\"\nrender.width = 160\n"
+                                       "render.height = 90\nrender.fps = 10\nrender.msaa = 1\n";
+  const auto made = bookspin::test::run_bookspin(
+      "fit " + quoted(dir / "toss") + " --render --slow-motion 2 --scene " +
+      quoted(dir / "small.toml") + " -o " + quoted(dir / "out"));
+  ASSERT_EQ(made.status, 0) << made.output;
+  EXPECT_NE(made.output.find("2 video(s)"), std::string::npos) << made.output;
+  for (const char* name : {"toss-toss1.mp4", "toss-toss2.mp4"})
+    EXPECT_TRUE(fs::exists(dir / "out" / name)) << name;
 }
 
 }  // namespace

@@ -1,13 +1,12 @@
 // SIGINT, SIGTERM and SIGHUP stop every command that writes (export, render in its encoders'
-// finishing passes, sweep, accuracy, plot, simulate, explore, gallery) within a second, with exit
-// status 130, 143 or 129, the
-// previous outputs and their manifest byte-identical and no temporary left (docs/outputs.md,
-// "Signals"). Each signal comes at a named stage of the run (the command line's test hooks,
-// src/cli/interrupt.hpp): for a long loop the test signals on the line of the stage polled just
-// before the loop starts ("gif palette pass" before the GIF's second pass, "sweep point" before a
-// point's steps, "accuracy runs" before a run's steps), so the time to exit measures how often the
-// loop itself polls; a stage too short to catch in flight is held at its first poll until the
-// signal has arrived.
+// finishing passes, sweep, accuracy, plot, simulate, explore, gallery, fit --render) within a
+// second, with exit status 130, 143 or 129, the previous outputs and their manifest byte-identical
+// and no temporary left (docs/outputs.md, "Signals"). Each signal comes at a named stage of the run
+// (the command line's test hooks, src/cli/interrupt.hpp): for a long loop the test signals on the
+// line of the stage polled just before the loop starts ("gif palette pass" before the GIF's second
+// pass, "sweep point" before a point's steps, "accuracy runs" before a run's steps), so the time to
+// exit measures how often the loop itself polls; a stage too short to catch in flight is held at
+// its first poll until the signal has arrived.
 #include <gtest/gtest.h>
 #include <signal.h>
 
@@ -16,6 +15,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "fit/synthetic_recording.hpp"
 #include "support/signal_runner.hpp"
 
 namespace bookspin::cli {
@@ -264,6 +264,27 @@ TEST_P(PlotSimulateSignal, StopsTheRunAndKeepsTheEarlierOutput) {
 
 INSTANTIATE_TEST_SUITE_P(Signals, PlotSimulateSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
                          [](const auto& info) { return signal_name(info.param); });
+
+// fit --render polls every frame of each toss's clip: a signal there keeps the earlier fit's
+// CSVs, charts and manifest byte for byte, and the run's scratch folder and staged files go.
+TEST(Signals, FitRenderKeepsThePreviousFit) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  fit::test::write_export(
+      dir.path() / "toss",
+      fit::test::make_recording(fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}}, 6),
+      fit::test::Dialect::comma);
+  write_text(dir.path() / "small.toml",
+             "body.shape = \"phone\"\nrender.width = 96\nrender.height = 64\n");
+  const std::string recording = (dir.path() / "toss").string();
+  const CliResult first = run_bookspin("fit " + recording + " -o " + out.string());
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  ASSERT_TRUE(before.count("toss-fit.csv"));
+  expect_stopped_cleanly(words({"fit", recording, "--render", "--scene",
+                                (dir.path() / "small.toml").string(), "-o", out.string()}),
+                         kHold, "render frames", SIGINT, out, before);
+}
 
 }  // namespace
 }  // namespace bookspin::cli
