@@ -26,6 +26,13 @@ constexpr std::string_view kOutputsOpen = "  \"outputs\": [\n";
 constexpr std::string_view kClose = "  ]\n}\n";
 constexpr std::string_view kWarningsOpen = "  \"warnings\": [";
 
+/// The line that ends a manifest's head: its SHA-256, so that a head which is only the start of
+/// the recorded one (members added after it by other options) is not read as the same, the
+/// rest taken for the note.
+std::string head_end_line(std::string_view head) {
+  return "  \"head_sha256\": \"" + sha256_text(head) + "\",\n";
+}
+
 struct Entry {
   std::string path;
   std::uintmax_t size = 0;
@@ -72,7 +79,8 @@ std::optional<Entry> parse_entry(std::string_view line) {
 std::optional<std::vector<Entry>> entries_after(const std::string& text, std::string_view head,
                                                 bool& head_differs) {
   head_differs = false;
-  const std::string start = "{\n" + std::string(head);
+  const std::string start =
+      "{\n" + std::string(head) + (head.empty() ? std::string() : head_end_line(head));
   if (text.compare(0, start.size(), start) != 0) {
     head_differs = true;
     return std::nullopt;
@@ -146,7 +154,7 @@ void write_manifest(const fs::path& manifest, std::string_view head, std::string
   }
   // The outputs, one a line: what entries_after() reads back.
   const std::string text =
-      "{\n" + std::string(head) + std::string(note) +
+      "{\n" + std::string(head) + head_end_line(head) + std::string(note) +
       json_member_lines({{"outputs", {std::move(entries), true}}}, "manifest outputs", 2, true) +
       "}\n";
   std::error_code ec;

@@ -54,6 +54,9 @@ TEST(Manifest, IsTheHeadTheNoteThenTheOutputsOneALine) {
             "{\n"
             "  \"manifest\": 1,\n"
             "  \"command\": \"test\",\n"
+            // The head's SHA-256 (sha256sum of its two lines), where the head ends.
+            "  \"head_sha256\": "
+            "\"e72328bb49ea39087588a1c47a42ec32203523d1c45e23c8af5ca61a02be9556\",\n"
             "  \"note\": [],\n"
             "  \"outputs\": [\n"
             "    {\"path\": \"a.csv\", \"size\": 3, \"sha256\": "
@@ -67,6 +70,23 @@ TEST(Manifest, IsTheHeadTheNoteThenTheOutputsOneALine) {
             std::nullopt);
   EXPECT_EQ(read_manifest(dir / "m/manifest.json").outputs,
             (std::vector<std::string>{"a.csv", "sub/b.txt"}));
+}
+
+// A head that is only the start of the recorded one (a run with one more option member) is
+// another head, not this one with a longer note; and the other way round.
+TEST(Manifest, AHeadThatStartsTheRecordedOneIsStale) {
+  ScratchDir dir;
+  std::ofstream(dir / "a.csv") << "abc";
+  const std::string head = "  \"manifest\": 1,\n  \"command\": \"test\",\n";
+  const std::string longer = head + "  \"render\": {\"slow\": 4},\n";
+  write_manifest(dir / "long.json", longer, "", dir.path(), {"a.csv"});
+  write_manifest(dir / "short.json", head, "  \"render\": {\"slow\": 4},\n", dir.path(),
+                 {"a.csv"});
+  EXPECT_EQ(manifest_stale(dir / "long.json", longer, dir.path(), true), std::nullopt);
+  EXPECT_NE(manifest_stale(dir / "long.json", head, dir.path(), true), std::nullopt);
+  EXPECT_EQ(manifest_stale(dir / "short.json", head, dir.path(), true), std::nullopt);
+  EXPECT_NE(manifest_stale(dir / "short.json", longer, dir.path(), true), std::nullopt);
+  EXPECT_EQ(read_manifest(dir / "long.json").outputs, std::vector<std::string>{"a.csv"});
 }
 
 }  // namespace
