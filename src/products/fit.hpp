@@ -21,11 +21,17 @@ struct FitLayout {
   std::filesystem::path body_csv;           ///< OUT/<recording>-fit-body.csv: the body's one row
   std::vector<std::filesystem::path> pngs;  ///< OUT/<recording>-toss<N>.png, N = 1, 2, ...
   std::filesystem::path manifest;           ///< OUT/<recording>/fit-manifest.json
+  /// OUT/<recording>-toss<N>.toml, each toss as a scene (products/fit_scene.hpp), and
+  /// OUT/<recording>-toss<N>-measured.csv, the measured ω it names; empty where the fitted
+  /// moments make no body (toss_book).
+  std::vector<std::filesystem::path> scenes, measured;
   std::vector<std::filesystem::path> outputs() const;
 };
 
-/// The layout of recording `name`'s fit of `tosses` tosses in `out_dir`. No I/O.
-FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses);
+/// The layout of recording `name`'s fit of `tosses` tosses in `out_dir`, with the tosses'
+/// scenes or without. No I/O.
+FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses,
+                     bool scenes = true);
 
 /// What `bookspin fit` asks for.
 struct FitJob {
@@ -46,10 +52,12 @@ CsvTable fit_body_csv(const fit::FitResult& fit);
 std::vector<std::string> fit_summary(const fit::FitResult& fit);
 
 /// (recording, tosses, moments) => OUT/<recording>-fit.csv + -fit-body.csv + -toss<N>.png +
-/// manifest.
+/// -toss<N>.toml + -toss<N>-measured.csv + manifest.
 /// Reads the recording (fit::read_recording), finds its flights (or takes the given ones),
-/// fits them (fit::fit_recording), draws each toss (charts::toss_image) and writes the files,
-/// unless the manifest says they are up to date. `summary`, when given, receives fit_summary's
+/// fits them (fit::fit_recording), draws each toss (charts::toss_image), makes each toss's
+/// scene and measured ω (fit_scene.hpp; none, and a line in the summary saying why, where the
+/// fitted moments make no body) and writes the files, unless the manifest says they are up to
+/// date. `summary`, when given, receives fit_summary's
 /// lines of a made fit. Throws InputError (the recording, a toss, no flight), OutputError.
 cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary = nullptr);
 
