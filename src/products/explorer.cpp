@@ -160,7 +160,8 @@ JsonObject explorer_scene_data(const scene::Scene& s) {
                    {"title", {s.title}},
                    {"description", {s.description}},
                    {"state", {std::move(state)}},
-                   {"book", {JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}}};
+                   {"book", {JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}},
+                   {"duration", {(s.frames - 1) * s.dt * s.steps_per_frame}}};
   // What of a comparison the page leaves out, which it says under the scene's description.
   if (JsonArray left_out = left_out_tiles(s); !left_out.empty())
     scene.push_back({"left_out", {std::move(left_out)}});

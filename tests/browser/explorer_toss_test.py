@@ -7,16 +7,17 @@ opened at the toss's scene in headless Chromium (1280×720). Checks:
 
   - the fit prints the `bookspin explore` command of the toss's scene, and it writes the page;
   - the page's state is the scene's: its name, the exact model, ω0 the scene's
-    initial.angular_velocity;
+    initial.angular_velocity; its time slider spans the scene's duration;
   - the page's exact motion flips where the recording does: its first flip within 0.02 s of
     the first sign change of the true ω about the intermediate axis (from RK4, here), its flip
     period within 1e-4 of the fit CSV's half_period_fitted and within 2 % of the true one;
   - its ω at five times within 0.06 rad/s of the recorded samples there (in the scene's body
     frame: the measured CSV the scene names; the noise is 0.01);
   - the measured overlay drawn: every measured sample as dots on the ω plot and as points of
-    the L/|L| trail on the sphere at the scene's end (window.explorer.measuredDrawn()), none
-    at t = 0;
-  - no NaN in the readout, no console error; a screenshot in BINARY_DIR/test-output/browser/.
+    the L/|L| trail on the sphere at the scene's end (window.explorer.measuredDrawn()), those
+    up to t alone at t = 0.9 s, at most the first at t = 0;
+  - no NaN in the readout, no console error; screenshots in BINARY_DIR/test-output/browser/
+    (explorer-toss-flight.png at 0.9 s, explorer-toss.png at the end).
 
 Usage: explorer_toss_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 """
@@ -156,6 +157,10 @@ def main():
         want = scene["initial"]["angular_velocity"]
         if any(abs(x - y) > 1e-12 * abs(y) + 1e-15 for x, y in zip(state["w"], want)):
             fail(f"the page's ω0 {state['w']} is not the scene's {want}")
+        slider = float(driver.find_element("id", "slider").get_attribute("max"))
+        frame = scene["time"]["dt"] * scene["time"]["steps_per_frame"]
+        if not duration - 1e-9 <= slider <= duration + frame + 1e-9:
+            fail(f"the time slider spans {slider} s, not the scene's {duration} s")
         drawn0 = driver.execute_script("return window.explorer.measuredDrawn()")
         if drawn0 != {"plot": 0, "sphere": 0} and drawn0 != {"plot": 1, "sphere": 1}:
             fail(f"at t = 0 the measured overlay already shows {drawn0}")
@@ -174,6 +179,15 @@ def main():
         print(f"page ω against the measured samples: at most {worst:.4f} rad/s apart")
         if worst > 0.06:
             fail(f"the page's ω is {worst:.3f} rad/s from the measured samples (noise 0.01)")
+        # Halfway through the flight: the measurement drawn up to the time shown, no further.
+        driver.execute_script("window.explorer.omegaAt(0.9)")
+        half_t = driver.execute_script("return window.explorer.state().t")
+        half = driver.execute_script("return window.explorer.measuredDrawn()")
+        upto = sum(1 for row in measured if row[0] <= half_t)
+        print(f"at t = {half_t:.4f}: measured drawn {half} of {len(measured)} ({upto} up to t)")
+        if half != {"plot": upto, "sphere": upto}:
+            fail(f"at t = {half_t} the measured overlay draws {half}, not the {upto} samples up to t")
+        driver.save_screenshot(str(shots / "explorer-toss-flight.png"))
         driver.execute_script(f"window.explorer.omegaAt({duration!r})")
         exact = driver.execute_script("return window.explorer.exactFlips()")[0]
         own = driver.execute_script("return window.explorer.flipMeasures()")[0]

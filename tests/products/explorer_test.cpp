@@ -61,7 +61,8 @@ TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {
 }
 
 // A book scene whose every number is given, as the page reads it: the text written out by hand
-// from the scene file (speed = dt × steps_per_frame × fps = 0.5 × 2 × 25 time units per second).
+// from the scene file (speed = dt × steps_per_frame × fps = 0.5 × 2 × 25 time units per second;
+// duration = (frames − 1) × dt × steps_per_frame = 299 × 0.5 × 2).
 TEST(ExplorerSceneJson, ABookSceneIsTheTextThePageReads) {
   const std::string json = explorer_scene_json(scene::parse_scene_text(
       "[scene]\nname = \"b\"\ntitle = \"A \\\"book\\\"\"\ndescription = \"x</script>\"\n"
@@ -77,7 +78,7 @@ TEST(ExplorerSceneJson, ABookSceneIsTheTextThePageReads) {
             "\"normalize\":true,\"damping\":false,\"k\":2.5,\"cells\":0,\"dt\":0.5,"
             "\"axis\":\"custom\",\"w\":[0.1,-2,0],\"jiggle\":0.001,\"seed\":9223372036854775807,"
             "\"speed\":25,\"showL\":false,\"showAxes\":true},"
-            "\"book\":{\"size\":[1.5,2,0.25],\"mass\":3}}");
+            "\"book\":{\"size\":[1.5,2,0.25],\"mass\":3},\"duration\":299}");
 }
 
 // A scene's measured ω goes into the page whole, with each sample's L/|L| (L = I·ω with the
