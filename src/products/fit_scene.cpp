@@ -79,8 +79,9 @@ std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::stri
       "# Toss " + n + " of the recording " + recording +
       " as bookspin fit fitted it (docs/phone-lab.md):\n"
       "# the exact motion of a box with the fitted moment ratios from the fitted ω0, in the\n"
-      "# body frame x, y, z = the fitted principal axes 2, -1, 3 (phone frame in\n"
-      "# the fit's -fit-body.csv). Time unit: the second; ω in rad/s; t = 0 the flight's start.\n"
+      "# body frame x, y, z = the fitted principal axes 2, -1, 3 (their phone-frame components\n"
+      "# in the fit's -fit-body.csv). Time unit: the second; ω in rad/s; t = 0 the flight's\n"
+      "# start.\n"
       "[scene]\n"
       "name = " +
       json_string(toss_scene_name(recording, toss + 1)) +
