@@ -29,6 +29,7 @@ JsonValue inputs_json(const scene::Scene& scene) {
     if (!path->empty()) files.emplace_back(key, *path);
   }
   if (!scene.body_mesh.empty()) files.emplace_back("body.mesh", scene.body_mesh);
+  if (!scene.measured.file.empty()) files.emplace_back("measured.omega", scene.measured.file);
   JsonObject inputs;
   for (const auto& [key, path] : files) inputs.push_back({key, {hash_of(key, path)}});
   const bool lines = !inputs.empty();  // "{}" when the scene reads no file

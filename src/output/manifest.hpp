@@ -20,8 +20,8 @@
 // The head holds everything the outputs depend on (program build, options, the resolved
 // scene, the hashes of the inputs read as bytes: textures, meshes); a run is up to date when
 // the manifest's head is this run's head byte for byte (the head_sha256 line marks its end,
-// so a longer recorded head, of a run with more options, is not this one) and every output is still there with
-// its size (and hash, when verifying). The note records what does not decide: the scene
+// so a longer recorded head, of a run with more options, is not this one) and every output is still
+// there with its size (and hash, when verifying). The note records what does not decide: the scene
 // file's own hash changes with its comments, while its resolved keys are in the head.
 // Anything else, a hand-edited or unreadable manifest included, means "render again".
 #include <cstdint>

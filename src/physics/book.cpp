@@ -20,4 +20,14 @@ Eigen::Vector3d Book::principal_moments() const {
 
 Eigen::Matrix3d Book::inertia_body() const { return principal_moments().asDiagonal(); }
 
+std::optional<Book> book_with_moments(const Eigen::Vector3d& moments, double mass) {
+  const double x = moments.x(), y = moments.y(), z = moments.z();
+  const Eigen::Vector3d squares = (6.0 / mass) * Eigen::Vector3d(y + z - x, x + z - y, x + y - z);
+  if (!(mass > 0.0) || !squares.allFinite() || !(squares.minCoeff() > 0.0)) return std::nullopt;
+  Book book;
+  book.size = squares.cwiseSqrt();
+  book.mass = mass;
+  return book;
+}
+
 }  // namespace bookspin::physics

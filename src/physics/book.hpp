@@ -1,6 +1,7 @@
 #pragma once
 // Book geometry: size, mass, corners and inertia (docs/physics.md §1).
 #include <Eigen/Dense>
+#include <optional>
 
 namespace bookspin::physics {
 
@@ -22,5 +23,12 @@ struct Book {
   /// Diagonal of inertia_body() (principal moments I_x, I_y, I_z).
   Eigen::Vector3d principal_moments() const;
 };
+
+/// The book of mass `mass` (> 0) whose principal moments about body x, y, z are `moments`
+/// (mass·length²): the inverse of Book::principal_moments(), a² = 6(I_y + I_z − I_x)/M,
+/// b² = 6(I_x + I_z − I_y)/M, c² = 6(I_x + I_y − I_z)/M. nullopt where a side would not be
+/// positive and finite: moments that break the triangle inequality (I_x + I_y > I_z and its
+/// turns, which every real body's moments keep) have no such box. docs/physics.md §1.
+std::optional<Book> book_with_moments(const Eigen::Vector3d& moments, double mass);
 
 }  // namespace bookspin::physics

@@ -1,5 +1,6 @@
 #include "products/explorer.hpp"
 
+#include <cmath>
 #include <set>
 #include <vector>
 
@@ -65,6 +66,22 @@ JsonArray left_out_tiles(const scene::Scene& s) {
 template <typename Matrix>
 JsonValue numbers(const Matrix& m) {
   return {std::vector<double>(m.data(), m.data() + m.size())};
+}
+
+/// The scene's measured ω (measured.omega) as the page draws it: {t (time units), w (3×N
+/// body-frame ω, flattened column by column), ut and u: the times and body-frame L/|L| of the
+/// samples whose L = I·ω (I the scene body's principal moments) is not zero, 3×M flattened}.
+JsonObject measured_data(const scene::Scene& s) {
+  const scene::MeasuredOmega& m = s.measured;
+  std::vector<double> ut, u;
+  for (Eigen::Index i = 0; i < m.omega.cols(); ++i) {
+    const Eigen::Vector3d L = s.body.moments.cwiseProduct(m.omega.col(i));
+    const double norm = L.norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) continue;
+    ut.push_back(m.t[static_cast<std::size_t>(i)]);
+    for (int c = 0; c < 3; ++c) u.push_back(L[c] / norm);
+  }
+  return {{"t", {m.t}}, {"w", numbers(m.omega)}, {"ut", {std::move(ut)}}, {"u", {std::move(u)}}};
 }
 
 /// The page's shell (web/build.sh) and the engines' bundle that fills its engines marker.
@@ -143,10 +160,12 @@ JsonObject explorer_scene_data(const scene::Scene& s) {
                    {"title", {s.title}},
                    {"description", {s.description}},
                    {"state", {std::move(state)}},
-                   {"book", {JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}}};
+                   {"book", {JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}},
+                   {"duration", {(s.frames - 1) * s.dt * s.steps_per_frame}}};
   // What of a comparison the page leaves out, which it says under the scene's description.
   if (JsonArray left_out = left_out_tiles(s); !left_out.empty())
     scene.push_back({"left_out", {std::move(left_out)}});
+  if (!s.measured.file.empty()) scene.push_back({"measured", {measured_data(s)}});
   if (b.shape != physics::BodyShape::book) {
     scene.push_back({"body",
                      {JsonObject{{"shape", {std::string(physics::to_string(b.shape))}},

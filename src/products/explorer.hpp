@@ -43,11 +43,15 @@ std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell
 /// second, the markers; a
 /// [[compare]] scene compares its first tile with its last, of those the page can run: the
 /// other engines' tiles are left out, docs/engines.md; `left_out` lists the labels of the tiles
-/// it does not run, where there are any), `book` (size, mass) and, for
+/// it does not run, where there are any), `book` (size, mass), `duration` (the scene's run,
+/// (frames − 1)·dt·steps_per_frame time units: the page's time slider spans it) and, for
 /// other bodies, `body`: the Body itself as simulate builds it (shape, mass, principal moments
 /// about x, y, z, cage size, volume, surface 3×V principal frame flattened column by column,
 /// triangles 3×N, face colours 3×N, smooth), so that the page's physics starts from the
-/// same doubles (written in shortest round-trip form) and needs no mesh reader. No I/O.
+/// same doubles (written in shortest round-trip form) and needs no mesh reader; with
+/// `measured.omega`, `measured`: its samples {t, w: 3×N body-frame ω flattened, ut, u: the
+/// times and body-frame L/|L| (L = I·ω, the body's moments) of the samples with L ≠ 0}, which
+/// the page draws beside its runs (docs/explorer.md). No I/O (the scene reader read the file).
 JsonObject explorer_scene_data(const scene::Scene& scene);
 
 struct ExplorerPageRequest {

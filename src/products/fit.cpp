@@ -1,5 +1,8 @@
 #include "products/fit.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <sstream>
 
 #include "cache/make_cached.hpp"
@@ -10,6 +13,8 @@
 #include "output/png_writer.hpp"
 #include "output/sha256.hpp"
 #include "output/staged_files.hpp"
+#include "products/explorer.hpp"
+#include "products/fit_scene.hpp"
 #include "scene/canonical.hpp"
 
 namespace bookspin::products {
@@ -49,26 +54,48 @@ void render_toss_clips(const FitJob& job, const scene::Scene& base,
   }
 }
 
+/// `path` as one word of a shell's command line: as it is when it holds nothing a shell reads
+/// specially, else in single quotes.
+std::string shell_word(const std::filesystem::path& path) {
+  const std::string text = path.string();
+  const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || (c != 0 && std::strchr("._/-+,:@%=", c));
+  });
+  if (plain) return text;
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> FitLayout::outputs() const {
   std::vector<std::filesystem::path> all{csv, body_csv};
   all.insert(all.end(), pngs.begin(), pngs.end());
+  all.insert(all.end(), scenes.begin(), scenes.end());
+  all.insert(all.end(), measured.begin(), measured.end());
   all.insert(all.end(), videos.begin(), videos.end());
   return all;
 }
 
 FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& name, int tosses,
-                     const std::vector<std::string>& video_formats) {
+                     bool scenes, const std::vector<std::string>& video_formats) {
   FitLayout layout{out_dir / (name + "-fit.csv"),
                    out_dir / (name + "-fit-body.csv"),
                    {},
-                   out_dir / name / "fit-manifest.json"};
-  for (int k = 1; k <= tosses; ++k)
-    layout.pngs.push_back(out_dir / (name + "-toss" + std::to_string(k) + ".png"));
-  for (int k = 1; k <= tosses; ++k)
+                   out_dir / name / "fit-manifest.json",
+                   {},
+                   {},
+                   {}};
+  for (int k = 1; k <= tosses; ++k) {
+    const std::string toss = name + "-toss" + std::to_string(k);
+    layout.pngs.push_back(out_dir / (toss + ".png"));
     for (const std::string& format : video_formats)
-      layout.videos.push_back(out_dir / (name + "-toss" + std::to_string(k) + "." + format));
+      layout.videos.push_back(out_dir / (toss + "." + format));
+    if (!scenes) continue;
+    layout.scenes.push_back(out_dir / (toss + ".toml"));
+    layout.measured.push_back(out_dir / (toss + "-measured.csv"));
+  }
   return layout;
 }
 
@@ -194,8 +221,9 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
       throw InputError(recording.source +
                        ": --render: every toss is stable (no flip), so the fit cannot tell the "
                        "moments apart and has no motion to show; give --moments");
+    const bool scenes = toss_book(result.body).has_value();
     const FitLayout layout =
-        fit_layout(job.out_dir, recording.name, static_cast<int>(result.tosses.size()),
+        fit_layout(job.out_dir, recording.name, static_cast<int>(result.tosses.size()), scenes,
                    clip_scene ? clip_scene->render.formats : std::vector<std::string>{});
     std::vector<RgbaImage> charts;
     for (std::size_t k = 0; k < result.tosses.size(); ++k)
@@ -206,6 +234,13 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
     files.text(layout.csv, csv_text(fit_toss_csv(result), "fit CSV"));
     files.text(layout.body_csv, csv_text(fit_body_csv(result), "fit body CSV"));
     for (std::size_t k = 0; k < charts.size(); ++k) files.png(layout.pngs[k], charts[k]);
+    for (std::size_t k = 0; k < layout.scenes.size(); ++k) {
+      const int toss = static_cast<int>(k);
+      files.text(layout.measured[k],
+                 csv_text(toss_measured_csv(recording, result, toss), "fit measured CSV"));
+      files.text(layout.scenes[k], toss_scene_text(result, toss, recording.name,
+                                                   layout.measured[k].filename().string()));
+    }
     if (clip_scene) render_toss_clips(job, *clip_scene, recording, result, layout, files);
     files.commit();
     if (summary) {
@@ -215,6 +250,18 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
                          (layout.videos.empty()
                               ? std::string()
                               : ", " + std::to_string(layout.videos.size()) + " video(s)"));
+      if (scenes) {
+        std::string command = "bookspin explore";
+        for (const std::filesystem::path& scene : layout.scenes)
+          command.append(" ").append(shell_word(scene));
+        summary->push_back("to play the tosses beside the measurement: " + command + " -o " +
+                           shell_word(job.out_dir) + ", then open " +
+                           explorer_page_path(job.out_dir).string());
+      } else {
+        summary->push_back(
+            "no scene of the tosses: the fitted moments break the triangle inequality "
+            "(I1 + I2 > I3) or make a body too flat for a scene: no rigid body has them");
+      }
     }
     return cache::Made{layout.outputs()};
   });

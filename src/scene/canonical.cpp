@@ -94,6 +94,9 @@ JsonObject canonical_scene(const Scene& s) {
   m.push_back({"time.steps_per_frame", integer(s.steps_per_frame)});
   m.push_back({"time.frames", integer(s.frames)});
   add_render(m, s.render, s.source);
+  // Listed only when given, so that the manifests of the scenes without one stay as they were;
+  // its bytes are hashed by the manifests (cache/manifest_head.cpp, "inputs").
+  if (!s.measured.file.empty()) m.push_back({"measured.omega", texture(s.measured.file, s.source)});
   for (std::size_t i = 0; i < s.compare.size(); ++i) {
     std::string prefix("compare[");  // numbered from 1, as in the scene reader's messages
     prefix.append(std::to_string(i + 1)).append("].");

@@ -18,7 +18,8 @@ namespace bookspin::scene {
 /// where the checkout lives. Numbers: the first of %.15g, %.16g, %.17g that reads back
 /// (NumberStyle::fewest_g), JSON-valid.
 /// model.normalize_every is listed only where it is not 1 (normalizing every step), so that
-/// the manifests written before the key existed still match; time.duration appears as the
+/// the manifests written before the key existed still match, and measured.omega only where
+/// given (the file's bytes are the manifests' inputs); time.duration appears as the
 /// time.frames it gives.
 JsonObject canonical_scene(const Scene& scene);
 

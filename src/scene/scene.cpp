@@ -150,6 +150,28 @@ std::string read_texture(TomlReader& r, std::string_view key, const std::filesys
   return path.string();
 }
 
+/// measured.omega: the file (relative to the scene file) read and checked (measured_file.hpp).
+MeasuredOmega read_measured(TomlReader& r, const std::filesystem::path& origin) {
+  MeasuredOmega measured;
+  const char* key = "measured.omega";
+  const std::string value = r.string(key, "");
+  if (value.empty()) return measured;
+  std::filesystem::path path(value);
+  if (path.is_relative()) path = origin.parent_path() / path;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    r.fail(key, "measured ω file not found: " + path.string());
+  if (std::filesystem::file_size(path, ec) > kMaxMeasuredFileBytes)
+    r.fail(key,
+           path.string() + ": larger than " + std::to_string(kMaxMeasuredFileBytes) + " bytes");
+  if (const std::string problem =
+          parse_measured_omega(read_text_file(path, "the measured ω file"), measured);
+      !problem.empty())
+    r.fail(key, path.string() + ": " + problem);
+  measured.file = path.string();
+  return measured;
+}
+
 int read_dimension(TomlReader& r, const Limit& limit) {
   const int value = static_cast<int>(r.integer(limit));
   if (value % 2 != 0) {
@@ -462,6 +484,7 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
   read_time(r, s);
   s.render = read_render(r, origin);
   s.compare = read_compare(r, origin.string(), overridden, s.model);
+  s.measured = read_measured(r, origin);
   r.reject_unknown_keys();
   check_lattice_cells(r, s);
   if (s.render.poinsot && !s.compare.empty())

@@ -12,6 +12,7 @@
 #include "physics/lattice.hpp"
 #include "physics/simulator.hpp"
 #include "scene/limits.hpp"
+#include "scene/measured_file.hpp"
 
 namespace bookspin::scene {
 
@@ -97,6 +98,9 @@ struct Scene {
   /// Non-empty for a comparison scene: each tile runs its own simulator from the same
   /// initial state, and the clip shows them side by side (kMaxCompareTiles at most).
   std::vector<CompareTile> compare;
+  /// measured.omega: a measured ω shown beside the run (measured_file.hpp); the explorer draws
+  /// it, the other products leave it. Empty file: none.
+  MeasuredOmega measured;
 };
 
 /// The single-model scene a comparison tile stands for: `scene` with the tile's model.

@@ -31,8 +31,13 @@ TEST(FitCommand, FitsASyntheticExportIntoItsCsvsAndCharts) {
   ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_NE(result.output.find("kept toss 2"), std::string::npos) << result.output;
   for (const char* name : {"toss-fit.csv", "toss-fit-body.csv", "toss-toss1.png", "toss-toss2.png",
-                           "toss/fit-manifest.json"})
+                           "toss-toss1.toml", "toss-toss2.toml", "toss-toss1-measured.csv",
+                           "toss-toss2-measured.csv", "toss/fit-manifest.json"})
     EXPECT_TRUE(fs::exists(dir / "out" / name)) << name;
+  // It says how to open the tosses in the explorer.
+  EXPECT_NE(result.output.find("bookspin explore " + (dir / "out" / "toss-toss1.toml").string()),
+            std::string::npos)
+      << result.output;
   const std::string csv = read_text_file(dir / "out" / "toss-fit.csv", "the CSV");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"

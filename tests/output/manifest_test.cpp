@@ -80,8 +80,7 @@ TEST(Manifest, AHeadThatStartsTheRecordedOneIsStale) {
   const std::string head = "  \"manifest\": 1,\n  \"command\": \"test\",\n";
   const std::string longer = head + "  \"render\": {\"slow\": 4},\n";
   write_manifest(dir / "long.json", longer, "", dir.path(), {"a.csv"});
-  write_manifest(dir / "short.json", head, "  \"render\": {\"slow\": 4},\n", dir.path(),
-                 {"a.csv"});
+  write_manifest(dir / "short.json", head, "  \"render\": {\"slow\": 4},\n", dir.path(), {"a.csv"});
   EXPECT_EQ(manifest_stale(dir / "long.json", longer, dir.path(), true), std::nullopt);
   EXPECT_NE(manifest_stale(dir / "long.json", head, dir.path(), true), std::nullopt);
   EXPECT_EQ(manifest_stale(dir / "short.json", head, dir.path(), true), std::nullopt);

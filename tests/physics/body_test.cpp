@@ -49,6 +49,35 @@ TEST(Body, BookBodyIsTheBookWithItsMomentsAndNoSurface) {
 }
 
 // A cube's moments m(a² + a²)/12 are one value; a 1 × 1 × 2 box's are two (the square's axis
+
+// book_with_moments inverts the cuboid's moments: its box, integrated as a mesh by
+// mass_properties (not the book's formula), has the moments asked for; the default book's
+// moments give back its own sides; moments that break the triangle inequality, or a flat
+// body's (I_x + I_y = I_z), give no box.
+TEST(Body, BookWithMomentsHasThoseMomentsOrIsNone) {
+  const Eigen::Vector3d wanted(0.8235, 0.1812, 1.0);  // a phone's: x intermediate, y smallest
+  const std::optional<Book> book = book_with_moments(wanted, 2.5);
+  ASSERT_TRUE(book.has_value());
+  EXPECT_EQ(book->mass, 2.5);
+  Eigen::Matrix3Xd vertices;
+  Eigen::Matrix3Xi triangles;
+  box_mesh(book->size, vertices, triangles);
+  const MassPropertiesResult mass = mass_properties(vertices, triangles);
+  ASSERT_TRUE(mass.ok()) << mass.error;
+  const double density = 2.5 / mass.properties.volume;
+  // The box is axis-aligned: its principal moments, ascending, are about y, x, z.
+  const Eigen::Vector3d ascending = density * mass.properties.principal_moments;
+  EXPECT_NEAR(ascending[0], wanted.y(), 1e-12);
+  EXPECT_NEAR(ascending[1], wanted.x(), 1e-12);
+  EXPECT_NEAR(ascending[2], wanted.z(), 1e-12);
+  const Book original;
+  const std::optional<Book> again = book_with_moments(original.principal_moments(), original.mass);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_LT((again->size - original.size).norm(), 1e-12);
+  EXPECT_FALSE(book_with_moments({0.2, 0.7, 1.0}, 1.0).has_value());    // 0.2 + 0.7 < 1
+  EXPECT_FALSE(book_with_moments({0.25, 0.75, 1.0}, 1.0).has_value());  // flat: c = 0
+  EXPECT_FALSE(book_with_moments({0.8, 0.2, 1.0}, 0.0).has_value());
+}
 // apart); the book's three differ. Within 1e-12 counts as equal, 1e-9 apart does not.
 TEST(Body, DistinctMomentsCountsTheCubeTheSymmetricBodyAndTheBook) {
   Book cube;

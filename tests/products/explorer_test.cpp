@@ -4,9 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "scene/scene.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::products {
 namespace {
@@ -57,7 +61,8 @@ TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {
 }
 
 // A book scene whose every number is given, as the page reads it: the text written out by hand
-// from the scene file (speed = dt × steps_per_frame × fps = 0.5 × 2 × 25 time units per second).
+// from the scene file (speed = dt × steps_per_frame × fps = 0.5 × 2 × 25 time units per second;
+// duration = (frames − 1) × dt × steps_per_frame = 299 × 0.5 × 2).
 TEST(ExplorerSceneJson, ABookSceneIsTheTextThePageReads) {
   const std::string json = explorer_scene_json(scene::parse_scene_text(
       "[scene]\nname = \"b\"\ntitle = \"A \\\"book\\\"\"\ndescription = \"x</script>\"\n"
@@ -73,7 +78,32 @@ TEST(ExplorerSceneJson, ABookSceneIsTheTextThePageReads) {
             "\"normalize\":true,\"damping\":false,\"k\":2.5,\"cells\":0,\"dt\":0.5,"
             "\"axis\":\"custom\",\"w\":[0.1,-2,0],\"jiggle\":0.001,\"seed\":9223372036854775807,"
             "\"speed\":25,\"showL\":false,\"showAxes\":true},"
-            "\"book\":{\"size\":[1.5,2,0.25],\"mass\":3}}");
+            "\"book\":{\"size\":[1.5,2,0.25],\"mass\":3},\"duration\":299}");
+}
+
+// A scene's measured ω goes into the page whole, with each sample's L/|L| (L = I·ω with the
+// book's moments m(b² + c²)/12, …: here a book 2 × 4 × 6 of mass 12, I = (52, 40, 20)), a
+// sample with L = 0 left out of the trail.
+TEST(ExplorerSceneJson, AMeasuredOmegaGoesInWithItsDirections) {
+  bookspin::test::ScratchDir dir;
+  std::ofstream(dir.path() / "w.csv") << "t,wx,wy,wz\n0,1,0,0\n0.5,0,0,0\n1,1,1,1\n";
+  std::ofstream(dir.path() / "s.toml")
+      << "[book]\nsize = [2, 4, 6]\nmass = 12\n[measured]\nomega = \"w.csv\"\n";
+  const std::string json = explorer_scene_json(scene::parse_scene(dir.path() / "s.toml"));
+  const std::string head =
+      "\"measured\":{\"t\":[0,0.5,1],\"w\":[1,0,0,0,0,0,1,1,1],\"ut\":[0,1],\"u\":[1,0,0,";
+  const std::size_t at = json.find(head);
+  ASSERT_NE(at, std::string::npos) << json;
+  std::istringstream rest(json.substr(at + head.size()));
+  const double norm = std::sqrt(52.0 * 52 + 40 * 40 + 20 * 20);
+  for (const double c : {52 / norm, 40 / norm, 20 / norm}) {
+    double got = 0;
+    char comma = 0;
+    rest >> got >> comma;
+    EXPECT_NEAR(got, c, 1e-15) << json;
+  }
+  EXPECT_FALSE(has(explorer_scene_json(scene::parse_scene_text("[book]\nmass = 2\n", "t.toml")),
+                   "measured"));
 }
 
 }  // namespace

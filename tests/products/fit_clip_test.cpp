@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -210,7 +211,7 @@ TEST(FitClip, RendersEachTossBesideTheFitAndIsUpToDate) {
   FitJob job = render_job(dir);
   std::vector<std::string> summary;
   ASSERT_EQ(make_fit(job, &summary), cache::Outcome::made);
-  const FitLayout layout = fit_layout(job.out_dir, "toss", 2, {"mp4"});
+  const FitLayout layout = fit_layout(job.out_dir, "toss", 2, true, {"mp4"});
   ASSERT_EQ(layout.videos.size(), 2u);
   EXPECT_EQ(layout.videos[0], dir / "out" / "toss-toss1.mp4");
   const std::string listed = read_text_file(manifest, "manifest");
@@ -218,7 +219,11 @@ TEST(FitClip, RendersEachTossBesideTheFitAndIsUpToDate) {
     EXPECT_TRUE(fs::exists(video)) << video;
     EXPECT_NE(listed.find("\"" + video.filename().string() + "\""), std::string::npos) << listed;
   }
-  EXPECT_NE(summary.back().find("2 video(s)"), std::string::npos) << summary.back();
+  const auto wrote = std::find_if(summary.begin(), summary.end(), [](const std::string& line) {
+    return line.rfind("wrote ", 0) == 0;
+  });
+  ASSERT_NE(wrote, summary.end());
+  EXPECT_NE(wrote->find("2 video(s)"), std::string::npos) << *wrote;
   // No scratch left behind: OUT/toss holds the manifest alone.
   std::vector<std::string> in_folder;
   for (const auto& entry : fs::directory_iterator(dir / "out" / "toss"))

@@ -20,8 +20,12 @@ TEST(FitProduct, LayoutNamesEveryFile) {
   EXPECT_EQ(layout.csv, fs::path("out/rec-fit.csv"));
   EXPECT_EQ(layout.body_csv, fs::path("out/rec-fit-body.csv"));
   EXPECT_EQ(layout.pngs, (std::vector<fs::path>{"out/rec-toss1.png", "out/rec-toss2.png"}));
+  EXPECT_EQ(layout.scenes, (std::vector<fs::path>{"out/rec-toss1.toml", "out/rec-toss2.toml"}));
+  EXPECT_EQ(layout.measured,
+            (std::vector<fs::path>{"out/rec-toss1-measured.csv", "out/rec-toss2-measured.csv"}));
   EXPECT_EQ(layout.manifest, fs::path("out/rec/fit-manifest.json"));
-  EXPECT_EQ(layout.outputs().size(), 4u);
+  EXPECT_EQ(layout.outputs().size(), 8u);
+  EXPECT_EQ(fit_layout("out", "rec", 2, false).outputs().size(), 4u);
 }
 
 TEST(FitProduct, CsvsOfAFitGivenByHand) {

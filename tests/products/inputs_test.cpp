@@ -110,6 +110,7 @@ void write_sandbox(const fs::path& dir) {
   write_obj(dir, {1.0f, 2.0f, 3.0f});
   write_mtl(dir, "0.8 0.1 0.1");
   fs::copy_file(dir / "box.obj", dir / "copy.obj");
+  std::ofstream(dir / "measured.csv") << "t,wx,wy,wz\n0,1,2,3\n";  // measured.omega
   std::ofstream(dir / "obj.toml") << "[model]\nkind = \"rigid-matrix\"\n[body]\nshape = \"mesh\"\n"
                                      "mesh = \"box.obj\"\n";
   write_gltf(dir, {1.0f, 2.0f, 3.0f});
@@ -197,6 +198,7 @@ std::vector<Input> inputs() {
       {"render.sphere", Base::book, {}, {"render.sphere=true"}},
       {"render.poinsot", Base::book, {}, {"render.poinsot=true"}},
       {"render.caption_twist", Base::book, {twist}, {"render.caption_twist=true"}},
+      {"measured.omega", Base::book, {}, {"measured.omega=\"measured.csv\""}},
       {"compare", Base::book, {}, {compare}},
       {"compare.label", Base::book, {compare}, tile("\"b\"", "\"c\"")},
       {"compare.model.kind",
@@ -248,6 +250,14 @@ std::vector<Input> inputs() {
   // The .bin the glTF pulls in: the .gltf unchanged, the box inside it longer.
   list.push_back({"file:body.mesh .bin geometry", Base::gltf, {}, {}, [](const fs::path& dir) {
                     write_bytes(dir / "box.bin", box_gltf_buffer({1.0f, 2.0f, 3.5f}));
+                  }});
+  // The measured ω's samples (measured.omega): the explorer draws them.
+  list.push_back({"file:measured.omega",
+                  Base::book,
+                  {"measured.omega=\"measured.csv\""},
+                  {},
+                  [](const fs::path& dir) {
+                    std::ofstream(dir / "measured.csv") << "t,wx,wy,wz\n0,1,2,3.5\n";
                   }});
   // Each product's own options.
   list.push_back({"job:png", Base::book, {}, {}, {}, [](ClipJob& job) { job.write_png = false; }});

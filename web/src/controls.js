@@ -101,6 +101,8 @@ export class Controls {
     const scene = this.scenes.find((x) => x.name === state.scene);
     $('sceneTitle').textContent = scene ? scene.title || scene.name : '';
     $('sceneDescription').textContent = scene ? scene.description || '' : '';
+    // The time slider spans the scene's run (bookspin explore's `duration`), or 300 time units.
+    $('slider').max = Math.max(scene && scene.duration > 0 ? scene.duration : 300, Math.ceil(state.t));
     // A comparison of more methods than the page runs says what it left out.
     const left = scene && scene.left_out ? scene.left_out : [];
     $('sceneLeftOut').textContent = left.length ? `The page runs two of this scene's methods; ` +

@@ -38,6 +38,9 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     omegaNow: () => app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body)),
     /** Each plotted line's drawn height in CSS pixels: {panel, run, component, px}. */
     plotSpans: () => app.plotSpans || [],
+    /** The scene's measured ω as drawn now: {plot: samples drawn as dots on the ω panel,
+     * sphere: L/|L| points of the measured trail on the sphere} (0, 0 without one). */
+    measuredDrawn: () => ({ plot: app.measuredDots || 0, sphere: sphere.measuredPoints }),
     /** Each run's flip detector: {count, first, period} (analysis::FlipDetector; the exact
      * model's closed form), and the exact motion's from the same start at the page's t. */
     flipMeasures: () => app.runs.list.map((r) => r.session.flips()),

@@ -39,6 +39,8 @@ function startApp(wasm, engines) {
     costs: { physics: 0, view: 0, sphere: 0, plots: 0, readout: 0 },
   };
   const base = () => space.sceneBase(SCENES, app.state.scene);
+  /** The scene's measured ω ({t, w, ut, u}, bookspin explore), or null. */
+  const measured = () => (SCENES.find((s) => s.name === app.state.scene) || {}).measured || null;
 
   /** Steps towards time `target` (for at most `ms`, the rest a piece per frame). */
   function catchUp(target, ms) {
@@ -74,8 +76,11 @@ function startApp(wasm, engines) {
     waitingNotice();
     for (const run of waiting) {
       app.tables.get(run.session.moments(), run.session.startOmega()).then((table) => {
-        if (!app.runs.supply(run, table)) return;
+        // A run supplied already (the test hooks build its table at once) or gone: the notice
+        // ends all the same once no run waits.
+        const supplied = app.runs.supply(run, table);
         if (!app.runs.pending()) app.waitingSince = null;
+        if (!supplied) { waitingNotice(); return; }
         waitingNotice();
         if (app.pacer.target === null && app.state.t > 0) app.pacer.target = app.state.t;
         app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
@@ -164,13 +169,15 @@ function startApp(wasm, engines) {
     // The 2D panels only when what they show changed; while playing, the plots (their whole
     // history rescaled each time) ten times a second, the sphere every frame.
     const s = $('sphere'), p = $('plots');
-    if (changed('sphere', [s.width, s.height, ...list.flatMap((r) => [r.trail, r.trail.length])]) || sphere.redraw) {
-      sphere.draw(list);
+    if (changed('sphere', [s.width, s.height, measured(), ...list.flatMap((r) => [r.trail, r.trail.length])]) || sphere.redraw) {
+      sphere.draw(list, measured(), app.state.t);
     }
     lap('sphere');
     if ((!app.playing || t0 - app.plotsDrawnAt >= 100) &&
-        changed('plots', [p.width, p.height, ...list.flatMap((r) => [r.history, r.history.length])])) {
-      app.plotSpans = drawPlots(p, list);
+        changed('plots', [p.width, p.height, measured(), ...list.flatMap((r) => [r.history, r.history.length])])) {
+      const drawn = drawPlots(p, list, measured());
+      app.plotSpans = drawn.spans;
+      app.measuredDots = drawn.measuredDots;
       app.plotsDrawnAt = t0;
     }
     lap('plots');

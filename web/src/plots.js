@@ -24,15 +24,27 @@ export function flooredRange(lo, hi, floor) {
   return [mid - floor, mid + floor];
 }
 
-/** Draws the three panels of `runs` on `canvas`, with a legend of the runs and a time axis;
- * returns each line's drawn height in CSS pixels, {panel, run, component, px}. */
-export function drawPlots(canvas, runs) {
+/** The samples of `measured` (the scene's measured ω, bookspin explore: {t, w 3×N flattened})
+ * up to time `tmax`: [[t, [wx, wy, wz]], ...]. */
+function measuredUpTo(measured, tmax) {
+  const out = [];
+  if (!measured) return out;
+  for (let i = 0; i < measured.t.length && measured.t[i] <= tmax; ++i)
+    out.push([measured.t[i], measured.w.slice(3 * i, 3 * i + 3)]);
+  return out;
+}
+
+/** Draws the three panels of `runs` on `canvas`, with a legend of the runs and a time axis,
+ * and the scene's `measured` ω (or null) up to the runs' time as dots on the ω panel; returns
+ * {spans: each line's drawn height in CSS pixels, {panel, run, component, px}; measuredDots:
+ * how many measured samples were drawn}. */
+export function drawPlots(canvas, runs, measured = null) {
   const g = canvas.getContext('2d', CANVAS_2D);
   const scale = canvas.width / Math.max(1, canvas.clientWidth || canvas.width);
   g.setTransform(scale, 0, 0, scale, 0, 0);
   const W = canvas.width / scale, H = canvas.height / scale;
   g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
-  if (!runs.length) return;
+  if (!runs.length) return { spans: [], measuredDots: 0 };
   g.font = `${FONT_PX}px sans-serif`;
   // Legend: each run's line style and method.
   let y = FONT_PX + 2;
@@ -43,10 +55,17 @@ export function drawPlots(canvas, runs) {
     g.fillStyle = r.colour; g.fillText(r.label, 36, y);
     y += FONT_PX + 4;
   });
+  if (measured) {
+    g.fillStyle = '#ddd';
+    for (let c = 0; c < 3; ++c) { g.fillStyle = OMEGA_COLOURS[c]; g.beginPath(); g.arc(12 + 8 * c, y - 5, 3, 0, 2 * Math.PI); g.fill(); }
+    g.fillStyle = '#ddd'; g.fillText('measured (the scene\'s measured ω)', 36, y);
+    y += FONT_PX + 4;
+  }
   const axisH = FONT_PX + 6;  // the time axis under the last panel
   const top = y;
   const ph = (H - top - axisH) / PANELS.length;
   const tmax = Math.max(1e-9, ...runs.map((r) => r.history[r.history.length - 1].t));
+  const samples = measuredUpTo(measured, tmax);
   g.lineWidth = 1;
   const spans = [];  // how tall each line is drawn (CSS px): the tests' flat-line check
   PANELS.forEach(([title, f, floor], k) => {
@@ -57,6 +76,7 @@ export function drawPlots(canvas, runs) {
         for (const v of f(s, r)) if (Number.isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
       }
     }
+    if (k === 0) for (const [, w] of samples) for (const v of w) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
     [lo, hi] = flooredRange(lo, hi, floor);
     g.fillStyle = '#ddd';
     let x = 6;
@@ -99,11 +119,21 @@ export function drawPlots(canvas, runs) {
       }
     });
     g.setLineDash([]);
+    // The measured ω: a dot a sample and component, under the runs' lines' colours.
+    if (k === 0) {
+      for (const [t, w] of samples) {
+        const px = 4 + (W - 8) * t / tmax;
+        w.forEach((v, c) => {
+          g.fillStyle = OMEGA_COLOURS[c];
+          g.beginPath(); g.arc(px, y0 + h - h * (v - lo) / (hi - lo), 2, 0, 2 * Math.PI); g.fill();
+        });
+      }
+    }
   });
   // The time axis: 0 at the left, the latest t at the right.
   g.fillStyle = '#aaa';
   const end = `t = ${tmax.toFixed(1)}`;
   g.fillText('t = 0', 4, H - 6);
   g.fillText(end, W - 4 - g.measureText(end).width, H - 6);
-  return spans;
+  return { spans, measuredDots: samples.length };
 }

@@ -36,6 +36,7 @@ export class Sphere {
     this.redraw = true;
     this.axisLabels = [];  // the axis names drawn
     this.dots = [];  // the L dots drawn: {x, y (canvas pixels), u (body-frame L/|L|)}
+    this.measuredPoints = 0;  // the points of the measured L/|L| trail drawn
     this.wire();
   }
 
@@ -125,6 +126,21 @@ export class Sphere {
     ctx.globalAlpha = 1;
   }
 
+  /** The measured L/|L| up to time `t`: a small dot a sample (the far half dimmed). */
+  drawMeasured(g, measured, t) {
+    const { R, cx, cy } = this.geometry();
+    const k = this.scale();
+    g.fillStyle = '#f4f4f4';
+    let n = 0;
+    for (; n < measured.ut.length && measured.ut[n] <= t; ++n) {
+      const p = this.project(measured.u.slice(3 * n, 3 * n + 3));
+      g.globalAlpha = p[2] >= 0 ? 0.9 : 0.3;
+      g.beginPath(); g.arc(cx + R * p[0], cy - R * p[1], 1.8 * k, 0, 2 * Math.PI); g.fill();
+    }
+    g.globalAlpha = 1;
+    this.measuredPoints = n;
+  }
+
   /** The body's principal axes where they pierce the sphere, named by moment (`order`: body
    * axes by ascending moment); the ends on the far side dimmed. */
   drawAxes(g, order) {
@@ -153,8 +169,10 @@ export class Sphere {
     g.globalAlpha = 1;
   }
 
-  /** Draws the sphere for `runs` (the first run's body gives the polhodes). */
-  draw(runs) {
+  /** Draws the sphere for `runs` (the first run's body gives the polhodes), and the scene's
+   * `measured` L/|L| ({ut, u}: times and body-frame unit vectors, bookspin explore; or null) up
+   * to `time` as a white dotted trail. */
+  draw(runs, measured = null, time = 0) {
     const g = this.canvas.getContext('2d', CANVAS_2D);
     const { W, H, R, cx, cy } = this.geometry();
     g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
@@ -164,6 +182,7 @@ export class Sphere {
     g.fillStyle = '#ccc'; g.font = `${FONT_PX * k}px sans-serif`;
     g.fillText('L/|L| in the body frame · click: start here', 8 * k, (FONT_PX + 2) * k);
     this.dots = [];
+    this.measuredPoints = 0;
     if (!runs.length) return;
     const I = runs[0].session.moments();
     if (I.join() !== this.moments) {
@@ -199,6 +218,7 @@ export class Sphere {
     });
     g.drawImage(L.back, 0, 0);
     g.drawImage(L.trails, 0, 0);
+    if (measured) this.drawMeasured(g, measured, time);
     this.drawAxes(g, runs[0].session.principalOrder());
     // Each run's current L: a filled dot on the front half, a dim ring on the far side.
     for (const r of runs) {

@@ -1,0 +1,124 @@
+#include "products/fit_scene.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "common/json_string.hpp"
+#include "common/number_text.hpp"
+#include "scene/limits.hpp"
+
+namespace bookspin::products {
+namespace {
+
+/// The scene's substep (s) and substeps a frame: at 30 frames/s a quarter of real time.
+constexpr double kDt = 1.0 / 240.0;
+constexpr int kStepsPerFrame = 2;
+/// The longest scene (s): four half periods near the separatrix may be long.
+constexpr double kMaxDuration = 30.0;
+
+std::string number(double value, const char* what) {
+  return finite_text(value, what, NumberStyle::shortest);
+}
+
+std::string vector3(const Eigen::Vector3d& v, const char* what) {
+  std::string text(1, '[');
+  for (int c = 0; c < 3; ++c) text.append(c ? ", " : "").append(number(v[c], what));
+  return text.append("]");
+}
+
+std::string fixed(double value, int digits) {
+  std::ostringstream text;
+  text.precision(digits);
+  text << std::fixed << value;
+  return text.str();
+}
+
+}  // namespace
+
+Eigen::Matrix3d toss_scene_frame(const fit::BodyEstimate& body) {
+  Eigen::Matrix3d frame;
+  frame << body.axes.col(1), -body.axes.col(0), body.axes.col(2);
+  return frame;
+}
+
+std::optional<physics::Book> toss_book(const fit::BodyEstimate& body) {
+  const Eigen::Vector3d& r = body.ratios;
+  std::optional<physics::Book> book = physics::book_with_moments({r[1], r[0], r[2]}, 1.0);
+  if (book && book->size.minCoeff() < scene::limit("book.size").min) return std::nullopt;
+  return book;
+}
+
+std::string toss_scene_name(const std::string& recording, int toss) {
+  std::string name = recording + "-toss" + std::to_string(toss);
+  std::replace(name.begin(), name.end(), '.', '_');
+  if (!std::isalnum(static_cast<unsigned char>(name.front()))) name = "recording-" + name;
+  return name;
+}
+
+std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::string& recording,
+                            const std::string& measured_csv) {
+  const fit::TossFit& t = fit.tosses.at(toss);
+  const std::optional<physics::Book> book = toss_book(fit.body);
+  if (!book) throw InternalError("toss_scene_text: the fitted moments make no book");
+  const Eigen::Vector3d omega0 = toss_scene_frame(fit.body).transpose() * t.omega0;
+  const double flight = t.flight.t_end - t.flight.t_start;
+  const double duration =
+      std::max(flight, std::min(kMaxDuration, 4.0 * t.half_period_fitted.value_or(0.0)));
+  const std::string n = std::to_string(toss + 1);
+  const Eigen::Vector3d& r = fit.body.ratios;
+  const std::string moments = fixed(r[0], 4) + " : " + fixed(r[1], 4) + " : 1";
+  const std::string description =
+      "Toss " + n + " of the recording " + recording + " (" + fixed(t.flight.t_start, 3) + "–" +
+      fixed(t.flight.t_end, 3) + " s), fitted by bookspin fit: a box with the fitted moments " +
+      moments + " spinning from the fitted ω0 under the exact motion, t = 0 the flight's start" +
+      (t.stable ? "; a stable toss: it wobbles, it does not flip" : "") +
+      (fit.body.moments_determined ? "" : "; the moments are poorly determined") + ".";
+  std::string text =
+      "# Toss " + n + " of the recording " + recording +
+      " as bookspin fit fitted it (docs/phone-lab.md):\n"
+      "# the exact motion of a box with the fitted moment ratios from the fitted ω0, in the\n"
+      "# body frame x, y, z = the fitted principal axes 2, -1, 3 (their phone-frame components\n"
+      "# in the fit's -fit-body.csv). Time unit: the second; ω in rad/s; t = 0 the flight's\n"
+      "# start.\n"
+      "[scene]\n"
+      "name = " +
+      json_string(toss_scene_name(recording, toss + 1)) +
+      "\ntitle = " + json_string(recording + ", toss " + n + ": the fitted exact motion") +
+      "\ndescription = " + json_string(description) +
+      "\n\n[model]\nkind = \"exact\"\n\n"
+      "[book]  # moments about x, y, z: I2/I3, I1/I3, 1 (mass 1)\n"
+      "size = " +
+      vector3(book->size, "toss scene book.size") +
+      "\nmass = 1.0\n\n[initial]\nangular_velocity = " +
+      vector3(omega0, "toss scene initial.angular_velocity") + "  # rad/s, body frame\n\n" +
+      "[time]\ndt = " + number(kDt, "toss scene time.dt") +
+      "  # s\nsteps_per_frame = " + std::to_string(kStepsPerFrame) +
+      "  # 30 frames/s: a quarter of real time\nduration = " +
+      number(duration, "toss scene time.duration") +
+      "  # s: the flight, or four fitted half periods\n\n"
+      "[render]\npanel = true\nsphere = true\nshow_angular_momentum = true\n";
+  if (!measured_csv.empty())
+    text += "\n[measured]\nomega = " + json_string(measured_csv) +
+            "  # the toss's measured ω, body frame: the explorer shows it beside the fit\n";
+  return text;
+}
+
+CsvTable toss_measured_csv(const fit::GyroRecording& recording, const fit::FitResult& fit,
+                           int toss) {
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> omega;
+  fit::measured_omega(recording, fit, toss, t, omega);
+  const Eigen::Matrix3d to_body = toss_scene_frame(fit.body).transpose();
+  const double t0 = fit.tosses.at(toss).flight.t_start;
+  CsvTable table{{"t", "wx", "wy", "wz"}, {}};
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const Eigen::Vector3d w = to_body * omega[i];
+    table.rows.push_back(
+        {shortest_cell(t[i] - t0), shortest_cell(w[0]), shortest_cell(w[1]), shortest_cell(w[2])});
+  }
+  return table;
+}
+
+}  // namespace bookspin::products
