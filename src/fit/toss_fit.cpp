@@ -1,10 +1,12 @@
 #include "fit/toss_fit.hpp"
 
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 
@@ -179,6 +181,11 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
   solver_options.gradient_tolerance = 1e-12;
   solver_options.parameter_tolerance = 1e-10;
   solver_options.logging_type = ceres::SILENT;
+  // Ceres reports a failed step through glog (its "Linear solver failure" warnings and the
+  // "Terminating" error) whatever logging_type says; the fit says what failed in its own one
+  // line (docs/architecture.md, "Errors"), so glog keeps only FATAL.
+  static std::once_flag quiet;
+  std::call_once(quiet, [] { FLAGS_minloglevel = google::GLOG_FATAL; });
   solver_options.num_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem.get(), &summary);
