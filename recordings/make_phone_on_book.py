@@ -100,7 +100,7 @@ def main():
     parts = pieces()
     end = parts[-1][1]
     pause = parts[8][1] - AFTER / 2  # mid-rest after the second toss
-    rows, t, p = [], 0.0, 0
+    rows, t, p, state = [], 0.0, 0, None
     while t < end:
         while p + 1 < len(parts) and t >= parts[p][1]:
             p += 1
@@ -111,7 +111,11 @@ def main():
         elif kind == "throw":
             w = [s * b[i] + 4.0 * rng.gauss(0, 1) for i in range(3)]
         elif kind == "flight":
-            w = to_phone(flight(a, t - t0))
+            # From the last sample of this flight (or its release), not from the release.
+            if state is None or state[2] != t0:
+                state = (t0, a, t0)  # (time, principal ω, this flight's release)
+            state = (t, flight(state[1], t - state[0]), t0)
+            w = to_phone(state[1])
         else:
             w = [(1 - s) * a[i] + 6.0 * rng.gauss(0, 1) for i in range(3)]
         w = [w[i] + BIAS[i] + rng.gauss(0, NOISE) for i in range(3)]
