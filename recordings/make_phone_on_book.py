@@ -29,7 +29,7 @@ MOMENTS = ((SIDES[0] ** 2 + SIDES[2] ** 2) / 12, (SIDES[1] ** 2 + SIDES[2] ** 2)
 RATIOS = (MOMENTS[0] / MOMENTS[2], MOMENTS[1] / MOMENTS[2], 1.0)
 TURN_DEG = 8.0  # the phone turned in the cover's plane
 # Each toss: ω0 (rad/s) about principal axes 1, 2, 3 at release, and its free flight (s).
-# Four about the intermediate axis (2), 8–20 % off it; the last about the largest (3): stable.
+# Four about the intermediate axis (2), 8–22 % off it (|ω1, ω3| / |ω2|); the last about the largest (3): stable.
 TOSSES = (((2.5, 17.0, 1.8), 1.4),
           ((1.2, 18.0, -2.8), 1.3),
           ((-3.2, 16.0, 1.4), 1.3),
