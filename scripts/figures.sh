@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Every figure of `make figures` into OUT: the sweeps, the engines' accuracy report, the explorer
+# Every figure of `make figures` into OUT: the sweeps, the engines' accuracy report, the
+# conformance kit's league table, the phone-toss lab's fit of the sample recording, the explorer
 # page (where emscripten and npm are installed), then every scene rendered and plotted and the
 # gallery OUT/index.html (scripts/render-all.sh), in that order, so that the one gallery written
 # at the end shows them all (docs/outputs.md).
@@ -62,8 +63,18 @@ else
 fi
 "$bookspin" flipcheck league scenes/flipcheck/*.toml --motions "${motions[@]}" \
   --methods "$league_methods" -o "$out"
+# The phone-toss lab (docs/phone-lab.md) on the sample recording (recordings/README.md): the
+# fit's CSVs, a chart, a scene and a clip of each toss (the book drawn, 640×360; --quick: in
+# real time), which the gallery shows and the explorer page below opens (?scene=<recording>-toss1).
+recording=phone-on-book-synthetic
+fit_quick=()
+[ -z "$quick" ] || fit_quick=(--slow-motion 1)
+"$bookspin" fit "recordings/$recording" --render --scene "recordings/$recording.toml" \
+  "${fit_quick[@]}" -o "$out"
+tosses=("$out/$recording"-toss[0-9]*.toml)
 if command -v em++ >/dev/null && command -v npm >/dev/null; then
-  bash web/build.sh "$build" && "$bookspin" explore --engines scenes/*.toml sweeps/*.toml -o "$out"
+  bash web/build.sh "$build" &&
+    "$bookspin" explore --engines scenes/*.toml sweeps/*.toml "${tosses[@]}" -o "$out"
 else
   echo "figures: no emscripten or npm: $out/explorer.html not made (scripts/install-deps.sh)"
 fi

@@ -15,6 +15,7 @@
 #include "products/accuracy.hpp"
 #include "products/clip.hpp"
 #include "products/explorer.hpp"
+#include "products/fit.hpp"
 #include "products/flipcheck.hpp"
 #include "products/gallery_page.hpp"
 #include "products/gltf.hpp"
@@ -156,6 +157,38 @@ std::string utc_now() {
   return buffer;
 }
 
+/// Every fit in OUT (OUT/<recording>/fit-manifest.json, by recording name), each file as its
+/// manifest lists it: the tables, and per toss its chart, its clip and its scene (linked into
+/// the explorer page where OUT/explorer.html is there).
+std::vector<GalleryFit> fits_in(const fs::path& out) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (exists(out, path_in_out(out, fit_layout(out, name, 0).manifest))) names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  const std::string page = if_there(out, explorer_page_path(out));
+  std::vector<GalleryFit> fits;
+  for (const std::string& name : names) {
+    const FitLayout bare = fit_layout(out, name, 0);
+    const Listed listed(out, bare.manifest);
+    GalleryFit fit{name, listed(bare.csv), listed(bare.body_csv), {}};
+    // The tosses: N = 1, 2, … while the manifest lists the chart of toss N.
+    for (int n = 1;; ++n) {
+      const FitLayout layout = fit_layout(out, name, n, true, {"mp4", "webm"});
+      GalleryToss toss{n, listed(layout.pngs.back()), listed(layout.videos[2 * (n - 1)]), ""};
+      if (toss.chart.empty()) break;
+      if (toss.video.empty()) toss.video = listed(layout.videos[2 * (n - 1) + 1]);
+      if (!page.empty() && !listed(layout.scenes.back()).empty())
+        toss.explorer = page + "?scene=" + layout.scenes.back().stem().string();
+      fit.tosses.push_back(std::move(toss));
+    }
+    if (!fit.csv.empty() || !fit.tosses.empty()) fits.push_back(std::move(fit));
+  }
+  return fits;
+}
+
 }  // namespace
 
 GalleryLayout gallery_layout(const fs::path& out_dir) {
@@ -185,13 +218,14 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
 
   GalleryHeader header{
-      output::program_version(), output::program_build_id(), "", machine(), "", ""};
+      output::program_version(), output::program_build_id(), "", machine(), "", "", {}};
   const FlipcheckLeagueLayout league = flipcheck_league_layout(out);
   if (exists(out, path_in_out(out, league.manifest))) {
     const Listed tabled(out, league.manifest);
     header.flipcheck_league = tabled(league.html);
     header.flipcheck_league_csv = tabled(league.csv);
   }
+  header.fits = fits_in(out);
   // Up to date: the same page but for its date (output/manifest.hpp).
   GalleryOutcome done;
   done.entries = entries.size();

@@ -82,6 +82,41 @@ void write_entry(std::ostream& out, const GalleryEntry& e) {
   out << "</p>\n</section>\n";
 }
 
+/// The phone-toss lab's section (id "phone-lab"): per fitted recording its two tables, then per
+/// toss its chart and clip side by side and a line of links.
+void write_fits(std::ostream& out, const std::vector<GalleryFit>& fits) {
+  out << "<section class=\"clip\" id=\"phone-lab\">\n<h2>Phone-toss lab: a measured toss beside "
+         "the exact motion</h2>\n<p>A phone's gyroscope recording of tosses (phyphox), each "
+         "free flight fitted with the exact torque-free motion (<code>bookspin fit</code>, "
+         "docs/phone-lab.md): per toss the measured &omega; (dots) against the fitted exact "
+         "&omega; (lines) with the momentum sphere, and the body turning as the phone turned "
+         "beside the fitted exact motion.</p>\n";
+  for (const GalleryFit& fit : fits) {
+    out << "<h3>" << html_escape(fit.recording) << "</h3>\n<p class=\"files\">"
+        << html_escape(fit.recording);
+    for (const std::string* csv : {&fit.csv, &fit.body_csv})
+      if (!csv->empty()) out << " · <a href=" << attr(*csv) << ">" << html_escape(*csv) << "</a>";
+    out << "</p>\n";
+    for (const GalleryToss& toss : fit.tosses) {
+      const std::string what = fit.recording + ", toss " + std::to_string(toss.number);
+      out << "<div class=\"media\">\n";
+      if (!toss.chart.empty())
+        out << "<a href=" << attr(toss.chart)
+            << "><img class=\"plot\" loading=\"lazy\" src=" << attr(toss.chart)
+            << " alt=\"measured and fitted omega of " << html_escape(what) << "\"></a>\n";
+      if (!toss.video.empty())
+        out << "<video controls preload=\"metadata\" src=" << attr(toss.video) << "></video>\n";
+      out << "</div>\n<p class=\"files\">toss " << toss.number;
+      if (!toss.chart.empty()) out << " · <a href=" << attr(toss.chart) << ">chart</a>";
+      if (!toss.video.empty()) out << " · <a href=" << attr(toss.video) << ">clip</a>";
+      if (!toss.explorer.empty())
+        out << " · <a href=" << attr(toss.explorer) << ">open in the explorer</a>";
+      out << "</p>\n";
+    }
+  }
+  out << "</section>\n";
+}
+
 }  // namespace
 
 std::string html_escape(std::string_view text) {
@@ -165,6 +200,7 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
       out << " · <a href=" << attr(header.flipcheck_league_csv) << ">its CSV</a>";
     out << ".</p>\n</section>\n";
   }
+  if (!header.fits.empty()) write_fits(out, header.fits);
   for (const auto& e : entries) write_entry(out, e);
   out << "</body>\n</html>\n";
   return out.str();

@@ -31,6 +31,23 @@ struct GalleryEntry {
   std::vector<std::string> csvs;  ///< diagnostics CSVs
 };
 
+/// One toss of a phone-toss lab fit (`bookspin fit`, docs/phone-lab.md) on the page. Paths are
+/// relative to the page's folder; empty: not there.
+struct GalleryToss {
+  int number = 0;        ///< N of "<recording>-toss<N>", from 1
+  std::string chart;     ///< "<recording>-toss<N>.png": measured ω, fitted lines, the sphere
+  std::string video;     ///< "<recording>-toss<N>.mp4" (or .webm) with --render
+  std::string explorer;  ///< "explorer.html?scene=<recording>-toss<N>" where both are there
+};
+
+/// A fitted recording on the page: its tables and its tosses, as the fit's manifest lists them.
+struct GalleryFit {
+  std::string recording;  ///< the recording's name, as it names the outputs
+  std::string csv;        ///< "<recording>-fit.csv": one row per toss
+  std::string body_csv;   ///< "<recording>-fit-body.csv": the body's row
+  std::vector<GalleryToss> tosses;
+};
+
 /// What the page says about how it was made.
 struct GalleryHeader {
   std::string version;   ///< bookspin's version
@@ -41,6 +58,9 @@ struct GalleryHeader {
   /// manifest lists them (`bookspin flipcheck league`, docs/flipcheck.md); else empty.
   std::string flipcheck_league;
   std::string flipcheck_league_csv;
+  /// The phone-toss lab's fits in OUT (one per OUT/<recording>/fit-manifest.json, by name),
+  /// shown in a "Phone-toss lab" section after the league; none: no section.
+  std::vector<GalleryFit> fits;
 };
 
 /// The page's groups, in page order.
@@ -69,7 +89,8 @@ GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_ex
 std::string html_escape(std::string_view text);
 
 /// A self-contained HTML5 page (inline CSS, no scripts): a header saying what the page is and
-/// how it was made, then `entries` in the order given.
+/// how it was made, the league table's and the phone-toss lab's sections where `header` has
+/// them, then `entries` in the order given.
 std::string gallery_html(const std::vector<GalleryEntry>& entries, const GalleryHeader& header);
 
 }  // namespace bookspin::products

@@ -10,10 +10,14 @@ writes:
   - every file the page links or shows (src=, href=, relative) exists under OUT,
   - the engines' accuracy report (an accuracy product, not a sweep) shows its four charts,
   - the conformance kit's league table (flipcheck-league.html) is linked, and in it the exact
-    motion passes every scenario of scenes/flipcheck/ (docs/flipcheck.md).
+    motion passes every scenario of scenes/flipcheck/ (docs/flipcheck.md);
+  - the phone-toss lab's section shows the sample recording's fit (recordings/README.md): its
+    CSV linked, every toss the fit CSV has with its chart (a PNG, its signature checked) and
+    its clip shown, and, where the explorer page was made, each toss opened in it.
 
 Usage: figures_test.py SOURCE_DIR BINARY_DIR
 """
+import csv
 import html.parser
 import pathlib
 import shutil
@@ -47,6 +51,44 @@ class Page(html.parser.HTMLParser):
 
     def handle_data(self, data):
         self.text.append(data)
+
+
+RECORDING = "phone-on-book-synthetic"
+
+
+def phone_lab(page, out):
+    """What is wrong with the phone-toss lab's section (a list of failures)."""
+    if "phone-lab" not in page.sections:
+        return ["no phone-toss lab section (id phone-lab)"]
+    links = page.sections["phone-lab"]
+    failures = []
+    hrefs = [v for tag, attr, v in links if tag == "a" and attr == "href"]
+    if f"{RECORDING}-fit.csv" not in hrefs:
+        failures.append(f"the phone-toss lab does not link {RECORDING}-fit.csv: {hrefs}")
+        return failures
+    with open(out / f"{RECORDING}-fit.csv", newline="") as f:
+        tosses = len(list(csv.DictReader(f)))
+    if tosses < 4:
+        failures.append(f"the sample recording's fit has {tosses} tosses, not 5")
+    images = [v for tag, attr, v in links if tag == "img" and attr == "src"]
+    videos = [v for tag, attr, v in links if tag == "video" and attr == "src"]
+    explorer = (out / "explorer.html").is_file()
+    for n in range(1, tosses + 1):
+        chart = f"{RECORDING}-toss{n}.png"
+        if chart not in images:
+            failures.append(f"the phone-toss lab does not show {chart}: {images}")
+        elif (out / chart).read_bytes()[:8] != b"\x89PNG\r\n\x1a\n":
+            failures.append(f"{chart} is not a PNG")
+        if f"{RECORDING}-toss{n}.mp4" not in videos:
+            failures.append(f"the phone-toss lab does not show toss {n}'s clip: {videos}")
+        scene = f"explorer.html?scene={RECORDING}-toss{n}"
+        if explorer and scene not in hrefs:
+            failures.append(f"the phone-toss lab does not link {scene}")
+    if explorer:
+        page_text = (out / "explorer.html").read_text(encoding="utf-8")
+        if f"{RECORDING}-toss1" not in page_text:
+            failures.append(f"explorer.html does not hold the scene {RECORDING}-toss1")
+    return failures
 
 
 def main():
@@ -101,6 +143,7 @@ def main():
         if not exact or exact[0].count('<td class="pass">') != scenarios:
             failures.append(f"the league table's exact row does not pass all {scenarios} "
                             f"scenarios: {exact}")
+    failures += phone_lab(page, out)
     for f in failures:
         print("FAIL:", f)
     if failures:

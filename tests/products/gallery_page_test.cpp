@@ -62,7 +62,8 @@ TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
 
 TEST(GalleryPage, HeaderSaysWhatAndHowItWasMade) {
   const GalleryHeader header{
-      "1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC", "host <x>, Some CPU, 2 cores", "", ""};
+      "1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC", "host <x>, Some CPU, 2 cores", "", "",
+      {}};
   const std::string html = gallery_html({}, header);
   EXPECT_NE(html.find("figures 3–12 first"), std::string::npos) << html;
   EXPECT_NE(html.find("bookspin 1.2.3 (build aaaaaaaaaaaa)"), std::string::npos) << html;

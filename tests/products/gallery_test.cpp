@@ -104,6 +104,53 @@ TEST(Gallery, LinksTheLeagueTableItsManifestLists) {
     EXPECT_NE(html.find(linked), std::string::npos) << linked << '\n' << html;
 }
 
+// The phone-toss lab (`bookspin fit`): no section without a fit's manifest; with one, its CSVs
+// and each toss's chart and clip as the manifest lists them (a toss chart left from an earlier
+// run with more tosses is not shown), and each toss opened in the explorer once the page is
+// there and the manifest lists the toss's scene.
+TEST(Gallery, ShowsThePhoneLabItsFitManifestLists) {
+  test::ScratchDir dir;
+  const fs::path out = dir / "out";
+  fs::create_directories(dir / "scenes");
+  std::ofstream(dir / "scenes" / "demo.toml") << "[scene]\ntitle = \"Demo\"\n";
+  const std::vector<std::string> files{"rec-fit.csv",   "rec-fit-body.csv",      "rec-toss1.png",
+                                       "rec-toss2.png", "rec-toss1.toml",        "rec-toss2.toml",
+                                       "rec-toss1.mp4", "rec-toss2.mp4",         "rec-toss3.png",
+                                       "rec-toss3.mp4", "rec-toss1-measured.csv"};
+  for (const std::string& file : files) touch(out / file);
+  GalleryJob job;
+  job.out_dir = out;
+  job.scene_paths = {(dir / "scenes" / "demo.toml").string()};
+  // The files without the fit's manifest: no section.
+  make_gallery(job);
+  EXPECT_EQ(test::read_file(out / "index.html").find("phone-lab"), std::string::npos);
+  // The last fit: two tosses, the first with its scene; toss 3's files are an earlier run's.
+  list_in_manifest(out, out / "rec" / "fit-manifest.json",
+                   {"rec-fit.csv", "rec-fit-body.csv", "rec-toss1.png", "rec-toss2.png",
+                    "rec-toss1.toml", "rec-toss1-measured.csv", "rec-toss1.mp4", "rec-toss2.mp4"});
+  EXPECT_EQ(make_gallery(job).outcome, cache::Outcome::made);
+  std::string html = test::read_file(out / "index.html");
+  for (const char* shown :
+       {"id=\"phone-lab\"", "<h3>rec</h3>", "href=\"rec-fit.csv\"", "href=\"rec-fit-body.csv\"",
+        "src=\"rec-toss1.png\"", "src=\"rec-toss2.png\"",
+        "<video controls preload=\"metadata\" "
+        "src=\"rec-toss1.mp4\"",
+        "src=\"rec-toss2.mp4\"", "href=\"rec-toss2.mp4\">clip</a>"})
+    EXPECT_NE(html.find(shown), std::string::npos) << shown << '\n' << html;
+  for (const char* unlisted : {"rec-toss3", "explorer.html"})
+    EXPECT_EQ(html.find(unlisted), std::string::npos) << unlisted << '\n' << html;
+  // The lab comes before the scenes.
+  EXPECT_LT(html.find("id=\"phone-lab\""), html.find("id=\"demo\""));
+  // The explorer page made: the toss whose scene is listed opens in it, the other does not.
+  touch(out / "explorer.html");
+  EXPECT_EQ(make_gallery(job).outcome, cache::Outcome::made);
+  html = test::read_file(out / "index.html");
+  EXPECT_NE(html.find("href=\"explorer.html?scene=rec-toss1\">open in the explorer</a>"),
+            std::string::npos)
+      << html;
+  EXPECT_EQ(html.find("scene=rec-toss2"), std::string::npos) << html;
+}
+
 // An accuracy report (`bookspin accuracy`, e.g. the engines' energy against the step of `make
 // figures`) shows its four charts and links its two tables, as its manifest lists them; it is
 // not "not rendered yet".
