@@ -269,6 +269,15 @@ void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, d
 
 void legend_sample(cairo_t* cr, const Series& s, double x, double y, double font) {
   cairo_set_source_rgb(cr, s.r, s.g, s.b);
+  if (s.dots) {  // as drawn: dots, no line
+    for (int i = 0; i < 3; ++i) {
+      cairo_new_sub_path(cr);
+      cairo_arc(cr, x + (0.3 + 0.6 * i) * font, y - 0.35 * font, 0.14 * font, 0,
+                2 * 3.14159265358979323846);
+    }
+    cairo_fill(cr);
+    return;
+  }
   cairo_set_line_width(cr, 0.18 * font);
   const double dash[] = {0.5 * font, 0.3 * font};
   cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);

@@ -137,3 +137,55 @@ TEST(Plot, EachMarkerDrawsItsOwnShape) {
 
 }  // namespace
 }  // namespace bookspin::overlay
+
+namespace bookspin::overlay {
+namespace {
+
+/// The runs of `colour` pixels along the row of the right half that holds most of them.
+int legend_runs(const RgbaImage& image, bool (*colour)(const std::uint8_t*)) {
+  int best_row = -1, best_count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    int count = 0;
+    for (int x = image.width / 2; x < image.width; ++x) count += colour(image.row(y) + 4 * x);
+    if (count > best_count) best_count = count, best_row = y;
+  }
+  if (best_row < 0) return 0;
+  int runs = 0;
+  bool inside = false;
+  for (int x = image.width / 2; x < image.width; ++x) {
+    const bool here = colour(image.row(best_row) + 4 * x);
+    runs += here && !inside;
+    inside = here;
+  }
+  return runs;
+}
+
+// The legend shows a series as it is drawn: a measured series of dots (Series::dots) as three
+// dots, a line as one stroke. The dots are drawn in the left tenth of the plot, so every red
+// pixel of the right half is the legend's (a white series stretches the x axis to 10).
+TEST(PlotLegend, ADotsSeriesShowsDotsALineSeriesALine) {
+  PlotSpec spec;
+  Series dots, line, white;
+  white.label = "axis";
+  white.r = white.g = white.b = 1.0;
+  white.x = {0.0, 10.0};
+  white.y = {0.0, 1.0};
+  dots.label = "measured";
+  dots.r = 1.0;
+  dots.dots = true;
+  line.label = "fitted";
+  line.b = 1.0;
+  for (int i = 0; i <= 10; ++i) {
+    dots.x.push_back(0.1 * i), dots.y.push_back(0.1 * i);
+    line.x.push_back(0.1 * i), line.y.push_back(0.1 * i);
+  }
+  spec.series = {dots, line, white};
+  const RgbaImage image = plot_image(spec, 900, 300);
+  const auto is_red = [](const std::uint8_t* p) { return p[0] > 200 && p[1] < 80 && p[2] < 80; };
+  const auto is_blue = [](const std::uint8_t* p) { return p[2] > 200 && p[0] < 80 && p[1] < 80; };
+  EXPECT_EQ(legend_runs(image, is_red), 3);
+  EXPECT_EQ(legend_runs(image, is_blue), 1);
+}
+
+}  // namespace
+}  // namespace bookspin::overlay
