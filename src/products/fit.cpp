@@ -9,6 +9,7 @@
 #include "charts/toss_plots.hpp"
 #include "clip/clip.hpp"
 #include "output/atomic_output.hpp"
+#include "output/manifest.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
 #include "output/sha256.hpp"
@@ -186,7 +187,11 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
     for (int c = 0; c < 3; ++c) append(recording.omega[i][c]);
   }
   for (double pause : recording.pauses) append(pause);
-  JsonObject members{{"recording", {output::sha256_text(samples)}},
+  // The program first, as every scene product's head has it: a rebuilt bookspin fits again.
+  JsonObject members{{"bookspin",
+                      {JsonObject{{"version", {output::program_version()}},
+                                  {"build_id", {"sha256:" + output::program_build_id()}}}}},
+                     {"recording", {output::sha256_text(samples)}},
                      {"tosses", {std::move(tosses)}},
                      {"moments", {std::move(moments)}},
                      {"width", {std::int64_t{job.width}}},

@@ -8,6 +8,7 @@
 
 #include "common/text_file.hpp"
 #include "fit/synthetic_recording.hpp"
+#include "output/manifest.hpp"
 #include "support/scratch.hpp"
 
 namespace bookspin::products {
@@ -70,6 +71,11 @@ TEST(FitProduct, MakesEveryFileThenIsUpToDate) {
   ASSERT_FALSE(summary.empty());
   EXPECT_EQ(summary[0].rfind("bias (rad/s, from ", 0), 0u) << summary[0];
   EXPECT_EQ(make_fit(job), cache::Outcome::up_to_date);
+  // The manifest's head names the bookspin that fitted (as every scene product's does), so a
+  // rebuilt bookspin fits again.
+  EXPECT_NE(read_text_file(layout.manifest, "the manifest")
+                .find("\"build_id\": \"sha256:" + output::program_build_id() + "\""),
+            std::string::npos);
   job.freshness.force = true;
   EXPECT_EQ(make_fit(job), cache::Outcome::made);
   // Another --moments is another fit.
