@@ -19,10 +19,11 @@ namespace {
 struct FitOptions {
   std::string recording;
   std::string out_dir = "out";
-  std::string tosses;      ///< "a:b,c:d" (s)
-  std::string moments;     ///< "I1,I2,I3"
-  bool render = false;     ///< --render: a clip of each toss
-  std::string scene_file;  ///< --scene: the clips' body and render keys
+  std::string tosses;           ///< "a:b,c:d" (s)
+  std::string moments;          ///< "I1,I2,I3"
+  std::string drag = "linear";  ///< --drag: none | linear | quadratic
+  bool render = false;          ///< --render: a clip of each toss
+  std::string scene_file;       ///< --scene: the clips' body and render keys
   double slow_motion = 4.0;
   bool force = false;
   bool verify = false;
@@ -70,6 +71,8 @@ int fit_command(const FitOptions& options) {
     }
     job.moments = m;
   }
+  if (!physics::parse_drag_law(options.drag, job.drag))
+    throw InputError("--drag: \"" + options.drag + "\" is not none, linear or quadratic");
   if (!options.render && !options.scene_file.empty())
     throw InputError("--scene: only with --render (it gives the clips' body and render keys)");
   if (options.render) {
@@ -105,6 +108,10 @@ Subcommand add_fit(CLI::App& cli) {
                   "The flights by hand, START:END seconds, comma-separated (default: found)");
   cmd->add_option("--moments", options.moments,
                   "Principal moments I1,I2,I3 (any scale): fixed instead of fitted");
+  cmd->add_option("--drag", options.drag,
+                  "Air drag fitted per toss: none, linear (torque -c L) or quadratic "
+                  "(-k|L| L); docs/phone-lab.md, \"Drag\"")
+      ->capture_default_str();
   cmd->add_flag("--render", options.render,
                 "Also a clip of each toss, OUT/<recording>-toss<N>.mp4: the body turning as the "
                 "phone turned (its measured ω integrated) beside the fitted exact motion");

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -12,14 +13,19 @@
 
 #include "common/errors.hpp"
 #include "fit/toss_model.hpp"
+#include "physics/damped_exact.hpp"
 #include "physics/exact_solution.hpp"
 
 namespace bookspin::fit {
 namespace {
 
 constexpr double kStableDegrees = 25.0;
-constexpr double kPoorFit = 0.03;  // residual_rms over mean |ω| beyond which a toss is not fitted
 constexpr double kPi = 3.14159265358979323846;
+// The flags (docs/phone-lab.md, "Flags"): a 50 ms block of the residual over kBlockFactor times
+// both the flight's median block and the noise at rest; or the whole residual over kNoFit of |ω|.
+constexpr double kBlock = 0.05;
+constexpr double kBlockFactor = 4.0;
+constexpr double kNoFit = 0.10;
 
 /// The samples of one toss, bias removed, times from the toss's start.
 struct TossData {
@@ -27,27 +33,35 @@ struct TossData {
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame
 };
 
-/// Residuals ω_fitted(τ_i) − ω_measured(τ_i), three per sample, rad/s, and their derivatives
-/// with respect to the body's axes (aa), its log moment ratios and the toss's ω0 (TossModel).
+/// Residuals ω_fitted(τ_i) − ω_measured(τ_i) + e, three per sample, rad/s, and their derivatives
+/// with respect to the body's axes (aa), its log moment ratios, the toss's ω0 and drag rate
+/// (TossModel) and e, the correction to the gyroscope's bias measured at rest (the bias in
+/// flight is bias + e; docs/phone-lab.md, "The bias").
 class TossCost : public ceres::CostFunction {
  public:
   /// The first `samples` of `data`, every `stride`-th of them.
-  TossCost(const TossData* data, int samples, int stride, const Eigen::Matrix3d& R0)
-      : data_(data), samples_(samples), stride_(stride), R0_(R0) {
+  TossCost(const TossData* data, int samples, int stride, const Eigen::Matrix3d& R0,
+           physics::DragLaw law)
+      : data_(data), samples_(samples), stride_(stride), R0_(R0), law_(law) {
     set_num_residuals(3 * ((samples + stride - 1) / stride));
-    *mutable_parameter_block_sizes() = {3, 2, 3};
+    *mutable_parameter_block_sizes() = {3, 2, 4, 3};
   }
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
     try {
-      const TossModel model(R0_, parameters[0], parameters[1], parameters[2], jacobians != nullptr);
+      const TossModel model(R0_, parameters[0], parameters[1], parameters[2], law_,
+                            jacobians != nullptr);
       TossModel::Jacobian J;
-      constexpr int kSizes[3] = {3, 2, 3}, kOffsets[3] = {0, 3, 5};
+      constexpr int kSizes[3] = {3, 2, 4}, kOffsets[3] = {0, 3, 5};
       for (int i = 0, n = 0; i < samples_; i += stride_, ++n) {
         const Eigen::Vector3d r =
-            model.omega(data_->tau[i], jacobians ? &J : nullptr) - data_->omega[i];
+            model.omega(data_->tau[i], jacobians ? &J : nullptr) - data_->omega[i] +
+            Eigen::Vector3d(parameters[3][0], parameters[3][1], parameters[3][2]);
         for (int c = 0; c < 3; ++c) residuals[3 * n + c] = r[c];
         if (!jacobians) continue;
+        if (jacobians[3])  // the bias correction: ∂r/∂e = I
+          for (int c = 0; c < 3; ++c)
+            for (int j = 0; j < 3; ++j) jacobians[3][(3 * n + c) * 3 + j] = c == j ? 1.0 : 0.0;
         for (int block = 0; block < 3; ++block) {
           if (!jacobians[block]) continue;
           for (int c = 0; c < 3; ++c)
@@ -66,14 +80,16 @@ class TossCost : public ceres::CostFunction {
   int samples_;  ///< the first `samples` of the toss
   int stride_;   ///< every stride-th of them
   Eigen::Matrix3d R0_;
+  physics::DragLaw law_;
 };
 
-/// The fit's parameters: the shared body, then each toss's ω0.
+/// The fit's parameters: the shared body, then each toss's ω0 and drag rate (ω0x, ω0y, ω0z, r).
 struct Parameters {
   Eigen::Matrix3d R0 = Eigen::Matrix3d::Identity();
   std::array<double, 3> aa{0, 0, 0};
   std::array<double, 2> log_ratios{0, 0};
-  std::vector<std::array<double, 3>> omega0;
+  std::vector<std::array<double, 4>> omega0;
+  std::array<double, 3> e{0, 0, 0};  ///< rad/s, phone frame: the bias correction (CostFunction)
   Eigen::Matrix3d axes() const { return R0 * rotation_from_angle_axis(aa.data()); }
   Eigen::Vector3d moments() const {
     return {std::exp(log_ratios[0]), std::exp(log_ratios[1]), 1.0};
@@ -127,17 +143,22 @@ Parameters start(const std::vector<TossData>& data, const FitSettings& settings,
     std::sort(given.data(), given.data() + 3);
     m = given / given[2];
   }
-  p.log_ratios = {std::log(std::clamp(m[0], 0.02, 1.0)), std::log(std::clamp(m[1], 0.02, 1.0))};
-  for (const TossData& d : data) p.omega0.push_back({d.omega[0][0], d.omega[0][1], d.omega[0][2]});
+  // The Euler estimate's start is kept off a degenerate body; given moments are used as given.
+  if (!settings.moments) m = m.cwiseMax(0.02);
+  p.log_ratios = {std::log(m[0]), std::log(m[1])};
+  for (const TossData& d : data)
+    p.omega0.push_back({d.omega[0][0], d.omega[0][1], d.omega[0][2], 0.0});
   normalise(p);
   return p;
 }
 
 struct SolveOptions {
-  bool body_fixed = false;     ///< axes and moments held (only the ω0 fitted)
-  bool moments_fixed = false;  ///< moments held (axes and ω0 fitted)
-  double fraction = 1.0;       ///< each toss's first fraction of samples only
-  double window = 0.0;         ///< > 0: each toss's first `window` seconds only
+  bool body_fixed = false;                         ///< axes and moments held (only the ω0 fitted)
+  bool moments_fixed = false;                      ///< moments held (axes and ω0 fitted)
+  physics::DragLaw drag = physics::DragLaw::none;  ///< the law the rates are of
+  bool rates_fixed = false;  ///< each toss's drag rate held (always under DragLaw::none)
+  double fraction = 1.0;     ///< each toss's first fraction of samples only
+  double window = 0.0;       ///< > 0: each toss's first `window` seconds only
   /// > 0: every sample within this many seconds of the last one kept is left out (the start's
   /// rough stages at 100 Hz whatever the rate; the final fit sees every sample).
   double spacing = 0.0;
@@ -165,13 +186,18 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
       const double step = d.tau.back() / static_cast<double>(d.tau.size() - 1);
       stride = std::max(1, static_cast<int>(options.spacing / step));
     }
-    auto* cost = new TossCost(&d, samples, stride, p.R0);
-    problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data());
+    auto* cost = new TossCost(&d, samples, stride, p.R0, options.drag);
+    problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(),
+                              p.e.data());
+    if (options.drag == physics::DragLaw::none || options.rates_fixed)
+      problem->SetManifold(p.omega0[k].data(), new ceres::SubsetManifold(4, {3}));
     residual_count += cost->num_residuals();
   }
   if (options.body_fixed || options.moments_fixed)
     problem->SetParameterBlockConstant(p.log_ratios.data());
   if (options.body_fixed) problem->SetParameterBlockConstant(p.aa.data());
+  // The bias correction is shared by the tosses: fitted with two or more, held otherwise.
+  if (options.body_fixed || data.size() < 2) problem->SetParameterBlockConstant(p.e.data());
   ceres::Solver::Options solver_options;
   // The tosses' ω0 blocks are independent given the body: eliminated (Schur complement), the
   // linear system is the body's five parameters, however many tosses there are.
@@ -195,19 +221,26 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
 }
 
 /// The fit's covariance (JᵀJ)⁻¹ at `p`, unscaled, in the blocks the report needs: the body's
-/// (aa then the log ratios; aa alone with the moments fixed) and each toss's ω0. J is
-/// TossModel's over every sample. The ω0 blocks are eliminated as the solver does (Schur
-/// complement S = B − Σ E_k C_k⁻¹ E_kᵀ of the normal matrix [B E; Eᵀ diag(C_k)]):
-/// cov(body) = S⁻¹, cov(ω0_k) = C_k⁻¹ + C_k⁻¹ E_kᵀ S⁻¹ E_k C_k⁻¹; O(tosses) rather than the
-/// O(tosses³) of the whole matrix. nullopt when S or a C_k is singular to working precision
-/// (reciprocal condition below 1e-14: the fit cannot tell every value apart).
+/// (aa then the log ratios; aa alone with the moments fixed) and each toss's (ω0, then its drag
+/// rate where a law is fitted). J is TossModel's over every sample. The ω0 blocks are eliminated as
+/// the solver does (Schur complement S = B − Σ E_k C_k⁻¹ E_kᵀ of the normal matrix [B E; Eᵀ
+/// diag(C_k)]): cov(body) = S⁻¹, cov(ω0_k) = C_k⁻¹ + C_k⁻¹ E_kᵀ S⁻¹ E_k C_k⁻¹; O(tosses) rather
+/// than the O(tosses³) of the whole matrix. nullopt when S or a C_k is singular to working
+/// precision (reciprocal condition below 1e-14: the fit cannot tell every value apart).
 struct Covariances {
   Eigen::MatrixXd body;
-  std::vector<Eigen::Matrix3d> omega0;
+  std::vector<Eigen::MatrixXd> omega0;  ///< 3×3, or 4×4 with the drag rate last
 };
 std::optional<Covariances> covariances(const std::vector<TossData>& data, const Parameters& p,
-                                       bool moments_fixed) {
-  const int nb = moments_fixed ? 3 : 5;
+                                       bool moments_fixed, physics::DragLaw law) {
+  // The body's columns of [J_θ | I] (θ: TossModel's nine, then the bias correction e): aa, the
+  // log ratios unless fixed, e where fitted (two or more tosses); the toss's: ω0, its rate.
+  std::vector<int> body{0, 1, 2}, toss{5, 6, 7};
+  if (!moments_fixed) body.insert(body.end(), {3, 4});
+  if (data.size() >= 2) body.insert(body.end(), {9, 10, 11});
+  if (law != physics::DragLaw::none) toss.push_back(8);
+  const int nb = static_cast<int>(body.size());
+  const int nt = static_cast<int>(toss.size());
   constexpr double kMinReciprocalCondition = 1e-14;
   const auto well_conditioned = [&](const Eigen::MatrixXd& m) {
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(m, Eigen::EigenvaluesOnly);
@@ -216,30 +249,38 @@ std::optional<Covariances> covariances(const std::vector<TossData>& data, const 
   };
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(nb, nb);
   std::vector<Eigen::MatrixXd> E(data.size());
-  std::vector<Eigen::Matrix3d> C_inverse(data.size());
+  std::vector<Eigen::MatrixXd> C_inverse(data.size());
   for (std::size_t k = 0; k < data.size(); ++k) {
-    const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), true);
-    Eigen::Matrix<double, 8, 8> N = Eigen::Matrix<double, 8, 8>::Zero();
-    TossModel::Jacobian J;
+    const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), law, true);
+    Eigen::Matrix<double, 12, 12> full = Eigen::Matrix<double, 12, 12>::Zero();
+    Eigen::Matrix<double, 3, 12> J = Eigen::Matrix<double, 3, 12>::Zero();
+    J.rightCols<3>().setIdentity();
+    TossModel::Jacobian J_theta;
     for (double tau : data[k].tau) {
-      model.omega(tau, &J);
-      N.selfadjointView<Eigen::Upper>().rankUpdate(J.transpose());
+      model.omega(tau, &J_theta);
+      J.leftCols<TossModel::kParameters>() = J_theta;
+      full.selfadjointView<Eigen::Upper>().rankUpdate(J.transpose());
     }
-    N = N.selfadjointView<Eigen::Upper>();
-    const Eigen::Matrix3d C = N.bottomRightCorner<3, 3>();
+    full = full.selfadjointView<Eigen::Upper>();
+    const Eigen::MatrixXd B = full(body, body);
+    const Eigen::MatrixXd C = full(toss, toss);
     if (!well_conditioned(C)) return std::nullopt;
     C_inverse[k] = C.inverse();
-    E[k] = N.topRightCorner(nb, 3);
-    S += N.topLeftCorner(nb, nb) - E[k] * C_inverse[k] * E[k].transpose();
+    E[k] = full(body, toss);
+    S += B - E[k] * C_inverse[k] * E[k].transpose();
   }
   S = 0.5 * (S + S.transpose());
   if (!well_conditioned(S)) return std::nullopt;
   Covariances result;
   result.body = S.inverse();
   for (std::size_t k = 0; k < data.size(); ++k) {
-    const Eigen::MatrixXd G = E[k] * C_inverse[k];  // nb × 3
+    const Eigen::MatrixXd G = E[k] * C_inverse[k];  // nb × nt
     result.omega0.push_back(C_inverse[k] + G.transpose() * result.body * G);
   }
+  if (!result.body.allFinite() || (result.body.diagonal().array() <= 0.0).any())
+    return std::nullopt;
+  for (const Eigen::MatrixXd& c : result.omega0)
+    if (!c.allFinite() || (c.diagonal().array() <= 0.0).any()) return std::nullopt;
   return result;
 }
 
@@ -266,12 +307,130 @@ std::vector<double> sign_changes(const std::vector<double>& t, const std::vector
   return crossings;
 }
 
+/// The mean spacing of the sign changes of the component along `axis` (phone frame) of
+/// `omega(τ)` sampled at `tau` (s): the estimator half_period_measured uses, applied to a
+/// model; nullopt with fewer than two sign changes.
+template <typename OmegaAt>
+std::optional<double> mean_flip_spacing(const std::vector<double>& tau, const Eigen::Vector3d& axis,
+                                        OmegaAt omega) {
+  std::vector<double> along(tau.size());
+  double peak = 0.0;
+  for (std::size_t i = 0; i < tau.size(); ++i) {
+    along[i] = axis.dot(omega(tau[i]));
+    peak = std::max(peak, std::abs(along[i]));
+  }
+  const std::vector<double> crossings = sign_changes(tau, along, 0.2 * peak);
+  if (crossings.size() < 2) return std::nullopt;
+  return (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
+/// T/2 of a (damped) exact motion over a flight sampled at `tau`: the mean spacing of its flips
+/// there, or its T/2 at the flight's middle where it flips fewer than twice (docs/physics.md
+/// §21); nullopt for a steady motion or one the drag stops before a flip.
+std::optional<double> motion_half_period(const physics::DampedExactRotation& motion,
+                                         const Eigen::Matrix3d& axes,
+                                         const std::vector<double>& tau) {
+  if (!std::isfinite(motion.free().flip_period())) return std::nullopt;
+  if (!motion.drag().active()) return motion.free().flip_period();  // T/2 exactly
+  const std::optional<double> spacing = mean_flip_spacing(
+      tau, axes.col(1), [&](double t) { return Eigen::Vector3d(axes * motion.omega_body(t)); });
+  if (spacing) return spacing;
+  const double middle = 0.5 * (tau.front() + tau.back());
+  const double half = motion.flip_period_at(middle);
+  if (!std::isfinite(half)) return std::nullopt;
+  return half;
+}
+
+/// The gyroscope's scatter at rest (rad/s, per component, RMS): the samples outside every
+/// flight within rest_omega/2 of the bias; nullopt with fewer than 20 such samples.
+std::optional<double> rest_noise(const GyroRecording& recording, const FlightSearch& search) {
+  const double rest = 0.5 * FinderSettings{}.rest_omega;
+  std::size_t flight = 0;
+  double sum2 = 0.0;
+  int count = 0;
+  for (int i = 0; i < static_cast<int>(recording.t.size()); ++i) {
+    while (flight < search.flights.size() && search.flights[flight].last < i) ++flight;
+    if (flight < search.flights.size() && search.flights[flight].first <= i) continue;
+    const Eigen::Vector3d d = recording.omega[i] - search.bias;
+    if (d.norm() > rest) continue;
+    sum2 += d.squaredNorm();
+    ++count;
+  }
+  if (count < 20) return std::nullopt;
+  return std::sqrt(sum2 / (3.0 * count));
+}
+
+/// The flag of one toss from its residual r_i = ω_fitted − ω_measured (docs/phone-lab.md,
+/// "Flags"): 50 ms blocks' RMS against the median block and the noise at rest; empty for a
+/// toss whose residual looks like noise and an unmodelled smooth remainder.
+std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vector3d>& residual,
+                    double mean_omega, std::optional<double> noise) {
+  const double duration = tau.back() - tau.front();
+  double total2 = 0.0;
+  for (const Eigen::Vector3d& r : residual) total2 += r.squaredNorm();
+  const double rms = std::sqrt(total2 / residual.size());
+  const auto fixed = [](double value, int digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    return std::string(text);
+  };
+  // Blocks of 50 ms (at least 4 samples each).
+  const int blocks = std::max(1, static_cast<int>(duration / kBlock));
+  std::vector<double> block2(blocks, 0.0);
+  std::vector<int> block_n(blocks, 0);
+  for (std::size_t i = 0; i < tau.size(); ++i) {
+    const int b =
+        std::min(blocks - 1, static_cast<int>((tau[i] - tau.front()) / duration * blocks));
+    block2[b] += residual[i].squaredNorm();
+    ++block_n[b];
+  }
+  std::vector<double> block_rms;
+  for (int b = 0; b < blocks; ++b)
+    block_rms.push_back(block_n[b] ? std::sqrt(block2[b] / block_n[b]) : 0.0);
+  std::vector<double> sorted = block_rms;
+  std::nth_element(sorted.begin(), sorted.begin() + blocks / 2, sorted.end());
+  const double median = sorted[blocks / 2];
+  const double floor = noise ? std::sqrt(3.0) * 5.0 * *noise : 0.0;  // |r| of 5σ per component
+  int worst = 0;
+  for (int b = 1; b < blocks; ++b)
+    if (block_rms[b] > block_rms[worst]) worst = b;
+  if (blocks >= 4 && block_rms[worst] > kBlockFactor * median && block_rms[worst] > floor) {
+    const double at = tau.front() + (worst + 0.5) * duration / blocks;
+    const std::string where = "the residual jumps to " + fixed(block_rms[worst], 2) +
+                              " rad/s near t = " + fixed(at, 2) + " s of the flight (typical " +
+                              fixed(median, 2) + ")";
+    if (worst >= blocks - 2) return "a catch inside the flight? " + where;
+    if (worst <= 1) return "the throw inside the flight? " + where;
+    return "a knock, or the phone slipping on the body? " + where;
+  }
+  if (rms > kNoFit * mean_omega)
+    return "a body that flexes, or not a free flight: the residual is " +
+           fixed(100 * rms / mean_omega, 1) + " % of |ω| throughout";
+  return {};
+}
+
+/// The correlation inflation of a least-squares variance: with residuals correlated from
+/// sample to sample (lag-1 autocorrelation ρ, each component), a variance from (JᵀJ)⁻¹ is
+/// (1 + ρ)/(1 − ρ) times too small (an AR(1) residual); 1 for white residuals, capped at 400.
+double correlation_inflation(const std::vector<std::vector<Eigen::Vector3d>>& residuals) {
+  double lag0 = 0.0, lag1 = 0.0;
+  for (const std::vector<Eigen::Vector3d>& r : residuals)
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      lag0 += r[i].squaredNorm();
+      if (i + 1 < r.size()) lag1 += r[i].dot(r[i + 1]);
+    }
+  if (!(lag0 > 0.0)) return 1.0;
+  const double rho = std::clamp(lag1 / lag0, 0.0, 0.995);
+  return (1.0 + rho) / (1.0 - rho);
+}
+
 }  // namespace
 
 Eigen::Vector3d fitted_omega(const FitResult& fit, int toss, double t) {
   const TossFit& f = fit.tosses.at(toss);
-  const physics::ExactRotation exact(fit.body.ratios, fit.body.axes.transpose() * f.omega0,
-                                     physics::ExactParts::omega_only);
+  const physics::DampedExactRotation exact(fit.body.ratios, fit.body.axes.transpose() * f.omega0,
+                                           physics::Drag{fit.drag, f.drag_rate},
+                                           physics::ExactParts::omega_only);
   return fit.body.axes * exact.omega_body(t - f.flight.t_start);
 }
 
@@ -288,6 +447,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
                         const FitSettings& settings) {
   FitResult result;
   result.search = search;
+  result.drag = settings.drag;
   if (search.flights.empty()) {
     std::string why;
     for (const DroppedStretch& d : search.dropped)
@@ -306,31 +466,57 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     data.push_back(std::move(d));
   }
   const bool fixed = settings.moments.has_value();
+  const physics::DragLaw law = settings.drag;
+  const bool dragged = law != physics::DragLaw::none;
   Parameters p = start(data, settings, recording.t);
-  // Grown over each toss, so that a rough start does not lock onto a wrong phase.
+  // Grown over each toss, so that a rough start does not lock onto a wrong phase; the drag
+  // rates join once the phases are found (the last stage).
   for (double fraction : {0.3, 0.6, 1.0}) {
     SolveOptions options;
     options.moments_fixed = fixed;
     options.fraction = fraction;
     options.spacing = 0.01;
+    options.drag = law;
+    options.rates_fixed = fraction < 1.0;
     if (!solve(data, p, options).usable)
       throw InputError(recording.source + ": the fit did not converge");
     normalise(p);
   }
   SolveOptions full;
   full.moments_fixed = fixed;
+  full.drag = law;
   const Solved solved = solve(data, p, full);
   if (!solved.usable) throw InputError(recording.source + ": the fit did not converge");
+  // The bias in flight: the rest's plus the fitted correction; the samples corrected by it, so
+  // that what follows (and measured_omega) sees them as the fit did.
+  const Eigen::Vector3d correction(p.e[0], p.e[1], p.e[2]);
+  result.search.bias += correction;
+  result.bias_correction = correction;
+  for (TossData& d : data)
+    for (Eigen::Vector3d& w : d.omega) w -= correction;
+  p.e = {0.0, 0.0, 0.0};
 
   BodyEstimate& body = result.body;
   body.ratios = p.moments();
   body.axes = p.axes();
   body.moments_fixed = fixed;
-  // Uncertainties: (JᵀJ)⁻¹ scaled by the residual variance.
-  const int parameter_count = (fixed ? 3 : 5) + 3 * static_cast<int>(data.size());
-  const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count);
-  const std::optional<Covariances> covariance = covariances(data, p, fixed);
+  // The residuals of the joint fit, per toss.
+  std::vector<std::vector<Eigen::Vector3d>> residuals(data.size());
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), law, false);
+    for (std::size_t i = 0; i < data[k].tau.size(); ++i)
+      residuals[k].push_back(model.omega(data[k].tau[i]) - data[k].omega[i] +
+                             Eigen::Vector3d(p.e[0], p.e[1], p.e[2]));
+  }
+  // Uncertainties: (JᵀJ)⁻¹ scaled by the residual variance and by the residual's correlation
+  // (docs/phone-lab.md, "Error bars"); the body's then widened to the folds' spread below.
+  const int parameter_count = (fixed ? 3 : 5) + (data.size() >= 2 ? 3 : 0) +
+                              (dragged ? 4 : 3) * static_cast<int>(data.size());
+  const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count) *
+                          correlation_inflation(residuals);
+  const std::optional<Covariances> covariance = covariances(data, p, fixed, law);
   std::vector<std::optional<Eigen::Vector3d>> omega0_sigma(data.size());
+  std::vector<std::optional<double>> rate_sigma(data.size());
   if (covariance) {
     const Eigen::MatrixXd& c = covariance->body;
     Eigen::Vector3d axis_sigma;
@@ -345,8 +531,11 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     else
       body.ratio_sigma = Eigen::Vector3d(body.ratios[0] * std::sqrt(variance * c(3, 3)),
                                          body.ratios[1] * std::sqrt(variance * c(4, 4)), 0.0);
-    for (std::size_t k = 0; k < data.size(); ++k)
-      omega0_sigma[k] = (variance * covariance->omega0[k].diagonal()).cwiseSqrt();
+    for (std::size_t k = 0; k < data.size(); ++k) {
+      const Eigen::MatrixXd& ck = covariance->omega0[k];
+      omega0_sigma[k] = (variance * ck.diagonal().head<3>()).cwiseSqrt();
+      if (dragged) rate_sigma[k] = std::sqrt(variance * ck(3, 3));
+    }
   } else {
     body.notes.push_back("the fit cannot tell every value apart: no uncertainties");
   }
@@ -357,24 +546,59 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   // the other folds, so that with up to five tosses it is the body of all the others, and with
   // more the fits stay five, not one per toss. With --moments and one toss, the moments given,
   // and the axes fitted with ω0 on the toss's first predict_window s below. None when a fold's
-  // fit fails: no prediction then.
-  std::vector<std::optional<Parameters>> fold_body(
-      std::max<std::size_t>(1, std::min<std::size_t>(data.size(), 5)));
+  // fit fails: no prediction then. The same fold bodies give the moments' jackknife spread.
+  const std::size_t folds = std::max<std::size_t>(1, std::min<std::size_t>(data.size(), 5));
+  std::vector<std::optional<Parameters>> fold_body(folds);
+  std::vector<double> fold_rate(folds, 0.0);  // the mean drag rate of each fold body's tosses
   if (data.size() >= 2) {
-    for (std::size_t f = 0; f < fold_body.size(); ++f) {
+    for (std::size_t f = 0; f < folds; ++f) {
       std::vector<TossData> rest;
       Parameters q = joint;
       q.omega0.clear();
       for (std::size_t j = 0; j < data.size(); ++j)
-        if (j % fold_body.size() != f) rest.push_back(data[j]), q.omega0.push_back(joint.omega0[j]);
+        if (j % folds != f) rest.push_back(data[j]), q.omega0.push_back(joint.omega0[j]);
       SolveOptions options;
       options.moments_fixed = fixed;
+      options.drag = law;
       options.spacing = 0.01;  // at 100 Hz whatever the rate: five fits of nearly every toss
-      if (solve(rest, q, options).usable) fold_body[f] = q;
+      if (!solve(rest, q, options).usable) continue;
+      normalise(q);
+      fold_body[f] = q;
+      for (const std::array<double, 4>& w : q.omega0)
+        fold_rate[f] += w[3] / static_cast<double>(q.omega0.size());
     }
   } else if (fixed) {
     fold_body[0] = joint;
   }
+  // The grouped jackknife over the folds: σ² = (G − 1)/G Σ (θ_g − θ̄)², each axis's turn from the
+  // joint axes; the larger of it and the covariance's σ (docs/phone-lab.md, "Error bars").
+  if (folds >= 3 && body.ratio_sigma && body.axis_sigma_deg) {
+    std::vector<Eigen::Vector3d> ratios, turns;
+    for (const std::optional<Parameters>& q : fold_body) {
+      if (!q) continue;
+      ratios.push_back(q->moments());
+      Eigen::Vector3d turn;
+      const Eigen::Matrix3d a = q->axes();
+      for (int i = 0; i < 3; ++i)
+        turn[i] = std::acos(std::min(1.0, std::abs(a.col(i).dot(body.axes.col(i))))) * 180.0 / kPi;
+      turns.push_back(turn);
+    }
+    const double g = static_cast<double>(ratios.size());
+    if (ratios.size() >= 3) {
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero(), spread = Eigen::Vector3d::Zero(),
+                      turn2 = Eigen::Vector3d::Zero();
+      for (const Eigen::Vector3d& r : ratios) mean += r / g;
+      for (std::size_t i = 0; i < ratios.size(); ++i) {
+        spread += (ratios[i] - mean).cwiseAbs2();
+        turn2 += turns[i].cwiseAbs2();
+      }
+      const double factor = (g - 1.0) / g;
+      if (!fixed) body.ratio_sigma = body.ratio_sigma->cwiseMax((factor * spread).cwiseSqrt());
+      body.ratio_sigma->z() = 0.0;
+      body.axis_sigma_deg = body.axis_sigma_deg->cwiseMax((factor * turn2).cwiseSqrt());
+    }
+  }
+  const std::optional<double> noise = rest_noise(recording, search);
   int stable_count = 0;
   for (std::size_t k = 0; k < data.size(); ++k) {
     const TossData& d = data[k];
@@ -382,12 +606,15 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     toss.flight = search.flights[k];
     toss.omega0 = Eigen::Vector3d(joint.omega0[k][0], joint.omega0[k][1], joint.omega0[k][2]);
     toss.omega0_sigma = omega0_sigma[k];
-    const physics::ExactRotation exact(body.ratios, body.axes.transpose() * toss.omega0,
-                                       physics::ExactParts::omega_only);
-    if (std::isfinite(exact.flip_period())) toss.half_period_fitted = exact.flip_period();
+    toss.drag_rate = dragged ? joint.omega0[k][3] : 0.0;
+    toss.drag_rate_sigma = rate_sigma[k];
+    const physics::DampedExactRotation exact(body.ratios, body.axes.transpose() * toss.omega0,
+                                             physics::Drag{law, toss.drag_rate},
+                                             physics::ExactParts::omega_only);
+    toss.half_period_fitted = motion_half_period(exact, body.axes, d.tau);
     // Residual, |L| (L = I ω, principal frame), the angle to the circled axis.
     double sum2 = 0.0, max_angle = 0.0;
-    const int circled = exact.motion_case() == physics::ExactCase::around_smallest ? 0 : 2;
+    const int circled = exact.free().motion_case() == physics::ExactCase::around_smallest ? 0 : 2;
     std::vector<double> L(d.tau.size()), along(d.tau.size());
     for (std::size_t i = 0; i < d.tau.size(); ++i) {
       const Eigen::Vector3d w_fit = body.axes * exact.omega_body(d.tau[i]);
@@ -401,14 +628,12 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     toss.residual_rms = std::sqrt(sum2 / d.tau.size());
     double mean_omega = 0.0;
     for (const Eigen::Vector3d& w : d.omega) mean_omega += w.norm() / d.omega.size();
-    toss.poor_fit = toss.residual_rms > kPoorFit * mean_omega;
+    toss.flag = flag_of(d.tau, residuals[k], mean_omega, noise);
+    toss.poor_fit = !toss.flag.empty();
     if (toss.poor_fit)
-      body.notes.push_back(
-          "toss " + std::to_string(k + 1) + ": the exact motion does not fit it (residual " +
-          std::to_string(toss.residual_rms) + " rad/s of " + std::to_string(mean_omega) +
-          "): not a free flight, or not a rigid body; its values are not to "
-          "be trusted");
-    toss.stable = exact.motion_case() == physics::ExactCase::steady ||
+      body.notes.push_back("toss " + std::to_string(k + 1) + " flagged: " + toss.flag +
+                           "; its values are not to be trusted");
+    toss.stable = exact.free().motion_case() == physics::ExactCase::steady ||
                   max_angle * 180.0 / kPi < kStableDegrees;
     if (toss.stable) ++stable_count;
     // L_decay: −slope/intercept of the least-squares line through |L|(τ).
@@ -429,27 +654,30 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     if (crossings.size() >= 2)
       toss.half_period_measured =
           (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-    // Prediction: the body from the other tosses (or --moments), ω0 from this toss's start.
-    const std::optional<Parameters>& held_out = fold_body[k % fold_body.size()];
+    // Prediction: the body and drag rate from the other tosses (or --moments), ω0 from this
+    // toss's first predict_window s; its flips over the flight's times.
+    const std::size_t fold = k % folds;
+    const std::optional<Parameters>& held_out = fold_body[fold];
     if (held_out) {
       Parameters others = *held_out;
       std::vector<TossData> alone{d};
-      others.omega0 = {joint.omega0[k]};
-      others.omega0[0] = {d.omega[0][0], d.omega[0][1], d.omega[0][2]};
+      others.omega0 = {
+          {d.omega[0][0], d.omega[0][1], d.omega[0][2], data.size() >= 2 ? fold_rate[fold] : 0.0}};
       SolveOptions options;
       // One toss with --moments: its axes too from the first predict_window s alone.
       options.body_fixed = data.size() >= 2;
       options.moments_fixed = true;
+      options.drag = law;
+      options.rates_fixed = true;
       options.window = settings.predict_window;
       if (solve(alone, others, options).usable) {
         const Eigen::Matrix3d axes = others.axes();
-        const physics::ExactRotation predicted(
+        const physics::DampedExactRotation predicted(
             others.moments(),
             axes.transpose() *
                 Eigen::Vector3d(others.omega0[0][0], others.omega0[0][1], others.omega0[0][2]),
-            physics::ExactParts::omega_only);
-        if (std::isfinite(predicted.flip_period()))
-          toss.half_period_predicted = predicted.flip_period();
+            physics::Drag{law, others.omega0[0][3]}, physics::ExactParts::omega_only);
+        toss.half_period_predicted = motion_half_period(predicted, axes, d.tau);
       }
     }
     result.tosses.push_back(toss);

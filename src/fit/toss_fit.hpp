@@ -10,6 +10,7 @@
 
 #include "fit/flights.hpp"
 #include "fit/recording.hpp"
+#include "physics/drag.hpp"
 
 namespace bookspin::fit {
 
@@ -21,7 +22,10 @@ struct BodyEstimate {
   /// is a convention: its largest phone component positive, the third then fixed by det +1).
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
   /// One standard deviation of each ratio (the third is exactly 1: σ 0) and of each axis's
-  /// direction (degrees), from the fit's covariance scaled by its residual variance; nullopt
+  /// direction (degrees): the larger of the fit's covariance scaled by its residual variance
+  /// and inflated for the residual's correlation from sample to sample, and the spread of the
+  /// bodies fitted without each fold of tosses (a grouped jackknife over the tosses: what the
+  /// model leaves out differs from toss to toss; docs/phone-lab.md, "Error bars"); nullopt
   /// where the covariance could not be computed (a fit that cannot tell them apart).
   std::optional<Eigen::Vector3d> ratio_sigma, axis_sigma_deg;
   bool moments_fixed = false;      ///< given by --moments: not fitted
@@ -34,22 +38,35 @@ struct TossFit {
   Flight flight;
   Eigen::Vector3d omega0 = Eigen::Vector3d::Zero();  ///< rad/s, phone frame, at t_start
   std::optional<Eigen::Vector3d> omega0_sigma;       ///< rad/s, one standard deviation
+  /// The air drag's rate r (1/s: the initial loss of |L| per second, docs/physics.md §21) under
+  /// the fit's law, and its standard deviation; 0 and nullopt under --drag none.
+  double drag_rate = 0.0;
+  std::optional<double> drag_rate_sigma;
   /// Mean time between the measured ω's sign changes about the fitted intermediate axis (s);
   /// nullopt with fewer than two sign changes in the flight.
   std::optional<double> half_period_measured;
-  /// T/2 of the fitted exact motion (s); nullopt for a steady motion (no period).
+  /// The same mean over the flight's sample times for the fitted motion (s): its T/2 without
+  /// drag; under drag the flips slow down (docs/physics.md §21), and this is their mean spacing
+  /// within the flight. Where the fitted motion changes sign fewer than twice in the flight,
+  /// its T/2 at the flight's middle; nullopt for a steady motion (no period).
   std::optional<double> half_period_fitted;
-  /// T/2 predicted: the body fitted on the other tosses (or --moments), this toss's ω0 fitted
-  /// on its first `predict_window` seconds alone; nullopt with no other toss and no --moments.
+  /// The same for a prediction: the body fitted on the other tosses (or --moments), the drag
+  /// rate the mean of theirs (0 without others), this toss's ω0 fitted on its first
+  /// `predict_window` seconds alone; nothing after them is seen. nullopt with no other toss and
+  /// no --moments.
   std::optional<double> half_period_predicted;
   double residual_rms = 0.0;  ///< rad/s, RMS of |ω_measured − ω_fitted| over the flight
   /// Fractional loss of the measured |L| (L = I ω with the fitted I) per second (1/s), from a
   /// straight line fitted to |L|(t): 0 for torque-free flight, > 0 under air drag.
   double L_decay = 0.0;
   bool stable = false;  ///< ω stays within 25° of the axis it circles: it cannot tell moments
-  /// residual_rms over 3 % of the toss's mean |ω|: the exact motion does not fit it (a throw or
-  /// catch inside the stretch, a body that is not rigid); said in BodyEstimate::notes.
+  /// The residual is not the measurement's noise: somewhere in the flight (50 ms blocks) it is
+  /// far above both the gyroscope's scatter at rest and the flight's typical residual, or it is
+  /// over 10 % of |ω| throughout (docs/phone-lab.md, "Flags"); `flag` says what it looks like (a
+  /// catch or throw inside the flight, a knock or the phone slipping, a body that flexes), one
+  /// line, also in BodyEstimate::notes.
   bool poor_fit = false;
+  std::string flag;
 };
 
 /// What the fit is given besides the flights.
@@ -57,10 +74,17 @@ struct FitSettings {
   /// Principal moments given by --moments (any scale, any order): fixed, not fitted.
   std::optional<Eigen::Vector3d> moments;
   double predict_window = 0.2;  ///< s, the start of a toss that half_period_predicted sees
+  /// The air drag's law fitted with each toss (docs/physics.md §21; docs/phone-lab.md, "Drag":
+  /// linear by default, chosen by measurement), its rate one more parameter per toss.
+  physics::DragLaw drag = physics::DragLaw::linear;
 };
 
 struct FitResult {
-  FlightSearch search;  ///< the flights fitted (and the bias removed, the stretches dropped)
+  /// The flights fitted, the stretches dropped, and the bias removed: the rest's corrected by
+  /// the flights themselves (bias_correction, fitted with two or more tosses).
+  FlightSearch search;
+  Eigen::Vector3d bias_correction = Eigen::Vector3d::Zero();  ///< rad/s, phone frame
+  physics::DragLaw drag = physics::DragLaw::linear;           ///< the law the rates are of
   BodyEstimate body;
   std::vector<TossFit> tosses;  ///< one per flight, in order
 };
@@ -72,7 +96,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
                         const FitSettings& settings = {});
 
 /// The fitted exact body-frame ω (rad/s, phone frame) of toss `toss` at time `t` (s, the
-/// recording's time).
+/// recording's time), its drag included (docs/physics.md §21).
 Eigen::Vector3d fitted_omega(const FitResult& fit, int toss, double t);
 
 /// The measured ω (rad/s, phone frame, bias removed) of toss `toss`'s samples, and their times.

@@ -8,10 +8,12 @@ namespace bookspin::fit {
 namespace {
 
 constexpr double kStep = 1e-6;  // relative difference step of the setups (|θ_p| ≥ 1) or absolute
+constexpr int kDragParameter = 8;  // θ's index of the drag rate
 
 std::array<double, TossModel::kParameters> parameters(const double* aa, const double* log_ratios,
-                                                      const double* omega0) {
-  return {aa[0], aa[1], aa[2], log_ratios[0], log_ratios[1], omega0[0], omega0[1], omega0[2]};
+                                                      const double* omega0_rate) {
+  return {aa[0],          aa[1],          aa[2],          log_ratios[0], log_ratios[1],
+          omega0_rate[0], omega0_rate[1], omega0_rate[2], omega0_rate[3]};
 }
 
 }  // namespace
@@ -23,11 +25,15 @@ Eigen::Matrix3d rotation_from_angle_axis(const double* aa) {
   return Eigen::AngleAxisd(angle, v / angle).toRotationMatrix();
 }
 
-TossModel::Motion::Motion(const Eigen::Matrix3d& R0, const std::array<double, kParameters>& theta)
+TossModel::Motion::Motion(const Eigen::Matrix3d& R0, const std::array<double, kParameters>& theta,
+                          physics::DragLaw law)
     : axes(R0 * rotation_from_angle_axis(theta.data())),
       exact(Eigen::Vector3d(std::exp(theta[3]), std::exp(theta[4]), 1.0),
             axes.transpose() * Eigen::Vector3d(theta[5], theta[6], theta[7]),
-            physics::ExactParts::omega_only) {}
+            physics::ExactParts::omega_only),
+      drag{law, law == physics::DragLaw::none ? 0.0 : theta[8]} {
+  if (!std::isfinite(drag.rate)) throw std::invalid_argument("TossModel: drag rate not finite");
+}
 
 std::optional<TossModel::Form> TossModel::form_of(const Motion& motion) {
   const physics::ExactCase c = motion.exact.motion_case();
@@ -38,12 +44,12 @@ std::optional<TossModel::Form> TossModel::form_of(const Motion& motion) {
 }
 
 TossModel::TossModel(const Eigen::Matrix3d& R0, const double* aa, const double* log_ratios,
-                     const double* omega0, bool derivatives)
-    : centre_(R0, parameters(aa, log_ratios, omega0)) {
+                     const double* omega0_rate, physics::DragLaw law, bool derivatives)
+    : centre_(R0, parameters(aa, log_ratios, omega0_rate), law) {
   form_ = form_of(centre_);
   if (form_) agm_.emplace(form_->k, form_->kc2);
   if (!derivatives) return;
-  const std::array<double, kParameters> theta = parameters(aa, log_ratios, omega0);
+  const std::array<double, kParameters> theta = parameters(aa, log_ratios, omega0_rate);
   closed_ = form_.has_value();
   plus_.reserve(kParameters);
   minus_.reserve(kParameters);
@@ -52,9 +58,9 @@ TossModel::TossModel(const Eigen::Matrix3d& R0, const double* aa, const double* 
     std::array<double, kParameters> up = theta, down = theta;
     up[p] += step_[p];
     down[p] -= step_[p];
-    plus_.emplace_back(R0, up);
-    minus_.emplace_back(R0, down);
-    if (!closed_) continue;
+    plus_.emplace_back(R0, up, law);
+    minus_.emplace_back(R0, down, law);
+    if (!closed_ || p == kDragParameter) continue;  // the rate's column is analytic (§21)
     const std::optional<Form> a = form_of(plus_.back()), b = form_of(minus_.back());
     // The same branch of the closed form on both sides: the same case, amplitudes and modulus
     // near the centre's (a case or sign change would jump by their size).
@@ -92,10 +98,14 @@ Eigen::Vector3d TossModel::omega(double tau, Jacobian* jacobian) const {
     return centre_.omega(tau);
   }
   const Form& f = *form_;
-  const double u = f.lambda * tau + f.u0;
+  // Under drag the free motion at the stretched time s, scaled by g (docs/physics.md §21).
+  const physics::Drag& drag = centre_.drag;
+  const double s = physics::stretched_time(drag, tau), g = physics::drag_decay(drag, tau);
+  const double u = f.lambda * s + f.u0;
   const JacobiAgm::Values v = (*agm_)(u);
   const Eigen::Vector3d J(v.cn, v.sn, v.dn);
-  const Eigen::Vector3d w = f.C * J;
+  const Eigen::Vector3d w_free = f.C * J;
+  const Eigen::Vector3d w = g * w_free;
   if (!jacobian) return w;
   if (!closed_) {
     for (int p = 0; p < kParameters; ++p)
@@ -116,8 +126,12 @@ Eigen::Vector3d TossModel::omega(double tau, Jacobian* jacobian) const {
                           -(k * v.sn * v.sn + k * k * v.sn * v.cn * phi_k) / v.dn);
   }
   const Eigen::Vector3d a = f.C * J_u, b = f.C * J_k;
-  for (int p = 0; p < kParameters; ++p)
-    jacobian->col(p) = dC_[p] * J + (tau * dlambda_[p] + du0_[p]) * a + dk_[p] * b;
+  for (int p = 0; p < kDragParameter; ++p)
+    jacobian->col(p) = g * (dC_[p] * J + (s * dlambda_[p] + du0_[p]) * a + dk_[p] * b);
+  // ∂ω/∂r = (∂g/∂r) ω_free(s) + g λ (∂s/∂r) C ∂J/∂u (§21); zero without a drag law.
+  jacobian->col(kDragParameter) =
+      physics::drag_decay_rate_derivative(drag, tau) * w_free +
+      (g * f.lambda * physics::stretched_time_rate_derivative(drag, tau)) * a;
   return w;
 }
 

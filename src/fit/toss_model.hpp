@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fit/elliptic.hpp"
+#include "physics/drag.hpp"
 #include "physics/exact_solution.hpp"
 
 namespace bookspin::fit {
@@ -16,8 +17,9 @@ namespace bookspin::fit {
 Eigen::Matrix3d rotation_from_angle_axis(const double* aa);
 
 /// The exact ω(τ) of one toss with principal axes R0·exp([aa]×) (columns, phone frame), moments
-/// (e^p1, e^p2, 1) about them and ω(0) = ω0 (rad/s, phone frame); θ = (aa, p, ω0), eight
-/// parameters in that order.
+/// (e^p1, e^p2, 1) about them, ω(0) = ω0 (rad/s, phone frame) and the air drag's rate r (1/s)
+/// under `law` (docs/physics.md §21: ω(τ) = g(τ) ω_free(s(τ))); θ = (aa, p, ω0, r), nine
+/// parameters in that order (r's column is zero under DragLaw::none).
 ///
 /// With derivatives asked for, ∂ω/∂θ comes from the closed form ω = C · (cn u, sn u, dn u)ᵀ,
 /// u = λτ + u0 (C = axes · A of physics::ExactOmegaForm): analytic in u and in the modulus k
@@ -27,13 +29,14 @@ Eigen::Matrix3d rotation_from_angle_axis(const double* aa);
 /// central difference of the whole ω(τ).
 class TossModel {
  public:
-  static constexpr int kParameters = 8;
+  static constexpr int kParameters = 9;
   using Jacobian = Eigen::Matrix<double, 3, kParameters>;
 
   /// Throws std::invalid_argument (from physics::ExactRotation) when the moments or ω0 are not
   /// finite.
+  /// `omega0_rate` = (ω0x, ω0y, ω0z, r).
   TossModel(const Eigen::Matrix3d& R0, const double* aa, const double* log_ratios,
-            const double* omega0, bool derivatives);
+            const double* omega0_rate, physics::DragLaw law, bool derivatives);
 
   /// ω(τ), rad/s, phone frame, τ in s since the toss's start; ∂ω/∂θ into `jacobian` when it is
   /// not null (the model must have been built with derivatives).
@@ -47,8 +50,13 @@ class TossModel {
   struct Motion {
     Eigen::Matrix3d axes;
     physics::ExactRotation exact;
-    explicit Motion(const Eigen::Matrix3d& R0, const std::array<double, kParameters>& theta);
-    Eigen::Vector3d omega(double tau) const { return axes * exact.omega_body(tau); }
+    physics::Drag drag;
+    Motion(const Eigen::Matrix3d& R0, const std::array<double, kParameters>& theta,
+           physics::DragLaw law);
+    Eigen::Vector3d omega(double tau) const {
+      return physics::drag_decay(drag, tau) *
+             (axes * exact.omega_body(physics::stretched_time(drag, tau)));
+    }
   };
   /// (C, λ, u0, k) of `motion`, or nullopt without a closed form.
   struct Form {

@@ -8,7 +8,8 @@
 
 namespace bookspin::physics {
 
-ExactModel::ExactModel(const Body& body) : body_(body), cage_corners_(body.cage.body_corners()) {
+ExactModel::ExactModel(const Body& body, Drag drag)
+    : body_(body), drag_(drag), cage_corners_(body.cage.body_corners()) {
   reset(InitialState{});
 }
 
@@ -30,7 +31,7 @@ void ExactModel::set_precession_table(PrecessionTable table) {
   const Eigen::Vector3d omega0 = rotation_->omega0_body();  // emplace destroys the old first
   rotation_.emplace(body_.moments, omega0, std::move(table));
   has_orientation_ = true;
-  R_ = rotation_->orientation(t_);
+  R_ = rotation_->orientation(stretched_time(drag_, t_));
 }
 
 // t = t_base + n·dt from the step count n, not a running sum of dt: the sum's rounding
@@ -48,7 +49,7 @@ void ExactModel::advance(double dt, long n) {
   }
   steps_ += n;
   t_ = t_base_ + static_cast<double>(steps_) * dt_;
-  R_ = rotation_->orientation(t_);
+  R_ = rotation_->orientation(stretched_time(drag_, t_));
 }
 
 Corners ExactModel::corners() const { return R_ * cage_corners_; }
@@ -56,8 +57,10 @@ Corners ExactModel::corners() const { return R_ * cage_corners_; }
 Diagnostics ExactModel::diagnostics() const {
   // The shared rigid diagnostics give L, the axis cosines, strain and orthogonality from R;
   // ω and the energy are then taken from the exact ω(t) rather than from R and L.
-  Diagnostics d = rigid_diagnostics(body_, R_, rotation_->angular_momentum_world(), t_);
-  d.omega_body = rotation_->omega_body(t_);
+  // Under drag: L = g(t) L0, ω = g(t) ω_free(s(t)) (docs/physics.md §21; g = 1, s = t without).
+  const double g = drag_decay(drag_, t_);
+  Diagnostics d = rigid_diagnostics(body_, R_, g * rotation_->angular_momentum_world(), t_);
+  d.omega_body = g * rotation_->omega_body(stretched_time(drag_, t_));
   d.energy_kinetic = 0.5 * d.omega_body.dot(body_.moments.cwiseProduct(d.omega_body));
   d.energy_potential = 0.0;
   d.energy_total = d.energy_kinetic;
@@ -69,10 +72,12 @@ Diagnostics ExactModel::diagnostics() const {
   return d;
 }
 
-bool ExactModel::finite() const { return std::isfinite(t_) && is_sane(R_); }
+bool ExactModel::finite() const {
+  return std::isfinite(t_) && drag_defined_until(drag_, t_) && is_sane(R_);
+}
 
-std::unique_ptr<Simulator> make_exact_simulator(const Body& body) {
-  return std::make_unique<ExactModel>(body);
+std::unique_ptr<Simulator> make_exact_simulator(const Body& body, Drag drag) {
+  return std::make_unique<ExactModel>(body, drag);
 }
 
 std::unique_ptr<Simulator> make_exact_simulator(const Book& book) {

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 
+#include "physics/drag.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/simulator.hpp"
 
@@ -14,11 +15,13 @@ namespace bookspin::physics {
 /// jiggle), the same jiggled angular momentum the rigid models start from; step(dt) only advances
 /// t, and the state at t is evaluated exactly (no error accumulates with the number of steps).
 /// After n steps of one dt, t = n·dt as a product, not a running sum of dt (docs/physics.md §10).
-/// Corners are R(t)·body.cage corners (3×8, world frame).
+/// Corners are R(t)·body.cage corners (3×8, world frame). Under `drag` (docs/physics.md §21)
+/// the state at t is the free motion's at the stretched time s(t), ω and L scaled by g(t)
+/// (physics::DampedExactRotation's closed form); rotation() stays the free motion.
 class ExactModel final : public Simulator {
  public:
   /// Starts in the state of reset(InitialState{}).
-  explicit ExactModel(const Body& body);
+  explicit ExactModel(const Body& body, Drag drag = {});
   /// ExactModel(book_body(book)).
   explicit ExactModel(const Book& book) : ExactModel(book_body(book)) {}
   void reset(const InitialState& initial) override;
@@ -48,6 +51,7 @@ class ExactModel final : public Simulator {
 
  private:
   Body body_;
+  Drag drag_;
   Corners cage_corners_;  ///< body.cage's corners, body frame (3×8)
   std::optional<ExactRotation> rotation_;
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
@@ -59,7 +63,7 @@ class ExactModel final : public Simulator {
 };
 
 /// The exact model for `body` (make_simulator() returns it for ModelKind::exact).
-std::unique_ptr<Simulator> make_exact_simulator(const Body& body);
+std::unique_ptr<Simulator> make_exact_simulator(const Body& body, Drag drag = {});
 /// make_exact_simulator(book_body(book)).
 std::unique_ptr<Simulator> make_exact_simulator(const Book& book);
 

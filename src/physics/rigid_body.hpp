@@ -33,9 +33,20 @@ class RigidBody : public Simulator {
   /// L from the initial state (the jiggle included, docs/physics.md §5), t = 0, the run open.
   void reset_motion(const InitialState& initial) {
     L_ = initial_angular_momentum(body_.moments, initial);
+    L0_norm_ = L_.norm();
     t_ = 0.0;
     failure_.clear();
     schedule_.reset();
+  }
+
+  /// The drag's own flow over `h` (docs/physics.md §21): L scaled by the law's exact factor,
+  /// its direction kept; the factor (1 without drag). Each step runs it for dt/2 before and
+  /// after the integrator's free step (Strang splitting).
+  double apply_drag(double h) {
+    if (!config_.drag.active() || L0_norm_ == 0.0) return 1.0;
+    const double factor = drag_step_factor(config_.drag, L_.norm() / L0_norm_, h);
+    L_ *= factor;
+    return factor;
   }
 
   Body body_;
@@ -43,10 +54,12 @@ class RigidBody : public Simulator {
   NormalizeSchedule schedule_;       ///< which steps normalize (normalize_every)
   Corners cage_corners_;             ///< body.cage's corners, body frame (3×8)
   Eigen::Vector3d inverse_moments_;  ///< 1 / principal moments, body frame
-  /// World frame; constant but under `rescaled-euler`, whose step turns it (§10.7).
+  /// World frame; constant but under `rescaled-euler`, whose step turns it (§10.7), and
+  /// under drag, which shrinks it (§21).
   Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
-  double t_ = 0.0;       ///< time units
-  std::string failure_;  ///< why the run ended early; empty while it runs
+  double L0_norm_ = 0.0;  ///< |L| at reset: the quadratic drag law's scale
+  double t_ = 0.0;        ///< time units
+  std::string failure_;   ///< why the run ended early; empty while it runs
 };
 
 }  // namespace bookspin::physics

@@ -137,6 +137,9 @@ class SplittingStepper {
   /// `Pi_of_orientation` = R_lagᵀ L (body frame) for the caller's lagging orientation before
   /// the step.
   void step(double dt, const Eigen::Vector3d& Pi_of_orientation, Eigen::Quaterniond& orientation);
+  /// Scales the momentum carried between steps by `factor` (the drag's sub-flow between two
+  /// steps, docs/physics.md §21).
+  void scale(double factor) { Pi_lag_ *= factor; }
   /// The pending outer half-flow's rotation (body frame).
   Eigen::Quaterniond pending_increment() const;
   /// Body-frame momentum at the end of the last step (the pending half-flow applied).

@@ -47,8 +47,24 @@ void RigidMatrixModel::euler_step(double dt) {
   R_ += dt * turn;
 }
 
+// Drag (docs/physics.md §21): its exact sub-flow for dt/2, the free step, dt/2 again (Strang
+// splitting). The splittings' pending outer half-flow is applied first (a drag sub-flow between
+// it and its step would break the step's symmetry: first order), and their carried momentum
+// scaled with L. Without drag the free step alone.
 void RigidMatrixModel::step(double dt) {
   if (!failure_.empty()) return;  // the run has ended (finite() is false)
+  if (!config_.drag.active()) return free_step(dt);
+  splitting_.scale(apply_drag(0.5 * dt));
+  free_step(dt);
+  if (!failure_.empty()) return;
+  if (splits()) {
+    R_ = matrix();
+    splitting_.reset(splitting_.Pi_body());
+  }
+  splitting_.scale(apply_drag(0.5 * dt));
+}
+
+void RigidMatrixModel::free_step(double dt) {
   switch (config_.integrator) {
     case Integrator::rk4:
       R_ = rk4_step(R_, dt, [this](const Eigen::Matrix3d& R) { return derivative(R); });

@@ -32,6 +32,7 @@ class RigidMatrixModel final : public RigidBody {
   Eigen::Matrix3d orientation() const override;
 
  private:
+  void free_step(double dt);  ///< one step of the torque-free motion
   Eigen::Vector3d omega_world(const Eigen::Matrix3d& R) const;
   Eigen::Matrix3d derivative(const Eigen::Matrix3d& R) const;
   void euler_step(double dt);

@@ -117,8 +117,24 @@ Eigen::Vector3d RigidQuaternionModel::body_momentum() const {
   return L_ + (2.0 / q_.squaredNorm()) * (u.cross(u_cross_L) - q_.w() * u_cross_L);
 }
 
+// Drag (docs/physics.md §21): its exact sub-flow for dt/2, the free step, dt/2 again (Strang
+// splitting). The splittings' pending outer half-flow is applied first (a drag sub-flow between
+// it and its step would break the step's symmetry: first order), and their carried momentum
+// scaled with L. Without drag the free step alone.
 void RigidQuaternionModel::step(double dt) {
   if (!failure_.empty()) return;  // the run has ended (finite() is false)
+  if (!config_.drag.active()) return free_step(dt);
+  splitting_.scale(apply_drag(0.5 * dt));
+  free_step(dt);
+  if (!failure_.empty()) return;
+  if (splits()) {
+    q_ = quaternion();
+    splitting_.reset(splitting_.Pi_body());
+  }
+  splitting_.scale(apply_drag(0.5 * dt));
+}
+
+void RigidQuaternionModel::free_step(double dt) {
   switch (config_.integrator) {
     case Integrator::rk4:
       q_.coeffs() = rk4_step(Eigen::Vector4d(q_.coeffs()), dt,

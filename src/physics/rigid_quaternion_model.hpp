@@ -34,6 +34,7 @@ class RigidQuaternionModel final : public RigidBody {
   Eigen::Matrix3d orientation() const override;
 
  private:
+  void free_step(double dt);  ///< one step of the torque-free motion
   Eigen::Vector4d derivative(const Eigen::Vector4d& q_coeffs) const;
   Eigen::Vector3d body_momentum() const;
   void raw_euler_step(double dt);

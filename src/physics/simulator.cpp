@@ -151,6 +151,11 @@ Integrator default_integrator(ModelKind kind) {
                          std::to_string(static_cast<int>(kind)) + " has no modes");
 }
 
+bool supports_drag(ModelKind kind) {
+  return kind == ModelKind::rigid_matrix || kind == ModelKind::rigid_quaternion ||
+         kind == ModelKind::exact;
+}
+
 std::unique_ptr<Simulator> make_simulator(const Book& book, const ModelConfig& config) {
   return make_simulator(book_body(book), config);
 }
@@ -160,6 +165,10 @@ std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& c
     throw std::invalid_argument("model '" + std::string(to_string(config.kind)) +
                                 "' does not support integrator '" +
                                 std::string(to_string(config.integrator)) + "'");
+  }
+  if (config.drag.active() && !supports_drag(config.kind)) {
+    throw std::invalid_argument("model '" + std::string(to_string(config.kind)) +
+                                "' takes no drag (only rigid-matrix, rigid-quaternion, exact)");
   }
   if (is_engine(config.kind)) {
     throw std::invalid_argument("model '" + std::string(to_string(config.kind)) +
@@ -174,7 +183,7 @@ std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& c
     case ModelKind::rigid_quaternion:
       return std::make_unique<RigidQuaternionModel>(body, config);
     case ModelKind::exact:
-      return make_exact_simulator(body);
+      return make_exact_simulator(body, config.drag);
     default:
       break;
   }

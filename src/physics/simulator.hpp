@@ -7,6 +7,7 @@
 
 #include "physics/body.hpp"
 #include "physics/book.hpp"
+#include "physics/drag.hpp"
 
 namespace bookspin::physics {
 
@@ -48,6 +49,10 @@ struct ModelConfig {
   /// Particle lattice of a non-book body: cells along the body's longest side; 0 = default
   /// (docs/physics.md §13). Not used by the book or the rigid and exact models.
   int lattice_cells = 0;
+  /// Air drag on the body's rotation (docs/physics.md §21): the exact model's closed form
+  /// (the free motion in stretched time), the rigid models' exact sub-flow of the torque
+  /// around each step (Strang splitting). Not accepted by the particle model or the engines.
+  Drag drag = {};
 };
 
 /// Initial condition: identity orientation, body-frame ω0, and a seeded jiggle.
@@ -161,6 +166,9 @@ Eigen::Vector3d jiggle_delta_L(std::uint64_t seed, double amplitude);
 /// explicit, none; ode: step, quickstep, none).
 bool supports(ModelKind kind, Integrator integrator);
 
+/// Whether a model takes air drag (ModelConfig::drag): the rigid and exact models.
+bool supports_drag(ModelKind kind);
+
 /// True for the other engines' models (mujoco, bullet, ode), which make_simulator() cannot
 /// build: engines::make_model() does.
 bool is_engine(ModelKind kind);
@@ -171,7 +179,8 @@ Integrator default_integrator(ModelKind kind);
 
 /// Creates the simulator of `body` for `config`. The rigid and exact models use
 /// body.moments and move body.cage's corners (docs/physics.md §12). Throws
-/// std::invalid_argument when the model does not support the integrator, for the
+/// std::invalid_argument when the model does not support the integrator, for drag on a
+/// model other than the rigid and exact ones (supports_drag()), for the
 /// particle model of a non-book body (which needs the lattice, docs/physics.md §13), and
 /// for an engine's model (is_engine(): engines::make_model() builds those).
 std::unique_ptr<Simulator> make_simulator(const Body& body, const ModelConfig& config);

@@ -101,10 +101,11 @@ FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& na
 }
 
 CsvTable fit_toss_csv(const fit::FitResult& fit) {
-  CsvTable table{{"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z",
-                  "half_period_measured", "half_period_fitted", "half_period_predicted",
-                  "residual_rms", "L_decay", "stable", "poor_fit"},
-                 {}};
+  CsvTable table{
+      {"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z", "half_period_measured",
+       "half_period_fitted", "half_period_predicted", "residual_rms", "L_decay", "drag_rate",
+       "drag_rate_sigma", "stable", "poor_fit", "flag"},
+      {}};
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const fit::TossFit& t = fit.tosses[k];
     table.rows.push_back(
@@ -112,19 +113,19 @@ CsvTable fit_toss_csv(const fit::FitResult& fit) {
          shortest_cell(t.omega0[0]), shortest_cell(t.omega0[1]), shortest_cell(t.omega0[2]),
          shortest_cell(t.half_period_measured), shortest_cell(t.half_period_fitted),
          shortest_cell(t.half_period_predicted), shortest_cell(t.residual_rms),
-         shortest_cell(t.L_decay), std::string(t.stable ? "yes" : "no"),
-         std::string(t.poor_fit ? "yes" : "no")});
+         shortest_cell(t.L_decay), shortest_cell(t.drag_rate), shortest_cell(t.drag_rate_sigma),
+         std::string(t.stable ? "yes" : "no"), std::string(t.poor_fit ? "yes" : "no"), t.flag});
   }
   return table;
 }
 
 CsvTable fit_body_csv(const fit::FitResult& fit) {
   const fit::BodyEstimate& b = fit.body;
-  CsvTable table{
-      {"I1_over_I3", "I2_over_I3", "I3_over_I3", "I1_sigma", "I2_sigma", "axis1_x", "axis1_y",
-       "axis1_z", "axis2_x", "axis2_y", "axis2_z", "axis3_x", "axis3_y", "axis3_z",
-       "axis1_sigma_deg", "axis2_sigma_deg", "axis3_sigma_deg", "moments", "tosses"},
-      {}};
+  CsvTable table{{"I1_over_I3",      "I2_over_I3",      "I3_over_I3", "I1_sigma", "I2_sigma",
+                  "axis1_x",         "axis1_y",         "axis1_z",    "axis2_x",  "axis2_y",
+                  "axis2_z",         "axis3_x",         "axis3_y",    "axis3_z",  "axis1_sigma_deg",
+                  "axis2_sigma_deg", "axis3_sigma_deg", "moments",    "tosses",   "drag"},
+                 {}};
   std::vector<CsvCell> row{shortest_cell(b.ratios[0]), shortest_cell(b.ratios[1]),
                            shortest_cell(b.ratios[2])};
   for (int i = 0; i < 2; ++i)
@@ -139,6 +140,7 @@ CsvTable fit_body_csv(const fit::FitResult& fit) {
                             : b.moments_determined ? "fitted"
                                                    : "poorly determined"));
   row.push_back(std::to_string(fit.tosses.size()));
+  row.push_back(std::string(physics::to_string(fit.drag)));
   table.rows.push_back(std::move(row));
   return table;
 }
@@ -153,14 +155,25 @@ std::vector<std::string> fit_summary(const fit::FitResult& fit) {
                       : "no rest in the recording: the gyroscope's bias is not removed");
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const fit::TossFit& t = fit.tosses[k];
+    std::string drag;
+    if (fit.drag != physics::DragLaw::none)
+      drag = ", drag " + fixed(t.drag_rate, 3) +
+             (t.drag_rate_sigma ? " ± " + fixed(*t.drag_rate_sigma, 3) : std::string()) + " /s";
     lines.push_back("kept toss " + std::to_string(k + 1) + ": " + fixed(t.flight.t_start, 3) + "–" +
-                    fixed(t.flight.t_end, 3) + " s" + (t.stable ? " (stable: no flip)" : ""));
+                    fixed(t.flight.t_end, 3) + " s" + drag +
+                    (t.stable ? " (stable: no flip)" : "") + (t.poor_fit ? " (flagged)" : ""));
   }
   for (const fit::DroppedStretch& d : fit.search.dropped)
     lines.push_back("dropped " + fixed(d.t_start, 3) + "–" + fixed(d.t_end, 3) + " s: " + d.reason);
   const fit::BodyEstimate& b = fit.body;
+  std::string sigma;
+  if (b.ratio_sigma && !b.moments_fixed)
+    sigma = " (± " + fixed((*b.ratio_sigma)[0], 4) + ", ± " + fixed((*b.ratio_sigma)[1], 4) + ")";
   lines.push_back("moments I1 : I2 : I3 = " + fixed(b.ratios[0], 4) + " : " +
-                  fixed(b.ratios[1], 4) + " : 1" + (b.moments_fixed ? " (given)" : ""));
+                  fixed(b.ratios[1], 4) + " : 1" + (b.moments_fixed ? " (given)" : sigma) +
+                  (fit.drag == physics::DragLaw::none
+                       ? ", no drag"
+                       : ", " + std::string(physics::to_string(fit.drag)) + " drag"));
   for (const std::string& note : b.notes) lines.push_back("note: " + note);
   return lines;
 }
@@ -195,7 +208,8 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
                      {"tosses", {std::move(tosses)}},
                      {"moments", {std::move(moments)}},
                      {"width", {std::int64_t{job.width}}},
-                     {"height", {std::int64_t{job.height}}}};
+                     {"height", {std::int64_t{job.height}}},
+                     {"drag", {std::string(physics::to_string(job.drag))}}};
   // --render: the clips' scene (before anything is made: a bad scene writes nothing), its
   // resolved keys and the files it reads in the head.
   const std::optional<scene::Scene> clip_scene =
@@ -221,6 +235,7 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
                                                         : fit::hand_flights(recording, job.tosses);
     fit::FitSettings settings;
     settings.moments = job.moments;
+    settings.drag = job.drag;
     const fit::FitResult result = fit::fit_recording(recording, search, settings);
     if (clip_scene && !result.body.moments_determined && !result.body.moments_fixed)
       throw InputError(recording.source +

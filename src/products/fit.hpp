@@ -43,10 +43,11 @@ FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& na
 struct FitJob {
   std::filesystem::path recording;  ///< a phyphox export (folder, Raw Data.csv, zip) or t,wx,wy,wz
   std::filesystem::path out_dir;
-  std::vector<std::pair<double, double>> tosses;  ///< --tosses by hand (s); empty: found
-  std::optional<Eigen::Vector3d> moments;         ///< --moments: fixed
-  int width = 1400, height = 700;                 ///< each chart's pixels
-  std::optional<FitRender> render;                ///< --render: a clip of each toss
+  std::vector<std::pair<double, double>> tosses;     ///< --tosses by hand (s); empty: found
+  std::optional<Eigen::Vector3d> moments;            ///< --moments: fixed
+  physics::DragLaw drag = physics::DragLaw::linear;  ///< --drag (fit::FitSettings::drag)
+  int width = 1400, height = 700;                    ///< each chart's pixels
+  std::optional<FitRender> render;                   ///< --render: a clip of each toss
   /// Polled before each clip frame and while its encoders finish (clip::ClipRequest): a signal
   /// throws Interrupted, nothing put in place.
   StopPoll stop_signal;

@@ -64,15 +64,31 @@ std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::stri
   if (!book) throw InternalError("toss_scene_text: the fitted moments make no book");
   const Eigen::Vector3d omega0 = toss_scene_frame(fit.body).transpose() * t.omega0;
   const double flight = t.flight.t_end - t.flight.t_start;
-  const double duration =
+  double duration =
       std::max(flight, std::min(kMaxDuration, 4.0 * t.half_period_fitted.value_or(0.0)));
+  // The fitted drag (docs/physics.md §21); a negative quadratic rate (a gain within its error
+  // of zero) blows up at −1/r: the run stops well before (scenes/README.md, model.drag_rate).
+  const physics::Drag drag{fit.drag, t.drag_rate};
+  if (drag.law == physics::DragLaw::quadratic && drag.rate < 0)
+    duration = std::min(duration, -0.45 / drag.rate);
+  std::string model = "\n\n[model]\nkind = \"exact\"\n";
+  if (drag.law != physics::DragLaw::none)
+    model += "drag = " + json_string(std::string(physics::to_string(drag.law))) +
+             "  # the air's drag as fitted (docs/physics.md §21)\ndrag_rate = " +
+             number(drag.rate, "toss scene model.drag_rate") + "  # 1/s\n";
+  model += "\n";
   const std::string n = std::to_string(toss + 1);
   const Eigen::Vector3d& r = fit.body.ratios;
   const std::string moments = fixed(r[0], 4) + " : " + fixed(r[1], 4) + " : 1";
   const std::string description =
       "Toss " + n + " of the recording " + recording + " (" + fixed(t.flight.t_start, 3) + "–" +
       fixed(t.flight.t_end, 3) + " s), fitted by bookspin fit: a box with the fitted moments " +
-      moments + " spinning from the fitted ω0 under the exact motion, t = 0 the flight's start" +
+      moments + " spinning from the fitted ω0 under the exact motion" +
+      (t.drag_rate != 0.0 && fit.drag != physics::DragLaw::none
+           ? " slowed by the fitted " + std::string(physics::to_string(fit.drag)) + " drag (" +
+                 fixed(t.drag_rate, 3) + " /s)"
+           : std::string()) +
+      ", t = 0 the flight's start" +
       (t.stable ? "; a stable toss: it wobbles, it does not flip" : "") +
       (fit.body.moments_determined ? "" : "; the moments are poorly determined") + ".";
   std::string text =
@@ -86,8 +102,7 @@ std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::stri
       "name = " +
       json_string(toss_scene_name(recording, toss + 1)) +
       "\ntitle = " + json_string(recording + ", toss " + n + ": the fitted exact motion") +
-      "\ndescription = " + json_string(description) +
-      "\n\n[model]\nkind = \"exact\"\n\n"
+      "\ndescription = " + json_string(description) + model +
       "[book]  # moments about x, y, z: I2/I3, I1/I3, 1 (mass 1)\n"
       "size = " +
       vector3(book->size, "toss scene book.size") +

@@ -35,6 +35,12 @@ void add_model(JsonObject& m, const std::string& prefix, const physics::ModelCon
   m.push_back({prefix + "damping", {model.damping}});
   m.push_back({prefix + "spring_constant", number(model.spring_constant)});
   m.push_back({prefix + "lattice_cells", integer(model.lattice_cells)});
+  // Listed only with drag, so that the manifests written before the keys existed still
+  // describe the same (drag-free) scenes.
+  if (model.drag.law != physics::DragLaw::none) {
+    m.push_back({prefix + "drag", text(std::string(physics::to_string(model.drag.law)))});
+    m.push_back({prefix + "drag_rate", number(model.drag.rate)});
+  }
 }
 
 void add_render(JsonObject& m, const RenderOptions& r, const std::filesystem::path& source) {

@@ -44,6 +44,7 @@ inline constexpr std::array kLimits{
     Limit{"model.spring_constant", 0.0, 1e12, true, 10.0},
     Limit{"model.lattice_cells", 0, 64, false, 0.0, true},
     Limit{"model.normalize_every", 1, 1000000, false, 1.0, true},
+    Limit{"model.drag_rate", -1e3, 1e3, false, 0.0},
     Limit{"body.mass", 1e-12, 1e12, false, 1.0},
     Limit{"body.scale", 1e-6, 1e6, false, 1.0},
     Limit{"book.size", 1e-6, 1e6, false, std::nullopt},

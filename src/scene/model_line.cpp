@@ -23,6 +23,9 @@ std::string model_line(const Scene& scene) {
     if (!physics::is_engine(m.kind))  // the engines have no such switch (docs/engines.md)
       line += m.normalize ? ", normalized" : ", not normalized";
   }
+  if (m.drag.law != physics::DragLaw::none)
+    line += ", " + std::string(physics::to_string(m.drag.law)) + " drag" +
+            format(" %.3g/time unit", m.drag.rate);
   if (m.kind == physics::ModelKind::particle) {
     line += m.damping ? ", damped" : ", undamped";
     line += format(", k = %g", m.spring_constant);

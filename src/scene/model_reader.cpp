@@ -49,6 +49,27 @@ std::string names(const std::vector<Enum>& values) {
   return text;
 }
 
+/// model.drag and model.drag_rate (docs/physics.md §21): a law with its rate, both named or
+/// both inherited; only the rigid and exact models take drag (a particle tile of a drag scene
+/// inherits none).
+void read_drag(TomlReader& r, physics::ModelConfig& m, const physics::ModelConfig& fallback) {
+  const bool takes = physics::supports_drag(m.kind);
+  const physics::Drag inherited = takes ? fallback.drag : physics::Drag{};
+  const std::string law = r.string("model.drag", std::string(physics::to_string(inherited.law)));
+  if (!physics::parse_drag_law(law, m.drag.law))
+    r.fail("model.drag", "unknown drag law '" + law + "' (expected none, linear, quadratic)");
+  m.drag.rate = r.number(limit("model.drag_rate"), inherited.rate);
+  if (m.drag.law != physics::DragLaw::none && !takes)
+    r.fail("model.drag", "model '" + std::string(physics::to_string(m.kind)) +
+                             "' takes no drag (only rigid-matrix, rigid-quaternion and exact)");
+  if (m.drag.law == physics::DragLaw::none && r.has("model.drag_rate"))
+    r.fail("model.drag_rate",
+           "needs model.drag = \"linear\" or \"quadratic\" (the law it is the rate of)");
+  if (m.drag.law != physics::DragLaw::none && r.has("model.drag") && !r.has("model.drag_rate"))
+    r.fail("model.drag", "needs model.drag_rate (the initial loss of |L| per time unit, 1/time)");
+  if (m.drag.law == physics::DragLaw::none) m.drag.rate = 0.0;
+}
+
 }  // namespace
 
 physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallback) {
@@ -79,8 +100,9 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   }
   if (engine) {
     // The engines' models have no such settings (docs/engines.md): refused, never ignored.
-    for (const char* key : {"model.normalize", "model.normalize_every", "model.damping",
-                            "model.spring_constant", "model.lattice_cells"}) {
+    for (const char* key :
+         {"model.normalize", "model.normalize_every", "model.damping", "model.spring_constant",
+          "model.lattice_cells", "model.drag", "model.drag_rate"}) {
       if (r.has(key)) r.fail(key, "model '" + kind + "' (another engine) has no such setting");
     }
     return m;
@@ -96,6 +118,7 @@ physics::ModelConfig read_model(TomlReader& r, const physics::ModelConfig& fallb
   m.spring_constant = r.number(limit("model.spring_constant"), fallback.spring_constant);
   m.lattice_cells =
       static_cast<int>(r.integer(limit("model.lattice_cells"), fallback.lattice_cells));
+  read_drag(r, m, fallback);
   return m;
 }
 

@@ -470,6 +470,19 @@ void check_engine_limits(TomlReader& r, const Scene& s) {
   }
 }
 
+/// A negative quadratic rate (a gain) blows up at t = −1/r: the run must end before it
+/// (docs/physics.md §21). Checked for the scene's model and every [[compare]] tile's.
+void check_drag(TomlReader& r, const Scene& s) {
+  const double end = s.dt * s.steps_per_frame * (s.frames - 1);
+  std::vector<physics::Drag> drags{s.model.drag};
+  for (const CompareTile& tile : s.compare) drags.push_back(tile.model.drag);
+  for (const physics::Drag& drag : drags)
+    if (!physics::drag_defined_until(drag, 2.0 * end))
+      r.fail("model.drag_rate", "a negative quadratic rate " + format_number(drag.rate) +
+                                    " blows up at t = " + format_number(-1.0 / drag.rate) +
+                                    ", within twice the run (" + format_number(end) + ")");
+}
+
 Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
                   const std::set<std::string>& overridden) {
   TomlReader r(root, origin.string(), overridden);
@@ -496,6 +509,7 @@ Scene build_scene(const toml::table& root, const std::filesystem::path& origin,
            "[0, 0, 0] and initial.jiggle is 0 (at rest: L = 0)");
   check_caption_twist(r, s);
   check_engine_limits(r, s);
+  check_drag(r, s);
   return s;
 }
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -47,13 +48,29 @@ inline Eigen::Vector3d euler_rate(const Eigen::Vector3d& I, const Eigen::Vector3
           (I[0] - I[1]) / I[2] * w[0] * w[1]};
 }
 
-/// ω after `time` s from `w`, RK4 with steps of at most 1e-4 s.
-inline Eigen::Vector3d rk4(const Eigen::Vector3d& I, Eigen::Vector3d w, double time) {
+/// Air drag on the flights, written from the torque alone (not from the stretched time of
+/// docs/physics.md §21): τ = −r_eff · a ⊙ L (principal frame), r_eff = rate (linear) or
+/// rate·|L|/|L0| (quadratic); a = (1, 1, 1) is the isotropic drag the fit models, another `a` an
+/// anisotropic one it cannot fit.
+struct SyntheticDrag {
+  double rate = 0.0;  ///< 1/s: the initial loss of |L| per second (isotropic)
+  bool quadratic = false;
+  Eigen::Vector3d anisotropy = Eigen::Vector3d::Ones();
+};
+
+/// ω after `time` s from `w`, RK4 with steps of at most 1e-4 s, under `drag`: I ω̇ = (I ω) × ω + τ.
+inline Eigen::Vector3d rk4(const Eigen::Vector3d& I, Eigen::Vector3d w, double time,
+                           const SyntheticDrag& drag = {}) {
   const int steps = std::max(1, static_cast<int>(std::ceil(time / 1e-4)));
   const double h = time / steps;
+  const double L0 = I.cwiseProduct(w).norm();
+  const auto rate = [&](const Eigen::Vector3d& v) -> Eigen::Vector3d {
+    const double r = drag.quadratic ? drag.rate * I.cwiseProduct(v).norm() / L0 : drag.rate;
+    return euler_rate(I, v) - r * drag.anisotropy.cwiseProduct(v);
+  };
   for (int s = 0; s < steps; ++s) {
-    const Eigen::Vector3d k1 = euler_rate(I, w), k2 = euler_rate(I, w + 0.5 * h * k1),
-                          k3 = euler_rate(I, w + 0.5 * h * k2), k4 = euler_rate(I, w + h * k3);
+    const Eigen::Vector3d k1 = rate(w), k2 = rate(w + 0.5 * h * k1), k3 = rate(w + 0.5 * h * k2),
+                          k4 = rate(w + h * k3);
     w += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
   }
   return w;
@@ -76,14 +93,17 @@ inline double closed_form_half_period(const Eigen::Vector3d& I, const Eigen::Vec
 }
 
 /// A recording of `tosses` of `body`: 1.5 s rest, then per toss a throw (`throw_time` s, a ramp
-/// to ω0 with Gaussian spikes of `throw_spikes` rad/s), the flight (|ω| shrinking as
-/// e^(−drag·τ): 0 is torque-free), sampled at `rate` Hz with ±10 % jitter, the flight, a
-/// 0.12 s catch and 1.2 s rest; a pause after the second toss's rest.
+/// to ω0 with Gaussian spikes of `throw_spikes` rad/s), the flight (under a linear isotropic
+/// drag of rate `drag` 1/s, or under `air` where given: 0 is torque-free), sampled at `rate` Hz
+/// with ±10 % jitter, the flight, a 0.12 s catch and 1.2 s rest; a pause after the second
+/// toss's rest.
 inline SyntheticRecording make_recording(const SyntheticBody& body,
                                          const std::vector<SyntheticToss>& tosses,
                                          unsigned seed = 1, double noise = 0.01,
                                          double throw_time = 0.15, double throw_spikes = 4.0,
-                                         double drag = 0.0, double rate = 100.0) {
+                                         double drag = 0.0, double rate = 100.0,
+                                         std::optional<SyntheticDrag> air = std::nullopt) {
+  const SyntheticDrag flight_drag = air ? *air : SyntheticDrag{drag};
   std::mt19937 random(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -107,8 +127,7 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
     rec.tosses.push_back({now, now + toss.flight,
                           closed_form_half_period(body.moments, toss.omega0_principal), w0_phone});
     const Eigen::Vector3d w_end =
-        std::exp(-drag * toss.flight) *
-        (body.axes * rk4(body.moments, toss.omega0_principal, toss.flight));
+        body.axes * rk4(body.moments, toss.omega0_principal, toss.flight, flight_drag);
     now += toss.flight;
     pieces.push_back({now, now + 0.12, 3, w_end, Eigen::Vector3d::Zero()});
     now += 0.12;
@@ -128,8 +147,7 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
     } else if (piece.kind == 1) {
       w = s * piece.b + throw_spikes * Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
     } else if (piece.kind == 2) {
-      // Drag, when asked for: ω (so |L|) shrinks as e^(−drag·τ), its direction torque-free.
-      w = std::exp(-drag * (t - piece.t0)) * (body.axes * rk4(body.moments, piece.a, t - piece.t0));
+      w = body.axes * rk4(body.moments, piece.a, t - piece.t0, flight_drag);
     } else {
       w = (1.0 - s) * piece.a + 6.0 * Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
     }

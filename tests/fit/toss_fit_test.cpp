@@ -155,7 +155,7 @@ TEST(TossFit, AStretchHoldingTheThrowIsAPoorFitAndSaysSo) {
   ASSERT_EQ(fit.tosses.size(), 2u);
   EXPECT_TRUE(fit.tosses[1].poor_fit);
   bool said = false;
-  for (const std::string& note : fit.body.notes) said |= note.rfind("toss 2: ", 0) == 0;
+  for (const std::string& note : fit.body.notes) said |= note.rfind("toss 2 flagged: ", 0) == 0;
   EXPECT_TRUE(said);
   // The clean stretches of the other tests are not.
   const FitResult clean = fit_recording(recording, find_flights(recording));
@@ -208,6 +208,129 @@ TEST(TossFit, DragShowsAsLDecay) {
       fit_recording(as_recording(synthetic), find_flights(as_recording(synthetic)));
   ASSERT_EQ(fit.tosses.size(), 2u);
   for (const TossFit& toss : fit.tosses) EXPECT_NEAR(toss.L_decay, 0.05, 0.005);
+}
+
+/// The tosses of the drag tests: three flipping tosses of a phone on a book, 1.1–1.3 s each.
+std::vector<SyntheticToss> drag_tosses() {
+  return {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.3}, {{0.6, -13.0, -0.5}, 1.1}};
+}
+
+// Drag of 0.05–0.3 /s under both laws, each phyphox dialect, noise, bias and jitter: the fitted
+// rate within 5 % of the generator's (its RK4 written from the torque, synthetic_recording.hpp),
+// the ratios within 1 %, the axes within 1°.
+TEST(TossFit, RecoversTheDragRateUnderEitherLaw) {
+  const test::Dialect dialects[] = {test::Dialect::comma, test::Dialect::tab,
+                                    test::Dialect::semicolon};
+  int n = 0;
+  for (bool quadratic : {false, true}) {
+    for (double rate : {0.05, 0.15, 0.3}) {
+      const SyntheticBody body = test::phone_on_book();
+      test::SyntheticDrag air;
+      air.rate = rate;
+      air.quadratic = quadratic;
+      const test::SyntheticRecording synthetic =
+          test::make_recording(body, drag_tosses(), 40 + n, 0.01, 0.15, 4.0, 0.0, 100.0, air);
+      const GyroRecording recording =
+          through_file(synthetic, dialects[n % 3], "drag-" + std::to_string(n));
+      ++n;
+      FitSettings settings;
+      settings.drag = quadratic ? physics::DragLaw::quadratic : physics::DragLaw::linear;
+      const FitResult fit = fit_recording(recording, find_flights(recording), settings);
+      const std::string what =
+          std::string(quadratic ? "quadratic" : "linear") + " " + std::to_string(rate);
+      ASSERT_EQ(fit.tosses.size(), 3u) << what;
+      const Eigen::Vector3d ratios = body.moments / body.moments[2];
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(fit.body.ratios[i], ratios[i], 0.01 * ratios[i]) << what << " ratio " << i;
+        EXPECT_LT(axis_angle(fit.body.axes.col(i), body.axes.col(i)), 1.0) << what << " axis " << i;
+      }
+      for (const TossFit& toss : fit.tosses) {
+        EXPECT_NEAR(toss.drag_rate, rate, 0.05 * rate) << what;
+        ASSERT_TRUE(toss.drag_rate_sigma.has_value());
+        EXPECT_FALSE(toss.poor_fit) << what << ": " << toss.flag;
+      }
+    }
+  }
+}
+
+// Without drag the fitted rate is noise: within 2σ of zero (σ its own), for most tosses of
+// several recordings (at 2σ, about 1 in 20 may stray: at most 2 of 12).
+TEST(TossFit, WithoutDragTheFittedRateIsWithinTwoSigmaOfZero) {
+  int strays = 0, count = 0;
+  for (unsigned seed : {51u, 52u, 53u, 54u}) {
+    const test::SyntheticRecording synthetic =
+        test::make_recording(test::phone_on_book(), drag_tosses(), seed);
+    const FitResult fit =
+        fit_recording(as_recording(synthetic), find_flights(as_recording(synthetic)));
+    for (const TossFit& toss : fit.tosses) {
+      ASSERT_TRUE(toss.drag_rate_sigma.has_value());
+      EXPECT_LT(*toss.drag_rate_sigma, 0.02);  // the rate is well measured, not just uncertain
+      if (std::abs(toss.drag_rate) > 2.0 * *toss.drag_rate_sigma) ++strays;
+      ++count;
+    }
+  }
+  EXPECT_EQ(count, 12);
+  EXPECT_LE(strays, 2);
+}
+
+// A catch inside a flight (the hand grabs the phone 0.3 s before the flight's end) is flagged
+// and says so; the clean tosses of the same recording are not.
+TEST(TossFit, ACatchInsideTheFlightIsFlaggedAndCleanTossesAreNot) {
+  const test::SyntheticRecording synthetic =
+      test::make_recording(test::phone_on_book(), drag_tosses(), 61, 0.01, 0.15, 4.0, 0.1);
+  // The flights by hand (the truth), the second running 0.25 s into its catch: ω there falls
+  // to rest with spikes.
+  std::vector<std::pair<double, double>> ranges;
+  for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
+  const GyroRecording recording = as_recording(synthetic);
+  const FitResult clean = fit_recording(recording, hand_flights(recording, ranges));
+  for (const TossFit& toss : clean.tosses) EXPECT_FALSE(toss.poor_fit) << toss.flag;
+  ranges[1].second += 0.1;
+  const FitResult caught = fit_recording(recording, hand_flights(recording, ranges));
+  EXPECT_FALSE(caught.tosses[0].poor_fit) << caught.tosses[0].flag;
+  EXPECT_TRUE(caught.tosses[1].poor_fit);
+  EXPECT_NE(caught.tosses[1].flag.find("catch"), std::string::npos) << caught.tosses[1].flag;
+  EXPECT_FALSE(caught.tosses[2].poor_fit) << caught.tosses[2].flag;
+}
+
+// half_period_predicted sees nothing of its own toss after the first predict_window s: toss 2's
+// later samples scaled by 5 % change its fitted half period but not its prediction (only the
+// solver's tolerance apart); the fold that predicts toss 2 is the one without it.
+TEST(TossFit, ThePredictionIgnoresItsOwnTossAfterTheWindow) {
+  const test::SyntheticRecording synthetic =
+      test::make_recording(test::phone_on_book(), drag_tosses(), 71, 0.01, 0.15, 4.0, 0.1);
+  std::vector<std::pair<double, double>> ranges;
+  for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
+  GyroRecording recording = as_recording(synthetic);
+  const FitResult before = fit_recording(recording, hand_flights(recording, ranges));
+  for (std::size_t i = 0; i < recording.t.size(); ++i)
+    if (recording.t[i] > ranges[1].first + 0.25 && recording.t[i] <= ranges[1].second)
+      recording.omega[i] = 1.05 * (recording.omega[i] - synthetic.bias) + synthetic.bias;
+  const FitResult after = fit_recording(recording, hand_flights(recording, ranges));
+  ASSERT_TRUE(before.tosses[1].half_period_predicted && after.tosses[1].half_period_predicted);
+  EXPECT_NEAR(*after.tosses[1].half_period_predicted, *before.tosses[1].half_period_predicted,
+              1e-6 * *before.tosses[1].half_period_predicted);
+  EXPECT_GT(std::abs(*after.tosses[1].half_period_fitted - *before.tosses[1].half_period_fitted),
+            1e-3 * *before.tosses[1].half_period_fitted);
+}
+
+// fitted_omega runs from each toss's own start: at t_start it is the fitted ω0, and through
+// the flight it follows the measurement.
+TEST(TossFit, FittedOmegaStartsAtItsTossesStart) {
+  const test::SyntheticRecording synthetic =
+      test::make_recording(test::phone_on_book(), drag_tosses(), 81, 0.01, 0.15, 4.0, 0.1);
+  const GyroRecording recording = as_recording(synthetic);
+  const FitResult fit = fit_recording(recording, find_flights(recording));
+  ASSERT_EQ(fit.tosses.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    const TossFit& toss = fit.tosses[k];
+    EXPECT_LT((fitted_omega(fit, k, toss.flight.t_start) - toss.omega0).norm(), 1e-9);
+    std::vector<double> t;
+    std::vector<Eigen::Vector3d> w;
+    measured_omega(recording, fit, k, t, w);
+    for (std::size_t i = 0; i < t.size(); i += 10)
+      EXPECT_LT((fitted_omega(fit, k, t[i]) - w[i]).norm(), 0.1) << "toss " << k << " t " << t[i];
+  }
 }
 
 }  // namespace

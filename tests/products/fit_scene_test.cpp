@@ -17,6 +17,7 @@
 #include "analysis/motion.hpp"
 #include "common/text_file.hpp"
 #include "fit/synthetic_recording.hpp"
+#include "physics/damped_exact.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/mass_properties.hpp"
 #include "products/fit.hpp"
@@ -111,8 +112,11 @@ TEST(FitScene, EachTossIsASceneOfTheFittedMotion) {
 
     // The scene's exact motion, back in the phone frame, runs through the recorded samples
     // (bias removed) at the gyroscope's noise (0.01 rad/s); a mirrored frame runs backwards.
-    const physics::ExactRotation exact(s.body.moments, s.initial.omega0_body,
-                                       physics::ExactParts::omega_only);
+    // The fitted drag (the CSV's rate, the default linear law) rides along in the scene.
+    EXPECT_EQ(s.model.drag.law, physics::DragLaw::linear);
+    EXPECT_NEAR(s.model.drag.rate, std::stod(row[11]), 1e-12);
+    const physics::DampedExactRotation exact(s.body.moments, s.initial.omega0_body, s.model.drag,
+                                             physics::ExactParts::omega_only);
     double sum = 0;
     int n = 0;
     for (std::size_t i = 0; i < synthetic.t.size(); ++i) {
@@ -127,8 +131,8 @@ TEST(FitScene, EachTossIsASceneOfTheFittedMotion) {
     // Its flips: every fitted half period (the CSV's, and the RK4 truth's within 1 %), the
     // first where the measured ω about the intermediate axis (body x) first changes sign.
     const double half_period = std::stod(row[7]);
-    EXPECT_NEAR(exact.flip_period(), half_period, 1e-6 * half_period);
-    EXPECT_NEAR(exact.flip_period(), synthetic.tosses[k].half_period,
+    EXPECT_NEAR(exact.flip_period_at(0.0), half_period, 0.01 * half_period);
+    EXPECT_NEAR(exact.flip_period_at(0.0), synthetic.tosses[k].half_period,
                 0.01 * synthetic.tosses[k].half_period);
     ASSERT_FALSE(s.measured.file.empty());
     const scene::MeasuredOmega& w = s.measured;
@@ -138,9 +142,10 @@ TEST(FitScene, EachTossIsASceneOfTheFittedMotion) {
       if ((a > 0) != (b > 0)) crossing = w.t[i - 1] + (w.t[i] - w.t[i - 1]) * a / (a - b);
     }
     ASSERT_TRUE(crossing.has_value());
-    const std::optional<double> first = analysis::exact_first_flip(exact, 0);
-    ASSERT_TRUE(first.has_value());
-    EXPECT_NEAR(*first, *crossing, 0.01);
+    // The free motion's first flip, in the damped motion's time (docs/physics.md §21).
+    const std::optional<double> first_free = analysis::exact_first_flip(exact.free(), 0);
+    ASSERT_TRUE(first_free.has_value());
+    EXPECT_NEAR(physics::time_of_stretched(s.model.drag, *first_free), *crossing, 0.01);
     // The scene plays the flight and at least three flips.
     const double duration = (s.frames - 1) * s.dt * s.steps_per_frame;
     EXPECT_GE(duration, t_end - t_start - 1e-9);

@@ -162,6 +162,14 @@ TEST(CanonicalScene, HoldsEveryDocumentedKey) {
                   std::string::npos);
         continue;
       }
+      if (name == "model.drag" || name == "model.drag_rate") {  // listed with drag only
+        EXPECT_EQ(c.find("drag"), std::string::npos);
+        const std::string with = canonical(
+            kBase, {"model.kind=\"exact\"", "model.drag=\"quadratic\"", "model.drag_rate=0.25"});
+        EXPECT_NE(with.find("\"model.drag\": \"quadratic\""), std::string::npos) << with;
+        EXPECT_NE(with.find("\"model.drag_rate\": 0.25"), std::string::npos) << with;
+        continue;
+      }
       if (name == "measured.omega") {  // listed where given (canonical.hpp)
         EXPECT_EQ(c.find("measured"), std::string::npos);
         bookspin::test::ScratchDir dir;

@@ -109,6 +109,7 @@ std::string scene_with(const Limit& limit, const std::string& value, bool vector
   if (table == "body" || key == "model.lattice_cells") text += "[body]\nshape = \"phone\"\n";
   if (table != "body") text += "[" + table + "]\n";
   if (key == "model.normalize_every") text += "normalize = true\n";
+  if (key == "model.drag_rate") text += "kind = \"exact\"\ndrag = \"linear\"\n";
   if (key == "time.duration") text += "steps_per_frame = 1000000\n";
   if (key == "render.gif_width") text += "width = 7680\n";
   if (key == "render.gif_fps") text += "fps = 240\n";
@@ -204,6 +205,7 @@ TEST(LimitsTable, DefaultsAreWhatAMissingKeyGives) {
   const std::map<std::string, double> got{{"model.spring_constant", s.model.spring_constant},
                                           {"model.lattice_cells", s.model.lattice_cells},
                                           {"model.normalize_every", s.model.normalize_every},
+                                          {"model.drag_rate", s.model.drag.rate},
                                           {"book.mass", s.body.cage.mass},
                                           {"initial.jiggle", s.initial.jiggle},
                                           {"initial.seed", static_cast<double>(s.initial.seed)},
