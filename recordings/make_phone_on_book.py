@@ -5,15 +5,20 @@ book tossed five times (recordings/README.md). Deterministic: run again, the sam
 The body: a 17 × 24 × 3.5 cm book (uniform box; the phone's mass left out), the phone on its
 cover turned 8° in the cover's plane. Its principal axes 1 < 2 < 3 are the book's long side,
 its short side (across the cover) and its thickness, in the phone frame about phone y, x and
-−z. The free flights are Euler's equations (docs/physics.md §8) integrated here by RK4 at
-1e-4 s steps (not bookspin's exact motion); around them the hand: rest with a slow wobble of
+−z. The flights are in air: Euler's equations with a drag torque −c·(a ⊙ L) (docs/physics.md
+§21; c = 0.17 /s, a = (1, 1, 1): isotropic, |L| falls 16 % a second, as real tosses do)
+integrated here by RK4 at 1e-4 s steps (not bookspin's exact motion; `--drag C` and
+`--anisotropy A1,A2,A3` change them, e.g. `--anisotropy 1.6,0.7,1` for a drag the isotropic
+model cannot fit); around them the hand: rest with a slow wobble of
 0.03 rad/s, a 0.15 s throw (a ramp to ω0 with spikes of 4 rad/s), a 0.12 s catch (spikes of
 6 rad/s), then rest. Sampled at 100 Hz with ±10 % jitter, noise 0.01 rad/s, a constant bias,
 one pause (PAUSE/START in meta/time.csv) after the second toss. Python 3, standard library
 only.
 
-Usage: python3 recordings/make_phone_on_book.py [OUT_DIR]   (default: beside this script)
+Usage: python3 recordings/make_phone_on_book.py [OUT_DIR] [--drag C] [--anisotropy A1,A2,A3]
+       (default: beside this script, c = 0.17 /s, isotropic)
 """
+import argparse
 import math
 import pathlib
 import random
@@ -39,6 +44,8 @@ RATE, JITTER, NOISE = 100.0, 0.1, 0.01  # Hz, fraction of a sample interval, rad
 BIAS = (0.018, -0.012, 0.009)  # rad/s, phone frame
 REST, THROW, CATCH, AFTER = 1.5, 0.15, 0.12, 1.2  # s
 SEED = 2026
+DRAG = 0.17  # 1/s: the air's linear drag rate (|L| ∝ e^(−c t) when isotropic)
+ANISOTROPY = (1.0, 1.0, 1.0)  # the torque −c (a ⊙ L) about principal axes 1, 2, 3
 
 
 def matmul(a, b):
@@ -60,9 +67,12 @@ def to_phone(w):
 
 
 def euler_rate(w):
+    """ω̇ (principal) of Euler's equations with the drag torque −c (a ⊙ L): I ω̇ = (I ω) × ω − c a ⊙ I ω."""
     I1, I2, I3 = MOMENTS
-    return ((I2 - I3) / I1 * w[1] * w[2], (I3 - I1) / I2 * w[2] * w[0],
-            (I1 - I2) / I3 * w[0] * w[1])
+    c, a = DRAG, ANISOTROPY
+    return ((I2 - I3) / I1 * w[1] * w[2] - c * a[0] * w[0],
+            (I3 - I1) / I2 * w[2] * w[0] - c * a[1] * w[1],
+            (I1 - I2) / I3 * w[0] * w[1] - c * a[2] * w[2])
 
 
 def flight(w0, time):
@@ -94,7 +104,16 @@ def pieces():
 
 
 def main():
-    folder = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else \
+    global DRAG, ANISOTROPY
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("out_dir", nargs="?", default=None)
+    parser.add_argument("--drag", type=float, default=DRAG, help="linear drag rate c, 1/s")
+    parser.add_argument("--anisotropy", default=",".join(str(x) for x in ANISOTROPY),
+                        help="a1,a2,a3: the torque −c (a ⊙ L) about principal axes 1, 2, 3")
+    args = parser.parse_args()
+    DRAG = args.drag
+    ANISOTROPY = tuple(float(x) for x in args.anisotropy.split(","))
+    folder = pathlib.Path(args.out_dir) if args.out_dir else \
         pathlib.Path(__file__).resolve().parent / "phone-on-book-synthetic"
     rng = random.Random(SEED)
     parts = pieces()

@@ -29,6 +29,8 @@ PanelRun::PanelRun(const scene::Scene& scene, const DiagnosticsHistory& history,
     : label(std::move(label)),
       kind(scene.model.kind),
       history(&history),
-      flip_axis(analysis::intermediate_axis(scene.body.moments)) {}
+      flip_axis(analysis::intermediate_axis(scene.body.moments)),
+      time_unit(scene.time_unit),
+      measured(scene.measured.file.empty() ? nullptr : &scene.measured) {}
 
 }  // namespace bookspin::charts

@@ -45,6 +45,11 @@ struct PanelRun {
   /// of the flips show: it changes sign at every flip (x for the book, y for the presets;
   /// analysis::intermediate_axis, docs/physics.md §12).
   int flip_axis;
+  /// "s" or "" (the scene's time.unit): the plots' time and rate labels.
+  std::string time_unit;
+  /// The scene's measured ω (measured.omega), drawn beside the run, or null; the scene's, so it
+  /// lives as long as the scene.
+  const scene::MeasuredOmega* measured = nullptr;
 };
 
 }  // namespace bookspin::charts

@@ -29,11 +29,19 @@ overlay::Series series(std::string label, const std::vector<double>& t,
   return s;
 }
 
+/// "t (s)" or "t (time units)"; "rad/s" or "rad / time unit".
+std::string time_label(const std::string& unit) {
+  return unit.empty() ? "t (time units)" : "t (" + unit + ")";
+}
+std::string rate_unit(const std::string& unit) {
+  return unit.empty() ? "rad / time unit" : "rad/" + unit;
+}
+
 overlay::PlotSpec axes(std::string title, std::string y_label, double min_span, double t_end,
-                       std::optional<double> cursor) {
+                       std::optional<double> cursor, const std::string& unit) {
   overlay::PlotSpec spec;
   spec.title = std::move(title);
-  spec.x_label = "t (time units)";
+  spec.x_label = time_label(unit);
   spec.y_label = std::move(y_label);
   spec.legend_placement = overlay::LegendPlacement::top;
   if (t_end > 0) spec.x_range = std::pair{0.0, t_end};
@@ -42,17 +50,69 @@ overlay::PlotSpec axes(std::string title, std::string y_label, double min_span, 
   return spec;
 }
 
+/// The measured samples up to `t_until` (the run's last frame): component `c` as dots.
+overlay::Series measured_dots(const scene::MeasuredOmega& m, int c, double t_until, Rgb colour,
+                              std::string label) {
+  overlay::Series s;
+  s.label = std::move(label);
+  for (std::size_t i = 0; i < m.t.size() && m.t[i] <= t_until; ++i) {
+    s.x.push_back(m.t[i]);
+    s.y.push_back(m.omega(c, static_cast<Eigen::Index>(i)));
+  }
+  s.r = colour.r, s.g = colour.g, s.b = colour.b;
+  s.dots = true;
+  return s;
+}
+
+/// |ω_run(t_i) − ω_measured(t_i)| at each measured sample within the run so far, the run's ω
+/// taken linear between its frames.
+overlay::Series measured_residual(const DiagnosticsHistory& h, const scene::MeasuredOmega& m,
+                                  std::string label, Rgb colour) {
+  overlay::Series s;
+  s.label = std::move(label);
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < m.t.size(); ++i) {
+    const double t = m.t[i];
+    if (h.t.empty() || t < h.t.front() || t > h.t.back()) continue;
+    while (j + 1 < h.t.size() && h.t[j + 1] < t) ++j;
+    const std::size_t k = std::min(j + 1, h.t.size() - 1);
+    const double span = h.t[k] - h.t[j], f = span > 0 ? (t - h.t[j]) / span : 0.0;
+    const Eigen::Vector3d run((1 - f) * h.omega_x[j] + f * h.omega_x[k],
+                              (1 - f) * h.omega_y[j] + f * h.omega_y[k],
+                              (1 - f) * h.omega_z[j] + f * h.omega_z[k]);
+    s.x.push_back(t);
+    s.y.push_back((run - m.omega.col(static_cast<Eigen::Index>(i))).norm());
+  }
+  s.r = colour.r, s.g = colour.g, s.b = colour.b;
+  return s;
+}
+
 std::vector<overlay::PlotSpec> single_plots(const PanelRun& run, double t_end,
                                             std::optional<double> cursor) {
   const DiagnosticsHistory& h = *run.history;
-  auto omega =
-      axes("angular velocity ω, body frame", "ω (rad / time unit)", kOmegaSpan, t_end, cursor);
+  const std::string& unit = run.time_unit;
+  auto omega = axes("angular velocity ω, body frame", "ω (" + rate_unit(unit) + ")", kOmegaSpan,
+                    t_end, cursor, unit);
   omega.series = {series("ω_x", h.t, h.omega_x, kRed), series("ω_y", h.t, h.omega_y, kGreen),
                   series("ω_z", h.t, h.omega_z, kBlue)};
-  auto drift = axes("relative energy drift", "E/E₀ − 1", kDriftSpan, t_end, cursor);
+  auto drift = axes("relative energy drift", "E/E₀ − 1", kDriftSpan, t_end, cursor, unit);
   drift.series = {series("E/E₀ − 1", h.t, h.energy_drift, kPurple)};
   drift.legend = false;
-  auto shape = axes("shape error", "dimensionless", kShapeSpan, t_end, cursor);
+  if (run.measured) {
+    // A measured ω beside the run (a fitted toss): its samples as dots on the ω plot, and the
+    // residual in place of the shape error (no rigid run has one).
+    const double until = h.t.empty() ? 0.0 : h.t.back();
+    const Rgb colours[3] = {kRed, kGreen, kBlue};
+    const char* names[3] = {"ω_x measured", "ω_y measured", "ω_z measured"};
+    for (int c = 0; c < 3; ++c)
+      omega.series.push_back(measured_dots(*run.measured, c, until, colours[c], names[c]));
+    auto residual =
+        axes("residual |ω − ω_measured|", rate_unit(unit), kOmegaSpan, t_end, cursor, unit);
+    residual.series = {measured_residual(h, *run.measured, "|ω − ω_measured|", kOrange)};
+    residual.legend = false;
+    return {omega, drift, residual};
+  }
+  auto shape = axes("shape error", "dimensionless", kShapeSpan, t_end, cursor, unit);
   shape.series = {series("max strain |ℓ/ℓ₀ − 1|", h.t, h.strain_max, kOrange)};
   if (run.kind == physics::ModelKind::rigid_matrix) {
     shape.series.push_back(series("‖RᵀR − I‖", h.t, h.orthogonality_error, kTeal, true));
@@ -68,13 +128,22 @@ std::vector<overlay::PlotSpec> comparison_plots(const std::vector<PanelRun>& run
                                                 std::optional<double> cursor) {
   static const char* const kAxis[3] = {"x", "y", "z"};
   const int axis = runs.front().flip_axis;
+  const std::string& unit = runs.front().time_unit;
   const std::string name = std::string("ω_") + kAxis[axis];
-  auto omega = axes(name + ", body frame (the flips)", name + " (rad / time unit)", kOmegaSpan,
-                    t_end, cursor);
-  auto drift = axes("relative energy drift", "E/E₀ − 1", kDriftSpan, t_end, cursor);
-  auto shape =
-      axes("shape error: max strain |ℓ/ℓ₀ − 1|", "dimensionless", kShapeSpan, t_end, cursor);
+  auto omega = axes(name + ", body frame (the flips)", name + " (" + rate_unit(unit) + ")",
+                    kOmegaSpan, t_end, cursor, unit);
+  auto drift = axes("relative energy drift", "E/E₀ − 1", kDriftSpan, t_end, cursor, unit);
+  // The third plot: the shape error where a run deforms (the particle and lattice models);
+  // where none does (rigid models, engines, a measured ω beside a fit), each run's distance from
+  // the first run's ω, the residual of a fit against its measurement.
+  bool deforms = false;
+  for (const PanelRun& run : runs) deforms |= run.kind == physics::ModelKind::particle;
+  auto shape = deforms ? axes("shape error: max strain |ℓ/ℓ₀ − 1|", "dimensionless", kShapeSpan,
+                              t_end, cursor, unit)
+                       : axes("|ω − ω of " + runs.front().label + "|", rate_unit(unit), kOmegaSpan,
+                              t_end, cursor, unit);
   drift.legend = shape.legend = false;  // the same colours as the ω_x legend
+  const DiagnosticsHistory& first = *runs.front().history;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const DiagnosticsHistory& h = *runs[i].history;
     const Rgb c = palette_colour(i);  // runs of a comparison
@@ -82,7 +151,19 @@ std::vector<overlay::PlotSpec> comparison_plots(const std::vector<PanelRun>& run
     const std::vector<double>& w = axis == 0 ? h.omega_x : axis == 1 ? h.omega_y : h.omega_z;
     omega.series.push_back(series(runs[i].label, h.t, w, c, dashed));
     drift.series.push_back(series(runs[i].label, h.t, h.energy_drift, c, dashed));
-    shape.series.push_back(series(runs[i].label, h.t, h.strain_max, c, dashed));
+    if (deforms) {
+      shape.series.push_back(series(runs[i].label, h.t, h.strain_max, c, dashed));
+    } else if (i > 0) {  // runs in lockstep: the same frames
+      std::vector<double> t, d;
+      for (std::size_t f = 0; f < std::min(h.t.size(), first.t.size()); ++f) {
+        t.push_back(h.t[f]);
+        d.push_back(Eigen::Vector3d(h.omega_x[f] - first.omega_x[f],
+                                    h.omega_y[f] - first.omega_y[f],
+                                    h.omega_z[f] - first.omega_z[f])
+                        .norm());
+      }
+      shape.series.push_back(series(runs[i].label, t, d, c, dashed));
+    }
   }
   return {omega, drift, shape};
 }

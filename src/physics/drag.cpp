@@ -14,7 +14,8 @@ double drag_decay(const Drag& drag, double t) {
 double stretched_time(const Drag& drag, double t) {
   if (!drag.active()) return t;
   const double x = drag.rate * t;
-  if (drag.law == DragLaw::linear) return std::abs(x) < 1e-8 ? t * (1.0 - 0.5 * x) : -std::expm1(-x) / drag.rate;
+  if (drag.law == DragLaw::linear)
+    return std::abs(x) < 1e-8 ? t * (1.0 - 0.5 * x) : -std::expm1(-x) / drag.rate;
   return std::abs(x) < 1e-8 ? t * (1.0 - 0.5 * x) : std::log1p(x) / drag.rate;
 }
 
@@ -22,7 +23,7 @@ double drag_decay_rate_derivative(const Drag& drag, double t) {
   if (drag.law == DragLaw::none) return 0.0;
   const double x = drag.rate * t;
   if (drag.law == DragLaw::linear) return -t * std::exp(-x);  // ∂/∂r e^{−rt}
-  return -t / ((1.0 + x) * (1.0 + x));                         // ∂/∂r 1/(1 + rt)
+  return -t / ((1.0 + x) * (1.0 + x));                        // ∂/∂r 1/(1 + rt)
 }
 
 double stretched_time_rate_derivative(const Drag& drag, double t) {
@@ -31,7 +32,8 @@ double stretched_time_rate_derivative(const Drag& drag, double t) {
   // Both laws: ∂s/∂r = −t²/2 + O(r t³). Below |x| = 1e-3 the series to x³ (relative error
   // ~x⁴ < 1e-12); above, the closed form, which loses ~2/|x| < 2e3 ulps to cancellation.
   if (std::abs(x) < 1e-3) {
-    if (drag.law == DragLaw::linear) return t * t * (-0.5 + x * (1.0 / 3.0 + x * (-0.125 + x / 30.0)));
+    if (drag.law == DragLaw::linear)
+      return t * t * (-0.5 + x * (1.0 / 3.0 + x * (-0.125 + x / 30.0)));
     return t * t * (-0.5 + x * (2.0 / 3.0 + x * (-0.75 + x * 0.8)));
   }
   if (drag.law == DragLaw::linear)  // s = (1 − e^{−x})/r
@@ -61,10 +63,14 @@ std::string_view to_string(DragLaw law) {
 }
 
 bool parse_drag_law(std::string_view text, DragLaw& out) {
-  if (text == "none") out = DragLaw::none;
-  else if (text == "linear") out = DragLaw::linear;
-  else if (text == "quadratic") out = DragLaw::quadratic;
-  else return false;
+  if (text == "none")
+    out = DragLaw::none;
+  else if (text == "linear")
+    out = DragLaw::linear;
+  else if (text == "quadratic")
+    out = DragLaw::quadratic;
+  else
+    return false;
   return true;
 }
 

@@ -75,8 +75,8 @@ Eigen::Matrix3d OmegaReplay::orientation(double t) const {
 }
 
 ExactInFrame::ExactInFrame(const Eigen::Matrix3d& axes, const Eigen::Vector3d& moments,
-                           const Eigen::Vector3d& omega0)
-    : axes_(axes), exact_(moments, axes.transpose() * omega0) {
+                           const Eigen::Vector3d& omega0, Drag drag)
+    : axes_(axes), exact_(moments, axes.transpose() * omega0, drag) {
   require_rotation(axes, "ExactInFrame: axes");
 }
 

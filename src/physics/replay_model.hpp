@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "physics/body.hpp"
+#include "physics/damped_exact.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/simulator.hpp"
 
@@ -62,16 +63,17 @@ class OmegaReplay final : public PrescribedMotion {
 class ExactInFrame final : public PrescribedMotion {
  public:
   /// `axes`: a rotation (columns: principal axes, motion frame); `moments`: about them (any
-  /// scale, positive); `omega0`: ω(0), motion frame. Throws std::invalid_argument as
-  /// ExactRotation does, or when `axes` is not a rotation (to 1e-9).
+  /// scale, positive); `omega0`: ω(0), motion frame; `drag`: the air's (§21: the free motion in
+  /// stretched time). Throws std::invalid_argument as DampedExactRotation does, or when `axes`
+  /// is not a rotation (to 1e-9).
   ExactInFrame(const Eigen::Matrix3d& axes, const Eigen::Vector3d& moments,
-               const Eigen::Vector3d& omega0);
+               const Eigen::Vector3d& omega0, Drag drag = {});
   Eigen::Vector3d omega(double t) const override;
   Eigen::Matrix3d orientation(double t) const override;
 
  private:
   Eigen::Matrix3d axes_;
-  ExactRotation exact_;
+  DampedExactRotation exact_;
 };
 
 /// A simulator that plays a PrescribedMotion for a drawn body (docs/physics.md §20).

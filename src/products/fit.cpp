@@ -145,6 +145,14 @@ CsvTable fit_body_csv(const fit::FitResult& fit) {
   return table;
 }
 
+/// The command that opens every toss scene of `name` in OUT in the explorer: a shell glob, not
+/// one word per toss.
+std::string explore_line(const std::filesystem::path& out_dir, const std::string& name) {
+  return "to play the tosses beside the measurement: bookspin explore " +
+         shell_word(out_dir / (name + "-toss")) + "*.toml -o " + shell_word(out_dir) +
+         ", then open " + explorer_page_path(out_dir).string();
+}
+
 std::vector<std::string> fit_summary(const fit::FitResult& fit) {
   std::vector<std::string> lines;
   const Eigen::Vector3d& bias = fit.search.bias;
@@ -230,7 +238,7 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
   const cache::CachedOutputs cached{
       recording.name + "-fit", manifest,   "fit", members, job.out_dir, nullptr,
       /*all_or_nothing=*/true, input_files};
-  return cache::make_cached(cached, job.freshness, [&] {
+  const cache::Outcome outcome = cache::make_cached(cached, job.freshness, [&] {
     const fit::FlightSearch search = job.tosses.empty() ? fit::find_flights(recording)
                                                         : fit::hand_flights(recording, job.tosses);
     fit::FitSettings settings;
@@ -271,12 +279,7 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
                               ? std::string()
                               : ", " + std::to_string(layout.videos.size()) + " video(s)"));
       if (scenes) {
-        std::string command = "bookspin explore";
-        for (const std::filesystem::path& scene : layout.scenes)
-          command.append(" ").append(shell_word(scene));
-        summary->push_back("to play the tosses beside the measurement: " + command + " -o " +
-                           shell_word(job.out_dir) + ", then open " +
-                           explorer_page_path(job.out_dir).string());
+        summary->push_back(explore_line(job.out_dir, recording.name));
       } else {
         summary->push_back(
             "no scene of the tosses: the fitted moments break the triangle inequality "
@@ -285,6 +288,11 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
     }
     return cache::Made{layout.outputs()};
   });
+  // Up to date: the tosses' scenes are there, and how to open them is said again.
+  if (outcome == cache::Outcome::up_to_date && summary &&
+      std::filesystem::exists(job.out_dir / (recording.name + "-toss1.toml")))
+    summary->push_back(explore_line(job.out_dir, recording.name));
+  return outcome;
 }
 
 }  // namespace bookspin::products

@@ -45,6 +45,7 @@ scene::Scene fit_clip_scene(const FitRender& render) {
   scene.dt = defaults.dt;
   scene.steps_per_frame = defaults.steps_per_frame;
   scene.frames = defaults.frames;
+  scene.time_unit = "s";  // the recording's time
   return scene;
 }
 
@@ -82,8 +83,8 @@ std::vector<clip::TileModel> toss_tile_models(const fit::GyroRecording& recordin
   fit::measured_omega(recording, fit, toss, t, omega);
   const double rate = (static_cast<double>(t.size()) - 1) / (t.back() - t.front());
   auto measured = std::make_shared<const physics::OmegaReplay>(t, omega);
-  auto exact =
-      std::make_shared<const physics::ExactInFrame>(estimate.axes, estimate.ratios, fitted.omega0);
+  auto exact = std::make_shared<const physics::ExactInFrame>(
+      estimate.axes, estimate.ratios, fitted.omega0, physics::Drag{fit.drag, fitted.drag_rate});
   // The panel's ω: about the fitted principal axes 1, 2, 3, told as the drawn body's axes of
   // the same moment order, so that its flip axis (the drawn body's intermediate) shows ω about
   // the fitted intermediate axis: the flips, as the fit's chart shows them.

@@ -108,7 +108,7 @@ std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::stri
       vector3(book->size, "toss scene book.size") +
       "\nmass = 1.0\n\n[initial]\nangular_velocity = " +
       vector3(omega0, "toss scene initial.angular_velocity") + "  # rad/s, body frame\n\n" +
-      "[time]\ndt = " + number(kDt, "toss scene time.dt") +
+      "[time]\nunit = \"s\"\ndt = " + number(kDt, "toss scene time.dt") +
       "  # s\nsteps_per_frame = " + std::to_string(kStepsPerFrame) +
       "  # 30 frames/s: a quarter of real time\nduration = " +
       number(duration, "toss scene time.duration") +

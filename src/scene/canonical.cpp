@@ -99,6 +99,9 @@ JsonObject canonical_scene(const Scene& s) {
   m.push_back({"time.dt", number(s.dt)});
   m.push_back({"time.steps_per_frame", integer(s.steps_per_frame)});
   m.push_back({"time.frames", integer(s.frames)});
+  // Listed only where given, so that the manifests written before the key existed still
+  // describe the same scenes.
+  if (!s.time_unit.empty()) m.push_back({"time.unit", text(s.time_unit)});
   add_render(m, s.render, s.source);
   // Listed only when given, so that the manifests of the scenes without one stay as they were;
   // its bytes are hashed by the manifests (cache/manifest_head.cpp, "inputs").

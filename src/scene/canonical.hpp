@@ -19,8 +19,8 @@ namespace bookspin::scene {
 /// (NumberStyle::fewest_g), JSON-valid.
 /// model.normalize_every is listed only where it is not 1 (normalizing every step), so that
 /// the manifests written before the key existed still match, and measured.omega only where
-/// given (the file's bytes are the manifests' inputs); time.duration appears as the
-/// time.frames it gives.
+/// given (the file's bytes are the manifests' inputs), model.drag and model.drag_rate only
+/// with drag, time.unit only where given; time.duration appears as the time.frames it gives.
 JsonObject canonical_scene(const Scene& scene);
 
 /// canonical_scene() as text: one `"key": value` per line, each line indented by `indent`

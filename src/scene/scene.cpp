@@ -120,6 +120,10 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
 }
 
 void read_time(TomlReader& r, Scene& s) {
+  s.time_unit = r.string("time.unit", "");
+  if (!s.time_unit.empty() && s.time_unit != "s")
+    r.fail("time.unit", "expected \"s\" (the second) or no key (the abstract time unit), got \"" +
+                            s.time_unit + "\"");
   s.dt = r.number(limit("time.dt"));
   s.steps_per_frame = static_cast<int>(r.integer(limit("time.steps_per_frame")));
   s.frames = static_cast<int>(r.integer(limit("time.frames")));

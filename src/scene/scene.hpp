@@ -93,6 +93,9 @@ struct Scene {
   double dt = 1.0 / 60.0;   ///< time step, time units
   int steps_per_frame = 6;  ///< substeps per video frame
   int frames = 300;         ///< video frames (CSV rows), frame 0 = initial state
+  /// time.unit: "s" where the time unit is the second (a fitted toss), "" for the abstract
+  /// time unit of the paper's scenes; the panel's labels say it (docs/physics.md §1).
+  std::string time_unit;
   RenderOptions render;
   std::filesystem::path source;  ///< the scene file
   /// Non-empty for a comparison scene: each tile runs its own simulator from the same

@@ -22,6 +22,7 @@ opened at the toss's scene in headless Chromium (1280×720). Checks:
 Usage: explorer_toss_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 """
 import csv
+import glob
 import math
 import random
 import shlex
@@ -128,7 +129,10 @@ def main():
     command = [line for line in said.splitlines() if "bookspin explore " in line]
     if not command:
         fail(f"the fit does not say how to open the toss in the explorer:\n{said}")
-    words = shlex.split(command[0].split(": ", 1)[1].split(", then open")[0])
+    # The command names the tosses by a shell glob: expanded here as a shell would.
+    words = []
+    for word in shlex.split(command[0].split(": ", 1)[1].split(", then open")[0]):
+        words += sorted(glob.glob(word)) if "*" in word else [word]
     if words[:2] != ["bookspin", "explore"] or str(out / "fit" / "lab-toss1.toml") not in words:
         fail(f"not the explore command of the toss's scene: {command[0]}")
     run([bookspin, *words[1:]])

@@ -21,6 +21,22 @@ std::string quoted(const fs::path& path) {
   return text;
 }
 
+/// The files the printed `bookspin explore WORDS -o …` command names once a shell expands its
+/// words, each as its last 6 characters, space-separated ("" without such a line).
+std::string explored_scenes(const std::string& output) {
+  const std::string start = "bookspin explore ";
+  const auto at = output.find(start);
+  if (at == std::string::npos) return "";
+  const auto end = output.find(" -o ", at);
+  const std::string words = output.substr(at + start.size(), end - at - start.size());
+  const bookspin::test::ScratchDir dir;
+  std::ofstream(dir.path() / "expand.sh")
+      << "for f in " << words << "; do printf '%s ' \"${f: -6}\"; done\n";
+  std::string expanded;
+  bookspin::test::run_shell("bash " + (dir.path() / "expand.sh").string(), expanded);
+  return expanded.substr(0, expanded.find_last_not_of(' ') + 1);
+}
+
 TEST(FitCommand, FitsASyntheticExportIntoItsCsvsAndCharts) {
   const fs::path dir = bookspin::test::fresh_dir("cli/fit/good");
   const auto synthetic = fit::test::make_recording(
@@ -34,10 +50,8 @@ TEST(FitCommand, FitsASyntheticExportIntoItsCsvsAndCharts) {
                            "toss-toss1.toml", "toss-toss2.toml", "toss-toss1-measured.csv",
                            "toss-toss2-measured.csv", "toss/fit-manifest.json"})
     EXPECT_TRUE(fs::exists(dir / "out" / name)) << name;
-  // It says how to open the tosses in the explorer.
-  EXPECT_NE(result.output.find("bookspin explore " + (dir / "out" / "toss-toss1.toml").string()),
-            std::string::npos)
-      << result.output;
+  // It says how to open the tosses in the explorer: one shell glob that names every toss scene.
+  EXPECT_EQ(explored_scenes(result.output), "1.toml 2.toml") << result.output;
   const std::string csv = read_text_file(dir / "out" / "toss-fit.csv", "the CSV");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
@@ -48,6 +62,7 @@ TEST(FitCommand, FitsASyntheticExportIntoItsCsvsAndCharts) {
       bookspin::test::run_bookspin("fit " + quoted(dir / "toss") + " -o " + quoted(dir / "out"));
   EXPECT_EQ(again.status, 0);
   EXPECT_NE(again.output.find("up to date"), std::string::npos) << again.output;
+  EXPECT_EQ(explored_scenes(again.output), "1.toml 2.toml") << again.output;
 }
 
 /// Runs `bookspin fit FILE extra` on `text` written to FILE; expects exit 2, one line

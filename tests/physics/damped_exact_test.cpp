@@ -79,13 +79,14 @@ TEST(DampedExact, EqualsAnIntegrationOfTheDampedEulerEquations) {
         }
         const Vector3d w_ref = fine.w + (fine.w - coarse.w) / 15.0;
         const Matrix3d R_ref = fine.R + (fine.R - coarse.R) / 15.0;
-        const std::string what = b.name + ", " + std::string(to_string(law)) +
-                                 ", rate " + std::to_string(rate);
+        const std::string what =
+            b.name + ", " + std::string(to_string(law)) + ", rate " + std::to_string(rate);
         ASSERT_LE((fine.w - coarse.w).norm() / 15.0, 1e-11 * b.omega0.norm()) << what;
         EXPECT_LE((damped.omega_body(span) - w_ref).norm(), 1e-10 * b.omega0.norm()) << what;
         EXPECT_LE((damped.orientation(span) - R_ref).norm(), 1e-10) << what;
         // |L| as the law says, and its direction fixed.
-        const double g = law == DragLaw::linear ? std::exp(-rate * span) : 1.0 / (1.0 + rate * span);
+        const double g =
+            law == DragLaw::linear ? std::exp(-rate * span) : 1.0 / (1.0 + rate * span);
         EXPECT_NEAR(damped.angular_momentum_world(span).norm(), g * L0, 1e-13 * L0) << what;
         EXPECT_LE((damped.orientation(span) * damped.angular_momentum_body(span) -
                    damped.angular_momentum_world(span))
@@ -124,8 +125,8 @@ TEST(DampedExact, StretchedTimeAndItsRateDerivatives) {
       for (double t : {0.01, 0.7, 1.3}) {
         const Drag drag{law, rate};
         const double s = stretched_time(drag, t);
-        const double expected =
-            law == DragLaw::linear ? (1.0 - std::exp(-rate * t)) / rate : std::log(1.0 + rate * t) / rate;
+        const double expected = law == DragLaw::linear ? (1.0 - std::exp(-rate * t)) / rate
+                                                       : std::log(1.0 + rate * t) / rate;
         // The naive forms lose ~1e-16/(rate·t) to cancellation: compared loosely at small rates.
         EXPECT_NEAR(s, expected, std::max(1e-15, 2e-16 / (rate * t)) * t) << rate;
         EXPECT_NEAR(time_of_stretched(drag, s), t, 1e-14 * t) << rate;
