@@ -19,7 +19,12 @@
 // and every motion file is in place, nothing is run or written ("up to date"). Otherwise OUT's
 // motion files are all written again and any other CSV there is removed.
 //
-// Usage: node web/flipcheck-engines.mjs OUT SCENARIO.json...
+// Usage: node web/flipcheck-engines.mjs [--refine K] [--only NAME,...] OUT SCENARIO.json...
+//   --refine K: each scenario at dt/K, K times the steps, rows at the same times (the motions
+//     named ...+dt-over-K): what a smaller step does (docs/flipcheck.md, "What an engine's user
+//     should do"); not in `make figures`.
+//   --only NAME,...: only the engines whose motion name (without the version) is listed, e.g.
+//     babylonjs-havok,jolt-physics+gyroscopic.
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
@@ -38,19 +43,31 @@ const MAX_ROWS = 20000;
 const SHAPE = [1, 1, 1];
 const WEB = fileURLToPath(new URL('.', import.meta.url));
 
-const [out, ...scenarios] = process.argv.slice(2);
-if (!out || scenarios.length === 0) {
-  console.error('usage: node web/flipcheck-engines.mjs OUT SCENARIO.json...');
+const usage = () => {
+  console.error('usage: node web/flipcheck-engines.mjs [--refine K] [--only NAME,...] OUT SCENARIO.json...');
   process.exit(2);
+};
+const args = process.argv.slice(2);
+let refine = 1, only = null;
+while (args.length && args[0].startsWith('--')) {
+  const [flag, value] = args.splice(0, 2);
+  if (flag === '--refine' && /^[1-9][0-9]*$/.test(value ?? '')) refine = Number(value);
+  else if (flag === '--only' && value) only = value.split(',');
+  else usage();
 }
+const [out, ...scenarios] = args;
+if (!out || scenarios.length === 0) usage();
+const packageSlug = (e) => e.package.replace(/^@/, '').replace('/', '-');
 const engines = [cannon, rapier, jolt, joltGyroscopic, havok, ammo, oimo,
-  mujocoEuler, mujocoRk4, mujocoImplicit, mujocoImplicitfast];
+  mujocoEuler, mujocoRk4, mujocoImplicit, mujocoImplicitfast]
+  .filter((e) => !only || only.includes(packageSlug(e) + (e.mode ? `+${e.mode}` : '')));
+if (engines.length === 0) usage();
 
 /** The installed package's version (web/node_modules/<package>/package.json). */
 const version = (pkg) => JSON.parse(readFileSync(join(WEB, 'node_modules', pkg, 'package.json'), 'utf8')).version;
 /** The motion's name: the package and version that made it, and the mode. */
-const motionName = (e) => `${e.package.replace(/^@/, '').replace('/', '-')}@${version(e.package)}` +
-  (e.mode ? `+${e.mode}` : '');
+const motionName = (e) => `${packageSlug(e)}@${version(e.package)}` + (e.mode ? `+${e.mode}` : '') +
+  (refine > 1 ? `+dt-over-${refine}` : '');
 
 const sha256 = (file) => createHash('sha256').update(readFileSync(file)).digest('hex');
 const inputs = [join(WEB, 'package-lock.json'), fileURLToPath(import.meta.url),
@@ -61,6 +78,7 @@ const manifest = JSON.stringify({
   node: process.version,
   inputs: Object.fromEntries(inputs.map((f) => [basename(f), sha256(f)])),
   scenarios: Object.fromEntries(scenarios.map((f) => [basename(f), sha256(f)])),
+  refine,
   motions: outputs,
 }, null, 1) + '\n';
 const manifestPath = join(out, 'manifest.json');
@@ -85,16 +103,18 @@ const text = (x) => {
 for (const [file, s] of parsed) {
   let stride = Math.max(1, Math.ceil(s.steps / MAX_ROWS));
   while (s.steps % stride !== 0) ++stride;
+  const dt = s.dt / refine, steps = s.steps * refine;
+  stride *= refine;
   const body = { mass: s.mass, moments: s.principal_moments, size: SHAPE, omega0: s.omega0_world };
   for (const engine of engines) {
-    const run = engine.start(body, s.dt);
+    const run = engine.start(body, dt);
     const lines = ['t,qw,qx,qy,qz,wx_world,wy_world,wz_world'];
     const row = (step) => {
       const q = run.quaternion(), w = run.omegaWorld();
-      lines.push([step * s.dt, ...q, ...w].map(text).join(','));
+      lines.push([(step / refine) * s.dt, ...q, ...w].map(text).join(','));
     };
     row(0);
-    for (let step = 1; step <= s.steps; ++step) {
+    for (let step = 1; step <= steps; ++step) {
       run.step();
       if (step % stride !== 0) continue;
       try {
