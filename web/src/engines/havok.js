@@ -24,7 +24,8 @@ export const havok = {
   label: 'Havok 1.3',
   wasmBinary: null,
   load() {
-    if (!this.module) this.module = HavokPhysics(this.wasmBinary ? { wasmBinary: this.wasmBinary } : {});
+    // locateFile: the module's own lookup reads import.meta.url, which a page's bundle lacks.
+    if (!this.module) this.module = HavokPhysics({ wasmBinary: this.wasmBinary, locateFile: (f) => f });
     return this.module.then((H) => { this.H = H; });
   },
   start(body, dt) {
