@@ -54,12 +54,16 @@ league_methods=all
 [ -z "$quick" ] || league_methods=rigid-quaternion:rk4,mujoco:rk4
 "$bookspin" flipcheck export scenes/flipcheck/*.toml -o "$out/flipcheck"
 motions=("$out"/flipcheck/*-exact.csv)
-if command -v node >/dev/null && [ -d web/node_modules/jolt-physics ]; then
-  rm -rf "$out/flipcheck/motions"
-  node web/flipcheck-engines.mjs "$out/flipcheck/motions" "$out"/flipcheck/*.json
+# The engines' step is cached (its manifest: the scenarios, the lockfile, the adapters, the
+# engines run): with nothing changed it writes nothing. --quick: two of the eleven engine modes
+# (the test of every one is Flipcheck.JavaScriptEnginesUnderNode).
+engines_quick=()
+[ -z "$quick" ] || engines_quick=(--only cannon-es,babylonjs-havok)
+if command -v node >/dev/null && [ -d web/node_modules/@babylonjs/havok ] && [ -d web/node_modules/mujoco-js ]; then
+  node web/flipcheck-engines.mjs "${engines_quick[@]}" "$out/flipcheck/motions" "$out"/flipcheck/*.json
   motions+=("$out"/flipcheck/motions/*.csv)
 else
-  echo "figures: no node or web/node_modules: the league table without the JavaScript engines"
+  echo "figures: no node or web/node_modules (scripts/install-deps.sh): the league table without the JavaScript engines"
 fi
 "$bookspin" flipcheck league scenes/flipcheck/*.toml --motions "${motions[@]}" \
   --methods "$league_methods" -o "$out"

@@ -4,9 +4,10 @@
 #   2. the app bundled with esbuild (three.js; npm ci from web/package-lock.json when the
 #      install step has not put the packages in place),
 #   3. both inlined into the page by web/make_explorer.py;
-#   4. beside it, the JavaScript engines (cannon-es, Rapier, Jolt: web/src/engines/) as a second
+#   4. beside it, the JavaScript engines (cannon-es, Rapier, Jolt, Havok: web/src/engines/) as a second
 #      bundle, BUILD_DIR/web/explorer-engines.js, which only `bookspin explore --engines` writes
-#      into the page (the WebAssembly of Rapier and Jolt is inlined in their packages, base64).
+#      into the page (the WebAssembly of Rapier and Jolt is inlined in their packages, base64;
+#      Havok's by esbuild).
 # `bookspin explore SCENE… -o OUT` (found beside the shell: BUILD_DIR/bookspin) then writes the
 # scenes into it: OUT/explorer.html.
 # One caller at a time (a lock in BUILD_DIR/web). Nothing to do, nothing done: BUILD_DIR/web/inputs.sha256 holds the hash of every input (these
@@ -42,9 +43,10 @@ fi
 "$here/node_modules/.bin/esbuild" "$here/src/main.js" --bundle --format=iife --minify \
   --target=es2020 --log-level=warning --outfile="$work/explorer.bundle.js"
 # The engines' bundle: the node branch of Jolt's loader (import("node:module")) stays unbundled
-# and never runs in a browser.
+# and never runs in a browser; Havok's .wasm is inlined as bytes (the binary loader).
 "$here/node_modules/.bin/esbuild" "$here/src/engines/index.js" --bundle --format=iife --minify \
-  --target=es2020 --external:'node:*' --log-level=warning --outfile="$work/explorer-engines.js"
+  --target=es2020 --external:'node:*' --loader:.wasm=binary --log-level=warning \
+  --outfile="$work/explorer-engines.js"
 python3 "$here/make_explorer.py" "$here/src/index.html" "$work/bookspin_physics.js" \
   "$work/explorer.bundle.js" "$work/explorer-shell.html"
 echo "$inputs" > "$stamp"

@@ -5,7 +5,7 @@
 // of `dt` from body-frame ω0 at the identity; prints ω in the body frame at the end (Rᵀ·ω_world,
 // R from the engine's quaternion) as JSON, one line.
 // Usage: node engines_node.mjs NODE_MODULES ENGINE JSON
-//   ENGINE: cannon-es | rapier | jolt | jolt-gyroscopic
+//   ENGINE: cannon-es | rapier | jolt | jolt-gyroscopic | havok
 //   JSON: {"mass": m, "moments": [Ix, Iy, Iz], "size": [a, b, c], "omega0": [x, y, z],
 //          "dt": dt, "steps": n}
 import { createRequire } from 'node:module';
@@ -99,8 +99,36 @@ async function runJolt(gyroscopic) {
   return [[q.GetW(), q.GetX(), q.GetY(), q.GetZ()], [w.GetX(), w.GetY(), w.GetZ()]];
 }
 
+async function runHavok() {
+  const { readFileSync } = await import('node:fs');
+  const { dirname } = await import('node:path');
+  const main = resolve('@babylonjs/havok');  // lib/umd/HavokPhysics_umd.js
+  const wasmBinary = readFileSync(join(dirname(main), 'HavokPhysics.wasm'));
+  const module = await import(pathToFileURL(main).href);
+  const HK = await (module.default ?? module)({ wasmBinary });
+  const world = HK.HP_World_Create()[1];
+  HK.HP_World_SetGravity(world, [0, 0, 0]);
+  HK.HP_World_SetIdealStepTime(world, 0);
+  HK.HP_World_SetSpeedLimit(world, 1e30, 1e30);
+  const body = HK.HP_Body_Create()[1];
+  HK.HP_Body_SetShape(body, HK.HP_Shape_CreateBox([0, 0, 0], [0, 0, 0, 1], [a, b, c])[1]);
+  HK.HP_Body_SetMotionType(body, HK.MotionType.DYNAMIC);
+  // Havok's inertia is per unit mass.
+  HK.HP_Body_SetMassProperties(body, [[0, 0, 0], spec.mass, [Ix / spec.mass, Iy / spec.mass, Iz / spec.mass],
+    [0, 0, 0, 1]]);
+  HK.HP_Body_SetLinearDamping(body, 0);
+  HK.HP_Body_SetAngularDamping(body, 0);
+  HK.HP_Body_SetGravityFactor(body, 0);
+  HK.HP_Body_SetActivationControl(body, HK.ActivationControl.ALWAYS_ACTIVE);
+  HK.HP_World_AddBody(world, body, false);
+  HK.HP_Body_SetAngularVelocity(body, [w0x, w0y, w0z]);
+  for (let i = 0; i < spec.steps; ++i) HK.HP_World_Step(world, spec.dt);
+  const [x, y, z, w] = HK.HP_Body_GetOrientation(body)[1];
+  return [[w, x, y, z], HK.HP_Body_GetAngularVelocity(body)[1]];
+}
+
 const runs = { 'cannon-es': runCannon, rapier: runRapier, jolt: () => runJolt(false),
-  'jolt-gyroscopic': () => runJolt(true) };
+  'jolt-gyroscopic': () => runJolt(true), havok: runHavok };
 if (!runs[engine]) throw new Error(`unknown engine ${engine}`);
 const [[qw, qx, qy, qz], w] = await runs[engine]();
 // R of the unit quaternion (body → world); ω body = Rᵀ ω world.

@@ -7,7 +7,7 @@ Builds the page's program with web/build.sh BINARY_DIR, writes the page of every
   - without --engines the page holds no engine (no window.BOOKSPIN_ENGINES, no model of theirs
     in the selects) and is smaller than the page with them by at least the engines' bundle;
   - each JavaScript engine in the page (cannon-es, Rapier, Jolt without and with
-    mApplyGyroscopicForce), two at a time in compare mode, gives the same body-frame ω at t = 20
+    mApplyGyroscopicForce, Havok), two at a time in compare mode, gives the same body-frame ω at t = 20
     as the same npm package run under node on the same body and step (tests/browser/
     engines_node.mjs, written apart from the page's adapters, the book's principal moments in
     closed form m(b² + c²)/12…), to 1e-12 relative; each run draws its trail and shows its flips;
@@ -32,7 +32,7 @@ from explorer_test import body_label_reach, load as load_page
 
 WINDOW = dict(size=(1280, 720), webgl=True, offline=True, exact_viewport=True)
 TOL = 1e-12
-ENGINES = ("cannon-es", "rapier", "jolt", "jolt-gyroscopic")
+ENGINES = ("cannon-es", "rapier", "jolt", "jolt-gyroscopic", "havok")
 # The book of scenes/exact-unstable-x.toml near its intermediate axis x, no jiggle, so that node
 # starts from the same ω0: the page's ω0 is L0/I with L0 = I·w (docs/physics.md §5).
 BOOK = dict(size=(1.878, 2.9085, 0.5), mass=8.0)
@@ -89,7 +89,8 @@ def check_size(plain, with_engines, bundle):
 # start ω0' (window.explorer.startOmegas, the jiggle in it), so an engine stepped at its own
 # default step or started without the jiggle does not match.
 PAIRS = (("cannon-es", "rapier", "&jiggle=0"), ("jolt", "jolt-gyroscopic", "&jiggle=0"),
-         ("rapier", "jolt-gyroscopic", "&jiggle=0.001&seed=7&dt=0.008333333333333333"))
+         ("rapier", "jolt-gyroscopic", "&jiggle=0.001&seed=7&dt=0.008333333333333333"),
+         ("havok", "jolt", "&jiggle=0.001&seed=7&dt=0.008333333333333333"))
 
 
 def check_engines(driver, page, node, modules, tests, shots):
@@ -133,7 +134,7 @@ def check_engines(driver, page, node, modules, tests, shots):
             fail(f"a book of {first} and {second} has no label within 50 px: {reach}")
         labels = [label for label, _ in reach]
         for label in labels:
-            without = label.startswith(("cannon-es", "Jolt 1.1")) and "mApplyGyroscopicForce" not in label
+            without = label.startswith(("cannon-es", "Jolt 1.1", "Havok")) and "mApplyGyroscopicForce" not in label
             if without != ("no gyroscopic term" in label):
                 fail(f"the label {label!r} says the gyroscopic term wrongly")
         spans = {s["run"]: s["px"] for s in driver.execute_script("return window.explorer.plotSpans()")

@@ -9,6 +9,8 @@ import { ENGINE_MODEL } from './models.js';
 
 export const cannon = {
   model: ENGINE_MODEL.cannon,
+  package: 'cannon-es',
+  mode: '',
   label: 'cannon-es 0.20',
   load: () => Promise.resolve(),
   start(body, dt) {

@@ -9,6 +9,8 @@ import { ENGINE_MODEL } from './models.js';
 function joltAdapter(model, label, gyroscopic) {
   return {
     model,
+    package: 'jolt-physics',
+    mode: gyroscopic ? 'gyroscopic' : '',
     label,
     load() {
       if (!this.module) this.module = initJolt();

@@ -8,6 +8,8 @@ import { ENGINE_MODEL } from './models.js';
 
 export const rapier = {
   model: ENGINE_MODEL.rapier,
+  package: '@dimforge/rapier3d-compat',
+  mode: '',
   label: 'Rapier 0.21',
   load: () => RAPIER.init(),
   start(body, dt) {
