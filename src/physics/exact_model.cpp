@@ -56,17 +56,9 @@ Corners ExactModel::corners() const { return R_ * cage_corners_; }
 Diagnostics ExactModel::diagnostics() const {
   // The shared rigid diagnostics give L, the axis cosines, strain and orthogonality from R;
   // ω and the energy are then taken from the exact ω(t) rather than from R and L.
-  Diagnostics d = rigid_diagnostics(body_, R_, rotation_->angular_momentum_world(), t_);
-  d.omega_body = rotation_->omega_body(t_);
-  d.energy_kinetic = 0.5 * d.omega_body.dot(body_.moments.cwiseProduct(d.omega_body));
-  d.energy_potential = 0.0;
-  d.energy_total = d.energy_kinetic;
-  d.quaternion_norm = 1.0;
-  if (!d.cos_axis_L.allFinite()) {  // L = 0: no direction to compare
-    d.cos_axis_L.setZero();
-    d.cos_principal_L.setZero();
-  }
-  return d;
+  const Eigen::Vector3d omega = rotation_->omega_body(t_);
+  return prescribed_diagnostics(body_, R_, rotation_->angular_momentum_world(), t_, omega,
+                                0.5 * omega.dot(body_.moments.cwiseProduct(omega)));
 }
 
 bool ExactModel::finite() const { return std::isfinite(t_) && is_sane(R_); }
