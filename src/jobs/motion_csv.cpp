@@ -132,14 +132,15 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
                            std::to_string(index * motion.stride) + " (rows every " +
                            std::to_string(motion.stride) + " steps from t = 0)");
     }
-    // Any norm: divided by its largest component first, so that neither 1e300 nor 1e-300
-    // over- or underflows its squared norm.
+    // Any norm: a squared norm that would over- or underflow (1e300, 1e-300) is divided by the
+    // largest component first; a usual one is normalised as it is (the same bits as ever).
     const double q_largest =
         std::max({std::abs(v[1]), std::abs(v[2]), std::abs(v[3]), std::abs(v[4])});
     if (q_largest == 0.0)
       throw InputError(file, line_number, std::string(names[1]),
                        "q is zero (qw = qx = qy = qz = 0): no orientation");
-    Eigen::Quaterniond q(v[1] / q_largest, v[2] / q_largest, v[3] / q_largest, v[4] / q_largest);
+    Eigen::Quaterniond q(v[1], v[2], v[3], v[4]);
+    if (!(q_largest >= 1e-100 && q_largest <= 1e100)) q.coeffs() /= q_largest;
     q.normalize();
     for (std::size_t k = 5; k < 8; ++k)
       if (std::abs(v[k]) > kMaxOmega)
