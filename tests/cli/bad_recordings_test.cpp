@@ -55,16 +55,16 @@ TEST_P(BadMotion, ExitsTwoWithTheExactLineAndWritesNothing) {
   const std::string scenario =
       quoted(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck" / "mujoco-test-box.toml");
   const fs::path dir = fresh_dir("bad_motions/" + c.name);
-  expect_refused("flipcheck judge " + scenario + " " + quoted(c.file) + " -o " +
-                     quoted(dir / "out"),
-                 c.expected, dir / "out");
+  expect_refused(
+      "flipcheck judge " + scenario + " " + quoted(c.file) + " -o " + quoted(dir / "out"),
+      c.expected, dir / "out");
   const fs::path copy = dir / ("mujoco-test-box-" + c.name + ".csv");
   fs::copy_file(c.file, copy);
   std::string expected = c.expected;
   replace_all(expected, c.file.string(), copy.string());
-  expect_refused("flipcheck league " + scenario + " --motions " + quoted(copy) + " -o " +
-                     quoted(dir / "out"),
-                 expected, dir / "out");
+  expect_refused(
+      "flipcheck league " + scenario + " --motions " + quoted(copy) + " -o " + quoted(dir / "out"),
+      expected, dir / "out");
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, BadMotion, ::testing::ValuesIn(load("bad_motions")),
