@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
+#include "common/errors.hpp"
 #include "products/accuracy.hpp"
 #include "scene/scene.hpp"
 
@@ -50,6 +51,28 @@ CLI::Validator finite_range(const scene::Limit& limit) {
   return finite_range(limit.min, limit.max, limit.min_open);
 }
 
+/// An engine among `methods` that cannot run the scene (scene::EngineRefusal: MuJoCo's mjMINVAL,
+/// ODE's subnormal dt) refused before anything runs, as `simulate` and `render` refuse it: the
+/// scene read again as that engine's (its model.kind and model.integrator set), and only its
+/// engine refusal kept (other keys of the scene's own model were read already).
+void refuse_what_the_engines_cannot_run(const AccuracyOptions& options, const scene::Scene& scene,
+                                        const std::vector<analysis::Method>& methods) {
+  for (const analysis::Method& m : methods) {
+    if (!physics::is_engine(m.kind) || m.kind == scene.model.kind) continue;
+    std::vector<std::string> overrides = options.overrides;
+    overrides.push_back("model.kind=\"" + std::string(physics::to_string(m.kind)) + "\"");
+    overrides.push_back("model.integrator=\"" + std::string(physics::to_string(m.integrator)) +
+                        "\"");
+    try {
+      scene::parse_scene(options.scene_path, overrides);
+    } catch (const scene::EngineRefusal& e) {
+      throw InputError("--methods " + m.label + ": " + e.what());
+    } catch (const InputError&) {
+      // Not an engine limit: the scene's own model was read and checked already.
+    }
+  }
+}
+
 /// Every model × integrator × dt against the exact solution: table on stdout,
 /// OUT/<scene>-accuracy.csv and a log-log plot OUT/<scene>-accuracy.png.
 int accuracy_command(const AccuracyOptions& options) {
@@ -58,6 +81,7 @@ int accuracy_command(const AccuracyOptions& options) {
   job.request.flips = options.flips;
   job.request.dts = options.dts;
   job.request.methods = analysis::parse_methods(options.methods);
+  refuse_what_the_engines_cannot_run(options, job.request.scene, job.request.methods);
   job.request.on_line = [](const std::string& line) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);

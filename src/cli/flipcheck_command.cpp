@@ -97,6 +97,14 @@ int league_table(const FlipcheckOptions& options) {
   return kExitOk;
 }
 
+/// Every flipcheck subcommand's -o/--out, --set and freshness flags (its manifest `manifest`).
+void add_out_set_and_freshness(CLI::App* cmd, FlipcheckOptions& options,
+                               const std::string& manifest) {
+  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
+  add_freshness_flags(cmd, options.force, options.verify, manifest);
+}
+
 }  // namespace
 
 Subcommand add_flipcheck(CLI::App& cli) {
@@ -116,10 +124,7 @@ Subcommand add_flipcheck(CLI::App& cli) {
                    "Scenario files (TOML, e.g. "
                    "scenes/flipcheck/*.toml)")
       ->required();
-  exporter->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
-  exporter->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
-  add_freshness_flags(exporter, options.force, options.verify,
-                      "OUT/<scenario>/flipcheck-export-manifest.json");
+  add_out_set_and_freshness(exporter, options, "OUT/<scenario>/flipcheck-export-manifest.json");
   CLI::App* judge = cmd->add_subcommand(
       "judge",
       "Compare motion CSVs (t,qw,qx,qy,qz and wx,wy,wz or wx_world,wy_world,wz_world) with the "
@@ -131,10 +136,7 @@ Subcommand add_flipcheck(CLI::App& cli) {
       "judge too, comma-separated: all, engines, rigid, a model kind (every mode of it) or "
       "KIND:INTEGRATOR, e.g. engines,rigid-quaternion:rk4";
   judge->add_option("--methods", options.methods, methods_help);
-  judge->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
-  judge->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
-  add_freshness_flags(judge, options.force, options.verify,
-                      "OUT/<scenario>/flipcheck-judge-manifest.json");
+  add_out_set_and_freshness(judge, options, "OUT/<scenario>/flipcheck-judge-manifest.json");
   CLI::App* league = cmd->add_subcommand(
       "league",
       "Judge motion files and methods in every scenario: OUT/flipcheck-league.html (a motion "
@@ -146,9 +148,7 @@ Subcommand add_flipcheck(CLI::App& cli) {
                    "<scenario>-exact.csv among them)")
       ->take_all();
   league->add_option("--methods", options.methods, methods_help);
-  league->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
-  league->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
-  add_freshness_flags(league, options.force, options.verify, "OUT/flipcheck-league-manifest.json");
+  add_out_set_and_freshness(league, options, "OUT/flipcheck-league-manifest.json");
   return {cmd, [stored, exporter, league] {
             if (exporter->parsed()) return export_scenarios(*stored);
             return league->parsed() ? league_table(*stored) : judge_motions(*stored);

@@ -9,18 +9,42 @@
 
 namespace bookspin {
 
+std::string not_a_file_reason(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) return "no such file";
+  if (fs::is_regular_file(status)) return "";
+  if (fs::is_directory(status)) return "is a directory";
+  if (fs::is_fifo(status)) return "is a FIFO, not a regular file";
+  if (fs::is_character_file(status) || fs::is_block_file(status))
+    return "is a device, not a regular file";
+  if (fs::is_socket(status)) return "is a socket, not a regular file";
+  return "not a regular file";
+}
+
+std::string_view trimmed(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.front() == '\r'))
+    text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+    text.remove_suffix(1);
+  return text;
+}
+
+std::string_view without_bom(std::string_view text) {
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  if (text.substr(0, kBom.size()) == kBom) text.remove_prefix(kBom.size());
+  return text;
+}
+
 std::optional<std::string> try_read_text_file(const std::filesystem::path& path,
                                               std::string* reason) {
   const auto none = [reason](std::string why) {
     if (reason) *reason = std::move(why);
     return std::nullopt;
   };
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) return none("no such file");
-  if (std::filesystem::is_directory(status)) return none("is a directory");
   // Not a FIFO or a device either: those may never end.
-  if (!std::filesystem::is_regular_file(status)) return none("not a regular file");
+  if (std::string why = not_a_file_reason(path); !why.empty()) return none(std::move(why));
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              &std::fclose);
   if (!file) return none(std::strerror(errno));

@@ -40,7 +40,8 @@ struct FinderSettings {
 };
 
 /// ω̇ (rad/s², phone frame) at each sample: the slope of a quadratic fitted by least squares to
-/// the samples within ±2 of it (fewer at an end), with their own times (jitter allowed).
+/// the samples within ±2 of it, or within ±5 ms of it where there are more (fewer at an end),
+/// with their own times (jitter allowed).
 std::vector<Eigen::Vector3d> omega_rate(const std::vector<double>& t,
                                         const std::vector<Eigen::Vector3d>& omega);
 
@@ -57,8 +58,9 @@ Eigen::Matrix3d euler_inertia(const std::vector<Eigen::Vector3d>& omega,
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings = {});
 
 /// The flights given by hand, [t_start, t_end] s each (the bias measured as find_flights
-/// does). Throws InputError naming `option` when a range holds fewer than 10 samples, is
-/// reversed, or spans a pause.
+/// does), in time order whatever order they are given in. Throws InputError naming `option`
+/// when a range holds fewer than 10 samples, is reversed, spans a pause, overlaps another
+/// (shares an instant with it) or is given twice.
 FlightSearch hand_flights(const GyroRecording& recording,
                           const std::vector<std::pair<double, double>>& ranges,
                           const std::string& option = "--tosses",

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -24,9 +25,8 @@ std::vector<std::string> split_cells(std::string_view line, char separator) {
   std::size_t begin = 0;
   while (true) {
     const std::size_t end = line.find(separator, begin);
-    std::string_view cell = line.substr(begin, end == std::string_view::npos ? end : end - begin);
-    while (!cell.empty() && (cell.front() == ' ' || cell.front() == '\r')) cell.remove_prefix(1);
-    while (!cell.empty() && (cell.back() == ' ' || cell.back() == '\r')) cell.remove_suffix(1);
+    std::string_view cell =
+        trimmed(line.substr(begin, end == std::string_view::npos ? end : end - begin));
     if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"')
       cell = cell.substr(1, cell.size() - 2);
     cells.emplace_back(cell);
@@ -97,11 +97,34 @@ struct ZipCloser {
   void operator()(void* zip) const { unzClose(zip); }
 };
 
-/// Every entry of the zip `path` whose name ends in `suffix`, the first one's bytes; nullopt
-/// when none. Throws InputError when the file is not a readable zip.
+/// The most bytes a zip entry may inflate to (a recording of hours at 500 Hz is under 100 MB):
+/// an entry that says it is larger, or inflates beyond it, is refused before it fills memory.
+constexpr std::uint64_t kMaxZipEntryBytes = std::uint64_t{256} << 20;
+
+/// The bytes of the one entry of the zip `path` whose name ends in `suffix` (after a folder
+/// boundary); nullopt when none. Throws InputError when the file is empty, not a readable zip,
+/// an empty zip, holds two such entries (naming them: which one is meant?), or the entry
+/// inflates beyond kMaxZipEntryBytes.
 std::optional<std::string> zip_entry(const std::filesystem::path& path, std::string_view suffix) {
+  std::error_code error;
+  if (std::filesystem::file_size(path, error) == 0 && !error)
+    throw InputError(path.string() + ": an empty file, not a zip file");
   const std::unique_ptr<void, ZipCloser> zip(unzOpen64(path.string().c_str()));
-  if (!zip) throw InputError(path.string() + ": not a zip file");
+  if (!zip) {
+    // A zip of no file is its end record alone ("PK\5\6"), which minizip may not open.
+    const std::optional<std::string> head =
+        std::filesystem::file_size(path, error) == 22 ? try_read_text_file(path) : std::nullopt;
+    if (head && head->compare(0, 4, "PK\x05\x06") == 0)
+      throw InputError(path.string() + ": an empty zip (no file in it)");
+    throw InputError(path.string() + ": not a zip file");
+  }
+  unz_global_info64 global{};
+  if (unzGetGlobalInfo64(zip.get(), &global) != UNZ_OK)
+    throw InputError(path.string() + ": a damaged zip file");
+  if (global.number_entry == 0) throw InputError(path.string() + ": an empty zip (no file in it)");
+  std::vector<std::string> found;
+  unz64_file_pos found_at{};
+  std::uint64_t found_size = 0;
   for (int status = unzGoToFirstFile(zip.get()); status == UNZ_OK;
        status = unzGoToNextFile(zip.get())) {
     unz_file_info64 info{};
@@ -115,25 +138,45 @@ std::optional<std::string> zip_entry(const std::filesystem::path& path, std::str
       continue;
     // "meta/time.csv" must not match "othermeta/time.csv": a folder boundary before it.
     if (entry.size() > suffix.size() && entry[entry.size() - suffix.size() - 1] != '/') continue;
-    if (unzOpenCurrentFile(zip.get()) != UNZ_OK)
-      throw InputError(path.string() + ": " + entry + ": cannot open the zip entry");
-    std::string bytes;
-    char buffer[65536];
-    int got = 0;
-    while ((got = unzReadCurrentFile(zip.get(), buffer, sizeof buffer)) > 0)
-      bytes.append(buffer, static_cast<std::size_t>(got));
-    const int closed = unzCloseCurrentFile(zip.get());
-    if (got < 0 || closed != UNZ_OK)
-      throw InputError(path.string() + ": " + entry + ": a damaged zip entry");
-    return bytes;
+    if (found.empty()) {
+      unzGetFilePos64(zip.get(), &found_at);
+      found_size = info.uncompressed_size;
+    }
+    found.push_back(entry);
   }
-  return std::nullopt;
+  if (found.empty()) return std::nullopt;
+  if (found.size() > 1) {
+    std::string names;
+    for (const std::string& entry : found) names += (names.empty() ? "\"" : ", \"") + entry + "\"";
+    throw InputError(path.string() + ": holds " + std::to_string(found.size()) + " exports (" +
+                     names + "): which one? Unzip it and give that export's folder");
+  }
+  const std::string& entry = found.front();
+  const std::string too_large = path.string() + ": " + entry + ": inflates to more than " +
+                                std::to_string(kMaxZipEntryBytes >> 20) +
+                                " MiB, more than a recording (a damaged zip, or not phyphox's)";
+  if (found_size > kMaxZipEntryBytes) throw InputError(too_large);
+  if (unzGoToFilePos64(zip.get(), &found_at) != UNZ_OK || unzOpenCurrentFile(zip.get()) != UNZ_OK)
+    throw InputError(path.string() + ": " + entry + ": cannot open the zip entry");
+  std::string bytes;
+  char buffer[65536];
+  int got = 0;
+  while ((got = unzReadCurrentFile(zip.get(), buffer, sizeof buffer)) > 0) {
+    bytes.append(buffer, static_cast<std::size_t>(got));
+    // The size the entry declares may lie: the bytes themselves are counted too.
+    if (bytes.size() > kMaxZipEntryBytes) throw InputError(too_large);
+  }
+  const int closed = unzCloseCurrentFile(zip.get());
+  if (got < 0 || closed != UNZ_OK)
+    throw InputError(path.string() + ": " + entry + ": a damaged zip entry");
+  return bytes;
 }
 
 }  // namespace
 
 GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
                              const std::string& name) {
+  text = without_bom(text);  // a spreadsheet's byte-order mark before the header
   const auto lines = lines_of(text);
   if (lines.empty()) throw InputError(file, 0, "", "not a gyroscope recording: the file is empty");
   const std::string_view head = lines.front().second;
@@ -181,6 +224,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
 }
 
 std::vector<double> parse_time_csv(std::string_view text, const std::string& file) {
+  text = without_bom(text);
   std::vector<double> pauses;
   const auto lines = lines_of(text);
   if (lines.empty()) return pauses;

@@ -1,5 +1,6 @@
 #include "jobs/motion_csv.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -13,12 +14,8 @@ namespace bookspin::jobs {
 
 namespace {
 
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
+/// rad per time unit: a larger ω component is refused (its E and |L| would overflow).
+constexpr double kMaxOmega = 1e100;
 
 std::vector<std::string_view> cells_of(std::string_view line) {
   std::vector<std::string_view> cells;
@@ -45,6 +42,7 @@ std::optional<std::size_t> column(const std::vector<std::string_view>& header,
 
 MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
                             long long steps) {
+  text = without_bom(text);  // a spreadsheet's byte-order mark before the header
   MotionFile motion;
   std::vector<std::string_view> header;
   std::array<std::size_t, 8> at{};  // t, qw, qx, qy, qz, ω x, y, z
@@ -134,9 +132,21 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
                            std::to_string(index * motion.stride) + " (rows every " +
                            std::to_string(motion.stride) + " steps from t = 0)");
     }
+    // Any norm: a squared norm that would over- or underflow (1e300, 1e-300) is divided by the
+    // largest component first; a usual one is normalised as it is (the same bits as ever).
+    const double q_largest =
+        std::max({std::abs(v[1]), std::abs(v[2]), std::abs(v[3]), std::abs(v[4])});
+    if (q_largest == 0.0)
+      throw InputError(file, line_number, std::string(names[1]),
+                       "q is zero (qw = qx = qy = qz = 0): no orientation");
     Eigen::Quaterniond q(v[1], v[2], v[3], v[4]);
-    if (!(q.norm() > 0.0)) throw InputError(file, line_number, std::string(names[1]), "q is zero");
+    if (!(q_largest >= 1e-100 && q_largest <= 1e100)) q.coeffs() /= q_largest;
     q.normalize();
+    for (std::size_t k = 5; k < 8; ++k)
+      if (std::abs(v[k]) > kMaxOmega)
+        throw InputError(file, line_number, std::string(names[k]),
+                         "\"" + std::string(cells[at[k]]) +
+                             "\" is beyond ±1e100 rad per time unit (its energy would overflow)");
     Eigen::Vector3d omega(v[5], v[6], v[7]);
     if (motion.omega_frame == OmegaFrame::world) omega = q.toRotationMatrix().transpose() * omega;
     motion.rows.push_back({step, q, omega});

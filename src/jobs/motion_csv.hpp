@@ -28,8 +28,11 @@ struct MotionFile {
 /// skipped; CRLF read as LF. Each row's t must be a whole number of steps of dt (to 1e-6 of a
 /// step), the first 0, the next ones one stride apart, none outside 0 … `steps`. Throws InputError
 /// "FILE:LINE: COLUMN: reason" (the line of the file; the column where there is one) for a
-/// missing column, a missing or extra cell, a cell that is not a finite number, q = 0, a
-/// misplaced t, and for a file without rows.
+/// missing column, a missing or extra cell, a cell that is not a finite number, q = 0 (all four
+/// components; any other norm is read, 1e300 and 1e-300 alike: q is divided by its largest
+/// component first when that is beyond 1e±100), an ω component beyond ±1e100 (its energy would
+/// overflow), a misplaced t, and for a file without rows. A UTF-8 byte-order mark before the
+/// header is read past.
 MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
                             long long steps);
 

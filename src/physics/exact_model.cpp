@@ -59,17 +59,9 @@ Diagnostics ExactModel::diagnostics() const {
   // ω and the energy are then taken from the exact ω(t) rather than from R and L.
   // Under drag: L = g(t) L0, ω = g(t) ω_free(s(t)) (docs/physics.md §21; g = 1, s = t without).
   const double g = drag_decay(drag_, t_);
-  Diagnostics d = rigid_diagnostics(body_, R_, g * rotation_->angular_momentum_world(), t_);
-  d.omega_body = g * rotation_->omega_body(stretched_time(drag_, t_));
-  d.energy_kinetic = 0.5 * d.omega_body.dot(body_.moments.cwiseProduct(d.omega_body));
-  d.energy_potential = 0.0;
-  d.energy_total = d.energy_kinetic;
-  d.quaternion_norm = 1.0;
-  if (!d.cos_axis_L.allFinite()) {  // L = 0: no direction to compare
-    d.cos_axis_L.setZero();
-    d.cos_principal_L.setZero();
-  }
-  return d;
+  const Eigen::Vector3d omega = g * rotation_->omega_body(stretched_time(drag_, t_));
+  return prescribed_diagnostics(body_, R_, g * rotation_->angular_momentum_world(), t_, omega,
+                                0.5 * omega.dot(body_.moments.cwiseProduct(omega)));
 }
 
 bool ExactModel::finite() const {

@@ -132,17 +132,8 @@ Diagnostics ReplayModel::diagnostics() const {
   const Eigen::Vector3d L = R_ * (inertia_ * omega_);
   // The axis cosines, strain and orthogonality of the drawn body's pose; ω and the energy are
   // the motion's own, with the motion frame's inertia.
-  Diagnostics d = rigid_diagnostics(body_, orientation(), L, t_);
-  d.omega_body = omega_axes_ * omega_;
-  d.energy_kinetic = 0.5 * omega_.dot(inertia_ * omega_);
-  d.energy_potential = 0.0;
-  d.energy_total = d.energy_kinetic;
-  d.quaternion_norm = 1.0;
-  if (!d.cos_axis_L.allFinite()) {  // L = 0: no direction to compare
-    d.cos_axis_L.setZero();
-    d.cos_principal_L.setZero();
-  }
-  return d;
+  return prescribed_diagnostics(body_, orientation(), L, t_, omega_axes_ * omega_,
+                                0.5 * omega_.dot(inertia_ * omega_));
 }
 
 bool ReplayModel::finite() const { return std::isfinite(t_) && is_sane(R_) && is_sane(omega_); }

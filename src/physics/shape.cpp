@@ -55,6 +55,22 @@ Diagnostics rigid_diagnostics(const Book& book, const Eigen::Matrix3d& M, const 
   return rigid_diagnostics(book_body(book), M, L, t);
 }
 
+Diagnostics prescribed_diagnostics(const Body& body, const Eigen::Matrix3d& R,
+                                   const Eigen::Vector3d& L, double t,
+                                   const Eigen::Vector3d& omega_body, double energy_kinetic) {
+  Diagnostics d = rigid_diagnostics(body, R, L, t);
+  d.omega_body = omega_body;
+  d.energy_kinetic = energy_kinetic;
+  d.energy_potential = 0.0;
+  d.energy_total = energy_kinetic;
+  d.quaternion_norm = 1.0;
+  if (!d.cos_axis_L.allFinite()) {  // L = 0: no direction to compare
+    d.cos_axis_L.setZero();
+    d.cos_principal_L.setZero();
+  }
+  return d;
+}
+
 Diagnostics rigid_diagnostics(const Body& body, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
                               double t) {
   const Eigen::Vector3d& moments = body.moments;

@@ -44,6 +44,14 @@ Diagnostics rigid_diagnostics(const Body& body, const Eigen::Matrix3d& M, const 
 Diagnostics rigid_diagnostics(const Book& book, const Eigen::Matrix3d& M, const Eigen::Vector3d& L,
                               double t);
 
+/// Diagnostics of a motion given rather than integrated (the exact motion, a replayed one):
+/// rigid_diagnostics(body, R, L, t) for the pose, with ω (`omega_body`, body frame) and the
+/// energy (`energy_kinetic`, all of it) the motion's own, the quaternion's norm 1, and the axis
+/// cosines 0 where L = 0 (no direction to compare). docs/physics.md §9.
+Diagnostics prescribed_diagnostics(const Body& body, const Eigen::Matrix3d& R,
+                                   const Eigen::Vector3d& L, double t,
+                                   const Eigen::Vector3d& omega_body, double energy_kinetic);
+
 /// cos_principal_L from cos_axis_L: the body axes' cosines in principal_order(moments).
 Eigen::Vector3d principal_cosines(const Eigen::Vector3d& cos_axis_L,
                                   const Eigen::Vector3d& moments);

@@ -239,6 +239,9 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
       recording.name + "-fit", manifest,   "fit", members, job.out_dir, nullptr,
       /*all_or_nothing=*/true, input_files};
   const cache::Outcome outcome = cache::make_cached(cached, job.freshness, [&] {
+    // The stops: before the flights are sought and fitted, before each chart, and before the
+    // files go in place (docs/outputs.md, "Signals").
+    stop_if_asked(job.stop_signal, "fit flights");
     const fit::FlightSearch search = job.tosses.empty() ? fit::find_flights(recording)
                                                         : fit::hand_flights(recording, job.tosses);
     fit::FitSettings settings;
@@ -254,9 +257,11 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
         fit_layout(job.out_dir, recording.name, static_cast<int>(result.tosses.size()), scenes,
                    clip_scene ? clip_scene->render.formats : std::vector<std::string>{});
     std::vector<RgbaImage> charts;
-    for (std::size_t k = 0; k < result.tosses.size(); ++k)
+    for (std::size_t k = 0; k < result.tosses.size(); ++k) {
+      stop_if_asked(job.stop_signal, "fit charts");
       charts.push_back(
           charts::toss_image(recording, result, static_cast<int>(k), job.width, job.height));
+    }
     output::prepare_output_dir(layout.csv.parent_path());
     output::StagedFiles files;  // the tables and every chart together, or none
     files.text(layout.csv, csv_text(fit_toss_csv(result), "fit CSV"));
@@ -270,6 +275,7 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
                                                    layout.measured[k].filename().string()));
     }
     if (clip_scene) render_toss_clips(job, *clip_scene, recording, result, layout, files);
+    stop_if_asked(job.stop_signal, "fit files");
     files.commit();
     if (summary) {
       *summary = fit_summary(result);

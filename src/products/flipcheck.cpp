@@ -237,6 +237,12 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
 
 FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   const FlipcheckLeagueLayout layout = flipcheck_league_layout(job.out_dir);
+  // A scenario once: two of one name (or one given twice) would be two columns of one name.
+  for (std::size_t i = 0; i < job.scenes.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (job.scenes[i].name == job.scenes[k].name)
+        throw InputError("flipcheck league: two scenarios named " + job.scenes[i].name +
+                         " (one given twice, or two files of one scene.name): give each once");
   // Each file to the scenario whose "<name>-" its name starts with, the longest such name.
   std::vector<std::vector<std::filesystem::path>> files(job.scenes.size());
   std::vector<std::vector<std::string>> names(job.scenes.size());
@@ -260,8 +266,20 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
     std::string name = base.substr(job.scenes[best].name.size() + 1);
     if (const std::size_t dot = name.rfind('.'); dot != std::string::npos && dot > 0)
       name.erase(dot);
+    // Two files of one name in one scenario would be one row: refused, naming both.
+    for (std::size_t k = 0; k < names[best].size(); ++k)
+      if (names[best][k] == name)
+        throw InputError(file.string() + ": flipcheck league: its motion \"" + name +
+                         "\" is also " + files[best][k].string() + "'s in scenario " +
+                         job.scenes[best].name + ": rename one (a row per motion)");
     files[best].push_back(file);
     names[best].push_back(name);
+  }
+  // Every motion file read before anything is judged or written: a bad one is its one line.
+  for (std::size_t i = 0; i < job.scenes.size(); ++i) {
+    const analysis::Scenario scenario = analysis::scenario_of(job.scenes[i]);
+    for (const std::filesystem::path& file : files[i])
+      jobs::read_motion_csv(file, scenario.dt, scenario.steps);
   }
   // Up to date: the same scenarios (each its canonical form, input files and bookspin build:
   // a scene's own head), methods and motion files (each name and SHA-256), so that an
@@ -310,12 +328,17 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   });
   if (result.outcome == cache::Outcome::up_to_date)
     csv = read_text_file(layout.csv, "the league's CSV");
-  // The counts from the table's CSV (made now or up to date): its motion and pass columns.
+  // The counts from the table's CSV (made now or up to date): its motion and pass columns. A
+  // record may span lines (a motion's name holding a line break, in double quotes): lines are
+  // joined while a quote is open.
   std::map<std::string, bool> passes;
   std::istringstream lines(csv);
   std::string line;
   std::getline(lines, line);  // the header: scenario, motion, pass, …
   while (std::getline(lines, line)) {
+    for (std::string more;
+         std::count(line.begin(), line.end(), '"') % 2 != 0 && std::getline(lines, more);)
+      line += "\n" + more;
     std::vector<std::string> cells;
     try {
       cells = csv_cells(line);

@@ -3,22 +3,13 @@
 #include <charconv>
 #include <cmath>
 
+#include "common/text_file.hpp"
 #include "scene/limits.hpp"
 
 namespace bookspin::scene {
-namespace {
-
-/// `text` without the spaces, tabs and carriage return around it.
-std::string_view trimmed(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
-    text.remove_suffix(1);
-  return text;
-}
-
-}  // namespace
 
 std::string parse_measured_omega(std::string_view text, MeasuredOmega& out) {
+  text = without_bom(text);  // a spreadsheet's byte-order mark before the header
   const char* columns[] = {"t", "wx", "wy", "wz"};
   const double w_limit = limit("initial.angular_velocity").max;
   std::vector<double> t;

@@ -163,8 +163,8 @@ MeasuredOmega read_measured(TomlReader& r, const std::filesystem::path& origin) 
   std::filesystem::path path(value);
   if (path.is_relative()) path = origin.parent_path() / path;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    r.fail(key, "measured ω file not found: " + path.string());
+  if (const std::string why = not_a_file_reason(path); !why.empty())
+    r.fail(key, path.string() + ": " + why + " (the measured ω file)");
   if (std::filesystem::file_size(path, ec) > kMaxMeasuredFileBytes)
     r.fail(key,
            path.string() + ": larger than " + std::to_string(kMaxMeasuredFileBytes) + " bytes");

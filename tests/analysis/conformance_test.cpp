@@ -122,6 +122,49 @@ TEST(Conformance, KnownChangesOfTheMotionReadBackAsThatChange) {
   EXPECT_FALSE(started.pass());
 }
 
+/// Whether one of `c`'s failures is the first turn-over's.
+bool first_flip_failed(const Conformance& c) {
+  for (const std::string& f : c.failures)
+    if (f.rfind("first turn-over", 0) == 0) return true;
+  return false;
+}
+
+// The exact motion shifted in time by δ turns over δ early. The limit is 5 % of the closed
+// form's half period T/2 (tens of time units here, so 5 % of it is far more than 0.05 time
+// units): 3 % of T/2 early passes that check, 7 % fails it. The judgement's CSV puts the
+// motion's first turn-over and the exact one each in its own column.
+TEST(Conformance, TheFirstTurnOverIsJudgedInHalfPeriodsAndWrittenInItsColumns) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  const physics::ExactRotation exact(s.body.moments, start_omega(s));
+  const test::ClosedFormFlips closed = test::closed_form_flips(s.body.moments, start_omega(s));
+  ASSERT_GT(0.03 * closed.half_period, 0.1);  // the limit in T/2 differs from one in time units
+  const auto shifted = [&](double delta) {
+    std::vector<MotionSample> rows;
+    for (long long n = 0; n <= s.steps; ++n) {
+      const double t = static_cast<double>(n) * s.dt + delta;
+      rows.push_back({n, Eigen::Quaterniond(exact.orientation(t)), exact.omega_body(t)});
+    }
+    return judge_motion(s, rows);
+  };
+  const Conformance near = shifted(0.03 * closed.half_period);
+  const Conformance far = shifted(0.07 * closed.half_period);
+  ASSERT_TRUE(near.first_flip && far.first_flip);
+  EXPECT_NEAR(*near.first_flip, closed.first_flip - 0.03 * closed.half_period, 2 * s.dt);
+  EXPECT_FALSE(first_flip_failed(near)) << verdict_line(near);
+  EXPECT_TRUE(first_flip_failed(far)) << verdict_line(far);
+
+  const CsvTable table = judgement_table(s, {{"run.csv", "run", near}});
+  ASSERT_EQ(table.rows.size(), 1u);
+  const auto number_in = [&](const std::string& column) {
+    for (std::size_t i = 0; i < table.columns.size(); ++i)
+      if (table.columns[i] == column) return *std::get<CsvNumber>(table.rows[0][i]).value;
+    ADD_FAILURE() << "no column " << column;
+    return 0.0;
+  };
+  EXPECT_NEAR(number_in("first_flip"), closed.first_flip - 0.03 * closed.half_period, 2 * s.dt);
+  EXPECT_NEAR(number_in("first_flip_exact"), closed.first_flip, 1e-6);
+}
+
 // A comparison scene has no single motion and a body at rest none to judge: both are bad input.
 TEST(Conformance, AComparisonOrABodyAtRestIsNoScenario) {
   EXPECT_THROW(scenario_of(scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) +

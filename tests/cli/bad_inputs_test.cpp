@@ -166,6 +166,26 @@ frames = 2
   EXPECT_TRUE(fs::exists(dir / "out.csv"));
 }
 
+// accuracy runs the engines of --methods whatever the scene's model: a body one of them cannot
+// run (MuJoCo's mjMINVAL) is refused before anything runs, exit 2 and one line, as simulate
+// and render refuse it.
+TEST(BadInputs, AccuracyRefusesABodyAnEngineOfItsMethodsCannotRun) {
+  const fs::path dir = fresh_dir("bad_scenes/accuracy-mujoco-tiny");
+  const fs::path scene = dir / "tiny.toml";
+  std::ofstream(scene) << "[book]\nsize = [1e-3, 1e-3, 1e-3]\nmass = 1e-12\n"
+                          "[initial]\nangular_velocity = [1.0, 0.1, 0.0]\n";
+  const SplitResult r =
+      run_bookspin_split("accuracy " + quoted(scene) +
+                         " --methods rigid-quaternion:rk4,mujoco -o " + quoted(dir / "out"));
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("bookspin: error: --methods mujoco ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find(": book.size: MuJoCo needs every principal moment above its mjMINVAL"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 // Option values are quoted escaped, CLI11's own messages too: one line, no control sequence
 // reaches the terminal (the values made by printf in the shell: ESC, CR, LF).
 TEST(BadInputs, OptionValuesAreEscapedInEveryMessage) {

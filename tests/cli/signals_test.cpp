@@ -286,5 +286,35 @@ TEST(Signals, FitRenderKeepsThePreviousFit) {
                          kHold, "render frames", SIGINT, out, before);
 }
 
+// The plain fit polls between its stages (the flights, each toss's chart, before the files go
+// in place): a signal keeps the earlier fit's CSVs, charts and manifest byte for byte. --force:
+// the second run must reach its work whatever the manifest says.
+class FitSignal : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(FitSignal, KeepsThePreviousFit) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  fit::test::write_export(
+      dir.path() / "toss",
+      fit::test::make_recording(fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}}, 6),
+      fit::test::Dialect::comma);
+  const std::string recording = (dir.path() / "toss").string();
+  const CliResult first = run_bookspin("fit " + recording + " -o " + out.string());
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  ASSERT_TRUE(before.count("toss-fit.csv"));
+  for (const int signal : {SIGINT, SIGTERM})
+    expect_stopped_cleanly(words({"fit", recording, "--force", "-o", out.string()}), kHold,
+                           GetParam(), signal, out, before);
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, FitSignal,
+                         ::testing::Values("fit flights", "fit charts", "fit files"),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           name.erase(0, 4);
+                           return name;
+                         });
+
 }  // namespace
 }  // namespace bookspin::cli

@@ -56,8 +56,18 @@ TEST(TextFile, SaysWhyThereIsNothingToRead) {
   EXPECT_EQ(reason, "is a directory");
   ASSERT_EQ(mkfifo((dir / "fifo").c_str(), 0600), 0);  // reading it would wait for a writer
   EXPECT_EQ(try_read_text_file(dir / "fifo", &reason), std::nullopt);
-  EXPECT_EQ(reason, "not a regular file");
+  EXPECT_EQ(reason, "is a FIFO, not a regular file");
+  EXPECT_EQ(try_read_text_file("/dev/zero", &reason), std::nullopt);  // would never end
+  EXPECT_EQ(reason, "is a device, not a regular file");
   EXPECT_EQ(try_read_text_file(dir / "missing.toml"), std::nullopt);  // no reason wanted
+}
+
+TEST(TextFile, TrimmedAndWithoutBom) {
+  EXPECT_EQ(trimmed(" \t t,wx \r"), "t,wx");
+  EXPECT_EQ(trimmed(" \t\r "), "");
+  EXPECT_EQ(without_bom("\xEF\xBB\xBFt,wx"), "t,wx");
+  EXPECT_EQ(without_bom("t,wx"), "t,wx");
+  EXPECT_EQ(without_bom("\xEF\xBBt"), "\xEF\xBBt");  // half a mark is not one
 }
 
 TEST(TextFile, AnUnreadableFileIsTheOsError) {

@@ -98,6 +98,77 @@ TEST(Flights, HandFlightsAreCheckedAgainstTheRecording) {
   EXPECT_THROW(hand_flights(recording, {{1.7, 1.72}}), InputError);
 }
 
+std::string hand_error(const GyroRecording& recording,
+                       const std::vector<std::pair<double, double>>& ranges) {
+  try {
+    hand_flights(recording, ranges);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Flights, HandFlightsAreSortedAndNeverOverlap) {
+  const test::SyntheticRecording synthetic = test::make_recording(
+      test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.0}, {{-0.4, 13.0, 0.6}, 1.0}});
+  const GyroRecording recording = as_recording(synthetic);
+  // Given in reverse: numbered in time order.
+  const FlightSearch search = hand_flights(recording, {{4.2, 5.0}, {1.7, 2.5}});
+  ASSERT_EQ(search.flights.size(), 2u);
+  EXPECT_NEAR(search.flights[0].t_start, 1.7, 0.011);
+  EXPECT_NEAR(search.flights[1].t_start, 4.2, 0.011);
+  EXPECT_EQ(hand_error(recording, {{1.7, 2.5}, {2.0, 2.7}}),
+            "--tosses 2.000:2.700: overlaps 1.700:2.500 (a sample belongs to one toss at most)");
+  EXPECT_EQ(hand_error(recording, {{2.0, 2.7}, {1.7, 2.5}}),
+            "--tosses 2.000:2.700: overlaps 1.700:2.500 (a sample belongs to one toss at most)");
+  EXPECT_EQ(hand_error(recording, {{1.7, 2.5}, {2.5, 2.7}}),
+            "--tosses 2.500:2.700: overlaps 1.700:2.500 (a sample belongs to one toss at most)");
+  EXPECT_EQ(hand_error(recording, {{1.7, 2.5}, {1.7, 2.5}}), "--tosses 1.700:2.500: given twice");
+}
+
+TEST(Flights, TwoTossesAt10kHzAreTwoFlights) {
+  // At 10 kHz a derivative over ±2 samples (0.2 ms) is the noise's, not the motion's: the
+  // finder's window spans ±0.02 s whatever the rate, so the flights are found as at 100 Hz.
+  const test::SyntheticRecording synthetic =
+      test::make_recording(test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.0}, {{-0.4, 13.0, 0.6}, 0.8}},
+                           3, 0.01, 0.15, 4.0, 0.0, 10000.0);
+  const FlightSearch search = find_flights(as_recording(synthetic));
+  ASSERT_EQ(search.flights.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_NEAR(search.flights[k].t_start, synthetic.tosses[k].t_start, 0.05) << "toss " << k;
+    EXPECT_NEAR(search.flights[k].t_end, synthetic.tosses[k].t_end, 0.05) << "toss " << k;
+  }
+}
+
+TEST(Flights, TheBiasIsTheMeanOfEveryRestSample) {
+  // 1 s at rest (100 Hz), zero but for its first and last samples (0.45 rad/s on x, still
+  // below rest_omega), then 1 s turning at 5 rad/s: the bias is (0.45 + 0.45) / 100 on x.
+  GyroRecording recording;
+  recording.name = "rest";
+  recording.source = "rest.csv";
+  for (int i = 0; i < 200; ++i) {
+    recording.t.push_back(0.01 * i);
+    const double x = i == 0 || i == 99 ? 0.45 : i >= 100 ? 5.0 : 0.0;
+    recording.omega.emplace_back(x, 0.0, 0.0);
+  }
+  const FlightSearch search = find_flights(recording);
+  EXPECT_EQ(search.rest_samples, 100);
+  EXPECT_NEAR(search.bias[0], 0.009, 1e-12);
+  EXPECT_EQ(search.bias[1], 0.0);
+}
+
+TEST(Flights, AFlightShorterThanTheMinimumIsDroppedHoweverManySamples) {
+  // A smooth 0.4 s wind-up (a candidate, with the flight after it) before a 0.2 s flight: the
+  // torque cut leaves 0.2 s (20 samples, enough to fit): shorter than min_flight, dropped.
+  const test::SyntheticRecording synthetic = test::make_recording(
+      test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 0.2}}, 7, 0.01, 0.4, 0.0);
+  const FlightSearch search = find_flights(as_recording(synthetic));
+  ASSERT_EQ(search.flights.size(), 1u);
+  EXPECT_LT(search.flights[0].t_end, synthetic.tosses[1].t_start);
+  for (const Flight& f : search.flights)
+    EXPECT_GE(f.t_end - f.t_start, FinderSettings{}.min_flight);
+}
+
 TEST(Flights, EulerInertiaOfExactEulerMotion) {
   // ω and ω̇ that satisfy Euler's equations for I = diag(1, 2, 3) (docs/physics.md §8): the
   // inertia comes back, scaled to a largest moment of 1.

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 #include <zip.h>
 
+#include <cstdint>
 #include <fstream>
+#include <optional>
 
 #include "common/errors.hpp"
 #include "support/scratch.hpp"
@@ -120,6 +122,74 @@ TEST(Recording, AMissingFileOrAFolderWithoutRawDataIsBadInput) {
   EXPECT_THROW(read_recording(dir), InputError);
   std::ofstream(dir / "not.zip") << "plain text";
   EXPECT_THROW(read_recording(dir / "not.zip"), InputError);
+}
+
+TEST(Recording, AByteOrderMarkBeforeTheHeaderIsRead) {
+  // Spreadsheets write a UTF-8 byte-order mark before the header: read past, as any CSV's.
+  const std::string bom = "\xEF\xBB\xBF";
+  const GyroRecording plain = parse_gyro_csv(bom + "t,wx,wy,wz\n0,1,2,3\n" + rows(9), "p.csv", "p");
+  EXPECT_EQ(plain.t.size(), 10u);
+  EXPECT_DOUBLE_EQ(plain.omega[0][2], 3.0);
+  const GyroRecording phyphox = parse_gyro_csv(
+      bom +
+          "\"Time (s)\",\"Gyroscope x (rad/s)\",\"Gyroscope y (rad/s)\",\"Gyroscope z (rad/s)\"\n" +
+          rows(10),
+      "r.csv", "r");
+  EXPECT_EQ(phyphox.t.size(), 10u);
+  EXPECT_EQ(parse_time_csv(bom + "event,experiment time\nPAUSE,1.5\n", "time.csv"),
+            std::vector<double>{1.5});
+}
+
+/// A zip at `path` of `files` (name, bytes), deflated; with `declared` set, each entry stored
+/// raw and declared to inflate to that many bytes (a zip bomb's claim).
+void write_zip(const std::filesystem::path& path,
+               const std::vector<std::pair<std::string, std::string>>& files,
+               std::optional<std::uint64_t> declared = std::nullopt) {
+  zipFile zip = zipOpen64(path.string().c_str(), APPEND_STATUS_CREATE);
+  ASSERT_NE(zip, nullptr);
+  for (const auto& [name, bytes] : files) {
+    ASSERT_EQ(zipOpenNewFileInZip2_64(zip, name.c_str(), nullptr, nullptr, 0, nullptr, 0, nullptr,
+                                      declared ? 0 : Z_DEFLATED,
+                                      declared ? 0 : Z_DEFAULT_COMPRESSION, declared ? 1 : 0, 1),
+              ZIP_OK);
+    ASSERT_EQ(zipWriteInFileInZip(zip, bytes.data(), static_cast<unsigned>(bytes.size())), ZIP_OK);
+    if (declared)
+      zipCloseFileInZipRaw64(zip, *declared, 0);
+    else
+      zipCloseFileInZip(zip);
+  }
+  zipClose(zip, nullptr);
+}
+
+std::string read_error(const std::filesystem::path& path) {
+  try {
+    read_recording(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Recording, AZipIsOneExportNotEmptyAndNoBomb) {
+  const auto dir = bookspin::test::fresh_dir("fit/bad-zips");
+  const std::string raw = test::raw_data_csv(small_recording(), test::Dialect::comma);
+  write_zip(dir / "two.zip", {{"morning/Raw Data.csv", raw}, {"evening/Raw Data.csv", raw}});
+  EXPECT_EQ(read_error(dir / "two.zip"),
+            (dir / "two.zip").string() +
+                ": holds 2 exports (\"morning/Raw Data.csv\", \"evening/Raw Data.csv\"): which "
+                "one? Unzip it and give that export's folder");
+  write_zip(dir / "empty.zip", {});
+  EXPECT_EQ(read_error(dir / "empty.zip"),
+            (dir / "empty.zip").string() + ": an empty zip (no file in it)");
+  std::ofstream(dir / "nothing.zip").flush();
+  EXPECT_EQ(read_error(dir / "nothing.zip"),
+            (dir / "nothing.zip").string() + ": an empty file, not a zip file");
+  // An entry that claims 4 GiB is refused on its claim, before a byte is inflated.
+  write_zip(dir / "bomb.zip", {{"toss/Raw Data.csv", "t,wx,wy,wz\n"}}, std::uint64_t{4} << 30);
+  EXPECT_EQ(read_error(dir / "bomb.zip"),
+            (dir / "bomb.zip").string() +
+                ": toss/Raw Data.csv: inflates to more than 256 MiB, more than a recording (a "
+                "damaged zip, or not phyphox's)");
 }
 
 }  // namespace

@@ -94,7 +94,36 @@ TEST(MotionCsv, EachBadFileIsOneLineNamingItsLineAndColumn) {
             "run.csv:3: t: t = 1e300 is outside the scenario's 0 … 1");
   EXPECT_EQ(error_of(head + "-0.1,1,0,0,0,1,2,3\n"),
             "run.csv:2: t: t = -0.1 is outside the scenario's 0 … 1");
-  EXPECT_EQ(error_of(head + row0 + "0.1,0,0,0,0,1,2,3\n"), "run.csv:3: qw: q is zero");
+  EXPECT_EQ(error_of(head + row0 + "0.1,0,0,0,0,1,2,3\n"),
+            "run.csv:3: qw: q is zero (qw = qx = qy = qz = 0): no orientation");
+  EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1e200,2,3\n"),
+            "run.csv:3: wx: \"1e200\" is beyond ±1e100 rad per time unit (its energy would "
+            "overflow)");
+  EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,2,-1e101\n"),
+            "run.csv:3: wz: \"-1e101\" is beyond ±1e100 rad per time unit (its energy would "
+            "overflow)");
+}
+
+TEST(MotionCsv, AQuaternionOfAnyNonZeroNormIsRead) {
+  // q = (1, 2, 2, 4)/5 scaled by 1e300, 1e160 and 1e-300 (its squared norm over- or
+  // underflows): the same unit quaternion each time.
+  for (const char* scale : {"e300", "e160", "e-300"}) {
+    const std::string s(scale);
+    const MotionFile m = parse_motion_csv(
+        "t,qw,qx,qy,qz,wx,wy,wz\n0,1" + s + ",2" + s + ",2" + s + ",4" + s + ",1,2,3\n", "run.csv",
+        0.1, 10);
+    EXPECT_NEAR(m.rows[0].q.w(), 0.2, 1e-12) << scale;
+    EXPECT_NEAR(m.rows[0].q.x(), 0.4, 1e-12) << scale;
+    EXPECT_NEAR(m.rows[0].q.y(), 0.4, 1e-12) << scale;
+    EXPECT_NEAR(m.rows[0].q.z(), 0.8, 1e-12) << scale;
+  }
+}
+
+TEST(MotionCsv, AByteOrderMarkBeforeTheHeaderIsRead) {
+  const MotionFile m =
+      parse_motion_csv("\xEF\xBB\xBFt,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n", "run.csv", 0.1, 10);
+  ASSERT_EQ(m.rows.size(), 1u);
+  EXPECT_EQ(m.rows[0].omega_body, Eigen::Vector3d(1, 2, 3));
 }
 
 TEST(MotionCsv, AFileThatIsNotThereIsAnInputError) {

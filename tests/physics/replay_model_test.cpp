@@ -88,6 +88,23 @@ TEST(OmegaReplay, OneStepOfALinearOmegaIsFourthOrder) {
   EXPECT_GT(errors[1] / errors[2], 24.0) << errors[1] << ", " << errors[2];
 }
 
+TEST(OmegaReplay, BetweenTwoSamplesTheStepEndsAtOmegaOfThatTime) {
+  // Between samples i and i + 1 the replay turns R_i by the Magnus step from ω_i to ω(t) (ω
+  // linear between them), not to ω_{i+1}: checked at 40 % and 80 % of the interval against RK4
+  // of the linear ω over [t_i, t], to the Magnus step's own O(h⁵).
+  const Eigen::Vector3d w0(2.0, 25.0, 1.0), slope(-1667.0, -417.0, 417.0);  // rad/s, rad/s²
+  const double h = 0.006;
+  const OmegaReplay replay({0.0, h, 2 * h}, {w0, w0 + slope * h, w0 + 2.0 * slope * h});
+  for (double t : {0.4 * h, 0.8 * h, 1.4 * h}) {
+    const double start = t > h ? h : 0.0;
+    const Eigen::Vector3d w_start = w0 + slope * start, w_t = w0 + slope * t;
+    const Eigen::Matrix3d R =
+        replay.orientation(start) * rk4_linear_omega(w_start, w_t, t - start, 20000);
+    const double commutator = (t - start) * (t - start) / 12.0 * w_start.cross(w_t).norm();
+    EXPECT_LT(angle_between(replay.orientation(t), R), 0.02 * commutator + 1e-13) << "t = " << t;
+  }
+}
+
 TEST(OmegaReplay, ASampledExactTossMatchesTheExactOrientation) {
   // A phone's moments (7 × 15 × 0.8 cm slab: 0.1812 : 0.8235 : 1) thrown about its intermediate
   // axis (principal y) at 18 rad/s: two flips in 1.3 s. ω sampled as a gyroscope does, every

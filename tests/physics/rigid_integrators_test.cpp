@@ -15,6 +15,24 @@ using Eigen::Vector3d;
 using physics::Integrator;
 using physics::ModelKind;
 
+// The rescaled Euler step (docs/physics.md §10.7): Π' along Π − dt ω × Π (ω = I⁻¹Π) with
+// |Π'| = |Π|, and the body turned about the updated ω' = I⁻¹Π' by |ω'| dt, as Jolt turns it
+// (not about the ω before the step, which differs by O(dt) in direction).
+TEST(RescaledEuler, TurnsTheBodyWithTheUpdatedMomentum) {
+  const Vector3d inverse = original_book().principal_moments().cwiseInverse();
+  const Vector3d Pi(0.66, 0.05, -0.03);
+  for (double dt : {1.0 / 60.0, 0.5}) {
+    const physics::RescaledEulerStep step = physics::rescaled_euler_step(Pi, inverse, dt);
+    const Vector3d explicit_euler = Pi - dt * inverse.cwiseProduct(Pi).cross(Pi);
+    EXPECT_NEAR(step.Pi_body.norm(), Pi.norm(), 1e-14) << "dt " << dt;
+    EXPECT_LT(step.Pi_body.normalized().cross(explicit_euler.normalized()).norm(), 1e-14);
+    const Vector3d omega_after = inverse.cwiseProduct(step.Pi_body);
+    const Eigen::AngleAxisd turn(step.increment);
+    EXPECT_NEAR(turn.angle(), omega_after.norm() * dt, 1e-13) << "dt " << dt;
+    EXPECT_LT((turn.axis() - omega_after.normalized()).norm(), 1e-12) << "dt " << dt;
+  }
+}
+
 // A converged step solves Π_mid = Π_n + (dt/2) Π_mid × I⁻¹Π_mid: recover ω_mid from the
 // Cayley quaternion (1, dt ω_mid/2)/|·| and check the residual.
 TEST(ImplicitMidpoint, ConvergedIncrementSolvesTheMidpointEquation) {

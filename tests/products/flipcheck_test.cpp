@@ -224,5 +224,74 @@ TEST(Flipcheck, TheLeagueGivesEachFileToItsScenarioARowPerMotion) {
   EXPECT_FALSE(fs::exists(dir / "refused"));
 }
 
+/// The InputError `job` raises, or "".
+std::string league_error(const FlipcheckLeagueJob& job) {
+  try {
+    make_flipcheck_league(job);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// What a row or a column cannot tell apart is refused before anything is written: two motion
+// files of one name (in two folders), two scenarios of one name, one scenario given twice.
+TEST(Flipcheck, TheLeagueRefusesTwoRowsOrColumnsOfOneName) {
+  test::ScratchDir dir;
+  const scene::Scene s = box();
+  make_flipcheck_export({s, dir / "a", {}, {}});
+  fs::create_directories(dir / "b");
+  fs::copy_file(dir / "a" / "mujoco-test-box-exact.csv", dir / "b" / "mujoco-test-box-exact.csv");
+  FlipcheckLeagueJob job;
+  job.scenes = {s};
+  job.motions = {dir / "a" / "mujoco-test-box-exact.csv", dir / "b" / "mujoco-test-box-exact.csv"};
+  job.out_dir = dir / "out";
+  EXPECT_EQ(league_error(job), (dir / "b" / "mujoco-test-box-exact.csv").string() +
+                                   ": flipcheck league: its motion \"exact\" is also " +
+                                   (dir / "a" / "mujoco-test-box-exact.csv").string() +
+                                   "'s in scenario mujoco-test-box: rename one (a row per motion)");
+  job.motions.pop_back();
+  job.scenes = {s, s};
+  EXPECT_EQ(league_error(job),
+            "flipcheck league: two scenarios named mujoco-test-box (one given twice, or two files "
+            "of one scene.name): give each once");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  // A bad motion is refused before the cache is asked: nothing written, one error.
+  std::ofstream(dir / "mujoco-test-box-bad.csv") << "t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1e200,2,3\n";
+  job.scenes = {s};
+  job.motions = {dir / "mujoco-test-box-bad.csv"};
+  EXPECT_NE(league_error(job).find("mujoco-test-box-bad.csv:2: wx: \"1e200\" is beyond"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// A motion's name is the page's text, never its markup; a line break in it is one row of the
+// CSV, counted once (made now and up to date alike).
+TEST(Flipcheck, TheLeaguePageEscapesMotionNamesAndCountsEachOnce) {
+  test::ScratchDir dir;
+  const scene::Scene s = box();
+  make_flipcheck_export({s, dir / "exact", {}, {}});
+  const fs::path exact = dir / "exact" / "mujoco-test-box-exact.csv";
+  const fs::path script = dir / "mujoco-test-box-<script>alert(1)<script>.csv";
+  const fs::path broken = dir / "mujoco-test-box-two\nlines.csv";
+  fs::copy_file(exact, script);
+  fs::copy_file(exact, broken);
+  FlipcheckLeagueJob job;
+  job.scenes = {s};
+  job.motions = {script, broken, exact};
+  job.out_dir = dir / "out";
+  const FlipcheckLeagueResult made = make_flipcheck_league(job);
+  EXPECT_EQ(made.motions, 3);
+  EXPECT_EQ(made.passed, 3);
+  const std::string html = test::read_file(flipcheck_league_layout(job.out_dir).html);
+  EXPECT_EQ(html.find("<script>"), std::string::npos);
+  EXPECT_NE(html.find("<tr><th>&lt;script&gt;alert(1)&lt;script&gt;</th>"), std::string::npos)
+      << html;
+  const FlipcheckLeagueResult kept = make_flipcheck_league(job);
+  EXPECT_EQ(kept.outcome, cache::Outcome::up_to_date);
+  EXPECT_EQ(kept.motions, 3);
+  EXPECT_EQ(kept.passed, 3);
+}
+
 }  // namespace
 }  // namespace bookspin::products

@@ -3,6 +3,7 @@
 #include "scene/measured_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 
@@ -27,6 +28,10 @@ TEST(MeasuredFile, ReadsTheSamples) {
   ASSERT_EQ(out.omega.cols(), 2);
   EXPECT_EQ(out.omega.col(0), Eigen::Vector3d(1, 2, 3));
   EXPECT_EQ(out.omega.col(1), Eigen::Vector3d(-0.4, 5, 6.5));
+  // A spreadsheet's UTF-8 byte-order mark before the header is read past.
+  MeasuredOmega marked;
+  ASSERT_EQ(parse_measured_omega("\xEF\xBB\xBFt,wx,wy,wz\n0,1,2,3\n", marked), "");
+  EXPECT_EQ(marked.omega.col(0), Eigen::Vector3d(1, 2, 3));
 }
 
 TEST(MeasuredFile, RefusesWhatIsNotASample) {
@@ -63,9 +68,17 @@ TEST(MeasuredFile, TheSceneReadsItBesideItself) {
     }
     return std::string();
   };
-  EXPECT_EQ(error("none.csv"), (dir.path() / "s.toml").string() +
-                                   ":2: measured.omega: measured ω file not found: " +
-                                   (dir.path() / "none.csv").string());
+  const std::string where = (dir.path() / "s.toml").string() + ":2: measured.omega: ";
+  EXPECT_EQ(error("none.csv"),
+            where + (dir.path() / "none.csv").string() + ": no such file (the measured ω file)");
+  // A folder, a FIFO, a device: said as what they are, never "not found" (nor read forever).
+  EXPECT_EQ(error(dir.path().string()),
+            where + dir.path().string() + ": is a directory (the measured ω file)");
+  ASSERT_EQ(mkfifo((dir.path() / "fifo").c_str(), 0600), 0);
+  EXPECT_EQ(error("fifo"), where + (dir.path() / "fifo").string() +
+                               ": is a FIFO, not a regular file (the measured ω file)");
+  EXPECT_EQ(error("/dev/zero"),
+            where + "/dev/zero: is a device, not a regular file (the measured ω file)");
   EXPECT_EQ(error("bad.csv"), (dir.path() / "s.toml").string() +
                                   ":2: measured.omega: " + (dir.path() / "bad.csv").string() +
                                   ": row 3: expected 4 cells (t,wx,wy,wz)");
