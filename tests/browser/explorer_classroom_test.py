@@ -50,16 +50,23 @@ def font_px(driver, selector):
 
 
 def check_exact_scene(driver, page):
+    # A watcher from the document's start: each animation frame it asks waiting() and keeps the
+    # time (since navigation) of the first frame it reads false.
+    watcher = driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": """
+      (() => {
+        const look = () => {
+          if (window.explorer && window.explorer.ready && !window.explorer.waiting()) window.notWaitingAt = performance.now();
+          else requestAnimationFrame(look);
+        };
+        requestAnimationFrame(look);
+      })();"""})
     driver.get(page + "?scene=exact-unstable-x")
     wait_for(driver, "return !!(window.explorer && window.explorer.ready && window.explorer.firstFrameAt())",
              bool, timeout=60)
     first = driver.execute_script("return window.explorer.firstFrameAt()")
-    # The time since navigation when waiting() turned false: it reads true only until the first
-    # frame is drawn (hooks.js), so that frame's time once it reads false.
-    not_waiting = driver.execute_async_script("""
-      const done = arguments[arguments.length - 1];
-      const poll = () => window.explorer.waiting() ? setTimeout(poll, 5) : done(window.explorer.firstFrameAt());
-      poll();""")
+    wait_for(driver, "return window.notWaitingAt !== undefined", bool, timeout=120)
+    not_waiting = driver.execute_script("return window.notWaitingAt")
+    driver.execute_cdp_cmd("Page.removeScriptToEvaluateOnNewDocument", {"identifier": watcher["identifier"]})
     text = notice(driver)
     print(f"exact-unstable-x: first frame {first:.0f} ms after navigation; waiting() false at "
           f"{not_waiting:.0f} ms; notice {text!r}")
