@@ -206,27 +206,13 @@ class Session {
   /// Resets to identity orientation at t = 0: body-frame ω0 (rad per time unit) and the
   /// seeded jiggle of L (docs/physics.md §5).
   void reset(double wx, double wy, double wz, double jiggle, double seed) {
-    start(wx, wy, wz, jiggle, seed);
-    if (auto* exact = exact_model(); exact && !exact->has_orientation())
-      exact->set_precession_table(
-          ExactRotation(body_.moments, exact->rotation().omega0_body()).precession_table());
-  }
-
-  /// reset(), except that the exact model's precession table, most of its start's time (seconds
-  /// near the separatrix: long double is emulated in software in WebAssembly), is left to
-  /// setPrecessionTable(), built elsewhere by precessionTable() (the page: a Web Worker). Until
-  /// then the exact model stays at t = 0 (R = I) and needsPrecessionTable() is true.
-  void start(double wx, double wy, double wz, double jiggle, double seed) {
     initial_ = InitialState{};
     initial_.omega0_body = {wx, wy, wz};
     initial_.jiggle = jiggle;
     initial_.seed = static_cast<std::uint64_t>(seed);
-    if (auto* exact = exact_model())
-      exact->reset(initial_, ExactParts::omega_only);
-    else
-      sim().reset(initial_);
+    sim().reset(initial_);
     // The motion this start would have without any method's error, for the flips' exact values
-    // beside the method's (omega only: no table, milliseconds).
+    // beside the method's (omega only: its orientation is not needed).
     exact_.emplace(body_.moments, start_omega_body(), ExactParts::omega_only);
     exact_first_ = bookspin::analysis::exact_flip_amplitude(*exact_) > FlipDetector::kMargin
                        ? bookspin::analysis::exact_first_flip(*exact_, intermediate_axis())
@@ -235,24 +221,8 @@ class Session {
     flips_ = FlipDetector();
     flips_.observe(0.0, bookspin::analysis::flip_signal(sim().diagnostics(), body_.moments));
   }
-  /// Whether the exact model waits for setPrecessionTable().
-  bool needs_precession_table() const {
-    const auto* exact = exact_model();
-    return exact && !exact->has_orientation();
-  }
-  /// The table of precessionTable() for this start: {degree, width, start, coeffs}.
-  void set_precession_table(const val& table) {
-    auto* exact = exact_model();
-    if (!exact) throw std::logic_error("Session: setPrecessionTable() is for the exact model");
-    PrecessionTable t;
-    t.degree = table["degree"].as<int>();
-    t.width = table["width"].as<double>();
-    t.start = emscripten::vecFromJSArray<double>(table["start"]);
-    t.coeffs = emscripten::vecFromJSArray<double>(table["coeffs"]);
-    exact->set_precession_table(std::move(t));
-  }
   /// The start's body-frame ω0' = I⁻¹·L0, L0 with the jiggle (docs/physics.md §5): what every
-  /// model starts from, and what precessionTable() needs.
+  /// model starts from.
   val start_omega() const { return vec3(start_omega_body()); }
 
   /// Advances `n` steps of `dt`; stops early (returns false) when the state stops being finite.
@@ -449,20 +419,6 @@ val polhodes(double ix, double iy, double iz, int levels, double max_step) {
   return out;
 }
 
-/// The exact motion's precession table (docs/physics.md §8) for principal moments (mx, my, mz)
-/// and body-frame start ω0' (Session.startOmega): {degree, width, start, coeffs}, for
-/// Session.setPrecessionTable. Seconds near the separatrix: the page builds it in a Web Worker.
-val precession_table(double mx, double my, double mz, double wx, double wy, double wz) {
-  const ExactRotation exact({mx, my, mz}, {wx, wy, wz});
-  const PrecessionTable& t = exact.precession_table();
-  val out = val::object();
-  out.set("degree", t.degree);
-  out.set("width", t.width);
-  out.set("start", f64(t.start.data(), t.start.size()));
-  out.set("coeffs", f64(t.coeffs.data(), t.coeffs.size()));
-  return out;
-}
-
 /// A JavaScript array of strings.
 val strings(const std::vector<std::string_view>& names) {
   val out = val::array();
@@ -547,9 +503,6 @@ EMSCRIPTEN_BINDINGS(bookspin_physics) {
       .function("configureEngine", &Session::configure_engine)
       .function("observe", &Session::observe)
       .function("reset", &Session::reset)
-      .function("start", &Session::start)
-      .function("needsPrecessionTable", &Session::needs_precession_table)
-      .function("setPrecessionTable", &Session::set_precession_table)
       .function("startOmega", &Session::start_omega)
       .function("exactFlips", &Session::exact_flips)
       .function("step", &Session::step)
@@ -574,7 +527,6 @@ EMSCRIPTEN_BINDINGS(bookspin_physics) {
       .function("surfaceTriangles", &Session::surface_triangles)
       .function("surfaceColours", &Session::surface_colours);
   emscripten::function("polhodes", &polhodes);
-  emscripten::function("precessionTable", &precession_table);
   emscripten::function("physicsNames", &physics_names);
   emscripten::function("physicsDefaults", &physics_defaults);
   emscripten::function("errorMessage", &error_message);

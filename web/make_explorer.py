@@ -20,8 +20,7 @@ def main(index, wasm_js, bundle_js, out):
     html = Path(index).read_text()
     if "<!--BOOKSPIN_DATA-->" not in html:
         sys.exit(f"make_explorer: {index}: marker <!--BOOKSPIN_DATA--> missing")
-    # The physics' script has an id: the page starts a Web Worker from its text (web/src/tables.js).
-    for marker, text, element_id in (("<!--BOOKSPIN_WASM-->", Path(wasm_js).read_text(), "bookspin-physics"),
+    for marker, text, element_id in (("<!--BOOKSPIN_WASM-->", Path(wasm_js).read_text(), None),
                                      ("<!--BOOKSPIN_APP-->", Path(bundle_js).read_text(), None)):
         if marker not in html:
             sys.exit(f"make_explorer: {index}: marker {marker} missing")

@@ -14,23 +14,11 @@ ExactModel::ExactModel(const Body& body, Drag drag)
 }
 
 void ExactModel::reset(const InitialState& initial) {
-  reset(initial, ExactParts::omega_and_orientation);
-}
-
-void ExactModel::reset(const InitialState& initial, ExactParts parts) {
   const Eigen::Vector3d L0 = initial_angular_momentum(body_.moments, initial);
   const Eigen::Vector3d& moments = body_.moments;
-  rotation_.emplace(moments, L0.cwiseQuotient(moments), parts);
+  rotation_.emplace(moments, L0.cwiseQuotient(moments));
   t_ = t_base_ = dt_ = 0.0;
   steps_ = 0;
-  has_orientation_ = parts == ExactParts::omega_and_orientation;
-  R_ = has_orientation_ ? rotation_->orientation(t_) : Eigen::Matrix3d::Identity();
-}
-
-void ExactModel::set_precession_table(PrecessionTable table) {
-  const Eigen::Vector3d omega0 = rotation_->omega0_body();  // emplace destroys the old first
-  rotation_.emplace(body_.moments, omega0, std::move(table));
-  has_orientation_ = true;
   R_ = rotation_->orientation(stretched_time(drag_, t_));
 }
 
@@ -40,8 +28,6 @@ void ExactModel::set_precession_table(PrecessionTable table) {
 void ExactModel::step(double dt) { advance(dt, 1); }
 
 void ExactModel::advance(double dt, long n) {
-  if (!has_orientation_)
-    throw std::logic_error("ExactModel: no precession table yet (set_precession_table)");
   if (dt != dt_) {
     t_base_ = t_;
     dt_ = dt;

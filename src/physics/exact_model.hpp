@@ -25,17 +25,6 @@ class ExactModel final : public Simulator {
   /// ExactModel(book_body(book)).
   explicit ExactModel(const Book& book) : ExactModel(book_body(book)) {}
   void reset(const InitialState& initial) override;
-  /// reset(initial) with the rotation built for `parts`: ExactParts::omega_only leaves the
-  /// precession table to set_precession_table() (built elsewhere, e.g. off a page's main
-  /// thread); until then the model stays at t = 0, where R = I needs no table, and step()
-  /// throws std::logic_error. The start ω0' = I⁻¹·L0 is rotation().omega0_body().
-  void reset(const InitialState& initial, ExactParts parts);
-  /// The precession table of an ExactRotation of the same moments and start
-  /// (ExactRotation::precession_table()); R(t) from then on. Throws std::invalid_argument for a
-  /// table of the wrong shape.
-  void set_precession_table(PrecessionTable table);
-  /// Whether R(t) can be evaluated (not waiting for set_precession_table()).
-  bool has_orientation() const { return has_orientation_; }
   void step(double dt) override;
   /// `n` steps of `dt` at once: the same t as n calls of step(dt) (t_base + steps·dt), the state
   /// evaluated once, at that t (the motion is a closed form in t, docs/physics.md §8).
@@ -59,7 +48,6 @@ class ExactModel final : public Simulator {
   double t_base_ = 0.0;  ///< t when the current dt was first used
   double dt_ = 0.0;      ///< the current step
   long steps_ = 0;       ///< steps of dt_ since t_base_
-  bool has_orientation_ = true;
 };
 
 /// The exact model for `body` (make_simulator() returns it for ModelKind::exact).

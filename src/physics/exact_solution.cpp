@@ -1,8 +1,8 @@
 #include "physics/exact_solution.hpp"
 
 #include <algorithm>
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_rj.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
 #include <limits>
@@ -19,13 +19,6 @@ namespace {
 using Real = long double;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr int kChebyshevDegree = 20;
-constexpr int kFirstPanels = 8;
-constexpr int kMaxPanels = 4096;
-constexpr Real kPanelWidth = 0.3L;
-// A panel is accepted when its last Chebyshev coefficients are this small relative to the
-// integrand: the interpolant, and so ψ, is then accurate to about that relative level.
-constexpr Real kTailTolerance = 1e-16L;
 
 /// Q, a signed permutation with det +1, such that Q·v lists v's components in the order of
 /// ascending moments. A proper rotation leaves Euler's equations I ω̇ = (Iω)×ω unchanged,
@@ -49,120 +42,6 @@ Eigen::Matrix3d rotation_z(double psi) {
   return r;
 }
 
-/// The n + 1 Chebyshev points of the first kind on [−1, 1] and the cosines of the discrete
-/// cosine transform that takes values there to Chebyshev coefficients, the same for every
-/// panel: computed once per table (in long double each is a software cosine in WebAssembly).
-struct ChebyshevBasis {
-  explicit ChebyshevBasis(int n) : n(n), x(n + 1), cosines((n + 1) * (n + 1)) {
-    const int points = n + 1;
-    for (int m = 0; m < points; ++m)
-      x[m] = std::cos(std::numbers::pi_v<Real> * (m + 0.5L) / points);
-    for (int j = 0; j < points; ++j)
-      for (int m = 0; m < points; ++m)
-        cosines[j * points + m] = std::cos(std::numbers::pi_v<Real> * j * (m + 0.5L) / points);
-  }
-  int n;
-  std::vector<Real> x, cosines;
-};
-
-/// Chebyshev coefficients c_0..c_n of the degree-n interpolant of f on [a, a + h] at the
-/// n + 1 Chebyshev points of the first kind (f ≈ Σ c_j T_j(x), x ∈ [−1, 1]).
-template <class F>
-std::vector<Real> chebyshev_fit(F& f, Real a, Real h, const ChebyshevBasis& basis) {
-  const int points = basis.n + 1;
-  std::vector<Real> values(points);
-  for (int m = 0; m < points; ++m) values[m] = f(a + 0.5L * (basis.x[m] + 1.0L) * h);
-  std::vector<Real> c(points, 0.0L);
-  for (int j = 0; j < points; ++j) {
-    for (int m = 0; m < points; ++m) c[j] += values[m] * basis.cosines[j * points + m];
-    c[j] *= 2.0L / points;
-  }
-  c[0] *= 0.5L;
-  return c;
-}
-
-/// Coefficients (n + 2 of them) of ∫_{a}^{a + (x+1)h/2} f, given f's Chebyshev coefficients
-/// c_0..c_n: ∫T_0 = T_1, ∫T_j = T_{j+1}/(2(j+1)) − T_{j−1}/(2(j−1)); the constant term makes
-/// the antiderivative vanish at x = −1.
-std::vector<Real> chebyshev_antiderivative(const std::vector<Real>& c, Real h) {
-  const int n = static_cast<int>(c.size()) - 1;
-  auto coeff = [&](int j) { return j <= n ? c[j] : 0.0L; };
-  std::vector<Real> b(n + 2, 0.0L);
-  b[1] = coeff(0) - 0.5L * coeff(2);
-  for (int j = 2; j <= n + 1; ++j) b[j] = (coeff(j - 1) - coeff(j + 1)) / (2.0L * j);
-  Real at_minus_one = 0.0L;
-  for (int j = 1; j <= n + 1; ++j) at_minus_one += (j % 2 ? -b[j] : b[j]);
-  b[0] = -at_minus_one;
-  for (Real& v : b) v *= 0.5L * h;
-  return b;
-}
-
-/// Σ a_j T_j(x) by Clenshaw's recurrence.
-Real chebyshev_sum(const double* a, int count, Real x) {
-  Real b1 = 0.0L, b2 = 0.0L;
-  for (int j = count - 1; j >= 1; --j) {
-    const Real b0 = a[j] + 2.0L * x * b1 - b2;
-    b2 = b1;
-    b1 = b0;
-  }
-  return a[0] + x * b1 - b2;
-}
-
-/// Tabulates ∫_0^w f for w ∈ [0, length] with `panels` equal panels; false if some panel's
-/// Chebyshev tail is above tolerance.
-template <class F>
-bool fill_table(F& f, Real length, int panels, PrecessionTable& table) {
-  table.degree = kChebyshevDegree;
-  table.width = static_cast<double>(length / panels);
-  table.start.assign(1, 0.0);
-  table.coeffs.clear();
-  const Real h = length / panels;
-  bool converged = true;
-  Real total = 0.0L;
-  const ChebyshevBasis basis(kChebyshevDegree);
-  for (int p = 0; p < panels; ++p) {
-    const std::vector<Real> c = chebyshev_fit(f, p * h, h, basis);
-    Real scale = 0.0L, tail = 0.0L;
-    for (int j = 0; j <= kChebyshevDegree; ++j) scale = std::max(scale, std::abs(c[j]));
-    for (int j = kChebyshevDegree - 2; j <= kChebyshevDegree; ++j)
-      tail = std::max(tail, std::abs(c[j]));
-    converged = converged && tail <= kTailTolerance * scale;
-    const std::vector<Real> b = chebyshev_antiderivative(c, h);
-    Real panel_integral = 0.0L;  // the antiderivative at x = 1, where every T_j is 1
-    for (Real v : b) {
-      table.coeffs.push_back(static_cast<double>(v));
-      panel_integral += v;
-    }
-    total += panel_integral;
-    table.start.push_back(static_cast<double>(total));
-  }
-  return converged;
-}
-
-/// The table of ∫_0^w f on [0, length], halving the panels until every panel converges.
-template <class F>
-PrecessionTable build_table(F&& f, Real length) {
-  PrecessionTable table;
-  // First guess: panels at most kPanelWidth wide in u (the integrand's singularities lie
-  // about that far from the real axis for near-separatrix motion); refined below if needed.
-  int first = kFirstPanels;
-  while (first < kMaxPanels && length / first > kPanelWidth) first *= 2;
-  for (int panels = first; panels <= kMaxPanels; panels *= 2)
-    if (fill_table(f, length, panels, table)) break;
-  return table;
-}
-
-/// ∫_0^w of the tabulated function, w ∈ [0, panels·width].
-Real table_integral(const PrecessionTable& table, Real w) {
-  const int count = table.degree + 2;
-  const Real width = table.width;
-  // fmax/fmin also send a NaN (from a non-finite t) to a valid panel before the int cast.
-  const Real last = table.panels() - 1;
-  const int p = static_cast<int>(std::fmin(std::fmax(std::floor(w / width), 0.0L), last));
-  const Real x = std::clamp(2.0L * (w - p * width) / width - 1.0L, -1.0L, 1.0L);
-  return table.start[p] + chebyshev_sum(table.coeffs.data() + p * count, count, x);
-}
-
 }  // namespace
 
 ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
@@ -181,29 +60,8 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   classify(w);
   if (case_ == ExactCase::steady) return;
   set_phase(w);
-  if (case_ != ExactCase::separatrix && parts_ == ExactParts::omega_and_orientation) {
-    table_ = build_table([this](Real u) { return precession_rate_u(u); }, 2.0L * K_);
-    psi_half_ = table_.start.back();
-    psi_u0_ = precession_integral(u0_);
-  }
+  if (parts_ == ExactParts::omega_and_orientation) set_precession();
   anchor_ = (momentum_frame(I_.cwiseProduct(w)) * to_sorted_).transpose();
-}
-
-ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
-                             PrecessionTable table)
-    : ExactRotation(moments, omega0_body, ExactParts::omega_only) {
-  parts_ = ExactParts::omega_and_orientation;
-  const bool needed = case_ != ExactCase::steady && case_ != ExactCase::separatrix;
-  const bool shaped = table.degree >= 0 && table.panels() >= 1 && table.width > 0.0 &&
-                      table.coeffs.size() == static_cast<std::size_t>(table.panels()) *
-                                                 static_cast<std::size_t>(table.degree + 2);
-  if (needed != shaped)
-    throw std::invalid_argument(needed ? "ExactRotation: the precession table has the wrong shape"
-                                       : "ExactRotation: this motion has no precession table");
-  if (!needed) return;
-  table_ = std::move(table);
-  psi_half_ = table_.start.back();
-  psi_u0_ = precession_integral(u0_);
 }
 
 void ExactRotation::classify(const Eigen::Vector3d& w) {
@@ -341,39 +199,89 @@ Eigen::Vector3d ExactRotation::angular_momentum_body(double t) const {
   return moments_.cwiseProduct(omega_body(t));
 }
 
-// dψ/du = ψ̇/λ with ψ̇ = |L| Σ_{i≠r} I_i ω_i² / Σ_{i≠r} I_i² ω_i² (r = dn axis). The two
-// other axes carry cn and sn, so the rate depends on sn² only and has period 2K in u.
-long double ExactRotation::precession_rate_u(long double u) const {
-  const Jacobi j = jacobi(u);
-  const Real Ic = I_[cn_axis_], Is = I_[1];
-  const Real wc2 = amplitude_[cn_axis_] * amplitude_[cn_axis_] * j.cn * j.cn;
-  const Real ws2 = amplitude_[1] * amplitude_[1] * j.sn * j.sn;
-  return L_norm_ * (Ic * wc2 + Is * ws2) / ((Ic * Ic * wc2 + Is * Is * ws2) * lambda_);
+// The precession angle in closed form (docs/physics.md §8). With c the cn axis, s = 2 the sn
+// axis and r the dn axis, ψ̇ = |L| (2E − I_r ω_r²) / (|L|² − I_r² ω_r²) is a ratio of two
+// linear functions of sn² u, equal to |L|/I_c at sn = 0 and |L|/I_s at sn² = 1, with its pole at
+// sn² = 1/n:
+//   ψ̇ = |L|/I_c + |L| (1/I_s − 1/I_c) (1 − n) sn²/(1 − n sn²),
+//   n = −(I_r a_r k / (I_c a_c))² ≤ 0,  1 − n = (I_s a_s / (I_c a_c))²  (a: amplitudes),
+// so ψ(t) = |L| t / I_c + g (S(u(t)) − S(u0)), g = |L| (1/I_s − 1/I_c)(1 − n)/λ, where
+// S(u) = ∫_0^u sn²/(1 − n sn²) du = (Π(n; am u | k) − u)/n is given by Carlson's R_J.
+void ExactRotation::set_precession() {
+  if (case_ == ExactCase::steady) return;
+  const int c = cn_axis_, r = dn_axis_;
+  const Real Ic = I_[c], Is = I_[1], Ir = I_[r];
+  const Real ratio_r = Ir * amplitude_[r] * k_ / (Ic * amplitude_[c]);
+  const Real ratio_s = Is * amplitude_[1] / (Ic * amplitude_[c]);
+  char_n_ = -ratio_r * ratio_r;
+  const Real one_minus_n = ratio_s * ratio_s;
+  const Real L = L_norm_;
+  psi_rate_ = L / Ic;
+  psi_gain_ = L * ((Ic - Is) / (Ic * Is)) * one_minus_n / lambda_;
+  if (case_ == ExactCase::separatrix) return;  // S(u) − S(u0) at once (separatrix_S)
+  // Over one period 2K of sn²: 2 S(K) = (2/3) R_J(0, k'², 1, 1 − n).
+  psi_kc2_ = (1.0L - k_) * (1.0L + k_);
+  psi_S_half_ = 2.0L / 3.0L * boost::math::ellint_rj(0.0L, psi_kc2_, 1.0L, one_minus_n);
+  psi_S0_ = periodic_S(u0_, jacobi(u0_));
 }
 
-// ∫_0^u dψ/du, by whole periods 2K plus the table on the remainder.
-long double ExactRotation::precession_integral(long double u) const {
+// S(u) for |u| ≤ K (DLMF 19.25.14, homogeneous form: sin φ = sn u, cos φ = cn u,
+// √(1 − k² sin² φ) = dn u): S = (1/3) sn³ R_J(cn², dn², 1, 1 − n sn²); beyond, S(u + 2K) =
+// S(u) + S(2K). `j` holds sn, cn, dn at u (any u): u = m·2K + v with |v| ≤ K, and sn(v) =
+// (−1)^m sn(u), cn(v) = (−1)^m cn(u), dn unchanged. The branch is taken from the sign of cn(v),
+// not from v alone: within ~1e-10 of ±K (near the separatrix) Boost's sn and cn may already
+// be past the quarter period where v is not, and φ = am v past ±π/2 has
+// S = ±S(2K) − (1/3) sn³ R_J(…) (S(π − φ) = S(2K) − S(φ)).
+long double ExactRotation::periodic_S(long double u, const Jacobi& j) const {
   const Real period = 2.0L * K_;
-  const Real n = std::floor(u / period);
-  return n * psi_half_ + table_integral(table_, u - n * period);
+  const Real m = std::round(u / period);
+  const Real flip = std::fmod(m, 2.0L) == 0.0L ? 1.0L : -1.0L;
+  const Real sn = flip * j.sn, cn = flip * j.cn;
+  const Real cn2 = cn * cn, dn2 = psi_kc2_ + k_ * k_ * cn2, sn2 = sn * sn;
+  Real part = 0.0L;
+  if (sn != 0.0L)
+    part = sn * sn2 / 3.0L * boost::math::ellint_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2);
+  if (cn < 0.0L) part = (sn < 0.0L ? -psi_S_half_ : psi_S_half_) - part;
+  return m * psi_S_half_ + part;
+}
+
+// On the separatrix (k = 1, sn = tanh u) S is elementary: sn²/(1 − n sn²) = sinh²/(1 + a sinh²)
+// with a = 1 − n, and with τ = tanh u and m = √(−n),
+//   S(u) − S(u0) = (u − u0 − (A(u) − A(u0))/m) / a,   A(u) = atan(m τ)  (A/m → τ as m → 0),
+// u − u0 = λt given as `du` (exact where u0 is infinite: ω0 with no cn component, so ω stays on
+// axis 2 and S grows as λt/a).
+// τ rounds to ±1 once |u| > ~22, where ω is still far from axis 2's, so A is formed from
+// δ = 1 − |τ| = 2e^{−2|u|}/(1 + e^{−2|u|}): A(u) = ±(atan m − atan(m δ/(1 + m² |τ|))).
+long double ExactRotation::separatrix_S(long double u, long double u_start, long double du) const {
+  const Real m = std::sqrt(-char_n_);
+  // atan(m x)/m, x for m = 0.
+  auto atan_over_m = [m](Real x) { return m > 0.0L ? std::atan(m * x) / m : x; };
+  // atan(m δ/(1 + m² |τ|))/m at |u|: what A(u)/m falls short of atan(m)/m.
+  auto shortfall = [&](Real v) {
+    const Real e = std::exp(-2.0L * std::abs(v)), delta = 2.0L * e / (1.0L + e);
+    return atan_over_m(delta / (1.0L + m * m * (1.0L - delta)));
+  };
+  Real A_diff;  // (A(u) − A(u0))/m
+  if ((u >= 0.0L) == (u_start >= 0.0L))
+    A_diff = (u >= 0.0L ? 1.0L : -1.0L) * (shortfall(u_start) - shortfall(u));
+  else
+    A_diff = atan_over_m(std::tanh(u)) - atan_over_m(std::tanh(u_start));
+  return (du - A_diff) / (1.0L - char_n_);
 }
 
 double ExactRotation::precession_angle(double t) const {
   if (case_ == ExactCase::steady) return omega0_.norm() * t;
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  if (case_ == ExactCase::separatrix) {
-    // Not periodic: adaptive Gauss–Kronrod over [u0, u(t)] (slow, but a measure-zero case).
-    const Real u = phase(t);
-    auto rate = [this](Real v) { return precession_rate_u(v); };
-    using Quadrature = boost::math::quadrature::gauss_kronrod<Real, 31>;
-    if (!std::isfinite(u)) return std::numeric_limits<double>::quiet_NaN();
-    if (u == u0_) return 0.0;
-    const Real lo = std::min(u0_, u), hi = std::max(u0_, u);
-    const Real integral = Quadrature::integrate(rate, lo, hi, 20, 1e-15L);
-    return static_cast<double>(u >= u0_ ? integral : -integral);
-  }
-  return static_cast<double>(precession_integral(phase(t)) - psi_u0_);
+  return precession_at(t, jacobi(phase(t)));
+}
+
+long double ExactRotation::precession_at(double t, const Jacobi& j) const {
+  const Real u = phase(t);
+  const Real dS = case_ == ExactCase::separatrix
+                      ? separatrix_S(u, u0_, lambda_ * static_cast<Real>(t))
+                      : periodic_S(u, j) - psi_S0_;
+  return psi_rate_ * static_cast<Real>(t) + psi_gain_ * dS;
 }
 
 // P: rows are the momentum frame's axes in sorted body coordinates. z = L/|L|,
@@ -398,8 +306,11 @@ Eigen::Matrix3d ExactRotation::orientation(double t) const {
     if (rate == 0.0) return Eigen::Matrix3d::Identity();
     return Eigen::AngleAxisd(rate * t, omega0_ / rate).toRotationMatrix();
   }
-  const Eigen::Vector3d L_sorted = I_.cwiseProduct(sorted_omega(jacobi(phase(t))));
-  return rotation_from(L_sorted, precession_angle(t));
+  if (parts_ == ExactParts::omega_only)
+    throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
+  const Jacobi j = jacobi(phase(t));
+  const Eigen::Vector3d L_sorted = I_.cwiseProduct(sorted_omega(j));
+  return rotation_from(L_sorted, static_cast<double>(precession_at(t, j)));
 }
 
 double ExactRotation::period() const {

@@ -4,7 +4,6 @@
 // of the body about the fixed angular momentum.
 #include <Eigen/Dense>
 #include <array>
-#include <vector>
 
 namespace bookspin::physics {
 
@@ -19,8 +18,8 @@ enum class ExactCase {
 };
 
 /// What an ExactRotation is built for: ω and the orientation, or ω alone (a fit that evaluates
-/// ω(t) for thousands of trial bodies: the precession table is then not built, which is most of
-/// the constructor's time, and orientation() and precession_angle() throw std::logic_error).
+/// ω(t) for thousands of trial bodies: the precession angle's constants, two of Carlson's R_J,
+/// are then not computed, and orientation() and precession_angle() throw std::logic_error).
 enum class ExactParts { omega_and_orientation, omega_only };
 
 /// ω(t)'s closed form (docs/physics.md §8) for a motion that is neither steady nor on the
@@ -37,17 +36,6 @@ struct ExactOmegaForm {
   double K = 0.0;       ///< K(k): ω has period 4K in u
 };
 
-/// ψ(u) = ∫ (dψ/du) du tabulated as piecewise Chebyshev series over one period [0, 2K] of
-/// the integrand (built and evaluated in exact_solution.cpp). Panel p holds `degree + 2`
-/// coefficients of the antiderivative on [p·width, (p+1)·width], zero at the panel start.
-struct PrecessionTable {
-  int degree = 0;              ///< degree of the integrand's Chebyshev interpolant
-  double width = 0.0;          ///< panel width in u
-  std::vector<double> start;   ///< integral from 0 to each panel start (panels + 1 values)
-  std::vector<double> coeffs;  ///< panels × (degree + 2) antiderivative coefficients
-  int panels() const { return static_cast<int>(start.size()) - 1; }
-};
-
 /// Exact torque-free motion of a rigid body with principal moments `moments` (body x, y, z;
 /// any order and any equalities) that starts at the identity orientation with body-frame
 /// angular velocity ω0. World angular momentum L = I·ω0 and energy E = ½ ω0·I ω0 are
@@ -62,22 +50,14 @@ struct PrecessionTable {
 /// fixed by R(0) = I, and the precession angle obeys
 ///   ψ̇ = |L| Σ_{i≠r} I_i ω_i² / Σ_{i≠r} I_i² ω_i²     (= |L|(2E − L_r ω_r)/(|L|² − L_r²)),
 /// the reference axis r being the one ω circles (3 in case A, 1 in case B), so the
-/// denominator never vanishes. ψ̇ has period T/2 and is integrated once per instance into a
-/// Chebyshev table (PrecessionTable), so ψ(t) costs a few flops at any t. Celledoni, Fassò,
-/// Säfström & Zanna, SIAM J. Sci. Comput. 30 (2008) give the same motion in closed form.
+/// denominator never vanishes. ψ(t) is in closed form (Landau & Lifshitz §37): a mean rate |L|/I_c
+/// times t plus a periodic part, an incomplete elliptic integral of the third kind evaluated with
+/// Carlson's R_J (docs/physics.md §8); elementary on the separatrix.
 class ExactRotation {
  public:
   /// Throws std::invalid_argument if a moment is not finite and positive or ω0 is not finite.
   ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
                 ExactParts parts = ExactParts::omega_and_orientation);
-  /// The same motion with its precession table built elsewhere, by an ExactRotation of the same
-  /// moments and ω0 (precession_table(): another thread, another process; docs/physics.md §8):
-  /// identical ω and orientation, without the constructor's tabulation (most of its time, seconds
-  /// near the separatrix where long double is emulated in software). Throws
-  /// std::invalid_argument for a table of the wrong shape (none at all, while the motion needs
-  /// one: not steady, not the separatrix).
-  ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
-                PrecessionTable table);
 
   /// Body-frame angular velocity ω(t) (rad per time unit); ω(0) = ω0 to round-off.
   Eigen::Vector3d omega_body(double t) const;
@@ -86,10 +66,11 @@ class ExactRotation {
   /// Body-frame angular momentum I ω(t).
   Eigen::Vector3d angular_momentum_body(double t) const;
   /// R(t), 3×3 rotation taking body coordinates to world coordinates; R(0) = I and
-  /// R(t)·I·ω(t) = L (world). About 2–5 µs per call (one long-double Jacobi evaluation
-  /// dominates); on the separatrix ψ is integrated adaptively each call (~100 µs).
+  /// R(t)·I·ω(t) = L (world). A few µs per call: one long-double Jacobi evaluation and one R_J.
+  /// Throws std::logic_error for ExactParts::omega_only.
   Eigen::Matrix3d orientation(double t) const;
-  /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion.
+  /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion. Throws
+  /// std::logic_error for ExactParts::omega_only.
   double precession_angle(double t) const;
 
   /// The closed form of omega_body(). Throws std::logic_error for a steady motion or the
@@ -107,8 +88,6 @@ class ExactRotation {
   double modulus() const { return static_cast<double>(k_); }  ///< Jacobi modulus k (not m = k²)
   double lambda() const { return static_cast<double>(lambda_); }  ///< λ in u = λt + u0, rad/time
   ExactCase motion_case() const { return case_; }
-  /// The precession table (empty for ExactParts::omega_only, steady and separatrix motion).
-  const PrecessionTable& precession_table() const { return table_; }
   const Eigen::Vector3d& moments() const { return moments_; }  ///< body x, y, z
   const Eigen::Vector3d& omega0_body() const { return omega0_; }
 
@@ -122,8 +101,10 @@ class ExactRotation {
   Jacobi jacobi(long double u) const;
   long double phase(double t) const { return lambda_ * static_cast<long double>(t) + u0_; }
   Eigen::Vector3d sorted_omega(const Jacobi& j) const;
-  long double precession_rate_u(long double u) const;
-  long double precession_integral(long double u) const;
+  void set_precession();
+  long double periodic_S(long double u, const Jacobi& j) const;
+  long double separatrix_S(long double u, long double u_start, long double du) const;
+  long double precession_at(double t, const Jacobi& j) const;
   Eigen::Matrix3d momentum_frame(const Eigen::Vector3d& L_sorted) const;
   Eigen::Matrix3d rotation_from(const Eigen::Vector3d& L_sorted, double psi) const;
 
@@ -139,9 +120,13 @@ class ExactRotation {
   std::array<long double, 3> amplitude_{};  ///< signed, per sorted axis
   long double k_ = 0.0L, kc2_ = 1.0L, lambda_ = 0.0L, u0_ = 0.0L, K_ = 0.0L;  ///< kc2_ = 1 − k²
   Eigen::Matrix3d anchor_ = Eigen::Matrix3d::Identity();  ///< W, fixed by R(0) = I
-  PrecessionTable table_;
-  long double psi_half_ = 0.0L;  ///< ∫ dψ/du over one period 2K of u
-  long double psi_u0_ = 0.0L;    ///< ∫ dψ/du from 0 to u0
+  // ψ(t) = psi_rate_·t + psi_gain_·(S(u(t)) − psi_S0_), S(u) = ∫_0^u sn²/(1 − n sn²) du (§8).
+  long double psi_rate_ = 0.0L;    ///< |L|/I_c, the rate at sn = 0
+  long double psi_gain_ = 0.0L;    ///< |L| (1/I_s − 1/I_c)(1 − n)/λ
+  long double char_n_ = 0.0L;      ///< the characteristic n ≤ 0
+  long double psi_S_half_ = 0.0L;  ///< S(2K), over one period of sn²
+  long double psi_kc2_ = 0.0L;  ///< (1 − k)(1 + k) of k as stored: the modulus Boost's sn, cn see
+  long double psi_S0_ = 0.0L;   ///< S(u0) (off the separatrix)
 };
 
 }  // namespace bookspin::physics

@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <boost/math/tools/roots.hpp>
@@ -480,53 +482,137 @@ TEST(ExactSolutionOmegaForm, ReproducesOmegaWithJacobiFunctions) {
                std::logic_error);
 }
 
-// A table built by another instance of the same start (another thread, as the explorer's page
-// does) gives the same orientation bit for bit, near the separatrix too; a table of the wrong
-// shape, or one for a motion that has none, is refused.
-TEST(ExactSolutionTableFromElsewhere, SameOrientationAsBuildingIt) {
-  const Eigen::Vector3d moments = book_moments();
-  const Eigen::Vector3d w0 = perturbed_x_spin(Eigen::Vector3d(0.0, 1e-3, 1e-3) * moments.x());
-  const ExactRotation built(moments, w0);
-  const ExactRotation given(moments, w0, built.precession_table());
-  for (double t : {0.0, 0.7, 31.0, 104.4, 1234.5}) {
-    EXPECT_EQ(given.orientation(t), built.orientation(t)) << t;
-    EXPECT_EQ(given.omega_body(t), built.omega_body(t)) << t;
-  }
-  PrecessionTable short_table = built.precession_table();
-  short_table.coeffs.pop_back();
-  EXPECT_THROW(ExactRotation(moments, w0, short_table), std::invalid_argument);
-  EXPECT_THROW(ExactRotation(moments, w0, PrecessionTable{}), std::invalid_argument);
-  const Eigen::Vector3d steady(0.0, 0.0, 1.0);  // about a principal axis: no table
-  EXPECT_THROW(ExactRotation(moments, steady, built.precession_table()), std::invalid_argument);
-  EXPECT_NO_THROW(ExactRotation(moments, steady, PrecessionTable{}));
+/// ψ(t) by adaptive Gauss–Kronrod quadrature (long double) of its rate, docs/physics.md §8,
+/// ψ̇ = |L| Σ_{i≠r} I_i ω_i² / Σ_{i≠r} I_i² ω_i², from ω(t) alone (the way ψ was tabulated before
+/// its closed form): r is the axis ω circles, the smallest in case B, else the largest. Summed
+/// over pieces of a twentieth of the flip period (1 time unit on the separatrix), each
+/// integrated adaptively.
+long double quadrature_psi(const ExactRotation& exact, double t) {
+  const Vector3d& I = exact.moments();
+  int r = 0;
+  for (int i = 0; i < 3; ++i)
+    if (exact.motion_case() == ExactCase::around_smallest ? I[i] < I[r] : I[i] > I[r]) r = i;
+  auto rate = [&](long double tau) {
+    const Vector3d w = exact.omega_body(static_cast<double>(tau));
+    long double num = 0.0L, den = 0.0L;
+    for (int i = 0; i < 3; ++i) {
+      if (i == r) continue;
+      num += static_cast<long double>(I[i]) * w[i] * w[i];
+      den += static_cast<long double>(I[i]) * I[i] * w[i] * w[i];
+    }
+    return exact.angular_momentum_norm() * num / den;
+  };
+  const double flip = exact.flip_period();
+  const double piece = std::isfinite(flip) ? 0.05 * flip : 1.0;
+  const int pieces = std::max(1, static_cast<int>(std::ceil(t / piece)));
+  long double psi = 0.0L;
+  using Quadrature = boost::math::quadrature::gauss_kronrod<long double, 31>;
+  for (int p = 0; p < pieces; ++p)
+    psi += Quadrature::integrate(rate, t * p / pieces, t * (p + 1) / pieces, 8, 1e-15L);
+  return psi;
 }
 
-// The model reset without a table stays at t = 0 (R = I) until given one, then steps as a model
-// reset with it; advance(dt, n) lands on the same state as n steps of dt.
-TEST(ExactModelTableLater, StepsAsIfBuiltAndAdvancesInOneEvaluation) {
+// The precession angle's closed form (Carlson's R_J, docs/physics.md §8) equals the
+// quadrature of its rate that it replaced, in both cases, for a symmetric body, near the
+// separatrix from both sides (k'² down to ~1e-15) and on it. An error δψ turns R(t) by δψ about L,
+// ‖δR‖_F = 2√2 |sin(δψ/2)| ≈ 1.41 δψ (R·L_b = L holds separately): so |δψ| ≤ 5e-11 (1 + |ψ|/100)
+// keeps the orientation within 1e-9 of the table-based one over the times tried.
+TEST(ExactSolutionPrecession, ClosedFormEqualsQuadratureOfItsRate) {
+  std::vector<Scenario> all = scenarios();
+  const Vector3d I = book_moments();
+  for (double e : {1e-5, 1e-8}) {
+    all.push_back({"book x spin, dL +z " + std::to_string(e), I, perturbed_x_spin({0.0, 0.0, e})});
+    all.push_back({"book x spin, dL +y " + std::to_string(e), I, perturbed_x_spin({0.0, e, 0.0})});
+  }
+  // k² rounds to 1: the separatrix's form, with ω_y = 0 (u0 infinite: ω stays on axis x).
+  all.push_back({"book x spin, dL +z 1e-11", I, perturbed_x_spin({0.0, 0.0, 1e-11})});
+  all.push_back({"(2,1,3) near the separatrix, case A", {2.0, 1.0, 3.0}, {1.0, 1e-7, 2e-7}});
+  all.push_back({"(2,1,3) near the separatrix, case B", {2.0, 1.0, 3.0}, {1.0, 2e-7, 1e-7}});
+  all.push_back({"separatrix (1,5,9)", {1.0, 5.0, 9.0}, {0.75, 0.1, 0.25}});
+  all.push_back({"separatrix (1,5,9), ω2 < 0", {1.0, 5.0, 9.0}, {0.75, -0.1, -0.25}});
+  int separatrices = 0, near = 0;
+  for (const Scenario& s : all) {
+    const ExactRotation exact(s.moments, s.omega0);
+    separatrices += exact.motion_case() == ExactCase::separatrix;
+    near += exact.motion_case() != ExactCase::separatrix && exact.modulus() > 1.0 - 1e-9;
+    const double flip = exact.flip_period();
+    std::vector<double> times{0.3, 1.7, 9.0, 41.3};
+    if (std::isfinite(flip))
+      for (double f : {0.25, 0.5, 0.999, 1.0, 1.5, 2.0, 3.37}) times.push_back(f * flip);
+    for (double t : times) {
+      const double closed = exact.precession_angle(t);
+      const long double reference = quadrature_psi(exact, t);
+      EXPECT_LE(std::abs(closed - reference), 5e-11 * (1.0 + std::abs(closed) / 100.0))
+          << s.name << " t = " << t << " ψ = " << closed;
+    }
+  }
+  EXPECT_EQ(separatrices, 3);
+  EXPECT_GE(near, 4);
+}
+
+// ψ(t) against mpmath (40 digits: sn by mpmath's ellipfun, ψ by mpmath's quad of the rate
+// above, tests/physics/exact_mpmath_reference.py), in both cases, near the separatrix and for
+// a symmetric body. Within 1e-12 relative.
+TEST(ExactSolutionPrecession, MatchesMpmath) {
+  struct Reference {
+    const char* name;
+    Vector3d moments, omega0;
+    std::array<double, 4> psi;  // at the times below
+  };
+  const std::array<double, 4> times{0.7, 13.1, 104.4, 1234.5};
+  const std::vector<Reference> references{
+      {"(2, 1, 3) ω0 (0.3, -0.5, 0.7)",
+       {2, 1, 3},
+       {0.3, -0.5, 0.7},
+       {0.9547761543192106283104, 18.98759527322734927457, 153.6889651245655679466,
+        1824.700342331433174836}},
+      {"(2, 1, 3) ω0 (-0.6, 0.9, 0.2)",
+       {2, 1, 3},
+       {-0.6, 0.9, 0.2},
+       {0.5473104066292216638563, 9.230996808229354761721, 72.3548948800327512906,
+        853.7249048608729654396}},
+      {"(3, 1, 2) ω0 (0.1, 0.9, 0.6)",
+       {3, 1, 2},
+       {0.1, 0.9, 0.6},
+       {0.5326067376712979766081, 8.722862663157115575133, 68.1127333414625922294,
+        806.1796430967546543911}},
+      {"(2, 1, 3) ω0 (1e-3, 1, 2e-3)",
+       {2, 1, 3},
+       {1e-3, 1, 2e-3},
+       {0.2363366074901513520383, 5.43273763544137311427, 44.0412691492408742283,
+        521.8022462758622096327}},
+      {"(2, 1, 3) ω0 (2e-3, 1, 1e-3)",
+       {2, 1, 3},
+       {2e-3, 1, 1e-3},
+       {0.2846859488354704413556, 5.410177520796278398907, 44.09453167984787124052,
+        521.7370183022679838299}},
+      {"(1, 1, 2) ω0 (0.3, -0.5, 0.7)",
+       {1, 1, 2},
+       {0.3, -0.5, 0.7},
+       {1.061602562167217018665, 19.86713366341506134931, 158.3304392717963667838,
+        1872.211947136327727917}},
+  };
+  for (const Reference& r : references) {
+    const ExactRotation exact(r.moments, r.omega0);
+    for (std::size_t i = 0; i < times.size(); ++i)
+      EXPECT_NEAR(exact.precession_angle(times[i]), r.psi[i], 1e-12 * std::abs(r.psi[i]))
+          << r.name << " t = " << times[i];
+  }
+}
+
+// The model's t = n·dt by steps or by advance(dt, n) in one evaluation lands on the same state.
+TEST(ExactModel, AdvanceInOneEvaluationEqualsSteps) {
   InitialState initial;
   initial.omega0_body = {0.114819, 0.0, 0.0};
   initial.jiggle = 1e-3;
   initial.seed = 2012;
   ExactModel full(Book{});
   full.reset(initial);
-  ExactModel later(Book{});
-  later.reset(initial, ExactParts::omega_only);
-  EXPECT_FALSE(later.has_orientation());
-  EXPECT_EQ(later.orientation(), Eigen::Matrix3d::Identity());
-  EXPECT_THROW(later.step(0.1), std::logic_error);
-  later.set_precession_table(full.rotation().precession_table());
-  EXPECT_TRUE(later.has_orientation());
   ExactModel jump(Book{});
-  jump.reset(initial, ExactParts::omega_only);
-  jump.set_precession_table(full.rotation().precession_table());
+  jump.reset(initial);
   const double dt = 1.0 / 60.0;
-  for (int i = 0; i < 6000; ++i) {
-    full.step(dt);
-    later.step(dt);
-  }
+  for (int i = 0; i < 6000; ++i) full.step(dt);
   jump.advance(dt, 6000);
-  EXPECT_EQ(later.orientation(), full.orientation());
   EXPECT_EQ(jump.time(), full.time());
   EXPECT_EQ(jump.orientation(), full.orientation());
   EXPECT_EQ(jump.diagnostics().omega_body, full.diagnostics().omega_body);

@@ -22,9 +22,6 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     /** ω (body frame) of each run at time t (steps round(t/dt) from the start), in one go. */
     omegaAt(t) {
       app.state.t = 0; rebuild();
-      // The exact runs' precession tables at once (on this thread, unless built already).
-      for (const r of app.runs.list.filter((x) => x.pending))
-        app.runs.supply(r, app.tables.now(r.session.moments(), r.session.startOmega()));
       advance(t); app.pacer.stop(); app.pacer.notice(app.state); draw();
       return app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body));
     },
@@ -37,16 +34,18 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     /** ω (body frame) of each run now. */
     omegaNow: () => app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body)),
     /** Each plotted line's drawn height in CSS pixels: {panel, run, component, px}. */
-    plotSpans: () => app.plotSpans || [],
+    plotSpans: () => app.panels.spans,
     /** The scene's measured ω as drawn now: {plot: samples drawn as dots on the ω panel,
      * sphere: L/|L| points of the measured trail on the sphere} (0, 0 without one). */
-    measuredDrawn: () => ({ plot: app.measuredDots || 0, sphere: sphere.measuredPoints }),
+    measuredDrawn: () => ({ plot: app.panels.measuredDots, sphere: sphere.measuredPoints }),
     /** Each run's flip detector: {count, first, period} (analysis::FlipDetector; the exact
      * model's closed form), and the exact motion's from the same start at the page's t. */
     flipMeasures: () => app.runs.list.map((r) => r.session.flips()),
     exactFlips: () => app.runs.list.map((r) => r.session.exactFlips(app.state.t)),
-    /** Whether a run still waits for its precession table (tables.js). */
-    waiting: () => app.runs.pending(),
+    /** Whether the page still waits before it plays: until its first frame is drawn (every
+     * model, the exact one included, starts at once: its orientation is a closed form,
+     * docs/physics.md §8). */
+    waiting: () => app.framesDrawn === 0,
     trails: () => app.runs.list.map((r) => ({ colour: r.colour, points: r.trail.length, label: r.label })),
     /** The sphere's view rotation (body → view), row-major 3×3. */
     sphereRotation: () => { const e = sphere.rotation.elements; return [0, 1, 2].map((i) => [e[i], e[i + 3], e[i + 6]]); },

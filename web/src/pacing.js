@@ -16,7 +16,6 @@ export class Pacer {
     this.target = null;  // a time still to catch up to (null: none)
     this.refused = [];   // values refused by withinLimits, shown until the next change
     this.slow = '';      // playing slower than asked
-    this.waiting = '';   // what is being computed elsewhere (main.js: the precession tables)
   }
 
   /** `state` within the page's limits (refused values back to `base`'s), the refusals shown. */
@@ -48,9 +47,8 @@ export class Pacer {
   play(runs, state, n, t0) {
     const want = state.t + n * state.dt;
     state.t = runs.advanceTo(want, state.dt, t0 + FRAME_BUDGET_MS);
-    // A run waiting for its table holds t: that is the waiting notice's, not slowness.
     // Reached to the step (t is a whole number of steps of dt, `want` a sum of them).
-    this.slow = state.t < want - 0.5 * state.dt && !runs.pending() ? `speed ${state.speed} is more than this machine steps: playing slower` : '';
+    this.slow = state.t < want - 0.5 * state.dt ? `speed ${state.speed} is more than this machine steps: playing slower` : '';
     this.notice(state);
   }
 
@@ -65,7 +63,6 @@ export class Pacer {
     if (this.target !== null)
       lines.push(`simulating to t = ${this.target}: ${(100 * state.t / this.target).toFixed(1)}% (Reset stops)`);
     if (this.slow) lines.push(this.slow);
-    if (this.waiting) lines.push(this.waiting);
     this.show(lines.join('; '));
   }
 }

@@ -71,10 +71,9 @@ export class Runs {
   }
 
   /** A fresh session of `model` configured and reset to the state's start: {session, engine},
-   * the exact model's orientation table built at once, or with `later` left to supply(),
    * `engine` the JavaScript engine's run of an engine model (else null), started from the
    * session's jiggled ω0 with the body's mass and principal moments. */
-  startRun(state, model, integrator, normalize, later = false) {
+  startRun(state, model, integrator, normalize) {
     const adapter = this.engineOf(model);
     if (!adapter && !this.space.models.includes(model))
       throw new Error(`${model}: this page has no JavaScript engines (bookspin explore --engines writes them)`);
@@ -83,10 +82,7 @@ export class Runs {
       if (adapter) session.configureEngine();
       else session.configure(model, integrator, normalize, state.damping, state.k, state.cells);
       const w = Runs.omega0(session, state);
-      // `later`: the exact model's precession table is left to be built off the main thread
-      // (tables.js; the run waits at t = 0 meanwhile), else built here.
-      if (later) session.start(w[0], w[1], w[2], state.jiggle, state.seed);
-      else session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
+      session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
       const engine = adapter ? adapter.start({
         mass: session.mass(), moments: Array.from(session.moments()), size: Array.from(session.cageSize()),
         omega0: Array.from(session.diagnostics().omega_body),
@@ -115,10 +111,10 @@ export class Runs {
     const errors = [];
     methodsOf(state).forEach(([model, integrator, normalize], k) => {
       try {
-        const { session, engine } = this.startRun(state, model, integrator, normalize, true);
+        const { session, engine } = this.startRun(state, model, integrator, normalize);
         const run = { session, engine, model, integrator, normalize, colour: TRAIL_COLOURS[k],
           label: labelOf(model, integrator, normalize, this.engineOf(model)), trail: [], history: [],
-          diverged: '', pending: session.needsPrecessionTable(), closedForm: model === 'exact' };
+          diverged: '', closedForm: model === 'exact' };
         this.record(run, state.dt);
         run.E0 = run.history[0].E;
         this.list.push(run);
@@ -127,19 +123,6 @@ export class Runs {
       }
     });
     return errors;
-  }
-
-  /** Whether a run waits for its precession table (supply). */
-  pending() {
-    return this.list.some((r) => r.pending);
-  }
-
-  /** `table` (tables.js) for `run`, if it is still one of the runs; true when it was. */
-  supply(run, table) {
-    if (!this.list.includes(run) || !run.pending) return false;
-    run.session.setPrecessionTable(table);
-    run.pending = false;
-    return true;
   }
 
   record(run, dt) {
@@ -169,7 +152,7 @@ export class Runs {
       busy = false;
       for (const r of this.list) {
         const left = total - r.session.steps();
-        if (left <= 0 || r.diverged || r.pending) continue;
+        if (left <= 0 || r.diverged) continue;
         if (!Runs.step(r, dt, Math.min(stride.get(r), left))) {
           const reason = r.session.divergenceReason();
           r.diverged = `diverged at t = ${(r.session.steps() * dt).toFixed(3)}${reason ? ': ' + reason : ''}`;

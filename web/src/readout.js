@@ -1,0 +1,44 @@
+// The readout a class reads from the back: t, and for each run its flips (the method's own
+// turn-over detector, docs/physics.md §14) and its first flip beside the exact motion's. Every
+// number comes from the WebAssembly sessions (runs.js); this module only writes them out.
+
+const $ = (id) => document.getElementById(id);
+/** `x` to `digits` decimals, without a "-0.00". */
+const fixed = (x, digits) => (Math.abs(x) < 0.5 * 10 ** -digits ? 0 : x).toFixed(digits);
+
+/** The readout's HTML for `runs` (Runs.list) at time `t`. */
+function runsHtml(runs, t) {
+  return runs.map((r) => {
+    const h = r.history[r.history.length - 1];
+    const own = r.session.flips();
+    const exact = r.closedForm ? own : r.session.exactFlips(t);
+    const first = own.first === null ? '—' : fixed(own.first, 2);
+    const beside = r.closedForm ? '(the exact motion)' : exact.first === null
+      ? 'exact motion: never turns over (a wobble)'
+      : `exact motion: first flip at ${fixed(exact.first, 2)}, count ${exact.count}`;
+    return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
+      `<div class="counts"><span class="big flips">flips ${own.count}</span> ` +
+      `<span class="big first">first flip at t = ${first}</span> <span class="exact">${beside}</span></div>` +
+      // ω in numbers for one run; in compare mode the plots show it, and the books stay in view.
+      (runs.length > 1 ? '' : `<div class="omega">ω = (${h.w.map((x) => x.toFixed(4)).join(', ')})</div>`) +
+      '</div>';
+  }).join('');
+}
+
+export class Readout {
+  constructor() {
+    this.shown = null;  // the runs' HTML last written
+  }
+
+  /** Writes t (the clock, the time line and the slider) and the runs' lines, the latter only
+   * when they changed. */
+  draw(runs, t) {
+    const text = `t = ${fixed(t, 2)}`;
+    $('time').textContent = text;
+    $('clock').textContent = text;
+    $('slider').max = Math.max(Number($('slider').max), Math.ceil(t));
+    $('slider').value = t;
+    const html = runsHtml(runs, t);
+    if (html !== this.shown) { $('status').innerHTML = html; this.shown = html; }
+  }
+}
