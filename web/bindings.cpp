@@ -167,7 +167,8 @@ class Session {
   /// Creates the simulator (docs/physics.md §5, §9, §10). Throws std::invalid_argument (a
   /// JavaScript exception) for an unknown name or an integrator the model does not support.
   void configure(const std::string& model, const std::string& integrator, bool normalize,
-                 bool damping, double spring_constant, int lattice_cells) {
+                 bool damping, double spring_constant, int lattice_cells, const std::string& drag,
+                 double drag_rate) {
     ModelConfig config;
     if (!parse_model_kind(model, config.kind))
       throw std::invalid_argument("unknown model '" + model + "'");
@@ -177,6 +178,11 @@ class Session {
     config.damping = damping;
     config.spring_constant = spring_constant;
     config.lattice_cells = lattice_cells;
+    // Air drag (docs/physics.md §21) for the models that take it; the others run without.
+    if (!parse_drag_law(drag, config.drag.law))
+      throw std::invalid_argument("unknown drag law '" + drag + "'");
+    config.drag.rate = config.drag.law == DragLaw::none ? 0.0 : drag_rate;
+    if (!supports_drag(config.kind)) config.drag = Drag{};
     simulator_ = make_simulator(body_, config);
     steps_ = 0;
   }

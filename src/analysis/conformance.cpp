@@ -33,6 +33,13 @@ Scenario scenario_of(const scene::Scene& scene) {
                      ": flipcheck: the body is at rest (initial.angular_velocity = [0, 0, 0], "
                      "no jiggle): nothing to judge");
   }
+  // A conformance scenario is the torque-free spin every engine can run: a scene's air drag
+  // (docs/physics.md §21) is no part of it, and dropping it would judge another motion.
+  if (scene.model.drag.active()) {
+    throw InputError(
+        scene.source.string() + ": flipcheck: model.drag: a scenario is torque-free; " +
+        "give the scene without drag (render, simulate, plot and explore show a " + "damped toss)");
+  }
   Scenario s;
   s.name = scene.name;
   s.body = scene.body;

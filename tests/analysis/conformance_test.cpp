@@ -177,6 +177,20 @@ TEST(Conformance, AComparisonOrABodyAtRestIsNoScenario) {
       "[initial]\nangular_velocity = [0, 0, 0]\njiggle = 0.01\n", "jiggled.toml")));
 }
 
+// A scenario is the torque-free spin: a scene with air drag (docs/physics.md §21) is refused,
+// naming the key, not judged as the free motion it is not; without drag it is a scenario.
+TEST(Conformance, ASceneWithAirDragIsNoScenario) {
+  const std::string spin =
+      "[initial]\nangular_velocity = [1, 0.01, 0]\n[model]\nkind = \"exact\"\n";
+  try {
+    scenario_of(scene::parse_scene_text(spin + "drag = \"linear\"\ndrag_rate = 0.2\n", "air.toml"));
+    ADD_FAILURE() << "a scene with drag was taken as a scenario";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("model.drag"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(scenario_of(scene::parse_scene_text(spin, "free.toml")));
+}
+
 /// The book spun about its largest axis z, L (fixed length) leaning towards x by α = α_end·t/t_end
 /// in the body frame, the body at rest: L_b = |L|(sin α, 0, cos α), ω = I⁻¹ L_b.
 std::vector<MotionSample> leaning(const Scenario& s, double alpha_end) {

@@ -80,7 +80,8 @@ export class Runs {
     const session = this.bodySession(state);
     try {
       if (adapter) session.configureEngine();
-      else session.configure(model, integrator, normalize, state.damping, state.k, state.cells);
+      else session.configure(model, integrator, normalize, state.damping, state.k, state.cells,
+                             state.drag, state.dragRate);
       const w = Runs.omega0(session, state);
       session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
       const engine = adapter ? adapter.start({

@@ -38,6 +38,8 @@ export class StateSpace {
       damping: physics.damping,
       k: physics.k,
       cells: physics.cells,  // lattice cells along the longest side (particle model, not the book); 0: default
+      drag: 'none',  // air drag on the rotation (docs/physics.md §21): none, linear, quadratic
+      dragRate: 0,   // its rate, 1 per time unit (a fitted toss's scene: per second)
       dt: 1 / 60,
       axis: 'custom',
       rate: physics.rate,
@@ -60,6 +62,7 @@ export class StateSpace {
       body: oneOf(this.bodies), model: models, integrator: integrators,
       model2: models, integrator2: integrators, axis: oneOf(AXES),
       normalize: bool, damping: bool, normalize2: bool, compare: bool, showL: bool, showAxes: bool,
+      drag: oneOf(['none', 'linear', 'quadratic']), dragRate: num,
       k: num, cells: num, dt: num, rate: num, jiggle: num, seed: num, speed: num, t: num,
       w: (v, d) => {
         const parts = String(v).split(',').map(Number);
@@ -107,12 +110,13 @@ export class StateSpace {
  * bounded pieces, one per animation frame, showing its progress); and the scene's own limits
  * (src/scene/limits.hpp, scenes/README.md) for the spring constant `k` (1e-12 … 1e12: the
  * scene's is positive), the lattice's `cells` (0 … 64), the spin `rate` and each component of
- * ω0 `w` (−1e6 … 1e6 rad per time unit), the `jiggle` (0 … 1e6) and the `seed` (0 … 2^53,
- * the integers a link can carry exactly).
+ * ω0 `w` (−1e6 … 1e6 rad per time unit), the `jiggle` (0 … 1e6), the `seed` (0 … 2^53,
+ * the integers a link can carry exactly) and the drag's rate `dragRate` (−1000 … 1000 per time
+ * unit).
  */
 export const LIMITS = {
   dt: [1e-6, 1000], speed: [0, 1e4], k: [1e-12, 1e12], cells: [0, 64], rate: [-1e6, 1e6],
-  jiggle: [0, 1e6], seed: [0, 2 ** 53],
+  jiggle: [0, 1e6], seed: [0, 2 ** 53], dragRate: [-1e3, 1e3],
 };
 /** Each component of ω0 (`w`), rad per time unit. */
 export const W_LIMIT = 1e6;
