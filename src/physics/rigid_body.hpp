@@ -20,6 +20,23 @@ class RigidBody : public Simulator {
  public:
   std::string divergence_reason() const override { return failure_; }
 
+  /// One step of dt: the model's free step (free_step()), and under drag its exact sub-flow
+  /// for dt/2 before and after it (Strang splitting, docs/physics.md §21). The splittings'
+  /// pending outer half-flow is applied first (a drag sub-flow between it and its step would
+  /// break the step's symmetry: first order), and their carried momentum scaled with L.
+  void step(double dt) final {
+    if (!failure_.empty()) return;  // the run has ended (finite() is false)
+    if (!config_.drag.active()) return free_step(dt);
+    splitting_.scale(apply_drag(0.5 * dt));
+    free_step(dt);
+    if (!failure_.empty()) return;
+    if (splits()) {
+      apply_pending_flow();
+      splitting_.reset(splitting_.Pi_body());
+    }
+    splitting_.scale(apply_drag(0.5 * dt));
+  }
+
  protected:
   /// The body's principal moments and cage (docs/physics.md §12); for the book exactly the
   /// numbers of book.principal_moments() and book.body_corners().
@@ -28,7 +45,20 @@ class RigidBody : public Simulator {
         config_(config),
         schedule_(config),
         cage_corners_(body.cage.body_corners()),
-        inverse_moments_(body.moments.cwiseInverse()) {}
+        inverse_moments_(body.moments.cwiseInverse()),
+        splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
+
+  /// One step of the torque-free motion with the model's integrator (docs/physics.md §10).
+  virtual void free_step(double dt) = 0;
+  /// The orientation turned by the splittings' pending outer half-flow (SplittingStepper),
+  /// so that the drag's sub-flow starts from the step's true end.
+  virtual void apply_pending_flow() = 0;
+
+  /// Whether the integrator is a splitting (splitting, splitting4: SplittingStepper runs it).
+  bool splits() const {
+    return config_.integrator == Integrator::splitting ||
+           config_.integrator == Integrator::splitting4;
+  }
 
   /// L from the initial state (the jiggle included, docs/physics.md §5), t = 0, the run open.
   void reset_motion(const InitialState& initial) {
@@ -57,9 +87,10 @@ class RigidBody : public Simulator {
   /// World frame; constant but under `rescaled-euler`, whose step turns it (§10.7), and
   /// under drag, which shrinks it (§21).
   Eigen::Vector3d L_ = Eigen::Vector3d::Zero();
-  double L0_norm_ = 0.0;  ///< |L| at reset: the quadratic drag law's scale
-  double t_ = 0.0;        ///< time units
-  std::string failure_;   ///< why the run ended early; empty while it runs
+  double L0_norm_ = 0.0;        ///< |L| at reset: the quadratic drag law's scale
+  double t_ = 0.0;              ///< time units
+  std::string failure_;         ///< why the run ended early; empty while it runs
+  SplittingStepper splitting_;  ///< used by splitting and splitting4 only
 };
 
 }  // namespace bookspin::physics

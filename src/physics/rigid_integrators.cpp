@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace bookspin::physics {
 
@@ -166,20 +167,15 @@ using AdvanceFunction = double (*)(RotorState&, const Eigen::Vector3d&, double, 
 
 /// advance() for a run-time order: one of the six instantiations.
 AdvanceFunction advance_for(const std::array<int, 3>& order) {
-  switch (9 * order[0] + 3 * order[1] + order[2]) {
-    case 9 * 0 + 3 * 1 + 2:
-      return advance<0, 1, 2>;
-    case 9 * 0 + 3 * 2 + 1:
-      return advance<0, 2, 1>;
-    case 9 * 1 + 3 * 0 + 2:
-      return advance<1, 0, 2>;
-    case 9 * 1 + 3 * 2 + 0:
-      return advance<1, 2, 0>;
-    case 9 * 2 + 3 * 0 + 1:
-      return advance<2, 0, 1>;
-    case 9 * 2 + 3 * 1 + 0:
-      return advance<2, 1, 0>;
-  }
+  using Entry = std::pair<std::array<int, 3>, AdvanceFunction>;
+  static constexpr std::array<Entry, 6> instantiations{{{{0, 1, 2}, advance<0, 1, 2>},
+                                                        {{0, 2, 1}, advance<0, 2, 1>},
+                                                        {{1, 0, 2}, advance<1, 0, 2>},
+                                                        {{1, 2, 0}, advance<1, 2, 0>},
+                                                        {{2, 0, 1}, advance<2, 0, 1>},
+                                                        {{2, 1, 0}, advance<2, 1, 0>}}};
+  for (const auto& [key, function] : instantiations)
+    if (key == order) return function;
   throw std::invalid_argument("splitting order must be a permutation of the axes 0, 1, 2");
 }
 

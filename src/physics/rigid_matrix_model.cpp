@@ -7,17 +7,12 @@
 namespace bookspin::physics {
 
 RigidMatrixModel::RigidMatrixModel(const Body& body, const ModelConfig& config)
-    : RigidBody(body, config), splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
+    : RigidBody(body, config) {}
 
 void RigidMatrixModel::reset(const InitialState& initial) {
   R_.setIdentity();
   reset_motion(initial);
   splitting_.reset(R_.transpose() * L_);
-}
-
-bool RigidMatrixModel::splits() const {
-  return config_.integrator == Integrator::splitting ||
-         config_.integrator == Integrator::splitting4;
 }
 
 Eigen::Matrix3d RigidMatrixModel::matrix() const {
@@ -47,22 +42,7 @@ void RigidMatrixModel::euler_step(double dt) {
   R_ += dt * turn;
 }
 
-// Drag (docs/physics.md §21): its exact sub-flow for dt/2, the free step, dt/2 again (Strang
-// splitting). The splittings' pending outer half-flow is applied first (a drag sub-flow between
-// it and its step would break the step's symmetry: first order), and their carried momentum
-// scaled with L. Without drag the free step alone.
-void RigidMatrixModel::step(double dt) {
-  if (!failure_.empty()) return;  // the run has ended (finite() is false)
-  if (!config_.drag.active()) return free_step(dt);
-  splitting_.scale(apply_drag(0.5 * dt));
-  free_step(dt);
-  if (!failure_.empty()) return;
-  if (splits()) {
-    R_ = matrix();
-    splitting_.reset(splitting_.Pi_body());
-  }
-  splitting_.scale(apply_drag(0.5 * dt));
-}
+void RigidMatrixModel::apply_pending_flow() { R_ = matrix(); }
 
 void RigidMatrixModel::free_step(double dt) {
   switch (config_.integrator) {

@@ -20,7 +20,6 @@ class RigidMatrixModel final : public RigidBody {
   RigidMatrixModel(const Book& book, const ModelConfig& config)
       : RigidMatrixModel(book_body(book), config) {}
   void reset(const InitialState& initial) override;
-  void step(double dt) override;
   Corners corners() const override;
   Diagnostics diagnostics() const override;
   bool finite() const override;
@@ -32,16 +31,14 @@ class RigidMatrixModel final : public RigidBody {
   Eigen::Matrix3d orientation() const override;
 
  private:
-  void free_step(double dt);  ///< one step of the torque-free motion
+  void free_step(double dt) override;
+  void apply_pending_flow() override;
   Eigen::Vector3d omega_world(const Eigen::Matrix3d& R) const;
   Eigen::Matrix3d derivative(const Eigen::Matrix3d& R) const;
   void euler_step(double dt);
   void normalize();
 
-  bool splits() const;
-
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();  ///< lags for the splittings
-  SplittingStepper splitting_;                       ///< used by splitting and splitting4 only
 };
 
 }  // namespace bookspin::physics

@@ -8,17 +8,12 @@
 namespace bookspin::physics {
 
 RigidQuaternionModel::RigidQuaternionModel(const Body& body, const ModelConfig& config)
-    : RigidBody(body, config), splitting_(inverse_moments_, splitting_gammas(config.integrator)) {}
+    : RigidBody(body, config) {}
 
 void RigidQuaternionModel::reset(const InitialState& initial) {
   q_.setIdentity();
   reset_motion(initial);
   splitting_.reset(body_momentum());
-}
-
-bool RigidQuaternionModel::splits() const {
-  return config_.integrator == Integrator::splitting ||
-         config_.integrator == Integrator::splitting4;
 }
 
 Eigen::Quaterniond RigidQuaternionModel::quaternion() const {
@@ -117,22 +112,7 @@ Eigen::Vector3d RigidQuaternionModel::body_momentum() const {
   return L_ + (2.0 / q_.squaredNorm()) * (u.cross(u_cross_L) - q_.w() * u_cross_L);
 }
 
-// Drag (docs/physics.md §21): its exact sub-flow for dt/2, the free step, dt/2 again (Strang
-// splitting). The splittings' pending outer half-flow is applied first (a drag sub-flow between
-// it and its step would break the step's symmetry: first order), and their carried momentum
-// scaled with L. Without drag the free step alone.
-void RigidQuaternionModel::step(double dt) {
-  if (!failure_.empty()) return;  // the run has ended (finite() is false)
-  if (!config_.drag.active()) return free_step(dt);
-  splitting_.scale(apply_drag(0.5 * dt));
-  free_step(dt);
-  if (!failure_.empty()) return;
-  if (splits()) {
-    q_ = quaternion();
-    splitting_.reset(splitting_.Pi_body());
-  }
-  splitting_.scale(apply_drag(0.5 * dt));
-}
+void RigidQuaternionModel::apply_pending_flow() { q_ = quaternion(); }
 
 void RigidQuaternionModel::free_step(double dt) {
   switch (config_.integrator) {

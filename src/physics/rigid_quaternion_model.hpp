@@ -22,7 +22,6 @@ class RigidQuaternionModel final : public RigidBody {
   RigidQuaternionModel(const Book& book, const ModelConfig& config)
       : RigidQuaternionModel(book_body(book), config) {}
   void reset(const InitialState& initial) override;
-  void step(double dt) override;
   Corners corners() const override;
   Diagnostics diagnostics() const override;
   bool finite() const override;
@@ -34,16 +33,14 @@ class RigidQuaternionModel final : public RigidBody {
   Eigen::Matrix3d orientation() const override;
 
  private:
-  void free_step(double dt);  ///< one step of the torque-free motion
+  void free_step(double dt) override;
+  void apply_pending_flow() override;
   Eigen::Vector4d derivative(const Eigen::Vector4d& q_coeffs) const;
   Eigen::Vector3d body_momentum() const;
   void raw_euler_step(double dt);
   void unit_euler_step(double dt);
 
-  bool splits() const;
-
   Eigen::Quaterniond q_ = Eigen::Quaterniond::Identity();  ///< lags for the splittings
-  SplittingStepper splitting_;  ///< used by splitting and splitting4 only
 };
 
 }  // namespace bookspin::physics

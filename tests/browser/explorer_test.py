@@ -20,7 +20,8 @@ explorer.html with `bookspin explore` (every scene, and a mesh scene of its own)
   - ω at t = 100 in the page equals `bookspin simulate` of the same settings to 1e-10
     relative, for the rigid models (matrix and quaternion, several integrators, with and
     without normalization) and the exact model, the book, the T-handle and a mesh body (the
-    long box, its surface and moments carried by the page from bookspin);
+    long box, its surface and moments carried by the page from bookspin), and under air drag
+    set by the link (drag, dragRate: each law, the exact and both rigid models);
   - the mesh body is drawn (its grey faces where the body is);
   - wiring: the T-handle scene with the spin axis and rate set through the page's controls
     (driven through the time slider; about the intermediate axis it flips), ω at t = 300
@@ -450,6 +451,13 @@ def main():
             (str(mesh_scenes["largest"]), {"model.kind": '"exact"'}),
             (str(mesh_scenes["largest"]), {"model.kind": '"rigid-quaternion"', "model.integrator": '"rk4"', "model.normalize": "true"}),
             (str(mesh_scenes["largest"]), {"model.kind": '"rigid-matrix"', "model.integrator": '"implicit-midpoint"', "model.normalize": "false"}),
+            # Air drag (docs/physics.md §21) through the link: the damped closed form and the
+            # rigid models' Strang-split drag, each law (ω(100) falls to e^-1 or 1/3 of ω0).
+            (book_scene, {"model.kind": '"exact"', "model.drag": '"linear"', "model.drag_rate": "0.01"}),
+            (book_scene, {"model.kind": '"rigid-quaternion"', "model.integrator": '"rk4"', "model.normalize": "true",
+                          "model.drag": '"quadratic"', "model.drag_rate": "0.02"}),
+            (book_scene, {"model.kind": '"rigid-matrix"', "model.integrator": '"splitting"', "model.normalize": "false",
+                          "model.drag": '"linear"', "model.drag_rate": "0.01"}),
         ]
         worst = 0.0
         for scene, settings in cases:
@@ -458,6 +466,8 @@ def main():
                  "model": settings["model.kind"].strip('"'),
                  "integrator": settings.get("model.integrator", '"euler"').strip('"'),
                  "normalize": "1" if settings.get("model.normalize") == "true" else "0"}
+            if "model.drag" in settings:
+                q.update(drag=settings["model.drag"].strip('"'), dragRate=settings["model.drag_rate"])
             url = page + "?" + "&".join(f"{k}={v}" for k, v in q.items())
             load(driver, url)
             got = driver.execute_script("return window.explorer.omegaAt(100)")[0]

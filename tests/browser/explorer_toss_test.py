@@ -7,7 +7,7 @@ opened at the toss's scene in headless Chromium (1280×720). Checks:
 
   - the fit prints the `bookspin explore` command of the toss's scene, and it writes the page;
   - the page's state is the scene's: its name, the exact model, ω0 the scene's
-    initial.angular_velocity; its time slider spans the scene's duration;
+    initial.angular_velocity, the fitted drag's law and rate; its time slider spans the scene's duration;
   - the page's exact motion flips where the recording does: its first flip within 0.02 s of
     the first sign change of the true ω about the intermediate axis (from RK4, here), its flip
     period within 1e-4 of the fit CSV's half_period_fitted and within 2 % of the true one;
@@ -161,6 +161,12 @@ def main():
         want = scene["initial"]["angular_velocity"]
         if any(abs(x - y) > 1e-12 * abs(y) + 1e-15 for x, y in zip(state["w"], want)):
             fail(f"the page's ω0 {state['w']} is not the scene's {want}")
+        # The fitted air drag rides with the scene (docs/physics.md §21): the page runs the
+        # damped exact motion of the scene's law and rate.
+        model = scene.get("model", {})
+        want_drag = (model.get("drag", "none"), model.get("drag_rate", 0.0))
+        if (state["drag"], state["dragRate"]) != want_drag:
+            fail(f"the page's drag {state['drag']} {state['dragRate']} is not the scene's {want_drag}")
         slider = float(driver.find_element("id", "slider").get_attribute("max"))
         frame = scene["time"]["dt"] * scene["time"]["steps_per_frame"]
         if not duration - 1e-9 <= slider <= duration + frame + 1e-9:
