@@ -245,7 +245,7 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
                          " (one given twice, or two files of one scene.name): give each once");
   // Each file to the scenario whose "<name>-" its name starts with, the longest such name.
   std::vector<std::vector<std::filesystem::path>> files(job.scenes.size());
-  std::vector<std::vector<std::string>> names(job.scenes.size());
+  std::vector<std::vector<std::string>> motion_names(job.scenes.size());
   for (const std::filesystem::path& file : job.motions) {
     const std::string base = file.filename().string();
     std::size_t best = job.scenes.size();
@@ -267,13 +267,13 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
     if (const std::size_t dot = name.rfind('.'); dot != std::string::npos && dot > 0)
       name.erase(dot);
     // Two files of one name in one scenario would be one row: refused, naming both.
-    for (std::size_t k = 0; k < names[best].size(); ++k)
-      if (names[best][k] == name)
+    for (std::size_t k = 0; k < motion_names[best].size(); ++k)
+      if (motion_names[best][k] == name)
         throw InputError(file.string() + ": flipcheck league: its motion \"" + name +
                          "\" is also " + files[best][k].string() + "'s in scenario " +
                          job.scenes[best].name + ": rename one (a row per motion)");
     files[best].push_back(file);
-    names[best].push_back(name);
+    motion_names[best].push_back(name);
   }
   // Every motion file read before anything is judged or written: a bad one is its one line.
   for (std::size_t i = 0; i < job.scenes.size(); ++i) {
@@ -309,8 +309,9 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
       stop_if_asked(job.stop, "flipcheck league");
       const scene::Scene& scene = job.scenes[i];
       const analysis::Scenario scenario = analysis::scenario_of(scene);
-      LeagueColumn col{scene.name, scene.title,
-                       judge_all(scene, scenario, files[i], names[i], job.methods, job.stop)};
+      LeagueColumn col{
+          scene.name, scene.title,
+          judge_all(scene, scenario, files[i], motion_names[i], job.methods, job.stop)};
       CsvTable part = analysis::judgement_table(scenario, col.judged);
       table.columns = part.columns;
       for (auto& row : part.rows) table.rows.push_back(std::move(row));
