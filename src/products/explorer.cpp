@@ -139,9 +139,11 @@ JsonObject explorer_scene_data(const scene::Scene& s) {
   const physics::ModelConfig& first = models.front();
   JsonObject state{{"body", {std::string(physics::to_string(s.body.shape))}}};
   add_method(state, first, "");
-  state.insert(state.end(), {{"drag", {std::string(physics::to_string(first.drag.law))}},
-                             {"dragRate", {first.drag.rate}},
-                             {"damping", {first.damping}},
+  // Air drag (docs/physics.md §21) where the scene has it; the page's default is none.
+  if (first.drag.active())
+    state.insert(state.end(), {{"drag", {std::string(physics::to_string(first.drag.law))}},
+                               {"dragRate", {first.drag.rate}}});
+  state.insert(state.end(), {{"damping", {first.damping}},
                              {"k", {first.spring_constant}},
                              {"cells", {std::int64_t{first.lattice_cells}}},
                              {"dt", {s.dt}},

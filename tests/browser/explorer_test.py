@@ -568,8 +568,15 @@ def main():
 
         # 5. The URL restores the state: every control set away from the scene's value (the
         #    speed to the page's default, which the scene does not use) and read back. The
-        #    particle model on the T-handle, so that k, damping and the lattice cells are shown.
+        #    particle model on the T-handle, so that k, damping and the lattice cells are shown;
+        #    the air drag set first, while the model is a rigid one that takes it (the particle
+        #    model hides it).
+        Select(driver.find_element("id", "drag")).select_by_value("linear")
+        driver.find_element("id", "dragRate").clear()
+        driver.find_element("id", "dragRate").send_keys("0.05\n")
         Select(driver.find_element("id", "model")).select_by_value("particle")
+        if driver.find_element("id", "dragRow").is_displayed():
+            fail("the particle model shows the air drag, which it does not take")
         Select(driver.find_element("id", "body")).select_by_value("t-handle")
         Select(driver.find_element("id", "integrator")).select_by_value("velocity-verlet")
         Select(driver.find_element("id", "axis")).select_by_value("largest")

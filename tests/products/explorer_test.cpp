@@ -81,6 +81,18 @@ TEST(ExplorerSceneJson, ABookSceneIsTheTextThePageReads) {
             "\"book\":{\"size\":[1.5,2,0.25],\"mass\":3},\"duration\":299}");
 }
 
+// A scene's air drag (docs/physics.md §21) goes into the page's state as its law and rate, the
+// state's keys drag and dragRate; a scene without drag carries neither (the page's none).
+TEST(ExplorerSceneJson, AScenesAirDragIsInThePageState) {
+  const std::string spin =
+      "[initial]\nangular_velocity = [1, 0.01, 0]\n[model]\nkind = \"exact\"\n";
+  const std::string damped = explorer_scene_json(
+      scene::parse_scene_text(spin + "drag = \"quadratic\"\ndrag_rate = 0.25\n", "air.toml", {}));
+  EXPECT_TRUE(has(damped, "\"drag\":\"quadratic\",\"dragRate\":0.25,")) << damped;
+  const std::string free = explorer_scene_json(scene::parse_scene_text(spin, "free.toml", {}));
+  EXPECT_FALSE(has(free, "drag")) << free;
+}
+
 // A scene's measured ω goes into the page whole, with each sample's L/|L| (L = I·ω with the
 // book's moments m(b² + c²)/12, …: here a book 2 × 4 × 6 of mass 12, I = (52, 40, 20)), a
 // sample with L = 0 left out of the trail.

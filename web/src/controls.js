@@ -1,13 +1,16 @@
 // The control column: the state shown in the page's inputs and read back from them. Only what
 // the chosen model uses is shown: its own integrators (physics::supports, as the WebAssembly
 // module lists them: state.js), normalization where it has one, damping and k for the particle
-// model, lattice cells for a particle body other than the book. The JavaScript engines' models
+// model, lattice cells for a particle body other than the book, air drag for the exact and rigid
+// models (physics::supports_drag; its rate once a law is chosen). The JavaScript engines' models
 // (a page written with --engines) have neither integrator nor normalization of bookspin's.
-import { AXES } from './state.js';
+import { AXES, DRAG_LAWS } from './state.js';
 
 const $ = (id) => document.getElementById(id);
-const NUMBERS = ['k', 'cells', 'dt', 'rate', 'jiggle', 'seed', 'speed'];
-const CHOICES = ['scene', 'body', 'model', 'integrator', 'axis', 'model2', 'integrator2'];
+const NUMBERS = ['k', 'cells', 'dragRate', 'dt', 'rate', 'jiggle', 'seed', 'speed'];
+const CHOICES = ['scene', 'body', 'model', 'integrator', 'drag', 'axis', 'model2', 'integrator2'];
+/** The models that take air drag (physics::supports_drag). */
+const DRAGGED = ['exact', 'rigid-matrix', 'rigid-quaternion'];
 const BOXES = ['normalize', 'damping', 'compare', 'normalize2', 'showL', 'showAxes'];
 /** Controls that change only the drawing, not the run. */
 export const VIEW_CONTROLS = ['showL', 'showAxes', 'speed'];
@@ -57,6 +60,7 @@ export class Controls {
     const models = space.models.concat(this.engineModels);
     fillSelect('model', models); fillSelect('model2', models);
     fillSelect('axis', AXES);
+    fillSelect('drag', DRAG_LAWS);
   }
 
   /** The integrators `model` accepts (an engine's model: its own, named 'euler' in the state). */
@@ -113,6 +117,8 @@ export class Controls {
     show('dampingRow', particle);
     show('kRow', particle);
     show('cellsRow', particle && state.body !== 'book');
+    show('dragRow', DRAGGED.includes(state.model));
+    show('dragRateRow', DRAGGED.includes(state.model) && state.drag !== 'none');
     show('custom', state.axis === 'custom');
     show('rateRow', state.axis !== 'custom');
     show('second', state.compare);

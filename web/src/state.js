@@ -6,6 +6,8 @@
 import { ENGINE_MODELS } from './engines/models.js';
 
 export const AXES = ['smallest', 'intermediate', 'largest', 'custom'];
+/** The air drag's laws (docs/physics.md §21, physics::DragLaw). */
+export const DRAG_LAWS = ['none', 'linear', 'quadratic'];
 
 const num = (v, d) => { const x = Number(v); return Number.isFinite(x) ? x : d; };
 const bool = (v, d) => (v === '1' || v === 'true' ? true : v === '0' || v === 'false' ? false : d);
@@ -62,7 +64,7 @@ export class StateSpace {
       body: oneOf(this.bodies), model: models, integrator: integrators,
       model2: models, integrator2: integrators, axis: oneOf(AXES),
       normalize: bool, damping: bool, normalize2: bool, compare: bool, showL: bool, showAxes: bool,
-      drag: oneOf(['none', 'linear', 'quadratic']), dragRate: num,
+      drag: oneOf(DRAG_LAWS), dragRate: num,
       k: num, cells: num, dt: num, rate: num, jiggle: num, seed: num, speed: num, t: num,
       w: (v, d) => {
         const parts = String(v).split(',').map(Number);
