@@ -8,7 +8,7 @@
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
-#include "common/text_file.hpp"
+#include "common/text_lines.hpp"
 
 namespace bookspin::jobs {
 
@@ -154,10 +154,6 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
   if (header.empty()) throw InputError(file, 0, "", "no header row (t,qw,qx,qy,qz,wx,wy,wz)");
   if (motion.rows.empty()) throw InputError(file, line_number, "", "no rows after the header");
   return motion;
-}
-
-MotionFile read_motion_csv(const std::filesystem::path& path, double dt, long long steps) {
-  return parse_motion_csv(read_text_file(path, "the motion file"), path.string(), dt, steps);
 }
 
 }  // namespace bookspin::jobs
