@@ -12,7 +12,6 @@ JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.
 
 }  // namespace
 
-
 ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop) {
   ExactMotion motion;
   motion.scenario = scenario;

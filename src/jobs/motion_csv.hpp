@@ -38,7 +38,8 @@ struct MotionFile {
 MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
                             long long steps);
 
-/// parse_motion_csv() of the file at `path` (motion_file.cpp) (read whole; InputError when it cannot be read).
+/// parse_motion_csv() of the file at `path`, read whole (motion_file.cpp); InputError when it
+/// cannot be read.
 MotionFile read_motion_csv(const std::filesystem::path& path, double dt, long long steps);
 
 }  // namespace bookspin::jobs

@@ -3,7 +3,6 @@
 // itself: it starts at q = 1 with the jiggled ω0 = I⁻¹(I ω + δL) (physics::jiggle_delta_L);
 // L in the world and E stay their start values; ω_world = R(q) ω_body; and q follows its own
 // kinematics, q̇ = ½ q ⊗ (0, ω_body), to the central difference's O(dt²).
-#include "analysis/conformance.hpp"
 #include "jobs/exact_motion.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +11,7 @@
 #include <cmath>
 #include <string>
 
+#include "analysis/conformance.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
