@@ -57,6 +57,9 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
      * as text, an empty cell null, the rest numbers); rejected with the command line's one
      * line (without "bookspin: error: ") for a bad file. */
     judgeMotion: (scenario, csvText, file = 'motion.csv') => app.judge.judge(scenario, csvText, file).then((j) => j.row),
+    /** {json, csv}: `bookspin flipcheck export`'s two files for `scenario`, as the panel
+     * downloads them, or {error}. */
+    judgeExport: (scenario) => app.judge.files(scenario),
     /** The scenes the panel offers as scenarios. */
     judgeScenarios: () => app.judge.scenes.map((s) => s.name),
     nsPerStep(model, integrator, normalize, steps) {

@@ -107,12 +107,18 @@ export class JudgePanel {
     if (!scene) return;
     $('judgeBusy').textContent = 'making the exact motion…';
     setTimeout(() => {
-      const files = this.wasm.flipcheckExport(scenarioSpec(scene));
+      const files = this.files(scene.name);
       $('judgeBusy').textContent = '';
       if (files.error) { $('judgeError').textContent = `error: ${files.error}`; return; }
       if (kind === 'json') download(`${scene.name}.json`, files.json, 'application/json');
       else download(`${scene.name}-exact.csv`, files.csv, 'text/csv');
     }, 0);
+  }
+
+  /** {json, csv}: the files `bookspin flipcheck export` writes for scenario `name`, or {error}. */
+  files(name) {
+    const scene = this.scene(name);
+    return scene ? this.wasm.flipcheckExport(scenarioSpec(scene)) : { error: `${name}: no such scenario in this page` };
   }
 
   /** Judges `csvText` (named `file`, as `judge` names a motion by its file's name) against
