@@ -70,6 +70,7 @@ export class JudgePanel {
     $('judgeOpen').hidden = this.scenes.length === 0;
     $('judgeOpen').addEventListener('click', () => this.open(currentScene()));
     $('judgeClose').addEventListener('click', () => this.close());
+    window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('judge').hidden) this.close(); });
     menu.addEventListener('change', () => this.clear());
     $('judgeJson').addEventListener('click', () => this.exportFile('json'));
     $('judgeExact').addEventListener('click', () => this.exportFile('csv'));
@@ -158,7 +159,7 @@ export class JudgePanel {
     $('judgeFailures').innerHTML = '';
     for (const f of failures) $('judgeFailures').appendChild(Object.assign(document.createElement('li'), { textContent: f }));
     const rows = Object.entries(row).filter(([c]) => !TEXT_COLUMNS.includes(c)).map(([c, v]) =>
-      `<tr><th>${c}</th><td>${v === null ? '—' : v}</td><td>${WORDS[c] || ''}</td></tr>`);
+      `<tr><th><code>${c}</code><small>${WORDS[c] || ''}</small></th><td>${v === null ? '—' : v}</td></tr>`);
     $('judgeTable').innerHTML = rows.join('');
     $('judgeResult').hidden = false;
   }
