@@ -122,7 +122,7 @@ def judge_in_page(driver, base_url, scenario, file_name):
         fetch(url).then((r) => r.text())
           .then((text) => window.explorer.judgeMotion(scenario, text, name))
           .then((row) => done({ok: true, row}), (e) => done({ok: false, error: String(e.message)}));
-    """, base_url + file_name, scenario, file_name)
+    """, base_url + "motions/" + file_name, scenario, file_name)
 
 
 def main():
@@ -150,8 +150,13 @@ def main():
         exact = motions / f"{name}-exact.csv"
         files = {exact.name: exact}
         simulated = motions / f"{name}-rigid-matrix-euler.csv"
-        simulated.write_text(run([bookspin, "simulate", str(scene), "--set",
-                                  "model.kind=rigid-matrix", "--set", "model.integrator=euler"]))
+        # stdout alone: a method that diverges says so on stderr (its rows end there).
+        sim = subprocess.run([bookspin, "simulate", str(scene), "--set", 'model.kind="rigid-matrix"',
+                              "--set", 'model.integrator="euler"'],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        if sim.returncode != 0:
+            fail(f"bookspin simulate {scene.name} exited {sim.returncode}: {sim.stderr}")
+        simulated.write_text(sim.stdout)
         files[simulated.name] = simulated
         files.update(perturbed(exact, motions, name))
         judged = out / "cli"
@@ -168,11 +173,12 @@ def main():
     if r.returncode != 2 or not cli_line.startswith("bookspin: error: bad.csv:3: wy:"):
         fail(f"bookspin flipcheck judge of bad.csv: exit {r.returncode}, {cli_line!r}")
 
-    with serve(motions) as base_url, \
-            open_browser(chromium, driver_path, size=(1280, 720), offline=True,
+    # The page and the motion files served from one origin (a page opened from disk may not
+    # fetch), the files fetched by the page itself rather than sent through the driver.
+    with serve(out) as base_url, \
+            open_browser(chromium, driver_path, size=(1280, 720),
                          exact_viewport=True) as driver:
-        page = (out / "explorer.html").resolve().as_uri()
-        driver.get(page + "?scene=mujoco-test-box")
+        driver.get(base_url + "explorer.html?scene=mujoco-test-box")
         if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
             fail(f"the page never became ready: {driver.get_log('browser')}")
         offered = driver.execute_script("return window.explorer.judgeScenarios()")
