@@ -26,6 +26,7 @@ export class Replay {
     this.canvas = canvas;
     this.label = label;
     this.timer = null;
+    this.stop();
   }
 
   /** Plays `poses` ({t, q, qExact}) of the scene's body (its cage size), looping. */
@@ -48,6 +49,9 @@ export class Replay {
     if (this.timer !== null) cancelAnimationFrame(this.timer);
     this.timer = null;
     this.canvas.hidden = true;
+    // No backing store while hidden: a canvas's pixels are its displayed size × devicePixelRatio.
+    this.canvas.width = 0;
+    this.canvas.height = 0;
     this.label.textContent = '';
   }
 
