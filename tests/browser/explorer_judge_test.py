@@ -14,7 +14,8 @@ scenes/flipcheck/*.toml`, and checks:
     column: text equal, an empty cell null, numbers to 1e-9 relative (ABS_FLOOR absolute for
     the round-off-sized measures of a motion that is the exact one: see below);
   - once through the panel itself: the file input given a path (send_keys), the verdict, the
-    failures in words and every number of the table equal to the command line's;
+    failures in words and every number of the table equal to the command line's, and the
+    replay drawing both bodies (at least 2 % of its canvas);
   - the scenario JSON and exact-motion CSV the panel downloads are `flipcheck export`'s bytes
     (the JSON) and numbers (the CSV, to 1e-9);
   - a bad motion file: the hook rejects with the command line's one line and the panel shows
@@ -232,7 +233,17 @@ def main():
             if shown_cell is None or (cell == "" and shown_cell != "—") or \
                     (cell != "" and not same_number(float(shown_cell), float(cell))):
                 fail(f"the panel's {column}: {shown_cell!r}, the command line's {cell!r}")
-        print(f"panel: {file_name} through the file input: {verdict}")
+        drawn = wait_for(driver, """
+            const c = document.getElementById('judgeReplay');
+            if (c.hidden || !c.width) return 0;
+            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            let n = 0;
+            for (let i = 3; i < d.length; i += 4) n += d[i] > 0;
+            return n / (c.width * c.height);""", lambda f: f > 0.02, 30)
+        if not drawn > 0.02:
+            fail(f"the replay draws no body beside the exact one: {drawn} of its pixels")
+        print(f"panel: {file_name} through the file input: {verdict}; replay draws "
+              f"{100 * drawn:.0f} % of its canvas")
         time.sleep(1.0)
         driver.save_screenshot(str(shots / "explorer-judge-1280x720.png"))
 
