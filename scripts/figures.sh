@@ -78,7 +78,7 @@ fit_quick=()
 tosses=("$out/$recording"-toss[0-9]*.toml)
 if command -v em++ >/dev/null && command -v npm >/dev/null; then
   bash web/build.sh "$build" &&
-    "$bookspin" explore --engines scenes/*.toml sweeps/*.toml "${tosses[@]}" -o "$out"
+    "$bookspin" explore --engines scenes/*.toml scenes/flipcheck/*.toml sweeps/*.toml "${tosses[@]}" -o "$out"
 else
   echo "figures: no emscripten or npm: $out/explorer.html not made (scripts/install-deps.sh)"
 fi

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "analysis/motion.hpp"
+#include "body_spec.hpp"
 #include "clip/body_drawing.hpp"
 #include "engines/engine_body.hpp"
 #include "physics/body.hpp"
@@ -60,6 +61,14 @@ val i32(const int* data, std::size_t n) {
 }
 
 val vec3(const Eigen::Vector3d& v) { return f64(v.data(), 3); }
+
+}  // namespace
+
+// The bodies of the page's scenes (web/body_spec.hpp), shared with web/judge_bindings.cpp.
+namespace bookspin::web {
+
+using namespace bookspin::physics;
+using emscripten::val;
 
 BodyShape shape_of(const std::string& name) {
   BodyShape shape{};
@@ -124,6 +133,13 @@ Body body_of(const val& spec) {
   }
   return body;
 }
+
+}  // namespace bookspin::web
+
+namespace {
+
+using bookspin::web::body_of;
+using bookspin::web::make_body;
 
 /// A rigid body whose state a JavaScript engine holds (cannon-es, Rapier, Jolt: web/src/engines/):
 /// the page sets q and ω after each of the engine's steps, and corners, orientation and diagnostics

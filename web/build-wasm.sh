@@ -20,12 +20,21 @@ flags=(-std=c++20 -O3 -DNDEBUG -I"$root/src" -I/usr/include/eigen3 -isystem "$ou
 objs=()
 pids=()
 # The physics whole; of analysis and clip only the two pure-Eigen files the page measures and
-# draws with (the flip detector, the trilinear cage), which include nothing but src/physics.
-for src in "$root"/src/physics/*.cpp "$root/src/analysis/motion.cpp" \
-           "$root/src/clip/body_drawing.cpp" "$here/bindings.cpp"; do
+# draws with (the flip detector, the trilinear cage), which include nothing but src/physics;
+# for the "Judge a motion" panel, the conformance kit's pure files (the judgement, the motion
+# CSV's parser, the exact motion and the scenario file) and the writers of common they use
+# (numbers, CSV, JSON, errors): no I/O, no engine, no scene reader (docs/architecture.md).
+pure=("$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp"
+      "$root/src/jobs/motion_csv.cpp" "$root/src/jobs/exact_motion.cpp"
+      "$root/src/clip/body_drawing.cpp")
+for name in errors number_text csv_writer json_writer json_string text_lines; do
+  pure+=("$root/src/common/$name.cpp")
+done
+for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/judge_bindings.cpp"; do
   obj="$out/obj/$(basename "${src%.cpp}").o"
   objs+=("$obj")
-  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
+  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/jobs" "$root/src/common" "$here/body_spec.hpp" \
+       -name '*.hpp' -newer "$obj" -print -quit)" ]; then
     em++ "${flags[@]}" -c "$src" -o "$obj" &
     pids+=($!)
     # two compilers at a time

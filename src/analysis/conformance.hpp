@@ -1,47 +1,20 @@
 #pragma once
-// The conformance kit's judgement (`bookspin flipcheck judge`, docs/flipcheck.md): a motion
-// written by any engine against the exact motion from the same start (docs/physics.md §8,
-// §14). Physics only: the motion comes in as values (jobs/motion_csv.hpp reads the file).
-#include <Eigen/Geometry>
-#include <filesystem>
-#include <optional>
-#include <string>
+// The conformance kit's scenario of a scene file and bookspin's own methods run from its start
+// (`bookspin flipcheck`, docs/flipcheck.md); the judgement itself, pure, is judgement.hpp's.
 #include <vector>
 
 #include "analysis/accuracy.hpp"
-#include "common/csv_writer.hpp"
+#include "analysis/judgement.hpp"
 #include "common/stop.hpp"
-#include "physics/body.hpp"
-#include "physics/exact_solution.hpp"
 #include "physics/simulator.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::analysis {
 
-/// A conformance scenario: the body, its start and the run (docs/flipcheck.md).
-struct Scenario {
-  std::string name;
-  physics::Body body;             ///< moments (body x, y, z, mass·length²), cage mass
-  physics::InitialState initial;  ///< identity orientation, body-frame ω0, jiggle of L
-  double dt = 0.0;                ///< time units
-  long long steps = 0;            ///< steps of dt
-};
-
 /// The scenario of a scene: its body and start, dt = time.dt and (frames − 1)·steps_per_frame
 /// steps (a sweep's and `simulate`'s run). Throws InputError for a comparison scene and for a
 /// body at rest (no ω0, no jiggle: every measure would divide by zero).
 Scenario scenario_of(const scene::Scene& scene);
-
-/// The jiggled start every model begins from: ω0 = I_body⁻¹ L0, L0 = I_body ω0 + the jiggle
-/// (docs/physics.md §5); body frame (= world frame at t = 0, q0 = identity), rad per time unit.
-Eigen::Vector3d start_omega(const Scenario& scenario);
-
-/// One row of a motion: the state after `step` steps of dt.
-struct MotionSample {
-  long long step = 0;          ///< t = step·dt
-  Eigen::Quaterniond q;        ///< orientation, body → world (either sign; normalized here)
-  Eigen::Vector3d omega_body;  ///< rad per time unit, body frame
-};
 
 /// `method` (one of bookspin's models × integrators or an engine's mode, made by
 /// engines::make_model() as the accuracy report makes it, with `model`'s other settings) run
@@ -53,63 +26,5 @@ struct MotionSample {
 std::vector<MotionSample> simulated_motion(const Scenario& scenario, const Method& method,
                                            const physics::ModelConfig& model, long long stride,
                                            const StopPoll& stop = {});
-
-/// The pass/fail thresholds of docs/flipcheck.md ("Thresholds"), where each is reasoned.
-struct ConformanceThresholds {
-  double start = 1e-6;               ///< |ω(0) − ω0| / |ω0|
-  double energy_drift = 1e-2;        ///< max |E/E0 − 1|
-  double L_drift = 1e-2;             ///< max ||L|/|L0| − 1|
-  double first_flip = 0.05;          ///< |first − exact first| as a fraction of T/2
-  double orientation_error = 0.1;    ///< rad, at the end
-  double separatrix_approach = 0.1;  ///< stable spins: fraction of the way to the separatrix
-};
-
-/// How a motion compares with the exact one (docs/flipcheck.md, "What judge measures").
-struct Conformance {
-  long long stride = 0;                    ///< steps between rows
-  long long last_step = 0;                 ///< the motion's last row
-  bool complete = false;                   ///< it reaches the scenario's last step
-  double start_error = 0.0;                ///< |ω(0) − ω0| / |ω0|
-  double energy_drift = 0.0;               ///< max |E/E0 − 1| over the rows, E0 its own row 0
-  double L_drift = 0.0;                    ///< max ||L|/|L0| − 1|
-  int flips = 0;                           ///< turn-overs (FlipDetector on every row)
-  int flips_exact = 0;                     ///< exact_flip_count over the motion's span
-  std::optional<double> first_flip;        ///< time units
-  std::optional<double> first_flip_exact;  ///< exact_first_flip, when the exact motion turns over
-  std::optional<double> first_flip_error;  ///< |first/exact − 1| (the accuracy table's)
-  double half_period = 0.0;                ///< exact T/2 (infinite for steady motion)
-  double orientation_error = 0.0;          ///< rad, at the last row, against the exact R
-  bool stable_spin = false;                ///< the exact motion stays a spin about axis 1 or 3
-  int spin_axis = 0;                       ///< body axis nearest L at t = 0
-  std::optional<double> tumble_time;       ///< first |cos(spin axis, L)| < 0.5
-  double separatrix_ratio_drift = 0.0;     ///< max |r/r0 − 1|, r = 2E·I2/L²
-  double separatrix_approach = 0.0;        ///< max (r − r0)/(1 − r0): 1 = on the separatrix
-  std::vector<std::string> failures;       ///< one phrase per failed threshold
-  bool pass() const { return failures.empty(); }
-};
-
-/// Judges `motion` (rows in increasing step, the first at step 0, spaced by one stride) against
-/// the exact motion of `scenario` (physics::ExactRotation from start_omega). Every measure over
-/// the rows given; the motion's E, |L| and the cosines from q and ω by physics::
-/// rigid_diagnostics (docs/physics.md §9), as the engines' diagnostics are. An internal error
-/// for an empty motion or one not starting at step 0 (the reader checks both).
-Conformance judge_motion(const Scenario& scenario, const std::vector<MotionSample>& motion,
-                         const ConformanceThresholds& thresholds = {});
-
-/// One line: "PASS" or "FAIL (reasons)", then the measures.
-std::string verdict_line(const Conformance& c);
-
-/// One motion judged: the file as given (empty for a motion bookspin ran itself), its name in
-/// the tables (the file's name, or the method's label: "mujoco rk4") and how it compares.
-struct JudgedMotion {
-  std::filesystem::path file;
-  std::string name;
-  Conformance result;
-};
-
-/// The judgement as a table (docs/flipcheck.md, "The judgement CSV"): one row per motion, in
-/// the order given, named by JudgedMotion::name; every number in shortest round-trip form, an
-/// empty cell where a value does not apply (no flip, not a stable spin). A value, no I/O.
-CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotion>& judged);
 
 }  // namespace bookspin::analysis

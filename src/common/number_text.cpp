@@ -9,6 +9,57 @@
 
 namespace bookspin {
 
+namespace {
+
+/// `value` (finite) in the shortest text that reads back, as std::to_chars(first, last, value)
+/// spells it: the fewest significant digits that round-trip, in fixed or scientific notation
+/// ("1e-05", "1e+22"), whichever is shorter, fixed on a tie. std::to_chars where the library has
+/// it for doubles (__cpp_lib_to_chars); else (emscripten's libc++, which compiles the explorer
+/// page's writers) the digits from printf's "%.*e", correctly rounded, at 1, 2, … 17 digits until
+/// they read back, laid out here.
+std::string shortest_text(double value) {
+  char buffer[40];
+#if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+#else
+  if (value == 0.0) return std::signbit(value) ? "-0" : "0";
+  int precision = 0;
+  for (; precision < 17; ++precision) {
+    std::snprintf(buffer, sizeof buffer, "%.*e", precision, value);
+    if (std::strtod(buffer, nullptr) == value) break;
+  }
+  // buffer: [-]d[.ddd]e±XX
+  const std::string text(buffer);
+  const bool negative = text.front() == '-';
+  const std::size_t e = text.find('e');
+  std::string digits;
+  for (std::size_t i = negative ? 1 : 0; i < e; ++i)
+    if (text[i] != '.') digits += text[i];
+  while (digits.size() > 1 && digits.back() == '0') digits.pop_back();
+  const int exponent = std::atoi(text.c_str() + e + 1);
+  const auto n = static_cast<int>(digits.size());
+  std::string scientific = digits.substr(0, 1);
+  if (n > 1) scientific += "." + digits.substr(1);
+  char tail[8];
+  std::snprintf(tail, sizeof tail, "e%c%02d", exponent < 0 ? '-' : '+', std::abs(exponent));
+  scientific += tail;
+  std::string fixed;
+  if (exponent + 1 >= n) {
+    // An integer: to_chars writes its exact digits (4162706789455549952, not …550000).
+    std::snprintf(buffer, sizeof buffer, "%.0f", std::abs(value));
+    fixed = buffer;
+  } else if (exponent >= 0) {
+    fixed = digits.substr(0, static_cast<std::size_t>(exponent + 1)) + "." +
+            digits.substr(static_cast<std::size_t>(exponent + 1));
+  } else {
+    fixed = "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits;
+  }
+  return (negative ? "-" : "") + (fixed.size() <= scientific.size() ? fixed : scientific);
+#endif
+}
+
+}  // namespace
+
 double finite(double value, std::string_view what) {
   if (std::isfinite(value)) return value;
   const char* shown = std::isnan(value) ? "nan" : value > 0 ? "inf" : "-inf";
@@ -22,7 +73,7 @@ std::string finite_text(double value, std::string_view what, NumberStyle style) 
   char buffer[40];
   switch (style) {
     case NumberStyle::shortest:
-      return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+      return shortest_text(value);
     case NumberStyle::digits17:
       std::snprintf(buffer, sizeof buffer, "%.17g", value);
       return buffer;

@@ -6,19 +6,14 @@
 #include <string>
 #include <string_view>
 
+#include "common/text_lines.hpp"  // trimmed(), without_bom(): read with the files
+
 namespace bookspin {
 
 /// Why `path` cannot be read as a file, or "" when it is a regular file: "no such file", "is a
 /// directory", "is a FIFO, not a regular file", "is a device, not a regular file", "is a
 /// socket, not a regular file", "not a regular file". Never throws.
 std::string not_a_file_reason(const std::filesystem::path& path);
-
-/// `text` without the spaces, tabs and carriage returns around it (a CSV cell, a line).
-std::string_view trimmed(std::string_view text);
-
-/// `text` without a UTF-8 byte-order mark (EF BB BF) at its start: spreadsheets write one
-/// before a CSV's header, and every CSV reader reads past it (docs/outputs.md).
-std::string_view without_bom(std::string_view text);
 
 /// The bytes of the regular file `path`, or std::nullopt when there are none to read: not a
 /// regular file ("no such file", "is a directory", "not a regular file"), or the file cannot

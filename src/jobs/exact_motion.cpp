@@ -6,6 +6,12 @@
 
 namespace bookspin::jobs {
 
+namespace {
+
+JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.y()}, {v.z()}}}; }
+
+}  // namespace
+
 ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop) {
   ExactMotion motion;
   motion.scenario = scenario;
@@ -31,6 +37,56 @@ ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& sto
     motion.rows.push_back(row);
   }
   return motion;
+}
+
+JsonValue scenario_json(const ExactMotion& m) {
+  const analysis::Scenario& s = m.scenario;
+  JsonObject units{{"time", {std::string("time unit (any: the motion scales with 1/time)")}},
+                   {"length", {std::string("length unit")}},
+                   {"mass", {std::string("mass unit")}},
+                   {"angle", {std::string("radian")}},
+                   {"angular_velocity", {std::string("rad per time unit")}},
+                   {"moments", {std::string("mass * length^2")}}};
+  JsonObject object{
+      {"scenario", {s.name}},
+      {"units", {std::move(units), true}},
+      {"mass", {m.mass}},
+      {"principal_moments", vector_json(s.body.moments)},
+      {"principal_axes", {std::string("body x, y, z (the moments are about these axes)")}},
+      {"q0", {JsonArray{{1.0}, {0.0}, {0.0}, {0.0}}}},
+      {"q_convention", {std::string("w, x, y, z; body to world")}},
+      {"omega0_body", vector_json(m.omega0_body)},
+      {"omega0_world", vector_json(m.omega0_world)},
+      {"dt", {JsonNumber{s.dt, NumberStyle::shortest}}},
+      {"steps", {static_cast<std::int64_t>(s.steps)}},
+      {"gravity", {std::string("none; no damping, no contacts")}},
+      {"exact_motion", {s.name + "-exact.csv"}},
+  };
+  return {std::move(object), true};
+}
+
+CsvTable exact_motion_csv(const ExactMotion& m) {
+  CsvTable table;
+  table.columns = {"t",        "qw",       "qx",       "qy", "qz", "wx", "wy", "wz",
+                   "wx_world", "wy_world", "wz_world", "Lx", "Ly", "Lz", "E"};
+  table.rows.reserve(m.rows.size());
+  for (const ExactMotionRow& r : m.rows) {
+    table.rows.push_back(
+        {shortest_cell(r.t), shortest_cell(r.q[0]), shortest_cell(r.q[1]), shortest_cell(r.q[2]),
+         shortest_cell(r.q[3]), shortest_cell(r.omega_body.x()), shortest_cell(r.omega_body.y()),
+         shortest_cell(r.omega_body.z()), shortest_cell(r.omega_world.x()),
+         shortest_cell(r.omega_world.y()), shortest_cell(r.omega_world.z()), shortest_cell(r.L.x()),
+         shortest_cell(r.L.y()), shortest_cell(r.L.z()), shortest_cell(r.E)});
+  }
+  return table;
+}
+
+std::string scenario_file_text(const ExactMotion& motion) {
+  return json_text(scenario_json(motion), "flipcheck scenario", JsonLayout::indented) + "\n";
+}
+
+std::string exact_motion_file_text(const ExactMotion& motion) {
+  return csv_text(exact_motion_csv(motion), "flipcheck exact motion CSV");
 }
 
 }  // namespace bookspin::jobs

@@ -2,9 +2,12 @@
 // Physics only: a conformance scenario's start and its exact motion at every step (`bookspin
 // flipcheck export`, docs/flipcheck.md; docs/physics.md §8), as a value the product writes.
 #include <Eigen/Core>
+#include <string>
 #include <vector>
 
-#include "analysis/conformance.hpp"
+#include "analysis/judgement.hpp"
+#include "common/csv_writer.hpp"
+#include "common/json_writer.hpp"
 #include "common/stop.hpp"
 
 namespace bookspin::jobs {
@@ -32,5 +35,19 @@ struct ExactMotion {
 /// step n = 0 … steps, t = n·dt as a product. `stop` is polled every few thousand rows and
 /// throws Interrupted.
 ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop = {});
+
+/// The scenario file's JSON (docs/flipcheck.md, "export: what an engine needs"): units, mass,
+/// principal moments, q0, ω0 in the body and the world frame, dt, steps.
+JsonValue scenario_json(const ExactMotion& motion);
+
+/// The exact motion's CSV: t,qw,qx,qy,qz,wx,wy,wz (ω body frame), then
+/// wx_world,wy_world,wz_world,Lx,Ly,Lz (world frame) and E; shortest round-trip numbers.
+CsvTable exact_motion_csv(const ExactMotion& motion);
+
+/// The bytes of OUT/<scenario>.json (scenario_json, indented, a newline at the end) and of
+/// OUT/<scenario>-exact.csv (exact_motion_csv), as `flipcheck export` writes them and the
+/// explorer page offers them for download (web/bindings.cpp): one writer of each. No I/O.
+std::string scenario_file_text(const ExactMotion& motion);
+std::string exact_motion_file_text(const ExactMotion& motion);
 
 }  // namespace bookspin::jobs

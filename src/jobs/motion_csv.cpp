@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
+#include <string>
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
-#include "common/text_file.hpp"
+#include "common/text_lines.hpp"
 
 namespace bookspin::jobs {
 
@@ -27,6 +28,42 @@ std::vector<std::string_view> cells_of(std::string_view line) {
     start = comma + 1;
   }
   return cells;
+}
+
+/// `cell` as a finite double, or false: a decimal number (an optional sign, digits with an
+/// optional point, an optional exponent), read by strtod (correctly rounded, "C" locale), as
+/// std::from_chars reads one (which emscripten's libc++ lacks for doubles: this parser is
+/// compiled into the explorer page too). Refused: anything else (hex, "inf", "nan", spaces
+/// within), a value beyond the doubles and one so small that it reads as 0 (from_chars'
+/// result_out_of_range).
+bool finite_number(std::string_view cell, double& out) {
+  std::size_t i = 0;
+  if (i < cell.size() && (cell[i] == '+' || cell[i] == '-')) ++i;
+  bool digits = false, nonzero = false;
+  const auto digit_run = [&] {
+    while (i < cell.size() && cell[i] >= '0' && cell[i] <= '9') {
+      digits = true;
+      nonzero = nonzero || cell[i] != '0';
+      ++i;
+    }
+  };
+  digit_run();
+  if (i < cell.size() && cell[i] == '.') {
+    ++i;
+    digit_run();
+  }
+  if (!digits) return false;
+  if (i < cell.size() && (cell[i] == 'e' || cell[i] == 'E')) {
+    ++i;
+    if (i < cell.size() && (cell[i] == '+' || cell[i] == '-')) ++i;
+    const std::size_t exponent = i;
+    while (i < cell.size() && cell[i] >= '0' && cell[i] <= '9') ++i;
+    if (i == exponent) return false;
+  }
+  if (i != cell.size()) return false;
+  const std::string text(cell);
+  out = std::strtod(text.c_str(), nullptr);
+  return std::isfinite(out) && (out != 0.0 || !nonzero);
 }
 
 /// The index of the first of `names` in `header`, or nullopt.
@@ -96,11 +133,7 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
       const std::string_view cell = cells[at[k]];
       const std::string column_name(names[k]);
       if (cell.empty()) throw InputError(file, line_number, column_name, "empty cell");
-      const char* first = cell.data();
-      const char* last = first + cell.size();
-      if (*first == '+') ++first;
-      const auto [ptr, ec] = std::from_chars(first, last, v[k]);
-      if (ec != std::errc() || ptr != last || !std::isfinite(v[k])) {
+      if (!finite_number(cell, v[k])) {
         throw InputError(file, line_number, column_name,
                          "\"" + std::string(cell) + "\" is not a finite number");
       }
@@ -154,10 +187,6 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
   if (header.empty()) throw InputError(file, 0, "", "no header row (t,qw,qx,qy,qz,wx,wy,wz)");
   if (motion.rows.empty()) throw InputError(file, line_number, "", "no rows after the header");
   return motion;
-}
-
-MotionFile read_motion_csv(const std::filesystem::path& path, double dt, long long steps) {
-  return parse_motion_csv(read_text_file(path, "the motion file"), path.string(), dt, steps);
 }
 
 }  // namespace bookspin::jobs

@@ -1,12 +1,14 @@
 #pragma once
 // The motion file the conformance kit judges (`bookspin flipcheck judge`, docs/flipcheck.md,
-// "The motion file"): a CSV written by any engine, read into analysis::MotionSample rows.
+// "The motion file"): a CSV written by any engine, read into analysis::MotionSample rows. The
+// parser (motion_csv.cpp) is pure, text in and rows out, and goes into the explorer page's
+// WebAssembly (web/build-wasm.sh); reading the file is motion_file.cpp's.
 #include <filesystem>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "analysis/conformance.hpp"
+#include "analysis/judgement.hpp"
 
 namespace bookspin::jobs {
 
@@ -36,7 +38,8 @@ struct MotionFile {
 MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
                             long long steps);
 
-/// parse_motion_csv() of the file at `path` (read whole; InputError when it cannot be read).
+/// parse_motion_csv() of the file at `path`, read whole (motion_file.cpp); InputError when it
+/// cannot be read.
 MotionFile read_motion_csv(const std::filesystem::path& path, double dt, long long steps);
 
 }  // namespace bookspin::jobs

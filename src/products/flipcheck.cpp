@@ -20,8 +20,6 @@ namespace bookspin::products {
 
 namespace {
 
-JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.y()}, {v.z()}}}; }
-
 /// Every motion of one scenario judged: the files (read first, so a bad one fails before any
 /// run), then the methods, each run from the scenario's start a row every steps_per_frame
 /// steps with the scene's other model settings. `names`: each file's name in the tables.
@@ -66,48 +64,6 @@ FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_d
           out_dir / scene.name / "flipcheck-export-manifest.json"};
 }
 
-JsonValue scenario_json(const jobs::ExactMotion& m) {
-  const analysis::Scenario& s = m.scenario;
-  JsonObject units{{"time", {std::string("time unit (any: the motion scales with 1/time)")}},
-                   {"length", {std::string("length unit")}},
-                   {"mass", {std::string("mass unit")}},
-                   {"angle", {std::string("radian")}},
-                   {"angular_velocity", {std::string("rad per time unit")}},
-                   {"moments", {std::string("mass * length^2")}}};
-  JsonObject object{
-      {"scenario", {s.name}},
-      {"units", {std::move(units), true}},
-      {"mass", {m.mass}},
-      {"principal_moments", vector_json(s.body.moments)},
-      {"principal_axes", {std::string("body x, y, z (the moments are about these axes)")}},
-      {"q0", {JsonArray{{1.0}, {0.0}, {0.0}, {0.0}}}},
-      {"q_convention", {std::string("w, x, y, z; body to world")}},
-      {"omega0_body", vector_json(m.omega0_body)},
-      {"omega0_world", vector_json(m.omega0_world)},
-      {"dt", {JsonNumber{s.dt, NumberStyle::shortest}}},
-      {"steps", {static_cast<std::int64_t>(s.steps)}},
-      {"gravity", {std::string("none; no damping, no contacts")}},
-      {"exact_motion", {s.name + "-exact.csv"}},
-  };
-  return {std::move(object), true};
-}
-
-CsvTable exact_motion_csv(const jobs::ExactMotion& m) {
-  CsvTable table;
-  table.columns = {"t",        "qw",       "qx",       "qy", "qz", "wx", "wy", "wz",
-                   "wx_world", "wy_world", "wz_world", "Lx", "Ly", "Lz", "E"};
-  table.rows.reserve(m.rows.size());
-  for (const jobs::ExactMotionRow& r : m.rows) {
-    table.rows.push_back(
-        {shortest_cell(r.t), shortest_cell(r.q[0]), shortest_cell(r.q[1]), shortest_cell(r.q[2]),
-         shortest_cell(r.q[3]), shortest_cell(r.omega_body.x()), shortest_cell(r.omega_body.y()),
-         shortest_cell(r.omega_body.z()), shortest_cell(r.omega_world.x()),
-         shortest_cell(r.omega_world.y()), shortest_cell(r.omega_world.z()), shortest_cell(r.L.x()),
-         shortest_cell(r.L.y()), shortest_cell(r.L.z()), shortest_cell(r.E)});
-  }
-  return table;
-}
-
 cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
   const FlipcheckExportLayout layout = flipcheck_export_layout(job.out_dir, job.scene);
   const analysis::Scenario scenario = analysis::scenario_of(job.scene);
@@ -120,10 +76,8 @@ cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
                                     /*all_or_nothing=*/true};
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
-    const JsonValue start = scenario_json(motion);
-    const CsvTable table = exact_motion_csv(motion);
-    const std::string json = json_text(start, "flipcheck scenario", JsonLayout::indented) + "\n";
-    const std::string csv = csv_text(table, "flipcheck exact motion CSV");
+    const std::string json = jobs::scenario_file_text(motion);
+    const std::string csv = jobs::exact_motion_file_text(motion);
     output::prepare_output_dir(layout.json.parent_path());
     output::StagedFiles files;
     files.text(layout.json, json);

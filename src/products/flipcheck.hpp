@@ -29,14 +29,6 @@ struct FlipcheckExportLayout {
 FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_dir,
                                               const scene::Scene& scene);
 
-/// The scenario file's JSON (docs/flipcheck.md, "The scenario file"): units, mass, principal
-/// moments, q0, ω0 in the body and the world frame, dt, steps.
-JsonValue scenario_json(const jobs::ExactMotion& motion);
-
-/// The exact motion's CSV: t,qw,qx,qy,qz,wx,wy,wz (ω body frame), then
-/// wx_world,wy_world,wz_world,Lx,Ly,Lz (world frame) and E; shortest round-trip numbers.
-CsvTable exact_motion_csv(const jobs::ExactMotion& motion);
-
 struct FlipcheckExportJob {
   scene::Scene scene;  ///< the scenario (one model, no [[compare]])
   std::filesystem::path out_dir;

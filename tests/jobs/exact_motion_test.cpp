@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string>
 
+#include "analysis/conformance.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {

@@ -78,6 +78,19 @@ TEST(MotionCsv, EachBadFileIsOneLineNamingItsLineAndColumn) {
   EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,nan,3\n"),
             "run.csv:3: wy: \"nan\" is not a finite number");
   EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,2,\n"), "run.csv:3: wz: empty cell");
+  // A number as std::from_chars reads one (the parser is compiled where it has none for
+  // doubles, the explorer page): a sign, a point, an exponent; not hex, not "inf", not a value
+  // that reads as 0 or beyond the doubles.
+  for (const char* cell : {"0x1p3", "inf", "1e400", "1e-400", "+-1", "1e", "."})
+    EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1," + cell + ",3\n"),
+              "run.csv:3: wy: \"" + std::string(cell) + "\" is not a finite number")
+        << cell;
+  for (const auto& [cell, value] : std::initializer_list<std::pair<const char*, double>>{
+           {"+1.5", 1.5}, {"1.", 1.0}, {"-.5e-2", -0.005}, {"1E5", 1e5}, {"1e-310", 1e-310}}) {
+    const MotionFile m =
+        parse_motion_csv(head + row0 + "0.1,1,0,0,0,1," + cell + ",3\n", "run.csv", 0.1, 10);
+    EXPECT_EQ(m.rows[1].omega_body.y(), value) << cell;
+  }
   EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,2x,3\n"),
             "run.csv:3: wy: \"2x\" is not a finite number");
   EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,2\n"),

@@ -1,5 +1,6 @@
 // The page's hooks for its tests and benchmark (tests/browser/explorer_test.py,
-// tests/browser/explorer_engines_test.py, bench/explorer_bench.py): window.explorer.
+// tests/browser/explorer_engines_test.py, tests/browser/explorer_judge_test.py,
+// bench/explorer_bench.py): window.explorer.
 import { Runs } from './runs.js';
 
 /** The hooks over `app` (main.js) and its sphere; `fns`: main.js's rebuild, advance, draw,
@@ -50,6 +51,17 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     /** The sphere's view rotation (body → view), row-major 3×3. */
     sphereRotation: () => { const e = sphere.rotation.elements; return [0, 1, 2].map((i) => [e[i], e[i + 3], e[i + 6]]); },
     /** Wall-clock ns per step of a fresh run of `model`/`integrator` (benchmark). */
+    /** `bookspin flipcheck judge SCENARIO FILE` in the page (judge.js): a promise of the
+     * judgement of the motion CSV `csvText`, named `file`, against the exact motion of the page's
+     * scene `scenario`, keyed by the judgement CSV's columns (analysis::judgement_table: text
+     * as text, an empty cell null, the rest numbers); rejected with the command line's one
+     * line (without "bookspin: error: ") for a bad file. */
+    judgeMotion: (scenario, csvText, file = 'motion.csv') => app.judge.judge(scenario, csvText, file).then((j) => j.row),
+    /** {json, csv}: `bookspin flipcheck export`'s two files for `scenario`, as the panel
+     * downloads them, or {error}. */
+    judgeExport: (scenario) => app.judge.files(scenario),
+    /** The scenes the panel offers as scenarios. */
+    judgeScenarios: () => app.judge.scenes.map((s) => s.name),
     nsPerStep(model, integrator, normalize, steps) {
       const run = app.runs.startRun(app.state, model, integrator, normalize);
       const t0 = performance.now();

@@ -44,6 +44,8 @@ export function listenKeys(actions) {
   window.addEventListener('keydown', (ev) => {
     const typing = ev.target instanceof HTMLInputElement && ev.target.type !== 'checkbox' && ev.target.type !== 'range';
     if (typing || ev.ctrlKey || ev.metaKey || ev.altKey) return;
+    // The "Judge a motion" panel over the page (judge.js) takes the keys while it is open.
+    if (!document.getElementById('judge').hidden) return;
     const act = {
       Space: () => setPlaying(!actions.playing()),
       ArrowRight: () => seek(actions.time() + stepSize()),

@@ -3,7 +3,8 @@
 // measuring here: every number drawn comes from the WebAssembly module (docs/explorer.md).
 // This file wires the parts: state and URL (state.js), runs (runs.js), 3D view (view3d.js),
 // sphere (sphere.js), plots (plots.js) and the measured toss over both (panels.js), the readout
-// (readout.js), controls (controls.js), buttons and keys (keys.js), the work per frame (pacing.js);
+// (readout.js), controls (controls.js), buttons and keys (keys.js), the work per frame (pacing.js),
+// the "Judge a motion" panel (judge.js: bookspin flipcheck judge in the page);
 // the JavaScript engines, with --engines, come as window.BOOKSPIN_ENGINES (engines/).
 import { StateSpace } from './state.js';
 import { Pacer, FIRST_BUDGET_MS } from './pacing.js';
@@ -15,6 +16,7 @@ import { Panels } from './panels.js';
 import { Readout } from './readout.js';
 import { listenKeys } from './keys.js';
 import { Controls, VIEW_CONTROLS } from './controls.js';
+import { JudgePanel } from './judge.js';
 
 const $ = (id) => document.getElementById(id);
 /** While playing, the address is rewritten every 60 ms to 1 s, so that it keeps t. */
@@ -167,6 +169,7 @@ function startApp(wasm, engines) {
   window.addEventListener('resize', resize);
   document.addEventListener('fullscreenchange', resize);
 
+  app.judge = new JudgePanel(wasm, SCENES, () => app.state.scene);
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
   window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
   app.state = app.pacer.limit(app.controls.fit(app.state), base());

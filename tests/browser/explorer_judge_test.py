@@ -1,0 +1,292 @@
+#!/usr/bin/env python3
+"""The explorer page's "Judge a motion" panel (docs/explorer.md, docs/flipcheck.md) against the
+command line: `bookspin flipcheck judge` in headless Chromium, the same C++ compiled to
+WebAssembly (web/judge_bindings.cpp).
+
+Builds the page's program with web/build.sh BINARY_DIR, writes the page with `bookspin explore
+scenes/flipcheck/*.toml`, and checks:
+  - the panel offers every scenario of scenes/flipcheck/;
+  - for every scenario and several motions (the exact motion of `bookspin flipcheck export`;
+    `bookspin simulate` of rigid-matrix euler; and perturbed copies of the exact motion that
+    fail: ω scaled by 1 + 1e-3, the last half of the rows cut, the orientation turned away
+    about world z by 0.2·t/t_end rad, ω given in the world frame only), the page's judgement
+    through window.explorer.judgeMotion equals `bookspin flipcheck judge`'s CSV in every
+    column: text equal, an empty cell null, numbers to 1e-9 relative (ABS_FLOOR absolute for
+    the round-off-sized measures of a motion that is the exact one: see below);
+  - once through the panel itself: the file input given a path (send_keys), the verdict, the
+    failures in words and every number of the table equal to the command line's, and the
+    replay drawing both bodies (at least 2 % of its canvas);
+  - the scenario JSON and exact-motion CSV the panel downloads are `flipcheck export`'s bytes
+    (the JSON) and numbers (the CSV, to 1e-9);
+  - a bad motion file: the hook rejects with the command line's one line and the panel shows
+    it.
+Screenshots: BINARY_DIR/test-output/browser/explorer-judge-{1280x720,390x844}.png.
+
+Usage: explorer_judge_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
+Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
+under CI=true, where that is a failure (browser.py).
+"""
+import csv
+import io
+import json
+import math
+import subprocess
+import time
+from pathlib import Path
+
+from browser import (console_errors, fail, find_browser, open_browser, require, run, serve,
+                     test_arguments, wait_for)
+
+TOL = 1e-9
+# The exact motion judged against itself measures round-off: its orientation error is ~1e-16
+# rad, its drifts ~1e-15, computed natively with x87's 80-bit long double in the exact motion
+# and in the page with WebAssembly's 128-bit one (docs/explorer.md, "Speed"). Below this floor
+# two numbers agree whatever their ratio.
+ABS_FLOOR = 1e-13
+TEXT_COLUMNS = {"scenario", "motion", "verdict", "failures"}
+
+
+def read_csv(path):
+    rows = list(csv.reader(io.StringIO(Path(path).read_text())))
+    return rows[0], rows[1:]
+
+
+def write_csv(path, header, rows):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(header)
+        w.writerows(rows)
+
+
+def quat_mul(a, b):
+    aw, ax, ay, az = a
+    bw, bx, by, bz = b
+    return [aw * bw - ax * bx - ay * by - az * bz, aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw]
+
+
+def perturbed(exact_csv, folder, name):
+    """The exact motion's CSV turned into motions that fail: {file name: path}."""
+    header, rows = read_csv(exact_csv)
+    col = {c: i for i, c in enumerate(header)}
+    out = {}
+
+    def emit(tag, hdr, body):
+        path = folder / f"{name}-{tag}.csv"
+        write_csv(path, hdr, body)
+        out[path.name] = path
+
+    scaled = [list(r) for r in rows]
+    for r in scaled:
+        for c in ("wx", "wy", "wz"):
+            r[col[c]] = repr(float(r[col[c]]) * 1.001)
+    emit("omega-scaled", header, scaled)
+    emit("cut", header, rows[: len(rows) // 2])
+    t_end = float(rows[-1][col["t"]])
+    turned = []
+    for r in rows:
+        angle = 0.2 * float(r[col["t"]]) / t_end
+        q = [float(r[col[c]]) for c in ("qw", "qx", "qy", "qz")]
+        q = quat_mul([math.cos(angle / 2), 0.0, 0.0, math.sin(angle / 2)], q)
+        turned.append([r[col["t"]], *map(repr, q), r[col["wx"]], r[col["wy"]], r[col["wz"]]])
+    emit("turned", ["t", "qw", "qx", "qy", "qz", "wx", "wy", "wz"], turned)
+    keep = ["t", "qw", "qx", "qy", "qz", "wx_world", "wy_world", "wz_world"]
+    emit("world", keep, [[r[col[c]] for c in keep] for r in rows])
+    return out
+
+
+def same_number(got, expected):
+    return abs(got - expected) <= TOL * max(abs(got), abs(expected)) or \
+        abs(got - expected) <= ABS_FLOOR
+
+
+def compare_row(where, page, header, cli):
+    """fail() unless the page's judgement (a dict) equals the command line's CSV row."""
+    if sorted(page) != sorted(header):
+        fail(f"{where}: the page's keys {sorted(page)} are not the judgement CSV's {sorted(header)}")
+    for column, cell in zip(header, cli):
+        got = page[column]
+        if column in TEXT_COLUMNS:
+            ok = got == cell
+        elif cell == "":
+            ok = got is None
+        else:
+            ok = isinstance(got, (int, float)) and same_number(float(got), float(cell))
+        if not ok:
+            fail(f"{where}: column {column}: page {got!r}, bookspin flipcheck judge {cell!r}")
+
+
+def judge_in_page(driver, base_url, scenario, file_name):
+    """window.explorer.judgeMotion of the served file `file_name`: {ok, row} or {error}."""
+    return driver.execute_async_script("""
+        const [url, scenario, name, done] = arguments;
+        fetch(url).then((r) => r.text())
+          .then((text) => window.explorer.judgeMotion(scenario, text, name))
+          .then((row) => done({ok: true, row}), (e) => done({ok: false, error: String(e.message)}));
+    """, base_url + "motions/" + file_name, scenario, file_name)
+
+
+def main():
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import Select
+
+    bookspin, source, binary = test_arguments(__doc__)
+    chromium, driver_path = find_browser()
+    require("em++", "npm")
+
+    out = binary / "test-output" / "explorer-judge"
+    motions = out / "motions"
+    shots = binary / "test-output" / "browser"
+    for d in (out, motions, shots):
+        d.mkdir(parents=True, exist_ok=True)
+    scenes = sorted((source / "scenes" / "flipcheck").glob("*.toml"))
+    run(["bash", str(source / "web" / "build.sh"), str(binary)])
+    run([bookspin, "explore", *map(str, scenes), "-o", str(out)])
+    run([bookspin, "flipcheck", "export", *map(str, scenes), "-o", str(motions)])
+
+    # Every scenario's motions, and the command line's judgement of them, one CSV a scenario.
+    cases = {}
+    for scene in scenes:
+        name = scene.stem
+        exact = motions / f"{name}-exact.csv"
+        files = {exact.name: exact}
+        simulated = motions / f"{name}-rigid-matrix-euler.csv"
+        # stdout alone: a method that diverges says so on stderr (its rows end there).
+        sim = subprocess.run([bookspin, "simulate", str(scene), "--set", 'model.kind="rigid-matrix"',
+                              "--set", 'model.integrator="euler"'],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        if sim.returncode != 0:
+            fail(f"bookspin simulate {scene.name} exited {sim.returncode}: {sim.stderr}")
+        simulated.write_text(sim.stdout)
+        files[simulated.name] = simulated
+        files.update(perturbed(exact, motions, name))
+        judged = out / "cli"
+        run([bookspin, "flipcheck", "judge", str(scene), *sorted(files), "-o", str(judged),
+             "--force"], cwd=motions)
+        header, rows = read_csv(judged / f"{name}-judge.csv")
+        cases[name] = (header, {r[header.index("motion")]: r for r in rows})
+    bad = motions / "bad.csv"
+    bad.write_text("t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.01,1,0,0,0,1,nan,3\n")
+    r = subprocess.run([bookspin, "flipcheck", "judge", str(source / "scenes" / "flipcheck" /
+                        "mujoco-test-box.toml"), "bad.csv", "-o", str(out / "bad")],
+                       cwd=motions, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    cli_line = r.stderr.strip()
+    if r.returncode != 2 or not cli_line.startswith("bookspin: error: bad.csv:3: wy:"):
+        fail(f"bookspin flipcheck judge of bad.csv: exit {r.returncode}, {cli_line!r}")
+
+    # The page and the motion files served from one origin (a page opened from disk may not
+    # fetch), the files fetched by the page itself rather than sent through the driver.
+    with serve(out) as base_url, \
+            open_browser(chromium, driver_path, size=(1280, 720),
+                         exact_viewport=True) as driver:
+        driver.get(base_url + "explorer.html?scene=mujoco-test-box")
+        if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+            fail(f"the page never became ready: {driver.get_log('browser')}")
+        offered = driver.execute_script("return window.explorer.judgeScenarios()")
+        if sorted(offered) != sorted(cases):
+            fail(f"the panel offers {offered}, not every scenario of scenes/flipcheck: {sorted(cases)}")
+
+        # 1. Through the hook: every scenario, every motion, every column.
+        checked = 0
+        for name, (header, cli_rows) in cases.items():
+            t0 = time.monotonic()
+            for file_name, cli in cli_rows.items():
+                got = judge_in_page(driver, base_url, name, file_name)
+                if not got["ok"]:
+                    fail(f"{name} {file_name}: the page refused it: {got['error']}")
+                compare_row(f"{name} {file_name}", got["row"], header, cli)
+                checked += 1
+            verdicts = {f: c[header.index("verdict")] for f, c in cli_rows.items()}
+            print(f"{name}: {len(cli_rows)} motions equal ({time.monotonic() - t0:.1f} s): {verdicts}")
+            if "fail" not in verdicts.values() or verdicts[f"{name}-exact.csv"] != "pass":
+                fail(f"{name}: the exact motion must pass and the perturbed ones fail: {verdicts}")
+        print(f"hook: {checked} judgements equal to bookspin flipcheck judge's")
+
+        # 2. A bad file: the command line's one line.
+        got = judge_in_page(driver, base_url, "mujoco-test-box", "bad.csv")
+        if got.get("ok") or "bookspin: error: " + got["error"] != cli_line:
+            fail(f"bad.csv: the page said {got}, the command line {cli_line!r}")
+
+        # 3. Through the panel: the file input, the verdict, the failures, the table.
+        driver.execute_script("document.getElementById('judgeOpen').click()")
+        name = "book-intermediate-0.2"
+        Select(driver.find_element(By.ID, "judgeScenario")).select_by_value(name)
+        header, cli_rows = cases[name]
+        file_name = f"{name}-turned.csv"
+        driver.find_element(By.ID, "judgeFile").send_keys(str((motions / file_name).resolve()))
+        shown = wait_for(driver, "return !document.getElementById('judgeResult').hidden", bool, 120)
+        if not shown:
+            fail(f"the panel showed no judgement: {driver.find_element(By.ID, 'judgeError').text}")
+        cli = dict(zip(header, cli_rows[file_name]))
+        verdict = driver.find_element(By.ID, "judgeVerdict").text
+        if not verdict.startswith("FAIL" if cli["verdict"] == "fail" else "PASS") or file_name not in verdict:
+            fail(f"the panel's verdict {verdict!r}, the command line's {cli['verdict']}")
+        failures = [li.text for li in driver.find_elements(By.CSS_SELECTOR, "#judgeFailures li")]
+        if "; ".join(failures) != cli["failures"]:
+            fail(f"the panel's failures {failures}, the command line's {cli['failures']!r}")
+        table = {tr.find_element(By.CSS_SELECTOR, "th code").text: tr.find_element(By.TAG_NAME, "td").text
+                 for tr in driver.find_elements(By.CSS_SELECTOR, "#judgeTable tr")}
+        for column, cell in cli.items():
+            if column in TEXT_COLUMNS:
+                continue
+            shown_cell = table.get(column)
+            if shown_cell is None or (cell == "" and shown_cell != "—") or \
+                    (cell != "" and not same_number(float(shown_cell), float(cell))):
+                fail(f"the panel's {column}: {shown_cell!r}, the command line's {cell!r}")
+        drawn = wait_for(driver, """
+            const c = document.getElementById('judgeReplay');
+            if (c.hidden || !c.width) return 0;
+            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            let n = 0;
+            for (let i = 3; i < d.length; i += 4) n += d[i] > 0;
+            return n / (c.width * c.height);""", lambda f: f > 0.02, 30)
+        if not drawn > 0.02:
+            fail(f"the replay draws no body beside the exact one: {drawn} of its pixels")
+        print(f"panel: {file_name} through the file input: {verdict}; replay draws "
+              f"{100 * drawn:.0f} % of its canvas")
+        time.sleep(1.0)
+        driver.save_screenshot(str(shots / "explorer-judge-1280x720.png"))
+
+        # 4. The downloads: flipcheck export's files.
+        files = driver.execute_script("return window.explorer.judgeExport(arguments[0])", name)
+        if files.get("json") != (motions / f"{name}.json").read_text():
+            fail(f"{name}: the page's scenario JSON is not flipcheck export's")
+        page_header, page_rows = list(csv.reader(io.StringIO(files["csv"])))[0], \
+            list(csv.reader(io.StringIO(files["csv"])))[1:]
+        cli_header, cli_exact = read_csv(motions / f"{name}-exact.csv")
+        if page_header != cli_header or len(page_rows) != len(cli_exact):
+            fail(f"{name}: the page's exact CSV has {page_header}, {len(page_rows)} rows")
+        for a, b in zip(page_rows, cli_exact):
+            if not all(same_number(float(x), float(y)) for x, y in zip(a, b)):
+                fail(f"{name}: exact CSV row {a} against flipcheck export's {b}")
+        print(f"downloads: {name}.json equal byte for byte, {name}-exact.csv to 1e-9")
+
+        # 5. The bad file through the panel.
+        Select(driver.find_element(By.ID, "judgeScenario")).select_by_value("mujoco-test-box")
+        driver.find_element(By.ID, "judgeFile").send_keys(str(bad.resolve()))
+        error = wait_for(driver, "return document.getElementById('judgeError').textContent",
+                         lambda t: t.startswith("error:"), 60)
+        if "bookspin: " + error != cli_line:
+            fail(f"the panel shows {error!r} for bad.csv, the command line {cli_line!r}")
+
+        # 6. A phone.
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                               {"width": 390, "height": 844, "deviceScaleFactor": 1, "mobile": True})
+        Select(driver.find_element(By.ID, "judgeScenario")).select_by_value(name)
+        driver.find_element(By.ID, "judgeFile").send_keys(str((motions / file_name).resolve()))
+        wait_for(driver, "return !document.getElementById('judgeResult').hidden", bool, 120)
+        time.sleep(1.0)
+        edges = driver.execute_script(
+            "return ['judgeBox', 'judgeTable', 'judgeReplay'].map((id) =>"
+            " document.getElementById(id).getBoundingClientRect().right)")
+        if max(edges) > 390:
+            fail(f"the panel is wider than the phone: box, table, replay end at {edges} px")
+        driver.save_screenshot(str(shots / "explorer-judge-390x844.png"))
+        errors = [e for e in console_errors(driver) if "favicon" not in e.get("message", "")]
+        if errors:
+            fail(f"console errors: {errors}")
+    print("explorer judge: the page judges as bookspin flipcheck judge does")
+
+
+if __name__ == "__main__":
+    main()

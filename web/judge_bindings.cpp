@@ -1,0 +1,148 @@
+// embind bindings of the conformance kit's judgement for the explorer page's "Judge a motion"
+// panel (docs/explorer.md, docs/flipcheck.md): `bookspin flipcheck judge` and `export` with the
+// same code compiled unchanged: the motion CSV's parser (src/jobs/motion_csv.cpp), the judgement
+// and its table (src/analysis/judgement.cpp), the exact motion and the scenario file
+// (src/jobs/exact_motion.cpp). This file only translates between them and JavaScript.
+//
+// A scenario comes from the page's data of one scene (src/products/explorer.hpp), as the page
+// hands it in: {name, book: {size, mass}, body (optional: the body whole), w (ω0, body frame,
+// rad per time unit), jiggle, seed, dt (time units), steps}.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "analysis/judgement.hpp"
+#include "body_spec.hpp"
+#include "common/errors.hpp"
+#include "jobs/exact_motion.hpp"
+#include "jobs/motion_csv.hpp"
+#include "physics/exact_solution.hpp"
+
+namespace {
+
+using bookspin::InputError;
+using bookspin::analysis::Scenario;
+using emscripten::val;
+
+/// The scenario of `spec` (see the head of this file). Throws InputError where it is none
+/// (as analysis::scenario_of: a body at rest; a run of no step).
+Scenario scenario_of(const val& spec) {
+  Scenario s;
+  s.name = spec["name"].as<std::string>();
+  if (spec["body"].isUndefined() || spec["body"].isNull()) {
+    const val book = spec["book"];
+    const std::vector<double> size = emscripten::vecFromJSArray<double>(book["size"]);
+    if (size.size() != 3) throw std::invalid_argument("book.size: expected 3 numbers");
+    s.body =
+        bookspin::web::make_body("book", book["mass"].as<double>(), 1.0, size[0], size[1], size[2]);
+  } else {
+    s.body = bookspin::web::body_of(spec["body"]);
+  }
+  const std::vector<double> w = emscripten::vecFromJSArray<double>(spec["w"]);
+  if (w.size() != 3) throw std::invalid_argument("w: expected 3 numbers");
+  s.initial.omega0_body = {w[0], w[1], w[2]};
+  s.initial.jiggle = spec["jiggle"].as<double>();
+  s.initial.seed = static_cast<std::uint64_t>(spec["seed"].as<double>());
+  s.dt = spec["dt"].as<double>();
+  s.steps = static_cast<long long>(spec["steps"].as<double>());
+  if (s.initial.omega0_body.isZero() && s.initial.jiggle == 0.0)
+    throw InputError(s.name + ": flipcheck: the body is at rest: nothing to judge");
+  if (!(s.dt > 0.0) || s.steps < 1)
+    throw InputError(s.name + ": flipcheck: a scenario needs dt > 0 and at least one step");
+  return s;
+}
+
+/// {error: the one line} for an InputError (what `bookspin flipcheck judge` prints after
+/// "bookspin: error: "), {error: "internal error: …"} for anything else.
+template <typename F>
+val guarded(F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    val out = val::object();
+    out.set("error", std::string(e.what()));
+    return out;
+  } catch (const std::exception& e) {
+    val out = val::object();
+    out.set("error", std::string("internal error: ") + e.what());
+    return out;
+  }
+}
+
+/// The motion CSV `text` (named `file`, as `judge` names it: the file's name) judged against
+/// the exact motion of the scenario `spec`: {columns, cells (the judgement CSV's row, as text:
+/// analysis::judgement_table), line (analysis::verdict_line), failures}, or {error}.
+val judge_motion(const val& spec, const std::string& text, const std::string& file) {
+  return guarded([&] {
+    const Scenario s = scenario_of(spec);
+    const bookspin::jobs::MotionFile motion =
+        bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps);
+    const bookspin::analysis::Conformance c = bookspin::analysis::judge_motion(s, motion.rows);
+    const bookspin::CsvTable table = bookspin::analysis::judgement_table(s, {{file, file, c}});
+    val columns = val::array(), cells = val::array(), failures = val::array();
+    for (const std::string& column : table.columns) columns.call<void>("push", column);
+    // The row as the command line writes it (the one CSV writer), read back into its cells.
+    const std::string csv = bookspin::csv_text(table, "flipcheck judge CSV");
+    const std::size_t row = csv.find('\n') + 1;
+    for (const std::string& cell : bookspin::csv_cells(csv.substr(row, csv.size() - row - 1)))
+      cells.call<void>("push", cell);
+    for (const std::string& f : c.failures) failures.call<void>("push", f);
+    val out = val::object();
+    out.set("columns", columns);
+    out.set("cells", cells);
+    out.set("line", bookspin::analysis::verdict_line(c));
+    out.set("failures", failures);
+    return out;
+  });
+}
+
+/// The motion of `text` and the exact one at its rows, for replaying them side by side:
+/// {t (time units), q (4×N: w, x, y, z of each row, body → world, normalized), qExact (4×N,
+/// the exact motion's at the same t)}, or {error}.
+val motion_poses(const val& spec, const std::string& text, const std::string& file) {
+  return guarded([&] {
+    const Scenario s = scenario_of(spec);
+    const bookspin::jobs::MotionFile motion =
+        bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps);
+    const bookspin::physics::ExactRotation exact(s.body.moments,
+                                                 bookspin::analysis::start_omega(s));
+    std::vector<double> t, q, q_exact;
+    for (const bookspin::analysis::MotionSample& row : motion.rows) {
+      const double time = static_cast<double>(row.step) * s.dt;
+      t.push_back(time);
+      const Eigen::Quaterniond a = row.q.normalized();
+      const Eigen::Quaterniond b(exact.orientation(time));
+      q.insert(q.end(), {a.w(), a.x(), a.y(), a.z()});
+      q_exact.insert(q_exact.end(), {b.w(), b.x(), b.y(), b.z()});
+    }
+    val out = val::object();
+    out.set("t", val::array(t));
+    out.set("q", val::array(q));
+    out.set("qExact", val::array(q_exact));
+    return out;
+  });
+}
+
+/// The files `bookspin flipcheck export` writes for the scenario `spec`, byte for byte:
+/// {json: OUT/<scenario>.json, csv: OUT/<scenario>-exact.csv}, or {error}.
+val export_files(const val& spec) {
+  return guarded([&] {
+    const bookspin::jobs::ExactMotion m = bookspin::jobs::exact_motion(scenario_of(spec));
+    val out = val::object();
+    out.set("json", bookspin::jobs::scenario_file_text(m));
+    out.set("csv", bookspin::jobs::exact_motion_file_text(m));
+    return out;
+  });
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(bookspin_judge) {
+  emscripten::function("judgeMotion", &judge_motion);
+  emscripten::function("motionPoses", &motion_poses);
+  emscripten::function("flipcheckExport", &export_files);
+}

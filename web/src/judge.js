@@ -1,0 +1,166 @@
+// The "Judge a motion" panel (docs/explorer.md, docs/flipcheck.md): `bookspin flipcheck judge`
+// in the page. A scenario is one of the page's scenes (bookspin explore wrote its data); its
+// scenario JSON and exact-motion CSV come from the same code as `bookspin flipcheck export`,
+// and an engine's motion CSV is judged by the same code as `judge` (web/judge_bindings.cpp:
+// the motion CSV's parser, analysis::judge_motion and its table, compiled to WebAssembly).
+// Nothing is measured here: this module hands text to the module and writes out its answer.
+import { Replay } from './replay.js';
+
+const $ = (id) => document.getElementById(id);
+/** The judgement CSV's columns that hold text; every other one holds a number or nothing. */
+const TEXT_COLUMNS = ['scenario', 'motion', 'verdict', 'failures'];
+/** What each column says, for the panel's table (docs/flipcheck.md, "What judge measures"). */
+const WORDS = {
+  stride: 'steps between rows', last_step: 'last row (step)', start_error: '|ω(0) − ω0|/|ω0|',
+  energy_drift: 'max |E/E0 − 1|', L_drift: 'max ||L|/|L0| − 1|', flips: 'turn-overs',
+  flips_exact: 'exact turn-overs', first_flip: 'first turn-over (t)', first_flip_exact: 'exact first turn-over (t)',
+  first_flip_error: '|first/exact − 1|', orientation_error: 'orientation error at the end (rad)',
+  stable_spin: 'stable spin (1: yes)', tumble_time: 'tumbles at (t)', separatrix_ratio_drift: 'max |r/r0 − 1|, r = 2E·I2/L²',
+  separatrix_approach: 'way to the separatrix (max)',
+};
+
+/** Whether a scene of the page is a conformance scenario, as `flipcheck` takes one: one model
+ * (no comparison, none of its tiles left out), no air drag, not at rest. */
+export function isScenario(scene) {
+  const s = scene.state;
+  const still = s.w.every((x) => x === 0) && !(s.jiggle > 0);
+  return !s.compare && !scene.left_out && (s.drag || 'none') === 'none' && !still;
+}
+
+/** The scenario of a scene, as web/judge_bindings.cpp reads it: its body (the book's size and
+ * mass, or the body whole), ω0 (body frame), jiggle and seed, dt, and its steps, (frames − 1)·
+ * steps_per_frame, from the scene's duration (that many steps of dt, written by bookspin). */
+export function scenarioSpec(scene) {
+  const s = scene.state;
+  return {
+    name: scene.name, book: scene.book, body: scene.body || null, w: s.w, jiggle: s.jiggle,
+    seed: s.seed, dt: s.dt, steps: Math.round(scene.duration / s.dt),
+  };
+}
+
+/** The module's answer {columns, cells} as one object keyed by the judgement CSV's columns:
+ * text as text, an empty cell null, every other cell a number. */
+function keyed({ columns, cells }) {
+  const out = {};
+  columns.forEach((c, i) => {
+    out[c] = TEXT_COLUMNS.includes(c) ? cells[i] : cells[i] === '' ? null : Number(cells[i]);
+  });
+  return out;
+}
+
+/** Saves `text` as a file named `name` (a download; the page opens from disk). */
+function download(name, text, type) {
+  const a = document.createElement('a');
+  a.href = URL.createObjectURL(new Blob([text], { type }));
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  setTimeout(() => { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
+}
+
+/** The panel over the page's scenes (window.BOOKSPIN_SCENES) and the WebAssembly module. */
+export class JudgePanel {
+  constructor(wasm, scenes, currentScene) {
+    this.wasm = wasm;
+    this.scenes = scenes.filter(isScenario);
+    this.replay = new Replay($('judgeReplay'), $('judgeReplayTime'));
+    const menu = $('judgeScenario');
+    menu.innerHTML = '';
+    for (const s of this.scenes) menu.add(new Option(s.title ? `${s.name}: ${s.title}` : s.name, s.name));
+    $('judgeOpen').hidden = this.scenes.length === 0;
+    $('judgeOpen').addEventListener('click', () => this.open(currentScene()));
+    $('judgeClose').addEventListener('click', () => this.close());
+    window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('judge').hidden) this.close(); });
+    menu.addEventListener('change', () => this.clear());
+    $('judgeJson').addEventListener('click', () => this.exportFile('json'));
+    $('judgeExact').addEventListener('click', () => this.exportFile('csv'));
+    $('judgeFile').addEventListener('change', (e) => { if (e.target.files[0]) this.judgeFile(e.target.files[0]); });
+    const drop = $('judgeDrop');
+    drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('over'); });
+    drop.addEventListener('dragleave', () => drop.classList.remove('over'));
+    drop.addEventListener('drop', (e) => {
+      e.preventDefault();
+      drop.classList.remove('over');
+      if (e.dataTransfer.files[0]) this.judgeFile(e.dataTransfer.files[0]);
+    });
+  }
+
+  scene(name) { return this.scenes.find((s) => s.name === name); }
+
+  /** Opens the panel on scenario `name` (the page's scene, where it is one). */
+  open(name) {
+    if (this.scene(name)) $('judgeScenario').value = name;
+    $('judge').hidden = false;
+  }
+
+  close() { $('judge').hidden = true; this.replay.stop(); }
+
+  clear() {
+    $('judgeResult').hidden = true;
+    $('judgeError').textContent = '';
+    this.replay.stop();
+  }
+
+  /** The scenario JSON or the exact-motion CSV of the chosen scenario, as `bookspin flipcheck
+   * export` writes it, downloaded as <scenario>.json or <scenario>-exact.csv. */
+  exportFile(kind) {
+    const scene = this.scene($('judgeScenario').value);
+    if (!scene) return;
+    $('judgeBusy').textContent = 'making the exact motion…';
+    setTimeout(() => {
+      const files = this.files(scene.name);
+      $('judgeBusy').textContent = '';
+      if (files.error) { $('judgeError').textContent = `error: ${files.error}`; return; }
+      if (kind === 'json') download(`${scene.name}.json`, files.json, 'application/json');
+      else download(`${scene.name}-exact.csv`, files.csv, 'text/csv');
+    }, 0);
+  }
+
+  /** {json, csv}: the files `bookspin flipcheck export` writes for scenario `name`, or {error}. */
+  files(name) {
+    const scene = this.scene(name);
+    return scene ? this.wasm.flipcheckExport(scenarioSpec(scene)) : { error: `${name}: no such scenario in this page` };
+  }
+
+  /** Judges `csvText` (named `file`, as `judge` names a motion by its file's name) against
+   * the exact motion of scenario `name`: a promise of the judgement keyed by the judgement
+   * CSV's columns, with `line` (the command line's verdict line) and `failures` (a list)
+   * beside them in `detail`; rejected with the command line's one line for a bad file. */
+  judge(name, csvText, file = 'motion.csv') {
+    return new Promise((resolve, reject) => {
+      const scene = this.scene(name);
+      if (!scene) { reject(new Error(`${name}: no such scenario in this page`)); return; }
+      const r = this.wasm.judgeMotion(scenarioSpec(scene), String(csvText), file);
+      if (r.error) reject(new Error(r.error)); else resolve({ row: keyed(r), line: r.line, failures: r.failures });
+    });
+  }
+
+  /** A file chosen or dropped: read, judged, shown, and replayed beside the exact motion. */
+  judgeFile(file) {
+    const name = $('judgeScenario').value;
+    this.clear();
+    $('judgeBusy').textContent = `judging ${file.name}…`;
+    file.text().then((text) => new Promise((ok) => setTimeout(ok, 0)).then(() => this.judge(name, text, file.name))
+      .then((j) => {
+        this.show(j);
+        const poses = this.wasm.motionPoses(scenarioSpec(this.scene(name)), text, file.name);
+        if (!poses.error) this.replay.start(poses, this.scene(name));
+      }))
+      .catch((e) => { $('judgeError').textContent = `error: ${e.message}`; })
+      .finally(() => { $('judgeBusy').textContent = ''; });
+  }
+
+  /** The verdict, the failures in words and every number, as `judge` gives them. */
+  show({ row, failures }) {
+    const pass = row.verdict === 'pass';
+    const verdict = $('judgeVerdict');
+    verdict.textContent = `${pass ? 'PASS' : 'FAIL'}: ${row.motion} on ${row.scenario}`;
+    verdict.className = pass ? 'pass' : 'fail';
+    $('judgeFailures').innerHTML = '';
+    for (const f of failures) $('judgeFailures').appendChild(Object.assign(document.createElement('li'), { textContent: f }));
+    const rows = Object.entries(row).filter(([c]) => !TEXT_COLUMNS.includes(c)).map(([c, v]) =>
+      `<tr><th><code>${c}</code><small>${WORDS[c] || ''}</small></th><td>${v === null ? '—' : v}</td></tr>`);
+    $('judgeTable').innerHTML = rows.join('');
+    $('judgeResult').hidden = false;
+  }
+}
