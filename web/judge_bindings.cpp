@@ -133,8 +133,9 @@ val export_files(const val& spec) {
   return guarded([&] {
     const bookspin::jobs::ExactMotion m = bookspin::jobs::exact_motion(scenario_of(spec));
     val out = val::object();
-    out.set("json", bookspin::jobs::scenario_file_text(m));
-    out.set("csv", bookspin::jobs::exact_motion_file_text(m));
+    const bookspin::jobs::ExportFiles files = bookspin::jobs::export_files(m);
+    out.set("json", files.json);
+    out.set("csv", files.csv);
     return out;
   });
 }

@@ -81,12 +81,11 @@ CsvTable exact_motion_csv(const ExactMotion& m) {
   return table;
 }
 
-std::string scenario_file_text(const ExactMotion& motion) {
-  return json_text(scenario_json(motion), "flipcheck scenario", JsonLayout::indented) + "\n";
-}
-
-std::string exact_motion_file_text(const ExactMotion& motion) {
-  return csv_text(exact_motion_csv(motion), "flipcheck exact motion CSV");
+ExportFiles export_files(const ExactMotion& motion) {
+  const JsonValue scenario = scenario_json(motion);
+  const CsvTable exact = exact_motion_csv(motion);
+  return {json_text(scenario, "flipcheck scenario", JsonLayout::indented) + "\n",
+          csv_text(exact, "flipcheck exact motion CSV")};
 }
 
 }  // namespace bookspin::jobs

@@ -44,10 +44,12 @@ JsonValue scenario_json(const ExactMotion& motion);
 /// wx_world,wy_world,wz_world,Lx,Ly,Lz (world frame) and E; shortest round-trip numbers.
 CsvTable exact_motion_csv(const ExactMotion& motion);
 
-/// The bytes of OUT/<scenario>.json (scenario_json, indented, a newline at the end) and of
-/// OUT/<scenario>-exact.csv (exact_motion_csv), as `flipcheck export` writes them and the
-/// explorer page offers them for download (web/bindings.cpp): one writer of each. No I/O.
-std::string scenario_file_text(const ExactMotion& motion);
-std::string exact_motion_file_text(const ExactMotion& motion);
+/// The bytes of the two files `flipcheck export` writes and the explorer page offers for
+/// download (web/judge_bindings.cpp): one writer of each. No I/O.
+struct ExportFiles {
+  std::string json;  ///< OUT/<scenario>.json: scenario_json, indented, a newline at the end
+  std::string csv;   ///< OUT/<scenario>-exact.csv: exact_motion_csv
+};
+ExportFiles export_files(const ExactMotion& motion);
 
 }  // namespace bookspin::jobs

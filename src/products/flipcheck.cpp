@@ -20,27 +20,38 @@ namespace bookspin::products {
 
 namespace {
 
-/// Every motion of one scenario judged: the files (read first, so a bad one fails before any
-/// run), then the methods, each run from the scenario's start a row every steps_per_frame
-/// steps with the scene's other model settings. `names`: each file's name in the tables.
-std::vector<analysis::JudgedMotion> judge_all(const scene::Scene& scene,
-                                              const analysis::Scenario& scenario,
-                                              const std::vector<std::filesystem::path>& files,
-                                              const std::vector<std::string>& names,
-                                              const std::vector<analysis::Method>& methods,
-                                              const StopPoll& stop) {
+/// The motion files of one scenario read, in order (a bad one is its one line, InputError).
+std::vector<jobs::MotionFile> read_all(const analysis::Scenario& scenario,
+                                       const std::vector<std::filesystem::path>& files) {
   std::vector<jobs::MotionFile> read;
   for (const std::filesystem::path& file : files)
     read.push_back(jobs::read_motion_csv(file, scenario.dt, scenario.steps));
+  return read;
+}
+
+/// Every motion of one scenario judged: the files' motions `read` (read_all, so that a bad
+/// file fails before any run), then the methods, each run from the scenario's start a row
+/// every steps_per_frame steps with the scene's other model settings. `names`: each file's
+/// name in the tables.
+std::vector<analysis::JudgedMotion> judge_all(const scene::Scene& scene,
+                                              const analysis::Scenario& scenario,
+                                              const std::vector<std::filesystem::path>& files,
+                                              const std::vector<jobs::MotionFile>& read,
+                                              const std::vector<std::string>& names,
+                                              const std::vector<analysis::Method>& methods,
+                                              const StopPoll& stop) {
+  // The methods run first, then every motion judged in the tables' order (files, methods).
+  std::vector<std::vector<analysis::MotionSample>> runs;
+  for (const analysis::Method& m : methods) {
+    runs.push_back(
+        analysis::simulated_motion(scenario, m, scene.model, scene.steps_per_frame, stop));
+    if (runs.back().empty()) throw InternalError("flipcheck: " + m.label + " gave no finite start");
+  }
   std::vector<analysis::JudgedMotion> judged;
   for (std::size_t i = 0; i < files.size(); ++i)
     judged.push_back({files[i], names[i], analysis::judge_motion(scenario, read[i].rows)});
-  for (const analysis::Method& m : methods) {
-    const auto rows =
-        analysis::simulated_motion(scenario, m, scene.model, scene.steps_per_frame, stop);
-    if (rows.empty()) throw InternalError("flipcheck: " + m.label + " gave no finite start");
-    judged.push_back({{}, m.label, analysis::judge_motion(scenario, rows)});
-  }
+  for (std::size_t i = 0; i < methods.size(); ++i)
+    judged.push_back({{}, methods[i].label, analysis::judge_motion(scenario, runs[i])});
   return judged;
 }
 
@@ -76,12 +87,11 @@ cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
                                     /*all_or_nothing=*/true};
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
-    const std::string json = jobs::scenario_file_text(motion);
-    const std::string csv = jobs::exact_motion_file_text(motion);
+    const jobs::ExportFiles texts = jobs::export_files(motion);
     output::prepare_output_dir(layout.json.parent_path());
     output::StagedFiles files;
-    files.text(layout.json, json);
-    files.text(layout.csv, csv);
+    files.text(layout.json, texts.json);
+    files.text(layout.csv, texts.csv);
     files.commit();
     return cache::Made{{layout.json, layout.csv}};
   });
@@ -95,13 +105,15 @@ FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir
 
 FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, job.scene);
-  const analysis::Scenario scenario = analysis::scenario_of(job.scene);
-  FlipcheckJudgeResult result;
-  result.judged =
-      judge_all(job.scene, scenario, job.motions, file_names(job.motions), job.methods, job.stop);
-  const CsvTable table = analysis::judgement_table(scenario, result.judged);
   JsonObject options;
   if (!job.methods.empty()) options.push_back({"methods", method_labels(job.methods)});
+  const std::vector<std::string> names = file_names(job.motions);
+  // The scenario derived, its motion files read (a bad one fails before any run), then judged.
+  const analysis::Scenario scenario = analysis::scenario_of(job.scene);
+  const std::vector<jobs::MotionFile> read = read_all(scenario, job.motions);
+  FlipcheckJudgeResult result;
+  result.judged = judge_all(job.scene, scenario, job.motions, read, names, job.methods, job.stop);
+  const CsvTable table = analysis::judgement_table(scenario, result.judged);
   const cache::CachedOutputs cached{job.scene.name + "-judge", layout.manifest, "flipcheck judge",
                                     std::move(options),        job.out_dir,     &job.scene,
                                     /*all_or_nothing=*/true,   job.motions};
@@ -229,11 +241,13 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
     files[best].push_back(file);
     motion_names[best].push_back(name);
   }
-  // Every motion file read before anything is judged or written: a bad one is its one line.
+  // Each scenario derived and its motion files read once, before anything is judged or
+  // written: a bad one is its one line.
+  std::vector<analysis::Scenario> scenarios;
+  std::vector<std::vector<jobs::MotionFile>> read;
   for (std::size_t i = 0; i < job.scenes.size(); ++i) {
-    const analysis::Scenario scenario = analysis::scenario_of(job.scenes[i]);
-    for (const std::filesystem::path& file : files[i])
-      jobs::read_motion_csv(file, scenario.dt, scenario.steps);
+    scenarios.push_back(analysis::scenario_of(job.scenes[i]));
+    read.push_back(read_all(scenarios[i], files[i]));
   }
   // Up to date: the same scenarios (each its canonical form, input files and bookspin build:
   // a scene's own head), methods and motion files (each name and SHA-256), so that an
@@ -262,11 +276,10 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
     for (std::size_t i = 0; i < job.scenes.size(); ++i) {
       stop_if_asked(job.stop, "flipcheck league");
       const scene::Scene& scene = job.scenes[i];
-      const analysis::Scenario scenario = analysis::scenario_of(scene);
-      LeagueColumn col{
-          scene.name, scene.title,
-          judge_all(scene, scenario, files[i], motion_names[i], job.methods, job.stop)};
-      CsvTable part = analysis::judgement_table(scenario, col.judged);
+      LeagueColumn col{scene.name, scene.title,
+                       judge_all(scene, scenarios[i], files[i], read[i], motion_names[i],
+                                 job.methods, job.stop)};
+      CsvTable part = analysis::judgement_table(scenarios[i], col.judged);
       table.columns = part.columns;
       for (auto& row : part.rows) table.rows.push_back(std::move(row));
       columns.push_back(std::move(col));

@@ -224,6 +224,8 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
     const Listed tabled(out, league.manifest);
     header.flipcheck_league = tabled(league.html);
     header.flipcheck_league_csv = tabled(league.csv);
+    if (const std::string page = if_there(out, explorer_page_path(out)); !page.empty())
+      header.flipcheck_judge_page = page + "#judge";
   }
   header.fits = fits_in(out);
   // Up to date: the same page but for its date (output/manifest.hpp).

@@ -198,7 +198,11 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
         << attr(header.flipcheck_league) << ">the league table</a>";
     if (!header.flipcheck_league_csv.empty())
       out << " · <a href=" << attr(header.flipcheck_league_csv) << ">its CSV</a>";
-    out << ".</p>\n</section>\n";
+    out << ".";
+    if (!header.flipcheck_judge_page.empty())
+      out << " Your engine's motion judged in the page, nothing installed: <a href="
+          << attr(header.flipcheck_judge_page) << ">judge a motion</a>.";
+    out << "</p>\n</section>\n";
   }
   if (!header.fits.empty()) write_fits(out, header.fits);
   for (const auto& e : entries) write_entry(out, e);

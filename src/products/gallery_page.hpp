@@ -58,6 +58,9 @@ struct GalleryHeader {
   /// manifest lists them (`bookspin flipcheck league`, docs/flipcheck.md); else empty.
   std::string flipcheck_league;
   std::string flipcheck_league_csv;
+  /// "explorer.html#judge", the explorer page's "Judge a motion" panel (docs/flipcheck.md),
+  /// where OUT/explorer.html is there; else empty.
+  std::string flipcheck_judge_page;
   /// The phone-toss lab's fits in OUT (one per OUT/<recording>/fit-manifest.json, by name),
   /// shown in a "Phone-toss lab" section after the league; none: no section.
   std::vector<GalleryFit> fits;

@@ -19,7 +19,9 @@ scenes/flipcheck/*.toml`, and checks:
   - the scenario JSON and exact-motion CSV the panel downloads are `flipcheck export`'s bytes
     (the JSON) and numbers (the CSV, to 1e-9);
   - a bad motion file: the hook rejects with the command line's one line and the panel shows
-    it.
+    it;
+  - a link to the panel, explorer.html#judge (the gallery's kit section), opens it on the
+    page's scenario.
 Screenshots: BINARY_DIR/test-output/browser/explorer-judge-{1280x720,390x844}.png.
 
 Usage: explorer_judge_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -206,6 +208,17 @@ def main():
         got = judge_in_page(driver, base_url, "mujoco-test-box", "bad.csv")
         if got.get("ok") or "bookspin: error: " + got["error"] != cli_line:
             fail(f"bad.csv: the page said {got}, the command line {cli_line!r}")
+
+        # 2b. A link to the panel (the gallery's kit section): explorer.html#judge opens it on
+        #     the page's scene.
+        driver.get(base_url + "explorer.html?scene=book-intermediate-0.05#judge")
+        if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+            fail(f"the page at #judge never became ready: {driver.get_log('browser')}")
+        opened = driver.execute_script(
+            "return [!document.getElementById('judge').hidden, document.getElementById('judgeScenario').value]")
+        if opened != [True, "book-intermediate-0.05"]:
+            fail(f"explorer.html#judge did not open the panel on the page's scenario: {opened}")
+        driver.execute_script("document.getElementById('judgeClose').click()")
 
         # 3. Through the panel: the file input, the verdict, the failures, the table.
         driver.execute_script("document.getElementById('judgeOpen').click()")

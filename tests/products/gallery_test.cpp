@@ -102,6 +102,13 @@ TEST(Gallery, LinksTheLeagueTableItsManifestLists) {
        {"id=\"flipcheck-league\"", "href=\"flipcheck-league.html\">the league table</a>",
         "href=\"flipcheck-league.csv\">its CSV</a>"})
     EXPECT_NE(html.find(linked), std::string::npos) << linked << '\n' << html;
+  // The page's judge panel is linked once the explorer page is there.
+  EXPECT_EQ(html.find("#judge"), std::string::npos) << html;
+  touch(out / "explorer.html");
+  make_gallery(job);
+  const std::string with_page = test::read_file(out / "index.html");
+  EXPECT_NE(with_page.find("href=\"explorer.html#judge\">judge a motion</a>"), std::string::npos)
+      << with_page;
 }
 
 // The phone-toss lab (`bookspin fit`): no section without a fit's manifest; with one, its CSVs

@@ -83,6 +83,9 @@ export class JudgePanel {
       drop.classList.remove('over');
       if (e.dataTransfer.files[0]) this.judgeFile(e.dataTransfer.files[0]);
     });
+    // A link to the panel: explorer.html#judge opens it (the gallery's kit section links it),
+    // once the page has its state.
+    if (location.hash === '#judge') queueMicrotask(() => this.open(currentScene()));
   }
 
   scene(name) { return this.scenes.find((s) => s.name === name); }
