@@ -21,6 +21,27 @@ namespace bookspin::products {
 
 namespace {
 
+/// `image` at half its width and height (odd sides rounded up), each pixel the mean of the
+/// 2×2 it covers: the page's book art. At 1024×1584 its cover's PNG was 1.5 MB and the page's
+/// HTML 6.2 MB, whose parse held back the first frame; the view draws the book a few hundred
+/// pixels tall, so half the pixels lose nothing seen (mipmaps shrink it further).
+RgbaImage half_size(const RgbaImage& image) {
+  RgbaImage half((image.width + 1) / 2, (image.height + 1) / 2);
+  for (int y = 0; y < half.height; ++y)
+    for (int x = 0; x < half.width; ++x)
+      for (int c = 0; c < 4; ++c) {
+        int sum = 0, count = 0;
+        for (int dy = 0; dy < 2; ++dy)
+          for (int dx = 0; dx < 2; ++dx)
+            if (2 * y + dy < image.height && 2 * x + dx < image.width) {
+              sum += image.row(2 * y + dy)[4 * (2 * x + dx) + c];
+              ++count;
+            }
+        half.row(y)[4 * x + c] = static_cast<std::uint8_t>((sum + count / 2) / count);
+      }
+  return half;
+}
+
 /// The members model, integrator and normalize of `m`, each name followed by `suffix` ("" for
 /// the page's first method, "2" for the one it compares with).
 void add_method(JsonObject& state, const physics::ModelConfig& m, const std::string& suffix) {
@@ -204,7 +225,8 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
   for (int f = 0; f < 4; ++f) {
     stop_if_asked(request.stop_signal, "explore scenes");
-    const RgbaImage image = render::generate_face_image(static_cast<render::FaceImage>(f));
+    const RgbaImage image =
+        half_size(render::generate_face_image(static_cast<render::FaceImage>(f)));
     book_art.push_back({faces[f], {output::data_url("image/png", output::encode_png(image, 6))}});
   }
 

@@ -2,10 +2,12 @@
 """The explorer (docs/explorer.md) as a class sees it: headless Chromium at 1280×720, the page
 written by `bookspin explore` from every scene. Checks:
 
-  - `?scene=exact-unstable-x` draws its first frame within 2 s of navigation, and the exact run
-    waits for nothing (its precession is a closed form, docs/physics.md §8):
-    `window.explorer.waiting()` is false within 1.5 s of navigation, no notice speaks of a
-    table, and played, the exact book turns at once; Reset, compare on, a change of the second method and a scrub back each hand the
+  - `?scene=exact-unstable-x`: the exact run waits for nothing (its precession is a closed
+    form, docs/physics.md §8): `window.explorer.waiting()` is false from the first frame on
+    (within WAIT_AFTER_FIRST_MS of it, a few animation frames; a precession table built after
+    the first frame kept it true for 5-17 s), no notice speaks of a table, and played, the
+    exact book turns at once. The times from navigation are printed, not judged: a cold
+    page's first frame is a timing of a shared machine (docs/explorer.md, "Speed", has them); Reset, compare on, a change of the second method and a scrub back each hand the
     page back within 1 s (the scrub 2 s), measured around the handler in the page;
   - the readout's t, flips and first flip at a computed font size of at least 32 px;
   - fig09 (rigid matrix) shows its first flip at 104.4 ± 0.01, the exact motion's first flip
@@ -24,8 +26,7 @@ import tomllib
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments, wait_for
 from explorer_test import EXPLORER_WINDOW, body_label_reach, load
 
-FIRST_FRAME_MS = 2000
-NOT_WAITING_MS = 1500
+WAIT_AFTER_FIRST_MS = 250
 CONTROL_BACK_MS = 1000
 SCRUB_BACK_MS = 2000
 BIG_PX = 32
@@ -70,11 +71,9 @@ def check_exact_scene(driver, page):
     text = notice(driver)
     print(f"exact-unstable-x: first frame {first:.0f} ms after navigation; waiting() false at "
           f"{not_waiting:.0f} ms; notice {text!r}")
-    if first > FIRST_FRAME_MS:
-        fail(f"first frame {first:.0f} ms after navigation, more than {FIRST_FRAME_MS}")
-    if not_waiting > NOT_WAITING_MS:
-        fail(f"window.explorer.waiting() still true {not_waiting:.0f} ms after navigation, "
-             f"more than {NOT_WAITING_MS}")
+    if not_waiting - first > WAIT_AFTER_FIRST_MS:
+        fail(f"window.explorer.waiting() still true {not_waiting - first:.0f} ms after the first "
+             f"frame, more than {WAIT_AFTER_FIRST_MS}: the exact run waits for something")
     if "precession" in text or "table" in text:
         fail(f"the notice speaks of a table to wait for: {text!r}")
     # Played for 0.5 s at the scene's speed, the exact run has moved: t advanced, and its L
