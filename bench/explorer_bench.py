@@ -2,8 +2,10 @@
 """The benchmark of the explorer page (docs/explorer.md): ns per step of each of the page's
 methods in WebAssembly (headless Chromium, the page's `explorer.nsPerStep` hook) against the
 native build on the same machine in the same run (`bookspin-bench --only explorer`, the same
-loop, scene, body, initial state, dt and step count), and the page's frames per second while
-playing at 1280×720.
+loop, scene, body, initial state, dt and step count), the page's frames per second while
+playing at 1280×720, and the Phone-toss lab's fit of a long recording (`--fit-minutes` of the
+sample recording's tosses at its 100 Hz, tiled; window.explorer.fitRecording) against
+`bookspin fit` of the same file (the program beside BOOKSPIN_BENCH), each the best of two.
 
 The native and the WebAssembly timings are taken in alternation, `--rounds` times, each side
 keeping its best (a shared machine disturbs both alike). Both are wall time. The frames per
@@ -120,6 +122,54 @@ def frames_per_second(driver, page, scene_name, seconds, profile):
     return info
 
 
+def long_recording(minutes, folder):
+    """The sample recording's samples (recordings/phone-on-book-synthetic, 100 Hz) repeated,
+    each copy after the last, until `minutes` of recording: a phyphox Raw Data.csv in `folder`
+    (its pause left out). Returns its path."""
+    lines = (ROOT / "recordings" / "phone-on-book-synthetic" / "Raw Data.csv").read_text().splitlines()
+    header, rows = lines[0], [line.split(",") for line in lines[1:] if line.strip()]
+    span = float(rows[-1][0]) - float(rows[0][0]) + 0.01
+    out, offset = [header], 0.0
+    while offset < 60 * minutes:
+        for r in rows:
+            t = float(r[0]) + offset
+            if t >= 60 * minutes:
+                break
+            out.append(",".join([repr(t)] + r[1:]))
+        offset += span
+    path = Path(folder) / "long-recording" / "Raw Data.csv"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text("\n".join(out) + "\n")
+    return path
+
+
+def fit_times(driver, bookspin, path):
+    """Seconds of wall time of `bookspin fit` of `path` and of the page's fit of the same bytes,
+    each the best of two; and the tosses each found."""
+    import base64
+    native, wasm, tosses = [], [], None
+    data = base64.b64encode(path.read_bytes()).decode()
+    name = f"{path.parent.name}/{path.name}"
+    for _ in range(2):
+        with tempfile.TemporaryDirectory() as out:
+            t0 = time.monotonic()
+            subprocess.run([bookspin, "fit", str(path), "-o", out, "--force"], check=True,
+                           stdout=subprocess.DEVNULL)
+            native.append(time.monotonic() - t0)
+        r = driver.execute_async_script("""
+            const [name, data, done] = arguments;
+            const bytes = Uint8Array.from(atob(data), (c) => c.charCodeAt(0));
+            const t0 = performance.now();
+            window.explorer.fitRecording(name, bytes).then(
+              (r) => done({s: (performance.now() - t0) / 1000, tosses: r.tosses.length}),
+              (e) => done({error: String(e.message)}));""", name, data)
+        if "error" in r:
+            sys.exit(f"explorer_bench: the page's fit failed: {r['error']}")
+        wasm.append(r["s"])
+        tosses = r["tosses"]
+    return min(native), min(wasm), tosses
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("page", help="a built explorer.html")
@@ -130,6 +180,8 @@ def main():
     ap.add_argument("--rounds", type=int, default=3, help="native/page alternations")
     ap.add_argument("--repetitions", type=int, default=3, help="timings per side per round")
     ap.add_argument("--seconds", type=float, default=5.0, help="wall time of the fps count")
+    ap.add_argument("--fit-minutes", type=float, default=5.0,
+                    help="minutes of the long recording the fit timing fits (0: none)")
     ap.add_argument("--fps-only", action="store_true",
                     help="only the frames per second (printed; no CSV written)")
     ap.add_argument("--machine", default=os.environ.get("BOOKSPIN_MACHINE") or machine_slug())
@@ -160,6 +212,11 @@ def main():
                     native[k] = min(native.get(k, n[k]), n[k])
                     wasm[k] = min(wasm.get(k, w[k]), w[k])
                 print(f"round {r + 1}/{a.rounds} done", file=sys.stderr)
+            fit = None
+            if a.fit_minutes > 0 and not a.fps_only:
+                bookspin = str(Path(a.bench).resolve().parent / "bookspin")
+                recording = long_recording(a.fit_minutes, profile)
+                fit = fit_times(driver, bookspin, recording)
             fps = frames_per_second(driver, page.as_uri(), scene_name, a.seconds, profile)
     finally:
         shutil.rmtree(profile, ignore_errors=True)
@@ -186,6 +243,14 @@ def main():
                          f"{fps['inner'][0]}x{fps['inner'][1]} window, {fps['frames']} frames in "
                          f"{fps['seconds']:.1f} s, browser CPU {fps['cpu_ms']:.0f} ms per frame, "
                          f"load average {fps['load']:.1f}, WebGL: {fps['renderer']}"})
+    if fit:
+        native_s, wasm_s, tosses = fit
+        rows.append({"model": "fit", "integrator": "", "steps": "", "wasm_ns_per_step": "",
+                     "native_ns_per_step": "", "ratio": f"{wasm_s / native_s:.2f}",
+                     "frames_per_second": "",
+                     "note": f"Phone-toss lab: {a.fit_minutes:g} min at 100 Hz ({tosses} tosses) "
+                             f"fitted in {wasm_s:.1f} s in the page, {native_s:.1f} s by bookspin "
+                             "fit (its charts and files included), wall time, best of 2"})
     for row in rows:
         row.update(machine=machine, date=date)
     out.parent.mkdir(parents=True, exist_ok=True)
@@ -197,7 +262,9 @@ def main():
     print(f"explorer bench: {machine}, {date}; scene {scene_name}, {a.steps} steps per timing, "
           f"best of {a.rounds}×{a.repetitions}, wall time")
     print(f"{'model':18} {'integrator':18} {'wasm ns':>9} {'native ns':>9} {'ratio':>6}")
-    for row in rows[:-1]:
+    for row in rows:
+        if row["model"] == "fit" or not row["steps"]:
+            continue
         mark = "" if row["model"] not in RIGID or float(row["ratio"]) <= 2.5 else "  > 2.5x"
         print(f"{row['model']:18} {row['integrator']:18} {row['wasm_ns_per_step']:>9} "
               f"{row['native_ns_per_step']:>9} {row['ratio']:>6}{mark}")
@@ -207,6 +274,9 @@ def main():
     print(f"browser CPU {fps['cpu_ms']:.0f} ms per frame (all its processes; load average "
           f"{fps['load']:.1f} on {os.cpu_count()} cores); main-thread ms per frame: " +
           ", ".join(f"{k} {v:.2f}" for k, v in fps["costs"].items()))
+    if fit:
+        print(f"fit: {fit[2]} tosses of {a.fit_minutes:g} min at 100 Hz: {fit[1]:.1f} s in the "
+              f"page, {fit[0]:.1f} s by bookspin fit")
     print(f"wrote {out}")
 
 

@@ -10,7 +10,7 @@ packages=(
   libassimp-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev libbullet-dev libode-dev
-  libceres-dev libminizip-dev
+  libceres-dev libminizip-dev dpkg-dev
   clang clang-format libclang-rt-14-dev
   chromium chromium-driver python3-selenium
   slurm-wlm munge
@@ -39,14 +39,42 @@ install_web_packages() {
     (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
   fi
 }
-if [ ${#missing[@]} -eq 0 ]; then
-  install_web_packages
-  exit 0
-fi
-echo "install-deps: installing ${missing[*]}"
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 export DEBIAN_FRONTEND=noninteractive
+install_web_sources() {
+  # The explorer's fit (the Phone-toss lab) compiles Ceres and minizip with zlib for
+  # WebAssembly from Debian's own source packages, the versions the native build links
+  # (web/build-wasm-deps.sh): fetched here, in the install step, unpacked with Debian's patches
+  # into web/deb-src/ (not in git). Skipped when they are in place or emscripten is missing.
+  local web src
+  web="$(cd "$(dirname "$0")/../web" && pwd)"
+  src="$web/deb-src"
+  command -v em++ >/dev/null 2>&1 || return 0
+  [ -f "$src/.complete" ] && return 0
+  # Debian's deb-src entries for bookworm, beside the machine's binary ones.
+  if ! grep -rqsE '^(deb-src|Types:.*deb-src)' /etc/apt/sources.list /etc/apt/sources.list.d/; then
+    printf '%s\n' 'Types: deb-src' 'URIs: http://deb.debian.org/debian' 'Suites: bookworm' \
+      'Components: main' 'Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg' |
+      $sudo tee /etc/apt/sources.list.d/bookspin-deb-src.sources >/dev/null
+  fi
+  $sudo apt-get update -qq
+  rm -rf "$src"
+  mkdir -p "$src"
+  (cd "$src" && apt-get source -qq ceres-solver minizip zlib 2>&1 | grep -v '^W: Download is performed unsandboxed' || true)
+  for p in ceres-solver minizip zlib; do
+    ls -d "$src/$p"-*/ >/dev/null 2>&1 || { echo "install-deps: apt-get source $p failed" >&2; exit 1; }
+  done
+  rm -f "$src"/*.tar.* "$src"/*.dsc
+  touch "$src/.complete"
+}
+if [ ${#missing[@]} -eq 0 ]; then
+  install_web_packages
+  install_web_sources
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 install_web_packages
+install_web_sources

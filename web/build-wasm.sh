@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Compiles src/physics and web/bindings.cpp with Debian's emscripten into one JavaScript file
-# holding the WebAssembly (-sSINGLE_FILE=1, -sMODULARIZE): OUT/bookspin_physics.js.
+# holding the WebAssembly (-sSINGLE_FILE=1, -sMODULARIZE): OUT/bookspin_physics.js; with it the
+# judge (web/judge_bindings.cpp) and the fit (web/fit_bindings.cpp: src/fit with Ceres, minizip
+# and zlib built from Debian's source by web/build-wasm-deps.sh into OUT/deps/prefix).
 # Usage: web/build-wasm.sh OUT_DIR   (objects cached in OUT_DIR/obj, rebuilt when newer)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -15,8 +17,13 @@ export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
 # (whose libc headers would shadow emscripten's).
 mkdir -p "$out/include"
 ln -sfn /usr/include/boost "$out/include/boost"
+"$here/build-wasm-deps.sh" "$out"
+prefix="$out/deps/prefix"
 flags=(-std=c++20 -O3 -DNDEBUG -I"$root/src" -I/usr/include/eigen3 -isystem "$out/include"
        -Wall -Wextra -fexceptions)
+# The fit's files: Ceres's headers with its miniglog, minizip's as libminizip-dev has them.
+fit_flags=(-DBOOKSPIN_MINIGLOG -isystem "$prefix/include" -isystem "$prefix/include/ceres/internal/miniglog"
+           -isystem "$prefix/include/minizip")
 objs=()
 pids=()
 # The physics whole; of analysis and clip only the two pure-Eigen files the page measures and
@@ -27,22 +34,29 @@ pids=()
 pure=("$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp"
       "$root/src/jobs/motion_csv.cpp" "$root/src/jobs/exact_motion.cpp"
       "$root/src/clip/body_drawing.cpp")
-for name in errors number_text csv_writer json_writer json_string text_lines; do
+for name in errors number_text csv_writer json_writer json_string text_lines text_file; do
   pure+=("$root/src/common/$name.cpp")
 done
-for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/judge_bindings.cpp"; do
+# For the "Phone-toss lab" panel: the fit stage whole (the recording's reader, the flights, the
+# fit and its tables) and the toss's scene values (src/products/fit_scene.cpp, which includes
+# nothing but fit, physics, common and the scene's limits): no chart, no file written.
+fit_sources=("$root"/src/fit/*.cpp "$root/src/products/fit_scene.cpp" "$here/fit_bindings.cpp")
+for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/judge_bindings.cpp" "${fit_sources[@]}"; do
   obj="$out/obj/$(basename "${src%.cpp}").o"
   objs+=("$obj")
-  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/jobs" "$root/src/common" "$here/body_spec.hpp" \
+  extra=()
+  case " ${fit_sources[*]} " in *" $src "*) extra=("${fit_flags[@]}");; esac
+  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/products/fit_scene.hpp" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" \
        -name '*.hpp' -newer "$obj" -print -quit)" ]; then
-    em++ "${flags[@]}" -c "$src" -o "$obj" &
+    em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
     pids+=($!)
     # two compilers at a time
     if [ ${#pids[@]} -ge "${JOBS:-2}" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
   fi
 done
 for p in "${pids[@]}"; do wait "$p"; done
-em++ -O3 -fexceptions --bind "${objs[@]}" -o "$out/bookspin_physics.js" \
+em++ -O3 -fexceptions --bind "${objs[@]}" "$prefix/lib/libceres.a" "$prefix/lib/libminizip.a" \
+  "$prefix/lib/libz.a" -o "$out/bookspin_physics.js" \
   -sSINGLE_FILE=1 -sMODULARIZE=1 -sEXPORT_NAME=BookspinPhysics -sALLOW_MEMORY_GROWTH=1 \
   -sENVIRONMENT=web,worker,node -sDISABLE_EXCEPTION_CATCHING=0
 echo "build-wasm: $out/bookspin_physics.js ($(stat -c %s "$out/bookspin_physics.js") bytes)"

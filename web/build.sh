@@ -12,7 +12,8 @@
 # scenes into it: OUT/explorer.html.
 # One caller at a time (a lock in BUILD_DIR/web). Nothing to do, nothing done: BUILD_DIR/web/inputs.sha256 holds the hash of every input (these
 # scripts, web/*.cpp and *.hpp, web/src/, package.json and its lockfile, src/physics/, src/common/,
-# src/analysis/ and the two files of src/jobs/ the page compiles), written
+# src/analysis/, src/fit/ and the few files of src/jobs/, src/products/ and src/scene/ the page
+# compiles), written
 # after a build; while it matches and the shell is there, the script rebuilds and rewrites
 # nothing.
 # Usage: web/build.sh BUILD_DIR
@@ -29,9 +30,10 @@ stamp="$work/inputs.sha256"
 mkdir -p "$work"
 exec 9>"$work/.build.lock"
 flock 9
-inputs=$(cd "$root" && find web/build.sh web/build-wasm.sh web/make_explorer.py web/*.cpp web/*.hpp \
-           web/src web/package.json web/package-lock.json src/physics src/common src/analysis \
-           src/jobs/motion_csv.* src/jobs/exact_motion.* -type f -print0 |
+inputs=$(cd "$root" && find web/build.sh web/build-wasm.sh web/build-wasm-deps.sh web/make_explorer.py \
+           web/*.cpp web/*.hpp web/src web/package.json web/package-lock.json src/physics \
+           src/common src/analysis src/jobs/motion_csv.* src/jobs/exact_motion.* src/fit \
+           src/products/fit_scene.* src/scene/limits.hpp -type f -print0 |
          sort -z | xargs -0 sha256sum | sha256sum | cut -d ' ' -f 1)
 if [ -f "$work/explorer-shell.html" ] && [ -f "$work/explorer-engines.js" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$inputs" ]; then
   echo "web: up to date: $work/explorer-shell.html"

@@ -18,6 +18,7 @@
 #include "analysis/judgement.hpp"
 #include "body_spec.hpp"
 #include "common/errors.hpp"
+#include "guarded.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
 #include "physics/exact_solution.hpp"
@@ -26,6 +27,7 @@ namespace {
 
 using bookspin::InputError;
 using bookspin::analysis::Scenario;
+using bookspin::web::guarded;
 using emscripten::val;
 
 /// The scenario of `spec` (see the head of this file). Throws InputError where it is none
@@ -54,23 +56,6 @@ Scenario scenario_of(const val& spec) {
   if (!(s.dt > 0.0) || s.steps < 1)
     throw InputError(s.name + ": flipcheck: a scenario needs dt > 0 and at least one step");
   return s;
-}
-
-/// {error: the one line} for an InputError (what `bookspin flipcheck judge` prints after
-/// "bookspin: error: "), {error: "internal error: …"} for anything else.
-template <typename F>
-val guarded(F&& f) {
-  try {
-    return f();
-  } catch (const InputError& e) {
-    val out = val::object();
-    out.set("error", std::string(e.what()));
-    return out;
-  } catch (const std::exception& e) {
-    val out = val::object();
-    out.set("error", std::string("internal error: ") + e.what());
-    return out;
-  }
 }
 
 /// The motion CSV `text` (named `file`, as `judge` names it: the file's name) judged against

@@ -99,4 +99,45 @@ std::string finite_text(double value, std::string_view what, const char* format)
   return buffer;
 }
 
+std::optional<double> read_number(std::string_view text) {
+  const auto lower_is = [&](std::string_view word, std::size_t at) {
+    if (text.size() - at != word.size()) return false;
+    for (std::size_t i = 0; i < word.size(); ++i)
+      if ((text[at + i] | 0x20) != word[i]) return false;
+    return true;
+  };
+  std::size_t i = 0;
+  const bool negative = !text.empty() && text[0] == '-';
+  if (negative) ++i;
+  if (lower_is("nan", i)) return negative ? -std::nan("") : std::nan("");
+  if (lower_is("inf", i) || lower_is("infinity", i)) return negative ? -HUGE_VAL : HUGE_VAL;
+  bool digits = false, nonzero = false;
+  const auto digit_run = [&] {
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9') {
+      digits = true;
+      nonzero = nonzero || text[i] != '0';
+      ++i;
+    }
+  };
+  digit_run();
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    digit_run();
+  }
+  if (!digits) return std::nullopt;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    std::size_t j = i + 1;
+    if (j < text.size() && (text[j] == '+' || text[j] == '-')) ++j;
+    const std::size_t exponent = j;
+    while (j < text.size() && text[j] >= '0' && text[j] <= '9') ++j;
+    // An 'e' with no exponent after it ends the number before it, as from_chars reads it.
+    if (j > exponent) i = j;
+  }
+  if (i != text.size()) return std::nullopt;
+  const std::string copy(text);
+  const double value = std::strtod(copy.c_str(), nullptr);
+  if (!std::isfinite(value) || (value == 0.0 && nonzero)) return std::nullopt;
+  return value;
+}
+
 }  // namespace bookspin

@@ -34,4 +34,13 @@ std::string finite_text(const std::optional<double>& value, std::string_view wha
 /// finite().
 std::string finite_text(double value, std::string_view what, const char* format);
 
+/// The reader beside the writer: `text` as std::from_chars reads a double in its general format
+/// (an optional '-', digits with an optional point, an optional exponent; "nan", "inf" and
+/// "infinity" in any case, as NaN and infinity), the whole text or nothing; nullopt for
+/// anything else and for a value beyond the doubles (one whose digits are not all zero that
+/// reads as 0 or as infinity: from_chars's result_out_of_range). Correctly rounded (strtod in
+/// the "C" locale): emscripten's libc++ has no from_chars for doubles, and the explorer page
+/// reads recordings and motions with this too.
+std::optional<double> read_number(std::string_view text);
+
 }  // namespace bookspin

@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
 
 #include "common/errors.hpp"
+#include "common/number_text.hpp"
 #include "common/text_file.hpp"
 
 namespace bookspin::fit {
@@ -63,11 +63,7 @@ std::vector<std::pair<int, std::string_view>> lines_of(std::string_view text) {
 std::optional<double> parse_number(std::string cell, bool decimal_comma) {
   if (decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
   if (!cell.empty() && cell.front() == '+') cell.erase(0, 1);
-  double value = 0.0;
-  const char* end = cell.data() + cell.size();
-  const auto [ptr, ec] = std::from_chars(cell.data(), end, value);
-  if (cell.empty() || ec != std::errc() || ptr != end) return std::nullopt;
-  return value;
+  return read_number(cell);
 }
 
 bool is_phyphox_gyro_header(const std::vector<std::string>& header) {

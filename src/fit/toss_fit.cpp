@@ -209,9 +209,12 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
   solver_options.logging_type = ceres::SILENT;
   // Ceres reports a failed step through glog (its "Linear solver failure" warnings and the
   // "Terminating" error) whatever logging_type says; the fit says what failed in its own one
-  // line (docs/architecture.md, "Errors"), so glog keeps only FATAL.
+  // line (docs/architecture.md, "Errors"), so glog keeps only FATAL. The explorer's Ceres logs
+  // through its own miniglog, built to keep only FATAL (web/build-wasm-deps.sh).
+#ifndef BOOKSPIN_MINIGLOG
   static std::once_flag quiet;
   std::call_once(quiet, [] { FLAGS_minloglevel = google::GLOG_FATAL; });
+#endif
   solver_options.num_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem.get(), &summary);
@@ -240,7 +243,6 @@ std::optional<Covariances> covariances(const std::vector<TossData>& data, const 
   if (data.size() >= 2) body.insert(body.end(), {9, 10, 11});
   if (law != physics::DragLaw::none) toss.push_back(8);
   const int nb = static_cast<int>(body.size());
-  const int nt = static_cast<int>(toss.size());
   constexpr double kMinReciprocalCondition = 1e-14;
   const auto well_conditioned = [&](const Eigen::MatrixXd& m) {
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(m, Eigen::EigenvaluesOnly);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <string>
 
@@ -31,39 +30,19 @@ std::vector<std::string_view> cells_of(std::string_view line) {
 }
 
 /// `cell` as a finite double, or false: a decimal number (an optional sign, digits with an
-/// optional point, an optional exponent), read by strtod (correctly rounded, "C" locale), as
-/// std::from_chars reads one (which emscripten's libc++ lacks for doubles: this parser is
-/// compiled into the explorer page too). Refused: anything else (hex, "inf", "nan", spaces
-/// within), a value beyond the doubles and one so small that it reads as 0 (from_chars'
-/// result_out_of_range).
+/// optional point, an optional exponent) as read_number() reads one (common/number_text.hpp:
+/// correctly rounded, compiled into the explorer page too). Refused: anything else (hex, "inf",
+/// "nan", spaces within), a value beyond the doubles and one so small that it reads as 0.
 bool finite_number(std::string_view cell, double& out) {
-  std::size_t i = 0;
-  if (i < cell.size() && (cell[i] == '+' || cell[i] == '-')) ++i;
-  bool digits = false, nonzero = false;
-  const auto digit_run = [&] {
-    while (i < cell.size() && cell[i] >= '0' && cell[i] <= '9') {
-      digits = true;
-      nonzero = nonzero || cell[i] != '0';
-      ++i;
-    }
-  };
-  digit_run();
-  if (i < cell.size() && cell[i] == '.') {
-    ++i;
-    digit_run();
+  // One sign at most: a '+' is dropped, and no second sign may follow it.
+  if (!cell.empty() && cell[0] == '+') {
+    cell.remove_prefix(1);
+    if (!cell.empty() && (cell[0] == '+' || cell[0] == '-')) return false;
   }
-  if (!digits) return false;
-  if (i < cell.size() && (cell[i] == 'e' || cell[i] == 'E')) {
-    ++i;
-    if (i < cell.size() && (cell[i] == '+' || cell[i] == '-')) ++i;
-    const std::size_t exponent = i;
-    while (i < cell.size() && cell[i] >= '0' && cell[i] <= '9') ++i;
-    if (i == exponent) return false;
-  }
-  if (i != cell.size()) return false;
-  const std::string text(cell);
-  out = std::strtod(text.c_str(), nullptr);
-  return std::isfinite(out) && (out != 0.0 || !nonzero);
+  const std::optional<double> value = read_number(cell);
+  if (!value || !std::isfinite(*value)) return false;
+  out = *value;
+  return true;
 }
 
 /// The index of the first of `names` in `header`, or nullopt.

@@ -54,14 +54,6 @@ struct FitJob {
   cache::Freshness freshness;
 };
 
-/// The fit's per-toss table and the body's row (docs/outputs.md, "The fit").
-CsvTable fit_toss_csv(const fit::FitResult& fit);
-CsvTable fit_body_csv(const fit::FitResult& fit);
-
-/// What the fit says besides its CSVs: the bias, the flights kept and the stretches dropped,
-/// the body's notes (one line each), for the command to print.
-std::vector<std::string> fit_summary(const fit::FitResult& fit);
-
 /// (recording, tosses, moments[, render]) => OUT/<recording>-fit.csv + -fit-body.csv +
 /// -toss<N>.png + -toss<N>.toml + -toss<N>-measured.csv [+ -toss<N>.mp4] + manifest.
 /// Reads the recording (fit::read_recording), finds its flights (or takes the given ones),
@@ -70,7 +62,7 @@ std::vector<std::string> fit_summary(const fit::FitResult& fit);
 /// fitted moments make no body) and writes the files, unless the manifest says they are up to
 /// date; with `render`, also renders each toss's clip (products/fit_clip.hpp) into a scratch
 /// folder of the run and puts it in place with the rest, all or nothing. `summary`, when
-/// given, receives fit_summary's lines of a made fit.
+/// given, receives fit::fit_summary's lines of a made fit.
 /// Throws InputError (the recording, a toss, no flight; with `render` a bad scene file or
 /// --slow-motion, and a fit whose every toss is stable without --moments: no moments to
 /// show), OutputError, Interrupted (a signal while the clips are made), and what

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <sstream>
 
 #include "common/errors.hpp"
 #include "common/json_string.hpp"
@@ -11,6 +10,8 @@
 
 namespace bookspin::products {
 namespace {
+
+using fit::fixed;
 
 /// The scene's substep (s) and substeps a frame: at 30 frames/s a quarter of real time.
 constexpr double kDt = 1.0 / 240.0;
@@ -26,13 +27,6 @@ std::string vector3(const Eigen::Vector3d& v, const char* what) {
   std::string text(1, '[');
   for (int c = 0; c < 3; ++c) text.append(c ? ", " : "").append(number(v[c], what));
   return text.append("]");
-}
-
-std::string fixed(double value, int digits) {
-  std::ostringstream text;
-  text.precision(digits);
-  text << std::fixed << value;
-  return text.str();
 }
 
 }  // namespace
@@ -57,30 +51,29 @@ std::string toss_scene_name(const std::string& recording, int toss) {
   return name;
 }
 
-std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::string& recording,
-                            const std::string& measured_csv) {
+TossScene toss_scene(const fit::FitResult& fit, int toss, const std::string& recording) {
   const fit::TossFit& t = fit.tosses.at(toss);
   const std::optional<physics::Book> book = toss_book(fit.body);
-  if (!book) throw InternalError("toss_scene_text: the fitted moments make no book");
-  const Eigen::Vector3d omega0 = toss_scene_frame(fit.body).transpose() * t.omega0;
+  if (!book) throw InternalError("toss_scene: the fitted moments make no book");
+  TossScene scene;
+  scene.book = *book;
+  scene.omega0 = toss_scene_frame(fit.body).transpose() * t.omega0;
+  scene.dt = kDt;
+  scene.steps_per_frame = kStepsPerFrame;
   const double flight = t.flight.t_end - t.flight.t_start;
-  double duration =
+  scene.duration =
       std::max(flight, std::min(kMaxDuration, 4.0 * t.half_period_fitted.value_or(0.0)));
   // The fitted drag (docs/physics.md §21); a negative quadratic rate (a gain within its error
   // of zero) blows up at −1/r: the run stops well before (scenes/README.md, model.drag_rate).
-  const physics::Drag drag{fit.drag, t.drag_rate};
-  if (drag.law == physics::DragLaw::quadratic && drag.rate < 0)
-    duration = std::min(duration, -0.45 / drag.rate);
-  std::string model = "\n\n[model]\nkind = \"exact\"\n";
-  if (drag.law != physics::DragLaw::none)
-    model += "drag = " + json_string(std::string(physics::to_string(drag.law))) +
-             "  # the air's drag as fitted (docs/physics.md §21)\ndrag_rate = " +
-             number(drag.rate, "toss scene model.drag_rate") + "  # 1/s\n";
-  model += "\n";
+  scene.drag = physics::Drag{fit.drag, t.drag_rate};
+  if (scene.drag.law == physics::DragLaw::quadratic && scene.drag.rate < 0)
+    scene.duration = std::min(scene.duration, -0.45 / scene.drag.rate);
   const std::string n = std::to_string(toss + 1);
   const Eigen::Vector3d& r = fit.body.ratios;
   const std::string moments = fixed(r[0], 4) + " : " + fixed(r[1], 4) + " : 1";
-  const std::string description =
+  scene.name = toss_scene_name(recording, toss + 1);
+  scene.title = recording + ", toss " + n + ": the fitted exact motion";
+  scene.description =
       "Toss " + n + " of the recording " + recording + " (" + fixed(t.flight.t_start, 3) + "–" +
       fixed(t.flight.t_end, 3) + " s), fitted by bookspin fit: a box with the fitted moments " +
       moments + " spinning from the fitted ω0 under the exact motion" +
@@ -91,6 +84,19 @@ std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::stri
       ", t = 0 the flight's start" +
       (t.stable ? "; a stable toss: it wobbles, it does not flip" : "") +
       (fit.body.moments_determined ? "" : "; the moments are poorly determined") + ".";
+  return scene;
+}
+
+std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::string& recording,
+                            const std::string& measured_csv) {
+  const TossScene scene = toss_scene(fit, toss, recording);
+  std::string model = "\n\n[model]\nkind = \"exact\"\n";
+  if (scene.drag.law != physics::DragLaw::none)
+    model += "drag = " + json_string(std::string(physics::to_string(scene.drag.law))) +
+             "  # the air's drag as fitted (docs/physics.md §21)\ndrag_rate = " +
+             number(scene.drag.rate, "toss scene model.drag_rate") + "  # 1/s\n";
+  model += "\n";
+  const std::string n = std::to_string(toss + 1);
   std::string text =
       "# Toss " + n + " of the recording " + recording +
       " as bookspin fit fitted it (docs/phone-lab.md):\n"
@@ -100,18 +106,17 @@ std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::stri
       "# start.\n"
       "[scene]\n"
       "name = " +
-      json_string(toss_scene_name(recording, toss + 1)) +
-      "\ntitle = " + json_string(recording + ", toss " + n + ": the fitted exact motion") +
-      "\ndescription = " + json_string(description) + model +
+      json_string(scene.name) + "\ntitle = " + json_string(scene.title) +
+      "\ndescription = " + json_string(scene.description) + model +
       "[book]  # moments about x, y, z: I2/I3, I1/I3, 1 (mass 1)\n"
       "size = " +
-      vector3(book->size, "toss scene book.size") +
+      vector3(scene.book.size, "toss scene book.size") +
       "\nmass = 1.0\n\n[initial]\nangular_velocity = " +
-      vector3(omega0, "toss scene initial.angular_velocity") + "  # rad/s, body frame\n\n" +
-      "[time]\nunit = \"s\"\ndt = " + number(kDt, "toss scene time.dt") +
-      "  # s\nsteps_per_frame = " + std::to_string(kStepsPerFrame) +
+      vector3(scene.omega0, "toss scene initial.angular_velocity") + "  # rad/s, body frame\n\n" +
+      "[time]\nunit = \"s\"\ndt = " + number(scene.dt, "toss scene time.dt") +
+      "  # s\nsteps_per_frame = " + std::to_string(scene.steps_per_frame) +
       "  # 30 frames/s: a quarter of real time\nduration = " +
-      number(duration, "toss scene time.duration") +
+      number(scene.duration, "toss scene time.duration") +
       "  # s: the flight, or four fitted half periods\n\n"
       "[render]\npanel = true\nsphere = true\nshow_angular_momentum = true\n";
   if (!measured_csv.empty())

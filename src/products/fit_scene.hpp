@@ -10,6 +10,7 @@
 #include "common/csv_writer.hpp"
 #include "fit/fit.hpp"
 #include "physics/book.hpp"
+#include "scene/limits.hpp"
 
 namespace bookspin::products {
 
@@ -29,6 +30,28 @@ std::optional<physics::Book> toss_book(const fit::BodyEstimate& body);
 /// fit::GyroRecording::name): "<recording>-toss<N>", with every '.' made '_' (a scene name
 /// holds no "..") and "recording-" before it unless it starts with a letter or a digit.
 std::string toss_scene_name(const std::string& recording, int toss);
+
+/// The frames a second of a toss's scene: render.fps, which its file leaves at the default
+/// (scene/limits.hpp), so that its two substeps of 1/240 s a frame play a quarter of real time.
+constexpr double kTossSceneFramesPerSecond = *scene::limit("render.fps").fallback;
+
+/// Toss `toss` (0-based) of `fit` as a scene, for a recording named `recording`: what its scene
+/// file says (toss_scene_text) and what the explorer's Phone-toss lab plays (web/fit_bindings.cpp).
+struct TossScene {
+  std::string name;         ///< toss_scene_name
+  std::string title;        ///< naming the recording and the toss
+  std::string description;  ///< the flight, the fitted moments and drag, in words
+  physics::Book book;       ///< toss_book (mass 1, moments I2/I3, I1/I3, 1 about x, y, z)
+  Eigen::Vector3d omega0 = Eigen::Vector3d::Zero();  ///< rad/s, the scene's body frame
+  double dt = 0.0;                                   ///< s, the substep
+  int steps_per_frame = 1;                           ///< substeps a frame at 30 frames/s
+  double duration = 0.0;  ///< s: the flight or four fitted half periods (at most 30 s)
+  physics::Drag drag;     ///< the fitted law and this toss's rate (1/s)
+};
+
+/// The values toss_scene_text writes (see there). Throws InternalError where toss_book has no
+/// book for the fit.
+TossScene toss_scene(const fit::FitResult& fit, int toss, const std::string& recording);
 
 /// The scene file (TOML text) of toss `toss` (0-based) of `fit`, for a recording named
 /// `recording`: scene.name `toss_scene_name`, a title naming the recording and the toss,

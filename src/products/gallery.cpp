@@ -218,7 +218,7 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
 
   GalleryHeader header{
-      output::program_version(), output::program_build_id(), "", machine(), "", "", {}};
+      output::program_version(), output::program_build_id(), "", machine(), "", "", "", {}};
   const FlipcheckLeagueLayout league = flipcheck_league_layout(out);
   if (exists(out, path_in_out(out, league.manifest))) {
     const Listed tabled(out, league.manifest);
@@ -227,6 +227,8 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
     if (const std::string page = if_there(out, explorer_page_path(out)); !page.empty())
       header.flipcheck_judge_page = page + "#judge";
   }
+  if (const std::string page = if_there(out, explorer_page_path(out)); !page.empty())
+    header.phone_lab_page = page + "#lab";
   header.fits = fits_in(out);
   // Up to date: the same page but for its date (output/manifest.hpp).
   GalleryOutcome done;

@@ -82,15 +82,21 @@ void write_entry(std::ostream& out, const GalleryEntry& e) {
   out << "</p>\n</section>\n";
 }
 
-/// The phone-toss lab's section (id "phone-lab"): per fitted recording its two tables, then per
-/// toss its chart and clip side by side and a line of links.
-void write_fits(std::ostream& out, const std::vector<GalleryFit>& fits) {
+/// The phone-toss lab's section (id "phone-lab"): the explorer page's lab panel where there is
+/// one (`lab_page`), then per fitted recording its two tables, then per toss its chart and clip
+/// side by side and a line of links.
+void write_fits(std::ostream& out, const std::vector<GalleryFit>& fits,
+                const std::string& lab_page) {
   out << "<section class=\"clip\" id=\"phone-lab\">\n<h2>Phone-toss lab: a measured toss beside "
          "the exact motion</h2>\n<p>A phone's gyroscope recording of tosses (phyphox), each "
          "free flight fitted with the exact torque-free motion (<code>bookspin fit</code>, "
          "docs/phone-lab.md): per toss the measured &omega; (dots) against the fitted exact "
          "&omega; (lines) with the momentum sphere, and the body turning as the phone turned "
-         "beside the fitted exact motion.</p>\n";
+         "beside the fitted exact motion.";
+  if (!lab_page.empty())
+    out << " Your own recording fitted in the page, nothing installed: <a href=" << attr(lab_page)
+        << ">the Phone-toss lab</a>.";
+  out << "</p>\n";
   for (const GalleryFit& fit : fits) {
     out << "<h3>" << html_escape(fit.recording) << "</h3>\n<p class=\"files\">"
         << html_escape(fit.recording);
@@ -204,7 +210,7 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
           << attr(header.flipcheck_judge_page) << ">judge a motion</a>.";
     out << "</p>\n</section>\n";
   }
-  if (!header.fits.empty()) write_fits(out, header.fits);
+  if (!header.fits.empty()) write_fits(out, header.fits, header.phone_lab_page);
   for (const auto& e : entries) write_entry(out, e);
   out << "</body>\n</html>\n";
   return out.str();

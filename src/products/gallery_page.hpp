@@ -61,6 +61,9 @@ struct GalleryHeader {
   /// "explorer.html#judge", the explorer page's "Judge a motion" panel (docs/flipcheck.md),
   /// where OUT/explorer.html is there; else empty.
   std::string flipcheck_judge_page;
+  /// "explorer.html#lab", the explorer page's "Phone-toss lab" panel (docs/phone-lab.md), where
+  /// OUT/explorer.html is there; else empty. Linked from the phone-toss lab's section.
+  std::string phone_lab_page;
   /// The phone-toss lab's fits in OUT (one per OUT/<recording>/fit-manifest.json, by name),
   /// shown in a "Phone-toss lab" section after the league; none: no section.
   std::vector<GalleryFit> fits;

@@ -4,6 +4,7 @@
 // bounds from here (through limit()), and scenes/README.md ("Limits") documents the same
 // table, checked by tests/scene/limits_doc_test.cpp.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -77,6 +78,14 @@ consteval const Limit& limit(std::string_view key) {
   for (const Limit& l : kLimits)
     if (l.key == key) return l;
   throw "no such key in kLimits";  // not a constant expression: a compile error
+}
+
+/// The frames that cover `duration` (time units) at `dt` × `steps_per_frame` a frame: the
+/// first at t = 0, the last at or just past `duration` (1e-9 of a frame's time forgiven for
+/// round-off); time.duration's rule (scenes/README.md, "Keys"). A double: the caller checks it
+/// against time.frames' maximum.
+inline double frames_covering(double duration, double dt, int steps_per_frame) {
+  return 1.0 + std::ceil(duration / (dt * steps_per_frame) - 1e-9);
 }
 
 }  // namespace bookspin::scene

@@ -132,7 +132,7 @@ void read_time(TomlReader& r, Scene& s) {
   if (r.has("time.frames"))
     r.fail("time.duration", "give either time.frames or time.duration, not both");
   const double duration = r.number(limit("time.duration"), 0.0);
-  const double frames = 1.0 + std::ceil(duration / (s.dt * s.steps_per_frame) - 1e-9);
+  const double frames = frames_covering(duration, s.dt, s.steps_per_frame);
   if (frames > limit("time.frames").max) {
     r.fail("time.duration", "needs " + std::to_string(static_cast<long long>(frames)) +
                                 " frames at time.dt × time.steps_per_frame, more than 100000: "

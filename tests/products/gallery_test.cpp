@@ -156,6 +156,9 @@ TEST(Gallery, ShowsThePhoneLabItsFitManifestLists) {
             std::string::npos)
       << html;
   EXPECT_EQ(html.find("scene=rec-toss2"), std::string::npos) << html;
+  // ... and the section links the page's lab panel (explorer.html#lab).
+  EXPECT_NE(html.find("href=\"explorer.html#lab\">the Phone-toss lab</a>"), std::string::npos)
+      << html;
 }
 
 // An accuracy report (`bookspin accuracy`, e.g. the engines' energy against the step of `make

@@ -131,6 +131,13 @@ export class Controls {
   }
 
   /** Calls `onChange(id)` when an input of the column or the transport changes. */
+  /** Adds `scene` (a toss the Phone-toss lab fitted, lab.js) to the scene menu, by its title;
+   * a scene of the same name keeps its entry. */
+  addScene(scene) {
+    const menu = $('scene');
+    if (![...menu.options].some((o) => o.value === scene.name)) menu.add(new Option(scene.title || scene.name, scene.name));
+  }
+
   listen(onChange) {
     for (const el of document.querySelectorAll('#controls input, #controls select, #speed')) {
       el.addEventListener('change', () => {

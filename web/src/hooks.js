@@ -62,6 +62,16 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     judgeExport: (scenario) => app.judge.files(scenario),
     /** The scenes the panel offers as scenarios. */
     judgeScenarios: () => app.judge.scenes.map((s) => s.name),
+    /** `bookspin fit FILE --drag DRAG` in the page (lab.js): a promise of the fit of the
+     * recording `text` (a string, or the file's bytes as a Uint8Array: a zip must be bytes),
+     * named `fileName`, as {recording, body: the -fit-body.csv row keyed by its columns,
+     * tosses: the -fit.csv rows keyed likewise (an empty cell null, a number a number, text as
+     * text), summary: the lines the command prints, charts: each toss's {t, measured, fitted}
+     * ω, scenes: each toss as the page's scene data}; rejected with the command line's one
+     * line (without "bookspin: error: ") for a bad file. */
+    fitRecording: (fileName, text, drag = 'linear') => app.lab.fit(fileName, text, drag),
+    /** Plays `scene` (one of fitRecording's scenes) as the lab's Play button does. */
+    playToss: (scene) => app.lab.play(scene),
     nsPerStep(model, integrator, normalize, steps) {
       const run = app.runs.startRun(app.state, model, integrator, normalize);
       const t0 = performance.now();

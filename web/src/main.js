@@ -4,7 +4,8 @@
 // This file wires the parts: state and URL (state.js), runs (runs.js), 3D view (view3d.js),
 // sphere (sphere.js), plots (plots.js) and the measured toss over both (panels.js), the readout
 // (readout.js), controls (controls.js), buttons and keys (keys.js), the work per frame (pacing.js),
-// the "Judge a motion" panel (judge.js: bookspin flipcheck judge in the page);
+// the "Judge a motion" panel (judge.js: bookspin flipcheck judge in the page); the
+// "Phone-toss lab" panel (lab.js: bookspin fit in the page, each toss played as a scene);
 // the JavaScript engines, with --engines, come as window.BOOKSPIN_ENGINES (engines/).
 import { StateSpace } from './state.js';
 import { Pacer, FIRST_BUDGET_MS } from './pacing.js';
@@ -17,6 +18,7 @@ import { Readout } from './readout.js';
 import { listenKeys } from './keys.js';
 import { Controls, VIEW_CONTROLS } from './controls.js';
 import { JudgePanel } from './judge.js';
+import { LabPanel } from './lab.js';
 
 const $ = (id) => document.getElementById(id);
 /** While playing, the address is rewritten every 60 ms to 1 s, so that it keeps t. */
@@ -170,6 +172,15 @@ function startApp(wasm, engines) {
   document.addEventListener('fullscreenchange', resize);
 
   app.judge = new JudgePanel(wasm, SCENES, () => app.state.scene);
+  // A toss the Phone-toss lab fitted plays as a scene of the page: added to the scenes (or in
+  // place of an earlier fit's of the same name) and chosen, as the scene menu chooses one.
+  app.lab = new LabPanel(wasm, (scene) => {
+    const at = SCENES.findIndex((s) => s.name === scene.name);
+    if (at >= 0) SCENES[at] = scene; else SCENES.push(scene);
+    app.controls.addScene(scene);
+    $('scene').value = scene.name;
+    $('scene').dispatchEvent(new Event('change'));
+  });
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
   window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
   app.state = app.pacer.limit(app.controls.fit(app.state), base());

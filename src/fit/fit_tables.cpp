@@ -1,0 +1,92 @@
+#include "fit/fit_tables.hpp"
+
+#include <sstream>
+
+namespace bookspin::fit {
+
+std::string fixed(double value, int digits) {
+  std::ostringstream text;
+  text.precision(digits);
+  text << std::fixed << value;
+  return text.str();
+}
+
+CsvTable fit_toss_csv(const FitResult& fit) {
+  CsvTable table{
+      {"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z", "half_period_measured",
+       "half_period_fitted", "half_period_predicted", "residual_rms", "L_decay", "drag_rate",
+       "drag_rate_sigma", "stable", "poor_fit", "flag"},
+      {}};
+  for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
+    const TossFit& t = fit.tosses[k];
+    table.rows.push_back(
+        {std::to_string(k + 1), shortest_cell(t.flight.t_start), shortest_cell(t.flight.t_end),
+         shortest_cell(t.omega0[0]), shortest_cell(t.omega0[1]), shortest_cell(t.omega0[2]),
+         shortest_cell(t.half_period_measured), shortest_cell(t.half_period_fitted),
+         shortest_cell(t.half_period_predicted), shortest_cell(t.residual_rms),
+         shortest_cell(t.L_decay), shortest_cell(t.drag_rate), shortest_cell(t.drag_rate_sigma),
+         std::string(t.stable ? "yes" : "no"), std::string(t.poor_fit ? "yes" : "no"), t.flag});
+  }
+  return table;
+}
+
+CsvTable fit_body_csv(const FitResult& fit) {
+  const BodyEstimate& b = fit.body;
+  CsvTable table{{"I1_over_I3",      "I2_over_I3",      "I3_over_I3", "I1_sigma", "I2_sigma",
+                  "axis1_x",         "axis1_y",         "axis1_z",    "axis2_x",  "axis2_y",
+                  "axis2_z",         "axis3_x",         "axis3_y",    "axis3_z",  "axis1_sigma_deg",
+                  "axis2_sigma_deg", "axis3_sigma_deg", "moments",    "tosses",   "drag"},
+                 {}};
+  std::vector<CsvCell> row{shortest_cell(b.ratios[0]), shortest_cell(b.ratios[1]),
+                           shortest_cell(b.ratios[2])};
+  for (int i = 0; i < 2; ++i)
+    row.push_back(
+        shortest_cell(b.ratio_sigma ? std::optional<double>((*b.ratio_sigma)[i]) : std::nullopt));
+  for (int a = 0; a < 3; ++a)
+    for (int c = 0; c < 3; ++c) row.push_back(shortest_cell(b.axes(c, a)));
+  for (int a = 0; a < 3; ++a)
+    row.push_back(shortest_cell(b.axis_sigma_deg ? std::optional<double>((*b.axis_sigma_deg)[a])
+                                                 : std::nullopt));
+  row.push_back(std::string(b.moments_fixed        ? "given"
+                            : b.moments_determined ? "fitted"
+                                                   : "poorly determined"));
+  row.push_back(std::to_string(fit.tosses.size()));
+  row.push_back(std::string(physics::to_string(fit.drag)));
+  table.rows.push_back(std::move(row));
+  return table;
+}
+
+std::vector<std::string> fit_summary(const FitResult& fit) {
+  std::vector<std::string> lines;
+  const Eigen::Vector3d& bias = fit.search.bias;
+  lines.push_back(fit.search.rest_samples > 0
+                      ? "bias (rad/s, from " + std::to_string(fit.search.rest_samples) +
+                            " samples at rest): " + fixed(bias[0], 4) + ", " + fixed(bias[1], 4) +
+                            ", " + fixed(bias[2], 4)
+                      : "no rest in the recording: the gyroscope's bias is not removed");
+  for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
+    const TossFit& t = fit.tosses[k];
+    std::string drag;
+    if (fit.drag != physics::DragLaw::none)
+      drag = ", drag " + fixed(t.drag_rate, 3) +
+             (t.drag_rate_sigma ? " ± " + fixed(*t.drag_rate_sigma, 3) : std::string()) + " /s";
+    lines.push_back("kept toss " + std::to_string(k + 1) + ": " + fixed(t.flight.t_start, 3) + "–" +
+                    fixed(t.flight.t_end, 3) + " s" + drag +
+                    (t.stable ? " (stable: no flip)" : "") + (t.poor_fit ? " (flagged)" : ""));
+  }
+  for (const DroppedStretch& d : fit.search.dropped)
+    lines.push_back("dropped " + fixed(d.t_start, 3) + "–" + fixed(d.t_end, 3) + " s: " + d.reason);
+  const BodyEstimate& b = fit.body;
+  std::string sigma;
+  if (b.ratio_sigma && !b.moments_fixed)
+    sigma = " (± " + fixed((*b.ratio_sigma)[0], 4) + ", ± " + fixed((*b.ratio_sigma)[1], 4) + ")";
+  lines.push_back("moments I1 : I2 : I3 = " + fixed(b.ratios[0], 4) + " : " +
+                  fixed(b.ratios[1], 4) + " : 1" + (b.moments_fixed ? " (given)" : sigma) +
+                  (fit.drag == physics::DragLaw::none
+                       ? ", no drag"
+                       : ", " + std::string(physics::to_string(fit.drag)) + " drag"));
+  for (const std::string& note : b.notes) lines.push_back("note: " + note);
+  return lines;
+}
+
+}  // namespace bookspin::fit

@@ -1,0 +1,31 @@
+#pragma once
+// What the fit reports, as the command line writes it and the explorer's Phone-toss lab shows
+// it (docs/outputs.md, "The fit"; docs/phone-lab.md): the per-toss table, the body's row and
+// the summary lines. Text in memory only: no file is written here.
+#include <string>
+#include <vector>
+
+#include "common/csv_writer.hpp"
+#include "fit/toss_fit.hpp"
+
+namespace bookspin::fit {
+
+/// OUT/<recording>-fit.csv: one row per toss, columns toss, t_start, t_end (s), omega0_x/y/z
+/// (rad/s, phone frame), the half periods (s), residual_rms (rad/s), L_decay, drag_rate and
+/// its sigma (1/s), stable, poor_fit, flag.
+CsvTable fit_toss_csv(const FitResult& fit);
+
+/// OUT/<recording>-fit-body.csv: one row, the moment ratios I1/I3, I2/I3, 1 and their sigmas,
+/// the principal axes' phone-frame components (axisN_x/y/z) and their sigmas (degrees), how
+/// the moments were found, the toss count and the drag law.
+CsvTable fit_body_csv(const FitResult& fit);
+
+/// What the fit says besides its CSVs: the bias, the flights kept and the stretches dropped,
+/// the body's moments and notes (one line each), for the command to print.
+std::vector<std::string> fit_summary(const FitResult& fit);
+
+/// `value` with `digits` digits after the point ("0.170"): the summary's and the toss scenes'
+/// words (fit_summary, products::toss_scene).
+std::string fixed(double value, int digits);
+
+}  // namespace bookspin::fit

@@ -1,0 +1,342 @@
+#!/usr/bin/env python3
+"""The explorer page's "Phone-toss lab" panel (docs/explorer.md, docs/phone-lab.md) against the
+command line: `bookspin fit` in headless Chromium, the same C++ and the same solver (Ceres from
+Debian's source) compiled to WebAssembly (web/fit_bindings.cpp).
+
+Builds the page's program with web/build.sh BINARY_DIR, writes a page with `bookspin explore`,
+and checks, for the sample recording (recordings/phone-on-book-synthetic: its zip with the
+pause of meta/time.csv, and its Raw Data.csv alone) and a real-looking synthetic one that the
+model cannot fit exactly (recordings/make_phone_on_book.py with a stronger, anisotropic drag,
+as a zip), under each drag law the command line offers (--drag linear, quadratic, none):
+  - through window.explorer.fitRecording, the body's row and every toss's row equal
+    `bookspin fit`'s -fit-body.csv and -fit.csv in every column: text equal, an empty cell
+    null, numbers to TOL relative to the column's scale (see below); and the summary lines
+    the command prints before "wrote …", character for character;
+  - each toss as the page plays it equals the page `bookspin explore` writes from the toss
+    scenes the command wrote (ω0, dt, the drag, speed, the book, the duration, the measured ω
+    and L/|L|), and the Play button plays it: the scene chosen, the measured ω drawn;
+  - once through the file input and once dropped on the panel (a DragEvent carrying the file):
+    the panel's body table shows the command line's ratios; the "Judge a motion" panel's drop
+    zone too;
+  - every bad recording of tests/bad_recordings/ (those without extra arguments): the hook
+    rejects with the command line's one line, and the panel shows it;
+  - explorer.html#lab opens the panel; no console error.
+Screenshots: BINARY_DIR/test-output/browser/explorer-lab-{1280x720,390x844}.png.
+
+TOL: the two fits are the same code and solver, the native one with Ceres's fixed-size Schur
+specializations and threads and glibc's libm, the page's with the dynamic-size Schur solver,
+one thread and emscripten's libm: their round-off differs, and each stops where a step changes
+the cost by less than 1e-10 of it (src/fit/toss_fit.cpp), so the parameters agree to about the
+square root of that, far inside 1e-6. A column's scale: the larger of its two values and the
+column's natural size (1 for the unit axes' components and the ratios; the toss's |ω0| for its
+components; the moments' σ for theirs), so that an axis component of 1e-5 is compared as the
+part of a unit vector it is.
+
+Usage: explorer_lab_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
+Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
+under CI=true, where that is a failure (browser.py).
+"""
+import base64
+import csv
+import io
+import json
+import math
+import re
+import shutil
+import subprocess
+import time
+import zipfile
+from pathlib import Path
+
+from browser import (console_errors, fail, find_browser, open_browser, require, run, serve,
+                     test_arguments, wait_for)
+
+TOL = 1e-6
+UNIT_COLUMNS = re.compile(r"^(axis\d_[xyz]|I\d_over_I3)$")
+
+
+def read_csv(path):
+    rows = list(csv.reader(io.StringIO(Path(path).read_text())))
+    return rows[0], rows[1:]
+
+
+def zip_folder(folder, zip_path):
+    """`folder` zipped as phyphox shares an export: its files under the folder's name."""
+    with zipfile.ZipFile(zip_path, "w", zipfile.ZIP_DEFLATED) as z:
+        for f in sorted(folder.rglob("*")):
+            if f.is_file():
+                z.write(f, f"{folder.name}/{f.relative_to(folder)}")
+
+
+def scale_of(column, row):
+    """The natural size of `column` in `row` (a dict of the page's values), see TOL."""
+    if UNIT_COLUMNS.match(column):
+        return 1.0
+    if column.startswith("omega0_"):
+        return math.sqrt(sum(row[f"omega0_{c}"] ** 2 for c in "xyz"))
+    return 0.0
+
+
+def compare_row(where, page, header, cli):
+    """fail() unless the page's row (a dict) equals the command line's CSV row."""
+    if sorted(page) != sorted(header):
+        fail(f"{where}: the page's keys {sorted(page)} are not the CSV's {sorted(header)}")
+    worst = 0.0
+    for column, cell in zip(header, cli):
+        got = page[column]
+        if cell == "":
+            ok = got is None
+        else:
+            try:
+                expected = float(cell)
+            except ValueError:
+                ok = got == cell
+            else:
+                if not isinstance(got, (int, float)):
+                    ok = False
+                else:
+                    size = max(abs(got), abs(expected), scale_of(column, page))
+                    error = abs(got - expected) / size if size > 0 else 0.0
+                    worst = max(worst, error)
+                    ok = error <= TOL
+        if not ok:
+            fail(f"{where}: column {column}: page {got!r}, bookspin fit {cell!r}")
+    return worst
+
+
+def fit_in_page(driver, base_url, path, name, drag):
+    """window.explorer.fitRecording of the served file `path`, named `name`: {ok, r} or
+    {ok: false, error}; the bytes fetched by the page itself."""
+    return driver.execute_async_script("""
+        const [url, name, drag, done] = arguments;
+        fetch(url).then((r) => r.arrayBuffer())
+          .then((b) => window.explorer.fitRecording(name, new Uint8Array(b), drag))
+          .then((r) => done({ok: true, r}), (e) => done({ok: false, error: String(e.message)}));
+    """, base_url + path, name, drag)
+
+
+def page_scenes(html):
+    """window.BOOKSPIN_SCENES of an explorer page `bookspin explore` wrote."""
+    text = Path(html).read_text()
+    start = text.index("window.BOOKSPIN_SCENES=") + len("window.BOOKSPIN_SCENES=")
+    end = text.index(";\nwindow.BOOKSPIN_BOOK_ART=", start)
+    return json.loads(text[start:end].replace("<\\/", "</"))
+
+
+def close(a, b, tol=1e-9):
+    if isinstance(a, list):
+        return isinstance(b, list) and len(a) == len(b) and all(close(x, y, tol) for x, y in zip(a, b))
+    return abs(a - b) <= tol * max(1.0, abs(a), abs(b))
+
+
+def compare_scene(where, page, cli):
+    """The toss as the lab plays it against the toss scene as `bookspin explore` wrote it."""
+    for key in ("name", "title", "description"):
+        if page[key] != cli[key]:
+            fail(f"{where}: {key}: lab {page[key]!r}, explore {cli[key]!r}")
+    for key in ("model", "drag", "axis"):
+        if page["state"].get(key, "none") != cli["state"].get(key, "none"):
+            fail(f"{where}: state.{key}: lab {page['state'].get(key)!r}, explore {cli['state'].get(key)!r}")
+    for key in ("w", "dt", "speed", "dragRate", "jiggle"):
+        a, b = page["state"].get(key, 0.0), cli["state"].get(key, 0.0)
+        if not close(a, b, 1e-6):
+            fail(f"{where}: state.{key}: lab {a}, explore {b}")
+    for key in ("size", "mass"):
+        if not close(page["book"][key], cli["book"][key], 1e-6):
+            fail(f"{where}: book.{key}: lab {page['book'][key]}, explore {cli['book'][key]}")
+    if not close(page["duration"], cli["duration"], 1e-9):
+        fail(f"{where}: duration: lab {page['duration']}, explore {cli['duration']}")
+    for key in ("t", "w", "ut", "u"):
+        if not close(page["measured"][key], cli["measured"][key], 1e-6):
+            fail(f"{where}: measured.{key} differs from the explore page's")
+
+
+def main():
+    from selenium.webdriver.common.by import By
+
+    bookspin, source, binary = test_arguments(__doc__)
+    chromium, driver_path = find_browser()
+    require("em++", "npm")
+
+    out = binary / "test-output" / "explorer-lab"
+    shots = binary / "test-output" / "browser"
+    if out.exists():
+        shutil.rmtree(out)
+    recordings = out / "recordings"
+    for d in (recordings, shots):
+        d.mkdir(parents=True, exist_ok=True)
+    run(["bash", str(source / "web" / "build.sh"), str(binary)])
+    run([bookspin, "explore", str(source / "scenes" / "exact-unstable-x.toml"), "-o", str(out)])
+
+    # The recordings: the sample as a zip (with its pause) and its Raw Data.csv alone (a folder
+    # of its own, no meta/); a real-looking one the model cannot fit exactly, as a zip.
+    sample = recordings / "phone-on-book-synthetic"
+    shutil.copytree(source / "recordings" / "phone-on-book-synthetic", sample)
+    zip_folder(sample, recordings / "phone-on-book-synthetic.zip")
+    alone = recordings / "sample-raw"
+    alone.mkdir()
+    shutil.copy(sample / "Raw Data.csv", alone / "Raw Data.csv")
+    windy = recordings / "windy-toss"
+    run(["python3", str(source / "recordings" / "make_phone_on_book.py"), str(windy),
+         "--drag", "0.3", "--anisotropy", "1.3,0.8,1"])
+    zip_folder(windy, recordings / "windy-toss.zip")
+    shutil.rmtree(windy)
+    cases = [("phone-on-book-synthetic.zip", "linear"), ("sample-raw/Raw Data.csv", "linear"),
+             ("windy-toss.zip", "linear"), ("windy-toss.zip", "quadratic"),
+             ("phone-on-book-synthetic.zip", "none")]
+
+    # The command line's fits: tables, summaries, toss scenes, and the page explore writes.
+    cli = {}
+    for name, drag in cases:
+        folder = out / "cli" / f"{name.replace('/', '-')}-{drag}"
+        r = subprocess.run([bookspin, "fit", name, "--drag", drag, "-o", str(folder)],
+                           cwd=recordings, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        if r.returncode != 0:
+            fail(f"bookspin fit {name} --drag {drag}: exit {r.returncode}: {r.stderr}")
+        summary = [line for line in r.stdout.splitlines()
+                   if not line.startswith(("wrote ", "to play the tosses", "no scene of the tosses"))]
+        body_csv = sorted(folder.glob("*-fit-body.csv"))[0]
+        stem = body_csv.name[: -len("-fit-body.csv")]
+        scenes = sorted(folder.glob(f"{stem}-toss*.toml"), key=lambda p: int(re.findall(r"toss(\d+)", p.name)[-1]))
+        run([bookspin, "explore", *map(str, scenes), "-o", str(folder / "page")])
+        cli[(name, drag)] = (read_csv(body_csv), read_csv(folder / f"{stem}-fit.csv"), summary,
+                             page_scenes(folder / "page" / "explorer.html"))
+    bad_cases = {}
+    for expected in sorted((source / "tests" / "bad_recordings").glob("*.expected")):
+        if expected.with_suffix(".args").exists():
+            continue
+        recording = next(p for p in (expected.with_suffix(".csv"), expected.with_suffix(".zip")) if p.exists())
+        shutil.copy(recording, recordings / recording.name)
+        bad_cases[recording.name] = expected.read_text().strip().replace("{FILE}", recording.name)
+
+    with serve(out) as base_url, \
+            open_browser(chromium, driver_path, size=(1280, 720), exact_viewport=True) as driver:
+        driver.get(base_url + "explorer.html?scene=exact-unstable-x#lab")
+        if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+            fail(f"the page never became ready: {driver.get_log('browser')}")
+        if driver.execute_script("return document.getElementById('lab').hidden"):
+            fail("explorer.html#lab did not open the Phone-toss lab")
+
+        # 1. Through the hook: every case, every column, the summary, the scenes.
+        for (name, drag), ((bh, brows), (th, trows), summary, scenes) in cli.items():
+            t0 = time.monotonic()
+            got = fit_in_page(driver, base_url, "recordings/" + name, name, drag)
+            if not got["ok"]:
+                fail(f"{name} --drag {drag}: the page refused it: {got['error']}")
+            r = got["r"]
+            worst = compare_row(f"{name} --drag {drag} body", r["body"], bh, brows[0])
+            if len(r["tosses"]) != len(trows):
+                fail(f"{name} --drag {drag}: the page found {len(r['tosses'])} tosses, bookspin fit {len(trows)}")
+            for k, (page_row, cli_row) in enumerate(zip(r["tosses"], trows)):
+                worst = max(worst, compare_row(f"{name} --drag {drag} toss {k + 1}", page_row, th, cli_row))
+            if r["summary"] != summary:
+                fail(f"{name} --drag {drag}: the page's summary {r['summary']} is not the command's {summary}")
+            if len(r["scenes"]) != len(scenes):
+                fail(f"{name} --drag {drag}: {len(r['scenes'])} scenes in the page, {len(scenes)} toss scenes")
+            for k, (a, b) in enumerate(zip(r["scenes"], scenes)):
+                compare_scene(f"{name} --drag {drag} toss {k + 1}", a, b)
+            flags = [t["poor_fit"] for t in r["tosses"]]
+            print(f"{name} --drag {drag}: {len(trows)} tosses, every column equal (largest "
+                  f"difference {worst:.1e} of its scale), summary and scenes equal, flagged "
+                  f"{flags} ({time.monotonic() - t0:.1f} s)")
+
+        # 2. Bad recordings: the command line's one line.
+        for name, line in bad_cases.items():
+            got = fit_in_page(driver, base_url, "recordings/" + name, name, "linear")
+            if got.get("ok") or got["error"] != line:
+                fail(f"{name}: the page said {got.get('error')!r}, the command line {line!r}")
+        print(f"bad recordings: {len(bad_cases)} refused with the command line's line")
+
+        # 3. Play a toss: the scene chosen, its measured ω drawn.
+        driver.execute_script("document.getElementById('labClose').click()")
+        driver.execute_script("document.getElementById('labOpen').click()")
+        zip_path = (recordings / "phone-on-book-synthetic.zip").resolve()
+        driver.find_element(By.ID, "labFile").send_keys(str(zip_path))
+        if not wait_for(driver, "return !document.getElementById('labResult').hidden", bool, 120):
+            fail(f"the panel showed no fit: {driver.find_element(By.ID, 'labError').text}")
+        (bh, brows), _, _, scenes = cli[("phone-on-book-synthetic.zip", "linear")]
+        body = dict(zip(bh, brows[0]))
+        shown = driver.find_element(By.ID, "labBody").text
+        for column in ("I1_over_I3", "I2_over_I3"):
+            if f"{float(body[column]):.6g}" not in shown:
+                fail(f"the panel's body table does not show {column} {body[column]}: {shown!r}")
+        time.sleep(1.0)
+        driver.save_screenshot(str(shots / "explorer-lab-1280x720.png"))
+        driver.execute_script("document.querySelectorAll('#labTosses button')[1].click()")
+        drawn = wait_for(driver, "return [document.getElementById('scene').value, window.explorer.measuredDrawn()]",
+                         lambda v: v[0] == scenes[1]["name"] and v[1]["sphere"] > 0, 30)
+        if not drawn or drawn[0] != scenes[1]["name"] or driver.execute_script(
+                "return !document.getElementById('lab').hidden"):
+            fail(f"Play did not play toss 2 ({scenes[1]['name']}) with its measurement: {drawn}")
+        driver.execute_script("window.explorer.setPlaying(true)")
+        time.sleep(1.5)
+        measured = driver.execute_script("return window.explorer.measuredDrawn()")
+        if not measured["plot"] > 0:
+            fail(f"toss 2 plays without its measured ω on the plot: {measured}")
+        print(f"play: toss 2 as scene {drawn[0]}, measured drawn {measured}")
+
+        # 4. Dropped on the panel, and on the judge's (a DragEvent carrying the file).
+        driver.execute_script("window.explorer.setPlaying(false); document.getElementById('labOpen').click();"
+                              "document.getElementById('labResult').hidden = true")
+        data = base64.b64encode(zip_path.read_bytes()).decode()
+        driver.execute_script("""
+            const [id, name, data] = arguments;
+            const bytes = Uint8Array.from(atob(data), (c) => c.charCodeAt(0));
+            const transfer = new DataTransfer();
+            transfer.items.add(new File([bytes], name));
+            document.getElementById(id).dispatchEvent(new DragEvent('drop', {dataTransfer: transfer, bubbles: true, cancelable: true}));
+        """, "labDrop", zip_path.name, data)
+        if not wait_for(driver, "return !document.getElementById('labResult').hidden", bool, 120):
+            fail(f"a recording dropped on the panel was not fitted: {driver.find_element(By.ID, 'labError').text}")
+        if f"{float(body['I1_over_I3']):.6g}" not in driver.find_element(By.ID, "labBody").text:
+            fail("the dropped recording's body is not the command line's")
+        driver.execute_script("document.getElementById('labClose').click()")
+        run([bookspin, "flipcheck", "export", str(source / "scenes" / "exact-unstable-x.toml"),
+             "-o", str(out / "judge")])
+        motion = out / "judge" / "exact-unstable-x-exact.csv"
+        driver.execute_script("document.getElementById('judgeOpen').click()")
+        driver.execute_script("""
+            const [name, text] = arguments;
+            const transfer = new DataTransfer();
+            transfer.items.add(new File([text], name, {type: 'text/csv'}));
+            document.getElementById('judgeDrop').dispatchEvent(new DragEvent('drop', {dataTransfer: transfer, bubbles: true, cancelable: true}));
+        """, motion.name, motion.read_text())
+        verdict = wait_for(driver, "return document.getElementById('judgeResult').hidden ? '' : "
+                           "document.getElementById('judgeVerdict').textContent", bool, 120)
+        if not (verdict or "").startswith("PASS"):
+            fail(f"the exact motion dropped on the judge panel: {verdict!r} "
+                 f"{driver.find_element(By.ID, 'judgeError').text}")
+        driver.execute_script("document.getElementById('judgeClose').click()")
+        print(f"drop: the lab fitted the dropped zip; the judge panel judged a dropped CSV: {verdict}")
+
+        # 5. A bad file through the panel.
+        bad_name, bad_line = next(iter(bad_cases.items()))
+        driver.execute_script("document.getElementById('labOpen').click()")
+        driver.find_element(By.ID, "labFile").send_keys(str((recordings / bad_name).resolve()))
+        error = wait_for(driver, "return document.getElementById('labError').textContent",
+                         lambda t: t.startswith("error:"), 60)
+        if error != "error: " + bad_line:
+            fail(f"the panel shows {error!r} for {bad_name}, the command line {bad_line!r}")
+
+        # 6. A phone.
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                               {"width": 390, "height": 844, "deviceScaleFactor": 1, "mobile": True})
+        driver.find_element(By.ID, "labFile").send_keys(str(zip_path))
+        wait_for(driver, "return !document.getElementById('labResult').hidden", bool, 120)
+        time.sleep(1.0)
+        edges = driver.execute_script(
+            "return ['labBox', 'labBody', 'labTosses'].map((id) =>"
+            " document.getElementById(id).getBoundingClientRect().right)")
+        if max(edges) > 390:
+            fail(f"the panel is wider than the phone: box, body, tosses end at {edges} px")
+        driver.execute_script("document.querySelector('#labTosses .toss').scrollIntoView()")
+        time.sleep(0.5)
+        driver.save_screenshot(str(shots / "explorer-lab-390x844.png"))
+        errors = [e for e in console_errors(driver) if "favicon" not in e.get("message", "")]
+        if errors:
+            fail(f"console errors: {errors}")
+    print("explorer lab: the page fits as bookspin fit does")
+
+
+if __name__ == "__main__":
+    main()
