@@ -48,6 +48,8 @@ export function drawTossChart(canvas, chart) {
   g.fillStyle = '#bbb'; g.font = '12px sans-serif';
   g.fillText(`${cell(hi)} rad/s`, 2, top + 10); g.fillText(cell(lo), 2, h - bottom);
   g.fillText(`${cell(chart.t[0])} s`, left, h - 6);
+  const legend = 'dots: measured · lines: fitted';
+  g.fillText(legend, w - right - g.measureText(legend).width, top + 10);
   const end = `${cell(chart.t[n - 1])} s`;
   g.fillText(end, w - right - g.measureText(end).width, h - 6);
   for (let c = 0; c < 3; ++c) {
