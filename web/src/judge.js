@@ -4,6 +4,7 @@
 // and an engine's motion CSV is judged by the same code as `judge` (web/judge_bindings.cpp:
 // the motion CSV's parser, analysis::judge_motion and its table, compiled to WebAssembly).
 // Nothing is measured here: this module hands text to the module and writes out its answer.
+import { takeFiles } from './file_drop.js';
 import { Replay } from './replay.js';
 
 const $ = (id) => document.getElementById(id);
@@ -74,15 +75,7 @@ export class JudgePanel {
     menu.addEventListener('change', () => this.clear());
     $('judgeJson').addEventListener('click', () => this.exportFile('json'));
     $('judgeExact').addEventListener('click', () => this.exportFile('csv'));
-    $('judgeFile').addEventListener('change', (e) => { if (e.target.files[0]) this.judgeFile(e.target.files[0]); });
-    const drop = $('judgeDrop');
-    drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('over'); });
-    drop.addEventListener('dragleave', () => drop.classList.remove('over'));
-    drop.addEventListener('drop', (e) => {
-      e.preventDefault();
-      drop.classList.remove('over');
-      if (e.dataTransfer.files[0]) this.judgeFile(e.dataTransfer.files[0]);
-    });
+    takeFiles($('judgeFile'), $('judgeDrop'), (file) => this.judgeFile(file));
     // A link to the panel: explorer.html#judge opens it (the gallery's kit section links it),
     // once the page has its state.
     if (location.hash === '#judge') queueMicrotask(() => this.open(currentScene()));

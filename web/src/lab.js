@@ -6,6 +6,7 @@
 // chart (measured and fitted ω), and plays each toss in the explorer beside its measurement, as
 // `bookspin explore` plays a toss scene the command line wrote. Nothing is fitted here: this
 // module hands bytes to the module and writes out its answer.
+import { takeFiles } from './file_drop.js';
 
 const $ = (id) => document.getElementById(id);
 const OMEGA_COLOURS = ['#ff6060', '#60d060', '#6090ff'];
@@ -71,15 +72,7 @@ export class LabPanel {
     $('labOpen').addEventListener('click', () => this.open());
     $('labClose').addEventListener('click', () => this.close());
     window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('lab').hidden) this.close(); });
-    $('labFile').addEventListener('change', (e) => { if (e.target.files[0]) this.fitFile(e.target.files[0]); });
-    const drop = $('labDrop');
-    drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('over'); });
-    drop.addEventListener('dragleave', () => drop.classList.remove('over'));
-    drop.addEventListener('drop', (e) => {
-      e.preventDefault();
-      drop.classList.remove('over');
-      if (e.dataTransfer.files[0]) this.fitFile(e.dataTransfer.files[0]);
-    });
+    takeFiles($('labFile'), $('labDrop'), (file) => this.fitFile(file));
     // A link to the panel: explorer.html#lab opens it (the gallery's lab section links it).
     if (location.hash === '#lab') queueMicrotask(() => this.open());
   }
