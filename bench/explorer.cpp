@@ -1,12 +1,16 @@
 // Bench section: ns per step of the explorer page's methods (docs/explorer.md), natively, for
 // bench/explorer_bench.py to set beside the same runs in WebAssembly. The loop is the page's:
-// web/bindings.cpp's Session::step, a step then a finiteness check, on the scene's body,
-// initial state, dt and model settings, normalization on (every model but exact).
+// web/bindings.cpp's Session::step, a step, a finiteness check, then the flip detector fed
+// the step's flip signal (analysis::flip_signal of the simulator), on the scene's body,
+// initial state, dt and model settings, normalization on (every model but exact). The exact
+// model is evaluated once per call in the page (its flips are its closed form's): its row is
+// the time of one evaluation, a call of `steps` steps timed over many calls.
 #include <chrono>
 #include <string>
 #include <vector>
 
 #include "analysis/accuracy.hpp"
+#include "analysis/motion.hpp"
 #include "bench/sections.hpp"
 #include "physics/simulator.hpp"
 #include "scene/scene.hpp"
@@ -35,14 +39,20 @@ void bench_explorer(const BenchContext& c) {
     auto sim = physics::make_simulator(scene.body, config);
     double best = 0.0;
     long done = 0;
+    const bool exact = m.kind == physics::ModelKind::exact;
     for (int r = 0; r < c.options.rounds; ++r) {
       sim->reset(scene.initial);
+      analysis::FlipDetector flips;
       const double start = wall_seconds();
       long i = 0;
       while (i < steps) {
         sim->step(scene.dt);
         ++i;
         if (!sim->finite()) break;
+        // The exact model: one evaluation per step here, as the page's one per call.
+        if (!exact)
+          flips.observe(static_cast<double>(i) * scene.dt,
+                        analysis::flip_signal(*sim, scene.body.moments));
       }
       const double ns = (wall_seconds() - start) * 1e9 / static_cast<double>(i);
       if (r == 0 || ns < best) best = ns;

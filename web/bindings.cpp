@@ -263,7 +263,7 @@ class Session {
       ++steps_;
       if (!sim().finite()) return false;
       flips_.observe(static_cast<double>(steps_) * dt,
-                     bookspin::analysis::flip_signal(sim().diagnostics(), body_.moments));
+                     bookspin::analysis::flip_signal(sim(), body_.moments));
     }
     return true;
   }

@@ -28,6 +28,11 @@ ceres_src="$(ls -d "$src"/ceres-solver-*/ | head -1)"
 minizip_src="$(ls -d "$src"/minizip-*/ | head -1)"
 zlib_src="$(ls -d "$src"/zlib-*/ | head -1)"
 export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
+# Debian's ccache in front of emscripten's clang where it is installed: unchanged files are not
+# compiled again, in this build tree or a clone elsewhere (docs/performance.md, "CI").
+if command -v ccache >/dev/null && [ -z "${EM_COMPILER_WRAPPER:-}" ]; then
+  export EM_COMPILER_WRAPPER=ccache CCACHE_BASEDIR="$(dirname "$here")" CCACHE_NOHASHDIR=1
+fi
 stamp="$deps/inputs.sha256"
 inputs=$( { sha256sum "$here/build-wasm-deps.sh"; echo "$ceres_src $minizip_src $zlib_src"; } | sha256sum | cut -d ' ' -f 1)
 prefix="$deps/prefix"

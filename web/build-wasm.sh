@@ -13,6 +13,11 @@ mkdir -p "$out/obj"
 command -v em++ >/dev/null || { echo "build-wasm: em++ not found (apt-get install emscripten)" >&2; exit 3; }
 # Debian's em++ finds its acorn module through NODE_PATH.
 export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
+# Debian's ccache in front of emscripten's clang where it is installed: unchanged files are not
+# compiled again, in this build tree or a clone elsewhere (docs/performance.md, "CI").
+if command -v ccache >/dev/null && [ -z "${EM_COMPILER_WRAPPER:-}" ]; then
+  export EM_COMPILER_WRAPPER=ccache CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
+fi
 # Eigen and Boost.Math are header-only: reach Debian's copies without the host's /usr/include
 # (whose libc headers would shadow emscripten's).
 mkdir -p "$out/include"

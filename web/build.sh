@@ -7,7 +7,8 @@
 #   4. beside it, the JavaScript engines (cannon-es, Rapier, Jolt, Havok: web/src/engines/) as a second
 #      bundle, BUILD_DIR/web/explorer-engines.js, which only `bookspin explore --engines` writes
 #      into the page (the WebAssembly of Rapier and Jolt is inlined in their packages, base64;
-#      Havok's by esbuild).
+#      Havok's by esbuild), packed by web/pack_engines.py (gzip, base64) for the page to inflate;
+#      the physics' WebAssembly is packed likewise by web/make_explorer.py (web/src/packed.js).
 # `bookspin explore SCENE… -o OUT` (found beside the shell: BUILD_DIR/bookspin) then writes the
 # scenes into it: OUT/explorer.html.
 # One caller at a time (a lock in BUILD_DIR/web). Nothing to do, nothing done: BUILD_DIR/web/inputs.sha256 holds the hash of every input (these
@@ -30,7 +31,7 @@ stamp="$work/inputs.sha256"
 mkdir -p "$work"
 exec 9>"$work/.build.lock"
 flock 9
-inputs=$(cd "$root" && find web/build.sh web/build-wasm.sh web/build-wasm-deps.sh web/make_explorer.py \
+inputs=$(cd "$root" && find web/build.sh web/build-wasm.sh web/build-wasm-deps.sh web/make_explorer.py web/pack_engines.py \
            web/*.cpp web/*.hpp web/src web/package.json web/package-lock.json src/physics \
            src/common src/analysis src/jobs/motion_csv.* src/jobs/exact_motion.* src/fit \
            src/products/fit_scene.* src/scene/limits.hpp -type f -print0 |
@@ -50,7 +51,9 @@ fi
 # and never runs in a browser; Havok's .wasm is inlined as bytes (the binary loader).
 "$here/node_modules/.bin/esbuild" "$here/src/engines/index.js" --bundle --format=iife --minify \
   --target=es2020 --external:'node:*' --loader:.wasm=binary --log-level=warning \
-  --outfile="$work/explorer-engines.js"
+  --outfile="$work/explorer-engines.bundle.js"
+# Packed (gzip, its WebAssembly as bytes, base64) for the page to inflate as it starts.
+python3 "$here/pack_engines.py" "$work/explorer-engines.bundle.js" "$work/explorer-engines.js"
 python3 "$here/make_explorer.py" "$here/src/index.html" "$work/bookspin_physics.js" \
   "$work/explorer.bundle.js" "$work/explorer-shell.html"
 echo "$inputs" > "$stamp"

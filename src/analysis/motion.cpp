@@ -22,6 +22,10 @@ double flip_signal(const physics::Diagnostics& diagnostics, const Eigen::Vector3
   return diagnostics.cos_axis_L[intermediate_axis(moments)];
 }
 
+double flip_signal(const physics::Simulator& simulator, const Eigen::Vector3d& moments) {
+  return simulator.cos_axis_L(intermediate_axis(moments));
+}
+
 FlipDetector::FlipDetector(double margin) : margin_(margin) {
   // std::invalid_argument, as physics throws: this file is also compiled into the explorer's
   // WebAssembly, which has src/physics and nothing else (docs/architecture.md).

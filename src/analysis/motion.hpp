@@ -20,6 +20,10 @@ int intermediate_axis(const Eigen::Vector3d& moments);
 /// sign is that of ω and of L along that body axis. A turn-over takes it from one side of 0
 /// to the other, past FlipDetector's margin (docs/physics.md §14).
 double flip_signal(const physics::Diagnostics& diagnostics, const Eigen::Vector3d& moments);
+/// flip_signal(simulator.diagnostics(), moments), the same bits, from the simulator's
+/// cos_axis_L alone: a loop that reads the signal after every step and nothing else of the
+/// diagnostics (the explorer's, docs/explorer.md "Speed") pays for that cosine only.
+double flip_signal(const physics::Simulator& simulator, const Eigen::Vector3d& moments);
 
 /// The turn-overs of a flip signal sampled at increasing times (the flip detector,
 /// docs/physics.md §14): a flip is counted when the signal, having been on one side of 0, goes

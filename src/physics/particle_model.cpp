@@ -178,25 +178,48 @@ Eigen::Matrix3d ParticleModel::orientation() const {
   return best_fit_rotation(x.colwise() - x.rowwise().mean(), rest_);
 }
 
+namespace {
+
+/// cos(R's column `axis`, L), R a rotation (its columns of unit length).
+double spin_cosine(const Eigen::Matrix3d& R, const Eigen::Vector3d& L, int axis) {
+  return R.col(axis).dot(L) / L.norm();
+}
+
+}  // namespace
+
+ParticleModel::Spin ParticleModel::spin() const {
+  Spin s;
+  const Eigen::Vector3d centre = x_.rowwise().mean();
+  s.rel = x_.colwise() - centre;
+  const Corners vel = v_.colwise() - v_.rowwise().mean();
+  // Body frame: best-fit rotation of the current corners onto the rest shape (Kabsch).
+  s.R = best_fit_rotation(s.rel, rest_);
+  s.L.setZero();
+  for (int p = 0; p < 8; ++p) s.L += particle_mass_ * s.rel.col(p).cross(vel.col(p));
+  return s;
+}
+
+double ParticleModel::cos_axis_L(int axis) const {
+  const Spin s = spin();
+  return spin_cosine(s.R, s.L, axis);
+}
+
 Diagnostics ParticleModel::diagnostics() const {
   Diagnostics d;
   d.t = t_;
-  const Eigen::Vector3d centre = x_.rowwise().mean();
-  const Corners rel = x_.colwise() - centre;
-  const Corners vel = v_.colwise() - v_.rowwise().mean();
-  // Body frame: best-fit rotation of the current corners onto the rest shape (Kabsch).
-  const Eigen::Matrix3d R = best_fit_rotation(rel, rest_);
+  const Spin s = spin();
+  const Eigen::Matrix3d& R = s.R;
+  d.L = s.L;
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
   for (int p = 0; p < 8; ++p) {
-    const Eigen::Vector3d r = rel.col(p);
-    d.L += particle_mass_ * r.cross(vel.col(p));
+    const Eigen::Vector3d r = s.rel.col(p);
     inertia += particle_mass_ * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
   }
   d.omega_body = R.transpose() * inertia.ldlt().solve(d.L);
   d.energy_kinetic = kinetic_energy();
   d.energy_potential = spring_energy(x_);
   d.energy_total = d.energy_kinetic + d.energy_potential;
-  for (int axis = 0; axis < 3; ++axis) d.cos_axis_L[axis] = R.col(axis).dot(d.L) / d.L.norm();
+  for (int axis = 0; axis < 3; ++axis) d.cos_axis_L[axis] = spin_cosine(R, d.L, axis);
   d.cos_principal_L = principal_cosines(d.cos_axis_L, book_.principal_moments());
   d.strain_max = strain_max(Corners(x_), rest_);
   d.orthogonality_error = orthogonality_error(R);

@@ -35,6 +35,8 @@ class ParticleModel final : public Simulator {
   /// The corners' mean (equal masses), world.
   Eigen::Vector3d center_of_mass() const override { return x_.rowwise().mean(); }
   Diagnostics diagnostics() const override;
+  /// R.col(axis)·L/|L| of the best-fit rotation R and the corners' L, as diagnostics() has it.
+  double cos_axis_L(int axis) const override;
   bool finite() const override;
 
   Corners velocities() const { return v_; }
@@ -45,6 +47,15 @@ class ParticleModel final : public Simulator {
   CornerRows forces(const CornerRows& x, const CornerRows& v, double& energy) const;
   double spring_energy(const CornerRows& x) const;
   double kinetic_energy() const;
+  /// The corners about their mean (3×8, world), the best-fit rotation R of them onto the rest
+  /// shape (Kabsch, body → world) and their angular momentum L about the mean (world): the
+  /// body frame and momentum diagnostics() and cos_axis_L() read.
+  struct Spin {
+    Corners rel;
+    Eigen::Matrix3d R;
+    Eigen::Vector3d L;
+  };
+  Spin spin() const;
   void normalize(double spring_energy_at_start);
 
   Book book_;

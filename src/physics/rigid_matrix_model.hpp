@@ -22,6 +22,7 @@ class RigidMatrixModel final : public RigidBody {
   void reset(const InitialState& initial) override;
   Corners corners() const override;
   Diagnostics diagnostics() const override;
+  double cos_axis_L(int axis) const override { return axis_cosine(matrix(), L_, axis); }
   bool finite() const override;
 
   /// R at the last step's end (for the splittings: the lagging R turned by the pending

@@ -24,6 +24,9 @@ class RigidQuaternionModel final : public RigidBody {
   void reset(const InitialState& initial) override;
   Corners corners() const override;
   Diagnostics diagnostics() const override;
+  double cos_axis_L(int axis) const override {
+    return axis_cosine(quaternion().toRotationMatrix(), L_, axis);
+  }
   bool finite() const override;
 
   /// q at the last step's end (for the splittings: the lagging q turned by the pending

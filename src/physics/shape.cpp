@@ -84,11 +84,7 @@ Diagnostics rigid_diagnostics(const Body& body, const Eigen::Matrix3d& M, const 
   d.energy_kinetic = 0.5 * omega_world.dot(inertia_world * omega_world);
   d.energy_potential = 0.0;
   d.energy_total = d.energy_kinetic;
-  const double L_norm = L.norm();
-  for (int axis = 0; axis < 3; ++axis) {
-    const Eigen::Vector3d a = M.col(axis);
-    d.cos_axis_L[axis] = a.dot(L) / (a.norm() * L_norm);
-  }
+  for (int axis = 0; axis < 3; ++axis) d.cos_axis_L[axis] = axis_cosine(M, L, axis);
   d.cos_principal_L = principal_cosines(d.cos_axis_L, moments);
   const Corners corners = body.cage.body_corners();
   d.strain_max = strain_max(M * corners, corners);

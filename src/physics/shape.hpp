@@ -52,6 +52,13 @@ Diagnostics prescribed_diagnostics(const Body& body, const Eigen::Matrix3d& R,
                                    const Eigen::Vector3d& L, double t,
                                    const Eigen::Vector3d& omega_body, double energy_kinetic);
 
+/// cos(M's column `axis`, L): the cosine of a body axis placed by M (3×3, body → world) with L
+/// (world), as rigid_diagnostics gives it in cos_axis_L.
+inline double axis_cosine(const Eigen::Matrix3d& M, const Eigen::Vector3d& L, int axis) {
+  const Eigen::Vector3d a = M.col(axis);
+  return a.dot(L) / (a.norm() * L.norm());
+}
+
 /// cos_principal_L from cos_axis_L: the body axes' cosines in principal_order(moments).
 Eigen::Vector3d principal_cosines(const Eigen::Vector3d& cos_axis_L,
                                   const Eigen::Vector3d& moments);

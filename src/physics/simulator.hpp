@@ -136,6 +136,11 @@ class Simulator {
   virtual Eigen::Vector3d center_of_mass() const { return Eigen::Vector3d::Zero(); }
   /// Diagnostics of the current state.
   virtual Diagnostics diagnostics() const = 0;
+  /// diagnostics().cos_axis_L[axis] (axis 0, 1, 2: body x, y, z), the same bits, without the
+  /// rest of the diagnostics: the flip detector's signal, read after every step
+  /// (analysis::flip_signal, docs/physics.md §14). The rigid and particle models compute the
+  /// cosine alone; the others take it from diagnostics().
+  virtual double cos_axis_L(int axis) const { return diagnostics().cos_axis_L[axis]; }
   /// True while every state variable is finite and not absurdly large, and the last step
   /// succeeded (an implicit step that did not converge ends the run: docs/physics.md §10).
   virtual bool finite() const = 0;

@@ -151,3 +151,32 @@ TEST(FlipDetector, CountsTheExactMotionsTurnOversAsTheClosedForm) {
 
 }  // namespace
 }  // namespace bookspin::analysis
+
+namespace bookspin::analysis {
+namespace {
+
+// The explorer's step loop reads the flip signal from the simulator (flip_signal of a
+// Simulator), sweeps from the diagnostics: the same numbers, so both count the same flips, for
+// the book (intermediate axis x) and a body whose intermediate axis is y.
+TEST(FlipSignal, OfTheSimulatorIsThatOfItsDiagnosticsOnEveryIntermediateAxis) {
+  for (const Eigen::Vector3d size :
+       {Eigen::Vector3d(1.878, 2.9085, 0.5), Eigen::Vector3d(2.9, 1.9, 0.5)}) {
+    physics::ModelConfig config;
+    config.kind = physics::ModelKind::rigid_quaternion;
+    const physics::Book book{size, 8.0};
+    auto sim = physics::make_simulator(book, config);
+    const Eigen::Vector3d moments = book.principal_moments();
+    physics::InitialState initial;
+    initial.omega0_body = Eigen::Vector3d::Zero();
+    initial.omega0_body[intermediate_axis(moments)] = 0.5;
+    initial.jiggle = 0.01;
+    sim->reset(initial);
+    for (int step = 0; step < 300; ++step) {
+      EXPECT_EQ(flip_signal(*sim, moments), flip_signal(sim->diagnostics(), moments));
+      sim->step(0.05);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::analysis

@@ -72,10 +72,14 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     fitRecording: (fileName, text, drag = 'linear') => app.lab.fit(fileName, text, drag),
     /** Plays `scene` (one of fitRecording's scenes) as the lab's Play button does. */
     playToss: (scene) => app.lab.play(scene),
+    /** ns per step of a run of `steps` steps (make bench-explorer); the exact model, which the
+     * page evaluates once per call whatever the steps (its closed form), ns per evaluation:
+     * `steps` calls of one step. */
     nsPerStep(model, integrator, normalize, steps) {
       const run = app.runs.startRun(app.state, model, integrator, normalize);
       const t0 = performance.now();
-      Runs.step(run, app.state.dt, steps);
+      if (model === 'exact') for (let i = 0; i < steps; ++i) Runs.step(run, app.state.dt, 1);
+      else Runs.step(run, app.state.dt, steps);
       const ns = (performance.now() - t0) * 1e6 / steps;
       if (run.engine) run.engine.dispose();
       run.session.delete();

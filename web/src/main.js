@@ -6,7 +6,8 @@
 // (readout.js), controls (controls.js), buttons and keys (keys.js), the work per frame (pacing.js),
 // the "Judge a motion" panel (judge.js: bookspin flipcheck judge in the page); the
 // "Phone-toss lab" panel (lab.js: bookspin fit in the page, each toss played as a scene);
-// the JavaScript engines, with --engines, come as window.BOOKSPIN_ENGINES (engines/).
+// the JavaScript engines, with --engines, come as window.BOOKSPIN_ENGINES (engines/); both they
+// and the physics come packed (packed.js).
 import { StateSpace } from './state.js';
 import { Pacer, FIRST_BUDGET_MS } from './pacing.js';
 import { testHooks } from './hooks.js';
@@ -19,6 +20,7 @@ import { listenKeys } from './keys.js';
 import { Controls, VIEW_CONTROLS } from './controls.js';
 import { JudgePanel } from './judge.js';
 import { LabPanel } from './lab.js';
+import { loadProgram } from './packed.js';
 
 const $ = (id) => document.getElementById(id);
 /** While playing, the address is rewritten every 60 ms to 1 s, so that it keeps t. */
@@ -192,9 +194,5 @@ function startApp(wasm, engines) {
   requestAnimationFrame(frame);
 }
 
-// The JavaScript engines (bookspin explore --engines); one that fails to load is left out.
-const ENGINES = (window.BOOKSPIN_ENGINES || []).map((e) => e.load().then(() => e, (err) => {
-  console.warn(`${e.label}: not loaded: ${err}`);
-  return null;
-}));
-Promise.all([BookspinPhysics(), ...ENGINES]).then(([wasm, ...engines]) => startApp(wasm, engines.filter(Boolean)));
+// The physics and, with bookspin explore --engines, the JavaScript engines, unpacked (packed.js).
+loadProgram().then(([wasm, engines]) => startApp(wasm, engines));
