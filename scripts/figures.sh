@@ -82,11 +82,12 @@ motions=("$out"/flipcheck/*-exact.csv)
 # (the test of every one is Flipcheck.JavaScriptEnginesUnderNode).
 engines_quick=()
 [ -z "$quick" ] || engines_quick=(--only cannon-es,babylonjs-havok)
-if command -v node >/dev/null && [ -d web/node_modules/@babylonjs/havok ] && [ -d web/node_modules/mujoco-js ]; then
+# The runner checks every package it imports (--check: one line naming the missing ones).
+if command -v node >/dev/null && node web/flipcheck-engines.mjs --check >/dev/null; then
   node web/flipcheck-engines.mjs "${engines_quick[@]}" "$out/flipcheck/motions" "$out"/flipcheck/*.json
   motions+=("$out"/flipcheck/motions/*.csv)
 else
-  echo "figures: no node or web/node_modules (scripts/install-deps.sh): the league table without the JavaScript engines"
+  echo "figures: no node or not every npm package of the engines (above; scripts/install-deps.sh): the league table without the JavaScript engines"
 fi
 "$bookspin" flipcheck league scenes/flipcheck/*.toml --motions "${motions[@]}" \
   --methods "$league_methods" -o "$out"

@@ -19,7 +19,10 @@
 // and every motion file is in place, nothing is run or written ("up to date"). Otherwise OUT's
 // motion files are all written again and any other CSV there is removed.
 //
-// Usage: node web/flipcheck-engines.mjs [--refine K] [--only NAME,...] OUT SCENARIO.json...
+// Bad input (a scenario that is missing or not JSON, an unknown option) and a missing npm package
+// get one line, exit 2, with nothing written; --check says only whether the packages are there.
+//
+// Usage: node web/flipcheck-engines.mjs [--check] [--refine K] [--only NAME,...] OUT SCENARIO.json...
 //   --refine K: each scenario at dt/K, K times the steps, rows at the same times (the motions
 //     named ...+dt-over-K): what a smaller step does (docs/flipcheck.md, "What an engine's user
 //     should do"); not in `make figures`.
@@ -29,34 +32,65 @@ import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { cannon } from './src/engines/cannon.js';
-import { rapier } from './src/engines/rapier.js';
-import { jolt, joltGyroscopic } from './src/engines/jolt.js';
-import { havok } from './src/engines/havok.js';
-import { ammo } from './src/engines/ammo.js';
-import { oimo } from './src/engines/oimo.js';
-import { mujocoEuler, mujocoRk4, mujocoImplicit, mujocoImplicitfast } from './src/engines/mujoco.js';
 
 const MAX_ROWS = 20000;
 // The engines need a collision shape; its size does not enter the motion, since every adapter
 // is given the moments explicitly (web/src/engines/engine.js). A unit cube.
 const SHAPE = [1, 1, 1];
 const WEB = fileURLToPath(new URL('.', import.meta.url));
+// The npm packages the adapters import (web/package.json; scripts/install-deps.sh installs
+// them), checked before any adapter is imported.
+const PACKAGES = ['cannon-es', '@dimforge/rapier3d-compat', 'jolt-physics', '@babylonjs/havok',
+  'ammo.js', 'oimo', 'mujoco-js'];
 
-const usage = () => {
-  console.error('usage: node web/flipcheck-engines.mjs [--refine K] [--only NAME,...] OUT SCENARIO.json...');
+/** Bad input or a missing package: one line, exit 2, nothing written. */
+const refuse = (line) => {
+  console.error(`flipcheck-engines: ${line}`);
   process.exit(2);
 };
+const usage = () => refuse('usage: node web/flipcheck-engines.mjs [--check] [--refine K] [--only NAME,...] OUT SCENARIO.json...');
 const args = process.argv.slice(2);
-let refine = 1, only = null;
+let refine = 1, only = null, check = false;
 while (args.length && args[0].startsWith('--')) {
+  if (args[0] === '--check') {
+    args.shift();
+    check = true;
+    continue;
+  }
   const [flag, value] = args.splice(0, 2);
   if (flag === '--refine' && /^[1-9][0-9]*$/.test(value ?? '')) refine = Number(value);
   else if (flag === '--only' && value) only = value.split(',');
   else usage();
 }
+const absent = PACKAGES.filter((p) => !existsSync(join(WEB, 'node_modules', p, 'package.json')));
+if (absent.length > 0)
+  refuse(`the npm package${absent.length > 1 ? 's' : ''} ${absent.join(', ')} ` +
+         `${absent.length > 1 ? 'are' : 'is'} not installed in ${join(WEB, 'node_modules')} ` +
+         `(scripts/install-deps.sh installs ${absent.length > 1 ? 'them' : 'it'}: npm ci in web/)`);
+// --check: only whether every package is in place (scripts/figures.sh asks before it runs this).
+if (check) {
+  console.log(`flipcheck-engines: the ${PACKAGES.length} packages are in place`);
+  process.exit(0);
+}
 const [out, ...scenarios] = args;
 if (!out || scenarios.length === 0) usage();
+
+/** A module of the adapters, imported now that its package is known to be there. */
+const adapter = async (file) => {
+  try {
+    return await import(`./src/engines/${file}`);
+  } catch (e) {
+    refuse(`web/src/engines/${file}: ${String(e.message).split('\n')[0]} ` +
+           '(scripts/install-deps.sh installs the packages again: npm ci in web/)');
+  }
+};
+const { cannon } = await adapter('cannon.js');
+const { rapier } = await adapter('rapier.js');
+const { jolt, joltGyroscopic } = await adapter('jolt.js');
+const { havok } = await adapter('havok.js');
+const { ammo } = await adapter('ammo.js');
+const { oimo } = await adapter('oimo.js');
+const { mujocoEuler, mujocoRk4, mujocoImplicit, mujocoImplicitfast } = await adapter('mujoco.js');
 const packageSlug = (e) => e.package.replace(/^@/, '').replace('/', '-');
 const engines = [cannon, rapier, jolt, joltGyroscopic, havok, ammo, oimo,
   mujocoEuler, mujocoRk4, mujocoImplicit, mujocoImplicitfast]
@@ -72,7 +106,91 @@ const motionName = (e) => `${packageSlug(e)}@${version(e.package)}` + (e.mode ? 
 const sha256 = (file) => createHash('sha256').update(readFileSync(file)).digest('hex');
 const inputs = [join(WEB, 'package-lock.json'), fileURLToPath(import.meta.url),
   ...readdirSync(join(WEB, 'src', 'engines')).sort().map((f) => join(WEB, 'src', 'engines', f))];
-const parsed = scenarios.map((file) => [file, JSON.parse(readFileSync(file, 'utf8'))]);
+/** Where `text`, which JSON.parse refused, stops being JSON (RFC 8259's grammar): the index of
+ * the first character that no JSON text can have there (text.length where it ends too soon).
+ * V8's own message names no position for an unexpected token. */
+function jsonErrorAt(text) {
+  let i = 0;
+  const stop = () => { throw i; };
+  const space = () => { while (' \t\n\r'.includes(text[i] ?? 'x')) ++i; };
+  const string = () => {
+    for (++i; text[i] !== '"'; ++i) {
+      if (i >= text.length || text.charCodeAt(i) < 0x20) stop();
+      if (text[i] === '\\') {
+        ++i;
+        if (text[i] === 'u') {
+          if (!/^[0-9a-fA-F]{4}$/.test(text.slice(i + 1, i + 5))) stop();
+          i += 4;
+        } else if (!'"\\/bfnrt'.includes(text[i] ?? 'x')) stop();
+      }
+    }
+    ++i;
+  };
+  const items = (close, item) => {  // after the opening bracket
+    ++i;
+    space();
+    if (text[i] === close) return void ++i;
+    for (;;) {
+      item();
+      space();
+      if (text[i] === close) return void ++i;
+      if (text[i] !== ',') stop();
+      ++i;
+    }
+  };
+  const value = () => {
+    space();
+    const c = text[i];
+    if (c === '{') {
+      items('}', () => {
+        space();
+        if (text[i] !== '"') stop();
+        string();
+        space();
+        if (text[i] !== ':') stop();
+        ++i;
+        value();
+      });
+    } else if (c === '[') items(']', value);
+    else if (c === '"') string();
+    else {
+      const word = ['true', 'false', 'null'].find((w) => text.startsWith(w, i));
+      const number = /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?/.exec(text.slice(i, i + 1000));
+      const length = word ? word.length : number && number[0] ? number[0].length : 0;
+      if (length === 0) stop();
+      i += length;
+    }
+  };
+  try {
+    value();
+    space();
+    if (i < text.length) stop();
+  } catch (at) {
+    if (typeof at !== 'number') throw at;
+    return Math.min(at, text.length);
+  }
+  return text.length;
+}
+
+/** A scenario file's JSON, or one line naming the file and, for JSON that is not, the line and
+ * column where it stops being JSON. */
+const readScenario = (file) => {
+  let text;
+  try {
+    text = readFileSync(file, 'utf8');
+  } catch (e) {
+    refuse(`${file}: ${e.code === 'ENOENT' ? 'no such file' : e.code === 'EISDIR' ? 'is a folder' : e.message}`);
+  }
+  try {
+    return JSON.parse(text);
+  } catch {
+    const position = jsonErrorAt(text);
+    const before = text.slice(0, position).split('\n');
+    const what = position >= text.length ? 'the file ends' : `${JSON.stringify(text[position])}`;
+    refuse(`${file}: not valid JSON: ${what} at line ${before.length}, column ${before.at(-1).length + 1}`);
+  }
+};
+const parsed = scenarios.map((file) => [file, readScenario(file)]);
 const outputs = parsed.flatMap(([, s]) => engines.map((e) => `${s.scenario}-${motionName(e)}.csv`));
 const manifest = JSON.stringify({
   node: process.version,

@@ -19,6 +19,11 @@ each; `bookspin flipcheck judge` judges them all with the exported exact motion.
   MuJoCo's implicit integrator turn over as often as the exact motion but lose energy (drift
   above 1e-3); MuJoCo's Euler and implicitfast tumble out of both stable spins;
 - a second run with nothing changed is up to date and rewrites no motion file;
+- bad input gets one line, exit 2 and nothing written (check_refusals): a package missing from
+  web/node_modules (the runner copied beside a node_modules without Ammo.js, then without any),
+  named with the install command, before any is imported, and `--check` says the same; a
+  scenario file cut short, not JSON, named with its line and column; a missing file and a
+  folder;
 and prints the league table of docs/flipcheck.md.
 
 Skipped (exit 77) where node or the npm packages (web/node_modules, scripts/install-deps.sh) are
@@ -26,7 +31,10 @@ missing; a failure under CI=true.
 """
 import csv
 import json
+import shutil
+import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -74,6 +82,57 @@ def judged(bookspin, scene, motions, out):
         return {row["motion"]: row for row in csv.DictReader(f)}
 
 
+def refused(node, runner, args, want, out):
+    """Runs the runner with `args`: exit 2, one line on stderr holding every string of `want`,
+    nothing on stdout and nothing written to `out`; fail() otherwise."""
+    r = subprocess.run([str(node), str(runner), *map(str, args)], capture_output=True, text=True)
+    lines = r.stderr.strip().splitlines()
+    if r.returncode != 2 or len(lines) != 1 or r.stdout or any(w not in r.stderr for w in want):
+        fail(f"{' '.join(map(str, args))}: exit {r.returncode}, expected 2 and one line with "
+             f"{want}:\n{r.stdout}{r.stderr}")
+    if Path(out).exists():
+        fail(f"{' '.join(map(str, args))}: refused, yet {out} was made")
+    return lines[0]
+
+
+def check_refusals(node, source, scenario):
+    """The runner's one-line answers to bad input, each with nothing written."""
+    with tempfile.TemporaryDirectory(prefix="bookspin-engines-runner-") as tmp:
+        tmp = Path(tmp)
+        out = tmp / "out"
+        # The runner and its adapters copied beside a node_modules of links to the installed
+        # packages but Ammo.js's, then of none.
+        web = tmp / "web"
+        shutil.copytree(source / "web" / "src" / "engines", web / "src" / "engines")
+        for name in ("flipcheck-engines.mjs", "package-lock.json"):
+            shutil.copy(source / "web" / name, web / name)
+        modules = web / "node_modules"
+        for package in sorted({p for p, _ in VERDICTS} - {"ammo.js"}):
+            (modules / package).parent.mkdir(parents=True, exist_ok=True)
+            (modules / package).symlink_to(source / "web" / "node_modules" / package)
+        runner = web / "flipcheck-engines.mjs"
+        print(refused(node, runner, [out, scenario], ["ammo.js", "scripts/install-deps.sh"], out))
+        refused(node, runner, ["--check"], ["ammo.js", "scripts/install-deps.sh"], out)
+        shutil.rmtree(modules)
+        modules.mkdir()
+        line = refused(node, runner, [out, scenario], ["scripts/install-deps.sh"], out)
+        if any(p not in line for p, _ in VERDICTS):
+            fail(f"with no package installed, not every package named: {line}")
+        # The installed runner: scenario files that are not JSON, missing, a folder.
+        runner = source / "web" / "flipcheck-engines.mjs"
+        text = Path(scenario).read_text()
+        cut = tmp / "cut.json"
+        cut.write_text(text[:len(text) // 2])
+        before = text[:len(text) // 2].split("\n")
+        print(refused(node, runner, [out, cut], [str(cut), "the file ends",
+                      f"line {len(before)}, column {len(before[-1]) + 1}"], out))
+        broken = tmp / "broken.json"
+        broken.write_text('{"scenario": "x",\n  "mass": ]\n}\n')
+        refused(node, runner, [out, broken], [str(broken), '"]" at line 2, column 11'], out)
+        refused(node, runner, [out, tmp / "no-such.json"], ["no-such.json: no such file"], out)
+        refused(node, runner, [out, tmp], [f"{tmp}: is a folder"], out)
+
+
 def main():
     bookspin, source, binary = test_arguments(__doc__)
     node = require("node")[0]
@@ -87,6 +146,7 @@ def main():
         fail(f"expected the kit's scenarios {SCENARIOS} in scenes/flipcheck, found {found}")
     run([bookspin, "flipcheck", "export", *scenes, "-o", out / "export", "--force"])
     jsons = [out / "export" / f"{s.stem}.json" for s in scenes]
+    check_refusals(node, source, jsons[0])
     motions_dir = out / "motions"
     run([node, source / "web" / "flipcheck-engines.mjs", motions_dir, *jsons])
     names = {e: motion_name(source, *e) for e in VERDICTS}
