@@ -22,8 +22,6 @@ if [ -n "$regressions" ]; then
   # shellcheck disable=SC2086
   build-fuzz/tests/fuzz/scene_fuzzer $regressions
 fi
-echo "fuzz: $runs executions"
-(cd build-fuzz && ./tests/fuzz/scene_fuzzer -runs="$runs" -max_len=4096 -print_final_stats=1 corpus 2>&1 | tail -15)
 
 # Mesh inputs: a format byte (even: OBJ, odd: STL) before the file's bytes.
 mesh_corpus=build-fuzz/mesh-corpus
@@ -34,6 +32,25 @@ for f in tests/bad_meshes/*.obj tests/bad_meshes/*.stl; do
   case "$f" in *.obj) byte='\x00' ;; *) byte='\x01' ;; esac
   { printf "$byte"; head -c 4096 "$f"; } > "$mesh_corpus/$(basename "$f")"
 done
-echo "fuzz: $mesh_runs mesh executions"
-(cd build-fuzz && LSAN_OPTIONS=suppressions=$PWD/../tests/fuzz/assimp_leaks.supp:print_suppressions=0 \
-  ./tests/fuzz/mesh_fuzzer -runs="$mesh_runs" -seed=1 -max_len=4096 -print_final_stats=1 mesh-corpus 2>&1 | tail -15)
+# The two fuzzers side by side (one process each: two cores in use where there are two), each
+# into its log; the logs' ends printed in turn, and a crash of either fails the script.
+scene_fuzz() {
+  (cd build-fuzz && ./tests/fuzz/scene_fuzzer -runs="$runs" -max_len=4096 -print_final_stats=1 corpus)
+}
+mesh_fuzz() {
+  (cd build-fuzz && LSAN_OPTIONS=suppressions=$PWD/../tests/fuzz/assimp_leaks.supp:print_suppressions=0 \
+    ./tests/fuzz/mesh_fuzzer -runs="$mesh_runs" -seed=1 -max_len=4096 -print_final_stats=1 mesh-corpus)
+}
+echo "fuzz: $runs executions of the scene parser, $mesh_runs of the mesh layer, side by side"
+scene_fuzz > build-fuzz/scene-fuzz.log 2>&1 &
+scene_pid=$!
+mesh_fuzz > build-fuzz/mesh-fuzz.log 2>&1 &
+mesh_pid=$!
+scene_rc=0 mesh_rc=0
+wait "$scene_pid" || scene_rc=$?
+wait "$mesh_pid" || mesh_rc=$?
+echo "fuzz: the scene parser (exit $scene_rc):"
+tail -15 build-fuzz/scene-fuzz.log
+echo "fuzz: the mesh layer (exit $mesh_rc):"
+tail -15 build-fuzz/mesh-fuzz.log
+[ "$scene_rc" -eq 0 ] && [ "$mesh_rc" -eq 0 ]
