@@ -159,7 +159,7 @@ namespace {
 // Simulator), sweeps from the diagnostics: the same numbers, so both count the same flips, for
 // the book (intermediate axis x) and a body whose intermediate axis is y.
 TEST(FlipSignal, OfTheSimulatorIsThatOfItsDiagnosticsOnEveryIntermediateAxis) {
-  for (const Eigen::Vector3d size :
+  for (const Eigen::Vector3d& size :
        {Eigen::Vector3d(1.878, 2.9085, 0.5), Eigen::Vector3d(2.9, 1.9, 0.5)}) {
     physics::ModelConfig config;
     config.kind = physics::ModelKind::rigid_quaternion;
