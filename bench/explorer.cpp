@@ -3,8 +3,8 @@
 // web/bindings.cpp's Session::step, a step, a finiteness check, then the flip detector fed
 // the step's flip signal (analysis::flip_signal of the simulator), on the scene's body,
 // initial state, dt and model settings, normalization on (every model but exact). The exact
-// model is evaluated once per call in the page (its flips are its closed form's): its row is
-// the time of one evaluation, a call of `steps` steps timed over many calls.
+// model, which the page evaluates once per call (its flips are its closed form's), is timed per
+// evaluation: here each step() is one, in the page each call of one step (explorer.nsPerStep).
 #include <chrono>
 #include <string>
 #include <vector>
