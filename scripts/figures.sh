@@ -40,6 +40,26 @@ if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$(echo "$hash"; listing)" ]; then
 fi
 rm -f "$stamp"
 
+# Each stage's seconds, printed as it ends and together at the end (docs/performance.md,
+# "The first make figures").
+stage_start=$(date +%s) stage_table=()
+stage_done() {
+  local now; now=$(date +%s)
+  stage_table+=("$(printf '%-44s %5d s' "$1" $((now - stage_start)))")
+  echo "figures: $1: $((now - stage_start)) s"
+  stage_start=$now
+}
+
+# The explorer page's program (WebAssembly: Ceres, minizip and zlib, then the physics; the
+# app's bundles) builds in the background from the start, beside the sweeps, the league and
+# the fit, which leave a core idle much of the time; the page is written once both are done.
+web_pid=
+mkdir -p "$out/.logs"
+if command -v em++ >/dev/null && command -v npm >/dev/null; then
+  bash web/build.sh "$build" > "$out/.logs/web-build.log" 2>&1 &
+  web_pid=$!
+fi
+
 # The swept points: full, or three per key with --quick.
 points() { if [ -n "$quick" ]; then echo 3; else echo "$1"; fi; }
 frames=() duration=()
@@ -66,9 +86,11 @@ for f in sweeps/when-to-normalize*.toml; do
 done
 "$bookspin" sweep sweeps/tennis-racket-twist.toml "${duration[@]}" \
   --vary "initial.angular_velocity[0]=1e-3:3:$(points 25):log" --measure twist,flip_period -o "$out"
+stage_done "sweeps"
 "$bookspin" accuracy sweeps/engines-energy-vs-dt.toml "${flips[@]}" \
   --methods engines,rigid-quaternion:rk4,rigid-quaternion:implicit-midpoint,rigid-quaternion:splitting4 \
   --dt "${dts[@]}" -o "$out"
+stage_done "engines' accuracy"
 # The conformance kit's league table (docs/flipcheck.md): the scenarios exported, the
 # JavaScript engines run on them under node (where web/node_modules is installed), then every
 # method and mode bookspin has judged beside them: OUT/flipcheck-league.html, which the gallery
@@ -91,6 +113,7 @@ else
 fi
 "$bookspin" flipcheck league scenes/flipcheck/*.toml --motions "${motions[@]}" \
   --methods "$league_methods" -o "$out"
+stage_done "league (the JavaScript engines included)"
 # The phone-toss lab (docs/phone-lab.md) on the sample recording (recordings/README.md): the
 # fit's CSVs, a chart, a scene and a clip of each toss (the book drawn, 640×360; --quick: in
 # real time), which the gallery shows and the explorer page below opens (?scene=<recording>-toss1).
@@ -100,11 +123,21 @@ fit_quick=()
 "$bookspin" fit "recordings/$recording" --render --scene "recordings/$recording.toml" \
   "${fit_quick[@]}" -o "$out"
 tosses=("$out/$recording"-toss[0-9]*.toml)
-if command -v em++ >/dev/null && command -v npm >/dev/null; then
-  bash web/build.sh "$build" &&
-    "$bookspin" explore --engines scenes/*.toml scenes/flipcheck/*.toml sweeps/*.toml "${tosses[@]}" -o "$out"
-else
+stage_done "phone-toss fit and its clips"
+if [ -z "$web_pid" ]; then
   echo "figures: no emscripten or npm: $out/explorer.html not made (scripts/install-deps.sh)"
+elif wait "$web_pid"; then
+  tail -n 1 "$out/.logs/web-build.log"
+  stage_done "waiting for the page's WebAssembly"
+  "$bookspin" explore --engines scenes/*.toml scenes/flipcheck/*.toml sweeps/*.toml "${tosses[@]}" -o "$out"
+  stage_done "explorer page"
+else
+  echo "figures: the explorer page's build failed ($out/.logs/web-build.log):" >&2
+  tail -n 20 "$out/.logs/web-build.log" >&2
+  exit 1
 fi
 GALLERY_EXTRA="$(echo sweeps/*.toml)" bash scripts/render-all.sh "$bookspin" "$out" scenes/*.toml
+stage_done "renders, plots and the gallery"
+echo "figures: the stages' seconds"
+printf '  %s\n' "${stage_table[@]}"
 { echo "$hash"; listing; } > "$stamp.tmp" && mv "$stamp.tmp" "$stamp"

@@ -1,5 +1,7 @@
 #include "common/text_lines.hpp"
 
+#include <string>
+
 namespace bookspin {
 
 std::string_view trimmed(std::string_view text) {
@@ -14,6 +16,50 @@ std::string_view without_bom(std::string_view text) {
   constexpr std::string_view kBom = "\xEF\xBB\xBF";
   if (text.substr(0, kBom.size()) == kBom) text.remove_prefix(kBom.size());
   return text;
+}
+
+TextLine next_line(std::string_view text, std::size_t start) {
+  const std::size_t end = text.find_first_of("\r\n", start);
+  if (end == std::string_view::npos) return {text.substr(start), text.size()};
+  const std::size_t next =
+      text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n' ? end + 2 : end + 1;
+  return {text.substr(start, end - start), next};
+}
+
+std::optional<std::string> nul_byte_problem(std::string_view text) {
+  const std::size_t nul = text.find('\0');
+  if (nul == std::string_view::npos) return std::nullopt;
+  int line = 1;
+  for (std::size_t start = 0;;) {
+    const TextLine next = next_line(text, start);
+    if (next.next > nul || next.next >= text.size()) break;
+    start = next.next;
+    ++line;
+  }
+  return "NUL byte at line " + std::to_string(line) +
+         " (not a text file: a binary file, or text saved as UTF-16)";
+}
+
+namespace {
+constexpr std::size_t kWholeCell = 80, kCutCell = 60;
+
+/// The first kCutCell bytes of `cell`, not ending inside a UTF-8 sequence.
+std::string_view cell_start(std::string_view cell) {
+  std::size_t cut = kCutCell;
+  while (cut > 0 && (static_cast<unsigned char>(cell[cut]) & 0xC0) == 0x80) --cut;
+  return cell.substr(0, cut);
+}
+}  // namespace
+
+std::string quoted_cell(std::string_view cell) {
+  if (cell.size() <= kWholeCell) return "\"" + std::string(cell) + "\"";
+  return "\"" + std::string(cell_start(cell)) + "…\" (" + std::to_string(cell.size()) +
+         " characters)";
+}
+
+std::string cut_cell(std::string_view cell) {
+  if (cell.size() <= kWholeCell) return std::string(cell);
+  return std::string(cell_start(cell)) + "… (" + std::to_string(cell.size()) + " characters)";
 }
 
 }  // namespace bookspin

@@ -1,6 +1,9 @@
 #pragma once
 // The pieces of a text's lines every CSV reader shares, on text already in memory: no I/O, so
 // that the explorer page's WebAssembly reads a motion file as the command line does.
+#include <cstddef>
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace bookspin {
@@ -11,5 +14,28 @@ std::string_view trimmed(std::string_view text);
 /// `text` without a UTF-8 byte-order mark (EF BB BF) at its start: spreadsheets write one
 /// before a CSV's header, and every CSV reader reads past it (docs/outputs.md).
 std::string_view without_bom(std::string_view text);
+
+/// One line of `text` from `start`: the line without its end, and where the next line starts
+/// (text.size() after the last). A line ends at "\r\n", "\n" or a lone "\r" (the old Mac
+/// ending some exporters still write), so a file of any of the three reads alike.
+struct TextLine {
+  std::string_view line;
+  std::size_t next = 0;
+};
+TextLine next_line(std::string_view text, std::size_t start);
+
+/// "NUL byte at line N" (1-based, lines as next_line() counts them, with what it usually means)
+/// when `text` holds a NUL byte, or nullopt: a reader says so before anything else, so that no
+/// message quotes a cell cut short at the NUL.
+std::optional<std::string> nul_byte_problem(std::string_view text);
+
+/// `cell` quoted for an error message: "…" whole up to 80 characters; a longer one cut to its
+/// first 60 with its length given ("12345678901…" (2097152 characters)), so that one line stays
+/// one line.
+std::string quoted_cell(std::string_view cell);
+
+/// The same unquoted, for a message that shows a number as it is ("t = 0.5 is …"): whole up to
+/// 80 characters, else its first 60, "…" and its length ("0.5000…" (2097152 characters)).
+std::string cut_cell(std::string_view cell);
 
 }  // namespace bookspin

@@ -47,13 +47,11 @@ std::vector<std::pair<int, std::string_view>> lines_of(std::string_view text) {
   int number = 0;
   std::size_t begin = 0;
   while (begin < text.size()) {
-    std::size_t end = text.find('\n', begin);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(begin, end - begin);
+    const TextLine next = next_line(text, begin);  // "\r\n", "\n" or a lone "\r"
     ++number;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (line.find_first_not_of(" \t") != std::string_view::npos) lines.emplace_back(number, line);
-    begin = end + 1;
+    if (next.line.find_first_not_of(" \t") != std::string_view::npos)
+      lines.emplace_back(number, next.line);
+    begin = next.next;
   }
   return lines;
 }
@@ -173,6 +171,7 @@ std::optional<std::string> zip_entry(const std::filesystem::path& path, std::str
 GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
                              const std::string& name) {
   text = without_bom(text);  // a spreadsheet's byte-order mark before the header
+  if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
   const auto lines = lines_of(text);
   if (lines.empty()) throw InputError(file, 0, "", "not a gyroscope recording: the file is empty");
   const std::string_view head = lines.front().second;
@@ -201,9 +200,10 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
     double values[4];
     for (int c = 0; c < 4; ++c) {
       const std::optional<double> value = parse_number(cells[c], decimal_comma);
-      if (!value) throw InputError(file, number, header[c], "not a number: \"" + cells[c] + "\"");
+      if (!value)
+        throw InputError(file, number, header[c], "not a number: " + quoted_cell(cells[c]));
       if (!std::isfinite(*value))
-        throw InputError(file, number, header[c], "not a finite number: \"" + cells[c] + "\"");
+        throw InputError(file, number, header[c], "not a finite number: " + quoted_cell(cells[c]));
       values[c] = *value;
     }
     if (!recording.t.empty() && values[0] <= recording.t.back())
@@ -221,6 +221,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
 
 std::vector<double> parse_time_csv(std::string_view text, const std::string& file) {
   text = without_bom(text);
+  if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
   std::vector<double> pauses;
   const auto lines = lines_of(text);
   if (lines.empty()) return pauses;
@@ -235,7 +236,7 @@ std::vector<double> parse_time_csv(std::string_view text, const std::string& fil
     if (cells[0] != "PAUSE") continue;
     const std::optional<double> time = parse_number(cells[1], separator == ';');
     if (!time || !std::isfinite(*time))
-      throw InputError(file, number, "experiment time", "not a number: \"" + cells[1] + "\"");
+      throw InputError(file, number, "experiment time", "not a number: " + quoted_cell(cells[1]));
     pauses.push_back(*time);
   }
   std::sort(pauses.begin(), pauses.end());

@@ -59,6 +59,7 @@ std::optional<std::size_t> column(const std::vector<std::string_view>& header,
 MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
                             long long steps) {
   text = without_bom(text);  // a spreadsheet's byte-order mark before the header
+  if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
   MotionFile motion;
   std::vector<std::string_view> header;
   std::array<std::size_t, 8> at{};  // t, qw, qx, qy, qz, ω x, y, z
@@ -66,10 +67,9 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
   int line_number = 0;
   std::size_t start = 0;
   while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view line = trimmed(text.substr(start, end - start));
-    start = end + 1;
+    const TextLine next = next_line(text, start);  // "\r\n", "\n" or a lone "\r"
+    const std::string_view line = trimmed(next.line);
+    start = next.next;
     ++line_number;
     if (line.empty() || line.front() == '#') continue;
     if (header.empty()) {
@@ -114,19 +114,19 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
       if (cell.empty()) throw InputError(file, line_number, column_name, "empty cell");
       if (!finite_number(cell, v[k])) {
         throw InputError(file, line_number, column_name,
-                         "\"" + std::string(cell) + "\" is not a finite number");
+                         quoted_cell(cell) + " is not a finite number");
       }
     }
     const double t = v[0];
     const double n = std::round(t / dt);
     if (!(n >= 0.0 && n <= static_cast<double>(steps))) {
       throw InputError(file, line_number, std::string(names[0]),
-                       "t = " + std::string(cells[at[0]]) + " is outside the scenario's 0 … " +
+                       "t = " + cut_cell(cells[at[0]]) + " is outside the scenario's 0 … " +
                            finite_text(static_cast<double>(steps) * dt, "t_end"));
     }
     if (std::abs(t - n * dt) > 1e-6 * dt) {
       throw InputError(file, line_number, std::string(names[0]),
-                       "t = " + std::string(cells[at[0]]) +
+                       "t = " + cut_cell(cells[at[0]]) +
                            " is not a whole number of steps of dt = " + finite_text(dt, "dt"));
     }
     const auto step = static_cast<long long>(n);
@@ -140,7 +140,7 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
     }
     if (index > 1 && step != index * motion.stride) {
       throw InputError(file, line_number, std::string(names[0]),
-                       "t = " + std::string(cells[at[0]]) + " is not step " +
+                       "t = " + cut_cell(cells[at[0]]) + " is not step " +
                            std::to_string(index * motion.stride) + " (rows every " +
                            std::to_string(motion.stride) + " steps from t = 0)");
     }
@@ -157,8 +157,8 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
     for (std::size_t k = 5; k < 8; ++k)
       if (std::abs(v[k]) > kMaxOmega)
         throw InputError(file, line_number, std::string(names[k]),
-                         "\"" + std::string(cells[at[k]]) +
-                             "\" is beyond ±1e100 rad per time unit (its energy would overflow)");
+                         quoted_cell(cells[at[k]]) +
+                             " is beyond ±1e100 rad per time unit (its energy would overflow)");
     Eigen::Vector3d omega(v[5], v[6], v[7]);
     if (motion.omega_frame == OmegaFrame::world) omega = q.toRotationMatrix().transpose() * omega;
     motion.rows.push_back({step, q, omega});

@@ -199,6 +199,18 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
   return page.str();
 }
 
+/// Why `file` cannot be a motion CSV, or "": "no such file" (with a word on unmatched shell
+/// patterns when it holds *, ? or [), "is a folder, not a motion CSV", or another
+/// not_a_file_reason().
+std::string motion_path_problem(const std::filesystem::path& file) {
+  std::string why = not_a_file_reason(file);
+  if (why == "no such file" && file.string().find_first_of("*?[") != std::string::npos)
+    return why + " (a pattern that matched no file is passed on as written by the shell)";
+  if (why == "is a directory")
+    return "is a folder, not a motion CSV (give its files, e.g. " + (file / "*.csv").string() + ")";
+  return why;
+}
+
 }  // namespace
 
 FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
@@ -213,6 +225,10 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   std::vector<std::vector<std::filesystem::path>> files(job.scenes.size());
   std::vector<std::vector<std::string>> motion_names(job.scenes.size());
   for (const std::filesystem::path& file : job.motions) {
+    // What the path is, before what it is called: a folder or a missing file (a pattern the
+    // shell matched to nothing arrives as written) is named as such, not by its name.
+    if (const std::string why = motion_path_problem(file); !why.empty())
+      throw InputError(file.string() + ": flipcheck league: --motions: " + why);
     const std::string base = file.filename().string();
     std::size_t best = job.scenes.size();
     for (std::size_t i = 0; i < job.scenes.size(); ++i) {

@@ -10,15 +10,16 @@ namespace bookspin::scene {
 
 std::string parse_measured_omega(std::string_view text, MeasuredOmega& out) {
   text = without_bom(text);  // a spreadsheet's byte-order mark before the header
+  if (const auto nul = nul_byte_problem(text)) return *nul;
   const char* columns[] = {"t", "wx", "wy", "wz"};
   const double w_limit = limit("initial.angular_velocity").max;
   std::vector<double> t;
   std::vector<Eigen::Vector3d> omega;
   int line = 0;
   while (!text.empty()) {
-    const std::size_t end = text.find('\n');
-    const std::string_view row = text.substr(0, end);
-    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+    const TextLine next = next_line(text, 0);  // "\r\n", "\n" or a lone "\r"
+    const std::string_view row = next.line;
+    text = text.substr(next.next);
     ++line;
     const std::string where = "row " + std::to_string(line);
     if (line == 1) {
@@ -36,7 +37,7 @@ std::string parse_measured_omega(std::string_view text, MeasuredOmega& out) {
       rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
       const auto [ptr, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), cells[c]);
       if (ec != std::errc() || ptr != cell.data() + cell.size() || !std::isfinite(cells[c]))
-        return where + ": " + columns[c] + ": not a finite number: '" + std::string(cell) + "'";
+        return where + ": " + columns[c] + ": not a finite number: " + quoted_cell(cell);
       if (c > 0 && std::abs(cells[c]) > w_limit)
         return where + ": " + columns[c] + ": beyond ±1e6 rad per time unit";
     }

@@ -530,9 +530,7 @@ Scene tile_scene(const Scene& scene, const CompareTile& panel) {
 
 Scene parse_scene_text(std::string_view text, const std::filesystem::path& origin,
                        const std::vector<std::string>& overrides) {
-  if (text.find('\0') != std::string_view::npos) {
-    throw InputError(origin.string() + ": not a text file (contains NUL bytes)");
-  }
+  if (const auto nul = nul_byte_problem(text)) throw InputError(origin.string() + ": " + *nul);
   toml::table root;
   try {
     const std::string origin_name = origin.string();

@@ -70,9 +70,38 @@ TEST_P(BadMotion, ExitsTwoWithTheExactLineAndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(Catalogue, BadMotion, ::testing::ValuesIn(load("bad_motions")),
                          case_test_name);
 
+// The league's --motions: what a path is comes before what it is called. A folder, a missing
+// file and a shell pattern that matched nothing (passed on as written) are each named so.
+TEST(BadMotionPaths, TheLeagueNamesAFolderAMissingFileAndAnUnmatchedPattern) {
+  const std::string scenario =
+      quoted(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck" / "mujoco-test-box.toml");
+  const fs::path dir = fresh_dir("bad_motions/paths");
+  const fs::path folder = dir / "motions";
+  fs::create_directories(folder);
+  const std::string prefix = " --motions ";
+  const auto line = [](const std::string& message) { return "bookspin: error: " + message + "\n"; };
+  const std::string out = " -o " + quoted(dir / "out");
+  expect_refused("flipcheck league " + scenario + prefix + quoted(folder) + out,
+                 line(folder.string() +
+                      ": flipcheck league: --motions: is a folder, not a motion CSV (give its "
+                      "files, e.g. " +
+                      (folder / "*.csv").string() + ")"),
+                 dir / "out");
+  const fs::path missing = dir / "mujoco-test-box-gone.csv";
+  expect_refused("flipcheck league " + scenario + prefix + quoted(missing) + out,
+                 line(missing.string() + ": flipcheck league: --motions: no such file"),
+                 dir / "out");
+  const fs::path pattern = folder / "*.csv";
+  expect_refused("flipcheck league " + scenario + prefix + quoted(pattern) + out,
+                 line(pattern.string() +
+                      ": flipcheck league: --motions: no such file (a pattern that matched no "
+                      "file is passed on as written by the shell)"),
+                 dir / "out");
+}
+
 TEST(BadRecordingAndMotionCatalogues, HaveTheirCasesEachWithItsExpectedLine) {
-  expect_complete(load("bad_recordings"), 12);
-  expect_complete(load("bad_motions"), 9);
+  expect_complete(load("bad_recordings"), 14);
+  expect_complete(load("bad_motions"), 11);
 }
 
 }  // namespace

@@ -140,6 +140,26 @@ TEST(Recording, AByteOrderMarkBeforeTheHeaderIsRead) {
             std::vector<double>{1.5});
 }
 
+TEST(Recording, ALoneCrEndsALineAsLfAndCrLfDo) {
+  // Some exporters still end lines with CR alone (the old Mac convention): read alike.
+  const std::string lf = "t,wx,wy,wz\n0,1,2,3\n" + rows(9);
+  std::string cr = lf, crlf;
+  for (char& c : cr)
+    if (c == '\n') c = '\r';
+  for (char c : lf) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const GyroRecording a = parse_gyro_csv(lf, "lf.csv", "lf");
+  for (const std::string& text : {cr, crlf}) {
+    const GyroRecording b = parse_gyro_csv(text, "x.csv", "x");
+    EXPECT_EQ(b.t, a.t);
+    ASSERT_EQ(b.omega.size(), a.omega.size());
+    EXPECT_EQ(b.omega.back(), a.omega.back());
+  }
+  // The rows named in an error count lone CRs as line ends too.
+  std::string bad = cr;
+  bad.replace(bad.find("0.03"), 4, "0.0x");
+  EXPECT_EQ(error_of(bad), "bad.csv:5: t: not a number: \"0.0x0000\"");
+}
+
 /// A zip at `path` of `files` (name, bytes), deflated; with `declared` set, each entry stored
 /// raw and declared to inflate to that many bytes (a zip bomb's claim).
 void write_zip(const std::filesystem::path& path,

@@ -40,8 +40,8 @@ TEST(MeasuredFile, RefusesWhatIsNotASample) {
   EXPECT_EQ(problem("t,wx,wy,wz\n"), "no samples (a header alone)");
   EXPECT_EQ(problem("t,wx,wy,wz\n0,1,2\n"), "row 2: expected 4 cells (t,wx,wy,wz)");
   EXPECT_EQ(problem("t,wx,wy,wz\n0,1,2,3,4\n"), "row 2: expected 4 cells (t,wx,wy,wz)");
-  EXPECT_EQ(problem("t,wx,wy,wz\n0,1,nan,3\n"), "row 2: wy: not a finite number: 'nan'");
-  EXPECT_EQ(problem("t,wx,wy,wz\n0,1,2,x\n"), "row 2: wz: not a finite number: 'x'");
+  EXPECT_EQ(problem("t,wx,wy,wz\n0,1,nan,3\n"), "row 2: wy: not a finite number: \"nan\"");
+  EXPECT_EQ(problem("t,wx,wy,wz\n0,1,2,x\n"), "row 2: wz: not a finite number: \"x\"");
   EXPECT_EQ(problem("t,wx,wy,wz\n0,1,2,3\n0,1,2,3\n"), "row 3: t: not after the row before");
   EXPECT_EQ(problem("t,wx,wy,wz\n-1,1,2,3\n"), "row 2: t: negative (time since the scene's start)");
   EXPECT_EQ(problem("t,wx,wy,wz\n0,2e6,2,3\n"), "row 2: wx: beyond ±1e6 rad per time unit");
