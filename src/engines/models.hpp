@@ -14,6 +14,8 @@ namespace bookspin::engines {
 /// engine's model for mujoco, bullet and ode (each given body.cage.mass and body.moments in
 /// the principal frame, never a collision shape's inertia). Throws std::invalid_argument when
 /// the model does not support the integrator (physics::supports), or as make_simulator does;
+/// InputError for a body the engine itself refuses (MuJoCo's compiler: mass or a moment at
+/// most its mjMINVAL, 1e-15; one line with the body's numbers);
 /// InternalError for a kind that is no model's, or an engine's kind that has no model here
 /// (bugs, never another model in its place).
 std::unique_ptr<physics::Simulator> make_model(const physics::Body& body,

@@ -5,6 +5,8 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "common/errors.hpp"
+
 namespace bookspin::engines {
 
 namespace {
@@ -62,14 +64,38 @@ mjModel* load_mjcf(const std::string& xml, const char* file_name, const char* wh
   char error[1000] = "";
   mjModel* model = mj_loadXML(file_name, &vfs, error, sizeof error);
   mj_deleteVFS(&vfs);
-  if (model == nullptr)
-    throw std::runtime_error(std::string("MuJoCo rejected ") + what + ": " + error);
+  if (model == nullptr) {
+    // MuJoCo's message spans lines (the error, then the element and line of the XML): one
+    // line, its parts joined by "; ".
+    std::string message;
+    for (const char* c = error; *c != '\0'; ++c) {
+      if (*c != '\n') {
+        message += *c;
+      } else if (!message.empty() && c[1] != '\0') {
+        message += "; ";
+      }
+    }
+    throw std::runtime_error(std::string("MuJoCo rejected ") + what + ": " + message);
+  }
   return model;
 }
 
 MujocoModel::MujocoModel(const physics::Body& body, physics::Integrator integrator)
     : EngineBody(body) {
-  model_ = load_mjcf(model_xml(body, integrator), "bookspin.xml", "the body's model");
+  // A body MuJoCo's compiler refuses (a mass or moment at most its mjMINVAL, 1e-15; moments
+  // that break A + B >= C) is bad input, not a bug: the scene reader refuses the known limits
+  // first (scenes/README.md, "Engine limits"), and anything else MuJoCo says is passed on as
+  // one line naming the body, never as an internal error.
+  try {
+    model_ = load_mjcf(model_xml(body, integrator), "bookspin.xml", "the body's model");
+  } catch (const std::runtime_error& e) {
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers,
+                  "mass %.6g, principal moments %.6g, %.6g, %.6g; MuJoCo needs each above its "
+                  "mjMINVAL, 1e-15",
+                  body.cage.mass, body.moments.x(), body.moments.y(), body.moments.z());
+    throw InputError(std::string(e.what()) + " (this body: " + numbers + ")");
+  }
   data_ = mj_makeData(model_);
   if (data_ == nullptr) {
     mj_deleteModel(model_);

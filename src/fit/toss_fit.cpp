@@ -24,6 +24,10 @@ constexpr double kPi = 3.14159265358979323846;
 // The flags (docs/phone-lab.md, "Flags"): a 50 ms block of the residual over kBlockFactor times
 // both the flight's median block and the noise at rest; or the whole residual over kNoFit of |ω|.
 constexpr double kBlock = 0.05;
+// The widest range of a phone's or a consumer IMU's gyroscope: ±4000 °/s (69.8 rad/s; most
+// phones stop at ±2000 °/s, 34.9 rad/s). A sample beyond it cannot be a measurement: the
+// recording is in other units (°/s) or scaled (docs/phone-lab.md, "Flags").
+constexpr double kGyroRangeMax = 4000.0 * 3.14159265358979323846 / 180.0;
 constexpr double kBlockFactor = 4.0;
 constexpr double kNoFit = 0.10;
 
@@ -630,7 +634,19 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     toss.residual_rms = std::sqrt(sum2 / d.tau.size());
     double mean_omega = 0.0;
     for (const Eigen::Vector3d& w : d.omega) mean_omega += w.norm() / d.omega.size();
-    toss.flag = flag_of(d.tau, residuals[k], mean_omega, noise);
+    double peak_omega = 0.0;  // the largest component measured, rad/s
+    for (const Eigen::Vector3d& w : d.omega)
+      peak_omega = std::max(peak_omega, w.cwiseAbs().maxCoeff());
+    if (peak_omega > kGyroRangeMax) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "ω reaches %.4g rad/s, beyond any gyroscope's range (phones: ±2000 °/s, "
+                    "34.9 rad/s; at most ±4000 °/s, 69.8 rad/s): a recording in °/s, or scaled?",
+                    peak_omega);
+      toss.flag = text;
+    } else {
+      toss.flag = flag_of(d.tau, residuals[k], mean_omega, noise);
+    }
     toss.poor_fit = !toss.flag.empty();
     if (toss.poor_fit)
       body.notes.push_back("toss " + std::to_string(k + 1) + " flagged: " + toss.flag +

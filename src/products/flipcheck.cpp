@@ -47,11 +47,17 @@ std::vector<analysis::JudgedMotion> judge_all(const scene::Scene& scene,
         analysis::simulated_motion(scenario, m, scene.model, scene.steps_per_frame, stop));
     if (runs.back().empty()) throw InternalError("flipcheck: " + m.label + " gave no finite start");
   }
+  // A judgement is tens of milliseconds (the exact motion at every row): asked between them,
+  // a stop is answered within a second (docs/outputs.md, "Signals").
   std::vector<analysis::JudgedMotion> judged;
-  for (std::size_t i = 0; i < files.size(); ++i)
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    stop_if_asked(stop, "flipcheck judge");
     judged.push_back({files[i], names[i], analysis::judge_motion(scenario, read[i].rows)});
-  for (std::size_t i = 0; i < methods.size(); ++i)
+  }
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    stop_if_asked(stop, "flipcheck judge");
     judged.push_back({{}, methods[i].label, analysis::judge_motion(scenario, runs[i])});
+  }
   return judged;
 }
 

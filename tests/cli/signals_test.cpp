@@ -63,6 +63,25 @@ void expect_stopped_cleanly(const std::vector<std::string>& args, const char* ho
 
 const std::string kFig09 = scene_path("fig09-matrix-unstable-x");
 
+// The league judges every method's motion, tens of milliseconds each (the exact motion at every
+// row), and asks between them: a signal on the line of the first judgement stops it at the
+// next, within the second, nothing written. Without the poll the judging runs on for seconds.
+class LeagueSignal : public ::testing::TestWithParam<int> {};
+
+TEST_P(LeagueSignal, StopsBetweenJudgementsAndWritesNothing) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  fs::create_directories(out);
+  const std::string scenario =
+      (fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck" / "mujoco-test-box.toml").string();
+  expect_stopped_cleanly(
+      words({"flipcheck", "league", scenario, "--methods", "all", "-o", out.string()}), kReport,
+      "flipcheck judge", GetParam(), out, {});
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, LeagueSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
+                         [](const auto& info) { return signal_name(info.param); });
+
 // The export's frame loop polls every frame: a signal in a long export stops it before the
 // file is written, and the previous .glb and its manifest stay. The second run is --force: an
 // export is cached, and this one must reach its frames whatever the manifest says.

@@ -330,3 +330,31 @@ TEST(EngineModes, EveryModeOfTheTableMakesAModelAndNoOther) {
 
 }  // namespace
 }  // namespace bookspin::engines
+
+namespace bookspin::engines {
+namespace {
+
+// A body MuJoCo's compiler refuses is bad input (InputError: exit 2, one line naming MuJoCo's
+// limit and the body's numbers), never an internal error: the scene reader's check covers the
+// known limits, this covers whatever else MuJoCo refuses. Each moment 1e-20 (a 1e-12 mass of
+// 1e-4-unit book), below mjMINVAL = 1e-15 (mjmodel.h).
+TEST(EngineModels, ABodyMujocoRefusesIsBadInputNamingItsLimit) {
+  physics::Book tiny;
+  tiny.size = Eigen::Vector3d(1e-4, 2e-4, 3e-4);
+  tiny.mass = 1e-12;
+  const physics::Body body = physics::book_body(tiny);
+  ASSERT_LT(body.moments.maxCoeff(), 1e-15);
+  try {
+    make_model(body, {ModelKind::mujoco, Integrator::euler});
+    FAIL() << "MuJoCo took a body below its mjMINVAL";
+  } catch (const InputError& e) {
+    const std::string line = e.what();
+    EXPECT_NE(line.find("MuJoCo rejected the body's model"), std::string::npos) << line;
+    EXPECT_NE(line.find("mjMINVAL, 1e-15"), std::string::npos) << line;
+    EXPECT_NE(line.find("mass 1e-12"), std::string::npos) << line;
+    EXPECT_EQ(line.find('\n'), std::string::npos) << line;
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::engines

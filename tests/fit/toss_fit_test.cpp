@@ -293,6 +293,26 @@ TEST(TossFit, ACatchInsideTheFlightIsFlaggedAndCleanTossesAreNot) {
   EXPECT_FALSE(caught.tosses[2].poor_fit) << caught.tosses[2].flag;
 }
 
+// A recording whose ω no gyroscope can measure (ω scaled by 1e5: up to about 1.4e6 rad/s, far
+// beyond the ±4000 °/s = 69.8 rad/s of the widest consumer gyroscope) is flagged for that,
+// whatever its residual; the same recording as measured is not.
+TEST(TossFit, OmegaBeyondAnyGyroscopesRangeIsFlaggedForIt) {
+  const test::SyntheticRecording synthetic =
+      test::make_recording(test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.0}, {{0.4, 13.0, 0.6}, 1.1}});
+  std::vector<std::pair<double, double>> ranges;
+  for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
+  GyroRecording recording = as_recording(synthetic);
+  const FitResult measured = fit_recording(recording, hand_flights(recording, ranges));
+  for (const TossFit& toss : measured.tosses) EXPECT_EQ(toss.flag.find("range"), std::string::npos);
+  for (Eigen::Vector3d& w : recording.omega) w *= 1e5;
+  const FitResult scaled = fit_recording(recording, hand_flights(recording, ranges));
+  for (const TossFit& toss : scaled.tosses) {
+    EXPECT_TRUE(toss.poor_fit);
+    EXPECT_NE(toss.flag.find("beyond any gyroscope's range"), std::string::npos) << toss.flag;
+    EXPECT_NE(toss.flag.find("69.8 rad/s"), std::string::npos) << toss.flag;
+  }
+}
+
 // half_period_predicted sees nothing of its own toss after the first predict_window s: toss 2's
 // later samples scaled by 5 % change its fitted half period but not its prediction (only the
 // solver's tolerance apart); the fold that predicts toss 2 is the one without it.
