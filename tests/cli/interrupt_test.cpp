@@ -228,5 +228,17 @@ TEST(Interrupt, SigtermAndSigintLeaveNoFolderTheyMade) {
   }
 }
 
+// SIGHUP (a closed terminal, a dropped ssh connection) stops a render as SIGTERM does: exit
+// 129, its temporaries and the folders it made taken back.
+TEST(Interrupt, SighupStopsARenderAndLeavesNothing) {
+  const fs::path root = fresh_dir("interrupt-sighup");
+  const fs::path out = root / "new";
+  const pid_t pid = start_render(out, kLongRun);
+  ASSERT_TRUE(wait_for_partial_frames(pid, out / kName, 3));
+  kill(pid, SIGHUP);
+  EXPECT_EQ(wait_status(pid), 129);
+  EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace bookspin::cli
