@@ -65,6 +65,19 @@ export function drawTossChart(canvas, chart) {
 
 /** The panel over the WebAssembly module; `play(scene)` plays a toss's scene in the explorer. */
 export class LabPanel {
+  /** The `play` of a page with scenes `scenes` (the page's list) and `controls`: a fitted toss
+   * is added to the scenes (or in place of an earlier fit's of the same name) and chosen, as
+   * the scene menu chooses one. */
+  static playAsScene(scenes, controls) {
+    return (scene) => {
+      const at = scenes.findIndex((s) => s.name === scene.name);
+      if (at >= 0) scenes[at] = scene; else scenes.push(scene);
+      controls.addScene(scene);
+      $('scene').value = scene.name;
+      $('scene').dispatchEvent(new Event('change'));
+    };
+  }
+
   constructor(wasm, play) {
     this.wasm = wasm;
     this.play = play;

@@ -1,13 +1,11 @@
 // The bookspin explorer: src/physics compiled to WebAssembly (web/bindings.cpp) stepped live,
 // the body drawn with three.js, the momentum sphere and plots on 2D canvases. No physics and no
 // measuring here: every number drawn comes from the WebAssembly module (docs/explorer.md).
-// This file wires the parts: state and URL (state.js), runs (runs.js), 3D view (view3d.js),
-// sphere (sphere.js), plots (plots.js) and the measured toss over both (panels.js), the readout
-// (readout.js), controls (controls.js), buttons and keys (keys.js), the work per frame (pacing.js),
-// the "Judge a motion" panel (judge.js: bookspin flipcheck judge in the page); the
-// "Phone-toss lab" panel (lab.js: bookspin fit in the page, each toss played as a scene);
-// the JavaScript engines, with --engines, come as window.BOOKSPIN_ENGINES (engines/); both they
-// and the physics come packed (packed.js).
+// This file only wires the parts: state (state.js) and address (address.js), runs (runs.js), 3D
+// view (view3d.js), sphere (sphere.js), plots (plots.js) and the measured toss over both
+// (panels.js), readout (readout.js), controls (controls.js), keys (keys.js), the work per frame
+// (pacing.js), and the panels, each its own module: "Judge a motion" (judge.js), "Phone-toss
+// lab" (lab.js), the JavaScript engines (engines/, with --engines); all packed (packed.js).
 import { StateSpace } from './state.js';
 import { Pacer, FIRST_BUDGET_MS } from './pacing.js';
 import { testHooks } from './hooks.js';
@@ -21,10 +19,9 @@ import { Controls, VIEW_CONTROLS } from './controls.js';
 import { JudgePanel } from './judge.js';
 import { LabPanel } from './lab.js';
 import { loadProgram } from './packed.js';
+import { Address } from './address.js';
 
 const $ = (id) => document.getElementById(id);
-/** While playing, the address is rewritten every 60 ms to 1 s, so that it keeps t. */
-const URL_MIN_MS = 60, URL_MAX_MS = 1000;
 
 function startApp(wasm, engines) {
   const SCENES = window.BOOKSPIN_SCENES || [];  // inlined by bookspin explore
@@ -50,13 +47,7 @@ function startApp(wasm, engines) {
     app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
   }
 
-  /** The address of the state. `lead` (time units): while playing, t is written ahead of the
-   * time shown by half the time until the next rewrite, so that between two rewrites the address
-   * is never more than half that time off (0.45 at speed 15). */
-  function writeUrl(lead = 0) {
-    const q = space.format(lead ? { ...app.state, t: app.state.t + lead } : app.state, base());
-    history.replaceState(null, '', q ? `?${q}` : location.pathname);
-  }
+  const address = new Address(space, () => app.state, base);
 
   function rebuild() {
     const { state, runs } = app;
@@ -66,7 +57,7 @@ function startApp(wasm, engines) {
     state.t = 0;
     app.pacer.stop();
     catchUp(target, FIRST_BUDGET_MS);
-    writeUrl();
+    address.write();
   }
 
   function advance(t) {
@@ -94,7 +85,7 @@ function startApp(wasm, engines) {
     app.playing = p;
     $('play').textContent = p ? 'Pause' : 'Play';
     app.lastFrame = null;
-    if (!p) writeUrl();
+    if (!p) address.write();
   }
 
   function draw() {
@@ -112,7 +103,7 @@ function startApp(wasm, engines) {
     const t0 = performance.now();
     if (app.pacer.continue(app.runs, app.state)) {
       app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
-      if (app.pacer.target === null) writeUrl();
+      if (app.pacer.target === null) address.write();
       app.costs.physics += performance.now() - t0;
     } else if (app.playing && app.runs.list.length) {
       if (app.lastFrame !== null) {
@@ -124,13 +115,7 @@ function startApp(wasm, engines) {
           app.pacer.play(app.runs, app.state, n, t0);
           app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
         }
-        // Every half time unit, as often as browsers let a page rewrite its address (about
-        // 200 times in 10 s), at least once a second.
-        const every = Math.min(URL_MAX_MS, Math.max(URL_MIN_MS, 500 / Math.max(app.state.speed, 1e-9)));
-        if (now - (app.urlWrittenAt || 0) >= every) {
-          writeUrl(0.5 * (every / 1000) * app.state.speed);
-          app.urlWrittenAt = now;
-        }
+        address.whilePlaying(now);
         app.costs.physics += performance.now() - t0;
       }
       app.lastFrame = now;
@@ -155,7 +140,7 @@ function startApp(wasm, engines) {
     }
     app.state = app.pacer.limit(app.state, base());
     app.controls.write(app.state);
-    if (VIEW_CONTROLS.includes(id)) { app.view.pose(app.runs.list, app.state.showL, app.state.showAxes); writeUrl(); } else rebuild();
+    if (VIEW_CONTROLS.includes(id)) { app.view.pose(app.runs.list, app.state.showL, app.state.showAxes); address.write(); } else rebuild();
     draw();
   });
   /** To time `target`: forwards by catching up, backwards by starting again from t = 0. */
@@ -163,26 +148,18 @@ function startApp(wasm, engines) {
     setPlaying(false);
     target = Math.max(0, target);
     if (target < app.state.t) { app.state.t = target; rebuild(); } else catchUp(target, FIRST_BUDGET_MS);
-    draw(); writeUrl();
+    draw(); address.write();
   }
   function reset() { setPlaying(false); app.state.t = 0; rebuild(); draw(); }
   listenKeys({
-    playing: () => app.playing, setPlaying, time: () => app.state.t, dt: () => app.state.dt, seek, reset, writeUrl,
+    playing: () => app.playing, setPlaying, time: () => app.state.t, dt: () => app.state.dt, seek, reset, writeUrl: (lead) => address.write(lead),
     resetCamera: () => { app.view.resetCamera(app.runs.list, app.state.showL); draw(); },
   });
   window.addEventListener('resize', resize);
   document.addEventListener('fullscreenchange', resize);
 
   app.judge = new JudgePanel(wasm, SCENES, () => app.state.scene);
-  // A toss the Phone-toss lab fitted plays as a scene of the page: added to the scenes (or in
-  // place of an earlier fit's of the same name) and chosen, as the scene menu chooses one.
-  app.lab = new LabPanel(wasm, (scene) => {
-    const at = SCENES.findIndex((s) => s.name === scene.name);
-    if (at >= 0) SCENES[at] = scene; else SCENES.push(scene);
-    app.controls.addScene(scene);
-    $('scene').value = scene.name;
-    $('scene').dispatchEvent(new Event('change'));
-  });
+  app.lab = new LabPanel(wasm, LabPanel.playAsScene(SCENES, app.controls));
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
   window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
   app.state = app.pacer.limit(app.controls.fit(app.state), base());
