@@ -89,7 +89,7 @@ val chart_data(const fit::GyroRecording& recording, const fit::FitResult& result
 }
 
 /// Toss `toss` as the page's scene data, the keys `bookspin explore` writes for the toss's scene
-/// file (products::explorer_scene_data) that the fitted motion sets; the rest are the page's
+/// file (scene::page_data) that the fitted motion sets; the rest are the page's
 /// defaults, as a scene file's are the scene's.
 val toss_scene_data(const fit::GyroRecording& recording, const fit::FitResult& result, int toss) {
   const products::TossScene scene = products::toss_scene(result, toss, recording.name);
@@ -107,7 +107,7 @@ val toss_scene_data(const fit::GyroRecording& recording, const fit::FitResult& r
   state.set("speed", scene.dt * scene.steps_per_frame * products::kTossSceneFramesPerSecond);
   state.set("showL", true);
   // The measured ω in the scene's body frame (products::toss_measured_csv) and, where L = I·ω
-  // is not zero, the direction of L (as products::explorer_scene_data's measured data).
+  // is not zero, the direction of L (as scene::page_data's measured data).
   const bookspin::CsvTable table = products::toss_measured_csv(recording, result, toss);
   const Eigen::Vector3d moments = scene.book.principal_moments();
   std::vector<double> t, w, ut, u;
@@ -141,7 +141,7 @@ val toss_scene_data(const fit::GyroRecording& recording, const fit::FitResult& r
   out.set("description", scene.description);
   out.set("state", state);
   out.set("book", book);
-  // The page's duration is the frames' (products::explorer_scene_data): those that cover it.
+  // The page's duration is the frames' (scene::page_data): those that cover it.
   const double frames =
       bookspin::scene::frames_covering(scene.duration, scene.dt, scene.steps_per_frame);
   out.set("duration", (frames - 1) * scene.dt * scene.steps_per_frame);

@@ -9,6 +9,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "products/explorer.hpp"
+#include "scene/page_data.hpp"
 
 namespace bookspin::cli {
 namespace {
@@ -56,6 +57,7 @@ int explore_command(const ExploreOptions& options) {
     scene::Scene scene = scene::parse_scene(path);
     for (const std::string& warning : scene.warnings)
       std::cerr << "bookspin: warning: " << warning << '\n';
+    request.scene_data.push_back(scene::page_data(scene));  // the value the page reads
     request.scenes.push_back(std::move(scene));
   }
   const products::ExplorerOutcome done = products::make_explorer_page(request);

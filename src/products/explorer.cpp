@@ -42,67 +42,11 @@ RgbaImage half_size(const RgbaImage& image) {
   return half;
 }
 
-/// The members model, integrator and normalize of `m`, each name followed by `suffix` ("" for
-/// the page's first method, "2" for the one it compares with).
-void add_method(JsonObject& state, const physics::ModelConfig& m, const std::string& suffix) {
-  state.push_back({"model" + suffix, {std::string(physics::to_string(m.kind))}});
-  state.push_back({"integrator" + suffix, {std::string(physics::to_string(m.integrator))}});
-  state.push_back({"normalize" + suffix, {m.normalize}});
-}
-
 /// `text` safe inside a <script> element: "</" cannot close it early.
 std::string script_safe(std::string text) {
   for (auto at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
     text.replace(at, 2, "<\\/");
   return text;
-}
-
-/// The models the page can run: every tile but the other engines' (the page binds src/physics
-/// alone, docs/engines.md), or the scene's model; the exact motion where none is left.
-std::vector<physics::ModelConfig> page_models(const scene::Scene& s) {
-  std::vector<physics::ModelConfig> models;
-  if (s.compare.empty()) models.push_back(s.model);
-  for (const scene::CompareTile& tile : s.compare) models.push_back(tile.model);
-  std::erase_if(models, [](const physics::ModelConfig& m) { return physics::is_engine(m.kind); });
-  if (models.empty()) models.push_back({physics::ModelKind::exact, physics::Integrator::euler});
-  return models;
-}
-
-/// The labels of the [[compare]] tiles the page does not run: the other engines' (the page binds
-/// src/physics alone) and those between the first and the last it compares; empty without
-/// [[compare]].
-JsonArray left_out_tiles(const scene::Scene& s) {
-  std::vector<std::size_t> runnable;
-  for (std::size_t i = 0; i < s.compare.size(); ++i)
-    if (!physics::is_engine(s.compare[i].model.kind)) runnable.push_back(i);
-  JsonArray out;
-  for (std::size_t i = 0; i < s.compare.size(); ++i) {
-    const bool shown = !runnable.empty() && (i == runnable.front() || i == runnable.back());
-    if (!shown) out.push_back({s.compare[i].label});
-  }
-  return out;
-}
-
-/// The entries of `m` as doubles, column by column (Eigen's order: a 3×N matrix flattened).
-template <typename Matrix>
-JsonValue numbers(const Matrix& m) {
-  return {std::vector<double>(m.data(), m.data() + m.size())};
-}
-
-/// The scene's measured ω (measured.omega) as the page draws it: {t (time units), w (3×N
-/// body-frame ω, flattened column by column), ut and u: the times and body-frame L/|L| of the
-/// samples whose L = I·ω (I the scene body's principal moments) is not zero, 3×M flattened}.
-JsonObject measured_data(const scene::Scene& s) {
-  const scene::MeasuredOmega& m = s.measured;
-  std::vector<double> ut, u;
-  for (Eigen::Index i = 0; i < m.omega.cols(); ++i) {
-    const Eigen::Vector3d L = s.body.moments.cwiseProduct(m.omega.col(i));
-    const double norm = L.norm();
-    if (!(norm > 0.0) || !std::isfinite(norm)) continue;
-    ut.push_back(m.t[static_cast<std::size_t>(i)]);
-    for (int c = 0; c < 3; ++c) u.push_back(L[c] / norm);
-  }
-  return {{"t", {m.t}}, {"w", numbers(m.omega)}, {"ut", {std::move(ut)}}, {"u", {std::move(u)}}};
 }
 
 /// The page's shell (web/build.sh) and the engines' bundle that fills its engines marker.
@@ -155,57 +99,6 @@ std::filesystem::path default_explorer_shell() {
   return (ec ? std::filesystem::path(".") : exe.parent_path()) / "web" / kExplorerShellName;
 }
 
-JsonObject explorer_scene_data(const scene::Scene& s) {
-  const std::vector<physics::ModelConfig> models = page_models(s);
-  const physics::ModelConfig& first = models.front();
-  JsonObject state{{"body", {std::string(physics::to_string(s.body.shape))}}};
-  add_method(state, first, "");
-  // Air drag (docs/physics.md §21) where the scene has it; the page's default is none.
-  if (first.drag.active())
-    state.insert(state.end(), {{"drag", {std::string(physics::to_string(first.drag.law))}},
-                               {"dragRate", {first.drag.rate}}});
-  state.insert(state.end(), {{"damping", {first.damping}},
-                             {"k", {first.spring_constant}},
-                             {"cells", {std::int64_t{first.lattice_cells}}},
-                             {"dt", {s.dt}},
-                             {"axis", {std::string("custom")}},
-                             {"w", numbers(s.initial.omega0_body)},
-                             {"jiggle", {s.initial.jiggle}},
-                             {"seed", {static_cast<std::int64_t>(s.initial.seed)}},
-                             {"speed", {s.dt * s.steps_per_frame * s.render.fps}},
-                             {"showL", {s.render.show_angular_momentum}},
-                             {"showAxes", {s.render.show_body_axes}}});
-  if (models.size() >= 2) {
-    // The page compares two methods: the first tile with the last (e.g. Euler and exact).
-    state.push_back({"compare", {true}});
-    add_method(state, models.back(), "2");
-  }
-  const physics::Body& b = s.body;
-  JsonObject scene{{"name", {s.name}},
-                   {"title", {s.title}},
-                   {"description", {s.description}},
-                   {"state", {std::move(state)}},
-                   {"book", {JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}},
-                   {"duration", {(s.frames - 1) * s.dt * s.steps_per_frame}}};
-  // What of a comparison the page leaves out, which it says under the scene's description.
-  if (JsonArray left_out = left_out_tiles(s); !left_out.empty())
-    scene.push_back({"left_out", {std::move(left_out)}});
-  if (!s.measured.file.empty()) scene.push_back({"measured", {measured_data(s)}});
-  if (b.shape != physics::BodyShape::book) {
-    scene.push_back({"body",
-                     {JsonObject{{"shape", {std::string(physics::to_string(b.shape))}},
-                                 {"mass", {b.cage.mass}},
-                                 {"moments", numbers(b.moments)},
-                                 {"cage", numbers(b.cage.size)},
-                                 {"volume", {b.volume}},
-                                 {"vertices", numbers(b.vertices)},
-                                 {"triangles", numbers(b.triangles)},
-                                 {"colours", numbers(b.face_colours)},
-                                 {"smooth", {b.smooth}}}}});
-  }
-  return scene;
-}
-
 ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   std::set<std::string> names;
   for (const scene::Scene& s : request.scenes) {
@@ -216,11 +109,12 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   Shell shell = read_shell(request);  // checked before any work
 
   // The page's data, as a plain value: every scene, then the book's faces.
+  if (request.scene_data.size() != request.scenes.size())
+    throw InternalError("explorer page: " + std::to_string(request.scene_data.size()) +
+                        " scenes' page data for " + std::to_string(request.scenes.size()) +
+                        " scenes");
   JsonArray scenes;
-  for (const scene::Scene& s : request.scenes) {
-    stop_if_asked(request.stop_signal, "explore scenes");
-    scenes.push_back({explorer_scene_data(s)});
-  }
+  for (const JsonObject& data : request.scene_data) scenes.push_back({data});
   JsonObject book_art;
   const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
   for (int f = 0; f < 4; ++f) {

@@ -36,32 +36,17 @@ inline constexpr const char* kExplorerEnginesMarker = "<!--BOOKSPIN_ENGINES-->";
 /// explorer-engines.js in the folder of `shell`: the engines' bundle that goes with that shell.
 std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell);
 
-/// One scene as the page reads it (web/src/main.js, window.BOOKSPIN_SCENES[i]), as a plain value
-/// that json_text writes: a JSON object with name, title, description, `state` (the page's
-/// state, web/src/state.js: body, model, integrator, normalize, damping, k, cells, dt, axis
-/// "custom" with ω0 `w` (body frame, rad per time unit), jiggle, seed, speed in time units per
-/// second, the markers; a
-/// [[compare]] scene compares its first tile with its last, of those the page can run: the
-/// other engines' tiles are left out, docs/engines.md; `left_out` lists the labels of the tiles
-/// it does not run, where there are any), `book` (size, mass), `duration` (the scene's run,
-/// (frames − 1)·dt·steps_per_frame time units: the page's time slider spans it) and, for
-/// other bodies, `body`: the Body itself as simulate builds it (shape, mass, principal moments
-/// about x, y, z, cage size, volume, surface 3×V principal frame flattened column by column,
-/// triangles 3×N, face colours 3×N, smooth), so that the page's physics starts from the
-/// same doubles (written in shortest round-trip form) and needs no mesh reader; with
-/// `measured.omega`, `measured`: its samples {t, w: 3×N body-frame ω flattened, ut, u: the
-/// times and body-frame L/|L| (L = I·ω, the body's moments) of the samples with L ≠ 0}, which
-/// the page draws beside its runs (docs/explorer.md). No I/O (the scene reader read the file).
-JsonObject explorer_scene_data(const scene::Scene& scene);
-
 struct ExplorerPageRequest {
   std::vector<scene::Scene> scenes;  ///< in the page's order; names must differ
-  std::filesystem::path shell;       ///< the page without data (web/build.sh)
+  /// scene::page_data of each of `scenes`, in their order: the values the page reads, made by
+  /// the pure stage before the product writes them (one a scene, or an internal error).
+  std::vector<JsonObject> scene_data;
+  std::filesystem::path shell;  ///< the page without data (web/build.sh)
   /// The JavaScript engines' bundle to write into the page (explorer_engines_beside); empty:
   /// none, and the page offers bookspin's own models only.
   std::filesystem::path engines;
   std::filesystem::path out_dir;  ///< writes OUT/explorer.html
-  /// Polled before each scene and each face image ("explore scenes") and before the page is
+  /// Polled before each face image ("explore scenes") and before the page is
   /// written ("explore write"): a signal throws Interrupted; the earlier page and its manifest
   /// stay.
   StopPoll stop_signal;
@@ -74,7 +59,7 @@ struct ExplorerPageResult {
 };
 
 /// Writes explorer_page_path(request.out_dir): the shell with its data marker replaced by one
-/// script that sets window.BOOKSPIN_SCENES (explorer_scene_data of each scene, one a line) and
+/// script that sets window.BOOKSPIN_SCENES (scene::page_data of each scene, one a line) and
 /// window.BOOKSPIN_BOOK_ART (the book's four default face images, render::generate_face_image, as
 /// PNG data: URLs); the engines' marker replaced by request.engines as one script (it sets
 /// window.BOOKSPIN_ENGINES) or, without engines, by nothing. Throws InputError when two scenes

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "scene/page_data.hpp"
 #include "scene/scene.hpp"
 #include "support/scratch.hpp"
 
@@ -21,7 +22,7 @@ bool has(const std::string& text, const std::string& part) {
 
 /// One scene's data as the page reads it.
 std::string explorer_scene_json(const scene::Scene& scene) {
-  return json_text({explorer_scene_data(scene)}, "test scene");
+  return json_text({scene::page_data(scene)}, "test scene");
 }
 
 TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {
