@@ -86,7 +86,6 @@ int render_command(const RenderArgs& args) {
   job.png_compression = args.png_compression;
   job.jobs = args.jobs;
   job.freshness = {args.force, args.verify, remake_note};
-  job.on_note = [](const std::string& note) { std::cerr << "bookspin: note: " << note << '\n'; };
   job.on_progress = [&progress](int done) { progress.update(done); };
   job.stop_signal = stop_poll();
   const products::ClipOutcome done = products::make_clip(job);

@@ -130,9 +130,10 @@ ClipResult render_clip(const ClipRequest& request) {
       scene.compare.empty() ? single_composer(scene) : comparison_composer(scene);
   render::Renderer renderer(composer->picture_settings(tiles.front()->scene));
   ClipSinks sinks(request.paths, options, request.tile_csvs);
-  if (request.on_note && !sinks.encoder_message().empty()) request.on_note(sinks.encoder_message());
 
   ClipResult result;
+  result.mp4_encoder = sinks.mp4_encoder();
+  result.encoder_fallback = sinks.encoder_message();
   FrameFinisher finisher(request, *composer, tiles, sinks, result);
   for (int index = 0; index < scene.frames; ++index) {
     stop_if_asked(request.stop_signal, "render frames");  // the sinks remove their temporaries

@@ -35,9 +35,6 @@ struct ClipRequest {
   bool write_png = true;     ///< false: MP4 and CSV only
   int png_compression = -1;  ///< deflate level 0–9 for the frames; −1: render.png_compression
   int jobs = 0;              ///< worker threads (PNG, encoder); 0: every core
-  /// Called once before the first frame with a note for the user (the encoder fell back to
-  /// libx264); may be empty.
-  std::function<void(const std::string& note)> on_note;
   /// Called after each frame is queued, with the number of frames done so far.
   std::function<void(int done)> on_progress;
   /// Polled before each frame ("render frames") and while the encoders finish (see
@@ -56,6 +53,12 @@ struct ClipResult {
   std::optional<double> diverged_at;  ///< single scene: when its simulation diverged
   std::string divergence_reason;      ///< single scene: the simulator's reason, if it gave one
   std::vector<TileDivergence> diverged_tiles;  ///< comparison scene: every diverged tile
+  /// The H.264 encoder that made the MP4 ("libx264", "h264_nvenc"): render.codec's, or libx264
+  /// when that one is missing or did not open. Empty without an MP4.
+  std::string mp4_encoder;
+  /// Why libx264 made the MP4 rather than render.codec's encoder, in one line ("encoder
+  /// \"h264_nvenc\" failed to open: …; using libx264"); empty when it did not fall back.
+  std::string encoder_fallback;
 };
 
 /// The encoder settings of a render of `scene` (render.width, height, fps, codec, crf,

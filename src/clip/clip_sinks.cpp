@@ -91,6 +91,11 @@ const std::string& ClipSinks::encoder_message() const {
   return mp4_ ? mp4_->fallback_message() : none;
 }
 
+const std::string& ClipSinks::mp4_encoder() const {
+  static const std::string none;
+  return mp4_ ? mp4_->codec_name() : none;
+}
+
 void ClipSinks::stop_workers() {
   for (auto& video : videos_) video->queue.close();
   png_queue_.close();

@@ -85,8 +85,10 @@ class ClipSinks {
   /// A frame buffer the sinks are done with, to render the next frame into instead of
   /// allocating (and page-faulting) a new one; std::nullopt if none is free now.
   std::optional<RgbaImage> spare_frame();
-  /// Non-empty when the MP4 encoder fell back to libx264.
+  /// Non-empty when the MP4 encoder fell back to libx264: one line on why.
   const std::string& encoder_message() const;
+  /// The H.264 encoder making the MP4 ("libx264", "h264_nvenc"); empty without an MP4.
+  const std::string& mp4_encoder() const;
 
  private:
   using Frame = std::shared_ptr<const RgbaImage>;

@@ -5,6 +5,7 @@
 #include "analysis/frame_source.hpp"
 #include "cache/make_cached.hpp"
 #include "clip/clip.hpp"
+#include "common/json_writer.hpp"
 #include "output/manifest.hpp"
 
 namespace bookspin::products {
@@ -13,10 +14,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The divergence warnings of a clip, without the "bookspin: warning: " prefix.
-std::vector<std::string> divergence_warnings(const std::string& name,
-                                             const clip::ClipResult& result) {
+/// The warnings of a clip, without the "bookspin: warning: " prefix: the MP4's encoder fallback
+/// (render.codec's encoder missing or refusing to open, and why), then its divergences.
+std::vector<std::string> clip_warnings(const std::string& name, const clip::ClipResult& result) {
   std::vector<std::string> warnings;
+  if (!result.encoder_fallback.empty()) warnings.push_back(name + ": " + result.encoder_fallback);
   if (result.diverged_at) {
     warnings.push_back(analysis::divergence_warning(name + ": simulation", *result.diverged_at,
                                                     result.divergence_reason,
@@ -27,6 +29,16 @@ std::vector<std::string> divergence_warnings(const std::string& name,
                                                     "", "its tile holds the last finite frame"));
   }
   return warnings;
+}
+
+/// The clip's part of its manifest's note (recorded, not compared): its warnings and, with an
+/// MP4, the H.264 encoder that made it. The head holds render.codec, the encoder asked for;
+/// this is the one used, libx264 when that one fell back.
+std::string clip_note(const std::vector<std::string>& warnings, const clip::ClipResult& result) {
+  std::string note = output::warnings_note(warnings);
+  if (!result.mp4_encoder.empty())
+    note += json_member_lines({{"mp4_encoder", {result.mp4_encoder}}}, "manifest note", 2, false);
+  return note;
 }
 
 /// OUT/<name>.<format>: a video of the clip.
@@ -76,7 +88,6 @@ clip::ClipRequest clip_request(const ClipJob& job) {
   request.write_png = job.write_png;
   request.png_compression = job.png_compression;
   request.jobs = job.jobs;
-  request.on_note = job.on_note;
   request.on_progress = job.on_progress;
   request.stop_signal = job.stop_signal;
   return request;
@@ -109,8 +120,8 @@ ClipOutcome make_clip(const ClipJob& job) {
   done.outcome = cache::make_cached(cached, job.freshness, [&] {
     // Every output of the run is put in place together, or none (clip::render_clip).
     done.result = clip::render_clip(request);
-    done.warnings = divergence_warnings(cached.name, done.result);
-    return cache::Made{outputs, output::warnings_note(done.warnings)};
+    done.warnings = clip_warnings(cached.name, done.result);
+    return cache::Made{outputs, clip_note(done.warnings, done.result)};
   });
   if (done.outcome == cache::Outcome::up_to_date)
     done.warnings = output::read_manifest(layout.manifest).warnings;

@@ -30,15 +30,14 @@ ClipLayout clip_layout(const std::filesystem::path& out_dir, const scene::Scene&
 
 /// What `bookspin render` asks for.
 struct ClipJob {
-  scene::Scene scene;             ///< validated; scene.frames is the clip's length
-  std::filesystem::path out_dir;  ///< OUT
-  bool write_png = true;          ///< false: videos and CSVs only
-  int png_compression = -1;       ///< 0–9; −1: render.png_compression
-  int jobs = 0;                   ///< worker threads; 0: every core
-  cache::Freshness freshness;     ///< --force, --verify and the remake note
-  std::function<void(const std::string& note)> on_note;  ///< see clip::ClipRequest
-  std::function<void(int done)> on_progress;             ///< see clip::ClipRequest
-  StopPoll stop_signal;                                  ///< see clip::ClipRequest
+  scene::Scene scene;                         ///< validated; scene.frames is the clip's length
+  std::filesystem::path out_dir;              ///< OUT
+  bool write_png = true;                      ///< false: videos and CSVs only
+  int png_compression = -1;                   ///< 0–9; −1: render.png_compression
+  int jobs = 0;                               ///< worker threads; 0: every core
+  cache::Freshness freshness;                 ///< --force, --verify and the remake note
+  std::function<void(int done)> on_progress;  ///< see clip::ClipRequest
+  StopPoll stop_signal;                       ///< see clip::ClipRequest
 };
 
 /// The frame loop's request for `job`: its scene, options and the layout's paths.
@@ -52,15 +51,17 @@ std::string clip_manifest_head(const ClipJob& job);
 struct ClipOutcome {
   cache::Outcome outcome = cache::Outcome::made;
   clip::ClipResult result;  ///< the frame loop's result (when made)
-  /// The run's divergence warnings without the "bookspin: warning: " prefix: this run's when
-  /// made, the ones recorded in the manifest when up to date.
+  /// The run's warnings without the "bookspin: warning: " prefix (the MP4 made by libx264
+  /// rather than render.codec's encoder, and why; divergences): this run's when made, the ones
+  /// recorded in the manifest when up to date.
   std::vector<std::string> warnings;
 };
 
 /// (scene, options) => OUT/<scene>.<format> for each format, OUT/<scene>/frames/,
 /// OUT/<scene>/diagnostics*.csv + manifest.
 /// Renders `job` unless its manifest says the outputs are up to date, then writes the
-/// manifest (its note records the scene file and the warnings). Same errors as
+/// manifest (its note records the scene file, the warnings and, with an MP4, the H.264 encoder
+/// that made it: "mp4_encoder", libx264 where render.codec's fell back). Same errors as
 /// clip::render_clip(), and InputError for an unreadable input file.
 ClipOutcome make_clip(const ClipJob& job);
 

@@ -101,13 +101,16 @@ OpenedEncoder open_fallback(const EncoderSettings& settings, bool global_header,
 }  // namespace
 
 bool is_x264_preset(const std::string& preset) {
-  static constexpr std::array<const char*, 10> kPresets = {
-      "ultrafast", "superfast", "veryfast", "faster",   "fast",
-      "medium",    "slow",      "slower",   "veryslow", "placebo"};
-  for (const char* name : kPresets) {
-    if (preset == name) return true;
-  }
-  return false;
+  return std::any_of(kNvencPresets.begin(), kNvencPresets.end(),
+                     [&preset](const NvencPreset& p) { return p.x264 == preset; });
+}
+
+std::string encoder_preset(std::string_view encoder, const std::string& preset) {
+  constexpr std::string_view kNvenc = "_nvenc";
+  if (!encoder.ends_with(kNvenc)) return preset;
+  for (const NvencPreset& p : kNvencPresets)
+    if (p.x264 == preset) return std::string(p.nvenc);
+  return preset;
 }
 
 OpenedEncoder open_h264_encoder(const EncoderSettings& settings, bool global_header) {
@@ -131,7 +134,10 @@ OpenedEncoder open_h264_encoder(const EncoderSettings& settings, bool global_hea
     throw InputError("codec \"" + settings.codec + "\" is not an H.264 encoder");
   }
   std::string why;
-  auto context = try_open(codec, settings, settings.preset, global_header, &why);
+  // The scene's preset is x264's; an NVENC encoder gets its own of the same intent, so that
+  // it is not refused for a name it does not know.
+  auto context =
+      try_open(codec, settings, encoder_preset(codec->name, settings.preset), global_header, &why);
   if (context) return {std::move(context), codec->name, ""};
   if (wants_x264) throw EncoderError("libx264 failed to open: " + why);
   return open_fallback(settings, global_header,

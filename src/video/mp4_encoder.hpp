@@ -30,9 +30,13 @@ struct EncoderSettings {
   std::string codec = "libx264";  ///< any H.264 encoder name; falls back to libx264
   int crf = 18;                   ///< constant-quality factor 0 (lossless) … 51 (worst);
                                   ///< sent as "crf", or "cq" to encoders without crf
-  std::string preset = "medium";  ///< encoder speed preset, e.g. x264 "ultrafast"…"placebo"
-  int threads = 0;                ///< encoder threads; 0 = the encoder's choice for all
-                                  ///< cores (x264: 1.5 × cores frame threads + lookahead)
+  /// Encoder speed preset: one of x264's, "ultrafast" … "placebo", which an NVENC encoder gets
+  /// as its own preset of the same intent ("faster" → "p2"; docs/outputs.md), or a name the
+  /// encoder itself knows ("p4"), handed on as it is.
+  std::string preset = "medium";
+  /// Encoder threads; 0 = the encoder's choice for all cores (x264: 1.5 × cores frame threads +
+  /// lookahead).
+  int threads = 0;
 };
 
 /// Encodes RGBA frames into an MP4 with one H.264 yuv420p stream, constant

@@ -2,6 +2,10 @@
 // behind (issues 3 and 8).
 #include <gtest/gtest.h>
 
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include "support/cli_runner.hpp"
 
 namespace bookspin::cli {
@@ -136,6 +140,66 @@ TEST(RenderCommand, DivergedSceneRendersToTheEndAndWarns) {
             std::string::npos)
       << r.output;
   EXPECT_EQ(count_files(out / "fig08-particle-neither" / "frames"), 12);
+}
+
+/// The lines of `text` that start with `prefix`.
+std::vector<std::string> lines_starting(const std::string& text, const std::string& prefix) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) lines.push_back(line);
+  return lines;
+}
+
+// render.codec = "h264_nvenc" with the scene's default preset ("faster", x264's name, which
+// NVENC gets as its own p2). Without an NVIDIA GPU (CI), h264_nvenc is in Debian's FFmpeg but
+// cannot open, and the render falls back to libx264: one warning gives the reason `bookspin
+// info` gives (the driver's), not a preset NVENC refused, and the manifest records libx264 as
+// the MP4's encoder beside the render.codec asked for; found up to date, it says so again.
+TEST(RenderCommand, NvencFallbackWarnsWithTheRealReasonAndTheManifestNamesLibx264) {
+  const std::string info = run_bookspin("info").output;
+  const std::string line = "H.264 encoder h264_nvenc: ";
+  const auto at = info.find(line);
+  if (at == std::string::npos) GTEST_SKIP() << "this FFmpeg has no h264_nvenc";
+  const std::string status = info.substr(at + line.size(), info.find('\n', at) - at - line.size());
+  const std::string name = "fig09-matrix-unstable-x";
+  const fs::path out = fresh_dir("render_nvenc_fallback");
+  const std::string args = "render " + scene_path(name) +
+                           " --set render.width=256 --set render.height=144"
+                           " --set render.codec='\"h264_nvenc\"' --frames 3 --no-png -o " +
+                           out.string();
+  const SplitResult r = run_bookspin_split(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string manifest = read_file(out / name / "manifest.json");
+  EXPECT_NE(manifest.find("\"render.codec\": \"h264_nvenc\""), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find("\"render.preset\": \"faster\""), std::string::npos) << manifest;
+  const std::vector<std::string> warnings = lines_starting(r.err, "bookspin: warning: ");
+  if (status == "usable") {  // a GPU with NVENC: it made the MP4
+    EXPECT_NE(manifest.find("\"mp4_encoder\": \"h264_nvenc\""), std::string::npos) << manifest;
+    EXPECT_TRUE(warnings.empty()) << r.err;
+    return;
+  }
+  ASSERT_EQ(warnings.size(), 1u) << r.err;
+  const std::string prefix =
+      "bookspin: warning: " + name + ": encoder \"h264_nvenc\" failed to open: ";
+  EXPECT_EQ(warnings[0].rfind(prefix, 0), 0u) << warnings[0];
+  EXPECT_EQ(warnings[0].find("preset"), std::string::npos) << warnings[0];
+  EXPECT_TRUE(warnings[0].ends_with("; using libx264")) << warnings[0];
+  // "unusable (REASON)": the reason the encoder gives when asked with no preset at all.
+  ASSERT_EQ(status.rfind("unusable (", 0), 0u) << status;
+  const std::string reason = status.substr(10, status.size() - 11);
+  EXPECT_NE(warnings[0].find(": " + reason + "; using libx264"), std::string::npos)
+      << warnings[0] << "\nbookspin info: " << reason;
+  EXPECT_NE(manifest.find("\"mp4_encoder\": \"libx264\""), std::string::npos) << manifest;
+  // x264 signs its stream (an SEI message "x264 - core N …"): libx264 made the file.
+  EXPECT_NE(read_file(out / (name + ".mp4")).find("x264 - core"), std::string::npos);
+
+  const SplitResult again = run_bookspin_split(args);
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.out.find("up to date: " + name), std::string::npos) << again.out;
+  EXPECT_EQ(lines_starting(again.err, "bookspin: warning: "),
+            std::vector<std::string>{warnings[0] + " (when it was rendered)"})
+      << again.err;
 }
 
 TEST(RenderCommand, UnwritableOutputDirectoryIsOneLineAndNothingIsWritten) {
