@@ -9,7 +9,6 @@
 #include <memory>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "common/errors.hpp"
 #include "fit/toss_model.hpp"
@@ -219,7 +218,12 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
   static std::once_flag quiet;
   std::call_once(quiet, [] { FLAGS_minloglevel = google::GLOG_FATAL; });
 #endif
-  solver_options.num_threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // One thread: with several, Ceres hands the residual blocks to its threads as they come free
+  // and each thread sums its own cost and gradient, so the order of the sums, and the last bits
+  // of every number after them, followed the machine's load (ten runs at once differed by up to
+  // 3e-9 relative). The same input gives the same bytes; the fit's time hardly changes (its CPU
+  // time was its wall time already, docs/performance.md, "The phone-toss fit").
+  solver_options.num_threads = 1;
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem.get(), &summary);
   Solved solved{summary.final_cost, residual_count,
