@@ -715,6 +715,17 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   }
   if (data.size() < 2 && !fixed)
     body.notes.push_back("one toss: no half_period_predicted (it needs the other tosses' body)");
+  if (fixed) {
+    // Two equal moments: a symmetric body, whose ω only circles its axis; there is no
+    // intermediate axis, so no flip to fit or time (docs/physics.md §8).
+    Eigen::Vector3d given = settings.moments->cwiseAbs();
+    std::sort(given.data(), given.data() + 3);
+    const double scale = given[2];
+    if (given[1] - given[0] <= 1e-9 * scale || given[2] - given[1] <= 1e-9 * scale)
+      body.notes.push_back(
+          "--moments: two of the given moments are equal: a symmetric body has no intermediate "
+          "axis, so nothing here flips and no half period is timed");
+  }
   return result;
 }
 

@@ -142,6 +142,25 @@ TEST(TossFit, GivenMomentsAreKeptAndOneTossIsPredicted) {
   EXPECT_FALSE(alone.tosses[0].half_period_predicted.has_value());
 }
 
+// Given moments with two equal (1, 1, 1; or 2, 5, 2 in any order) say that there is no
+// intermediate axis; three distinct ones (the test above's) say nothing of it.
+TEST(TossFit, GivenMomentsWithTwoEqualSayThereIsNoIntermediateAxis) {
+  const test::SyntheticRecording synthetic =
+      test::make_recording(test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}}, 23);
+  const auto says = [&](const Eigen::Vector3d& moments) {
+    FitSettings settings;
+    settings.moments = moments;
+    const FitResult fit =
+        fit_recording(as_recording(synthetic), find_flights(as_recording(synthetic)), settings);
+    return std::any_of(fit.body.notes.begin(), fit.body.notes.end(), [](const std::string& n) {
+      return n.find("no intermediate axis") != std::string::npos;
+    });
+  };
+  EXPECT_TRUE(says(Eigen::Vector3d(1, 1, 1)));
+  EXPECT_TRUE(says(Eigen::Vector3d(2, 5, 2)));
+  EXPECT_FALSE(says(Eigen::Vector3d(274.0, 49.64, 225.64)));
+}
+
 TEST(TossFit, AStretchHoldingTheThrowIsAPoorFitAndSaysSo) {
   // By hand, a stretch that starts 0.1 s before the release: the throw's ramp and spikes are in
   // it, and no exact motion fits them.
