@@ -15,7 +15,7 @@ CsvTable fit_toss_csv(const FitResult& fit) {
   CsvTable table{
       {"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z", "half_period_measured",
        "half_period_fitted", "half_period_predicted", "residual_rms", "L_decay", "drag_rate",
-       "drag_rate_sigma", "stable", "poor_fit", "flag"},
+       "drag_rate_sigma", "saturated", "stable", "poor_fit", "flag"},
       {}};
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
@@ -25,7 +25,8 @@ CsvTable fit_toss_csv(const FitResult& fit) {
          shortest_cell(t.half_period_measured), shortest_cell(t.half_period_fitted),
          shortest_cell(t.half_period_predicted), shortest_cell(t.residual_rms),
          shortest_cell(t.L_decay), shortest_cell(t.drag_rate), shortest_cell(t.drag_rate_sigma),
-         std::string(t.stable ? "yes" : "no"), std::string(t.poor_fit ? "yes" : "no"), t.flag});
+         std::to_string(t.saturated), std::string(t.stable ? "yes" : "no"),
+         std::string(t.poor_fit ? "yes" : "no"), t.flag});
   }
   return table;
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "fit/saturation.hpp"
 
 namespace bookspin::fit {
 namespace {
@@ -162,13 +163,22 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     const std::vector<Eigen::Vector3d> rs = omega_rate(ts, ws);
     std::copy(rs.begin(), rs.end(), rate.begin() + begin);
   }
+  // Samples where the gyroscope read its range, and their neighbours (whose rates reach them):
+  // the range, not the motion, so no evidence of torque either way (fit/saturation.hpp). The
+  // finder lets a flight run through them; the fit leaves them out.
+  const Saturation saturation = find_saturation(recording);
+  std::vector<char> clipped(n, 0);
+  for (int i = 0; i < n; ++i)
+    if (saturation.at_range[i])
+      for (int k = std::max(0, i - 2); k <= std::min(n - 1, i + 2); ++k) clipped[k] = 1;
   // 1. Candidates: fast enough, and |ω̇| within what Euler's equations allow a body whose
   // moments obey the triangle inequality, |ω̇| ≤ |ω|²/√3 (docs/physics.md §8), plus noise.
   std::vector<char> moving(n), candidate(n);
   for (int i = 0; i < n; ++i) {
     const double w2 = omega[i].squaredNorm();
     moving[i] = std::sqrt(w2) >= settings.rest_omega;
-    candidate[i] = std::sqrt(w2) >= settings.flight_omega && rate[i].norm() <= 0.6 * w2 + 3.0;
+    candidate[i] =
+        std::sqrt(w2) >= settings.flight_omega && (clipped[i] || rate[i].norm() <= 0.6 * w2 + 3.0);
   }
   std::vector<std::pair<int, int>> kept;
   for (const auto& [first, last] : runs(candidate, segs)) {
@@ -183,7 +193,9 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
   for (int pass = 0; pass < 3 && !kept.empty(); ++pass) {
     std::vector<int> indices;
     for (const auto& [first, last] : kept)
-      for (int i = first; i <= last; ++i) indices.push_back(i);
+      for (int i = first; i <= last; ++i)
+        if (!clipped[i]) indices.push_back(i);
+    if (indices.empty()) break;
     const Eigen::Matrix3d I = euler_inertia(omega, rate, indices);
     std::vector<double> residuals;
     for (int i : indices) residuals.push_back(torque_residual(I, omega[i], rate[i]));
@@ -191,11 +203,28 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     const double threshold = std::max(6.0 * residuals[residuals.size() / 2], 0.01);
     std::vector<std::pair<int, int>> next;
     for (const auto& [first, last] : candidates) {
+      // Each sample torque-free or not; a run of clipped samples counts as torque-free only
+      // between two torque-free samples (a flight runs through its gyroscope's range, never
+      // into a throw or a catch that also reads it).
+      std::vector<char> ok(last - first + 1, 0);
+      for (int i = first; i <= last; ++i)
+        ok[i - first] = !clipped[i] && torque_residual(I, omega[i], rate[i]) <= threshold;
+      for (int i = first; i <= last;) {
+        if (!clipped[i]) {
+          ++i;
+          continue;
+        }
+        int end = i;
+        while (end + 1 <= last && clipped[end + 1]) ++end;
+        const bool bridged = i > first && end < last && ok[i - 1 - first] && ok[end + 1 - first];
+        for (int k = i; k <= end; ++k) ok[k - first] = bridged;
+        i = end + 1;
+      }
       int best_first = first, best_last = first - 1, start = -1;
       for (int i = first; i <= last + 1; ++i) {
-        const bool ok = i <= last && torque_residual(I, omega[i], rate[i]) <= threshold;
-        if (ok && start < 0) start = i;
-        if (!ok && start >= 0) {
+        const bool good = i <= last && ok[i - first];
+        if (good && start < 0) start = i;
+        if (!good && start >= 0) {
           if (i - 1 - start > best_last - best_first) best_first = start, best_last = i - 1;
           start = -1;
         }

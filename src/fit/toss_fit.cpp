@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "fit/saturation.hpp"
 #include "fit/toss_model.hpp"
 #include "physics/damped_exact.hpp"
 #include "physics/exact_solution.hpp"
@@ -34,7 +35,13 @@ constexpr double kNoFit = 0.10;
 struct TossData {
   std::vector<double> tau;             ///< s since t_start
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame
+  int samples = 0;                     ///< the flight's samples, those left out included
+  int saturated = 0;  ///< samples left out: the gyroscope at its range (fit/saturation.hpp)
 };
+
+/// Fewer samples than this left of a flight once its saturated ones are out, and they stay in
+/// (flagged): a fit needs something to fit.
+constexpr int kMinSamplesLeft = 10;
 
 /// Residuals ω_fitted(τ_i) − ω_measured(τ_i) + e, three per sample, rad/s, and their derivatives
 /// with respect to the body's axes (aa), its log moment ratios, the toss's ω0 and drag rate
@@ -466,14 +473,33 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     if (!why.empty()) why += ")";
     throw InputError(recording.source + ": no free flight found" + why);
   }
+  // The samples where the gyroscope read its range are its range, not the motion: left out
+  // (docs/phone-lab.md, "Saturation").
+  const Saturation saturation = find_saturation(recording);
   std::vector<TossData> data;
   for (const Flight& f : search.flights) {
     TossData d;
+    d.samples = f.last - f.first + 1;
+    for (int i = f.first; i <= f.last; ++i) d.saturated += saturation.at_range[i] ? 1 : 0;
+    const bool drop = d.samples - d.saturated >= kMinSamplesLeft;
     for (int i = f.first; i <= f.last; ++i) {
+      if (drop && saturation.at_range[i]) continue;
       d.tau.push_back(recording.t[i] - f.t_start);
       d.omega.push_back(recording.omega[i] - search.bias);
     }
+    if (!drop) d.saturated = 0;  // kept: none left out
     data.push_back(std::move(d));
+  }
+  if (saturation.range) {
+    int count = 0;
+    for (const TossData& d : data) count += d.saturated;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "the gyroscope saturated: it reads flat at ±%.6g rad/s (%.0f °/s), its range; "
+                  "%d sample(s) there left out of the tosses",
+                  *saturation.range, *saturation.range * 180.0 / kPi, count);
+    result.body.notes.push_back(line);
+    result.saturation_range = saturation.range;
   }
   const bool fixed = settings.moments.has_value();
   const physics::DragLaw law = settings.drag;
@@ -641,12 +667,23 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     double peak_omega = 0.0;  // the largest component measured, rad/s
     for (const Eigen::Vector3d& w : d.omega)
       peak_omega = std::max(peak_omega, w.cwiseAbs().maxCoeff());
+    toss.saturated = d.saturated;
+    int at_range = 0;  // the flight's samples at the range, left out or not
+    for (int i = toss.flight.first; i <= toss.flight.last; ++i) at_range += saturation.at_range[i];
     if (peak_omega > kGyroRangeMax) {
       char text[200];
       std::snprintf(text, sizeof text,
                     "ω reaches %.4g rad/s, beyond any gyroscope's range (phones: ±2000 °/s, "
                     "34.9 rad/s; at most ±4000 °/s, 69.8 rad/s): a recording in °/s, or scaled?",
                     peak_omega);
+      toss.flag = text;
+    } else if (at_range > 0 && 4 * (d.samples - at_range) < d.samples) {  // under a quarter left
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "gyroscope saturated: %d of the flight's %d samples read its range (±%.4g "
+                    "rad/s), under a quarter left: too much of the motion is missing to trust "
+                    "the fit",
+                    at_range, d.samples, *saturation.range);
       toss.flag = text;
     } else {
       toss.flag = flag_of(d.tau, residuals[k], mean_omega, noise);

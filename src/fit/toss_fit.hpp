@@ -67,6 +67,9 @@ struct TossFit {
   /// line, also in BodyEstimate::notes.
   bool poor_fit = false;
   std::string flag;
+  /// Samples of the flight left out of the fit: the gyroscope read its range there
+  /// (fit/saturation.hpp; a flagged flight of too few other samples keeps them: 0).
+  int saturated = 0;
 };
 
 /// What the fit is given besides the flights.
@@ -87,6 +90,9 @@ struct FitResult {
   physics::DragLaw drag = physics::DragLaw::linear;           ///< the law the rates are of
   BodyEstimate body;
   std::vector<TossFit> tosses;  ///< one per flight, in order
+  /// rad/s: the range the gyroscope saturated at, found in the samples (fit/saturation.hpp),
+  /// or nullopt.
+  std::optional<double> saturation_range;
 };
 
 /// Fits `search`'s flights of `recording`. Throws InputError naming the recording when there

@@ -56,7 +56,7 @@ TEST(FitCommand, FitsASyntheticExportIntoItsCsvsAndCharts) {
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
             "half_period_fitted,half_period_predicted,residual_rms,L_decay,drag_rate,"
-            "drag_rate_sigma,stable,poor_fit,flag");
+            "drag_rate_sigma,saturated,stable,poor_fit,flag");
   // Run again: up to date.
   const auto again =
       bookspin::test::run_bookspin("fit " + quoted(dir / "toss") + " -o " + quoted(dir / "out"));

@@ -42,6 +42,7 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   toss.drag_rate_sigma = 0.0625;
   toss.poor_fit = true;
   toss.flag = "a catch inside the flight? the residual jumps, near t = 1.00 s";
+  toss.saturated = 3;
   result.tosses.push_back(toss);
   result.drag = physics::DragLaw::quadratic;
   result.body.ratios = Eigen::Vector3d(0.25, 0.75, 1.0);
@@ -50,8 +51,8 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   EXPECT_EQ(csv_text(fit::fit_toss_csv(result), "fit CSV"),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
             "half_period_fitted,half_period_predicted,residual_rms,L_decay,drag_rate,"
-            "drag_rate_sigma,stable,poor_fit,flag\n"
-            "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,0.01,0.125,0.1875,0.0625,no,yes,\"a catch inside "
+            "drag_rate_sigma,saturated,stable,poor_fit,flag\n"
+            "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,0.01,0.125,0.1875,0.0625,3,no,yes,\"a catch inside "
             "the flight? the residual jumps, near t = 1.00 s\"\n");
   EXPECT_EQ(csv_text(fit::fit_body_csv(result), "fit body CSV"),
             "I1_over_I3,I2_over_I3,I3_over_I3,I1_sigma,I2_sigma,axis1_x,axis1_y,axis1_z,axis2_x,"

@@ -1,0 +1,116 @@
+// A gyroscope's saturation (fit/saturation.hpp, docs/phone-lab.md "Saturation"): samples flat at
+// the recording's largest |ω_i| found, and left out of the fit. The recordings are synthetic
+// tosses (synthetic_recording.hpp) clipped by hand at a chosen range, as a phone's gyroscope
+// clips them: the truth is the unclipped motion.
+#include "fit/saturation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "fit/flights.hpp"
+#include "fit/toss_fit.hpp"
+#include "synthetic_recording.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+GyroRecording as_recording(const test::SyntheticRecording& synthetic) {
+  GyroRecording recording;
+  recording.name = "clipped";
+  recording.source = "clipped.csv";
+  recording.t = synthetic.t;
+  recording.omega = synthetic.omega;
+  recording.pauses = synthetic.pauses;
+  return recording;
+}
+
+/// `recording` with every component clipped to ±range, as a gyroscope at its range reads.
+GyroRecording clipped(GyroRecording recording, double range) {
+  for (Eigen::Vector3d& w : recording.omega) w = w.cwiseMax(-range).cwiseMin(range);
+  return recording;
+}
+
+const std::vector<test::SyntheticToss> kTosses{
+    {{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 1.1}, {{0.5, -15.0, -0.3}, 1.3}};
+
+TEST(Saturation, FlatRunsAtTheTopAreTheRangeAndASmoothPeakIsNot) {
+  const GyroRecording recording =
+      as_recording(test::make_recording(test::phone_alone(), kTosses, 11));
+  // As measured: the largest |ω_i| is one sample's peak, nothing is flat there.
+  const Saturation none = find_saturation(recording);
+  EXPECT_FALSE(none.range.has_value());
+  EXPECT_EQ(std::count(none.at_range.begin(), none.at_range.end(), true), 0);
+  // Clipped at 12 rad/s (the tosses turn at 13–15 about their intermediate axis).
+  const GyroRecording clip = clipped(recording, 12.0);
+  const Saturation found = find_saturation(clip);
+  ASSERT_TRUE(found.range.has_value());
+  EXPECT_DOUBLE_EQ(*found.range, 12.0);
+  std::size_t expected = 0;
+  for (std::size_t i = 0; i < clip.omega.size(); ++i) {
+    const bool flat = clip.omega[i].cwiseAbs().maxCoeff() == 12.0;
+    expected += flat;
+    EXPECT_EQ(found.at_range[i], flat) << "sample " << i;
+  }
+  EXPECT_GT(expected, 30u);
+  // Two samples at the top are a peak, three a range (kMinFlatSamples).
+  GyroRecording two = recording;
+  two.omega[100] = Eigen::Vector3d(0, 50.0, 0);
+  two.omega[101] = Eigen::Vector3d(0, -50.0, 0);
+  EXPECT_FALSE(find_saturation(two).range.has_value());
+  two.omega[102] = Eigen::Vector3d(0, 50.0, 0);
+  EXPECT_TRUE(find_saturation(two).range.has_value());
+}
+
+// Clipped at 93 % of the fastest |ω_i| (the intermediate axis's component flat for tens of
+// samples at each toss's start, as a fast throw reads on a phone at ±2000 °/s): the samples at
+// the range are counted and left out, the flights found through them, and the body comes out as
+// from the unclipped recording (1 % in the ratios; 0.06 % measured), the residual at the noise
+// (0.017 rad/s). With the clipped samples fitted as data: 2.8 % and 0.38 rad/s.
+TEST(Saturation, ClippedSamplesAreLeftOutAndTheBodyIsRecovered) {
+  const test::SyntheticBody body = test::phone_alone();
+  const GyroRecording recording = as_recording(test::make_recording(body, kTosses, 11));
+  const FlightSearch flights = find_flights(recording);
+  std::vector<double> tops;
+  for (const Flight& f : flights.flights)
+    for (int i = f.first; i <= f.last; ++i)
+      tops.push_back(recording.omega[i].cwiseAbs().maxCoeff());
+  std::sort(tops.begin(), tops.end());
+  const double range = 0.93 * tops.back();
+  const GyroRecording clip = clipped(recording, range);
+  const FitResult fit = fit_recording(clip, find_flights(clip));
+  ASSERT_TRUE(fit.saturation_range.has_value());
+  EXPECT_DOUBLE_EQ(*fit.saturation_range, range);
+  ASSERT_EQ(fit.tosses.size(), kTosses.size());
+  const Eigen::Vector3d ratios = body.moments / body.moments[2];
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(fit.body.ratios[i], ratios[i], 0.01 * ratios[i]);
+  int saturated = 0;
+  for (const TossFit& toss : fit.tosses) {
+    saturated += toss.saturated;
+    EXPECT_LT(toss.residual_rms, 0.05) << toss.flag;
+    EXPECT_FALSE(toss.poor_fit) << toss.flag;
+  }
+  EXPECT_GT(saturated, 0);
+  EXPECT_TRUE(std::any_of(fit.body.notes.begin(), fit.body.notes.end(), [](const std::string& n) {
+    return n.find("the gyroscope saturated") != std::string::npos;
+  }));
+}
+
+// Clipped at 3 rad/s, most of each flight reads the range: the toss (its flight given by hand:
+// the finder sees no torque-free stretch in such a recording) is flagged naming saturation.
+TEST(Saturation, AFlightMostlyAtTheRangeIsFlaggedForIt) {
+  const test::SyntheticRecording synthetic = test::make_recording(test::phone_alone(), kTosses, 11);
+  const GyroRecording clip = clipped(as_recording(synthetic), 3.0);
+  std::vector<std::pair<double, double>> ranges;
+  for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
+  const FitResult fit = fit_recording(clip, hand_flights(clip, ranges));
+  ASSERT_FALSE(fit.tosses.empty());
+  for (const TossFit& toss : fit.tosses) {
+    EXPECT_TRUE(toss.poor_fit);
+    EXPECT_NE(toss.flag.find("gyroscope saturated"), std::string::npos) << toss.flag;
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::fit
