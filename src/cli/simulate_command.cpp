@@ -36,12 +36,7 @@ int simulate_command(const SimulateOptions& options) {
     std::cerr << "bookspin: warning: " << warning << '\n';
   if (const std::string note = jobs::lattice_note(scene); !note.empty())
     std::cerr << "bookspin: " << note << '\n';
-  if (!scene.compare.empty()) {
-    // Several runs do not fit one CSV; `render` writes one per panel.
-    throw InputError(options.scene_path +
-                     ": a comparison scene ([[compare]]) has one run per panel: `bookspin "
-                     "render` writes OUT/<scene>/diagnostics-<panel>.csv for each");
-  }
+  jobs::require_one_run(scene);
   jobs::SimulationResult result;
   if (options.csv_path == "-") {
     result = jobs::write_diagnostics_rows(scene, std::cout, stop_poll());

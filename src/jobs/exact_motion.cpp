@@ -1,8 +1,11 @@
 #include "jobs/exact_motion.hpp"
 
 #include <Eigen/Geometry>
+#include <cmath>
+#include <string>
 
-#include "physics/exact_solution.hpp"
+#include "common/errors.hpp"
+#include "common/number_text.hpp"
 
 namespace bookspin::jobs {
 
@@ -10,7 +13,56 @@ namespace {
 
 JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.y()}, {v.z()}}}; }
 
+/// `value` for a message: its shortest text, or nan, inf, -inf.
+std::string value_text(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0.0 ? "inf" : "-inf";
+  return finite_text(value, "a value in a message");
+}
+
 }  // namespace
+
+ExactMotionRow exact_motion_row(const physics::ExactRotation& exact, double t) {
+  const Eigen::Vector3d& moments = exact.moments();
+  ExactMotionRow row;
+  row.t = t;
+  const Eigen::Matrix3d R = exact.orientation(t);
+  Eigen::Quaterniond q(R);
+  q.normalize();
+  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
+  row.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+  row.omega_body = exact.omega_body(t);
+  row.omega_world = R * row.omega_body;
+  row.L = R * moments.cwiseProduct(row.omega_body);
+  row.E = 0.5 * row.omega_body.dot(moments.cwiseProduct(row.omega_body));
+  return row;
+}
+
+std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
+                                            const Eigen::Vector3d& omega0_body,
+                                            const std::vector<double>& times,
+                                            const StopPoll& stop) {
+  for (int i = 0; i < 3; ++i) {
+    if (!(std::isfinite(moments[i]) && moments[i] > 0.0))
+      throw InputError("moments[" + std::to_string(i) + "]: " + value_text(moments[i]) +
+                       " is not a finite positive moment of inertia");
+    if (!std::isfinite(omega0_body[i]))
+      throw InputError("omega0[" + std::to_string(i) + "]: " + value_text(omega0_body[i]) +
+                       " is not a finite angular velocity");
+  }
+  for (std::size_t n = 0; n < times.size(); ++n)
+    if (!std::isfinite(times[n]))
+      throw InputError("t[" + std::to_string(n) + "]: " + value_text(times[n]) +
+                       " is not a finite time");
+  const physics::ExactRotation exact(moments, omega0_body);
+  std::vector<ExactMotionRow> rows;
+  rows.reserve(times.size());
+  for (std::size_t n = 0; n < times.size(); ++n) {
+    if (n % 4096 == 0) stop_if_asked(stop, "exact motion");
+    rows.push_back(exact_motion_row(exact, times[n]));
+  }
+  return rows;
+}
 
 ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop) {
   ExactMotion motion;
@@ -18,23 +70,11 @@ ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& sto
   motion.mass = scenario.body.cage.mass;
   motion.omega0_body = analysis::start_omega(scenario);
   motion.omega0_world = motion.omega0_body;
-  const Eigen::Vector3d& moments = scenario.body.moments;
-  const physics::ExactRotation exact(moments, motion.omega0_body);
+  const physics::ExactRotation exact(scenario.body.moments, motion.omega0_body);
   motion.rows.reserve(static_cast<std::size_t>(scenario.steps) + 1);
   for (long long n = 0; n <= scenario.steps; ++n) {
     if (n % 4096 == 0) stop_if_asked(stop, "flipcheck exact motion");
-    ExactMotionRow row;
-    row.t = static_cast<double>(n) * scenario.dt;
-    const Eigen::Matrix3d R = exact.orientation(row.t);
-    Eigen::Quaterniond q(R);
-    q.normalize();
-    if (q.w() < 0.0) q.coeffs() = -q.coeffs();
-    row.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
-    row.omega_body = exact.omega_body(row.t);
-    row.omega_world = R * row.omega_body;
-    row.L = R * moments.cwiseProduct(row.omega_body);
-    row.E = 0.5 * row.omega_body.dot(moments.cwiseProduct(row.omega_body));
-    motion.rows.push_back(row);
+    motion.rows.push_back(exact_motion_row(exact, static_cast<double>(n) * scenario.dt));
   }
   return motion;
 }

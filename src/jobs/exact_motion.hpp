@@ -9,6 +9,7 @@
 #include "common/csv_writer.hpp"
 #include "common/json_writer.hpp"
 #include "common/stop.hpp"
+#include "physics/exact_solution.hpp"
 
 namespace bookspin::jobs {
 
@@ -21,6 +22,20 @@ struct ExactMotionRow {
   Eigen::Vector3d L;            ///< R(t)·I_body·ω, world frame (mass·length²/time unit)
   double E = 0.0;               ///< ½ ω·I_body ω, energy units
 };
+
+/// The exact motion `exact` at time `t` (time units): R(t) as a unit quaternion with w ≥ 0, ω
+/// in the body and the world frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8).
+/// One row of exact_motion(), and of the Python module's `exact_motion` (docs/python.md).
+ExactMotionRow exact_motion_row(const physics::ExactRotation& exact, double t);
+
+/// exact_motion_row() at each of `times`, for a body of principal `moments` (body x, y, z,
+/// mass·length²) starting at the identity with body-frame ω0 `omega0_body` (rad per time unit).
+/// `stop` is polled every few thousand rows. Throws InputError for a moment that is not finite
+/// and positive, an ω0 or a t that is not finite (naming `what`: "moments", "omega0", "t").
+std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
+                                            const Eigen::Vector3d& omega0_body,
+                                            const std::vector<double>& times,
+                                            const StopPoll& stop = {});
 
 /// What an engine needs to run a scenario, and the exact answer.
 struct ExactMotion {

@@ -54,6 +54,51 @@ std::optional<std::size_t> column(const std::vector<std::string_view>& header,
   return std::nullopt;
 }
 
+/// Checks one row's numbers `v` (t, qw, qx, qy, qz, ω x, y, z in motion.omega_frame) against
+/// the rows before it and adds it to `motion`: q normalized, ω turned into the body frame.
+/// `error(k, reason)` makes the InputError naming the row and its value k, `text(k)` spells
+/// value k as it was given.
+template <typename Error, typename Text>
+void add_row(MotionFile& motion, const std::array<double, 8>& v, double dt, long long steps,
+             const Error& error, const Text& text) {
+  const double t = v[0];
+  const double n = std::round(t / dt);
+  if (!(n >= 0.0 && n <= static_cast<double>(steps))) {
+    throw error(0, "t = " + text(0) + " is outside the scenario's 0 … " +
+                       finite_text(static_cast<double>(steps) * dt, "t_end"));
+  }
+  if (std::abs(t - n * dt) > 1e-6 * dt) {
+    throw error(
+        0, "t = " + text(0) + " is not a whole number of steps of dt = " + finite_text(dt, "dt"));
+  }
+  const auto step = static_cast<long long>(n);
+  const long long index = static_cast<long long>(motion.rows.size());
+  if (index == 0 && step != 0) throw error(0, "the first row must be t = 0");
+  if (index == 1) {
+    if (step <= 0) throw error(0, "t does not increase");
+    motion.stride = step;
+  }
+  if (index > 1 && step != index * motion.stride) {
+    throw error(0, "t = " + text(0) + " is not step " + std::to_string(index * motion.stride) +
+                       " (rows every " + std::to_string(motion.stride) + " steps from t = 0)");
+  }
+  // Any norm: a squared norm that would over- or underflow (1e300, 1e-300) is divided by the
+  // largest component first; a usual one is normalised as it is (the same bits as ever).
+  const double q_largest =
+      std::max({std::abs(v[1]), std::abs(v[2]), std::abs(v[3]), std::abs(v[4])});
+  if (q_largest == 0.0) throw error(1, "q is zero (qw = qx = qy = qz = 0): no orientation");
+  Eigen::Quaterniond q(v[1], v[2], v[3], v[4]);
+  if (!(q_largest >= 1e-100 && q_largest <= 1e100)) q.coeffs() /= q_largest;
+  q.normalize();
+  for (std::size_t k = 5; k < 8; ++k)
+    if (std::abs(v[k]) > kMaxOmega)
+      throw error(
+          k, "\"" + text(k) + "\" is beyond ±1e100 rad per time unit (its energy would overflow)");
+  Eigen::Vector3d omega(v[5], v[6], v[7]);
+  if (motion.omega_frame == OmegaFrame::world) omega = q.toRotationMatrix().transpose() * omega;
+  motion.rows.push_back({step, q, omega});
+}
+
 }  // namespace
 
 MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
@@ -117,54 +162,46 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
                          quoted_cell(cell) + " is not a finite number");
       }
     }
-    const double t = v[0];
-    const double n = std::round(t / dt);
-    if (!(n >= 0.0 && n <= static_cast<double>(steps))) {
-      throw InputError(file, line_number, std::string(names[0]),
-                       "t = " + cut_cell(cells[at[0]]) + " is outside the scenario's 0 … " +
-                           finite_text(static_cast<double>(steps) * dt, "t_end"));
-    }
-    if (std::abs(t - n * dt) > 1e-6 * dt) {
-      throw InputError(file, line_number, std::string(names[0]),
-                       "t = " + cut_cell(cells[at[0]]) +
-                           " is not a whole number of steps of dt = " + finite_text(dt, "dt"));
-    }
-    const auto step = static_cast<long long>(n);
-    const long long index = static_cast<long long>(motion.rows.size());
-    if (index == 0 && step != 0)
-      throw InputError(file, line_number, std::string(names[0]), "the first row must be t = 0");
-    if (index == 1) {
-      if (step <= 0)
-        throw InputError(file, line_number, std::string(names[0]), "t does not increase");
-      motion.stride = step;
-    }
-    if (index > 1 && step != index * motion.stride) {
-      throw InputError(file, line_number, std::string(names[0]),
-                       "t = " + cut_cell(cells[at[0]]) + " is not step " +
-                           std::to_string(index * motion.stride) + " (rows every " +
-                           std::to_string(motion.stride) + " steps from t = 0)");
-    }
-    // Any norm: a squared norm that would over- or underflow (1e300, 1e-300) is divided by the
-    // largest component first; a usual one is normalised as it is (the same bits as ever).
-    const double q_largest =
-        std::max({std::abs(v[1]), std::abs(v[2]), std::abs(v[3]), std::abs(v[4])});
-    if (q_largest == 0.0)
-      throw InputError(file, line_number, std::string(names[1]),
-                       "q is zero (qw = qx = qy = qz = 0): no orientation");
-    Eigen::Quaterniond q(v[1], v[2], v[3], v[4]);
-    if (!(q_largest >= 1e-100 && q_largest <= 1e100)) q.coeffs() /= q_largest;
-    q.normalize();
-    for (std::size_t k = 5; k < 8; ++k)
-      if (std::abs(v[k]) > kMaxOmega)
-        throw InputError(file, line_number, std::string(names[k]),
-                         quoted_cell(cells[at[k]]) +
-                             " is beyond ±1e100 rad per time unit (its energy would overflow)");
-    Eigen::Vector3d omega(v[5], v[6], v[7]);
-    if (motion.omega_frame == OmegaFrame::world) omega = q.toRotationMatrix().transpose() * omega;
-    motion.rows.push_back({step, q, omega});
+    add_row(
+        motion, v, dt, steps,
+        [&](std::size_t k, const std::string& reason) {
+          return InputError(file, line_number, std::string(names[k]), reason);
+        },
+        [&](std::size_t k) { return cut_cell(cells[at[k]]); });
   }
   if (header.empty()) throw InputError(file, 0, "", "no header row (t,qw,qx,qy,qz,wx,wy,wz)");
   if (motion.rows.empty()) throw InputError(file, line_number, "", "no rows after the header");
+  return motion;
+}
+
+MotionFile motion_from_rows(const std::vector<std::array<double, 8>>& rows, OmegaFrame frame,
+                            const std::string& what, double dt, long long steps) {
+  MotionFile motion;
+  motion.omega_frame = frame;
+  const std::string omega_name = frame == OmegaFrame::world ? "omega_world" : "omega_body";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::array<double, 8>& v = rows[i];
+    const auto key = [&](std::size_t k) {
+      const std::string array = k == 0 ? "t" : k < 5 ? "q" : omega_name;
+      return array + "[" + std::to_string(i) + "]";
+    };
+    const auto error = [&](std::size_t k, const std::string& reason) {
+      return InputError(what + ": " + key(k) + ": " + reason);
+    };
+    const auto text = [&](std::size_t k) {
+      return std::isfinite(v[k]) ? finite_text(v[k], "a motion's value") : std::string("nan");
+    };
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (!std::isfinite(v[k])) {
+        throw error(k, std::string(std::isnan(v[k]) ? "nan"
+                                   : v[k] > 0       ? "inf"
+                                                    : "-inf") +
+                           " is not a finite number");
+      }
+    }
+    add_row(motion, v, dt, steps, error, text);
+  }
+  if (motion.rows.empty()) throw InputError(what + ": no rows (t is empty)");
   return motion;
 }
 

@@ -3,6 +3,7 @@
 // "The motion file"): a CSV written by any engine, read into analysis::MotionSample rows. The
 // parser (motion_csv.cpp) is pure, text in and rows out, and goes into the explorer page's
 // WebAssembly (web/build-wasm.sh); reading the file is motion_file.cpp's.
+#include <array>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -37,6 +38,15 @@ struct MotionFile {
 /// header is read past.
 MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
                             long long steps);
+
+/// A motion given as numbers rather than a file (the Python module's `flipcheck.judge`,
+/// docs/python.md): rows[i] = t, qw, qx, qy, qz, then ω x, y, z in `frame`, checked and turned
+/// as parse_motion_csv() checks and turns a file's rows (the same rules, the same numbers). A
+/// bad row throws InputError "WHAT: ARRAY[i]: reason" (ARRAY t, q, omega_world or omega_body;
+/// i from 0): a value that is not finite, a misplaced t, q = 0, an ω component beyond ±1e100;
+/// and "WHAT: no rows (t is empty)".
+MotionFile motion_from_rows(const std::vector<std::array<double, 8>>& rows, OmegaFrame frame,
+                            const std::string& what, double dt, long long steps);
 
 /// parse_motion_csv() of the file at `path`, read whole (motion_file.cpp); InputError when it
 /// cannot be read.

@@ -4,6 +4,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "common/stop.hpp"
 #include "scene/scene.hpp"
@@ -22,5 +23,20 @@ struct SimulationResult {
 /// (an atomic file it does not commit).
 SimulationResult write_diagnostics_rows(const scene::Scene& scene, std::ostream& out,
                                         const StopPoll& stop = {});
+
+/// The diagnostics CSV as a value (the Python module's `simulate`, docs/python.md): a column
+/// per name of output::diagnostics_columns(), a number per frame in each, the very doubles the
+/// CSV spells (read back, they are its cells); NaN where the CSV has an empty cell.
+struct DiagnosticsTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> values;  ///< values[column][frame]
+  SimulationResult result;
+};
+
+/// The rows write_diagnostics_rows() would write, as a table; `stop` as there.
+DiagnosticsTable diagnostics_table(const scene::Scene& scene, const StopPoll& stop = {});
+
+/// Throws InputError for a comparison scene ([[compare]]): its runs do not fit one table.
+void require_one_run(const scene::Scene& scene);
 
 }  // namespace bookspin::jobs

@@ -27,21 +27,15 @@ const std::vector<std::string>& columns() {
   return names;
 }
 
-/// A row's cells, each number checked finite under its column's name as it is added.
-struct Cells {
-  std::vector<std::string> cells;
-
-  void number(double value) { cell(std::optional<double>(value)); }
-  /// An empty cell for nullopt.
-  void cell(const std::optional<double>& value) {
-    static const std::vector<std::string> names = [] {
-      std::vector<std::string> out;
-      for (const std::string& column : columns()) out.push_back("diagnostics CSV column " + column);
-      return out;
-    }();
-    cells.push_back(finite_text(value, names[cells.size()]));
-  }
-};
+/// "diagnostics CSV column NAME" for each column: what a non-finite number is reported as.
+const std::vector<std::string>& column_labels() {
+  static const std::vector<std::string> labels = [] {
+    std::vector<std::string> out;
+    for (const std::string& column : columns()) out.push_back("diagnostics CSV column " + column);
+    return out;
+  }();
+  return labels;
+}
 
 }  // namespace
 
@@ -61,31 +55,44 @@ const std::string& diagnostics_csv_header() {
   return header;
 }
 
-std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d) {
-  Cells row{{std::to_string(frame)}};
-  row.cells.reserve(columns().size());
+const std::vector<std::string>& diagnostics_columns() { return columns(); }
+
+std::vector<std::optional<double>> diagnostics_values(int frame, const physics::Diagnostics& d) {
+  std::vector<std::optional<double>> row;
+  row.reserve(columns().size());
   // The cosines with L have no value when L = 0 (a body at rest): empty cells, not NaN
   // (docs/outputs.md).
   const bool at_rest = d.L.isZero(0.0);
   const auto cosine = [at_rest](double value) {
     return at_rest ? std::nullopt : std::optional<double>(value);
   };
-  row.number(d.t);
-  for (int i = 0; i < 3; ++i) row.number(d.omega_body[i]);
-  for (int i = 0; i < 3; ++i) row.number(d.L[i]);
-  row.number(d.energy_kinetic);
-  row.number(d.energy_potential);
-  row.number(d.energy_total);
-  for (int i = 0; i < 3; ++i) row.cell(cosine(d.cos_axis_L[i]));
-  row.number(d.strain_max);
-  row.number(d.orthogonality_error);
-  row.number(d.quaternion_norm);
-  for (int i = 0; i < 3; ++i) row.cell(cosine(d.cos_principal_L[i]));
+  row.push_back(static_cast<double>(frame));
+  row.push_back(d.t);
+  for (int i = 0; i < 3; ++i) row.push_back(d.omega_body[i]);
+  for (int i = 0; i < 3; ++i) row.push_back(d.L[i]);
+  row.push_back(d.energy_kinetic);
+  row.push_back(d.energy_potential);
+  row.push_back(d.energy_total);
+  for (int i = 0; i < 3; ++i) row.push_back(cosine(d.cos_axis_L[i]));
+  row.push_back(d.strain_max);
+  row.push_back(d.orthogonality_error);
+  row.push_back(d.quaternion_norm);
+  for (int i = 0; i < 3; ++i) row.push_back(cosine(d.cos_principal_L[i]));
   const Eigen::Vector4d q = pose_quaternion(d.orientation);
-  for (int i = 0; i < 4; ++i) row.number(q[i]);
-  for (int i = 0; i < 3; ++i) row.number(d.center_of_mass[i]);
-  BOOKSPIN_ASSERT(row.cells.size() == columns().size());
-  return csv_row(row.cells);
+  for (int i = 0; i < 4; ++i) row.push_back(q[i]);
+  for (int i = 0; i < 3; ++i) row.push_back(d.center_of_mass[i]);
+  BOOKSPIN_ASSERT(row.size() == columns().size());
+  return row;
+}
+
+std::string diagnostics_csv_row(int frame, const physics::Diagnostics& d) {
+  const std::vector<std::optional<double>> values = diagnostics_values(frame, d);
+  std::vector<std::string> cells{std::to_string(frame)};
+  cells.reserve(values.size());
+  // Each number checked finite under its column's name as it is spelled.
+  for (std::size_t i = 1; i < values.size(); ++i)
+    cells.push_back(finite_text(values[i], column_labels()[i]));
+  return csv_row(cells);
 }
 
 namespace {

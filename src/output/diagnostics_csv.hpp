@@ -1,7 +1,9 @@
 #pragma once
 // The diagnostics CSV sink: one row per frame, columns fixed (docs/physics.md §9).
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "output/atomic_output.hpp"
 #include "physics/simulator.hpp"
@@ -14,6 +16,14 @@ namespace bookspin::output {
 /// first, q_w >= 0; best-fit rotation of the particles for the deforming models) and
 /// com_x,com_y,com_z (centre of mass, world) (docs/outputs.md, "The pose in the CSV").
 const std::string& diagnostics_csv_header();
+
+/// The header's column names, in order (frame, t, omega_x, …, com_z).
+const std::vector<std::string>& diagnostics_columns();
+
+/// One row's values, a value per column of diagnostics_columns(): the numbers the CSV row
+/// spells (the frame as a double, q with q_w >= 0 and no −0), nullopt where the CSV has an
+/// empty cell (the cos_*_L cells at rest). Not checked finite: diagnostics_csv_row() does that.
+std::vector<std::optional<double>> diagnostics_values(int frame, const physics::Diagnostics& d);
 
 /// One row (no newline, common/csv_writer.hpp's csv_row) for `frame`; numbers in shortest
 /// round-trip form (NumberStyle::shortest), so

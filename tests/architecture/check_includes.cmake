@@ -18,7 +18,10 @@ cmake_minimum_required(VERSION 3.20)
 #      links besides bookspin's own; their headers by the patterns below);
 #   5. bench/ and examples/ sit on top beside the command line: they may not include cli/;
 #   6. only src/video links FFmpeg or includes a libav header;
-#   7. only src/fit links Ceres or includes a ceres/ header.
+#   7. only src/fit links Ceres or includes a ceres/ header;
+#   8. python/, the Python module, is a door that presents the values the stages make without
+#      files or pictures: its sources include, and its CMakeLists.txt links, only the stages
+#      of `python_stages` below (never cli/, cache/, products/ nor the drawing stages).
 # Run by ctest:
 #   cmake -DSOURCE_DIR=<repo> -P tests/architecture/check_includes.cmake
 # ARCHITECTURE_DOC=<file> reads the table from another file (to try the check on a changed
@@ -272,6 +275,32 @@ foreach(file IN LISTS non_video)
     list(APPEND violations "${rel}: ${line} (only src/fit includes Ceres)")
   endforeach()
 endforeach()
+
+# --- 8. The Python module: the stages that make values without files or pictures, no other. ---
+set(python_stages common physics engines scene mesh analysis fit jobs)
+list(JOIN python_stages ", " python_stages_text)
+file(GLOB python_sources "${SOURCE_DIR}/python/*.hpp" "${SOURCE_DIR}/python/*.cpp")
+foreach(file IN LISTS python_sources)
+  file(RELATIVE_PATH rel "${SOURCE_DIR}" "${file}")
+  file(STRINGS "${file}" lines REGEX "^#include \"[a-z_]+/")
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE "^#include \"([a-z_]+)/.*" "\\1" included "${line}")
+    if(included IN_LIST stages AND NOT included IN_LIST python_stages)
+      list(APPEND violations "${rel}: ${line} (python/ may use only ${python_stages_text})")
+    endif()
+  endforeach()
+endforeach()
+if(EXISTS "${SOURCE_DIR}/python/CMakeLists.txt")
+  file(READ "${SOURCE_DIR}/python/CMakeLists.txt" text)
+  string(REGEX REPLACE "#[^\n]*" "" text "${text}")
+  string(REGEX MATCHALL "bookspin_[a-z_]+" linked "${text}")
+  foreach(target IN LISTS linked)
+    string(REGEX REPLACE "^bookspin_" "" stage "${target}")
+    if(stage IN_LIST stages AND NOT stage IN_LIST python_stages)
+      list(APPEND violations "python/CMakeLists.txt links ${target} (python/ may use only ${python_stages_text})")
+    endif()
+  endforeach()
+endif()
 
 list(LENGTH violations count)
 if(count GREATER 0)

@@ -10,8 +10,10 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "analysis/conformance.hpp"
+#include "common/errors.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::jobs {
@@ -75,6 +77,43 @@ TEST(ExactMotion, TheQuaternionFollowsTheAngularVelocity) {
   // (ω dt)²/6 for |ω| ≈ 3.8, dt = 0.01: 2.4e-4.
   EXPECT_LT(worst, 1e-3);
   EXPECT_GT(worst, 1e-6);  // the difference's own error: the test sees the motion, not noise
+}
+
+// The exact motion at given times (the Python module's exact_motion) is the scenario's rows at
+// those times, bit for bit, in any order; bad numbers are named by their argument and index.
+TEST(ExactMotion, AtGivenTimesAreTheScenariosRowsAtThem) {
+  const analysis::Scenario s = scenario("book-intermediate-0.2");
+  const ExactMotion m = exact_motion(s);
+  const std::vector<std::size_t> picked = {500, 0, 3, 749};
+  std::vector<double> times;
+  for (std::size_t n : picked) times.push_back(m.rows[n].t);
+  const std::vector<ExactMotionRow> rows = exact_motion_at(s.body.moments, m.omega0_body, times);
+  ASSERT_EQ(rows.size(), picked.size());
+  for (std::size_t i = 0; i < picked.size(); ++i) {
+    const ExactMotionRow& want = m.rows[picked[i]];
+    EXPECT_EQ(rows[i].t, want.t);
+    EXPECT_EQ(rows[i].q, want.q);
+    EXPECT_EQ(rows[i].omega_body, want.omega_body);
+    EXPECT_EQ(rows[i].omega_world, want.omega_world);
+    EXPECT_EQ(rows[i].L, want.L);
+    EXPECT_EQ(rows[i].E, want.E);
+  }
+  const auto error_of = [](const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0,
+                           const std::vector<double>& t) {
+    try {
+      exact_motion_at(moments, omega0, t);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const Eigen::Vector3d I(1, 2, 3), w(0, 1, 0);
+  EXPECT_EQ(error_of({1, 0, 3}, w, {0.0}),
+            "moments[1]: 0 is not a finite positive moment of inertia");
+  EXPECT_EQ(error_of(I, {0, INFINITY, 0}, {0.0}),
+            "omega0[1]: inf is not a finite angular velocity");
+  EXPECT_EQ(error_of(I, w, {0.0, NAN}), "t[1]: nan is not a finite time");
+  EXPECT_TRUE(exact_motion_at(I, w, {}).empty());
 }
 
 }  // namespace

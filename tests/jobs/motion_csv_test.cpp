@@ -7,13 +7,17 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "analysis/accuracy.hpp"
 #include "analysis/conformance.hpp"
+#include "common/csv_writer.hpp"
 #include "common/errors.hpp"
+#include "common/number_text.hpp"
 #include "jobs/simulation.hpp"
 #include "scene/scene.hpp"
 
@@ -141,6 +145,50 @@ TEST(MotionCsv, AByteOrderMarkBeforeTheHeaderIsRead) {
 
 TEST(MotionCsv, AFileThatIsNotThereIsAnInputError) {
   EXPECT_THROW(read_motion_csv("/nonexistent/run.csv", 0.1, 10), InputError);
+}
+
+// A motion given as numbers (the Python module's judge) is read by the file's rules: the same
+// rows, stride and body-frame ω as the file with those numbers, and a bad row named by its
+// array and index.
+TEST(MotionCsv, RowsGivenAsNumbersAreReadAsTheFileWithThoseNumbers) {
+  const double h = std::sqrt(0.5);
+  const std::vector<std::array<double, 8>> rows = {
+      {0.0, 1, 0, 0, 0, 0, 0, 1}, {0.2, h, 0, 0, h, 2, 0, 0}, {0.4, 0, 0, 0, -3, 0.5, 1, -2}};
+  std::string text = "t,qw,qx,qy,qz,wx_world,wy_world,wz_world\n";
+  for (const auto& r : rows) {
+    std::vector<std::string> cells;
+    for (double v : r) cells.push_back(finite_text(v, "cell"));
+    text += csv_row(cells) + "\n";
+  }
+  const MotionFile file = parse_motion_csv(text, "run.csv", 0.1, 10);
+  const MotionFile numbers = motion_from_rows(rows, OmegaFrame::world, "judge", 0.1, 10);
+  EXPECT_EQ(numbers.stride, 2);
+  EXPECT_EQ(numbers.omega_frame, OmegaFrame::world);
+  ASSERT_EQ(numbers.rows.size(), file.rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(numbers.rows[i].step, file.rows[i].step);
+    EXPECT_EQ(numbers.rows[i].q.coeffs(), file.rows[i].q.coeffs());
+    EXPECT_EQ(numbers.rows[i].omega_body, file.rows[i].omega_body);
+  }
+  EXPECT_TRUE(numbers.rows[1].omega_body.isApprox(Eigen::Vector3d(0, -2, 0), 1e-15));
+  const auto error_of_rows = [](std::vector<std::array<double, 8>> bad) {
+    try {
+      motion_from_rows(bad, OmegaFrame::body, "judge", 0.1, 10);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  auto bad = rows;
+  bad[2][0] = 0.45;
+  EXPECT_EQ(error_of_rows(bad), "judge: t[2]: t = 0.45 is not a whole number of steps of dt = 0.1");
+  bad = rows;
+  bad[1][6] = std::nan("");
+  EXPECT_EQ(error_of_rows(bad), "judge: omega_body[1]: nan is not a finite number");
+  bad = rows;
+  bad[1][1] = bad[1][4] = 0.0;
+  EXPECT_EQ(error_of_rows(bad), "judge: q[1]: q is zero (qw = qx = qy = qz = 0): no orientation");
+  EXPECT_EQ(error_of_rows({}), "judge: no rows (t is empty)");
 }
 
 /// The book spun near its intermediate axis, `model`, dt = 0.05, one row a step for `steps`

@@ -1,0 +1,58 @@
+#pragma once
+// The Python module's pieces (docs/python.md): one file per concept, each adding its functions
+// to the module; what they share is here. The module is a door, as the command line is: it
+// turns Python values into the pure stages' requests, calls them with the GIL released, and
+// presents their values as numpy arrays and dicts. Errors are mapped in one place (errors.cpp).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "common/stop.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::python {
+
+namespace py = pybind11;
+
+/// Adds bookspin.Error and the one translation of bookspin's exceptions into Python's.
+void add_errors(py::module_& m);
+/// bookspin.exact_motion.
+void add_exact_motion(py::module_& m);
+/// bookspin.simulate.
+void add_simulate(py::module_& m);
+/// The submodule bookspin.flipcheck: scenarios, export, judge.
+void add_flipcheck(py::module_& m);
+
+/// A stop poll for a long call with the GIL released: a few times a second it takes the GIL
+/// and asks Python whether a signal came (PyErr_CheckSignals); Ctrl-C then throws Interrupted,
+/// which errors.cpp turns into KeyboardInterrupt.
+StopPoll python_stop();
+
+/// `value` as a float64 array of shape (`n`,), for argument `name`; InputError "NAME: expected
+/// shape (n,), got (…)" otherwise (`n` < 0: any length).
+std::vector<double> vector_arg(const py::handle& value, const char* name, long n);
+/// `value` as a 3-vector (shape (3,)).
+Eigen::Vector3d vector3_arg(const py::handle& value, const char* name);
+/// `value` as a float64 array of shape (`rows`, `columns`), row-major.
+std::vector<double> matrix_arg(const py::handle& value, const char* name, long rows, long columns);
+
+/// A float64 array of shape (n,) or (n, columns), uninitialized.
+py::array_t<double> new_array(std::size_t n, std::size_t columns = 0);
+
+/// A scene given as a path (os.PathLike, or a str that names a file or holds neither a newline
+/// nor '=') or as TOML text (any other str, named "scene-text.toml" in messages), with `overrides`
+/// (a dict or None) applied as `--set KEY=VALUE` (each value spelled in TOML). Read with the GIL
+/// held (the reading is short). InputError for a bad scene, as the command line's.
+scene::Scene scene_arg(const py::handle& scene, const py::handle& overrides);
+
+/// Python's `os.fspath(value)` for a str or an os.PathLike, else nullopt-like empty string with
+/// `ok` false.
+std::string path_text(const py::handle& value, bool& ok);
+
+/// Issues `message` as a Python UserWarning (the command line prints it as "bookspin: warning:").
+void warn(const std::string& message);
+
+}  // namespace bookspin::python

@@ -1,0 +1,49 @@
+# The stub of the Python module bookspin (docs/python.md), beside the module in BUILD/python/.
+# Arrays are numpy float64; shapes in the comments: N rows.
+import os
+from typing import Any, Mapping, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+ArrayLike = npt.ArrayLike
+Array = npt.NDArray[np.float64]
+Scalar = Union[bool, int, float, str]
+
+class Error(ValueError):
+    """Bad input: the command line's one line ("FILE:LINE: KEY: reason")."""
+
+def exact_motion(moments: ArrayLike, omega0: ArrayLike, t: ArrayLike) -> dict[str, Array]:
+    """moments (3,), omega0 (3,) body frame rad per time unit, t (N,) ->
+    q (N, 4) w, x, y, z body to world; omega_body (N, 3); omega_world (N, 3);
+    L_world (N, 3); E (N,)."""
+
+def simulate(
+    scene: Union[str, os.PathLike[str]],
+    overrides: Optional[Mapping[str, Union[Scalar, Sequence[Scalar]]]] = None,
+) -> dict[str, Array]:
+    """Every column of `bookspin simulate`'s CSV, each (N,), one value per frame."""
+
+class flipcheck:  # a submodule: bookspin.flipcheck
+    scenario_dir: str
+    """The folder scenarios are looked up in by name (the source tree's scenes/flipcheck/)."""
+
+    @staticmethod
+    def scenarios(directory: Optional[Union[str, os.PathLike[str]]] = None) -> list[str]: ...
+    @staticmethod
+    def export(
+        scenario: Union[str, os.PathLike[str]],
+        directory: Optional[Union[str, os.PathLike[str]]] = None,
+    ) -> tuple[dict[str, Any], dict[str, Array]]:
+        """(the scenario's JSON as a dict, t (N,), q (N, 4), omega_body (N, 3),
+        omega_world (N, 3), L_world (N, 3), E (N,))."""
+    @staticmethod
+    def judge(
+        scenario: Union[str, os.PathLike[str]],
+        t: ArrayLike,
+        q: ArrayLike,
+        omega_world: ArrayLike,
+        directory: Optional[Union[str, os.PathLike[str]]] = None,
+        motion: str = "motion",
+    ) -> dict[str, Union[str, int, float, None]]:
+        """t (N,), q (N, 4) w, x, y, z, omega_world (N, 3) -> the judgement CSV's row."""

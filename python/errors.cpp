@@ -1,0 +1,80 @@
+// The one mapping of bookspin's exceptions into Python's (docs/python.md, "Errors"); the
+// command line's is src/cli/run_guarded.cpp, and the two say the same line:
+//   InputError                 bookspin.Error (a ValueError): the command line's one line
+//   OutputError                OSError: `cannot write "PATH": reason`
+//   Interrupted                KeyboardInterrupt (Ctrl-C during a long call)
+//   anything else              RuntimeError "internal error: …" (a bug)
+// pybind11's own exceptions (a wrong argument type, a Python error raised inside a call) pass
+// through untouched.
+#include "common/errors.hpp"
+
+#include <Python.h>
+
+#include <chrono>
+#include <csignal>
+#include <memory>
+#include <new>
+#include <stdexcept>
+
+#include "bindings.hpp"
+#include "scene/toml_reader.hpp"
+
+namespace bookspin::python {
+
+namespace {
+
+PyObject* error_type = nullptr;  ///< bookspin.Error
+
+}  // namespace
+
+void add_errors(py::module_& m) {
+  static py::exception<InputError> error(m, "Error", PyExc_ValueError);
+  error.doc() =
+      "Bad input (a scene, an override, an array, a motion): the command line's one line, "
+      "\"FILE:LINE: KEY: reason\" where it has a file. A subclass of ValueError.";
+  error_type = error.ptr();
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      if (thrown) std::rethrow_exception(thrown);
+    } catch (const py::error_already_set&) {
+      throw;  // a Python error: pybind11 restores it
+    } catch (const py::builtin_exception&) {
+      throw;  // pybind11's own (TypeError of a wrong argument, …)
+    } catch (const std::bad_alloc&) {
+      throw;  // MemoryError, pybind11's
+    } catch (const Interrupted&) {
+      PyErr_SetNone(PyExc_KeyboardInterrupt);
+    } catch (const InputError& e) {
+      PyErr_SetString(error_type, scene::escape_controls(e.what()).c_str());
+    } catch (const OutputError& e) {
+      PyErr_SetString(PyExc_OSError, scene::escape_controls(e.what()).c_str());
+    } catch (const std::exception& e) {
+      const std::string message = "internal error: " + scene::escape_controls(e.what());
+      PyErr_SetString(PyExc_RuntimeError, message.c_str());
+    }
+  });
+}
+
+StopPoll python_stop() {
+  using Clock = std::chrono::steady_clock;
+  // The calls that take it run on the caller's thread alone: the time of the last look needs
+  // no lock. Every 50 ms at most, so that a loop of short steps is not slowed by the GIL.
+  auto last = std::make_shared<Clock::time_point>(Clock::now());
+  return [last](std::string_view) -> int {
+    const Clock::time_point now = Clock::now();
+    if (now - *last < std::chrono::milliseconds(50)) return 0;
+    *last = now;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() == 0) return 0;
+    // The handler raised (KeyboardInterrupt for SIGINT): the call stops as the command line
+    // does, and errors.cpp raises KeyboardInterrupt again at the door.
+    PyErr_Clear();
+    return SIGINT;
+  };
+}
+
+void warn(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
+}  // namespace bookspin::python

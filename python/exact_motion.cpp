@@ -1,0 +1,80 @@
+// bookspin.exact_motion: the exact torque-free motion at given times (docs/physics.md §8), the
+// rows jobs::exact_motion_at makes, which are the exact model's and flipcheck export's.
+#include "jobs/exact_motion.hpp"
+
+#include "bindings.hpp"
+
+namespace bookspin::python {
+
+namespace {
+
+const char* kDoc = R"(exact_motion(moments, omega0, t) -> dict[str, numpy.ndarray]
+
+The exact torque-free motion of a rigid body (Jacobi elliptic functions and the precession
+about L in closed form; docs/physics.md §8), evaluated at every time of t. The body starts at
+the identity orientation (body frame = world frame at t = 0) with body-frame angular velocity
+omega0; no jiggle is added. The same numbers as the exact model's (model.kind = "exact") and
+as `bookspin flipcheck export`'s CSV (physics::ExactRotation through jobs::exact_motion_row).
+
+Arguments (float64, or anything numpy turns into it):
+  moments  (3,)  principal moments of inertia about body x, y, z, mass * length^2, each > 0
+  omega0   (3,)  angular velocity at t = 0, body frame, rad per time unit
+  t        (N,)  times, time units, any order
+
+Returns a dict of float64 arrays:
+  q            (N, 4)  orientation R(t), body to world, as a unit quaternion w, x, y, z with
+                       w >= 0 (v_world = q v_body q^-1)
+  omega_body   (N, 3)  angular velocity, body frame, rad per time unit
+  omega_world  (N, 3)  R(t) omega_body, world frame
+  L_world      (N, 3)  angular momentum R(t) I_body omega_body, world frame (constant)
+  E            (N,)    kinetic energy 1/2 omega . I_body omega (constant)
+
+Raises bookspin.Error for a wrong shape, a moment that is not finite and positive, or an
+omega0 or t that is not finite; KeyboardInterrupt on Ctrl-C. The GIL is released while it
+computes.)";
+
+py::dict exact_motion(const py::object& moments_arg, const py::object& omega0_arg,
+                      const py::object& t_arg) {
+  const Eigen::Vector3d moments = vector3_arg(moments_arg, "moments");
+  const Eigen::Vector3d omega0 = vector3_arg(omega0_arg, "omega0");
+  const std::vector<double> t = vector_arg(t_arg, "t", -1);
+  std::vector<jobs::ExactMotionRow> rows;
+  {
+    const StopPoll stop = python_stop();
+    py::gil_scoped_release release;
+    rows = jobs::exact_motion_at(moments, omega0, t, stop);
+  }
+  const std::size_t n = rows.size();
+  py::array_t<double> q = new_array(n, 4), omega_body = new_array(n, 3),
+                      omega_world = new_array(n, 3), L_world = new_array(n, 3), E = new_array(n);
+  auto q_ = q.mutable_unchecked<2>();
+  auto wb = omega_body.mutable_unchecked<2>();
+  auto ww = omega_world.mutable_unchecked<2>();
+  auto L = L_world.mutable_unchecked<2>();
+  auto e = E.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto r = static_cast<py::ssize_t>(i);
+    for (int k = 0; k < 4; ++k) q_(r, k) = rows[i].q[k];
+    for (int k = 0; k < 3; ++k) {
+      wb(r, k) = rows[i].omega_body[k];
+      ww(r, k) = rows[i].omega_world[k];
+      L(r, k) = rows[i].L[k];
+    }
+    e(r) = rows[i].E;
+  }
+  py::dict out;
+  out["q"] = q;
+  out["omega_body"] = omega_body;
+  out["omega_world"] = omega_world;
+  out["L_world"] = L_world;
+  out["E"] = E;
+  return out;
+}
+
+}  // namespace
+
+void add_exact_motion(py::module_& m) {
+  m.def("exact_motion", &exact_motion, py::arg("moments"), py::arg("omega0"), py::arg("t"), kDoc);
+}
+
+}  // namespace bookspin::python

@@ -1,0 +1,216 @@
+// bookspin.flipcheck: the conformance kit (docs/flipcheck.md) from Python. Its scenarios are
+// the scene files of a folder (scenes/flipcheck/ of the source tree the module was built from,
+// unless told another); export gives a scenario's start and its exact motion as jobs makes them
+// for `bookspin flipcheck export`, judge the judgement analysis makes for `bookspin flipcheck
+// judge`, of a motion given as arrays (jobs::motion_from_rows: the motion file's rules).
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/conformance.hpp"
+#include "analysis/judgement.hpp"
+#include "bindings.hpp"
+#include "common/errors.hpp"
+#include "common/json_writer.hpp"
+#include "jobs/exact_motion.hpp"
+#include "jobs/motion_csv.hpp"
+
+namespace bookspin::python {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The folder of scenarios: `directory`, or bookspin.flipcheck.scenario_dir.
+fs::path scenario_dir(const py::object& directory) {
+  py::object dir = directory;
+  if (dir.is_none()) dir = py::module_::import("bookspin").attr("flipcheck").attr("scenario_dir");
+  bool ok = false;
+  const std::string text = path_text(dir, ok);
+  if (!ok) throw InputError("directory: expected a path (str or os.PathLike)");
+  return text;
+}
+
+std::vector<std::string> scenario_names(const fs::path& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec))
+    if (entry.path().extension() == ".toml" && entry.is_regular_file(ec))
+      names.push_back(entry.path().stem().string());
+  if (ec) throw InputError(dir.string() + ": cannot list the scenarios: " + ec.message());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// A scenario by name (a file NAME.toml of the folder) or by path (os.PathLike, or a str that
+/// ends in .toml or holds a '/'), read as `bookspin flipcheck` reads it.
+scene::Scene scenario_scene(const py::object& scenario, const py::object& directory) {
+  bool ok = false;
+  const std::string text = path_text(scenario, ok);
+  if (!ok) throw InputError("scenario: expected a name or a path, got a non-str");
+  const bool path = !py::isinstance<py::str>(scenario) || text.find('/') != std::string::npos ||
+                    fs::path(text).extension() == ".toml";
+  if (path) return scene::parse_scene(text);
+  const fs::path dir = scenario_dir(directory);
+  const fs::path file = dir / (text + ".toml");
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) {
+    std::string known;
+    for (const std::string& name : scenario_names(dir)) known += (known.empty() ? "" : ", ") + name;
+    throw InputError("flipcheck: no scenario \"" + text + "\" in " + dir.string() +
+                     " (there: " + known + ")");
+  }
+  return scene::parse_scene(file);
+}
+
+const char* kScenariosDoc = R"(scenarios(directory=None) -> list[str]
+
+The names of the conformance scenarios (docs/flipcheck.md, "The scenarios"): the stems of the
+.toml files of `directory`, sorted. directory=None reads bookspin.flipcheck.scenario_dir, the
+source tree's scenes/flipcheck/ the module was built from (set it to use another folder).)";
+
+py::list scenarios(const py::object& directory) {
+  py::list out;
+  for (const std::string& name : scenario_names(scenario_dir(directory))) out.append(name);
+  return out;
+}
+
+const char* kExportDoc =
+    R"(export(scenario, directory=None) -> tuple[dict, dict[str, numpy.ndarray]]
+
+What `bookspin flipcheck export SCENARIO` writes, as values: the scenario's JSON
+(OUT/<scenario>.json: units, mass, principal_moments, q0, omega0_body, omega0_world, dt, steps,
+...) as a dict, and its exact motion at every step n = 0 ... steps, t = n dt
+(OUT/<scenario>-exact.csv), as float64 arrays:
+  t            (N,)    time units, N = steps + 1
+  q            (N, 4)  R(t) body to world, w, x, y, z, w >= 0
+  omega_body   (N, 3)  rad per time unit, body frame
+  omega_world  (N, 3)  world frame
+  L_world      (N, 3)  angular momentum, world frame
+  E            (N,)    kinetic energy
+`scenario` is a name of scenarios() (looked up in `directory`, as there) or a path to a scene
+file. Raises bookspin.Error for an unknown name or a bad scene file; KeyboardInterrupt on
+Ctrl-C. The GIL is released while it computes.)";
+
+py::tuple export_scenario(const py::object& scenario_input, const py::object& directory) {
+  const scene::Scene scene = scenario_scene(scenario_input, directory);
+  const analysis::Scenario scenario = analysis::scenario_of(scene);
+  jobs::ExactMotion motion;
+  {
+    const StopPoll stop = python_stop();
+    py::gil_scoped_release release;
+    motion = jobs::exact_motion(scenario, stop);
+  }
+  const std::string json = json_text(jobs::scenario_json(motion), "flipcheck scenario");
+  const py::object start = py::module_::import("json").attr("loads")(json);
+  const std::size_t n = motion.rows.size();
+  py::array_t<double> t = new_array(n), q = new_array(n, 4), omega_body = new_array(n, 3),
+                      omega_world = new_array(n, 3), L_world = new_array(n, 3), E = new_array(n);
+  auto t_ = t.mutable_unchecked<1>();
+  auto q_ = q.mutable_unchecked<2>();
+  auto wb = omega_body.mutable_unchecked<2>();
+  auto ww = omega_world.mutable_unchecked<2>();
+  auto L = L_world.mutable_unchecked<2>();
+  auto e = E.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < n; ++i) {
+    const jobs::ExactMotionRow& row = motion.rows[i];
+    const auto r = static_cast<py::ssize_t>(i);
+    t_(r) = row.t;
+    for (int k = 0; k < 4; ++k) q_(r, k) = row.q[k];
+    for (int k = 0; k < 3; ++k) {
+      wb(r, k) = row.omega_body[k];
+      ww(r, k) = row.omega_world[k];
+      L(r, k) = row.L[k];
+    }
+    e(r) = row.E;
+  }
+  py::dict arrays;
+  arrays["t"] = t;
+  arrays["q"] = q;
+  arrays["omega_body"] = omega_body;
+  arrays["omega_world"] = omega_world;
+  arrays["L_world"] = L_world;
+  arrays["E"] = E;
+  return py::make_tuple(start, arrays);
+}
+
+const char* kJudgeDoc =
+    R"(judge(scenario, t, q, omega_world, directory=None, motion="motion") -> dict
+
+Judges a motion against the scenario's exact motion from the same start, as `bookspin
+flipcheck judge SCENARIO MOTION.csv` judges the same motion written as a CSV
+(docs/flipcheck.md, "What judge measures" and "The judgement CSV"). Returns the judgement
+CSV's row as a dict, in its column order: scenario (str), motion (str: the `motion` argument,
+where the command line puts the file's name), verdict ("pass" or "fail"), stride, last_step,
+flips, flips_exact, stable_spin (int), start_error, energy_drift, L_drift, first_flip,
+first_flip_exact, first_flip_error, orientation_error, tumble_time, separatrix_ratio_drift,
+separatrix_approach (float, None where the CSV's cell is empty), failures (str, "; " between
+reasons, "" for a pass).
+
+Arguments (float64, or anything numpy turns into it):
+  scenario     a name of scenarios() or a path to a scene file
+  t            (N,)    time units: 0, then every stride steps of the scenario's dt (to 1e-6 of
+                       a step), none past its last step
+  q            (N, 4)  orientation, body to world, w, x, y, z (any norm but 0, either sign)
+  omega_world  (N, 3)  angular velocity, world frame, rad per time unit
+Raises bookspin.Error for an unknown scenario, a wrong shape, or a row the motion file's rules
+refuse ("flipcheck.judge: t[3]: t = 0.013 is not a whole number of steps of dt = 0.01"). The
+GIL is released while it judges.)";
+
+/// A judgement CSV cell as Python: a number (None for an empty cell), or its text (an int where
+/// it is a whole number: the counts and the flag).
+py::object cell_value(const CsvCell& cell) {
+  if (const CsvNumber* number = std::get_if<CsvNumber>(&cell))
+    return number->value ? py::object(py::float_(*number->value)) : py::object(py::none());
+  const std::string& text = std::get<std::string>(cell);
+  const bool whole = !text.empty() && std::all_of(text.begin(), text.end(),
+                                                  [](char c) { return c >= '0' && c <= '9'; });
+  if (whole) return py::int_(std::stoll(text));
+  return py::str(text);
+}
+
+py::dict judge(const py::object& scenario_input, const py::object& t_arg, const py::object& q_arg,
+               const py::object& omega_arg, const py::object& directory,
+               const std::string& motion_name) {
+  const scene::Scene scene = scenario_scene(scenario_input, directory);
+  const analysis::Scenario scenario = analysis::scenario_of(scene);
+  const std::vector<double> t = vector_arg(t_arg, "t", -1);
+  const auto n = static_cast<long>(t.size());
+  const std::vector<double> q = matrix_arg(q_arg, "q", n, 4);
+  const std::vector<double> omega = matrix_arg(omega_arg, "omega_world", n, 3);
+  CsvTable table;
+  {
+    py::gil_scoped_release release;
+    std::vector<std::array<double, 8>> rows(t.size());
+    for (std::size_t i = 0; i < t.size(); ++i)
+      rows[i] = {t[i],         q[4 * i],     q[4 * i + 1],     q[4 * i + 2],
+                 q[4 * i + 3], omega[3 * i], omega[3 * i + 1], omega[3 * i + 2]};
+    const jobs::MotionFile motion = jobs::motion_from_rows(
+        rows, jobs::OmegaFrame::world, "flipcheck.judge", scenario.dt, scenario.steps);
+    const analysis::Conformance result = analysis::judge_motion(scenario, motion.rows);
+    table = analysis::judgement_table(scenario, {{{}, motion_name, result}});
+  }
+  py::dict out;
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    out[py::str(table.columns[c])] = cell_value(table.rows.at(0).at(c));
+  return out;
+}
+
+}  // namespace
+
+void add_flipcheck(py::module_& m) {
+  py::module_ flipcheck = m.def_submodule(
+      "flipcheck",
+      "The conformance kit (docs/flipcheck.md): scenarios, each one's start and exact motion, "
+      "and the judgement of any engine's motion against it, as `bookspin flipcheck` gives them.");
+  flipcheck.attr("scenario_dir") = std::string(BOOKSPIN_SCENARIO_DIR);
+  flipcheck.def("scenarios", &scenarios, py::arg("directory") = py::none(), kScenariosDoc);
+  flipcheck.def("export", &export_scenario, py::arg("scenario"), py::arg("directory") = py::none(),
+                kExportDoc);
+  flipcheck.def("judge", &judge, py::arg("scenario"), py::arg("t"), py::arg("q"),
+                py::arg("omega_world"), py::arg("directory") = py::none(),
+                py::arg("motion") = "motion", kJudgeDoc);
+}
+
+}  // namespace bookspin::python

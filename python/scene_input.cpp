@@ -1,0 +1,102 @@
+// A scene from Python (docs/python.md): a path or TOML text, and the overrides as a dict that
+// becomes the command line's `--set KEY=VALUE`, each value spelled in TOML.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "common/errors.hpp"
+
+namespace bookspin::python {
+
+namespace {
+
+/// `text` as a TOML basic string: in double quotes, backslash, quote and control characters
+/// escaped.
+std::string toml_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (u < 0x20 || u == 0x7f) {
+      static const char* hex = "0123456789ABCDEF";
+      out += "\\u00";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+/// A Python value spelled in TOML: bool, int, float (repr: 0.1, 1e-05, inf, nan), str, and
+/// lists or tuples of them; InputError naming `key` for anything else.
+std::string toml_value(const py::handle& value, const std::string& key) {
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "true" : "false";
+  if (PyIndex_Check(value.ptr()) && !PyFloat_Check(value.ptr()))
+    return std::string(py::str(py::int_(py::reinterpret_borrow<py::object>(value))));
+  if (PyFloat_Check(value.ptr()) ||
+      py::isinstance(value, py::module_::import("numbers").attr("Real")))
+    return std::string(py::repr(py::float_(py::reinterpret_borrow<py::object>(value))));
+  if (py::isinstance<py::str>(value)) return toml_string(value.cast<std::string>());
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    std::string out = "[";
+    bool first = true;
+    for (const py::handle item : value) {
+      out += (first ? "" : ", ") + toml_value(item, key);
+      first = false;
+    }
+    return out + "]";
+  }
+  throw InputError("--set " + key + ": a Python " +
+                   std::string(py::str(py::type::handle_of(value).attr("__name__"))) +
+                   " is no scene value (give a bool, a number, a str or a list of them)");
+}
+
+std::vector<std::string> override_args(const py::handle& overrides) {
+  std::vector<std::string> args;
+  if (overrides.is_none()) return args;
+  if (!py::isinstance<py::dict>(overrides))
+    throw InputError("overrides: expected a dict such as {\"time.frames\": 120}, got " +
+                     std::string(py::str(py::type::handle_of(overrides).attr("__name__"))));
+  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(overrides)) {
+    if (!py::isinstance<py::str>(key))
+      throw InputError("overrides: a key is not a str: " + std::string(py::repr(key)));
+    const std::string name = key.cast<std::string>();
+    args.push_back(name + "=" + toml_value(value, name));
+  }
+  return args;
+}
+
+}  // namespace
+
+std::string path_text(const py::handle& value, bool& ok) {
+  ok = py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
+  if (!ok) return {};
+  const py::object path = py::module_::import("os").attr("fspath")(value);
+  if (!py::isinstance<py::str>(path)) {
+    ok = false;  // a bytes path
+    return {};
+  }
+  return path.cast<std::string>();
+}
+
+scene::Scene scene_arg(const py::handle& scene, const py::handle& overrides) {
+  bool ok = false;
+  const std::string text = path_text(scene, ok);
+  if (!ok)
+    throw InputError("scene: expected a path or TOML text (str), got " +
+                     std::string(py::str(py::type::handle_of(scene).attr("__name__"))));
+  const std::vector<std::string> args = override_args(overrides);
+  const bool path_like = !py::isinstance<py::str>(scene);
+  std::error_code ec;
+  const bool names_a_file = std::filesystem::is_regular_file(text, ec);
+  if (path_like || names_a_file || text.find_first_of("\n=") == std::string::npos)
+    return scene::parse_scene(text, args);
+  return scene::parse_scene_text(text, "scene-text.toml", args);
+}
+
+}  // namespace bookspin::python

@@ -1,0 +1,123 @@
+"""bookspin.exact_motion against the command line's exact motion (flipcheck export, the exact
+model through simulate) and against the physics it must obey (docs/physics.md §8)."""
+import json
+
+import numpy as np
+import pytest
+
+from conftest import SCENARIO_DIR, numbers, read_csv, run_cli
+
+BOOK = SCENARIO_DIR / "book-intermediate-0.05.toml"
+
+
+def rotate(q, v):
+    """v (N, 3) turned by the unit quaternions q (N, 4) w, x, y, z: q v q^-1, written out."""
+    w, u = q[:, :1], q[:, 1:]
+    return v + 2.0 * np.cross(u, np.cross(u, v) + w * v)
+
+
+def exported(tmp_path, scene=BOOK, *sets):
+    words = [w for s in sets for w in ("--set", s)]
+    run_cli("flipcheck", "export", scene, "-o", tmp_path, *words)
+    name = scene.stem
+    start = json.loads((tmp_path / f"{name}.json").read_text())
+    return start, read_csv(tmp_path / f"{name}-exact.csv")
+
+
+def test_equals_flipcheck_exports_exact_motion(bookspin, tmp_path):
+    start, csv = exported(tmp_path)
+    t = numbers(csv["t"])
+    got = bookspin.exact_motion(start["principal_moments"], start["omega0_body"], t)
+    expected = {
+        "q": np.column_stack([numbers(csv[c]) for c in ("qw", "qx", "qy", "qz")]),
+        "omega_body": np.column_stack([numbers(csv[c]) for c in ("wx", "wy", "wz")]),
+        "omega_world": np.column_stack(
+            [numbers(csv[c]) for c in ("wx_world", "wy_world", "wz_world")]),
+        "L_world": np.column_stack([numbers(csv[c]) for c in ("Lx", "Ly", "Lz")]),
+        "E": numbers(csv["E"]),
+    }
+    for key, value in expected.items():
+        assert got[key].shape == value.shape, key
+        assert got[key].dtype == np.float64
+        scale = np.max(np.abs(value))
+        assert np.max(np.abs(got[key] - value)) <= 1e-12 * scale, key
+
+
+def test_equals_the_exact_model_of_simulate(bookspin, tmp_path):
+    # The exact model (model.kind = "exact") run by `bookspin simulate`, no jiggle: its q, ω and
+    # L at every frame's t against exact_motion from the same start.
+    sets = ["initial.jiggle=0", "time.duration=40.0", "time.steps_per_frame=7"]
+    start, _ = exported(tmp_path, BOOK, *sets)
+    run_cli("simulate", BOOK, "--csv", tmp_path / "exact.csv", *[w for s in sets for w in ("--set", s)])
+    csv = read_csv(tmp_path / "exact.csv")
+    t = numbers(csv["t"])
+    got = bookspin.exact_motion(start["principal_moments"], start["omega0_body"], t)
+    pairs = {
+        "q": ("q_w", "q_x", "q_y", "q_z"),
+        "omega_body": ("omega_x", "omega_y", "omega_z"),
+        "L_world": ("L_x", "L_y", "L_z"),
+    }
+    for key, columns in pairs.items():
+        value = np.column_stack([numbers(csv[c]) for c in columns])
+        assert np.max(np.abs(got[key] - value)) <= 1e-12 * np.max(np.abs(value)), key
+
+
+@pytest.mark.parametrize("omega0", [[1.0, 0.02, 0.01], [0.03, 0.4, 2.0], [0.5, 1.5, 0.01]])
+def test_obeys_the_physics(bookspin, omega0):
+    # Independent of bookspin's code: L and E conserved, L = R I ω, ω_world = R ω_body, q of unit
+    # length starting at the identity, and Euler's equations and q's kinematics by central
+    # differences.
+    moments = np.array([0.3, 0.7, 1.0])
+    t = np.linspace(0.0, 60.0, 6001)
+    m = bookspin.exact_motion(moments, omega0, t)
+    q, wb, ww, L, E = m["q"], m["omega_body"], m["omega_world"], m["L_world"], m["E"]
+    assert q.shape == (len(t), 4) and wb.shape == ww.shape == L.shape == (len(t), 3)
+    np.testing.assert_allclose(q[0], [1, 0, 0, 0], atol=1e-15)
+    np.testing.assert_allclose(wb[0], omega0, rtol=1e-14, atol=1e-15)
+    np.testing.assert_allclose(np.linalg.norm(q, axis=1), 1.0, atol=1e-14)
+    assert np.all(q[:, 0] >= 0.0)
+    L0 = moments * np.asarray(omega0)
+    assert np.max(np.abs(L - L0)) <= 1e-12 * np.linalg.norm(L0)
+    np.testing.assert_allclose(np.linalg.norm(L, axis=1), np.linalg.norm(L0), rtol=1e-12)
+    E0 = 0.5 * np.dot(omega0, moments * omega0)
+    np.testing.assert_allclose(E, E0, rtol=1e-12)
+    np.testing.assert_allclose(0.5 * np.sum(wb * moments * wb, axis=1), E0, rtol=1e-12)
+    np.testing.assert_allclose(rotate(q, wb), ww, atol=1e-12 * np.linalg.norm(omega0))
+    np.testing.assert_allclose(rotate(q, moments * wb), L, atol=1e-12 * np.linalg.norm(L0))
+    h = t[1] - t[0]
+    dw = (wb[2:] - wb[:-2]) / (2 * h)
+    euler = np.cross(moments * wb[1:-1], wb[1:-1]) / moments
+    assert np.max(np.abs(dw - euler)) < 1e-4 * np.max(np.abs(euler))
+    # q and -q are one orientation (q has w >= 0): made continuous before it is differenced.
+    sign = np.cumprod(np.where(np.sum(q[1:] * q[:-1], axis=1) < 0.0, -1.0, 1.0))
+    q = q * np.concatenate([[1.0], sign])[:, None]
+    dq = (q[2:] - q[:-2]) / (2 * h)
+    w, u = q[1:-1, :1], q[1:-1, 1:]
+    v = wb[1:-1]
+    kinematics = 0.5 * np.column_stack([-np.sum(u * v, axis=1), w * v + np.cross(u, v)])
+    assert np.max(np.abs(dq - kinematics)) < 1e-4 * np.linalg.norm(omega0)
+
+
+def test_any_order_of_t_and_one_time(bookspin):
+    moments, omega0 = [1.0, 2.0, 3.0], [0.1, 1.0, 0.1]
+    t = np.array([5.0, 0.0, 2.5])
+    m = bookspin.exact_motion(moments, omega0, t)
+    one = bookspin.exact_motion(moments, omega0, [2.5])
+    np.testing.assert_array_equal(m["q"][2], one["q"][0])
+    assert bookspin.exact_motion(moments, omega0, []).get("q").shape == (0, 4)
+
+
+@pytest.mark.parametrize("args, line", [
+    (([1, 2], [0, 1, 0], [0.0]), "moments: expected shape (3,), got (2,)"),
+    (([1, 2, 3], [0, 1, 0], [[0.0]]), "t: expected shape (N,), got (1, 1)"),
+    (([1, -2, 3], [0, 1, 0], [0.0]), "moments[1]: -2 is not a finite positive moment of inertia"),
+    (([1, 2, 3], [0, np.nan, 0], [0.0]), "omega0[1]: nan is not a finite angular velocity"),
+    (([1, 2, 3], [0, 1, 0], [0.0, np.inf]), "t[1]: inf is not a finite time"),
+    (([1, 2, 3], "abc", [0.0]), "omega0: expected an array of numbers (float64), got str"),
+])
+def test_bad_input_raises_bookspin_error(bookspin, args, line):
+    with pytest.raises(bookspin.Error) as raised:
+        bookspin.exact_motion(*args)
+    assert str(raised.value) == line
+    assert isinstance(raised.value, ValueError)
+    assert bookspin.exact_motion([1, 2, 3], [0, 1, 0], [0.0])["q"].shape == (1, 4)

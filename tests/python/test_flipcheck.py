@@ -1,0 +1,190 @@
+"""bookspin.flipcheck against `bookspin flipcheck export` and `judge` on the same input: the
+scenarios, their start and exact motion, and the judgement of the exact motion, of perturbed
+motions and of two integrators written here in numpy (explicit Euler fails, RK4 passes)."""
+import json
+import math
+
+import numpy as np
+import pytest
+
+from conftest import SCENARIO_DIR, cli_error_line, numbers, read_csv, run_cli, write_motion_csv
+
+SCENARIOS = sorted(p.stem for p in SCENARIO_DIR.glob("*.toml"))
+NUMERIC = ("start_error", "energy_drift", "L_drift", "first_flip", "first_flip_exact",
+           "first_flip_error", "orientation_error", "tumble_time", "separatrix_ratio_drift",
+           "separatrix_approach")
+WHOLE = ("stride", "last_step", "flips", "flips_exact", "stable_spin")
+
+
+def test_scenarios_are_the_folders_files(bookspin, tmp_path):
+    assert bookspin.flipcheck.scenarios() == SCENARIOS
+    assert bookspin.flipcheck.scenario_dir == str(SCENARIO_DIR)
+    (tmp_path / "b.toml").write_text("")
+    (tmp_path / "a.toml").write_text("")
+    (tmp_path / "notes.txt").write_text("")
+    assert bookspin.flipcheck.scenarios(tmp_path) == ["a", "b"]
+
+
+@pytest.mark.parametrize("name", SCENARIOS)
+def test_export_equals_the_command_line(bookspin, tmp_path, name):
+    run_cli("flipcheck", "export", SCENARIO_DIR / f"{name}.toml", "-o", tmp_path)
+    start, arrays = bookspin.flipcheck.export(name)
+    assert start == json.loads((tmp_path / f"{name}.json").read_text())
+    csv = read_csv(tmp_path / f"{name}-exact.csv")
+    columns = {"t": ["t"], "q": ["qw", "qx", "qy", "qz"], "omega_body": ["wx", "wy", "wz"],
+               "omega_world": ["wx_world", "wy_world", "wz_world"],
+               "L_world": ["Lx", "Ly", "Lz"], "E": ["E"]}
+    assert sorted(arrays) == sorted(columns)
+    for key, names in columns.items():
+        expected = np.column_stack([numbers(csv[c]) for c in names])
+        if len(names) == 1:
+            expected = expected[:, 0]
+        np.testing.assert_array_equal(arrays[key], expected, err_msg=key)
+
+
+# --- integrators written here, in numpy, outside the project: Euler's equations I ω̇ = (I ω) × ω
+# in the body frame (docs/physics.md §8) and q̇ = ½ q ⊗ (0, ω_body) (§4) ---
+
+def quaternion_rate(q, w):
+    return 0.5 * np.array([-q[1:] @ w, *(q[0] * w + np.cross(q[1:], w))])
+
+
+def rates(state, moments):
+    q, w = state[:4], state[4:]
+    return np.concatenate([quaternion_rate(q, w), np.cross(moments * w, w) / moments])
+
+
+def euler_step(state, moments, dt):
+    return state + dt * rates(state, moments)
+
+
+def rk4_step(state, moments, dt):
+    k1 = rates(state, moments)
+    k2 = rates(state + 0.5 * dt * k1, moments)
+    k3 = rates(state + 0.5 * dt * k2, moments)
+    k4 = rates(state + dt * k3, moments)
+    out = state + dt / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+    out[:4] /= np.linalg.norm(out[:4])
+    return out
+
+
+def to_world(q, w):
+    u = q[:, 1:]
+    return w + 2.0 * np.cross(u, np.cross(u, w) + q[:, :1] * w)
+
+
+def integrate(start, step, stride=1):
+    moments = np.array(start["principal_moments"])
+    dt, steps = start["dt"], start["steps"]
+    state = np.concatenate([[1.0, 0.0, 0.0, 0.0], start["omega0_body"]])
+    rows = [state]
+    for n in range(1, steps + 1):
+        state = step(state, moments, dt)
+        if n % stride == 0:
+            rows.append(state)
+    rows = np.array(rows)
+    t = np.arange(len(rows)) * stride * dt
+    return t, rows[:, :4], to_world(rows[:, :4] / np.linalg.norm(rows[:, :4], axis=1)[:, None],
+                                    rows[:, 4:])
+
+
+def cli_judgement(tmp_path, scenario, t, q, omega_world, file="motion.csv"):
+    write_motion_csv(tmp_path / file, t, q, omega_world)
+    run_cli("flipcheck", "judge", SCENARIO_DIR / f"{scenario}.toml", tmp_path / file, "-o",
+            tmp_path / "out", "--force")
+    return {k: v[0] for k, v in read_csv(tmp_path / "out" / f"{scenario}-judge.csv").items()}
+
+
+def assert_same_judgement(got, cli):
+    assert list(got) == list(cli)  # every column, in the CSV's order
+    for column, cell in cli.items():
+        if column == "motion":
+            continue  # the file's name there, the motion argument here
+        value = got[column]
+        if column in NUMERIC:
+            if cell == "":
+                assert value is None, column
+            else:
+                assert value == pytest.approx(float(cell), rel=1e-9, abs=0.0), column
+        elif column in WHOLE:
+            assert value == int(cell), column
+        else:
+            assert value == cell, column
+
+
+def motions_of(name, arrays, start):
+    """The exact motion every stride steps, and two perturbed copies of it."""
+    # A stride that divides the steps, so that the motion reaches the last one (complete).
+    stride = next(k for k in range(max(1, start["steps"] // 3000), 0, -1) if start["steps"] % k == 0)
+    t, q, w = arrays["t"][::stride], arrays["q"][::stride], arrays["omega_world"][::stride]
+    ramp = t / t[-1]
+    noisy_q = q + 1e-3 * np.sin(7.0 * t)[:, None] * np.array([0.0, 1.0, -0.5, 0.25])
+    scaled_w = w * (1.0 + 0.02 * ramp)[:, None]  # spins up by 2 %: energy and L drift
+    return [("exact", t, q, w), ("noisy-q", t, -noisy_q, w), ("spun-up", t, q, scaled_w)]
+
+
+@pytest.mark.parametrize("name", SCENARIOS)
+def test_judge_equals_the_command_line_in_every_scenario(bookspin, tmp_path, name):
+    start, arrays = bookspin.flipcheck.export(name)
+    for label, t, q, w in motions_of(name, arrays, start):
+        cli = cli_judgement(tmp_path, name, t, q, w)
+        got = bookspin.flipcheck.judge(name, t, q, w, motion=label)
+        assert got["motion"] == label
+        assert_same_judgement(got, cli)
+    assert bookspin.flipcheck.judge(name, *motions_of(name, arrays, start)[0][1:])["verdict"] == "pass"
+
+
+def test_numpy_euler_fails_and_rk4_passes(bookspin, tmp_path):
+    name = "book-intermediate-0.05"
+    start, _ = bookspin.flipcheck.export(name)
+    verdicts = {}
+    for label, step in (("euler", euler_step), ("rk4", rk4_step)):
+        t, q, w = integrate(start, step)
+        got = bookspin.flipcheck.judge(name, t, q, w, motion=label)
+        assert_same_judgement(got, cli_judgement(tmp_path, name, t, q, w, f"{label}.csv"))
+        verdicts[label] = got
+    assert verdicts["euler"]["verdict"] == "fail"
+    assert "energy" in verdicts["euler"]["failures"]
+    assert verdicts["rk4"]["verdict"] == "pass", verdicts["rk4"]["failures"]
+    assert verdicts["rk4"]["flips"] == verdicts["rk4"]["flips_exact"] > 0
+
+
+def test_a_scenario_by_path_and_from_another_folder(bookspin, tmp_path):
+    path = SCENARIO_DIR / "symmetric-top.toml"
+    (tmp_path / "top.toml").write_text(path.read_text())
+    a, _ = bookspin.flipcheck.export(path)
+    b, _ = bookspin.flipcheck.export("top", directory=tmp_path)
+    assert {k: v for k, v in a.items() if k not in ("scenario", "exact_motion")} == \
+           {k: v for k, v in b.items() if k not in ("scenario", "exact_motion")}
+
+
+def test_bad_motions_raise_the_rows_line(bookspin, tmp_path):
+    name = "book-intermediate-0.05"
+    start, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"][:50].copy(), arrays["q"][:50].copy(), arrays["omega_world"][:50].copy()
+    bad_t = t.copy()
+    bad_t[3] += 0.3 * start["dt"]
+    t3 = repr(float(bad_t[3]))
+    cases = [
+        ((bad_t, q, w), f"flipcheck.judge: t[3]: t = {t3} is not a whole number of steps of dt = 0.05"),
+        ((t[1:], q[1:], w[1:]), "flipcheck.judge: t[0]: the first row must be t = 0"),
+        ((t, q[:-1], w), "q: expected shape (50, 4), got (49, 4)"),
+        ((t, q, w[:, :2]), "omega_world: expected shape (50, 3), got (50, 2)"),
+        ((t, np.zeros_like(q), w), "flipcheck.judge: q[0]: q is zero (qw = qx = qy = qz = 0): no orientation"),
+        ((t[:0], q[:0], w[:0]), "flipcheck.judge: no rows (t is empty)"),
+    ]
+    for args, line in cases:
+        with pytest.raises(bookspin.Error) as raised:
+            bookspin.flipcheck.judge(name, *args)
+        assert str(raised.value) == line
+    nan_w = w.copy()
+    nan_w[5, 1] = math.nan
+    with pytest.raises(bookspin.Error, match=r"omega_world\[5\]: nan is not a finite number"):
+        bookspin.flipcheck.judge(name, t, q, nan_w)
+    with pytest.raises(bookspin.Error, match='no scenario "nosuch" in'):
+        bookspin.flipcheck.judge("nosuch", t, q, w)
+    # The command line refuses the same misplaced row, on its line of the file.
+    write_motion_csv(tmp_path / "bad.csv", bad_t, q, w)
+    _, stderr = run_cli("flipcheck", "judge", SCENARIO_DIR / f"{name}.toml", tmp_path / "bad.csv",
+                        "-o", tmp_path, expect=2)
+    assert cli_error_line(stderr).endswith(f": t: t = {t3} is not a whole number of steps of dt = 0.05")
