@@ -70,4 +70,36 @@ py::array_t<double> new_array(std::size_t n, std::size_t columns) {
   return py::array_t<double>({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(columns)});
 }
 
+py::dict exact_rows_arrays(const std::vector<jobs::ExactMotionRow>& rows, bool with_t) {
+  const std::size_t n = rows.size();
+  py::array_t<double> t = new_array(n), q = new_array(n, 4), omega_body = new_array(n, 3),
+                      omega_world = new_array(n, 3), L_world = new_array(n, 3), E = new_array(n);
+  auto t_ = t.mutable_unchecked<1>();
+  auto q_ = q.mutable_unchecked<2>();
+  auto wb = omega_body.mutable_unchecked<2>();
+  auto ww = omega_world.mutable_unchecked<2>();
+  auto L = L_world.mutable_unchecked<2>();
+  auto e = E.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < n; ++i) {
+    const jobs::ExactMotionRow& row = rows[i];
+    const auto r = static_cast<py::ssize_t>(i);
+    t_(r) = row.t;
+    for (int k = 0; k < 4; ++k) q_(r, k) = row.q[k];
+    for (int k = 0; k < 3; ++k) {
+      wb(r, k) = row.omega_body[k];
+      ww(r, k) = row.omega_world[k];
+      L(r, k) = row.L[k];
+    }
+    e(r) = row.E;
+  }
+  py::dict out;
+  if (with_t) out["t"] = t;
+  out["q"] = q;
+  out["omega_body"] = omega_body;
+  out["omega_world"] = omega_world;
+  out["L_world"] = L_world;
+  out["E"] = E;
+  return out;
+}
+
 }  // namespace bookspin::python

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/stop.hpp"
+#include "jobs/exact_motion.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::python {
@@ -41,6 +42,10 @@ std::vector<double> matrix_arg(const py::handle& value, const char* name, long r
 
 /// A float64 array of shape (n,) or (n, columns), uninitialized.
 py::array_t<double> new_array(std::size_t n, std::size_t columns = 0);
+
+/// Exact-motion rows as arrays: `q` (N, 4) w, x, y, z, `omega_body`, `omega_world`, `L_world`
+/// (N, 3) and `E` (N,), and with `with_t` their times `t` (N,) too (jobs/exact_motion.hpp).
+py::dict exact_rows_arrays(const std::vector<jobs::ExactMotionRow>& rows, bool with_t);
 
 /// A scene given as a path (os.PathLike, or a str that names a file or holds neither a newline
 /// nor '=') or as TOML text (any other str, named "scene-text.toml" in messages), with `overrides`

@@ -44,31 +44,7 @@ py::dict exact_motion(const py::object& moments_arg, const py::object& omega0_ar
     py::gil_scoped_release release;
     rows = jobs::exact_motion_at(moments, omega0, t, stop);
   }
-  const std::size_t n = rows.size();
-  py::array_t<double> q = new_array(n, 4), omega_body = new_array(n, 3),
-                      omega_world = new_array(n, 3), L_world = new_array(n, 3), E = new_array(n);
-  auto q_ = q.mutable_unchecked<2>();
-  auto wb = omega_body.mutable_unchecked<2>();
-  auto ww = omega_world.mutable_unchecked<2>();
-  auto L = L_world.mutable_unchecked<2>();
-  auto e = E.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto r = static_cast<py::ssize_t>(i);
-    for (int k = 0; k < 4; ++k) q_(r, k) = rows[i].q[k];
-    for (int k = 0; k < 3; ++k) {
-      wb(r, k) = rows[i].omega_body[k];
-      ww(r, k) = rows[i].omega_world[k];
-      L(r, k) = rows[i].L[k];
-    }
-    e(r) = rows[i].E;
-  }
-  py::dict out;
-  out["q"] = q;
-  out["omega_body"] = omega_body;
-  out["omega_world"] = omega_world;
-  out["L_world"] = L_world;
-  out["E"] = E;
-  return out;
+  return exact_rows_arrays(rows, false);
 }
 
 }  // namespace

@@ -104,34 +104,7 @@ py::tuple export_scenario(const py::object& scenario_input, const py::object& di
   }
   const std::string json = json_text(jobs::scenario_json(motion), "flipcheck scenario");
   const py::object start = py::module_::import("json").attr("loads")(json);
-  const std::size_t n = motion.rows.size();
-  py::array_t<double> t = new_array(n), q = new_array(n, 4), omega_body = new_array(n, 3),
-                      omega_world = new_array(n, 3), L_world = new_array(n, 3), E = new_array(n);
-  auto t_ = t.mutable_unchecked<1>();
-  auto q_ = q.mutable_unchecked<2>();
-  auto wb = omega_body.mutable_unchecked<2>();
-  auto ww = omega_world.mutable_unchecked<2>();
-  auto L = L_world.mutable_unchecked<2>();
-  auto e = E.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < n; ++i) {
-    const jobs::ExactMotionRow& row = motion.rows[i];
-    const auto r = static_cast<py::ssize_t>(i);
-    t_(r) = row.t;
-    for (int k = 0; k < 4; ++k) q_(r, k) = row.q[k];
-    for (int k = 0; k < 3; ++k) {
-      wb(r, k) = row.omega_body[k];
-      ww(r, k) = row.omega_world[k];
-      L(r, k) = row.L[k];
-    }
-    e(r) = row.E;
-  }
-  py::dict arrays;
-  arrays["t"] = t;
-  arrays["q"] = q;
-  arrays["omega_body"] = omega_body;
-  arrays["omega_world"] = omega_world;
-  arrays["L_world"] = L_world;
-  arrays["E"] = E;
+  const py::dict arrays = exact_rows_arrays(motion.rows, true);
   return py::make_tuple(start, arrays);
 }
 

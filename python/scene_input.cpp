@@ -6,31 +6,11 @@
 
 #include "bindings.hpp"
 #include "common/errors.hpp"
+#include "common/json_string.hpp"
 
 namespace bookspin::python {
 
 namespace {
-
-/// `text` as a TOML basic string: in double quotes, backslash, quote and control characters
-/// escaped.
-std::string toml_string(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (u < 0x20 || u == 0x7f) {
-      static const char* hex = "0123456789ABCDEF";
-      out += "\\u00";
-      out += hex[u >> 4];
-      out += hex[u & 15];
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
 
 /// A Python value spelled in TOML: bool, int, float (repr: 0.1, 1e-05, inf, nan), str, and
 /// lists or tuples of them; InputError naming `key` for anything else.
@@ -41,7 +21,9 @@ std::string toml_value(const py::handle& value, const std::string& key) {
   if (PyFloat_Check(value.ptr()) ||
       py::isinstance(value, py::module_::import("numbers").attr("Real")))
     return std::string(py::repr(py::float_(py::reinterpret_borrow<py::object>(value))));
-  if (py::isinstance<py::str>(value)) return toml_string(value.cast<std::string>());
+  // A JSON string (common/json_string.hpp: quote, backslash and control characters escaped
+  // as \uXXXX) is a TOML basic string too.
+  if (py::isinstance<py::str>(value)) return json_string(value.cast<std::string>());
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     std::string out = "[";
     bool first = true;

@@ -11,7 +11,7 @@ std::string json_string(const std::string& text) {
     if (c == '"' || c == '\\') {
       out += '\\';
       out += c;
-    } else if (u < 0x20) {
+    } else if (u < 0x20 || u == 0x7f) {  // DEL too, so that the string is TOML's as well
       char buffer[8];
       std::snprintf(buffer, sizeof buffer, "\\u%04x", u);
       out += buffer;

@@ -98,12 +98,14 @@ TEST(JsonString, EveryControlCharacterIsEscapedAndReadsBack) {
   }
 }
 
-// The other two that must be escaped, and what need not be: the space, DEL (U+007F, not a
-// control character to RFC 8259) and UTF-8's bytes are kept as they are.
+// The other two that must be escaped, and what need not be: the space and UTF-8's bytes are
+// kept as they are. DEL (U+007F), which RFC 8259 lets through but TOML's basic strings do not,
+// is escaped, so that the literal is a TOML string too, and reads back.
 TEST(JsonString, QuoteAndBackslashAreEscapedTheRestKept) {
   EXPECT_EQ(json_string("a\"b\\c"), "\"a\\\"b\\\\c\"");
   EXPECT_EQ(read_json_string(json_string("a\"b\\c")), std::optional<std::string>("a\"b\\c"));
-  EXPECT_EQ(json_string(" \x7f/\xc3\xa9"), "\" \x7f/\xc3\xa9\"");
+  EXPECT_EQ(json_string(" \x7f/\xc3\xa9"), "\" \\u007f/\xc3\xa9\"");
+  EXPECT_EQ(read_json_string(json_string("a\x7f")), std::optional<std::string>("a\x7f"));
   EXPECT_EQ(json_string(""), "\"\"");
 }
 

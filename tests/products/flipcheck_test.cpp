@@ -210,6 +210,9 @@ TEST(Flipcheck, TheLeagueGivesEachFileToItsScenarioARowPerMotion) {
     EXPECT_EQ(make_flipcheck_league(job).outcome, cache::Outcome::made);
   }
 
+  // A file that is there (what a path is comes first: a missing one is "no such file").
+  fs::copy_file(job.motions[0], dir / "exact" / "mujoco-test-box-exact.csv",
+                fs::copy_options::overwrite_existing);
   job.motions.push_back(dir / "exact" / "mujoco-test-box-exact.csv");
   job.out_dir = dir / "refused";
   try {
