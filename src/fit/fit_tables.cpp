@@ -12,18 +12,20 @@ std::string fixed(double value, int digits) {
 }
 
 CsvTable fit_toss_csv(const FitResult& fit) {
-  CsvTable table{
-      {"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z", "half_period_measured",
-       "half_period_fitted", "half_period_predicted", "residual_rms", "L_decay", "drag_rate",
-       "drag_rate_sigma", "saturated", "stable", "poor_fit", "flag"},
-      {}};
+  CsvTable table{{"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z",
+                  "half_period_measured", "half_period_fitted", "half_period_predicted",
+                  "predicted_from_tosses", "predicted_from_seconds", "residual_rms", "L_decay",
+                  "drag_rate", "drag_rate_sigma", "saturated", "stable", "poor_fit", "flag"},
+                 {}};
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
     table.rows.push_back(
         {std::to_string(k + 1), shortest_cell(t.flight.t_start), shortest_cell(t.flight.t_end),
          shortest_cell(t.omega0[0]), shortest_cell(t.omega0[1]), shortest_cell(t.omega0[2]),
          shortest_cell(t.half_period_measured), shortest_cell(t.half_period_fitted),
-         shortest_cell(t.half_period_predicted), shortest_cell(t.residual_rms),
+         shortest_cell(t.half_period_predicted),
+         t.predicted_from_tosses ? std::to_string(*t.predicted_from_tosses) : std::string(),
+         shortest_cell(t.predicted_from_seconds), shortest_cell(t.residual_rms),
          shortest_cell(t.L_decay), shortest_cell(t.drag_rate), shortest_cell(t.drag_rate_sigma),
          std::to_string(t.saturated), std::string(t.stable ? "yes" : "no"),
          std::string(t.poor_fit ? "yes" : "no"), t.flag});

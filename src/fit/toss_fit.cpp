@@ -43,6 +43,10 @@ struct TossData {
 /// (flagged): a fit needs something to fit.
 constexpr int kMinSamplesLeft = 10;
 
+/// s: a prediction whose held-out body rests on less flight time than this (a bounce, not a
+/// throw) is said to be poorly founded.
+constexpr double kShortBasis = 0.6;
+
 /// Residuals ω_fitted(τ_i) − ω_measured(τ_i) + e, three per sample, rad/s, and their derivatives
 /// with respect to the body's axes (aa), its log moment ratios, the toss's ω0 and drag rate
 /// (TossModel) and e, the correction to the gyroscope's bias measured at rest (the bias in
@@ -737,6 +741,26 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
                 Eigen::Vector3d(others.omega0[0][0], others.omega0[0][1], others.omega0[0][2]),
             physics::Drag{law, others.omega0[0][3]}, physics::ExactParts::omega_only);
         toss.half_period_predicted = motion_half_period(predicted, axes, d.tau);
+        // What it rests on: the tosses of the other folds (none with one toss and --moments).
+        int from = 0;
+        double seconds = 0.0;
+        if (data.size() >= 2)
+          for (std::size_t j = 0; j < data.size(); ++j)
+            if (j % folds != fold) {
+              ++from;
+              seconds += search.flights[j].t_end - search.flights[j].t_start;
+            }
+        toss.predicted_from_tosses = from;
+        toss.predicted_from_seconds = seconds;
+        if (from > 0 && seconds < kShortBasis) {
+          char line[220];
+          std::snprintf(line, sizeof line,
+                        "toss %zu's half_period_predicted rests on %d other toss(es), %.2f s of "
+                        "flight in all: a short bounce alone pins the body poorly (fit the "
+                        "recordings of one body together, or give --moments)",
+                        k + 1, from, seconds);
+          body.notes.push_back(line);
+        }
       }
     }
     result.tosses.push_back(toss);

@@ -55,6 +55,11 @@ struct TossFit {
   /// `predict_window` seconds alone; nothing after them is seen. nullopt with no other toss and
   /// no --moments.
   std::optional<double> half_period_predicted;
+  /// What half_period_predicted rests on: the number of other tosses the held-out body was
+  /// fitted on and their flight time (s); 0 and 0 when it is the given --moments'. nullopt
+  /// with no prediction. A body from a short bounce alone predicts poorly (a note says so).
+  std::optional<int> predicted_from_tosses;
+  std::optional<double> predicted_from_seconds;
   double residual_rms = 0.0;  ///< rad/s, RMS of |ω_measured − ω_fitted| over the flight
   /// Fractional loss of the measured |L| (L = I ω with the fitted I) per second (1/s), from a
   /// straight line fitted to |L|(t): 0 for torque-free flight, > 0 under air drag.

@@ -161,6 +161,54 @@ TEST(TossFit, GivenMomentsWithTwoEqualSayThereIsNoIntermediateAxis) {
   EXPECT_FALSE(says(Eigen::Vector3d(274.0, 49.64, 225.64)));
 }
 
+// Each prediction says what it rests on: the other folds' tosses (three tosses: the two others)
+// and their flight time, summed here from the flights found; with --moments and one toss, 0 and
+// 0. A prediction resting on a short bounce alone (0.4 s) is said to be poorly founded.
+TEST(TossFit, EachPredictionSaysWhatItRestsOn) {
+  const test::SyntheticRecording three = test::make_recording(
+      test::phone_alone(),
+      {{{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 1.1}, {{0.5, -15.0, -0.3}, 1.3}}, 11);
+  const GyroRecording recording = as_recording(three);
+  const FlightSearch search = find_flights(recording);
+  const FitResult fit = fit_recording(recording, search);
+  ASSERT_EQ(fit.tosses.size(), 3u);
+  double total = 0.0;
+  for (const Flight& f : search.flights) total += f.t_end - f.t_start;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const TossFit& toss = fit.tosses[k];
+    ASSERT_TRUE(toss.predicted_from_tosses.has_value());
+    EXPECT_EQ(*toss.predicted_from_tosses, 2);
+    const double own = search.flights[k].t_end - search.flights[k].t_start;
+    EXPECT_NEAR(*toss.predicted_from_seconds, total - own, 1e-12);
+  }
+  const auto warns = [](const FitResult& f) {
+    return std::any_of(f.body.notes.begin(), f.body.notes.end(), [](const std::string& n) {
+      return n.find("a short bounce alone") != std::string::npos;
+    });
+  };
+  EXPECT_FALSE(warns(fit));
+  // A throw and its 0.4 s bounce: the throw's prediction rests on the bounce alone.
+  const test::SyntheticRecording bounce = test::make_recording(
+      test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.2}, {{-0.4, 13.0, 0.6}, 0.4}}, 12);
+  const GyroRecording with_bounce = as_recording(bounce);
+  std::vector<std::pair<double, double>> ranges;
+  for (const test::TrueToss& t : bounce.tosses) ranges.emplace_back(t.t_start, t.t_end);
+  const FitResult short_fit = fit_recording(with_bounce, hand_flights(with_bounce, ranges));
+  ASSERT_EQ(short_fit.tosses.size(), 2u);
+  EXPECT_EQ(short_fit.tosses[0].predicted_from_tosses, 1);
+  EXPECT_LT(*short_fit.tosses[0].predicted_from_seconds, 0.6);
+  EXPECT_TRUE(warns(short_fit));
+  // One toss with --moments: the given moments, no other toss.
+  FitSettings given;
+  given.moments = Eigen::Vector3d(274.0, 49.64, 225.64);
+  const test::SyntheticRecording one =
+      test::make_recording(test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}}, 23);
+  const FitResult alone = fit_recording(as_recording(one), find_flights(as_recording(one)), given);
+  ASSERT_TRUE(alone.tosses[0].half_period_predicted.has_value());
+  EXPECT_EQ(alone.tosses[0].predicted_from_tosses, 0);
+  EXPECT_EQ(alone.tosses[0].predicted_from_seconds, 0.0);
+}
+
 TEST(TossFit, AStretchHoldingTheThrowIsAPoorFitAndSaysSo) {
   // By hand, a stretch that starts 0.1 s before the release: the throw's ramp and spikes are in
   // it, and no exact motion fits them.

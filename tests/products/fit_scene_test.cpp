@@ -29,6 +29,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The index of column `name` in a CSV file's header (the fit's columns, by name: a column
+/// added elsewhere moves none of these).
+std::size_t column_of(const fs::path& path, const std::string& name) {
+  std::istringstream text(read_text_file(path, "test CSV"));
+  std::string header;
+  std::getline(text, header);
+  std::istringstream cells(header);
+  std::size_t i = 0;
+  for (std::string cell; std::getline(cells, cell, ','); ++i)
+    if (cell == name) return i;
+  ADD_FAILURE() << "no column " << name << " in " << path;
+  return 0;
+}
+
 /// The rows of a CSV file after its header, each split at commas (no quoting in the fit's).
 std::vector<std::vector<std::string>> csv_rows(const fs::path& path) {
   std::istringstream text(read_text_file(path, "test CSV"));
@@ -114,7 +128,7 @@ TEST(FitScene, EachTossIsASceneOfTheFittedMotion) {
     // (bias removed) at the gyroscope's noise (0.01 rad/s); a mirrored frame runs backwards.
     // The fitted drag (the CSV's rate, the default linear law) rides along in the scene.
     EXPECT_EQ(s.model.drag.law, physics::DragLaw::linear);
-    EXPECT_NEAR(s.model.drag.rate, std::stod(row[11]), 1e-12);
+    EXPECT_NEAR(s.model.drag.rate, std::stod(row[column_of(layout.csv, "drag_rate")]), 1e-12);
     const physics::DampedExactRotation exact(s.body.moments, s.initial.omega0_body, s.model.drag,
                                              physics::ExactParts::omega_only);
     double sum = 0;
@@ -130,7 +144,7 @@ TEST(FitScene, EachTossIsASceneOfTheFittedMotion) {
 
     // Its flips: every fitted half period (the CSV's, and the RK4 truth's within 1 %), the
     // first where the measured ω about the intermediate axis (body x) first changes sign.
-    const double half_period = std::stod(row[7]);
+    const double half_period = std::stod(row[column_of(layout.csv, "half_period_fitted")]);
     EXPECT_NEAR(exact.flip_period_at(0.0), half_period, 0.01 * half_period);
     EXPECT_NEAR(exact.flip_period_at(0.0), synthetic.tosses[k].half_period,
                 0.01 * synthetic.tosses[k].half_period);

@@ -36,6 +36,8 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   toss.omega0 = Eigen::Vector3d(0.25, 14, -0.5);
   toss.half_period_fitted = 0.625;
   toss.half_period_predicted = 0.5;
+  toss.predicted_from_tosses = 2;
+  toss.predicted_from_seconds = 2.25;
   toss.residual_rms = 0.01;
   toss.L_decay = 0.125;
   toss.drag_rate = 0.1875;
@@ -50,9 +52,11 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   result.body.ratio_sigma = Eigen::Vector3d(0.001, 0.002, 0.0);
   EXPECT_EQ(csv_text(fit::fit_toss_csv(result), "fit CSV"),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
-            "half_period_fitted,half_period_predicted,residual_rms,L_decay,drag_rate,"
+            "half_period_fitted,half_period_predicted,predicted_from_tosses,predicted_from_seconds,"
+            "residual_rms,L_decay,drag_rate,"
             "drag_rate_sigma,saturated,stable,poor_fit,flag\n"
-            "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,0.01,0.125,0.1875,0.0625,3,no,yes,\"a catch inside "
+            "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,2,2.25,0.01,0.125,0.1875,0.0625,3,no,yes,\"a catch "
+            "inside "
             "the flight? the residual jumps, near t = 1.00 s\"\n");
   EXPECT_EQ(csv_text(fit::fit_body_csv(result), "fit body CSV"),
             "I1_over_I3,I2_over_I3,I3_over_I3,I1_sigma,I2_sigma,axis1_x,axis1_y,axis1_z,axis2_x,"

@@ -14,7 +14,8 @@ const OMEGA_COLOURS = ['#ff6060', '#60d060', '#6090ff'];
 const TOSS_WORDS = {
   t_start: 'start (s)', t_end: 'end (s)', omega0_x: 'ω0 x (rad/s)', omega0_y: 'ω0 y (rad/s)',
   omega0_z: 'ω0 z (rad/s)', half_period_measured: 'T/2 measured (s)', half_period_fitted: 'T/2 fitted (s)',
-  half_period_predicted: 'T/2 predicted (s)', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
+  half_period_predicted: 'T/2 predicted (s)', predicted_from_tosses: 'predicted from (tosses)',
+  predicted_from_seconds: 'predicted from (s of flight)', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
   drag_rate: 'drag rate (1/s)', drag_rate_sigma: 'σ drag rate (1/s)',
   saturated: 'samples at the gyroscope’s range (left out)', stable: 'stable (no flip)',
   poor_fit: 'flagged', flag: 'why',
