@@ -10,15 +10,7 @@
 namespace bookspin::fit {
 namespace {
 
-GyroRecording as_recording(const test::SyntheticRecording& synthetic) {
-  GyroRecording recording;
-  recording.name = "synthetic";
-  recording.source = "synthetic.csv";
-  recording.t = synthetic.t;
-  recording.omega = synthetic.omega;
-  recording.pauses = synthetic.pauses;
-  return recording;
-}
+using test::as_recording;
 
 void expect_flights_found(const test::SyntheticBody& body,
                           const std::vector<test::SyntheticToss>& tosses) {

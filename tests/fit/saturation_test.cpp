@@ -16,16 +16,6 @@
 namespace bookspin::fit {
 namespace {
 
-GyroRecording as_recording(const test::SyntheticRecording& synthetic) {
-  GyroRecording recording;
-  recording.name = "clipped";
-  recording.source = "clipped.csv";
-  recording.t = synthetic.t;
-  recording.omega = synthetic.omega;
-  recording.pauses = synthetic.pauses;
-  return recording;
-}
-
 /// `recording` with every component clipped to ±range, as a gyroscope at its range reads.
 GyroRecording clipped(GyroRecording recording, double range) {
   for (Eigen::Vector3d& w : recording.omega) w = w.cwiseMax(-range).cwiseMin(range);
@@ -37,7 +27,7 @@ const std::vector<test::SyntheticToss> kTosses{
 
 TEST(Saturation, FlatRunsAtTheTopAreTheRangeAndASmoothPeakIsNot) {
   const GyroRecording recording =
-      as_recording(test::make_recording(test::phone_alone(), kTosses, 11));
+      test::as_recording(test::make_recording(test::phone_alone(), kTosses, 11));
   // As measured: the largest |ω_i| is one sample's peak, nothing is flat there.
   const Saturation none = find_saturation(recording);
   EXPECT_FALSE(none.range.has_value());
@@ -70,7 +60,7 @@ TEST(Saturation, FlatRunsAtTheTopAreTheRangeAndASmoothPeakIsNot) {
 // (0.017 rad/s). With the clipped samples fitted as data: 2.8 % and 0.38 rad/s.
 TEST(Saturation, ClippedSamplesAreLeftOutAndTheBodyIsRecovered) {
   const test::SyntheticBody body = test::phone_alone();
-  const GyroRecording recording = as_recording(test::make_recording(body, kTosses, 11));
+  const GyroRecording recording = test::as_recording(test::make_recording(body, kTosses, 11));
   const FlightSearch flights = find_flights(recording);
   std::vector<double> tops;
   for (const Flight& f : flights.flights)
@@ -101,7 +91,7 @@ TEST(Saturation, ClippedSamplesAreLeftOutAndTheBodyIsRecovered) {
 // the finder sees no torque-free stretch in such a recording) is flagged naming saturation.
 TEST(Saturation, AFlightMostlyAtTheRangeIsFlaggedForIt) {
   const test::SyntheticRecording synthetic = test::make_recording(test::phone_alone(), kTosses, 11);
-  const GyroRecording clip = clipped(as_recording(synthetic), 3.0);
+  const GyroRecording clip = clipped(test::as_recording(synthetic), 3.0);
   std::vector<std::pair<double, double>> ranges;
   for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
   const FitResult fit = fit_recording(clip, hand_flights(clip, ranges));

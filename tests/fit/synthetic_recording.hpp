@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "fit/recording.hpp"
+
 namespace bookspin::fit::test {
 
 struct SyntheticBody {
@@ -239,6 +241,19 @@ inline SyntheticBody racquet() {
   body.axes = Eigen::AngleAxisd(10.0 * M_PI / 180.0, Eigen::Vector3d(0, 1, 1).normalized())
                   .toRotationMatrix();
   return body;
+}
+
+/// `synthetic` as the reader would give it (its times, ω and pauses), named `name` with the
+/// source "<name>.csv".
+inline GyroRecording as_recording(const SyntheticRecording& synthetic,
+                                  const std::string& name = "synthetic") {
+  GyroRecording recording;
+  recording.name = name;
+  recording.source = name + ".csv";
+  recording.t = synthetic.t;
+  recording.omega = synthetic.omega;
+  recording.pauses = synthetic.pauses;
+  return recording;
 }
 
 }  // namespace bookspin::fit::test

@@ -16,15 +16,7 @@ namespace {
 using test::SyntheticBody;
 using test::SyntheticToss;
 
-GyroRecording as_recording(const test::SyntheticRecording& synthetic) {
-  GyroRecording recording;
-  recording.name = "synthetic";
-  recording.source = "synthetic.csv";
-  recording.t = synthetic.t;
-  recording.omega = synthetic.omega;
-  recording.pauses = synthetic.pauses;
-  return recording;
-}
+using test::as_recording;
 
 /// Angle (degrees) between two axes, sign ignored.
 double axis_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
