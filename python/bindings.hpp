@@ -26,6 +26,8 @@ void add_exact_motion(py::module_& m);
 void add_simulate(py::module_& m);
 /// The submodule bookspin.flipcheck: scenarios, export, judge.
 void add_flipcheck(py::module_& m);
+/// bookspin.fit and its value bookspin.Fit.
+void add_fit(py::module_& m);
 
 /// A stop poll for a long call with the GIL released: a few times a second it takes the GIL
 /// and asks Python whether a signal came (PyErr_CheckSignals); Ctrl-C then throws Interrupted,

@@ -24,6 +24,31 @@ def simulate(
 ) -> dict[str, Array]:
     """Every column of `bookspin simulate`'s CSV, each (N,), one value per frame."""
 
+Cell = Union[float, str, None]
+
+class Fit:
+    """A recording's fit (bookspin.fit)."""
+    recording: str
+    """The recording's name (its file-safe stem)."""
+    body: dict[str, Cell]
+    """The -fit-body.csv row, keyed by its columns."""
+    tosses: list[dict[str, Cell]]
+    """The -fit.csv rows, one per toss."""
+    summary: list[str]
+    """The lines the command prints before "wrote ..."."""
+    charts: list[dict[str, Array]]
+    """Per toss: t (N,) s; measured, fitted (N, 3) rad/s phone frame; curve_t (M,);
+    curve (M, 3); flips (K,) s."""
+
+def fit(
+    recording: Union[str, os.PathLike[str], tuple[ArrayLike, ArrayLike]],
+    drag: str = "linear",
+    tosses: Optional[Sequence[tuple[float, float]]] = None,
+    moments: Optional[ArrayLike] = None,
+) -> Fit:
+    """A phyphox export, a t,wx,wy,wz CSV, or (t (N,) s, omega (N, 3) rad/s phone frame),
+    fitted as `bookspin fit` fits it."""
+
 class flipcheck:  # a submodule: bookspin.flipcheck
     scenario_dir: str
     """The folder scenarios are looked up in by name (the source tree's scenes/flipcheck/)."""

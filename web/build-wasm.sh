@@ -43,15 +43,15 @@ for name in errors number_text csv_writer json_writer json_string text_lines tex
   pure+=("$root/src/common/$name.cpp")
 done
 # For the "Phone-toss lab" panel: the fit stage whole (the recording's reader, the flights, the
-# fit and its tables) and the toss's scene values (src/products/fit_scene.cpp, which includes
-# nothing but fit, physics, common and the scene's limits): no chart, no file written.
-fit_sources=("$root"/src/fit/*.cpp "$root/src/products/fit_scene.cpp" "$here/fit_bindings.cpp")
+# fit, its tables, each toss's chart data and scene values: its report): no chart drawn, no
+# file written.
+fit_sources=("$root"/src/fit/*.cpp "$here/fit_bindings.cpp")
 for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/judge_bindings.cpp" "${fit_sources[@]}"; do
   obj="$out/obj/$(basename "${src%.cpp}").o"
   objs+=("$obj")
   extra=()
   case " ${fit_sources[*]} " in *" $src "*) extra=("${fit_flags[@]}");; esac
-  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/products/fit_scene.hpp" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" \
+  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" \
        -name '*.hpp' -newer "$obj" -print -quit)" ]; then
     em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
     pids+=($!)

@@ -34,7 +34,7 @@ flock 9
 inputs=$(cd "$root" && find web/build.sh web/build-wasm.sh web/build-wasm-deps.sh web/make_explorer.py web/pack_engines.py \
            web/*.cpp web/*.hpp web/src web/package.json web/package-lock.json src/physics \
            src/common src/analysis src/jobs/motion_csv.* src/jobs/exact_motion.* src/fit \
-           src/products/fit_scene.* src/scene/limits.hpp -type f -print0 |
+           src/scene/limits.hpp -type f -print0 |
          sort -z | xargs -0 sha256sum | sha256sum | cut -d ' ' -f 1)
 if [ -f "$work/explorer-shell.html" ] && [ -f "$work/explorer-engines.js" ] && [ "$(cat "$stamp" 2>/dev/null)" = "$inputs" ]; then
   echo "web: up to date: $work/explorer-shell.html"

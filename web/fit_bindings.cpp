@@ -1,9 +1,9 @@
 // embind bindings of the phone-toss lab's fit for the explorer page's "Phone-toss lab" panel
 // (docs/explorer.md, docs/phone-lab.md): `bookspin fit` with the same code compiled unchanged:
-// the recording's reader (src/fit/recording.cpp, the zip through Debian's minizip), the flight
-// finder, the fit (Ceres, built from Debian's source by web/build-wasm-deps.sh), its tables
-// (src/fit/fit_tables.cpp) and each toss as a scene (src/products/fit_scene.cpp). This file only
-// translates between them and JavaScript.
+// the recording's reader (src/fit/recording.cpp, the zip through Debian's minizip) and the fit's
+// report (src/fit/report.cpp: the flights found, the fit by Ceres, built from Debian's source by
+// web/build-wasm-deps.sh, its tables, each toss's chart data and scene values). This file only
+// translates the report into JavaScript.
 //
 // The recording's bytes are written into the module's in-memory file system, in a folder of
 // their own under the name the page was given, and read from there as the command line reads a
@@ -12,7 +12,6 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -23,7 +22,7 @@
 #include "common/number_text.hpp"
 #include "fit/fit.hpp"
 #include "guarded.hpp"
-#include "products/fit_scene.hpp"
+#include "scene/limits.hpp"
 
 namespace {
 
@@ -31,7 +30,6 @@ using bookspin::InputError;
 using bookspin::web::guarded;
 using emscripten::val;
 namespace fit = bookspin::fit;
-namespace products = bookspin::products;
 
 /// The folder the recordings are written into (the module's MEMFS); each fit empties it.
 constexpr const char* kFolder = "/recording";
@@ -43,20 +41,16 @@ val cell_value(const std::string& cell) {
   return val(cell);
 }
 
-/// The rows of `table` as the command line writes them (the one CSV writer), read back into
-/// objects keyed by the table's columns.
-std::vector<val> keyed_rows(const bookspin::CsvTable& table, const char* what) {
-  const std::string csv = bookspin::csv_text(table, what);
+/// The rows of a table's CSV text as the command line writes it (fit::FitReport), read back
+/// into objects keyed by its header's columns.
+std::vector<val> keyed_rows(const std::string& csv) {
+  const std::vector<std::vector<std::string>> lines = bookspin::csv_lines(csv);
   std::vector<val> rows;
-  std::size_t at = csv.find('\n') + 1;
-  while (at < csv.size()) {
-    const std::size_t end = csv.find('\n', at);
-    const std::vector<std::string> cells = bookspin::csv_cells(csv.substr(at, end - at));
+  for (std::size_t r = 1; r < lines.size(); ++r) {
     val row = val::object();
-    for (std::size_t c = 0; c < table.columns.size() && c < cells.size(); ++c)
-      row.set(table.columns[c], cell_value(cells[c]));
+    for (std::size_t c = 0; c < lines[0].size() && c < lines[r].size(); ++c)
+      row.set(lines[0][c], cell_value(lines[r][c]));
     rows.push_back(row);
-    at = end + 1;
   }
   return rows;
 }
@@ -68,31 +62,30 @@ val array_of(const std::vector<val>& items) {
 }
 
 /// The toss's chart data: t (s, the recording's time), the measured ω (3×N, phone frame, bias
-/// removed, flattened sample by sample) and the fitted ω at the same times.
-val chart_data(const fit::GyroRecording& recording, const fit::FitResult& result, int toss) {
-  std::vector<double> t;
-  std::vector<Eigen::Vector3d> omega;
-  fit::measured_omega(recording, result, toss, t, omega);
+/// removed, flattened sample by sample) and the fitted ω at the same times (fit::TossChart).
+val chart_data(const fit::TossChart& chart) {
   std::vector<double> measured, fitted;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    const Eigen::Vector3d f = fit::fitted_omega(result, toss, t[i]);
+  for (std::size_t i = 0; i < chart.t.size(); ++i)
     for (int c = 0; c < 3; ++c) {
-      measured.push_back(omega[i][c]);
-      fitted.push_back(f[c]);
+      measured.push_back(chart.measured[i][c]);
+      fitted.push_back(chart.fitted[i][c]);
     }
-  }
   val out = val::object();
-  out.set("t", val::array(t));
+  out.set("t", val::array(chart.t));
   out.set("measured", val::array(measured));
   out.set("fitted", val::array(fitted));
   return out;
 }
 
-/// Toss `toss` as the page's scene data, the keys `bookspin explore` writes for the toss's scene
-/// file (scene::page_data) that the fitted motion sets; the rest are the page's
-/// defaults, as a scene file's are the scene's.
-val toss_scene_data(const fit::GyroRecording& recording, const fit::FitResult& result, int toss) {
-  const products::TossScene scene = products::toss_scene(result, toss, recording.name);
+/// The entries of `m` as a JavaScript array, column by column (a 3×N matrix flattened).
+val flattened(const Eigen::Matrix3Xd& m) {
+  return val::array(std::vector<double>(m.data(), m.data() + m.size()));
+}
+
+/// A toss's scene values (fit::TossScene) as the page's scene data, the keys `bookspin explore`
+/// writes for the toss's scene file (scene::page_data) that the fitted motion sets; the rest
+/// are the page's defaults, as a scene file's are the scene's.
+val toss_scene_data(const fit::TossScene& scene) {
   val state = val::object();
   state.set("body", std::string("book"));
   state.set("model", std::string("exact"));
@@ -104,33 +97,18 @@ val toss_scene_data(const fit::GyroRecording& recording, const fit::FitResult& r
   state.set("axis", std::string("custom"));
   state.set("w", val::array(std::vector<double>(scene.omega0.data(), scene.omega0.data() + 3)));
   state.set("jiggle", 0.0);
-  state.set("speed", scene.dt * scene.steps_per_frame * products::kTossSceneFramesPerSecond);
+  state.set("speed", scene.dt * scene.steps_per_frame * fit::kTossSceneFramesPerSecond);
   state.set("showL", true);
-  // The measured ω in the scene's body frame (products::toss_measured_csv) and, where L = I·ω
-  // is not zero, the direction of L (as scene::page_data's measured data).
-  const bookspin::CsvTable table = products::toss_measured_csv(recording, result, toss);
-  const Eigen::Vector3d moments = scene.book.principal_moments();
-  std::vector<double> t, w, ut, u;
-  // Each cell's number is the one its shortest text in the CSV reads back as (round trip).
-  const auto number = [](const bookspin::CsvCell& cell) {
-    return std::get<bookspin::CsvNumber>(cell).value.value();
-  };
-  for (const std::vector<bookspin::CsvCell>& row : table.rows) {
-    const double time = number(row[0]);
-    const Eigen::Vector3d omega(number(row[1]), number(row[2]), number(row[3]));
-    t.push_back(time);
-    w.insert(w.end(), omega.data(), omega.data() + 3);
-    const Eigen::Vector3d L = moments.cwiseProduct(omega);
-    const double norm = L.norm();
-    if (!(norm > 0.0) || !std::isfinite(norm)) continue;
-    ut.push_back(time);
-    for (int c = 0; c < 3; ++c) u.push_back(L[c] / norm);
-  }
+  // The measured ω in the scene's body frame and the direction of L where it is not zero, as
+  // scene::page_data's measured data.
+  std::vector<double> ut;
+  for (const Eigen::Index i : scene.measured_L.samples)
+    ut.push_back(scene.measured_t[static_cast<std::size_t>(i)]);
   val measured = val::object();
-  measured.set("t", val::array(t));
-  measured.set("w", val::array(w));
+  measured.set("t", val::array(scene.measured_t));
+  measured.set("w", flattened(scene.measured_omega));
   measured.set("ut", val::array(ut));
-  measured.set("u", val::array(u));
+  measured.set("u", flattened(scene.measured_L.u));
   val book = val::object();
   book.set("size",
            val::array(std::vector<double>(scene.book.size.data(), scene.book.size.data() + 3)));
@@ -177,23 +155,20 @@ val fit_recording(const std::string& file_name, const std::string& bytes, const 
       file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
       if (!file) throw std::runtime_error("cannot write the recording into memory");
     }
-    const fit::GyroRecording recording = fit::read_recording(path);
-    const fit::FlightSearch search = fit::find_flights(recording);
-    fit::FitSettings settings;
-    settings.drag = law;
-    const fit::FitResult result = fit::fit_recording(recording, search, settings);
+    fit::FitRequest request;
+    request.settings.drag = law;
+    const fit::FitReport report = fit::fit_report(fit::read_recording(path), request);
     std::vector<val> charts, scenes;
-    const bool has_scenes = products::toss_book(result.body).has_value();
-    for (int k = 0; k < static_cast<int>(result.tosses.size()); ++k) {
-      charts.push_back(chart_data(recording, result, k));
-      if (has_scenes) scenes.push_back(toss_scene_data(recording, result, k));
+    for (const fit::TossReport& toss : report.tosses) {
+      charts.push_back(chart_data(toss.chart));
+      if (toss.scene) scenes.push_back(toss_scene_data(*toss.scene));
     }
     val summary = val::array();
-    for (const std::string& line : fit::fit_summary(result)) summary.call<void>("push", line);
+    for (const std::string& line : report.summary) summary.call<void>("push", line);
     val out = val::object();
-    out.set("recording", recording.name);
-    out.set("body", keyed_rows(fit::fit_body_csv(result), "fit body CSV").at(0));
-    out.set("tosses", array_of(keyed_rows(fit::fit_toss_csv(result), "fit CSV")));
+    out.set("recording", report.recording);
+    out.set("body", keyed_rows(report.body_csv).at(0));
+    out.set("tosses", array_of(keyed_rows(report.toss_csv)));
     out.set("summary", summary);
     out.set("charts", array_of(charts));
     out.set("scenes", array_of(scenes));

@@ -53,13 +53,13 @@ std::vector<std::string> split(const std::string& text, char separator) {
 /// toss); prints what was kept, dropped and found.
 int fit_command(const FitOptions& options) {
   products::FitJob job;
-  job.recording = options.recording;
   job.out_dir = options.out_dir;
   if (!options.tosses.empty())
     for (const std::string& range : split(options.tosses, ',')) {
       const std::vector<std::string> ends = split(range, ':');
       if (ends.size() != 2) throw InputError("--tosses: \"" + range + "\" is not START:END");
-      job.tosses.emplace_back(parse_number(ends[0], "--tosses"), parse_number(ends[1], "--tosses"));
+      job.request.tosses.emplace_back(parse_number(ends[0], "--tosses"),
+                                      parse_number(ends[1], "--tosses"));
     }
   if (!options.moments.empty()) {
     const std::vector<std::string> parts = split(options.moments, ',');
@@ -69,17 +69,19 @@ int fit_command(const FitOptions& options) {
       m[i] = parse_number(parts[i], "--moments");
       if (m[i] <= 0) throw InputError("--moments: \"" + parts[i] + "\" is not positive");
     }
-    job.moments = m;
+    job.request.settings.moments = m;
   }
-  if (!physics::parse_drag_law(options.drag, job.drag))
+  if (!physics::parse_drag_law(options.drag, job.request.settings.drag))
     throw InputError("--drag: \"" + options.drag + "\" is not none, linear or quadratic");
   if (!options.render && !options.scene_file.empty())
     throw InputError("--scene: only with --render (it gives the clips' body and render keys)");
+  // Read after the options are checked, as every input: a bad option is named first.
+  job.recording = fit::read_recording(options.recording);
   if (options.render) {
     products::FitRender render;
     if (!options.scene_file.empty()) render.scene_file = options.scene_file;
     render.slow_motion = options.slow_motion;
-    job.render = render;
+    job.clips = products::fit_clips(render);
   }
   job.freshness = {options.force, options.verify, remake_note};
   job.stop_signal = stop_poll();

@@ -1,5 +1,6 @@
 #include "common/csv_writer.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "common/errors.hpp"
@@ -46,6 +47,16 @@ std::vector<std::string> csv_cells(const std::string& line) {
     }
   }
   return cells;
+}
+
+std::vector<std::vector<std::string>> csv_lines(const std::string& text) {
+  std::vector<std::vector<std::string>> lines;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    lines.push_back(csv_cells(text.substr(at, end - at)));
+    at = end + 1;
+  }
+  return lines;
 }
 
 std::string csv_text(const CsvTable& table, std::string_view what) {

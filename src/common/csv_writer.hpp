@@ -50,6 +50,12 @@ std::string csv_row(const std::vector<std::string>& cells);
 /// std::invalid_argument for a quote that is not closed, or text after a closing quote.
 std::vector<std::string> csv_cells(const std::string& line);
 
+/// The lines of a CSV text that csv_text() wrote (one line a row: no cell holds a line break),
+/// each as its cells (csv_cells), the header first: how the doors that present a table the
+/// command line writes (the explorer's lab, the Python module) read it back. Throws
+/// std::invalid_argument as csv_cells.
+std::vector<std::vector<std::string>> csv_lines(const std::string& text);
+
 /// The header line, then one line per row, each ending in '\n'. Throws InternalError
 /// "non-finite WHAT column NAME in an output: nan" for a NaN or infinite number, and for a row
 /// whose cells do not match the columns.

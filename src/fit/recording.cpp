@@ -219,6 +219,30 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   return recording;
 }
 
+GyroRecording samples_recording(const std::string& name, std::vector<double> t,
+                                std::vector<Eigen::Vector3d> omega) {
+  const std::string where = name + ": ";
+  if (t.size() != omega.size())
+    throw InputError(where + std::to_string(t.size()) + " times and " +
+                     std::to_string(omega.size()) + " samples of omega");
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const std::string index = "[" + std::to_string(i) + "]";
+    if (!std::isfinite(t[i])) throw InputError(where + "t" + index + ": not a finite number");
+    if (!omega[i].allFinite()) throw InputError(where + "omega" + index + ": not a finite number");
+    if (i > 0 && !(t[i] > t[i - 1]))
+      throw InputError(where + "t" + index + ": time does not increase");
+  }
+  if (static_cast<int>(t.size()) < kMinSamples)
+    throw InputError(where + "a gyroscope recording of " + std::to_string(t.size()) +
+                     " samples; at least " + std::to_string(kMinSamples) + " are needed");
+  GyroRecording recording;
+  recording.name = file_safe(name);
+  recording.source = name;
+  recording.t = std::move(t);
+  recording.omega = std::move(omega);
+  return recording;
+}
+
 std::vector<double> parse_time_csv(std::string_view text, const std::string& file) {
   text = without_bom(text);
   if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);

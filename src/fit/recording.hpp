@@ -33,6 +33,14 @@ GyroRecording read_recording(const std::filesystem::path& path);
 GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
                              const std::string& name);
 
+/// A recording given as numbers rather than read (the Python module's (t, omega) arrays): t (N,
+/// s, strictly increasing) and ω (N, rad/s, phone frame, bias included), no pauses, named
+/// `name` (made file-safe) and `name` in messages. Throws InputError "NAME: t[I]: …" for a time
+/// or ω that is not finite or a time that does not increase, and for unequal lengths or fewer
+/// than 10 samples.
+GyroRecording samples_recording(const std::string& name, std::vector<double> t,
+                                std::vector<Eigen::Vector3d> omega);
+
 /// The PAUSE events' experiment times of a phyphox `meta/time.csv` `text`. Throws InputError.
 std::vector<double> parse_time_csv(std::string_view text, const std::string& file);
 

@@ -110,4 +110,20 @@ Eigen::Vector3d momentum_direction_body(const Diagnostics& d) {
   return d.cos_axis_L / n;
 }
 
+MomentumDirections momentum_directions(const Eigen::Vector3d& moments,
+                                       const Eigen::Matrix3Xd& omega) {
+  MomentumDirections out;
+  std::vector<Eigen::Vector3d> u;
+  for (Eigen::Index i = 0; i < omega.cols(); ++i) {
+    const Eigen::Vector3d L = moments.cwiseProduct(omega.col(i));
+    const double norm = L.norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) continue;
+    out.samples.push_back(i);
+    u.push_back(L / norm);
+  }
+  out.u.resize(3, static_cast<Eigen::Index>(u.size()));
+  for (std::size_t k = 0; k < u.size(); ++k) out.u.col(static_cast<Eigen::Index>(k)) = u[k];
+  return out;
+}
+
 }  // namespace bookspin::physics

@@ -49,6 +49,18 @@ std::vector<Polhode> polhode_family(const Eigen::Vector3d& moments, int levels =
 /// orthogonal leaves it slightly off). Zero when L = 0.
 Eigen::Vector3d momentum_direction_body(const Diagnostics& d);
 
+/// The body-frame momentum directions L/|L| of sampled angular velocities: `omega` 3×N (body
+/// frame, rad per time unit), `moments` the principal moments about body x, y, z; L = I·ω. The
+/// samples whose L is zero (or not finite) have no direction and are left out: `samples` lists
+/// the index of each column of `u` (3×M, unit vectors, body frame). docs/physics.md §15. What
+/// the explorer draws of a measured ω (scene::page_data, the fit's toss scenes).
+struct MomentumDirections {
+  std::vector<Eigen::Index> samples;
+  Eigen::Matrix3Xd u;
+};
+MomentumDirections momentum_directions(const Eigen::Vector3d& moments,
+                                       const Eigen::Matrix3Xd& omega);
+
 /// Points of the closed curve `curve`(φ), φ in [0, 2π), from φ = 0 round to the start again
 /// (the last point is curve(0)): 64 equal intervals of φ, each halved while its chord is
 /// longer than `max_step` (depth-limited: 2^20 points per interval at most). Used for the

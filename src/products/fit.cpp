@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <memory>
 
 #include "cache/make_cached.hpp"
 #include "charts/toss_plots.hpp"
@@ -14,38 +15,16 @@
 #include "output/sha256.hpp"
 #include "output/staged_files.hpp"
 #include "products/explorer.hpp"
-#include "products/fit_scene.hpp"
-#include "scene/canonical.hpp"
+#include "scene/limits.hpp"
 
 namespace bookspin::products {
-namespace {
 
-/// Renders every toss's clip (fit_clip.hpp) into a scratch folder of the run, which the clip
-/// loop puts its complete videos in, and stages them into `files` under the layout's names:
-/// they go in place with the tables and charts or not at all. The scratch folder (a hidden
-/// temporary beside the manifest, with the tiles' diagnostics CSVs) is removed either way.
-void render_toss_clips(const FitJob& job, const scene::Scene& base,
-                       const fit::GyroRecording& recording, const fit::FitResult& fit,
-                       const FitLayout& layout, output::StagedFiles& files) {
-  const output::AtomicDirectory scratch(layout.manifest.parent_path() / "render");
-  const std::filesystem::path& folder = scratch.temp_path();
-  const std::vector<std::string>& formats = base.render.formats;
-  for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
-    const int toss = static_cast<int>(k);
-    clip::ClipRequest request;
-    request.scene = toss_clip_scene(base, recording.name, fit, toss, job.render->slow_motion);
-    const std::string name = "toss" + std::to_string(k + 1);
-    request.paths = {folder / (name + ".mp4"), folder / (name + ".webm"), folder / (name + ".gif"),
-                     folder / (name + "-frames"), folder / (name + "-measured.csv")};
-    request.tile_csvs = {folder / (name + "-exact-fit.csv")};
-    request.tile_models = toss_tile_models(recording, fit, toss, request.scene.body);
-    request.write_png = false;
-    request.stop_signal = job.stop_signal;
-    clip::render_clip(request);
-    for (std::size_t f = 0; f < formats.size(); ++f)
-      files.adopt(layout.videos[k * formats.size() + f], folder / (name + "." + formats[f]));
-  }
-}
+// The toss scenes' constants are the scene's own (fit/toss_scene.hpp): a scene file plays at
+// the default frame rate, and its book is no smaller than a scene allows.
+static_assert(fit::kTossSceneFramesPerSecond == *scene::limit("render.fps").fallback);
+static_assert(fit::kMinTossBookSide == scene::limit("book.size").min);
+
+namespace {
 
 /// `path` as one word of a shell's command line: as it is when it holds nothing a shell reads
 /// specially, else in single quotes.
@@ -87,7 +66,7 @@ FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& na
       layout.videos.push_back(out_dir / (toss + "." + format));
     if (!scenes) continue;
     layout.scenes.push_back(out_dir / (toss + ".toml"));
-    layout.measured.push_back(out_dir / (toss + "-measured.csv"));
+    layout.measured.push_back(out_dir / fit::toss_measured_file(name, k - 1));
   }
   return layout;
 }
@@ -100,19 +79,25 @@ std::string explore_line(const std::filesystem::path& out_dir, const std::string
          ", then open " + explorer_page_path(out_dir).string();
 }
 
-cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
-  // The recording is read before the manifest check: its name names the outputs, and its
-  // samples are what the outputs depend on.
-  const fit::GyroRecording recording = fit::read_recording(job.recording);
+namespace {
+
+/// The fit's manifest head: with --render the clips' resolved scene, then the program, the
+/// recording's samples (their exact bits, and the pauses': a changed sample remakes the fit)
+/// and what was asked.
+JsonObject fit_head(const FitJob& job) {
+  // With --render, the clips' resolved scene first (a head that only added members after the
+  // plain fit's would begin with the plain head, which manifest_stale() matches as a prefix).
+  JsonObject members;
+  if (job.clips) members.push_back({"render", {job.clips->head, true}});
+  const fit::GyroRecording& recording = job.recording;
   JsonArray tosses;
-  for (const auto& [a, b] : job.tosses)
+  for (const auto& [a, b] : job.request.tosses)
     tosses.push_back({JsonArray{{JsonNumber{a, NumberStyle::digits17}},
                                 {JsonNumber{b, NumberStyle::digits17}}}});
   JsonArray moments;
-  if (job.moments)
+  if (job.request.settings.moments)
     for (int i = 0; i < 3; ++i)
-      moments.push_back({JsonNumber{(*job.moments)[i], NumberStyle::digits17}});
-  // The samples' exact bits (and the pauses'): a changed sample or pause remakes the fit.
+      moments.push_back({JsonNumber{(*job.request.settings.moments)[i], NumberStyle::digits17}});
   std::string samples;
   const auto append = [&](double value) {
     samples.append(reinterpret_cast<const char*>(&value), sizeof value);
@@ -122,96 +107,132 @@ cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
     for (int c = 0; c < 3; ++c) append(recording.omega[i][c]);
   }
   for (double pause : recording.pauses) append(pause);
-  // The program first, as every scene product's head has it: a rebuilt bookspin fits again.
-  JsonObject members{{"bookspin",
-                      {JsonObject{{"version", {output::program_version()}},
-                                  {"build_id", {"sha256:" + output::program_build_id()}}}}},
-                     {"recording", {output::sha256_text(samples)}},
-                     {"tosses", {std::move(tosses)}},
-                     {"moments", {std::move(moments)}},
-                     {"width", {std::int64_t{job.width}}},
-                     {"height", {std::int64_t{job.height}}},
-                     {"drag", {std::string(physics::to_string(job.drag))}}};
-  // --render: the clips' scene (before anything is made: a bad scene writes nothing), its
-  // resolved keys and the files it reads in the head.
-  const std::optional<scene::Scene> clip_scene =
-      job.render ? std::optional(fit_clip_scene(*job.render)) : std::nullopt;
-  std::vector<std::filesystem::path> input_files;
-  if (clip_scene) {
-    const JsonObject render{{"slow_motion", {JsonNumber{job.render->slow_motion}}},
-                            {"scene", {scene::canonical_scene(*clip_scene), true}}};
-    // First: a head that only added members after the plain fit's would begin with the plain
-    // head, which manifest_stale() matches as a prefix.
-    members.insert(members.begin(), {"render", {render, true}});
-    const scene::RenderOptions& r = clip_scene->render;
-    for (const std::string& file :
-         {r.texture_front, r.texture_back, r.texture_spine, r.texture_pages, clip_scene->body_mesh})
-      if (!file.empty()) input_files.emplace_back(file);
+  // The program next, as every scene product's head has it: a rebuilt bookspin fits again.
+  members.insert(members.end(),
+                 {{"bookspin",
+                   {JsonObject{{"version", {output::program_version()}},
+                               {"build_id", {"sha256:" + output::program_build_id()}}}}},
+                  {"recording", {output::sha256_text(samples)}},
+                  {"tosses", {std::move(tosses)}},
+                  {"moments", {std::move(moments)}},
+                  {"width", {std::int64_t{job.width}}},
+                  {"height", {std::int64_t{job.height}}},
+                  {"drag", {std::string(physics::to_string(job.request.settings.drag))}}});
+  return members;
+}
+
+/// Every file of a made fit, in memory or in a scratch folder, before any is put in place.
+struct FitFiles {
+  FitLayout layout;
+  std::vector<std::string> summary;  ///< the report's lines, what was written, what next
+  /// Each toss's clips, rendered into the scratch folder (fit_clip.hpp), each path under
+  /// `layout.videos`' name; the folder, a hidden temporary beside the manifest, goes with it.
+  std::unique_ptr<output::AtomicDirectory> scratch;
+  std::vector<std::filesystem::path> videos;
+  std::vector<RgbaImage> charts;  ///< one per toss (charts::toss_image)
+  /// The tables, and each toss's measured ω and scene file where the fit has them.
+  std::vector<std::pair<std::filesystem::path, std::string>> texts;
+};
+
+/// Renders each toss's clips into `files.scratch` (clip::render_clip, which puts its complete
+/// videos there), in render.formats' order.
+void render_toss_clips(const FitJob& job, const fit::FitReport& report, FitFiles& files) {
+  const std::filesystem::path& folder = files.scratch->temp_path();
+  for (std::size_t k = 0; k < report.tosses.size(); ++k) {
+    clip::ClipRequest request;
+    request.scene = toss_clip_scene(job.clips->scene, report.recording, report.result,
+                                    static_cast<int>(k), job.clips->slow_motion);
+    request.tile_models =
+        toss_tile_models(report.result, report.tosses[k].chart, request.scene.body);
+    const std::string name = "toss" + std::to_string(k + 1);
+    request.paths = {folder / (name + ".mp4"), folder / (name + ".webm"), folder / (name + ".gif"),
+                     folder / (name + "-frames"), folder / (name + "-measured.csv")};
+    request.tile_csvs = {folder / (name + "-exact-fit.csv")};
+    request.write_png = false;
+    request.stop_signal = job.stop_signal;
+    clip::render_clip(request);
+    for (const std::string& format : request.scene.render.formats)
+      files.videos.push_back(folder / (name + "." + format));
   }
-  const std::filesystem::path manifest = job.out_dir / recording.name / "fit-manifest.json";
+}
+
+/// Every file of `report`'s fit made (fit_layout names them): with --render each toss's clips
+/// first, then each toss's chart, then the texts: the tables, each toss's measured ω and scene.
+FitFiles fit_files(const FitJob& job, const fit::FitReport& report) {
+  FitFiles files;
+  files.layout = fit_layout(
+      job.out_dir, report.recording, static_cast<int>(report.tosses.size()), report.has_scenes,
+      job.clips ? job.clips->scene.render.formats : std::vector<std::string>{});
+  const FitLayout& layout = files.layout;
+  files.summary = report.summary;
+  files.summary.push_back("wrote " + layout.csv.string() + ", " + layout.body_csv.string() +
+                          " and " + std::to_string(layout.pngs.size()) + " chart(s)" +
+                          (layout.videos.empty()
+                               ? std::string()
+                               : ", " + std::to_string(layout.videos.size()) + " video(s)"));
+  files.summary.push_back(report.has_scenes
+                              ? explore_line(job.out_dir, report.recording)
+                              : "no scene of the tosses: the fitted moments break the triangle "
+                                "inequality (I1 + I2 > I3) or make a body too flat for a scene: no "
+                                "rigid body has them");
+  if (job.clips) {
+    files.scratch =
+        std::make_unique<output::AtomicDirectory>(layout.manifest.parent_path() / "render");
+    render_toss_clips(job, report, files);
+  }
+  for (const fit::TossReport& toss : report.tosses) {
+    stop_if_asked(job.stop_signal, "fit charts");
+    files.charts.push_back(charts::toss_image(toss.chart, job.width, job.height));
+  }
+  files.texts = {{layout.csv, report.toss_csv}, {layout.body_csv, report.body_csv}};
+  for (std::size_t k = 0; k < layout.scenes.size(); ++k) {
+    files.texts.emplace_back(layout.measured[k], report.tosses[k].measured_csv);
+    files.texts.emplace_back(layout.scenes[k], report.tosses[k].scene_text);
+  }
+  return files;
+}
+
+}  // namespace
+
+cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary) {
+  const std::string& name = job.recording.name;
+  const std::string explore = explore_line(job.out_dir, name);
+  JsonObject head = fit_head(job);
   const cache::CachedOutputs cached{
-      recording.name + "-fit", manifest,   "fit", members, job.out_dir, nullptr,
-      /*all_or_nothing=*/true, input_files};
+      name + "-fit",
+      job.out_dir / name / "fit-manifest.json",
+      "fit",
+      std::move(head),
+      job.out_dir,
+      nullptr,
+      /*all_or_nothing=*/true,
+      job.clips ? job.clips->inputs : std::vector<std::filesystem::path>{}};
   const cache::Outcome outcome = cache::make_cached(cached, job.freshness, [&] {
-    // The stops: before the flights are sought and fitted, before each chart, and before the
-    // files go in place (docs/outputs.md, "Signals").
-    stop_if_asked(job.stop_signal, "fit flights");
-    const fit::FlightSearch search = job.tosses.empty() ? fit::find_flights(recording)
-                                                        : fit::hand_flights(recording, job.tosses);
-    fit::FitSettings settings;
-    settings.moments = job.moments;
-    settings.drag = job.drag;
-    const fit::FitResult result = fit::fit_recording(recording, search, settings);
-    if (clip_scene && !result.body.moments_determined && !result.body.moments_fixed)
-      throw InputError(recording.source +
+    // The stops: before the flights are sought and fitted, before each toss's values, clip
+    // frame and chart, and before the files go in place (docs/outputs.md, "Signals").
+    const fit::FitReport report = fit::fit_report(job.recording, job.request, job.stop_signal);
+    const fit::BodyEstimate& body = report.result.body;
+    if (job.clips && !body.moments_determined && !body.moments_fixed)
+      throw InputError(report.source +
                        ": --render: every toss is stable (no flip), so the fit cannot tell the "
                        "moments apart and has no motion to show; give --moments");
-    const bool scenes = toss_book(result.body).has_value();
-    const FitLayout layout =
-        fit_layout(job.out_dir, recording.name, static_cast<int>(result.tosses.size()), scenes,
-                   clip_scene ? clip_scene->render.formats : std::vector<std::string>{});
-    std::vector<RgbaImage> charts;
-    for (std::size_t k = 0; k < result.tosses.size(); ++k) {
-      stop_if_asked(job.stop_signal, "fit charts");
-      charts.push_back(
-          charts::toss_image(recording, result, static_cast<int>(k), job.width, job.height));
-    }
-    output::prepare_output_dir(layout.csv.parent_path());
-    output::StagedFiles files;  // the tables and every chart together, or none
-    files.text(layout.csv, csv_text(fit::fit_toss_csv(result), "fit CSV"));
-    files.text(layout.body_csv, csv_text(fit::fit_body_csv(result), "fit body CSV"));
-    for (std::size_t k = 0; k < charts.size(); ++k) files.png(layout.pngs[k], charts[k]);
-    for (std::size_t k = 0; k < layout.scenes.size(); ++k) {
-      const int toss = static_cast<int>(k);
-      files.text(layout.measured[k],
-                 csv_text(toss_measured_csv(recording, result, toss), "fit measured CSV"));
-      files.text(layout.scenes[k], toss_scene_text(result, toss, recording.name,
-                                                   layout.measured[k].filename().string()));
-    }
-    if (clip_scene) render_toss_clips(job, *clip_scene, recording, result, layout, files);
+    const FitFiles files = fit_files(job, report);
+    output::prepare_output_dir(job.out_dir);
+    output::StagedFiles staged;  // every file put in place together, or none
+    for (const auto& [path, text] : files.texts) staged.text(path, text);
+    for (std::size_t k = 0; k < files.charts.size(); ++k)
+      staged.png(files.layout.pngs[k], files.charts[k]);
+    for (std::size_t k = 0; k < files.videos.size(); ++k)
+      staged.adopt(files.layout.videos[k], files.videos[k]);
     stop_if_asked(job.stop_signal, "fit files");
-    files.commit();
-    if (summary) {
-      *summary = fit::fit_summary(result);
-      summary->push_back("wrote " + layout.csv.string() + ", " + layout.body_csv.string() +
-                         " and " + std::to_string(layout.pngs.size()) + " chart(s)" +
-                         (layout.videos.empty()
-                              ? std::string()
-                              : ", " + std::to_string(layout.videos.size()) + " video(s)"));
-      if (scenes) {
-        summary->push_back(explore_line(job.out_dir, recording.name));
-      } else {
-        summary->push_back(
-            "no scene of the tosses: the fitted moments break the triangle inequality "
-            "(I1 + I2 > I3) or make a body too flat for a scene: no rigid body has them");
-      }
-    }
-    return cache::Made{layout.outputs()};
+    staged.commit();
+    if (summary) *summary = files.summary;
+    return cache::Made{files.layout.outputs()};
   });
   // Up to date: the tosses' scenes are there, and how to open them is said again.
   if (outcome == cache::Outcome::up_to_date && summary &&
-      std::filesystem::exists(job.out_dir / (recording.name + "-toss1.toml")))
-    summary->push_back(explore_line(job.out_dir, recording.name));
+      std::filesystem::exists(job.out_dir / (name + "-toss1.toml")))
+    summary->push_back(explore);
   return outcome;
 }
 

@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "cache/freshness.hpp"
@@ -41,33 +40,34 @@ FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& na
 
 /// What `bookspin fit` asks for.
 struct FitJob {
-  std::filesystem::path recording;  ///< a phyphox export (folder, Raw Data.csv, zip) or t,wx,wy,wz
+  /// The recording, read by the command (fit::read_recording: a phyphox export or
+  /// t,wx,wy,wz): its name names the outputs, its samples are what they depend on.
+  fit::GyroRecording recording;
   std::filesystem::path out_dir;
-  std::vector<std::pair<double, double>> tosses;     ///< --tosses by hand (s); empty: found
-  std::optional<Eigen::Vector3d> moments;            ///< --moments: fixed
-  physics::DragLaw drag = physics::DragLaw::linear;  ///< --drag (fit::FitSettings::drag)
-  int width = 1400, height = 700;                    ///< each chart's pixels
-  std::optional<FitRender> render;                   ///< --render: a clip of each toss
-  /// Polled before each clip frame and while its encoders finish (clip::ClipRequest): a signal
-  /// throws Interrupted, nothing put in place.
+  fit::FitRequest request;         ///< --tosses by hand (empty: found), --moments, --drag
+  int width = 1400, height = 700;  ///< each chart's pixels
+  /// --render: a clip of each toss, its scene made by the command (fit_clip_scene: a bad scene
+  /// file or --slow-motion is refused before anything is made).
+  std::optional<FitClips> clips;
+  /// Polled before the fit, each toss's values and each clip frame, and while the clips'
+  /// encoders finish (clip::ClipRequest): a signal throws Interrupted, nothing put in place.
   StopPoll stop_signal;
   cache::Freshness freshness;
 };
 
-/// (recording, tosses, moments[, render]) => OUT/<recording>-fit.csv + -fit-body.csv +
+/// (recording, tosses, moments[, clips]) => OUT/<recording>-fit.csv + -fit-body.csv +
 /// -toss<N>.png + -toss<N>.toml + -toss<N>-measured.csv [+ -toss<N>.mp4] + manifest.
-/// Reads the recording (fit::read_recording), finds its flights (or takes the given ones),
-/// fits them (fit::fit_recording), draws each toss (charts::toss_image), makes each toss's
-/// scene and measured ω (fit_scene.hpp; none, and a line in the summary saying why, where the
-/// fitted moments make no body) and writes the files, unless the manifest says they are up to
-/// date; with `render`, also renders each toss's clip (products/fit_clip.hpp) into a scratch
-/// folder of the run and puts it in place with the rest, all or nothing. `summary`, when
-/// given, receives fit::fit_summary's lines of a made fit.
-/// Throws InputError (the recording, a toss, no flight; with `render` a bad scene file or
-/// --slow-motion, and a fit whose every toss is stable without --moments: no moments to
-/// show), OutputError, Interrupted (a signal while the clips are made), and what
-/// clip::render_clip throws (render::RenderError, video::EncoderError): then nothing is put in
-/// place and the earlier outputs and manifest stay.
+/// Unless the manifest says they are up to date: makes the fit's report (fit::fit_report: the
+/// flights found or given, the fit, each toss's chart data and scene values), draws each toss
+/// (charts::toss_image), writes its scene and measured ω (fit_scene.hpp; none, and a line in
+/// the summary saying why, where the fitted moments make no body) and the tables; with
+/// `clips`, also renders each toss's clip (products/fit_clip.hpp) into a scratch folder of the
+/// run; all of it put in place together or not at all. `summary`, when given, receives the
+/// report's summary lines of a made fit and what was written.
+/// Throws InputError (a toss, no flight; with `clips` a fit whose every toss is stable without
+/// --moments: no moments to show), OutputError,
+/// Interrupted (a signal), and what clip::render_clip throws (render::RenderError,
+/// video::EncoderError): then nothing is put in place and the earlier outputs and manifest stay.
 cache::Outcome make_fit(const FitJob& job, std::vector<std::string>* summary = nullptr);
 
 }  // namespace bookspin::products

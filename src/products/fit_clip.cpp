@@ -7,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "physics/replay_model.hpp"
+#include "scene/canonical.hpp"
 
 namespace bookspin::products {
 
@@ -49,6 +50,17 @@ scene::Scene fit_clip_scene(const FitRender& render) {
   return scene;
 }
 
+FitClips fit_clips(const FitRender& render) {
+  FitClips clips{fit_clip_scene(render), render.slow_motion, {}, {}};
+  clips.head = {{"slow_motion", {JsonNumber{render.slow_motion}}},
+                {"scene", {scene::canonical_scene(clips.scene), true}}};
+  const scene::RenderOptions& r = clips.scene.render;
+  for (const std::string& file :
+       {r.texture_front, r.texture_back, r.texture_spine, r.texture_pages, clips.scene.body_mesh})
+    if (!file.empty()) clips.inputs.emplace_back(file);
+  return clips;
+}
+
 scene::Scene toss_clip_scene(const scene::Scene& base, const std::string& recording,
                              const fit::FitResult& fit, int toss, double slow_motion) {
   const fit::Flight& flight = fit.tosses.at(static_cast<std::size_t>(toss)).flight;
@@ -69,20 +81,18 @@ scene::Scene toss_clip_scene(const scene::Scene& base, const std::string& record
   return scene;
 }
 
-std::vector<clip::TileModel> toss_tile_models(const fit::GyroRecording& recording,
-                                              const fit::FitResult& fit, int toss,
+std::vector<clip::TileModel> toss_tile_models(const fit::FitResult& fit,
+                                              const fit::TossChart& chart,
                                               const physics::Body& body) {
-  const fit::TossFit& fitted = fit.tosses.at(static_cast<std::size_t>(toss));
+  const fit::TossFit& fitted = fit.tosses.at(static_cast<std::size_t>(chart.toss));
   const fit::BodyEstimate& estimate = fit.body;
   const Eigen::Matrix3d inertia =
       estimate.axes * estimate.ratios.asDiagonal() * estimate.axes.transpose();
   // The drawn body's principal frame → the phone frame: its built axes are the phone's.
   const Eigen::Matrix3d placement = body.principal_axes.transpose();
-  std::vector<double> t;
-  std::vector<Eigen::Vector3d> omega;
-  fit::measured_omega(recording, fit, toss, t, omega);
+  const std::vector<double>& t = chart.t;
   const double rate = (static_cast<double>(t.size()) - 1) / (t.back() - t.front());
-  auto measured = std::make_shared<const physics::OmegaReplay>(t, omega);
+  auto measured = std::make_shared<const physics::OmegaReplay>(t, chart.measured);
   auto exact = std::make_shared<const physics::ExactInFrame>(
       estimate.axes, estimate.ratios, fitted.omega0, physics::Drag{fit.drag, fitted.drag_rate});
   // The panel's ω: about the fitted principal axes 1, 2, 3, told as the drawn body's axes of

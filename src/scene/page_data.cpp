@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "physics/polhode.hpp"
+
 namespace bookspin::scene {
 
 namespace {
@@ -53,15 +55,10 @@ JsonValue numbers(const Matrix& m) {
 /// samples whose L = I·ω (I the scene body's principal moments) is not zero, 3×M flattened}.
 JsonObject measured_data(const Scene& s) {
   const MeasuredOmega& m = s.measured;
-  std::vector<double> ut, u;
-  for (Eigen::Index i = 0; i < m.omega.cols(); ++i) {
-    const Eigen::Vector3d L = s.body.moments.cwiseProduct(m.omega.col(i));
-    const double norm = L.norm();
-    if (!(norm > 0.0) || !std::isfinite(norm)) continue;
-    ut.push_back(m.t[static_cast<std::size_t>(i)]);
-    for (int c = 0; c < 3; ++c) u.push_back(L[c] / norm);
-  }
-  return {{"t", {m.t}}, {"w", numbers(m.omega)}, {"ut", {std::move(ut)}}, {"u", {std::move(u)}}};
+  const physics::MomentumDirections L = physics::momentum_directions(s.body.moments, m.omega);
+  std::vector<double> ut;
+  for (const Eigen::Index i : L.samples) ut.push_back(m.t[static_cast<std::size_t>(i)]);
+  return {{"t", {m.t}}, {"w", numbers(m.omega)}, {"ut", {std::move(ut)}}, {"u", numbers(L.u)}};
 }
 
 }  // namespace

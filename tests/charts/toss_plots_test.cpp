@@ -32,7 +32,7 @@ TEST(TossPlots, ComponentsInThePaletteAndTheFlipsMarked) {
   recording.t = synthetic.t;
   recording.omega = synthetic.omega;
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
-  const RgbaImage image = toss_image(recording, fit, 0, 1000, 500);
+  const RgbaImage image = toss_image(fit::toss_chart(recording, fit, 0), 1000, 500);
   ASSERT_EQ(image.width, 1000);
   ASSERT_EQ(image.height, 500);
   for (int c = 0; c < 3; ++c) {
@@ -86,7 +86,7 @@ TEST(TossPlots, AStableTossHasNoFlipsMarked) {
         (axis2.dot(fit::fitted_omega(fit, 2, t + 0.001)) > 0))
       ++sign_changes;
   ASSERT_GE(sign_changes, 2);  // what the chart would have marked
-  const RgbaImage image = toss_image(recording, fit, 2, 1000, 500);
+  const RgbaImage image = toss_image(fit::toss_chart(recording, fit, 2), 1000, 500);
   const std::vector<int> grey = columns_of(image, 128, 128, 128);
   int flip_columns = 0;
   for (int x = 0; x < image.width; ++x) flip_columns += grey[x] > 150 && grey[x] < 300;
@@ -105,7 +105,7 @@ TEST(TossPlots, TheSphereShowsTheMeasuredLOnTheFittedOrbit) {
   recording.t = synthetic.t;
   recording.omega = synthetic.omega;
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
-  const overlay::SphereSpec spec = toss_sphere_spec(recording, fit, 0);
+  const overlay::SphereSpec spec = toss_sphere_spec(fit::toss_chart(recording, fit, 0));
   // The truth: L/|L| of Euler's equations by RK4 (the generator's), principal frame (the
   // book's axes have their largest phone component positive: the fit's sign convention).
   const fit::Flight& flight = fit.tosses[0].flight;
@@ -136,7 +136,7 @@ TEST(TossPlots, TheSphereShowsTheMeasuredLOnTheFittedOrbit) {
     EXPECT_LT(nearest, 0.02) << "sample " << i;
   }
   // Drawn: both colours in the sphere's square, right of the plot (1000 − 400 px).
-  const RgbaImage image = toss_image(recording, fit, 0, 1000, 500);
+  const RgbaImage image = toss_image(fit::toss_chart(recording, fit, 0), 1000, 500);
   const auto count_right = [&](const Rgb& c) {
     const std::vector<int> cols =
         columns_of(image, int(255 * c.r + 0.5), int(255 * c.g + 0.5), int(255 * c.b + 0.5));

@@ -45,14 +45,14 @@ fs::path write_inputs(const fs::path& dir, const fit::test::SyntheticRecording& 
 
 FitJob render_job(const fs::path& dir) {
   FitJob job;
-  job.recording = dir / "toss";
+  job.recording = fit::read_recording(dir / "toss");
   job.out_dir = dir / "out";
   job.width = 320;
   job.height = 160;
   FitRender render;
   render.scene_file = dir / "small.toml";
   render.slow_motion = 2.0;
-  job.render = render;
+  job.clips = fit_clips(render);
   return job;
 }
 
@@ -148,7 +148,8 @@ void expect_tiles_turn_alike(const fit::test::SyntheticRecording& rec, const std
   ASSERT_EQ(fit.tosses.size(), 2u);
   const physics::Body body = physics::preset_body(physics::BodyShape::phone);
   for (int toss = 0; toss < 2; ++toss) {
-    std::vector<clip::TileModel> models = toss_tile_models(recording, fit, toss, body);
+    std::vector<clip::TileModel> models =
+        toss_tile_models(fit, fit::toss_chart(recording, fit, toss), body);
     ASSERT_EQ(models.size(), 2u);
     auto measured = models[0].make();
     auto exact = models[1].make();
@@ -202,7 +203,7 @@ TEST(FitClip, RendersEachTossBesideTheFitAndIsUpToDate) {
   write_inputs(dir, rec);
   // The fit alone first: its manifest head is the fit's without --render.
   FitJob plain = render_job(dir);
-  plain.render.reset();
+  plain.clips.reset();
   ASSERT_EQ(make_fit(plain), cache::Outcome::made);
   const fs::path manifest = dir / "out" / "toss" / "fit-manifest.json";
   const std::string plain_manifest = read_text_file(manifest, "manifest");
@@ -281,11 +282,12 @@ TEST(FitClip, BadInputWritesNothingAndAFailedWriteKeepsTheEarlierFit) {
   const fs::path dir = bookspin::test::fresh_dir("products/fit_clip_bad");
   write_inputs(dir, two_tosses());
   FitJob job = render_job(dir);
-  // A scene file that is not a scene: one line naming it, nothing written.
+  // A scene file that is not a scene: one line naming it, refused before the fit is asked.
   std::ofstream(dir / "bad.toml") << "body.shape = \"brick\"\n";
-  job.render->scene_file = dir / "bad.toml";
+  FitRender bad;
+  bad.scene_file = dir / "bad.toml";
   try {
-    make_fit(job);
+    fit_clip_scene(bad);
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad.toml"), std::string::npos) << e.what();
@@ -311,9 +313,8 @@ TEST(FitClip, BadInputWritesNothingAndAFailedWriteKeepsTheEarlierFit) {
 
   // A fit, then a render whose second video cannot be put in place (a folder holds its name):
   // OutputError, and the earlier fit's files and manifest stay byte for byte.
-  job.render->scene_file = dir / "small.toml";
   FitJob plain = job;
-  plain.render.reset();
+  plain.clips.reset();
   plain.width = 300;  // charts unlike the render's: a chart put in place alone would show
   ASSERT_EQ(make_fit(plain), cache::Outcome::made);
   fs::create_directories(dir / "out" / "toss-toss2.mp4" / "in-the-way");

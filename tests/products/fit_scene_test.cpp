@@ -7,8 +7,6 @@
 // back to the phone frame, runs through the recorded samples; it flips with the CSV's fitted
 // half period, first where the measured ω about the intermediate axis changes sign; and the
 // measured ω it names is the recording's, bias removed, in that frame.
-#include "products/fit_scene.hpp"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -82,7 +80,7 @@ TEST(FitScene, EachTossIsASceneOfTheFittedMotion) {
       fit::test::phone_on_book(), {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.3}}, 3);
   fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::comma);
   FitJob job;
-  job.recording = dir / "toss";
+  job.recording = fit::read_recording(dir / "toss");
   job.out_dir = dir / "out";
   job.width = 480;
   job.height = 240;
@@ -196,11 +194,11 @@ TEST(FitScene, NoSceneForMomentsNoBodyHas) {
       fit::test::make_recording(fit::test::phone_on_book(), {{{0.5, 12.0, 0.4}, 1.2}}, 3);
   fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::comma);
   FitJob job;
-  job.recording = dir / "toss";
+  job.recording = fit::read_recording(dir / "toss");
   job.out_dir = dir / "out";
   job.width = 480;
   job.height = 240;
-  job.moments = Eigen::Vector3d(1.0, 2.0, 5.0);  // 1 + 2 < 5
+  job.request.settings.moments = Eigen::Vector3d(1.0, 2.0, 5.0);  // 1 + 2 < 5
   std::vector<std::string> summary;
   ASSERT_EQ(make_fit(job, &summary), cache::Outcome::made);
   const FitLayout with = fit_layout(job.out_dir, "toss", 1);
@@ -216,12 +214,12 @@ TEST(FitScene, NoSceneForMomentsNoBodyHas) {
 
 // The scene's name is one the scene reader takes, whatever the recording's file-safe name.
 TEST(FitScene, NamesAreSceneNames) {
-  EXPECT_EQ(toss_scene_name("Gyroscope-rotation-rate-2025-02-14-09-35-02", 2),
+  EXPECT_EQ(fit::toss_scene_name("Gyroscope-rotation-rate-2025-02-14-09-35-02", 2),
             "Gyroscope-rotation-rate-2025-02-14-09-35-02-toss2");
-  EXPECT_EQ(toss_scene_name("a..b", 1), "a__b-toss1");
-  EXPECT_EQ(toss_scene_name("-x", 1), "recording--x-toss1");
+  EXPECT_EQ(fit::toss_scene_name("a..b", 1), "a__b-toss1");
+  EXPECT_EQ(fit::toss_scene_name("-x", 1), "recording--x-toss1");
   for (const std::string name : {"a..b", "-x", "_y", ".z"}) {
-    const std::string text = "[scene]\nname = \"" + toss_scene_name(name, 1) + "\"\n";
+    const std::string text = "[scene]\nname = \"" + fit::toss_scene_name(name, 1) + "\"\n";
     EXPECT_NO_THROW(scene::parse_scene_text(text, "toss.toml")) << name;
   }
 }

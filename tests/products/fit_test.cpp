@@ -71,7 +71,7 @@ TEST(FitProduct, MakesEveryFileThenIsUpToDate) {
       fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 6);
   fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::comma);
   FitJob job;
-  job.recording = dir / "toss";
+  job.recording = fit::read_recording(dir / "toss");
   job.out_dir = dir / "out";
   job.width = 640;
   job.height = 360;
@@ -92,7 +92,7 @@ TEST(FitProduct, MakesEveryFileThenIsUpToDate) {
   EXPECT_EQ(make_fit(job), cache::Outcome::made);
   // Another --moments is another fit.
   job.freshness.force = false;
-  job.moments = Eigen::Vector3d(49.64, 225.64, 274.0);
+  job.request.settings.moments = Eigen::Vector3d(49.64, 225.64, 274.0);
   EXPECT_EQ(make_fit(job), cache::Outcome::made);
 }
 

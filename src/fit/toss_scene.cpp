@@ -1,23 +1,14 @@
-#include "products/fit_scene.hpp"
+#include "fit/toss_scene.hpp"
 
 #include <algorithm>
 #include <cctype>
 
-#include "common/errors.hpp"
 #include "common/json_string.hpp"
 #include "common/number_text.hpp"
-#include "scene/limits.hpp"
+#include "fit/fit_tables.hpp"
 
-namespace bookspin::products {
+namespace bookspin::fit {
 namespace {
-
-using fit::fixed;
-
-/// The scene's substep (s) and substeps a frame: at 30 frames/s a quarter of real time.
-constexpr double kDt = 1.0 / 240.0;
-constexpr int kStepsPerFrame = 2;
-/// The longest scene (s): four half periods near the separatrix may be long.
-constexpr double kMaxDuration = 30.0;
 
 std::string number(double value, const char* what) {
   return finite_text(value, what, NumberStyle::shortest);
@@ -29,18 +20,24 @@ std::string vector3(const Eigen::Vector3d& v, const char* what) {
   return text.append("]");
 }
 
+/// The scene's substep (s) and substeps a frame: at 30 frames/s a quarter of real time.
+constexpr double kDt = 1.0 / 240.0;
+constexpr int kStepsPerFrame = 2;
+/// The longest scene (s): four half periods near the separatrix may be long.
+constexpr double kMaxDuration = 30.0;
+
 }  // namespace
 
-Eigen::Matrix3d toss_scene_frame(const fit::BodyEstimate& body) {
+Eigen::Matrix3d toss_scene_frame(const BodyEstimate& body) {
   Eigen::Matrix3d frame;
   frame << body.axes.col(1), -body.axes.col(0), body.axes.col(2);
   return frame;
 }
 
-std::optional<physics::Book> toss_book(const fit::BodyEstimate& body) {
+std::optional<physics::Book> toss_book(const BodyEstimate& body) {
   const Eigen::Vector3d& r = body.ratios;
   std::optional<physics::Book> book = physics::book_with_moments({r[1], r[0], r[2]}, 1.0);
-  if (book && book->size.minCoeff() < scene::limit("book.size").min) return std::nullopt;
+  if (book && book->size.minCoeff() < kMinTossBookSide) return std::nullopt;
   return book;
 }
 
@@ -51,13 +48,20 @@ std::string toss_scene_name(const std::string& recording, int toss) {
   return name;
 }
 
-TossScene toss_scene(const fit::FitResult& fit, int toss, const std::string& recording) {
-  const fit::TossFit& t = fit.tosses.at(toss);
+std::string toss_measured_file(const std::string& recording, int toss) {
+  return recording + "-toss" + std::to_string(toss + 1) + "-measured.csv";
+}
+
+std::optional<TossScene> toss_scene(const GyroRecording& recording, const FitResult& fit,
+                                    int toss) {
   const std::optional<physics::Book> book = toss_book(fit.body);
-  if (!book) throw InternalError("toss_scene: the fitted moments make no book");
+  if (!book) return std::nullopt;
+  const TossFit& t = fit.tosses.at(static_cast<std::size_t>(toss));
+  const std::string& name = recording.name;
   TossScene scene;
   scene.book = *book;
-  scene.omega0 = toss_scene_frame(fit.body).transpose() * t.omega0;
+  const Eigen::Matrix3d to_body = toss_scene_frame(fit.body).transpose();
+  scene.omega0 = to_body * t.omega0;
   scene.dt = kDt;
   scene.steps_per_frame = kStepsPerFrame;
   const double flight = t.flight.t_end - t.flight.t_start;
@@ -71,10 +75,11 @@ TossScene toss_scene(const fit::FitResult& fit, int toss, const std::string& rec
   const std::string n = std::to_string(toss + 1);
   const Eigen::Vector3d& r = fit.body.ratios;
   const std::string moments = fixed(r[0], 4) + " : " + fixed(r[1], 4) + " : 1";
-  scene.name = toss_scene_name(recording, toss + 1);
-  scene.title = recording + ", toss " + n + ": the fitted exact motion";
+  scene.name = toss_scene_name(name, toss + 1);
+  scene.measured_file = toss_measured_file(name, toss);
+  scene.title = name + ", toss " + n + ": the fitted exact motion";
   scene.description =
-      "Toss " + n + " of the recording " + recording + " (" + fixed(t.flight.t_start, 3) + "–" +
+      "Toss " + n + " of the recording " + name + " (" + fixed(t.flight.t_start, 3) + "–" +
       fixed(t.flight.t_end, 3) + " s), fitted by bookspin fit: a box with the fitted moments " +
       moments + " spinning from the fitted ω0 under the exact motion" +
       (t.drag_rate != 0.0 && fit.drag != physics::DragLaw::none
@@ -84,12 +89,21 @@ TossScene toss_scene(const fit::FitResult& fit, int toss, const std::string& rec
       ", t = 0 the flight's start" +
       (t.stable ? "; a stable toss: it wobbles, it does not flip" : "") +
       (fit.body.moments_determined ? "" : "; the moments are poorly determined") + ".";
+  // The measured ω in the scene's body frame, time from the flight's start.
+  std::vector<double> times;
+  std::vector<Eigen::Vector3d> omega;
+  measured_omega(recording, fit, toss, times, omega);
+  scene.measured_omega.resize(3, static_cast<Eigen::Index>(omega.size()));
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    scene.measured_t.push_back(times[i] - t.flight.t_start);
+    scene.measured_omega.col(static_cast<Eigen::Index>(i)) = to_body * omega[i];
+  }
+  scene.measured_L =
+      physics::momentum_directions(scene.book.principal_moments(), scene.measured_omega);
   return scene;
 }
 
-std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::string& recording,
-                            const std::string& measured_csv) {
-  const TossScene scene = toss_scene(fit, toss, recording);
+std::string toss_scene_text(const TossScene& scene, int toss, const std::string& recording) {
   std::string model = "\n\n[model]\nkind = \"exact\"\n";
   if (scene.drag.law != physics::DragLaw::none)
     model += "drag = " + json_string(std::string(physics::to_string(scene.drag.law))) +
@@ -119,26 +133,18 @@ std::string toss_scene_text(const fit::FitResult& fit, int toss, const std::stri
       number(scene.duration, "toss scene time.duration") +
       "  # s: the flight, or four fitted half periods\n\n"
       "[render]\npanel = true\nsphere = true\nshow_angular_momentum = true\n";
-  if (!measured_csv.empty())
-    text += "\n[measured]\nomega = " + json_string(measured_csv) +
-            "  # the toss's measured ω, body frame: the explorer shows it beside the fit\n";
-  return text;
+  return text + "\n[measured]\nomega = " + json_string(scene.measured_file) +
+         "  # the toss's measured ω, body frame: the explorer shows it beside the fit\n";
 }
 
-CsvTable toss_measured_csv(const fit::GyroRecording& recording, const fit::FitResult& fit,
-                           int toss) {
-  std::vector<double> t;
-  std::vector<Eigen::Vector3d> omega;
-  fit::measured_omega(recording, fit, toss, t, omega);
-  const Eigen::Matrix3d to_body = toss_scene_frame(fit.body).transpose();
-  const double t0 = fit.tosses.at(toss).flight.t_start;
+CsvTable toss_measured_csv(const TossScene& scene) {
   CsvTable table{{"t", "wx", "wy", "wz"}, {}};
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    const Eigen::Vector3d w = to_body * omega[i];
-    table.rows.push_back(
-        {shortest_cell(t[i] - t0), shortest_cell(w[0]), shortest_cell(w[1]), shortest_cell(w[2])});
+  for (std::size_t i = 0; i < scene.measured_t.size(); ++i) {
+    const Eigen::Vector3d w = scene.measured_omega.col(static_cast<Eigen::Index>(i));
+    table.rows.push_back({shortest_cell(scene.measured_t[i]), shortest_cell(w[0]),
+                          shortest_cell(w[1]), shortest_cell(w[2])});
   }
   return table;
 }
 
-}  // namespace bookspin::products
+}  // namespace bookspin::fit

@@ -1,0 +1,188 @@
+// bookspin.fit: a gyroscope recording's tosses fitted as `bookspin fit` fits them
+// (docs/phone-lab.md), presented from the fit stage's report (fit::fit_report): the body CSV's
+// row, the fit CSV's rows and the summary lines, with each toss's chart data as arrays.
+#include "fit/fit.hpp"
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+#include "common/csv_writer.hpp"
+#include "common/errors.hpp"
+#include "common/number_text.hpp"
+#include "physics/drag.hpp"
+
+namespace bookspin::python {
+
+namespace {
+
+const char* kDoc = R"(fit(recording, drag="linear", tosses=None, moments=None) -> bookspin.Fit
+
+Fits a gyroscope recording's free flights with the exact torque-free motion, as
+`bookspin fit RECORDING [--drag D] [--tosses A:B,...] [--moments I1,I2,I3]` does
+(docs/phone-lab.md; the motion docs/physics.md §8, air drag §21), and returns what the command
+writes, without writing a file.
+
+Arguments:
+  recording  a phyphox export (its folder, its "Raw Data.csv" or a zip of it) or a CSV with
+             the header t,wx,wy,wz (a str or os.PathLike); or a pair (t, omega) of arrays,
+             t (N,) in s, strictly increasing, and omega (N, 3) in rad/s, the phone frame
+             (x right of the screen, y up it, z out of it), as measured (bias included)
+  drag       the air drag's law fitted with each toss: "none", "linear" or "quadratic"
+  tosses     the flights by hand, a list of (t_start, t_end) pairs in s (--tosses); None: found
+  moments    (3,) principal moments, any scale and order, each > 0 (--moments): fixed, not
+             fitted
+
+Returns a bookspin.Fit:
+  body     the -fit-body.csv row as a dict keyed by its columns (I1_over_I3, I2_over_I3, ...,
+           axis1_x ... in the phone frame, moments, tosses, drag)
+  tosses   the -fit.csv rows, one dict per toss (toss, t_start, t_end, omega0_x ...,
+           half_period_measured ..., residual_rms, drag_rate, flag ...)
+  summary  the lines the command prints before "wrote ..." (bias, flights, body, notes)
+  charts   per toss a dict of float64 arrays: t (N,) s, the recording's time; measured (N, 3)
+           rad/s, phone frame, bias removed; fitted (N, 3) the fitted omega at t; curve_t (M,)
+           every millisecond of the flight and curve (M, 3) the fitted omega there; flips (K,)
+           s, the fitted motion's flips
+  recording  the recording's name
+A cell the CSV leaves empty is None, a number a float (the very number the CSV's text reads
+back as), and a word a str.
+
+Raises bookspin.Error with the command line's one line for a bad recording, a bad toss, no
+flight found or a bad argument; KeyboardInterrupt on Ctrl-C (checked before the fit and each
+toss). The GIL is released while it fits.)";
+
+/// One fit as Python sees it.
+struct Fit {
+  std::string recording;
+  py::dict body;
+  py::list tosses, summary, charts;
+};
+
+/// A CSV cell's text as the value a reader of the CSV gets: None, a float or a str.
+py::object cell_value(const std::string& cell) {
+  if (cell.empty()) return py::none();
+  if (const std::optional<double> value = read_number(cell)) return py::float_(*value);
+  return py::str(cell);
+}
+
+/// The rows of a table's CSV text as the command line writes it (fit::FitReport), read back
+/// into dicts keyed by its header's columns.
+py::list keyed_rows(const std::string& csv) {
+  const std::vector<std::vector<std::string>> lines = csv_lines(csv);
+  py::list rows;
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    py::dict row;
+    for (std::size_t c = 0; c < lines[0].size() && c < lines[r].size(); ++c)
+      row[py::str(lines[0][c])] = cell_value(lines[r][c]);
+    rows.append(row);
+  }
+  return rows;
+}
+
+py::array_t<double> values_array(const std::vector<double>& values) {
+  py::array_t<double> out = new_array(values.size());
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+py::array_t<double> vectors_array(const std::vector<Eigen::Vector3d>& vectors) {
+  py::array_t<double> out = new_array(vectors.size(), 3);
+  double* data = out.mutable_data();
+  for (std::size_t i = 0; i < vectors.size(); ++i)
+    for (int c = 0; c < 3; ++c) data[3 * i + static_cast<std::size_t>(c)] = vectors[i][c];
+  return out;
+}
+
+py::dict chart_arrays(const fit::TossChart& chart) {
+  py::dict out;
+  out["t"] = values_array(chart.t);
+  out["measured"] = vectors_array(chart.measured);
+  out["fitted"] = vectors_array(chart.fitted);
+  out["curve_t"] = values_array(chart.curve_t);
+  out["curve"] = vectors_array(chart.curve);
+  out["flips"] = values_array(chart.flips);
+  return out;
+}
+
+/// The recording argument: a path read as the command line reads it, or a (t, omega) pair.
+fit::GyroRecording recording_arg(const py::object& recording) {
+  bool is_path = false;
+  const std::string path = path_text(recording, is_path);
+  if (is_path) return fit::read_recording(path);
+  if (!py::isinstance<py::tuple>(recording) && !py::isinstance<py::list>(recording))
+    throw InputError("recording: expected a path or a (t, omega) pair of arrays, got " +
+                     std::string(py::str(py::type::handle_of(recording).attr("__name__"))));
+  const py::sequence pair = recording;
+  if (pair.size() != 2)
+    throw InputError("recording: expected a (t, omega) pair, got " + std::to_string(pair.size()) +
+                     " items");
+  const std::vector<double> t = vector_arg(pair[0], "t", -1);
+  const std::vector<double> w = matrix_arg(pair[1], "omega", static_cast<long>(t.size()), 3);
+  std::vector<Eigen::Vector3d> omega;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    omega.emplace_back(w[3 * i], w[3 * i + 1], w[3 * i + 2]);
+  return fit::samples_recording("recording", t, std::move(omega));
+}
+
+fit::FitRequest request_arg(const std::string& drag, const py::object& tosses,
+                            const py::object& moments) {
+  fit::FitRequest request;
+  if (!physics::parse_drag_law(drag, request.settings.drag))
+    throw InputError("drag: \"" + drag + "\" is not none, linear or quadratic");
+  if (!tosses.is_none())
+    for (const py::handle range : py::iter(tosses)) {
+      const std::vector<double> ends = vector_arg(range, "tosses", 2);
+      request.tosses.emplace_back(ends[0], ends[1]);
+    }
+  if (!moments.is_none()) {
+    const Eigen::Vector3d m = vector3_arg(moments, "moments");
+    for (int i = 0; i < 3; ++i)
+      if (!(m[i] > 0) || !std::isfinite(m[i]))
+        throw InputError("moments[" + std::to_string(i) + "]: not a positive finite number");
+    request.settings.moments = m;
+  }
+  return request;
+}
+
+Fit fit(const py::object& recording_input, const std::string& drag, const py::object& tosses,
+        const py::object& moments) {
+  const fit::FitRequest request = request_arg(drag, tosses, moments);
+  const fit::GyroRecording recording = recording_arg(recording_input);
+  std::optional<fit::FitReport> report;
+  {
+    const StopPoll stop = python_stop();
+    py::gil_scoped_release release;
+    report = fit::fit_report(recording, request, stop);
+  }
+  Fit out;
+  out.recording = report->recording;
+  out.body = keyed_rows(report->body_csv)[0];
+  out.tosses = keyed_rows(report->toss_csv);
+  for (const std::string& line : report->summary) out.summary.append(line);
+  for (const fit::TossReport& toss : report->tosses) out.charts.append(chart_arrays(toss.chart));
+  return out;
+}
+
+}  // namespace
+
+void add_fit(py::module_& m) {
+  py::class_<Fit>(m, "Fit",
+                  "A recording's fit (bookspin.fit): body, tosses, summary, charts, recording.")
+      .def_readonly("recording", &Fit::recording, "the recording's name (its file-safe stem)")
+      .def_readonly("body", &Fit::body, "the -fit-body.csv row: dict keyed by its columns")
+      .def_readonly("tosses", &Fit::tosses, "the -fit.csv rows: one dict per toss")
+      .def_readonly("summary", &Fit::summary, "the lines the command prints, as str")
+      .def_readonly("charts", &Fit::charts,
+                    "per toss: t, measured, fitted, curve_t, curve, flips (float64 arrays)")
+      .def("__repr__", [](const Fit& f) {
+        return "<bookspin.Fit of " + f.recording + ": " + std::to_string(py::len(f.tosses)) +
+               " toss(es)>";
+      });
+  m.def("fit", &fit, py::arg("recording"), py::arg("drag") = "linear",
+        py::arg("tosses") = py::none(), py::arg("moments") = py::none(), kDoc);
+}
+
+}  // namespace bookspin::python

@@ -1,0 +1,175 @@
+"""bookspin.fit against `bookspin fit` on the same recording: every body column and every toss
+row, for the three drag laws, on the sample recording and on a recording made here from the
+exact motion (given as arrays, and written as the t,wx,wy,wz CSV the command reads); the
+summary lines; the chart arrays against the CSV's residual; the command line's error lines."""
+import csv
+import math
+
+import numpy as np
+import pytest
+
+from conftest import SOURCE_DIR, cli_error_line, run_cli
+
+SAMPLE = SOURCE_DIR / "recordings" / "phone-on-book-synthetic"
+
+
+def cell_value(cell):
+    """A CSV cell as the module presents it: None, a float or a str."""
+    if cell == "":
+        return None
+    try:
+        return float(cell)
+    except ValueError:
+        return cell
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    return [{name: cell_value(row[i]) for i, name in enumerate(rows[0])} for row in rows[1:]]
+
+
+def assert_rows_equal(got, expected, what):
+    assert len(got) == len(expected), what
+    for k, (g, e) in enumerate(zip(got, expected)):
+        assert list(g) == list(e), (what, k)  # every column, in the CSV's order
+        for column in e:
+            a, b = g[column], e[column]
+            if isinstance(b, float):
+                assert isinstance(a, float), (what, k, column, a)
+                assert a == pytest.approx(b, rel=1e-9, abs=0.0) or (math.isnan(a) and math.isnan(b)), \
+                    (what, k, column, a, b)
+            else:
+                assert a == b, (what, k, column, a, b)
+
+
+def cli_fit(tmp_path, recording, *options):
+    out = tmp_path / "cli"
+    stdout, _ = run_cli("fit", recording, "-o", out, *options)
+    name = sorted(p.name for p in out.glob("*-fit-body.csv"))[0][: -len("-fit-body.csv")]
+    lines = stdout.splitlines()
+    summary = lines[: next(i for i, l in enumerate(lines) if l.startswith("wrote "))]
+    return (read_rows(out / f"{name}-fit-body.csv"), read_rows(out / f"{name}-fit.csv"),
+            summary)
+
+
+def assert_fit_equals_cli(fitted, cli):
+    body, tosses, summary = cli
+    assert_rows_equal([fitted.body], body, "body")
+    assert_rows_equal(fitted.tosses, tosses, "tosses")
+    assert list(fitted.summary) == summary
+
+
+@pytest.mark.parametrize("drag", ["none", "linear", "quadratic"])
+def test_the_sample_recording_fits_as_the_command_fits_it(bookspin, tmp_path, drag):
+    fitted = bookspin.fit(SAMPLE, drag=drag)
+    assert fitted.recording == SAMPLE.name
+    assert fitted.body["drag"] == drag
+    assert_fit_equals_cli(fitted, cli_fit(tmp_path, SAMPLE, "--drag", drag))
+
+
+def made_recording(bookspin, seed=3):
+    """Two tosses of a phone-like body (moments 1 : 2.6 : 3.4), each near its intermediate axis,
+    made with the exact motion (bookspin.exact_motion, docs/physics.md §8) and sampled at 200 Hz
+    with a bias and noise, between rests of 0.6 s: t (N,) s and omega (N, 3) rad/s."""
+    rng = np.random.default_rng(seed)
+    rate, bias = 200.0, np.array([0.012, -0.008, 0.02])
+    pieces_t, pieces_w, now = [], [], 0.0
+
+    def rest(seconds):
+        nonlocal now
+        t = now + np.arange(int(seconds * rate)) / rate
+        pieces_t.append(t)
+        pieces_w.append(np.zeros((len(t), 3)))
+        now = t[-1] + 1 / rate
+
+    rest(0.6)
+    for omega0 in ([0.4, 14.0, 0.5], [-0.6, 12.5, 0.3]):
+        t = np.arange(int(1.3 * rate)) / rate
+        pieces_t.append(now + t)
+        pieces_w.append(bookspin.exact_motion([1.0, 2.6, 3.4], omega0, t)["omega_body"])
+        now += t[-1] + 1 / rate
+        rest(0.6)
+    t = np.concatenate(pieces_t)
+    omega = np.concatenate(pieces_w) + bias + rng.normal(0.0, 0.01, (len(t), 3))
+    return t, omega
+
+
+def write_recording(path, t, omega):
+    with open(path, "w") as f:
+        f.write("t,wx,wy,wz\n")
+        for i in range(len(t)):
+            f.write(",".join(repr(float(v)) for v in (t[i], *omega[i])) + "\n")
+
+
+@pytest.mark.parametrize("drag", ["none", "linear", "quadratic"])
+def test_arrays_fit_as_the_command_fits_their_csv(bookspin, tmp_path, drag):
+    t, omega = made_recording(bookspin)
+    path = tmp_path / "recording.csv"
+    write_recording(path, t, omega)
+    from_arrays = bookspin.fit((t, omega), drag=drag)
+    assert from_arrays.recording == "recording"
+    assert len(from_arrays.tosses) == 2
+    assert_fit_equals_cli(from_arrays, cli_fit(tmp_path, path, "--drag", drag))
+    # The body made here: I1/I3 = 1/3.4, I2/I3 = 2.6/3.4 within 1 % (an independent number).
+    assert from_arrays.body["I1_over_I3"] == pytest.approx(1 / 3.4, rel=0.01)
+    assert from_arrays.body["I2_over_I3"] == pytest.approx(2.6 / 3.4, rel=0.01)
+
+
+def test_tosses_and_moments_by_hand_as_the_command_takes_them(bookspin, tmp_path):
+    t, omega = made_recording(bookspin)
+    path = tmp_path / "recording.csv"
+    write_recording(path, t, omega)
+    tosses = [(0.65, 1.85), (2.55, 3.75)]
+    fitted = bookspin.fit(path, tosses=tosses, moments=[1.0, 2.6, 3.4])
+    assert fitted.body["moments"] == "given"
+    assert [(row["t_start"], row["t_end"]) for row in fitted.tosses] == \
+        pytest.approx([(t[t >= a][0], t[t <= b][-1]) for a, b in tosses])
+    assert_fit_equals_cli(fitted, cli_fit(tmp_path, path, "--tosses", "0.65:1.85,2.55:3.75",
+                                          "--moments", "1.0,2.6,3.4"))
+
+
+def test_the_charts_hold_what_the_residual_was_computed_from(bookspin):
+    fitted = bookspin.fit(SAMPLE)
+    assert len(fitted.charts) == len(fitted.tosses)
+    for chart, row in zip(fitted.charts, fitted.tosses):
+        n = len(chart["t"])
+        assert chart["measured"].shape == chart["fitted"].shape == (n, 3)
+        assert chart["t"][0] == row["t_start"] and chart["t"][-1] == row["t_end"]
+        rms = math.sqrt(np.mean(np.sum((chart["measured"] - chart["fitted"]) ** 2, axis=1)))
+        assert rms == pytest.approx(row["residual_rms"], rel=1e-3)
+        assert chart["curve"].shape == (len(chart["curve_t"]), 3)
+        assert np.all(np.diff(chart["curve_t"]) == pytest.approx(0.001))
+        # Each flip lies where the fitted omega's component about axis 2 changes sign.
+        axis2 = np.array([fitted.body[f"axis2_{c}"] for c in "xyz"])
+        along = chart["curve"] @ axis2
+        for when in chart["flips"]:
+            i = np.searchsorted(chart["curve_t"], when)
+            assert np.sign(along[i - 1]) != np.sign(along[i])
+
+
+def test_bad_input_raises_the_command_lines_error(bookspin, tmp_path):
+    missing = tmp_path / "missing.csv"
+    _, stderr = run_cli("fit", missing, "-o", tmp_path / "out", expect=2)
+    with pytest.raises(bookspin.Error) as raised:
+        bookspin.fit(missing)
+    assert str(raised.value) == cli_error_line(stderr)
+    bad = SOURCE_DIR / "tests" / "bad_recordings" / "header-not-gyroscope.csv"
+    _, stderr = run_cli("fit", bad, "-o", tmp_path / "out", expect=2)
+    with pytest.raises(bookspin.Error) as raised:
+        bookspin.fit(bad)
+    assert str(raised.value) == cli_error_line(stderr)
+    t = np.arange(20) * 0.01
+    omega = np.zeros((20, 3))
+    t[7] = t[6]
+    with pytest.raises(bookspin.Error, match=r"^recording: t\[7\]: time does not increase$"):
+        bookspin.fit((t, omega))
+    with pytest.raises(bookspin.Error, match=r"^omega: expected shape \(20, 3\), got \(20, 2\)$"):
+        bookspin.fit((t, omega[:, :2]))
+    with pytest.raises(bookspin.Error, match="drag"):
+        bookspin.fit(SAMPLE, drag="cubic")
+    with pytest.raises(bookspin.Error, match=r"moments\[1\]"):
+        bookspin.fit(SAMPLE, moments=[1.0, -2.0, 3.0])
+    with pytest.raises(bookspin.Error, match="no free flight found"):
+        bookspin.fit((np.arange(50) * 0.01, np.zeros((50, 3))))
+    assert bookspin.fit(SAMPLE).tosses  # the interpreter goes on
