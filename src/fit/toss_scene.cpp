@@ -61,7 +61,7 @@ std::optional<TossScene> toss_scene(const GyroRecording& recording, const FitRes
   TossScene scene;
   scene.book = *book;
   const Eigen::Matrix3d to_body = toss_scene_frame(fit.body).transpose();
-  scene.omega0 = to_body * t.omega0;
+  scene.omega0 = toss_scene_frame(fit.body).transpose() * t.omega0;
   scene.dt = kDt;
   scene.steps_per_frame = kStepsPerFrame;
   const double flight = t.flight.t_end - t.flight.t_start;
