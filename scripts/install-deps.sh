@@ -13,7 +13,7 @@ packages=(
   libceres-dev libminizip-dev dpkg-dev
   clang clang-format libclang-rt-14-dev
   chromium chromium-driver python3-selenium
-  pybind11-dev python3-numpy python3-pytest
+  pybind11-dev python3-numpy python3-pytest python3-tqdm
   slurm-wlm munge
   emscripten
 )
