@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ void add_simulate(py::module_& m);
 void add_flipcheck(py::module_& m);
 /// bookspin.fit and its value bookspin.Fit.
 void add_fit(py::module_& m);
+/// bookspin.frames and its iterator, bookspin.Frames.
+void add_frames(py::module_& m);
+/// bookspin.render.
+void add_render(py::module_& m);
 
 /// A stop poll for a long call with the GIL released: a few times a second it takes the GIL
 /// and asks Python whether a signal came (PyErr_CheckSignals); Ctrl-C then throws Interrupted,
@@ -58,6 +63,30 @@ scene::Scene scene_arg(const py::handle& scene, const py::handle& overrides);
 /// Python's `os.fspath(value)` for a str or an os.PathLike, else nullopt-like empty string with
 /// `ok` false.
 std::string path_text(const py::handle& value, bool& ok);
+
+/// A progress bar of `total` steps from tqdm (`tqdm.auto.tqdm`: a widget in a notebook, a bar on
+/// stderr in a terminal), made at the first update; none where `show` is false or tqdm cannot
+/// be imported. Make and destroy it with the GIL held; update() may be called with the GIL
+/// released (it takes it, at most every 100 ms and at the last step). A bar that fails is
+/// dropped: a progress bar never stops the call it shows.
+class ProgressBar {
+ public:
+  ProgressBar(bool show, int total, std::string description, std::string unit);
+  ~ProgressBar();  ///< closes the bar
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+  /// `done` of the total steps are done.
+  void update(int done);
+
+ private:
+  bool show_;
+  int total_;
+  std::string description_;
+  std::string unit_;
+  py::object bar_;  ///< tqdm's, once made
+  int shown_ = 0;   ///< the steps the bar shows
+  std::chrono::steady_clock::time_point last_;
+};
 
 /// Issues `message` as a Python UserWarning (the command line prints it as "bookspin: warning:").
 void warn(const std::string& message);

@@ -1,7 +1,7 @@
 # The stub of the Python module bookspin (docs/python.md), beside the module in BUILD/python/.
-# Arrays are numpy float64; shapes in the comments: N rows.
+# Arrays are numpy float64 (images uint8); shapes in the comments: N rows.
 import os
-from typing import Any, Mapping, Optional, Sequence, Union
+from typing import Any, Iterator, Mapping, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -9,6 +9,9 @@ import numpy.typing as npt
 ArrayLike = npt.ArrayLike
 Array = npt.NDArray[np.float64]
 Scalar = Union[bool, int, float, str]
+Image = npt.NDArray[np.uint8]
+SceneArg = Union[str, os.PathLike[str]]
+Overrides = Optional[Mapping[str, Union[Scalar, Sequence[Scalar]]]]
 
 class Error(ValueError):
     """Bad input: the command line's one line ("FILE:LINE: KEY: reason")."""
@@ -48,6 +51,26 @@ def fit(
 ) -> Fit:
     """A phyphox export, a t,wx,wy,wz CSV, or (t (N,) s, omega (N, 3) rad/s phone frame),
     fitted as `bookspin fit` fits it."""
+
+class Frames(Iterator[tuple[float, Image]]):
+    """The iterator bookspin.frames returns."""
+    def __iter__(self) -> "Frames": ...
+    def __next__(self) -> tuple[float, Image]:
+        """(t in time units, image (H, W, 3) RGB uint8, top row first)."""
+    def close(self) -> None:
+        """Stops the frames early; later next() calls raise StopIteration."""
+
+def frames(scene: SceneArg, overrides: Overrides = None) -> Frames:
+    """The frames `bookspin render` encodes, one at a time: (t, image (H, W, 3) uint8)."""
+
+def render(
+    scene: SceneArg,
+    out: Union[str, os.PathLike[str]],
+    overrides: Overrides = None,
+    png: bool = False,
+    progress: bool = True,
+) -> str:
+    """`bookspin render SCENE -o OUT` (png=False: --no-png); the MP4's path."""
 
 class flipcheck:  # a submodule: bookspin.flipcheck
     scenario_dir: str

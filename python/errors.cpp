@@ -3,6 +3,7 @@
 //   InputError                 bookspin.Error (a ValueError): the command line's one line
 //   OutputError                OSError: `cannot write "PATH": reason`
 //   Interrupted                KeyboardInterrupt (Ctrl-C during a long call)
+//   RenderError, EncoderError  RuntimeError: the command line's line (no usable EGL, an encoder)
 //   anything else              RuntimeError "internal error: …" (a bug)
 // pybind11's own exceptions (a wrong argument type, a Python error raised inside a call) pass
 // through untouched.
@@ -17,7 +18,9 @@
 #include <stdexcept>
 
 #include "bindings.hpp"
+#include "render/render_error.hpp"
 #include "scene/toml_reader.hpp"
+#include "video/video.hpp"
 
 namespace bookspin::python {
 
@@ -48,6 +51,10 @@ void add_errors(py::module_& m) {
       PyErr_SetString(error_type, scene::escape_controls(e.what()).c_str());
     } catch (const OutputError& e) {
       PyErr_SetString(PyExc_OSError, scene::escape_controls(e.what()).c_str());
+    } catch (const render::RenderError& e) {
+      PyErr_SetString(PyExc_RuntimeError, scene::escape_controls(e.what()).c_str());
+    } catch (const video::EncoderError& e) {
+      PyErr_SetString(PyExc_RuntimeError, scene::escape_controls(e.what()).c_str());
     } catch (const std::exception& e) {
       const std::string message = "internal error: " + scene::escape_controls(e.what());
       PyErr_SetString(PyExc_RuntimeError, message.c_str());

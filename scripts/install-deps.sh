@@ -13,8 +13,8 @@ packages=(
   libceres-dev libminizip-dev dpkg-dev
   clang clang-format libclang-rt-14-dev
   chromium chromium-driver python3-selenium
-  pybind11-dev python3-numpy python3-pytest python3-pip python3-venv python3-setuptools python3-wheel
-  jupyter-nbconvert python3-ipykernel python3-matplotlib
+  pybind11-dev python3-numpy python3-pytest python3-tqdm python3-pip python3-venv python3-setuptools
+  python3-wheel jupyter-nbconvert python3-ipykernel python3-matplotlib
   slurm-wlm munge
   emscripten
 )

@@ -1,6 +1,7 @@
 #pragma once
 // A blocking FIFO of bounded capacity, for handing rendered frames to an
 // encoder thread without letting a slow encoder buffer the whole clip.
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -39,12 +40,17 @@ class BoundedQueue {
   std::optional<T> pop() {
     std::unique_lock lock(mutex_);
     not_empty_.wait(lock, [&] { return closed_ || !items_.empty(); });
-    if (items_.empty()) return std::nullopt;
-    std::optional<T> item(std::move(items_.front()));
-    items_.pop_front();
-    lock.unlock();
-    not_full_.notify_one();
-    return item;
+    return take(lock);
+  }
+
+  /// As pop(), waiting at most `timeout`: std::nullopt also when no item came in that time
+  /// (so that the consumer can look at something else between waits); closed() and size()
+  /// tell the two apart.
+  template <typename Rep, typename Period>
+  std::optional<T> pop_for(std::chrono::duration<Rep, Period> timeout) {
+    std::unique_lock lock(mutex_);
+    not_empty_.wait_for(lock, timeout, [&] { return closed_ || !items_.empty(); });
+    return take(lock);
   }
 
   /// Idempotent. Producers call it when done; a consumer calls it to abort.
@@ -68,6 +74,16 @@ class BoundedQueue {
   }
 
  private:
+  /// The front item, if any, with `lock` held; wakes a waiting producer.
+  std::optional<T> take(std::unique_lock<std::mutex>& lock) {
+    if (items_.empty()) return std::nullopt;
+    std::optional<T> item(std::move(items_.front()));
+    items_.pop_front();
+    lock.unlock();
+    not_full_.notify_one();
+    return item;
+  }
+
   const std::size_t capacity_;
   mutable std::mutex mutex_;
   std::condition_variable not_full_;

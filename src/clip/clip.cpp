@@ -41,19 +41,16 @@ struct InFlight {
 };
 
 /// The display side of the loop: takes the tiles' pictures in the order they were
-/// submitted and, once a frame's are all there, composes it and hands it to the sinks.
+/// submitted and, once a frame's are all there, composes it.
 class FrameFinisher {
  public:
-  FrameFinisher(const ClipRequest& request, Composer& composer, Tiles& tiles, ClipSinks& sinks,
-                ClipResult& result)
-      : request_(request), composer_(composer), tiles_(tiles), sinks_(sinks), result_(result) {}
+  FrameFinisher(Composer& composer, Tiles& tiles) : composer_(composer), tiles_(tiles) {}
 
   void expect(InFlight picture) { in_flight_.push_back(std::move(picture)); }
 
   /// Moves the oldest picture's tile on to the pose it shows, with the panel curves as they
-  /// were at its time; after the frame's last tile, composes the frame and queues it and its
-  /// CSV rows.
-  void take(RgbaImage picture) {
+  /// were at its time; after the frame's last tile, the composed frame with its CSV rows.
+  std::optional<ClipFrame> take(RgbaImage picture) {
     InFlight shown = std::move(in_flight_.front());
     in_flight_.pop_front();
     TileShown& tile = tiles_[shown.tile]->shown;
@@ -62,39 +59,21 @@ class FrameFinisher {
     tile.diverged_at = shown.diverged_at;
     tile.diagnostics = shown.diagnostics;
     pictures_.push_back(std::move(picture));
-    if (pictures_.size() < tiles_.size()) return;
-    rows_.clear();
-    for (const auto& run : tiles_) rows_.push_back(run->shown.row());
-    RgbaImage frame = composer_.compose(pictures_, tiles_);
+    if (pictures_.size() < tiles_.size()) return std::nullopt;
+    ClipFrame frame;
+    frame.index = shown.index;
+    frame.t = tiles_.front()->shown.t;
+    for (const auto& run : tiles_) frame.rows.push_back(run->shown.row());
+    frame.image = composer_.compose(pictures_, tiles_);
     pictures_.clear();
-    sinks_.add(shown.index, std::move(frame), rows_);
-    result_.frames = shown.index + 1;
-    if (request_.on_progress) request_.on_progress(result_.frames);
-  }
-
-  /// After the last frame: a single scene's divergence (time and the simulator's reason), or
-  /// every diverged tile of a comparison, into the result.
-  void record_divergence() {
-    if (request_.scene.compare.empty()) {
-      result_.diverged_at = tiles_.front()->frame.diverged_at;
-      result_.divergence_reason = tiles_.front()->source.divergence_reason();
-      return;
-    }
-    for (const auto& tile : tiles_) {
-      if (tile->frame.diverged_at)
-        result_.diverged_tiles.push_back({tile->scene.title, *tile->frame.diverged_at});
-    }
+    return frame;
   }
 
  private:
-  const ClipRequest& request_;
   Composer& composer_;
   Tiles& tiles_;
-  ClipSinks& sinks_;
-  ClipResult& result_;
   std::deque<InFlight> in_flight_;
   std::vector<RgbaImage> pictures_;  ///< the frame's pictures taken so far, in tile order
-  std::vector<physics::Diagnostics> rows_;
 };
 
 /// The tiles of `scene`: itself, or one per [[compare]] entry (scene::tile_scene), each
@@ -121,35 +100,89 @@ std::unique_ptr<Composer> single_composer(const scene::Scene& scene) {
   return std::make_unique<SingleComposer>(scene);
 }
 
+/// The loop's state, in the order it is made: the tiles' scenes outlive the composer, which
+/// the renderer's settings come from.
+struct FrameLoop::State {
+  State(scene::Scene s, const std::vector<TileModel>& models)
+      : scene(std::move(s)),
+        tiles(tiles_of(scene, models)),
+        composer(scene.compare.empty() ? single_composer(scene) : comparison_composer(scene)),
+        renderer(composer->picture_settings(tiles.front()->scene)),
+        finisher(*composer, tiles) {}
+  scene::Scene scene;
+  Tiles tiles;
+  std::unique_ptr<Composer> composer;
+  render::Renderer renderer;
+  FrameFinisher finisher;
+  int index = 0;         ///< the frame whose tiles are being submitted
+  std::size_t tile = 0;  ///< the next tile of it to submit
+};
+
+FrameLoop::FrameLoop(scene::Scene scene, const std::vector<TileModel>& tile_models)
+    : state_(std::make_unique<State>(std::move(scene), tile_models)) {}
+
+FrameLoop::~FrameLoop() = default;
+
+int FrameLoop::frames() const { return state_->scene.frames; }
+
+std::size_t FrameLoop::tiles() const { return state_->tiles.size(); }
+
+std::optional<ClipFrame> FrameLoop::next(const StopPoll& stop, const SpareFrames& spare) {
+  State& s = *state_;
+  while (s.index < s.scene.frames) {
+    if (s.tile == 0) stop_if_asked(stop, "render frames");  // the sinks remove their temporaries
+    TileRun& tile = *s.tiles[s.tile];
+    const bool fresh = advance(tile.source, s.index, tile.scene, tile.frame);
+    s.renderer.submit(tile.drawing.input_for(tile.frame.pose));
+    s.finisher.expect({s.index, s.tile, tile.frame.t, tile.frame.diverged_at,
+                       tile.frame.pose.diagnostics, tile.frame.pose.corners, fresh});
+    if (++s.tile == s.tiles.size()) {
+      s.tile = 0;
+      ++s.index;
+    }
+    // While this picture is drawn and read back, the previous one is composed.
+    if (spare) {
+      if (auto buffer = spare()) s.renderer.recycle(std::move(*buffer));
+    }
+    if (auto picture = s.renderer.collect()) {
+      if (auto frame = s.finisher.take(std::move(*picture))) return frame;
+    }
+  }
+  while (auto picture = s.renderer.flush()) {
+    if (auto frame = s.finisher.take(std::move(*picture))) return frame;
+  }
+  return std::nullopt;
+}
+
+void FrameLoop::record_divergence(ClipResult& result) const {
+  const Tiles& tiles = state_->tiles;
+  if (state_->scene.compare.empty()) {
+    result.diverged_at = tiles.front()->frame.diverged_at;
+    result.divergence_reason = tiles.front()->source.divergence_reason();
+    return;
+  }
+  for (const auto& tile : tiles) {
+    if (tile->frame.diverged_at)
+      result.diverged_tiles.push_back({tile->scene.title, *tile->frame.diverged_at});
+  }
+}
+
 ClipResult render_clip(const ClipRequest& request) {
-  const scene::Scene& scene = request.scene;
   const SinkOptions options = sink_options(request);
-  Tiles tiles = tiles_of(scene, request.tile_models);
-  BOOKSPIN_ASSERT(request.tile_csvs.size() + 1 == tiles.size());
-  const std::unique_ptr<Composer> composer =
-      scene.compare.empty() ? single_composer(scene) : comparison_composer(scene);
-  render::Renderer renderer(composer->picture_settings(tiles.front()->scene));
+  FrameLoop loop(request.scene, request.tile_models);
+  BOOKSPIN_ASSERT(request.tile_csvs.size() + 1 == loop.tiles());
   ClipSinks sinks(request.paths, options, request.tile_csvs);
 
   ClipResult result;
   result.mp4_encoder = sinks.mp4_encoder();
   result.encoder_fallback = sinks.encoder_message();
-  FrameFinisher finisher(request, *composer, tiles, sinks, result);
-  for (int index = 0; index < scene.frames; ++index) {
-    stop_if_asked(request.stop_signal, "render frames");  // the sinks remove their temporaries
-    for (std::size_t i = 0; i < tiles.size(); ++i) {
-      TileRun& tile = *tiles[i];
-      const bool fresh = advance(tile.source, index, tile.scene, tile.frame);
-      renderer.submit(tile.drawing.input_for(tile.frame.pose));
-      finisher.expect({index, i, tile.frame.t, tile.frame.diverged_at, tile.frame.pose.diagnostics,
-                       tile.frame.pose.corners, fresh});
-      // While this picture is drawn and read back, the previous one is composed and queued.
-      if (auto spare = sinks.spare_frame()) renderer.recycle(std::move(*spare));
-      if (auto picture = renderer.collect()) finisher.take(std::move(*picture));
-    }
+  const SpareFrames spare = [&sinks] { return sinks.spare_frame(); };
+  while (auto frame = loop.next(request.stop_signal, spare)) {
+    sinks.add(frame->index, std::move(frame->image), frame->rows);
+    result.frames = frame->index + 1;
+    if (request.on_progress) request.on_progress(result.frames);
   }
-  while (auto picture = renderer.flush()) finisher.take(std::move(*picture));
-  finisher.record_divergence();
+  loop.record_divergence(result);
   output::OutputSet outputs;
   sinks.finish(outputs);
   commit_unless_stopped(request, outputs);

@@ -1,8 +1,10 @@
 #include "output/manifest.hpp"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 #include "common/errors.hpp"
@@ -217,8 +219,29 @@ std::string warnings_note(const std::vector<std::string>& warnings) {
 
 std::string program_version() { return BOOKSPIN_VERSION; }
 
+namespace {
+
+/// The file this code was loaded from: the bookspin program, or the Python module that links
+/// the stages into another program (python3): the mapping of /proc/self/maps that holds this
+/// function's address. /proc/self/exe where none is found.
+fs::path own_binary() {
+  const auto here = reinterpret_cast<std::uintptr_t>(&own_binary);
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line)) {
+    unsigned long start = 0, end = 0;
+    const std::size_t path = line.find('/');
+    if (std::sscanf(line.c_str(), "%lx-%lx", &start, &end) == 2 && start <= here && here < end &&
+        path != std::string::npos)
+      return line.substr(path);
+  }
+  return "/proc/self/exe";
+}
+
+}  // namespace
+
 std::string program_build_id() {
-  static const std::string id = sha256_file("/proc/self/exe").value_or("unknown");
+  static const std::string id = sha256_file(own_binary()).value_or("unknown");
   return id;
 }
 

@@ -70,7 +70,8 @@ std::string warnings_note(const std::vector<std::string>& warnings);
 /// bookspin's version (CMake's project version).
 std::string program_version();
 
-/// SHA-256 of /proc/self/exe (the running bookspin), computed once per process; "unknown" if
+/// SHA-256 of the running bookspin: the program's file, or the Python module's where the
+/// stages run inside python3 (not the interpreter's), computed once per process; "unknown" if
 /// it cannot be read. Every manifest and sweep shard records it.
 std::string program_build_id();
 

@@ -19,9 +19,11 @@ cmake_minimum_required(VERSION 3.20)
 #   5. bench/ and examples/ sit on top beside the command line: they may not include cli/;
 #   6. only src/video links FFmpeg or includes a libav header;
 #   7. only src/fit links Ceres or includes a ceres/ header;
-#   8. python/, the Python module, is a door that presents the values the stages make without
-#      files or pictures: its sources include, and its CMakeLists.txt links, only the stages
-#      of `python_stages` below (never cli/, cache/, products/ nor the drawing stages).
+#   8. python/, the Python module, is a door beside the command line: its sources include,
+#      and its CMakeLists.txt links, only the stages of `python_stages` below: those that make
+#      values without files or pictures, and for pictures the clip stage (its frame loop), the
+#      products (the clip's files) and the error types of render and video; never cli/ nor
+#      cache/, and no drawing of its own (overlay/, charts/).
 # Run by ctest:
 #   cmake -DSOURCE_DIR=<repo> -P tests/architecture/check_includes.cmake
 # ARCHITECTURE_DOC=<file> reads the table from another file (to try the check on a changed
@@ -276,8 +278,8 @@ foreach(file IN LISTS non_video)
   endforeach()
 endforeach()
 
-# --- 8. The Python module: the stages that make values without files or pictures, no other. ---
-set(python_stages common physics engines scene mesh analysis fit jobs)
+# --- 8. The Python module: the stages that make values, the clip's frames and its product. ---
+set(python_stages common physics engines scene mesh analysis fit jobs clip products render video)
 list(JOIN python_stages ", " python_stages_text)
 file(GLOB python_sources "${SOURCE_DIR}/python/*.hpp" "${SOURCE_DIR}/python/*.cpp")
 foreach(file IN LISTS python_sources)

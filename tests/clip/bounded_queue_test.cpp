@@ -54,6 +54,28 @@ TEST(BoundedQueue, CloseWakesABlockedConsumer) {
   consumer.join();
 }
 
+// pop_for gives up after its timeout on an empty queue, takes an item that is there, and tells
+// "none yet" from "closed and drained" by closed().
+TEST(BoundedQueue, PopForReturnsNothingAfterItsTimeoutAndDrainsAfterClose) {
+  BoundedQueue<int> queue(1);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(queue.pop_for(std::chrono::milliseconds(20)), std::nullopt);
+  EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(20));
+  EXPECT_FALSE(queue.closed());
+  std::thread producer([&] {
+    queue.push(7);
+    queue.close();
+  });
+  std::optional<int> item;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!item && std::chrono::steady_clock::now() < deadline)
+    item = queue.pop_for(std::chrono::milliseconds(10));
+  producer.join();
+  EXPECT_EQ(item, 7);
+  EXPECT_EQ(queue.pop_for(std::chrono::milliseconds(10)), std::nullopt);
+  EXPECT_TRUE(queue.closed());
+}
+
 TEST(BoundedQueue, ManyProducersAndConsumersLoseNothing) {
   BoundedQueue<int> queue(4);
   constexpr int kProducers = 3, kPerProducer = 1000;

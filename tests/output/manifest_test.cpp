@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "common/text_file.hpp"
+#include "output/sha256.hpp"
 #include "support/scratch.hpp"
 
 namespace bookspin::output {
@@ -41,6 +42,12 @@ TEST(ManifestReader, NoManifestOrNoWarningsReadsEmpty) {
 }
 
 using test::ScratchDir;
+
+// In a program, the build id is its file's SHA-256 (the Python module's case, another program
+// loading the stages, is tests/python/test_render.py's).
+TEST(Manifest, TheBuildIdIsTheSha256OfTheProgramsFile) {
+  EXPECT_EQ(program_build_id(), sha256_file("/proc/self/exe").value_or("none"));
+}
 
 TEST(Manifest, IsTheHeadTheNoteThenTheOutputsOneALine) {
   ScratchDir dir;

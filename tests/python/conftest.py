@@ -55,3 +55,53 @@ def write_motion_csv(path, t, q, omega_world):
         f.write("t,qw,qx,qy,qz,wx_world,wy_world,wz_world\n")
         for i in range(len(t)):
             f.write(",".join(repr(float(v)) for v in (t[i], *q[i], *omega_world[i])) + "\n")
+
+
+def read_png(path):
+    """An 8-bit RGB or RGBA PNG (as bookspin writes its frames: output/png_writer.hpp) as a
+    uint8 array (H, W, channels), decoded here with zlib: the scanlines' filters undone as the
+    PNG specification says (§9.2: None, Sub, Up, Average, Paeth)."""
+    import struct
+    import zlib
+    data = pathlib.Path(path).read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        chunk = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", chunk)
+        elif kind == b"IDAT":
+            idat += chunk
+        pos += 12 + length
+    width, height, depth, colour, _, _, interlace = header
+    assert depth == 8 and colour in (2, 6) and interlace == 0, (path, header)
+    channels = 3 if colour == 2 else 4
+    stride = width * channels
+    raw = np.frombuffer(zlib.decompress(idat), dtype=np.uint8).reshape(height, stride + 1)
+    out = np.zeros((height, stride), dtype=np.uint8)
+    prior = np.zeros(stride, dtype=np.int32)
+    for y in range(height):
+        kind, line = raw[y, 0], raw[y, 1:].astype(np.int32)
+        if kind == 0:
+            row = line
+        elif kind == 1:
+            row = np.cumsum(line.reshape(width, channels), axis=0).reshape(stride) % 256
+        elif kind == 2:
+            row = (line + prior) % 256
+        else:
+            row = np.zeros(stride, dtype=np.int32)
+            for x in range(stride):
+                a = row[x - channels] if x >= channels else 0
+                b = prior[x]
+                c = prior[x - channels] if x >= channels else 0
+                if kind == 3:
+                    predictor = (a + b) // 2
+                else:
+                    p = a + b - c
+                    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                    predictor = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+                row[x] = (line[x] + predictor) % 256
+        out[y] = row
+        prior = row
+    return out.reshape(height, width, channels)
