@@ -105,3 +105,12 @@ def read_png(path):
         out[y] = row
         prior = row
     return out.reshape(height, width, channels)
+
+
+def assert_same_error(module, call, *cli_args):
+    """`call()` raises bookspin.Error with the one line the command line prints (exit 2) for
+    `cli_args`."""
+    _, stderr = run_cli(*cli_args, expect=2)
+    with pytest.raises(module.Error) as raised:
+        call()
+    assert str(raised.value) == cli_error_line(stderr)

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import SOURCE_DIR, cli_error_line, run_cli
+from conftest import SOURCE_DIR, assert_same_error, run_cli
 
 SAMPLE = SOURCE_DIR / "recordings" / "phone-on-book-synthetic"
 
@@ -149,16 +149,10 @@ def test_the_charts_hold_what_the_residual_was_computed_from(bookspin):
 
 
 def test_bad_input_raises_the_command_lines_error(bookspin, tmp_path):
-    missing = tmp_path / "missing.csv"
-    _, stderr = run_cli("fit", missing, "-o", tmp_path / "out", expect=2)
-    with pytest.raises(bookspin.Error) as raised:
-        bookspin.fit(missing)
-    assert str(raised.value) == cli_error_line(stderr)
-    bad = SOURCE_DIR / "tests" / "bad_recordings" / "header-not-gyroscope.csv"
-    _, stderr = run_cli("fit", bad, "-o", tmp_path / "out", expect=2)
-    with pytest.raises(bookspin.Error) as raised:
-        bookspin.fit(bad)
-    assert str(raised.value) == cli_error_line(stderr)
+    for recording in (tmp_path / "missing.csv",
+                      SOURCE_DIR / "tests" / "bad_recordings" / "header-not-gyroscope.csv"):
+        assert_same_error(bookspin, lambda: bookspin.fit(recording),
+                          "fit", recording, "-o", tmp_path / "out")
     t = np.arange(20) * 0.01
     omega = np.zeros((20, 3))
     t[7] = t[6]
