@@ -1,13 +1,17 @@
 """bookspin.flipcheck against `bookspin flipcheck export` and `judge` on the same input: the
 scenarios, their start and exact motion, and the judgement of the exact motion, of perturbed
-motions and of two integrators written here in numpy (explicit Euler fails, RK4 passes)."""
+motions, of two integrators written here in numpy (explicit Euler fails, RK4 passes), and of
+the JavaScript engines' motions as `make figures` writes them (web/flipcheck-engines.mjs)."""
 import json
 import math
+import os
+import shutil
+import subprocess
 
 import numpy as np
 import pytest
 
-from conftest import SCENARIO_DIR, cli_error_line, numbers, read_csv, run_cli, write_motion_csv
+from conftest import SCENARIO_DIR, SOURCE_DIR, cli_error_line, numbers, read_csv, run_cli, write_motion_csv
 
 SCENARIOS = sorted(p.stem for p in SCENARIO_DIR.glob("*.toml"))
 NUMERIC = ("start_error", "energy_drift", "L_drift", "first_flip", "first_flip_exact",
@@ -188,3 +192,31 @@ def test_bad_motions_raise_the_rows_line(bookspin, tmp_path):
     _, stderr = run_cli("flipcheck", "judge", SCENARIO_DIR / f"{name}.toml", tmp_path / "bad.csv",
                         "-o", tmp_path, expect=2)
     assert cli_error_line(stderr).endswith(f": t: t = {t3} is not a whole number of steps of dt = 0.05")
+
+
+def test_judge_equals_the_command_line_on_the_engines_motions(bookspin, tmp_path):
+    """Every scenario's motion from two of the JavaScript engines (the two `make figures
+    --quick` runs), each CSV judged by the command line as it is and by the module from its
+    columns."""
+    runner = SOURCE_DIR / "web" / "flipcheck-engines.mjs"
+    ready = shutil.which("node") and subprocess.run(
+        ["node", runner, "--check"], cwd=SOURCE_DIR, capture_output=True).returncode == 0
+    if not ready:
+        assert os.environ.get("CI") != "true", "node or the engines' npm packages are missing"
+        pytest.skip("node or the engines' npm packages (scripts/install-deps.sh) are missing")
+    run_cli("flipcheck", "export", *sorted(SCENARIO_DIR.glob("*.toml")), "-o", tmp_path / "ex")
+    subprocess.run(["node", runner, "--only", "cannon-es,babylonjs-havok", tmp_path / "motions",
+                    *sorted((tmp_path / "ex").glob("*.json"))], cwd=SOURCE_DIR, check=True,
+                   capture_output=True)
+    motions = sorted((tmp_path / "motions").glob("*.csv"))
+    assert len(motions) == 2 * len(SCENARIOS)
+    for motion in motions:
+        name = next(n for n in SCENARIOS if motion.name.startswith(n + "-"))
+        run_cli("flipcheck", "judge", SCENARIO_DIR / f"{name}.toml", motion, "-o",
+                tmp_path / "out", "--force")
+        cli = {k: v[0] for k, v in read_csv(tmp_path / "out" / f"{name}-judge.csv").items()}
+        columns = read_csv(motion)
+        t = numbers(columns["t"])
+        q = np.stack([numbers(columns[c]) for c in ("qw", "qx", "qy", "qz")], axis=1)
+        w = np.stack([numbers(columns[c]) for c in ("wx_world", "wy_world", "wz_world")], axis=1)
+        assert_same_judgement(bookspin.flipcheck.judge(name, t, q, w), cli)
