@@ -51,8 +51,8 @@ A cell the CSV leaves empty is None, a number a float (the very number the CSV's
 back as), and a word a str.
 
 Raises bookspin.Error with the command line's one line for a bad recording, a bad toss, no
-flight found or a bad argument; KeyboardInterrupt on Ctrl-C (checked before the fit and each
-toss). The GIL is released while it fits.)";
+flight found or a bad argument; KeyboardInterrupt on Ctrl-C (checked at every iteration of the
+solver). The GIL is released while it fits.)";
 
 /// One fit as Python sees it.
 struct Fit {

@@ -72,7 +72,9 @@ FitReport fit_report(const GyroRecording& recording, const FitRequest& request,
   FitReport report;
   report.recording = recording.name;
   report.source = recording.source;
-  report.result = fit_recording(recording, search, request.settings);
+  FitSettings settings = request.settings;
+  if (!settings.stop) settings.stop = stop;  // polled by the solver too
+  report.result = fit_recording(recording, search, settings);
   const FitResult& result = report.result;
   report.toss_csv = csv_text(fit_toss_csv(result), "fit CSV");
   report.body_csv = csv_text(fit_body_csv(result), "fit body CSV");

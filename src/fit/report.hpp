@@ -76,7 +76,8 @@ struct FitReport {
 TossChart toss_chart(const GyroRecording& recording, const FitResult& fit, int toss);
 
 /// Finds `recording`'s flights (or takes request.tosses), fits them (fit_recording) and makes
-/// every value the doors present. `stop` is polled before the fit and before each toss's values
+/// every value the doors present. `stop` is polled before the fit, at every iteration of its
+/// solves (FitSettings::stop, unless the request has its own) and before each toss's values
 /// (docs/outputs.md, "Signals"). Throws InputError (a toss given by hand, no flight, a fit the
 /// solver cannot make: see hand_flights and fit_recording) and Interrupted.
 FitReport fit_report(const GyroRecording& recording, const FitRequest& request,

@@ -176,6 +176,23 @@ struct SolveOptions {
   /// > 0: every sample within this many seconds of the last one kept is left out (the start's
   /// rough stages at 100 Hz whatever the rate; the final fit sees every sample).
   double spacing = 0.0;
+  const StopPoll* stop = nullptr;  ///< FitSettings::stop, polled every iteration
+};
+
+/// Asks `stop` at every iteration of the solver; a signal aborts the solve, and solve() throws
+/// Interrupted once Ceres has returned (not through its frames).
+class StopCallback : public ceres::IterationCallback {
+ public:
+  explicit StopCallback(const StopPoll* stop) : stop_(stop) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    signal_ = stop_ ? stop_signal(*stop_, "fit") : 0;
+    return signal_ ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+  int signal() const { return signal_; }
+
+ private:
+  const StopPoll* stop_;
+  int signal_ = 0;
 };
 
 struct Solved {
@@ -235,8 +252,11 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
   // 3e-9 relative). The same input gives the same bytes; the fit's time hardly changes (its CPU
   // time was its wall time already, docs/performance.md, "The phone-toss fit").
   solver_options.num_threads = 1;
+  StopCallback stop(options.stop);
+  solver_options.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, problem.get(), &summary);
+  if (stop.signal()) throw Interrupted(stop.signal());
   Solved solved{summary.final_cost, residual_count,
                 summary.IsSolutionUsable() && std::isfinite(summary.final_cost)};
   return solved;
@@ -513,6 +533,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   // rates join once the phases are found (the last stage).
   for (double fraction : {0.3, 0.6, 1.0}) {
     SolveOptions options;
+    options.stop = &settings.stop;
     options.moments_fixed = fixed;
     options.fraction = fraction;
     options.spacing = 0.01;
@@ -523,6 +544,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     normalise(p);
   }
   SolveOptions full;
+  full.stop = &settings.stop;
   full.moments_fixed = fixed;
   full.drag = law;
   const Solved solved = solve(data, p, full);
@@ -598,6 +620,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       for (std::size_t j = 0; j < data.size(); ++j)
         if (j % folds != f) rest.push_back(data[j]), q.omega0.push_back(joint.omega0[j]);
       SolveOptions options;
+      options.stop = &settings.stop;
       options.moments_fixed = fixed;
       options.drag = law;
       options.spacing = 0.01;  // at 100 Hz whatever the rate: five fits of nearly every toss
@@ -727,6 +750,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       others.omega0 = {
           {d.omega[0][0], d.omega[0][1], d.omega[0][2], data.size() >= 2 ? fold_rate[fold] : 0.0}};
       SolveOptions options;
+      options.stop = &settings.stop;
       // One toss with --moments: its axes too from the first predict_window s alone.
       options.body_fixed = data.size() >= 2;
       options.moments_fixed = true;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/stop.hpp"
 #include "fit/flights.hpp"
 #include "fit/recording.hpp"
 #include "physics/drag.hpp"
@@ -85,6 +86,9 @@ struct FitSettings {
   /// The air drag's law fitted with each toss (docs/physics.md §21; docs/phone-lab.md, "Drag":
   /// linear by default, chosen by measurement), its rate one more parameter per toss.
   physics::DragLaw drag = physics::DragLaw::linear;
+  /// Polled at every iteration of every solve (a few milliseconds apart): a signal stops the fit
+  /// with Interrupted (docs/outputs.md, "Signals"). Empty: never stops.
+  StopPoll stop;
 };
 
 struct FitResult {
@@ -102,7 +106,7 @@ struct FitResult {
 
 /// Fits `search`'s flights of `recording`. Throws InputError naming the recording when there
 /// is no flight ("no free flight found", with why each stretch was dropped) or when the
-/// solver cannot fit them.
+/// solver cannot fit them; Interrupted when settings.stop answers a signal.
 FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
                         const FitSettings& settings = {});
 

@@ -1,9 +1,15 @@
 """bookspin.fit against `bookspin fit` on the same recording: every body column and every toss
 row, for the three drag laws, on the sample recording and on a recording made here from the
 exact motion (given as arrays, and written as the t,wx,wy,wz CSV the command reads); the
-summary lines; the chart arrays against the CSV's residual; the command line's error lines."""
+summary lines; the chart arrays against the CSV's residual; the command line's error lines;
+Ctrl-C during a long fit."""
 import csv
 import math
+import signal
+import subprocess
+import sys
+import textwrap
+import time
 
 import numpy as np
 import pytest
@@ -167,3 +173,42 @@ def test_bad_input_raises_the_command_lines_error(bookspin, tmp_path):
     with pytest.raises(bookspin.Error, match="no free flight found"):
         bookspin.fit((np.arange(50) * 0.01, np.zeros((50, 3))))
     assert bookspin.fit(SAMPLE).tosses  # the interpreter goes on
+
+
+def test_ctrl_c_one_second_into_a_long_fit():
+    # Sixty tosses at 1000 samples/s, a fit of several seconds: KeyboardInterrupt within a
+    # second of SIGINT (the solver asks at every iteration), and the interpreter goes on.
+    script = """
+        import time
+        import numpy as np
+        import bookspin
+        rate, t, w, now = 1000.0, [], [], 0.0
+        for k in range(60):
+            flight = np.arange(1300) / rate
+            rest = np.arange(600) / rate
+            t += [now + rest, now + 0.6 + flight]
+            w += [np.zeros((600, 3)), bookspin.exact_motion([1.0, 2.6, 3.4], [0.4, 14.0, 0.5],
+                                                            flight)["omega_body"]]
+            now += 1.9
+        t, w = np.concatenate(t), np.concatenate(w)
+        w += np.random.default_rng(1).normal(0.0, 0.01, w.shape)
+        print("fitting", flush=True)
+        try:
+            bookspin.fit((t, w))
+            print("finished", flush=True)
+        except KeyboardInterrupt:
+            print("interrupted", time.monotonic(), flush=True)
+            print(len(bookspin.fit((t[:4000], w[:4000])).tosses), flush=True)
+    """
+    child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(script)],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == "fitting"
+    time.sleep(1.0)
+    sent = time.monotonic()
+    child.send_signal(signal.SIGINT)
+    stdout, stderr = child.communicate(timeout=120)
+    lines = stdout.splitlines()
+    assert lines[0].startswith("interrupted"), (stdout, stderr)
+    assert float(lines[0].split()[1]) - sent < 1.0
+    assert lines[1] == "2"  # the next fit runs
+    assert child.returncode == 0, stderr
