@@ -25,7 +25,7 @@ CsvTable fit_body_csv(const FitResult& fit);
 std::vector<std::string> fit_summary(const FitResult& fit);
 
 /// `value` with `digits` digits after the point ("0.170"): the summary's and the toss scenes'
-/// words (fit_summary, products::toss_scene).
+/// words (fit_summary, toss_scene).
 std::string fixed(double value, int digits);
 
 }  // namespace bookspin::fit

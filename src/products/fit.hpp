@@ -22,7 +22,7 @@ struct FitLayout {
   std::filesystem::path body_csv;           ///< OUT/<recording>-fit-body.csv: the body's one row
   std::vector<std::filesystem::path> pngs;  ///< OUT/<recording>-toss<N>.png, N = 1, 2, ...
   std::filesystem::path manifest;           ///< OUT/<recording>/fit-manifest.json
-  /// OUT/<recording>-toss<N>.toml, each toss as a scene (products/fit_scene.hpp), and
+  /// OUT/<recording>-toss<N>.toml, each toss as a scene (fit::toss_scene_text), and
   /// OUT/<recording>-toss<N>-measured.csv, the measured ω it names; empty where the fitted
   /// moments make no body (toss_book).
   std::vector<std::filesystem::path> scenes, measured;
@@ -59,9 +59,9 @@ struct FitJob {
 /// -toss<N>.png + -toss<N>.toml + -toss<N>-measured.csv [+ -toss<N>.mp4] + manifest.
 /// Unless the manifest says they are up to date: makes the fit's report (fit::fit_report: the
 /// flights found or given, the fit, each toss's chart data and scene values), draws each toss
-/// (charts::toss_image), writes its scene and measured ω (fit_scene.hpp; none, and a line in
-/// the summary saying why, where the fitted moments make no body) and the tables; with
-/// `clips`, also renders each toss's clip (products/fit_clip.hpp) into a scratch folder of the
+/// (charts::toss_image), writes its scene and measured ω (the report's, fit/toss_scene.hpp; none,
+/// and a line in the summary saying why, where the fitted moments make no body) and the tables;
+/// with `clips`, also renders each toss's clip (products/fit_clip.hpp) into a scratch folder of the
 /// run; all of it put in place together or not at all. `summary`, when given, receives the
 /// report's summary lines of a made fit and what was written.
 /// Throws InputError (a toss, no flight; with `clips` a fit whose every toss is stable without
