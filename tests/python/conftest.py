@@ -4,7 +4,11 @@ BOOKSPIN_SOURCE_DIR), a command-line runner and CSV readers."""
 import csv
 import os
 import pathlib
+import signal
 import subprocess
+import sys
+import textwrap
+import time
 
 import numpy as np
 import pytest
@@ -114,3 +118,16 @@ def assert_same_error(module, call, *cli_args):
     with pytest.raises(module.Error) as raised:
         call()
     assert str(raised.value) == cli_error_line(stderr)
+
+
+def interrupted_child(script, started, after, cwd=None, timeout=120):
+    """Runs `script` in a fresh interpreter, waits for its first line `started`, sends SIGINT
+    `after` seconds later and returns (stdout's lines, stderr, returncode, the time it was sent)."""
+    child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(script)], cwd=cwd,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    assert child.stdout.readline().strip() == started
+    time.sleep(after)
+    sent = time.monotonic()
+    child.send_signal(signal.SIGINT)
+    stdout, stderr = child.communicate(timeout=timeout)
+    return stdout.splitlines(), stderr, child.returncode, sent

@@ -5,16 +5,11 @@ summary lines; the chart arrays against the CSV's residual; the command line's e
 Ctrl-C during a long fit."""
 import csv
 import math
-import signal
-import subprocess
-import sys
-import textwrap
-import time
 
 import numpy as np
 import pytest
 
-from conftest import SOURCE_DIR, assert_same_error, run_cli
+from conftest import SOURCE_DIR, assert_same_error, interrupted_child, run_cli
 
 SAMPLE = SOURCE_DIR / "recordings" / "phone-on-book-synthetic"
 
@@ -200,15 +195,8 @@ def test_ctrl_c_one_second_into_a_long_fit():
             print("interrupted", time.monotonic(), flush=True)
             print(len(bookspin.fit((t[:4000], w[:4000])).tosses), flush=True)
     """
-    child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(script)],
-                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    assert child.stdout.readline().strip() == "fitting"
-    time.sleep(1.0)
-    sent = time.monotonic()
-    child.send_signal(signal.SIGINT)
-    stdout, stderr = child.communicate(timeout=120)
-    lines = stdout.splitlines()
-    assert lines[0].startswith("interrupted"), (stdout, stderr)
+    lines, stderr, returncode, sent = interrupted_child(script, "fitting", 1.0)
+    assert lines[0].startswith("interrupted"), (lines, stderr)
     assert float(lines[0].split()[1]) - sent < 1.0
     assert lines[1] == "2"  # the next fit runs
-    assert child.returncode == 0, stderr
+    assert returncode == 0, stderr

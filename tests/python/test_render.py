@@ -4,15 +4,13 @@ bytes), the MP4's path returned; the command line's error lines; Ctrl-C two seco
 import hashlib
 import pathlib
 import re
-import signal
 import subprocess
 import sys
 import textwrap
-import time
 
 import pytest
 
-from conftest import EXE, SOURCE_DIR, cli_error_line, run_cli
+from conftest import EXE, SOURCE_DIR, cli_error_line, interrupted_child, run_cli
 
 SCENE = SOURCE_DIR / "scenes" / "fig09-matrix-unstable-x.toml"
 NAME = "fig09-matrix-unstable-x"
@@ -134,14 +132,9 @@ def test_ctrl_c_two_seconds_into_a_long_render(tmp_path):
         except KeyboardInterrupt:
             print("interrupted", time.monotonic(), flush=True)
     """
-    child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(script)], cwd=tmp_path,
-                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    assert child.stdout.readline().strip() == "rendering"
-    time.sleep(2.0)
-    sent = time.monotonic()
-    child.send_signal(signal.SIGINT)
-    stdout, stderr = child.communicate(timeout=60)
-    assert stdout.startswith("interrupted"), (stdout, stderr)
-    assert float(stdout.split()[1]) - sent < 1.0
-    assert child.returncode == 0, stderr
+    lines, stderr, returncode, sent = interrupted_child(script, "rendering", 2.0, cwd=tmp_path,
+                                                        timeout=60)
+    assert lines and lines[0].startswith("interrupted"), (lines, stderr)
+    assert float(lines[0].split()[1]) - sent < 1.0
+    assert returncode == 0, stderr
     assert files(tmp_path) == {}, files(tmp_path)
