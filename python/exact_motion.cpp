@@ -14,7 +14,7 @@ The exact torque-free motion of a rigid body (Jacobi elliptic functions and the 
 about L in closed form; docs/physics.md §8), evaluated at every time of t. The body starts at
 the identity orientation (body frame = world frame at t = 0) with body-frame angular velocity
 omega0; no jiggle is added. The same numbers as the exact model's (model.kind = "exact") and
-as `bookspin flipcheck export`'s CSV (physics::ExactRotation through jobs::exact_motion_row).
+as `bookspin flipcheck export`'s CSV (physics::ExactRotation::state).
 
 Arguments (float64, or anything numpy turns into it):
   moments  (3,)  principal moments of inertia about body x, y, z, mass * length^2, each > 0

@@ -1,6 +1,5 @@
 #include "jobs/exact_motion.hpp"
 
-#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 
@@ -21,22 +20,6 @@ std::string value_text(double value) {
 }
 
 }  // namespace
-
-ExactMotionRow exact_motion_row(const physics::ExactRotation& exact, double t) {
-  const Eigen::Vector3d& moments = exact.moments();
-  ExactMotionRow row;
-  row.t = t;
-  const Eigen::Matrix3d R = exact.orientation(t);
-  Eigen::Quaterniond q(R);
-  q.normalize();
-  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
-  row.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
-  row.omega_body = exact.omega_body(t);
-  row.omega_world = R * row.omega_body;
-  row.L = R * moments.cwiseProduct(row.omega_body);
-  row.E = 0.5 * row.omega_body.dot(moments.cwiseProduct(row.omega_body));
-  return row;
-}
 
 std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
                                             const Eigen::Vector3d& omega0_body,
@@ -59,7 +42,7 @@ std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
   rows.reserve(times.size());
   for (std::size_t n = 0; n < times.size(); ++n) {
     if (n % 4096 == 0) stop_if_asked(stop, "exact motion");
-    rows.push_back(exact_motion_row(exact, times[n]));
+    rows.push_back(exact.state(times[n]));
   }
   return rows;
 }
@@ -74,7 +57,7 @@ ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& sto
   motion.rows.reserve(static_cast<std::size_t>(scenario.steps) + 1);
   for (long long n = 0; n <= scenario.steps; ++n) {
     if (n % 4096 == 0) stop_if_asked(stop, "flipcheck exact motion");
-    motion.rows.push_back(exact_motion_row(exact, static_cast<double>(n) * scenario.dt));
+    motion.rows.push_back(exact.state(static_cast<double>(n) * scenario.dt));
   }
   return motion;
 }

@@ -13,25 +13,13 @@
 
 namespace bookspin::jobs {
 
-/// One step of the exact motion.
-struct ExactMotionRow {
-  double t = 0.0;               ///< step·dt, time units
-  Eigen::Vector4d q;            ///< unit quaternion (w, x, y, z) of R(t), body → world, w ≥ 0
-  Eigen::Vector3d omega_body;   ///< rad per time unit, body frame
-  Eigen::Vector3d omega_world;  ///< R(t)·ω, world frame
-  Eigen::Vector3d L;            ///< R(t)·I_body·ω, world frame (mass·length²/time unit)
-  double E = 0.0;               ///< ½ ω·I_body ω, energy units
-};
+/// One step of the exact motion: physics::ExactRotation::state() (docs/physics.md §8).
+using ExactMotionRow = physics::ExactState;
 
-/// The exact motion `exact` at time `t` (time units): R(t) as a unit quaternion with w ≥ 0, ω
-/// in the body and the world frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8).
-/// One row of exact_motion(), and of the Python module's `exact_motion` (docs/python.md).
-ExactMotionRow exact_motion_row(const physics::ExactRotation& exact, double t);
-
-/// exact_motion_row() at each of `times`, for a body of principal `moments` (body x, y, z,
-/// mass·length²) starting at the identity with body-frame ω0 `omega0_body` (rad per time unit).
-/// `stop` is polled every few thousand rows. Throws InputError for a moment that is not finite
-/// and positive, an ω0 or a t that is not finite (naming `what`: "moments", "omega0", "t").
+/// physics::ExactRotation::state() at each of `times`, for a body of principal `moments` (body x,
+/// y, z, mass·length²) starting at the identity with body-frame ω0 `omega0_body` (rad per time
+/// unit). `stop` is polled every few thousand rows. Throws InputError for a moment that is not
+/// finite and positive, an ω0 or a t that is not finite (naming `what`: "moments", "omega0", "t").
 std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
                                             const Eigen::Vector3d& omega0_body,
                                             const std::vector<double>& times,

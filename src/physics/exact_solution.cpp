@@ -300,6 +300,21 @@ Eigen::Matrix3d ExactRotation::rotation_from(const Eigen::Vector3d& L_sorted, do
   return anchor_ * rotation_z(psi) * momentum_frame(L_sorted) * to_sorted_;
 }
 
+ExactState ExactRotation::state(double t) const {
+  ExactState state;
+  state.t = t;
+  const Eigen::Matrix3d R = orientation(t);
+  Eigen::Quaterniond q(R);
+  q.normalize();
+  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
+  state.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+  state.omega_body = omega_body(t);
+  state.omega_world = R * state.omega_body;
+  state.L = R * moments_.cwiseProduct(state.omega_body);
+  state.E = 0.5 * state.omega_body.dot(moments_.cwiseProduct(state.omega_body));
+  return state;
+}
+
 Eigen::Matrix3d ExactRotation::orientation(double t) const {
   if (case_ == ExactCase::steady) {
     const double rate = omega0_.norm();

@@ -36,6 +36,16 @@ struct ExactOmegaForm {
   double K = 0.0;       ///< K(k): ω has period 4K in u
 };
 
+/// The whole state of the exact motion at one time: what ExactRotation::state() returns.
+struct ExactState {
+  double t = 0.0;               ///< time units
+  Eigen::Vector4d q;            ///< unit quaternion (w, x, y, z) of R(t), body → world, w ≥ 0
+  Eigen::Vector3d omega_body;   ///< rad per time unit, body frame
+  Eigen::Vector3d omega_world;  ///< R(t)·ω, world frame
+  Eigen::Vector3d L;            ///< R(t)·I_body·ω, world frame (mass·length²/time unit)
+  double E = 0.0;               ///< ½ ω·I_body ω, energy units
+};
+
 /// Exact torque-free motion of a rigid body with principal moments `moments` (body x, y, z;
 /// any order and any equalities) that starts at the identity orientation with body-frame
 /// angular velocity ω0. World angular momentum L = I·ω0 and energy E = ½ ω0·I ω0 are
@@ -69,6 +79,10 @@ class ExactRotation {
   /// R(t)·I·ω(t) = L (world). A few µs per call: one long-double Jacobi evaluation and one R_J.
   /// Throws std::logic_error for ExactParts::omega_only.
   Eigen::Matrix3d orientation(double t) const;
+  /// Everything at time `t`: R(t) as a unit quaternion with w ≥ 0, ω in the body and the world
+  /// frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8). Throws std::logic_error for
+  /// ExactParts::omega_only.
+  ExactState state(double t) const;
   /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion. Throws
   /// std::logic_error for ExactParts::omega_only.
   double precession_angle(double t) const;
