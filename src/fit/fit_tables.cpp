@@ -35,11 +35,14 @@ CsvTable fit_toss_csv(const FitResult& fit) {
 
 CsvTable fit_body_csv(const FitResult& fit) {
   const BodyEstimate& b = fit.body;
-  CsvTable table{{"I1_over_I3",      "I2_over_I3",      "I3_over_I3", "I1_sigma", "I2_sigma",
-                  "axis1_x",         "axis1_y",         "axis1_z",    "axis2_x",  "axis2_y",
-                  "axis2_z",         "axis3_x",         "axis3_y",    "axis3_z",  "axis1_sigma_deg",
-                  "axis2_sigma_deg", "axis3_sigma_deg", "moments",    "tosses",   "drag"},
-                 {}};
+  CsvTable table{
+      {"I1_over_I3",      "I2_over_I3",      "I3_over_I3", "I1_sigma",     "I2_sigma",
+       "axis1_x",         "axis1_y",         "axis1_z",    "axis2_x",      "axis2_y",
+       "axis2_z",         "axis3_x",         "axis3_y",    "axis3_z",      "axis1_sigma_deg",
+       "axis2_sigma_deg", "axis3_sigma_deg", "moments",    "tosses",       "drag",
+       "bias_x",          "bias_y",          "bias_z",     "bias_sigma_x", "bias_sigma_y",
+       "bias_sigma_z"},
+      {}};
   std::vector<CsvCell> row{shortest_cell(b.ratios[0]), shortest_cell(b.ratios[1]),
                            shortest_cell(b.ratios[2])};
   for (int i = 0; i < 2; ++i)
@@ -55,6 +58,16 @@ CsvTable fit_body_csv(const FitResult& fit) {
                                                    : "poorly determined"));
   row.push_back(std::to_string(fit.tosses.size()));
   row.push_back(std::string(physics::to_string(fit.drag)));
+  // The bias removed: the rest's mean and its scatter, or fitted from the flights and its
+  // standard error; no σ where neither (docs/outputs.md, "bookspin fit").
+  std::optional<Eigen::Vector3d> sigma;
+  if (fit.search.rest_samples > 0)
+    sigma = fit.search.bias_sigma;
+  else
+    sigma = fit.bias_fitted_sigma;
+  for (int c = 0; c < 3; ++c) row.push_back(shortest_cell(fit.search.bias[c]));
+  for (int c = 0; c < 3; ++c)
+    row.push_back(shortest_cell(sigma ? std::optional<double>((*sigma)[c]) : std::nullopt));
   table.rows.push_back(std::move(row));
   return table;
 }
@@ -62,11 +75,21 @@ CsvTable fit_body_csv(const FitResult& fit) {
 std::vector<std::string> fit_summary(const FitResult& fit) {
   std::vector<std::string> lines;
   const Eigen::Vector3d& bias = fit.search.bias;
-  lines.push_back(fit.search.rest_samples > 0
-                      ? "bias (rad/s, from " + std::to_string(fit.search.rest_samples) +
-                            " samples at rest): " + fixed(bias[0], 4) + ", " + fixed(bias[1], 4) +
-                            ", " + fixed(bias[2], 4)
-                      : "no rest in the recording: the gyroscope's bias is not removed");
+  const auto with_sigma = [&](const Eigen::Vector3d& sigma) {
+    return fixed(bias[0], 4) + " ± " + fixed(sigma[0], 4) + ", " + fixed(bias[1], 4) + " ± " +
+           fixed(sigma[1], 4) + ", " + fixed(bias[2], 4) + " ± " + fixed(sigma[2], 4);
+  };
+  if (fit.search.rest_samples > 0)
+    lines.push_back("bias (rad/s, the mean of " + std::to_string(fit.search.rest_samples) +
+                    " samples at rest ± their scatter): " + with_sigma(fit.search.bias_sigma));
+  else if (fit.bias_fitted_sigma)
+    lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
+                    with_sigma(*fit.bias_fitted_sigma));
+  else if (fit.bias_correction != Eigen::Vector3d::Zero())
+    lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
+                    fixed(bias[0], 4) + ", " + fixed(bias[1], 4) + ", " + fixed(bias[2], 4));
+  else
+    lines.push_back("no rest in the recording: the gyroscope's bias is not removed");
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
     std::string drag;

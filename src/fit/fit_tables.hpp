@@ -17,7 +17,10 @@ CsvTable fit_toss_csv(const FitResult& fit);
 
 /// OUT/<recording>-fit-body.csv: one row, the moment ratios I1/I3, I2/I3, 1 and their sigmas,
 /// the principal axes' phone-frame components (axisN_x/y/z) and their sigmas (degrees), how
-/// the moments were found, the toss count and the drag law.
+/// the moments were found, the toss count and the drag law; the bias removed (bias_x/y/z, rad/s,
+/// phone frame: the rest's mean, or fitted from the flights where there is no rest) and its σ
+/// per axis (bias_sigma_x/y/z: the rest's scatter, or the fitted bias's standard error; empty
+/// where neither).
 CsvTable fit_body_csv(const FitResult& fit);
 
 /// What the fit says besides its CSVs: the bias, the flights kept and the stretches dropped,

@@ -64,21 +64,29 @@ std::vector<std::pair<int, int>> runs(const std::vector<char>& mask,
   return result;
 }
 
-/// The bias: the mean ω over the rest stretches (|ω| < rest_omega for min_rest s or longer).
+/// The bias: the mean ω over the rest stretches (|ω| < rest_omega for min_rest s or longer),
+/// and each axis's standard deviation there.
 void measure_bias(const GyroRecording& recording, const FinderSettings& settings,
                   const std::vector<std::pair<int, int>>& segs, FlightSearch& search) {
   const int n = static_cast<int>(recording.t.size());
   std::vector<char> still(n);
   for (int i = 0; i < n; ++i) still[i] = recording.omega[i].norm() < settings.rest_omega;
+  std::vector<std::pair<int, int>> rests;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int count = 0;
   for (const auto& [first, last] : runs(still, segs)) {
     if (recording.t[last] - recording.t[first] < settings.min_rest) continue;
+    rests.emplace_back(first, last);
     for (int i = first; i <= last; ++i) sum += recording.omega[i];
     count += last - first + 1;
   }
   search.rest_samples = count;
   search.bias = count > 0 ? Eigen::Vector3d(sum / count) : Eigen::Vector3d::Zero();
+  Eigen::Vector3d squares = Eigen::Vector3d::Zero();
+  for (const auto& [first, last] : rests)
+    for (int i = first; i <= last; ++i) squares += (recording.omega[i] - search.bias).cwiseAbs2();
+  search.bias_sigma =
+      count > 1 ? Eigen::Vector3d((squares / (count - 1)).cwiseSqrt()) : Eigen::Vector3d::Zero();
 }
 
 /// |I ω̇ + ω × I ω| / |ω|² at sample i: the torque Euler's equations leave (I scaled to a

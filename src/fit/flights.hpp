@@ -26,6 +26,9 @@ struct DroppedStretch {
 /// What the finder found.
 struct FlightSearch {
   Eigen::Vector3d bias = Eigen::Vector3d::Zero();  ///< rad/s, phone frame: the rest's mean
+  /// rad/s, phone frame: the standard deviation of each axis's samples at rest (the gyroscope's
+  /// noise there); 0 without rest.
+  Eigen::Vector3d bias_sigma = Eigen::Vector3d::Zero();
   int rest_samples = 0;  ///< samples at rest the bias was measured on (0: not removed)
   std::vector<Flight> flights;
   std::vector<DroppedStretch> dropped;

@@ -177,6 +177,12 @@ struct SolveOptions {
   /// rough stages at 100 Hz whatever the rate; the final fit sees every sample).
   double spacing = 0.0;
   const StopPoll* stop = nullptr;  ///< FitSettings::stop, polled every iteration
+  /// The bias correction held at its value.
+  bool bias_held = false;
+  /// rad/s: the bias correction kept within what the rest allows, −bound ≤ e + offset ≤ bound on
+  /// each axis (offset: a correction the samples already had removed); nullopt: free.
+  std::optional<Eigen::Vector3d> bias_bound;
+  Eigen::Vector3d bias_offset = Eigen::Vector3d::Zero();
 };
 
 /// Asks `stop` at every iteration of the solver; a signal aborts the solve, and solve() throws
@@ -227,8 +233,19 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
   if (options.body_fixed || options.moments_fixed)
     problem->SetParameterBlockConstant(p.log_ratios.data());
   if (options.body_fixed) problem->SetParameterBlockConstant(p.aa.data());
-  // The bias correction is shared by the tosses: fitted with two or more, held otherwise.
-  if (options.body_fixed || data.size() < 2) problem->SetParameterBlockConstant(p.e.data());
+  // The bias correction is shared by the tosses: fitted with two or more and no rest, held
+  // otherwise (docs/phone-lab.md, "The bias").
+  if (options.body_fixed || options.bias_held || data.size() < 2) {
+    problem->SetParameterBlockConstant(p.e.data());
+  } else if (options.bias_bound) {
+    for (int i = 0; i < 3; ++i) {
+      // A rest without scatter (a synthetic one) allows 1e-9 rad/s at most.
+      const double bound = std::max((*options.bias_bound)[i], 1e-9);
+      p.e[i] = std::clamp(p.e[i], -bound - options.bias_offset[i], bound - options.bias_offset[i]);
+      problem->SetParameterLowerBound(p.e.data(), i, -bound - options.bias_offset[i]);
+      problem->SetParameterUpperBound(p.e.data(), i, bound - options.bias_offset[i]);
+    }
+  }
   ceres::Solver::Options solver_options;
   // The tosses' ω0 blocks are independent given the body: eliminated (Schur complement), the
   // linear system is the body's five parameters, however many tosses there are.
@@ -274,12 +291,13 @@ struct Covariances {
   std::vector<Eigen::MatrixXd> omega0;  ///< 3×3, or 4×4 with the drag rate last
 };
 std::optional<Covariances> covariances(const std::vector<TossData>& data, const Parameters& p,
-                                       bool moments_fixed, physics::DragLaw law) {
+                                       bool moments_fixed, bool bias_fitted, physics::DragLaw law) {
   // The body's columns of [J_θ | I] (θ: TossModel's nine, then the bias correction e): aa, the
-  // log ratios unless fixed, e where fitted (two or more tosses); the toss's: ω0, its rate.
+  // log ratios unless fixed, e where fitted (two or more tosses, no rest); the toss's: ω0, its
+  // rate.
   std::vector<int> body{0, 1, 2}, toss{5, 6, 7};
   if (!moments_fixed) body.insert(body.end(), {3, 4});
-  if (data.size() >= 2) body.insert(body.end(), {9, 10, 11});
+  if (bias_fitted) body.insert(body.end(), {9, 10, 11});
   if (law != physics::DragLaw::none) toss.push_back(8);
   const int nb = static_cast<int>(body.size());
   constexpr double kMinReciprocalCondition = 1e-14;
@@ -529,6 +547,14 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   const physics::DragLaw law = settings.drag;
   const bool dragged = law != physics::DragLaw::none;
   Parameters p = start(data, settings, recording.t);
+  // The bias: the rest's mean, corrected by the flights (two or more) within 3σ of the rest's
+  // scatter on each axis; with no rest, fitted from the flights freely (docs/phone-lab.md, "The
+  // bias"). Bounded, the correction is held while the body settles and freed after: a bounded
+  // solve from a body still far off leaves it at the bound's wall.
+  std::optional<Eigen::Vector3d> bias_bound;
+  if (search.rest_samples > 0) bias_bound = 3.0 * search.bias_sigma;
+  const bool bias_fitted = data.size() >= 2;
+  const bool bias_free = bias_fitted && !bias_bound;
   // Grown over each toss, so that a rough start does not lock onto a wrong phase; the drag
   // rates join once the phases are found (the last stage).
   for (double fraction : {0.3, 0.6, 1.0}) {
@@ -547,6 +573,14 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   full.stop = &settings.stop;
   full.moments_fixed = fixed;
   full.drag = law;
+  if (bias_bound) {
+    for (int i = 0; i < 3; ++i) p.e[i] = std::clamp(p.e[i], -(*bias_bound)[i], (*bias_bound)[i]);
+    full.bias_held = true;
+    if (!solve(data, p, full).usable)
+      throw InputError(recording.source + ": the fit did not converge");
+    full.bias_held = false;
+    full.bias_bound = bias_bound;
+  }
   const Solved solved = solve(data, p, full);
   if (!solved.usable) throw InputError(recording.source + ": the fit did not converge");
   // The bias in flight: the rest's plus the fitted correction; the samples corrected by it, so
@@ -572,11 +606,11 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   }
   // Uncertainties: (JᵀJ)⁻¹ scaled by the residual variance and by the residual's correlation
   // (docs/phone-lab.md, "Error bars"); the body's then widened to the folds' spread below.
-  const int parameter_count = (fixed ? 3 : 5) + (data.size() >= 2 ? 3 : 0) +
-                              (dragged ? 4 : 3) * static_cast<int>(data.size());
+  const int parameter_count =
+      (fixed ? 3 : 5) + (bias_fitted ? 3 : 0) + (dragged ? 4 : 3) * static_cast<int>(data.size());
   const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count) *
                           correlation_inflation(residuals);
-  const std::optional<Covariances> covariance = covariances(data, p, fixed, law);
+  const std::optional<Covariances> covariance = covariances(data, p, fixed, bias_fitted, law);
   std::vector<std::optional<Eigen::Vector3d>> omega0_sigma(data.size());
   std::vector<std::optional<double>> rate_sigma(data.size());
   if (covariance) {
@@ -593,6 +627,12 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     else
       body.ratio_sigma = Eigen::Vector3d(body.ratios[0] * std::sqrt(variance * c(3, 3)),
                                          body.ratios[1] * std::sqrt(variance * c(4, 4)), 0.0);
+    if (bias_free) {  // e's block is the body's last three
+      const int e = static_cast<int>(c.rows()) - 3;
+      result.bias_fitted_sigma =
+          Eigen::Vector3d(std::sqrt(variance * c(e, e)), std::sqrt(variance * c(e + 1, e + 1)),
+                          std::sqrt(variance * c(e + 2, e + 2)));
+    }
     for (std::size_t k = 0; k < data.size(); ++k) {
       const Eigen::MatrixXd& ck = covariance->omega0[k];
       omega0_sigma[k] = (variance * ck.diagonal().head<3>()).cwiseSqrt();
@@ -624,6 +664,13 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       options.moments_fixed = fixed;
       options.drag = law;
       options.spacing = 0.01;  // at 100 Hz whatever the rate: five fits of nearly every toss
+      if (bias_bound) {
+        options.bias_held = true;
+        if (!solve(rest, q, options).usable) continue;
+        options.bias_held = false;
+        options.bias_bound = bias_bound;
+        options.bias_offset = result.bias_correction;
+      }
       if (!solve(rest, q, options).usable) continue;
       normalise(q);
       fold_body[f] = q;

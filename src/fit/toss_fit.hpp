@@ -92,11 +92,15 @@ struct FitSettings {
 };
 
 struct FitResult {
-  /// The flights fitted, the stretches dropped, and the bias removed: the rest's corrected by
-  /// the flights themselves (bias_correction, fitted with two or more tosses).
+  /// The flights fitted, the stretches dropped, and the bias removed (docs/phone-lab.md, "The
+  /// bias"): the rest's mean and its scatter (search.bias_sigma) where the recording has a rest;
+  /// with none, fitted from the flights themselves (bias_correction, with two or more tosses).
   FlightSearch search;
   Eigen::Vector3d bias_correction = Eigen::Vector3d::Zero();  ///< rad/s, phone frame
-  physics::DragLaw drag = physics::DragLaw::linear;           ///< the law the rates are of
+  /// rad/s, phone frame: the fitted bias's standard error, where it was fitted from the flights
+  /// (no rest, two or more tosses) and the fit's covariance exists.
+  std::optional<Eigen::Vector3d> bias_fitted_sigma;
+  physics::DragLaw drag = physics::DragLaw::linear;  ///< the law the rates are of
   BodyEstimate body;
   std::vector<TossFit> tosses;  ///< one per flight, in order
   /// rad/s: the range the gyroscope saturated at, found in the samples (fit/saturation.hpp),

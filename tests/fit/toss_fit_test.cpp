@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "fit/fit_tables.hpp"
 #include "fit/flights.hpp"
 #include "fit/recording.hpp"
 #include "support/scratch.hpp"
@@ -267,6 +270,104 @@ TEST(TossFit, DragShowsAsLDecay) {
       fit_recording(as_recording(synthetic), find_flights(as_recording(synthetic)));
   ASSERT_EQ(fit.tosses.size(), 2u);
   for (const TossFit& toss : fit.tosses) EXPECT_NEAR(toss.L_decay, 0.05, 0.005);
+}
+
+// Strong drag (|L| decaying at 1.5 /s) fitted without a drag law: the flights alone would read the
+// lost spin as a bias of rad/s. The correction stays within 3σ of the rest on each axis, σ the
+// rest's own scatter (here measured independently on the first rest, the 1.5 s before the first
+// throw: its wobble of 0.03 rad/s and the 0.01 rad/s noise).
+TEST(TossFit, TheBiasCorrectionStaysWithinWhatTheRestAllows) {
+  const test::SyntheticRecording synthetic = test::make_recording(
+      test::phone_alone(),
+      {{{1.0, 18.0, 1.2}, 1.2}, {{-1.2, 17.0, 1.5}, 1.2}, {{0.8, 16.0, -1.0}, 1.2}}, 31, 0.01, 0.15,
+      4.0, 1.5);
+  const GyroRecording recording = as_recording(synthetic);
+  FitSettings settings;
+  settings.drag = physics::DragLaw::none;
+  const FitResult fit = fit_recording(recording, find_flights(recording), settings);
+  ASSERT_GT(fit.search.rest_samples, 0);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), squares = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (std::size_t i = 0; synthetic.t[i] < 1.4; ++i, ++n) mean += synthetic.omega[i];
+  mean /= n;
+  for (int i = 0; i < n; ++i) squares += (synthetic.omega[i] - mean).cwiseAbs2();
+  const Eigen::Vector3d scatter = (squares / (n - 1)).cwiseSqrt();
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(fit.search.bias_sigma[c], scatter[c], 0.3 * scatter[c]) << c;
+    EXPECT_LE(std::abs(fit.bias_correction[c]), 3.0 * fit.search.bias_sigma[c] + 1e-12) << c;
+    // The bias removed in flight is the generator's within the bound.
+    EXPECT_NEAR(fit.search.bias[c], synthetic.bias[c], 3.0 * fit.search.bias_sigma[c] + 0.01) << c;
+  }
+  // The body CSV says both: the bias removed and the rest's σ.
+  const CsvTable body = fit_body_csv(fit);
+  const auto column = [&](const std::string& name) {
+    const auto at = std::find(body.columns.begin(), body.columns.end(), name);
+    EXPECT_NE(at, body.columns.end()) << name;
+    return std::get<CsvNumber>(body.rows.at(0).at(at - body.columns.begin())).value.value();
+  };
+  EXPECT_EQ(column("bias_x"), fit.search.bias[0]);
+  EXPECT_EQ(column("bias_sigma_z"), fit.search.bias_sigma[2]);
+}
+
+// A recording of the flights alone (the rests cut out): the bias is fitted from the flights, with
+// its standard error, and the summary and the body CSV say so; the generator's bias lies within
+// 3σ of it on each axis.
+TEST(TossFit, WithNoRestTheBiasIsFittedFromTheFlightsWithItsSigma) {
+  const test::SyntheticRecording synthetic = test::make_recording(
+      test::phone_on_book(),
+      {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.3}, {{0.6, -13.0, -0.5}, 1.1}}, 33, 0.01);
+  GyroRecording recording;
+  recording.source = "flights-only.csv";
+  std::vector<std::pair<double, double>> ranges;
+  for (const test::TrueToss& toss : synthetic.tosses) ranges.emplace_back(toss.t_start, toss.t_end);
+  for (std::size_t i = 0; i < synthetic.t.size(); ++i)
+    for (const auto& [t0, t1] : ranges)
+      if (synthetic.t[i] >= t0 && synthetic.t[i] <= t1) {
+        recording.t.push_back(synthetic.t[i]);
+        recording.omega.push_back(synthetic.omega[i]);
+      }
+  const FitResult fit = fit_recording(recording, hand_flights(recording, ranges));
+  ASSERT_EQ(fit.search.rest_samples, 0);
+  ASSERT_TRUE(fit.bias_fitted_sigma.has_value());
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GT((*fit.bias_fitted_sigma)[c], 0.0) << c;
+    EXPECT_NEAR(fit.search.bias[c], synthetic.bias[c], 3.0 * (*fit.bias_fitted_sigma)[c]) << c;
+  }
+  EXPECT_EQ(fit_summary(fit).at(0).rfind(
+                "no rest in the recording: the bias (rad/s) is fitted from the flights: ", 0),
+            0u)
+      << fit_summary(fit).at(0);
+  const CsvTable body = fit_body_csv(fit);
+  const auto at = std::find(body.columns.begin(), body.columns.end(), "bias_sigma_y");
+  ASSERT_NE(at, body.columns.end());
+  EXPECT_EQ(std::get<CsvNumber>(body.rows.at(0).at(at - body.columns.begin())).value.value(),
+            (*fit.bias_fitted_sigma)[1]);
+}
+
+// A light, broad body whose |L| decays at 3 /s over four 1.3 s flights (linear drag): each
+// toss's fitted rate is within 2σ of the generator's 3 /s, or the toss is flagged with a reason;
+// the bias removed is within 3σ of the rest's mean.
+TEST(TossFit, StrongDragIsFittedAsDragNotBias) {
+  const test::SyntheticRecording synthetic = test::make_recording(test::phone_on_book(),
+                                                                  {{{0.5, 14.0, 0.4}, 1.3},
+                                                                   {{-0.3, 13.0, 0.7}, 1.3},
+                                                                   {{0.6, -14.0, -0.5}, 1.3},
+                                                                   {{-0.4, -13.0, 0.6}, 1.3}},
+                                                                  41, 0.01, 0.15, 4.0, 3.0);
+  const GyroRecording recording = as_recording(synthetic);
+  const FitResult fit = fit_recording(recording, find_flights(recording));
+  ASSERT_GT(fit.search.rest_samples, 0);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_LE(std::abs(fit.bias_correction[c]), 3.0 * fit.search.bias_sigma[c] + 1e-12) << c;
+  ASSERT_EQ(fit.tosses.size(), 4u);
+  for (const TossFit& toss : fit.tosses) {
+    if (toss.poor_fit) {
+      EXPECT_FALSE(toss.flag.empty());
+      continue;
+    }
+    ASSERT_TRUE(toss.drag_rate_sigma.has_value());
+    EXPECT_NEAR(toss.drag_rate, 3.0, 2.0 * *toss.drag_rate_sigma);
+  }
 }
 
 /// The tosses of the drag tests: three flipping tosses of a phone on a book, 1.1–1.3 s each.

@@ -50,6 +50,9 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   result.body.ratios = Eigen::Vector3d(0.25, 0.75, 1.0);
   result.body.axes = Eigen::Matrix3d::Identity();
   result.body.ratio_sigma = Eigen::Vector3d(0.001, 0.002, 0.0);
+  result.search.rest_samples = 100;
+  result.search.bias = Eigen::Vector3d(0.5, -0.25, 0.125);
+  result.search.bias_sigma = Eigen::Vector3d(0.03125, 0.0625, 0.015625);
   EXPECT_EQ(csv_text(fit::fit_toss_csv(result), "fit CSV"),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
             "half_period_fitted,half_period_predicted,predicted_from_tosses,predicted_from_seconds,"
@@ -61,8 +64,29 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   EXPECT_EQ(csv_text(fit::fit_body_csv(result), "fit body CSV"),
             "I1_over_I3,I2_over_I3,I3_over_I3,I1_sigma,I2_sigma,axis1_x,axis1_y,axis1_z,axis2_x,"
             "axis2_y,axis2_z,axis3_x,axis3_y,axis3_z,axis1_sigma_deg,axis2_sigma_deg,"
-            "axis3_sigma_deg,moments,tosses,drag\n"
-            "0.25,0.75,1,0.001,0.002,1,0,0,0,1,0,0,0,1,,,,fitted,1,quadratic\n");
+            "axis3_sigma_deg,moments,tosses,drag,bias_x,bias_y,bias_z,bias_sigma_x,bias_sigma_y,"
+            "bias_sigma_z\n"
+            "0.25,0.75,1,0.001,0.002,1,0,0,0,1,0,0,0,1,,,,fitted,1,quadratic,0.5,-0.25,0.125,"
+            "0.03125,0.0625,0.015625\n");
+  EXPECT_EQ(fit::fit_summary(result).at(0),
+            "bias (rad/s, the mean of 100 samples at rest ± their scatter): 0.5000 ± 0.0312, "
+            "-0.2500 ± 0.0625, 0.1250 ± 0.0156");
+  // No rest: the bias fitted from the flights, its σ the fit's standard error.
+  result.search.rest_samples = 0;
+  result.bias_fitted_sigma = Eigen::Vector3d(0.25, 0.5, 0.75);
+  EXPECT_NE(csv_text(fit::fit_body_csv(result), "fit body CSV")
+                .find(",quadratic,0.5,-0.25,0.125,0.25,0.5,0.75\n"),
+            std::string::npos);
+  EXPECT_EQ(fit::fit_summary(result).at(0),
+            "no rest in the recording: the bias (rad/s) is fitted from the flights: 0.5000 ± "
+            "0.2500, -0.2500 ± 0.5000, 0.1250 ± 0.7500");
+  // Neither: no bias removed, no σ.
+  result.search.bias = Eigen::Vector3d::Zero();
+  result.bias_fitted_sigma.reset();
+  EXPECT_NE(csv_text(fit::fit_body_csv(result), "fit body CSV").find(",quadratic,0,0,0,,,\n"),
+            std::string::npos);
+  EXPECT_EQ(fit::fit_summary(result).at(0),
+            "no rest in the recording: the gyroscope's bias is not removed");
 }
 
 TEST(FitProduct, MakesEveryFileThenIsUpToDate) {
@@ -81,7 +105,7 @@ TEST(FitProduct, MakesEveryFileThenIsUpToDate) {
   for (const fs::path& path : layout.outputs()) EXPECT_TRUE(fs::exists(path)) << path;
   EXPECT_TRUE(fs::exists(layout.manifest));
   ASSERT_FALSE(summary.empty());
-  EXPECT_EQ(summary[0].rfind("bias (rad/s, from ", 0), 0u) << summary[0];
+  EXPECT_EQ(summary[0].rfind("bias (rad/s, the mean of ", 0), 0u) << summary[0];
   EXPECT_EQ(make_fit(job), cache::Outcome::up_to_date);
   // The manifest's head names the bookspin that fitted (as every scene product's does), so a
   // rebuilt bookspin fits again.
