@@ -13,7 +13,7 @@ namespace {
 
 constexpr int kHalfWindow = 2;  // samples each side of the derivative's quadratic, at least
 constexpr double kHalfWindowTime = 0.005;  // s each side: more samples where they are denser
-constexpr double kGapFactor = 5.0;         // a step this many median intervals long is a gap
+constexpr double kGapFactor = 5.0;         // a step this many typical steps long is a gap
 constexpr int kMinFitSamples = 10;         // a flight shorter than this cannot be fitted
 
 std::string seconds(double value) {
@@ -29,12 +29,15 @@ std::vector<std::pair<int, int>> segments(const GyroRecording& recording) {
   const int n = static_cast<int>(t.size());
   std::vector<double> steps;
   for (int i = 1; i < n; ++i) steps.push_back(t[i] - t[i - 1]);
-  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
-  const double median_step = steps[steps.size() / 2];
+  // The typical step: the 90th percentile, not the median, so that an app that delivers the
+  // gyroscope in bursts (steps of 2 ms, then 12 ms) has no gap at every burst.
+  const std::size_t p90 = steps.size() * 9 / 10;
+  std::nth_element(steps.begin(), steps.begin() + p90, steps.end());
+  const double typical_step = steps[p90];
   std::vector<std::pair<int, int>> result;
   int begin = 0;
   for (int i = 1; i < n; ++i) {
-    bool cut = t[i] - t[i - 1] > kGapFactor * median_step;
+    bool cut = t[i] - t[i - 1] > kGapFactor * typical_step;
     for (double pause : recording.pauses)
       if (t[i - 1] < pause && t[i] >= pause) cut = true;
     if (cut) {

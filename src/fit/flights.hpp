@@ -56,8 +56,8 @@ Eigen::Matrix3d euler_inertia(const std::vector<Eigen::Vector3d>& omega,
                               const std::vector<int>& indices);
 
 /// Finds the free flights of `recording` (bias removed from the omega it judges). No flight
-/// spans a pause or a gap of more than five sample intervals. Never throws for a recording
-/// with no flight (flights is then empty, and dropped says why).
+/// spans a pause or a gap (a step over five times the 90th percentile of the steps). Never throws
+/// for a recording with no flight (flights is then empty, and dropped says why).
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings = {});
 
 /// The flights given by hand, [t_start, t_end] s each (the bias measured as find_flights
