@@ -68,7 +68,7 @@ struct TossFit {
   bool stable = false;  ///< ω stays within 25° of the axis it circles: it cannot tell moments
   /// The residual is not the measurement's noise: somewhere in the flight (50 ms blocks) it is
   /// far above both the gyroscope's scatter at rest and the flight's typical residual, or it is
-  /// over 10 % of |ω| throughout (docs/phone-lab.md, "Flags"); `flag` says what it looks like (a
+  /// over 5 % of |ω| throughout (docs/phone-lab.md, "Flags"); `flag` says what it looks like (a
   /// catch or throw inside the flight, a knock or the phone slipping, a body that flexes), one
   /// line, also in BodyEstimate::notes.
   bool poor_fit = false;
