@@ -11,13 +11,14 @@
 #include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "common/errors.hpp"
+#include "fit/pool.hpp"
 #include "products/fit.hpp"
 
 namespace bookspin::cli {
 namespace {
 
 struct FitOptions {
-  std::string recording;
+  std::vector<std::string> recordings;
   std::string out_dir = "out";
   std::string tosses;           ///< "a:b,c:d" (s)
   std::string moments;          ///< "I1,I2,I3"
@@ -76,7 +77,14 @@ int fit_command(const FitOptions& options) {
   if (!options.render && !options.scene_file.empty())
     throw InputError("--scene: only with --render (it gives the clips' body and render keys)");
   // Read after the options are checked, as every input: a bad option is named first.
-  job.recording = fit::read_recording(options.recording);
+  if (options.recordings.size() == 1) {
+    job.recording = fit::read_recording(options.recordings.front());
+  } else {
+    std::vector<fit::GyroRecording> recordings;
+    for (const std::string& path : options.recordings)
+      recordings.push_back(fit::read_recording(path));
+    job.recording = fit::pool_recordings(recordings);
+  }
   if (options.render) {
     products::FitRender render;
     if (!options.scene_file.empty()) render.scene_file = options.scene_file;
@@ -88,7 +96,10 @@ int fit_command(const FitOptions& options) {
   std::vector<std::string> summary;
   const cache::Outcome outcome = products::make_fit(job, &summary);
   if (outcome == cache::Outcome::up_to_date)
-    std::cout << "up to date: " << options.recording << std::endl;
+    std::cout << "up to date: "
+              << (options.recordings.size() == 1 ? options.recordings.front()
+                                                 : job.recording.source)
+              << std::endl;
   for (const std::string& line : summary) std::cout << line << '\n';
   return kExitOk;
 }
@@ -102,8 +113,10 @@ Subcommand add_fit(CLI::App& cli) {
       "fit",
       "Fit the exact motion to a phone toss's gyroscope recording (phyphox) into "
       "OUT/<recording>-fit.csv");
-  cmd->add_option("RECORDING", options.recording,
-                  "A phyphox export (folder, Raw Data.csv or zip) or a t,wx,wy,wz CSV (rad/s)")
+  cmd->add_option("RECORDING", options.recordings,
+                  "A phyphox export (folder, Raw Data.csv or zip) or a t,wx,wy,wz CSV (rad/s); "
+                  "several: recordings of one body fitted together (docs/phone-lab.md, \"A "
+                  "class's recordings\"), into OUT/<first>-and-<N-1>-more-fit.csv")
       ->required();
   cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
   cmd->add_option("--tosses", options.tosses,

@@ -6,6 +6,7 @@
 // file written.
 #include "fit/fit_tables.hpp"
 #include "fit/flights.hpp"
+#include "fit/pool.hpp"
 #include "fit/recording.hpp"
 #include "fit/report.hpp"
 #include "fit/toss_fit.hpp"

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "fit/pool.hpp"
+
 namespace bookspin::fit {
 
 std::string fixed(double value, int digits) {
@@ -11,16 +13,33 @@ std::string fixed(double value, int digits) {
   return text.str();
 }
 
+namespace {
+
+/// Pooled time `t` (s) in its own recording's time, and that recording's name (empty for a
+/// recording not pooled).
+std::pair<double, std::string> own_time(const FitResult& fit, double t) {
+  const RecordingPart* part = part_at(fit.parts, t);
+  if (!part) return {t, {}};
+  return {t - part->t_offset, part->name};
+}
+
+}  // namespace
+
 CsvTable fit_toss_csv(const FitResult& fit) {
   CsvTable table{{"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z",
                   "half_period_measured", "half_period_fitted", "half_period_predicted",
                   "predicted_from_tosses", "predicted_from_seconds", "residual_rms", "L_decay",
                   "drag_rate", "drag_rate_sigma", "saturated", "stable", "poor_fit", "flag"},
                  {}};
+  // Pooled: each toss's recording named, its times its own.
+  const bool pooled = !fit.parts.empty();
+  if (pooled) table.columns.insert(table.columns.begin() + 1, "recording");
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
+    const auto [t_start, recording] = own_time(fit, t.flight.t_start);
+    const double t_end = t.flight.t_end - (t.flight.t_start - t_start);
     table.rows.push_back(
-        {std::to_string(k + 1), shortest_cell(t.flight.t_start), shortest_cell(t.flight.t_end),
+        {std::to_string(k + 1), shortest_cell(t_start), shortest_cell(t_end),
          shortest_cell(t.omega0[0]), shortest_cell(t.omega0[1]), shortest_cell(t.omega0[2]),
          shortest_cell(t.half_period_measured), shortest_cell(t.half_period_fitted),
          shortest_cell(t.half_period_predicted),
@@ -29,6 +48,7 @@ CsvTable fit_toss_csv(const FitResult& fit) {
          shortest_cell(t.L_decay), shortest_cell(t.drag_rate), shortest_cell(t.drag_rate_sigma),
          std::to_string(t.saturated), std::string(t.stable ? "yes" : "no"),
          std::string(t.poor_fit ? "yes" : "no"), t.flag});
+    if (pooled) table.rows.back().insert(table.rows.back().begin() + 1, recording);
   }
   return table;
 }
@@ -74,34 +94,63 @@ CsvTable fit_body_csv(const FitResult& fit) {
 
 std::vector<std::string> fit_summary(const FitResult& fit) {
   std::vector<std::string> lines;
-  const Eigen::Vector3d& bias = fit.search.bias;
-  const auto with_sigma = [&](const Eigen::Vector3d& sigma) {
-    return fixed(bias[0], 4) + " ± " + fixed(sigma[0], 4) + ", " + fixed(bias[1], 4) + " ± " +
-           fixed(sigma[1], 4) + ", " + fixed(bias[2], 4) + " ± " + fixed(sigma[2], 4);
+  const auto with_sigma = [](const Eigen::Vector3d& v, const Eigen::Vector3d& sigma) {
+    return fixed(v[0], 4) + " ± " + fixed(sigma[0], 4) + ", " + fixed(v[1], 4) + " ± " +
+           fixed(sigma[1], 4) + ", " + fixed(v[2], 4) + " ± " + fixed(sigma[2], 4);
   };
-  if (fit.search.rest_samples > 0)
-    lines.push_back("bias (rad/s, the mean of " + std::to_string(fit.search.rest_samples) +
-                    " samples at rest ± their scatter): " + with_sigma(fit.search.bias_sigma));
-  else if (fit.bias_fitted_sigma)
+  const auto three = [](const Eigen::Vector3d& v) {
+    return fixed(v[0], 4) + ", " + fixed(v[1], 4) + ", " + fixed(v[2], 4);
+  };
+  const Eigen::Vector3d& bias = fit.search.bias;  // removed in flight: the rest's + correction
+  const Eigen::Vector3d rest = bias - fit.bias_correction;
+  // Pooled: each recording's own bias, removed before the pooled one was fitted; the flights'
+  // correction is one for all.
+  for (const RecordingPart& part : fit.parts)
+    lines.push_back(
+        part.rest_samples > 0
+            ? "bias of " + part.name + " (rad/s, the mean of " + std::to_string(part.rest_samples) +
+                  " samples at rest ± their scatter): " + with_sigma(part.bias, part.bias_sigma)
+            : "no rest in " + part.name + ": its own bias is not measured");
+  const bool corrected = fit.bias_correction != Eigen::Vector3d::Zero();
+  if (fit.search.rest_samples > 0) {
+    if (fit.parts.empty())
+      lines.push_back(
+          "bias (rad/s, the mean of " + std::to_string(fit.search.rest_samples) +
+          " samples at rest ± their scatter): " + with_sigma(rest, fit.search.bias_sigma));
+    if (corrected)
+      lines.push_back(std::string(fit.parts.empty()
+                                      ? "bias in flight (rad/s): " + three(bias) + ", the rest's"
+                                      : "every recording's bias") +
+                      " corrected by the flights by " + three(fit.bias_correction) +
+                      " (within 3 σ of the rest's scatter)");
+  } else if (fit.bias_fitted_sigma) {
     lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
-                    with_sigma(*fit.bias_fitted_sigma));
-  else if (fit.bias_correction != Eigen::Vector3d::Zero())
+                    with_sigma(bias, *fit.bias_fitted_sigma));
+  } else if (corrected) {
     lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
-                    fixed(bias[0], 4) + ", " + fixed(bias[1], 4) + ", " + fixed(bias[2], 4));
-  else
+                    three(bias));
+  } else {
     lines.push_back("no rest in the recording: the gyroscope's bias is not removed");
+  }
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
     std::string drag;
     if (fit.drag != physics::DragLaw::none)
       drag = ", drag " + fixed(t.drag_rate, 3) +
              (t.drag_rate_sigma ? " ± " + fixed(*t.drag_rate_sigma, 3) : std::string()) + " /s";
-    lines.push_back("kept toss " + std::to_string(k + 1) + ": " + fixed(t.flight.t_start, 3) + "–" +
-                    fixed(t.flight.t_end, 3) + " s" + drag +
-                    (t.stable ? " (stable: no flip)" : "") + (t.poor_fit ? " (flagged)" : ""));
+    const auto [t_start, recording] = own_time(fit, t.flight.t_start);
+    const double t_end = t.flight.t_end - (t.flight.t_start - t_start);
+    lines.push_back("kept toss " + std::to_string(k + 1) + ": " +
+                    (recording.empty() ? "" : recording + " ") + fixed(t_start, 3) + "–" +
+                    fixed(t_end, 3) + " s" + drag + (t.stable ? " (stable: no flip)" : "") +
+                    (t.poor_fit ? " (flagged)" : ""));
   }
-  for (const DroppedStretch& d : fit.search.dropped)
-    lines.push_back("dropped " + fixed(d.t_start, 3) + "–" + fixed(d.t_end, 3) + " s: " + d.reason);
+  for (const DroppedStretch& d : fit.search.dropped) {
+    const auto [t_start, recording] = own_time(fit, d.t_start);
+    const double t_end = d.t_end - (d.t_start - t_start);
+    lines.push_back("dropped " + (recording.empty() ? "" : recording + " ") + fixed(t_start, 3) +
+                    "–" + fixed(t_end, 3) + " s: " + d.reason);
+  }
   const BodyEstimate& b = fit.body;
   std::string sigma;
   if (b.ratio_sigma && !b.moments_fixed)

@@ -10,6 +10,21 @@
 
 namespace bookspin::fit {
 
+/// One recording of several pooled into one (pool_recordings): its samples first … last of the
+/// pooled recording, at its own time + t_offset, with its own bias already removed.
+struct RecordingPart {
+  std::string name;         ///< the recording's own name
+  std::string source;       ///< its file
+  double t_offset = 0.0;    ///< s added to its times
+  double t_start = 0.0;     ///< s: its first sample's pooled time
+  int first = 0, last = 0;  ///< its samples in the pooled recording (inclusive)
+  /// rad/s, phone frame: the bias removed from its samples (its rest's mean; 0 without rest),
+  /// the scatter of its samples at rest, and how many there were (fit/flights.hpp).
+  Eigen::Vector3d bias = Eigen::Vector3d::Zero();
+  Eigen::Vector3d bias_sigma = Eigen::Vector3d::Zero();
+  int rest_samples = 0;
+};
+
 /// One recording: the body-frame angular velocity as the gyroscope measured it, in the phone's
 /// own axes (x to the right of the screen, y up the screen, z out of it).
 struct GyroRecording {
@@ -19,6 +34,9 @@ struct GyroRecording {
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame, as measured (bias included)
   /// Experiment times (s) at which the recording was paused: no flight spans one.
   std::vector<double> pauses;
+  /// Several recordings of one body pooled (pool_recordings): each one's part; empty for a
+  /// recording as read.
+  std::vector<RecordingPart> parts;
 };
 
 /// Reads `path`: a phyphox export folder (holding `Raw Data.csv`, optionally `meta/time.csv`),

@@ -508,6 +508,7 @@ void measured_omega(const GyroRecording& recording, const FitResult& fit, int to
 FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
                         const FitSettings& settings) {
   FitResult result;
+  result.parts = recording.parts;
   result.search = search;
   result.drag = settings.drag;
   if (search.flights.empty()) {

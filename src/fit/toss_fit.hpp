@@ -96,6 +96,8 @@ struct FitResult {
   /// bias"): the rest's mean and its scatter (search.bias_sigma) where the recording has a rest;
   /// with none, fitted from the flights themselves (bias_correction, with two or more tosses).
   FlightSearch search;
+  /// The recordings pooled into the one fitted (GyroRecording::parts); empty for one recording.
+  std::vector<RecordingPart> parts;
   Eigen::Vector3d bias_correction = Eigen::Vector3d::Zero();  ///< rad/s, phone frame
   /// rad/s, phone frame: the fitted bias's standard error, where it was fitted from the flights
   /// (no rest, two or more tosses) and the fit's covariance exists.

@@ -107,6 +107,8 @@ JsonObject fit_head(const FitJob& job) {
     for (int c = 0; c < 3; ++c) append(recording.omega[i][c]);
   }
   for (double pause : recording.pauses) append(pause);
+  // Pooled: the recordings' names too (they name each toss's recording in the tables).
+  for (const fit::RecordingPart& part : recording.parts) samples += part.name + '\n';
   // The program next, as every scene product's head has it: a rebuilt bookspin fits again.
   members.insert(members.end(),
                  {{"bookspin",
