@@ -44,13 +44,15 @@ class Fit:
     curve (M, 3); flips (K,) s."""
 
 def fit(
-    recording: Union[str, os.PathLike[str], tuple[ArrayLike, ArrayLike]],
+    recording: Union[
+        str, os.PathLike[str], tuple[ArrayLike, ArrayLike], Sequence[Union[str, os.PathLike[str]]]
+    ],
     drag: str = "linear",
     tosses: Optional[Sequence[tuple[float, float]]] = None,
     moments: Optional[ArrayLike] = None,
 ) -> Fit:
     """A phyphox export, a t,wx,wy,wz CSV, or (t (N,) s, omega (N, 3) rad/s phone frame),
-    fitted as `bookspin fit` fits it."""
+    fitted as `bookspin fit` fits it; a list of paths: recordings of one body fitted as one."""
 
 class Frames(Iterator[tuple[float, Image]]):
     """The iterator bookspin.frames returns."""

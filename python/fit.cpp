@@ -30,7 +30,9 @@ Arguments:
   recording  a phyphox export (its folder, its "Raw Data.csv" or a zip of it) or a CSV with
              the header t,wx,wy,wz (a str or os.PathLike); or a pair (t, omega) of arrays,
              t (N,) in s, strictly increasing, and omega (N, 3) in rad/s, the phone frame
-             (x right of the screen, y up it, z out of it), as measured (bias included)
+             (x right of the screen, y up it, z out of it), as measured (bias included);
+             or a list of paths: recordings of one body fitted as one, as
+             `bookspin fit REC1 REC2 ...` does (docs/phone-lab.md, "A class's recordings")
   drag       the air drag's law fitted with each toss: "none", "linear" or "quadratic"
   tosses     the flights by hand, a list of (t_start, t_end) pairs in s (--tosses); None: found
   moments    (3,) principal moments, any scale and order, each > 0 (--moments): fixed, not
@@ -116,6 +118,16 @@ fit::GyroRecording recording_arg(const py::object& recording) {
     throw InputError("recording: expected a path or a (t, omega) pair of arrays, got " +
                      std::string(py::str(py::type::handle_of(recording).attr("__name__"))));
   const py::sequence pair = recording;
+  // A list of paths: recordings of one body fitted as one (`bookspin fit REC1 REC2 ...`).
+  std::vector<fit::GyroRecording> several;
+  for (const py::handle item : pair) {
+    bool item_is_path = false;
+    const std::string item_path = path_text(py::reinterpret_borrow<py::object>(item), item_is_path);
+    if (!item_is_path) break;
+    several.push_back(fit::read_recording(item_path));
+  }
+  if (!several.empty() && several.size() == pair.size())
+    return several.size() == 1 ? several.front() : fit::pool_recordings(several);
   if (pair.size() != 2)
     throw InputError("recording: expected a (t, omega) pair, got " + std::to_string(pair.size()) +
                      " items");

@@ -117,6 +117,19 @@ def test_arrays_fit_as_the_command_fits_their_csv(bookspin, tmp_path, drag):
     assert from_arrays.body["I2_over_I3"] == pytest.approx(2.6 / 3.4, rel=0.01)
 
 
+def test_a_list_of_recordings_fits_as_one_body_as_the_command_fits_them(bookspin, tmp_path):
+    t, omega = made_recording(bookspin)
+    first, second = tmp_path / "first.csv", tmp_path / "second.csv"
+    write_recording(first, t[t < 2.2], omega[t < 2.2])
+    write_recording(second, t[t >= 2.2], omega[t >= 2.2])
+    pooled = bookspin.fit([first, str(second)])
+    assert pooled.recording == "first-and-1-more"
+    assert [row["recording"] for row in pooled.tosses] == ["first", "second"]
+    assert_fit_equals_cli(pooled, cli_fit(tmp_path, first, second))
+    assert pooled.body["I1_over_I3"] == pytest.approx(1 / 3.4, rel=0.01)
+    assert pooled.body["I2_over_I3"] == pytest.approx(2.6 / 3.4, rel=0.01)
+
+
 def test_tosses_and_moments_by_hand_as_the_command_takes_them(bookspin, tmp_path):
     t, omega = made_recording(bookspin)
     path = tmp_path / "recording.csv"
