@@ -31,7 +31,8 @@ using bookspin::web::guarded;
 using emscripten::val;
 namespace fit = bookspin::fit;
 
-/// The folder the recordings are written into (the module's MEMFS); each fit empties it.
+/// The folder the recordings are written into (the module's MEMFS), one slot per file; each
+/// fit empties it.
 constexpr const char* kFolder = "/recording";
 
 /// One CSV cell as the page's value: an empty cell null, a number a number, text as text.
@@ -128,54 +129,116 @@ val toss_scene_data(const fit::TossScene& scene) {
 }
 
 /// The recording `bytes` (a phyphox zip, its Raw Data.csv, or a t,wx,wy,wz CSV), named
-/// `file_name` (a file's name, or a folder's and a file's: "export/Raw Data.csv"), fitted as
-/// `bookspin fit FILE --drag DRAG` does: {body: the -fit-body.csv row keyed by its columns, tosses:
-/// the -fit.csv rows, summary: the lines the command prints before "wrote …", charts: per toss {t,
-/// measured, fitted}, scenes: per toss the page's scene data (an empty array where the fitted
-/// moments make no body, as the command writes no scene)}, or {error}.
+/// `file_name` (a file's name, or a folder's and a file's: "export/Raw Data.csv"), written into
+/// the module's memory (slot `slot` of kFolder: several files kept apart) and read as
+/// `bookspin fit FILE` reads it. Throws InputError as the command line's reader does.
+fit::GyroRecording read_given(const std::string& file_name, const std::string& bytes, int slot) {
+  // The file's name, and its folder's where the page was given one ("export/Raw Data.csv"):
+  // a Raw Data.csv's recording is named after its folder, as on the command line.
+  const std::filesystem::path given(file_name);
+  const std::filesystem::path name = given.filename();
+  const std::filesystem::path folder = given.parent_path().filename();
+  if (name.empty() || name == "." || name == ".." || folder == "." || folder == "..")
+    throw InputError("\"" + file_name + "\": not a file name");
+  const std::filesystem::path path = folder / name;
+  const std::filesystem::path here = std::filesystem::path(kFolder) / std::to_string(slot);
+  std::filesystem::create_directories(here / folder);
+  std::filesystem::current_path(here);
+  {
+    std::ofstream file(path, std::ios::binary);
+    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!file) throw std::runtime_error("cannot write the recording into memory");
+  }
+  return fit::read_recording(path);
+}
+
+/// `drag` as the command line's --drag takes it.
+bookspin::physics::DragLaw drag_arg(const std::string& drag) {
+  bookspin::physics::DragLaw law = bookspin::physics::DragLaw::linear;
+  if (!bookspin::physics::parse_drag_law(drag, law))
+    throw InputError("--drag: \"" + drag + "\" is not none, linear or quadratic");
+  return law;
+}
+
+/// Empties kFolder (the folder in use cannot be removed: the root first).
+void clear_memory() {
+  std::filesystem::current_path("/");
+  std::filesystem::remove_all(kFolder);
+}
+
+/// The fit of `recording` under `law` as the page's value: {recording, body (the -fit-body.csv
+/// row keyed by its columns), tosses (the -fit.csv rows), summary (the lines the command prints
+/// before "wrote …"), charts (per toss {t, measured, fitted}), scenes (per toss the page's scene
+/// data; an empty array where the fitted moments make no body, as the command writes no
+/// scene)}.
+val report_value(const fit::GyroRecording& recording, bookspin::physics::DragLaw law) {
+  fit::FitRequest request;
+  request.settings.drag = law;
+  const fit::FitReport report = fit::fit_report(recording, request);
+  std::vector<val> charts, scenes;
+  for (const fit::TossReport& toss : report.tosses) {
+    charts.push_back(chart_data(toss.chart));
+    if (toss.scene) scenes.push_back(toss_scene_data(*toss.scene));
+  }
+  val summary = val::array();
+  for (const std::string& line : report.summary) summary.call<void>("push", line);
+  val out = val::object();
+  out.set("recording", report.recording);
+  out.set("body", keyed_rows(report.body_csv).at(0));
+  out.set("tosses", array_of(keyed_rows(report.toss_csv)));
+  out.set("summary", summary);
+  out.set("charts", array_of(charts));
+  out.set("scenes", array_of(scenes));
+  return out;
+}
+
+/// `bookspin fit FILE --drag DRAG`: report_value of the recording `bytes` named `file_name`
+/// (read_given), or {error}.
 val fit_recording(const std::string& file_name, const std::string& bytes, const std::string& drag) {
   return guarded([&] {
-    // The file's name, and its folder's where the page was given one ("export/Raw Data.csv"):
-    // a Raw Data.csv's recording is named after its folder, as on the command line.
-    const std::filesystem::path given(file_name);
-    const std::filesystem::path name = given.filename();
-    const std::filesystem::path folder = given.parent_path().filename();
-    if (name.empty() || name == "." || name == ".." || folder == "." || folder == "..")
-      throw InputError("\"" + file_name + "\": not a file name");
-    const std::filesystem::path path = folder / name;
-    bookspin::physics::DragLaw law = bookspin::physics::DragLaw::linear;
-    if (!bookspin::physics::parse_drag_law(drag, law))
-      throw InputError("--drag: \"" + drag + "\" is not none, linear or quadratic");
-    std::filesystem::current_path("/");  // the folder in use cannot be removed
-    std::filesystem::remove_all(kFolder);
-    std::filesystem::create_directories(std::filesystem::path(kFolder) / folder);
-    std::filesystem::current_path(kFolder);
-    {
-      std::ofstream file(path, std::ios::binary);
-      file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-      if (!file) throw std::runtime_error("cannot write the recording into memory");
+    const bookspin::physics::DragLaw law = drag_arg(drag);
+    clear_memory();
+    return report_value(read_given(file_name, bytes, 0), law);
+  });
+}
+
+/// `bookspin fit FILE1 FILE2 … --drag DRAG` (docs/phone-lab.md, "A class's recordings"):
+/// `files` an array of {name, bytes} (as fit_recording's); each read, those that cannot be read
+/// refused and the others fitted as one body (fit::pool_recordings; alone, as fit_recording).
+/// report_value plus fitted (the names fitted) and refused ([{file, error}: the command line's
+/// one line]); {error} when none can be read or the fit fails.
+val fit_recordings(const val& files, const std::string& drag) {
+  return guarded([&] {
+    const bookspin::physics::DragLaw law = drag_arg(drag);
+    clear_memory();
+    const int count = files["length"].as<int>();
+    std::vector<fit::GyroRecording> read;
+    val fitted = val::array(), refused = val::array();
+    std::string first_error;
+    for (int i = 0; i < count; ++i) {
+      const std::string name = files[i]["name"].as<std::string>();
+      try {
+        read.push_back(read_given(name, files[i]["bytes"].as<std::string>(), i));
+        fitted.call<void>("push", name);
+      } catch (const InputError& e) {
+        if (first_error.empty()) first_error = e.what();
+        val line = val::object();
+        line.set("file", name);
+        line.set("error", std::string(e.what()));
+        refused.call<void>("push", line);
+      }
     }
-    fit::FitRequest request;
-    request.settings.drag = law;
-    const fit::FitReport report = fit::fit_report(fit::read_recording(path), request);
-    std::vector<val> charts, scenes;
-    for (const fit::TossReport& toss : report.tosses) {
-      charts.push_back(chart_data(toss.chart));
-      if (toss.scene) scenes.push_back(toss_scene_data(*toss.scene));
-    }
-    val summary = val::array();
-    for (const std::string& line : report.summary) summary.call<void>("push", line);
-    val out = val::object();
-    out.set("recording", report.recording);
-    out.set("body", keyed_rows(report.body_csv).at(0));
-    out.set("tosses", array_of(keyed_rows(report.toss_csv)));
-    out.set("summary", summary);
-    out.set("charts", array_of(charts));
-    out.set("scenes", array_of(scenes));
+    if (read.empty()) throw InputError(count ? first_error : "no recording given");
+    val out = report_value(read.size() == 1 ? read.front() : fit::pool_recordings(read), law);
+    out.set("fitted", fitted);
+    out.set("refused", refused);
     return out;
   });
 }
 
 }  // namespace
 
-EMSCRIPTEN_BINDINGS(bookspin_fit) { emscripten::function("fitRecording", &fit_recording); }
+EMSCRIPTEN_BINDINGS(bookspin_fit) {
+  emscripten::function("fitRecording", &fit_recording);
+  emscripten::function("fitRecordings", &fit_recordings);
+}

@@ -20,8 +20,13 @@ as a zip), under each drag law the command line offers (--drag linear, quadratic
     zone too;
   - every bad recording of tests/bad_recordings/ (those without extra arguments): the hook
     rejects with the command line's one line, and the panel shows it;
+  - a class's recordings (the sample's Raw Data.csv cut into three one-throw recordings) with a
+    bad one among them, through window.explorer.fitRecordings and through the file input
+    (several files at once): the three fitted as one body equal `bookspin fit S1 S2 S3`'s tables
+    and summary, and the bad one is refused with the command line's line for it;
   - explorer.html#lab opens the panel; no console error.
-Screenshots: BINARY_DIR/test-output/browser/explorer-lab-{1280x720,390x844}.png.
+Screenshots: BINARY_DIR/test-output/browser/explorer-lab-{1280x720,390x844}.png, and the class's
+fit explorer-lab-class-1280x720.png.
 
 TOL: the two fits are the same code and solver, the native one with Ceres's fixed-size Schur
 specializations and threads and glibc's libm, the page's with the dynamic-size Schur solver,
@@ -209,6 +214,26 @@ def main():
         shutil.copy(recording, recordings / recording.name)
         bad_cases[recording.name] = expected.read_text().strip().replace("{FILE}", recording.name)
 
+    # A class's recordings: the sample's Raw Data.csv cut into three one-throw recordings, fitted
+    # by the command line as one body; and a bad recording among them for the page.
+    raw = (sample / "Raw Data.csv").read_text().splitlines()
+    class_names = []
+    for k, (a, b) in enumerate([(0.0, 3.8), (3.8, 6.5), (6.6, 9.3)]):
+        rows = [r for r in raw[1:] if a <= float(r.split(",")[0]) < b]
+        name = f"student{k + 1}.csv"
+        (recordings / name).write_text("\n".join([raw[0], *rows]) + "\n")
+        class_names.append(name)
+    folder = out / "cli" / "class"
+    r = subprocess.run([bookspin, "fit", *class_names, "-o", str(folder)], cwd=recordings,
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        fail(f"bookspin fit {' '.join(class_names)}: exit {r.returncode}: {r.stderr}")
+    class_summary = [line for line in r.stdout.splitlines()
+                     if not line.startswith(("wrote ", "to play the tosses", "no scene of the tosses"))]
+    class_cli = (read_csv(folder / "student1-and-2-more-fit-body.csv"),
+                 read_csv(folder / "student1-and-2-more-fit.csv"))
+    bad_name, bad_line = next(iter(bad_cases.items()))
+
     with serve(out) as base_url, \
             open_browser(chromium, driver_path, size=(1280, 720), exact_viewport=True) as driver:
         driver.get(base_url + "explorer.html?scene=exact-unstable-x#lab")
@@ -246,6 +271,42 @@ def main():
             if got.get("ok") or got["error"] != line:
                 fail(f"{name}: the page said {got.get('error')!r}, the command line {line!r}")
         print(f"bad recordings: {len(bad_cases)} refused with the command line's line")
+
+        # 2b. A class's recordings: one body, the bad one refused with its line.
+        files = [*class_names[:2], bad_name, class_names[2]]
+        got = driver.execute_async_script("""
+            const [base, names, done] = arguments;
+            Promise.all(names.map((n) => fetch(base + 'recordings/' + n).then((r) => r.arrayBuffer())
+                .then((b) => ({name: n, bytes: new Uint8Array(b)}))))
+              .then((files) => window.explorer.fitRecordings(files, 'linear'))
+              .then((r) => done({ok: true, r}), (e) => done({ok: false, error: String(e.message)}));
+        """, base_url, files)
+        if not got["ok"]:
+            fail(f"the class's recordings: the page refused them: {got['error']}")
+        r = got["r"]
+        if r["fitted"] != class_names or r["refused"] != [{"file": bad_name, "error": bad_line}]:
+            fail(f"the class's recordings: fitted {r['fitted']}, refused {r['refused']}")
+        (bh, brows), (th, trows) = class_cli
+        compare_row("the class's body", r["body"], bh, brows[0])
+        if len(r["tosses"]) != len(trows):
+            fail(f"the class's recordings: {len(r['tosses'])} tosses in the page, {len(trows)} by bookspin fit")
+        for k, (page_row, cli_row) in enumerate(zip(r["tosses"], trows)):
+            compare_row(f"the class's toss {k + 1}", page_row, th, cli_row)
+        if r["summary"] != class_summary:
+            fail(f"the class's recordings: the page's summary {r['summary']} is not the command's {class_summary}")
+        driver.execute_script("document.getElementById('labClose').click()")
+        driver.execute_script("document.getElementById('labOpen').click()")
+        driver.find_element(By.ID, "labFile").send_keys(
+            "\n".join(str((recordings / n).resolve()) for n in files))
+        if not wait_for(driver, "return !document.getElementById('labResult').hidden", bool, 120):
+            fail(f"the panel showed no fit of the class: {driver.find_element(By.ID, 'labError').text}")
+        shown = driver.find_element(By.ID, "labSummary").text
+        for line in (f"fitted as one body: {', '.join(class_names)}", f"refused {bad_name}: {bad_line}"):
+            if line not in shown:
+                fail(f"the panel does not say {line!r}: {shown!r}")
+        driver.save_screenshot(str(shots / "explorer-lab-class-1280x720.png"))
+        print(f"a class's recordings: {len(trows)} tosses of {len(class_names)} recordings fitted as "
+              f"one body as bookspin fit fits them, {bad_name} refused with its line")
 
         # 3. Play a toss: the scene chosen, its measured ω drawn.
         driver.execute_script("document.getElementById('labClose').click()")

@@ -70,6 +70,9 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
      * ω, scenes: each toss as the page's scene data}; rejected with the command line's one
      * line (without "bookspin: error: ") for a bad file. */
     fitRecording: (fileName, text, drag = 'linear') => app.lab.fit(fileName, text, drag),
+    /** `bookspin fit FILE1 FILE2 … --drag DRAG` in the page: `files` [{name, bytes}]; a promise
+     * of fitRecording's value plus fitted and refused ([{file, error}]) (lab.js fitMany). */
+    fitRecordings: (files, drag = 'linear') => app.lab.fitMany(files, drag),
     /** Plays `scene` (one of fitRecording's scenes) as the lab's Play button does. */
     playToss: (scene) => app.lab.play(scene),
     /** ns per step of a run of `steps` steps (make bench-explorer); the exact model, which the

@@ -75,7 +75,7 @@ export class JudgePanel {
     menu.addEventListener('change', () => this.clear());
     $('judgeJson').addEventListener('click', () => this.exportFile('json'));
     $('judgeExact').addEventListener('click', () => this.exportFile('csv'));
-    takeFiles($('judgeFile'), $('judgeDrop'), (file) => this.judgeFile(file));
+    takeFiles($('judgeFile'), $('judgeDrop'), (files) => this.judgeFile(files[0]));
     // A link to the panel: explorer.html#judge opens it (the gallery's kit section links it),
     // once the page has its state.
     if (location.hash === '#judge') queueMicrotask(() => this.open(currentScene()));

@@ -12,7 +12,7 @@ const $ = (id) => document.getElementById(id);
 const OMEGA_COLOURS = ['#ff6060', '#60d060', '#6090ff'];
 /** What each toss column says (docs/outputs.md, "The fit"). */
 const TOSS_WORDS = {
-  t_start: 'start (s)', t_end: 'end (s)', omega0_x: 'ω0 x (rad/s)', omega0_y: 'ω0 y (rad/s)',
+  recording: 'its recording', t_start: 'start (s)', t_end: 'end (s)', omega0_x: 'ω0 x (rad/s)', omega0_y: 'ω0 y (rad/s)',
   omega0_z: 'ω0 z (rad/s)', half_period_measured: 'T/2 measured (s)', half_period_fitted: 'T/2 fitted (s)',
   half_period_predicted: 'T/2 predicted (s)', predicted_from_tosses: 'predicted from (tosses)',
   predicted_from_seconds: 'predicted from (s of flight)', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
@@ -87,7 +87,7 @@ export class LabPanel {
     $('labOpen').addEventListener('click', () => this.open());
     $('labClose').addEventListener('click', () => this.close());
     window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('lab').hidden) this.close(); });
-    takeFiles($('labFile'), $('labDrop'), (file) => this.fitFile(file));
+    takeFiles($('labFile'), $('labDrop'), (files) => this.fitFiles(files));
     // A link to the panel: explorer.html#lab opens it (the gallery's lab section links it).
     if (location.hash === '#lab') queueMicrotask(() => this.open());
   }
@@ -118,12 +118,32 @@ export class LabPanel {
     });
   }
 
-  /** A file chosen or dropped: read as bytes, fitted, shown. */
-  fitFile(file) {
+  /** Several recordings of one body (`bookspin fit FILE1 FILE2 … --drag DRAG`, docs/phone-lab.md,
+   * "A class's recordings"): `files` an array of {name, bytes}; a promise of fit()'s value plus
+   * fitted (the names fitted) and refused ([{file, error}]), those that cannot be read left out;
+   * rejected when none can be read. */
+  fitMany(files, drag = 'linear') {
+    return new Promise((resolve, reject) => {
+      setTimeout(() => {
+        try {
+          const r = this.wasm.fitRecordings(files, String(drag));
+          if (r.error) reject(new Error(r.error)); else resolve(r);
+        } catch (e) { reject(e); }
+      }, 0);
+    });
+  }
+
+  /** Files chosen or dropped: read as bytes, fitted (several as one body), shown. */
+  fitFiles(files) {
     this.clear();
-    $('labBusy').textContent = `fitting ${file.name}…`;
+    const names = files.map((f) => f.webkitRelativePath || f.name);
+    $('labBusy').textContent = `fitting ${names.join(', ')}…`;
     const started = performance.now();
-    file.arrayBuffer().then((buffer) => this.fit(file.webkitRelativePath || file.name, new Uint8Array(buffer), $('labDrag').value))
+    const drag = $('labDrag').value;
+    Promise.all(files.map((f) => f.arrayBuffer()))
+      .then((buffers) => (files.length === 1
+        ? this.fit(names[0], new Uint8Array(buffers[0]), drag)
+        : this.fitMany(buffers.map((b, k) => ({ name: names[k], bytes: new Uint8Array(b) })), drag)))
       .then((r) => { this.show(r, performance.now() - started); })
       .catch((e) => { $('labError').textContent = `error: ${e.message}`; })
       .finally(() => { $('labBusy').textContent = ''; });
@@ -138,7 +158,10 @@ export class LabPanel {
       `<tr><th>I1 : I2 : I3</th><td>${cell(b.I1_over_I3)}${sigma('I1_sigma')} : ${cell(b.I2_over_I3)}${sigma('I2_sigma')} : 1 (${cell(b.moments)})</td></tr>` +
       [1, 2, 3].map((a) => `<tr><th>axis ${a} (phone x, y, z)</th><td>(${cell(b[`axis${a}_x`])}, ${cell(b[`axis${a}_y`])}, ${cell(b[`axis${a}_z`])})${b[`axis${a}_sigma_deg`] === null ? '' : ` ± ${cell(b[`axis${a}_sigma_deg`])}°`}</td></tr>`).join('') +
       `<tr><th>tosses, drag</th><td>${cell(b.tosses)}, ${cell(b.drag)}</td></tr>`;
-    $('labSummary').textContent = r.summary.join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
+    // Several files: which were fitted as one body and which were refused, and why.
+    const files = r.fitted ? [`fitted as one body: ${r.fitted.join(', ')}`,
+      ...r.refused.map((x) => `refused ${x.file}: ${x.error}`)] : [];
+    $('labSummary').textContent = [...files, ...r.summary].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
     const list = $('labTosses');
     list.innerHTML = '';
     r.tosses.forEach((t, k) => {
@@ -147,7 +170,7 @@ export class LabPanel {
       const head = document.createElement('div');
       head.className = 'tossHead';
       const title = document.createElement('strong');
-      title.textContent = `toss ${t.toss}: ${cell(t.t_start)}–${cell(t.t_end)} s` +
+      title.textContent = `toss ${t.toss}: ${t.recording ? `${t.recording} ` : ''}${cell(t.t_start)}–${cell(t.t_end)} s` +
         (t.stable === 'yes' ? ' (stable)' : '') + (t.poor_fit === 'yes' ? ' (flagged)' : '');
       head.appendChild(title);
       if (r.scenes[k]) {
