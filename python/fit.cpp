@@ -6,10 +6,13 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "bindings.hpp"
+#include "common/csv_keyed.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
@@ -63,22 +66,25 @@ struct Fit {
   py::list tosses, summary, charts;
 };
 
-/// A CSV cell's text as the value a reader of the CSV gets: None, a float or a str.
-py::object cell_value(const std::string& cell) {
-  if (cell.empty()) return py::none();
-  if (const std::optional<double> value = read_number(cell)) return py::float_(*value);
-  return py::str(cell);
-}
-
 /// The rows of a table's CSV text as the command line writes it (fit::FitReport), read back
-/// into dicts keyed by its header's columns.
+/// (csv_keyed_rows) into dicts keyed by its header's columns: an empty cell None, a number a
+/// float, text a str.
 py::list keyed_rows(const std::string& csv) {
-  const std::vector<std::vector<std::string>> lines = csv_lines(csv);
   py::list rows;
-  for (std::size_t r = 1; r < lines.size(); ++r) {
+  for (const auto& cells : csv_keyed_rows(csv)) {
     py::dict row;
-    for (std::size_t c = 0; c < lines[0].size() && c < lines[r].size(); ++c)
-      row[py::str(lines[0][c])] = cell_value(lines[r][c]);
+    for (const auto& [column, value] : cells)
+      row[py::str(column)] = std::visit(
+          [](const auto& v) -> py::object {
+            using V = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<V, std::monostate>)
+              return py::none();
+            else if constexpr (std::is_same_v<V, double>)
+              return py::float_(v);
+            else
+              return py::str(v);
+          },
+          value);
     rows.append(row);
   }
   return rows;

@@ -15,8 +15,11 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
+#include "common/csv_keyed.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
@@ -35,22 +38,22 @@ namespace fit = bookspin::fit;
 /// fit empties it.
 constexpr const char* kFolder = "/recording";
 
-/// One CSV cell as the page's value: an empty cell null, a number a number, text as text.
-val cell_value(const std::string& cell) {
-  if (cell.empty()) return val::null();
-  if (const std::optional<double> value = bookspin::read_number(cell)) return val(*value);
-  return val(cell);
-}
-
 /// The rows of a table's CSV text as the command line writes it (fit::FitReport), read back
-/// into objects keyed by its header's columns.
+/// (csv_keyed_rows) into objects keyed by its header's columns: an empty cell null, a number a
+/// number, text as text.
 std::vector<val> keyed_rows(const std::string& csv) {
-  const std::vector<std::vector<std::string>> lines = bookspin::csv_lines(csv);
   std::vector<val> rows;
-  for (std::size_t r = 1; r < lines.size(); ++r) {
+  for (const auto& cells : bookspin::csv_keyed_rows(csv)) {
     val row = val::object();
-    for (std::size_t c = 0; c < lines[0].size() && c < lines[r].size(); ++c)
-      row.set(lines[0][c], cell_value(lines[r][c]));
+    for (const auto& [column, value] : cells)
+      row.set(column, std::visit(
+                          [](const auto& v) -> val {
+                            if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>)
+                              return val::null();
+                            else
+                              return val(v);
+                          },
+                          value));
     rows.push_back(row);
   }
   return rows;
