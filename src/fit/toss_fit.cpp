@@ -849,6 +849,29 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     body.notes.push_back(std::to_string(stable_count) +
                          " stable toss(es) (no flip) fitted with the body the others determine");
   }
+  // What the body rests on: the tosses that flip and fit cleanly, and their flight time. None,
+  // or under kShortBasis s of them, pins no body (docs/phone-lab.md, "Flags").
+  if (!fixed && stable_count < static_cast<int>(data.size())) {
+    int good = 0;
+    double good_seconds = 0.0;
+    for (const TossFit& toss : result.tosses)
+      if (!toss.stable && !toss.poor_fit)
+        ++good, good_seconds += toss.flight.t_end - toss.flight.t_start;
+    char line[240];
+    if (good == 0) {
+      body.moments_determined = false;
+      body.notes.push_back(
+          "no toss both flips and fits cleanly (every flipping toss is flagged): the moment "
+          "ratios are poorly determined");
+    } else if (good_seconds < kShortBasis) {
+      body.moments_determined = false;
+      std::snprintf(line, sizeof line,
+                    "the body rests on %d clean flipping toss(es), %.2f s of flight (under %.1f "
+                    "s): the moment ratios are poorly determined",
+                    good, good_seconds, kShortBasis);
+      body.notes.push_back(line);
+    }
+  }
   if (data.size() < 2 && !fixed)
     body.notes.push_back("one toss: no half_period_predicted (it needs the other tosses' body)");
   if (fixed) {
