@@ -1,0 +1,80 @@
+// The flags' noise floor (docs/phone-lab.md, "Flags"): a 50 ms block of the residual is a knock
+// only when its RMS |r| is over four times the flight's median block and over the gyroscope's
+// scatter at rest, 5σ per component (|r| = 5√3 σ). Hand-made noise: σ = 0.02 rad/s at rest,
+// 0.002 rad/s in flight, and a 0.1 s burst in the middle of one flight.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "fit/flights.hpp"
+#include "fit/recording.hpp"
+#include "fit/toss_fit.hpp"
+#include "synthetic_recording.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+constexpr double kRestSigma = 0.02;     // rad/s per component, at rest
+constexpr double kFlightSigma = 0.002;  // rad/s per component, in flight
+
+/// Three noiseless flights of a phone on a book; at rest (|ω − bias| < 0.25 rad/s outside the
+/// flights) the bias plus white noise of kRestSigma, in flight kFlightSigma, and in toss 2's
+/// flight from 0.5 to 0.6 s a burst of `burst` rad/s per component on top.
+struct Made {
+  GyroRecording recording;
+  std::vector<std::pair<double, double>> ranges;
+};
+Made with_burst(double burst) {
+  const test::SyntheticRecording s = test::make_recording(
+      test::phone_on_book(),
+      {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.3}, {{0.6, -13.0, -0.5}, 1.1}}, 5, 0.0);
+  Made made{test::as_recording(s), {}};
+  for (const test::TrueToss& t : s.tosses) made.ranges.emplace_back(t.t_start, t.t_end);
+  std::mt19937 random(11);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  for (std::size_t i = 0; i < s.t.size(); ++i) {
+    const double t = s.t[i];
+    const Eigen::Vector3d e(gauss(random), gauss(random), gauss(random));
+    int in = -1;
+    for (std::size_t k = 0; k < made.ranges.size(); ++k)
+      if (t >= made.ranges[k].first && t <= made.ranges[k].second) in = static_cast<int>(k);
+    Eigen::Vector3d& w = made.recording.omega[i];
+    if (in < 0) {
+      if ((w - s.bias).norm() < 0.25) w = s.bias + kRestSigma * e;
+      continue;
+    }
+    w += kFlightSigma * e;
+    const double tau = t - made.ranges[in].first;
+    if (in == 1 && tau >= 0.5 && tau < 0.6)
+      w += burst * Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
+  }
+  return made;
+}
+
+FitResult fit_of(const Made& made) {
+  FitSettings settings;
+  settings.drag = physics::DragLaw::none;
+  return fit_recording(made.recording, hand_flights(made.recording, made.ranges), settings);
+}
+
+// A burst of 0.03 rad/s per component (|r| ≈ 0.05) is ~15 times the flight's typical block
+// but under the floor 5√3 · 0.02 ≈ 0.17 rad/s: not flagged. One of 0.2 rad/s (|r| ≈ 0.35) is
+// over both: flagged, as a knock (the middle of the flight).
+TEST(ResidualFlags, ABurstUnderFiveSigmaOfTheRestNoiseIsNotAKnockAndOneOverItIs) {
+  const double floor = 5.0 * std::sqrt(3.0) * kRestSigma;
+  const FitResult quiet = fit_of(with_burst(0.03));
+  ASSERT_EQ(quiet.tosses.size(), 3u);
+  ASSERT_LT(std::sqrt(3.0) * 0.03 * 1.5, floor);  // the burst's |r| well under the floor
+  for (const TossFit& toss : quiet.tosses) EXPECT_FALSE(toss.poor_fit) << toss.flag;
+  const FitResult loud = fit_of(with_burst(0.2));
+  ASSERT_EQ(loud.tosses.size(), 3u);
+  ASSERT_GT(std::sqrt(3.0) * 0.2 * 0.7, floor);  // well over it
+  EXPECT_FALSE(loud.tosses[0].poor_fit) << loud.tosses[0].flag;
+  EXPECT_TRUE(loud.tosses[1].poor_fit);
+  EXPECT_NE(loud.tosses[1].flag.find("a knock"), std::string::npos) << loud.tosses[1].flag;
+  EXPECT_FALSE(loud.tosses[2].poor_fit) << loud.tosses[2].flag;
+}
+
+}  // namespace
+}  // namespace bookspin::fit
