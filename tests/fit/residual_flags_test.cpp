@@ -21,12 +21,13 @@ constexpr double kFlightSigma = 0.002;  // rad/s per component, in flight
 
 /// Three noiseless flights of a phone on a book; at rest (|ω − bias| < 0.25 rad/s outside the
 /// flights) the bias plus white noise of kRestSigma, in flight kFlightSigma, and in toss 2's
-/// flight from 0.5 to 0.6 s a burst of ±`burst` rad/s per component on top, alternating.
+/// flight from `from` to `to` s (0.5 to 0.6 s by default) a burst of ±`burst` rad/s per
+/// component on top, alternating.
 struct Made {
   GyroRecording recording;
   std::vector<std::pair<double, double>> ranges;
 };
-Made with_burst(double burst) {
+Made with_burst(double burst, double from = 0.5, double to = 0.6) {
   const test::SyntheticRecording s = test::make_recording(
       test::phone_on_book(),
       {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.3}, {{0.6, -13.0, -0.5}, 1.1}}, 5, 0.0);
@@ -48,7 +49,7 @@ Made with_burst(double burst) {
     }
     w += kFlightSigma * e;
     const double tau = t - made.ranges[in].first;
-    if (in == 1 && tau >= 0.5 && tau < 0.6)
+    if (in == 1 && tau >= from && tau < to)
       w += burst * ((burst_samples++ % 2) ? 1.0 : -1.0) * Eigen::Vector3d(1.0, -1.0, 1.0);
   }
   return made;
@@ -78,6 +79,29 @@ TEST(ResidualFlags, ABurstUnderFiveSigmaOfTheRestNoiseIsNotAKnockAndOneOverItIs)
   EXPECT_TRUE(loud.tosses[1].poor_fit);
   EXPECT_NE(loud.tosses[1].flag.find("a knock"), std::string::npos) << loud.tosses[1].flag;
   EXPECT_FALSE(loud.tosses[2].poor_fit) << loud.tosses[2].flag;
+}
+
+// The residual's 50 ms blocks over the flight's samples: a burst within the second block is
+// "the throw", within the second-to-last "a catch" (docs/phone-lab.md, "Flags": near the start,
+// near the end), as the flight's samples place the blocks here.
+TEST(ResidualFlags, ABurstNearTheStartIsTheThrowAndNearTheEndACatch) {
+  const Made plain = with_burst(0.0);
+  double first = -1.0, last = -1.0;  // toss 2's first and last sample, s from its start
+  for (double t : plain.recording.t)
+    if (t >= plain.ranges[1].first && t <= plain.ranges[1].second) {
+      if (first < 0) first = t - plain.ranges[1].first;
+      last = t - plain.ranges[1].first;
+    }
+  const int blocks = static_cast<int>((last - first) / 0.05);
+  const double width = (last - first) / blocks;
+  ASSERT_GE(blocks, 20);
+  const auto burst_in = [&](int block) {
+    const double start = first + block * width;
+    return fit_of(with_burst(0.3, start + 0.05 * width, start + 0.95 * width)).tosses.at(1);
+  };
+  const TossFit near_start = burst_in(1), near_end = burst_in(blocks - 2);
+  EXPECT_EQ(near_start.flag.rfind("the throw inside the flight?", 0), 0u) << near_start.flag;
+  EXPECT_EQ(near_end.flag.rfind("a catch inside the flight?", 0), 0u) << near_end.flag;
 }
 
 }  // namespace
