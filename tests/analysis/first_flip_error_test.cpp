@@ -36,10 +36,12 @@ TEST(FirstFlipError, IsTheRelativeDifferenceOfTheFirstTurnOvers) {
   EXPECT_NEAR(*c.first_flip_error, expected, 2.0 * s.dt / closed.first_flip);
   // ... and its column holds it.
   const CsvTable table = judgement_table(s, {{"run.csv", "run", c}});
-  for (std::size_t i = 0; i < table.columns.size(); ++i)
-    if (table.columns[i] == "first_flip_error")
+  for (std::size_t i = 0; i < table.columns.size(); ++i) {
+    if (table.columns[i] == "first_flip_error") {
       EXPECT_NEAR(*std::get<CsvNumber>(table.rows.at(0).at(i)).value, expected,
                   2.0 * s.dt / closed.first_flip);
+    }
+  }
 }
 
 }  // namespace
