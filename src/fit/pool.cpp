@@ -35,6 +35,7 @@ GyroRecording pool_recordings(const std::vector<GyroRecording>& recordings) {
     part.bias = own.bias;
     part.bias_sigma = own.bias_sigma;
     part.rest_samples = own.rest_samples;
+    part.gyroscope_range = recording.gyroscope_range;
     for (std::size_t i = 0; i < recording.t.size(); ++i) {
       pooled.t.push_back(recording.t[i] + part.t_offset);
       pooled.omega.push_back(recording.omega[i] - own.bias);

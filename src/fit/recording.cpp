@@ -267,6 +267,32 @@ std::vector<double> parse_time_csv(std::string_view text, const std::string& fil
   return pauses;
 }
 
+std::optional<double> parse_device_csv(std::string_view text, const std::string& file) {
+  text = without_bom(text);
+  if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
+  const auto lines = lines_of(text);
+  if (lines.empty()) return std::nullopt;
+  const std::string_view head = lines.front().second;
+  const char separator = head.find('\t') != std::string_view::npos  ? '\t'
+                         : head.find(';') != std::string_view::npos ? ';'
+                                                                    : ',';
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto& [number, line] = lines[i];
+    const std::vector<std::string> cells = split_cells(line, separator);
+    if (cells.size() < 2 || lower(cells[0]) != "gyroscope range") continue;
+    const std::string& cell = cells[1];
+    if (cell.empty() || cell == "null") return std::nullopt;
+    // Java's Float.toString: a decimal point whatever the export's separator.
+    std::optional<double> range = parse_number(cell, false);
+    if (!range) range = parse_number(cell, true);
+    if (!range || !std::isfinite(*range) || !(*range > 0.0))
+      throw InputError(file, number, cells[0],
+                       "not a positive number of rad/s: " + quoted_cell(cell));
+    return range;
+  }
+  return std::nullopt;
+}
+
 GyroRecording read_recording(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   std::error_code error;
@@ -288,6 +314,8 @@ GyroRecording read_recording(const std::filesystem::path& path) {
     GyroRecording recording = parse_gyro_csv(*raw, path.string() + ":Raw Data.csv", name);
     if (const std::optional<std::string> time = zip_entry(path, "meta/time.csv"))
       recording.pauses = parse_time_csv(*time, path.string() + ":meta/time.csv");
+    if (const std::optional<std::string> device = zip_entry(path, "meta/device.csv"))
+      recording.gyroscope_range = parse_device_csv(*device, path.string() + ":meta/device.csv");
     return recording;
   }
   const std::string text = read_text_file(path, "the recording");
@@ -299,6 +327,10 @@ GyroRecording read_recording(const std::filesystem::path& path) {
   const fs::path time_csv = folder / "meta" / "time.csv";
   if (in_export && fs::exists(time_csv))
     recording.pauses = parse_time_csv(read_text_file(time_csv, "the pauses"), time_csv.string());
+  const fs::path device_csv = folder / "meta" / "device.csv";
+  if (in_export && fs::exists(device_csv))
+    recording.gyroscope_range =
+        parse_device_csv(read_text_file(device_csv, "the device"), device_csv.string());
   return recording;
 }
 

@@ -4,6 +4,7 @@
 // plain CSV `t,wx,wy,wz` (docs/phone-lab.md, "The recording").
 #include <Eigen/Dense>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,6 +24,8 @@ struct RecordingPart {
   Eigen::Vector3d bias = Eigen::Vector3d::Zero();
   Eigen::Vector3d bias_sigma = Eigen::Vector3d::Zero();
   int rest_samples = 0;
+  /// rad/s: its gyroscope's stated range (GyroRecording::gyroscope_range).
+  std::optional<double> gyroscope_range;
 };
 
 /// One recording: the body-frame angular velocity as the gyroscope measured it, in the phone's
@@ -34,16 +37,21 @@ struct GyroRecording {
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame, as measured (bias included)
   /// Experiment times (s) at which the recording was paused: no flight spans one.
   std::vector<double> pauses;
+  /// rad/s: the gyroscope's range as the export states it (phyphox's `meta/device.csv`, row
+  /// "gyroscope Range": Android's Sensor.getMaximumRange(), in rad/s for a gyroscope); nullopt
+  /// where nothing states it (phyphox on iOS, a plain CSV). fit/saturation.hpp uses it.
+  std::optional<double> gyroscope_range;
   /// Several recordings of one body pooled (pool_recordings): each one's part; empty for a
   /// recording as read.
   std::vector<RecordingPart> parts;
 };
 
-/// Reads `path`: a phyphox export folder (holding `Raw Data.csv`, optionally `meta/time.csv`),
-/// a `Raw Data.csv` (its folder's `meta/time.csv` read too), a `.zip` of such a folder, or a
-/// plain CSV whose header is `t,wx,wy,wz` (rad/s). Throws InputError, one line naming the
-/// file, row (1-based line) and column: no such file, not a gyroscope recording (the header),
-/// a text or NaN cell, a row with too few cells, time not increasing, fewer than 10 samples.
+/// Reads `path`: a phyphox export folder (holding `Raw Data.csv`, optionally `meta/time.csv` and
+/// `meta/device.csv`), a `Raw Data.csv` (its folder's `meta/` read too), a `.zip` of such a
+/// folder, or a plain CSV whose header is `t,wx,wy,wz` (rad/s). Throws InputError, one line
+/// naming the file, row (1-based line) and column: no such file, not a gyroscope recording (the
+/// header), a text or NaN cell, a row with too few cells, time not increasing, fewer than 10
+/// samples, a stated range that is not a number.
 GyroRecording read_recording(const std::filesystem::path& path);
 
 /// The samples of CSV `text` (as read_recording(); `file` names it in messages, `name` is
@@ -61,5 +69,12 @@ GyroRecording samples_recording(const std::string& name, std::vector<double> t,
 
 /// The PAUSE events' experiment times of a phyphox `meta/time.csv` `text`. Throws InputError.
 std::vector<double> parse_time_csv(std::string_view text, const std::string& file);
+
+/// rad/s: the gyroscope's range that a phyphox `meta/device.csv` `text` states (its
+/// `"property","value"` rows, any of phyphox's separators; the row "gyroscope Range", as
+/// phyphox for Android writes it); nullopt when no such row, or its value is empty or "null"
+/// (no gyroscope). Throws InputError naming the file, line and key for a value that is not a
+/// positive finite number.
+std::optional<double> parse_device_csv(std::string_view text, const std::string& file);
 
 }  // namespace bookspin::fit
