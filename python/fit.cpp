@@ -43,7 +43,10 @@ Arguments:
 
 Returns a bookspin.Fit:
   body     the -fit-body.csv row as a dict keyed by its columns (I1_over_I3, I2_over_I3, ...,
-           axis1_x ... in the phone frame, moments, tosses, drag)
+           axis1_x ... in the phone frame, moments, tosses, drag, bias_x ...); for recordings
+           fitted as one, the first recording's row
+  bodies   every -fit-body.csv row: one, or for recordings fitted as one a row per recording
+           (the body repeated, with its recording's name and own bias)
   tosses   the -fit.csv rows, one dict per toss (toss, t_start, t_end, omega0_x ...,
            half_period_measured ..., residual_rms, drag_rate, flag ...)
   summary  the lines the command prints before "wrote ..." (bias, flights, body, notes)
@@ -63,7 +66,7 @@ solver). The GIL is released while it fits.)";
 struct Fit {
   std::string recording;
   py::dict body;
-  py::list tosses, summary, charts;
+  py::list bodies, tosses, summary, charts;
 };
 
 /// The rows of a table's CSV text as the command line writes it (fit::FitReport), read back
@@ -177,7 +180,8 @@ Fit fit(const py::object& recording_input, const std::string& drag, const py::ob
   }
   Fit out;
   out.recording = report->recording;
-  out.body = keyed_rows(report->body_csv)[0];
+  out.bodies = keyed_rows(report->body_csv);
+  out.body = out.bodies[0].cast<py::dict>();
   out.tosses = keyed_rows(report->toss_csv);
   for (const std::string& line : report->summary) out.summary.append(line);
   for (const fit::TossReport& toss : report->tosses) out.charts.append(chart_arrays(toss.chart));
@@ -190,7 +194,10 @@ void add_fit(py::module_& m) {
   py::class_<Fit>(m, "Fit",
                   "A recording's fit (bookspin.fit): body, tosses, summary, charts, recording.")
       .def_readonly("recording", &Fit::recording, "the recording's name (its file-safe stem)")
-      .def_readonly("body", &Fit::body, "the -fit-body.csv row: dict keyed by its columns")
+      .def_readonly("body", &Fit::body,
+                    "the -fit-body.csv row (the first, for recordings fitted as one): dict keyed "
+                    "by its columns")
+      .def_readonly("bodies", &Fit::bodies, "every -fit-body.csv row: a dict per recording")
       .def_readonly("tosses", &Fit::tosses, "the -fit.csv rows: one dict per toss")
       .def_readonly("summary", &Fit::summary, "the lines the command prints, as str")
       .def_readonly("charts", &Fit::charts,

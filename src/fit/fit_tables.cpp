@@ -79,16 +79,32 @@ CsvTable fit_body_csv(const FitResult& fit) {
   row.push_back(std::to_string(fit.tosses.size()));
   row.push_back(std::string(physics::to_string(fit.drag)));
   // The bias removed: the rest's mean and its scatter, or fitted from the flights and its
-  // standard error; no σ where neither (docs/outputs.md, "bookspin fit").
-  std::optional<Eigen::Vector3d> sigma;
-  if (fit.search.rest_samples > 0)
-    sigma = fit.search.bias_sigma;
-  else
-    sigma = fit.bias_fitted_sigma;
-  for (int c = 0; c < 3; ++c) row.push_back(shortest_cell(fit.search.bias[c]));
-  for (int c = 0; c < 3; ++c)
-    row.push_back(shortest_cell(sigma ? std::optional<double>((*sigma)[c]) : std::nullopt));
-  table.rows.push_back(std::move(row));
+  // standard error; no σ where neither (docs/outputs.md, "bookspin fit"). Pooled: a row per
+  // recording, the body's columns repeated, with its recording's bias and a `recording` column
+  // first.
+  const auto bias_cells = [](std::vector<CsvCell> cells, const Eigen::Vector3d& bias,
+                             const std::optional<Eigen::Vector3d>& sigma) {
+    for (int c = 0; c < 3; ++c) cells.push_back(shortest_cell(bias[c]));
+    for (int c = 0; c < 3; ++c)
+      cells.push_back(shortest_cell(sigma ? std::optional<double>((*sigma)[c]) : std::nullopt));
+    return cells;
+  };
+  if (fit.parts.empty()) {
+    table.rows.push_back(bias_cells(row, fit.search.bias,
+                                    fit.search.rest_samples > 0
+                                        ? std::optional<Eigen::Vector3d>(fit.search.bias_sigma)
+                                        : fit.bias_fitted_sigma));
+    return table;
+  }
+  table.columns.insert(table.columns.begin(), "recording");
+  for (const RecordingPart& part : fit.parts) {
+    std::vector<CsvCell> cells =
+        bias_cells(row, part.bias + part.bias_correction,
+                   part.rest_samples > 0 ? std::optional<Eigen::Vector3d>(part.bias_sigma)
+                                         : part.bias_fitted_sigma);
+    cells.insert(cells.begin(), part.name);
+    table.rows.push_back(std::move(cells));
+  }
   return table;
 }
 
@@ -101,36 +117,52 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
   const auto three = [](const Eigen::Vector3d& v) {
     return fixed(v[0], 4) + ", " + fixed(v[1], 4) + ", " + fixed(v[2], 4);
   };
-  const Eigen::Vector3d& bias = fit.search.bias;  // removed in flight: the rest's + correction
-  const Eigen::Vector3d rest = bias - fit.bias_correction;
-  // Pooled: each recording's own bias, removed before the pooled one was fitted; the flights'
-  // correction is one for all.
-  for (const RecordingPart& part : fit.parts)
-    lines.push_back(
-        part.rest_samples > 0
-            ? "bias of " + part.name + " (rad/s, the mean of " + std::to_string(part.rest_samples) +
-                  " samples at rest ± their scatter): " + with_sigma(part.bias, part.bias_sigma)
-            : "no rest in " + part.name + ": its own bias is not measured");
-  const bool corrected = fit.bias_correction != Eigen::Vector3d::Zero();
-  if (fit.search.rest_samples > 0) {
-    if (fit.parts.empty())
+  // Pooled: each recording's own bias, measured on its own rest and corrected by its own
+  // flights.
+  for (const RecordingPart& part : fit.parts) {
+    const bool corrected = part.bias_correction != Eigen::Vector3d::Zero();
+    if (part.rest_samples > 0) {
+      lines.push_back(
+          "bias of " + part.name + " (rad/s, the mean of " + std::to_string(part.rest_samples) +
+          " samples at rest ± their scatter): " + with_sigma(part.bias, part.bias_sigma));
+      if (corrected)
+        lines.push_back("bias of " + part.name +
+                        " in flight (rad/s): " + three(part.bias + part.bias_correction) +
+                        ", the rest's corrected by its flights by " + three(part.bias_correction) +
+                        " (within 3 σ of its rest's scatter)");
+    } else if (part.bias_fitted_sigma) {
+      lines.push_back("no rest in " + part.name +
+                      ": its bias (rad/s) is fitted from its flights: " +
+                      with_sigma(part.bias_correction, *part.bias_fitted_sigma));
+    } else if (corrected) {
+      lines.push_back(
+          "no rest in " + part.name +
+          ": its bias (rad/s) is fitted from its flights: " + three(part.bias_correction));
+    } else {
+      lines.push_back("no rest in " + part.name + ": its bias is not removed");
+    }
+  }
+  if (fit.parts.empty()) {
+    const Eigen::Vector3d& bias = fit.search.bias;  // removed in flight: the rest's + correction
+    const Eigen::Vector3d rest = bias - fit.bias_correction;
+    const bool corrected = fit.bias_correction != Eigen::Vector3d::Zero();
+    if (fit.search.rest_samples > 0) {
       lines.push_back(
           "bias (rad/s, the mean of " + std::to_string(fit.search.rest_samples) +
           " samples at rest ± their scatter): " + with_sigma(rest, fit.search.bias_sigma));
-    if (corrected)
-      lines.push_back(std::string(fit.parts.empty()
-                                      ? "bias in flight (rad/s): " + three(bias) + ", the rest's"
-                                      : "every recording's bias") +
-                      " corrected by the flights by " + three(fit.bias_correction) +
-                      " (within 3 σ of the rest's scatter)");
-  } else if (fit.bias_fitted_sigma) {
-    lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
-                    with_sigma(bias, *fit.bias_fitted_sigma));
-  } else if (corrected) {
-    lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
-                    three(bias));
-  } else {
-    lines.push_back("no rest in the recording: the gyroscope's bias is not removed");
+      if (corrected)
+        lines.push_back("bias in flight (rad/s): " + three(bias) +
+                        ", the rest's corrected by the flights by " + three(fit.bias_correction) +
+                        " (within 3 σ of the rest's scatter)");
+    } else if (fit.bias_fitted_sigma) {
+      lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
+                      with_sigma(bias, *fit.bias_fitted_sigma));
+    } else if (corrected) {
+      lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
+                      three(bias));
+    } else {
+      lines.push_back("no rest in the recording: the gyroscope's bias is not removed");
+    }
   }
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];

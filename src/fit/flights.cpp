@@ -90,6 +90,9 @@ void measure_bias(const GyroRecording& recording, const FinderSettings& settings
     for (int i = first; i <= last; ++i) squares += (recording.omega[i] - search.bias).cwiseAbs2();
   search.bias_sigma =
       count > 1 ? Eigen::Vector3d((squares / (count - 1)).cwiseSqrt()) : Eigen::Vector3d::Zero();
+  // Pooled recordings (fit/pool.hpp) had each its own bias removed already: none is left to
+  // remove, and each one's correction is its own (fit/toss_fit.hpp).
+  if (!recording.parts.empty()) search.bias = Eigen::Vector3d::Zero();
 }
 
 /// |I ω̇ + ω × I ω| / |ω|² at sample i: the torque Euler's equations leave (I scaled to a

@@ -25,7 +25,9 @@ struct DroppedStretch {
 
 /// What the finder found.
 struct FlightSearch {
-  Eigen::Vector3d bias = Eigen::Vector3d::Zero();  ///< rad/s, phone frame: the rest's mean
+  /// rad/s, phone frame: the rest's mean; 0 for pooled recordings, each of which had its own
+  /// removed (GyroRecording::parts).
+  Eigen::Vector3d bias = Eigen::Vector3d::Zero();
   /// rad/s, phone frame: the standard deviation of each axis's samples at rest (the gyroscope's
   /// noise there); 0 without rest.
   Eigen::Vector3d bias_sigma = Eigen::Vector3d::Zero();

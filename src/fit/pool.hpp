@@ -11,7 +11,8 @@ namespace bookspin::fit {
 /// rest (find_flights) and removed from its samples, its samples placed 1 s after the previous
 /// recording's last, with a pause between them so that no flight spans two recordings; `parts`
 /// says where each one went. Its flights are then found (find_flights) and fitted (fit_recording)
-/// as any recording's: every toss with one body, each keeping its own drag rate; the tables name
+/// as any recording's: every toss with one body, each keeping its own drag rate and each
+/// recording its own bias correction from its own flights (fit_recording); the tables name
 /// each toss's recording and give its own times (fit_tables.hpp). Named after the first
 /// recording, "<first>-and-<N−1>-more". Throws InputError for fewer than two recordings or one
 /// given twice (the same source).

@@ -26,6 +26,12 @@ struct RecordingPart {
   int rest_samples = 0;
   /// rad/s: its gyroscope's stated range (GyroRecording::gyroscope_range).
   std::optional<double> gyroscope_range;
+  /// rad/s, phone frame, set by the fit (fit/toss_fit.hpp): its own flights' correction of its
+  /// bias (two or more flights; within 3σ of its rest's scatter where it has a rest), and with
+  /// no rest the correction's standard error. The bias removed in flight is bias +
+  /// bias_correction.
+  Eigen::Vector3d bias_correction = Eigen::Vector3d::Zero();
+  std::optional<Eigen::Vector3d> bias_fitted_sigma;
 };
 
 /// One recording: the body-frame angular velocity as the gyroscope measured it, in the phone's

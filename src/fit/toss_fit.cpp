@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "fit/pool.hpp"
 #include "fit/saturation.hpp"
 #include "fit/toss_model.hpp"
 #include "physics/damped_exact.hpp"
@@ -40,6 +41,9 @@ struct TossData {
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame
   int samples = 0;                     ///< the flight's samples, those left out included
   int saturated = 0;  ///< samples left out: the gyroscope at its range (fit/saturation.hpp)
+  /// Whose bias correction the toss shares: its recording's among those pooled (0 for one
+  /// recording).
+  int group = 0;
 };
 
 /// Fewer samples than this left of a flight once its saturated ones are out, and they stay in
@@ -106,7 +110,8 @@ struct Parameters {
   std::array<double, 3> aa{0, 0, 0};
   std::array<double, 2> log_ratios{0, 0};
   std::vector<std::array<double, 4>> omega0;
-  std::array<double, 3> e{0, 0, 0};  ///< rad/s, phone frame: the bias correction (CostFunction)
+  /// rad/s, phone frame: each group's bias correction (TossCost's e; TossData::group).
+  std::vector<std::array<double, 3>> e{{0, 0, 0}};
   Eigen::Matrix3d axes() const { return R0 * rotation_from_angle_axis(aa.data()); }
   Eigen::Vector3d moments() const {
     return {std::exp(log_ratios[0]), std::exp(log_ratios[1]), 1.0};
@@ -180,13 +185,21 @@ struct SolveOptions {
   /// rough stages at 100 Hz whatever the rate; the final fit sees every sample).
   double spacing = 0.0;
   const StopPoll* stop = nullptr;  ///< FitSettings::stop, polled every iteration
-  /// The bias correction held at its value.
+  /// The bias corrections held at their values.
   bool bias_held = false;
-  /// rad/s: the bias correction kept within what the rest allows, −bound ≤ e + offset ≤ bound on
-  /// each axis (offset: a correction the samples already had removed); nullopt: free.
-  std::optional<Eigen::Vector3d> bias_bound;
-  Eigen::Vector3d bias_offset = Eigen::Vector3d::Zero();
+  /// Per group, rad/s: its bias correction kept within what its rest allows, −bound ≤ e + offset
+  /// ≤ bound on each axis (offset: a correction the samples already had removed); nullopt, or
+  /// no entries: free.
+  std::vector<std::optional<Eigen::Vector3d>> bias_bound;
+  std::vector<Eigen::Vector3d> bias_offset;
 };
+
+/// How many of `data`'s tosses are in each of `groups` groups.
+std::vector<int> tosses_per_group(const std::vector<TossData>& data, std::size_t groups) {
+  std::vector<int> count(groups, 0);
+  for (const TossData& d : data) ++count.at(d.group);
+  return count;
+}
 
 /// Asks `stop` at every iteration of the solver; a signal aborts the solve, and solve() throws
 /// Interrupted once Ceres has returned (not through its frames).
@@ -228,7 +241,7 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
     }
     auto* cost = new TossCost(&d, samples, stride, p.R0, options.drag);
     problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(),
-                              p.e.data());
+                              p.e.at(d.group).data());
     if (options.drag == physics::DragLaw::none || options.rates_fixed)
       problem->SetManifold(p.omega0[k].data(), new ceres::SubsetManifold(4, {3}));
     residual_count += cost->num_residuals();
@@ -236,17 +249,24 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
   if (options.body_fixed || options.moments_fixed)
     problem->SetParameterBlockConstant(p.log_ratios.data());
   if (options.body_fixed) problem->SetParameterBlockConstant(p.aa.data());
-  // The bias correction is shared by the tosses: fitted with two or more and no rest, held
-  // otherwise (docs/phone-lab.md, "The bias").
-  if (options.body_fixed || options.bias_held || data.size() < 2) {
-    problem->SetParameterBlockConstant(p.e.data());
-  } else if (options.bias_bound) {
-    for (int i = 0; i < 3; ++i) {
-      // A rest without scatter (a synthetic one) allows 1e-9 rad/s at most.
-      const double bound = std::max((*options.bias_bound)[i], 1e-9);
-      p.e[i] = std::clamp(p.e[i], -bound - options.bias_offset[i], bound - options.bias_offset[i]);
-      problem->SetParameterLowerBound(p.e.data(), i, -bound - options.bias_offset[i]);
-      problem->SetParameterUpperBound(p.e.data(), i, bound - options.bias_offset[i]);
+  // A group's bias correction is shared by its tosses: fitted with two or more, within its
+  // rest's bound where it has one, held otherwise (docs/phone-lab.md, "The bias").
+  const std::vector<int> in_group = tosses_per_group(data, p.e.size());
+  for (std::size_t g = 0; g < p.e.size(); ++g) {
+    if (in_group[g] == 0) continue;  // not in this problem
+    double* e = p.e[g].data();
+    if (options.body_fixed || options.bias_held || in_group[g] < 2) {
+      problem->SetParameterBlockConstant(e);
+    } else if (g < options.bias_bound.size() && options.bias_bound[g]) {
+      const Eigen::Vector3d offset =
+          g < options.bias_offset.size() ? options.bias_offset[g] : Eigen::Vector3d::Zero();
+      for (int i = 0; i < 3; ++i) {
+        // A rest without scatter (a synthetic one) allows 1e-9 rad/s at most.
+        const double bound = std::max((*options.bias_bound[g])[i], 1e-9);
+        e[i] = std::clamp(e[i], -bound - offset[i], bound - offset[i]);
+        problem->SetParameterLowerBound(e, i, -bound - offset[i]);
+        problem->SetParameterUpperBound(e, i, bound - offset[i]);
+      }
     }
   }
   ceres::Solver::Options solver_options;
@@ -290,19 +310,33 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
 /// than the O(tosses³) of the whole matrix. nullopt when S or a C_k is singular to working
 /// precision (reciprocal condition below 1e-14: the fit cannot tell every value apart).
 struct Covariances {
+  /// aa, the log ratios unless fixed, then each fitted group's e (in group order).
   Eigen::MatrixXd body;
   std::vector<Eigen::MatrixXd> omega0;  ///< 3×3, or 4×4 with the drag rate last
+  /// Per group: the row of its e in `body`, or −1 where its e is not fitted.
+  std::vector<int> bias_row;
 };
 std::optional<Covariances> covariances(const std::vector<TossData>& data, const Parameters& p,
-                                       bool moments_fixed, bool bias_fitted, physics::DragLaw law) {
-  // The body's columns of [J_θ | I] (θ: TossModel's nine, then the bias correction e): aa, the
-  // log ratios unless fixed, e where fitted (two or more tosses, no rest); the toss's: ω0, its
-  // rate.
-  std::vector<int> body{0, 1, 2}, toss{5, 6, 7};
-  if (!moments_fixed) body.insert(body.end(), {3, 4});
-  if (bias_fitted) body.insert(body.end(), {9, 10, 11});
+                                       bool moments_fixed, const std::vector<bool>& bias_fitted,
+                                       physics::DragLaw law) {
+  // The body's columns of [J_θ | I] (θ: TossModel's nine, then the toss's group's bias
+  // correction e): aa, the log ratios unless fixed, e where its group's is fitted; the toss's:
+  // ω0, its rate. The body's rows: those, with one e block per fitted group.
+  std::vector<int> shared{0, 1, 2}, toss{5, 6, 7};
+  if (!moments_fixed) shared.insert(shared.end(), {3, 4});
   if (law != physics::DragLaw::none) toss.push_back(8);
-  const int nb = static_cast<int>(body.size());
+  std::vector<int> bias_row(bias_fitted.size(), -1);
+  int nb = static_cast<int>(shared.size());
+  for (std::size_t g = 0; g < bias_fitted.size(); ++g)
+    if (bias_fitted[g]) bias_row[g] = nb, nb += 3;
+  // Toss k's body columns in its own 12 and their rows in the body's.
+  const auto columns_of = [&](int group, std::vector<int>& local, std::vector<int>& rows) {
+    local = shared;
+    rows.clear();
+    for (std::size_t i = 0; i < shared.size(); ++i) rows.push_back(static_cast<int>(i));
+    if (bias_row[group] >= 0)
+      for (int c = 0; c < 3; ++c) local.push_back(9 + c), rows.push_back(bias_row[group] + c);
+  };
   constexpr double kMinReciprocalCondition = 1e-14;
   const auto well_conditioned = [&](const Eigen::MatrixXd& m) {
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(m, Eigen::EigenvaluesOnly);
@@ -312,7 +346,10 @@ std::optional<Covariances> covariances(const std::vector<TossData>& data, const 
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(nb, nb);
   std::vector<Eigen::MatrixXd> E(data.size());
   std::vector<Eigen::MatrixXd> C_inverse(data.size());
+  std::vector<std::vector<int>> rows_of(data.size());
   for (std::size_t k = 0; k < data.size(); ++k) {
+    std::vector<int> body;
+    columns_of(data[k].group, body, rows_of[k]);
     const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), law, true);
     Eigen::Matrix<double, 12, 12> full = Eigen::Matrix<double, 12, 12>::Zero();
     Eigen::Matrix<double, 3, 12> J = Eigen::Matrix<double, 3, 12>::Zero();
@@ -329,15 +366,17 @@ std::optional<Covariances> covariances(const std::vector<TossData>& data, const 
     if (!well_conditioned(C)) return std::nullopt;
     C_inverse[k] = C.inverse();
     E[k] = full(body, toss);
-    S += B - E[k] * C_inverse[k] * E[k].transpose();
+    S(rows_of[k], rows_of[k]) += B - E[k] * C_inverse[k] * E[k].transpose();
   }
   S = 0.5 * (S + S.transpose());
   if (!well_conditioned(S)) return std::nullopt;
   Covariances result;
   result.body = S.inverse();
+  result.bias_row = bias_row;
   for (std::size_t k = 0; k < data.size(); ++k) {
-    const Eigen::MatrixXd G = E[k] * C_inverse[k];  // nb × nt
-    result.omega0.push_back(C_inverse[k] + G.transpose() * result.body * G);
+    const Eigen::MatrixXd G = E[k] * C_inverse[k];  // its body columns × nt
+    const Eigen::MatrixXd body_k = result.body(rows_of[k], rows_of[k]);
+    result.omega0.push_back(C_inverse[k] + G.transpose() * body_k * G);
   }
   if (!result.body.allFinite() || (result.body.diagonal().array() <= 0.0).any())
     return std::nullopt;
@@ -501,8 +540,11 @@ void measured_omega(const GyroRecording& recording, const FitResult& fit, int to
   const Flight& flight = fit.tosses.at(toss).flight;
   t.assign(recording.t.begin() + flight.first, recording.t.begin() + flight.last + 1);
   omega.clear();
-  for (int i = flight.first; i <= flight.last; ++i)
-    omega.push_back(recording.omega[i] - fit.search.bias);
+  // Pooled: its recording's correction removed too.
+  const RecordingPart* part = part_at(fit.parts, flight.t_start);
+  const Eigen::Vector3d bias =
+      fit.search.bias + (part ? part->bias_correction : Eigen::Vector3d::Zero());
+  for (int i = flight.first; i <= flight.last; ++i) omega.push_back(recording.omega[i] - bias);
 }
 
 FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
@@ -522,9 +564,13 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   // The samples where the gyroscope read its range are its range, not the motion: left out
   // (docs/phone-lab.md, "Saturation").
   const Saturation saturation = find_saturation(recording);
+  // Pooled, each recording's tosses share its bias correction: one group per recording.
+  const std::size_t groups = std::max<std::size_t>(1, recording.parts.size());
   std::vector<TossData> data;
   for (const Flight& f : search.flights) {
     TossData d;
+    if (const RecordingPart* part = part_at(recording.parts, f.t_start))
+      d.group = static_cast<int>(part - recording.parts.data());
     d.samples = f.last - f.first + 1;
     for (int i = f.first; i <= f.last; ++i) d.saturated += saturation.at_range[i] ? 1 : 0;
     const bool drop = d.samples - d.saturated >= kMinSamplesLeft;
@@ -551,14 +597,29 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   const physics::DragLaw law = settings.drag;
   const bool dragged = law != physics::DragLaw::none;
   Parameters p = start(data, settings, recording.t);
+  p.e.assign(groups, {0.0, 0.0, 0.0});
   // The bias: the rest's mean, corrected by the flights (two or more) within 3σ of the rest's
   // scatter on each axis; with no rest, fitted from the flights freely (docs/phone-lab.md, "The
-  // bias"). Bounded, the correction is held while the body settles and freed after: a bounded
-  // solve from a body still far off leaves it at the bound's wall.
-  std::optional<Eigen::Vector3d> bias_bound;
-  if (search.rest_samples > 0) bias_bound = 3.0 * search.bias_sigma;
-  const bool bias_fitted = data.size() >= 2;
-  const bool bias_free = bias_fitted && !bias_bound;
+  // bias"); pooled, each recording's by its own flights within its own rest's bound. Bounded,
+  // the correction is held while the body settles and freed after: a bounded solve from a body
+  // still far off leaves it at the bound's wall.
+  std::vector<std::optional<Eigen::Vector3d>> bias_bound(groups);
+  if (recording.parts.empty()) {
+    if (search.rest_samples > 0) bias_bound[0] = 3.0 * search.bias_sigma;
+  } else {
+    for (std::size_t g = 0; g < groups; ++g)
+      if (recording.parts[g].rest_samples > 0) bias_bound[g] = 3.0 * recording.parts[g].bias_sigma;
+  }
+  const std::vector<int> group_tosses = tosses_per_group(data, groups);
+  std::vector<bool> bias_fitted(groups), bias_free(groups);
+  bool any_bound = false;
+  int fitted_groups = 0;
+  for (std::size_t g = 0; g < groups; ++g) {
+    bias_fitted[g] = group_tosses[g] >= 2;
+    bias_free[g] = bias_fitted[g] && !bias_bound[g];
+    any_bound = any_bound || (bias_fitted[g] && bias_bound[g]);
+    fitted_groups += bias_fitted[g];
+  }
   // Grown over each toss, so that a rough start does not lock onto a wrong phase; the drag
   // rates join once the phases are found (the last stage).
   for (double fraction : {0.3, 0.6, 1.0}) {
@@ -577,8 +638,11 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   full.stop = &settings.stop;
   full.moments_fixed = fixed;
   full.drag = law;
-  if (bias_bound) {
-    for (int i = 0; i < 3; ++i) p.e[i] = std::clamp(p.e[i], -(*bias_bound)[i], (*bias_bound)[i]);
+  if (any_bound) {
+    for (std::size_t g = 0; g < groups; ++g)
+      if (bias_bound[g])
+        for (int i = 0; i < 3; ++i)
+          p.e[g][i] = std::clamp(p.e[g][i], -(*bias_bound[g])[i], (*bias_bound[g])[i]);
     full.bias_held = true;
     if (!solve(data, p, full).usable)
       throw InputError(recording.source + ": the fit did not converge");
@@ -587,14 +651,21 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   }
   const Solved solved = solve(data, p, full);
   if (!solved.usable) throw InputError(recording.source + ": the fit did not converge");
-  // The bias in flight: the rest's plus the fitted correction; the samples corrected by it, so
-  // that what follows (and measured_omega) sees them as the fit did.
-  const Eigen::Vector3d correction(p.e[0], p.e[1], p.e[2]);
-  result.search.bias += correction;
-  result.bias_correction = correction;
+  // The bias in flight: the rest's plus the fitted correction (pooled: each recording's own);
+  // the samples corrected by it, so that what follows (and measured_omega) sees them as the fit
+  // did.
+  std::vector<Eigen::Vector3d> correction(groups);
+  for (std::size_t g = 0; g < groups; ++g)
+    correction[g] = Eigen::Vector3d(p.e[g][0], p.e[g][1], p.e[g][2]);
+  if (recording.parts.empty()) {
+    result.search.bias += correction[0];
+    result.bias_correction = correction[0];
+  } else {
+    for (std::size_t g = 0; g < groups; ++g) result.parts[g].bias_correction = correction[g];
+  }
   for (TossData& d : data)
-    for (Eigen::Vector3d& w : d.omega) w -= correction;
-  p.e = {0.0, 0.0, 0.0};
+    for (Eigen::Vector3d& w : d.omega) w -= correction[d.group];
+  p.e.assign(groups, {0.0, 0.0, 0.0});
 
   BodyEstimate& body = result.body;
   body.ratios = p.moments();
@@ -605,13 +676,12 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   for (std::size_t k = 0; k < data.size(); ++k) {
     const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), law, false);
     for (std::size_t i = 0; i < data[k].tau.size(); ++i)
-      residuals[k].push_back(model.omega(data[k].tau[i]) - data[k].omega[i] +
-                             Eigen::Vector3d(p.e[0], p.e[1], p.e[2]));
+      residuals[k].push_back(model.omega(data[k].tau[i]) - data[k].omega[i]);
   }
   // Uncertainties: (JᵀJ)⁻¹ scaled by the residual variance and by the residual's correlation
   // (docs/phone-lab.md, "Error bars"); the body's then widened to the folds' spread below.
   const int parameter_count =
-      (fixed ? 3 : 5) + (bias_fitted ? 3 : 0) + (dragged ? 4 : 3) * static_cast<int>(data.size());
+      (fixed ? 3 : 5) + 3 * fitted_groups + (dragged ? 4 : 3) * static_cast<int>(data.size());
   const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count) *
                           correlation_inflation(residuals);
   const std::optional<Covariances> covariance = covariances(data, p, fixed, bias_fitted, law);
@@ -631,11 +701,16 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     else
       body.ratio_sigma = Eigen::Vector3d(body.ratios[0] * std::sqrt(variance * c(3, 3)),
                                          body.ratios[1] * std::sqrt(variance * c(4, 4)), 0.0);
-    if (bias_free) {  // e's block is the body's last three
-      const int e = static_cast<int>(c.rows()) - 3;
-      result.bias_fitted_sigma =
-          Eigen::Vector3d(std::sqrt(variance * c(e, e)), std::sqrt(variance * c(e + 1, e + 1)),
-                          std::sqrt(variance * c(e + 2, e + 2)));
+    for (std::size_t g = 0; g < groups; ++g) {
+      if (!bias_free[g]) continue;
+      const int e = covariance->bias_row[g];
+      const Eigen::Vector3d sigma(std::sqrt(variance * c(e, e)),
+                                  std::sqrt(variance * c(e + 1, e + 1)),
+                                  std::sqrt(variance * c(e + 2, e + 2)));
+      if (recording.parts.empty())
+        result.bias_fitted_sigma = sigma;
+      else
+        result.parts[g].bias_fitted_sigma = sigma;
     }
     for (std::size_t k = 0; k < data.size(); ++k) {
       const Eigen::MatrixXd& ck = covariance->omega0[k];
@@ -668,12 +743,12 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       options.moments_fixed = fixed;
       options.drag = law;
       options.spacing = 0.01;  // at 100 Hz whatever the rate: five fits of nearly every toss
-      if (bias_bound) {
+      if (any_bound) {
         options.bias_held = true;
         if (!solve(rest, q, options).usable) continue;
         options.bias_held = false;
         options.bias_bound = bias_bound;
-        options.bias_offset = result.bias_correction;
+        options.bias_offset = correction;
       }
       if (!solve(rest, q, options).usable) continue;
       normalise(q);

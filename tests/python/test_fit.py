@@ -56,7 +56,8 @@ def cli_fit(tmp_path, recording, *options):
 
 def assert_fit_equals_cli(fitted, cli):
     body, tosses, summary = cli
-    assert_rows_equal([fitted.body], body, "body")
+    assert_rows_equal(fitted.bodies, body, "body")
+    assert fitted.body == fitted.bodies[0]
     assert_rows_equal(fitted.tosses, tosses, "tosses")
     assert list(fitted.summary) == summary
 
