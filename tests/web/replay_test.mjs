@@ -70,8 +70,8 @@ function width(polygons, left) {
 }
 
 test('each row is drawn turned by its quaternion (w, x, y, z), body to world', () => {
-  // Axis and angle; the drawing looks from −y a little above (docs/explorer.md), so a cover
-  // whose normal points to −y is seen and one to +y is not.
+  // Axis and angle; the replay's view looks along +y from a little above (replay.js's box()),
+  // so a cover whose normal points to −y is seen and one to +y is not.
   const cases = [
     { axis: [0, 0, 1], angle: Math.PI / 2, cover: FRONT },     // x → y, y → −x: width b
     { axis: [1, 0, 0], angle: Math.PI / 2, cover: FRONT },     // +z → −y: the front cover faces us
