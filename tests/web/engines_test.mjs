@@ -88,11 +88,12 @@ test('a spin about a principal axis keeps its rate and turns by |ω|·t from the
       }
       // Undamped, |ω| loses nothing: a damping c takes e^(−c t) of it, 1 % at c = 0.001 per time
       // unit. (Rapier's step gains a little: 4e-4 of |ω| here, its energy rise of
-      // docs/explorer.md.)
+      // docs/explorer.md; Jolt's gyroscopic step leaves 1e-5 of |ω| off the axis, single
+      // precision.)
       const w = run.omegaWorld();
       const gain = norm(w) / rate - 1;
       console.log(`${name(engine)}: |ω| after 10 time units ${gain.toExponential(2)} from its start`);
-      assert.ok(gain > -1e-5 && gain < 1e-3 && Math.abs(w[0]) + Math.abs(w[1]) < 1e-5 * rate,
+      assert.ok(gain > -1e-5 && gain < 1e-3 && Math.abs(w[0]) + Math.abs(w[1]) < 1e-4 * rate,
         `${name(engine)}: ω = ${w} after 10 time units of a steady spin at ${rate} about z`);
     } finally {
       run.dispose();
