@@ -14,7 +14,9 @@ as a zip), under each drag law the command line offers (--drag linear, quadratic
     the command prints before "wrote …", character for character;
   - each toss as the page plays it equals the page `bookspin explore` writes from the toss
     scenes the command wrote (ω0, dt, the drag, speed, the book, the duration, the measured ω
-    and L/|L|), and the Play button plays it: the scene chosen, the measured ω drawn;
+    and L/|L|), and the Play button plays it: the scene chosen, each setting of the scene's
+    state the run uses (none left to the page's default), from the fitted ω0, the measured ω
+    drawn;
   - once through the file input and once dropped on the panel (a DragEvent carrying the file):
     the panel's body table shows the command line's ratios; the "Judge a motion" panel's drop
     zone too;
@@ -329,6 +331,18 @@ def main():
         if not drawn or drawn[0] != scenes[1]["name"] or driver.execute_script(
                 "return !document.getElementById('lab').hidden"):
             fail(f"Play did not play toss 2 ({scenes[1]['name']}) with its measurement: {drawn}")
+        # It runs as the page of the toss scene the command wrote: each setting of that scene's
+        # state the exact model's run and view use (one the lab's scene lacks falls back to the
+        # page's default: a jiggled start, say), and from the fitted ω0 itself.
+        running = driver.execute_script("return window.explorer.state()")
+        for key in ("body", "model", "drag", "dragRate", "dt", "axis", "w", "jiggle", "speed", "showL"):
+            value = scenes[1]["state"].get(key, {"drag": "none", "dragRate": 0}.get(key))
+            if not (close(running[key], value, 1e-6) if isinstance(value, (int, float, list))
+                    and not isinstance(value, bool) else running[key] == value):
+                fail(f"Play runs toss 2 with {key} = {running[key]!r}; its scene says {value!r}")
+        start = driver.execute_script("return window.explorer.startOmegas()")[0]
+        if not close(start, scenes[1]["state"]["w"], 1e-9):
+            fail(f"Play starts toss 2 at ω0 = {start}, not its fitted {scenes[1]['state']['w']}")
         driver.execute_script("window.explorer.setPlaying(true)")
         time.sleep(1.5)
         measured = driver.execute_script("return window.explorer.measuredDrawn()")
