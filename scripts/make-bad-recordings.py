@@ -25,6 +25,11 @@ def main() -> None:
     write_zip("empty.zip", [])  # its end record alone, 22 bytes
     (OUT / "empty-file.zip").write_bytes(b"")
     write_zip("two-exports.zip", [("morning/Raw Data.csv", RAW), ("evening/Raw Data.csv", RAW)])
+    # phyphox for Android's meta/device.csv whose gyroscope range is no number of rad/s.
+    write_zip("device-range-not-a-number.zip",
+              [("toss/Raw Data.csv", RAW),
+               ("toss/meta/device.csv",
+                '"property","value"\n"deviceModel","Pixel"\n"gyroscope Range","2000 dps"\n')])
     # A stored entry whose sizes (local header and central directory) claim 3.75 GiB: a zip
     # bomb's claim, refused before a byte is inflated.
     bomb = write_zip("bomb.zip", [("toss/Raw Data.csv", RAW)], zipfile.ZIP_STORED)

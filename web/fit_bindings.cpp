@@ -16,6 +16,7 @@
 #include <fstream>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -133,9 +134,11 @@ val toss_scene_data(const fit::TossScene& scene) {
 
 /// The recording `bytes` (a phyphox zip, its Raw Data.csv, or a t,wx,wy,wz CSV), named
 /// `file_name` (a file's name, or a folder's and a file's: "export/Raw Data.csv"), written into
-/// the module's memory (slot `slot` of kFolder: several files kept apart) and read as
-/// `bookspin fit FILE` reads it. Throws InputError as the command line's reader does.
-fit::GyroRecording read_given(const std::string& file_name, const std::string& bytes, int slot) {
+/// the module's memory (slot `slot` of kFolder: several files kept apart) with its export's
+/// `meta` files beside it (name, bytes: "time.csv", "device.csv" into the folder's meta/), and
+/// read as `bookspin fit FILE` reads it. Throws InputError as the command line's reader does.
+fit::GyroRecording read_given(const std::string& file_name, const std::string& bytes, int slot,
+                              const std::vector<std::pair<std::string, std::string>>& meta = {}) {
   // The file's name, and its folder's where the page was given one ("export/Raw Data.csv"):
   // a Raw Data.csv's recording is named after its folder, as on the command line.
   const std::filesystem::path given(file_name);
@@ -151,6 +154,13 @@ fit::GyroRecording read_given(const std::string& file_name, const std::string& b
     std::ofstream file(path, std::ios::binary);
     file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     if (!file) throw std::runtime_error("cannot write the recording into memory");
+  }
+  for (const auto& [name, text] : meta) {
+    if (name != "time.csv" && name != "device.csv") continue;  // what read_recording reads
+    std::filesystem::create_directories(folder / "meta");
+    std::ofstream file(folder / "meta" / name, std::ios::binary);
+    file.write(text.data(), static_cast<std::streamsize>(text.size()));
+    if (!file) throw std::runtime_error("cannot write the recording's meta/ into memory");
   }
   return fit::read_recording(path);
 }
@@ -206,7 +216,8 @@ val fit_recording(const std::string& file_name, const std::string& bytes, const 
 }
 
 /// `bookspin fit FILE1 FILE2 … --drag DRAG` (docs/phone-lab.md, "A class's recordings"):
-/// `files` an array of {name, bytes} (as fit_recording's); each read, those that cannot be read
+/// `files` an array of {name, bytes, meta} (as fit_recording's; meta, optional: an export's
+/// [{name, bytes}] as read_given takes them); each read, those that cannot be read
 /// refused and the others fitted as one body (fit::pool_recordings; alone, as fit_recording).
 /// report_value plus fitted (the names fitted) and refused ([{file, error}: the command line's
 /// one line]); {error} when none can be read or the fit fails.
@@ -220,8 +231,14 @@ val fit_recordings(const val& files, const std::string& drag) {
     std::string first_error;
     for (int i = 0; i < count; ++i) {
       const std::string name = files[i]["name"].as<std::string>();
+      std::vector<std::pair<std::string, std::string>> meta;
+      const val given = files[i]["meta"];
+      if (!given.isUndefined() && !given.isNull())
+        for (int m = 0; m < given["length"].as<int>(); ++m)
+          meta.emplace_back(given[m]["name"].as<std::string>(),
+                            given[m]["bytes"].as<std::string>());
       try {
-        read.push_back(read_given(name, files[i]["bytes"].as<std::string>(), i));
+        read.push_back(read_given(name, files[i]["bytes"].as<std::string>(), i, meta));
         fitted.call<void>("push", name);
       } catch (const InputError& e) {
         if (first_error.empty()) first_error = e.what();

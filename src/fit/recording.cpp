@@ -324,13 +324,16 @@ GyroRecording read_recording(const std::filesystem::path& path) {
   const fs::path folder = fs::absolute(path).parent_path();
   GyroRecording recording =
       parse_gyro_csv(text, path.string(), in_export ? folder.filename().string() : name);
+  // Named in messages as the recording was given ("anna/meta/time.csv").
   const fs::path time_csv = folder / "meta" / "time.csv";
+  const fs::path meta_named = path.parent_path() / "meta";
   if (in_export && fs::exists(time_csv))
-    recording.pauses = parse_time_csv(read_text_file(time_csv, "the pauses"), time_csv.string());
+    recording.pauses = parse_time_csv(read_text_file(time_csv, "the pauses"),
+                                      (meta_named / "time.csv").string());
   const fs::path device_csv = folder / "meta" / "device.csv";
   if (in_export && fs::exists(device_csv))
-    recording.gyroscope_range =
-        parse_device_csv(read_text_file(device_csv, "the device"), device_csv.string());
+    recording.gyroscope_range = parse_device_csv(read_text_file(device_csv, "the device"),
+                                                 (meta_named / "device.csv").string());
   return recording;
 }
 

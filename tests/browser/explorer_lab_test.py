@@ -310,6 +310,46 @@ def main():
         print(f"a class's recordings: {len(trows)} tosses of {len(class_names)} recordings fitted as "
               f"one body as bookspin fit fits them, {bad_name} refused with its line")
 
+        # 2c. A class's folder dropped: each export (Raw Data.csv with its meta/) fitted, its
+        # meta/device.csv read (a range that is not a number refuses its export, naming the
+        # file), what is no recording skipped and named. The drop's entries are made in the page
+        # as a browser hands them to a drop (webkitGetAsEntry), holding the real files.
+        device_ok = '"property","value"\n"deviceModel","x"\n"gyroscope Range","34.906586"\n'
+        device_bad = '"property","value"\n"deviceModel","x"\n"gyroscope Range","fast"\n'
+        got = driver.execute_async_script("""
+            const [base, names, ok, bad, done] = arguments;
+            const fileEntry = (file) => ({name: file.name, isFile: true, isDirectory: false,
+              file: (resolve) => resolve(file)});
+            const folderEntry = (name, children) => ({name, isFile: false, isDirectory: true,
+              createReader: () => { let given = false;
+                return {readEntries: (resolve) => { resolve(given ? [] : children); given = true; }}; }});
+            Promise.all(names.map((n) => fetch(base + 'recordings/' + n).then((r) => r.blob())))
+              .then((blobs) => {
+                const exports = blobs.map((b, k) => folderEntry(names[k].replace('.csv', ''), [
+                  fileEntry(new File([b], 'Raw Data.csv')),
+                  folderEntry('meta', [fileEntry(new File([k === 2 ? bad : ok], 'device.csv'))])]));
+                const drop = new Event('drop', {bubbles: true, cancelable: true});
+                Object.defineProperty(drop, 'dataTransfer', {value: {files: [], items: [
+                  {webkitGetAsEntry: () => folderEntry('class', [...exports, fileEntry(new File(['x'], '.DS_Store'))])}]}});
+                document.getElementById('labDrop').dispatchEvent(drop);
+                done(true);
+              }, (e) => done(String(e)));
+        """, base_url, class_names, device_ok, device_bad)
+        if got is not True:
+            fail(f"the class's folder could not be made: {got}")
+        shown = wait_for(driver, "return document.getElementById('labSummary').textContent",
+                         lambda v: "skipped (not a recording)" in v, 120)
+        if "skipped (not a recording)" not in shown:
+            fail(f"the dropped folder was not fitted: {driver.find_element(By.ID, 'labError').text}")
+        expected = ["fitted as one body: class/student1/Raw Data.csv, class/student2/Raw Data.csv",
+                    "refused class/student3/Raw Data.csv: student3/meta/device.csv:3: gyroscope Range:",
+                    "skipped (not a recording): class/.DS_Store"]
+        for line in expected:
+            if line not in shown:
+                fail(f"the dropped folder: the panel does not say {line!r}: {shown!r}")
+        print("a class's folder dropped: its exports fitted with their meta/, a bad device.csv "
+              "refused naming itself, the rest skipped")
+
         # 3. Play a toss: the scene chosen, its measured ω drawn.
         driver.execute_script("document.getElementById('labClose').click()")
         driver.execute_script("document.getElementById('labOpen').click()")

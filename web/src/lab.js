@@ -6,7 +6,7 @@
 // chart (measured and fitted ω), and plays each toss in the explorer beside its measurement, as
 // `bookspin explore` plays a toss scene the command line wrote. Nothing is fitted here: this
 // module hands bytes to the module and writes out its answer.
-import { takeFiles } from './file_drop.js';
+import { recordingsOf, takeFiles } from './file_drop.js';
 
 const $ = (id) => document.getElementById(id);
 const OMEGA_COLOURS = ['#ff6060', '#60d060', '#6090ff'];
@@ -84,10 +84,11 @@ export class LabPanel {
     this.wasm = wasm;
     this.play = play;
     this.result = null;
+    this.skipped = [];
     $('labOpen').addEventListener('click', () => this.open());
     $('labClose').addEventListener('click', () => this.close());
     window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('lab').hidden) this.close(); });
-    takeFiles($('labFile'), $('labDrop'), (files) => this.fitFiles(files));
+    takeFiles($('labFile'), $('labDrop'), (files, paths) => this.fitFiles(files, paths));
     // A link to the panel: explorer.html#lab opens it (the gallery's lab section links it).
     if (location.hash === '#lab') queueMicrotask(() => this.open());
   }
@@ -119,7 +120,8 @@ export class LabPanel {
   }
 
   /** Several recordings of one body (`bookspin fit FILE1 FILE2 … --drag DRAG`, docs/phone-lab.md,
-   * "A class's recordings"): `files` an array of {name, bytes}; a promise of fit()'s value plus
+   * "A class's recordings"): `files` an array of {name, bytes, meta} (meta, optional: an
+   * export's [{name: 'time.csv' or 'device.csv', bytes}]); a promise of fit()'s value plus
    * fitted (the names fitted) and refused ([{file, error}]), those that cannot be read left out;
    * rejected when none can be read. */
   fitMany(files, drag = 'linear') {
@@ -133,17 +135,26 @@ export class LabPanel {
     });
   }
 
-  /** Files chosen or dropped: read as bytes, fitted (several as one body), shown. */
-  fitFiles(files) {
+  /** Files chosen or dropped (`paths`: each one's name, or its path in a dropped folder): the
+   * recordings among them (file_drop.js, recordingsOf) read as bytes, fitted (several as one
+   * body), shown; a folder's other files skipped and named. */
+  fitFiles(files, paths = files.map((f) => f.webkitRelativePath || f.name)) {
     this.clear();
-    const names = files.map((f) => f.webkitRelativePath || f.name);
-    $('labBusy').textContent = `fitting ${names.join(', ')}…`;
+    const { recordings, skipped } = recordingsOf(paths);
+    this.skipped = skipped;
+    if (!recordings.length) {
+      $('labError').textContent = `error: no recording among ${paths.join(', ')} (a phyphox export's Raw Data.csv or zip, or a t,wx,wy,wz CSV)`;
+      return;
+    }
+    $('labBusy').textContent = `fitting ${recordings.map((r) => r.path).join(', ')}…`;
     const started = performance.now();
     const drag = $('labDrag').value;
-    Promise.all(files.map((f) => f.arrayBuffer()))
-      .then((buffers) => (files.length === 1
-        ? this.fit(names[0], new Uint8Array(buffers[0]), drag)
-        : this.fitMany(buffers.map((b, k) => ({ name: names[k], bytes: new Uint8Array(b) })), drag)))
+    const bytes = (k) => files[k].arrayBuffer().then((b) => new Uint8Array(b));
+    Promise.all(recordings.map((r) => Promise.all([bytes(r.index), ...r.meta.map((m) => bytes(m.index))])
+      .then(([own, ...meta]) => ({ name: r.path, bytes: own, meta: r.meta.map((m, k) => ({ name: m.name, bytes: meta[k] })) }))))
+      .then((given) => (given.length === 1 && !given[0].meta.length
+        ? this.fit(given[0].name, given[0].bytes, drag)
+        : this.fitMany(given, drag)))
       .then((r) => { this.show(r, performance.now() - started); })
       .catch((e) => { $('labError').textContent = `error: ${e.message}`; })
       .finally(() => { $('labBusy').textContent = ''; });
@@ -159,8 +170,9 @@ export class LabPanel {
       [1, 2, 3].map((a) => `<tr><th>axis ${a} (phone x, y, z)</th><td>(${cell(b[`axis${a}_x`])}, ${cell(b[`axis${a}_y`])}, ${cell(b[`axis${a}_z`])})${b[`axis${a}_sigma_deg`] === null ? '' : ` ± ${cell(b[`axis${a}_sigma_deg`])}°`}</td></tr>`).join('') +
       `<tr><th>tosses, drag</th><td>${cell(b.tosses)}, ${cell(b.drag)}</td></tr>`;
     // Several files: which were fitted as one body and which were refused, and why.
-    const files = r.fitted ? [`fitted as one body: ${r.fitted.join(', ')}`,
-      ...r.refused.map((x) => `refused ${x.file}: ${x.error}`)] : [];
+    const files = [...(r.fitted && (r.fitted.length > 1 || r.refused.length)
+      ? [`fitted as one body: ${r.fitted.join(', ')}`, ...r.refused.map((x) => `refused ${x.file}: ${x.error}`)]
+      : []), ...(this.skipped && this.skipped.length ? [`skipped (not a recording): ${this.skipped.join(', ')}`] : [])];
     $('labSummary').textContent = [...files, ...r.summary].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
     const list = $('labTosses');
     list.innerHTML = '';
