@@ -328,8 +328,8 @@ GyroRecording read_recording(const std::filesystem::path& path) {
   const fs::path time_csv = folder / "meta" / "time.csv";
   const fs::path meta_named = path.parent_path() / "meta";
   if (in_export && fs::exists(time_csv))
-    recording.pauses = parse_time_csv(read_text_file(time_csv, "the pauses"),
-                                      (meta_named / "time.csv").string());
+    recording.pauses =
+        parse_time_csv(read_text_file(time_csv, "the pauses"), (meta_named / "time.csv").string());
   const fs::path device_csv = folder / "meta" / "device.csv";
   if (in_export && fs::exists(device_csv))
     recording.gyroscope_range = parse_device_csv(read_text_file(device_csv, "the device"),
