@@ -166,6 +166,26 @@ std::optional<std::string> zip_entry(const std::filesystem::path& path, std::str
   return bytes;
 }
 
+/// The rows after the header of a phyphox `meta/` table `text` (time.csv, device.csv): each
+/// one's 1-based line number and cells; `separator` set to the one its header uses. Throws
+/// InputError for a NUL byte.
+std::vector<std::pair<int, std::vector<std::string>>> meta_rows(std::string_view text,
+                                                                const std::string& file,
+                                                                char& separator) {
+  text = without_bom(text);
+  if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
+  std::vector<std::pair<int, std::vector<std::string>>> rows;
+  const auto lines = lines_of(text);
+  if (lines.empty()) return rows;
+  const std::string_view head = lines.front().second;
+  separator = head.find('\t') != std::string_view::npos  ? '\t'
+              : head.find(';') != std::string_view::npos ? ';'
+                                                         : ',';
+  for (std::size_t i = 1; i < lines.size(); ++i)
+    rows.emplace_back(lines[i].first, split_cells(lines[i].second, separator));
+  return rows;
+}
+
 }  // namespace
 
 GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
@@ -244,18 +264,9 @@ GyroRecording samples_recording(const std::string& name, std::vector<double> t,
 }
 
 std::vector<double> parse_time_csv(std::string_view text, const std::string& file) {
-  text = without_bom(text);
-  if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
   std::vector<double> pauses;
-  const auto lines = lines_of(text);
-  if (lines.empty()) return pauses;
-  const std::string_view head = lines.front().second;
-  const char separator = head.find('\t') != std::string_view::npos  ? '\t'
-                         : head.find(';') != std::string_view::npos ? ';'
-                                                                    : ',';
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    const auto& [number, line] = lines[i];
-    const std::vector<std::string> cells = split_cells(line, separator);
+  char separator = ',';
+  for (const auto& [number, cells] : meta_rows(text, file, separator)) {
     if (cells.size() < 2) throw InputError(file, number, "", "expected an event and its time");
     if (cells[0] != "PAUSE") continue;
     const std::optional<double> time = parse_number(cells[1], separator == ';');
@@ -268,17 +279,8 @@ std::vector<double> parse_time_csv(std::string_view text, const std::string& fil
 }
 
 std::optional<double> parse_device_csv(std::string_view text, const std::string& file) {
-  text = without_bom(text);
-  if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
-  const auto lines = lines_of(text);
-  if (lines.empty()) return std::nullopt;
-  const std::string_view head = lines.front().second;
-  const char separator = head.find('\t') != std::string_view::npos  ? '\t'
-                         : head.find(';') != std::string_view::npos ? ';'
-                                                                    : ',';
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    const auto& [number, line] = lines[i];
-    const std::vector<std::string> cells = split_cells(line, separator);
+  char separator = ',';
+  for (const auto& [number, cells] : meta_rows(text, file, separator)) {
     if (cells.size() < 2 || lower(cells[0]) != "gyroscope range") continue;
     const std::string& cell = cells[1];
     if (cell.empty() || cell == "null") return std::nullopt;
