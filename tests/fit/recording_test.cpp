@@ -4,7 +4,6 @@
 #include "fit/recording.hpp"
 
 #include <gtest/gtest.h>
-#include <zip.h>
 
 #include <cstdint>
 #include <fstream>
@@ -13,6 +12,7 @@
 #include "common/errors.hpp"
 #include "support/scratch.hpp"
 #include "synthetic_recording.hpp"
+#include "zip_writer.hpp"
 
 namespace bookspin::fit {
 namespace {
@@ -51,19 +51,8 @@ TEST(Recording, ReadsAZipOfTheFolder) {
   const test::SyntheticRecording written = small_recording();
   const auto dir = bookspin::test::fresh_dir("fit/zip");
   const auto path = dir / "toss.zip";
-  zipFile zip = zipOpen64(path.string().c_str(), APPEND_STATUS_CREATE);
-  ASSERT_NE(zip, nullptr);
-  const std::string files[][2] = {
-      {"toss/Raw Data.csv", test::raw_data_csv(written, test::Dialect::comma)},
-      {"toss/meta/time.csv", test::time_csv(written)}};
-  for (const auto& [name, bytes] : files) {
-    ASSERT_EQ(zipOpenNewFileInZip64(zip, name.c_str(), nullptr, nullptr, 0, nullptr, 0, nullptr,
-                                    Z_DEFLATED, Z_DEFAULT_COMPRESSION, 1),
-              ZIP_OK);
-    ASSERT_EQ(zipWriteInFileInZip(zip, bytes.data(), static_cast<unsigned>(bytes.size())), ZIP_OK);
-    zipCloseFileInZip(zip);
-  }
-  zipClose(zip, nullptr);
+  test::write_zip(path, {{"toss/Raw Data.csv", test::raw_data_csv(written, test::Dialect::comma)},
+                         {"toss/meta/time.csv", test::time_csv(written)}});
   const GyroRecording read = read_recording(path);
   expect_same_samples(read, written);
   EXPECT_EQ(read.name, "toss");
@@ -160,27 +149,6 @@ TEST(Recording, ALoneCrEndsALineAsLfAndCrLfDo) {
   EXPECT_EQ(error_of(bad), "bad.csv:5: t: not a number: \"0.0x0000\"");
 }
 
-/// A zip at `path` of `files` (name, bytes), deflated; with `declared` set, each entry stored
-/// raw and declared to inflate to that many bytes (a zip bomb's claim).
-void write_zip(const std::filesystem::path& path,
-               const std::vector<std::pair<std::string, std::string>>& files,
-               std::optional<std::uint64_t> declared = std::nullopt) {
-  zipFile zip = zipOpen64(path.string().c_str(), APPEND_STATUS_CREATE);
-  ASSERT_NE(zip, nullptr);
-  for (const auto& [name, bytes] : files) {
-    ASSERT_EQ(zipOpenNewFileInZip2_64(zip, name.c_str(), nullptr, nullptr, 0, nullptr, 0, nullptr,
-                                      declared ? 0 : Z_DEFLATED,
-                                      declared ? 0 : Z_DEFAULT_COMPRESSION, declared ? 1 : 0, 1),
-              ZIP_OK);
-    ASSERT_EQ(zipWriteInFileInZip(zip, bytes.data(), static_cast<unsigned>(bytes.size())), ZIP_OK);
-    if (declared)
-      zipCloseFileInZipRaw64(zip, *declared, 0);
-    else
-      zipCloseFileInZip(zip);
-  }
-  zipClose(zip, nullptr);
-}
-
 std::string read_error(const std::filesystem::path& path) {
   try {
     read_recording(path);
@@ -193,19 +161,20 @@ std::string read_error(const std::filesystem::path& path) {
 TEST(Recording, AZipIsOneExportNotEmptyAndNoBomb) {
   const auto dir = bookspin::test::fresh_dir("fit/bad-zips");
   const std::string raw = test::raw_data_csv(small_recording(), test::Dialect::comma);
-  write_zip(dir / "two.zip", {{"morning/Raw Data.csv", raw}, {"evening/Raw Data.csv", raw}});
+  test::write_zip(dir / "two.zip", {{"morning/Raw Data.csv", raw}, {"evening/Raw Data.csv", raw}});
   EXPECT_EQ(read_error(dir / "two.zip"),
             (dir / "two.zip").string() +
                 ": holds 2 exports (\"morning/Raw Data.csv\", \"evening/Raw Data.csv\"): which "
                 "one? Unzip it and give that export's folder");
-  write_zip(dir / "empty.zip", {});
+  test::write_zip(dir / "empty.zip", {});
   EXPECT_EQ(read_error(dir / "empty.zip"),
             (dir / "empty.zip").string() + ": an empty zip (no file in it)");
   std::ofstream(dir / "nothing.zip").flush();
   EXPECT_EQ(read_error(dir / "nothing.zip"),
             (dir / "nothing.zip").string() + ": an empty file, not a zip file");
   // An entry that claims 4 GiB is refused on its claim, before a byte is inflated.
-  write_zip(dir / "bomb.zip", {{"toss/Raw Data.csv", "t,wx,wy,wz\n"}}, std::uint64_t{4} << 30);
+  test::write_zip(dir / "bomb.zip", {{"toss/Raw Data.csv", "t,wx,wy,wz\n"}},
+                  std::uint64_t{4} << 30);
   EXPECT_EQ(read_error(dir / "bomb.zip"),
             (dir / "bomb.zip").string() +
                 ": toss/Raw Data.csv: inflates to more than 256 MiB, more than a recording (a "

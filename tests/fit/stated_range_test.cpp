@@ -4,7 +4,6 @@
 // Sensor.getMaximumRange() in rad/s. The files here are written by hand in that layout; the
 // recordings are synthetic tosses (synthetic_recording.hpp) clipped by hand.
 #include <gtest/gtest.h>
-#include <zip.h>
 
 #include <algorithm>
 #include <fstream>
@@ -15,6 +14,7 @@
 #include "fit/saturation.hpp"
 #include "support/scratch.hpp"
 #include "synthetic_recording.hpp"
+#include "zip_writer.hpp"
 
 namespace bookspin::fit {
 namespace {
@@ -67,19 +67,8 @@ TEST(DeviceCsv, AnExportFoldersRangeReachesTheRecording) {
   EXPECT_DOUBLE_EQ(*read_recording(dir / "Raw Data.csv").gyroscope_range, 17.453293);
   // A zip of the export, its device.csv tab-separated.
   const auto path = dir.parent_path() / "export.zip";
-  zipFile zip = zipOpen64(path.string().c_str(), APPEND_STATUS_CREATE);
-  ASSERT_NE(zip, nullptr);
-  const std::string files[][2] = {
-      {"export/Raw Data.csv", test::raw_data_csv(rec, test::Dialect::comma)},
-      {"export/meta/device.csv", android_device_csv('\t', "8.726646")}};
-  for (const auto& [name, bytes] : files) {
-    ASSERT_EQ(zipOpenNewFileInZip64(zip, name.c_str(), nullptr, nullptr, 0, nullptr, 0, nullptr,
-                                    Z_DEFLATED, Z_DEFAULT_COMPRESSION, 1),
-              ZIP_OK);
-    ASSERT_EQ(zipWriteInFileInZip(zip, bytes.data(), static_cast<unsigned>(bytes.size())), ZIP_OK);
-    zipCloseFileInZip(zip);
-  }
-  zipClose(zip, nullptr);
+  test::write_zip(path, {{"export/Raw Data.csv", test::raw_data_csv(rec, test::Dialect::comma)},
+                         {"export/meta/device.csv", android_device_csv('\t', "8.726646")}});
   EXPECT_DOUBLE_EQ(*read_recording(path).gyroscope_range, 8.726646);
 }
 

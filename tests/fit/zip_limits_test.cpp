@@ -3,7 +3,6 @@
 // says 256 MiB or less is read. The claims are made by hand (entries stored raw, their sizes
 // declared), 1 MiB over and exactly at the limit.
 #include <gtest/gtest.h>
-#include <zip.h>
 
 #include <cstdint>
 #include <string>
@@ -11,23 +10,10 @@
 #include "common/errors.hpp"
 #include "fit/recording.hpp"
 #include "support/scratch.hpp"
+#include "zip_writer.hpp"
 
 namespace bookspin::fit {
 namespace {
-
-/// A zip at `path` of one entry `name` holding `bytes` stored raw, declared to inflate to
-/// `declared` bytes.
-void write_claiming_zip(const std::filesystem::path& path, const std::string& name,
-                        const std::string& bytes, std::uint64_t declared) {
-  zipFile zip = zipOpen64(path.string().c_str(), APPEND_STATUS_CREATE);
-  ASSERT_NE(zip, nullptr);
-  ASSERT_EQ(zipOpenNewFileInZip2_64(zip, name.c_str(), nullptr, nullptr, 0, nullptr, 0, nullptr, 0,
-                                    0, 1, 1),
-            ZIP_OK);
-  ASSERT_EQ(zipWriteInFileInZip(zip, bytes.data(), static_cast<unsigned>(bytes.size())), ZIP_OK);
-  zipCloseFileInZipRaw64(zip, declared, 0);
-  zipClose(zip, nullptr);
-}
 
 std::string error_of(const std::filesystem::path& path) {
   try {
@@ -41,14 +27,14 @@ std::string error_of(const std::filesystem::path& path) {
 TEST(ZipLimits, AClaimOneMebibyteOverTheLimitIsRefusedOnItsClaim) {
   const auto dir = bookspin::test::fresh_dir("fit/zip-limits");
   const std::uint64_t limit = std::uint64_t{256} * 1024 * 1024;
-  write_claiming_zip(dir / "over.zip", "toss/Raw Data.csv", "t,wx,wy,wz\n", limit + (1u << 20));
+  test::write_zip(dir / "over.zip", {{"toss/Raw Data.csv", "t,wx,wy,wz\n"}}, limit + (1u << 20));
   EXPECT_EQ(error_of(dir / "over.zip"),
             (dir / "over.zip").string() +
                 ": toss/Raw Data.csv: inflates to more than 256 MiB, more than a recording (a "
                 "damaged zip, or not phyphox's)");
   // At the limit the claim passes: what is refused then is the entry's own bytes (a header
   // and no samples), not its size.
-  write_claiming_zip(dir / "at.zip", "toss/Raw Data.csv", "t,wx,wy,wz\n", limit);
+  test::write_zip(dir / "at.zip", {{"toss/Raw Data.csv", "t,wx,wy,wz\n"}}, limit);
   EXPECT_EQ(error_of(dir / "at.zip").find("inflates to more than"), std::string::npos)
       << error_of(dir / "at.zip");
 }
