@@ -1,6 +1,7 @@
 #include "engines/ode_model.hpp"
 
 #include <mutex>
+#include <new>
 
 namespace bookspin::engines {
 
@@ -18,7 +19,14 @@ void init_ode_for_this_thread() {
 OdeModel::OdeModel(const physics::Body& body, physics::Integrator integrator)
     : EngineBody(body), integrator_(integrator) {
   init_ode_for_this_thread();
+  // Each world its own stepping implementation: ODE's global default one is not safe from two
+  // threads at once (ode/objects.h, dWorldSetStepThreadingImplementation), and sweeps and
+  // accuracy runs step one model per thread.
+  threading_ = dThreadingAllocateSelfThreadedImplementation();
+  if (threading_ == nullptr) throw std::bad_alloc();
   world_ = dWorldCreate();
+  dWorldSetStepThreadingImplementation(world_, dThreadingImplementationGetFunctions(threading_),
+                                       threading_);
   dWorldSetGravity(world_, 0, 0, 0);
   body_id_ = dBodyCreate(world_);
   dMass mass;
@@ -29,7 +37,10 @@ OdeModel::OdeModel(const physics::Body& body, physics::Integrator integrator)
   reset(physics::InitialState{});
 }
 
-OdeModel::~OdeModel() { dWorldDestroy(world_); }  // destroys the body too
+OdeModel::~OdeModel() {
+  dWorldDestroy(world_);  // destroys the body too
+  dThreadingFreeImplementation(threading_);
+}
 
 void OdeModel::reset(const physics::InitialState& initial) {
   dBodySetPosition(body_id_, 0, 0, 0);

@@ -27,6 +27,7 @@ class OdeModel final : public EngineBody {
 
   physics::Integrator integrator_;
   dWorldID world_ = nullptr;
+  dThreadingImplementationID threading_ = nullptr;  ///< this world's own (self-threaded)
   dBodyID body_id_ = nullptr;
 };
 
