@@ -117,53 +117,42 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
   const auto three = [](const Eigen::Vector3d& v) {
     return fixed(v[0], 4) + ", " + fixed(v[1], 4) + ", " + fixed(v[2], 4);
   };
-  // Pooled: each recording's own bias, measured on its own rest and corrected by its own
-  // flights.
-  for (const RecordingPart& part : fit.parts) {
-    const bool corrected = part.bias_correction != Eigen::Vector3d::Zero();
-    if (part.rest_samples > 0) {
-      lines.push_back(
-          "bias of " + part.name + " (rad/s, the mean of " + std::to_string(part.rest_samples) +
-          " samples at rest ± their scatter): " + with_sigma(part.bias, part.bias_sigma));
-      if (corrected)
-        lines.push_back("bias of " + part.name +
-                        " in flight (rad/s): " + three(part.bias + part.bias_correction) +
-                        ", the rest's corrected by its flights by " + three(part.bias_correction) +
-                        " (within 3 σ of its rest's scatter)");
-    } else if (part.bias_fitted_sigma) {
-      lines.push_back("no rest in " + part.name +
-                      ": its bias (rad/s) is fitted from its flights: " +
-                      with_sigma(part.bias_correction, *part.bias_fitted_sigma));
-    } else if (corrected) {
-      lines.push_back(
-          "no rest in " + part.name +
-          ": its bias (rad/s) is fitted from its flights: " + three(part.bias_correction));
-    } else {
-      lines.push_back("no rest in " + part.name + ": its bias is not removed");
+  // The bias removed from each recording (pooled: each on its own rest, corrected by its own
+  // flights; one recording: "the" rest and flights). `rest` is the rest's mean (0 without a
+  // rest), `correction` what the flights added to it.
+  const auto bias_lines = [&](const std::string& who, const Eigen::Vector3d& rest,
+                              const Eigen::Vector3d& rest_sigma, int rest_samples,
+                              const Eigen::Vector3d& correction,
+                              const std::optional<Eigen::Vector3d>& fitted_sigma) {
+    const bool one = who.empty();
+    const std::string of = one ? "" : " of " + who;
+    const std::string own = one ? "the" : "its";
+    const Eigen::Vector3d in_flight = rest + correction;
+    if (rest_samples > 0) {
+      lines.push_back("bias" + of + " (rad/s, the mean of " + std::to_string(rest_samples) +
+                      " samples at rest ± their scatter): " + with_sigma(rest, rest_sigma));
+      if (correction != Eigen::Vector3d::Zero())
+        lines.push_back("bias" + of + " in flight (rad/s): " + three(in_flight) +
+                        ", the rest's corrected by " + own + " flights by " + three(correction) +
+                        " (within 3 σ of " + (one ? "the rest's" : "its rest's") + " scatter)");
+      return;
     }
-  }
-  if (fit.parts.empty()) {
-    const Eigen::Vector3d& bias = fit.search.bias;  // removed in flight: the rest's + correction
-    const Eigen::Vector3d rest = bias - fit.bias_correction;
-    const bool corrected = fit.bias_correction != Eigen::Vector3d::Zero();
-    if (fit.search.rest_samples > 0) {
-      lines.push_back(
-          "bias (rad/s, the mean of " + std::to_string(fit.search.rest_samples) +
-          " samples at rest ± their scatter): " + with_sigma(rest, fit.search.bias_sigma));
-      if (corrected)
-        lines.push_back("bias in flight (rad/s): " + three(bias) +
-                        ", the rest's corrected by the flights by " + three(fit.bias_correction) +
-                        " (within 3 σ of the rest's scatter)");
-    } else if (fit.bias_fitted_sigma) {
-      lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
-                      with_sigma(bias, *fit.bias_fitted_sigma));
-    } else if (corrected) {
-      lines.push_back("no rest in the recording: the bias (rad/s) is fitted from the flights: " +
-                      three(bias));
-    } else {
-      lines.push_back("no rest in the recording: the gyroscope's bias is not removed");
-    }
-  }
+    const std::string fitted = "no rest in " + (one ? "the recording: the" : who + ": its") +
+                               " bias (rad/s) is fitted from " + own + " flights: ";
+    if (fitted_sigma)
+      lines.push_back(fitted + with_sigma(in_flight, *fitted_sigma));
+    else if (correction != Eigen::Vector3d::Zero())
+      lines.push_back(fitted + three(in_flight));
+    else
+      lines.push_back(one ? "no rest in the recording: the gyroscope's bias is not removed"
+                          : "no rest in " + who + ": its bias is not removed");
+  };
+  for (const RecordingPart& part : fit.parts)
+    bias_lines(part.name, part.bias, part.bias_sigma, part.rest_samples, part.bias_correction,
+               part.bias_fitted_sigma);
+  if (fit.parts.empty())  // search.bias is removed in flight: the rest's mean + the correction
+    bias_lines("", fit.search.bias - fit.bias_correction, fit.search.bias_sigma,
+               fit.search.rest_samples, fit.bias_correction, fit.bias_fitted_sigma);
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
     std::string drag;
