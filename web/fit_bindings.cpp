@@ -150,17 +150,17 @@ fit::GyroRecording read_given(const std::string& file_name, const std::string& b
   const std::filesystem::path here = std::filesystem::path(kFolder) / std::to_string(slot);
   std::filesystem::create_directories(here / folder);
   std::filesystem::current_path(here);
-  {
-    std::ofstream file(path, std::ios::binary);
-    file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!file) throw std::runtime_error("cannot write the recording into memory");
-  }
-  for (const auto& [name, text] : meta) {
-    if (name != "time.csv" && name != "device.csv") continue;  // what read_recording reads
+  // Into the module's memory (MEMFS): a failure there is the page's fault, not the file's.
+  const auto put = [](const std::filesystem::path& to, const std::string& content) {
+    std::ofstream file(to, std::ios::binary);
+    file.write(content.data(), static_cast<std::streamsize>(content.size()));
+    if (!file) throw std::runtime_error("cannot write " + to.string() + " into memory");
+  };
+  put(path, bytes);
+  for (const auto& [meta_name, text] : meta) {
+    if (meta_name != "time.csv" && meta_name != "device.csv") continue;  // read_recording's
     std::filesystem::create_directories(folder / "meta");
-    std::ofstream file(folder / "meta" / name, std::ios::binary);
-    file.write(text.data(), static_cast<std::streamsize>(text.size()));
-    if (!file) throw std::runtime_error("cannot write the recording's meta/ into memory");
+    put(folder / "meta" / meta_name, text);
   }
   return fit::read_recording(path);
 }

@@ -170,9 +170,13 @@ export class LabPanel {
       [1, 2, 3].map((a) => `<tr><th>axis ${a} (phone x, y, z)</th><td>(${cell(b[`axis${a}_x`])}, ${cell(b[`axis${a}_y`])}, ${cell(b[`axis${a}_z`])})${b[`axis${a}_sigma_deg`] === null ? '' : ` ± ${cell(b[`axis${a}_sigma_deg`])}°`}</td></tr>`).join('') +
       `<tr><th>tosses, drag</th><td>${cell(b.tosses)}, ${cell(b.drag)}</td></tr>`;
     // Several files: which were fitted as one body and which were refused, and why.
-    const files = [...(r.fitted && (r.fitted.length > 1 || r.refused.length)
-      ? [`fitted as one body: ${r.fitted.join(', ')}`, ...r.refused.map((x) => `refused ${x.file}: ${x.error}`)]
-      : []), ...(this.skipped && this.skipped.length ? [`skipped (not a recording): ${this.skipped.join(', ')}`] : [])];
+    // (One export with its meta/ is fitted as several are, but says nothing of it.)
+    const files = [];
+    if (r.fitted && (r.fitted.length > 1 || r.refused.length)) {
+      files.push(`fitted as one body: ${r.fitted.join(', ')}`);
+      for (const x of r.refused) files.push(`refused ${x.file}: ${x.error}`);
+    }
+    if (this.skipped.length) files.push(`skipped (not a recording): ${this.skipped.join(', ')}`);
     $('labSummary').textContent = [...files, ...r.summary].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
     const list = $('labTosses');
     list.innerHTML = '';
