@@ -91,8 +91,8 @@ CsvTable fit_body_csv(const FitResult& fit) {
   };
   if (fit.parts.empty()) {
     table.rows.push_back(bias_cells(row, fit.search.bias,
-                                    fit.search.rest_samples > 0
-                                        ? std::optional<Eigen::Vector3d>(fit.search.bias_sigma)
+                                    fit.search.rest.samples > 0
+                                        ? std::optional<Eigen::Vector3d>(fit.search.rest.sigma)
                                         : fit.bias_fitted_sigma));
     return table;
   }
@@ -100,7 +100,7 @@ CsvTable fit_body_csv(const FitResult& fit) {
   for (const RecordingPart& part : fit.parts) {
     std::vector<CsvCell> cells =
         bias_cells(row, part.bias + part.bias_correction,
-                   part.rest_samples > 0 ? std::optional<Eigen::Vector3d>(part.bias_sigma)
+                   part.rest.samples > 0 ? std::optional<Eigen::Vector3d>(part.rest.sigma)
                                          : part.bias_fitted_sigma);
     cells.insert(cells.begin(), part.name);
     table.rows.push_back(std::move(cells));
@@ -117,48 +117,55 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
   const auto three = [](const Eigen::Vector3d& v) {
     return fixed(v[0], 4) + ", " + fixed(v[1], 4) + ", " + fixed(v[2], 4);
   };
-  // The bias removed from each recording (pooled: each on its own rest, corrected by its own
-  // flights; one recording: "the" rest and flights). `rest` is the rest's mean (0 without a
-  // rest), `correction` what the flights added to it.
-  const auto bias_lines = [&](const std::string& who, const Eigen::Vector3d& rest,
-                              const Eigen::Vector3d& rest_sigma, int rest_samples,
+  // The bias removed from each recording (pooled: each on its own still rest, corrected by its
+  // own flights; one recording: "the" rest and flights). `rest` is the still rest (its mean 0
+  // without one; its stretches in the recording's own times), `correction` what the flights
+  // added to it.
+  const auto bias_lines = [&](const std::string& who, const Rest& rest,
                               const Eigen::Vector3d& correction,
                               const std::optional<Eigen::Vector3d>& fitted_sigma) {
     const bool one = who.empty();
     const std::string of = one ? "" : " of " + who;
     const std::string own = one ? "the" : "its";
-    const Eigen::Vector3d in_flight = rest + correction;
-    if (rest_samples > 0) {
-      lines.push_back("bias" + of + " (rad/s, the mean of " + std::to_string(rest_samples) +
-                      " samples at rest ± their scatter): " + with_sigma(rest, rest_sigma));
+    const Eigen::Vector3d in_flight = rest.mean + correction;
+    if (rest.samples > 0) {
+      std::string seconds;
+      for (const auto& [a, b] : rest.stretches)
+        seconds += (seconds.empty() ? "" : ", ") + fixed(a, 2) + "–" + fixed(b, 2);
+      lines.push_back("bias" + of + " (rad/s, the mean of " + std::to_string(rest.samples) +
+                      " samples where the phone lay still, " + seconds +
+                      " s, ± their scatter): " + with_sigma(rest.mean, rest.sigma));
       if (correction != Eigen::Vector3d::Zero())
         lines.push_back("bias" + of + " in flight (rad/s): " + three(in_flight) +
-                        ", the rest's corrected by " + own + " flights by " + three(correction) +
-                        " (within 3 σ of " + (one ? "the rest's" : "its rest's") + " scatter)");
+                        ", the still rest's corrected by " + own + " flights by " +
+                        three(correction) + " (within 3 standard errors of " +
+                        (one ? "the rest's" : "its rest's") + " mean and " + fixed(kBiasDrift, 3) +
+                        " rad/s of drift)");
       return;
     }
-    const std::string fitted = "no rest in " + (one ? "the recording: the" : who + ": its") +
+    const std::string fitted = "no still stretch in " +
+                               (one ? "the recording: the" : who + ": its") +
                                " bias (rad/s) is fitted from " + own + " flights: ";
     if (fitted_sigma)
       lines.push_back(fitted + with_sigma(in_flight, *fitted_sigma));
     else if (correction != Eigen::Vector3d::Zero())
       lines.push_back(fitted + three(in_flight));
     else
-      lines.push_back(one ? "no rest in the recording: the gyroscope's bias is not removed"
-                          : "no rest in " + who + ": its bias is not removed");
+      lines.push_back(one ? "no still stretch in the recording: the gyroscope's bias is not "
+                            "removed"
+                          : "no still stretch in " + who + ": its bias is not removed");
   };
   for (const RecordingPart& part : fit.parts)
-    bias_lines(part.name, part.bias, part.bias_sigma, part.rest_samples, part.bias_correction,
-               part.bias_fitted_sigma);
-  if (fit.parts.empty())  // search.bias is removed in flight: the rest's mean + the correction
-    bias_lines("", fit.search.bias - fit.bias_correction, fit.search.bias_sigma,
-               fit.search.rest_samples, fit.bias_correction, fit.bias_fitted_sigma);
+    bias_lines(part.name, part.rest, part.bias_correction, part.bias_fitted_sigma);
+  if (fit.parts.empty())
+    bias_lines("", fit.search.rest, fit.bias_correction, fit.bias_fitted_sigma);
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
     std::string drag;
     if (fit.drag != physics::DragLaw::none)
       drag = ", drag " + fixed(t.drag_rate, 3) +
-             (t.drag_rate_sigma ? " ± " + fixed(*t.drag_rate_sigma, 3) : std::string()) + " /s";
+             (t.drag_rate_sigma ? " ± " + fixed(*t.drag_rate_sigma, 3) : std::string()) + " /s" +
+             (t.drag_rate == 0.0 ? " (at its bound: air cannot speed a body up)" : "");
     const auto [t_start, recording] = own_time(fit, t.flight.t_start);
     const double t_end = t.flight.t_end - (t.flight.t_start - t_start);
     lines.push_back("kept toss " + std::to_string(k + 1) + ": " +

@@ -67,32 +67,13 @@ std::vector<std::pair<int, int>> runs(const std::vector<char>& mask,
   return result;
 }
 
-/// The bias: the mean ω over the rest stretches (|ω| < rest_omega for min_rest s or longer),
-/// and each axis's standard deviation there.
-void measure_bias(const GyroRecording& recording, const FinderSettings& settings,
-                  const std::vector<std::pair<int, int>>& segs, FlightSearch& search) {
-  const int n = static_cast<int>(recording.t.size());
-  std::vector<char> still(n);
-  for (int i = 0; i < n; ++i) still[i] = recording.omega[i].norm() < settings.rest_omega;
-  std::vector<std::pair<int, int>> rests;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int count = 0;
-  for (const auto& [first, last] : runs(still, segs)) {
-    if (recording.t[last] - recording.t[first] < settings.min_rest) continue;
-    rests.emplace_back(first, last);
-    for (int i = first; i <= last; ++i) sum += recording.omega[i];
-    count += last - first + 1;
-  }
-  search.rest_samples = count;
-  search.bias = count > 0 ? Eigen::Vector3d(sum / count) : Eigen::Vector3d::Zero();
-  Eigen::Vector3d squares = Eigen::Vector3d::Zero();
-  for (const auto& [first, last] : rests)
-    for (int i = first; i <= last; ++i) squares += (recording.omega[i] - search.bias).cwiseAbs2();
-  search.bias_sigma =
-      count > 1 ? Eigen::Vector3d((squares / (count - 1)).cwiseSqrt()) : Eigen::Vector3d::Zero();
-  // Pooled recordings (fit/pool.hpp) had each its own bias removed already: none is left to
-  // remove, and each one's correction is its own (fit/toss_fit.hpp).
-  if (!recording.parts.empty()) search.bias = Eigen::Vector3d::Zero();
+/// The bias: the still rest's mean (fit/rest.hpp). Pooled recordings (fit/pool.hpp) had each
+/// its own bias removed already: none is left to remove, and each one's correction is its own
+/// (fit/toss_fit.hpp).
+void measure_bias(const GyroRecording& recording, const std::vector<std::pair<int, int>>& segs,
+                  FlightSearch& search) {
+  search.rest = find_rest(recording.t, recording.omega, segs);
+  search.bias = recording.parts.empty() ? search.rest.mean : Eigen::Vector3d::Zero();
 }
 
 /// |I ω̇ + ω × I ω| / |ω|² at sample i: the torque Euler's equations leave (I scaled to a
@@ -164,7 +145,7 @@ Eigen::Matrix3d euler_inertia(const std::vector<Eigen::Vector3d>& omega,
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings) {
   FlightSearch search;
   const std::vector<std::pair<int, int>> segs = segments(recording);
-  measure_bias(recording, settings, segs, search);
+  measure_bias(recording, segs, search);
   const int n = static_cast<int>(recording.t.size());
   const std::vector<double>& t = recording.t;
   std::vector<Eigen::Vector3d> omega(n);
@@ -272,10 +253,10 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
 
 FlightSearch hand_flights(const GyroRecording& recording,
                           const std::vector<std::pair<double, double>>& ranges,
-                          const std::string& option, const FinderSettings& settings) {
+                          const std::string& option, const FinderSettings& /*settings*/) {
   FlightSearch search;
   const std::vector<std::pair<int, int>> segs = segments(recording);
-  measure_bias(recording, settings, segs, search);
+  measure_bias(recording, segs, search);
   const std::vector<double>& t = recording.t;
   // In time order (the tosses are numbered so), none overlapping another or given twice.
   std::vector<std::pair<double, double>> sorted = ranges;

@@ -25,21 +25,19 @@ struct DroppedStretch {
 
 /// What the finder found.
 struct FlightSearch {
-  /// rad/s, phone frame: the rest's mean; 0 for pooled recordings, each of which had its own
-  /// removed (GyroRecording::parts).
+  /// rad/s, phone frame: the bias removed, the still rest's mean (fit/rest.hpp); 0 without a
+  /// still rest, and 0 for pooled recordings, each of which had its own removed
+  /// (GyroRecording::parts).
   Eigen::Vector3d bias = Eigen::Vector3d::Zero();
-  /// rad/s, phone frame: the standard deviation of each axis's samples at rest (the gyroscope's
-  /// noise there); 0 without rest.
-  Eigen::Vector3d bias_sigma = Eigen::Vector3d::Zero();
-  int rest_samples = 0;  ///< samples at rest the bias was measured on (0: not removed)
+  /// Where the phone lay still and what the still samples say of the bias (samples 0: none).
+  Rest rest;
   std::vector<Flight> flights;
   std::vector<DroppedStretch> dropped;
 };
 
 /// The finder's thresholds.
 struct FinderSettings {
-  double rest_omega = 0.5;    ///< rad/s: at rest below this (bias included)
-  double min_rest = 0.3;      ///< s: a rest stretch at least this long measures the bias
+  double rest_omega = 0.5;    ///< rad/s: moving at or above this (bias included)
   double flight_omega = 2.0;  ///< rad/s: a free flight turns at least this fast throughout
   double min_flight = 0.3;    ///< s: a shorter flight is dropped (too short to fit)
 };

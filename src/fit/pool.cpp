@@ -33,8 +33,7 @@ GyroRecording pool_recordings(const std::vector<GyroRecording>& recordings) {
     part.first = static_cast<int>(pooled.t.size());
     part.t_start = recording.t.front() + part.t_offset;
     part.bias = own.bias;
-    part.bias_sigma = own.bias_sigma;
-    part.rest_samples = own.rest_samples;
+    part.rest = own.rest;
     part.gyroscope_range = recording.gyroscope_range;
     for (std::size_t i = 0; i < recording.t.size(); ++i) {
       pooled.t.push_back(recording.t[i] + part.t_offset);

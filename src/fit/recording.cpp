@@ -302,10 +302,31 @@ GyroRecording read_recording(const std::filesystem::path& path) {
   if (!fs::exists(status)) throw InputError(path.string() + ": no such file or folder");
   if (fs::is_directory(status)) {
     const fs::path raw = path / "Raw Data.csv";
-    if (!fs::exists(raw))
+    if (fs::exists(raw)) return read_recording(raw);
+    // phyphox's single-CSV exports are kept one to a folder ("Gyroscope rotation rate
+    // 2022-05-03 12-07-27.csv"): a folder holding exactly one CSV is that CSV, named after the
+    // folder as an export is.
+    std::vector<fs::path> csvs;
+    for (const fs::directory_entry& entry : fs::directory_iterator(path, error))
+      if (entry.is_regular_file(error) && lower(entry.path().extension().string()) == ".csv")
+        csvs.push_back(entry.path());
+    std::sort(csvs.begin(), csvs.end());
+    if (csvs.empty())
       throw InputError(path.string() +
-                       ": not a gyroscope recording: the folder holds no \"Raw Data.csv\"");
-    return read_recording(raw);
+                       ": not a gyroscope recording: the folder holds no \"Raw Data.csv\" and no "
+                       "other CSV");
+    if (csvs.size() > 1) {
+      std::string names;
+      for (const fs::path& csv : csvs)
+        names += (names.empty() ? "\"" : ", \"") + csv.filename().string() + "\"";
+      throw InputError(path.string() + ": holds " + std::to_string(csvs.size()) +
+                       " CSVs and no \"Raw Data.csv\" (" + names + "): which one? Give that file");
+    }
+    GyroRecording recording = read_recording(csvs.front());
+    fs::path folder = fs::absolute(path).lexically_normal();
+    if (folder.filename().empty()) folder = folder.parent_path();  // "anna/" as "anna"
+    recording.name = file_safe(folder.filename().string());
+    return recording;
   }
   const std::string name = path.stem().string();
   if (lower(path.extension().string()) == ".zip") {

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "fit/rest.hpp"
+
 namespace bookspin::fit {
 
 /// One recording of several pooled into one (pool_recordings): its samples first … last of the
@@ -19,15 +21,14 @@ struct RecordingPart {
   double t_offset = 0.0;    ///< s added to its times
   double t_start = 0.0;     ///< s: its first sample's pooled time
   int first = 0, last = 0;  ///< its samples in the pooled recording (inclusive)
-  /// rad/s, phone frame: the bias removed from its samples (its rest's mean; 0 without rest),
-  /// the scatter of its samples at rest, and how many there were (fit/flights.hpp).
+  /// rad/s, phone frame: the bias removed from its samples (its still rest's mean; 0 without
+  /// one), and its still rest (fit/rest.hpp, in its own times).
   Eigen::Vector3d bias = Eigen::Vector3d::Zero();
-  Eigen::Vector3d bias_sigma = Eigen::Vector3d::Zero();
-  int rest_samples = 0;
+  Rest rest;
   /// rad/s: its gyroscope's stated range (GyroRecording::gyroscope_range).
   std::optional<double> gyroscope_range;
   /// rad/s, phone frame, set by the fit (fit/toss_fit.hpp): its own flights' correction of its
-  /// bias (two or more flights; within 3σ of its rest's scatter where it has a rest), and with
+  /// bias (two or more flights; within Rest::bound() where it has a still rest), and with
   /// no rest the correction's standard error. The bias removed in flight is bias +
   /// bias_correction.
   Eigen::Vector3d bias_correction = Eigen::Vector3d::Zero();

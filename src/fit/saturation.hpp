@@ -11,24 +11,43 @@ namespace bookspin::fit {
 
 /// Where a recording's gyroscope saturated, found from the samples alone.
 struct Saturation {
-  /// rad/s: the range the gyroscope stopped at (the largest |ω_i| of the recording), or nullopt
-  /// when nothing is flat there.
+  /// rad/s: the range the gyroscope stopped at (stated, a standard full scale, or the largest
+  /// |ω_i| of the recording), or nullopt when nothing clips there.
   std::optional<double> range;
-  /// One per sample of the recording: true where some component reads the range (|ω_i| within
-  /// 1e-6 of it, relative).
+  /// One per sample of the recording: true where some component reads the range.
   std::vector<bool> at_range;
 };
 
 /// The samples of `recording` at its gyroscope's range. Where the export states the range
 /// (GyroRecording::gyroscope_range) and no sample exceeds it, every sample with some |ω_i|
 /// within kStatedRangeTolerance of it is marked, however short the run. Otherwise (or when no
-/// sample reads the stated range) the range is found from the samples: the largest |ω_i| of the
-/// whole recording, any component and sign, when one component reads it (within 1e-6, relative)
-/// at kMinFlatSamples consecutive samples or more; a smooth peak reaches its top at one sample,
-/// a clipped one stays there. No range, no sample marked. A pooled recording (its `parts`) is
-/// searched recording by recording, each on its samples as measured (its bias put back) with
-/// its own stated range; `range` is then the largest found.
+/// sample reads the stated range) the range is found from the samples: a standard full scale
+/// (kFullScales) whose band (kFullScaleBelow, kFullScaleAbove) holds the largest |ω_i|, where a
+/// component clips there (fit/saturation.cpp, clipped_full_scale: a spike cut flat or a drifting
+/// plateau); else the largest |ω_i| of the whole recording, any component and sign, when one
+/// component reads it (within 1e-6, relative) at kMinFlatSamples consecutive samples or more; a
+/// smooth peak reaches its top at one sample, a clipped one stays there. No range, no sample
+/// marked. A pooled recording (its `parts`) is searched recording by recording, each on its samples
+/// as measured (its bias put back) with its own stated range; `range` is then the largest found.
 Saturation find_saturation(const GyroRecording& recording);
+
+/// rad/s: the standard full scales of MEMS gyroscopes, ±250, 500, 1000, 2000 and 4000 °/s.
+inline constexpr double kFullScales[] = {4.363323129985824, 8.726646259971648, 17.453292519943297,
+                                         34.906585039886594, 69.81317007977319};
+
+/// Relative: how far below and above a standard full scale a clipped axis may read (its
+/// calibration: the iPhone 13 Pro of the development recordings reads 34.63–35.60 rad/s clipped
+/// at ±2000 °/s, −0.8 % to +2.0 %). The band is narrow below: a smooth peak or an impact's
+/// spike that happens to top out near a full scale is not taken for a clip.
+inline constexpr double kFullScaleBelow = 0.01;
+inline constexpr double kFullScaleAbove = 0.03;
+
+/// Relative to the full scale: a spike cut flat has its neighbours below this (a smooth peak
+/// of a component turning at the sampling rate's tenth still reads 0.94 of its top beside it).
+inline constexpr double kSpikeEdge = 0.9;
+
+/// A plateau's own change over its run, at most this share of the other components' change.
+inline constexpr double kPlateauShare = 0.05;
 
 /// Consecutive samples flat at the largest |ω_i| that make it a range rather than a peak.
 inline constexpr int kMinFlatSamples = 3;

@@ -178,9 +178,10 @@ struct SolveOptions {
   bool body_fixed = false;                         ///< axes and moments held (only the ω0 fitted)
   bool moments_fixed = false;                      ///< moments held (axes and ω0 fitted)
   physics::DragLaw drag = physics::DragLaw::none;  ///< the law the rates are of
-  bool rates_fixed = false;  ///< each toss's drag rate held (always under DragLaw::none)
-  double fraction = 1.0;     ///< each toss's first fraction of samples only
-  double window = 0.0;       ///< > 0: each toss's first `window` seconds only
+  bool rates_fixed = false;     ///< each toss's drag rate held (always under DragLaw::none)
+  std::vector<bool> rate_held;  ///< per toss: its drag rate held (at 0: see fit_recording)
+  double fraction = 1.0;        ///< each toss's first fraction of samples only
+  double window = 0.0;          ///< > 0: each toss's first `window` seconds only
   /// > 0: every sample within this many seconds of the last one kept is left out (the start's
   /// rough stages at 100 Hz whatever the rate; the final fit sees every sample).
   double spacing = 0.0;
@@ -242,7 +243,8 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
     auto* cost = new TossCost(&d, samples, stride, p.R0, options.drag);
     problem->AddResidualBlock(cost, nullptr, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(),
                               p.e.at(d.group).data());
-    if (options.drag == physics::DragLaw::none || options.rates_fixed)
+    const bool rate_held = k < options.rate_held.size() && options.rate_held[k];
+    if (options.drag == physics::DragLaw::none || options.rates_fixed || rate_held)
       problem->SetManifold(p.omega0[k].data(), new ceres::SubsetManifold(4, {3}));
     residual_count += cost->num_residuals();
   }
@@ -583,13 +585,14 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     data.push_back(std::move(d));
   }
   if (saturation.range) {
-    int count = 0;
+    int count = 0, clipped = 0;
     for (const TossData& d : data) count += d.saturated;
-    char line[200];
+    for (bool at : saturation.at_range) clipped += at ? 1 : 0;
+    char line[300];
     std::snprintf(line, sizeof line,
-                  "the gyroscope saturated: it reads flat at ±%.6g rad/s (%.0f °/s), its range; "
-                  "%d sample(s) there left out of the tosses",
-                  *saturation.range, *saturation.range * 180.0 / kPi, count);
+                  "the gyroscope saturated: %d sample(s) of the recording read its range, "
+                  "±%.6g rad/s (%.0f °/s); %d of them in the tosses, left out of the fit",
+                  clipped, *saturation.range, *saturation.range * 180.0 / kPi, count);
     result.body.notes.push_back(line);
     result.saturation_range = saturation.range;
   }
@@ -598,17 +601,17 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   const bool dragged = law != physics::DragLaw::none;
   Parameters p = start(data, settings, recording.t);
   p.e.assign(groups, {0.0, 0.0, 0.0});
-  // The bias: the rest's mean, corrected by the flights (two or more) within 3σ of the rest's
-  // scatter on each axis; with no rest, fitted from the flights freely (docs/phone-lab.md, "The
-  // bias"); pooled, each recording's by its own flights within its own rest's bound. Bounded,
-  // the correction is held while the body settles and freed after: a bounded solve from a body
-  // still far off leaves it at the bound's wall.
+  // The bias: the still rest's mean, corrected by the flights (two or more) within Rest::bound()
+  // (3 standard errors of the mean and the drift's allowance) on each axis; with no still rest,
+  // fitted from the flights freely (docs/phone-lab.md, "The bias"); pooled, each recording's by its
+  // own flights within its own rest's bound. Bounded, the correction is held while the body settles
+  // and freed after: a bounded solve from a body still far off leaves it at the bound's wall.
   std::vector<std::optional<Eigen::Vector3d>> bias_bound(groups);
   if (recording.parts.empty()) {
-    if (search.rest_samples > 0) bias_bound[0] = 3.0 * search.bias_sigma;
+    if (search.rest.samples > 0) bias_bound[0] = search.rest.bound();
   } else {
     for (std::size_t g = 0; g < groups; ++g)
-      if (recording.parts[g].rest_samples > 0) bias_bound[g] = 3.0 * recording.parts[g].bias_sigma;
+      if (recording.parts[g].rest.samples > 0) bias_bound[g] = recording.parts[g].rest.bound();
   }
   const std::vector<int> group_tosses = tosses_per_group(data, groups);
   std::vector<bool> bias_fitted(groups), bias_free(groups);
@@ -649,8 +652,24 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     full.bias_held = false;
     full.bias_bound = bias_bound;
   }
-  const Solved solved = solve(data, p, full);
+  Solved solved = solve(data, p, full);
   if (!solved.usable) throw InputError(recording.source + ": the fit did not converge");
+  // Air cannot speed a body up (docs/phone-lab.md, "Drag"): a toss whose rate came out below 0
+  // is fitted again with its rate held at 0. Held, not bounded: a bound that a rate meets from
+  // its start at 0 stalled Ceres's bounded steps far from the fit.
+  if (dragged) {
+    full.rate_held.assign(data.size(), false);
+    bool any = false;
+    for (std::size_t k = 0; k < data.size(); ++k)
+      if (p.omega0[k][3] < 0.0) {
+        p.omega0[k][3] = 0.0;
+        full.rate_held[k] = any = true;
+      }
+    if (any) {
+      solved = solve(data, p, full);
+      if (!solved.usable) throw InputError(recording.source + ": the fit did not converge");
+    }
+  }
   // The bias in flight: the rest's plus the fitted correction (pooled: each recording's own);
   // the samples corrected by it, so that what follows (and measured_omega) sees them as the fit
   // did.
@@ -754,7 +773,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       normalise(q);
       fold_body[f] = q;
       for (const std::array<double, 4>& w : q.omega0)
-        fold_rate[f] += w[3] / static_cast<double>(q.omega0.size());
+        fold_rate[f] += std::max(w[3], 0.0) / static_cast<double>(q.omega0.size());
     }
   } else if (fixed) {
     fold_body[0] = joint;
@@ -840,6 +859,9 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
       toss.flag = text;
     } else {
       toss.flag = flag_of(d.tau, residuals[k], mean_omega, noise);
+      if (!toss.flag.empty() && d.saturated > 0)  // the clip named beside what the rest shows
+        toss.flag += " (the gyroscope saturated: " + std::to_string(d.saturated) +
+                     " of its samples read its range, left out)";
     }
     toss.poor_fit = !toss.flag.empty();
     if (toss.poor_fit)

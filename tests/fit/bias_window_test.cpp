@@ -27,7 +27,7 @@ TEST(BiasWindow, OnlyRestOfThreeTenthsOfASecondOrLongerMeasuresTheBias) {
   }
   for (const FlightSearch& search :
        {find_flights(recording), hand_flights(recording, {{1.0, 1.45}})}) {
-    EXPECT_EQ(search.rest_samples, 200);
+    EXPECT_EQ(search.rest.samples, 200);
     EXPECT_LE((search.bias - b).norm(), 1e-15);
   }
 }

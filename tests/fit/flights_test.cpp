@@ -21,7 +21,7 @@ void expect_flights_found(const test::SyntheticBody& body,
     EXPECT_NEAR(search.flights[k].t_start, synthetic.tosses[k].t_start, 0.05) << "toss " << k;
     EXPECT_NEAR(search.flights[k].t_end, synthetic.tosses[k].t_end, 0.05) << "toss " << k;
   }
-  EXPECT_GT(search.rest_samples, 300);
+  EXPECT_GT(search.rest.samples, 300);
   EXPECT_LT((search.bias - synthetic.bias).norm(), 0.03);  // the hand wobbles 0.03 rad/s at rest
 }
 
@@ -132,21 +132,33 @@ TEST(Flights, TwoTossesAt10kHzAreTwoFlights) {
   }
 }
 
-TEST(Flights, TheBiasIsTheMeanOfEveryRestSample) {
-  // 1 s at rest (100 Hz), zero but for its first and last samples (0.45 rad/s on x, still
-  // below rest_omega), then 1 s turning at 5 rad/s: the bias is (0.45 + 0.45) / 100 on x.
+TEST(Flights, TheBiasIsTheMeanOfTheStillSamplesOnly) {
+  // 1 s slow (100 Hz): 0.4 s held in the hand (a 0.1 rad/s swing on x, 0.2 on y: under
+  // rest_omega), then
+  // 0.6 s lying still on b with the gyroscope's noise (±0.004 rad/s alternating), then 1 s
+  // turning at 5 rad/s. The bias is b, from the still samples alone: the hand's swing is motion
+  // (fit/rest.hpp), not the gyroscope's bias.
+  const Eigen::Vector3d b(0.02, -0.01, 0.005);
   GyroRecording recording;
   recording.name = "rest";
   recording.source = "rest.csv";
   for (int i = 0; i < 200; ++i) {
-    recording.t.push_back(0.01 * i);
-    const double x = i == 0 || i == 99 ? 0.45 : i >= 100 ? 5.0 : 0.0;
-    recording.omega.emplace_back(x, 0.0, 0.0);
+    const double t = 0.01 * i;
+    recording.t.push_back(t);
+    Eigen::Vector3d w = b + Eigen::Vector3d::Constant(i % 2 ? 0.004 : -0.004);
+    if (i < 40) w = Eigen::Vector3d(0.1 * std::sin(2.0 * M_PI * 2.5 * t), 0.2, 0.0);
+    if (i >= 100) w = Eigen::Vector3d(5.0, 0.0, 0.0);
+    recording.omega.push_back(w);
   }
   const FlightSearch search = find_flights(recording);
-  EXPECT_EQ(search.rest_samples, 100);
-  EXPECT_NEAR(search.bias[0], 0.009, 1e-12);
-  EXPECT_EQ(search.bias[1], 0.0);
+  EXPECT_EQ(search.rest.samples, 60);
+  ASSERT_EQ(search.rest.stretches.size(), 1u);
+  EXPECT_DOUBLE_EQ(search.rest.stretches[0].first, 0.40);
+  EXPECT_DOUBLE_EQ(search.rest.stretches[0].second, 0.99);
+  EXPECT_LE((search.bias - b).norm(), 1e-15);
+  // The standard error: 0.004/√60 on each axis (alternating samples: ρ < 0, taken as 0).
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(search.rest.standard_error[c], 0.004 / std::sqrt(59.0), 1e-12) << c;
 }
 
 TEST(Flights, AFlightShorterThanTheMinimumIsDroppedHoweverManySamples) {

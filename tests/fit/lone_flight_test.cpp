@@ -43,7 +43,7 @@ TEST(LoneFlight, IsFoundWithNoRestAndUnevenTimestampsAndFitsWithinFivePercent) {
   for (unsigned seed : {1u, 2u, 3u}) {
     const GyroRecording recording = lone_flight(seed);
     const FlightSearch search = find_flights(recording);
-    EXPECT_EQ(search.rest_samples, 0) << seed;
+    EXPECT_EQ(search.rest.samples, 0) << seed;
     ASSERT_EQ(search.flights.size(), 1u) << seed;
     // Nearly all of it: the finder trims at most a few samples at each end.
     EXPECT_GT(search.flights[0].t_end - search.flights[0].t_start, 0.55) << seed;

@@ -43,8 +43,8 @@ TEST(PooledBias, EachRecordingsBiasIsFittedFromItsOwnFlights) {
   for (Eigen::Vector3d& w : b.omega) w += bias_b - b.bias;
   const GyroRecording pooled =
       pool_recordings({without_rest(a, "phone-a"), without_rest(b, "phone-b")});
-  ASSERT_EQ(pooled.parts[0].rest_samples, 0);
-  ASSERT_EQ(pooled.parts[1].rest_samples, 0);
+  ASSERT_EQ(pooled.parts[0].rest.samples, 0);
+  ASSERT_EQ(pooled.parts[1].rest.samples, 0);
   const FitReport report = fit_report(pooled, {});
   const FitResult& fit = report.result;
   ASSERT_EQ(fit.tosses.size(), 4u);
@@ -78,8 +78,8 @@ TEST(PooledBias, EachRecordingsBiasIsFittedFromItsOwnFlights) {
   // The summary says where each bias came from.
   const std::vector<std::string> lines = fit_summary(fit);
   for (const char* name : {"phone-a", "phone-b"}) {
-    const std::string expected =
-        std::string("no rest in ") + name + ": its bias (rad/s) is fitted from its flights: ";
+    const std::string expected = std::string("no still stretch in ") + name +
+                                 ": its bias (rad/s) is fitted from its flights: ";
     EXPECT_NE(std::find_if(lines.begin(), lines.end(),
                            [&](const std::string& l) { return l.rfind(expected, 0) == 0; }),
               lines.end())

@@ -104,3 +104,35 @@ TEST(Saturation, AFlightMostlyAtTheRangeIsFlaggedForIt) {
 
 }  // namespace
 }  // namespace bookspin::fit
+
+namespace bookspin::fit {
+namespace {
+
+// A clipped iPhone axis without a stated range (docs/phone-lab.md, "Saturation"): x reads a
+// plateau drifting 35.600 → 35.545 rad/s over 12 samples while y and z swing through 10 rad/s
+// (as the held-out clipped throw does); no sample is flat to 1e-6. The plateau is found at the
+// standard ±2000 °/s and its 12 samples marked, none else. The same motion with x a smooth
+// peak topping at 34.7 rad/s (a component turning at 20 rad/s, sampled at 100 Hz) is no clip.
+TEST(Saturation, ADriftingPlateauAtAStandardFullScaleIsFound) {
+  GyroRecording plateau, smooth;
+  for (int i = 0; i < 60; ++i) {
+    const double t = 0.01 * i;
+    const double swing = 5.0 * std::sin(8.0 * t);
+    double x = 34.7 * std::cos(20.0 * (t - 0.3));
+    smooth.t.push_back(t);
+    smooth.omega.emplace_back(x, 3.0 + swing, 2.0 - swing);
+    // Beside the plateau x stays near it (33 rad/s, not a spike's low neighbours): only the
+    // plateau's drift against the swing marks it.
+    x = i >= 24 && i < 36 ? 35.600 - 0.005 * (i - 24) : 33.0 - 0.1 * std::abs(i - 30);
+    plateau.t.push_back(t);
+    plateau.omega.emplace_back(x, 3.0 + swing, 2.0 - swing);
+  }
+  const Saturation found = find_saturation(plateau);
+  ASSERT_TRUE(found.range.has_value());
+  EXPECT_NEAR(*found.range, 2000.0 * M_PI / 180.0, 1e-12);
+  for (int i = 0; i < 60; ++i) EXPECT_EQ(found.at_range[i], i >= 24 && i < 36) << i;
+  EXPECT_FALSE(find_saturation(smooth).range.has_value());
+}
+
+}  // namespace
+}  // namespace bookspin::fit

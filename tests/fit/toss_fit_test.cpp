@@ -285,7 +285,7 @@ TEST(TossFit, TheBiasCorrectionStaysWithinWhatTheRestAllows) {
   FitSettings settings;
   settings.drag = physics::DragLaw::none;
   const FitResult fit = fit_recording(recording, find_flights(recording), settings);
-  ASSERT_GT(fit.search.rest_samples, 0);
+  ASSERT_GT(fit.search.rest.samples, 0);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero(), squares = Eigen::Vector3d::Zero();
   int n = 0;
   for (std::size_t i = 0; synthetic.t[i] < 1.4; ++i, ++n) mean += synthetic.omega[i];
@@ -293,10 +293,10 @@ TEST(TossFit, TheBiasCorrectionStaysWithinWhatTheRestAllows) {
   for (int i = 0; i < n; ++i) squares += (synthetic.omega[i] - mean).cwiseAbs2();
   const Eigen::Vector3d scatter = (squares / (n - 1)).cwiseSqrt();
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(fit.search.bias_sigma[c], scatter[c], 0.3 * scatter[c]) << c;
-    EXPECT_LE(std::abs(fit.bias_correction[c]), 3.0 * fit.search.bias_sigma[c] + 1e-12) << c;
+    EXPECT_NEAR(fit.search.rest.sigma[c], scatter[c], 0.3 * scatter[c]) << c;
+    EXPECT_LE(std::abs(fit.bias_correction[c]), fit.search.rest.bound()[c] + 1e-12) << c;
     // The bias removed in flight is the generator's within the bound.
-    EXPECT_NEAR(fit.search.bias[c], synthetic.bias[c], 3.0 * fit.search.bias_sigma[c] + 0.01) << c;
+    EXPECT_NEAR(fit.search.bias[c], synthetic.bias[c], 3.0 * fit.search.rest.sigma[c] + 0.01) << c;
   }
   // The body CSV says both: the bias removed and the rest's σ.
   const CsvTable body = fit_body_csv(fit);
@@ -306,7 +306,7 @@ TEST(TossFit, TheBiasCorrectionStaysWithinWhatTheRestAllows) {
     return std::get<CsvNumber>(body.rows.at(0).at(at - body.columns.begin())).value.value();
   };
   EXPECT_EQ(column("bias_x"), fit.search.bias[0]);
-  EXPECT_EQ(column("bias_sigma_z"), fit.search.bias_sigma[2]);
+  EXPECT_EQ(column("bias_sigma_z"), fit.search.rest.sigma[2]);
 }
 
 // A recording of the flights alone (the rests cut out): the bias is fitted from the flights, with
@@ -327,15 +327,16 @@ TEST(TossFit, WithNoRestTheBiasIsFittedFromTheFlightsWithItsSigma) {
         recording.omega.push_back(synthetic.omega[i]);
       }
   const FitResult fit = fit_recording(recording, hand_flights(recording, ranges));
-  ASSERT_EQ(fit.search.rest_samples, 0);
+  ASSERT_EQ(fit.search.rest.samples, 0);
   ASSERT_TRUE(fit.bias_fitted_sigma.has_value());
   for (int c = 0; c < 3; ++c) {
     EXPECT_GT((*fit.bias_fitted_sigma)[c], 0.0) << c;
     EXPECT_NEAR(fit.search.bias[c], synthetic.bias[c], 3.0 * (*fit.bias_fitted_sigma)[c]) << c;
   }
-  EXPECT_EQ(fit_summary(fit).at(0).rfind(
-                "no rest in the recording: the bias (rad/s) is fitted from the flights: ", 0),
-            0u)
+  EXPECT_EQ(
+      fit_summary(fit).at(0).rfind(
+          "no still stretch in the recording: the bias (rad/s) is fitted from the flights: ", 0),
+      0u)
       << fit_summary(fit).at(0);
   const CsvTable body = fit_body_csv(fit);
   const auto at = std::find(body.columns.begin(), body.columns.end(), "bias_sigma_y");
@@ -356,9 +357,9 @@ TEST(TossFit, StrongDragIsFittedAsDragNotBias) {
                                                                   41, 0.01, 0.15, 4.0, 3.0);
   const GyroRecording recording = as_recording(synthetic);
   const FitResult fit = fit_recording(recording, find_flights(recording));
-  ASSERT_GT(fit.search.rest_samples, 0);
+  ASSERT_GT(fit.search.rest.samples, 0);
   for (int c = 0; c < 3; ++c)
-    EXPECT_LE(std::abs(fit.bias_correction[c]), 3.0 * fit.search.bias_sigma[c] + 1e-12) << c;
+    EXPECT_LE(std::abs(fit.bias_correction[c]), fit.search.rest.bound()[c] + 1e-12) << c;
   ASSERT_EQ(fit.tosses.size(), 4u);
   for (const TossFit& toss : fit.tosses) {
     if (toss.poor_fit) {

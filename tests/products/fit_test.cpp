@@ -50,9 +50,10 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   result.body.ratios = Eigen::Vector3d(0.25, 0.75, 1.0);
   result.body.axes = Eigen::Matrix3d::Identity();
   result.body.ratio_sigma = Eigen::Vector3d(0.001, 0.002, 0.0);
-  result.search.rest_samples = 100;
-  result.search.bias = Eigen::Vector3d(0.5, -0.25, 0.125);
-  result.search.bias_sigma = Eigen::Vector3d(0.03125, 0.0625, 0.015625);
+  result.search.rest.samples = 100;
+  result.search.rest.stretches = {{0.25, 1.25}};
+  result.search.bias = result.search.rest.mean = Eigen::Vector3d(0.5, -0.25, 0.125);
+  result.search.rest.sigma = Eigen::Vector3d(0.03125, 0.0625, 0.015625);
   EXPECT_EQ(csv_text(fit::fit_toss_csv(result), "fit CSV"),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
             "half_period_fitted,half_period_predicted,predicted_from_tosses,predicted_from_seconds,"
@@ -69,24 +70,27 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
             "0.25,0.75,1,0.001,0.002,1,0,0,0,1,0,0,0,1,,,,fitted,1,quadratic,0.5,-0.25,0.125,"
             "0.03125,0.0625,0.015625\n");
   EXPECT_EQ(fit::fit_summary(result).at(0),
-            "bias (rad/s, the mean of 100 samples at rest ± their scatter): 0.5000 ± 0.0312, "
-            "-0.2500 ± 0.0625, 0.1250 ± 0.0156");
-  // No rest: the bias fitted from the flights, its σ the fit's standard error.
-  result.search.rest_samples = 0;
+            "bias (rad/s, the mean of 100 samples where the phone lay still, 0.25–1.25 s, ± their "
+            "scatter): 0.5000 ± 0.0312, -0.2500 ± 0.0625, 0.1250 ± 0.0156");
+  // No still stretch: the bias fitted from the flights (all of it the correction), its σ the
+  // fit's standard error.
+  result.search.rest = {};
+  result.bias_correction = result.search.bias;
   result.bias_fitted_sigma = Eigen::Vector3d(0.25, 0.5, 0.75);
   EXPECT_NE(csv_text(fit::fit_body_csv(result), "fit body CSV")
                 .find(",quadratic,0.5,-0.25,0.125,0.25,0.5,0.75\n"),
             std::string::npos);
   EXPECT_EQ(fit::fit_summary(result).at(0),
-            "no rest in the recording: the bias (rad/s) is fitted from the flights: 0.5000 ± "
+            "no still stretch in the recording: the bias (rad/s) is fitted from the flights: "
+            "0.5000 ± "
             "0.2500, -0.2500 ± 0.5000, 0.1250 ± 0.7500");
   // Neither: no bias removed, no σ.
-  result.search.bias = Eigen::Vector3d::Zero();
+  result.search.bias = result.bias_correction = Eigen::Vector3d::Zero();
   result.bias_fitted_sigma.reset();
   EXPECT_NE(csv_text(fit::fit_body_csv(result), "fit body CSV").find(",quadratic,0,0,0,,,\n"),
             std::string::npos);
   EXPECT_EQ(fit::fit_summary(result).at(0),
-            "no rest in the recording: the gyroscope's bias is not removed");
+            "no still stretch in the recording: the gyroscope's bias is not removed");
 }
 
 TEST(FitProduct, MakesEveryFileThenIsUpToDate) {

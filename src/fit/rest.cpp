@@ -1,0 +1,93 @@
+#include "fit/rest.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace bookspin::fit {
+
+Eigen::Vector3d Rest::bound() const {
+  if (samples == 0) return Eigen::Vector3d::Zero();
+  return 3.0 * standard_error + Eigen::Vector3d::Constant(kBiasDrift);
+}
+
+Rest find_rest(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& omega,
+               const std::vector<std::pair<int, int>>& segments, const RestSettings& settings) {
+  const int n = static_cast<int>(t.size());
+  // Prefix sums: ω, ω² per axis, and the samples turning at max_omega or faster.
+  std::vector<Eigen::Vector3d> sum(n + 1, Eigen::Vector3d::Zero()),
+      squares(n + 1, Eigen::Vector3d::Zero());
+  std::vector<int> fast(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    sum[i + 1] = sum[i] + omega[i];
+    squares[i + 1] = squares[i] + omega[i].cwiseAbs2();
+    fast[i + 1] = fast[i] + (omega[i].norm() >= settings.max_omega ? 1 : 0);
+  }
+  // Each window: samples first … last, the shortest from `first` spanning `window` s, within one
+  // segment and every sample slow; its scatter the largest axis's standard deviation.
+  struct Window {
+    int first, last;
+    double scatter;
+  };
+  std::vector<Window> windows;
+  for (const auto& [begin, end] : segments) {
+    int last = begin;
+    for (int first = begin; first < end; ++first) {
+      last = std::max(last, first);
+      while (last < end && t[last] - t[first] < settings.window) ++last;
+      if (last >= end) break;
+      if (fast[last + 1] - fast[first] > 0) continue;
+      const double count = last - first + 1;
+      const Eigen::Vector3d mean = (sum[last + 1] - sum[first]) / count;
+      const Eigen::Vector3d variance =
+          ((squares[last + 1] - squares[first]) / count - mean.cwiseAbs2()).cwiseMax(0.0);
+      windows.push_back({first, last, std::sqrt(variance.maxCoeff() * count / (count - 1))});
+    }
+  }
+  Rest rest;
+  if (windows.empty()) return rest;
+  double quietest = std::numeric_limits<double>::infinity();
+  for (const Window& w : windows) quietest = std::min(quietest, w.scatter);
+  const double limit = std::min(settings.max_scatter,
+                                std::max(settings.floor_factor * quietest, settings.min_scatter));
+  std::vector<char> still(n, 0);
+  for (const Window& w : windows)
+    if (w.scatter <= limit) std::fill(still.begin() + w.first, still.begin() + w.last + 1, 1);
+  // The still runs (each at least one window long, so at least `window` s).
+  std::vector<std::pair<int, int>> runs;
+  for (const auto& [begin, end] : segments)
+    for (int i = begin; i < end;) {
+      if (!still[i]) {
+        ++i;
+        continue;
+      }
+      int last = i;
+      while (last + 1 < end && still[last + 1]) ++last;
+      runs.emplace_back(i, last);
+      i = last + 1;
+    }
+  if (runs.empty()) return rest;
+  for (const auto& [first, last] : runs) {
+    rest.stretches.emplace_back(t[first], t[last]);
+    for (int i = first; i <= last; ++i) rest.mean += omega[i];
+    rest.samples += last - first + 1;
+  }
+  rest.mean /= rest.samples;
+  // The scatter, and the correlation from one sample to the next within each run.
+  Eigen::Vector3d deviations = Eigen::Vector3d::Zero(), lagged = Eigen::Vector3d::Zero();
+  for (const auto& [first, last] : runs)
+    for (int i = first; i <= last; ++i) {
+      const Eigen::Vector3d d = omega[i] - rest.mean;
+      deviations += d.cwiseAbs2();
+      if (i < last) lagged += d.cwiseProduct(omega[i + 1] - rest.mean);
+    }
+  if (rest.samples > 1) rest.sigma = (deviations / (rest.samples - 1)).cwiseSqrt();
+  for (int c = 0; c < 3; ++c) {
+    const double rho = deviations[c] > 0.0 ? std::clamp(lagged[c] / deviations[c], 0.0, 0.95) : 0.0;
+    const double effective = rest.samples * (1.0 - rho) / (1.0 + rho);
+    rest.standard_error[c] = rest.sigma[c] / std::sqrt(std::max(effective, 1.0));
+  }
+  return rest;
+}
+
+}  // namespace bookspin::fit
