@@ -70,9 +70,11 @@ std::vector<std::pair<int, int>> runs(const std::vector<char>& mask,
 /// The bias: the still rest's mean (fit/rest.hpp). Pooled recordings (fit/pool.hpp) had each
 /// its own bias removed already: none is left to remove, and each one's correction is its own
 /// (fit/toss_fit.hpp).
-void measure_bias(const GyroRecording& recording, const std::vector<std::pair<int, int>>& segs,
-                  FlightSearch& search) {
-  search.rest = find_rest(recording.t, recording.omega, segs);
+void measure_bias(const GyroRecording& recording, const FinderSettings& settings,
+                  const std::vector<std::pair<int, int>>& segs, FlightSearch& search) {
+  RestSettings still;
+  still.max_omega = settings.rest_omega;
+  search.rest = find_rest(recording.t, recording.omega, segs, still);
   search.bias = recording.parts.empty() ? search.rest.mean : Eigen::Vector3d::Zero();
 }
 
@@ -145,7 +147,7 @@ Eigen::Matrix3d euler_inertia(const std::vector<Eigen::Vector3d>& omega,
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings) {
   FlightSearch search;
   const std::vector<std::pair<int, int>> segs = segments(recording);
-  measure_bias(recording, segs, search);
+  measure_bias(recording, settings, segs, search);
   const int n = static_cast<int>(recording.t.size());
   const std::vector<double>& t = recording.t;
   std::vector<Eigen::Vector3d> omega(n);
@@ -253,10 +255,10 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
 
 FlightSearch hand_flights(const GyroRecording& recording,
                           const std::vector<std::pair<double, double>>& ranges,
-                          const std::string& option, const FinderSettings& /*settings*/) {
+                          const std::string& option, const FinderSettings& settings) {
   FlightSearch search;
   const std::vector<std::pair<int, int>> segs = segments(recording);
-  measure_bias(recording, segs, search);
+  measure_bias(recording, settings, segs, search);
   const std::vector<double>& t = recording.t;
   // In time order (the tosses are numbered so), none overlapping another or given twice.
   std::vector<std::pair<double, double>> sorted = ranges;

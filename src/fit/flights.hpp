@@ -37,7 +37,9 @@ struct FlightSearch {
 
 /// The finder's thresholds.
 struct FinderSettings {
-  double rest_omega = 0.5;    ///< rad/s: moving at or above this (bias included)
+  /// rad/s: moving at or above this (bias included); a still stretch turns slower
+  /// (RestSettings::max_omega).
+  double rest_omega = 0.5;
   double flight_omega = 2.0;  ///< rad/s: a free flight turns at least this fast throughout
   double min_flight = 0.3;    ///< s: a shorter flight is dropped (too short to fit)
 };

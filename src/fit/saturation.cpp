@@ -7,12 +7,17 @@ namespace bookspin::fit {
 
 namespace {
 
-/// The standard full scale (rad/s) whose band [1 − kFullScaleBelow, 1 + kFullScaleAbove] ×
-/// scale holds `top`, the recording's largest |ω_i|, or nullopt.
+/// True when `value` (rad/s, ≥ 0) lies in `scale`'s band, [1 − kFullScaleBelow,
+/// 1 + kFullScaleAbove] × scale.
+bool in_band(double value, double scale) {
+  return value >= (1.0 - kFullScaleBelow) * scale && value <= (1.0 + kFullScaleAbove) * scale;
+}
+
+/// The standard full scale (rad/s) whose band holds `top`, the recording's largest |ω_i|, or
+/// nullopt.
 std::optional<double> full_scale_of(double top) {
   for (double scale : kFullScales)
-    if (top >= (1.0 - kFullScaleBelow) * scale && top <= (1.0 + kFullScaleAbove) * scale)
-      return scale;
+    if (in_band(top, scale)) return scale;
   return std::nullopt;
 }
 
@@ -30,20 +35,17 @@ std::optional<double> clipped_full_scale(const std::vector<Eigen::Vector3d>& ome
   const std::optional<double> scale = full_scale_of(top);
   if (!scale) return std::nullopt;
   const int n = static_cast<int>(omega.size());
-  const auto in_band = [&](int i, int c, double sign) {
-    return sign * omega[i][c] >= (1.0 - kFullScaleBelow) * *scale &&
-           sign * omega[i][c] <= (1.0 + kFullScaleAbove) * *scale;
-  };
+  const auto clips = [&](int i, int c, double sign) { return in_band(sign * omega[i][c], *scale); };
   bool any = false;
   for (int c = 0; c < 3; ++c)
     for (double sign : {1.0, -1.0})
       for (int i = 0; i < n;) {
-        if (!in_band(i, c, sign)) {
+        if (!clips(i, c, sign)) {
           ++i;
           continue;
         }
         int last = i;
-        while (last + 1 < n && in_band(last + 1, c, sign)) ++last;
+        while (last + 1 < n && clips(last + 1, c, sign)) ++last;
         const auto low = [&](int k) {
           return k < 0 || k >= n || std::abs(omega[k][c]) < kSpikeEdge * *scale;
         };

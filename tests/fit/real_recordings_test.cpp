@@ -134,8 +134,9 @@ TEST(RealRecordings, NoDragRateIsBelowZero) {
       EXPECT_GE(toss.drag_rate, 0.0) << recording.name;
       held_here += toss.drag_rate == 0.0;
     }
-    if (held_here > 0)
+    if (held_here > 0) {
       EXPECT_TRUE(has_line(fit_summary(fit), "air cannot speed a body up")) << recording.name;
+    }
     held += held_here;
   }
   EXPECT_GE(held, 1);  // the rule was tried, not only passed by positive rates
