@@ -101,7 +101,7 @@ void bench_fit(const BenchContext& context) {
     if (r == 0 || seconds < read) read = seconds;
   }
   const double start = wall_seconds(), cpu_start = process_cpu_seconds();
-  const fit::GyroRecording recording = fit::read_recording(csv);
+  const fit::GyroRecording recording = fit::pool_recordings({fit::read_recording(csv)});
   const fit::FlightSearch search = fit::find_flights(recording);
   const double found = wall_seconds();
   const fit::FitResult result = fit::fit_recording(recording, search);

@@ -122,7 +122,7 @@ py::dict chart_arrays(const fit::TossChart& chart) {
 fit::GyroRecording recording_arg(const py::object& recording) {
   bool is_path = false;
   const std::string path = path_text(recording, is_path);
-  if (is_path) return fit::read_recording(path);
+  if (is_path) return fit::pool_recordings({fit::read_recording(path)});
   if (!py::isinstance<py::tuple>(recording) && !py::isinstance<py::list>(recording))
     throw InputError("recording: expected a path or a (t, omega) pair of arrays, got " +
                      std::string(py::str(py::type::handle_of(recording).attr("__name__"))));
@@ -135,17 +135,17 @@ fit::GyroRecording recording_arg(const py::object& recording) {
     if (!item_is_path) break;
     several.push_back(fit::read_recording(item_path));
   }
-  if (!several.empty() && several.size() == pair.size())
-    return several.size() == 1 ? several.front() : fit::pool_recordings(several);
+  if (!several.empty() && several.size() == pair.size()) return fit::pool_recordings(several);
   if (pair.size() != 2)
     throw InputError("recording: expected a (t, omega) pair, got " + std::to_string(pair.size()) +
                      " items");
   const std::vector<double> t = vector_arg(pair[0], "t", -1);
-  const std::vector<double> w = matrix_arg(pair[1], "omega", static_cast<long>(t.size()), 3);
+  const std::vector<double> w = matrix_arg(pair[1], "omega", -1, 3);
+  same_rows({{"t", t.size()}, {"omega", w.size() / 3}});
   std::vector<Eigen::Vector3d> omega;
   for (std::size_t i = 0; i < t.size(); ++i)
     omega.emplace_back(w[3 * i], w[3 * i + 1], w[3 * i + 2]);
-  return fit::samples_recording("recording", t, std::move(omega));
+  return fit::pool_recordings({fit::samples_recording("recording", t, std::move(omega))});
 }
 
 fit::FitRequest request_arg(const std::string& drag, const py::object& tosses,

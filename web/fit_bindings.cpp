@@ -211,7 +211,7 @@ val fit_recording(const std::string& file_name, const std::string& bytes, const 
   return guarded([&] {
     const bookspin::physics::DragLaw law = drag_arg(drag);
     clear_memory();
-    return report_value(read_given(file_name, bytes, 0), law);
+    return report_value(fit::pool_recordings({read_given(file_name, bytes, 0)}), law);
   });
 }
 
@@ -249,7 +249,7 @@ val fit_recordings(const val& files, const std::string& drag) {
       }
     }
     if (read.empty()) throw InputError(count ? first_error : "no recording given");
-    val out = report_value(read.size() == 1 ? read.front() : fit::pool_recordings(read), law);
+    val out = report_value(fit::pool_recordings(read), law);
     out.set("fitted", fitted);
     out.set("refused", refused);
     return out;

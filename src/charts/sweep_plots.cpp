@@ -38,17 +38,20 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
       if (refused++ == 0) first_reason = row[c];
     }
   }
-  std::string head =
-      "Sweep of " + chart.scene_name + ": " + std::to_string(chart.rows.size() - refused) + " runs";
-  if (refused > 0)
-    head += ", " + std::to_string(refused) + (refused == 1 ? " point" : " points") +
-            " refused by the engine";
+  char text[200];
+  std::snprintf(text, sizeof text, "Sweep of %s: %zu runs", chart.scene_name.c_str(),
+                chart.rows.size() - refused);
+  std::string head = text;
+  if (refused > 0) {
+    std::snprintf(text, sizeof text, ", %zu %s refused by the engine", refused,
+                  refused == 1 ? "point" : "points");
+    head += text;
+  }
   std::vector<std::string> lines{head};
   if (refused > 0)
     lines.push_back("refused" + std::string(refused > 1 ? " (the first)" : "") + ": " +
                     first_reason);
   for (const SweepAxis& a : chart.axes) {
-    char text[200];
     std::snprintf(text, sizeof text, "varied: %s from %.6g to %.6g, %d values%s", a.key.c_str(),
                   a.start, a.stop, static_cast<int>(a.values.size()), a.log ? " (log spaced)" : "");
     lines.emplace_back(text);
@@ -56,13 +59,14 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
   return lines;
 }
 
-/// A two-key sweep's picture: one heat map per measure, first key on x (heat_map.hpp).
-RgbaImage heat_map_picture(const SweepChart& chart) {
+/// A two-key sweep's picture under `header`: one heat map per measure, first key on x
+/// (heat_map.hpp).
+RgbaImage heat_map_picture(const SweepChart& chart, const std::vector<std::string>& header) {
   const auto maps =
       sweep_heat_maps(chart.header, chart.rows, chart.axes[0].values, chart.axes[0].log,
                       chart.axes[1].values, chart.axes[1].log, chart.measures);
   const int height = 120 + kMapHeightPerRow * static_cast<int>((maps.size() + 1) / 2);
-  return heat_map_sheet(sheet_header(chart), maps, kSheetWidth, height + height % 2);
+  return heat_map_sheet(header, maps, kSheetWidth, height + height % 2);
 }
 
 }  // namespace
@@ -132,10 +136,11 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart) {
 }
 
 RgbaImage sweep_sheet(const SweepChart& chart) {
-  if (chart.axes.size() == 2) return heat_map_picture(chart);
+  const std::vector<std::string> header = sheet_header(chart);
+  if (chart.axes.size() == 2) return heat_map_picture(chart, header);
   const auto plots = sweep_plots(chart);
   const int height = 120 + kPlotHeightPerMeasure * static_cast<int>(plots.size());
-  return plot_sheet(sheet_header(chart), plots, kSheetWidth, height + height % 2);
+  return plot_sheet(header, plots, kSheetWidth, height + height % 2);
 }
 
 }  // namespace bookspin::charts

@@ -77,14 +77,11 @@ int fit_command(const FitOptions& options) {
   if (!options.render && !options.scene_file.empty())
     throw InputError("--scene: only with --render (it gives the clips' body and render keys)");
   // Read after the options are checked, as every input: a bad option is named first.
-  if (options.recordings.size() == 1) {
-    job.recording = fit::read_recording(options.recordings.front());
-  } else {
-    std::vector<fit::GyroRecording> recordings;
-    for (const std::string& path : options.recordings)
-      recordings.push_back(fit::read_recording(path));
-    job.recording = fit::pool_recordings(recordings);
-  }
+  // One recording or several, fitted as one body: a pool (of one).
+  std::vector<fit::GyroRecording> recordings;
+  for (const std::string& path : options.recordings)
+    recordings.push_back(fit::read_recording(path));
+  job.recording = fit::pool_recordings(recordings);
   if (options.render) {
     products::FitRender render;
     if (!options.scene_file.empty()) render.scene_file = options.scene_file;

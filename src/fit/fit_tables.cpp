@@ -15,12 +15,14 @@ std::string fixed(double value, int digits) {
 
 namespace {
 
-/// Pooled time `t` (s) in its own recording's time, and that recording's name (empty for a
-/// recording not pooled).
+/// Two or more recordings fitted as one: each toss and bias is named by its recording (the
+/// `recording` column, "of NAME"); one recording's are its own.
+bool named(const FitResult& fit) { return fit.parts.size() >= 2; }
+
+/// Pooled time `t` (s) in its own recording's time, and that recording's name where named().
 std::pair<double, std::string> own_time(const FitResult& fit, double t) {
-  const RecordingPart* part = part_at(fit.parts, t);
-  if (!part) return {t, {}};
-  return {t - part->t_offset, part->name};
+  const RecordingPart& part = part_at(fit.parts, t);
+  return {t - part.t_offset, named(fit) ? part.name : std::string()};
 }
 
 }  // namespace
@@ -31,8 +33,8 @@ CsvTable fit_toss_csv(const FitResult& fit) {
                   "predicted_from_tosses", "predicted_from_seconds", "residual_rms", "L_decay",
                   "drag_rate", "drag_rate_sigma", "saturated", "stable", "poor_fit", "flag"},
                  {}};
-  // Pooled: each toss's recording named, its times its own.
-  const bool pooled = !fit.parts.empty();
+  // Several recordings: each toss's recording named, its times its own.
+  const bool pooled = named(fit);
   if (pooled) table.columns.insert(table.columns.begin() + 1, "recording");
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
@@ -78,31 +80,21 @@ CsvTable fit_body_csv(const FitResult& fit) {
                                                    : "poorly determined"));
   row.push_back(std::to_string(fit.tosses.size()));
   row.push_back(std::string(physics::to_string(fit.drag)));
-  // The bias removed: the rest's mean and its scatter, or fitted from the flights and its
-  // standard error; no σ where neither (docs/outputs.md, "bookspin fit"). Pooled: a row per
-  // recording, the body's columns repeated, with its recording's bias and a `recording` column
-  // first.
-  const auto bias_cells = [](std::vector<CsvCell> cells, const Eigen::Vector3d& bias,
-                             const std::optional<Eigen::Vector3d>& sigma) {
+  // The bias removed in flight: the rest's mean and its scatter, or fitted from the flights and
+  // its standard error; no σ where neither (docs/outputs.md, "bookspin fit"). Several
+  // recordings: a row per recording, the body's columns repeated, with its recording's bias and
+  // a `recording` column first.
+  if (named(fit)) table.columns.insert(table.columns.begin(), "recording");
+  for (const RecordingPart& part : fit.parts) {
+    std::vector<CsvCell> cells = row;
+    const Eigen::Vector3d bias = part.bias_in_flight();
+    const std::optional<Eigen::Vector3d> sigma =
+        part.rest.samples > 0 ? std::optional<Eigen::Vector3d>(part.rest.sigma)
+                              : part.bias_fitted_sigma;
     for (int c = 0; c < 3; ++c) cells.push_back(shortest_cell(bias[c]));
     for (int c = 0; c < 3; ++c)
       cells.push_back(shortest_cell(sigma ? std::optional<double>((*sigma)[c]) : std::nullopt));
-    return cells;
-  };
-  if (fit.parts.empty()) {
-    table.rows.push_back(bias_cells(row, fit.search.bias,
-                                    fit.search.rest.samples > 0
-                                        ? std::optional<Eigen::Vector3d>(fit.search.rest.sigma)
-                                        : fit.bias_fitted_sigma));
-    return table;
-  }
-  table.columns.insert(table.columns.begin(), "recording");
-  for (const RecordingPart& part : fit.parts) {
-    std::vector<CsvCell> cells =
-        bias_cells(row, part.bias + part.bias_correction,
-                   part.rest.samples > 0 ? std::optional<Eigen::Vector3d>(part.rest.sigma)
-                                         : part.bias_fitted_sigma);
-    cells.insert(cells.begin(), part.name);
+    if (named(fit)) cells.insert(cells.begin(), part.name);
     table.rows.push_back(std::move(cells));
   }
   return table;
@@ -117,8 +109,8 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
   const auto three = [](const Eigen::Vector3d& v) {
     return fixed(v[0], 4) + ", " + fixed(v[1], 4) + ", " + fixed(v[2], 4);
   };
-  // The bias removed from each recording (pooled: each on its own still rest, corrected by its
-  // own flights; one recording: "the" rest and flights). `rest` is the still rest (its mean 0
+  // The bias removed from each recording, on its own still rest, corrected by its own flights
+  // (one recording: "the" rest and flights). `rest` is the still rest (its mean 0
   // without one; its stretches in the recording's own times), `correction` what the flights
   // added to it.
   const auto bias_lines = [&](const std::string& who, const Rest& rest,
@@ -156,9 +148,8 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
                           : "no still stretch in " + who + ": its bias is not removed");
   };
   for (const RecordingPart& part : fit.parts)
-    bias_lines(part.name, part.rest, part.bias_correction, part.bias_fitted_sigma);
-  if (fit.parts.empty())
-    bias_lines("", fit.search.rest, fit.bias_correction, fit.bias_fitted_sigma);
+    bias_lines(named(fit) ? part.name : std::string(), part.rest, part.bias_correction,
+               part.bias_fitted_sigma);
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
     std::string drag;

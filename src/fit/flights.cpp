@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "common/errors.hpp"
+#include "fit/pool.hpp"
 #include "fit/saturation.hpp"
 
 namespace bookspin::fit {
@@ -67,15 +68,13 @@ std::vector<std::pair<int, int>> runs(const std::vector<char>& mask,
   return result;
 }
 
-/// The bias: the still rest's mean (fit/rest.hpp). Pooled recordings (fit/pool.hpp) had each
-/// its own bias removed already: none is left to remove, and each one's correction is its own
-/// (fit/toss_fit.hpp).
-void measure_bias(const GyroRecording& recording, const FinderSettings& settings,
-                  const std::vector<std::pair<int, int>>& segs, FlightSearch& search) {
-  RestSettings still;
-  still.max_omega = settings.rest_omega;
-  search.rest = find_rest(recording.t, recording.omega, segs, still);
-  search.bias = recording.parts.empty() ? search.rest.mean : Eigen::Vector3d::Zero();
+/// The samples with each recording's own bias removed (RecordingPart::bias).
+std::vector<Eigen::Vector3d> without_bias(const GyroRecording& recording) {
+  check_pooled(recording);
+  std::vector<Eigen::Vector3d> omega(recording.omega.size());
+  for (const RecordingPart& part : recording.parts)
+    for (int i = part.first; i <= part.last; ++i) omega[i] = recording.omega[i] - part.bias;
+  return omega;
 }
 
 /// |I ω̇ + ω × I ω| / |ω|² at sample i: the torque Euler's equations leave (I scaled to a
@@ -144,14 +143,18 @@ Eigen::Matrix3d euler_inertia(const std::vector<Eigen::Vector3d>& omega,
   return largest > 0 ? Eigen::Matrix3d(I / largest) : I;
 }
 
+Rest measure_rest(const GyroRecording& recording, const FinderSettings& settings) {
+  RestSettings still;
+  still.max_omega = settings.rest_omega;
+  return find_rest(recording.t, recording.omega, segments(recording), still);
+}
+
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings) {
   FlightSearch search;
+  const std::vector<Eigen::Vector3d> omega = without_bias(recording);
   const std::vector<std::pair<int, int>> segs = segments(recording);
-  measure_bias(recording, settings, segs, search);
   const int n = static_cast<int>(recording.t.size());
   const std::vector<double>& t = recording.t;
-  std::vector<Eigen::Vector3d> omega(n);
-  for (int i = 0; i < n; ++i) omega[i] = recording.omega[i] - search.bias;
   // The rate within each segment only (a derivative never reaches across a pause).
   std::vector<Eigen::Vector3d> rate(n);
   for (const auto& [begin, end] : segs) {
@@ -255,10 +258,10 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
 
 FlightSearch hand_flights(const GyroRecording& recording,
                           const std::vector<std::pair<double, double>>& ranges,
-                          const std::string& option, const FinderSettings& settings) {
+                          const std::string& option) {
+  check_pooled(recording);
   FlightSearch search;
   const std::vector<std::pair<int, int>> segs = segments(recording);
-  measure_bias(recording, settings, segs, search);
   const std::vector<double>& t = recording.t;
   // In time order (the tosses are numbered so), none overlapping another or given twice.
   std::vector<std::pair<double, double>> sorted = ranges;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fit/recording.hpp"
+#include "fit/rest.hpp"
 
 namespace bookspin::fit {
 
@@ -23,14 +24,9 @@ struct DroppedStretch {
   std::string reason;
 };
 
-/// What the finder found.
+/// What the finder found. The bias it removed before judging is each recording's own
+/// (RecordingPart::bias).
 struct FlightSearch {
-  /// rad/s, phone frame: the bias removed, the still rest's mean (fit/rest.hpp); 0 without a
-  /// still rest, and 0 for pooled recordings, each of which had its own removed
-  /// (GyroRecording::parts).
-  Eigen::Vector3d bias = Eigen::Vector3d::Zero();
-  /// Where the phone lay still and what the still samples say of the bias (samples 0: none).
-  Rest rest;
   std::vector<Flight> flights;
   std::vector<DroppedStretch> dropped;
 };
@@ -57,18 +53,23 @@ Eigen::Matrix3d euler_inertia(const std::vector<Eigen::Vector3d>& omega,
                               const std::vector<Eigen::Vector3d>& omega_dot,
                               const std::vector<int>& indices);
 
-/// Finds the free flights of `recording` (bias removed from the omega it judges). No flight
-/// spans a pause or a gap (a step over five times the 90th percentile of the steps). Never throws
-/// for a recording with no flight (flights is then empty, and dropped says why).
+/// Where `recording` (its samples as measured, pooled or not) lay still, and what its still
+/// samples say of its gyroscope's bias (fit/rest.hpp): its stretches by their scatter, within
+/// its pauses and gaps, turning slower than settings.rest_omega.
+Rest measure_rest(const GyroRecording& recording, const FinderSettings& settings = {});
+
+/// Finds the free flights of `recording` (pooled: pool_recordings; each part's bias removed from
+/// the omega it judges). No flight spans a pause or a gap (a step over five times the 90th
+/// percentile of the steps). Never throws for a recording with no flight (flights is then
+/// empty, and dropped says why); std::logic_error for a recording not pooled.
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings = {});
 
-/// The flights given by hand, [t_start, t_end] s each (the bias measured as find_flights
-/// does), in time order whatever order they are given in. Throws InputError naming `option`
+/// The flights given by hand, [t_start, t_end] s each, of `recording` (pooled, as find_flights
+/// takes it), in time order whatever order they are given in. Throws InputError naming `option`
 /// when a range holds fewer than 10 samples, is reversed, spans a pause, overlaps another
 /// (shares an instant with it) or is given twice.
 FlightSearch hand_flights(const GyroRecording& recording,
                           const std::vector<std::pair<double, double>>& ranges,
-                          const std::string& option = "--tosses",
-                          const FinderSettings& settings = {});
+                          const std::string& option = "--tosses");
 
 }  // namespace bookspin::fit

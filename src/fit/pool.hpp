@@ -7,19 +7,29 @@
 
 namespace bookspin::fit {
 
-/// `recordings` (two or more, of one body) as one recording: each one's bias measured on its own
-/// rest (find_flights) and removed from its samples, its samples placed 1 s after the previous
+/// `recordings` (one or more, of one body) as one recording, the form the finder and the fit
+/// take (a recording alone is a pool of one): each one's still rest found and its bias measured
+/// there (fit/rest.hpp), its samples kept as measured and placed 1 s after the previous
 /// recording's last, with a pause between them so that no flight spans two recordings; `parts`
-/// says where each one went. Its flights are then found (find_flights) and fitted (fit_recording)
-/// as any recording's: every toss with one body, each keeping its own drag rate and each
-/// recording its own bias correction from its own flights (fit_recording); the tables name
-/// each toss's recording and give its own times (fit_tables.hpp). Named after the first
-/// recording, "<first>-and-<N−1>-more". Throws InputError for fewer than two recordings or one
-/// given twice (the same source).
+/// says where each one went and holds its bias. Its flights are then found (find_flights) and
+/// fitted (fit_recording): every toss with one body, each keeping its own drag rate and each
+/// recording its own bias correction from its own flights; with two or more, the tables name
+/// each toss's recording and give its own times (fit_tables.hpp). One recording keeps its name
+/// and times; several are named after the first, "<first>-and-<N−1>-more". Throws InputError
+/// for none, or one given twice: the same source, the same file however spelled
+/// (GyroRecording::file), or the same samples (an export beside its own zip).
 GyroRecording pool_recordings(const std::vector<GyroRecording>& recordings);
 
-/// The part of `parts` (GyroRecording::parts) holding pooled time `t` (s): the last to start
-/// before it; nullptr for no parts (a recording not pooled).
-const RecordingPart* part_at(const std::vector<RecordingPart>& parts, double t);
+/// Throws std::logic_error for a recording not pooled, whose parts do not cover its samples: the
+/// finder and the fit take each sample's bias from its part.
+void check_pooled(const GyroRecording& recording);
+
+/// The part of `parts` (GyroRecording::parts, one or more) holding pooled time `t` (s): the last
+/// to start before it (the first for a time before every part). Throws std::out_of_range for no
+/// parts (a recording not pooled).
+const RecordingPart& part_at(const std::vector<RecordingPart>& parts, double t);
+
+/// The index of part_at(parts, t) in `parts`.
+std::size_t part_index(const std::vector<RecordingPart>& parts, double t);
 
 }  // namespace bookspin::fit

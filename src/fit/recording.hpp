@@ -13,34 +13,40 @@
 
 namespace bookspin::fit {
 
-/// One recording of several pooled into one (pool_recordings): its samples first … last of the
-/// pooled recording, at its own time + t_offset, with its own bias already removed.
+/// One recording among those fitted as one body (pool_recordings; a recording alone is a pool
+/// of one): its samples first … last of the pooled recording, at its own time + t_offset, and
+/// its own gyroscope: the range it states, the still rest it was measured on and its bias. The
+/// one place a recording's bias is held, from its rest to the fit's correction.
 struct RecordingPart {
   std::string name;         ///< the recording's own name
   std::string source;       ///< its file
   double t_offset = 0.0;    ///< s added to its times
   double t_start = 0.0;     ///< s: its first sample's pooled time
   int first = 0, last = 0;  ///< its samples in the pooled recording (inclusive)
-  /// rad/s, phone frame: the bias removed from its samples (its still rest's mean; 0 without
-  /// one), and its still rest (fit/rest.hpp, in its own times).
+  /// rad/s, phone frame: the bias its samples carry as measured (its still rest's mean; 0
+  /// without one), and its still rest (fit/rest.hpp, in its own times).
   Eigen::Vector3d bias = Eigen::Vector3d::Zero();
   Rest rest;
   /// rad/s: its gyroscope's stated range (GyroRecording::gyroscope_range).
   std::optional<double> gyroscope_range;
   /// rad/s, phone frame, set by the fit (fit/toss_fit.hpp): its own flights' correction of its
   /// bias (two or more flights; within Rest::bound() where it has a still rest), and with
-  /// no rest the correction's standard error. The bias removed in flight is bias +
-  /// bias_correction.
+  /// no rest the correction's standard error.
   Eigen::Vector3d bias_correction = Eigen::Vector3d::Zero();
   std::optional<Eigen::Vector3d> bias_fitted_sigma;
+  /// rad/s, phone frame: the bias removed in flight, bias + bias_correction.
+  Eigen::Vector3d bias_in_flight() const { return bias + bias_correction; }
 };
 
 /// One recording: the body-frame angular velocity as the gyroscope measured it, in the phone's
 /// own axes (x to the right of the screen, y up the screen, z out of it).
 struct GyroRecording {
-  std::string name;       ///< the recording's name (folder, zip or file stem), file-safe
-  std::string source;     ///< the file the samples came from, for messages
-  std::vector<double> t;  ///< seconds of experiment time, strictly increasing
+  std::string name;    ///< the recording's name (folder, zip or file stem), file-safe
+  std::string source;  ///< the file the samples came from, for messages
+  /// The file read (a CSV or a zip), made canonical (absolute, symlinks resolved): one file
+  /// however it was spelled; empty for samples given as numbers.
+  std::filesystem::path file;
+  std::vector<double> t;               ///< seconds of experiment time, strictly increasing
   std::vector<Eigen::Vector3d> omega;  ///< rad/s, phone frame, as measured (bias included)
   /// Experiment times (s) at which the recording was paused: no flight spans one.
   std::vector<double> pauses;
@@ -48,8 +54,8 @@ struct GyroRecording {
   /// "gyroscope Range": Android's Sensor.getMaximumRange(), in rad/s for a gyroscope); nullopt
   /// where nothing states it (phyphox on iOS, a plain CSV). fit/saturation.hpp uses it.
   std::optional<double> gyroscope_range;
-  /// Several recordings of one body pooled (pool_recordings): each one's part; empty for a
-  /// recording as read.
+  /// The recordings it is made of (pool_recordings: one or more), each with its bias; empty for
+  /// a recording as read, which the finder and the fit do not take before it is pooled.
   std::vector<RecordingPart> parts;
 };
 

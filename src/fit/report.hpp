@@ -78,7 +78,7 @@ TossChart toss_chart(const GyroRecording& recording, const FitResult& fit, int t
 /// Finds `recording`'s flights (or takes request.tosses), fits them (fit_recording) and makes
 /// every value the doors present. `stop` is polled before the fit, at every iteration of its
 /// solves (FitSettings::stop, unless the request has its own) and before each toss's values
-/// (docs/outputs.md, "Signals"). `recording` may be several pooled (pool_recordings). Throws
+/// (docs/outputs.md, "Signals"). `recording` is pooled (pool_recordings: one or more). Throws
 /// InputError (a toss given by hand, or tosses by hand with a pooled recording, no flight, a fit
 /// the solver cannot make: see hand_flights and fit_recording) and Interrupted.
 FitReport fit_report(const GyroRecording& recording, const FitRequest& request,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fit/pool.hpp"
+
 namespace bookspin::fit {
 
 namespace {
@@ -118,13 +120,13 @@ Saturation saturation_of(const std::vector<Eigen::Vector3d>& omega, std::optiona
 }  // namespace
 
 Saturation find_saturation(const GyroRecording& recording) {
-  if (recording.parts.empty()) return saturation_of(recording.omega, recording.gyroscope_range);
-  // Pooled: each recording's own gyroscope, on its samples as measured (its bias put back).
+  check_pooled(recording);
+  // Each recording's own gyroscope, on its samples as measured.
   Saturation found;
   found.at_range.assign(recording.omega.size(), false);
   for (const RecordingPart& part : recording.parts) {
-    std::vector<Eigen::Vector3d> own;
-    for (int i = part.first; i <= part.last; ++i) own.push_back(recording.omega[i] + part.bias);
+    const std::vector<Eigen::Vector3d> own(recording.omega.begin() + part.first,
+                                           recording.omega.begin() + part.last + 1);
     const Saturation its = saturation_of(own, part.gyroscope_range);
     for (std::size_t k = 0; k < own.size(); ++k) found.at_range[part.first + k] = its.at_range[k];
     if (its.range && (!found.range || *its.range > *found.range)) found.range = its.range;

@@ -27,8 +27,9 @@ struct Saturation {
 /// plateau); else the largest |ω_i| of the whole recording, any component and sign, when one
 /// component reads it (within 1e-6, relative) at kMinFlatSamples consecutive samples or more; a
 /// smooth peak reaches its top at one sample, a clipped one stays there. No range, no sample
-/// marked. A pooled recording (its `parts`) is searched recording by recording, each on its samples
-/// as measured (its bias put back) with its own stated range; `range` is then the largest found.
+/// marked. Searched recording by recording (its `parts`: pool_recordings), each on its samples
+/// as measured with its own stated range; `range` is then the largest found. Throws
+/// std::logic_error for a recording not pooled.
 Saturation find_saturation(const GyroRecording& recording);
 
 /// rad/s: the standard full scales of MEMS gyroscopes, ±250, 500, 1000, 2000 and 4000 °/s.

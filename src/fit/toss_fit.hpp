@@ -73,8 +73,9 @@ struct TossFit {
   /// line, also in BodyEstimate::notes.
   bool poor_fit = false;
   std::string flag;
-  /// Samples of the flight left out of the fit: the gyroscope read its range there
-  /// (fit/saturation.hpp; a flagged flight of too few other samples keeps them: 0).
+  /// Samples of the flight that read the gyroscope's range (fit/saturation.hpp): left out of
+  /// the fit, or kept where fewer than 10 others would remain (the toss is then flagged, and
+  /// its flag says so).
   int saturated = 0;
 };
 
@@ -92,16 +93,12 @@ struct FitSettings {
 };
 
 struct FitResult {
-  /// The flights fitted, the stretches dropped, and the bias removed (docs/phone-lab.md, "The
-  /// bias"): the rest's mean and its scatter (search.bias_sigma) where the recording has a rest;
-  /// with none, fitted from the flights themselves (bias_correction, with two or more tosses).
+  /// The flights fitted and the stretches dropped.
   FlightSearch search;
-  /// The recordings pooled into the one fitted (GyroRecording::parts); empty for one recording.
+  /// The recordings fitted as one (GyroRecording::parts, one or more), each with its bias
+  /// (docs/phone-lab.md, "The bias"): its still rest's mean, corrected by its own flights
+  /// (RecordingPart::bias_correction, with two or more tosses), or with no rest fitted from them.
   std::vector<RecordingPart> parts;
-  Eigen::Vector3d bias_correction = Eigen::Vector3d::Zero();  ///< rad/s, phone frame
-  /// rad/s, phone frame: the fitted bias's standard error, where it was fitted from the flights
-  /// (no rest, two or more tosses) and the fit's covariance exists.
-  std::optional<Eigen::Vector3d> bias_fitted_sigma;
   physics::DragLaw drag = physics::DragLaw::linear;  ///< the law the rates are of
   BodyEstimate body;
   std::vector<TossFit> tosses;  ///< one per flight, in order
@@ -110,9 +107,10 @@ struct FitResult {
   std::optional<double> saturation_range;
 };
 
-/// Fits `search`'s flights of `recording`. Throws InputError naming the recording when there
-/// is no flight ("no free flight found", with why each stretch was dropped) or when the
-/// solver cannot fit them; Interrupted when settings.stop answers a signal.
+/// Fits `search`'s flights of `recording` (pooled: pool_recordings, one recording or more).
+/// Throws InputError naming the recording when there is no flight ("no free flight found", with
+/// why each stretch was dropped) or when the solver cannot fit them; Interrupted when
+/// settings.stop answers a signal; std::logic_error for a recording not pooled.
 FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
                         const FitSettings& settings = {});
 

@@ -38,7 +38,7 @@ int edge_sign(const Vector3d& a, const Vector3d& b, double px, double py) {
 }
 
 /// Union-find over vertices: the closed shells are the connected components.
-int find(std::vector<int>& parent, int v) {
+int shell_root(std::vector<int>& parent, int v) {
   while (parent[v] != v) v = parent[v] = parent[parent[v]];
   return v;
 }
@@ -57,19 +57,20 @@ std::vector<int> shell_signs(const Eigen::Matrix3Xd& vertices, const Eigen::Matr
   };
   std::sort(order.begin(), order.end(), less);
   for (std::size_t v = 1; v < order.size(); ++v)
-    if (!less(order[v - 1], order[v])) parent[find(parent, order[v])] = find(parent, order[v - 1]);
+    if (!less(order[v - 1], order[v]))
+      parent[shell_root(parent, order[v])] = shell_root(parent, order[v - 1]);
   for (Eigen::Index t = 0; t < triangles.cols(); ++t)
     for (int e = 1; e < 3; ++e)
-      parent[find(parent, triangles(e, t))] = find(parent, triangles(0, t));
+      parent[shell_root(parent, triangles(e, t))] = shell_root(parent, triangles(0, t));
   std::vector<double> volume(vertices.cols(), 0.0);
   for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
     const Vector3d a = vertices.col(triangles(0, t)), b = vertices.col(triangles(1, t)),
                    c = vertices.col(triangles(2, t));
-    volume[find(parent, triangles(0, t))] += a.dot(b.cross(c)) / 6.0;
+    volume[shell_root(parent, triangles(0, t))] += a.dot(b.cross(c)) / 6.0;
   }
   std::vector<int> sign(triangles.cols());
   for (Eigen::Index t = 0; t < triangles.cols(); ++t) {
-    const double v = volume[find(parent, triangles(0, t))];
+    const double v = volume[shell_root(parent, triangles(0, t))];
     sign[t] = v > 0.0 ? 1 : v < 0.0 ? -1 : 0;
   }
   return sign;

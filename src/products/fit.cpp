@@ -107,8 +107,9 @@ JsonObject fit_head(const FitJob& job) {
     for (int c = 0; c < 3; ++c) append(recording.omega[i][c]);
   }
   for (double pause : recording.pauses) append(pause);
-  // Pooled: the recordings' names too (they name each toss's recording in the tables).
-  for (const fit::RecordingPart& part : recording.parts) samples += part.name + '\n';
+  // Several pooled: the recordings' names too (they name each toss's recording in the tables).
+  if (recording.parts.size() >= 2)
+    for (const fit::RecordingPart& part : recording.parts) samples += part.name + '\n';
   // The program next, as every scene product's head has it: a rebuilt bookspin fits again.
   members.insert(members.end(),
                  {{"bookspin",
@@ -175,8 +176,8 @@ FitFiles fit_files(const FitJob& job, const fit::FitReport& report) {
   files.summary.push_back(report.has_scenes
                               ? explore_line(job.out_dir, report.recording)
                               : "no scene of the tosses: the fitted moments break the triangle "
-                                "inequality (I1 + I2 > I3) or make a body too flat for a scene: no "
-                                "rigid body has them");
+                                "inequality (I1 + I2 < I3, where every rigid body has I1 + I2 ≥ "
+                                "I3) or make a body too flat for a scene");
   if (job.clips) {
     files.scratch =
         std::make_unique<output::AtomicDirectory>(layout.manifest.parent_path() / "render");

@@ -41,7 +41,8 @@ FitLayout fit_layout(const std::filesystem::path& out_dir, const std::string& na
 /// What `bookspin fit` asks for.
 struct FitJob {
   /// The recording, read by the command (fit::read_recording: a phyphox export or
-  /// t,wx,wy,wz): its name names the outputs, its samples are what they depend on.
+  /// t,wx,wy,wz) and pooled (fit::pool_recordings: one or more): its name names the outputs,
+  /// its samples are what they depend on.
   fit::GyroRecording recording;
   std::filesystem::path out_dir;
   fit::FitRequest request;         ///< --tosses by hand (empty: found), --moments, --drag

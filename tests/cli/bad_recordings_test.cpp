@@ -1,8 +1,9 @@
 // The catalogues of bad recordings (tests/bad_recordings/, `bookspin fit`) and bad motion files
 // (tests/bad_motions/, `bookspin flipcheck judge` and `league`): NAME.<ext> and NAME.expected
-// (the exact error line after "bookspin: error: ", with {FILE} for the path passed), a
-// recording's NAME.args its extra words. Every case must exit with status 2, print exactly
-// that one line on stderr and write nothing. The cases are listed at run time.
+// (the exact error line after "bookspin: error: ", with {FILE} for the path passed and {DIR}
+// for its folder), a recording's NAME.args its extra words ({DIR} there too). Every case must exit
+// with status 2, print exactly that one line on stderr and write nothing. The cases are listed at
+// run time.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -23,7 +24,7 @@ bool is_input(const fs::path& p) {
 
 std::vector<CatalogueCase> load(const std::string& folder) {
   return load_catalogue(folder, is_input, [](const fs::path& file) {
-    return Placeholders{{"{FILE}", file.string()}};
+    return Placeholders{{"{FILE}", file.string()}, {"{DIR}", file.parent_path().string()}};
   });
 }
 
@@ -40,7 +41,8 @@ TEST_P(BadRecording, ExitsTwoWithTheExactLineAndWritesNothing) {
   const CatalogueCase& c = GetParam();
   const fs::path out = fresh_dir("bad_recordings/" + c.name) / "out";
   const fs::path args = fs::path(c.file).replace_extension(".args");
-  const std::string extra = fs::exists(args) ? " " + trim_line_end(read_file(args)) : "";
+  std::string extra = fs::exists(args) ? " " + trim_line_end(read_file(args)) : "";
+  replace_all(extra, "{DIR}", c.file.parent_path().string());  // the same file spelled anew
   expect_refused("fit " + quoted(c.file) + extra + " -o " + quoted(out), c.expected, out);
 }
 

@@ -37,6 +37,8 @@ double number_of(const CsvTable& table, const std::string& column, std::size_t r
 FitResult hand_fit() {
   FitResult fit;
   fit.drag = physics::DragLaw::linear;
+  fit.parts.resize(1);  // one recording: a pool of one
+  fit.parts[0].name = "hand";
   // Axes: the columns of a rotation with nine different entries (a turn of 0.7 rad about
   // (1, 2, 3)/√14); axis a's phone components are column a.
   fit.body.axes = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();

@@ -15,14 +15,16 @@ using test::as_recording;
 void expect_flights_found(const test::SyntheticBody& body,
                           const std::vector<test::SyntheticToss>& tosses) {
   const test::SyntheticRecording synthetic = test::make_recording(body, tosses, 5);
-  const FlightSearch search = find_flights(as_recording(synthetic));
+  const GyroRecording recording = as_recording(synthetic);
+  const FlightSearch search = find_flights(recording);
   ASSERT_EQ(search.flights.size(), synthetic.tosses.size());
   for (std::size_t k = 0; k < search.flights.size(); ++k) {
     EXPECT_NEAR(search.flights[k].t_start, synthetic.tosses[k].t_start, 0.05) << "toss " << k;
     EXPECT_NEAR(search.flights[k].t_end, synthetic.tosses[k].t_end, 0.05) << "toss " << k;
   }
-  EXPECT_GT(search.rest.samples, 300);
-  EXPECT_LT((search.bias - synthetic.bias).norm(), 0.03);  // the hand wobbles 0.03 rad/s at rest
+  const RecordingPart& part = recording.parts.at(0);
+  EXPECT_GT(part.rest.samples, 300);
+  EXPECT_LT((part.bias - synthetic.bias).norm(), 0.03);  // the hand wobbles 0.03 rad/s at rest
 }
 
 TEST(Flights, FindsEveryFlightOfAPhoneAlone) {
@@ -150,15 +152,15 @@ TEST(Flights, TheBiasIsTheMeanOfTheStillSamplesOnly) {
     if (i >= 100) w = Eigen::Vector3d(5.0, 0.0, 0.0);
     recording.omega.push_back(w);
   }
-  const FlightSearch search = find_flights(recording);
-  EXPECT_EQ(search.rest.samples, 60);
-  ASSERT_EQ(search.rest.stretches.size(), 1u);
-  EXPECT_DOUBLE_EQ(search.rest.stretches[0].first, 0.40);
-  EXPECT_DOUBLE_EQ(search.rest.stretches[0].second, 0.99);
-  EXPECT_LE((search.bias - b).norm(), 1e-15);
+  const RecordingPart part = pool_recordings({recording}).parts.at(0);
+  EXPECT_EQ(part.rest.samples, 60);
+  ASSERT_EQ(part.rest.stretches.size(), 1u);
+  EXPECT_DOUBLE_EQ(part.rest.stretches[0].first, 0.40);
+  EXPECT_DOUBLE_EQ(part.rest.stretches[0].second, 0.99);
+  EXPECT_LE((part.bias - b).norm(), 1e-15);
   // The standard error: 0.004/√60 on each axis (alternating samples: ρ < 0, taken as 0).
   for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(search.rest.standard_error[c], 0.004 / std::sqrt(59.0), 1e-12) << c;
+    EXPECT_NEAR(part.rest.standard_error[c], 0.004 / std::sqrt(59.0), 1e-12) << c;
 }
 
 TEST(Flights, AFlightShorterThanTheMinimumIsDroppedHoweverManySamples) {

@@ -38,7 +38,10 @@ fs::path real_dir() {
   GTEST_SKIP() << "no real recordings at " << real_dir().string() \
                << " (../shared/recordings-real/ beside the checkout; CI has it)"
 
-GyroRecording real(const std::string& name) { return read_recording(real_dir() / name); }
+/// The development recording `name`, read and pooled (a pool of one), as the fit takes it.
+GyroRecording real(const std::string& name) {
+  return pool_recordings({read_recording(real_dir() / name)});
+}
 
 /// The mean ω over [a, b] s of `recording`: the reference the tests compare with, taken from
 /// the README's still seconds.
@@ -68,13 +71,15 @@ TEST(RealRecordings, TheBiasIsWithinFiveHundredthsOfTheStillRestsMean) {
   for (const auto& [name, from] : still_from) {
     const GyroRecording recording = real(name);
     const FlightSearch search = find_flights(recording);
-    ASSERT_GT(search.rest.samples, 20) << name;
-    EXPECT_GE(search.rest.stretches.front().first, from - 0.1) << name;
+    const Rest& rest = recording.parts.at(0).rest;
+    ASSERT_GT(rest.samples, 20) << name;
+    EXPECT_GE(rest.stretches.front().first, from - 0.1) << name;
     const Eigen::Vector3d reference = mean_over(recording, from + 0.1, from + 0.4);
     const FitResult fit = fit_recording(recording, search);
     for (int c = 0; c < 3; ++c) {
-      EXPECT_LT(std::abs(fit.search.bias[c] - reference[c]), 0.05) << name << " axis " << c;
-      EXPECT_LT(search.rest.sigma[c], 0.03) << name << " axis " << c;  // still, not held
+      EXPECT_LT(std::abs(fit.parts.at(0).bias_in_flight()[c] - reference[c]), 0.05)
+          << name << " axis " << c;
+      EXPECT_LT(rest.sigma[c], 0.03) << name << " axis " << c;  // still, not held
     }
     EXPECT_TRUE(has_line(fit_summary(fit), "where the phone lay still")) << name;
   }
@@ -87,7 +92,7 @@ TEST(RealRecordings, AHandHeldRestIsNoStillStretch) {
   for (const char* name : {"12-13-51", "12-29-59"}) {
     const GyroRecording recording = real(name);
     const FlightSearch search = find_flights(recording);
-    EXPECT_EQ(search.rest.samples, 0) << name;
+    EXPECT_EQ(recording.parts.at(0).rest.samples, 0) << name;
     const FitResult fit = fit_recording(recording, search);
     EXPECT_TRUE(has_line(fit_summary(fit), "no still stretch in the recording")) << name;
   }
@@ -178,6 +183,7 @@ TEST(RealRecordings, ALoneFlightCutFromARealThrowIsFoundAndFitted) {
       lone.t.push_back(whole.t[i]);
       lone.omega.push_back(whole.omega[i]);
     }
+    lone = pool_recordings({lone});
     const FlightSearch search = find_flights(lone);
     ASSERT_EQ(search.flights.size(), 1u) << uneven;
     EXPECT_GT(search.flights[0].t_end - search.flights[0].t_start, 0.9 * 0.65) << uneven;

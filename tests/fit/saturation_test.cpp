@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "fit/flights.hpp"
+#include "fit/pool.hpp"
 #include "fit/toss_fit.hpp"
 #include "synthetic_recording.hpp"
 
@@ -88,7 +89,8 @@ TEST(Saturation, ClippedSamplesAreLeftOutAndTheBodyIsRecovered) {
 }
 
 // Clipped at 3 rad/s, most of each flight reads the range: the toss (its flight given by hand:
-// the finder sees no torque-free stretch in such a recording) is flagged naming saturation.
+// the finder sees no torque-free stretch in such a recording) is flagged naming saturation, and
+// its `saturated` counts the samples its flag counts, whether they were left out or kept.
 TEST(Saturation, AFlightMostlyAtTheRangeIsFlaggedForIt) {
   const test::SyntheticRecording synthetic = test::make_recording(test::phone_alone(), kTosses, 11);
   const GyroRecording clip = clipped(test::as_recording(synthetic), 3.0);
@@ -99,6 +101,14 @@ TEST(Saturation, AFlightMostlyAtTheRangeIsFlaggedForIt) {
   for (const TossFit& toss : fit.tosses) {
     EXPECT_TRUE(toss.poor_fit);
     EXPECT_NE(toss.flag.find("gyroscope saturated"), std::string::npos) << toss.flag;
+    int at_range = 0;
+    for (int i = toss.flight.first; i <= toss.flight.last; ++i)
+      at_range += clip.omega[i].cwiseAbs().maxCoeff() == 3.0;
+    EXPECT_GT(at_range, 0);
+    EXPECT_EQ(toss.saturated, at_range) << toss.flag;
+    EXPECT_NE(toss.flag.find("gyroscope saturated: " + std::to_string(at_range) + " of"),
+              std::string::npos)
+        << toss.flag;
   }
 }
 
@@ -127,11 +137,11 @@ TEST(Saturation, ADriftingPlateauAtAStandardFullScaleIsFound) {
     plateau.t.push_back(t);
     plateau.omega.emplace_back(x, 3.0 + swing, 2.0 - swing);
   }
-  const Saturation found = find_saturation(plateau);
+  const Saturation found = find_saturation(pool_recordings({plateau}));
   ASSERT_TRUE(found.range.has_value());
   EXPECT_NEAR(*found.range, 2000.0 * M_PI / 180.0, 1e-12);
   for (int i = 0; i < 60; ++i) EXPECT_EQ(found.at_range[i], i >= 24 && i < 36) << i;
-  EXPECT_FALSE(find_saturation(smooth).range.has_value());
+  EXPECT_FALSE(find_saturation(pool_recordings({smooth})).range.has_value());
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fit/flights.hpp"
+#include "fit/pool.hpp"
 #include "fit/recording.hpp"
 
 namespace bookspin::fit {
@@ -19,7 +20,7 @@ GyroRecording steady_spin(const std::vector<double>& t) {
   recording.source = "steady.csv";
   recording.t = t;
   recording.omega.assign(t.size(), Eigen::Vector3d(0.0, 0.0, 5.0));
-  return recording;
+  return pool_recordings({recording});
 }
 
 std::vector<double> evenly(int n, double h, double from = 0.0) {

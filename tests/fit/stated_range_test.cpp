@@ -94,12 +94,13 @@ double nth_top(const GyroRecording& recording, std::size_t n) {
 // samples within 0.1 % of it; a sample above the stated range means it is not the range.
 TEST(Saturation, TheRangeThatDeviceCsvStatesMarksEvenAShortClip) {
   const GyroRecording recording =
-      test::as_recording(test::make_recording(test::phone_alone(), kTosses, 11));
+      test::as_read(test::make_recording(test::phone_alone(), kTosses, 11));
   const double range = nth_top(recording, 3);
   GyroRecording clip = clipped(recording, range);
-  ASSERT_FALSE(find_saturation(clip).range.has_value()) << "found from the samples alone";
+  ASSERT_FALSE(find_saturation(pool_recordings({clip})).range.has_value())
+      << "found from the samples alone";
   clip.gyroscope_range = range;
-  const Saturation found = find_saturation(clip);
+  const Saturation found = find_saturation(pool_recordings({clip}));
   ASSERT_TRUE(found.range.has_value());
   EXPECT_DOUBLE_EQ(*found.range, range);
   int marked = 0;
@@ -111,17 +112,16 @@ TEST(Saturation, TheRangeThatDeviceCsvStatesMarksEvenAShortClip) {
   EXPECT_GE(marked, 3);  // the two clipped and the one at the range
   // A stated range the samples exceed is not the range: nothing found (no flat run either).
   clip.gyroscope_range = 0.5 * range;
-  EXPECT_FALSE(find_saturation(clip).range.has_value());
+  EXPECT_FALSE(find_saturation(pool_recordings({clip})).range.has_value());
 }
 
-// Two recordings, each with its own bias and its own range, pooled: the bias is removed from
-// each, so their clipped samples no longer read a common |ω_i|, but each recording is searched
-// on its own, with its own stated range, and every clipped sample is found where it lies in the
-// pooled recording. a is clipped for tens of samples (found from its samples); b only where
-// its two fastest samples reach, which only its stated range shows.
+// Two recordings, each with its own bias and its own range, pooled: each recording is searched
+// on its own samples as measured, with its own stated range, and every clipped sample is found
+// where it lies in the pooled recording. a is clipped for tens of samples (found from its samples);
+// b only where its two fastest samples reach, which only its stated range shows.
 TEST(Saturation, PooledRecordingsAreSearchedEachOnItsOwn) {
-  GyroRecording a = test::as_recording(test::make_recording(test::phone_alone(), kTosses, 5));
-  GyroRecording b = test::as_recording(test::make_recording(test::phone_alone(), kTosses, 6));
+  GyroRecording a = test::as_read(test::make_recording(test::phone_alone(), kTosses, 5));
+  GyroRecording b = test::as_read(test::make_recording(test::phone_alone(), kTosses, 6));
   a.source = "a.csv";
   b.source = "b.csv";
   for (Eigen::Vector3d& w : b.omega) w += Eigen::Vector3d(0.05, -0.04, 0.03);  // b's own bias

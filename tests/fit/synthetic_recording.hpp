@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "fit/pool.hpp"
 #include "fit/recording.hpp"
 
 namespace bookspin::fit::test {
@@ -244,9 +245,9 @@ inline SyntheticBody racquet() {
 }
 
 /// `synthetic` as the reader would give it (its times, ω and pauses), named `name` with the
-/// source "<name>.csv".
-inline GyroRecording as_recording(const SyntheticRecording& synthetic,
-                                  const std::string& name = "synthetic") {
+/// source "<name>.csv", not yet pooled (its bias unmeasured).
+inline GyroRecording as_read(const SyntheticRecording& synthetic,
+                             const std::string& name = "synthetic") {
   GyroRecording recording;
   recording.name = name;
   recording.source = name + ".csv";
@@ -254,6 +255,12 @@ inline GyroRecording as_recording(const SyntheticRecording& synthetic,
   recording.omega = synthetic.omega;
   recording.pauses = synthetic.pauses;
   return recording;
+}
+
+/// `synthetic` as the finder and the fit take it: as read, a pool of one (pool_recordings).
+inline GyroRecording as_recording(const SyntheticRecording& synthetic,
+                                  const std::string& name = "synthetic") {
+  return pool_recordings({as_read(synthetic, name)});
 }
 
 }  // namespace bookspin::fit::test

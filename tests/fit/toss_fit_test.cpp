@@ -9,6 +9,7 @@
 
 #include "fit/fit_tables.hpp"
 #include "fit/flights.hpp"
+#include "fit/pool.hpp"
 #include "fit/recording.hpp"
 #include "support/scratch.hpp"
 #include "synthetic_recording.hpp"
@@ -32,7 +33,7 @@ GyroRecording through_file(const test::SyntheticRecording& synthetic, test::Dial
                            const std::string& name) {
   const auto dir = bookspin::test::fresh_dir("fit/toss-fit/" + name);
   test::write_export(dir, synthetic, dialect);
-  return read_recording(dir);
+  return pool_recordings({read_recording(dir)});
 }
 
 void expect_body_recovered(const SyntheticBody& body, const std::vector<SyntheticToss>& tosses,
@@ -285,7 +286,7 @@ TEST(TossFit, TheBiasCorrectionStaysWithinWhatTheRestAllows) {
   FitSettings settings;
   settings.drag = physics::DragLaw::none;
   const FitResult fit = fit_recording(recording, find_flights(recording), settings);
-  ASSERT_GT(fit.search.rest.samples, 0);
+  ASSERT_GT(fit.parts.at(0).rest.samples, 0);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero(), squares = Eigen::Vector3d::Zero();
   int n = 0;
   for (std::size_t i = 0; synthetic.t[i] < 1.4; ++i, ++n) mean += synthetic.omega[i];
@@ -293,10 +294,13 @@ TEST(TossFit, TheBiasCorrectionStaysWithinWhatTheRestAllows) {
   for (int i = 0; i < n; ++i) squares += (synthetic.omega[i] - mean).cwiseAbs2();
   const Eigen::Vector3d scatter = (squares / (n - 1)).cwiseSqrt();
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(fit.search.rest.sigma[c], scatter[c], 0.3 * scatter[c]) << c;
-    EXPECT_LE(std::abs(fit.bias_correction[c]), fit.search.rest.bound()[c] + 1e-12) << c;
+    EXPECT_NEAR(fit.parts.at(0).rest.sigma[c], scatter[c], 0.3 * scatter[c]) << c;
+    EXPECT_LE(std::abs(fit.parts.at(0).bias_correction[c]), fit.parts.at(0).rest.bound()[c] + 1e-12)
+        << c;
     // The bias removed in flight is the generator's within the bound.
-    EXPECT_NEAR(fit.search.bias[c], synthetic.bias[c], 3.0 * fit.search.rest.sigma[c] + 0.01) << c;
+    EXPECT_NEAR(fit.parts.at(0).bias_in_flight()[c], synthetic.bias[c],
+                3.0 * fit.parts.at(0).rest.sigma[c] + 0.01)
+        << c;
   }
   // The body CSV says both: the bias removed and the rest's σ.
   const CsvTable body = fit_body_csv(fit);
@@ -305,8 +309,8 @@ TEST(TossFit, TheBiasCorrectionStaysWithinWhatTheRestAllows) {
     EXPECT_NE(at, body.columns.end()) << name;
     return std::get<CsvNumber>(body.rows.at(0).at(at - body.columns.begin())).value.value();
   };
-  EXPECT_EQ(column("bias_x"), fit.search.bias[0]);
-  EXPECT_EQ(column("bias_sigma_z"), fit.search.rest.sigma[2]);
+  EXPECT_EQ(column("bias_x"), fit.parts.at(0).bias_in_flight()[0]);
+  EXPECT_EQ(column("bias_sigma_z"), fit.parts.at(0).rest.sigma[2]);
 }
 
 // A recording of the flights alone (the rests cut out): the bias is fitted from the flights, with
@@ -326,12 +330,15 @@ TEST(TossFit, WithNoRestTheBiasIsFittedFromTheFlightsWithItsSigma) {
         recording.t.push_back(synthetic.t[i]);
         recording.omega.push_back(synthetic.omega[i]);
       }
+  recording = pool_recordings({recording});
   const FitResult fit = fit_recording(recording, hand_flights(recording, ranges));
-  ASSERT_EQ(fit.search.rest.samples, 0);
-  ASSERT_TRUE(fit.bias_fitted_sigma.has_value());
+  ASSERT_EQ(fit.parts.at(0).rest.samples, 0);
+  ASSERT_TRUE(fit.parts.at(0).bias_fitted_sigma.has_value());
   for (int c = 0; c < 3; ++c) {
-    EXPECT_GT((*fit.bias_fitted_sigma)[c], 0.0) << c;
-    EXPECT_NEAR(fit.search.bias[c], synthetic.bias[c], 3.0 * (*fit.bias_fitted_sigma)[c]) << c;
+    EXPECT_GT((*fit.parts.at(0).bias_fitted_sigma)[c], 0.0) << c;
+    EXPECT_NEAR(fit.parts.at(0).bias_in_flight()[c], synthetic.bias[c],
+                3.0 * (*fit.parts.at(0).bias_fitted_sigma)[c])
+        << c;
   }
   EXPECT_EQ(
       fit_summary(fit).at(0).rfind(
@@ -342,7 +349,7 @@ TEST(TossFit, WithNoRestTheBiasIsFittedFromTheFlightsWithItsSigma) {
   const auto at = std::find(body.columns.begin(), body.columns.end(), "bias_sigma_y");
   ASSERT_NE(at, body.columns.end());
   EXPECT_EQ(std::get<CsvNumber>(body.rows.at(0).at(at - body.columns.begin())).value.value(),
-            (*fit.bias_fitted_sigma)[1]);
+            (*fit.parts.at(0).bias_fitted_sigma)[1]);
 }
 
 // A light, broad body whose |L| decays at 3 /s over four 1.3 s flights (linear drag): each
@@ -357,9 +364,10 @@ TEST(TossFit, StrongDragIsFittedAsDragNotBias) {
                                                                   41, 0.01, 0.15, 4.0, 3.0);
   const GyroRecording recording = as_recording(synthetic);
   const FitResult fit = fit_recording(recording, find_flights(recording));
-  ASSERT_GT(fit.search.rest.samples, 0);
+  ASSERT_GT(fit.parts.at(0).rest.samples, 0);
   for (int c = 0; c < 3; ++c)
-    EXPECT_LE(std::abs(fit.bias_correction[c]), fit.search.rest.bound()[c] + 1e-12) << c;
+    EXPECT_LE(std::abs(fit.parts.at(0).bias_correction[c]), fit.parts.at(0).rest.bound()[c] + 1e-12)
+        << c;
   ASSERT_EQ(fit.tosses.size(), 4u);
   for (const TossFit& toss : fit.tosses) {
     if (toss.poor_fit) {

@@ -7,6 +7,7 @@
 
 #include "common/errors.hpp"
 #include "fit/flights.hpp"
+#include "fit/pool.hpp"
 #include "fit/recording.hpp"
 
 namespace bookspin::fit {
@@ -21,7 +22,7 @@ GyroRecording hundred_samples() {
     recording.omega.push_back(Eigen::Vector3d(0.01, -0.02, 0.03));
   }
   recording.pauses = {0.505};
-  return recording;
+  return pool_recordings({recording});
 }
 
 std::string error_of(const GyroRecording& recording,

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "fit/fit.hpp"
+#include "fit/pool.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
@@ -31,6 +32,7 @@ TEST(WorkedExample, ThePhoneAloneInAirAsDocsPhoneLabPrintsIt) {
   recording.t = synthetic.t;
   recording.omega = synthetic.omega;
   recording.pauses = synthetic.pauses;
+  recording = pool_recordings({recording});
   const FitResult fit = fit_recording(recording, find_flights(recording));
   ASSERT_EQ(fit.tosses.size(), 3u);
   std::string table;

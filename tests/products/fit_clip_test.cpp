@@ -45,7 +45,7 @@ fs::path write_inputs(const fs::path& dir, const fit::test::SyntheticRecording& 
 
 FitJob render_job(const fs::path& dir) {
   FitJob job;
-  job.recording = fit::read_recording(dir / "toss");
+  job.recording = fit::pool_recordings({fit::read_recording(dir / "toss")});
   job.out_dir = dir / "out";
   job.width = 320;
   job.height = 160;
@@ -143,7 +143,7 @@ void expect_tiles_turn_alike(const fit::test::SyntheticRecording& rec, const std
   SCOPED_TRACE(name);
   const fs::path dir = bookspin::test::fresh_dir("products/fit_clip_tiles/" + name);
   fit::test::write_export(dir / "toss", rec, fit::test::Dialect::comma);
-  const fit::GyroRecording recording = fit::read_recording(dir / "toss");
+  const fit::GyroRecording recording = fit::pool_recordings({fit::read_recording(dir / "toss")});
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   ASSERT_EQ(fit.tosses.size(), 2u);
   const physics::Body body = physics::preset_body(physics::BodyShape::phone);
@@ -231,7 +231,7 @@ TEST(FitClip, RendersEachTossBesideTheFitAndIsUpToDate) {
     in_folder.push_back(entry.path().filename().string());
   EXPECT_EQ(in_folder, std::vector<std::string>{"fit-manifest.json"});
 
-  const fit::GyroRecording recording = fit::read_recording(dir / "toss");
+  const fit::GyroRecording recording = fit::pool_recordings({fit::read_recording(dir / "toss")});
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   for (int toss = 0; toss < 2; ++toss) {
     const fit::Flight& flight = fit.tosses[toss].flight;

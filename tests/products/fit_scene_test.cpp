@@ -80,7 +80,7 @@ TEST(FitScene, EachTossIsASceneOfTheFittedMotion) {
       fit::test::phone_on_book(), {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.3}}, 3);
   fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::comma);
   FitJob job;
-  job.recording = fit::read_recording(dir / "toss");
+  job.recording = fit::pool_recordings({fit::read_recording(dir / "toss")});
   job.out_dir = dir / "out";
   job.width = 480;
   job.height = 240;
@@ -194,7 +194,7 @@ TEST(FitScene, NoSceneForMomentsNoBodyHas) {
       fit::test::make_recording(fit::test::phone_on_book(), {{{0.5, 12.0, 0.4}, 1.2}}, 3);
   fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::comma);
   FitJob job;
-  job.recording = fit::read_recording(dir / "toss");
+  job.recording = fit::pool_recordings({fit::read_recording(dir / "toss")});
   job.out_dir = dir / "out";
   job.width = 480;
   job.height = 240;

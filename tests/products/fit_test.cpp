@@ -50,10 +50,12 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   result.body.ratios = Eigen::Vector3d(0.25, 0.75, 1.0);
   result.body.axes = Eigen::Matrix3d::Identity();
   result.body.ratio_sigma = Eigen::Vector3d(0.001, 0.002, 0.0);
-  result.search.rest.samples = 100;
-  result.search.rest.stretches = {{0.25, 1.25}};
-  result.search.bias = result.search.rest.mean = Eigen::Vector3d(0.5, -0.25, 0.125);
-  result.search.rest.sigma = Eigen::Vector3d(0.03125, 0.0625, 0.015625);
+  result.parts.resize(1);  // one recording: a pool of one
+  fit::RecordingPart& part = result.parts[0];
+  part.rest.samples = 100;
+  part.rest.stretches = {{0.25, 1.25}};
+  part.bias = part.rest.mean = Eigen::Vector3d(0.5, -0.25, 0.125);
+  part.rest.sigma = Eigen::Vector3d(0.03125, 0.0625, 0.015625);
   EXPECT_EQ(csv_text(fit::fit_toss_csv(result), "fit CSV"),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
             "half_period_fitted,half_period_predicted,predicted_from_tosses,predicted_from_seconds,"
@@ -74,9 +76,10 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
             "scatter): 0.5000 ± 0.0312, -0.2500 ± 0.0625, 0.1250 ± 0.0156");
   // No still stretch: the bias fitted from the flights (all of it the correction), its σ the
   // fit's standard error.
-  result.search.rest = {};
-  result.bias_correction = result.search.bias;
-  result.bias_fitted_sigma = Eigen::Vector3d(0.25, 0.5, 0.75);
+  part.rest = {};
+  part.bias_correction = part.bias;
+  part.bias = Eigen::Vector3d::Zero();
+  part.bias_fitted_sigma = Eigen::Vector3d(0.25, 0.5, 0.75);
   EXPECT_NE(csv_text(fit::fit_body_csv(result), "fit body CSV")
                 .find(",quadratic,0.5,-0.25,0.125,0.25,0.5,0.75\n"),
             std::string::npos);
@@ -85,8 +88,8 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
             "0.5000 ± "
             "0.2500, -0.2500 ± 0.5000, 0.1250 ± 0.7500");
   // Neither: no bias removed, no σ.
-  result.search.bias = result.bias_correction = Eigen::Vector3d::Zero();
-  result.bias_fitted_sigma.reset();
+  part.bias = part.bias_correction = Eigen::Vector3d::Zero();
+  part.bias_fitted_sigma.reset();
   EXPECT_NE(csv_text(fit::fit_body_csv(result), "fit body CSV").find(",quadratic,0,0,0,,,\n"),
             std::string::npos);
   EXPECT_EQ(fit::fit_summary(result).at(0),
@@ -99,7 +102,7 @@ TEST(FitProduct, MakesEveryFileThenIsUpToDate) {
       fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 6);
   fit::test::write_export(dir / "toss", synthetic, fit::test::Dialect::comma);
   FitJob job;
-  job.recording = fit::read_recording(dir / "toss");
+  job.recording = fit::pool_recordings({fit::read_recording(dir / "toss")});
   job.out_dir = dir / "out";
   job.width = 640;
   job.height = 360;

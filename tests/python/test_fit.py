@@ -5,6 +5,8 @@ summary lines; the chart arrays against the CSV's residual; the command line's e
 Ctrl-C during a long fit."""
 import csv
 import math
+import os
+import zipfile
 
 import numpy as np
 import pytest
@@ -131,6 +133,40 @@ def test_a_list_of_recordings_fits_as_one_body_as_the_command_fits_them(bookspin
     assert pooled.body["I2_over_I3"] == pytest.approx(2.6 / 3.4, rel=0.01)
 
 
+def test_one_recording_given_twice_however_spelled_is_refused(bookspin, tmp_path):
+    # A relative and an absolute path, a symlink: one file; a copy, and an export beside its
+    # own zip: the same samples. Each would predict a toss partly from its own copy.
+    t, omega = made_recording(bookspin)
+    first = tmp_path / "first.csv"
+    write_recording(first, t, omega)
+    (tmp_path / "link.csv").symlink_to(first)
+    (tmp_path / "copy.csv").write_bytes(first.read_bytes())
+    export = tmp_path / "export"
+    export.mkdir()
+    (export / "Raw Data.csv").write_bytes(first.read_bytes())
+    with zipfile.ZipFile(tmp_path / "export.zip", "w") as z:
+        z.write(export / "Raw Data.csv", "Raw Data.csv")
+    cases = [
+        ([first, "first.csv"], "first.csv: the same file as {0}/first.csv, given twice"),
+        ([first, "link.csv"], "link.csv: the same file as {0}/first.csv, given twice"),
+        ([first, "copy.csv"], "copy.csv: the same samples as {0}/first.csv (an export beside its "
+                              "own zip, or a copy), given twice"),
+        (["export", "export.zip"], "export.zip:Raw Data.csv: the same samples as export/Raw Data.csv "
+                                   "(an export beside its own zip, or a copy), given twice"),
+    ]
+    here = os.getcwd()
+    os.chdir(tmp_path)
+    try:
+        for recordings, line in cases:
+            with pytest.raises(bookspin.Error) as raised:
+                bookspin.fit(recordings)
+            assert str(raised.value) == line.format(tmp_path)
+        assert_same_error(bookspin, lambda: bookspin.fit([first, tmp_path / "link.csv"]),
+                          "fit", first, tmp_path / "link.csv", "-o", tmp_path / "out")
+    finally:
+        os.chdir(here)
+
+
 def test_tosses_and_moments_by_hand_as_the_command_takes_them(bookspin, tmp_path):
     t, omega = made_recording(bookspin)
     path = tmp_path / "recording.csv"
@@ -175,6 +211,10 @@ def test_bad_input_raises_the_command_lines_error(bookspin, tmp_path):
         bookspin.fit((t, omega))
     with pytest.raises(bookspin.Error, match=r"^omega: expected shape \(20, 3\), got \(20, 2\)$"):
         bookspin.fit((t, omega[:, :2]))
+    with pytest.raises(bookspin.Error, match=r"^omega: 19 rows, but t has 20: one row of each per time$"):
+        bookspin.fit((t, omega[:-1]))
+    with pytest.raises(bookspin.Error, match=r"^omega: expected real numbers \(float64\), got complex128"):
+        bookspin.fit((np.arange(20) * 0.01, omega.astype(complex)))
     with pytest.raises(bookspin.Error, match="drag"):
         bookspin.fit(SAMPLE, drag="cubic")
     with pytest.raises(bookspin.Error, match=r"moments\[1\]"):

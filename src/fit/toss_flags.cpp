@@ -1,0 +1,163 @@
+#include "fit/toss_flags.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace bookspin::fit {
+namespace {
+
+// The flags (docs/phone-lab.md, "Flags"): a 50 ms block of the residual over kBlockFactor times
+// both the flight's median block and the noise at rest; or the whole residual over kNoFit of |ω|.
+constexpr double kBlock = 0.05;
+// The widest range of a phone's or a consumer IMU's gyroscope: ±4000 °/s (69.8 rad/s; most
+// phones stop at ±2000 °/s, 34.9 rad/s). A sample beyond it cannot be a measurement: the
+// recording is in other units (°/s) or scaled (docs/phone-lab.md, "Flags").
+constexpr double kGyroRangeMax = 4000.0 * 3.14159265358979323846 / 180.0;
+constexpr double kBlockFactor = 4.0;
+// 5 %: between the clean throws of a bare phone in real air (1.0–1.8 % of |ω| with drag) and a
+// fit with its flips visibly mistimed (8.8 %); the gyroscope's noise (0.005–0.03 rad/s) is 10–40
+// times below a clean throw's residual, so it cannot set this one (docs/phone-lab.md, "Flags").
+constexpr double kNoFit = 0.05;
+
+/// The flag of one toss from its residual r_i = ω_fitted − ω_measured (docs/phone-lab.md,
+/// "Flags"): 50 ms blocks' RMS against the median block and the noise at rest; empty for a
+/// toss whose residual looks like noise and an unmodelled smooth remainder.
+std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vector3d>& residual,
+                    double mean_omega, std::optional<double> noise) {
+  const double duration = tau.back() - tau.front();
+  double total2 = 0.0;
+  for (const Eigen::Vector3d& r : residual) total2 += r.squaredNorm();
+  const double rms = std::sqrt(total2 / residual.size());
+  const auto fixed = [](double value, int digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", digits, value);
+    return std::string(text);
+  };
+  // Blocks of 50 ms (at least 4 samples each).
+  const int blocks = std::max(1, static_cast<int>(duration / kBlock));
+  std::vector<double> block2(blocks, 0.0);
+  std::vector<int> block_n(blocks, 0);
+  for (std::size_t i = 0; i < tau.size(); ++i) {
+    const int b =
+        std::min(blocks - 1, static_cast<int>((tau[i] - tau.front()) / duration * blocks));
+    block2[b] += residual[i].squaredNorm();
+    ++block_n[b];
+  }
+  std::vector<double> block_rms;
+  for (int b = 0; b < blocks; ++b)
+    block_rms.push_back(block_n[b] ? std::sqrt(block2[b] / block_n[b]) : 0.0);
+  std::vector<double> sorted = block_rms;
+  std::nth_element(sorted.begin(), sorted.begin() + blocks / 2, sorted.end());
+  const double median = sorted[blocks / 2];
+  const double floor = noise ? std::sqrt(3.0) * 5.0 * *noise : 0.0;  // |r| of 5σ per component
+  int worst = 0;
+  for (int b = 1; b < blocks; ++b)
+    if (block_rms[b] > block_rms[worst]) worst = b;
+  if (blocks >= 4 && block_rms[worst] > kBlockFactor * median && block_rms[worst] > floor) {
+    const double at = tau.front() + (worst + 0.5) * duration / blocks;
+    const std::string where = "the residual jumps to " + fixed(block_rms[worst], 2) +
+                              " rad/s near t = " + fixed(at, 2) + " s of the flight (typical " +
+                              fixed(median, 2) + ")";
+    if (worst >= blocks - 2) return "a catch inside the flight? " + where;
+    if (worst <= 1) return "the throw inside the flight? " + where;
+    return "a knock, or the phone slipping on the body? " + where;
+  }
+  if (rms > kNoFit * mean_omega)
+    return "a body that flexes, or not a free flight: the residual is " +
+           fixed(100 * rms / mean_omega, 1) + " % of |ω| throughout";
+  return {};
+}
+
+}  // namespace
+
+std::optional<double> rest_noise(const GyroRecording& recording, const FlightSearch& search) {
+  const double rest = 0.5 * FinderSettings{}.rest_omega;
+  std::size_t flight = 0;
+  double sum2 = 0.0;
+  int count = 0;
+  for (const RecordingPart& part : recording.parts)
+    for (int i = part.first; i <= part.last; ++i) {
+      while (flight < search.flights.size() && search.flights[flight].last < i) ++flight;
+      if (flight < search.flights.size() && search.flights[flight].first <= i) continue;
+      const Eigen::Vector3d d = recording.omega[i] - part.bias;
+      if (d.norm() > rest) continue;
+      sum2 += d.squaredNorm();
+      ++count;
+    }
+  if (count < 20) return std::nullopt;
+  return std::sqrt(sum2 / (3.0 * count));
+}
+
+std::string toss_flag(const TossData& data, const std::vector<Eigen::Vector3d>& residual,
+                      const Saturation& saturation, std::optional<double> noise) {
+  const TossData& d = data;
+  double mean_omega = 0.0;
+  for (const Eigen::Vector3d& w : d.omega) mean_omega += w.norm() / d.omega.size();
+  double peak_omega = 0.0;  // the largest component measured, rad/s
+  for (const Eigen::Vector3d& w : d.omega)
+    peak_omega = std::max(peak_omega, w.cwiseAbs().maxCoeff());
+  const int at_range = d.at_range;  // the flight's samples at the range, left out or not
+  if (peak_omega > kGyroRangeMax) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "ω reaches %.4g rad/s, beyond any gyroscope's range (phones: ±2000 °/s, "
+                  "34.9 rad/s; at most ±4000 °/s, 69.8 rad/s): a recording in °/s, or scaled?",
+                  peak_omega);
+    return text;
+  }
+  if (at_range > 0 && 4 * (d.samples - at_range) < d.samples) {  // under a quarter left
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "gyroscope saturated: %d of the flight's %d samples read its range (±%.4g "
+                  "rad/s), under a quarter left: too much of the motion is missing to trust "
+                  "the fit",
+                  at_range, d.samples, *saturation.range);
+    return text;
+  }
+  std::string flag = flag_of(d.tau, residual, mean_omega, noise);
+  if (!flag.empty() && d.saturated > 0) {  // the clip named beside what the rest shows
+    char text[100];
+    std::snprintf(text, sizeof text,
+                  " (the gyroscope saturated: %d of its samples read its range, left out)",
+                  d.saturated);
+    flag += text;
+  }
+  return flag;
+}
+
+std::string scale_cause(const std::vector<TossData>& data) {
+  Eigen::Vector3d peak = Eigen::Vector3d::Zero();
+  for (const TossData& d : data)
+    for (const Eigen::Vector3d& w : d.omega) peak = peak.cwiseMax(w.cwiseAbs());
+  static const char* const kAxis[3] = {"ω_x", "ω_y", "ω_z"};
+  std::string beyond, within;
+  int beyond_count = 0;
+  double inside = 0.0;  // the largest |ω| of the axes within the range
+  for (int c = 0; c < 3; ++c) {
+    if (peak[c] > kGyroRangeMax) {
+      beyond += std::string(beyond.empty() ? "" : " and ") + kAxis[c];
+      ++beyond_count;
+    } else {
+      within += std::string(within.empty() ? "" : " and ") + kAxis[c];
+      inside = std::max(inside, peak[c]);
+    }
+  }
+  if (beyond_count == 0) return {};
+  char text[300];
+  if (beyond_count == 3)
+    std::snprintf(text, sizeof text,
+                  "every axis of ω passes any gyroscope's range (±%.1f rad/s), up to %.4g rad/s: "
+                  "a recording in °/s, or scaled?",
+                  kGyroRangeMax, peak.maxCoeff());
+  else
+    std::snprintf(text, sizeof text,
+                  "%s %s %.4g rad/s, beyond any gyroscope's range (±%.1f rad/s), while %s %s "
+                  "within %.3g: %s in °/s, or scaled?",
+                  beyond.c_str(), beyond_count == 1 ? "reaches" : "reach", peak.maxCoeff(),
+                  kGyroRangeMax, within.c_str(), beyond_count == 1 ? "stay" : "stays", inside,
+                  beyond_count == 1 ? "that axis" : "those axes");
+  return text;
+}
+
+}  // namespace bookspin::fit

@@ -1,0 +1,35 @@
+#pragma once
+// A toss's flag (docs/phone-lab.md, "Flags"; "Saturation"): what its residual says that the
+// measurement's noise cannot (a catch or throw inside the flight, a knock, a body that flexes),
+// a recording beyond any gyroscope's range, or a flight the gyroscope's range clipped; and the
+// gyroscope's noise at rest that the residual is judged against.
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fit/flights.hpp"
+#include "fit/recording.hpp"
+#include "fit/saturation.hpp"
+#include "fit/toss_parameters.hpp"
+
+namespace bookspin::fit {
+
+/// The gyroscope's scatter at rest (rad/s, per component, RMS): the samples outside every
+/// flight within rest_omega/2 of their recording's bias (RecordingPart::bias); nullopt with
+/// fewer than 20 such samples.
+std::optional<double> rest_noise(const GyroRecording& recording, const FlightSearch& search);
+
+/// The flag of toss `data` (its residual r_i = ω_fitted − ω_measured at each of data.tau): a reading beyond any gyroscope's range, a flight the range
+/// clipped to under a quarter of its samples, or what the residual looks like against the
+/// flight's median 50 ms block and `noise` (rest_noise); empty for a clean toss. One line.
+std::string toss_flag(const TossData& data, const std::vector<Eigen::Vector3d>& residual,
+                      const Saturation& saturation, std::optional<double> noise);
+
+/// What in the tosses' samples a fit that failed can blame, as a clause after "the fit did not
+/// converge: " (docs/phone-lab.md, "Flags"): an axis whose |ω| passes any gyroscope's range
+/// (±4000 °/s, 69.8 rad/s) while another's stays within it (one axis in °/s, or scaled), or every
+/// axis beyond it (a recording in °/s); empty where nothing in the samples explains it.
+std::string scale_cause(const std::vector<TossData>& data);
+
+}  // namespace bookspin::fit
