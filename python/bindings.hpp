@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <chrono>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/stop.hpp"
@@ -40,12 +41,19 @@ void add_render(py::module_& m);
 StopPoll python_stop();
 
 /// `value` as a float64 array of shape (`n`,), for argument `name`; InputError "NAME: expected
-/// shape (n,), got (…)" otherwise (`n` < 0: any length).
+/// shape (n,), got (…)" otherwise (`n` < 0: any length), and for a dtype numpy casts to
+/// float64 only unsafely (complex, text: not numpy's same_kind) or a copy too large for memory.
 std::vector<double> vector_arg(const py::handle& value, const char* name, long n);
 /// `value` as a 3-vector (shape (3,)).
 Eigen::Vector3d vector3_arg(const py::handle& value, const char* name);
-/// `value` as a float64 array of shape (`rows`, `columns`), row-major.
+/// `value` as a float64 array of shape (`rows`, `columns`), row-major (`rows` < 0: any), refused
+/// as vector_arg's.
 std::vector<double> matrix_arg(const py::handle& value, const char* name, long rows, long columns);
+
+/// InputError where arrays that go together (a name and its rows each, the first given first)
+/// differ in length: names the one whose count the others do not share ("t: 10 rows, but q and
+/// omega_world have 3001: one row of each per time").
+void same_rows(const std::vector<std::pair<const char*, std::size_t>>& arrays);
 
 /// A float64 array of shape (n,) or (n, columns), uninitialized.
 py::array_t<double> new_array(std::size_t n, std::size_t columns = 0);

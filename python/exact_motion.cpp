@@ -29,8 +29,9 @@ Returns a dict of float64 arrays:
   L_world      (N, 3)  angular momentum R(t) I_body omega_body, world frame (constant)
   E            (N,)    kinetic energy 1/2 omega . I_body omega (constant)
 
-Raises bookspin.Error for a wrong shape, a moment that is not finite and positive, or an
-omega0 or t that is not finite; KeyboardInterrupt on Ctrl-C. The GIL is released while it
+Raises bookspin.Error for a wrong shape, a complex array, a moment that is not finite and
+positive, an omega0 or t that is not finite, an omega0 component beyond ±1e6, or a motion
+that overflows a double; KeyboardInterrupt on Ctrl-C. The GIL is released while it
 computes.)";
 
 py::dict exact_motion(const py::object& moments_arg, const py::object& omega0_arg,

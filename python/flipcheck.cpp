@@ -149,9 +149,9 @@ py::dict judge(const py::object& scenario_input, const py::object& t_arg, const 
   const scene::Scene scene = scenario_scene(scenario_input, directory);
   const analysis::Scenario scenario = analysis::scenario_of(scene);
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
-  const auto n = static_cast<long>(t.size());
-  const std::vector<double> q = matrix_arg(q_arg, "q", n, 4);
-  const std::vector<double> omega = matrix_arg(omega_arg, "omega_world", n, 3);
+  const std::vector<double> q = matrix_arg(q_arg, "q", -1, 4);
+  const std::vector<double> omega = matrix_arg(omega_arg, "omega_world", -1, 3);
+  same_rows({{"t", t.size()}, {"q", q.size() / 4}, {"omega_world", omega.size() / 3}});
   CsvTable table;
   {
     py::gil_scoped_release release;

@@ -5,8 +5,20 @@
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
+#include "scene/limits.hpp"
 
 namespace bookspin::jobs {
+namespace {
+
+constexpr double kOmegaMax = scene::limit("initial.angular_velocity").max;
+
+/// Every number of `row` finite.
+bool finite(const ExactMotionRow& row) {
+  return std::isfinite(row.t) && row.q.allFinite() && row.omega_body.allFinite() &&
+         row.omega_world.allFinite() && row.L.allFinite() && std::isfinite(row.E);
+}
+
+}  // namespace
 
 namespace {
 
@@ -32,6 +44,11 @@ std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
     if (!std::isfinite(omega0_body[i]))
       throw InputError("omega0[" + std::to_string(i) + "]: " + value_text(omega0_body[i]) +
                        " is not a finite angular velocity");
+    // A scene's range for ω (scenes/README.md, "Limits"): |L|² and E stay within a double.
+    if (std::abs(omega0_body[i]) > kOmegaMax)
+      throw InputError("omega0[" + std::to_string(i) + "]: " + value_text(omega0_body[i]) +
+                       " is outside the angular velocity's range, ±" + value_text(kOmegaMax) +
+                       " rad per time unit (a scene's initial.angular_velocity)");
   }
   for (std::size_t n = 0; n < times.size(); ++n)
     if (!std::isfinite(times[n]))
@@ -43,6 +60,12 @@ std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
   for (std::size_t n = 0; n < times.size(); ++n) {
     if (n % 4096 == 0) stop_if_asked(stop, "exact motion");
     rows.push_back(exact.state(times[n]));
+    if (!finite(rows.back()))
+      throw InputError("moments (" + value_text(moments[0]) + ", " + value_text(moments[1]) + ", " +
+                       value_text(moments[2]) + ") and omega0 (" + value_text(omega0_body[0]) +
+                       ", " + value_text(omega0_body[1]) + ", " + value_text(omega0_body[2]) +
+                       "): the motion at t[" + std::to_string(n) + "] = " + value_text(times[n]) +
+                       " overflows a double (its energy ½ ω·Iω or |L| is beyond 1.8e308)");
   }
   return rows;
 }

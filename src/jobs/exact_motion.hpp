@@ -19,7 +19,9 @@ using ExactMotionRow = physics::ExactState;
 /// physics::ExactRotation::state() at each of `times`, for a body of principal `moments` (body x,
 /// y, z, mass·length²) starting at the identity with body-frame ω0 `omega0_body` (rad per time
 /// unit). `stop` is polled every few thousand rows. Throws InputError for a moment that is not
-/// finite and positive, an ω0 or a t that is not finite (naming `what`: "moments", "omega0", "t").
+/// finite and positive, an ω0 or a t that is not finite, an ω0 component beyond a scene's
+/// ±1e6 (initial.angular_velocity), each naming its argument ("moments[i]", "omega0[i]",
+/// "t[i]"), and for a motion that overflows a double (naming the moments and ω0).
 std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
                                             const Eigen::Vector3d& omega0_body,
                                             const std::vector<double>& times,

@@ -114,6 +114,20 @@ def test_any_order_of_t_and_one_time(bookspin):
     (([1, 2, 3], [0, np.nan, 0], [0.0]), "omega0[1]: nan is not a finite angular velocity"),
     (([1, 2, 3], [0, 1, 0], [0.0, np.inf]), "t[1]: inf is not a finite time"),
     (([1, 2, 3], "abc", [0.0]), "omega0: expected an array of numbers (float64), got str"),
+    # Round 8: what numpy casts with a loss is refused, not cast; a motion that overflows a
+    # double, or an omega0 beyond a scene's range, names its input.
+    (([1, 2, 3], [0, 1, 0], np.array([0.0, 1.0]) + 5j),
+     "t: expected real numbers (float64), got complex128: the imaginary part would be dropped"),
+    (([1, 2, 3], np.array([0, 1, 0], dtype=np.complex64), [0.0]),
+     "omega0: expected real numbers (float64), got complex64: the imaginary part would be dropped"),
+    (([1, 2, 3], [0, 1, 0], np.array(["0", "1"])),
+     "t: expected numbers (float64), got an array of <U1 (numpy casts it to float64 only unsafely)"),
+    (([1, 2, 3], [1e200, 1e200, 0], [0, 1]),
+     "omega0[0]: 1e+200 is outside the angular velocity's range, ±1e+06 rad per time unit "
+     "(a scene's initial.angular_velocity)"),
+    (([1e300, 2e300, 3e300], [1e6, 1e6, 0], [0, 1]),
+     "moments (1e+300, 2e+300, 3e+300) and omega0 (1e+06, 1e+06, 0): the motion at t[0] = 0 "
+     "overflows a double (its energy ½ ω·Iω or |L| is beyond 1.8e308)"),
 ])
 def test_bad_input_raises_bookspin_error(bookspin, args, line):
     with pytest.raises(bookspin.Error) as raised:
@@ -121,3 +135,12 @@ def test_bad_input_raises_bookspin_error(bookspin, args, line):
     assert str(raised.value) == line
     assert isinstance(raised.value, ValueError)
     assert bookspin.exact_motion([1, 2, 3], [0, 1, 0], [0.0])["q"].shape == (1, 4)
+
+
+def test_an_array_too_large_to_copy_says_its_size(bookspin):
+    # 10^11 times broadcast from one value: float64 already, but its C-order copy needs 745 GiB.
+    t = np.broadcast_to(np.float64(1.0), (10**11,))
+    with pytest.raises(bookspin.Error) as raised:
+        bookspin.exact_motion([1, 2, 3], [0, 1, 0], t)
+    assert str(raised.value) == ("t: cannot copy the array into memory (100000000000 values, "
+                                 "745 GiB as float64): too large for this machine")

@@ -172,7 +172,10 @@ def test_bad_motions_raise_the_rows_line(bookspin, tmp_path):
     cases = [
         ((bad_t, q, w), f"flipcheck.judge: t[3]: t = {t3} is not a whole number of steps of dt = 0.05"),
         ((t[1:], q[1:], w[1:]), "flipcheck.judge: t[0]: the first row must be t = 0"),
-        ((t, q[:-1], w), "q: expected shape (50, 4), got (49, 4)"),
+        ((t, q[:-1], w), "q: 49 rows, but t and omega_world have 50: one row of each per time"),
+        ((t[:10], q, w), "t: 10 rows, but q and omega_world have 50: one row of each per time"),
+        ((t, q + 0j, w), "q: expected real numbers (float64), got complex128: the imaginary part "
+                         "would be dropped"),
         ((t, q, w[:, :2]), "omega_world: expected shape (50, 3), got (50, 2)"),
         ((t, np.zeros_like(q), w), "flipcheck.judge: q[0]: q is zero (qw = qx = qy = qz = 0): no orientation"),
         ((t[:0], q[:0], w[:0]), "flipcheck.judge: no rows (t is empty)"),
