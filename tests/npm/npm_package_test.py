@@ -10,12 +10,14 @@ network; there
   `bookspin flipcheck judge` of the same motion file in every column (numbers to 1e-12
   relative, or 1e-13 where a measure is round-off), and `npx flipcheck judge` prints the
   command's lines (the numbers to their printed digits, round-off aside) and writes its CSV;
+- every JavaScript engine mode the league runs (web/flipcheck-engines.mjs, eleven) in the three
+  shorter scenarios: `npx flipcheck judge` of its motion files as the command line's judge;
 - `npx flipcheck export` writes the command's scenario JSON byte for byte and its exact motion
   to 1e-12;
 - bad input: the command line's one line (an Error's message in the API, on stderr with exit
   status 2 from npx), and an unknown scenario exit 2.
 
-Skipped (exit 77) where em++, node, npm or web/node_modules/cannon-es is missing; a failure under
+Skipped (exit 77) where em++, node, npm or the league's packages (web/node_modules) are missing; a failure under
 CI=true. Usage: npm_package_test.py BOOKSPIN SOURCE_DIR BUILD_DIR"""
 import csv
 import io
@@ -67,7 +69,7 @@ def same_row(cli, got, what):
     for column, cell in cli.items():
         value = got[column]
         if column in ("scenario", "verdict", "failures", "motion"):
-            ok = value == cell
+            ok = (value or "") == cell
         elif cell == "":
             ok = value is None
         else:
@@ -111,6 +113,9 @@ def main(bookspin, source, build):
     installed = json.loads((cannon / "package.json").read_text())["version"]
     if installed != pinned:
         fail(f"web/node_modules has cannon-es {installed}, web/package-lock.json pins {pinned}")
+    if subprocess.run(["node", source / "web" / "flipcheck-engines.mjs", "--check"],
+                      capture_output=True).returncode != 0:
+        missing("the league's npm packages (web/node_modules)")
 
     made = run(["bash", source / "npm" / "build.sh", build])
     print(made.stdout.strip())
@@ -180,6 +185,37 @@ def main(bookspin, source, build):
             same_row(row, {k: (None if v == "" else v) for k, v in got.items()}, f"{name}: npx CSV")
             print(f"{name}: cannon-es {row['verdict']} ({row['failures']}): the package as the "
                   "command line")
+
+        # Every JavaScript engine the league runs (web/flipcheck-engines.mjs, from
+        # web/node_modules), in the three shorter scenarios: npx flipcheck judge of their
+        # motion files as the command line's judge of the same files.
+        league = ("mujoco-test-box", "book-intermediate-0.2", "symmetric-top")
+        exported = tmp / "league-export"
+        run([bookspin, "flipcheck", "export",
+             *[source / "scenes" / "flipcheck" / f"{n}.toml" for n in league], "-o", exported])
+        engines = tmp / "league-motions"
+        run(["node", source / "web" / "flipcheck-engines.mjs", engines,
+             *[exported / f"{n}.json" for n in league]])
+        for name in league:
+            files = sorted(engines.glob(f"{name}-*.csv"))
+            if len(files) < 11:
+                fail(f"{name}: the league's runner wrote {len(files)} motions, expected 11")
+            scene = source / "scenes" / "flipcheck" / f"{name}.toml"
+            cli = run([bookspin, "flipcheck", "judge", scene, *files, "-o", tmp / "league-cli"])
+            ours = run(npx + ["judge", name, *files, "-o", tmp / "league-npx"], env, cwd=project)
+            want = cli.stdout.replace(str(tmp / "league-cli"), str(tmp / "league-npx"))
+            if len(ours.stdout.splitlines()) != len(want.splitlines()) or not all(
+                    same_line(a, b) for a, b in zip(ours.stdout.splitlines(), want.splitlines())):
+                fail(f"{name}: npx flipcheck judge printed\n{ours.stdout}the command line\n{want}")
+            rows = read_csv((tmp / "league-cli" / f"{name}-judge.csv").read_text())
+            got = read_csv((tmp / "league-npx" / f"{name}-judge.csv").read_text())
+            if [r["motion"] for r in rows] != [r["motion"] for r in got]:
+                fail(f"{name}: npx judged {[r['motion'] for r in got]}")
+            for a, b in zip(rows, got):
+                same_row(a, {k: (None if v == "" else v) for k, v in b.items()},
+                         f"{name}: {a['motion']}")
+            verdicts = ", ".join(f"{r['motion'][len(name) + 1:-4]} {r['verdict']}" for r in rows)
+            print(f"{name}: {len(rows)} engine modes judged by npx as by the command line ({verdicts})")
 
         # export: the scenario JSON byte for byte, the exact motion to 1e-12.
         run([bookspin, "flipcheck", "export", source / "scenes" / "flipcheck" / "mujoco-test-box.toml",
