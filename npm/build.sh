@@ -18,13 +18,16 @@ command -v em++ >/dev/null || { echo "npm/build.sh: em++ not found (apt-get inst
 command -v npm >/dev/null || { echo "npm/build.sh: npm not found (scripts/install-deps.sh)" >&2; exit 3; }
 [ -x "$build/bookspin" ] || { echo "npm/build.sh: $build/bookspin not built" >&2; exit 3; }
 version="$(sed -n 's/^project(bookspin VERSION \([0-9.]*\).*/\1/p' "$root/CMakeLists.txt")"
-mkdir -p "$out/obj" "$out/include"
+# Boost reached through the page's build's include folder (web/build-wasm.sh), so that its
+# compiler lines, and ccache's keys, are the page's: a file compiled for one is not compiled again.
+include="$build/web/include"
+mkdir -p "$out/obj" "$include"
 export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
 if command -v ccache >/dev/null && [ -z "${EM_COMPILER_WRAPPER:-}" ]; then
   export EM_COMPILER_WRAPPER=ccache CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 fi
-ln -sfn /usr/include/boost "$out/include/boost"
-flags=(-std=c++20 -O3 -DNDEBUG -I"$root/src" -I/usr/include/eigen3 -isystem "$out/include"
+[ -L "$include/boost" ] || ln -sfn /usr/include/boost "$include/boost" 2>/dev/null || [ -L "$include/boost" ]
+flags=(-std=c++20 -O3 -DNDEBUG -I"$root/src" -I/usr/include/eigen3 -isystem "$include"
        -Wall -Wextra -fexceptions)
 # The same pure files the page's judge compiles (web/build-wasm.sh): no I/O, no engine, no scene
 # reader, no fit.
