@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 SCENES := $(wildcard scenes/*.toml)
 SWEEPS := $(wildcard sweeps/*.toml)
 
-.PHONY: all deps configure build bookspin figures test check render bench bench-explorer update-goldens clean
+.PHONY: all deps configure build bookspin wheel npm figures test check render bench bench-explorer update-goldens clean
 all: build
 
 deps:
@@ -21,6 +21,16 @@ build: configure
 # built by `make test` and `make bench`, so a first `make figures` does not wait for them.
 bookspin: configure
 	cmake --build $(BUILD) -j $(JOBS) --target bookspin
+
+# The Python wheel (docs/python.md, "The wheel"): BUILD/dist/bookspin-VERSION-cp311-*.whl, the
+# module with its stub and the flipcheck scenarios, packed offline; pip installs it anywhere.
+wheel: configure
+	cmake --build $(BUILD) -j $(JOBS) --target bookspin_wheel
+
+# The npm package flipcheck (docs/flipcheck.md, "In your engine's tests"): BUILD/npm/flipcheck-VERSION.tgz,
+# the judge and the exact motion compiled by emscripten (npm/build.sh).
+npm: bookspin
+	bash npm/build.sh $(BUILD)
 
 # The sweeps, the engines' accuracy report, the explorer page (where emscripten and npm are
 # installed), then every scene rendered and plotted and the gallery: scripts/figures.sh, which

@@ -76,7 +76,8 @@ def render(
 
 class flipcheck:  # a submodule: bookspin.flipcheck
     scenario_dir: str
-    """The folder scenarios are looked up in by name (the source tree's scenes/flipcheck/)."""
+    """The folder scenarios are looked up in by name: bookspin-scenarios/ beside the module, the
+    copy of scenes/flipcheck/ it carries."""
 
     @staticmethod
     def scenarios(directory: Optional[Union[str, os.PathLike[str]]] = None) -> list[str]: ...
@@ -97,3 +98,13 @@ class flipcheck:  # a submodule: bookspin.flipcheck
         motion: str = "motion",
     ) -> dict[str, Union[str, int, float, None]]:
         """t (N,), q (N, 4) w, x, y, z, omega_world (N, 3) -> the judgement CSV's row."""
+    @staticmethod
+    def assert_passes(
+        scenario: Union[str, os.PathLike[str]],
+        t: ArrayLike,
+        q: ArrayLike,
+        omega_world: ArrayLike,
+        directory: Optional[Union[str, os.PathLike[str]]] = None,
+        motion: str = "motion",
+    ) -> dict[str, Union[str, int, float, None]]:
+        """judge(...), or AssertionError with the command line's line (its reasons) on a fail."""

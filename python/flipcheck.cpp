@@ -1,10 +1,14 @@
 // bookspin.flipcheck: the conformance kit (docs/flipcheck.md) from Python. Its scenarios are
-// the scene files of a folder (scenes/flipcheck/ of the source tree the module was built from,
-// unless told another); export gives a scenario's start and its exact motion as jobs makes them
-// for `bookspin flipcheck export`, judge the judgement analysis makes for `bookspin flipcheck
-// judge`, of a motion given as arrays (jobs::motion_from_rows: the motion file's rules).
+// the scene files of a folder (the copy of scenes/flipcheck/ the module carries beside itself,
+// bookspin-scenarios/, unless told another); export gives a scenario's start and its exact motion
+// as jobs makes them for `bookspin flipcheck export`, judge the judgement analysis makes for
+// `bookspin flipcheck judge`, of a motion given as arrays (jobs::motion_from_rows: the motion
+// file's rules).
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -64,11 +68,34 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
   return scene::parse_scene(file);
 }
 
+/// The scenarios the module carries: the folder bookspin-scenarios/ beside the module's own
+/// file (BUILD/python/ as CMake builds it, site-packages/ where pip installed the wheel), so
+/// that it needs nothing from the source tree it was built from.
+std::string carried_scenario_dir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&carried_scenario_dir), &info) == 0 ||
+      info.dli_fname == nullptr)
+    throw std::runtime_error("flipcheck: cannot find the module's own file (dladdr)");
+  return (fs::path(info.dli_fname).parent_path() / "bookspin-scenarios").string();
+}
+
+/// Whether a judgement's verdict is a pass; otherwise AssertionError with its reasons.
+const char* kAssertPassesDoc =
+    R"(assert_passes(scenario, t, q, omega_world, directory=None, motion="motion") -> dict
+
+judge(...) for a test suite (pytest): returns the judgement (judge's dict) when its verdict is
+"pass", and otherwise raises AssertionError whose message is the line `bookspin flipcheck
+judge` prints for the same motion, its reasons in words, the motion's name where the command
+line names the file:
+  book-intermediate-0.05 motion: FAIL (energy drift 0.484; |L| drift 0.218; orientation
+  error 1.66 rad): turn-overs 6/6, energy drift 0.484, |L| drift 0.218, orientation error ...
+Arguments as judge's; bad input raises bookspin.Error, as there.)";
+
 const char* kScenariosDoc = R"(scenarios(directory=None) -> list[str]
 
 The names of the conformance scenarios (docs/flipcheck.md, "The scenarios"): the stems of the
 .toml files of `directory`, sorted. directory=None reads bookspin.flipcheck.scenario_dir, the
-source tree's scenes/flipcheck/ the module was built from (set it to use another folder).)";
+copy of scenes/flipcheck/ the module carries beside itself (set it to use another folder).)";
 
 py::list scenarios(const py::object& directory) {
   py::list out;
@@ -143,9 +170,17 @@ py::object cell_value(const CsvCell& cell) {
   return py::str(text);
 }
 
-py::dict judge(const py::object& scenario_input, const py::object& t_arg, const py::object& q_arg,
-               const py::object& omega_arg, const py::object& directory,
-               const std::string& motion_name) {
+/// A motion judged: the judgement CSV's row as a dict, and the verdict with its line
+/// (analysis::verdict_line, what `bookspin flipcheck judge` prints for it).
+struct Judged {
+  py::dict row;
+  bool pass = false;
+  std::string line;
+};
+
+Judged judged(const py::object& scenario_input, const py::object& t_arg, const py::object& q_arg,
+              const py::object& omega_arg, const py::object& directory,
+              const std::string& motion_name) {
   const scene::Scene scene = scenario_scene(scenario_input, directory);
   const analysis::Scenario scenario = analysis::scenario_of(scene);
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
@@ -153,6 +188,7 @@ py::dict judge(const py::object& scenario_input, const py::object& t_arg, const 
   const std::vector<double> omega = matrix_arg(omega_arg, "omega_world", -1, 3);
   same_rows({{"t", t.size()}, {"q", q.size() / 4}, {"omega_world", omega.size() / 3}});
   CsvTable table;
+  Judged out;
   {
     py::gil_scoped_release release;
     std::vector<std::array<double, 8>> rows(t.size());
@@ -163,11 +199,29 @@ py::dict judge(const py::object& scenario_input, const py::object& t_arg, const 
         rows, jobs::OmegaFrame::world, "flipcheck.judge", scenario.dt, scenario.steps);
     const analysis::Conformance result = analysis::judge_motion(scenario, motion.rows);
     table = analysis::judgement_table(scenario, {{{}, motion_name, result}});
+    out.pass = result.pass();
+    out.line = scenario.name + " " + motion_name + ": " + analysis::verdict_line(result);
   }
-  py::dict out;
   for (std::size_t c = 0; c < table.columns.size(); ++c)
-    out[py::str(table.columns[c])] = cell_value(table.rows.at(0).at(c));
+    out.row[py::str(table.columns[c])] = cell_value(table.rows.at(0).at(c));
   return out;
+}
+
+py::dict judge(const py::object& scenario_input, const py::object& t_arg, const py::object& q_arg,
+               const py::object& omega_arg, const py::object& directory,
+               const std::string& motion_name) {
+  return judged(scenario_input, t_arg, q_arg, omega_arg, directory, motion_name).row;
+}
+
+py::dict assert_passes(const py::object& scenario_input, const py::object& t_arg,
+                       const py::object& q_arg, const py::object& omega_arg,
+                       const py::object& directory, const std::string& motion_name) {
+  Judged j = judged(scenario_input, t_arg, q_arg, omega_arg, directory, motion_name);
+  if (!j.pass) {
+    PyErr_SetString(PyExc_AssertionError, j.line.c_str());
+    throw py::error_already_set();
+  }
+  return j.row;
 }
 
 }  // namespace
@@ -177,13 +231,16 @@ void add_flipcheck(py::module_& m) {
       "flipcheck",
       "The conformance kit (docs/flipcheck.md): scenarios, each one's start and exact motion, "
       "and the judgement of any engine's motion against it, as `bookspin flipcheck` gives them.");
-  flipcheck.attr("scenario_dir") = std::string(BOOKSPIN_SCENARIO_DIR);
+  flipcheck.attr("scenario_dir") = carried_scenario_dir();
   flipcheck.def("scenarios", &scenarios, py::arg("directory") = py::none(), kScenariosDoc);
   flipcheck.def("export", &export_scenario, py::arg("scenario"), py::arg("directory") = py::none(),
                 kExportDoc);
   flipcheck.def("judge", &judge, py::arg("scenario"), py::arg("t"), py::arg("q"),
                 py::arg("omega_world"), py::arg("directory") = py::none(),
                 py::arg("motion") = "motion", kJudgeDoc);
+  flipcheck.def("assert_passes", &assert_passes, py::arg("scenario"), py::arg("t"), py::arg("q"),
+                py::arg("omega_world"), py::arg("directory") = py::none(),
+                py::arg("motion") = "motion", kAssertPassesDoc);
 }
 
 }  // namespace bookspin::python

@@ -5,6 +5,7 @@ the JavaScript engines' motions as `make figures` writes them (web/flipcheck-eng
 import json
 import math
 import os
+import pathlib
 import shutil
 import subprocess
 
@@ -22,7 +23,11 @@ WHOLE = ("stride", "last_step", "flips", "flips_exact", "stable_spin")
 
 def test_scenarios_are_the_folders_files(bookspin, tmp_path):
     assert bookspin.flipcheck.scenarios() == SCENARIOS
-    assert bookspin.flipcheck.scenario_dir == str(SCENARIO_DIR)
+    # the copy the module carries beside itself, not the source tree's folder
+    carried = pathlib.Path(bookspin.flipcheck.scenario_dir)
+    assert carried == pathlib.Path(bookspin.__file__).parent / "bookspin-scenarios"
+    assert {p.name: p.read_bytes() for p in carried.iterdir()} == \
+           {p.name: p.read_bytes() for p in SCENARIO_DIR.glob("*.toml")}
     (tmp_path / "b.toml").write_text("")
     (tmp_path / "a.toml").write_text("")
     (tmp_path / "notes.txt").write_text("")
@@ -151,6 +156,24 @@ def test_numpy_euler_fails_and_rk4_passes(bookspin, tmp_path):
     assert "energy" in verdicts["euler"]["failures"]
     assert verdicts["rk4"]["verdict"] == "pass", verdicts["rk4"]["failures"]
     assert verdicts["rk4"]["flips"] == verdicts["rk4"]["flips_exact"] > 0
+
+
+def test_assert_passes_raises_the_command_lines_line(bookspin, tmp_path):
+    name = "book-intermediate-0.05"
+    start, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
+    assert bookspin.flipcheck.assert_passes(name, t, q, w) == bookspin.flipcheck.judge(name, t, q, w)
+    t, q, w = integrate(start, euler_step)
+    write_motion_csv(tmp_path / "euler.csv", t, q, w)
+    out, _ = run_cli("flipcheck", "judge", SCENARIO_DIR / f"{name}.toml", tmp_path / "euler.csv",
+                     "-o", tmp_path / "out")
+    line = next(l for l in out.splitlines() if "FAIL" in l)
+    with pytest.raises(AssertionError) as raised:
+        bookspin.flipcheck.assert_passes(name, t, q, w, motion="euler")
+    assert str(raised.value) == line.replace(str(tmp_path / "euler.csv"), "euler")
+    assert str(raised.value).startswith(f"{name} euler: FAIL (energy drift 0.48")
+    with pytest.raises(bookspin.Error, match="omega_world"):
+        bookspin.flipcheck.assert_passes(name, t, q, w[:, :2])
 
 
 def test_a_scenario_by_path_and_from_another_folder(bookspin, tmp_path):

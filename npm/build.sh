@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Makes the npm package `flipcheck` (docs/flipcheck.md, "In your engine's tests"):
+# BUILD/npm/flipcheck-VERSION.tgz, by `npm pack` of BUILD/npm/package/, which holds
+#   flipcheck-wasm.cjs   the judge and the exact motion compiled by Debian's emscripten, the
+#                        WebAssembly inside (-sSINGLE_FILE): src/physics, the conformance kit's
+#                        pure files as web/build-wasm.sh compiles them for the page, and
+#                        npm/flipcheck_bindings.cpp
+#   scenarios/*.json     the seven scenarios as `bookspin flipcheck export` writes them
+#   index.mjs, index.d.ts, cli.mjs, README.md, package.json   from npm/package/
+# Usage: npm/build.sh BUILD_DIR   (needs BUILD_DIR/bookspin; objects cached in BUILD/npm/obj)
+# Exit 3 where em++ or npm is missing.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(dirname "$here")"
+build="$(cd "${1:?usage: npm/build.sh BUILD_DIR}" && pwd)"
+out="$build/npm"
+command -v em++ >/dev/null || { echo "npm/build.sh: em++ not found (apt-get install emscripten)" >&2; exit 3; }
+command -v npm >/dev/null || { echo "npm/build.sh: npm not found (scripts/install-deps.sh)" >&2; exit 3; }
+[ -x "$build/bookspin" ] || { echo "npm/build.sh: $build/bookspin not built" >&2; exit 3; }
+version="$(sed -n 's/^project(bookspin VERSION \([0-9.]*\).*/\1/p' "$root/CMakeLists.txt")"
+# Boost reached through the page's build's include folder (web/build-wasm.sh), so that its
+# compiler lines, and ccache's keys, are the page's: a file compiled for one is not compiled again.
+include="$build/web/include"
+mkdir -p "$out/obj" "$include"
+export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
+if command -v ccache >/dev/null && [ -z "${EM_COMPILER_WRAPPER:-}" ]; then
+  export EM_COMPILER_WRAPPER=ccache CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
+fi
+[ -L "$include/boost" ] || ln -sfn /usr/include/boost "$include/boost" 2>/dev/null || [ -L "$include/boost" ]
+flags=(-std=c++20 -O3 -DNDEBUG -I"$root/src" -I/usr/include/eigen3 -isystem "$include"
+       -Wall -Wextra -fexceptions)
+# The same pure files the page's judge compiles (web/build-wasm.sh): no I/O, no engine, no scene
+# reader, no fit.
+sources=("$root"/src/physics/*.cpp "$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp"
+         "$root/src/jobs/motion_csv.cpp" "$root/src/jobs/exact_motion.cpp" "$here/flipcheck_bindings.cpp")
+for name in errors number_text csv_writer json_writer json_string text_lines; do
+  sources+=("$root/src/common/$name.cpp")
+done
+objs=()
+pids=()
+for src in "${sources[@]}"; do
+  obj="$out/obj/$(basename "$(dirname "$src")")-$(basename "${src%.cpp}").o"
+  objs+=("$obj")
+  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis" \
+       "$root/src/jobs" "$root/src/common" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
+    em++ "${flags[@]}" -c "$src" -o "$obj" &
+    pids+=($!)
+    if [ ${#pids[@]} -ge "${JOBS:-2}" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
+  fi
+done
+for p in "${pids[@]}"; do wait "$p"; done
+package="$out/package"
+rm -rf "$package" "$out/export"
+mkdir -p "$package/scenarios"
+em++ -O3 -fexceptions --bind "${objs[@]}" -o "$package/flipcheck-wasm.cjs" \
+  -sSINGLE_FILE=1 -sMODULARIZE=1 -sEXPORT_NAME=FlipcheckWasm -sALLOW_MEMORY_GROWTH=1 \
+  -sENVIRONMENT=node -sDISABLE_EXCEPTION_CATCHING=0
+# The scenarios as the command line exports them (their JSON only: the exact motion is computed).
+"$build/bookspin" flipcheck export "$root"/scenes/flipcheck/*.toml -o "$out/export" >/dev/null
+cp "$out/export"/*.json "$package/scenarios/"
+for f in index.mjs index.d.ts cli.mjs README.md; do cp "$here/package/$f" "$package/"; done
+sed "s/@VERSION@/$version/" "$here/package/package.json.in" >"$package/package.json"
+rm -f "$out"/flipcheck-*.tgz
+(cd "$package" && npm pack --pack-destination "$out" --silent >/dev/null)
+tgz="$out/flipcheck-$version.tgz"
+[ -f "$tgz" ] || { echo "npm/build.sh: npm pack made no $tgz" >&2; exit 1; }
+echo "npm/build.sh: $tgz ($(stat -c %s "$tgz") bytes)"

@@ -1,0 +1,189 @@
+// embind bindings of the conformance kit for the npm package `flipcheck` (docs/flipcheck.md, "In
+// your engine's tests"): `bookspin flipcheck judge` and `export` with the same code compiled
+// unchanged, as the explorer page compiles it (web/judge_bindings.cpp): the motion CSV's parser
+// (src/jobs/motion_csv.cpp), the judgement and its table (src/analysis/judgement.cpp), the exact
+// motion and the scenario file (src/jobs/exact_motion.cpp). This file only translates.
+//
+// A scenario comes as the JSON `bookspin flipcheck export` writes (the package carries the seven),
+// parsed: {scenario, mass, principal_moments, omega0_body, dt, steps, ...}. Its start is
+// omega0_body, the jiggle already in it: with no jiggle, analysis::start_omega gives it back to
+// the last bit for every carried scenario (I ω / I = ω there), so the judgement is the command
+// line's to the last digit (tests/npm/npm_package_test.py).
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "analysis/judgement.hpp"
+#include "common/csv_writer.hpp"
+#include "common/errors.hpp"
+#include "jobs/exact_motion.hpp"
+#include "jobs/motion_csv.hpp"
+
+namespace {
+
+using bookspin::InputError;
+using bookspin::analysis::Scenario;
+using emscripten::val;
+
+/// f()'s answer; {error: the one line} for an InputError (what the command line prints after
+/// "bookspin: error: "), {error: "internal error: …"} for any other exception.
+template <typename F>
+val guarded(F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    val out = val::object();
+    out.set("error", std::string(e.what()));
+    return out;
+  } catch (const std::exception& e) {
+    val out = val::object();
+    out.set("error", std::string("internal error: ") + e.what());
+    return out;
+  }
+}
+
+Eigen::Vector3d vector3(const val& json, const char* key, const std::string& name) {
+  const std::vector<double> v = emscripten::convertJSArrayToNumberVector<double>(json[key]);
+  if (v.size() != 3) throw InputError(name + ": " + key + ": expected 3 numbers");
+  return {v[0], v[1], v[2]};
+}
+
+/// The scenario of an exported scenario JSON (see the head of this file).
+Scenario scenario_of(const val& json) {
+  Scenario s;
+  s.name = json["scenario"].as<std::string>();
+  s.body.moments = vector3(json, "principal_moments", s.name);
+  s.body.cage.mass = json["mass"].as<double>();
+  s.initial.omega0_body = vector3(json, "omega0_body", s.name);
+  s.initial.jiggle = 0.0;
+  s.dt = json["dt"].as<double>();
+  s.steps = static_cast<long long>(json["steps"].as<double>());
+  for (int i = 0; i < 3; ++i)
+    if (!(std::isfinite(s.body.moments[i]) && s.body.moments[i] > 0.0))
+      throw InputError(s.name + ": principal_moments: each must be finite and > 0");
+  if (!s.initial.omega0_body.allFinite() || s.initial.omega0_body.isZero())
+    throw InputError(s.name + ": flipcheck: the body is at rest: nothing to judge");
+  if (!(s.dt > 0.0) || s.steps < 1)
+    throw InputError(s.name + ": flipcheck: a scenario needs dt > 0 and at least one step");
+  return s;
+}
+
+/// A judged motion as JavaScript: {columns, cells (the judgement CSV's row as the command line
+/// writes it, as text), csv (its header and that row, as the command line writes them), line
+/// (analysis::verdict_line), failures (one phrase each), pass}.
+val judged(const Scenario& s, const bookspin::jobs::MotionFile& motion, const std::string& name) {
+  const bookspin::analysis::Conformance c = bookspin::analysis::judge_motion(s, motion.rows);
+  const bookspin::CsvTable table = bookspin::analysis::judgement_table(s, {{name, name, c}});
+  val columns = val::array(), cells = val::array(), failures = val::array();
+  for (const std::string& column : table.columns) columns.call<void>("push", column);
+  const std::string csv = bookspin::csv_text(table, "flipcheck judge CSV");
+  const std::size_t row = csv.find('\n') + 1;
+  for (const std::string& cell : bookspin::csv_cells(csv.substr(row, csv.size() - row - 1)))
+    cells.call<void>("push", cell);
+  for (const std::string& f : c.failures) failures.call<void>("push", f);
+  val out = val::object();
+  out.set("columns", columns);
+  out.set("cells", cells);
+  out.set("csv", csv);
+  out.set("line", bookspin::analysis::verdict_line(c));
+  out.set("failures", failures);
+  out.set("pass", c.pass());
+  return out;
+}
+
+/// `bookspin flipcheck judge` of the motion CSV `text`: `file` names it in messages (the path as
+/// given), `name` in the judgement (the file's name).
+val judge_csv(const val& json, const std::string& text, const std::string& file,
+              const std::string& name) {
+  return guarded([&] {
+    const Scenario s = scenario_of(json);
+    return judged(s, bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps), name);
+  });
+}
+
+/// The same of a motion given as flat arrays: t (N), q (4N: w, x, y, z), ω world (3N);
+/// `what` names them in messages, `name` is the judgement's motion.
+val judge_arrays(const val& json, const val& t_js, const val& q_js, const val& w_js,
+                 const std::string& what, const std::string& name) {
+  return guarded([&] {
+    const Scenario s = scenario_of(json);
+    const std::vector<double> t = emscripten::convertJSArrayToNumberVector<double>(t_js);
+    const std::vector<double> q = emscripten::convertJSArrayToNumberVector<double>(q_js);
+    const std::vector<double> w = emscripten::convertJSArrayToNumberVector<double>(w_js);
+    const std::size_t n = t.size();
+    if (q.size() != 4 * n)
+      throw InputError(what + ": q: expected " + std::to_string(4 * n) + " numbers (N×4, N = " +
+                       std::to_string(n) + " rows of t), got " + std::to_string(q.size()));
+    if (w.size() != 3 * n)
+      throw InputError(what + ": omegaWorld: expected " + std::to_string(3 * n) +
+                       " numbers (N×3, N = " + std::to_string(n) + " rows of t), got " +
+                       std::to_string(w.size()));
+    std::vector<std::array<double, 8>> rows(n);
+    for (std::size_t i = 0; i < n; ++i)
+      rows[i] = {t[i],         q[4 * i], q[4 * i + 1], q[4 * i + 2],
+                 q[4 * i + 3], w[3 * i], w[3 * i + 1], w[3 * i + 2]};
+    return judged(s,
+                  bookspin::jobs::motion_from_rows(rows, bookspin::jobs::OmegaFrame::world, what,
+                                                   s.dt, s.steps),
+                  name);
+  });
+}
+
+val float64_array(const std::vector<double>& values) {
+  const val view(emscripten::typed_memory_view(values.size(), values.data()));
+  return val::global("Float64Array").new_(view);  // a copy, out of the module's memory
+}
+
+/// The exact motion at every step n = 0 … steps: {t (N), q (4N), omegaBody, omegaWorld, L (3N),
+/// E (N)}, the rows of `flipcheck export`'s CSV.
+val exact_motion(const val& json) {
+  return guarded([&] {
+    const bookspin::jobs::ExactMotion m = bookspin::jobs::exact_motion(scenario_of(json));
+    const std::size_t n = m.rows.size();
+    std::vector<double> t(n), q(4 * n), wb(3 * n), ww(3 * n), L(3 * n), E(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const bookspin::jobs::ExactMotionRow& r = m.rows[i];
+      t[i] = r.t;
+      for (int k = 0; k < 4; ++k) q[4 * i + k] = r.q[k];
+      for (int k = 0; k < 3; ++k) {
+        wb[3 * i + k] = r.omega_body[k];
+        ww[3 * i + k] = r.omega_world[k];
+        L[3 * i + k] = r.L[k];
+      }
+      E[i] = r.E;
+    }
+    val out = val::object();
+    out.set("t", float64_array(t));
+    out.set("q", float64_array(q));
+    out.set("omegaBody", float64_array(wb));
+    out.set("omegaWorld", float64_array(ww));
+    out.set("L", float64_array(L));
+    out.set("E", float64_array(E));
+    return out;
+  });
+}
+
+/// The bytes of the two files `bookspin flipcheck export` writes: {json, csv}.
+val export_files(const val& json) {
+  return guarded([&] {
+    const bookspin::jobs::ExportFiles files =
+        bookspin::jobs::export_files(bookspin::jobs::exact_motion(scenario_of(json)));
+    val out = val::object();
+    out.set("json", files.json);
+    out.set("csv", files.csv);
+    return out;
+  });
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(flipcheck_npm) {
+  emscripten::function("judgeCsv", &judge_csv);
+  emscripten::function("judgeArrays", &judge_arrays);
+  emscripten::function("exactMotion", &exact_motion);
+  emscripten::function("exportFiles", &export_files);
+}

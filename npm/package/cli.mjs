@@ -1,0 +1,135 @@
+#!/usr/bin/env node
+// npx flipcheck judge SCENARIO MOTION.csv… [-o DIR]
+// npx flipcheck export SCENARIO… [-o DIR]
+// `bookspin flipcheck judge` and `export` with the same output and exit statuses (0; 2 for bad
+// input, its one line on stderr; 1 when an output cannot be written; 70 for a bug). SCENARIO is
+// a scenario's name (flipcheck's scenarios()) or a scenario JSON that `export` wrote. Unlike the
+// command line it keeps no manifest: it judges and writes every time.
+import { mkdirSync, readFileSync, renameSync, statSync, writeFileSync } from "node:fs";
+import { basename } from "node:path";
+import { exportFiles, judgeCsv, scenario, scenarios } from "./index.mjs";
+
+const USAGE = `usage: flipcheck judge SCENARIO MOTION.csv... [-o DIR]
+       flipcheck export SCENARIO... [-o DIR]
+SCENARIO: a scenario's name (${scenarios().join(", ")}) or a scenario JSON export wrote.
+DIR: the output directory (default out/flipcheck).`;
+
+class InputError extends Error {}
+class OutputError extends Error {}
+
+/** `dir`/`name` as std::filesystem::path's operator/ joins them. */
+function join(dir, name) {
+  return dir.endsWith("/") ? dir + name : `${dir}/${name}`;
+}
+
+/** The reason a file cannot be read, as bookspin's read_text_file() words it. */
+function readText(path, what) {
+  try {
+    if (statSync(path).isDirectory()) throw new InputError(`${path}: cannot read ${what}: is a directory`);
+    return readFileSync(path, "utf8");
+  } catch (e) {
+    if (e instanceof InputError) throw e;
+    const reason = e.code === "ENOENT" ? "no such file" : e.code === "EACCES" ? "Permission denied" : e.message;
+    throw new InputError(`${path}: cannot read ${what}: ${reason}`);
+  }
+}
+
+/** A scenario by name, or the JSON file export wrote. */
+function scenarioArg(arg) {
+  if (scenarios().includes(arg)) return scenario(arg);
+  if (arg.endsWith(".json") || arg.includes("/")) {
+    const text = readText(arg, "the scenario file");
+    try {
+      return JSON.parse(text);
+    } catch (e) {
+      throw new InputError(`${arg}: not valid JSON: ${e.message}`);
+    }
+  }
+  throw new InputError(`flipcheck: no scenario "${arg}" (there: ${scenarios().join(", ")})`);
+}
+
+/** Writes `text` to `path` whole: a temporary name, then renamed into place. */
+function writeWhole(path, text) {
+  const temporary = join(path.slice(0, path.length - basename(path).length) || ".", `.${basename(path)}.tmp`);
+  try {
+    writeFileSync(temporary, text);
+    renameSync(temporary, path);
+  } catch (e) {
+    throw new OutputError(`cannot write "${path}": ${e.message}`);
+  }
+}
+
+function makeDir(dir) {
+  try {
+    mkdirSync(dir, { recursive: true });
+  } catch (e) {
+    throw new OutputError(`cannot write "${dir}": ${e.message}`);
+  }
+}
+
+function parse(args) {
+  const positional = [];
+  let out = "out/flipcheck";
+  for (let i = 0; i < args.length; ++i) {
+    const a = args[i];
+    if (a === "-o" || a === "--out") {
+      if (i + 1 >= args.length) throw new InputError(`${a}: expected a directory`);
+      out = args[++i];
+    } else if (a.startsWith("--out=")) out = a.slice("--out=".length);
+    else if (a === "-h" || a === "--help") {
+      console.log(USAGE);
+      process.exit(0);
+    } else if (a.startsWith("-") && a !== "-") throw new InputError(`${a}: unknown option (${USAGE.split("\n")[0]})`);
+    else positional.push(a);
+  }
+  return { positional, out };
+}
+
+function judgeCommand(args) {
+  const { positional, out } = parse(args);
+  if (positional.length < 1) throw new InputError("flipcheck judge: SCENARIO is required");
+  const [scenarioPath, ...files] = positional;
+  const spec = scenarioArg(scenarioPath);
+  if (!files.length) throw new InputError("flipcheck judge: nothing to judge: give MOTION files");
+  // Every file read and judged before anything is written: a bad one is its one line.
+  const judged = files.map((file) => judgeCsv(spec, readText(file, "the motion file"), { file, motion: basename(file) }));
+  const name = spec.scenario;
+  const lines = judged.map((j) => j.csv.split("\n"));
+  const csv = [lines[0][0], ...lines.map((l) => l[1])].join("\n") + "\n";
+  const target = join(out, `${name}-judge.csv`);
+  makeDir(out);
+  writeWhole(target, csv);
+  judged.forEach((j, i) => console.log(`${name} ${files[i]}: ${j.line}`));
+  console.log(`wrote: ${target}`);
+}
+
+function exportCommand(args) {
+  const { positional, out } = parse(args);
+  if (positional.length < 1) throw new InputError("flipcheck export: SCENARIO is required");
+  const specs = positional.map(scenarioArg);
+  for (const spec of specs) {
+    const files = exportFiles(spec);
+    const json = join(out, `${spec.scenario}.json`);
+    const csv = join(out, `${spec.scenario}-exact.csv`);
+    makeDir(out);
+    writeWhole(json, files.json);
+    writeWhole(csv, files.csv);
+    console.log(`exported: ${json}, ${csv}`);
+  }
+}
+
+const [command, ...rest] = process.argv.slice(2);
+try {
+  if (command === "judge") judgeCommand(rest);
+  else if (command === "export") exportCommand(rest);
+  else if (command === "-h" || command === "--help") console.log(USAGE);
+  else throw new InputError(command === undefined ? `a command is required\n${USAGE}` : `unknown command "${command}"\n${USAGE}`);
+} catch (e) {
+  if (e instanceof OutputError) {
+    console.error(`flipcheck: error: ${e.message}`);
+    process.exit(1);
+  }
+  const internal = !(e instanceof InputError) && !(e instanceof Error && e.constructor === Error);
+  console.error(`flipcheck: ${internal ? "internal error" : "error"}: ${e.message}`);
+  process.exit(internal ? 70 : 2);
+}

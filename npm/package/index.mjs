@@ -1,0 +1,84 @@
+// flipcheck: does your engine get the flip right? bookspin's conformance kit for a free rigid
+// body's motion, as an ES module (index.d.ts has the types). The judge and the exact motion are
+// bookspin's own C++ compiled to WebAssembly (flipcheck-wasm.cjs); the scenarios are the JSON
+// `bookspin flipcheck export` writes (scenarios/). Bad input throws an Error whose message is
+// the line `bookspin flipcheck` prints after "bookspin: error: ".
+import { readFileSync, readdirSync } from "node:fs";
+import createWasm from "./flipcheck-wasm.cjs";
+
+const wasm = await createWasm();
+const scenarioFolder = new URL("./scenarios/", import.meta.url);
+const NAMES = readdirSync(scenarioFolder)
+  .filter((f) => f.endsWith(".json"))
+  .map((f) => f.slice(0, -".json".length))
+  .sort();
+const TEXT_COLUMNS = new Set(["scenario", "motion", "verdict", "failures"]);
+
+/** The wasm's answer, or its error thrown as an Error with the command line's one line. */
+function answer(result) {
+  if (result && result.error !== undefined) throw new Error(result.error);
+  return result;
+}
+
+/** The names of the seven scenarios, sorted. */
+export function scenarios() {
+  return [...NAMES];
+}
+
+/** A scenario's JSON as `bookspin flipcheck export` writes it (OUT/<scenario>.json), parsed. */
+export function scenario(name) {
+  if (typeof name !== "string" || !NAMES.includes(name))
+    throw new Error(`flipcheck: no scenario "${name}" (there: ${NAMES.join(", ")})`);
+  return JSON.parse(readFileSync(new URL(`${name}.json`, scenarioFolder), "utf8"));
+}
+
+/** A scenario given by name, or as an exported scenario JSON (an object), as the wasm reads it. */
+function spec(nameOrJson) {
+  return typeof nameOrJson === "object" && nameOrJson !== null ? nameOrJson : scenario(nameOrJson);
+}
+
+/** The exact motion at every step n = 0 … steps: t (N), q (N×4 w, x, y, z, body → world),
+ * omegaBody, omegaWorld, L (N×3, L in the world frame), E (N): Float64Arrays, row-major. */
+export function exactMotion(name) {
+  return answer(wasm.exactMotion(spec(name)));
+}
+
+/** The two files `bookspin flipcheck export` writes, byte for byte: {json, csv}. */
+export function exportFiles(name) {
+  return answer(wasm.exportFiles(spec(name)));
+}
+
+/** The judgement CSV's row as an object: each column (numbers as numbers, null for an empty
+ * cell), then pass, reasons (the failures, one phrase each) and line (what the command prints). */
+function judgement(result) {
+  const out = {};
+  result.columns.forEach((column, i) => {
+    const cell = result.cells[i];
+    out[column] = TEXT_COLUMNS.has(column) ? cell : cell === "" ? null : Number(cell);
+  });
+  out.pass = result.pass;
+  out.reasons = [...result.failures];
+  out.line = result.line;
+  Object.defineProperty(out, "csv", { value: result.csv, enumerable: false });
+  return out;
+}
+
+/** A flat Float64Array of an array-like of numbers, or of rows (arrays) of numbers. */
+function flat(values) {
+  if (values === undefined || values === null) return new Float64Array(0);
+  if (ArrayBuffer.isView(values)) return Float64Array.from(values);
+  const list = Array.from(values);
+  return Float64Array.from(list.length && typeof list[0] === "object" ? list.flatMap((r) => Array.from(r)) : list);
+}
+
+/** Judges a motion given as arrays: t (N), q (N×4: w, x, y, z, body → world, any norm but 0,
+ * either sign), omegaWorld (N×3, rad per time unit): flat, row-major, or as rows. */
+export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {}) {
+  return judgement(answer(wasm.judgeArrays(spec(name), flat(t), flat(q), flat(omegaWorld), "judge", motion)));
+}
+
+/** Judges a motion CSV's text, as `bookspin flipcheck judge SCENARIO FILE` judges the file
+ * (`file` names it in messages and in the judgement's motion column). */
+export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}) {
+  return judgement(answer(wasm.judgeCsv(spec(name), String(text), file, motion)));
+}

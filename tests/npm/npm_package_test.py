@@ -1,0 +1,274 @@
+"""The npm package `flipcheck` as an engine's test suite meets it (docs/flipcheck.md, "In your
+engine's tests"): npm/build.sh makes BUILD/npm/flipcheck-VERSION.tgz (under 3 MB, no runtime
+dependencies); an empty temporary project gets it and cannon-es (packed from web/node_modules,
+the version web/package-lock.json pins) installed offline, with an empty npm cache and no
+network; there
+
+- examples/flipcheck-npm/ runs under node's own test runner (`node --test`): cannon-es fails
+  every scenario and never turns the book over;
+- cannon-es' motion in every scenario, judged by the package as arrays and as CSV text, equals
+  `bookspin flipcheck judge` of the same motion file in every column (numbers to 1e-12
+  relative, or 1e-13 where a measure is round-off), and `npx flipcheck judge` prints the
+  command's lines (the numbers to their printed digits, round-off aside) and writes its CSV;
+- every JavaScript engine mode the league runs (web/flipcheck-engines.mjs, eleven) in the three
+  shorter scenarios: `npx flipcheck judge` of its motion files as the command line's judge;
+- `npx flipcheck export` writes the command's scenario JSON byte for byte and its exact motion
+  to 1e-12;
+- bad input: the command line's one line (an Error's message in the API, on stderr with exit
+  status 2 from npx), and an unknown scenario exit 2.
+
+Skipped (exit 77) where em++, node, npm or the league's packages (web/node_modules) are missing; a failure under
+CI=true. Usage: npm_package_test.py BOOKSPIN SOURCE_DIR BUILD_DIR"""
+import csv
+import io
+import json
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tarfile
+import tempfile
+
+SKIP = 77
+
+
+def missing(what):
+    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
+        print(f"FAIL: {what} (CI=true: this test must run; scripts/install-deps.sh installs it)")
+        sys.exit(1)
+    print(f"SKIP: {what} (scripts/install-deps.sh installs it)")
+    sys.exit(SKIP)
+
+
+def fail(message):
+    print(f"FAIL: {message}")
+    sys.exit(1)
+
+
+def run(args, env=None, cwd=None, expect=0):
+    done = subprocess.run([str(a) for a in args], env=env, cwd=cwd, capture_output=True,
+                          text=True, timeout=600)
+    if done.returncode != expect:
+        fail(f"{args} exited {done.returncode}, expected {expect}:\n{done.stdout}{done.stderr}")
+    return done
+
+
+def read_csv(text):
+    rows = list(csv.reader(io.StringIO(text)))
+    return [dict(zip(rows[0], r)) for r in rows[1:]]
+
+
+def same_number(a, b):
+    return a == b or abs(a - b) <= max(1e-12 * max(abs(a), abs(b)), 1e-13)
+
+
+def same_row(cli, got, what):
+    """A judgement row of the command line's CSV (text cells) against the package's object."""
+    for column, cell in cli.items():
+        value = got[column]
+        if column in ("scenario", "verdict", "failures", "motion"):
+            ok = (value or "") == cell
+        elif cell == "":
+            ok = value is None
+        else:
+            ok = same_number(float(cell), float(value))
+        if not ok:
+            fail(f"{what}: {column}: the command line has {cell!r}, the package {value!r}")
+
+
+NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?")
+
+
+def same_line(a, b):
+    """The lines the command prints: the words equal, each number to its 3 significant digits,
+    or both round-off (below 1e-12: an engine that keeps E to round-off, natively and in
+    WebAssembly, rounds differently)."""
+    if NUMBER.sub("#", a) != NUMBER.sub("#", b):
+        return False
+    for x, y in zip(NUMBER.findall(a), NUMBER.findall(b)):
+        x, y = float(x), float(y)
+        if not (x == y or abs(x - y) <= 6e-3 * max(abs(x), abs(y)) or max(abs(x), abs(y)) < 1e-12):
+            return False
+    return True
+
+
+def error_line(stderr, prefix):
+    lines = [l for l in stderr.splitlines() if l.startswith(prefix)]
+    if len(lines) != 1:
+        fail(f"expected one line starting {prefix!r}: {stderr}")
+    return lines[0][len(prefix):]
+
+
+def main(bookspin, source, build):
+    for program in ("em++", "node", "npm"):
+        if shutil.which(program) is None:
+            missing(f"{program} not found")
+    cannon = source / "web" / "node_modules" / "cannon-es"
+    if not cannon.is_dir():
+        missing("the npm package cannon-es (web/node_modules)")
+    pinned = json.loads((source / "web" / "package-lock.json").read_text())["packages"][
+        "node_modules/cannon-es"]["version"]
+    installed = json.loads((cannon / "package.json").read_text())["version"]
+    if installed != pinned:
+        fail(f"web/node_modules has cannon-es {installed}, web/package-lock.json pins {pinned}")
+    if subprocess.run(["node", source / "web" / "flipcheck-engines.mjs", "--check"],
+                      capture_output=True).returncode != 0:
+        missing("the league's npm packages (web/node_modules)")
+
+    made = run(["bash", source / "npm" / "build.sh", build])
+    print(made.stdout.strip())
+    tgzs = sorted((build / "npm").glob("flipcheck-*.tgz"))
+    if len(tgzs) != 1:
+        fail(f"expected one BUILD/npm/flipcheck-*.tgz, found {tgzs}")
+    tgz = tgzs[0]
+    if tgz.stat().st_size >= 3e6:
+        fail(f"{tgz.name} is {tgz.stat().st_size} bytes, over 3 MB")
+    with tarfile.open(tgz) as tar:
+        manifest = json.load(tar.extractfile("package/package.json"))
+        names = tar.getnames()
+    if manifest.get("dependencies"):
+        fail(f"the package has runtime dependencies: {manifest['dependencies']}")
+    for name in ("package/index.mjs", "package/index.d.ts", "package/cli.mjs",
+                 "package/flipcheck-wasm.cjs"):
+        if name not in names:
+            fail(f"{tgz.name} lacks {name}")
+
+    with tempfile.TemporaryDirectory(prefix="flipcheck-npm-") as tmp:
+        tmp = pathlib.Path(tmp)
+        proxy = "http://127.0.0.1:9"  # the discard port: a download would fail
+        env = {k: v for k, v in os.environ.items()
+               if not k.lower().startswith("npm_config_") and not k.lower().endswith("_proxy")}
+        env.update(HOME=str(tmp / "home"), npm_config_cache=str(tmp / "npm-cache"),
+                   npm_config_offline="true", npm_config_audit="false", npm_config_fund="false",
+                   npm_config_update_notifier="false", http_proxy=proxy, https_proxy=proxy,
+                   HTTP_PROXY=proxy, HTTPS_PROXY=proxy)
+        project = tmp / "my-engine"
+        shutil.copytree(source / "examples" / "flipcheck-npm", project)
+        run(["npm", "pack", "--ignore-scripts", "--silent", "--pack-destination", tmp, cannon], env)
+        run(["npm", "install", "--ignore-scripts", tmp / f"cannon-es-{pinned}.tgz", tgz], env,
+            cwd=project)
+
+        # The example, as its package.json's test script runs it.
+        tested = run(["npm", "test"], env, cwd=project)
+        if "# pass 7" not in tested.stdout or "# fail 0" not in tested.stdout:
+            fail(f"examples/flipcheck-npm: expected 7 passing tests:\n{tested.stdout}")
+        print("examples/flipcheck-npm: 7 tests pass under node --test")
+
+        # cannon-es' motions, judged by the package and by the command line.
+        motions = tmp / "motions"
+        motions.mkdir()
+        shutil.copy(source / "tests" / "npm" / "cannon_motions.mjs", project)
+        run(["node", "cannon_motions.mjs", motions], env, cwd=project)
+        result = json.loads((motions / "judgements.json").read_text())
+        scenarios = sorted(p.stem for p in (source / "scenes" / "flipcheck").glob("*.toml"))
+        if sorted(result["judged"]) != scenarios:
+            fail(f"the package's scenarios {sorted(result['judged'])} are not {scenarios}")
+        npx = [project / "node_modules" / ".bin" / "flipcheck"]
+        for name in scenarios:
+            judged = result["judged"][name]
+            file = motions / judged["file"]
+            scene = source / "scenes" / "flipcheck" / f"{name}.toml"
+            cli = run([bookspin, "flipcheck", "judge", scene, file, "-o", tmp / "cli"])
+            row = read_csv((tmp / "cli" / f"{name}-judge.csv").read_text())[0]
+            same_row(row, judged["arrays"], f"{name}: judge()")
+            same_row(row, judged["csv"], f"{name}: judgeCsv()")
+            if judged["arrays"]["pass"] != (row["verdict"] == "pass"):
+                fail(f"{name}: pass is {judged['arrays']['pass']}, the verdict {row['verdict']}")
+            ours = run(npx + ["judge", name, file, "-o", tmp / "npx"], env, cwd=project)
+            want = cli.stdout.replace(str(tmp / "cli"), str(tmp / "npx"))
+            if len(ours.stdout.splitlines()) != len(want.splitlines()) or not all(
+                    same_line(a, b) for a, b in zip(ours.stdout.splitlines(), want.splitlines())):
+                fail(f"{name}: npx flipcheck judge printed\n{ours.stdout}the command line\n{want}")
+            got = read_csv((tmp / "npx" / f"{name}-judge.csv").read_text())[0]
+            same_row(row, {k: (None if v == "" else v) for k, v in got.items()}, f"{name}: npx CSV")
+            print(f"{name}: cannon-es {row['verdict']} ({row['failures']}): the package as the "
+                  "command line")
+
+        # Every JavaScript engine the league runs (web/flipcheck-engines.mjs, from
+        # web/node_modules), in the three shorter scenarios: npx flipcheck judge of their
+        # motion files as the command line's judge of the same files.
+        league = ("mujoco-test-box", "book-intermediate-0.2", "symmetric-top")
+        exported = tmp / "league-export"
+        run([bookspin, "flipcheck", "export",
+             *[source / "scenes" / "flipcheck" / f"{n}.toml" for n in league], "-o", exported])
+        engines = tmp / "league-motions"
+        run(["node", source / "web" / "flipcheck-engines.mjs", engines,
+             *[exported / f"{n}.json" for n in league]])
+        for name in league:
+            files = sorted(engines.glob(f"{name}-*.csv"))
+            if len(files) < 11:
+                fail(f"{name}: the league's runner wrote {len(files)} motions, expected 11")
+            scene = source / "scenes" / "flipcheck" / f"{name}.toml"
+            cli = run([bookspin, "flipcheck", "judge", scene, *files, "-o", tmp / "league-cli"])
+            ours = run(npx + ["judge", name, *files, "-o", tmp / "league-npx"], env, cwd=project)
+            want = cli.stdout.replace(str(tmp / "league-cli"), str(tmp / "league-npx"))
+            if len(ours.stdout.splitlines()) != len(want.splitlines()) or not all(
+                    same_line(a, b) for a, b in zip(ours.stdout.splitlines(), want.splitlines())):
+                fail(f"{name}: npx flipcheck judge printed\n{ours.stdout}the command line\n{want}")
+            rows = read_csv((tmp / "league-cli" / f"{name}-judge.csv").read_text())
+            got = read_csv((tmp / "league-npx" / f"{name}-judge.csv").read_text())
+            if [r["motion"] for r in rows] != [r["motion"] for r in got]:
+                fail(f"{name}: npx judged {[r['motion'] for r in got]}")
+            for a, b in zip(rows, got):
+                same_row(a, {k: (None if v == "" else v) for k, v in b.items()},
+                         f"{name}: {a['motion']}")
+            verdicts = ", ".join(f"{r['motion'][len(name) + 1:-4]} {r['verdict']}" for r in rows)
+            print(f"{name}: {len(rows)} engine modes judged by npx as by the command line ({verdicts})")
+
+        # export: the scenario JSON byte for byte, the exact motion to 1e-12.
+        run([bookspin, "flipcheck", "export", source / "scenes" / "flipcheck" / "mujoco-test-box.toml",
+             "-o", tmp / "cli-export"])
+        exported = run(npx + ["export", "mujoco-test-box", "-o", tmp / "npx-export"], env,
+                       cwd=project)
+        want = f"exported: {tmp}/npx-export/mujoco-test-box.json, {tmp}/npx-export/mujoco-test-box-exact.csv\n"
+        if exported.stdout != want:
+            fail(f"npx flipcheck export printed {exported.stdout!r}, expected {want!r}")
+        a = (tmp / "cli-export" / "mujoco-test-box.json").read_text()
+        b = (tmp / "npx-export" / "mujoco-test-box.json").read_text()
+        if a != b:
+            fail(f"npx flipcheck export's JSON differs:\n{a}\n{b}")
+        rows_a = read_csv((tmp / "cli-export" / "mujoco-test-box-exact.csv").read_text())
+        rows_b = read_csv((tmp / "npx-export" / "mujoco-test-box-exact.csv").read_text())
+        if len(rows_a) != len(rows_b) or list(rows_a[0]) != list(rows_b[0]):
+            fail("npx flipcheck export's exact CSV has other rows or columns")
+        for i, (ra, rb) in enumerate(zip(rows_a, rows_b)):
+            for column in ra:
+                if not same_number(float(ra[column]), float(rb[column])):
+                    fail(f"exact CSV row {i}: {column}: {ra[column]} against {rb[column]}")
+        print("npx flipcheck export: the command line's files")
+
+        # Bad input: the command line's one line.
+        bad = motions / "nan.csv"
+        bad.write_text("t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.01,1,0,0,0,nan,2,3\n")
+        scene = source / "scenes" / "flipcheck" / "mujoco-test-box.toml"
+        for path in (bad, motions / "missing.csv", motions):
+            cli = run([bookspin, "flipcheck", "judge", scene, path, "-o", tmp / "cli"], expect=2)
+            ours = run(npx + ["judge", "mujoco-test-box", path, "-o", tmp / "npx-bad"], env,
+                       cwd=project, expect=2)
+            a = error_line(cli.stderr, "bookspin: error: ")
+            b = error_line(ours.stderr, "flipcheck: error: ")
+            if a != b:
+                fail(f"bad input {path.name}: the command line says {a!r}, npx {b!r}")
+            if (tmp / "npx-bad").exists():
+                fail("npx flipcheck judge wrote a file for bad input")
+        api = result["errors"]["nan"]
+        want = error_line(run([bookspin, "flipcheck", "judge", scene, bad, "-o", tmp / "cli"],
+                              expect=2).stderr, "bookspin: error: ").replace(str(bad), "nan.csv")
+        if api != want:
+            fail(f"judgeCsv of a NaN threw {api!r}, the command line says {want!r}")
+        if "omegaWorld" not in (result["errors"]["shape"] or ""):
+            fail(f"judge of a wrong shape threw {result['errors']['shape']!r}")
+        if "no scenario \"no-such-scenario\"" not in (result["errors"]["scenario"] or ""):
+            fail(f"scenario() of an unknown name threw {result['errors']['scenario']!r}")
+        run(npx + ["judge", "no-such-scenario", bad], env, cwd=project, expect=2)
+        print("bad input: the command line's one line, exit 2")
+    print(f"PASS: {tgz.name} ({tgz.stat().st_size} bytes)")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        sys.exit(__doc__)
+    main(pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve(),
+         pathlib.Path(sys.argv[3]).resolve())
