@@ -214,6 +214,45 @@ double clip_end_time(const scene::Scene& scene) {
   return static_cast<double>(scene.frames - 1) * scene.steps_per_frame * scene.dt;
 }
 
+std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::string>& header,
+                                           double font, double width) {
+  std::vector<std::string> lines;
+  const double room = width - 2.0 * font;
+  overlay::select_overlay_font(cr, false, 0.8 * font);
+  const auto advance = [cr](const std::string& text) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, text.c_str(), &e);
+    return e.x_advance;
+  };
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (i == 0 || advance(header[i]) <= room) {
+      lines.push_back(header[i]);
+      continue;
+    }
+    // A list ("a · b · c", a comparison's tiles) is broken between its items, anything else
+    // between words.
+    const std::string dot = " \u00b7 ";
+    const std::string gap = header[i].find(dot) != std::string::npos ? dot : " ";
+    std::string line;
+    std::size_t start = 0;
+    while (start <= header[i].size()) {
+      std::size_t end = header[i].find(gap, start);
+      if (end == std::string::npos) end = header[i].size();
+      const std::string word = header[i].substr(start, end - start);
+      const std::string longer = line.empty() ? word : line + gap + word;
+      if (!line.empty() && advance(gap == dot ? longer + " \u00b7" : longer) > room) {
+        lines.push_back(gap == dot ? line + " \u00b7" : line);
+        line = word;
+      } else {
+        line = longer;
+      }
+      start = end + gap.size();
+    }
+    if (!line.empty()) lines.push_back(line);
+  }
+  return lines;
+}
+
 double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font) {
   double y = 0.4 * font;
   for (std::size_t i = 0; i < header.size(); ++i) {
@@ -233,7 +272,7 @@ RgbaImage plot_sheet(const std::vector<std::string>& header,
   overlay::CairoCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
   const double font = std::max(10.0, 0.024 * height);
-  double y = draw_sheet_header(cr, header, font);
+  double y = draw_sheet_header(cr, wrap_sheet_header(cr, header, font, width), font);
   y += 0.6 * font;
   const double each = plots.empty() ? 0 : (height - y) / plots.size();
   std::vector<overlay::PlotSpec> aligned = plots;

@@ -37,6 +37,13 @@ std::vector<PanelRun> single_run(const scene::Scene& scene, const DiagnosticsHis
 /// Time of the scene's last frame: (frames − 1) × steps_per_frame × dt, time units.
 double clip_end_time(const scene::Scene& scene);
 
+/// `header` as a sheet `width` pixels wide draws it: each line after the first (the bold
+/// title, kept whole) broken at spaces where it would run past width − 2·font (drawn at
+/// 0.8·font from x = font): a list ("a · b · c") between its items, the dot kept at the
+/// line's end, other text between words; an item or word longer than that on a line of its own.
+std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::string>& header,
+                                           double font, double width);
+
 /// Draws a sheet's `header` lines on `cr` from its top, the first bold at `font` pixels, the
 /// others regular at 0.8·font, 1.35 line heights apart; returns the last line's baseline (y,
 /// pixels).
