@@ -1,7 +1,9 @@
 #include "charts/panel.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <limits>
 
 #include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
@@ -212,6 +214,39 @@ std::vector<PanelRun> single_run(const scene::Scene& scene, const DiagnosticsHis
 
 double clip_end_time(const scene::Scene& scene) {
   return static_cast<double>(scene.frames - 1) * scene.steps_per_frame * scene.dt;
+}
+
+bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots,
+                          const std::function<double(const overlay::Series&)>& t_blow) {
+  bool clipped = false;
+  for (auto& plot : plots) {
+    if (plot.log_y) continue;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo, all_lo = lo, all_hi = -lo;
+    for (const auto& s : plot.series) {
+      const double until = t_blow(s);
+      for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+        if (!std::isfinite(s.y[i])) continue;
+        all_lo = std::min(all_lo, s.y[i]), all_hi = std::max(all_hi, s.y[i]);
+        if (s.x[i] <= until) lo = std::min(lo, s.y[i]), hi = std::max(hi, s.y[i]);
+      }
+    }
+    if (!std::isfinite(lo)) continue;
+    if (hi - lo < plot.min_y_span) {
+      const double mid = 0.5 * (lo + hi);
+      lo = mid - 0.5 * plot.min_y_span, hi = mid + 0.5 * plot.min_y_span;
+    }
+    const double pad = 0.1 * std::max(hi - lo, 1e-12);
+    if (all_lo >= lo - pad && all_hi <= hi + pad) continue;  // nothing leaves: fit the data
+    plot.y_range = std::pair{lo - pad, hi + pad};
+    clipped = true;
+  }
+  return clipped;
+}
+
+std::optional<double> blow_up_time(const DiagnosticsHistory& history) {
+  for (std::size_t i = 0; i < history.size(); ++i)
+    if (!(std::abs(history.energy_drift[i]) < 1.0)) return history.t[i];
+  return std::nullopt;
 }
 
 std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::string>& header,
