@@ -12,13 +12,20 @@ screenshots kept as the test's artefacts (BINARY_DIR/test-output/browser/screen-
     the screen (nothing to scroll to, "Judge a motion…" and "Phone-toss lab…" on screen);
   - no text under 12 px (each visible text's computed font size) and no text past its panel
     (the controls' column, the view's column, the transport bar, the side column) nor past the
-    screen.
+    screen;
+  - at 1366×768, the Phone-toss lab with a result (the sample recording fitted) and the judge
+    with one (fig09's exact motion, as `bookspin flipcheck export` writes it, judged): no text
+    under 12 px nor past the panel's sides, and every number of their tables at its precision
+    (web/src/precision.js): a value ± σ with σ at two significant digits and the value at σ's
+    decimal place; a number alone at four significant digits at most (the flights' times to
+    the millisecond).
 
 Usage: explorer_screen_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 """
 import time
 
-from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
+from browser import (console_errors, fail, find_browser, open_browser, require, run, test_arguments,
+                     wait_for)
 from explorer_test import load, slide_to
 
 SCREENS = ((1366, 768), (1920, 1080))
@@ -149,6 +156,84 @@ def check_left_panel(driver, page, screen, problems):
     print(f"left panel at {screen[0]}×{screen[1]}: {len(names)} scenes looked at")
 
 
+# JavaScript: the numbers of the lab's and the judge's tables that are shown past their
+# precision, as [cell text, why].
+DIGITS = r"""
+  const digits = (t) => t.replace('-', '').replace('.', '').replace(/^0+/, '').length;
+  const decimals = (t) => (t.includes('.') ? t.split('.')[1].length : 0);
+  const number = /^-?\d+(\.\d+)?( × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?$/;
+  const milliseconds = ['t_start', 't_end', 'half_period_measured', 'half_period_fitted',
+                        'half_period_predicted'];
+  const bad = [];
+  for (const td of document.querySelectorAll('#labBody td, #labTosses td, #judgeTable td')) {
+    const text = td.textContent.trim();
+    const key = (td.parentElement.querySelector('th code') || {}).textContent || '';
+    if (text.includes('±')) {
+      // "v ± σ unit", "v1 ± σ1 : v2 ± σ2 : 1 (…)", "(x, y, z) ± σ°"
+      for (const part of text.split(' : ').filter((p) => p.includes('±'))) {
+        const m = part.match(/^\(?([-\d., ]+?)\)? ± ([\d.]+)/);
+        if (!m) { bad.push([text, 'unread']); continue; }
+        const values = m[1].split(', '), sigma = m[2];
+        if (digits(sigma.replace(/0+$/, '')) > 2 || digits(sigma) < 2) bad.push([text, `σ ${sigma} not two digits`]);
+        if (!part.includes('°') && values.some((v) => decimals(v) !== decimals(sigma)))
+          bad.push([text, `value not at σ's place`]);
+        if (values.some((v) => decimals(v) !== decimals(values[0]))) bad.push([text, 'components at other places']);
+      }
+    } else if (number.test(text)) {
+      const mantissa = text.split(' × ')[0];
+      if (milliseconds.includes(key) ? decimals(mantissa) > 3 : (mantissa.includes('.') && digits(mantissa) > 4))
+        bad.push([text, `${key}: more digits than its precision`]);
+    }
+  }
+  return bad;
+"""
+
+
+def check_panel(driver, shots, name, box_id, problems):
+    """A panel with its result: screenshot, text size, text within the panel's sides, the
+    numbers' digits."""
+    time.sleep(0.5)
+    driver.save_screenshot(str(shots / f"screen-{name}-1366x768.png"))
+    texts, _, width, _ = driver.execute_script(TEXTS)
+    box = driver.execute_script(f"const r = document.getElementById('{box_id}').getBoundingClientRect();"
+                                "return [r.left, r.top, r.right, r.bottom];")
+    shown = 0
+    for text, px, panel, rects, _ in texts:
+        if panel not in ("judge", "lab"):
+            continue
+        shown += 1
+        if px < MIN_TEXT_PX:
+            problems.append(f"{name}: {text!r} at {px} px, under {MIN_TEXT_PX}")
+        for r in rects:
+            if r[0] < box[0] - 0.5 or r[2] > box[2] + 0.5:
+                problems.append(f"{name}: {text!r} runs past the panel's sides {[round(x) for x in box]}: "
+                                f"{[round(x) for x in r]}")
+    bad = driver.execute_script(DIGITS)
+    print(f"{name}: {shown} texts in the panel; numbers past their precision: {bad}")
+    if not shown:
+        problems.append(f"{name}: the panel shows no text")
+    for text, why in bad:
+        problems.append(f"{name}: {text!r}: {why}")
+
+
+def check_lab_and_judge(driver, page, shots, source, motion, problems):
+    load(driver, page + "#lab")
+    driver.find_element("id", "labFile").send_keys(
+        str((source / "recordings" / "phone-on-book-synthetic" / "Raw Data.csv").resolve()))
+    if not wait_for(driver, "return !document.getElementById('labResult').hidden", bool, 240):
+        problems.append(f"the lab showed no fit: {driver.find_element('id', 'labError').text}")
+    else:
+        check_panel(driver, shots, "lab-result", "labBox", problems)
+        driver.execute_script("document.querySelector('#labTosses .toss').scrollIntoView()")
+        check_panel(driver, shots, "lab-toss", "labBox", problems)
+    load(driver, page + "?scene=fig09-matrix-unstable-x#judge")
+    driver.find_element("id", "judgeFile").send_keys(str(motion.resolve()))
+    if not wait_for(driver, "return !document.getElementById('judgeResult').hidden", bool, 240):
+        problems.append(f"the judge showed no judgement: {driver.find_element('id', 'judgeError').text}")
+    else:
+        check_panel(driver, shots, "judge-result", "judgeBox", problems)
+
+
 def main():
     bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
@@ -160,6 +245,9 @@ def main():
     run(["bash", str(source / "web" / "build.sh"), str(binary)])
     run([bookspin, "explore", *sorted(str(p) for p in (source / "scenes").glob("*.toml")), "-o", str(out)])
     page = (out / "explorer.html").resolve().as_uri()
+    run([bookspin, "flipcheck", "export", str(source / "scenes" / "fig09-matrix-unstable-x.toml"),
+         "-o", str(out / "motions")])
+    motion = out / "motions" / "fig09-matrix-unstable-x-exact.csv"
     problems = []
     for screen in SCREENS:
         with open_browser(chromium, driver_path, size=screen, webgl=True, offline=True,
@@ -167,6 +255,8 @@ def main():
             for case in CASES:
                 check_case(driver, page, shots, screen, case, problems)
             check_left_panel(driver, page, screen, problems)
+            if screen == SCREENS[0]:
+                check_lab_and_judge(driver, page, shots, source, motion, problems)
             errors = console_errors(driver)
             if errors:
                 problems.append(f"console errors at {screen[0]}×{screen[1]}: {errors}")
