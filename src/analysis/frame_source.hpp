@@ -56,8 +56,8 @@ std::vector<RunFrames> run_frames(const scene::Scene& scene, const StopPoll& sto
 
 /// The one warning of a run that diverged at `t` (time units), without "bookspin: warning: ":
 /// "<who> diverged at t = <t>[; <reason>]; <kept>", e.g. who "fig09: simulation", reason
-/// FrameSource::divergence_reason() (may be empty), kept "the clip holds the last finite
-/// frame". `t` as a stream writes a double (six significant digits).
+/// FrameSource::divergence_reason() (may be empty), kept "the clip holds its last frame before
+/// the blow-up". `t` as a stream writes a double (six significant digits).
 std::string divergence_warning(const std::string& who, double t, const std::string& reason,
                                const std::string& kept);
 

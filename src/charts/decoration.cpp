@@ -1,5 +1,6 @@
 #include "charts/decoration.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -89,7 +90,17 @@ void FrameDecorator::decorate(RgbaImage& image, double t, std::optional<double> 
     const PixelRect rect = panel_rect(image.width, image.height);
     // With Poinsot's construction on top of the column, the plots below it.
     const PixelRect plots = scene.render.poinsot ? split_for_sphere(rect).second : rect;
-    draw_panel(image, plots, panel_plots(single_run(scene, history), clip_end_time(scene), t));
+    auto specs = panel_plots(single_run(scene, history), clip_end_time(scene), t);
+    // A run that blew up keeps the range before it, as the plot sheet does: the growth the
+    // figure is about, not 1e13 flattening it (▲ ▼ mark where a curve leaves the range).
+    // The clip cannot know the end: it does so once the run has diverged, or once its energy
+    // is ten times off (an explosion), not for a slow growth past double (fig10's).
+    const auto blown = blow_up_time(history);
+    const bool exploded = std::any_of(history.energy_drift.begin(), history.energy_drift.end(),
+                                      [](double d) { return !(std::abs(d) < 10.0); });
+    if (blown && (diverged_at || exploded))
+      clip_to_range_before(specs, [&](const overlay::Series&) { return *blown; });
+    draw_panel(image, plots, specs);
     caption.max_width = rect.x - 0.03 * image.height;  // keep clear of the panel
     centre_x = 0.5 * rect.x;
     if (times) times->panel += timer.lap();

@@ -53,9 +53,9 @@ double parse(const std::string& text) {
   return text.empty() ? kNaN : std::strtod(text.c_str(), nullptr);
 }
 
-std::string short_number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
+std::string short_number(double v, int digits = 3) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
   return text;
 }
 
@@ -172,19 +172,27 @@ void draw_map(cairo_t* cr, const HeatMapSpec& map, const MapRect& region, const 
   }
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
   overlay::select_overlay_font(cr, false, 0.8 * font);
+  // The bar's label goes right of its widest tick label, so that it never runs into them, nor
+  // into the next map's rotated key at the region's far edge.
+  const double ticks_left = bar_left + bar_width + 0.3 * font;
+  double ticks_right = ticks_left;
+  const auto tick = [&](double fraction, const std::string& text) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, text.c_str(), &e);
+    ticks_right = std::max(ticks_right, ticks_left + e.x_advance);
+    text_at(cr, ticks_left, cells.top + cells.height * (1.0 - fraction), text, 0.0, 0.5);
+  };
   if (any) {
-    for (int k = 0; k <= 2; ++k) {
-      const double s = lo + (hi - lo) * k / 2.0;
-      const double v = map.log_value ? std::pow(10.0, s) : s;
-      text_at(cr, bar_left + bar_width + 0.3 * font, cells.top + cells.height * (1.0 - k / 2.0),
-              short_number(v), 0.0, 0.5);
-    }
+    const auto unscaled = [&](double s) { return map.log_value ? std::pow(10.0, s) : s; };
+    for (const auto& [fraction, text] : colour_bar_ticks(unscaled(lo), unscaled(hi), map.log_value))
+      tick(fraction, text);
   } else {
-    text_at(cr, bar_left + bar_width + 0.3 * font, cells.top + 0.5 * cells.height, "no values", 0.0,
-            0.5);
+    tick(0.5, "no values");
   }
   cairo_save(cr);
-  cairo_translate(cr, region.left + region.width - 0.5 * font, cells.top + 0.5 * cells.height);
+  const double label_x =
+      std::min(ticks_right + 1.0 * font, region.left + region.width - 0.9 * font);
+  cairo_translate(cr, label_x, cells.top + 0.5 * cells.height);
   cairo_rotate(cr, -M_PI / 2);
   overlay::select_overlay_font(cr, false, 0.85 * font);
   text_at(cr, 0, 0, map.value_label + (map.log_value ? " (log scale)" : ""), 0.5, 0.5);
@@ -192,6 +200,37 @@ void draw_map(cairo_t* cr, const HeatMapSpec& map, const MapRect& region, const 
 }
 
 }  // namespace
+
+std::vector<std::pair<double, std::string>> colour_bar_ticks(double lo, double hi, bool log) {
+  if (!(lo < hi)) return {{0.5, short_number(lo)}};
+  const double mid = log ? std::sqrt(lo) * std::sqrt(hi) : 0.5 * (lo + hi);
+  const std::array<double, 3> values{lo, mid, hi};
+  // A linear bar: the three at one decimal place, that of half the range or the largest
+  // value's third significant digit, whichever is finer (0.28, 1.68, 3.08; 813.94, 814.01,
+  // 814.08), where that stays short.
+  const double largest = std::max(std::abs(lo), std::abs(hi));
+  const int decimals =
+      std::max({0, -static_cast<int>(std::floor(std::log10(0.5 * (hi - lo)))),
+                2 - static_cast<int>(std::floor(std::log10(std::max(largest, 1e-300))))});
+  if (!log && largest < 1e6 && decimals <= 6) {
+    std::vector<std::pair<double, std::string>> ticks;
+    for (std::size_t k = 0; k < 3; ++k) {
+      char text[40];
+      std::snprintf(text, sizeof text, "%.*f", decimals, values[k]);
+      ticks.emplace_back(0.5 * static_cast<double>(k), text);
+    }
+    return ticks;
+  }
+  // A log bar, or numbers too large or small for decimals: significant digits, as few as
+  // tell them apart.
+  for (int digits = 3; digits < 17; ++digits) {
+    std::array<std::string, 3> texts;
+    for (std::size_t k = 0; k < 3; ++k) texts[k] = short_number(values[k], digits);
+    if (texts[0] != texts[1] && texts[1] != texts[2])
+      return {{0.0, texts[0]}, {0.5, texts[1]}, {1.0, texts[2]}};
+  }
+  return {{0.0, short_number(lo, 17)}, {0.5, short_number(mid, 17)}, {1.0, short_number(hi, 17)}};
+}
 
 std::vector<HeatMapSpec> sweep_heat_maps(const std::vector<std::string>& header,
                                          const std::vector<std::vector<std::string>>& rows,
@@ -204,7 +243,8 @@ std::vector<HeatMapSpec> sweep_heat_maps(const std::vector<std::string>& header,
   std::vector<HeatMapSpec> maps;
   for (std::size_t m = 0; m < measures.size(); ++m) {
     HeatMapSpec map;
-    map.title = std::string(measures[m]->name);
+    // The measure in words (its axis label, unit and all), its CSV column second.
+    map.title = std::string(measures[m]->axis_label) + " \u00b7 " + std::string(measures[m]->name);
     map.x_label = header.at(0);
     map.y_label = header.at(1);
     map.value_label = std::string(measures[m]->axis_label);
@@ -258,10 +298,11 @@ RgbaImage heat_map_sheet(const std::vector<std::string>& header,
   std::fill(image.pixels.begin(), image.pixels.end(), 255);
   overlay::CairoCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  draw_sheet_header(cr, header, header_font(height));
+  const std::vector<std::string> lines = wrap_sheet_header(cr, header, header_font(height), width);
+  draw_sheet_header(cr, lines, header_font(height));
   for (std::size_t m = 0; m < maps.size(); ++m) {
-    draw_map(cr, maps[m], map_region(width, height, header.size(), maps.size(), m),
-             heat_map_cells(width, height, header.size(), maps.size(), m), map_font(height));
+    draw_map(cr, maps[m], map_region(width, height, lines.size(), maps.size(), m),
+             heat_map_cells(width, height, lines.size(), maps.size(), m), map_font(height));
   }
   canvas.composite_onto(image);
   return image;

@@ -3,6 +3,7 @@
 // key on x, the second on y, a colour bar with the measure's unit, diverged cells marked.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/measures.hpp"
@@ -13,7 +14,7 @@ namespace bookspin::charts {
 /// One measure over a two-key grid. Cell (i, j) is x[i], y[j]; the cells are equal in size,
 /// as the grid is evenly spaced on each axis (in log(value) where log).
 struct HeatMapSpec {
-  std::string title;        ///< the measure's name
+  std::string title;        ///< the measure in words, then its CSV name ("… · first_flip")
   std::string x_label;      ///< the first key
   std::string y_label;      ///< the second key
   std::string value_label;  ///< the colour bar's label, with the measure's unit
@@ -53,6 +54,13 @@ MapRect heat_map_cells(int width, int height, std::size_t header_lines, std::siz
 /// The colour of `fraction` (0 … 1, clamped) on the maps' scale: dark blue through green to
 /// yellow (a viridis-like ramp of six stops), 8-bit RGB.
 std::array<unsigned char, 3> heat_colour(double fraction);
+
+/// The colour bar's tick labels for values from `lo` to `hi` (the values themselves, not
+/// their logarithms): {fraction of the bar from its bottom, text}. Three (bottom, middle, top)
+/// where lo < hi, each with the fewest significant digits, at least three, that tell the
+/// three apart (813.94, 814.01, 814.08, not "814" three times); one, at the middle, where
+/// every value is the same.
+std::vector<std::pair<double, std::string>> colour_bar_ticks(double lo, double hi, bool log);
 
 /// The sheet: `header` lines (the first bold), then the maps, two a row, each with its
 /// title, a legend line (cells diverged, marked ×, and cells empty, each counted), axes

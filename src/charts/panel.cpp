@@ -1,7 +1,9 @@
 #include "charts/panel.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <limits>
 
 #include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
@@ -214,6 +216,78 @@ double clip_end_time(const scene::Scene& scene) {
   return static_cast<double>(scene.frames - 1) * scene.steps_per_frame * scene.dt;
 }
 
+bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots,
+                          const std::function<double(const overlay::Series&)>& t_blow) {
+  bool clipped = false;
+  for (auto& plot : plots) {
+    if (plot.log_y) continue;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo, all_lo = lo, all_hi = -lo;
+    for (const auto& s : plot.series) {
+      const double until = t_blow(s);
+      for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+        if (!std::isfinite(s.y[i])) continue;
+        all_lo = std::min(all_lo, s.y[i]), all_hi = std::max(all_hi, s.y[i]);
+        if (s.x[i] <= until) lo = std::min(lo, s.y[i]), hi = std::max(hi, s.y[i]);
+      }
+    }
+    if (!std::isfinite(lo)) continue;
+    if (hi - lo < plot.min_y_span) {
+      const double mid = 0.5 * (lo + hi);
+      lo = mid - 0.5 * plot.min_y_span, hi = mid + 0.5 * plot.min_y_span;
+    }
+    const double pad = 0.1 * std::max(hi - lo, 1e-12);
+    if (all_lo >= lo - pad && all_hi <= hi + pad) continue;  // nothing leaves: fit the data
+    plot.y_range = std::pair{lo - pad, hi + pad};
+    clipped = true;
+  }
+  return clipped;
+}
+
+std::optional<double> blow_up_time(const DiagnosticsHistory& history) {
+  for (std::size_t i = 0; i < history.size(); ++i)
+    if (!(std::abs(history.energy_drift[i]) < 1.0)) return history.t[i];
+  return std::nullopt;
+}
+
+std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::string>& header,
+                                           double font, double width) {
+  std::vector<std::string> lines;
+  const double room = width - 2.0 * font;
+  overlay::select_overlay_font(cr, false, 0.8 * font);
+  const auto advance = [cr](const std::string& text) {
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, text.c_str(), &e);
+    return e.x_advance;
+  };
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (i == 0 || advance(header[i]) <= room) {
+      lines.push_back(header[i]);
+      continue;
+    }
+    // A list ("a · b · c", a comparison's tiles) is broken between its items, anything else
+    // between words.
+    const std::string dot = " \u00b7 ";
+    const std::string gap = header[i].find(dot) != std::string::npos ? dot : " ";
+    std::string line;
+    std::size_t start = 0;
+    while (start <= header[i].size()) {
+      std::size_t end = header[i].find(gap, start);
+      if (end == std::string::npos) end = header[i].size();
+      const std::string word = header[i].substr(start, end - start);
+      const std::string longer = line.empty() ? word : line + gap + word;
+      if (!line.empty() && advance(gap == dot ? longer + " \u00b7" : longer) > room) {
+        lines.push_back(gap == dot ? line + " \u00b7" : line);
+        line = word;
+      } else {
+        line = longer;
+      }
+      start = end + gap.size();
+    }
+    if (!line.empty()) lines.push_back(line);
+  }
+  return lines;
+}
+
 double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font) {
   double y = 0.4 * font;
   for (std::size_t i = 0; i < header.size(); ++i) {
@@ -233,7 +307,7 @@ RgbaImage plot_sheet(const std::vector<std::string>& header,
   overlay::CairoCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
   const double font = std::max(10.0, 0.024 * height);
-  double y = draw_sheet_header(cr, header, font);
+  double y = draw_sheet_header(cr, wrap_sheet_header(cr, header, font, width), font);
   y += 0.6 * font;
   const double each = plots.empty() ? 0 : (height - y) / plots.size();
   std::vector<overlay::PlotSpec> aligned = plots;

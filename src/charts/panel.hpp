@@ -2,6 +2,7 @@
 // The physics panel: three stacked plots of a run's diagnostics (body-frame ω, relative
 // energy drift, shape error) against time, drawn live beside the book in a clip
 // (render.panel) and over the whole run by `bookspin plot`.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,25 @@ std::vector<PanelRun> single_run(const scene::Scene& scene, const DiagnosticsHis
 
 /// Time of the scene's last frame: (frames − 1) × steps_per_frame × dt, time units.
 double clip_end_time(const scene::Scene& scene);
+
+/// Keeps plots of a blow-up readable: each linear y axis spans the values of every run up to
+/// its blow-up (`t_blow(series)`, infinite for a run that did not diverge), padded by a
+/// tenth, where some curve leaves that range; the overlay marks where it does
+/// (overlay::PlotSpec::y_range). Returns whether any axis was clipped.
+bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots,
+                          const std::function<double(const overlay::Series&)>& t_blow);
+
+/// When the run of `history` blew up: its first sample with |E/E0 − 1| ≥ 1 (the energy
+/// doubled or vanished; E is conserved by the exact motion, docs/physics.md §9), or
+/// std::nullopt.
+std::optional<double> blow_up_time(const DiagnosticsHistory& history);
+
+/// `header` as a sheet `width` pixels wide draws it: each line after the first (the bold
+/// title, kept whole) broken at spaces where it would run past width − 2·font (drawn at
+/// 0.8·font from x = font): a list ("a · b · c") between its items, the dot kept at the
+/// line's end, other text between words; an item or word longer than that on a line of its own.
+std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::string>& header,
+                                           double font, double width);
 
 /// Draws a sheet's `header` lines on `cr` from its top, the first bold at `font` pixels, the
 /// others regular at 0.8·font, 1.35 line heights apart; returns the last line's baseline (y,

@@ -54,41 +54,7 @@ std::vector<std::string> header(const scene::Scene& scene, const std::vector<Run
 /// std::nullopt for a run that did not diverge.
 std::optional<double> blow_up_time(const Run& run) {
   if (!run.diverged_at) return std::nullopt;
-  const auto& h = run.history;
-  for (std::size_t i = 0; i < h.size(); ++i)
-    if (!(std::abs(h.energy_drift[i]) < 1.0)) return h.t[i];
-  return run.diverged_at;
-}
-
-/// Keeps plots of a blow-up readable: each linear y axis spans the values of every run up to
-/// its blow-up (`t_blow(series)`, infinite for a run that did not diverge), padded by a
-/// tenth, where some curve leaves that range; the overlay marks where it does
-/// (overlay::PlotSpec::y_range). Returns whether any axis was clipped.
-template <typename BlowUp>
-bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots, const BlowUp& t_blow) {
-  bool clipped = false;
-  for (auto& plot : plots) {
-    if (plot.log_y) continue;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo, all_lo = lo, all_hi = -lo;
-    for (const auto& s : plot.series) {
-      const double until = t_blow(s);
-      for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-        if (!std::isfinite(s.y[i])) continue;
-        all_lo = std::min(all_lo, s.y[i]), all_hi = std::max(all_hi, s.y[i]);
-        if (s.x[i] <= until) lo = std::min(lo, s.y[i]), hi = std::max(hi, s.y[i]);
-      }
-    }
-    if (!std::isfinite(lo)) continue;
-    if (hi - lo < plot.min_y_span) {
-      const double mid = 0.5 * (lo + hi);
-      lo = mid - 0.5 * plot.min_y_span, hi = mid + 0.5 * plot.min_y_span;
-    }
-    const double pad = 0.1 * std::max(hi - lo, 1e-12);
-    if (all_lo >= lo - pad && all_hi <= hi + pad) continue;  // nothing leaves: fit the data
-    plot.y_range = std::pair{lo - pad, hi + pad};
-    clipped = true;
-  }
-  return clipped;
+  return charts::blow_up_time(run.history).value_or(*run.diverged_at);
 }
 
 }  // namespace

@@ -133,7 +133,7 @@ std::optional<ClipFrame> FrameLoop::next(const StopPoll& stop, const SpareFrames
     if (s.tile == 0) stop_if_asked(stop, "render frames");  // the sinks remove their temporaries
     TileRun& tile = *s.tiles[s.tile];
     const bool fresh = advance(tile.source, s.index, tile.scene, tile.frame);
-    s.renderer.submit(tile.drawing.input_for(tile.frame.pose));
+    s.renderer.submit(tile.drawing.input_for(tile.frame.picture()));
     s.finisher.expect({s.index, s.tile, tile.frame.t, tile.frame.diverged_at,
                        tile.frame.pose.diagnostics, tile.frame.pose.corners, fresh});
     if (++s.tile == s.tiles.size()) {

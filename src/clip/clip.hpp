@@ -68,8 +68,9 @@ class FrameLoop {
 /// Renders `request.scene` (a single scene or a comparison) into its videos, PNG frames and
 /// diagnostics CSV(s) at request.paths (and a comparison's request.tile_csvs): FrameLoop's
 /// frames, each handed to the ClipSinks. Each frame of a single scene is pixel for pixel what
-/// render_frame() (frame.hpp) makes of it. After a divergence the last finite pose is held with
-/// a "diverged at t = …" caption (a comparison: in that tile), so the clip keeps its length.
+/// render_frame() (frame.hpp) makes of it. After a divergence the last pose before the blow-up
+/// is held (SimulatedFrame::picture()) with a "diverged at t = …" caption (a comparison: in that
+/// tile), so the clip keeps its length.
 /// Throws Interrupted, leaving nothing unfinished behind and nothing put in place, when
 /// request.stop_signal answers a signal; OutputError (an output cannot be written),
 /// video::EncoderError, render::RenderError (no usable EGL/GL).

@@ -1,5 +1,6 @@
 #include "clip/frame.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,12 @@ bool advance(analysis::FrameSource& source, int index, const scene::Scene& scene
              SimulatedFrame& frame) {
   const bool fresh = source.next(frame.pose);
   frame.diverged_at = source.diverged_at();
+  if (fresh) {
+    const double energy = frame.pose.diagnostics.energy_total;
+    if (index == 0) frame.energy0 = energy;
+    if (index == 0 || frame.energy0 == 0.0 || std::abs(energy / frame.energy0 - 1.0) < 1.0)
+      frame.before_blow_up = frame.pose;
+  }
   frame.t = fresh ? frame.pose.diagnostics.t : index * scene.steps_per_frame * scene.dt;
   return fresh;
 }
@@ -36,7 +43,7 @@ ShownFrame simulate_to(const scene::Scene& scene, int index) {
 
 RgbaImage render_frame(const scene::Scene& scene, render::Renderer& renderer,
                        const ShownFrame& frame) {
-  RgbaImage image = renderer.render(BodyDrawing(scene.body).input_for(frame.pose));
+  RgbaImage image = renderer.render(BodyDrawing(scene.body).input_for(frame.picture()));
   decorate_frame(image, scene, frame.t, frame.diverged_at, frame.history);
   return image;
 }

@@ -20,6 +20,14 @@ struct SimulatedFrame {
   physics::Pose pose;  ///< after a divergence: the last finite pose
   double t = 0.0;      ///< frame time; after a divergence index × frame time, so it runs on
   std::optional<double> diverged_at;
+  /// The last pose before the run blew up: its energy within a factor of two of frame 0's,
+  /// |E/E₀ − 1| < 1 (the plot sheet's blow-up, charts/plot_sheet.cpp). A run that blew up
+  /// ends far past the view (fig08's exploded book), so once it has diverged the picture
+  /// holds this pose instead of the last finite one.
+  physics::Pose before_blow_up;
+  double energy0 = 0.0;  ///< frame 0's total energy
+  /// The pose the picture shows: `pose`, or after a divergence `before_blow_up`.
+  const physics::Pose& picture() const { return diverged_at ? before_blow_up : pose; }
 };
 
 /// What one video frame shows: the simulated frame and the panel's curves up to it.
@@ -28,7 +36,8 @@ struct ShownFrame : SimulatedFrame {
 };
 
 /// Moves `frame` to video frame `index` (call with 0, 1, 2, … in turn). After a divergence
-/// the last finite pose stays in `frame`, so the clip keeps its length. Returns whether the
+/// the last finite pose stays in `frame`, so the clip keeps its length (its picture the last
+/// pose before the blow-up, SimulatedFrame::picture()). Returns whether the
 /// pose is newly simulated (false: the last finite one, held), that is whether the frame adds
 /// a sample to the panel's curves.
 bool advance(analysis::FrameSource& source, int index, const scene::Scene& scene,

@@ -20,9 +20,9 @@ std::vector<std::string> clip_warnings(const std::string& name, const clip::Clip
   std::vector<std::string> warnings;
   if (!result.encoder_fallback.empty()) warnings.push_back(name + ": " + result.encoder_fallback);
   if (result.diverged_at) {
-    warnings.push_back(analysis::divergence_warning(name + ": simulation", *result.diverged_at,
-                                                    result.divergence_reason,
-                                                    "the clip holds the last finite frame"));
+    warnings.push_back(analysis::divergence_warning(
+        name + ": simulation", *result.diverged_at, result.divergence_reason,
+        "the clip holds its last frame before the blow-up"));
   }
   for (const auto& tile : result.diverged_tiles) {
     warnings.push_back(analysis::divergence_warning(name + ": panel '" + tile.label + "'", tile.t,

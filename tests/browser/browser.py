@@ -176,3 +176,35 @@ def wait_for(driver, script, done, timeout=60):
         if done(result) or time.monotonic() > deadline:
             return result
         time.sleep(0.25)
+
+
+SUPERSCRIPT = str.maketrans("⁻⁰¹²³⁴⁵⁶⁷⁸⁹", "-0123456789")
+
+
+def shown_number(text):
+    """A number as the page shows it (web/src/precision.js): plain ("12.67", "-0.000012") or
+    with a power of ten ("1.665 × 10⁻¹⁵"), as a float."""
+    text = text.strip()
+    if " × 10" in text:
+        mantissa, power = text.split(" × 10")
+        return float(mantissa) * 10.0 ** int(power.translate(SUPERSCRIPT))
+    return float(text)
+
+
+def shown_digits(text):
+    """The significant digits a number shown by the page has (its mantissa's, leading zeros
+    not counted; an integer's trailing zeros counted)."""
+    mantissa = text.strip().split(" × 10")[0].lstrip("-")
+    return len(mantissa.replace(".", "").lstrip("0")) or 1
+
+
+def at_sigma(value, sigma):
+    """`value ± sigma` as the page prints it (web/src/precision.js), written again here: σ to
+    two significant digits, the value to σ's last decimal place; (value, sigma) as text."""
+    rounded = float(f"{sigma:.2g}")
+    place = int(f"{rounded:e}".split("e")[1]) - 1
+    decimals = max(0, -place)
+    if place > 0:
+        step = 10 ** place
+        return str(int(round(value / step) * step)), str(int(round(sigma / step) * step))
+    return f"{value:.{decimals}f}", f"{sigma:.{decimals}f}"

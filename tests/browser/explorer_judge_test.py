@@ -37,7 +37,7 @@ import time
 from pathlib import Path
 
 from browser import (console_errors, fail, find_browser, open_browser, require, run, serve,
-                     test_arguments, wait_for)
+                     shown_digits, shown_number, test_arguments, wait_for)
 
 TOL = 1e-9
 # The exact motion judged against itself measures round-off: its orientation error is ~1e-16
@@ -237,15 +237,29 @@ def main():
         failures = [li.text for li in driver.find_elements(By.CSS_SELECTOR, "#judgeFailures li")]
         if "; ".join(failures) != cli["failures"]:
             fail(f"the panel's failures {failures}, the command line's {cli['failures']!r}")
-        table = {tr.find_element(By.CSS_SELECTOR, "th code").text: tr.find_element(By.TAG_NAME, "td").text
-                 for tr in driver.find_elements(By.CSS_SELECTOR, "#judgeTable tr")}
+        # Each row: its readable label, its CSV key (code), its number at four significant
+        # digits (a count whole) and, in the cell's title, every digit the CSV holds.
+        table = {}
+        for tr in driver.find_elements(By.CSS_SELECTOR, "#judgeTable tr"):
+            keys = tr.find_elements(By.CSS_SELECTOR, "th code")
+            td = tr.find_element(By.TAG_NAME, "td")
+            key = keys[0].text if keys else tr.find_element(By.TAG_NAME, "th").text
+            table[key] = (td.text, td.get_attribute("title"))
         for column, cell in cli.items():
             if column in TEXT_COLUMNS:
                 continue
-            shown_cell = table.get(column)
-            if shown_cell is None or (cell == "" and shown_cell != "—") or \
-                    (cell != "" and not same_number(float(shown_cell), float(cell))):
+            shown_cell, full = table.get(column, (None, None))
+            if shown_cell is None or (cell == "" and shown_cell != "—"):
                 fail(f"the panel's {column}: {shown_cell!r}, the command line's {cell!r}")
+            if cell == "":
+                continue
+            if not same_number(float(full), float(cell)):
+                fail(f"the panel's {column} holds {full!r}, the command line's {cell!r}")
+            # Shown: the page's own value (the title) to four significant digits; a count whole.
+            whole = float(full).is_integer() and "." not in full and "e" not in full.lower()
+            if (not whole and shown_digits(shown_cell) > 4) or \
+                    not math.isclose(shown_number(shown_cell), float(full), rel_tol=5e-4, abs_tol=1e-300):
+                fail(f"the panel shows {column} as {shown_cell!r}: not {full!r} to 4 significant digits")
         drawn = wait_for(driver, """
             const c = document.getElementById('judgeReplay');
             if (c.hidden || !c.width) return 0;

@@ -55,7 +55,7 @@ import time
 import zipfile
 from pathlib import Path
 
-from browser import (console_errors, fail, find_browser, open_browser, require, run, serve,
+from browser import (at_sigma, console_errors, fail, find_browser, open_browser, require, run, serve,
                      test_arguments, wait_for)
 
 TOL = 1e-6
@@ -360,9 +360,12 @@ def main():
         (bh, brows), _, _, scenes = cli[("phone-on-book-synthetic.zip", "linear")]
         body = dict(zip(bh, brows[0]))
         shown = driver.find_element(By.ID, "labBody").text
-        for column in ("I1_over_I3", "I2_over_I3"):
-            if f"{float(body[column]):.6g}" not in shown:
-                fail(f"the panel's body table does not show {column} {body[column]}: {shown!r}")
+        # At their precision: each ratio to its σ's decimal place, σ to two significant digits.
+        for column, sigma in (("I1_over_I3", "I1_sigma"), ("I2_over_I3", "I2_sigma")):
+            value_text, sigma_text = at_sigma(float(body[column]), float(body[sigma]))
+            if f"{value_text} ± {sigma_text}" not in shown:
+                fail(f"the panel's body table does not show {column} {body[column]} ± {body[sigma]} "
+                     f"as {value_text} ± {sigma_text}: {shown!r}")
         time.sleep(1.0)
         driver.save_screenshot(str(shots / "explorer-lab-1280x720.png"))
         driver.execute_script("document.querySelectorAll('#labTosses button')[1].click()")
@@ -403,7 +406,8 @@ def main():
         """, "labDrop", zip_path.name, data)
         if not wait_for(driver, "return !document.getElementById('labResult').hidden", bool, 120):
             fail(f"a recording dropped on the panel was not fitted: {driver.find_element(By.ID, 'labError').text}")
-        if f"{float(body['I1_over_I3']):.6g}" not in driver.find_element(By.ID, "labBody").text:
+        if " ± ".join(at_sigma(float(body["I1_over_I3"]), float(body["I1_sigma"]))) not in \
+                driver.find_element(By.ID, "labBody").text:
             fail("the dropped recording's body is not the command line's")
         driver.execute_script("document.getElementById('labClose').click()")
         run([bookspin, "flipcheck", "export", str(source / "scenes" / "exact-unstable-x.toml"),

@@ -88,6 +88,33 @@ TEST(HeatMap, DivergedAtMapsTheTimeAndCountsTheRunsThatFinished) {
   EXPECT_EQ(maps[0].value[3], 7.0);
 }
 
+// The colour bar of a measure that barely varies (diverged_at from 813.94 to 814.08 read
+// "814", "814", "814") says three different numbers; one value alone is one tick.
+TEST(HeatMap, ColourBarTicksTellTheirValuesApart) {
+  using Ticks = std::vector<std::pair<double, std::string>>;
+  EXPECT_EQ(colour_bar_ticks(813.94, 814.08, false),
+            (Ticks{{0.0, "813.94"}, {0.5, "814.01"}, {1.0, "814.08"}}));
+  EXPECT_EQ(colour_bar_ticks(0.284, 3.08, true),
+            (Ticks{{0.0, "0.284"}, {0.5, "0.935"}, {1.0, "3.08"}}));
+  EXPECT_EQ(colour_bar_ticks(0.284, 3.08, false),
+            (Ticks{{0.0, "0.28"}, {0.5, "1.68"}, {1.0, "3.08"}}));
+  EXPECT_EQ(colour_bar_ticks(100.0, 500.0, false),
+            (Ticks{{0.0, "100"}, {0.5, "300"}, {1.0, "500"}}));
+  EXPECT_EQ(colour_bar_ticks(1e-9, 3e-9, false),
+            (Ticks{{0.0, "1e-09"}, {0.5, "2e-09"}, {1.0, "3e-09"}}));
+  EXPECT_EQ(colour_bar_ticks(814.0, 814.0, false), (Ticks{{0.5, "814"}}));
+}
+
+// The maps' titles read the measure in words first, its CSV column second.
+TEST(HeatMap, TitlesReadTheMeasureInWordsThenItsColumn) {
+  const auto maps = sweep_heat_maps({"a", "b", "first_flip"}, {{"1", "1", "2"}}, {1}, false, {1},
+                                    false, {analysis::find_measure("first_flip")});
+  ASSERT_EQ(maps.size(), 1u);
+  const std::string words(analysis::find_measure("first_flip")->axis_label);
+  EXPECT_EQ(maps[0].title.rfind(words, 0), 0u) << maps[0].title;
+  EXPECT_NE(maps[0].title.find("first_flip"), std::string::npos) << maps[0].title;
+}
+
 TEST(HeatMap, ARowOffTheGridIsAnError) {
   EXPECT_THROW(sweep_heat_maps({"a", "b", "twist"}, {{"1", "3", "0.5"}}, {1, 2}, false, {1, 2},
                                false, {analysis::find_measure("twist")}),

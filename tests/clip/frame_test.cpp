@@ -65,5 +65,27 @@ TEST(Frame, AfterADivergenceTheLastFinitePoseIsHeldAndTheTimeRunsOn) {
   EXPECT_EQ(frame.pose.corners, held.pose.corners);
 }
 
+// fig08's particle book explodes from t ≈ 14 and diverges at 31.35: its last finite pose is
+// the book blown far past the view, which the clip's last 4.5 s showed as an empty frame. The
+// picture holds the last pose before the blow-up instead (its energy within a factor of two
+// of the start's), a book of about its own size; the CSV's pose stays the last finite one.
+TEST(Frame, AfterABlowUpThePictureHoldsTheLastPoseBeforeIt) {
+  const scene::Scene scene = scene::parse_scene(std::filesystem::path(BOOKSPIN_SOURCE_DIR) /
+                                                "scenes" / "fig08-particle-neither.toml");
+  const ShownFrame frame = simulate_to(scene, scene.frames - 1);
+  ASSERT_TRUE(frame.diverged_at.has_value());
+  const auto span = [](const physics::Corners& c) {
+    return (c.rowwise().maxCoeff() - c.rowwise().minCoeff()).maxCoeff();
+  };
+  const ShownFrame start = simulate_to(scene, 0);
+  const double size = span(start.pose.corners);
+  EXPECT_GT(span(frame.pose.corners), 10 * size);  // the last finite pose: exploded
+  EXPECT_LT(span(frame.picture().corners), 2 * size) << frame.picture().corners;
+  EXPECT_LT(std::abs(frame.picture().diagnostics.energy_total / frame.energy0 - 1.0), 1.0);
+  // Before the divergence the picture is the pose itself.
+  const ShownFrame early = simulate_to(scene, 10);
+  EXPECT_EQ(early.picture().corners, early.pose.corners);
+}
+
 }  // namespace
 }  // namespace bookspin::clip

@@ -31,7 +31,7 @@ scene::Scene book_at_rest(const std::string& label, const std::string& direction
 render::Renderer& renderer_for(const scene::Scene& scene);
 
 /// The frames pinned for a scene of `frames` frames: the first, the middle and the last
-/// (for a diverging figure the last frame holds the last finite pose and the banner).
+/// (for a diverging figure the last frame holds the last pose before the blow-up and the banner).
 std::vector<int> pinned_frames(int frames);
 
 /// "fig05-particle-unstable-x-f0375": the golden's name for frame `index` of `scene`.

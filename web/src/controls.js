@@ -52,6 +52,7 @@ export class Controls {
     this.space = space;
     this.scenes = scenes;
     this.engineModels = engines.map((e) => e.model);
+    this.aboutFor = undefined;  // the scene whose description fitPanel() last unfolded
     fillSelect('scene', [''].concat(scenes.map((s) => s.name)));
     $('scene').options[0].textContent = '(custom)';
     // The menu lists the scenes by title (the value stays the scene's name, as in a link).
@@ -104,13 +105,26 @@ export class Controls {
     ['wx', 'wy', 'wz'].forEach((id, i) => writeNumber(id, state.w[i]));
     const scene = this.scenes.find((x) => x.name === state.scene);
     $('sceneTitle').textContent = scene ? scene.title || scene.name : '';
+    show('sceneAbout', Boolean(scene));  // (custom): no scene to tell of
+    const newScene = this.aboutFor !== state.scene;
+    this.aboutFor = state.scene;
     $('sceneDescription').textContent = scene ? scene.description || '' : '';
     // The time slider spans the scene's run (bookspin explore's `duration`), or 300 time units.
     $('slider').max = Math.max(scene && scene.duration > 0 ? scene.duration : 300, Math.ceil(state.t));
-    // A comparison of more methods than the page runs says what it left out.
+    // A comparison of more methods than the page runs says what it left out: one line, the
+    // methods' names folded under it (the left panel fits a 1366×768 screen).
     const left = scene && scene.left_out ? scene.left_out : [];
-    $('sceneLeftOut').textContent = left.length ? `The page runs two of this scene's methods; ` +
-      `left out: ${left.join('; ')} (the scene's clip shows them all).` : '';
+    const box = $('sceneLeftOut');
+    box.replaceChildren();
+    if (left.length) {
+      const details = document.createElement('details');
+      const summary = document.createElement('summary');
+      summary.textContent = `${left.length} methods left out here (the clip shows them)`;
+      const list = document.createElement('div');
+      list.textContent = `${left.join('; ')}.`;
+      details.append(summary, list);
+      box.append(details);
+    }
     const particle = state.model === 'particle';
     show('integratorRow', this.integrated(state.model));
     show('normalizeRow', this.integrated(state.model));
@@ -128,6 +142,17 @@ export class Controls {
     const mesh = $('body').querySelector('option[value="mesh"]');
     mesh.disabled = !(scene && scene.body && scene.body.shape === 'mesh');
     mesh.textContent = mesh.disabled ? 'mesh (a mesh scene)' : `mesh (${scene.name})`;
+    this.fitPanel(newScene);
+  }
+
+  /** The left panel within the screen (1366×768 and up): the scene's description (and what it
+   * left out) folded under its title while the panel is taller than the screen; `unfold`: shown
+   * first (a new scene, a new screen size), otherwise only ever folded, so that a description
+   * the reader opened stays open until the panel outgrows the screen. */
+  fitPanel(unfold = true) {
+    const about = $('sceneAbout'), column = $('controls');
+    if (unfold) about.open = true;
+    if (about.open && column.scrollHeight > column.clientHeight) about.open = false;
   }
 
   /** Calls `onChange(id)` when an input of the column or the transport changes. */

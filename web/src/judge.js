@@ -6,6 +6,7 @@
 // Nothing is measured here: this module hands text to the module and writes out its answer.
 import { takeFiles } from './file_drop.js';
 import { Replay } from './replay.js';
+import { significant } from './precision.js';
 
 const $ = (id) => document.getElementById(id);
 /** The judgement CSV's columns that hold text; every other one holds a number or nothing. */
@@ -154,8 +155,12 @@ export class JudgePanel {
     verdict.className = pass ? 'pass' : 'fail';
     $('judgeFailures').innerHTML = '';
     for (const f of failures) $('judgeFailures').appendChild(Object.assign(document.createElement('li'), { textContent: f }));
+    // The readable label first, the CSV's key second; each number to four significant digits
+    // (a count whole), as the CSV holds it in the cell's title (the downloaded judgement keeps
+    // every digit).
     const rows = Object.entries(row).filter(([c]) => !TEXT_COLUMNS.includes(c)).map(([c, v]) =>
-      `<tr><th><code>${c}</code><small>${WORDS[c] || ''}</small></th><td>${v === null ? '—' : v}</td></tr>`);
+      `<tr><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c}</code></small>` : ''}</th>` +
+      `<td${v === null ? '' : ` title="${v}"`}>${significant(v)}</td></tr>`);
     $('judgeTable').innerHTML = rows.join('');
     $('judgeResult').hidden = false;
   }

@@ -7,6 +7,7 @@
 // `bookspin explore` plays a toss scene the command line wrote. Nothing is fitted here: this
 // module hands bytes to the module and writes out its answer.
 import { recordingsOf, takeFiles } from './file_drop.js';
+import { plusMinus, significant, vectorWithSigma, withSigma } from './precision.js';
 
 const $ = (id) => document.getElementById(id);
 const OMEGA_COLOURS = ['#ff6060', '#60d060', '#6090ff'];
@@ -16,17 +17,40 @@ const TOSS_WORDS = {
   omega0_z: 'ω0 z (rad/s)', half_period_measured: 'T/2 measured (s)', half_period_fitted: 'T/2 fitted (s)',
   half_period_predicted: 'T/2 predicted (s)', predicted_from_tosses: 'predicted from (tosses)',
   predicted_from_seconds: 'predicted from (s of flight)', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
-  drag_rate: 'drag rate (1/s)', drag_rate_sigma: 'σ drag rate (1/s)',
+  drag_rate: 'drag rate ± σ (1/s)', drag_rate_sigma: 'σ drag rate (1/s)',
   saturated: 'samples at the gyroscope’s range (left out)', stable: 'stable (no flip)',
   poor_fit: 'flagged', flag: 'why',
 };
 
-/** `value` for a table cell: a number to 6 significant digits, nothing as a dash, text as
- * HTML text. */
-function cell(value) {
-  if (value === null || value === undefined || value === '') return '—';
-  if (typeof value === 'number') return String(Number(value.toPrecision(6)));
-  return String(value).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
+/** Text as HTML text. */
+const html = (text) => String(text).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
+
+/** `value` for a table cell, at its precision (precision.js): a number to 4 significant digits
+ * (an integer whole), nothing as a dash, text as HTML text. */
+function cell(value) { return html(significant(value)); }
+
+/** A toss column shown to a fixed decimal place: the flight's ends and half periods are times
+ * on the gyroscope's clock, read to the millisecond (as the command's summary prints them). */
+const MILLISECONDS = new Set(['t_start', 't_end', 'half_period_measured', 'half_period_fitted', 'half_period_predicted']);
+
+/** A toss's `column` and `value` as the panel shows them (its σ beside it where the table has
+ * one: drag_rate ± drag_rate_sigma), and the full value as the CSV holds it, for a title. */
+function tossCell(toss, column, value) {
+  if (typeof value !== 'number') return cell(value);
+  if (column === 'drag_rate') return html(plusMinus(value, toss.drag_rate_sigma));
+  if (column === 'drag_rate_sigma') return html(significant(value, 2));
+  if (column === 'residual_rms' || column === 'L_decay') return html(significant(value, 2));
+  if (MILLISECONDS.has(column)) return html(value.toFixed(3));
+  return cell(value);
+}
+
+/** A table row: the readable label first, the CSV's key second (small, as code; the key alone
+ * where there are no words), the value;
+ * the value as the CSV holds it in the cell's title. */
+function labelledRow(key, words, shown, full) {
+  const title = full === undefined || full === null ? '' : ` title="${html(full)}"`;
+  const code = words && words !== key ? `<small><code>${html(key)}</code></small>` : '';
+  return `<tr><th>${html(words || key)}${code}</th><td${title}>${shown}</td></tr>`;
 }
 
 /** Plots toss `chart` ({t, measured, fitted}: ω, phone frame, 3×N flattened) on `canvas`: the
@@ -49,11 +73,11 @@ export function drawTossChart(canvas, chart) {
   g.strokeStyle = '#555'; g.lineWidth = 1;
   g.beginPath(); g.moveTo(left, y(0)); g.lineTo(w - right, y(0)); g.stroke();
   g.fillStyle = '#bbb'; g.font = '12px sans-serif';
-  g.fillText(`${cell(hi)} rad/s`, 2, top + 10); g.fillText(cell(lo), 2, h - bottom);
-  g.fillText(`${cell(chart.t[0])} s`, left, h - 6);
+  g.fillText(`${significant(hi, 3)} rad/s`, 2, top + 10); g.fillText(significant(lo, 3), 2, h - bottom);
+  g.fillText(`${chart.t[0].toFixed(2)} s`, left, h - 6);
   const legend = 'dots: measured · lines: fitted';
   g.fillText(legend, w - right - g.measureText(legend).width, top + 10);
-  const end = `${cell(chart.t[n - 1])} s`;
+  const end = `${chart.t[n - 1].toFixed(2)} s`;
   g.fillText(end, w - right - g.measureText(end).width, h - 6);
   for (let c = 0; c < 3; ++c) {
     g.fillStyle = OMEGA_COLOURS[c];
@@ -164,11 +188,22 @@ export class LabPanel {
   show(r, ms) {
     this.result = r;
     const b = r.body;
-    const sigma = (k) => (b[k] === null ? '' : ` ± ${cell(b[k])}`);
+    const ratio = (k, sigma) => html(plusMinus(b[k], b[sigma]));
+    const ratios = `${b.I1_over_I3} : ${b.I2_over_I3} : 1`;
+    const axis = (a) => {
+      const values = [b[`axis${a}_x`], b[`axis${a}_y`], b[`axis${a}_z`]];
+      const deg = b[`axis${a}_sigma_deg`];
+      // The components of a unit vector to the angle's precision in radians, σ in degrees.
+      const shown = typeof deg === 'number' && deg > 0
+        ? `(${vectorWithSigma(values, deg * Math.PI / 180).values.join(', ')}) ± ${withSigma(deg, deg).sigma}°`
+        : `(${values.map((v) => significant(v)).join(', ')})`;
+      return labelledRow(`axis${a}_x, _y, _z`, `axis ${a} (phone x, y, z)`, html(shown), `(${values.join(', ')}) ± ${deg}°`);
+    };
     $('labBody').innerHTML =
-      `<tr><th>I1 : I2 : I3</th><td>${cell(b.I1_over_I3)}${sigma('I1_sigma')} : ${cell(b.I2_over_I3)}${sigma('I2_sigma')} : 1 (${cell(b.moments)})</td></tr>` +
-      [1, 2, 3].map((a) => `<tr><th>axis ${a} (phone x, y, z)</th><td>(${cell(b[`axis${a}_x`])}, ${cell(b[`axis${a}_y`])}, ${cell(b[`axis${a}_z`])})${b[`axis${a}_sigma_deg`] === null ? '' : ` ± ${cell(b[`axis${a}_sigma_deg`])}°`}</td></tr>`).join('') +
-      `<tr><th>tosses, drag</th><td>${cell(b.tosses)}, ${cell(b.drag)}</td></tr>`;
+      labelledRow('I1_over_I3 : I2_over_I3 : 1', 'I1 : I2 : I3',
+        `${ratio('I1_over_I3', 'I1_sigma')} : ${ratio('I2_over_I3', 'I2_sigma')} : 1 (${cell(b.moments)})`, ratios) +
+      [1, 2, 3].map(axis).join('') +
+      labelledRow('tosses, drag', '', `${cell(b.tosses)}, ${cell(b.drag)}`);
     // Several files: which were fitted as one body and which were refused, and why.
     // (One export with its meta/ is fitted as several are, but says nothing of it.)
     const files = [];
@@ -186,7 +221,7 @@ export class LabPanel {
       const head = document.createElement('div');
       head.className = 'tossHead';
       const title = document.createElement('strong');
-      title.textContent = `toss ${t.toss}: ${t.recording ? `${t.recording} ` : ''}${cell(t.t_start)}–${cell(t.t_end)} s` +
+      title.textContent = `toss ${t.toss}: ${t.recording ? `${t.recording} ` : ''}${t.t_start.toFixed(3)}–${t.t_end.toFixed(3)} s` +
         (t.stable === 'yes' ? ' (stable)' : '') + (t.poor_fit === 'yes' ? ' (flagged)' : '');
       head.appendChild(title);
       if (r.scenes[k]) {
@@ -200,8 +235,9 @@ export class LabPanel {
       canvas.className = 'tossChart';
       box.appendChild(canvas);
       const table = document.createElement('table');
-      table.innerHTML = Object.entries(t).filter(([c]) => c !== 'toss').map(([c, v]) =>
-        `<tr><th><code>${c}</code><small>${TOSS_WORDS[c] || ''}</small></th><td>${cell(v)}</td></tr>`).join('');
+      // drag_rate_sigma is shown beside drag_rate.
+      table.innerHTML = Object.entries(t).filter(([c]) => c !== 'toss' && !(c === 'drag_rate_sigma' && typeof t.drag_rate === 'number'))
+        .map(([c, v]) => labelledRow(c, TOSS_WORDS[c], tossCell(t, c, v), v)).join('');
       box.appendChild(table);
       list.appendChild(box);
     });

@@ -124,7 +124,10 @@ function startApp(wasm, engines) {
     requestAnimationFrame(frame);
   }
 
-  function resize() {
+  /** The view, the plots and the left panel fitted to the window (`unfold`: the scene's
+   * description shown again where it fits). */
+  function resize(unfold = true) {
+    app.controls.fitPanel(Boolean(unfold));
     app.panels.resize();
     app.view.resize(app.runs.list, app.state.showL);
     if (app.runs.list.length) app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
@@ -156,6 +159,14 @@ function startApp(wasm, engines) {
     resetCamera: () => { app.view.resetCamera(app.runs.list, app.state.showL); draw(); },
   });
   window.addEventListener('resize', resize);
+  // The view is what the readout's strip leaves (index.html): when the strip grows or shrinks
+  // (a second method, a notice), the view is resized and the bodies framed in it again.
+  let resizing = false;
+  new ResizeObserver(() => {
+    if (resizing) return;
+    resizing = true;
+    requestAnimationFrame(() => { resizing = false; resize(false); });
+  }).observe($('view'));
   document.addEventListener('fullscreenchange', resize);
 
   app.judge = new JudgePanel(wasm, SCENES, () => app.state.scene);
