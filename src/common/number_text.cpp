@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <string>
 
 #include "common/errors.hpp"
 
@@ -97,6 +99,34 @@ std::string finite_text(double value, std::string_view what, const char* format)
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, format, finite(value, what));
   return buffer;
+}
+
+std::string plus_minus(double value, double sigma) {
+  char text[128];
+  if (!std::isfinite(value)) {
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+  }
+  if (!(std::isfinite(sigma) && sigma > 0.0)) {
+    std::snprintf(text, sizeof text, sigma == 0.0 ? "%.4g ± 0" : "%.4g", value);
+    return text;
+  }
+  // σ's leading exponent after its rounding to two digits (0.0995 → 0.10: place −2), read from
+  // the decimal text, as log10 is one off near powers of ten.
+  char rounded[32];
+  std::snprintf(rounded, sizeof rounded, "%.1e", sigma);
+  const int place = std::atoi(std::strchr(rounded, 'e') + 1) - 1;  // the last digit kept
+  if (place < 0) {
+    std::snprintf(text, sizeof text, "%.*f ± %.*f", -place, value, -place, sigma);
+  } else {
+    const double step = std::pow(10.0, place);
+    std::snprintf(text, sizeof text, "%.0f ± %.0f", std::round(value / step) * step,
+                  std::round(sigma / step) * step);
+  }
+  std::string out = text;
+  // "-0.000 ± …": a value that rounds to zero has no sign.
+  if (out[0] == '-' && out.find_first_not_of("-0.", 0) == out.find(' ')) out.erase(0, 1);
+  return out;
 }
 
 std::optional<double> read_number(std::string_view text) {

@@ -34,6 +34,13 @@ std::string finite_text(const std::optional<double>& value, std::string_view wha
 /// finite().
 std::string finite_text(double value, std::string_view what, const char* format);
 
+/// For a person (a summary's lines, not a file): `value` ± `sigma` printed to σ's precision,
+/// σ rounded to two significant digits and the value to the same decimal place ("0.348257 ±
+/// 0.000027" for 0.3482571 ± 0.0000269; "170 ± 12" for 171.4 ± 12.3), so a σ never rounds to
+/// zero; a σ that is not a positive finite number leaves the value at four significant digits
+/// and σ as "0" (0) or absent. The same rule as the explorer's web/src/precision.js.
+std::string plus_minus(double value, double sigma);
+
 /// The reader beside the writer: `text` as std::from_chars reads a double in its general format
 /// (an optional '-', digits with an optional point, an optional exponent; "nan", "inf" and
 /// "infinity" in any case, as NaN and infinity), the whole text or nothing; nullopt for

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "common/number_text.hpp"
 #include "fit/pool.hpp"
 
 namespace bookspin::fit {
@@ -102,9 +103,10 @@ CsvTable fit_body_csv(const FitResult& fit) {
 
 std::vector<std::string> fit_summary(const FitResult& fit) {
   std::vector<std::string> lines;
+  // Each value to its σ's precision (common/number_text.hpp, plus_minus).
   const auto with_sigma = [](const Eigen::Vector3d& v, const Eigen::Vector3d& sigma) {
-    return fixed(v[0], 4) + " ± " + fixed(sigma[0], 4) + ", " + fixed(v[1], 4) + " ± " +
-           fixed(sigma[1], 4) + ", " + fixed(v[2], 4) + " ± " + fixed(sigma[2], 4);
+    return plus_minus(v[0], sigma[0]) + ", " + plus_minus(v[1], sigma[1]) + ", " +
+           plus_minus(v[2], sigma[2]);
   };
   const auto three = [](const Eigen::Vector3d& v) {
     return fixed(v[0], 4) + ", " + fixed(v[1], 4) + ", " + fixed(v[2], 4);
@@ -154,9 +156,10 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
     const TossFit& t = fit.tosses[k];
     std::string drag;
     if (fit.drag != physics::DragLaw::none)
-      drag = ", drag " + fixed(t.drag_rate, 3) +
-             (t.drag_rate_sigma ? " ± " + fixed(*t.drag_rate_sigma, 3) : std::string()) + " /s" +
-             (t.drag_rate == 0.0 ? " (at its bound: air cannot speed a body up)" : "");
+      drag = ", drag " +
+             (t.drag_rate_sigma ? plus_minus(t.drag_rate, *t.drag_rate_sigma)
+                                : fixed(t.drag_rate, 3)) +
+             " /s" + (t.drag_rate == 0.0 ? " (at its bound: air cannot speed a body up)" : "");
     const auto [t_start, recording] = own_time(fit, t.flight.t_start);
     const double t_end = t.flight.t_end - (t.flight.t_start - t_start);
     lines.push_back("kept toss " + std::to_string(k + 1) + ": " +
@@ -171,11 +174,12 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
                     "–" + fixed(t_end, 3) + " s: " + d.reason);
   }
   const BodyEstimate& b = fit.body;
-  std::string sigma;
-  if (b.ratio_sigma && !b.moments_fixed)
-    sigma = " (± " + fixed((*b.ratio_sigma)[0], 4) + ", ± " + fixed((*b.ratio_sigma)[1], 4) + ")";
-  lines.push_back("moments I1 : I2 : I3 = " + fixed(b.ratios[0], 4) + " : " +
-                  fixed(b.ratios[1], 4) + " : 1" + (b.moments_fixed ? " (given)" : sigma) +
+  const bool with_ratio_sigma = b.ratio_sigma && !b.moments_fixed;
+  const auto ratio = [&](int i) {
+    return with_ratio_sigma ? plus_minus(b.ratios[i], (*b.ratio_sigma)[i]) : fixed(b.ratios[i], 4);
+  };
+  lines.push_back("moments I1 : I2 : I3 = " + ratio(0) + " : " + ratio(1) + " : 1" +
+                  (b.moments_fixed ? " (given)" : "") +
                   (fit.drag == physics::DragLaw::none
                        ? ", no drag"
                        : ", " + std::string(physics::to_string(fit.drag)) + " drag"));

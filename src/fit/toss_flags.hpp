@@ -20,9 +20,10 @@ namespace bookspin::fit {
 /// fewer than 20 such samples.
 std::optional<double> rest_noise(const GyroRecording& recording, const FlightSearch& search);
 
-/// The flag of toss `data` (its residual r_i = ω_fitted − ω_measured at each of data.tau): a reading beyond any gyroscope's range, a flight the range
-/// clipped to under a quarter of its samples, or what the residual looks like against the
-/// flight's median 50 ms block and `noise` (rest_noise); empty for a clean toss. One line.
+/// The flag of toss `data` (its residual r_i = ω_fitted − ω_measured at each of data.tau): a
+/// reading beyond any gyroscope's range, a flight the range clipped to under a quarter of its
+/// samples, or what the residual looks like against the flight's median 50 ms block and `noise`
+/// (rest_noise); empty for a clean toss. One line.
 std::string toss_flag(const TossData& data, const std::vector<Eigen::Vector3d>& residual,
                       const Saturation& saturation, std::optional<double> noise);
 

@@ -35,8 +35,8 @@ struct SolveOptions {
 };
 
 struct Solved {
-  double cost = 0.0;   ///< half the sum of the squared residuals, (rad/s)²
-  int residuals = 0;   ///< how many (three per sample fitted)
+  double cost = 0.0;    ///< half the sum of the squared residuals, (rad/s)²
+  int residuals = 0;    ///< how many (three per sample fitted)
   bool usable = false;  ///< the solver's solution is usable and finite
 };
 

@@ -123,3 +123,24 @@ TEST(ReadNumber, ReadsWhatFromCharsReads) {
     }
   }
 }
+
+namespace bookspin {
+namespace {
+
+// A value ± σ for a person (number_text.hpp, plus_minus): σ to two significant digits, the
+// value to σ's last place; the expected texts worked by hand.
+TEST(PlusMinus, TheValueStopsAtSigmasSecondSignificantDigit) {
+  EXPECT_EQ(plus_minus(0.3482571, 0.0000269191), "0.348257 ± 0.000027");
+  EXPECT_EQ(plus_minus(0.170234567, 0.000123), "0.17023 ± 0.00012");
+  EXPECT_EQ(plus_minus(1.23456, 0.0996), "1.23 ± 0.10");  // σ rounds up a place: 0.10
+  EXPECT_EQ(plus_minus(171.4, 12.3), "171 ± 12");
+  EXPECT_EQ(plus_minus(1714.0, 123.0), "1710 ± 120");     // σ above 100: tens
+  EXPECT_EQ(plus_minus(-0.0001, 0.01), "0.000 ± 0.010");  // no "-0.000"
+  EXPECT_EQ(plus_minus(-0.25, 0.031), "-0.250 ± 0.031");
+  // No σ to round to: four significant digits, and a σ of 0 said.
+  EXPECT_EQ(plus_minus(5.0, 0.0), "5 ± 0");
+  EXPECT_EQ(plus_minus(0.123456, std::nan("")), "0.1235");
+}
+
+}  // namespace
+}  // namespace bookspin

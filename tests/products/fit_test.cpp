@@ -73,7 +73,7 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
             "0.03125,0.0625,0.015625\n");
   EXPECT_EQ(fit::fit_summary(result).at(0),
             "bias (rad/s, the mean of 100 samples where the phone lay still, 0.25–1.25 s, ± their "
-            "scatter): 0.5000 ± 0.0312, -0.2500 ± 0.0625, 0.1250 ± 0.0156");
+            "scatter): 0.500 ± 0.031, -0.250 ± 0.062, 0.125 ± 0.016");
   // No still stretch: the bias fitted from the flights (all of it the correction), its σ the
   // fit's standard error.
   part.rest = {};
@@ -85,8 +85,7 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
             std::string::npos);
   EXPECT_EQ(fit::fit_summary(result).at(0),
             "no still stretch in the recording: the bias (rad/s) is fitted from the flights: "
-            "0.5000 ± "
-            "0.2500, -0.2500 ± 0.5000, 0.1250 ± 0.7500");
+            "0.50 ± 0.25, -0.25 ± 0.50, 0.12 ± 0.75");
   // Neither: no bias removed, no σ.
   part.bias = part.bias_correction = Eigen::Vector3d::Zero();
   part.bias_fitted_sigma.reset();
