@@ -12,8 +12,9 @@ namespace bookspin::charts {
 
 namespace {
 
-// ω components in the colours of the rendered body axes (x red, y green, z blue).
-constexpr Rgb kRed{0.85, 0.15, 0.10}, kGreen{0.10, 0.60, 0.20}, kBlue{0.15, 0.35, 0.90};
+// ω components in the colours of the rendered body axes (common/colour.hpp).
+constexpr Rgb kRed = kComponentColours[0], kGreen = kComponentColours[1],
+              kBlue = kComponentColours[2];
 constexpr Rgb kPurple{0.50, 0.20, 0.60}, kOrange{0.90, 0.55, 0.00}, kTeal{0.00, 0.55, 0.60},
     kPink{0.80, 0.30, 0.55};
 

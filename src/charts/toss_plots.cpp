@@ -6,6 +6,7 @@
 #include <string>
 
 #include "charts/sphere_view.hpp"
+#include "common/colour.hpp"
 #include "overlay/plot.hpp"
 
 namespace bookspin::charts {
@@ -35,16 +36,19 @@ RgbaImage toss_image(const fit::TossChart& chart, int width, int height) {
   spec.title =
       "toss " + std::to_string(chart.toss + 1) + ": measured (dots) and fitted exact motion";
   spec.x_label = "time (s)";
-  spec.y_label = "omega, phone frame (rad/s)";
+  spec.y_label = "ω, phone frame (rad/s)";
   const char* names[] = {"x", "y", "z"};
   double peak = 0.0;
   for (const auto& w : chart.measured) peak = std::max(peak, w.cwiseAbs().maxCoeff());
   for (int c = 0; c < 3; ++c) {
     overlay::Series measured, fitted;
-    overlay::palette_colour(c, measured.r, measured.g, measured.b);
-    overlay::palette_colour(c, fitted.r, fitted.g, fitted.b);
-    measured.label = std::string("measured omega_") + names[c];
-    fitted.label = std::string("fitted omega_") + names[c];
+    // ω_x, ω_y, ω_z in their colours everywhere (common/colour.hpp).
+    const Rgb colour = kComponentColours[static_cast<std::size_t>(c)];
+    measured.r = fitted.r = colour.r;
+    measured.g = fitted.g = colour.g;
+    measured.b = fitted.b = colour.b;
+    measured.label = std::string("measured ω_") + names[c];
+    fitted.label = std::string("fitted ω_") + names[c];
     measured.dots = true;
     measured.x = chart.t;
     fitted.x = chart.curve_t;

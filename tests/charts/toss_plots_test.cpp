@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/colour.hpp"
 #include "fit/synthetic_recording.hpp"
 #include "overlay/plot.hpp"
 
@@ -24,7 +25,9 @@ std::vector<int> columns_of(const RgbaImage& image, int r, int g, int b) {
   return count;
 }
 
-TEST(TossPlots, ComponentsInThePaletteAndTheFlipsMarked) {
+// ω_x, ω_y, ω_z in red, green and blue (common/colour.hpp, kComponentColours: the clips', the
+// page's and the notebook's colours), each drawn; the flips marked.
+TEST(TossPlots, ComponentsInTheirColoursAndTheFlipsMarked) {
   const auto synthetic = fit::test::make_recording(
       fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 4);
   fit::GyroRecording read;
@@ -37,10 +40,9 @@ TEST(TossPlots, ComponentsInThePaletteAndTheFlipsMarked) {
   ASSERT_EQ(image.width, 1000);
   ASSERT_EQ(image.height, 500);
   for (int c = 0; c < 3; ++c) {
-    double r, g, b;
-    overlay::palette_colour(c, r, g, b);
-    const std::vector<int> cols =
-        columns_of(image, int(255 * r + 0.5), int(255 * g + 0.5), int(255 * b + 0.5));
+    const Rgb colour = kComponentColours[static_cast<std::size_t>(c)];
+    const std::vector<int> cols = columns_of(image, int(255 * colour.r + 0.5),
+                                             int(255 * colour.g + 0.5), int(255 * colour.b + 0.5));
     int total = 0;
     for (int n : cols) total += n;
     EXPECT_GT(total, 1500) << "component " << c;

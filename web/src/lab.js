@@ -8,9 +8,9 @@
 // module hands bytes to the module and writes out its answer.
 import { recordingsOf, takeFiles } from './file_drop.js';
 import { plusMinus, significant, vectorWithSigma, withSigma } from './precision.js';
+import { OMEGA_COLOURS } from './colours.js';
 
 const $ = (id) => document.getElementById(id);
-const OMEGA_COLOURS = ['#ff6060', '#60d060', '#6090ff'];
 /** What each toss column says (docs/outputs.md, "The fit"). */
 const TOSS_WORDS = {
   recording: 'its recording', t_start: 'start (s)', t_end: 'end (s)', omega0_x: 'ω0 x (rad/s)', omega0_y: 'ω0 y (rad/s)',

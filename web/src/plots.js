@@ -5,6 +5,7 @@
 // body's 1e-16 energy drift, an orthonormal matrix's 1e-16 shape error) is drawn as the flat
 // line it is, not stretched to fill the panel.
 import { CANVAS_2D } from './sphere.js';
+import { OMEGA_COLOURS } from './colours.js';
 
 /** [title, values of a record, the smallest half-range drawn] */
 const PANELS = [
@@ -12,7 +13,6 @@ const PANELS = [
   ['energy drift (E − E0)/E0', (h, r) => [(h.E - r.E0) / r.E0], 1e-6],
   ['shape error', (h) => [h.shape], 1e-6],
 ];
-const OMEGA_COLOURS = ['#ff6060', '#60d060', '#6090ff'];
 const FONT_PX = 16;
 const DASH = [6, 4];  // the second run's lines
 
