@@ -143,9 +143,13 @@ fit::GyroRecording read_given(const std::string& file_name, const std::string& b
   // a Raw Data.csv's recording is named after its folder, as on the command line.
   const std::filesystem::path given(file_name);
   const std::filesystem::path name = given.filename();
-  const std::filesystem::path folder = given.parent_path().filename();
+  std::filesystem::path folder = given.parent_path().filename();
   if (name.empty() || name == "." || name == ".." || folder == "." || folder == "..")
     throw InputError("\"" + file_name + "\": not a file name");
+  // A Raw Data.csv picked without its folder leaves no folder's name to go by: its recording
+  // is "recording" ("recording-2", … for the others of a class), not the memory slot's number.
+  if (folder.empty() && name == "Raw Data.csv")
+    folder = slot == 0 ? "recording" : "recording-" + std::to_string(slot + 1);
   const std::filesystem::path path = folder / name;
   const std::filesystem::path here = std::filesystem::path(kFolder) / std::to_string(slot);
   std::filesystem::create_directories(here / folder);

@@ -267,6 +267,17 @@ def main():
                   f"difference {worst:.1e} of its scale), summary and scenes equal, flagged "
                   f"{flags} ({time.monotonic() - t0:.1f} s)")
 
+        # 1b. A Raw Data.csv picked alone (no folder name to go by): its recording, and so its
+        # toss scenes ("Play beside the measurement", ?scene=…), are named "recording", not
+        # after the page's memory slot.
+        got = fit_in_page(driver, base_url, "recordings/sample-raw/Raw Data.csv", "Raw Data.csv", "linear")
+        if not got["ok"]:
+            fail(f"Raw Data.csv alone: the page refused it: {got['error']}")
+        names = [scene["name"] for scene in got["r"]["scenes"]]
+        if not names or names[0] != "recording-toss1":
+            fail(f"Raw Data.csv alone: its toss scenes are named {names}, not recording-toss1, …")
+        print(f"Raw Data.csv alone: scenes {names}")
+
         # 2. Bad recordings: the command line's one line.
         for name, line in bad_cases.items():
             got = fit_in_page(driver, base_url, "recordings/" + name, name, "linear")

@@ -39,7 +39,8 @@ TEST(ComponentColours, ThePageAndTheNotebookDrawOmegaInTheClipsColours) {
   for (const Rgb& c : kComponentColours) {
     char hex[8];
     std::snprintf(hex, sizeof hex, "#%02x%02x%02x", static_cast<int>(std::lround(255 * c.r)),
-                  static_cast<int>(std::lround(255 * c.g)), static_cast<int>(std::lround(255 * c.b)));
+                  static_cast<int>(std::lround(255 * c.g)),
+                  static_cast<int>(std::lround(255 * c.b)));
     expected.push_back(hex);
   }
   // x red, y green, z blue: each component's own channel the largest.
