@@ -108,8 +108,8 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
     f.push_back("orientation error " + short_number(c.orientation_error) + " rad");
   if (c.stable_spin && c.tumble_time) f.push_back("tumbles at t = " + short_number(*c.tumble_time));
   if (c.stable_spin && c.separatrix_approach > limits.separatrix_approach)
-    f.push_back("2E*I2/L^2 " + short_number(c.separatrix_approach) +
-                " of the way to the separatrix");
+    f.push_back("r = 2E·I2/L² " + short_number(100.0 * c.separatrix_approach) +
+                " % of the way to the separatrix");
   return c;
 }
 

@@ -145,15 +145,17 @@ struct LeagueColumn {
   std::vector<analysis::JudgedMotion> judged;
 };
 
-/// "pass 6/6", "fail 0/6", "fail, tumbles at 42.6": a league cell (the docs' table).
+/// "pass 6/6" (turn-overs: the motion's / the exact motion's), "fail 0/6", "pass, no
+/// turn-over" (a stable spin kept), "fail, tumbles at t = 42.6": a league cell (the docs' table).
 std::string league_cell(const analysis::Conformance& c) {
   std::string cell = c.pass() ? "pass" : "fail";
   if (c.stable_spin && c.tumble_time) {
     std::ostringstream t;
     t.precision(3);
     t << *c.tumble_time;
-    return cell + ", tumbles at " + t.str();
+    return cell + ", tumbles at t = " + t.str();
   }
+  if (c.flips == 0 && c.flips_exact == 0) return cell + ", no turn-over";
   return cell + " " + std::to_string(c.flips) + "/" + std::to_string(c.flips_exact);
 }
 
@@ -175,8 +177,9 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           "<h1>Does the engine get the flip right? The league table</h1>\n"
           "<p>Each motion judged against the exact motion from the same start "
           "(<code>bookspin flipcheck</code>, docs/flipcheck.md): pass or fail against the "
-          "documented thresholds, the turn-overs counted against the exact count, and for a "
-          "stable spin the time it starts to tumble; under a failure, its reasons. Every "
+          "documented thresholds, the turn-overs counted against the exact count (6/6: the "
+          "motion's six of the exact motion's six), and for a stable spin the time it starts "
+          "to tumble; under a failure, its reasons. Every "
           "number is in <a href=\"flipcheck-league.csv\">flipcheck-league.csv"
           "</a>.</p>\n<table>\n<tr><th>motion</th>";
   for (const LeagueColumn& col : columns)

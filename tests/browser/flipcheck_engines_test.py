@@ -211,7 +211,7 @@ def main():
             r = table[s][m]
             cell = f"{r['verdict']} {r['flips']}/{r['flips_exact']}, E {float(r['energy_drift']):.2g}"
             if r["tumble_time"]:
-                cell += f", tumbles at {float(r['tumble_time']):.3g}"
+                cell += f", tumbles at t = {float(r['tumble_time']):.3g}"
             cells.append(cell)
         print(f"| {m} | " + " | ".join(cells) + " |")
     for f in failures:
