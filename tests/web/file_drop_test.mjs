@@ -75,3 +75,14 @@ test('a file chosen on its own is never skipped: the fit says what is wrong with
   assert.deepEqual(recordings.map((r) => r.path), ['notes.txt', 'Raw Data.csv']);
   assert.deepEqual(skipped, []);
 });
+
+test('an export\'s meta files picked beside its Raw Data.csv go with it, not as recordings', () => {
+  // A file input gives names alone: the three files of one export chosen together.
+  const { recordings, skipped } = recordingsOf(['Raw Data.csv', 'time.csv', 'device.csv']);
+  assert.deepEqual(recordings, [
+    { path: 'Raw Data.csv', index: 0, meta: [{ name: 'time.csv', index: 1 }, { name: 'device.csv', index: 2 }] },
+  ]);
+  assert.deepEqual(skipped, []);
+  // Without a Raw Data.csv beside it, a time.csv is a file of its own: the fit says what it is.
+  assert.deepEqual(recordingsOf(['time.csv', 'a.zip']).recordings.map((r) => r.path), ['time.csv', 'a.zip']);
+});

@@ -3,18 +3,21 @@
 // (docs/phone-lab.md, "A class's recordings").
 
 /** Calls `onFiles(files, paths)` (an array of File, one or more, and each one's path: its name,
- * or for a file of a dropped folder the folder's path and its name, "class/anna/Raw Data.csv")
- * with the files chosen in the input `input` or dropped on `zone` (the zone marked 'over' while
+ * or for a file of a dropped or chosen folder the folder's path and its name,
+ * "class/anna/Raw Data.csv") with the files chosen in the input `input` (or each of an array of
+ * inputs: one for files, one with webkitdirectory for a folder) or dropped on `zone` (the zone marked 'over' while
  * files are held over it). */
 export function takeFiles(input, zone, onFiles) {
   const hand = (files, paths) => { if (files.length) onFiles(files, paths); };
   // Emptied once taken: the same file chosen again is taken again, and files chosen next
-  // replace these rather than join them.
-  input.addEventListener('change', (e) => {
-    const files = Array.from(e.target.files || []);
-    hand(files, files.map((f) => f.webkitRelativePath || f.name));
-    e.target.value = '';
-  });
+  // replace these rather than join them. `input` may be several (files, and a folder's).
+  for (const one of [input].flat()) {
+    one.addEventListener('change', (e) => {
+      const files = Array.from(e.target.files || []);
+      hand(files, files.map((f) => f.webkitRelativePath || f.name));
+      e.target.value = '';
+    });
+  }
   zone.addEventListener('dragover', (e) => { e.preventDefault(); zone.classList.add('over'); });
   zone.addEventListener('dragleave', () => zone.classList.remove('over'));
   zone.addEventListener('drop', (e) => {
@@ -61,7 +64,8 @@ async function walk(entry, folder, found) {
 /** The recordings among files at `paths` (indices into them), as `bookspin fit` takes them:
  * {recordings: [{path, index, meta: [{name, index}]}], skipped: [path]}.
  * - A phyphox export's `Raw Data.csv` is one recording, named after its folder; its folder's
- *   `meta/time.csv` and `meta/device.csv` go with it (the pauses, the gyroscope's range).
+ *   `meta/time.csv` and `meta/device.csv` go with it (the pauses, the gyroscope's range), and
+ *   so do a `time.csv` and a `device.csv` picked beside it.
  * - Any other `.csv` or `.zip` is one recording.
  * - Inside a folder, anything else (an export's other files, `.DS_Store`, a photo) is skipped
  *   and named; a file chosen on its own is never skipped: the fit says what is wrong with it. */
@@ -77,8 +81,11 @@ export function recordingsOf(paths) {
     const folder = folderOf(path);
     const name = path.slice(folder.length ? folder.length + 1 : 0);
     const meta = folder.toLowerCase() === 'meta' || folder.toLowerCase().endsWith('/meta');
-    const owner = meta ? folderOf(folder) : null;
-    if (meta && exports.has(owner) && ['time.csv', 'device.csv'].includes(name.toLowerCase())) {
+    // An export's meta/ files, in its meta/ folder or picked beside its Raw Data.csv (a file
+    // input gives names alone: "Raw Data.csv", "time.csv", "device.csv").
+    const owner = meta ? folderOf(folder) : folder;
+    const metaName = ['time.csv', 'device.csv'].includes(name.toLowerCase());
+    if (metaName && exports.has(owner) && (meta || !isExport(index))) {
       if (!byFolder.has(owner)) byFolder.set(owner, []);
       byFolder.get(owner).push({ name: name.toLowerCase(), index });
     } else if (folder && (meta || !/\.(csv|zip)$/.test(lower[index]))) {

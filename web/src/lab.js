@@ -112,7 +112,7 @@ export class LabPanel {
     $('labOpen').addEventListener('click', () => this.open());
     $('labClose').addEventListener('click', () => this.close());
     window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('lab').hidden) this.close(); });
-    takeFiles($('labFile'), $('labDrop'), (files, paths) => this.fitFiles(files, paths));
+    takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
     // A link to the panel: explorer.html#lab opens it (the gallery's lab section links it).
     if (location.hash === '#lab') queueMicrotask(() => this.open());
   }
