@@ -3,13 +3,16 @@
 program (`bookspin --version`), the Python module and its wheel's metadata, the npm package's
 package.json (where built), the example project that pins the npm package and every version the
 docs name in a package's file name all say the same. The places that derive it take it from
-VERSION at build time and state none of their own.
+VERSION at build time and state none of their own. And VERSION's kit line (the scenarios and
+the judge's rules) does not change under the same version against the VERSION committed at
+HEAD, its first parent and its merge base with main, where git has them.
 
 Usage: check_versions.py SOURCE_DIR BUILD_DIR
 """
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -69,6 +72,35 @@ for doc in [source / "README.md", *sorted((source / "docs").glob("*.md"))]:
     for n, line in enumerate(doc.read_text().splitlines(), 1):
         for m in names.finditer(line):
             same(f"{doc.relative_to(source)}:{n}", next(g for g in m.groups() if g))
+
+# The kit (the scenarios and the judge's rules, which Flipcheck.TheKitIsTheOneItsVersionRecords
+# holds to VERSION's kit line) changes only with the version: against the committed VERSION of
+# HEAD, its first parent and its merge base with main (where git and they are there), a new kit
+# line under the same version is a kit changed without a bump.
+def committed_version(commit):
+    if shutil.which("git") is None:
+        return None
+    done = subprocess.run(["git", "-C", str(source), "show", f"{commit}:VERSION"],
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        return None
+    v = re.findall(r"^version (\S+)$", done.stdout, re.M)
+    k = re.findall(r"^kit (\S+)$", done.stdout, re.M)
+    return (v[0], k[0]) if len(v) == 1 and len(k) == 1 else None
+
+
+bases = ["HEAD", "HEAD^1"]
+if shutil.which("git"):
+    base = subprocess.run(["git", "-C", str(source), "merge-base", "HEAD", "main"],
+                          capture_output=True, text=True)
+    if base.returncode == 0:
+        bases.append(base.stdout.strip())
+for commit in bases:
+    old = committed_version(commit)
+    if old and old[0] == version and old[1] != kits[0]:
+        problems.append(f"VERSION: the kit changed since {commit} ({old[1][:12]}… -> "
+                        f"{kits[0][:12]}…) and the version did not ({version}): scenario or "
+                        "judge rules changed: bump the version")
 
 if problems:
     print("versions disagree (one version, from VERSION: docs/flipcheck.md, \"Versions\"):")
