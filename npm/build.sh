@@ -17,7 +17,9 @@ out="$build/npm"
 command -v em++ >/dev/null || { echo "npm/build.sh: em++ not found (apt-get install emscripten)" >&2; exit 3; }
 command -v npm >/dev/null || { echo "npm/build.sh: npm not found (scripts/install-deps.sh)" >&2; exit 3; }
 [ -x "$build/bookspin" ] || { echo "npm/build.sh: $build/bookspin not built" >&2; exit 3; }
-version="$(sed -n 's/^project(bookspin VERSION \([0-9.]*\).*/\1/p' "$root/CMakeLists.txt")"
+# The one version (VERSION, docs/flipcheck.md "Versions"): package.json's and the WebAssembly's.
+version="$(sed -n 's/^version \([0-9]*\.[0-9]*\.[0-9]*\)$/\1/p' "$root/VERSION")"
+[ -n "$version" ] || { echo "npm/build.sh: VERSION has no line \"version MAJOR.MINOR.PATCH\"" >&2; exit 1; }
 # Boost reached through the page's build's include folder (web/build-wasm.sh), so that its
 # compiler lines, and ccache's keys, are the page's: a file compiled for one is not compiled again.
 include="$build/web/include"
@@ -33,7 +35,7 @@ flags=(-std=c++20 -O3 -DNDEBUG -I"$root/src" -I/usr/include/eigen3 -isystem "$in
 # reader, no fit.
 sources=("$root"/src/physics/*.cpp "$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp"
          "$root/src/jobs/motion_csv.cpp" "$root/src/jobs/exact_motion.cpp" "$here/flipcheck_bindings.cpp")
-for name in errors number_text csv_writer json_writer json_string text_lines; do
+for name in errors number_text csv_writer json_writer json_string text_lines version; do
   sources+=("$root/src/common/$name.cpp")
 done
 objs=()
@@ -41,9 +43,16 @@ pids=()
 for src in "${sources[@]}"; do
   obj="$out/obj/$(basename "$(dirname "$src")")-$(basename "${src%.cpp}").o"
   objs+=("$obj")
-  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis" \
+  extra=()
+  stale=0
+  # The version on its one file, as src/common/CMakeLists.txt compiles it.
+  if [ "$src" = "$root/src/common/version.cpp" ]; then
+    extra=(-DBOOKSPIN_VERSION="\"$version\"")
+    [ "$root/VERSION" -nt "$obj" ] && stale=1
+  fi
+  if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis" \
        "$root/src/jobs" "$root/src/common" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
-    em++ "${flags[@]}" -c "$src" -o "$obj" &
+    em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
     pids+=($!)
     if [ ${#pids[@]} -ge "${JOBS:-2}" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
   fi

@@ -20,6 +20,7 @@
 #include "analysis/judgement.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
+#include "common/version.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
 
@@ -75,9 +76,12 @@ Scenario scenario_of(const val& json) {
 /// A judged motion as JavaScript: {columns, cells (the judgement CSV's row as the command line
 /// writes it, as text), csv (its header and that row, as the command line writes them), line
 /// (analysis::verdict_line), failures (one phrase each), pass}.
-val judged(const Scenario& s, const bookspin::jobs::MotionFile& motion, const std::string& name) {
+/// `sha256` is the scenario's: of scenario_file()'s text, hashed by index.mjs (node:crypto).
+val judged(const Scenario& s, const std::string& sha256, const bookspin::jobs::MotionFile& motion,
+           const std::string& name) {
   const bookspin::analysis::Conformance c = bookspin::analysis::judge_motion(s, motion.rows);
-  const bookspin::CsvTable table = bookspin::analysis::judgement_table(s, {{name, name, c}});
+  const bookspin::CsvTable table =
+      bookspin::analysis::judgement_table(s, sha256, {{name, name, c}});
   val columns = val::array(), cells = val::array(), failures = val::array();
   for (const std::string& column : table.columns) columns.call<void>("push", column);
   const std::string csv = bookspin::csv_text(table, "flipcheck judge CSV");
@@ -97,18 +101,18 @@ val judged(const Scenario& s, const bookspin::jobs::MotionFile& motion, const st
 
 /// `bookspin flipcheck judge` of the motion CSV `text`: `file` names it in messages (the path as
 /// given), `name` in the judgement (the file's name).
-val judge_csv(const val& json, const std::string& text, const std::string& file,
-              const std::string& name) {
+val judge_csv(const val& json, const std::string& sha256, const std::string& text,
+              const std::string& file, const std::string& name) {
   return guarded([&] {
     const Scenario s = scenario_of(json);
-    return judged(s, bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps), name);
+    return judged(s, sha256, bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps), name);
   });
 }
 
 /// The same of a motion given as flat arrays: t (N), q (4N: w, x, y, z), ω world (3N);
 /// `what` names them in messages, `name` is the judgement's motion.
-val judge_arrays(const val& json, const val& t_js, const val& q_js, const val& w_js,
-                 const std::string& what, const std::string& name) {
+val judge_arrays(const val& json, const std::string& sha256, const val& t_js, const val& q_js,
+                 const val& w_js, const std::string& what, const std::string& name) {
   return guarded([&] {
     const Scenario s = scenario_of(json);
     const std::vector<double> t = emscripten::convertJSArrayToNumberVector<double>(t_js);
@@ -126,7 +130,7 @@ val judge_arrays(const val& json, const val& t_js, const val& q_js, const val& w
     for (std::size_t i = 0; i < n; ++i)
       rows[i] = {t[i],         q[4 * i], q[4 * i + 1], q[4 * i + 2],
                  q[4 * i + 3], w[3 * i], w[3 * i + 1], w[3 * i + 2]};
-    return judged(s,
+    return judged(s, sha256,
                   bookspin::jobs::motion_from_rows(rows, bookspin::jobs::OmegaFrame::world, what,
                                                    s.dt, s.steps),
                   name);
@@ -179,9 +183,19 @@ val export_files(const val& json) {
   });
 }
 
+/// The bytes of OUT/<scenario>.json as `bookspin flipcheck export` writes them, without the exact
+/// motion: what a judgement's scenario_sha256 is of (docs/flipcheck.md, "Versions").
+val scenario_file(const val& json) {
+  return guarded([&] { return val(bookspin::jobs::scenario_file(scenario_of(json))); });
+}
+
+std::string version() { return bookspin::version(); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(flipcheck_npm) {
+  emscripten::function("scenarioFile", &scenario_file);
+  emscripten::function("version", &version);
   emscripten::function("judgeCsv", &judge_csv);
   emscripten::function("judgeArrays", &judge_arrays);
   emscripten::function("exactMotion", &exact_motion);

@@ -13,6 +13,9 @@ Image = npt.NDArray[np.uint8]
 SceneArg = Union[str, os.PathLike[str]]
 Overrides = Optional[Mapping[str, Union[Scalar, Sequence[Scalar]]]]
 
+__version__: str
+"""bookspin's version (VERSION): the wheel's, `bookspin --version`'s and a judgement's."""
+
 class Error(ValueError):
     """Bad input: the command line's one line ("FILE:LINE: KEY: reason")."""
 

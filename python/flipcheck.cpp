@@ -4,6 +4,8 @@
 // as jobs makes them for `bookspin flipcheck export`, judge the judgement analysis makes for
 // `bookspin flipcheck judge`, of a motion given as arrays (jobs::motion_from_rows: the motion
 // file's rules).
+#include "products/flipcheck.hpp"
+
 #include <dlfcn.h>
 
 #include <algorithm>
@@ -146,7 +148,9 @@ where the command line puts the file's name), verdict ("pass" or "fail"), stride
 flips, flips_exact, stable_spin (int), start_error, energy_drift, L_drift, first_flip,
 first_flip_exact, first_flip_error, orientation_error, tumble_time, separatrix_ratio_drift,
 separatrix_approach (float, None where the CSV's cell is empty), failures (str, "; " between
-reasons, "" for a pass).
+reasons, "" for a pass), version (str: bookspin.__version__, the version that judged) and
+scenario_sha256 (str: the SHA-256 of the scenario's JSON as `bookspin flipcheck export` writes
+it).
 
 Arguments (float64, or anything numpy turns into it):
   scenario     a name of scenarios() or a path to a scene file
@@ -160,12 +164,13 @@ GIL is released while it judges.)";
 
 /// A judgement CSV cell as Python: a number (None for an empty cell), or its text (an int where
 /// it is a whole number: the counts and the flag).
-py::object cell_value(const CsvCell& cell) {
+py::object cell_value(const std::string& column, const CsvCell& cell) {
   if (const CsvNumber* number = std::get_if<CsvNumber>(&cell))
     return number->value ? py::object(py::float_(*number->value)) : py::object(py::none());
   const std::string& text = std::get<std::string>(cell);
-  const bool whole = !text.empty() && std::all_of(text.begin(), text.end(),
-                                                  [](char c) { return c >= '0' && c <= '9'; });
+  const bool whole =
+      column != "version" && column != "scenario_sha256" && !text.empty() &&
+      std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
   if (whole) return py::int_(std::stoll(text));
   return py::str(text);
 }
@@ -198,12 +203,13 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
     const jobs::MotionFile motion = jobs::motion_from_rows(
         rows, jobs::OmegaFrame::world, "flipcheck.judge", scenario.dt, scenario.steps);
     const analysis::Conformance result = analysis::judge_motion(scenario, motion.rows);
-    table = analysis::judgement_table(scenario, {{{}, motion_name, result}});
+    table = analysis::judgement_table(scenario, products::scenario_sha256(scenario),
+                                      {{{}, motion_name, result}});
     out.pass = result.pass();
     out.line = scenario.name + " " + motion_name + ": " + analysis::verdict_line(result);
   }
   for (std::size_t c = 0; c < table.columns.size(); ++c)
-    out.row[py::str(table.columns[c])] = cell_value(table.rows.at(0).at(c));
+    out.row[py::str(table.columns[c])] = cell_value(table.columns[c], table.rows.at(0).at(c));
   return out;
 }
 

@@ -2,6 +2,7 @@
 // simulate.cpp, flipcheck.cpp, fit.cpp, frames.cpp, render.cpp), the errors mapped in one
 // (errors.cpp).
 #include "bindings.hpp"
+#include "common/version.hpp"
 
 PYBIND11_MODULE(bookspin, m) {
   m.doc() =
@@ -11,6 +12,9 @@ PYBIND11_MODULE(bookspin, m) {
       "(bookspin.frames) and its clip (bookspin.render), the same pictures as bookspin render. "
       "Bad input raises bookspin.Error (a ValueError) with the command "
       "line's one line. docs/python.md.";
+  // The one version (VERSION, docs/flipcheck.md "Versions"): the wheel's and `bookspin
+  // --version`'s.
+  m.attr("__version__") = bookspin::version();
   bookspin::python::add_errors(m);
   bookspin::python::add_exact_motion(m);
   bookspin::python::add_simulate(m);

@@ -39,9 +39,13 @@ pids=()
 pure=("$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp"
       "$root/src/jobs/motion_csv.cpp" "$root/src/jobs/exact_motion.cpp"
       "$root/src/clip/body_drawing.cpp")
-for name in errors number_text csv_writer json_writer json_string text_lines text_file; do
+for name in errors number_text csv_writer json_writer json_string text_lines text_file version; do
   pure+=("$root/src/common/$name.cpp")
 done
+# The one version (VERSION, docs/flipcheck.md "Versions"), on its one file as
+# src/common/CMakeLists.txt compiles it: the page shows it and its judgements record it.
+version="$(sed -n 's/^version \([0-9]*\.[0-9]*\.[0-9]*\)$/\1/p' "$root/VERSION")"
+[ -n "$version" ] || { echo "build-wasm: VERSION has no line \"version MAJOR.MINOR.PATCH\"" >&2; exit 1; }
 # For the "Phone-toss lab" panel: the fit stage whole (the recording's reader, the flights, the
 # fit, its tables, each toss's chart data and scene values: its report): no chart drawn, no
 # file written.
@@ -51,7 +55,12 @@ for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/ju
   objs+=("$obj")
   extra=()
   case " ${fit_sources[*]} " in *" $src "*) extra=("${fit_flags[@]}");; esac
-  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" \
+  stale=0
+  if [ "$src" = "$root/src/common/version.cpp" ]; then
+    extra=(-DBOOKSPIN_VERSION="\"$version\"")
+    [ "$root/VERSION" -nt "$obj" ] && stale=1
+  fi
+  if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" \
        -name '*.hpp' -newer "$obj" -print -quit)" ]; then
     em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
     pids+=($!)

@@ -18,6 +18,7 @@
 #include "analysis/judgement.hpp"
 #include "body_spec.hpp"
 #include "common/errors.hpp"
+#include "common/version.hpp"
 #include "guarded.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
@@ -59,15 +60,18 @@ Scenario scenario_of(const val& spec) {
 }
 
 /// The motion CSV `text` (named `file`, as `judge` names it: the file's name) judged against
-/// the exact motion of the scenario `spec`: {columns, cells (the judgement CSV's row, as text:
+/// the exact motion of the scenario `spec`, whose scenario_sha256 is `sha256` (of
+/// scenario_file()'s text, hashed by the page, web/src/judge.js): {columns, cells (the judgement CSV's row, as text:
 /// analysis::judgement_table), line (analysis::verdict_line), failures}, or {error}.
-val judge_motion(const val& spec, const std::string& text, const std::string& file) {
+val judge_motion(const val& spec, const std::string& sha256, const std::string& text,
+                 const std::string& file) {
   return guarded([&] {
     const Scenario s = scenario_of(spec);
     const bookspin::jobs::MotionFile motion =
         bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps);
     const bookspin::analysis::Conformance c = bookspin::analysis::judge_motion(s, motion.rows);
-    const bookspin::CsvTable table = bookspin::analysis::judgement_table(s, {{file, file, c}});
+    const bookspin::CsvTable table =
+        bookspin::analysis::judgement_table(s, sha256, {{file, file, c}});
     val columns = val::array(), cells = val::array(), failures = val::array();
     for (const std::string& column : table.columns) columns.call<void>("push", column);
     // The row as the command line writes it (the one CSV writer), read back into its cells.
@@ -125,9 +129,19 @@ val export_files(const val& spec) {
   });
 }
 
+/// The bytes of OUT/<scenario>.json as `bookspin flipcheck export` writes them (without the
+/// exact motion), or {error}: what a judgement's scenario_sha256 is of.
+val scenario_file(const val& spec) {
+  return guarded([&] { return val(bookspin::jobs::scenario_file(scenario_of(spec))); });
+}
+
+std::string version() { return bookspin::version(); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(bookspin_judge) {
+  emscripten::function("flipcheckScenarioFile", &scenario_file);
+  emscripten::function("version", &version);
   emscripten::function("judgeMotion", &judge_motion);
   emscripten::function("motionPoses", &motion_poses);
   emscripten::function("flipcheckExport", &export_files);

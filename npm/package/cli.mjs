@@ -7,10 +7,11 @@
 // command line it keeps no manifest: it judges and writes every time.
 import { mkdirSync, readFileSync, renameSync, statSync, writeFileSync } from "node:fs";
 import { basename } from "node:path";
-import { exportFiles, judgeCsv, scenario, scenarios } from "./index.mjs";
+import { exportFiles, judgeCsv, scenario, scenarios, version } from "./index.mjs";
 
 const USAGE = `usage: flipcheck judge SCENARIO MOTION.csv... [-o DIR]
        flipcheck export SCENARIO... [-o DIR]
+       flipcheck --version
 SCENARIO: a scenario's name (${scenarios().join(", ")}) or a scenario JSON export wrote.
 DIR: the output directory (default out/flipcheck).`;
 
@@ -123,6 +124,7 @@ try {
   if (command === "judge") judgeCommand(rest);
   else if (command === "export") exportCommand(rest);
   else if (command === "-h" || command === "--help") console.log(USAGE);
+  else if (command === "--version") console.log(`flipcheck ${version}`);
   else throw new InputError(command === undefined ? `a command is required\n${USAGE}` : `unknown command "${command}"\n${USAGE}`);
 } catch (e) {
   if (e instanceof OutputError) {

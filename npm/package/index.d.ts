@@ -61,6 +61,10 @@ export interface Judgement {
   separatrix_approach: number | null;
   /** "; " between reasons, "" for a pass */
   failures: string;
+  /** bookspin's version that judged (this package's `version`) */
+  version: string;
+  /** SHA-256 (hex) of the scenario's JSON as `bookspin flipcheck export` writes it */
+  scenario_sha256: string;
   pass: boolean;
   /** the failures, one phrase each */
   reasons: string[];
@@ -71,7 +75,10 @@ export interface Judgement {
 /** A scenario's name, or a scenario JSON export wrote. */
 export type ScenarioArg = string | Scenario;
 
+/** bookspin's version: package.json's, `bookspin --version`'s, every judgement's. */
+export const version: string;
 export function scenarios(): string[];
+export function scenarioSha256(name: ScenarioArg): string;
 export function scenario(name: string): Scenario;
 export function exactMotion(name: ScenarioArg): ExactMotion;
 export function exportFiles(name: ScenarioArg): { json: string; csv: string };

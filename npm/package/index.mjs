@@ -3,16 +3,20 @@
 // bookspin's own C++ compiled to WebAssembly (flipcheck-wasm.cjs); the scenarios are the JSON
 // `bookspin flipcheck export` writes (scenarios/). Bad input throws an Error whose message is
 // the line `bookspin flipcheck` prints after "bookspin: error: ".
+import { createHash } from "node:crypto";
 import { readFileSync, readdirSync } from "node:fs";
 import createWasm from "./flipcheck-wasm.cjs";
 
 const wasm = await createWasm();
+/** bookspin's version, this package's (package.json's, `bookspin --version`'s): the WebAssembly's,
+ * compiled from bookspin's VERSION, and what every judgement records. */
+export const version = wasm.version();
 const scenarioFolder = new URL("./scenarios/", import.meta.url);
 const NAMES = readdirSync(scenarioFolder)
   .filter((f) => f.endsWith(".json"))
   .map((f) => f.slice(0, -".json".length))
   .sort();
-const TEXT_COLUMNS = new Set(["scenario", "motion", "verdict", "failures"]);
+const TEXT_COLUMNS = new Set(["scenario", "motion", "verdict", "failures", "version", "scenario_sha256"]);
 
 /** The wasm's answer, or its error thrown as an Error with the command line's one line. */
 function answer(result) {
@@ -35,6 +39,14 @@ export function scenario(name) {
 /** A scenario given by name, or as an exported scenario JSON (an object), as the wasm reads it. */
 function spec(nameOrJson) {
   return typeof nameOrJson === "object" && nameOrJson !== null ? nameOrJson : scenario(nameOrJson);
+}
+
+/** The SHA-256 (hex) of the scenario's JSON as `bookspin flipcheck export` writes it (for a
+ * scenario by name, the carried scenarios/<name>.json byte for byte): a judgement's
+ * scenario_sha256, as the command line's. */
+export function scenarioSha256(name) {
+  const text = answer(wasm.scenarioFile(spec(name)));
+  return createHash("sha256").update(text, "utf8").digest("hex");
 }
 
 /** The exact motion at every step n = 0 … steps: t (N), q (N×4 w, x, y, z, body → world),
@@ -74,11 +86,13 @@ function flat(values) {
 /** Judges a motion given as arrays: t (N), q (N×4: w, x, y, z, body → world, any norm but 0,
  * either sign), omegaWorld (N×3, rad per time unit): flat, row-major, or as rows. */
 export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {}) {
-  return judgement(answer(wasm.judgeArrays(spec(name), flat(t), flat(q), flat(omegaWorld), "judge", motion)));
+  const s = spec(name);
+  return judgement(answer(wasm.judgeArrays(s, scenarioSha256(s), flat(t), flat(q), flat(omegaWorld), "judge", motion)));
 }
 
 /** Judges a motion CSV's text, as `bookspin flipcheck judge SCENARIO FILE` judges the file
  * (`file` names it in messages and in the judgement's motion column). */
 export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}) {
-  return judgement(answer(wasm.judgeCsv(spec(name), String(text), file, motion)));
+  const s = spec(name);
+  return judgement(answer(wasm.judgeCsv(s, scenarioSha256(s), String(text), file, motion)));
 }

@@ -6,6 +6,8 @@
 
 #include "analysis/motion.hpp"
 #include "common/errors.hpp"
+#include "common/number_text.hpp"
+#include "common/version.hpp"
 #include "physics/exact_solution.hpp"
 #include "physics/shape.hpp"
 
@@ -69,11 +71,12 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
     const double t = static_cast<double>(row.step) * s.dt;
     const physics::Diagnostics d = row.step == 0 ? d0 : diagnostics_of(row);
     const Eigen::Vector3d L_exact = exact.angular_momentum_body(t);
-    if (std::abs(L_exact[c.spin_axis]) < 0.5 * exact.angular_momentum_norm()) exact_tumbles = true;
+    if (std::abs(L_exact[c.spin_axis]) < kTumbleCosine * exact.angular_momentum_norm())
+      exact_tumbles = true;
     c.energy_drift = std::max(c.energy_drift, std::abs(d.energy_total / E0 - 1.0));
     c.L_drift = std::max(c.L_drift, std::abs(d.L.norm() / L0 - 1.0));
     flips.observe(t, d.cos_axis_L[mid]);
-    if (!c.tumble_time && std::abs(d.cos_axis_L[c.spin_axis]) < 0.5) c.tumble_time = t;
+    if (!c.tumble_time && std::abs(d.cos_axis_L[c.spin_axis]) < kTumbleCosine) c.tumble_time = t;
     const double r = ratio(d);
     c.separatrix_ratio_drift = std::max(c.separatrix_ratio_drift, std::abs(r / r0 - 1.0));
     c.separatrix_approach = std::max(c.separatrix_approach, (r - r0) / (1.0 - r0));
@@ -126,27 +129,40 @@ std::string verdict_line(const Conformance& c) {
   return line;
 }
 
-CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotion>& judged) {
+namespace {
+
+const std::vector<std::string>& judgement_columns() {
+  static const std::vector<std::string> columns = {"scenario",
+                                                   "motion",
+                                                   "verdict",
+                                                   "stride",
+                                                   "last_step",
+                                                   "start_error",
+                                                   "energy_drift",
+                                                   "L_drift",
+                                                   "flips",
+                                                   "flips_exact",
+                                                   "first_flip",
+                                                   "first_flip_exact",
+                                                   "first_flip_error",
+                                                   "orientation_error",
+                                                   "stable_spin",
+                                                   "tumble_time",
+                                                   "separatrix_ratio_drift",
+                                                   "separatrix_approach",
+                                                   "failures",
+                                                   "version",
+                                                   "scenario_sha256"};
+  return columns;
+}
+
+}  // namespace
+
+CsvTable judgement_table(const Scenario& scenario, const std::string& scenario_sha256,
+                         const std::vector<JudgedMotion>& judged) {
   CsvTable table;
-  table.columns = {"scenario",
-                   "motion",
-                   "verdict",
-                   "stride",
-                   "last_step",
-                   "start_error",
-                   "energy_drift",
-                   "L_drift",
-                   "flips",
-                   "flips_exact",
-                   "first_flip",
-                   "first_flip_exact",
-                   "first_flip_error",
-                   "orientation_error",
-                   "stable_spin",
-                   "tumble_time",
-                   "separatrix_ratio_drift",
-                   "separatrix_approach",
-                   "failures"};
+  table.columns = judgement_columns();
+  const std::string judged_by = version();
   for (const JudgedMotion& j : judged) {
     const Conformance& c = j.result;
     std::string failures;
@@ -154,17 +170,48 @@ CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotio
     const auto if_stable = [&c](double value) {
       return shortest_cell(c.stable_spin ? std::optional<double>(value) : std::nullopt);
     };
-    table.rows.push_back(
-        {scenario.name, j.name, std::string(c.pass() ? "pass" : "fail"), std::to_string(c.stride),
-         std::to_string(c.last_step), shortest_cell(c.start_error), shortest_cell(c.energy_drift),
-         shortest_cell(c.L_drift), std::to_string(c.flips), std::to_string(c.flips_exact),
-         shortest_cell(c.first_flip), shortest_cell(c.first_flip_exact),
-         shortest_cell(c.first_flip_error), shortest_cell(c.orientation_error),
-         std::string(c.stable_spin ? "1" : "0"),
-         shortest_cell(c.stable_spin ? c.tumble_time : std::nullopt),
-         if_stable(c.separatrix_ratio_drift), if_stable(c.separatrix_approach), failures});
+    table.rows.push_back({scenario.name,
+                          j.name,
+                          std::string(c.pass() ? "pass" : "fail"),
+                          std::to_string(c.stride),
+                          std::to_string(c.last_step),
+                          shortest_cell(c.start_error),
+                          shortest_cell(c.energy_drift),
+                          shortest_cell(c.L_drift),
+                          std::to_string(c.flips),
+                          std::to_string(c.flips_exact),
+                          shortest_cell(c.first_flip),
+                          shortest_cell(c.first_flip_exact),
+                          shortest_cell(c.first_flip_error),
+                          shortest_cell(c.orientation_error),
+                          std::string(c.stable_spin ? "1" : "0"),
+                          shortest_cell(c.stable_spin ? c.tumble_time : std::nullopt),
+                          if_stable(c.separatrix_ratio_drift),
+                          if_stable(c.separatrix_approach),
+                          failures,
+                          judged_by,
+                          scenario_sha256});
   }
   return table;
+}
+
+std::string judge_rules() {
+  const ConformanceThresholds limits;
+  std::string text;
+  const auto rule = [&text](const std::string& name, double value) {
+    text += name + " " + finite_text(value, name) + "\n";
+  };
+  rule("start", limits.start);
+  rule("energy_drift", limits.energy_drift);
+  rule("L_drift", limits.L_drift);
+  rule("first_flip", limits.first_flip);
+  rule("orientation_error", limits.orientation_error);
+  rule("separatrix_approach", limits.separatrix_approach);
+  rule("tumble_cosine", kTumbleCosine);
+  rule("flip_margin", FlipDetector::kMargin);
+  text += "columns";
+  for (const std::string& column : judgement_columns()) text += " " + column;
+  return text + "\n";
 }
 
 }  // namespace bookspin::analysis

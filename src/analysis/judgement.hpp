@@ -48,6 +48,10 @@ struct ConformanceThresholds {
   double separatrix_approach = 0.1;  ///< stable spins: fraction of the way to the separatrix
 };
 
+/// |cos(spin axis, L)| below which a spin has tumbled (60° from L), for the motion's tumble
+/// time and for whether the exact motion is a stable spin.
+inline constexpr double kTumbleCosine = 0.5;
+
 /// How a motion compares with the exact one (docs/flipcheck.md, "What judge measures").
 struct Conformance {
   long long stride = 0;                    ///< steps between rows
@@ -93,7 +97,17 @@ struct JudgedMotion {
 
 /// The judgement as a table (docs/flipcheck.md, "The judgement CSV"): one row per motion, in
 /// the order given, named by JudgedMotion::name; every number in shortest round-trip form, an
-/// empty cell where a value does not apply (no flip, not a stable spin). A value, no I/O.
-CsvTable judgement_table(const Scenario& scenario, const std::vector<JudgedMotion>& judged);
+/// empty cell where a value does not apply (no flip, not a stable spin); its last two columns
+/// what judged it: `version` (bookspin's, common/version.hpp) and `scenario_sha256`, the SHA-256
+/// of the scenario's JSON as `flipcheck export` writes it (jobs::scenario_file), which the
+/// caller hashes and hands in (docs/flipcheck.md, "Versions"). A value, no I/O.
+CsvTable judgement_table(const Scenario& scenario, const std::string& scenario_sha256,
+                         const std::vector<JudgedMotion>& judged);
+
+/// The judge's rules as text, one "name value" a line: every threshold of the default
+/// ConformanceThresholds, the tumble's cosine, the flip detector's margin and the judgement
+/// CSV's columns. Hashed with the scenarios into the kit's SHA-256 that VERSION records
+/// (docs/flipcheck.md, "Versions"): a rule changed here changes it.
+std::string judge_rules();
 
 }  // namespace bookspin::analysis

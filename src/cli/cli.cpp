@@ -8,6 +8,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/run_guarded.hpp"
 #include "cli/subcommand.hpp"
+#include "common/version.hpp"
 #include "output/output_dir.hpp"
 #include "scene/toml_reader.hpp"
 
@@ -52,6 +53,8 @@ int report(const std::string& message, int code) {
 int run_cli(int argc, char** argv) {
   install_interrupt_handlers();  // first, so an early Ctrl-C is handled the same way
   CLI::App cli{"bookspin: simulate and render the unstable rotation of a book", "bookspin"};
+  // `bookspin --version`: the one version (VERSION, docs/flipcheck.md "Versions").
+  cli.set_version_flag("--version", "bookspin " + version(), "Print bookspin's version and exit");
   cli.require_subcommand(1);
   std::vector<Subcommand> subcommands;
   for (AddSubcommand add : kSubcommands) subcommands.push_back(add(cli));
@@ -60,6 +63,8 @@ int run_cli(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return cli.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
     return report(std::string(e.what()) + " (see bookspin --help)", kExitUsage);

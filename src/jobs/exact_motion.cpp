@@ -70,12 +70,24 @@ std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
   return rows;
 }
 
-ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop) {
+namespace {
+
+/// A scenario's start, no rows yet: what its JSON holds.
+ExactMotion exact_start(const analysis::Scenario& scenario) {
   ExactMotion motion;
   motion.scenario = scenario;
   motion.mass = scenario.body.cage.mass;
   motion.omega0_body = analysis::start_omega(scenario);
   motion.omega0_world = motion.omega0_body;
+  return motion;
+}
+
+const char* const kScenarioWhat = "flipcheck scenario";
+
+}  // namespace
+
+ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop) {
+  ExactMotion motion = exact_start(scenario);
   const physics::ExactRotation exact(scenario.body.moments, motion.omega0_body);
   motion.rows.reserve(static_cast<std::size_t>(scenario.steps) + 1);
   for (long long n = 0; n <= scenario.steps; ++n) {
@@ -130,8 +142,13 @@ CsvTable exact_motion_csv(const ExactMotion& m) {
 ExportFiles export_files(const ExactMotion& motion) {
   const JsonValue scenario = scenario_json(motion);
   const CsvTable exact = exact_motion_csv(motion);
-  return {json_text(scenario, "flipcheck scenario", JsonLayout::indented) + "\n",
+  return {json_text(scenario, kScenarioWhat, JsonLayout::indented) + "\n",
           csv_text(exact, "flipcheck exact motion CSV")};
+}
+
+std::string scenario_file(const analysis::Scenario& scenario) {
+  return json_text(scenario_json(exact_start(scenario)), kScenarioWhat, JsonLayout::indented) +
+         "\n";
 }
 
 }  // namespace bookspin::jobs

@@ -57,4 +57,8 @@ struct ExportFiles {
 };
 ExportFiles export_files(const ExactMotion& motion);
 
+/// The bytes of OUT/<scenario>.json alone (export_files' json), without the exact motion's
+/// rows: what a judgement's `scenario_sha256` hashes (docs/flipcheck.md, "Versions"). No I/O.
+std::string scenario_file(const analysis::Scenario& scenario);
+
 }  // namespace bookspin::jobs

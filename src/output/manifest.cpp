@@ -10,13 +10,10 @@
 #include "common/errors.hpp"
 #include "common/json_writer.hpp"
 #include "common/text_file.hpp"
+#include "common/version.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/sha256.hpp"
-
-#ifndef BOOKSPIN_VERSION
-#error "BOOKSPIN_VERSION is set by src/output/CMakeLists.txt"
-#endif
 
 namespace bookspin::output {
 
@@ -217,7 +214,7 @@ std::string warnings_note(const std::vector<std::string>& warnings) {
   return json_member_lines({{"warnings", {std::move(list)}}}, "manifest note", 2, false);
 }
 
-std::string program_version() { return BOOKSPIN_VERSION; }
+std::string program_version() { return version(); }
 
 namespace {
 

@@ -67,7 +67,7 @@ ManifestRecord read_manifest(const std::filesystem::path& manifest);
 /// repeat them (read_manifest()).
 std::string warnings_note(const std::vector<std::string>& warnings);
 
-/// bookspin's version (CMake's project version).
+/// bookspin's version (common/version.hpp: the file VERSION).
 std::string program_version();
 
 /// SHA-256 of the running bookspin: the program's file, or the Python module's where the

@@ -119,7 +119,8 @@ FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   const std::vector<jobs::MotionFile> read = read_all(scenario, job.motions);
   FlipcheckJudgeResult result;
   result.judged = judge_all(job.scene, scenario, job.motions, read, names, job.methods, job.stop);
-  const CsvTable table = analysis::judgement_table(scenario, result.judged);
+  const CsvTable table =
+      analysis::judgement_table(scenario, scenario_sha256(scenario), result.judged);
   const cache::CachedOutputs cached{job.scene.name + "-judge", layout.manifest, "flipcheck judge",
                                     std::move(options),        job.out_dir,     &job.scene,
                                     /*all_or_nothing=*/true,   job.motions};
@@ -304,7 +305,8 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
       LeagueColumn col{scene.name, scene.title,
                        judge_all(scene, scenarios[i], files[i], read[i], motion_names[i],
                                  job.methods, job.stop)};
-      CsvTable part = analysis::judgement_table(scenarios[i], col.judged);
+      CsvTable part =
+          analysis::judgement_table(scenarios[i], scenario_sha256(scenarios[i]), col.judged);
       table.columns = part.columns;
       for (auto& row : part.rows) table.rows.push_back(std::move(row));
       columns.push_back(std::move(col));
@@ -344,6 +346,19 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   result.motions = static_cast<int>(passes.size());
   for (const auto& [name, pass] : passes) result.passed += pass ? 1 : 0;
   return result;
+}
+
+std::string scenario_sha256(const analysis::Scenario& scenario) {
+  return output::sha256_text(jobs::scenario_file(scenario));
+}
+
+std::string flipcheck_kit_sha256(const std::vector<analysis::Scenario>& scenarios) {
+  std::vector<std::string> lines;
+  for (const analysis::Scenario& s : scenarios) lines.push_back(s.name + " " + scenario_sha256(s));
+  std::sort(lines.begin(), lines.end());
+  std::string text = "kit\n";
+  for (const std::string& line : lines) text += line + "\n";
+  return output::sha256_text(text + analysis::judge_rules());
 }
 
 }  // namespace bookspin::products

@@ -153,7 +153,7 @@ TEST(Conformance, TheFirstTurnOverIsJudgedInHalfPeriodsAndWrittenInItsColumns) {
   EXPECT_FALSE(first_flip_failed(near)) << verdict_line(near);
   EXPECT_TRUE(first_flip_failed(far)) << verdict_line(far);
 
-  const CsvTable table = judgement_table(s, {{"run.csv", "run", near}});
+  const CsvTable table = judgement_table(s, "", {{"run.csv", "run", near}});
   ASSERT_EQ(table.rows.size(), 1u);
   const auto number_in = [&](const std::string& column) {
     for (std::size_t i = 0; i < table.columns.size(); ++i)

@@ -35,7 +35,7 @@ TEST(FirstFlipError, IsTheRelativeDifferenceOfTheFirstTurnOvers) {
   ASSERT_GT(std::abs(closed.first_flip - 1.0), 0.5);
   EXPECT_NEAR(*c.first_flip_error, expected, 2.0 * s.dt / closed.first_flip);
   // ... and its column holds it.
-  const CsvTable table = judgement_table(s, {{"run.csv", "run", c}});
+  const CsvTable table = judgement_table(s, "", {{"run.csv", "run", c}});
   for (std::size_t i = 0; i < table.columns.size(); ++i) {
     if (table.columns[i] == "first_flip_error") {
       EXPECT_NEAR(*std::get<CsvNumber>(table.rows.at(0).at(i)).value, expected,

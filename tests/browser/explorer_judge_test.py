@@ -45,7 +45,7 @@ TOL = 1e-9
 # and in the page with WebAssembly's 128-bit one (docs/explorer.md, "Speed"). Below this floor
 # two numbers agree whatever their ratio.
 ABS_FLOOR = 1e-13
-TEXT_COLUMNS = {"scenario", "motion", "verdict", "failures"}
+TEXT_COLUMNS = {"scenario", "motion", "verdict", "failures", "version", "scenario_sha256"}
 
 
 def read_csv(path):
@@ -237,6 +237,13 @@ def main():
         failures = [li.text for li in driver.find_elements(By.CSS_SELECTOR, "#judgeFailures li")]
         if "; ".join(failures) != cli["failures"]:
             fail(f"the panel's failures {failures}, the command line's {cli['failures']!r}")
+        # What judged it (docs/flipcheck.md, "Versions"): the page's version is the program's.
+        stamp = driver.find_element(By.ID, "judgeStamp").text
+        if cli["version"] not in stamp or cli["scenario_sha256"] not in stamp:
+            fail(f"the panel says {stamp!r}: not judged by {cli['version']}, {cli['scenario_sha256']}")
+        if driver.find_element(By.ID, "version").text != cli["version"]:
+            fail(f"the page's version {driver.find_element(By.ID, 'version').text!r}, the "
+                 f"command line's {cli['version']!r}")
         # Each row: its readable label, its CSV key (code), its number at four significant
         # digits (a count whole) and, in the cell's title, every digit the CSV holds.
         table = {}

@@ -28,6 +28,19 @@ std::string quoted(const fs::path& p) {
   return text;
 }
 
+// `bookspin --version` is the one version, VERSION's (docs/flipcheck.md, "Versions"), which every
+// judgement row records.
+TEST(FlipcheckCommand, TheVersionIsTheOneOfTheFileVersion) {
+  std::ifstream file(std::string(BOOKSPIN_SOURCE_DIR) + "/VERSION");
+  std::string version;
+  for (std::string line; std::getline(file, line);)
+    if (line.rfind("version ", 0) == 0) version = line.substr(8);
+  ASSERT_FALSE(version.empty());
+  const SplitResult said = run_bookspin_split("--version");
+  EXPECT_EQ(said.status, 0) << said.err;
+  EXPECT_EQ(said.out, "bookspin " + version + "\n");
+}
+
 TEST(FlipcheckCommand, EveryExportedExactMotionPassesItsScenario) {
   ScratchDir dir;
   const char* names[] = {"book-intermediate-0.05", "book-intermediate-0.2", "mujoco-test-box",

@@ -20,6 +20,7 @@ network; there
 Skipped (exit 77) where em++, node, npm or the league's packages (web/node_modules) are missing; a failure under
 CI=true. Usage: npm_package_test.py BOOKSPIN SOURCE_DIR BUILD_DIR"""
 import csv
+import hashlib
 import io
 import json
 import os
@@ -68,7 +69,7 @@ def same_row(cli, got, what):
     """A judgement row of the command line's CSV (text cells) against the package's object."""
     for column, cell in cli.items():
         value = got[column]
-        if column in ("scenario", "verdict", "failures", "motion"):
+        if column in ("scenario", "verdict", "failures", "motion", "version", "scenario_sha256"):
             ok = (value or "") == cell
         elif cell == "":
             ok = value is None
@@ -128,6 +129,10 @@ def main(bookspin, source, build):
     with tarfile.open(tgz) as tar:
         manifest = json.load(tar.extractfile("package/package.json"))
         names = tar.getnames()
+    # One version (docs/flipcheck.md, "Versions"): VERSION's, in the file's name and package.json.
+    version = re.search(r"^version (\S+)$", (source / "VERSION").read_text(), re.M).group(1)
+    if manifest.get("version") != version or tgz.name != f"flipcheck-{version}.tgz":
+        fail(f"{tgz.name}: package.json's version {manifest.get('version')!r}, VERSION says {version!r}")
     if manifest.get("dependencies"):
         fail(f"the package has runtime dependencies: {manifest['dependencies']}")
     for name in ("package/index.mjs", "package/index.d.ts", "package/cli.mjs",
@@ -166,6 +171,9 @@ def main(bookspin, source, build):
         if sorted(result["judged"]) != scenarios:
             fail(f"the package's scenarios {sorted(result['judged'])} are not {scenarios}")
         npx = [project / "node_modules" / ".bin" / "flipcheck"]
+        said = run(npx + ["--version"], env, cwd=project).stdout
+        if said != f"flipcheck {version}\n":
+            fail(f"npx flipcheck --version printed {said!r}, VERSION says {version}")
         for name in scenarios:
             judged = result["judged"][name]
             file = motions / judged["file"]
@@ -174,6 +182,14 @@ def main(bookspin, source, build):
             row = read_csv((tmp / "cli" / f"{name}-judge.csv").read_text())[0]
             same_row(row, judged["arrays"], f"{name}: judge()")
             same_row(row, judged["csv"], f"{name}: judgeCsv()")
+            # The judgement records the version and the SHA-256 of the scenario JSON the package
+            # carries, byte for byte the command line's export.
+            carried = project / "node_modules" / "flipcheck" / "scenarios" / f"{name}.json"
+            if (row["version"], row["scenario_sha256"]) != (
+                    version, hashlib.sha256(carried.read_bytes()).hexdigest()):
+                fail(f"{name}: the judgement records {row['version']} {row['scenario_sha256']}, "
+                     f"VERSION says {version}, the carried scenario hashes to "
+                     f"{hashlib.sha256(carried.read_bytes()).hexdigest()}")
             if judged["arrays"]["pass"] != (row["verdict"] == "pass"):
                 fail(f"{name}: pass is {judged['arrays']['pass']}, the verdict {row['verdict']}")
             ours = run(npx + ["judge", name, file, "-o", tmp / "npx"], env, cwd=project)

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,6 +17,7 @@
 #include "common/errors.hpp"
 #include "jobs/simulation.hpp"
 #include "output/manifest.hpp"
+#include "output/sha256.hpp"
 #include "support/cli_runner.hpp"
 #include "support/scratch.hpp"
 
@@ -100,9 +103,20 @@ TEST(Flipcheck, TheJudgementIsARowPerMotionAndIsRemadeWhenAMotionChanges) {
   EXPECT_EQ(csv[0],
             "scenario,motion,verdict,stride,last_step,start_error,energy_drift,L_drift,flips,"
             "flips_exact,first_flip,first_flip_exact,first_flip_error,orientation_error,"
-            "stable_spin,tumble_time,separatrix_ratio_drift,separatrix_approach,failures");
+            "stable_spin,tumble_time,separatrix_ratio_drift,separatrix_approach,failures,"
+            "version,scenario_sha256");
   EXPECT_EQ(csv[1].substr(0, 53), "mujoco-test-box,mujoco-test-box-exact.csv,pass,1,500,");
   EXPECT_EQ(csv[2].substr(0, 39), "mujoco-test-box,negated.csv,pass,1,500,");
+  // Each row ends with what judged it: the version and the SHA-256 of the exported scenario
+  // JSON's bytes, as `sha256sum OUT/mujoco-test-box.json` gives it.
+  std::string stamp = ",";
+  stamp += output::program_version();
+  stamp += ",";
+  stamp += output::sha256_file(dir / "exact" / "mujoco-test-box.json").value();
+  for (int row : {1, 2}) {
+    ASSERT_GE(csv[row].size(), stamp.size());
+    EXPECT_EQ(csv[row].substr(csv[row].size() - stamp.size()), stamp) << csv[row];
+  }
   EXPECT_EQ(make_flipcheck_judge(job).outcome, cache::Outcome::up_to_date);
   std::ofstream(dir / "negated.csv", std::ios::app) << "# a comment changes the file\n";
   EXPECT_EQ(make_flipcheck_judge(job).outcome, cache::Outcome::made);
@@ -294,6 +308,79 @@ TEST(Flipcheck, TheLeaguePageEscapesMotionNamesAndCountsEachOnce) {
   EXPECT_EQ(kept.outcome, cache::Outcome::up_to_date);
   EXPECT_EQ(kept.motions, 3);
   EXPECT_EQ(kept.passed, 3);
+}
+
+// The scenario's SHA-256 is of the bytes `flipcheck export` writes, computed without the exact
+// motion's rows.
+TEST(Flipcheck, TheScenarioSha256IsOfTheExportedJson) {
+  test::ScratchDir dir;
+  const scene::Scene scene = box();
+  make_flipcheck_export({scene, dir / "out", {}, {}});
+  const analysis::Scenario scenario = analysis::scenario_of(scene);
+  const fs::path json = dir / "out" / "mujoco-test-box.json";
+  EXPECT_EQ(jobs::scenario_file(scenario), test::read_file(json));
+  EXPECT_EQ(scenario_sha256(scenario), output::sha256_file(json).value());
+}
+
+/// The `kit` line of VERSION (docs/flipcheck.md, "Versions").
+std::string recorded_kit() {
+  std::istringstream in(test::read_file(fs::path(BOOKSPIN_SOURCE_DIR) / "VERSION"));
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("kit ", 0) == 0) return line.substr(4);
+  ADD_FAILURE() << "VERSION has no line \"kit SHA256\"";
+  return {};
+}
+
+std::vector<analysis::Scenario> kit_scenarios() {
+  std::vector<analysis::Scenario> scenarios;
+  for (const fs::directory_entry& e :
+       fs::directory_iterator(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck"))
+    if (e.path().extension() == ".toml")
+      scenarios.push_back(analysis::scenario_of(scene::parse_scene(e.path())));
+  return scenarios;
+}
+
+// The seven scenarios and the judge's rules are the ones VERSION records beside the version: a
+// change to either must come with a new version (and its new kit line).
+TEST(Flipcheck, TheKitIsTheOneItsVersionRecords) {
+  const std::vector<analysis::Scenario> scenarios = kit_scenarios();
+  ASSERT_EQ(scenarios.size(), 7u);
+  const std::string kit = flipcheck_kit_sha256(scenarios);
+  EXPECT_EQ(kit, recorded_kit())
+      << "scenario or judge rules changed: bump the version (VERSION: version "
+      << output::program_version() << " -> a new one) and record the new kit there: \"kit " << kit
+      << "\" (docs/flipcheck.md, \"Versions\")";
+}
+
+// The kit's hash sees a scenario's every number, its name and every rule, and not the order the
+// scenarios come in.
+TEST(Flipcheck, TheKitHashChangesWithAScenarioAndNotWithTheirOrder) {
+  std::vector<analysis::Scenario> scenarios = kit_scenarios();
+  const std::string kit = flipcheck_kit_sha256(scenarios);
+  std::reverse(scenarios.begin(), scenarios.end());
+  EXPECT_EQ(flipcheck_kit_sha256(scenarios), kit);
+  std::vector<analysis::Scenario> changed = scenarios;
+  changed[0].steps += 1;
+  EXPECT_NE(flipcheck_kit_sha256(changed), kit);
+  changed = scenarios;
+  changed[0].dt *= 1.0 + 1e-15;
+  EXPECT_NE(flipcheck_kit_sha256(changed), kit);
+  changed = scenarios;
+  changed[0].body.moments[2] = std::nextafter(changed[0].body.moments[2], 1e9);
+  EXPECT_NE(flipcheck_kit_sha256(changed), kit);
+  changed = scenarios;
+  changed[0].name += "-renamed";
+  EXPECT_NE(flipcheck_kit_sha256(changed), kit);
+  changed = scenarios;
+  changed.pop_back();
+  EXPECT_NE(flipcheck_kit_sha256(changed), kit);
+  // Every threshold is a line of the rules that the kit hashes.
+  const std::string rules = analysis::judge_rules();
+  for (const char* rule :
+       {"start 1e-06\n", "energy_drift 0.01\n", "L_drift 0.01\n", "first_flip 0.05\n",
+        "orientation_error 0.1\n", "separatrix_approach 0.1\n", "tumble_cosine 0.5\n",
+        "flip_margin 0.5\n", " version scenario_sha256\n"})
+    EXPECT_NE(rules.find(rule), std::string::npos) << rule << " not in\n" << rules;
 }
 
 }  // namespace

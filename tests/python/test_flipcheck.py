@@ -2,6 +2,7 @@
 scenarios, their start and exact motion, and the judgement of the exact motion, of perturbed
 motions, of two integrators written here in numpy (explicit Euler fails, RK4 passes), and of
 the JavaScript engines' motions as `make figures` writes them (web/flipcheck-engines.mjs)."""
+import hashlib
 import json
 import math
 import os
@@ -141,6 +142,23 @@ def test_judge_equals_the_command_line_in_every_scenario(bookspin, tmp_path, nam
         assert got["motion"] == label
         assert_same_judgement(got, cli)
     assert bookspin.flipcheck.judge(name, *motions_of(name, arrays, start)[0][1:])["verdict"] == "pass"
+
+
+def test_a_judgement_records_the_version_and_the_scenarios_sha256(bookspin, tmp_path):
+    """docs/flipcheck.md, "Versions": VERSION's version, and the SHA-256 of the scenario's JSON
+    as `bookspin flipcheck export` writes it, whichever way the scenario is named."""
+    version = next(line.split()[1] for line in (SOURCE_DIR / "VERSION").read_text().splitlines()
+                   if line.startswith("version "))
+    assert bookspin.__version__ == version
+    name = "mujoco-test-box"
+    run_cli("flipcheck", "export", SCENARIO_DIR / f"{name}.toml", "-o", tmp_path)
+    sha = hashlib.sha256((tmp_path / f"{name}.json").read_bytes()).hexdigest()
+    start, arrays = bookspin.flipcheck.export(name)
+    _, t, q, w = motions_of(name, arrays, start)[0]
+    for scenario in (name, SCENARIO_DIR / f"{name}.toml"):
+        got = bookspin.flipcheck.judge(scenario, t, q, w)
+        assert (got["version"], got["scenario_sha256"]) == (version, sha)
+        assert list(got)[-2:] == ["version", "scenario_sha256"]
 
 
 def test_numpy_euler_fails_and_rk4_passes(bookspin, tmp_path):

@@ -10,7 +10,7 @@ import { significant } from './precision.js';
 
 const $ = (id) => document.getElementById(id);
 /** The judgement CSV's columns that hold text; every other one holds a number or nothing. */
-const TEXT_COLUMNS = ['scenario', 'motion', 'verdict', 'failures'];
+const TEXT_COLUMNS = ['scenario', 'motion', 'verdict', 'failures', 'version', 'scenario_sha256'];
 /** What each column says, for the panel's table (docs/flipcheck.md, "What judge measures"). */
 const WORDS = {
   stride: 'steps between rows', last_step: 'last row (step)', start_error: '|ω(0) − ω0|/|ω0|',
@@ -20,6 +20,12 @@ const WORDS = {
   stable_spin: 'stable spin (1: yes)', tumble_time: 'tumbles at (t)', separatrix_ratio_drift: 'max |r/r0 − 1|, r = 2E·I2/L²',
   separatrix_approach: 'way to the separatrix (max)',
 };
+
+/** The SHA-256 (hex) of `text`'s UTF-8 bytes: a promise (the browser's Web Crypto). */
+async function sha256Hex(text) {
+  const digest = await crypto.subtle.digest('SHA-256', new TextEncoder().encode(text));
+  return Array.from(new Uint8Array(digest), (b) => b.toString(16).padStart(2, '0')).join('');
+}
 
 /** Whether a scene of the page is a conformance scenario, as `flipcheck` takes one: one model
  * (no comparison, none of its tiles left out), no air drag, not at rest. */
@@ -123,13 +129,16 @@ export class JudgePanel {
    * the exact motion of scenario `name`: a promise of the judgement keyed by the judgement
    * CSV's columns, with `line` (the command line's verdict line) and `failures` (a list)
    * beside them in `detail`; rejected with the command line's one line for a bad file. */
-  judge(name, csvText, file = 'motion.csv') {
-    return new Promise((resolve, reject) => {
-      const scene = this.scene(name);
-      if (!scene) { reject(new Error(`${name}: no such scenario in this page`)); return; }
-      const r = this.wasm.judgeMotion(scenarioSpec(scene), String(csvText), file);
-      if (r.error) reject(new Error(r.error)); else resolve({ row: keyed(r), line: r.line, failures: r.failures });
-    });
+  async judge(name, csvText, file = 'motion.csv') {
+    const scene = this.scene(name);
+    if (!scene) throw new Error(`${name}: no such scenario in this page`);
+    // The judgement records the SHA-256 of the scenario's JSON as `flipcheck export` writes it.
+    const spec = scenarioSpec(scene);
+    const json = this.wasm.flipcheckScenarioFile(spec);
+    if (json.error) throw new Error(json.error);
+    const r = this.wasm.judgeMotion(spec, await sha256Hex(json), String(csvText), file);
+    if (r.error) throw new Error(r.error);
+    return { row: keyed(r), line: r.line, failures: r.failures };
   }
 
   /** A file chosen or dropped: read, judged, shown, and replayed beside the exact motion. */
@@ -153,6 +162,8 @@ export class JudgePanel {
     const verdict = $('judgeVerdict');
     verdict.textContent = `${pass ? 'PASS' : 'FAIL'}: ${row.motion} on ${row.scenario}`;
     verdict.className = pass ? 'pass' : 'fail';
+    // What judged it (docs/flipcheck.md, "Versions"): bookspin's version and the scenario's SHA-256.
+    $('judgeStamp').textContent = `judged by bookspin ${row.version}; scenario JSON SHA-256 ${row.scenario_sha256}`;
     $('judgeFailures').innerHTML = '';
     for (const f of failures) $('judgeFailures').appendChild(Object.assign(document.createElement('li'), { textContent: f }));
     // The readable label first, the CSV's key second; each number to four significant digits

@@ -169,6 +169,7 @@ function startApp(wasm, engines) {
   }).observe($('view'));
   document.addEventListener('fullscreenchange', resize);
 
+  $('version').textContent = wasm.version();  // bookspin's one version (VERSION)
   app.judge = new JudgePanel(wasm, SCENES, () => app.state.scene);
   app.lab = new LabPanel(wasm, LabPanel.playAsScene(SCENES, app.controls));
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
