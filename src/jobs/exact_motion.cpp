@@ -147,8 +147,8 @@ ExportFiles export_files(const ExactMotion& motion) {
 }
 
 std::string scenario_file(const analysis::Scenario& scenario) {
-  return json_text(scenario_json(exact_start(scenario)), kScenarioWhat, JsonLayout::indented) +
-         "\n";
+  const JsonValue json = scenario_json(exact_start(scenario));
+  return json_text(json, kScenarioWhat, JsonLayout::indented) + "\n";
 }
 
 }  // namespace bookspin::jobs

@@ -116,11 +116,11 @@ FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   const std::vector<std::string> names = file_names(job.motions);
   // The scenario derived, its motion files read (a bad one fails before any run), then judged.
   const analysis::Scenario scenario = analysis::scenario_of(job.scene);
+  const std::string sha256 = scenario_sha256(scenario);
   const std::vector<jobs::MotionFile> read = read_all(scenario, job.motions);
   FlipcheckJudgeResult result;
   result.judged = judge_all(job.scene, scenario, job.motions, read, names, job.methods, job.stop);
-  const CsvTable table =
-      analysis::judgement_table(scenario, scenario_sha256(scenario), result.judged);
+  const CsvTable table = analysis::judgement_table(scenario, sha256, result.judged);
   const cache::CachedOutputs cached{job.scene.name + "-judge", layout.manifest, "flipcheck judge",
                                     std::move(options),        job.out_dir,     &job.scene,
                                     /*all_or_nothing=*/true,   job.motions};
@@ -349,7 +349,8 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
 }
 
 std::string scenario_sha256(const analysis::Scenario& scenario) {
-  return output::sha256_text(jobs::scenario_file(scenario));
+  const std::string file = jobs::scenario_file(scenario);
+  return output::sha256_text(file);
 }
 
 std::string flipcheck_kit_sha256(const std::vector<analysis::Scenario>& scenarios) {
