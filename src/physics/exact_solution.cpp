@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
-#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <boost/math/tools/precision.hpp>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -60,6 +60,7 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   classify(w);
   if (case_ == ExactCase::steady) return;
   set_phase(w);
+  set_jacobi_agm();
   if (parts_ == ExactParts::omega_and_orientation) set_precession();
   anchor_ = (momentum_frame(I_.cwiseProduct(w)) * to_sorted_).transpose();
 }
@@ -142,14 +143,51 @@ void ExactRotation::set_phase(const Eigen::Vector3d& w) {
   }
 }
 
-ExactRotation::Jacobi ExactRotation::jacobi(long double u) const {
-  if (case_ != ExactCase::separatrix) {
-    // Reduce to one period 4K first: the functions lose accuracy with the argument's size.
-    const Real period = 4.0L * K_;
-    u -= period * std::floor(u / period);
+// Boost's jacobi_elliptic (Abramowitz & Stegun 16.4) forms the arithmetic-geometric mean of 1
+// and k' anew on every call; it depends on k alone, so it is formed here once, by the very
+// operations Boost performs, and jacobi_reduced() descends from it as Boost does: the same sn
+// and cn to the last bit (docs/physics.md §8, "How the code evaluates ω(t)").
+void ExactRotation::set_jacobi_agm() {
+  period_ = 4.0L * K_;
+  agm_ = JacobiAgm{};
+  if (k_ == 0.0L || k_ >= 1.0L || k_ < boost::math::tools::forth_root_epsilon<Real>()) return;
+  const Real kc = 1 - k_;
+  const Real k_prime = k_ < 0.5L ? Real(std::sqrt(1 - k_ * k_)) : Real(std::sqrt(2 * kc - kc * kc));
+  Real a = 1, b = k_prime;
+  for (int n = 1; n <= JacobiAgm::kMaxLevels; ++n) {
+    const Real c = (a - b) / 2, a_next = (a + b) / 2;
+    agm_.ratio[n - 1] = c / a_next;
+    if (c < std::numeric_limits<Real>::epsilon() || n == JacobiAgm::kMaxLevels) {
+      agm_.levels = n;
+      agm_.a_last = a_next;
+      return;
+    }
+    b = std::sqrt(a * b);
+    a = a_next;
   }
-  Jacobi j{};
-  j.sn = boost::math::jacobi_elliptic(k_, u, &j.cn, &j.dn);
+}
+
+// sn and cn of u ≥ 0 (dn is left 0), by Boost 1.74's jacobi_imp for 0 ≤ k ≤ 1, branch for
+// branch, with the mean taken from set_jacobi_agm(): sin(2φ_{n−1} − φ_n) = (c_n/a_n) sin φ_n
+// from φ_N = 2^N a_N u down to φ_0 = am u.
+ExactRotation::Jacobi ExactRotation::jacobi_reduced(long double u) const {
+  if (u == 0.0L) return {0.0L, 1.0L, 0.0L};
+  if (k_ == 0.0L) return {std::sin(u), std::cos(u), 0.0L};
+  if (k_ >= 1.0L) return {std::tanh(u), 1 / std::cosh(u), 0.0L};
+  if (agm_.levels == 0) {  // k below the fourth root of ε: A&S 16.13
+    const Real su = std::sin(u), cu = std::cos(u), m = k_ * k_;
+    return {su - m * (u - su * cu) * cu / 4, cu + m * (u - su * cu) * su / 4, 0.0L};
+  }
+  Real phi = std::ldexp(Real(1), agm_.levels) * u * agm_.a_last;
+  for (int n = agm_.levels; n >= 1; --n)
+    phi = (phi + std::asin(agm_.ratio[n - 1] * std::sin(phi))) / 2;
+  return {std::sin(phi), std::cos(phi), 0.0L};
+}
+
+ExactRotation::Jacobi ExactRotation::jacobi(long double u) const {
+  // Reduce to one period 4K first: the functions lose accuracy with the argument's size.
+  if (case_ != ExactCase::separatrix) u -= period_ * std::floor(u / period_);
+  Jacobi j = jacobi_reduced(u);
   // Boost forms dn as a ratio of two cosines that both vanish where cn = 0, losing digits
   // near u = K (where dn = k' is smallest); dn² = k'² + k² cn² adds positive terms instead.
   j.dn = std::sqrt(kc2_ + k_ * k_ * j.cn * j.cn);
@@ -300,15 +338,25 @@ Eigen::Matrix3d ExactRotation::rotation_from(const Eigen::Vector3d& L_sorted, do
   return anchor_ * rotation_z(psi) * momentum_frame(L_sorted) * to_sorted_;
 }
 
+// One Jacobi evaluation serves R(t) and ω(t) alike.
 ExactState ExactRotation::state(double t) const {
   ExactState state;
   state.t = t;
-  const Eigen::Matrix3d R = orientation(t);
+  Eigen::Matrix3d R;
+  if (case_ == ExactCase::steady) {
+    R = orientation(t);
+    state.omega_body = omega0_;
+  } else {
+    if (parts_ == ExactParts::omega_only)
+      throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
+    const Jacobi j = jacobi(phase(t));
+    R = orientation_at(t, j);
+    state.omega_body = to_sorted_.transpose() * sorted_omega(j);
+  }
   Eigen::Quaterniond q(R);
   q.normalize();
   if (q.w() < 0.0) q.coeffs() = -q.coeffs();
   state.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
-  state.omega_body = omega_body(t);
   state.omega_world = R * state.omega_body;
   state.L = R * moments_.cwiseProduct(state.omega_body);
   state.E = 0.5 * state.omega_body.dot(moments_.cwiseProduct(state.omega_body));
@@ -323,7 +371,10 @@ Eigen::Matrix3d ExactRotation::orientation(double t) const {
   }
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  const Jacobi j = jacobi(phase(t));
+  return orientation_at(t, jacobi(phase(t)));
+}
+
+Eigen::Matrix3d ExactRotation::orientation_at(double t, const Jacobi& j) const {
   const Eigen::Vector3d L_sorted = I_.cwiseProduct(sorted_omega(j));
   return rotation_from(L_sorted, static_cast<double>(precession_at(t, j)));
 }

@@ -109,6 +109,17 @@ class ExactRotation {
   struct Jacobi {
     long double sn, cn, dn;
   };
+  /// The arithmetic-geometric mean of 1 and k' that Boost's jacobi_elliptic forms on every call
+  /// (docs/physics.md §8, "How the code evaluates ω(t)"), formed once: level n = 1…levels
+  /// holds c_n/a_n, and T_N = 2^N a_N u starts the descent.
+  struct JacobiAgm {
+    static constexpr int kMaxLevels = 64;
+    int levels = 0;
+    long double a_last = 0.0L;                    ///< a_N
+    std::array<long double, kMaxLevels> ratio{};  ///< c_n/a_n at index n − 1
+  };
+  void set_jacobi_agm();
+  Jacobi jacobi_reduced(long double u) const;
   void classify(const Eigen::Vector3d& w);
   void set_amplitudes(long double d1, long double d2, long double d3);
   void set_phase(const Eigen::Vector3d& w);
@@ -121,6 +132,7 @@ class ExactRotation {
   long double precession_at(double t, const Jacobi& j) const;
   Eigen::Matrix3d momentum_frame(const Eigen::Vector3d& L_sorted) const;
   Eigen::Matrix3d rotation_from(const Eigen::Vector3d& L_sorted, double psi) const;
+  Eigen::Matrix3d orientation_at(double t, const Jacobi& j) const;
 
   Eigen::Vector3d moments_;    ///< body x, y, z
   Eigen::Vector3d omega0_;     ///< body frame
@@ -133,6 +145,8 @@ class ExactRotation {
   int cn_axis_ = 0, dn_axis_ = 2;  ///< sorted axes carrying cn and dn (sn is always axis 2)
   std::array<long double, 3> amplitude_{};  ///< signed, per sorted axis
   long double k_ = 0.0L, kc2_ = 1.0L, lambda_ = 0.0L, u0_ = 0.0L, K_ = 0.0L;  ///< kc2_ = 1 − k²
+  long double period_ = 0.0L;  ///< 4K, ω's period in u
+  JacobiAgm agm_;
   Eigen::Matrix3d anchor_ = Eigen::Matrix3d::Identity();  ///< W, fixed by R(0) = I
   // ψ(t) = psi_rate_·t + psi_gain_·(S(u(t)) − psi_S0_), S(u) = ∫_0^u sn²/(1 − n sn²) du (§8).
   long double psi_rate_ = 0.0L;    ///< |L|/I_c, the rate at sn = 0
