@@ -1,9 +1,9 @@
 #include "physics/exact_solution.hpp"
 
 #include <algorithm>
+#include <array>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
-#include <boost/math/tools/precision.hpp>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -42,6 +42,129 @@ Eigen::Matrix3d rotation_z(double psi) {
   return r;
 }
 
+/// 1/n! for n = 0…22 (n! itself is exact in long double up to 25!).
+constexpr std::array<Real, 23> kInverseFactorial = [] {
+  std::array<Real, 23> inverse{};
+  Real factorial = 1;
+  for (int n = 0; n < 23; ++n) {
+    if (n > 0) factorial *= n;
+    inverse[n] = 1 / factorial;
+  }
+  return inverse;
+}();
+
+/// sin v and cos v for 0 ≤ v ≤ 8 in long double: v less the nearest multiple j of π/2 (π/2 in
+/// two parts, the first's product with j exact), then Taylor series on |r| ≤ π/4 to r²¹ and
+/// r²², whose next terms are below 1e-23 relative. glibc's sincosl reduces every argument by
+/// Payne–Hanek, which cost more than the rest of a row.
+void sin_cos(Real v, Real& sin_v, Real& cos_v) {
+  constexpr Real kHalfPiHi = 1.5707963267341256141662597656250L;              // 32 significant bits
+  constexpr Real kHalfPiLo = 6.077100506506192601475144209858469968755e-11L;  // π/2 − kHalfPiHi
+  const long quadrant = static_cast<long>(v * (2 / std::numbers::pi_v<Real>)+0.5L);
+  const Real j = static_cast<Real>(quadrant);
+  const Real r = (v - j * kHalfPiHi) - j * kHalfPiLo, r2 = r * r;
+  Real s = kInverseFactorial[21];
+  for (int n = 19; n >= 1; n -= 2) s = kInverseFactorial[n] - r2 * s;
+  const Real sin_r = r * s;
+  Real c = kInverseFactorial[22];
+  for (int n = 20; n >= 0; n -= 2) c = kInverseFactorial[n] - r2 * c;
+  const Real cos_r = c;
+  switch (quadrant & 3) {
+    case 0:
+      sin_v = sin_r, cos_v = cos_r;
+      break;
+    case 1:
+      sin_v = cos_r, cos_v = -sin_r;
+      break;
+    case 2:
+      sin_v = -sin_r, cos_v = -cos_r;
+      break;
+    default:
+      sin_v = -cos_r, cos_v = sin_r;
+      break;
+  }
+}
+
+/// atan x for x ≥ 0: atan x = π/2 − atan(1/x) above 1, then atan x = atan c + atan y with c
+/// the nearest multiple of 1/8 (its arctangent tabulated), y = (x − c)/(1 + x c), |y| ≤ 1/16
+/// (x − c exact), and atan y's Taylor series to y¹⁷ (next term below 1e-22 relative).
+Real atan_nonnegative(Real x) {
+  static constexpr std::array<Real, 9> kAtanEighths{0.0L,
+                                                    0.124354994546761435031354849164L,
+                                                    0.244978663126864154172082481211L,
+                                                    0.358770670270572220395920063926L,
+                                                    0.463647609000806116214256231461L,
+                                                    0.558599315343562435971508216402L,
+                                                    0.643501108793284386802809228717L,
+                                                    0.718829999621624505417014151526L,
+                                                    0.78539816339744830961566084582L};
+  const bool inverted = x > 1;
+  if (inverted) x = 1 / x;
+  const int j = static_cast<int>(x * 8 + 0.5L);
+  const Real c = j / 8.0L, y = (x - c) / (1 + x * c), y2 = y * y;
+  Real series = 1.0L / 17;
+  for (int n = 15; n >= 1; n -= 2) series = 1.0L / n - y2 * series;
+  const Real angle = kAtanEighths[j] + y * series;
+  return inverted ? std::numbers::pi_v<Real> / 2 - angle : angle;
+}
+
+/// R_C(1, 1 + e) = atan(√e)/√e for e ≥ 0 (DLMF 19.2.19); below 1e-3 its series
+/// Σ (−e)^j/(2j + 1), whose eighth term is under 1e-25.
+Real carlson_rc1p(Real e) {
+  if (e >= 1e-3L) {
+    const Real r = std::sqrt(e);
+    return atan_nonnegative(r) / r;
+  }
+  return 1 -
+         e * (1.0L / 3 -
+              e * (1.0L / 5 -
+                   e * (1.0L / 7 - e * (1.0L / 9 - e * (1.0L / 11 - e * (1.0L / 13 - e / 15))))));
+}
+
+/// Carlson's R_J(x, y, z, p) for x, y, z ≥ 0, at most one of them 0, and p ≥ max(x, y, z), so
+/// that every R_C of the duplication has a nonnegative argument: the duplication of DLMF
+/// 19.36(i) with the stopping rule and seventh-order series of Boost.Math's ellint_rj, which it
+/// follows step for step, but each R_C(1, 1 + E_m) by its series once E_m (falling 64-fold per
+/// step) is small, and A^{−3/2} by a square root rather than pow: one arctangent per call
+/// instead of one a step.
+/// rx, ry, rz are √x, √y, √z, which the caller has at hand.
+Real carlson_rj(Real x, Real y, Real z, Real p, Real rx, Real ry, Real rz) {
+  static const Real kQ = std::pow(std::numeric_limits<Real>::epsilon() / 5, -1.0L / 8);
+  Real A = (x + y + z + 2 * p) / 5;
+  const Real A0 = A, x0 = x, y0 = y, z0 = z;
+  Real delta = (p - x) * (p - y) * (p - z);
+  const Real Q = kQ * std::max(std::max(std::abs(A - x), std::abs(A - y)),
+                               std::max(std::abs(A - z), std::abs(A - p)));
+  Real fmn = 1, rc_sum = 0;  // fmn = 4^−m
+  for (int m = 0; m < 100; ++m) {
+    const Real rp = std::sqrt(p);
+    const Real inverse_D = 1 / ((rp + rx) * (rp + ry) * (rp + rz));
+    rc_sum += fmn * inverse_D * carlson_rc1p(delta * inverse_D * inverse_D);
+    const Real lambda = rx * ry + rx * rz + ry * rz;
+    A = (A + lambda) / 4;
+    fmn /= 4;
+    if (fmn * Q < A) break;
+    x = (x + lambda) / 4;
+    y = (y + lambda) / 4;
+    z = (z + lambda) / 4;
+    p = (p + lambda) / 4;
+    delta /= 64;
+    rx = std::sqrt(x);
+    ry = std::sqrt(y);
+    rz = std::sqrt(z);
+  }
+  const Real f = fmn / A, X = f * (A0 - x0), Y = f * (A0 - y0), Z = f * (A0 - z0);
+  const Real P = (-X - Y - Z) / 2;
+  const Real E2 = X * Y + X * Z + Y * Z - 3 * P * P;
+  const Real E3 = X * Y * Z + 2 * E2 * P + 4 * P * P * P;
+  const Real E4 = (2 * X * Y * Z + E2 * P + 3 * P * P * P) * P;
+  const Real E5 = X * Y * Z * P * P;
+  const Real series = 1 - 3 * E2 / 14 + E3 / 6 + 9 * E2 * E2 / 88 - 3 * E4 / 22 - 9 * E2 * E3 / 52 +
+                      3 * E5 / 26 - E2 * E2 * E2 / 16 + 3 * E3 * E3 / 40 + 3 * E2 * E4 / 20 +
+                      45 * E2 * E2 * E3 / 272 - 9 * (E3 * E4 + E2 * E5) / 68;
+  return fmn / (A * std::sqrt(A)) * series + 6 * rc_sum;
+}
+
 }  // namespace
 
 ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
@@ -60,7 +183,7 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   classify(w);
   if (case_ == ExactCase::steady) return;
   set_phase(w);
-  set_jacobi_agm();
+  set_landen_chain();
   if (parts_ == ExactParts::omega_and_orientation) set_precession();
   anchor_ = (momentum_frame(I_.cwiseProduct(w)) * to_sorted_).transpose();
 }
@@ -143,45 +266,50 @@ void ExactRotation::set_phase(const Eigen::Vector3d& w) {
   }
 }
 
-// Boost's jacobi_elliptic (Abramowitz & Stegun 16.4) forms the arithmetic-geometric mean of 1
-// and k' anew on every call; it depends on k alone, so it is formed here once, by the very
-// operations Boost performs, and jacobi_reduced() descends from it as Boost does: the same sn
-// and cn to the last bit (docs/physics.md §8, "How the code evaluates ω(t)").
-void ExactRotation::set_jacobi_agm() {
+// The descending Landen transformation (DLMF 22.7(i)): with k_{n+1} = (1 − k'_n)/(1 + k'_n)
+// = k_n²/(1 + k'_n)² and k'_{n+1} = 2√k'_n/(1 + k'_n), both free of cancellation, the moduli
+// fall quadratically (six levels from k' = 1e-9). k'_0 is Boost's, √(2(1 − k) − (1 − k)²) of
+// the stored k, so that K, F and the precession's R_J, all Boost's, see the same modulus.
+void ExactRotation::set_landen_chain() {
   period_ = 4.0L * K_;
-  agm_ = JacobiAgm{};
-  if (k_ == 0.0L || k_ >= 1.0L || k_ < boost::math::tools::forth_root_epsilon<Real>()) return;
+  landen_ = LandenChain{};
+  if (k_ == 0.0L || k_ >= 1.0L) return;
   const Real kc = 1 - k_;
-  const Real k_prime = k_ < 0.5L ? Real(std::sqrt(1 - k_ * k_)) : Real(std::sqrt(2 * kc - kc * kc));
-  Real a = 1, b = k_prime;
-  for (int n = 1; n <= JacobiAgm::kMaxLevels; ++n) {
-    const Real c = (a - b) / 2, a_next = (a + b) / 2;
-    agm_.ratio[n - 1] = c / a_next;
-    if (c < std::numeric_limits<Real>::epsilon() || n == JacobiAgm::kMaxLevels) {
-      agm_.levels = n;
-      agm_.a_last = a_next;
-      return;
-    }
-    b = std::sqrt(a * b);
-    a = a_next;
+  Real k = k_, kp = k_ < 0.5L ? Real(std::sqrt(1 - k_ * k_)) : Real(std::sqrt(2 * kc - kc * kc));
+  while (k >= 1e-5L && landen_.levels < LandenChain::kMaxLevels) {
+    const Real next = k * k / ((1 + kp) * (1 + kp));
+    landen_.k[landen_.levels] = next;
+    landen_.one_minus_k[landen_.levels] = 2 * kp / (1 + kp);
+    landen_.scale /= 1 + next;
+    kp = 2 * std::sqrt(kp) / (1 + kp);
+    k = next;
+    ++landen_.levels;
   }
+  landen_.m_last = k * k;
 }
 
-// sn and cn of u ≥ 0 (dn is left 0), by Boost 1.74's jacobi_imp for 0 ≤ k ≤ 1, branch for
-// branch, with the mean taken from set_jacobi_agm(): sin(2φ_{n−1} − φ_n) = (c_n/a_n) sin φ_n
-// from φ_N = 2^N a_N u down to φ_0 = am u.
+// sn and cn of u in [0, 4K] (dn is left 0). At the bottom of the chain, modulus k_N < 1e-5 and
+// v = u/∏(1 + k_n) in [0, 2π]: sn, cn = sin v ∓ ¼k_N²(v − sin v cos v)(cos v, −sin v), dn =
+// 1 − ½k_N² sin² v (A&S 16.13, error O(k_N⁴) < 1e-20). Each level up (DLMF 22.7.1–22.7.3),
+// with s, c, d of modulus k_{n+1} and D = 1 + k_{n+1} s²:
+//   sn = (1 + k_{n+1}) s/D,  cn = c d/D,  dn = (1 − k_{n+1} s²)/D = ((1 − k_{n+1}) + k_{n+1} c²)/D,
+// the last summing positive terms (1 − k_{n+1} s² would cancel near the separatrix).
 ExactRotation::Jacobi ExactRotation::jacobi_reduced(long double u) const {
-  if (u == 0.0L) return {0.0L, 1.0L, 0.0L};
-  if (k_ == 0.0L) return {std::sin(u), std::cos(u), 0.0L};
   if (k_ >= 1.0L) return {std::tanh(u), 1 / std::cosh(u), 0.0L};
-  if (agm_.levels == 0) {  // k below the fourth root of ε: A&S 16.13
-    const Real su = std::sin(u), cu = std::cos(u), m = k_ * k_;
-    return {su - m * (u - su * cu) * cu / 4, cu + m * (u - su * cu) * su / 4, 0.0L};
+  const Real v = landen_.scale * u;
+  Real s0, c0;
+  sin_cos(v, s0, c0);
+  if (k_ == 0.0L) return {s0, c0, 0.0L};
+  const Real m = landen_.m_last, w = m * (v - s0 * c0) / 4;
+  Real s = s0 - w * c0, c = c0 + w * s0, d = 1 - m * s0 * s0 / 2;
+  for (int n = landen_.levels - 1; n >= 0; --n) {
+    const Real kn = landen_.k[n], D = 1 + kn * s * s;
+    const Real s_up = (1 + kn) * s / D, c_up = c * d / D;
+    d = (landen_.one_minus_k[n] + kn * c * c) / D;
+    s = s_up;
+    c = c_up;
   }
-  Real phi = std::ldexp(Real(1), agm_.levels) * u * agm_.a_last;
-  for (int n = agm_.levels; n >= 1; --n)
-    phi = (phi + std::asin(agm_.ratio[n - 1] * std::sin(phi))) / 2;
-  return {std::sin(phi), std::cos(phi), 0.0L};
+  return {s, c, 0.0L};
 }
 
 ExactRotation::Jacobi ExactRotation::jacobi(long double u) const {
@@ -272,13 +400,23 @@ void ExactRotation::set_precession() {
 // S = ±S(2K) − (1/3) sn³ R_J(…) (S(π − φ) = S(2K) − S(φ)).
 long double ExactRotation::periodic_S(long double u, const Jacobi& j) const {
   const Real period = 2.0L * K_;
-  const Real m = std::round(u / period);
-  const Real flip = std::fmod(m, 2.0L) == 0.0L ? 1.0L : -1.0L;
+  // m = round(u/period), its parity by an integer where it fits in one.
+  const Real ratio = u / period;
+  Real m, flip;
+  if (std::abs(ratio) < 1e18L) {
+    const long long whole = static_cast<long long>(ratio + (ratio < 0.0L ? -0.5L : 0.5L));
+    m = static_cast<Real>(whole);
+    flip = whole % 2 == 0 ? 1.0L : -1.0L;
+  } else {
+    m = std::round(ratio);
+    flip = std::fmod(m, 2.0L) == 0.0L ? 1.0L : -1.0L;
+  }
   const Real sn = flip * j.sn, cn = flip * j.cn;
   const Real cn2 = cn * cn, dn2 = psi_kc2_ + k_ * k_ * cn2, sn2 = sn * sn;
   Real part = 0.0L;
   if (sn != 0.0L)
-    part = sn * sn2 / 3.0L * boost::math::ellint_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2);
+    part = sn * sn2 / 3.0L *
+           carlson_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2, std::abs(cn), std::sqrt(dn2), 1.0L);
   if (cn < 0.0L) part = (sn < 0.0L ? -psi_S_half_ : psi_S_half_) - part;
   return m * psi_S_half_ + part;
 }

@@ -76,12 +76,13 @@ class ExactRotation {
   /// Body-frame angular momentum I ω(t).
   Eigen::Vector3d angular_momentum_body(double t) const;
   /// R(t), 3×3 rotation taking body coordinates to world coordinates; R(0) = I and
-  /// R(t)·I·ω(t) = L (world). A few µs per call: one long-double Jacobi evaluation and one R_J.
+  /// R(t)·I·ω(t) = L (world). About half a µs per call: one long-double Jacobi evaluation and
+  /// one R_J from the motion's constants (docs/physics.md §8, "How the code evaluates ω(t)").
   /// Throws std::logic_error for ExactParts::omega_only.
   Eigen::Matrix3d orientation(double t) const;
   /// Everything at time `t`: R(t) as a unit quaternion with w ≥ 0, ω in the body and the world
-  /// frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8). Throws std::logic_error for
-  /// ExactParts::omega_only.
+  /// frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8), from one Jacobi evaluation
+  /// and one R_J. Throws std::logic_error for ExactParts::omega_only.
   ExactState state(double t) const;
   /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion. Throws
   /// std::logic_error for ExactParts::omega_only.
@@ -109,16 +110,19 @@ class ExactRotation {
   struct Jacobi {
     long double sn, cn, dn;
   };
-  /// The arithmetic-geometric mean of 1 and k' that Boost's jacobi_elliptic forms on every call
-  /// (docs/physics.md §8, "How the code evaluates ω(t)"), formed once: level n = 1…levels
-  /// holds c_n/a_n, and T_N = 2^N a_N u starts the descent.
-  struct JacobiAgm {
-    static constexpr int kMaxLevels = 64;
-    int levels = 0;
-    long double a_last = 0.0L;                    ///< a_N
-    std::array<long double, kMaxLevels> ratio{};  ///< c_n/a_n at index n − 1
+  /// The descending Landen (Gauss) transformation's moduli k_0 = k > k_1 > … > k_N (DLMF
+  /// 22.7(i)), formed once per motion (docs/physics.md §8, "How the code evaluates ω(t)"): sn,
+  /// cn of modulus k_n follow from those of k_{n+1} at u/(1 + k_{n+1}) by a few products, and at
+  /// k_N < 1e-5 they are sin and cos with an O(k_N²) correction.
+  struct LandenChain {
+    static constexpr int kMaxLevels = 16;
+    int levels = 0;                                     ///< N
+    long double scale = 1.0L;                           ///< 1/∏(1 + k_n), n = 1…N: v = scale·u
+    long double m_last = 0.0L;                          ///< k_N²
+    std::array<long double, kMaxLevels> k{};            ///< k_{n+1} at index n
+    std::array<long double, kMaxLevels> one_minus_k{};  ///< 1 − k_{n+1} = 2k'_n/(1 + k'_n)
   };
-  void set_jacobi_agm();
+  void set_landen_chain();
   Jacobi jacobi_reduced(long double u) const;
   void classify(const Eigen::Vector3d& w);
   void set_amplitudes(long double d1, long double d2, long double d3);
@@ -146,7 +150,7 @@ class ExactRotation {
   std::array<long double, 3> amplitude_{};  ///< signed, per sorted axis
   long double k_ = 0.0L, kc2_ = 1.0L, lambda_ = 0.0L, u0_ = 0.0L, K_ = 0.0L;  ///< kc2_ = 1 − k²
   long double period_ = 0.0L;  ///< 4K, ω's period in u
-  JacobiAgm agm_;
+  LandenChain landen_;
   Eigen::Matrix3d anchor_ = Eigen::Matrix3d::Identity();  ///< W, fixed by R(0) = I
   // ψ(t) = psi_rate_·t + psi_gain_·(S(u(t)) − psi_S0_), S(u) = ∫_0^u sn²/(1 − n sn²) du (§8).
   long double psi_rate_ = 0.0L;    ///< |L|/I_c, the rate at sn = 0
