@@ -4,6 +4,7 @@
 #include <array>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -60,7 +61,10 @@ constexpr std::array<Real, 23> kInverseFactorial = [] {
 void sin_cos(Real v, Real& sin_v, Real& cos_v) {
   constexpr Real kHalfPiHi = 1.5707963267341256141662597656250L;              // 32 significant bits
   constexpr Real kHalfPiLo = 6.077100506506192601475144209858469968755e-11L;  // π/2 − kHalfPiHi
-  const long quadrant = static_cast<long>(v * (2 / std::numbers::pi_v<Real>)+0.5L);
+  // Rounded through a double: a long double's conversion to an integer sets the x87 control
+  // word twice, which costs more than the series (any j within one of v/(π/2) would do).
+  const long quadrant =
+      static_cast<long>(static_cast<double>(v * (2 / std::numbers::pi_v<Real>)) + 0.5);
   const Real j = static_cast<Real>(quadrant);
   const Real r = (v - j * kHalfPiHi) - j * kHalfPiLo, r2 = r * r;
   Real s = kInverseFactorial[21];
@@ -100,7 +104,7 @@ Real atan_nonnegative(Real x) {
                                                     0.78539816339744830961566084582L};
   const bool inverted = x > 1;
   if (inverted) x = 1 / x;
-  const int j = static_cast<int>(x * 8 + 0.5L);
+  const int j = static_cast<int>(static_cast<double>(x) * 8 + 0.5);  // a double: see sin_cos
   const Real c = j / 8.0L, y = (x - c) / (1 + x * c), y2 = y * y;
   Real series = 1.0L / 17;
   for (int n = 15; n >= 1; n -= 2) series = 1.0L / n - y2 * series;
@@ -123,13 +127,15 @@ Real carlson_rc1p(Real e) {
 
 /// Carlson's R_J(x, y, z, p) for x, y, z ≥ 0, at most one of them 0, and p ≥ max(x, y, z), so
 /// that every R_C of the duplication has a nonnegative argument: the duplication of DLMF
-/// 19.36(i) with the stopping rule and seventh-order series of Boost.Math's ellint_rj, which it
-/// follows step for step, but each R_C(1, 1 + E_m) by its series once E_m (falling 64-fold per
-/// step) is small, and A^{−3/2} by a square root rather than pow: one arctangent per call
-/// instead of one a step.
+/// 19.36(i) with the seventh-order series of Boost.Math's ellint_rj, which it follows step for
+/// step, but each R_C(1, 1 + E_m) by its series once E_m (falling 64-fold per step) is small,
+/// and A^{−3/2} by a square root rather than pow: one arctangent per call instead of one a
+/// step. It stops once the series' truncation, of the order of Q_m⁸ (Q_m the arguments' spread
+/// about their mean after m steps, relative), is below 10 ε of long double, still a hundred
+/// times below a double's ε (Boost asks ε/5: one step more, a fifth of the time).
 /// rx, ry, rz are √x, √y, √z, which the caller has at hand.
 Real carlson_rj(Real x, Real y, Real z, Real p, Real rx, Real ry, Real rz) {
-  static const Real kQ = std::pow(std::numeric_limits<Real>::epsilon() / 5, -1.0L / 8);
+  static const Real kQ = std::pow(10 * std::numeric_limits<Real>::epsilon(), -1.0L / 8);
   Real A = (x + y + z + 2 * p) / 5;
   const Real A0 = A, x0 = x, y0 = y, z0 = z;
   Real delta = (p - x) * (p - y) * (p - z);
@@ -313,11 +319,22 @@ ExactRotation::Jacobi ExactRotation::jacobi_reduced(long double u) const {
 }
 
 ExactRotation::Jacobi ExactRotation::jacobi(long double u) const {
-  // Reduce to one period 4K first: the functions lose accuracy with the argument's size.
-  if (case_ != ExactCase::separatrix) u -= period_ * std::floor(u / period_);
+  // Reduce to one period 4K first: the functions lose accuracy with the argument's size. The
+  // whole periods are counted in a double (glibc's floorl sets the x87 control word): where
+  // that rounds up, u is left a hair below 0, which jacobi_reduced takes as well.
+  if (case_ != ExactCase::separatrix)
+    u -= period_ * static_cast<Real>(std::floor(static_cast<double>(u / period_)));
   Jacobi j = jacobi_reduced(u);
   // Boost forms dn as a ratio of two cosines that both vanish where cn = 0, losing digits
   // near u = K (where dn = k' is smallest); dn² = k'² + k² cn² adds positive terms instead.
+  j.dn = std::sqrt(kc2_ + k_ * k_ * j.cn * j.cn);
+  return j;
+}
+
+ExactRotation::Jacobi ExactRotation::jacobi_boost(long double u) const {
+  if (case_ != ExactCase::separatrix) u -= period_ * std::floor(u / period_);
+  Jacobi j{};
+  j.sn = boost::math::jacobi_elliptic(k_, u, &j.cn, &j.dn);
   j.dn = std::sqrt(kc2_ + k_ * k_ * j.cn * j.cn);
   return j;
 }
@@ -388,7 +405,8 @@ void ExactRotation::set_precession() {
   // Over one period 2K of sn²: 2 S(K) = (2/3) R_J(0, k'², 1, 1 − n).
   psi_kc2_ = (1.0L - k_) * (1.0L + k_);
   psi_S_half_ = 2.0L / 3.0L * boost::math::ellint_rj(0.0L, psi_kc2_, 1.0L, one_minus_n);
-  psi_S0_ = periodic_S(u0_, jacobi(u0_));
+  psi_S0_ = periodic_S(u0_, jacobi(u0_), Evaluation::fast);
+  psi_S0_boost_ = periodic_S(u0_, jacobi_boost(u0_), Evaluation::boost);
 }
 
 // S(u) for |u| ≤ K (DLMF 19.25.14, homogeneous form: sin φ = sn u, cos φ = cn u,
@@ -398,13 +416,15 @@ void ExactRotation::set_precession() {
 // not from v alone: within ~1e-10 of ±K (near the separatrix) Boost's sn and cn may already
 // be past the quarter period where v is not, and φ = am v past ±π/2 has
 // S = ±S(2K) − (1/3) sn³ R_J(…) (S(π − φ) = S(2K) − S(φ)).
-long double ExactRotation::periodic_S(long double u, const Jacobi& j) const {
+long double ExactRotation::periodic_S(long double u, const Jacobi& j, Evaluation how) const {
   const Real period = 2.0L * K_;
   // m = round(u/period), its parity by an integer where it fits in one.
   const Real ratio = u / period;
   Real m, flip;
   if (std::abs(ratio) < 1e18L) {
-    const long long whole = static_cast<long long>(ratio + (ratio < 0.0L ? -0.5L : 0.5L));
+    // Through a double, as in sin_cos: the branch below holds for an m one off at ±K.
+    const double r = static_cast<double>(ratio);
+    const long long whole = static_cast<long long>(r + (r < 0.0 ? -0.5 : 0.5));
     m = static_cast<Real>(whole);
     flip = whole % 2 == 0 ? 1.0L : -1.0L;
   } else {
@@ -416,7 +436,9 @@ long double ExactRotation::periodic_S(long double u, const Jacobi& j) const {
   Real part = 0.0L;
   if (sn != 0.0L)
     part = sn * sn2 / 3.0L *
-           carlson_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2, std::abs(cn), std::sqrt(dn2), 1.0L);
+           (how == Evaluation::fast ? carlson_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2, std::abs(cn),
+                                                 std::sqrt(dn2), 1.0L)
+                                    : boost::math::ellint_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2));
   if (cn < 0.0L) part = (sn < 0.0L ? -psi_S_half_ : psi_S_half_) - part;
   return m * psi_S_half_ + part;
 }
@@ -452,11 +474,11 @@ double ExactRotation::precession_angle(double t) const {
   return precession_at(t, jacobi(phase(t)));
 }
 
-long double ExactRotation::precession_at(double t, const Jacobi& j) const {
+long double ExactRotation::precession_at(double t, const Jacobi& j, Evaluation how) const {
   const Real u = phase(t);
   const Real dS = case_ == ExactCase::separatrix
                       ? separatrix_S(u, u0_, lambda_ * static_cast<Real>(t))
-                      : periodic_S(u, j) - psi_S0_;
+                      : periodic_S(u, j, how) - (how == Evaluation::fast ? psi_S0_ : psi_S0_boost_);
   return psi_rate_ * static_cast<Real>(t) + psi_gain_ * dS;
 }
 
@@ -512,9 +534,28 @@ Eigen::Matrix3d ExactRotation::orientation(double t) const {
   return orientation_at(t, jacobi(phase(t)));
 }
 
-Eigen::Matrix3d ExactRotation::orientation_at(double t, const Jacobi& j) const {
+Eigen::Matrix3d ExactRotation::orientation_at(double t, const Jacobi& j, Evaluation how) const {
   const Eigen::Vector3d L_sorted = I_.cwiseProduct(sorted_omega(j));
-  return rotation_from(L_sorted, static_cast<double>(precession_at(t, j)));
+  return rotation_from(L_sorted, static_cast<double>(precession_at(t, j, how)));
+}
+
+// The evaluation as it was: R(t) and ω(t) each from their own Boost jacobi_elliptic.
+ExactState ExactRotation::state_boost(double t) const {
+  if (case_ == ExactCase::steady) return state(t);
+  if (parts_ == ExactParts::omega_only)
+    throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
+  ExactState state;
+  state.t = t;
+  const Eigen::Matrix3d R = orientation_at(t, jacobi_boost(phase(t)), Evaluation::boost);
+  Eigen::Quaterniond q(R);
+  q.normalize();
+  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
+  state.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+  state.omega_body = to_sorted_.transpose() * sorted_omega(jacobi_boost(phase(t)));
+  state.omega_world = R * state.omega_body;
+  state.L = R * moments_.cwiseProduct(state.omega_body);
+  state.E = 0.5 * state.omega_body.dot(moments_.cwiseProduct(state.omega_body));
+  return state;
 }
 
 double ExactRotation::period() const {
