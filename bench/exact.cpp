@@ -57,8 +57,7 @@ void bench_exact(const BenchContext& context) {
   for (long n = 0; n < kRows; ++n) times[n] = 0.01 * static_cast<double>(n);
   for (const Motion& m : kMotions) {
     const physics::ExactRotation exact(m.moments, m.omega0);
-    const double before =
-        best_us_per_row([&](double t) { return exact.state_boost(t).q[0]; });
+    const double before = best_us_per_row([&](double t) { return exact.state_boost(t).q[0]; });
     const double now = best_us_per_row([&](double t) { return exact.state(t).q[0]; });
     const std::string name = m.name;
     report.add({"exact", name + ": state(), per-motion constants", now, "us/row", note});

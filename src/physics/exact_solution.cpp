@@ -129,11 +129,12 @@ Real carlson_rc1p(Real e) {
 /// that every R_C of the duplication has a nonnegative argument: the duplication of DLMF
 /// 19.36(i) with the seventh-order series of Boost.Math's ellint_rj, which it follows step for
 /// step, but each R_C(1, 1 + E_m) by its series once E_m (falling 64-fold per step) is small,
-/// and A^{−3/2} by a square root rather than pow: one arctangent per call instead of one a
-/// step. It stops once the series' truncation, of the order of Q_m⁸ (Q_m the arguments' spread
-/// about their mean after m steps, relative), is below 10 ε of long double, still a hundred
-/// times below a double's ε (Boost asks ε/5: one step more, a fifth of the time).
-/// rx, ry, rz are √x, √y, √z, which the caller has at hand.
+/// and A^{−3/2} by a square root rather than pow: an arctangent only while E_m ≥ 1e-3, the
+/// first step or two (near |sn| = 1 close to the separatrix, where x and y are both tiny, a few
+/// more: docs/physics.md §8). It stops once the series' truncation, of the order of Q_m⁸ (Q_m the
+/// arguments' spread about their mean after m steps, relative), is below 10 ε of long double, still
+/// a hundred times below a double's ε (Boost asks ε/5: one step more, a fifth of the time). rx, ry,
+/// rz are √x, √y, √z, which the caller has at hand.
 Real carlson_rj(Real x, Real y, Real z, Real p, Real rx, Real ry, Real rz) {
   static const Real kQ = std::pow(10 * std::numeric_limits<Real>::epsilon(), -1.0L / 8);
   Real A = (x + y + z + 2 * p) / 5;
