@@ -103,11 +103,11 @@ void add_options(CLI::App& cmd, BenchOptions& options) {
       ->check(CLI::Range(0.1, 60.0))
       ->capture_default_str();
   cmd.add_option("--only", options.only,
-                 "Run only these sections: pipeline, peer, resolution, physics, memory, "
+                 "Run only these sections: pipeline, peer, resolution, physics, exact, memory, "
                  "gif-memory, explorer, presets, fit (gif-memory, explorer, presets and fit run "
                  "only when named)")
-      ->check(CLI::IsMember({"pipeline", "peer", "resolution", "physics", "memory", "gif-memory",
-                             "explorer", "presets", "fit"}))
+      ->check(CLI::IsMember({"pipeline", "peer", "resolution", "physics", "exact", "memory",
+                             "gif-memory", "explorer", "presets", "fit"}))
       ->take_all();
 }
 
@@ -136,6 +136,7 @@ int bench_command(const BenchOptions& options) {
   if (wanted(options, "peer")) bench_peer(context);
   if (wanted(options, "resolution")) bench_resolution(context);
   if (wanted(options, "physics")) bench_physics(context);
+  if (wanted(options, "exact")) bench_exact(context);
   // Not part of a plain bench: bench/explorer_bench.py (make bench-explorer) asks for it.
   if (!options.only.empty() && wanted(options, "explorer")) bench_explorer(context);
   // Minutes of encoding: only when named (docs/performance.md, "The default x264 preset").

@@ -26,7 +26,7 @@ struct BenchOptions {
   int gif_frames = 0;             ///< frames of the GIF memory runs; 0: the scene's own
   double fit_minutes = 10.0;      ///< minutes of the fit section's 500 Hz recording
   std::vector<std::string> only;  ///< sections to run (pipeline, peer, resolution, physics,
-                                  ///< memory, gif-memory, explorer, presets, fit)
+                                  ///< exact, memory, gif-memory, explorer, presets, fit)
 };
 
 /// The machine cannot hold what the bench was asked to measure (exit status 1).
@@ -52,6 +52,9 @@ void bench_pipeline(const BenchContext& context);
 void bench_resolution(const BenchContext& context);
 /// ns per step and accuracy of every model × integrator, and of MuJoCo's mj_step.
 void bench_physics(const BenchContext& context);
+/// µs per row of the exact motion (ExactRotation::state) against its evaluation as it was
+/// (state_boost), on the same rows in this run, and of jobs::exact_motion_at (Python's work).
+void bench_exact(const BenchContext& context);
 /// ns per step of the explorer page's methods natively (`rounds` timings, the best kept), the
 /// loop of web/bindings.cpp's Session::step; bench/explorer_bench.py pairs them with the page's.
 void bench_explorer(const BenchContext& context);

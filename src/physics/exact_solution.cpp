@@ -1,6 +1,7 @@
 #include "physics/exact_solution.hpp"
 
 #include <algorithm>
+#include <array>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
@@ -42,6 +43,135 @@ Eigen::Matrix3d rotation_z(double psi) {
   return r;
 }
 
+/// 1/n! for n = 0…22 (n! itself is exact in long double up to 25!).
+constexpr std::array<Real, 23> kInverseFactorial = [] {
+  std::array<Real, 23> inverse{};
+  Real factorial = 1;
+  for (int n = 0; n < 23; ++n) {
+    if (n > 0) factorial *= n;
+    inverse[n] = 1 / factorial;
+  }
+  return inverse;
+}();
+
+/// sin v and cos v for 0 ≤ v ≤ 8 in long double: v less the nearest multiple j of π/2 (π/2 in
+/// two parts, the first's product with j exact), then Taylor series on |r| ≤ π/4 to r²¹ and
+/// r²², whose next terms are below 1e-23 relative. glibc's sincosl reduces every argument by
+/// Payne–Hanek, which cost more than the rest of a row.
+void sin_cos(Real v, Real& sin_v, Real& cos_v) {
+  constexpr Real kHalfPiHi = 1.5707963267341256141662597656250L;              // 32 significant bits
+  constexpr Real kHalfPiLo = 6.077100506506192601475144209858469968755e-11L;  // π/2 − kHalfPiHi
+  // Rounded through a double: a long double's conversion to an integer sets the x87 control
+  // word twice, which costs more than the series (any j within one of v/(π/2) would do).
+  const long quadrant =
+      static_cast<long>(static_cast<double>(v * (2 / std::numbers::pi_v<Real>)) + 0.5);
+  const Real j = static_cast<Real>(quadrant);
+  const Real r = (v - j * kHalfPiHi) - j * kHalfPiLo, r2 = r * r;
+  Real s = kInverseFactorial[21];
+  for (int n = 19; n >= 1; n -= 2) s = kInverseFactorial[n] - r2 * s;
+  const Real sin_r = r * s;
+  Real c = kInverseFactorial[22];
+  for (int n = 20; n >= 0; n -= 2) c = kInverseFactorial[n] - r2 * c;
+  const Real cos_r = c;
+  switch (quadrant & 3) {
+    case 0:
+      sin_v = sin_r, cos_v = cos_r;
+      break;
+    case 1:
+      sin_v = cos_r, cos_v = -sin_r;
+      break;
+    case 2:
+      sin_v = -sin_r, cos_v = -cos_r;
+      break;
+    default:
+      sin_v = -cos_r, cos_v = sin_r;
+      break;
+  }
+}
+
+/// atan x for x ≥ 0: atan x = π/2 − atan(1/x) above 1, then atan x = atan c + atan y with c
+/// the nearest multiple of 1/8 (its arctangent tabulated), y = (x − c)/(1 + x c), |y| ≤ 1/16
+/// (x − c exact), and atan y's Taylor series to y¹⁷ (next term below 1e-22 relative).
+Real atan_nonnegative(Real x) {
+  static constexpr std::array<Real, 9> kAtanEighths{0.0L,
+                                                    0.124354994546761435031354849164L,
+                                                    0.244978663126864154172082481211L,
+                                                    0.358770670270572220395920063926L,
+                                                    0.463647609000806116214256231461L,
+                                                    0.558599315343562435971508216402L,
+                                                    0.643501108793284386802809228717L,
+                                                    0.718829999621624505417014151526L,
+                                                    0.78539816339744830961566084582L};
+  const bool inverted = x > 1;
+  if (inverted) x = 1 / x;
+  const int j = static_cast<int>(static_cast<double>(x) * 8 + 0.5);  // a double: see sin_cos
+  const Real c = j / 8.0L, y = (x - c) / (1 + x * c), y2 = y * y;
+  Real series = 1.0L / 17;
+  for (int n = 15; n >= 1; n -= 2) series = 1.0L / n - y2 * series;
+  const Real angle = kAtanEighths[j] + y * series;
+  return inverted ? std::numbers::pi_v<Real> / 2 - angle : angle;
+}
+
+/// R_C(1, 1 + e) = atan(√e)/√e for e ≥ 0 (DLMF 19.2.19); below 1e-3 its series
+/// Σ (−e)^j/(2j + 1), whose eighth term is under 1e-25.
+Real carlson_rc1p(Real e) {
+  if (e >= 1e-3L) {
+    const Real r = std::sqrt(e);
+    return atan_nonnegative(r) / r;
+  }
+  return 1 -
+         e * (1.0L / 3 -
+              e * (1.0L / 5 -
+                   e * (1.0L / 7 - e * (1.0L / 9 - e * (1.0L / 11 - e * (1.0L / 13 - e / 15))))));
+}
+
+/// Carlson's R_J(x, y, z, p) for x, y, z ≥ 0, at most one of them 0, and p ≥ max(x, y, z), so
+/// that every R_C of the duplication has a nonnegative argument: the duplication of DLMF
+/// 19.36(i) with the seventh-order series of Boost.Math's ellint_rj, which it follows step for
+/// step, but each R_C(1, 1 + E_m) by its series once E_m (falling 64-fold per step) is small,
+/// and A^{−3/2} by a square root rather than pow: an arctangent only while E_m ≥ 1e-3, the
+/// first step or two (near |sn| = 1 close to the separatrix, where x and y are both tiny, a few
+/// more: docs/physics.md §8). It stops once the series' truncation, of the order of Q_m⁸ (Q_m the
+/// arguments' spread about their mean after m steps, relative), is below 10 ε of long double, still
+/// a hundred times below a double's ε (Boost asks ε/5: one step more, a fifth of the time). rx, ry,
+/// rz are √x, √y, √z, which the caller has at hand.
+Real carlson_rj(Real x, Real y, Real z, Real p, Real rx, Real ry, Real rz) {
+  static const Real kQ = std::pow(10 * std::numeric_limits<Real>::epsilon(), -1.0L / 8);
+  Real A = (x + y + z + 2 * p) / 5;
+  const Real A0 = A, x0 = x, y0 = y, z0 = z;
+  Real delta = (p - x) * (p - y) * (p - z);
+  const Real Q = kQ * std::max(std::max(std::abs(A - x), std::abs(A - y)),
+                               std::max(std::abs(A - z), std::abs(A - p)));
+  Real fmn = 1, rc_sum = 0;  // fmn = 4^−m
+  for (int m = 0; m < 100; ++m) {
+    const Real rp = std::sqrt(p);
+    const Real inverse_D = 1 / ((rp + rx) * (rp + ry) * (rp + rz));
+    rc_sum += fmn * inverse_D * carlson_rc1p(delta * inverse_D * inverse_D);
+    const Real lambda = rx * ry + rx * rz + ry * rz;
+    A = (A + lambda) / 4;
+    fmn /= 4;
+    if (fmn * Q < A) break;
+    x = (x + lambda) / 4;
+    y = (y + lambda) / 4;
+    z = (z + lambda) / 4;
+    p = (p + lambda) / 4;
+    delta /= 64;
+    rx = std::sqrt(x);
+    ry = std::sqrt(y);
+    rz = std::sqrt(z);
+  }
+  const Real f = fmn / A, X = f * (A0 - x0), Y = f * (A0 - y0), Z = f * (A0 - z0);
+  const Real P = (-X - Y - Z) / 2;
+  const Real E2 = X * Y + X * Z + Y * Z - 3 * P * P;
+  const Real E3 = X * Y * Z + 2 * E2 * P + 4 * P * P * P;
+  const Real E4 = (2 * X * Y * Z + E2 * P + 3 * P * P * P) * P;
+  const Real E5 = X * Y * Z * P * P;
+  const Real series = 1 - 3 * E2 / 14 + E3 / 6 + 9 * E2 * E2 / 88 - 3 * E4 / 22 - 9 * E2 * E3 / 52 +
+                      3 * E5 / 26 - E2 * E2 * E2 / 16 + 3 * E3 * E3 / 40 + 3 * E2 * E4 / 20 +
+                      45 * E2 * E2 * E3 / 272 - 9 * (E3 * E4 + E2 * E5) / 68;
+  return fmn / (A * std::sqrt(A)) * series + 6 * rc_sum;
+}
+
 }  // namespace
 
 ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
@@ -60,6 +190,7 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   classify(w);
   if (case_ == ExactCase::steady) return;
   set_phase(w);
+  set_landen_chain();
   if (parts_ == ExactParts::omega_and_orientation) set_precession();
   anchor_ = (momentum_frame(I_.cwiseProduct(w)) * to_sorted_).transpose();
 }
@@ -142,16 +273,69 @@ void ExactRotation::set_phase(const Eigen::Vector3d& w) {
   }
 }
 
-ExactRotation::Jacobi ExactRotation::jacobi(long double u) const {
-  if (case_ != ExactCase::separatrix) {
-    // Reduce to one period 4K first: the functions lose accuracy with the argument's size.
-    const Real period = 4.0L * K_;
-    u -= period * std::floor(u / period);
+// The descending Landen transformation (DLMF 22.7(i)): with k_{n+1} = (1 − k'_n)/(1 + k'_n)
+// = k_n²/(1 + k'_n)² and k'_{n+1} = 2√k'_n/(1 + k'_n), both free of cancellation, the moduli
+// fall quadratically (six levels from k' = 1e-9). k'_0 is Boost's, √(2(1 − k) − (1 − k)²) of
+// the stored k, so that K, F and the precession's R_J, all Boost's, see the same modulus.
+void ExactRotation::set_landen_chain() {
+  period_ = 4.0L * K_;
+  landen_ = LandenChain{};
+  if (k_ == 0.0L || k_ >= 1.0L) return;
+  const Real kc = 1 - k_;
+  Real k = k_, kp = k_ < 0.5L ? Real(std::sqrt(1 - k_ * k_)) : Real(std::sqrt(2 * kc - kc * kc));
+  while (k >= 1e-5L && landen_.levels < LandenChain::kMaxLevels) {
+    const Real next = k * k / ((1 + kp) * (1 + kp));
+    landen_.k[landen_.levels] = next;
+    landen_.one_minus_k[landen_.levels] = 2 * kp / (1 + kp);
+    landen_.scale /= 1 + next;
+    kp = 2 * std::sqrt(kp) / (1 + kp);
+    k = next;
+    ++landen_.levels;
   }
-  Jacobi j{};
-  j.sn = boost::math::jacobi_elliptic(k_, u, &j.cn, &j.dn);
+  landen_.m_last = k * k;
+}
+
+// sn and cn of u in [0, 4K] (dn is left 0). At the bottom of the chain, modulus k_N < 1e-5 and
+// v = u/∏(1 + k_n) in [0, 2π]: sn, cn = sin v ∓ ¼k_N²(v − sin v cos v)(cos v, −sin v), dn =
+// 1 − ½k_N² sin² v (A&S 16.13, error O(k_N⁴) < 1e-20). Each level up (DLMF 22.7.1–22.7.3),
+// with s, c, d of modulus k_{n+1} and D = 1 + k_{n+1} s²:
+//   sn = (1 + k_{n+1}) s/D,  cn = c d/D,  dn = (1 − k_{n+1} s²)/D = ((1 − k_{n+1}) + k_{n+1} c²)/D,
+// the last summing positive terms (1 − k_{n+1} s² would cancel near the separatrix).
+ExactRotation::Jacobi ExactRotation::jacobi_reduced(long double u) const {
+  if (k_ >= 1.0L) return {std::tanh(u), 1 / std::cosh(u), 0.0L};
+  const Real v = landen_.scale * u;
+  Real s0, c0;
+  sin_cos(v, s0, c0);
+  if (k_ == 0.0L) return {s0, c0, 0.0L};
+  const Real m = landen_.m_last, w = m * (v - s0 * c0) / 4;
+  Real s = s0 - w * c0, c = c0 + w * s0, d = 1 - m * s0 * s0 / 2;
+  for (int n = landen_.levels - 1; n >= 0; --n) {
+    const Real kn = landen_.k[n], D = 1 + kn * s * s;
+    const Real s_up = (1 + kn) * s / D, c_up = c * d / D;
+    d = (landen_.one_minus_k[n] + kn * c * c) / D;
+    s = s_up;
+    c = c_up;
+  }
+  return {s, c, 0.0L};
+}
+
+ExactRotation::Jacobi ExactRotation::jacobi(long double u) const {
+  // Reduce to one period 4K first: the functions lose accuracy with the argument's size. The
+  // whole periods are counted in a double (glibc's floorl sets the x87 control word): where
+  // that rounds up, u is left a hair below 0, which jacobi_reduced takes as well.
+  if (case_ != ExactCase::separatrix)
+    u -= period_ * static_cast<Real>(std::floor(static_cast<double>(u / period_)));
+  Jacobi j = jacobi_reduced(u);
   // Boost forms dn as a ratio of two cosines that both vanish where cn = 0, losing digits
   // near u = K (where dn = k' is smallest); dn² = k'² + k² cn² adds positive terms instead.
+  j.dn = std::sqrt(kc2_ + k_ * k_ * j.cn * j.cn);
+  return j;
+}
+
+ExactRotation::Jacobi ExactRotation::jacobi_boost(long double u) const {
+  if (case_ != ExactCase::separatrix) u -= period_ * std::floor(u / period_);
+  Jacobi j{};
+  j.sn = boost::math::jacobi_elliptic(k_, u, &j.cn, &j.dn);
   j.dn = std::sqrt(kc2_ + k_ * k_ * j.cn * j.cn);
   return j;
 }
@@ -222,7 +406,8 @@ void ExactRotation::set_precession() {
   // Over one period 2K of sn²: 2 S(K) = (2/3) R_J(0, k'², 1, 1 − n).
   psi_kc2_ = (1.0L - k_) * (1.0L + k_);
   psi_S_half_ = 2.0L / 3.0L * boost::math::ellint_rj(0.0L, psi_kc2_, 1.0L, one_minus_n);
-  psi_S0_ = periodic_S(u0_, jacobi(u0_));
+  psi_S0_ = periodic_S(u0_, jacobi(u0_), Evaluation::fast);
+  psi_S0_boost_ = periodic_S(u0_, jacobi_boost(u0_), Evaluation::boost);
 }
 
 // S(u) for |u| ≤ K (DLMF 19.25.14, homogeneous form: sin φ = sn u, cos φ = cn u,
@@ -232,15 +417,29 @@ void ExactRotation::set_precession() {
 // not from v alone: within ~1e-10 of ±K (near the separatrix) Boost's sn and cn may already
 // be past the quarter period where v is not, and φ = am v past ±π/2 has
 // S = ±S(2K) − (1/3) sn³ R_J(…) (S(π − φ) = S(2K) − S(φ)).
-long double ExactRotation::periodic_S(long double u, const Jacobi& j) const {
+long double ExactRotation::periodic_S(long double u, const Jacobi& j, Evaluation how) const {
   const Real period = 2.0L * K_;
-  const Real m = std::round(u / period);
-  const Real flip = std::fmod(m, 2.0L) == 0.0L ? 1.0L : -1.0L;
+  // m = round(u/period), its parity by an integer where it fits in one.
+  const Real ratio = u / period;
+  Real m, flip;
+  if (std::abs(ratio) < 1e18L) {
+    // Through a double, as in sin_cos: the branch below holds for an m one off at ±K.
+    const double r = static_cast<double>(ratio);
+    const long long whole = static_cast<long long>(r + (r < 0.0 ? -0.5 : 0.5));
+    m = static_cast<Real>(whole);
+    flip = whole % 2 == 0 ? 1.0L : -1.0L;
+  } else {
+    m = std::round(ratio);
+    flip = std::fmod(m, 2.0L) == 0.0L ? 1.0L : -1.0L;
+  }
   const Real sn = flip * j.sn, cn = flip * j.cn;
   const Real cn2 = cn * cn, dn2 = psi_kc2_ + k_ * k_ * cn2, sn2 = sn * sn;
   Real part = 0.0L;
   if (sn != 0.0L)
-    part = sn * sn2 / 3.0L * boost::math::ellint_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2);
+    part = sn * sn2 / 3.0L *
+           (how == Evaluation::fast ? carlson_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2, std::abs(cn),
+                                                 std::sqrt(dn2), 1.0L)
+                                    : boost::math::ellint_rj(cn2, dn2, 1.0L, 1.0L - char_n_ * sn2));
   if (cn < 0.0L) part = (sn < 0.0L ? -psi_S_half_ : psi_S_half_) - part;
   return m * psi_S_half_ + part;
 }
@@ -276,11 +475,11 @@ double ExactRotation::precession_angle(double t) const {
   return precession_at(t, jacobi(phase(t)));
 }
 
-long double ExactRotation::precession_at(double t, const Jacobi& j) const {
+long double ExactRotation::precession_at(double t, const Jacobi& j, Evaluation how) const {
   const Real u = phase(t);
   const Real dS = case_ == ExactCase::separatrix
                       ? separatrix_S(u, u0_, lambda_ * static_cast<Real>(t))
-                      : periodic_S(u, j) - psi_S0_;
+                      : periodic_S(u, j, how) - (how == Evaluation::fast ? psi_S0_ : psi_S0_boost_);
   return psi_rate_ * static_cast<Real>(t) + psi_gain_ * dS;
 }
 
@@ -300,15 +499,25 @@ Eigen::Matrix3d ExactRotation::rotation_from(const Eigen::Vector3d& L_sorted, do
   return anchor_ * rotation_z(psi) * momentum_frame(L_sorted) * to_sorted_;
 }
 
+// One Jacobi evaluation serves R(t) and ω(t) alike.
 ExactState ExactRotation::state(double t) const {
   ExactState state;
   state.t = t;
-  const Eigen::Matrix3d R = orientation(t);
+  Eigen::Matrix3d R;
+  if (case_ == ExactCase::steady) {
+    R = orientation(t);
+    state.omega_body = omega0_;
+  } else {
+    if (parts_ == ExactParts::omega_only)
+      throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
+    const Jacobi j = jacobi(phase(t));
+    R = orientation_at(t, j);
+    state.omega_body = to_sorted_.transpose() * sorted_omega(j);
+  }
   Eigen::Quaterniond q(R);
   q.normalize();
   if (q.w() < 0.0) q.coeffs() = -q.coeffs();
   state.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
-  state.omega_body = omega_body(t);
   state.omega_world = R * state.omega_body;
   state.L = R * moments_.cwiseProduct(state.omega_body);
   state.E = 0.5 * state.omega_body.dot(moments_.cwiseProduct(state.omega_body));
@@ -323,9 +532,31 @@ Eigen::Matrix3d ExactRotation::orientation(double t) const {
   }
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  const Jacobi j = jacobi(phase(t));
+  return orientation_at(t, jacobi(phase(t)));
+}
+
+Eigen::Matrix3d ExactRotation::orientation_at(double t, const Jacobi& j, Evaluation how) const {
   const Eigen::Vector3d L_sorted = I_.cwiseProduct(sorted_omega(j));
-  return rotation_from(L_sorted, static_cast<double>(precession_at(t, j)));
+  return rotation_from(L_sorted, static_cast<double>(precession_at(t, j, how)));
+}
+
+// The evaluation as it was: R(t) and ω(t) each from their own Boost jacobi_elliptic.
+ExactState ExactRotation::state_boost(double t) const {
+  if (case_ == ExactCase::steady) return state(t);
+  if (parts_ == ExactParts::omega_only)
+    throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
+  ExactState state;
+  state.t = t;
+  const Eigen::Matrix3d R = orientation_at(t, jacobi_boost(phase(t)), Evaluation::boost);
+  Eigen::Quaterniond q(R);
+  q.normalize();
+  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
+  state.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
+  state.omega_body = to_sorted_.transpose() * sorted_omega(jacobi_boost(phase(t)));
+  state.omega_world = R * state.omega_body;
+  state.L = R * moments_.cwiseProduct(state.omega_body);
+  state.E = 0.5 * state.omega_body.dot(moments_.cwiseProduct(state.omega_body));
+  return state;
 }
 
 double ExactRotation::period() const {

@@ -76,13 +76,19 @@ class ExactRotation {
   /// Body-frame angular momentum I ω(t).
   Eigen::Vector3d angular_momentum_body(double t) const;
   /// R(t), 3×3 rotation taking body coordinates to world coordinates; R(0) = I and
-  /// R(t)·I·ω(t) = L (world). A few µs per call: one long-double Jacobi evaluation and one R_J.
+  /// R(t)·I·ω(t) = L (world). About half a µs per call: one long-double Jacobi evaluation and
+  /// one R_J from the motion's constants (docs/physics.md §8, "How the code evaluates ω(t)").
   /// Throws std::logic_error for ExactParts::omega_only.
   Eigen::Matrix3d orientation(double t) const;
   /// Everything at time `t`: R(t) as a unit quaternion with w ≥ 0, ω in the body and the world
-  /// frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8). Throws std::logic_error for
-  /// ExactParts::omega_only.
+  /// frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8), from one Jacobi evaluation
+  /// and one R_J. Throws std::logic_error for ExactParts::omega_only.
   ExactState state(double t) const;
+  /// state(t) as evaluated before the per-motion constants: Boost.Math's jacobi_elliptic twice
+  /// (once for R, once for ω) and ellint_rj once, each forming its own constants per call, about
+  /// 4 µs. The reference that tests/physics/exact_solution_test.cpp holds state() against (to an
+  /// ulp or two) and that bookspin-bench times it against. Throws as state().
+  ExactState state_boost(double t) const;
   /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion. Throws
   /// std::logic_error for ExactParts::omega_only.
   double precession_angle(double t) const;
@@ -109,6 +115,24 @@ class ExactRotation {
   struct Jacobi {
     long double sn, cn, dn;
   };
+  /// The descending Landen (Gauss) transformation's moduli k_0 = k > k_1 > … > k_N (DLMF
+  /// 22.7(i)), formed once per motion (docs/physics.md §8, "How the code evaluates ω(t)"): sn,
+  /// cn of modulus k_n follow from those of k_{n+1} at u/(1 + k_{n+1}) by a few products, and at
+  /// k_N < 1e-5 they are sin and cos with an O(k_N²) correction.
+  struct LandenChain {
+    static constexpr int kMaxLevels = 16;
+    int levels = 0;                                     ///< N
+    long double scale = 1.0L;                           ///< 1/∏(1 + k_n), n = 1…N: v = scale·u
+    long double m_last = 0.0L;                          ///< k_N²
+    std::array<long double, kMaxLevels> k{};            ///< k_{n+1} at index n
+    std::array<long double, kMaxLevels> one_minus_k{};  ///< 1 − k_{n+1} = 2k'_n/(1 + k'_n)
+  };
+  /// fast: the Landen chain and carlson_rj (state()); boost: Boost.Math's jacobi_elliptic and
+  /// ellint_rj (state_boost()).
+  enum class Evaluation { fast, boost };
+  void set_landen_chain();
+  Jacobi jacobi_reduced(long double u) const;
+  Jacobi jacobi_boost(long double u) const;
   void classify(const Eigen::Vector3d& w);
   void set_amplitudes(long double d1, long double d2, long double d3);
   void set_phase(const Eigen::Vector3d& w);
@@ -116,11 +140,13 @@ class ExactRotation {
   long double phase(double t) const { return lambda_ * static_cast<long double>(t) + u0_; }
   Eigen::Vector3d sorted_omega(const Jacobi& j) const;
   void set_precession();
-  long double periodic_S(long double u, const Jacobi& j) const;
+  long double periodic_S(long double u, const Jacobi& j, Evaluation how) const;
   long double separatrix_S(long double u, long double u_start, long double du) const;
-  long double precession_at(double t, const Jacobi& j) const;
+  long double precession_at(double t, const Jacobi& j, Evaluation how = Evaluation::fast) const;
   Eigen::Matrix3d momentum_frame(const Eigen::Vector3d& L_sorted) const;
   Eigen::Matrix3d rotation_from(const Eigen::Vector3d& L_sorted, double psi) const;
+  Eigen::Matrix3d orientation_at(double t, const Jacobi& j,
+                                 Evaluation how = Evaluation::fast) const;
 
   Eigen::Vector3d moments_;    ///< body x, y, z
   Eigen::Vector3d omega0_;     ///< body frame
@@ -133,6 +159,8 @@ class ExactRotation {
   int cn_axis_ = 0, dn_axis_ = 2;  ///< sorted axes carrying cn and dn (sn is always axis 2)
   std::array<long double, 3> amplitude_{};  ///< signed, per sorted axis
   long double k_ = 0.0L, kc2_ = 1.0L, lambda_ = 0.0L, u0_ = 0.0L, K_ = 0.0L;  ///< kc2_ = 1 − k²
+  long double period_ = 0.0L;  ///< 4K, ω's period in u
+  LandenChain landen_;
   Eigen::Matrix3d anchor_ = Eigen::Matrix3d::Identity();  ///< W, fixed by R(0) = I
   // ψ(t) = psi_rate_·t + psi_gain_·(S(u(t)) − psi_S0_), S(u) = ∫_0^u sn²/(1 − n sn²) du (§8).
   long double psi_rate_ = 0.0L;    ///< |L|/I_c, the rate at sn = 0
@@ -141,6 +169,7 @@ class ExactRotation {
   long double psi_S_half_ = 0.0L;  ///< S(2K), over one period of sn²
   long double psi_kc2_ = 0.0L;  ///< (1 − k)(1 + k) of k as stored: the modulus Boost's sn, cn see
   long double psi_S0_ = 0.0L;   ///< S(u0) (off the separatrix)
+  long double psi_S0_boost_ = 0.0L;  ///< S(u0) by Boost's functions, for state_boost()
 };
 
 }  // namespace bookspin::physics

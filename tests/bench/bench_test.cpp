@@ -209,6 +209,28 @@ TEST(Bench, FitSectionTimesTheFitAgainstReadingTheFile) {
   EXPECT_NE(run.csv.find("0.2 min at 500 Hz, 5 tosses"), std::string::npos) << run.csv;
 }
 
+TEST(Bench, ExactSectionTimesTheEvaluationAgainstTheOldOneOnTheSameRows) {
+  const BenchRun run = run_bench("bench-exact", "--only exact");
+  ASSERT_EQ(run.result.status, 0) << run.result.output;
+  for (const char* motion :
+       {"(2, 1, 3), case A", "(2, 1, 3), case B", "book, x spin with a 1e-3 jiggle",
+        "(2, 1, 3), k' = 3e-6 (near the separatrix)"}) {
+    const std::string name = motion;
+    const double now = csv_value(run.csv, name + ": state(), per-motion constants", "exact");
+    const double before = csv_value(run.csv, name + ": state_boost(), as before", "exact");
+    ASSERT_GT(now, 0.0) << name << "\n" << run.csv;
+    ASSERT_GT(before, 0.0) << name << "\n" << run.csv;
+    // The ratio is the two rows' (no timed assertion: the machine may be busy).
+    EXPECT_NEAR(csv_value(run.csv, name + ": before / now", "exact"), before / now,
+                1e-6 * before / now)
+        << run.csv;
+  }
+  EXPECT_GT(csv_value(run.csv, "book, x spin with a 1e-3 jiggle: jobs::exact_motion_at", "exact"),
+            0.0)
+      << run.csv;
+  EXPECT_EQ(run.csv.find("physics"), std::string::npos) << "--only exact ran other sections";
+}
+
 /// The rows of a CSV without quoted fields, each split at its commas (the header first).
 std::vector<std::vector<std::string>> csv_rows(const std::string& csv) {
   std::vector<std::vector<std::string>> rows;
