@@ -14,6 +14,7 @@ const PANELS = [
   ['shape error', (h) => [h.shape], 1e-6],
 ];
 const FONT_PX = 16;
+const TICK_PX = 13;  // the axes' tick labels (at least 12 px: docs/explorer.md)
 const DASH = [6, 4];  // the second run's lines
 
 /** `[lo, hi]` widened about its middle to at least ±`floor`. */
@@ -22,6 +23,27 @@ export function flooredRange(lo, hi, floor) {
   if (hi - lo >= 2 * floor) return [lo, hi];
   const mid = 0.5 * (lo + hi);
   return [mid - floor, mid + floor];
+}
+
+/** Round ticks ("1-2-5" steps) within [lo, hi], at most `count` + 1 of them: {ticks, step}. */
+export function niceTicks(lo, hi, count = 3) {
+  const span = hi - lo;
+  if (!(span > 0) || !Number.isFinite(span)) return { ticks: [lo], step: 0 };
+  const magnitude = 10 ** Math.floor(Math.log10(span / count));
+  const step = [1, 2, 5, 10].map((m) => m * magnitude).find((s) => span / s <= count) || 10 * magnitude;
+  const ticks = [];
+  for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
+    ticks.push(Math.abs(v) < 1e-9 * step ? 0 : v);
+  return { ticks, step };
+}
+
+/** A tick's label: the decimals its step needs, or m×10ⁿ (as "2e-6") for steps under 10⁻³ or
+ * from 10⁵ on. */
+export function tickLabel(v, step) {
+  if (v === 0) return '0';
+  if (step > 0 && (step < 1e-3 || step >= 1e5)) return v.toExponential(Math.max(0, Math.round(Math.log10(Math.abs(v) / step)))).replace('e+', 'e');
+  const decimals = step > 0 ? Math.max(0, -Math.floor(Math.log10(step) + 1e-9)) : 2;
+  return v.toFixed(decimals);
 }
 
 /** The samples of `measured` (the scene's measured ω, bookspin explore: {t, w 3×N flattened})
@@ -61,14 +83,15 @@ export function drawPlots(canvas, runs, measured = null) {
     g.fillStyle = '#ddd'; g.fillText('measured (the scene\'s measured ω)', 36, y);
     y += FONT_PX + 4;
   }
-  const axisH = FONT_PX + 6;  // the time axis under the last panel
+  const axisH = FONT_PX + 10;  // the time axis under the last panel
   const top = y;
   const ph = (H - top - axisH) / PANELS.length;
   const tmax = Math.max(1e-9, ...runs.map((r) => r.history[r.history.length - 1].t));
   const samples = measuredUpTo(measured, tmax);
   g.lineWidth = 1;
   const spans = [];  // how tall each line is drawn (CSS px): the tests' flat-line check
-  PANELS.forEach(([title, f, floor], k) => {
+  // Each panel's range and ticks first: the widest tick label sets the plots' left margin.
+  const panels = PANELS.map(([title, f, floor], k) => {
     const y0 = top + k * ph + FONT_PX + 4, h = Math.max(4, ph - FONT_PX - 8);
     let lo = Infinity, hi = -Infinity;
     for (const r of runs) {
@@ -78,6 +101,15 @@ export function drawPlots(canvas, runs, measured = null) {
     }
     if (k === 0) for (const [, w] of samples) for (const v of w) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
     [lo, hi] = flooredRange(lo, hi, floor);
+    return { title, f, y0, h, lo, hi, ...niceTicks(lo, hi, h > 90 ? 4 : 2) };
+  });
+  g.font = `${TICK_PX}px sans-serif`;
+  let margin = 0;
+  for (const p of panels) for (const v of p.ticks) margin = Math.max(margin, g.measureText(tickLabel(v, p.step)).width);
+  g.font = `${FONT_PX}px sans-serif`;
+  const x0 = 4 + Math.ceil(margin) + 6, x1 = W - 4;  // the plots' left and right edges
+  const xOf = (t) => x0 + (x1 - x0) * t / tmax;
+  panels.forEach(({ title, f, y0, h, lo, hi, ticks, step }, k) => {
     g.fillStyle = '#ddd';
     let x = 6;
     g.fillText(title, x, y0 - 4);
@@ -87,10 +119,20 @@ export function drawPlots(canvas, runs, measured = null) {
         g.fillStyle = OMEGA_COLOURS[i]; g.fillText(c, x, y0 - 4); x += g.measureText(c).width + 6;
       });
     }
-    g.fillStyle = '#aaa';
-    const range = `${lo.toPrecision(2)} … ${hi.toPrecision(2)}`;
-    g.fillText(range, W - 6 - g.measureText(range).width, y0 + h - 4);
-    g.strokeStyle = '#3a3f48'; g.strokeRect(4, y0, W - 8, h);
+    // The value axis: round ticks, their labels in the margin at the left, a faint line across
+    // the plot at each.
+    g.font = `${TICK_PX}px sans-serif`;
+    g.textBaseline = 'middle';
+    for (const v of ticks) {
+      const ty = y0 + h - h * (v - lo) / (hi - lo);
+      g.strokeStyle = '#2a2e36'; g.beginPath(); g.moveTo(x0, ty); g.lineTo(x1, ty); g.stroke();
+      const label = tickLabel(v, step);
+      g.fillStyle = '#aaa';
+      g.fillText(label, x0 - 4 - g.measureText(label).width, Math.min(y0 + h - TICK_PX / 2, Math.max(y0 + TICK_PX / 2, ty)));
+    }
+    g.textBaseline = 'alphabetic';
+    g.font = `${FONT_PX}px sans-serif`;
+    g.strokeStyle = '#3a3f48'; g.strokeRect(x0, y0, x1 - x0, h);
     runs.forEach((r, ri) => {
       const n = f(r.history[0], r).length;
       for (let c = 0; c < n; ++c) {
@@ -107,7 +149,7 @@ export function drawPlots(canvas, runs, measured = null) {
         for (const s of r.history) {
           const v = f(s, r)[c];
           if (!Number.isFinite(v)) continue;
-          const px = Math.round(4 + (W - 8) * s.t / tmax), py = y0 + h - h * (v - lo) / (hi - lo);
+          const px = Math.round(xOf(s.t)), py = y0 + h - h * (v - lo) / (hi - lo);
           top = Math.min(top, py); bottom = Math.max(bottom, py);
           if (px !== col) { flush(); col = px; first = low = high = last = py; } else {
             low = Math.min(low, py); high = Math.max(high, py); last = py;
@@ -122,7 +164,7 @@ export function drawPlots(canvas, runs, measured = null) {
     // The measured ω: a dot a sample and component, under the runs' lines' colours.
     if (k === 0) {
       for (const [t, w] of samples) {
-        const px = 4 + (W - 8) * t / tmax;
+        const px = xOf(t);
         w.forEach((v, c) => {
           g.fillStyle = OMEGA_COLOURS[c];
           g.beginPath(); g.arc(px, y0 + h - h * (v - lo) / (hi - lo), 2, 0, 2 * Math.PI); g.fill();
@@ -130,10 +172,20 @@ export function drawPlots(canvas, runs, measured = null) {
       }
     }
   });
-  // The time axis: 0 at the left, the latest t at the right.
+  // The time axis: round ticks of t under the last panel, its name at the right.
   g.fillStyle = '#aaa';
-  const end = `t = ${tmax.toFixed(1)}`;
-  g.fillText('t = 0', 4, H - 6);
-  g.fillText(end, W - 4 - g.measureText(end).width, H - 6);
+  g.font = `${TICK_PX}px sans-serif`;
+  // Before a step (tmax at its floor) t = 0 alone.
+  const time = tmax > 1e-9 ? niceTicks(0, tmax, Math.max(2, Math.floor((x1 - x0) / 90)))
+    : { ticks: [0], step: 0 };
+  const name = 't (time units)';
+  const nameX = W - 4 - g.measureText(name).width;
+  for (const v of time.ticks) {
+    const label = tickLabel(v, time.step);
+    const tx = Math.max(4, xOf(v) - g.measureText(label).width / 2);
+    if (tx + g.measureText(label).width < nameX - 8) g.fillText(label, tx, H - 6);
+  }
+  g.fillText(name, nameX, H - 6);
+  g.font = `${FONT_PX}px sans-serif`;
   return { spans, measuredDots: samples.length };
 }
