@@ -9,6 +9,7 @@
 import { recordingsOf, takeFiles } from './file_drop.js';
 import { plusMinus, significant, vectorWithSigma, withSigma } from './precision.js';
 import { OMEGA_COLOURS } from './colours.js';
+import { niceTicks, tickLabel } from './plots.js';
 
 const $ = (id) => document.getElementById(id);
 /** What each toss column says (docs/outputs.md, "The fit"). */
@@ -18,7 +19,7 @@ const TOSS_WORDS = {
   half_period_predicted: 'T/2 predicted (s)', predicted_from_tosses: 'predicted from (tosses)',
   predicted_from_seconds: 'predicted from (s of flight)', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
   drag_rate: 'drag rate ± σ (1/s)', drag_rate_sigma: 'σ drag rate (1/s)',
-  saturated: 'samples at the gyroscope’s range (left out)', stable: 'stable (no flip)',
+  saturated: 'samples at the gyroscope’s range', stable: 'stable (no flip)',
   poor_fit: 'flagged', flag: 'why',
 };
 
@@ -67,25 +68,54 @@ export function drawTossChart(canvas, chart) {
   let lo = Infinity, hi = -Infinity;
   for (const v of [...chart.measured, ...chart.fitted]) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
   if (!(hi > lo)) { lo -= 1; hi += 1; }
-  const left = 44, right = 8, top = 8, bottom = 22;
-  const x = (t) => left + (t - chart.t[0]) / (chart.t[n - 1] - chart.t[0]) * (w - left - right);
+  g.font = '12px sans-serif';
+  // Axes (plots.js's round ticks): ω in a margin at the left, seconds under the plot; the
+  // legend above it, clear of the data.
+  const values = niceTicks(lo, hi, h > 160 ? 4 : 3);
+  let margin = 0;
+  for (const v of values.ticks) margin = Math.max(margin, g.measureText(tickLabel(v, values.step)).width);
+  const left = Math.ceil(margin) + 10, right = 8, top = 22, bottom = 20;
+  const t0 = chart.t[0], t1 = chart.t[n - 1];
+  const x = (t) => left + (t - t0) / (t1 - t0) * (w - left - right);
   const y = (v) => top + (hi - v) / (hi - lo) * (h - top - bottom);
-  g.strokeStyle = '#555'; g.lineWidth = 1;
-  g.beginPath(); g.moveTo(left, y(0)); g.lineTo(w - right, y(0)); g.stroke();
-  g.fillStyle = '#bbb'; g.font = '12px sans-serif';
-  g.fillText(`${significant(hi, 3)} rad/s`, 2, top + 10); g.fillText(significant(lo, 3), 2, h - bottom);
-  g.fillText(`${chart.t[0].toFixed(2)} s`, left, h - 6);
-  const legend = 'dots: measured · lines: fitted';
-  g.fillText(legend, w - right - g.measureText(legend).width, top + 10);
-  const end = `${chart.t[n - 1].toFixed(2)} s`;
-  g.fillText(end, w - right - g.measureText(end).width, h - 6);
+  g.lineWidth = 1;
+  g.fillStyle = '#bbb';
+  g.textBaseline = 'middle';
+  for (const v of values.ticks) {
+    g.strokeStyle = v === 0 ? '#555' : '#2a2e36';
+    g.beginPath(); g.moveTo(left, y(v)); g.lineTo(w - right, y(v)); g.stroke();
+    const label = tickLabel(v, values.step);
+    g.fillText(label, left - 4 - g.measureText(label).width, y(v));
+  }
+  g.textBaseline = 'alphabetic';
+  const times = niceTicks(t0, t1, Math.max(2, Math.floor((w - left - right) / 80)));
+  for (const v of times.ticks) {
+    const label = tickLabel(v, times.step);
+    g.fillText(label, Math.max(left, Math.min(w - right - g.measureText(label).width, x(v) - g.measureText(label).width / 2)), h - 5);
+  }
+  g.strokeStyle = '#555'; g.strokeRect(left, top, w - left - right, h - top - bottom);
+  g.fillText('ω (rad/s), phone frame, against t (s)', left, 14);
+  // The legend, right-aligned: "• measured  — fitted", the marks in the text's colour.
+  const fittedX = w - right - g.measureText('fitted').width;
+  const lineX = fittedX - 18;
+  const measuredX = lineX - 12 - g.measureText('measured').width;
+  g.fillText('fitted', fittedX, 14);
+  g.fillText('measured', measuredX, 14);
+  g.beginPath(); g.arc(measuredX - 7, 10, 2.5, 0, 2 * Math.PI); g.fill();
+  g.strokeStyle = '#bbb'; g.lineWidth = 1.5;
+  g.beginPath(); g.moveTo(lineX, 10); g.lineTo(lineX + 12, 10); g.stroke();
+  // Lines first, thin; the measured samples over them as dots, so that each can be picked out.
   for (let c = 0; c < 3; ++c) {
-    g.fillStyle = OMEGA_COLOURS[c];
-    for (let i = 0; i < n; ++i) g.fillRect(x(chart.t[i]) - 1, y(chart.measured[3 * i + c]) - 1, 2, 2);
-    g.strokeStyle = OMEGA_COLOURS[c]; g.lineWidth = 1.5;
+    g.strokeStyle = OMEGA_COLOURS[c]; g.lineWidth = 1;
     g.beginPath();
     for (let i = 0; i < n; ++i) g[i ? 'lineTo' : 'moveTo'](x(chart.t[i]), y(chart.fitted[3 * i + c]));
     g.stroke();
+  }
+  for (let c = 0; c < 3; ++c) {
+    g.fillStyle = OMEGA_COLOURS[c];
+    for (let i = 0; i < n; ++i) {
+      g.beginPath(); g.arc(x(chart.t[i]), y(chart.measured[3 * i + c]), 1.8, 0, 2 * Math.PI); g.fill();
+    }
   }
 }
 
