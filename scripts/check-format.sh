@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Fails when a C++ file of src, tests, bench, examples, python or web/bindings.cpp differs from
-# what clang-format makes of it with the repository's .clang-format. Debian 12's clang-format 14
-# (scripts/install-deps.sh) is the reference: another version formats some constructs
-# differently, so it is refused under CI=true and only warned about elsewhere.
+# Fails when a C++ file of src, tests, bench, examples, python, web or npm (the WebAssembly
+# bindings) differs from what clang-format makes of it with the repository's .clang-format.
+# Debian 12's clang-format 14 (scripts/install-deps.sh) is the reference: another version
+# formats some constructs differently, so it is refused under CI=true and only warned about
+# elsewhere.
 # Usage: scripts/check-format.sh [--fix]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,7 +17,7 @@ if [ "$version" != 14 ]; then
   echo "check-format: $tool is version $version, the reference is 14 (Debian 12)" >&2
   [ "${CI:-}" = true ] && exit 1
 fi
-mapfile -t files < <(git ls-files -- src tests bench examples python web/bindings.cpp |
+mapfile -t files < <(git ls-files -- src tests bench examples python web npm |
   grep -E '\.(cpp|hpp|h|cc)$')
 if [ "${1:-}" = --fix ]; then
   "$tool" -i "${files[@]}"

@@ -61,8 +61,9 @@ Scenario scenario_of(const val& spec) {
 
 /// The motion CSV `text` (named `file`, as `judge` names it: the file's name) judged against
 /// the exact motion of the scenario `spec`, whose scenario_sha256 is `sha256` (of
-/// scenario_file()'s text, hashed by the page, web/src/judge.js): {columns, cells (the judgement CSV's row, as text:
-/// analysis::judgement_table), line (analysis::verdict_line), failures}, or {error}.
+/// scenario_file()'s text, hashed by the page, web/src/judge.js): {columns, cells (the judgement
+/// CSV's row, as text: analysis::judgement_table), line (analysis::verdict_line), failures}, or
+/// {error}.
 val judge_motion(const val& spec, const std::string& sha256, const std::string& text,
                  const std::string& file) {
   return guarded([&] {
