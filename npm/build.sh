@@ -33,7 +33,7 @@ flags=(-std=c++20 -O3 -DNDEBUG -I"$root/src" -I/usr/include/eigen3 -isystem "$in
        -Wall -Wextra -fexceptions)
 # The same pure files the page's judge compiles (web/build-wasm.sh): no I/O, no engine, no scene
 # reader, no fit.
-sources=("$root"/src/physics/*.cpp "$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp"
+sources=("$root"/src/physics/*.cpp "$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp" "$root/src/analysis/scenario_file.cpp"
          "$root/src/jobs/motion_csv.cpp" "$root/src/jobs/exact_motion.cpp" "$here/flipcheck_bindings.cpp")
 for name in errors number_text csv_writer json_writer json_string text_lines version; do
   sources+=("$root/src/common/$name.cpp")

@@ -1,8 +1,9 @@
 // embind bindings of the conformance kit for the npm package `flipcheck` (docs/flipcheck.md, "In
 // your engine's tests"): `bookspin flipcheck judge` and `export` with the same code compiled
 // unchanged, as the explorer page compiles it (web/judge_bindings.cpp): the motion CSV's parser
-// (src/jobs/motion_csv.cpp), the judgement and its table (src/analysis/judgement.cpp), the exact
-// motion and the scenario file (src/jobs/exact_motion.cpp). This file only translates.
+// (src/jobs/motion_csv.cpp), the judgement and its table (src/analysis/judgement.cpp), the scenario
+// file (src/analysis/scenario_file.cpp) and the exact motion (src/jobs/exact_motion.cpp). This
+// file only translates.
 //
 // A scenario comes as the JSON `bookspin flipcheck export` writes (the package carries the seven),
 // parsed: {scenario, mass, principal_moments, omega0_body, dt, steps, ...}. Its start is
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "analysis/judgement.hpp"
+#include "analysis/scenario_file.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 #include "common/version.hpp"
@@ -186,7 +188,7 @@ val export_files(const val& json) {
 /// The bytes of OUT/<scenario>.json as `bookspin flipcheck export` writes them, without the exact
 /// motion: what a judgement's scenario_sha256 is of (docs/flipcheck.md, "Versions").
 val scenario_file(const val& json) {
-  return guarded([&] { return val(bookspin::jobs::scenario_file(scenario_of(json))); });
+  return guarded([&] { return val(bookspin::analysis::scenario_file(scenario_of(json))); });
 }
 
 std::string version() { return bookspin::version(); }

@@ -16,6 +16,7 @@
 
 #include "analysis/conformance.hpp"
 #include "analysis/judgement.hpp"
+#include "analysis/scenario_file.hpp"
 #include "bindings.hpp"
 #include "common/errors.hpp"
 #include "common/json_writer.hpp"
@@ -131,7 +132,8 @@ py::tuple export_scenario(const py::object& scenario_input, const py::object& di
     py::gil_scoped_release release;
     motion = jobs::exact_motion(scenario, stop);
   }
-  const std::string json = json_text(jobs::scenario_json(motion), "flipcheck scenario");
+  const std::string json =
+      json_text(analysis::scenario_json(motion.scenario), "flipcheck scenario");
   const py::object start = py::module_::import("json").attr("loads")(json);
   const py::dict arrays = exact_rows_arrays(motion.rows, true);
   return py::make_tuple(start, arrays);
@@ -203,7 +205,7 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
     const jobs::MotionFile motion = jobs::motion_from_rows(
         rows, jobs::OmegaFrame::world, "flipcheck.judge", scenario.dt, scenario.steps);
     const analysis::Conformance result = analysis::judge_motion(scenario, motion.rows);
-    table = analysis::judgement_table(scenario, products::scenario_sha256(scenario),
+    table = analysis::judgement_table(scenario, analysis::scenario_sha256(scenario),
                                       {{{}, motion_name, result}});
     out.pass = result.pass();
     out.line = scenario.name + " " + motion_name + ": " + analysis::verdict_line(result);

@@ -36,7 +36,7 @@ pids=()
 # for the "Judge a motion" panel, the conformance kit's pure files (the judgement, the motion
 # CSV's parser, the exact motion and the scenario file) and the writers of common they use
 # (numbers, CSV, JSON, errors): no I/O, no engine, no scene reader (docs/architecture.md).
-pure=("$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp"
+pure=("$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp" "$root/src/analysis/scenario_file.cpp"
       "$root/src/jobs/motion_csv.cpp" "$root/src/jobs/exact_motion.cpp"
       "$root/src/clip/body_drawing.cpp")
 for name in errors number_text csv_writer json_writer json_string text_lines text_file version; do
@@ -60,7 +60,7 @@ for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/ju
     extra=(-DBOOKSPIN_VERSION="\"$version\"")
     [ "$root/VERSION" -nt "$obj" ] && stale=1
   fi
-  if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" \
+  if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/analysis/scenario_file.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" \
        -name '*.hpp' -newer "$obj" -print -quit)" ]; then
     em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
     pids+=($!)

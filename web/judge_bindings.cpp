@@ -1,8 +1,9 @@
 // embind bindings of the conformance kit's judgement for the explorer page's "Judge a motion"
 // panel (docs/explorer.md, docs/flipcheck.md): `bookspin flipcheck judge` and `export` with the
 // same code compiled unchanged: the motion CSV's parser (src/jobs/motion_csv.cpp), the judgement
-// and its table (src/analysis/judgement.cpp), the exact motion and the scenario file
-// (src/jobs/exact_motion.cpp). This file only translates between them and JavaScript.
+// and its table (src/analysis/judgement.cpp), the scenario file (src/analysis/scenario_file.cpp)
+// and the exact motion (src/jobs/exact_motion.cpp). This file only translates between them and
+// JavaScript.
 //
 // A scenario comes from the page's data of one scene (src/products/explorer.hpp), as the page
 // hands it in: {name, book: {size, mass}, body (optional: the body whole), w (ω0, body frame,
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "analysis/judgement.hpp"
+#include "analysis/scenario_file.hpp"
 #include "body_spec.hpp"
 #include "common/errors.hpp"
 #include "common/version.hpp"
@@ -133,7 +135,7 @@ val export_files(const val& spec) {
 /// The bytes of OUT/<scenario>.json as `bookspin flipcheck export` writes them (without the
 /// exact motion), or {error}: what a judgement's scenario_sha256 is of.
 val scenario_file(const val& spec) {
-  return guarded([&] { return val(bookspin::jobs::scenario_file(scenario_of(spec))); });
+  return guarded([&] { return val(bookspin::analysis::scenario_file(scenario_of(spec))); });
 }
 
 std::string version() { return bookspin::version(); }

@@ -1,6 +1,8 @@
 #include "analysis/conformance.hpp"
 
+#include "analysis/scenario_file.hpp"
 #include "common/errors.hpp"
+#include "common/sha256.hpp"
 #include "engines/models.hpp"
 
 namespace bookspin::analysis {
@@ -30,6 +32,11 @@ Scenario scenario_of(const scene::Scene& scene) {
   s.dt = scene.dt;
   s.steps = static_cast<long long>(scene.frames - 1) * scene.steps_per_frame;
   return s;
+}
+
+std::string scenario_sha256(const Scenario& scenario) {
+  const std::string file = scenario_file(scenario);
+  return sha256_text(file);
 }
 
 std::vector<MotionSample> simulated_motion(const Scenario& scenario, const Method& method,

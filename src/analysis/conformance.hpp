@@ -1,6 +1,7 @@
 #pragma once
 // The conformance kit's scenario of a scene file and bookspin's own methods run from its start
 // (`bookspin flipcheck`, docs/flipcheck.md); the judgement itself, pure, is judgement.hpp's.
+#include <string>
 #include <vector>
 
 #include "analysis/accuracy.hpp"
@@ -15,6 +16,11 @@ namespace bookspin::analysis {
 /// steps (a sweep's and `simulate`'s run). Throws InputError for a comparison scene and for a
 /// body at rest (no ω0, no jiggle: every measure would divide by zero).
 Scenario scenario_of(const scene::Scene& scene);
+
+/// The SHA-256 (64 lowercase hex digits) of the scenario's file as `flipcheck export` writes it
+/// (scenario_file.hpp, byte for byte OUT/<scenario>.json): a judgement's `scenario_sha256`, the
+/// scenario's identity (docs/flipcheck.md, "Versions").
+std::string scenario_sha256(const Scenario& scenario);
 
 /// `method` (one of bookspin's models × integrators or an engine's mode, made by
 /// engines::make_model() as the accuracy report makes it, with `model`'s other settings) run

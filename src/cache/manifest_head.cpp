@@ -1,6 +1,7 @@
 #include "cache/manifest_head.hpp"
 
 #include "common/errors.hpp"
+#include "common/sha256.hpp"
 #include "output/manifest.hpp"
 #include "output/sha256.hpp"
 #include "scene/canonical.hpp"
@@ -48,7 +49,7 @@ std::string surface_hash(const physics::Body& body) {
   add(body.vertices.data(), sizeof(double) * static_cast<std::size_t>(body.vertices.size()));
   add(body.triangles.data(), sizeof(int) * static_cast<std::size_t>(body.triangles.size()));
   add(body.face_colours.data(), sizeof(float) * static_cast<std::size_t>(body.face_colours.size()));
-  return output::sha256_text(bytes);
+  return sha256_text(bytes);
 }
 
 }  // namespace

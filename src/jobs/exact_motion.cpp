@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "analysis/scenario_file.hpp"
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
 #include "scene/limits.hpp"
@@ -17,12 +18,6 @@ bool finite(const ExactMotionRow& row) {
   return std::isfinite(row.t) && row.q.allFinite() && row.omega_body.allFinite() &&
          row.omega_world.allFinite() && row.L.allFinite() && std::isfinite(row.E);
 }
-
-}  // namespace
-
-namespace {
-
-JsonValue vector_json(const Eigen::Vector3d& v) { return {JsonArray{{v.x()}, {v.y()}, {v.z()}}}; }
 
 /// `value` for a message: its shortest text, or nan, inf, -inf.
 std::string value_text(double value) {
@@ -72,7 +67,7 @@ std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
 
 namespace {
 
-/// A scenario's start, no rows yet: what its JSON holds.
+/// A scenario's start, no rows yet: its mass and jiggled ω0 (analysis::start_omega).
 ExactMotion exact_start(const analysis::Scenario& scenario) {
   ExactMotion motion;
   motion.scenario = scenario;
@@ -81,8 +76,6 @@ ExactMotion exact_start(const analysis::Scenario& scenario) {
   motion.omega0_world = motion.omega0_body;
   return motion;
 }
-
-const char* const kScenarioWhat = "flipcheck scenario";
 
 }  // namespace
 
@@ -95,32 +88,6 @@ ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& sto
     motion.rows.push_back(exact.state(static_cast<double>(n) * scenario.dt));
   }
   return motion;
-}
-
-JsonValue scenario_json(const ExactMotion& m) {
-  const analysis::Scenario& s = m.scenario;
-  JsonObject units{{"time", {std::string("time unit (any: the motion scales with 1/time)")}},
-                   {"length", {std::string("length unit")}},
-                   {"mass", {std::string("mass unit")}},
-                   {"angle", {std::string("radian")}},
-                   {"angular_velocity", {std::string("rad per time unit")}},
-                   {"moments", {std::string("mass * length^2")}}};
-  JsonObject object{
-      {"scenario", {s.name}},
-      {"units", {std::move(units), true}},
-      {"mass", {m.mass}},
-      {"principal_moments", vector_json(s.body.moments)},
-      {"principal_axes", {std::string("body x, y, z (the moments are about these axes)")}},
-      {"q0", {JsonArray{{1.0}, {0.0}, {0.0}, {0.0}}}},
-      {"q_convention", {std::string("w, x, y, z; body to world")}},
-      {"omega0_body", vector_json(m.omega0_body)},
-      {"omega0_world", vector_json(m.omega0_world)},
-      {"dt", {JsonNumber{s.dt, NumberStyle::shortest}}},
-      {"steps", {static_cast<std::int64_t>(s.steps)}},
-      {"gravity", {std::string("none; no damping, no contacts")}},
-      {"exact_motion", {s.name + "-exact.csv"}},
-  };
-  return {std::move(object), true};
 }
 
 CsvTable exact_motion_csv(const ExactMotion& m) {
@@ -140,15 +107,8 @@ CsvTable exact_motion_csv(const ExactMotion& m) {
 }
 
 ExportFiles export_files(const ExactMotion& motion) {
-  const JsonValue scenario = scenario_json(motion);
-  const CsvTable exact = exact_motion_csv(motion);
-  return {json_text(scenario, kScenarioWhat, JsonLayout::indented) + "\n",
-          csv_text(exact, "flipcheck exact motion CSV")};
-}
-
-std::string scenario_file(const analysis::Scenario& scenario) {
-  const JsonValue json = scenario_json(exact_start(scenario));
-  return json_text(json, kScenarioWhat, JsonLayout::indented) + "\n";
+  return {analysis::scenario_file(motion.scenario),
+          csv_text(exact_motion_csv(motion), "flipcheck exact motion CSV")};
 }
 
 }  // namespace bookspin::jobs

@@ -7,7 +7,6 @@
 
 #include "analysis/judgement.hpp"
 #include "common/csv_writer.hpp"
-#include "common/json_writer.hpp"
 #include "common/stop.hpp"
 #include "physics/exact_solution.hpp"
 
@@ -41,10 +40,6 @@ struct ExactMotion {
 /// throws Interrupted.
 ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop = {});
 
-/// The scenario file's JSON (docs/flipcheck.md, "export: what an engine needs"): units, mass,
-/// principal moments, q0, ω0 in the body and the world frame, dt, steps.
-JsonValue scenario_json(const ExactMotion& motion);
-
 /// The exact motion's CSV: t,qw,qx,qy,qz,wx,wy,wz (ω body frame), then
 /// wx_world,wy_world,wz_world,Lx,Ly,Lz (world frame) and E; shortest round-trip numbers.
 CsvTable exact_motion_csv(const ExactMotion& motion);
@@ -52,13 +47,9 @@ CsvTable exact_motion_csv(const ExactMotion& motion);
 /// The bytes of the two files `flipcheck export` writes and the explorer page offers for
 /// download (web/judge_bindings.cpp): one writer of each. No I/O.
 struct ExportFiles {
-  std::string json;  ///< OUT/<scenario>.json: scenario_json, indented, a newline at the end
+  std::string json;  ///< OUT/<scenario>.json: analysis::scenario_file
   std::string csv;   ///< OUT/<scenario>-exact.csv: exact_motion_csv
 };
 ExportFiles export_files(const ExactMotion& motion);
-
-/// The bytes of OUT/<scenario>.json alone (export_files' json), without the exact motion's
-/// rows: what a judgement's `scenario_sha256` hashes (docs/flipcheck.md, "Versions"). No I/O.
-std::string scenario_file(const analysis::Scenario& scenario);
 
 }  // namespace bookspin::jobs

@@ -13,8 +13,8 @@
 
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
+#include "common/sha256.hpp"
 #include "output/manifest.hpp"
-#include "output/sha256.hpp"
 #include "scene/canonical.hpp"
 
 namespace bookspin::jobs {
@@ -106,8 +106,7 @@ std::string sweep_shard_text(const SweepTable& table, const scene::Scene& scene,
                              std::size_t grid_points, int k, int n) {
   std::ostringstream text;
   text << kShardMagic << k << " of " << n << ": "
-       << shard_meta(table, grid_points, output::sha256_text(scene::canonical_json(scene, 0)))
-       << '\n'
+       << shard_meta(table, grid_points, sha256_text(scene::canonical_json(scene, 0))) << '\n'
        << csv_row(after("grid_index", table.header)) << '\n';
   for (const auto& [index, cells] : table.rows)
     text << csv_row(after(std::to_string(index), cells)) << '\n';

@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "common/json_writer.hpp"
+#include "common/sha256.hpp"
 #include "common/text_file.hpp"
 #include "common/version.hpp"
 #include "output/atomic_output.hpp"

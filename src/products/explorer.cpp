@@ -8,6 +8,7 @@
 #include "cache/manifest_head.hpp"
 #include "common/errors.hpp"
 #include "common/json_writer.hpp"
+#include "common/sha256.hpp"
 #include "common/text_file.hpp"
 #include "output/atomic_output.hpp"
 #include "output/data_url.hpp"
@@ -173,7 +174,7 @@ JsonObject explorer_head(const ExplorerPageRequest& request) {
   JsonObject members{{"shell", sha256(output::sha256_file(request.shell))}};
   if (!request.engines.empty())
     members.push_back({"engines", sha256(output::sha256_file(request.engines))});
-  members.push_back({"scenes", sha256(output::sha256_text(scenes))});
+  members.push_back({"scenes", sha256(sha256_text(scenes))});
   return members;
 }
 

@@ -8,11 +8,11 @@
 #include "cache/make_cached.hpp"
 #include "charts/toss_plots.hpp"
 #include "clip/clip.hpp"
+#include "common/sha256.hpp"
 #include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
 #include "output/output_dir.hpp"
 #include "output/png_writer.hpp"
-#include "output/sha256.hpp"
 #include "output/staged_files.hpp"
 #include "products/explorer.hpp"
 #include "scene/limits.hpp"
@@ -115,7 +115,7 @@ JsonObject fit_head(const FitJob& job) {
                  {{"bookspin",
                    {JsonObject{{"version", {output::program_version()}},
                                {"build_id", {"sha256:" + output::program_build_id()}}}}},
-                  {"recording", {output::sha256_text(samples)}},
+                  {"recording", {sha256_text(samples)}},
                   {"tosses", {std::move(tosses)}},
                   {"moments", {std::move(moments)}},
                   {"width", {std::int64_t{job.width}}},

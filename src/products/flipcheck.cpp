@@ -8,11 +8,11 @@
 #include "cache/make_cached.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
+#include "common/sha256.hpp"
 #include "common/text_file.hpp"
 #include "jobs/motion_csv.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
-#include "output/sha256.hpp"
 #include "output/staged_files.hpp"
 #include "products/gallery_page.hpp"
 
@@ -116,7 +116,7 @@ FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   const std::vector<std::string> names = file_names(job.motions);
   // The scenario derived, its motion files read (a bad one fails before any run), then judged.
   const analysis::Scenario scenario = analysis::scenario_of(job.scene);
-  const std::string sha256 = scenario_sha256(scenario);
+  const std::string sha256 = analysis::scenario_sha256(scenario);
   const std::vector<jobs::MotionFile> read = read_all(scenario, job.motions);
   FlipcheckJudgeResult result;
   result.judged = judge_all(job.scene, scenario, job.motions, read, names, job.methods, job.stop);
@@ -282,7 +282,7 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   for (const scene::Scene& scene : job.scenes) {
     const cache::CachedOutputs of_scene{scene.name, {},          "flipcheck scenario",
                                         {},         job.out_dir, &scene};
-    scenario_heads.push_back({output::sha256_text(cache::cached_head(of_scene))});
+    scenario_heads.push_back({sha256_text(cache::cached_head(of_scene))});
   }
   for (const analysis::Method& m : job.methods) method_labels.push_back({m.label});
   const cache::CachedOutputs cached{
@@ -305,8 +305,8 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
       LeagueColumn col{scene.name, scene.title,
                        judge_all(scene, scenarios[i], files[i], read[i], motion_names[i],
                                  job.methods, job.stop)};
-      CsvTable part =
-          analysis::judgement_table(scenarios[i], scenario_sha256(scenarios[i]), col.judged);
+      CsvTable part = analysis::judgement_table(
+          scenarios[i], analysis::scenario_sha256(scenarios[i]), col.judged);
       table.columns = part.columns;
       for (auto& row : part.rows) table.rows.push_back(std::move(row));
       columns.push_back(std::move(col));
@@ -348,18 +348,14 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   return result;
 }
 
-std::string scenario_sha256(const analysis::Scenario& scenario) {
-  const std::string file = jobs::scenario_file(scenario);
-  return output::sha256_text(file);
-}
-
 std::string flipcheck_kit_sha256(const std::vector<analysis::Scenario>& scenarios) {
   std::vector<std::string> lines;
-  for (const analysis::Scenario& s : scenarios) lines.push_back(s.name + " " + scenario_sha256(s));
+  for (const analysis::Scenario& s : scenarios)
+    lines.push_back(s.name + " " + analysis::scenario_sha256(s));
   std::sort(lines.begin(), lines.end());
   std::string text = "kit\n";
   for (const std::string& line : lines) text += line + "\n";
-  return output::sha256_text(text + analysis::judge_rules());
+  return sha256_text(text + analysis::judge_rules());
 }
 
 }  // namespace bookspin::products

@@ -115,14 +115,10 @@ struct FlipcheckLeagueResult {
 /// InputError, OutputError, Interrupted.
 FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job);
 
-/// The SHA-256 (64 lowercase hex digits) of the scenario's JSON as `flipcheck export` writes it
-/// (jobs::scenario_file, byte for byte OUT/<scenario>.json): a judgement's `scenario_sha256`
-/// (docs/flipcheck.md, "Versions").
-std::string scenario_sha256(const analysis::Scenario& scenario);
-
 /// The kit's SHA-256, which VERSION records beside the version (docs/flipcheck.md, "Versions"):
 /// of the text "kit\n", then a line "NAME SHA256" per scenario in the order of their names
-/// (scenario_sha256), then analysis::judge_rules(). A changed scenario or rule changes it.
+/// (analysis::scenario_sha256), then analysis::judge_rules(). A changed scenario or rule changes
+/// it.
 std::string flipcheck_kit_sha256(const std::vector<analysis::Scenario>& scenarios);
 
 }  // namespace bookspin::products

@@ -8,10 +8,10 @@
 #include <thread>
 
 #include "cache/make_cached.hpp"
+#include "common/sha256.hpp"
 #include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
 #include "output/output_dir.hpp"
-#include "output/sha256.hpp"
 #include "products/accuracy.hpp"
 #include "products/clip.hpp"
 #include "products/explorer.hpp"
@@ -218,7 +218,7 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
 
   GalleryHeader header{
-      output::program_version(), output::program_build_id(), "", machine(), "", "", "", {}};
+      output::program_version(), output::program_build_id(), "", machine(), "", "", "", "", {}};
   const FlipcheckLeagueLayout league = flipcheck_league_layout(out);
   if (exists(out, path_in_out(out, league.manifest))) {
     const Listed tabled(out, league.manifest);
@@ -237,7 +237,7 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
       layout.page.filename().string(),
       layout.manifest,
       "gallery",
-      {{"page_sha256", {output::sha256_text(gallery_html(entries, header))}}},
+      {{"page_sha256", {sha256_text(gallery_html(entries, header))}}},
       out,
       nullptr,
       /*all_or_nothing=*/true};  // one page, whole or not at all (write_page)

@@ -7,6 +7,7 @@
 
 #include <fstream>
 
+#include "common/sha256.hpp"
 #include "output/manifest.hpp"
 #include "output/sha256.hpp"
 #include "scene/canonical.hpp"
@@ -91,7 +92,7 @@ TEST(ManifestNote, IsTheSceneFilesPathAndHashOnOneLine) {
   EXPECT_EQ(manifest_note(scene),
             "  \"scene_file\": {\"path\": \"" +
                 std::filesystem::weakly_canonical(dir / "book.toml").string() +
-                "\", \"sha256\": \"sha256:" + output::sha256_text(kScene) + "\"},\n");
+                "\", \"sha256\": \"sha256:" + sha256_text(kScene) + "\"},\n");
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/scenario_file.hpp"
 #include "common/errors.hpp"
 #include "jobs/simulation.hpp"
 #include "output/manifest.hpp"
@@ -318,8 +319,8 @@ TEST(Flipcheck, TheScenarioSha256IsOfTheExportedJson) {
   make_flipcheck_export({scene, dir / "out", {}, {}});
   const analysis::Scenario scenario = analysis::scenario_of(scene);
   const fs::path json = dir / "out" / "mujoco-test-box.json";
-  EXPECT_EQ(jobs::scenario_file(scenario), test::read_file(json));
-  EXPECT_EQ(scenario_sha256(scenario), output::sha256_file(json).value());
+  EXPECT_EQ(analysis::scenario_file(scenario), test::read_file(json));
+  EXPECT_EQ(analysis::scenario_sha256(scenario), output::sha256_file(json).value());
 }
 
 /// The `kit` line of VERSION (docs/flipcheck.md, "Versions").
