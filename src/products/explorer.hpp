@@ -59,7 +59,9 @@ struct ExplorerPageResult {
 };
 
 /// Writes explorer_page_path(request.out_dir): the shell with its data marker replaced by one
-/// script that sets window.BOOKSPIN_SCENES (scene::page_data of each scene, one a line) and
+/// script that sets window.BOOKSPIN_SCENES (scene::page_data of each scene, one a line, with
+/// `replays` where the scene has tiles the page cannot step: jobs::page_replays, quantised to
+/// 16 bits, docs/explorer.md "Comparison") and
 /// window.BOOKSPIN_BOOK_ART (the book's four default face images, render::generate_face_image, as
 /// PNG data: URLs); the engines' marker replaced by request.engines as one script (it sets
 /// window.BOOKSPIN_ENGINES) or, without engines, by nothing. Throws InputError when two scenes

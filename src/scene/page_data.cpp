@@ -29,18 +29,17 @@ std::vector<physics::ModelConfig> page_models(const Scene& s) {
   return models;
 }
 
-/// The labels of the [[compare]] tiles the page does not run: the other engines' (the page binds
-/// src/physics alone) and those between the first and the last it compares; empty without
-/// [[compare]].
-JsonArray left_out_tiles(const Scene& s) {
-  std::vector<std::size_t> runnable;
-  for (std::size_t i = 0; i < s.compare.size(); ++i)
-    if (!physics::is_engine(s.compare[i].model.kind)) runnable.push_back(i);
+/// Every [[compare]] tile, in order, as the page shows it (docs/explorer.md, "Comparison"): its
+/// label, model, integrator and normalize; the page steps bookspin's own models and replays the
+/// other engines' (their motion, jobs::page_replays, the explorer product adds).
+JsonArray tiles_data(const Scene& s) {
   JsonArray out;
-  for (std::size_t i = 0; i < s.compare.size(); ++i) {
-    const bool shown = !runnable.empty() && (i == runnable.front() || i == runnable.back());
-    if (!shown) out.push_back({s.compare[i].label});
-  }
+  for (const CompareTile& tile : s.compare)
+    out.push_back(
+        {JsonObject{{"label", {tile.label}},
+                    {"model", {std::string(physics::to_string(tile.model.kind))}},
+                    {"integrator", {std::string(physics::to_string(tile.model.integrator))}},
+                    {"normalize", {tile.model.normalize}}}});
   return out;
 }
 
@@ -84,10 +83,12 @@ JsonObject page_data(const Scene& s) {
                              {"showL", {s.render.show_angular_momentum}},
                              {"showAxes", {s.render.show_body_axes}}});
   if (models.size() >= 2) {
-    // The page compares two methods: the first tile with the last (e.g. Euler and exact).
+    // Two methods when the page compares two: the first tile with the last (e.g. Euler and exact).
     state.push_back({"compare", {true}});
     add_method(state, models.back(), "2");
   }
+  // A comparison shows every tile, as its clip does (the page's `tiles`; tiles=0: two methods).
+  if (!s.compare.empty()) state.push_back({"tiles", {true}});
   const physics::Body& b = s.body;
   JsonObject scene{{"name", {s.name}},
                    {"title", {s.title}},
@@ -95,9 +96,7 @@ JsonObject page_data(const Scene& s) {
                    {"state", {std::move(state)}},
                    {"book", {JsonObject{{"size", numbers(b.cage.size)}, {"mass", {b.cage.mass}}}}},
                    {"duration", {(s.frames - 1) * s.dt * s.steps_per_frame}}};
-  // What of a comparison the page leaves out, which it says under the scene's description.
-  if (JsonArray left_out = left_out_tiles(s); !left_out.empty())
-    scene.push_back({"left_out", {std::move(left_out)}});
+  if (!s.compare.empty()) scene.push_back({"tiles", {tiles_data(s)}});
   if (!s.measured.file.empty()) scene.push_back({"measured", {measured_data(s)}});
   if (b.shape != physics::BodyShape::book) {
     scene.push_back({"body",

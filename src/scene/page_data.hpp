@@ -12,9 +12,11 @@ namespace bookspin::scene {
 /// state, web/src/state.js: body, model, integrator, normalize, damping, k, cells, dt, axis
 /// "custom" with ω0 `w` (body frame, rad per time unit), jiggle, seed, speed in time units per
 /// second, the markers; a
-/// [[compare]] scene compares its first tile with its last, of those the page can run: the
-/// other engines' tiles are left out, docs/engines.md; `left_out` lists the labels of the tiles
-/// it does not run, where there are any), `book` (size, mass), `duration` (the scene's run,
+/// [[compare]] scene compares its first tile with its last, of those the page can step itself
+/// (not the other engines', docs/engines.md), when `tiles` is off, and shows every tile with
+/// `tiles`, on for a [[compare]] scene), `tiles` (a [[compare]] scene's every tile: label,
+/// model, integrator, normalize; the explorer product adds the `replays` of the other engines'),
+/// `book` (size, mass), `duration` (the scene's run,
 /// (frames − 1)·dt·steps_per_frame time units: the page's time slider spans it) and, for
 /// other bodies, `body`: the Body itself as simulate builds it (shape, mass, principal moments
 /// about x, y, z, cage size, volume, surface 3×V principal frame flattened column by column,

@@ -1,5 +1,5 @@
-// The explorer page's scene data (src/products/explorer.hpp): the page binds src/physics alone,
-// so the other engines' tiles (docs/engines.md) stay out of it.
+// The explorer page's scene data (src/products/explorer.hpp): every tile of a comparison listed
+// (the other engines' replayed, docs/explorer.md "Comparison"), two of the page's own compared.
 #include "products/explorer.hpp"
 
 #include <gtest/gtest.h>
@@ -25,14 +25,14 @@ std::string explorer_scene_json(const scene::Scene& scene) {
   return json_text({scene::page_data(scene)}, "test scene");
 }
 
-TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {
+TEST(ExplorerSceneJson, EveryTileIsListedAndTheOwnModelsCompare) {
   const std::string engines_only =
       explorer_scene_json(scene::parse_scene_text("[[compare]]\nlabel = \"exact\"\nmodel.kind = "
                                                   "\"exact\"\n[[compare]]\nlabel = \"b\"\n"
                                                   "model.kind = \"bullet\"\n",
                                                   "test.toml", {}));
   EXPECT_TRUE(has(engines_only, "\"model\":\"exact\"")) << engines_only;
-  EXPECT_FALSE(has(engines_only, "bullet")) << engines_only;
+  EXPECT_FALSE(has(engines_only, "\"model2\"")) << engines_only;
   EXPECT_FALSE(has(engines_only, "\"compare\":true")) << engines_only;
 
   const std::string mixed = explorer_scene_json(scene::parse_scene_text(
@@ -43,18 +43,27 @@ TEST(ExplorerSceneJson, TheEnginesTilesStayOutAndTheRestCompare) {
   EXPECT_TRUE(has(mixed, "\"model\":\"rigid-quaternion\"")) << mixed;
   EXPECT_TRUE(has(mixed, "\"compare\":true")) << mixed;
   EXPECT_TRUE(has(mixed, "\"model2\":\"exact\"")) << mixed;
-  EXPECT_FALSE(has(mixed, "mujoco")) << mixed;
-  // The page says which tiles it leaves out: the engine's, by its label.
-  EXPECT_TRUE(has(mixed, "\"left_out\":[\"m\"]")) << mixed;
-  EXPECT_TRUE(has(engines_only, "\"left_out\":[\"b\"]")) << engines_only;
+  EXPECT_FALSE(has(mixed, "\"model2\":\"mujoco\"")) << mixed;
+  // Every tile is listed, in order, the engines' too (the page replays them): none left out.
+  EXPECT_TRUE(has(mixed,
+                  "\"tiles\":[{\"label\":\"q\",\"model\":\"rigid-quaternion\","
+                  "\"integrator\":\"rk4\",\"normalize\":false},{\"label\":\"m\","
+                  "\"model\":\"mujoco\",\"integrator\":\"euler\","))
+      << mixed;
+  EXPECT_TRUE(has(mixed, "\"tiles\":true")) << mixed;
+  EXPECT_TRUE(has(engines_only, "{\"label\":\"b\",\"model\":\"bullet\"")) << engines_only;
+  EXPECT_FALSE(has(mixed, "left_out")) << mixed;
 
-  // Four methods of the page's own: it compares the first with the last, the middle two left out.
+  // Four methods of the page's own: two compared with tiles=0 (the first and the last), all four
+  // shown by the tiles.
   const std::string four = explorer_scene_json(scene::parse_scene_text(
       "[[compare]]\nlabel = \"e\"\nmodel.kind = \"rigid-matrix\"\n[[compare]]\nlabel = \"q\"\n"
       "model.kind = \"rigid-quaternion\"\n[[compare]]\nlabel = \"p\"\nmodel.kind = \"particle\"\n"
       "[[compare]]\nlabel = \"x\"\nmodel.kind = \"exact\"\n",
       "test.toml", {}));
-  EXPECT_TRUE(has(four, "\"left_out\":[\"q\",\"p\"]")) << four;
+  for (const char* label : {"e", "q", "p", "x"})
+    EXPECT_TRUE(has(four, "{\"label\":\"" + std::string(label) + "\",")) << four;
+  EXPECT_TRUE(has(four, "\"model2\":\"exact\"")) << four;
 
   const std::string alone =
       explorer_scene_json(scene::parse_scene_text("[model]\nkind = \"ode\"\n", "test.toml", {}));

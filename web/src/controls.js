@@ -11,7 +11,9 @@ const NUMBERS = ['k', 'cells', 'dragRate', 'dt', 'rate', 'jiggle', 'seed', 'spee
 const CHOICES = ['scene', 'body', 'model', 'integrator', 'drag', 'axis', 'model2', 'integrator2'];
 /** The models that take air drag (physics::supports_drag). */
 const DRAGGED = ['exact', 'rigid-matrix', 'rigid-quaternion'];
-const BOXES = ['normalize', 'damping', 'compare', 'normalize2', 'showL', 'showAxes'];
+const BOXES = ['normalize', 'damping', 'compare', 'tiles', 'normalize2', 'showL', 'showAxes'];
+/** Controls that choose the methods: a change leaves a comparison's tiles for the two chosen. */
+export const METHOD_CONTROLS = ['model', 'integrator', 'normalize', 'compare', 'model2', 'integrator2', 'normalize2'];
 /** Controls that change only the drawing, not the run. */
 export const VIEW_CONTROLS = ['showL', 'showAxes', 'speed'];
 
@@ -111,20 +113,10 @@ export class Controls {
     $('sceneDescription').textContent = scene ? scene.description || '' : '';
     // The time slider spans the scene's run (bookspin explore's `duration`), or 300 time units.
     $('slider').max = Math.max(scene && scene.duration > 0 ? scene.duration : 300, Math.ceil(state.t));
-    // A comparison of more methods than the page runs says what it left out: one line, the
-    // methods' names folded under it (the left panel fits a 1366×768 screen).
-    const left = scene && scene.left_out ? scene.left_out : [];
-    const box = $('sceneLeftOut');
-    box.replaceChildren();
-    if (left.length) {
-      const details = document.createElement('details');
-      const summary = document.createElement('summary');
-      summary.textContent = `${left.length} methods left out here (the clip shows them)`;
-      const list = document.createElement('div');
-      list.textContent = `${left.join('; ')}.`;
-      details.append(summary, list);
-      box.append(details);
-    }
+    // A comparison shows its every tile (the engines' replayed), or the two methods chosen.
+    const tiles = scene && scene.tiles ? scene.tiles.length : 0;
+    show('tilesRow', tiles > 0);
+    $('tilesCount').textContent = String(tiles);
     const particle = state.model === 'particle';
     show('integratorRow', this.integrated(state.model));
     show('normalizeRow', this.integrated(state.model));
@@ -145,8 +137,7 @@ export class Controls {
     this.fitPanel(newScene);
   }
 
-  /** The left panel within the screen (1366×768 and up): the scene's description (and what it
-   * left out) folded under its title while the panel is taller than the screen; `unfold`: shown
+  /** The left panel within the screen (1366×768 and up): the scene's description folded under its title while the panel is taller than the screen; `unfold`: shown
    * first (a new scene, a new screen size), otherwise only ever folded, so that a description
    * the reader opened stays open until the panel outgrows the screen. */
   fitPanel(unfold = true) {

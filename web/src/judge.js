@@ -28,11 +28,11 @@ async function sha256Hex(text) {
 }
 
 /** Whether a scene of the page is a conformance scenario, as `flipcheck` takes one: one model
- * (no comparison, none of its tiles left out), no air drag, not at rest. */
+ * (no comparison: no tiles), no air drag, not at rest. */
 export function isScenario(scene) {
   const s = scene.state;
   const still = s.w.every((x) => x === 0) && !(s.jiggle > 0);
-  return !s.compare && !scene.left_out && (s.drag || 'none') === 'none' && !still;
+  return !s.compare && !scene.tiles && (s.drag || 'none') === 'none' && !still;
 }
 
 /** The scenario of a scene, as web/judge_bindings.cpp reads it: its body (the book's size and

@@ -15,7 +15,7 @@ import { Sphere } from './sphere.js';
 import { Panels } from './panels.js';
 import { Readout } from './readout.js';
 import { listenKeys } from './keys.js';
-import { Controls, VIEW_CONTROLS } from './controls.js';
+import { Controls, VIEW_CONTROLS, METHOD_CONTROLS } from './controls.js';
 import { JudgePanel } from './judge.js';
 import { LabPanel } from './lab.js';
 import { loadProgram } from './packed.js';
@@ -140,6 +140,7 @@ function startApp(wasm, engines) {
       const t = app.state.t;
       app.state = app.controls.read(app.state);
       app.state.t = VIEW_CONTROLS.includes(id) ? t : 0;
+      if (METHOD_CONTROLS.includes(id)) app.state.tiles = false;  // the two methods chosen
     }
     app.state = app.pacer.limit(app.state, base());
     app.controls.write(app.state);

@@ -15,7 +15,9 @@ const PANELS = [
 ];
 const FONT_PX = 16;
 const TICK_PX = 13;  // the axes' tick labels (at least 12 px: docs/explorer.md)
-const DASH = [6, 4];  // the second run's lines
+/** Each run's line: the first solid, the second dashed, then dotted and dash-dotted ones. */
+const DASHES = [[], [6, 4], [2, 3], [10, 3, 2, 3], [12, 5], [4, 2, 1, 2], [1, 4], [8, 2, 2, 2, 2, 2]];
+const dashOf = (ri) => DASHES[ri % DASHES.length];
 
 /** `[lo, hi]` widened about its middle to at least ±`floor`. */
 export function flooredRange(lo, hi, floor) {
@@ -68,14 +70,20 @@ export function drawPlots(canvas, runs, measured = null) {
   g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
   if (!runs.length) return { spans: [], measuredDots: 0 };
   g.font = `${FONT_PX}px sans-serif`;
-  // Legend: each run's line style and method.
+  // Legend: each run's line style and method (more than two: two to a row, each name cut to
+  // its half of the width; the readout and the books' labels name them whole).
   let y = FONT_PX + 2;
+  const perRow = runs.length > 2 ? 2 : 1, cell = (W - 4) / perRow;
   runs.forEach((r, ri) => {
-    g.strokeStyle = r.colour; g.lineWidth = 2; g.setLineDash(ri ? DASH : []);
-    g.beginPath(); g.moveTo(6, y - 5); g.lineTo(30, y - 5); g.stroke();
+    const x = 6 + (ri % perRow) * cell;
+    g.strokeStyle = r.colour; g.lineWidth = 2; g.setLineDash(dashOf(ri));
+    g.beginPath(); g.moveTo(x, y - 5); g.lineTo(x + 24, y - 5); g.stroke();
     g.setLineDash([]);
-    g.fillStyle = r.colour; g.fillText(r.label, 36, y);
-    y += FONT_PX + 4;
+    g.fillStyle = r.colour;
+    let label = r.label;
+    if (perRow > 1) while (label.length > 1 && g.measureText(label).width > cell - 36) label = label.slice(0, -2) + '…';
+    g.fillText(label, x + 30, y);
+    if (ri % perRow === perRow - 1 || ri === runs.length - 1) y += FONT_PX + 4;
   });
   if (measured) {
     g.fillStyle = '#ddd';
@@ -137,7 +145,7 @@ export function drawPlots(canvas, runs, measured = null) {
       const n = f(r.history[0], r).length;
       for (let c = 0; c < n; ++c) {
         g.strokeStyle = n === 3 ? OMEGA_COLOURS[c] : r.colour;
-        g.setLineDash(ri ? DASH : []);
+        g.setLineDash(dashOf(ri));
         g.beginPath();
         // One pixel column at a time: its first, lowest, highest and last point (the curve's
         // envelope, at a fraction of the points when the history is longer than the plot is wide).

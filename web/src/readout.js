@@ -6,8 +6,21 @@ const $ = (id) => document.getElementById(id);
 /** `x` to `digits` decimals, without a "-0.00". */
 const fixed = (x, digits) => (Math.abs(x) < 0.5 * 10 ** -digits ? 0 : x).toFixed(digits);
 
+/** The readout's HTML for more than two runs (a comparison's every tile): a cell a run, its
+ * method and its flips and the time of its first, three to a row, so that the view keeps its
+ * height. */
+function manyRunsHtml(runs) {
+  return '<div class="many">' + runs.map((r) => {
+    const own = r.session.flips();
+    const first = own.first === null ? '—' : fixed(own.first, 2);
+    return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
+      `<div class="counts"><span class="flips">flips ${own.count}</span> · <span class="first">first ${first}</span></div></div>`;
+  }).join('') + '</div>';
+}
+
 /** The readout's HTML for `runs` (Runs.list) at time `t`. */
 function runsHtml(runs, t) {
+  if (runs.length > 2) return manyRunsHtml(runs);
   return runs.map((r) => {
     const h = r.history[r.history.length - 1];
     const own = r.session.flips();

@@ -2,21 +2,34 @@
 // recorded for the plots and the sphere's trail. Every number comes from the WebAssembly
 // module, flips included (analysis::FlipDetector, fed every step); nothing is computed here.
 // A JavaScript engine's run (web/src/engines/) is stepped by its engine; after every step its q
-// and ω go into a WebAssembly session (Session.observe), which measures and draws it alike.
+// and ω go into a WebAssembly session (Session.observe), which measures and draws it alike, and
+// so do the samples of a comparison's tile the page cannot step, replayed (tile_replay.js).
 import { AXES } from './state.js';
 import { WITHOUT_GYROSCOPIC_TERM } from './engines/models.js';
+import { TileReplay, REPLAY_NOTE } from './tile_replay.js';
 
-const TRAIL_COLOURS = ['#e8b00b', '#35c0f0'];
+/** Each run's colour, in order (the first two as before a comparison showed every tile). */
+const TRAIL_COLOURS = ['#e8b00b', '#35c0f0', '#f06aa8', '#7bd389', '#b58cf2', '#f59a4e', '#d8d8d8', '#4fd8c4'];
 /** Steps between records at most (one record per 0.05 time units otherwise), so that a tiny dt
  * still returns to the page between pieces of work. */
 const MAX_CHUNK = 2000;
 /** Records of the exact motion per advance at most (it is evaluated at each, not stepped). */
 const CLOSED_FORM_RECORDS = 1000;
 
-/** The methods of `state`: the first, and the second in compare mode. */
-function methodsOf(state) {
-  const methods = [[state.model, state.integrator, state.normalize]];
-  if (state.compare) methods.push([state.model2, state.integrator2, state.normalize2]);
+/** The scene's own start (body, ω0, jiggle, seed), which a replay was run from. */
+const START_KEYS = ['body', 'axis', 'w', 'jiggle', 'seed'];
+
+/** The methods of `state`: with `tiles`, every tile of its scene (docs/explorer.md,
+ * "Comparison": bookspin's own models stepped, the other engines' replayed); else the first, and
+ * the second in compare mode. Each {model, integrator, normalize, label (a tile's own, or none),
+ * replay (the tile's motion as make figures ran it, or none)}. */
+function methodsOf(state, scene) {
+  if (state.tiles && scene && scene.tiles) {
+    return scene.tiles.map((tile, i) => ({ ...tile,
+      replay: (scene.replays || []).find((r) => r.tile === i) || null }));
+  }
+  const methods = [{ model: state.model, integrator: state.integrator, normalize: state.normalize }];
+  if (state.compare) methods.push({ model: state.model2, integrator: state.integrator2, normalize: state.normalize2 });
   return methods;
 }
 
@@ -95,11 +108,28 @@ export class Runs {
     }
   }
 
-  /** `n` steps of `dt` of `run`; false when its state stopped being finite. */
+  /** A replayed tile (`replay`, one of the scene's replays: TileReplay) from the state's start:
+   * {session, engine}, the session measuring the replay's samples as a JavaScript engine's. The
+   * replay is of the scene's own start: another start is refused (it was not run). */
+  startReplay(state, replay) {
+    const base = this.space.sceneBase(this.scenes, state.scene);
+    const moved = START_KEYS.filter((k) => JSON.stringify(state[k]) !== JSON.stringify(base[k]));
+    if (moved.length)
+      throw new Error(`${replay.label}: a replay of the scene's own start (${moved.join(', ')} changed here), not shown`);
+    const session = this.bodySession(state);
+    session.configureEngine();
+    const w = Runs.omega0(session, state);
+    session.reset(w[0], w[1], w[2], state.jiggle, state.seed);
+    return { session, engine: new TileReplay(replay, state.dt) };
+  }
+
+  /** `n` steps of `dt` of `run`; false when its state stopped being finite (or a replay passed
+   * its last sample). */
   static step(run, dt, n) {
     if (!run.engine) return run.session.step(dt, n);
     for (let i = 0; i < n; ++i) {
       run.engine.step();
+      if (run.replayed && run.engine.ended()) return false;
       const q = run.engine.quaternion(), w = run.engine.omegaWorld();
       if (!run.session.observe(q[0], q[1], q[2], q[3], w[0], w[1], w[2], dt)) return false;
     }
@@ -110,12 +140,17 @@ export class Runs {
   rebuild(state) {
     this.dispose();
     const errors = [];
-    methodsOf(state).forEach(([model, integrator, normalize], k) => {
+    const scene = this.scenes.find((s) => s.name === state.scene);
+    methodsOf(state, scene).forEach(({ model, integrator, normalize, label, replay }, k) => {
       try {
-        const { session, engine } = this.startRun(state, model, integrator, normalize);
-        const run = { session, engine, model, integrator, normalize, colour: TRAIL_COLOURS[k],
-          label: labelOf(model, integrator, normalize, this.engineOf(model)), trail: [], history: [],
-          diverged: '', closedForm: model === 'exact' };
+        if (label && !replay && !this.engineOf(model) && !this.space.models.includes(model))
+          throw new Error(`${label}: not in this page (no replay of it)`);
+        const { session, engine } = replay ? this.startReplay(state, replay)
+          : this.startRun(state, model, integrator, normalize);
+        const run = { session, engine, model, integrator, normalize,
+          colour: TRAIL_COLOURS[k % TRAIL_COLOURS.length],
+          label: replay ? `${label} (${REPLAY_NOTE})` : label || labelOf(model, integrator, normalize, this.engineOf(model)),
+          replayed: Boolean(replay), trail: [], history: [], diverged: '', closedForm: model === 'exact' };
         this.record(run, state.dt);
         run.E0 = run.history[0].E;
         this.list.push(run);
@@ -156,7 +191,8 @@ export class Runs {
         if (left <= 0 || r.diverged) continue;
         if (!Runs.step(r, dt, Math.min(stride.get(r), left))) {
           const reason = r.session.divergenceReason();
-          r.diverged = `diverged at t = ${(r.session.steps() * dt).toFixed(3)}${reason ? ': ' + reason : ''}`;
+          r.diverged = r.replayed && r.engine.ended() ? `replay ends at t = ${r.engine.end().toFixed(2)}`
+            : `diverged at t = ${(r.session.steps() * dt).toFixed(3)}${reason ? ': ' + reason : ''}`;
         }
         this.record(r, dt);
         busy = true;

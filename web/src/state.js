@@ -50,6 +50,7 @@ export class StateSpace {
       seed: 2012,
       speed: 5,
       compare: false,
+      tiles: false,  // a comparison scene's every tile (docs/explorer.md, "Comparison")
       model2: 'exact',
       integrator2: 'euler',
       normalize2: false,
@@ -63,7 +64,7 @@ export class StateSpace {
       scene: (v) => v,
       body: oneOf(this.bodies), model: models, integrator: integrators,
       model2: models, integrator2: integrators, axis: oneOf(AXES),
-      normalize: bool, damping: bool, normalize2: bool, compare: bool, showL: bool, showAxes: bool,
+      normalize: bool, damping: bool, normalize2: bool, compare: bool, tiles: bool, showL: bool, showAxes: bool,
       drag: oneOf(DRAG_LAWS), dragRate: num,
       k: num, cells: num, dt: num, rate: num, jiggle: num, seed: num, speed: num, t: num,
       w: (v, d) => {

@@ -80,6 +80,13 @@ function sweepRadius(session) {
   return rv > 0 ? Math.min(r, rv) : r;
 }
 
+/** A run's label under its body in a grid of many: its name up to its first parenthesis, and
+ * "· replay" for a tile replayed as make figures ran it (runs.js). */
+export function shortLabel(run) {
+  const name = run.label.split(' (')[0];
+  return run.replayed ? `${name} · replay` : name;
+}
+
 /** The camera's first line of sight (from the orbit target), where resetCamera() puts it back. */
 const HOME = [4.2, 2.6, 6.3];
 
@@ -111,7 +118,7 @@ export class View3D {
       this.scene.add(a);
       return a;
     });
-    this.layout = { radius: 1, step: new THREE.Vector3(), count: 0 };
+    this.layout = { radius: 1, spacing: 0, cols: 1, rows: 1, count: 0, right: new THREE.Vector3(1, 0, 0), up: new THREE.Vector3(0, 1, 0) };
     this.framedFor = '';
   }
 
@@ -124,9 +131,12 @@ export class View3D {
     // Labels only where there is more than one body to tell apart (compare mode).
     this.labels = runs.length > 1 ? runs.map((r) => {
       const l = document.createElement('div');
-      l.className = 'bodyLabel';
+      l.className = runs.length > 2 ? 'bodyLabel small' : 'bodyLabel';
       l.style.color = r.colour;
-      l.textContent = r.label;
+      // More than two: the method's name without its parenthesis, and "replay" where it is one
+      // (the readout and the plots' legend name it whole).
+      l.textContent = runs.length > 2 ? shortLabel(r) : r.label;
+      l.title = r.label;
       this.renderer.domElement.parentElement.appendChild(l);
       return l;
     }) : [];
@@ -158,15 +168,21 @@ export class View3D {
         left = Math.min(left, x); right = Math.max(right, x); bottom = Math.max(bottom, y);
       }
       label.style.left = `${(left + right) / 2}px`;
+      // Within its body's column of the grid: a long name wraps under its body.
+      label.style.maxWidth = `${Math.max(120, w / this.layout.cols - 8)}px`;
       label.style.top = `${Math.min(bottom + 6, h - 24)}px`;
       label.hidden = !Number.isFinite(bottom);
     });
   }
 
-  /** Where run k of n is drawn: side by side (one above the other in a view taller than
-   * wide), a sweep diameter and a gap apart, the set centred on the orbit target. */
+  /** Where run k of n is drawn: in a grid of `cols` columns (side by side for two, one above
+   * the other in a view taller than wide), a sweep diameter and a gap apart, row by row from the
+   * top left, the set centred on the orbit target. */
   offsetOf(k) {
-    return this.layout.step.clone().multiplyScalar(k - (this.layout.count - 1) / 2);
+    const { cols, rows, spacing, right, up } = this.layout;
+    const col = k % cols, row = Math.floor(k / cols);
+    return right.clone().multiplyScalar((col - (cols - 1) / 2) * spacing)
+      .addScaledVector(up, ((rows - 1) / 2 - row) * spacing);
   }
 
   /** Lays the runs out and, when the layout changed (or `force`: the view was resized), puts
@@ -176,10 +192,24 @@ export class View3D {
     if (!runs.length) return;
     const camera = this.camera;
     const r = Math.max(...runs.map((run) => sweepRadius(run.session)));
-    const tall = camera.aspect < 1;
-    const step = runs.length > 1 ? 2.2 * r : 0;
-    const key = `${runs.length} ${r} ${tall}`;
-    this.layout = { radius: r, step: new THREE.Vector3(tall ? 0 : step, tall ? -step : 0, 0), count: runs.length };
+    // The columns that need the least distance to show every body: the grid's width against
+    // the view's aspect, its height (two side by side, or one above the other when taller).
+    const n = runs.length;
+    let cols = 1;
+    const extent = (c) => Math.max(c / camera.aspect, Math.ceil(n / c));
+    for (let c = 2; c <= n; ++c) if (extent(c) < extent(cols)) cols = c;
+    const rows = Math.ceil(n / cols);
+    const key = `${n} ${r} ${cols}`;
+    // Two bodies side by side along world x (or y); a grid of more in the plane of the view as
+    // the camera looks now, so that its rows stand apart on the screen, with room for the labels.
+    const right = new THREE.Vector3(1, 0, 0), up = new THREE.Vector3(0, 1, 0);
+    if (n > 2) {
+      camera.lookAt(this.controls.target);
+      camera.updateMatrixWorld();
+      right.setFromMatrixColumn(camera.matrixWorld, 0);
+      up.setFromMatrixColumn(camera.matrixWorld, 1);
+    }
+    this.layout = { radius: r, spacing: n > 2 ? 2.5 * r : n > 1 ? 2.2 * r : 0, cols, rows, count: n, right, up };
     this.arrowL.setLength(1.5 * r, 0.2 * r, 0.1 * r);
     this.axisArrows.forEach((a) => a.setLength(1.1 * r, 0.12 * r, 0.06 * r));
     if (!force && key === this.framedFor) return;
