@@ -8,8 +8,8 @@
 #include "cli/commands.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
+#include "jobs/page_replay.hpp"
 #include "products/explorer.hpp"
-#include "scene/page_data.hpp"
 
 namespace bookspin::cli {
 namespace {
@@ -57,7 +57,8 @@ int explore_command(const ExploreOptions& options) {
     scene::Scene scene = scene::parse_scene(path);
     for (const std::string& warning : scene.warnings)
       std::cerr << "bookspin: warning: " << warning << '\n';
-    request.scene_data.push_back(scene::page_data(scene));  // the value the page reads
+    // The value the page reads, with the replays of the tiles it cannot step.
+    request.scene_data.push_back(jobs::explorer_scene_data(scene, request.stop_signal));
     request.scenes.push_back(std::move(scene));
   }
   const products::ExplorerOutcome done = products::make_explorer_page(request);

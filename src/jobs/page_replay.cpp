@@ -1,8 +1,13 @@
 #include "jobs/page_replay.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 #include "analysis/frame_source.hpp"
+#include "output/data_url.hpp"
+#include "scene/page_data.hpp"
 
 namespace bookspin::jobs {
 
@@ -40,6 +45,53 @@ std::vector<ReplayedTile> page_replays(const scene::Scene& scene, const StopPoll
     replays.push_back(std::move(out));
   }
   return replays;
+}
+
+namespace {
+
+/// `values` (each within ±`scale`) as little-endian 16-bit integers, value·32767/scale rounded,
+/// in a data: URL: a replayed motion stored compactly (docs/explorer.md, "Comparison"; the page
+/// reads them back in web/src/tile_replay.js).
+JsonValue quantised(const double* values, std::size_t count, double scale) {
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(2 * count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double v = std::clamp(values[i] / scale, -1.0, 1.0);
+    const auto q = static_cast<std::uint16_t>(static_cast<std::int16_t>(std::lround(v * 32767)));
+    bytes.push_back(static_cast<std::uint8_t>(q & 0xff));
+    bytes.push_back(static_cast<std::uint8_t>(q >> 8));
+  }
+  return {output::data_url("application/octet-stream", bytes)};
+}
+
+/// The scene's tiles the page cannot step, as page_replays runs them, the way the page reads
+/// them: per tile its index, label, time between samples (`frameDt`), `frames`, `q` (w, x, y, z
+/// per frame, ×32767) and `w` (world-frame ω per frame, ×32767/`wScale`), quantised.
+JsonArray replays_data(const scene::Scene& scene, const StopPoll& stop) {
+  JsonArray out;
+  for (const jobs::ReplayedTile& r : jobs::page_replays(scene, stop)) {
+    if (r.q.cols() == 0) continue;
+    const double scale = std::max(r.omega_world.cwiseAbs().maxCoeff(), 1e-300);
+    out.push_back(
+        {JsonObject{{"tile", {static_cast<std::int64_t>(r.tile)}},
+                    {"label", {r.label}},
+                    {"frameDt", {r.frame_dt}},
+                    {"frames", {static_cast<std::int64_t>(r.q.cols())}},
+                    {"q", quantised(r.q.data(), static_cast<std::size_t>(r.q.size()), 1.0)},
+                    {"w", quantised(r.omega_world.data(),
+                                    static_cast<std::size_t>(r.omega_world.size()), scale)},
+                    {"wScale", {scale}}}});
+  }
+  return out;
+}
+
+}  // namespace
+
+JsonObject explorer_scene_data(const scene::Scene& scene, const StopPoll& stop) {
+  JsonObject data = scene::page_data(scene);
+  if (JsonArray replays = replays_data(scene, stop); !replays.empty())
+    data.push_back({"replays", {std::move(replays)}});
+  return data;
 }
 
 }  // namespace bookspin::jobs

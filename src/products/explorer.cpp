@@ -12,7 +12,6 @@
 #include "common/json_writer.hpp"
 #include "common/sha256.hpp"
 #include "common/text_file.hpp"
-#include "jobs/page_replay.hpp"
 #include "output/atomic_output.hpp"
 #include "output/data_url.hpp"
 #include "output/output_dir.hpp"
@@ -44,42 +43,6 @@ RgbaImage half_size(const RgbaImage& image) {
         half.row(y)[4 * x + c] = static_cast<std::uint8_t>((sum + count / 2) / count);
       }
   return half;
-}
-
-/// `values` (each within ±`scale`) as little-endian 16-bit integers, value·32767/scale rounded,
-/// in a data: URL: a replayed motion stored compactly (docs/explorer.md, "Comparison"; the page
-/// reads them back in web/src/tile_replay.js).
-JsonValue quantised(const double* values, std::size_t count, double scale) {
-  std::vector<std::uint8_t> bytes;
-  bytes.reserve(2 * count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const double v = std::clamp(values[i] / scale, -1.0, 1.0);
-    const auto q = static_cast<std::uint16_t>(static_cast<std::int16_t>(std::lround(v * 32767)));
-    bytes.push_back(static_cast<std::uint8_t>(q & 0xff));
-    bytes.push_back(static_cast<std::uint8_t>(q >> 8));
-  }
-  return {output::data_url("application/octet-stream", bytes)};
-}
-
-/// The scene's tiles the page cannot step, as jobs::page_replays ran them, the way the page reads
-/// them: per tile its index, label, time between samples (`frameDt`), `frames`, `q` (w, x, y, z
-/// per frame, ×32767) and `w` (world-frame ω per frame, ×32767/`wScale`), quantised.
-JsonArray replays_data(const scene::Scene& scene, const StopPoll& stop) {
-  JsonArray out;
-  for (const jobs::ReplayedTile& r : jobs::page_replays(scene, stop)) {
-    if (r.q.cols() == 0) continue;
-    const double scale = std::max(r.omega_world.cwiseAbs().maxCoeff(), 1e-300);
-    out.push_back(
-        {JsonObject{{"tile", {static_cast<std::int64_t>(r.tile)}},
-                    {"label", {r.label}},
-                    {"frameDt", {r.frame_dt}},
-                    {"frames", {static_cast<std::int64_t>(r.q.cols())}},
-                    {"q", quantised(r.q.data(), static_cast<std::size_t>(r.q.size()), 1.0)},
-                    {"w", quantised(r.omega_world.data(),
-                                    static_cast<std::size_t>(r.omega_world.size()), scale)},
-                    {"wScale", {scale}}}});
-  }
-  return out;
 }
 
 /// `text` safe inside a <script> element: "</" cannot close it early.
@@ -155,11 +118,7 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
                         " scenes");
   JsonArray scenes;
   for (std::size_t i = 0; i < request.scenes.size(); ++i) {
-    JsonObject data = request.scene_data[i];
-    // The tiles the page cannot step, replayed as the clip ran them (jobs::page_replays).
-    if (JsonArray replays = replays_data(request.scenes[i], request.stop_signal); !replays.empty())
-      data.push_back({"replays", {std::move(replays)}});
-    scenes.push_back({std::move(data)});
+    scenes.push_back({request.scene_data[i]});
   }
   JsonObject book_art;
   const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order

@@ -38,8 +38,9 @@ std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell
 
 struct ExplorerPageRequest {
   std::vector<scene::Scene> scenes;  ///< in the page's order; names must differ
-  /// scene::page_data of each of `scenes`, in their order: the values the page reads, made by
-  /// the pure stage before the product writes them (one a scene, or an internal error).
+  /// jobs::explorer_scene_data of each of `scenes`, in their order: the values the page reads
+  /// (scene::page_data, with the replays of the tiles it cannot step), made by the pure stage
+  /// before the product writes them (one a scene, or an internal error).
   std::vector<JsonObject> scene_data;
   std::filesystem::path shell;  ///< the page without data (web/build.sh)
   /// The JavaScript engines' bundle to write into the page (explorer_engines_beside); empty:
@@ -59,9 +60,8 @@ struct ExplorerPageResult {
 };
 
 /// Writes explorer_page_path(request.out_dir): the shell with its data marker replaced by one
-/// script that sets window.BOOKSPIN_SCENES (scene::page_data of each scene, one a line, with
-/// `replays` where the scene has tiles the page cannot step: jobs::page_replays, quantised to
-/// 16 bits, docs/explorer.md "Comparison") and
+/// script that sets window.BOOKSPIN_SCENES (request.scene_data, one a line: each scene's
+/// jobs::explorer_scene_data, docs/explorer.md "Comparison") and
 /// window.BOOKSPIN_BOOK_ART (the book's four default face images, render::generate_face_image, as
 /// PNG data: URLs); the engines' marker replaced by request.engines as one script (it sets
 /// window.BOOKSPIN_ENGINES) or, without engines, by nothing. Throws InputError when two scenes

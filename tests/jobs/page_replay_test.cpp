@@ -41,8 +41,12 @@ TEST(PageReplays, TheEnginesTilesEachAFrameFromTheStart) {
       const Eigen::Matrix3d R = sim->orientation();
       const Eigen::Vector4d q = r.q.col(k);
       EXPECT_NEAR(q.norm(), 1.0, 1e-12);
-      if (k == 0) EXPECT_GT(q[0], 0.0);
-      if (k > 0) EXPECT_GE(q.dot(r.q.col(k - 1)), 0.0) << "frame " << k;
+      if (k == 0) {
+        EXPECT_GT(q[0], 0.0);
+      }
+      if (k > 0) {
+        EXPECT_GE(q.dot(r.q.col(k - 1)), 0.0) << "frame " << k;
+      }
       const Eigen::Matrix3d Rq = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).toRotationMatrix();
       EXPECT_LT((Rq - R).norm(), 1e-12) << "frame " << k;
       const Eigen::Vector3d w = R * sim->diagnostics().omega_body;
