@@ -11,6 +11,7 @@
 
 #include "charts/panel.hpp"
 #include "overlay/cairo_canvas.hpp"
+#include "scene/key_label.hpp"
 
 namespace bookspin::charts {
 
@@ -19,8 +20,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The sheet's header font and the maps' font (pixels), from the sheet's height.
-double header_font(int height) { return std::clamp(0.024 * height, 10.0, 22.0); }
-double map_font(int height) { return 0.8 * header_font(height); }
+double header_font(int height) { return std::clamp(0.024 * height, 15.0, 22.0); }
+/// The maps' text: its smallest (ticks, 0.8 of it) at least 12 pixels.
+double map_font(int height) { return std::max(15.0, 0.8 * header_font(height)); }
 
 double header_height(int height, std::size_t lines) {
   const double font = header_font(height);
@@ -245,8 +247,8 @@ std::vector<HeatMapSpec> sweep_heat_maps(const std::vector<std::string>& header,
     HeatMapSpec map;
     // The measure in words (its axis label, unit and all), its CSV column second.
     map.title = std::string(measures[m]->axis_label) + " \u00b7 " + std::string(measures[m]->name);
-    map.x_label = header.at(0);
-    map.y_label = header.at(1);
+    map.x_label = scene::key_caption(header.at(0));
+    map.y_label = scene::key_caption(header.at(1));
     map.value_label = std::string(measures[m]->axis_label);
     map.log_x = log_x;
     map.log_y = log_y;
@@ -273,7 +275,7 @@ MapRect heat_map_cells(int width, int height, std::size_t header_lines, std::siz
                        std::size_t index) {
   const MapRect r = map_region(width, height, header_lines, count, index);
   const double font = map_font(height);
-  const double left = r.left + 6.0 * font, top = r.top + 3.2 * font;
+  const double left = r.left + 7.0 * font, top = r.top + 3.2 * font;
   const double right = r.left + r.width - 8.0 * font, bottom = r.top + r.height - 3.0 * font;
   return {left, top, std::max(1.0, right - left), std::max(1.0, bottom - top)};
 }

@@ -9,6 +9,7 @@
 
 #include "charts/heat_map.hpp"
 #include "charts/panel.hpp"
+#include "scene/key_label.hpp"
 
 namespace bookspin::charts {
 
@@ -38,10 +39,13 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
       if (refused++ == 0) first_reason = row[c];
     }
   }
-  char text[200];
-  std::snprintf(text, sizeof text, "Sweep of %s: %zu runs", chart.scene_name.c_str(),
-                chart.rows.size() - refused);
-  std::string head = text;
+  char text[320];
+  // The scene's title leads, its name (as in the files' names) follows.
+  std::string head = chart.scene_title.empty()
+                         ? "Sweep of " + chart.scene_name
+                         : chart.scene_title + " (sweep of " + chart.scene_name + ")";
+  std::snprintf(text, sizeof text, ": %zu runs", chart.rows.size() - refused);
+  head += text;
   if (refused > 0) {
     std::snprintf(text, sizeof text, ", %zu %s refused by the engine", refused,
                   refused == 1 ? "point" : "points");
@@ -52,8 +56,9 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
     lines.push_back("refused" + std::string(refused > 1 ? " (the first)" : "") + ": " +
                     first_reason);
   for (const SweepAxis& a : chart.axes) {
-    std::snprintf(text, sizeof text, "varied: %s from %.6g to %.6g, %d values%s", a.key.c_str(),
-                  a.start, a.stop, static_cast<int>(a.values.size()), a.log ? " (log spaced)" : "");
+    std::snprintf(text, sizeof text, "varied: %s, from %.6g to %.6g, %d values%s",
+                  scene::key_caption(a.key).c_str(), a.start, a.stop,
+                  static_cast<int>(a.values.size()), a.log ? " (log spaced)" : "");
     lines.emplace_back(text);
   }
   return lines;
@@ -86,7 +91,7 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart) {
       char value[40];
       std::snprintf(value, sizeof value, "%.6g", number(cell_text));
       if (k > 1) name += ", ";
-      name += chart.header[k] + " = " + value;
+      name += scene::key_words(chart.header[k]).words + " = " + value;
     }
     const auto [it, added] = group_of.emplace(key, groups.size());
     if (added) {
@@ -103,8 +108,10 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart) {
     for (std::size_t c = keys + chart.measures.size(); c < chart.header.size(); ++c)
       if (chart.header[c] == column + "_exact") exact_col = c;
     overlay::PlotSpec spec;
-    spec.title = column + (exact_col ? " (measured: solid; exact model: dashed)" : "");
-    spec.x_label = chart.header[0] + (chart.axes[0].log ? " (log scale)" : "");
+    // The measure in words (its axis label, unit and all), its CSV column second.
+    spec.title = std::string(chart.measures[m]->axis_label) + " \u00b7 " + column +
+                 (exact_col ? " (measured: solid; exact model: dashed)" : "");
+    spec.x_label = scene::key_caption(chart.header[0]) + (chart.axes[0].log ? " (log scale)" : "");
     spec.y_label = std::string(chart.measures[m]->axis_label);
     spec.log_x = chart.axes[0].log;
     spec.log_y = chart.measures[m]->log_scale;

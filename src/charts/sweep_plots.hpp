@@ -24,6 +24,7 @@ struct SweepAxis {
 /// then the measures, then the exact columns (`<measure>_exact`).
 struct SweepChart {
   std::string scene_name;
+  std::string scene_title;  ///< scene.title, leading the header (empty: the name alone)
   std::vector<SweepAxis> axes;
   std::vector<const analysis::Measure*> measures;
   std::vector<std::string> header;             ///< every column's name, in order

@@ -12,7 +12,8 @@
 namespace bookspin::jobs {
 
 charts::SweepChart sweep_chart(const SweepTable& table) {
-  charts::SweepChart chart{table.scene_name, {}, table.measures, table.header, {}};
+  charts::SweepChart chart{table.scene_name, table.scene_title, {},
+                           table.measures,   table.header,      {}};
   for (const VaryRange& r : table.ranges)
     chart.axes.push_back({r.key, r.start, r.stop, r.log, r.values()});
   for (const auto& row : table.rows) chart.rows.push_back(row.second);
@@ -119,6 +120,7 @@ SweepTable measure_sweep(const SweepRequest& request) {
 
   SweepTable table;
   table.scene_name = base.name;
+  table.scene_title = base.title;
   table.ranges = grid.ranges();
   table.measures = request.measures;
   table.header = sweep_csv_header(table.ranges, table.measures);

@@ -25,6 +25,7 @@ MeasureList parse_measures(const std::string& text);
 /// (`first_flip_exact` where first_flip is measured, `flip_period_exact` likewise).
 struct SweepTable {
   std::string scene_name;
+  std::string scene_title;  ///< scene.title: the picture's heading (empty: the name alone)
   std::vector<VaryRange> ranges;
   MeasureList measures;
   std::vector<std::string> header;  ///< CSV column names, in order

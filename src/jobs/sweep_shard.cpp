@@ -23,6 +23,44 @@ namespace {
 
 constexpr const char* kShardMagic = "# bookspin sweep shard ";
 
+/// `text` as one word of the shard line: '%', spaces and control bytes as %XX (RFC 3986's
+/// percent-encoding, upper-case hex); every other byte, UTF-8 too, as it is.
+std::string percent_encoded(const std::string& text) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte <= 0x20 || byte == 0x7f || c == '%') {
+      out += '%';
+      out += kHex[byte >> 4];
+      out += kHex[byte & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+/// percent_encoded() undone; a '%' not followed by two hex digits is kept as it is.
+std::string percent_decoded(const std::string& word) {
+  const auto hex = [](char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    return -1;
+  };
+  std::string out;
+  for (std::size_t i = 0; i < word.size(); ++i) {
+    if (word[i] == '%' && i + 2 < word.size() && hex(word[i + 1]) >= 0 && hex(word[i + 2]) >= 0) {
+      out += static_cast<char>(16 * hex(word[i + 1]) + hex(word[i + 2]));
+      i += 2;
+    } else {
+      out += word[i];
+    }
+  }
+  return out;
+}
+
 /// Everything after "shard K of N: " in a shard's first line: the same in every shard of one
 /// sweep. scene_sha256 is the SHA-256 of the resolved scene in canonical form (after --set
 /// and defaults, before the grid's values: scene::canonical_json, as in the manifests), build
@@ -37,6 +75,7 @@ std::string shard_meta(const SweepTable& table, std::size_t points,
     if (i > 0) meta += ',';
     meta += table.measures[i]->name;
   }
+  if (!table.scene_title.empty()) meta += " title=" + percent_encoded(table.scene_title);
   return meta;
 }
 
@@ -50,7 +89,7 @@ bool read_line(std::istream& in, std::string& line) {
 /// The fields of a shard's first line after "K of N: ": scene, scene_sha256, build, points,
 /// vary (one per range, in order), measure.
 struct ShardLine {
-  std::string scene, scene_sha256, build, points, measure;
+  std::string scene, scene_sha256, build, points, measure, title;
   std::vector<std::string> vary;
 };
 
@@ -71,6 +110,8 @@ ShardLine parse_shard_line(const std::string& meta) {
       line.vary.push_back(value("vary="));
     else if (word.rfind("measure=", 0) == 0)
       line.measure = value("measure=");
+    else if (word.rfind("title=", 0) == 0)
+      line.title = percent_decoded(value("title="));
   }
   return line;
 }
@@ -150,6 +191,7 @@ SweepTable read_sweep_shards(const std::vector<std::filesystem::path>& shards,
       for (const auto& v : line.vary) ranges.push_back(parse_vary(v));
       points = std::strtoull(line.points.c_str(), nullptr, 10);
       table.scene_name = line.scene;
+      table.scene_title = line.title;
       if (!line.measure.empty()) table.measures = parse_measures(line.measure);
       const SweepGrid grid(ranges);
       if (table.scene_name.empty() || grid.size() != points || table.measures.empty())

@@ -335,23 +335,39 @@ bool read_rows(png_structp png, png_bytepp rows) {
   return true;
 }
 
-}  // namespace
-
-RgbaImage read_png(const std::filesystem::path& path) {
-  FilePtr file(std::fopen(path.c_str(), "rb"));
+/// `path` opened and its header read into `handle` (read_header); throws as read_png().
+void start_reading(const std::filesystem::path& path, FilePtr& file, PngIo& io,
+                   PngReadHandle& handle, png_uint_32* width, png_uint_32* height,
+                   std::size_t* row_bytes) {
+  file.reset(std::fopen(path.c_str(), "rb"));
   if (!file) throw_read_error(path, std::strerror(errno));
-  PngIo io;
-  PngReadHandle handle;
   handle.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &io, on_png_error, on_png_warning);
   if (handle.png) handle.info = png_create_info_struct(handle.png);
   if (!handle.info) throw_read_error(path, "libpng out of memory");
   png_init_io(handle.png, file.get());
+  if (!read_header(handle.png, handle.info, width, height, row_bytes))
+    throw_read_error(path, io.message);
+}
 
+}  // namespace
+
+PngSize read_png_size(const std::filesystem::path& path) {
+  FilePtr file;
+  PngIo io;
+  PngReadHandle handle;
   png_uint_32 width = 0, height = 0;
   std::size_t row_bytes = 0;
-  if (!read_header(handle.png, handle.info, &width, &height, &row_bytes)) {
-    throw_read_error(path, io.message);
-  }
+  start_reading(path, file, io, handle, &width, &height, &row_bytes);
+  return {static_cast<int>(width), static_cast<int>(height)};
+}
+
+RgbaImage read_png(const std::filesystem::path& path) {
+  FilePtr file;
+  PngIo io;
+  PngReadHandle handle;
+  png_uint_32 width = 0, height = 0;
+  std::size_t row_bytes = 0;
+  start_reading(path, file, io, handle, &width, &height, &row_bytes);
   constexpr png_uint_32 kMaxSide = 1u << 15;  // 32768: far beyond any frame we make
   if (width == 0 || height == 0 || width > kMaxSide || height > kMaxSide) {
     throw_read_error(path,

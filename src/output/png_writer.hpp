@@ -56,4 +56,14 @@ void write_png(std::FILE* file, const std::filesystem::path& path, const RgbaIma
 /// valid PNG.
 RgbaImage read_png(const std::filesystem::path& path);
 
+/// A PNG's size in pixels.
+struct PngSize {
+  int width = 0;
+  int height = 0;
+};
+
+/// The size of the PNG at `path`, from its header alone (no pixels decoded). Throws
+/// std::runtime_error naming `path` as read_png() does.
+PngSize read_png_size(const std::filesystem::path& path);
+
 }  // namespace bookspin::output

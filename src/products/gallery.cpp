@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <ctime>
 #include <fstream>
+#include <map>
+#include <stdexcept>
 #include <thread>
 
 #include "cache/make_cached.hpp"
@@ -12,6 +14,7 @@
 #include "output/atomic_output.hpp"
 #include "output/manifest.hpp"
 #include "output/output_dir.hpp"
+#include "output/png_writer.hpp"
 #include "products/accuracy.hpp"
 #include "products/clip.hpp"
 #include "products/explorer.hpp"
@@ -195,6 +198,34 @@ GalleryLayout gallery_layout(const fs::path& out_dir) {
   return {out_dir / "index.html", out_dir / "gallery-manifest.json"};
 }
 
+namespace {
+
+/// The size of every image the page shows (GalleryHeader::image_sizes), read from each PNG's
+/// header; a PNG that cannot be read is left out (the page shows it as wide as its column).
+std::map<std::string, ImageSize> image_sizes(const fs::path& out,
+                                             const std::vector<GalleryEntry>& entries,
+                                             const std::vector<GalleryFit>& fits) {
+  std::vector<std::string> images;
+  for (const GalleryEntry& e : entries) {
+    for (const std::string* p : {&e.poster, &e.plot, &e.sweep}) images.push_back(*p);
+    images.insert(images.end(), e.report_charts.begin(), e.report_charts.end());
+  }
+  for (const GalleryFit& fit : fits)
+    for (const GalleryToss& toss : fit.tosses) images.push_back(toss.chart);
+  std::map<std::string, ImageSize> sizes;
+  for (const std::string& image : images) {
+    if (image.empty() || sizes.count(image)) continue;
+    try {
+      const output::PngSize size = output::read_png_size(out / image);
+      sizes[image] = {size.width, size.height};
+    } catch (const std::runtime_error&) {
+    }
+  }
+  return sizes;
+}
+
+}  // namespace
+
 GalleryOutcome make_gallery(const GalleryJob& job) {
   const fs::path& out = job.out_dir;
   const GalleryLayout layout = gallery_layout(out);
@@ -218,7 +249,7 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
 
   GalleryHeader header{
-      output::program_version(), output::program_build_id(), "", machine(), "", "", "", "", {}};
+      output::program_version(), output::program_build_id(), "", machine(), "", "", "", "", {}, {}};
   const FlipcheckLeagueLayout league = flipcheck_league_layout(out);
   if (exists(out, path_in_out(out, league.manifest))) {
     const Listed tabled(out, league.manifest);
@@ -230,6 +261,7 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   if (const std::string page = if_there(out, explorer_page_path(out)); !page.empty())
     header.phone_lab_page = page + "#lab";
   header.fits = fits_in(out);
+  header.image_sizes = image_sizes(out, entries, header.fits);
   // Up to date: the same page but for its date (output/manifest.hpp).
   GalleryOutcome done;
   done.entries = entries.size();

@@ -17,7 +17,8 @@ h1 { font-size: 1.6rem; }
 .clip p { margin: .2rem 0 .8rem; }
 .media { display: grid; grid-template-columns: repeat(auto-fit, minmax(420px, 1fr)); gap: 1rem; }
 .media video, .media img { width: 100%; height: auto; background: #111; border-radius: 4px; }
-.media img.plot { background: #fff; border: 1px solid #ddd; }
+.media a.plot { grid-column: 1 / -1; }
+.media img.plot { background: #fff; border: 1px solid #ddd; width: auto; max-width: 100%; }
 .missing { color: #a33; }
 .files { font-size: .9rem; }
 .about { color: #444; max-width: 60rem; }
@@ -32,39 +33,49 @@ std::string attr(const std::string& path) {
   return quoted;
 }
 
-void write_media(std::ostream& out, const GalleryEntry& e) {
+using ImageSizes = std::map<std::string, ImageSize>;
+
+/// ` width="W" height="H"` of the image at `path` where its size is known; else nothing.
+std::string size_attrs(const ImageSizes& sizes, const std::string& path) {
+  const auto it = sizes.find(path);
+  if (it == sizes.end()) return {};
+  return " width=\"" + std::to_string(it->second.width) + "\" height=\"" +
+         std::to_string(it->second.height) + "\"";
+}
+
+/// A chart: its image, lazily loaded, at most the size it was drawn at, on a row of its own
+/// (its text at the size it was drawn for), linking the PNG itself.
+void write_chart(std::ostream& out, const ImageSizes& sizes, const std::string& path,
+                 const std::string& alt) {
+  out << "<a class=\"plot\" href=" << attr(path)
+      << "><img class=\"plot\" loading=\"lazy\" src=" << attr(path) << size_attrs(sizes, path)
+      << " alt=\"" << html_escape(alt) << "\"></a>\n";
+}
+
+void write_media(std::ostream& out, const GalleryEntry& e, const ImageSizes& sizes) {
   out << "<div class=\"media\">\n";
   if (!e.video.empty()) {
     out << "<video controls preload=\"metadata\" src=" << attr(e.video);
-    if (!e.poster.empty()) out << " poster=" << attr(e.poster);
+    if (!e.poster.empty()) out << " poster=" << attr(e.poster) << size_attrs(sizes, e.poster);
     out << "></video>\n";
   } else if (!e.poster.empty()) {
-    out << "<img src=" << attr(e.poster) << " alt=\"frame of " << html_escape(e.title) << "\">\n";
+    out << "<img src=" << attr(e.poster) << size_attrs(sizes, e.poster) << " alt=\"frame of "
+        << html_escape(e.title) << "\">\n";
   } else if (e.sweep.empty() && e.report_charts.empty()) {
     out << "<p class=\"missing\">not rendered yet (no " << html_escape(e.name) << ".mp4)</p>\n";
   }
-  if (!e.plot.empty()) {
-    out << "<a href=" << attr(e.plot)
-        << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.plot) << " alt=\"diagnostics of "
-        << html_escape(e.title) << "\"></a>\n";
-  }
-  if (!e.sweep.empty()) {
-    out << "<a href=" << attr(e.sweep)
-        << "><img class=\"plot\" loading=\"lazy\" src=" << attr(e.sweep)
-        << " alt=\"parameter sweep of " << html_escape(e.title) << "\"></a>\n";
-  }
-  for (const auto& chart : e.report_charts) {
-    out << "<a href=" << attr(chart) << "><img class=\"plot\" loading=\"lazy\" src=" << attr(chart)
-        << " alt=\"accuracy report of " << html_escape(e.title) << "\"></a>\n";
-  }
+  if (!e.plot.empty()) write_chart(out, sizes, e.plot, "diagnostics of " + e.title);
+  if (!e.sweep.empty()) write_chart(out, sizes, e.sweep, "parameter sweep of " + e.title);
+  for (const auto& chart : e.report_charts)
+    write_chart(out, sizes, chart, "accuracy report of " + e.title);
   out << "</div>\n";
 }
 
-void write_entry(std::ostream& out, const GalleryEntry& e) {
+void write_entry(std::ostream& out, const GalleryEntry& e, const ImageSizes& sizes) {
   out << "<section class=\"clip\" id=" << attr(e.name) << ">\n<h2>" << html_escape(e.title)
       << "</h2>\n";
   if (!e.description.empty()) out << "<p>" << html_escape(e.description) << "</p>\n";
-  write_media(out, e);
+  write_media(out, e, sizes);
   out << "<p class=\"files\">" << html_escape(e.name);
   if (!e.mp4.empty()) out << " · <a href=" << attr(e.mp4) << ">MP4</a>";
   if (!e.webm.empty()) out << " · <a href=" << attr(e.webm) << ">WebM</a>";
@@ -85,8 +96,8 @@ void write_entry(std::ostream& out, const GalleryEntry& e) {
 /// The phone-toss lab's section (id "phone-lab"): the explorer page's lab panel where there is
 /// one (`lab_page`), then per fitted recording its two tables, then per toss its chart and clip
 /// side by side and a line of links.
-void write_fits(std::ostream& out, const std::vector<GalleryFit>& fits,
-                const std::string& lab_page) {
+void write_fits(std::ostream& out, const std::vector<GalleryFit>& fits, const std::string& lab_page,
+                const ImageSizes& sizes) {
   out << "<section class=\"clip\" id=\"phone-lab\">\n<h2>Phone-toss lab: a measured toss beside "
          "the exact motion</h2>\n<p>A phone's gyroscope recording of tosses (phyphox), each "
          "free flight fitted with the exact torque-free motion (<code>bookspin fit</code>, "
@@ -107,9 +118,7 @@ void write_fits(std::ostream& out, const std::vector<GalleryFit>& fits,
       const std::string what = fit.recording + ", toss " + std::to_string(toss.number);
       out << "<div class=\"media\">\n";
       if (!toss.chart.empty())
-        out << "<a href=" << attr(toss.chart)
-            << "><img class=\"plot\" loading=\"lazy\" src=" << attr(toss.chart)
-            << " alt=\"measured and fitted omega of " << html_escape(what) << "\"></a>\n";
+        write_chart(out, sizes, toss.chart, "measured and fitted omega of " + what);
       if (!toss.video.empty())
         out << "<video controls preload=\"metadata\" src=" << attr(toss.video) << "></video>\n";
       out << "</div>\n<p class=\"files\">toss " << toss.number;
@@ -210,8 +219,8 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
           << attr(header.flipcheck_judge_page) << ">judge a motion</a>.";
     out << "</p>\n</section>\n";
   }
-  if (!header.fits.empty()) write_fits(out, header.fits, header.phone_lab_page);
-  for (const auto& e : entries) write_entry(out, e);
+  if (!header.fits.empty()) write_fits(out, header.fits, header.phone_lab_page, header.image_sizes);
+  for (const auto& e : entries) write_entry(out, e, header.image_sizes);
   out << "</body>\n</html>\n";
   return out.str();
 }

@@ -1,5 +1,6 @@
 #pragma once
 // The gallery page (OUT/index.html): pure text generation, no file access.
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,6 +49,12 @@ struct GalleryFit {
   std::vector<GalleryToss> tosses;
 };
 
+/// An image's size in pixels.
+struct ImageSize {
+  int width = 0;
+  int height = 0;
+};
+
 /// What the page says about how it was made.
 struct GalleryHeader {
   std::string version;   ///< bookspin's version
@@ -67,6 +74,12 @@ struct GalleryHeader {
   /// The phone-toss lab's fits in OUT (one per OUT/<recording>/fit-manifest.json, by name),
   /// shown in a "Phone-toss lab" section after the league; none: no section.
   std::vector<GalleryFit> fits;
+  /// The size of every image the page shows (posters, plots, sweeps, the report's and the
+  /// tosses' charts), by its path as the entries give it: written as the <img>'s width and
+  /// height, so that the page keeps its layout while lazy images load and a chart is shown no
+  /// larger than drawn (its text at the size it was drawn for). An image without its size is
+  /// shown as wide as its column.
+  std::map<std::string, ImageSize> image_sizes;
 };
 
 /// The page's groups, in page order.

@@ -48,8 +48,9 @@ TEST(HeatMap, EveryCellIsWhereItsRowSaysInItsValuesColour) {
                                                        analysis::find_measure("diverged_at")};
   const auto maps = sweep_heat_maps(header, rows, dt, true, every, false, measures);
   ASSERT_EQ(maps.size(), 2u);
-  EXPECT_EQ(maps[0].x_label, "time.dt");
-  EXPECT_EQ(maps[0].y_label, "model.normalize_every");
+  // The keys in words first, as in the CSV second (scene/key_label.hpp).
+  EXPECT_EQ(maps[0].x_label, "time step dt (time units) \u00b7 time.dt");
+  EXPECT_EQ(maps[0].y_label, "steps between normalizations \u00b7 model.normalize_every");
   EXPECT_NE(maps[0].value_label.find("(rad)"), std::string::npos);  // the unit on the bar
 
   const int width = 1400, height = 680;
@@ -79,8 +80,8 @@ TEST(HeatMap, DivergedAtMapsTheTimeAndCountsTheRunsThatFinished) {
   const std::vector<double> x{1, 2}, y{1, 2};
   const std::vector<std::vector<std::string>> rows{
       {"1", "1", ""}, {"1", "2", "5"}, {"2", "1", ""}, {"2", "2", "7"}};
-  const auto maps = sweep_heat_maps({"a", "b", "diverged_at"}, rows, x, false, y, false,
-                                    {analysis::find_measure("diverged_at")});
+  const auto maps = sweep_heat_maps({"time.dt", "initial.jiggle", "diverged_at"}, rows, x, false, y,
+                                    false, {analysis::find_measure("diverged_at")});
   ASSERT_EQ(maps.size(), 1u);
   EXPECT_EQ(maps[0].empty_meaning, "ran to the end");
   EXPECT_EQ(maps[0].diverged, (std::vector<char>{0, 0, 1, 1}));  // j·nx + i
@@ -107,8 +108,8 @@ TEST(HeatMap, ColourBarTicksTellTheirValuesApart) {
 
 // The maps' titles read the measure in words first, its CSV column second.
 TEST(HeatMap, TitlesReadTheMeasureInWordsThenItsColumn) {
-  const auto maps = sweep_heat_maps({"a", "b", "first_flip"}, {{"1", "1", "2"}}, {1}, false, {1},
-                                    false, {analysis::find_measure("first_flip")});
+  const auto maps = sweep_heat_maps({"time.dt", "initial.jiggle", "first_flip"}, {{"1", "1", "2"}},
+                                    {1}, false, {1}, false, {analysis::find_measure("first_flip")});
   ASSERT_EQ(maps.size(), 1u);
   const std::string words(analysis::find_measure("first_flip")->axis_label);
   EXPECT_EQ(maps[0].title.rfind(words, 0), 0u) << maps[0].title;
@@ -116,8 +117,8 @@ TEST(HeatMap, TitlesReadTheMeasureInWordsThenItsColumn) {
 }
 
 TEST(HeatMap, ARowOffTheGridIsAnError) {
-  EXPECT_THROW(sweep_heat_maps({"a", "b", "twist"}, {{"1", "3", "0.5"}}, {1, 2}, false, {1, 2},
-                               false, {analysis::find_measure("twist")}),
+  EXPECT_THROW(sweep_heat_maps({"time.dt", "initial.jiggle", "twist"}, {{"1", "3", "0.5"}}, {1, 2},
+                               false, {1, 2}, false, {analysis::find_measure("twist")}),
                std::invalid_argument);
 }
 

@@ -13,9 +13,11 @@ namespace {
 TEST(SweepPlots, OneLinePerValueOfTheSecondKeyAndTheExactOneDashed) {
   SweepChart chart;
   chart.scene_name = "s";
-  chart.axes = {{"time.dt", 0.01, 0.02, true, {0.01, 0.02}}, {"b.c", 1, 2, false, {1, 2}}};
+  chart.axes = {{"time.dt", 0.01, 0.02, true, {0.01, 0.02}},
+                {"model.normalize_every", 1, 2, false, {1, 2}}};
   chart.measures = {analysis::find_measure("first_flip"), analysis::find_measure("energy_drift")};
-  chart.header = {"time.dt", "b.c", "first_flip", "energy_drift", "first_flip_exact"};
+  chart.header = {"time.dt", "model.normalize_every", "first_flip", "energy_drift",
+                  "first_flip_exact"};
   // Grid order: the first key slowest; one run did not flip (empty cell: NaN, a break).
   chart.rows = {{"0.01", "1", "10", "0.5", "11"},
                 {"0.01", "2", "20", "0.25", "21"},
@@ -24,24 +26,27 @@ TEST(SweepPlots, OneLinePerValueOfTheSecondKeyAndTheExactOneDashed) {
   const std::vector<overlay::PlotSpec> plots = sweep_plots(chart);
   ASSERT_EQ(plots.size(), 2u);
   const overlay::PlotSpec& flips = plots[0];
-  EXPECT_EQ(flips.title, "first_flip (measured: solid; exact model: dashed)");
-  EXPECT_EQ(flips.x_label, "time.dt (log scale)");
+  // The words lead, the keys (as in the CSV and on the command line) follow.
+  EXPECT_EQ(flips.title, std::string(analysis::find_measure("first_flip")->axis_label) +
+                             " \u00b7 first_flip (measured: solid; exact model: dashed)");
+  EXPECT_EQ(flips.x_label, "time step dt (time units) \u00b7 time.dt (log scale)");
   EXPECT_TRUE(flips.log_x);
-  ASSERT_EQ(flips.series.size(), 4u);  // b.c = 1 and 2, each measured then exact
-  EXPECT_EQ(flips.series[0].label, "b.c = 1");
+  ASSERT_EQ(flips.series.size(), 4u);  // 1 and 2 steps, each measured then exact
+  EXPECT_EQ(flips.series[0].label, "steps between normalizations = 1");
   EXPECT_EQ(flips.series[0].x, (std::vector<double>{0.01, 0.02}));
   EXPECT_EQ(flips.series[0].y[0], 10.0);
   EXPECT_TRUE(std::isnan(flips.series[0].y[1]));
   EXPECT_FALSE(flips.series[0].dashed);
-  EXPECT_EQ(flips.series[1].label, "exact, b.c = 1");
+  EXPECT_EQ(flips.series[1].label, "exact, steps between normalizations = 1");
   EXPECT_EQ(flips.series[1].y, (std::vector<double>{11, 12}));
   EXPECT_TRUE(flips.series[1].dashed);
-  EXPECT_EQ(flips.series[2].label, "b.c = 2");
+  EXPECT_EQ(flips.series[2].label, "steps between normalizations = 2");
   EXPECT_EQ(flips.series[2].y, (std::vector<double>{20, 40}));
   EXPECT_EQ(flips.series[3].y, (std::vector<double>{21, 41}));
   // energy_drift has no exact column: measured lines only.
   const overlay::PlotSpec& drift = plots[1];
-  EXPECT_EQ(drift.title, "energy_drift");
+  EXPECT_EQ(drift.title, std::string(analysis::find_measure("energy_drift")->axis_label) +
+                             " \u00b7 energy_drift");
   ASSERT_EQ(drift.series.size(), 2u);
   EXPECT_EQ(drift.series[0].y, (std::vector<double>{0.5, 0.125}));
   EXPECT_EQ(drift.series[1].y, (std::vector<double>{0.25, 1}));

@@ -98,6 +98,23 @@ TEST(SweepShard, ShardsReadBackInAnyOrderAsTheWholeTableAndCrlfReadsAlike) {
   ASSERT_EQ(read.ranges.size(), 2u);
   EXPECT_EQ(read.ranges[1].spec(), table.ranges[1].spec());
   EXPECT_EQ(read.rows, table.rows);
+  EXPECT_EQ(read.scene_title, "");  // none given: none recorded
+}
+
+// The scene's title, which heads the picture, travels in the shard line as one word
+// (percent-encoded spaces, '%' and control bytes; UTF-8 as it is) and reads back byte for byte.
+TEST(SweepShard, TheTitleTravelsAsOneWordAndReadsBackAsWritten) {
+  const test::ScratchDir dir;
+  SweepTable table = two_by_two();
+  table.scene_title = "When to normalize: 100% the book, ω0\tx";
+  const fs::path a = dir.path() / "a.csv", b = dir.path() / "b.csv";
+  output::write_text_file(a, sweep_shard_text(shard_of(table, 0, 2), base_scene(), 4, 0, 2));
+  output::write_text_file(b, sweep_shard_text(shard_of(table, 1, 2), base_scene(), 4, 1, 2));
+  const std::string first = lines_of(a)[0];
+  EXPECT_NE(first.find(" title=When%20to%20normalize:%20100%25%20the%20book,%20ω0%09x"),
+            std::string::npos)
+      << first;
+  EXPECT_EQ(read_sweep_shards({a, b}, nowhere()).scene_title, table.scene_title);
 }
 
 TEST(SweepShard, AMissingShardIsNamedWhereItWouldBe) {

@@ -53,6 +53,26 @@ TEST(PngWriter, RoundTripIsExactAtSeveralCompressionLevels) {
   EXPECT_EQ(dir.entries().size(), 3u);  // no temporaries left behind
 }
 
+// The size from the header alone is the written image's, for RGB and RGBA alike; a file that is
+// no PNG is refused naming it.
+TEST(PngWriter, ReadPngSizeGivesTheWrittenSize) {
+  ScratchDir dir;
+  write_png(dir / "a.png", noise_frame(67, 45, 7));
+  RgbaImage opaque(30, 11);
+  write_png(dir / "b.png", opaque);
+  EXPECT_EQ(read_png_size(dir / "a.png").width, 67);
+  EXPECT_EQ(read_png_size(dir / "a.png").height, 45);
+  EXPECT_EQ(read_png_size(dir / "b.png").width, 30);
+  EXPECT_EQ(read_png_size(dir / "b.png").height, 11);
+  std::ofstream(dir / "not.png") << "not a png";
+  try {
+    read_png_size(dir / "not.png");
+    ADD_FAILURE() << "a file that is no PNG was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("not.png"), std::string::npos) << e.what();
+  }
+}
+
 unsigned char colour_type(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   unsigned char header[26] = {};

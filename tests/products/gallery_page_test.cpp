@@ -61,9 +61,11 @@ TEST(GalleryPage, PaperFiguresFirstThenExactComparisonsOthersAndSweeps) {
 }
 
 TEST(GalleryPage, HeaderSaysWhatAndHowItWasMade) {
-  const GalleryHeader header{
-      "1.2.3", std::string(64, 'a'), "2026-11-22 01:50 UTC", "host <x>, Some CPU, 2 cores", "", "",
-      {}};
+  GalleryHeader header;
+  header.version = "1.2.3";
+  header.build_id = std::string(64, 'a');
+  header.date = "2026-11-22 01:50 UTC";
+  header.machine = "host <x>, Some CPU, 2 cores";
   const std::string html = gallery_html({}, header);
   EXPECT_NE(html.find("figures 3–12 first"), std::string::npos) << html;
   EXPECT_NE(html.find("bookspin 1.2.3 (build aaaaaaaaaaaa)"), std::string::npos) << html;
@@ -105,6 +107,32 @@ TEST(GalleryPage, AnEntryWithoutAClipSaysNotRenderedYetUnlessItHasASweepOrAFrame
       << with_clip;
   EXPECT_NE(with_clip.find("<a href=\"fig03/diagnostics.csv\">diagnostics.csv</a>"),
             std::string::npos);
+}
+
+// A chart is on a row of its own with its size (so it is shown no larger than drawn, and the page
+// keeps its layout while it loads); a poster gives its clip's size; an image of unknown size has
+// none.
+TEST(GalleryPage, ImagesCarryTheirSizesAndAChartHasARowOfItsOwn) {
+  GalleryEntry e;
+  e.name = "fig03";
+  e.title = "Figure 3";
+  e.video = e.mp4 = "fig03.mp4";
+  e.poster = "fig03/poster.png";
+  e.plot = "fig03-plot.png";
+  e.report_charts = {"fig03-accuracy.png"};
+  GalleryHeader header;
+  header.image_sizes = {{"fig03/poster.png", {1280, 720}}, {"fig03-plot.png", {1600, 1000}}};
+  const std::string html = gallery_html({e}, header);
+  EXPECT_NE(html.find("poster=\"fig03/poster.png\" width=\"1280\" height=\"720\"></video>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<a class=\"plot\" href=\"fig03-plot.png\"><img class=\"plot\" "
+                      "loading=\"lazy\" src=\"fig03-plot.png\" width=\"1600\" height=\"1000\" "
+                      "alt=\"diagnostics of Figure 3\"></a>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("src=\"fig03-accuracy.png\" alt="), std::string::npos) << html;
+  EXPECT_NE(html.find(".media a.plot { grid-column: 1 / -1; }"), std::string::npos);
 }
 
 }  // namespace
