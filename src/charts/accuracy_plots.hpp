@@ -76,7 +76,7 @@ AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
                              const std::vector<analysis::EnergyHistory>& histories,
                              double history_flips);
 
-/// The report's five plots drawn, 1400 × 900 pixels each.
+/// The report's five plots drawn, 1280 × 820 pixels each.
 struct AccuracyImages {
   RgbaImage orientation_error_vs_dt;
   RgbaImage work_precision;

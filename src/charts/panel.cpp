@@ -307,11 +307,12 @@ RgbaImage plot_sheet(const std::vector<std::string>& header,
   std::fill(image.pixels.begin(), image.pixels.end(), 255);
   overlay::CairoCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  const double font = std::max(10.0, 0.024 * height);
+  const double font = std::max(15.0, 0.024 * height);
   double y = draw_sheet_header(cr, wrap_sheet_header(cr, header, font, width), font);
   y += 0.6 * font;
   const double each = plots.empty() ? 0 : (height - y) / plots.size();
   std::vector<overlay::PlotSpec> aligned = plots;
+  for (overlay::PlotSpec& p : aligned) p.min_font = std::max(p.min_font, overlay::kChartMinFont);
   overlay::align_left_margins(cr, each, aligned);
   for (std::size_t i = 0; i < aligned.size(); ++i)
     overlay::draw_plot(cr, 0, y + i * each, width, each, aligned[i]);

@@ -15,7 +15,7 @@ namespace bookspin::charts {
 
 namespace {
 
-constexpr int kSheetWidth = 1400;
+constexpr int kSheetWidth = 1280;
 constexpr int kPlotHeightPerMeasure = 330;
 constexpr int kMapHeightPerRow = 560;  ///< two heat maps a row
 

@@ -36,7 +36,7 @@ struct SweepChart {
 /// beside the measured one where the table has the measure's exact column.
 std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart);
 
-/// The sweep's picture, 1400 pixels wide: a header (the sweep and its runs, then one line per
+/// The sweep's picture, 1280 pixels wide: a header (the sweep and its runs, then one line per
 /// range), then for two keys the heat maps (charts::heat_map_sheet, 560 pixels a row of two),
 /// else sweep_plots (330 pixels each). Throws std::invalid_argument for a two-key row whose
 /// values are not on the grid.

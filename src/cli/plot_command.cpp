@@ -18,8 +18,8 @@ struct PlotOptions {
   std::string scene_path;
   std::vector<std::string> overrides;
   std::string out_dir = "out";
-  int width = 1600;     ///< pixels
-  int height = 1000;    ///< pixels
+  int width = 1280;     ///< pixels
+  int height = 800;     ///< pixels
   bool force = false;   ///< plot even when OUT/<scene>/plot-manifest.json says up to date
   bool verify = false;  ///< up-to-date check hashes the PNG (else its size only)
 };

@@ -478,12 +478,15 @@ void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, const Ar
   }
 }
 
-double font_for(double height) { return std::clamp(height / 22.0, 9.0, 18.0); }
+/// A plot's text size (pixels) for its height, at least spec.min_font, at most 18.
+double font_for(double height, const PlotSpec& spec) {
+  return std::clamp(height / 22.0, spec.min_font, std::max(18.0, spec.min_font));
+}
 
 }  // namespace
 
 double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec) {
-  const double font = font_for(height);
+  const double font = font_for(height, spec);
   cairo_save(cr);
   select_overlay_font(cr, false, font);
   const double left = left_margin(cr, spec, fit_y(spec), font);
@@ -498,7 +501,7 @@ void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots
 }
 
 void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec) {
-  const double font = font_for(height);
+  const double font = font_for(height, spec);
   cairo_save(cr);
   if (spec.background_alpha > 0) {
     cairo_rectangle(cr, x, y, width, height);
@@ -518,7 +521,9 @@ RgbaImage plot_image(const PlotSpec& spec, int width, int height) {
   RgbaImage image(width, height);
   std::fill(image.pixels.begin(), image.pixels.end(), 255);
   CairoCanvas canvas(width, height);
-  draw_plot(canvas.cr(), 0, 0, width, height, spec);
+  PlotSpec chart = spec;  // a chart, shown at its own size: its text readable there
+  chart.min_font = std::max(chart.min_font, kChartMinFont);
+  draw_plot(canvas.cr(), 0, 0, width, height, chart);
   canvas.composite_onto(image);
   return image;
 }

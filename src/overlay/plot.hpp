@@ -57,7 +57,15 @@ struct PlotSpec {
   /// Pixels left of the plot area, at least: stacked plots share the largest, so their
   /// time axes line up (see plot_left_margin).
   double left_margin = 0.0;
+  /// The smallest text, pixels (the text grows with the plot's height up to 18): 9 in a
+  /// clip's panel, whose frame size decides what is readable; kChartMinFont in a chart shown
+  /// at its own size (plot_image, charts::plot_sheet).
+  double min_font = 9.0;
 };
+
+/// The smallest text of a chart shown at its own size (a PNG the gallery shows unscaled):
+/// 12 px (docs/outputs.md, "Pictures").
+inline constexpr double kChartMinFont = 12.0;
 
 /// Draws `spec` into the rectangle (x, y, width, height) of `cr` (pixels). Text scales with
 /// the height (height/22, 9 … 18 px).
@@ -70,7 +78,7 @@ double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec);
 /// Sets every plot's left_margin to the largest any of them needs at `height` pixels tall.
 void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots);
 
-/// Draws `spec` on a white width×height image.
+/// Draws `spec` on a white width×height image: a chart, its text at least kChartMinFont.
 RgbaImage plot_image(const PlotSpec& spec, int width, int height);
 
 /// bookspin::palette_colour (common/colour.hpp) as the three channels a Series holds.

@@ -176,8 +176,11 @@ void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
     cairo_stroke(cr);
   }
 
-  // Axis labels last, on top, clamped inside the inset.
+  // Axis labels last, on top, clamped inside the inset with a margin, each on a patch of the
+  // inset's paper so that no curve runs through its letters.
   select_overlay_font(cr, false, 0.85 * font);
+  cairo_font_extents_t fe;
+  cairo_font_extents(cr, &fe);
   for (const auto& axis : spec.axes) {
     double depth = 0;
     const Eigen::Vector2d end =
@@ -190,8 +193,14 @@ void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
     // Place the text's box on the outward side of the anchor.
     double x = anchor.x() - 0.5 * ext.x_advance * (1.0 - out.x());
     double y = anchor.y() + 0.35 * font * (1.0 + out.y());
-    x = std::clamp(x, rect.x + 2, rect.right() - ext.x_advance - 2);
-    y = std::clamp(y, rect.y + title_height(rect) + font, rect.bottom() - 3);
+    const double margin = 0.4 * font;
+    x = std::clamp(x, rect.x + margin, rect.right() - ext.x_advance - margin);
+    y = std::clamp(y, rect.y + title_height(rect) + font, rect.bottom() - margin);
+    cairo_new_path(cr);
+    cairo_rectangle(cr, x - 0.15 * font, y - fe.ascent, ext.x_advance + 0.3 * font,
+                    fe.ascent + fe.descent);
+    cairo_set_source_rgba(cr, 0.98, 0.98, 0.97, 0.8);
+    cairo_fill(cr);
     cairo_set_source_rgba(cr, axis.colour.r, axis.colour.g, axis.colour.b, depth >= 0 ? 1.0 : 0.75);
     cairo_move_to(cr, x, y);
     cairo_show_text(cr, axis.label.c_str());

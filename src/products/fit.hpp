@@ -46,7 +46,7 @@ struct FitJob {
   fit::GyroRecording recording;
   std::filesystem::path out_dir;
   fit::FitRequest request;         ///< --tosses by hand (empty: found), --moments, --drag
-  int width = 1400, height = 700;  ///< each chart's pixels
+  int width = 1280, height = 640;  ///< each chart's pixels
   /// --render: a clip of each toss, its scene made by the command (fit_clip_scene: a bad scene
   /// file or --slow-motion is refused before anything is made).
   std::optional<FitClips> clips;

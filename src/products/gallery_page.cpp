@@ -12,13 +12,16 @@ body { font-family: "DejaVu Sans", sans-serif; margin: 2rem auto; max-width: 140
        background: #f4f4f1; color: #1c1c1c; }
 h1 { font-size: 1.6rem; }
 .clip { background: #fff; border-radius: 8px; box-shadow: 0 1px 4px rgba(0,0,0,.15);
-        margin: 1.5rem 0; padding: 1rem 1.2rem; }
+        margin: 1.5rem 0; padding: 1rem; }
 .clip h2 { font-size: 1.2rem; margin: 0 0 .3rem; }
 .clip p { margin: .2rem 0 .8rem; }
 .media { display: grid; grid-template-columns: repeat(auto-fit, minmax(420px, 1fr)); gap: 1rem; }
-.media video, .media img { width: 100%; height: auto; background: #111; border-radius: 4px; }
+.media video, .media img:not(.plot) { width: 100%; height: auto; background: #111;
+                                      border-radius: 4px; }
+.media video:not([width]) { aspect-ratio: 16 / 9; }
 .media a.plot { grid-column: 1 / -1; }
-.media img.plot { background: #fff; border: 1px solid #ddd; width: auto; max-width: 100%; }
+.media img.plot { background: #fff; border: 1px solid #ddd; border-radius: 4px;
+                  max-width: 100%; height: auto; }
 .missing { color: #a33; }
 .files { font-size: .9rem; }
 .about { color: #444; max-width: 60rem; }

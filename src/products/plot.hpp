@@ -24,8 +24,8 @@ PlotLayout plot_layout(const std::filesystem::path& out_dir, const scene::Scene&
 struct PlotJob {
   scene::Scene scene;  ///< a single or a comparison scene (every tile is plotted)
   std::filesystem::path out_dir;
-  int width = 1600;            ///< pixels
-  int height = 1000;           ///< pixels
+  int width = 1280;            ///< pixels
+  int height = 800;            ///< pixels
   cache::Freshness freshness;  ///< --force, --verify (the PNG's hash) and the remake note
   /// Polled before every frame of the run ("plot frames"): a signal throws Interrupted and the
   /// earlier plot and its manifest stay as they were.

@@ -9,6 +9,9 @@ server (file:// pages may not play media) and checks in Chromium that
     width and height (from ffprobe),
   - every image loads (naturalWidth > 0) and every linked file (MP4, CSV, PNG, poster)
     answers HTTP 200,
+  - at 1366×768 (docs/outputs.md, "Pictures"): the page keeps its height while its lazy images
+    load, every chart (a plot, a sweep's heat maps at their default sizes) is shown at the size
+    its text was drawn for (no smaller), no text is under 12 px and none runs past its box,
 and saves a full-page screenshot as build/test-output/browser/gallery.png.
 
 Usage: gallery_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -37,11 +40,16 @@ def build_gallery(bookspin, source, out):
     for scene in scenes:
         run([bookspin, "render", scene, *size, "--frames", str(FRAMES), "--jobs", "2",
              "-o", out])
-        run([bookspin, "plot", scene, "--set", f"time.frames={FRAMES}", "--width", "640",
-             "--height", "400", "-o", out])
+        # The plot at its default size, as make figures draws it.
+        run([bookspin, "plot", scene, "--set", f"time.frames={FRAMES}", "-o", out])
+    # A two-key sweep (heat maps), small and short.
+    sweep = source / "sweeps" / "when-to-normalize-matrix-euler.toml"
+    run([bookspin, "sweep", sweep, "--set", "time.duration=2", "--vary", "time.dt=0.01:0.02:2",
+         "--vary", "model.normalize_every=1:10:2", "--measure", "orientation_error,diverged_at",
+         "-o", out])
     # Given comparison first: the page puts the paper's figure first all the same.
-    run([bookspin, "gallery", out, *reversed(scenes)])
-    return [s.stem for s in scenes]
+    run([bookspin, "gallery", out, *reversed(scenes), sweep])
+    return [s.stem for s in scenes] + [sweep.stem]
 
 
 def clip_size(mp4):
@@ -65,9 +73,60 @@ return Array.from(document.querySelectorAll('img')).map(i => ({
 """
 
 
+# Every element with text of its own: its computed font size and whether its text runs past
+# its box (a horizontal overflow, or a line wider than the element).
+TEXT_STATE = """
+return Array.from(document.querySelectorAll('body *')).filter(e =>
+    Array.from(e.childNodes).some(n => n.nodeType === 3 && n.textContent.trim())).map(e => ({
+  tag: e.tagName, text: e.textContent.trim().slice(0, 60),
+  size: parseFloat(getComputedStyle(e).fontSize),
+  overflow: e.scrollWidth > e.clientWidth + 1 && getComputedStyle(e).overflowX !== 'visible'
+      || e.getBoundingClientRect().right > document.documentElement.clientWidth + 1}));
+"""
+
+CHART_STATE = """
+return Array.from(document.querySelectorAll('img.plot')).map(i => ({
+  src: i.getAttribute('src'), naturalWidth: i.naturalWidth, naturalHeight: i.naturalHeight,
+  shown: i.getBoundingClientRect().width - 2, shownHeight: i.getBoundingClientRect().height - 2,
+  attr: [i.getAttribute('width'), i.getAttribute('height')]}));
+"""
+
+
+def check_typography(driver, height_before):
+    """The page at 1366×768 once every lazy image has loaded (docs/outputs.md, "Pictures")."""
+    errors = []
+    height_after = driver.execute_script("return document.documentElement.scrollHeight")
+    print(f"page height {height_before} px before its images loaded, {height_after} after")
+    if abs(height_after - height_before) > 2:
+        errors.append(f"the page grows from {height_before} to {height_after} px as its images "
+                      "load (an image without its size)")
+    charts = driver.execute_script(CHART_STATE)
+    if len(charts) < 3:
+        errors.append(f"expected the plots and the sweep's picture, found {charts}")
+    for c in charts:
+        print(f"chart {c['src']}: {c['naturalWidth']}×{c['naturalHeight']}, shown "
+              f"{c['shown']:.1f}×{c['shownHeight']:.1f}")
+        if c["attr"] != [str(c["naturalWidth"]), str(c["naturalHeight"])]:
+            errors.append(f"chart {c['src']}: width and height {c['attr']}, not its size")
+        if c["shown"] < c["naturalWidth"] - 0.5 or c["shownHeight"] < c["naturalHeight"] - 0.5:
+            errors.append(f"chart {c['src']}: shown {c['shown']:.1f} px wide of its "
+                          f"{c['naturalWidth']}: its text smaller than drawn")
+    texts = driver.execute_script(TEXT_STATE)
+    small = [t for t in texts if t["size"] < 12]
+    if small:
+        errors.append(f"text under 12 px: {small[:5]}")
+    over = [t for t in texts if t["overflow"]]
+    if over:
+        errors.append(f"text past its box: {over[:5]}")
+    print(f"{len(texts)} text elements, the smallest {min(t['size'] for t in texts)} px")
+    return errors
+
+
 def check_page(driver, url, out, names, screenshot):
     errors = []
     driver.get(url + "index.html")
+    wait_for(driver, "return document.readyState", lambda s: s == "complete")
+    height_before = driver.execute_script("return document.documentElement.scrollHeight")
     # Lazy images load when near the viewport: scroll through the page once.
     height = driver.execute_script("return document.body.scrollHeight")
     for y in range(0, height + 1000, 500):
@@ -87,8 +146,9 @@ def check_page(driver, url, out, names, screenshot):
 
     videos = wait_for(driver, VIDEO_STATE,
                       lambda vs: all(v["readyState"] >= 1 or v["error"] for v in vs))
-    if len(videos) != len(names):
-        errors.append(f"{len(videos)} <video> elements, expected {len(names)}: {videos}")
+    clips = len(names) - 1  # the sweep has no clip
+    if len(videos) != clips:
+        errors.append(f"{len(videos)} <video> elements, expected {clips}: {videos}")
     for v in videos:
         expected = clip_size(out / v["src"])
         if v["error"]:
@@ -111,6 +171,7 @@ def check_page(driver, url, out, names, screenshot):
         if not i["naturalWidth"]:
             errors.append(f"image {i['src']} did not load (naturalWidth 0)")
     print(f"{len(images)} images checked")
+    errors += check_typography(driver, height_before)
 
     links = driver.execute_script(
         "return Array.from(document.querySelectorAll('a[href]')).map(a => a.getAttribute('href'))"
@@ -118,7 +179,7 @@ def check_page(driver, url, out, names, screenshot):
         ".map(v => v.getAttribute('poster')))")
     links = [h for h in links if not h.startswith(("#", "data:", "http:", "https:"))]
     csvs = [h for h in links if h.endswith(".csv")]
-    if len(csvs) < len(names):
+    if len(csvs) < clips:
         errors.append(f"expected a diagnostics CSV link per scene, found {csvs}")
     for href in links:
         try:
@@ -151,7 +212,7 @@ def main():
     out.mkdir(parents=True)
     names = build_gallery(bookspin, source, out)
 
-    with serve(out) as url, open_browser(chromium, driver_path, size=(1280, 1000),
+    with serve(out) as url, open_browser(chromium, driver_path, size=(1366, 768),
                                          media=True) as driver:
         errors = check_page(driver, url, out, names, root / "gallery.png")
     if errors:

@@ -53,7 +53,7 @@ TEST(SweepPlots, OneLinePerValueOfTheSecondKeyAndTheExactOneDashed) {
 }
 
 TEST(SweepPlots, TheSheetIsAsWideAndTallAsItsParts) {
-  // One key, two measures: 120 pixels of header and 330 a plot, 1400 wide.
+  // One key, two measures: 120 pixels of header and 330 a plot, 1280 wide.
   SweepChart chart;
   chart.scene_name = "s";
   chart.axes = {{"time.dt", 0.01, 0.02, false, {0.01, 0.02}}};
@@ -61,7 +61,7 @@ TEST(SweepPlots, TheSheetIsAsWideAndTallAsItsParts) {
   chart.header = {"time.dt", "first_flip", "energy_drift", "first_flip_exact"};
   chart.rows = {{"0.01", "10", "0.5", "11"}, {"0.02", "20", "0.25", "21"}};
   const RgbaImage sheet = sweep_sheet(chart);
-  EXPECT_EQ(sheet.width, 1400);
+  EXPECT_EQ(sheet.width, 1280);
   EXPECT_EQ(sheet.height, 120 + 2 * 330);
 }
 

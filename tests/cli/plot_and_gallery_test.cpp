@@ -20,8 +20,8 @@ TEST(PlotCommand, WritesAPngOfTheRequestedSize) {
                                    " --set time.frames=60 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.output;
   const RgbaImage image = output::read_png(out / "fig09-matrix-unstable-x-plot.png");
-  EXPECT_EQ(image.width, 1600);
-  EXPECT_EQ(image.height, 1000);
+  EXPECT_EQ(image.width, 1280);
+  EXPECT_EQ(image.height, 800);
   const CliResult small =
       run_bookspin("plot " + scene_path("compare-normalization") +
                    " --set time.frames=30 --width 800 --height 500 -o " + out.string());
