@@ -407,7 +407,6 @@ void ExactRotation::set_precession() {
   psi_kc2_ = (1.0L - k_) * (1.0L + k_);
   psi_S_half_ = 2.0L / 3.0L * boost::math::ellint_rj(0.0L, psi_kc2_, 1.0L, one_minus_n);
   psi_S0_ = periodic_S(u0_, jacobi(u0_), Evaluation::fast);
-  psi_S0_boost_ = periodic_S(u0_, jacobi_boost(u0_), Evaluation::boost);
 }
 
 // S(u) for |u| ≤ K (DLMF 19.25.14, homogeneous form: sin φ = sn u, cos φ = cn u,
@@ -472,14 +471,15 @@ double ExactRotation::precession_angle(double t) const {
   if (case_ == ExactCase::steady) return omega0_.norm() * t;
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  return precession_at(t, jacobi(phase(t)));
+  return static_cast<double>(precession_at(t, jacobi(phase(t)), Evaluation::fast, psi_S0_));
 }
 
-long double ExactRotation::precession_at(double t, const Jacobi& j, Evaluation how) const {
+long double ExactRotation::precession_at(double t, const Jacobi& j, Evaluation how,
+                                         long double S0) const {
   const Real u = phase(t);
   const Real dS = case_ == ExactCase::separatrix
                       ? separatrix_S(u, u0_, lambda_ * static_cast<Real>(t))
-                      : periodic_S(u, j, how) - (how == Evaluation::fast ? psi_S0_ : psi_S0_boost_);
+                      : periodic_S(u, j, how) - S0;
   return psi_rate_ * static_cast<Real>(t) + psi_gain_ * dS;
 }
 
@@ -511,7 +511,7 @@ ExactState ExactRotation::state(double t) const {
     if (parts_ == ExactParts::omega_only)
       throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
     const Jacobi j = jacobi(phase(t));
-    R = orientation_at(t, j);
+    R = orientation_at(t, j, Evaluation::fast, psi_S0_);
     state.omega_body = to_sorted_.transpose() * sorted_omega(j);
   }
   Eigen::Quaterniond q(R);
@@ -532,31 +532,49 @@ Eigen::Matrix3d ExactRotation::orientation(double t) const {
   }
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  return orientation_at(t, jacobi(phase(t)));
+  return orientation_at(t, jacobi(phase(t)), Evaluation::fast, psi_S0_);
 }
 
-Eigen::Matrix3d ExactRotation::orientation_at(double t, const Jacobi& j, Evaluation how) const {
+Eigen::Matrix3d ExactRotation::orientation_at(double t, const Jacobi& j, Evaluation how,
+                                              long double S0) const {
   const Eigen::Vector3d L_sorted = I_.cwiseProduct(sorted_omega(j));
-  return rotation_from(L_sorted, static_cast<double>(precession_at(t, j, how)));
+  return rotation_from(L_sorted, static_cast<double>(precession_at(t, j, how, S0)));
 }
 
-// The evaluation as it was: R(t) and ω(t) each from their own Boost jacobi_elliptic.
-ExactState ExactRotation::state_boost(double t) const {
-  if (case_ == ExactCase::steady) return state(t);
-  if (parts_ == ExactParts::omega_only)
+// The evaluation as it was: S(u0) by Boost once, then per row R(t) and ω(t) each from their own
+// Boost jacobi_elliptic and ψ by Boost's ellint_rj.
+ExactRotation::BoostReference ExactRotation::boost_reference() const {
+  const bool periodic = case_ != ExactCase::steady && case_ != ExactCase::separatrix &&
+                        parts_ == ExactParts::omega_and_orientation;
+  return {*this, periodic ? periodic_S(u0_, jacobi_boost(u0_), Evaluation::boost) : 0.0L};
+}
+
+ExactState ExactRotation::BoostReference::state(double t) const {
+  const ExactRotation& e = *exact_;
+  if (e.case_ == ExactCase::steady) return e.state(t);
+  if (e.parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
   ExactState state;
   state.t = t;
-  const Eigen::Matrix3d R = orientation_at(t, jacobi_boost(phase(t)), Evaluation::boost);
+  const Eigen::Matrix3d R = e.orientation_at(t, e.jacobi_boost(e.phase(t)), Evaluation::boost, S0_);
   Eigen::Quaterniond q(R);
   q.normalize();
   if (q.w() < 0.0) q.coeffs() = -q.coeffs();
   state.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
-  state.omega_body = to_sorted_.transpose() * sorted_omega(jacobi_boost(phase(t)));
+  state.omega_body = e.to_sorted_.transpose() * e.sorted_omega(e.jacobi_boost(e.phase(t)));
   state.omega_world = R * state.omega_body;
-  state.L = R * moments_.cwiseProduct(state.omega_body);
-  state.E = 0.5 * state.omega_body.dot(moments_.cwiseProduct(state.omega_body));
+  state.L = R * e.moments_.cwiseProduct(state.omega_body);
+  state.E = 0.5 * state.omega_body.dot(e.moments_.cwiseProduct(state.omega_body));
   return state;
+}
+
+double ExactRotation::BoostReference::precession_angle(double t) const {
+  const ExactRotation& e = *exact_;
+  if (e.case_ == ExactCase::steady) return e.precession_angle(t);
+  if (e.parts_ == ExactParts::omega_only)
+    throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
+  return static_cast<double>(
+      e.precession_at(t, e.jacobi_boost(e.phase(t)), Evaluation::boost, S0_));
 }
 
 double ExactRotation::period() const {

@@ -84,11 +84,28 @@ class ExactRotation {
   /// frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8), from one Jacobi evaluation
   /// and one R_J. Throws std::logic_error for ExactParts::omega_only.
   ExactState state(double t) const;
-  /// state(t) as evaluated before the per-motion constants: Boost.Math's jacobi_elliptic twice
-  /// (once for R, once for ω) and ellint_rj once, each forming its own constants per call, about
-  /// 4 µs. The reference that tests/physics/exact_solution_test.cpp holds state() against (to an
-  /// ulp or two) and that bookspin-bench times it against. Throws as state().
-  ExactState state_boost(double t) const;
+  /// The evaluation as it was before the per-motion constants (docs/physics.md §8, "How the code
+  /// evaluates ω(t)"): Boost.Math's jacobi_elliptic twice a row (once for R, once for ω) and
+  /// ellint_rj once, each forming its own constants per call, about 4 µs a row. The reference
+  /// that tests/physics/exact_solution_test.cpp holds state() against (to an ulp or two) and that
+  /// bookspin-bench times it against. Built apart, by boost_reference(), so that a motion's
+  /// construction does not pay for Boost's S(u0) (~3 µs); it refers to the motion, which must
+  /// outlive it.
+  class BoostReference {
+   public:
+    /// state(t) by Boost. Throws as state().
+    ExactState state(double t) const;
+    /// precession_angle(t) by Boost. Throws as precession_angle().
+    double precession_angle(double t) const;
+
+   private:
+    friend class ExactRotation;
+    BoostReference(const ExactRotation& exact, long double S0) : exact_(&exact), S0_(S0) {}
+    const ExactRotation* exact_;
+    long double S0_;  ///< S(u0) by Boost's functions
+  };
+  /// This motion's BoostReference: Boost's S(u0), formed here.
+  BoostReference boost_reference() const;
   /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion. Throws
   /// std::logic_error for ExactParts::omega_only.
   double precession_angle(double t) const;
@@ -128,7 +145,7 @@ class ExactRotation {
     std::array<long double, kMaxLevels> one_minus_k{};  ///< 1 − k_{n+1} = 2k'_n/(1 + k'_n)
   };
   /// fast: the Landen chain and carlson_rj (state()); boost: Boost.Math's jacobi_elliptic and
-  /// ellint_rj (state_boost()).
+  /// ellint_rj (BoostReference).
   enum class Evaluation { fast, boost };
   void set_landen_chain();
   Jacobi jacobi_reduced(long double u) const;
@@ -142,11 +159,11 @@ class ExactRotation {
   void set_precession();
   long double periodic_S(long double u, const Jacobi& j, Evaluation how) const;
   long double separatrix_S(long double u, long double u_start, long double du) const;
-  long double precession_at(double t, const Jacobi& j, Evaluation how = Evaluation::fast) const;
+  /// ψ(t) from sn, cn, dn at u(t); S0 = S(u0) as `how` evaluates it.
+  long double precession_at(double t, const Jacobi& j, Evaluation how, long double S0) const;
   Eigen::Matrix3d momentum_frame(const Eigen::Vector3d& L_sorted) const;
   Eigen::Matrix3d rotation_from(const Eigen::Vector3d& L_sorted, double psi) const;
-  Eigen::Matrix3d orientation_at(double t, const Jacobi& j,
-                                 Evaluation how = Evaluation::fast) const;
+  Eigen::Matrix3d orientation_at(double t, const Jacobi& j, Evaluation how, long double S0) const;
 
   Eigen::Vector3d moments_;    ///< body x, y, z
   Eigen::Vector3d omega0_;     ///< body frame
@@ -169,7 +186,6 @@ class ExactRotation {
   long double psi_S_half_ = 0.0L;  ///< S(2K), over one period of sn²
   long double psi_kc2_ = 0.0L;  ///< (1 − k)(1 + k) of k as stored: the modulus Boost's sn, cn see
   long double psi_S0_ = 0.0L;   ///< S(u0) (off the separatrix)
-  long double psi_S0_boost_ = 0.0L;  ///< S(u0) by Boost's functions, for state_boost()
 };
 
 }  // namespace bookspin::physics

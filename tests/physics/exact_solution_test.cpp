@@ -185,8 +185,8 @@ TEST(ExactSolution, StateConservesEnergyAndMomentumWithinFourUlpsOnRandomBodies)
   std::printf("[ measured ] worst E %.2f ulps, worst |L| %.2f ulps\n", worst_E, worst_L);
 }
 
-// state() (the Landen chain and one-arctangent R_J from per-motion constants) against
-// state_boost() (Boost's jacobi_elliptic and ellint_rj, as evaluated before), on 1,000 random
+// state() (the Landen chain and one-arctangent R_J from per-motion constants) against the
+// BoostReference (Boost's jacobi_elliptic and ellint_rj, as evaluated before), on 1,000 random
 // bodies, the scenarios above and bodies within 1e-2…1e-12 of the separatrix, t up to 200:
 // ω and E to 2 ulps of their size, L to 4; R(t) to 4 ulps of 1 + |ψ| (one ulp of a ψ of a
 // few hundred radians turns q by more than one of its own).
@@ -207,9 +207,10 @@ TEST(ExactSolution, StateEqualsBoostsEvaluationToAFewUlps) {
   double worst[4] = {0.0, 0.0, 0.0, 0.0};  // ω, E, L, q in those units
   for (const Scenario& b : bodies) {
     const ExactRotation exact(b.moments, b.omega0);
+    const ExactRotation::BoostReference boost = exact.boost_reference();
     for (int n = 0; n < 20; ++n) {
       const double t = time(engine);
-      const ExactState fast = exact.state(t), reference = exact.state_boost(t);
+      const ExactState fast = exact.state(t), reference = boost.state(t);
       const double w = reference.omega_body.norm(),
                    turn = 1.0 + std::abs(exact.precession_angle(t));
       const double ulps[4] = {(fast.omega_body - reference.omega_body).norm() / (eps * w),
