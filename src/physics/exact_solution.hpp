@@ -4,6 +4,7 @@
 // of the body about the fixed angular momentum.
 #include <Eigen/Dense>
 #include <array>
+#include <vector>
 
 namespace bookspin::physics {
 
@@ -76,8 +77,9 @@ class ExactRotation {
   /// Body-frame angular momentum I ω(t).
   Eigen::Vector3d angular_momentum_body(double t) const;
   /// R(t), 3×3 rotation taking body coordinates to world coordinates; R(0) = I and
-  /// R(t)·I·ω(t) = L (world). About half a µs per call: one long-double Jacobi evaluation and
-  /// one R_J from the motion's constants (docs/physics.md §8, "How the code evaluates ω(t)").
+  /// R(t)·I·ω(t) = L (world). About 0.4 µs per call: one long-double Jacobi evaluation and one
+  /// short R_J from the nearest base point of the motion's table (docs/physics.md §8, "How the
+  /// code evaluates ω(t)", "S from a base point").
   /// Throws std::logic_error for ExactParts::omega_only.
   Eigen::Matrix3d orientation(double t) const;
   /// Everything at time `t`: R(t) as a unit quaternion with w ≥ 0, ω in the body and the world
@@ -157,7 +159,9 @@ class ExactRotation {
   long double phase(double t) const { return lambda_ * static_cast<long double>(t) + u0_; }
   Eigen::Vector3d sorted_omega(const Jacobi& j) const;
   void set_precession();
+  long double half_periods(long double u, const Jacobi& j, long double& sn, long double& cn) const;
   long double periodic_S(long double u, const Jacobi& j, Evaluation how) const;
+  long double table_S(long double u, const Jacobi& j) const;
   long double separatrix_S(long double u, long double u_start, long double du) const;
   /// ψ(t) from sn, cn, dn at u(t); S0 = S(u0) as `how` evaluates it.
   long double precession_at(double t, const Jacobi& j, Evaluation how, long double S0) const;
@@ -186,6 +190,13 @@ class ExactRotation {
   long double psi_S_half_ = 0.0L;  ///< S(2K), over one period of sn²
   long double psi_kc2_ = 0.0L;  ///< (1 − k)(1 + k) of k as stored: the modulus Boost's sn, cn see
   long double psi_S0_ = 0.0L;   ///< S(u0) (off the separatrix)
+  /// A base point b of table_S: sn, cn, dn and S at b.
+  struct BasePoint {
+    long double sn, cn, dn, S;
+  };
+  std::vector<BasePoint> psi_base_;      ///< b_i = i K/N, i = 0…N
+  long double psi_inverse_step_ = 0.0L;  ///< N/K
+  long double psi_rho2_ = 0.0L;          ///< ρ² = −n (k² − n)(1 − n)
 };
 
 }  // namespace bookspin::physics
