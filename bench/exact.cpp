@@ -1,6 +1,6 @@
 // Bench section: the exact motion's evaluation per row (docs/physics.md §8, "How the code
 // evaluates ω(t)"): ExactRotation::state(), from constants formed once per motion, against
-// state_boost(), the evaluation as it was (Boost's jacobi_elliptic twice and ellint_rj once a
+// its BoostReference, the evaluation as it was (Boost's jacobi_elliptic twice and ellint_rj once a
 // row), both timed in this run on the same rows; and jobs::exact_motion_at, what
 // bookspin.exact_motion runs beneath Python, per row.
 #include <algorithm>
@@ -57,11 +57,12 @@ void bench_exact(const BenchContext& context) {
   for (long n = 0; n < kRows; ++n) times[n] = 0.01 * static_cast<double>(n);
   for (const Motion& m : kMotions) {
     const physics::ExactRotation exact(m.moments, m.omega0);
-    const double before = best_us_per_row([&](double t) { return exact.state_boost(t).q[0]; });
+    const physics::ExactRotation::BoostReference boost = exact.boost_reference();
+    const double before = best_us_per_row([&](double t) { return boost.state(t).q[0]; });
     const double now = best_us_per_row([&](double t) { return exact.state(t).q[0]; });
     const std::string name = m.name;
     report.add({"exact", name + ": state(), per-motion constants", now, "us/row", note});
-    report.add({"exact", name + ": state_boost(), as before", before, "us/row", note});
+    report.add({"exact", name + ": Boost, as before", before, "us/row", note});
     report.add({"exact", name + ": before / now", before / now, "x", note});
     worst_now = std::max(worst_now, now);
     worst_before = std::max(worst_before, before);
@@ -80,7 +81,7 @@ void bench_exact(const BenchContext& context) {
   report.add({"exact", std::string(book.name) + ": jobs::exact_motion_at (Python's work)", at,
               "us/row", note});
   report.add({"exact", "slowest motion: state()", worst_now, "us/row", note});
-  report.add({"exact", "slowest motion: state_boost(), as before", worst_before, "us/row", note});
+  report.add({"exact", "slowest motion: Boost, as before", worst_before, "us/row", note});
   report.add({"exact", "least speed-up", worst_ratio, "x", note});
   if (!std::isfinite(rows_checksum)) report.remark("exact: a row was not finite");
 }

@@ -53,7 +53,8 @@ void bench_resolution(const BenchContext& context);
 /// ns per step and accuracy of every model × integrator, and of MuJoCo's mj_step.
 void bench_physics(const BenchContext& context);
 /// µs per row of the exact motion (ExactRotation::state) against its evaluation as it was
-/// (state_boost), on the same rows in this run, and of jobs::exact_motion_at (Python's work).
+/// (ExactRotation::BoostReference), on the same rows in this run, and of jobs::exact_motion_at
+/// (Python's work).
 void bench_exact(const BenchContext& context);
 /// ns per step of the explorer page's methods natively (`rounds` timings, the best kept), the
 /// loop of web/bindings.cpp's Session::step; bench/explorer_bench.py pairs them with the page's.

@@ -155,36 +155,47 @@ py::array_t<double> new_array(std::size_t n, std::size_t columns) {
   return py::array_t<double>({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(columns)});
 }
 
-py::dict exact_rows_arrays(const std::vector<jobs::ExactMotionRow>& rows, bool with_t) {
-  const std::size_t n = rows.size();
-  py::array_t<double> t = new_array(n), q = new_array(n, 4), omega_body = new_array(n, 3),
-                      omega_world = new_array(n, 3), L_world = new_array(n, 3), E = new_array(n);
-  auto t_ = t.mutable_unchecked<1>();
-  auto q_ = q.mutable_unchecked<2>();
-  auto wb = omega_body.mutable_unchecked<2>();
-  auto ww = omega_world.mutable_unchecked<2>();
-  auto L = L_world.mutable_unchecked<2>();
-  auto e = E.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < n; ++i) {
-    const jobs::ExactMotionRow& row = rows[i];
-    const auto r = static_cast<py::ssize_t>(i);
-    t_(r) = row.t;
-    for (int k = 0; k < 4; ++k) q_(r, k) = row.q[k];
-    for (int k = 0; k < 3; ++k) {
-      wb(r, k) = row.omega_body[k];
-      ww(r, k) = row.omega_world[k];
-      L(r, k) = row.L[k];
-    }
-    e(r) = row.E;
+ExactArrays::ExactArrays(std::size_t n, bool with_t)
+    : with_t_(with_t),
+      t_(new_array(with_t ? n : 0)),
+      q_(new_array(n, 4)),
+      omega_body_(new_array(n, 3)),
+      omega_world_(new_array(n, 3)),
+      L_world_(new_array(n, 3)),
+      E_(new_array(n)),
+      t_data_(t_.mutable_data()),
+      q_data_(q_.mutable_data()),
+      omega_body_data_(omega_body_.mutable_data()),
+      omega_world_data_(omega_world_.mutable_data()),
+      L_world_data_(L_world_.mutable_data()),
+      E_data_(E_.mutable_data()) {}
+
+void ExactArrays::set(std::size_t i, const jobs::ExactMotionRow& row) {
+  if (with_t_) t_data_[i] = row.t;
+  for (int k = 0; k < 4; ++k) q_data_[4 * i + k] = row.q[k];
+  for (int k = 0; k < 3; ++k) {
+    omega_body_data_[3 * i + k] = row.omega_body[k];
+    omega_world_data_[3 * i + k] = row.omega_world[k];
+    L_world_data_[3 * i + k] = row.L[k];
   }
+  E_data_[i] = row.E;
+}
+
+py::dict ExactArrays::dict() const {
   py::dict out;
-  if (with_t) out["t"] = t;
-  out["q"] = q;
-  out["omega_body"] = omega_body;
-  out["omega_world"] = omega_world;
-  out["L_world"] = L_world;
-  out["E"] = E;
+  if (with_t_) out["t"] = t_;
+  out["q"] = q_;
+  out["omega_body"] = omega_body_;
+  out["omega_world"] = omega_world_;
+  out["L_world"] = L_world_;
+  out["E"] = E_;
   return out;
+}
+
+py::dict exact_rows_arrays(const std::vector<jobs::ExactMotionRow>& rows, bool with_t) {
+  ExactArrays arrays(rows.size(), with_t);
+  for (std::size_t i = 0; i < rows.size(); ++i) arrays.set(i, rows[i]);
+  return arrays.dict();
 }
 
 }  // namespace bookspin::python

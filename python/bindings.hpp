@@ -60,6 +60,20 @@ py::array_t<double> new_array(std::size_t n, std::size_t columns = 0);
 
 /// Exact-motion rows as arrays: `q` (N, 4) w, x, y, z, `omega_body`, `omega_world`, `L_world`
 /// (N, 3) and `E` (N,), and with `with_t` their times `t` (N,) too (jobs/exact_motion.hpp).
+/// Made with the GIL held; set() writes one row through raw pointers, so it may run without it.
+class ExactArrays {
+ public:
+  ExactArrays(std::size_t n, bool with_t);
+  void set(std::size_t i, const jobs::ExactMotionRow& row);
+  py::dict dict() const;
+
+ private:
+  bool with_t_;
+  py::array_t<double> t_, q_, omega_body_, omega_world_, L_world_, E_;
+  double *t_data_, *q_data_, *omega_body_data_, *omega_world_data_, *L_world_data_, *E_data_;
+};
+
+/// `rows` as ExactArrays' dict.
 py::dict exact_rows_arrays(const std::vector<jobs::ExactMotionRow>& rows, bool with_t);
 
 /// A scene given as a path (os.PathLike, or a str that names a file or holds neither a newline

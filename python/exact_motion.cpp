@@ -39,13 +39,17 @@ py::dict exact_motion(const py::object& moments_arg, const py::object& omega0_ar
   const Eigen::Vector3d moments = vector3_arg(moments_arg, "moments");
   const Eigen::Vector3d omega0 = vector3_arg(omega0_arg, "omega0");
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
-  std::vector<jobs::ExactMotionRow> rows;
+  // The rows go straight into the arrays (no vector of rows to copy: docs/performance.md, "The
+  // exact motion per row").
+  ExactArrays arrays(t.size(), false);
   {
     const StopPoll stop = python_stop();
     py::gil_scoped_release release;
-    rows = jobs::exact_motion_at(moments, omega0, t, stop);
+    jobs::exact_motion_each(
+        moments, omega0, t, stop,
+        [&arrays](std::size_t i, const jobs::ExactMotionRow& row) { arrays.set(i, row); });
   }
-  return exact_rows_arrays(rows, false);
+  return arrays.dict();
 }
 
 }  // namespace

@@ -28,10 +28,9 @@ std::string value_text(double value) {
 
 }  // namespace
 
-std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
-                                            const Eigen::Vector3d& omega0_body,
-                                            const std::vector<double>& times,
-                                            const StopPoll& stop) {
+void exact_motion_each(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
+                       const std::vector<double>& times, const StopPoll& stop,
+                       const std::function<void(std::size_t, const ExactMotionRow&)>& row) {
   for (int i = 0; i < 3; ++i) {
     if (!(std::isfinite(moments[i]) && moments[i] > 0.0))
       throw InputError("moments[" + std::to_string(i) + "]: " + value_text(moments[i]) +
@@ -50,18 +49,27 @@ std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
       throw InputError("t[" + std::to_string(n) + "]: " + value_text(times[n]) +
                        " is not a finite time");
   const physics::ExactRotation exact(moments, omega0_body);
-  std::vector<ExactMotionRow> rows;
-  rows.reserve(times.size());
   for (std::size_t n = 0; n < times.size(); ++n) {
     if (n % 4096 == 0) stop_if_asked(stop, "exact motion");
-    rows.push_back(exact.state(times[n]));
-    if (!finite(rows.back()))
+    const ExactMotionRow state = exact.state(times[n]);
+    if (!finite(state))
       throw InputError("moments (" + value_text(moments[0]) + ", " + value_text(moments[1]) + ", " +
                        value_text(moments[2]) + ") and omega0 (" + value_text(omega0_body[0]) +
                        ", " + value_text(omega0_body[1]) + ", " + value_text(omega0_body[2]) +
                        "): the motion at t[" + std::to_string(n) + "] = " + value_text(times[n]) +
                        " overflows a double (its energy ½ ω·Iω or |L| is beyond 1.8e308)");
+    row(n, state);
   }
+}
+
+std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
+                                            const Eigen::Vector3d& omega0_body,
+                                            const std::vector<double>& times,
+                                            const StopPoll& stop) {
+  std::vector<ExactMotionRow> rows;
+  rows.reserve(times.size());
+  exact_motion_each(moments, omega0_body, times, stop,
+                    [&rows](std::size_t, const ExactMotionRow& state) { rows.push_back(state); });
   return rows;
 }
 

@@ -2,6 +2,8 @@
 // Physics only: a conformance scenario's start and its exact motion at every step (`bookspin
 // flipcheck export`, docs/flipcheck.md; docs/physics.md §8), as a value the product writes.
 #include <Eigen/Core>
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,14 @@ std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
                                             const Eigen::Vector3d& omega0_body,
                                             const std::vector<double>& times,
                                             const StopPoll& stop = {});
+
+/// exact_motion_at's rows handed to `row(n, state)` one at a time, in the order of `times`, as
+/// they are made (the same checks and throws; rows before a throw have been handed over): for a
+/// caller that stores them elsewhere (bookspin.exact_motion writes them straight into its numpy
+/// arrays, docs/performance.md, "The exact motion per row").
+void exact_motion_each(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
+                       const std::vector<double>& times, const StopPoll& stop,
+                       const std::function<void(std::size_t, const ExactMotionRow&)>& row);
 
 /// What an engine needs to run a scenario, and the exact answer.
 struct ExactMotion {

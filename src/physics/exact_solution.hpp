@@ -4,6 +4,7 @@
 // of the body about the fixed angular momentum.
 #include <Eigen/Dense>
 #include <array>
+#include <vector>
 
 namespace bookspin::physics {
 
@@ -76,19 +77,37 @@ class ExactRotation {
   /// Body-frame angular momentum I ω(t).
   Eigen::Vector3d angular_momentum_body(double t) const;
   /// R(t), 3×3 rotation taking body coordinates to world coordinates; R(0) = I and
-  /// R(t)·I·ω(t) = L (world). About half a µs per call: one long-double Jacobi evaluation and
-  /// one R_J from the motion's constants (docs/physics.md §8, "How the code evaluates ω(t)").
+  /// R(t)·I·ω(t) = L (world). About 0.4 µs per call: one long-double Jacobi evaluation and one
+  /// short R_J from the nearest base point of the motion's table (docs/physics.md §8, "How the
+  /// code evaluates ω(t)", "S from a base point").
   /// Throws std::logic_error for ExactParts::omega_only.
   Eigen::Matrix3d orientation(double t) const;
   /// Everything at time `t`: R(t) as a unit quaternion with w ≥ 0, ω in the body and the world
   /// frame, L = R(t)·I_body·ω (world) and E (docs/physics.md §8), from one Jacobi evaluation
   /// and one R_J. Throws std::logic_error for ExactParts::omega_only.
   ExactState state(double t) const;
-  /// state(t) as evaluated before the per-motion constants: Boost.Math's jacobi_elliptic twice
-  /// (once for R, once for ω) and ellint_rj once, each forming its own constants per call, about
-  /// 4 µs. The reference that tests/physics/exact_solution_test.cpp holds state() against (to an
-  /// ulp or two) and that bookspin-bench times it against. Throws as state().
-  ExactState state_boost(double t) const;
+  /// The evaluation as it was before the per-motion constants (docs/physics.md §8, "How the code
+  /// evaluates ω(t)"): Boost.Math's jacobi_elliptic twice a row (once for R, once for ω) and
+  /// ellint_rj once, each forming its own constants per call, about 4 µs a row. The reference
+  /// that tests/physics/exact_solution_test.cpp holds state() against (to an ulp or two) and that
+  /// bookspin-bench times it against. Built apart, by boost_reference(), so that a motion's
+  /// construction does not pay for Boost's S(u0) (~3 µs); it refers to the motion, which must
+  /// outlive it.
+  class BoostReference {
+   public:
+    /// state(t) by Boost. Throws as state().
+    ExactState state(double t) const;
+    /// precession_angle(t) by Boost. Throws as precession_angle().
+    double precession_angle(double t) const;
+
+   private:
+    friend class ExactRotation;
+    BoostReference(const ExactRotation& exact, long double S0) : exact_(&exact), S0_(S0) {}
+    const ExactRotation* exact_;
+    long double S0_;  ///< S(u0) by Boost's functions
+  };
+  /// This motion's BoostReference: Boost's S(u0), formed here.
+  BoostReference boost_reference() const;
   /// Precession angle ψ(t) about L (radians, ψ(0) = 0); |ω0|·t for steady motion. Throws
   /// std::logic_error for ExactParts::omega_only.
   double precession_angle(double t) const;
@@ -128,7 +147,7 @@ class ExactRotation {
     std::array<long double, kMaxLevels> one_minus_k{};  ///< 1 − k_{n+1} = 2k'_n/(1 + k'_n)
   };
   /// fast: the Landen chain and carlson_rj (state()); boost: Boost.Math's jacobi_elliptic and
-  /// ellint_rj (state_boost()).
+  /// ellint_rj (BoostReference).
   enum class Evaluation { fast, boost };
   void set_landen_chain();
   Jacobi jacobi_reduced(long double u) const;
@@ -140,13 +159,15 @@ class ExactRotation {
   long double phase(double t) const { return lambda_ * static_cast<long double>(t) + u0_; }
   Eigen::Vector3d sorted_omega(const Jacobi& j) const;
   void set_precession();
+  long double half_periods(long double u, const Jacobi& j, long double& sn, long double& cn) const;
   long double periodic_S(long double u, const Jacobi& j, Evaluation how) const;
+  long double table_S(long double u, const Jacobi& j) const;
   long double separatrix_S(long double u, long double u_start, long double du) const;
-  long double precession_at(double t, const Jacobi& j, Evaluation how = Evaluation::fast) const;
+  /// ψ(t) from sn, cn, dn at u(t); S0 = S(u0) as `how` evaluates it.
+  long double precession_at(double t, const Jacobi& j, Evaluation how, long double S0) const;
   Eigen::Matrix3d momentum_frame(const Eigen::Vector3d& L_sorted) const;
   Eigen::Matrix3d rotation_from(const Eigen::Vector3d& L_sorted, double psi) const;
-  Eigen::Matrix3d orientation_at(double t, const Jacobi& j,
-                                 Evaluation how = Evaluation::fast) const;
+  Eigen::Matrix3d orientation_at(double t, const Jacobi& j, Evaluation how, long double S0) const;
 
   Eigen::Vector3d moments_;    ///< body x, y, z
   Eigen::Vector3d omega0_;     ///< body frame
@@ -169,7 +190,13 @@ class ExactRotation {
   long double psi_S_half_ = 0.0L;  ///< S(2K), over one period of sn²
   long double psi_kc2_ = 0.0L;  ///< (1 − k)(1 + k) of k as stored: the modulus Boost's sn, cn see
   long double psi_S0_ = 0.0L;   ///< S(u0) (off the separatrix)
-  long double psi_S0_boost_ = 0.0L;  ///< S(u0) by Boost's functions, for state_boost()
+  /// A base point b of table_S: sn, cn, dn and S at b.
+  struct BasePoint {
+    long double sn, cn, dn, S;
+  };
+  std::vector<BasePoint> psi_base_;      ///< b_i = i K/N, i = 0…N
+  long double psi_inverse_step_ = 0.0L;  ///< N/K
+  long double psi_rho2_ = 0.0L;          ///< ρ² = −n (k² − n)(1 − n)
 };
 
 }  // namespace bookspin::physics

@@ -217,7 +217,7 @@ TEST(Bench, ExactSectionTimesTheEvaluationAgainstTheOldOneOnTheSameRows) {
         "(2, 1, 3), k' = 3e-6 (near the separatrix)"}) {
     const std::string name = motion;
     const double now = csv_value(run.csv, name + ": state(), per-motion constants", "exact");
-    const double before = csv_value(run.csv, name + ": state_boost(), as before", "exact");
+    const double before = csv_value(run.csv, name + ": Boost, as before", "exact");
     ASSERT_GT(now, 0.0) << name << "\n" << run.csv;
     ASSERT_GT(before, 0.0) << name << "\n" << run.csv;
     // The ratio is the two rows' (no timed assertion: the machine may be busy).

@@ -10,6 +10,11 @@ Not run by the tests (minutes per motion); run it to regenerate the table:
 
 Each pair of arguments is the principal moments (body x, y, z) and ω0 (body frame); each output
 line one row of the test's table, ψ at t = 0.7, 13.1, 104.4, 1234.5.
+
+With --quarter first, the rows of ExactSolutionPrecession.MatchesMpmathNearTheQuarterPeriod
+instead: t where u = λt + u0 is at the multiples QUARTER of K (after two half periods, mostly
+near |sn u| = 1, where the code takes S(u) from the base point nearest K; t rounded to a double
+and printed exactly), ψ there.
 """
 import sys
 
@@ -17,6 +22,7 @@ import mpmath as mp
 
 mp.mp.dps = 40
 TIMES = ["0.7", "13.1", "104.4", "1234.5"]
+QUARTER = ["4.5", "4.9", "4.97", "4.99", "4.999", "4.999999", "5", "5.000001", "5.01", "5.5", "6.7"]
 
 
 def precession(I, w):
@@ -68,11 +74,24 @@ def precession(I, w):
         points.append(u)
         return mp.quad(rate, points) / lam
 
+    psi.time_at = lambda f: (f * K - u0) / lam  # t where u = f K
     return psi
 
 
 def main(args):
+    quarter = bool(args) and args[0] == "--quarter"
+    if quarter:
+        args = args[1:]
     for I, w in zip(args[0::2], args[1::2]):
+        if quarter:
+            psi = precession([float(x) for x in I.split()], [float(x) for x in w.split()])
+            rows = []
+            for f in QUARTER:
+                t = float(psi.time_at(mp.mpf(f)))  # the double the test evaluates at
+                rows.append(f"{{{t!r}, {mp.nstr(psi(mp.mpf(t)), 22)}}}")
+            print(f'{{"({I.replace(" ", ", ")}) ω0 ({w.replace(" ", ", ")})", {{{I.replace(" ", ", ")}}}, '
+                  f'{{{w.replace(" ", ", ")}}}, {{{", ".join(rows)}}}}},', flush=True)
+            continue
         psi = precession([float(x) for x in I.split()], [float(x) for x in w.split()])
         values = ", ".join(mp.nstr(psi(mp.mpf(t)), 22) for t in TIMES)
         print(f'{{"({I.replace(" ", ", ")}) ω0 ({w.replace(" ", ", ")})", {{{I.replace(" ", ", ")}}}, '

@@ -185,8 +185,8 @@ TEST(ExactSolution, StateConservesEnergyAndMomentumWithinFourUlpsOnRandomBodies)
   std::printf("[ measured ] worst E %.2f ulps, worst |L| %.2f ulps\n", worst_E, worst_L);
 }
 
-// state() (the Landen chain and one-arctangent R_J from per-motion constants) against
-// state_boost() (Boost's jacobi_elliptic and ellint_rj, as evaluated before), on 1,000 random
+// state() (the Landen chain and R_J from per-motion constants) against the BoostReference
+// (Boost's jacobi_elliptic and ellint_rj, as evaluated before), on 1,000 random
 // bodies, the scenarios above and bodies within 1e-2…1e-12 of the separatrix, t up to 200:
 // ω and E to 2 ulps of their size, L to 4; R(t) to 4 ulps of 1 + |ψ| (one ulp of a ψ of a
 // few hundred radians turns q by more than one of its own).
@@ -207,9 +207,10 @@ TEST(ExactSolution, StateEqualsBoostsEvaluationToAFewUlps) {
   double worst[4] = {0.0, 0.0, 0.0, 0.0};  // ω, E, L, q in those units
   for (const Scenario& b : bodies) {
     const ExactRotation exact(b.moments, b.omega0);
+    const ExactRotation::BoostReference boost = exact.boost_reference();
     for (int n = 0; n < 20; ++n) {
       const double t = time(engine);
-      const ExactState fast = exact.state(t), reference = exact.state_boost(t);
+      const ExactState fast = exact.state(t), reference = boost.state(t);
       const double w = reference.omega_body.norm(),
                    turn = 1.0 + std::abs(exact.precession_angle(t));
       const double ulps[4] = {(fast.omega_body - reference.omega_body).norm() / (eps * w),
@@ -664,12 +665,112 @@ TEST(ExactSolutionPrecession, MatchesMpmath) {
        {1.061602562167217018665, 19.86713366341506134931, 158.3304392717963667838,
         1872.211947136327727917}},
   };
+  double worst = 0.0;
   for (const Reference& r : references) {
     const ExactRotation exact(r.moments, r.omega0);
-    for (std::size_t i = 0; i < times.size(); ++i)
+    for (std::size_t i = 0; i < times.size(); ++i) {
       EXPECT_NEAR(exact.precession_angle(times[i]), r.psi[i], 1e-12 * std::abs(r.psi[i]))
           << r.name << " t = " << times[i];
+      worst = std::max(worst, std::abs(exact.precession_angle(times[i]) / r.psi[i] - 1.0));
+    }
   }
+  std::printf("[ measured ] psi against mpmath: largest relative difference %.2g\n", worst);
+}
+
+// ψ where u = λt + u0 is near a quarter period K (|sn u| near 1), after two half periods:
+// u = 4.5 K … 6.7 K, 10⁻⁶ K either side of 5K and at it, for k' = 2e-3 and far from the
+// separatrix. There S(u) comes from the base point nearest K (docs/physics.md §8, "S from a base
+// point"). Against mpmath at 40 digits (tests/physics/exact_mpmath_reference.py --quarter, ψ at
+// the double t it prints): within 4 ulps of |ψ|. Closer to the separatrix the comparison is
+// limited by k's own rounding in long double (k' = 3e-6: 1.1e-13 relative, before and after alike),
+// so NearTheQuarterPeriodEqualsBoostsEvaluation holds those rows against Boost's evaluation.
+TEST(ExactSolutionPrecession, MatchesMpmathNearTheQuarterPeriod) {
+  struct Reference {
+    const char* name;
+    Vector3d moments, omega0;
+    std::vector<std::array<double, 2>> rows;  // {t, ψ(t)}
+  };
+  const std::vector<Reference> references{
+      {"(2, 1, 3) ω0 (1, 1e-3, 2e-3)",
+       {2, 1, 3},
+       {1, 1e-3, 2e-3},
+       {{42.49702258562066, 46.68523655440161494124},
+        {47.41263972369309, 51.60158571568515279311},
+        {48.272872722855766, 52.46182330495867964025},
+        {48.51865357975939, 52.70760531347905468972},
+        {48.629254965366016, 52.81820721118299535987},
+        {48.64153171916835, 52.83048402176574998826},
+        {48.6415440082112, 52.83049631086543668},
+        {48.64155629725404, 52.83050859996511626627},
+        {48.76443443666301, 52.95338730825181867028},
+        {54.78606543080173, 58.97575606732925131272},
+        {69.532916845019, 75.81629250011804012435}}},
+      {"(2, 1, 3) ω0 (0.3, -0.5, 0.7)",
+       {2, 1, 3},
+       {0.3, -0.5, 0.7},
+       {{9.65673453957137, 14.26233761028560682211},
+        {10.582411485926754, 15.36879827672410354975},
+        {10.744404951538947, 15.55073530117389745157},
+        {10.790688798856715, 15.60259784723743219378},
+        {10.811516530149712, 15.62593095455547212308},
+        {10.813828408323234, 15.62852087775938677303},
+        {10.8138307225156, 15.62852347027463624373},
+        {10.813833036707965, 15.62852606278988372443},
+        {10.836972646174486, 15.6544490933118402937},
+        {11.97092690545983, 16.99470933026366574421},
+        {14.747957744525982, 21.68095027249119904213}}},
+  };
+  const double eps = std::numeric_limits<double>::epsilon();
+  double worst = 0.0;
+  for (const Reference& r : references) {
+    const ExactRotation exact(r.moments, r.omega0);
+    for (const auto& [t, psi] : r.rows) {
+      const double ulps = std::abs(exact.precession_angle(t) - psi) / (eps * std::abs(psi));
+      EXPECT_LE(ulps, 4.0) << r.name << " t = " << t;
+      worst = std::max(worst, ulps);
+    }
+  }
+  std::printf("[ measured ] worst psi near the quarter period: %.2f ulps of |psi|\n", worst);
+}
+
+// ψ where u = λt + u0 is near a quarter period K (|sn u| near 1), where S(u) comes from the
+// base point nearest K (docs/physics.md §8, "S from a base point") and before the duplication
+// of R_J took log₄(1/cn²) steps, against Boost's evaluation of the same motion (the same stored
+// k; against mpmath, k' ≈ 3e-6 is limited by k's own rounding: §8): u = K·f for f across two
+// half periods after the first (every 1/64, between base points too), 10⁻¹⁵…10⁻³ of K either
+// side of 3K, 4K and 5K and at them, k' from 1e-2 to ~1e-8 in both cases and the book's
+// jiggled x spin; within 4 ulps of 1 + |ψ|.
+TEST(ExactSolutionPrecession, NearTheQuarterPeriodEqualsBoostsEvaluation) {
+  std::vector<Scenario> motions;
+  for (double small : {1e-2, 1e-4, 1e-6, 1e-8}) {
+    motions.push_back(
+        {"case A, small " + std::to_string(small), {2.0, 1.0, 3.0}, {small, 1.0, 3.0 * small}});
+    motions.push_back(
+        {"case B, small " + std::to_string(small), {2.0, 1.0, 3.0}, {3.0 * small, 1.0, small}});
+  }
+  motions.push_back({"book x spin, jiggle", book_moments(), perturbed_x_spin({1e-6, 1e-6, 1e-6})});
+  std::vector<double> fractions;
+  for (int i = 2 * 64; i <= 6 * 64; ++i) fractions.push_back(i / 64.0);
+  for (double whole : {3.0, 4.0, 5.0})
+    for (int p = 3; p <= 15; p += 2)
+      for (double side : {-1.0, 1.0}) fractions.push_back(whole + side * std::pow(10.0, -p));
+  const double eps = std::numeric_limits<double>::epsilon();
+  double worst = 0.0;
+  for (const Scenario& m : motions) {
+    const ExactRotation exact(m.moments, m.omega0);
+    const ExactRotation::BoostReference boost = exact.boost_reference();
+    const ExactOmegaForm form = exact.omega_form();
+    for (double f : fractions) {
+      const double t = (f * form.K - form.u0) / form.lambda;  // u0 < 2K: t > 0
+      const double psi = boost.precession_angle(t);
+      const double ulps = std::abs(exact.precession_angle(t) - psi) / (eps * (1.0 + std::abs(psi)));
+      EXPECT_LE(ulps, 4.0) << m.name << " u = " << f << " K";
+      worst = std::max(worst, ulps);
+    }
+  }
+  std::printf(
+      "[ measured ] worst psi near the quarter period against Boost: %.2f ulps of 1 + |psi|\n",
+      worst);
 }
 
 // The model's t = n·dt by steps or by advance(dt, n) in one evaluation lands on the same state.
