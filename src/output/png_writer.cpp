@@ -335,51 +335,53 @@ bool read_rows(png_structp png, png_bytepp rows) {
   return true;
 }
 
-/// `path` opened and its header read into `handle` (read_header); throws as read_png().
-void start_reading(const std::filesystem::path& path, FilePtr& file, PngIo& io,
-                   PngReadHandle& handle, png_uint_32* width, png_uint_32* height,
-                   std::size_t* row_bytes) {
-  file.reset(std::fopen(path.c_str(), "rb"));
-  if (!file) throw_read_error(path, std::strerror(errno));
-  handle.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &io, on_png_error, on_png_warning);
+/// A PNG being read: its file, libpng's state and error text (`io` before `handle`, so that
+/// libpng's state goes first), and its header once read.
+struct PngReading {
+  FilePtr file;
+  PngIo io;
+  PngReadHandle handle;
+  png_uint_32 width = 0, height = 0;
+  std::size_t row_bytes = 0;
+};
+
+/// `path` opened into `png` and its header read (read_header); throws as read_png().
+void start_reading(const std::filesystem::path& path, PngReading& png) {
+  png.file.reset(std::fopen(path.c_str(), "rb"));
+  if (!png.file) throw_read_error(path, std::strerror(errno));
+  PngReadHandle& handle = png.handle;
+  handle.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &png.io, on_png_error, on_png_warning);
   if (handle.png) handle.info = png_create_info_struct(handle.png);
   if (!handle.info) throw_read_error(path, "libpng out of memory");
-  png_init_io(handle.png, file.get());
-  if (!read_header(handle.png, handle.info, width, height, row_bytes))
-    throw_read_error(path, io.message);
+  png_init_io(handle.png, png.file.get());
+  if (!read_header(handle.png, handle.info, &png.width, &png.height, &png.row_bytes))
+    throw_read_error(path, png.io.message);
 }
 
 }  // namespace
 
 PngSize read_png_size(const std::filesystem::path& path) {
-  FilePtr file;
-  PngIo io;
-  PngReadHandle handle;
-  png_uint_32 width = 0, height = 0;
-  std::size_t row_bytes = 0;
-  start_reading(path, file, io, handle, &width, &height, &row_bytes);
-  return {static_cast<int>(width), static_cast<int>(height)};
+  PngReading png;
+  start_reading(path, png);
+  return {static_cast<int>(png.width), static_cast<int>(png.height)};
 }
 
 RgbaImage read_png(const std::filesystem::path& path) {
-  FilePtr file;
-  PngIo io;
-  PngReadHandle handle;
-  png_uint_32 width = 0, height = 0;
-  std::size_t row_bytes = 0;
-  start_reading(path, file, io, handle, &width, &height, &row_bytes);
+  PngReading png;
+  start_reading(path, png);
+  const png_uint_32 width = png.width, height = png.height;
   constexpr png_uint_32 kMaxSide = 1u << 15;  // 32768: far beyond any frame we make
   if (width == 0 || height == 0 || width > kMaxSide || height > kMaxSide) {
     throw_read_error(path,
                      "unsupported size " + std::to_string(width) + "x" + std::to_string(height));
   }
-  if (row_bytes != static_cast<std::size_t>(width) * 4) {
+  if (png.row_bytes != static_cast<std::size_t>(width) * 4) {
     throw_read_error(path, "libpng did not produce 8-bit RGBA rows");
   }
   RgbaImage image(static_cast<int>(width), static_cast<int>(height));
   std::vector<png_bytep> rows(height);
   for (png_uint_32 y = 0; y < height; ++y) rows[y] = image.row(static_cast<int>(y));
-  if (!read_rows(handle.png, rows.data())) throw_read_error(path, io.message);
+  if (!read_rows(png.handle.png, rows.data())) throw_read_error(path, png.io.message);
   return image;
 }
 

@@ -208,3 +208,32 @@ def at_sigma(value, sigma):
         step = 10 ** place
         return str(int(round(value / step) * step)), str(int(round(sigma / step) * step))
     return f"{value:.{decimals}f}", f"{sigma:.{decimals}f}"
+
+
+# Every element with text of its own: its computed font size and whether its text runs past
+# its box (a horizontal overflow it scrolls or clips, or past the window's right edge).
+TEXT_STATE = """
+return Array.from(document.querySelectorAll('body *')).filter(e =>
+    Array.from(e.childNodes).some(n => n.nodeType === 3 && n.textContent.trim())).map(e => ({
+  tag: e.tagName, text: e.textContent.trim().slice(0, 60),
+  size: parseFloat(getComputedStyle(e).fontSize),
+  overflow: e.scrollWidth > e.clientWidth + 1 && getComputedStyle(e).overflowX !== 'visible'
+      || e.getBoundingClientRect().right > document.documentElement.clientWidth + 1}));
+"""
+
+
+def text_problems(driver):
+    """What a reader cannot read on the page as shown (docs/outputs.md, "Pictures"): text under
+    12 px and text past its box, each as a line; and the element count and smallest size."""
+    texts = driver.execute_script(TEXT_STATE)
+    problems = []
+    small = [t for t in texts if t["size"] < 12]
+    if small:
+        problems.append(f"text under 12 px: {small[:5]}")
+    over = [t for t in texts if t["overflow"]]
+    if over:
+        problems.append(f"text past its box: {over[:5]}")
+    smallest = min((t["size"] for t in texts), default=0)
+    print(f"{len(texts)} text elements, the smallest {smallest} px")
+    return problems
+

@@ -26,7 +26,7 @@ import time
 import urllib.request
 
 from browser import (console_errors, fail, find_browser, open_browser, run, serve,
-                     test_arguments, wait_for)
+                     test_arguments, text_problems, wait_for)
 
 CLIP_W, CLIP_H = 160, 96  # even sizes: H.264 4:2:0 needs them
 FRAMES = 8
@@ -73,17 +73,6 @@ return Array.from(document.querySelectorAll('img')).map(i => ({
 """
 
 
-# Every element with text of its own: its computed font size and whether its text runs past
-# its box (a horizontal overflow, or a line wider than the element).
-TEXT_STATE = """
-return Array.from(document.querySelectorAll('body *')).filter(e =>
-    Array.from(e.childNodes).some(n => n.nodeType === 3 && n.textContent.trim())).map(e => ({
-  tag: e.tagName, text: e.textContent.trim().slice(0, 60),
-  size: parseFloat(getComputedStyle(e).fontSize),
-  overflow: e.scrollWidth > e.clientWidth + 1 && getComputedStyle(e).overflowX !== 'visible'
-      || e.getBoundingClientRect().right > document.documentElement.clientWidth + 1}));
-"""
-
 CHART_STATE = """
 return Array.from(document.querySelectorAll('img.plot')).map(i => ({
   src: i.getAttribute('src'), naturalWidth: i.naturalWidth, naturalHeight: i.naturalHeight,
@@ -111,15 +100,7 @@ def check_typography(driver, height_before):
         if c["shown"] < c["naturalWidth"] - 0.5 or c["shownHeight"] < c["naturalHeight"] - 0.5:
             errors.append(f"chart {c['src']}: shown {c['shown']:.1f} px wide of its "
                           f"{c['naturalWidth']}: its text smaller than drawn")
-    texts = driver.execute_script(TEXT_STATE)
-    small = [t for t in texts if t["size"] < 12]
-    if small:
-        errors.append(f"text under 12 px: {small[:5]}")
-    over = [t for t in texts if t["overflow"]]
-    if over:
-        errors.append(f"text past its box: {over[:5]}")
-    print(f"{len(texts)} text elements, the smallest {min(t['size'] for t in texts)} px")
-    return errors
+    return errors + text_problems(driver)
 
 
 def check_page(driver, url, out, names, screenshot):
