@@ -95,6 +95,19 @@ def check_compare_engines(driver, page, bookspin, source, folder, shots):
         "return [...document.querySelectorAll('.bodyLabel')].filter((e) => !e.hidden).map((e) => e.textContent)")
     if labels != short:
         fail(f"the view labels its bodies {labels}, not {short}")
+    # No two names under the bodies meet, and each stays inside the view.
+    boxes = driver.execute_script(
+        "const v = document.querySelector('#view').getBoundingClientRect();"
+        "return [v.left, v.right, [...document.querySelectorAll('.bodyLabel')].filter((e) => !e.hidden)"
+        ".map((e) => { const r = e.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })]")
+    view_left, view_right, boxes = boxes
+    for i, a in enumerate(boxes):
+        if a[0] < view_left - 1 or a[2] > view_right + 1:
+            fail(f"the name {labels[i]!r} runs out of the view: {a}, view {view_left}–{view_right}")
+        for j in range(i):
+            b = boxes[j]
+            if a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]:
+                fail(f"the names {labels[j]!r} {b} and {labels[i]!r} {a} meet")
 
     at = {}
     for t in (300.5, 599.0):

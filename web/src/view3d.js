@@ -150,13 +150,18 @@ export class View3D {
     this.frame(runs, showL, true);
   }
 
-  /** Each label centred under its body as drawn now: the bottom of its moved cage corners
-   * (world, session.corners) projected to the view's CSS pixels. */
+  /** Each label under its body as drawn now (the bottom of its moved cage corners, world,
+   * session.corners, projected to the view's CSS pixels), centred on its cell of the grid and
+   * no wider than the cells are apart on the screen, so that neighbours' names never meet. */
   placeLabels(runs) {
     if (!this.labels.length) return;
     const v = this.renderer.domElement;
     const w = v.clientWidth, h = v.clientHeight;
     this.camera.updateMatrixWorld();
+    const screenX = (p) => (p.clone().project(this.camera).x + 1) / 2 * w;
+    const cellX = runs.map((r, k) => screenX(this.offsetOf(k)));
+    const { cols } = this.layout;
+    const apart = cols > 1 ? Math.abs(cellX[1] - cellX[0]) : w;
     runs.forEach((r, k) => {
       const label = this.labels[k];
       if (!label) return;
@@ -167,9 +172,9 @@ export class View3D {
         const x = (q.x + 1) / 2 * w, y = (1 - q.y) / 2 * h;
         left = Math.min(left, x); right = Math.max(right, x); bottom = Math.max(bottom, y);
       }
-      label.style.left = `${(left + right) / 2}px`;
-      // Within its body's column of the grid: a long name wraps under its body.
-      label.style.maxWidth = `${Math.max(120, w / this.layout.cols - 8)}px`;
+      // Within its cell of the grid: a long name wraps under its body.
+      label.style.left = `${cols > 1 ? cellX[k] : (left + right) / 2}px`;
+      label.style.maxWidth = `${Math.max(60, Math.min(apart, w) - 12)}px`;
       label.style.top = `${Math.min(bottom + 6, h - 24)}px`;
       label.hidden = !Number.isFinite(bottom);
     });
