@@ -27,21 +27,46 @@ void shift_book_left(render::Camera& camera, int width, int height, double share
   camera.target += shift;
 }
 
+/// Moves eye and target along the image's up vector so that the book's centre projects to the
+/// middle of the rows [top, 1) (fractions of the height, from the top).
+void shift_book_down(render::Camera& camera, double top) {
+  const Eigen::Vector3d forward = camera.target - camera.eye;
+  const Eigen::Vector3d up = forward.cross(camera.up).cross(forward);
+  if (top <= 0.0 || up.norm() < 1e-9) return;  // degenerate: reported later
+  const double half_height = forward.norm() * std::tan(camera.fov_y_deg * M_PI / 360.0);
+  const Eigen::Vector3d shift = top * half_height * up.normalized();
+  camera.eye += shift;
+  camera.target += shift;
+}
+
+/// The share of a single scene's frame height its caption takes at the top (overlay/caption's
+/// box: a 0.6-font margin and padding, 1.35 fonts a line, the font 2.6% of the height, at
+/// least 10 px): the title, the model line, the time, and the twist line where it is shown.
+double caption_share(const scene::Scene& scene, int height) {
+  const double font = std::max(10.0, 0.026 * height);
+  const int lines = 3 + (scene.render.caption_twist ? 1 : 0);
+  return std::min(0.5, font * (1.2 + 1.35 * lines) / height);
+}
+
 }  // namespace
 
 render::RenderSettings render_settings_for(const scene::Scene& scene, int width, int height,
-                                           double book_share, double book_left) {
+                                           double book_share, double book_left, double book_top) {
   const auto& r = scene.render;
   render::RenderSettings s;
   s.width = width;
   s.height = height;
   const int book_width =
       std::max(2, static_cast<int>(std::lround((book_share - book_left) * width)));
-  s.camera = render::default_camera(0.5 * scene.body.cage.size.norm(), book_width, height);
+  const double radius = 0.5 * scene.body.cage.size.norm();
+  s.camera = render::default_camera(radius, book_width, height);
+  // The bounding sphere within the rows [book_top, 1) too, with default_camera's margin.
+  const double half_rows = std::atan((1.0 - book_top) * std::tan(M_PI / 12.0));
+  const double rows_distance = radius / std::sin(half_rows) * 1.1;
+  const double framed = std::max((s.camera.eye - s.camera.target).norm(), rows_distance);
   s.camera.fov_y_deg = r.fov_y_deg;
   // Keep the automatic distance for the default field of view, scaled for another one.
-  double distance = (s.camera.eye - s.camera.target).norm() * std::tan(M_PI / 12.0) /
-                    std::tan(r.fov_y_deg * M_PI / 360.0);
+  double distance = framed * std::tan(M_PI / 12.0) / std::tan(r.fov_y_deg * M_PI / 360.0);
   if (r.camera_distance > 0.0) distance = r.camera_distance;
   // A direction whose squared norm underflows (render.camera_direction = [1e-300, 0, 0]) is
   // scaled by its largest component first (Eigen's stableNormalized); others as they are.
@@ -51,6 +76,7 @@ render::RenderSettings render_settings_for(const scene::Scene& scene, int width,
                                    : direction.stableNormalized();
   s.camera.eye = s.camera.target + distance * unit;
   shift_book_left(s.camera, width, height, book_share, book_left);
+  shift_book_down(s.camera, book_top);
   s.textures = {r.texture_front, r.texture_back, r.texture_spine, r.texture_pages};
   s.show_angular_momentum = r.show_angular_momentum;
   s.show_body_axes = r.show_body_axes;
@@ -74,7 +100,8 @@ render::RenderSettings render_settings_for(const scene::Scene& scene) {
   double right = share;
   if (scene.render.poinsot && !scene.render.panel)
     right = std::max(left + 0.1, charts::poinsot_rect(width, height, nullptr).x / width);
-  return render_settings_for(scene, width, height, right, left);
+  // Below the caption: the body framed in the rows it leaves.
+  return render_settings_for(scene, width, height, right, left, caption_share(scene, height));
 }
 
 render::FrameInput frame_input_for(const physics::Pose& pose) {

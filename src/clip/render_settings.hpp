@@ -12,7 +12,8 @@ namespace bookspin::clip {
 
 /// Renderer settings from the scene's render.* keys; the camera is framed on the book's
 /// bounding sphere unless render.camera_distance is set. With render.panel the book is
-/// framed in the left kBookShare of the frame, leaving the right for the plots.
+/// framed in the left kBookShare of the frame, leaving the right for the plots; always below
+/// the caption, so that no caption covers the body.
 render::RenderSettings render_settings_for(const scene::Scene& scene);
 
 /// Same for a width×height image (pixels, even) whose columns [book_left, book_share) (fractions
@@ -20,8 +21,12 @@ render::RenderSettings render_settings_for(const scene::Scene& scene);
 /// and target together), so the projection stays symmetric and the renderer needs no notion
 /// of a viewport. With render.sphere, render_settings_for(scene) frames the body right of the
 /// sphere's inset.
+/// The rows [book_top, 1) (a fraction of the height, from the top) frame it likewise: the
+/// camera stands back until the bounding sphere fits them and moves up (eye and target) to
+/// centre it there.
 render::RenderSettings render_settings_for(const scene::Scene& scene, int width, int height,
-                                           double book_share, double book_left = 0.0);
+                                           double book_share, double book_left = 0.0,
+                                           double book_top = 0.0);
 
 /// The renderer's input for one pose of the book: its 8 corners and L.
 render::FrameInput frame_input_for(const physics::Pose& pose);

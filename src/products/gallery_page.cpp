@@ -15,13 +15,10 @@ h1 { font-size: 1.6rem; }
         margin: 1.5rem 0; padding: 1rem; }
 .clip h2 { font-size: 1.2rem; margin: 0 0 .3rem; }
 .clip p { margin: .2rem 0 .8rem; }
-.media { display: grid; grid-template-columns: repeat(auto-fit, minmax(420px, 1fr)); gap: 1rem; }
-.media video, .media img:not(.plot) { width: 100%; height: auto; background: #111;
-                                      border-radius: 4px; }
-.media video:not([width]) { aspect-ratio: 16 / 9; }
-.media a.plot { grid-column: 1 / -1; }
-.media img.plot { background: #fff; border: 1px solid #ddd; border-radius: 4px;
-                  max-width: 100%; height: auto; }
+.media { display: grid; grid-template-columns: minmax(0, 1fr); gap: 1rem; justify-items: start; }
+.media video, .media img { max-width: 100%; height: auto; background: #111; border-radius: 4px; }
+.media video:not([width]) { width: 100%; aspect-ratio: 16 / 9; }
+.media img.plot { background: #fff; border: 1px solid #ddd; }
 .missing { color: #a33; }
 .files { font-size: .9rem; }
 .about { color: #444; max-width: 60rem; }
@@ -46,8 +43,8 @@ std::string size_attrs(const ImageSizes& sizes, const std::string& path) {
          std::to_string(it->second.height) + "\"";
 }
 
-/// A chart: its image, lazily loaded, at most the size it was drawn at, on a row of its own
-/// (its text at the size it was drawn for), linking the PNG itself.
+/// A chart: its image, lazily loaded, on a row of its own at most the size it was drawn at (its
+/// text at the size it was drawn for), linking the PNG itself. A clip and its poster likewise.
 void write_chart(std::ostream& out, const ImageSizes& sizes, const std::string& path,
                  const std::string& alt) {
   out << "<a class=\"plot\" href=" << attr(path)

@@ -74,7 +74,10 @@ return Array.from(document.querySelectorAll('img')).map(i => ({
 
 
 CHART_STATE = """
-return Array.from(document.querySelectorAll('img.plot')).map(i => ({
+return Array.from(document.querySelectorAll('img.plot, video')).map(i => i.tagName === 'VIDEO' ? ({
+  src: i.getAttribute('src'), naturalWidth: i.videoWidth, naturalHeight: i.videoHeight,
+  shown: i.getBoundingClientRect().width, shownHeight: i.getBoundingClientRect().height,
+  attr: [i.getAttribute('width'), i.getAttribute('height')]}) : ({
   src: i.getAttribute('src'), naturalWidth: i.naturalWidth, naturalHeight: i.naturalHeight,
   shown: i.getBoundingClientRect().width - 2, shownHeight: i.getBoundingClientRect().height - 2,
   attr: [i.getAttribute('width'), i.getAttribute('height')]}));
@@ -95,7 +98,8 @@ def check_typography(driver, height_before):
     for c in charts:
         print(f"chart {c['src']}: {c['naturalWidth']}×{c['naturalHeight']}, shown "
               f"{c['shown']:.1f}×{c['shownHeight']:.1f}")
-        if c["attr"] != [str(c["naturalWidth"]), str(c["naturalHeight"])]:
+        if c["src"].endswith(".png") and c["attr"] != [str(c["naturalWidth"]),
+                                                       str(c["naturalHeight"])]:
             errors.append(f"chart {c['src']}: width and height {c['attr']}, not its size")
         if c["shown"] < c["naturalWidth"] - 0.5 or c["shownHeight"] < c["naturalHeight"] - 0.5:
             errors.append(f"chart {c['src']}: shown {c['shown']:.1f} px wide of its "

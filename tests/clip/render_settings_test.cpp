@@ -6,9 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "charts/decoration.hpp"
+#include "overlay/caption.hpp"
 
 namespace bookspin::clip {
 namespace {
@@ -52,28 +58,37 @@ TEST(RenderSettings, TheScenesRenderKeysAreTheRenderersSettings) {
 }
 
 TEST(RenderSettings, TheCameraFramesTheBooksBoundingSphereFromTheSceneDirection) {
-  const render::RenderSettings s = render_settings_for(scene_with({}));
+  // Columns and rows [0, 1) of a 1280×720 image (no caption to leave room for): the vertical
+  // field of view (30°) is the narrower one.
+  const render::RenderSettings s = render_settings_for(scene_with({}), 1280, 720, 1.0);
   EXPECT_NEAR(s.camera.target.norm(), 0.0, 1e-12);
   const Eigen::Vector3d eye = s.camera.eye;
-  // 1280×720: the vertical field of view (30°) is the narrower one.
   EXPECT_NEAR(eye.norm(), 1.1 * kBookRadius / std::sin(15.0 * M_PI / 180.0), 1e-9);
   EXPECT_NEAR(eye.normalized().dot(Eigen::Vector3d(0.9, 0.6, 3.2).normalized()), 1.0, 1e-12);
   // Another field of view: the same picture height of the book, tan(15°) / tan(30°) closer.
-  const render::RenderSettings wide = render_settings_for(scene_with({"render.fov_y=60.0"}));
+  const render::RenderSettings wide =
+      render_settings_for(scene_with({"render.fov_y=60.0"}), 1280, 720, 1.0);
   EXPECT_NEAR(wide.camera.eye.norm(),
               eye.norm() * std::tan(15.0 * M_PI / 180.0) / std::tan(30.0 * M_PI / 180.0), 1e-9);
+  // Rows [0.2, 1): the sphere fits 80% of the height, tan(15°) · 0.8 its half angle.
+  const render::RenderSettings low = render_settings_for(scene_with({}), 1280, 720, 1.0, 0.0, 0.2);
+  EXPECT_NEAR((low.camera.eye - low.camera.target).norm(),
+              1.1 * kBookRadius / std::sin(std::atan(0.8 * std::tan(15.0 * M_PI / 180.0))), 1e-9);
 }
 
 TEST(RenderSettings, AGivenCameraDistanceAndDirectionPlaceTheEye) {
   const render::RenderSettings s = render_settings_for(
       scene_with({"render.camera_distance=10.0", "render.camera_direction=[0.0, 0.0, 2.0]"}));
-  EXPECT_NEAR((s.camera.eye - Eigen::Vector3d(0, 0, 10)).norm(), 0.0, 1e-12);
-  EXPECT_NEAR(s.camera.target.norm(), 0.0, 1e-12);
+  // The eye 10 along the direction from the target, which is moved up along the image's
+  // vertical only (the body framed below the caption).
+  EXPECT_NEAR((s.camera.eye - s.camera.target - Eigen::Vector3d(0, 0, 10)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(s.camera.target.z(), 0.0, 1e-12);
   // Any nonzero direction, also one whose squared norm underflows (1e-600 → 0) or is subnormal.
   for (const char* tiny : {"[0.0, 0.0, 1e-300]", "[0.0, 0.0, 1e-160]"}) {
     const render::RenderSettings t = render_settings_for(scene_with(
         {"render.camera_distance=10.0", std::string("render.camera_direction=") + tiny}));
-    EXPECT_NEAR((t.camera.eye - Eigen::Vector3d(0, 0, 10)).norm(), 0.0, 1e-12) << tiny;
+    EXPECT_NEAR((t.camera.eye - t.camera.target - Eigen::Vector3d(0, 0, 10)).norm(), 0.0, 1e-12)
+        << tiny;
   }
 }
 
@@ -82,9 +97,9 @@ TEST(RenderSettings, AGivenCameraDistanceAndDirectionPlaceTheEye) {
 TEST(RenderSettings, WithThePanelTheBookIsFramedInTheLeftSixtyPercent) {
   const render::RenderSettings s = render_settings_for(scene_with({"render.panel=true"}));
   EXPECT_NEAR(ndc_x(s.camera, Eigen::Vector3d::Zero(), 1280, 720), -0.4, 1e-9);
-  EXPECT_NEAR((s.camera.eye - s.camera.target).norm(),
-              1.1 * kBookRadius / std::sin(15.0 * M_PI / 180.0), 1e-9);
   const render::RenderSettings alone = render_settings_for(scene_with({}));
+  EXPECT_NEAR((s.camera.eye - s.camera.target).norm(),
+              (alone.camera.eye - alone.camera.target).norm(), 1e-9);
   EXPECT_NEAR(ndc_x(alone.camera, Eigen::Vector3d::Zero(), 1280, 720), 0.0, 1e-12);
   // Columns [0.25, 0.75) of a 400×400 image: the centre at 50%, NDC 0.
   const render::RenderSettings middle = render_settings_for(scene_with({}), 400, 400, 0.75, 0.25);
@@ -92,6 +107,60 @@ TEST(RenderSettings, WithThePanelTheBookIsFramedInTheLeftSixtyPercent) {
   // Columns [0, 0.5): the centre at 25%, NDC −0.5.
   const render::RenderSettings half = render_settings_for(scene_with({}), 400, 400, 0.5);
   EXPECT_NEAR(ndc_x(half.camera, Eigen::Vector3d::Zero(), 400, 400), -0.5, 1e-9);
+}
+
+/// The image row (0 at the top) where the world point `p` is seen by `camera` in a
+/// width×height image.
+double image_row(const render::Camera& camera, const Eigen::Vector3d& p, int height) {
+  const Eigen::Vector3d forward = (camera.target - camera.eye).normalized();
+  const Eigen::Vector3d right = forward.cross(camera.up).normalized();
+  const Eigen::Vector3d up = right.cross(forward);
+  const Eigen::Vector3d v = p - camera.eye;
+  const double ndc = v.dot(up) / (v.dot(forward) * std::tan(camera.fov_y_deg * M_PI / 360.0));
+  return (1.0 - ndc) / 2.0 * height;
+}
+
+// No caption covers the body: in every single scene of the gallery, whatever its orientation,
+// the body's bounding sphere is seen below the lowest row the caption paints (the caption
+// drawn here, with a twist line where the scene shows one) and above the frame's bottom.
+TEST(RenderSettings, TheBodyIsFramedBelowItsCaption) {
+  const std::filesystem::path scenes = std::filesystem::path(BOOKSPIN_SOURCE_DIR) / "scenes";
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(scenes)) {
+    if (entry.path().extension() != ".toml") continue;
+    const scene::Scene scene = scene::parse_scene(entry.path());
+    if (!scene.compare.empty()) continue;  // a comparison's tiles carry their own captions
+    const int w = scene.render.width, h = scene.render.height;
+    RgbaImage caption(w, h);  // white: the caption's box darkens what it covers
+    std::fill(caption.pixels.begin(), caption.pixels.end(), 255);
+    const std::optional<std::string> twist =
+        scene.render.caption_twist
+            ? std::optional<std::string>("twist per period: measured 1.234 rad, closed form 1.234")
+            : std::nullopt;
+    overlay::draw_caption(caption, charts::caption_for(scene, 123.4, std::nullopt, twist));
+    int bottom = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (caption.row(y)[4 * x] != 255) bottom = y + 1;
+    ASSERT_GT(bottom, 0) << entry.path();
+    const render::RenderSettings s = render_settings_for(scene);
+    const Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    const double radius = 0.5 * scene.body.cage.size.norm();
+    double top = h, lowest = 0;
+    for (int i = 0; i < 400; ++i) {  // points over the sphere, by a Fibonacci spiral
+      const double z = 1.0 - (i + 0.5) / 200.0, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+      const double phi = i * M_PI * (3.0 - std::sqrt(5.0));
+      const Eigen::Vector3d p =
+          centre + radius * Eigen::Vector3d(r * std::cos(phi), r * std::sin(phi), z);
+      top = std::min(top, image_row(s.camera, p, h));
+      lowest = std::max(lowest, image_row(s.camera, p, h));
+    }
+    EXPECT_GE(top, bottom) << entry.path().filename() << ": the body reaches row " << top
+                           << ", the caption row " << bottom;
+    EXPECT_LE(lowest, h) << entry.path().filename();
+    ++checked;
+  }
+  EXPECT_GE(checked, 10);
 }
 
 TEST(RenderSettings, APoseIsItsCornersAndL) {
