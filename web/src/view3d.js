@@ -175,7 +175,8 @@ export class View3D {
       // Within its cell of the grid: a long name wraps under its body.
       label.style.left = `${cols > 1 ? cellX[k] : (left + right) / 2}px`;
       label.style.maxWidth = `${Math.max(60, Math.min(apart, w) - 12)}px`;
-      label.style.top = `${Math.min(bottom + 6, h - 24)}px`;
+      // Under its body, but never past the view's bottom, however many lines it wraps to.
+      label.style.top = `${Math.max(0, Math.min(bottom + 6, h - label.offsetHeight - 4))}px`;
       label.hidden = !Number.isFinite(bottom);
     });
   }
