@@ -64,8 +64,9 @@ void expect_stopped_cleanly(const std::vector<std::string>& args, const char* ho
 const std::string kFig09 = scene_path("fig09-matrix-unstable-x");
 
 // The league judges every method's motion, tens of milliseconds each (the exact motion at every
-// row), and asks between them: a signal on the line of the first judgement stops it at the
-// next, within the second, nothing written. Without the poll the judging runs on for seconds.
+// row, 100,000 rows: the box run 200 times its scenario's 500 steps, so that the judging outlasts
+// the signal's way in), and asks between them: a signal on the line of the first judgement stops
+// it at the next, within the second, nothing written. Without the poll the judging runs on.
 class LeagueSignal : public ::testing::TestWithParam<int> {};
 
 TEST_P(LeagueSignal, StopsBetweenJudgementsAndWritesNothing) {
@@ -74,9 +75,9 @@ TEST_P(LeagueSignal, StopsBetweenJudgementsAndWritesNothing) {
   fs::create_directories(out);
   const std::string scenario =
       (fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck" / "mujoco-test-box.toml").string();
-  expect_stopped_cleanly(
-      words({"flipcheck", "league", scenario, "--methods", "all", "-o", out.string()}), kReport,
-      "flipcheck judge", GetParam(), out, {});
+  expect_stopped_cleanly(words({"flipcheck", "league", scenario, "--methods", "all", "--set",
+                                "time.frames=10001", "-o", out.string()}),
+                         kReport, "flipcheck judge", GetParam(), out, {});
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, LeagueSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
