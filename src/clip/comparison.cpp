@@ -28,8 +28,13 @@ class ComparisonComposer final : public Composer {
         layout_(compare_layout(static_cast<int>(scene.compare.size()), scene.render.width,
                                scene.render.height, scene.render.panel)) {}
 
+  /// Each tile's body framed below the tile's caption (its three lines at the largest font
+  /// decorate() gives them, from the top margin).
   render::RenderSettings picture_settings(const scene::Scene& first_tile) const override {
-    return render_settings_for(first_tile, layout_.tile_width, layout_.tile_height, 1.0);
+    const double font = largest_tile_font(scene_.render.height);
+    const double caption_bottom = 0.4 * font + overlay::caption_height(3, font);
+    return render_settings_for(first_tile, layout_.tile_width, layout_.tile_height, 1.0, 0.0,
+                               std::min(0.5, caption_bottom / layout_.tile_height));
   }
 
   RgbaImage compose(std::vector<RgbaImage>& pictures, const Tiles& tiles) override {
@@ -65,7 +70,7 @@ class ComparisonComposer final : public Composer {
     overlay::draw_title_strip(frame, layout_.header, scene_.title, t);
     // One font size for every tile (the largest at which every caption fits its tile), so
     // the labels read as a set.
-    double font = std::min(0.026 * frame.height, 0.045 * layout_.tile_height);
+    double font = largest_tile_font(frame.height);
     const double margin = 0.4 * font, max_width = layout_.tile_width - 2 * margin;
     for (const auto& p : tiles)
       font = overlay::caption_font_size(tile_caption(*p), font, max_width);
@@ -74,6 +79,11 @@ class ComparisonComposer final : public Composer {
       overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width};
       overlay::draw_caption(frame, tile_caption(*tiles[i]), caption);
     }
+  }
+
+  /// The tiles' caption font before it shrinks to fit their widths (pixels).
+  double largest_tile_font(int frame_height) const {
+    return std::min(0.026 * frame_height, 0.045 * layout_.tile_height);
   }
 
   const scene::Scene& scene_;

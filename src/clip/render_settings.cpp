@@ -8,6 +8,7 @@
 #include "charts/poinsot_view.hpp"
 #include "charts/sphere_view.hpp"
 #include "clip/body_drawing.hpp"
+#include "overlay/caption.hpp"
 
 namespace bookspin::clip {
 
@@ -40,12 +41,12 @@ void shift_book_down(render::Camera& camera, double top) {
 }
 
 /// The share of a single scene's frame height its caption takes at the top (overlay/caption's
-/// box: a 0.6-font margin and padding, 1.35 fonts a line, the font 2.6% of the height, at
-/// least 10 px): the title, the model line, the time, and the twist line where it is shown.
+/// default box, 0.6 font sizes from the top): the title, the model line, the time, and the
+/// twist line where it is shown.
 double caption_share(const scene::Scene& scene, int height) {
-  const double font = std::max(10.0, 0.026 * height);
-  const int lines = 3 + (scene.render.caption_twist ? 1 : 0);
-  return std::min(0.5, font * (1.2 + 1.35 * lines) / height);
+  const double font = overlay::default_caption_font(height);
+  const std::size_t lines = 3 + (scene.render.caption_twist ? 1 : 0);
+  return std::min(0.5, (0.6 * font + overlay::caption_height(lines, font)) / height);
 }
 
 }  // namespace

@@ -54,12 +54,12 @@ struct CaptionBox {
 CaptionBox caption_box(cairo_t* cr, int image_height, const std::vector<CaptionLine>& lines,
                        const CaptionLayout& layout) {
   CaptionBox box;
-  box.size = layout.font_size > 0 ? layout.font_size : std::max(10.0, 0.026 * image_height);
+  box.size = layout.font_size > 0 ? layout.font_size : default_caption_font(image_height);
   box.size = font_size_within(cr, lines, box.size, layout.max_width);
   box.pad = 0.6 * box.size, box.line_height = 1.35 * box.size;
   box.x = layout.x > 0 ? layout.x : box.pad, box.y = layout.y > 0 ? layout.y : box.pad;
   box.width = widest_line(cr, lines, box.size) + 2 * box.pad;
-  box.height = lines.size() * box.line_height + box.pad;
+  box.height = caption_height(lines.size(), box.size);
   return box;
 }
 
@@ -109,6 +109,12 @@ std::size_t common_lines(const std::vector<CaptionLine>& a, const std::vector<Ca
 }
 
 }  // namespace
+
+double caption_height(std::size_t lines, double font_size) {
+  return static_cast<double>(lines) * 1.35 * font_size + 0.6 * font_size;
+}
+
+double default_caption_font(int image_height) { return std::max(10.0, 0.026 * image_height); }
 
 double caption_font_size(const std::vector<CaptionLine>& lines, double font_size,
                          double max_width) {

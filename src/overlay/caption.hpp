@@ -56,6 +56,14 @@ class CaptionPainter {
   std::unique_ptr<State> state_;
 };
 
+/// The height (pixels) of the box draw_caption draws for `lines` lines at `font_size`: 1.35
+/// font sizes a line and 0.6 of padding; its bottom is the box's top (CaptionLayout::y, or 0.6
+/// font sizes by default) plus this.
+double caption_height(std::size_t lines, double font_size);
+
+/// The default caption's font size (pixels) in an image `image_height` pixels high.
+double default_caption_font(int image_height);
+
 /// The font size (pixels) draw_caption would use for `lines` at `font_size` within a box of
 /// at most `max_width` pixels, so several captions can share the smallest.
 double caption_font_size(const std::vector<CaptionLine>& lines, double font_size, double max_width);

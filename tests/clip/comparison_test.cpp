@@ -3,7 +3,9 @@
 // by hand below), fills the gaps with the dark background and writes a caption on each tile.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -97,6 +99,56 @@ TEST(Comparison, EachPictureGoesToItsTileUnderTheStripWithACaption) {
     }
   }
   EXPECT_GT(text, 100);
+}
+
+// No caption covers a tile's body: in every comparison scene of the gallery, each tile's
+// caption (composed over white pictures, the rows it darkens) ends above the rows where the
+// tile's camera sees the body's bounding sphere, whatever its orientation.
+TEST(Comparison, EachTilesBodyIsFramedBelowItsCaption) {
+  int checked = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::filesystem::path(BOOKSPIN_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    const scene::Scene scene = scene::parse_scene(entry.path(), {"time.frames=3"});
+    if (scene.compare.empty()) continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    const auto composer = comparison_composer(scene);
+    const scene::Scene first = tile_scene(scene, scene.compare.front());
+    const render::RenderSettings settings = composer->picture_settings(first);
+    const CompareLayout layout =
+        compare_layout(static_cast<int>(scene.compare.size()), scene.render.width,
+                       scene.render.height, scene.render.panel);
+    Tiles tiles;
+    std::vector<RgbaImage> pictures;
+    for (const auto& tile : scene.compare) {
+      tiles.push_back(std::make_unique<TileRun>(tile_scene(scene, tile)));
+      pictures.push_back(flat(settings.width, settings.height, {255, 255, 255}));
+    }
+    const RgbaImage frame = composer->compose(pictures, tiles);
+    const PixelRect& tile = layout.tiles.front();
+    int caption_bottom = 0;  // rows from the tile's top
+    for (int y = 0; y < settings.height; ++y)
+      for (int x = 0; x < settings.width; ++x)
+        if (at(frame, static_cast<int>(tile.x) + x, static_cast<int>(tile.y) + y) !=
+            Rgb{255, 255, 255})
+          caption_bottom = y + 1;
+    ASSERT_GT(caption_bottom, 0);
+    ASSERT_LT(caption_bottom, settings.height);
+    // The sphere's highest row: its centre's row less its angular radius, seen from the eye.
+    const render::Camera& c = settings.camera;
+    const Eigen::Vector3d forward = (c.target - c.eye).normalized();
+    const Eigen::Vector3d right = forward.cross(c.up).normalized();
+    const Eigen::Vector3d up = right.cross(forward);
+    const Eigen::Vector3d v = -c.eye;  // the body's centre is the origin
+    const double radius = 0.5 * first.body.cage.size.norm();
+    const double centre = std::atan2(v.dot(up), v.dot(forward));
+    const double half = std::asin(std::min(1.0, radius / v.norm()));
+    const double top_ndc = std::tan(centre + half) / std::tan(c.fov_y_deg * M_PI / 360.0);
+    const double top_row = (1.0 - top_ndc) / 2.0 * settings.height;
+    EXPECT_GE(top_row, caption_bottom) << "the body reaches row " << top_row;
+    ++checked;
+  }
+  EXPECT_GE(checked, 4);
 }
 
 // The header's "t = …" is the time of the frame shown (TileRun::shown: the composer shows the
