@@ -151,17 +151,9 @@ val exact_motion(const val& json) {
     const bookspin::jobs::ExactMotion m = bookspin::jobs::exact_motion(scenario_of(json));
     const std::size_t n = m.rows.size();
     std::vector<double> t(n), q(4 * n), wb(3 * n), ww(3 * n), L(3 * n), E(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const bookspin::jobs::ExactMotionRow& r = m.rows[i];
-      t[i] = r.t;
-      for (int k = 0; k < 4; ++k) q[4 * i + k] = r.q[k];
-      for (int k = 0; k < 3; ++k) {
-        wb[3 * i + k] = r.omega_body[k];
-        ww[3 * i + k] = r.omega_world[k];
-        L[3 * i + k] = r.L[k];
-      }
-      E[i] = r.E;
-    }
+    const bookspin::jobs::ExactRowArrays into{t.data(),  q.data(), wb.data(),
+                                              ww.data(), L.data(), E.data()};
+    for (std::size_t i = 0; i < n; ++i) into.put(i, m.rows[i]);
     val out = val::object();
     out.set("t", float64_array(t));
     out.set("q", float64_array(q));

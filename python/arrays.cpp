@@ -163,23 +163,11 @@ ExactArrays::ExactArrays(std::size_t n, bool with_t)
       omega_world_(new_array(n, 3)),
       L_world_(new_array(n, 3)),
       E_(new_array(n)),
-      t_data_(t_.mutable_data()),
-      q_data_(q_.mutable_data()),
-      omega_body_data_(omega_body_.mutable_data()),
-      omega_world_data_(omega_world_.mutable_data()),
-      L_world_data_(L_world_.mutable_data()),
-      E_data_(E_.mutable_data()) {}
+      into_{
+          with_t ? t_.mutable_data() : nullptr, q_.mutable_data(),       omega_body_.mutable_data(),
+          omega_world_.mutable_data(),          L_world_.mutable_data(), E_.mutable_data()} {}
 
-void ExactArrays::set(std::size_t i, const jobs::ExactMotionRow& row) {
-  if (with_t_) t_data_[i] = row.t;
-  for (int k = 0; k < 4; ++k) q_data_[4 * i + k] = row.q[k];
-  for (int k = 0; k < 3; ++k) {
-    omega_body_data_[3 * i + k] = row.omega_body[k];
-    omega_world_data_[3 * i + k] = row.omega_world[k];
-    L_world_data_[3 * i + k] = row.L[k];
-  }
-  E_data_[i] = row.E;
-}
+void ExactArrays::set(std::size_t i, const jobs::ExactMotionRow& row) { into_.put(i, row); }
 
 py::dict ExactArrays::dict() const {
   py::dict out;

@@ -70,7 +70,7 @@ class ExactArrays {
  private:
   bool with_t_;
   py::array_t<double> t_, q_, omega_body_, omega_world_, L_world_, E_;
-  double *t_data_, *q_data_, *omega_body_data_, *omega_world_data_, *L_world_data_, *E_data_;
+  jobs::ExactRowArrays into_;  ///< where set() writes: the arrays' data
 };
 
 /// `rows` as ExactArrays' dict.

@@ -98,6 +98,18 @@ ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& sto
   return motion;
 }
 
+void ExactRowArrays::put(std::size_t i, const ExactMotionRow& row) const {
+  if (t) t[i] = row.t;
+  for (int k = 0; k < 4; ++k)
+    if (q) q[4 * i + k] = row.q[k];
+  for (int k = 0; k < 3; ++k) {
+    if (omega_body) omega_body[3 * i + k] = row.omega_body[k];
+    if (omega_world) omega_world[3 * i + k] = row.omega_world[k];
+    if (L) L[3 * i + k] = row.L[k];
+  }
+  if (E) E[i] = row.E;
+}
+
 CsvTable exact_motion_csv(const ExactMotion& m) {
   CsvTable table;
   table.columns = {"t",        "qw",       "qx",       "qy", "qz", "wx", "wy", "wz",

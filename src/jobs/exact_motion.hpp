@@ -28,6 +28,21 @@ std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
                                             const std::vector<double>& times,
                                             const StopPoll& stop = {});
 
+/// Flat arrays that rows of the exact motion go into, row i at i, row-major: t (N), q (N×4: w,
+/// x, y, z), ω in the body and the world frame, L in the world (N×3 each, rad per time unit and
+/// mass·length²/time), E (N). A null array is not kept. The one layout of the Python module's
+/// numpy arrays and the npm package's Float64Arrays.
+struct ExactRowArrays {
+  double* t = nullptr;
+  double* q = nullptr;
+  double* omega_body = nullptr;
+  double* omega_world = nullptr;
+  double* L = nullptr;
+  double* E = nullptr;
+  /// `row` written as row `i` of each array kept.
+  void put(std::size_t i, const ExactMotionRow& row) const;
+};
+
 /// exact_motion_at's rows handed to `row(n, state)` one at a time, in the order of `times`, as
 /// they are made (the same checks and throws; rows before a throw have been handed over): for a
 /// caller that stores them elsewhere (bookspin.exact_motion writes them straight into its numpy
