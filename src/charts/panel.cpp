@@ -186,10 +186,49 @@ PixelRect panel_rect(int width, int height) {
   return {left, margin, width - left - margin, height - 2 * margin};
 }
 
+PanelLayout panel_layout(const PixelRect& rect, const std::vector<overlay::PlotSpec>& plots) {
+  overlay::CairoCanvas measure(1, 1);
+  cairo_t* cr = measure.cr();
+  const double inset = 0.01 * rect.height;
+  const double width = rect.width - 2 * inset, height = rect.height - 2 * inset;
+  // Below about 100 px a plot has no room for its ticks and labels.
+  if (!(width >= 100) || !(height >= 100)) return {};
+  // The smallest text: kMinFont in a panel as wide as a 960 × 540 frame's (360 px inside) and
+  // wider; a narrower panel (a smaller clip) scales it down with its width, to 9 px at most
+  // 270 px wide, so that its plots' titles and legends still fit it.
+  const double least = std::clamp(overlay::kMinFont * width / 360.0, 9.0, overlay::kMinFont);
+  for (std::size_t n = plots.size(); n > 0; --n) {
+    PanelLayout out;
+    out.font = std::clamp(height / static_cast<double>(n) / 22.0, least, 18.0);
+    out.plots.assign(plots.begin(), plots.begin() + static_cast<std::ptrdiff_t>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+      out.plots[i].font = out.font;
+      out.plots[i].x_axis_text = i + 1 == n;  // one time axis, under the lowest plot
+    }
+    overlay::align_left_margins(cr, height, out.plots);
+    std::vector<double> frames;
+    double frame_total = 0;
+    for (const auto& p : out.plots) {
+      frames.push_back(overlay::plot_frame_height(cr, width, p, out.font));
+      frame_total += frames.back();
+    }
+    const double area = (height - frame_total) / static_cast<double>(n);
+    if (area < kPanelMinPlotFonts * out.font) continue;
+    double y = rect.y + inset;
+    for (std::size_t i = 0; i < n; ++i) {
+      out.rects.push_back({rect.x + inset, y, width, frames[i] + area});
+      y += frames[i] + area;
+    }
+    return out;
+  }
+  return {};
+}
+
 void draw_panel(RgbaImage& image, const PixelRect& rect,
                 const std::vector<overlay::PlotSpec>& plots) {
-  // Below about 100 px a plot has no room for its ticks and labels: better none than a smudge.
-  if (plots.empty() || rect.width < 100 || rect.height < 100) return;
+  const PanelLayout layout = panel_layout(rect, plots);
+  // Where not even one plot fits: better none than a smudge.
+  if (layout.plots.empty()) return;
   // Only the panel's pixels: its cost per frame is its own area, not the frame's.
   overlay::CairoCanvas canvas(image.width, image.height,
                               overlay::region_around(rect.x, rect.y, rect.width, rect.height, 2.0,
@@ -198,13 +237,9 @@ void draw_panel(RgbaImage& image, const PixelRect& rect,
   cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
   cairo_set_source_rgba(cr, 0.98, 0.98, 0.97, 0.9);
   cairo_fill(cr);
-  const double inset = 0.01 * rect.height;
-  const double each = (rect.height - 2 * inset) / plots.size();
-  std::vector<overlay::PlotSpec> aligned = plots;
-  overlay::align_left_margins(cr, each, aligned);
-  for (std::size_t i = 0; i < aligned.size(); ++i) {
-    overlay::draw_plot(cr, rect.x + inset, rect.y + inset + i * each, rect.width - 2 * inset, each,
-                       aligned[i]);
+  for (std::size_t i = 0; i < layout.plots.size(); ++i) {
+    const PixelRect& r = layout.rects[i];
+    overlay::draw_plot(cr, r.x, r.y, r.width, r.height, layout.plots[i]);
   }
   canvas.composite_onto(image);
 }
@@ -312,7 +347,6 @@ RgbaImage plot_sheet(const std::vector<std::string>& header,
   y += 0.6 * font;
   const double each = plots.empty() ? 0 : (height - y) / plots.size();
   std::vector<overlay::PlotSpec> aligned = plots;
-  for (overlay::PlotSpec& p : aligned) p.min_font = std::max(p.min_font, overlay::kChartMinFont);
   overlay::align_left_margins(cr, each, aligned);
   for (std::size_t i = 0; i < aligned.size(); ++i)
     overlay::draw_plot(cr, 0, y + i * each, width, each, aligned[i]);

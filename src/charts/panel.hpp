@@ -28,7 +28,25 @@ std::vector<overlay::PlotSpec> panel_plots(const std::vector<PanelRun>& runs, do
 /// The panel column of a width×height frame: the right (1 − kBookShare) of it, inset.
 PixelRect panel_rect(int width, int height);
 
-/// Draws the plots stacked in `rect` of `image`, on a light translucent background.
+/// The plots of a panel as drawn in its rectangle: one text size for all, at least
+/// overlay::kMinFont (12 px) in a panel 360 px wide or wider (a 960 × 540 frame's), scaled
+/// down with a narrower panel's width to 9 px; one time axis, named under the lowest plot only;
+/// each plot area at least kPanelMinPlotFonts text sizes high and all of them equally high. Plots
+/// that would not fit so are left out from the last (the first, ω, is the one a panel is for).
+struct PanelLayout {
+  std::vector<overlay::PlotSpec> plots;  ///< those kept, their font and left margins set
+  std::vector<PixelRect> rects;          ///< where each is drawn (pixels of the frame)
+  double font = 0;                       ///< their text size, pixels
+};
+
+/// The least height of a panel's plot area, in text sizes.
+inline constexpr double kPanelMinPlotFonts = 3.0;
+
+/// Lays `plots` out stacked in `rect` (pixels); no plots where not even the first fits.
+PanelLayout panel_layout(const PixelRect& rect, const std::vector<overlay::PlotSpec>& plots);
+
+/// Draws the plots stacked in `rect` of `image` as panel_layout lays them out, on a light
+/// translucent background.
 void draw_panel(RgbaImage& image, const PixelRect& rect,
                 const std::vector<overlay::PlotSpec>& plots);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "overlay/caption.hpp"
 #include "physics/polhode.hpp"
 
 namespace bookspin::charts {
@@ -68,12 +69,12 @@ PixelRect sphere_rect(int width, int height, double book_width, int caption_line
   (void)width;
   const double side = std::min(0.45 * height, 0.42 * book_width);
   const double margin = 0.012 * std::min(width, height);
-  double top = std::max(margin, 0.19 * height);  // below a three-line caption
-  if (caption_lines > 3) {
-    // overlay/caption.cpp's box: margin and padding 0.6 font sizes, lines 1.35 apart.
-    const double font = std::max(10.0, 0.026 * height);
-    top = std::max(top + (caption_lines - 3) * 1.35 * font, (1.2 + 1.35 * caption_lines) * font);
-  }
+  // Below the caption: 0.19·height under three lines, a line height lower for each more, and
+  // at least under its box (a margin of 0.6 font sizes above it).
+  const double font = overlay::default_caption_font(height);
+  const double top = std::max(
+      {margin, 0.19 * height + std::max(0, caption_lines - 3) * 1.35 * font,
+       0.6 * font + overlay::caption_height(static_cast<std::size_t>(caption_lines), font)});
   return {margin, top, side, side};
 }
 

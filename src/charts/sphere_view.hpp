@@ -38,7 +38,7 @@ std::vector<overlay::SphereTrail> sphere_trails(const std::vector<SphereRun>& ru
 /// (the whole width, or the part left of the panel): at the left edge, below the caption,
 /// above the divergence banner; side min(0.45·height, 0.42·book_width). Its top is 0.19·height,
 /// below a caption of three lines; each of `caption_lines` beyond three moves it down by the
-/// caption's line height (1.35 font sizes, the font max(10, 0.026·height) px), and at least
+/// caption's line height (1.35 font sizes, the font overlay::default_caption_font), and at least
 /// to the bottom of their box.
 PixelRect sphere_rect(int width, int height, double book_width, int caption_lines = 3);
 

@@ -32,7 +32,7 @@ class ComparisonComposer final : public Composer {
   /// decorate() gives them, from the top margin).
   render::RenderSettings picture_settings(const scene::Scene& first_tile) const override {
     const double font = largest_tile_font(scene_.render.height);
-    const double caption_bottom = 0.4 * font + overlay::caption_height(3, font);
+    const double caption_bottom = 0.4 * font + overlay::caption_height(3, font, keyed());
     return render_settings_for(first_tile, layout_.tile_width, layout_.tile_height, 1.0, 0.0,
                                std::min(0.5, caption_bottom / layout_.tile_height));
   }
@@ -64,8 +64,10 @@ class ComparisonComposer final : public Composer {
     if (plots) {
       std::vector<charts::PanelRun> runs;
       for (const auto& p : tiles) runs.emplace_back(p->scene, p->shown.history, p->scene.title);
-      charts::draw_panel(frame, *plots,
-                         charts::panel_plots(runs, charts::clip_end_time(scene_), t));
+      // The tiles' captions carry each run's colour and dash: the panel needs no legend.
+      auto specs = charts::panel_plots(runs, charts::clip_end_time(scene_), t);
+      for (overlay::PlotSpec& spec : specs) spec.legend = false;
+      charts::draw_panel(frame, *plots, specs);
     }
     overlay::draw_title_strip(frame, layout_.header, scene_.title, t);
     // One font size for every tile (the largest at which every caption fits its tile), so
@@ -76,10 +78,16 @@ class ComparisonComposer final : public Composer {
       font = overlay::caption_font_size(tile_caption(*p), font, max_width);
     for (std::size_t i = 0; i < tiles.size(); ++i) {
       const PixelRect& tile = layout_.tiles[i];
-      overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width};
+      overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width, {}};
+      // Palette order, odd runs dashed, as charts/panel.cpp draws the runs.
+      if (keyed()) caption.key = overlay::CaptionKey{palette_colour(i), i % 2 == 1};
       overlay::draw_caption(frame, tile_caption(*tiles[i]), caption);
     }
   }
+
+  /// Whether the tiles' captions are keyed to their runs' colours: where the runs are drawn in
+  /// colours (the panel's curves, the sphere's trails).
+  bool keyed() const { return scene_.render.panel || scene_.render.sphere; }
 
   /// The tiles' caption font before it shrinks to fit their widths (pixels).
   double largest_tile_font(int frame_height) const {

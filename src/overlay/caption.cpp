@@ -10,7 +10,7 @@ namespace bookspin::overlay {
 
 namespace {
 
-double font_size_for(const RgbaImage& image) { return std::max(10.0, 0.026 * image.height); }
+double font_size_for(const RgbaImage& image) { return default_caption_font(image.height); }
 
 double text_width(cairo_t* cr, const std::string& text) {
   cairo_text_extents_t extents;
@@ -49,7 +49,11 @@ double font_size_within(cairo_t* cr, const std::vector<CaptionLine>& lines, doub
 /// Where a caption's box goes and how large its text is (pixels).
 struct CaptionBox {
   double size = 0, pad = 0, line_height = 0, x = 0, y = 0, width = 0, height = 0;
+  double key_gap = 0;  ///< room under the first line for a key (CaptionLayout::key)
 };
+
+/// The room a key takes under a caption's first line, in font sizes.
+constexpr double kKeyGap = 0.5;
 
 CaptionBox caption_box(cairo_t* cr, int image_height, const std::vector<CaptionLine>& lines,
                        const CaptionLayout& layout) {
@@ -59,7 +63,8 @@ CaptionBox caption_box(cairo_t* cr, int image_height, const std::vector<CaptionL
   box.pad = 0.6 * box.size, box.line_height = 1.35 * box.size;
   box.x = layout.x > 0 ? layout.x : box.pad, box.y = layout.y > 0 ? layout.y : box.pad;
   box.width = widest_line(cr, lines, box.size) + 2 * box.pad;
-  box.height = caption_height(lines.size(), box.size);
+  box.height = caption_height(lines.size(), box.size, layout.key.has_value());
+  box.key_gap = layout.key ? kKeyGap * box.size : 0.0;
   return box;
 }
 
@@ -74,6 +79,7 @@ void draw_caption_lines(cairo_t* cr, const std::vector<CaptionLine>& lines, std:
                         std::size_t last, const CaptionBox& box) {
   double baseline = box.y + box.pad / 2 + box.size;
   for (std::size_t i = 0; i < last; ++i, baseline += box.line_height) {
+    if (i == 1) baseline += box.key_gap;
     if (i < first) continue;
     const CaptionLine& line = lines[i];
     select_overlay_font(cr, line.bold, box.size);
@@ -92,13 +98,35 @@ void draw_caption_box(cairo_t* cr, const std::vector<CaptionLine>& lines, const 
   draw_caption_lines(cr, lines, 0, lines.size(), box);
 }
 
+/// The key's line under the first line's baseline, across the box's text width, in the
+/// line width and dash pattern of a plot's curves at this size (overlay/plot.cpp), on a strip
+/// of the panel's paper (charts/panel.cpp), so that dark colours show as in the plots.
+void draw_key(cairo_t* cr, const CaptionKey& key, const CaptionBox& box) {
+  // Midway between the first line's descenders (0.24 font sizes under its baseline) and the
+  // second line's capitals.
+  const double y = box.y + box.pad / 2 + box.size + 0.66 * box.size;
+  const double width = std::max(1.5, 0.15 * box.size);
+  const double left = box.x + box.pad, right = box.x + box.width - box.pad;
+  cairo_rectangle(cr, left - 2 * width, y - 1.5 * width, right - left + 4 * width, 3 * width);
+  cairo_set_source_rgba(cr, 0.98, 0.98, 0.97, 0.9);
+  cairo_fill(cr);
+  cairo_set_source_rgb(cr, key.colour.r, key.colour.g, key.colour.b);
+  cairo_set_line_width(cr, width);
+  const double dash[] = {4 * width, 2.5 * width};
+  cairo_set_dash(cr, dash, key.dashed ? 2 : 0, 0);
+  cairo_move_to(cr, left, y);
+  cairo_line_to(cr, right, y);
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0);
+}
+
 bool operator==(const CaptionLine& a, const CaptionLine& b) {
   return a.text == b.text && a.style == b.style && a.bold == b.bold;
 }
 
 bool operator==(const CaptionBox& a, const CaptionBox& b) {
   return a.size == b.size && a.pad == b.pad && a.line_height == b.line_height && a.x == b.x &&
-         a.y == b.y && a.width == b.width && a.height == b.height;
+         a.y == b.y && a.width == b.width && a.height == b.height && a.key_gap == b.key_gap;
 }
 
 /// How many leading lines `a` and `b` share.
@@ -110,8 +138,9 @@ std::size_t common_lines(const std::vector<CaptionLine>& a, const std::vector<Ca
 
 }  // namespace
 
-double caption_height(std::size_t lines, double font_size) {
-  return static_cast<double>(lines) * 1.35 * font_size + 0.6 * font_size;
+double caption_height(std::size_t lines, double font_size, bool keyed) {
+  return static_cast<double>(lines) * 1.35 * font_size + 0.6 * font_size +
+         (keyed ? kKeyGap * font_size : 0.0);
 }
 
 double default_caption_font(int image_height) { return std::max(10.0, 0.026 * image_height); }
@@ -130,6 +159,7 @@ void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines,
       image.width, image.height,
       region_around(box.x, box.y, box.width, box.height, 2.0, image.width, image.height));
   draw_caption_box(canvas.cr(), lines, box);
+  if (layout.key) draw_key(canvas.cr(), *layout.key, box);
   canvas.composite_onto(image);
 }
 

@@ -3,9 +3,11 @@
 #include <cairo.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/colour.hpp"
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 
@@ -20,15 +22,24 @@ struct CaptionLine {
 };
 
 /// Draws `lines` in a translucent dark box at the top-left corner of `image` (RGBA, top row
-/// first). The font size scales with the image height (about 2.6% of it, at least 10 px).
+/// first). The font size scales with the image height (about 2.6% of it, at least 10 px: 12 px and
+/// more from a frame 462 px high).
 void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines);
+
+/// A line across a caption under its first line, drawn as a run's curves are in the plots
+/// (its colour, dashed or not): the caption of a comparison's tile is then that run's legend.
+struct CaptionKey {
+  Rgb colour;
+  bool dashed = false;
+};
 
 /// Where and how large a caption is drawn (pixels); zeros keep the defaults of
 /// draw_caption(image, lines).
 struct CaptionLayout {
-  double x = 0, y = 0;   ///< top-left corner of the box (0, 0: a margin of 0.6 font sizes)
-  double font_size = 0;  ///< 0: 2.6% of the image height, at least 10
-  double max_width = 0;  ///< widest box allowed; the font shrinks to fit (0: no limit)
+  double x = 0, y = 0;            ///< top-left corner of the box (0, 0: a margin of 0.6 font sizes)
+  double font_size = 0;           ///< 0: 2.6% of the image height, at least 10
+  double max_width = 0;           ///< widest box allowed; the font shrinks to fit (0: no limit)
+  std::optional<CaptionKey> key;  ///< none: no line
 };
 
 /// Same, placed and sized by `layout`.
@@ -57,9 +68,10 @@ class CaptionPainter {
 };
 
 /// The height (pixels) of the box draw_caption draws for `lines` lines at `font_size`: 1.35
-/// font sizes a line and 0.6 of padding; its bottom is the box's top (CaptionLayout::y, or 0.6
+/// font sizes a line and 0.6 of padding, and half a font size more under the first line where
+/// it is `keyed` (CaptionLayout::key); its bottom is the box's top (CaptionLayout::y, or 0.6
 /// font sizes by default) plus this.
-double caption_height(std::size_t lines, double font_size);
+double caption_height(std::size_t lines, double font_size, bool keyed = false);
 
 /// The default caption's font size (pixels) in an image `image_height` pixels high.
 double default_caption_font(int image_height);

@@ -18,6 +18,7 @@ namespace {
 struct Axis {
   double lo = 0, hi = 1;
   bool log = false;
+  double intervals = 5;  ///< about how many tick intervals span it (linear axes)
   double map(double v, double a, double b) const {  // value → pixel in [a, b]
     const double f = log ? (std::log10(v) - lo) / (hi - lo) : (v - lo) / (hi - lo);
     return a + f * (b - a);
@@ -80,11 +81,27 @@ Axis fit_y(const PlotSpec& spec) {
   return fit_axis(spec.series, false, spec.log_y, spec.min_y_span);
 }
 
-double nice_step(double span) {
-  const double raw = span / 5.0, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+double nice_step(double span, double intervals) {
+  const double raw = span / intervals, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
   for (double m : {1.0, 2.0, 5.0, 10.0})
     if (m * magnitude >= raw) return m * magnitude;
   return 10.0 * magnitude;
+}
+
+/// The ticks of a linear axis `step` apart within it.
+std::vector<double> linear_ticks(const Axis& a, double step) {
+  std::vector<double> out;
+  if (!(step > 0.0) || !std::isfinite(step)) return out;
+  // Counted, not summed: the k-th tick is k × step, and at most kMaxTicks of them, so that
+  // a step lost in rounding next to huge values cannot loop forever.
+  constexpr int kMaxTicks = 50;
+  const double first = std::ceil(a.lo / step - 1e-9);  // an end on a tick keeps it
+  for (int i = 0; i < kMaxTicks; ++i) {
+    const double v = (first + i) * step;
+    if (!(v <= a.hi + 1e-9 * step) || (!out.empty() && !(v > out.back()))) break;
+    out.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  }
+  return out;
 }
 
 std::vector<double> ticks(const Axis& a) {
@@ -95,18 +112,12 @@ std::vector<double> ticks(const Axis& a) {
       out.push_back(std::pow(10.0, e));
     return out;
   }
-  const double step = nice_step(a.hi - a.lo);
-  if (!(step > 0.0) || !std::isfinite(step)) return out;
-  // Counted, not summed: the k-th tick is k × step, and at most kMaxTicks of them, so that
-  // a step lost in rounding next to huge values cannot loop forever.
-  constexpr int kMaxTicks = 50;
-  const double first = std::ceil(a.lo / step);
-  for (int i = 0; i < kMaxTicks; ++i) {
-    const double v = (first + i) * step;
-    if (!(v <= a.hi + 1e-9 * step) || (!out.empty() && !(v > out.back()))) break;
-    out.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  // At least two ticks, so that the axis has a scale: a short axis of few intervals may
+  // round its step up past the span's half (±2.4 in two intervals: a step of 5).
+  for (double intervals = a.intervals;; intervals += 1.0) {
+    out = linear_ticks(a, nice_step(a.hi - a.lo, intervals));
+    if (out.size() >= 2 || intervals >= 10.0) return out;
   }
-  return out;
 }
 
 std::string tick_label(double v, bool log) {
@@ -378,28 +389,50 @@ double y_tick_width(cairo_t* cr, const Axis& ay) {
   return widest;
 }
 
+/// The rotated y label as drawn in a plot `height` pixels tall: one line, or where that is
+/// longer than the plot is tall, the quantity and its unit ("ω (rad / time unit)": "ω" and
+/// "(rad / time unit)") on two.
+std::vector<std::string> y_label_lines(cairo_t* cr, const PlotSpec& spec, double height,
+                                       double font) {
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, spec.y_label.c_str(), &e);
+  const std::size_t unit = spec.y_label.rfind(" (");
+  if (e.x_advance <= height - font || unit == std::string::npos || unit == 0) return {spec.y_label};
+  return {spec.y_label.substr(0, unit), spec.y_label.substr(unit + 1)};
+}
+
 /// Room for the rotated y label and the tick labels: wide labels (2e+13) push the axis right.
-double left_margin(cairo_t* cr, const PlotSpec& spec, const Axis& ay, double font) {
-  return std::max({5.2 * font, 2.4 * font + y_tick_width(cr, ay), spec.left_margin});
+double left_margin(cairo_t* cr, const PlotSpec& spec, const Axis& ay, double height, double font) {
+  const double label =
+      1.2 * font * static_cast<double>(y_label_lines(cr, spec, height, font).size());
+  return std::max(
+      {4.0 * font + label, 1.2 * font + label + y_tick_width(cr, ay), spec.left_margin});
+}
+
+/// Pixels below the plot area: the x tick labels and the x label, or room for the lowest y
+/// tick label's lower half where the axis has no text.
+double bottom_margin(const PlotSpec& spec, double font) {
+  return (spec.x_axis_text ? 3.2 : 0.6) * font;
 }
 
 Area layout(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec,
             const Axis& ay, double font) {
   const bool right = spec.legend && spec.legend_placement == LegendPlacement::right;
   const double legend_width = right ? legend_box_width(cr, spec, font) + 0.8 * font : 0.0;
-  Area a{x + left_margin(cr, spec, ay, font), x + width - 1.4 * font - legend_width, 0,
-         y + height - 3.2 * font, font};
+  Area a{x + left_margin(cr, spec, ay, height, font), x + width - 1.4 * font - legend_width, 0,
+         y + height - bottom_margin(spec, font), font};
   a.y0 =
       y + (spec.title.empty() ? 0.8 : 2.0) * font + top_legend_height(cr, spec, a.x0, a.x1, font);
   return a;
 }
 
-void draw_grid(cairo_t* cr, const Axis& ax, const Axis& ay, const Area& a) {
+void draw_grid(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay, const Area& a) {
   cairo_set_line_width(cr, 1);
   for (double t : ticks(ax)) {
     const double px = ax.map(t, a.x0, a.x1);
     cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
     cairo_move_to(cr, px, a.y0), cairo_line_to(cr, px, a.y1), cairo_stroke(cr);
+    if (!spec.x_axis_text) continue;
     cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
     text_at(cr, tick_label(t, ax.log), px, a.y1 + 1.25 * a.font, 0.5, 0);
   }
@@ -456,17 +489,30 @@ void draw_data(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay
   }
 }
 
-void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, const Area& a) {
+void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, double width, double height,
+                 const Area& a) {
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-  text_at(cr, spec.x_label, 0.5 * (a.x0 + a.x1), a.y1 + 2.6 * a.font, 0.5, 0);
-  cairo_save(cr);
-  cairo_translate(cr, x + 1.3 * a.font, 0.5 * (a.y0 + a.y1));
-  cairo_rotate(cr, -M_PI / 2);
-  text_at(cr, spec.y_label, 0, 0, 0.5, 0);
-  cairo_restore(cr);
+  if (spec.x_axis_text) text_at(cr, spec.x_label, 0.5 * (a.x0 + a.x1), a.y1 + 2.6 * a.font, 0.5, 0);
+  const auto y_lines = y_label_lines(cr, spec, height, a.font);
+  for (std::size_t i = 0; i < y_lines.size(); ++i) {
+    cairo_save(cr);
+    cairo_translate(cr, x + (1.3 + 1.2 * static_cast<double>(i)) * a.font, 0.5 * (a.y0 + a.y1));
+    cairo_rotate(cr, -M_PI / 2);
+    text_at(cr, y_lines[i], 0, 0, 0.5, 0);
+    cairo_restore(cr);
+  }
   if (!spec.title.empty()) {
+    // Centred over the plot area; where that runs past the plot's sides, over the plot, and
+    // where the plot is narrower than the title, smaller.
     select_overlay_font(cr, true, a.font);
-    text_at(cr, spec.title, 0.5 * (a.x0 + a.x1), y + 1.3 * a.font, 0.5, 0);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, spec.title.c_str(), &e);
+    double centre = 0.5 * (a.x0 + a.x1);
+    const double room = width - a.font;
+    if (e.x_advance > 2.0 * std::min(centre - x, x + width - centre) - a.font)
+      centre = x + 0.5 * width;
+    if (e.x_advance > room && room > 0) select_overlay_font(cr, true, a.font * room / e.x_advance);
+    text_at(cr, spec.title, centre, y + 1.3 * a.font, 0.5, 0);
     select_overlay_font(cr, false, a.font);
   }
   if (!spec.legend || spec.series.empty()) return;
@@ -478,18 +524,25 @@ void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, const Ar
   }
 }
 
-/// A plot's text size (pixels) for its height, at least spec.min_font, at most 18.
-double font_for(double height, const PlotSpec& spec) {
-  return std::clamp(height / 22.0, spec.min_font, std::max(18.0, spec.min_font));
-}
-
 }  // namespace
 
-double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec) {
-  const double font = font_for(height, spec);
+double plot_font(double height, const PlotSpec& spec) {
+  return spec.font > 0 ? spec.font : std::clamp(height / 22.0, kMinFont, 18.0);
+}
+
+double plot_frame_height(cairo_t* cr, double width, const PlotSpec& spec, double font) {
   cairo_save(cr);
   select_overlay_font(cr, false, font);
-  const double left = left_margin(cr, spec, fit_y(spec), font);
+  const Area a = layout(cr, 0, 0, width, 0, spec, fit_y(spec), font);
+  cairo_restore(cr);
+  return a.y0 - a.y1;  // drawn 0 pixels tall: the top's rows above the bottom's
+}
+
+double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec) {
+  const double font = plot_font(height, spec);
+  cairo_save(cr);
+  select_overlay_font(cr, false, font);
+  const double left = left_margin(cr, spec, fit_y(spec), height, font);
   cairo_restore(cr);
   return left;
 }
@@ -501,7 +554,7 @@ void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots
 }
 
 void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec) {
-  const double font = font_for(height, spec);
+  const double font = plot_font(height, spec);
   cairo_save(cr);
   if (spec.background_alpha > 0) {
     cairo_rectangle(cr, x, y, width, height);
@@ -509,11 +562,14 @@ void draw_plot(cairo_t* cr, double x, double y, double width, double height, con
     cairo_fill(cr);
   }
   select_overlay_font(cr, false, font);
-  const Axis ax = fit_x(spec), ay = fit_y(spec);
+  const Axis ax = fit_x(spec);
+  Axis ay = fit_y(spec);
   const Area area = layout(cr, x, y, width, height, spec, ay, font);
-  draw_grid(cr, ax, ay, area);
+  // y ticks at least 2.4 text heights apart: a short plot gets fewer (2 … 5 intervals).
+  ay.intervals = std::clamp((area.y1 - area.y0) / (2.4 * font), 2.0, 5.0);
+  draw_grid(cr, spec, ax, ay, area);
   draw_data(cr, spec, ax, ay, area);
-  draw_labels(cr, spec, x, y, area);
+  draw_labels(cr, spec, x, y, width, height, area);
   cairo_restore(cr);
 }
 
@@ -521,9 +577,7 @@ RgbaImage plot_image(const PlotSpec& spec, int width, int height) {
   RgbaImage image(width, height);
   std::fill(image.pixels.begin(), image.pixels.end(), 255);
   CairoCanvas canvas(width, height);
-  PlotSpec chart = spec;  // a chart, shown at its own size: its text readable there
-  chart.min_font = std::max(chart.min_font, kChartMinFont);
-  draw_plot(canvas.cr(), 0, 0, width, height, chart);
+  draw_plot(canvas.cr(), 0, 0, width, height, spec);
   canvas.composite_onto(image);
   return image;
 }

@@ -57,19 +57,25 @@ struct PlotSpec {
   /// Pixels left of the plot area, at least: stacked plots share the largest, so their
   /// time axes line up (see plot_left_margin).
   double left_margin = 0.0;
-  /// The smallest text, pixels (the text grows with the plot's height up to 18): 9 in a
-  /// clip's panel, whose frame size decides what is readable; kChartMinFont in a chart shown
-  /// at its own size (plot_image, charts::plot_sheet).
-  double min_font = 9.0;
+  /// Text size, pixels; 0: from the plot's height (plot_font). Plots stacked in a panel share
+  /// one.
+  double font = 0.0;
+  /// Whether the x axis has its tick labels and label. False: a plot stacked above another
+  /// that shares its x axis (a panel's time axis), which names it once at the bottom.
+  bool x_axis_text = true;
 };
 
-/// The smallest text of a chart shown at its own size (a PNG the gallery shows unscaled):
-/// 12 px (docs/outputs.md, "Pictures").
-inline constexpr double kChartMinFont = 12.0;
+/// The text size (pixels) of `spec` drawn `height` pixels tall: spec.font where set, else
+/// height/22 within kMinFont (cairo_canvas.hpp) … 18.
+double plot_font(double height, const PlotSpec& spec);
 
-/// Draws `spec` into the rectangle (x, y, width, height) of `cr` (pixels). Text scales with
-/// the height (height/22, 9 … 18 px).
+/// Draws `spec` into the rectangle (x, y, width, height) of `cr` (pixels), its text
+/// plot_font(height, spec) pixels high.
 void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec);
+
+/// The pixels of a plot `width` wide with text `font` pixels high that are not its plot
+/// area: the title and legend rows above it, the x axis's text below it.
+double plot_frame_height(cairo_t* cr, double width, const PlotSpec& spec, double font);
 
 /// The pixels left of the plot area that draw_plot needs for `spec` drawn `height` pixels
 /// tall (the rotated y label and the widest y tick label).
@@ -78,7 +84,7 @@ double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec);
 /// Sets every plot's left_margin to the largest any of them needs at `height` pixels tall.
 void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots);
 
-/// Draws `spec` on a white width×height image: a chart, its text at least kChartMinFont.
+/// Draws `spec` on a white width×height image: a chart.
 RgbaImage plot_image(const PlotSpec& spec, int width, int height);
 
 /// bookspin::palette_colour (common/colour.hpp) as the three channels a Series holds.

@@ -20,8 +20,46 @@ struct View {
   double cx, cy, scale;  // pixels: the centre of the ellipsoid and pixels per length unit
 };
 
-double title_height(const PixelRect& rect) { return 0.1 * rect.height; }
-double font_for(const PixelRect& rect) { return std::max(9.0, 0.052 * rect.height); }
+/// The title's text size (pixels), 0.052 of the inset's height; the labels at 0.85 of it, at
+/// least kMinFont in an inset 240 px high or higher (a 960 × 540 frame's), scaled down with a
+/// smaller one's height to 9 px.
+double font_for(const PixelRect& rect) {
+  return std::max({9.0, 0.052 * rect.height, std::min(kMinFont / 0.85, rect.height / 17.0)});
+}
+double title_height(const PixelRect& rect) {
+  return std::max(0.1 * rect.height, 1.9 * font_for(rect));
+}
+
+struct LegendItem {
+  const char* text;
+  double r, g, b;
+};
+constexpr LegendItem kLegend[] = {{"polhode", 0.0, 0.55, 0.25},
+                                  {"herpolhode", 0.05, 0.25, 0.75},
+                                  {"invariable plane", 0.35, 0.45, 0.60}};
+
+/// The legend's items in rows that fit the inset's width, from the top row (indices into
+/// kLegend), measured at 0.85 of the title's font.
+std::vector<std::vector<int>> legend_rows(const PixelRect& rect) {
+  CairoCanvas measure(1, 1);
+  cairo_t* cr = measure.cr();
+  const double font = font_for(rect), left = rect.x + 0.04 * rect.width;
+  select_overlay_font(cr, false, 0.85 * font);
+  std::vector<std::vector<int>> rows(1);
+  double x = left;
+  for (int i = 0; i < 3; ++i) {
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr, kLegend[i].text, &ext);
+    if (!rows.back().empty() && x + ext.x_advance > rect.right() - 0.04 * rect.width)
+      rows.emplace_back(), x = left;
+    rows.back().push_back(i);
+    x += ext.x_advance + 0.9 * font;
+  }
+  return rows;
+}
+
+/// The legend's line height, pixels.
+double legend_line(const PixelRect& rect) { return 1.25 * 0.85 * font_for(rect); }
 
 View view_of(const PoinsotSpec& spec, const PixelRect& rect) {
   View v;
@@ -34,8 +72,10 @@ View view_of(const PoinsotSpec& spec, const PixelRect& rect) {
   const double a_max = spec.semi_axes.colwise().norm().maxCoeff();
   const double half_width = 1.08 * std::max(a_max, spec.plane_radius);
   const double top = rect.y + 1.25 * title_height(rect);
-  const double bottom = rect.y + rect.height - 0.09 * rect.height;  // the legend below
-  const double span_up = spec.plane_distance + 0.45 * a_max;        // room for the L arrow
+  // The legend below: its rows above the last, which is where one row alone would be.
+  const double legend = static_cast<double>(legend_rows(rect).size() - 1) * legend_line(rect);
+  const double bottom = rect.y + rect.height - 0.09 * rect.height - legend;
+  const double span_up = spec.plane_distance + 0.45 * a_max;  // room for the L arrow
   const double span_down = 1.05 * a_max;
   v.scale = std::min(0.5 * rect.width / half_width, (bottom - top) / (span_up + span_down));
   v.cx = rect.x + 0.5 * rect.width;
@@ -256,15 +296,18 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
   label(cr, spec.title, rect.x + 0.5 * (rect.width - ext.x_advance),
         rect.y + 0.75 * title_height(rect), 0.1, 0.1, 0.1);
   select_overlay_font(cr, false, 0.85 * font);
-  const double y = rect.y + rect.height - 0.03 * rect.height;
-  const std::string polhode = "polhode", herpolhode = "herpolhode", plane = "invariable plane";
-  double x = rect.x + 0.04 * rect.width;
-  for (const auto& [text, r, g, b] :
-       {std::tuple{polhode, 0.0, 0.55, 0.25}, std::tuple{herpolhode, 0.05, 0.25, 0.75},
-        std::tuple{plane, 0.35, 0.45, 0.60}}) {
-    label(cr, text, x, y, r, g, b);
-    cairo_text_extents(cr, text.c_str(), &ext);
-    x += ext.x_advance + 0.9 * font;
+  const auto rows = legend_rows(rect);
+  double y = rect.y + rect.height - 0.03 * rect.height -
+             static_cast<double>(rows.size() - 1) * legend_line(rect);
+  for (const auto& row : rows) {
+    double x = rect.x + 0.04 * rect.width;
+    for (int i : row) {
+      const LegendItem& item = kLegend[i];
+      label(cr, item.text, x, y, item.r, item.g, item.b);
+      cairo_text_extents(cr, item.text, &ext);
+      x += ext.x_advance + 0.9 * font;
+    }
+    y += legend_line(rect);
   }
   canvas.composite_onto(image);
 }

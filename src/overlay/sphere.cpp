@@ -26,8 +26,15 @@ Basis basis_of(const SphereSpec& spec) {
   return b;
 }
 
-double title_height(const PixelRect& rect) { return 0.1 * rect.height; }
-double font_for(const PixelRect& rect) { return std::max(9.0, 0.052 * rect.height); }
+/// The title's text size (pixels), 0.052 of the inset's height; the labels at 0.85 of it, at
+/// least kMinFont in an inset 240 px high or higher (a 960 × 540 frame's), scaled down with a
+/// smaller one's height to 9 px.
+double font_for(const PixelRect& rect) {
+  return std::max({9.0, 0.052 * rect.height, std::min(kMinFont / 0.85, rect.height / 17.0)});
+}
+double title_height(const PixelRect& rect) {
+  return std::max(0.1 * rect.height, 1.9 * font_for(rect));
+}
 
 using Polyline = std::vector<Eigen::Vector2d>;
 

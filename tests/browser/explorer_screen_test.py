@@ -18,10 +18,14 @@ screenshots kept as the test's artefacts (BINARY_DIR/test-output/browser/screen-
     under 12 px nor past the panel's sides, and every number of their tables at its precision
     (web/src/precision.js): a value ± σ with σ at two significant digits and the value at σ's
     decimal place; a number alone at four significant digits at most (the flights' times to
-    the millisecond).
+    the millisecond);
+  - every tick label of the page's plots at its axis's precision: a multiple of the axis's
+    round step ("1-2-5"), with no more decimals than the step has (0.02: two; 5e-4 written
+    "5e-4"), and the labels of one axis all different.
 
 Usage: explorer_screen_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 """
+import math
 import time
 
 from browser import (console_errors, fail, find_browser, open_browser, require, run, test_arguments,
@@ -112,6 +116,40 @@ def check_texts(driver, where, problems):
     return texts
 
 
+def step_decimals(step):
+    """The decimals a round step m·10^k (m = 1, 2 or 5) has: max(0, −k)."""
+    return max(0, -math.floor(math.log10(step) + 1e-9))
+
+
+def tick_problems(labels):
+    """Each drawn tick label {axis, value, step, text} past its axis's precision, as text."""
+    bad, seen = [], {}
+    for t in labels:
+        text, value, step, axis = t["text"], t["value"], t["step"], t["axis"]
+        if step <= 0:
+            continue
+        try:
+            shown = float(text)
+        except ValueError:
+            bad.append(f"{axis}: tick {text!r} is not a number")
+            continue
+        if abs(shown - value) > 1e-6 * step:
+            bad.append(f"{axis}: tick {text!r} does not show its value {value!r}")
+        if abs(value / step - round(value / step)) > 1e-6:
+            bad.append(f"{axis}: tick {text!r} is not a multiple of its step {step:g}")
+        if "e" in text:  # m.mmm e k: the mantissa's decimals down to the step's leading digit
+            mantissa, exponent = text.split("e")
+            decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+            if decimals > int(exponent) - math.floor(math.log10(step) + 1e-9):
+                bad.append(f"{axis}: tick {text!r} has more digits than its step {step:g}")
+        elif "." in text and len(text.split(".")[1]) > step_decimals(step):
+            bad.append(f"{axis}: tick {text!r} has more decimals than its step {step:g}")
+        if text in seen.setdefault(axis, set()):
+            bad.append(f"{axis}: tick {text!r} twice")
+        seen[axis].add(text)
+    return bad
+
+
 def check_case(driver, page, shots, screen, case, problems):
     name, query, t = case
     where = f"{name} at {screen[0]}×{screen[1]}"
@@ -121,6 +159,11 @@ def check_case(driver, page, shots, screen, case, problems):
     time.sleep(0.5)
     driver.save_screenshot(str(shots / f"screen-{name}-{screen[0]}x{screen[1]}.png"))
     texts = check_texts(driver, where, problems)
+    ticks = driver.execute_script("return window.explorer.plotTickLabels()")
+    if not ticks:
+        problems.append(f"{where}: the plots drew no tick labels")
+    for why in tick_problems(ticks):
+        problems.append(f"{where}: {why}")
     body = driver.execute_script(BODY_BOX)
     if body is None:
         problems.append(f"{where}: no body drawn in the view")

@@ -15,6 +15,7 @@
 
 #include "charts/decoration.hpp"
 #include "overlay/caption.hpp"
+#include "render/marker_mesh.hpp"
 
 namespace bookspin::clip {
 namespace {
@@ -120,9 +121,21 @@ double image_row(const render::Camera& camera, const Eigen::Vector3d& p, int hei
   return (1.0 - ndc) / 2.0 * height;
 }
 
+/// The image column (0 at the left) where `p` is seen, likewise.
+double image_column(const render::Camera& camera, const Eigen::Vector3d& p, int width, int height) {
+  const Eigen::Vector3d forward = (camera.target - camera.eye).normalized();
+  const Eigen::Vector3d right = forward.cross(camera.up).normalized();
+  const Eigen::Vector3d v = p - camera.eye;
+  const double aspect = static_cast<double>(width) / height;
+  const double ndc =
+      v.dot(right) / (v.dot(forward) * std::tan(camera.fov_y_deg * M_PI / 360.0) * aspect);
+  return (1.0 + ndc) / 2.0 * width;
+}
+
 // No caption covers the body: in every single scene of the gallery, whatever its orientation,
-// the body's bounding sphere is seen below the lowest row the caption paints (the caption
-// drawn here, with a twist line where the scene shows one) and above the frame's bottom.
+// the body's bounding sphere, and its markers' where it shows them (the L arrow, the body
+// axes), is seen below the lowest row the caption paints (the caption drawn here, with a
+// twist line where the scene shows one), above the frame's bottom and within its sides.
 TEST(RenderSettings, TheBodyIsFramedBelowItsCaption) {
   const std::filesystem::path scenes = std::filesystem::path(BOOKSPIN_SOURCE_DIR) / "scenes";
   int checked = 0;
@@ -145,8 +158,21 @@ TEST(RenderSettings, TheBodyIsFramedBelowItsCaption) {
     ASSERT_GT(bottom, 0) << entry.path();
     const render::RenderSettings s = render_settings_for(scene);
     const Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    const double radius = 0.5 * scene.body.cage.size.norm();
-    double top = h, lowest = 0;
+    double radius = 0.5 * scene.body.cage.size.norm();
+    if (scene.render.show_angular_momentum || scene.render.show_body_axes) {
+      // The markers as drawn (their mesh, for L along each axis and diagonal): what they
+      // reach, not what the framing assumes they do.
+      const Eigen::Matrix<double, 3, 8> corners = scene.body.cage.body_corners();
+      for (const Eigen::Vector3d& l :
+           {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1),
+            Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(-1, 2, 0.5)}) {
+        for (const render::MarkerVertex& v : render::build_markers(
+                 corners, l, scene.render.show_angular_momentum, scene.render.show_body_axes))
+          radius =
+              std::max(radius, Eigen::Vector3d(v.position[0], v.position[1], v.position[2]).norm());
+      }
+    }
+    double top = h, lowest = 0, left = w, rightmost = 0;
     for (int i = 0; i < 400; ++i) {  // points over the sphere, by a Fibonacci spiral
       const double z = 1.0 - (i + 0.5) / 200.0, r = std::sqrt(std::max(0.0, 1.0 - z * z));
       const double phi = i * M_PI * (3.0 - std::sqrt(5.0));
@@ -154,10 +180,14 @@ TEST(RenderSettings, TheBodyIsFramedBelowItsCaption) {
           centre + radius * Eigen::Vector3d(r * std::cos(phi), r * std::sin(phi), z);
       top = std::min(top, image_row(s.camera, p, h));
       lowest = std::max(lowest, image_row(s.camera, p, h));
+      left = std::min(left, image_column(s.camera, p, w, h));
+      rightmost = std::max(rightmost, image_column(s.camera, p, w, h));
     }
     EXPECT_GE(top, bottom) << entry.path().filename() << ": the body reaches row " << top
                            << ", the caption row " << bottom;
     EXPECT_LE(lowest, h) << entry.path().filename();
+    EXPECT_GE(left, 0) << entry.path().filename();
+    EXPECT_LE(rightmost, w) << entry.path().filename();
     ++checked;
   }
   EXPECT_GE(checked, 10);

@@ -25,6 +25,8 @@ test('ω in rad per time unit: tens, or twos across a narrower range', () => {
 test('a drift of round-off size is written m×10ⁿ, zero as 0', () => {
   assert.deepEqual(labels(-1e-6, 1e-6, 4), ['-1e-6', '-5e-7', '0', '5e-7', '1e-6']);
   assert.deepEqual(labels(-3e-7, 2e-6, 2), ['0', '2e-6']);  // 2.3e-6 in two steps: 2e-6
+  // A tick between powers of ten keeps its digit: 1.5e-3, not 2e-3 (its step 5e-4).
+  assert.deepEqual(labels(0, 2e-3, 4), ['0', '5e-4', '1e-3', '1.5e-3', '2e-3']);
 });
 
 test('time from 0: every tick inside the range, none beyond it', () => {

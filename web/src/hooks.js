@@ -36,6 +36,8 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     omegaNow: () => app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body)),
     /** Each plotted line's drawn height in CSS pixels: {panel, run, component, px}. */
     plotSpans: () => app.panels.spans,
+    /** The plots' tick labels as drawn: {axis (a panel's title, or 't'), value, step, text}. */
+    plotTickLabels: () => app.panels.tickLabels,
     /** The scene's measured ω as drawn now: {plot: samples drawn as dots on the ω panel,
      * sphere: L/|L| points of the measured trail on the sphere} (0, 0 without one). */
     measuredDrawn: () => ({ plot: app.panels.measuredDots, sphere: sphere.measuredPoints }),

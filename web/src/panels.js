@@ -24,6 +24,7 @@ export class Panels {
     this.plotsDrawnAt = -Infinity;
     this.spans = [];          // each plotted line's drawn height (hooks.js: plotSpans)
     this.measuredDots = 0;    // measured samples drawn as dots on the ω panel
+    this.tickLabels = [];     // the plots' tick labels as drawn (hooks.js: plotTickLabels)
   }
 
   /** Whether `parts` differ from what `seen[name]` held; remembers them. */
@@ -46,6 +47,7 @@ export class Panels {
       const drawn = drawPlots(p, list, measured);
       this.spans = drawn.spans;
       this.measuredDots = drawn.measuredDots;
+      this.tickLabels = drawn.tickLabels;
       this.plotsDrawnAt = now;
     }
     lap('plots');

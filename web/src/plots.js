@@ -43,7 +43,14 @@ export function niceTicks(lo, hi, count = 3) {
  * from 10⁵ on. */
 export function tickLabel(v, step) {
   if (v === 0) return '0';
-  if (step > 0 && (step < 1e-3 || step >= 1e5)) return v.toExponential(Math.max(0, Math.round(Math.log10(Math.abs(v) / step)))).replace('e+', 'e');
+  if (step > 0 && (step < 1e-3 || step >= 1e5)) {
+    // The fewest mantissa decimals that show the tick's value: 1e-6, 1.5e-3 for a step of 5e-4.
+    for (let decimals = 0; decimals < 15; ++decimals) {
+      const text = v.toExponential(decimals);
+      if (Math.abs(Number(text) - v) <= 1e-6 * step) return text.replace('e+', 'e');
+    }
+    return v.toExponential(15).replace('e+', 'e');
+  }
   const decimals = step > 0 ? Math.max(0, -Math.floor(Math.log10(step) + 1e-9)) : 2;
   return v.toFixed(decimals);
 }
@@ -98,6 +105,7 @@ export function drawPlots(canvas, runs, measured = null) {
   const samples = measuredUpTo(measured, tmax);
   g.lineWidth = 1;
   const spans = [];  // how tall each line is drawn (CSS px): the tests' flat-line check
+  const tickLabels = [];  // each drawn tick label: {axis, value, step, text} (the tests' digits check)
   // Each panel's range and ticks first: the widest tick label sets the plots' left margin.
   const panels = PANELS.map(([title, f, floor], k) => {
     const y0 = top + k * ph + FONT_PX + 4, h = Math.max(4, ph - FONT_PX - 8);
@@ -135,6 +143,7 @@ export function drawPlots(canvas, runs, measured = null) {
       const ty = y0 + h - h * (v - lo) / (hi - lo);
       g.strokeStyle = '#2a2e36'; g.beginPath(); g.moveTo(x0, ty); g.lineTo(x1, ty); g.stroke();
       const label = tickLabel(v, step);
+      tickLabels.push({ axis: title, value: v, step, text: label });
       g.fillStyle = '#aaa';
       g.fillText(label, x0 - 4 - g.measureText(label).width, Math.min(y0 + h - TICK_PX / 2, Math.max(y0 + TICK_PX / 2, ty)));
     }
@@ -191,9 +200,12 @@ export function drawPlots(canvas, runs, measured = null) {
   for (const v of time.ticks) {
     const label = tickLabel(v, time.step);
     const tx = Math.max(4, xOf(v) - g.measureText(label).width / 2);
-    if (tx + g.measureText(label).width < nameX - 8) g.fillText(label, tx, H - 6);
+    if (tx + g.measureText(label).width < nameX - 8) {
+      g.fillText(label, tx, H - 6);
+      tickLabels.push({ axis: 't', value: v, step: time.step, text: label });
+    }
   }
   g.fillText(name, nameX, H - 6);
   g.font = `${FONT_PX}px sans-serif`;
-  return { spans, measuredDots: samples.length };
+  return { spans, measuredDots: samples.length, tickLabels };
 }
