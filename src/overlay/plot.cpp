@@ -423,6 +423,8 @@ Area layout(cairo_t* cr, double x, double y, double width, double height, const 
          y + height - bottom_margin(spec, font), font};
   a.y0 =
       y + (spec.title.empty() ? 0.8 : 2.0) * font + top_legend_height(cr, spec, a.x0, a.x1, font);
+  // Room above the area for the markers where a curve leaves a fixed range (mark_range_exits).
+  if (fixed_y_range(spec)) a.y0 += 0.5 * font;
   return a;
 }
 
