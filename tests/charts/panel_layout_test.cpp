@@ -36,7 +36,8 @@ DiagnosticsHistory history_of(int frames, double phase) {
 }
 
 scene::Scene book_scene() {
-  return scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/fig05-particle-unstable-x.toml");
+  return scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) +
+                            "/scenes/fig05-particle-unstable-x.toml");
 }
 
 /// The panel's rectangles in a width×height frame: the whole column (a single scene's), and
@@ -46,8 +47,8 @@ std::vector<PixelRect> panel_rects(int width, int height) {
   return {column, split_for_sphere(column).second};
 }
 
-const std::pair<int, int> kFrameSizes[] = {{1280, 720}, {1920, 1080}, {960, 540}, {640, 360},
-                                           {480, 270}};
+const std::pair<int, int> kFrameSizes[] = {
+    {1280, 720}, {1920, 1080}, {960, 540}, {640, 360}, {480, 270}};
 
 TEST(PanelLayout, TextIsAtLeast12PxFrom960x540UpAndEveryPlotAreaThreeLinesHigh) {
   const scene::Scene scene = book_scene();
@@ -63,7 +64,8 @@ TEST(PanelLayout, TextIsAtLeast12PxFrom960x540UpAndEveryPlotAreaThreeLinesHigh) 
   overlay::CairoCanvas measure(1, 1);
   for (const auto& [width, height] : kFrameSizes) {
     for (const PixelRect& rect : panel_rects(width, height)) {
-      for (const auto* plots : std::vector<const std::vector<overlay::PlotSpec>*>{&single, &comparison}) {
+      for (const auto* plots :
+           std::vector<const std::vector<overlay::PlotSpec>*>{&single, &comparison}) {
         const std::string where = std::to_string(width) + "x" + std::to_string(height) +
                                   " rect y " + std::to_string(rect.y);
         const PanelLayout layout = panel_layout(rect, *plots);
@@ -82,9 +84,8 @@ TEST(PanelLayout, TextIsAtLeast12PxFrom960x540UpAndEveryPlotAreaThreeLinesHigh) 
           EXPECT_GE(r.x, rect.x);
           EXPECT_LE(r.right(), rect.right() + 1e-9);
           y = r.bottom();
-          const double area =
-              r.height - overlay::plot_frame_height(measure.cr(), r.width, layout.plots[i],
-                                                    layout.font);
+          const double area = r.height - overlay::plot_frame_height(measure.cr(), r.width,
+                                                                    layout.plots[i], layout.font);
           EXPECT_GE(area, kPanelMinPlotFonts * layout.font - 1e-9) << where << " plot " << i;
         }
         // At the gallery's sizes every plot is kept; smaller frames keep ω first.
@@ -101,8 +102,8 @@ TEST(PanelLayout, NoPanelWhereNotEvenOnePlotFits) {
   const scene::Scene scene = book_scene();
   const DiagnosticsHistory h = history_of(50, 0);
   const auto plots = panel_plots({PanelRun(scene, h)}, 600, 100.0);
-  EXPECT_TRUE(panel_layout({0, 0, 300, 60}, plots).plots.empty());   // too short
-  EXPECT_TRUE(panel_layout({0, 0, 80, 400}, plots).plots.empty());   // too narrow
+  EXPECT_TRUE(panel_layout({0, 0, 300, 60}, plots).plots.empty());    // too short
+  EXPECT_TRUE(panel_layout({0, 0, 80, 400}, plots).plots.empty());    // too narrow
   EXPECT_EQ(panel_layout({0, 0, 300, 140}, plots).plots.size(), 1u);  // ω alone
 }
 
@@ -131,15 +132,15 @@ TEST(PanelLayout, DrawnTickDigitsAreAt12PxFrom960x540Up) {
       std::fill(image.pixels.begin(), image.pixels.end(), 255);
       draw_panel(image, rect, plots);
       // The lowest plot's x tick digits ("0 100 200 …") lie in the band under its area's
-      // bottom edge, from that edge to 1.7 text sizes below it (the x label starts lower); one line of them.
+      // bottom edge, from that edge to 1.7 text sizes below it (the x label starts lower); one line
+      // of them.
       const PanelLayout layout = panel_layout(rect, plots);
       ASSERT_FALSE(layout.plots.empty());
       const PixelRect& last = layout.rects.back();
       const double area_bottom = last.bottom() - 3.2 * layout.font;  // overlay/plot.cpp's layout
-      const std::vector<int> rows =
-          dark_rows(image, static_cast<int>(rect.x + 0.4 * rect.width),
-                    static_cast<int>(rect.right()), static_cast<int>(area_bottom) + 3,
-                    static_cast<int>(area_bottom + 1.7 * layout.font));
+      const std::vector<int> rows = dark_rows(
+          image, static_cast<int>(rect.x + 0.4 * rect.width), static_cast<int>(rect.right()),
+          static_cast<int>(area_bottom) + 3, static_cast<int>(area_bottom + 1.7 * layout.font));
       ASSERT_FALSE(rows.empty()) << width << "x" << height;
       const int digit_height = rows.back() - rows.front() + 1;
       // DejaVu Sans' digits are 0.73 em high: 8.8 px at 12 px (8 with hinting, at least), 6.6
