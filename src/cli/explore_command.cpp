@@ -57,10 +57,13 @@ int explore_command(const ExploreOptions& options) {
     scene::Scene scene = scene::parse_scene(path);
     for (const std::string& warning : scene.warnings)
       std::cerr << "bookspin: warning: " << warning << '\n';
-    // The value the page reads, with the replays of the tiles it cannot step.
-    request.scene_data.push_back(jobs::explorer_scene_data(scene, request.stop_signal));
     request.scenes.push_back(std::move(scene));
   }
+  // The value the page reads, with the replays of the tiles it cannot step: made only when
+  // the page is written.
+  request.scene_data = [stop = request.stop_signal](const scene::Scene& scene) {
+    return jobs::explorer_scene_data(scene, stop);
+  };
   const products::ExplorerOutcome done = products::make_explorer_page(request);
   if (done.outcome == cache::Outcome::up_to_date) {
     std::cout << "explorer: up to date: " << done.result.path.string() << std::endl;

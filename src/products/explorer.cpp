@@ -112,14 +112,9 @@ ExplorerPageResult write_explorer_page(const ExplorerPageRequest& request) {
   Shell shell = read_shell(request);  // checked before any work
 
   // The page's data, as a plain value: every scene, then the book's faces.
-  if (request.scene_data.size() != request.scenes.size())
-    throw InternalError("explorer page: " + std::to_string(request.scene_data.size()) +
-                        " scenes' page data for " + std::to_string(request.scenes.size()) +
-                        " scenes");
+  if (!request.scene_data) throw InternalError("explorer page: no maker of the scenes' page data");
   JsonArray scenes;
-  for (std::size_t i = 0; i < request.scenes.size(); ++i) {
-    scenes.push_back({request.scene_data[i]});
-  }
+  for (const scene::Scene& scene : request.scenes) scenes.push_back({request.scene_data(scene)});
   JsonObject book_art;
   const char* faces[] = {"front", "back", "spine", "pages"};  // FaceImage order
   for (int f = 0; f < 4; ++f) {

@@ -5,6 +5,7 @@
 // one self-contained HTML file that opens from disk with the network off.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,10 +39,11 @@ std::filesystem::path explorer_engines_beside(const std::filesystem::path& shell
 
 struct ExplorerPageRequest {
   std::vector<scene::Scene> scenes;  ///< in the page's order; names must differ
-  /// jobs::explorer_scene_data of each of `scenes`, in their order: the values the page reads
-  /// (scene::page_data, with the replays of the tiles it cannot step), made by the pure stage
-  /// before the product writes them (one a scene, or an internal error).
-  std::vector<JsonObject> scene_data;
+  /// The values the page reads for one of `scenes` (jobs::explorer_scene_data: scene::page_data,
+  /// with the replays of the tiles it cannot step), made by the pure stage; called for each
+  /// scene, in order, only when the page is written (an up-to-date page runs no replay). Unset:
+  /// an internal error.
+  std::function<JsonObject(const scene::Scene&)> scene_data;
   std::filesystem::path shell;  ///< the page without data (web/build.sh)
   /// The JavaScript engines' bundle to write into the page (explorer_engines_beside); empty:
   /// none, and the page offers bookspin's own models only.

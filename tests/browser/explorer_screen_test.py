@@ -10,7 +10,9 @@ screenshots kept as the test's artefacts (BINARY_DIR/test-output/browser/screen-
     label (compare mode, under its body by design) is left out;
   - the left panel fits: for every scene of the page, the controls' column is no taller than
     the screen (nothing to scroll to, "Judge a motion…" and "Phone-toss lab…" on screen);
-  - no text under 12 px (each visible text's computed font size) and no text past its panel
+  - no text under 12 px (each visible text's computed font size, and each text drawn on a
+    canvas: its font's size times the canvas's CSS width over its pixel width, recorded by a
+    wrapper around fillText from the page's first script on) and no text past its panel
     (the controls' column, the view's column, the transport bar, the side column) nor past the
     screen;
   - at 1366×768, the Phone-toss lab with a result (the sample recording fitted) and the judge
@@ -92,6 +94,33 @@ BODY_BOX = """
 """
 
 
+# JavaScript run before the page's own scripts: every fillText on a 2D canvas recorded as
+# [text, canvas id, the size it is shown at in CSS px].
+CANVAS_TEXTS = """
+  window.__canvasTexts = [];
+  const fillText = CanvasRenderingContext2D.prototype.fillText;
+  CanvasRenderingContext2D.prototype.fillText = function (text, ...rest) {
+    const c = this.canvas, px = /([0-9.]+)px/.exec(this.font);
+    const shown = c.getBoundingClientRect ? c.getBoundingClientRect().width / c.width : 1;
+    if (px && String(text).trim())
+      window.__canvasTexts.push([String(text).slice(0, 40), c.id || c.className, parseFloat(px[1]) * shown]);
+    return fillText.call(this, text, ...rest);
+  };
+"""
+
+
+def check_canvas_texts(driver, where, problems):
+    """The texts drawn on the page's canvases since it loaded, each at least 12 px as shown."""
+    drawn = driver.execute_script("return window.__canvasTexts || null")
+    if drawn is None:
+        problems.append(f"{where}: the canvases' texts were not recorded")
+        return
+    small = sorted({(text, canvas, round(px, 1)) for text, canvas, px in drawn if px < MIN_TEXT_PX - 0.01})
+    print(f"{where}: {len(drawn)} canvas texts drawn, under {MIN_TEXT_PX} px: {small[:5]}")
+    for text, canvas, px in small[:10]:
+        problems.append(f"{where}: {text!r} drawn on canvas {canvas!r} at {px} px, under {MIN_TEXT_PX}")
+
+
 def overlaps(a, b):
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
@@ -159,6 +188,7 @@ def check_case(driver, page, shots, screen, case, problems):
     time.sleep(0.5)
     driver.save_screenshot(str(shots / f"screen-{name}-{screen[0]}x{screen[1]}.png"))
     texts = check_texts(driver, where, problems)
+    check_canvas_texts(driver, where, problems)
     ticks = driver.execute_script("return window.explorer.plotTickLabels()")
     if not ticks:
         problems.append(f"{where}: the plots drew no tick labels")
@@ -251,6 +281,7 @@ def check_panel(driver, shots, name, box_id, problems):
             if r[0] < box[0] - 0.5 or r[2] > box[2] + 0.5:
                 problems.append(f"{name}: {text!r} runs past the panel's sides {[round(x) for x in box]}: "
                                 f"{[round(x) for x in r]}")
+    check_canvas_texts(driver, name, problems)
     bad = driver.execute_script(DIGITS)
     print(f"{name}: {shown} texts in the panel; numbers past their precision: {bad}")
     if not shown:
@@ -295,6 +326,7 @@ def main():
     for screen in SCREENS:
         with open_browser(chromium, driver_path, size=screen, webgl=True, offline=True,
                           exact_viewport=True) as driver:
+            driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": CANVAS_TEXTS})
             for case in CASES:
                 check_case(driver, page, shots, screen, case, problems)
             check_left_panel(driver, page, screen, problems)
