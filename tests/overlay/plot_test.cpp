@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace bookspin::overlay {
 namespace {
@@ -185,6 +186,51 @@ TEST(PlotLegend, ADotsSeriesShowsDotsALineSeriesALine) {
   const auto is_blue = [](const std::uint8_t* p) { return p[2] > 200 && p[0] < 80 && p[1] < 80; };
   EXPECT_EQ(legend_runs(image, is_red), 3);
   EXPECT_EQ(legend_runs(image, is_blue), 1);
+}
+
+/// The heights of the runs of rows of `image` that hold dark ink (all channels under 110: the
+/// text and the frame, not a coloured curve or the light grid) within columns [x0, x1), from
+/// the bottom up.
+std::vector<int> dark_bands_from_bottom(const RgbaImage& image, int x0, int x1) {
+  std::vector<int> bands;
+  int run = 0;
+  for (int y = image.height - 1; y >= -1; --y) {
+    bool dark = false;
+    for (int x = x0; y >= 0 && x < x1 && !dark; ++x) {
+      const std::uint8_t* p = image.row(y) + 4 * x;
+      dark = p[0] < 110 && p[1] < 110 && p[2] < 110;
+    }
+    if (dark) {
+      ++run;
+    } else if (run > 0) {
+      bands.push_back(run);
+      run = 0;
+    }
+  }
+  return bands;
+}
+
+// A chart drawn short (a plot 150 px tall, whose text its height alone would make 7 px) still
+// writes its text at 12 px: measured in the pixels, the x tick digits (the lowest band of ink
+// right of the x label, which is centred under the plot) are at least DejaVu Sans' digit
+// height at 12 px (0.73 em, 8 px hinted).
+TEST(PlotImage, AShortChartsTextIsDrawnAt12Px) {
+  PlotSpec spec;
+  spec.legend = false;
+  spec.x_label = "t (time units)";
+  spec.y_label = "sin(t)";
+  Series s;
+  s.r = 1.0;  // red: not dark ink
+  for (int i = 0; i <= 100; ++i) s.x.push_back(i), s.y.push_back(std::sin(0.1 * i));
+  spec.series = {s};
+  for (const int height : {150, 300}) {
+    const RgbaImage image = plot_image(spec, 1280, height);
+    // Right of the x label: the ticks 60 … 100, then the plot area's frame above them.
+    const auto bands = dark_bands_from_bottom(image, 760, 1200);
+    ASSERT_GE(bands.size(), 2u) << height;
+    EXPECT_GE(bands[0], 8) << "the x tick digits, " << height << " px tall";
+    EXPECT_LE(bands[0], 14) << "one line of digits, " << height << " px tall";
+  }
 }
 
 }  // namespace
