@@ -77,8 +77,9 @@ export function drawPlots(canvas, runs, measured = null) {
   g.fillStyle = '#14171d'; g.fillRect(0, 0, W, H);
   if (!runs.length) return { spans: [], measuredDots: 0 };
   g.font = `${FONT_PX}px sans-serif`;
-  // Legend: each run's line style and method (more than two: two to a row, each name cut to
-  // its half of the width; the readout and the books' labels name them whole).
+  // Legend: each run's line style and method (more than two: two to a row, each name without
+  // its parenthesis, "(its default)", and cut to its half of the width where still longer; the
+  // readout and the books' labels name them whole).
   let y = FONT_PX + 2;
   const perRow = runs.length > 2 ? 2 : 1, cell = (W - 4) / perRow;
   runs.forEach((r, ri) => {
@@ -88,6 +89,7 @@ export function drawPlots(canvas, runs, measured = null) {
     g.setLineDash([]);
     g.fillStyle = r.colour;
     let label = r.label;
+    if (perRow > 1 && g.measureText(label).width > cell - 36) label = label.replace(/ \([^)]*\)/g, '') || label;
     if (perRow > 1) while (label.length > 1 && g.measureText(label).width > cell - 36) label = label.slice(0, -2) + '…';
     g.fillText(label, x + 30, y);
     if (ri % perRow === perRow - 1 || ri === runs.length - 1) y += FONT_PX + 4;
