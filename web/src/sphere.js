@@ -162,6 +162,10 @@ export class Sphere {
         // Outside the disc, on the side the axis points to, kept on the canvas.
         const tx = Math.min(Math.max(x + (p[0] >= 0 ? 6 * k : -6 * k - w), 2 * k), this.canvas.width - w - 2 * k);
         const ty = Math.min(Math.max(y + (p[1] >= 0 ? -6 * k : FONT_PX * k + 2 * k), FONT_PX * k), this.canvas.height - 4 * k);
+        // On a patch of the canvas's background, so that no curve runs through the name.
+        g.fillStyle = 'rgba(20, 23, 29, 0.8)';
+        g.fillRect(tx - 2 * k, ty - 0.9 * FONT_PX * k, w + 4 * k, 1.15 * FONT_PX * k);
+        g.fillStyle = '#e6e6e6';
         g.fillText(text, tx, ty);
         this.axisLabels.push(text);
       }
