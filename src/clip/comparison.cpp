@@ -12,12 +12,22 @@ namespace bookspin::clip {
 
 namespace {
 
-/// The caption of one tile: the tile's label (its scene's title), its model line, t and
-/// any divergence.
-std::vector<overlay::CaptionLine> tile_caption(const TileRun& tile) {
-  std::vector<overlay::CaptionLine> lines =
+/// The caption of one tile: the tile's label (its scene's title), its model line and any
+/// divergence (the time is the header's, the tiles' in lockstep). A model line too wide for
+/// the tile (`max_width` pixels) at `font` is broken after its commas into two lines, or where
+/// two do not fit it at `least`, at that size.
+std::vector<overlay::CaptionLine> tile_caption(const TileRun& tile, double font, double least,
+                                               double max_width) {
+  const std::vector<overlay::CaptionLine> full =
       charts::caption_for(tile.scene, tile.shown.t, tile.shown.diverged_at);
-  if (!tile.model_line.empty()) lines[1].text = tile.model_line;  // the model's line
+  overlay::CaptionLine model = full[1];
+  if (!tile.model_line.empty()) model.text = tile.model_line;  // the model's line
+  auto wrapped = overlay::wrap_at_commas(model, font, max_width, 2);
+  if (overlay::caption_font_size(wrapped, font, max_width) < least)
+    wrapped = overlay::wrap_at_commas(model, least, max_width, 2);
+  std::vector<overlay::CaptionLine> lines{full[0]};
+  lines.insert(lines.end(), wrapped.begin(), wrapped.end());
+  for (std::size_t i = 3; i < full.size(); ++i) lines.push_back(full[i]);  // the divergence
   return lines;
 }
 
@@ -28,8 +38,8 @@ class ComparisonComposer final : public Composer {
         layout_(compare_layout(static_cast<int>(scene.compare.size()), scene.render.width,
                                scene.render.height, scene.render.panel)) {}
 
-  /// Each tile's body framed below the tile's caption (its three lines at the largest font
-  /// decorate() gives them, from the top margin).
+  /// Each tile's body framed below the tile's caption (three lines, its title and a model line
+  /// on two, at the largest font decorate() gives them, from the top margin).
   render::RenderSettings picture_settings(const scene::Scene& first_tile) const override {
     const double font = largest_tile_font(scene_.render.height);
     const double caption_bottom = 0.4 * font + overlay::caption_height(3, font, keyed());
@@ -70,18 +80,24 @@ class ComparisonComposer final : public Composer {
       charts::draw_panel(frame, *plots, specs);
     }
     overlay::draw_title_strip(frame, layout_.header, scene_.title, t);
-    // One font size for every tile (the largest at which every caption fits its tile), so
+    // One font size for every tile (the largest at which every caption fits its tile, at
+    // least 12 px where the tiles are large enough, a long model line then on two lines), so
     // the labels read as a set.
-    double font = largest_tile_font(frame.height);
-    const double margin = 0.4 * font, max_width = layout_.tile_width - 2 * margin;
-    for (const auto& p : tiles)
-      font = overlay::caption_font_size(tile_caption(*p), font, max_width);
+    const double largest = largest_tile_font(frame.height);
+    const double least = std::min(largest, overlay::kMinFont);
+    const double margin = 0.4 * largest, max_width = layout_.tile_width - 2 * margin;
+    std::vector<std::vector<overlay::CaptionLine>> captions;
+    double font = largest;
+    for (const auto& p : tiles) {
+      captions.push_back(tile_caption(*p, largest, least, max_width));
+      font = overlay::caption_font_size(captions.back(), font, max_width);
+    }
     for (std::size_t i = 0; i < tiles.size(); ++i) {
       const PixelRect& tile = layout_.tiles[i];
       overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width, {}};
       // Palette order, odd runs dashed, as charts/panel.cpp draws the runs.
       if (keyed()) caption.key = overlay::CaptionKey{palette_colour(i), i % 2 == 1};
-      overlay::draw_caption(frame, tile_caption(*tiles[i]), caption);
+      overlay::draw_caption(frame, captions[i], caption);
     }
   }
 

@@ -17,10 +17,6 @@ using bookspin::PixelRegion;
 PixelRegion region_around(double x, double y, double width, double height, double margin,
                           int image_width, int image_height);
 
-/// The smallest text of any overlay, pixels: plots (a chart shown at its own size, a clip's
-/// panel), the sphere's and Poinsot's labels (docs/outputs.md, "Pictures").
-inline constexpr double kMinFont = 12.0;
-
 /// Selects the one typeface of every overlay (DejaVu Sans, from Debian's fonts-dejavu-core;
 /// fontconfig substitutes where it is missing), bold or regular, `size` pixels high.
 void select_overlay_font(cairo_t* cr, bool bold, double size);

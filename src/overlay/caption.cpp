@@ -150,6 +150,28 @@ double caption_font_size(const std::vector<CaptionLine>& lines, double font_size
   return font_size_within(Measure().cr, lines, font_size, max_width);
 }
 
+std::vector<CaptionLine> wrap_at_commas(const CaptionLine& line, double font_size, double max_width,
+                                        std::size_t max_lines) {
+  Measure measure;
+  select_overlay_font(measure.cr, line.bold, font_size);
+  const double room = max_width - 1.2 * font_size;  // the box's two paddings
+  std::vector<CaptionLine> out;
+  std::string rest = line.text;
+  while (out.size() + 1 < max_lines && text_width(measure.cr, rest) > room) {
+    // The longest head of `rest` that ends at a comma and fits; none fits: the first.
+    std::size_t cut = std::string::npos;
+    for (std::size_t at = rest.find(", "); at != std::string::npos; at = rest.find(", ", at + 1)) {
+      if (cut != std::string::npos && text_width(measure.cr, rest.substr(0, at + 1)) > room) break;
+      cut = at;
+    }
+    if (cut == std::string::npos) break;  // no comma: one line, shrunk
+    out.push_back({rest.substr(0, cut + 1), line.style, line.bold});
+    rest = rest.substr(cut + 2);
+  }
+  out.push_back({rest, line.style, line.bold});
+  return out;
+}
+
 void draw_caption(RgbaImage& image, const std::vector<CaptionLine>& lines,
                   const CaptionLayout& layout) {
   if (lines.empty()) return;

@@ -13,6 +13,11 @@
 
 namespace bookspin::overlay {
 
+/// The smallest text of the overlays where the frame has room for it, pixels: a chart shown at
+/// its own size, and in a clip from 960 × 540 up the panel's plots, the sphere's and
+/// Poinsot's labels and a comparison's tiles' captions (docs/outputs.md, "Pictures").
+inline constexpr double kMinFont = 12.0;
+
 enum class CaptionStyle { normal, warning };
 
 struct CaptionLine {
@@ -79,6 +84,13 @@ double default_caption_font(int image_height);
 /// The font size (pixels) draw_caption would use for `lines` at `font_size` within a box of
 /// at most `max_width` pixels, so several captions can share the smallest.
 double caption_font_size(const std::vector<CaptionLine>& lines, double font_size, double max_width);
+
+/// `line` broken after its commas into as few lines as fit a caption box of `max_width` pixels
+/// at `font_size` (each comma kept at the end of its line), at most `max_lines` of them; the
+/// line whole where it fits, and where `max_lines` are too few, the last holds the rest (the
+/// box's font then shrinks to fit it: caption_font_size).
+std::vector<CaptionLine> wrap_at_commas(const CaptionLine& line, double font_size, double max_width,
+                                        std::size_t max_lines);
 
 /// Draws one large centred warning banner near the bottom of `image` (e.g. "diverged at
 /// t = 31.35"), white on red, centred on column `centre_x` (pixels; < 0: the middle).

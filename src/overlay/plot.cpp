@@ -10,6 +10,7 @@
 
 #include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
+#include "overlay/caption.hpp"
 
 namespace bookspin::overlay {
 

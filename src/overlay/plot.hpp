@@ -66,7 +66,7 @@ struct PlotSpec {
 };
 
 /// The text size (pixels) of `spec` drawn `height` pixels tall: spec.font where set, else
-/// height/22 within kMinFont (cairo_canvas.hpp) … 18.
+/// height/22 within kMinFont (caption.hpp) … 18.
 double plot_font(double height, const PlotSpec& spec);
 
 /// Draws `spec` into the rectangle (x, y, width, height) of `cr` (pixels), its text

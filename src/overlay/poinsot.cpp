@@ -7,6 +7,7 @@
 
 #include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
+#include "overlay/caption.hpp"
 
 namespace bookspin::overlay {
 

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "overlay/cairo_canvas.hpp"
+#include "overlay/caption.hpp"
 
 namespace bookspin::overlay {
 

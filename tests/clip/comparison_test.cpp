@@ -134,6 +134,39 @@ TEST(Comparison, EachTilesBodyIsFramedBelowItsCaption) {
           caption_bottom = y + 1;
     ASSERT_GT(caption_bottom, 0);
     ASSERT_LT(caption_bottom, settings.height);
+    // Readable: 12 px text or more from a 960 × 540 frame up. The font from the box as drawn:
+    // n lines are n × 1.35 + 0.6 font sizes high, and 0.5 more with the key under the title
+    // (overlay/caption.cpp's box, by hand); n counted as the bands of light rows in the box
+    // (the text's and the key's strip, over the box's grey on these white pictures).
+    if (scene.render.height >= 540) {
+      int top = -1, bands = 0;
+      bool in_band = false;
+      const Rgb white{255, 255, 255};
+      const auto pixel = [&](int x, int y) {
+        return at(frame, static_cast<int>(tile.x) + x, static_cast<int>(tile.y) + y);
+      };
+      for (int y = 0; y < caption_bottom; ++y) {
+        bool box = false, grey = false, light = false;
+        for (int x = 1; x + 1 < settings.width; ++x) {
+          const Rgb p = pixel(x, y);
+          if (p == white) continue;
+          box = true;
+          grey |= p[0] < 150;
+          // Light inside the box, not on its antialiased edge (a white neighbour).
+          light |= p[0] > 200 && p[1] > 200 && p[2] > 200 && pixel(x - 1, y) != white &&
+                   pixel(x + 1, y) != white;
+        }
+        if (box && top < 0) top = y;
+        light &= grey;  // a row of the box's inside, not its partly covered first or last
+        if (light && !in_band) ++bands;
+        in_band = light;
+      }
+      const bool keyed = scene.render.panel || scene.render.sphere;
+      const int lines = bands - (keyed ? 1 : 0);
+      ASSERT_GE(lines, 2);
+      const double font = (caption_bottom - top) / (1.35 * lines + 0.6 + (keyed ? 0.5 : 0.0));
+      EXPECT_GE(font, 12.0 - 0.3) << lines << " lines in rows " << top << " to " << caption_bottom;
+    }
     // The sphere's highest row: its centre's row less its angular radius, seen from the eye.
     const render::Camera& c = settings.camera;
     const Eigen::Vector3d forward = (c.target - c.eye).normalized();
