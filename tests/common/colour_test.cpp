@@ -50,10 +50,14 @@ TEST(ComponentColours, ThePageAndTheNotebookDrawOmegaInTheClipsColours) {
     EXPECT_EQ(own, std::max({c.r, c.g, c.b})) << i;
   }
   EXPECT_EQ(hex_colours(text_of("web/src/colours.js")), expected);
+  // The notebook names them once and draws both of its ω plots (the exact motion's, a fitted
+  // toss's) with them.
   const std::string notebook = text_of("examples/intermediate-axis.ipynb");
-  const auto at = notebook.find("for c, colour in enumerate([");
-  ASSERT_NE(at, std::string::npos) << "the notebook's plot of a fitted toss";
-  EXPECT_EQ(hex_colours(notebook.substr(at, 80)), expected);
+  const auto at = notebook.find("OMEGA_COLOURS = [");
+  ASSERT_NE(at, std::string::npos) << "the notebook's ω colours";
+  EXPECT_EQ(hex_colours(notebook.substr(at, 60)), expected);
+  EXPECT_NE(notebook.find("color=OMEGA_COLOURS[i]"), std::string::npos) << "the exact motion's";
+  EXPECT_NE(notebook.find("enumerate(OMEGA_COLOURS)"), std::string::npos) << "a fitted toss's";
 }
 
 }  // namespace
