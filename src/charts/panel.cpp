@@ -206,7 +206,7 @@ PanelLayout panel_layout(const PixelRect& rect, const std::vector<overlay::PlotS
       out.plots[i].font = out.font;
       out.plots[i].x_axis_text = i + 1 == n;  // one time axis, under the lowest plot
     }
-    overlay::align_left_margins(cr, height, out.plots);
+    overlay::align_left_margins(cr, height / static_cast<double>(n), out.plots);
     std::vector<double> frames;
     double frame_total = 0;
     for (const auto& p : out.plots) {
@@ -220,6 +220,15 @@ PanelLayout panel_layout(const PixelRect& rect, const std::vector<overlay::PlotS
       out.rects.push_back({rect.x + inset, y, width, frames[i] + area});
       y += frames[i] + area;
     }
+    // The left margin again at each plot's own height, which decides whether its y label
+    // takes two lines (overlay::plot_left_margin): the widest, for every plot.
+    double left = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      overlay::PlotSpec alone = out.plots[i];
+      alone.left_margin = 0;
+      left = std::max(left, overlay::plot_left_margin(cr, out.rects[i].height, alone));
+    }
+    for (auto& p : out.plots) p.left_margin = left;
     return out;
   }
   return {};

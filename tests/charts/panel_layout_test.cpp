@@ -18,8 +18,10 @@
 namespace bookspin::charts {
 namespace {
 
-/// A run of `frames` samples over 600 time units: ω turning over once, a small energy drift.
-DiagnosticsHistory history_of(int frames, double phase) {
+/// A run of `frames` samples over 600 time units: ω turning over once, an energy drift and a
+/// strain of `size` (small: ticks like -0.0001 widen the plots' left margin; large: 0.2 leaves
+/// it to the y labels).
+DiagnosticsHistory history_of(int frames, double phase, double size = 1e-4) {
   DiagnosticsHistory h;
   for (int i = 0; i < frames; ++i) {
     const double t = 600.0 * i / (frames - 1);
@@ -27,8 +29,8 @@ DiagnosticsHistory history_of(int frames, double phase) {
     h.omega_x.push_back(0.12 * std::tanh((300.0 - t) / 30.0 + phase));
     h.omega_y.push_back(0.1 / std::cosh((300.0 - t) / 30.0));
     h.omega_z.push_back(0.08 / std::cosh((300.0 - t) / 30.0 + phase));
-    h.energy_drift.push_back(1e-4 * std::sin(t / 50.0 + phase));
-    h.strain_max.push_back(5e-4);
+    h.energy_drift.push_back(size * std::sin(t / 50.0 + phase));
+    h.strain_max.push_back(5 * size);
     h.quaternion_deviation.push_back(0);
     h.orthogonality_error.push_back(0);
   }
@@ -58,6 +60,8 @@ TEST(PanelLayout, TextIsAtLeast12PxFrom960x540UpAndEveryPlotAreaThreeLinesHigh) 
   for (int i = 0; i < 6; ++i)
     six.emplace_back(scene, histories[i], "a run labelled at some length " + std::to_string(i));
   const auto single = panel_plots({PanelRun(scene, histories[0])}, 600, 300.0);
+  const DiagnosticsHistory coarse_history = history_of(600, 0, 0.05);
+  const auto coarse = panel_plots({PanelRun(scene, coarse_history)}, 600, 300.0);
   auto comparison = panel_plots(six, 600, 300.0);
   for (auto& p : comparison) p.legend = false;  // as a comparison's clip draws them
 
@@ -65,7 +69,7 @@ TEST(PanelLayout, TextIsAtLeast12PxFrom960x540UpAndEveryPlotAreaThreeLinesHigh) 
   for (const auto& [width, height] : kFrameSizes) {
     for (const PixelRect& rect : panel_rects(width, height)) {
       for (const auto* plots :
-           std::vector<const std::vector<overlay::PlotSpec>*>{&single, &comparison}) {
+           std::vector<const std::vector<overlay::PlotSpec>*>{&single, &coarse, &comparison}) {
         const std::string where = std::to_string(width) + "x" + std::to_string(height) +
                                   " rect y " + std::to_string(rect.y);
         const PanelLayout layout = panel_layout(rect, *plots);
@@ -87,6 +91,13 @@ TEST(PanelLayout, TextIsAtLeast12PxFrom960x540UpAndEveryPlotAreaThreeLinesHigh) 
           const double area = r.height - overlay::plot_frame_height(measure.cr(), r.width,
                                                                     layout.plots[i], layout.font);
           EXPECT_GE(area, kPanelMinPlotFonts * layout.font - 1e-9) << where << " plot " << i;
+          // The left margin holds the y label as this plot's height draws it (on two lines
+          // where one is longer than the plot), whatever the other plots need.
+          overlay::PlotSpec alone = layout.plots[i];
+          alone.left_margin = 0;
+          EXPECT_GE(layout.plots[i].left_margin,
+                    overlay::plot_left_margin(measure.cr(), r.height, alone) - 1e-9)
+              << where << " plot " << i;
         }
         // At the gallery's sizes every plot is kept; smaller frames keep ω first.
         if (height >= 720) {
