@@ -150,8 +150,7 @@ std::vector<overlay::PlotSpec> comparison_plots(const std::vector<PanelRun>& run
   const DiagnosticsHistory& first = *runs.front().history;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const DiagnosticsHistory& h = *runs[i].history;
-    const Rgb c = palette_colour(i);  // runs of a comparison
-    const bool dashed = i % 2 == 1;
+    const auto [c, dashed] = run_style(i);
     const std::vector<double>& w = axis == 0 ? h.omega_x : axis == 1 ? h.omega_y : h.omega_z;
     omega.series.push_back(series(runs[i].label, h.t, w, c, dashed));
     drift.series.push_back(series(runs[i].label, h.t, h.energy_drift, c, dashed));
@@ -173,6 +172,8 @@ std::vector<overlay::PlotSpec> comparison_plots(const std::vector<PanelRun>& run
 }
 
 }  // namespace
+
+RunStyle run_style(std::size_t index) { return {palette_colour(index), index % 2 == 1}; }
 
 std::vector<overlay::PlotSpec> panel_plots(const std::vector<PanelRun>& runs, double t_end,
                                            std::optional<double> cursor) {

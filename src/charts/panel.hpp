@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "charts/diagnostics_history.hpp"
+#include "common/colour.hpp"
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 #include "overlay/plot.hpp"
@@ -17,6 +18,14 @@ namespace bookspin::charts {
 
 /// Share of the frame width the book keeps when the panel is shown (the panel has the rest).
 inline constexpr double kBookShare = 0.6;
+
+/// How run `index` of a comparison is drawn in the panel's plots: its palette colour, dashed
+/// when odd, so that runs in lockstep (one curve) still show both colours.
+struct RunStyle {
+  Rgb colour;
+  bool dashed = false;
+};
+RunStyle run_style(std::size_t index);
 
 /// The three plots for `runs`: one run shows ω_x, ω_y, ω_z, E/E0 − 1 and its model's shape
 /// measures (strain; plus ‖RᵀR − I‖ for a matrix, |q| − 1 for a quaternion); several runs

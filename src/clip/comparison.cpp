@@ -95,8 +95,10 @@ class ComparisonComposer final : public Composer {
     for (std::size_t i = 0; i < tiles.size(); ++i) {
       const PixelRect& tile = layout_.tiles[i];
       overlay::CaptionLayout caption{tile.x + margin, tile.y + margin, font, max_width, {}};
-      // Palette order, odd runs dashed, as charts/panel.cpp draws the runs.
-      if (keyed()) caption.key = overlay::CaptionKey{palette_colour(i), i % 2 == 1};
+      if (keyed()) {
+        const charts::RunStyle style = charts::run_style(i);  // as the panel draws the run
+        caption.key = overlay::CaptionKey{style.colour, style.dashed};
+      }
       overlay::draw_caption(frame, captions[i], caption);
     }
   }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "common/argb32.hpp"
+#include "overlay/caption.hpp"
 
 namespace bookspin::overlay {
 
@@ -25,6 +26,14 @@ void select_overlay_font(cairo_t* cr, bool bold, double size) {
   cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
                          bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size);
+}
+
+double inset_font(const PixelRect& rect) {
+  return std::max({9.0, 0.052 * rect.height, std::min(kMinFont / 0.85, rect.height / 17.0)});
+}
+
+double inset_title_height(const PixelRect& rect) {
+  return std::max(0.1 * rect.height, 1.9 * inset_font(rect));
 }
 
 PixelRegion region_around(double x, double y, double width, double height, double margin,

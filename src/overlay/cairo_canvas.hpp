@@ -12,6 +12,16 @@ namespace bookspin::overlay {
 
 using bookspin::PixelRegion;
 
+/// The title's text size (pixels) of an inset `rect` (the momentum sphere, Poinsot's
+/// construction): 0.052 of its height; its labels, at 0.85 of it, at least kMinFont
+/// (caption.hpp) in an inset 240 px high or higher (a 960 × 540 frame's), scaled down with a
+/// smaller one's height to 9 px.
+double inset_font(const PixelRect& rect);
+
+/// The rows an inset's title takes at its top (pixels): 0.1 of its height, at least 1.9 of
+/// its title's text size.
+double inset_title_height(const PixelRect& rect);
+
 /// The smallest whole-pixel region holding the rectangle (x, y, width, height) (pixels,
 /// fractional) and `margin` pixels around it, clipped to a width×height image.
 PixelRegion region_around(double x, double y, double width, double height, double margin,

@@ -7,7 +7,6 @@
 
 #include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
-#include "overlay/caption.hpp"
 
 namespace bookspin::overlay {
 
@@ -20,16 +19,6 @@ struct View {
   Eigen::Vector3d right, up, towards;
   double cx, cy, scale;  // pixels: the centre of the ellipsoid and pixels per length unit
 };
-
-/// The title's text size (pixels), 0.052 of the inset's height; the labels at 0.85 of it, at
-/// least kMinFont in an inset 240 px high or higher (a 960 × 540 frame's), scaled down with a
-/// smaller one's height to 9 px.
-double font_for(const PixelRect& rect) {
-  return std::max({9.0, 0.052 * rect.height, std::min(kMinFont / 0.85, rect.height / 17.0)});
-}
-double title_height(const PixelRect& rect) {
-  return std::max(0.1 * rect.height, 1.9 * font_for(rect));
-}
 
 struct LegendItem {
   const char* text;
@@ -44,7 +33,7 @@ constexpr LegendItem kLegend[] = {{"polhode", 0.0, 0.55, 0.25},
 std::vector<std::vector<int>> legend_rows(const PixelRect& rect) {
   CairoCanvas measure(1, 1);
   cairo_t* cr = measure.cr();
-  const double font = font_for(rect), left = rect.x + 0.04 * rect.width;
+  const double font = inset_font(rect), left = rect.x + 0.04 * rect.width;
   select_overlay_font(cr, false, 0.85 * font);
   std::vector<std::vector<int>> rows(1);
   double x = left;
@@ -60,9 +49,10 @@ std::vector<std::vector<int>> legend_rows(const PixelRect& rect) {
 }
 
 /// The legend's line height, pixels.
-double legend_line(const PixelRect& rect) { return 1.25 * 0.85 * font_for(rect); }
+double legend_line(const PixelRect& rect) { return 1.25 * 0.85 * inset_font(rect); }
 
-View view_of(const PoinsotSpec& spec, const PixelRect& rect) {
+/// The view of `spec` in `rect` above a legend of `legend_rows` rows (legend_rows).
+View view_of(const PoinsotSpec& spec, const PixelRect& rect, std::size_t legend_rows) {
   View v;
   v.up = spec.normal.normalized();
   const Eigen::Vector3d across = (spec.across - spec.across.dot(v.up) * v.up).normalized();
@@ -72,9 +62,9 @@ View view_of(const PoinsotSpec& spec, const PixelRect& rect) {
   // Fit: the ellipsoid's largest semi-axis and the plane's disc, the plane in the upper part.
   const double a_max = spec.semi_axes.colwise().norm().maxCoeff();
   const double half_width = 1.08 * std::max(a_max, spec.plane_radius);
-  const double top = rect.y + 1.25 * title_height(rect);
+  const double top = rect.y + 1.25 * inset_title_height(rect);
   // The legend below: its rows above the last, which is where one row alone would be.
-  const double legend = static_cast<double>(legend_rows(rect).size() - 1) * legend_line(rect);
+  const double legend = static_cast<double>(legend_rows - 1) * legend_line(rect);
   const double bottom = rect.y + rect.height - 0.09 * rect.height - legend;
   const double span_up = spec.plane_distance + 0.45 * a_max;  // room for the L arrow
   const double span_down = 1.05 * a_max;
@@ -153,7 +143,7 @@ void label(cairo_t* cr, const std::string& text, double x, double y, double r, d
 
 Eigen::Vector2d poinsot_to_inset(const PoinsotSpec& spec, const PixelRect& rect,
                                  const Eigen::Vector3d& p) {
-  return project(view_of(spec, rect), p);
+  return project(view_of(spec, rect, legend_rows(rect).size()), p);
 }
 
 void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& spec) {
@@ -175,9 +165,10 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
   cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
   cairo_clip(cr);
 
-  const View v = view_of(spec, rect);
+  const auto rows = legend_rows(rect);
+  const View v = view_of(spec, rect, rows.size());
   const double unit = rect.height / 150.0;
-  const double font = font_for(rect);
+  const double font = inset_font(rect);
   const Eigen::Vector3d n = spec.normal.normalized();
   const Eigen::Vector3d e1 = (spec.across - spec.across.dot(n) * n).normalized(), e2 = n.cross(e1);
   const Eigen::Vector3d foot = spec.plane_distance * n;
@@ -295,9 +286,8 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
   cairo_text_extents_t ext;
   cairo_text_extents(cr, spec.title.c_str(), &ext);
   label(cr, spec.title, rect.x + 0.5 * (rect.width - ext.x_advance),
-        rect.y + 0.75 * title_height(rect), 0.1, 0.1, 0.1);
+        rect.y + 0.75 * inset_title_height(rect), 0.1, 0.1, 0.1);
   select_overlay_font(cr, false, 0.85 * font);
-  const auto rows = legend_rows(rect);
   double y = rect.y + rect.height - 0.03 * rect.height -
              static_cast<double>(rows.size() - 1) * legend_line(rect);
   for (const auto& row : rows) {

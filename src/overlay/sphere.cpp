@@ -7,7 +7,6 @@
 #include <utility>
 
 #include "overlay/cairo_canvas.hpp"
-#include "overlay/caption.hpp"
 
 namespace bookspin::overlay {
 
@@ -25,16 +24,6 @@ Basis basis_of(const SphereSpec& spec) {
   b.up = (spec.up - spec.up.dot(b.towards) * b.towards).normalized();
   b.right = b.up.cross(b.towards);
   return b;
-}
-
-/// The title's text size (pixels), 0.052 of the inset's height; the labels at 0.85 of it, at
-/// least kMinFont in an inset 240 px high or higher (a 960 × 540 frame's), scaled down with a
-/// smaller one's height to 9 px.
-double font_for(const PixelRect& rect) {
-  return std::max({9.0, 0.052 * rect.height, std::min(kMinFont / 0.85, rect.height / 17.0)});
-}
-double title_height(const PixelRect& rect) {
-  return std::max(0.1 * rect.height, 1.9 * font_for(rect));
 }
 
 using Polyline = std::vector<Eigen::Vector2d>;
@@ -97,7 +86,7 @@ Eigen::Vector2d project_to_inset(const SphereSpec& spec, const Eigen::Vector3d& 
 }
 
 SphereDisc sphere_disc(const PixelRect& rect) {
-  const double top = title_height(rect);
+  const double top = inset_title_height(rect);
   const double r = 0.37 * std::min(rect.width, rect.height - top);
   return {rect.x + 0.5 * rect.width, rect.y + top + 0.5 * (rect.height - top), r};
 }
@@ -115,7 +104,7 @@ void draw_base(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
 
   const SphereDisc disc = sphere_disc(rect);
   const double unit = rect.height / 150.0;  // line widths scale with the inset
-  const double font = font_for(rect);
+  const double font = inset_font(rect);
 
   // Title.
   select_overlay_font(cr, true, font);
@@ -123,7 +112,7 @@ void draw_base(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
   cairo_text_extents_t ext;
   cairo_text_extents(cr, spec.title.c_str(), &ext);
   cairo_move_to(cr, rect.x + 0.5 * (rect.width - ext.x_advance),
-                rect.y + 0.75 * title_height(rect));
+                rect.y + 0.75 * inset_title_height(rect));
   cairo_show_text(cr, spec.title.c_str());
 
   // Outline.
@@ -164,7 +153,7 @@ void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   const SphereDisc disc = sphere_disc(rect);
   const double unit = rect.height / 150.0;
-  const double font = font_for(rect);
+  const double font = inset_font(rect);
   const Basis basis = basis_of(spec);
   cairo_text_extents_t ext;
   for (const auto& t : spec.trails) {
@@ -203,7 +192,7 @@ void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
     double y = anchor.y() + 0.35 * font * (1.0 + out.y());
     const double margin = 0.4 * font;
     x = std::clamp(x, rect.x + margin, rect.right() - ext.x_advance - margin);
-    y = std::clamp(y, rect.y + title_height(rect) + font, rect.bottom() - margin);
+    y = std::clamp(y, rect.y + inset_title_height(rect) + font, rect.bottom() - margin);
     cairo_new_path(cr);
     cairo_rectangle(cr, x - 0.15 * font, y - fe.ascent, ext.x_advance + 0.3 * font,
                     fe.ascent + fe.descent);
