@@ -42,8 +42,9 @@ class Fit:
     """The -fit.csv rows, one per toss."""
     summary: list[str]
     """The lines the command prints before "wrote ..."."""
-    charts: list[dict[str, Array]]
-    """Per toss: t (N,) s; measured, fitted (N, 3) rad/s phone frame; curve_t (M,);
+    charts: list[dict[str, Union[Array, str]]]
+    """Per toss: recording (str, its own recording's name); t (N,) s, that recording's own
+    time; measured, fitted (N, 3) rad/s phone frame; curve_t (M,);
     curve (M, 3); flips (K,) s."""
 
 def fit(

@@ -50,7 +50,8 @@ Returns a bookspin.Fit:
   tosses   the -fit.csv rows, one dict per toss (toss, t_start, t_end, omega0_x ...,
            half_period_measured ..., residual_rms, drag_rate, flag ...)
   summary  the lines the command prints before "wrote ..." (bias, flights, body, notes)
-  charts   per toss a dict of float64 arrays: t (N,) s, the recording's time; measured (N, 3)
+  charts   per toss a dict: recording, its own recording's name (of several pooled, the one it
+           was thrown in), and float64 arrays: t (N,) s, that recording's own time; measured (N, 3)
            rad/s, phone frame, bias removed; fitted (N, 3) the fitted omega at t; curve_t (M,)
            every millisecond of the flight and curve (M, 3) the fitted omega there; flips (K,)
            s, the fitted motion's flips
@@ -109,6 +110,7 @@ py::array_t<double> vectors_array(const std::vector<Eigen::Vector3d>& vectors) {
 
 py::dict chart_arrays(const fit::TossChart& chart) {
   py::dict out;
+  out["recording"] = chart.recording;
   out["t"] = values_array(chart.t);
   out["measured"] = vectors_array(chart.measured);
   out["fitted"] = vectors_array(chart.fitted);

@@ -66,7 +66,8 @@ val array_of(const std::vector<val>& items) {
   return out;
 }
 
-/// The toss's chart data: t (s, the recording's time), the measured ω (3×N, phone frame, bias
+/// The toss's chart data: its own recording's name (of several pooled, the one it was thrown
+/// in), t (s, that recording's own time), the measured ω (3×N, phone frame, bias
 /// removed, flattened sample by sample) and the fitted ω at the same times (fit::TossChart).
 val chart_data(const fit::TossChart& chart) {
   std::vector<double> measured, fitted;
@@ -76,6 +77,7 @@ val chart_data(const fit::TossChart& chart) {
       fitted.push_back(chart.fitted[i][c]);
     }
   val out = val::object();
+  out.set("recording", chart.recording);
   out.set("t", val::array(chart.t));
   out.set("measured", val::array(measured));
   out.set("fitted", val::array(fitted));
@@ -185,25 +187,29 @@ void clear_memory() {
 
 /// The fit of `recording` under `law` as the page's value: {recording, body (the -fit-body.csv
 /// row keyed by its columns), tosses (the -fit.csv rows), summary (the lines the command prints
-/// before "wrote …"), charts (per toss {t, measured, fitted}), scenes (per toss the page's scene
-/// data; an empty array where the fitted moments make no body, as the command writes no
-/// scene)}.
+/// before "wrote …", its remedies in the page's terms), dropped (every stretch dropped, a line
+/// each, as --verbose prints them), charts (per toss {t, measured, fitted}), scenes (per toss the
+/// page's scene data; an empty array where the fitted moments make no body, as the command writes
+/// no scene)}.
 val report_value(const fit::GyroRecording& recording, bookspin::physics::DragLaw law) {
   fit::FitRequest request;
   request.settings.drag = law;
+  request.reader = fit::Reader::page;  // its remedies in the page's terms, not the options'
   const fit::FitReport report = fit::fit_report(recording, request);
   std::vector<val> charts, scenes;
   for (const fit::TossReport& toss : report.tosses) {
     charts.push_back(chart_data(toss.chart));
     if (toss.scene) scenes.push_back(toss_scene_data(*toss.scene));
   }
-  val summary = val::array();
+  val summary = val::array(), dropped = val::array();
   for (const std::string& line : report.summary) summary.call<void>("push", line);
+  for (const std::string& line : report.dropped) dropped.call<void>("push", line);
   val out = val::object();
   out.set("recording", report.recording);
   out.set("body", keyed_rows(report.body_csv).at(0));
   out.set("tosses", array_of(keyed_rows(report.toss_csv)));
   out.set("summary", summary);
+  out.set("dropped", dropped);
   out.set("charts", array_of(charts));
   out.set("scenes", array_of(scenes));
   return out;

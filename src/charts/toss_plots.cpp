@@ -33,9 +33,12 @@ RgbaImage toss_image(const fit::TossChart& chart, int width, int height) {
   const int side = std::max(1, static_cast<int>(std::min<double>(height, 0.4 * width)));
   const int plot_width = std::max(1, width - side);
   overlay::PlotSpec spec;
-  spec.title =
-      "toss " + std::to_string(chart.toss + 1) + ": measured (dots) and fitted exact motion";
-  spec.x_label = "time (s)";
+  // Named by its own recording, against its own clock (of several pooled, the one it was
+  // thrown in).
+  spec.title = (chart.recording.empty() ? "" : chart.recording + ", ") + "toss " +
+               std::to_string(chart.toss + 1) + ": measured (dots) and fitted exact motion";
+  spec.x_label =
+      "time (s, " + (chart.recording.empty() ? "the recording" : chart.recording) + "'s clock)";
   spec.y_label = "ω, phone frame (rad/s)";
   const char* names[] = {"x", "y", "z"};
   double peak = 0.0;

@@ -28,6 +28,7 @@ struct FitOptions {
   double slow_motion = 4.0;
   bool force = false;
   bool verify = false;
+  bool verbose = false;  ///< --verbose: every dropped stretch a line
 };
 
 double parse_number(const std::string& text, const std::string& option) {
@@ -88,6 +89,7 @@ int fit_command(const FitOptions& options) {
     render.slow_motion = options.slow_motion;
     job.clips = products::fit_clips(render);
   }
+  job.verbose = options.verbose;
   job.freshness = {options.force, options.verify, remake_note};
   job.stop_signal = stop_poll();
   std::vector<std::string> summary;
@@ -134,6 +136,9 @@ Subcommand add_fit(CLI::App& cli) {
                   "With --render: the clips play the flight this many times slower")
       ->capture_default_str()
       ->check(CLI::Range(products::kMinSlowMotion, products::kMaxSlowMotion));
+  cmd->add_flag("--verbose", options.verbose,
+                "List every stretch of motion dropped, a line each (the summary counts those "
+                "too slow for a flight in one line)");
   add_freshness_flags(cmd, options.force, options.verify, "OUT/<recording>/fit-manifest.json");
   return {cmd, [stored] { return fit_command(*stored); }};
 }

@@ -26,13 +26,40 @@ std::pair<double, std::string> own_time(const FitResult& fit, double t) {
   return {t - part.t_offset, named(fit) ? part.name : std::string()};
 }
 
+/// ", T/2 predicted 0.412 ± 0.030 s" (its σ's precision, or the millisecond without one), or
+/// nothing without a prediction.
+std::string predicted_words(const TossFit& t) {
+  if (!t.half_period_predicted) return "";
+  return ", T/2 predicted " +
+         (t.half_period_predicted_sigma
+              ? plus_minus(*t.half_period_predicted, *t.half_period_predicted_sigma)
+              : fixed(*t.half_period_predicted, 3)) +
+         " s";
+}
+
 }  // namespace
 
 CsvTable fit_toss_csv(const FitResult& fit) {
-  CsvTable table{{"toss", "t_start", "t_end", "omega0_x", "omega0_y", "omega0_z",
-                  "half_period_measured", "half_period_fitted", "half_period_predicted",
-                  "predicted_from_tosses", "predicted_from_seconds", "residual_rms", "L_decay",
-                  "drag_rate", "drag_rate_sigma", "saturated", "stable", "poor_fit", "flag"},
+  CsvTable table{{"toss",
+                  "t_start",
+                  "t_end",
+                  "omega0_x",
+                  "omega0_y",
+                  "omega0_z",
+                  "half_period_measured",
+                  "half_period_fitted",
+                  "half_period_predicted",
+                  "half_period_predicted_sigma",
+                  "predicted_from_tosses",
+                  "predicted_from_seconds",
+                  "residual_rms",
+                  "L_decay",
+                  "drag_rate",
+                  "drag_rate_sigma",
+                  "saturated",
+                  "stable",
+                  "poor_fit",
+                  "flag"},
                  {}};
   // Several recordings: each toss's recording named, its times its own.
   const bool pooled = named(fit);
@@ -42,15 +69,26 @@ CsvTable fit_toss_csv(const FitResult& fit) {
     const auto [t_start, recording] = own_time(fit, t.flight.t_start);
     const double t_end = t.flight.t_end - (t.flight.t_start - t_start);
     table.rows.push_back(
-        {std::to_string(k + 1), shortest_cell(t_start), shortest_cell(t_end),
-         shortest_cell(t.omega0[0]), shortest_cell(t.omega0[1]), shortest_cell(t.omega0[2]),
-         shortest_cell(t.half_period_measured), shortest_cell(t.half_period_fitted),
+        {std::to_string(k + 1),
+         shortest_cell(t_start),
+         shortest_cell(t_end),
+         shortest_cell(t.omega0[0]),
+         shortest_cell(t.omega0[1]),
+         shortest_cell(t.omega0[2]),
+         shortest_cell(t.half_period_measured),
+         shortest_cell(t.half_period_fitted),
          shortest_cell(t.half_period_predicted),
+         shortest_cell(t.half_period_predicted_sigma),
          t.predicted_from_tosses ? std::to_string(*t.predicted_from_tosses) : std::string(),
-         shortest_cell(t.predicted_from_seconds), shortest_cell(t.residual_rms),
-         shortest_cell(t.L_decay), shortest_cell(t.drag_rate), shortest_cell(t.drag_rate_sigma),
-         std::to_string(t.saturated), std::string(t.stable ? "yes" : "no"),
-         std::string(t.poor_fit ? "yes" : "no"), t.flag});
+         shortest_cell(t.predicted_from_seconds),
+         shortest_cell(t.residual_rms),
+         shortest_cell(t.L_decay),
+         shortest_cell(t.drag_rate),
+         shortest_cell(t.drag_rate_sigma),
+         std::to_string(t.saturated),
+         std::string(t.stable ? "yes" : "no"),
+         std::string(t.poor_fit ? "yes" : "no"),
+         t.flag});
     if (pooled) table.rows.back().insert(table.rows.back().begin() + 1, recording);
   }
   return table;
@@ -101,7 +139,7 @@ CsvTable fit_body_csv(const FitResult& fit) {
   return table;
 }
 
-std::vector<std::string> fit_summary(const FitResult& fit) {
+std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
   std::vector<std::string> lines;
   // Each value to its σ's precision (common/number_text.hpp, plus_minus).
   const auto with_sigma = [](const Eigen::Vector3d& v, const Eigen::Vector3d& sigma) {
@@ -117,7 +155,8 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
   // added to it.
   const auto bias_lines = [&](const std::string& who, const Rest& rest,
                               const Eigen::Vector3d& correction,
-                              const std::optional<Eigen::Vector3d>& fitted_sigma) {
+                              const std::optional<Eigen::Vector3d>& fitted_sigma,
+                              const std::optional<Eigen::Vector3d>& not_applied) {
     const bool one = who.empty();
     const std::string of = one ? "" : " of " + who;
     const std::string own = one ? "the" : "its";
@@ -140,7 +179,14 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
     const std::string fitted = "no still stretch in " +
                                (one ? "the recording: the" : who + ": its") +
                                " bias (rad/s) is fitted from " + own + " flights: ";
-    if (fitted_sigma)
+    if (not_applied && fitted_sigma)
+      lines.push_back("no still stretch in " + (one ? "the recording" : who) +
+                      ": the bias (rad/s) " + own + " flights give, " +
+                      with_sigma(*not_applied, *fitted_sigma) + ", is consistent with zero (χ² " +
+                      fixed(bias_chi_square(*not_applied, *fitted_sigma), 1) + " over 3 axes, " +
+                      "under " + fixed(kBiasChiSquare, 1) +
+                      "): not removed, held at zero within those σ");
+    else if (fitted_sigma)
       lines.push_back(fitted + with_sigma(in_flight, *fitted_sigma));
     else if (correction != Eigen::Vector3d::Zero())
       lines.push_back(fitted + three(in_flight));
@@ -151,7 +197,7 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
   };
   for (const RecordingPart& part : fit.parts)
     bias_lines(named(fit) ? part.name : std::string(), part.rest, part.bias_correction,
-               part.bias_fitted_sigma);
+               part.bias_fitted_sigma, part.bias_not_applied);
   for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
     const TossFit& t = fit.tosses[k];
     std::string drag;
@@ -164,15 +210,23 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
     const double t_end = t.flight.t_end - (t.flight.t_start - t_start);
     lines.push_back("kept toss " + std::to_string(k + 1) + ": " +
                     (recording.empty() ? "" : recording + " ") + fixed(t_start, 3) + "–" +
-                    fixed(t_end, 3) + " s" + drag + (t.stable ? " (stable: no flip)" : "") +
-                    (t.poor_fit ? " (flagged)" : ""));
+                    fixed(t_end, 3) + " s" + drag + predicted_words(t) +
+                    (t.stable ? " (stable: no flip)" : "") + (t.poor_fit ? " (flagged)" : ""));
   }
-  for (const DroppedStretch& d : fit.search.dropped) {
-    const auto [t_start, recording] = own_time(fit, d.t_start);
-    const double t_end = d.t_end - (d.t_start - t_start);
-    lines.push_back("dropped " + (recording.empty() ? "" : recording + " ") + fixed(t_start, 3) +
-                    "–" + fixed(t_end, 3) + " s: " + d.reason);
-  }
+  // The stretches too slow for a flight as one counted line (a hand-held recording has dozens,
+  // some a sample long); every other one a line of its own.
+  const std::string slow = kTooSlowReason;
+  int slow_count = 0;
+  std::string slow_reason;  // "turning slower than 2.000 rad/s", the finder's words
+  for (const DroppedStretch& d : fit.search.dropped)
+    if (d.reason.rfind(slow, 0) == 0) ++slow_count, slow_reason = d.reason;
+  if (slow_count > 0)
+    lines.push_back("dropped " + std::to_string(slow_count) + " stretch" +
+                    (slow_count == 1 ? "" : "es") + " of motion " + slow_reason +
+                    " (no flight: held or set down)");
+  const std::vector<std::string> dropped = fit_dropped_lines(fit);
+  for (std::size_t k = 0; k < dropped.size(); ++k)
+    if (fit.search.dropped[k].reason.rfind(slow, 0) != 0) lines.push_back(dropped[k]);
   const BodyEstimate& b = fit.body;
   const bool with_ratio_sigma = b.ratio_sigma && !b.moments_fixed;
   const auto ratio = [&](int i) {
@@ -183,7 +237,23 @@ std::vector<std::string> fit_summary(const FitResult& fit) {
                   (fit.drag == physics::DragLaw::none
                        ? ", no drag"
                        : ", " + std::string(physics::to_string(fit.drag)) + " drag"));
-  for (const std::string& note : b.notes) lines.push_back("note: " + note);
+  for (std::string note : b.notes) {
+    const std::size_t at = note.find(kGiveMoments);
+    if (reader == Reader::page && at != std::string::npos)
+      note.replace(at, std::string(kGiveMoments).size(), kMomentsRemedyPage);
+    lines.push_back("note: " + note);
+  }
+  return lines;
+}
+
+std::vector<std::string> fit_dropped_lines(const FitResult& fit) {
+  std::vector<std::string> lines;
+  for (const DroppedStretch& d : fit.search.dropped) {
+    const auto [t_start, recording] = own_time(fit, d.t_start);
+    const double t_end = d.t_end - (d.t_start - t_start);
+    lines.push_back("dropped " + (recording.empty() ? "" : recording + " ") + fixed(t_start, 3) +
+                    "–" + fixed(t_end, 3) + " s: " + d.reason);
+  }
   return lines;
 }
 

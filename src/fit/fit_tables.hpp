@@ -11,8 +11,8 @@
 namespace bookspin::fit {
 
 /// OUT/<recording>-fit.csv: one row per toss, columns toss, t_start, t_end (s), omega0_x/y/z
-/// (rad/s, phone frame), the half periods (s), residual_rms (rad/s), L_decay, drag_rate and
-/// its sigma (1/s), stable, poor_fit, flag.
+/// (rad/s, phone frame), the half periods (s) and the predicted one's σ (s), residual_rms (rad/s),
+/// L_decay, drag_rate and its sigma (1/s), stable, poor_fit, flag.
 CsvTable fit_toss_csv(const FitResult& fit);
 
 /// OUT/<recording>-fit-body.csv: one row, the moment ratios I1/I3, I2/I3, 1 and their sigmas,
@@ -23,9 +23,25 @@ CsvTable fit_toss_csv(const FitResult& fit);
 /// where neither).
 CsvTable fit_body_csv(const FitResult& fit);
 
-/// What the fit says besides its CSVs: the bias, the flights kept and the stretches dropped,
-/// the body's moments and notes (one line each), for the command to print.
-std::vector<std::string> fit_summary(const FitResult& fit);
+/// Who reads the summary: the command line's user, or the explorer page's lab's, who has no
+/// command-line options to give (its remedies are said in the page's terms).
+enum class Reader { command_line, page };
+
+/// What the fit says besides its CSVs: the bias, the flights kept, the stretches dropped (those
+/// turning too slowly for a flight, usually many and short, as one line with their count;
+/// each other one a line: fit_dropped_lines lists every one), the body's moments and notes
+/// (one line each), for the command to print or the page to show. For the page, a note's
+/// remedy "give --moments I1,I2,I3" is said in the page's terms (kMomentsRemedyPage).
+std::vector<std::string> fit_summary(const FitResult& fit, Reader reader = Reader::command_line);
+
+/// Every stretch of motion the finder dropped, a line each ("dropped NAME A–B s: why", on its
+/// own recording's clock): `bookspin fit --verbose` prints them, the page lists them apart.
+std::vector<std::string> fit_dropped_lines(const FitResult& fit);
+
+/// The page's words for the command line's "give --moments I1,I2,I3" (kGiveMoments).
+inline constexpr const char* kMomentsRemedyPage =
+    "fit it with a recording of the same body whose toss flips, dropped in together (or give "
+    "the moments to the command line's bookspin fit)";
 
 /// `value` with `digits` digits after the point ("0.170"): the summary's and the toss scenes'
 /// words (fit_summary, toss_scene).

@@ -15,7 +15,11 @@ namespace {
 constexpr int kHalfWindow = 2;  // samples each side of the derivative's quadratic, at least
 constexpr double kHalfWindowTime = 0.005;  // s each side: more samples where they are denser
 constexpr double kGapFactor = 5.0;         // a step this many typical steps long is a gap
-constexpr int kMinFitSamples = 10;         // a flight shorter than this cannot be fitted
+// s: and longer than this. An Android phone delivering a nominal 415 Hz may leave 21 ms
+// between two samples inside a flight; the exact motion bridges that (a body at 35 rad/s turns
+// under 1 rad in 25 ms) and so does the derivative, taken with each sample's own dt.
+constexpr double kMinGap = 0.025;
+constexpr int kMinFitSamples = 10;  // a flight shorter than this cannot be fitted
 
 std::string seconds(double value) {
   std::ostringstream text;
@@ -34,11 +38,11 @@ std::vector<std::pair<int, int>> segments(const GyroRecording& recording) {
   // gyroscope in bursts (steps of 2 ms, then 12 ms) has no gap at every burst.
   const std::size_t p90 = steps.size() * 9 / 10;
   std::nth_element(steps.begin(), steps.begin() + p90, steps.end());
-  const double typical_step = steps[p90];
+  const double gap = std::max(kGapFactor * steps[p90], kMinGap);
   std::vector<std::pair<int, int>> result;
   int begin = 0;
   for (int i = 1; i < n; ++i) {
-    bool cut = t[i] - t[i - 1] > kGapFactor * typical_step;
+    bool cut = t[i] - t[i - 1] > gap;
     for (double pause : recording.pauses)
       if (t[i - 1] < pause && t[i] >= pause) cut = true;
     if (cut) {
@@ -149,7 +153,43 @@ Rest measure_rest(const GyroRecording& recording, const FinderSettings& settings
   return find_rest(recording.t, recording.omega, segments(recording), still);
 }
 
+namespace {
+
+/// Part `p` of pooled `recording` alone, a pool of one on the pooled clock.
+GyroRecording part_alone(const GyroRecording& recording, std::size_t p) {
+  const RecordingPart& part = recording.parts[p];
+  GyroRecording alone;
+  alone.name = part.name;
+  alone.source = part.source;
+  alone.t.assign(recording.t.begin() + part.first, recording.t.begin() + part.last + 1);
+  alone.omega.assign(recording.omega.begin() + part.first, recording.omega.begin() + part.last + 1);
+  for (double pause : recording.pauses)
+    if (pause > alone.t.front() && pause <= alone.t.back()) alone.pauses.push_back(pause);
+  alone.gyroscope_range = part.gyroscope_range;
+  alone.parts = {part};
+  alone.parts[0].first = 0;
+  alone.parts[0].last = part.last - part.first;
+  return alone;
+}
+
+}  // namespace
+
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings) {
+  // Several recordings: each one's flights found as if it were alone (its own inertia cuts
+  // them), so that pooling it changes none of its tosses.
+  if (recording.parts.size() >= 2) {
+    FlightSearch search;
+    for (std::size_t p = 0; p < recording.parts.size(); ++p) {
+      FlightSearch own = find_flights(part_alone(recording, p), settings);
+      for (Flight& f : own.flights) {
+        f.first += recording.parts[p].first;
+        f.last += recording.parts[p].first;
+        search.flights.push_back(f);
+      }
+      search.dropped.insert(search.dropped.end(), own.dropped.begin(), own.dropped.end());
+    }
+    return search;
+  }
   FlightSearch search;
   const std::vector<Eigen::Vector3d> omega = without_bias(recording);
   const std::vector<std::pair<int, int>> segs = segments(recording);
@@ -247,7 +287,7 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     for (int i = first; i <= last; ++i) peak = std::max(peak, omega[i].norm());
     std::string reason;
     if (peak < settings.flight_omega)
-      reason = "turning slower than " + seconds(settings.flight_omega) + " rad/s";
+      reason = kTooSlowReason + seconds(settings.flight_omega) + " rad/s";
     else
       reason = "no torque-free stretch of " + seconds(settings.min_flight) +
                " s or longer (held, or a flight too short to fit)";

@@ -24,6 +24,10 @@ struct DroppedStretch {
   std::string reason;
 };
 
+/// The start of a DroppedStretch's reason for motion too slow for a flight ("turning slower
+/// than 2.000 rad/s"): the summary counts these (fit_summary).
+inline constexpr const char* kTooSlowReason = "turning slower than ";
+
 /// What the finder found. The bias it removed before judging is each recording's own
 /// (RecordingPart::bias).
 struct FlightSearch {
@@ -60,8 +64,8 @@ Rest measure_rest(const GyroRecording& recording, const FinderSettings& settings
 
 /// Finds the free flights of `recording` (pooled: pool_recordings; each part's bias removed from
 /// the omega it judges). No flight spans a pause or a gap (a step over five times the 90th
-/// percentile of the steps). Never throws for a recording with no flight (flights is then
-/// empty, and dropped says why); std::logic_error for a recording not pooled.
+/// percentile of the steps and over 25 ms). Never throws for a recording with no flight (flights is
+/// then empty, and dropped says why); std::logic_error for a recording not pooled.
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings = {});
 
 /// The flights given by hand, [t_start, t_end] s each, of `recording` (pooled, as find_flights

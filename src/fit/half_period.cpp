@@ -60,4 +60,17 @@ std::optional<double> motion_half_period(const physics::DampedExactRotation& mot
   return half;
 }
 
+/// −slope/intercept of the least-squares line through |L|(τ): the fractional loss of |L| per
+/// second (TossFit::L_decay).
+double L_decay(const std::vector<double>& tau, const std::vector<double>& L) {
+  const double n = static_cast<double>(tau.size());
+  double st = 0, sl = 0, stt = 0, stl = 0;
+  for (std::size_t i = 0; i < tau.size(); ++i) {
+    st += tau[i], sl += L[i], stt += tau[i] * tau[i], stl += tau[i] * L[i];
+  }
+  const double slope = (n * stl - st * sl) / (n * stt - st * st);
+  const double intercept = (sl - slope * st) / n;
+  return intercept > 0 ? -slope / intercept : 0.0;
+}
+
 }  // namespace bookspin::fit

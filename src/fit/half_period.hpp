@@ -1,6 +1,7 @@
 #pragma once
 // Flips and half periods (docs/phone-lab.md, "Reading the result"): the sign changes of ω
-// about the intermediate axis, measured or of a model, and their mean spacing, T/2.
+// about the intermediate axis, measured or of a model, and their mean spacing, T/2; and the
+// measured |L|'s decay.
 #include <Eigen/Dense>
 #include <optional>
 #include <vector>
@@ -19,5 +20,10 @@ std::vector<double> sign_changes(const std::vector<double>& t, const std::vector
 std::optional<double> motion_half_period(const physics::DampedExactRotation& motion,
                                          const Eigen::Matrix3d& axes,
                                          const std::vector<double>& tau);
+
+/// −slope/intercept of the least-squares line through |L|(τ) (`tau` s, `L` any unit, equal
+/// lengths, two or more): the fractional loss of |L| per second (TossFit::L_decay); 0 where the
+/// line's intercept is not positive.
+double L_decay(const std::vector<double>& tau, const std::vector<double>& L);
 
 }  // namespace bookspin::fit

@@ -3,6 +3,7 @@
 #include <unzip.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -41,7 +42,8 @@ std::string lower(std::string text) {
   return text;
 }
 
-/// The lines of `text` (without their ends), with their 1-based numbers; blank lines left out.
+/// The lines of `text` (without their ends), with their 1-based numbers; blank lines and
+/// comment lines (starting with '#', as a whitespace-separated export's notes do) left out.
 std::vector<std::pair<int, std::string_view>> lines_of(std::string_view text) {
   std::vector<std::pair<int, std::string_view>> lines;
   int number = 0;
@@ -49,7 +51,8 @@ std::vector<std::pair<int, std::string_view>> lines_of(std::string_view text) {
   while (begin < text.size()) {
     const TextLine next = next_line(text, begin);  // "\r\n", "\n" or a lone "\r"
     ++number;
-    if (next.line.find_first_not_of(" \t") != std::string_view::npos)
+    const std::size_t first = next.line.find_first_not_of(" \t");
+    if (first != std::string_view::npos && next.line[first] != '#')
       lines.emplace_back(number, next.line);
     begin = next.next;
   }
@@ -73,6 +76,81 @@ bool is_phyphox_gyro_header(const std::vector<std::string>& header) {
     if (cell != std::string("gyroscope ") + axes[i] + " (rad/s)") return false;
   }
   return header.size() == 4 || lower(header[4]).rfind("absolute", 0) == 0;
+}
+
+/// The cells of a whitespace-separated line: split at runs of spaces and tabs, a "(unit)" kept
+/// with the name before it ("ωₓ (rad/s)" one cell).
+std::vector<std::string> whitespace_cells(std::string_view line) {
+  std::vector<std::string> cells;
+  std::size_t i = 0;
+  while (true) {
+    i = line.find_first_not_of(" \t", i);
+    if (i == std::string_view::npos) return cells;
+    const std::size_t end = std::min(line.find_first_of(" \t", i), line.size());
+    const std::string_view word = line.substr(i, end - i);
+    if (word.front() == '(' && !cells.empty())
+      cells.back().append(" ").append(word);
+    else
+      cells.emplace_back(word);
+    i = end;
+  }
+}
+
+/// A column name without its unit, lowered, and its "(unit)" ("" without one).
+std::pair<std::string, std::string> name_and_unit(const std::string& cell) {
+  const std::size_t open = cell.find('(');
+  const std::size_t close = cell.rfind(')');
+  if (open == std::string::npos || close == std::string::npos || close < open)
+    return {lower(std::string(trimmed(cell))), ""};
+  return {lower(std::string(trimmed(cell.substr(0, open)))),
+          lower(std::string(trimmed(cell.substr(open + 1, close - open - 1))))};
+}
+
+/// The axis ("x", "y", "z") a column named `name` (name_and_unit's) holds ω about: "wx", "ωₓ",
+/// "ω_y", "omega z", "gyro x", "gyroscope z", …; "" for any other name.
+std::string omega_axis(std::string name) {
+  // The subscripts people type: ₓ (U+2093), ᵧ (U+1D67, gamma, used for y), ᶻ (U+1DBB).
+  for (const auto& [from, to] : {std::pair<const char*, const char*>{"\u2093", "x"},
+                                 {"\u1d67", "y"},
+                                 {"\u1dbb", "z"},
+                                 {"\u03c9", "w"}}) {
+    for (std::size_t at = name.find(from); at != std::string::npos; at = name.find(from))
+      name.replace(at, std::string(from).size(), to);
+  }
+  std::string bare;
+  for (char c : name)
+    if (c != '_' && c != ' ' && c != '-') bare += c;
+  for (const char* prefix : {"gyroscope", "gyro", "omega", "w"})
+    if (bare.rfind(prefix, 0) == 0 && bare.size() == std::string(prefix).size() + 1) {
+      const char axis = bare.back();
+      if (axis == 'x' || axis == 'y' || axis == 'z') return std::string(1, axis);
+    }
+  return "";
+}
+
+/// rad/s in one unit an ω column's header states: 1 for rad/s (or none stated), π/180 for
+/// degrees per second; nullopt for any other unit.
+std::optional<double> omega_unit(const std::string& unit) {
+  if (unit.empty() || unit == "rad/s" || unit == "rad s^-1" || unit == "rad s-1") return 1.0;
+  if (unit == "\u00b0/s" || unit == "deg/s" || unit == "dps") return 3.14159265358979323846 / 180.0;
+  return std::nullopt;
+}
+
+/// A header naming time (s) and ω about x, y, z in that order ("t (s)", "ωₓ (rad/s)", "ωᵧ
+/// (rad/s)", "ω_z (rad/s)"): each ω column's scale to rad/s (omega_unit); nullopt otherwise.
+std::optional<std::array<double, 3>> labelled_gyro_header(const std::vector<std::string>& header) {
+  if (header.size() != 4) return std::nullopt;
+  const auto [time, time_unit] = name_and_unit(header[0]);
+  if ((time != "t" && time != "time") || (!time_unit.empty() && time_unit != "s"))
+    return std::nullopt;
+  std::array<double, 3> scale{};
+  for (int i = 0; i < 3; ++i) {
+    const auto [name, unit] = name_and_unit(header[i + 1]);
+    const std::optional<double> to_rad = omega_unit(unit);
+    if (omega_axis(name) != std::string(1, "xyz"[i]) || !to_rad) return std::nullopt;
+    scale[static_cast<std::size_t>(i)] = *to_rad;
+  }
+  return scale;
 }
 
 bool is_plain_header(const std::vector<std::string>& header) {
@@ -195,16 +273,30 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   const auto lines = lines_of(text);
   if (lines.empty()) throw InputError(file, 0, "", "not a gyroscope recording: the file is empty");
   const std::string_view head = lines.front().second;
+  // Tab, semicolon (a decimal comma) or comma as phyphox writes; else, with none of them,
+  // cells separated by spaces (a text export: "t (s)  ωₓ (rad/s) …").
   const char separator = head.find('\t') != std::string_view::npos  ? '\t'
                          : head.find(';') != std::string_view::npos ? ';'
+                         : head.find(',') != std::string_view::npos ? ','
+                         : head.find(' ') != std::string_view::npos ? ' '
                                                                     : ',';
   const bool decimal_comma = separator == ';';
-  const std::vector<std::string> header = split_cells(head, separator);
+  const auto cells_of = [&](std::string_view line) {
+    return separator == ' ' ? whitespace_cells(line) : split_cells(line, separator);
+  };
+  const std::vector<std::string> header = cells_of(head);
+  const std::optional<std::array<double, 3>> labelled = labelled_gyro_header(header);
   const bool phyphox = is_phyphox_gyro_header(header);
-  if (!phyphox && !is_plain_header(header))
+  if (!phyphox && !is_plain_header(header) && !labelled)
     throw InputError(file, lines.front().first, "header",
-                     "not a gyroscope recording: expected phyphox's \"Time (s)\", \"Gyroscope x "
-                     "(rad/s)\", ... or t,wx,wy,wz");
+                     separator == ' '
+                         ? "not a gyroscope recording: a whitespace-separated table whose " +
+                               std::to_string(header.size()) +
+                               " column names are not time (s) and ω about x, y, z (rad/s or "
+                               "°/s), as \"t (s)  ωₓ (rad/s)  ωᵧ (rad/s)  ω_z (rad/s)\""
+                         : "not a gyroscope recording: expected phyphox's \"Time (s)\", "
+                           "\"Gyroscope x (rad/s)\", ... or t,wx,wy,wz");
+  const std::array<double, 3> scale = labelled.value_or(std::array<double, 3>{1.0, 1.0, 1.0});
   GyroRecording recording;
   recording.name = file_safe(name);
   recording.source = file;
@@ -212,7 +304,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   recording.omega.reserve(lines.size());
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const auto& [number, line] = lines[i];
-    const std::vector<std::string> cells = split_cells(line, separator);
+    const std::vector<std::string> cells = cells_of(line);
     if (cells.size() < 4)
       throw InputError(file, number, "",
                        "a row of " + std::to_string(cells.size()) + " cells, expected " +
@@ -230,7 +322,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
       throw InputError(file, number, header[0],
                        "time does not increase (" + cells[0] + " after the previous row's)");
     recording.t.push_back(values[0]);
-    recording.omega.emplace_back(values[1], values[2], values[3]);
+    recording.omega.emplace_back(scale[0] * values[1], scale[1] * values[2], scale[2] * values[3]);
   }
   if (static_cast<int>(recording.t.size()) < kMinSamples)
     throw InputError(file, 0, "",

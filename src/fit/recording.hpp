@@ -34,6 +34,10 @@ struct RecordingPart {
   /// no rest the correction's standard error.
   Eigen::Vector3d bias_correction = Eigen::Vector3d::Zero();
   std::optional<Eigen::Vector3d> bias_fitted_sigma;
+  /// rad/s, phone frame, set by the fit with no still rest: the bias its flights gave where it
+  /// was consistent with zero (fit/toss_fit.hpp, bias_significant) and so not applied
+  /// (bias_correction is then 0, bias_fitted_sigma its σ); nullopt where it was applied.
+  std::optional<Eigen::Vector3d> bias_not_applied;
   /// rad/s, phone frame: the bias removed in flight, bias + bias_correction.
   Eigen::Vector3d bias_in_flight() const { return bias + bias_correction; }
 };

@@ -5,6 +5,7 @@
 
 #include "common/errors.hpp"
 #include "fit/fit_tables.hpp"
+#include "fit/pool.hpp"
 #include "physics/exact_solution.hpp"
 
 namespace bookspin::fit {
@@ -27,11 +28,18 @@ TossChart toss_chart(const GyroRecording& recording, const FitResult& fit, int t
   const BodyEstimate& body = fit.body;
   TossChart chart;
   chart.toss = toss;
-  measured_omega(recording, fit, toss, chart.t, chart.measured);
-  for (const double s : chart.t) chart.fitted.push_back(fitted_omega(fit, toss, s));
   const Flight& flight = fitted.flight;
+  // Its own recording's name and clock (of several pooled, the one it was thrown in).
+  const RecordingPart& part = part_at(fit.parts, flight.t_start);
+  chart.recording = part.name;
+  chart.t_offset = part.t_offset;
+  measured_omega(recording, fit, toss, chart.t, chart.measured);
+  for (double& s : chart.t) {
+    chart.fitted.push_back(fitted_omega(fit, toss, s));
+    s -= chart.t_offset;
+  }
   for (double s = flight.t_start; s <= flight.t_end + 1e-12; s += kCurveStep) {
-    chart.curve_t.push_back(s);
+    chart.curve_t.push_back(s - chart.t_offset);
     chart.curve.push_back(fitted_omega(fit, toss, s));
   }
   const Eigen::Vector3d axis2 = body.axes.col(1);
@@ -76,12 +84,14 @@ FitReport fit_report(const GyroRecording& recording, const FitRequest& request,
   report.recording = recording.name;
   report.source = recording.source;
   FitSettings settings = request.settings;
-  if (!settings.stop) settings.stop = stop;  // polled by the solver too
+  if (!settings.stop) settings.stop = stop;     // polled by the solver too
+  settings.trim_ends = request.tosses.empty();  // flights by hand are fitted as given
   report.result = fit_recording(recording, search, settings);
   const FitResult& result = report.result;
   report.toss_csv = csv_text(fit_toss_csv(result), "fit CSV");
   report.body_csv = csv_text(fit_body_csv(result), "fit body CSV");
-  report.summary = fit_summary(result);
+  report.summary = fit_summary(result, request.reader);
+  report.dropped = fit_dropped_lines(result);
   report.has_scenes = toss_book(result.body).has_value();
   for (int k = 0; k < static_cast<int>(result.tosses.size()); ++k) {
     stop_if_asked(stop, "fit charts");

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/stop.hpp"
+#include "fit/fit_tables.hpp"
 #include "fit/recording.hpp"
 #include "fit/toss_fit.hpp"
 #include "fit/toss_scene.hpp"
@@ -22,18 +23,25 @@ namespace bookspin::fit {
 struct FitRequest {
   /// --tosses by hand, [t_start, t_end] s each (hand_flights); empty: found (find_flights).
   std::vector<std::pair<double, double>> tosses;
-  FitSettings settings;  ///< --moments, --drag
+  FitSettings settings;                  ///< --moments, --drag
+  Reader reader = Reader::command_line;  ///< whose terms the summary's remedies are in
 };
 
 /// One toss's chart as values (charts::toss_image draws it; docs/phone-lab.md, "Reading the
 /// result").
 struct TossChart {
   int toss = 0;  ///< 0-based
-  /// The flight's samples: t (N, s, the recording's time), the measured ω (N, rad/s, phone
+  /// The toss's own recording (RecordingPart::name: of several pooled, the one it was thrown
+  /// in) and the seconds its own clock is behind the pooled one (RecordingPart::t_offset): every
+  /// time below is on its own clock, as its recording's file has it.
+  std::string recording;
+  double t_offset = 0.0;
+  /// The flight's samples: t (N, s, its own recording's time), the measured ω (N, rad/s, phone
   /// frame, bias removed: measured_omega) and the fitted ω at the same times (fitted_omega).
   std::vector<double> t;
   std::vector<Eigen::Vector3d> measured, fitted;
-  /// The fitted ω every millisecond of the flight (s, rad/s, phone frame): the chart's lines.
+  /// The fitted ω every millisecond of the flight (s on its own clock, rad/s, phone frame): the
+  /// chart's lines.
   std::vector<double> curve_t;
   std::vector<Eigen::Vector3d> curve;
   /// The fitted motion's flips (s): where its ω about the fitted intermediate axis changes sign
@@ -68,6 +76,7 @@ struct FitReport {
   /// toss (fit_toss_csv), and OUT/<recording>-fit-body.csv, the body's row (fit_body_csv).
   std::string toss_csv, body_csv;
   std::vector<std::string> summary;  ///< fit_summary's lines
+  std::vector<std::string> dropped;  ///< fit_dropped_lines: every stretch dropped, a line each
   std::vector<TossReport> tosses;    ///< one per toss, in order
   bool has_scenes = false;           ///< every toss has its scene (toss_book made a book)
 };

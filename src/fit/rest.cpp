@@ -90,4 +90,17 @@ Rest find_rest(const std::vector<double>& t, const std::vector<Eigen::Vector3d>&
   return rest;
 }
 
+bool bias_significant(const Eigen::Vector3d& bias, const Eigen::Vector3d& sigma) {
+  return bias_chi_square(bias, sigma) > kBiasChiSquare;
+}
+
+double bias_chi_square(const Eigen::Vector3d& bias, const Eigen::Vector3d& sigma) {
+  double chi2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    if (!(sigma[i] > 0)) return std::numeric_limits<double>::infinity();
+    chi2 += (bias[i] / sigma[i]) * (bias[i] / sigma[i]);
+  }
+  return chi2;
+}
+
 }  // namespace bookspin::fit

@@ -51,4 +51,14 @@ inline constexpr double kBiasDrift = 0.002;
 Rest find_rest(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& omega,
                const std::vector<std::pair<int, int>>& segments, const RestSettings& settings = {});
 
+/// The χ² of a bias `bias` fitted with standard errors `sigma` (rad/s, per axis) against zero:
+/// Σ (bias_i/σ_i)²; infinite where a σ is not positive.
+double bias_chi_square(const Eigen::Vector3d& bias, const Eigen::Vector3d& sigma);
+
+/// χ² for 3 degrees of freedom at 1 %: a fitted bias below it is consistent with zero.
+inline constexpr double kBiasChiSquare = 11.34;
+
+/// Whether `bias` differs from zero significantly: bias_chi_square above kBiasChiSquare.
+bool bias_significant(const Eigen::Vector3d& bias, const Eigen::Vector3d& sigma);
+
 }  // namespace bookspin::fit

@@ -8,8 +8,10 @@
 #include <cstdio>
 
 #include "common/errors.hpp"
+#include "fit/flight_trim.hpp"
 #include "fit/half_period.hpp"
 #include "fit/pool.hpp"
+#include "fit/prediction_sigma.hpp"
 #include "fit/saturation.hpp"
 #include "fit/toss_flags.hpp"
 #include "fit/toss_parameters.hpp"
@@ -85,8 +87,8 @@ struct BiasFreedom {
   int fitted_groups = 0;
 };
 
-BiasFreedom bias_freedom(const std::vector<RecordingPart>& parts,
-                         const std::vector<TossData>& data) {
+BiasFreedom bias_freedom(const std::vector<RecordingPart>& parts, const std::vector<TossData>& data,
+                         const std::vector<bool>& held) {
   BiasFreedom b;
   const std::size_t groups = parts.size();
   b.bound.resize(groups);
@@ -96,7 +98,7 @@ BiasFreedom bias_freedom(const std::vector<RecordingPart>& parts,
   b.fitted.resize(groups);
   b.free.resize(groups);
   for (std::size_t g = 0; g < groups; ++g) {
-    b.fitted[g] = group_tosses[g] >= 2;
+    b.fitted[g] = group_tosses[g] >= 2 && !(g < held.size() && held[g]);
     b.free[g] = b.fitted[g] && !b.bound[g];
     b.any_bound = b.any_bound || (b.fitted[g] && b.bound[g]);
     b.fitted_groups += b.fitted[g];
@@ -311,25 +313,12 @@ void widen_by_folds(const Folds& folds, bool fixed, BodyEstimate& body) {
   body.axis_sigma_deg = body.axis_sigma_deg->cwiseMax((factor * turn2).cwiseSqrt());
 }
 
-/// −slope/intercept of the least-squares line through |L|(τ): the fractional loss of |L| per
-/// second (TossFit::L_decay).
-double L_decay(const std::vector<double>& tau, const std::vector<double>& L) {
-  const double n = static_cast<double>(tau.size());
-  double st = 0, sl = 0, stt = 0, stl = 0;
-  for (std::size_t i = 0; i < tau.size(); ++i) {
-    st += tau[i], sl += L[i], stt += tau[i] * tau[i], stl += tau[i] * L[i];
-  }
-  const double slope = (n * stl - st * sl) / (n * stt - st * st);
-  const double intercept = (sl - slope * st) / n;
-  return intercept > 0 ? -slope / intercept : 0.0;
-}
-
 /// Toss k's prediction (TossFit::half_period_predicted and what it rests on): the body and drag
 /// rate of its fold (the other tosses, or --moments), ω0 from its first predict_window s; its
 /// flips over the flight's times. A note where the other tosses are a short bounce.
 void predict(const std::vector<TossData>& data, std::size_t k, const Folds& folds,
-             const FlightSearch& search, const FitSettings& settings, TossFit& toss,
-             BodyEstimate& body) {
+             const FlightSearch& search, const FitSettings& settings,
+             const PredictionInputs& inputs, TossFit& toss, BodyEstimate& body) {
   const TossData& d = data[k];
   const std::size_t fold = k % folds.count;
   const std::optional<Parameters>& held_out = folds.body[fold];
@@ -346,6 +335,7 @@ void predict(const std::vector<TossData>& data, std::size_t k, const Folds& fold
   options.drag = settings.drag;
   options.rates_fixed = true;
   options.window = settings.predict_window;
+  const Parameters seed = others;
   if (!solve(alone, others, options).usable) return;
   const Eigen::Matrix3d axes = others.axes();
   const physics::DampedExactRotation predicted(
@@ -356,22 +346,27 @@ void predict(const std::vector<TossData>& data, std::size_t k, const Folds& fold
   toss.half_period_predicted = motion_half_period(predicted, axes, d.tau);
   // What it rests on: the tosses of the other folds (none with one toss and --moments).
   int from = 0;
-  double seconds = 0.0;
-  if (data.size() >= 2)
-    for (std::size_t j = 0; j < data.size(); ++j)
-      if (j % folds.count != fold) {
-        ++from;
-        seconds += search.flights[j].t_end - search.flights[j].t_start;
-      }
+  double seconds = 0.0, all = 0.0;
+  for (std::size_t j = 0; j < data.size(); ++j) {
+    const double span = search.flights[j].t_end - search.flights[j].t_start;
+    all += span;
+    if (data.size() >= 2 && j % folds.count != fold) ++from, seconds += span;
+  }
   toss.predicted_from_tosses = from;
   toss.predicted_from_seconds = seconds;
+  // Its body is fitted on `seconds` of flight, not all: the joint σ times √(all/seconds).
+  PredictionInputs held = inputs;
+  if (held.ratio_sigma && seconds > 0) *held.ratio_sigma *= std::sqrt(all / seconds);
+  if (toss.half_period_predicted)
+    toss.half_period_predicted_sigma =
+        prediction_sigma(d, others, seed, options, held, *toss.half_period_predicted);
   if (from > 0 && seconds < kShortBasis) {
-    char line[220];
+    char line[300];
     std::snprintf(line, sizeof line,
                   "toss %zu's half_period_predicted rests on %d other toss(es), %.2f s of "
                   "flight in all: a short bounce alone pins the body poorly (fit the "
-                  "recordings of one body together, or give --moments)",
-                  k + 1, from, seconds);
+                  "recordings of one body together, or %s)",
+                  k + 1, from, seconds, kGiveMoments);
     body.notes.push_back(line);
   }
 }
@@ -437,8 +432,8 @@ void body_notes(const FitResult& result, const FitSettings& settings, BodyEstima
   if (stable_count == tosses && !fixed) {
     body.moments_determined = false;
     body.notes.push_back(
-        "every toss is stable (no flip): the moment ratios are poorly determined; give "
-        "--moments I1,I2,I3 to fix them");
+        std::string("every toss is stable (no flip): the moment ratios are poorly determined; ") +
+        kGiveMoments + " to fix them");
   } else if (stable_count > 0) {
     body.notes.push_back(std::to_string(stable_count) +
                          " stable toss(es) (no flip) fitted with the body the others determine");
@@ -498,10 +493,11 @@ void measured_omega(const GyroRecording& recording, const FitResult& fit, int to
   for (int i = flight.first; i <= flight.last; ++i) omega.push_back(recording.omega[i] - bias);
 }
 
-FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
-                        const FitSettings& settings) {
-  check_pooled(recording);
-  if (search.flights.empty()) no_flight(recording, search);
+namespace {
+
+/// fit_recording with the bias corrections of the recordings `held` (by part) held at zero.
+FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search,
+                      const FitSettings& settings, const std::vector<bool>& held) {
   FitResult result;
   result.parts = recording.parts;
   result.search = search;
@@ -516,7 +512,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   const bool fixed = settings.moments.has_value();
   Parameters p = start(data, settings);
   p.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
-  const BiasFreedom bias = bias_freedom(recording.parts, data);
+  const BiasFreedom bias = bias_freedom(recording.parts, data, held);
   const Solved solved = joint_fit(data, p, bias, settings, recording.source);
   // The bias in flight: each recording's rest plus its fitted correction; the samples corrected
   // by it, so that what follows (and measured_omega) sees them as the fit did.
@@ -540,11 +536,50 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   for (std::size_t k = 0; k < data.size(); ++k) {
     TossFit toss = toss_values(data, k, p, sigmas, residuals[k], search.flights[k], saturation,
                                noise, settings.drag, body);
-    predict(data, k, folds, search, settings, toss, body);
+    const PredictionInputs inputs{settings.drag, body.ratio_sigma,
+                                  bias_sigma(result.parts.at(data[k].group))};
+    predict(data, k, folds, search, settings, inputs, toss, body);
     result.tosses.push_back(toss);
   }
   body_notes(result, settings, body);
   return result;
+}
+
+/// fit_holding, the bias of each recording with no rest held at zero where it is noise.
+FitResult fit_with_bias_rule(const GyroRecording& recording, const FlightSearch& search,
+                             const FitSettings& settings) {
+  // A bias fitted from the flights of a recording with no still rest is applied only where it
+  // differs from zero significantly (docs/phone-lab.md, "The bias"): else it is the flights'
+  // noise, held at zero, and its σ stays as the bound the flights set on it.
+  FitResult result = fit_holding(recording, search, settings, {});
+  std::vector<bool> held(result.parts.size(), false);
+  bool any = false;
+  for (std::size_t g = 0; g < held.size(); ++g) {
+    const RecordingPart& part = result.parts[g];
+    if (part.rest.samples > 0 || !part.bias_fitted_sigma) continue;
+    held[g] = !bias_significant(part.bias_correction, *part.bias_fitted_sigma);
+    any = any || held[g];
+  }
+  if (!any) return result;
+  FitResult again = fit_holding(recording, search, settings, held);
+  for (std::size_t g = 0; g < held.size(); ++g)
+    if (held[g]) {
+      again.parts[g].bias_not_applied = result.parts[g].bias_correction;
+      again.parts[g].bias_fitted_sigma = result.parts[g].bias_fitted_sigma;
+    }
+  return again;
+}
+
+}  // namespace
+
+FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
+                        const FitSettings& settings) {
+  check_pooled(recording);
+  if (search.flights.empty()) no_flight(recording, search);
+  const FitResult fit = fit_with_bias_rule(recording, search, settings);
+  if (!settings.trim_ends) return fit;
+  const std::optional<FlightSearch> trimmed = trimmed_flights(recording, fit);
+  return trimmed ? fit_with_bias_rule(recording, *trimmed, settings) : fit;
 }
 
 }  // namespace bookspin::fit

@@ -56,6 +56,10 @@ struct TossFit {
   /// `predict_window` seconds alone; nothing after them is seen. nullopt with no other toss and
   /// no --moments.
   std::optional<double> half_period_predicted;
+  /// s: one σ of half_period_predicted, propagated from what it rests on (fit/
+  /// prediction_sigma.hpp); nullopt without a prediction, or where the separatrix is within
+  /// reach of its inputs' σ (no interval holds it).
+  std::optional<double> half_period_predicted_sigma;
   /// What half_period_predicted rests on: the number of other tosses the held-out body was
   /// fitted on and their flight time (s); 0 and 0 when it is the given --moments'. nullopt
   /// with no prediction. A body from a short bounce alone predicts poorly (a note says so).
@@ -79,11 +83,19 @@ struct TossFit {
   int saturated = 0;
 };
 
+/// A note's remedy on the command line (BodyEstimate::notes); the page says it in its own terms
+/// (fit_summary, Reader::page).
+inline constexpr const char* kGiveMoments = "give --moments I1,I2,I3";
+
 /// What the fit is given besides the flights.
 struct FitSettings {
   /// Principal moments given by --moments (any scale, any order): fixed, not fitted.
   std::optional<Eigen::Vector3d> moments;
   double predict_window = 0.2;  ///< s, the start of a toss that half_period_predicted sees
+  /// Each flight's ends trimmed by the fitted motion's residual and the flights fitted again
+  /// (fit/flight_trim.hpp): fit_report asks it for the flights it finds (the command line and
+  /// the page alike); flights given by hand are fitted as given.
+  bool trim_ends = false;
   /// The air drag's law fitted with each toss (docs/physics.md §21; docs/phone-lab.md, "Drag":
   /// linear by default, chosen by measurement), its rate one more parameter per toss.
   physics::DragLaw drag = physics::DragLaw::linear;
@@ -107,7 +119,10 @@ struct FitResult {
   std::optional<double> saturation_range;
 };
 
-/// Fits `search`'s flights of `recording` (pooled: pool_recordings, one recording or more).
+/// Fits `search`'s flights of `recording` (pooled: pool_recordings, one recording or more). A
+/// recording with no still rest whose bias fitted from its flights is consistent with zero
+/// (bias_significant false) is fitted again with it held at zero (RecordingPart::
+/// bias_not_applied keeps it, bias_fitted_sigma its σ).
 /// Throws InputError naming the recording when there is no flight ("no free flight found", with
 /// why each stretch was dropped) or when the solver cannot fit them; Interrupted when
 /// settings.stop answers a signal; std::logic_error for a recording not pooled.

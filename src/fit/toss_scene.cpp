@@ -6,6 +6,7 @@
 #include "common/json_string.hpp"
 #include "common/number_text.hpp"
 #include "fit/fit_tables.hpp"
+#include "fit/pool.hpp"
 
 namespace bookspin::fit {
 namespace {
@@ -77,11 +78,18 @@ std::optional<TossScene> toss_scene(const GyroRecording& recording, const FitRes
   const std::string moments = fixed(r[0], 4) + " : " + fixed(r[1], 4) + " : 1";
   scene.name = toss_scene_name(name, toss + 1);
   scene.measured_file = toss_measured_file(name, toss);
-  scene.title = name + ", toss " + n + ": the fitted exact motion";
+  // The toss named by its own recording and its own times (of several pooled, the one it was
+  // thrown in, on that recording's clock), and the pooled fit it belongs to.
+  const RecordingPart& part = part_at(fit.parts, t.flight.t_start);
+  const bool pooled = fit.parts.size() >= 2;
+  scene.title =
+      part.name + ", toss " + n + (pooled ? " of " + name : "") + ": the fitted exact motion";
   scene.description =
-      "Toss " + n + " of the recording " + name + " (" + fixed(t.flight.t_start, 3) + "–" +
-      fixed(t.flight.t_end, 3) + " s), fitted by bookspin fit: a box with the fitted moments " +
-      moments + " spinning from the fitted ω0 under the exact motion" +
+      "Toss " + n + (pooled ? " of " + name + ", thrown in the recording " : " of the recording ") +
+      part.name + " (" + fixed(t.flight.t_start - part.t_offset, 3) + "–" +
+      fixed(t.flight.t_end - part.t_offset, 3) +
+      " s), fitted by bookspin fit: a box with the fitted moments " + moments +
+      " spinning from the fitted ω0 under the exact motion" +
       (t.drag_rate != 0.0 && fit.drag != physics::DragLaw::none
            ? " slowed by the fitted " + std::string(physics::to_string(fit.drag)) + " drag (" +
                  fixed(t.drag_rate, 3) + " /s)"
@@ -112,7 +120,7 @@ std::string toss_scene_text(const TossScene& scene, int toss, const std::string&
   model += "\n";
   const std::string n = std::to_string(toss + 1);
   std::string text =
-      "# Toss " + n + " of the recording " + recording +
+      "# Toss " + n + " of " + recording +
       " as bookspin fit fitted it (docs/phone-lab.md):\n"
       "# the exact motion of a box with the fitted moment ratios from the fitted ω0, in the\n"
       "# body frame x, y, z = the fitted principal axes 2, -1, 3 (their phone-frame components\n"

@@ -168,6 +168,8 @@ FitFiles fit_files(const FitJob& job, const fit::FitReport& report) {
       job.clips ? job.clips->scene.render.formats : std::vector<std::string>{});
   const FitLayout& layout = files.layout;
   files.summary = report.summary;
+  if (job.verbose)
+    files.summary.insert(files.summary.end(), report.dropped.begin(), report.dropped.end());
   files.summary.push_back("wrote " + layout.csv.string() + ", " + layout.body_csv.string() +
                           " and " + std::to_string(layout.pngs.size()) + " chart(s)" +
                           (layout.videos.empty()

@@ -47,6 +47,9 @@ struct FitJob {
   std::filesystem::path out_dir;
   fit::FitRequest request;         ///< --tosses by hand (empty: found), --moments, --drag
   int width = 1280, height = 640;  ///< each chart's pixels
+  /// --verbose: the summary lists every stretch the finder dropped (fit::fit_dropped_lines),
+  /// after its counted line; the files are the same.
+  bool verbose = false;
   /// --render: a clip of each toss, its scene made by the command (fit_clip_scene: a bad scene
   /// file or --slow-motion is refused before anything is made).
   std::optional<FitClips> clips;

@@ -183,3 +183,59 @@ TEST(Recording, AZipIsOneExportNotEmptyAndNoBomb) {
 
 }  // namespace
 }  // namespace bookspin::fit
+
+namespace bookspin::fit {
+namespace {
+
+/// `written` as a whitespace-separated text export: '#' notes before the header and between
+/// rows, the header `header` (its ω columns in `unit`'s scale: 1 rad/s each).
+std::string text_export(const test::SyntheticRecording& written, const std::string& header,
+                        double unit) {
+  std::string text =
+      "# exported by a gyroscope app\n#   sample rate: 415 Hz (nominal)\n" + header + "\n";
+  char row[160];
+  for (std::size_t i = 0; i < written.t.size(); ++i) {
+    std::snprintf(row, sizeof row, "%.9f   %.9e\t%.9e  %.9e\n", written.t[i],
+                  written.omega[i][0] / unit, written.omega[i][1] / unit,
+                  written.omega[i][2] / unit);
+    text += row;
+    if (i == 10) text += "# the phone was picked up here\n";
+  }
+  return text;
+}
+
+// A text export with '#' notes and a unicode header is read as its numbers say; one in degrees
+// per second that its header states is read in rad/s.
+TEST(Recording, ReadsAWhitespaceSeparatedExportWithCommentsAndAUnicodeHeader) {
+  const test::SyntheticRecording written = small_recording();
+  const auto expect_samples = [&](const GyroRecording& read) {
+    ASSERT_EQ(read.t.size(), written.t.size());
+    for (std::size_t i = 0; i < read.t.size(); i += 7) {
+      EXPECT_NEAR(read.t[i], written.t[i], 1e-8 * (1 + written.t[i]));
+      EXPECT_LT((read.omega[i] - written.omega[i]).norm(), 1e-7 * (1 + written.omega[i].norm()));
+    }
+  };
+  for (const std::string header : {"t (s)  ωₓ (rad/s)  ωᵧ (rad/s)  ω_z (rad/s)", "time  wx  wy  wz",
+                                   "t(s)  ω_x(rad/s)  ω_y(rad/s)  ω_z(rad/s)"}) {
+    const GyroRecording read =
+        parse_gyro_csv(text_export(written, header, 1.0), "phone.txt", "phone");
+    expect_samples(read);
+  }
+  const double degree = 3.14159265358979323846 / 180.0;
+  expect_samples(parse_gyro_csv(
+      text_export(written, "t (s)  ωₓ (°/s)  ωᵧ (°/s)  ω_z (°/s)", degree), "phone.txt", "phone"));
+}
+
+// A whitespace-separated table it cannot read is refused naming that dialect and what it expects.
+TEST(Recording, AWhitespaceSeparatedTableOfOtherColumnsIsRefusedNamingTheDialect) {
+  EXPECT_EQ(error_of("# accelerometer\nt (s)  ax (m/s^2)  ay (m/s^2)  az (m/s^2)\n" + rows(10)),
+            "bad.csv:2: header: not a gyroscope recording: a whitespace-separated table whose 4 "
+            "column names are not time (s) and ω about x, y, z (rad/s or °/s), as \"t (s)  ωₓ "
+            "(rad/s)  ωᵧ (rad/s)  ω_z (rad/s)\"");
+  // ω in a unit it does not know is not read as rad/s.
+  EXPECT_NE(error_of("t (s)  ωₓ (rpm)  ωᵧ (rpm)  ω_z (rpm)\n" + rows(10)).find("whitespace"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace bookspin::fit

@@ -16,7 +16,7 @@ const $ = (id) => document.getElementById(id);
 const TOSS_WORDS = {
   recording: 'its recording', t_start: 'start (s)', t_end: 'end (s)', omega0_x: 'ω0 x (rad/s)', omega0_y: 'ω0 y (rad/s)',
   omega0_z: 'ω0 z (rad/s)', half_period_measured: 'T/2 measured (s)', half_period_fitted: 'T/2 fitted (s)',
-  half_period_predicted: 'T/2 predicted (s)', predicted_from_tosses: 'predicted from (tosses)',
+  half_period_predicted: 'T/2 predicted ± σ (s)', half_period_predicted_sigma: 'σ T/2 predicted (s)', predicted_from_tosses: 'predicted from (tosses)',
   predicted_from_seconds: 'predicted from (s of flight)', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
   drag_rate: 'drag rate ± σ (1/s)', drag_rate_sigma: 'σ drag rate (1/s)',
   saturated: 'samples at the gyroscope’s range', stable: 'stable (no flip)',
@@ -39,7 +39,8 @@ const MILLISECONDS = new Set(['t_start', 't_end', 'half_period_measured', 'half_
 function tossCell(toss, column, value) {
   if (typeof value !== 'number') return cell(value);
   if (column === 'drag_rate') return html(plusMinus(value, toss.drag_rate_sigma));
-  if (column === 'drag_rate_sigma') return html(significant(value, 2));
+  if (column === 'drag_rate_sigma' || column === 'half_period_predicted_sigma') return html(significant(value, 2));
+  if (column === 'half_period_predicted' && typeof toss.half_period_predicted_sigma === 'number') return html(plusMinus(value, toss.half_period_predicted_sigma));
   if (column === 'residual_rms' || column === 'L_decay') return html(significant(value, 2));
   if (MILLISECONDS.has(column)) return html(value.toFixed(3));
   return cell(value);
@@ -214,6 +215,19 @@ export class LabPanel {
       .finally(() => { $('labBusy').textContent = ''; });
   }
 
+  /** Every stretch the finder dropped, a line each (`bookspin fit --verbose`'s lines), folded
+   * under the summary, which counts those too slow for a flight in one line. */
+  showDropped(lines) {
+    let box = $('labDropped');
+    if (!box) {
+      box = document.createElement('details');
+      box.id = 'labDropped';
+      $('labSummary').after(box);
+    }
+    box.hidden = !lines.length;
+    box.innerHTML = `<summary>every stretch of motion dropped (${lines.length})</summary><pre>${html(lines.join('\n'))}</pre>`;
+  }
+
   /** The body, the summary, each toss's row, chart and play button. */
   show(r, ms) {
     this.result = r;
@@ -236,13 +250,15 @@ export class LabPanel {
       labelledRow('tosses, drag', '', `${cell(b.tosses)}, ${cell(b.drag)}`);
     // Several files: which were fitted as one body and which were refused, and why.
     // (One export with its meta/ is fitted as several are, but says nothing of it.)
-    const files = [];
+    // The recording fitted named first (several: the pool's name, then each file below).
+    const files = [`recording: ${r.recording}`];
     if (r.fitted && (r.fitted.length > 1 || r.refused.length)) {
       files.push(`fitted as one body: ${r.fitted.join(', ')}`);
       for (const x of r.refused) files.push(`refused ${x.file}: ${x.error}`);
     }
     if (this.skipped.length) files.push(`skipped (not a recording): ${this.skipped.join(', ')}`);
     $('labSummary').textContent = [...files, ...r.summary].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
+    this.showDropped(r.dropped || []);
     const list = $('labTosses');
     list.innerHTML = '';
     r.tosses.forEach((t, k) => {
@@ -251,7 +267,9 @@ export class LabPanel {
       const head = document.createElement('div');
       head.className = 'tossHead';
       const title = document.createElement('strong');
-      title.textContent = `toss ${t.toss}: ${t.recording ? `${t.recording} ` : ''}${t.t_start.toFixed(3)}–${t.t_end.toFixed(3)} s` +
+      // Named by its own recording and times (the table's, or alone the recording's own).
+      const own = t.recording || r.charts[k].recording || r.recording;
+      title.textContent = `toss ${t.toss}: ${own} ${t.t_start.toFixed(3)}–${t.t_end.toFixed(3)} s` +
         (t.stable === 'yes' ? ' (stable)' : '') + (t.poor_fit === 'yes' ? ' (flagged)' : '');
       head.appendChild(title);
       if (r.scenes[k]) {
@@ -265,8 +283,10 @@ export class LabPanel {
       canvas.className = 'tossChart';
       box.appendChild(canvas);
       const table = document.createElement('table');
-      // drag_rate_sigma is shown beside drag_rate.
-      table.innerHTML = Object.entries(t).filter(([c]) => c !== 'toss' && !(c === 'drag_rate_sigma' && typeof t.drag_rate === 'number'))
+      // drag_rate_sigma is shown beside drag_rate, half_period_predicted_sigma beside its value.
+      const beside = (c) => (c === 'drag_rate_sigma' && typeof t.drag_rate === 'number')
+        || (c === 'half_period_predicted_sigma' && typeof t.half_period_predicted === 'number');
+      table.innerHTML = Object.entries(t).filter(([c]) => c !== 'toss' && !beside(c))
         .map(([c, v]) => labelledRow(c, TOSS_WORDS[c], tossCell(t, c, v), v)).join('');
       box.appendChild(table);
       list.appendChild(box);

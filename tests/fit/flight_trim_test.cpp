@@ -1,0 +1,80 @@
+// A flight's ends cut by the fitted motion (docs/phone-lab.md, "How the flights are found"):
+// fit, trim each end while the exact motion's residual stays above the flight's own noise,
+// refit; the rule fit_recording applies for the command line and the page alike.
+#include "fit/flight_trim.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "fit/pool.hpp"
+#include "fit/report.hpp"
+#include "synthetic_recording.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path real_dir() {
+  return fs::path(BOOKSPIN_SOURCE_DIR) / ".." / "shared" / "recordings-real" /
+         "dvarkian-2022-05-03";
+}
+
+// Flights that run 0.1 s into their catch come back to within 20 ms of the true flight's end;
+// left untrimmed, they keep it and are flagged for it.
+TEST(FlightTrim, AFlightRunningIntoItsThrowAndCatchIsCutBackToTheFreeFlight) {
+  const test::SyntheticRecording synthetic = test::make_recording(
+      test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 61);
+  const GyroRecording recording = test::as_recording(synthetic);
+  std::vector<std::pair<double, double>> long_ranges;
+  for (const test::TrueToss& t : synthetic.tosses)
+    long_ranges.emplace_back(t.t_start, t.t_end + 0.1);
+  const FlightSearch given = hand_flights(recording, long_ranges);
+  FitSettings untrimmed;
+  untrimmed.trim_ends = false;
+  const FitResult kept = fit_recording(recording, given, untrimmed);
+  FitSettings trimming;
+  trimming.trim_ends = true;
+  const FitResult cut = fit_recording(recording, given, trimming);
+  ASSERT_EQ(cut.tosses.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const test::TrueToss& truth = synthetic.tosses[k];
+    EXPECT_NE(kept.tosses[k].flag.find("catch"), std::string::npos) << k << kept.tosses[k].flag;
+    EXPECT_EQ(cut.tosses[k].flag, "") << k;
+    std::cout << k << ": kept " << kept.tosses[k].flight.t_start << "–" << kept.tosses[k].flight.t_end << " residual " << kept.tosses[k].residual_rms << "; cut " << cut.tosses[k].flight.t_start << "–" << cut.tosses[k].flight.t_end << " residual " << cut.tosses[k].residual_rms << "\n";
+    EXPECT_NEAR(cut.tosses[k].flight.t_start, truth.t_start, 0.02) << k;
+    EXPECT_NEAR(cut.tosses[k].flight.t_end, truth.t_end, 0.02) << k;
+    EXPECT_LT(cut.tosses[k].residual_rms, 0.5 * kept.tosses[k].residual_rms) << k;
+  }
+  // Flights that are free to their ends stay as they are.
+  EXPECT_FALSE(trimmed_flights(recording, cut).has_value());
+}
+
+// Every development recording alone: at most one main throw (its longest toss) flagged as
+// holding its catch (the finder's ends ran 30–100 ms into the landing).
+TEST(FlightTrim, AtMostOneRealMainThrowKeepsItsCatch) {
+  if (!fs::is_directory(real_dir())) GTEST_SKIP() << "no real recordings at " << real_dir();
+  int flagged = 0;
+  for (const char* name : {"12-10-56", "12-13-01", "12-13-51", "12-22-44", "12-29-59",
+                           "12-38-00", "12-44-51"}) {
+    const FitReport report =
+        fit_report(pool_recordings({read_recording(real_dir() / name)}), {});
+    const auto main = std::max_element(
+        report.result.tosses.begin(), report.result.tosses.end(),
+        [](const TossFit& a, const TossFit& b) {
+          return a.flight.t_end - a.flight.t_start < b.flight.t_end - b.flight.t_start;
+        });
+    ASSERT_NE(main, report.result.tosses.end()) << name;
+    const bool catch_kept = main->flag.find("catch") != std::string::npos;
+    flagged += catch_kept;
+    if (catch_kept) std::cout << name << ": " << main->flag << "\n";
+  }
+  EXPECT_LE(flagged, 1);
+}
+
+}  // namespace
+}  // namespace bookspin::fit
