@@ -56,7 +56,8 @@ std::optional<double> prediction_sigma(const TossData& d, const Parameters& fitt
     return 0.5 * (*hi - *lo);
   };
   for (int c = 0; c < 3; ++c) {
-    const double sigma = std::sqrt(4.0 * scatter2 / n + inputs.bias_sigma[c] * inputs.bias_sigma[c]);
+    const double sigma =
+        std::sqrt(4.0 * scatter2 / n + inputs.bias_sigma[c] * inputs.bias_sigma[c]);
     const Eigen::Vector3d step = sigma * Eigen::Vector3d::Unit(c);
     const double s = spread(half_of(moments, axes, w0 - step, drag, d.tau),
                             half_of(moments, axes, w0 + step, drag, d.tau));

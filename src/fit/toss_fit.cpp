@@ -82,7 +82,7 @@ std::string saturation_note(const Saturation& saturation, const std::vector<Toss
 /// still rest's Rest::bound() where it has one, freely where it has none.
 struct BiasFreedom {
   std::vector<std::optional<Eigen::Vector3d>> bound;  ///< rad/s per recording, or nullopt
-  std::vector<bool> fitted, free;
+  std::vector<bool> fitted, free, held;               ///< held: at zero, its flights' bias noise
   bool any_bound = false;
   int fitted_groups = 0;
 };
@@ -95,6 +95,8 @@ BiasFreedom bias_freedom(const std::vector<RecordingPart>& parts, const std::vec
   for (std::size_t g = 0; g < groups; ++g)
     if (parts[g].rest.samples > 0) b.bound[g] = parts[g].rest.bound();
   const std::vector<int> group_tosses = tosses_per_group(data, groups);
+  b.held.assign(groups, false);
+  for (std::size_t g = 0; g < groups && g < held.size(); ++g) b.held[g] = held[g];
   b.fitted.resize(groups);
   b.free.resize(groups);
   for (std::size_t g = 0; g < groups; ++g) {
@@ -129,6 +131,7 @@ Solved joint_fit(const std::vector<TossData>& data, Parameters& p, const BiasFre
     options.spacing = 0.01;
     options.drag = law;
     options.rates_fixed = fraction < 1.0;
+    options.bias_group_held = bias.held;
     if (!solve(data, p, options).usable) throw failed();
     normalise(p);
   }
@@ -136,6 +139,7 @@ Solved joint_fit(const std::vector<TossData>& data, Parameters& p, const BiasFre
   full.stop = &settings.stop;
   full.moments_fixed = fixed;
   full.drag = law;
+  full.bias_group_held = bias.held;
   if (bias.any_bound) {
     for (std::size_t g = 0; g < bias.bound.size(); ++g)
       if (bias.bound[g])
@@ -267,6 +271,7 @@ Folds fold_bodies(const std::vector<TossData>& data, const Parameters& joint,
     options.moments_fixed = settings.moments.has_value();
     options.drag = settings.drag;
     options.spacing = 0.01;  // at 100 Hz whatever the rate: five fits of nearly every toss
+    options.bias_group_held = bias.held;
     if (bias.any_bound) {
       options.bias_held = true;
       if (!solve(rest, q, options).usable) continue;

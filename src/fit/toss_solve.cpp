@@ -116,7 +116,8 @@ Solved solve(const std::vector<TossData>& data, Parameters& p, const SolveOption
   for (std::size_t g = 0; g < p.e.size(); ++g) {
     if (in_group[g] == 0) continue;  // not in this problem
     double* e = p.e[g].data();
-    if (options.body_fixed || options.bias_held || in_group[g] < 2) {
+    const bool group_held = g < options.bias_group_held.size() && options.bias_group_held[g];
+    if (options.body_fixed || options.bias_held || group_held || in_group[g] < 2) {
       problem->SetParameterBlockConstant(e);
     } else if (g < options.bias_bound.size() && options.bias_bound[g]) {
       const Eigen::Vector3d offset =

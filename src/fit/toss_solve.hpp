@@ -31,6 +31,8 @@ struct SolveOptions {
   /// ≤ bound on each axis (offset: a correction the samples already had removed); nullopt, or
   /// no entries: free.
   std::vector<std::optional<Eigen::Vector3d>> bias_bound;
+  /// Per group: its bias correction held (at its value) whatever else is asked; none: none.
+  std::vector<bool> bias_group_held;
   std::vector<Eigen::Vector3d> bias_offset;
 };
 

@@ -45,7 +45,10 @@ TEST(FlightTrim, AFlightRunningIntoItsThrowAndCatchIsCutBackToTheFreeFlight) {
     const test::TrueToss& truth = synthetic.tosses[k];
     EXPECT_NE(kept.tosses[k].flag.find("catch"), std::string::npos) << k << kept.tosses[k].flag;
     EXPECT_EQ(cut.tosses[k].flag, "") << k;
-    std::cout << k << ": kept " << kept.tosses[k].flight.t_start << "–" << kept.tosses[k].flight.t_end << " residual " << kept.tosses[k].residual_rms << "; cut " << cut.tosses[k].flight.t_start << "–" << cut.tosses[k].flight.t_end << " residual " << cut.tosses[k].residual_rms << "\n";
+    std::cout << k << ": kept " << kept.tosses[k].flight.t_start << "–"
+              << kept.tosses[k].flight.t_end << " residual " << kept.tosses[k].residual_rms
+              << "; cut " << cut.tosses[k].flight.t_start << "–" << cut.tosses[k].flight.t_end
+              << " residual " << cut.tosses[k].residual_rms << "\n";
     EXPECT_NEAR(cut.tosses[k].flight.t_start, truth.t_start, 0.02) << k;
     EXPECT_NEAR(cut.tosses[k].flight.t_end, truth.t_end, 0.02) << k;
     EXPECT_LT(cut.tosses[k].residual_rms, 0.5 * kept.tosses[k].residual_rms) << k;
@@ -59,15 +62,14 @@ TEST(FlightTrim, AFlightRunningIntoItsThrowAndCatchIsCutBackToTheFreeFlight) {
 TEST(FlightTrim, AtMostOneRealMainThrowKeepsItsCatch) {
   if (!fs::is_directory(real_dir())) GTEST_SKIP() << "no real recordings at " << real_dir();
   int flagged = 0;
-  for (const char* name : {"12-10-56", "12-13-01", "12-13-51", "12-22-44", "12-29-59",
-                           "12-38-00", "12-44-51"}) {
-    const FitReport report =
-        fit_report(pool_recordings({read_recording(real_dir() / name)}), {});
-    const auto main = std::max_element(
-        report.result.tosses.begin(), report.result.tosses.end(),
-        [](const TossFit& a, const TossFit& b) {
-          return a.flight.t_end - a.flight.t_start < b.flight.t_end - b.flight.t_start;
-        });
+  for (const char* name :
+       {"12-10-56", "12-13-01", "12-13-51", "12-22-44", "12-29-59", "12-38-00", "12-44-51"}) {
+    const FitReport report = fit_report(pool_recordings({read_recording(real_dir() / name)}), {});
+    const auto main = std::max_element(report.result.tosses.begin(), report.result.tosses.end(),
+                                       [](const TossFit& a, const TossFit& b) {
+                                         return a.flight.t_end - a.flight.t_start <
+                                                b.flight.t_end - b.flight.t_start;
+                                       });
     ASSERT_NE(main, report.result.tosses.end()) << name;
     const bool catch_kept = main->flag.find("catch") != std::string::npos;
     flagged += catch_kept;

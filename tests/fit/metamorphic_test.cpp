@@ -88,8 +88,8 @@ void expect_pool_keeps_each_recordings_tosses(const std::vector<GyroRecording>& 
     }
     if (alone.result.body.ratio_sigma && fit.body.ratio_sigma && alone.tosses.size() >= 2)
       for (int i = 0; i < 2; ++i) {
-        const double sigma = std::hypot((*alone.result.body.ratio_sigma)[i],
-                                        (*fit.body.ratio_sigma)[i]);
+        const double sigma =
+            std::hypot((*alone.result.body.ratio_sigma)[i], (*fit.body.ratio_sigma)[i]);
         EXPECT_LT(std::abs(alone.result.body.ratios[i] - fit.body.ratios[i]), 3.0 * sigma)
             << "I" << i + 1 << "/I3";
       }
@@ -123,8 +123,8 @@ TEST(Metamorphic, PooledSyntheticRecordingsKeepEachTossesOwnRecordingAndTimes) {
   std::vector<GyroRecording> recordings;
   for (int s = 0; s < 3; ++s) {
     // Each its own clock: the second starts at 100 s, as a phone's experiment time may.
-    test::SyntheticRecording rec = test::make_recording(
-        test::phone_alone(), {throws[s], throws[(s + 1) % 3]}, 401 + s, 0.01);
+    test::SyntheticRecording rec =
+        test::make_recording(test::phone_alone(), {throws[s], throws[(s + 1) % 3]}, 401 + s, 0.01);
     if (s == 1)
       for (double& t : rec.t) t += 100.0;
     if (s == 1)

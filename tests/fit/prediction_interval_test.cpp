@@ -78,9 +78,8 @@ TEST(PredictionIntervals, SyntheticRecordingsHoldTheMeasuredHalfPeriodWithinTwoS
   Calibration c;
   for (unsigned seed = 1; seed <= 12; ++seed) {
     const double spin = 14.0 + 0.5 * seed;
-    const std::vector<test::SyntheticToss> tosses = {{{1.0, spin, 1.2}, 1.2},
-                                                     {{-0.7, spin - 2.0, 1.5}, 1.0},
-                                                     {{0.5, -spin + 1.0, -0.9}, 1.1}};
+    const std::vector<test::SyntheticToss> tosses = {
+        {{1.0, spin, 1.2}, 1.2}, {{-0.7, spin - 2.0, 1.5}, 1.0}, {{0.5, -spin + 1.0, -0.9}, 1.1}};
     const test::SyntheticRecording synthetic = test::make_recording(
         seed % 2 ? test::phone_alone() : test::phone_on_book(), tosses, 500 + seed, 0.02);
     const GyroRecording recording = test::as_recording(synthetic);

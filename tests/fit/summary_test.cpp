@@ -43,8 +43,9 @@ void expect_slow_stretches_counted_once(const FitReport& report) {
   EXPECT_EQ(count_with(report.dropped, "turning slower than"), slow);
   // The moments come within a few lines: the bias, the tosses, one line for the slow ones and
   // each other dropped stretch.
-  const auto moments = std::find_if(report.summary.begin(), report.summary.end(),
-                                    [](const std::string& l) { return l.rfind("moments", 0) == 0; });
+  const auto moments =
+      std::find_if(report.summary.begin(), report.summary.end(),
+                   [](const std::string& l) { return l.rfind("moments", 0) == 0; });
   ASSERT_NE(moments, report.summary.end());
   const int other_dropped = static_cast<int>(report.dropped.size()) - slow;
   EXPECT_LE(moments - report.summary.begin(),
@@ -55,8 +56,8 @@ void expect_slow_stretches_counted_once(const FitReport& report) {
 // throw.
 TEST(FitSummary, RealRecordingsCountTheSlowStretchesInOneLine) {
   if (!fs::is_directory(real_dir())) GTEST_SKIP() << "no real recordings at " << real_dir();
-  for (const char* name : {"12-10-56", "12-13-01", "12-13-51", "12-22-44", "12-29-59",
-                           "12-38-00", "12-44-51"}) {
+  for (const char* name :
+       {"12-10-56", "12-13-01", "12-13-51", "12-22-44", "12-29-59", "12-38-00", "12-44-51"}) {
     SCOPED_TRACE(name);
     expect_slow_stretches_counted_once(
         fit_report(pool_recordings({read_recording(real_dir() / name)}), {}));
