@@ -1,5 +1,6 @@
 #include "fit/fit_tables.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "common/number_text.hpp"
@@ -213,20 +214,26 @@ std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
                     fixed(t_end, 3) + " s" + drag + predicted_words(t) +
                     (t.stable ? " (stable: no flip)" : "") + (t.poor_fit ? " (flagged)" : ""));
   }
-  // The stretches too slow for a flight as one counted line (a hand-held recording has dozens,
-  // some a sample long); every other one a line of its own.
-  const std::string slow = kTooSlowReason;
-  int slow_count = 0;
-  std::string slow_reason;  // "turning slower than 2.000 rad/s", the finder's words
-  for (const DroppedStretch& d : fit.search.dropped)
-    if (d.reason.rfind(slow, 0) == 0) ++slow_count, slow_reason = d.reason;
-  if (slow_count > 0)
-    lines.push_back("dropped " + std::to_string(slow_count) + " stretch" +
-                    (slow_count == 1 ? "" : "es") + " of motion " + slow_reason +
-                    " (no flight: held or set down)");
+  // The stretches dropped, one line per reason with their count (a hand-held recording drops
+  // dozens, some a sample long); a reason given once keeps its stretch's times.
   const std::vector<std::string> dropped = fit_dropped_lines(fit);
-  for (std::size_t k = 0; k < dropped.size(); ++k)
-    if (fit.search.dropped[k].reason.rfind(slow, 0) != 0) lines.push_back(dropped[k]);
+  std::vector<std::pair<std::string, int>> reasons;  // in order of first appearance
+  for (const DroppedStretch& d : fit.search.dropped) {
+    auto at = std::find_if(reasons.begin(), reasons.end(),
+                           [&](const auto& r) { return r.first == d.reason; });
+    if (at == reasons.end())
+      reasons.emplace_back(d.reason, 1);
+    else
+      ++at->second;
+  }
+  for (const auto& [reason, count] : reasons) {
+    if (count > 1) {
+      lines.push_back("dropped " + std::to_string(count) + " stretches of motion: " + reason);
+      continue;
+    }
+    for (std::size_t k = 0; k < dropped.size(); ++k)
+      if (fit.search.dropped[k].reason == reason) lines.push_back(dropped[k]);
+  }
   const BodyEstimate& b = fit.body;
   const bool with_ratio_sigma = b.ratio_sigma && !b.moments_fixed;
   const auto ratio = [&](int i) {

@@ -27,9 +27,9 @@ CsvTable fit_body_csv(const FitResult& fit);
 /// command-line options to give (its remedies are said in the page's terms).
 enum class Reader { command_line, page };
 
-/// What the fit says besides its CSVs: the bias, the flights kept, the stretches dropped (those
-/// turning too slowly for a flight, usually many and short, as one line with their count;
-/// each other one a line: fit_dropped_lines lists every one), the body's moments and notes
+/// What the fit says besides its CSVs: the bias, the flights kept, the stretches dropped (one
+/// line per reason with their count, a reason given once with its stretch's times:
+/// fit_dropped_lines lists every one), the body's moments and notes
 /// (one line each), for the command to print or the page to show. For the page, a note's
 /// remedy "give --moments I1,I2,I3" is said in the page's terms (kMomentsRemedyPage).
 std::vector<std::string> fit_summary(const FitResult& fit, Reader reader = Reader::command_line);

@@ -323,11 +323,16 @@ void widen_by_folds(const Folds& folds, bool fixed, BodyEstimate& body) {
 /// flips over the flight's times. A note where the other tosses are a short bounce.
 void predict(const std::vector<TossData>& data, std::size_t k, const Folds& folds,
              const FlightSearch& search, const FitSettings& settings,
-             const PredictionInputs& inputs, TossFit& toss, BodyEstimate& body) {
+             const PredictionInputs& inputs, std::vector<TossFit>& tosses, BodyEstimate& body) {
   const TossData& d = data[k];
+  TossFit& toss = tosses[k];
   const std::size_t fold = k % folds.count;
   const std::optional<Parameters>& held_out = folds.body[fold];
-  if (!held_out) return;
+  // A body fitted on stable tosses alone cannot tell its moments apart: no prediction.
+  bool flips = settings.moments.has_value();
+  for (std::size_t j = 0; j < tosses.size(); ++j)
+    flips = flips || (j % folds.count != fold && !tosses[j].stable);
+  if (!held_out || !flips) return;
   Parameters others = *held_out;
   std::vector<TossData> alone{d};
   others.omega0 = {
@@ -538,13 +543,13 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   const Folds folds = fold_bodies(data, p, bias, correction, settings);
   widen_by_folds(folds, fixed, body);
   const std::optional<double> noise = rest_noise(recording, search);
+  for (std::size_t k = 0; k < data.size(); ++k)
+    result.tosses.push_back(toss_values(data, k, p, sigmas, residuals[k], search.flights[k],
+                                        saturation, noise, settings.drag, body));
   for (std::size_t k = 0; k < data.size(); ++k) {
-    TossFit toss = toss_values(data, k, p, sigmas, residuals[k], search.flights[k], saturation,
-                               noise, settings.drag, body);
     const PredictionInputs inputs{settings.drag, body.ratio_sigma,
                                   bias_sigma(result.parts.at(data[k].group))};
-    predict(data, k, folds, search, settings, inputs, toss, body);
-    result.tosses.push_back(toss);
+    predict(data, k, folds, search, settings, inputs, result.tosses, body);
   }
   body_notes(result, settings, body);
   return result;

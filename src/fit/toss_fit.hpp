@@ -54,7 +54,7 @@ struct TossFit {
   /// The same for a prediction: the body fitted on the other tosses (or --moments), the drag
   /// rate the mean of theirs (0 without others), this toss's ω0 fitted on its first
   /// `predict_window` seconds alone; nothing after them is seen. nullopt with no other toss and
-  /// no --moments.
+  /// no --moments, or where every other toss is stable (a body they cannot tell apart).
   std::optional<double> half_period_predicted;
   /// s: one σ of half_period_predicted, propagated from what it rests on (fit/
   /// prediction_sigma.hpp); nullopt without a prediction, or where the separatrix is within

@@ -56,15 +56,16 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   part.rest.stretches = {{0.25, 1.25}};
   part.bias = part.rest.mean = Eigen::Vector3d(0.5, -0.25, 0.125);
   part.rest.sigma = Eigen::Vector3d(0.03125, 0.0625, 0.015625);
-  EXPECT_EQ(csv_text(fit::fit_toss_csv(result), "fit CSV"),
-            "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
-            "half_period_fitted,half_period_predicted,half_period_predicted_sigma,predicted_from_"
-            "tosses,predicted_from_seconds,"
-            "residual_rms,L_decay,drag_rate,"
-            "drag_rate_sigma,saturated,stable,poor_fit,flag\n"
-            "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,2,2.25,0.01,0.125,0.1875,0.0625,3,no,yes,\"a catch "
-            "inside "
-            "the flight? the residual jumps, near t = 1.00 s\"\n");
+  EXPECT_EQ(
+      csv_text(fit::fit_toss_csv(result), "fit CSV"),
+      "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
+      "half_period_fitted,half_period_predicted,half_period_predicted_sigma,predicted_from_"
+      "tosses,predicted_from_seconds,"
+      "residual_rms,L_decay,drag_rate,"
+      "drag_rate_sigma,saturated,stable,poor_fit,flag\n"
+      "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,,2,2.25,0.01,0.125,0.1875,0.0625,3,no,yes,\"a catch "
+      "inside "
+      "the flight? the residual jumps, near t = 1.00 s\"\n");
   EXPECT_EQ(csv_text(fit::fit_body_csv(result), "fit body CSV"),
             "I1_over_I3,I2_over_I3,I3_over_I3,I1_sigma,I2_sigma,axis1_x,axis1_y,axis1_z,axis2_x,"
             "axis2_y,axis2_z,axis3_x,axis3_y,axis3_z,axis1_sigma_deg,axis2_sigma_deg,"
@@ -87,6 +88,17 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
   EXPECT_EQ(fit::fit_summary(result).at(0),
             "no still stretch in the recording: the bias (rad/s) is fitted from the flights: "
             "0.50 ± 0.25, -0.25 ± 0.50, 0.12 ± 0.75");
+  // Fitted but consistent with zero: held at zero, said so, its σ kept.
+  part.bias_not_applied = part.bias_correction;
+  part.bias_correction = Eigen::Vector3d::Zero();
+  EXPECT_EQ(fit::fit_summary(result).at(0),
+            "no still stretch in the recording: the bias (rad/s) the flights give, 0.50 ± 0.25, "
+            "-0.25 ± 0.50, 0.12 ± 0.75, is consistent with zero (χ² 4.3 over 3 axes, under "
+            "11.3): not removed, held at zero within those σ");
+  EXPECT_NE(
+      csv_text(fit::fit_body_csv(result), "fit body CSV").find(",quadratic,0,0,0,0.25,0.5,0.75\n"),
+      std::string::npos);
+  part.bias_not_applied.reset();
   // Neither: no bias removed, no σ.
   part.bias = part.bias_correction = Eigen::Vector3d::Zero();
   part.bias_fitted_sigma.reset();
