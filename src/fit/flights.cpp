@@ -19,7 +19,9 @@ constexpr double kGapFactor = 5.0;         // a step this many typical steps lon
 // between two samples inside a flight; the exact motion bridges that (a body at 35 rad/s turns
 // under 1 rad in 25 ms) and so does the derivative, taken with each sample's own dt.
 constexpr double kMinGap = 0.025;
-constexpr int kMinFitSamples = 10;  // a flight shorter than this cannot be fitted
+constexpr int kMinFitSamples = 10;
+constexpr int kIsolated = 2;  // samples: a run this short over the torque threshold is noise  // a
+                              // flight shorter than this cannot be fitted
 
 std::string seconds(double value) {
   std::ostringstream text;
@@ -259,6 +261,17 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
         const bool bridged = i > first && end < last && ok[i - 1 - first] && ok[end + 1 - first];
         for (int k = i; k <= end; ++k) ok[k - first] = bridged;
         i = end + 1;
+      }
+      // One or two samples over the threshold between torque-free ones are the derivative's
+      // noise (larger where the steps are uneven), not a throw or a catch, which run longer.
+      for (int i = first + 1; i < last; ++i) {
+        if (ok[i - first]) continue;
+        int end = i;
+        while (end < last && !ok[end - first] && end - i < kIsolated) ++end;
+        if (ok[i - 1 - first] && end <= last && ok[end - first] && end - i <= kIsolated &&
+            !clipped[i])
+          for (int k = i; k < end; ++k) ok[k - first] = 1;
+        i = end;
       }
       int best_first = first, best_last = first - 1, start = -1;
       for (int i = first; i <= last + 1; ++i) {

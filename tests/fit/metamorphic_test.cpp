@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -132,6 +133,103 @@ TEST(Metamorphic, PooledSyntheticRecordingsKeepEachTossesOwnRecordingAndTimes) {
     recordings.push_back(test::as_read(rec, "student" + std::to_string(s + 1)));
   }
   expect_pool_keeps_each_recordings_tosses(recordings, 0.02);
+}
+
+/// Every development recording, as read (not pooled).
+std::vector<GyroRecording> every_real() {
+  std::vector<GyroRecording> all;
+  for (const char* name :
+       {"12-10-56", "12-13-01", "12-13-51", "12-22-44", "12-29-59", "12-38-00", "12-44-51"})
+    all.push_back(read_real(name));
+  return all;
+}
+
+/// Synthetic recordings of a bare phone and a phone on a book, as read.
+std::vector<GyroRecording> every_synthetic() {
+  std::vector<GyroRecording> all;
+  const std::vector<test::SyntheticToss> tosses = {{{1.0, 18.0, 1.2}, 1.3},
+                                                   {{-1.2, 17.0, 1.5}, 1.2}};
+  all.push_back(test::as_read(test::make_recording(test::phone_alone(), tosses, 81), "phone"));
+  all.push_back(test::as_read(test::make_recording(test::phone_on_book(), tosses, 82), "book"));
+  return all;
+}
+
+/// `b`'s fit against `a`'s, `b` a transformed copy of `a` whose times are `a`'s plus `shift`:
+/// the same flights (each end within `slack` s), and the moment ratios within 3 σ (the two
+/// fits' σ combined) where either flips.
+void expect_same_fit(const GyroRecording& a, const GyroRecording& b, double shift, double slack) {
+  const FitResult fa = fit_report(pool_recordings({a}), {}).result;
+  const FitResult fb = fit_report(pool_recordings({b}), {}).result;
+  ASSERT_EQ(fa.tosses.size(), fb.tosses.size());
+  for (std::size_t k = 0; k < fa.tosses.size(); ++k) {
+    EXPECT_NEAR(fb.tosses[k].flight.t_start - shift, fa.tosses[k].flight.t_start, slack) << k;
+    EXPECT_NEAR(fb.tosses[k].flight.t_end - shift, fa.tosses[k].flight.t_end, slack) << k;
+  }
+  if (!fa.body.moments_determined || !fa.body.ratio_sigma || !fb.body.ratio_sigma) return;
+  for (int i = 0; i < 2; ++i)
+    EXPECT_LT(std::abs(fa.body.ratios[i] - fb.body.ratios[i]),
+              3.0 * std::hypot((*fa.body.ratio_sigma)[i], (*fb.body.ratio_sigma)[i]) + 1e-9)
+        << "I" << i + 1 << "/I3";
+}
+
+/// The relations of one recording: shifted 1000 s later; its axes permuted (x, y, z read as y,
+/// z, x); one axis's sign flipped with another's (a rotation of the phone by π about z).
+void expect_relations(const GyroRecording& r) {
+  GyroRecording later = r;
+  for (double& t : later.t) t += 1000.0;
+  for (double& t : later.pauses) t += 1000.0;
+  {
+    SCOPED_TRACE("shifted in time");
+    expect_same_fit(r, later, 1000.0, 1e-6);
+  }
+  GyroRecording permuted = r, turned = r;
+  for (Eigen::Vector3d& w : permuted.omega) w = Eigen::Vector3d(w[1], w[2], w[0]);
+  for (Eigen::Vector3d& w : turned.omega) w = Eigen::Vector3d(-w[0], -w[1], w[2]);
+  {
+    SCOPED_TRACE("axes permuted");
+    expect_same_fit(r, permuted, 0.0, 0.02);
+  }
+  {
+    SCOPED_TRACE("turned by pi about z");
+    expect_same_fit(r, turned, 0.0, 0.02);
+  }
+}
+
+TEST(Metamorphic, RealRecordingsShiftedPermutedOrTurnedGiveTheSameFit) {
+  REQUIRE_REAL_RECORDINGS();
+  for (const GyroRecording& r : every_real()) {
+    SCOPED_TRACE(r.name);
+    expect_relations(r);
+  }
+}
+
+TEST(Metamorphic, SyntheticRecordingsShiftedPermutedOrTurnedGiveTheSameFit) {
+  for (const GyroRecording& r : every_synthetic()) {
+    SCOPED_TRACE(r.name);
+    expect_relations(r);
+  }
+}
+
+/// `r` with each sample dropped with probability 1/4 (seeded), its first and last kept.
+GyroRecording thinned(const GyroRecording& r, unsigned seed) {
+  std::mt19937 random(seed);
+  GyroRecording out = r;
+  out.t.clear(), out.omega.clear();
+  for (std::size_t i = 0; i < r.t.size(); ++i)
+    if (i == 0 || i + 1 == r.t.size() || random() % 4 != 0)
+      out.t.push_back(r.t[i]), out.omega.push_back(r.omega[i]);
+  return out;
+}
+
+// Samples dropped at random: the same flights, each end within 0.05 s.
+TEST(Metamorphic, SamplesDroppedAtRandomKeepTheSameFlights) {
+  std::vector<GyroRecording> all = every_synthetic();
+  if (fs::is_directory(real_dir()))
+    for (GyroRecording& r : every_real()) all.push_back(std::move(r));
+  for (const GyroRecording& r : all) {
+    SCOPED_TRACE(r.name);
+    expect_same_fit(r, thinned(r, 5), 0.0, 0.05);
+  }
 }
 
 }  // namespace
