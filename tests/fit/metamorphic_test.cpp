@@ -195,6 +195,32 @@ void expect_relations(const GyroRecording& r) {
   }
 }
 
+/// A constant bias added on each axis of `r`: the same flights, and where `r` has a still rest,
+/// the bias removed in flight is its own plus the one added.
+void expect_bias_added_is_found(const GyroRecording& r) {
+  const Eigen::Vector3d added(0.04, -0.03, 0.05);
+  GyroRecording biased = r;
+  for (Eigen::Vector3d& w : biased.omega) w += added;
+  expect_same_fit(r, biased, 0.0, 0.02);
+  const FitResult fa = fit_report(pool_recordings({r}), {}).result;
+  const FitResult fb = fit_report(pool_recordings({biased}), {}).result;
+  if (fa.parts.at(0).rest.samples == 0) return;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(fb.parts.at(0).bias_in_flight()[i], fa.parts.at(0).bias_in_flight()[i] + added[i],
+                0.005)
+        << "axis " << i;
+}
+
+TEST(Metamorphic, AConstantBiasAddedIsFoundPlusIt) {
+  std::vector<GyroRecording> all = every_synthetic();
+  if (fs::is_directory(real_dir()))
+    for (GyroRecording& r : every_real()) all.push_back(std::move(r));
+  for (const GyroRecording& r : all) {
+    SCOPED_TRACE(r.name);
+    expect_bias_added_is_found(r);
+  }
+}
+
 TEST(Metamorphic, RealRecordingsShiftedPermutedOrTurnedGiveTheSameFit) {
   REQUIRE_REAL_RECORDINGS();
   for (const GyroRecording& r : every_real()) {
