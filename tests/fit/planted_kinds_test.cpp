@@ -1,0 +1,74 @@
+// The kinds of fault planted in the lab that its earlier tests let through: each rule stated
+// by a case that only the rule passes (docs/phone-lab.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "common/errors.hpp"
+#include "common/number_text.hpp"
+#include "fit/pool.hpp"
+#include "fit/recording.hpp"
+#include "fit/rest.hpp"
+#include "support/scratch.hpp"
+#include "synthetic_recording.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+// A folder given with a trailing slash, as shell completion writes it, keeps its own name.
+TEST(PlantedKinds, AFolderWithATrailingSlashIsNamedAfterItself) {
+  const auto dir = bookspin::test::fresh_dir("fit/trailing-slash");
+  const test::SyntheticRecording rec =
+      test::make_recording(test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.0}});
+  test::write_export(dir / "anna", rec, test::Dialect::comma);
+  EXPECT_EQ(read_recording((dir / "anna").string() + "/").name, "anna");
+  EXPECT_EQ(read_recording(dir / "anna").name, "anna");
+}
+
+// Two recordings are one only when their times and their samples both agree: two students'
+// plain CSVs on one clock (the same times, other samples) are two, and so are the same
+// samples at other times.
+TEST(PlantedKinds, TwoRecordingsAreOneOnlyWhenTimesAndSamplesBothAgree) {
+  const test::SyntheticRecording a =
+      test::make_recording(test::phone_alone(), {{{0.3, 14.0, 0.5}, 1.0}}, 1);
+  test::SyntheticRecording b = a;
+  for (Eigen::Vector3d& w : b.omega) w *= 1.01;
+  EXPECT_NO_THROW(pool_recordings({test::as_read(a, "anna"), test::as_read(b, "ben")}));
+  test::SyntheticRecording c = a;
+  for (double& t : c.t) t += 0.5;
+  EXPECT_NO_THROW(pool_recordings({test::as_read(a, "anna"), test::as_read(c, "chloe")}));
+  EXPECT_THROW(pool_recordings({test::as_read(a, "anna"), test::as_read(a, "copy")}), InputError);
+}
+
+// The bias in flight may leave its still rest's mean by 3 standard errors of that mean plus the
+// drift, not by 3 times the samples' scatter: 2 s of white noise of 0.01 rad/s at 100 Hz is
+// a mean known to 0.0007 rad/s.
+TEST(PlantedKinds, TheBiasBoundIsTheStandardErrorOfTheRestsMeanNotItsScatter) {
+  std::mt19937 random(3);
+  std::normal_distribution<double> gauss(0.0, 0.01);
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> omega;
+  for (int i = 0; i < 200; ++i) {
+    t.push_back(0.01 * i);
+    omega.emplace_back(0.005 + gauss(random), gauss(random), gauss(random));
+  }
+  const Rest rest = find_rest(t, omega, {{0, 200}});
+  ASSERT_GT(rest.samples, 150);
+  for (int c = 0; c < 3; ++c) {
+    const double standard_error = 0.01 / std::sqrt(rest.samples);
+    EXPECT_NEAR(rest.bound()[c], 3.0 * standard_error + kBiasDrift, 1.5 * standard_error) << c;
+    EXPECT_LT(rest.bound()[c], 0.5 * 3.0 * rest.sigma[c]) << c;
+  }
+}
+
+// σ's decimal place comes from σ rounded to two significant digits, as the page's rule: 0.0096
+// keeps four decimals, 0.000097 six.
+TEST(PlantedKinds, SigmasDecimalPlaceIsFromTwoSignificantDigits) {
+  EXPECT_EQ(plus_minus(0.2197, 0.0096), "0.2197 ± 0.0096");
+  EXPECT_EQ(plus_minus(0.7965123, 0.000097), "0.796512 ± 0.000097");
+  EXPECT_EQ(plus_minus(0.5, 0.096), "0.500 ± 0.096");
+}
+
+}  // namespace
+}  // namespace bookspin::fit
