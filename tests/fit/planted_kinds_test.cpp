@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <random>
 
 #include "common/errors.hpp"
@@ -24,6 +25,12 @@ TEST(PlantedKinds, AFolderWithATrailingSlashIsNamedAfterItself) {
   test::write_export(dir / "anna", rec, test::Dialect::comma);
   EXPECT_EQ(read_recording((dir / "anna").string() + "/").name, "anna");
   EXPECT_EQ(read_recording(dir / "anna").name, "anna");
+  // A folder of one CSV (phyphox's single-CSV export) likewise.
+  std::filesystem::create_directories(dir / "ben");
+  std::ofstream(dir / "ben" / "Gyroscope rotation rate 2022-05-03.csv")
+      << test::raw_data_csv(rec, test::Dialect::comma);
+  EXPECT_EQ(read_recording((dir / "ben").string() + "/").name, "ben");
+  EXPECT_EQ(read_recording(dir / "ben").name, "ben");
 }
 
 // Two recordings are one only when their times and their samples both agree: two students'
