@@ -8,9 +8,11 @@
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
+#include "fit/flights.hpp"
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
 #include "fit/rest.hpp"
+#include "fit/toss_fit.hpp"
 #include "support/scratch.hpp"
 #include "synthetic_recording.hpp"
 
@@ -75,6 +77,30 @@ TEST(PlantedKinds, SigmasDecimalPlaceIsFromTwoSignificantDigits) {
   EXPECT_EQ(plus_minus(0.2197, 0.0096), "0.2197 ± 0.0096");
   EXPECT_EQ(plus_minus(0.7965123, 0.000097), "0.796512 ± 0.000097");
   EXPECT_EQ(plus_minus(0.5, 0.096), "0.500 ± 0.096");
+}
+
+}  // namespace
+}  // namespace bookspin::fit
+
+namespace bookspin::fit {
+namespace {
+
+// One axis in °/s, two in rad/s (each axis in turn): refused naming that cause, or fitted with
+// every toss flagged for it; never "the fit did not converge" alone.
+TEST(PlantedKinds, MixedUnitsAreNamedAsTheCause) {
+  for (int c = 0; c < 3; ++c) {
+    test::SyntheticRecording rec = test::make_recording(
+        test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 91);
+    for (Eigen::Vector3d& w : rec.omega) w[c] *= 180.0 / 3.14159265358979323846;
+    const GyroRecording recording = test::as_recording(rec);
+    try {
+      const FitResult fit = fit_recording(recording, find_flights(recording));
+      for (const TossFit& toss : fit.tosses)
+        EXPECT_NE(toss.flag.find("°/s"), std::string::npos) << "axis " << c << ": " << toss.flag;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("°/s"), std::string::npos) << c << ": " << e.what();
+    }
+  }
 }
 
 }  // namespace
