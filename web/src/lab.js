@@ -7,7 +7,8 @@
 // `bookspin explore` plays a toss scene the command line wrote. Nothing is fitted here: this
 // module hands bytes to the module and writes out its answer.
 import { recordingsOf, takeFiles } from './file_drop.js';
-import { plusMinus, significant, vectorWithSigma, withSigma } from './precision.js';
+import { plusMinus, significant } from './precision.js';
+import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
 import { niceTicks, tickLabel } from './plots.js';
 
@@ -238,9 +239,7 @@ export class LabPanel {
       const values = [b[`axis${a}_x`], b[`axis${a}_y`], b[`axis${a}_z`]];
       const deg = b[`axis${a}_sigma_deg`];
       // The components of a unit vector to the angle's precision in radians, σ in degrees.
-      const shown = typeof deg === 'number' && deg > 0
-        ? `(${vectorWithSigma(values, deg * Math.PI / 180).values.join(', ')}) ± ${withSigma(deg, deg).sigma}°`
-        : `(${values.map((v) => significant(v)).join(', ')})`;
+      const shown = axisText(values, deg);
       return labelledRow(`axis${a}_x, _y, _z`, `axis ${a} (phone x, y, z)`, html(shown), `(${values.join(', ')}) ± ${deg}°`);
     };
     $('labBody').innerHTML =
