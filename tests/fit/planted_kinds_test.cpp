@@ -12,6 +12,7 @@
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
 #include "fit/rest.hpp"
+#include "fit/saturation.hpp"
 #include "fit/toss_fit.hpp"
 #include "support/scratch.hpp"
 #include "synthetic_recording.hpp"
@@ -101,6 +102,34 @@ TEST(PlantedKinds, MixedUnitsAreNamedAsTheCause) {
       EXPECT_NE(std::string(e.what()).find("°/s"), std::string::npos) << c << ": " << e.what();
     }
   }
+}
+
+}  // namespace
+}  // namespace bookspin::fit
+
+namespace bookspin::fit {
+namespace {
+
+// A clipped spike has both neighbours low; a steep unclipped peak in the full scale's band with
+// one neighbour low (a fast rise, a slower fall) is the motion, kept: no range found.
+TEST(PlantedKinds, ASteepPeakWithOneNeighbourLowIsNoClip) {
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> omega;
+  const double peak[] = {20.0, 25.0, 30.0, 35.0, 33.5, 32.0, 28.0, 22.0};
+  for (int i = 0; i < 40; ++i) {
+    t.push_back(0.01 * i);
+    const double x = i >= 10 && i < 18 ? peak[i - 10] : 0.0;
+    omega.emplace_back(x, 1.0 + 0.01 * i, -0.5);
+  }
+  const GyroRecording steep = pool_recordings({samples_recording("steep", t, omega)});
+  EXPECT_FALSE(find_saturation(steep).range.has_value());
+  // The same peak cut flat, both neighbours low: a clip at ±2000 °/s.
+  omega[14][0] = 29.0;
+  const GyroRecording cut = pool_recordings({samples_recording("cut", t, omega)});
+  const Saturation clipped = find_saturation(cut);
+  ASSERT_TRUE(clipped.range.has_value());
+  EXPECT_NEAR(*clipped.range, 2000.0 * 3.14159265358979323846 / 180.0, 1e-9);
+  EXPECT_TRUE(clipped.at_range[13]);
 }
 
 }  // namespace
