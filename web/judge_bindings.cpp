@@ -140,11 +140,16 @@ val scenario_file(const val& spec) {
 
 std::string version() { return bookspin::version(); }
 
+/// The judge's rules as `flipcheck` hashes them (analysis::judge_rules): a line "name value"
+/// per limit, then the columns; the panel shows a measure's limit beside it.
+std::string judge_rules() { return bookspin::analysis::judge_rules(); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(bookspin_judge) {
   emscripten::function("flipcheckScenarioFile", &scenario_file);
   emscripten::function("version", &version);
+  emscripten::function("judgeRules", &judge_rules);
   emscripten::function("judgeMotion", &judge_motion);
   emscripten::function("motionPoses", &motion_poses);
   emscripten::function("flipcheckExport", &export_files);

@@ -77,10 +77,12 @@ bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots,
 /// std::nullopt.
 std::optional<double> blow_up_time(const DiagnosticsHistory& history);
 
-/// `header` as a sheet `width` pixels wide draws it: each line after the first (the bold
-/// title, kept whole) broken at spaces where it would run past width − 2·font (drawn at
-/// 0.8·font from x = font): a list ("a · b · c") between its items, the dot kept at the
-/// line's end, other text between words; an item or word longer than that on a line of its own.
+/// `header` as a sheet `width` pixels wide draws it: the first line (the bold title, at `font`)
+/// whole where it fits in width − 2·font, else as many of its words as fit, the rest leading
+/// the next line; each line after it broken at spaces where it would run past width − 2·font
+/// (drawn at 0.8·font from x = font): a list ("a · b · c") between its items, the dot kept at
+/// the line's end, other text between words; an item or word longer than that on a line of
+/// its own.
 std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::string>& header,
                                            double font, double width);
 

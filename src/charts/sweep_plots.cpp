@@ -40,10 +40,11 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
     }
   }
   char text[320];
-  // The scene's title leads, its name (as in the files' names) follows.
-  std::string head = chart.scene_title.empty()
-                         ? "Sweep of " + chart.scene_name
-                         : chart.scene_title + " (sweep of " + chart.scene_name + ")";
+  // The scene's title leads, alone on its line; the sweep (its name, as in the files' names)
+  // and its runs follow on the next.
+  std::vector<std::string> lines;
+  if (!chart.scene_title.empty()) lines.push_back(chart.scene_title);
+  std::string head = (lines.empty() ? "Sweep of " : "sweep of ") + chart.scene_name;
   std::snprintf(text, sizeof text, ": %zu runs", chart.rows.size() - refused);
   head += text;
   if (refused > 0) {
@@ -51,7 +52,7 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
                   refused == 1 ? "point" : "points");
     head += text;
   }
-  std::vector<std::string> lines{head};
+  lines.push_back(head);
   if (refused > 0)
     lines.push_back("refused" + std::string(refused > 1 ? " (the first)" : "") + ": " +
                     first_reason);

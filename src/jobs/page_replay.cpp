@@ -91,6 +91,8 @@ JsonObject explorer_scene_data(const scene::Scene& scene, const StopPoll& stop) 
   JsonObject data = scene::page_data(scene);
   if (JsonArray replays = replays_data(scene, stop); !replays.empty())
     data.push_back({"replays", {std::move(replays)}});
+  // A scenario of the conformance kit (scenes/flipcheck/): the ones the page's judge offers.
+  if (scene.source.parent_path().filename() == "flipcheck") data.push_back({"kit", {true}});
   return data;
 }
 

@@ -160,6 +160,22 @@ std::string league_cell(const analysis::Conformance& c) {
   return cell + " " + std::to_string(c.flips) + "/" + std::to_string(c.flips_exact);
 }
 
+/// What a row's name says of the engine that made it (docs/flipcheck.md, "Any engine").
+constexpr const char* kMotionNames =
+    "<p>What the motions' names say:</p>\n<dl class=\"names\">\n"
+    "<dt>rigid-matrix euler, rigid-quaternion rk4, particle velocity-verlet</dt>"
+    "<dd>bookspin's own models (its rigid body as a matrix or a quaternion, or a lattice of "
+    "particles), each with the integrator named after it.</dd>\n"
+    "<dt>mujoco euler, bullet none, ode step</dt><dd>an engine built into bookspin from its C or "
+    "C++ library (MuJoCo, Bullet, ODE: docs/engines.md) with the integrator or option named "
+    "after it (bullet none: without its gyroscopic term).</dd>\n"
+    "<dt>mujoco-js@0.0.7+euler, jolt-physics@1.1.0+gyroscopic</dt><dd>a JavaScript engine, "
+    "named by its npm package and version, run under node by web/flipcheck-engines.mjs, in "
+    "the mode after the +: mujoco-js is MuJoCo compiled to WebAssembly, so "
+    "mujoco-js@0.0.7+euler and mujoco euler are the same method in two builds.</dd>\n"
+    "<dt>exact</dt><dd>the exact motion itself, as <code>bookspin flipcheck export</code> "
+    "writes it: it passes by construction.</dd>\n</dl>\n";
+
 /// The league page: a self-contained HTML5 table, a motion per row in order of first
 /// appearance, a scenario per column; a failed cell lists its reasons.
 std::string league_html(const std::vector<LeagueColumn>& columns) {
@@ -174,7 +190,12 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           "table { border-collapse: collapse; font-size: 0.95em; }\n"
           "th, td { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; }\n"
           "td.pass { background: #e3f4e1; } td.fail { background: #f9e0de; }\n"
-          "td.none { color: #999; } td small { color: #555; }\n</style>\n</head>\n<body>\n"
+          "td.none { color: #999; } td small { color: #555; }\n"
+          // The scenarios' row stays on screen while the motions scroll under it.
+          "thead th { position: sticky; top: 0; background: #f4f4f4; z-index: 1; "
+          "box-shadow: 0 1px 0 #ccc; }\n"
+          "dl.names dt { font-family: monospace; margin-top: 0.4em; }\n"
+          "dl.names dd { margin-left: 1.5em; }\n</style>\n</head>\n<body>\n"
           "<h1>Does the engine get the flip right? The league table</h1>\n"
           "<p>Each motion judged against the exact motion from the same start "
           "(<code>bookspin flipcheck</code>, docs/flipcheck.md): pass or fail against the "
@@ -182,11 +203,12 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           "motion's six of the exact motion's six), and for a stable spin the time it starts "
           "to tumble; under a failure, its reasons. Every "
           "number is in <a href=\"flipcheck-league.csv\">flipcheck-league.csv"
-          "</a>.</p>\n<table>\n<tr><th>motion</th>";
+          "</a>.</p>\n"
+       << kMotionNames << "<table>\n<thead><tr><th>motion</th>";
   for (const LeagueColumn& col : columns)
     page << "<th title=\"" << html_escape(col.title) << "\">" << html_escape(col.scenario)
          << "</th>";
-  page << "</tr>\n";
+  page << "</tr></thead>\n<tbody>\n";
   for (const std::string& row : rows) {
     page << "<tr><th>" << html_escape(row) << "</th>";
     for (const LeagueColumn& col : columns) {
@@ -205,7 +227,7 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
     }
     page << "</tr>\n";
   }
-  page << "</table>\n</body>\n</html>\n";
+  page << "</tbody>\n</table>\n</body>\n</html>\n";
   return page.str();
 }
 

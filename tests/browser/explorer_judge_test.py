@@ -5,7 +5,8 @@ WebAssembly (web/judge_bindings.cpp).
 
 Builds the page's program with web/build.sh BINARY_DIR, writes the page with `bookspin explore
 scenes/flipcheck/*.toml`, and checks:
-  - the panel offers every scenario of scenes/flipcheck/;
+  - the panel offers every scenario of scenes/flipcheck/ and no other scene (the page holds two
+    more, which flipcheck would take);
   - for every scenario and several motions (the exact motion of `bookspin flipcheck export`;
     `bookspin simulate` of rigid-matrix euler; and perturbed copies of the exact motion that
     fail: ω scaled by 1 + 1e-3, the last half of the rows cut, the orientation turned away
@@ -21,7 +22,9 @@ scenes/flipcheck/*.toml`, and checks:
   - a bad motion file: the hook rejects with the command line's one line and the panel shows
     it;
   - a link to the panel, explorer.html#judge (the gallery's kit section), opens it on the
-    page's scenario.
+    page's scenario, and where the page's scene is no scenario the page goes to one;
+  - a measure the judge bounds shows its limit beside it, a value over it marked (the turned
+    motion's orientation error).
 Screenshots: BINARY_DIR/test-output/browser/explorer-judge-{1280x720,390x844}.png.
 
 Usage: explorer_judge_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -143,7 +146,9 @@ def main():
         d.mkdir(parents=True, exist_ok=True)
     scenes = sorted((source / "scenes" / "flipcheck").glob("*.toml"))
     run(["bash", str(source / "web" / "build.sh"), str(binary)])
-    run([bookspin, "explore", *map(str, scenes), "-o", str(out)])
+    # Two scenes flipcheck would take that are not the kit's: the panel offers the kit's alone.
+    others = [source / "scenes" / f"{n}.toml" for n in ("fig09-matrix-unstable-x", "t-handle-dzhanibekov")]
+    run([bookspin, "explore", *map(str, scenes + others), "-o", str(out)])
     run([bookspin, "flipcheck", "export", *map(str, scenes), "-o", str(motions)])
 
     # Every scenario's motions, and the command line's judgement of them, one CSV a scenario.
@@ -211,6 +216,17 @@ def main():
 
         # 2b. A link to the panel (the gallery's kit section): explorer.html#judge opens it on
         #     the page's scene.
+        # A page on a scene that is no scenario (the gallery's link names none; this page's
+        # own default, no scene) goes to a scenario, the one the panel shows.
+        driver.get(base_url + "explorer.html#judge")
+        if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+            fail(f"the page at #judge never became ready: {driver.get_log('browser')}")
+        opened = wait_for(driver, "return [!document.getElementById('judge').hidden, "
+                          "document.getElementById('judgeScenario').value, window.explorer.state().scene]",
+                          lambda o: o[0] and o[2], 10)
+        if not opened[0] or opened[1] != opened[2] or opened[2] not in cases:
+            fail(f"explorer.html#judge with no scene opened the panel on {opened[1]!r} over the "
+                 f"page's scene {opened[2]!r}, not a scenario's")
         driver.get(base_url + "explorer.html?scene=book-intermediate-0.05#judge")
         if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
             fail(f"the page at #judge never became ready: {driver.get_log('browser')}")
@@ -267,6 +283,30 @@ def main():
             if (not whole and shown_digits(shown_cell) > 4) or \
                     not math.isclose(shown_number(shown_cell), float(full), rel_tol=5e-4, abs_tol=1e-300):
                 fail(f"the panel shows {column} as {shown_cell!r}: not {full!r} to 4 significant digits")
+        # A measure the judge bounds shows its limit (analysis::judge_rules, from the module);
+        # over it, the row reads as a failure: the turned motion's orientation error among them.
+        over = []
+        for tr in driver.find_elements(By.CSS_SELECTOR, "#judgeTable tr"):
+            cells = tr.find_elements(By.TAG_NAME, "td")
+            key = (tr.find_elements(By.CSS_SELECTOR, "th code") or [tr.find_element(By.TAG_NAME, "th")])[0].text
+            limit = cells[1].text if len(cells) > 1 else ""
+            if not limit:
+                continue
+            value, bound = float(cells[0].get_attribute("title")), shown_number(limit.split("limit ", 1)[1])
+            marked = "over" in (tr.get_attribute("class") or "")
+            if marked != (value > bound) or marked != limit.startswith("over its limit"):
+                fail(f"the panel's {key}: {value} against {limit!r}, marked {'over' if marked else 'within'}")
+            if marked:
+                over.append(key)
+        print(f"the panel's limits: over them {over}; the command line's failures {cli['failures']!r}")
+        if "orientation_error" not in over:
+            fail(f"the turned motion's orientation error is not shown over its limit: {over}")
+        words = {"start_error": "start", "energy_drift": "energy drift", "L_drift": "|L| drift",
+                 "orientation_error": "orientation error", "separatrix_approach": "separatrix"}
+        wrong = [k for k in over if words.get(k, k) not in cli["failures"]]
+        if wrong:
+            fail(f"the panel marks {wrong} over a limit, which the command line does not fail: "
+                 f"{cli['failures']!r}")
         drawn = wait_for(driver, """
             const c = document.getElementById('judgeReplay');
             if (c.hidden || !c.width) return 0;

@@ -10,6 +10,9 @@ stable spin), writes the league page and checks in Chromium that
   - every number in a cell has at most the three significant digits the league prints
     (a measure without an uncertainty: its thresholds' precision, docs/flipcheck.md),
   - the page logs no console error,
+  - the page says what the motions' names mean (bookspin's own models, the engines built in,
+    the JavaScript engines by their npm package), and the scenarios' row stays on screen
+    while the table scrolls under it,
 and saves the screenshot as build/test-output/browser/league.png.
 
 Usage: league_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -67,7 +70,24 @@ def main():
         if wide[0] > wide[1]:
             errors.append(f"the table is {wide[0]} px wide in a {wide[1]} px window")
         errors += [f"console: {entry['message']}" for entry in console_errors(driver)]
+        # The names explained; the scenarios' row stays on screen scrolled to the last motion
+        # (a window short enough to scroll: the league of make figures is 8 screens long).
+        names = driver.execute_script(
+            "const d = document.querySelector('dl.names'); return d ? d.textContent : ''")
+        for name in ("rigid-matrix euler", "mujoco euler", "mujoco-js@0.0.7+euler", "exact"):
+            if name not in names:
+                errors.append(f"the page does not say what {name!r} names: {names!r}")
         driver.save_screenshot(str(root / "league.png"))
+        driver.set_window_size(1366, 300)
+        header = driver.execute_script("""
+          window.scrollTo(0, document.documentElement.scrollHeight);
+          const r = document.querySelector('table tr th').getBoundingClientRect();
+          return [r.top, r.bottom, window.scrollY];""")
+        print(f"scrolled by {header[2]} px: the header row at {header[0]:.0f}..{header[1]:.0f} px")
+        if not header[2] > 0 or not (-0.5 <= header[0] and header[1] <= 80):
+            errors.append(f"the scenarios' row scrolls away: at {header[0]:.0f}..{header[1]:.0f} px "
+                          f"scrolled by {header[2]} px")
+        driver.save_screenshot(str(root / "league-scrolled.png"))
         print(f"screenshot {root / 'league.png'}")
     if errors:
         fail("\n  " + "\n  ".join(errors))

@@ -5,7 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
 
 namespace bookspin::charts {
 namespace {
@@ -63,6 +68,43 @@ TEST(SweepPlots, TheSheetIsAsWideAndTallAsItsParts) {
   const RgbaImage sheet = sweep_sheet(chart);
   EXPECT_EQ(sheet.width, 1280);
   EXPECT_EQ(sheet.height, 120 + 2 * 330);
+}
+
+// A sweep's picture holds its header within the sheet: the title of every sweep of sweeps/
+// (a sweep's title with "(sweep of …)" after it, 36 px bold, ran past the right edge: "…axis
+// (s"), and a title longer than the sheet, leave no ink in the sheet's right margin over the
+// header's rows.
+TEST(SweepPlots, NoTitleIsCutAtThePicturesRightEdge) {
+  std::vector<std::string> titles;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(BOOKSPIN_SOURCE_DIR) + "/sweeps")) {
+    std::ifstream file(entry.path());
+    for (std::string line; std::getline(file, line);)
+      if (line.rfind("title = \"", 0) == 0) titles.push_back(line.substr(9, line.rfind('"') - 9));
+  }
+  ASSERT_GE(titles.size(), 5u);
+  titles.push_back(
+      "A title far longer than any sheet is wide, which must be broken between its words so that "
+      "every one of them is seen");
+  for (const std::string& title : titles) {
+    SweepChart chart;
+    chart.scene_name = "flip-time-vs-perturbation";
+    chart.scene_title = title;
+    chart.axes = {{"initial.angular_velocity[1]", 1e-6, 1e-2, true, {1e-6, 1e-2}}};
+    chart.measures = {analysis::find_measure("first_flip"), analysis::find_measure("flip_period"),
+                      analysis::find_measure("energy_drift"),
+                      analysis::find_measure("orientation_error")};
+    chart.header = {"initial.angular_velocity[1]", "first_flip", "flip_period", "energy_drift",
+                    "orientation_error"};
+    chart.rows = {{"1e-6", "190", "380", "1e-13", "1e-9"}, {"0.01", "55", "110", "1e-13", "1e-11"}};
+    const RgbaImage sheet = sweep_sheet(chart);
+    const double font = std::max(15.0, 0.024 * sheet.height);
+    int ink = 0, first_y = -1;
+    for (int y = 0; y < static_cast<int>(4 * font); ++y)
+      for (int x = sheet.width - static_cast<int>(0.5 * font); x < sheet.width; ++x)
+        if (sheet.row(y)[4 * x] < 200 && ink++ == 0) first_y = y;
+    EXPECT_EQ(ink, 0) << title << ": ink in the right margin from row " << first_y;
+  }
 }
 
 }  // namespace

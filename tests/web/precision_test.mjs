@@ -91,3 +91,39 @@ test('no printed number has more digits than σ allows', () => {
       decimals(s) === 0, `${value} printed ${v}`);
   }
 });
+
+test('powers of ten from 10⁶ on and under 10⁻⁴, in every decade; plain between', () => {
+  // A number that is not whole, in each decade from 10⁻¹² to 10¹⁴: m × 10ⁿ exactly where its
+  // leading digit is at 10⁶ or more or under 10⁻⁴ (a rule switching a decade late printed
+  // 1234567.8 as "1235000", seven digits where four are known).
+  for (let e = -12; e <= 14; ++e) {
+    const x = 1.23456789123 * 10 ** e;
+    if (Number.isInteger(x)) continue;  // a count is whole
+    const text = significant(x);
+    if (e >= 6 || e < -4) {
+      const power = String(e).split('').map((c) => '⁻⁰¹²³⁴⁵⁶⁷⁸⁹'['-0123456789'.indexOf(c)]).join('');
+      assert.equal(text, `1.235 × 10${power}`, `${x} printed ${text}`);
+    } else {
+      assert.doesNotMatch(text, /×/, `${x} printed ${text}`);
+      assert.equal(Number(text), Number(x.toPrecision(4)), `${x} printed ${text}`);
+    }
+  }
+  assert.equal(significant(1234567.8), '1.235 × 10⁶');
+  assert.equal(significant(999999.7), '1.000 × 10⁶');
+  assert.equal(significant(-123456.78), '-123500');
+});
+
+test("the readout's ω: four decimals, a run running away by the number rule on one line", async () => {
+  const { omegaText } = await import(pathToFileURL(join(source, 'web/src/readout.js')).href);
+  // A diverged run's ω printed by toFixed(4) as "6.264803277982017e+50", over two lines.
+  assert.equal(omegaText(6.264803277982017e+50), '6.265 × 10⁵⁰');
+  assert.equal(omegaText(-2.0000004), '-2.0000');
+  assert.equal(omegaText(-0.00001), '0.0000');
+  assert.equal(omegaText(1234.56789), '1234.5679');
+  assert.equal(omegaText(12345.678), '12350');
+  assert.equal(omegaText(1.5e7 + 0.25), '1.500 × 10⁷');
+  for (let e = -3; e <= 300; e += 7) {
+    const text = omegaText(-3.3 * 10 ** e);
+    assert.ok(text.length <= 16 && !/e[+-]/.test(text), `ω ${-3.3 * 10 ** e} printed ${text}`);
+  }
+});

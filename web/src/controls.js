@@ -106,11 +106,17 @@ export class Controls {
     for (const id of BOXES) $(id).checked = state[id];
     ['wx', 'wy', 'wz'].forEach((id, i) => writeNumber(id, state.w[i]));
     const scene = this.scenes.find((x) => x.name === state.scene);
-    $('sceneTitle').textContent = scene ? scene.title || scene.name : '';
+    // The scene's words are of its own body: another body keeps the scene's start and settings
+    // but not its title and description (a phone is not "Dzhanibekov's T-handle").
+    const own = scene ? this.space.sceneBase(this.scenes, state.scene).body : '';
+    const title = scene ? scene.title || scene.name : '';
+    $('sceneTitle').textContent = !scene ? '' : state.body === own ? title : `The ${state.body}, from “${title}”`;
     show('sceneAbout', Boolean(scene));  // (custom): no scene to tell of
-    const newScene = this.aboutFor !== state.scene;
-    this.aboutFor = state.scene;
-    $('sceneDescription').textContent = scene ? scene.description || '' : '';
+    const key = `${state.scene}\n${state.body}`;
+    const newScene = this.aboutFor !== key;
+    this.aboutFor = key;
+    $('sceneDescription').textContent = !scene ? '' : state.body === own ? scene.description || ''
+      : `This scene's words are of its own body, the ${own}: here the ${state.body} runs from its start, spin and settings.`;
     // The time slider spans the scene's run (bookspin explore's `duration`), or 300 time units.
     $('slider').max = Math.max(scene && scene.duration > 0 ? scene.duration : 300, Math.ceil(state.t));
     // A comparison shows its every tile (the engines' replayed), or the two methods chosen.

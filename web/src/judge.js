@@ -21,6 +21,26 @@ const WORDS = {
   separatrix_approach: 'way to the separatrix (max)',
 };
 
+/** The judgement's columns that a rule of the judge bounds, and the rule's name in
+ * analysis::judge_rules (docs/flipcheck.md): the value itself over the limit fails. Not
+ * first_flip (its rule bounds |first − exact| over T/2, not the time shown). */
+const RULE_OF = { start_error: 'start', energy_drift: 'energy_drift', L_drift: 'L_drift',
+  orientation_error: 'orientation_error', separatrix_approach: 'separatrix_approach' };
+
+/** {column: limit} from the judge's rules (analysis::judge_rules: a line "name value" each, then
+ * "columns …"): a measure's limit, for the table, where the rule of that name is a bound on
+ * the column's value (its value above the limit fails). */
+export function limitsOf(rulesText, columns) {
+  const rules = {};
+  for (const line of String(rulesText || '').split('\n')) {
+    const [name, value, more] = line.trim().split(/\s+/);
+    if (name && value !== undefined && more === undefined && Number.isFinite(Number(value))) rules[name] = Number(value);
+  }
+  const out = {};
+  for (const c of columns) if (c in RULE_OF && RULE_OF[c] in rules) out[c] = rules[RULE_OF[c]];
+  return out;
+}
+
 /** The SHA-256 (hex) of `text`'s UTF-8 bytes: a promise (the browser's Web Crypto). */
 async function sha256Hex(text) {
   const digest = await crypto.subtle.digest('SHA-256', new TextEncoder().encode(text));
@@ -70,7 +90,10 @@ function download(name, text, type) {
 export class JudgePanel {
   constructor(wasm, scenes, currentScene) {
     this.wasm = wasm;
-    this.scenes = scenes.filter(isScenario);
+    // The kit's scenarios (scenes/flipcheck/, `kit` in bookspin explore's data) where the page
+    // holds them; in a page of other scenes, every scene flipcheck takes.
+    const takes = scenes.filter(isScenario), kit = takes.filter((s) => s.kit);
+    this.scenes = kit.length ? kit : takes;
     this.replay = new Replay($('judgeReplay'), $('judgeReplayTime'));
     const menu = $('judgeScenario');
     menu.innerHTML = '';
@@ -85,13 +108,21 @@ export class JudgePanel {
     takeFiles($('judgeFile'), $('judgeDrop'), (files) => this.judgeFile(files[0]));
     // A link to the panel: explorer.html#judge opens it (the gallery's kit section links it),
     // once the page has its state.
-    if (location.hash === '#judge') queueMicrotask(() => this.open(currentScene()));
+    // On a scene that is no scenario (the gallery's link names none), the page goes to the
+    // first scenario, so that the panel's scenario is what the page shows.
+    if (location.hash === '#judge') queueMicrotask(() => this.open(currentScene(), true));
   }
 
   scene(name) { return this.scenes.find((s) => s.name === name); }
 
   /** Opens the panel on scenario `name` (the page's scene, where it is one). */
-  open(name) {
+  open(name, fromLink = false) {
+    if (!this.scene(name) && fromLink && this.scenes.length) {
+      name = this.scenes[0].name;
+      const menu = $('scene');
+      menu.value = name;
+      menu.dispatchEvent(new Event('change'));
+    }
     if (this.scene(name)) $('judgeScenario').value = name;
     $('judge').hidden = false;
   }
@@ -169,9 +200,17 @@ export class JudgePanel {
     // The readable label first, the CSV's key second; each number to four significant digits
     // (a count whole), as the CSV holds it in the cell's title (the downloaded judgement keeps
     // every digit).
-    const rows = Object.entries(row).filter(([c]) => !TEXT_COLUMNS.includes(c)).map(([c, v]) =>
-      `<tr><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c}</code></small>` : ''}</th>` +
-      `<td${v === null ? '' : ` title="${v}"`}>${significant(v)}</td></tr>`);
+    // A measure the judge bounds shows its limit beside it, and over it reads as a failure.
+    const limits = limitsOf(this.wasm.judgeRules ? this.wasm.judgeRules() : '', Object.keys(row));
+    const rows = Object.entries(row).filter(([c]) => !TEXT_COLUMNS.includes(c)).map(([c, v]) => {
+      const limit = c in limits && v !== null ? limits[c] : null;
+      const over = limit !== null && v > limit;
+      // The limit as the rules write it (0.01, 0.000001), not padded to four digits.
+      const limitText = limit === null ? '' : /e/.test(String(limit)) ? significant(limit, 2) : String(limit);
+      const bound = limit === null ? '' : `${over ? 'over its limit' : 'limit'} ${limitText}`;
+      return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c}</code></small>` : ''}</th>` +
+        `<td${v === null ? '' : ` title="${v}"`}>${significant(v)}</td><td class="limit">${bound}</td></tr>`;
+    });
     $('judgeTable').innerHTML = rows.join('');
     $('judgeResult').hidden = false;
   }

@@ -27,11 +27,14 @@ export class Pacer {
   }
 
   /** Steps `runs` towards time `target` for at most `ms` milliseconds; sets and returns
-   * state.t, the time reached. While it is short of `target`, continue() goes on. */
+   * state.t, the time reached. While it is short of `target`, continue() goes on. `target` is
+   * taken to the whole step nearest it, round(target/dt)·dt, the time Runs.advanceTo stops at:
+   * a time between two steps (a slider's value, a link's t = 42.43333333333334) would
+   * otherwise never be reached, the catch-up left at 100 % for ever and Play held by it. */
   catchUp(runs, state, target, ms) {
-    this.target = target;
-    state.t = runs.advanceTo(target, state.dt, performance.now() + ms);
-    if (state.t >= target) this.target = null;
+    this.target = Math.round(target / state.dt) * state.dt;
+    state.t = runs.advanceTo(this.target, state.dt, performance.now() + ms);
+    if (state.t >= this.target) this.target = null;
     this.notice(state);
     return state.t;
   }
@@ -61,7 +64,7 @@ export class Pacer {
   notice(state) {
     const lines = [...this.refused];
     if (this.target !== null)
-      lines.push(`simulating to t = ${this.target}: ${(100 * state.t / this.target).toFixed(1)}% (Reset stops)`);
+      lines.push(`simulating to t = ${Number(this.target.toPrecision(6))}: ${(100 * state.t / this.target).toFixed(1)}% (Reset stops)`);
     if (this.slow) lines.push(this.slow);
     this.show(lines.join('; '));
   }

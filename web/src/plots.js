@@ -65,6 +65,20 @@ function measuredUpTo(measured, tmax) {
   return out;
 }
 
+/** `text` in lines no wider than `width` on `g` (its font), broken after a comma or at a space
+ * (a word longer than the width alone on its line). */
+export function wrapped(g, text, width) {
+  const words = text.split(' ');
+  const lines = [];
+  let line = '';
+  for (const word of words) {
+    const next = line ? `${line} ${word}` : word;
+    if (line && g.measureText(next).width > width) { lines.push(line); line = word; } else line = next;
+  }
+  if (line) lines.push(line);
+  return lines;
+}
+
 /** Draws the three panels of `runs` on `canvas`, with a legend of the runs and a time axis,
  * and the scene's `measured` ω (or null) up to the runs' time as dots on the ω panel; returns
  * {spans: each line's drawn height in CSS pixels, {panel, run, component, px}; measuredDots:
@@ -91,7 +105,13 @@ export function drawPlots(canvas, runs, measured = null) {
     let label = r.label;
     if (perRow > 1 && g.measureText(label).width > cell - 36) label = label.replace(/ \([^)]*\)/g, '') || label;
     if (perRow > 1) while (label.length > 1 && g.measureText(label).width > cell - 36) label = label.slice(0, -2) + '…';
-    g.fillText(label, x + 30, y);
+    // One to a row: the whole name, on as many lines as its width needs (a tile's long label,
+    // "flexible: damped particle lattice, velocity Verlet", ran past the canvas's right edge).
+    const lines = perRow > 1 ? [label] : wrapped(g, label, cell - 36);
+    lines.forEach((line, li) => {
+      g.fillText(line, x + 30, y);
+      if (li < lines.length - 1) y += FONT_PX + 2;
+    });
     if (ri % perRow === perRow - 1 || ri === runs.length - 1) y += FONT_PX + 4;
   });
   if (measured) {

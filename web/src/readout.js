@@ -2,9 +2,18 @@
 // turn-over detector, docs/physics.md §14) and its first flip beside the exact motion's. Every
 // number comes from the WebAssembly sessions (runs.js); this module only writes them out.
 
+import { significant } from './precision.js';
+
 const $ = (id) => document.getElementById(id);
 /** `x` to `digits` decimals, without a "-0.00". */
 const fixed = (x, digits) => (Math.abs(x) < 0.5 * 10 ** -digits ? 0 : x).toFixed(digits);
+
+/** A component of ω as the readout shows it: four decimals, as a class reads a spin; from 10⁴ on
+ * (a run running away before it diverges) by the page's number rule, four significant digits
+ * and a power of ten ("6.265 × 10⁵⁰", not toFixed's "6.264803277982017e+50" over two lines). */
+export function omegaText(x) {
+  return Math.abs(x) < 1e4 - 5e-5 ? fixed(x, 4) : significant(x, 4);
+}
 
 /** The readout's HTML for more than two runs (a comparison's every tile): a cell a run, its
  * method and its flips and the time of its first, three to a row, so that the view keeps its
@@ -33,7 +42,7 @@ function runsHtml(runs, t) {
       `<div class="counts"><span class="big flips">flips ${own.count}</span> ` +
       `<span class="big first">first flip at t = ${first}</span> <span class="exact">${beside}</span></div>` +
       // ω in numbers for one run; in compare mode the plots show it, and the books stay in view.
-      (runs.length > 1 ? '' : `<div class="omega">ω = (${h.w.map((x) => x.toFixed(4)).join(', ')})</div>`) +
+      (runs.length > 1 ? '' : `<div class="omega">ω = (${h.w.map(omegaText).join(', ')})</div>`) +
       '</div>';
   }).join('');
 }

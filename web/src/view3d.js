@@ -175,9 +175,13 @@ export class View3D {
       // Within its cell of the grid: a long name wraps under its body.
       label.style.left = `${cols > 1 ? cellX[k] : (left + right) / 2}px`;
       label.style.maxWidth = `${Math.max(60, Math.min(apart, w) - 12)}px`;
-      // Under its body, but never past the view's bottom, however many lines it wraps to.
-      label.style.top = `${Math.max(0, Math.min(bottom + 6, h - label.offsetHeight - 4))}px`;
+      // Under its body, but never past the view's bottom, however many lines it wraps to: the
+      // box the labels lie in, which shrinks at once when the readout's strip grows (the
+      // canvas keeps its old height until the resize that follows: a label placed by it ran
+      // 10 px past the view's bottom).
       label.hidden = !Number.isFinite(bottom);
+      const floor = Math.min(h, v.parentElement ? v.parentElement.clientHeight : h);
+      label.style.top = `${Math.max(0, Math.min(bottom + 6, floor - label.offsetHeight - 4))}px`;
     });
   }
 
