@@ -56,6 +56,9 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
   bool ok = false;
   const std::string text = path_text(scenario, ok);
   if (!ok) throw InputError("scenario: expected a name or a path, got a non-str");
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+    throw InputError("scenario: holds a NUL byte at character " + std::to_string(nul + 1) +
+                     " (a name or a path is one line of text)");
   const bool path = !py::isinstance<py::str>(scenario) || text.find('/') != std::string::npos ||
                     fs::path(text).extension() == ".toml";
   if (path) return scene::parse_scene(text);
@@ -185,9 +188,23 @@ struct Judged {
   std::string line;
 };
 
+/// The `motion` argument: a name (str) of at most one line and no NUL, or InputError naming it.
+std::string motion_name_of(const py::object& motion) {
+  if (!py::isinstance<py::str>(motion))
+    throw InputError("flipcheck.judge: motion: expected a name (str), got " +
+                     std::string(py::str(py::type::of(motion).attr("__name__"))));
+  const std::string name = motion.cast<std::string>();
+  for (const char ch : name)
+    if (ch == '\0' || ch == '\n' || ch == '\r')
+      throw InputError(std::string("flipcheck.judge: motion: a name holds ") +
+                       (ch == '\0' ? "a NUL byte" : "a line break") + ": give it on one line");
+  return name;
+}
+
 Judged judged(const py::object& scenario_input, const py::object& t_arg, const py::object& q_arg,
               const py::object& omega_arg, const py::object& directory,
-              const std::string& motion_name) {
+              const py::object& motion_arg) {
+  const std::string motion_name = motion_name_of(motion_arg);
   const scene::Scene scene = scenario_scene(scenario_input, directory);
   const analysis::Scenario scenario = analysis::scenario_of(scene);
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
@@ -197,6 +214,7 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
   CsvTable table;
   Judged out;
   {
+    const StopPoll stop = python_stop();
     py::gil_scoped_release release;
     std::vector<std::array<double, 8>> rows(t.size());
     for (std::size_t i = 0; i < t.size(); ++i)
@@ -204,7 +222,12 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
                  q[4 * i + 3], omega[3 * i], omega[3 * i + 1], omega[3 * i + 2]};
     const jobs::MotionFile motion = jobs::motion_from_rows(
         rows, jobs::OmegaFrame::world, "flipcheck.judge", scenario.dt, scenario.steps);
-    const analysis::Conformance result = analysis::judge_motion(scenario, motion.rows);
+    analysis::Conformance result;
+    try {
+      result = analysis::judge_motion(scenario, motion.rows, {}, stop);
+    } catch (const InputError& e) {
+      throw InputError(std::string("flipcheck.judge: ") + e.what());
+    }
     table = analysis::judgement_table(scenario, analysis::scenario_sha256(scenario),
                                       {{{}, motion_name, result}});
     out.pass = result.pass();
@@ -217,13 +240,13 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
 
 py::dict judge(const py::object& scenario_input, const py::object& t_arg, const py::object& q_arg,
                const py::object& omega_arg, const py::object& directory,
-               const std::string& motion_name) {
+               const py::object& motion_name) {
   return judged(scenario_input, t_arg, q_arg, omega_arg, directory, motion_name).row;
 }
 
 py::dict assert_passes(const py::object& scenario_input, const py::object& t_arg,
                        const py::object& q_arg, const py::object& omega_arg,
-                       const py::object& directory, const std::string& motion_name) {
+                       const py::object& directory, const py::object& motion_name) {
   Judged j = judged(scenario_input, t_arg, q_arg, omega_arg, directory, motion_name);
   if (!j.pass) {
     PyErr_SetString(PyExc_AssertionError, j.line.c_str());

@@ -102,6 +102,70 @@ def error_line(stderr, prefix):
     return lines[0][len(prefix):]
 
 
+DELETE = object()
+# (field, value, what the one line must hold)
+HOSTILE = [
+    ("scenario", DELETE, "scenario: missing"), ("scenario", 3, "scenario: expected a name"),
+    ("scenario", "../escaped", "scenario name \"../escaped\""),
+    ("scenario", "a/b", "scenario name"), ("scenario", "a\u0000b", "byte 0x00"),
+    ("scenario", "a\nb", "byte 0x0a"), ("scenario", "..", "scenario name"),
+    ("principal_moments", DELETE, "principal_moments: missing"),
+    ("principal_moments", [1, 2], "principal_moments: expected an array of 3 numbers, got 2"),
+    ("principal_moments", "1,2,3", "principal_moments: expected an array of 3 numbers"),
+    ("principal_moments", [1, None, 3], "principal_moments[1]: expected a number"),
+    ("principal_moments", [1, 0, 3], "principal_moments[1]"),
+    ("mass", DELETE, "mass: missing"), ("mass", -1, "mass: -1"), ("mass", "1", "mass: expected a number"),
+    ("q0", [0, 1, 0, 0], "q0: (0, 1, 0, 0): every scenario starts at the identity"),
+    ("q0", [1, 0], "q0: expected an array of 4 numbers"),
+    ("omega0_world", [9, 9, 9], "omega0_world: (9, 9, 9) is not omega0_body"),
+    ("omega0_body", DELETE, "omega0_body: missing"),
+    ("omega0_body", [1e200, 2, 3], "omega0_body[0]: 1e+200 is beyond"),
+    ("omega0_body", [0, 0, 0], "the body is at rest"),
+    ("dt", 1e300, "dt: 1e+300 over 500 steps"), ("dt", 0, "dt: 0"), ("dt", "0.01", "dt: expected a number"),
+    ("dt", DELETE, "dt: missing"),
+    ("steps", 2.5, "steps: 2.5 is not a whole number"), ("steps", 1e12, "steps: 1000000000000 must be"),
+    ("steps", 2e7, "steps: 20000000 must be"), ("steps", -3, "steps: -3 must be"),
+    ("steps", DELETE, "steps: missing"),
+]
+
+
+def fuzz_scenarios(npx, env, project, tmp, source):
+    base = json.loads((project / "node_modules" / "flipcheck" / "scenarios" /
+                       "mujoco-test-box.json").read_text())
+    room = tmp / "fuzz"
+    room.mkdir()
+    exact = room / "exact"
+    run(npx + ["export", "mujoco-test-box", "-o", exact], env, cwd=project)
+    motion = exact / "mujoco-test-box-exact.csv"
+    # The stock scenario as a file, then with the fields it may have written its own way.
+    for k, (field, value, said) in enumerate([(None, None, None)] + HOSTILE):
+        spec = dict(base)
+        if field is not None:
+            if value is DELETE:
+                del spec[field]
+            else:
+                spec[field] = value
+        file = room / f"case{k}.json"
+        file.write_text(json.dumps(spec))
+        out = room / f"out{k}"
+        for command in (["export", file, "-o", out], ["judge", file, motion, "-o", out]):
+            done = run(npx + command, env, cwd=project, expect=0 if field is None else 2)
+            if field is None:
+                continue
+            lines = done.stderr.splitlines()
+            if len(lines) != 1 or not lines[0].startswith("flipcheck: error: ") or said not in lines[0]:
+                fail(f"{field} = {value!r}: npx {command[0]} said {done.stderr!r}, expected one "
+                     f"line holding {said!r}")
+            if out.exists():
+                fail(f"{field} = {value!r}: npx {command[0]} wrote {sorted(out.rglob('*'))}")
+        outside = sorted(p.name for p in room.iterdir()
+                         if not re.fullmatch(r"case\d+\.json|out\d+|exact", p.name))
+        outside += sorted(p.name for p in tmp.iterdir() if "escaped" in p.name)
+        if outside:
+            fail(f"{field} = {value!r}: written outside -o: {outside}")
+    print(f"scenario JSON fuzzer: {len(HOSTILE)} hostile fields, each one line and exit 2")
+
+
 def main(bookspin, source, build):
     for program in ("em++", "node", "npm"):
         if shutil.which(program) is None:
@@ -280,6 +344,12 @@ def main(bookspin, source, build):
             fail(f"scenario() of an unknown name threw {result['errors']['scenario']!r}")
         run(npx + ["judge", "no-such-scenario", bad], env, cwd=project, expect=2)
         print("bad input: the command line's one line, exit 2")
+
+        # A scenario JSON fuzzer (docs/flipcheck.md, "What a scenario may be"): the carried box
+        # scenario with a field missing, mistyped, out of range or hostile, through npx export
+        # and judge: exit 2 and one line naming the field, nothing written, and nothing ever
+        # outside -o; the fields as written, unchanged, are judged.
+        fuzz_scenarios(npx, env, project, tmp, source)
     print(f"PASS: {tgz.name} ({tgz.stat().st_size} bytes)")
 
 

@@ -13,7 +13,8 @@ import subprocess
 import numpy as np
 import pytest
 
-from conftest import SCENARIO_DIR, SOURCE_DIR, cli_error_line, numbers, read_csv, run_cli, write_motion_csv
+from conftest import (SCENARIO_DIR, SOURCE_DIR, cli_error_line, interrupted_child, numbers, read_csv,
+                      run_cli, write_motion_csv)
 
 SCENARIOS = sorted(p.stem for p in SCENARIO_DIR.glob("*.toml"))
 NUMERIC = ("start_error", "energy_drift", "L_drift", "first_flip", "first_flip_exact",
@@ -264,3 +265,65 @@ def test_judge_equals_the_command_line_on_the_engines_motions(bookspin, tmp_path
         q = np.stack([numbers(columns[c]) for c in ("qw", "qx", "qy", "qz")], axis=1)
         w = np.stack([numbers(columns[c]) for c in ("wx_world", "wy_world", "wz_world")], axis=1)
         assert_same_judgement(bookspin.flipcheck.judge(name, t, q, w), cli)
+
+
+def test_the_whole_motion_is_judged_and_coarse_rows_are_refused(bookspin):
+    """The exact motion turned 90° about world z between its ends fails on its orientation and
+    L's direction, each failure with its limit; written every 1000th step it is refused as too
+    coarse (never "0 turn-overs"), and every 50th step passes."""
+    name = "book-intermediate-0.05"
+    _, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"], arrays["q"].copy(), arrays["omega_world"].copy()
+    c, s = math.cos(math.pi / 4), math.sin(math.pi / 4)  # q_turn = (c, 0, 0, s): 90° about z
+    inner = slice(1, len(t) - 1)
+    qw, qx, qy, qz = q[inner].T.copy()
+    q[inner] = np.stack([c * qw - s * qz, c * qx - s * qy, c * qy + s * qx, c * qz + s * qw], axis=1)
+    wx, wy = w[inner, 0].copy(), w[inner, 1].copy()
+    w[inner, 0], w[inner, 1] = -wy, wx
+    judged = bookspin.flipcheck.judge(name, t, q, w)
+    assert judged["verdict"] == "fail"
+    assert judged["orientation_error"] == pytest.approx(math.pi / 2, abs=1e-9)
+    assert judged["L_direction_error"] == pytest.approx(math.pi / 2, abs=1e-6)
+    with pytest.raises(AssertionError) as raised:
+        bookspin.flipcheck.assert_passes(name, t, q, w)
+    assert "orientation error 1.57 rad at step 1 (limit 0.1)" in str(raised.value)
+    assert "(limit 0.01)" in str(raised.value)
+    t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
+    with pytest.raises(bookspin.Error, match="rows every 1000 steps .* too far apart"):
+        bookspin.flipcheck.judge(name, t[::1000], q[::1000], w[::1000])
+    assert bookspin.flipcheck.judge(name, t[::50], q[::50], w[::50])["verdict"] == "pass"
+
+
+def test_bad_arguments_raise_bookspin_error_naming_them(bookspin):
+    name = "mujoco-test-box"
+    _, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
+    with pytest.raises(bookspin.Error, match="motion: expected a name \\(str\\), got int"):
+        bookspin.flipcheck.judge(name, t, q, w, motion=3)
+    with pytest.raises(bookspin.Error, match="motion: a name holds a NUL byte"):
+        bookspin.flipcheck.judge(name, t, q, w, motion="a\0b")
+    with pytest.raises(bookspin.Error, match="scenario: holds a NUL byte at character 8"):
+        bookspin.flipcheck.judge("mujoco-\0test-box", t, q, w)
+
+
+def test_ctrl_c_stops_a_long_judgement(tmp_path):
+    """SIGINT during the judgement of 10^6 rows raises KeyboardInterrupt from the judge, not
+    after it has finished (it came when the judgement was done)."""
+    scene = tmp_path / "long.toml"
+    scene.write_text((SCENARIO_DIR / "mujoco-test-box.toml").read_text()
+                     .replace("frames = 51", "frames = 2").replace("steps_per_frame = 10",
+                                                                    "steps_per_frame = 1000000"))
+    script = f"""
+        import time, bookspin
+        _, a = bookspin.flipcheck.export({str(scene)!r})
+        print("judging", flush=True)
+        result = None
+        try:
+            result = bookspin.flipcheck.judge({str(scene)!r}, a["t"], a["q"], a["omega_world"])
+            print("finished", flush=True)
+        except KeyboardInterrupt:
+            print("interrupted", result is None, time.monotonic(), flush=True)
+    """
+    lines, stderr, returncode, sent = interrupted_child(script, "judging", 0.3)
+    assert lines and lines[0].startswith("interrupted True"), (lines, stderr)
+    assert returncode == 0, stderr
