@@ -91,8 +91,7 @@ TEST(Judgement, AnEngineThatPrecessesLFailsOnLsDirectionAlone) {
   for (const double epsilon : {0.005, 0.02}) {
     std::vector<MotionSample> rows = exact_rows(s, 1);
     for (MotionSample& row : rows) {
-      const double angle =
-          epsilon * static_cast<double>(row.step) / static_cast<double>(s.steps);
+      const double angle = epsilon * static_cast<double>(row.step) / static_cast<double>(s.steps);
       row.q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ())) * row.q;
     }
     const Conformance c = judge_motion(s, rows);
@@ -163,9 +162,13 @@ TEST(Judgement, AScenarioNoJudgementCanBeMadeOfIsRefusedNamingItsField) {
   EXPECT_PRED2(starts, refusal([](Scenario& s) { s.steps = 1'000'000'000'000; }),
                "mujoco-test-box: steps: 1000000000000: must be from 1 to 10^7");
   EXPECT_PRED2(starts, refusal([](Scenario& s) { s.steps = 0; }), "mujoco-test-box: steps: 0");
-  EXPECT_PRED2(starts, refusal([](Scenario& s) { s.initial.omega0_body = {1e200, 2, 3}; }),
+  EXPECT_PRED2(starts, refusal([](Scenario& s) {
+                 s.initial.omega0_body = {1e200, 2, 3};
+               }),
                "mujoco-test-box: omega0_body[0]: 1e+200 is beyond ±1e6");
-  EXPECT_PRED2(starts, refusal([](Scenario& s) { s.initial.omega0_body = {-2e6, 2, 3}; }),
+  EXPECT_PRED2(starts, refusal([](Scenario& s) {
+                 s.initial.omega0_body = {-2e6, 2, 3};
+               }),
                "mujoco-test-box: omega0_body[0]: -2e+06 is beyond ±1e6");
   EXPECT_PRED2(starts, refusal([](Scenario& s) { s.dt = 1e300; }),
                "mujoco-test-box: dt: 1e+300 over 500 steps turns the body by");

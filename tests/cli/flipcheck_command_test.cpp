@@ -141,8 +141,9 @@ TEST(FlipcheckCommand, AFuzzedScenarioIsOneLineAndExitTwoOrAVerdictAndStaysInIts
       for (const auto& entry : fs::directory_iterator(out))
         if (entry.path().string().ends_with("-exact.csv")) csv.push_back(entry.path().string());
       ASSERT_EQ(csv.size(), 1u);
-      const SplitResult j = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") +
-                                               set + " " + quoted(csv[0]) + " -o " + quoted(out));
+      const SplitResult j =
+          run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + set + " " +
+                             quoted(fs::path(csv[0])) + " -o " + quoted(out));
       EXPECT_TRUE(j.status == 0 || j.status == 2) << j.status << j.err;
       if (j.status == 2) EXPECT_EQ(j.err.find('\n'), j.err.size() - 1) << j.err;
     }

@@ -62,8 +62,8 @@ std::vector<Row> exact_rows(const Scenario& s, long long stride, double shift = 
   for (long long n = 0; n <= s.steps; n += stride) {
     const double t = static_cast<double>(n) * s.dt;
     const physics::ExactState e = exact.state(t + shift);
-    rows.push_back({t, e.q[0], e.q[1], e.q[2], e.q[3], e.omega_world[0], e.omega_world[1],
-                    e.omega_world[2]});
+    rows.push_back(
+        {t, e.q[0], e.q[1], e.q[2], e.q[3], e.omega_world[0], e.omega_world[1], e.omega_world[2]});
   }
   return rows;
 }
@@ -201,11 +201,14 @@ TEST(JudgeProperty, AFuzzedScenarioIsRefusedByItsFieldInOneLineOrJudged) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  const std::vector<double> hostile = {0.0, -1.0, nan, inf, -inf, 1e-320, 1e-40, 1e40,
-                                       1e200, 1e300, 2.5, 1e7, 2e7, -0.0};
-  const std::vector<std::string> names = {"ok-name", "../escaped", "a/b", "", "a\nb",
-                                          std::string("nul\0x", 5), ".", "..", "x y",
-                                          std::string(200, 'n'), "caf\xc3\xa9", "ok.v2_3"};
+  const std::vector<double> hostile = {0.0,  -1.0,  nan,   inf, -inf, 1e-320, 1e-40,
+                                       1e40, 1e200, 1e300, 2.5, 1e7,  2e7,    -0.0};
+  const std::vector<std::string> names = {"ok-name",     "../escaped",
+                                          "a/b",         "",
+                                          "a\nb",        std::string("nul\0x", 5),
+                                          ".",           "..",
+                                          "x y",         std::string(200, 'n'),
+                                          "caf\xc3\xa9", "ok.v2_3"};
   int refused = 0, judged = 0;
   for (int k = 0; k < 300; ++k) {
     Scenario s;
@@ -260,8 +263,7 @@ TEST(JudgeProperty, AFuzzedScenarioIsRefusedByItsFieldInOneLineOrJudged) {
       const std::string what = e.what();
       EXPECT_EQ(what.find('\n'), std::string::npos) << what;
       EXPECT_EQ(what.find('\0'), std::string::npos);
-      EXPECT_NE(what.find(field_name.substr(0, field_name.find('['))), std::string::npos)
-          << what;
+      EXPECT_NE(what.find(field_name.substr(0, field_name.find('['))), std::string::npos) << what;
       ++refused;
       continue;
     }
