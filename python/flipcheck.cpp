@@ -93,8 +93,10 @@ judge(...) for a test suite (pytest): returns the judgement (judge's dict) when 
 "pass", and otherwise raises AssertionError whose message is the line `bookspin flipcheck
 judge` prints for the same motion, its reasons in words, the motion's name where the command
 line names the file:
-  book-intermediate-0.05 motion: FAIL (energy drift 0.484; |L| drift 0.218; orientation
-  error 1.66 rad): turn-overs 6/6, energy drift 0.484, |L| drift 0.218, orientation error ...
+  book-intermediate-0.05 motion: FAIL (energy drift 0.484 (limit 0.01); |L| drift 0.218
+  (limit 0.01); L turned 0.0304 rad at step 800 (limit 0.01); orientation error 3.14 rad at
+  step 1455 (limit 0.1)): turn-overs 6/6, energy drift 0.484, ...
+each failure with its value and its limit (docs/flipcheck.md, "Thresholds").
 Arguments as judge's; bad input raises bookspin.Error, as there.)";
 
 const char* kScenariosDoc = R"(scenarios(directory=None) -> list[str]
@@ -163,9 +165,11 @@ Arguments (float64, or anything numpy turns into it):
                        a step), none past its last step
   q            (N, 4)  orientation, body to world, w, x, y, z (any norm but 0, either sign)
   omega_world  (N, 3)  angular velocity, world frame, rad per time unit
-Raises bookspin.Error for an unknown scenario, a wrong shape, or a row the motion file's rules
-refuse ("flipcheck.judge: t[3]: t = 0.013 is not a whole number of steps of dt = 0.01"). The
-GIL is released while it judges.)";
+Raises bookspin.Error for an unknown scenario, a wrong shape, a row the motion file's rules
+refuse ("flipcheck.judge: t[3]: t = 0.013 is not a whole number of steps of dt = 0.01"), rows
+too far apart to show the exact motion's turn-overs ("flipcheck.judge: rows every 1000 steps
+... write a row at least every 62 steps"), and a `motion` that is not a str or holds a NUL or
+a line break. The GIL is released while it judges; KeyboardInterrupt on Ctrl-C.)";
 
 /// A judgement CSV cell as Python: a number (None for an empty cell), or its text (an int where
 /// it is a whole number: the counts and the flag).

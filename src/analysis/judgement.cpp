@@ -142,7 +142,12 @@ bool shows_turn_overs(const SampledExact& seen, int flips_exact,
                                   long long stride, long long last_step, int flips_exact,
                                   const SampledExact& seen,
                                   const std::optional<double>& first_exact, double tolerance) {
+  // A stride named safe for any smaller one too: at most `tolerance` (1 % of T/2) apart, so
+  // that the first turn-over, bracketed by two rows, is placed within it; halved until the
+  // exact motion at it shows every turn-over.
+  const double safe = std::floor(tolerance / dt);
   long long fine = std::max<long long>(1, stride / 2);
+  if (safe < static_cast<double>(fine)) fine = safe >= 1.0 ? static_cast<long long>(safe) : 1;
   while (fine > 1 && !shows_turn_overs(sample_exact(exact, mid, dt, fine, last_step), flips_exact,
                                        first_exact, tolerance))
     fine = std::max<long long>(1, fine / 2);
@@ -160,7 +165,8 @@ bool shows_turn_overs(const SampledExact& seen, int flips_exact,
                    short_number(static_cast<double>(stride) * dt) +
                    " time units) are too far apart to judge the turn-overs: the exact motion "
                    "at these rows shows " +
-                   shown + "; write a row at least every " + std::to_string(fine) + " steps");
+                   shown + "; write a row at least every " + std::to_string(fine) + " steps (" +
+                   short_number(static_cast<double>(fine) * dt) + " time units)");
 }
 
 }  // namespace
