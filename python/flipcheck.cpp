@@ -192,6 +192,20 @@ struct Judged {
   std::string line;
 };
 
+/// InputError for an array given as (columns, N), N = len(t) rows, where (N, columns) is meant
+/// (matrix_arg would say "expected shape (4, 4)", the row count taken from its first axis).
+void refuse_transposed(const py::object& value, const char* name, std::size_t columns,
+                       std::size_t rows) {
+  const py::tuple shape = py::module_::import("numpy").attr("shape")(value);
+  if (shape.size() != 2 || rows == columns) return;
+  const auto first = shape[0].cast<std::size_t>(), second = shape[1].cast<std::size_t>();
+  if (first == columns && second == rows)
+    throw InputError(std::string(name) + ": expected shape (" + std::to_string(rows) + ", " +
+                     std::to_string(columns) + "), N = len(t) rows, got (" + std::to_string(first) +
+                     ", " + std::to_string(second) +
+                     "): a row per time, its components across (give " + name + ".T)");
+}
+
 /// The `motion` argument: a name (str) of at most one line and no NUL, or InputError naming it.
 std::string motion_name_of(const py::object& motion) {
   if (!py::isinstance<py::str>(motion))
@@ -212,6 +226,8 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
   const scene::Scene scene = scenario_scene(scenario_input, directory);
   const analysis::Scenario scenario = analysis::scenario_of(scene);
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
+  refuse_transposed(q_arg, "q", 4, t.size());
+  refuse_transposed(omega_arg, "omega_world", 3, t.size());
   const std::vector<double> q = matrix_arg(q_arg, "q", -1, 4);
   const std::vector<double> omega = matrix_arg(omega_arg, "omega_world", -1, 3);
   same_rows({{"t", t.size()}, {"q", q.size() / 4}, {"omega_world", omega.size() / 3}});

@@ -167,6 +167,17 @@ def fuzz_scenarios(npx, env, project, tmp, source):
         if outside:
             fail(f"{field} = {value!r}: written outside -o: {outside}")
     print(f"scenario JSON fuzzer: {len(HOSTILE)} fields changed, each one line and exit 2 or judged")
+    # A motion file whose name holds a line break: one row of the judgement CSV, its name
+    # whole in its cell (the rows ran together).
+    odd = room / "two\nlines.csv"
+    shutil.copy(motion, odd)
+    run(npx + ["judge", "mujoco-test-box", odd, motion, "-o", room / "odd"], env, cwd=project)
+    rows = read_csv((room / "odd" / "mujoco-test-box-judge.csv").read_text())
+    if [r["motion"] for r in rows] != ["two\nlines.csv", motion.name] or \
+            [r["verdict"] for r in rows] != ["pass", "pass"]:
+        fail(f"a name with a line break: the judgement CSV reads {rows}")
+    shutil.rmtree(room / "odd")
+    odd.unlink()
 
 
 def main(bookspin, source, build):

@@ -304,6 +304,11 @@ def test_bad_arguments_raise_bookspin_error_naming_them(bookspin):
         bookspin.flipcheck.judge(name, t, q, w, motion=3)
     with pytest.raises(bookspin.Error, match="motion: a name holds a NUL byte"):
         bookspin.flipcheck.judge(name, t, q, w, motion="a\0b")
+    with pytest.raises(bookspin.Error, match=r"q: expected shape \(501, 4\), N = len\(t\) rows, "
+                                              r"got \(4, 501\).*give q.T"):
+        bookspin.flipcheck.judge(name, t, q.T, w)
+    with pytest.raises(bookspin.Error, match=r"omega_world: expected shape \(501, 3\)"):
+        bookspin.flipcheck.judge(name, t, q, w.T)
     with pytest.raises(bookspin.Error, match="scenario: holds a NUL byte at character 8"):
         bookspin.flipcheck.judge("mujoco-\0test-box", t, q, w)
 
