@@ -7,6 +7,7 @@ import json
 import math
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 
@@ -288,7 +289,7 @@ def test_the_whole_motion_is_judged_and_coarse_rows_are_refused(bookspin):
     assert judged["L_direction_error"] == pytest.approx(math.pi / 2, abs=1e-6)
     with pytest.raises(AssertionError) as raised:
         bookspin.flipcheck.assert_passes(name, t, q, w)
-    assert "orientation error 1.57 rad at step 1 (limit 0.1)" in str(raised.value)
+    assert re.search(r"orientation error 1.57 rad at step \d+ \(limit 0.1\)", str(raised.value))
     assert "(limit 0.01)" in str(raised.value)
     t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
     with pytest.raises(bookspin.Error, match="rows every 1000 steps .* too far apart"):
