@@ -297,7 +297,7 @@ def test_the_whole_motion_is_judged_and_coarse_rows_are_refused(bookspin):
     assert bookspin.flipcheck.judge(name, t[::50], q[::50], w[::50])["verdict"] == "pass"
 
 
-def test_bad_arguments_raise_bookspin_error_naming_them(bookspin):
+def test_bad_arguments_raise_bookspin_error_naming_them(bookspin, tmp_path):
     name = "mujoco-test-box"
     _, arrays = bookspin.flipcheck.export(name)
     t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
@@ -310,6 +310,12 @@ def test_bad_arguments_raise_bookspin_error_naming_them(bookspin):
         bookspin.flipcheck.judge(name, t, q.T, w)
     with pytest.raises(bookspin.Error, match=r"omega_world: expected shape \(501, 3\)"):
         bookspin.flipcheck.judge(name, t, q, w.T)
+    # a scene at its limits: 99999 frames of 100000 steps (it gave "exact -2147483647")
+    huge = tmp_path / "huge.toml"
+    huge.write_text((SCENARIO_DIR / f"{name}.toml").read_text().replace("frames = 51", "frames = 100000")
+                    .replace("steps_per_frame = 10", "steps_per_frame = 100000"))
+    with pytest.raises(bookspin.Error, match=r"steps: 9999900000: must be from 1 to 10\^7"):
+        bookspin.flipcheck.judge(huge, t, q, w)
     with pytest.raises(bookspin.Error, match="scenario: holds a NUL byte at character 8"):
         bookspin.flipcheck.judge("mujoco-\0test-box", t, q, w)
 
