@@ -342,3 +342,69 @@ def test_ctrl_c_stops_a_long_judgement(tmp_path):
     assert lines and lines[0].startswith("interrupted"), (lines, stderr)
     assert float(lines[0].split()[1]) - sent < 0.8, lines
     assert returncode == 0, stderr
+
+
+def random_scene(rng, k, folder):
+    """A random scenario as a scene file: the book's size in [0.5, 3] per axis, ω0 of 0.5 to 3
+    rad per time unit in a random direction (every third one near the intermediate axis), dt in
+    [0.005, 0.05], 40 to 100 time units."""
+    size = rng.uniform(0.5, 3.0, 3)
+    direction = rng.uniform(-0.5, 0.5, 3)
+    if k % 3 == 0:  # near the intermediate axis: I_i ~ the sum of the other two sizes squared
+        moments = [size[1] ** 2 + size[2] ** 2, size[0] ** 2 + size[2] ** 2, size[0] ** 2 + size[1] ** 2]
+        direction = 0.05 * direction + np.eye(3)[int(np.argsort(moments)[1])]
+    dt = float(rng.uniform(0.005, 0.05))
+    frames = int(rng.uniform(40, 100) / dt)
+    path = folder / f"random-{k}.toml"
+    omega = rng.uniform(0.5, 3.0) * direction / np.linalg.norm(direction)
+    path.write_text(f'[model]\nkind = "exact"\n[book]\nsize = [{size[0]}, {size[1]}, {size[2]}]\n'
+                    f'mass = 1.0\n[initial]\nangular_velocity = [{omega[0]}, {omega[1]}, {omega[2]}]\n'
+                    f'[time]\ndt = {dt}\nsteps_per_frame = 1\nframes = {frames + 1}\n')
+    return path
+
+
+def test_a_seeded_property_of_the_judge_at_the_python_door(bookspin, tmp_path):
+    """The exact motion, q negated on random rows and every thinning the rules allow pass (or
+    the thinning is refused as too coarse); rows turned, a time shift, ω scaled, q in x, y, z, w
+    order and a dropped row never pass (docs/flipcheck.md, "Thresholds")."""
+    rng = np.random.default_rng(8181)
+    flipping = 0
+    for k in range(6):
+        scene = random_scene(rng, k, tmp_path)
+        start, a = bookspin.flipcheck.export(scene)
+        t, q, w = a["t"], a["q"], a["omega_world"]
+        exact = bookspin.flipcheck.judge(scene, t, q, w)
+        assert exact["verdict"] == "pass", scene.read_text()
+        flipping += exact["flips_exact"] > 0
+        negated = q * np.where(rng.random(len(t)) < 0.5, -1.0, 1.0)[:, None]
+        assert bookspin.flipcheck.judge(scene, t, negated, w)["verdict"] == "pass"
+        steps = start["steps"]
+        for stride in [d for d in (2, 3, 5, 10, 50, 200, 1000) if steps % d == 0]:
+            try:
+                judged = bookspin.flipcheck.judge(scene, t[::stride], q[::stride], w[::stride])
+                assert judged["verdict"] == "pass", (stride, judged["failures"])
+            except bookspin.Error as e:
+                assert "too far apart to judge the turn-overs" in str(e), str(e)
+        moments, omega0 = np.array(start["principal_moments"]), np.array(start["omega0_body"])
+        shift = rng.uniform(0.3, 1.0) / np.linalg.norm(omega0)
+        shifted = bookspin.exact_motion(moments, omega0, t + shift)
+        turned = q.copy()
+        first = 1 + int(rng.integers(len(t) - 30))
+        rows = slice(first, first + 20)  # a run of rows in the middle: not the last
+        angle = rng.uniform(0.2, 3.0)
+        turned[rows] = np.stack([np.cos(angle / 2) * q[rows, 0] - np.sin(angle / 2) * q[rows, 3],
+                                 np.cos(angle / 2) * q[rows, 1] - np.sin(angle / 2) * q[rows, 2],
+                                 np.cos(angle / 2) * q[rows, 2] + np.sin(angle / 2) * q[rows, 1],
+                                 np.cos(angle / 2) * q[rows, 3] + np.sin(angle / 2) * q[rows, 0]], axis=1)
+        drop = 1 + int(rng.integers(len(t) - 3))
+        for what, motion in [
+                ("rows turned about z", (t, turned, w)),
+                ("shifted", (t, shifted["q"], shifted["omega_world"])),
+                ("omega scaled", (t, q, w * rng.choice([0.9, 1.1]))),
+                ("q as x, y, z, w", (t, q[:, [1, 2, 3, 0]], w)),
+                ("a row dropped", tuple(np.delete(x, drop, axis=0) for x in (t, q, w)))]:
+            try:
+                assert bookspin.flipcheck.judge(scene, *motion)["verdict"] == "fail", what
+            except bookspin.Error:
+                pass  # refused with its reason: never a pass
+    assert flipping >= 2  # not an empty claim: some of the scenarios turn over
