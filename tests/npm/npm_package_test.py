@@ -14,6 +14,8 @@ network; there
   shorter scenarios: `npx flipcheck judge` of its motion files as the command line's judge;
 - `npx flipcheck export` writes the command's scenario JSON byte for byte and its exact motion
   to 1e-12;
+- a seeded property of the judge at this door (tests/npm/judge_property.mjs) and a scenario JSON
+  fuzzer (fields missing, mistyped, out of range or hostile: one line, exit 2, nothing outside -o);
 - bad input: the command line's one line (an Error's message in the API, on stderr with exit
   status 2 from npx), and an unknown scenario exit 2.
 
@@ -364,6 +366,13 @@ def main(bookspin, source, build):
         # and judge: exit 2 and one line naming the field, nothing written, and nothing ever
         # outside -o; the fields as written, unchanged, are judged.
         fuzz_scenarios(npx, env, project, tmp, source)
+
+        # A seeded property of the judge through the package's judge() (tests/npm/judge_property.mjs).
+        shutil.copy(source / "tests" / "npm" / "judge_property.mjs", project)
+        prop = run(["node", "judge_property.mjs"], env, cwd=project)
+        if not prop.stdout.rstrip().endswith("PASS"):
+            fail(f"judge_property.mjs:\n{prop.stdout}{prop.stderr}")
+        print(f"the judge's property at the npm door: {len(prop.stdout.splitlines()) - 1} random scenarios")
     print(f"PASS: {tgz.name} ({tgz.stat().st_size} bytes)")
 
 
