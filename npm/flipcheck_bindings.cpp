@@ -13,8 +13,11 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -49,29 +52,119 @@ val guarded(F&& f) {
   }
 }
 
-Eigen::Vector3d vector3(const val& json, const char* key, const std::string& name) {
-  const std::vector<double> v = emscripten::convertJSArrayToNumberVector<double>(json[key]);
-  if (v.size() != 3) throw InputError(name + ": " + key + ": expected 3 numbers");
-  return {v[0], v[1], v[2]};
+/// JavaScript's typeof of `v`, "null" and "array" told apart: a field's type in a message.
+std::string type_of(const val& v) {
+  if (v.isNull()) return "null";
+  if (val::global("Array").call<bool>("isArray", v)) return "an array";
+  return "a " + v.typeOf().as<std::string>();
 }
 
-/// The scenario of an exported scenario JSON (see the head of this file).
+bool missing(const val& v) { return v.isUndefined() || v.isNull(); }
+
+/// json[key], a number, or InputError "WHERE: KEY: …" naming what is wrong with it.
+double number_field(const val& json, const char* key, const std::string& where) {
+  const val v = json[key];
+  if (v.isUndefined())
+    throw InputError(where + ": " + key +
+                     ": missing (a scenario JSON as flipcheck export writes it)");
+  if (!v.isNumber())
+    throw InputError(where + ": " + key + ": expected a number, got " + type_of(v));
+  return v.as<double>();
+}
+
+/// json[key], an array of `n` numbers, or InputError naming what is wrong with it.
+std::vector<double> numbers_field(const val& json, const char* key, std::size_t n,
+                                  const std::string& where) {
+  const val v = json[key];
+  const std::string expected = "expected an array of " + std::to_string(n) + " numbers";
+  if (v.isUndefined())
+    throw InputError(where + ": " + key +
+                     ": missing (a scenario JSON as flipcheck export writes it)");
+  if (!val::global("Array").call<bool>("isArray", v))
+    throw InputError(where + ": " + key + ": " + expected + ", got " + type_of(v));
+  const std::size_t length = v["length"].as<std::size_t>();
+  if (length != n)
+    throw InputError(where + ": " + key + ": " + expected + ", got " + std::to_string(length));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    const val item = v[i];
+    if (!item.isNumber())
+      throw InputError(where + ": " + key + "[" + std::to_string(i) + "]: expected a number, got " +
+                       type_of(item));
+    out.push_back(item.as<double>());
+  }
+  return out;
+}
+
+/// A number as a message gives it: its shortest "%.17g"-safe digits, "%.15g" where it reads back.
+std::string plain(double value) {
+  char number[32];
+  std::snprintf(number, sizeof number, "%.15g", value);
+  if (std::strtod(number, nullptr) != value) std::snprintf(number, sizeof number, "%.17g", value);
+  return number;
+}
+
+std::string vector_text(const std::vector<double>& v) {
+  std::string text = "(";
+  for (std::size_t i = 0; i < v.size(); ++i) text += (i ? ", " : "") + plain(v[i]);
+  return text + ")";
+}
+
+/// The scenario of an exported scenario JSON (see the head of this file). Every field is taken
+/// as written or refused by name (InputError): `scenario` (a name, analysis::
+/// scenario_name_problem), `mass`, `principal_moments`, `omega0_body` (or `omega0_world` alone),
+/// `dt` and `steps` (a whole number) as analysis::check_scenario allows them; `q0`, where given,
+/// the identity (either sign), the start every scenario has; `omega0_world`, where given beside
+/// omega0_body, equal to it (at the identity they are one vector).
 Scenario scenario_of(const val& json) {
+  if (missing(json) || json.typeOf().as<std::string>() != "object" ||
+      val::global("Array").call<bool>("isArray", json))
+    throw InputError("flipcheck: a scenario is a name or a scenario JSON object, got " +
+                     type_of(json));
   Scenario s;
-  s.name = json["scenario"].as<std::string>();
-  s.body.moments = vector3(json, "principal_moments", s.name);
-  s.body.cage.mass = json["mass"].as<double>();
-  s.initial.omega0_body = vector3(json, "omega0_body", s.name);
+  const val name = json["scenario"];
+  if (name.isUndefined())
+    throw InputError(
+        "scenario JSON: scenario: missing (the scenario's name, as flipcheck export "
+        "writes it)");
+  if (!name.isString())
+    throw InputError("scenario JSON: scenario: expected a name (a string), got " + type_of(name));
+  s.name = name.as<std::string>();
+  if (const std::string why = bookspin::analysis::scenario_name_problem(s.name); !why.empty())
+    bookspin::analysis::check_scenario(s);  // refuses the name, printable, in one line
+  const std::vector<double> moments = numbers_field(json, "principal_moments", 3, s.name);
+  s.body.moments = {moments[0], moments[1], moments[2]};
+  s.body.cage.mass = number_field(json, "mass", s.name);
+  const bool has_body = !json["omega0_body"].isUndefined();
+  const bool has_world = !json["omega0_world"].isUndefined();
+  const std::vector<double> body =
+      numbers_field(json, has_body || !has_world ? "omega0_body" : "omega0_world", 3, s.name);
+  if (has_body && has_world) {
+    const std::vector<double> world = numbers_field(json, "omega0_world", 3, s.name);
+    for (int i = 0; i < 3; ++i)
+      if (!(std::abs(world[i] - body[i]) <= 1e-12 * std::max(std::abs(body[i]), 1e-300)))
+        throw InputError(s.name + ": omega0_world: " + vector_text(world) + " is not omega0_body " +
+                         vector_text(body) +
+                         ": at q0 = identity they are one vector (give them equal, or one)");
+  }
+  if (!json["q0"].isUndefined()) {
+    const std::vector<double> q0 = numbers_field(json, "q0", 4, s.name);
+    if (!(q0[0] != 0.0 && std::isfinite(q0[0]) && q0[1] == 0.0 && q0[2] == 0.0 && q0[3] == 0.0))
+      throw InputError(s.name + ": q0: " + vector_text(q0) +
+                       ": every scenario starts at the identity, q0 = (1, 0, 0, 0) (w, x, y, z)");
+  }
+  s.initial.omega0_body = {body[0], body[1], body[2]};
   s.initial.jiggle = 0.0;
-  s.dt = json["dt"].as<double>();
-  s.steps = static_cast<long long>(json["steps"].as<double>());
-  for (int i = 0; i < 3; ++i)
-    if (!(std::isfinite(s.body.moments[i]) && s.body.moments[i] > 0.0))
-      throw InputError(s.name + ": principal_moments: each must be finite and > 0");
-  if (!s.initial.omega0_body.allFinite() || s.initial.omega0_body.isZero())
-    throw InputError(s.name + ": flipcheck: the body is at rest: nothing to judge");
-  if (!(s.dt > 0.0) || s.steps < 1)
-    throw InputError(s.name + ": flipcheck: a scenario needs dt > 0 and at least one step");
+  s.dt = number_field(json, "dt", s.name);
+  const double steps = number_field(json, "steps", s.name);
+  if (!(std::floor(steps) == steps))
+    throw InputError(s.name + ": steps: " + plain(steps) + " is not a whole number of steps");
+  if (!(steps >= 1.0 &&
+        steps <= static_cast<double>(bookspin::analysis::ScenarioLimits::max_steps)))
+    throw InputError(s.name + ": steps: " + plain(steps) +
+                     " must be from 1 to 10^7 (the exact motion is exported at every step)");
+  s.steps = static_cast<long long>(steps);
+  bookspin::analysis::check_scenario(s);
   return s;
 }
 

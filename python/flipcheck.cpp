@@ -56,6 +56,9 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
   bool ok = false;
   const std::string text = path_text(scenario, ok);
   if (!ok) throw InputError("scenario: expected a name or a path, got a non-str");
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+    throw InputError("scenario: holds a NUL byte at character " + std::to_string(nul + 1) +
+                     " (a name or a path is one line of text)");
   const bool path = !py::isinstance<py::str>(scenario) || text.find('/') != std::string::npos ||
                     fs::path(text).extension() == ".toml";
   if (path) return scene::parse_scene(text);
@@ -90,8 +93,10 @@ judge(...) for a test suite (pytest): returns the judgement (judge's dict) when 
 "pass", and otherwise raises AssertionError whose message is the line `bookspin flipcheck
 judge` prints for the same motion, its reasons in words, the motion's name where the command
 line names the file:
-  book-intermediate-0.05 motion: FAIL (energy drift 0.484; |L| drift 0.218; orientation
-  error 1.66 rad): turn-overs 6/6, energy drift 0.484, |L| drift 0.218, orientation error ...
+  book-intermediate-0.05 motion: FAIL (energy drift 0.484 (limit 0.01); |L| drift 0.218
+  (limit 0.01); L turned 0.0304 rad at step 800 (limit 0.01); orientation error 3.14 rad at
+  step 1455 (limit 0.1)): turn-overs 6/6, energy drift 0.484, ...
+each failure with its value and its limit (docs/flipcheck.md, "Thresholds").
 Arguments as judge's; bad input raises bookspin.Error, as there.)";
 
 const char* kScenariosDoc = R"(scenarios(directory=None) -> list[str]
@@ -160,9 +165,11 @@ Arguments (float64, or anything numpy turns into it):
                        a step), none past its last step
   q            (N, 4)  orientation, body to world, w, x, y, z (any norm but 0, either sign)
   omega_world  (N, 3)  angular velocity, world frame, rad per time unit
-Raises bookspin.Error for an unknown scenario, a wrong shape, or a row the motion file's rules
-refuse ("flipcheck.judge: t[3]: t = 0.013 is not a whole number of steps of dt = 0.01"). The
-GIL is released while it judges.)";
+Raises bookspin.Error for an unknown scenario, a wrong shape, a row the motion file's rules
+refuse ("flipcheck.judge: t[3]: t = 0.013 is not a whole number of steps of dt = 0.01"), rows
+too far apart to show the exact motion's turn-overs ("flipcheck.judge: rows every 1000 steps
+... write a row at least every 62 steps"), and a `motion` that is not a str or holds a NUL or
+a line break. The GIL is released while it judges; KeyboardInterrupt on Ctrl-C.)";
 
 /// A judgement CSV cell as Python: a number (None for an empty cell), or its text (an int where
 /// it is a whole number: the counts and the flag).
@@ -185,18 +192,49 @@ struct Judged {
   std::string line;
 };
 
+/// InputError for an array given as (columns, N), N = len(t) rows, where (N, columns) is meant
+/// (matrix_arg would say "expected shape (4, 4)", the row count taken from its first axis).
+void refuse_transposed(const py::object& value, const char* name, std::size_t columns,
+                       std::size_t rows) {
+  const py::tuple shape = py::module_::import("numpy").attr("shape")(value);
+  if (shape.size() != 2 || rows == columns) return;
+  const auto first = shape[0].cast<std::size_t>(), second = shape[1].cast<std::size_t>();
+  if (first == columns && second == rows)
+    throw InputError(std::string(name) + ": expected shape (" + std::to_string(rows) + ", " +
+                     std::to_string(columns) + "), N = len(t) rows, got (" + std::to_string(first) +
+                     ", " + std::to_string(second) +
+                     "): a row per time, its components across (give " + name + ".T)");
+}
+
+/// The `motion` argument: a name (str) of at most one line and no NUL, or InputError naming it.
+std::string motion_name_of(const py::object& motion) {
+  if (!py::isinstance<py::str>(motion))
+    throw InputError("flipcheck.judge: motion: expected a name (str), got " +
+                     std::string(py::str(py::type::of(motion).attr("__name__"))));
+  const std::string name = motion.cast<std::string>();
+  for (const char ch : name)
+    if (ch == '\0' || ch == '\n' || ch == '\r')
+      throw InputError(std::string("flipcheck.judge: motion: a name holds ") +
+                       (ch == '\0' ? "a NUL byte" : "a line break") + ": give it on one line");
+  return name;
+}
+
 Judged judged(const py::object& scenario_input, const py::object& t_arg, const py::object& q_arg,
               const py::object& omega_arg, const py::object& directory,
-              const std::string& motion_name) {
+              const py::object& motion_arg) {
+  const std::string motion_name = motion_name_of(motion_arg);
   const scene::Scene scene = scenario_scene(scenario_input, directory);
   const analysis::Scenario scenario = analysis::scenario_of(scene);
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
+  refuse_transposed(q_arg, "q", 4, t.size());
+  refuse_transposed(omega_arg, "omega_world", 3, t.size());
   const std::vector<double> q = matrix_arg(q_arg, "q", -1, 4);
   const std::vector<double> omega = matrix_arg(omega_arg, "omega_world", -1, 3);
   same_rows({{"t", t.size()}, {"q", q.size() / 4}, {"omega_world", omega.size() / 3}});
   CsvTable table;
   Judged out;
   {
+    const StopPoll stop = python_stop();
     py::gil_scoped_release release;
     std::vector<std::array<double, 8>> rows(t.size());
     for (std::size_t i = 0; i < t.size(); ++i)
@@ -204,7 +242,12 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
                  q[4 * i + 3], omega[3 * i], omega[3 * i + 1], omega[3 * i + 2]};
     const jobs::MotionFile motion = jobs::motion_from_rows(
         rows, jobs::OmegaFrame::world, "flipcheck.judge", scenario.dt, scenario.steps);
-    const analysis::Conformance result = analysis::judge_motion(scenario, motion.rows);
+    analysis::Conformance result;
+    try {
+      result = analysis::judge_motion(scenario, motion.rows, {}, stop);
+    } catch (const InputError& e) {
+      throw InputError(std::string("flipcheck.judge: ") + e.what());
+    }
     table = analysis::judgement_table(scenario, analysis::scenario_sha256(scenario),
                                       {{{}, motion_name, result}});
     out.pass = result.pass();
@@ -217,13 +260,13 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
 
 py::dict judge(const py::object& scenario_input, const py::object& t_arg, const py::object& q_arg,
                const py::object& omega_arg, const py::object& directory,
-               const std::string& motion_name) {
+               const py::object& motion_name) {
   return judged(scenario_input, t_arg, q_arg, omega_arg, directory, motion_name).row;
 }
 
 py::dict assert_passes(const py::object& scenario_input, const py::object& t_arg,
                        const py::object& q_arg, const py::object& omega_arg,
-                       const py::object& directory, const std::string& motion_name) {
+                       const py::object& directory, const py::object& motion_name) {
   Judged j = judged(scenario_input, t_arg, q_arg, omega_arg, directory, motion_name);
   if (!j.pass) {
     PyErr_SetString(PyExc_AssertionError, j.line.c_str());

@@ -53,11 +53,13 @@ Scenario scenario_of(const val& spec) {
   s.initial.jiggle = spec["jiggle"].as<double>();
   s.initial.seed = static_cast<std::uint64_t>(spec["seed"].as<double>());
   s.dt = spec["dt"].as<double>();
-  s.steps = static_cast<long long>(spec["steps"].as<double>());
-  if (s.initial.omega0_body.isZero() && s.initial.jiggle == 0.0)
-    throw InputError(s.name + ": flipcheck: the body is at rest: nothing to judge");
-  if (!(s.dt > 0.0) || s.steps < 1)
-    throw InputError(s.name + ": flipcheck: a scenario needs dt > 0 and at least one step");
+  const double steps = spec["steps"].as<double>();
+  if (!(std::floor(steps) == steps && steps >= 1.0 &&
+        steps <= static_cast<double>(bookspin::analysis::ScenarioLimits::max_steps)))
+    throw InputError(s.name + ": steps: must be a whole number from 1 to 10^7");
+  s.steps = static_cast<long long>(steps);
+  // Every field as every door takes it (docs/flipcheck.md, "What a scenario may be").
+  bookspin::analysis::check_scenario(s);
   return s;
 }
 

@@ -23,6 +23,14 @@ function join(dir, name) {
   return dir.endsWith("/") ? dir + name : `${dir}/${name}`;
 }
 
+/** `dir`/`name` for an output, refused (InputError) unless it names a file right inside `dir`:
+ * the scenario's name was checked by the judge (letters, digits, -, _, .), this holds it. */
+function inside(dir, name) {
+  if (!/^[A-Za-z0-9][A-Za-z0-9._-]*$/.test(name))
+    throw new InputError(`flipcheck: "${JSON.stringify(name).slice(1, -1)}" is no file name inside ${dir}`);
+  return join(dir, name);
+}
+
 /** The reason a file cannot be read, as bookspin's read_text_file() words it. */
 function readText(path, what) {
   try {
@@ -95,9 +103,11 @@ function judgeCommand(args) {
   // Every file read and judged before anything is written: a bad one is its one line.
   const judged = files.map((file) => judgeCsv(spec, readText(file, "the motion file"), { file, motion: basename(file) }));
   const name = spec.scenario;
-  const lines = judged.map((j) => j.csv.split("\n"));
-  const csv = [lines[0][0], ...lines.map((l) => l[1])].join("\n") + "\n";
-  const target = join(out, `${name}-judge.csv`);
+  // Each judgement's CSV is its header line and its row; the row may span lines (a file name
+  // holding a line break, in double quotes): everything after the header is the row.
+  const header = judged[0].csv.slice(0, judged[0].csv.indexOf("\n") + 1);
+  const csv = header + judged.map((j) => j.csv.slice(j.csv.indexOf("\n") + 1)).join("");
+  const target = inside(out, `${name}-judge.csv`);
   makeDir(out);
   writeWhole(target, csv);
   judged.forEach((j, i) => console.log(`${name} ${files[i]}: ${j.line}`));
@@ -110,8 +120,8 @@ function exportCommand(args) {
   const specs = positional.map(scenarioArg);
   for (const spec of specs) {
     const files = exportFiles(spec);
-    const json = join(out, `${spec.scenario}.json`);
-    const csv = join(out, `${spec.scenario}-exact.csv`);
+    const json = inside(out, `${spec.scenario}.json`);
+    const csv = inside(out, `${spec.scenario}-exact.csv`);
     makeDir(out);
     writeWhole(json, files.json);
     writeWhole(csv, files.csv);

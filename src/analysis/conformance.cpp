@@ -31,6 +31,7 @@ Scenario scenario_of(const scene::Scene& scene) {
   s.initial = scene.initial;
   s.dt = scene.dt;
   s.steps = static_cast<long long>(scene.frames - 1) * scene.steps_per_frame;
+  check_scenario(s);  // a name that stays inside OUT, and a run the exact motion can carry
   return s;
 }
 

@@ -24,13 +24,162 @@ std::string short_number(double value) {
 
 }  // namespace
 
+/// `text` with every byte outside printable ASCII as \xNN: a name quoted in one line.
+static std::string printable(const std::string& text) {
+  std::string out;
+  for (const char ch : text) {
+    const unsigned code = static_cast<unsigned char>(ch);
+    if (code >= 0x20 && code < 0x7f && ch != '\\') {
+      out += ch;
+      continue;
+    }
+    char escaped[8];
+    std::snprintf(escaped, sizeof escaped, "\\x%02x", code);
+    out += escaped;
+  }
+  return out;
+}
+
+std::string scenario_name_problem(const std::string& name) {
+  if (name.empty()) return "is empty";
+  if (name.size() > ScenarioLimits::max_name)
+    return "is " + std::to_string(name.size()) + " characters long (at most " +
+           std::to_string(ScenarioLimits::max_name) + ")";
+  const auto alnum = [](char ch) {
+    return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
+  };
+  if (!alnum(name.front())) return "must start with a letter or a digit";
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const char ch = name[i];
+    if (alnum(ch) || ch == '-' || ch == '_' || ch == '.') continue;
+    const unsigned code = static_cast<unsigned char>(ch);
+    char shown[16];
+    if (code < 0x20 || code >= 0x7f)
+      std::snprintf(shown, sizeof shown, "byte 0x%02x", code);
+    else
+      std::snprintf(shown, sizeof shown, "'%c'", ch);
+    return std::string("holds ") + shown + " at character " + std::to_string(i + 1) +
+           " (a name is letters, digits, '-', '_' and '.')";
+  }
+  return "";
+}
+
+void check_scenario(const Scenario& s) {
+  if (const std::string why = scenario_name_problem(s.name); !why.empty())
+    throw InputError("flipcheck: scenario name \"" + printable(s.name) + "\" " + why);
+  const auto refuse = [&s](const std::string& field, const std::string& why) {
+    throw InputError(s.name + ": " + field + ": " + why);
+  };
+  const char* axes = "xyz";
+  for (int i = 0; i < 3; ++i) {
+    const double m = s.body.moments[i];
+    if (!(std::isfinite(m) && m >= ScenarioLimits::min_moment && m <= ScenarioLimits::max_moment))
+      refuse(std::string("principal_moments[") + std::to_string(i) + "]",
+             short_number(m) + " (about body " + axes[i] +
+                 "): each must be finite, from 1e-30 to 1e30 mass·length²");
+  }
+  if (!(std::isfinite(s.body.cage.mass) && s.body.cage.mass > 0.0))
+    refuse("mass", short_number(s.body.cage.mass) + ": must be finite and > 0");
+  const Eigen::Vector3d omega0 = start_omega(s);
+  for (int i = 0; i < 3; ++i)
+    if (!(std::abs(omega0[i]) <= ScenarioLimits::max_omega))
+      refuse(std::string("omega0_body[") + std::to_string(i) + "]",
+             short_number(omega0[i]) + " is beyond ±1e6 rad per time unit");
+  if (omega0.isZero()) refuse("omega0_body", "the body is at rest: nothing to judge");
+  if (!(std::isfinite(s.dt) && s.dt > 0.0))
+    refuse("dt", short_number(s.dt) + ": must be finite and > 0");
+  if (s.steps < 1 || s.steps > ScenarioLimits::max_steps)
+    refuse("steps", std::to_string(s.steps) +
+                        ": must be from 1 to 10^7 (the exact motion is exported at every step)");
+  const double turn = omega0.norm() * s.dt * static_cast<double>(s.steps);
+  if (!(turn <= ScenarioLimits::max_turn))
+    refuse("dt", short_number(s.dt) + " over " + std::to_string(s.steps) +
+                     " steps turns the body by |ω0|·dt·steps = " + short_number(turn) +
+                     " rad: at most 1e8 (a double carries the exact motion's phase to 1e-8 "
+                     "rad there)");
+}
+
 Eigen::Vector3d start_omega(const Scenario& scenario) {
   const Eigen::Vector3d& moments = scenario.body.moments;
   return physics::initial_angular_momentum(moments, scenario.initial).cwiseQuotient(moments);
 }
 
+namespace {
+
+/// The angle (rad, 0 … π) of the rotation `q`, 2·atan2(|q_xyz|, |q_w|): well conditioned at 0
+/// and at π alike (2·asin(‖a − b‖_F/√8) loses half its digits near π, where a motion that
+/// has turned over the wrong way sits).
+double angle_of(const Eigen::Quaterniond& q) {
+  return 2.0 * std::atan2(q.vec().norm(), std::abs(q.w()));
+}
+
+/// Angle (rad) between two vectors, atan2(|a × b|, a·b): accurate near 0 and π.
+double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+/// The exact motion's turn-overs as rows every `stride` steps up to `last_step` show them.
+struct SampledExact {
+  int flips = 0;
+  std::optional<double> first_flip;
+};
+
+SampledExact sample_exact(const physics::ExactRotation& exact, int mid, double dt, long long stride,
+                          long long last_step) {
+  FlipDetector seen;
+  const double L_norm = exact.angular_momentum_norm();
+  for (long long n = 0; n <= last_step; n += stride) {
+    const double t = static_cast<double>(n) * dt;
+    seen.observe(t, exact.angular_momentum_body(t)[mid] / L_norm);
+  }
+  return {seen.count(), seen.first_flip()};
+}
+
+/// Whether `seen` shows the exact motion's turn-overs: all `flips_exact` of them, the first
+/// within `tolerance` of its time `first_exact` (time units).
+bool shows_turn_overs(const SampledExact& seen, int flips_exact,
+                      const std::optional<double>& first_exact, double tolerance) {
+  if (seen.flips != flips_exact) return false;
+  if (!first_exact || !seen.first_flip) return true;
+  return std::abs(*seen.first_flip - *first_exact) <= tolerance;
+}
+
+/// InputError for rows too far apart to show the turn-overs, naming a stride that shows them.
+[[noreturn]] void refuse_sampling(const physics::ExactRotation& exact, int mid, double dt,
+                                  long long stride, long long last_step, int flips_exact,
+                                  const SampledExact& seen,
+                                  const std::optional<double>& first_exact, double tolerance) {
+  // A stride named safe for any smaller one too: at most `tolerance` (1 % of T/2) apart, so
+  // that the first turn-over, bracketed by two rows, is placed within it; halved until the
+  // exact motion at it shows every turn-over.
+  const double safe = std::floor(tolerance / dt);
+  long long fine = std::max<long long>(1, stride / 2);
+  if (safe < static_cast<double>(fine)) fine = safe >= 1.0 ? static_cast<long long>(safe) : 1;
+  while (fine > 1 && !shows_turn_overs(sample_exact(exact, mid, dt, fine, last_step), flips_exact,
+                                       first_exact, tolerance))
+    fine = std::max<long long>(1, fine / 2);
+  std::string shown =
+      std::to_string(seen.flips) + " of its " + std::to_string(flips_exact) + " turn-overs";
+  if (seen.flips == flips_exact && seen.first_flip && first_exact)
+    shown = "its first turn-over " + short_number(std::abs(*seen.first_flip - *first_exact)) +
+            " time units off";
+  if (stride == 1)
+    throw InputError("the scenario's dt = " + short_number(dt) +
+                     " is too coarse to judge the turn-overs: its exact motion at every step "
+                     "shows " +
+                     shown + " (a scenario with a smaller dt can be judged)");
+  throw InputError("rows every " + std::to_string(stride) + " steps (" +
+                   short_number(static_cast<double>(stride) * dt) +
+                   " time units) are too far apart to judge the turn-overs: the exact motion "
+                   "at these rows shows " +
+                   shown + "; write a row at least every " + std::to_string(fine) + " steps (" +
+                   short_number(static_cast<double>(fine) * dt) + " time units)");
+}
+
+}  // namespace
+
 Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& motion,
-                         const ConformanceThresholds& limits) {
+                         const ConformanceThresholds& limits, const StopPoll& stop) {
   BOOKSPIN_ASSERT(!motion.empty() && motion.front().step == 0);
   // The physics first (start, exact motion, the rows' diagnostics), then the measures of
   // analysis/motion.hpp over them.
@@ -39,6 +188,7 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
   const physics::ExactRotation exact(moments, omega0);
   const int mid = physics::principal_order(moments)[1];  // the intermediate axis
   const double I2 = moments[mid];
+  const Eigen::Vector3d L_exact_world = exact.angular_momentum_world();
 
   Conformance c;
   c.stride = motion.size() > 1 ? motion[1].step : 1;
@@ -46,15 +196,15 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
   c.complete = c.last_step >= s.steps;
   c.half_period = exact.flip_period();
   // The motion's own diagnostics from its q and ω (docs/physics.md §9): L = R I ω in the world.
-  const auto diagnostics_of = [&](const MotionSample& row) {
-    const Eigen::Matrix3d R = row.q.normalized().toRotationMatrix();
+  const auto diagnostics_of = [&](const MotionSample& row, const Eigen::Matrix3d& R) {
     const Eigen::Vector3d L = R * moments.cwiseProduct(row.omega_body);
     physics::Diagnostics d =
         physics::rigid_diagnostics(s.body, R, L, static_cast<double>(row.step) * s.dt);
     d.omega_body = row.omega_body;
     return d;
   };
-  const physics::Diagnostics d0 = diagnostics_of(motion.front());
+  const physics::Diagnostics d0 =
+      diagnostics_of(motion.front(), motion.front().q.normalized().toRotationMatrix());
   c.start_error = (motion.front().omega_body - omega0).norm() / omega0.norm();
   const double E0 = d0.energy_total, L0 = d0.L.norm();
   // The spin axis: the body axis nearest L at the start (largest |L_b| component).
@@ -66,13 +216,30 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
   const double r0 = ratio(d0);
   bool exact_tumbles = false;
 
-  FlipDetector flips;
-  for (const MotionSample& row : motion) {
+  FlipDetector flips, exact_at_rows;
+  for (std::size_t i = 0; i < motion.size(); ++i) {
+    if (i % 4096 == 4095) stop_if_asked(stop, "flipcheck judge rows");
+    const MotionSample& row = motion[i];
     const double t = static_cast<double>(row.step) * s.dt;
-    const physics::Diagnostics d = row.step == 0 ? d0 : diagnostics_of(row);
-    const Eigen::Vector3d L_exact = exact.angular_momentum_body(t);
+    const Eigen::Matrix3d R = row.q.normalized().toRotationMatrix();
+    const physics::Diagnostics d = i == 0 ? d0 : diagnostics_of(row, R);
+    const physics::ExactState e = exact.state(t);
+    // The whole motion against the exact one: the orientation and L's direction at every row.
+    const Eigen::Quaterniond q_exact(e.q[0], e.q[1], e.q[2], e.q[3]);
+    const Eigen::Matrix3d R_exact = q_exact.toRotationMatrix();
+    if (const double angle = angle_of(q_exact.conjugate() * row.q.normalized());
+        angle > c.orientation_error || !std::isfinite(angle)) {
+      c.orientation_error = angle;
+      c.orientation_error_step = row.step;
+    }
+    if (const double angle = angle_between(d.L, L_exact_world); angle > c.L_direction_error) {
+      c.L_direction_error = angle;
+      c.L_direction_error_step = row.step;
+    }
+    const Eigen::Vector3d L_exact = R_exact.transpose() * e.L;  // body frame
     if (std::abs(L_exact[c.spin_axis]) < kTumbleCosine * exact.angular_momentum_norm())
       exact_tumbles = true;
+    exact_at_rows.observe(t, L_exact[mid] / exact.angular_momentum_norm());
     c.energy_drift = std::max(c.energy_drift, std::abs(d.energy_total / E0 - 1.0));
     c.L_drift = std::max(c.L_drift, std::abs(d.L.norm() / L0 - 1.0));
     flips.observe(t, d.cos_axis_L[mid]);
@@ -90,29 +257,57 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
     c.first_flip_exact = exact_first_flip(exact, mid);
   if (c.first_flip && c.first_flip_exact)
     c.first_flip_error = std::abs(*c.first_flip / *c.first_flip_exact - 1.0);
-  const Eigen::Matrix3d R_last = motion.back().q.normalized().toRotationMatrix();
-  c.orientation_error = rotation_angle_between(exact.orientation(t_last), R_last);
+  // Rows too far apart to show the exact motion's own turn-overs cannot be counted: refused.
+  // A turn-over the span ends in the middle of (ω about the axis past 0, the cosine not yet
+  // past the margin) is not one at any spacing: the count is the exact motion's at every step.
+  const double tolerance = limits.sampling_first_flip * c.half_period;
+  const SampledExact seen{exact_at_rows.count(), exact_at_rows.first_flip()};
+  std::optional<double> first_in_span = c.first_flip_exact;
+  if (first_in_span && *first_in_span > t_last) first_in_span.reset();
+  if (!shows_turn_overs(seen, c.flips_exact, first_in_span, tolerance)) {
+    if (c.stride > 1) {
+      const SampledExact every = sample_exact(exact, mid, s.dt, 1, c.last_step);
+      c.flips_exact = every.flips;
+    } else {
+      c.flips_exact = seen.flips;
+    }
+    if (!shows_turn_overs(seen, c.flips_exact, first_in_span, tolerance))
+      refuse_sampling(exact, mid, s.dt, c.stride, c.last_step, c.flips_exact, seen, first_in_span,
+                      tolerance);
+  }
 
   auto& f = c.failures;
   if (!c.complete)
     f.push_back("ends at step " + std::to_string(c.last_step) + " of " + std::to_string(s.steps));
   if (c.start_error > limits.start)
-    f.push_back("starts " + short_number(c.start_error) + " off the scenario's omega0");
+    f.push_back("starts " + short_number(c.start_error) + " off the scenario's omega0 (limit " +
+                short_number(limits.start) + ")");
   if (c.energy_drift > limits.energy_drift)
-    f.push_back("energy drift " + short_number(c.energy_drift));
-  if (c.L_drift > limits.L_drift) f.push_back("|L| drift " + short_number(c.L_drift));
+    f.push_back("energy drift " + short_number(c.energy_drift) + " (limit " +
+                short_number(limits.energy_drift) + ")");
+  if (c.L_drift > limits.L_drift)
+    f.push_back("|L| drift " + short_number(c.L_drift) + " (limit " + short_number(limits.L_drift) +
+                ")");
+  if (!(c.L_direction_error <= limits.L_direction))
+    f.push_back("L turned " + short_number(c.L_direction_error) + " rad at step " +
+                std::to_string(c.L_direction_error_step) + " (limit " +
+                short_number(limits.L_direction) + ")");
   if (c.flips != c.flips_exact)
     f.push_back(std::to_string(c.flips) + " turn-overs, exact " + std::to_string(c.flips_exact));
   if (c.first_flip && c.first_flip_exact &&
       std::abs(*c.first_flip - *c.first_flip_exact) > limits.first_flip * c.half_period)
     f.push_back("first turn-over " + short_number(*c.first_flip - *c.first_flip_exact) +
-                " time units off");
-  if (c.orientation_error > limits.orientation_error)
-    f.push_back("orientation error " + short_number(c.orientation_error) + " rad");
+                " time units off (limit " + short_number(limits.first_flip * c.half_period) + ", " +
+                short_number(100.0 * limits.first_flip) + " % of T/2)");
+  if (!(c.orientation_error <= limits.orientation_error))
+    f.push_back("orientation error " + short_number(c.orientation_error) + " rad at step " +
+                std::to_string(c.orientation_error_step) + " (limit " +
+                short_number(limits.orientation_error) + ")");
   if (c.stable_spin && c.tumble_time) f.push_back("tumbles at t = " + short_number(*c.tumble_time));
   if (c.stable_spin && c.separatrix_approach > limits.separatrix_approach)
     f.push_back("r = 2E·I2/L² " + short_number(100.0 * c.separatrix_approach) +
-                " % of the way to the separatrix");
+                " % of the way to the separatrix (limit " +
+                short_number(100.0 * limits.separatrix_approach) + " %)");
   return c;
 }
 
@@ -122,8 +317,8 @@ std::string verdict_line(const Conformance& c) {
   if (!c.pass()) line += ")";
   line += ": turn-overs " + std::to_string(c.flips) + "/" + std::to_string(c.flips_exact) +
           ", energy drift " + short_number(c.energy_drift) + ", |L| drift " +
-          short_number(c.L_drift) + ", orientation error " + short_number(c.orientation_error) +
-          " rad";
+          short_number(c.L_drift) + ", L direction " + short_number(c.L_direction_error) +
+          " rad, orientation error " + short_number(c.orientation_error) + " rad";
   if (c.stable_spin)
     line += c.tumble_time ? ", tumbles at t = " + short_number(*c.tumble_time) : ", no tumble";
   return line;
@@ -146,6 +341,9 @@ const std::vector<std::string>& judgement_columns() {
                                                    "first_flip_exact",
                                                    "first_flip_error",
                                                    "orientation_error",
+                                                   "orientation_error_step",
+                                                   "L_direction_error",
+                                                   "L_direction_error_step",
                                                    "stable_spin",
                                                    "tumble_time",
                                                    "separatrix_ratio_drift",
@@ -184,6 +382,9 @@ CsvTable judgement_table(const Scenario& scenario, const std::string& scenario_s
                           shortest_cell(c.first_flip_exact),
                           shortest_cell(c.first_flip_error),
                           shortest_cell(c.orientation_error),
+                          std::to_string(c.orientation_error_step),
+                          shortest_cell(c.L_direction_error),
+                          std::to_string(c.L_direction_error_step),
                           std::string(c.stable_spin ? "1" : "0"),
                           shortest_cell(c.stable_spin ? c.tumble_time : std::nullopt),
                           if_stable(c.separatrix_ratio_drift),
@@ -206,6 +407,14 @@ std::string judge_rules() {
   rule("L_drift", limits.L_drift);
   rule("first_flip", limits.first_flip);
   rule("orientation_error", limits.orientation_error);
+  rule("orientation_error_over", 1.0);  // every row, not the last alone
+  rule("L_direction", limits.L_direction);
+  rule("sampling_first_flip", limits.sampling_first_flip);
+  rule("max_steps", static_cast<double>(ScenarioLimits::max_steps));
+  rule("max_omega", ScenarioLimits::max_omega);
+  rule("min_moment", ScenarioLimits::min_moment);
+  rule("max_moment", ScenarioLimits::max_moment);
+  rule("max_turn", ScenarioLimits::max_turn);
   rule("separatrix_approach", limits.separatrix_approach);
   rule("tumble_cosine", kTumbleCosine);
   rule("flip_margin", FlipDetector::kMargin);

@@ -7,12 +7,14 @@
 // parses the file's text); the scenario of a scene file, and a method run from its start, are
 // conformance.hpp's.
 #include <Eigen/Geometry>
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "common/csv_writer.hpp"
+#include "common/stop.hpp"
 #include "physics/body.hpp"
 #include "physics/simulator.hpp"
 
@@ -26,6 +28,25 @@ struct Scenario {
   double dt = 0.0;                ///< time units
   long long steps = 0;            ///< steps of dt
 };
+
+/// The limits of a scenario (docs/flipcheck.md, "What a scenario may be"), each reasoned there.
+struct ScenarioLimits {
+  static constexpr long long max_steps = 10'000'000;  ///< the exact motion at every step
+  static constexpr double max_omega = 1e6;            ///< rad per time unit, each component
+  static constexpr double min_moment = 1e-30, max_moment = 1e30;  ///< mass·length²
+  static constexpr double max_turn = 1e8;       ///< |ω0|·dt·steps, rad: the run's whole spin
+  static constexpr std::size_t max_name = 128;  ///< characters
+};
+
+/// Why `name` is no scenario name, or "": a name is 1 to 128 letters, digits, '-', '_' and '.',
+/// the first a letter or a digit (so that OUT/<name>.json and OUT/<name>/ stay inside OUT).
+std::string scenario_name_problem(const std::string& name);
+
+/// Throws InputError "NAME: FIELD: reason" for the first field of `scenario` that no scenario
+/// may have (docs/flipcheck.md, "What a scenario may be"): a bad name, a moment or the mass not
+/// finite and positive or outside ScenarioLimits, ω0 not finite, beyond ±1e6 or at rest, dt not
+/// finite and positive, steps outside 1 … 10^7, a run turning by more than 10^8 rad.
+void check_scenario(const Scenario& scenario);
 
 /// The jiggled start every model begins from: ω0 = I_body⁻¹ L0, L0 = I_body ω0 + the jiggle
 /// (docs/physics.md §5); body frame (= world frame at t = 0, q0 = identity), rad per time unit.
@@ -44,8 +65,13 @@ struct ConformanceThresholds {
   double energy_drift = 1e-2;        ///< max |E/E0 − 1|
   double L_drift = 1e-2;             ///< max ||L|/|L0| − 1|
   double first_flip = 0.05;          ///< |first − exact first| as a fraction of T/2
-  double orientation_error = 0.1;    ///< rad, at the end
+  double orientation_error = 0.1;    ///< rad, the largest over the rows
+  double L_direction = 1e-2;         ///< rad: L (world) against the exact L, over the rows
   double separatrix_approach = 0.1;  ///< stable spins: fraction of the way to the separatrix
+  /// The rows must show the exact motion's turn-overs: the exact motion sampled at them counts
+  /// every one and puts the first within this fraction of T/2 of its time (a fifth of
+  /// first_flip), or the motion is refused as too coarse to judge.
+  double sampling_first_flip = 0.01;
 };
 
 /// |cos(spin axis, L)| below which a spin has tumbled (60° from L), for the motion's tumble
@@ -66,7 +92,10 @@ struct Conformance {
   std::optional<double> first_flip_exact;  ///< exact_first_flip, when the exact motion turns over
   std::optional<double> first_flip_error;  ///< |first/exact − 1| (the accuracy table's)
   double half_period = 0.0;                ///< exact T/2 (infinite for steady motion)
-  double orientation_error = 0.0;          ///< rad, at the last row, against the exact R
+  double orientation_error = 0.0;          ///< rad, the largest over the rows, against the exact R
+  long long orientation_error_step = 0;    ///< the row (its step) where it is largest
+  double L_direction_error = 0.0;          ///< rad, the largest angle of L (world) from exact L
+  long long L_direction_error_step = 0;    ///< the row (its step) where it is largest
   bool stable_spin = false;                ///< the exact motion stays a spin about axis 1 or 3
   int spin_axis = 0;                       ///< body axis nearest L at t = 0
   std::optional<double> tumble_time;       ///< first |cos(spin axis, L)| < 0.5
@@ -80,9 +109,13 @@ struct Conformance {
 /// the exact motion of `scenario` (physics::ExactRotation from start_omega). Every measure over
 /// the rows given; the motion's E, |L| and the cosines from q and ω by physics::
 /// rigid_diagnostics (docs/physics.md §9), as the engines' diagnostics are. An internal error
-/// for an empty motion or one not starting at step 0 (the reader checks both).
+/// for an empty motion or one not starting at step 0 (the reader checks both). Throws
+/// InputError "rows every K steps …" when the rows are too far apart to show the exact motion's
+/// turn-overs (ConformanceThresholds::sampling_first_flip: a coarse motion is refused, never
+/// judged "0 turn-overs"), naming a stride that shows them. `stop` is asked every 4096 rows
+/// ("flipcheck judge rows") and throws Interrupted.
 Conformance judge_motion(const Scenario& scenario, const std::vector<MotionSample>& motion,
-                         const ConformanceThresholds& thresholds = {});
+                         const ConformanceThresholds& thresholds = {}, const StopPoll& stop = {});
 
 /// One line: "PASS" or "FAIL (reasons)", then the measures.
 std::string verdict_line(const Conformance& c);

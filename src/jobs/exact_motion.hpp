@@ -70,11 +70,12 @@ ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& sto
 CsvTable exact_motion_csv(const ExactMotion& motion);
 
 /// The bytes of the two files `flipcheck export` writes and the explorer page offers for
-/// download (web/judge_bindings.cpp): one writer of each. No I/O.
+/// download (web/judge_bindings.cpp): one writer of each. No I/O. `stop` is asked every 4096
+/// rows of the CSV and throws Interrupted.
 struct ExportFiles {
   std::string json;  ///< OUT/<scenario>.json: analysis::scenario_file
   std::string csv;   ///< OUT/<scenario>-exact.csv: exact_motion_csv
 };
-ExportFiles export_files(const ExactMotion& motion);
+ExportFiles export_files(const ExactMotion& motion, const StopPoll& stop = {});
 
 }  // namespace bookspin::jobs

@@ -45,6 +45,27 @@ bool finite_number(std::string_view cell, double& out) {
   return true;
 }
 
+/// The header's names: cells_of(line), each without the double quotes a spreadsheet or R's
+/// write.csv puts around it ("t","qw",…).
+std::vector<std::string_view> header_of(std::string_view line) {
+  std::vector<std::string_view> names = cells_of(line);
+  for (std::string_view& name : names)
+    if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
+      name = trimmed(name.substr(1, name.size() - 2));
+  return names;
+}
+
+/// A column the motion is read from (t, q, ω in either frame, either spelling) that the header
+/// names twice, or "".
+std::string repeated_column(const std::vector<std::string_view>& header) {
+  static constexpr std::string_view kRead[] = {
+      "t",  "qw", "qx", "qy",      "qz",      "q_w",     "q_x",      "q_y",      "q_z",
+      "wx", "wy", "wz", "omega_x", "omega_y", "omega_z", "wx_world", "wy_world", "wz_world"};
+  for (const std::string_view name : kRead)
+    if (std::count(header.begin(), header.end(), name) > 1) return std::string(name);
+  return "";
+}
+
 /// The index of the first of `names` in `header`, or nullopt.
 std::optional<std::size_t> column(const std::vector<std::string_view>& header,
                                   std::initializer_list<std::string_view> names) {
@@ -118,7 +139,10 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
     ++line_number;
     if (line.empty() || line.front() == '#') continue;
     if (header.empty()) {
-      header = cells_of(line);
+      header = header_of(line);
+      if (const std::string twice = repeated_column(header); !twice.empty())
+        throw InputError(file, line_number, twice,
+                         "the column " + twice + " appears twice in the header: which is meant?");
       const auto need = [&](std::initializer_list<std::string_view> options,
                             std::string_view what) {
         const auto i = column(header, options);

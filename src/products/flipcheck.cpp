@@ -49,15 +49,22 @@ std::vector<analysis::JudgedMotion> judge_all(const scene::Scene& scene,
   }
   // A judgement is tens of milliseconds (the exact motion at every row): asked between them,
   // a stop is answered within a second (docs/outputs.md, "Signals").
+  // A motion too coarse to judge is refused naming its file (or method).
+  const auto judge_one = [&](const std::string& what,
+                             const std::vector<analysis::MotionSample>& rows) {
+    stop_if_asked(stop, "flipcheck judge");
+    try {
+      return analysis::judge_motion(scenario, rows, {}, stop);
+    } catch (const InputError& e) {
+      throw InputError(what + ": " + e.what());
+    }
+  };
   std::vector<analysis::JudgedMotion> judged;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    stop_if_asked(stop, "flipcheck judge");
-    judged.push_back({files[i], names[i], analysis::judge_motion(scenario, read[i].rows)});
-  }
-  for (std::size_t i = 0; i < methods.size(); ++i) {
-    stop_if_asked(stop, "flipcheck judge");
-    judged.push_back({{}, methods[i].label, analysis::judge_motion(scenario, runs[i])});
-  }
+  for (std::size_t i = 0; i < files.size(); ++i)
+    judged.push_back({files[i], names[i], judge_one(files[i].string(), read[i].rows)});
+  for (std::size_t i = 0; i < methods.size(); ++i)
+    judged.push_back(
+        {{}, methods[i].label, judge_one(scenario.name + ": " + methods[i].label, runs[i])});
   return judged;
 }
 
@@ -93,7 +100,8 @@ cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
                                     /*all_or_nothing=*/true};
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
-    const jobs::ExportFiles texts = jobs::export_files(motion);
+    const jobs::ExportFiles texts = jobs::export_files(motion, job.stop);
+    stop_if_asked(job.stop, "flipcheck export write");
     output::prepare_output_dir(layout.json.parent_path());
     output::StagedFiles files;
     files.text(layout.json, texts.json);
@@ -156,6 +164,7 @@ std::string league_cell(const analysis::Conformance& c) {
     t << *c.tumble_time;
     return cell + ", tumbles at t = " + t.str();
   }
+  // "no turn-over" only where neither turns over: 0/6 is an engine that never flips.
   if (c.flips == 0 && c.flips_exact == 0) return cell + ", no turn-over";
   return cell + " " + std::to_string(c.flips) + "/" + std::to_string(c.flips_exact);
 }

@@ -83,6 +83,30 @@ TEST_P(LeagueSignal, StopsBetweenJudgementsAndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(Signals, LeagueSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
                          [](const auto& info) { return signal_name(info.param); });
 
+// `flipcheck export` of the box at 20000 steps a frame (10^6 steps): the exact motion's rows
+// and then its CSV, seconds of text, are each asked every 4096 rows. A signal while the CSV is
+// spelled stops it within the second with 128 + signal, the previous export as it was (it ran on
+// for 1.9 s, exited 0 and replaced both files, when only the exact motion's loop asked).
+class FlipcheckExportSignal : public ::testing::TestWithParam<int> {};
+
+TEST_P(FlipcheckExportSignal, StopsWhileTheExactMotionIsWrittenAndKeepsThePreviousFiles) {
+  const ScratchDir dir;
+  const fs::path out = dir.path() / "out";
+  const std::string scenario =
+      (fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck" / "mujoco-test-box.toml").string();
+  const CliResult first = run_bookspin("flipcheck export " + scenario + " -o " + out.string());
+  ASSERT_EQ(first.status, 0) << first.output;
+  const auto before = snapshot(out);
+  ASSERT_EQ(before.size(), 4u);  // the JSON, the CSV, the scenario's folder and its manifest
+  for (const char* stage : {"flipcheck exact motion", "flipcheck export csv"})
+    expect_stopped_cleanly(words({"flipcheck", "export", scenario, "--force", "--set",
+                                  "time.steps_per_frame=20000", "-o", out.string()}),
+                           kReport, stage, GetParam(), out, before);
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, FlipcheckExportSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
+                         [](const auto& info) { return signal_name(info.param); });
+
 // The export's frame loop polls every frame: a signal in a long export stops it before the
 // file is written, and the previous .glb and its manifest stay. The second run is --force: an
 // export is cached, and this one must reach its frames whatever the manifest says.

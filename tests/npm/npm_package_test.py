@@ -14,6 +14,8 @@ network; there
   shorter scenarios: `npx flipcheck judge` of its motion files as the command line's judge;
 - `npx flipcheck export` writes the command's scenario JSON byte for byte and its exact motion
   to 1e-12;
+- a seeded property of the judge at this door (tests/npm/judge_property.mjs) and a scenario JSON
+  fuzzer (fields missing, mistyped, out of range or hostile: one line, exit 2, nothing outside -o);
 - bad input: the command line's one line (an Error's message in the API, on stderr with exit
   status 2 from npx), and an unknown scenario exit 2.
 
@@ -100,6 +102,84 @@ def error_line(stderr, prefix):
     if len(lines) != 1:
         fail(f"expected one line starting {prefix!r}: {stderr}")
     return lines[0][len(prefix):]
+
+
+DELETE = object()
+# (field, value, what the one line must hold; None: taken as written, judged)
+HOSTILE = [
+    ("scenario", DELETE, "scenario: missing"), ("scenario", 3, "scenario: expected a name"),
+    ("scenario", "../escaped", "scenario name \"../escaped\""),
+    ("scenario", "a/b", "scenario name"), ("scenario", "a\u0000b", "byte 0x00"),
+    ("scenario", "a\nb", "byte 0x0a"), ("scenario", "..", "scenario name"),
+    ("principal_moments", DELETE, "principal_moments: missing"),
+    ("principal_moments", [1, 2], "principal_moments: expected an array of 3 numbers, got 2"),
+    ("principal_moments", "1,2,3", "principal_moments: expected an array of 3 numbers"),
+    ("principal_moments", [1, None, 3], "principal_moments[1]: expected a number"),
+    ("principal_moments", [1, 0, 3], "principal_moments[1]"),
+    ("mass", DELETE, "mass: missing"), ("mass", -1, "mass: -1"), ("mass", "1", "mass: expected a number"),
+    ("q0", [0, 1, 0, 0], "q0: (0, 1, 0, 0): every scenario starts at the identity"),
+    ("q0", [1, 0], "q0: expected an array of 4 numbers"),
+    ("omega0_world", [9, 9, 9], "omega0_world: (9, 9, 9) is not omega0_body"),
+    ("omega0_body", DELETE, None),  # omega0_world alone is the start: judged
+    ("units", DELETE, None), ("q0", [-1, 0, 0, 0], None),  # the identity either sign
+    ("omega0_body", [1e200, 2, 3], "omega0_body[0]: 1e+200 is beyond"),
+    ("omega0_body", [0, 0, 0], "the body is at rest"),
+    ("dt", 1e300, "dt: 1e+300 over 500 steps"), ("dt", 0, "dt: 0"), ("dt", "0.01", "dt: expected a number"),
+    ("dt", DELETE, "dt: missing"),
+    ("steps", 2.5, "steps: 2.5 is not a whole number"), ("steps", 1e12, "steps: 1000000000000 must be"),
+    ("steps", 2e7, "steps: 20000000 must be"), ("steps", -3, "steps: -3 must be"),
+    ("steps", DELETE, "steps: missing"),
+]
+
+
+def fuzz_scenarios(npx, env, project, tmp, source):
+    base = json.loads((project / "node_modules" / "flipcheck" / "scenarios" /
+                       "mujoco-test-box.json").read_text())
+    room = tmp / "fuzz"
+    room.mkdir()
+    exact = room / "exact"
+    run(npx + ["export", "mujoco-test-box", "-o", exact], env, cwd=project)
+    motion = exact / "mujoco-test-box-exact.csv"
+    # The stock scenario as a file, then with the fields it may have written its own way.
+    for k, (field, value, said) in enumerate([(None, None, None)] + HOSTILE):
+        spec = dict(base)
+        if field is not None:
+            if value is DELETE:
+                del spec[field]
+            else:
+                spec[field] = value
+                if field == "omega0_body":  # the start in both frames, as export writes it
+                    spec["omega0_world"] = value
+        file = room / f"case{k}.json"
+        file.write_text(json.dumps(spec))
+        out = room / f"out{k}"
+        for command in (["export", file, "-o", out], ["judge", file, motion, "-o", out]):
+            done = run(npx + command, env, cwd=project, expect=0 if said is None else 2)
+            if said is None:
+                continue
+            lines = done.stderr.splitlines()
+            if len(lines) != 1 or not lines[0].startswith("flipcheck: error: ") or said not in lines[0]:
+                fail(f"{field} = {value!r}: npx {command[0]} said {done.stderr!r}, expected one "
+                     f"line holding {said!r}")
+            if out.exists():
+                fail(f"{field} = {value!r}: npx {command[0]} wrote {sorted(out.rglob('*'))}")
+        outside = sorted(p.name for p in room.iterdir()
+                         if not re.fullmatch(r"case\d+\.json|out\d+|exact", p.name))
+        outside += sorted(p.name for p in tmp.iterdir() if "escaped" in p.name)
+        if outside:
+            fail(f"{field} = {value!r}: written outside -o: {outside}")
+    print(f"scenario JSON fuzzer: {len(HOSTILE)} fields changed, each one line and exit 2 or judged")
+    # A motion file whose name holds a line break: one row of the judgement CSV, its name
+    # whole in its cell (the rows ran together).
+    odd = room / "two\nlines.csv"
+    shutil.copy(motion, odd)
+    run(npx + ["judge", "mujoco-test-box", odd, motion, "-o", room / "odd"], env, cwd=project)
+    rows = read_csv((room / "odd" / "mujoco-test-box-judge.csv").read_text())
+    if [r["motion"] for r in rows] != ["two\nlines.csv", motion.name] or \
+            [r["verdict"] for r in rows] != ["pass", "pass"]:
+        fail(f"a name with a line break: the judgement CSV reads {rows}")
+    shutil.rmtree(room / "odd")
+    odd.unlink()
 
 
 def main(bookspin, source, build):
@@ -280,6 +360,19 @@ def main(bookspin, source, build):
             fail(f"scenario() of an unknown name threw {result['errors']['scenario']!r}")
         run(npx + ["judge", "no-such-scenario", bad], env, cwd=project, expect=2)
         print("bad input: the command line's one line, exit 2")
+
+        # A scenario JSON fuzzer (docs/flipcheck.md, "What a scenario may be"): the carried box
+        # scenario with a field missing, mistyped, out of range or hostile, through npx export
+        # and judge: exit 2 and one line naming the field, nothing written, and nothing ever
+        # outside -o; the fields as written, unchanged, are judged.
+        fuzz_scenarios(npx, env, project, tmp, source)
+
+        # A seeded property of the judge through the package's judge() (tests/npm/judge_property.mjs).
+        shutil.copy(source / "tests" / "npm" / "judge_property.mjs", project)
+        prop = run(["node", "judge_property.mjs"], env, cwd=project)
+        if not prop.stdout.rstrip().endswith("PASS"):
+            fail(f"judge_property.mjs:\n{prop.stdout}{prop.stderr}")
+        print(f"the judge's property at the npm door: {len(prop.stdout.splitlines()) - 1} random scenarios")
     print(f"PASS: {tgz.name} ({tgz.stat().st_size} bytes)")
 
 

@@ -104,6 +104,7 @@ TEST(Flipcheck, TheJudgementIsARowPerMotionAndIsRemadeWhenAMotionChanges) {
   EXPECT_EQ(csv[0],
             "scenario,motion,verdict,stride,last_step,start_error,energy_drift,L_drift,flips,"
             "flips_exact,first_flip,first_flip_exact,first_flip_error,orientation_error,"
+            "orientation_error_step,L_direction_error,L_direction_error_step,"
             "stable_spin,tumble_time,separatrix_ratio_drift,separatrix_approach,failures,"
             "version,scenario_sha256");
   EXPECT_EQ(csv[1].substr(0, 53), "mujoco-test-box,mujoco-test-box-exact.csv,pass,1,500,");
@@ -240,6 +241,31 @@ TEST(Flipcheck, TheLeagueGivesEachFileToItsScenarioARowPerMotion) {
         << e.what();
   }
   EXPECT_FALSE(fs::exists(dir / "refused"));
+}
+
+// A league cell reads "no turn-over" only where neither the motion nor the exact one turns
+// over: an engine that never flips where the exact motion flips six times (Bullet without its
+// gyroscopic term) is "fail 0/6"; the exact motion of a stable spin is "pass, no turn-over".
+TEST(Flipcheck, ALeagueCellSaysNoTurnOverOnlyWhereBothCountsAreZero) {
+  test::ScratchDir dir;
+  const fs::path source = fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck";
+  FlipcheckLeagueJob job;
+  const scene::Scene spin = scene::parse_scene(source / "symmetric-top.toml");
+  make_flipcheck_export({spin, dir / "exact", {}, {}});
+  job.scenes = {scene::parse_scene(source / "book-intermediate-0.2.toml"), spin};
+  job.motions = {dir / "exact" / "symmetric-top-exact.csv"};
+  job.methods = analysis::parse_methods("bullet:none");
+  job.out_dir = dir / "out";
+  make_flipcheck_league(job);
+  const std::string html = test::read_file(flipcheck_league_layout(dir / "out").html);
+  const std::size_t row = html.find("<tr><th>bullet none</th>");
+  ASSERT_NE(row, std::string::npos) << html;
+  const std::string cells = html.substr(row, html.find("</tr>", row) - row);
+  EXPECT_NE(cells.find("<td class=\"fail\">fail 0/6<br>"), std::string::npos) << cells;
+  EXPECT_NE(html.find("<tr><th>exact</th><td class=\"none\">not run</td><td class=\"pass\">pass, "
+                      "no turn-over</td>"),
+            std::string::npos)
+      << html;
 }
 
 /// The InputError `job` raises, or "".

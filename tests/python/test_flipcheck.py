@@ -7,19 +7,23 @@ import json
 import math
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 
 import numpy as np
 import pytest
 
-from conftest import SCENARIO_DIR, SOURCE_DIR, cli_error_line, numbers, read_csv, run_cli, write_motion_csv
+from conftest import (SCENARIO_DIR, SOURCE_DIR, cli_error_line, interrupted_child, numbers, read_csv,
+                      run_cli, write_motion_csv)
 
 SCENARIOS = sorted(p.stem for p in SCENARIO_DIR.glob("*.toml"))
 NUMERIC = ("start_error", "energy_drift", "L_drift", "first_flip", "first_flip_exact",
-           "first_flip_error", "orientation_error", "tumble_time", "separatrix_ratio_drift",
+           "first_flip_error", "orientation_error", "L_direction_error", "tumble_time",
+           "separatrix_ratio_drift",
            "separatrix_approach")
-WHOLE = ("stride", "last_step", "flips", "flips_exact", "stable_spin")
+WHOLE = ("stride", "last_step", "flips", "flips_exact", "stable_spin", "orientation_error_step",
+         "L_direction_error_step")
 
 
 def test_scenarios_are_the_folders_files(bookspin, tmp_path):
@@ -264,3 +268,143 @@ def test_judge_equals_the_command_line_on_the_engines_motions(bookspin, tmp_path
         q = np.stack([numbers(columns[c]) for c in ("qw", "qx", "qy", "qz")], axis=1)
         w = np.stack([numbers(columns[c]) for c in ("wx_world", "wy_world", "wz_world")], axis=1)
         assert_same_judgement(bookspin.flipcheck.judge(name, t, q, w), cli)
+
+
+def test_the_whole_motion_is_judged_and_coarse_rows_are_refused(bookspin):
+    """The exact motion turned 90° about world z between its ends fails on its orientation and
+    L's direction, each failure with its limit; written every 1000th step it is refused as too
+    coarse (never "0 turn-overs"), and every 50th step passes."""
+    name = "book-intermediate-0.05"
+    _, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"], arrays["q"].copy(), arrays["omega_world"].copy()
+    c, s = math.cos(math.pi / 4), math.sin(math.pi / 4)  # q_turn = (c, 0, 0, s): 90° about z
+    inner = slice(1, len(t) - 1)
+    qw, qx, qy, qz = q[inner].T.copy()
+    q[inner] = np.stack([c * qw - s * qz, c * qx - s * qy, c * qy + s * qx, c * qz + s * qw], axis=1)
+    wx, wy = w[inner, 0].copy(), w[inner, 1].copy()
+    w[inner, 0], w[inner, 1] = -wy, wx
+    judged = bookspin.flipcheck.judge(name, t, q, w)
+    assert judged["verdict"] == "fail"
+    assert judged["orientation_error"] == pytest.approx(math.pi / 2, abs=1e-9)
+    assert judged["L_direction_error"] == pytest.approx(math.pi / 2, abs=1e-6)
+    with pytest.raises(AssertionError) as raised:
+        bookspin.flipcheck.assert_passes(name, t, q, w)
+    assert re.search(r"orientation error 1.57 rad at step \d+ \(limit 0.1\)", str(raised.value))
+    assert "(limit 0.01)" in str(raised.value)
+    t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
+    with pytest.raises(bookspin.Error, match="rows every 1000 steps .* too far apart"):
+        bookspin.flipcheck.judge(name, t[::1000], q[::1000], w[::1000])
+    assert bookspin.flipcheck.judge(name, t[::50], q[::50], w[::50])["verdict"] == "pass"
+
+
+def test_bad_arguments_raise_bookspin_error_naming_them(bookspin, tmp_path):
+    name = "mujoco-test-box"
+    _, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
+    with pytest.raises(bookspin.Error, match="motion: expected a name \\(str\\), got int"):
+        bookspin.flipcheck.judge(name, t, q, w, motion=3)
+    with pytest.raises(bookspin.Error, match="motion: a name holds a NUL byte"):
+        bookspin.flipcheck.judge(name, t, q, w, motion="a\0b")
+    with pytest.raises(bookspin.Error, match=r"q: expected shape \(501, 4\), N = len\(t\) rows, "
+                                              r"got \(4, 501\).*give q.T"):
+        bookspin.flipcheck.judge(name, t, q.T, w)
+    with pytest.raises(bookspin.Error, match=r"omega_world: expected shape \(501, 3\)"):
+        bookspin.flipcheck.judge(name, t, q, w.T)
+    # a scene at its limits: 99999 frames of 100000 steps (it gave "exact -2147483647")
+    huge = tmp_path / "huge.toml"
+    huge.write_text((SCENARIO_DIR / f"{name}.toml").read_text().replace("frames = 51", "frames = 100000")
+                    .replace("steps_per_frame = 10", "steps_per_frame = 100000"))
+    with pytest.raises(bookspin.Error, match=r"steps: 9999900000: must be from 1 to 10\^7"):
+        bookspin.flipcheck.judge(huge, t, q, w)
+    with pytest.raises(bookspin.Error, match="scenario: holds a NUL byte at character 8"):
+        bookspin.flipcheck.judge("mujoco-\0test-box", t, q, w)
+
+
+def test_ctrl_c_stops_a_long_judgement(tmp_path):
+    """SIGINT 0.3 s into the judgement of 10^6 rows (2 s on the 2-core machine) raises
+    KeyboardInterrupt from the judge within the next poll (it came when the judgement was done)."""
+    scene = tmp_path / "long.toml"
+    scene.write_text((SCENARIO_DIR / "mujoco-test-box.toml").read_text()
+                     .replace("frames = 51", "frames = 2").replace("steps_per_frame = 10",
+                                                                    "steps_per_frame = 1000000"))
+    script = f"""
+        import time, numpy as np, bookspin
+        n = 1000001
+        t, q, w = np.arange(n) * 0.01, np.tile([1.0, 0, 0, 0], (n, 1)), np.tile([1.0, 2, 3], (n, 1))
+        print("judging", flush=True)
+        try:
+            bookspin.flipcheck.judge({str(scene)!r}, t, q, w)
+            print("finished", time.monotonic(), flush=True)
+        except KeyboardInterrupt:
+            print("interrupted", time.monotonic(), flush=True)
+    """
+    lines, stderr, returncode, sent = interrupted_child(script, "judging", 0.3)
+    assert lines and lines[0].startswith("interrupted"), (lines, stderr)
+    assert float(lines[0].split()[1]) - sent < 0.8, lines
+    assert returncode == 0, stderr
+
+
+def random_scene(rng, k, folder):
+    """A random scenario as a scene file: the book's size in [0.5, 3] per axis, ω0 of 0.5 to 3
+    rad per time unit in a random direction (every third one near the intermediate axis), dt in
+    [0.005, 0.05], 40 to 100 time units."""
+    size = rng.uniform(0.5, 3.0, 3)
+    direction = rng.uniform(-0.5, 0.5, 3)
+    if k % 3 == 0:  # near the intermediate axis: I_i ~ the sum of the other two sizes squared
+        moments = [size[1] ** 2 + size[2] ** 2, size[0] ** 2 + size[2] ** 2, size[0] ** 2 + size[1] ** 2]
+        direction = 0.05 * direction + np.eye(3)[int(np.argsort(moments)[1])]
+    dt = float(rng.uniform(0.005, 0.05))
+    frames = int(rng.uniform(40, 100) / dt)
+    path = folder / f"random-{k}.toml"
+    omega = rng.uniform(0.5, 3.0) * direction / np.linalg.norm(direction)
+    path.write_text(f'[model]\nkind = "exact"\n[book]\nsize = [{size[0]}, {size[1]}, {size[2]}]\n'
+                    f'mass = 1.0\n[initial]\nangular_velocity = [{omega[0]}, {omega[1]}, {omega[2]}]\n'
+                    f'[time]\ndt = {dt}\nsteps_per_frame = 1\nframes = {frames + 1}\n')
+    return path
+
+
+def test_a_seeded_property_of_the_judge_at_the_python_door(bookspin, tmp_path):
+    """The exact motion, q negated on random rows and every thinning the rules allow pass (or
+    the thinning is refused as too coarse); rows turned, a time shift, ω scaled, q in x, y, z, w
+    order and a dropped row never pass (docs/flipcheck.md, "Thresholds")."""
+    rng = np.random.default_rng(8181)
+    flipping = 0
+    for k in range(6):
+        scene = random_scene(rng, k, tmp_path)
+        start, a = bookspin.flipcheck.export(scene)
+        t, q, w = a["t"], a["q"], a["omega_world"]
+        exact = bookspin.flipcheck.judge(scene, t, q, w)
+        assert exact["verdict"] == "pass", scene.read_text()
+        flipping += exact["flips_exact"] > 0
+        negated = q * np.where(rng.random(len(t)) < 0.5, -1.0, 1.0)[:, None]
+        assert bookspin.flipcheck.judge(scene, t, negated, w)["verdict"] == "pass"
+        steps = start["steps"]
+        for stride in [d for d in (2, 3, 5, 10, 50, 200, 1000) if steps % d == 0]:
+            try:
+                judged = bookspin.flipcheck.judge(scene, t[::stride], q[::stride], w[::stride])
+                assert judged["verdict"] == "pass", (stride, judged["failures"])
+            except bookspin.Error as e:
+                assert "too far apart to judge the turn-overs" in str(e), str(e)
+        moments, omega0 = np.array(start["principal_moments"]), np.array(start["omega0_body"])
+        shift = rng.uniform(0.3, 1.0) / np.linalg.norm(omega0)
+        shifted = bookspin.exact_motion(moments, omega0, t + shift)
+        turned = q.copy()
+        first = 1 + int(rng.integers(len(t) - 30))
+        rows = slice(first, first + 20)  # a run of rows in the middle: not the last
+        angle = rng.uniform(0.2, 3.0)
+        turned[rows] = np.stack([np.cos(angle / 2) * q[rows, 0] - np.sin(angle / 2) * q[rows, 3],
+                                 np.cos(angle / 2) * q[rows, 1] - np.sin(angle / 2) * q[rows, 2],
+                                 np.cos(angle / 2) * q[rows, 2] + np.sin(angle / 2) * q[rows, 1],
+                                 np.cos(angle / 2) * q[rows, 3] + np.sin(angle / 2) * q[rows, 0]], axis=1)
+        drop = 1 + int(rng.integers(len(t) - 3))
+        for what, motion in [
+                ("rows turned about z", (t, turned, w)),
+                ("shifted", (t, shifted["q"], shifted["omega_world"])),
+                ("omega scaled", (t, q, w * rng.choice([0.9, 1.1]))),
+                ("q as x, y, z, w", (t, q[:, [1, 2, 3, 0]], w)),
+                ("a row dropped", tuple(np.delete(x, drop, axis=0) for x in (t, q, w)))]:
+            try:
+                assert bookspin.flipcheck.judge(scene, *motion)["verdict"] == "fail", what
+            except bookspin.Error:
+                pass  # refused with its reason: never a pass
+    assert flipping >= 2  # not an empty claim: some of the scenarios turn over

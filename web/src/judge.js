@@ -16,7 +16,9 @@ const WORDS = {
   stride: 'steps between rows', last_step: 'last row (step)', start_error: '|ω(0) − ω0|/|ω0|',
   energy_drift: 'max |E/E0 − 1|', L_drift: 'max ||L|/|L0| − 1|', flips: 'turn-overs',
   flips_exact: 'exact turn-overs', first_flip: 'first turn-over (t)', first_flip_exact: 'exact first turn-over (t)',
-  first_flip_error: '|first/exact − 1|', orientation_error: 'orientation error at the end (rad)',
+  first_flip_error: '|first/exact − 1|', orientation_error: 'largest orientation error (rad)',
+  orientation_error_step: 'largest orientation error at (step)', L_direction_error: 'largest turn of L (rad)',
+  L_direction_error_step: 'largest turn of L at (step)',
   stable_spin: 'stable spin (1: yes)', tumble_time: 'tumbles at (t)', separatrix_ratio_drift: 'max |r/r0 − 1|, r = 2E·I2/L²',
   separatrix_approach: 'way to the separatrix (max)',
 };

@@ -1,0 +1,237 @@
+// The judge judges the whole motion (docs/flipcheck.md, "What judge measures"): the orientation
+// at every row (the largest error, with its row) and the direction of L in the world, not only
+// |L| and the last row; rows too far apart to show the exact motion's turn-overs are refused,
+// never judged "0 turn-overs"; and a scenario no judgement can be made of is refused by field.
+#include "analysis/judgement.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "analysis/conformance.hpp"
+#include "common/errors.hpp"
+#include "physics/exact_solution.hpp"
+#include "scene/scene.hpp"
+
+namespace bookspin::analysis {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Scenario scenario(const std::string& name) {
+  return scenario_of(
+      scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/" + name + ".toml"));
+}
+
+/// The exact motion of `s` every `stride` steps (q from R(t), ω body), as an engine writes it.
+std::vector<MotionSample> exact_rows(const Scenario& s, long long stride) {
+  const physics::ExactRotation exact(s.body.moments, start_omega(s));
+  std::vector<MotionSample> rows;
+  for (long long n = 0; n <= s.steps; n += stride) {
+    const double t = static_cast<double>(n) * s.dt;
+    rows.push_back({n, Eigen::Quaterniond(exact.orientation(t)), exact.omega_body(t)});
+  }
+  return rows;
+}
+
+bool has_failure(const Conformance& c, const std::string& start) {
+  for (const std::string& f : c.failures)
+    if (f.rfind(start, 0) == 0) return true;
+  return false;
+}
+
+// The motion: every row between the first and the last turned 90° about the world z
+// axis. Its energy and |L| are the exact ones to round-off and so is its last row, but the body
+// points elsewhere all along and its L (along world x) is turned to y: it fails on both, each
+// at its row.
+TEST(Judgement, TheExactMotionTurnedBetweenItsEndsFailsOnOrientationAndLsDirection) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  std::vector<MotionSample> rows = exact_rows(s, 1);
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitZ()));
+  for (std::size_t i = 1; i + 1 < rows.size(); ++i) rows[i].q = turn * rows[i].q;
+  const Conformance c = judge_motion(s, rows);
+  EXPECT_FALSE(c.pass());
+  EXPECT_LT(c.energy_drift, 1e-13);
+  EXPECT_LT(c.L_drift, 1e-13);
+  EXPECT_NEAR(c.orientation_error, kPi / 2, 1e-9);
+  EXPECT_GT(c.orientation_error_step, 0);
+  EXPECT_LT(c.orientation_error_step, s.steps);
+  EXPECT_NEAR(c.L_direction_error, kPi / 2, 1e-6);
+  EXPECT_TRUE(has_failure(c, "orientation error 1.57 rad at step ")) << verdict_line(c);
+  EXPECT_TRUE(has_failure(c, "L turned 1.57 rad at step ")) << verdict_line(c);
+}
+
+// One middle row turned by θ about L itself: L keeps its direction, the body does not. The
+// orientation is judged at every row, so the largest error is θ, at that row.
+TEST(Judgement, OneMiddleRowTurnedAboutLIsTheLargestOrientationErrorAtItsRow) {
+  const Scenario s = scenario("mujoco-test-box");
+  const Eigen::Vector3d L_axis = s.body.moments.cwiseProduct(start_omega(s)).normalized();
+  for (const double theta : {0.05, 0.3}) {
+    std::vector<MotionSample> rows = exact_rows(s, 1);
+    rows[217].q = Eigen::Quaterniond(Eigen::AngleAxisd(theta, L_axis)) * rows[217].q;
+    const Conformance c = judge_motion(s, rows);
+    EXPECT_NEAR(c.orientation_error, theta, 1e-12);
+    EXPECT_EQ(c.orientation_error_step, 217);
+    EXPECT_LT(c.L_direction_error, 1e-12);
+    EXPECT_EQ(c.pass(), theta <= 0.1) << verdict_line(c);
+  }
+}
+
+// An engine that precesses L: every row turned about the world z axis by ε·t/t_end, so that L
+// (along world x here) turns by up to ε while |L|, E and the turn-overs stay exact. ε = 0.02
+// rad keeps the orientation within its 0.1 rad, and fails L's direction (0.01 rad); ε = 0.005
+// passes both.
+TEST(Judgement, AnEngineThatPrecessesLFailsOnLsDirectionAlone) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  for (const double epsilon : {0.005, 0.02}) {
+    std::vector<MotionSample> rows = exact_rows(s, 1);
+    for (MotionSample& row : rows) {
+      const double angle = epsilon * static_cast<double>(row.step) / static_cast<double>(s.steps);
+      row.q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ())) * row.q;
+    }
+    const Conformance c = judge_motion(s, rows);
+    SCOPED_TRACE(verdict_line(c));
+    EXPECT_NEAR(c.L_direction_error, epsilon, 1e-3 * epsilon);
+    EXPECT_EQ(c.L_direction_error_step, s.steps);
+    EXPECT_LT(c.L_drift, 1e-13);
+    EXPECT_EQ(c.flips, c.flips_exact);
+    EXPECT_LE(c.orientation_error, 0.1);
+    EXPECT_EQ(c.pass(), epsilon < 0.01);
+    EXPECT_EQ(has_failure(c, "L turned "), epsilon > 0.01);
+  }
+}
+
+// The exact motion written every 1000th step (4 rows) cannot show its 6 turn-overs: refused
+// with that reason and a stride that shows them, never judged "0 turn-overs"; rows at that
+// stride pass.
+TEST(Judgement, RowsTooFarApartToShowTheTurnOversAreRefusedNamingAStrideThatShowsThem) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  try {
+    const Conformance c = judge_motion(s, exact_rows(s, 1000));
+    ADD_FAILURE() << "judged: " << verdict_line(c);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("rows every 1000 steps (50 time units) are too far apart to judge the "
+                         "turn-overs: the exact motion at these rows shows ",
+                         0),
+              0u)
+        << what;
+    const std::size_t at = what.find("write a row at least every ");
+    ASSERT_NE(at, std::string::npos) << what;
+    const long long fine = std::stoll(what.substr(at + 27));
+    ASSERT_GE(fine, 1);
+    ASSERT_LT(fine, 1000);
+    // A stride that divides the steps at or below the one named passes.
+    long long stride = fine;
+    while (s.steps % stride != 0) --stride;
+    const Conformance c = judge_motion(s, exact_rows(s, stride));
+    EXPECT_TRUE(c.pass()) << stride << ": " << verdict_line(c);
+    EXPECT_EQ(c.flips, 6);
+  }
+  // A stable spin has no turn-over to miss: its coarse rows are judged.
+  const Scenario spin = scenario("book-largest-axis");
+  EXPECT_TRUE(judge_motion(spin, exact_rows(spin, 10000)).pass());
+}
+
+/// The scenario with one field changed by `edit`, checked: the refusal's text, "" for none.
+template <typename Edit>
+std::string refusal(Edit edit) {
+  Scenario s = scenario("mujoco-test-box");
+  edit(s);
+  try {
+    check_scenario(s);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Every field is honoured or refused by name: a step count the exact motion cannot carry
+// (10^12 gave "exact -2147483647 turn-overs"), an ω0 of 1e200 or a dt of 1e300 (rows of NaN),
+// a moment or a mass that is not finite and positive, a body at rest.
+TEST(Judgement, AScenarioNoJudgementCanBeMadeOfIsRefusedNamingItsField) {
+  EXPECT_EQ(refusal([](Scenario&) {}), "");
+  const auto starts = [](const std::string& text, const std::string& start) {
+    return text.rfind(start, 0) == 0;
+  };
+  EXPECT_PRED2(starts, refusal([](Scenario& s) { s.steps = 1'000'000'000'000; }),
+               "mujoco-test-box: steps: 1000000000000: must be from 1 to 10^7");
+  EXPECT_PRED2(starts, refusal([](Scenario& s) { s.steps = 0; }), "mujoco-test-box: steps: 0");
+  EXPECT_PRED2(starts, refusal([](Scenario& s) {
+                 s.initial.omega0_body = {1e200, 2, 3};
+               }),
+               "mujoco-test-box: omega0_body[0]: 1e+200 is beyond ±1e6");
+  EXPECT_PRED2(starts, refusal([](Scenario& s) {
+                 s.initial.omega0_body = {-2e6, 2, 3};
+               }),
+               "mujoco-test-box: omega0_body[0]: -2e+06 is beyond ±1e6");
+  EXPECT_PRED2(starts, refusal([](Scenario& s) { s.dt = 1e300; }),
+               "mujoco-test-box: dt: 1e+300 over 500 steps turns the body by");
+  EXPECT_PRED2(starts, refusal([](Scenario& s) { s.dt = -0.01; }), "mujoco-test-box: dt: -0.01");
+  EXPECT_PRED2(starts,
+               refusal([](Scenario& s) { s.dt = std::numeric_limits<double>::quiet_NaN(); }),
+               "mujoco-test-box: dt: nan");
+  EXPECT_PRED2(starts, refusal([](Scenario& s) { s.body.moments.y() = 0.0; }),
+               "mujoco-test-box: principal_moments[1]: 0 (about body y)");
+  EXPECT_PRED2(starts, refusal([](Scenario& s) { s.body.cage.mass = -1.0; }),
+               "mujoco-test-box: mass: -1");
+  EXPECT_PRED2(starts, refusal([](Scenario& s) {
+                 s.initial.omega0_body.setZero();
+                 s.initial.jiggle = 0.0;
+               }),
+               "mujoco-test-box: omega0_body: the body is at rest");
+}
+
+// A scenario's name becomes OUT/<name>.json and OUT/<name>/: letters, digits, '-', '_', '.',
+// the first a letter or digit, so no name leaves OUT or breaks a line.
+TEST(Judgement, AScenarioNameIsLettersDigitsDashUnderscoreAndDot) {
+  for (const char* good : {"book-intermediate-0.05", "a", "A_b.c-9", "0"})
+    EXPECT_EQ(scenario_name_problem(good), "") << good;
+  for (const std::string& bad :
+       {std::string(""), std::string("../escaped"), std::string(".."), std::string("."),
+        std::string("a/b"), std::string("a\nb"), std::string("a b"), std::string("-x"),
+        std::string(".hidden"), std::string("nul\0x", 5), std::string(129, 'a'),
+        std::string("caf\xc3\xa9")})
+    EXPECT_NE(scenario_name_problem(bad), "") << bad;
+  Scenario s = scenario("mujoco-test-box");
+  s.name = "../escaped";
+  try {
+    check_scenario(s);
+    ADD_FAILURE() << "../escaped taken";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "flipcheck: scenario name \"../escaped\" must start with a letter or a digit");
+  }
+  s.name = std::string("a\nb", 3);
+  try {
+    check_scenario(s);
+    ADD_FAILURE() << "a newline taken";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a\\x0ab"), std::string::npos) << e.what();
+  }
+}
+
+// The judgement CSV has the new columns, and the kit's rules hold the new limits.
+TEST(Judgement, TheTableAndTheRulesCarryTheWholeMotionsMeasures) {
+  const Scenario s = scenario("mujoco-test-box");
+  const Conformance c = judge_motion(s, exact_rows(s, 1));
+  const CsvTable table = judgement_table(s, "", {{"run.csv", "run", c}});
+  for (const char* column : {"orientation_error", "orientation_error_step", "L_direction_error",
+                             "L_direction_error_step"}) {
+    bool found = false;
+    for (const std::string& name : table.columns) found = found || name == column;
+    EXPECT_TRUE(found) << column;
+  }
+  const std::string rules = judge_rules();
+  EXPECT_NE(rules.find("L_direction 0.01\n"), std::string::npos) << rules;
+  EXPECT_NE(rules.find("sampling_first_flip 0.01\n"), std::string::npos) << rules;
+}
+
+}  // namespace
+}  // namespace bookspin::analysis
