@@ -22,6 +22,11 @@ std::string short_number(double value) {
   return text;
 }
 
+/// "1 turn-over", "0 turn-overs", "6 turn-overs": a count in words, its noun in number.
+std::string turn_overs(int count) {
+  return std::to_string(count) + (count == 1 ? " turn-over" : " turn-overs");
+}
+
 }  // namespace
 
 /// `text` with every byte outside printable ASCII as \xNN: a name quoted in one line.
@@ -158,8 +163,7 @@ bool shows_turn_overs(const SampledExact& seen, int flips_exact,
   while (fine > 1 && !shows_turn_overs(sample_exact(exact, mid, dt, fine, last_step), flips_exact,
                                        first_exact, tolerance))
     fine = std::max<long long>(1, fine / 2);
-  std::string shown =
-      std::to_string(seen.flips) + " of its " + std::to_string(flips_exact) + " turn-overs";
+  std::string shown = std::to_string(seen.flips) + " of its " + turn_overs(flips_exact);
   if (seen.flips == flips_exact && seen.first_flip && first_exact)
     shown = "its first turn-over " + short_number(std::abs(*seen.first_flip - *first_exact)) +
             " time units off";
@@ -293,7 +297,7 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
                 std::to_string(c.L_direction_error_step) + " (limit " +
                 short_number(limits.L_direction) + ")");
   if (c.flips != c.flips_exact)
-    f.push_back(std::to_string(c.flips) + " turn-overs, exact " + std::to_string(c.flips_exact));
+    f.push_back(turn_overs(c.flips) + ", exact " + std::to_string(c.flips_exact));
   if (c.first_flip && c.first_flip_exact &&
       std::abs(*c.first_flip - *c.first_flip_exact) > limits.first_flip * c.half_period)
     f.push_back("first turn-over " + short_number(*c.first_flip - *c.first_flip_exact) +

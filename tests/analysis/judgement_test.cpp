@@ -66,6 +66,25 @@ TEST(Judgement, TheExactMotionTurnedBetweenItsEndsFailsOnOrientationAndLsDirecti
   EXPECT_TRUE(has_failure(c, "L turned 1.57 rad at step ")) << verdict_line(c);
 }
 
+// An engine whose body stops turning over after its first turn-over (each row from then on
+// the row just after it: E and |L| kept) counts one of the exact motion's six, said in the
+// singular: "1 turn-over, exact 6", not "1 turn-overs".
+TEST(Judgement, ACountOfOneTurnOverIsSaidInTheSingular) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  std::vector<MotionSample> rows = exact_rows(s, 1);
+  const Conformance exact = judge_motion(s, rows);
+  ASSERT_TRUE(exact.first_flip.has_value());
+  ASSERT_EQ(exact.flips_exact, 6);
+  const auto after = static_cast<std::size_t>(*exact.first_flip / s.dt) + 50;
+  for (std::size_t n = after + 1; n < rows.size(); ++n) {
+    rows[n].q = rows[after].q;
+    rows[n].omega_body = rows[after].omega_body;
+  }
+  const Conformance c = judge_motion(s, rows);
+  EXPECT_EQ(c.flips, 1);
+  EXPECT_TRUE(has_failure(c, "1 turn-over, exact 6")) << verdict_line(c);
+}
+
 // One middle row turned by θ about L itself: L keeps its direction, the body does not. The
 // orientation is judged at every row, so the largest error is θ, at that row.
 TEST(Judgement, OneMiddleRowTurnedAboutLIsTheLargestOrientationErrorAtItsRow) {
