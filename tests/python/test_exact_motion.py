@@ -128,6 +128,10 @@ def test_any_order_of_t_and_one_time(bookspin):
     (([1, 2, 3], [1e200, 1e200, 0], [0, 1]),
      "omega0[0]: 1e+200 is outside the angular velocity's range, ±1e+06 rad per time unit "
      "(a scene's initial.angular_velocity)"),
+    # The range is on the magnitude: far below -1e6 as far above.
+    (([1, 2, 3], [0, -3e7, 0], [0, 1]),
+     "omega0[1]: -3e+07 is outside the angular velocity's range, ±1e+06 rad per time unit "
+     "(a scene's initial.angular_velocity)"),
     (([1e300, 2e300, 3e300], [1e6, 1e6, 0], [0, 1]),
      "moments (1e+300, 2e+300, 3e+300) and omega0 (1e+06, 1e+06, 0): the motion's energy "
      "½ ω·Iω or |L| overflows a double (beyond 1.8e308)"),

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -237,6 +238,65 @@ TEST(LimitsTable, DefaultsAreWhatAMissingKeyGives) {
     } else {
       ASSERT_EQ(got.count(key), 1u) << "no check for this default";
       EXPECT_EQ(got.at(key), *limit.fallback);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::scene
+
+namespace bookspin::scene {
+namespace {
+
+/// Whether `value` lies in `limit`'s range, judged here from the table's numbers alone: the
+/// range on the signed value, and the smallest non-zero size on the magnitude (a vector key gets
+/// `value` in all three components: its length is |value| √3).
+bool in_range(const Limit& limit, double value, bool vector) {
+  const bool above_min = limit.min_open ? value > limit.min : value >= limit.min;
+  const double size = std::abs(value) * (vector ? std::sqrt(3.0) : 1.0);
+  // The rules beside the table (scenes/README.md, "Limits"): even picture sizes, and MSAA's
+  // sample counts.
+  const std::string key(limit.key);
+  if ((key == "render.width" || key == "render.height") && std::fmod(value, 2.0) != 0.0)
+    return false;
+  if (key == "render.msaa" && value != 1 && value != 2 && value != 4 && value != 8) return false;
+  return above_min && value <= limit.max &&
+         (value == 0.0 || limit.smallest_nonzero == 0.0 || size >= limit.smallest_nonzero);
+}
+
+/// Every limit, both signs, across the whole double range (seeded): a value is accepted exactly
+/// where the table's range holds it, and a refused one names its key. A check made on the signed
+/// value where the magnitude was meant (ω0 far below −1e6 accepted, above refused), or on one
+/// side only, fails here for its key.
+TEST(LimitsTable, EveryLimitHoldsOnBothSignsAcrossTheWholeRange) {
+  std::mt19937_64 rng(6);
+  std::uniform_real_distribution<double> exponent(-300.0, 300.0), unit(0.0, 1.0);
+  for (const Limit& limit : kLimits) {
+    const std::string key(limit.key);
+    SCOPED_TRACE(key);
+    const bool vector =
+        key == "book.size" || key == "initial.angular_velocity" || key == "render.camera_direction";
+    if (key == "initial.seed") continue;  // 2⁶³ − 1 is not a double: LimitsTable.BoundsAre…
+    std::vector<double> values;
+    for (double bound : {limit.min, limit.max})
+      for (double sign : {-1.0, 1.0})
+        for (double factor : {1.0, 1.5, 10.0, 1e6})
+          values.push_back(sign * std::abs(bound) * factor);
+    for (int n = 0; n < 60; ++n) {
+      double v = std::pow(10.0, limit.integer ? exponent(rng) / 20.0 : exponent(rng));
+      if (limit.integer) v = std::round(v);
+      values.push_back(n % 2 ? -v : v);
+      values.push_back(limit.min + (limit.max - limit.min) * unit(rng) * (n % 2 ? -1.0 : 1.0));
+    }
+    for (double value : values) {
+      if (limit.integer) value = std::round(value);
+      const std::string error =
+          error_of(scene_with(limit, number_text(value, limit.integer), vector));
+      if (in_range(limit, value, vector)) {
+        EXPECT_EQ(error.find(key + ": "), std::string::npos) << value << ": " << error;
+      } else {
+        EXPECT_NE(error.find(key + ": "), std::string::npos) << value << " accepted: " << error;
+      }
     }
   }
 }
