@@ -46,11 +46,10 @@ void ExactRotation::set_horizon() {
 }
 
 std::string ExactRotation::horizon_reason(double t) const {
-  const char* angle =
-      case_ == ExactCase::steady
-          ? "the rotation angle |ω0|·t passes"
-          : (horizon_by_phase_ ? "the phase λt + u0 of ω's Jacobi functions passes"
-                               : "the precession angle ψ about L may pass");
+  const char* angle = case_ == ExactCase::steady
+                          ? "the rotation angle |ω0|·t passes"
+                          : (horizon_by_phase_ ? "the phase λt + u0 of ω's Jacobi functions passes"
+                                               : "the precession angle ψ about L may pass");
   return "t = " + short_text(t) + " is beyond the exact motion's time horizon, |t| ≤ " +
          short_text(horizon_) + " time units for these moments and ω0: past it " + angle +
          " 2^40 ≈ 1.1e12 rad, more than a long double carries to 1e-6 rad";

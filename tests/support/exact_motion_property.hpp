@@ -36,8 +36,7 @@ struct ExactInput {
 inline std::string describe(const ExactInput& in) {
   std::ostringstream s;
   s.precision(17);
-  s << "moments (" << in.moments.transpose() << "), omega0 (" << in.omega0.transpose()
-    << "), t:";
+  s << "moments (" << in.moments.transpose() << "), omega0 (" << in.omega0.transpose() << "), t:";
   for (double t : in.t) s << ' ' << t;
   return s.str();
 }
@@ -71,14 +70,14 @@ inline LongInvariants long_invariants(const Eigen::Vector3d& I, const Eigen::Vec
 /// below ω's rounding (moments 1e72 apart: R(0) was 90° off about L), and within k'² < 1e-19 of
 /// the separatrix the motion taken as on it may drop the dn axis' a·k', which moments 1e56 apart
 /// make the largest component of ω0: limits noted in docs/physics.md §8, "How far in time".
-inline bool starts_at(const physics::ExactState& s, const ExactInput& in, const LongInvariants& inv) {
+inline bool starts_at(const physics::ExactState& s, const ExactInput& in,
+                      const LongInvariants& inv) {
   if (in.moments.maxCoeff() > 1e8 * in.moments.minCoeff()) return true;
   if (std::abs(s.q[0] - 1.0) > 1e-12) return false;
   const double size = in.omega0.stableNorm();
   for (int i = 0; i < 3; ++i) {
     const long double I = in.moments[i];
-    const double bound =
-        static_cast<double>(std::min(std::sqrt(2 * inv.E / I), inv.L / I));
+    const double bound = static_cast<double>(std::min(std::sqrt(2 * inv.E / I), inv.L / I));
     if (std::abs(s.omega_body[i] - in.omega0[i]) > 1e-6 * size + 1e-15 * bound) return false;
   }
   return true;
@@ -104,7 +103,8 @@ inline std::string check_exact_property(const ExactInput& in) {
   const long double top = DBL_MAX;
   const bool over = inv.E > top * (1 + 1e-12L) || inv.L > top * (1 + 1e-12L);
   const bool under = inv.E < top * (1 - 1e-12L) && inv.L < top * (1 - 1e-12L);
-  const bool reported = !std::isfinite(exact->energy()) || !std::isfinite(exact->angular_momentum_norm());
+  const bool reported =
+      !std::isfinite(exact->energy()) || !std::isfinite(exact->angular_momentum_norm());
   if (over && !reported) return "an energy or |L| beyond a double not reported: " + describe(in);
   if (under && reported) return "a finite energy and |L| reported overflowing: " + describe(in);
   if (reported) return {};
@@ -146,13 +146,15 @@ inline std::string check_exact_property(const ExactInput& in) {
       why << "a row not finite at t = " << t;
     } else if (std::abs(s.q.norm() - 1.0) > 1e-12) {
       why << "|q| = " << s.q.norm() << " at t = " << t;
-    } else if (s.omega_body.stableNorm() > static_cast<double>(inv.L / I_min) * (1 + 1e-9) + 1e-300) {
+    } else if (s.omega_body.stableNorm() >
+               static_cast<double>(inv.L / I_min) * (1 + 1e-9) + 1e-300) {
       why << "|ω| = " << s.omega_body.stableNorm() << " above |L|/I_min at t = " << t;
     } else if (inv.E > 1e-280L && std::abs(s.E / static_cast<double>(inv.E) - 1.0) > 1e-9) {
       why << "E = " << s.E << ", not " << static_cast<double>(inv.E) << " at t = " << t;
     } else if (inv.L > 1e-280L &&
                std::abs(s.L.stableNorm() / static_cast<double>(inv.L) - 1.0) > 1e-9) {
-      why << "|L| = " << s.L.stableNorm() << ", not " << static_cast<double>(inv.L) << " at t = " << t;
+      why << "|L| = " << s.L.stableNorm() << ", not " << static_cast<double>(inv.L)
+          << " at t = " << t;
     } else if (t == 0.0 && !starts_at(s, in, inv)) {
       why << "the start is not ω0 at the identity: ω = " << s.omega_body.transpose();
     }
@@ -178,8 +180,8 @@ inline ExactInput draw_exact_input(std::mt19937_64& rng) {
   const int body = pick(rng);
   const double base = log_uniform(rng, -300, 300);
   for (int i = 0; i < 3; ++i)
-    in.moments[i] = body < 3 ? log_uniform(rng, -300, 300)
-                             : base * (1.0 + (body < 6 ? unit(rng) * 3.0 : 0.0));
+    in.moments[i] =
+        body < 3 ? log_uniform(rng, -300, 300) : base * (1.0 + (body < 6 ? unit(rng) * 3.0 : 0.0));
   if (body >= 6) {  // near-symmetric: one moment a hair from another
     const int a = pick(rng) % 3;
     in.moments[a] = in.moments[(a + 1) % 3] * (1.0 + log_uniform(rng, -16, -3));
@@ -208,7 +210,8 @@ inline ExactInput draw_exact_input(std::mt19937_64& rng) {
     if (kind >= 7) {  // about the horizon's bound: |t| |L|/I within a decade of 2^40
       const LongInvariants inv = long_invariants(in.moments, in.omega0);
       const double rate = static_cast<double>(inv.L) / in.moments.minCoeff();
-      if (rate > 0.0 && std::isfinite(rate)) t = physics::kExactMaxAngle / rate * log_uniform(rng, -1, 1);
+      if (rate > 0.0 && std::isfinite(rate))
+        t = physics::kExactMaxAngle / rate * log_uniform(rng, -1, 1);
     }
     if (pick(rng) < 5) t = -t;
     in.t.push_back(t);
