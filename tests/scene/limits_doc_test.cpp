@@ -303,3 +303,32 @@ TEST(LimitsTable, EveryLimitHoldsOnBothSignsAcrossTheWholeRange) {
 
 }  // namespace
 }  // namespace bookspin::scene
+
+namespace bookspin::scene {
+namespace {
+
+/// time.duration's rounding rule (scenes/README.md, "Keys"), on seeded durations, steps and
+/// frame counts of every size: the last frame is at or just past the duration (within 1e-9 of a
+/// frame's time short of it), and the frame before it is short of the duration, so neither a
+/// frame too many nor one too few. A rule rounded to the nearest frame, or one-sided, fails.
+TEST(LimitsTable, DurationCoversWithTheFewestFrames) {
+  std::mt19937_64 rng(1082);
+  std::uniform_real_distribution<double> exponent(-6.0, 3.0), unit(0.0, 1.0);
+  for (int n = 0; n < 20000; ++n) {
+    const double dt = std::pow(10.0, exponent(rng));
+    const int steps = 1 + static_cast<int>(unit(rng) * 999);
+    const double frame = dt * steps;
+    // Whole numbers of frames (± a hair), and anywhere between.
+    const double whole = std::floor(unit(rng) * 1000.0) + 1.0;
+    const double duration = n % 3 == 0   ? whole * frame
+                            : n % 3 == 1 ? whole * frame * (1.0 + (unit(rng) - 0.5) * 1e-12)
+                                         : (whole + unit(rng)) * frame;
+    const double frames = frames_covering(duration, dt, steps);
+    SCOPED_TRACE(std::to_string(duration) + " at " + std::to_string(frame) + " a frame");
+    EXPECT_GE((frames - 1.0) * frame, duration - 1.01e-9 * frame);
+    EXPECT_LT((frames - 2.0) * frame, duration);
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::scene
