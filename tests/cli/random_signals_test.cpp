@@ -127,21 +127,19 @@ TEST_F(RandomSignals, Sweep) {
 }
 
 TEST_F(RandomSignals, PlotSimulateAndExport) {
-  expect_every_moment_stops_cleanly(
-      {"plot",
-       {"plot", kFig09, "-o", out.string(), "--force", "--set", "time.frames=100000", "--set",
-        "time.steps_per_frame=100"}},
-      out, rng, 1);
-  expect_every_moment_stops_cleanly({"simulate",
-                                     {"simulate", kFig09, "--csv", (out / "fig09.csv").string(),
-                                      "--set", "time.frames=100000", "--set",
-                                      "time.steps_per_frame=100"}},
+  expect_every_moment_stops_cleanly({"plot",
+                                     {"plot", kFig09, "-o", out.string(), "--force", "--set",
+                                      "time.frames=100000", "--set", "time.steps_per_frame=100"}},
                                     out, rng, 1);
   expect_every_moment_stops_cleanly(
-      {"export",
-       {"export", kFig09, "--gltf", "-o", out.string(), "--force", "--frames", "2000", "--set",
-        "time.steps_per_frame=300"}},
+      {"simulate",
+       {"simulate", kFig09, "--csv", (out / "fig09.csv").string(), "--set", "time.frames=100000",
+        "--set", "time.steps_per_frame=100"}},
       out, rng, 1);
+  expect_every_moment_stops_cleanly({"export",
+                                     {"export", kFig09, "--gltf", "-o", out.string(), "--force",
+                                      "--frames", "2000", "--set", "time.steps_per_frame=300"}},
+                                    out, rng, 1);
 }
 
 TEST_F(RandomSignals, Accuracy) {
@@ -177,11 +175,10 @@ TEST_F(RandomSignals, FlipcheckExportJudgeAndLeague) {
                                       "--force", "--set", "time.steps_per_frame=5000"}},
                                     judged, rng, 1);
   const fs::path league = dir.path() / "league";
-  expect_every_moment_stops_cleanly(
-      {"flipcheck league",
-       {"flipcheck", "league", box, "--methods", "all", "--force", "--set", "time.frames=10001",
-        "-o", league.string()}},
-      league, rng, 1);
+  expect_every_moment_stops_cleanly({"flipcheck league",
+                                     {"flipcheck", "league", box, "--methods", "all", "--force",
+                                      "--set", "time.frames=10001", "-o", league.string()}},
+                                    league, rng, 1);
 }
 
 TEST_F(RandomSignals, FitAndExplore) {
@@ -193,11 +190,10 @@ TEST_F(RandomSignals, FitAndExplore) {
              "body.shape = \"phone\"\nrender.width = 320\nrender.height = 180\n");
   const std::string recording = (dir.path() / "toss").string();
   // The fit with its clips rendered.
-  expect_every_moment_stops_cleanly(
-      {"fit",
-       {"fit", recording, "--force", "--render", "--scene", (dir.path() / "small.toml").string(),
-        "-o", out.string()}},
-      out, rng, 1);
+  expect_every_moment_stops_cleanly({"fit",
+                                     {"fit", recording, "--force", "--render", "--scene",
+                                      (dir.path() / "small.toml").string(), "-o", out.string()}},
+                                    out, rng, 1);
   write_text(dir.path() / "shell.html",
              "<!doctype html><title>explorer</title><!--BOOKSPIN_DATA-->\n");
   const std::string shell = (dir.path() / "shell.html").string();
