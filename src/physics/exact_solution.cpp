@@ -68,15 +68,17 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   to_sorted_ = sorting_rotation(moments);
   I_ = to_sorted_.cwiseAbs() * moments;
   L_world_ = moments.cwiseProduct(omega0_body);
-  energy_ = 0.5 * omega0_body.dot(L_world_);
   // |L| and |ω0| in long double: ψ's rates and a steady motion's angle take their rounding
   // times t (docs/physics.md §8, "How far in time").
-  Real L2 = 0.0L, w2 = 0.0L;
+  Real L2 = 0.0L, w2 = 0.0L, E = 0.0L;
   for (int i = 0; i < 3; ++i) {
     const Real w_i = omega0_body[i], L_i = static_cast<Real>(moments[i]) * w_i;
     L2 += L_i * L_i;
     w2 += w_i * w_i;
+    E += 0.5L * L_i * w_i;
   }
+  // ½ ω·Iω too: in doubles ω·L overflows before it is halved (E = 9e307 gave inf).
+  energy_ = static_cast<double>(E);
   L_long_ = std::sqrt(L2);
   rate_long_ = std::sqrt(w2);
   // Not Eigen's norm(): its squares overflow a double from |L| ~ 1e154 (and underflow below

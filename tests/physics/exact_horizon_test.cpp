@@ -63,6 +63,20 @@ TEST(ExactHorizon, TimesPastTheHorizonAreRefusedForThePhaseNotTheEnergy) {
   }
 }
 
+// Found by tests/fuzz/exact_fuzzer.cpp: E = 9e307 is a double, but ω·L summed in doubles
+// overflowed before it was halved, and the doors refused the motion as one whose energy
+// overflows. Its energy and |L| against their sums in long double.
+TEST(ExactHorizon, AnEnergyNearTheTopOfTheRangeIsNoOverflow) {
+  const Eigen::Vector3d moments(1.949208239922177e-95, 7.1980310123944318e-172,
+                                2.7292613582081936e+299);
+  const Eigen::Vector3d omega0(-50076.180592312754, -4529.8243883423429, -26073.767141273125);
+  const ExactRotation exact(moments, omega0);
+  const test_support::LongInvariants inv = test_support::long_invariants(moments, omega0);
+  EXPECT_NEAR(exact.energy() / static_cast<double>(inv.E), 1.0, 1e-15);
+  EXPECT_NEAR(exact.angular_momentum_norm() / static_cast<double>(inv.L), 1.0, 1e-15);
+  EXPECT_TRUE(check_exact_property({moments, omega0, {0.0, 1e-3, -2.0}}).empty());
+}
+
 // Near the horizon the angles are still carried to about 1e-6 rad: ψ is reduced by 2π in long
 // double before it is rounded to a double (a double holds 2^40 only to 2^-12). The steady spin's
 // angle |ω0| t is known exactly: ω0 = (0, 0, 1), t = 2^39 + 1, angle 2^39 + 1 rad, whose
