@@ -62,12 +62,58 @@ void add_errors(py::module_& m) {
   });
 }
 
+namespace {
+
+volatile std::sig_atomic_t terminated = 0;
+extern "C" void on_termination(int signal) { terminated = signal; }
+
+/// SIGTERM and SIGHUP during a long call, where Python leaves them to their default action (which
+/// would end the process mid-write, its temporaries left in the output folder): recorded while
+/// the call runs, so that it stops as from Ctrl-C and removes what it began; once the call has
+/// unwound the handlers are restored and the signal raised again, ending the process as it
+/// would have (exit 128 + signal, nothing written). docs/outputs.md, "Signals". A handler the
+/// program set itself (signal.signal) is left alone.
+class TerminationGuard {
+ public:
+  TerminationGuard() {
+    terminated = 0;
+    for (int i = 0; i < 2; ++i) {
+      struct sigaction current {};
+      sigaction(kSignals[i], nullptr, &current);
+      if (current.sa_handler != SIG_DFL) continue;
+      struct sigaction action {};
+      action.sa_handler = on_termination;
+      sigemptyset(&action.sa_mask);
+      installed_[i] = sigaction(kSignals[i], &action, &previous_[i]) == 0;
+    }
+  }
+  ~TerminationGuard() {
+    for (int i = 0; i < 2; ++i)
+      if (installed_[i]) sigaction(kSignals[i], &previous_[i], nullptr);
+    const int signal = terminated;
+    terminated = 0;
+    if (signal != 0) std::raise(signal);  // the default action, now restored
+  }
+  TerminationGuard(const TerminationGuard&) = delete;
+  TerminationGuard& operator=(const TerminationGuard&) = delete;
+  static int received() { return terminated; }
+
+ private:
+  static constexpr int kSignals[2] = {SIGTERM, SIGHUP};
+  bool installed_[2] = {false, false};
+  struct sigaction previous_[2]{};
+};
+
+}  // namespace
+
 StopPoll python_stop() {
   using Clock = std::chrono::steady_clock;
   // The calls that take it run on the caller's thread alone: the time of the last look needs
   // no lock. Every 50 ms at most, so that a loop of short steps is not slowed by the GIL.
   auto last = std::make_shared<Clock::time_point>(Clock::now());
-  return [last](std::string_view) -> int {
+  auto guard = std::make_shared<TerminationGuard>();
+  return [last, guard](std::string_view) -> int {
+    if (const int signal = TerminationGuard::received()) return signal;
     const Clock::time_point now = Clock::now();
     if (now - *last < std::chrono::milliseconds(50)) return 0;
     *last = now;

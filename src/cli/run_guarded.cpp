@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/stop.hpp"
+#include "physics/exact_solution.hpp"
 #include "render/render_error.hpp"
 #include "scene/toml_reader.hpp"
 #include "video/video.hpp"
@@ -28,6 +29,10 @@ int run_guarded(const std::function<int()>& command) {
     std::cerr << "\nbookspin: interrupted; nothing written\n";
     return 128 + stop.signal();
   } catch (const InputError& e) {
+    return report("error", e.what(), kExitUsage);
+  } catch (const physics::ExactHorizonError& e) {
+    // A time asked of the exact motion past its horizon (docs/physics.md §8, "How far in
+    // time"): the input's, said as the physics says it, where no door named the key first.
     return report("error", e.what(), kExitUsage);
   } catch (const OutputError& e) {
     return report("error", e.what(), kExitFailure);

@@ -28,6 +28,18 @@ std::string value_text(double value) {
   return finite_text(value, "a value in a message");
 }
 
+/// Throws InputError where the motion's energy ½ ω·Iω or |L| is beyond a double, naming the
+/// moments and ω0: those are the rows' E and L, constant in t.
+void refuse_overflow(const physics::ExactRotation& exact) {
+  if (std::isfinite(exact.energy()) && std::isfinite(exact.angular_momentum_norm())) return;
+  const Eigen::Vector3d& I = exact.moments();
+  const Eigen::Vector3d& w = exact.omega0_body();
+  throw InputError("moments (" + value_text(I[0]) + ", " + value_text(I[1]) + ", " +
+                   value_text(I[2]) + ") and omega0 (" + value_text(w[0]) + ", " +
+                   value_text(w[1]) + ", " + value_text(w[2]) +
+                   "): the motion's energy ½ ω·Iω or |L| overflows a double (beyond 1.8e308)");
+}
+
 }  // namespace
 
 void exact_motion_each(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
@@ -51,15 +63,16 @@ void exact_motion_each(const Eigen::Vector3d& moments, const Eigen::Vector3d& om
       throw InputError("t[" + std::to_string(n) + "]: " + value_text(times[n]) +
                        " is not a finite time");
   const physics::ExactRotation exact(moments, omega0_body);
+  refuse_overflow(exact);
+  // Every time within the motion's horizon before the first row (docs/physics.md §8, "How far
+  // in time"): past it the phase or ψ is more than a long double carries.
+  for (std::size_t n = 0; n < times.size(); ++n)
+    if (!(std::abs(times[n]) <= exact.time_horizon()))
+      throw InputError("t[" + std::to_string(n) + "]: " + exact.horizon_reason(times[n]));
   for (std::size_t n = 0; n < times.size(); ++n) {
     if (n % 4096 == 0) stop_if_asked(stop, "exact motion");
     const ExactMotionRow state = exact.state(times[n]);
-    if (!finite(state))
-      throw InputError("moments (" + value_text(moments[0]) + ", " + value_text(moments[1]) + ", " +
-                       value_text(moments[2]) + ") and omega0 (" + value_text(omega0_body[0]) +
-                       ", " + value_text(omega0_body[1]) + ", " + value_text(omega0_body[2]) +
-                       "): the motion at t[" + std::to_string(n) + "] = " + value_text(times[n]) +
-                       " overflows a double (its energy ½ ω·Iω or |L| is beyond 1.8e308)");
+    BOOKSPIN_ASSERT(finite(state));
     row(n, state);
   }
 }
@@ -92,6 +105,10 @@ ExactMotion exact_start(const analysis::Scenario& scenario) {
 ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop) {
   ExactMotion motion = exact_start(scenario);
   const physics::ExactRotation exact(scenario.body.moments, motion.omega0_body);
+  refuse_overflow(exact);
+  const double t_end = static_cast<double>(scenario.steps) * scenario.dt;
+  if (!(t_end <= exact.time_horizon()))
+    throw InputError(scenario.name + ": dt × steps: " + exact.horizon_reason(t_end));
   motion.rows.reserve(static_cast<std::size_t>(scenario.steps) + 1);
   for (long long n = 0; n <= scenario.steps; ++n) {
     if (n % 4096 == 0) stop_if_asked(stop, "flipcheck exact motion");

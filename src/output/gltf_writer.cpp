@@ -103,7 +103,8 @@ void validate(const std::vector<GltfPart>& parts, const GltfAnimation& animation
 }  // namespace
 
 void write_glb(const std::filesystem::path& path, const std::string& name,
-               const std::vector<GltfPart>& parts, const GltfAnimation& animation) {
+               const std::vector<GltfPart>& parts, const GltfAnimation& animation,
+               const std::function<void()>& before_commit) {
   validate(parts, animation);
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -211,6 +212,7 @@ void write_glb(const std::filesystem::path& path, const std::string& name,
     file.close();
     if (!file) throw_output_error("cannot write glTF", path, errno);
   }
+  if (before_commit) before_commit();
   output.commit();
 }
 

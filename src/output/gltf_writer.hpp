@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,10 @@ struct GltfAnimation {
 /// primitive each) and carrying the animation, each textured part's image embedded as PNG.
 /// The file appears only when complete (AtomicFile). Throws std::invalid_argument for parts or
 /// animation of inconsistent sizes, an index out of range, non-finite numbers or times not
-/// increasing; OutputError naming `path` if it cannot be written.
+/// increasing; OutputError naming `path` if it cannot be written. `before_commit` runs once the
+/// file is whole, before it is put in place: a stop polled there (an exception) leaves no file.
 void write_glb(const std::filesystem::path& path, const std::string& name,
-               const std::vector<GltfPart>& parts, const GltfAnimation& animation);
+               const std::vector<GltfPart>& parts, const GltfAnimation& animation,
+               const std::function<void()>& before_commit = {});
 
 }  // namespace bookspin::output

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "physics/shape.hpp"
@@ -17,7 +18,8 @@ void ExactModel::reset(const InitialState& initial) {
   const Eigen::Vector3d L0 = initial_angular_momentum(body_.moments, initial);
   const Eigen::Vector3d& moments = body_.moments;
   rotation_.emplace(moments, L0.cwiseQuotient(moments));
-  t_ = t_base_ = dt_ = 0.0;
+  failure_.clear();
+  t_ = t_of_R_ = t_base_ = dt_ = 0.0;
   steps_ = 0;
   R_ = rotation_->orientation(stretched_time(drag_, t_));
 }
@@ -35,7 +37,15 @@ void ExactModel::advance(double dt, long n) {
   }
   steps_ += n;
   t_ = t_base_ + static_cast<double>(steps_) * dt_;
-  R_ = rotation_->orientation(stretched_time(drag_, t_));
+  if (!failure_.empty()) return;
+  // Past the motion's time horizon (docs/physics.md §8, "How far in time") the run ends there,
+  // its reason said, as a diverged model's does (finite() false), rather than a row of noise.
+  try {
+    R_ = rotation_->orientation(stretched_time(drag_, t_));
+    t_of_R_ = t_;
+  } catch (const ExactHorizonError& beyond) {
+    failure_ = std::string("the exact model: ") + beyond.what();
+  }
 }
 
 Corners ExactModel::corners() const { return R_ * cage_corners_; }
@@ -44,14 +54,15 @@ Diagnostics ExactModel::diagnostics() const {
   // The shared rigid diagnostics give L, the axis cosines, strain and orthogonality from R;
   // ω and the energy are then taken from the exact ω(t) rather than from R and L.
   // Under drag: L = g(t) L0, ω = g(t) ω_free(s(t)) (docs/physics.md §21; g = 1, s = t without).
-  const double g = drag_decay(drag_, t_);
-  const Eigen::Vector3d omega = g * rotation_->omega_body(stretched_time(drag_, t_));
-  return prescribed_diagnostics(body_, R_, g * rotation_->angular_momentum_world(), t_, omega,
+  // (At R's time: past the horizon, the last state evaluated.)
+  const double g = drag_decay(drag_, t_of_R_);
+  const Eigen::Vector3d omega = g * rotation_->omega_body(stretched_time(drag_, t_of_R_));
+  return prescribed_diagnostics(body_, R_, g * rotation_->angular_momentum_world(), t_of_R_, omega,
                                 0.5 * omega.dot(body_.moments.cwiseProduct(omega)));
 }
 
 bool ExactModel::finite() const {
-  return std::isfinite(t_) && drag_defined_until(drag_, t_) && is_sane(R_);
+  return failure_.empty() && std::isfinite(t_) && drag_defined_until(drag_, t_) && is_sane(R_);
 }
 
 std::unique_ptr<Simulator> make_exact_simulator(const Body& body, Drag drag) {

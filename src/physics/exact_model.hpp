@@ -3,6 +3,7 @@
 // approximate model is measured against.
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "physics/drag.hpp"
 #include "physics/exact_solution.hpp"
@@ -32,7 +33,10 @@ class ExactModel final : public Simulator {
   Corners corners() const override;
   /// docs/physics.md §9 with the exact ω(t) and energy ½ ω·I_body ω; spring energy 0, |q| = 1.
   Diagnostics diagnostics() const override;
+  /// False past the motion's time horizon too (ExactRotation::time_horizon()), where
+  /// divergence_reason() says why.
   bool finite() const override;
+  std::string divergence_reason() const override { return failure_; }
 
   const ExactRotation& rotation() const { return *rotation_; }
   Eigen::Matrix3d orientation() const override { return R_; }  ///< R(t), body→world
@@ -45,9 +49,11 @@ class ExactModel final : public Simulator {
   std::optional<ExactRotation> rotation_;
   Eigen::Matrix3d R_ = Eigen::Matrix3d::Identity();
   double t_ = 0.0;
+  double t_of_R_ = 0.0;  ///< the time R_ was evaluated at (t_ until past the horizon)
   double t_base_ = 0.0;  ///< t when the current dt was first used
   double dt_ = 0.0;      ///< the current step
   long steps_ = 0;       ///< steps of dt_ since t_base_
+  std::string failure_;  ///< why the run ended (past the horizon), empty while it runs
 };
 
 /// The exact model for `body` (make_simulator() returns it for ModelKind::exact).

@@ -41,6 +41,13 @@ Eigen::Matrix3d sorting_rotation(const Eigen::Vector3d& moments) {
 
 Real sign_of(Real x) { return x < 0 ? -1.0L : 1.0L; }
 
+/// `angle` less the nearest multiple of 2π, in long double, before it is rounded to a double: a
+/// double would carry an angle of 2⁴⁰ rad only to 2⁻¹² (docs/physics.md §8, "How far in time").
+double reduced_angle(long double angle) {
+  constexpr Real kTwoPi = 2 * std::numbers::pi_v<Real>;
+  return static_cast<double>(angle - kTwoPi * std::round(angle / kTwoPi));
+}
+
 /// Rotation by ψ about the z axis.
 Eigen::Matrix3d rotation_z(double psi) {
   const double c = std::cos(psi), s = std::sin(psi);
@@ -61,15 +68,31 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   to_sorted_ = sorting_rotation(moments);
   I_ = to_sorted_.cwiseAbs() * moments;
   L_world_ = moments.cwiseProduct(omega0_body);
-  L_norm_ = L_world_.norm();
-  energy_ = 0.5 * omega0_body.dot(L_world_);
+  // |L| and |ω0| in long double: ψ's rates and a steady motion's angle take their rounding
+  // times t (docs/physics.md §8, "How far in time").
+  Real L2 = 0.0L, w2 = 0.0L, E = 0.0L;
+  for (int i = 0; i < 3; ++i) {
+    const Real w_i = omega0_body[i], L_i = static_cast<Real>(moments[i]) * w_i;
+    L2 += L_i * L_i;
+    w2 += w_i * w_i;
+    E += 0.5L * L_i * w_i;
+  }
+  // ½ ω·Iω too: in doubles ω·L overflows before it is halved (E = 9e307 gave inf).
+  energy_ = static_cast<double>(E);
+  L_long_ = std::sqrt(L2);
+  rate_long_ = std::sqrt(w2);
+  // Not Eigen's norm(): its squares overflow a double from |L| ~ 1e154 (and underflow below
+  // 1e-154), where |L| itself is far inside the range.
+  L_norm_ = static_cast<double>(L_long_);
   const Eigen::Vector3d w = to_sorted_ * omega0_body;
   classify(w);
-  if (case_ == ExactCase::steady) return;
-  set_phase(w);
-  set_landen_chain();
-  if (parts_ == ExactParts::omega_and_orientation) set_precession();
-  anchor_ = (momentum_frame(I_.cwiseProduct(w)) * to_sorted_).transpose();
+  if (case_ != ExactCase::steady) {
+    set_phase(w);
+    set_landen_chain();
+    if (parts_ == ExactParts::omega_and_orientation) set_precession();
+    anchor_ = (momentum_frame(scaled_momentum({w[0], w[1], w[2]})) * to_sorted_).transpose();
+  }
+  set_horizon();
 }
 
 void ExactRotation::classify(const Eigen::Vector3d& w) {
@@ -142,7 +165,9 @@ void ExactRotation::set_phase(const Eigen::Vector3d& w) {
   const Real cn0 = w[cn_axis_] / amplitude_[cn_axis_];
   const Real sn0 = w[1] / amplitude_[1];
   if (case_ == ExactCase::separatrix) {
-    u0_ = std::asinh(sn0 / cn0);  // sn = tanh u, cn = sech u
+    // sn = tanh u, cn = sech u ≥ 0: |cn0|, since a component −0 (its sign taken as +) would
+    // give sn0/−0 = ∓∞ and ω(0) the wrong sign on axis 2.
+    u0_ = std::asinh(sn0 / std::abs(cn0));
     K_ = std::numeric_limits<Real>::infinity();
   } else {
     u0_ = boost::math::ellint_1(k_, std::atan2(sn0, cn0));  // u0 = F(am u0 | k)
@@ -217,6 +242,14 @@ ExactRotation::Jacobi ExactRotation::jacobi_boost(long double u) const {
   return j;
 }
 
+std::array<long double, 3> ExactRotation::sorted_omega_long(const Jacobi& j) const {
+  std::array<Real, 3> w{};
+  w[cn_axis_] = amplitude_[cn_axis_] * j.cn;
+  w[1] = amplitude_[1] * j.sn;
+  w[dn_axis_] = amplitude_[dn_axis_] * j.dn;
+  return w;
+}
+
 Eigen::Vector3d ExactRotation::sorted_omega(const Jacobi& j) const {
   Eigen::Vector3d w;
   w[cn_axis_] = static_cast<double>(amplitude_[cn_axis_] * j.cn);
@@ -242,11 +275,13 @@ ExactOmegaForm ExactRotation::omega_form() const {
 }
 
 Eigen::Vector3d ExactRotation::omega_body(double t) const {
+  check_horizon(t);
   if (case_ == ExactCase::steady) return omega0_;
   return to_sorted_.transpose() * sorted_omega(jacobi(phase(t)));
 }
 
 Eigen::Vector3d ExactRotation::omega_dot_body(double t) const {
+  check_horizon(t);
   if (case_ == ExactCase::steady) return Eigen::Vector3d::Zero();
   const Jacobi j = jacobi(phase(t));
   Eigen::Vector3d w_dot;
@@ -276,7 +311,7 @@ void ExactRotation::set_precession() {
   const Real ratio_s = Is * amplitude_[1] / (Ic * amplitude_[c]);
   char_n_ = -ratio_r * ratio_r;
   const Real one_minus_n = ratio_s * ratio_s;
-  const Real L = L_norm_;
+  const Real L = L_long_;
   psi_rate_ = L / Ic;
   psi_gain_ = L * ((Ic - Is) / (Ic * Is)) * one_minus_n / lambda_;
   if (case_ == ExactCase::separatrix) return;  // S(u) − S(u0) at once (separatrix_S)
@@ -432,7 +467,8 @@ long double ExactRotation::separatrix_S(long double u, long double u_start, long
 }
 
 double ExactRotation::precession_angle(double t) const {
-  if (case_ == ExactCase::steady) return omega0_.norm() * t;
+  check_horizon(t);
+  if (case_ == ExactCase::steady) return static_cast<double>(rate_long_ * t);
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
   return static_cast<double>(precession_at(t, jacobi(phase(t)), Evaluation::fast, psi_S0_));
@@ -449,6 +485,20 @@ long double ExactRotation::precession_at(double t, const Jacobi& j, Evaluation h
 
 // P: rows are the momentum frame's axes in sorted body coordinates. z = L/|L|,
 // y = (L × e_r)/|L × e_r| (its components are ±L_i or 0, so no cancellation), x = y × z.
+// I ω (sorted axes) formed in long double and divided by its largest component: |L| itself may
+// lie beyond a double's range where ω and I do not (moments 1e-190, ω 1e-179: |L| 1e-369), and
+// the squares in normalized() overflow or underflow a double from |L| ~ 1e±154.
+Eigen::Vector3d ExactRotation::scaled_momentum(const std::array<long double, 3>& w_sorted) const {
+  std::array<Real, 3> L{};
+  Real largest = 0.0L;
+  for (int i = 0; i < 3; ++i) {
+    L[i] = static_cast<Real>(I_[i]) * w_sorted[i];
+    largest = std::max(largest, std::abs(L[i]));
+  }
+  return {static_cast<double>(L[0] / largest), static_cast<double>(L[1] / largest),
+          static_cast<double>(L[2] / largest)};
+}
+
 Eigen::Matrix3d ExactRotation::momentum_frame(const Eigen::Vector3d& L_sorted) const {
   const Eigen::Vector3d z = L_sorted.normalized();
   const Eigen::Vector3d y = L_sorted.cross(Eigen::Vector3d::Unit(dn_axis_)).normalized();
@@ -465,6 +515,7 @@ Eigen::Matrix3d ExactRotation::rotation_from(const Eigen::Vector3d& L_sorted, do
 
 // One Jacobi evaluation serves R(t) and ω(t) alike.
 ExactState ExactRotation::state(double t) const {
+  check_horizon(t);
   ExactState state;
   state.t = t;
   Eigen::Matrix3d R;
@@ -477,22 +528,36 @@ ExactState ExactRotation::state(double t) const {
     const Jacobi j = jacobi(phase(t));
     R = orientation_at(t, j, Evaluation::fast, psi_S0_);
     state.omega_body = to_sorted_.transpose() * sorted_omega(j);
+    // L and E from ω in long double: a component of ω may round to 0 (or a subnormal) while its
+    // I_i ω_i is a fair share of L (moments 1e267 and 1e-153 in one body).
+    const std::array<Real, 3> w = sorted_omega_long(j);
+    Eigen::Vector3d L_sorted;
+    Real E = 0.0L;
+    for (int i = 0; i < 3; ++i) {
+      L_sorted[i] = static_cast<double>(static_cast<Real>(I_[i]) * w[i]);
+      E += 0.5L * static_cast<Real>(I_[i]) * w[i] * w[i];
+    }
+    state.L = R * (to_sorted_.transpose() * L_sorted);
+    state.E = static_cast<double>(E);
   }
   Eigen::Quaterniond q(R);
   q.normalize();
   if (q.w() < 0.0) q.coeffs() = -q.coeffs();
   state.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
   state.omega_world = R * state.omega_body;
-  state.L = R * moments_.cwiseProduct(state.omega_body);
-  state.E = 0.5 * state.omega_body.dot(moments_.cwiseProduct(state.omega_body));
+  if (case_ == ExactCase::steady) {
+    state.L = R * moments_.cwiseProduct(state.omega_body);
+    state.E = 0.5 * state.omega_body.dot(moments_.cwiseProduct(state.omega_body));
+  }
   return state;
 }
 
 Eigen::Matrix3d ExactRotation::orientation(double t) const {
+  check_horizon(t);
   if (case_ == ExactCase::steady) {
-    const double rate = omega0_.norm();
-    if (rate == 0.0) return Eigen::Matrix3d::Identity();
-    return Eigen::AngleAxisd(rate * t, omega0_ / rate).toRotationMatrix();
+    if (rate_long_ == 0.0L) return Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d axis = omega0_ / static_cast<double>(rate_long_);
+    return Eigen::AngleAxisd(reduced_angle(rate_long_ * t), axis.normalized()).toRotationMatrix();
   }
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
@@ -501,44 +566,8 @@ Eigen::Matrix3d ExactRotation::orientation(double t) const {
 
 Eigen::Matrix3d ExactRotation::orientation_at(double t, const Jacobi& j, Evaluation how,
                                               long double S0) const {
-  const Eigen::Vector3d L_sorted = I_.cwiseProduct(sorted_omega(j));
-  return rotation_from(L_sorted, static_cast<double>(precession_at(t, j, how, S0)));
-}
-
-// The evaluation as it was: S(u0) by Boost once, then per row R(t) and ω(t) each from their own
-// Boost jacobi_elliptic and ψ by Boost's ellint_rj.
-ExactRotation::BoostReference ExactRotation::boost_reference() const {
-  const bool periodic = case_ != ExactCase::steady && case_ != ExactCase::separatrix &&
-                        parts_ == ExactParts::omega_and_orientation;
-  return {*this, periodic ? periodic_S(u0_, jacobi_boost(u0_), Evaluation::boost) : 0.0L};
-}
-
-ExactState ExactRotation::BoostReference::state(double t) const {
-  const ExactRotation& e = *exact_;
-  if (e.case_ == ExactCase::steady) return e.state(t);
-  if (e.parts_ == ExactParts::omega_only)
-    throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  ExactState state;
-  state.t = t;
-  const Eigen::Matrix3d R = e.orientation_at(t, e.jacobi_boost(e.phase(t)), Evaluation::boost, S0_);
-  Eigen::Quaterniond q(R);
-  q.normalize();
-  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
-  state.q = Eigen::Vector4d(q.w(), q.x(), q.y(), q.z());
-  state.omega_body = e.to_sorted_.transpose() * e.sorted_omega(e.jacobi_boost(e.phase(t)));
-  state.omega_world = R * state.omega_body;
-  state.L = R * e.moments_.cwiseProduct(state.omega_body);
-  state.E = 0.5 * state.omega_body.dot(e.moments_.cwiseProduct(state.omega_body));
-  return state;
-}
-
-double ExactRotation::BoostReference::precession_angle(double t) const {
-  const ExactRotation& e = *exact_;
-  if (e.case_ == ExactCase::steady) return e.precession_angle(t);
-  if (e.parts_ == ExactParts::omega_only)
-    throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  return static_cast<double>(
-      e.precession_at(t, e.jacobi_boost(e.phase(t)), Evaluation::boost, S0_));
+  const Eigen::Vector3d L_sorted = scaled_momentum(sorted_omega_long(j));
+  return rotation_from(L_sorted, reduced_angle(precession_at(t, j, how, S0)));
 }
 
 double ExactRotation::period() const {

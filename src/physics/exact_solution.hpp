@@ -4,6 +4,9 @@
 // of the body about the fixed angular momentum.
 #include <Eigen/Dense>
 #include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace bookspin::physics {
@@ -16,6 +19,20 @@ enum class ExactCase {
   around_largest,   ///< case A, L² > 2E·I2: ω circles axis 3
   around_smallest,  ///< case B, L² < 2E·I2: ω circles axis 1
   separatrix,       ///< L² = 2E·I2, k = 1: ω tends to axis 2 forever, no period
+};
+
+/// The largest angle, in radians, the exact motion carries (docs/physics.md §8, "How far in
+/// time"): its phase u = λt + u0 (off the separatrix) and its precession angle ψ about L (for a
+/// steady motion the rotation angle |ω0| t), 2⁴⁰ ≈ 1.1e12. A long double (64-bit significand)
+/// holds such an angle to 2⁻²³ ≈ 1.2e-7 rad; beyond it the few roundings of λt, of the whole
+/// periods and of the reduction by 2π grow past 1e-6 rad, and at 2⁶⁴ the phase is noise.
+inline constexpr double kExactMaxAngle = 0x1p40;
+
+/// What the exact motion throws for a time beyond its horizon (ExactRotation::time_horizon()):
+/// what() is the whole reason, naming t and the horizon (no NaN row, no row of noise).
+class ExactHorizonError : public std::domain_error {
+ public:
+  using std::domain_error::domain_error;
 };
 
 /// What an ExactRotation is built for: ω and the orientation, or ω alone (a fit that evaluates
@@ -67,6 +84,8 @@ struct ExactState {
 class ExactRotation {
  public:
   /// Throws std::invalid_argument if a moment is not finite and positive or ω0 is not finite.
+  /// Every evaluation below (ω, ω̇, R, ψ, state) throws ExactHorizonError for |t| beyond
+  /// time_horizon().
   ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
                 ExactParts parts = ExactParts::omega_and_orientation);
 
@@ -121,6 +140,14 @@ class ExactRotation {
   /// Time between successive sign changes of ω about the intermediate axis, T/2 = 2K(k)/λ.
   double flip_period() const;
 
+  /// The largest |t| (time units) at which this motion is evaluated (docs/physics.md §8, "How far
+  /// in time"): the time at which its phase λ|t| + |u0| (off the separatrix) or the bound
+  /// max(|L|/I_c, |L|/I_s)·|t| on its precession angle (ExactParts::omega_and_orientation only;
+  /// |ω0|·|t| for a steady motion) reaches kExactMaxAngle. Infinite for a body at rest.
+  double time_horizon() const { return horizon_; }
+  /// Why `t` is beyond time_horizon(), in one line that names t, the horizon and the angle.
+  std::string horizon_reason(double t) const;
+
   double energy() const { return energy_; }                 ///< E = ½ ω·I ω, energy units
   double angular_momentum_norm() const { return L_norm_; }  ///< |L|
   const Eigen::Vector3d& angular_momentum_world() const { return L_world_; }  ///< L, world
@@ -157,7 +184,14 @@ class ExactRotation {
   void set_phase(const Eigen::Vector3d& w);
   Jacobi jacobi(long double u) const;
   long double phase(double t) const { return lambda_ * static_cast<long double>(t) + u0_; }
+  /// Throws ExactHorizonError where |t| > horizon_ (or t is NaN).
+  void check_horizon(double t) const {
+    if (!(std::abs(t) <= horizon_)) throw ExactHorizonError(horizon_reason(t));
+  }
+  void set_horizon();
   Eigen::Vector3d sorted_omega(const Jacobi& j) const;
+  /// sorted_omega() before it is rounded to doubles.
+  std::array<long double, 3> sorted_omega_long(const Jacobi& j) const;
   void set_precession();
   long double half_periods(long double u, const Jacobi& j, long double& sn, long double& cn) const;
   long double periodic_S(long double u, const Jacobi& j, Evaluation how) const;
@@ -165,6 +199,7 @@ class ExactRotation {
   long double separatrix_S(long double u, long double u_start, long double du) const;
   /// ψ(t) from sn, cn, dn at u(t); S0 = S(u0) as `how` evaluates it.
   long double precession_at(double t, const Jacobi& j, Evaluation how, long double S0) const;
+  Eigen::Vector3d scaled_momentum(const std::array<long double, 3>& w_sorted) const;
   Eigen::Matrix3d momentum_frame(const Eigen::Vector3d& L_sorted) const;
   Eigen::Matrix3d rotation_from(const Eigen::Vector3d& L_sorted, double psi) const;
   Eigen::Matrix3d orientation_at(double t, const Jacobi& j, Evaluation how, long double S0) const;
@@ -175,6 +210,10 @@ class ExactRotation {
   Eigen::Vector3d I_;          ///< sorted moments I1 ≤ I2 ≤ I3
   Eigen::Vector3d L_world_;
   double energy_ = 0.0, L_norm_ = 0.0;
+  long double L_long_ = 0.0L;      ///< |L| in long double (ψ's rates: docs/physics.md §8)
+  long double rate_long_ = 0.0L;   ///< |ω0| in long double (a steady motion's angle)
+  double horizon_ = 0.0;           ///< time_horizon()
+  bool horizon_by_phase_ = false;  ///< the phase, not ψ, sets the horizon
   ExactCase case_ = ExactCase::steady;
   ExactParts parts_ = ExactParts::omega_and_orientation;
   int cn_axis_ = 0, dn_axis_ = 2;  ///< sorted axes carrying cn and dn (sn is always axis 2)

@@ -153,7 +153,10 @@ GltfExportResult export_glb(const scene::Scene& scene, const std::filesystem::pa
   std::filesystem::create_directories(glb.parent_path(), ec);
   if (ec) throw_output_error("cannot create directory", glb.parent_path(), ec.value());
   stop_if_asked(stop, "export write");
-  output::write_glb(result.path, scene.name, parts, animation);
+  // Polled again once the file is whole, before it replaces the earlier one: a signal while
+  // the GLB was formed (a random moment's test found it written and exit 0) leaves it as it was.
+  output::write_glb(result.path, scene.name, parts, animation,
+                    [&stop] { stop_if_asked(stop, "export commit"); });
   return result;
 }
 

@@ -9,12 +9,14 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "analysis/conformance.hpp"
 #include "common/errors.hpp"
 #include "scene/scene.hpp"
+#include "support/exact_motion_property.hpp"
 
 namespace bookspin::jobs {
 namespace {
@@ -114,6 +116,102 @@ TEST(ExactMotion, AtGivenTimesAreTheScenariosRowsAtThem) {
             "omega0[1]: inf is not a finite angular velocity");
   EXPECT_EQ(error_of(I, w, {0.0, NAN}), "t[1]: nan is not a finite time");
   EXPECT_TRUE(exact_motion_at(I, w, {}).empty());
+}
+
+}  // namespace
+}  // namespace bookspin::jobs
+
+namespace bookspin::jobs {
+namespace {
+
+// The door's property over the whole input space (docs/physics.md §8, "How far in time"):
+// exact_motion_at gives finite rows for every seeded draw of tests/support/
+// exact_motion_property.hpp, or an InputError naming the true cause, judged here apart from the
+// code: a bad argument names it, an energy or |L| beyond a double (summed here in long double)
+// says "overflows", and a t past the horizon names that t and the horizon, never the energy.
+TEST(ExactMotionDoor, AnyMomentsOmegaAndTimesGiveFiniteRowsOrTheTrueRefusal) {
+  std::mt19937_64 rng(1082);
+  std::uniform_int_distribution<int> spoil(0, 19);
+  int refused = 0, given = 0;
+  for (int n = 0; n < 6000; ++n) {
+    test_support::ExactInput in = test_support::draw_exact_input(rng);
+    const int bad = spoil(rng);  // a few bad arguments among the good
+    if (bad == 0) in.moments[n % 3] = n % 2 ? -1.0 : std::nan("");
+    if (bad == 1) in.omega0[n % 3] = n % 2 ? 2e6 : -3e7;
+    if (bad == 2) in.t.push_back(n % 2 ? INFINITY : std::nan(""));
+    const test_support::LongInvariants inv = test_support::long_invariants(in.moments, in.omega0);
+    const bool overflow = inv.E > 1.7976931348623157e308L || inv.L > 1.7976931348623157e308L;
+    try {
+      const std::vector<ExactMotionRow> rows = exact_motion_at(in.moments, in.omega0, in.t);
+      ASSERT_GT(bad, 2) << "a bad argument accepted: " << test_support::describe(in);
+      ASSERT_FALSE(overflow) << test_support::describe(in);
+      for (const ExactMotionRow& r : rows)
+        ASSERT_TRUE(r.q.allFinite() && r.omega_body.allFinite() && r.L.allFinite() &&
+                    std::isfinite(r.E))
+            << test_support::describe(in);
+      ++given;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      SCOPED_TRACE(what + " for " + test_support::describe(in));
+      ++refused;
+      if (bad == 0) {
+        EXPECT_EQ(what.rfind("moments[", 0), 0u);
+      } else if (bad == 1) {
+        EXPECT_TRUE(what.rfind("omega0[", 0) == 0 || what.rfind("moments[", 0) == 0);
+      } else if (what.find("not a finite time") != std::string::npos) {
+        // A t spoilt here, or drawn about the horizon of a motion slower than 1e-300.
+        ASSERT_EQ(what.rfind("t[", 0), 0u);
+        const std::size_t index = std::stoul(what.substr(2));
+        ASSERT_LT(index, in.t.size());
+        EXPECT_FALSE(std::isfinite(in.t[index]));
+      } else if (what.find("overflows a double") != std::string::npos) {
+        EXPECT_TRUE(overflow || inv.E > 1.79e308L || inv.L > 1.79e308L);
+      } else {
+        // Past the horizon: the t named is one given, its angle bound |t| |L|/I_min past 2^40.
+        ASSERT_EQ(what.rfind("t[", 0), 0u);
+        EXPECT_NE(what.find("beyond the exact motion's time horizon"), std::string::npos);
+        EXPECT_EQ(what.find("energy"), std::string::npos);
+        const std::size_t index = std::stoul(what.substr(2));
+        ASSERT_LT(index, in.t.size());
+        EXPECT_GE(std::abs(in.t[index]) * inv.L / in.moments.minCoeff(),
+                  physics::kExactMaxAngle * (1 - 1e-9L));
+      }
+    }
+  }
+  EXPECT_GT(refused, 1000);
+  EXPECT_GT(given, 2000);
+}
+
+// The inputs of the crash (a SIGSEGV in Python) and of the false "energy overflows": the
+// horizon's reason, naming t[1].
+TEST(ExactMotionDoor, ATimeOf1e300IsRefusedForTheHorizonNotTheEnergy) {
+  for (const Eigen::Vector3d& moments : {Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(3, 1, 2)}) {
+    try {
+      (void)exact_motion_at(moments, Eigen::Vector3d(0.1, 1, 0.05), {0.0, 1e300});
+      ADD_FAILURE() << "t = 1e300 evaluated";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("t[1]: t = 1e+300 is beyond the exact motion's time horizon, |t| ≤ ", 0),
+                0u)
+          << what;
+      EXPECT_EQ(what.find("energy"), std::string::npos) << what;
+    }
+  }
+}
+
+// A scenario whose dt takes its last step past the horizon (the npm package's exactMotion with
+// dt = 1e100 returned 3001 rows of NaN): refused, naming the scenario and dt × steps.
+TEST(ExactMotionDoor, AScenarioPastTheHorizonIsRefusedNamingDtAndSteps) {
+  analysis::Scenario s = scenario("mujoco-test-box");
+  s.dt = 1e100;
+  try {
+    (void)exact_motion(s);
+    ADD_FAILURE() << "evaluated";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(s.name + ": dt × steps: t = ", 0), 0u) << what;
+    EXPECT_NE(what.find("time horizon"), std::string::npos) << what;
+  }
 }
 
 }  // namespace

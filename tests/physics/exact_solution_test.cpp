@@ -188,7 +188,7 @@ TEST(ExactSolution, StateConservesEnergyAndMomentumWithinFourUlpsOnRandomBodies)
 // state() (the Landen chain and R_J from per-motion constants) against the BoostReference
 // (Boost's jacobi_elliptic and ellint_rj, as evaluated before), on 1,000 random
 // bodies, the scenarios above and bodies within 1e-2…1e-12 of the separatrix, t up to 200:
-// ω and E to 2 ulps of their size, L to 4; R(t) to 4 ulps of 1 + |ψ| (one ulp of a ψ of a
+// ω to 2 ulps of its size, E to 3, L to 4; R(t) to 4 ulps of 1 + |ψ| (one ulp of a ψ of a
 // few hundred radians turns q by more than one of its own).
 TEST(ExactSolution, StateEqualsBoostsEvaluationToAFewUlps) {
   std::mt19937_64 engine(7);
@@ -220,7 +220,10 @@ TEST(ExactSolution, StateEqualsBoostsEvaluationToAFewUlps) {
                                        (fast.omega_world - reference.omega_world).norm() / w) /
                                   (eps * turn)};
       EXPECT_LE(ulps[0], 2.0) << b.name << " t = " << t;
-      EXPECT_LE(ulps[1], 2.0) << b.name << " t = " << t;
+      // E summed in long double here (so that an ω component rounded to 0 keeps its share of E,
+      // docs/physics.md §8, "How far in time"), in doubles by the reference: 1.2 ulps from the
+      // invariant, up to 2.5 from the reference's own rounding.
+      EXPECT_LE(ulps[1], 3.0) << b.name << " t = " << t;
       EXPECT_LE(ulps[2], 4.0) << b.name << " t = " << t;
       EXPECT_LE(ulps[3], 4.0) << b.name << " t = " << t;
       for (int i = 0; i < 4; ++i) worst[i] = std::max(worst[i], ulps[i]);

@@ -56,7 +56,10 @@ scene::Scene figure_scene(const std::string& name, std::vector<std::string> over
     return o.rfind("render.sphere=", 0) == 0;
   });
   if (!sphere_chosen) overrides.insert(overrides.begin(), "render.sphere=false");
-  overrides.insert(overrides.begin(), {"render.width=" + size, "render.height=" + size});
+  // The filtering the goldens were made with, first so that a test's own choice overrides it
+  // (kGoldenFiltering).
+  overrides.insert(overrides.begin(), {"render.width=" + size, "render.height=" + size,
+                                       std::string(kGoldenFiltering)});
   return scene::parse_scene(scenes_dir() / (name + ".toml"), overrides);
 }
 
@@ -114,9 +117,9 @@ void expect_pinned_frames_match(const scene::Scene& scene, const std::string& pr
 
 RgbaImage rendered_frame(const std::string& scene, int index, int width, int height,
                          const std::vector<std::string>& sets, const std::string& folder) {
-  std::string args = "--set render.width=" + std::to_string(width) +
-                     " --set render.height=" + std::to_string(height) +
-                     " --set render.preset='\"ultrafast\"'";
+  std::string args =
+      std::string("--set ") + kGoldenFiltering + " --set render.width=" + std::to_string(width) +
+      " --set render.height=" + std::to_string(height) + " --set render.preset='\"ultrafast\"'";
   for (const std::string& set : sets) args += " --set " + set;
   const auto dir = test::fresh_dir("picture/" + folder);
   const std::string command = std::string(BOOKSPIN_EXE) + " render " + BOOKSPIN_SOURCE_DIR +

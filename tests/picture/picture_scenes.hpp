@@ -13,10 +13,18 @@ namespace bookspin::picture {
 /// Goldens are 256×256: big enough to show faces, text bands and overlays, small in git.
 inline constexpr int kGoldenSize = 256;
 
+/// The texture filtering every golden was made with, pinned in each scene the picture tests
+/// render (figure_scene, rendered_frame), before the test's own overrides: trilinear, no
+/// anisotropic filtering. The automatic value (render.anisotropy = 0) is trilinear on llvmpipe,
+/// where the goldens were made, but 4× anisotropic on a GPU, which drew five goldens' grazing
+/// covers sharper than the tolerance allows (docs/performance.md, "A GPU").
+inline constexpr const char* kGoldenFiltering = "render.anisotropy=1";
+
 /// The stems of scenes/fig*.toml, sorted (every figure gets goldens automatically).
 std::vector<std::string> figure_scene_names();
 
-/// scenes/<name>.toml at kGoldenSize², with further `overrides` ("key=value", TOML). Without
+/// scenes/<name>.toml at kGoldenSize² with kGoldenFiltering, with further `overrides`
+/// ("key=value", TOML). Without
 /// the momentum sphere (render.sphere=false) unless `overrides` set render.sphere: the
 /// figures' goldens predate it and stay as they are; the sphere has goldens of its own.
 scene::Scene figure_scene(const std::string& name, std::vector<std::string> overrides = {});
@@ -45,9 +53,9 @@ void expect_pinned_frames_match(const scene::Scene& scene, const std::string& pr
 std::string test_name(std::string name);
 
 /// Frame `index` of `bookspin render scenes/<scene>.toml --frames index+1` at `width`×`height`
-/// pixels with the fastest MP4 preset (the MP4 is not looked at) and the further overrides
-/// `sets` ("key=value", TOML; the CLI's own path: a comparison runs one simulator per tile),
-/// rendered into a fresh folder named `folder` and read back from its PNG; the folder is
+/// pixels with kGoldenFiltering and the fastest MP4 preset (the MP4 is not looked at) and the
+/// further overrides `sets` ("key=value", TOML; the CLI's own path: a comparison runs one simulator
+/// per tile), rendered into a fresh folder named `folder` and read back from its PNG; the folder is
 /// removed once read. A failed render is a test failure and gives an empty (0×0) image.
 RgbaImage rendered_frame(const std::string& scene, int index, int width, int height,
                          const std::vector<std::string>& sets, const std::string& folder);

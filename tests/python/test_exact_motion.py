@@ -1,6 +1,9 @@
 """bookspin.exact_motion against the command line's exact motion (flipcheck export, the exact
 model through simulate) and against the physics it must obey (docs/physics.md §8)."""
 import json
+import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -125,9 +128,13 @@ def test_any_order_of_t_and_one_time(bookspin):
     (([1, 2, 3], [1e200, 1e200, 0], [0, 1]),
      "omega0[0]: 1e+200 is outside the angular velocity's range, ±1e+06 rad per time unit "
      "(a scene's initial.angular_velocity)"),
+    # The range is on the magnitude: far below -1e6 as far above.
+    (([1, 2, 3], [0, -3e7, 0], [0, 1]),
+     "omega0[1]: -3e+07 is outside the angular velocity's range, ±1e+06 rad per time unit "
+     "(a scene's initial.angular_velocity)"),
     (([1e300, 2e300, 3e300], [1e6, 1e6, 0], [0, 1]),
-     "moments (1e+300, 2e+300, 3e+300) and omega0 (1e+06, 1e+06, 0): the motion at t[0] = 0 "
-     "overflows a double (its energy ½ ω·Iω or |L| is beyond 1.8e308)"),
+     "moments (1e+300, 2e+300, 3e+300) and omega0 (1e+06, 1e+06, 0): the motion's energy "
+     "½ ω·Iω or |L| overflows a double (beyond 1.8e308)"),
 ])
 def test_bad_input_raises_bookspin_error(bookspin, args, line):
     with pytest.raises(bookspin.Error) as raised:
@@ -144,3 +151,86 @@ def test_an_array_too_large_to_copy_says_its_size(bookspin):
         bookspin.exact_motion([1, 2, 3], [0, 1, 0], t)
     assert str(raised.value) == ("t: cannot copy the array into memory (100000000000 values, "
                                  "745 GiB as float64): too large for this machine")
+
+
+def test_a_time_past_the_horizon_is_refused_for_its_phase_not_a_crash(bookspin):
+    # It killed the process with SIGSEGV (the table of base points indexed by the phase at
+    # t = 1e300), and with other moments was refused as an energy overflow: run in a child so
+    # that a crash is a failure here, not the end of the session.
+    code = ("import bookspin\n"
+            "for moments in ([1, 2, 3], [2, 1, 3]):\n"
+            "    try:\n"
+            "        bookspin.exact_motion(moments, [0.1, 1, 0.05], [0.0, 1e300])\n"
+            "    except bookspin.Error as e:\n"
+            "        print(e)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, (done.returncode, done.stderr)
+    lines = done.stdout.splitlines()
+    assert len(lines) == 2, done.stdout
+    for line in lines:
+        assert line.startswith("t[1]: t = 1e+300 is beyond the exact motion's time horizon, "
+                               "|t| ≤ "), line
+        assert "energy" not in line
+
+
+def test_any_moments_omega_and_times_give_finite_rows_or_the_true_refusal(bookspin):
+    # The door's property over the whole input space, seeded (docs/physics.md §8, "How far in
+    # time"; the C++ core's is tests/physics/exact_horizon_test.cpp and tests/fuzz/exact_fuzzer):
+    # moments across 1e-300…1e300, near-symmetric bodies, ω0 of either sign down to 1e-300, t
+    # across ±1e-300…1e300. Judged apart from the code: |L| and E from the inputs, and every
+    # angle's rate between |L|/I_max and |L|/I_min, so a t refused for the horizon has
+    # |t| |L|/I_min past 2^40 and a t given has |t| |L|/I_max within it.
+    rng = np.random.default_rng(82)
+    max_angle = 2.0 ** 40
+    refused = given = 0
+    for _ in range(400):
+        kind = rng.integers(3)
+        if kind == 0:
+            moments = 10.0 ** rng.uniform(-300, 300, 3)
+        elif kind == 1:
+            moments = 10.0 ** rng.uniform(-300, 300) * rng.uniform(1, 4, 3)
+        else:
+            base = 10.0 ** rng.uniform(-300, 300)
+            moments = np.array([base, base * (1 + 10.0 ** rng.uniform(-16, -3)),
+                                base * rng.uniform(0.5, 4)])
+        omega0 = 10.0 ** rng.uniform(-300, 6) * rng.uniform(-1, 1, 3)
+        t = np.sign(rng.uniform(-1, 1, 3)) * 10.0 ** rng.uniform(-300, 300, 3)
+        I = [float(m) for m in moments]
+        # In logarithms: |L| and E may lie beyond a double where the motion's rows do not.
+        log_L = log_sum([2 * (math.log(i) + log_abs(w)) for i, w in zip(I, omega0)]) / 2
+        log_E = log_sum([math.log(0.5 * i) + 2 * log_abs(w) for i, w in zip(I, omega0)])
+        try:
+            got = bookspin.exact_motion(moments, omega0, t)
+        except bookspin.Error as e:
+            refused += 1
+            text = str(e)
+            if "overflows a double" in text:
+                assert max(log_E, log_L) > math.log(1.7e308), (text, I, omega0)
+                continue
+            assert text.startswith("t["), text
+            assert "beyond the exact motion's time horizon" in text and "energy" not in text
+            index = int(text[2:text.index("]")])
+            assert (log_abs(t[index]) + log_L - math.log(min(I))
+                    >= math.log(max_angle) - 1e-9), (text, I, omega0)
+            continue
+        given += 1
+        for key in ("q", "omega_body", "omega_world", "L_world", "E"):
+            assert np.isfinite(got[key]).all(), (key, I, omega0, t)
+        for time in t:
+            assert log_abs(time) + log_L - math.log(max(I)) <= math.log(max_angle) + 1e-9
+    assert refused > 50 and given > 50, (refused, given)
+
+
+
+def log_abs(x):
+    """ln |x|, -inf for 0."""
+    return math.log(abs(x)) if x != 0 else -math.inf
+
+
+def log_sum(logs):
+    """ln Σ e^l, scaled by the largest."""
+    top = max(logs)
+    if top == -math.inf:
+        return top
+    return top + math.log(sum(math.exp(l - top) for l in logs))

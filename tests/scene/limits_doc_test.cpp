@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -238,6 +239,94 @@ TEST(LimitsTable, DefaultsAreWhatAMissingKeyGives) {
       ASSERT_EQ(got.count(key), 1u) << "no check for this default";
       EXPECT_EQ(got.at(key), *limit.fallback);
     }
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::scene
+
+namespace bookspin::scene {
+namespace {
+
+/// Whether `value` lies in `limit`'s range, judged here from the table's numbers alone: the
+/// range on the signed value, and the smallest non-zero size on the magnitude (a vector key gets
+/// `value` in all three components: its length is |value| √3).
+bool in_range(const Limit& limit, double value, bool vector) {
+  const bool above_min = limit.min_open ? value > limit.min : value >= limit.min;
+  const double size = std::abs(value) * (vector ? std::sqrt(3.0) : 1.0);
+  // The rules beside the table (scenes/README.md, "Limits"): even picture sizes, and MSAA's
+  // sample counts.
+  const std::string key(limit.key);
+  if ((key == "render.width" || key == "render.height") && std::fmod(value, 2.0) != 0.0)
+    return false;
+  if (key == "render.msaa" && value != 1 && value != 2 && value != 4 && value != 8) return false;
+  return above_min && value <= limit.max &&
+         (value == 0.0 || limit.smallest_nonzero == 0.0 || size >= limit.smallest_nonzero);
+}
+
+/// Every limit, both signs, across the whole double range (seeded): a value is accepted exactly
+/// where the table's range holds it, and a refused one names its key. A check made on the signed
+/// value where the magnitude was meant (ω0 far below −1e6 accepted, above refused), or on one
+/// side only, fails here for its key.
+TEST(LimitsTable, EveryLimitHoldsOnBothSignsAcrossTheWholeRange) {
+  std::mt19937_64 rng(6);
+  std::uniform_real_distribution<double> exponent(-300.0, 300.0), unit(0.0, 1.0);
+  for (const Limit& limit : kLimits) {
+    const std::string key(limit.key);
+    SCOPED_TRACE(key);
+    const bool vector =
+        key == "book.size" || key == "initial.angular_velocity" || key == "render.camera_direction";
+    if (key == "initial.seed") continue;  // 2⁶³ − 1 is not a double: LimitsTable.BoundsAre…
+    std::vector<double> values;
+    for (double bound : {limit.min, limit.max})
+      for (double sign : {-1.0, 1.0})
+        for (double factor : {1.0, 1.5, 10.0, 1e6})
+          values.push_back(sign * std::abs(bound) * factor);
+    for (int n = 0; n < 60; ++n) {
+      double v = std::pow(10.0, limit.integer ? exponent(rng) / 20.0 : exponent(rng));
+      if (limit.integer) v = std::round(v);
+      values.push_back(n % 2 ? -v : v);
+      values.push_back(limit.min + (limit.max - limit.min) * unit(rng) * (n % 2 ? -1.0 : 1.0));
+    }
+    for (double value : values) {
+      if (limit.integer) value = std::round(value);
+      const std::string error =
+          error_of(scene_with(limit, number_text(value, limit.integer), vector));
+      if (in_range(limit, value, vector)) {
+        EXPECT_EQ(error.find(key + ": "), std::string::npos) << value << ": " << error;
+      } else {
+        EXPECT_NE(error.find(key + ": "), std::string::npos) << value << " accepted: " << error;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::scene
+
+namespace bookspin::scene {
+namespace {
+
+/// time.duration's rounding rule (scenes/README.md, "Keys"), on seeded durations, steps and
+/// frame counts of every size: the last frame is at or just past the duration (within 1e-9 of a
+/// frame's time short of it), and the frame before it is short of the duration, so neither a
+/// frame too many nor one too few. A rule rounded to the nearest frame, or one-sided, fails.
+TEST(LimitsTable, DurationCoversWithTheFewestFrames) {
+  std::mt19937_64 rng(1082);
+  std::uniform_real_distribution<double> exponent(-6.0, 3.0), unit(0.0, 1.0);
+  for (int n = 0; n < 20000; ++n) {
+    const double dt = std::pow(10.0, exponent(rng));
+    const int steps = 1 + static_cast<int>(unit(rng) * 999);
+    const double frame = dt * steps;
+    // Whole numbers of frames (± a hair), and anywhere between.
+    const double whole = std::floor(unit(rng) * 1000.0) + 1.0;
+    const double duration = n % 3 == 0   ? whole * frame
+                            : n % 3 == 1 ? whole * frame * (1.0 + (unit(rng) - 0.5) * 1e-12)
+                                         : (whole + unit(rng)) * frame;
+    const double frames = frames_covering(duration, dt, steps);
+    SCOPED_TRACE(std::to_string(duration) + " at " + std::to_string(frame) + " a frame");
+    EXPECT_GE((frames - 1.0) * frame, duration - 1.01e-9 * frame);
+    EXPECT_LT((frames - 2.0) * frame, duration);
   }
 }
 

@@ -45,6 +45,9 @@ TEST(MeasuredFile, RefusesWhatIsNotASample) {
   EXPECT_EQ(problem("t,wx,wy,wz\n0,1,2,3\n0,1,2,3\n"), "row 3: t: not after the row before");
   EXPECT_EQ(problem("t,wx,wy,wz\n-1,1,2,3\n"), "row 2: t: negative (time since the scene's start)");
   EXPECT_EQ(problem("t,wx,wy,wz\n0,2e6,2,3\n"), "row 2: wx: beyond ±1e6 rad per time unit");
+  // On the magnitude, both signs: far below −1e6 as far above.
+  EXPECT_EQ(problem("t,wx,wy,wz\n0,1,-3e7,3\n"), "row 2: wy: beyond ±1e6 rad per time unit");
+  EXPECT_EQ(problem("t,wx,wy,wz\n0,1,2,-1e300\n"), "row 2: wz: beyond ±1e6 rad per time unit");
 }
 
 TEST(MeasuredFile, TheSceneReadsItBesideItself) {

@@ -110,4 +110,76 @@ inline SignalledRun signal_at_stage(const std::vector<std::string>& args, const 
   return run;
 }
 
+/// How a run signalled after a delay ended.
+struct TimedRun {
+  bool ended_first = false;  ///< the program ended before the delay was up (no signal sent)
+  int status = -1;           ///< exit status, or 128 + signal
+  std::string err;           ///< its standard error
+};
+
+/// Starts bookspin with `args` (stdout to /dev/null, stderr read here), sends `signal`
+/// `delay_s` seconds after the start (unless it has ended by then) and waits for the exit; a run
+/// still going half a minute after the signal is killed (status 137).
+inline TimedRun signal_after(const std::vector<std::string>& args, double delay_s, int signal) {
+  using Clock = std::chrono::steady_clock;
+  int fds[2];
+  TimedRun run;
+  if (pipe(fds) != 0) return run;
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(fds[1], STDERR_FILENO);
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, STDOUT_FILENO);
+    close(fds[0]);
+    close(fds[1]);
+    std::vector<std::string> words = args;
+    std::vector<char*> argv{const_cast<char*>(BOOKSPIN_EXE)};
+    for (auto& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    execv(BOOKSPIN_EXE, argv.data());
+    _exit(127);
+  }
+  close(fds[1]);
+  const auto when =
+      start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(delay_s));
+  bool sent = false, open_pipe = true;
+  char buffer[4096];
+  for (;;) {
+    if (open_pipe) {
+      pollfd p{fds[0], POLLIN, 0};
+      if (poll(&p, 1, 2) > 0) {
+        const ssize_t n = read(fds[0], buffer, sizeof buffer);
+        if (n <= 0) {
+          open_pipe = false;
+        } else {
+          run.err.append(buffer, static_cast<std::size_t>(n));
+        }
+      }
+    } else {
+      usleep(2000);
+    }
+    int raw = 0;
+    if (waitpid(pid, &raw, WNOHANG) == pid) {
+      run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+      run.ended_first = !sent;
+      break;
+    }
+    if (!sent && Clock::now() >= when) {
+      kill(pid, signal);
+      sent = true;
+    }
+    if (sent && Clock::now() > when + std::chrono::seconds(30)) {
+      kill(pid, SIGKILL);
+      run.status = wait_status(pid);
+      break;
+    }
+  }
+  // What is left of its standard error.
+  for (ssize_t n; open_pipe && (n = read(fds[0], buffer, sizeof buffer)) > 0;)
+    run.err.append(buffer, static_cast<std::size_t>(n));
+  close(fds[0]);
+  return run;
+}
+
 }  // namespace bookspin::test

@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# The GPU check (docs/performance.md, "The GPU check"): the Release build packed with every
+# shared library it loads, then, on a machine with a GPU, `bookspin info`, the picture tests and
+# the pipeline bench in one call, each one's output kept.
+#
+#   scripts/gpu-check.sh pack [BUNDLE]   on the machine that built build/ (Debian 12): copies
+#                                        bookspin, bookspin-bench and build/tests/picture_tests
+#                                        with the libraries ldd lists (glibc's loader and libc
+#                                        excepted), Debian's glvnd libEGL, fontconfig's
+#                                        configuration and the DejaVu fonts into BUNDLE (default
+#                                        build/gpu-bundle), and BUNDLE.tar.xz beside it.
+#   scripts/gpu-check.sh run [BUNDLE] [OUT]
+#                                        on the GPU machine, from a checkout of the same commit:
+#                                        runs the three with the bundle's libraries before the
+#                                        system's and NVIDIA's EGL vendor file where there is
+#                                        one; writes OUT/info.txt, OUT/picture-tests.txt (a failing
+#                                        frame's actual, expected and diff PNGs at the paths it
+#                                        names), OUT/bench.txt with OUT/bench/, and OUT/summary.txt.
+#                                        Exit 0 when all three exited 0.
+#
+# The test programs find the goldens and scenes at the source folder compiled into them (the
+# build machine's checkout, read from the program's compiled-in path, or GPU_CHECK_SOURCE_DIR);
+# where that path does not exist on the GPU machine, `run` links it to this checkout (or says
+# what to link), whose build/ must hold the carried build (a comparison's frames are rendered
+# by build/bookspin). Nothing here needs the network.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+mode=${1:-}
+bundle=${2:-build/gpu-bundle}
+programs=(build/bookspin build/bookspin-bench build/tests/picture_tests)
+
+pack() {
+  for p in "${programs[@]}"; do
+    [ -x "$p" ] || { echo "gpu-check: $p is not built (cmake --build build --target bookspin bookspin-bench picture_tests)"; exit 2; }
+  done
+  rm -rf "$bundle" && mkdir -p "$bundle/bin" "$bundle/lib" "$bundle/fonts"
+  cp "${programs[@]}" "$bundle/bin/"
+  # Every library the three load, by ldd, but the C library and its loader (the GPU machine's
+  # own must serve: they cannot be swapped under a running system's), and the GL vendor's.
+  ldd "${programs[@]}" | awk '/=> \// { print $3 }' | sort -u |
+    grep -Ev '/(libc|libm|libpthread|libdl|librt|ld-linux[^/]*)\.so' |
+    grep -Ev '/libnvidia|/libcuda' |
+    while read -r lib; do cp -L "$lib" "$bundle/lib/"; done
+  # glvnd's libEGL (loaded through libepoxy by name, not linked) and Mesa's EGL vendor file, so
+  # that llvmpipe stays the fallback where the GPU's vendor is missing.
+  for lib in /usr/lib/x86_64-linux-gnu/libEGL.so.1 /usr/lib/x86_64-linux-gnu/libGLdispatch.so.0; do
+    [ -e "$lib" ] && cp -L "$lib" "$bundle/lib/"
+  done
+  # The fonts the overlays draw with, and a configuration that names only them.
+  cp /usr/share/fonts/truetype/dejavu/*.ttf "$bundle/fonts/" 2>/dev/null || true
+  cat > "$bundle/fonts.conf" <<'EOF'
+<?xml version="1.0"?>
+<!DOCTYPE fontconfig SYSTEM "fonts.dtd">
+<fontconfig>
+  <dir prefix="relative">fonts</dir>
+  <cachedir>/tmp/bookspin-gpu-check-fontconfig</cachedir>
+</fontconfig>
+EOF
+  git rev-parse HEAD > "$bundle/commit" 2>/dev/null || true
+  tar -C "$(dirname "$bundle")" -cJf "$bundle.tar.xz" "$(basename "$bundle")"
+  echo "gpu-check: packed $(ls "$bundle/lib" | wc -l) libraries into $bundle.tar.xz ($(du -h "$bundle.tar.xz" | cut -f1))"
+}
+
+run() {
+  local out=${3:-out/gpu-check}
+  [ -d "$bundle" ] || { [ -f "$bundle.tar.xz" ] && tar -C "$(dirname "$bundle")" -xJf "$bundle.tar.xz"; }
+  [ -x "$bundle/bin/bookspin" ] || { echo "gpu-check: no bundle at $bundle (scripts/gpu-check.sh pack)"; exit 2; }
+  mkdir -p "$out"
+  out=$(cd "$out" && pwd)
+  local root
+  root=$(cd "$bundle" && pwd)
+  export LD_LIBRARY_PATH="$root/lib:/usr/local/nvidia/lib64:/usr/lib/x86_64-linux-gnu/nvidia${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  export FONTCONFIG_FILE="$root/fonts.conf"
+  for vendor in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json \
+                /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
+    if [ -f "$vendor" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor; break; fi
+  done
+  # The source folder compiled into the test programs: linked to this checkout if missing.
+  local compiled
+  # (tests/support/test_paths.hpp: the program's path, SOURCE/build/bookspin, is compiled in.)
+  compiled=${GPU_CHECK_SOURCE_DIR:-$(strings "$root/bin/picture_tests" | grep -m1 -E '^/.*/build/bookspin$' | sed 's|/build/bookspin$||' || true)}
+  if [ -n "$compiled" ] && [ ! -e "$compiled/tests/golden" ]; then
+    mkdir -p "$(dirname "$compiled")" 2>/dev/null && ln -s "$PWD" "$compiled" 2>/dev/null ||
+      echo "gpu-check: link $compiled to this checkout (ln -s $PWD $compiled): the picture tests read their goldens there"
+  fi
+  local info_rc pictures_rc bench_rc
+  "$root/bin/bookspin" info > "$out/info.txt" 2>&1
+  info_rc=$?
+  mkdir -p "$out/picture"
+  (cd "$out/picture" && "$root/bin/picture_tests") > "$out/picture-tests.txt" 2>&1
+  pictures_rc=$?
+  "$root/bin/bookspin-bench" --only pipeline resolution -o "$out/bench" > "$out/bench.txt" 2>&1
+  bench_rc=$?
+  {
+    echo "commit: $(cat "$root/commit" 2>/dev/null || echo unknown)"
+    grep -E 'EGL|GL renderer|GL version|anisotrop' "$out/info.txt"
+    echo "bookspin info: exit $info_rc"
+    grep -E '^\[  (PASSED|FAILED) +\]' "$out/picture-tests.txt"
+    echo "picture tests: exit $pictures_rc"
+    echo "pipeline bench: exit $bench_rc ($out/bench)"
+  } | tee "$out/summary.txt"
+  [ "$info_rc" -eq 0 ] && [ "$pictures_rc" -eq 0 ] && [ "$bench_rc" -eq 0 ]
+}
+
+case "$mode" in
+  pack) pack ;;
+  run) run "$@" ;;
+  *)
+    echo "usage: scripts/gpu-check.sh pack [BUNDLE] | run [BUNDLE] [OUT]"
+    exit 2
+    ;;
+esac

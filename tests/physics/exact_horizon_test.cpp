@@ -1,0 +1,114 @@
+// The exact motion over its whole input space (docs/physics.md §8, "How far in time"): finite
+// states or a refusal for the true cause (tests/support/exact_motion_property.hpp), on seeded
+// inputs; tests/fuzz/exact_fuzzer.cpp runs the same property under libFuzzer in CI.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "physics/book.hpp"
+#include "physics/exact_model.hpp"
+#include "physics/exact_solution.hpp"
+#include "support/exact_motion_property.hpp"
+
+namespace bookspin::physics {
+namespace {
+
+using test_support::check_exact_property;
+using test_support::ExactInput;
+
+TEST(ExactHorizon, SeededInputsAcrossTheWholeRangeGiveFiniteStatesOrTheTrueRefusal) {
+  std::mt19937_64 rng(82);
+  int refused_by_horizon = 0, evaluated = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const ExactInput in = test_support::draw_exact_input(rng);
+    const std::string broken = check_exact_property(in);
+    ASSERT_TRUE(broken.empty()) << "input " << n << ": " << broken;
+    const ExactRotation exact(in.moments, in.omega0);
+    for (double t : in.t) (std::abs(t) > exact.time_horizon() ? refused_by_horizon : evaluated)++;
+  }
+  // Both branches taken often (the draw reaches the horizon and stays within it).
+  EXPECT_GT(refused_by_horizon, 2000);
+  EXPECT_GT(evaluated, 10000);
+}
+
+// The input that crashed the Python process (a SIGSEGV from the table of base points, where the
+// phase at t = 1e300 indexed it out of range) and, with the other moments, was refused as an
+// energy overflow: the horizon's reason, and finite states up to the horizon.
+TEST(ExactHorizon, TimesPastTheHorizonAreRefusedForThePhaseNotTheEnergy) {
+  for (const Eigen::Vector3d& moments : {Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(2, 1, 3)}) {
+    const ExactRotation exact(moments, Eigen::Vector3d(0.1, 1, 0.05));
+    ASSERT_TRUE(std::isfinite(exact.energy()));
+    const double horizon = exact.time_horizon();
+    EXPECT_GT(horizon, 1e11);
+    EXPECT_LT(horizon, 1e13);
+    for (double t : {1e300, -1e300, 1e100, 3e103, std::nextafter(horizon, 2 * horizon)}) {
+      try {
+        (void)exact.state(t);
+        ADD_FAILURE() << "evaluated t = " << t;
+      } catch (const ExactHorizonError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("beyond the exact motion's time horizon"), std::string::npos) << what;
+        EXPECT_EQ(what.find("energy"), std::string::npos) << what;
+      }
+      EXPECT_THROW((void)exact.omega_body(t), ExactHorizonError);
+      EXPECT_THROW((void)exact.orientation(t), ExactHorizonError);
+    }
+    for (double t : {horizon, -horizon, 0.5 * horizon}) {
+      const ExactState s = exact.state(t);
+      EXPECT_TRUE(s.q.allFinite() && s.omega_body.allFinite()) << t;
+      EXPECT_NEAR(s.E, exact.energy(), 1e-12 * exact.energy());
+    }
+  }
+}
+
+// Found by tests/fuzz/exact_fuzzer.cpp: E = 9e307 is a double, but ω·L summed in doubles
+// overflowed before it was halved, and the doors refused the motion as one whose energy
+// overflows. Its energy and |L| against their sums in long double.
+TEST(ExactHorizon, AnEnergyNearTheTopOfTheRangeIsNoOverflow) {
+  const Eigen::Vector3d moments(1.949208239922177e-95, 7.1980310123944318e-172,
+                                2.7292613582081936e+299);
+  const Eigen::Vector3d omega0(-50076.180592312754, -4529.8243883423429, -26073.767141273125);
+  const ExactRotation exact(moments, omega0);
+  const test_support::LongInvariants inv = test_support::long_invariants(moments, omega0);
+  EXPECT_NEAR(exact.energy() / static_cast<double>(inv.E), 1.0, 1e-15);
+  EXPECT_NEAR(exact.angular_momentum_norm() / static_cast<double>(inv.L), 1.0, 1e-15);
+  EXPECT_TRUE(check_exact_property({moments, omega0, {0.0, 1e-3, -2.0}}).empty());
+}
+
+// Near the horizon the angles are still carried to about 1e-6 rad: ψ is reduced by 2π in long
+// double before it is rounded to a double (a double holds 2^40 only to 2^-12). The steady spin's
+// angle |ω0| t is known exactly: ω0 = (0, 0, 1), t = 2^39 + 1, angle 2^39 + 1 rad, whose
+// remainder by 2π is −0.361921305460894081… (mpmath at 50 digits).
+TEST(ExactHorizon, ASteadySpinsAngleNearTheHorizonIsRightToAMicroradian) {
+  const ExactRotation exact(Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0, 0, 1));
+  const Eigen::Matrix3d R = exact.orientation(0x1p39 + 1.0);
+  EXPECT_NEAR(std::atan2(R(1, 0), R(0, 0)), -0.36192130546089408, 1e-6);
+}
+
+// The exact model of a scene: past the horizon its run ends there, finite() false and the
+// reason said (the CLI's "diverged at t = …; the exact model: t = … is beyond …"), the last
+// state kept, rather than rows of NaN or noise.
+TEST(ExactHorizon, TheExactModelEndsItsRunAtTheHorizonSayingWhy) {
+  ExactModel model(Book{});
+  InitialState start;
+  start.omega0_body = Eigen::Vector3d(0.1, 1.0, 0.05);
+  model.reset(start);
+  const double horizon = model.rotation().time_horizon();
+  model.advance(horizon / 4, 3);
+  ASSERT_TRUE(model.finite());
+  const Eigen::Matrix3d kept = model.orientation();
+  model.advance(horizon / 4, 2);
+  EXPECT_FALSE(model.finite());
+  EXPECT_NE(model.divergence_reason().find("the exact model: t = "), std::string::npos)
+      << model.divergence_reason();
+  EXPECT_NE(model.divergence_reason().find("time horizon"), std::string::npos);
+  EXPECT_EQ(model.orientation(), kept);
+  EXPECT_TRUE(model.diagnostics().omega_body.allFinite());
+  model.reset(start);
+  EXPECT_TRUE(model.finite());
+}
+
+}  // namespace
+}  // namespace bookspin::physics
