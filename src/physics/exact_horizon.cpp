@@ -1,8 +1,9 @@
 // How far in time the exact motion is evaluated (docs/physics.md §8, "How far in time"):
 // ExactRotation's horizon and the reason it gives past it.
 #include <algorithm>
-#include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 
@@ -12,11 +13,15 @@ namespace bookspin::physics {
 
 namespace {
 
-/// `x`'s shortest round-trip text, for a message.
+/// `x`'s shortest round-trip text, for a message: the fewest significant digits (1 to 17) that
+/// read back as `x` (printf's, since the page's emscripten libc++ has no floating to_chars).
 std::string short_text(double x) {
-  char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
-  return std::string(text, end);
+  char text[40];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if (std::strtod(text, nullptr) == x) break;
+  }
+  return text;
 }
 
 }  // namespace

@@ -117,14 +117,34 @@ struct TimedRun {
   std::string err;           ///< its standard error
 };
 
+/// Whether a file under `dir` (recursively, temporaries aside) was put there at or after
+/// `since`: a run has begun to put its outputs in place (an output is written under a
+/// temporary name and renamed, keeping the time it was written).
+inline bool outputs_placed_since(const std::filesystem::path& dir,
+                                 std::filesystem::file_time_type since) {
+  std::error_code ec;
+  if (!std::filesystem::exists(dir, ec)) return false;
+  for (auto it = std::filesystem::recursive_directory_iterator(dir, ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+    const std::string name = it->path().lexically_relative(dir).string();
+    if (name.find(".tmp-") != std::string::npos || !it->is_regular_file(ec)) continue;
+    if (it->last_write_time(ec) >= since) return true;
+  }
+  return false;
+}
+
 /// Starts bookspin with `args` (stdout to /dev/null, stderr read here), sends `signal`
 /// `delay_s` seconds after the start (unless it has ended by then) and waits for the exit; a run
-/// still going half a minute after the signal is killed (status 137).
-inline TimedRun signal_after(const std::vector<std::string>& args, double delay_s, int signal) {
+/// still going half a minute after the signal is killed (status 137). With `out`, a run that
+/// has already begun to put its outputs in place there when the moment comes (its work done:
+/// the stop contract's moments are before it) is not signalled and counts as ended first.
+inline TimedRun signal_after(const std::vector<std::string>& args, double delay_s, int signal,
+                             const std::filesystem::path& out = {}) {
   using Clock = std::chrono::steady_clock;
   int fds[2];
   TimedRun run;
   if (pipe(fds) != 0) return run;
+  const auto started = std::filesystem::file_time_type::clock::now();
   const auto start = Clock::now();
   const pid_t pid = fork();
   if (pid == 0) {
@@ -143,7 +163,7 @@ inline TimedRun signal_after(const std::vector<std::string>& args, double delay_
   close(fds[1]);
   const auto when =
       start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(delay_s));
-  bool sent = false, open_pipe = true;
+  bool sent = false, placed = false, open_pipe = true;
   char buffer[4096];
   for (;;) {
     if (open_pipe) {
@@ -165,9 +185,13 @@ inline TimedRun signal_after(const std::vector<std::string>& args, double delay_
       run.ended_first = !sent;
       break;
     }
-    if (!sent && Clock::now() >= when) {
-      kill(pid, signal);
-      sent = true;
+    if (!sent && !placed && Clock::now() >= when) {
+      if (!out.empty() && outputs_placed_since(out, started)) {
+        placed = true;  // waited for without a signal: ended first
+      } else {
+        kill(pid, signal);
+        sent = true;
+      }
     }
     if (sent && Clock::now() > when + std::chrono::seconds(30)) {
       kill(pid, SIGKILL);
