@@ -17,9 +17,9 @@ namespace bookspin::fit {
 namespace {
 
 struct RateCase {
-  double rate;      ///< Hz
-  int recordings;   ///< seeds per drag setting
-  double flight;    ///< s per toss
+  double rate;     ///< Hz
+  int recordings;  ///< seeds per drag setting
+  double flight;   ///< s per toss
 };
 
 struct Tally {
@@ -50,8 +50,8 @@ TEST(SigmaCalibration, TruthWithinTwoSigmaInNinetyToNinetyNinePercentAtEveryRate
     for (int n = 0; n < 2 * c.recordings; ++n) {
       const unsigned seed = 100u + static_cast<unsigned>(n);
       const double rate = n % 2 ? 0.05 : 0.0;  // 1/s, isotropic linear drag, or none
-      const test::SyntheticRecording s = test::make_recording(
-          body, tosses_for(seed, c.flight), seed, 0.01, 0.15, 4.0, rate, c.rate);
+      const test::SyntheticRecording s = test::make_recording(body, tosses_for(seed, c.flight),
+                                                              seed, 0.01, 0.15, 4.0, rate, c.rate);
       const GyroRecording recording = test::as_recording(s);
       std::vector<std::pair<double, double>> ranges;
       for (const test::TrueToss& t : s.tosses) ranges.emplace_back(t.t_start, t.t_end);
