@@ -18,7 +18,8 @@ namespace {
 /// multiplied by `y_scale`, its flights the true ones.
 FitResult fit_with_y_scaled(double y_scale) {
   const test::SyntheticRecording s = test::make_recording(
-      test::phone_on_book(), {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.3}, {{0.6, -13.0, -0.5}, 1.1}});
+      test::phone_on_book(),
+      {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.3}, {{0.6, -13.0, -0.5}, 1.1}});
   GyroRecording read = test::as_read(s);
   for (Eigen::Vector3d& w : read.omega) w[1] *= y_scale;
   const GyroRecording recording = pool_recordings({read});
