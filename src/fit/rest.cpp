@@ -11,6 +11,34 @@ Eigen::Vector3d Rest::bound() const {
   return 3.0 * standard_error + Eigen::Vector3d::Constant(kBiasDrift);
 }
 
+namespace {
+
+constexpr int kBatches = 6;  ///< the still samples' consecutive blocks of batch_standard_error
+
+/// rad/s per axis: the batch-means standard error of the still samples' mean, the samples of
+/// `runs` in time order dealt into kBatches consecutive blocks of equal count: s_B/√B, s_B the
+/// blocks' means' standard deviation. A slow wobble (a hand, a settling phone) is correlated far
+/// beyond one sample, which ρ from one sample to the next misses (at 10 kHz it counts thousands
+/// of independent samples where the wobble gives a few); 0 with fewer than 2 samples a block.
+Eigen::Vector3d batch_standard_error(const std::vector<Eigen::Vector3d>& omega,
+                                     const std::vector<std::pair<int, int>>& runs,
+                                     const Eigen::Vector3d& mean) {
+  std::vector<int> index;
+  for (const auto& [first, last] : runs)
+    for (int i = first; i <= last; ++i) index.push_back(i);
+  const int per = static_cast<int>(index.size()) / kBatches;
+  if (per < 2) return Eigen::Vector3d::Zero();
+  Eigen::Vector3d sum2 = Eigen::Vector3d::Zero();
+  for (int b = 0; b < kBatches; ++b) {
+    Eigen::Vector3d block = Eigen::Vector3d::Zero();
+    for (int j = b * per; j < (b + 1) * per; ++j) block += omega[index[j]];
+    sum2 += (block / per - mean).cwiseAbs2();
+  }
+  return (sum2 / ((kBatches - 1.0) * kBatches)).cwiseSqrt();
+}
+
+}  // namespace
+
 Rest find_rest(const std::vector<double>& t, const std::vector<Eigen::Vector3d>& omega,
                const std::vector<std::pair<int, int>>& segments, const RestSettings& settings) {
   const int n = static_cast<int>(t.size());
@@ -87,6 +115,7 @@ Rest find_rest(const std::vector<double>& t, const std::vector<Eigen::Vector3d>&
     const double effective = rest.samples * (1.0 - rho) / (1.0 + rho);
     rest.standard_error[c] = rest.sigma[c] / std::sqrt(std::max(effective, 1.0));
   }
+  rest.standard_error = rest.standard_error.cwiseMax(batch_standard_error(omega, runs, rest.mean));
   return rest;
 }
 

@@ -524,6 +524,8 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   p.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
   const BiasFreedom bias = bias_freedom(recording.parts, data, held);
   const Solved solved = joint_fit(data, p, bias, settings, recording.source);
+  // An axis far beyond any gyroscope's range beside two within it: say which, once.
+  if (const std::string cause = scale_cause(data); !cause.empty()) body.notes.push_back(cause);
   // The bias in flight: each recording's rest plus its fitted correction; the samples corrected
   // by it, so that what follows (and measured_omega) sees them as the fit did.
   std::vector<Eigen::Vector3d> correction(recording.parts.size());
