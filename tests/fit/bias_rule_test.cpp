@@ -11,17 +11,13 @@
 #include "fit/fit_tables.hpp"
 #include "fit/pool.hpp"
 #include "fit/report.hpp"
+#include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path real_dir() {
-  return fs::path(BOOKSPIN_SOURCE_DIR) / ".." / "shared" / "recordings-real" /
-         "dvarkian-2022-05-03";
-}
 
 bool has_line(const std::vector<std::string>& lines, const std::string& part) {
   return std::any_of(lines.begin(), lines.end(),

@@ -12,17 +12,13 @@
 
 #include "fit/pool.hpp"
 #include "fit/report.hpp"
+#include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path real_dir() {
-  return fs::path(BOOKSPIN_SOURCE_DIR) / ".." / "shared" / "recordings-real" /
-         "dvarkian-2022-05-03";
-}
 
 // Flights that run 0.1 s into their catch come back to within 20 ms of the true flight's end;
 // left untrimmed, they keep it and are flagged for it.

@@ -11,6 +11,7 @@
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
 #include "fit/toss_fit.hpp"
+#include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
@@ -67,11 +68,6 @@ TEST(LoneFlight, IsFoundWithNoRestAndUnevenTimestampsAndFitsWithinFivePercent) {
 }
 
 namespace fs = std::filesystem;
-
-fs::path real_dir() {
-  return fs::path(BOOKSPIN_SOURCE_DIR) / ".." / "shared" / "recordings-real" /
-         "dvarkian-2022-05-03";
-}
 
 /// ω of `recording` at time `at` (within its samples): a cubic Hermite curve through the samples
 /// with each one's slope from its neighbours and their own times.

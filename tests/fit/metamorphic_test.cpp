@@ -15,22 +15,13 @@
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
 #include "fit/report.hpp"
+#include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path real_dir() {
-  return fs::path(BOOKSPIN_SOURCE_DIR) / ".." / "shared" / "recordings-real" /
-         "dvarkian-2022-05-03";
-}
-
-#define REQUIRE_REAL_RECORDINGS()                                 \
-  if (!fs::is_directory(real_dir()))                              \
-  GTEST_SKIP() << "no real recordings at " << real_dir().string() \
-               << " (../shared/recordings-real/ beside the checkout; CI has it)"
 
 GyroRecording read_real(const std::string& name) { return read_recording(real_dir() / name); }
 

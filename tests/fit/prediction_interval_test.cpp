@@ -15,17 +15,13 @@
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
 #include "fit/toss_fit.hpp"
+#include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path real_dir() {
-  return fs::path(BOOKSPIN_SOURCE_DIR) / ".." / "shared" / "recordings-real" /
-         "dvarkian-2022-05-03";
-}
 
 /// The tosses with a measured and a predicted half period: how many, how many within 2σ (one
 /// with no σ is not), and each interval's relative half width 2σ/T.

@@ -5,6 +5,8 @@
 // synthetic test. The expected values come from the recordings themselves (their README's
 // still seconds and largest readings), not from the code under test. Skipped, saying why, where
 // the folder is absent.
+#include "real_recordings.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,16 +29,6 @@ namespace bookspin::fit {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path real_dir() {
-  return fs::path(BOOKSPIN_SOURCE_DIR) / ".." / "shared" / "recordings-real" /
-         "dvarkian-2022-05-03";
-}
-
-#define REQUIRE_REAL_RECORDINGS()                                 \
-  if (!fs::is_directory(real_dir()))                              \
-  GTEST_SKIP() << "no real recordings at " << real_dir().string() \
-               << " (../shared/recordings-real/ beside the checkout; CI has it)"
 
 /// The development recording `name`, read and pooled (a pool of one), as the fit takes it.
 GyroRecording real(const std::string& name) {

@@ -12,17 +12,13 @@
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
 #include "fit/report.hpp"
+#include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path real_dir() {
-  return fs::path(BOOKSPIN_SOURCE_DIR) / ".." / "shared" / "recordings-real" /
-         "dvarkian-2022-05-03";
-}
 
 int count_with(const std::vector<std::string>& lines, const std::string& part) {
   return static_cast<int>(std::count_if(lines.begin(), lines.end(), [&](const std::string& l) {
