@@ -92,9 +92,11 @@ function startApp(wasm, engines) {
     let t0 = performance.now();
     const lap = (part) => { const t1 = performance.now(); app.costs[part] += t1 - t0; t0 = t1; };
     const list = app.runs.list;
+    // The readout first: its strip's height sets the view's (index.html), under whose bottom
+    // the bodies' labels are placed; placed before it grew, a label ran past the view.
+    app.readout.draw(list, app.state.t); lap('readout');
     app.view.render(list); lap('view');
     app.panels.draw(list, app.state.t, app.playing, t0, lap);
-    app.readout.draw(list, app.state.t); lap('readout');
     if (app.framesDrawn === 0) app.firstFrameAt = performance.now();
     app.framesDrawn += 1;
   }
