@@ -45,7 +45,7 @@ bool has_failure(const Conformance& c, const std::string& start) {
   return false;
 }
 
-// The motion: every row between the first and the last turned 90° about the world z
+// A visibly wrong motion: every row between the first and the last turned 90° about the world z
 // axis. Its energy and |L| are the exact ones to round-off and so is its last row, but the body
 // points elsewhere all along and its L (along world x) is turned to y: it fails on both, each
 // at its row.

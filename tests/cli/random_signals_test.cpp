@@ -159,10 +159,9 @@ TEST_F(RandomSignals, Accuracy) {
                                     out, rng, 2);
 }
 
-// The ignored stop of the issue: flipcheck export of the box at 20000 steps a frame ran on for
-// seconds after SIGTERM, exited 0 and replaced its earlier outputs. Its loop is the flipcheck
-// branch's to fix; this case stays strict (it passes once that branch is merged, if it fails
-// here before).
+// A stop once ignored: flipcheck export of the box at 20000 steps a frame ran on for seconds
+// after SIGTERM, exited 0 and replaced its earlier outputs (its CSV was written after its last
+// poll); the export now asks the stop while it writes.
 TEST_F(RandomSignals, FlipcheckExportJudgeAndLeague) {
   const std::string box = flipcheck_scenario("mujoco-test-box");
   expect_every_moment_stops_cleanly({"flipcheck export",

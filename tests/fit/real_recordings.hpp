@@ -16,7 +16,7 @@ inline std::filesystem::path real_dir() {
 }  // namespace bookspin::fit
 
 /// Skips the test (one line saying why) where the real recordings are not beside the checkout.
-#define REQUIRE_REAL_RECORDINGS()                                                         \
+#define REQUIRE_REAL_RECORDINGS()                                                  \
   if (!std::filesystem::is_directory(::bookspin::fit::real_dir()))                 \
   GTEST_SKIP() << "no real recordings at " << ::bookspin::fit::real_dir().string() \
                << " (../shared/recordings-real/ beside the checkout; CI has it)"

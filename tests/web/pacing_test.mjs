@@ -59,7 +59,7 @@ function catchUpTo(runs, state, target, frames = 1000) {
 }
 
 test('a time between two steps (the slider, a written link) is reached and the catch-up ends', () => {
-  // The issue's cases: fig09's slider at 8.20063603838946, the address written while playing.
+  // The times that froze the page: fig09's slider at 8.20063603838946, the address written while playing.
   for (const [target, dt] of [[8.20063603838946, 1 / 60], [42.43333333333334, 1 / 60], [0.3, 0.004],
     [299.99999, 1 / 240]]) {
     const runs = countingRuns();
