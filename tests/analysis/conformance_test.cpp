@@ -19,28 +19,15 @@
 #include "common/errors.hpp"
 #include "scene/scene.hpp"
 #include "support/closed_form_flips.hpp"
+#include "support/scenario_rows.hpp"
 
 namespace bookspin::analysis {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Scenario scenario(const std::string& name) {
-  return scenario_of(
-      scene::parse_scene(std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/" + name + ".toml"));
-}
-
-/// The exact motion of `s` every `stride` steps (q from R(t), ω body), as an engine would
-/// write it.
-std::vector<MotionSample> exact_rows(const Scenario& s, long long stride) {
-  const physics::ExactRotation exact(s.body.moments, start_omega(s));
-  std::vector<MotionSample> rows;
-  for (long long n = 0; n <= s.steps; n += stride) {
-    const double t = static_cast<double>(n) * s.dt;
-    rows.push_back({n, Eigen::Quaterniond(exact.orientation(t)), exact.omega_body(t)});
-  }
-  return rows;
-}
+using scenario_rows::exact_rows;
+using scenario_rows::scenario;
 
 // Every scenario's exact motion passes at round-off; the intermediate-axis scenarios turn over
 // as often as the closed form says (1 + ⌊(t_end − first)/(T/2)⌋), the stable spins never, and
