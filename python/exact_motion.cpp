@@ -31,7 +31,7 @@ Returns a dict of float64 arrays:
 
 Raises bookspin.Error for a wrong shape, a complex array, a moment that is not finite and
 positive, an omega0 or t that is not finite, an omega0 component beyond ±1e6, a motion whose
-energy or |L| overflows a double, or a t beyond the motion's time horizon (where its phase or
+energy, |L| or largest |omega| overflows a double, or a t beyond the motion's time horizon (where its phase or
 precession angle is more than a long double carries: docs/physics.md §8, "How far in time"),
 each before any row; KeyboardInterrupt on Ctrl-C. The GIL is released while it computes.)";
 

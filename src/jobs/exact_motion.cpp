@@ -28,16 +28,19 @@ std::string value_text(double value) {
   return finite_text(value, "a value in a message");
 }
 
-/// Throws InputError where the motion's energy ½ ω·Iω or |L| is beyond a double, naming the
-/// moments and ω0: those are the rows' E and L, constant in t.
+/// Throws InputError where the motion's energy ½ ω·Iω, |L| or largest |ω| is beyond a double,
+/// naming the moments and ω0: E and L are the rows' constants, ω reaches its peak within a
+/// period (|ω| up to |L|/I_min, docs/physics.md §8).
 void refuse_overflow(const physics::ExactRotation& exact) {
-  if (std::isfinite(exact.energy()) && std::isfinite(exact.angular_momentum_norm())) return;
+  if (std::isfinite(exact.energy()) && std::isfinite(exact.angular_momentum_norm()) &&
+      std::isfinite(exact.peak_rate()))
+    return;
   const Eigen::Vector3d& I = exact.moments();
   const Eigen::Vector3d& w = exact.omega0_body();
-  throw InputError("moments (" + value_text(I[0]) + ", " + value_text(I[1]) + ", " +
-                   value_text(I[2]) + ") and omega0 (" + value_text(w[0]) + ", " +
-                   value_text(w[1]) + ", " + value_text(w[2]) +
-                   "): the motion's energy ½ ω·Iω or |L| overflows a double (beyond 1.8e308)");
+  throw InputError(
+      "moments (" + value_text(I[0]) + ", " + value_text(I[1]) + ", " + value_text(I[2]) +
+      ") and omega0 (" + value_text(w[0]) + ", " + value_text(w[1]) + ", " + value_text(w[2]) +
+      "): the motion's energy ½ ω·Iω, |L| or largest |ω| overflows a double (beyond 1.8e308)");
 }
 
 }  // namespace

@@ -22,10 +22,10 @@ using ExactMotionRow = physics::ExactState;
 /// unit). `stop` is polled every few thousand rows. Throws InputError for a moment that is not
 /// finite and positive, an ω0 or a t that is not finite, an ω0 component beyond a scene's
 /// ±1e6 (initial.angular_velocity), each naming its argument ("moments[i]", "omega0[i]",
-/// "t[i]"), for a motion whose energy or |L| overflows a double (naming the moments and ω0), and
-/// for a t beyond the motion's time horizon (physics::ExactRotation::time_horizon(): its phase
-/// or precession angle past what a long double carries, docs/physics.md §8, "How far in time"),
-/// before any row.
+/// "t[i]"), for a motion whose energy, |L| or largest |ω| overflows a double (naming the moments
+/// and ω0), and for a t beyond the motion's time horizon (physics::ExactRotation::time_horizon():
+/// its phase or precession angle past what a long double carries, docs/physics.md §8, "How far in
+/// time"), before any row.
 std::vector<ExactMotionRow> exact_motion_at(const Eigen::Vector3d& moments,
                                             const Eigen::Vector3d& omega0_body,
                                             const std::vector<double>& times,
@@ -65,8 +65,8 @@ struct ExactMotion {
 
 /// The exact motion (physics::ExactRotation from the jiggled start) of `scenario` at every
 /// step n = 0 … steps, t = n·dt as a product. `stop` is polled every few thousand rows and
-/// throws Interrupted. Throws InputError, naming the scenario, where the energy or |L| overflows
-/// a double or steps·dt is beyond the motion's time horizon.
+/// throws Interrupted. Throws InputError, naming the scenario, where the energy, |L| or largest
+/// |ω| overflows a double or steps·dt is beyond the motion's time horizon.
 ExactMotion exact_motion(const analysis::Scenario& scenario, const StopPoll& stop = {});
 
 /// The exact motion's CSV: t,qw,qx,qy,qz,wx,wy,wz (ω body frame), then

@@ -86,6 +86,7 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   L_norm_ = static_cast<double>(L_long_);
   const Eigen::Vector3d w = to_sorted_ * omega0_body;
   classify(w);
+  set_peak_rate();
   if (case_ != ExactCase::steady) {
     set_phase(w);
     set_landen_chain();
@@ -151,6 +152,27 @@ void ExactRotation::set_amplitudes(long double d1, long double d2, long double d
   } else {
     k_ = std::sqrt(k2);
   }
+}
+
+// The largest |ω| the motion reaches (docs/physics.md §8): with cn² = 1 − sn² and
+// dn² = 1 − k²sn², |ω|² = a_cn² + a_dn² + sn²(a_sn² − a_cn² − k²a_dn²) is linear in sn² ∈ [0, 1],
+// so its largest value is at sn² = 0 or sn² = 1. In long double: it can pass a double's range
+// (up to |L|/I_min) while E and |L| are far inside it.
+void ExactRotation::set_peak_rate() {
+  if (case_ == ExactCase::steady) {
+    peak_rate_ = static_cast<double>(rate_long_);
+    return;
+  }
+  const Real a_cn2 = amplitude_[cn_axis_] * amplitude_[cn_axis_];
+  const Real a_sn2 = amplitude_[1] * amplitude_[1];
+  const Real a_dn2 = amplitude_[dn_axis_] * amplitude_[dn_axis_];
+  const Real peak2 = std::max(a_cn2 + a_dn2, a_sn2 + kc2_ * a_dn2);
+  // Rounded to a double: a peak within a part in 1e12 of DBL_MAX counts as past it, since
+  // R·ω's rounding could carry a world component over.
+  const Real peak = std::max(std::sqrt(peak2), rate_long_);
+  peak_rate_ = peak * (1 + 1e-12L) > std::numeric_limits<double>::max()
+                   ? std::numeric_limits<double>::infinity()
+                   : static_cast<double>(peak);
 }
 
 // Signs and u0 so that ω(0) = ω0. Euler's equations need sign(cn axis) = sign(sn)·sign(dn).

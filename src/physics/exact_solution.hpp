@@ -150,6 +150,10 @@ class ExactRotation {
 
   double energy() const { return energy_; }                 ///< E = ½ ω·I ω, energy units
   double angular_momentum_norm() const { return L_norm_; }  ///< |L|
+  /// The largest |ω| (rad per time unit) the motion reaches, max over t of |ω(t)|
+  /// (docs/physics.md §8); infinite where it passes a double's range, as it can while E and |L|
+  /// are finite (|ω| reaches up to |L|/I_min): the doors then refuse the motion.
+  double peak_rate() const { return peak_rate_; }
   const Eigen::Vector3d& angular_momentum_world() const { return L_world_; }  ///< L, world
   double modulus() const { return static_cast<double>(k_); }  ///< Jacobi modulus k (not m = k²)
   double lambda() const { return static_cast<double>(lambda_); }  ///< λ in u = λt + u0, rad/time
@@ -181,6 +185,7 @@ class ExactRotation {
   Jacobi jacobi_boost(long double u) const;
   void classify(const Eigen::Vector3d& w);
   void set_amplitudes(long double d1, long double d2, long double d3);
+  void set_peak_rate();
   void set_phase(const Eigen::Vector3d& w);
   Jacobi jacobi(long double u) const;
   long double phase(double t) const { return lambda_ * static_cast<long double>(t) + u0_; }
@@ -209,7 +214,7 @@ class ExactRotation {
   Eigen::Matrix3d to_sorted_;  ///< Q: sorted = Q · body, det Q = +1
   Eigen::Vector3d I_;          ///< sorted moments I1 ≤ I2 ≤ I3
   Eigen::Vector3d L_world_;
-  double energy_ = 0.0, L_norm_ = 0.0;
+  double energy_ = 0.0, L_norm_ = 0.0, peak_rate_ = 0.0;
   long double L_long_ = 0.0L;      ///< |L| in long double (ψ's rates: docs/physics.md §8)
   long double rate_long_ = 0.0L;   ///< |ω0| in long double (a steady motion's angle)
   double horizon_ = 0.0;           ///< time_horizon()

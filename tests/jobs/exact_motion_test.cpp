@@ -165,7 +165,8 @@ TEST(ExactMotionDoor, AnyMomentsOmegaAndTimesGiveFiniteRowsOrTheTrueRefusal) {
         ASSERT_LT(index, in.t.size());
         EXPECT_FALSE(std::isfinite(in.t[index]));
       } else if (what.find("overflows a double") != std::string::npos) {
-        EXPECT_TRUE(overflow || inv.E > 1.79e308L || inv.L > 1.79e308L);
+        EXPECT_TRUE(overflow || inv.E > 1.79e308L || inv.L > 1.79e308L ||
+                    test_support::peak_rate_bounds(in.moments, in.omega0, inv).upper > 1.79e308L);
       } else {
         // Past the horizon: the t named is one given, its angle bound |t| |L|/I_min past 2^40.
         ASSERT_EQ(what.rfind("t[", 0), 0u);
@@ -196,6 +197,21 @@ TEST(ExactMotionDoor, ATimeOf1e300IsRefusedForTheHorizonNotTheEnergy) {
           << what;
       EXPECT_EQ(what.find("energy"), std::string::npos) << what;
     }
+  }
+}
+
+// A body whose moments lie 1e320 apart, E 5e301 and |L| 1e302: ω about the smallest axis would
+// reach √(I2(I3 − I2)ω2²/(I1 I3)) ~ 4.5e312 (docs/physics.md §8's amplitude), beyond a double.
+// Refused before any row, naming the moments, not evaluated into infinite rows.
+TEST(ExactMotionDoor, AnAngularVelocityThatWouldPassADoubleIsRefused) {
+  try {
+    (void)exact_motion_at(Eigen::Vector3d(5e-324, 1e290, 1e296), Eigen::Vector3d(0, 1e6, 1),
+                          {0.0, 1e-310});
+    ADD_FAILURE() << "evaluated";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "moments (5e-324, 1e+290, 1e+296) and omega0 (0, 1e+06, 1): the motion's energy "
+                 "½ ω·Iω, |L| or largest |ω| overflows a double (beyond 1.8e308)");
   }
 }
 

@@ -3,6 +3,7 @@
 // inputs; tests/fuzz/exact_fuzzer.cpp runs the same property under libFuzzer in CI.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -75,6 +76,38 @@ TEST(ExactHorizon, AnEnergyNearTheTopOfTheRangeIsNoOverflow) {
   EXPECT_NEAR(exact.energy() / static_cast<double>(inv.E), 1.0, 1e-15);
   EXPECT_NEAR(exact.angular_momentum_norm() / static_cast<double>(inv.L), 1.0, 1e-15);
   EXPECT_TRUE(check_exact_property({moments, omega0, {0.0, 1e-3, -2.0}}).empty());
+}
+
+// The largest |ω| in closed form: moments (1, 2, 3), ω0 = (0, 1, 1) circles the largest axis, and
+// |ω|² = Σ L_i²/I_i² is linear along the segment {Σ L_i² = 13, Σ L_i²/I_i = 2E = 5} that the
+// polhode sweeps, so its largest value is at an end: L² = (0, 4, 9) gives 2 (the start), and
+// L_2 = 0 gives L² = (1, 0, 12), |ω|² = 1 + 12/9 = 7/3. Sampled over a period, |ω| reaches it.
+TEST(ExactHorizon, TheLargestAngularVelocityIsAtAnEndOfThePolhodesSegment) {
+  const ExactRotation exact(Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0, 1, 1));
+  EXPECT_NEAR(exact.peak_rate(), std::sqrt(7.0 / 3.0), 1e-12);
+  double sampled = 0.0;
+  for (int n = 0; n <= 4000; ++n)
+    sampled = std::max(sampled, exact.omega_body(exact.period() * n / 4000.0).norm());
+  EXPECT_NEAR(sampled, std::sqrt(7.0 / 3.0), 1e-6);
+  EXPECT_LE(sampled, exact.peak_rate() * (1 + 1e-12));
+  // A steady spin's is its |ω0|.
+  EXPECT_EQ(ExactRotation(Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0, 0, 2)).peak_rate(), 2.0);
+}
+
+// Found by tests/fuzz/exact_fuzzer.cpp: moments 1e318 apart keep E (3e302) and |L| (3e151) in a
+// double, but ω about the smallest axis reaches up to |L|/I_min ~ 4e468, and the rows were NaN
+// and infinite. The motion now says its largest |ω| is beyond a double, as the doors refuse it.
+TEST(ExactHorizon, AnAngularVelocityPastADoubleWithAFiniteEnergyIsReported) {
+  const Eigen::Vector3d moments(1, 2, 5.8295003179067016e-318);
+  const Eigen::Vector3d omega0(2.5522833063287883e+151, 0.0054715960500556242,
+                               -8.98846567431158e+306);
+  const ExactRotation exact(moments, omega0);
+  EXPECT_TRUE(std::isfinite(exact.energy()));
+  EXPECT_TRUE(std::isfinite(exact.angular_momentum_norm()));
+  EXPECT_TRUE(std::isinf(exact.peak_rate()));
+  EXPECT_TRUE(check_exact_property(
+                  {moments, omega0, {0.0, 3.4766779039174528e-310, 2.2250738667962474e-308}})
+                  .empty());
 }
 
 // Near the horizon the angles are still carried to about 1e-6 rad: ψ is reduced by 2π in long

@@ -134,7 +134,7 @@ def test_any_order_of_t_and_one_time(bookspin):
      "(a scene's initial.angular_velocity)"),
     (([1e300, 2e300, 3e300], [1e6, 1e6, 0], [0, 1]),
      "moments (1e+300, 2e+300, 3e+300) and omega0 (1e+06, 1e+06, 0): the motion's energy "
-     "½ ω·Iω or |L| overflows a double (beyond 1.8e308)"),
+     "½ ω·Iω, |L| or largest |ω| overflows a double (beyond 1.8e308)"),
 ])
 def test_bad_input_raises_bookspin_error(bookspin, args, line):
     with pytest.raises(bookspin.Error) as raised:

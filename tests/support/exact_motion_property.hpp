@@ -3,9 +3,9 @@
 // time"), shared by the seeded test (tests/physics/exact_fuzz_test.cpp) and the libFuzzer target
 // (tests/fuzz/exact_fuzzer.cpp): for any moments, ω0 and t, physics::ExactRotation either gives
 // a finite state that keeps its invariants, or refuses for its true cause: a bad argument
-// (std::invalid_argument), an energy or |L| beyond a double (its energy() or
-// angular_momentum_norm() not finite, as the doors refuse it), or a t past its time horizon
-// (ExactHorizonError). The causes are judged here independently of the code under test: the
+// (std::invalid_argument), an energy, |L| or largest |ω| beyond a double (its energy(),
+// angular_momentum_norm() or peak_rate() not finite, as the doors refuse it), or a t past its time
+// horizon (ExactHorizonError). The causes are judged here independently of the code under test: the
 // overflow from the invariants summed in long double, the horizon against the bounds
 // |L|/I_max ≤ every angle's rate ≤ |L|/I_min (ψ̇ lies between |L|/I_c and |L|/I_s; λ ≤ |L|/I_1
 // from §8's formulas; a steady |ω0| between the two).
@@ -57,6 +57,22 @@ inline LongInvariants long_invariants(const Eigen::Vector3d& I, const Eigen::Vec
   return v;
 }
 
+/// Bounds on the largest |ω| of the motion, in long double: |ω0| below, and above
+/// √Σ_i min(2E/I_i, L²/I_i²) (each ½I_iω_i² ≤ E and |I_iω_i| ≤ |L|).
+struct PeakRateBounds {
+  long double start = 0.0L, upper = 0.0L;
+};
+inline PeakRateBounds peak_rate_bounds(const Eigen::Vector3d& I, const Eigen::Vector3d& w,
+                                       const LongInvariants& inv) {
+  long double upper2 = 0.0L, start2 = 0.0L;
+  for (int i = 0; i < 3; ++i) {
+    const long double I_i = I[i], by_L = inv.L / I_i;
+    upper2 += std::min(2 * inv.E / I_i, by_L * by_L);
+    start2 += static_cast<long double>(w[i]) * w[i];
+  }
+  return {std::sqrt(start2), std::sqrt(upper2)};
+}
+
 /// Whether `s` (at t = 0) is the identity and ω0: each component within 1e-6 |ω0| (a sign, an axis
 /// or a phase gone wrong is out by O(1); within k'² ~ 1e-19…1e-29 of the separatrix the modulus k
 /// stored in long double carries no digit of k' and ω0 is met only to ~1e-7 of |ω0|, and within
@@ -103,11 +119,27 @@ inline std::string check_exact_property(const ExactInput& in) {
   const long double top = DBL_MAX;
   const bool over = inv.E > top * (1 + 1e-12L) || inv.L > top * (1 + 1e-12L);
   const bool under = inv.E < top * (1 - 1e-12L) && inv.L < top * (1 - 1e-12L);
-  const bool reported =
-      !std::isfinite(exact->energy()) || !std::isfinite(exact->angular_momentum_norm());
-  if (over && !reported) return "an energy or |L| beyond a double not reported: " + describe(in);
-  if (under && reported) return "a finite energy and |L| reported overflowing: " + describe(in);
+  // Past a double the doors refuse by peak_rate().
+  const auto [start, upper] = peak_rate_bounds(I, w, inv);
+  const bool rate_over = start > top * (1 + 1e-12L);
+  const bool rate_under = upper < top * (1 - 1e-12L);
+  const bool reported = !std::isfinite(exact->energy()) ||
+                        !std::isfinite(exact->angular_momentum_norm()) ||
+                        !std::isfinite(exact->peak_rate());
+  if ((over || rate_over) && !reported)
+    return "an energy, |L| or |ω| beyond a double not reported: " + describe(in);
+  if (under && rate_under && reported)
+    return "a finite energy, |L| and |ω| reported overflowing: " + describe(in);
   if (reported) return {};
+  const double peak = exact->peak_rate();
+  if (peak < static_cast<double>(start * (1 - 1e-9L)) ||
+      peak > static_cast<double>(upper * (1 + 1e-9L))) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "largest |ω| " << peak << " outside [" << static_cast<double>(start) << ", "
+      << static_cast<double>(upper) << "]: " << describe(in);
+    return s.str();
+  }
   // The horizon between the two bounds (a part in 1e9 for u0 and rounding).
   const double I_min = I.minCoeff(), I_max = I.maxCoeff();
   const long double max_angle = physics::kExactMaxAngle;
@@ -146,9 +178,9 @@ inline std::string check_exact_property(const ExactInput& in) {
       why << "a row not finite at t = " << t;
     } else if (std::abs(s.q.norm() - 1.0) > 1e-12) {
       why << "|q| = " << s.q.norm() << " at t = " << t;
-    } else if (s.omega_body.stableNorm() >
-               static_cast<double>(inv.L / I_min) * (1 + 1e-9) + 1e-300) {
-      why << "|ω| = " << s.omega_body.stableNorm() << " above |L|/I_min at t = " << t;
+    } else if (s.omega_body.stableNorm() > peak * (1 + 1e-9) + 1e-300) {
+      why << "|ω| = " << s.omega_body.stableNorm() << " above its largest, " << peak
+          << ", at t = " << t;
     } else if (inv.E > 1e-280L && std::abs(s.E / static_cast<double>(inv.E) - 1.0) > 1e-9) {
       why << "E = " << s.E << ", not " << static_cast<double>(inv.E) << " at t = " << t;
     } else if (inv.L > 1e-280L &&
