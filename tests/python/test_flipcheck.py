@@ -322,7 +322,9 @@ def test_bad_arguments_raise_bookspin_error_naming_them(bookspin, tmp_path):
 
 def test_ctrl_c_stops_a_long_judgement(tmp_path):
     """SIGINT 0.3 s into the judgement of 10^6 rows (2 s on the 2-core machine) raises
-    KeyboardInterrupt from the judge within the next poll (it came when the judgement was done)."""
+    KeyboardInterrupt from the judge within the next poll (it came when the judgement was done):
+    sooner than half the same judgement takes uninterrupted, timed first in the same process (a
+    ratio, not a wall-clock bound: a loaded machine slows both)."""
     scene = tmp_path / "long.toml"
     scene.write_text((SCENARIO_DIR / "mujoco-test-box.toml").read_text()
                      .replace("frames = 51", "frames = 2").replace("steps_per_frame = 10",
@@ -331,16 +333,20 @@ def test_ctrl_c_stops_a_long_judgement(tmp_path):
         import time, numpy as np, bookspin
         n = 1000001
         t, q, w = np.arange(n) * 0.01, np.tile([1.0, 0, 0, 0], (n, 1)), np.tile([1.0, 2, 3], (n, 1))
+        start = time.monotonic()
+        bookspin.flipcheck.judge({str(scene)!r}, t, q, w)
+        whole = time.monotonic() - start
         print("judging", flush=True)
         try:
             bookspin.flipcheck.judge({str(scene)!r}, t, q, w)
             print("finished", time.monotonic(), flush=True)
         except KeyboardInterrupt:
-            print("interrupted", time.monotonic(), flush=True)
+            print("interrupted", time.monotonic(), whole, flush=True)
     """
     lines, stderr, returncode, sent = interrupted_child(script, "judging", 0.3)
     assert lines and lines[0].startswith("interrupted"), (lines, stderr)
-    assert float(lines[0].split()[1]) - sent < 0.8, lines
+    _, when, whole = lines[0].split()
+    assert float(when) - sent < 0.5 * float(whole), lines
     assert returncode == 0, stderr
 
 
