@@ -5,13 +5,16 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -46,12 +49,34 @@ inline std::vector<std::string> temporaries(const std::filesystem::path& dir) {
   return found;
 }
 
+/// The CPU seconds (user + system, all its threads) the running process `pid` has used so far,
+/// from /proc/<pid>/stat (utime and stime, the 14th and 15th fields, in clock ticks); -1 where
+/// it cannot be read.
+inline double cpu_seconds_so_far(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(in, line)) return -1.0;
+  // Fields after the command name, which may hold spaces, in parentheses: state is field 3.
+  std::istringstream rest(line.substr(line.rfind(')') + 2));
+  std::string field;
+  long long utime = -1, stime = -1;
+  for (int n = 3; n <= 15 && rest >> field; ++n) {
+    if (n == 14) utime = std::stoll(field);
+    if (n == 15) stime = std::stoll(field);
+  }
+  if (utime < 0 || stime < 0) return -1.0;
+  return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
 /// How a run signalled at a stage ended.
 struct SignalledRun {
   bool reached = false;     ///< the stage's line came before the program ended
   int status = -1;          ///< exit status, or 128 + signal
   double to_exit_s = -1.0;  ///< seconds from the signal to the program's exit (reached only)
-  std::string err;          ///< its standard error
+  /// CPU seconds the program used from the signal to its exit (reached only): what its polls
+  /// bound whatever the machine's load, where to_exit_s grows with the load.
+  double cpu_to_exit_s = -1.0;
+  std::string err;  ///< its standard error
 };
 
 /// Starts bookspin with `args` (one word each; stdout to /dev/null, stderr read here) and the
@@ -84,6 +109,7 @@ inline SignalledRun signal_at_stage(const std::vector<std::string>& args, const 
   const std::string marker = "bookspin: stage: " + stage + "\n";
   const auto deadline = Clock::now() + std::chrono::minutes(5);
   Clock::time_point signalled;
+  double cpu_at_signal = -1.0;
   char buffer[4096];
   for (;;) {
     pollfd p{fds[0], POLLIN, 0};
@@ -96,6 +122,7 @@ inline SignalledRun signal_at_stage(const std::vector<std::string>& args, const 
     if (!run.reached && run.err.find(marker) != std::string::npos) {
       run.reached = true;
       signalled = Clock::now();
+      cpu_at_signal = cpu_seconds_so_far(pid);
       kill(pid, signal);
     }
     // Not there within five minutes, or still running half a minute after the signal.
@@ -105,8 +132,16 @@ inline SignalledRun signal_at_stage(const std::vector<std::string>& args, const 
     }
   }
   close(fds[0]);
-  run.status = wait_status(pid);
-  if (run.reached) run.to_exit_s = std::chrono::duration<double>(Clock::now() - signalled).count();
+  int raw = 0;
+  rusage usage{};
+  wait4(pid, &raw, 0, &usage);
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  if (run.reached) {
+    run.to_exit_s = std::chrono::duration<double>(Clock::now() - signalled).count();
+    const auto seconds = [](const timeval& v) { return v.tv_sec + v.tv_usec * 1e-6; };
+    if (cpu_at_signal >= 0.0)
+      run.cpu_to_exit_s = seconds(usage.ru_utime) + seconds(usage.ru_stime) - cpu_at_signal;
+  }
   return run;
 }
 
