@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "common/errors.hpp"
 #include "fit/flight_trim.hpp"
@@ -413,7 +414,8 @@ TossFit toss_values(const std::vector<TossData>& data, std::size_t k, const Para
   }
   toss.residual_rms = std::sqrt(sum2 / d.tau.size());
   toss.saturated = d.at_range;
-  toss.flag = toss_flag(d, residual, saturation, noise);
+  toss.flag = toss_flag(d, residual, saturation, noise,
+                        body.axes * body.ratios.asDiagonal() * body.axes.transpose());
   toss.poor_fit = !toss.flag.empty();
   if (toss.poor_fit)
     body.notes.push_back("toss " + std::to_string(k + 1) + " flagged: " + toss.flag +
@@ -588,10 +590,11 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
                         const FitSettings& settings) {
   check_pooled(recording);
   if (search.flights.empty()) no_flight(recording, search);
-  const FitResult fit = fit_with_bias_rule(recording, search, settings);
+  FitResult fit = fit_with_bias_rule(recording, search, settings);
   if (!settings.trim_ends) return fit;
-  const std::optional<FlightSearch> trimmed = trimmed_flights(recording, fit);
-  return trimmed ? fit_with_bias_rule(recording, *trimmed, settings) : fit;
+  return trim_to_free_flight(recording, std::move(fit), [&](const FlightSearch& trimmed) {
+    return fit_with_bias_rule(recording, trimmed, settings);
+  });
 }
 
 }  // namespace bookspin::fit
