@@ -55,7 +55,9 @@ TEST(FlightTrim, AFlightRunningIntoItsThrowAndCatchIsCutBackToTheFreeFlight) {
 // Every flight of every development recording, each alone: none keeps its throw or its catch
 // (a flag naming either) once trimmed; as found, 12-44-51's main throw keeps 70–90 ms of its
 // throw (the samples there need a torque, toss_flags.hpp's step_torque). The bare phone's three
-// main throws (its longest tosses) alone are clean; pooled, none keeps its throw or catch.
+// main throws (its longest tosses) alone are clean, and pooled each of its tosses is: 12-13-01's
+// and 12-13-51's throws, whole, fit at 5.1 % of |ω| overall but 2.8 and 1.3 % in their typical
+// 50 ms, the rest in their last 0.1 s (the fit drifting off near the separatrix).
 TEST(FlightTrim, NoRealFlightKeepsItsThrowOrCatch) {
   REQUIRE_REAL_RECORDINGS();
   const auto kept = [](const TossFit& toss) {
@@ -88,7 +90,7 @@ TEST(FlightTrim, NoRealFlightKeepsItsThrowOrCatch) {
   const FitReport pooled = fit_report(pool_recordings(bare), {});
   ASSERT_EQ(pooled.result.tosses.size(), 6u);
   for (const TossFit& toss : pooled.result.tosses) {
-    EXPECT_FALSE(kept(toss)) << toss.flag;
+    EXPECT_EQ(toss.flag, "");
     std::cout << "pooled " << toss.flight.t_start << "–" << toss.flight.t_end << ": "
               << (toss.flag.empty() ? "clean" : toss.flag) << "\n";
   }
