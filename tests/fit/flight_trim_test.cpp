@@ -56,7 +56,7 @@ TEST(FlightTrim, AFlightRunningIntoItsThrowAndCatchIsCutBackToTheFreeFlight) {
 // (a flag naming either) once trimmed; as found, 12-44-51's main throw keeps 70–90 ms of its
 // throw (the samples there need a torque, toss_flags.hpp's step_torque). The bare phone's three
 // main throws (its longest tosses) alone are clean, and pooled each of its tosses is: 12-13-01's
-// and 12-13-51's throws, whole, fit at 5.1 % of |ω| overall but 2.8 and 1.3 % in their typical
+// and 12-13-51's throws, whole, fit at 5.1 % of |ω| overall but 2.8 and 1.2 % in their typical
 // 50 ms, the rest in their last 0.1 s (the fit drifting off near the separatrix).
 TEST(FlightTrim, NoRealFlightKeepsItsThrowOrCatch) {
   REQUIRE_REAL_RECORDINGS();
