@@ -3,13 +3,28 @@
 #include <algorithm>
 #include <vector>
 
+#include "fit/toss_flags.hpp"
+
 namespace bookspin::fit {
+namespace {
+
+double median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+}  // namespace
 
 std::optional<FlightSearch> trimmed_flights(const GyroRecording& recording, const FitResult& fit,
+                                            const FlightSearch& found,
                                             const FinderSettings& settings) {
   FlightSearch search = fit.search;
+  const Eigen::Matrix3d inertia =
+      fit.body.axes * fit.body.ratios.asDiagonal() * fit.body.axes.transpose();
   bool moved = false;
-  for (std::size_t k = 0; k < fit.tosses.size() && k < search.flights.size(); ++k) {
+  const std::size_t count =
+      std::min({fit.tosses.size(), search.flights.size(), found.flights.size()});
+  for (std::size_t k = 0; k < count; ++k) {
     std::vector<double> t;
     std::vector<Eigen::Vector3d> omega;
     measured_omega(recording, fit, static_cast<int>(k), t, omega);
@@ -18,12 +33,21 @@ std::optional<FlightSearch> trimmed_flights(const GyroRecording& recording, cons
     std::vector<double> residual(t.size());
     for (int i = 0; i < n; ++i)
       residual[i] = (omega[i] - fitted_omega(fit, static_cast<int>(k), t[i])).norm();
-    std::vector<double> sorted = residual;
-    std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
-    const double threshold = kTrimFactor * sorted[n / 2];
+    const double threshold = kTrimFactor * median(residual);
+    // The torque the samples need (toss_flags.hpp), each sample the larger of its two steps'.
+    const std::vector<double> step = step_torque(t, omega, inertia);
+    const double torque_threshold = kTrimFactor * median(step);
+    const auto thrown_or_caught = [&](int i) {
+      const double torque = std::max(i > 0 ? step[i - 1] : 0.0, i + 1 < n ? step[i] : 0.0);
+      return residual[i] > threshold && torque > torque_threshold;
+    };
+    // Each end moves in while its sample is the throw's or the catch's and the next one in is
+    // still within kMaxTrim of the found flight's end.
+    const Flight& limit = found.flights[k];
     int first = 0, last = n - 1;
-    while (first < last && residual[first] > threshold && t[first] - t[0] < kMaxTrim) ++first;
-    while (last > first && residual[last] > threshold && t[n - 1] - t[last] < kMaxTrim) --last;
+    while (first < last && thrown_or_caught(first) && t[first + 1] - limit.t_start <= kMaxTrim)
+      ++first;
+    while (last > first && thrown_or_caught(last) && limit.t_end - t[last - 1] <= kMaxTrim) --last;
     if (first == 0 && last == n - 1) continue;
     if (t[last] - t[first] < settings.min_flight || last - first + 1 < 10) continue;
     Flight& flight = search.flights[k];
@@ -35,6 +59,18 @@ std::optional<FlightSearch> trimmed_flights(const GyroRecording& recording, cons
   }
   if (!moved) return std::nullopt;
   return search;
+}
+
+FitResult trim_to_free_flight(const GyroRecording& recording, FitResult fit,
+                              const std::function<FitResult(const FlightSearch&)>& refit,
+                              const FinderSettings& settings) {
+  const FlightSearch found = fit.search;
+  for (int pass = 0; pass < kMaxTrimPasses; ++pass) {
+    const std::optional<FlightSearch> trimmed = trimmed_flights(recording, fit, found, settings);
+    if (!trimmed) break;
+    fit = refit(*trimmed);
+  }
+  return fit;
 }
 
 }  // namespace bookspin::fit

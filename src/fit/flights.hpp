@@ -76,4 +76,8 @@ FlightSearch hand_flights(const GyroRecording& recording,
                           const std::vector<std::pair<double, double>>& ranges,
                           const std::string& option = "--tosses");
 
+/// Throws InputError "<source>: no free flight found", with why each of `search`'s stretches
+/// was dropped ("(t0–t1 s: reason; …)").
+[[noreturn]] void throw_no_flight(const GyroRecording& recording, const FlightSearch& search);
+
 }  // namespace bookspin::fit

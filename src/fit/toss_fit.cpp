@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "common/errors.hpp"
 #include "fit/flight_trim.hpp"
@@ -28,16 +29,6 @@ constexpr double kPi = 3.14159265358979323846;
 /// s: a prediction whose held-out body rests on less flight time than this (a bounce, not a
 /// throw) is said to be poorly founded.
 constexpr double kShortBasis = 0.6;
-
-/// InputError "no free flight found", with why each stretch was dropped.
-[[noreturn]] void no_flight(const GyroRecording& recording, const FlightSearch& search) {
-  std::string why;
-  for (const DroppedStretch& d : search.dropped)
-    why += (why.empty() ? " (" : "; ") + std::to_string(d.t_start) + "–" + std::to_string(d.t_end) +
-           " s: " + d.reason;
-  if (!why.empty()) why += ")";
-  throw InputError(recording.source + ": no free flight found" + why);
-}
 
 /// Each flight's samples, its recording's bias removed, its times from its start; the samples
 /// where the gyroscope read its range left out (docs/phone-lab.md, "Saturation") unless too few
@@ -110,8 +101,9 @@ BiasFreedom bias_freedom(const std::vector<RecordingPart>& parts, const std::vec
 
 /// The joint fit of every toss from `p`'s start: grown over each toss (0.3, 0.6, then all of
 /// it), so that a rough start does not lock onto a wrong phase, the drag rates joining at the
-/// last stage; bounded bias corrections held while the body settles and freed after (a bounded
-/// solve from a body still far off leaves them at the bound's wall); then any toss whose drag
+/// last stage; free bias corrections (no rest) held at 0 until then (freed on each flight's start
+/// they traded 2 rad/s for a wrong body), bounded ones until the body settles (a bounded solve
+/// from a body far off leaves them at the bound's wall); then any toss whose drag
 /// rate came out below 0 fitted again with it held at 0 (air cannot speed a body up,
 /// docs/phone-lab.md, "Drag": held, not bounded, since a bound that a rate meets from its start
 /// at 0 stalled Ceres's bounded steps far from the fit). Throws InputError when a stage fails.
@@ -132,6 +124,8 @@ Solved joint_fit(const std::vector<TossData>& data, Parameters& p, const BiasFre
     options.drag = law;
     options.rates_fixed = fraction < 1.0;
     options.bias_group_held = bias.held;
+    for (std::size_t g = 0; g < bias.free.size() && fraction < 1.0; ++g)
+      options.bias_group_held[g] = bias.held[g] || bias.free[g];
     if (!solve(data, p, options).usable) throw failed();
     normalise(p);
   }
@@ -413,7 +407,8 @@ TossFit toss_values(const std::vector<TossData>& data, std::size_t k, const Para
   }
   toss.residual_rms = std::sqrt(sum2 / d.tau.size());
   toss.saturated = d.at_range;
-  toss.flag = toss_flag(d, residual, saturation, noise);
+  toss.flag = toss_flag(d, residual, saturation, noise,
+                        body.axes * body.ratios.asDiagonal() * body.axes.transpose());
   toss.poor_fit = !toss.flag.empty();
   if (toss.poor_fit)
     body.notes.push_back("toss " + std::to_string(k + 1) + " flagged: " + toss.flag +
@@ -587,11 +582,12 @@ FitResult fit_with_bias_rule(const GyroRecording& recording, const FlightSearch&
 FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
                         const FitSettings& settings) {
   check_pooled(recording);
-  if (search.flights.empty()) no_flight(recording, search);
-  const FitResult fit = fit_with_bias_rule(recording, search, settings);
+  if (search.flights.empty()) throw_no_flight(recording, search);
+  FitResult fit = fit_with_bias_rule(recording, search, settings);
   if (!settings.trim_ends) return fit;
-  const std::optional<FlightSearch> trimmed = trimmed_flights(recording, fit);
-  return trimmed ? fit_with_bias_rule(recording, *trimmed, settings) : fit;
+  return trim_to_free_flight(recording, std::move(fit), [&](const FlightSearch& trimmed) {
+    return fit_with_bias_rule(recording, trimmed, settings);
+  });
 }
 
 }  // namespace bookspin::fit

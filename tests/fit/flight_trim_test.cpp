@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "fit/pool.hpp"
 #include "fit/report.hpp"
@@ -17,8 +18,6 @@
 
 namespace bookspin::fit {
 namespace {
-
-namespace fs = std::filesystem;
 
 // Flights that run 0.1 s into their catch come back to within 20 ms of the true flight's end;
 // left untrimmed, they keep it and are flagged for it.
@@ -50,28 +49,51 @@ TEST(FlightTrim, AFlightRunningIntoItsThrowAndCatchIsCutBackToTheFreeFlight) {
     EXPECT_LT(cut.tosses[k].residual_rms, 0.5 * kept.tosses[k].residual_rms) << k;
   }
   // Flights that are free to their ends stay as they are.
-  EXPECT_FALSE(trimmed_flights(recording, cut).has_value());
+  EXPECT_FALSE(trimmed_flights(recording, cut, given).has_value());
 }
 
-// Every development recording alone: at most one main throw (its longest toss) flagged as
-// holding its catch (the finder's ends ran 30–100 ms into the landing).
-TEST(FlightTrim, AtMostOneRealMainThrowKeepsItsCatch) {
-  if (!fs::is_directory(real_dir())) GTEST_SKIP() << "no real recordings at " << real_dir();
-  int flagged = 0;
+// Every flight of every development recording, each alone: none keeps its throw or its catch
+// (a flag naming either) once trimmed; as found, 12-44-51's main throw keeps 70–90 ms of its
+// throw (the samples there need a torque, toss_flags.hpp's step_torque). The bare phone's three
+// main throws (its longest tosses) alone are clean, and pooled each of its tosses is: 12-13-01's
+// and 12-13-51's throws, whole, fit at 5.1 % of |ω| overall but 2.8 and 1.2 % in their typical
+// 50 ms, the rest in their last 0.1 s (the fit drifting off near the separatrix).
+TEST(FlightTrim, NoRealFlightKeepsItsThrowOrCatch) {
+  REQUIRE_REAL_RECORDINGS();
+  const auto kept = [](const TossFit& toss) {
+    return toss.flag.find("throw inside") != std::string::npos ||
+           toss.flag.find("catch inside") != std::string::npos;
+  };
+  const auto longest = [](const std::vector<TossFit>& tosses) {
+    return std::max_element(tosses.begin(), tosses.end(), [](const TossFit& a, const TossFit& b) {
+      return a.flight.t_end - a.flight.t_start < b.flight.t_end - b.flight.t_start;
+    });
+  };
+  int keeping = 0;
   for (const char* name :
        {"12-10-56", "12-13-01", "12-13-51", "12-22-44", "12-29-59", "12-38-00", "12-44-51"}) {
     const FitReport report = fit_report(pool_recordings({read_recording(real_dir() / name)}), {});
-    const auto main = std::max_element(report.result.tosses.begin(), report.result.tosses.end(),
-                                       [](const TossFit& a, const TossFit& b) {
-                                         return a.flight.t_end - a.flight.t_start <
-                                                b.flight.t_end - b.flight.t_start;
-                                       });
-    ASSERT_NE(main, report.result.tosses.end()) << name;
-    const bool catch_kept = main->flag.find("catch") != std::string::npos;
-    flagged += catch_kept;
-    if (catch_kept) std::cout << name << ": " << main->flag << "\n";
+    for (const TossFit& toss : report.result.tosses) {
+      keeping += kept(toss);
+      std::cout << name << " " << toss.flight.t_start << "–" << toss.flight.t_end << ": "
+                << (toss.flag.empty() ? "clean" : toss.flag) << "\n";
+    }
+    const bool bare_phone = std::string(name) <= "12-13-51";  // 12-10-56, 12-13-01, 12-13-51
+    if (bare_phone) {
+      EXPECT_EQ(longest(report.result.tosses)->flag, "") << name;
+    }
   }
-  EXPECT_LE(flagged, 1);
+  EXPECT_EQ(keeping, 0);
+  std::vector<GyroRecording> bare;
+  for (const char* name : {"12-10-56", "12-13-01", "12-13-51"})
+    bare.push_back(read_recording(real_dir() / name));
+  const FitReport pooled = fit_report(pool_recordings(bare), {});
+  ASSERT_EQ(pooled.result.tosses.size(), 6u);
+  for (const TossFit& toss : pooled.result.tosses) {
+    EXPECT_EQ(toss.flag, "");
+    std::cout << "pooled " << toss.flight.t_start << "–" << toss.flight.t_end << ": "
+              << (toss.flag.empty() ? "clean" : toss.flag) << "\n";
+  }
 }
 
 }  // namespace
