@@ -664,7 +664,7 @@ def main():
             driver.execute_script("document.getElementById('labDropped').open = true")
             problems, count = panel_text_problems(driver)
             driver.save_screenshot(str(shots / "explorer-lab-long-name-1366x768.png"))
-            driver.execute_script("document.querySelector('#labTosses .toss td.words:last-child')"
+            driver.execute_script("document.querySelector('#labTosses .toss tr:last-child td')"
                                   ".scrollIntoView({block: 'center'})")
             time.sleep(0.5)
             driver.save_screenshot(str(shots / "explorer-lab-flagged-1366x768.png"))
