@@ -179,20 +179,30 @@ bookspin::physics::DragLaw drag_arg(const std::string& drag) {
   return law;
 }
 
+/// `tosses` (the lab's "Flights by hand (s)" field, the command line's --tosses syntax) as the
+/// command line reads its option (fit::parse_toss_ranges), its errors naming the field; none
+/// for a blank field: the flights found.
+std::vector<std::pair<double, double>> tosses_arg(const std::string& tosses) {
+  return fit::parse_toss_ranges(tosses, fit::tosses_name(fit::Reader::page));
+}
+
 /// Empties kFolder (the folder in use cannot be removed: the root first).
 void clear_memory() {
   std::filesystem::current_path("/");
   std::filesystem::remove_all(kFolder);
 }
 
-/// The fit of `recording` under `law` as the page's value: {recording, body (the -fit-body.csv
+/// The fit of `recording` under `law`, of the flights `tosses` by hand (none: those found), as
+/// the page's value: {recording, body (the -fit-body.csv
 /// row keyed by its columns), tosses (the -fit.csv rows), summary (the lines the command prints
 /// before "wrote …", its remedies in the page's terms), dropped (every stretch dropped, a line
 /// each, as --verbose prints them), charts (per toss {t, measured, fitted}), scenes (per toss the
 /// page's scene data; an empty array where the fitted moments make no body, as the command writes
 /// no scene)}.
-val report_value(const fit::GyroRecording& recording, bookspin::physics::DragLaw law) {
+val report_value(const fit::GyroRecording& recording, bookspin::physics::DragLaw law,
+                 const std::vector<std::pair<double, double>>& tosses) {
   fit::FitRequest request;
+  request.tosses = tosses;  // by hand: refused for several recordings, as the command's
   request.settings.drag = law;
   request.reader = fit::Reader::page;  // its remedies in the page's terms, not the options'
   const fit::FitReport report = fit::fit_report(recording, request);
@@ -215,25 +225,31 @@ val report_value(const fit::GyroRecording& recording, bookspin::physics::DragLaw
   return out;
 }
 
-/// `bookspin fit FILE --drag DRAG`: report_value of the recording `bytes` named `file_name`
-/// (read_given), or {error}.
-val fit_recording(const std::string& file_name, const std::string& bytes, const std::string& drag) {
+/// `bookspin fit FILE --drag DRAG [--tosses TOSSES]`: report_value of the recording `bytes`
+/// named `file_name` (read_given), of the flights `tosses` by hand (tosses_arg; blank: those
+/// found), or {error}.
+val fit_recording(const std::string& file_name, const std::string& bytes, const std::string& drag,
+                  const std::string& tosses) {
   return guarded([&] {
     const bookspin::physics::DragLaw law = drag_arg(drag);
+    const std::vector<std::pair<double, double>> ranges = tosses_arg(tosses);
     clear_memory();
-    return report_value(fit::pool_recordings({read_given(file_name, bytes, 0)}), law);
+    return report_value(fit::pool_recordings({read_given(file_name, bytes, 0)}), law, ranges);
   });
 }
 
-/// `bookspin fit FILE1 FILE2 … --drag DRAG` (docs/phone-lab.md, "A class's recordings"):
+/// `bookspin fit FILE1 FILE2 … --drag DRAG [--tosses TOSSES]` (docs/phone-lab.md, "A class's
+/// recordings"):
 /// `files` an array of {name, bytes, meta} (as fit_recording's; meta, optional: an export's
 /// [{name, bytes}] as read_given takes them); each read, those that cannot be read
 /// refused and the others fitted as one body (fit::pool_recordings; alone, as fit_recording).
 /// report_value plus fitted (the names fitted) and refused ([{file, error}: the command line's
-/// one line]); {error} when none can be read or the fit fails.
-val fit_recordings(const val& files, const std::string& drag) {
+/// one line]); {error} when none can be read or the fit fails, and for flights by hand with
+/// two or more read (the command line's refusal: their times are one recording's).
+val fit_recordings(const val& files, const std::string& drag, const std::string& tosses) {
   return guarded([&] {
     const bookspin::physics::DragLaw law = drag_arg(drag);
+    const std::vector<std::pair<double, double>> ranges = tosses_arg(tosses);
     clear_memory();
     const int count = files["length"].as<int>();
     std::vector<fit::GyroRecording> read;
@@ -259,7 +275,7 @@ val fit_recordings(const val& files, const std::string& drag) {
       }
     }
     if (read.empty()) throw InputError(count ? first_error : "no recording given");
-    val out = report_value(fit::pool_recordings(read), law);
+    val out = report_value(fit::pool_recordings(read), law, ranges);
     out.set("fitted", fitted);
     out.set("refused", refused);
     return out;

@@ -11,7 +11,9 @@
 #include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "common/errors.hpp"
+#include "fit/flights.hpp"
 #include "fit/pool.hpp"
+#include "fit/report.hpp"
 #include "products/fit.hpp"
 
 namespace bookspin::cli {
@@ -56,13 +58,8 @@ std::vector<std::string> split(const std::string& text, char separator) {
 int fit_command(const FitOptions& options) {
   products::FitJob job;
   job.out_dir = options.out_dir;
-  if (!options.tosses.empty())
-    for (const std::string& range : split(options.tosses, ',')) {
-      const std::vector<std::string> ends = split(range, ':');
-      if (ends.size() != 2) throw InputError("--tosses: \"" + range + "\" is not START:END");
-      job.request.tosses.emplace_back(parse_number(ends[0], "--tosses"),
-                                      parse_number(ends[1], "--tosses"));
-    }
+  job.request.tosses =
+      fit::parse_toss_ranges(options.tosses, fit::tosses_name(fit::Reader::command_line));
   if (!options.moments.empty()) {
     const std::vector<std::string> parts = split(options.moments, ',');
     if (parts.size() != 3) throw InputError("--moments: expected I1,I2,I3");

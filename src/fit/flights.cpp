@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <string>
 
 #include "common/errors.hpp"
+#include "common/number_text.hpp"
 #include "fit/pool.hpp"
 #include "fit/saturation.hpp"
 
@@ -307,6 +310,36 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     search.dropped.push_back({t[first], t[last], reason});
   }
   return search;
+}
+
+std::vector<std::pair<double, double>> parse_toss_ranges(const std::string& text,
+                                                         const std::string& option) {
+  const auto trimmed = [](const std::string& part) {
+    const std::size_t begin = part.find_first_not_of(" \t");
+    if (begin == std::string::npos) return std::string();
+    return part.substr(begin, part.find_last_not_of(" \t") - begin + 1);
+  };
+  const auto number = [&](const std::string& part) {
+    const std::string given = trimmed(part);
+    const std::optional<double> value = read_number(given);
+    if (!value || !std::isfinite(*value))
+      throw InputError(option + ": \"" + given + "\" is not a number");
+    return *value;
+  };
+  std::vector<std::pair<double, double>> ranges;
+  if (trimmed(text).empty()) return ranges;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', begin), text.size());
+    const std::string range = text.substr(begin, comma - begin);
+    const std::size_t colon = range.find(':');
+    if (colon == std::string::npos || range.find(':', colon + 1) != std::string::npos)
+      throw InputError(option + ": \"" + trimmed(range) + "\" is not START:END");
+    const double start = number(range.substr(0, colon));  // named first where both are bad
+    ranges.emplace_back(start, number(range.substr(colon + 1)));
+    begin = comma + 1;
+  }
+  return ranges;
 }
 
 FlightSearch hand_flights(const GyroRecording& recording,

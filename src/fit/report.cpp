@@ -76,10 +76,12 @@ TossChart toss_chart(const GyroRecording& recording, const FitResult& fit, int t
 FitReport fit_report(const GyroRecording& recording, const FitRequest& request,
                      const StopPoll& stop) {
   stop_if_asked(stop, "fit flights");
+  const std::string tosses = tosses_name(request.reader);
   if (recording.parts.size() >= 2 && !request.tosses.empty())
-    throw InputError("--tosses: with one recording only (the times are that recording's)");
-  const FlightSearch search =
-      request.tosses.empty() ? find_flights(recording) : hand_flights(recording, request.tosses);
+    throw InputError(tosses + ": with one recording only (the times are that recording's)");
+  const FlightSearch search = request.tosses.empty()
+                                  ? find_flights(recording)
+                                  : hand_flights(recording, request.tosses, tosses);
   FitReport report;
   report.recording = recording.name;
   report.source = recording.source;

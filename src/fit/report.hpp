@@ -21,11 +21,18 @@ namespace bookspin::fit {
 
 /// What a fit is asked for besides the recording.
 struct FitRequest {
-  /// --tosses by hand, [t_start, t_end] s each (hand_flights); empty: found (find_flights).
+  /// --tosses by hand, [t_start, t_end] s each (parse_toss_ranges, hand_flights); empty: found
+  /// (find_flights).
   std::vector<std::pair<double, double>> tosses;
   FitSettings settings;                  ///< --moments, --drag
   Reader reader = Reader::command_line;  ///< whose terms the summary's remedies are in
 };
+
+/// How an error line names the flights by hand (parse_toss_ranges, hand_flights): the command
+/// line's option, or the explorer lab's field ("Flights by hand (s)").
+inline const char* tosses_name(Reader reader) {
+  return reader == Reader::page ? "flights by hand" : "--tosses";
+}
 
 /// One toss's chart as values (charts::toss_image draws it; docs/phone-lab.md, "Reading the
 /// result").

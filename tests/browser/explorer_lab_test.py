@@ -26,9 +26,20 @@ as a zip), under each drag law the command line offers (--drag linear, quadratic
     bad one among them, through window.explorer.fitRecordings and through the file input
     (several files at once): the three fitted as one body equal `bookspin fit S1 S2 S3`'s tables
     and summary, and the bad one is refused with the command line's line for it;
+  - flights by hand on a real recording (../shared/recordings-real/, 12-13-01, skipped in part
+    where that folder is absent, a failure under CI=true): its two flights named out of order
+    ("2.88:3.22, 1.82:2.71", as `bookspin fit --tosses` takes them), through the hook and the
+    panel's "Flights by hand (s)" field, equal `bookspin fit REC --tosses …`'s tables and summary
+    as above; each bad range (reversed, not START:END, not a number, too few samples, twice,
+    overlapping) and flights by hand with a class's recordings refused with the command line's
+    line, naming the field where it names --tosses; a change of the field fits again;
+  - a recording with a long file name and a flagged toss (12-13-51) at 1366x768: every line of
+    the panel's text inside the panel and the window, none over another or a chart, none under
+    12 px;
   - explorer.html#lab opens the panel; no console error.
-Screenshots: BINARY_DIR/test-output/browser/explorer-lab-{1280x720,390x844}.png, and the class's
-fit explorer-lab-class-1280x720.png.
+Screenshots: BINARY_DIR/test-output/browser/explorer-lab-{1280x720,390x844}.png, the class's
+fit explorer-lab-class-1280x720.png, and the long name's explorer-lab-long-name-1366x768.png and
+explorer-lab-flagged-1366x768.png.
 
 TOL: the two fits are the same code and solver, the native one with Ceres's fixed-size Schur
 specializations and threads and glibc's libm, the page's with the dynamic-size Schur solver,
@@ -56,7 +67,7 @@ import zipfile
 from pathlib import Path
 
 from browser import (at_sigma, console_errors, fail, find_browser, open_browser, require, run, serve,
-                     test_arguments, wait_for)
+                     test_arguments, under_ci, wait_for)
 
 TOL = 1e-6
 UNIT_COLUMNS = re.compile(r"^(axis\d_[xyz]|I\d_over_I3)$")
@@ -111,15 +122,80 @@ def compare_row(where, page, header, cli):
     return worst
 
 
-def fit_in_page(driver, base_url, path, name, drag):
-    """window.explorer.fitRecording of the served file `path`, named `name`: {ok, r} or
-    {ok: false, error}; the bytes fetched by the page itself."""
+def fit_in_page(driver, base_url, path, name, drag, tosses=""):
+    """window.explorer.fitRecording of the served file `path`, named `name`, of the flights
+    `tosses` by hand (blank: found): {ok, r} or {ok: false, error}; the bytes fetched by the
+    page itself."""
     return driver.execute_async_script("""
-        const [url, name, drag, done] = arguments;
+        const [url, name, drag, tosses, done] = arguments;
         fetch(url).then((r) => r.arrayBuffer())
-          .then((b) => window.explorer.fitRecording(name, new Uint8Array(b), drag))
+          .then((b) => window.explorer.fitRecording(name, new Uint8Array(b), drag, tosses))
           .then((r) => done({ok: true, r}), (e) => done({ok: false, error: String(e.message)}));
-    """, base_url + path, name, drag)
+    """, base_url + path, name, drag, tosses)
+
+
+def cli_error(bookspin, args, cwd):
+    """The one line `bookspin ARGS` refuses its input with (exit 2), without "bookspin: error: "."""
+    r = subprocess.run([bookspin, *args], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    lines = r.stderr.strip().splitlines()
+    if r.returncode != 2 or len(lines) != 1 or not lines[0].startswith("bookspin: error: "):
+        fail(f"bookspin {' '.join(args)}: exit {r.returncode}, not one line and exit 2: {r.stderr!r}")
+    return lines[0][len("bookspin: error: "):]
+
+
+def in_page_words(line):
+    """A command line's error line about --tosses as the page says it: naming its field."""
+    return line.replace("--tosses", "flights by hand")
+
+
+# Every piece of text of the lab's panel (each line of each text node, Range.getClientRects) and
+# each chart: where it lies, against the panel's box and the window's width, and its font size.
+PANEL_TEXT = """
+const box = document.getElementById('labBox').getBoundingClientRect();
+const pieces = [], walker = document.createTreeWalker(document.getElementById('labBox'), NodeFilter.SHOW_TEXT);
+for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+  if (!n.textContent.trim()) continue;
+  const range = document.createRange();
+  range.selectNodeContents(n);
+  for (const r of range.getClientRects())
+    if (r.width > 0 && r.height > 0)
+      pieces.push({text: n.textContent.trim().slice(0, 50), size: parseFloat(getComputedStyle(n.parentElement).fontSize),
+                   left: r.left, right: r.right, top: r.top, bottom: r.bottom, chart: false});
+}
+for (const c of document.querySelectorAll('#labBox canvas')) {
+  const r = c.getBoundingClientRect();
+  pieces.push({text: 'chart', size: 12, left: r.left, right: r.right, top: r.top, bottom: r.bottom, chart: true});
+}
+return {box: {left: box.left, right: box.right, top: box.top, bottom: box.bottom},
+        width: document.documentElement.clientWidth, pieces};
+"""
+
+
+def panel_text_problems(driver):
+    """What a reader cannot read in the lab's panel: text under 12 px, past the panel's box or
+    the window's edges, or over other text or a chart (two pieces overlapping by more than a
+    pixel each way); a line each."""
+    state = driver.execute_script(PANEL_TEXT)
+    box, width, pieces = state["box"], state["width"], state["pieces"]
+    problems = []
+    for p in pieces:
+        if p["size"] < 12:
+            problems.append(f"under 12 px ({p['size']} px): {p['text']!r}")
+        if p["left"] < box["left"] - 0.5 or p["right"] > box["right"] + 0.5 or \
+                p["top"] < box["top"] - 0.5 or p["bottom"] > box["bottom"] + 0.5:
+            problems.append(f"past the panel ({p['left']:.0f}–{p['right']:.0f} px of "
+                            f"{box['left']:.0f}–{box['right']:.0f}): {p['text']!r}")
+        if p["left"] < 0 or p["right"] > width:
+            problems.append(f"past the window ({p['left']:.0f}–{p['right']:.0f} px of {width}): {p['text']!r}")
+    for i, a in enumerate(pieces):
+        for b in pieces[i + 1:]:
+            if a["chart"] and b["chart"]:
+                continue
+            dx = min(a["right"], b["right"]) - max(a["left"], b["left"])
+            dy = min(a["bottom"], b["bottom"]) - max(a["top"], b["top"])
+            if dx > 1 and dy > 1:
+                problems.append(f"overlap: {a['text']!r} and {b['text']!r}")
+    return problems, len(pieces)
 
 
 def page_scenes(html):
@@ -239,6 +315,61 @@ def main():
                  read_csv(folder / "student1-and-2-more-fit.csv"))
     bad_name, bad_line = next(iter(bad_cases.items()))
 
+    # Flights by hand on a real recording (docs/phone-lab.md, "The flights by hand"): 12-13-01's
+    # two flights named in the page's placeholder's words, out of order and with a space, as
+    # `bookspin fit --tosses` takes them; the command line's fit, and its line for each bad
+    # range. And a recording with a long file name and a flagged toss (12-13-51, its first
+    # toss's catch inside the flight), for the panel's text at 1366x768.
+    real = source.parent / "shared" / "recordings-real" / "dvarkian-2022-05-03"
+    hand = None
+    if real.is_dir():
+        (recordings / "real-12-13-01").mkdir()
+        shutil.copy(real / "12-13-01" / "Raw Data.csv", recordings / "real-12-13-01" / "Raw Data.csv")
+        hand_file = "real-12-13-01/Raw Data.csv"
+        hand_text = "2.88:3.22, 1.82:2.71"
+        folder = out / "cli" / "hand"
+        r = subprocess.run([bookspin, "fit", hand_file, "--tosses", hand_text, "-o", str(folder)], cwd=recordings,
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        if r.returncode != 0:
+            fail(f"bookspin fit {hand_file} --tosses {hand_text!r}: exit {r.returncode}: {r.stderr}")
+        hand_summary = [line for line in r.stdout.splitlines()
+                        if not line.startswith(("wrote ", "to play the tosses", "no scene of the tosses"))]
+        hand_body, hand_tosses = read_csv(folder / "real-12-13-01-fit-body.csv"), read_csv(folder / "real-12-13-01-fit.csv")
+        # The command line fitted the ranges given, in time order, as given: each toss from the
+        # recording's first sample at or after its start to its last at or before its end.
+        th, trows = hand_tosses
+        times = [float(line.split(",")[0]) for line in
+                 (recordings / hand_file).read_text().splitlines()[1:] if line.strip()]
+        for (a, b), row in zip([(1.82, 2.71), (2.88, 3.22)], trows):
+            t0, t1 = float(row[th.index("t_start")]), float(row[th.index("t_end")])
+            first, last = min(t for t in times if t >= a), max(t for t in times if t <= b)
+            if not (close(t0, first, 1e-12) and close(t1, last, 1e-12)):
+                fail(f"bookspin fit --tosses {hand_text!r}: a toss {t0}–{t1} s, not the samples "
+                     f"{first}–{last} s of {a}:{b}")
+        if len(trows) != 2:
+            fail(f"bookspin fit --tosses {hand_text!r}: {len(trows)} tosses, not 2")
+        hand_bad = {text: cli_error(bookspin, ["fit", hand_file, "--tosses", text, "-o", str(out / "cli" / "x")],
+                                    recordings)
+                    for text in ("2.71:1.82", "1.82-2.71", "1.82:2.71, a:3", "0.5:0.55", "1.82:2.71,1.82:2.71",
+                                 "1.82:2.71,2.5:3.22")}
+        pooled_line = cli_error(bookspin, ["fit", *class_names[:2], "--tosses", "1:2", "-o", str(out / "cli" / "x")],
+                                recordings)
+        long_name = ("dvarkian-2022-05-03-12-13-51-gyroscope-rotation-rate-thrown-from-the-hand-"
+                     "and-caught-again-by-the-same-hand.csv")
+        shutil.copy(real / "12-13-51" / "Raw Data.csv", recordings / long_name)
+        folder = out / "cli" / "long"
+        run([bookspin, "fit", long_name, "-o", str(folder)], cwd=recordings)
+        lh, lrows = read_csv(sorted(folder.glob("*-fit.csv"))[0])
+        why = [row[lh.index("flag")] for row in lrows if row[lh.index("poor_fit")] == "yes"]
+        if not why:
+            fail(f"{long_name}: no toss flagged by bookspin fit; the panel's text check needs one")
+        hand = (hand_file, hand_text, hand_body, hand_tosses, hand_summary, hand_bad, pooled_line, long_name, why)
+    elif under_ci():
+        fail(f"{real} is missing (CI=true: the flights by hand are checked on a real recording)")
+    else:
+        print(f"SKIPPED in part: {real} is missing (../shared/recordings-real/ beside the checkout): "
+              "no flights by hand on a real recording, no long name")
+
     with serve(out) as base_url, \
             open_browser(chromium, driver_path, size=(1280, 720), exact_viewport=True) as driver:
         driver.get(base_url + "explorer.html?scene=exact-unstable-x#lab")
@@ -285,6 +416,41 @@ def main():
         if not names or names[0] != "recording-toss1":
             fail(f"Raw Data.csv alone: its toss scenes are named {names}, not recording-toss1, …")
         print(f"Raw Data.csv alone: scenes {names}")
+
+        # 1c. Flights by hand through the hook: the command line's fit of the same ranges, every
+        # column and the summary; each bad range refused with the command line's line, naming
+        # the page's field; and refused for a class's recordings, as the command refuses them.
+        if hand:
+            hand_file, hand_text, (bh, brows), (th, trows), hand_summary, hand_bad, pooled_line, _, _ = hand
+            got = fit_in_page(driver, base_url, "recordings/" + hand_file, hand_file, "linear", hand_text)
+            if not got["ok"]:
+                fail(f"{hand_file}, flights by hand {hand_text!r}: the page refused it: {got['error']}")
+            r = got["r"]
+            worst = compare_row(f"{hand_file} by hand body", r["body"], bh, brows[0])
+            if len(r["tosses"]) != len(trows):
+                fail(f"{hand_file} by hand: the page fitted {len(r['tosses'])} tosses, bookspin fit {len(trows)}")
+            for k, (page_row, cli_row) in enumerate(zip(r["tosses"], trows)):
+                worst = max(worst, compare_row(f"{hand_file} by hand toss {k + 1}", page_row, th, cli_row))
+            in_page_terms = [line.replace("give --moments I1,I2,I3", page_remedy) for line in hand_summary]
+            if r["summary"] != in_page_terms:
+                fail(f"{hand_file} by hand: the page's summary {r['summary']} is not the command's {in_page_terms}")
+            for text, line in hand_bad.items():
+                got = fit_in_page(driver, base_url, "recordings/" + hand_file, hand_file, "linear", text)
+                if got.get("ok") or got["error"] != in_page_words(line):
+                    fail(f"flights by hand {text!r}: the page said {got.get('error')!r}, the command line {line!r}")
+            got = driver.execute_async_script("""
+                const [base, names, done] = arguments;
+                Promise.all(names.map((n) => fetch(base + 'recordings/' + n).then((r) => r.arrayBuffer())
+                    .then((b) => ({name: n, bytes: new Uint8Array(b)}))))
+                  .then((files) => window.explorer.fitRecordings(files, 'linear', '1:2'))
+                  .then((r) => done({ok: true, r}), (e) => done({ok: false, error: String(e.message)}));
+            """, base_url, class_names[:2])
+            if got.get("ok") or got["error"] != in_page_words(pooled_line):
+                fail(f"two recordings with flights by hand: the page said {got.get('error')!r}, "
+                     f"the command line {pooled_line!r}")
+            print(f"flights by hand {hand_text!r} on {hand_file}: {len(trows)} tosses, every column equal "
+                  f"(largest difference {worst:.1e} of its scale), summary equal; {len(hand_bad)} bad ranges "
+                  "and a class's recordings refused with the command line's lines")
 
         # 2. Bad recordings: the command line's one line.
         for name, line in bad_cases.items():
@@ -458,6 +624,56 @@ def main():
                          lambda t: t.startswith("error:"), 60)
         if error != "error: " + bad_line:
             fail(f"the panel shows {error!r} for {bad_name}, the command line {bad_line!r}")
+
+        # 5b. Flights by hand through the panel's field: the ranges typed there fitted as the
+        # command line fits them (each toss's times in its title); a change of the field fits
+        # the recording again, a bad range shown as the command line's line naming the field.
+        if hand:
+            hand_file, hand_text, _, (th, trows), _, hand_bad, _, long_name, why = hand
+            driver.execute_script("document.getElementById('labFlights').value = arguments[0]", hand_text)
+            driver.find_element(By.ID, "labFile").send_keys(str((recordings / hand_file).resolve()))
+            if not wait_for(driver, "return !document.getElementById('labResult').hidden", bool, 120):
+                fail(f"the panel showed no fit of {hand_file} by hand: {driver.find_element(By.ID, 'labError').text}")
+            titles = [e.text for e in driver.find_elements(By.CSS_SELECTOR, "#labTosses .tossHead strong")]
+            spans = [f"{float(row[th.index('t_start')]):.3f}–{float(row[th.index('t_end')]):.3f} s" for row in trows]
+            if len(titles) != len(spans) or any(span not in title for span, title in zip(spans, titles)):
+                fail(f"the panel's tosses by hand {hand_text!r} are {titles}, bookspin fit's {spans}")
+            bad_text = "2.71:1.82"
+            driver.execute_script("const f = document.getElementById('labFlights'); f.value = arguments[0];"
+                                  "f.dispatchEvent(new Event('change'))", bad_text)
+            error = wait_for(driver, "return document.getElementById('labError').textContent",
+                             lambda t: t.startswith("error:"), 60)
+            if error != "error: " + in_page_words(hand_bad[bad_text]):
+                fail(f"the panel shows {error!r} for the flights by hand {bad_text!r}; the command line "
+                     f"{hand_bad[bad_text]!r}")
+            driver.execute_script("document.getElementById('labFlights').value = ''")
+            print(f"the panel's field: {titles}; {bad_text!r} refused with {error!r}")
+
+            # 5c. A long file name and a flagged toss's why at 1366x768: every piece of the
+            # panel's text inside the panel and the window, none over another, none under 12 px.
+            driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                                   {"width": 1366, "height": 768, "deviceScaleFactor": 1, "mobile": False})
+            driver.find_element(By.ID, "labFile").send_keys(str((recordings / long_name).resolve()))
+            if not wait_for(driver, "return !document.getElementById('labResult').hidden", bool, 120):
+                fail(f"the panel showed no fit of {long_name}: {driver.find_element(By.ID, 'labError').text}")
+            time.sleep(1.0)
+            shown = driver.find_element(By.ID, "labTosses").text
+            if "(flagged)" not in shown or any(w not in shown for w in why):
+                fail(f"the panel does not show the flagged toss's why {why}: {shown[:300]!r}")
+            # Every stretch dropped, folded under the summary, unfolded: its lines too.
+            driver.execute_script("document.getElementById('labDropped').open = true")
+            problems, count = panel_text_problems(driver)
+            driver.save_screenshot(str(shots / "explorer-lab-long-name-1366x768.png"))
+            driver.execute_script("document.querySelector('#labTosses .toss tr:last-child td')"
+                                  ".scrollIntoView({block: 'center'})")
+            time.sleep(0.5)
+            driver.save_screenshot(str(shots / "explorer-lab-flagged-1366x768.png"))
+            if problems:
+                fail(f"the lab's panel at 1366x768 with {long_name}: {len(problems)} problems: " +
+                     "; ".join(dict.fromkeys(problems)))
+            driver.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+            print(f"a long name and a flagged toss at 1366x768: {count} pieces of text and charts, each "
+                  "inside the panel and the window, none over another, none under 12 px")
 
         # 6. A phone.
         driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",

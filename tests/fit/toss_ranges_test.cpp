@@ -9,20 +9,26 @@
 #include "fit/flights.hpp"
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
+#include "fit/report.hpp"
 
 namespace bookspin::fit {
 namespace {
 
-GyroRecording hundred_samples() {
+/// The recording `name` (from `name`.csv) not yet pooled, turning at `omega` throughout.
+GyroRecording unpooled(const std::string& name, const Eigen::Vector3d& omega) {
   GyroRecording recording;
-  recording.name = "hand";
-  recording.source = "hand.csv";
+  recording.name = name;
+  recording.source = name + ".csv";
   for (int i = 0; i < 100; ++i) {
     recording.t.push_back(0.01 * i);
-    recording.omega.push_back(Eigen::Vector3d(0.01, -0.02, 0.03));
+    recording.omega.push_back(omega);
   }
   recording.pauses = {0.505};
-  return pool_recordings({recording});
+  return recording;
+}
+
+GyroRecording hundred_samples() {
+  return pool_recordings({unpooled("hand", Eigen::Vector3d(0.01, -0.02, 0.03))});
 }
 
 std::string error_of(const GyroRecording& recording,
@@ -33,6 +39,91 @@ std::string error_of(const GyroRecording& recording,
     return e.what();
   }
   return "no error";
+}
+
+/// parse_toss_ranges's one line for `text`, or "no error".
+std::string parse_error(const std::string& text, const std::string& option = "--tosses") {
+  try {
+    parse_toss_ranges(text, option);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+using Ranges = std::vector<std::pair<double, double>>;
+
+// The ranges as written, in the order given, each number as the compiler reads its literal;
+// spaces around a number are allowed (the page's placeholder has them), and a blank text is
+// no range at all (the flights are then found).
+TEST(TossRanges, TheTextIsReadAsWritten) {
+  EXPECT_EQ(parse_toss_ranges("1.82:2.71, 2.88:3.22"), (Ranges{{1.82, 2.71}, {2.88, 3.22}}));
+  EXPECT_EQ(parse_toss_ranges("10.4:11.5,23.0:24.0"), (Ranges{{10.4, 11.5}, {23.0, 24.0}}));
+  EXPECT_EQ(parse_toss_ranges(" 3 : 4 ,1e0:2.5e0"), (Ranges{{3.0, 4.0}, {1.0, 2.5}}));
+  EXPECT_EQ(parse_toss_ranges("-0.5:0.25"), (Ranges{{-0.5, 0.25}}));
+  EXPECT_TRUE(parse_toss_ranges("").empty());
+  EXPECT_TRUE(parse_toss_ranges("  \t ").empty());
+}
+
+// A range that is not two numbers is one line naming the option (or the page's field) and the
+// part at fault, trimmed.
+TEST(TossRanges, TextThatIsNotRangesIsOneLineNamingTheOption) {
+  EXPECT_EQ(parse_error("a:b"), "--tosses: \"a\" is not a number");
+  EXPECT_EQ(parse_error("1:b"), "--tosses: \"b\" is not a number");
+  EXPECT_EQ(parse_error("1.5"), "--tosses: \"1.5\" is not START:END");
+  EXPECT_EQ(parse_error("1:2:3"), "--tosses: \"1:2:3\" is not START:END");
+  EXPECT_EQ(parse_error("1:2,"), "--tosses: \"\" is not START:END");
+  EXPECT_EQ(parse_error("1:2, 3"), "--tosses: \"3\" is not START:END");
+  EXPECT_EQ(parse_error(":2"), "--tosses: \"\" is not a number");
+  EXPECT_EQ(parse_error("nan:2"), "--tosses: \"nan\" is not a number");
+  EXPECT_EQ(parse_error("1:inf"), "--tosses: \"inf\" is not a number");
+  EXPECT_EQ(parse_error("1,5:2", "flights by hand"), "flights by hand: \"1\" is not START:END");
+}
+
+// "2:1" is read (it is two numbers); the recording's judge refuses it as reversed, naming the
+// option it was given under, as every other refusal of a range.
+TEST(TossRanges, AReversedRangeIsRefusedByTheRecordingsJudge) {
+  const GyroRecording recording = hundred_samples();
+  const std::string field = tosses_name(Reader::page);
+  const Ranges ranges = parse_toss_ranges("0.3:0.2", field);
+  EXPECT_EQ(ranges, (Ranges{{0.3, 0.2}}));
+  try {
+    hand_flights(recording, ranges, field);
+    ADD_FAILURE() << "a reversed range was taken";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "flights by hand 0.300:0.200: the end is not after the start");
+  }
+  EXPECT_EQ(error_of(recording, parse_toss_ranges("2:1")),
+            "--tosses 2.000:1.000: the end is not after the start");
+}
+
+// The report names the flights by hand in its reader's terms: the option for the command
+// line, the field for the page; with two recordings pooled it refuses them in those terms.
+TEST(TossRanges, TheReportNamesTheFlightsByHandInItsReadersTerms) {
+  const GyroRecording one = hundred_samples();
+  FitRequest request;
+  request.tosses = {{0.095, 0.185}};
+  for (const Reader reader : {Reader::command_line, Reader::page}) {
+    request.reader = reader;
+    const std::string name = reader == Reader::page ? "flights by hand" : "--tosses";
+    try {
+      fit_report(one, request);
+      ADD_FAILURE() << "nine samples were fitted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                name + " 0.095:0.185: 9 samples of hand.csv in it; a toss needs at least 10");
+    }
+    const GyroRecording two =
+        pool_recordings({unpooled("hand", Eigen::Vector3d(0.01, -0.02, 0.03)),
+                         unpooled("other", Eigen::Vector3d(0.02, 0.01, -0.01))});
+    try {
+      fit_report(two, request);
+      ADD_FAILURE() << "flights by hand were fitted in two recordings";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                name + ": with one recording only (the times are that recording's)");
+    }
+  }
 }
 
 // 0.095–0.195 s holds the samples at 0.10, ..., 0.19 s: ten, the fewest a toss may have; one

@@ -69,12 +69,14 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
      * named `fileName`, as {recording, body: the -fit-body.csv row keyed by its columns,
      * tosses: the -fit.csv rows keyed likewise (an empty cell null, a number a number, text as
      * text), summary: the lines the command prints, charts: each toss's {t, measured, fitted}
-     * ω, scenes: each toss as the page's scene data}; rejected with the command line's one
-     * line (without "bookspin: error: ") for a bad file. */
-    fitRecording: (fileName, text, drag = 'linear') => app.lab.fit(fileName, text, drag),
+     * ω, scenes: each toss as the page's scene data}; `tosses` the flights by hand
+     * (`bookspin fit --tosses`' "START:END,…" s; blank: found); rejected with the command
+     * line's one line (without "bookspin: error: ") for a bad file or range (naming the
+     * field "flights by hand" where the command line names --tosses). */
+    fitRecording: (fileName, text, drag = 'linear', tosses = '') => app.lab.fit(fileName, text, drag, tosses),
     /** `bookspin fit FILE1 FILE2 … --drag DRAG` in the page: `files` [{name, bytes}]; a promise
      * of fitRecording's value plus fitted and refused ([{file, error}]) (lab.js fitMany). */
-    fitRecordings: (files, drag = 'linear') => app.lab.fitMany(files, drag),
+    fitRecordings: (files, drag = 'linear', tosses = '') => app.lab.fitMany(files, drag, tosses),
     /** Plays `scene` (one of fitRecording's scenes) as the lab's Play button does. */
     playToss: (scene) => app.lab.play(scene),
     /** ns per step of a run of `steps` steps (make bench-explorer); the exact model, which the

@@ -49,11 +49,13 @@ function tossCell(toss, column, value) {
 
 /** A table row: the readable label first, the CSV's key second (small, as code; the key alone
  * where there are no words), the value;
- * the value as the CSV holds it in the cell's title. */
-function labelledRow(key, words, shown, full) {
+ * the value as the CSV holds it in the cell's title; `wraps`: words (a recording's name, a
+ * flag's why) that wrap within the panel, where a number keeps to one line. */
+function labelledRow(key, words, shown, full, wraps = false) {
   const title = full === undefined || full === null ? '' : ` title="${html(full)}"`;
   const code = words && words !== key ? `<small><code>${html(key)}</code></small>` : '';
-  return `<tr><th>${html(words || key)}${code}</th><td${title}>${shown}</td></tr>`;
+  const cls = wraps ? ' class="words"' : '';
+  return `<tr><th>${html(words || key)}${code}</th><td${title}${cls}>${shown}</td></tr>`;
 }
 
 /** Plots toss `chart` ({t, measured, fitted}: ω, phone frame, 3×N flattened) on `canvas`: the
@@ -145,6 +147,9 @@ export class LabPanel {
     $('labClose').addEventListener('click', () => this.close());
     window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('lab').hidden) this.close(); });
     takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
+    // The flights by hand changed: the last recording given is fitted again with them.
+    this.given = null;
+    $('labFlights').addEventListener('change', () => { if (this.given) this.fitFiles(...this.given); });
     // A link to the panel: explorer.html#lab opens it (the gallery's lab section links it).
     if (location.hash === '#lab') queueMicrotask(() => this.open());
   }
@@ -159,16 +164,17 @@ export class LabPanel {
 
   /** Fits the recording `bytes` (a Uint8Array, or text), named `file` as the command line names
    * a recording by its file's name, under the air drag law `drag` (none, linear, quadratic:
-   * `bookspin fit --drag`): a promise of {recording, body (the -fit-body.csv row keyed by its
+   * `bookspin fit --drag`), of the flights `tosses` by hand ("START:END, …" s, `bookspin fit
+   * --tosses`' syntax; blank: the flights found): a promise of {recording, body (the -fit-body.csv row keyed by its
    * columns), tosses (the -fit.csv rows), summary (the lines the command prints), charts,
    * scenes (each toss as the page's scene data)}; rejected with the command line's one line
-   * (without "bookspin: error: ") for a bad file. */
-  fit(file, bytes, drag = 'linear') {
+   * (without "bookspin: error: ") for a bad file or range, a range's naming the field. */
+  fit(file, bytes, drag = 'linear', tosses = '') {
     return new Promise((resolve, reject) => {
       // A turn of the event loop first: the panel says "fitting…" before the module works.
       setTimeout(() => {
         try {
-          const r = this.wasm.fitRecording(String(file), bytes, String(drag));
+          const r = this.wasm.fitRecording(String(file), bytes, String(drag), String(tosses));
           if (r.error) reject(new Error(r.error)); else resolve(r);
         } catch (e) { reject(e); }
       }, 0);
@@ -179,12 +185,13 @@ export class LabPanel {
    * "A class's recordings"): `files` an array of {name, bytes, meta} (meta, optional: an
    * export's [{name: 'time.csv' or 'device.csv', bytes}]); a promise of fit()'s value plus
    * fitted (the names fitted) and refused ([{file, error}]), those that cannot be read left out;
-   * rejected when none can be read. */
-  fitMany(files, drag = 'linear') {
+   * rejected when none can be read, and for flights by hand `tosses` with two or more read
+   * (their times are one recording's: the command line refuses --tosses so). */
+  fitMany(files, drag = 'linear', tosses = '') {
     return new Promise((resolve, reject) => {
       setTimeout(() => {
         try {
-          const r = this.wasm.fitRecordings(files, String(drag));
+          const r = this.wasm.fitRecordings(files, String(drag), String(tosses));
           if (r.error) reject(new Error(r.error)); else resolve(r);
         } catch (e) { reject(e); }
       }, 0);
@@ -193,9 +200,11 @@ export class LabPanel {
 
   /** Files chosen or dropped (`paths`: each one's name, or its path in a dropped folder): the
    * recordings among them (file_drop.js, recordingsOf) read as bytes, fitted (several as one
-   * body), shown; a folder's other files skipped and named. */
+   * body), of the flights by hand in the panel's field (none: those found), shown; a
+   * folder's other files skipped and named. */
   fitFiles(files, paths = files.map((f) => f.webkitRelativePath || f.name)) {
     this.clear();
+    this.given = [files, paths];
     const { recordings, skipped } = recordingsOf(paths);
     this.skipped = skipped;
     if (!recordings.length) {
@@ -205,12 +214,13 @@ export class LabPanel {
     $('labBusy').textContent = `fitting ${recordings.map((r) => r.path).join(', ')}…`;
     const started = performance.now();
     const drag = $('labDrag').value;
+    const tosses = $('labFlights').value;
     const bytes = (k) => files[k].arrayBuffer().then((b) => new Uint8Array(b));
     Promise.all(recordings.map((r) => Promise.all([bytes(r.index), ...r.meta.map((m) => bytes(m.index))])
       .then(([own, ...meta]) => ({ name: r.path, bytes: own, meta: r.meta.map((m, k) => ({ name: m.name, bytes: meta[k] })) }))))
       .then((given) => (given.length === 1 && !given[0].meta.length
-        ? this.fit(given[0].name, given[0].bytes, drag)
-        : this.fitMany(given, drag)))
+        ? this.fit(given[0].name, given[0].bytes, drag, tosses)
+        : this.fitMany(given, drag, tosses)))
       .then((r) => { this.show(r, performance.now() - started); })
       .catch((e) => { $('labError').textContent = `error: ${e.message}`; })
       .finally(() => { $('labBusy').textContent = ''; });
@@ -286,7 +296,7 @@ export class LabPanel {
       const beside = (c) => (c === 'drag_rate_sigma' && typeof t.drag_rate === 'number')
         || (c === 'half_period_predicted_sigma' && typeof t.half_period_predicted === 'number');
       table.innerHTML = Object.entries(t).filter(([c]) => c !== 'toss' && !beside(c))
-        .map(([c, v]) => labelledRow(c, TOSS_WORDS[c], tossCell(t, c, v), v)).join('');
+        .map(([c, v]) => labelledRow(c, TOSS_WORDS[c], tossCell(t, c, v), v, typeof v === 'string')).join('');
       box.appendChild(table);
       list.appendChild(box);
     });
