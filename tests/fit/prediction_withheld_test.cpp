@@ -46,9 +46,12 @@ std::vector<std::vector<std::string>> cells(const std::string& csv) {
     std::string cell;
     bool quoted = false;
     for (char c : line) {
-      if (c == '"') quoted = !quoted;
-      else if (c == ',' && !quoted) rows.back().push_back(cell), cell.clear();
-      else cell += c;
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        rows.back().push_back(cell), cell.clear();
+      else
+        cell += c;
     }
     rows.back().push_back(cell);
   }
@@ -120,7 +123,8 @@ TEST(PredictionIntervals, AWithheldPredictionSaysWhyInTheCsvAndTheSummary) {
       const std::size_t at = t.not_predicted.find("interval ±");
       if (at == std::string::npos) continue;
       ++too_wide;
-      const double percent = std::atof(t.not_predicted.c_str() + at + std::string("interval ±").size());
+      const double percent =
+          std::atof(t.not_predicted.c_str() + at + std::string("interval ±").size());
       EXPECT_GT(percent, 25.0) << t.not_predicted;
     }
   }
