@@ -27,15 +27,19 @@ std::pair<double, std::string> own_time(const FitResult& fit, double t) {
   return {t - part.t_offset, named(fit) ? part.name : std::string()};
 }
 
-/// ", T/2 predicted 0.412 ± 0.030 s" (its σ's precision, or the millisecond without one), or
-/// nothing without a prediction.
+/// ", T/2 predicted 0.412 ± 0.030 s from its first 0.2 s" (its σ's precision, or the
+/// millisecond without one), ", not predicted: " and why, or nothing.
 std::string predicted_words(const TossFit& t) {
-  if (!t.half_period_predicted) return "";
+  if (!t.half_period_predicted)
+    return t.not_predicted.empty() ? "" : ", not predicted: " + t.not_predicted;
   return ", T/2 predicted " +
          (t.half_period_predicted_sigma
               ? plus_minus(*t.half_period_predicted, *t.half_period_predicted_sigma)
               : fixed(*t.half_period_predicted, 3)) +
-         " s";
+         " s" +
+         (t.predicted_window
+              ? " from its first " + finite_text(*t.predicted_window, "predicted_window") + " s"
+              : "");
 }
 
 }  // namespace
@@ -53,6 +57,8 @@ CsvTable fit_toss_csv(const FitResult& fit) {
                   "half_period_predicted_sigma",
                   "predicted_from_tosses",
                   "predicted_from_seconds",
+                  "predicted_window",
+                  "not_predicted",
                   "residual_rms",
                   "L_decay",
                   "drag_rate",
@@ -82,6 +88,8 @@ CsvTable fit_toss_csv(const FitResult& fit) {
          shortest_cell(t.half_period_predicted_sigma),
          t.predicted_from_tosses ? std::to_string(*t.predicted_from_tosses) : std::string(),
          shortest_cell(t.predicted_from_seconds),
+         shortest_cell(t.predicted_window),
+         t.not_predicted,
          shortest_cell(t.residual_rms),
          shortest_cell(t.L_decay),
          shortest_cell(t.drag_rate),

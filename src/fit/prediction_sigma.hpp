@@ -1,14 +1,22 @@
 #pragma once
-// The σ of a toss's predicted half period (docs/phone-lab.md, "Prediction intervals"): what
-// half_period_predicted rests on, propagated to it. A prediction from the first 0.2 s near the
-// separatrix cannot be held to a fixed percentage: its interval says how far it may be off.
+// A toss's predicted half period and its σ (docs/phone-lab.md, "Prediction intervals"): T/2
+// predicted from the toss's first window with the held-out body, and what it rests on propagated
+// to it. A prediction near the separatrix cannot be held to a fixed percentage: its interval says
+// how far it may be off, and one wider than ±kWidestInterval is withheld, with the reason.
 #include <Eigen/Dense>
+#include <cmath>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "fit/toss_parameters.hpp"
 #include "fit/toss_solve.hpp"
 
 namespace bookspin::fit {
+
+/// The widest interval shown: a prediction whose 2σ/T exceeds this is withheld (docs/phone-lab.md,
+/// "Prediction intervals").
+inline constexpr double kWidestInterval = 0.25;
 
 /// What a prediction's σ is propagated from, besides the toss and the prediction's own fit.
 struct PredictionInputs {
@@ -19,22 +27,67 @@ struct PredictionInputs {
   /// rad/s per phone axis: the σ of the bias removed from the toss (its rest's standard error
   /// plus kBiasDrift, or the flights' fitted σ; 0 where nothing bounds it).
   Eigen::Vector3d bias_sigma = Eigen::Vector3d::Zero();
+  /// 1/s: the σ of the drag rate the prediction holds (HeldRate::sigma); 0 under DragLaw::none
+  /// or with none known.
+  double rate_sigma = 0.0;
 };
+
+/// 1/s: the drag rate a prediction holds and its σ: the weighted mean of the other tosses'
+/// rates (`rest`, fitted as `fold` without the toss predicted; each at least 0: air cannot speed
+/// a body up), each weighted by the inverse of its variance in that fit ((JᵀJ)⁻¹, so that
+/// nothing of the toss predicted weighs in), its σ from theirs (`sigmas`, the joint fit's, one
+/// per toss of `rest`). Their plain mean and σ 0 where a variance or σ is missing; 0, 0 for no
+/// tosses or DragLaw::none.
+struct HeldRate {
+  double rate = 0.0, sigma = 0.0;
+};
+HeldRate held_rate(const std::vector<TossData>& rest, const Parameters& fold, bool moments_fixed,
+                   physics::DragLaw law, const std::vector<std::optional<double>>& sigmas);
 
 /// rad/s per phone axis: the σ of the bias removed from `part`'s samples in flight: its still
 /// rest's standard error plus kBiasDrift, or with no rest its flights' fitted σ, or 0.
 Eigen::Vector3d bias_sigma(const RecordingPart& part);
 
-/// s: one σ of `half` (the half period predicted from `fitted`, the toss `d`'s ω0 and drag rate
-/// fitted on its first options.window s with the body held), in quadrature (each term the half
-/// of the spread of T/2 between the input ± its σ, T/2 by motion_half_period over d.tau):
-/// ω0's scatter over the window (the window's residual per component over √n, twice for the
-/// correlation of a real gyroscope's residual from sample to sample, and the bias's σ), the
-/// window's placement (T/2 predicted again from the window's first half, started from `start`:
-/// the difference), and the body's σ (each ratio). nullopt where the prediction has no T/2 to
-/// compare with (none at some input within its σ: the separatrix within reach).
-std::optional<double> prediction_sigma(const TossData& d, const Parameters& fitted,
-                                       const Parameters& start, const SolveOptions& options,
-                                       const PredictionInputs& inputs, double half);
+/// s: one σ of a predicted half period, by term (each the half of the spread of T/2 between its
+/// input ± its σ, added in quadrature where more than one input): ω0's scatter over the window
+/// and the bias's σ, the window's placement, the body's σ (each ratio), the drag rate's σ.
+struct PredictionSigma {
+  double omega0 = 0.0, placement = 0.0, body = 0.0, rate = 0.0;
+  double total() const {
+    return std::sqrt(omega0 * omega0 + placement * placement + body * body + rate * rate);
+  }
+  /// "ω0's scatter", "the window's placement", "the body's σ" or "the drag rate's σ": the
+  /// largest term.
+  const char* largest() const;
+};
+
+/// One σ of `half` (s: the half period predicted from `fitted`, the toss `d`'s ω0 and drag rate
+/// fitted on its first options.window s with the body held), by term: ω0's scatter over the
+/// window (the window's residual per component over √n, twice for the correlation of a real
+/// gyroscope's residual from sample to sample, and the bias's σ), the window's placement (T/2
+/// predicted again from the window moved kWindowShift s later, started from `start`: the
+/// difference), the body's σ (each ratio) and the held drag rate's σ (its lower end at 0: air
+/// cannot speed a body up). T/2 by motion_half_period over d.tau. nullopt
+/// where the prediction has no T/2 to compare with (none at some input within its σ: the
+/// separatrix within reach).
+std::optional<PredictionSigma> prediction_sigma(const TossData& d, const Parameters& fitted,
+                                                const Parameters& start,
+                                                const SolveOptions& options,
+                                                const PredictionInputs& inputs, double half);
+
+/// A toss's prediction as shown: T/2 and its σ (s) with the window its ω0 was fitted on, or none
+/// and why.
+struct Prediction {
+  std::optional<double> half, sigma;
+  std::optional<double> window;  ///< s: the first seconds of the toss it was predicted from
+  std::string withheld;          ///< "" where shown: else why not (one phrase)
+};
+
+/// Predicts toss `d`'s T/2 from `body` (the held-out body and drag rate, ω0 its start; options:
+/// the body held, options.window the window) with its σ; withheld, with why, where its interval
+/// 2σ/T is over kWidestInterval (its width and largest term said), where the separatrix is
+/// within its inputs' σ, or where the window's fit gives no flip.
+Prediction predict_half_period(const TossData& d, const Parameters& body,
+                               const SolveOptions& options, const PredictionInputs& inputs);
 
 }  // namespace bookspin::fit

@@ -240,7 +240,6 @@ TossSigmas uncertainties(const std::vector<TossData>& data, const Parameters& p,
 struct Folds {
   std::size_t count = 1;
   std::vector<std::optional<Parameters>> body;
-  std::vector<double> rate;  ///< 1/s: the mean drag rate of each fold body's tosses (≥ 0 each)
 };
 
 Folds fold_bodies(const std::vector<TossData>& data, const Parameters& joint,
@@ -249,7 +248,6 @@ Folds fold_bodies(const std::vector<TossData>& data, const Parameters& joint,
   Folds folds;
   folds.count = std::max<std::size_t>(1, std::min<std::size_t>(data.size(), 5));
   folds.body.resize(folds.count);
-  folds.rate.assign(folds.count, 0.0);
   if (data.size() < 2) {
     if (settings.moments) folds.body[0] = joint;
     return folds;
@@ -276,8 +274,6 @@ Folds fold_bodies(const std::vector<TossData>& data, const Parameters& joint,
     if (!solve(rest, q, options).usable) continue;
     normalise(q);
     folds.body[f] = q;
-    for (const std::array<double, 4>& w : q.omega0)
-      folds.rate[f] += std::max(w[3], 0.0) / static_cast<double>(q.omega0.size());
   }
   return folds;
 }
@@ -312,9 +308,8 @@ void widen_by_folds(const Folds& folds, bool fixed, BodyEstimate& body) {
   body.axis_sigma_deg = body.axis_sigma_deg->cwiseMax((factor * turn2).cwiseSqrt());
 }
 
-/// Toss k's prediction (TossFit::half_period_predicted and what it rests on): the body and drag
-/// rate of its fold (the other tosses, or --moments), ω0 from its first predict_window s; its
-/// flips over the flight's times. A note where the other tosses are a short bounce.
+/// Toss k's prediction (TossFit::half_period_predicted, what it rests on, or why none): its fold's
+/// body and drag rate (fit/prediction_sigma.hpp); a note where they are a short bounce.
 void predict(const std::vector<TossData>& data, std::size_t k, const Folds& folds,
              const FlightSearch& search, const FitSettings& settings,
              const PredictionInputs& inputs, std::vector<TossFit>& tosses, BodyEstimate& body) {
@@ -326,11 +321,24 @@ void predict(const std::vector<TossData>& data, std::size_t k, const Folds& fold
   bool flips = settings.moments.has_value();
   for (std::size_t j = 0; j < tosses.size(); ++j)
     flips = flips || (j % folds.count != fold && !tosses[j].stable);
-  if (!held_out || !flips) return;
+  if (!held_out || !flips) {
+    toss.not_predicted = data.size() < 2 && !settings.moments
+                             ? "one toss: no other tosses' body to predict from"
+                         : !held_out ? "the other tosses' body could not be fitted"
+                                     : "every other toss is stable: their body cannot tell its "
+                                       "moments apart";
+    return;
+  }
+  // The drag rate: the other tosses' (their fold fit's) weighted by their σ (the joint fit's).
+  std::vector<TossData> rest;
+  std::vector<std::optional<double>> rate_sigmas;
+  for (std::size_t j = 0; j < data.size(); ++j)
+    if (j % folds.count != fold)
+      rest.push_back(data[j]), rate_sigmas.push_back(tosses[j].drag_rate_sigma);
+  const HeldRate rate =
+      held_rate(rest, *held_out, settings.moments.has_value(), settings.drag, rate_sigmas);
   Parameters others = *held_out;
-  std::vector<TossData> alone{d};
-  others.omega0 = {
-      {d.omega[0][0], d.omega[0][1], d.omega[0][2], data.size() >= 2 ? folds.rate[fold] : 0.0}};
+  others.omega0 = {{d.omega[0][0], d.omega[0][1], d.omega[0][2], rate.rate}};
   SolveOptions options;
   options.stop = &settings.stop;
   // One toss with --moments: its axes too from the first predict_window s alone.
@@ -339,15 +347,6 @@ void predict(const std::vector<TossData>& data, std::size_t k, const Folds& fold
   options.drag = settings.drag;
   options.rates_fixed = true;
   options.window = settings.predict_window;
-  const Parameters seed = others;
-  if (!solve(alone, others, options).usable) return;
-  const Eigen::Matrix3d axes = others.axes();
-  const physics::DampedExactRotation predicted(
-      others.moments(),
-      axes.transpose() *
-          Eigen::Vector3d(others.omega0[0][0], others.omega0[0][1], others.omega0[0][2]),
-      physics::Drag{settings.drag, others.omega0[0][3]}, physics::ExactParts::omega_only);
-  toss.half_period_predicted = motion_half_period(predicted, axes, d.tau);
   // What it rests on: the tosses of the other folds (none with one toss and --moments).
   int from = 0;
   double seconds = 0.0, all = 0.0;
@@ -356,14 +355,18 @@ void predict(const std::vector<TossData>& data, std::size_t k, const Folds& fold
     all += span;
     if (data.size() >= 2 && j % folds.count != fold) ++from, seconds += span;
   }
-  toss.predicted_from_tosses = from;
-  toss.predicted_from_seconds = seconds;
   // Its body is fitted on `seconds` of flight, not all: the joint σ times √(all/seconds).
   PredictionInputs held = inputs;
+  held.rate_sigma = rate.sigma;
   if (held.ratio_sigma && seconds > 0) *held.ratio_sigma *= std::sqrt(all / seconds);
-  if (toss.half_period_predicted)
-    toss.half_period_predicted_sigma =
-        prediction_sigma(d, others, seed, options, held, *toss.half_period_predicted);
+  const Prediction prediction = predict_half_period(d, others, options, held);
+  toss.half_period_predicted = prediction.half;
+  toss.half_period_predicted_sigma = prediction.sigma;
+  toss.predicted_window = prediction.window;
+  toss.not_predicted = prediction.withheld;
+  if (!prediction.half) return;
+  toss.predicted_from_tosses = from;
+  toss.predicted_from_seconds = seconds;
   if (from > 0 && seconds < kShortBasis) {
     char line[300];
     std::snprintf(line, sizeof line,

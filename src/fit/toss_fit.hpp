@@ -55,11 +55,18 @@ struct TossFit {
   /// rate the mean of theirs (0 without others), this toss's ω0 fitted on its first
   /// `predict_window` seconds alone; nothing after them is seen. nullopt with no other toss and
   /// no --moments, or where every other toss is stable (a body they cannot tell apart).
+  /// nullopt (withheld, why in not_predicted) where its interval 2σ/T is over 25 % or the
+  /// separatrix is within its inputs' σ (fit/prediction_sigma.hpp).
   std::optional<double> half_period_predicted;
   /// s: one σ of half_period_predicted, propagated from what it rests on (fit/
-  /// prediction_sigma.hpp); nullopt without a prediction, or where the separatrix is within
-  /// reach of its inputs' σ (no interval holds it).
+  /// prediction_sigma.hpp), at most 12.5 % of it; nullopt without a prediction.
   std::optional<double> half_period_predicted_sigma;
+  /// s: the first seconds of the toss half_period_predicted was predicted from
+  /// (FitSettings::predict_window); nullopt without a prediction.
+  std::optional<double> predicted_window;
+  /// Why there is no half_period_predicted (one phrase: "interval ±63 % (2σ/T, mostly the
+  /// body's σ) from its first 0.2 s, over the ±25 % shown"); "" where there is one.
+  std::string not_predicted;
   /// What half_period_predicted rests on: the number of other tosses the held-out body was
   /// fitted on and their flight time (s); 0 and 0 when it is the given --moments'. nullopt
   /// with no prediction. A body from a short bounce alone predicts poorly (a note says so).

@@ -26,11 +26,19 @@ namespace fs = std::filesystem;
 /// The tosses with a measured and a predicted half period: how many, how many within 2σ (one
 /// with no σ is not), and each interval's relative half width 2σ/T.
 struct Calibration {
-  int tosses = 0, within = 0;
+  int tosses = 0, within = 0, withheld = 0;
   std::vector<double> widths;
   void add(const FitResult& fit, const std::string& what) {
     for (const TossFit& t : fit.tosses) {
-      if (!t.half_period_measured || !t.half_period_predicted) continue;
+      if (!t.half_period_predicted) {
+        if (t.half_period_measured) {
+          ++withheld;
+          std::cout << what << " " << t.flight.t_start << " s: measured " << *t.half_period_measured
+                    << ", not predicted: " << t.not_predicted << "\n";
+        }
+        continue;
+      }
+      if (!t.half_period_measured) continue;
       ++tosses;
       const double off = std::abs(*t.half_period_measured - *t.half_period_predicted);
       const double sigma = t.half_period_predicted_sigma.value_or(0.0);
@@ -38,7 +46,8 @@ struct Calibration {
       if (t.half_period_predicted_sigma) widths.push_back(2.0 * sigma / *t.half_period_predicted);
       std::cout << what << " " << t.flight.t_start << " s: measured " << *t.half_period_measured
                 << ", predicted " << *t.half_period_predicted << " ± " << sigma << " ("
-                << off / std::max(sigma, 1e-12) << " σ)\n";
+                << off / std::max(sigma, 1e-12) << " σ) from its first " << *t.predicted_window
+                << " s\n";
     }
   }
   double median_width() {
@@ -66,9 +75,10 @@ TEST(PredictionIntervals, RealRecordingsHoldTheMeasuredHalfPeriodWithinTwoSigma)
   }
   std::cout << "real: " << c.within << " of " << c.tosses << " within 2σ; median 2σ/T "
             << c.median_width() << "\n";
-  // 8 of 9 on 2026-11-27 (docs/phone-lab.md, "Prediction intervals"): held to the held-out
-  // recordings' 80 %; with the synthetic ones below, 23 of 24.
-  ASSERT_GE(c.tosses, 9);
+  std::cout << "real: " << c.withheld << " with a measured T/2 not predicted\n";
+  // 5 of 5 shown on 2026-11-27 (docs/phone-lab.md, "Prediction intervals"), 6 withheld (4 over
+  // ±25 %, 2 from stable tosses alone): held to 80 %, and to the 4 the phone's throws give.
+  ASSERT_GE(c.tosses, 4);
   EXPECT_GE(c.within, 0.8 * c.tosses);
 }
 

@@ -60,10 +60,10 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
       csv_text(fit::fit_toss_csv(result), "fit CSV"),
       "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
       "half_period_fitted,half_period_predicted,half_period_predicted_sigma,predicted_from_"
-      "tosses,predicted_from_seconds,"
+      "tosses,predicted_from_seconds,predicted_window,not_predicted,"
       "residual_rms,L_decay,drag_rate,"
       "drag_rate_sigma,saturated,stable,poor_fit,flag\n"
-      "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,,2,2.25,0.01,0.125,0.1875,0.0625,3,no,yes,\"a catch "
+      "1,1.5,2.75,0.25,14,-0.5,,0.625,0.5,,2,2.25,,,0.01,0.125,0.1875,0.0625,3,no,yes,\"a catch "
       "inside "
       "the flight? the residual jumps, near t = 1.00 s\"\n");
   EXPECT_EQ(csv_text(fit::fit_body_csv(result), "fit body CSV"),

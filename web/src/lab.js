@@ -18,7 +18,7 @@ const TOSS_WORDS = {
   recording: 'its recording', t_start: 'start (s)', t_end: 'end (s)', omega0_x: 'ω0 x (rad/s)', omega0_y: 'ω0 y (rad/s)',
   omega0_z: 'ω0 z (rad/s)', half_period_measured: 'T/2 measured (s)', half_period_fitted: 'T/2 fitted (s)',
   half_period_predicted: 'T/2 predicted ± σ (s)', half_period_predicted_sigma: 'σ T/2 predicted (s)', predicted_from_tosses: 'predicted from (tosses)',
-  predicted_from_seconds: 'predicted from (s of flight)', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
+  predicted_from_seconds: 'predicted from (s of flight)', predicted_window: 'predicted from its first (s)', not_predicted: 'not predicted, why', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
   drag_rate: 'drag rate ± σ (1/s)', drag_rate_sigma: 'σ drag rate (1/s)',
   saturated: 'samples at the gyroscope’s range', stable: 'stable (no flip)',
   poor_fit: 'flagged', flag: 'why',
