@@ -292,7 +292,7 @@ AccuracyImages accuracy_images(const std::vector<analysis::AccuracyRow>& rows,
   const AccuracyPlots plots =
       accuracy_plots(rows, methods, flips, spin_rate, histories, history_flips);
   const auto image = [](const overlay::PlotSpec& spec) {
-    return overlay::plot_image(spec, 1280, 720);  // whole on a 1366×768 screen
+    return overlay::plot_image(spec, 1280, 640);  // whole on a 1366×768 screen
   };
   return {image(plots.orientation_error_vs_dt), image(plots.work_precision),
           image(plots.energy_vs_dt), image(plots.turnovers_vs_dt), image(plots.long_time_energy)};

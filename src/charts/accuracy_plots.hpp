@@ -78,7 +78,8 @@ AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
                              const std::vector<analysis::EnergyHistory>& histories,
                              double history_flips);
 
-/// The report's five plots drawn, 1280 × 720 pixels each (whole on a 1366×768 screen).
+/// The report's five plots drawn, 1280 × 640 pixels each (whole on a 1366×768 screen, under a
+/// browser's bars).
 struct AccuracyImages {
   RgbaImage orientation_error_vs_dt;
   RgbaImage work_precision;

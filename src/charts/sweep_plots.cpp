@@ -16,9 +16,9 @@ namespace bookspin::charts {
 namespace {
 
 constexpr int kSheetWidth = 1280;
-/// The tallest sheet: shown whole on a 1366×768 screen under the gallery's line of links
-/// (docs/outputs.md, "Pictures").
-constexpr int kMaxSheetHeight = 720;
+/// The tallest sheet: shown whole on a 1366×768 screen, under a browser's bars and a taskbar
+/// (about 120 pixels; docs/outputs.md, "Pictures").
+constexpr int kMaxSheetHeight = 640;
 constexpr int kHeaderHeight = 120;
 constexpr int kPlotRowHeight = 300;    ///< a row of two line plots, at most
 constexpr int kMapHeightPerRow = 560;  ///< a row of two heat maps, at most

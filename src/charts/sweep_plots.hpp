@@ -36,7 +36,7 @@ struct SweepChart {
 /// beside the measured one where the table has the measure's exact column.
 std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart);
 
-/// The sweep's picture, 1280 pixels wide and at most 720 tall (whole on a 1366×768 screen): a
+/// The sweep's picture, 1280 pixels wide and at most 640 tall (whole on a 1366×768 screen): a
 /// header (the sweep and its runs, then one line per range), then for two keys the heat maps
 /// (charts::heat_map_sheet, two a row, a row at most 560 pixels tall), else sweep_plots (two a
 /// row, one alone full width, a row at most 300 pixels tall); the rows share what is left
