@@ -36,9 +36,11 @@ std::size_t integrator_colour(physics::Integrator integrator) {
                                                            : static_cast<std::size_t>(integrator);
 }
 
-/// The turn-over chart's y range: 0 (never turns over) to twice the exact count; a ratio beyond
-/// is drawn to the top edge, with a mark where its line leaves the range.
-constexpr double kMaxTurnoverRatio = 2.0;
+/// The turn-over chart's y range: 0 (never turns over) to the largest ratio drawn, rounded up
+/// to a whole number, at least 2 (twice the exact count) and at most kMaxTurnoverRatio; a
+/// ratio beyond that is drawn to the top edge, with a mark where its line leaves the range.
+constexpr double kMinTurnoverTop = 2.0;
+constexpr double kMaxTurnoverRatio = 10.0;
 
 /// The energy chart's top: a relative energy error of 100 (E off by a hundred times E0); a
 /// larger one is drawn at the top edge with a mark.
@@ -211,7 +213,11 @@ overlay::PlotSpec turnovers_vs_dt_plot(const std::vector<analysis::AccuracyRow>&
       title_of("Turn-overs / exact over %d flip periods", flips) + spin_text(spin_rate, rows);
   spec.y_label = "turn-overs / exact turn-overs (1: right)";
   spec.log_y = false;
-  spec.y_range = std::pair{0.0, kMaxTurnoverRatio};
+  double top = kMinTurnoverTop;
+  for (const overlay::Series& s : spec.series)
+    for (double y : s.y)
+      if (std::isfinite(y)) top = std::max(top, std::min(std::ceil(y), kMaxTurnoverRatio));
+  spec.y_range = std::pair{0.0, top};
   for (overlay::Series& s : spec.series) {
     bool turns = false;
     for (const auto& r : rows)
@@ -286,7 +292,7 @@ AccuracyImages accuracy_images(const std::vector<analysis::AccuracyRow>& rows,
   const AccuracyPlots plots =
       accuracy_plots(rows, methods, flips, spin_rate, histories, history_flips);
   const auto image = [](const overlay::PlotSpec& spec) {
-    return overlay::plot_image(spec, 1280, 820);
+    return overlay::plot_image(spec, 1280, 640);  // whole on a 1366×768 screen
   };
   return {image(plots.orientation_error_vs_dt), image(plots.work_precision),
           image(plots.energy_vs_dt), image(plots.turnovers_vs_dt), image(plots.long_time_energy)};

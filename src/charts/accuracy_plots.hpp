@@ -45,8 +45,10 @@ overlay::PlotSpec energy_vs_dt_plot(const std::vector<analysis::AccuracyRow>& ro
 
 /// Turn-overs against the step: the turn-overs a method counted (analysis::FlipDetector, a
 /// wobble is none) divided by the exact motion's over the same run, against dt (log, time
-/// units), on a fixed linear range 0 … 2 (1 is right; a larger ratio is drawn at the top edge
-/// with a mark), one line per method of `methods`; diverged rows and rows whose exact motion
+/// units), on a linear range from 0 to the largest ratio rounded up to a whole number, at
+/// least 2 and at most 10 (1 is right; a ratio over 10 is drawn at the top edge with a mark
+/// where its line leaves the range), one line per method of `methods`; diverged rows and rows
+/// whose exact motion
 /// has no turn-over are left out; a method that counted none at every dt is labelled "(never
 /// turns over)". Beside the energy, the chart that says whether the motion is right.
 overlay::PlotSpec turnovers_vs_dt_plot(const std::vector<analysis::AccuracyRow>& rows,
@@ -76,7 +78,8 @@ AccuracyPlots accuracy_plots(const std::vector<analysis::AccuracyRow>& rows,
                              const std::vector<analysis::EnergyHistory>& histories,
                              double history_flips);
 
-/// The report's five plots drawn, 1280 × 820 pixels each.
+/// The report's five plots drawn, 1280 × 640 pixels each (whole on a 1366×768 screen, under a
+/// browser's bars).
 struct AccuracyImages {
   RgbaImage orientation_error_vs_dt;
   RgbaImage work_precision;

@@ -365,7 +365,8 @@ double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, do
 }
 
 RgbaImage plot_sheet(const std::vector<std::string>& header,
-                     const std::vector<overlay::PlotSpec>& plots, int width, int height) {
+                     const std::vector<overlay::PlotSpec>& plots, int width, int height,
+                     int columns) {
   RgbaImage image(width, height);
   std::fill(image.pixels.begin(), image.pixels.end(), 255);
   overlay::CairoCanvas canvas(width, height);
@@ -373,11 +374,15 @@ RgbaImage plot_sheet(const std::vector<std::string>& header,
   const double font = std::max(15.0, 0.024 * height);
   double y = draw_sheet_header(cr, wrap_sheet_header(cr, header, font, width), font);
   y += 0.6 * font;
-  const double each = plots.empty() ? 0 : (height - y) / plots.size();
+  const std::size_t across = static_cast<std::size_t>(std::max(1, columns));
+  const std::size_t rows = (plots.size() + across - 1) / across;
+  const double each = rows == 0 ? 0 : (height - y) / static_cast<double>(rows);
+  const double wide = static_cast<double>(width) / static_cast<double>(across);
   std::vector<overlay::PlotSpec> aligned = plots;
   overlay::align_left_margins(cr, each, aligned);
   for (std::size_t i = 0; i < aligned.size(); ++i)
-    overlay::draw_plot(cr, 0, y + i * each, width, each, aligned[i]);
+    overlay::draw_plot(cr, wide * static_cast<double>(i % across),
+                       y + each * static_cast<double>(i / across), wide, each, aligned[i]);
   canvas.composite_onto(image);
   return image;
 }

@@ -91,9 +91,10 @@ std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::s
 /// pixels).
 double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font);
 
-/// A white width×height image: `header` lines on top (the first bold), the plots stacked
-/// below.
+/// A white width×height image: `header` lines on top (the first bold), the plots below in
+/// `columns` columns (1: stacked), row by row, each row an equal share of the height left.
 RgbaImage plot_sheet(const std::vector<std::string>& header,
-                     const std::vector<overlay::PlotSpec>& plots, int width, int height);
+                     const std::vector<overlay::PlotSpec>& plots, int width, int height,
+                     int columns = 1);
 
 }  // namespace bookspin::charts

@@ -16,8 +16,21 @@ namespace bookspin::charts {
 namespace {
 
 constexpr int kSheetWidth = 1280;
-constexpr int kPlotHeightPerMeasure = 330;
-constexpr int kMapHeightPerRow = 560;  ///< two heat maps a row
+/// The tallest sheet: shown whole on a 1366×768 screen, under a browser's bars and a taskbar
+/// (about 120 pixels; docs/outputs.md, "Pictures").
+constexpr int kMaxSheetHeight = 640;
+constexpr int kHeaderHeight = 120;
+constexpr int kPlotRowHeight = 300;    ///< a row of two line plots, at most
+constexpr int kMapHeightPerRow = 560;  ///< a row of two heat maps, at most
+
+/// Rows of `count` pictures two a row (one alone on its row), each at most `most` pixels tall,
+/// under the header, within kMaxSheetHeight: the sheet's height, even.
+int sheet_height(std::size_t count, int most) {
+  const int rows = static_cast<int>((count + 1) / 2);
+  const int row = rows == 0 ? 0 : std::min(most, (kMaxSheetHeight - kHeaderHeight) / rows);
+  const int height = kHeaderHeight + row * rows;
+  return height + height % 2;
+}
 
 /// A cell as a number: NaN where it is empty (a measure the run did not reach).
 double number(const std::string& text) {
@@ -71,8 +84,7 @@ RgbaImage heat_map_picture(const SweepChart& chart, const std::vector<std::strin
   const auto maps =
       sweep_heat_maps(chart.header, chart.rows, chart.axes[0].values, chart.axes[0].log,
                       chart.axes[1].values, chart.axes[1].log, chart.measures);
-  const int height = 120 + kMapHeightPerRow * static_cast<int>((maps.size() + 1) / 2);
-  return heat_map_sheet(header, maps, kSheetWidth, height + height % 2);
+  return heat_map_sheet(header, maps, kSheetWidth, sheet_height(maps.size(), kMapHeightPerRow));
 }
 
 }  // namespace
@@ -110,13 +122,16 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart) {
       if (chart.header[c] == column + "_exact") exact_col = c;
     overlay::PlotSpec spec;
     // The measure in words (its axis label, unit and all), its CSV column second.
-    spec.title = std::string(chart.measures[m]->axis_label) + " \u00b7 " + column +
-                 (exact_col ? " (measured: solid; exact model: dashed)" : "");
+    // (The legend tells the measured line, solid, from the exact one, dashed.)
+    spec.title = std::string(chart.measures[m]->axis_label) + " \u00b7 " + column;
     spec.x_label = scene::key_caption(chart.header[0]) + (chart.axes[0].log ? " (log scale)" : "");
     spec.y_label = std::string(chart.measures[m]->axis_label);
     spec.log_x = chart.axes[0].log;
     spec.log_y = chart.measures[m]->log_scale;
     spec.legend = true;
+    // A third key's lines name two values each: their legend in rows above the plot, which
+    // keeps the width of a plot two a row.
+    if (keys > 1) spec.legend_placement = overlay::LegendPlacement::top;
     for (std::size_t g = 0; g < groups.size(); ++g) {
       overlay::Series measured, exact;
       measured.label = group_names[g].empty() ? "measured" : group_names[g];
@@ -147,8 +162,8 @@ RgbaImage sweep_sheet(const SweepChart& chart) {
   const std::vector<std::string> header = sheet_header(chart);
   if (chart.axes.size() == 2) return heat_map_picture(chart, header);
   const auto plots = sweep_plots(chart);
-  const int height = 120 + kPlotHeightPerMeasure * static_cast<int>(plots.size());
-  return plot_sheet(header, plots, kSheetWidth, height + height % 2);
+  return plot_sheet(header, plots, kSheetWidth, sheet_height(plots.size(), kPlotRowHeight),
+                    plots.size() > 1 ? 2 : 1);
 }
 
 }  // namespace bookspin::charts

@@ -36,9 +36,11 @@ struct SweepChart {
 /// beside the measured one where the table has the measure's exact column.
 std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart);
 
-/// The sweep's picture, 1280 pixels wide: a header (the sweep and its runs, then one line per
-/// range), then for two keys the heat maps (charts::heat_map_sheet, 560 pixels a row of two),
-/// else sweep_plots (330 pixels each). Throws std::invalid_argument for a two-key row whose
+/// The sweep's picture, 1280 pixels wide and at most 640 tall (whole on a 1366×768 screen): a
+/// header (the sweep and its runs, then one line per range), then for two keys the heat maps
+/// (charts::heat_map_sheet, two a row, a row at most 560 pixels tall), else sweep_plots (two a
+/// row, one alone full width, a row at most 300 pixels tall); the rows share what is left
+/// under the 120 pixels of the header. Throws std::invalid_argument for a two-key row whose
 /// values are not on the grid.
 RgbaImage sweep_sheet(const SweepChart& chart);
 

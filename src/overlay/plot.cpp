@@ -495,7 +495,16 @@ void draw_data(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay
 void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, double width, double height,
                  const Area& a) {
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-  if (spec.x_axis_text) text_at(cr, spec.x_label, 0.5 * (a.x0 + a.x1), a.y1 + 2.6 * a.font, 0.5, 0);
+  if (spec.x_axis_text) {
+    // Centred under the plot area; where that runs past the plot's sides (a plot two a row),
+    // under the middle of the plot's rectangle.
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, spec.x_label.c_str(), &e);
+    double centre = 0.5 * (a.x0 + a.x1);
+    if (e.x_advance > 2.0 * std::min(centre - x, x + width - centre) - a.font)
+      centre = x + 0.5 * width;
+    text_at(cr, spec.x_label, centre, a.y1 + 2.6 * a.font, 0.5, 0);
+  }
   const auto y_lines = y_label_lines(cr, spec, height, a.font);
   for (std::size_t i = 0; i < y_lines.size(); ++i) {
     cairo_save(cr);

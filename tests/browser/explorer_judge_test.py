@@ -23,9 +23,11 @@ scenes/flipcheck/*.toml`, and checks:
     it;
   - a link to the panel, explorer.html#judge (the gallery's kit section), opens it on the
     page's scenario, and where the page's scene is no scenario the page goes to one;
-  - a measure the judge bounds shows its limit beside it, a value over it marked (the turned
-    motion's orientation error).
-Screenshots: BINARY_DIR/test-output/browser/explorer-judge-{1280x720,390x844}.png.
+  - a measure the judge bounds shows its limit beside it, in the values' form (1 × 10⁻⁶, not
+    0.000001), a value over it marked (the turned motion's orientation error).
+  - at 1366×768 the scenario menu shows each scenario's name whole (not cut at the menu's
+    edge), its title whole on the line under it.
+Screenshots: BINARY_DIR/test-output/browser/explorer-judge-{1280x720,1366x768,390x844}.png.
 
 Usage: explorer_judge_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
@@ -35,8 +37,10 @@ import csv
 import io
 import json
 import math
+import re
 import subprocess
 import time
+import tomllib
 from pathlib import Path
 
 from browser import (console_errors, fail, find_browser, open_browser, require, run, serve,
@@ -139,6 +143,22 @@ def judge_in_page(driver, base_url, scenario, file_name):
           .then((text) => window.explorer.judgeMotion(scenario, text, name))
           .then((row) => done({ok: true, row}), (e) => done({ok: false, error: String(e.message)}));
     """, base_url + "motions/" + file_name, scenario, file_name)
+
+
+# JavaScript: the scenario menu's chosen text, its width in the menu's font, the room the menu
+# gives it (its box less its padding and the arrow's 24 px), and the title line under it.
+MENU_FITS = """
+  const menu = document.getElementById('judgeScenario'), style = getComputedStyle(menu);
+  const g = document.createElement('canvas').getContext('2d');
+  g.font = `${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+  const shown = menu.options[menu.selectedIndex].text;
+  const title = document.getElementById('judgeScenarioTitle');
+  return {shown, text: g.measureText(shown).width,
+          room: menu.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight) - 24,
+          title: title.textContent,
+          titleRight: title.getBoundingClientRect().right,
+          boxRight: document.getElementById('judgeBox').getBoundingClientRect().right};
+"""
 
 
 def main():
@@ -303,6 +323,10 @@ def main():
             if not limit:
                 continue
             value, bound = float(cells[0].get_attribute("title")), shown_number(limit.split("limit ", 1)[1])
+            # The limit in the form of the values beside it (web/src/precision.js): under 10⁻⁴
+            # as m × 10ⁿ, never a run of zeros to count ("limit 0.000001").
+            if re.search(r"\.0000", limit) or (bound < 1e-4 and " × 10" not in limit):
+                fail(f"the panel's {key}: limit shown as {limit!r}, not in the values' form")
             marked = "over" in (tr.get_attribute("class") or "")
             if marked != (value > bound) or marked != limit.startswith("over its limit"):
                 fail(f"the panel's {key}: {value} against {limit!r}, marked {'over' if marked else 'within'}")
@@ -353,7 +377,26 @@ def main():
         if "bookspin: " + error != cli_line:
             fail(f"the panel shows {error!r} for bad.csv, the command line {cli_line!r}")
 
-        # 6. A phone.
+        # 6. A laptop's screen, 1366×768: every scenario's name whole in the menu (its text no
+        # wider than the menu's box less its arrow) and its title whole on the line under it.
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                               {"width": 1366, "height": 768, "deviceScaleFactor": 1, "mobile": False})
+        for scenario in offered:
+            Select(driver.find_element(By.ID, "judgeScenario")).select_by_value(scenario)
+            fits = driver.execute_script(MENU_FITS)
+            if fits["text"] > fits["room"]:
+                fail(f"at 1366×768 the scenario menu shows {fits['shown']!r} {fits['text']:.0f} px "
+                     f"wide in {fits['room']:.0f} px: cut")
+            expected = tomllib.loads((source / "scenes" / "flipcheck" / f"{scenario}.toml")
+                                     .read_text())["scene"]["title"]
+            if fits["title"] != expected or fits["titleRight"] > fits["boxRight"] + 0.5:
+                fail(f"at 1366×768 the scenario's title under the menu reads {fits['title']!r} "
+                     f"(expected {expected!r}), ending at {fits['titleRight']:.0f} px "
+                     f"in a box ending at {fits['boxRight']:.0f}")
+        print(f"1366×768: the menu shows each of {len(offered)} scenarios whole, its title under it")
+        driver.save_screenshot(str(shots / "explorer-judge-1366x768.png"))
+
+        # 7. A phone.
         driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
                                {"width": 390, "height": 844, "deviceScaleFactor": 1, "mobile": True})
         Select(driver.find_element(By.ID, "judgeScenario")).select_by_value(name)

@@ -9,7 +9,9 @@ screenshots kept as the test's artefacts (BINARY_DIR/test-output/browser/screen-
     t = 754 and a comparison of two bodies (compare-normalization at t = 60); a body's own
     label (compare mode, under its body by design) is left out;
   - the left panel fits: for every scene of the page, the controls' column is no taller than
-    the screen (nothing to scroll to, "Judge a motion…" and "Phone-toss lab…" on screen);
+    the screen (nothing to scroll to, "Judge a motion…" and "Phone-toss lab…" on screen), and
+    the scene menu shows the scene's title whole or its first words to a "…", never cut at
+    the menu's edge (the whole title is the line under it);
   - no text under 12 px (each visible text's computed font size, and each text drawn on a
     canvas: its font's size times the canvas's CSS width over its pixel width, recorded by a
     wrapper around fillText from the page's first script on) and no text past its panel
@@ -21,6 +23,8 @@ screenshots kept as the test's artefacts (BINARY_DIR/test-output/browser/screen-
     (web/src/precision.js): a value ± σ with σ at two significant digits and the value at σ's
     decimal place; a number alone at four significant digits at most (the flights' times to
     the millisecond);
+  - the sphere's axis names, the far ends' dimmed ones too, each wholly inside the disc or
+    wholly outside it, never across its outline, and none over another;
   - every tick label of the page's plots at its axis's precision: a multiple of the axis's
     round step ("1-2-5"), with no more decimals than the step has (0.02: two; 5e-4 written
     "5e-4"), and the labels of one axis all different.
@@ -179,6 +183,29 @@ def tick_problems(labels):
     return bad
 
 
+def sphere_label_problems(driver, where):
+    """The sphere's axis names (each on its patch, canvas pixels) clear of the disc's outline:
+    a patch wholly inside the disc or wholly outside it, never across the circle; and no two
+    overlapping."""
+    drawn = driver.execute_script("return window.explorer.sphereAxisLabelBoxes()")
+    cx, cy, radius = drawn["disc"]["cx"], drawn["disc"]["cy"], drawn["disc"]["R"]
+    problems = []
+    for label in drawn["labels"]:
+        x0, y0, x1, y1 = label["box"]
+        near = math.hypot(max(x0 - cx, 0, cx - x1), max(y0 - cy, 0, cy - y1))
+        far = math.hypot(max(abs(x0 - cx), abs(x1 - cx)), max(abs(y0 - cy), abs(y1 - cy)))
+        if near < radius + 0.5 and far > radius - 0.5:
+            problems.append(f"{where}: the sphere's {label['text']!r} {[round(v) for v in label['box']]} "
+                            f"lies across the disc's outline (centre {cx:.0f}, {cy:.0f}, radius {radius:.0f})")
+    for i, a in enumerate(drawn["labels"]):
+        for b in drawn["labels"][i + 1:]:
+            if overlaps(a["box"], b["box"]):
+                problems.append(f"{where}: the sphere's {a['text']!r} and {b['text']!r} overlap")
+    if not drawn["labels"]:
+        problems.append(f"{where}: the sphere names no axis")
+    return problems
+
+
 def check_case(driver, page, shots, screen, case, problems):
     name, query, t = case
     where = f"{name} at {screen[0]}×{screen[1]}"
@@ -189,6 +216,7 @@ def check_case(driver, page, shots, screen, case, problems):
     driver.save_screenshot(str(shots / f"screen-{name}-{screen[0]}x{screen[1]}.png"))
     texts = check_texts(driver, where, problems)
     check_canvas_texts(driver, where, problems)
+    problems += sphere_label_problems(driver, where)
     ticks = driver.execute_script("return window.explorer.plotTickLabels()")
     if not ticks:
         problems.append(f"{where}: the plots drew no tick labels")
@@ -203,6 +231,19 @@ def check_case(driver, page, shots, screen, case, problems):
     print(f"{where}: body box {[round(x) for x in body]}, {len(texts)} texts, covering it: {covering}")
     for text, r in covering:
         problems.append(f"{where}: {text!r} {r} covers the body {[round(x) for x in body]}")
+
+
+# JavaScript: the scene menu's closed text, its width in the menu's font, the room the menu
+# gives it (its box less its padding and the arrow's 24 px), and the title under the menu.
+MENU_TEXT = """
+  const menu = document.getElementById('scene'), style = getComputedStyle(menu);
+  const g = document.createElement('canvas').getContext('2d');
+  g.font = `${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+  const shown = menu.options[menu.selectedIndex].text;
+  const title = menu.value ? document.getElementById('sceneTitle').textContent : shown;
+  return {shown, text: g.measureText(shown).width, title,
+          room: menu.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight) - 24};
+"""
 
 
 def check_left_panel(driver, page, screen, problems):
@@ -223,6 +264,13 @@ def check_left_panel(driver, page, screen, problems):
                              return r.top < 0 || r.bottom > innerHeight || r.left < 0 || r.right > innerWidth; })
             .map((b) => b.id);
           return [c.scrollHeight, c.clientHeight, off];""")
+        # The scene menu's closed text whole within it (the words of the title under it, up
+        # to a "…"), never cut at the menu's edge.
+        menu = driver.execute_script(MENU_TEXT)
+        if menu["text"] > menu["room"] + 0.5 or not menu["title"].startswith(menu["shown"].removesuffix(" …")):
+            problems.append(f"{scene or '(custom)'} at {screen[0]}×{screen[1]}: the scene menu shows "
+                            f"{menu['shown']!r}, {menu['text']:.0f} px in {menu['room']:.0f} px, over "
+                            f"the title {menu['title']!r}")
         if sizes[0] > sizes[1] or sizes[2]:
             problems.append(f"{scene or '(custom)'} at {screen[0]}×{screen[1]}: the left panel is "
                             f"{sizes[0]} px for {sizes[1]} px of screen; off screen: {sizes[2]}")

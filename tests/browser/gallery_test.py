@@ -10,8 +10,10 @@ server (file:// pages may not play media) and checks in Chromium that
   - every image loads (naturalWidth > 0) and every linked file (MP4, CSV, PNG, poster)
     answers HTTP 200,
   - at 1366×768 (docs/outputs.md, "Pictures"): the page keeps its height while its lazy images
-    load, every chart (a plot, a sweep's heat maps at their default sizes) is shown at the size
-    its text was drawn for (no smaller), no text is under 12 px and none runs past its box,
+    load, every chart (a plot, a sweep's heat maps and line plots, an accuracy report's charts,
+    at their default sizes) is shown at the size its text was drawn for (no smaller), a sweep's
+    picture and the accuracy charts are whole on the screen (no taller than 768 px), no text is
+    under 12 px and none runs past its box,
 and saves a full-page screenshot as build/test-output/browser/gallery.png.
 
 Usage: gallery_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -29,6 +31,8 @@ from browser import (console_errors, fail, find_browser, open_browser, run, serv
                      test_arguments, text_problems, wait_for)
 
 CLIP_W, CLIP_H = 160, 96  # even sizes: H.264 4:2:0 needs them
+SCREEN = (1366, 768)  # the window's size (docs/outputs.md, "Pictures")
+BARS = 120  # a browser's title, tab and address bars and a taskbar on that screen, about
 FRAMES = 8
 
 
@@ -47,9 +51,18 @@ def build_gallery(bookspin, source, out):
     run([bookspin, "sweep", sweep, "--set", "time.duration=2", "--vary", "time.dt=0.01:0.02:2",
          "--vary", "model.normalize_every=1:10:2", "--measure", "orientation_error,diverged_at",
          "-o", out])
+    # A one-key sweep of four measures (two rows of two plots) and an accuracy report of the
+    # engines' sweep (its five charts), small and short, as make figures draws them.
+    flips = source / "sweeps" / "flip-time-vs-perturbation.toml"
+    run([bookspin, "sweep", flips, "--set", "time.frames=4", "--vary",
+         "initial.angular_velocity[1]=1e-6:1e-2:3:log", "--measure",
+         "first_flip,flip_period,energy_drift,orientation_error", "-o", out])
+    engines = source / "sweeps" / "engines-energy-vs-dt.toml"
+    run([bookspin, "accuracy", engines, "--flips", "1", "--methods", "rigid-quaternion:rk4",
+         "--dt", "0.03333333333333333", "0.016666666666666666", "-o", out])
     # Given comparison first: the page puts the paper's figure first all the same.
-    run([bookspin, "gallery", out, *reversed(scenes), sweep])
-    return [s.stem for s in scenes] + [sweep.stem]
+    run([bookspin, "gallery", out, *reversed(scenes), sweep, flips, engines])
+    return [s.stem for s in scenes], [engines.stem, flips.stem, sweep.stem]
 
 
 def clip_size(mp4):
@@ -78,7 +91,8 @@ return Array.from(document.querySelectorAll('img.plot, video')).map(i => i.tagNa
   src: i.getAttribute('src'), naturalWidth: i.videoWidth, naturalHeight: i.videoHeight,
   shown: i.getBoundingClientRect().width, shownHeight: i.getBoundingClientRect().height,
   attr: [i.getAttribute('width'), i.getAttribute('height')]}) : ({
-  src: i.getAttribute('src'), naturalWidth: i.naturalWidth, naturalHeight: i.naturalHeight,
+  src: i.getAttribute('src'), alt: i.getAttribute('alt'),
+  naturalWidth: i.naturalWidth, naturalHeight: i.naturalHeight,
   shown: i.getBoundingClientRect().width - 2, shownHeight: i.getBoundingClientRect().height - 2,
   attr: [i.getAttribute('width'), i.getAttribute('height')]}));
 """
@@ -95,19 +109,31 @@ def check_typography(driver, height_before):
     charts = driver.execute_script(CHART_STATE)
     if len(charts) < 3:
         errors.append(f"expected the plots and the sweep's picture, found {charts}")
+    reports = [c for c in charts if (c.get("alt") or "").startswith("accuracy report of")]
+    sweeps = [c for c in charts if (c.get("alt") or "").startswith("parameter sweep of")]
+    if len(reports) != 5 or len(sweeps) != 2:
+        errors.append(f"expected the two sweeps' pictures and five accuracy charts, found "
+                      f"{len(sweeps)} and {len(reports)}")
     for c in charts:
         print(f"chart {c['src']}: {c['naturalWidth']}×{c['naturalHeight']}, shown "
               f"{c['shown']:.1f}×{c['shownHeight']:.1f}")
         if c["src"].endswith(".png") and c["attr"] != [str(c["naturalWidth"]),
                                                        str(c["naturalHeight"])]:
             errors.append(f"chart {c['src']}: width and height {c['attr']}, not its size")
+        # A sweep's picture and the accuracy report's charts are seen whole on the screen:
+        # with their border, no taller than the 768 px screen less a browser's bars, nor wider.
+        sweep_chart = (c.get("alt") or "").startswith(("parameter sweep of",
+                                                       "accuracy report of"))
+        if sweep_chart and (c["shownHeight"] + 2 > SCREEN[1] - BARS or c["shown"] + 2 > SCREEN[0]):
+            errors.append(f"chart {c['src']}: shown {c['shown']:.0f}×{c['shownHeight']:.0f} px, "
+                          f"not whole on a {SCREEN[0]}×{SCREEN[1]} screen under {BARS} px of bars")
         if c["shown"] < c["naturalWidth"] - 0.5 or c["shownHeight"] < c["naturalHeight"] - 0.5:
             errors.append(f"chart {c['src']}: shown {c['shown']:.1f} px wide of its "
                           f"{c['naturalWidth']}: its text smaller than drawn")
     return errors + text_problems(driver)
 
 
-def check_page(driver, url, out, names, screenshot):
+def check_page(driver, url, out, scenes, sweeps, screenshot):
     errors = []
     driver.get(url + "index.html")
     wait_for(driver, "return document.readyState", lambda s: s == "complete")
@@ -121,6 +147,7 @@ def check_page(driver, url, out, names, screenshot):
 
     sections = driver.execute_script(
         "return Array.from(document.querySelectorAll('section.clip')).map(s => s.id)")
+    names = scenes + sweeps
     if sections != names:
         errors.append(f"sections in the order {sections}, expected {names} (paper order)")
     made = driver.execute_script(
@@ -131,7 +158,7 @@ def check_page(driver, url, out, names, screenshot):
 
     videos = wait_for(driver, VIDEO_STATE,
                       lambda vs: all(v["readyState"] >= 1 or v["error"] for v in vs))
-    clips = len(names) - 1  # the sweep has no clip
+    clips = len(scenes)  # the sweeps have no clip
     if len(videos) != clips:
         errors.append(f"{len(videos)} <video> elements, expected {clips}: {videos}")
     for v in videos:
@@ -195,11 +222,11 @@ def main():
     shutil.rmtree(root, ignore_errors=True)
     out = root / "gallery"
     out.mkdir(parents=True)
-    names = build_gallery(bookspin, source, out)
+    scenes, sweeps = build_gallery(bookspin, source, out)
 
-    with serve(out) as url, open_browser(chromium, driver_path, size=(1366, 768),
+    with serve(out) as url, open_browser(chromium, driver_path, size=SCREEN,
                                          media=True) as driver:
-        errors = check_page(driver, url, out, names, root / "gallery.png")
+        errors = check_page(driver, url, out, scenes, sweeps, root / "gallery.png")
     if errors:
         fail("\n  " + "\n  ".join(errors))
     print("PASS: the gallery opens in Chromium; videos, images and links all load")

@@ -108,6 +108,27 @@ TEST(AccuracyPlots, TurnoversAgainstDtIsTheCountOverTheExactCount) {
   EXPECT_EQ(energy_vs_dt_plot(rows, {rk4}, 10.0).title.find("ω0"), std::string::npos);
 }
 
+// The turn-over axis covers every ratio it draws: a method that turns over 25 to 49 times
+// where the exact motion turns 10 (2.5 … 4.9) lifts the top from 2 to 5, so its whole line is
+// inside the plot; a ratio past 10 (a runaway count) keeps the top at 10, and that line leaves
+// the range at the top edge, where the plot marks it
+// (Plot.FixedYRangeCutsTheCurveAndMarksWhereItLeaves).
+TEST(AccuracyPlots, TurnoverAxisCoversTheRatiosUpToTen) {
+  const Method step{ModelKind::ode, Integrator::step};
+  const Method quick{ModelKind::ode, Integrator::quickstep};
+  std::vector<AccuracyRow> rows{row(step, 0.1, 1e-3), row(step, 0.01, 1e-5), row(quick, 0.1, 1e-3),
+                                row(quick, 0.01, 1e-5)};
+  for (AccuracyRow& r : rows) r.flips_exact = 10;
+  rows[0].flips = 49, rows[1].flips = 25, rows[2].flips = 31, rows[3].flips = 10;
+  const overlay::PlotSpec spec = turnovers_vs_dt_plot(rows, {step, quick}, 10.0, 6.0);
+  ASSERT_TRUE(spec.y_range);
+  EXPECT_EQ(*spec.y_range, (std::pair{0.0, 5.0}));
+  for (const overlay::Series& s : spec.series)
+    for (double y : s.y) EXPECT_LE(y, spec.y_range->second) << s.label;
+  rows[0].flips = 1000;  // 100 times the exact count, the run not diverged
+  EXPECT_EQ(*turnovers_vs_dt_plot(rows, {step, quick}, 10.0, 6.0).y_range, (std::pair{0.0, 10.0}));
+}
+
 // The engines are coloured by family of mode (docs/engines.md): an engine's explicit step as
 // bookspin's Euler, its RK4 as bookspin's RK4, both "none" modes alike; two modes of one family
 // in one engine (Bullet's implicit body and world) apart.

@@ -32,8 +32,8 @@ TEST(SweepPlots, OneLinePerValueOfTheSecondKeyAndTheExactOneDashed) {
   ASSERT_EQ(plots.size(), 2u);
   const overlay::PlotSpec& flips = plots[0];
   // The words lead, the keys (as in the CSV and on the command line) follow.
-  EXPECT_EQ(flips.title, std::string(analysis::find_measure("first_flip")->axis_label) +
-                             " \u00b7 first_flip (measured: solid; exact model: dashed)");
+  EXPECT_EQ(flips.title,
+            std::string(analysis::find_measure("first_flip")->axis_label) + " \u00b7 first_flip");
   EXPECT_EQ(flips.x_label, "time step dt (time units) \u00b7 time.dt (log scale)");
   EXPECT_TRUE(flips.log_x);
   ASSERT_EQ(flips.series.size(), 4u);  // 1 and 2 steps, each measured then exact
@@ -58,7 +58,7 @@ TEST(SweepPlots, OneLinePerValueOfTheSecondKeyAndTheExactOneDashed) {
 }
 
 TEST(SweepPlots, TheSheetIsAsWideAndTallAsItsParts) {
-  // One key, two measures: 120 pixels of header and 330 a plot, 1280 wide.
+  // One key, two measures: 120 pixels of header and one row of two plots, 300 tall, 1280 wide.
   SweepChart chart;
   chart.scene_name = "s";
   chart.axes = {{"time.dt", 0.01, 0.02, false, {0.01, 0.02}}};
@@ -67,7 +67,7 @@ TEST(SweepPlots, TheSheetIsAsWideAndTallAsItsParts) {
   chart.rows = {{"0.01", "10", "0.5", "11"}, {"0.02", "20", "0.25", "21"}};
   const RgbaImage sheet = sweep_sheet(chart);
   EXPECT_EQ(sheet.width, 1280);
-  EXPECT_EQ(sheet.height, 120 + 2 * 330);
+  EXPECT_EQ(sheet.height, 120 + 300);
 }
 
 // A sweep's picture holds its header within the sheet: the title of every sweep of sweeps/
@@ -104,6 +104,67 @@ TEST(SweepPlots, NoTitleIsCutAtThePicturesRightEdge) {
       for (int x = sheet.width - static_cast<int>(0.5 * font); x < sheet.width; ++x)
         if (sheet.row(y)[4 * x] < 200 && ink++ == 0) first_y = y;
     EXPECT_EQ(ink, 0) << title << ": ink in the right margin from row " << first_y;
+  }
+}
+
+/// A sweep of `keys` varied keys (two values each) measuring the first `count` measures, every
+/// cell filled.
+SweepChart chart_of(std::size_t keys, std::size_t count) {
+  SweepChart chart;
+  chart.scene_name = "flip-time-vs-perturbation";
+  chart.scene_title = "Flip time against the perturbation from the intermediate axis";
+  const std::vector<std::string> names{"initial.angular_velocity[1]", "time.dt",
+                                       "model.normalize_every"};
+  for (std::size_t k = 0; k < keys; ++k) {
+    chart.axes.push_back({names[k], 1, 2, false, {1, 2}});
+    chart.header.push_back(names[k]);
+  }
+  const auto& all = analysis::measure_table();
+  for (std::size_t m = 0; m < count && m < all.size(); ++m) {
+    chart.measures.push_back(&all[m]);
+    chart.header.emplace_back(all[m].name);
+  }
+  // Every combination of the keys' two values, the first key slowest.
+  for (std::size_t r = 0; r < (std::size_t{1} << keys); ++r) {
+    std::vector<std::string> row;
+    for (std::size_t k = 0; k < keys; ++k) row.push_back((r >> (keys - 1 - k)) & 1 ? "2" : "1");
+    for (std::size_t m = 0; m < chart.measures.size(); ++m) row.push_back(std::to_string(m + 1));
+    chart.rows.push_back(row);
+  }
+  return chart;
+}
+
+// Each sweep's picture is seen whole on a 1366×768 screen (docs/outputs.md, "Pictures"): at
+// most 1280 wide (the gallery shows it at its own size) and 640 tall (768 less about 120 for a
+// browser's bars and a taskbar), for one, two (heat maps) and three keys and any number of measures
+// (four plots stacked 330 pixels each would be 1440 tall).
+TEST(SweepPlots, EverySheetFitsA1366By768Screen) {
+  for (std::size_t keys = 1; keys <= 3; ++keys) {
+    for (std::size_t count = 1; count <= analysis::measure_table().size(); ++count) {
+      const RgbaImage sheet = sweep_sheet(chart_of(keys, count));
+      EXPECT_LE(sheet.width, 1280) << keys << " keys, " << count << " measures";
+      EXPECT_LE(sheet.height, 640) << keys << " keys, " << count << " measures";
+      EXPECT_GE(sheet.height, 400) << keys << " keys, " << count << " measures";
+    }
+  }
+}
+
+// Plots two a row keep their text within the sheet: an x label wider than its plot area (the
+// perturbation's words and key, "(log scale)") is centred under its plot's half, not under the
+// plot area, where the left plot's ran past the sheet's left edge. The sheet's outer columns
+// hold no ink, for every number of measures.
+TEST(SweepPlots, NoTextRunsPastTheSheetsSides) {
+  for (std::size_t count = 1; count <= analysis::measure_table().size(); ++count) {
+    SweepChart chart = chart_of(1, count);
+    chart.axes[0] = {"initial.angular_velocity[1]", 1e-6, 1e-2, true, {1e-6, 1e-2}};
+    chart.header[0] = chart.axes[0].key;
+    chart.rows[0][0] = "1e-6", chart.rows[1][0] = "0.01";
+    const RgbaImage sheet = sweep_sheet(chart);
+    int ink = 0;
+    for (int y = 0; y < sheet.height; ++y)
+      for (int x : {0, 1, 2, 3, sheet.width - 4, sheet.width - 3, sheet.width - 2, sheet.width - 1})
+        ink += sheet.row(y)[4 * x] < 200 ? 1 : 0;
+    EXPECT_EQ(ink, 0) << count << " measures: ink at the sheet's sides";
   }
 }
 

@@ -10,7 +10,7 @@ import { join } from 'node:path';
 
 const source = process.argv[2];
 if (!source) throw new Error('usage: node tests/web/precision_test.mjs SOURCE_DIR');
-const { significant, withSigma, plusMinus, vectorWithSigma } =
+const { significant, withSigma, plusMinus, vectorWithSigma, asGiven } =
   await import(pathToFileURL(join(source, 'web/src/precision.js')).href);
 
 test('a value is rounded to the decimal place of its σ, σ to two significant digits', () => {
@@ -126,4 +126,20 @@ test("the readout's ω: four decimals, a run running away by the number rule on 
     const text = omegaText(-3.3 * 10 ** e);
     assert.ok(text.length <= 16 && !/e[+-]/.test(text), `ω ${-3.3 * 10 ** e} printed ${text}`);
   }
+});
+
+test('a limit keeps the digits it was given, in the form of the values beside it', () => {
+  // The judge's limits (analysis::judge_rules): "limit 0.000001" read as six places to count.
+  assert.equal(asGiven(0.000001), '1 × 10⁻⁶');
+  assert.equal(asGiven(1e-10), '1 × 10⁻¹⁰');
+  assert.equal(asGiven(2.5e-7), '2.5 × 10⁻⁷');
+  assert.equal(asGiven(0.01), '0.01');
+  assert.equal(asGiven(0.05), '0.05');
+  assert.equal(asGiven(0.001), '0.001');
+  assert.equal(asGiven(0.5), '0.5');
+  assert.equal(asGiven(3), '3');
+  assert.equal(asGiven(1e6), '1000000');
+  assert.equal(asGiven(1e30), '1 × 10³⁰');
+  // A value shown beside it by significant() is in the same form from 10⁻⁴ down.
+  assert.equal(significant(3.217e-7), '3.217 × 10⁻⁷');
 });

@@ -46,6 +46,30 @@ function show(id, visible) {
   $(id).hidden = !visible;
 }
 
+/** The menu's chosen entry shortened at a word, with "…", to what the closed menu shows (its
+ * box less its padding and the arrow's 24 px), the others whole, so that no word is cut at the
+ * menu's edge; the whole title is the line under the menu (#sceneTitle). Each entry's own text
+ * is kept in its data-full. */
+export function fitMenu(menu) {
+  const style = getComputedStyle(menu);
+  const room = menu.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight) - 24;
+  const g = document.createElement('canvas').getContext('2d');
+  g.font = `${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+  for (const option of menu.options) {
+    if (option.dataset.full === undefined) option.dataset.full = option.textContent;
+    let text = option.dataset.full;
+    if (option.selected && room > 0 && g.measureText(text).width > room) {
+      const words = text.split(' ');
+      while (words.length > 1 && g.measureText(`${words.join(' ')} …`).width > room) words.pop();
+      text = words.join(' ');
+      // One word longer than the room (a name): its letters, as many as fit.
+      while (text.length > 1 && g.measureText(`${text} …`).width > room) text = text.slice(0, -1);
+      text = `${text} …`;
+    }
+    if (option.textContent !== text) option.textContent = text;
+  }
+}
+
 export class Controls {
   /** `space`: the page's StateSpace (state.js: the physics' models, their integrators, the
    * bodies); `engines`: the JavaScript engines' adapters (web/src/engines/), loaded, offered as
@@ -59,6 +83,7 @@ export class Controls {
     $('scene').options[0].textContent = '(custom)';
     // The menu lists the scenes by title (the value stays the scene's name, as in a link).
     scenes.forEach((s, i) => { if (s.title) $('scene').options[i + 1].textContent = s.title; });
+    window.addEventListener('resize', () => fitMenu($('scene')));
     fillSelect('body', space.bodies);
     const models = space.models.concat(this.engineModels);
     fillSelect('model', models); fillSelect('model2', models);
@@ -102,6 +127,7 @@ export class Controls {
     fillSelect('integrator', this.integratorsOf(state.model));
     fillSelect('integrator2', this.integratorsOf(state.model2));
     for (const id of CHOICES) $(id).value = state[id];
+    fitMenu($('scene'));
     for (const id of NUMBERS) writeNumber(id, state[id]);
     for (const id of BOXES) $(id).checked = state[id];
     ['wx', 'wy', 'wz'].forEach((id, i) => writeNumber(id, state.w[i]));

@@ -32,6 +32,9 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     /** The sphere's L dots as drawn: {x, y (canvas pixels), u}; the axis names drawn. */
     sphereDots: () => sphere.dots.map((d) => ({ x: d.x, y: d.y, u: d.u })),
     sphereAxisLabels: () => sphere.axisLabels.slice(),
+    /** The axis names' patches as drawn ({text, box: [left, top, right, bottom]}, canvas
+     * pixels) and the disc's outline ({cx, cy, R}, canvas pixels). */
+    sphereAxisLabelBoxes: () => ({ labels: sphere.axisLabelBoxes.slice(), disc: sphere.geometry() }),
     /** ω (body frame) of each run now. */
     omegaNow: () => app.runs.list.map((r) => Array.from(r.session.diagnostics().omega_body)),
     /** Each plotted line's drawn height in CSS pixels: {panel, run, component, px}. */

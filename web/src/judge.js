@@ -6,7 +6,7 @@
 // Nothing is measured here: this module hands text to the module and writes out its answer.
 import { takeFiles } from './file_drop.js';
 import { Replay } from './replay.js';
-import { significant } from './precision.js';
+import { asGiven, significant } from './precision.js';
 
 const $ = (id) => document.getElementById(id);
 /** The judgement CSV's columns that hold text; every other one holds a number or nothing. */
@@ -99,12 +99,15 @@ export class JudgePanel {
     this.replay = new Replay($('judgeReplay'), $('judgeReplayTime'));
     const menu = $('judgeScenario');
     menu.innerHTML = '';
-    for (const s of this.scenes) menu.add(new Option(s.title ? `${s.name}: ${s.title}` : s.name, s.name));
+    // The menu names each scenario (a scenario's file name, short enough for the menu's width
+    // on a 1366×768 screen); its title, a line of its own under the menu, wraps.
+    for (const s of this.scenes) menu.add(new Option(s.name, s.name));
     $('judgeOpen').hidden = this.scenes.length === 0;
     $('judgeOpen').addEventListener('click', () => this.open(currentScene()));
     $('judgeClose').addEventListener('click', () => this.close());
     window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('judge').hidden) this.close(); });
-    menu.addEventListener('change', () => this.clear());
+    menu.addEventListener('change', () => { this.clear(); this.showTitle(); });
+    this.showTitle();
     $('judgeJson').addEventListener('click', () => this.exportFile('json'));
     $('judgeExact').addEventListener('click', () => this.exportFile('csv'));
     takeFiles($('judgeFile'), $('judgeDrop'), (files) => this.judgeFile(files[0]));
@@ -126,7 +129,14 @@ export class JudgePanel {
       menu.dispatchEvent(new Event('change'));
     }
     if (this.scene(name)) $('judgeScenario').value = name;
+    this.showTitle();
     $('judge').hidden = false;
+  }
+
+  /** The chosen scenario's title under the menu. */
+  showTitle() {
+    const scene = this.scene($('judgeScenario').value);
+    $('judgeScenarioTitle').textContent = scene ? scene.title || '' : '';
   }
 
   close() { $('judge').hidden = true; this.replay.stop(); }
@@ -207,8 +217,9 @@ export class JudgePanel {
     const rows = Object.entries(row).filter(([c]) => !TEXT_COLUMNS.includes(c)).map(([c, v]) => {
       const limit = c in limits && v !== null ? limits[c] : null;
       const over = limit !== null && v > limit;
-      // The limit as the rules write it (0.01, 0.000001), not padded to four digits.
-      const limitText = limit === null ? '' : /e/.test(String(limit)) ? significant(limit, 2) : String(limit);
+      // The limit with the rules' digits, not padded to four, in the values' form: 0.01, and
+      // 1 × 10⁻⁶ beside a value of 3.217 × 10⁻⁷ (not 0.000001, six places to count).
+      const limitText = limit === null ? '' : asGiven(limit);
       const bound = limit === null ? '' : `${over ? 'over its limit' : 'limit'} ${limitText}`;
       return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c}</code></small>` : ''}</th>` +
         `<td${v === null ? '' : ` title="${v}"`}>${significant(v)}</td><td class="limit">${bound}</td></tr>`;

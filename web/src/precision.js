@@ -48,6 +48,15 @@ export function significant(value, digits = 4) {
   return atPlace(value, e - digits + 1);
 }
 
+/** `value` with the digits it was given and no more (its shortest round-trip decimal form's
+ * significant digits), as significant() writes a number: a limit as the rules set it, 0.01 as
+ * "0.01" and 0.000001 as "1 × 10⁻⁶", beside values in the same form. */
+export function asGiven(value) {
+  if (typeof value !== 'number' || !Number.isFinite(value) || value === 0) return significant(value);
+  const mantissa = value.toExponential().split('e')[0].replace('-', '').replace('.', '');
+  return significant(value, mantissa.length);
+}
+
 /** {value, sigma}: `value` and its uncertainty `sigma` as text, σ to two significant digits and
  * the value to σ's last decimal place ("0.348257 ± 0.0000269191" → 0.348257, 0.000027). A σ
  * that is not a positive finite number leaves the value at `significant()`'s digits and σ as

@@ -21,6 +21,42 @@ function layerCanvas(W, H) {
   return c;
 }
 
+/** The nearest and farthest distances from (cx, cy) of the box [x0, x1] × [y0, y1]. */
+function boxReach(x0, y0, x1, y1, cx, cy) {
+  const near = Math.hypot(Math.max(x0 - cx, 0, cx - x1), Math.max(y0 - cy, 0, cy - y1));
+  const far = Math.hypot(Math.max(Math.abs(x0 - cx), Math.abs(x1 - cx)), Math.max(Math.abs(y0 - cy), Math.abs(y1 - cy)));
+  return [near, far];
+}
+
+/** A label at (x, y) (its left end and baseline; `w` wide, `font` pixels high, on a patch
+ * `pad` pixels wider each side, as drawAxes draws it) moved the least, along the line from the
+ * disc's centre (cx, cy) and across it by up to two lines, until its patch clears the outline
+ * (radius R) by `gap` (wholly inside the disc, or wholly outside it and within `area`,
+ * [left, top, right, bottom]) and overlaps none of the patches `taken`; where nothing is, where
+ * it was. Returns [x, y]. */
+export function clearOfCircle({ x, y, w, font, pad }, { cx, cy, R, gap }, area, taken = []) {
+  const patch = (px, py) => [px - pad, py - 0.9 * font, px + w + pad, py + 0.25 * font];
+  const clear = (px, py) => {
+    const [x0, y0, x1, y1] = patch(px, py);
+    if (taken.some((t) => x0 < t[2] && t[0] < x1 && y0 < t[3] && t[1] < y1)) return false;
+    const [near, far] = boxReach(x0, y0, x1, y1, cx, cy);
+    if (far <= R - gap) return true;
+    return near >= R + gap && x0 >= area[0] && y0 >= area[1] && x1 <= area[2] && y1 <= area[3];
+  };
+  const [x0, y0, x1, y1] = patch(x, y);
+  const dx = 0.5 * (x0 + x1) - cx, dy = 0.5 * (y0 + y1) - cy, d = Math.hypot(dx, dy) || 1;
+  const across = [0, 1, -1, 2, -2].map((n) => n * 1.2 * font);
+  for (let step = 0; step <= 2 * R; ++step) {
+    for (const side of across) {
+      for (const sign of step ? [-1, 1] : [1]) {
+        const px = x + (sign * step * dx - side * dy) / d, py = y + (sign * step * dy + side * dx) / d;
+        if (clear(px, py)) return [px, py];
+      }
+    }
+  }
+  return [x, y];
+}
+
 export class Sphere {
   constructor(canvas, wasm, onPick) {
     this.canvas = canvas;
@@ -35,6 +71,7 @@ export class Sphere {
     this.layers = { key: null, back: null, trails: null, drawn: [] };
     this.redraw = true;
     this.axisLabels = [];  // the axis names drawn
+    this.axisLabelBoxes = [];  // and their patches: {text, box: [left, top, right, bottom]}
     this.dots = [];  // the L dots drawn: {x, y (canvas pixels), u (body-frame L/|L|)}
     this.measuredPoints = 0;  // the points of the measured L/|L| trail drawn
     this.wire();
@@ -148,28 +185,39 @@ export class Sphere {
     const k = this.scale();
     g.font = `${FONT_PX * k}px sans-serif`;
     this.axisLabels = [];
+    this.axisLabelBoxes = [];
+    const ends = [];
     order.forEach((axis, rank) => {
       for (const sign of [1, -1]) {
         const u = [0, 0, 0];
         u[axis] = sign;
         const p = this.project(u);
-        const x = cx + R * p[0], y = cy - R * p[1];
-        g.globalAlpha = p[2] >= 0 ? 1 : 0.35;
-        g.fillStyle = '#e6e6e6';
-        g.beginPath(); g.arc(x, y, 3 * k, 0, 2 * Math.PI); g.fill();
-        const text = `${sign > 0 ? '+' : '−'}${'xyz'[axis]} ${AXIS_NAMES[rank]}`;
-        const w = g.measureText(text).width;
-        // Outside the disc, on the side the axis points to, kept on the canvas.
-        const tx = Math.min(Math.max(x + (p[0] >= 0 ? 6 * k : -6 * k - w), 2 * k), this.canvas.width - w - 2 * k);
-        const ty = Math.min(Math.max(y + (p[1] >= 0 ? -6 * k : FONT_PX * k + 2 * k), FONT_PX * k), this.canvas.height - 4 * k);
-        // On a patch of the canvas's background, so that no curve runs through the name.
-        g.fillStyle = 'rgba(20, 23, 29, 0.8)';
-        g.fillRect(tx - 2 * k, ty - 0.9 * FONT_PX * k, w + 4 * k, 1.15 * FONT_PX * k);
-        g.fillStyle = '#e6e6e6';
-        g.fillText(text, tx, ty);
-        this.axisLabels.push(text);
+        ends.push({ p, x: cx + R * p[0], y: cy - R * p[1], text: `${sign > 0 ? '+' : '−'}${'xyz'[axis]} ${AXIS_NAMES[rank]}` });
       }
     });
+    // The near ends' names first, then the far ends' (dimmed), placed around them.
+    const taken = [];
+    for (const { p, x, y, text } of ends.filter((e) => e.p[2] >= 0).concat(ends.filter((e) => e.p[2] < 0))) {
+      g.globalAlpha = p[2] >= 0 ? 1 : 0.35;
+      g.fillStyle = '#e6e6e6';
+      g.beginPath(); g.arc(x, y, 3 * k, 0, 2 * Math.PI); g.fill();
+      const w = g.measureText(text).width;
+      // Beside its point, on the side the axis points to, kept on the canvas; then clear of the
+      // disc's outline and of the names placed before it (below the sphere's title line).
+      const tx0 = Math.min(Math.max(x + (p[0] >= 0 ? 6 * k : -6 * k - w), 2 * k), this.canvas.width - w - 2 * k);
+      const ty0 = Math.min(Math.max(y + (p[1] >= 0 ? -6 * k : FONT_PX * k + 2 * k), FONT_PX * k), this.canvas.height - 4 * k);
+      const [tx, ty] = clearOfCircle({ x: tx0, y: ty0, w, font: FONT_PX * k, pad: 2 * k }, { cx, cy, R, gap: 3 * k },
+        [0, (FONT_PX + 6) * k, this.canvas.width, this.canvas.height], taken);
+      const box = [tx - 2 * k, ty - 0.9 * FONT_PX * k, tx + w + 2 * k, ty + 0.25 * FONT_PX * k];
+      taken.push(box);
+      // On a patch of the canvas's background, so that no curve runs through the name.
+      g.fillStyle = 'rgba(20, 23, 29, 0.8)';
+      g.fillRect(box[0], box[1], box[2] - box[0], box[3] - box[1]);
+      g.fillStyle = '#e6e6e6';
+      g.fillText(text, tx, ty);
+      this.axisLabels.push(text);
+      this.axisLabelBoxes.push({ text, box });
+    }
     g.globalAlpha = 1;
   }
 
