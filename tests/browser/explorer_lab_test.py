@@ -33,7 +33,7 @@ as a zip), under each drag law the command line offers (--drag linear, quadratic
     as above; each bad range (reversed, not START:END, not a number, too few samples, twice,
     overlapping) and flights by hand with a class's recordings refused with the command line's
     line, naming the field where it names --tosses; a change of the field fits again;
-  - a recording with a long file name and a flagged toss (12-13-51) at 1366x768: every line of
+  - a recording with a long file name and flagged tosses (12-38-00) at 1366x768: every line of
     the panel's text inside the panel and the window, none over another or a chart, none under
     12 px;
   - explorer.html#lab opens the panel; no console error.
@@ -318,8 +318,8 @@ def main():
     # Flights by hand on a real recording (docs/phone-lab.md, "The flights by hand"): 12-13-01's
     # two flights named in the page's placeholder's words, out of order and with a space, as
     # `bookspin fit --tosses` takes them; the command line's fit, and its line for each bad
-    # range. And a recording with a long file name and a flagged toss (12-13-51, its first
-    # toss's catch inside the flight), for the panel's text at 1366x768.
+    # range. And a recording with a long file name and flagged tosses (12-38-00, a flat body
+    # that flexes, each toss's why a long line), for the panel's text at 1366x768.
     real = source.parent / "shared" / "recordings-real" / "dvarkian-2022-05-03"
     hand = None
     if real.is_dir():
@@ -354,9 +354,9 @@ def main():
                                  "1.82:2.71,2.5:3.22")}
         pooled_line = cli_error(bookspin, ["fit", *class_names[:2], "--tosses", "1:2", "-o", str(out / "cli" / "x")],
                                 recordings)
-        long_name = ("dvarkian-2022-05-03-12-13-51-gyroscope-rotation-rate-thrown-from-the-hand-"
-                     "and-caught-again-by-the-same-hand.csv")
-        shutil.copy(real / "12-13-51" / "Raw Data.csv", recordings / long_name)
+        long_name = ("dvarkian-2022-05-03-12-38-00-gyroscope-rotation-rate-of-a-flat-body-thrown-"
+                     "from-the-hand-and-caught-again-by-the-same-hand.csv")
+        shutil.copy(real / "12-38-00" / "Raw Data.csv", recordings / long_name)
         folder = out / "cli" / "long"
         run([bookspin, "fit", long_name, "-o", str(folder)], cwd=recordings)
         lh, lrows = read_csv(sorted(folder.glob("*-fit.csv"))[0])
