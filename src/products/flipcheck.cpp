@@ -101,11 +101,13 @@ cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
   return cache::make_cached(cached, job.freshness, [&] {
     const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
     const jobs::ExportFiles texts = jobs::export_files(motion, job.stop);
-    stop_if_asked(job.stop, "flipcheck export write");
     output::prepare_output_dir(layout.json.parent_path());
     output::StagedFiles files;
     files.text(layout.json, texts.json);
     files.text(layout.csv, texts.csv);
+    // Asked once the temporaries are written (a CSV of 10^6 rows takes a while to write), just
+    // before they are put in place: a signal until then leaves the earlier files.
+    stop_if_asked(job.stop, "flipcheck export write");
     files.commit();
     return cache::Made{{layout.json, layout.csv}};
   });
@@ -344,11 +346,11 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
     }
     csv = csv_text(table, "flipcheck league CSV");
     const std::string html = league_html(columns);
-    stop_if_asked(job.stop, "flipcheck league write");
     output::prepare_output_dir(job.out_dir);
     output::StagedFiles staged;
     staged.text(layout.csv, csv);
     staged.text(layout.html, html);
+    stop_if_asked(job.stop, "flipcheck league write");  // the last poll before they are in place
     staged.commit();
     return cache::Made{{layout.csv, layout.html}};
   });
