@@ -95,6 +95,7 @@ FitReport fit_report(const GyroRecording& recording, const FitRequest& request,
   report.summary = fit_summary(result, request.reader);
   report.dropped = fit_dropped_lines(result);
   report.has_scenes = toss_book(result.body).has_value();
+  if (!report.has_scenes) report.summary.push_back(kNoSceneLine);
   for (int k = 0; k < static_cast<int>(result.tosses.size()); ++k) {
     stop_if_asked(stop, "fit charts");
     TossReport toss{toss_chart(recording, result, k), toss_scene(recording, result, k), {}, {}};

@@ -82,11 +82,19 @@ struct FitReport {
   /// The two tables as the command writes them (csv_text): OUT/<recording>-fit.csv, a row a
   /// toss (fit_toss_csv), and OUT/<recording>-fit-body.csv, the body's row (fit_body_csv).
   std::string toss_csv, body_csv;
-  std::vector<std::string> summary;  ///< fit_summary's lines
+  /// fit_summary's lines, then kNoSceneLine where the fitted moments make no body
+  std::vector<std::string> summary;
   std::vector<std::string> dropped;  ///< fit_dropped_lines: every stretch dropped, a line each
   std::vector<TossReport> tosses;    ///< one per toss, in order
   bool has_scenes = false;           ///< every toss has its scene (toss_book made a book)
 };
+
+/// The summary's last line where the fitted moments make no body (toss_book: the triangle
+/// inequality broken, or a body too flat for a scene): why no toss has a scene to play, for the
+/// command line and the page alike.
+inline constexpr const char* kNoSceneLine =
+    "no scene of the tosses: the fitted moments break the triangle inequality (I1 + I2 < I3, "
+    "where every rigid body has I1 + I2 ≥ I3) or make a body too flat for a scene";
 
 /// Toss `toss` (0-based) of `fit` of `recording` as its chart's values.
 TossChart toss_chart(const GyroRecording& recording, const FitResult& fit, int toss);

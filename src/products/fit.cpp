@@ -175,11 +175,8 @@ FitFiles fit_files(const FitJob& job, const fit::FitReport& report) {
                           (layout.videos.empty()
                                ? std::string()
                                : ", " + std::to_string(layout.videos.size()) + " video(s)"));
-  files.summary.push_back(report.has_scenes
-                              ? explore_line(job.out_dir, report.recording)
-                              : "no scene of the tosses: the fitted moments break the triangle "
-                                "inequality (I1 + I2 < I3, where every rigid body has I1 + I2 ≥ "
-                                "I3) or make a body too flat for a scene");
+  // Without scenes, the report's summary has said why (fit::kNoSceneLine).
+  if (report.has_scenes) files.summary.push_back(explore_line(job.out_dir, report.recording));
   if (job.clips) {
     files.scratch =
         std::make_unique<output::AtomicDirectory>(layout.manifest.parent_path() / "render");

@@ -280,7 +280,7 @@ def main():
         if r.returncode != 0:
             fail(f"bookspin fit {name} --drag {drag}: exit {r.returncode}: {r.stderr}")
         summary = [line for line in r.stdout.splitlines()
-                   if not line.startswith(("wrote ", "to play the tosses", "no scene of the tosses"))]
+                   if not line.startswith(("wrote ", "to play the tosses"))]
         body_csv = sorted(folder.glob("*-fit-body.csv"))[0]
         stem = body_csv.name[: -len("-fit-body.csv")]
         scenes = sorted(folder.glob(f"{stem}-toss*.toml"), key=lambda p: int(re.findall(r"toss(\d+)", p.name)[-1]))
@@ -310,7 +310,7 @@ def main():
     if r.returncode != 0:
         fail(f"bookspin fit {' '.join(class_names)}: exit {r.returncode}: {r.stderr}")
     class_summary = [line for line in r.stdout.splitlines()
-                     if not line.startswith(("wrote ", "to play the tosses", "no scene of the tosses"))]
+                     if not line.startswith(("wrote ", "to play the tosses"))]
     class_cli = (read_csv(folder / "student1-and-2-more-fit-body.csv"),
                  read_csv(folder / "student1-and-2-more-fit.csv"))
     bad_name, bad_line = next(iter(bad_cases.items()))
@@ -333,7 +333,7 @@ def main():
         if r.returncode != 0:
             fail(f"bookspin fit {hand_file} --tosses {hand_text!r}: exit {r.returncode}: {r.stderr}")
         hand_summary = [line for line in r.stdout.splitlines()
-                        if not line.startswith(("wrote ", "to play the tosses", "no scene of the tosses"))]
+                        if not line.startswith(("wrote ", "to play the tosses"))]
         hand_body, hand_tosses = read_csv(folder / "real-12-13-01-fit-body.csv"), read_csv(folder / "real-12-13-01-fit.csv")
         # The command line fitted the ranges given, in time order, as given: each toss from the
         # recording's first sample at or after its start to its last at or before its end.

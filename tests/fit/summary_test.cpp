@@ -91,5 +91,30 @@ TEST(FitSummary, ThePageIsNeverToldToGiveAnOption) {
   EXPECT_EQ(shown.summary.size(), command.summary.size());
 }
 
+// Moments that no rigid body has (1 : 1.5 : 5, I1 + I2 < I3, as a recording's data may fit): no
+// toss has a scene, and the summary says why in its last line, which the command line prints
+// and the page shows (it gave no Play button and no word). A body that is one has no such line.
+TEST(FitSummary, NoSceneOfTheTossesSaysWhyForEveryReader) {
+  test::SyntheticBody impossible = test::phone_on_book();
+  impossible.moments = Eigen::Vector3d(1.0, 1.5, 5.0);
+  const std::vector<test::SyntheticToss> tosses{{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.2}};
+  const GyroRecording recording = test::as_recording(test::make_recording(impossible, tosses, 3));
+  for (const Reader reader : {Reader::command_line, Reader::page}) {
+    FitRequest request;
+    request.reader = reader;
+    const FitReport report = fit_report(recording, request);
+    const Eigen::Vector3d& I = report.result.body.ratios;
+    ASSERT_LT(I[0] + I[1], I[2]) << "the fit should find the impossible body: " << I.transpose();
+    EXPECT_FALSE(report.has_scenes);
+    for (const TossReport& toss : report.tosses) EXPECT_FALSE(toss.scene.has_value());
+    ASSERT_FALSE(report.summary.empty());
+    EXPECT_EQ(report.summary.back(), kNoSceneLine);
+  }
+  const FitReport possible =
+      fit_report(test::as_recording(test::make_recording(test::phone_on_book(), tosses, 3)), {});
+  EXPECT_TRUE(possible.has_scenes);
+  EXPECT_EQ(count_with(possible.summary, "no scene of the tosses"), 0);
+}
+
 }  // namespace
 }  // namespace bookspin::fit
