@@ -91,7 +91,12 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
     set_phase(w);
     set_landen_chain();
     if (parts_ == ExactParts::omega_and_orientation) set_precession();
-    anchor_ = (momentum_frame(scaled_momentum({w[0], w[1], w[2]})) * to_sorted_).transpose();
+    // W from the momentum frame of ω(0) as state() evaluates it (jacobi at u0), not of ω0 as
+    // given: where L lies within ~1e-7 of the reference axis, the frame's axis L × e_r is set by
+    // components of L a few orders above ω's rounding, and ω0's frame against the evaluated one
+    // turned R(0) 9e-6 rad off the identity (docs/physics.md §8, "How far in time").
+    anchor_ =
+        (momentum_frame(scaled_momentum(sorted_omega_long(jacobi(u0_)))) * to_sorted_).transpose();
   }
   set_horizon();
 }

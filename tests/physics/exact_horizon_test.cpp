@@ -110,6 +110,21 @@ TEST(ExactHorizon, AnAngularVelocityPastADoubleWithAFiniteEnergyIsReported) {
                   .empty());
 }
 
+// Found by tests/fuzz/exact_fuzzer.cpp: two moments 1e-13 apart and L within 1.5e-7 rad of the
+// axis ω circles, where the momentum frame's axis L × e_r is set by components of L only ~1e4
+// above ω's rounding (sn at 2K near k = 1). Its anchor, formed from ω0 as given rather than as
+// state() evaluates ω(0), turned R(0) 9e-6 rad off the identity.
+TEST(ExactHorizon, AStartWithLNearlyAlongTheReferenceAxisIsTheIdentity) {
+  const Eigen::Vector3d moments(1.279243583355983e-150, 1.2792435833558541e-150,
+                                3.5039672497896691e-150);
+  const Eigen::Vector3d omega0(0, 3.3721104401498031e-132, 4.9040891223003885e-139);
+  const ExactRotation exact(moments, omega0);
+  const ExactState s = exact.state(0.0);
+  EXPECT_NEAR(s.q[0], 1.0, 1e-15);
+  EXPECT_LT(s.q.tail<3>().norm(), 1e-15);
+  EXPECT_TRUE(check_exact_property({moments, omega0, {0.0, 0.2994382766334292}}).empty());
+}
+
 // Near the horizon the angles are still carried to about 1e-6 rad: ψ is reduced by 2π in long
 // double before it is rounded to a double (a double holds 2^40 only to 2^-12). The steady spin's
 // angle |ω0| t is known exactly: ω0 = (0, 0, 1), t = 2^39 + 1, angle 2^39 + 1 rad, whose
