@@ -6,15 +6,6 @@
 #include "fit/toss_flags.hpp"
 
 namespace bookspin::fit {
-namespace {
-
-double median(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
-
-}  // namespace
-
 std::optional<FlightSearch> trimmed_flights(const GyroRecording& recording, const FitResult& fit,
                                             const FlightSearch& found,
                                             const FinderSettings& settings) {
@@ -33,10 +24,10 @@ std::optional<FlightSearch> trimmed_flights(const GyroRecording& recording, cons
     std::vector<double> residual(t.size());
     for (int i = 0; i < n; ++i)
       residual[i] = (omega[i] - fitted_omega(fit, static_cast<int>(k), t[i])).norm();
-    const double threshold = kTrimFactor * median(residual);
+    const double threshold = kTrimFactor * median_of(residual);
     // The torque the samples need (toss_flags.hpp), each sample the larger of its two steps'.
     const std::vector<double> step = step_torque(t, omega, inertia);
-    const double torque_threshold = kTrimFactor * median(step);
+    const double torque_threshold = kTrimFactor * median_of(step);
     const auto thrown_or_caught = [&](int i) {
       const double torque = std::max(i > 0 ? step[i - 1] : 0.0, i + 1 < n ? step[i] : 0.0);
       return residual[i] > threshold && torque > torque_threshold;

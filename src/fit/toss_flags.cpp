@@ -40,11 +40,6 @@ std::vector<double> block_rms(const std::vector<double>& at, const std::vector<d
   return rms;
 }
 
-double median_of(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
-
 /// Whether the samples within a block of `worst` need a torque: the step torque's block RMS
 /// over kBlockFactor × its median block. A residual that jumps where the samples are free is the
 /// fitted motion drifting off (near the separatrix a small error in the body or ω0 grows
@@ -109,6 +104,11 @@ std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vec
 }
 
 }  // namespace
+
+double median_of(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
 
 std::optional<double> rest_noise(const GyroRecording& recording, const FlightSearch& search) {
   const double rest = 0.5 * FinderSettings{}.rest_omega;
