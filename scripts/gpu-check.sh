@@ -29,6 +29,47 @@ mode=${1:-}
 bundle=${2:-build/gpu-bundle}
 programs=(build/bookspin build/bookspin-bench build/tests/picture_tests)
 
+# The libraries only FFmpeg's other codecs, filters and protocols call (docs/performance.md, "A
+# GPU"): replaced in the bundle by stubs of the same name, symbols and versions, so that the
+# bundle fits the 64 MiB a lent GPU machine takes. `run` compares `bookspin info` with the
+# build's own, so a stub that bookspin reached would show.
+stubbed='libx265|libcodec2|libflite[a-z0-9_]*|librsvg-2|libplacebo|libSvtAv1Enc|libaom|librav1e|libdav1d|libjxl[a-z_]*|libxml2|libicu[a-z]+|libopenmpt|libgme|libpocketsphinx|libchromaprint|libzvbi|libmysofa|librubberband|libbluray|libzmq|libssh-gcrypt|libsrt-gnutls|librabbitmq|libvidstab|libzimg|libxvidcore|libtwolame|libshine|libspeex|libgsm|libmfx|liblilv-0|libserd-0|libsord-0|libsratom-0|libopenmpt|libgdk_pixbuf-2.0|libOpenCL'
+
+# stub_library LIB OUT: a library of the same SONAME, symbols and versions, every function an
+# immediate return and every object zeros (for libraries that only FFmpeg's unused codecs call).
+stub_library() {
+  local lib=$1 out=$2 work soname
+  work=$(mktemp -d)
+  soname=$(objdump -p "$lib" | awk '/SONAME/ { print $2 }')
+  readelf -W --dyn-syms "$lib" | awk -v asm="$work/stub.s" -v map="$work/stub.map" '
+    $7 != "UND" && $7 != "ABS" && ($5 == "GLOBAL" || $5 == "WEAK") && ($4 == "FUNC" || $4 == "OBJECT" || $4 == "IFUNC" || $4 == "NOTYPE") && NF >= 8 {
+      name = $8; ver = ""
+      if (index(name, "@@")) { split(name, p, "@@"); name = p[1]; ver = p[2] }
+      else if (index(name, "@")) { next }
+      if (name == "" || seen[name]++) next
+      if (ver == name) next
+      if ($4 == "OBJECT") {
+        size = $3 + 0; if (size < 1) size = 1
+        printf "  .bss\n  .globl \"%s\"\n  .type \"%s\", @object\n  .size \"%s\", %d\n\"%s\":\n  .zero %d\n", name, name, name, size, name, size > asm
+      } else {
+        printf "  .text\n  .globl \"%s\"\n  .type \"%s\", @function\n\"%s\":\n  xor %%eax, %%eax\n  ret\n", name, name, name > asm
+      }
+      if (ver != "") { vers[ver] = vers[ver] "    \"" name "\";\n" } else { base = base "    \"" name "\";\n" }
+      any = 1
+    }
+    END {
+      if (!any) printf "" > asm
+      n = 0
+      for (v in vers) { printf "%s {\n  global:\n%s};\n", v, vers[v] > map; n++ }
+      if (n == 0) printf "" > map
+      else if (base != "") printf "BASE_STUB {\n  global:\n%s};\n", base > map
+    }'
+  local vs=()
+  [ -s "$work/stub.map" ] && vs=(-Wl,--version-script="$work/stub.map")
+  gcc -shared -nostdlib -o "$out" "$work/stub.s" -Wl,-soname,"$soname" "${vs[@]}" || { rm -rf "$work"; return 1; }
+  rm -rf "$work"
+}
+
 pack() {
   for p in "${programs[@]}"; do
     [ -x "$p" ] || { echo "gpu-check: $p is not built (cmake --build build --target bookspin bookspin-bench picture_tests)"; exit 2; }
@@ -43,16 +84,39 @@ pack() {
     while read -r lib; do cp -L "$lib" "$bundle/lib/"; done
   # glvnd's libEGL (loaded through libepoxy by name, not linked) and Mesa's EGL vendor file, so
   # that llvmpipe stays the fallback where the GPU's vendor is missing.
-  for lib in /usr/lib/x86_64-linux-gnu/libEGL.so.1 /usr/lib/x86_64-linux-gnu/libGLdispatch.so.0; do
+  # libepoxy opens libOpenGL.so.0 (or libGL.so.1) by name too for the GL entry points: a GPU
+  # machine's image may hold neither (a bare CUDA image held none, 2026-11-27).
+  for lib in /usr/lib/x86_64-linux-gnu/libEGL.so.1 /usr/lib/x86_64-linux-gnu/libGLdispatch.so.0 \
+             /usr/lib/x86_64-linux-gnu/libOpenGL.so.0 /usr/lib/x86_64-linux-gnu/libGL.so.1 \
+             /usr/lib/x86_64-linux-gnu/libGLX.so.0; do
     [ -e "$lib" ] && cp -L "$lib" "$bundle/lib/"
   done
   # The fonts the overlays draw with, and a configuration that names only them.
+  local lib
+  for lib in "$bundle"/lib/*; do
+    if basename "$lib" | grep -Eq "^($stubbed)\.so"; then
+      stub_library "$lib" "$lib.stub" && mv "$lib.stub" "$lib" || { echo "gpu-check: could not stub $lib"; exit 1; }
+    fi
+  done
+  # The bundle's bookspin must say what the build's says (the stubs reach nothing it runs).
+  if ! diff <(build/bookspin info 2>&1 | grep -v '^EGL\|^GL ') \
+            <(LD_LIBRARY_PATH="$bundle/lib" "$bundle/bin/bookspin" info 2>&1 | grep -v '^EGL\|^GL '); then
+    echo "gpu-check: the bundle's bookspin info differs from the build's (above)"; exit 1
+  fi
   cp /usr/share/fonts/truetype/dejavu/*.ttf "$bundle/fonts/" 2>/dev/null || true
+  # The build machine's rendering rules (hinting, antialiasing, the DejaVu aliases), so that the
+  # overlays' text is drawn as the goldens' was; the user's and local files left out.
+  mkdir -p "$bundle/conf.d"
+  for conf in /etc/fonts/conf.d/*.conf; do
+    case "$(basename "$conf")" in 50-user.conf | 51-local.conf) continue ;; esac
+    cp -L "$conf" "$bundle/conf.d/"
+  done
   cat > "$bundle/fonts.conf" <<'EOF'
 <?xml version="1.0"?>
 <!DOCTYPE fontconfig SYSTEM "fonts.dtd">
 <fontconfig>
   <dir prefix="relative">fonts</dir>
+  <include ignore_missing="yes" prefix="relative">conf.d</include>
   <cachedir>/tmp/bookspin-gpu-check-fontconfig</cachedir>
 </fontconfig>
 EOF
