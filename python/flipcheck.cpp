@@ -20,6 +20,7 @@
 #include "bindings.hpp"
 #include "common/errors.hpp"
 #include "common/json_writer.hpp"
+#include "common/text_file.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
 
@@ -72,6 +73,16 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
                      " (there: " + known + ")");
   }
   return scene::parse_scene(file);
+}
+
+/// The scenario a judgement is of: a name or a scene file (scenario_scene), or the scenario
+/// JSON `bookspin flipcheck export` wrote (a path ending in .json), as the command line reads it.
+analysis::Scenario judged_scenario(const py::object& scenario, const py::object& directory) {
+  bool ok = false;
+  const std::string text = path_text(scenario, ok);
+  if (ok && text.find('\0') == std::string::npos && fs::path(text).extension() == ".json")
+    return analysis::scenario_from_json(read_text_file(text, "the scenario file"), text);
+  return analysis::scenario_of(scenario_scene(scenario, directory));
 }
 
 /// The scenarios the module carries: the folder bookspin-scenarios/ beside the module's own
@@ -196,7 +207,16 @@ struct Judged {
 /// (matrix_arg would say "expected shape (4, 4)", the row count taken from its first axis).
 void refuse_transposed(const py::object& value, const char* name, std::size_t columns,
                        std::size_t rows) {
-  const py::tuple shape = py::module_::import("numpy").attr("shape")(value);
+  py::tuple shape;
+  try {
+    shape = py::module_::import("numpy").attr("shape")(value);
+  } catch (const py::error_already_set& e) {
+    // numpy's "inhomogeneous shape" ValueError names no argument: this one is named.
+    if (!e.matches(PyExc_ValueError)) throw;
+    throw InputError(std::string(name) + ": its rows are of different lengths (a ragged list): " +
+                     "expected shape (" + std::to_string(rows) + ", " + std::to_string(columns) +
+                     "), N = len(t) rows of " + std::to_string(columns) + " numbers each");
+  }
   if (shape.size() != 2 || rows == columns) return;
   const auto first = shape[0].cast<std::size_t>(), second = shape[1].cast<std::size_t>();
   if (first == columns && second == rows)
@@ -223,8 +243,7 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
               const py::object& omega_arg, const py::object& directory,
               const py::object& motion_arg) {
   const std::string motion_name = motion_name_of(motion_arg);
-  const scene::Scene scene = scenario_scene(scenario_input, directory);
-  const analysis::Scenario scenario = analysis::scenario_of(scene);
+  const analysis::Scenario scenario = judged_scenario(scenario_input, directory);
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
   refuse_transposed(q_arg, "q", 4, t.size());
   refuse_transposed(omega_arg, "omega_world", 3, t.size());
