@@ -347,9 +347,10 @@ long long named_stride(const std::string& message) {
 
 // The round trip by relation over the whole kit: every scenario exported, then its exact motion
 // judged through its scene file and through the JSON export wrote, at every step and at a set
-// of strides the judge calls safe (the one it names for rows too far apart, one below it, and
-// 7, 8 and 133 where they are no larger), each with and without the last step where the stride
-// does not divide steps: all pass (exit 0), in both doors alike. book-intermediate-0.002 every
+// of strides the judge calls safe (the one it names for rows too far apart, one below it, 7, 8
+// and 133 where they are no larger, and the largest whose last multiple falls one step short of
+// the end and one step past it), each with and without the last step where the stride does not
+// divide steps: all pass (exit 0), in both doors alike. book-intermediate-0.002 every
 // 7th step failed "ends at step 74998 of 75000", and with the row of step 75000 added was
 // refused ("t = 150 is not step 75005"). Planted back (either rule), this fails.
 TEST(FlipcheckCommand, EveryExportedScenarioRoundTripsThroughJudgeAtEveryStrideItCallsSafe) {
@@ -382,7 +383,20 @@ TEST(FlipcheckCommand, EveryExportedScenarioRoundTripsThroughJudgeAtEveryStrideI
     EXPECT_TRUE(probe.status == 0 || (probe.status == 2 && safe >= 1)) << probe.err;
     std::vector<long long> strides = {1};
     const long long largest = safe > 0 ? safe : coarse;
-    for (const long long k : {largest, largest - 1, 7LL, 8LL, 133LL})
+    std::vector<long long> candidates = {largest, largest - 1, 7, 8, 133};
+    // The edges of the last interval: the largest stride whose last multiple is one step short
+    // of the end (steps mod k = k − 1), and one step past (steps mod k = 1).
+    for (long long k = largest; k >= 2; --k)
+      if ((steps + 1) % k == 0) {
+        candidates.push_back(k);
+        break;
+      }
+    for (long long k = largest; k >= 2; --k)
+      if (steps % k == 1) {
+        candidates.push_back(k);
+        break;
+      }
+    for (const long long k : candidates)
       if (k >= 1 && k <= largest && std::find(strides.begin(), strides.end(), k) == strides.end())
         strides.push_back(k);
     std::string motions;

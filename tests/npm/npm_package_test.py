@@ -213,13 +213,13 @@ def ci_example(npx, env, project, tmp, bookspin, source):
     path_env = dict(env, PATH=f"{project / 'node_modules' / '.bin'}:{env['PATH']}")
     for motion, status, node_status in ((exact, 0, 0), (broken, 3, 1)):
         step = run(["sh", "ci-step.sh", motion], path_env, cwd=project, expect=status)
-        if status and f"{name} {motion}: FAIL (L turned" not in step.stdout:
+        if status and f"{name} {motion}: FAIL (" not in step.stdout:
             fail(f"ci-step.sh on a broken motion printed {step.stdout!r}")
         if not status and "passes" not in step.stdout:
             fail(f"ci-step.sh on the exact motion printed {step.stdout!r}")
         tested = run(["node", "--test", "motion.test.mjs"], dict(env, MOTION=str(motion)),
                      cwd=project, expect=node_status)
-        if status and f"{name} broken.csv: FAIL (L turned" not in tested.stdout:
+        if status and f"{name} broken.csv: FAIL (" not in tested.stdout:
             fail(f"motion.test.mjs on a broken motion printed {tested.stdout!r}")
         run([bookspin, "flipcheck", "judge", kit / f"{name}.json", motion, "-o", tmp / "ci-cli"],
             expect=status)

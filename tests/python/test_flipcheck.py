@@ -433,7 +433,7 @@ def turned_from(csv_text, step):
     return "\n".join(lines) + "\n"
 
 
-def test_the_ci_example_passes_the_exact_motion_and_fails_a_broken_one(tmp_path):
+def test_the_ci_example_passes_the_exact_motion_and_fails_a_broken_one(bookspin, tmp_path):
     """docs/flipcheck.md, "In a CI job": examples/flipcheck-ci/test_motion.py run by pytest as
     an engine's CI runs it, on the exported exact motion (passes) and on it turned from step 100
     on (fails, pytest's exit status 1, the judge's FAIL line in its report)."""
@@ -447,10 +447,12 @@ def test_the_ci_example_passes_the_exact_motion_and_fails_a_broken_one(tmp_path)
     for motion, status in ((exact, 0), (broken, 1)):
         done = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
                                "test_motion.py"], cwd=project, capture_output=True, text=True,
-                              env={**os.environ, "MOTION": str(motion)}, timeout=300)
+                              env={**os.environ, "MOTION": str(motion), "PYTHONPATH":
+                                   str(pathlib.Path(bookspin.__file__).resolve().parent)},
+                              timeout=300)
         assert done.returncode == status, done.stdout + done.stderr
         if status:
-            assert f"AssertionError: {name} broken.csv: FAIL (L turned" in done.stdout, done.stdout
+            assert f"AssertionError: {name} broken.csv: FAIL (" in done.stdout, done.stdout
 
 
 def test_judge_reads_the_scenario_json_export_wrote(bookspin, tmp_path):
