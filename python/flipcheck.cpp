@@ -104,10 +104,12 @@ judge(...) for a test suite (pytest): returns the judgement (judge's dict) when 
 "pass", and otherwise raises AssertionError whose message is the line `bookspin flipcheck
 judge` prints for the same motion, its reasons in words, the motion's name where the command
 line names the file:
-  book-intermediate-0.05 motion: FAIL (energy drift 0.484 (limit 0.01); |L| drift 0.218
-  (limit 0.01); L turned 0.0304 rad at step 800 (limit 0.01); orientation error 3.14 rad at
-  step 1455 (limit 0.1)): turn-overs 6/6, energy drift 0.484, ...
-each failure with its value and its limit (docs/flipcheck.md, "Thresholds").
+  book-intermediate-0.05 motion: FAIL (energy drift 0.484 at step 3000 (limit 0.01; past it
+  from step 230); |L| drift 0.218 at step 3000 (limit 0.01; past it from step 246); L turned
+  0.0304 rad at step 800 (limit 0.01; past it from step 229); orientation error 3.14 rad at
+  step 1455 (limit 0.1; past it from step 241)): turn-overs 6/6, energy drift 0.484, ...
+each failure with its value, its limit, the step where it is worst and the first step past the
+limit (docs/flipcheck.md, "Thresholds").
 Arguments as judge's; bad input raises bookspin.Error, as there.)";
 
 const char* kScenariosDoc = R"(scenarios(directory=None) -> list[str]
@@ -171,7 +173,8 @@ scenario_sha256 (str: the SHA-256 of the scenario's JSON as `bookspin flipcheck 
 it).
 
 Arguments (float64, or anything numpy turns into it):
-  scenario     a name of scenarios() or a path to a scene file
+  scenario     a name of scenarios(), a path to a scene file, or the scenario JSON `bookspin
+               flipcheck export` wrote (a path ending in .json)
   t            (N,)    time units: 0, then every stride steps of the scenario's dt (to 1e-6 of
                        a step), none past its last step
   q            (N, 4)  orientation, body to world, w, x, y, z (any norm but 0, either sign)

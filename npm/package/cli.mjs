@@ -155,8 +155,12 @@ function exportCommand(args) {
     const files = exportFiles(spec);
     return { json: inside(out, `${spec.scenario}.json`), csv: inside(out, `${spec.scenario}-exact.csv`), files };
   });
-  const texts = new Map(); // path → text: a scenario given twice is written once
-  for (const o of outputs) texts.set(o.json, o.files.json).set(o.csv, o.files.csv);
+  const texts = new Map(); // path → text
+  for (const [i, o] of outputs.entries()) {
+    if (texts.has(o.json))
+      throw new InputError(`flipcheck export: two scenarios named ${specs[i].scenario} (one given twice, or two of one name): give each once`);
+    texts.set(o.json, o.files.json).set(o.csv, o.files.csv);
+  }
   makeDir(out);
   const staged = [];
   try {

@@ -42,7 +42,7 @@ int export_scenarios(const FlipcheckOptions& options) {
     for (std::size_t k = 0; k < i; ++k)
       if (scenes[i].name == scenes[k].name)
         throw InputError("flipcheck export: two scenarios named " + scenes[i].name +
-                         " (one given twice, or two files of one scene.name): give each once");
+                         " (one given twice, or two of one name): give each once");
   // One command, one stop: every scenario staged, then all put in place together.
   const std::vector<cache::Outcome> outcomes = products::make_flipcheck_exports(
       scenes, options.out_dir, {options.force, options.verify, remake_note}, stop_poll());

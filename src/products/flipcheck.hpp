@@ -73,7 +73,6 @@ struct FlipcheckJudgeJob {
   /// `export` wrote (analysis::scenario_from_json) with the scene's defaults for the methods'
   /// model settings
   scene::Scene scene;
-  std::filesystem::path scenario_file = {};    ///< a scenario JSON, read by make_flipcheck_judge
   std::vector<std::filesystem::path> motions;  ///< motion CSVs (jobs/motion_csv.hpp)
   std::filesystem::path out_dir;
   cache::Freshness freshness;
@@ -81,7 +80,8 @@ struct FlipcheckJudgeJob {
   /// the scene's other model settings (analysis::simulated_motion), a row every
   /// time.steps_per_frame steps; judged after the files
   std::vector<analysis::Method> methods = {};
-  StopPoll stop = {};  ///< may be empty
+  StopPoll stop = {};                        ///< may be empty
+  std::filesystem::path scenario_file = {};  ///< a scenario JSON, read by make_flipcheck_judge
 };
 
 struct FlipcheckJudgeResult {

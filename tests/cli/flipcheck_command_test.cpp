@@ -337,6 +337,20 @@ TEST(FlipcheckCommand, TheExportedScenarioJsonJudgesAsItsSceneFile) {
   }
 }
 
+// One command, one stop: a scenario given twice to export would stage its files twice; it is
+// refused, one line and exit 2, nothing written.
+TEST(FlipcheckCommand, AScenarioGivenTwiceToExportIsRefused) {
+  ScratchDir dir;
+  const SplitResult r =
+      run_bookspin_split("flipcheck export " + scenario("mujoco-test-box") + " " +
+                         scenario("mujoco-test-box") + " -o " + quoted(dir / "out"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "bookspin: error: flipcheck export: two scenarios named mujoco-test-box (one given "
+            "twice, or two of one name): give each once\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 /// The stride the refusal of `message` names as safe ("write a row at least every F steps"),
 /// or 0.
 long long named_stride(const std::string& message) {
