@@ -20,6 +20,7 @@
 #include "bindings.hpp"
 #include "common/errors.hpp"
 #include "common/json_writer.hpp"
+#include "common/text_file.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
 
@@ -74,6 +75,16 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
   return scene::parse_scene(file);
 }
 
+/// The scenario a judgement is of: a name or a scene file (scenario_scene), or the scenario
+/// JSON `bookspin flipcheck export` wrote (a path ending in .json), as the command line reads it.
+analysis::Scenario judged_scenario(const py::object& scenario, const py::object& directory) {
+  bool ok = false;
+  const std::string text = path_text(scenario, ok);
+  if (ok && text.find('\0') == std::string::npos && fs::path(text).extension() == ".json")
+    return analysis::scenario_from_json(read_text_file(text, "the scenario file"), text);
+  return analysis::scenario_of(scenario_scene(scenario, directory));
+}
+
 /// The scenarios the module carries: the folder bookspin-scenarios/ beside the module's own
 /// file (BUILD/python/ as CMake builds it, site-packages/ where pip installed the wheel), so
 /// that it needs nothing from the source tree it was built from.
@@ -93,10 +104,12 @@ judge(...) for a test suite (pytest): returns the judgement (judge's dict) when 
 "pass", and otherwise raises AssertionError whose message is the line `bookspin flipcheck
 judge` prints for the same motion, its reasons in words, the motion's name where the command
 line names the file:
-  book-intermediate-0.05 motion: FAIL (energy drift 0.484 (limit 0.01); |L| drift 0.218
-  (limit 0.01); L turned 0.0304 rad at step 800 (limit 0.01); orientation error 3.14 rad at
-  step 1455 (limit 0.1)): turn-overs 6/6, energy drift 0.484, ...
-each failure with its value and its limit (docs/flipcheck.md, "Thresholds").
+  book-intermediate-0.05 motion: FAIL (energy drift 0.484 at step 3000 (limit 0.01; past it
+  from step 230); |L| drift 0.218 at step 3000 (limit 0.01; past it from step 246); L turned
+  0.0304 rad at step 800 (limit 0.01; past it from step 229); orientation error 3.14 rad at
+  step 1455 (limit 0.1; past it from step 241)): turn-overs 6/6, energy drift 0.484, ...
+each failure with its value, its limit, the step where it is worst and the first step past the
+limit (docs/flipcheck.md, "Thresholds").
 Arguments as judge's; bad input raises bookspin.Error, as there.)";
 
 const char* kScenariosDoc = R"(scenarios(directory=None) -> list[str]
@@ -160,7 +173,8 @@ scenario_sha256 (str: the SHA-256 of the scenario's JSON as `bookspin flipcheck 
 it).
 
 Arguments (float64, or anything numpy turns into it):
-  scenario     a name of scenarios() or a path to a scene file
+  scenario     a name of scenarios(), a path to a scene file, or the scenario JSON `bookspin
+               flipcheck export` wrote (a path ending in .json)
   t            (N,)    time units: 0, then every stride steps of the scenario's dt (to 1e-6 of
                        a step), none past its last step
   q            (N, 4)  orientation, body to world, w, x, y, z (any norm but 0, either sign)
@@ -196,7 +210,16 @@ struct Judged {
 /// (matrix_arg would say "expected shape (4, 4)", the row count taken from its first axis).
 void refuse_transposed(const py::object& value, const char* name, std::size_t columns,
                        std::size_t rows) {
-  const py::tuple shape = py::module_::import("numpy").attr("shape")(value);
+  py::tuple shape;
+  try {
+    shape = py::module_::import("numpy").attr("shape")(value);
+  } catch (const py::error_already_set& e) {
+    // numpy's "inhomogeneous shape" ValueError names no argument: this one is named.
+    if (!e.matches(PyExc_ValueError)) throw;
+    throw InputError(std::string(name) + ": its rows are of different lengths (a ragged list): " +
+                     "expected shape (" + std::to_string(rows) + ", " + std::to_string(columns) +
+                     "), N = len(t) rows of " + std::to_string(columns) + " numbers each");
+  }
   if (shape.size() != 2 || rows == columns) return;
   const auto first = shape[0].cast<std::size_t>(), second = shape[1].cast<std::size_t>();
   if (first == columns && second == rows)
@@ -223,8 +246,7 @@ Judged judged(const py::object& scenario_input, const py::object& t_arg, const p
               const py::object& omega_arg, const py::object& directory,
               const py::object& motion_arg) {
   const std::string motion_name = motion_name_of(motion_arg);
-  const scene::Scene scene = scenario_scene(scenario_input, directory);
-  const analysis::Scenario scenario = analysis::scenario_of(scene);
+  const analysis::Scenario scenario = judged_scenario(scenario_input, directory);
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
   refuse_transposed(q_arg, "q", 4, t.size());
   refuse_transposed(omega_arg, "omega_world", 3, t.size());

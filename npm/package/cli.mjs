@@ -1,11 +1,12 @@
 #!/usr/bin/env node
 // npx flipcheck judge SCENARIO MOTION.csv… [-o DIR]
 // npx flipcheck export SCENARIO… [-o DIR]
-// `bookspin flipcheck judge` and `export` with the same output and exit statuses (0; 2 for bad
-// input, its one line on stderr; 1 when an output cannot be written; 70 for a bug). SCENARIO is
+// `bookspin flipcheck judge` and `export` with the same output and exit statuses (0; 3 when
+// judge finds a motion that fails, its FAIL line printed and the CSV written; 2 for bad input,
+// its one line on stderr; 1 when an output cannot be written; 70 for a bug). SCENARIO is
 // a scenario's name (flipcheck's scenarios()) or a scenario JSON that `export` wrote. Unlike the
 // command line it keeps no manifest: it judges and writes every time.
-import { mkdirSync, readFileSync, renameSync, statSync, writeFileSync } from "node:fs";
+import { mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { basename } from "node:path";
 import { exportFiles, judgeCsv, scenario, scenarios, version } from "./index.mjs";
 
@@ -13,7 +14,13 @@ const USAGE = `usage: flipcheck judge SCENARIO MOTION.csv... [-o DIR]
        flipcheck export SCENARIO... [-o DIR]
        flipcheck --version
 SCENARIO: a scenario's name (${scenarios().join(", ")}) or a scenario JSON export wrote.
-DIR: the output directory (default out/flipcheck).`;
+DIR: the output directory (default out/flipcheck).
+Exit status: 0 every motion passes (export: written); 3 a motion fails (its FAIL line printed
+and the CSV written: a CI step that runs judge fails on it); 2 bad input (one line, nothing
+written); 1 an output could not be written; 70 internal error.`;
+
+/** judge's exit status when a motion fails: bookspin flipcheck judge's (src/cli/run_guarded.hpp). */
+const EXIT_JUDGED_FAIL = 3;
 
 class InputError extends Error {}
 class OutputError extends Error {}
@@ -48,24 +55,46 @@ function scenarioArg(arg) {
   if (scenarios().includes(arg)) return scenario(arg);
   if (arg.endsWith(".json") || arg.includes("/")) {
     const text = readText(arg, "the scenario file");
+    let json;
     try {
-      return JSON.parse(text);
+      json = JSON.parse(text);
     } catch (e) {
       throw new InputError(`${arg}: not valid JSON: ${e.message}`);
     }
+    if (typeof json !== "object" || json === null || Array.isArray(json))
+      throw new InputError(
+        `${arg}: holds ${json === null ? "JSON null" : Array.isArray(json) ? "an array" : `a ${typeof json}`}, not a scenario (a JSON object as flipcheck export writes it: scenario, mass, principal_moments, omega0_body, dt, steps)`,
+      );
+    return json;
   }
   throw new InputError(`flipcheck: no scenario "${arg}" (there: ${scenarios().join(", ")})`);
 }
 
-/** Writes `text` to `path` whole: a temporary name, then renamed into place. */
-function writeWhole(path, text) {
+/** Writes `text` under a temporary name beside `path`: {temporary, path}, for place(). */
+function stage(path, text) {
   const temporary = join(path.slice(0, path.length - basename(path).length) || ".", `.${basename(path)}.tmp`);
   try {
     writeFileSync(temporary, text);
+  } catch (e) {
+    rmSync(temporary, { force: true });
+    throw new OutputError(`cannot write "${path}": ${e.message}`);
+  }
+  return { temporary, path };
+}
+
+/** Renames a staged file into place. */
+function place(temporary, path) {
+  try {
     renameSync(temporary, path);
   } catch (e) {
     throw new OutputError(`cannot write "${path}": ${e.message}`);
   }
+}
+
+/** Writes `text` to `path` whole: a temporary name, then renamed into place. */
+function writeWhole(path, text) {
+  const { temporary } = stage(path, text);
+  place(temporary, path);
 }
 
 function makeDir(dir) {
@@ -112,26 +141,41 @@ function judgeCommand(args) {
   writeWhole(target, csv);
   judged.forEach((j, i) => console.log(`${name} ${files[i]}: ${j.line}`));
   console.log(`wrote: ${target}`);
+  return judged.every((j) => j.pass) ? 0 : EXIT_JUDGED_FAIL;
 }
 
 function exportCommand(args) {
   const { positional, out } = parse(args);
   if (positional.length < 1) throw new InputError("flipcheck export: SCENARIO is required");
+  // Every scenario read, checked and computed before anything is written (a bad one is its one
+  // line, exit 2, nothing written), then every file written under a temporary name and only then
+  // all renamed into place, as `bookspin flipcheck export` puts a command's files in place.
   const specs = positional.map(scenarioArg);
-  for (const spec of specs) {
+  const outputs = specs.map((spec) => {
     const files = exportFiles(spec);
-    const json = inside(out, `${spec.scenario}.json`);
-    const csv = inside(out, `${spec.scenario}-exact.csv`);
-    makeDir(out);
-    writeWhole(json, files.json);
-    writeWhole(csv, files.csv);
-    console.log(`exported: ${json}, ${csv}`);
+    return { json: inside(out, `${spec.scenario}.json`), csv: inside(out, `${spec.scenario}-exact.csv`), files };
+  });
+  const texts = new Map(); // path → text
+  for (const [i, o] of outputs.entries()) {
+    if (texts.has(o.json))
+      throw new InputError(`flipcheck export: two scenarios named ${specs[i].scenario} (one given twice, or two of one name): give each once`);
+    texts.set(o.json, o.files.json).set(o.csv, o.files.csv);
   }
+  makeDir(out);
+  const staged = [];
+  try {
+    for (const [path, text] of texts) staged.push(stage(path, text));
+  } catch (e) {
+    staged.forEach(({ temporary }) => rmSync(temporary, { force: true }));
+    throw e;
+  }
+  for (const { temporary, path } of staged) place(temporary, path);
+  for (const { json, csv } of outputs) console.log(`exported: ${json}, ${csv}`);
 }
 
 const [command, ...rest] = process.argv.slice(2);
 try {
-  if (command === "judge") judgeCommand(rest);
+  if (command === "judge") process.exitCode = judgeCommand(rest);
   else if (command === "export") exportCommand(rest);
   else if (command === "-h" || command === "--help") console.log(USAGE);
   else if (command === "--version") console.log(`flipcheck ${version}`);

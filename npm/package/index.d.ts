@@ -84,3 +84,7 @@ export function exactMotion(name: ScenarioArg): ExactMotion;
 export function exportFiles(name: ScenarioArg): { json: string; csv: string };
 export function judge(name: ScenarioArg, motion: Motion, options?: { motion?: string }): Judgement;
 export function judgeCsv(name: ScenarioArg, text: string, options?: { file?: string; motion?: string }): Judgement;
+/** judge() (or judgeCsv() for a CSV's text) that throws node's assert.AssertionError with
+ * "SCENARIO MOTION: FAIL (reasons): …" when the motion fails, and returns the judgement when it
+ * passes: `npx flipcheck judge`'s exit status 3, in a test runner. */
+export function assertPasses(name: ScenarioArg, motion: Motion | string, options?: { motion?: string; file?: string }): Judgement;

@@ -3,8 +3,10 @@
 // bookspin's own C++ compiled to WebAssembly (flipcheck-wasm.cjs); the scenarios are the JSON
 // `bookspin flipcheck export` writes (scenarios/). Bad input throws an Error whose message is
 // the line `bookspin flipcheck` prints after "bookspin: error: ".
+import { AssertionError } from "node:assert";
 import { createHash } from "node:crypto";
 import { readFileSync, readdirSync } from "node:fs";
+import { basename } from "node:path";
 import createWasm from "./flipcheck-wasm.cjs";
 
 const wasm = await createWasm();
@@ -38,7 +40,10 @@ export function scenario(name) {
 
 /** A scenario given by name, or as an exported scenario JSON (an object), as the wasm reads it. */
 function spec(nameOrJson) {
-  return typeof nameOrJson === "object" && nameOrJson !== null ? nameOrJson : scenario(nameOrJson);
+  if (typeof nameOrJson === "object" && nameOrJson !== null) return nameOrJson;
+  if (typeof nameOrJson !== "string")
+    throw new Error(`flipcheck: a scenario is a name or a scenario JSON object, got ${nameOrJson === null ? "null" : typeof nameOrJson}`);
+  return scenario(nameOrJson);
 }
 
 /** The SHA-256 (hex) of the scenario's JSON as `bookspin flipcheck export` writes it (for a
@@ -75,19 +80,25 @@ function judgement(result) {
   return out;
 }
 
-/** A flat Float64Array of an array-like of numbers, or of rows (arrays) of numbers. */
-function flat(values) {
+/** A flat Float64Array of an array-like of numbers, or of rows (arrays) of numbers; `name` names
+ * it where it holds BigInts (a BigInt64Array), which are no numbers to judge. */
+function flat(values, name) {
   if (values === undefined || values === null) return new Float64Array(0);
+  const bigints = () =>
+    new Error(`${name}: holds BigInts (${values.constructor?.name ?? "bigint"}): expected numbers, a Float64Array or rows of numbers (Float64Array.from(${name}, Number) converts it)`);
+  if (values instanceof BigInt64Array || values instanceof BigUint64Array) throw bigints();
   if (ArrayBuffer.isView(values)) return Float64Array.from(values);
   const list = Array.from(values);
-  return Float64Array.from(list.length && typeof list[0] === "object" ? list.flatMap((r) => Array.from(r)) : list);
+  const items = list.length && typeof list[0] === "object" && list[0] !== null ? list.flatMap((r) => Array.from(r)) : list;
+  if (items.some((v) => typeof v === "bigint")) throw bigints();
+  return Float64Array.from(items);
 }
 
 /** Judges a motion given as arrays: t (N), q (N×4: w, x, y, z, body → world, any norm but 0,
  * either sign), omegaWorld (N×3, rad per time unit): flat, row-major, or as rows. */
 export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {}) {
   const s = spec(name);
-  return judgement(answer(wasm.judgeArrays(s, scenarioSha256(s), flat(t), flat(q), flat(omegaWorld), "judge", motion)));
+  return judgement(answer(wasm.judgeArrays(s, scenarioSha256(s), flat(t, "t"), flat(q, "q"), flat(omegaWorld, "omegaWorld"), "judge", motion)));
 }
 
 /** Judges a motion CSV's text, as `bookspin flipcheck judge SCENARIO FILE` judges the file
@@ -95,4 +106,21 @@ export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {
 export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}) {
   const s = spec(name);
   return judgement(answer(wasm.judgeCsv(s, scenarioSha256(s), String(text), file, motion)));
+}
+
+/** The in-process equivalent of `npx flipcheck judge`'s exit status for a test runner: judges
+ * `motion` ({t, q, omegaWorld} as judge() takes it, or a motion CSV's text as judgeCsv() takes
+ * it, `file` naming it) and returns the judgement when it passes; throws node's
+ * assert.AssertionError whose message is "SCENARIO MOTION: " and the line `judge` prints (FAIL
+ * and its reasons) when it fails, MOTION the `motion` option or the file's name. Bad input
+ * throws an Error, as judge() does. */
+export function assertPasses(name, motion, { motion: label = "motion", file = "motion.csv" } = {}) {
+  const s = spec(name);
+  const j =
+    typeof motion === "string"
+      ? judgeCsv(s, motion, { file, motion: label === "motion" ? basename(file) : label })
+      : judge(s, motion, { motion: label });
+  if (!j.pass)
+    throw new AssertionError({ message: `${s.scenario} ${j.motion}: ${j.line}`, actual: j.verdict, expected: "pass", operator: "assertPasses" });
+  return j;
 }

@@ -197,7 +197,9 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
   Conformance c;
   c.stride = motion.size() > 1 ? motion[1].step : 1;
   c.last_step = motion.back().step;
-  c.complete = c.last_step >= s.steps;
+  // Whole when the rows reach the last step, or the last multiple of the stride before it (the
+  // next row would be past the end).
+  c.complete = c.last_step >= s.steps || c.last_step + c.stride > s.steps;
   c.half_period = exact.flip_period();
   // The motion's own diagnostics from its q and ω (docs/physics.md §9): L = R I ω in the world.
   const auto diagnostics_of = [&](const MotionSample& row, const Eigen::Matrix3d& R) {
@@ -231,26 +233,44 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
     // The whole motion against the exact one: the orientation and L's direction at every row.
     const Eigen::Quaterniond q_exact(e.q[0], e.q[1], e.q[2], e.q[3]);
     const Eigen::Matrix3d R_exact = q_exact.toRotationMatrix();
+    // Each row-wise measure: its largest and where, and the first row past its limit.
+    const auto past = [&](std::optional<long long>& first, double value, double limit) {
+      if (!first && !(value <= limit)) first = row.step;
+    };
     if (const double angle = angle_of(q_exact.conjugate() * row.q.normalized());
         angle > c.orientation_error || !std::isfinite(angle)) {
       c.orientation_error = angle;
       c.orientation_error_step = row.step;
     }
+    past(c.orientation_past, c.orientation_error, limits.orientation_error);
     if (const double angle = angle_between(d.L, L_exact_world); angle > c.L_direction_error) {
       c.L_direction_error = angle;
       c.L_direction_error_step = row.step;
     }
+    past(c.L_direction_past, c.L_direction_error, limits.L_direction);
     const Eigen::Vector3d L_exact = R_exact.transpose() * e.L;  // body frame
     if (std::abs(L_exact[c.spin_axis]) < kTumbleCosine * exact.angular_momentum_norm())
       exact_tumbles = true;
     exact_at_rows.observe(t, L_exact[mid] / exact.angular_momentum_norm());
-    c.energy_drift = std::max(c.energy_drift, std::abs(d.energy_total / E0 - 1.0));
-    c.L_drift = std::max(c.L_drift, std::abs(d.L.norm() / L0 - 1.0));
+    if (const double e = std::abs(d.energy_total / E0 - 1.0); e > c.energy_drift) {
+      c.energy_drift = e;
+      c.energy_drift_step = row.step;
+    }
+    past(c.energy_drift_past, c.energy_drift, limits.energy_drift);
+    if (const double l = std::abs(d.L.norm() / L0 - 1.0); l > c.L_drift) {
+      c.L_drift = l;
+      c.L_drift_step = row.step;
+    }
+    past(c.L_drift_past, c.L_drift, limits.L_drift);
     flips.observe(t, d.cos_axis_L[mid]);
     if (!c.tumble_time && std::abs(d.cos_axis_L[c.spin_axis]) < kTumbleCosine) c.tumble_time = t;
     const double r = ratio(d);
     c.separatrix_ratio_drift = std::max(c.separatrix_ratio_drift, std::abs(r / r0 - 1.0));
-    c.separatrix_approach = std::max(c.separatrix_approach, (r - r0) / (1.0 - r0));
+    if (const double a = (r - r0) / (1.0 - r0); a > c.separatrix_approach) {
+      c.separatrix_approach = a;
+      c.separatrix_approach_step = row.step;
+    }
+    past(c.separatrix_past, c.separatrix_approach, limits.separatrix_approach);
   }
   c.stable_spin = c.spin_axis != mid && !exact_tumbles;
   const double t_last = static_cast<double>(c.last_step) * s.dt;
@@ -281,21 +301,28 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
   }
 
   auto& f = c.failures;
+  // " at step W (limit X; past it from step F)": where a row-wise failure is worst and where it
+  // starts.
+  const auto where = [](long long worst, const std::optional<long long>& first,
+                        const std::string& limit) {
+    return " at step " + std::to_string(worst) + " (limit " + limit + "; past it from step " +
+           std::to_string(first.value_or(worst)) + ")";
+  };
   if (!c.complete)
     f.push_back("ends at step " + std::to_string(c.last_step) + " of " + std::to_string(s.steps));
   if (c.start_error > limits.start)
     f.push_back("starts " + short_number(c.start_error) + " off the scenario's omega0 (limit " +
                 short_number(limits.start) + ")");
   if (c.energy_drift > limits.energy_drift)
-    f.push_back("energy drift " + short_number(c.energy_drift) + " (limit " +
-                short_number(limits.energy_drift) + ")");
+    f.push_back("energy drift " + short_number(c.energy_drift) +
+                where(c.energy_drift_step, c.energy_drift_past, short_number(limits.energy_drift)));
   if (c.L_drift > limits.L_drift)
-    f.push_back("|L| drift " + short_number(c.L_drift) + " (limit " + short_number(limits.L_drift) +
-                ")");
+    f.push_back("|L| drift " + short_number(c.L_drift) +
+                where(c.L_drift_step, c.L_drift_past, short_number(limits.L_drift)));
   if (!(c.L_direction_error <= limits.L_direction))
-    f.push_back("L turned " + short_number(c.L_direction_error) + " rad at step " +
-                std::to_string(c.L_direction_error_step) + " (limit " +
-                short_number(limits.L_direction) + ")");
+    f.push_back(
+        "L turned " + short_number(c.L_direction_error) + " rad" +
+        where(c.L_direction_error_step, c.L_direction_past, short_number(limits.L_direction)));
   if (c.flips != c.flips_exact)
     f.push_back(turn_overs(c.flips) + ", exact " + std::to_string(c.flips_exact));
   if (c.first_flip && c.first_flip_exact &&
@@ -304,14 +331,15 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
                 " time units off (limit " + short_number(limits.first_flip * c.half_period) + ", " +
                 short_number(100.0 * limits.first_flip) + " % of T/2)");
   if (!(c.orientation_error <= limits.orientation_error))
-    f.push_back("orientation error " + short_number(c.orientation_error) + " rad at step " +
-                std::to_string(c.orientation_error_step) + " (limit " +
-                short_number(limits.orientation_error) + ")");
+    f.push_back("orientation error " + short_number(c.orientation_error) + " rad" +
+                where(c.orientation_error_step, c.orientation_past,
+                      short_number(limits.orientation_error)));
   if (c.stable_spin && c.tumble_time) f.push_back("tumbles at t = " + short_number(*c.tumble_time));
   if (c.stable_spin && c.separatrix_approach > limits.separatrix_approach)
     f.push_back("r = 2E·I2/L² " + short_number(100.0 * c.separatrix_approach) +
-                " % of the way to the separatrix (limit " +
-                short_number(100.0 * limits.separatrix_approach) + " %)");
+                " % of the way to the separatrix" +
+                where(c.separatrix_approach_step, c.separatrix_past,
+                      short_number(100.0 * limits.separatrix_approach) + " %"));
   return c;
 }
 

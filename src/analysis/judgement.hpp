@@ -80,9 +80,9 @@ inline constexpr double kTumbleCosine = 0.5;
 
 /// How a motion compares with the exact one (docs/flipcheck.md, "What judge measures").
 struct Conformance {
-  long long stride = 0;                    ///< steps between rows
-  long long last_step = 0;                 ///< the motion's last row
-  bool complete = false;                   ///< it reaches the scenario's last step
+  long long stride = 0;     ///< steps between rows
+  long long last_step = 0;  ///< the motion's last row
+  bool complete = false;  ///< it reaches the scenario's last step (or the stride's last before it)
   double start_error = 0.0;                ///< |ω(0) − ω0| / |ω0|
   double energy_drift = 0.0;               ///< max |E/E0 − 1| over the rows, E0 its own row 0
   double L_drift = 0.0;                    ///< max ||L|/|L0| − 1|
@@ -96,12 +96,19 @@ struct Conformance {
   long long orientation_error_step = 0;    ///< the row (its step) where it is largest
   double L_direction_error = 0.0;          ///< rad, the largest angle of L (world) from exact L
   long long L_direction_error_step = 0;    ///< the row (its step) where it is largest
-  bool stable_spin = false;                ///< the exact motion stays a spin about axis 1 or 3
-  int spin_axis = 0;                       ///< body axis nearest L at t = 0
-  std::optional<double> tumble_time;       ///< first |cos(spin axis, L)| < 0.5
-  double separatrix_ratio_drift = 0.0;     ///< max |r/r0 − 1|, r = 2E·I2/L²
-  double separatrix_approach = 0.0;        ///< max (r − r0)/(1 − r0): 1 = on the separatrix
-  std::vector<std::string> failures;       ///< one phrase per failed threshold
+  long long energy_drift_step = 0;         ///< the row (its step) where energy_drift is largest
+  long long L_drift_step = 0;              ///< the row (its step) where L_drift is largest
+  long long separatrix_approach_step = 0;  ///< the row where separatrix_approach is largest
+  /// The first row (its step) past each row-wise limit, where one is: where a failure starts,
+  /// beside the step where it is worst (a motion turned from step 1000 on is worst at 1853).
+  std::optional<long long> energy_drift_past, L_drift_past, L_direction_past, orientation_past,
+      separatrix_past;
+  bool stable_spin = false;             ///< the exact motion stays a spin about axis 1 or 3
+  int spin_axis = 0;                    ///< body axis nearest L at t = 0
+  std::optional<double> tumble_time;    ///< first |cos(spin axis, L)| < 0.5
+  double separatrix_ratio_drift = 0.0;  ///< max |r/r0 − 1|, r = 2E·I2/L²
+  double separatrix_approach = 0.0;     ///< max (r − r0)/(1 − r0): 1 = on the separatrix
+  std::vector<std::string> failures;    ///< one phrase per failed threshold
   bool pass() const { return failures.empty(); }
 };
 

@@ -3,6 +3,7 @@
 // (docs/flipcheck.md, "export: what an engine needs"), pure, which the explorer page and the
 // npm package compile; its SHA-256, a judgement's `scenario_sha256`, is conformance.hpp's.
 #include <string>
+#include <string_view>
 
 #include "analysis/judgement.hpp"
 #include "common/json_writer.hpp"
@@ -16,5 +17,17 @@ JsonValue scenario_json(const Scenario& scenario);
 
 /// The bytes of OUT/<scenario>.json: scenario_json indented, a newline at the end. No I/O.
 std::string scenario_file(const Scenario& scenario);
+
+/// The scenario of a scenario file's JSON `text` (what scenario_file() writes, edited or not),
+/// `file` naming it in messages: the reader of `bookspin flipcheck judge OUT/<scenario>.json`
+/// and Python's, with the npm package's rules (npm/flipcheck_bindings.cpp). Every field is taken
+/// as written or refused by name: `scenario` (a name), `mass`, `principal_moments`,
+/// `omega0_body` (or `omega0_world` alone), `dt` and `steps` (a whole number) as check_scenario()
+/// allows them; `q0`, where given, the identity (either sign); `omega0_world` beside
+/// `omega0_body` equal to it (to 1e-12 relative); other fields are ignored. The start is
+/// omega0_body, the jiggle already in it. Throws InputError "FILE: not valid JSON: … at line L,
+/// column C", "FILE: holds JSON null, not a scenario (…)" for a JSON value that is no object,
+/// and "NAME: FIELD: reason" for a field.
+Scenario scenario_from_json(std::string_view text, const std::string& file);
 
 }  // namespace bookspin::analysis

@@ -1,6 +1,7 @@
 // `bookspin flipcheck`: the conformance kit (docs/flipcheck.md). `export` writes each
 // scenario's start and exact motion for any engine; `judge` compares motions an engine wrote
 // with the exact one and says pass or fail.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -36,13 +37,19 @@ int export_scenarios(const FlipcheckOptions& options) {
     scenes.push_back(scene::parse_scene(path, options.overrides));
     analysis::scenario_of(scenes.back());  // a comparison scene is refused here
   }
-  for (const scene::Scene& s : scenes) {
-    products::FlipcheckExportJob job{
-        s, options.out_dir, {options.force, options.verify, remake_note}, stop_poll()};
-    const cache::Outcome outcome = products::make_flipcheck_export(job);
+  // A scenario once: two of one name would write one pair of files twice.
+  for (std::size_t i = 0; i < scenes.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (scenes[i].name == scenes[k].name)
+        throw InputError("flipcheck export: two scenarios named " + scenes[i].name +
+                         " (one given twice, or two of one name): give each once");
+  // One command, one stop: every scenario staged, then all put in place together.
+  const std::vector<cache::Outcome> outcomes = products::make_flipcheck_exports(
+      scenes, options.out_dir, {options.force, options.verify, remake_note}, stop_poll());
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
     const products::FlipcheckExportLayout layout =
-        products::flipcheck_export_layout(options.out_dir, s);
-    std::cout << (outcome == cache::Outcome::up_to_date ? "up to date: " : "exported: ")
+        products::flipcheck_export_layout(options.out_dir, scenes[i]);
+    std::cout << (outcomes[i] == cache::Outcome::up_to_date ? "up to date: " : "exported: ")
               << layout.json.string() << ", " << layout.csv.string() << std::endl;
   }
   return kExitOk;
@@ -62,20 +69,32 @@ void set_common(Job& job, const FlipcheckOptions& options, const char* command, 
 }
 
 /// Judges each motion against the scenario's exact motion: one verdict line each, and
-/// OUT/<scenario>-judge.csv.
+/// OUT/<scenario>-judge.csv. Exit 0 when every motion passes, kExitJudgedFail (3) when one
+/// fails (the lines printed and the CSV written all the same), so that a CI step fails on it.
 int judge_motions(const FlipcheckOptions& options) {
   products::FlipcheckJudgeJob job;
-  job.scene = scene::parse_scene(options.scenario, options.overrides);
+  // A scenario JSON as export wrote it (what an engine ran), or a scene file.
+  if (products::is_scenario_json(options.scenario)) {
+    if (!options.overrides.empty())
+      throw InputError(options.scenario +
+                       ": flipcheck judge: --set changes a scene file (TOML), not a scenario "
+                       "JSON: edit the JSON, or give the scene file");
+    job.scenario_file = options.scenario;
+  } else {
+    job.scene = scene::parse_scene(options.scenario, options.overrides);
+  }
   for (const std::string& m : options.motions) job.motions.emplace_back(m);
   set_common(job, options, "judge", "MOTION files");
   const products::FlipcheckJudgeResult result = products::make_flipcheck_judge(job);
   for (const analysis::JudgedMotion& j : result.judged)
-    std::cout << job.scene.name << " " << (j.file.empty() ? j.name : j.file.string()) << ": "
+    std::cout << result.scenario << " " << (j.file.empty() ? j.name : j.file.string()) << ": "
               << analysis::verdict_line(j.result) << '\n';
-  const auto layout = products::flipcheck_judge_layout(options.out_dir, job.scene);
   std::cout << (result.outcome == cache::Outcome::up_to_date ? "up to date: " : "wrote: ")
-            << layout.csv.string() << std::endl;
-  return kExitOk;
+            << result.layout.csv.string() << std::endl;
+  const bool all_pass =
+      std::all_of(result.judged.begin(), result.judged.end(),
+                  [](const analysis::JudgedMotion& j) { return j.result.pass(); });
+  return all_pass ? kExitOk : kExitJudgedFail;
 }
 
 /// Judges every motion file and method in every scenario: OUT/flipcheck-league.csv and
@@ -105,6 +124,13 @@ void add_out_set_and_freshness(CLI::App* cmd, FlipcheckOptions& options,
   add_freshness_flags(cmd, options.force, options.verify, manifest);
 }
 
+/// What `flipcheck judge --help` says of its exit statuses (docs/flipcheck.md, "In a CI job").
+constexpr const char* kJudgeExitStatuses =
+    "Exit status: 0 every motion passes; 3 a motion fails (its FAIL line printed and the CSV "
+    "written: a CI step that runs judge fails on it); 2 bad input (a scenario or motion file it "
+    "cannot use: one line, nothing written); 1 an output could not be written; 70 internal "
+    "error; 128+n stopped by signal n (nothing written).";
+
 }  // namespace
 
 Subcommand add_flipcheck(CLI::App& cli) {
@@ -129,7 +155,12 @@ Subcommand add_flipcheck(CLI::App& cli) {
       "judge",
       "Compare motion CSVs (t,qw,qx,qy,qz and wx,wy,wz or wx_world,wy_world,wz_world) with the "
       "scenario's exact motion: a verdict line each and OUT/<scenario>-judge.csv");
-  judge->add_option("SCENARIO", options.scenario, "Scenario file (TOML)")->required();
+  judge->footer(kJudgeExitStatuses);
+  judge
+      ->add_option("SCENARIO", options.scenario,
+                   "Scenario: a scene file (TOML, e.g. scenes/flipcheck/*.toml) or the scenario "
+                   "JSON export wrote (OUT/<scenario>.json)")
+      ->required();
   judge->add_option("MOTION", options.motions, "Motion CSV files written by an engine");
   const char* methods_help =
       "bookspin's own methods and the engines' modes to run from the scenario's start and "

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <string>
 
@@ -45,6 +47,31 @@ bool finite_number(std::string_view cell, double& out) {
   return true;
 }
 
+/// Why a cell finite_number() refused is no finite number: a decimal number beyond the doubles
+/// is named so (finite as written, it underflows to 0 or overflows), anything else "is not a
+/// finite number".
+std::string not_a_number_reason(std::string_view cell, const std::string& quoted) {
+  std::string_view digits = cell;
+  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
+  const bool decimal = !digits.empty() &&
+                       (std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') &&
+                       digits.find_first_not_of("0123456789.eE+-") == std::string_view::npos;
+  if (decimal) {
+    const std::string text(cell);
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() + text.size()) {
+      if (value == 0.0)
+        return quoted +
+               " is finite but below the smallest double (about 4.9e-324): it would read as 0 "
+               "(write 0 if that is meant)";
+      if (std::isinf(value))
+        return quoted + " is finite but beyond the largest double (about 1.8e308)";
+    }
+  }
+  return quoted + " is not a finite number";
+}
+
 /// The header's names: cells_of(line), each without the double quotes a spreadsheet or R's
 /// write.csv puts around it ("t","qw",…).
 std::vector<std::string_view> header_of(std::string_view line) {
@@ -63,6 +90,18 @@ std::string repeated_column(const std::vector<std::string_view>& header) {
       "wx", "wy", "wz", "omega_x", "omega_y", "omega_z", "wx_world", "wy_world", "wz_world"};
   for (const std::string_view name : kRead)
     if (std::count(header.begin(), header.end(), name) > 1) return std::string(name);
+  return "";
+}
+
+/// A quantity the header gives under both of its spellings (bookspin's diagnostics' q_w beside
+/// qw, omega_x beside wx), as "qw and q_w", or "": one quantity, one column.
+std::string two_spellings(const std::vector<std::string_view>& header) {
+  static constexpr std::string_view kSpellings[][2] = {
+      {"qw", "q_w"},     {"qx", "q_x"},     {"qy", "q_y"},    {"qz", "q_z"},
+      {"wx", "omega_x"}, {"wy", "omega_y"}, {"wz", "omega_z"}};
+  for (const auto& [a, b] : kSpellings)
+    if (std::count(header.begin(), header.end(), a) && std::count(header.begin(), header.end(), b))
+      return std::string(a) + " and " + std::string(b);
   return "";
 }
 
@@ -99,7 +138,13 @@ void add_row(MotionFile& motion, const std::array<double, 8>& v, double dt, long
     if (step <= 0) throw error(0, "t does not increase");
     motion.stride = step;
   }
-  if (index > 1 && step != index * motion.stride) {
+  // Rows every k steps reach the scenario's end where k divides `steps`; where it does not, the
+  // last row may be the last multiple of k, or the scenario's last step after it (a shorter last
+  // interval): both are the whole run (docs/flipcheck.md, "judge: the motion file").
+  const bool last_step_after_the_strides = index > 1 && step == steps &&
+                                           step > (index - 1) * motion.stride &&
+                                           step < index * motion.stride;
+  if (index > 1 && step != index * motion.stride && !last_step_after_the_strides) {
     throw error(0, "t = " + text(0) + " is not step " + std::to_string(index * motion.stride) +
                        " (rows every " + std::to_string(motion.stride) + " steps from t = 0)");
   }
@@ -143,6 +188,10 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
       if (const std::string twice = repeated_column(header); !twice.empty())
         throw InputError(file, line_number, twice,
                          "the column " + twice + " appears twice in the header: which is meant?");
+      if (const std::string both = two_spellings(header); !both.empty())
+        throw InputError(file, line_number, both.substr(both.rfind(' ') + 1),
+                         "the header has both " + both +
+                             ": two spellings of one quantity, which is meant? (keep one)");
       const auto need = [&](std::initializer_list<std::string_view> options,
                             std::string_view what) {
         const auto i = column(header, options);
@@ -183,7 +232,7 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
       if (cell.empty()) throw InputError(file, line_number, column_name, "empty cell");
       if (!finite_number(cell, v[k])) {
         throw InputError(file, line_number, column_name,
-                         quoted_cell(cell) + " is not a finite number");
+                         not_a_number_reason(cell, quoted_cell(cell)));
       }
     }
     add_row(

@@ -1,10 +1,12 @@
 #include "products/flipcheck.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "analysis/scenario_file.hpp"
 #include "cache/make_cached.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
@@ -89,51 +91,104 @@ FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_d
 }
 
 cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
-  const FlipcheckExportLayout layout = flipcheck_export_layout(job.out_dir, job.scene);
-  const analysis::Scenario scenario = analysis::scenario_of(job.scene);
-  const cache::CachedOutputs cached{job.scene.name + "-flipcheck",
-                                    layout.manifest,
-                                    "flipcheck export",
-                                    {},
-                                    job.out_dir,
-                                    &job.scene,
-                                    /*all_or_nothing=*/true};
-  return cache::make_cached(cached, job.freshness, [&] {
-    const jobs::ExactMotion motion = jobs::exact_motion(scenario, job.stop);
-    const jobs::ExportFiles texts = jobs::export_files(motion, job.stop);
-    output::prepare_output_dir(layout.json.parent_path());
-    output::StagedFiles files;
-    files.text(layout.json, texts.json);
-    files.text(layout.csv, texts.csv);
-    // Asked once the temporaries are written (a CSV of 10^6 rows takes a while to write), just
-    // before they are put in place: a signal until then leaves the earlier files.
-    stop_if_asked(job.stop, "flipcheck export write");
-    files.commit();
+  return make_flipcheck_exports({job.scene}, job.out_dir, job.freshness, job.stop).front();
+}
+
+namespace {
+
+/// make_flipcheck_exports() from scenario `i` on: scenario i through make_cached (its make
+/// stages its files into `staged` and goes on to i + 1 before it returns), so that the last
+/// one's make puts every staged file in place at once, and every manifest is written after.
+void export_from(std::size_t i, const std::vector<scene::Scene>& scenes,
+                 const std::filesystem::path& out_dir, const cache::Freshness& freshness,
+                 const StopPoll& stop, output::StagedFiles& staged,
+                 std::vector<cache::Outcome>& outcomes) {
+  if (i == scenes.size()) {
+    // Asked once every temporary is written (a CSV of 10^6 rows takes a while to write), just
+    // before they are put in place: a signal until then leaves every earlier file.
+    stop_if_asked(stop, "flipcheck export write");
+    staged.commit();
+    return;
+  }
+  const scene::Scene& scene = scenes[i];
+  const FlipcheckExportLayout layout = flipcheck_export_layout(out_dir, scene);
+  const analysis::Scenario scenario = analysis::scenario_of(scene);
+  const cache::CachedOutputs cached{
+      scene.name + "-flipcheck", layout.manifest, "flipcheck export", {}, out_dir, &scene,
+      /*all_or_nothing=*/true};
+  bool went_on = false;
+  outcomes[i] = cache::make_cached(cached, freshness, [&] {
+    {  // the motion and its texts freed once written: only the temporaries wait for the rest
+      const jobs::ExactMotion motion = jobs::exact_motion(scenario, stop);
+      const jobs::ExportFiles texts = jobs::export_files(motion, stop);
+      output::prepare_output_dir(layout.json.parent_path());
+      staged.text(layout.json, texts.json);
+      staged.text(layout.csv, texts.csv);
+    }
+    went_on = true;
+    export_from(i + 1, scenes, out_dir, freshness, stop, staged, outcomes);
     return cache::Made{{layout.json, layout.csv}};
   });
+  if (!went_on) export_from(i + 1, scenes, out_dir, freshness, stop, staged, outcomes);
+}
+
+}  // namespace
+
+std::vector<cache::Outcome> make_flipcheck_exports(const std::vector<scene::Scene>& scenes,
+                                                   const std::filesystem::path& out_dir,
+                                                   const cache::Freshness& freshness,
+                                                   const StopPoll& stop) {
+  std::vector<cache::Outcome> outcomes(scenes.size(), cache::Outcome::up_to_date);
+  output::StagedFiles staged;
+  export_from(0, scenes, out_dir, freshness, stop, staged, outcomes);
+  return outcomes;
+}
+
+bool is_scenario_json(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".json";
+}
+
+FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir,
+                                            const std::string& scenario) {
+  return {out_dir / (scenario + "-judge.csv"),
+          out_dir / scenario / "flipcheck-judge-manifest.json"};
 }
 
 FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir,
                                             const scene::Scene& scene) {
-  return {out_dir / (scene.name + "-judge.csv"),
-          out_dir / scene.name / "flipcheck-judge-manifest.json"};
+  return flipcheck_judge_layout(out_dir, scene.name);
 }
 
 FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
-  const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, job.scene);
   JsonObject options;
   if (!job.methods.empty()) options.push_back({"methods", method_labels(job.methods)});
   const std::vector<std::string> names = file_names(job.motions);
-  // The scenario derived, its motion files read (a bad one fails before any run), then judged.
-  const analysis::Scenario scenario = analysis::scenario_of(job.scene);
+  // The scenario derived (from the scene, or read from the scenario JSON export wrote), its
+  // motion files read (a bad one fails before any run), then judged.
+  const bool from_json = !job.scenario_file.empty();
+  const analysis::Scenario scenario =
+      from_json
+          ? analysis::scenario_from_json(read_text_file(job.scenario_file, "the scenario file"),
+                                         job.scenario_file.string())
+          : analysis::scenario_of(job.scene);
+  const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, scenario.name);
   const std::string sha256 = analysis::scenario_sha256(scenario);
   const std::vector<jobs::MotionFile> read = read_all(scenario, job.motions);
   FlipcheckJudgeResult result;
+  result.scenario = scenario.name;
+  result.layout = layout;
   result.judged = judge_all(job.scene, scenario, job.motions, read, names, job.methods, job.stop);
   const CsvTable table = analysis::judgement_table(scenario, sha256, result.judged);
-  const cache::CachedOutputs cached{job.scene.name + "-judge", layout.manifest, "flipcheck judge",
-                                    std::move(options),        job.out_dir,     &job.scene,
-                                    /*all_or_nothing=*/true,   job.motions};
+  // A scenario JSON has no scene: its judgement is up to date for the same scenario (its
+  // canonical text's SHA-256, as every door hashes it), options and motion files.
+  if (from_json) options.push_back({"scenario_sha256", {sha256}});
+  const cache::CachedOutputs cached{
+      scenario.name + "-judge", layout.manifest, "flipcheck judge",
+      std::move(options),       job.out_dir,     from_json ? nullptr : &job.scene,
+      /*all_or_nothing=*/true,  job.motions};
   result.outcome = cache::make_cached(cached, job.freshness, [&] {
     output::prepare_output_dir(layout.csv.parent_path());
     output::write_text_file(layout.csv, csv_text(table, "flipcheck judge CSV"));

@@ -42,6 +42,21 @@ struct FlipcheckExportJob {
 /// OutputError, Interrupted.
 cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job);
 
+/// The export of several scenarios into one OUT, as one command (`bookspin flipcheck export
+/// A B C`): every scenario that is not up to date computed and its files written under
+/// temporary names, the stop asked once all are, and only then every file put in place together
+/// (one output::OutputSet: all or none), each scenario's manifest after. A signal before then
+/// leaves every earlier file, the manifests too, byte for byte (docs/outputs.md, "Signals").
+/// Each scenario's outcome, in order. Throws as make_flipcheck_export().
+std::vector<cache::Outcome> make_flipcheck_exports(const std::vector<scene::Scene>& scenes,
+                                                   const std::filesystem::path& out_dir,
+                                                   const cache::Freshness& freshness,
+                                                   const StopPoll& stop = {});
+
+/// Whether `path` names a scenario JSON (`export`'s OUT/<scenario>.json: its name ends in .json,
+/// any case) rather than a scene file (TOML). No I/O.
+bool is_scenario_json(const std::filesystem::path& path);
+
 /// Every path a judgement of one scenario into OUT writes.
 struct FlipcheckJudgeLayout {
   std::filesystem::path csv;       ///< OUT/<scenario>-judge.csv: one row per motion file
@@ -49,10 +64,15 @@ struct FlipcheckJudgeLayout {
 };
 
 FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir,
+                                            const std::string& scenario);
+FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir,
                                             const scene::Scene& scene);
 
 struct FlipcheckJudgeJob {
-  scene::Scene scene;                          ///< the scenario
+  /// The scenario: a scene file's (TOML), or, where `scenario_file` is set, the scenario JSON
+  /// `export` wrote (analysis::scenario_from_json) with the scene's defaults for the methods'
+  /// model settings
+  scene::Scene scene;
   std::vector<std::filesystem::path> motions;  ///< motion CSVs (jobs/motion_csv.hpp)
   std::filesystem::path out_dir;
   cache::Freshness freshness;
@@ -60,11 +80,14 @@ struct FlipcheckJudgeJob {
   /// the scene's other model settings (analysis::simulated_motion), a row every
   /// time.steps_per_frame steps; judged after the files
   std::vector<analysis::Method> methods = {};
-  StopPoll stop = {};  ///< may be empty
+  StopPoll stop = {};                        ///< may be empty
+  std::filesystem::path scenario_file = {};  ///< a scenario JSON, read by make_flipcheck_judge
 };
 
 struct FlipcheckJudgeResult {
   cache::Outcome outcome = cache::Outcome::made;
+  std::string scenario;                        ///< its name
+  FlipcheckJudgeLayout layout;                 ///< what it wrote
   std::vector<analysis::JudgedMotion> judged;  ///< in the order given (also when up to date)
 };
 

@@ -54,6 +54,45 @@ TEST(Judgement, TheExactMotionTurnedBetweenItsEndsFailsOnOrientationAndLsDirecti
   EXPECT_TRUE(has_failure(c, "L turned 1.57 rad at step ")) << verdict_line(c);
 }
 
+// A failure names where it starts and where it is worst: the exact motion with every row from
+// step 1000 on turned about world z by an angle growing from 0.2 rad (past the orientation
+// limit 0.1 and L's 0.01 at once) to 0.2 + 1e-3·2000 rad at the last step, 3000: each failure
+// is worst at 3000 and starts at 1000 (it named the worst step alone). Energy drift and |L| drift
+// are kept: neither is named. Planted back (the first step taken as the worst), this fails.
+TEST(Judgement, AFailureNamesTheStepItStartsAndTheStepItIsWorst) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  std::vector<MotionSample> rows = exact_rows(s, 1);
+  ASSERT_EQ(rows.back().step, 3000);
+  for (std::size_t n = 1000; n < rows.size(); ++n) {
+    const double angle = 0.2 + 1e-3 * static_cast<double>(n - 1000);
+    rows[n].q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ())) * rows[n].q;
+  }
+  const Conformance c = judge_motion(s, rows);
+  EXPECT_FALSE(c.pass());
+  EXPECT_EQ(c.orientation_past, 1000);
+  EXPECT_EQ(c.L_direction_past, 1000);
+  EXPECT_EQ(c.orientation_error_step, 3000);
+  EXPECT_FALSE(c.energy_drift_past.has_value());
+  EXPECT_TRUE(has_failure(c,
+                          "orientation error 2.2 rad at step 3000 (limit 0.1; past it from "
+                          "step 1000)"))
+      << verdict_line(c);
+  EXPECT_TRUE(has_failure(c, "L turned ")) << verdict_line(c);
+  for (const std::string& f : c.failures)
+    if (f.rfind("L turned", 0) == 0)
+      EXPECT_NE(f.find("(limit 0.01; past it from step 1000)"), std::string::npos) << f;
+  // Energy drifting from its first step on, worst at the last: both named.
+  std::vector<MotionSample> gaining = exact_rows(s, 1);
+  for (MotionSample& row : gaining) row.omega_body *= 1.0 + 1e-5 * static_cast<double>(row.step);
+  const Conformance e = judge_motion(s, gaining);
+  EXPECT_EQ(e.energy_drift_step, 3000);
+  ASSERT_TRUE(e.energy_drift_past.has_value());
+  EXPECT_GT(*e.energy_drift_past, 400);
+  EXPECT_LT(*e.energy_drift_past, 600);  // (1 + 1e-5 n)² − 1 passes 0.01 at n ≈ 499
+  EXPECT_TRUE(has_failure(e, "energy drift 0.0609 at step 3000 (limit 0.01; past it from step "))
+      << verdict_line(e);
+}
+
 // An engine whose body stops turning over after its first turn-over (each row from then on
 // the row just after it: E and |L| kept) counts one of the exact motion's six, said in the
 // singular: "1 turn-over, exact 6", not "1 turn-overs".

@@ -77,7 +77,11 @@ def motion_name(source, package, mode):
 
 def judged(bookspin, scene, motions, out):
     """motion file name → judge CSV row."""
-    run([bookspin, "flipcheck", "judge", scene, *motions, "-o", out])
+    # Exit 3 where an engine fails (docs/flipcheck.md, "In a CI job"): the rows are judged here.
+    r = subprocess.run([str(a) for a in [bookspin, "flipcheck", "judge", scene, *motions, "-o", out]],
+                       capture_output=True, text=True)
+    if r.returncode not in (0, 3):
+        fail(f"bookspin flipcheck judge {scene} exited {r.returncode}: {r.stderr}")
     with open(Path(out) / f"{Path(scene).stem}-judge.csv", newline="") as f:
         return {row["motion"]: row for row in csv.DictReader(f)}
 

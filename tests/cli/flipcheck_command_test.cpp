@@ -73,9 +73,11 @@ TEST(FlipcheckCommand, JudgesSimulatesCsvOfAnEngineMode) {
   const SplitResult judged =
       run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + " " +
                          quoted(dir / "euler.csv") + " -o " + quoted(dir.path()));
-  EXPECT_EQ(judged.status, 0) << judged.err;
+  EXPECT_EQ(judged.status, 3) << judged.err;  // a FAIL: exit 3 (docs/flipcheck.md, "In a CI job")
   // MuJoCo's own test: E/E0 = 1.0869 after 500 explicit steps of its box.
-  EXPECT_NE(judged.out.find("FAIL (energy drift 0.0869 (limit 0.01);"), std::string::npos)
+  EXPECT_NE(
+      judged.out.find("FAIL (energy drift 0.0869 at step 500 (limit 0.01; past it from step "),
+      std::string::npos)
       << judged.out;
 }
 
@@ -172,9 +174,10 @@ TEST(FlipcheckCommand, JudgeAndLeagueRunMethodsThemselves) {
   ScratchDir dir;
   const SplitResult judged = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") +
                                                 " --methods mujoco:euler -o " + quoted(dir.path()));
-  EXPECT_EQ(judged.status, 0) << judged.err;
+  EXPECT_EQ(judged.status, 3) << judged.err;  // it fails
   EXPECT_NE(
-      judged.out.find("mujoco-test-box mujoco euler: FAIL (energy drift 0.0869 (limit 0.01);"),
+      judged.out.find("mujoco-test-box mujoco euler: FAIL (energy drift 0.0869 at step 500 (limit "
+                      "0.01; past it from step "),
       std::string::npos)
       << judged.out;
   const SplitResult league = run_bookspin_split(
@@ -193,6 +196,246 @@ TEST(FlipcheckCommand, JudgeAndLeagueRunMethodsThemselves) {
     EXPECT_NE(none.err.find("nothing to judge"), std::string::npos) << none.err;
     EXPECT_FALSE(fs::exists(dir / "none"));
   }
+}
+
+/// The lines of the file at `path`, without their line ends.
+std::vector<std::string> lines_of(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+void write_lines(const fs::path& path, const std::vector<std::string>& lines) {
+  std::ofstream out(path, std::ios::binary);
+  for (const std::string& line : lines) out << line << '\n';
+}
+
+/// The exported exact motion `exact` (a header, then the rows of steps 0 … steps) every
+/// `stride`-th step from 0, and, `with_last`, the row of the last step after them where the
+/// stride does not reach it.
+void write_thinned(const fs::path& exact, long long stride, bool with_last, const fs::path& out) {
+  const std::vector<std::string> all = lines_of(exact);
+  const auto steps = static_cast<long long>(all.size()) - 2;
+  std::vector<std::string> kept{all[0]};
+  for (long long n = 0; n <= steps; n += stride) kept.push_back(all[1 + n]);
+  if (with_last && steps % stride != 0) kept.push_back(all.back());
+  write_lines(out, kept);
+}
+
+/// The exact motion of `exact` with every row from step `from` on turned: qx negated (the body
+/// turned about its x axis by twice its angle there), so that the orientation and L's
+/// direction leave their limits at `from` and stay out.
+void write_turned_from(const fs::path& exact, long long from, const fs::path& out) {
+  std::vector<std::string> lines = lines_of(exact);
+  for (std::size_t i = 1 + static_cast<std::size_t>(from); i < lines.size(); ++i) {
+    std::string& line = lines[i];
+    const std::size_t a = line.find(',', line.find(',', line.find(',') + 1) + 1);  // before qy
+    const std::size_t qx = line.find(',', line.find(',') + 1) + 1;
+    std::string cell = line.substr(qx, a - qx);
+    cell = cell[0] == '-' ? cell.substr(1) : "-" + cell;
+    line = line.substr(0, qx) + cell + line.substr(a);
+  }
+  write_lines(out, lines);
+}
+
+// A CI job reads the exit status: a FAIL exits 3, in every door (npx flipcheck judge:
+// tests/npm/npm_package_test.py), distinct from bad input's 2, a failed write's 1, an internal
+// error's 70 and a signal's 128 + n; its verdict lines and CSV are written as for a PASS, and
+// --help says so. Planted back (judge returning 0 on a FAIL), this fails.
+TEST(FlipcheckCommand, AFailingMotionExitsThreeAndEveryMotionPassingExitsZero) {
+  ScratchDir dir;
+  const CliResult exported = run_bookspin("flipcheck export " + scenario("mujoco-test-box") +
+                                          " -o " + quoted(dir / "kit"));
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  const fs::path exact = dir / "kit" / "mujoco-test-box-exact.csv";
+  write_turned_from(exact, 100, dir / "turned.csv");
+  const std::string toml = scenario("mujoco-test-box");
+  const std::string json = quoted(dir / "kit" / "mujoco-test-box.json");
+  for (const std::string& scenario_arg : {toml, json}) {
+    SCOPED_TRACE(scenario_arg);
+    const SplitResult pass = run_bookspin_split("flipcheck judge " + scenario_arg + " " +
+                                                quoted(exact) + " -o " + quoted(dir / "a"));
+    EXPECT_EQ(pass.status, 0) << pass.err;
+    EXPECT_NE(pass.out.find(": PASS: "), std::string::npos) << pass.out;
+    const SplitResult fail =
+        run_bookspin_split("flipcheck judge " + scenario_arg + " " + quoted(dir / "turned.csv") +
+                           " -o " + quoted(dir / "b") + " --force");
+    EXPECT_EQ(fail.status, 3) << fail.out << fail.err;
+    EXPECT_NE(fail.out.find("turned.csv: FAIL ("), std::string::npos) << fail.out;
+    EXPECT_EQ(fail.err, "");
+    EXPECT_NE(read_file(dir / "b" / "mujoco-test-box-judge.csv").find(",fail,"), std::string::npos);
+    // One failing motion among passing ones fails the run; up to date, it still does.
+    for (int run = 0; run < 2; ++run) {
+      const SplitResult mixed =
+          run_bookspin_split("flipcheck judge " + scenario_arg + " " + quoted(exact) + " " +
+                             quoted(dir / "turned.csv") + " -o " + quoted(dir / "c"));
+      EXPECT_EQ(mixed.status, 3) << mixed.err;
+      EXPECT_EQ(mixed.out.rfind(run == 0 ? "wrote: " : "up to date: "),
+                mixed.out.rfind('\n', mixed.out.size() - 2) + 1)
+          << mixed.out;
+    }
+  }
+  // Bad input stays 2, and nothing is written.
+  std::ofstream(dir / "bad.csv")
+      << "t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.01,1,0,0,0,1,nan,3\n";
+  const SplitResult bad = run_bookspin_split("flipcheck judge " + toml + " " +
+                                             quoted(dir / "bad.csv") + " -o " + quoted(dir / "d"));
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_FALSE(fs::exists(dir / "d"));
+  const SplitResult help = run_bookspin_split("flipcheck judge --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("Exit status: 0 every motion passes; 3 a motion fails"),
+            std::string::npos)
+      << help.out;
+}
+
+// Every file export writes is a scenario judge reads: the scenario JSON judges as its scene
+// file does (the judgement CSVs byte for byte), and --set, which changes a scene, is refused
+// for a JSON. A JSON that is not a scenario is one line, exit 2, nothing written.
+TEST(FlipcheckCommand, TheExportedScenarioJsonJudgesAsItsSceneFile) {
+  ScratchDir dir;
+  ASSERT_EQ(run_bookspin("flipcheck export " + scenario("book-intermediate-0.2") + " -o " +
+                         quoted(dir / "kit"))
+                .status,
+            0);
+  const fs::path exact = dir / "kit" / "book-intermediate-0.2-exact.csv";
+  write_turned_from(exact, 300, dir / "turned.csv");
+  const std::string motions = " " + quoted(exact) + " " + quoted(dir / "turned.csv");
+  const SplitResult by_toml =
+      run_bookspin_split("flipcheck judge " + scenario("book-intermediate-0.2") + motions + " -o " +
+                         quoted(dir / "toml"));
+  const SplitResult by_json =
+      run_bookspin_split("flipcheck judge " + quoted(dir / "kit" / "book-intermediate-0.2.json") +
+                         motions + " -o " + quoted(dir / "json"));
+  EXPECT_EQ(by_toml.status, 3) << by_toml.err;
+  EXPECT_EQ(by_json.status, 3) << by_json.err;
+  EXPECT_EQ(read_file(dir / "json" / "book-intermediate-0.2-judge.csv"),
+            read_file(dir / "toml" / "book-intermediate-0.2-judge.csv"));
+  const SplitResult set =
+      run_bookspin_split("flipcheck judge " + quoted(dir / "kit" / "book-intermediate-0.2.json") +
+                         motions + " --set time.dt=0.1 -o " + quoted(dir / "set"));
+  EXPECT_EQ(set.status, 2);
+  EXPECT_NE(set.err.find("--set changes a scene file (TOML), not a scenario JSON"),
+            std::string::npos)
+      << set.err;
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"null", "holds JSON null, not a scenario (a JSON object as flipcheck export writes it"},
+      {"[1, 2]", "holds an array, not a scenario"},
+      {"{\"scenario\": \"x\",", "not valid JSON: expected a key in double quotes, saw the end"},
+      {"{\"scenario\": \"x\", \"mass\": 1}", "x: principal_moments: missing"},
+  };
+  for (const auto& [text, said] : bad) {
+    SCOPED_TRACE(text);
+    std::ofstream(dir / "bad.json") << text;
+    const SplitResult r = run_bookspin_split("flipcheck judge " + quoted(dir / "bad.json") + " " +
+                                             quoted(exact) + " -o " + quoted(dir / "bad"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find(said), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "bad"));
+  }
+}
+
+// One command, one stop: a scenario given twice to export would stage its files twice; it is
+// refused, one line and exit 2, nothing written.
+TEST(FlipcheckCommand, AScenarioGivenTwiceToExportIsRefused) {
+  ScratchDir dir;
+  const SplitResult r =
+      run_bookspin_split("flipcheck export " + scenario("mujoco-test-box") + " " +
+                         scenario("mujoco-test-box") + " -o " + quoted(dir / "out"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err,
+            "bookspin: error: flipcheck export: two scenarios named mujoco-test-box (one given "
+            "twice, or two of one name): give each once\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+/// The stride the refusal of `message` names as safe ("write a row at least every F steps"),
+/// or 0.
+long long named_stride(const std::string& message) {
+  const std::string key = "write a row at least every ";
+  const std::size_t at = message.find(key);
+  return at == std::string::npos ? 0 : std::stoll(message.substr(at + key.size()));
+}
+
+// The round trip by relation over the whole kit: every scenario exported, then its exact motion
+// judged through its scene file and through the JSON export wrote, at every step and at a set
+// of strides the judge calls safe (the one it names for rows too far apart, one below it, 7, 8
+// and 133 where they are no larger, and the largest whose last multiple falls one step short of
+// the end and one step past it), each with and without the last step where the stride does not
+// divide steps: all pass (exit 0), in both doors alike. book-intermediate-0.002 every
+// 7th step failed "ends at step 74998 of 75000", and with the row of step 75000 added was
+// refused ("t = 150 is not step 75005"). Planted back (either rule), this fails.
+TEST(FlipcheckCommand, EveryExportedScenarioRoundTripsThroughJudgeAtEveryStrideItCallsSafe) {
+  ScratchDir dir;
+  std::vector<std::string> names;
+  std::string list;
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck"))
+    if (entry.path().extension() == ".toml") {
+      names.push_back(entry.path().stem().string());
+      list += " " + quoted(entry.path());
+    }
+  std::sort(names.begin(), names.end());
+  ASSERT_EQ(names.size(), 7u);
+  const CliResult exported = run_bookspin("flipcheck export" + list + " -o " + quoted(dir / "kit"));
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  int odd_strides = 0;
+  for (const std::string& name : names) {
+    SCOPED_TRACE(name);
+    const fs::path exact = dir / "kit" / (name + "-exact.csv");
+    const auto steps = static_cast<long long>(lines_of(exact).size()) - 2;
+    // Rows a third of the run apart: refused where the turn-overs need closer rows, naming a
+    // stride that shows them; a stable spin has none to miss (any stride).
+    const long long coarse = steps / 3 + 1;
+    write_thinned(exact, coarse, true, dir / "coarse.csv");
+    const SplitResult probe =
+        run_bookspin_split("flipcheck judge " + scenario(name) + " " + quoted(dir / "coarse.csv") +
+                           " -o " + quoted(dir / "probe") + " --force");
+    const long long safe = named_stride(probe.err);
+    EXPECT_TRUE(probe.status == 0 || (probe.status == 2 && safe >= 1)) << probe.err;
+    std::vector<long long> strides = {1};
+    const long long largest = safe > 0 ? safe : coarse;
+    std::vector<long long> candidates = {largest, largest - 1, 7, 8, 133};
+    // The edges of the last interval: the largest stride whose last multiple is one step short
+    // of the end (steps mod k = k − 1), and one step past (steps mod k = 1).
+    for (long long k = largest; k >= 2; --k)
+      if ((steps + 1) % k == 0) {
+        candidates.push_back(k);
+        break;
+      }
+    for (long long k = largest; k >= 2; --k)
+      if (steps % k == 1) {
+        candidates.push_back(k);
+        break;
+      }
+    for (const long long k : candidates)
+      if (k >= 1 && k <= largest && std::find(strides.begin(), strides.end(), k) == strides.end())
+        strides.push_back(k);
+    std::string motions;
+    for (const long long k : strides) {
+      odd_strides += steps % k != 0;
+      for (const bool with_last : {false, true}) {
+        if (!with_last && steps % k == 0) continue;  // the same rows
+        const fs::path file =
+            dir / (name + "-every" + std::to_string(k) + (with_last ? "-last" : "") + ".csv");
+        write_thinned(exact, k, with_last, file);
+        motions += " " + quoted(file);
+      }
+    }
+    const SplitResult by_toml = run_bookspin_split("flipcheck judge " + scenario(name) + motions +
+                                                   " -o " + quoted(dir / "toml") + " --force");
+    EXPECT_EQ(by_toml.status, 0) << by_toml.out << by_toml.err;
+    EXPECT_EQ(by_toml.out.find("FAIL"), std::string::npos) << by_toml.out;
+    const SplitResult by_json =
+        run_bookspin_split("flipcheck judge " + quoted(dir / "kit" / (name + ".json")) + motions +
+                           " -o " + quoted(dir / "json") + " --force");
+    EXPECT_EQ(by_json.status, 0) << by_json.out << by_json.err;
+    EXPECT_EQ(read_file(dir / "json" / (name + "-judge.csv")),
+              read_file(dir / "toml" / (name + "-judge.csv")));
+  }
+  EXPECT_GE(odd_strides, 7);  // every scenario met a stride that does not divide its steps
 }
 
 }  // namespace

@@ -182,6 +182,69 @@ TEST_F(RandomSignals, FlipcheckExportJudgeAndLeague) {
                                     league, rng, 1);
 }
 
+// The stop contract per command, not per scenario: an export of every scenario of the kit
+// stages them all and puts them in place only at its end, so a signal at any moment keeps every
+// earlier file byte for byte. The earlier files are made different first (each JSON, CSV and
+// manifest an "earlier" stand-in), so that a scenario finished before the signal and put in place
+// shows: each scenario once placed its own files as it finished (8 files replaced 0.25 s in,
+// 20 to 23 at 2 s). Planted back (a commit per scenario), this fails.
+TEST_F(RandomSignals, FlipcheckExportOfManyScenariosKeepsEveryEarlierFile) {
+  std::vector<std::string> run{"flipcheck", "export"};
+  std::vector<std::string> names;
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck"))
+    if (entry.path().extension() == ".toml") {
+      run.push_back(entry.path().string());
+      names.push_back(entry.path().stem().string());
+    }
+  ASSERT_EQ(names.size(), 7u);
+  run.insert(run.end(), {"-o", out.string(), "--force"});
+  const auto start = std::chrono::steady_clock::now();
+  const CliResult whole = run_bookspin(quoted_words(run));
+  const double took =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_EQ(whole.status, 0) << whole.output;
+  ASSERT_GT(took, 0.3) << "make the run longer";
+  std::vector<std::string> files;
+  for (const std::string& name : names)
+    for (const std::string& file :
+         {name + ".json", name + "-exact.csv", name + "/flipcheck-export-manifest.json"}) {
+      ASSERT_TRUE(fs::is_regular_file(out / file)) << file;
+      files.push_back(file);
+    }
+  const auto stand_ins = [&] {
+    for (const std::string& file : files) write_text(out / file, "earlier " + file + "\n");
+  };
+  stand_ins();
+  const auto before = snapshot(out);
+  // Each run signalled at a seeded moment of the whole run's time, without waiting for its
+  // outputs: either the stop came first (128 + signal, every earlier file as it was), or the run
+  // had asked its last stop and put everything in place (exit 0, every file new): never some.
+  std::uniform_real_distribution<double> moment(0.0, 0.9 * took);
+  int stopped = 0, runs = 0;
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    for (int round = 0; round < 3; ++round) {
+      const double delay = moment(rng);
+      SCOPED_TRACE(signal_name(signal) + " after " + std::to_string(delay) + " s of " +
+                   std::to_string(took));
+      const TimedRun r = signal_after(run, delay, signal);
+      ++runs;
+      EXPECT_EQ(temporaries(out), std::vector<std::string>{});
+      const auto now = snapshot(out);
+      if (r.status == 128 + signal) {
+        ++stopped;
+        EXPECT_EQ(now, before) << "an earlier file was replaced by a stopped export";
+        continue;
+      }
+      EXPECT_EQ(r.status, 0) << r.err;
+      for (const std::string& file : files)
+        EXPECT_NE(now.at(file), before.at(file)) << file << " not made by a whole export";
+      stand_ins();
+    }
+  }
+  EXPECT_GE(3 * stopped, 2 * runs) << "most runs ended before their signal";
+}
+
 TEST_F(RandomSignals, FitAndExplore) {
   fit::test::write_export(
       dir.path() / "toss",

@@ -86,10 +86,20 @@ TEST(MotionCsv, EachBadFileIsOneLineNamingItsLineAndColumn) {
   // A number as std::from_chars reads one (the parser is compiled where it has none for
   // doubles, the explorer page): a sign, a point, an exponent; not hex, not "inf", not a value
   // that reads as 0 or beyond the doubles.
-  for (const char* cell : {"0x1p3", "inf", "1e400", "1e-400", "+-1", "1e", "."})
+  for (const char* cell : {"0x1p3", "inf", "+-1", "1e", "."})
     EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1," + cell + ",3\n"),
               "run.csv:3: wy: \"" + std::string(cell) + "\" is not a finite number")
         << cell;
+  // A number finite as written but beyond the doubles is said to be so: it underflows (it
+  // was "not a finite number") or overflows.
+  for (const char* cell : {"1e-400", "-2.5e-999"})
+    EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1," + cell + ",3\n"),
+              "run.csv:3: wy: \"" + std::string(cell) +
+                  "\" is finite but below the smallest double (about 4.9e-324): it would read as "
+                  "0 (write 0 if that is meant)")
+        << cell;
+  EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,1e400,3\n"),
+            "run.csv:3: wy: \"1e400\" is finite but beyond the largest double (about 1.8e308)");
   for (const auto& [cell, value] : std::initializer_list<std::pair<const char*, double>>{
            {"+1.5", 1.5}, {"1.", 1.0}, {"-.5e-2", -0.005}, {"1E5", 1e5}, {"1e-310", 1e-310}}) {
     const MotionFile m =
@@ -162,6 +172,47 @@ TEST(MotionCsv, AColumnNamedTwiceIsRefusedNamingIt) {
   EXPECT_EQ(error_of("t,qw,qx,qy,qz,wx,wy,wz,qw\n0,1,0,0,0,1,2,3,0\n"),
             "run.csv:1: qw: the column qw appears twice in the header: which is meant?");
   EXPECT_EQ(error_of("t,qw,qx,qy,qz,wx,wy,wz,note,note\n0,1,0,0,0,1,2,3,a,b\n"), "");
+}
+
+// One quantity, one column: a header with both spellings of one (qw…qz and bookspin's q_w…q_z,
+// wx…wz and omega_x…omega_z) is refused naming both, in either order; it was judged from the
+// first group without a word, and swapping the groups turned a PASS into a FAIL.
+TEST(MotionCsv, TwoSpellingsOfOneQuantityAreRefusedNamingBoth) {
+  EXPECT_EQ(error_of("t,qw,qx,qy,qz,q_w,q_x,q_y,q_z,wx,wy,wz\n0,1,0,0,0,0,1,0,0,1,2,3\n"),
+            "run.csv:1: q_w: the header has both qw and q_w: two spellings of one quantity, "
+            "which is meant? (keep one)");
+  EXPECT_EQ(error_of("t,q_w,q_x,q_y,q_z,qw,qx,qy,qz,wx,wy,wz\n0,0,1,0,0,1,0,0,0,1,2,3\n"),
+            "run.csv:1: q_w: the header has both qw and q_w: two spellings of one quantity, "
+            "which is meant? (keep one)");
+  EXPECT_EQ(error_of("t,qw,qx,qy,qz,wx,wy,wz,omega_x,omega_y,omega_z\n0,1,0,0,0,1,2,3,1,2,3\n"),
+            "run.csv:1: omega_x: the header has both wx and omega_x: two spellings of one "
+            "quantity, which is meant? (keep one)");
+  // Body and world frame side by side are no two spellings: the body frame is read.
+  EXPECT_EQ(error_of("t,qw,qx,qy,qz,wx,wy,wz,wx_world,wy_world,wz_world\n0,1,0,0,0,1,2,3,1,2,3\n"),
+            "");
+}
+
+// Rows every k steps where k does not divide the scenario's steps (10 here): the last row is
+// the last multiple of k, or the scenario's last step after it; no other row may break the
+// stride (it was "t = 1 is not step 12").
+TEST(MotionCsv, TheLastStepMayFollowTheLastWholeStride) {
+  const std::string head = "t,qw,qx,qy,qz,wx,wy,wz\n";
+  const auto rows = [](std::initializer_list<const char*> times) {
+    std::string text;
+    for (const char* t : times) text += std::string(t) + ",1,0,0,0,1,2,3\n";
+    return text;
+  };
+  const MotionFile with_last =
+      parse_motion_csv(head + rows({"0", "0.3", "0.6", "0.9", "1"}), "run.csv", 0.1, 10);
+  EXPECT_EQ(with_last.stride, 3);
+  EXPECT_EQ(with_last.rows.back().step, 10);
+  EXPECT_EQ(error_of(head + rows({"0", "0.3", "0.6", "0.9"})), "");
+  EXPECT_EQ(error_of(head + rows({"0", "0.3", "0.6", "1"})),
+            "run.csv:5: t: t = 1 is not step 9 (rows every 3 steps from t = 0)");
+  EXPECT_EQ(error_of(head + rows({"0", "0.3", "0.6", "0.8"})),
+            "run.csv:5: t: t = 0.8 is not step 9 (rows every 3 steps from t = 0)");
+  EXPECT_EQ(error_of(head + rows({"0", "0.3", "0.6", "0.9", "1", "1"})),
+            "run.csv:7: t: t = 1 is not step 15 (rows every 3 steps from t = 0)");
 }
 
 TEST(MotionCsv, AFileThatIsNotThereIsAnInputError) {

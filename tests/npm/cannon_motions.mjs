@@ -41,4 +41,8 @@ const tryIt = (f) => { try { f(); return null; } catch (e) { return e instanceof
 result.errors.nan = tryIt(() => judgeCsv("mujoco-test-box", "t,qw,qx,qy,qz,wx,wy,wz\n0,1,0,0,0,1,2,3\n0.01,1,0,0,0,nan,2,3\n", { file: "nan.csv" }));
 result.errors.shape = tryIt(() => judge("mujoco-test-box", { t: [0], q: [1, 0, 0, 0], omegaWorld: [1, 2] }));
 result.errors.scenario = tryIt(() => scenario("no-such-scenario"));
+// q as a BigInt64Array, and a scenario that is JSON null: each named (they were "Cannot convert
+// a BigInt value to a number" and 'no scenario "null"').
+result.errors.bigint = tryIt(() => judge("mujoco-test-box", { t: [0], q: new BigInt64Array([1n, 0n, 0n, 0n]), omegaWorld: [1, 2, 3] }));
+result.errors.nullScenario = tryIt(() => judge(null, { t: [0], q: [1, 0, 0, 0], omegaWorld: [1, 2, 3] }));
 writeFileSync(`${out}/judgements.json`, JSON.stringify(result));

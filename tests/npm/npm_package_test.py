@@ -51,6 +51,8 @@ def fail(message):
 
 
 def run(args, env=None, cwd=None, expect=0):
+    """Runs args; fail() unless it exits `expect` (3: judge's FAIL, docs/flipcheck.md "In a CI
+    job"; 2: bad input)."""
     done = subprocess.run([str(a) for a in args], env=env, cwd=cwd, capture_output=True,
                           text=True, timeout=600)
     if done.returncode != expect:
@@ -182,6 +184,99 @@ def fuzz_scenarios(npx, env, project, tmp, source):
     odd.unlink()
 
 
+def turned_from(csv_text, step):
+    """The exact motion's CSV with every row from `step` on turned (qx negated): a broken
+    engine."""
+    lines = csv_text.splitlines()
+    qx = lines[0].split(",").index("qx")
+    for i in range(1 + step, len(lines)):
+        cells = lines[i].split(",")
+        cells[qx] = cells[qx][1:] if cells[qx].startswith("-") else "-" + cells[qx]
+        lines[i] = ",".join(cells)
+    return "\n".join(lines) + "\n"
+
+
+def ci_example(npx, env, project, tmp, bookspin, source):
+    """docs/flipcheck.md, "In a CI job": examples/flipcheck-ci/'s shell step and node test run
+    as an engine's CI runs them, on the exact motion (pass: exit 0) and on it turned from step
+    100 on (fail: the step exits 3, node --test 1, each with the judge's FAIL line); the command
+    line's judge exits 3 on it too."""
+    name = "book-intermediate-0.05"
+    kit = tmp / "ci-kit"
+    run([bookspin, "flipcheck", "export", source / "scenes" / "flipcheck" / f"{name}.toml", "-o", kit])
+    exact = kit / f"{name}-exact.csv"
+    broken = tmp / "broken.csv"
+    broken.write_text(turned_from(exact.read_text(), 100))
+    for file in sorted((source / "examples" / "flipcheck-ci").iterdir()):
+        shutil.copy(file, project / file.name)
+    # npx --no-install finds the package in the project's node_modules/.bin.
+    path_env = dict(env, PATH=f"{project / 'node_modules' / '.bin'}:{env['PATH']}")
+    for motion, status, node_status in ((exact, 0, 0), (broken, 3, 1)):
+        step = run(["sh", "ci-step.sh", motion], path_env, cwd=project, expect=status)
+        if status and f"{name} {motion}: FAIL (" not in step.stdout:
+            fail(f"ci-step.sh on a broken motion printed {step.stdout!r}")
+        if not status and "passes" not in step.stdout:
+            fail(f"ci-step.sh on the exact motion printed {step.stdout!r}")
+        tested = run(["node", "--test", "motion.test.mjs"], dict(env, MOTION=str(motion)),
+                     cwd=project, expect=node_status)
+        if status and f"{name} broken.csv: FAIL (" not in tested.stdout:
+            fail(f"motion.test.mjs on a broken motion printed {tested.stdout!r}")
+        run([bookspin, "flipcheck", "judge", kit / f"{name}.json", motion, "-o", tmp / "ci-cli"],
+            expect=status)
+    print("examples/flipcheck-ci: the shell step and the node test pass the exact motion and "
+          "fail a broken one (exit 3, node --test 1)")
+
+
+def round_trips(npx, env, project, tmp, bookspin, source):
+    """Every file `bookspin flipcheck export` writes judged by npx: each scenario's JSON with its
+    exact motion at every step, and every k-th step with and without the last, k = 7 (which
+    divides no scenario's steps) or, where rows 7 steps apart are refused as too far apart, the
+    stride the refusal names as safe: all pass, exit 0."""
+    kit = tmp / "trip-kit"
+    run([bookspin, "flipcheck", "export", *sorted((source / "scenes" / "flipcheck").glob("*.toml")),
+         "-o", kit])
+    for spec in sorted(kit.glob("*.json")):
+        name = spec.stem
+        lines = (kit / f"{name}-exact.csv").read_text().splitlines()
+
+        def thinned(k):
+            every = [lines[0]] + lines[1::k]
+            (tmp / f"{name}-every.csv").write_text("\n".join(every) + "\n")
+            last = every + ([lines[-1]] if (len(lines) - 2) % k else [])
+            (tmp / f"{name}-every-last.csv").write_text("\n".join(last) + "\n")
+            return subprocess.run([str(a) for a in npx + [
+                "judge", spec, kit / f"{name}-exact.csv", tmp / f"{name}-every.csv",
+                tmp / f"{name}-every-last.csv", "-o", tmp / "trip"]], env=env, cwd=project,
+                capture_output=True, text=True, timeout=600)
+
+        done = thinned(7)
+        named = re.search(r"write a row at least every (\d+) steps", done.stderr)
+        if done.returncode == 2 and named:
+            done = thinned(int(named.group(1)))
+        if done.returncode != 0 or done.stdout.count(": PASS: ") != 3:
+            fail(f"{name}: npx judge of the exported files exited {done.returncode}:\n"
+                 f"{done.stdout}{done.stderr}")
+    print("npx flipcheck judge takes every exported JSON and passes its exact motion at every "
+          "step and every 7th, with and without the last")
+
+
+def export_checks_every_scenario_first(npx, env, project, tmp):
+    """npx flipcheck export of a good scenario and a bad one writes nothing (it wrote the good
+    one, then refused the bad one): the earlier files keep their bytes."""
+    out = tmp / "staged"
+    out.mkdir()
+    earlier = {"mujoco-test-box.json": "earlier json\n", "mujoco-test-box-exact.csv": "earlier csv\n"}
+    for name, text in earlier.items():
+        (out / name).write_text(text)
+    bad = tmp / "bad-scenario.json"
+    bad.write_text(json.dumps({"scenario": "bad", "mass": -1}))
+    run(npx + ["export", "mujoco-test-box", bad, "-o", out], env, cwd=project, expect=2)
+    now = {p.name: p.read_text() for p in out.iterdir()}
+    if now != earlier:
+        fail(f"npx flipcheck export of a good and a bad scenario changed {sorted(now)}")
+    print("npx flipcheck export checks every scenario before it writes any")
+
+
 def main(bookspin, source, build):
     for program in ("em++", "node", "npm"):
         if shutil.which(program) is None:
@@ -258,7 +353,7 @@ def main(bookspin, source, build):
             judged = result["judged"][name]
             file = motions / judged["file"]
             scene = source / "scenes" / "flipcheck" / f"{name}.toml"
-            cli = run([bookspin, "flipcheck", "judge", scene, file, "-o", tmp / "cli"])
+            cli = run([bookspin, "flipcheck", "judge", scene, file, "-o", tmp / "cli"], expect=3)
             row = read_csv((tmp / "cli" / f"{name}-judge.csv").read_text())[0]
             same_row(row, judged["arrays"], f"{name}: judge()")
             same_row(row, judged["csv"], f"{name}: judgeCsv()")
@@ -272,7 +367,7 @@ def main(bookspin, source, build):
                      f"{hashlib.sha256(carried.read_bytes()).hexdigest()}")
             if judged["arrays"]["pass"] != (row["verdict"] == "pass"):
                 fail(f"{name}: pass is {judged['arrays']['pass']}, the verdict {row['verdict']}")
-            ours = run(npx + ["judge", name, file, "-o", tmp / "npx"], env, cwd=project)
+            ours = run(npx + ["judge", name, file, "-o", tmp / "npx"], env, cwd=project, expect=3)
             want = cli.stdout.replace(str(tmp / "cli"), str(tmp / "npx"))
             if len(ours.stdout.splitlines()) != len(want.splitlines()) or not all(
                     same_line(a, b) for a, b in zip(ours.stdout.splitlines(), want.splitlines())):
@@ -297,8 +392,11 @@ def main(bookspin, source, build):
             if len(files) < 11:
                 fail(f"{name}: the league's runner wrote {len(files)} motions, expected 11")
             scene = source / "scenes" / "flipcheck" / f"{name}.toml"
-            cli = run([bookspin, "flipcheck", "judge", scene, *files, "-o", tmp / "league-cli"])
-            ours = run(npx + ["judge", name, *files, "-o", tmp / "league-npx"], env, cwd=project)
+            # cannon-es among them fails: exit 3 in both doors.
+            cli = run([bookspin, "flipcheck", "judge", scene, *files, "-o", tmp / "league-cli"],
+                      expect=3)
+            ours = run(npx + ["judge", name, *files, "-o", tmp / "league-npx"], env, cwd=project,
+                       expect=3)
             want = cli.stdout.replace(str(tmp / "league-cli"), str(tmp / "league-npx"))
             if len(ours.stdout.splitlines()) != len(want.splitlines()) or not all(
                     same_line(a, b) for a, b in zip(ours.stdout.splitlines(), want.splitlines())):
@@ -359,7 +457,21 @@ def main(bookspin, source, build):
         if "no scenario \"no-such-scenario\"" not in (result["errors"]["scenario"] or ""):
             fail(f"scenario() of an unknown name threw {result['errors']['scenario']!r}")
         run(npx + ["judge", "no-such-scenario", bad], env, cwd=project, expect=2)
+        for key, said in (("bigint", "q: holds BigInts (BigInt64Array): expected numbers"),
+                          ("nullScenario", "flipcheck: a scenario is a name or a scenario JSON "
+                                           "object, got null")):
+            if not (result["errors"][key] or "").startswith(said):
+                fail(f"{key}: threw {result['errors'][key]!r}, expected {said!r}…")
+        (motions / "null.json").write_text("null\n")
+        said = error_line(run(npx + ["judge", motions / "null.json", bad], env, cwd=project,
+                              expect=2).stderr, "flipcheck: error: ")
+        if not said.startswith(f"{motions / 'null.json'}: holds JSON null, not a scenario"):
+            fail(f"a scenario file of JSON null: npx said {said!r}")
         print("bad input: the command line's one line, exit 2")
+
+        ci_example(npx, env, project, tmp, bookspin, source)
+        round_trips(npx, env, project, tmp, bookspin, source)
+        export_checks_every_scenario_first(npx, env, project, tmp)
 
         # A scenario JSON fuzzer (docs/flipcheck.md, "What a scenario may be"): the carried box
         # scenario with a field missing, mistyped, out of range or hostile, through npx export

@@ -10,6 +10,7 @@ import pathlib
 import re
 import shutil
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -104,9 +105,11 @@ def integrate(start, step, stride=1):
 
 def cli_judgement(tmp_path, scenario, t, q, omega_world, file="motion.csv"):
     write_motion_csv(tmp_path / file, t, q, omega_world)
-    run_cli("flipcheck", "judge", SCENARIO_DIR / f"{scenario}.toml", tmp_path / file, "-o",
-            tmp_path / "out", "--force")
-    return {k: v[0] for k, v in read_csv(tmp_path / "out" / f"{scenario}-judge.csv").items()}
+    out, _ = run_cli("flipcheck", "judge", SCENARIO_DIR / f"{scenario}.toml", tmp_path / file,
+                     "-o", tmp_path / "out", "--force", expect=(0, 3))
+    row = {k: v[0] for k, v in read_csv(tmp_path / "out" / f"{scenario}-judge.csv").items()}
+    assert (": FAIL (" in out) == (row["verdict"] == "fail")
+    return row
 
 
 def assert_same_judgement(got, cli):
@@ -188,7 +191,7 @@ def test_assert_passes_raises_the_command_lines_line(bookspin, tmp_path):
     t, q, w = integrate(start, euler_step)
     write_motion_csv(tmp_path / "euler.csv", t, q, w)
     out, _ = run_cli("flipcheck", "judge", SCENARIO_DIR / f"{name}.toml", tmp_path / "euler.csv",
-                     "-o", tmp_path / "out")
+                     "-o", tmp_path / "out", expect=3)
     line = next(l for l in out.splitlines() if "FAIL" in l)
     with pytest.raises(AssertionError) as raised:
         bookspin.flipcheck.assert_passes(name, t, q, w, motion="euler")
@@ -261,7 +264,7 @@ def test_judge_equals_the_command_line_on_the_engines_motions(bookspin, tmp_path
     for motion in motions:
         name = next(n for n in SCENARIOS if motion.name.startswith(n + "-"))
         run_cli("flipcheck", "judge", SCENARIO_DIR / f"{name}.toml", motion, "-o",
-                tmp_path / "out", "--force")
+                tmp_path / "out", "--force", expect=(0, 3))
         cli = {k: v[0] for k, v in read_csv(tmp_path / "out" / f"{name}-judge.csv").items()}
         columns = read_csv(motion)
         t = numbers(columns["t"])
@@ -289,8 +292,9 @@ def test_the_whole_motion_is_judged_and_coarse_rows_are_refused(bookspin):
     assert judged["L_direction_error"] == pytest.approx(math.pi / 2, abs=1e-6)
     with pytest.raises(AssertionError) as raised:
         bookspin.flipcheck.assert_passes(name, t, q, w)
-    assert re.search(r"orientation error 1.57 rad at step \d+ \(limit 0.1\)", str(raised.value))
-    assert "(limit 0.01)" in str(raised.value)
+    assert re.search(r"orientation error 1.57 rad at step \d+ \(limit 0.1; past it from step 1\)",
+                     str(raised.value))
+    assert "(limit 0.01; past it from step 1)" in str(raised.value)
     t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
     with pytest.raises(bookspin.Error, match="rows every 1000 steps .* too far apart"):
         bookspin.flipcheck.judge(name, t[::1000], q[::1000], w[::1000])
@@ -414,3 +418,66 @@ def test_a_seeded_property_of_the_judge_at_the_python_door(bookspin, tmp_path):
             except bookspin.Error:
                 pass  # refused with its reason: never a pass
     assert flipping >= 2  # not an empty claim: some of the scenarios turn over
+
+
+def turned_from(csv_text, step):
+    """The exact motion's CSV with every row from `step` on turned (qx negated): a broken engine
+    whose motion leaves the exact one there."""
+    lines = csv_text.splitlines()
+    header = lines[0].split(",")
+    qx = header.index("qx")
+    for i in range(1 + step, len(lines)):
+        cells = lines[i].split(",")
+        cells[qx] = cells[qx][1:] if cells[qx].startswith("-") else "-" + cells[qx]
+        lines[i] = ",".join(cells)
+    return "\n".join(lines) + "\n"
+
+
+def test_the_ci_example_passes_the_exact_motion_and_fails_a_broken_one(bookspin, tmp_path):
+    """docs/flipcheck.md, "In a CI job": examples/flipcheck-ci/test_motion.py run by pytest as
+    an engine's CI runs it, on the exported exact motion (passes) and on it turned from step 100
+    on (fails, pytest's exit status 1, the judge's FAIL line in its report)."""
+    name = "book-intermediate-0.05"
+    run_cli("flipcheck", "export", SCENARIO_DIR / f"{name}.toml", "-o", tmp_path / "kit")
+    exact = tmp_path / "kit" / f"{name}-exact.csv"
+    broken = tmp_path / "broken.csv"
+    broken.write_text(turned_from(exact.read_text(), 100))
+    project = tmp_path / "project"
+    shutil.copytree(SOURCE_DIR / "examples" / "flipcheck-ci", project)
+    for motion, status in ((exact, 0), (broken, 1)):
+        done = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
+                               "test_motion.py"], cwd=project, capture_output=True, text=True,
+                              env={**os.environ, "MOTION": str(motion), "PYTHONPATH":
+                                   str(pathlib.Path(bookspin.__file__).resolve().parent)},
+                              timeout=300)
+        assert done.returncode == status, done.stdout + done.stderr
+        if status:
+            assert f"AssertionError: {name} broken.csv: FAIL (" in done.stdout, done.stdout
+
+
+def test_judge_reads_the_scenario_json_export_wrote(bookspin, tmp_path):
+    """A scenario JSON as `export` wrote it is a scenario judge takes, as the command line and
+    npm do: the same judgement as by name; JSON null in it is said so."""
+    name = "mujoco-test-box"
+    run_cli("flipcheck", "export", SCENARIO_DIR / f"{name}.toml", "-o", tmp_path)
+    _, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
+    by_json = bookspin.flipcheck.judge(str(tmp_path / f"{name}.json"), t, q, w)
+    assert by_json == bookspin.flipcheck.judge(name, t, q, w)
+    assert by_json["verdict"] == "pass"
+    (tmp_path / "null.json").write_text("null\n")
+    with pytest.raises(bookspin.Error, match=r"null.json: holds JSON null, not a scenario"):
+        bookspin.flipcheck.judge(str(tmp_path / "null.json"), t, q, w)
+
+
+def test_a_ragged_list_is_named(bookspin):
+    """q given as a list whose rows differ in length: named, with the shape expected (it was
+    numpy's ValueError, naming no argument)."""
+    name = "mujoco-test-box"
+    _, arrays = bookspin.flipcheck.export(name)
+    t, w = arrays["t"][:3], arrays["omega_world"][:3]
+    ragged = [[1.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]]
+    with pytest.raises(bookspin.Error) as raised:
+        bookspin.flipcheck.judge(name, t, ragged, w)
+    assert str(raised.value) == ("q: its rows are of different lengths (a ragged list): expected "
+                                 "shape (3, 4), N = len(t) rows of 4 numbers each")
