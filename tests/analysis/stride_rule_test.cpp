@@ -153,8 +153,9 @@ TEST(StrideRule,
     const double first = first_zero(exact, mid);
     EXPECT_TRUE(shows_turn_overs(s, exact, mid, named, first, tolerance)) << refusal;
     const long long coarsest = static_cast<long long>(std::floor(tolerance / s.dt));
-    if (shows_turn_overs(s, exact, mid, coarsest, first, tolerance))
+    if (shows_turn_overs(s, exact, mid, coarsest, first, tolerance)) {
       EXPECT_EQ(named, coarsest) << refusal;
+    }
     for (long long stride = named; stride >= 1; stride -= std::max<long long>(1, named / 12)) {
       EXPECT_TRUE(judged(s, stride)) << name << ", rows every " << stride << " steps";
       if (s.steps % stride == 0) {
