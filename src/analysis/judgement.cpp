@@ -150,10 +150,13 @@ bool shows_turn_overs(const SampledExact& seen, int flips_exact,
 }
 
 /// InputError for rows too far apart to show the turn-overs, naming a stride that shows them.
-[[noreturn]] void refuse_sampling(const physics::ExactRotation& exact, int mid, double dt,
-                                  long long stride, long long last_step, int flips_exact,
-                                  const SampledExact& seen,
-                                  const std::optional<double>& first_exact, double tolerance) {
+/// Not inlined (a cold path): inlined into judge_motion, GCC 12 took the payload of an empty
+/// std::optional passed to it for possibly uninitialized (-Wmaybe-uninitialized).
+[[noreturn, gnu::noinline]] void refuse_sampling(const physics::ExactRotation& exact, int mid,
+                                                 double dt, long long stride, long long last_step,
+                                                 int flips_exact, const SampledExact& seen,
+                                                 const std::optional<double>& first_exact,
+                                                 double tolerance) {
   // A stride named safe for any smaller one too: at most `tolerance` (1 % of T/2) apart, so
   // that the first turn-over, bracketed by two rows, is placed within it; halved until the
   // exact motion at it shows every turn-over.

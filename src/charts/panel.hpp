@@ -12,6 +12,7 @@
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 #include "overlay/plot.hpp"
+#include "overlay/sheet.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::charts {
@@ -77,24 +78,9 @@ bool clip_to_range_before(std::vector<overlay::PlotSpec>& plots,
 /// std::nullopt.
 std::optional<double> blow_up_time(const DiagnosticsHistory& history);
 
-/// `header` as a sheet `width` pixels wide draws it: the first line (the bold title, at `font`)
-/// whole where it fits in width − 2·font, else as many of its words as fit, the rest leading
-/// the next line; each line after it broken at spaces where it would run past width − 2·font
-/// (drawn at 0.8·font from x = font): a list ("a · b · c") between its items, the dot kept at
-/// the line's end, other text between words; an item or word longer than that on a line of
-/// its own.
-std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::string>& header,
-                                           double font, double width);
-
-/// Draws a sheet's `header` lines on `cr` from its top, the first bold at `font` pixels, the
-/// others regular at 0.8·font, 1.35 line heights apart; returns the last line's baseline (y,
-/// pixels).
-double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font);
-
-/// A white width×height image: `header` lines on top (the first bold), the plots below in
-/// `columns` columns (1: stacked), row by row, each row an equal share of the height left.
-RgbaImage plot_sheet(const std::vector<std::string>& header,
-                     const std::vector<overlay::PlotSpec>& plots, int width, int height,
-                     int columns = 1);
+// A sheet's header and a sheet of plots are drawn by the overlay stage (overlay/sheet.hpp).
+using overlay::draw_sheet_header;
+using overlay::plot_sheet;
+using overlay::wrap_sheet_header;
 
 }  // namespace bookspin::charts

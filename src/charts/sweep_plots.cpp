@@ -9,7 +9,7 @@
 
 #include "charts/heat_map.hpp"
 #include "charts/panel.hpp"
-#include "scene/key_label.hpp"
+#include "overlay/sheet.hpp"
 
 namespace bookspin::charts {
 
@@ -71,20 +71,11 @@ std::vector<std::string> sheet_header(const SweepChart& chart) {
                     first_reason);
   for (const SweepAxis& a : chart.axes) {
     std::snprintf(text, sizeof text, "varied: %s, from %.6g to %.6g, %d values%s",
-                  scene::key_caption(a.key).c_str(), a.start, a.stop,
-                  static_cast<int>(a.values.size()), a.log ? " (log spaced)" : "");
+                  a.caption.c_str(), a.start, a.stop, static_cast<int>(a.values.size()),
+                  a.log ? " (log spaced)" : "");
     lines.emplace_back(text);
   }
   return lines;
-}
-
-/// A two-key sweep's picture under `header`: one heat map per measure, first key on x
-/// (heat_map.hpp).
-RgbaImage heat_map_picture(const SweepChart& chart, const std::vector<std::string>& header) {
-  const auto maps =
-      sweep_heat_maps(chart.header, chart.rows, chart.axes[0].values, chart.axes[0].log,
-                      chart.axes[1].values, chart.axes[1].log, chart.measures);
-  return heat_map_sheet(header, maps, kSheetWidth, sheet_height(maps.size(), kMapHeightPerRow));
 }
 
 }  // namespace
@@ -104,7 +95,7 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart) {
       char value[40];
       std::snprintf(value, sizeof value, "%.6g", number(cell_text));
       if (k > 1) name += ", ";
-      name += scene::key_words(chart.header[k]).words + " = " + value;
+      name += chart.axes[k].words + " = " + value;
     }
     const auto [it, added] = group_of.emplace(key, groups.size());
     if (added) {
@@ -124,7 +115,7 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart) {
     // The measure in words (its axis label, unit and all), its CSV column second.
     // (The legend tells the measured line, solid, from the exact one, dashed.)
     spec.title = std::string(chart.measures[m]->axis_label) + " \u00b7 " + column;
-    spec.x_label = scene::key_caption(chart.header[0]) + (chart.axes[0].log ? " (log scale)" : "");
+    spec.x_label = chart.axes[0].caption + (chart.axes[0].log ? " (log scale)" : "");
     spec.y_label = std::string(chart.measures[m]->axis_label);
     spec.log_x = chart.axes[0].log;
     spec.log_y = chart.measures[m]->log_scale;
@@ -159,11 +150,22 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart) {
 }
 
 RgbaImage sweep_sheet(const SweepChart& chart) {
-  const std::vector<std::string> header = sheet_header(chart);
-  if (chart.axes.size() == 2) return heat_map_picture(chart, header);
-  const auto plots = sweep_plots(chart);
-  return plot_sheet(header, plots, kSheetWidth, sheet_height(plots.size(), kPlotRowHeight),
-                    plots.size() > 1 ? 2 : 1);
+  // The sheet's description (its size from the measures, a plot or a map each), drawn by the
+  // overlay stage in one call: for two keys one heat map per measure, the first key on x.
+  const std::size_t pictures = chart.measures.size();
+  const bool maps = chart.axes.size() == 2;
+  overlay::SheetSpec sheet;
+  sheet.width = kSheetWidth;
+  sheet.height = sheet_height(pictures, maps ? kMapHeightPerRow : kPlotRowHeight);
+  sheet.columns = pictures > 1 ? 2 : 1;
+  sheet.header = sheet_header(chart);
+  if (maps)
+    sheet.maps = captioned_heat_maps(chart.axes[0].caption, chart.axes[1].caption, chart.rows,
+                                     chart.axes[0].values, chart.axes[0].log, chart.axes[1].values,
+                                     chart.axes[1].log, chart.measures);
+  else
+    sheet.plots = sweep_plots(chart);
+  return overlay::draw_sheet(sheet);
 }
 
 }  // namespace bookspin::charts

@@ -18,6 +18,10 @@ struct SweepAxis {
   double stop = 0.0;           ///< ditto
   bool log = false;            ///< log spaced: a log axis
   std::vector<double> values;  ///< the grid's values on this key, in order (COUNT of them)
+  /// The key in words with its unit, then its column (scene::key_caption), and its words alone
+  /// (scene::key_words): the chart's text, made where the chart is (jobs::sweep_chart), so that
+  /// its picture is drawn from the chart alone.
+  std::string caption, words;
 };
 
 /// A sweep's table as its picture reads it: the varied keys in columns 0 … axes.size() − 1,
@@ -38,7 +42,7 @@ std::vector<overlay::PlotSpec> sweep_plots(const SweepChart& chart);
 
 /// The sweep's picture, 1280 pixels wide and at most 640 tall (whole on a 1366×768 screen): a
 /// header (the sweep and its runs, then one line per range), then for two keys the heat maps
-/// (charts::heat_map_sheet, two a row, a row at most 560 pixels tall), else sweep_plots (two a
+/// (overlay::heat_map_sheet, two a row, a row at most 560 pixels tall), else sweep_plots (two a
 /// row, one alone full width, a row at most 300 pixels tall); the rows share what is left
 /// under the 120 pixels of the header. Throws std::invalid_argument for a two-key row whose
 /// values are not on the grid.

@@ -338,7 +338,7 @@ GyroRecording samples_recording(const std::string& name, std::vector<double> t,
     throw InputError(where + std::to_string(t.size()) + " times and " +
                      std::to_string(omega.size()) + " samples of omega");
   for (std::size_t i = 0; i < t.size(); ++i) {
-    const std::string index = "[" + std::to_string(i) + "]";
+    const std::string index = std::string(1, '[').append(std::to_string(i)).append(1, ']');
     if (!std::isfinite(t[i])) throw InputError(where + "t" + index + ": not a finite number");
     if (!omega[i].allFinite()) throw InputError(where + "omega" + index + ": not a finite number");
     if (i > 0 && !(t[i] > t[i - 1]))

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "common/errors.hpp"
+#include "scene/key_label.hpp"
 
 namespace bookspin::jobs {
 
@@ -15,7 +16,8 @@ charts::SweepChart sweep_chart(const SweepTable& table) {
   charts::SweepChart chart{table.scene_name, table.scene_title, {},
                            table.measures,   table.header,      {}};
   for (const VaryRange& r : table.ranges)
-    chart.axes.push_back({r.key, r.start, r.stop, r.log, r.values()});
+    chart.axes.push_back({r.key, r.start, r.stop, r.log, r.values(), scene::key_caption(r.key),
+                          scene::key_words(r.key).words});
   for (const auto& row : table.rows) chart.rows.push_back(row.second);
   return chart;
 }

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
 #include <cmath>
@@ -90,13 +90,14 @@ ExactRotation::ExactRotation(const Eigen::Vector3d& moments, const Eigen::Vector
   if (case_ != ExactCase::steady) {
     set_phase(w);
     set_landen_chain();
+    set_quarter_phase(w);
     if (parts_ == ExactParts::omega_and_orientation) set_precession();
     // W from the momentum frame of ω(0) as state() evaluates it (jacobi at u0), not of ω0 as
     // given: where L lies within ~1e-7 of the reference axis, the frame's axis L × e_r is set by
     // components of L a few orders above ω's rounding, and ω0's frame against the evaluated one
     // turned R(0) 9e-6 rad off the identity (docs/physics.md §8, "How far in time").
-    anchor_ =
-        (momentum_frame(scaled_momentum(sorted_omega_long(jacobi(u0_)))) * to_sorted_).transpose();
+    anchor_ = (momentum_frame(scaled_momentum(sorted_omega_long(jacobi_at(0.0)))) * to_sorted_)
+                  .transpose();
   }
   set_horizon();
 }
@@ -149,11 +150,14 @@ void ExactRotation::set_amplitudes(long double d1, long double d2, long double d
                   std::sqrt(d1 / (I3 * (I3 - I1)))};
   }
   // k² rounds to 1 only within ~1e-19 of the separatrix; treat that as on it (cn = dn there,
-  // so either case's form holds).
+  // so either case's form holds) for sn and cn, but keep k'² in dn² = k'² + k² cn²: dropped, it
+  // dropped the dn axis' a·k', which moments far apart make a fair share of ω0 (moments 6.5e-25,
+  // 2.6e11, 1.4e16: ω(0)'s z came out 4e-32 for −3.2e-11; docs/physics.md §8, "The phase by
+  // quarter periods").
   if (case_ == ExactCase::separatrix || k2 >= 1.0L || kc2_ <= 0.0L) {
     case_ = ExactCase::separatrix;
     k_ = 1.0L;
-    kc2_ = 0.0L;
+    kc2_ = std::max(kc2_, 0.0L);
   } else {
     k_ = std::sqrt(k2);
   }
@@ -196,22 +200,26 @@ void ExactRotation::set_phase(const Eigen::Vector3d& w) {
     // give sn0/−0 = ∓∞ and ω(0) the wrong sign on axis 2.
     u0_ = std::asinh(sn0 / std::abs(cn0));
     K_ = std::numeric_limits<Real>::infinity();
-  } else {
-    u0_ = boost::math::ellint_1(k_, std::atan2(sn0, cn0));  // u0 = F(am u0 | k)
-    K_ = boost::math::ellint_1(k_);
   }
+  // Off it u0 and K follow the Landen chain (set_landen_chain, set_quarter_phase).
 }
 
 // The descending Landen transformation (DLMF 22.7(i)): with k_{n+1} = (1 − k'_n)/(1 + k'_n)
 // = k_n²/(1 + k'_n)² and k'_{n+1} = 2√k'_n/(1 + k'_n), both free of cancellation, the moduli
 // fall quadratically (six levels from k' = 1e-9). k'_0 is Boost's, √(2(1 − k) − (1 − k)²) of
-// the stored k, so that K, F and the precession's R_J, all Boost's, see the same modulus.
+// the stored k, so that the precession's R_J (Boost's) sees the same modulus. K is the chain's,
+// (π/2)(1 + k_N²/4)/∏(1 + k_n) (DLMF 19.8.12): Boost's ellint_1(k) forms 1 − k², which cancels
+// near the separatrix (1e-14 of K off for the book's jiggled x spin, k' = 2e-3), and the phase by
+// quarter periods (set_quarter_phase) counts in the K of the sn, cn, dn it evaluates.
 void ExactRotation::set_landen_chain() {
-  period_ = 4.0L * K_;
   landen_ = LandenChain{};
+  landen_.quarter = std::numbers::pi_v<Real> / 2;
+  if (case_ != ExactCase::separatrix) K_ = landen_.quarter;
+  period_ = 4.0L * K_;
   if (k_ == 0.0L || k_ >= 1.0L) return;
   const Real kc = 1 - k_;
   Real k = k_, kp = k_ < 0.5L ? Real(std::sqrt(1 - k_ * k_)) : Real(std::sqrt(2 * kc - kc * kc));
+  landen_.kc = kp;
   while (k >= 1e-5L && landen_.levels < LandenChain::kMaxLevels) {
     const Real next = k * k / ((1 + kp) * (1 + kp));
     landen_.k[landen_.levels] = next;
@@ -222,6 +230,73 @@ void ExactRotation::set_landen_chain() {
     ++landen_.levels;
   }
   landen_.m_last = k * k;
+  landen_.quarter = std::numbers::pi_v<Real> / 2 * (1 + landen_.m_last / 4) / landen_.scale;
+  K_ = landen_.quarter;
+  period_ = 4.0L * K_;
+}
+
+// u0 as a whole number q of quarter periods K plus an offset δ0 of at most about K/2, each kept
+// on its own (docs/physics.md §8, "The phase by quarter periods"). ω0 may lie a hair from a zero
+// of cn or sn whose amplitude is many orders above ω0 (moments 1e-50, 1, 1e50: cn(u0) = 1e-24),
+// and u0 = F(φ | k) ≈ K − 1e-24 as one long double keeps no digit of that hair: ω(0) came out
+// −25083 where ω0 is 1. The offset keeps it to its own relative precision, and sn, cn, dn of
+// qK + δ follow from those of δ by the quarter-period shifts (DLMF 22.4(iii)):
+//   sn(K + δ) = cn δ/dn δ,   cn(K + δ) = −k' sn δ/dn δ,   dn(K + δ) = k'/dn δ,
+// sn(2K + δ) = −sn δ, cn(2K + δ) = −cn δ. With (s, c) = (sn u0, cn u0) from ω0, tan am δ is s/c
+// for q = 0 (c > 0) or q = 2 (c < 0), and −c/(k' s) for q = ±1 (the sign of s); the smaller of
+// the two (k' s² < c² picks the first) keeps |tan am δ| ≤ 1/√k', so δ ≤ about K/2. Then, with
+// τ = tan am δ, F(atan τ | k) = τ R_F(1, 1 + k'²τ², 1 + τ²) (DLMF 19.25.5, R_F homogeneous of
+// degree −1/2): positive terms, no cancellation near the separatrix, and k' the Landen chain's
+// (that of the sn, cn, dn it is evaluated with).
+void ExactRotation::set_quarter_phase(const Eigen::Vector3d& w) {
+  if (case_ == ExactCase::separatrix) {
+    quarter0_ = 0;
+    delta0_ = u0_;
+    return;
+  }
+  const Real s = w[1] / amplitude_[1], c = w[cn_axis_] / amplitude_[cn_axis_];
+  const Real kc = landen_.kc;
+  Real tau;
+  if (kc * s * s < c * c) {
+    quarter0_ = c > 0.0L ? 0 : 2;
+    tau = s / c;
+  } else {
+    quarter0_ = s > 0.0L ? 1 : -1;
+    tau = -c / (kc * s);
+  }
+  delta0_ = tau * boost::math::ellint_rf(1.0L, 1.0L + kc * kc * tau * tau, 1.0L + tau * tau);
+  if (quarter0_ == 2 && delta0_ > 0.0L) quarter0_ = -2;  // u0 within [−2K, 2K]
+  u0_ = quarter0_ * landen_.quarter + delta0_;
+}
+
+ExactRotation::Jacobi ExactRotation::jacobi_at(double t) const {
+  if (case_ == ExactCase::separatrix) return jacobi(phase(t));
+  // δ = δ0 + λt less the nearest whole number n of quarter periods (counted through a double,
+  // as in jacobi()); then sn, cn, dn of r by the Landen chain and the shift by q0 + n quarters.
+  const Real K = landen_.quarter;
+  Real r = delta0_ + lambda_ * static_cast<Real>(t);
+  const double ratio = static_cast<double>(r / K);
+  const long long n = static_cast<long long>(std::floor(ratio + 0.5));
+  r -= static_cast<Real>(n) * K;
+  const Jacobi j = jacobi_reduced(r);
+  const Real d = k_ == 0.0L ? 1.0L : j.dn, kc = landen_.kc;
+  Jacobi out{};
+  switch (static_cast<int>(((quarter0_ + n) % 4 + 4) % 4)) {
+    case 0:
+      out = {j.sn, j.cn, 0.0L};
+      break;
+    case 1:
+      out = {j.cn / d, -kc * j.sn / d, 0.0L};
+      break;
+    case 2:
+      out = {-j.sn, -j.cn, 0.0L};
+      break;
+    default:
+      out = {-j.cn / d, kc * j.sn / d, 0.0L};
+      break;
+  }
+  out.dn = std::sqrt(kc2_ + k_ * k_ * out.cn * out.cn);
+  return out;
 }
 
 // sn and cn of u in [0, 4K] (dn is left 0). At the bottom of the chain, modulus k_N < 1e-5 and
@@ -231,11 +306,11 @@ void ExactRotation::set_landen_chain() {
 //   sn = (1 + k_{n+1}) s/D,  cn = c d/D,  dn = (1 − k_{n+1} s²)/D = ((1 − k_{n+1}) + k_{n+1} c²)/D,
 // the last summing positive terms (1 − k_{n+1} s² would cancel near the separatrix).
 ExactRotation::Jacobi ExactRotation::jacobi_reduced(long double u) const {
-  if (k_ >= 1.0L) return {std::tanh(u), 1 / std::cosh(u), 0.0L};
+  if (k_ >= 1.0L) return {std::tanh(u), 1 / std::cosh(u), 1 / std::cosh(u)};
   const Real v = landen_.scale * u;
   Real s0, c0;
   sin_cos(v, s0, c0);
-  if (k_ == 0.0L) return {s0, c0, 0.0L};
+  if (k_ == 0.0L) return {s0, c0, 1.0L};
   const Real m = landen_.m_last, w = m * (v - s0 * c0) / 4;
   Real s = s0 - w * c0, c = c0 + w * s0, d = 1 - m * s0 * s0 / 2;
   for (int n = landen_.levels - 1; n >= 0; --n) {
@@ -245,7 +320,7 @@ ExactRotation::Jacobi ExactRotation::jacobi_reduced(long double u) const {
     s = s_up;
     c = c_up;
   }
-  return {s, c, 0.0L};
+  return {s, c, d};
 }
 
 ExactRotation::Jacobi ExactRotation::jacobi(long double u) const {
@@ -304,13 +379,13 @@ ExactOmegaForm ExactRotation::omega_form() const {
 Eigen::Vector3d ExactRotation::omega_body(double t) const {
   check_horizon(t);
   if (case_ == ExactCase::steady) return omega0_;
-  return to_sorted_.transpose() * sorted_omega(jacobi(phase(t)));
+  return to_sorted_.transpose() * sorted_omega(jacobi_at(t));
 }
 
 Eigen::Vector3d ExactRotation::omega_dot_body(double t) const {
   check_horizon(t);
   if (case_ == ExactCase::steady) return Eigen::Vector3d::Zero();
-  const Jacobi j = jacobi(phase(t));
+  const Jacobi j = jacobi_at(t);
   Eigen::Vector3d w_dot;
   w_dot[cn_axis_] = static_cast<double>(-amplitude_[cn_axis_] * lambda_ * j.sn * j.dn);
   w_dot[1] = static_cast<double>(amplitude_[1] * lambda_ * j.cn * j.dn);
@@ -386,7 +461,7 @@ void ExactRotation::set_precession() {
   }
   // S(K) = S(2K)/2, which the recurrence meets to 4e-19 relative (39 steps at k'² = 1e-17).
   psi_base_[steps].S = psi_S_half_ / 2;
-  psi_S0_ = table_S(u0_, jacobi(u0_));
+  psi_S0_ = table_S(u0_, jacobi_at(0.0));
 }
 
 // S(u) for |u| ≤ K (DLMF 19.25.14, homogeneous form: sin φ = sn u, cos φ = cn u,
@@ -498,7 +573,7 @@ double ExactRotation::precession_angle(double t) const {
   if (case_ == ExactCase::steady) return static_cast<double>(rate_long_ * t);
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  return static_cast<double>(precession_at(t, jacobi(phase(t)), Evaluation::fast, psi_S0_));
+  return static_cast<double>(precession_at(t, jacobi_at(t), Evaluation::fast, psi_S0_));
 }
 
 long double ExactRotation::precession_at(double t, const Jacobi& j, Evaluation how,
@@ -552,7 +627,7 @@ ExactState ExactRotation::state(double t) const {
   } else {
     if (parts_ == ExactParts::omega_only)
       throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-    const Jacobi j = jacobi(phase(t));
+    const Jacobi j = jacobi_at(t);
     R = orientation_at(t, j, Evaluation::fast, psi_S0_);
     state.omega_body = to_sorted_.transpose() * sorted_omega(j);
     // L and E from ω in long double: a component of ω may round to 0 (or a subnormal) while its
@@ -588,7 +663,7 @@ Eigen::Matrix3d ExactRotation::orientation(double t) const {
   }
   if (parts_ == ExactParts::omega_only)
     throw std::logic_error("ExactRotation: built for omega alone, it has no orientation");
-  return orientation_at(t, jacobi(phase(t)), Evaluation::fast, psi_S0_);
+  return orientation_at(t, jacobi_at(t), Evaluation::fast, psi_S0_);
 }
 
 Eigen::Matrix3d ExactRotation::orientation_at(double t, const Jacobi& j, Evaluation how,

@@ -176,6 +176,8 @@ class ExactRotation {
     long double m_last = 0.0L;                          ///< k_N²
     std::array<long double, kMaxLevels> k{};            ///< k_{n+1} at index n
     std::array<long double, kMaxLevels> one_minus_k{};  ///< 1 − k_{n+1} = 2k'_n/(1 + k'_n)
+    long double kc = 1.0L;       ///< k'_0, the complementary modulus the chain sees
+    long double quarter = 0.0L;  ///< K of that modulus, (π/2)(1 + k_N²/4)·scale⁻¹
   };
   /// fast: the Landen chain and carlson_rj (state()); boost: Boost.Math's jacobi_elliptic and
   /// ellint_rj (BoostReference).
@@ -187,6 +189,10 @@ class ExactRotation {
   void set_amplitudes(long double d1, long double d2, long double d3);
   void set_peak_rate();
   void set_phase(const Eigen::Vector3d& w);
+  void set_quarter_phase(const Eigen::Vector3d& w);
+  /// sn, cn, dn at u(t) = quarter0_·K + (delta0_ + λt) (docs/physics.md §8, "The phase by
+  /// quarter periods"): the offset from the nearest quarter period carried on its own.
+  Jacobi jacobi_at(double t) const;
   Jacobi jacobi(long double u) const;
   long double phase(double t) const { return lambda_ * static_cast<long double>(t) + u0_; }
   /// Throws ExactHorizonError where |t| > horizon_ (or t is NaN).
@@ -225,6 +231,8 @@ class ExactRotation {
   std::array<long double, 3> amplitude_{};  ///< signed, per sorted axis
   long double k_ = 0.0L, kc2_ = 1.0L, lambda_ = 0.0L, u0_ = 0.0L, K_ = 0.0L;  ///< kc2_ = 1 − k²
   long double period_ = 0.0L;  ///< 4K, ω's period in u
+  int quarter0_ = 0;           ///< u0 = quarter0_·K + delta0_ (off the separatrix)
+  long double delta0_ = 0.0L;  ///< |delta0_| ≤ about K/2: u0's offset from that quarter period
   LandenChain landen_;
   Eigen::Matrix3d anchor_ = Eigen::Matrix3d::Identity();  ///< W, fixed by R(0) = I
   // ψ(t) = psi_rate_·t + psi_gain_·(S(u(t)) − psi_S0_), S(u) = ∫_0^u sn²/(1 − n sn²) du (§8).

@@ -124,16 +124,6 @@ GalleryEntry entry_for(const fs::path& out, const scene::Scene& scene) {
   return e;
 }
 
-void write_page(const fs::path& path, const std::string& html) {
-  output::AtomicFile file(path);
-  std::ofstream page(file.temp_path(), std::ios::binary);
-  if (!page) throw_output_error("cannot create", path, errno);
-  page << html;
-  page.close();
-  if (!page) throw_output_error("cannot write", path, errno);
-  file.commit();
-}
-
 /// "HOST, CPU MODEL, N cores" from uname(2) and /proc/cpuinfo (parts it cannot read left out).
 std::string machine() {
   std::string text;
@@ -272,14 +262,17 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
       {{"page_sha256", {sha256_text(gallery_html(entries, header))}}},
       out,
       nullptr,
-      /*all_or_nothing=*/true};  // one page, whole or not at all (write_page)
+      /*all_or_nothing=*/true};  // one page, whole or not at all (output::write_text_file)
   done.outcome = cache::make_cached(cached, job.freshness, [&] {
     stop_if_asked(job.stop_signal, "gallery write");
+    // The page made first, then its folder and the file (output::write_text_file: through a
+    // temporary, put in place whole).
+    header.date = utc_now();
+    const std::string html = gallery_html(entries, header);
     std::error_code ec;
     output::make_directories(out, ec);
     if (ec) throw_output_error("cannot create output directory", out, ec.value());
-    header.date = utc_now();
-    write_page(layout.page, gallery_html(entries, header));
+    output::write_text_file(layout.page, html);
     return cache::Made{{layout.page}};
   });
   return done;

@@ -10,16 +10,31 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "scene/key_label.hpp"
 
 namespace bookspin::charts {
 namespace {
 
+/// A varied key as jobs::sweep_chart makes it: its range and values, its words and caption.
+SweepAxis axis(const std::string& key, double start, double stop, bool log,
+               std::vector<double> values) {
+  return {key,
+          start,
+          stop,
+          log,
+          std::move(values),
+          scene::key_caption(key),
+          scene::key_words(key).words};
+}
+
 TEST(SweepPlots, OneLinePerValueOfTheSecondKeyAndTheExactOneDashed) {
   SweepChart chart;
   chart.scene_name = "s";
-  chart.axes = {{"time.dt", 0.01, 0.02, true, {0.01, 0.02}},
-                {"model.normalize_every", 1, 2, false, {1, 2}}};
+  chart.axes = {axis("time.dt", 0.01, 0.02, true, {0.01, 0.02}),
+                axis("model.normalize_every", 1, 2, false, {1, 2})};
   chart.measures = {analysis::find_measure("first_flip"), analysis::find_measure("energy_drift")};
   chart.header = {"time.dt", "model.normalize_every", "first_flip", "energy_drift",
                   "first_flip_exact"};
@@ -61,7 +76,7 @@ TEST(SweepPlots, TheSheetIsAsWideAndTallAsItsParts) {
   // One key, two measures: 120 pixels of header and one row of two plots, 300 tall, 1280 wide.
   SweepChart chart;
   chart.scene_name = "s";
-  chart.axes = {{"time.dt", 0.01, 0.02, false, {0.01, 0.02}}};
+  chart.axes = {axis("time.dt", 0.01, 0.02, false, {0.01, 0.02})};
   chart.measures = {analysis::find_measure("first_flip"), analysis::find_measure("energy_drift")};
   chart.header = {"time.dt", "first_flip", "energy_drift", "first_flip_exact"};
   chart.rows = {{"0.01", "10", "0.5", "11"}, {"0.02", "20", "0.25", "21"}};
@@ -90,7 +105,7 @@ TEST(SweepPlots, NoTitleIsCutAtThePicturesRightEdge) {
     SweepChart chart;
     chart.scene_name = "flip-time-vs-perturbation";
     chart.scene_title = title;
-    chart.axes = {{"initial.angular_velocity[1]", 1e-6, 1e-2, true, {1e-6, 1e-2}}};
+    chart.axes = {axis("initial.angular_velocity[1]", 1e-6, 1e-2, true, {1e-6, 1e-2})};
     chart.measures = {analysis::find_measure("first_flip"), analysis::find_measure("flip_period"),
                       analysis::find_measure("energy_drift"),
                       analysis::find_measure("orientation_error")};
@@ -116,7 +131,7 @@ SweepChart chart_of(std::size_t keys, std::size_t count) {
   const std::vector<std::string> names{"initial.angular_velocity[1]", "time.dt",
                                        "model.normalize_every"};
   for (std::size_t k = 0; k < keys; ++k) {
-    chart.axes.push_back({names[k], 1, 2, false, {1, 2}});
+    chart.axes.push_back(axis(names[k], 1, 2, false, {1, 2}));
     chart.header.push_back(names[k]);
   }
   const auto& all = analysis::measure_table();
@@ -156,7 +171,7 @@ TEST(SweepPlots, EverySheetFitsA1366By768Screen) {
 TEST(SweepPlots, NoTextRunsPastTheSheetsSides) {
   for (std::size_t count = 1; count <= analysis::measure_table().size(); ++count) {
     SweepChart chart = chart_of(1, count);
-    chart.axes[0] = {"initial.angular_velocity[1]", 1e-6, 1e-2, true, {1e-6, 1e-2}};
+    chart.axes[0] = axis("initial.angular_velocity[1]", 1e-6, 1e-2, true, {1e-6, 1e-2});
     chart.header[0] = chart.axes[0].key;
     chart.rows[0][0] = "1e-6", chart.rows[1][0] = "0.01";
     const RgbaImage sheet = sweep_sheet(chart);

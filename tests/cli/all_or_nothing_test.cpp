@@ -21,7 +21,10 @@ namespace {
 using namespace bookspin::test;
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+// (Appended: "'" + std::string&& made GCC 12 warn of an overlapping memcpy, -Wrestrict.)
+std::string quoted(const fs::path& p) {
+  return std::string(1, '\'').append(p.string()).append(1, '\'');
+}
 
 /// bookspin `args` with files limited to `blocks` × 512 bytes (stderr through a file of its
 /// own, beyond the limit's reach: written by the shell before the limit is set).

@@ -147,7 +147,9 @@ TEST(FlipcheckCommand, AFuzzedScenarioIsOneLineAndExitTwoOrAVerdictAndStaysInIts
           run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + set + " " +
                              quoted(fs::path(csv[0])) + " -o " + quoted(out));
       EXPECT_TRUE(j.status == 0 || j.status == 2) << j.status << j.err;
-      if (j.status == 2) EXPECT_EQ(j.err.find('\n'), j.err.size() - 1) << j.err;
+      if (j.status == 2) {
+        EXPECT_EQ(j.err.find('\n'), j.err.size() - 1) << j.err;
+      }
     }
     // Nothing beside the output folders, anywhere in the scratch folder.
     for (const std::string& path : tree(dir.path())) EXPECT_EQ(path.rfind("out", 0), 0u) << path;

@@ -134,7 +134,9 @@ TEST(LoneFlight, ARealFlightCutAndResampledUnevenlyIsFoundAndFitsWithinFivePerce
       double longest_step = 0.0;
       for (std::size_t i = 1; i < recording.t.size(); ++i)
         longest_step = std::max(longest_step, recording.t[i] - recording.t[i - 1]);
-      if (resample) EXPECT_GT(longest_step, 0.015);
+      if (resample) {
+        EXPECT_GT(longest_step, 0.015);
+      }
       const FlightSearch search = find_flights(recording);
       ASSERT_EQ(search.flights.size(), 1u);
       const double span = recording.t.back() - recording.t.front();

@@ -3,8 +3,10 @@
 // and up to 4 times, every bit pattern (NaN, inf, subnormals, ±1e-300…1e308), or (odd mode) a
 // seed for the structured draw of tests/support/exact_motion_property.hpp (moments across
 // 1e-300…1e300, near-symmetric bodies, the separatrix, times up to and past the horizon). The
-// property: finite states that keep E and |L|, or a refusal for the true cause; anything else
-// (a broken property, a crash, another exception, a sanitizer report) is a finding.
+// property: finite states that keep E and |L|, starting at ω0 and the identity to rounding for
+// every body however far apart its moments (docs/physics.md §8, "The phase by quarter periods"),
+// or a refusal for the true cause; anything else (a broken property, a crash, another
+// exception, a sanitizer report) is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>

@@ -73,29 +73,24 @@ inline PeakRateBounds peak_rate_bounds(const Eigen::Vector3d& I, const Eigen::Ve
   return {std::sqrt(start2), std::sqrt(upper2)};
 }
 
-/// Whether `s` (at t = 0) is the identity and ω0: each component within 1e-6 |ω0| (a sign, an axis
-/// or a phase gone wrong is out by O(1); within k'² ~ 1e-19…1e-29 of the separatrix the modulus k
-/// stored in long double carries no digit of k' and ω0 is met only to ~1e-7 of |ω0|, and within
-/// k'² < 1e-19 the motion is taken as on it, which drops k' ~ 3e-10 of |ω0|), plus 1e-15 of
-/// the bound min(√(2E/I_i), |L|/I_i) on that component over the motion. The phase u0 is a long
-/// double, so where ω0 lies within 1e-19 of a quarter period (a component ~1e-26 of its
-/// amplitude, possible for moments 1e298 apart) that component is known to ~1e-19…1e-17 of its
-/// amplitude, not of itself.
-/// The start is asked of bodies whose moments lie within 1e8 of each other: beyond, the
-/// momentum frame's axis about L (L × e_r, docs/physics.md §8) may be set by components of L
-/// below ω's rounding (moments 1e72 apart: R(0) was 90° off about L), and within k'² < 1e-19 of
-/// the separatrix the motion taken as on it may drop the dn axis' a·k', which moments 1e56 apart
-/// make the largest component of ω0: limits noted in docs/physics.md §8, "How far in time".
+/// Whether `s` (at t = 0) is the identity and ω0 to rounding, for any body: q = (1, 0, 0, 0)
+/// within 1e-12 and each component of ω within 2 ε |ω0| (docs/physics.md §8, "The phase by
+/// quarter periods": the phase's offset from its nearest quarter period is carried on its own, so
+/// a component a hair from a zero of its Jacobi function keeps its digits however far its
+/// amplitude lies above it; moments 1e-50, 1, 1e50 gave ω_x(0) = −25083 for 1), and E, |L| and
+/// |ω| within 8 ε of the invariants summed in long double.
 inline bool starts_at(const physics::ExactState& s, const ExactInput& in,
                       const LongInvariants& inv) {
-  if (in.moments.maxCoeff() > 1e8 * in.moments.minCoeff()) return true;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
   if (std::abs(s.q[0] - 1.0) > 1e-12) return false;
   const double size = in.omega0.stableNorm();
-  for (int i = 0; i < 3; ++i) {
-    const long double I = in.moments[i];
-    const double bound = static_cast<double>(std::min(std::sqrt(2 * inv.E / I), inv.L / I));
-    if (std::abs(s.omega_body[i] - in.omega0[i]) > 1e-6 * size + 1e-15 * bound) return false;
-  }
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(s.omega_body[i] - in.omega0[i]) > 2 * eps * size) return false;
+  if (std::abs(s.omega_body.stableNorm() - size) > 8 * eps * size) return false;
+  // (Where they are normal doubles: E and |L| of ω0 as small as 1e-300 underflow.)
+  if (inv.E > 1e-290L && std::abs(s.E / static_cast<double>(inv.E) - 1.0) > 8 * eps) return false;
+  if (inv.L > 1e-290L && std::abs(s.L.stableNorm() / static_cast<double>(inv.L) - 1.0) > 8 * eps)
+    return false;
   return true;
 }
 
