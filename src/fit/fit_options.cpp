@@ -13,6 +13,14 @@
 namespace bookspin::fit {
 namespace {
 
+/// "\"TEXT\" WHY", appended piece by piece (GCC 12 warns, -Wrestrict, about a literal + string
+/// + literal chain here).
+std::string quoted_and(const std::string& text, const char* why) {
+  std::string line = "\"";
+  line.append(text).append("\" ").append(why);
+  return line;
+}
+
 std::string trimmed_part(const std::string& part) {
   const std::size_t begin = part.find_first_not_of(" \t");
   if (begin == std::string::npos) return std::string();
@@ -36,7 +44,7 @@ std::vector<std::pair<double, double>> read_ranges(const std::string& text, std:
     const std::string range = text.substr(begin, comma - begin);
     const std::size_t colon = range.find(':');
     if (colon == std::string::npos || range.find(':', colon + 1) != std::string::npos) {
-      error = "\"" + trimmed_part(range) + "\" is not START:END";
+      error = quoted_and(trimmed_part(range), "is not START:END");
       return {};
     }
     double ends[2];
@@ -45,7 +53,7 @@ std::vector<std::pair<double, double>> read_ranges(const std::string& text, std:
       const std::string given = trimmed_part(parts[i]);
       const std::optional<double> value = read_number(given);
       if (!value) {
-        error = "\"" + given + "\" is not a number";
+        error = quoted_and(given, "is not a number");
         return {};
       }
       ends[i] = *value;

@@ -484,11 +484,12 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   const std::array<double, 3> scale =
       labelled ? labelled->scale : std::array<double, 3>{1.0, 1.0, 1.0};
   // |ω| beside the axes (phyphox's "Absolute (rad/s)", a text export's "ω_total"): checked.
-  const std::optional<double> total_scale = labelled ? labelled->total_scale
-                                            : phyphox && header.size() == 5
-                                                ? std::optional<double>(1.0)
-                                                : std::nullopt;
-  const bool has_total = total_scale.has_value();
+  double total_scale = 1.0;  // phyphox's Absolute is in rad/s
+  bool has_total = !labelled && phyphox && header.size() == 5;
+  if (labelled && labelled->total_scale) {
+    has_total = true;
+    total_scale = *labelled->total_scale;
+  }
   const int columns = has_total ? 5 : 4;
   GyroRecording recording;
   recording.name = file_safe(name);
@@ -517,7 +518,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
           time_not_increasing(cells[0], previous_time, recording.t.back(), decimal_comma));
     previous_time = cells[0];
     const Eigen::Vector3d omega(scale[0] * values[1], scale[1] * values[2], scale[2] * values[3]);
-    if (has_total) check_total(omega, *total_scale * values[4], file, number, header);
+    if (has_total) check_total(omega, total_scale * values[4], file, number, header);
     recording.t.push_back(values[0]);
     recording.omega.push_back(omega);
   }
