@@ -52,7 +52,7 @@ def fit(
         str, os.PathLike[str], tuple[ArrayLike, ArrayLike], Sequence[Union[str, os.PathLike[str]]]
     ],
     drag: str = "linear",
-    tosses: Optional[Sequence[tuple[float, float]]] = None,
+    tosses: Union[Sequence[tuple[float, float]], ArrayLike, str, None] = None,
     moments: Optional[ArrayLike] = None,
 ) -> Fit:
     """A phyphox export, a t,wx,wy,wz CSV, or (t (N,) s, omega (N, 3) rad/s phone frame),

@@ -37,7 +37,9 @@ Arguments:
              or a list of paths: recordings of one body fitted as one, as
              `bookspin fit REC1 REC2 ...` does (docs/phone-lab.md, "A class's recordings")
   drag       the air drag's law fitted with each toss: "none", "linear" or "quadratic"
-  tosses     the flights by hand, a list of (t_start, t_end) pairs in s (--tosses); None: found
+  tosses     the flights by hand, a list of (t_start, t_end) pairs in s, an (N, 2) array, or
+             the command line's text "START:END,START:END" (--tosses, read by the same
+             reader); None, [] or "": found
   moments    (3,) principal moments, any scale and order, each > 0 (--moments): fixed, not
              fitted
 
@@ -150,21 +152,26 @@ fit::GyroRecording recording_arg(const py::object& recording) {
   return fit::pool_recordings({fit::samples_recording("recording", t, std::move(omega))});
 }
 
+/// The fit's arguments read and judged as every door reads its options (fit/fit_options.hpp),
+/// each error naming the argument: tosses as the command line's --tosses text or as (N, 2)
+/// numbers, drag by name, moments as (3,) numbers.
 fit::FitRequest request_arg(const std::string& drag, const py::object& tosses,
                             const py::object& moments) {
   fit::FitRequest request;
-  if (!physics::parse_drag_law(drag, request.settings.drag))
-    throw InputError("drag: \"" + drag + "\" is not none, linear or quadratic");
-  if (!tosses.is_none())
-    for (const py::handle range : py::iter(tosses)) {
-      const std::vector<double> ends = vector_arg(range, "tosses", 2);
-      request.tosses.emplace_back(ends[0], ends[1]);
-    }
+  request.reader = fit::Reader::python;  // hand_flights' errors name tosses=, not --tosses
+  const fit::FitOptionNames names = fit::fit_option_names(request.reader);
+  request.settings.drag = fit::parse_drag_option(drag, names.drag);
+  if (py::isinstance<py::str>(tosses)) {
+    request.tosses = fit::parse_toss_ranges(tosses.cast<std::string>(), names.tosses);
+  } else if (!tosses.is_none() && py::len(tosses) > 0) {
+    const std::vector<double> ends = matrix_arg(tosses, names.tosses, -1, 2);
+    for (std::size_t i = 0; i + 1 < ends.size(); i += 2)
+      request.tosses.emplace_back(ends[i], ends[i + 1]);
+    fit::check_toss_ranges(request.tosses, names.tosses);
+  }
   if (!moments.is_none()) {
-    const Eigen::Vector3d m = vector3_arg(moments, "moments");
-    for (int i = 0; i < 3; ++i)
-      if (!(m[i] > 0) || !std::isfinite(m[i]))
-        throw InputError("moments[" + std::to_string(i) + "]: not a positive finite number");
+    const Eigen::Vector3d m = vector3_arg(moments, names.moments);
+    fit::check_moments(m, names.moments);
     request.settings.moments = m;
   }
   return request;

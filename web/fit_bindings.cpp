@@ -171,19 +171,17 @@ fit::GyroRecording read_given(const std::string& file_name, const std::string& b
   return fit::read_recording(path);
 }
 
-/// `drag` as the command line's --drag takes it.
+/// `drag` (the lab's "air drag" menu) as the command line reads its --drag
+/// (fit::parse_drag_option), its errors naming the menu.
 bookspin::physics::DragLaw drag_arg(const std::string& drag) {
-  bookspin::physics::DragLaw law = bookspin::physics::DragLaw::linear;
-  if (!bookspin::physics::parse_drag_law(drag, law))
-    throw InputError("--drag: \"" + drag + "\" is not none, linear or quadratic");
-  return law;
+  return fit::parse_drag_option(drag, fit::fit_option_names(fit::Reader::page).drag);
 }
 
 /// `tosses` (the lab's "Flights by hand (s)" field, the command line's --tosses syntax) as the
 /// command line reads its option (fit::parse_toss_ranges), its errors naming the field; none
 /// for a blank field: the flights found.
 std::vector<std::pair<double, double>> tosses_arg(const std::string& tosses) {
-  return fit::parse_toss_ranges(tosses, fit::tosses_name(fit::Reader::page));
+  return fit::parse_toss_ranges(tosses, fit::fit_option_names(fit::Reader::page).tosses);
 }
 
 /// Empties kFolder (the folder in use cannot be removed: the root first).

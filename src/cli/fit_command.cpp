@@ -1,7 +1,5 @@
 // `bookspin fit`: the phone-toss lab (docs/phone-lab.md): a gyroscope recording's free flights
 // found and fitted with the exact motion.
-#include <charconv>
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -11,7 +9,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "common/errors.hpp"
-#include "fit/flights.hpp"
+#include "fit/fit_options.hpp"
 #include "fit/pool.hpp"
 #include "fit/report.hpp"
 #include "products/fit.hpp"
@@ -33,45 +31,17 @@ struct FitOptions {
   bool verbose = false;  ///< --verbose: every dropped stretch a line
 };
 
-double parse_number(const std::string& text, const std::string& option) {
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value))
-    throw InputError(option + ": \"" + text + "\" is not a number");
-  return value;
-}
-
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::size_t begin = 0;
-  while (true) {
-    const std::size_t end = text.find(separator, begin);
-    parts.push_back(text.substr(begin, end == std::string::npos ? end : end - begin));
-    if (end == std::string::npos) return parts;
-    begin = end + 1;
-  }
-}
-
 /// Fits OUT/<recording>-fit.csv, -fit-body.csv and a chart per toss (with --render a clip per
 /// toss); prints what was kept, dropped and found.
 int fit_command(const FitOptions& options) {
   products::FitJob job;
   job.out_dir = options.out_dir;
-  job.request.tosses =
-      fit::parse_toss_ranges(options.tosses, fit::tosses_name(fit::Reader::command_line));
-  if (!options.moments.empty()) {
-    const std::vector<std::string> parts = split(options.moments, ',');
-    if (parts.size() != 3) throw InputError("--moments: expected I1,I2,I3");
-    Eigen::Vector3d m;
-    for (int i = 0; i < 3; ++i) {
-      m[i] = parse_number(parts[i], "--moments");
-      if (m[i] <= 0) throw InputError("--moments: \"" + parts[i] + "\" is not positive");
-    }
-    job.request.settings.moments = m;
-  }
-  if (!physics::parse_drag_law(options.drag, job.request.settings.drag))
-    throw InputError("--drag: \"" + options.drag + "\" is not none, linear or quadratic");
+  // Each option read and judged as every door reads it (fit/fit_options.hpp).
+  const fit::FitOptionNames names = fit::fit_option_names(fit::Reader::command_line);
+  job.request.tosses = fit::parse_toss_ranges(options.tosses, names.tosses);
+  if (!options.moments.empty())
+    job.request.settings.moments = fit::parse_moments(options.moments, names.moments);
+  job.request.settings.drag = fit::parse_drag_option(options.drag, names.drag);
   if (!options.render && !options.scene_file.empty())
     throw InputError("--scene: only with --render (it gives the clips' body and render keys)");
   // Read after the options are checked, as every input: a bad option is named first.

@@ -26,6 +26,67 @@ TextLine next_line(std::string_view text, std::size_t start) {
   return {text.substr(start, end - start), next};
 }
 
+CsvRecord next_csv_record(std::string_view text, std::size_t start, char separator) {
+  CsvRecord record;
+  std::string cell;
+  bool inside = false;   // within its quotes now
+  bool started = false;  // anything but spaces seen in the cell
+  std::size_t kept = 0;  // the cell's length up to its last character that is not a space
+  const auto finish_cell = [&] {
+    cell.resize(kept);  // the spaces after it dropped; a quoted cell's own kept
+    record.cells.push_back(cell);
+    cell.clear();
+    inside = started = false;
+    kept = 0;
+  };
+  std::size_t i = start;
+  while (i < text.size()) {
+    const char c = text[i];
+    if (inside) {
+      if (c == '"') {
+        if (i + 1 < text.size() && text[i + 1] == '"') {
+          cell += '"';
+          i += 2;
+          kept = cell.size();
+          continue;
+        }
+        inside = false;
+      } else {
+        if (c == '\n' || (c == '\r' && !(i + 1 < text.size() && text[i + 1] == '\n')))
+          ++record.lines;
+        cell += c;
+        kept = cell.size();
+      }
+      ++i;
+      continue;
+    }
+    if (c == '\r' || c == '\n') {
+      record.next = c == '\r' && i + 1 < text.size() && text[i + 1] == '\n' ? i + 2 : i + 1;
+      finish_cell();
+      return record;
+    }
+    if (c == separator) {
+      finish_cell();
+      ++i;
+      continue;
+    }
+    if (c == ' ' || c == '\t') {
+      if (started) cell += c;
+    } else if (c == '"' && !started) {
+      inside = started = true;
+    } else {
+      cell += c;
+      started = true;
+      kept = cell.size();
+    }
+    ++i;
+  }
+  record.unclosed = inside;
+  record.next = text.size();
+  finish_cell();
+  return record;
+}
+
 std::optional<std::string> nul_byte_problem(std::string_view text) {
   const std::size_t nul = text.find('\0');
   if (nul == std::string_view::npos) return std::nullopt;

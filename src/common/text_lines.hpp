@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace bookspin {
 
@@ -23,6 +24,21 @@ struct TextLine {
   std::size_t next = 0;
 };
 TextLine next_line(std::string_view text, std::size_t start);
+
+/// One record of a CSV `text` from `start`, its cells split at `separator` as RFC 4180 reads
+/// them (the reader R's write.csv, spreadsheets and phyphox write for): a cell in double
+/// quotes may hold the separator, a line end and a quote doubled ("a ""b"", c" is `a "b", c`);
+/// spaces and tabs around a cell are not part of it. A record ends at a line end outside quotes
+/// (next_line's ends). `lines`: how many lines it spans (more than 1 where a quoted cell holds
+/// a line end); `unclosed`: a quoted cell still open at the end of `text` (its cells then hold
+/// what was read).
+struct CsvRecord {
+  std::vector<std::string> cells;
+  std::size_t next = 0;
+  int lines = 1;
+  bool unclosed = false;
+};
+CsvRecord next_csv_record(std::string_view text, std::size_t start, char separator);
 
 /// "NUL byte at line N" (1-based, lines as next_line() counts them, with what it usually means)
 /// when `text` holds a NUL byte, or nullopt: a reader says so before anything else, so that no

@@ -4,6 +4,7 @@
 // (toss_fit.hpp), what it reports as text (fit_tables.hpp), each toss as a scene's values
 // (toss_scene.hpp), and all of it as one value (report.hpp). Eigen and Ceres; no GL, and no
 // file written.
+#include "fit/fit_options.hpp"
 #include "fit/fit_tables.hpp"
 #include "fit/flights.hpp"
 #include "fit/pool.hpp"

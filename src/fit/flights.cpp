@@ -312,36 +312,6 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
   return search;
 }
 
-std::vector<std::pair<double, double>> parse_toss_ranges(const std::string& text,
-                                                         const std::string& option) {
-  const auto trimmed = [](const std::string& part) {
-    const std::size_t begin = part.find_first_not_of(" \t");
-    if (begin == std::string::npos) return std::string();
-    return part.substr(begin, part.find_last_not_of(" \t") - begin + 1);
-  };
-  const auto number = [&](const std::string& part) {
-    const std::string given = trimmed(part);
-    const std::optional<double> value = read_number(given);
-    if (!value || !std::isfinite(*value))
-      throw InputError(option + ": \"" + given + "\" is not a number");
-    return *value;
-  };
-  std::vector<std::pair<double, double>> ranges;
-  if (trimmed(text).empty()) return ranges;
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', begin), text.size());
-    const std::string range = text.substr(begin, comma - begin);
-    const std::size_t colon = range.find(':');
-    if (colon == std::string::npos || range.find(':', colon + 1) != std::string::npos)
-      throw InputError(option + ": \"" + trimmed(range) + "\" is not START:END");
-    const double start = number(range.substr(0, colon));  // named first where both are bad
-    ranges.emplace_back(start, number(range.substr(colon + 1)));
-    begin = comma + 1;
-  }
-  return ranges;
-}
-
 FlightSearch hand_flights(const GyroRecording& recording,
                           const std::vector<std::pair<double, double>>& ranges,
                           const std::string& option) {
@@ -350,21 +320,22 @@ FlightSearch hand_flights(const GyroRecording& recording,
   const std::vector<std::pair<int, int>> segs = segments(recording);
   const std::vector<double>& t = recording.t;
   // In time order (the tosses are numbered so), none overlapping another or given twice.
+  check_toss_ranges(ranges, option);  // every door's ranges judged alike (fit_options.hpp)
   std::vector<std::pair<double, double>> sorted = ranges;
   std::stable_sort(sorted.begin(), sorted.end());
   for (std::size_t k = 0; k < sorted.size(); ++k) {
     const auto& [a, b] = sorted[k];
-    const std::string range = seconds(a) + ":" + seconds(b);
+    const std::string range = toss_time_text(a) + ":" + toss_time_text(b);
     if (!(b > a)) throw InputError(option + " " + range + ": the end is not after the start");
     if (k == 0) continue;
     const auto& [a0, b0] = sorted[k - 1];
     if (a0 == a && b0 == b) throw InputError(option + " " + range + ": given twice");
     if (a <= b0)
-      throw InputError(option + " " + range + ": overlaps " + seconds(a0) + ":" + seconds(b0) +
-                       " (a sample belongs to one toss at most)");
+      throw InputError(option + " " + range + ": overlaps " + toss_time_text(a0) + ":" +
+                       toss_time_text(b0) + " (a sample belongs to one toss at most)");
   }
   for (const auto& [a, b] : sorted) {
-    const std::string range = seconds(a) + ":" + seconds(b);
+    const std::string range = toss_time_text(a) + ":" + toss_time_text(b);
     const int first = static_cast<int>(std::lower_bound(t.begin(), t.end(), a) - t.begin());
     const int last = static_cast<int>(std::upper_bound(t.begin(), t.end(), b) - t.begin()) - 1;
     if (last - first + 1 < kMinFitSamples)

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "fit/fit_options.hpp"  // parse_toss_ranges, check_toss_ranges
 #include "fit/recording.hpp"
 #include "fit/rest.hpp"
 
@@ -68,19 +69,11 @@ Rest measure_rest(const GyroRecording& recording, const FinderSettings& settings
 /// then empty, and dropped says why); std::logic_error for a recording not pooled.
 FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& settings = {});
 
-/// The flights by hand as text, "START:END[,START:END…]" (s; spaces around a number allowed,
-/// "1.82:2.71, 2.88:3.22"): the ranges in the order given, for hand_flights, which judges them
-/// against the recording (a reversed range too); none for a text that is blank. Throws
-/// InputError naming `option` (the command line's --tosses, the page's field) for a range that
-/// is not two numbers ("--tosses: \"2\" is not START:END", "--tosses: \"a\" is not a number").
-/// The one reader of this syntax: the command line and the explorer's lab alike.
-std::vector<std::pair<double, double>> parse_toss_ranges(const std::string& text,
-                                                         const std::string& option = "--tosses");
-
 /// The flights given by hand, [t_start, t_end] s each, of `recording` (pooled, as find_flights
 /// takes it), in time order whatever order they are given in. Throws InputError naming `option`
 /// when a range holds fewer than 10 samples, is reversed, spans a pause, overlaps another
-/// (shares an instant with it) or is given twice.
+/// (shares an instant with it) or is given twice, and first, as every door's ranges, for an end
+/// that is not finite (check_toss_ranges).
 FlightSearch hand_flights(const GyroRecording& recording,
                           const std::vector<std::pair<double, double>>& ranges,
                           const std::string& option = "--tosses");

@@ -13,28 +13,40 @@
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
 #include "common/text_file.hpp"
+#include "common/text_lines.hpp"
 
 namespace bookspin::fit {
 namespace {
 
 constexpr int kMinSamples = 10;
 
-/// The cells of one line split at `separator`, each trimmed of spaces and of one pair of
-/// double quotes.
-std::vector<std::string> split_cells(std::string_view line, char separator) {
-  std::vector<std::string> cells;
-  std::size_t begin = 0;
-  while (true) {
-    const std::size_t end = line.find(separator, begin);
-    std::string_view cell =
-        trimmed(line.substr(begin, end == std::string_view::npos ? end : end - begin));
-    if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"')
-      cell = cell.substr(1, cell.size() - 2);
-    cells.emplace_back(cell);
-    if (end == std::string_view::npos) break;
-    begin = end + 1;
+/// The rows of `text` split at `separator` as RFC 4180 reads them (next_csv_record: a quoted
+/// cell may hold the separator, doubled quotes and line ends, as R's write.csv and spreadsheets
+/// write them), each with its 1-based line number; blank lines and comment lines (starting with
+/// '#') left out. Throws InputError for a quoted cell not closed by the end of the file.
+std::vector<std::pair<int, std::vector<std::string>>> csv_rows(std::string_view text,
+                                                               char separator,
+                                                               const std::string& file) {
+  std::vector<std::pair<int, std::vector<std::string>>> rows;
+  int number = 1;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const TextLine line = next_line(text, at);
+    const std::size_t first = line.line.find_first_not_of(" \t");
+    if (first == std::string_view::npos || line.line[first] == '#') {
+      ++number;
+      at = line.next;
+      continue;
+    }
+    CsvRecord record = next_csv_record(text, at, separator);
+    if (record.unclosed)
+      throw InputError(file, number, "",
+                       "a quoted cell opens on this row and is not closed by the end of the file");
+    rows.emplace_back(number, std::move(record.cells));
+    number += record.lines;
+    at = record.next;
   }
-  return cells;
+  return rows;
 }
 
 std::string lower(std::string text) {
@@ -61,7 +73,8 @@ std::vector<std::pair<int, std::string_view>> lines_of(std::string_view text) {
 
 /// A number cell: '.' or (decimal_comma) ',' as the decimal mark, scientific notation allowed;
 /// nullopt for text. NaN and infinity are returned as such (the caller names them).
-std::optional<double> parse_number(std::string cell, bool decimal_comma) {
+std::optional<double> parse_number(std::string_view given, bool decimal_comma) {
+  std::string cell(trimmed(given));  // a quoted cell keeps its spaces: " 2 " is 2
   if (decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
   if (!cell.empty() && cell.front() == '+') cell.erase(0, 1);
   return read_number(cell);
@@ -136,21 +149,49 @@ std::optional<double> omega_unit(const std::string& unit) {
   return std::nullopt;
 }
 
-/// A header naming time (s) and ω about x, y, z in that order ("t (s)", "ωₓ (rad/s)", "ωᵧ
-/// (rad/s)", "ω_z (rad/s)"): each ω column's scale to rad/s (omega_unit); nullopt otherwise.
-std::optional<std::array<double, 3>> labelled_gyro_header(const std::vector<std::string>& header) {
-  if (header.size() != 4) return std::nullopt;
+/// Whether a column named `name` (name_and_unit's) holds |ω|: "ω_total", "w total", "|ω|",
+/// "absolute", "omega norm", "magnitude".
+bool is_omega_total(std::string name) {
+  for (const auto& [from, to] : {std::pair<const char*, const char*>{"\u03c9", "w"}, {"|", ""}})
+    for (std::size_t at = name.find(from); at != std::string::npos; at = name.find(from))
+      name.replace(at, std::string(from).size(), to);
+  std::string bare;
+  for (char c : name)
+    if (c != '_' && c != ' ' && c != '-') bare += c;
+  for (const char* prefix : {"", "w", "omega", "gyro", "gyroscope"})
+    for (const char* word : {"total", "abs", "absolute", "norm", "magnitude"})
+      if (bare == std::string(prefix) + word) return true;
+  return bare == "w" || bare == "omega";
+}
+
+/// A labelled header: each ω column's scale to rad/s, and the scale of a fifth column holding
+/// |ω| (nullopt without one).
+struct LabelledHeader {
+  std::array<double, 3> scale{};
+  std::optional<double> total_scale;
+};
+
+/// A header naming time and ω about x, y, z in that order ("t (s)", "ωₓ (rad/s)", "ωᵧ
+/// (rad/s)", "ωᶻ (rad/s)"), and optionally |ω| after them ("ω_total (rad/s)"); a time without
+/// its unit is in seconds (docs/phone-lab.md, "The recording"). Nullopt for any other header.
+std::optional<LabelledHeader> labelled_gyro_header(const std::vector<std::string>& header) {
+  if (header.size() != 4 && header.size() != 5) return std::nullopt;
   const auto [time, time_unit] = name_and_unit(header[0]);
   if ((time != "t" && time != "time") || (!time_unit.empty() && time_unit != "s"))
     return std::nullopt;
-  std::array<double, 3> scale{};
+  LabelledHeader labelled;
   for (int i = 0; i < 3; ++i) {
     const auto [name, unit] = name_and_unit(header[i + 1]);
     const std::optional<double> to_rad = omega_unit(unit);
     if (omega_axis(name) != std::string(1, "xyz"[i]) || !to_rad) return std::nullopt;
-    scale[static_cast<std::size_t>(i)] = *to_rad;
+    labelled.scale[static_cast<std::size_t>(i)] = *to_rad;
   }
-  return scale;
+  if (header.size() == 5) {
+    const auto [name, unit] = name_and_unit(header[4]);
+    labelled.total_scale = omega_unit(unit);
+    if (!is_omega_total(name) || !labelled.total_scale) return std::nullopt;
+  }
+  return labelled;
 }
 
 bool is_plain_header(const std::vector<std::string>& header) {
@@ -252,16 +293,121 @@ std::vector<std::pair<int, std::vector<std::string>>> meta_rows(std::string_view
                                                                 char& separator) {
   text = without_bom(text);
   if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
-  std::vector<std::pair<int, std::vector<std::string>>> rows;
   const auto lines = lines_of(text);
-  if (lines.empty()) return rows;
+  if (lines.empty()) return {};
   const std::string_view head = lines.front().second;
   separator = head.find('\t') != std::string_view::npos  ? '\t'
               : head.find(';') != std::string_view::npos ? ';'
                                                          : ',';
-  for (std::size_t i = 1; i < lines.size(); ++i)
-    rows.emplace_back(lines[i].first, split_cells(lines[i].second, separator));
+  std::vector<std::pair<int, std::vector<std::string>>> rows = csv_rows(text, separator, file);
+  rows.erase(rows.begin());  // the header
   return rows;
+}
+
+/// A decimal number's text as sign, significant digits (no leading or trailing zeros) and the
+/// power of ten of its first digit, for comparing two texts exactly; nullopt for other text.
+struct Decimal {
+  bool negative = false;
+  std::string digits;  // empty for zero
+  long exponent = 0;
+};
+std::optional<Decimal> decimal_of(std::string text, bool decimal_comma) {
+  if (decimal_comma) std::replace(text.begin(), text.end(), ',', '.');
+  Decimal d;
+  std::size_t i = 0;
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) d.negative = text[i++] == '-';
+  long point = -1, count = 0;
+  std::string all;
+  for (; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '.' && point < 0) {
+      point = count;
+    } else if (std::isdigit(static_cast<unsigned char>(c))) {
+      all += c;
+      ++count;
+    } else {
+      break;
+    }
+  }
+  if (all.empty()) return std::nullopt;
+  long exponent = 0;
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    const std::optional<double> e = read_number(text.substr(i + 1));
+    if (!e || std::fabs(*e) > 1e6 || *e != std::floor(*e)) return std::nullopt;
+    exponent = static_cast<long>(*e);
+  } else if (i != text.size()) {
+    return std::nullopt;
+  }
+  if (point < 0) point = count;
+  const std::size_t first = all.find_first_not_of('0');
+  if (first == std::string::npos) return Decimal{};  // zero, whatever its sign
+  d.digits = all.substr(first, all.find_last_not_of('0') - first + 1);
+  d.exponent = exponent + point - static_cast<long>(first) - 1;
+  return d;
+}
+
+/// Whether decimal text `a` is a larger number than `b` (false where either is not one).
+bool decimal_greater(const std::string& a, const std::string& b, bool decimal_comma) {
+  const std::optional<Decimal> x = decimal_of(a, decimal_comma), y = decimal_of(b, decimal_comma);
+  if (!x || !y) return false;
+  const auto sign = [](const Decimal& d) { return d.digits.empty() ? 0 : d.negative ? -1 : 1; };
+  if (sign(*x) != sign(*y)) return sign(*x) > sign(*y);
+  if (sign(*x) == 0) return false;
+  // Same sign: compare magnitudes, then flip for negatives.
+  int magnitude = 0;
+  if (x->exponent != y->exponent) {
+    magnitude = x->exponent > y->exponent ? 1 : -1;
+  } else {
+    const int c = x->digits.compare(y->digits);  // same exponent: digit by digit
+    magnitude = c > 0 ? 1 : c < 0 ? -1 : 0;
+  }
+  return sign(*x) > 0 ? magnitude > 0 : magnitude < 0;
+}
+
+/// Why the time `cell` (read as a double no larger than `previous`, the previous row's, written
+/// `previous_cell`) is refused: where the text is larger and the two read as one double, that
+/// a double cannot tell them apart at that size (its step there), else that time does not
+/// increase.
+std::string time_not_increasing(const std::string& cell, const std::string& previous_cell,
+                                double previous, bool decimal_comma) {
+  if (decimal_greater(cell, previous_cell, decimal_comma)) {
+    const double step = std::nextafter(std::fabs(previous), HUGE_VAL) - std::fabs(previous);
+    return "time " + cut_cell(cell) + " is after the previous row's " + cut_cell(previous_cell) +
+           " in the file, but a double cannot tell them apart: both read as " +
+           finite_text(previous, "a time") + " s, where a double's step is " +
+           finite_text(step, "a double's step") +
+           " s (subtract the first time from every time, or write them as offsets)";
+  }
+  return "time does not increase (" + cut_cell(cell) + " after the previous row's)";
+}
+
+/// Throws InputError where a row's |ω| column (`total`, rad/s) disagrees with the norm of its
+/// three axes (`omega`, rad/s) beyond a printed value's rounding (1 % and 0.01 rad/s): the
+/// columns then do not hold what the header says. Where one axis taken in the other unit (°/s
+/// for rad/s or back) makes the norm agree, that axis is named: mixed units.
+void check_total(const Eigen::Vector3d& omega, double total, const std::string& file, int number,
+                 const std::vector<std::string>& header) {
+  const auto agrees = [&](const Eigen::Vector3d& w) {
+    return std::fabs(total - w.norm()) <= 0.01 * std::max(w.norm(), std::fabs(total)) + 0.01;
+  };
+  if (agrees(omega)) return;
+  const double degree = 3.14159265358979323846 / 180.0;
+  std::string cause =
+      "the columns do not hold what the header says (an axis in another unit, "
+      "or in another order?)";
+  for (int i = 0; i < 3; ++i)
+    for (const double factor : {degree, 1.0 / degree}) {
+      Eigen::Vector3d w = omega;
+      w[i] *= factor;
+      if (agrees(w) && !agrees(omega))
+        cause = "mixed units? " + header[static_cast<std::size_t>(i) + 1] + " holds " +
+                (factor == degree ? "°/s" : "rad/s") +
+                ", not the unit its header says (taken so, the axes' norm is |ω|)";
+    }
+  throw InputError(file, number, header[4],
+                   "|ω| is " + finite_text(total, "|ω|", "%.4g") +
+                       " rad/s where the three axes' norm is " +
+                       finite_text(omega.norm(), "|ω|", "%.4g") + " rad/s: " + cause);
 }
 
 }  // namespace
@@ -272,23 +418,62 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
   const auto lines = lines_of(text);
   if (lines.empty()) throw InputError(file, 0, "", "not a gyroscope recording: the file is empty");
-  const std::string_view head = lines.front().second;
   // Tab, semicolon (a decimal comma) or comma as phyphox writes; else, with none of them,
   // cells separated by spaces (a text export: "t (s)  ωₓ (rad/s) …").
-  const char separator = head.find('\t') != std::string_view::npos  ? '\t'
-                         : head.find(';') != std::string_view::npos ? ';'
-                         : head.find(',') != std::string_view::npos ? ','
-                         : head.find(' ') != std::string_view::npos ? ' '
-                                                                    : ',';
-  const bool decimal_comma = separator == ';';
-  const auto cells_of = [&](std::string_view line) {
-    return separator == ' ' ? whitespace_cells(line) : split_cells(line, separator);
+  const auto separator_of = [](std::string_view line) {
+    return line.find('\t') != std::string_view::npos  ? '\t'
+           : line.find(';') != std::string_view::npos ? ';'
+           : line.find(',') != std::string_view::npos ? ','
+           : line.find(' ') != std::string_view::npos ? ' '
+                                                      : ',';
   };
-  const std::vector<std::string> header = cells_of(head);
-  const std::optional<std::array<double, 3>> labelled = labelled_gyro_header(header);
+  // A table whose header is its last comment before the numbers ("#time  ωₓ (rad/s) …", as a
+  // text export writes it): that comment, without its '#', is the header, and says the
+  // separator.
+  const auto [head_line, head] = lines.front();
+  std::optional<std::pair<int, std::string_view>> comment;
+  {
+    int number = 0;
+    for (std::size_t at = 0; at < text.size() && number + 1 < head_line;) {
+      const TextLine line = next_line(text, at);
+      ++number;
+      const std::string_view bare = trimmed(line.line);
+      if (!bare.empty() && bare.front() == '#') comment.emplace(number, trimmed(bare.substr(1)));
+      at = line.next;
+    }
+  }
+  const auto all_numbers = [](const std::vector<std::string>& cells, bool comma) {
+    bool numbers = cells.size() >= 4;
+    for (const std::string& cell : cells)
+      numbers = numbers && parse_number(cell, comma).has_value();
+    return numbers;
+  };
+  const char head_separator = separator_of(head);
+  const bool header_in_comment =
+      comment && !comment->second.empty() &&
+      all_numbers(head_separator == ' ' ? whitespace_cells(head)
+                                        : next_csv_record(head, 0, head_separator).cells,
+                  head_separator == ';');
+  const char separator = header_in_comment ? separator_of(comment->second) : head_separator;
+  const int header_line = header_in_comment ? comment->first : head_line;
+  const bool decimal_comma = separator == ';';
+  // The rows, the header first: quoted cells read as RFC 4180 reads them, or a whitespace
+  // table's words.
+  std::vector<std::pair<int, std::vector<std::string>>> rows;
+  if (separator == ' ')
+    for (const auto& [number, line] : lines) rows.emplace_back(number, whitespace_cells(line));
+  else
+    rows = csv_rows(text, separator, file);
+  if (header_in_comment)
+    rows.insert(
+        rows.begin(),
+        {header_line, separator == ' ' ? whitespace_cells(comment->second)
+                                       : next_csv_record(comment->second, 0, separator).cells});
+  const std::vector<std::string>& header = rows.front().second;
+  const std::optional<LabelledHeader> labelled = labelled_gyro_header(header);
   const bool phyphox = is_phyphox_gyro_header(header);
   if (!phyphox && !is_plain_header(header) && !labelled)
-    throw InputError(file, lines.front().first, "header",
+    throw InputError(file, header_line, "header",
                      separator == ' '
                          ? "not a gyroscope recording: a whitespace-separated table whose " +
                                std::to_string(header.size()) +
@@ -296,21 +481,30 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
                                "°/s), as \"t (s)  ωₓ (rad/s)  ωᵧ (rad/s)  ω_z (rad/s)\""
                          : "not a gyroscope recording: expected phyphox's \"Time (s)\", "
                            "\"Gyroscope x (rad/s)\", ... or t,wx,wy,wz");
-  const std::array<double, 3> scale = labelled.value_or(std::array<double, 3>{1.0, 1.0, 1.0});
+  const std::array<double, 3> scale =
+      labelled ? labelled->scale : std::array<double, 3>{1.0, 1.0, 1.0};
+  // |ω| beside the axes (phyphox's "Absolute (rad/s)", a text export's "ω_total"): checked.
+  double total_scale = 1.0;  // phyphox's Absolute is in rad/s
+  bool has_total = !labelled && phyphox && header.size() == 5;
+  if (labelled && labelled->total_scale) {
+    has_total = true;
+    total_scale = *labelled->total_scale;
+  }
+  const int columns = has_total ? 5 : 4;
   GyroRecording recording;
   recording.name = file_safe(name);
   recording.source = file;
-  recording.t.reserve(lines.size());
-  recording.omega.reserve(lines.size());
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    const auto& [number, line] = lines[i];
-    const std::vector<std::string> cells = cells_of(line);
-    if (cells.size() < 4)
+  recording.t.reserve(rows.size());
+  recording.omega.reserve(rows.size());
+  std::string previous_time;  // the previous row's time as written
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& [number, cells] = rows[i];
+    if (static_cast<int>(cells.size()) < columns)
       throw InputError(file, number, "",
                        "a row of " + std::to_string(cells.size()) + " cells, expected " +
                            std::to_string(header.size()));
-    double values[4];
-    for (int c = 0; c < 4; ++c) {
+    double values[5];
+    for (int c = 0; c < columns; ++c) {
       const std::optional<double> value = parse_number(cells[c], decimal_comma);
       if (!value)
         throw InputError(file, number, header[c], "not a number: " + quoted_cell(cells[c]));
@@ -319,10 +513,14 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
       values[c] = *value;
     }
     if (!recording.t.empty() && values[0] <= recording.t.back())
-      throw InputError(file, number, header[0],
-                       "time does not increase (" + cells[0] + " after the previous row's)");
+      throw InputError(
+          file, number, header[0],
+          time_not_increasing(cells[0], previous_time, recording.t.back(), decimal_comma));
+    previous_time = cells[0];
+    const Eigen::Vector3d omega(scale[0] * values[1], scale[1] * values[2], scale[2] * values[3]);
+    if (has_total) check_total(omega, total_scale * values[4], file, number, header);
     recording.t.push_back(values[0]);
-    recording.omega.emplace_back(scale[0] * values[1], scale[1] * values[2], scale[2] * values[3]);
+    recording.omega.push_back(omega);
   }
   if (static_cast<int>(recording.t.size()) < kMinSamples)
     throw InputError(file, 0, "",

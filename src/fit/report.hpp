@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/stop.hpp"
+#include "fit/fit_options.hpp"
 #include "fit/fit_tables.hpp"
 #include "fit/recording.hpp"
 #include "fit/toss_fit.hpp"
@@ -29,10 +30,9 @@ struct FitRequest {
 };
 
 /// How an error line names the flights by hand (parse_toss_ranges, hand_flights): the command
-/// line's option, or the explorer lab's field ("Flights by hand (s)").
-inline const char* tosses_name(Reader reader) {
-  return reader == Reader::page ? "flights by hand" : "--tosses";
-}
+/// line's option, the explorer lab's field ("Flights by hand (s)") or Python's argument
+/// (fit_option_names).
+inline const char* tosses_name(Reader reader) { return fit_option_names(reader).tosses; }
 
 /// One toss's chart as values (charts::toss_image draws it; docs/phone-lab.md, "Reading the
 /// result").

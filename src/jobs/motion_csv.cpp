@@ -19,18 +19,6 @@ namespace {
 /// rad per time unit: a larger ω component is refused (its E and |L| would overflow).
 constexpr double kMaxOmega = 1e100;
 
-std::vector<std::string_view> cells_of(std::string_view line) {
-  std::vector<std::string_view> cells;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    cells.push_back(trimmed(line.substr(start, comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return cells;
-}
-
 /// `cell` as a finite double, or false: a decimal number (an optional sign, digits with an
 /// optional point, an optional exponent) as read_number() reads one (common/number_text.hpp:
 /// correctly rounded, compiled into the explorer page too). Refused: anything else (hex, "inf",
@@ -70,16 +58,6 @@ std::string not_a_number_reason(std::string_view cell, const std::string& quoted
     }
   }
   return quoted + " is not a finite number";
-}
-
-/// The header's names: cells_of(line), each without the double quotes a spreadsheet or R's
-/// write.csv puts around it ("t","qw",…).
-std::vector<std::string_view> header_of(std::string_view line) {
-  std::vector<std::string_view> names = cells_of(line);
-  for (std::string_view& name : names)
-    if (name.size() >= 2 && name.front() == '"' && name.back() == '"')
-      name = trimmed(name.substr(1, name.size() - 2));
-  return names;
 }
 
 /// A column the motion is read from (t, q, ω in either frame, either spelling) that the header
@@ -172,19 +150,32 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
   text = without_bom(text);  // a spreadsheet's byte-order mark before the header
   if (const auto nul = nul_byte_problem(text)) throw InputError(file, 0, "", *nul);
   MotionFile motion;
+  std::vector<std::string> header_cells;  // the header's names, trimmed
   std::vector<std::string_view> header;
   std::array<std::size_t, 8> at{};  // t, qw, qx, qy, qz, ω x, y, z
   std::array<std::string_view, 8> names{};
-  int line_number = 0;
+  int line_number = 0;  // the line the row being read starts on (1-based)
+  int lines_read = 0;
   std::size_t start = 0;
   while (start < text.size()) {
     const TextLine next = next_line(text, start);  // "\r\n", "\n" or a lone "\r"
     const std::string_view line = trimmed(next.line);
-    start = next.next;
-    ++line_number;
-    if (line.empty() || line.front() == '#') continue;
+    line_number = ++lines_read;
+    if (line.empty() || line.front() == '#') {
+      start = next.next;
+      continue;
+    }
+    // A row as RFC 4180 reads it (R's write.csv, spreadsheets): a quoted cell may hold commas,
+    // doubled quotes and line ends.
+    CsvRecord record = next_csv_record(text, start, ',');
+    if (record.unclosed)
+      throw InputError(file, line_number, "",
+                       "a quoted cell opens on this row and is not closed by the end of the file");
+    start = record.next;
+    lines_read += record.lines - 1;
     if (header.empty()) {
-      header = header_of(line);
+      for (const std::string& name : record.cells) header_cells.emplace_back(trimmed(name));
+      header.assign(header_cells.begin(), header_cells.end());
       if (const std::string twice = repeated_column(header); !twice.empty())
         throw InputError(file, line_number, twice,
                          "the column " + twice + " appears twice in the header: which is meant?");
@@ -219,7 +210,7 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
       for (std::size_t k = 0; k < at.size(); ++k) names[k] = header[at[k]];
       continue;
     }
-    const std::vector<std::string_view> cells = cells_of(line);
+    const std::vector<std::string>& cells = record.cells;
     if (cells.size() != header.size()) {
       throw InputError(file, line_number, "",
                        std::to_string(cells.size()) + " cells where the header has " +
@@ -227,7 +218,7 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
     }
     std::array<double, 8> v{};
     for (std::size_t k = 0; k < at.size(); ++k) {
-      const std::string_view cell = cells[at[k]];
+      const std::string_view cell = trimmed(cells[at[k]]);  // a quoted " 2.5 " is 2.5
       const std::string column_name(names[k]);
       if (cell.empty()) throw InputError(file, line_number, column_name, "empty cell");
       if (!finite_number(cell, v[k])) {

@@ -438,6 +438,18 @@ def main():
                 got = fit_in_page(driver, base_url, "recordings/" + hand_file, hand_file, "linear", text)
                 if got.get("ok") or got["error"] != in_page_words(line):
                     fail(f"flights by hand {text!r}: the page said {got.get('error')!r}, the command line {line!r}")
+            # The table every door is given (tests/fit/option_doors.json, also Python's and the
+            # command line's: tests/python/test_option_doors.py): the field's and the menu's
+            # names, then the table's causes.
+            table = json.loads((source / "tests" / "fit" / "option_doors.json").read_text())
+            for case in table["cases"]:
+                if case["option"] not in ("tosses", "drag") or "{SOURCE}" in case["cause"]:
+                    continue
+                drag, tosses = (case["text"], "") if case["option"] == "drag" else ("linear", case["text"])
+                got = fit_in_page(driver, base_url, "recordings/" + hand_file, hand_file, drag, tosses)
+                want = table["names"]["page"][case["option"]] + case["cause"]
+                if got.get("ok") or got["error"] != want:
+                    fail(f"{case['option']} {case['text']!r}: the page said {got.get('error')!r}, not {want!r}")
             got = driver.execute_async_script("""
                 const [base, names, done] = arguments;
                 Promise.all(names.map((n) => fetch(base + 'recordings/' + n).then((r) => r.arrayBuffer())

@@ -32,6 +32,31 @@ TEST(TextLines, CrLfLfAndALoneCrEachEndALine) {
   EXPECT_EQ(lines_of("\r"), std::vector<std::string>{""});
 }
 
+// A CSV record as RFC 4180 reads it, written out by hand: quotes hold the separator, a doubled
+// quote and line ends of each kind; spaces around a cell are not part of it, inside quotes
+// they are; a quote inside an unquoted cell is a character; an open quote at the end says so.
+TEST(TextLines, ACsvRecordIsReadAsRfc4180ReadsIt) {
+  using Cells = std::vector<std::string>;
+  const CsvRecord plain = next_csv_record(" a , b,,c \r\nnext", 0, ',');
+  EXPECT_EQ(plain.cells, (Cells{"a", "b", "", "c"}));
+  EXPECT_EQ(plain.next, 12u);
+  EXPECT_EQ(plain.lines, 1);
+  const CsvRecord quoted =
+      next_csv_record("1,\"x, \"\"y\"\"\r\nz\rw\" , \" q \",5\"6\nrest", 0, ',');
+  EXPECT_EQ(quoted.cells, (Cells{"1", "x, \"y\"\r\nz\rw", " q ", "5\"6"}));
+  EXPECT_EQ(quoted.lines, 3);
+  EXPECT_FALSE(quoted.unclosed);
+  EXPECT_EQ(
+      next_csv_record("1,\"x, \"\"y\"\"\r\nz\rw\" , \" q \",5\"6\nrest", quoted.next, ',').cells,
+      Cells{"rest"});
+  EXPECT_EQ(next_csv_record("a;\"1,5\";b", 0, ';').cells, (Cells{"a", "1,5", "b"}));
+  EXPECT_EQ(next_csv_record("a\t\"b\tc\"", 0, '\t').cells, (Cells{"a", "b\tc"}));
+  const CsvRecord open = next_csv_record("a,\"b\nc", 0, ',');
+  EXPECT_TRUE(open.unclosed);
+  EXPECT_EQ(open.next, 6u);  // the end of the text
+  EXPECT_EQ(open.cells, (Cells{"a", "b\nc"}));
+}
+
 TEST(TextLines, ANulByteIsNamedWithItsLine) {
   EXPECT_FALSE(nul_byte_problem("t,wx\n1,2\n").has_value());
   const std::string tail = " (not a text file: a binary file, or text saved as UTF-16)";

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <optional>
@@ -224,6 +225,130 @@ TEST(Recording, ReadsAWhitespaceSeparatedExportWithCommentsAndAUnicodeHeader) {
   const double degree = 3.14159265358979323846 / 180.0;
   expect_samples(parse_gyro_csv(
       text_export(written, "t (s)  ωₓ (°/s)  ωᵧ (°/s)  ω_z (°/s)", degree), "phone.txt", "phone"));
+}
+
+// A gyroscope app's text export as it writes it: its header the last '#' comment before the
+// numbers, a time without its unit (seconds), ω's axes with modifier-letter and subscript
+// names (ₓ U+2093, ᵧ U+1D67, ᶻ U+1DBB) and a fifth column, |ω|, checked against the three
+// axes (it was "not a gyroscope recording").
+TEST(Recording, ATextExportWithItsHeaderInACommentAndATotalColumnIsRead) {
+  const test::SyntheticRecording written = small_recording();
+  const auto with_total = [&](double total_scale) {
+    std::string text = "#time  ωₓ (rad/s)  ωᵧ (rad/s)  ωᶻ (rad/s)  ω_total (rad/s)\n";
+    char row[200];
+    for (std::size_t i = 0; i < written.t.size(); ++i) {
+      const Eigen::Vector3d& w = written.omega[i];
+      std::snprintf(row, sizeof row, "%.6f\t%.5f\t%.5f\t%.5f\t%.5f\n", written.t[i], w[0], w[1],
+                    w[2], total_scale * w.norm());
+      text += row;
+    }
+    return text;
+  };
+  const GyroRecording read = parse_gyro_csv(with_total(1.0), "phone.txt", "phone");
+  ASSERT_EQ(read.t.size(), written.t.size());
+  for (std::size_t i = 0; i < read.t.size(); i += 7) {
+    EXPECT_NEAR(read.t[i], written.t[i], 1e-6);
+    EXPECT_LT((read.omega[i] - written.omega[i]).norm(), 1e-4);
+  }
+  // |ω| that is not the three axes' (another unit, another column): refused at its first row.
+  const std::string wrong = error_of(with_total(180.0 / M_PI));
+  EXPECT_EQ(wrong.rfind("bad.csv:2: ω_total (rad/s): |ω| is ", 0), 0u) << wrong;
+  EXPECT_NE(wrong.find("the columns do not hold what the header says"), std::string::npos) << wrong;
+  // The same header as a line of its own, and as a comment before a comment.
+  EXPECT_EQ(error_of("time  ωₓ (rad/s)  ωᵧ (rad/s)  ωᶻ (rad/s)  ω_total (rad/s)\n" +
+                     std::string("0.1 1 2 2 3\n0.2 1 2 2 3\n")),
+            "bad.csv: a gyroscope recording of 2 samples; at least 10 are needed");
+  EXPECT_EQ(error_of("# app v2\n#time  ωₓ (rad/s)  ωᵧ (rad/s)  ωᶻ (rad/s)\n0.1 1 2 2\n"),
+            "bad.csv: a gyroscope recording of 1 samples; at least 10 are needed");
+  // A fifth column that is not |ω| is not read as it.
+  EXPECT_NE(error_of("#time  ωₓ (rad/s)  ωᵧ (rad/s)  ωᶻ (rad/s)  T (K)\n" + rows(10))
+                .find("not a gyroscope recording"),
+            std::string::npos);
+}
+
+// One axis in °/s beside two in rad/s (a column converted by hand under phyphox's header, or a
+// text export's) is named at reading, by the |ω| column the export writes beside the axes:
+// taken in °/s, that axis makes the norm agree (it ended in "the fit did not converge").
+TEST(Recording, MixedUnitsAreNamedAtReadingByTheNormColumn) {
+  const test::SyntheticRecording written = small_recording();
+  for (int axis = 0; axis < 3; ++axis) {
+    test::SyntheticRecording mixed = written;
+    for (Eigen::Vector3d& w : mixed.omega) w[axis] *= 180.0 / M_PI;
+    std::string text = test::raw_data_csv(mixed, test::Dialect::comma);
+    // The Absolute column as the phone wrote it: the norm in rad/s.
+    std::string fixed;
+    std::size_t at = 0;
+    for (std::size_t row = 0; at < text.size(); ++row) {
+      const std::size_t end = text.find('\n', at);
+      std::string line = text.substr(at, end - at);
+      if (row > 0) {
+        char cell[64];
+        std::snprintf(cell, sizeof cell, "%.9E", written.omega[row - 1].norm());
+        line = line.substr(0, line.rfind(',') + 1) + cell;
+      }
+      fixed += line + "\n";
+      at = end + 1;
+    }
+    const std::string error = error_of(fixed);
+    const std::string column = std::string("Gyroscope ") + "xyz"[axis] + " (rad/s)";
+    EXPECT_NE(error.find("mixed units? " + column + " holds °/s, not the unit its header says"),
+              std::string::npos)
+        << error;
+    EXPECT_EQ(error.rfind("bad.csv:", 0), 0u) << error;
+  }
+  // The export as written reads.
+  EXPECT_EQ(parse_gyro_csv(test::raw_data_csv(written, test::Dialect::semicolon), "ok.csv", "ok")
+                .t.size(),
+            written.t.size());
+}
+
+// Stamps a double cannot tell apart (1e15 + 0.011, 1e15 + 0.021: both read as 1e15, whose step
+// is 0.125 s) are refused saying so: they do increase, in the file. Stamps that truly repeat or
+// go back, however written, are "time does not increase".
+TEST(Recording, StampsADoubleCannotTellApartAreRefusedSayingSo) {
+  std::string text = "t,wx,wy,wz\n";
+  for (int i = 0; i < 8; ++i)
+    text += "1000000000000000.0" + std::to_string(11 + 10 * i) + ",1,2,3\n";
+  EXPECT_EQ(error_of(text),
+            "bad.csv:3: t: time 1000000000000000.021 is after the previous row's "
+            "1000000000000000.011 in the file, but a double cannot tell them apart: both read as "
+            "1e+15 s, where a double's step is 0.125 s (subtract the first time from every time, "
+            "or write them as offsets)");
+  EXPECT_NE(error_of("t,wx,wy,wz\n1e15,1,2,3\n1.00000000000000001e15,1,2,3\n")
+                .find("a double cannot tell them apart"),
+            std::string::npos);
+  for (const char* later : {"0.5", "0.50", "5e-1", "0.4999", "-0.6"})
+    EXPECT_EQ(error_of("t,wx,wy,wz\n0.5,1,2,3\n" + std::string(later) + ",1,2,3\n"),
+              "bad.csv:3: t: time does not increase (" + std::string(later) +
+                  " after the previous row's)")
+        << later;
+  // A decimal comma's stamps compared as written too.
+  EXPECT_NE(error_of("t;wx;wy;wz\n1000000000000000,011;1;2;3\n1000000000000000,021;1;2;3\n")
+                .find("a double cannot tell them apart"),
+            std::string::npos);
+}
+
+// Quoted cells as RFC 4180 reads them: a header's names, and meta/device.csv's cells holding
+// the separator ("BMI160, Bosch") before its range row.
+TEST(Recording, QuotedCellsAreReadAsACsvReaderReadsThem) {
+  const GyroRecording read = parse_gyro_csv(
+      "\"t\",\"wx\",\"wy\",\"wz\"\n" + rows(9) + "\"0.5\",\"1\",\" 2 \",3\n", "q.csv", "q");
+  ASSERT_EQ(read.t.size(), 10u);
+  EXPECT_EQ(read.omega[9], Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(
+      parse_device_csv("\"property\",\"value\"\n\"gyroscope Name\",\"BMI160, \"\"Bosch\"\"\"\n"
+                       "\"gyroscope\nRemark\",\"two, lines\"\n\"gyroscope Range\",\"34.906586\"\n",
+                       "device.csv"),
+      34.906586);
+  try {
+    parse_device_csv("\"property\",\"value\"\n\"a\",\"b\n\"gyroscope Range\",\"34.9\"\"\n",
+                     "device.csv");
+    ADD_FAILURE() << "an unclosed quote was read";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "device.csv:2: a quoted cell opens on this row and is not closed by the end of "
+                 "the file");
+  }
 }
 
 // A whitespace-separated table it cannot read is refused naming that dialect and what it expects.

@@ -3,9 +3,13 @@
 // are counted by hand: a toss needs 10 samples, never spans a pause, never shares an instant.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
+#include <tuple>
 
 #include "common/errors.hpp"
+#include "fit/fit_options.hpp"
 #include "fit/flights.hpp"
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
@@ -75,9 +79,107 @@ TEST(TossRanges, TextThatIsNotRangesIsOneLineNamingTheOption) {
   EXPECT_EQ(parse_error("1:2,"), "--tosses: \"\" is not START:END");
   EXPECT_EQ(parse_error("1:2, 3"), "--tosses: \"3\" is not START:END");
   EXPECT_EQ(parse_error(":2"), "--tosses: \"\" is not a number");
-  EXPECT_EQ(parse_error("nan:2"), "--tosses: \"nan\" is not a number");
-  EXPECT_EQ(parse_error("1:inf"), "--tosses: \"inf\" is not a number");
-  EXPECT_EQ(parse_error("1,5:2", "flights by hand"), "flights by hand: \"1\" is not START:END");
+  EXPECT_EQ(parse_error("nan:2"), "--tosses: \"nan\" is not a finite time (s)");
+  EXPECT_EQ(parse_error("1:inf"), "--tosses: \"inf\" is not a finite time (s)");
+  EXPECT_EQ(parse_error("1:1e309"), "--tosses: \"1e309\" is not a number");
+  EXPECT_EQ(parse_error("1,5:2", "flights by hand"),
+            "flights by hand: \"1\" is not START:END (a decimal comma? write 1.5:2)");
+}
+
+// A decimal comma (a French or German student's "2,93") splits a number in two: the line says
+// so and gives the text meant; where no such reading makes sense there is no hint.
+TEST(TossRanges, ADecimalCommaIsNamedWithTheTextMeant) {
+  EXPECT_EQ(parse_error("2,93:3,58", "flights by hand"),
+            "flights by hand: \"2\" is not START:END (a decimal comma? write 2.93:3.58)");
+  EXPECT_EQ(parse_error(" 1,82 : 2,71 , 2,88:3,22"),
+            "--tosses: \"1\" is not START:END (a decimal comma? write 1.82 : 2.71 , 2.88:3.22)");
+  EXPECT_EQ(parse_error("2,93"), "--tosses: \"2\" is not START:END");  // 2.93 is no range
+  EXPECT_EQ(parse_error("1:2,a"), "--tosses: \"a\" is not START:END");
+  EXPECT_EQ(parse_toss_ranges("1:2,3:4"), (Ranges{{1.0, 2.0}, {3.0, 4.0}}));  // commas between
+}
+
+// Ranges given as numbers (Python's pairs) meet the same judge as the text's: an end that is
+// not finite is refused as such, whichever end and whichever door, before the recording is
+// looked at (2.0:inf fitted 2.0–8.52 s through the landing; nan:2.9 was "the end is not after
+// the start").
+TEST(TossRanges, AnEndThatIsNotFiniteIsRefusedAsSuchByEveryDoor) {
+  const GyroRecording recording = hundred_samples();
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const Reader reader : {Reader::command_line, Reader::page, Reader::python}) {
+    const std::string name = tosses_name(reader);
+    const auto hand_error = [&](const Ranges& ranges) {
+      try {
+        hand_flights(recording, ranges, name);
+      } catch (const InputError& e) {
+        return std::string(e.what());
+      }
+      return std::string("no error");
+    };
+    EXPECT_EQ(hand_error({{0.2, inf}}), name + ": \"inf\" is not a finite time (s)");
+    EXPECT_EQ(hand_error({{nan, 0.29}}), name + ": \"nan\" is not a finite time (s)");
+    EXPECT_EQ(hand_error({{0.1, 0.3}, {-inf, 0.05}}), name + ": \"-inf\" is not a finite time (s)");
+    // The text says the same for the same values.
+    EXPECT_EQ(parse_error("0.2:inf", name), hand_error({{0.2, inf}}));
+    EXPECT_EQ(parse_error("nan:0.29", name), hand_error({{nan, 0.29}}));
+  }
+  EXPECT_EQ(tosses_name(Reader::python), std::string("tosses"));
+}
+
+// A time far beyond the recording is refused with its few digits, not 309 of them.
+TEST(TossRanges, AHugeTimeIsPrintedInItsShortestForm) {
+  const GyroRecording recording = hundred_samples();
+  EXPECT_EQ(error_of(recording, {{1e308, 1.5e308}}),
+            "--tosses 1e+308:1.5e+308: 0 samples of hand.csv in it; a toss needs at least 10");
+  EXPECT_EQ(error_of(recording, {{1e308, 1e307}}),
+            "--tosses 1e+308:1e+307: the end is not after the start");
+  EXPECT_EQ(toss_time_text(2.93), "2.930");
+  EXPECT_EQ(toss_time_text(-999999.5), "-999999.500");
+  EXPECT_EQ(toss_time_text(1234567.25), "1234567.25");
+}
+
+// The fit's other options that the command line and Python both take, read and judged by one
+// reader each (fit_options.hpp), naming each door's argument.
+TEST(FitOptions, MomentsAndDragAreJudgedAlikeNamingEachDoorsArgument) {
+  const auto moments_error = [](const std::string& text, const std::string& name) {
+    try {
+      parse_moments(text, name);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const auto values_error = [](const Eigen::Vector3d& m, const std::string& name) {
+    try {
+      check_moments(m, name);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(parse_moments(" 1, 2.5 ,3e0", "--moments"), Eigen::Vector3d(1, 2.5, 3));
+  EXPECT_EQ(moments_error("1,2", "--moments"), "--moments: expected I1,I2,I3");
+  EXPECT_EQ(moments_error("1,a,3", "--moments"), "--moments: \"a\" is not a number");
+  for (const auto& [text, values, cause] :
+       std::initializer_list<std::tuple<const char*, Eigen::Vector3d, const char*>>{
+           {"1,2,-1", {1, 2, -1}, "\"-1\" is not a positive finite number"},
+           {"0,2,3", {0, 2, 3}, "\"0\" is not a positive finite number"},
+           {"1,inf,3", {1, HUGE_VAL, 3}, "\"inf\" is not a positive finite number"},
+           {"nan,2,3", {std::nan(""), 2, 3}, "\"nan\" is not a positive finite number"}}) {
+    EXPECT_EQ(moments_error(text, "--moments"), std::string("--moments: ") + cause) << text;
+    EXPECT_EQ(values_error(values, "moments"), std::string("moments: ") + cause) << text;
+  }
+  EXPECT_EQ(values_error({1e-300, 1, 1e300}, "moments"), "no error");
+  EXPECT_EQ(parse_drag_option("quadratic", "drag"), physics::DragLaw::quadratic);
+  for (const Reader reader : {Reader::command_line, Reader::page, Reader::python}) {
+    const std::string name = fit_option_names(reader).drag;
+    try {
+      parse_drag_option("cubic", name);
+      ADD_FAILURE() << "cubic was taken";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), name + ": \"cubic\" is not none, linear or quadratic");
+    }
+  }
 }
 
 // "2:1" is read (it is two numbers); the recording's judge refuses it as reversed, naming the

@@ -166,6 +166,30 @@ TEST(MotionCsv, AHeaderQuotedAsRsWriteCsvWritesItIsRead) {
   EXPECT_EQ(m.rows[1].omega_body, Eigen::Vector3d(1, 2, 3));
 }
 
+// Quoted cells as RFC 4180 reads them (R's write.csv, spreadsheets): an ignored text column
+// whose cell holds commas, doubled quotes or a line end is one cell (it was "10 cells where the
+// header has 9"), a quoted number is that number, and the rows after a cell of two lines keep
+// their line numbers in messages.
+TEST(MotionCsv, AQuotedCellHoldingCommasQuotesOrALineEndIsOneCell) {
+  const std::string head = "t,qw,qx,qy,qz,wx,wy,wz,note\n";
+  const MotionFile m = parse_motion_csv(
+      head + "0,1,0,0,0,1,2,3,\"spun, then caught\"\n" +
+          "0.1,1,0,0,0,1,2,3,\"she said \"\"again, faster\"\"\"\n" +
+          "\"0.2\",1,0,0,0,1,\" 2.5 \",3,\"two\nlines, here\"\n0.3,1,0,0,0,1,2,3,\n",
+      "run.csv", 0.1, 10);
+  ASSERT_EQ(m.rows.size(), 4u);
+  EXPECT_EQ(m.rows[2].step, 2);
+  EXPECT_EQ(m.rows[2].omega_body, Eigen::Vector3d(1, 2.5, 3));
+  EXPECT_EQ(m.rows[3].step, 3);
+  // The row after the two-line cell is line 6 of the file.
+  EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,\"a\nb\"\n0.1,1,0,0,0,1,x,3,c\n"),
+            "run.csv:4: wy: \"x\" is not a finite number");
+  EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,\"a, b\n0.1,1,0,0,0,1,2,3,c\n"),
+            "run.csv:2: a quoted cell opens on this row and is not closed by the end of the file");
+  // A comma outside quotes is still a separator.
+  EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,a,b\n"), "run.csv:2: 10 cells where the header has 9");
+}
+
 // A column the motion is read from, named twice, is refused: which is meant cannot be told
 // (the first was taken silently).
 TEST(MotionCsv, AColumnNamedTwiceIsRefusedNamingIt) {

@@ -217,7 +217,7 @@ def test_bad_input_raises_the_command_lines_error(bookspin, tmp_path):
         bookspin.fit((np.arange(20) * 0.01, omega.astype(complex)))
     with pytest.raises(bookspin.Error, match="drag"):
         bookspin.fit(SAMPLE, drag="cubic")
-    with pytest.raises(bookspin.Error, match=r"moments\[1\]"):
+    with pytest.raises(bookspin.Error, match=r"^moments: \"-2\" is not a positive finite number$"):
         bookspin.fit(SAMPLE, moments=[1.0, -2.0, 3.0])
     with pytest.raises(bookspin.Error, match="no free flight found"):
         bookspin.fit((np.arange(50) * 0.01, np.zeros((50, 3))))
