@@ -39,7 +39,8 @@ std::string predicted_words(const TossFit& t) {
          " s" +
          (t.predicted_window
               ? " from its first " + finite_text(*t.predicted_window, "predicted_window") + " s"
-              : "");
+              : "") +
+         (t.prediction_interval.empty() ? "" : " (" + t.prediction_interval + ")");
 }
 
 }  // namespace
@@ -55,6 +56,8 @@ CsvTable fit_toss_csv(const FitResult& fit) {
                   "half_period_fitted",
                   "half_period_predicted",
                   "half_period_predicted_sigma",
+                  "half_period_propagated_sigma",
+                  "prediction_interval",
                   "predicted_from_tosses",
                   "predicted_from_seconds",
                   "predicted_window",
@@ -86,6 +89,8 @@ CsvTable fit_toss_csv(const FitResult& fit) {
          shortest_cell(t.half_period_fitted),
          shortest_cell(t.half_period_predicted),
          shortest_cell(t.half_period_predicted_sigma),
+         shortest_cell(t.half_period_predicted ? t.half_period_propagated_sigma : std::nullopt),
+         t.prediction_interval,
          t.predicted_from_tosses ? std::to_string(*t.predicted_from_tosses) : std::string(),
          shortest_cell(t.predicted_from_seconds),
          shortest_cell(t.predicted_window),
