@@ -153,6 +153,7 @@ fit::GyroRecording recording_arg(const py::object& recording) {
 fit::FitRequest request_arg(const std::string& drag, const py::object& tosses,
                             const py::object& moments) {
   fit::FitRequest request;
+  request.reader = fit::Reader::python;  // its refusals name tosses=, not --tosses
   if (!physics::parse_drag_law(drag, request.settings.drag))
     throw InputError("drag: \"" + drag + "\" is not none, linear or quadratic");
   if (!tosses.is_none())

@@ -23,9 +23,10 @@ CsvTable fit_toss_csv(const FitResult& fit);
 /// where neither).
 CsvTable fit_body_csv(const FitResult& fit);
 
-/// Who reads the summary: the command line's user, or the explorer page's lab's, who has no
-/// command-line options to give (its remedies are said in the page's terms).
-enum class Reader { command_line, page };
+/// Who reads the summary: the command line's user, the explorer page's lab's, who has no
+/// command-line options to give (its remedies are said in the page's terms), or the Python
+/// module's (bookspin.fit: its keyword arguments; otherwise the command line's words).
+enum class Reader { command_line, page, python };
 
 /// What the fit says besides its CSVs: the bias, the flights kept, the stretches dropped (one
 /// line per reason with their count, a reason given once with its stretch's times:

@@ -29,9 +29,22 @@ struct FitRequest {
 };
 
 /// How an error line names the flights by hand (parse_toss_ranges, hand_flights): the command
-/// line's option, or the explorer lab's field ("Flights by hand (s)").
+/// line's option, the explorer lab's field ("Flights by hand (s)"), or the Python module's
+/// keyword argument.
 inline const char* tosses_name(Reader reader) {
-  return reader == Reader::page ? "flights by hand" : "--tosses";
+  return reader == Reader::page     ? "flights by hand"
+         : reader == Reader::python ? "tosses="
+                                    : "--tosses";
+}
+
+/// What the finder's refusal ("no free flight found", throw_no_flight) offers, in the door's
+/// terms: the flights named by hand.
+inline const char* hand_flights_remedy(Reader reader) {
+  return reader == Reader::page ? "name the flights in the \"Flights by hand (s)\" field "
+                                  "(START:END, seconds)"
+         : reader == Reader::python
+             ? "name the flights by hand with tosses=[(START, END), ...] (seconds)"
+             : "name the flights by hand with --tosses START:END[,START:END...] (seconds)";
 }
 
 /// One toss's chart as values (charts::toss_image draws it; docs/phone-lab.md, "Reading the
