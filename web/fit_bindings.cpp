@@ -12,6 +12,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -251,7 +252,10 @@ val fit_recordings(const val& files, const std::string& drag, const std::string&
     clear_memory();
     const int count = files["length"].as<int>();
     std::vector<fit::GyroRecording> read;
-    val fitted = val::array(), refused = val::array();
+    // The names fitted and refused in their sorted order, as the pool is a set (fit::
+    // pool_recordings): a folder dropped gives its files in the browser's order.
+    std::vector<std::string> fitted_names;
+    std::vector<std::pair<std::string, std::string>> refused_lines;
     std::string first_error;
     for (int i = 0; i < count; ++i) {
       const std::string name = files[i]["name"].as<std::string>();
@@ -263,14 +267,21 @@ val fit_recordings(const val& files, const std::string& drag, const std::string&
                             given[m]["bytes"].as<std::string>());
       try {
         read.push_back(read_given(name, files[i]["bytes"].as<std::string>(), i, meta));
-        fitted.call<void>("push", name);
+        fitted_names.push_back(name);
       } catch (const InputError& e) {
-        if (first_error.empty()) first_error = e.what();
-        val line = val::object();
-        line.set("file", name);
-        line.set("error", std::string(e.what()));
-        refused.call<void>("push", line);
+        refused_lines.emplace_back(name, e.what());
       }
+    }
+    std::sort(fitted_names.begin(), fitted_names.end());
+    std::sort(refused_lines.begin(), refused_lines.end());
+    if (!refused_lines.empty()) first_error = refused_lines.front().second;
+    val fitted = val::array(), refused = val::array();
+    for (const std::string& name : fitted_names) fitted.call<void>("push", name);
+    for (const auto& [name, error] : refused_lines) {
+      val line = val::object();
+      line.set("file", name);
+      line.set("error", error);
+      refused.call<void>("push", line);
     }
     if (read.empty()) throw InputError(count ? first_error : "no recording given");
     val out = report_value(fit::pool_recordings(read), law, ranges);

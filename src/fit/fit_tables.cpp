@@ -1,6 +1,8 @@
 #include "fit/fit_tables.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <sstream>
 
 #include "common/number_text.hpp"
@@ -39,10 +41,68 @@ std::string predicted_words(const TossFit& t) {
          " s" +
          (t.predicted_window
               ? " from its first " + finite_text(*t.predicted_window, "predicted_window") + " s"
-              : "");
+              : "") +
+         (t.prediction_interval.empty() ? "" : " (" + t.prediction_interval + ")");
+}
+
+/// A cell of the result table, padded to `width` characters (UTF-8 counted by code points).
+std::string padded(const std::string& text, std::size_t width) {
+  std::size_t points = 0;
+  for (unsigned char c : text) points += (c & 0xC0) != 0x80;
+  return text + std::string(points < width ? width - points : 0, ' ');
 }
 
 }  // namespace
+
+std::vector<std::string> fit_result_lines(const FitResult& fit) {
+  struct Row {
+    std::string toss, recording, times, measured, predicted, within;
+  };
+  std::vector<Row> rows{{"toss", "recording", "flight (s)", "T/2 measured (s)",
+                         "T/2 predicted ± 2σ (s)", "within 2σ"}};
+  for (std::size_t k = 0; k < fit.tosses.size(); ++k) {
+    const TossFit& t = fit.tosses[k];
+    const RecordingPart& part = part_at(fit.parts, t.flight.t_start);
+    Row row;
+    row.toss = std::to_string(k + 1);
+    row.recording = part.name;
+    row.times =
+        fixed(t.flight.t_start - part.t_offset, 3) + "–" + fixed(t.flight.t_end - part.t_offset, 3);
+    row.measured = t.half_period_measured ? fixed(*t.half_period_measured, 3) : "–";
+    if (!t.half_period_predicted) {
+      row.predicted = "not predicted";
+      row.within = "–";
+    } else if (!t.half_period_predicted_sigma) {
+      row.predicted = fixed(*t.half_period_predicted, 3) + " (uncalibrated)";
+      row.within = "–";
+    } else {
+      row.predicted = plus_minus(*t.half_period_predicted, 2.0 * *t.half_period_predicted_sigma);
+      row.within = !t.half_period_measured ? "–"
+                   : std::abs(*t.half_period_measured - *t.half_period_predicted) <=
+                           2.0 * *t.half_period_predicted_sigma
+                       ? "yes"
+                       : "no";
+    }
+    rows.push_back(row);
+  }
+  std::array<std::size_t, 6> width{};
+  const auto points = [](const std::string& text) {
+    std::size_t n = 0;
+    for (unsigned char c : text) n += (c & 0xC0) != 0x80;
+    return n;
+  };
+  for (const Row& r : rows) {
+    const std::array<const std::string*, 6> cells{&r.toss,     &r.recording, &r.times,
+                                                  &r.measured, &r.predicted, &r.within};
+    for (std::size_t c = 0; c < 6; ++c) width[c] = std::max(width[c], points(*cells[c]));
+  }
+  std::vector<std::string> lines;
+  for (const Row& r : rows)
+    lines.push_back("  " + padded(r.toss, width[0]) + "  " + padded(r.recording, width[1]) + "  " +
+                    padded(r.times, width[2]) + "  " + padded(r.measured, width[3]) + "  " +
+                    padded(r.predicted, width[4]) + "  " + r.within);
+  return lines;
+}
 
 CsvTable fit_toss_csv(const FitResult& fit) {
   CsvTable table{{"toss",
@@ -55,6 +115,8 @@ CsvTable fit_toss_csv(const FitResult& fit) {
                   "half_period_fitted",
                   "half_period_predicted",
                   "half_period_predicted_sigma",
+                  "half_period_propagated_sigma",
+                  "prediction_interval",
                   "predicted_from_tosses",
                   "predicted_from_seconds",
                   "predicted_window",
@@ -86,6 +148,8 @@ CsvTable fit_toss_csv(const FitResult& fit) {
          shortest_cell(t.half_period_fitted),
          shortest_cell(t.half_period_predicted),
          shortest_cell(t.half_period_predicted_sigma),
+         shortest_cell(t.half_period_predicted ? t.half_period_propagated_sigma : std::nullopt),
+         t.prediction_interval,
          t.predicted_from_tosses ? std::to_string(*t.predicted_from_tosses) : std::string(),
          shortest_cell(t.predicted_from_seconds),
          shortest_cell(t.predicted_window),
@@ -149,7 +213,11 @@ CsvTable fit_body_csv(const FitResult& fit) {
 }
 
 std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
-  std::vector<std::string> lines;
+  // The result first: each toss's measured half period against its prediction (fit_result_lines).
+  std::vector<std::string> lines{
+      "result (T/2 measured against T/2 predicted from the other "
+      "tosses, ± 2σ):"};
+  for (std::string& line : fit_result_lines(fit)) lines.push_back(std::move(line));
   // Each value to its σ's precision (common/number_text.hpp, plus_minus).
   const auto with_sigma = [](const Eigen::Vector3d& v, const Eigen::Vector3d& sigma) {
     return plus_minus(v[0], sigma[0]) + ", " + plus_minus(v[1], sigma[1]) + ", " +
@@ -174,15 +242,16 @@ std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
       std::string seconds;
       for (const auto& [a, b] : rest.stretches)
         seconds += (seconds.empty() ? "" : ", ") + fixed(a, 2) + "–" + fixed(b, 2);
-      lines.push_back("bias" + of + " (rad/s, the mean of " + std::to_string(rest.samples) +
-                      " samples where the phone lay still, " + seconds +
-                      " s, ± their scatter): " + with_sigma(rest.mean, rest.sigma));
+      // One line a recording: the rest's, and the bias in flight where its flights corrected it.
+      std::string line = "bias" + of + " (rad/s, the mean of " + std::to_string(rest.samples) +
+                         " samples where the phone lay still, " + seconds +
+                         " s, ± their scatter): " + with_sigma(rest.mean, rest.sigma);
       if (correction != Eigen::Vector3d::Zero())
-        lines.push_back("bias" + of + " in flight (rad/s): " + three(in_flight) +
-                        ", the still rest's corrected by " + own + " flights by " +
-                        three(correction) + " (within 3 standard errors of " +
-                        (one ? "the rest's" : "its rest's") + " mean and " + fixed(kBiasDrift, 3) +
-                        " rad/s of drift)");
+        line += "; in flight " + three(in_flight) + ", the still rest's corrected by " + own +
+                " flights by " + three(correction) + " (within 3 standard errors of " +
+                (one ? "the rest's" : "its rest's") + " mean and " + fixed(kBiasDrift, 3) +
+                " rad/s of drift)";
+      lines.push_back(line);
       return;
     }
     const std::string fitted = "no still stretch in " +

@@ -28,12 +28,21 @@ CsvTable fit_body_csv(const FitResult& fit);
 /// module's (the command line's remedies; its errors name its own arguments, fit_options.hpp).
 enum class Reader { command_line, page, python };
 
-/// What the fit says besides its CSVs: the bias, the flights kept, the stretches dropped (one
+/// What the fit says besides its CSVs: the result first (fit_result_lines: one table, measured
+/// against predicted), the bias (one line a recording), then the details: the flights kept, the
+/// stretches dropped (one
 /// line per reason with their count, a reason given once with its stretch's times:
 /// fit_dropped_lines lists every one), the body's moments and notes
 /// (one line each), for the command to print or the page to show. For the page, a note's
 /// remedy "give --moments I1,I2,I3" is said in the page's terms (kMomentsRemedyPage).
 std::vector<std::string> fit_summary(const FitResult& fit, Reader reader = Reader::command_line);
+
+/// The result as one table, the summary's first lines (a header, then a row a toss, columns
+/// aligned): toss, its recording, its flight (s, on its own recording's clock), T/2 measured,
+/// T/2 predicted ± 2σ (its calibrated σ: "0.478 ± 0.10"; "(uncalibrated)" with no interval; "not
+/// predicted"), and whether the measurement lies within 2σ ("yes", "no", "–" where either is
+/// missing). docs/phone-lab.md, "Reading the result".
+std::vector<std::string> fit_result_lines(const FitResult& fit);
 
 /// Every stretch of motion the finder dropped, a line each ("dropped NAME A–B s: why", on its
 /// own recording's clock): `bookspin fit --verbose` prints them, the page lists them apart.

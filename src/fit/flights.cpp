@@ -351,13 +351,15 @@ FlightSearch hand_flights(const GyroRecording& recording,
   return search;
 }
 
-[[noreturn]] void throw_no_flight(const GyroRecording& recording, const FlightSearch& search) {
+[[noreturn]] void throw_no_flight(const GyroRecording& recording, const FlightSearch& search,
+                                  const std::string& remedy) {
   std::string why;
   for (const DroppedStretch& d : search.dropped)
     why += (why.empty() ? " (" : "; ") + std::to_string(d.t_start) + "–" + std::to_string(d.t_end) +
            " s: " + d.reason;
   if (!why.empty()) why += ")";
-  throw InputError(recording.source + ": no free flight found" + why);
+  throw InputError(recording.source + ": no free flight found" + why +
+                   (remedy.empty() ? "" : "; " + remedy));
 }
 
 }  // namespace bookspin::fit

@@ -79,7 +79,9 @@ FlightSearch hand_flights(const GyroRecording& recording,
                           const std::string& option = "--tosses");
 
 /// Throws InputError "<source>: no free flight found", with why each of `search`'s stretches
-/// was dropped ("(t0–t1 s: reason; …)").
-[[noreturn]] void throw_no_flight(const GyroRecording& recording, const FlightSearch& search);
+/// was dropped ("(t0–t1 s: reason; …)"), then `remedy` where given ("…: name the flights by hand
+/// with --tosses …": the door's words, report.hpp's hand_flights_remedy).
+[[noreturn]] void throw_no_flight(const GyroRecording& recording, const FlightSearch& search,
+                                  const std::string& remedy = "");
 
 }  // namespace bookspin::fit

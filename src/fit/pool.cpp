@@ -1,7 +1,9 @@
 #include "fit/pool.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "common/errors.hpp"
 #include "fit/flights.hpp"
@@ -22,12 +24,37 @@ void check_not_twice(const GyroRecording& earlier, const GyroRecording& later) {
                      " (an export beside its own zip, or a copy), given twice");
 }
 
+/// The canonical order of a pool's recordings: by name, then (one name twice, from two
+/// folders) by their samples, first the count, then the times and ω read lexicographically. No
+/// two recordings given compare equal (check_not_twice refuses the same samples), so any order
+/// the recordings are given in sorts to one.
+bool canonical_before(const GyroRecording& a, const GyroRecording& b) {
+  if (a.name != b.name) return a.name < b.name;
+  if (a.t.size() != b.t.size()) return a.t.size() < b.t.size();
+  if (a.t != b.t) return a.t < b.t;
+  for (std::size_t i = 0; i < a.omega.size(); ++i) {
+    const Eigen::Vector3d &u = a.omega[i], &v = b.omega[i];
+    if (u != v) return std::tie(u[0], u[1], u[2]) < std::tie(v[0], v[1], v[2]);
+  }
+  return a.source < b.source;
+}
+
 }  // namespace
 
-GyroRecording pool_recordings(const std::vector<GyroRecording>& recordings) {
-  if (recordings.empty()) throw InputError("pooling recordings: give one or more");
-  for (std::size_t a = 0; a < recordings.size(); ++a)
-    for (std::size_t b = 0; b < a; ++b) check_not_twice(recordings[b], recordings[a]);
+GyroRecording pool_recordings(const std::vector<GyroRecording>& given) {
+  if (given.empty()) throw InputError("pooling recordings: give one or more");
+  for (std::size_t a = 0; a < given.size(); ++a)
+    for (std::size_t b = 0; b < a; ++b) check_not_twice(given[b], given[a]);
+  // A pool is a set: its recordings in their canonical order, whatever order they were given
+  // in (a command line's, a dropped folder's), so that every toss, number and name is the same.
+  std::vector<const GyroRecording*> order;
+  for (const GyroRecording& recording : given) order.push_back(&recording);
+  std::sort(order.begin(), order.end(), [](const GyroRecording* a, const GyroRecording* b) {
+    return canonical_before(*a, *b);
+  });
+  std::vector<GyroRecording> recordings;
+  recordings.reserve(order.size());
+  for (const GyroRecording* recording : order) recordings.push_back(*recording);
   GyroRecording pooled;
   const std::size_t more = recordings.size() - 1;
   pooled.name = recordings.front().name;

@@ -14,8 +14,11 @@ namespace bookspin::fit {
 /// says where each one went and holds its bias. Its flights are then found (find_flights) and
 /// fitted (fit_recording): every toss with one body, each keeping its own drag rate and each
 /// recording its own bias correction from its own flights; with two or more, the tables name
-/// each toss's recording and give its own times (fit_tables.hpp). One recording keeps its name
-/// and times; several are named after the first, "<first>-and-<N−1>-more". Throws InputError
+/// each toss's recording and give its own times (fit_tables.hpp). A pool is a set: the
+/// recordings are laid out in their canonical order (by name, then by their samples), whatever
+/// order they are given in, so that any order gives the same tosses, numbers and names to the
+/// last digit (docs/phone-lab.md, "A class's recordings"). One recording keeps its name and
+/// times; several are named after the first by name, "<first>-and-<N−1>-more". Throws InputError
 /// for none, or one given twice: the same source, the same file however spelled
 /// (GyroRecording::file), or the same samples (an export beside its own zip).
 GyroRecording pool_recordings(const std::vector<GyroRecording>& recordings);

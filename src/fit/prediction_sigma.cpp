@@ -153,12 +153,30 @@ Prediction predict_half_period(const TossData& d, const Parameters& body,
                   options.window);
     return {{}, {}, {}, why};
   }
-  const double width = 2.0 * sigma->total() / *half;
-  if (width <= kWidestInterval) return {half, sigma->total(), options.window, ""};
+  Prediction prediction;
+  prediction.propagated_half = half;
+  prediction.propagated_sigma = sigma->total();
+  prediction.largest = sigma->largest();
+  prediction.propagated_window = options.window;
+  prediction.withheld = withheld_for_width(*half, sigma->total(), options.window, sigma->largest());
+  if (prediction.withheld.empty()) {
+    prediction.half = half;
+    prediction.sigma = sigma->total();
+    prediction.window = options.window;
+  }
+  return prediction;
+}
+
+std::string withheld_for_width(double half, double sigma, double window, const char* largest,
+                               const std::string& how) {
+  const double width = 2.0 * sigma / half;
+  if (width <= kWidestInterval) return "";
+  char why[300];
   std::snprintf(why, sizeof why,
-                "interval ±%.0f %% (2σ/T, mostly %s) from its first %g s, over the ±%.0f %% shown",
-                100.0 * width, sigma->largest(), options.window, 100.0 * kWidestInterval);
-  return {{}, {}, {}, why};
+                "interval ±%.0f %% (2σ/T, mostly %s%s) from its first %g s, over the ±%.0f %% "
+                "shown",
+                100.0 * width, largest, how.c_str(), window, 100.0 * kWidestInterval);
+  return why;
 }
 
 }  // namespace bookspin::fit

@@ -81,7 +81,20 @@ struct Prediction {
   std::optional<double> half, sigma;
   std::optional<double> window;  ///< s: the first seconds of the toss it was predicted from
   std::string withheld;          ///< "" where shown: else why not (one phrase)
+  /// T/2 and its propagated σ (s) wherever both could be computed, shown or withheld for its
+  /// width: what the calibration by the other tosses takes (prediction_calibration.hpp); the
+  /// largest term of the σ and the window (s) with them.
+  std::optional<double> propagated_half, propagated_sigma;
+  const char* largest = "";
+  double propagated_window = 0.0;
 };
+
+/// The withholding rule on a σ (s) of T/2 `half` (s) from the first `window` s: "" where its
+/// interval 2σ/T is within kWidestInterval, else why not ("interval ±63 % (2σ/T, mostly the
+/// body's σ) from its first 0.2 s, over the ±25 % shown"); `how` (optional) says how σ was
+/// calibrated, after "mostly …".
+std::string withheld_for_width(double half, double sigma, double window, const char* largest,
+                               const std::string& how = "");
 
 /// Predicts toss `d`'s T/2 from `body` (the held-out body and drag rate, ω0 its start; options:
 /// the body held, options.window the window) with its σ; withheld, with why, where its interval

@@ -82,6 +82,9 @@ FitReport fit_report(const GyroRecording& recording, const FitRequest& request,
   const FlightSearch search = request.tosses.empty()
                                   ? find_flights(recording)
                                   : hand_flights(recording, request.tosses, tosses);
+  // Nothing found: why, in the data's terms, and how to name the flights by hand at this door.
+  if (search.flights.empty())
+    throw_no_flight(recording, search, hand_flights_remedy(request.reader));
   FitReport report;
   report.recording = recording.name;
   report.source = recording.source;

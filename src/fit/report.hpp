@@ -34,6 +34,16 @@ struct FitRequest {
 /// (fit_option_names).
 inline const char* tosses_name(Reader reader) { return fit_option_names(reader).tosses; }
 
+/// What the finder's refusal ("no free flight found", throw_no_flight) offers, in the door's
+/// terms: the flights named by hand.
+inline const char* hand_flights_remedy(Reader reader) {
+  return reader == Reader::page ? "name the flights in the \"Flights by hand (s)\" field "
+                                  "(START:END, seconds)"
+         : reader == Reader::python
+             ? "name the flights by hand with tosses=[(START, END), ...] (seconds)"
+             : "name the flights by hand with --tosses START:END[,START:END...] (seconds)";
+}
+
 /// One toss's chart as values (charts::toss_image draws it; docs/phone-lab.md, "Reading the
 /// result").
 struct TossChart {

@@ -12,6 +12,7 @@
 #include "fit/flight_trim.hpp"
 #include "fit/half_period.hpp"
 #include "fit/pool.hpp"
+#include "fit/prediction_calibration.hpp"
 #include "fit/prediction_sigma.hpp"
 #include "fit/saturation.hpp"
 #include "fit/toss_flags.hpp"
@@ -29,6 +30,12 @@ constexpr double kPi = 3.14159265358979323846;
 /// s: a prediction whose held-out body rests on less flight time than this (a bounce, not a
 /// throw) is said to be poorly founded.
 constexpr double kShortBasis = 0.6;
+
+/// s: the least a flight's end may lie off where it was put (the finder's torque window and the
+/// trim's residual judge it to a few samples at 100 Hz: docs/phone-lab.md, "Error bars").
+constexpr double kEndUncertainty = 0.02;
+/// The most of a flight an end is moved in by to weigh its placement.
+constexpr double kEndShare = 0.15;
 
 /// Each flight's samples, its recording's bias removed, its times from its start; the samples
 /// where the gyroscope read its range left out (docs/phone-lab.md, "Saturation") unless too few
@@ -108,7 +115,8 @@ BiasFreedom bias_freedom(const std::vector<RecordingPart>& parts, const std::vec
 /// docs/phone-lab.md, "Drag": held, not bounded, since a bound that a rate meets from its start
 /// at 0 stalled Ceres's bounded steps far from the fit). Throws InputError when a stage fails.
 Solved joint_fit(const std::vector<TossData>& data, Parameters& p, const BiasFreedom& bias,
-                 const FitSettings& settings, const std::string& source) {
+                 const FitSettings& settings, const std::string& source,
+                 std::vector<bool>& rate_held) {
   const bool fixed = settings.moments.has_value();
   const physics::DragLaw law = settings.drag;
   const auto failed = [&] {
@@ -158,6 +166,7 @@ Solved joint_fit(const std::vector<TossData>& data, Parameters& p, const BiasFre
       solved = solve(data, p, full);
       if (!solved.usable) throw failed();
     }
+    rate_held = full.rate_held;
   }
   return solved;
 }
@@ -308,11 +317,96 @@ void widen_by_folds(const Folds& folds, bool fixed, BodyEstimate& body) {
   body.axis_sigma_deg = body.axis_sigma_deg->cwiseMax((factor * turn2).cwiseSqrt());
 }
 
+/// How far each flight's ends may lie from where the finder put them (docs/phone-lab.md, "Error
+/// bars"): per toss, s, the start's and the end's.
+struct EndShifts {
+  std::vector<double> start, end;
+};
+
+/// Each end's uncertainty: the larger of kEndUncertainty and how far the trim moved it from the
+/// finder's end (`found`, the flights as the finder gave them, of which `flights` are trimmed
+/// copies), at most kEndShare of its flight.
+EndShifts end_shifts(const std::vector<Flight>& flights, const FlightSearch* found) {
+  if (!found) return {};
+  EndShifts shifts;
+  const bool trimmed = found->flights.size() == flights.size();
+  for (std::size_t k = 0; k < flights.size(); ++k) {
+    const Flight& f = flights[k];
+    const double most = kEndShare * (f.t_end - f.t_start);
+    double start = kEndUncertainty, end = kEndUncertainty;
+    if (trimmed) {
+      start = std::max(start, f.t_start - found->flights[k].t_start);
+      end = std::max(end, found->flights[k].t_end - f.t_end);
+    }
+    shifts.start.push_back(std::min(start, most));
+    shifts.end.push_back(std::min(end, most));
+  }
+  return shifts;
+}
+
+/// The flight ends' placement added to the body's and each drag rate's σ (docs/phone-lab.md,
+/// "Error bars"): the joint fit again with every flight's start moved in by its uncertainty
+/// (`shifts`), and again with every end moved in; each value's spread σ² = Σ (θ_moved − θ)²
+/// added in quadrature to its σ (the covariance's, inflated, or the jackknife's). What least
+/// squares cannot see: where the throw ends and the catch begins, which the finder only
+/// estimates. No term where a refit fails or a σ is missing.
+void widen_by_ends(const std::vector<TossData>& data, const Parameters& p, const EndShifts& shifts,
+                   const FitSettings& settings, const std::vector<bool>& rate_held,
+                   BodyEstimate& body, TossSigmas& sigmas) {
+  if (!body.ratio_sigma || !body.axis_sigma_deg) return;
+  const bool fixed = settings.moments.has_value();
+  const bool dragged = settings.drag != physics::DragLaw::none;
+  Eigen::Vector3d ratio2 = Eigen::Vector3d::Zero(), turn2 = Eigen::Vector3d::Zero();
+  std::vector<double> rate2(data.size(), 0.0);
+  for (int side = 0; side < 2; ++side) {
+    std::vector<TossData> moved = data;
+    for (std::size_t k = 0; k < moved.size(); ++k) {
+      TossData& d = moved[k];
+      const double span = d.tau.empty() ? 0.0 : data[k].tau.back();
+      TossData kept = d;
+      kept.tau.clear(), kept.omega.clear();
+      for (std::size_t i = 0; i < d.tau.size(); ++i) {
+        const bool in = side == 0 ? d.tau[i] >= shifts.start[k] : d.tau[i] <= span - shifts.end[k];
+        if (in) kept.tau.push_back(d.tau[i]), kept.omega.push_back(d.omega[i]);
+      }
+      if (kept.tau.size() < static_cast<std::size_t>(kMinSamplesLeft)) kept = d;
+      d = std::move(kept);
+    }
+    Parameters q = p;
+    SolveOptions options;
+    options.stop = &settings.stop;
+    options.moments_fixed = fixed;
+    options.drag = settings.drag;
+    options.bias_held = true;  // the samples carry the joint fit's correction already
+    options.rate_held = rate_held;
+    if (!solve(moved, q, options).usable) return;
+    normalise(q);
+    if (!fixed) ratio2 += (q.moments() - p.moments()).cwiseAbs2();
+    const Eigen::Matrix3d a = q.axes();
+    for (int i = 0; i < 3; ++i) {
+      const double turn =
+          std::acos(std::min(1.0, std::abs(a.col(i).dot(body.axes.col(i))))) * 180.0 / kPi;
+      turn2[i] += turn * turn;
+    }
+    if (dragged)
+      for (std::size_t k = 0; k < data.size(); ++k) {
+        const double d = q.omega0[k][3] - p.omega0[k][3];
+        rate2[k] += d * d;
+      }
+  }
+  body.ratio_sigma = (body.ratio_sigma->cwiseAbs2() + ratio2).cwiseSqrt();
+  body.ratio_sigma->z() = 0.0;
+  body.axis_sigma_deg = (body.axis_sigma_deg->cwiseAbs2() + turn2).cwiseSqrt();
+  for (std::size_t k = 0; k < data.size(); ++k)
+    if (sigmas.rate[k]) sigmas.rate[k] = std::sqrt(*sigmas.rate[k] * *sigmas.rate[k] + rate2[k]);
+}
+
 /// Toss k's prediction (TossFit::half_period_predicted, what it rests on, or why none): its fold's
 /// body and drag rate (fit/prediction_sigma.hpp); a note where they are a short bounce.
-void predict(const std::vector<TossData>& data, std::size_t k, const Folds& folds,
-             const FlightSearch& search, const FitSettings& settings,
-             const PredictionInputs& inputs, std::vector<TossFit>& tosses, BodyEstimate& body) {
+Prediction predict(const std::vector<TossData>& data, std::size_t k, const Folds& folds,
+                   const FlightSearch& search, const FitSettings& settings,
+                   const PredictionInputs& inputs, std::vector<TossFit>& tosses,
+                   BodyEstimate& body) {
   const TossData& d = data[k];
   TossFit& toss = tosses[k];
   const std::size_t fold = k % folds.count;
@@ -327,7 +421,7 @@ void predict(const std::vector<TossData>& data, std::size_t k, const Folds& fold
                          : !held_out ? "the other tosses' body could not be fitted"
                                      : "every other toss is stable: their body cannot tell its "
                                        "moments apart";
-    return;
+    return {};
   }
   // The drag rate: the other tosses' (their fold fit's) weighted by their σ (the joint fit's).
   std::vector<TossData> rest;
@@ -364,7 +458,8 @@ void predict(const std::vector<TossData>& data, std::size_t k, const Folds& fold
   toss.half_period_predicted_sigma = prediction.sigma;
   toss.predicted_window = prediction.window;
   toss.not_predicted = prediction.withheld;
-  if (!prediction.half) return;
+  toss.half_period_propagated_sigma = prediction.sigma;
+  if (!prediction.half) return prediction;
   toss.predicted_from_tosses = from;
   toss.predicted_from_seconds = seconds;
   if (from > 0 && seconds < kShortBasis) {
@@ -375,6 +470,50 @@ void predict(const std::vector<TossData>& data, std::size_t k, const Folds& fold
                   "recordings of one body together, or %s)",
                   k + 1, from, seconds, kGiveMoments);
     body.notes.push_back(line);
+  }
+  return prediction;
+}
+
+/// Each prediction's interval calibrated by the fit's other tosses (prediction_calibration.hpp):
+/// its propagated σ widened by the scale the other tosses' scores |measured − predicted| / σ call
+/// for, then withheld where over ±kWidestInterval; shown with no σ where too few others have a
+/// measured and a predicted half period (uncalibrated, in words).
+void calibrate(const std::vector<Prediction>& predictions, std::vector<TossFit>& tosses) {
+  std::vector<std::optional<double>> score(tosses.size());
+  for (std::size_t j = 0; j < tosses.size(); ++j) {
+    const Prediction& p = predictions[j];
+    if (tosses[j].half_period_measured && p.propagated_half && p.propagated_sigma &&
+        *p.propagated_sigma > 0)
+      score[j] = (*tosses[j].half_period_measured - *p.propagated_half) / *p.propagated_sigma;
+  }
+  for (std::size_t k = 0; k < tosses.size(); ++k) {
+    const Prediction& p = predictions[k];
+    TossFit& toss = tosses[k];
+    if (!p.propagated_half || !p.propagated_sigma || !toss.half_period_predicted) continue;
+    std::vector<double> others;
+    for (std::size_t j = 0; j < tosses.size(); ++j)
+      if (j != k && score[j]) others.push_back(*score[j]);
+    const PredictionCalibration c = calibrate_prediction(others);
+    toss.prediction_interval = calibration_words(c);
+    if (!c.calibrated) {
+      toss.half_period_predicted_sigma.reset();
+      continue;
+    }
+    const double sigma = *p.propagated_sigma * c.factor;
+    char how[160];
+    std::snprintf(how, sizeof how, ", widened ×%.2g by the %s", c.factor,
+                  toss.prediction_interval.c_str());
+    toss.not_predicted =
+        withheld_for_width(*p.propagated_half, sigma, p.propagated_window, p.largest, how);
+    if (toss.not_predicted.empty()) {
+      toss.half_period_predicted_sigma = sigma;
+      continue;
+    }
+    toss.half_period_predicted.reset();
+    toss.half_period_predicted_sigma.reset();
+    toss.predicted_window.reset();
+    toss.predicted_from_tosses.reset();
+    toss.predicted_from_seconds.reset();
   }
 }
 
@@ -505,7 +644,8 @@ namespace {
 
 /// fit_recording with the bias corrections of the recordings `held` (by part) held at zero.
 FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search,
-                      const FitSettings& settings, const std::vector<bool>& held) {
+                      const FitSettings& settings, const std::vector<bool>& held,
+                      const FlightSearch* found) {
   FitResult result;
   result.parts = recording.parts;
   result.search = search;
@@ -521,7 +661,8 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   Parameters p = start(data, settings);
   p.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
   const BiasFreedom bias = bias_freedom(recording.parts, data, held);
-  const Solved solved = joint_fit(data, p, bias, settings, recording.source);
+  std::vector<bool> rate_held;
+  const Solved solved = joint_fit(data, p, bias, settings, recording.source, rate_held);
   // An axis far beyond any gyroscope's range beside two within it: say which, once.
   if (const std::string cause = scale_cause(data); !cause.empty()) body.notes.push_back(cause);
   // The bias in flight: each recording's rest plus its fitted correction; the samples corrected
@@ -538,30 +679,34 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   body.axes = p.axes();
   body.moments_fixed = fixed;
   const std::vector<std::vector<Eigen::Vector3d>> residuals = residuals_of(data, p, settings.drag);
-  const TossSigmas sigmas =
+  TossSigmas sigmas =
       uncertainties(data, p, solved, bias, residuals, settings.drag, fixed, body, result.parts);
   const Folds folds = fold_bodies(data, p, bias, correction, settings);
   widen_by_folds(folds, fixed, body);
+  if (found)
+    widen_by_ends(data, p, end_shifts(search.flights, found), settings, rate_held, body, sigmas);
   const std::optional<double> noise = rest_noise(recording, search);
   for (std::size_t k = 0; k < data.size(); ++k)
     result.tosses.push_back(toss_values(data, k, p, sigmas, residuals[k], search.flights[k],
                                         saturation, noise, settings.drag, body));
+  std::vector<Prediction> predictions;
   for (std::size_t k = 0; k < data.size(); ++k) {
     const PredictionInputs inputs{settings.drag, body.ratio_sigma,
                                   bias_sigma(result.parts.at(data[k].group))};
-    predict(data, k, folds, search, settings, inputs, result.tosses, body);
+    predictions.push_back(predict(data, k, folds, search, settings, inputs, result.tosses, body));
   }
+  calibrate(predictions, result.tosses);
   body_notes(result, settings, body);
   return result;
 }
 
 /// fit_holding, the bias of each recording with no rest held at zero where it is noise.
 FitResult fit_with_bias_rule(const GyroRecording& recording, const FlightSearch& search,
-                             const FitSettings& settings) {
+                             const FitSettings& settings, const FlightSearch* found) {
   // A bias fitted from the flights of a recording with no still rest is applied only where it
   // differs from zero significantly (docs/phone-lab.md, "The bias"): else it is the flights'
   // noise, held at zero, and its σ stays as the bound the flights set on it.
-  FitResult result = fit_holding(recording, search, settings, {});
+  FitResult result = fit_holding(recording, search, settings, {}, found);
   std::vector<bool> held(result.parts.size(), false);
   bool any = false;
   for (std::size_t g = 0; g < held.size(); ++g) {
@@ -571,7 +716,7 @@ FitResult fit_with_bias_rule(const GyroRecording& recording, const FlightSearch&
     any = any || held[g];
   }
   if (!any) return result;
-  FitResult again = fit_holding(recording, search, settings, held);
+  FitResult again = fit_holding(recording, search, settings, held, found);
   for (std::size_t g = 0; g < held.size(); ++g)
     if (held[g]) {
       again.parts[g].bias_not_applied = result.parts[g].bias_correction;
@@ -586,10 +731,12 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
                         const FitSettings& settings) {
   check_pooled(recording);
   if (search.flights.empty()) throw_no_flight(recording, search);
-  FitResult fit = fit_with_bias_rule(recording, search, settings);
+  // Flights by hand are the user's, fitted as given: the ends' term weighs the finder's ends.
+  FitResult fit =
+      fit_with_bias_rule(recording, search, settings, settings.trim_ends ? &search : nullptr);
   if (!settings.trim_ends) return fit;
   return trim_to_free_flight(recording, std::move(fit), [&](const FlightSearch& trimmed) {
-    return fit_with_bias_rule(recording, trimmed, settings);
+    return fit_with_bias_rule(recording, trimmed, settings, &search);
   });
 }
 

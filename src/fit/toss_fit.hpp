@@ -58,9 +58,17 @@ struct TossFit {
   /// nullopt (withheld, why in not_predicted) where its interval 2σ/T is over 25 % or the
   /// separatrix is within its inputs' σ (fit/prediction_sigma.hpp).
   std::optional<double> half_period_predicted;
-  /// s: one σ of half_period_predicted, propagated from what it rests on (fit/
-  /// prediction_sigma.hpp), at most 12.5 % of it; nullopt without a prediction.
+  /// s: one σ of half_period_predicted: propagated from what it rests on (fit/
+  /// prediction_sigma.hpp), widened by the calibration on the fit's other tosses (fit/
+  /// prediction_calibration.hpp), at most 12.5 % of it; nullopt without a prediction, and for an
+  /// uncalibrated one (too few other tosses to calibrate on: no interval is shown).
   std::optional<double> half_period_predicted_sigma;
+  /// s: the σ propagated from the prediction's inputs alone, before the calibration; nullopt
+  /// without a prediction.
+  std::optional<double> half_period_propagated_sigma;
+  /// How the prediction's interval is calibrated (calibration_words: "Student t on 5 other
+  /// tosses", "uncalibrated: …"); "" without a prediction.
+  std::string prediction_interval;
   /// s: the first seconds of the toss half_period_predicted was predicted from
   /// (FitSettings::predict_window); nullopt without a prediction.
   std::optional<double> predicted_window;

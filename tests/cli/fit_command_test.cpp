@@ -55,7 +55,8 @@ TEST(FitCommand, FitsASyntheticExportIntoItsCsvsAndCharts) {
   const std::string csv = read_text_file(dir / "out" / "toss-fit.csv", "the CSV");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "toss,t_start,t_end,omega0_x,omega0_y,omega0_z,half_period_measured,"
-            "half_period_fitted,half_period_predicted,half_period_predicted_sigma,predicted_from_"
+            "half_period_fitted,half_period_predicted,half_period_predicted_sigma,"
+            "half_period_propagated_sigma,prediction_interval,predicted_from_"
             "tosses,predicted_from_seconds,predicted_window,not_predicted,"
             "residual_rms,L_decay,drag_rate,"
             "drag_rate_sigma,saturated,stable,poor_fit,flag");

@@ -40,8 +40,14 @@ void expect_pool_keeps_each_recordings_tosses(const std::vector<GyroRecording>& 
   const FitResult& fit = pooled.result;
   const CsvTable table = fit_toss_csv(fit);
   ASSERT_EQ(table.columns.at(1), "recording");
-  std::size_t next = 0;  // the pool's tosses, in order: each recording's in turn
-  for (const GyroRecording& own : recordings) {
+  std::size_t next = 0;  // the pool's tosses, in order: each recording's in turn, in the
+                         // pool's own order of its recordings (by name: pool_recordings)
+  ASSERT_EQ(fit.parts.size(), recordings.size());
+  for (const RecordingPart& part : fit.parts) {
+    const auto found = std::find_if(recordings.begin(), recordings.end(),
+                                    [&](const GyroRecording& r) { return r.name == part.name; });
+    ASSERT_NE(found, recordings.end()) << part.name;
+    const GyroRecording& own = *found;
     const FitReport alone = fit_report(pool_recordings({own}), {});
     SCOPED_TRACE(own.name);
     for (const TossReport& single : alone.tosses) {

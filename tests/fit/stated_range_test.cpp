@@ -120,8 +120,9 @@ TEST(Saturation, TheRangeThatDeviceCsvStatesMarksEvenAShortClip) {
 // where it lies in the pooled recording. a is clipped for tens of samples (found from its samples);
 // b only where its two fastest samples reach, which only its stated range shows.
 TEST(Saturation, PooledRecordingsAreSearchedEachOnItsOwn) {
-  GyroRecording a = test::as_read(test::make_recording(test::phone_alone(), kTosses, 5));
-  GyroRecording b = test::as_read(test::make_recording(test::phone_alone(), kTosses, 6));
+  // Named a and b: pooled in that order (pool_recordings orders them by name).
+  GyroRecording a = test::as_read(test::make_recording(test::phone_alone(), kTosses, 5), "a");
+  GyroRecording b = test::as_read(test::make_recording(test::phone_alone(), kTosses, 6), "b");
   a.source = "a.csv";
   b.source = "b.csv";
   for (Eigen::Vector3d& w : b.omega) w += Eigen::Vector3d(0.05, -0.04, 0.03);  // b's own bias

@@ -17,7 +17,9 @@ const $ = (id) => document.getElementById(id);
 const TOSS_WORDS = {
   recording: 'its recording', t_start: 'start (s)', t_end: 'end (s)', omega0_x: 'ω0 x (rad/s)', omega0_y: 'ω0 y (rad/s)',
   omega0_z: 'ω0 z (rad/s)', half_period_measured: 'T/2 measured (s)', half_period_fitted: 'T/2 fitted (s)',
-  half_period_predicted: 'T/2 predicted ± σ (s)', half_period_predicted_sigma: 'σ T/2 predicted (s)', predicted_from_tosses: 'predicted from (tosses)',
+  half_period_predicted: 'T/2 predicted ± σ (s)', half_period_predicted_sigma: 'σ T/2 predicted (s)',
+  half_period_propagated_sigma: 'σ propagated from its inputs (s)', prediction_interval: 'interval calibrated by',
+  predicted_from_tosses: 'predicted from (tosses)',
   predicted_from_seconds: 'predicted from (s of flight)', predicted_window: 'predicted from its first (s)', not_predicted: 'not predicted, why', residual_rms: 'residual RMS (rad/s)', L_decay: '|L| loss (1/s)',
   drag_rate: 'drag rate ± σ (1/s)', drag_rate_sigma: 'σ drag rate (1/s)',
   saturated: 'samples at the gyroscope’s range', stable: 'stable (no flip)',
@@ -40,7 +42,7 @@ const MILLISECONDS = new Set(['t_start', 't_end', 'half_period_measured', 'half_
 function tossCell(toss, column, value) {
   if (typeof value !== 'number') return cell(value);
   if (column === 'drag_rate') return html(plusMinus(value, toss.drag_rate_sigma));
-  if (column === 'drag_rate_sigma' || column === 'half_period_predicted_sigma') return html(significant(value, 2));
+  if (column === 'drag_rate_sigma' || column === 'half_period_predicted_sigma' || column === 'half_period_propagated_sigma') return html(significant(value, 2));
   if (column === 'half_period_predicted' && typeof toss.half_period_predicted_sigma === 'number') return html(plusMinus(value, toss.half_period_predicted_sigma));
   if (column === 'residual_rms' || column === 'L_decay') return html(significant(value, 2));
   if (MILLISECONDS.has(column)) return html(value.toFixed(3));
@@ -59,7 +61,8 @@ function labelledRow(key, words, shown, full, wraps = false) {
 }
 
 /** Plots toss `chart` ({t, measured, fitted}: ω, phone frame, 3×N flattened) on `canvas`: the
- * measured samples as dots, the fitted ω as lines, x red, y green, z blue, against seconds. */
+ * measured samples as dots, the fitted ω as lines, x red, y green, z blue (keyed in the plot's
+ * corner), against seconds. */
 export function drawTossChart(canvas, chart) {
   const dpr = window.devicePixelRatio || 1;
   const w = canvas.clientWidth || 320, h = canvas.clientHeight || 180;
@@ -108,6 +111,16 @@ export function drawTossChart(canvas, chart) {
   g.beginPath(); g.arc(measuredX - 7, 10, 2.5, 0, 2 * Math.PI); g.fill();
   g.strokeStyle = '#bbb'; g.lineWidth = 1.5;
   g.beginPath(); g.moveTo(lineX, 10); g.lineTo(lineX + 12, 10); g.stroke();
+  // The key of the three components, inside the plot's top-left corner on a dark patch: x, y, z
+  // in their colours (the legend above says which mark is measured and which fitted).
+  const keyWidth = ['x', 'y', 'z'].reduce((sum, c) => sum + g.measureText(c).width + 8, 4);
+  g.fillStyle = '#14161b'; g.fillRect(left + 1, top + 1, keyWidth, 16);
+  let keyX = left + 5;
+  ['x', 'y', 'z'].forEach((label, c) => {
+    g.fillStyle = OMEGA_COLOURS[c];
+    g.fillText(label, keyX, top + 13);
+    keyX += g.measureText(label).width + 8;
+  });
   // Lines first, thin; the measured samples over them as dots, so that each can be picked out.
   for (let c = 0; c < 3; ++c) {
     g.strokeStyle = OMEGA_COLOURS[c]; g.lineWidth = 1;
@@ -239,6 +252,41 @@ export class LabPanel {
     box.innerHTML = `<summary>every stretch of motion dropped (${lines.length})</summary><pre>${html(lines.join('\n'))}</pre>`;
   }
 
+  /** The result as one table above everything else (docs/phone-lab.md, "Reading the
+   * result"): toss, its recording, its flight, T/2 measured, T/2 predicted ± 2σ (its calibrated
+   * σ; "uncalibrated" with none; "not predicted" and why in its title), and whether the
+   * measurement lies within 2σ: the values of r.tosses (the -fit.csv's rows). */
+  showOutcome(r) {
+    let table = $('labOutcome');
+    if (!table) {
+      table = document.createElement('table');
+      table.id = 'labOutcome';
+      table.className = 'labOutcome';
+      $('labResult').insertBefore(table, $('labResult').firstChild);
+    }
+    const ms3 = (v) => (typeof v === 'number' ? v.toFixed(3) : '–');
+    const rows = r.tosses.map((t) => {
+      const own = t.recording || r.recording;
+      const measured = t.half_period_measured, predicted = t.half_period_predicted;
+      const sigma = t.half_period_predicted_sigma;
+      let shown = 'not predicted', within = '–', title = t.not_predicted || '';
+      if (typeof predicted === 'number' && typeof sigma === 'number') {
+        shown = plusMinus(predicted, 2 * sigma);
+        title = t.prediction_interval || '';
+        if (typeof measured === 'number') within = Math.abs(measured - predicted) <= 2 * sigma ? 'yes' : 'no';
+      } else if (typeof predicted === 'number') {
+        shown = `${predicted.toFixed(3)} (uncalibrated)`;
+        title = t.prediction_interval || '';
+      }
+      return `<tr><td>${html(t.toss)}</td><td class="words">${html(own)}</td>` +
+        `<td>${html(ms3(t.t_start))}–${html(ms3(t.t_end))}</td><td>${html(ms3(measured))}</td>` +
+        `<td title="${html(title)}">${html(shown)}</td><td>${html(within)}</td></tr>`;
+    });
+    table.innerHTML = '<caption>T/2 measured against T/2 predicted from the other tosses</caption>' +
+      '<tr><th>toss</th><th>recording</th><th>flight (s)</th><th>T/2 measured (s)</th>' +
+      '<th>T/2 predicted ± 2σ (s)</th><th>within 2σ</th></tr>' + rows.join('');
+  }
+
   /** The body, the summary, each toss's row, chart and play button. */
   show(r, ms) {
     this.result = r;
@@ -266,7 +314,11 @@ export class LabPanel {
       for (const x of r.refused) files.push(`refused ${x.file}: ${x.error}`);
     }
     if (this.skipped.length) files.push(`skipped (not a recording): ${this.skipped.join(', ')}`);
-    $('labSummary').textContent = [...files, ...r.summary].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
+    // The result first: one table, a row a toss (the summary's own first lines, fit_result_lines,
+    // which the table shows, are left out of the text below it).
+    this.showOutcome(r);
+    const details = r.summary.slice(2 + r.tosses.length);
+    $('labSummary').textContent = [...files, ...details].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
     this.showDropped(r.dropped || []);
     const list = $('labTosses');
     list.innerHTML = '';
