@@ -12,7 +12,7 @@
 #include "common/errors.hpp"
 #include "common/sha256.hpp"
 #include "common/text_file.hpp"
-#include "jobs/motion_csv.hpp"
+#include "jobs/motion_judgement.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/staged_files.hpp"
@@ -21,54 +21,6 @@
 namespace bookspin::products {
 
 namespace {
-
-/// The motion files of one scenario read, in order (a bad one is its one line, InputError).
-std::vector<jobs::MotionFile> read_all(const analysis::Scenario& scenario,
-                                       const std::vector<std::filesystem::path>& files) {
-  std::vector<jobs::MotionFile> read;
-  for (const std::filesystem::path& file : files)
-    read.push_back(jobs::read_motion_csv(file, scenario.dt, scenario.steps));
-  return read;
-}
-
-/// Every motion of one scenario judged: the files' motions `read` (read_all, so that a bad
-/// file fails before any run), then the methods, each run from the scenario's start a row
-/// every steps_per_frame steps with the scene's other model settings. `names`: each file's
-/// name in the tables.
-std::vector<analysis::JudgedMotion> judge_all(const scene::Scene& scene,
-                                              const analysis::Scenario& scenario,
-                                              const std::vector<std::filesystem::path>& files,
-                                              const std::vector<jobs::MotionFile>& read,
-                                              const std::vector<std::string>& names,
-                                              const std::vector<analysis::Method>& methods,
-                                              const StopPoll& stop) {
-  // The methods run first, then every motion judged in the tables' order (files, methods).
-  std::vector<std::vector<analysis::MotionSample>> runs;
-  for (const analysis::Method& m : methods) {
-    runs.push_back(
-        analysis::simulated_motion(scenario, m, scene.model, scene.steps_per_frame, stop));
-    if (runs.back().empty()) throw InternalError("flipcheck: " + m.label + " gave no finite start");
-  }
-  // A judgement is tens of milliseconds (the exact motion at every row): asked between them,
-  // a stop is answered within a second (docs/outputs.md, "Signals").
-  // A motion too coarse to judge is refused naming its file (or method).
-  const auto judge_one = [&](const std::string& what,
-                             const std::vector<analysis::MotionSample>& rows) {
-    stop_if_asked(stop, "flipcheck judge");
-    try {
-      return analysis::judge_motion(scenario, rows, {}, stop);
-    } catch (const InputError& e) {
-      throw InputError(what + ": " + e.what());
-    }
-  };
-  std::vector<analysis::JudgedMotion> judged;
-  for (std::size_t i = 0; i < files.size(); ++i)
-    judged.push_back({files[i], names[i], judge_one(files[i].string(), read[i].rows)});
-  for (std::size_t i = 0; i < methods.size(); ++i)
-    judged.push_back(
-        {{}, methods[i].label, judge_one(scenario.name + ": " + methods[i].label, runs[i])});
-  return judged;
-}
 
 JsonValue method_labels(const std::vector<analysis::Method>& methods) {
   JsonArray labels;
@@ -165,35 +117,32 @@ FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir
 FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job) {
   JsonObject options;
   if (!job.methods.empty()) options.push_back({"methods", method_labels(job.methods)});
-  const std::vector<std::string> names = file_names(job.motions);
-  // The scenario derived (from the scene, or read from the scenario JSON export wrote), its
-  // motion files read (a bad one fails before any run), then judged.
   const bool from_json = !job.scenario_file.empty();
-  const analysis::Scenario scenario =
-      from_json
-          ? analysis::scenario_from_json(read_text_file(job.scenario_file, "the scenario file"),
-                                         job.scenario_file.string())
-          : analysis::scenario_of(job.scene);
-  const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, scenario.name);
-  const std::string sha256 = analysis::scenario_sha256(scenario);
-  const std::vector<jobs::MotionFile> read = read_all(scenario, job.motions);
-  FlipcheckJudgeResult result;
-  result.scenario = scenario.name;
-  result.layout = layout;
-  result.judged = judge_all(job.scene, scenario, job.motions, read, names, job.methods, job.stop);
-  const CsvTable table = analysis::judgement_table(scenario, sha256, result.judged);
+  // The measuring room's value: the scenario, its motions read and run, each judged, the table.
+  const std::vector<std::string> names = file_names(job.motions);
+  jobs::Judgement judgement =
+      jobs::judge_scenario(job.scene, job.scenario_file, job.motions, names, job.methods, job.stop);
+  const FlipcheckJudgeLayout layout = flipcheck_judge_layout(job.out_dir, judgement.scenario.name);
   // A scenario JSON has no scene: its judgement is up to date for the same scenario (its
   // canonical text's SHA-256, as every door hashes it), options and motion files.
-  if (from_json) options.push_back({"scenario_sha256", {sha256}});
-  const cache::CachedOutputs cached{
-      scenario.name + "-judge", layout.manifest, "flipcheck judge",
-      std::move(options),       job.out_dir,     from_json ? nullptr : &job.scene,
-      /*all_or_nothing=*/true,  job.motions};
+  if (from_json) options.push_back({"scenario_sha256", {judgement.scenario_sha256}});
+  const cache::CachedOutputs cached{judgement.scenario.name + "-judge",
+                                    layout.manifest,
+                                    "flipcheck judge",
+                                    std::move(options),
+                                    job.out_dir,
+                                    from_json ? nullptr : &job.scene,
+                                    /*all_or_nothing=*/true,
+                                    job.motions};
+  FlipcheckJudgeResult result;
   result.outcome = cache::make_cached(cached, job.freshness, [&] {
     output::prepare_output_dir(layout.csv.parent_path());
-    output::write_text_file(layout.csv, csv_text(table, "flipcheck judge CSV"));
+    output::write_text_file(layout.csv, csv_text(judgement.table, "flipcheck judge CSV"));
     return cache::Made{{layout.csv}};
   });
+  result.scenario = judgement.scenario.name;
+  result.layout = layout;
+  result.judged = std::move(judgement.judged);
   return result;
 }
 
@@ -361,7 +310,7 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
   std::vector<std::vector<jobs::MotionFile>> read;
   for (std::size_t i = 0; i < job.scenes.size(); ++i) {
     scenarios.push_back(analysis::scenario_of(job.scenes[i]));
-    read.push_back(read_all(scenarios[i], files[i]));
+    read.push_back(jobs::read_motion_files(scenarios[i], files[i]));
   }
   // Up to date: the same scenarios (each its canonical form, input files and bookspin build:
   // a scene's own head), methods and motion files (each name and SHA-256), so that an
@@ -390,9 +339,10 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
     for (std::size_t i = 0; i < job.scenes.size(); ++i) {
       stop_if_asked(job.stop, "flipcheck league");
       const scene::Scene& scene = job.scenes[i];
-      LeagueColumn col{scene.name, scene.title,
-                       judge_all(scene, scenarios[i], files[i], read[i], motion_names[i],
-                                 job.methods, job.stop)};
+      LeagueColumn col{
+          scene.name, scene.title,
+          jobs::judge_motions(scene.model, scene.steps_per_frame, scenarios[i], files[i], read[i],
+                              motion_names[i], job.methods, job.stop)};
       CsvTable part = analysis::judgement_table(
           scenarios[i], analysis::scenario_sha256(scenarios[i]), col.judged);
       table.columns = part.columns;

@@ -3,7 +3,7 @@
 // exported for any engine (its start as JSON, the exact motion at every step as CSV) and the
 // judgement of motions an engine wrote (a CSV, one row per motion), each with its manifest.
 // Every path they write is named here; the measuring is jobs' (jobs/exact_motion.hpp,
-// jobs/motion_csv.hpp) and analysis' (analysis/conformance.hpp).
+// jobs/motion_judgement.hpp) and analysis' (analysis/conformance.hpp).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -92,11 +92,11 @@ struct FlipcheckJudgeResult {
 };
 
 /// (scenario, motions, methods) => OUT/<scenario>-judge.csv + manifest.
-/// Reads every motion file (jobs::read_motion_csv, before anything is written: a bad file is
-/// an InputError naming its file, line and column), runs every method, and judges each
-/// (analysis::judge_motion); writes the CSV unless its manifest, whose head holds every motion
-/// file's SHA-256 and the methods, says it is up to date. Throws InputError, OutputError,
-/// Interrupted.
+/// Asks jobs for the judgement as one value (jobs::judge_scenario: every motion file read
+/// before anything is written, a bad file an InputError naming its file, line and column;
+/// every method run; each motion judged; the table), then writes the CSV unless its manifest,
+/// whose head holds every motion file's SHA-256 and the methods, says it is up to date. Throws
+/// InputError, OutputError, Interrupted.
 FlipcheckJudgeResult make_flipcheck_judge(const FlipcheckJudgeJob& job);
 
 /// Every path a league table into OUT writes.
