@@ -453,6 +453,9 @@ std::string judge_rules() {
   rule("separatrix_approach", limits.separatrix_approach);
   rule("tumble_cosine", kTumbleCosine);
   rule("flip_margin", FlipDetector::kMargin);
+  // The rows' spacing (docs/flipcheck.md, "The motion file"): every stride steps from step 0,
+  // ending at the last whole stride or with one more row at the last step.
+  text += "rows every_stride_from_0 last_whole_stride_or_last_step\n";
   text += "columns";
   for (const std::string& column : judgement_columns()) text += " " + column;
   return text + "\n";
