@@ -18,8 +18,8 @@ function fitCanvas(canvas) {
 export class Panels {
   /** `sphere` (sphere.js) draws on `sphereCanvas`; `measured()`: the scene's measured ω
    * ({t, w, ut, u}, bookspin explore) or null. */
-  constructor(sphereCanvas, plotsCanvas, sphere, measured) {
-    Object.assign(this, { sphereCanvas, plotsCanvas, sphere, measured });
+  constructor(sphereCanvas, plotsCanvas, sphere, measured, timeUnit = () => 'time units') {
+    Object.assign(this, { sphereCanvas, plotsCanvas, sphere, measured, timeUnit });
     this.seen = { sphere: null, plots: null };
     this.plotsDrawnAt = -Infinity;
     this.spans = [];          // each plotted line's drawn height (hooks.js: plotSpans)
@@ -43,8 +43,8 @@ export class Panels {
     }
     lap('sphere');
     if ((!playing || now - this.plotsDrawnAt >= PLOTS_EVERY_MS) &&
-        this.changed('plots', [p.width, p.height, measured, ...list.flatMap((r) => [r.history, r.history.length])])) {
-      const drawn = drawPlots(p, list, measured);
+        this.changed('plots', [p.width, p.height, measured, this.timeUnit(), ...list.flatMap((r) => [r.history, r.history.length])])) {
+      const drawn = drawPlots(p, list, measured, this.timeUnit());
       this.spans = drawn.spans;
       this.measuredDots = drawn.measuredDots;
       this.tickLabels = drawn.tickLabels;
