@@ -212,7 +212,8 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           "td { min-width: 9em; }\n"
           // The table's own box, no taller than the window: its header row and first column
           // stay while it scrolls either way (a page scrolled sideways is shrunk on a phone).
-          ".league { overflow: auto; max-height: calc(100vh - 1em); width: fit-content; max-width: 100%; }\n"
+          ".league { overflow: auto; max-height: calc(100vh - 1em); width: fit-content; "
+          "max-width: 100%; }\n"
           "td.pass { background: #e3f4e1; } td.fail { background: #f9e0de; }\n"
           "td.none { color: #999; background: #fff; } td small { color: #555; }\n"
           // The scenarios' row stays on screen while the motions scroll under it, the
