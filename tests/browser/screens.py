@@ -54,7 +54,7 @@ LAYOUT = """
     const b = box(e);
     return [e.textContent, [Math.max(b[0], clip[0]), Math.max(b[1], clip[1]), Math.min(b[2], clip[2]), Math.min(b[3], clip[3])]];
   }).filter(([, b]) => b[2] > b[0] && b[3] > b[1]);
-  return { w: innerWidth, h: innerHeight, view: box(document.getElementById('view')), controls, labels,
+  return { w: innerWidth, h: innerHeight, y: window.scrollY, view: box(document.getElementById('view')), controls, labels,
            ticks: window.explorer.plotTickLabels() };
 """
 
@@ -72,8 +72,11 @@ def layout_problems(driver, where):
     if vh < VIEW_MIN_PX - 0.5 or share < 1 / 3 - 1e-3:
         problems.append(f"{where}: the 3D view is {vw:.0f}×{vh:.0f} px, {100 * share:.0f} % of the "
                         f"{s['w']}×{s['h']} window (at least a third, and {VIEW_MIN_PX} px tall)")
-    if v[1] < -0.5 or v[3] > s["h"] + 0.5:
-        problems.append(f"{where}: the 3D view {[round(x) for x in v]} is not on the first screen ({s['h']} px)")
+    # On the first screen: where it lies with the page scrolled to its top (a phone's page
+    # scrolls to the controls below).
+    if v[1] + s["y"] < -0.5 or v[3] + s["y"] > s["h"] + 0.5:
+        problems.append(f"{where}: the 3D view {[round(x) for x in v]} (the page scrolled {s['y']:.0f} px) "
+                        f"is not on the first screen ({s['h']} px)")
     for text, b in s["labels"]:
         for name, c in s["controls"]:
             if crossing(b, c):
