@@ -56,6 +56,7 @@ from explorer_screen_test import CANVAS_TEXTS, check_canvas_texts, check_texts, 
 from explorer_test import load
 from screens import (MOVE_LIMIT_PX, SCREENS, displaced_while_playing, layout_problems, screen_name,
                      set_screen, text_problems, touch_word_problems)
+from screens import text_overlaps as visible_text_overlaps
 
 # JavaScript run before the page's scripts: every fillText on a 2D canvas whose text runs past
 # the canvas's left or right edge, as [text, canvas id, left, right, canvas width] in the
@@ -230,22 +231,6 @@ class ExactFlips:
         return 1 + int(math.floor((t - first) / period + 1e-12)), first, period
 
 
-def text_overlaps(texts):
-    """Pairs of visible text nodes whose boxes cross (more than 2 px each way)."""
-    rects = [(text, r) for text, _, _, rs, _ in texts for r in rs]
-    out = []
-    for i in range(len(rects)):
-        for j in range(i + 1, len(rects)):
-            (ta, a), (tb, b) = rects[i], rects[j]
-            if a is b:
-                continue
-            w = min(a[2], b[2]) - max(a[0], b[0])
-            h = min(a[3], b[3]) - max(a[1], b[1])
-            if w > 2 and h > 2 and overlaps(a, b):
-                out.append(f"{ta!r} {[round(x) for x in a]} and {tb!r} {[round(x) for x in b]} overlap")
-    return out
-
-
 class Person:
     def __init__(self, driver, page, rng, exact, shots):
         self.driver, self.page, self.rng, self.exact, self.shots = driver, page, rng, exact, shots
@@ -378,12 +363,12 @@ class Person:
         found = []
         scratch = []
         with contextlib.redirect_stdout(io.StringIO()):  # their counts, printed per call
-            texts = check_texts(self.driver, where, scratch)
+            check_texts(self.driver, where, scratch)
             check_canvas_texts(self.driver, where, found)
         # At 1366×768 every text on the screen and inside its panel (explorer_screen_test.py);
         # elsewhere a panel or the page may scroll to a text (screens.py).
         found += scratch if self.where == "1366x768" else text_problems(self.driver, where)
-        found += text_overlaps(texts)
+        found += visible_text_overlaps(self.driver)
         if self.touch:
             found += touch_word_problems(self.driver, where)
         cuts = self.driver.execute_script("const c = window.__canvasCuts; window.__canvasCuts = [];"

@@ -204,3 +204,23 @@ def text_problems(driver, where):
             elif not scroller and not page_scrolls and (r[1] < -0.5 or r[3] > height + 0.5):
                 problems.append(f"{where}: {text!r} cut at the window's edge: {[round(x) for x in r]}")
     return problems
+
+
+def text_overlaps(driver):
+    """Pairs of visible text nodes whose boxes cross (more than 2 px each way), each box cut
+    to the scrolling panel it lies in (a text scrolled out of the readout's strip is not seen)."""
+    texts = driver.execute_script(TEXTS)[0]
+    rects = []
+    for n, (text, _, rs, clip) in enumerate(texts):
+        for r in rs:
+            if clip:
+                r = [max(r[0], clip[0]), max(r[1], clip[1]), min(r[2], clip[2]), min(r[3], clip[3])]
+            if r[2] - r[0] > 0 and r[3] - r[1] > 0:
+                rects.append((n, text, r))
+    out = []
+    for i in range(len(rects)):
+        for j in range(i + 1, len(rects)):
+            (na, ta, a), (nb, tb, b) = rects[i], rects[j]
+            if na != nb and min(a[2], b[2]) - max(a[0], b[0]) > 2 and min(a[3], b[3]) - max(a[1], b[1]) > 2:
+                out.append(f"{ta!r} {[round(x) for x in a]} and {tb!r} {[round(x) for x in b]} overlap")
+    return out
