@@ -8,8 +8,6 @@ import { ENGINE_MODELS } from './engines/models.js';
 export const AXES = ['smallest', 'intermediate', 'largest', 'custom'];
 /** The air drag's laws (docs/physics.md §21, physics::DragLaw). */
 export const DRAG_LAWS = ['none', 'linear', 'quadratic'];
-/** The speed a measured toss plays at (seconds of the toss per second). */
-export const TOSS_SPEED = 0.25;
 
 const num = (v, d) => { const x = Number(v); return Number.isFinite(x) ? x : d; };
 const bool = (v, d) => (v === '1' || v === 'true' ? true : v === '0' || v === 'false' ? false : d);
@@ -80,11 +78,7 @@ export class StateSpace {
    * (the defaults where there is no scene of that name). */
   sceneBase(scenes, name) {
     const scene = scenes.find((s) => s.name === name);
-    if (!scene) return this.defaults;
-    // A measured toss (its time the recording's seconds, a flight of a second or less) plays
-    // slowed down, a quarter of a second a second, so that its turn-over is seen.
-    const speed = scene.measured ? { speed: TOSS_SPEED } : {};
-    return { ...this.defaults, ...speed, ...scene.state, scene: name };
+    return scene ? { ...this.defaults, ...scene.state, scene: name } : this.defaults;
   }
 
   /** The state of `search` (a URL query string) over `base` (defaults or a scene's settings). */
