@@ -55,6 +55,11 @@ export class Panels {
 
   /** Both canvases to their displayed size; the sphere redrawn next frame. */
   resize() {
+    // The sphere as wide as its column, 16/17 of that tall, in whole pixels of its backing
+    // store: a fractional CSS height against a rounded store scales y apart from x, and a pick
+    // lands off the point clicked.
+    const dpr = window.devicePixelRatio || 1, s = this.sphereCanvas;
+    s.style.height = `${Math.round(s.getBoundingClientRect().width * 16 / 17 * dpr) / dpr}px`;
     fitCanvas(this.sphereCanvas);
     fitCanvas(this.plotsCanvas);
     this.sphere.redraw = true;
