@@ -200,15 +200,32 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
       if (std::find(rows.begin(), rows.end(), j.name) == rows.end()) rows.push_back(j.name);
   std::ostringstream page;
   page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+          // A phone lays the page out at its own width (the text wraps, the table scrolls
+          // in its box under its kept header row and first column), not at 980 px shrunk to a
+          // third.
+          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
           "<title>bookspin flipcheck: the league table</title>\n<style>\n"
-          "body { font-family: sans-serif; margin: 2em; color: #222; }\n"
-          "table { border-collapse: collapse; font-size: 0.95em; }\n"
-          "th, td { border: 1px solid #ccc; padding: 0.3em 0.6em; text-align: left; }\n"
+          "body { font-family: sans-serif; margin: 2em; color: #222; background: #fff; }\n"
+          "@media (max-width: 599px) { body { margin: 1em 0.6em; } }\n"
+          // Separate borders (each cell its right and bottom one): a sticky cell carries its
+          // own borders, where collapsed ones stay behind and let the rows show through.
+          "table { border-collapse: separate; border-spacing: 0; font-size: 0.95em; "
+          "border-top: 1px solid #ccc; border-left: 1px solid #ccc; }\n"
+          "th, td { border-right: 1px solid #ccc; border-bottom: 1px solid #ccc; "
+          "padding: 0.3em 0.6em; text-align: left; vertical-align: top; }\n"
+          "td { min-width: 9em; }\n"
+          // The table's own box, no taller than the window: its header row and first column
+          // stay while it scrolls either way (a page scrolled sideways is shrunk on a phone).
+          ".league { overflow: auto; max-height: calc(100vh - 1em); width: fit-content; "
+          "max-width: 100%; }\n"
           "td.pass { background: #e3f4e1; } td.fail { background: #f9e0de; }\n"
-          "td.none { color: #999; } td small { color: #555; }\n"
-          // The scenarios' row stays on screen while the motions scroll under it.
-          "thead th { position: sticky; top: 0; background: #f4f4f4; z-index: 1; "
-          "box-shadow: 0 1px 0 #ccc; }\n"
+          "td.none { color: #999; background: #fff; } td small { color: #555; }\n"
+          // The scenarios' row stays on screen while the motions scroll under it, the
+          // motions' column while the scenarios scroll sideways (a phone).
+          "thead th { position: sticky; top: 0; background: #f4f4f4; z-index: 1; }\n"
+          "tbody th { position: sticky; left: 0; background: #fafafa; z-index: 1; "
+          "max-width: 40vw; overflow-wrap: anywhere; }\n"
+          "thead th:first-child { left: 0; z-index: 2; }\n"
           "dl.names dt { font-family: monospace; margin-top: 0.4em; }\n"
           "dl.names dd { margin-left: 1.5em; }\n</style>\n</head>\n<body>\n"
           "<h1>Does the engine get the flip right? The league table</h1>\n"
@@ -219,7 +236,7 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           "to tumble; under a failure, its reasons. Every "
           "number is in <a href=\"flipcheck-league.csv\">flipcheck-league.csv"
           "</a>.</p>\n"
-       << kMotionNames << "<table>\n<thead><tr><th>motion</th>";
+       << kMotionNames << "<div class=\"league\"><table>\n<thead><tr><th>motion</th>";
   for (const LeagueColumn& col : columns)
     page << "<th title=\"" << html_escape(col.title) << "\">" << html_escape(col.scenario)
          << "</th>";
@@ -242,7 +259,7 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
     }
     page << "</tr>\n";
   }
-  page << "</tbody>\n</table>\n</body>\n</html>\n";
+  page << "</tbody>\n</table></div>\n</body>\n</html>\n";
   return page.str();
 }
 

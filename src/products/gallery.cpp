@@ -236,7 +236,10 @@ GalleryOutcome make_gallery(const GalleryJob& job) {
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<GalleryEntry> entries;
-  for (auto& [rank, entry] : ranked) entries.push_back(std::move(entry));
+  for (auto& [rank, entry] : ranked) {
+    entry.group = rank.group;
+    entries.push_back(std::move(entry));
+  }
 
   GalleryHeader header{
       output::program_version(), output::program_build_id(), "", machine(), "", "", "", "", {}, {}};

@@ -23,6 +23,18 @@ h1 { font-size: 1.6rem; }
 .files { font-size: .9rem; }
 .about { color: #444; max-width: 60rem; }
 .made { color: #666; font-size: .85rem; }
+nav.contents { background: #fff; border-radius: 8px; padding: .6rem 1rem; margin: 1rem 0;
+               box-shadow: 0 1px 4px rgba(0,0,0,.15); }
+nav.contents h2 { font-size: 1.1rem; margin: .2rem 0 .4rem; }
+nav.contents > ol { columns: 22rem; column-gap: 2rem; margin: 0; padding-left: 1.4rem; }
+nav.contents li { break-inside: avoid; margin: .15rem 0; }
+nav.contents ol ol { padding-left: 1.2rem; }
+/* A phone: the page's margins narrower, a clip's files wrapping at any point. */
+@media (max-width: 599px) {
+  body { margin: 1rem auto; padding: 0 .5rem; }
+  .clip { padding: .7rem; }
+  .files { overflow-wrap: anywhere; }
+}
 )";
 
 /// A path inside an attribute: names are [A-Za-z0-9._-] and '/', escaped anyway. (Built with
@@ -119,8 +131,13 @@ void write_fits(std::ostream& out, const std::vector<GalleryFit>& fits, const st
       out << "<div class=\"media\">\n";
       if (!toss.chart.empty())
         write_chart(out, sizes, toss.chart, "measured and fitted omega of " + what);
-      if (!toss.video.empty())
-        out << "<video controls preload=\"metadata\" src=" << attr(toss.video) << "></video>\n";
+      // The clip's poster is the toss's chart (measured and fitted ω over the whole flight):
+      // its first frame has drawn nothing yet, empty panels over the first milliseconds.
+      if (!toss.video.empty()) {
+        out << "<video controls preload=\"metadata\" src=" << attr(toss.video);
+        if (!toss.chart.empty()) out << " poster=" << attr(toss.chart);
+        out << "></video>\n";
+      }
       out << "</div>\n<p class=\"files\">toss " << toss.number;
       if (!toss.chart.empty()) out << " · <a href=" << attr(toss.chart) << ">chart</a>";
       if (!toss.video.empty()) out << " · <a href=" << attr(toss.video) << ">clip</a>";
@@ -130,6 +147,57 @@ void write_fits(std::ostream& out, const std::vector<GalleryFit>& fits, const st
     }
   }
   out << "</section>\n";
+}
+
+/// The intro's words for the sections before the clips, in page order, ending "then " (none:
+/// "first "), so that the intro states the order the page has.
+std::string first_sections(const GalleryHeader& header) {
+  std::vector<std::string> parts;
+  if (!header.flipcheck_league.empty()) parts.emplace_back("the conformance kit's league table");
+  if (!header.fits.empty()) parts.emplace_back("the phone-toss lab's fitted tosses");
+  if (parts.empty()) return "first ";
+  std::string text = "first " + parts[0];
+  if (parts.size() > 1) text += " and " + parts[1];
+  return text + ", then ";
+}
+
+/// The name of a group's heading in the contents.
+const char* group_name(GalleryGroup group) {
+  switch (group) {
+    case GalleryGroup::paper_figure:
+      return "The paper's figures";
+    case GalleryGroup::exact:
+      return "The exact motion";
+    case GalleryGroup::comparison:
+      return "Comparisons of models and methods";
+    case GalleryGroup::other:
+      return "Other bodies";
+    case GalleryGroup::sweep:
+      return "Sweeps";
+  }
+  return "";
+}
+
+/// The page's contents (id "contents"): a link to each section in page order, the clips under
+/// their group's name.
+void write_contents(std::ostream& out, const std::vector<GalleryEntry>& entries,
+                    const GalleryHeader& header) {
+  if (entries.empty() && header.flipcheck_league.empty() && header.fits.empty()) return;
+  out << "<nav class=\"contents\" id=\"contents\">\n<h2>Contents</h2>\n<ol>\n";
+  if (!header.flipcheck_league.empty())
+    out << "<li><a href=\"#flipcheck-league\">Does an engine get the flip right?</a></li>\n";
+  if (!header.fits.empty())
+    out << "<li><a href=\"#phone-lab\">Phone-toss lab: a measured toss beside the exact "
+           "motion</a></li>\n";
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (i == 0 || entries[i].group != entries[i - 1].group)
+      out << "<li>" << group_name(entries[i].group) << "\n<ol>\n";
+    out << "<li><a href=\"#" << html_escape(entries[i].name) << "\">"
+        << html_escape(entries[i].title.empty() ? entries[i].name : entries[i].title)
+        << "</a></li>\n";
+    if (i + 1 == entries.size() || entries[i + 1].group != entries[i].group) out << "</ol></li>\n";
+  }
+  out << "</ol>\n</nav>\n";
 }
 
 }  // namespace
@@ -196,7 +264,9 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
       << "<title>bookspin: the spinning book, figure by figure</title>\n<style>" << kStyle
       << "</style>\n</head>\n<body>\n<h1>bookspin: the spinning book, figure by figure</h1>\n"
       << "<p class=\"about\">The clips of bookspin, a simulation of a freely spinning book (the "
-         "tennis-racket or Dzhanibekov effect): the paper's figures 3–12 first, then the exact "
+         "tennis-racket or Dzhanibekov effect): "
+      << first_sections(header)
+      << "the paper's figures 3–12, the exact "
          "motion, the comparisons of models and methods, other bodies and sweeps. Each clip "
          "comes with a plot of its diagnostics over the whole run (body-frame &omega;, energy "
          "drift, shape error) and its CSV files.</p>\n"
@@ -205,6 +275,7 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
   if (!header.date.empty()) out << ", " << html_escape(header.date);
   if (!header.machine.empty()) out << ", on " << html_escape(header.machine);
   out << ".</p>\n";
+  write_contents(out, entries, header);
   if (!header.flipcheck_league.empty()) {
     out << "<section class=\"kit\" id=\"flipcheck-league\">\n<h2>Does an engine get the flip "
            "right?</h2>\n<p>The conformance kit (<code>bookspin flipcheck</code>): every model "

@@ -7,8 +7,13 @@
 
 namespace bookspin::products {
 
+/// The page's groups, in page order.
+enum class GalleryGroup { paper_figure, exact, comparison, other, sweep };
+
 /// One clip on the page. Paths are relative to the page's folder; empty: not there.
 struct GalleryEntry {
+  GalleryGroup group =
+      GalleryGroup::other;  ///< its group (gallery_rank): its heading in the contents
   std::string name;         ///< scene.name
   std::string title;        ///< scene.title (plain text; escaped on the page)
   std::string description;  ///< scene.description
@@ -82,9 +87,6 @@ struct GalleryHeader {
   std::map<std::string, ImageSize> image_sizes;
 };
 
-/// The page's groups, in page order.
-enum class GalleryGroup { paper_figure, exact, comparison, other, sweep };
-
 /// Where a scene goes on the page, by this rule on its name and kind:
 ///  1. `figNN-…`: the paper's figures, by NN;
 ///  2. the exact motion: a single scene of the book with model kind `exact`, or named
@@ -107,9 +109,10 @@ GalleryRank gallery_rank(const std::string& name, bool is_comparison, bool is_ex
 /// in quoted attribute values.
 std::string html_escape(std::string_view text);
 
-/// A self-contained HTML5 page (inline CSS, no scripts): a header saying what the page is and
-/// how it was made, the league table's and the phone-toss lab's sections where `header` has
-/// them, then `entries` in the order given.
+/// A self-contained HTML5 page (inline CSS, no scripts): a header saying what the page is, in
+/// what order, and how it was made, its contents (a link to each section, the clips under
+/// their groups' names), the league table's and the phone-toss lab's sections where `header`
+/// has them, then `entries` in the order given.
 std::string gallery_html(const std::vector<GalleryEntry>& entries, const GalleryHeader& header);
 
 }  // namespace bookspin::products

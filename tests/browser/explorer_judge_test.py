@@ -102,9 +102,61 @@ def perturbed(exact_csv, folder, name):
         q = quat_mul([math.cos(angle / 2), 0.0, 0.0, math.sin(angle / 2)], q)
         turned.append([r[col["t"]], *map(repr, q), r[col["wx"]], r[col["wy"]], r[col["wz"]]])
     emit("turned", ["t", "qw", "qx", "qy", "qz", "wx", "wy", "wz"], turned)
+    # The middle third of the rows turned by 5° about world z (up to 5.05° at its end, so that
+    # one row is the largest turn, where the page and the command line both find it), ω (body
+    # frame) as it was: L turns by 0.0873 rad there and back.
+    middle = []
+    third = len(rows) // 3
+    for k, r in enumerate(rows):
+        q = [float(r[col[c]]) for c in ("qw", "qx", "qy", "qz")]
+        if third <= k < 2 * third:
+            angle = math.radians(5.0 * (1.0 + 0.01 * (k - third) / third))
+            q = quat_mul([math.cos(angle / 2), 0.0, 0.0, math.sin(angle / 2)], q)
+        middle.append([r[col["t"]], *map(repr, q), r[col["wx"]], r[col["wy"]], r[col["wz"]]])
+    emit("middle-turned", ["t", "qw", "qx", "qy", "qz", "wx", "wy", "wz"], middle)
     keep = ["t", "qw", "qx", "qy", "qz", "wx_world", "wy_world", "wz_world"]
     emit("world", keep, [[r[col[c]] for c in keep] for r in rows])
     return out
+
+
+# Each of the judge's failure lines (analysis::judge_motion) and the column it is about, the
+# line's start (the turn-overs' count: "N turn-overs, exact M").
+FAILURE_COLUMNS = (("ends at step", "last_step"), ("starts ", "start_error"),
+                   ("energy drift", "energy_drift"), ("|L| drift", "L_drift"),
+                   ("L turned", "L_direction_error"), ("first turn-over", "first_flip"),
+                   ("orientation error", "orientation_error"), ("tumbles at", "tumble_time"),
+                   ("r = 2E", "separatrix_approach"))
+
+
+def failure_marks(driver, failures, where):
+    """Every failure line's measure marked in the panel's table (the row's class "over", red),
+    its limit beside it as the line gives it: the number after "limit" equal, or the line's own
+    words where the measure has no bound of its own."""
+    from selenium.webdriver.common.by import By
+
+    rows = {}
+    for tr in driver.find_elements(By.CSS_SELECTOR, "#judgeTable tr"):
+        key = (tr.find_elements(By.CSS_SELECTOR, "th code") or [tr.find_element(By.TAG_NAME, "th")])[0].text
+        cells = tr.find_elements(By.TAG_NAME, "td")
+        colour = tr.find_element(By.TAG_NAME, "td").value_of_css_property("color")
+        rows[key] = ("over" in (tr.get_attribute("class") or "").split(), cells[1].text if len(cells) > 1 else "", colour)
+    for line in [f for f in failures.split("; ") if f]:
+        column = next((c for start, c in FAILURE_COLUMNS if line.startswith(start)), None)
+        if column is None and re.match(r"\d+ turn-overs?, exact", line):
+            column = "flips"
+        if column is None:
+            fail(f"{where}: a failure line the test does not know: {line!r}")
+        marked, limit, colour = rows.get(column, (False, "", ""))
+        said = re.search(r"\(limit ([-0-9.e+]+)", line)
+        if said:
+            shown = re.search(r"limit (.+?)(,|$)", limit)
+            ok = shown is not None and math.isclose(shown_number(shown.group(1)), float(said.group(1)), rel_tol=1e-3)
+        else:
+            ok = line in limit
+        print(f"{where}: {line!r}: {column} marked {marked} ({colour}), beside it {limit!r}")
+        if not marked or not ok or colour != "rgba(255, 112, 112, 1)":
+            fail(f"{where}: the failure {line!r}: its row {column} marked {marked} in {colour}, "
+                 f"beside it {limit!r}")
 
 
 def same_number(got, expected):
@@ -323,7 +375,7 @@ def main():
             cells = tr.find_elements(By.TAG_NAME, "td")
             key = (tr.find_elements(By.CSS_SELECTOR, "th code") or [tr.find_element(By.TAG_NAME, "th")])[0].text
             limit = cells[1].text if len(cells) > 1 else ""
-            if not limit:
+            if not limit or limit.startswith("failed: "):  # a failure line's own words: below
                 continue
             value, bound = float(cells[0].get_attribute("title")), shown_number(limit.split("limit ", 1)[1])
             # The limit in the form of the values beside it (web/src/precision.js): under 10⁻⁴
@@ -339,11 +391,26 @@ def main():
         if "orientation_error" not in over:
             fail(f"the turned motion's orientation error is not shown over its limit: {over}")
         words = {"start_error": "start", "energy_drift": "energy drift", "L_drift": "|L| drift",
-                 "orientation_error": "orientation error", "separatrix_approach": "separatrix"}
+                 "L_direction_error": "L turned", "orientation_error": "orientation error",
+                 "separatrix_approach": "separatrix"}
         wrong = [k for k in over if words.get(k, k) not in cli["failures"]]
         if wrong:
             fail(f"the panel marks {wrong} over a limit, which the command line does not fail: "
                  f"{cli['failures']!r}")
+        failure_marks(driver, cli["failures"], f"{name} {file_name}")
+        # The motion turned 5° in its middle third: it fails on L's turn alone, marked in the
+        # table as in its failure line (the row had neither limit nor mark).
+        middle_name = f"{name}-middle-turned.csv"
+        driver.find_element(By.ID, "judgeFile").send_keys(str((motions / middle_name).resolve()))
+        wait_for(driver, "return document.getElementById('judgeVerdict').textContent", lambda v: middle_name in v, 120)
+        middle_cli = dict(zip(header, cli_rows[middle_name]))
+        if "L turned" not in middle_cli["failures"]:
+            fail(f"{middle_name}: the command line does not fail it on L's turn: {middle_cli['failures']!r}")
+        failure_marks(driver, middle_cli["failures"], f"{name} {middle_name}")
+        driver.save_screenshot(str(shots / "explorer-judge-marks-1280x720.png"))
+        driver.find_element(By.ID, "judgeFile").send_keys(str((motions / file_name).resolve()))
+        wait_for(driver, "return document.getElementById('judgeVerdict').textContent",
+                 lambda v: v.endswith(file_name + " on " + name), 120)
         drawn = wait_for(driver, """
             const c = document.getElementById('judgeReplay');
             if (c.hidden || !c.width) return 0;

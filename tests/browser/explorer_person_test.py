@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
-"""The explorer (docs/explorer.md) used as a person uses it, at random: headless Chromium at a
-laptop's 1366×768, the page `bookspin explore` writes from every scene, and a seeded series of
-actions a person takes (BOOKSPIN_PERSON_ACTIONS of them, 300 by default; BOOKSPIN_PERSON_SEED,
-80 by default: the same seed takes the same actions):
+"""The explorer (docs/explorer.md) used as a person uses it, at random: headless Chromium on each
+screen a class uses (tests/browser/screens.py: 1024×600, 1280×720, 1366×768, 1920×1080, and a
+phone upright and on its side, 390×844 and 844×390, with touch), the page `bookspin explore`
+writes from every scene, and on each screen a seeded series of actions a person takes
+(BOOKSPIN_PERSON_ACTIONS of them a screen, 45 by default; BOOKSPIN_PERSON_SEED, 80 by default:
+the same seed takes the same actions):
 
   seek with the time slider (a real click on it, at a time that is no whole number of steps),
   with the → and ← keys, the Step button; Play, Pause, Reset; open the address the page wrote
@@ -23,7 +25,13 @@ After each action it checks that
     Browser.ExplorerMatchesSimulate compares the page's flips with `bookspin sweep`;
   - no text is under 12 px, past its panel or the screen, or over another text
     (explorer_screen_test.py's checks, and two text nodes' boxes crossing), and no text drawn
-    on a canvas runs past the canvas's edge.
+    on a canvas runs past the canvas's edge;
+  - the 3D view keeps its share of the screen (a third of its area, 200 px tall), nothing is
+    drawn over a control, every plot axis has at least two labelled ticks (screens.py);
+  - while Play plays (its action), no control of the transport bar moves by more than 2 px
+    between two frames;
+  - after a change of scene, Back returns to the scene before, Forward to the new one;
+  - on the phone's touch screen, no text says "click".
 
 Screenshots of the last state and of each failure go to BINARY_DIR/test-output/browser/person-*.png.
 About 5 minutes on the 2-core machine.
@@ -46,8 +54,9 @@ from pathlib import Path
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
 from explorer_screen_test import CANVAS_TEXTS, check_canvas_texts, check_texts, overlaps
 from explorer_test import load
-
-SCREEN = (1366, 768)
+from screens import (MOVE_LIMIT_PX, SCREENS, displaced_while_playing, layout_problems, screen_name,
+                     set_screen, text_problems, touch_word_problems)
+from screens import text_overlaps as visible_text_overlaps
 
 # JavaScript run before the page's scripts: every fillText on a 2D canvas whose text runs past
 # the canvas's left or right edge, as [text, canvas id, left, right, canvas width] in the
@@ -118,8 +127,10 @@ def key(driver, code, key_name):
 
 
 def box(driver, element_id):
+    # Scrolled into view first, as a person on a phone scrolls to it.
     return driver.execute_script(
-        f"const r = document.getElementById('{element_id}').getBoundingClientRect();"
+        f"const e = document.getElementById('{element_id}'); if (e.offsetParent !== null) e.scrollIntoView({{block: 'nearest'}});"
+        f"const r = e.getBoundingClientRect();"
         "return r.width > 0 ? [r.left, r.top, r.width, r.height] : null;")
 
 
@@ -220,27 +231,14 @@ class ExactFlips:
         return 1 + int(math.floor((t - first) / period + 1e-12)), first, period
 
 
-def text_overlaps(texts):
-    """Pairs of visible text nodes whose boxes cross (more than 2 px each way)."""
-    rects = [(text, r) for text, _, _, rs, _ in texts for r in rs]
-    out = []
-    for i in range(len(rects)):
-        for j in range(i + 1, len(rects)):
-            (ta, a), (tb, b) = rects[i], rects[j]
-            if a is b:
-                continue
-            w = min(a[2], b[2]) - max(a[0], b[0])
-            h = min(a[3], b[3]) - max(a[1], b[1])
-            if w > 2 and h > 2 and overlaps(a, b):
-                out.append(f"{ta!r} {[round(x) for x in a]} and {tb!r} {[round(x) for x in b]} overlap")
-    return out
-
-
 class Person:
     def __init__(self, driver, page, rng, exact, shots):
         self.driver, self.page, self.rng, self.exact, self.shots = driver, page, rng, exact, shots
         self.log = []
         self.problems = []
+        self.moved = None  # what an action found wrong as it acted
+        self.where = ""
+        self.touch = False
 
     def shown(self):
         return self.driver.execute_script(SHOWN)
@@ -267,7 +265,9 @@ class Person:
 
     def play(self):
         what = self.button("play")
-        time.sleep(self.rng.choice([0.2, 0.5, 1.0]))
+        moved, control, t, frames = displaced_while_playing(self.driver, self.rng.choice([0.2, 0.5, 1.0]), press=False)
+        if moved > MOVE_LIMIT_PX:
+            self.moved = f"#{control} moved {moved:.1f} px between two frames while playing (t = {t:.2f})"
         return what
 
     def link(self):
@@ -278,7 +278,18 @@ class Person:
     def scene(self):
         names = self.driver.execute_script(
             "return [...document.getElementById('scene').options].map((o) => o.value).filter((v) => v)")
-        return f"scene {choose(self.driver, 'scene', self.rng, names)}"
+        before = self.driver.execute_script("return window.explorer.state().scene")
+        chosen = choose(self.driver, 'scene', self.rng, names)
+        if chosen != before:
+            # Back returns to the scene before, Forward to this one.
+            time.sleep(0.1)
+            self.driver.back()
+            back = poll(self.driver, "return window.explorer.state().scene", lambda s: s == before, 10)
+            self.driver.forward()
+            fwd = poll(self.driver, "return window.explorer.state().scene", lambda s: s == chosen, 10)
+            if back != before or fwd != chosen:
+                self.moved = f"Back after the scene {chosen}: {back!r}, not {before!r}; Forward: {fwd!r}"
+        return f"scene {chosen}"
 
     def body(self):
         return f"body {choose(self.driver, 'body', self.rng)}"
@@ -309,7 +320,7 @@ class Person:
 
     # The checks.
     def problem(self, i, why):
-        self.problems.append(f"action {i} ({self.log[-1]}): {why}")
+        self.problems.append(f"{self.where} action {i} ({self.log[-1]}): {why}")
         if len(self.problems) <= 5:
             self.driver.save_screenshot(str(self.shots / f"person-problem-{len(self.problems)}.png"))
 
@@ -350,14 +361,24 @@ class Person:
     def check_text(self, i):
         where = f"action {i}"
         found = []
+        scratch = []
         with contextlib.redirect_stdout(io.StringIO()):  # their counts, printed per call
-            texts = check_texts(self.driver, where, found)
+            check_texts(self.driver, where, scratch)
             check_canvas_texts(self.driver, where, found)
-        found += text_overlaps(texts)
+        # At 1366×768 every text on the screen and inside its panel (explorer_screen_test.py);
+        # elsewhere a panel or the page may scroll to a text (screens.py).
+        found += scratch if self.where == "1366x768" else text_problems(self.driver, where)
+        found += visible_text_overlaps(self.driver)
+        if self.touch:
+            found += touch_word_problems(self.driver, where)
         cuts = self.driver.execute_script("const c = window.__canvasCuts; window.__canvasCuts = [];"
                                           "window.__canvasTexts = []; return c;")
         for text, canvas, left, right, width in (cuts or [])[:3]:
             found.append(f"{text!r} on canvas {canvas!r} runs past its edge: {left:.0f} … {right:.0f} of {width}")
+        found += layout_problems(self.driver, where)
+        if self.moved:
+            found.append(self.moved)
+            self.moved = None
         for why in found[:4]:
             self.problem(i, why)
 
@@ -366,7 +387,7 @@ def main():
     bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
     require("em++", "npm")
-    actions = int(os.environ.get("BOOKSPIN_PERSON_ACTIONS", "300"))
+    actions = int(os.environ.get("BOOKSPIN_PERSON_ACTIONS", "45"))
     seed = int(os.environ.get("BOOKSPIN_PERSON_SEED", "80"))
     out = binary / "test-output" / "explorer-person"
     shots = binary / "test-output" / "browser"
@@ -378,18 +399,24 @@ def main():
     rng = random.Random(seed)
     exact = ExactFlips(bookspin, source, out)
     started = time.monotonic()
-    with open_browser(chromium, driver_path, size=SCREEN, webgl=True, offline=True, exact_viewport=True) as driver:
+    with open_browser(chromium, driver_path, size=(1366, 768), webgl=True, offline=True) as driver:
         driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": CANVAS_TEXTS + CANVAS_EDGES})
-        first = rng.choice(["t-handle-dzhanibekov", "fig09-matrix-unstable-x", "exact-unstable-x"])
-        load(driver, page + f"?scene={first}")
         person = Person(driver, page, rng, exact, shots)
-        person.log.append(f"opened {first}")
-        for i in range(actions):
-            person.log.append(person.act())
-            shown = person.check_not_stuck(i)
-            if shown is not None:
-                person.check_flips(i, shown)
-            person.check_text(i)
+        for screen in SCREENS:
+            set_screen(driver, screen)
+            person.where, person.touch = screen_name(screen), screen[2]
+            first = rng.choice(["t-handle-dzhanibekov", "fig09-matrix-unstable-x", "exact-unstable-x"])
+            load(driver, page + f"?scene={first}")
+            person.log.append(f"{person.where}: opened {first}")
+            for i in range(actions):
+                person.log.append(person.act())
+                shown = person.check_not_stuck(i)
+                if shown is not None:
+                    person.check_flips(i, shown)
+                person.check_text(i)
+                if len(person.problems) >= 20:
+                    break
+            driver.save_screenshot(str(shots / f"person-last-{screen[0]}x{screen[1]}.png"))
             if len(person.problems) >= 20:
                 break
         errors = console_errors(driver)
@@ -398,14 +425,16 @@ def main():
         driver.save_screenshot(str(shots / "person-last.png"))
     took = time.monotonic() - started
     counts = {}
-    for line in person.log[1:]:
-        counts[line.split(" ")[0]] = counts.get(line.split(" ")[0], 0) + 1
-    print(f"seed {seed}: {len(person.log) - 1} actions in {took:.0f} s ({counts}); {exact.sweeps} sweeps")
+    for line in person.log:
+        if ": opened " not in line:
+            counts[line.split(" ")[0]] = counts.get(line.split(" ")[0], 0) + 1
+    print(f"seed {seed}: {sum(counts.values())} actions on {len(SCREENS)} screens in {took:.0f} s "
+          f"({counts}); {exact.sweeps} sweeps")
     if person.problems:
-        print(f"the actions, after {person.log[0]}:\n" +
-              "\n".join(f"{i}: {a}" for i, a in enumerate(person.log[1:])), flush=True)
+        print("the actions:\n" + "\n".join(f"{i}: {a}" for i, a in enumerate(person.log)), flush=True)
         fail(f"{len(person.problems)} problems (seed {seed}):\n" + "\n".join(person.problems[:30]))
-    print("ok: never stuck, the flips shown are the exact motion's, every text readable")
+    print("ok: on every screen never stuck, the flips shown are the exact motion's, every text "
+          "readable, the view its share, the transport bar still, Back back to the scene before")
 
 
 if __name__ == "__main__":

@@ -105,7 +105,8 @@ CANVAS_TEXTS = """
   const fillText = CanvasRenderingContext2D.prototype.fillText;
   CanvasRenderingContext2D.prototype.fillText = function (text, ...rest) {
     const c = this.canvas, px = /([0-9.]+)px/.exec(this.font);
-    const shown = c.getBoundingClientRect ? c.getBoundingClientRect().width / c.width : 1;
+    // Shown at: the font's pixels, through the context's scale, at the canvas's CSS size.
+    const shown = (c.getBoundingClientRect ? c.getBoundingClientRect().width / c.width : 1) * Math.hypot(this.getTransform().a, this.getTransform().b);
     if (px && String(text).trim())
       window.__canvasTexts.push([String(text).slice(0, 40), c.id || c.className, parseFloat(px[1]) * shown]);
     return fillText.call(this, text, ...rest);

@@ -14,7 +14,12 @@ server (file:// pages may not play media) and checks in Chromium that
     at their default sizes) is shown at the size its text was drawn for (no smaller), a sweep's
     picture and the accuracy charts are whole on the screen (no taller than 768 px), no text is
     under 12 px and none runs past its box,
-and saves a full-page screenshot as build/test-output/browser/gallery.png.
+  - its contents link every section in the page's order, and the intro names the figures
+    first (no league, no fit here),
+  - on a phone (390×844, mobile, touch) the page is laid out at the phone's width, no text is
+    under 12 px and none runs past the window's side,
+and saves a full-page screenshot as build/test-output/browser/gallery.png (the phone's first
+screen as gallery-390x844.png).
 
 Usage: gallery_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Needs Debian's chromium, chromium-driver and python3-selenium (scripts/install-deps.sh). Where
@@ -212,6 +217,37 @@ def check_page(driver, url, out, scenes, sweeps, screenshot):
     print(f"screenshot {screenshot}")
 
     errors += [f"console: {entry['message']}" for entry in console_errors(driver)]
+    errors += check_contents(driver)
+    return errors
+
+
+def check_contents(driver):
+    """The contents: a link to each section (and nothing else), in the page's order."""
+    got = driver.execute_script("""
+      const links = [...document.querySelectorAll('nav.contents a')].map((a) => a.getAttribute('href').slice(1));
+      const order = [...document.querySelectorAll('body > section')].map((s) => s.id);
+      return [links, order, document.querySelector('p.about').textContent];""")
+    links, order, about = got
+    print(f"contents: {len(links)} links; sections {len(order)}")
+    errors = []
+    if links != order:
+        errors.append(f"the contents {links} are not the sections in page order {order}")
+    if "first the paper's figures 3–12" not in about:
+        errors.append(f"the intro does not state the page's order (figures first): {about!r}")
+    return errors
+
+
+def check_phone(driver, url, screenshot):
+    """At 390×844 (mobile, touch): laid out at 390 px, text at least 12 px, none past the side."""
+    driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                           {"width": 390, "height": 844, "deviceScaleFactor": 2, "mobile": True})
+    driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
+    driver.get(url + "index.html")
+    wait_for(driver, "return document.readyState", lambda s: s == "complete")
+    width = driver.execute_script("return [document.documentElement.clientWidth, window.innerWidth]")
+    errors = [] if width == [390, 390] else [f"on a 390 px phone the gallery is laid out {width} px wide"]
+    errors += [f"390×844: {p}" for p in text_problems(driver)]
+    driver.save_screenshot(str(screenshot))
     return errors
 
 
@@ -227,6 +263,7 @@ def main():
     with serve(out) as url, open_browser(chromium, driver_path, size=SCREEN,
                                          media=True) as driver:
         errors = check_page(driver, url, out, scenes, sweeps, root / "gallery.png")
+        errors += check_phone(driver, url, root / "gallery-390x844.png")
     if errors:
         fail("\n  " + "\n  ".join(errors))
     print("PASS: the gallery opens in Chromium; videos, images and links all load")

@@ -67,10 +67,52 @@ TEST(GalleryPage, HeaderSaysWhatAndHowItWasMade) {
   header.date = "2026-11-22 01:50 UTC";
   header.machine = "host <x>, Some CPU, 2 cores";
   const std::string html = gallery_html({}, header);
-  EXPECT_NE(html.find("figures 3–12 first"), std::string::npos) << html;
+  // The intro states the page's order: no league and no fit here, the figures first.
+  EXPECT_NE(html.find("first the paper's figures 3–12, the exact motion"), std::string::npos)
+      << html;
   EXPECT_NE(html.find("bookspin 1.2.3 (build aaaaaaaaaaaa)"), std::string::npos) << html;
   EXPECT_NE(html.find("2026-11-22 01:50 UTC"), std::string::npos) << html;
   EXPECT_NE(html.find("host &lt;x&gt;, Some CPU, 2 cores"), std::string::npos) << html;
+}
+
+// The contents list every section in the page's order, the clips under their group's name,
+// and the intro names the sections before the clips in that order too.
+TEST(GalleryPage, ContentsAndIntroFollowThePagesOrder) {
+  GalleryHeader header;
+  header.flipcheck_league = "flipcheck-league.html";
+  header.fits.push_back({"lab", "lab-fit.csv", "", {{1, "lab-toss1.png", "lab-toss1.mp4", ""}}});
+  std::vector<GalleryEntry> entries(3);
+  entries[0].name = "fig09-x";
+  entries[0].title = "Figure 9";
+  entries[0].group = GalleryGroup::paper_figure;
+  entries[1].name = "exact-x";
+  entries[1].title = "Exact";
+  entries[1].group = GalleryGroup::exact;
+  entries[2].name = "sweep-dt";
+  entries[2].title = "Sweep";
+  entries[2].group = GalleryGroup::sweep;
+  const std::string html = gallery_html(entries, header);
+  const auto at = [&html](const std::string& text, std::size_t from = 0) {
+    const std::size_t i = html.find(text, from);
+    EXPECT_NE(i, std::string::npos) << text;
+    return i;
+  };
+  at("first the conformance kit's league table and the phone-toss lab's fitted tosses, then the "
+     "paper's figures 3–12");
+  // Contents: the league, the lab, then each group's clips, before the first section.
+  const std::size_t nav = at("<nav class=\"contents\"");
+  const std::size_t league = at("href=\"#flipcheck-league\"", nav);
+  const std::size_t lab = at("href=\"#phone-lab\"", league);
+  const std::size_t figures = at("The paper's figures", lab);
+  const std::size_t fig09 = at("href=\"#fig09-x\">Figure 9</a>", figures);
+  const std::size_t exact = at("The exact motion", fig09);
+  const std::size_t sweeps = at("Sweeps", at("href=\"#exact-x\"", exact));
+  at("href=\"#sweep-dt\"", sweeps);
+  EXPECT_LT(at("</nav>"), at("id=\"flipcheck-league\""));
+  EXPECT_LT(at("id=\"flipcheck-league\""), at("id=\"phone-lab\""));
+  EXPECT_LT(at("id=\"phone-lab\""), at("id=\"fig09-x\""));
+  // A toss's clip shows its chart before it plays, not its first frame's empty panels.
+  at("<video controls preload=\"metadata\" src=\"lab-toss1.mp4\" poster=\"lab-toss1.png\">");
 }
 
 // An entry with nothing rendered says so, naming the MP4 it lacks; a sweep's picture stands

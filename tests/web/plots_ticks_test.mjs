@@ -35,7 +35,27 @@ test('time from 0: every tick inside the range, none beyond it', () => {
   assert.deepEqual(ticks, [0, 10, 20, 30]);
   for (const [lo, hi] of [[0, 1], [-7.7, 0.3], [123, 456], [1e-9, 3e-9]]) {
     const t = niceTicks(lo, hi, 3);
-    assert.ok(t.ticks.length >= 1 && t.ticks.length <= 4, `${lo}…${hi}: ${t.ticks}`);
+    assert.ok(t.ticks.length >= 2 && t.ticks.length <= 4, `${lo}…${hi}: ${t.ticks}`);
     for (const v of t.ticks) assert.ok(v >= lo - 1e-12 * Math.abs(hi) && v <= hi * (1 + 1e-12) + 1e-300, `${v} in ${lo}…${hi}`);
+  }
+});
+
+test('every axis has at least two labelled ticks, different, within its range', () => {
+  // fig09 at t = 227 at 1280×720: a panel's range of -0.2 to 0.9 in two steps was 0 alone.
+  assert.deepEqual(labels(-0.2, 0.9, 2), ['0', '0.5']);
+  assert.deepEqual(labels(17.81, 17.825, 3), ['17.81', '17.82']);
+  // Seeded ranges of every size and place (a linear congruential generator: the same each run).
+  let seed = 87;
+  const random = () => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed / 2147483648; };
+  for (let k = 0; k < 20000; ++k) {
+    const span = 10 ** (-12 + 24 * random()), lo = (random() - 0.5) * span * 10 ** (4 * random());
+    const hi = lo + span, count = 1 + Math.floor(5 * random());
+    const { ticks, step } = niceTicks(lo, hi, count);
+    const shown = ticks.map((v) => tickLabel(v, step));
+    const where = `${lo}…${hi} in ${count}: ${shown}`;
+    assert.ok(ticks.length >= 2, where);
+    assert.ok(ticks.length <= Math.max(count, 3) + 1 + 1, where);
+    for (const v of ticks) assert.ok(v >= lo - 1e-9 * step && v <= hi + 1e-9 * step, where);
+    assert.equal(new Set(shown).size, shown.length, where);
   }
 });

@@ -3,6 +3,8 @@
 // rewritten every 60 ms to 1 s (as often as browsers let a page rewrite its address, about 200
 // times in 10 s), t written ahead of the time shown by half the time until the next rewrite, so
 // that between two rewrites the address is never more than half that time off (0.45 at speed 15).
+// A change of scene and a panel opened or closed are new history entries (Back and Forward go
+// through them: main.js reads the address again on popstate); the rest rewrites the entry.
 const URL_MIN_MS = 60, URL_MAX_MS = 1000;
 
 export class Address {
@@ -12,12 +14,28 @@ export class Address {
     this.writtenAt = 0;
   }
 
-  /** Writes the state; `lead` (time units) ahead of its t. */
-  write(lead = 0) {
+  /** The address of the state; `lead` (time units) ahead of its t; the open panel as the
+   * hash, as the gallery links them (#lab, #judge). */
+  href(lead = 0) {
     const s = this.state();
     const q = this.space.format(lead ? { ...s, t: s.t + lead } : s, this.base());
-    history.replaceState(null, '', q ? `?${q}` : location.pathname);
+    const panel = !document.getElementById('lab').hidden ? '#lab' : !document.getElementById('judge').hidden ? '#judge' : '';
+    return (q ? `?${q}` : location.pathname) + panel;
   }
+
+  /** Writes the state in place; `lead` (time units) ahead of its t. After push(), the next
+   * write is a new history entry instead (Back returns to the one before it). */
+  write(lead = 0) {
+    const href = this.href(lead);
+    if (this.pushing) {
+      this.pushing = false;
+      if (href !== location.pathname + location.search + location.hash) { history.pushState(null, '', href); return; }
+    }
+    history.replaceState(null, '', href);
+  }
+
+  /** The next write a new history entry (a scene changed, a panel opened or closed). */
+  push() { this.pushing = Boolean(this.live); }
 
   /** While playing, at frame time `now` (ms): written every half time unit, within the limits. */
   whilePlaying(now) {

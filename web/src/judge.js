@@ -27,7 +27,28 @@ const WORDS = {
  * analysis::judge_rules (docs/flipcheck.md): the value itself over the limit fails. Not
  * first_flip (its rule bounds |first − exact| over T/2, not the time shown). */
 const RULE_OF = { start_error: 'start', energy_drift: 'energy_drift', L_drift: 'L_drift',
-  orientation_error: 'orientation_error', separatrix_approach: 'separatrix_approach' };
+  L_direction_error: 'L_direction', orientation_error: 'orientation_error',
+  separatrix_approach: 'separatrix_approach' };
+
+/** The measure each of the judge's failure lines (analysis::judge_motion's words) is about: a
+ * line's start and the judgement's column, so that the table marks the row of every failure
+ * (those of no bound on the value alone too: the turn-overs, the first one's time). */
+const FAILURE_OF = [
+  [/^ends at step/, 'last_step'], [/^starts /, 'start_error'], [/^energy drift/, 'energy_drift'],
+  [/^\|L\| drift/, 'L_drift'], [/^L turned/, 'L_direction_error'], [/^\d+ turn-overs?,/, 'flips'],
+  [/^first turn-over/, 'first_flip'], [/^orientation error/, 'orientation_error'],
+  [/^tumbles at/, 'tumble_time'], [/^r = 2E/, 'separatrix_approach'],
+];
+
+/** {column: its failure line} of the judge's `failures` (lines FAILURE_OF does not know: none). */
+export function failedColumns(failures) {
+  const out = {};
+  for (const line of failures || []) {
+    const hit = FAILURE_OF.find(([re]) => re.test(line));
+    if (hit && !(hit[1] in out)) out[hit[1]] = line;
+  }
+  return out;
+}
 
 /** {column: limit} from the judge's rules (analysis::judge_rules: a line "name value" each, then
  * "columns …"): a measure's limit, for the table, where the rule of that name is a bound on
@@ -214,13 +235,19 @@ export class JudgePanel {
     // every digit).
     // A measure the judge bounds shows its limit beside it, and over it reads as a failure.
     const limits = limitsOf(this.wasm.judgeRules ? this.wasm.judgeRules() : '', Object.keys(row));
+    // A measure a failure line names is marked too, as the line says it (the turn-overs
+    // against the exact count, the first one's time against its share of T/2).
+    const failed = failedColumns(failures);
     const rows = Object.entries(row).filter(([c]) => !TEXT_COLUMNS.includes(c)).map(([c, v]) => {
       const limit = c in limits && v !== null ? limits[c] : null;
-      const over = limit !== null && v > limit;
+      const overLimit = limit !== null && v > limit;
+      const over = overLimit || c in failed;
       // The limit with the rules' digits, not padded to four, in the values' form: 0.01, and
       // 1 × 10⁻⁶ beside a value of 3.217 × 10⁻⁷ (not 0.000001, six places to count).
       const limitText = limit === null ? '' : asGiven(limit);
-      const bound = limit === null ? '' : `${over ? 'over its limit' : 'limit'} ${limitText}`;
+      const why = c in failed ? (/\(([^)]*)\)\s*$/.exec(failed[c]) || [null, failed[c]])[1] : '';
+      const bound = limit !== null ? `${overLimit ? 'over its limit' : 'limit'} ${limitText}`
+        : over ? `failed: ${why}` : '';
       return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c}</code></small>` : ''}</th>` +
         `<td${v === null ? '' : ` title="${v}"`}>${significant(v)}</td><td class="limit">${bound}</td></tr>`;
     });

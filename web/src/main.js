@@ -22,6 +22,8 @@ import { loadProgram } from './packed.js';
 import { Address } from './address.js';
 
 const $ = (id) => document.getElementById(id);
+/** The 3D view's least height (CSS px) on any screen. */
+const VIEW_MIN_PX = 200;
 
 function startApp(wasm, engines) {
   const SCENES = window.BOOKSPIN_SCENES || [];  // inlined by bookspin explore
@@ -40,6 +42,9 @@ function startApp(wasm, engines) {
   const base = () => space.sceneBase(SCENES, app.state.scene);
   /** The scene's measured ω ({t, w, ut, u}, bookspin explore), or null. */
   const measured = () => (SCENES.find((s) => s.name === app.state.scene) || {}).measured || null;
+  /** The scene's time unit: a measured toss's is the recording's second (its ω in rad/s, its
+   * flight in seconds: docs/phone-lab.md); a scene of the paper's runs in time units. */
+  const timeUnit = () => (measured() ? 's' : 'time units');
 
   /** Steps towards time `target` (for at most `ms`, the rest a piece per frame). */
   function catchUp(target, ms) {
@@ -53,6 +58,7 @@ function startApp(wasm, engines) {
     const { state, runs } = app;
     $('message').textContent = runs.rebuild(state).join('; ');
     app.view.setRuns(runs.list, state.showL);
+    $('overlay').style.minHeight = '';
     const target = state.t;
     state.t = 0;
     app.pacer.stop();
@@ -79,10 +85,11 @@ function startApp(wasm, engines) {
     draw();
   }
   const sphere = new Sphere($('sphere'), wasm, pickStart);
-  app.panels = new Panels($('sphere'), $('plots'), sphere, measured);
+  app.panels = new Panels($('sphere'), $('plots'), sphere, measured, timeUnit);
 
   function setPlaying(p) {
     app.playing = p;
+    layout(true);
     $('play').textContent = p ? 'Pause' : 'Play';
     app.lastFrame = null;
     if (!p) address.write();
@@ -94,7 +101,9 @@ function startApp(wasm, engines) {
     const list = app.runs.list;
     // The readout first: its strip's height sets the view's (index.html), under whose bottom
     // the bodies' labels are placed; placed before it grew, a label ran past the view.
-    app.readout.draw(list, app.state.t); lap('readout');
+    app.readout.draw(list, app.state.t, timeUnit());
+    if (app.playing) { const strip = $('overlay'); strip.style.minHeight = `${strip.offsetHeight}px`; }
+    lap('readout');
     app.view.render(list); lap('view');
     app.panels.draw(list, app.state.t, app.playing, t0, lap);
     if (app.framesDrawn === 0) app.firstFrameAt = performance.now();
@@ -126,10 +135,32 @@ function startApp(wasm, engines) {
     requestAnimationFrame(frame);
   }
 
+  /** The readout's strip bounded so that the 3D view keeps its share of the screen: at least
+   * a third of the window's area and never under VIEW_MIN_PX tall (docs/explorer.md, "On every
+   * screen"); what the strip cannot show scrolls inside it. While playing it only grows (a
+   * line that wraps anew grows it once; none shrinks it), so that nothing under it moves under
+   * the pointer; a new run, a new size or a pause sets it afresh (`fresh`). */
+  function layout(fresh) {
+    const strip = $('overlay'), box = $('viewBox'), main = $('main');
+    const stacked = matchMedia('(max-width: 899px)').matches;  // index.html's stacked layout
+    if (fresh) strip.style.minHeight = '';
+    if (!stacked) {
+      const share = 1 + Math.max(VIEW_MIN_PX, innerWidth * innerHeight / 3 / Math.max(1, main.clientWidth));
+      strip.style.maxHeight = `${Math.max(48, main.clientHeight - share)}px`;
+    } else {
+      // Stacked (a phone): the view its own height (index.html); the strip as tall as a
+      // phone's screen leaves beside the view and the transport bar.
+      const beside = matchMedia('(orientation: landscape)').matches;  // index.html: beside the view
+      strip.style.maxHeight = `${beside ? box.offsetHeight
+        : Math.max(96, innerHeight - box.offsetHeight - $('transport').offsetHeight)}px`;
+    }
+  }
+
   /** The view, the plots and the left panel fitted to the window (`unfold`: the scene's
    * description shown again where it fits). */
   function resize(unfold = true) {
     app.controls.fitPanel(Boolean(unfold));
+    layout(true);
     app.panels.resize();
     app.view.resize(app.runs.list, app.state.showL);
     if (app.runs.list.length) app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
@@ -138,6 +169,7 @@ function startApp(wasm, engines) {
   app.controls.listen((id) => {
     if (id === 'scene') {
       app.state = space.sceneBase(SCENES, $('scene').value);
+      address.push();  // Back returns to the scene before
     } else {
       const t = app.state.t;
       app.state = app.controls.read(app.state);
@@ -174,7 +206,44 @@ function startApp(wasm, engines) {
 
   $('version').textContent = wasm.version();  // bookspin's one version (VERSION)
   app.judge = new JudgePanel(wasm, SCENES, () => app.state.scene);
-  app.lab = new LabPanel(wasm, LabPanel.playAsScene(SCENES, app.controls));
+  // "Play beside the measurement": the toss chosen as a scene, and played.
+  const playToss = LabPanel.playAsScene(SCENES, app.controls);
+  app.lab = new LabPanel(wasm, (scene) => { playToss(scene); setPlaying(true); });
+  // A panel opened or closed (its button, Close, Escape, a link's #lab or #judge): a history
+  // entry of its own, so that Back closes it again, and Forward opens it.
+  let restoring = false;
+  for (const id of ['lab', 'judge']) {
+    new MutationObserver(() => {
+      if (restoring) return;
+      address.push();
+      address.write();
+    }).observe($(id), { attributes: true, attributeFilter: ['hidden'] });
+  }
+  /** The lab opened from an address (a link, a reload, Back or Forward) holds no recording:
+   * an address cannot carry the files, so the panel says to drop them again. */
+  function labFromAddress() {
+    if (!$('lab').hidden && $('labResult').hidden && !$('labBusy').textContent)
+      $('labBusy').textContent = 'the address does not carry recordings: drop yours here again to see the fit';
+  }
+  if (location.hash === '#lab') queueMicrotask(() => queueMicrotask(labFromAddress));
+  // Back and Forward: the state the address holds, its panels as its hash says.
+  window.addEventListener('popstate', () => {
+    restoring = true;
+    // The address's state and panels first: Pause writes the page's state into the address.
+    const name = new URLSearchParams(location.search).get('scene') || '';
+    app.state = app.pacer.limit(app.controls.fit(space.parse(location.search, space.sceneBase(SCENES, name))), base());
+    $('lab').hidden = location.hash !== '#lab';
+    if (location.hash === '#judge') app.judge.open(app.state.scene); else app.judge.close();
+    setPlaying(false);
+    app.controls.write(app.state);
+    rebuild();
+    labFromAddress();
+    draw();
+    // The mutation records of the panels' changes are delivered after this task: let them pass.
+    setTimeout(() => { restoring = false; }, 0);
+    if (name && !SCENES.some((s) => s.name === name))
+      $('message').textContent = `scene ${name} is not in this page: a toss fitted in the Phone-toss lab is not kept in the address; drop its recording in the lab again`;
+  });
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
   window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
   app.state = app.pacer.limit(app.controls.fit(app.state), base());
@@ -184,6 +253,9 @@ function startApp(wasm, engines) {
   draw();
   window.explorer.ready = true;
   requestAnimationFrame(frame);
+  // What the page does as it opens (a link's #judge choosing a scenario) rewrites its entry;
+  // from the first frame on, a scene or a panel is a new one.
+  requestAnimationFrame(() => { address.live = true; });
 }
 
 // The physics and, with bookspin explore --engines, the JavaScript engines, unpacked (packed.js).

@@ -18,8 +18,8 @@ function fitCanvas(canvas) {
 export class Panels {
   /** `sphere` (sphere.js) draws on `sphereCanvas`; `measured()`: the scene's measured ω
    * ({t, w, ut, u}, bookspin explore) or null. */
-  constructor(sphereCanvas, plotsCanvas, sphere, measured) {
-    Object.assign(this, { sphereCanvas, plotsCanvas, sphere, measured });
+  constructor(sphereCanvas, plotsCanvas, sphere, measured, timeUnit = () => 'time units') {
+    Object.assign(this, { sphereCanvas, plotsCanvas, sphere, measured, timeUnit });
     this.seen = { sphere: null, plots: null };
     this.plotsDrawnAt = -Infinity;
     this.spans = [];          // each plotted line's drawn height (hooks.js: plotSpans)
@@ -43,8 +43,8 @@ export class Panels {
     }
     lap('sphere');
     if ((!playing || now - this.plotsDrawnAt >= PLOTS_EVERY_MS) &&
-        this.changed('plots', [p.width, p.height, measured, ...list.flatMap((r) => [r.history, r.history.length])])) {
-      const drawn = drawPlots(p, list, measured);
+        this.changed('plots', [p.width, p.height, measured, this.timeUnit(), ...list.flatMap((r) => [r.history, r.history.length])])) {
+      const drawn = drawPlots(p, list, measured, this.timeUnit());
       this.spans = drawn.spans;
       this.measuredDots = drawn.measuredDots;
       this.tickLabels = drawn.tickLabels;
@@ -55,6 +55,11 @@ export class Panels {
 
   /** Both canvases to their displayed size; the sphere redrawn next frame. */
   resize() {
+    // The sphere as wide as its column, 16/17 of that tall, in whole pixels of its backing
+    // store: a fractional CSS height against a rounded store scales y apart from x, and a pick
+    // lands off the point clicked.
+    const dpr = window.devicePixelRatio || 1, s = this.sphereCanvas;
+    s.style.height = `${Math.round(s.getBoundingClientRect().width * 16 / 17 * dpr) / dpr}px`;
     fitCanvas(this.sphereCanvas);
     fitCanvas(this.plotsCanvas);
     this.sphere.redraw = true;

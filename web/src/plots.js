@@ -27,16 +27,22 @@ export function flooredRange(lo, hi, floor) {
   return [mid - floor, mid + floor];
 }
 
-/** Round ticks ("1-2-5" steps) within [lo, hi], at most `count` + 1 of them: {ticks, step}. */
+/** Round ticks ("1-2-5" steps) within [lo, hi], at most `count` + 1 of them and never fewer
+ * than two, so that an axis's labels say its range (a range of -0.2 to 0.9 in two steps is 0
+ * and 0.5, not 0 alone): {ticks, step}. */
 export function niceTicks(lo, hi, count = 3) {
   const span = hi - lo;
   if (!(span > 0) || !Number.isFinite(span)) return { ticks: [lo], step: 0 };
-  const magnitude = 10 ** Math.floor(Math.log10(span / count));
-  const step = [1, 2, 5, 10].map((m) => m * magnitude).find((s) => span / s <= count) || 10 * magnitude;
-  const ticks = [];
-  for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
-    ticks.push(Math.abs(v) < 1e-9 * step ? 0 : v);
-  return { ticks, step };
+  const magnitude = 10 ** Math.floor(Math.log10(span / Math.max(1, count)));
+  // The round steps from the largest that gives at most `count` intervals downwards.
+  const steps = [10, 5, 2, 1, 0.5, 0.2, 0.1].map((m) => m * magnitude);
+  let at = steps.findIndex((s, i) => i + 1 === steps.length || span / steps[i + 1] > count);
+  for (;; ++at) {
+    const step = steps[at], ticks = [];
+    for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
+      ticks.push(Math.abs(v) < 1e-9 * step ? 0 : v);
+    if (ticks.length >= 2 || at + 1 === steps.length) return { ticks, step };
+  }
 }
 
 /** A tick's label: the decimals its step needs, or m×10ⁿ (as "2e-6") for steps under 10⁻³ or
@@ -82,8 +88,9 @@ export function wrapped(g, text, width) {
 /** Draws the three panels of `runs` on `canvas`, with a legend of the runs and a time axis,
  * and the scene's `measured` ω (or null) up to the runs' time as dots on the ω panel; returns
  * {spans: each line's drawn height in CSS pixels, {panel, run, component, px}; measuredDots:
- * how many measured samples were drawn}. */
-export function drawPlots(canvas, runs, measured = null) {
+ * how many measured samples were drawn}. `timeUnit`: the time axis's unit ('s' for a toss
+ * measured in seconds, docs/explorer.md). */
+export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units') {
   const g = canvas.getContext('2d', CANVAS_2D);
   const scale = canvas.width / Math.max(1, canvas.clientWidth || canvas.width);
   g.setTransform(scale, 0, 0, scale, 0, 0);
@@ -129,7 +136,8 @@ export function drawPlots(canvas, runs, measured = null) {
   const spans = [];  // how tall each line is drawn (CSS px): the tests' flat-line check
   const tickLabels = [];  // each drawn tick label: {axis, value, step, text} (the tests' digits check)
   // Each panel's range and ticks first: the widest tick label sets the plots' left margin.
-  const panels = PANELS.map(([title, f, floor], k) => {
+  const panels = PANELS.map(([title0, f, floor], k) => {
+    const title = timeUnit === 's' ? title0.replace('rad/time', 'rad/s') : title0;
     const y0 = top + k * ph + FONT_PX + 4, h = Math.max(4, ph - FONT_PX - 8);
     let lo = Infinity, hi = -Infinity;
     for (const r of runs) {
@@ -214,11 +222,13 @@ export function drawPlots(canvas, runs, measured = null) {
   // The time axis: round ticks of t under the last panel, its name at the right.
   g.fillStyle = '#aaa';
   g.font = `${TICK_PX}px sans-serif`;
-  // Before a step (tmax at its floor) t = 0 alone.
-  const time = tmax > 1e-9 ? niceTicks(0, tmax, Math.max(2, Math.floor((x1 - x0) / 90)))
-    : { ticks: [0], step: 0 };
-  const name = 't (time units)';
+  // The axis's name at the right; the ticks over the times whose labels end left of it (at
+  // least two of them: before the first step, tmax at its floor, 0 and the floor).
+  const name = `t (${timeUnit})`;
   const nameX = W - 4 - g.measureText(name).width;
+  const room = Math.max(0, nameX - 8 - g.measureText(tickLabel(tmax, tmax / 4)).width / 2 - x0);
+  const tShown = tmax * Math.min(1, room / Math.max(1, x1 - x0));
+  const time = niceTicks(0, tShown, Math.max(1, Math.floor(room / 90)));
   for (const v of time.ticks) {
     const label = tickLabel(v, time.step);
     const tx = Math.max(4, xOf(v) - g.measureText(label).width / 2);

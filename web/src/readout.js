@@ -23,7 +23,7 @@ function manyRunsHtml(runs) {
     const own = r.session.flips();
     const first = own.first === null ? '—' : fixed(own.first, 2);
     return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
-      `<div class="counts"><span class="flips">flips ${own.count}</span> · <span class="first">first ${first}</span></div></div>`;
+      `<div class="counts"><span class="flips">flips <span class="count">${own.count}</span></span> · <span class="first">first <span class="num">${first}</span></span></div></div>`;
   }).join('') + '</div>';
 }
 
@@ -39,8 +39,8 @@ function runsHtml(runs, t) {
       ? 'exact motion: never turns over (a wobble)'
       : `exact motion: first flip at ${fixed(exact.first, 2)}, count ${exact.count}`;
     return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
-      `<div class="counts"><span class="big flips">flips ${own.count}</span> ` +
-      `<span class="big first">first flip at t = ${first}</span> <span class="exact">${beside}</span></div>` +
+      `<div class="counts"><span class="big flips">flips <span class="count">${own.count}</span></span> ` +
+      `<span class="big first">first flip at t = <span class="num">${first}</span></span> <span class="exact">${beside}</span></div>` +
       // ω in numbers for one run; in compare mode the plots show it, and the books stay in view.
       (runs.length > 1 ? '' : `<div class="omega">ω = (${h.w.map(omegaText).join(', ')})</div>`) +
       '</div>';
@@ -52,10 +52,11 @@ export class Readout {
     this.shown = null;  // the runs' HTML last written
   }
 
-  /** Writes t (the clock, the time line and the slider) and the runs' lines, the latter only
-   * when they changed. */
-  draw(runs, t) {
-    const text = `t = ${fixed(t, 2)}`;
+  /** Writes t (the clock, the time line and the slider; `unit` the scene's time unit) and the
+   * runs' lines, the latter only when they changed. */
+  draw(runs, t, unit = 'time units') {
+    // A measured toss's time in seconds, said; the paper's time units are left unnamed.
+    const text = `t = ${fixed(t, 2)}${unit === 's' ? ' s' : ''}`;
     $('time').textContent = text;
     $('clock').textContent = text;
     $('slider').max = Math.max(Number($('slider').max), Math.ceil(t));

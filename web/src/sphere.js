@@ -9,6 +9,9 @@ import * as THREE from 'three';
 // GPU) cost a tenth of a second and more per redraw, on the CPU, in the GPU process.
 export const CANVAS_2D = { willReadFrequently: true };
 
+/** Whether the page is on a touch screen (its main pointer coarse): its words say "tap", not
+ * "click" (index.html's hints likewise, by the same media query). */
+export const touchScreen = () => typeof matchMedia === 'function' && matchMedia('(pointer: coarse)').matches;
 const DRAG_PIXELS = 5;  // a press that moves less than this is a click, not a drag
 const DOT_REACH_PX = 10;  // a click this close to a drawn L dot (CSS px) picks that dot's L
 const FONT_PX = 16;
@@ -231,8 +234,16 @@ export class Sphere {
     const k = this.scale();
     g.lineWidth = k;
     g.strokeStyle = '#555'; g.beginPath(); g.arc(cx, cy, R, 0, 2 * Math.PI); g.stroke();
-    g.fillStyle = '#ccc'; g.font = `${FONT_PX * k}px sans-serif`;
-    g.fillText('L/|L| in the body frame · click: start here', 8 * k, (FONT_PX + 2) * k);
+    // The caption within the canvas: on a narrow one (a 1024-wide screen's 260 px) its short
+    // form, at 12 px at least.
+    const act = touchScreen() ? 'tap' : 'click';
+    let caption = `L/|L| in the body frame · ${act}: start here`, px = FONT_PX;
+    g.font = `${px * k}px sans-serif`;
+    if (g.measureText(caption).width > W - 16 * k) caption = `L/|L|, body frame · ${act}: start`;
+    while (px > 12 && g.measureText(caption).width > W - 16 * k) g.font = `${--px * k}px sans-serif`;
+    g.fillStyle = '#ccc';
+    g.fillText(caption, 8 * k, (FONT_PX + 2) * k);
+    g.font = `${FONT_PX * k}px sans-serif`;
     this.dots = [];
     this.measuredPoints = 0;
     if (!runs.length) return;
