@@ -131,27 +131,38 @@ std::optional<PredictionSigma> prediction_sigma(const TossData& d, const Paramet
   return sigma;
 }
 
+namespace {
+
+/// A prediction withheld, with why (one phrase), and nothing computed.
+Prediction withheld_because(const char* why) {
+  Prediction prediction;
+  prediction.withheld = why;
+  return prediction;
+}
+
+}  // namespace
+
 Prediction predict_half_period(const TossData& d, const Parameters& body,
                                const SolveOptions& options, const PredictionInputs& inputs) {
   char why[200];
   Parameters p = body;
   if (!solve({d}, p, options).usable) {
     std::snprintf(why, sizeof why, "its first %g s could not be fitted", options.window);
-    return {{}, {}, {}, why};
+    return withheld_because(why);
   }
   const std::optional<double> half = half_of(p.moments(), p.axes(), omega0_of(p),
                                              physics::Drag{inputs.drag, p.omega0[0][3]}, d.tau);
   if (!half) {
     std::snprintf(why, sizeof why, "the motion predicted from its first %g s does not flip",
                   options.window);
-    return {{}, {}, {}, why};
+    return withheld_because(why);
   }
   const std::optional<PredictionSigma> sigma = prediction_sigma(d, p, body, options, inputs, *half);
   if (!sigma) {
     std::snprintf(why, sizeof why,
                   "the separatrix within its inputs' σ from its first %g s: no interval holds it",
                   options.window);
-    return {{}, {}, {}, why};
+    return withheld_because(why);
   }
   Prediction prediction;
   prediction.propagated_half = half;

@@ -78,9 +78,11 @@ TEST(Judgement, AFailureNamesTheStepItStartsAndTheStepItIsWorst) {
                           "step 1000)"))
       << verdict_line(c);
   EXPECT_TRUE(has_failure(c, "L turned ")) << verdict_line(c);
-  for (const std::string& f : c.failures)
-    if (f.rfind("L turned", 0) == 0)
+  for (const std::string& f : c.failures) {
+    if (f.rfind("L turned", 0) == 0) {
       EXPECT_NE(f.find("(limit 0.01; past it from step 1000)"), std::string::npos) << f;
+    }
+  }
   // Energy drifting from its first step on, worst at the last: both named.
   std::vector<MotionSample> gaining = exact_rows(s, 1);
   for (MotionSample& row : gaining) row.omega_body *= 1.0 + 1e-5 * static_cast<double>(row.step);

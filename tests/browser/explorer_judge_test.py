@@ -144,7 +144,9 @@ def failure_marks(driver, failures, where):
         cells = tr.find_elements(By.TAG_NAME, "td")
         colour = tr.find_element(By.TAG_NAME, "td").value_of_css_property("color")
         rows[key] = ("over" in (tr.get_attribute("class") or "").split(), cells[1].text if len(cells) > 1 else "", colour)
-    for line in [f for f in failures.split("; ") if f]:
+    # The CSV's failures are joined by "; ", which a line's own "(limit 0.01; past it from step
+    # 36)" also holds: split only outside the parentheses.
+    for line in [f for f in re.split(r"; (?![^()]*\))", failures) if f]:
         column = next((c for start, c in FAILURE_COLUMNS if line.startswith(start)), None)
         if column is None and re.match(r"\d+ turn-overs?, exact", line):
             column = "flips"

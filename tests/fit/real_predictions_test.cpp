@@ -46,8 +46,9 @@ Count count_fit(const std::vector<std::string>& names) {
                 kWidestInterval + 1e-12);
       EXPECT_GE(*t.half_period_predicted_sigma, *t.half_period_propagated_sigma);
     }
-    if (t.half_period_predicted && !t.half_period_predicted_sigma)
+    if (t.half_period_predicted && !t.half_period_predicted_sigma) {
       EXPECT_EQ(t.prediction_interval.rfind("uncalibrated", 0), 0u) << t.prediction_interval;
+    }
     if (!t.half_period_measured) continue;
     ++c.measured;
     if (!t.half_period_predicted) {
