@@ -423,7 +423,7 @@ TEST(FlipcheckCommand, EveryExportedScenarioRoundTripsThroughJudgeAtEveryStrideI
         const fs::path file =
             dir / (name + "-every" + std::to_string(k) + (with_last ? "-last" : "") + ".csv");
         write_thinned(exact, k, with_last, file);
-        motions += " " + quoted(file);
+        motions.append(" ").append(quoted(file));  // not " " + …: GCC 12's -Wrestrict
       }
     }
     const SplitResult by_toml = run_bookspin_split("flipcheck judge " + scenario(name) + motions +

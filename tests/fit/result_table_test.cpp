@@ -48,9 +48,12 @@ void expect_result_first(const FitReport& report) {
                    ? "yes"
                    : "no";
     EXPECT_EQ(cells.back(), within);
-    if (!t.half_period_predicted) EXPECT_NE(s[2 + k].find("not predicted"), std::string::npos);
-    if (t.half_period_predicted && !t.half_period_predicted_sigma)
+    if (!t.half_period_predicted) {
+      EXPECT_NE(s[2 + k].find("not predicted"), std::string::npos);
+    }
+    if (t.half_period_predicted && !t.half_period_predicted_sigma) {
       EXPECT_NE(s[2 + k].find("(uncalibrated)"), std::string::npos);
+    }
   }
   // Then the bias: one line a recording, no other line about it.
   const std::size_t parts = report.result.parts.size();
