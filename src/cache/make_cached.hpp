@@ -2,6 +2,7 @@
 // The one "check the manifest, make the outputs, record them" of every cached product: an
 // output whose manifest matches is not made again (output/manifest.hpp has the file format
 // and what "matches" means; manifest_head.hpp what a product's head holds).
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -66,5 +67,17 @@ std::string cached_head(const CachedOutputs& cached);
 /// be written (the earlier manifest, which no longer tells the truth, is then removed).
 Outcome make_cached(const CachedOutputs& cached, const Freshness& freshness,
                     const std::function<Made()>& make);
+
+/// make_cached() of each of `each` in turn, their outputs put in place together (all of them or
+/// none, for a command of many scenes): `make(i)` stages the outputs of `each[i]` where they are
+/// not up to date, in the order of `each`; once every make has run, `put_in_place()` puts every
+/// staged output in place at once, and then every manifest is written, the last one's first.
+/// Each of `each` must be `all_or_nothing` (otherwise InternalError, before anything): a check,
+/// make or `put_in_place` that throws leaves every output and manifest as it was, and the
+/// exception goes on. Returns each one's Outcome, in the order of `each`.
+std::vector<Outcome> make_cached_together(const std::vector<CachedOutputs>& each,
+                                          const Freshness& freshness,
+                                          const std::function<Made(std::size_t)>& make,
+                                          const std::function<void()>& put_in_place);
 
 }  // namespace bookspin::cache

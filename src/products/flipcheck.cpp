@@ -13,6 +13,7 @@
 #include "common/sha256.hpp"
 #include "common/text_file.hpp"
 #include "jobs/motion_judgement.hpp"
+#include "jobs/scenario_export.hpp"
 #include "output/atomic_output.hpp"
 #include "output/output_dir.hpp"
 #include "output/staged_files.hpp"
@@ -46,54 +47,42 @@ cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
   return make_flipcheck_exports({job.scene}, job.out_dir, job.freshness, job.stop).front();
 }
 
-namespace {
-
-/// make_flipcheck_exports() from scenario `i` on: scenario i through make_cached (its make
-/// stages its files into `staged` and goes on to i + 1 before it returns), so that the last
-/// one's make puts every staged file in place at once, and every manifest is written after.
-void export_from(std::size_t i, const std::vector<scene::Scene>& scenes,
-                 const std::filesystem::path& out_dir, const cache::Freshness& freshness,
-                 const StopPoll& stop, output::StagedFiles& staged,
-                 std::vector<cache::Outcome>& outcomes) {
-  if (i == scenes.size()) {
-    // Asked once every temporary is written (a CSV of 10^6 rows takes a while to write), just
-    // before they are put in place: a signal until then leaves every earlier file.
-    stop_if_asked(stop, "flipcheck export write");
-    staged.commit();
-    return;
-  }
-  const scene::Scene& scene = scenes[i];
-  const FlipcheckExportLayout layout = flipcheck_export_layout(out_dir, scene);
-  const analysis::Scenario scenario = analysis::scenario_of(scene);
-  const cache::CachedOutputs cached{
-      scene.name + "-flipcheck", layout.manifest, "flipcheck export", {}, out_dir, &scene,
-      /*all_or_nothing=*/true};
-  bool went_on = false;
-  outcomes[i] = cache::make_cached(cached, freshness, [&] {
-    {  // the motion and its texts freed once written: only the temporaries wait for the rest
-      const jobs::ExactMotion motion = jobs::exact_motion(scenario, stop);
-      const jobs::ExportFiles texts = jobs::export_files(motion, stop);
-      output::prepare_output_dir(layout.json.parent_path());
-      staged.text(layout.json, texts.json);
-      staged.text(layout.csv, texts.csv);
-    }
-    went_on = true;
-    export_from(i + 1, scenes, out_dir, freshness, stop, staged, outcomes);
-    return cache::Made{{layout.json, layout.csv}};
-  });
-  if (!went_on) export_from(i + 1, scenes, out_dir, freshness, stop, staged, outcomes);
-}
-
-}  // namespace
-
 std::vector<cache::Outcome> make_flipcheck_exports(const std::vector<scene::Scene>& scenes,
                                                    const std::filesystem::path& out_dir,
                                                    const cache::Freshness& freshness,
                                                    const StopPoll& stop) {
-  std::vector<cache::Outcome> outcomes(scenes.size(), cache::Outcome::up_to_date);
+  std::vector<FlipcheckExportLayout> layouts;
+  std::vector<cache::CachedOutputs> cached;
+  for (const scene::Scene& scene : scenes) {
+    layouts.push_back(flipcheck_export_layout(out_dir, scene));
+    cached.push_back({scene.name + "-flipcheck",
+                      layouts.back().manifest,
+                      "flipcheck export",
+                      {},
+                      out_dir,
+                      &scene,
+                      /*all_or_nothing=*/true});
+  }
   output::StagedFiles staged;
-  export_from(0, scenes, out_dir, freshness, stop, staged, outcomes);
-  return outcomes;
+  // Every scenario's files staged, then put in place at once: all of them or none.
+  return cache::make_cached_together(
+      cached, freshness,
+      [&](std::size_t i) {
+        const FlipcheckExportLayout& layout = layouts[i];
+        {  // the texts freed once written: only the temporaries wait for the rest
+          const jobs::ExportFiles texts = jobs::scenario_export(scenes[i], stop);
+          output::prepare_output_dir(layout.json.parent_path());
+          staged.text(layout.json, texts.json);
+          staged.text(layout.csv, texts.csv);
+        }
+        return cache::Made{{layout.json, layout.csv}};
+      },
+      [&] {
+        // Asked once every temporary is written (a CSV of 10^6 rows takes a while to write),
+        // just before they are put in place: a signal until then leaves every earlier file.
+        stop_if_asked(stop, "flipcheck export write");
+        staged.commit();
+      });
 }
 
 bool is_scenario_json(const std::filesystem::path& path) {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/stop.hpp"
@@ -215,6 +216,62 @@ TEST(MakeCached, RemovesWhatTheEarlierRunListedAndThisOneDidNotMake) {
   EXPECT_FALSE(std::filesystem::exists(out / "frames"));  // left empty, so removed
   EXPECT_TRUE(std::filesystem::exists(out / "unlisted.txt"));
   EXPECT_TRUE(std::filesystem::exists(dir / "outside.txt"));
+}
+
+// make_cached_together: only the stale ones are made, in order; every output is put in place
+// once, after every make and before any manifest; a throw while putting them in place leaves
+// every earlier output and manifest as they were; one that is not all or nothing is refused.
+TEST(MakeCached, TogetherPutsEveryOutputInPlaceBeforeAnyManifest) {
+  ScratchDir dir;
+  std::vector<CachedOutputs> each;
+  for (const char* name : {"a", "b", "c"}) {
+    std::filesystem::create_directories(dir / name);
+    each.push_back({name,
+                    dir / name / "manifest.json",
+                    "test",
+                    {{"what", {kHead}}},
+                    dir.path(),
+                    nullptr,
+                    /*all_or_nothing=*/true});
+  }
+  std::vector<std::size_t> made;
+  int put = 0;
+  const auto make = [&](std::size_t i) {
+    made.push_back(i);
+    EXPECT_EQ(put, 0);
+    std::ofstream(dir / (each[i].name + ".txt")) << each[i].name;
+    return Made{{dir / (each[i].name + ".txt")}};
+  };
+  const auto put_in_place = [&] {
+    ++put;
+    for (const CachedOutputs& c : each) EXPECT_FALSE(std::filesystem::exists(c.manifest));
+  };
+  const Freshness freshness{false, false, {}};
+  EXPECT_EQ(make_cached_together(each, freshness, make, put_in_place),
+            (std::vector<Outcome>{Outcome::made, Outcome::made, Outcome::made}));
+  EXPECT_EQ(made, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(put, 1);
+  // b changed: only b made again.
+  std::ofstream(dir / "b.txt") << "longer";
+  made.clear();
+  put = 0;
+  const std::string a_manifest = bytes_of(each[0].manifest);
+  EXPECT_EQ(make_cached_together(each, freshness, make, [&] { ++put; }),
+            (std::vector<Outcome>{Outcome::up_to_date, Outcome::made, Outcome::up_to_date}));
+  EXPECT_EQ(made, (std::vector<std::size_t>{1}));
+  EXPECT_EQ(put, 1);
+  EXPECT_EQ(bytes_of(each[0].manifest), a_manifest);
+  // A throw while putting in place: every manifest as it was.
+  std::vector<std::string> manifests;
+  for (const CachedOutputs& c : each) manifests.push_back(bytes_of(c.manifest));
+  put = 0;
+  EXPECT_THROW(make_cached_together(each, {true, false, {}}, make, [] { throw Interrupted(2); }),
+               Interrupted);
+  for (std::size_t i = 0; i < each.size(); ++i) EXPECT_EQ(bytes_of(each[i].manifest), manifests[i]);
+  each[2].all_or_nothing = false;
+  made.clear();
+  EXPECT_THROW(make_cached_together(each, {true, false, {}}, make, [] {}), InternalError);
+  EXPECT_TRUE(made.empty());
 }
 
 }  // namespace
