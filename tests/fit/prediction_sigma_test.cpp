@@ -1,0 +1,236 @@
+// A predicted half period's σ against an independent propagation (docs/phone-lab.md,
+// "Prediction intervals"): each term is its input's σ times the derivative of T/2 with respect to
+// that input, the derivative taken here by central differences of T/2 itself (motion_half_period
+// over physics::DampedExactRotation, not the σ's own code), on a noise-free toss whose fitted
+// values are the truth; each term vanishes with its input's σ, scales with it, and the whole
+// scales with the recording's clock (stamps × a, ω ÷ a: T/2 and every σ × a).
+#include "fit/prediction_sigma.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "fit/half_period.hpp"
+#include "physics/damped_exact.hpp"
+
+namespace bookspin::fit {
+namespace {
+
+using physics::DragLaw;
+
+/// A toss sampled at 100 Hz for 1.5 s (times × `a`), its ω the exact damped motion's (÷ `a`),
+/// every component of each sample moved by ±`noise` in turn (the fitted motion's residual).
+struct Case {
+  Eigen::Vector3d moments{0.45, 0.72, 1.0};
+  Eigen::Matrix3d axes;
+  Eigen::Vector3d w0;  ///< rad/s, phone frame
+  double rate = 0.12;  ///< 1/s, linear law
+  double a = 1.0;      ///< the clock's scale
+  TossData d;
+  Parameters p;
+  SolveOptions options;
+
+  explicit Case(double scale = 1.0, double noise = 0.0) : a(scale) {
+    axes = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    w0 = axes * Eigen::Vector3d(0.9, 13.0, 1.1) / a;
+    rate /= a;
+    for (int i = 0; i <= 150; ++i) {
+      const double tau = 0.01 * i * a;
+      d.tau.push_back(tau);
+      const double sign = i % 2 ? 1.0 : -1.0;
+      d.omega.push_back(omega(moments, w0, rate, tau) + sign * noise / a * Eigen::Vector3d::Ones());
+    }
+    d.samples = static_cast<int>(d.tau.size());
+    p.R0 = axes;
+    p.log_ratios = {std::log(moments[0]), std::log(moments[1])};
+    p.omega0 = {{w0[0], w0[1], w0[2], rate}};
+    options.body_fixed = options.moments_fixed = options.rates_fixed = true;
+    options.drag = DragLaw::linear;
+    options.window = 0.3 * a;
+  }
+  Eigen::Vector3d omega(const Eigen::Vector3d& m, const Eigen::Vector3d& w, double r,
+                        double tau) const {
+    const physics::DampedExactRotation motion(m, axes.transpose() * w, {DragLaw::linear, r},
+                                              physics::ExactParts::omega_only);
+    return axes * motion.omega_body(tau);
+  }
+  /// T/2 over the toss's times, straight from the public motion and motion_half_period.
+  double half(const Eigen::Vector3d& m, const Eigen::Vector3d& w, double r) const {
+    const physics::DampedExactRotation motion(m, axes.transpose() * w, {DragLaw::linear, r},
+                                              physics::ExactParts::omega_only);
+    const std::optional<double> h = motion_half_period(motion, axes, d.tau);
+    EXPECT_TRUE(h.has_value());
+    return h.value_or(0.0);
+  }
+  double half() const { return half(moments, w0, rate); }
+  /// ∂(T/2)/∂x by central differences with step `h`, for x the moment i (0, 1), ω0's phone
+  /// component c (2, 3, 4) or the drag rate (5).
+  double derivative(int x, double h) const {
+    Eigen::Vector3d m_lo = moments, m_hi = moments, w_lo = w0, w_hi = w0;
+    double r_lo = rate, r_hi = rate;
+    if (x < 2) m_lo[x] -= h, m_hi[x] += h;
+    if (x >= 2 && x < 5) w_lo[x - 2] -= h, w_hi[x - 2] += h;
+    if (x == 5) r_lo -= h, r_hi += h;
+    return (half(m_hi, w_hi, r_hi) - half(m_lo, w_lo, r_lo)) / (2.0 * h);
+  }
+  PredictionSigma sigma(const PredictionInputs& inputs) const {
+    const std::optional<PredictionSigma> s = prediction_sigma(d, p, p, options, inputs, half());
+    EXPECT_TRUE(s.has_value());
+    return s.value_or(PredictionSigma{});
+  }
+};
+
+PredictionInputs inputs_of(const Eigen::Vector3d& ratio, const Eigen::Vector3d& bias, double rate,
+                           double a = 1.0) {
+  PredictionInputs in;
+  in.drag = DragLaw::linear;
+  in.ratio_sigma = ratio;
+  in.bias_sigma = bias / a;
+  in.rate_sigma = rate / a;
+  return in;
+}
+
+const Eigen::Vector3d kRatioSigma{0.004, 0.006, 0.0};
+const Eigen::Vector3d kBiasSigma{0.012, 0.02, 0.015};
+constexpr double kRateSigma = 0.015;
+
+/// The terms a linear propagation gives: σ_x |∂(T/2)/∂x| per input, in quadrature per term.
+struct Expected {
+  double omega0, body, rate;
+};
+Expected linear_terms(const Case& c, const Eigen::Vector3d& ratio, const Eigen::Vector3d& omega0,
+                      double rate) {
+  Expected e{};
+  for (int i = 0; i < 2; ++i) e.body += std::pow(ratio[i] * c.derivative(i, 0.25 * ratio[i]), 2);
+  for (int k = 0; k < 3; ++k)
+    e.omega0 += std::pow(omega0[k] * c.derivative(2 + k, 0.25 * omega0[k]), 2);
+  e.body = std::sqrt(e.body), e.omega0 = std::sqrt(e.omega0);
+  e.rate = std::abs(rate * c.derivative(5, 0.25 * rate));
+  return e;
+}
+
+TEST(PredictionSigma, EachTermIsItsInputsSigmaTimesTheHalfPeriodsDerivative) {
+  const Case c;
+  const PredictionSigma s = c.sigma(inputs_of(kRatioSigma, kBiasSigma, kRateSigma));
+  // Noise-free: ω0's σ is the bias's alone.
+  const Expected e = linear_terms(c, kRatioSigma, kBiasSigma, kRateSigma);
+  ASSERT_GT(e.omega0, 1e-4);
+  ASSERT_GT(e.body, 1e-4);
+  ASSERT_GT(e.rate, 1e-5);
+  EXPECT_NEAR(s.omega0, e.omega0, 0.05 * e.omega0);
+  EXPECT_NEAR(s.body, e.body, 0.05 * e.body);
+  EXPECT_NEAR(s.rate, e.rate, 0.05 * e.rate);
+  // The window's fit of a noise-free toss moves nothing.
+  EXPECT_LT(s.placement, 0.01 * s.total());
+  EXPECT_NEAR(s.total(),
+              std::sqrt(e.omega0 * e.omega0 + e.body * e.body + e.rate * e.rate +
+                        s.placement * s.placement),
+              0.05 * s.total());
+}
+
+TEST(PredictionSigma, OmegaScatterIsTwiceTheWindowsResidualOverRootN) {
+  // Each component's residual ±ε over the window's n samples, no bias's σ: ω0's σ per component
+  // 2ε/√n (docs/phone-lab.md, "Prediction intervals").
+  const double noise = 0.05;
+  const Case c(1.0, noise);
+  int n = 0;
+  for (double tau : c.d.tau) n += tau <= c.options.window;
+  const double per = 2.0 * noise / std::sqrt(static_cast<double>(n));
+  const PredictionSigma s = c.sigma(inputs_of(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0));
+  const Expected e = linear_terms(c, Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(per), 0);
+  EXPECT_NEAR(s.omega0, e.omega0, 0.05 * e.omega0);
+  EXPECT_EQ(s.body, 0.0);
+  EXPECT_EQ(s.rate, 0.0);
+  // With the bias's σ as well: the two in quadrature per component.
+  const PredictionSigma both = c.sigma(inputs_of(Eigen::Vector3d::Zero(), kBiasSigma, 0));
+  const Eigen::Vector3d combined = (kBiasSigma.array().square() + per * per).sqrt().matrix();
+  const Expected e2 = linear_terms(c, Eigen::Vector3d::Zero(), combined, 0);
+  EXPECT_NEAR(both.omega0, e2.omega0, 0.05 * e2.omega0);
+}
+
+TEST(PredictionSigma, EachTermVanishesWithItsInputAndScalesWithItsSigma) {
+  const Case c;
+  const PredictionSigma all = c.sigma(inputs_of(kRatioSigma, kBiasSigma, kRateSigma));
+  // Zeroed one at a time: that term 0, the others as they were.
+  const PredictionSigma no_body =
+      c.sigma(inputs_of(Eigen::Vector3d::Zero(), kBiasSigma, kRateSigma));
+  const PredictionSigma no_bias =
+      c.sigma(inputs_of(kRatioSigma, Eigen::Vector3d::Zero(), kRateSigma));
+  const PredictionSigma no_rate = c.sigma(inputs_of(kRatioSigma, kBiasSigma, 0.0));
+  EXPECT_EQ(no_body.body, 0.0);
+  EXPECT_LT(no_bias.omega0, 1e-6 * all.omega0);
+  EXPECT_EQ(no_rate.rate, 0.0);
+  EXPECT_DOUBLE_EQ(no_body.omega0, all.omega0);
+  EXPECT_DOUBLE_EQ(no_body.rate, all.rate);
+  EXPECT_DOUBLE_EQ(no_bias.body, all.body);
+  EXPECT_DOUBLE_EQ(no_rate.omega0, all.omega0);
+  // Each input's share of the variance: what is left of the total without it.
+  for (const PredictionSigma* without : {&no_body, &no_bias, &no_rate})
+    EXPECT_LT(without->total(), all.total());
+  EXPECT_NEAR(all.total() * all.total() - no_rate.total() * no_rate.total(), all.rate * all.rate,
+              1e-9 * all.total() * all.total());
+  EXPECT_NEAR(all.total() * all.total() - no_body.total() * no_body.total(), all.body * all.body,
+              1e-9 * all.total() * all.total());
+  // Each ratio alone, then both: in quadrature.
+  const PredictionSigma first =
+      c.sigma(inputs_of({kRatioSigma[0], 0, 0}, Eigen::Vector3d::Zero(), 0));
+  const PredictionSigma second =
+      c.sigma(inputs_of({0, kRatioSigma[1], 0}, Eigen::Vector3d::Zero(), 0));
+  EXPECT_GT(first.body, 0.0);
+  EXPECT_GT(second.body, 0.0);
+  EXPECT_NEAR(all.body, std::hypot(first.body, second.body), 1e-9 * all.body);
+  // Each bias component alone, then all three: in quadrature.
+  double components2 = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    const PredictionSigma one =
+        c.sigma(inputs_of(Eigen::Vector3d::Zero(), kBiasSigma[k] * Eigen::Vector3d::Unit(k), 0));
+    EXPECT_GT(one.omega0, 0.0) << k;
+    components2 += one.omega0 * one.omega0;
+  }
+  EXPECT_NEAR(all.omega0, std::sqrt(components2), 1e-6 * all.omega0);
+  // Every σ × 2: each term × 2 (to the curvature of T/2 over ±2σ).
+  const PredictionSigma twice =
+      c.sigma(inputs_of(2.0 * kRatioSigma, 2.0 * kBiasSigma, 2.0 * kRateSigma));
+  EXPECT_NEAR(twice.omega0, 2.0 * all.omega0, 0.03 * all.omega0);
+  EXPECT_NEAR(twice.body, 2.0 * all.body, 0.03 * all.body);
+  EXPECT_NEAR(twice.rate, 2.0 * all.rate, 0.03 * all.rate);
+}
+
+TEST(PredictionSigma, ATossOnAScaledClockScalesTheHalfPeriodAndEveryTerm) {
+  // Stamps × a, ω ÷ a (rates and their σ ÷ a, the window × a): the same toss in other units of
+  // time. T/2 and each propagated term × a (the window's placement, moved by a fixed 0.05 s, is
+  // not a relation of the clock).
+  const Case one(1.0, 0.03);
+  const PredictionSigma s1 = one.sigma(inputs_of(kRatioSigma, kBiasSigma, kRateSigma));
+  for (const double a : {0.5, 3.0}) {
+    const Case c(a, 0.03);
+    EXPECT_NEAR(c.half(), a * one.half(), 1e-9 * a * one.half()) << a;
+    const PredictionSigma s = c.sigma(inputs_of(kRatioSigma, kBiasSigma, kRateSigma, a));
+    EXPECT_NEAR(s.omega0, a * s1.omega0, 1e-6 * a * s1.omega0) << a;
+    EXPECT_NEAR(s.body, a * s1.body, 1e-6 * a * s1.body) << a;
+    EXPECT_NEAR(s.rate, a * s1.rate, 1e-6 * a * s1.rate) << a;
+  }
+}
+
+TEST(PredictionSigma, ThePredictionCarriesThePropagatedSigma) {
+  // predict_half_period fits the window itself (the truth, on a noise-free toss): its T/2 and
+  // its propagated σ are the independent ones.
+  const Case c;
+  const PredictionInputs in = inputs_of(kRatioSigma, kBiasSigma, kRateSigma);
+  Parameters body = c.p;
+  body.omega0 = {{c.w0[0] * 1.02, c.w0[1] * 0.99, c.w0[2] * 1.03, c.rate}};
+  const Prediction prediction = predict_half_period(c.d, body, c.options, in);
+  ASSERT_TRUE(prediction.propagated_half && prediction.propagated_sigma) << prediction.withheld;
+  EXPECT_NEAR(*prediction.propagated_half, c.half(), 1e-6 * c.half());
+  const Expected e = linear_terms(c, kRatioSigma, kBiasSigma, kRateSigma);
+  const double independent = std::sqrt(e.omega0 * e.omega0 + e.body * e.body + e.rate * e.rate);
+  EXPECT_NEAR(*prediction.propagated_sigma, independent, 0.05 * independent);
+  if (prediction.sigma) {
+    EXPECT_EQ(*prediction.sigma, *prediction.propagated_sigma);
+  }
+}
+
+}  // namespace
+}  // namespace bookspin::fit
