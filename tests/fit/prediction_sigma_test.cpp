@@ -3,11 +3,13 @@
 // that input, the derivative taken here by central differences of T/2 itself (motion_half_period
 // over physics::DampedExactRotation, not the σ's own code), on a noise-free toss whose fitted
 // values are the truth; each term vanishes with its input's σ, scales with it, and the whole
-// scales with the recording's clock (stamps × a, ω ÷ a: T/2 and every σ × a).
+// scales with the recording's clock (stamps × a, ω ÷ a: T/2 and every σ × a); the held drag
+// rate is the other tosses' inverse-variance mean.
 #include "fit/prediction_sigma.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -230,6 +232,65 @@ TEST(PredictionSigma, ThePredictionCarriesThePropagatedSigma) {
   if (prediction.sigma) {
     EXPECT_EQ(*prediction.sigma, *prediction.propagated_sigma);
   }
+}
+
+/// The held drag rate (held_rate) against the inverse-variance mean written out here: each other
+/// toss weighted by 1/c, c its rate's variance in their joint fit (covariances), its σ from theirs;
+/// with σ_j = k√c_j (each toss's σ its own fit's) the textbook k/√Σ(1/c_j).
+TEST(HeldRate, IsTheInverseVarianceMeanOfTheOtherTossesRates) {
+  const Case c;
+  // Three tosses of the case's body, 0.4, 0.8 and 1.5 s long (their rates' variances unequal).
+  const std::vector<Eigen::Vector3d> principal = {
+      {0.9, 13.0, 1.1}, {-1.2, 11.0, 1.4}, {0.7, -12.0, -0.9}};
+  const std::vector<double> rates = {0.10, 0.25, 0.16}, lengths = {0.4, 0.8, 1.5};
+  std::vector<TossData> rest;
+  Parameters fold = c.p;
+  fold.omega0.clear();
+  for (std::size_t j = 0; j < 3; ++j) {
+    TossData d;
+    const Eigen::Vector3d w = c.axes * principal[j];
+    for (int i = 0; 0.01 * i <= lengths[j] + 1e-9; ++i) {
+      d.tau.push_back(0.01 * i);
+      // A residual of ±0.05 rad/s: a fit with a finite σ.
+      d.omega.push_back(c.omega(c.moments, w, rates[j], 0.01 * i) +
+                        (i % 2 ? 0.05 : -0.05) * Eigen::Vector3d::Ones());
+    }
+    d.samples = static_cast<int>(d.tau.size());
+    rest.push_back(d);
+    fold.omega0.push_back({w[0], w[1], w[2], rates[j]});
+  }
+  const std::optional<Covariances> cov =
+      covariances(rest, fold, true, std::vector<bool>(fold.e.size(), false), DragLaw::linear);
+  ASSERT_TRUE(cov.has_value());
+  double inverse = 0.0, weighted = 0.0;
+  std::vector<double> variance;
+  for (std::size_t j = 0; j < 3; ++j) {
+    variance.push_back(cov->omega0[j](3, 3));
+    inverse += 1.0 / variance[j], weighted += rates[j] / variance[j];
+  }
+  ASSERT_GT(std::max({variance[0], variance[1], variance[2]}),
+            2.0 * std::min({variance[0], variance[1], variance[2]}));
+  for (const double k : {1.0, 3.0}) {
+    std::vector<std::optional<double>> sigmas;
+    for (double v : variance) sigmas.push_back(k * std::sqrt(v));
+    const HeldRate held = held_rate(rest, fold, true, DragLaw::linear, sigmas);
+    EXPECT_NEAR(held.rate, weighted / inverse, 1e-9) << k;
+    EXPECT_NEAR(held.sigma, k / std::sqrt(inverse), 1e-9 * k / std::sqrt(inverse)) << k;
+  }
+  // One toss: its own rate and σ.
+  const HeldRate one = held_rate({rest[1]},
+                                 [&] {
+                                   Parameters p = fold;
+                                   p.omega0 = {fold.omega0[1]};
+                                   return p;
+                                 }(),
+                                 true, DragLaw::linear, {0.03});
+  EXPECT_NEAR(one.rate, rates[1], 1e-12);
+  EXPECT_NEAR(one.sigma, 0.03, 1e-12);
+  // No drag law: none held.
+  const HeldRate none = held_rate(rest, fold, true, DragLaw::none, {0.1, 0.1, 0.1});
+  EXPECT_EQ(none.rate, 0.0);
+  EXPECT_EQ(none.sigma, 0.0);
 }
 
 }  // namespace
