@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "fit/half_period.hpp"
@@ -232,6 +233,60 @@ TEST(PredictionSigma, ThePredictionCarriesThePropagatedSigma) {
   if (prediction.sigma) {
     EXPECT_EQ(*prediction.sigma, *prediction.propagated_sigma);
   }
+}
+
+TEST(PredictionSigma, TheTotalIsEveryTermInQuadratureThePlacementsToo) {
+  // A noisy toss (seeded Gaussian, 0.08 rad/s): the window moved 0.05 s later fits another ω0,
+  // so the placement term is not 0 (the difference of the two T/2). predict_half_period's
+  // propagated σ is then the four terms of the same fit (solved here as it solves it) in
+  // quadrature.
+  Case c;
+  std::mt19937 random(11);
+  std::normal_distribution<double> gauss(0.0, 0.08);
+  for (Eigen::Vector3d& w : c.d.omega)
+    w += Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
+  const PredictionInputs in = inputs_of(kRatioSigma, kBiasSigma, kRateSigma);
+  Parameters start = c.p;
+  start.omega0 = {{c.d.omega[0][0], c.d.omega[0][1], c.d.omega[0][2], c.rate}};
+  Parameters fitted = start;
+  ASSERT_TRUE(solve({c.d}, fitted, c.options).usable);
+  const physics::DampedExactRotation motion(
+      fitted.moments(),
+      fitted.axes().transpose() *
+          Eigen::Vector3d(fitted.omega0[0][0], fitted.omega0[0][1], fitted.omega0[0][2]),
+      {DragLaw::linear, fitted.omega0[0][3]}, physics::ExactParts::omega_only);
+  const std::optional<double> half = motion_half_period(motion, fitted.axes(), c.d.tau);
+  ASSERT_TRUE(half.has_value());
+  const std::optional<PredictionSigma> s =
+      prediction_sigma(c.d, fitted, start, c.options, in, *half);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_GT(s->placement, 1e-3 * s->total());
+  // The placement: T/2 from the window moved 50 ms later (docs/phone-lab.md), its samples
+  // before 0.05 s left out, fitted from the same start, against T/2.
+  TossData later;
+  for (std::size_t i = 0; i < c.d.tau.size(); ++i)
+    if (c.d.tau[i] >= 0.05) later.tau.push_back(c.d.tau[i]), later.omega.push_back(c.d.omega[i]);
+  later.samples = static_cast<int>(later.tau.size());
+  SolveOptions moved = c.options;
+  moved.window += 0.05;
+  Parameters again = start;
+  ASSERT_TRUE(solve({later}, again, moved).usable);
+  const physics::DampedExactRotation other(
+      again.moments(),
+      again.axes().transpose() *
+          Eigen::Vector3d(again.omega0[0][0], again.omega0[0][1], again.omega0[0][2]),
+      {DragLaw::linear, again.omega0[0][3]}, physics::ExactParts::omega_only);
+  const std::optional<double> half_later = motion_half_period(other, again.axes(), c.d.tau);
+  ASSERT_TRUE(half_later.has_value());
+  EXPECT_NEAR(s->placement, std::abs(*half_later - *half), 1e-6 * *half);
+  for (const double term : {s->omega0, s->placement, s->body, s->rate}) EXPECT_GT(term, 0.0);
+  const double quadrature = std::sqrt(s->omega0 * s->omega0 + s->placement * s->placement +
+                                      s->body * s->body + s->rate * s->rate);
+  EXPECT_NEAR(s->total(), quadrature, 1e-12 * quadrature);
+  const Prediction prediction = predict_half_period(c.d, start, c.options, in);
+  ASSERT_TRUE(prediction.propagated_half && prediction.propagated_sigma) << prediction.withheld;
+  EXPECT_NEAR(*prediction.propagated_half, *half, 1e-9 * *half);
+  EXPECT_NEAR(*prediction.propagated_sigma, quadrature, 1e-9 * quadrature);
 }
 
 /// The held drag rate (held_rate) against the inverse-variance mean written out here: each other
