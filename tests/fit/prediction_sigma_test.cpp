@@ -289,6 +289,24 @@ TEST(PredictionSigma, TheTotalIsEveryTermInQuadratureThePlacementsToo) {
   EXPECT_NEAR(*prediction.propagated_sigma, quadrature, 1e-9 * quadrature);
 }
 
+// The bias's σ a prediction takes from its recording (docs/phone-lab.md): the still rest's
+// standard error plus its drift, linear in the standard error (a σ, not a variance); with no rest
+// the flights' fitted σ as it is; with neither 0.
+TEST(PredictionSigma, TheBiasSigmaIsTheRestsStandardErrorPlusItsDrift) {
+  const Eigen::Vector3d se(0.001, 0.004, 0.0025);
+  for (const double k : {1.0, 3.0, 10.0}) {
+    RecordingPart part;
+    part.rest.samples = 200;
+    part.rest.standard_error = k * se;
+    const Eigen::Vector3d sigma = bias_sigma(part);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sigma[c], k * se[c] + 0.002, 1e-15) << k << " " << c;
+    RecordingPart flights;
+    flights.bias_fitted_sigma = k * se;
+    EXPECT_LT((bias_sigma(flights) - k * se).norm(), 1e-15) << k;
+  }
+  EXPECT_EQ(bias_sigma(RecordingPart{}), Eigen::Vector3d::Zero());
+}
+
 /// The held drag rate (held_rate) against the inverse-variance mean written out here: each other
 /// toss weighted by 1/c, c its rate's variance in their joint fit (covariances), its σ from theirs;
 /// with σ_j = k√c_j (each toss's σ its own fit's) the textbook k/√Σ(1/c_j).
