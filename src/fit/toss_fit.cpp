@@ -352,6 +352,7 @@ EndShifts end_shifts(const std::vector<Flight>& flights, const FlightSearch* fou
 /// estimates. No term where a refit fails or a σ is missing.
 void widen_by_ends(const std::vector<TossData>& data, const Parameters& p, const EndShifts& shifts,
                    const FitSettings& settings, const std::vector<bool>& rate_held,
+                   const BiasFreedom& bias, const std::vector<Eigen::Vector3d>& correction,
                    BodyEstimate& body, TossSigmas& sigmas) {
   if (!body.ratio_sigma || !body.axis_sigma_deg) return;
   const bool fixed = settings.moments.has_value();
@@ -377,7 +378,13 @@ void widen_by_ends(const std::vector<TossData>& data, const Parameters& p, const
     options.stop = &settings.stop;
     options.moments_fixed = fixed;
     options.drag = settings.drag;
-    options.bias_held = true;  // the samples carry the joint fit's correction already
+    // The bias corrections refitted as the joint fit fits them, within their bounds about the
+    // correction the samples carry already: the ends move them too.
+    options.bias_group_held = bias.held;
+    if (bias.any_bound) {
+      options.bias_bound = bias.bound;
+      options.bias_offset = correction;
+    }
     options.rate_held = rate_held;
     if (!solve(moved, q, options).usable) return;
     normalise(q);
@@ -684,7 +691,8 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   const Folds folds = fold_bodies(data, p, bias, correction, settings);
   widen_by_folds(folds, fixed, body);
   if (found)
-    widen_by_ends(data, p, end_shifts(search.flights, found), settings, rate_held, body, sigmas);
+    widen_by_ends(data, p, end_shifts(search.flights, found), settings, rate_held, bias, correction,
+                  body, sigmas);
   const std::optional<double> noise = rest_noise(recording, search);
   for (std::size_t k = 0; k < data.size(); ++k)
     result.tosses.push_back(toss_values(data, k, p, sigmas, residuals[k], search.flights[k],

@@ -3,8 +3,10 @@
 // ranges), on seeded synthetic recordings at 25 Hz, 100 Hz, 1 kHz and 10 kHz with a 0.15 s
 // throw and a 0.12 s catch that push (spikes of 4 and 6 rad/s), with and without drag: the truth
 // (the moment ratios the recording was made with, each toss's drag rate) within 2σ of the fitted
-// value in 90–99 % of the cases over every rate together, and in at least 80 % at each rate (its
-// 20–48 cases alone cannot tell 86 % from 90 %: docs/phone-lab.md gives each rate's count).
+// value in 90–99 % of the cases at each rate and over every rate together. Each rate has 36 to
+// 96 cases, enough that one case more or less moves its share by under 3 points; values the fit
+// itself flags as not to be trusted are not counted (a flagged toss's drag rate, the moments
+// where it says they are poorly determined), and at most 10 % of them may be flagged.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -41,13 +43,14 @@ TEST(UserCalibration, FoundFlightsHoldTheTruthWithinTwoSigmaAtEveryRate) {
     double flight;   ///< s, the first toss's
   };
   const RateCase cases[] = {
-      {25.0, 16, 1.2}, {100.0, 12, 1.2}, {1000.0, 10, 0.9}, {10000.0, 4, 0.8}};
+      {25.0, 24, 1.2}, {100.0, 24, 1.2}, {1000.0, 32, 0.9}, {10000.0, 12, 0.8}};
   const test::SyntheticBody body = test::phone_on_book();
   const Eigen::Vector3d truth = body.moments / body.moments[2];
   Tally every;
-  std::printf("rate (Hz)  recordings  moments within 2σ  drag within 2σ  all\n");
+  std::printf("rate (Hz)  recordings  moments within 2σ  drag within 2σ  all  flagged\n");
   for (const RateCase& c : cases) {
     Tally moments, drag, all;
+    int flagged = 0, values = 0;
     for (int n = 0; n < c.recordings; ++n) {
       const unsigned seed = 900u + static_cast<unsigned>(n);
       const double rate = n % 2 ? 0.05 : 0.0;  // 1/s, isotropic linear drag, or none
@@ -58,24 +61,35 @@ TEST(UserCalibration, FoundFlightsHoldTheTruthWithinTwoSigmaAtEveryRate) {
       const FitReport report = fit_report(test::as_recording(s), request);
       const FitResult& fit = report.result;
       ASSERT_EQ(fit.tosses.size(), 2u) << c.rate << " Hz, seed " << seed;
-      ASSERT_TRUE(fit.body.ratio_sigma.has_value()) << c.rate << " Hz, seed " << seed;
-      for (int i = 0; i < 2; ++i) {
-        moments.add(fit.body.ratios[i] - truth[i], (*fit.body.ratio_sigma)[i]);
-        all.add(fit.body.ratios[i] - truth[i], (*fit.body.ratio_sigma)[i]);
-        every.add(fit.body.ratios[i] - truth[i], (*fit.body.ratio_sigma)[i]);
+      ASSERT_TRUE(fit.body.ratio_sigma) << c.rate << " Hz, seed " << seed;
+      values += 2;
+      if (!fit.body.moments_determined) {
+        flagged += 2;
+      } else {
+        for (int i = 0; i < 2; ++i) {
+          moments.add(fit.body.ratios[i] - truth[i], (*fit.body.ratio_sigma)[i]);
+          all.add(fit.body.ratios[i] - truth[i], (*fit.body.ratio_sigma)[i]);
+          every.add(fit.body.ratios[i] - truth[i], (*fit.body.ratio_sigma)[i]);
+        }
       }
       for (const TossFit& toss : fit.tosses) {
         if (!toss.drag_rate_sigma) continue;
+        ++values;
+        if (toss.poor_fit) {
+          ++flagged;
+          continue;
+        }
         drag.add(toss.drag_rate - rate, *toss.drag_rate_sigma);
         all.add(toss.drag_rate - rate, *toss.drag_rate_sigma);
         every.add(toss.drag_rate - rate, *toss.drag_rate_sigma);
       }
     }
-    std::printf("%9.0f  %10d  %7d/%-3d %5.1f %%  %5d/%-3d %5.1f %%  %5.1f %%\n", c.rate,
+    std::printf("%9.0f  %10d  %7d/%-3d %5.1f %%  %5d/%-3d %5.1f %%  %5.1f %%  %d/%d\n", c.rate,
                 c.recordings, moments.within, moments.count, 100 * moments.fraction(), drag.within,
-                drag.count, 100 * drag.fraction(), 100 * all.fraction());
-    // Each rate's 20–48 cases: a floor that one unlucky seed does not cross.
-    EXPECT_GE(all.fraction(), 0.80) << c.rate << " Hz: the σ are too small (over-confident)";
+                drag.count, 100 * drag.fraction(), 100 * all.fraction(), flagged, values);
+    EXPECT_GE(all.fraction(), 0.90) << c.rate << " Hz: the σ are too small (over-confident)";
+    EXPECT_LE(all.fraction(), 0.99) << c.rate << " Hz: the σ are too large (under-confident)";
+    EXPECT_LE(flagged, values / 10) << c.rate << " Hz: most values flagged, few judged";
   }
   std::printf("every rate: %d/%d, %.1f %%\n", every.within, every.count, 100 * every.fraction());
   EXPECT_GE(every.fraction(), 0.90) << "the σ are too small (over-confident)";
@@ -115,7 +129,7 @@ TEST(UserCalibration, FoundFlightsCarryTheSpreadOfTheirEndsMovedIn) {
                 std::sqrt(spread2[i]));
     EXPECT_GT(with, without) << "I" << i + 1 << "/I3: no ends' term";
     // σ² found − σ² by hand is the spread², within a factor of 3 (the test's refits take the
-    // bias rule again, the term's hold the joint fit's bias).
+    // bias rule again, the term's refit the joint fit's corrections within their bounds).
     const double added = with * with - without * without;
     EXPECT_GT(added, spread2[i] / 3.0) << i;
     EXPECT_LT(added, spread2[i] * 3.0) << i;
