@@ -733,6 +733,123 @@ FitResult fit_with_bias_rule(const GyroRecording& recording, const FlightSearch&
   return again;
 }
 
+std::string fixed_share(double share) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.1f %%", 100.0 * share);
+  return text;
+}
+
+/// The fit's residual as a share of |ω|: each toss's rms residual over its rms |ω|, the median
+/// over the tosses (a bounce or a knocked flight does not decide it).
+double residual_share(const GyroRecording& recording, const FitResult& fit) {
+  std::vector<double> shares;
+  for (const TossFit& toss : fit.tosses) {
+    const Eigen::Vector3d bias = part_at(fit.parts, toss.flight.t_start).bias_in_flight();
+    double omega2 = 0.0;
+    for (int i = toss.flight.first; i <= toss.flight.last; ++i)
+      omega2 += (recording.omega[i] - bias).squaredNorm();
+    const int n = toss.flight.last - toss.flight.first + 1;
+    if (omega2 > 0.0) shares.push_back(toss.residual_rms / std::sqrt(omega2 / n));
+  }
+  return shares.empty() ? 1.0 : median_of(shares);
+}
+
+/// The axes whose scatter, where the phone turns least, is many times the quietest axis's: each
+/// 0.3 s window's three standard deviations, the fifth of the windows with the smallest median
+/// one, and in them each axis's over the smallest one (their median over those windows). A
+/// gyroscope's axes scatter alike (within a few times) at rest or in the hand; an axis in °/s
+/// scatters 57 times more. Bit c set: axis c over kUnitsScatter.
+constexpr double kUnitsScatter = 15.0;
+int scattered_axes(const GyroRecording& recording) {
+  const std::size_t n = recording.t.size();
+  if (n < 20) return 0;
+  const double span = recording.t.back() - recording.t.front();
+  const std::size_t window = std::max<std::size_t>(10, static_cast<std::size_t>(0.3 * n / span));
+  std::vector<std::pair<double, Eigen::Vector3d>> windows;  // median σ, σ per axis
+  for (std::size_t start = 0; start + window <= n; start += window / 2) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero(), square = Eigen::Vector3d::Zero();
+    for (std::size_t i = start; i < start + window; ++i) {
+      mean += recording.omega[i];
+      square += recording.omega[i].cwiseAbs2();
+    }
+    mean /= static_cast<double>(window);
+    const Eigen::Vector3d sigma =
+        (square / static_cast<double>(window) - mean.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt();
+    std::vector<double> sorted{sigma[0], sigma[1], sigma[2]};
+    std::sort(sorted.begin(), sorted.end());
+    if (sorted[0] > 0.0) windows.emplace_back(sorted[1], sigma);
+  }
+  if (windows.size() < 5) return 0;
+  std::sort(windows.begin(), windows.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  const std::size_t quiet = std::max<std::size_t>(3, windows.size() / 5);
+  int mask = 0;
+  for (int c = 0; c < 3; ++c) {
+    std::vector<double> ratios;
+    for (std::size_t w = 0; w < quiet; ++w)
+      ratios.push_back(windows[w].second[c] / windows[w].second.minCoeff());
+    if (median_of(ratios) > kUnitsScatter) mask |= 1 << c;
+  }
+  return mask == 7 ? 0 : mask;
+}
+
+/// Mixed units (docs/phone-lab.md, "Flags", mixed units): where the fit failed (`share` empty) or
+/// every toss is flagged, and one or two axes scatter many times the others where the phone turns
+/// least (scattered_axes), the flights fitted again with those axes taken from °/s to rad/s;
+/// where that fits a free rigid body to under half the share of |ω| left as read (or fits where
+/// the fit as read failed), the line naming those axes and the file; else empty. One recording
+/// only (a pooled set's parts may differ in units: each is checked alone).
+std::string units_cause(const GyroRecording& recording, const FlightSearch& search,
+                        const FitSettings& settings, std::optional<double> share) {
+  if (recording.parts.size() != 1) return {};
+  const int mask = scattered_axes(recording);
+  if (mask == 0) return {};
+  GyroRecording scaled = recording;
+  const double to_rad = kPi / 180.0;
+  for (int c = 0; c < 3; ++c) {
+    if (!(mask & (1 << c))) continue;
+    for (Eigen::Vector3d& w : scaled.omega) w[c] *= to_rad;
+    for (RecordingPart& part : scaled.parts) {
+      part.bias[c] *= to_rad;
+      part.rest.mean[c] *= to_rad;
+      part.rest.sigma[c] *= to_rad;
+      part.rest.standard_error[c] *= to_rad;
+    }
+  }
+  // Flights found: found again in the new units (the torque-free stretches are others); flights
+  // by hand: the user's.
+  const FlightSearch flights = settings.trim_ends ? find_flights(scaled) : search;
+  if (flights.flights.empty()) return {};
+  FitSettings as_given = settings;
+  as_given.trim_ends = false;
+  double fitted = 0.0;
+  try {
+    fitted = residual_share(scaled, fit_with_bias_rule(scaled, flights, as_given, nullptr));
+  } catch (const InputError&) {
+    return {};
+  }
+  if (share && !(fitted < *share / 2.0)) return {};
+  static const char* const kAxis[3] = {"ω_x", "ω_y", "ω_z"};
+  std::string degrees, radians;
+  int count = 0;
+  for (int c = 0; c < 3; ++c) {
+    std::string& list = mask & (1 << c) ? degrees : radians;
+    list += std::string(list.empty() ? "" : " and ") + kAxis[c];
+    count += mask & (1 << c) ? 1 : 0;
+  }
+  char line[500];
+  std::snprintf(line, sizeof line,
+                "%s: %s %s in °/s while %s %s in rad/s (mixed units?): %s %s about 57 times "
+                "the other%s where the phone turns least, and taken as °/s the flights fit a "
+                "free rigid body to %.1f %% of |ω|%s",
+                recording.source.c_str(), degrees.c_str(),
+                count == 1 ? "looks like it is" : "look like they are", radians.c_str(),
+                count == 1 ? "are" : "is", count == 1 ? "it" : "they",
+                count == 1 ? "scatters" : "scatter", count == 1 ? "s" : "", 100.0 * fitted,
+                share ? (" (as read: " + fixed_share(*share) + ")").c_str() : "");
+  return line;
+}
+
 }  // namespace
 
 FitResult fit_recording(const GyroRecording& recording, const FlightSearch& search,
@@ -740,12 +857,26 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   check_pooled(recording);
   if (search.flights.empty()) throw_no_flight(recording, search);
   // Flights by hand are the user's, fitted as given: the ends' term weighs the finder's ends.
-  FitResult fit =
-      fit_with_bias_rule(recording, search, settings, settings.trim_ends ? &search : nullptr);
-  if (!settings.trim_ends) return fit;
-  return trim_to_free_flight(recording, std::move(fit), [&](const FlightSearch& trimmed) {
-    return fit_with_bias_rule(recording, trimmed, settings, &search);
-  });
+  FitResult fit;
+  try {
+    fit = fit_with_bias_rule(recording, search, settings, settings.trim_ends ? &search : nullptr);
+  } catch (const InputError& e) {
+    const std::string cause = units_cause(recording, search, settings, std::nullopt);
+    if (cause.empty()) throw;
+    throw InputError(std::string(e.what()) + "; " + cause);
+  }
+  if (settings.trim_ends)
+    fit = trim_to_free_flight(recording, std::move(fit), [&](const FlightSearch& trimmed) {
+      return fit_with_bias_rule(recording, trimmed, settings, &search);
+    });
+  // Every toss flagged: mixed units, where taking an axis as °/s makes them fit.
+  if (std::all_of(fit.tosses.begin(), fit.tosses.end(),
+                  [](const TossFit& t) { return t.poor_fit; })) {
+    const std::string cause =
+        units_cause(recording, fit.search, settings, residual_share(recording, fit));
+    if (!cause.empty()) fit.body.notes.push_back(cause);
+  }
+  return fit;
 }
 
 }  // namespace bookspin::fit

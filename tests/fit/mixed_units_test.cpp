@@ -1,14 +1,24 @@
 // A recording whose axes are in mixed units (one in °/s, two in rad/s): the fit that goes
 // through names the likely cause, the axis and its units, once for the recording
 // (fit/toss_flags.hpp, scale_cause), besides the flags of the tosses it spoils; and a recording
-// all in rad/s gets no such note.
+// all in rad/s gets no such note. Where the axis in °/s stays within a gyroscope's range and
+// the file says nothing of units (no header units, no |ω| column), the fit whose every toss is
+// flagged, or that fails, names the axis and the file ("mixed units?", docs/phone-lab.md,
+// "Flags"): on a real recording with each axis in turn taken to °/s, and on a synthetic
+// one with one axis and with two.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 
+#include "common/errors.hpp"
 #include "fit/flights.hpp"
+#include "fit/report.hpp"
 #include "fit/toss_fit.hpp"
+#include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
@@ -53,6 +63,81 @@ TEST(MixedUnits, OneAxisInDegreesPerSecondIsNamedAsTheLikelyCause) {
 TEST(MixedUnits, ARecordingInRadiansPerSecondGetsNoUnitsNote) {
   const FitResult fit = fit_with_y_scaled(1.0);
   for (const std::string& note : fit.body.notes) EXPECT_FALSE(names_units(note)) << note;
+}
+
+const char* const kAxis[3] = {"ω_x", "ω_y", "ω_z"};
+
+/// `recording`'s samples written as a bare "t,wx,wy,wz" CSV (no units, no |ω|) named `name`
+/// in a fresh folder, the axes in `degrees` (bit c: axis c) multiplied by 180/π, and read back.
+GyroRecording written_in_mixed_units(const GyroRecording& recording, int degrees,
+                                     const std::string& name) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("bookspin-mixed-units-" + name);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / (name + ".csv");
+  {
+    std::ofstream out(file);
+    out << "t,wx,wy,wz\n";
+    char line[160];
+    for (std::size_t i = 0; i < recording.t.size(); ++i) {
+      Eigen::Vector3d w = recording.omega[i];
+      for (int c = 0; c < 3; ++c)
+        if (degrees & (1 << c)) w[c] *= 180.0 / M_PI;
+      std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g\n", recording.t[i], w[0], w[1], w[2]);
+      out << line;
+    }
+  }
+  GyroRecording read = read_recording(file);
+  std::filesystem::remove_all(dir);
+  return read;
+}
+
+/// What the fit of `recording` (its flights found) says of its units: the "mixed units?" note,
+/// or the failure's message where it fails; empty where neither names them.
+std::string units_named(const GyroRecording& recording) {
+  try {
+    const FitReport report = fit_report(pool_recordings({recording}), {});
+    for (const std::string& note : report.result.body.notes)
+      if (note.find("(mixed units?)") != std::string::npos) return note;
+    return {};
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    return what.find("(mixed units?)") != std::string::npos ? what : std::string();
+  }
+}
+
+TEST(MixedUnits, ARealRecordingWithEachAxisInTurnInDegreesPerSecondIsNamed) {
+  REQUIRE_REAL_RECORDINGS();
+  const GyroRecording real = read_recording(real_dir() / "12-22-44");
+  for (int c = 0; c < 3; ++c) {
+    const std::string name = std::string("12-22-44-") + "xyz"[c] + "-in-degrees";
+    const std::string said = units_named(written_in_mixed_units(real, 1 << c, name));
+    std::printf("%s: %s\n", name.c_str(), said.c_str());
+    EXPECT_NE(said.find(name + ".csv: " + kAxis[c] + " looks like it is in °/s"), std::string::npos)
+        << said;
+  }
+  // As recorded, all in rad/s: no such note (nor in a bare CSV).
+  EXPECT_EQ(units_named(real), "");
+  EXPECT_EQ(units_named(written_in_mixed_units(real, 0, "12-22-44-as-recorded")), "");
+}
+
+TEST(MixedUnits, ASyntheticRecordingWithOneOrTwoAxesInDegreesPerSecondIsNamed) {
+  const test::SyntheticRecording s = test::make_recording(
+      test::phone_on_book(), {{{0.5, 3.0, 0.4}, 1.2}, {{-0.3, 2.5, 0.7}, 1.3}});
+  const GyroRecording synthetic = test::as_read(s);
+  const std::string one = units_named(written_in_mixed_units(synthetic, 1, "synthetic-x"));
+  std::printf("x in °/s: %s\n", one.c_str());
+  EXPECT_NE(one.find("synthetic-x.csv: ω_x looks like it is in °/s while ω_y and ω_z are in "
+                     "rad/s (mixed units?)"),
+            std::string::npos)
+      << one;
+  const std::string two = units_named(written_in_mixed_units(synthetic, 5, "synthetic-xz"));
+  std::printf("x and z in °/s: %s\n", two.c_str());
+  EXPECT_NE(two.find("synthetic-xz.csv: ω_x and ω_z look like they are in °/s while ω_y is in "
+                     "rad/s (mixed units?)"),
+            std::string::npos)
+      << two;
+  EXPECT_EQ(units_named(written_in_mixed_units(synthetic, 0, "synthetic")), "");
 }
 
 }  // namespace
