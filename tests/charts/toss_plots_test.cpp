@@ -30,16 +30,21 @@ std::vector<int> columns_of(const RgbaImage& image, int r, int g, int b) {
   return count;
 }
 
+/// The synthetic recording read as a recording named "synthetic" and pooled, as the fit takes it.
+fit::GyroRecording pooled(const fit::test::SyntheticRecording& synthetic) {
+  fit::GyroRecording read;
+  read.name = read.source = "synthetic";
+  read.t = synthetic.t;
+  read.omega = synthetic.omega;
+  return fit::pool_recordings({read});
+}
+
 // ω_x, ω_y, ω_z in red, green and blue (common/colour.hpp, kComponentColours: the clips', the
 // page's and the notebook's colours), each drawn; the flips marked.
 TEST(TossPlots, ComponentsInTheirColoursAndTheFlipsMarked) {
   const auto synthetic = fit::test::make_recording(
       fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 4);
-  fit::GyroRecording read;
-  read.name = read.source = "synthetic";
-  read.t = synthetic.t;
-  read.omega = synthetic.omega;
-  const fit::GyroRecording recording = fit::pool_recordings({read});
+  const fit::GyroRecording recording = pooled(synthetic);
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   const RgbaImage image = toss_image(fit::toss_chart(recording, fit, 0), 1000, 500);
   ASSERT_EQ(image.width, 1000);
@@ -80,11 +85,7 @@ TEST(TossPlots, AStableTossHasNoFlipsMarked) {
   const auto synthetic = fit::test::make_recording(
       fit::test::phone_on_book(),
       {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.2}, {{0.6, 0.5, 12.0}, 1.0}}, 21);
-  fit::GyroRecording read;
-  read.name = read.source = "synthetic";
-  read.t = synthetic.t;
-  read.omega = synthetic.omega;
-  const fit::GyroRecording recording = fit::pool_recordings({read});
+  const fit::GyroRecording recording = pooled(synthetic);
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   ASSERT_EQ(fit.tosses.size(), 3u);
   ASSERT_TRUE(fit.tosses[2].stable);
@@ -109,11 +110,7 @@ TEST(TossPlots, TheSphereShowsTheMeasuredLOnTheFittedOrbit) {
   const Eigen::Vector3d omega0(0.5, 12.0, 0.4);  // principal frame
   const auto synthetic =
       fit::test::make_recording(body, {{omega0, 1.3}, {{-0.3, 11.0, 0.7}, 1.2}}, 4);
-  fit::GyroRecording read;
-  read.name = read.source = "synthetic";
-  read.t = synthetic.t;
-  read.omega = synthetic.omega;
-  const fit::GyroRecording recording = fit::pool_recordings({read});
+  const fit::GyroRecording recording = pooled(synthetic);
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   const overlay::SphereSpec spec = toss_sphere_spec(fit::toss_chart(recording, fit, 0));
   // The truth: L/|L| of Euler's equations by RK4 (the generator's), principal frame (the
@@ -167,11 +164,7 @@ TEST(TossPlots, TheSphereBehindATossIsThePolhodeFamilyOfItsFittedMoments) {
   const fit::test::SyntheticBody body = fit::test::phone_on_book();
   const auto synthetic =
       fit::test::make_recording(body, {{{0.5, 12.0, 0.4}, 1.3}, {{-0.3, 11.0, 0.7}, 1.2}}, 4);
-  fit::GyroRecording read;
-  read.name = read.source = "synthetic";
-  read.t = synthetic.t;
-  read.omega = synthetic.omega;
-  const fit::GyroRecording recording = fit::pool_recordings({read});
+  const fit::GyroRecording recording = pooled(synthetic);
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   const auto same_spec = [](const overlay::SphereSpec& a, const overlay::SphereSpec& b,
                             std::size_t curves) {
