@@ -46,10 +46,6 @@ function spec(nameOrJson) {
   return scenario(nameOrJson);
 }
 
-/** The scenario files readScenario() read: each object's own text and the name its messages
- * give it. */
-const FILES = new WeakMap();
-
 /** `value` as JSON text, as JSON.stringify writes it but for the numbers JSON.stringify writes as
  * null: ±Infinity as ±1e999 (which JSON.parse, and the reader, read back as ±Infinity) and −0 as
  * -0, so that the reader refuses them in its own words, as it refuses them in a file. */
@@ -67,15 +63,17 @@ function jsonText(value) {
   return JSON.stringify(typeof value === "bigint" ? String(value) : value) ?? "null";
 }
 
-/** The scenario's JSON text and the name the reader's messages give it, for the one reader the
- * command line and Python read a scenario file with (analysis::scenario_from_json, compiled): a
- * file's own text (readScenario), or the object written as JSON, "scenario JSON". A field the
- * reader reads that JSON cannot carry (a NaN, a BigInt) is refused here, in the reader's words. */
+/** The fields of a scenario JSON the reader reads (analysis::scenario_from_json); it ignores the rest. */
+const READ_FIELDS = ["scenario", "mass", "principal_moments", "omega0_body", "omega0_world", "q0", "dt", "steps"];
+
+/** The scenario's JSON text and the name the reader's messages give it ("scenario JSON"), for the
+ * one reader the command line and Python read a scenario file with (analysis::scenario_from_json,
+ * compiled). A field the reader reads that JSON cannot carry (a NaN, a BigInt) is refused here,
+ * in the reader's words. */
 function scenarioText(s) {
-  const file = FILES.get(s);
-  if (file) return file;
   const where = typeof s.scenario === "string" ? s.scenario : "scenario JSON";
-  for (const [key, value] of Object.entries(s)) {
+  for (const key of READ_FIELDS) {
+    const value = s[key];
     const items = Array.isArray(value) ? value.map((v, i) => [`${key}[${i}]`, v]) : [[key, value]];
     for (const [field, v] of items)
       if (typeof v === "bigint" || Number.isNaN(v))
@@ -84,22 +82,13 @@ function scenarioText(s) {
   return { text: jsonText(s), file: "scenario JSON" };
 }
 
-/** `value` and everything in it frozen. */
-function frozen(value) {
-  if (typeof value === "object" && value !== null) Object.values(value).forEach(frozen);
-  return Object.freeze(value);
-}
-
 /** A scenario JSON file's `text` read as `bookspin flipcheck judge` and Python read it (the same
- * reader, compiled; `file` names it in messages): its scenario as a frozen object, which every
- * function here takes and reads from that text again, or the command line's one line thrown
- * for a file that is no scenario. */
+ * reader, compiled; `file` names it in messages): its scenario as an object (JSON.parse's, which
+ * reads every field as the reader does, a key given twice by its last value), which every
+ * function here takes; or the command line's one line thrown for a file that is no scenario. */
 export function readScenario(text, file = "scenario JSON") {
-  const read = { text: String(text), file: String(file) };
-  answer(wasm.scenarioFile(read.text, read.file));
-  const json = frozen(JSON.parse(read.text.replace(/^\uFEFF/, "")));
-  FILES.set(json, read);
-  return json;
+  answer(wasm.scenarioFile(String(text), String(file)));
+  return JSON.parse(String(text).replace(/^\uFEFF/, ""));
 }
 
 /** The SHA-256 (hex) of the scenario's JSON as `bookspin flipcheck export` writes it (for a

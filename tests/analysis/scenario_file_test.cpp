@@ -38,9 +38,9 @@ TEST(ScenarioFile, AKeyGivenTwiceCountsItsLastValueAndEscapesReadAsTheirCharacte
                                  "twice.json"),
               box);
   try {
-    scenario_from_json(std::string(kBox).substr(0, std::string(kBox).size() - 1) +
-                           R"(, "mass": -1})",
-                       "last-bad.json");
+    scenario_from_json(
+        std::string(kBox).substr(0, std::string(kBox).size() - 1) + R"(, "mass": -1})",
+        "last-bad.json");
     ADD_FAILURE() << "a bad mass given last was taken";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("box: mass: -1"), std::string::npos) << e.what();

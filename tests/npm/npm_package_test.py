@@ -424,6 +424,13 @@ def main(bookspin, source, build):
         if name not in names:
             fail(f"{tgz.name} lacks {name}")
 
+    # The package's own JavaScript around the WebAssembly (tests/npm/index_test.mjs).
+    unit = run(["node", "--test", source / "tests" / "npm" / "index_test.mjs"],
+               {**os.environ, "FLIPCHECK_PACKAGE": str(build / "npm" / "package")})
+    if "# fail 0" not in unit.stdout or "# pass 0" in unit.stdout:
+        fail(f"tests/npm/index_test.mjs:\n{unit.stdout}")
+    print("index.mjs under node --test: " + unit.stdout.split("# pass ")[1].split()[0] + " tests pass")
+
     with tempfile.TemporaryDirectory(prefix="flipcheck-npm-") as tmp:
         tmp = pathlib.Path(tmp)
         proxy = "http://127.0.0.1:9"  # the discard port: a download would fail
