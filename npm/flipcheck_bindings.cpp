@@ -5,19 +5,18 @@
 // file (src/analysis/scenario_file.cpp) and the exact motion (src/jobs/exact_motion.cpp). This
 // file only translates.
 //
-// A scenario comes as the JSON `bookspin flipcheck export` writes (the package carries the seven),
-// parsed: {scenario, mass, principal_moments, omega0_body, dt, steps, ...}. Its start is
+// A scenario comes as the text of the JSON `bookspin flipcheck export` writes (the package carries
+// the seven), and the name its messages give it: a scenario file's own text, or a JavaScript
+// object written as JSON by index.mjs. It is read by the command line's and Python's reader
+// (analysis::scenario_from_json), so that every door takes and refuses the same scenarios in the
+// same words: {scenario, mass, principal_moments, omega0_body, dt, steps, ...}. Its start is
 // omega0_body, the jiggle already in it: with no jiggle, analysis::start_omega gives it back to
 // the last bit for every carried scenario (I ω / I = ω there), so the judgement is the command
 // line's to the last digit (tests/npm/npm_package_test.py).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
-#include <algorithm>
 #include <array>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -52,120 +51,12 @@ val guarded(F&& f) {
   }
 }
 
-/// JavaScript's typeof of `v`, "null" and "array" told apart: a field's type in a message.
-std::string type_of(const val& v) {
-  if (v.isNull()) return "null";
-  if (val::global("Array").call<bool>("isArray", v)) return "an array";
-  return "a " + v.typeOf().as<std::string>();
-}
-
-bool missing(const val& v) { return v.isUndefined() || v.isNull(); }
-
-/// json[key], a number, or InputError "WHERE: KEY: …" naming what is wrong with it.
-double number_field(const val& json, const char* key, const std::string& where) {
-  const val v = json[key];
-  if (v.isUndefined())
-    throw InputError(where + ": " + key +
-                     ": missing (a scenario JSON as flipcheck export writes it)");
-  if (!v.isNumber())
-    throw InputError(where + ": " + key + ": expected a number, got " + type_of(v));
-  return v.as<double>();
-}
-
-/// json[key], an array of `n` numbers, or InputError naming what is wrong with it.
-std::vector<double> numbers_field(const val& json, const char* key, std::size_t n,
-                                  const std::string& where) {
-  const val v = json[key];
-  const std::string expected = "expected an array of " + std::to_string(n) + " numbers";
-  if (v.isUndefined())
-    throw InputError(where + ": " + key +
-                     ": missing (a scenario JSON as flipcheck export writes it)");
-  if (!val::global("Array").call<bool>("isArray", v))
-    throw InputError(where + ": " + key + ": " + expected + ", got " + type_of(v));
-  const std::size_t length = v["length"].as<std::size_t>();
-  if (length != n)
-    throw InputError(where + ": " + key + ": " + expected + ", got " + std::to_string(length));
-  std::vector<double> out;
-  for (std::size_t i = 0; i < n; ++i) {
-    const val item = v[i];
-    if (!item.isNumber())
-      throw InputError(where + ": " + key + "[" + std::to_string(i) + "]: expected a number, got " +
-                       type_of(item));
-    out.push_back(item.as<double>());
-  }
-  return out;
-}
-
-/// A number as a message gives it: its shortest "%.17g"-safe digits, "%.15g" where it reads back.
-std::string plain(double value) {
-  char number[32];
-  std::snprintf(number, sizeof number, "%.15g", value);
-  if (std::strtod(number, nullptr) != value) std::snprintf(number, sizeof number, "%.17g", value);
-  return number;
-}
-
-std::string vector_text(const std::vector<double>& v) {
-  std::string text = "(";
-  for (std::size_t i = 0; i < v.size(); ++i) text += (i ? ", " : "") + plain(v[i]);
-  return text + ")";
-}
-
-/// The scenario of an exported scenario JSON (see the head of this file). Every field is taken
-/// as written or refused by name (InputError): `scenario` (a name, analysis::
-/// scenario_name_problem), `mass`, `principal_moments`, `omega0_body` (or `omega0_world` alone),
-/// `dt` and `steps` (a whole number) as analysis::check_scenario allows them; `q0`, where given,
-/// the identity (either sign), the start every scenario has; `omega0_world`, where given beside
-/// omega0_body, equal to it (at the identity they are one vector).
-Scenario scenario_of(const val& json) {
-  if (missing(json) || json.typeOf().as<std::string>() != "object" ||
-      val::global("Array").call<bool>("isArray", json))
-    throw InputError("flipcheck: a scenario is a name or a scenario JSON object, got " +
-                     type_of(json));
-  Scenario s;
-  const val name = json["scenario"];
-  if (name.isUndefined())
-    throw InputError(
-        "scenario JSON: scenario: missing (the scenario's name, as flipcheck export "
-        "writes it)");
-  if (!name.isString())
-    throw InputError("scenario JSON: scenario: expected a name (a string), got " + type_of(name));
-  s.name = name.as<std::string>();
-  if (const std::string why = bookspin::analysis::scenario_name_problem(s.name); !why.empty())
-    bookspin::analysis::check_scenario(s);  // refuses the name, printable, in one line
-  const std::vector<double> moments = numbers_field(json, "principal_moments", 3, s.name);
-  s.body.moments = {moments[0], moments[1], moments[2]};
-  s.body.cage.mass = number_field(json, "mass", s.name);
-  const bool has_body = !json["omega0_body"].isUndefined();
-  const bool has_world = !json["omega0_world"].isUndefined();
-  const std::vector<double> body =
-      numbers_field(json, has_body || !has_world ? "omega0_body" : "omega0_world", 3, s.name);
-  if (has_body && has_world) {
-    const std::vector<double> world = numbers_field(json, "omega0_world", 3, s.name);
-    for (int i = 0; i < 3; ++i)
-      if (!(std::abs(world[i] - body[i]) <= 1e-12 * std::max(std::abs(body[i]), 1e-300)))
-        throw InputError(s.name + ": omega0_world: " + vector_text(world) + " is not omega0_body " +
-                         vector_text(body) +
-                         ": at q0 = identity they are one vector (give them equal, or one)");
-  }
-  if (!json["q0"].isUndefined()) {
-    const std::vector<double> q0 = numbers_field(json, "q0", 4, s.name);
-    if (!(q0[0] != 0.0 && std::isfinite(q0[0]) && q0[1] == 0.0 && q0[2] == 0.0 && q0[3] == 0.0))
-      throw InputError(s.name + ": q0: " + vector_text(q0) +
-                       ": every scenario starts at the identity, q0 = (1, 0, 0, 0) (w, x, y, z)");
-  }
-  s.initial.omega0_body = {body[0], body[1], body[2]};
-  s.initial.jiggle = 0.0;
-  s.dt = number_field(json, "dt", s.name);
-  const double steps = number_field(json, "steps", s.name);
-  if (!(std::floor(steps) == steps))
-    throw InputError(s.name + ": steps: " + plain(steps) + " is not a whole number of steps");
-  if (!(steps >= 1.0 &&
-        steps <= static_cast<double>(bookspin::analysis::ScenarioLimits::max_steps)))
-    throw InputError(s.name + ": steps: " + plain(steps) +
-                     " must be from 1 to 10^7 (the exact motion is exported at every step)");
-  s.steps = static_cast<long long>(steps);
-  bookspin::analysis::check_scenario(s);
-  return s;
+/// The scenario of a scenario JSON's `text`, `file` naming it in messages: read by the one
+/// reader of the command line and Python (analysis::scenario_from_json), so that every door
+/// refuses a scenario in the same words (index.mjs hands it a file's own text, or an object
+/// written as JSON).
+Scenario scenario_of(const std::string& text, const std::string& file) {
+  return bookspin::analysis::scenario_from_json(text, file);
 }
 
 /// A judged motion as JavaScript: {columns, cells (the judgement CSV's row as the command line
@@ -196,20 +87,22 @@ val judged(const Scenario& s, const std::string& sha256, const bookspin::jobs::M
 
 /// `bookspin flipcheck judge` of the motion CSV `text`: `file` names it in messages (the path as
 /// given), `name` in the judgement (the file's name).
-val judge_csv(const val& json, const std::string& sha256, const std::string& text,
-              const std::string& file, const std::string& name) {
+val judge_csv(const std::string& scenario, const std::string& scenario_file,
+              const std::string& sha256, const std::string& text, const std::string& file,
+              const std::string& name) {
   return guarded([&] {
-    const Scenario s = scenario_of(json);
+    const Scenario s = scenario_of(scenario, scenario_file);
     return judged(s, sha256, bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps), name);
   });
 }
 
 /// The same of a motion given as flat arrays: t (N), q (4N: w, x, y, z), ω world (3N);
 /// `what` names them in messages, `name` is the judgement's motion.
-val judge_arrays(const val& json, const std::string& sha256, const val& t_js, const val& q_js,
-                 const val& w_js, const std::string& what, const std::string& name) {
+val judge_arrays(const std::string& scenario, const std::string& scenario_file,
+                 const std::string& sha256, const val& t_js, const val& q_js, const val& w_js,
+                 const std::string& what, const std::string& name) {
   return guarded([&] {
-    const Scenario s = scenario_of(json);
+    const Scenario s = scenario_of(scenario, scenario_file);
     const std::vector<double> t = emscripten::convertJSArrayToNumberVector<double>(t_js);
     const std::vector<double> q = emscripten::convertJSArrayToNumberVector<double>(q_js);
     const std::vector<double> w = emscripten::convertJSArrayToNumberVector<double>(w_js);
@@ -239,9 +132,10 @@ val float64_array(const std::vector<double>& values) {
 
 /// The exact motion at every step n = 0 … steps: {t (N), q (4N), omegaBody, omegaWorld, L (3N),
 /// E (N)}, the rows of `flipcheck export`'s CSV.
-val exact_motion(const val& json) {
+val exact_motion(const std::string& scenario, const std::string& scenario_file) {
   return guarded([&] {
-    const bookspin::jobs::ExactMotion m = bookspin::jobs::exact_motion(scenario_of(json));
+    const bookspin::jobs::ExactMotion m =
+        bookspin::jobs::exact_motion(scenario_of(scenario, scenario_file));
     const std::size_t n = m.rows.size();
     std::vector<double> t(n), q(4 * n), wb(3 * n), ww(3 * n), L(3 * n), E(n);
     const bookspin::jobs::ExactRowArrays into{t.data(),  q.data(), wb.data(),
@@ -259,10 +153,10 @@ val exact_motion(const val& json) {
 }
 
 /// The bytes of the two files `bookspin flipcheck export` writes: {json, csv}.
-val export_files(const val& json) {
+val export_files(const std::string& scenario, const std::string& scenario_file) {
   return guarded([&] {
-    const bookspin::jobs::ExportFiles files =
-        bookspin::jobs::export_files(bookspin::jobs::exact_motion(scenario_of(json)));
+    const bookspin::jobs::ExportFiles files = bookspin::jobs::export_files(
+        bookspin::jobs::exact_motion(scenario_of(scenario, scenario_file)));
     val out = val::object();
     out.set("json", files.json);
     out.set("csv", files.csv);
@@ -272,8 +166,9 @@ val export_files(const val& json) {
 
 /// The bytes of OUT/<scenario>.json as `bookspin flipcheck export` writes them, without the exact
 /// motion: what a judgement's scenario_sha256 is of (docs/flipcheck.md, "Versions").
-val scenario_file(const val& json) {
-  return guarded([&] { return val(bookspin::analysis::scenario_file(scenario_of(json))); });
+val scenario_file(const std::string& scenario, const std::string& file) {
+  return guarded(
+      [&] { return val(bookspin::analysis::scenario_file(scenario_of(scenario, file))); });
 }
 
 std::string version() { return bookspin::version(); }

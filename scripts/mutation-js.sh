@@ -6,8 +6,17 @@
 # 2 cores; docs/explorer.md, "Mutation testing" has the last score measured).
 # Stryker 8 (node 18 or later; Stryker 9 and 10 want node 22) and the page's three.js, which
 # plots.js's import chain needs, are installed into BUILD/stryker from the npm registry once.
-# Usage: scripts/mutation-js.sh [BUILD]
+# With --npm: the npm package's ES module instead (npm/package/index.mjs, its lines changed
+# since 9f74334: scripts/stryker-npm.config.json), each mutant run against tests/npm/index_test.mjs
+# on the WebAssembly npm/build.sh made (BUILD/npm/package), one at a time; the report in
+# build/stryker/npm-mutation-report.json (docs/flipcheck.md, "Mutation testing of the package").
+# Usage: scripts/mutation-js.sh [--npm] [BUILD]
 set -euo pipefail
+config=scripts/stryker.config.json
+if [ "${1:-}" = --npm ]; then
+  config=scripts/stryker-npm.config.json
+  shift
+fi
 root="$(cd "$(dirname "$0")/.." && pwd)"
 mkdir -p "${1:-$root/build}"
 build="$(cd "${1:-$root/build}" && pwd)"
@@ -23,4 +32,9 @@ cd "$root"
 # The sandbox's web/node_modules: the tree's own where installed, else the one beside Stryker.
 modules="$root/web/node_modules"
 [ -d "$modules/three" ] || modules="$tool/node_modules"
-BOOKSPIN_WEB_MODULES="$modules" "$tool/node_modules/.bin/stryker" run scripts/stryker.config.json
+if [ "$config" = scripts/stryker-npm.config.json ] && [ ! -f "$build/npm/package/flipcheck-wasm.cjs" ]; then
+  echo "mutation-js.sh: $build/npm/package/flipcheck-wasm.cjs is not made (npm/build.sh $build)" >&2
+  exit 1
+fi
+BOOKSPIN_WEB_MODULES="$modules" BOOKSPIN_NPM_PACKAGE="$build/npm/package" \
+  "$tool/node_modules/.bin/stryker" run "$config"

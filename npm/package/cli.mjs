@@ -8,7 +8,7 @@
 // command line it keeps no manifest: it judges and writes every time.
 import { mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { basename } from "node:path";
-import { exportFiles, judgeCsv, scenario, scenarios, version } from "./index.mjs";
+import { exportFiles, judgeCsv, readScenario, scenario, scenarios, version } from "./index.mjs";
 
 const USAGE = `usage: flipcheck judge SCENARIO MOTION.csv... [-o DIR]
        flipcheck export SCENARIO... [-o DIR]
@@ -50,22 +50,12 @@ function readText(path, what) {
   }
 }
 
-/** A scenario by name, or the JSON file export wrote. */
+/** A scenario by name, or the JSON file export wrote, read as `bookspin flipcheck` reads it
+ * (readScenario: the same reader, so the same refusals in the same words). */
 function scenarioArg(arg) {
   if (scenarios().includes(arg)) return scenario(arg);
   if (arg.endsWith(".json") || arg.includes("/")) {
-    const text = readText(arg, "the scenario file");
-    let json;
-    try {
-      json = JSON.parse(text);
-    } catch (e) {
-      throw new InputError(`${arg}: not valid JSON: ${e.message}`);
-    }
-    if (typeof json !== "object" || json === null || Array.isArray(json))
-      throw new InputError(
-        `${arg}: holds ${json === null ? "JSON null" : Array.isArray(json) ? "an array" : `a ${typeof json}`}, not a scenario (a JSON object as flipcheck export writes it: scenario, mass, principal_moments, omega0_body, dt, steps)`,
-      );
-    return json;
+    return readScenario(readText(arg, "the scenario file"), arg);
   }
   throw new InputError(`flipcheck: no scenario "${arg}" (there: ${scenarios().join(", ")})`);
 }

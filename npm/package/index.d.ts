@@ -80,6 +80,10 @@ export const version: string;
 export function scenarios(): string[];
 export function scenarioSha256(name: ScenarioArg): string;
 export function scenario(name: string): Scenario;
+/** A scenario JSON file's text read as `bookspin flipcheck judge` reads it (`file` names it in
+ * messages): its scenario, which every function here takes; throws the command line's one line
+ * for a file that is no scenario. */
+export function readScenario(text: string, file?: string): Scenario;
 export function exactMotion(name: ScenarioArg): ExactMotion;
 export function exportFiles(name: ScenarioArg): { json: string; csv: string };
 export function judge(name: ScenarioArg, motion: Motion, options?: { motion?: string }): Judgement;

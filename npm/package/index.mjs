@@ -38,31 +38,78 @@ export function scenario(name) {
   return JSON.parse(readFileSync(new URL(`${name}.json`, scenarioFolder), "utf8"));
 }
 
-/** A scenario given by name, or as an exported scenario JSON (an object), as the wasm reads it. */
+/** A scenario given by name, or as an exported scenario JSON (an object). */
 function spec(nameOrJson) {
-  if (typeof nameOrJson === "object" && nameOrJson !== null) return nameOrJson;
+  if (typeof nameOrJson === "object" && nameOrJson !== null && !Array.isArray(nameOrJson)) return nameOrJson;
   if (typeof nameOrJson !== "string")
-    throw new Error(`flipcheck: a scenario is a name or a scenario JSON object, got ${nameOrJson === null ? "null" : typeof nameOrJson}`);
+    throw new Error(`flipcheck: a scenario is a name or a scenario JSON object, got ${nameOrJson === null ? "null" : Array.isArray(nameOrJson) ? "an array" : typeof nameOrJson}`);
   return scenario(nameOrJson);
+}
+
+/** `value` as JSON text, as JSON.stringify writes it but for the numbers JSON.stringify writes as
+ * null: ±Infinity as ±1e999 (which JSON.parse, and the reader, read back as ±Infinity) and −0 as
+ * -0, so that the reader refuses them in its own words, as it refuses them in a file. */
+function jsonText(value) {
+  if (typeof value === "number") {
+    if (Number.isFinite(value)) return Object.is(value, -0) ? "-0" : JSON.stringify(value);
+    return Number.isNaN(value) ? "null" : value > 0 ? "1e999" : "-1e999";
+  }
+  const skipped = (v) => v === undefined || typeof v === "function" || typeof v === "symbol";
+  if (Array.isArray(value)) return `[${value.map((v) => (skipped(v) ? "null" : jsonText(v))).join(",")}]`;
+  if (typeof value === "object" && value !== null && typeof value.toJSON !== "function") {
+    const members = Object.entries(value).filter(([, v]) => !skipped(v));
+    return `{${members.map(([k, v]) => `${JSON.stringify(k)}:${jsonText(v)}`).join(",")}}`;
+  }
+  return JSON.stringify(typeof value === "bigint" ? String(value) : value) ?? "null";
+}
+
+/** The fields of a scenario JSON the reader reads (analysis::scenario_from_json); it ignores the rest. */
+const READ_FIELDS = ["scenario", "mass", "principal_moments", "omega0_body", "omega0_world", "q0", "dt", "steps"];
+
+/** The scenario's JSON text and the name the reader's messages give it ("scenario JSON"), for the
+ * one reader the command line and Python read a scenario file with (analysis::scenario_from_json,
+ * compiled). A field the reader reads that JSON cannot carry (a NaN, a BigInt) is refused here,
+ * in the reader's words. */
+function scenarioText(s) {
+  const where = typeof s.scenario === "string" ? s.scenario : "scenario JSON";
+  for (const key of READ_FIELDS) {
+    const value = s[key];
+    const items = Array.isArray(value) ? value.map((v, i) => [`${key}[${i}]`, v]) : [[key, value]];
+    for (const [field, v] of items)
+      if (typeof v === "bigint" || Number.isNaN(v))
+        throw new Error(`${where}: ${field}: expected ${key === "scenario" ? "a name (a string)" : "a number"}, got ${typeof v === "bigint" ? "a bigint" : "NaN"}`);
+  }
+  return { text: jsonText(s), file: "scenario JSON" };
+}
+
+/** A scenario JSON file's `text` read as `bookspin flipcheck judge` and Python read it (the same
+ * reader, compiled; `file` names it in messages): its scenario as an object (JSON.parse's, which
+ * reads every field as the reader does, a key given twice by its last value), which every
+ * function here takes; or the command line's one line thrown for a file that is no scenario. */
+export function readScenario(text, file = "scenario JSON") {
+  answer(wasm.scenarioFile(String(text), String(file)));
+  return JSON.parse(String(text).replace(/^\uFEFF/, ""));
 }
 
 /** The SHA-256 (hex) of the scenario's JSON as `bookspin flipcheck export` writes it (for a
  * scenario by name, the carried scenarios/<name>.json byte for byte): a judgement's
  * scenario_sha256, as the command line's. */
 export function scenarioSha256(name) {
-  const text = answer(wasm.scenarioFile(spec(name)));
-  return createHash("sha256").update(text, "utf8").digest("hex");
+  const { text, file } = scenarioText(spec(name));
+  return createHash("sha256").update(answer(wasm.scenarioFile(text, file)), "utf8").digest("hex");
 }
 
 /** The exact motion at every step n = 0 … steps: t (N), q (N×4 w, x, y, z, body → world),
  * omegaBody, omegaWorld, L (N×3, L in the world frame), E (N): Float64Arrays, row-major. */
 export function exactMotion(name) {
-  return answer(wasm.exactMotion(spec(name)));
+  const { text, file } = scenarioText(spec(name));
+  return answer(wasm.exactMotion(text, file));
 }
 
 /** The two files `bookspin flipcheck export` writes, byte for byte: {json, csv}. */
 export function exportFiles(name) {
-  return answer(wasm.exportFiles(spec(name)));
+  const { text, file } = scenarioText(spec(name));
+  return answer(wasm.exportFiles(text, file));
 }
 
 /** The judgement CSV's row as an object: each column (numbers as numbers, null for an empty
@@ -98,14 +145,16 @@ function flat(values, name) {
  * either sign), omegaWorld (N×3, rad per time unit): flat, row-major, or as rows. */
 export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {}) {
   const s = spec(name);
-  return judgement(answer(wasm.judgeArrays(s, scenarioSha256(s), flat(t, "t"), flat(q, "q"), flat(omegaWorld, "omegaWorld"), "judge", motion)));
+  const { text, file } = scenarioText(s);
+  return judgement(answer(wasm.judgeArrays(text, file, scenarioSha256(s), flat(t, "t"), flat(q, "q"), flat(omegaWorld, "omegaWorld"), "judge", motion)));
 }
 
 /** Judges a motion CSV's text, as `bookspin flipcheck judge SCENARIO FILE` judges the file
  * (`file` names it in messages and in the judgement's motion column). */
 export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}) {
   const s = spec(name);
-  return judgement(answer(wasm.judgeCsv(s, scenarioSha256(s), String(text), file, motion)));
+  const scenarioJson = scenarioText(s);
+  return judgement(answer(wasm.judgeCsv(scenarioJson.text, scenarioJson.file, scenarioSha256(s), String(text), file, motion)));
 }
 
 /** The in-process equivalent of `npx flipcheck judge`'s exit status for a test runner: judges

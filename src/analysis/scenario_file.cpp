@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/json_string.hpp"
 #include "common/number_text.hpp"
 
 namespace bookspin::analysis {
@@ -25,9 +26,11 @@ struct Json {
   std::vector<Json> items;
   std::vector<std::pair<std::string, Json>> members;
 
+  /// The value of `key`; of a key given twice, the last, as JSON.parse and Python's json
+  /// read it.
   const Json* member(std::string_view key) const {
-    for (const auto& [name, value] : members)
-      if (name == key) return &value;
+    for (auto it = members.rbegin(); it != members.rend(); ++it)
+      if (it->first == key) return &it->second;
     return nullptr;
   }
 };
@@ -181,76 +184,10 @@ class JsonReader {
     return v;
   }
   std::string string() {
-    ++at_;  // the opening quote
-    std::string out;
-    while (at_ < text_.size() && text_[at_] != '"') {
-      const char c = text_[at_];
-      if (static_cast<unsigned char>(c) < 0x20) fail("a control character in a string");
-      if (c != '\\') {
-        out += c;
-        ++at_;
-        continue;
-      }
-      ++at_;
-      if (at_ >= text_.size()) break;
-      const char e = text_[at_++];
-      switch (e) {
-        case '"':
-          out += '"';
-          break;
-        case '\\':
-          out += '\\';
-          break;
-        case '/':
-          out += '/';
-          break;
-        case 'b':
-          out += '\b';
-          break;
-        case 'f':
-          out += '\f';
-          break;
-        case 'n':
-          out += '\n';
-          break;
-        case 'r':
-          out += '\r';
-          break;
-        case 't':
-          out += '\t';
-          break;
-        case 'u': {
-          unsigned code = 0;
-          for (int i = 0; i < 4; ++i, ++at_) {
-            const char h = at_ < text_.size() ? text_[at_] : ' ';
-            const int d = h >= '0' && h <= '9'   ? h - '0'
-                          : h >= 'a' && h <= 'f' ? h - 'a' + 10
-                          : h >= 'A' && h <= 'F' ? h - 'A' + 10
-                                                 : -1;
-            if (d < 0) fail("expected four hex digits after \\u");
-            code = code * 16 + static_cast<unsigned>(d);
-          }
-          // UTF-8 (a surrogate half as it is: a name holding one is refused by its rule).
-          if (code < 0x80) {
-            out += static_cast<char>(code);
-          } else if (code < 0x800) {
-            out += static_cast<char>(0xC0 | (code >> 6));
-            out += static_cast<char>(0x80 | (code & 0x3F));
-          } else {
-            out += static_cast<char>(0xE0 | (code >> 12));
-            out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-            out += static_cast<char>(0x80 | (code & 0x3F));
-          }
-          break;
-        }
-        default:
-          --at_;
-          fail("an unknown escape \\" + std::string(1, e) + " in a string");
-      }
-    }
-    if (at_ >= text_.size()) fail("a string without its closing quote");
-    ++at_;
-    return out;
+    JsonStringRead read = read_json_string(text_, at_);
+    at_ = read.end;
+    if (!read.error.empty()) fail(read.error);
+    return std::move(read.text);
   }
 
   std::string_view text_;

@@ -19,9 +19,11 @@ JsonValue scenario_json(const Scenario& scenario);
 std::string scenario_file(const Scenario& scenario);
 
 /// The scenario of a scenario file's JSON `text` (what scenario_file() writes, edited or not),
-/// `file` naming it in messages: the reader of `bookspin flipcheck judge OUT/<scenario>.json`
-/// and Python's, with the npm package's rules (npm/flipcheck_bindings.cpp). Every field is taken
-/// as written or refused by name: `scenario` (a name), `mass`, `principal_moments`,
+/// `file` naming it in messages: the one reader of `bookspin flipcheck judge OUT/<scenario>.json`,
+/// Python's and the npm package's (npm/flipcheck_bindings.cpp, handed a file's text or an
+/// object written as JSON), so that every door refuses in the same words. Strings are read by
+/// common's read_json_string; of a key given twice the last counts. Every field is taken as
+/// written or refused by name: `scenario` (a name), `mass`, `principal_moments`,
 /// `omega0_body` (or `omega0_world` alone), `dt` and `steps` (a whole number) as check_scenario()
 /// allows them; `q0`, where given, the identity (either sign); `omega0_world` beside
 /// `omega0_body` equal to it (to 1e-12 relative); other fields are ignored. The start is

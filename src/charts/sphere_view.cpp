@@ -22,9 +22,14 @@ Eigen::Vector3d sphere_moments(const scene::Scene& scene) { return scene.body.mo
 
 overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments,
                                 const std::vector<SphereRun>& runs) {
+  return sphere_spec(physics::principal_order(moments), physics::polhode_family(moments), runs);
+}
+
+overlay::SphereSpec sphere_spec(const std::array<int, 3>& order,
+                                std::vector<physics::Polhode> polhodes,
+                                const std::vector<SphereRun>& runs) {
   overlay::SphereSpec spec;
   spec.title = "L/|L| in the body frame";
-  const auto order = physics::principal_order(moments);
   static const char* const kRank[3] = {"smallest I", "intermediate I", "largest I"};
   static const char* const kName[3] = {"x", "y", "z"};
   for (int rank = 0; rank < 3; ++rank) {
@@ -40,7 +45,7 @@ overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments,
   spec.view = 1.0 * Eigen::Vector3d::Unit(order[1]) + 0.55 * Eigen::Vector3d::Unit(order[0]) +
               0.4 * Eigen::Vector3d::Unit(order[2]);
   spec.up = Eigen::Vector3d::Unit(order[2]);
-  for (auto& p : physics::polhode_family(moments)) {
+  for (auto& p : polhodes) {
     overlay::SphereCurve c;
     c.points = std::move(p.points);
     c.colour = p.separatrix ? kSeparatrixColour : kPolhodeColour;

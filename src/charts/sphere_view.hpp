@@ -3,6 +3,7 @@
 // turning principal moments and a run's history into an overlay::SphereSpec and placing the
 // inset in the frame.
 #include <Eigen/Dense>
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
 #include "overlay/sphere.hpp"
+#include "physics/polhode.hpp"
 #include "scene/scene.hpp"
 
 namespace bookspin::charts {
@@ -30,6 +32,13 @@ struct SphereRun {
 /// physics::polhode_family) in grey, the separatrices in magenta, one trail per run (each
 /// narrower than the one before, so coinciding trails show every colour).
 overlay::SphereSpec sphere_spec(const Eigen::Vector3d& moments, const std::vector<SphereRun>& runs);
+
+/// The same sphere drawn from values made beforehand: `order`, the body axes by ascending
+/// moment (physics::principal_order), and `polhodes`, the polhode family with its separatrices
+/// (physics::polhode_family), so that a chart that carries them is drawn from the chart alone.
+overlay::SphereSpec sphere_spec(const std::array<int, 3>& order,
+                                std::vector<physics::Polhode> polhodes,
+                                const std::vector<SphereRun>& runs);
 
 /// The trails of sphere_spec(moments, runs) alone (what changes from frame to frame).
 std::vector<overlay::SphereTrail> sphere_trails(const std::vector<SphereRun>& runs);

@@ -12,7 +12,8 @@
 namespace bookspin::charts {
 
 overlay::SphereSpec toss_sphere_spec(const fit::TossChart& chart) {
-  overlay::SphereSpec spec = sphere_spec(chart.moments, {});
+  // The principal frame's axes 1, 2, 3 are by ascending moment: the order is theirs.
+  overlay::SphereSpec spec = sphere_spec({0, 1, 2}, chart.polhodes, {});
   spec.title = "L/|L|, principal axes 1 < 2 < 3";
   for (int i = 0; i < 3; ++i) spec.axes[i].label = chart.axis_labels[static_cast<std::size_t>(i)];
   overlay::SphereCurve orbit;

@@ -18,7 +18,8 @@ inline constexpr Rgb kFittedOrbitColour{0.10, 0.25, 0.75};
 /// fit::TossChart): the measured L/|L| (one point a sample) as a trail in kMeasuredLColour, the
 /// fitted exact motion's L/|L| over one period of ω (its polhode; over the flight when the
 /// motion has no period) as a curve in kFittedOrbitColour, over the polhode family and the
-/// separatrices of the fitted moments (charts::sphere_spec).
+/// separatrices of the fitted moments (fit::TossChart::polhodes, as charts::sphere_spec draws
+/// them).
 overlay::SphereSpec toss_sphere_spec(const fit::TossChart& chart);
 
 /// A toss (fit::toss_chart's values) on a white width×height image: on the left the measured ω's

@@ -60,6 +60,7 @@ TossChart toss_chart(const GyroRecording& recording, const FitResult& fit, int t
                                                      (body.axes(nearest, i) < 0 ? "-" : "") +
                                                      kPhone[nearest];
   }
+  chart.polhodes = physics::polhode_family(chart.moments);
   const physics::ExactRotation exact(body.ratios, body.axes.transpose() * fitted.omega0,
                                      physics::ExactParts::omega_only);
   const double span =

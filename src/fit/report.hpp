@@ -17,6 +17,7 @@
 #include "fit/recording.hpp"
 #include "fit/toss_fit.hpp"
 #include "fit/toss_scene.hpp"
+#include "physics/polhode.hpp"
 
 namespace bookspin::fit {
 
@@ -73,6 +74,9 @@ struct TossChart {
   Eigen::Vector3d moments = Eigen::Vector3d::Ones();
   std::array<std::string, 3> axis_labels;
   std::vector<Eigen::Vector3d> orbit, measured_L;
+  /// The polhode family and the separatrices of `moments` (physics::polhode_family), the
+  /// sphere's background: the chart is drawn from these values alone.
+  std::vector<physics::Polhode> polhodes;
 };
 
 /// One toss of the report.

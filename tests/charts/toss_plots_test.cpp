@@ -5,9 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
+#include "charts/sphere_view.hpp"
 #include "common/colour.hpp"
 #include "fit/synthetic_recording.hpp"
 #include "overlay/plot.hpp"
+#include "physics/polhode.hpp"
 
 namespace bookspin::charts {
 namespace {
@@ -25,16 +30,21 @@ std::vector<int> columns_of(const RgbaImage& image, int r, int g, int b) {
   return count;
 }
 
+/// The synthetic recording read as a recording named "synthetic" and pooled, as the fit takes it.
+fit::GyroRecording pooled(const fit::test::SyntheticRecording& synthetic) {
+  fit::GyroRecording read;
+  read.name = read.source = "synthetic";
+  read.t = synthetic.t;
+  read.omega = synthetic.omega;
+  return fit::pool_recordings({read});
+}
+
 // ω_x, ω_y, ω_z in red, green and blue (common/colour.hpp, kComponentColours: the clips', the
 // page's and the notebook's colours), each drawn; the flips marked.
 TEST(TossPlots, ComponentsInTheirColoursAndTheFlipsMarked) {
   const auto synthetic = fit::test::make_recording(
       fit::test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}}, 4);
-  fit::GyroRecording read;
-  read.name = read.source = "synthetic";
-  read.t = synthetic.t;
-  read.omega = synthetic.omega;
-  const fit::GyroRecording recording = fit::pool_recordings({read});
+  const fit::GyroRecording recording = pooled(synthetic);
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   const RgbaImage image = toss_image(fit::toss_chart(recording, fit, 0), 1000, 500);
   ASSERT_EQ(image.width, 1000);
@@ -75,11 +85,7 @@ TEST(TossPlots, AStableTossHasNoFlipsMarked) {
   const auto synthetic = fit::test::make_recording(
       fit::test::phone_on_book(),
       {{{0.5, 12.0, 0.4}, 1.2}, {{-0.3, 11.0, 0.7}, 1.2}, {{0.6, 0.5, 12.0}, 1.0}}, 21);
-  fit::GyroRecording read;
-  read.name = read.source = "synthetic";
-  read.t = synthetic.t;
-  read.omega = synthetic.omega;
-  const fit::GyroRecording recording = fit::pool_recordings({read});
+  const fit::GyroRecording recording = pooled(synthetic);
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   ASSERT_EQ(fit.tosses.size(), 3u);
   ASSERT_TRUE(fit.tosses[2].stable);
@@ -104,11 +110,7 @@ TEST(TossPlots, TheSphereShowsTheMeasuredLOnTheFittedOrbit) {
   const Eigen::Vector3d omega0(0.5, 12.0, 0.4);  // principal frame
   const auto synthetic =
       fit::test::make_recording(body, {{omega0, 1.3}, {{-0.3, 11.0, 0.7}, 1.2}}, 4);
-  fit::GyroRecording read;
-  read.name = read.source = "synthetic";
-  read.t = synthetic.t;
-  read.omega = synthetic.omega;
-  const fit::GyroRecording recording = fit::pool_recordings({read});
+  const fit::GyroRecording recording = pooled(synthetic);
   const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
   const overlay::SphereSpec spec = toss_sphere_spec(fit::toss_chart(recording, fit, 0));
   // The truth: L/|L| of Euler's equations by RK4 (the generator's), principal frame (the
@@ -151,6 +153,72 @@ TEST(TossPlots, TheSphereShowsTheMeasuredLOnTheFittedOrbit) {
   };
   EXPECT_GT(count_right(kMeasuredLColour), 100);
   EXPECT_GT(count_right(kFittedOrbitColour), 100);
+}
+
+// The sphere behind a toss is drawn from the chart alone (fit::TossChart::polhodes), and is
+// the sphere of the fitted moments: every background curve a polhode of them (Σ u²/I constant
+// along it, the separatrices' at 1/I₂, docs/physics.md §15), and the whole spec, axes and view
+// included, what charts::sphere_spec draws for those moments, the principal order being the
+// chart's ascending one.
+TEST(TossPlots, TheSphereBehindATossIsThePolhodeFamilyOfItsFittedMoments) {
+  const fit::test::SyntheticBody body = fit::test::phone_on_book();
+  const auto synthetic =
+      fit::test::make_recording(body, {{{0.5, 12.0, 0.4}, 1.3}, {{-0.3, 11.0, 0.7}, 1.2}}, 4);
+  const fit::GyroRecording recording = pooled(synthetic);
+  const fit::FitResult fit = fit::fit_recording(recording, fit::find_flights(recording));
+  const auto same_spec = [](const overlay::SphereSpec& a, const overlay::SphereSpec& b,
+                            std::size_t curves) {
+    ASSERT_EQ(a.axes.size(), b.axes.size());
+    for (std::size_t i = 0; i < a.axes.size(); ++i) {
+      EXPECT_EQ(a.axes[i].direction, b.axes[i].direction) << "axis " << i;
+      EXPECT_EQ(a.axes[i].colour.r, b.axes[i].colour.r) << "axis " << i;
+    }
+    EXPECT_EQ(a.view, b.view);
+    EXPECT_EQ(a.up, b.up);
+    ASSERT_GE(a.curves.size(), curves);
+    ASSERT_GE(b.curves.size(), curves);
+    for (std::size_t i = 0; i < curves; ++i) {
+      EXPECT_EQ(a.curves[i].points, b.curves[i].points) << "curve " << i;
+      EXPECT_EQ(a.curves[i].colour.r, b.curves[i].colour.r) << "curve " << i;
+      EXPECT_EQ(a.curves[i].width, b.curves[i].width) << "curve " << i;
+    }
+  };
+  for (int toss = 0; toss < 2; ++toss) {
+    const fit::TossChart chart = fit::toss_chart(recording, fit, toss);
+    const overlay::SphereSpec spec = toss_sphere_spec(chart);
+    const Eigen::Vector3d I = chart.moments;
+    ASSERT_FALSE(chart.polhodes.empty());
+    int separatrices = 0;
+    for (std::size_t i = 0; i < chart.polhodes.size(); ++i) {
+      const overlay::SphereCurve& curve = spec.curves[i];
+      ASSERT_GT(curve.points.size(), 2u);
+      const auto level = [&](const Eigen::Vector3d& u) {
+        return u.cwiseProduct(u).cwiseQuotient(I).sum();
+      };
+      const double first = level(curve.points.front());
+      for (const Eigen::Vector3d& u : curve.points) {
+        EXPECT_NEAR(u.norm(), 1.0, 1e-9);
+        EXPECT_NEAR(level(u), first, 1e-9 * first) << "toss " << toss << ", curve " << i;
+      }
+      if (curve.colour.r == kSeparatrixColour.r && curve.colour.b == kSeparatrixColour.b) {
+        ++separatrices;
+        EXPECT_NEAR(first, 1.0 / I[1], 1e-9 / I[1]) << "toss " << toss;
+      }
+    }
+    EXPECT_EQ(separatrices, 2) << "toss " << toss;
+    same_spec(spec, sphere_spec(chart.moments, {}), chart.polhodes.size());
+  }
+  // Ascending moments of any spread: the chart's order is principal_order's.
+  std::mt19937 random(88);
+  std::uniform_real_distribution<double> log_ratio(-3.0, 0.0);
+  for (int draw = 0; draw < 20; ++draw) {
+    Eigen::Vector3d I(std::pow(10.0, log_ratio(random)), std::pow(10.0, log_ratio(random)), 1.0);
+    if (I[0] > I[1]) std::swap(I[0], I[1]);
+    fit::TossChart chart;
+    chart.moments = I;
+    chart.polhodes = physics::polhode_family(I);
+    same_spec(toss_sphere_spec(chart), sphere_spec(I, {}), chart.polhodes.size());
+  }
 }
 
 }  // namespace

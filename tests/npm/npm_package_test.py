@@ -184,6 +184,115 @@ def fuzz_scenarios(npx, env, project, tmp, source):
     odd.unlink()
 
 
+def bad_scenario_texts(base):
+    """(what, text): scenario files that are no scenario, each refused by a field, by its JSON or
+    by what it holds; a field changed is given again last (a key given twice: the last counts,
+    as JSON.parse and Python's json read it)."""
+    good = json.dumps(base)
+
+    def again(field, raw):
+        return good[:-1] + f', "{field}": {raw}}}'
+
+    return [
+        ("not JSON", '{"scenario": }'),
+        ("JSON null after a byte-order mark", "\ufeffnull"),
+        ("an array", "[1, 2, 3]"),
+        ("a number", "3"),
+        ("more after the value", good + " x"),
+        ("nested too deep", "[" * 70 + "]" * 70),
+        ("no name", json.dumps({k: v for k, v in base.items() if k != "scenario"})),
+        ("a name of escapes", again("scenario", r'"caf\u00e9 \ud83d\ude00"')),
+        ("a name holding NUL", again("scenario", r'"a\u0000b"')),
+        ("an unknown escape", again("scenario", r'"a\qb"')),
+        ("a raw tab in a string", again("scenario", '"a\tb"')),
+        ("a name that is a number", again("scenario", "3")),
+        ("a negative mass", again("mass", "-1")),
+        ("a mass beyond a double", again("mass", "1e999")),
+        ("a time step of -0", again("dt", "-0")),
+        ("steps not whole", again("steps", "2.5")),
+        ("a moment null", again("principal_moments", "[1, null, 3]")),
+        ("two moments", again("principal_moments", "[1, 2]")),
+        ("q0 turned", again("q0", "[0, 1, 0, 0]")),
+        ("the start at rest, -0", again("omega0_body", "[-0, 0, 0]")),
+        ("omega0_world alone, at rest",
+         json.dumps({k: v for k, v in base.items() if k != "omega0_body"})[:-1] +
+         ', "omega0_world": [0, 0, 0]}'),
+    ]
+
+
+def scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build):
+    """Bad scenario JSON files (bad_scenario_texts) refused by the command line, the Python
+    module, `npx flipcheck` and the package's judge() in the same words: one reader
+    (analysis::scenario_from_json) behind every door. judge() of the file's object (JSON.parse)
+    names it "scenario JSON" where the others name the file; an array or JSON null is no object,
+    which that door refuses in its own words."""
+    base = json.loads((project / "node_modules" / "flipcheck" / "scenarios" /
+                       "mujoco-test-box.json").read_text())
+    room = tmp / "doors"
+    room.mkdir()
+    run(npx + ["export", "mujoco-test-box", "-o", room / "exact"], env, cwd=project)
+    motion = room / "exact" / "mujoco-test-box-exact.csv"
+    cases = bad_scenario_texts(base)
+    files = []
+    for k, (_, text) in enumerate(cases):
+        files.append(room / f"case{k}.json")
+        files[-1].write_text(text, encoding="utf-8")
+    module = sorted((build / "python").glob("bookspin*.so"))
+    python = None
+    if not module:
+        if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
+            fail("the Python module BUILD/python/bookspin*.so is not built")
+        print("scenario refusals: the Python module is not built; its door left out")
+    else:
+        said = run([sys.executable, "-c", (
+            "import bookspin, json, sys\n"
+            "out = {}\n"
+            "for f in sys.argv[1:]:\n"
+            "    try:\n"
+            "        bookspin.flipcheck.judge(f, [0.0], [[1.0, 0.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]])\n"
+            "        out[f] = None\n"
+            "    except bookspin.Error as e:\n"
+            "        out[f] = str(e)\n"
+            "print(json.dumps(out))\n"), *files],
+            env={**env, "PYTHONPATH": str(build / "python")})
+        python = json.loads(said.stdout)
+    (project / "doors.mjs").write_text(
+        'import { readFileSync } from "node:fs";\n'
+        'import { judge } from "flipcheck";\n'
+        "const out = {};\n"
+        "for (const f of process.argv.slice(2)) {\n"
+        "  let json;\n"
+        "  try { json = JSON.parse(readFileSync(f, 'utf8').replace(/^\\uFEFF/, '')); } catch { continue; }\n"
+        "  if (typeof json !== 'object' || json === null || Array.isArray(json)) continue;\n"
+        "  try { judge(json, { t: [0], q: [1, 0, 0, 0], omegaWorld: [0, 0, 1] }); out[f] = null; }\n"
+        "  catch (e) { out[f] = e.message; }\n"
+        "}\n"
+        "console.log(JSON.stringify(out));\n")
+    api = json.loads(run(["node", "doors.mjs", *files], env, cwd=project).stdout)
+    for (what, _), file in zip(cases, files):
+        cli = error_line(run([bookspin, "flipcheck", "judge", file, motion, "-o", room / "cli"],
+                             expect=2).stderr, "bookspin: error: ")
+        ours = error_line(run(npx + ["judge", file, motion, "-o", room / "npx"], env,
+                              cwd=project, expect=2).stderr, "flipcheck: error: ")
+        if ours != cli:
+            fail(f"{what}: the command line says {cli!r}, npx {ours!r}")
+        if python is not None and python[str(file)] != cli:
+            fail(f"{what}: the command line says {cli!r}, Python {python[str(file)]!r}")
+        if str(file) in api:
+            want = cli.replace(str(file), "scenario JSON")
+            if api[str(file)] != want:
+                fail(f"{what}: judge() of the file's object says {api[str(file)]!r}, the command "
+                     f"line {want!r}")
+        elif not cli.startswith(f"{file}: "):
+            fail(f"{what}: judge() could not take it, yet the command line names no file: {cli!r}")
+        if (room / "cli").exists() or (room / "npx").exists():
+            fail(f"{what}: a refused scenario wrote a judgement")
+    doors = "the command line, Python, npx and judge()" if python is not None else \
+        "the command line, npx and judge()"
+    print(f"scenario refusals: {len(cases)} bad scenario files, one line each in the same words "
+          f"at {doors}")
+
+
 def turned_from(csv_text, step):
     """The exact motion's CSV with every row from `step` on turned (qx negated): a broken
     engine."""
@@ -314,6 +423,13 @@ def main(bookspin, source, build):
                  "package/flipcheck-wasm.cjs"):
         if name not in names:
             fail(f"{tgz.name} lacks {name}")
+
+    # The package's own JavaScript around the WebAssembly (tests/npm/index_test.mjs).
+    unit = run(["node", "--test", source / "tests" / "npm" / "index_test.mjs"],
+               {**os.environ, "FLIPCHECK_PACKAGE": str(build / "npm" / "package")})
+    if "# fail 0" not in unit.stdout or "# pass 0" in unit.stdout:
+        fail(f"tests/npm/index_test.mjs:\n{unit.stdout}")
+    print("index.mjs under node --test: " + unit.stdout.split("# pass ")[1].split()[0] + " tests pass")
 
     with tempfile.TemporaryDirectory(prefix="flipcheck-npm-") as tmp:
         tmp = pathlib.Path(tmp)
@@ -478,6 +594,7 @@ def main(bookspin, source, build):
         # and judge: exit 2 and one line naming the field, nothing written, and nothing ever
         # outside -o; the fields as written, unchanged, are judged.
         fuzz_scenarios(npx, env, project, tmp, source)
+        scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build)
 
         # A seeded property of the judge through the package's judge() (tests/npm/judge_property.mjs).
         shutil.copy(source / "tests" / "npm" / "judge_property.mjs", project)

@@ -1,0 +1,178 @@
+// The npm package's own JavaScript (npm/package/index.mjs) under node's test runner: what it
+// does around the WebAssembly. A scenario is a name or an object; what JSON cannot carry (NaN,
+// BigInts) is refused in the reader's words and what it can (±Infinity, -0, fields left out)
+// reaches the one reader as a file spells it; readScenario() reads a file's text; judge()
+// takes flat arrays or rows and names BigInts; a judgement's columns are typed; assertPasses()
+// returns a pass and throws node's AssertionError for a fail. Run by tests/npm/npm_package_test.py
+// on the package it built (FLIPCHECK_PACKAGE: its folder), and by Stryker (scripts/mutation-js.sh
+// --npm).
+import assert from "node:assert/strict";
+import { createHash } from "node:crypto";
+import { readFileSync } from "node:fs";
+import { test } from "node:test";
+import { pathToFileURL } from "node:url";
+
+const dir = process.env.FLIPCHECK_PACKAGE;
+const f = await import(pathToFileURL(`${dir}/index.mjs`).href);
+const NAME = "mujoco-test-box";
+const box = () => f.scenario(NAME);
+const carried = readFileSync(`${dir}/scenarios/${NAME}.json`, "utf8");
+
+/** The message `run` throws; fails where it throws nothing. */
+function refusal(run) {
+  try {
+    run();
+  } catch (e) {
+    return e.message;
+  }
+  assert.fail("taken, expected a refusal");
+}
+
+/** The text of the carried scenario with `field`'s value spelled `raw`. */
+function spelled(field, raw) {
+  const json = box();
+  json[field] = "@";
+  return JSON.stringify(json).replace('"@"', raw);
+}
+
+test("a scenario is one of the names, or an object", () => {
+  const names = f.scenarios();
+  assert.equal(names.length, 7);
+  assert.deepEqual(names, [...names].sort());
+  assert.ok(names.includes(NAME));
+  names.push("x");
+  assert.equal(f.scenarios().length, 7, "scenarios() hands out a copy");
+  const no = "flipcheck: a scenario is a name or a scenario JSON object, got";
+  assert.equal(refusal(() => f.exactMotion(null)), `${no} null`);
+  assert.equal(refusal(() => f.exactMotion([box()])), `${no} an array`);
+  assert.equal(refusal(() => f.exactMotion(3)), `${no} number`);
+  assert.equal(refusal(() => f.exactMotion(undefined)), `${no} undefined`);
+  assert.match(refusal(() => f.exactMotion("nope")), /^flipcheck: no scenario "nope" \(there: book-/);
+  assert.match(refusal(() => f.scenario(3)), /^flipcheck: no scenario "3"/);
+  assert.deepEqual(f.scenario(NAME), JSON.parse(carried));
+});
+
+test("what JSON cannot carry is refused in the reader's words", () => {
+  const said = (change) => refusal(() => f.exactMotion({ ...box(), ...change }));
+  assert.equal(said({ mass: NaN }), `${NAME}: mass: expected a number, got NaN`);
+  assert.equal(said({ dt: 10n }), `${NAME}: dt: expected a number, got a bigint`);
+  assert.equal(said({ principal_moments: [1, 2n, 3] }), `${NAME}: principal_moments[1]: expected a number, got a bigint`);
+  assert.equal(said({ omega0_body: [1, 2, NaN] }), `${NAME}: omega0_body[2]: expected a number, got NaN`);
+  assert.equal(said({ scenario: 3n }), "scenario JSON: scenario: expected a name (a string), got a bigint");
+  assert.equal(said({ scenario: 3, mass: NaN }), "scenario JSON: mass: expected a number, got NaN");
+  assert.equal(said({ omega0_world: [NaN, 0, 0] }), `${NAME}: omega0_world[0]: expected a number, got NaN`);
+  assert.equal(said({ q0: [1, 0, 0, NaN] }), `${NAME}: q0[3]: expected a number, got NaN`);
+  assert.equal(said({ steps: NaN }), `${NAME}: steps: expected a number, got NaN`);
+});
+
+test("what JSON can carry reaches the reader as a file spells it", () => {
+  const asFile = (field, raw) => refusal(() => f.readScenario(spelled(field, raw)));
+  const asObject = (field, value) => refusal(() => f.exactMotion({ ...box(), [field]: value }));
+  for (const [field, value, raw] of [
+    ["mass", Infinity, "1e999"],
+    ["mass", -Infinity, "-1e999"],
+    ["dt", -0, "-0"],
+    ["steps", 2.5, "2.5"],
+    ["principal_moments", [1, undefined, 3], "[1, null, 3]"],
+    ["principal_moments", [1, () => 2, 3], "[1, null, 3]"],
+    ["principal_moments", [1, Symbol("s"), 3], "[1, null, 3]"],
+    ["omega0_body", [-0, 0, 0], "[-0, 0, 0]"],
+    ["q0", [1, 0, 0, 1e-300], "[1, 0, 0, 1e-300]"],
+    ["mass", null, "null"],
+    ["mass", true, "true"],
+    ["mass", "1", '"1"'],
+    ["mass", new Date(0), '"1970-01-01T00:00:00.000Z"'],
+    ["mass", { value: 1 }, '{"value": 1}'],
+    ["scenario", 3, "3"],
+  ]) {
+    const file = asFile(field, raw);
+    assert.match(file, new RegExp(`^(${NAME}|scenario JSON): `));
+    assert.equal(asObject(field, value), file, `${field} = ${raw}`);
+  }
+  // A field left out as JSON.stringify leaves it out: missing.
+  const missing = `${NAME}: dt: missing (a scenario JSON as flipcheck export writes it)`;
+  assert.equal(refusal(() => f.exactMotion({ ...box(), dt: undefined })), missing);
+  assert.equal(refusal(() => f.exactMotion({ ...box(), dt: () => 0.01 })), missing);
+  assert.equal(refusal(() => f.exactMotion({ ...box(), dt: Symbol("dt") })), missing);
+  assert.equal(refusal(() => f.exactMotion({ ...box(), scenario: undefined })), "scenario JSON: scenario: missing (the scenario's name, as flipcheck export writes it)");
+  // What the reader ignores may hold anything: the scenario is the carried one.
+  const sha = f.scenarioSha256(NAME);
+  assert.equal(f.scenarioSha256({ ...box(), units: { x: NaN, y: 1n, z: Infinity, w: [undefined] }, extra: 4n }), sha);
+  assert.equal(f.scenarioSha256({ ...box(), when: new Date(0), notes: ["a\u0000\"\\"] }), sha);
+  assert.equal(sha, createHash("sha256").update(carried).digest("hex"));
+  // A typed array is no array: the reader says so.
+  assert.equal(asObject("principal_moments", Float64Array.of(1, 2, 3)), `${NAME}: principal_moments: expected an array of 3 numbers, got an object`);
+});
+
+test("readScenario reads a file's text as the command line does", () => {
+  const s = f.readScenario(carried, "box.json");
+  assert.deepEqual(s, JSON.parse(carried));
+  assert.equal(f.scenarioSha256(s), f.scenarioSha256(NAME));
+  assert.equal(f.scenarioSha256(f.readScenario(`\ufeff${carried}`, "bom.json")), f.scenarioSha256(NAME));
+  // A key given twice: the last counts, in the reader and in JSON.parse alike.
+  const twice = `${carried.trimEnd().slice(0, -1)}, "mass": 5}`;
+  assert.equal(f.readScenario(twice, "twice.json").mass, 5);
+  assert.deepEqual(f.exportFiles(f.readScenario(twice, "twice.json")), f.exportFiles({ ...box(), mass: 5 }));
+  const holds = "holds JSON null, not a scenario (a JSON object as flipcheck export writes it: scenario, mass, principal_moments, omega0_body, dt, steps)";
+  assert.equal(refusal(() => f.readScenario("null", "n.json")), `n.json: ${holds}`);
+  assert.equal(refusal(() => f.readScenario("null")), `scenario JSON: ${holds}`);
+  assert.equal(refusal(() => f.readScenario(spelled("mass", "-1"), "m.json")), `${NAME}: mass: -1: must be finite and > 0`);
+  assert.match(refusal(() => f.readScenario("{", "cut.json")), /^cut\.json: not valid JSON: /);
+});
+
+test("judge takes flat arrays or rows and names BigInts; a judgement's columns are typed", () => {
+  const m = f.exactMotion(NAME);
+  const n = m.t.length;
+  assert.equal(n, box().steps + 1);
+  assert.equal(m.q.length, 4 * n);
+  const flat = f.judge(NAME, { t: m.t, q: m.q, omegaWorld: m.omegaWorld });
+  const rows = (a, k) => Array.from({ length: n }, (_, i) => Array.from(a.slice(k * i, k * i + k)));
+  const byRows = f.judge(NAME, { t: Array.from(m.t), q: rows(m.q, 4), omegaWorld: rows(m.omegaWorld, 3) });
+  assert.deepEqual(byRows, flat);
+  assert.equal(flat.pass, true);
+  assert.equal(flat.verdict, "pass");
+  assert.deepEqual(flat.reasons, []);
+  assert.equal(flat.scenario, NAME);
+  assert.equal(flat.motion, "motion");
+  assert.equal(f.judge(NAME, { t: m.t, q: m.q, omegaWorld: m.omegaWorld }, { motion: "mine" }).motion, "mine");
+  assert.equal(flat.scenario_sha256, f.scenarioSha256(NAME));
+  assert.equal(flat.version, f.version);
+  assert.match(flat.line, /^PASS/);
+  const numbers = Object.entries(flat).filter(([k]) => !["scenario", "motion", "verdict", "failures", "version", "scenario_sha256", "pass", "reasons", "line"].includes(k));
+  assert.ok(numbers.length > 5);
+  for (const [k, v] of numbers) assert.ok(v === null || typeof v === "number", `${k} = ${v}`);
+  assert.equal(flat.last_step, box().steps);
+  assert.equal(flat.tumble_time, null, "an empty cell is null");
+  assert.equal(flat.failures, "");
+  assert.ok(!Object.keys(flat).includes("csv"));
+  assert.ok(flat.csv.startsWith("scenario,"));
+  assert.equal(f.judgeCsv(NAME, f.exportFiles(NAME).csv).pass, true);
+  assert.match(refusal(() => f.judge(NAME, { t: m.t, q: BigInt64Array.of(1n), omegaWorld: m.omegaWorld })), /^q: holds BigInts \(BigInt64Array\): expected numbers/);
+  assert.match(refusal(() => f.judge(NAME, { t: m.t, q: m.q, omegaWorld: BigUint64Array.of(1n) })), /^omegaWorld: holds BigInts \(BigUint64Array\)/);
+  assert.match(refusal(() => f.judge(NAME, { t: [0n], q: m.q, omegaWorld: m.omegaWorld })), /^t: holds BigInts \(Array\)/);
+  assert.match(refusal(() => f.judge(NAME, { t: m.t, q: [[1n, 0n, 0n, 0n]], omegaWorld: m.omegaWorld })), /^q: holds BigInts/);
+  assert.match(refusal(() => f.judge(NAME, { t: [0, 1n], q: m.q, omegaWorld: m.omegaWorld })), /^t: holds BigInts \(Array\)/);
+  const none = refusal(() => f.judge(NAME, { t: m.t, q: m.q }));
+  assert.match(none, /^judge: omegaWorld: expected \d+ numbers/);
+  assert.equal(refusal(() => f.judge(NAME, { t: m.t, q: m.q, omegaWorld: null })), none);
+  assert.match(refusal(() => f.judge(NAME)), /./);
+});
+
+test("assertPasses returns a pass and throws node's AssertionError with judge's line for a fail", () => {
+  const m = f.exactMotion(NAME);
+  const passed = f.assertPasses(NAME, { t: m.t, q: m.q, omegaWorld: m.omegaWorld });
+  assert.equal(passed.pass, true);
+  const turned = Float64Array.from(m.q);
+  for (let i = 4 * 100 + 1; i < turned.length; i += 4) turned[i] = -turned[i];
+  const failed = f.judge(NAME, { t: m.t, q: turned, omegaWorld: m.omegaWorld });
+  assert.equal(failed.pass, false);
+  assert.ok(failed.reasons.length > 0);
+  assert.throws(
+    () => f.assertPasses(NAME, { t: m.t, q: turned, omegaWorld: m.omegaWorld }, { motion: "turned" }),
+    (e) => e instanceof assert.AssertionError && e.message === `${NAME} turned: ${failed.line}` && e.actual === "fail" && e.expected === "pass" && e.operator === "assertPasses",
+  );
+  const csv = f.exportFiles(NAME).csv;
+  assert.equal(f.assertPasses(NAME, csv, { file: "out/exact.csv" }).motion, "exact.csv");
+  assert.equal(f.assertPasses(NAME, csv, { file: "out/exact.csv", motion: "mine" }).motion, "mine");
+  assert.equal(f.assertPasses(box(), csv).motion, "motion.csv");
+});
