@@ -51,7 +51,7 @@ for src in "${sources[@]}"; do
     [ "$root/VERSION" -nt "$obj" ] && stale=1
   fi
   if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis" \
-       "$root/src/jobs" "$root/src/common" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
+       "$root/src/jobs" "$root/src/common" "$root/web/guarded.hpp" "$root/web/judgement_value.hpp" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
     em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
     pids+=($!)
     if [ ${#pids[@]} -ge "${JOBS:-2}" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
