@@ -7,13 +7,15 @@
 #                        npm/flipcheck_bindings.cpp
 #   scenarios/*.json     the seven scenarios as `bookspin flipcheck export` writes them
 #   index.mjs, index.d.ts, cli.mjs, README.md, package.json   from npm/package/
-# Usage: npm/build.sh BUILD_DIR   (needs BUILD_DIR/bookspin; objects cached in BUILD/npm/obj)
+# Usage: npm/build.sh BUILD_DIR [OUT_DIR]   (needs BUILD_DIR/bookspin; OUT_DIR is BUILD/npm unless
+# given, objects cached in OUT_DIR/obj: scripts/figures.sh builds its own, which no test reads)
 # Exit 3 where em++ or npm is missing.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(dirname "$here")"
 build="$(cd "${1:?usage: npm/build.sh BUILD_DIR}" && pwd)"
-out="$build/npm"
+mkdir -p "${2:-$build/npm}"
+out="$(cd "${2:-$build/npm}" && pwd)"
 command -v em++ >/dev/null || { echo "npm/build.sh: em++ not found (apt-get install emscripten)" >&2; exit 3; }
 command -v npm >/dev/null || { echo "npm/build.sh: npm not found (scripts/install-deps.sh)" >&2; exit 3; }
 [ -x "$build/bookspin" ] || { echo "npm/build.sh: $build/bookspin not built" >&2; exit 3; }
@@ -51,7 +53,7 @@ for src in "${sources[@]}"; do
     [ "$root/VERSION" -nt "$obj" ] && stale=1
   fi
   if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis" \
-       "$root/src/jobs" "$root/src/common" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
+       "$root/src/jobs" "$root/src/common" "$root/web/guarded.hpp" "$root/web/judgement_value.hpp" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
     em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
     pids+=($!)
     if [ ${#pids[@]} -ge "${JOBS:-2}" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi

@@ -22,34 +22,21 @@
 
 #include "analysis/judgement.hpp"
 #include "analysis/scenario_file.hpp"
-#include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 #include "common/version.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
 
+// The page's error mapping and judgement, shared (web/).
+#include "../web/guarded.hpp"
+#include "../web/judgement_value.hpp"
+
 namespace {
 
 using bookspin::InputError;
 using bookspin::analysis::Scenario;
+using bookspin::web::guarded;
 using emscripten::val;
-
-/// f()'s answer; {error: the one line} for an InputError (what the command line prints after
-/// "bookspin: error: "), {error: "internal error: …"} for any other exception.
-template <typename F>
-val guarded(F&& f) {
-  try {
-    return f();
-  } catch (const InputError& e) {
-    val out = val::object();
-    out.set("error", std::string(e.what()));
-    return out;
-  } catch (const std::exception& e) {
-    val out = val::object();
-    out.set("error", std::string("internal error: ") + e.what());
-    return out;
-  }
-}
 
 /// The scenario of a scenario JSON's `text`, `file` naming it in messages: read by the one
 /// reader of the command line and Python (analysis::scenario_from_json), so that every door
@@ -59,29 +46,16 @@ Scenario scenario_of(const std::string& text, const std::string& file) {
   return bookspin::analysis::scenario_from_json(text, file);
 }
 
-/// A judged motion as JavaScript: {columns, cells (the judgement CSV's row as the command line
-/// writes it, as text), csv (its header and that row, as the command line writes them), line
-/// (analysis::verdict_line), failures (one phrase each), pass}.
-/// `sha256` is the scenario's: of scenario_file()'s text, hashed by index.mjs (node:crypto).
+/// A judged motion as JavaScript: the page's (web/judgement_value.hpp: {columns, cells, line,
+/// failures}), with csv (the judgement CSV's header and row, as the command line writes them) and
+/// pass. `sha256` is the scenario's: of scenario_file()'s text, hashed by index.mjs (node:crypto).
 val judged(const Scenario& s, const std::string& sha256, const bookspin::jobs::MotionFile& motion,
            const std::string& name) {
-  const bookspin::analysis::Conformance c = bookspin::analysis::judge_motion(s, motion.rows);
-  const bookspin::CsvTable table =
-      bookspin::analysis::judgement_table(s, sha256, {{name, name, c}});
-  val columns = val::array(), cells = val::array(), failures = val::array();
-  for (const std::string& column : table.columns) columns.call<void>("push", column);
-  const std::string csv = bookspin::csv_text(table, "flipcheck judge CSV");
-  const std::size_t row = csv.find('\n') + 1;
-  for (const std::string& cell : bookspin::csv_cells(csv.substr(row, csv.size() - row - 1)))
-    cells.call<void>("push", cell);
-  for (const std::string& f : c.failures) failures.call<void>("push", f);
-  val out = val::object();
-  out.set("columns", columns);
-  out.set("cells", cells);
-  out.set("csv", csv);
-  out.set("line", bookspin::analysis::verdict_line(c));
-  out.set("failures", failures);
-  out.set("pass", c.pass());
+  const bookspin::analysis::JudgementRow row =
+      bookspin::analysis::judgement_row(s, sha256, motion.rows, name);
+  val out = bookspin::web::judgement_value(row);
+  out.set("csv", row.csv);
+  out.set("pass", row.pass);
   return out;
 }
 

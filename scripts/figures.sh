@@ -104,12 +104,19 @@ motions=("$out"/flipcheck/*-exact.csv)
 # (the test of every one is Flipcheck.JavaScriptEnginesUnderNode).
 engines_quick=()
 [ -z "$quick" ] || engines_quick=(--only cannon-es,babylonjs-havok)
-# The runner checks every package it imports (--check: one line naming the missing ones).
-if command -v node >/dev/null && node web/flipcheck-engines.mjs --check >/dev/null; then
-  node web/flipcheck-engines.mjs "${engines_quick[@]}" "$out/flipcheck/motions" "$out"/flipcheck/*.json
+# The runner checks every package it imports (--check: one line naming the missing ones); it
+# reads each scenario with the npm package flipcheck's reader (npm/build.sh: emscripten, into
+# BUILD/npm-figures, which no test reads while it is rebuilt).
+if command -v node >/dev/null && node web/flipcheck-engines.mjs --check >/dev/null &&
+   command -v em++ >/dev/null && command -v npm >/dev/null; then
+  bash npm/build.sh "$build" "$build/npm-figures" > "$out/.logs/npm-build.log" 2>&1 ||
+    { echo "figures: the npm package's build failed ($out/.logs/npm-build.log):" >&2
+      tail -n 20 "$out/.logs/npm-build.log" >&2; exit 1; }
+  node web/flipcheck-engines.mjs --flipcheck "$build/npm-figures/package" "${engines_quick[@]}" \
+    "$out/flipcheck/motions" "$out"/flipcheck/*.json
   motions+=("$out"/flipcheck/motions/*.csv)
 else
-  echo "figures: no node or not every npm package of the engines (above; scripts/install-deps.sh): the league table without the JavaScript engines"
+  echo "figures: no node, emscripten or not every npm package of the engines (above; scripts/install-deps.sh): the league table without the JavaScript engines"
 fi
 "$bookspin" flipcheck league scenes/flipcheck/*.toml --motions "${motions[@]}" \
   --methods "$league_methods" -o "$out"

@@ -60,7 +60,7 @@ for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/ju
     extra=(-DBOOKSPIN_VERSION="\"$version\"")
     [ "$root/VERSION" -nt "$obj" ] && stale=1
   fi
-  if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/analysis/scenario_file.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" \
+  if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ "$out/deps/inputs.sha256" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis/motion.hpp" "$root/src/clip/body_drawing.hpp" "$root/src/analysis/judgement.hpp" "$root/src/analysis/scenario_file.hpp" "$root/src/jobs" "$root/src/common" "$root/src/fit" "$root/src/scene/limits.hpp" "$here/body_spec.hpp" "$here/guarded.hpp" "$here/judgement_value.hpp" \
        -name '*.hpp' -newer "$obj" -print -quit)" ]; then
     em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
     pids+=($!)

@@ -19,10 +19,14 @@
 // and every motion file is in place, nothing is run or written ("up to date"). Otherwise OUT's
 // motion files are all written again and any other CSV there is removed.
 //
-// Bad input (a scenario that is missing or not JSON, an unknown option) and a missing npm package
-// get one line, exit 2, with nothing written; --check says only whether the packages are there.
+// Bad input (a scenario that is missing or that `bookspin flipcheck judge` refuses, in its words;
+// an unknown option) and a missing npm package get one line, exit 2, with nothing written;
+// --check says only whether the packages are there.
 //
-// Usage: node web/flipcheck-engines.mjs [--check] [--refine K] [--only NAME,...] OUT SCENARIO.json...
+// Usage: node web/flipcheck-engines.mjs [--check] [--refine K] [--only NAME,...] [--flipcheck DIR] OUT SCENARIO.json...
+//   --flipcheck DIR (or FLIPCHECK_PACKAGE=DIR): the npm package flipcheck (`make npm`:
+//     BUILD/npm/package), whose readScenario reads every scenario: the one reader of
+//     `bookspin flipcheck judge`, Python and npx, so a bad scenario is refused here in their words.
 //   --refine K: each scenario at dt/K, K times the steps, rows at the same times (the motions
 //     named ...+dt-over-K): what a smaller step does (docs/flipcheck.md, "What an engine's user
 //     should do"); not in `make figures`.
@@ -31,7 +35,7 @@
 import { createHash } from 'node:crypto';
 import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 
 const MAX_ROWS = 20000;
 // The engines need a collision shape; its size does not enter the motion, since every adapter
@@ -48,9 +52,9 @@ const refuse = (line) => {
   console.error(`flipcheck-engines: ${line}`);
   process.exit(2);
 };
-const usage = () => refuse('usage: node web/flipcheck-engines.mjs [--check] [--refine K] [--only NAME,...] OUT SCENARIO.json...');
+const usage = () => refuse('usage: node web/flipcheck-engines.mjs [--check] [--refine K] [--only NAME,...] [--flipcheck DIR] OUT SCENARIO.json...');
 const args = process.argv.slice(2);
-let refine = 1, only = null, check = false;
+let refine = 1, only = null, check = false, flipcheck = process.env.FLIPCHECK_PACKAGE || null;
 while (args.length && args[0].startsWith('--')) {
   if (args[0] === '--check') {
     args.shift();
@@ -60,6 +64,7 @@ while (args.length && args[0].startsWith('--')) {
   const [flag, value] = args.splice(0, 2);
   if (flag === '--refine' && /^[1-9][0-9]*$/.test(value ?? '')) refine = Number(value);
   else if (flag === '--only' && value) only = value.split(',');
+  else if (flag === '--flipcheck' && value) flipcheck = value;
   else usage();
 }
 const absent = PACKAGES.filter((p) => !existsSync(join(WEB, 'node_modules', p, 'package.json')));
@@ -106,75 +111,21 @@ const motionName = (e) => `${packageSlug(e)}@${version(e.package)}` + (e.mode ? 
 const sha256 = (file) => createHash('sha256').update(readFileSync(file)).digest('hex');
 const inputs = [join(WEB, 'package-lock.json'), fileURLToPath(import.meta.url),
   ...readdirSync(join(WEB, 'src', 'engines')).sort().map((f) => join(WEB, 'src', 'engines', f))];
-/** Where `text`, which JSON.parse refused, stops being JSON (RFC 8259's grammar): the index of
- * the first character that no JSON text can have there (text.length where it ends too soon).
- * V8's own message names no position for an unexpected token. */
-function jsonErrorAt(text) {
-  let i = 0;
-  const stop = () => { throw i; };
-  const space = () => { while (' \t\n\r'.includes(text[i] ?? 'x')) ++i; };
-  const string = () => {
-    for (++i; text[i] !== '"'; ++i) {
-      if (i >= text.length || text.charCodeAt(i) < 0x20) stop();
-      if (text[i] === '\\') {
-        ++i;
-        if (text[i] === 'u') {
-          if (!/^[0-9a-fA-F]{4}$/.test(text.slice(i + 1, i + 5))) stop();
-          i += 4;
-        } else if (!'"\\/bfnrt'.includes(text[i] ?? 'x')) stop();
-      }
-    }
-    ++i;
-  };
-  const items = (close, item) => {  // after the opening bracket
-    ++i;
-    space();
-    if (text[i] === close) return void ++i;
-    for (;;) {
-      item();
-      space();
-      if (text[i] === close) return void ++i;
-      if (text[i] !== ',') stop();
-      ++i;
-    }
-  };
-  const value = () => {
-    space();
-    const c = text[i];
-    if (c === '{') {
-      items('}', () => {
-        space();
-        if (text[i] !== '"') stop();
-        string();
-        space();
-        if (text[i] !== ':') stop();
-        ++i;
-        value();
-      });
-    } else if (c === '[') items(']', value);
-    else if (c === '"') string();
-    else {
-      const word = ['true', 'false', 'null'].find((w) => text.startsWith(w, i));
-      const number = /^-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?/.exec(text.slice(i, i + 1000));
-      const length = word ? word.length : number && number[0] ? number[0].length : 0;
-      if (length === 0) stop();
-      i += length;
-    }
-  };
-  try {
-    value();
-    space();
-    if (i < text.length) stop();
-  } catch (at) {
-    if (typeof at !== 'number') throw at;
-    return Math.min(at, text.length);
-  }
-  return text.length;
-}
-
-/** A scenario file's JSON, or one line naming the file and, for JSON that is not, the line and
- * column where it stops being JSON. */
-const readScenario = (file) => {
+/** The npm package flipcheck (`make npm`: BUILD/npm/package, or an installed
+ * node_modules/flipcheck), whose readScenario is the one reader of a scenario JSON that
+ * `bookspin flipcheck judge`, Python and npx read it with (analysis::scenario_from_json,
+ * compiled): a scenario this runner takes, every door takes; one it refuses, every door refuses
+ * in the same words. Imported once the engines' packages are known to be there. */
+const reader = async () => {
+  if (!flipcheck) refuse('the npm package flipcheck, the scenario reader, is not named: ' +
+                         '--flipcheck DIR or FLIPCHECK_PACKAGE=DIR (make npm builds BUILD/npm/package)');
+  const index = join(flipcheck, 'index.mjs');
+  if (!existsSync(index)) refuse(`${flipcheck}: no npm package flipcheck there (no index.mjs; make npm builds BUILD/npm/package)`);
+  return (await import(pathToFileURL(index).href)).readScenario;
+};
+const readScenario = await reader();
+/** A scenario file's JSON read by the one reader, or its one line naming the file. */
+const scenarioOf = (file) => {
   let text;
   try {
     text = readFileSync(file, 'utf8');
@@ -182,15 +133,12 @@ const readScenario = (file) => {
     refuse(`${file}: ${e.code === 'ENOENT' ? 'no such file' : e.code === 'EISDIR' ? 'is a folder' : e.message}`);
   }
   try {
-    return JSON.parse(text);
-  } catch {
-    const position = jsonErrorAt(text);
-    const before = text.slice(0, position).split('\n');
-    const what = position >= text.length ? 'the file ends' : `${JSON.stringify(text[position])}`;
-    refuse(`${file}: not valid JSON: ${what} at line ${before.length}, column ${before.at(-1).length + 1}`);
+    return readScenario(text, file);
+  } catch (e) {
+    refuse(e.message);
   }
 };
-const parsed = scenarios.map((file) => [file, readScenario(file)]);
+const parsed = scenarios.map((file) => [file, scenarioOf(file)]);
 const outputs = parsed.flatMap(([, s]) => engines.map((e) => `${s.scenario}-${motionName(e)}.csv`));
 const manifest = JSON.stringify({
   node: process.version,

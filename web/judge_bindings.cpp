@@ -24,6 +24,7 @@
 #include "guarded.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
+#include "judgement_value.hpp"
 #include "physics/exact_solution.hpp"
 
 namespace {
@@ -74,23 +75,8 @@ val judge_motion(const val& spec, const std::string& sha256, const std::string& 
     const Scenario s = scenario_of(spec);
     const bookspin::jobs::MotionFile motion =
         bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps);
-    const bookspin::analysis::Conformance c = bookspin::analysis::judge_motion(s, motion.rows);
-    const bookspin::CsvTable table =
-        bookspin::analysis::judgement_table(s, sha256, {{file, file, c}});
-    val columns = val::array(), cells = val::array(), failures = val::array();
-    for (const std::string& column : table.columns) columns.call<void>("push", column);
-    // The row as the command line writes it (the one CSV writer), read back into its cells.
-    const std::string csv = bookspin::csv_text(table, "flipcheck judge CSV");
-    const std::size_t row = csv.find('\n') + 1;
-    for (const std::string& cell : bookspin::csv_cells(csv.substr(row, csv.size() - row - 1)))
-      cells.call<void>("push", cell);
-    for (const std::string& f : c.failures) failures.call<void>("push", f);
-    val out = val::object();
-    out.set("columns", columns);
-    out.set("cells", cells);
-    out.set("line", bookspin::analysis::verdict_line(c));
-    out.set("failures", failures);
-    return out;
+    return bookspin::web::judgement_value(
+        bookspin::analysis::judgement_row(s, sha256, motion.rows, file));
   });
 }
 

@@ -431,6 +431,22 @@ CsvTable judgement_table(const Scenario& scenario, const std::string& scenario_s
   return table;
 }
 
+JudgementRow judgement_row(const Scenario& scenario, const std::string& scenario_sha256,
+                           const std::vector<MotionSample>& motion, const std::string& name) {
+  const Conformance c = judge_motion(scenario, motion);
+  const CsvTable table = judgement_table(scenario, scenario_sha256, {{name, name, c}});
+  JudgementRow out;
+  out.columns = table.columns;
+  // The row as the command line writes it (the one CSV writer), read back into its cells.
+  out.csv = csv_text(table, "flipcheck judge CSV");
+  const std::size_t row = out.csv.find('\n') + 1;
+  out.cells = csv_cells(out.csv.substr(row, out.csv.size() - row - 1));
+  out.line = verdict_line(c);
+  out.failures = c.failures;
+  out.pass = c.pass();
+  return out;
+}
+
 std::string judge_rules() {
   const ConformanceThresholds limits;
   std::string text;

@@ -144,6 +144,25 @@ struct JudgedMotion {
 CsvTable judgement_table(const Scenario& scenario, const std::string& scenario_sha256,
                          const std::vector<JudgedMotion>& judged);
 
+/// One motion judged and written as `flipcheck judge` writes it, for the doors that present
+/// one judgement (the page's "Judge a motion" panel, the npm package): the judgement CSV's
+/// columns, its one row's cells as the command line writes them (csv_text, read back by
+/// csv_cells), that header and row as text, verdict_line, the failures (one phrase each) and
+/// whether it passes. A value, no I/O.
+struct JudgementRow {
+  std::vector<std::string> columns;
+  std::vector<std::string> cells;
+  std::string csv;
+  std::string line;
+  std::vector<std::string> failures;
+  bool pass = false;
+};
+
+/// `motion` judged (judge_motion) against `scenario`, named `name` in the table, whose
+/// scenario_sha256 is `scenario_sha256`: its JudgementRow. Throws as judge_motion.
+JudgementRow judgement_row(const Scenario& scenario, const std::string& scenario_sha256,
+                           const std::vector<MotionSample>& motion, const std::string& name);
+
 /// The judge's rules as text, one "name value" a line: every threshold of the default
 /// ConformanceThresholds, the tumble's cosine, the flip detector's margin and the judgement
 /// CSV's columns. Hashed with the scenarios into the kit's SHA-256 that VERSION records

@@ -281,5 +281,39 @@ TEST(Judgement, TheTableAndTheRulesCarryTheWholeMotionsMeasures) {
   EXPECT_NE(rules.find("sampling_first_flip 0.01\n"), std::string::npos) << rules;
 }
 
+// The row the page and the npm package present (judgement_row) is the command line's table row:
+// the same text, each cell read back as written, a motion name holding a comma and quotes
+// included, the verdict, the failures and the line of the same judgement, passing or failing.
+TEST(Judgement, OneMotionsRowIsTheCommandLinesRowReadBackCellByCell) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  std::vector<MotionSample> turned = exact_rows(s, 1);
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitZ()));
+  for (std::size_t i = 1; i + 1 < turned.size(); ++i) turned[i].q = turn * turned[i].q;
+  const std::string sha(64, 'a');
+  const std::string name = "run \"a\", b.csv";
+  for (const std::vector<MotionSample>& rows : {exact_rows(s, 1), turned}) {
+    const Conformance c = judge_motion(s, rows);
+    const CsvTable table = judgement_table(s, sha, {{name, name, c}});
+    const JudgementRow row = judgement_row(s, sha, rows, name);
+    EXPECT_EQ(row.csv, csv_text(table, "flipcheck judge CSV"));
+    EXPECT_EQ(row.columns, table.columns);
+    ASSERT_EQ(row.cells.size(), table.columns.size());
+    const auto cell = [&](const std::string& column) {
+      for (std::size_t i = 0; i < row.columns.size(); ++i)
+        if (row.columns[i] == column) return row.cells[i];
+      return std::string("(no column ") + column + ")";
+    };
+    EXPECT_EQ(cell("motion"), name);
+    EXPECT_EQ(cell("scenario"), s.name);
+    EXPECT_EQ(cell("scenario_sha256"), sha);
+    EXPECT_EQ(cell("verdict"), c.pass() ? "pass" : "fail");
+    EXPECT_EQ(row.pass, c.pass());
+    EXPECT_EQ(row.failures, c.failures);
+    EXPECT_EQ(row.line, verdict_line(c));
+  }
+  EXPECT_FALSE(judgement_row(s, sha, turned, name).pass);
+  EXPECT_TRUE(judgement_row(s, sha, exact_rows(s, 1), name).pass);
+}
+
 }  // namespace
 }  // namespace bookspin::analysis

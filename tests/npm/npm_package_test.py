@@ -220,9 +220,10 @@ def bad_scenario_texts(base):
     ]
 
 
-def scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build):
+def scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build, source):
     """Bad scenario JSON files (bad_scenario_texts) refused by the command line, the Python
-    module, `npx flipcheck` and the package's judge() in the same words: one reader
+    module, `npx flipcheck`, the package's judge() and the engines' runner
+    (web/flipcheck-engines.mjs, nothing written) in the same words: one reader
     (analysis::scenario_from_json) behind every door. judge() of the file's object (JSON.parse)
     names it "scenario JSON" where the others name the file; an array or JSON null is no object,
     which that door refuses in its own words."""
@@ -285,10 +286,16 @@ def scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build):
                      f"line {want!r}")
         elif not cli.startswith(f"{file}: "):
             fail(f"{what}: judge() could not take it, yet the command line names no file: {cli!r}")
-        if (room / "cli").exists() or (room / "npx").exists():
-            fail(f"{what}: a refused scenario wrote a judgement")
-    doors = "the command line, Python, npx and judge()" if python is not None else \
-        "the command line, npx and judge()"
+        # The engines' runner (web/flipcheck-engines.mjs) reads it with the package's reader.
+        said = run(["node", source / "web" / "flipcheck-engines.mjs", "--only", "cannon-es",
+                    "--flipcheck", build / "npm" / "package", room / "engines", file], expect=2)
+        runner = error_line(said.stderr, "flipcheck-engines: ")
+        if runner != cli or said.stdout:
+            fail(f"{what}: the command line says {cli!r}, the engines' runner {runner!r}")
+        if (room / "cli").exists() or (room / "npx").exists() or (room / "engines").exists():
+            fail(f"{what}: a refused scenario wrote a judgement or a motion")
+    doors = "the command line, Python, npx, judge() and the engines' runner" \
+        if python is not None else "the command line, npx, judge() and the engines' runner"
     print(f"scenario refusals: {len(cases)} bad scenario files, one line each in the same words "
           f"at {doors}")
 
@@ -402,11 +409,11 @@ def main(bookspin, source, build):
                       capture_output=True).returncode != 0:
         missing("the league's npm packages (web/node_modules)")
 
-    made = run(["bash", source / "npm" / "build.sh", build])
-    print(made.stdout.strip())
+    # Built by npm/build.sh before this test (Npm.PackageBuilds, the fixture of every test that
+    # uses BUILD/npm/package), not here: the engines' runner may be reading it meanwhile.
     tgzs = sorted((build / "npm").glob("flipcheck-*.tgz"))
     if len(tgzs) != 1:
-        fail(f"expected one BUILD/npm/flipcheck-*.tgz, found {tgzs}")
+        fail(f"expected one BUILD/npm/flipcheck-*.tgz (make npm: npm/build.sh), found {tgzs}")
     tgz = tgzs[0]
     if tgz.stat().st_size >= 3e6:
         fail(f"{tgz.name} is {tgz.stat().st_size} bytes, over 3 MB")
@@ -501,8 +508,8 @@ def main(bookspin, source, build):
         run([bookspin, "flipcheck", "export",
              *[source / "scenes" / "flipcheck" / f"{n}.toml" for n in league], "-o", exported])
         engines = tmp / "league-motions"
-        run(["node", source / "web" / "flipcheck-engines.mjs", engines,
-             *[exported / f"{n}.json" for n in league]])
+        run(["node", source / "web" / "flipcheck-engines.mjs", "--flipcheck",
+             build / "npm" / "package", engines, *[exported / f"{n}.json" for n in league]])
         for name in league:
             files = sorted(engines.glob(f"{name}-*.csv"))
             if len(files) < 11:
@@ -594,7 +601,7 @@ def main(bookspin, source, build):
         # and judge: exit 2 and one line naming the field, nothing written, and nothing ever
         # outside -o; the fields as written, unchanged, are judged.
         fuzz_scenarios(npx, env, project, tmp, source)
-        scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build)
+        scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build, source)
 
         # A seeded property of the judge through the package's judge() (tests/npm/judge_property.mjs).
         shutil.copy(source / "tests" / "npm" / "judge_property.mjs", project)
