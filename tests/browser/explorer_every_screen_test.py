@@ -42,8 +42,8 @@ from browser import console_errors, fail, find_browser, open_browser, require, r
 from explorer_person_test import CANVAS_EDGES
 from explorer_screen_test import CANVAS_TEXTS, check_canvas_texts
 from explorer_test import load, slide_to
-from screens import (SCREENS, displaced_while_playing, layout_problems, screen_name, set_screen, text_problems,
-                     touch_word_problems)
+from screens import (CANVAS_INK, SCREENS, canvas_overlap_problems, displaced_while_playing, layout_problems,
+                     screen_name, set_screen, text_problems, touch_word_problems)
 
 # (name, query, t)
 CASES = (
@@ -65,6 +65,7 @@ def check_screen(driver, page, shots, screen, problems):
         driver.save_screenshot(str(shots / f"every-screen-{case}-{screen[0]}x{screen[1]}.png"))
         problems += layout_problems(driver, where)
         problems += text_problems(driver, where)
+        problems += canvas_overlap_problems(driver, where)
         if screen[2]:
             problems += touch_word_problems(driver, where)
         with contextlib.redirect_stdout(io.StringIO()):
@@ -185,7 +186,7 @@ def main():
     page = (out / "explorer.html").resolve().as_uri()
     problems = []
     with open_browser(chromium, driver_path, size=(1366, 768), webgl=True, offline=True) as driver:
-        driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": CANVAS_TEXTS + CANVAS_EDGES})
+        driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": CANVAS_TEXTS + CANVAS_EDGES + CANVAS_INK})
         for screen in SCREENS:
             check_screen(driver, page, shots, screen, problems)
         check_history(driver, page, problems)
