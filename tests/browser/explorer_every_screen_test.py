@@ -8,7 +8,11 @@ at t = 300 and the page with no scene, it checks (tests/browser/screens.py):
   - the 3D view keeps its share: at least a third of the window's area, at least 200 px tall,
     on the first screen (the readout bounded, scrolling inside its strip, never pushing the view
     out: at 1024×600 it wrapped to 214 px and left fig09's body 100 px, the tiles none);
-  - nothing is drawn over a control (the tiles' labels lay over Reset and Copy link);
+  - nothing is drawn over a control (the tiles' labels lay over Reset and Copy link): no body's
+    label, text or canvas as the browser shows it (cut by its clipping boxes) crosses one;
+  - no two texts of one canvas meet (their inked boxes), the momentum sphere's axis names also
+    at 12 seeded random turns of it (its far ends' names were stacked on the near ones);
+  - no field's text cut ("0.0166667" showed as "0.016666" at 1024×600; "rigid-matri");
   - every plot axis has at least two labelled ticks (fig09 at t = 227 at 1280×720: the ω and
     energy-drift panels were labelled "0" alone);
   - no text under 12 px nor past its panel or the screen (explorer_screen_test.py's check);
@@ -36,6 +40,8 @@ under CI=true, where that is a failure (browser.py).
 """
 import contextlib
 import io
+import math
+import random
 import time
 
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments, wait_for
@@ -45,6 +51,7 @@ from explorer_test import load, slide_to
 from screens import (CANVAS_INK, SCREENS, canvas_overlap_problems, displaced_while_playing, layout_problems,
                      screen_name, set_screen, text_problems, touch_word_problems)
 
+SPHERE_TURNS = 12  # seeded random views of the momentum sphere at each screen
 # (name, query, t)
 CASES = (
     ("fig09", "?scene=fig09-matrix-unstable-x", 227),
@@ -75,6 +82,19 @@ def check_screen(driver, page, shots, screen, problems):
         for text, canvas, left, right, width in (cuts or [])[:3]:
             problems.append(f"{where}: {text!r} on canvas {canvas!r} runs past its edge: "
                             f"{left:.0f} … {right:.0f} of {width}")
+    # The sphere turned as a person drags it, to seeded random views: no axis name over another.
+    rng = random.Random(87)
+    for k in range(SPHERE_TURNS):
+        q = [rng.gauss(0, 1) for _ in range(4)]
+        n = math.sqrt(sum(x * x for x in q))
+        w, x, y, z = (c / n for c in q)
+        rows = [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+        driver.execute_script("window.explorer.turnSphere(arguments[0])", rows)
+        wait_for(driver, "return window.explorer.sphereAxisLabels().length > 0", bool, 5)
+        time.sleep(0.15)
+        problems += canvas_overlap_problems(driver, f"the sphere turned ({k}) at {name}")
     # Across fig09's first flip (104.36): the transport bar stays where it is.
     load(driver, page + "?scene=fig09-matrix-unstable-x&speed=8")
     slide_to(driver, 100)
