@@ -12,6 +12,8 @@ at t = 300 and the page with no scene, it checks (tests/browser/screens.py):
     label, text or canvas as the browser shows it (cut by its clipping boxes) crosses one;
   - no two texts of one canvas meet (their inked boxes), the momentum sphere's axis names also
     at 12 seeded random turns of it (its far ends' names were stacked on the near ones);
+  - no body's label over a body (the view's pixels under it: the tiles' labels lay over the
+    lower row's books at 844×390), nor over another text;
   - no field's text cut ("0.0166667" showed as "0.016666" at 1024×600; "rigid-matri");
   - every plot axis has at least two labelled ticks (fig09 at t = 227 at 1280×720: the ω and
     energy-drift panels were labelled "0" alone);
@@ -48,8 +50,8 @@ from browser import console_errors, fail, find_browser, open_browser, require, r
 from explorer_person_test import CANVAS_EDGES
 from explorer_screen_test import CANVAS_TEXTS, check_canvas_texts
 from explorer_test import load, slide_to
-from screens import (CANVAS_INK, SCREENS, canvas_overlap_problems, displaced_while_playing, layout_problems,
-                     screen_name, set_screen, text_problems, touch_word_problems)
+from screens import (CANVAS_INK, SCREENS, canvas_overlap_problems, displaced_while_playing, label_over_body_problems,
+                     layout_problems, screen_name, set_screen, text_overlaps, text_problems, touch_word_problems)
 
 SPHERE_TURNS = 12  # seeded random views of the momentum sphere at each screen
 # (name, query, t)
@@ -73,6 +75,8 @@ def check_screen(driver, page, shots, screen, problems):
         problems += layout_problems(driver, where)
         problems += text_problems(driver, where)
         problems += canvas_overlap_problems(driver, where)
+        problems += label_over_body_problems(driver, where)
+        problems += [f"{where}: {o}" for o in text_overlaps(driver)]
         if screen[2]:
             problems += touch_word_problems(driver, where)
         with contextlib.redirect_stdout(io.StringIO()):

@@ -55,7 +55,8 @@ from browser import console_errors, fail, find_browser, open_browser, require, r
 from explorer_screen_test import CANVAS_TEXTS, check_canvas_texts, check_texts, overlaps
 from explorer_test import load
 from screens import (CANVAS_INK, MOVE_LIMIT_PX, SCREENS, canvas_overlap_problems, displaced_while_playing,
-                     layout_problems, screen_name, set_screen, text_problems, touch_word_problems)
+                     label_over_body_problems, layout_problems, screen_name, set_screen, text_problems,
+                     touch_word_problems)
 from screens import text_overlaps as visible_text_overlaps
 
 # JavaScript run before the page's scripts: every fillText on a 2D canvas whose text runs past
@@ -370,6 +371,7 @@ class Person:
         found += scratch if self.where == "1366x768" else text_problems(self.driver, where)
         found += visible_text_overlaps(self.driver)
         found += canvas_overlap_problems(self.driver, where)
+        found += label_over_body_problems(self.driver, where)
         if self.touch:
             found += touch_word_problems(self.driver, where)
         cuts = self.driver.execute_script("const c = window.__canvasCuts; window.__canvasCuts = [];"

@@ -343,3 +343,41 @@ def canvas_overlap_problems(driver, where):
                     problems.append(f"{where}: on canvas #{canvas}, {ta!r} {[round(x / scale) for x in a]} "
                                     f"and {tb!r} {[round(x / scale) for x in b]} (CSS px) overlap")
     return problems
+
+
+# JavaScript: for each body's label shown, how many pixels of the 3D view under its box are
+# not the view's background (its corner pixel): a body drawn there, under the label. The
+# labels are page elements over the canvas, so the canvas's pixels are the bodies alone.
+UNDER_LABELS = """
+  const v = document.getElementById('view'), vb = v.getBoundingClientRect();
+  const labels = [...document.querySelectorAll('.bodyLabel')].filter((l) => !l.hidden && l.offsetParent !== null);
+  if (!labels.length || !v.width || !v.height) return [];
+  const c = document.createElement('canvas');
+  c.width = v.width; c.height = v.height;
+  const g = c.getContext('2d', { willReadFrequently: true });
+  g.drawImage(v, 0, 0);
+  const bg = g.getImageData(1, 1, 1, 1).data, k = v.width / vb.width;
+  return labels.map((l) => {
+    const b = l.getBoundingClientRect();
+    const x0 = Math.max(0, Math.floor((b.left - vb.left) * k)), x1 = Math.min(v.width, Math.ceil((b.right - vb.left) * k));
+    const y0 = Math.max(0, Math.floor((b.top - vb.top) * k)), y1 = Math.min(v.height, Math.ceil((b.bottom - vb.top) * k));
+    if (x1 <= x0 || y1 <= y0) return [l.textContent, 0, 0, [b.left, b.top, b.right, b.bottom]];
+    const d = g.getImageData(x0, y0, x1 - x0, y1 - y0).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4)
+      if (Math.max(Math.abs(d[i] - bg[0]), Math.abs(d[i + 1] - bg[1]), Math.abs(d[i + 2] - bg[2])) > 30) ++n;
+    return [l.textContent, n, d.length / 4, [b.left, b.top, b.right, b.bottom]];
+  });
+"""
+
+
+def label_over_body_problems(driver, where):
+    """A body's label over a body (the 3D view's pixels under the label's box not its
+    background, more than 0.5 % of them: a landscape phone's tiles had their labels over the
+    lower row's books)."""
+    problems = []
+    for text, n, total, box in driver.execute_script(UNDER_LABELS):
+        if n > max(4, 0.005 * total):
+            problems.append(f"{where}: the label {text!r} {[round(x) for x in box]} lies over a body "
+                            f"({n} of its {total} pixels)")
+    return problems
