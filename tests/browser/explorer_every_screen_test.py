@@ -30,6 +30,8 @@ At 1366×768, once:
     Forward the new one; the Phone-toss lab opened, then Back, is closed, Forward opens it and
     it says to drop the recording again (an address carries no files); a reload keeps the
     scene, t and the open panel (#lab);
+  - the lab's toss charts at each screen: no two texts of a chart meet (its title and its
+    legend met on a phone);
   - "Play beside the measurement": the sample recording fitted through the lab's file input,
     its first toss's button plays the toss (t moves on), in seconds ("t (s)" on the plots' time
     axis, "s" after the readout's t), never "time units".
@@ -181,6 +183,21 @@ def check_play_beside(driver, page, source, problems):
     if not shown:
         problems.append(f"the lab fitted nothing: {driver.find_element(By.ID, 'labError').text}")
         return
+    # Its toss charts on each screen (drawn again as the window changes size): no title into
+    # its legend (on a phone "measured" lay over "against t (s)").
+    for screen in SCREENS + ((1366, 768, False),):
+        set_screen(driver, screen)
+        time.sleep(0.4)
+        charts = driver.execute_script(
+            "return [...document.querySelectorAll('#labTosses canvas')].map((c) => [c.width, c.height,"
+            " c.clientWidth * devicePixelRatio, c.clientHeight * devicePixelRatio])")
+        if not charts:
+            problems.append(f"the lab at {screen_name(screen)}: no toss chart shown")
+        for w, h, want_w, want_h in charts:
+            if abs(w - want_w) > 1 or abs(h - want_h) > 1:
+                problems.append(f"the lab at {screen_name(screen)}: a toss chart drawn {w}×{h} for "
+                                f"{want_w:.0f}×{want_h:.0f} pixels shown (not drawn again at this size)")
+        problems += canvas_overlap_problems(driver, f"the lab at {screen_name(screen)}")
     driver.execute_script("window.__canvasTexts = []")
     driver.execute_script("""[...document.querySelectorAll('#labTosses button')]
       .find((b) => b.textContent === 'Play beside the measurement').click()""")
