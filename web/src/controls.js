@@ -195,6 +195,10 @@ export class Controls {
     const about = $('sceneAbout'), column = $('controls');
     if (unfold) about.open = true;
     if (about.open && column.scrollHeight > column.clientHeight) about.open = false;
+    // The menus to the column's width now (a scroll bar that came or went changed it: the
+    // scene's title was shortened for the column without one and cut in it with one).
+    fitMenu($('scene'));
+    fitChoices();
   }
 
   /** Calls `onChange(id)` when an input of the column or the transport changes. */

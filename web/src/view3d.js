@@ -188,6 +188,19 @@ export class View3D {
     });
   }
 
+  /** How far the farthest moved cage corner of any run lies from its body's centre, in sweep
+   * radii of the layout (1 or less: every body within the room framed for it; more: a body
+   * that grows, a particle lattice or a quaternion left unnormalized, docs/physics.md §13). */
+  growth(runs) {
+    let far = 0;
+    for (const r of runs) {
+      if (!r.session.finite()) return Infinity;
+      const c = r.session.corners();
+      for (let p = 0; p < 8; ++p) far = Math.max(far, Math.hypot(c[3 * p], c[3 * p + 1], c[3 * p + 2]));
+    }
+    return far / this.layout.radius;
+  }
+
   /** Where run k of n is drawn: in a grid of `cols` columns (side by side for two, one above
    * the other in a view taller than wide), a sweep diameter and a gap apart, row by row from the
    * top left, the set centred on the orbit target. */
