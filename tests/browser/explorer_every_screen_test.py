@@ -34,7 +34,9 @@ At 1366×768, once:
     legend met on a phone);
   - "Play beside the measurement": the sample recording fitted through the lab's file input,
     its first toss's button plays the toss (t moves on), in seconds ("t (s)" on the plots' time
-    axis, "s" after the readout's t), never "time units".
+    axis, "s" after the readout's t), never "time units"; then, at each screen, the toss's page
+    with nothing cut (its dt of 1/240 in its field at 1024×600, the plots' legend) nor over
+    another.
 
 Screenshots: BINARY_DIR/test-output/browser/every-screen-<case>-<W>x<H>.png.
 
@@ -212,6 +214,17 @@ def check_play_beside(driver, page, source, problems):
         problems.append(f"Play beside the measurement does not play: t {t0} → {moved}")
     if not clock.endswith(" s") or not axis or any(a != "t (s)" for a in axis):
         problems.append(f"the toss is not shown in seconds: clock {clock!r}, time axis {sorted(set(axis))}")
+    # The toss beside its measurement on each screen: nothing cut (its dt, 1/240's "0.00416667",
+    # in its field at 1024×600; the plots' "measured (the scene's measured ω)" past their edge).
+    for screen in SCREENS:
+        driver.execute_script("window.__canvasCuts = []")
+        set_screen(driver, screen)
+        time.sleep(0.5)
+        where = f"the toss played at {screen_name(screen)}"
+        problems += text_problems(driver, where) + layout_problems(driver, where)
+        problems += canvas_overlap_problems(driver, where)
+        for text, canvas, left, right, width in (driver.execute_script("return window.__canvasCuts") or [])[:3]:
+            problems.append(f"{where}: {text!r} on canvas {canvas!r} runs past its edge: {left:.0f} … {right:.0f} of {width}")
 
 
 def main():

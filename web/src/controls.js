@@ -76,10 +76,13 @@ export function fitMenu(menu) {
  * line under its name (index.html). */
 export function fitChoices() {
   const g = document.createElement('canvas').getContext('2d');
-  for (const menu of document.querySelectorAll('#controls select:not(#scene)')) {
-    const style = getComputedStyle(menu), option = menu.selectedOptions[0];
+  // A number field likewise, as wide as its number and its padding and border (a toss's dt,
+  // 1/240's "0.00416667", was cut at 1024×600).
+  for (const menu of document.querySelectorAll('#controls select:not(#scene), #controls input[type=number]')) {
+    const style = getComputedStyle(menu), option = menu.tagName === 'SELECT' ? menu.selectedOptions[0] : null;
     g.font = `${style.fontStyle} ${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
-    const need = Math.ceil((option ? g.measureText(option.textContent).width : 0) + 26);
+    const need = Math.ceil(menu.tagName === 'SELECT' ? (option ? g.measureText(option.textContent).width : 0) + 26
+      : g.measureText(menu.value).width + 10);
     // Its chosen entry's width decides whether it fits beside its name (index.html: the row
     // wraps by the items' widths); then it grows to the fields' width where the row has room.
     const width = `min(${need}px, 100%)`, most = `min(100%, max(${need}px, min(140px, 56%)))`;

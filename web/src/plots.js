@@ -124,7 +124,9 @@ export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units'
   if (measured) {
     g.fillStyle = '#ddd';
     for (let c = 0; c < 3; ++c) { g.fillStyle = OMEGA_COLOURS[c]; g.beginPath(); g.arc(12 + 8 * c, y - 5, 3, 0, 2 * Math.PI); g.fill(); }
-    g.fillStyle = '#ddd'; g.fillText('measured (the scene\'s measured ω)', 36, y);
+    // Its words shortened where the column is narrow (at 1024×600 they ran past the canvas).
+    const words = ['measured (the scene\'s measured ω)', 'measured ω', 'measured'].find((x) => 36 + g.measureText(x).width <= W - 4) || 'measured';
+    g.fillStyle = '#ddd'; g.fillText(words, 36, y);
     y += FONT_PX + 4;
   }
   const axisH = FONT_PX + 10;  // the time axis under the last panel
