@@ -293,6 +293,9 @@ export class View3D {
     const perPx = grid && grid.rho > 0 ? r / grid.rho : 0;
     let room = grid ? grid.room * perPx : 0;
     const key = `${n} ${r} ${cols} ${room.toPrecision(3)} ${grid ? grid.cell.toPrecision(3) : ''}`;
+    // The same grid as framed last: its layout kept (with the label room frame() measured at the
+    // scale drawn: recomputed here, the rows stood closer than the camera was framed for).
+    if (!force && key === this.framedFor) return;
     // Two bodies side by side along world x (or y); a grid of more in the plane of the view as
     // the camera looks now, so that its rows stand apart on the screen, with room for the labels.
     const right = new THREE.Vector3(1, 0, 0), up = new THREE.Vector3(0, 1, 0);
@@ -307,7 +310,6 @@ export class View3D {
     this.layout = { radius: r, spacing, pitch: Math.max(base, 2 * r + room), room, cols, rows, count: n, right, up };
     this.arrowL.setLength(1.5 * r, 0.2 * r, 0.1 * r);
     this.axisArrows.forEach((a) => a.setLength(1.1 * r, 0.12 * r, 0.06 * r));
-    if (!force && key === this.framedFor) return;
     this.framedFor = key;
     // Each sweep sphere (centre c, radius ρ) must lie within 80% of the half-angles of the
     // view: atan(|x|/z) + asin(ρ/|c|) ≤ α, horizontally and vertically, in the camera's frame.
