@@ -195,10 +195,16 @@ def check_sphere(driver, page):
     driver.execute_script("window.explorer.omegaAt(40)")
     labels = driver.execute_script("return window.explorer.sphereAxisLabels()")
     print(f"sphere axis labels: {labels}")
+    # Each axis's near end named by its moment (its far end named too where its name fits by
+    # its point, sphere.js); no name other than these six.
+    view = driver.execute_script("return window.explorer.sphereRotation()")
+    names = {f"{sign}{axis} {name}" for axis, name in AXIS_NAMES.items() for sign in ("+", "−")}
     for axis, name in AXIS_NAMES.items():
-        for sign in ("+", "−"):
-            if f"{sign}{axis} {name}" not in labels:
-                fail(f"the sphere does not name {sign}{axis} '{name}': {labels}")
+        near = "+" if view[2]["xyz".index(axis)] >= 0 else "−"
+        if f"{near}{axis} {name}" not in labels:
+            fail(f"the sphere does not name the near end {near}{axis} '{name}': {labels}")
+    if not set(labels) <= names or len(set(labels)) != len(labels):
+        fail(f"the sphere's axis names {labels} are not among {sorted(names)}, each once")
     box = driver.execute_script("return document.getElementById('sphere').getBoundingClientRect().toJSON()")
     # fig09's L starts near +x, which the sphere's first view shows on its far side.
     dots = driver.execute_script("return window.explorer.sphereDots()")

@@ -8,7 +8,13 @@ at t = 300 and the page with no scene, it checks (tests/browser/screens.py):
   - the 3D view keeps its share: at least a third of the window's area, at least 200 px tall,
     on the first screen (the readout bounded, scrolling inside its strip, never pushing the view
     out: at 1024×600 it wrapped to 214 px and left fig09's body 100 px, the tiles none);
-  - nothing is drawn over a control (the tiles' labels lay over Reset and Copy link);
+  - nothing is drawn over a control (the tiles' labels lay over Reset and Copy link): no body's
+    label, text or canvas as the browser shows it (cut by its clipping boxes) crosses one;
+  - no two texts of one canvas meet (their inked boxes), the momentum sphere's axis names also
+    at 12 seeded random turns of it (its far ends' names were stacked on the near ones);
+  - no body's label over a body (the view's pixels under it: the tiles' labels lay over the
+    lower row's books at 844×390), nor over another text;
+  - no field's text cut ("0.0166667" showed as "0.016666" at 1024×600; "rigid-matri");
   - every plot axis has at least two labelled ticks (fig09 at t = 227 at 1280×720: the ω and
     energy-drift panels were labelled "0" alone);
   - no text under 12 px nor past its panel or the screen (explorer_screen_test.py's check);
@@ -24,9 +30,13 @@ At 1366×768, once:
     Forward the new one; the Phone-toss lab opened, then Back, is closed, Forward opens it and
     it says to drop the recording again (an address carries no files); a reload keeps the
     scene, t and the open panel (#lab);
+  - the lab's toss charts at each screen: no two texts of a chart meet (its title and its
+    legend met on a phone);
   - "Play beside the measurement": the sample recording fitted through the lab's file input,
     its first toss's button plays the toss (t moves on), in seconds ("t (s)" on the plots' time
-    axis, "s" after the readout's t), never "time units".
+    axis, "s" after the readout's t), never "time units"; then, at each screen, the toss's page
+    with nothing cut (its dt of 1/240 in its field at 1024×600, the plots' legend) nor over
+    another.
 
 Screenshots: BINARY_DIR/test-output/browser/every-screen-<case>-<W>x<H>.png.
 
@@ -36,15 +46,18 @@ under CI=true, where that is a failure (browser.py).
 """
 import contextlib
 import io
+import math
+import random
 import time
 
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments, wait_for
 from explorer_person_test import CANVAS_EDGES
 from explorer_screen_test import CANVAS_TEXTS, check_canvas_texts
 from explorer_test import load, slide_to
-from screens import (SCREENS, displaced_while_playing, layout_problems, screen_name, set_screen, text_problems,
-                     touch_word_problems)
+from screens import (CANVAS_INK, SCREENS, canvas_overlap_problems, displaced_while_playing, label_over_body_problems,
+                     layout_problems, screen_name, set_screen, text_overlaps, text_problems, touch_word_problems)
 
+SPHERE_TURNS = 12  # seeded random views of the momentum sphere at each screen
 # (name, query, t)
 CASES = (
     ("fig09", "?scene=fig09-matrix-unstable-x", 227),
@@ -65,6 +78,9 @@ def check_screen(driver, page, shots, screen, problems):
         driver.save_screenshot(str(shots / f"every-screen-{case}-{screen[0]}x{screen[1]}.png"))
         problems += layout_problems(driver, where)
         problems += text_problems(driver, where)
+        problems += canvas_overlap_problems(driver, where)
+        problems += label_over_body_problems(driver, where)
+        problems += [f"{where}: {o}" for o in text_overlaps(driver)]
         if screen[2]:
             problems += touch_word_problems(driver, where)
         with contextlib.redirect_stdout(io.StringIO()):
@@ -74,6 +90,19 @@ def check_screen(driver, page, shots, screen, problems):
         for text, canvas, left, right, width in (cuts or [])[:3]:
             problems.append(f"{where}: {text!r} on canvas {canvas!r} runs past its edge: "
                             f"{left:.0f} … {right:.0f} of {width}")
+    # The sphere turned as a person drags it, to seeded random views: no axis name over another.
+    rng = random.Random(87)
+    for k in range(SPHERE_TURNS):
+        q = [rng.gauss(0, 1) for _ in range(4)]
+        n = math.sqrt(sum(x * x for x in q))
+        w, x, y, z = (c / n for c in q)
+        rows = [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+        driver.execute_script("window.explorer.turnSphere(arguments[0])", rows)
+        wait_for(driver, "return window.explorer.sphereAxisLabels().length > 0", bool, 5)
+        time.sleep(0.15)
+        problems += canvas_overlap_problems(driver, f"the sphere turned ({k}) at {name}")
     # Across fig09's first flip (104.36): the transport bar stays where it is.
     load(driver, page + "?scene=fig09-matrix-unstable-x&speed=8")
     slide_to(driver, 100)
@@ -156,6 +185,21 @@ def check_play_beside(driver, page, source, problems):
     if not shown:
         problems.append(f"the lab fitted nothing: {driver.find_element(By.ID, 'labError').text}")
         return
+    # Its toss charts on each screen (drawn again as the window changes size): no title into
+    # its legend (on a phone "measured" lay over "against t (s)").
+    for screen in SCREENS + ((1366, 768, False),):
+        set_screen(driver, screen)
+        time.sleep(0.4)
+        charts = driver.execute_script(
+            "return [...document.querySelectorAll('#labTosses canvas')].map((c) => [c.width, c.height,"
+            " c.clientWidth * devicePixelRatio, c.clientHeight * devicePixelRatio])")
+        if not charts:
+            problems.append(f"the lab at {screen_name(screen)}: no toss chart shown")
+        for w, h, want_w, want_h in charts:
+            if abs(w - want_w) > 1 or abs(h - want_h) > 1:
+                problems.append(f"the lab at {screen_name(screen)}: a toss chart drawn {w}×{h} for "
+                                f"{want_w:.0f}×{want_h:.0f} pixels shown (not drawn again at this size)")
+        problems += canvas_overlap_problems(driver, f"the lab at {screen_name(screen)}")
     driver.execute_script("window.__canvasTexts = []")
     driver.execute_script("""[...document.querySelectorAll('#labTosses button')]
       .find((b) => b.textContent === 'Play beside the measurement').click()""")
@@ -170,6 +214,17 @@ def check_play_beside(driver, page, source, problems):
         problems.append(f"Play beside the measurement does not play: t {t0} → {moved}")
     if not clock.endswith(" s") or not axis or any(a != "t (s)" for a in axis):
         problems.append(f"the toss is not shown in seconds: clock {clock!r}, time axis {sorted(set(axis))}")
+    # The toss beside its measurement on each screen: nothing cut (its dt, 1/240's "0.00416667",
+    # in its field at 1024×600; the plots' "measured (the scene's measured ω)" past their edge).
+    for screen in SCREENS:
+        driver.execute_script("window.__canvasCuts = []")
+        set_screen(driver, screen)
+        time.sleep(0.5)
+        where = f"the toss played at {screen_name(screen)}"
+        problems += text_problems(driver, where) + layout_problems(driver, where)
+        problems += canvas_overlap_problems(driver, where)
+        for text, canvas, left, right, width in (driver.execute_script("return window.__canvasCuts") or [])[:3]:
+            problems.append(f"{where}: {text!r} on canvas {canvas!r} runs past its edge: {left:.0f} … {right:.0f} of {width}")
 
 
 def main():
@@ -185,7 +240,7 @@ def main():
     page = (out / "explorer.html").resolve().as_uri()
     problems = []
     with open_browser(chromium, driver_path, size=(1366, 768), webgl=True, offline=True) as driver:
-        driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": CANVAS_TEXTS + CANVAS_EDGES})
+        driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": CANVAS_TEXTS + CANVAS_EDGES + CANVAS_INK})
         for screen in SCREENS:
             check_screen(driver, page, shots, screen, problems)
         check_history(driver, page, problems)

@@ -54,8 +54,9 @@ from pathlib import Path
 from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
 from explorer_screen_test import CANVAS_TEXTS, check_canvas_texts, check_texts, overlaps
 from explorer_test import load
-from screens import (MOVE_LIMIT_PX, SCREENS, displaced_while_playing, layout_problems, screen_name,
-                     set_screen, text_problems, touch_word_problems)
+from screens import (CANVAS_INK, MOVE_LIMIT_PX, SCREENS, canvas_overlap_problems, displaced_while_playing,
+                     label_over_body_problems, layout_problems, screen_name, set_screen, text_problems,
+                     touch_word_problems)
 from screens import text_overlaps as visible_text_overlaps
 
 # JavaScript run before the page's scripts: every fillText on a 2D canvas whose text runs past
@@ -369,6 +370,8 @@ class Person:
         # elsewhere a panel or the page may scroll to a text (screens.py).
         found += scratch if self.where == "1366x768" else text_problems(self.driver, where)
         found += visible_text_overlaps(self.driver)
+        found += canvas_overlap_problems(self.driver, where)
+        found += label_over_body_problems(self.driver, where)
         if self.touch:
             found += touch_word_problems(self.driver, where)
         cuts = self.driver.execute_script("const c = window.__canvasCuts; window.__canvasCuts = [];"
@@ -400,7 +403,7 @@ def main():
     exact = ExactFlips(bookspin, source, out)
     started = time.monotonic()
     with open_browser(chromium, driver_path, size=(1366, 768), webgl=True, offline=True) as driver:
-        driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": CANVAS_TEXTS + CANVAS_EDGES})
+        driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": CANVAS_TEXTS + CANVAS_EDGES + CANVAS_INK})
         person = Person(driver, page, rng, exact, shots)
         for screen in SCREENS:
             set_screen(driver, screen)

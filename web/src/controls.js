@@ -70,6 +70,27 @@ export function fitMenu(menu) {
   }
 }
 
+/** Each menu of the column but the scene's as wide as the fields (140 px, at most 56 % of its
+ * row) or, where its chosen entry is wider, as that entry and the menu's arrow (26 px), so that
+ * no entry shows cut ("rigid-matri" at 1024×600); a menu wider than its row's room goes to the
+ * line under its name (index.html). */
+export function fitChoices() {
+  const g = document.createElement('canvas').getContext('2d');
+  // A number field likewise, as wide as its number and its padding and border (a toss's dt,
+  // 1/240's "0.00416667", was cut at 1024×600).
+  for (const menu of document.querySelectorAll('#controls select:not(#scene), #controls input[type=number]')) {
+    const style = getComputedStyle(menu), option = menu.tagName === 'SELECT' ? menu.selectedOptions[0] : null;
+    g.font = `${style.fontStyle} ${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+    const need = Math.ceil(menu.tagName === 'SELECT' ? (option ? g.measureText(option.textContent).width : 0) + 26
+      : g.measureText(menu.value).width + 10);
+    // Its chosen entry's width decides whether it fits beside its name (index.html: the row
+    // wraps by the items' widths); then it grows to the fields' width where the row has room.
+    const width = `min(${need}px, 100%)`, most = `min(100%, max(${need}px, min(140px, 56%)))`;
+    if (menu.style.width !== width) menu.style.width = width;
+    if (menu.style.maxWidth !== most) menu.style.maxWidth = most;
+  }
+}
+
 export class Controls {
   /** `space`: the page's StateSpace (state.js: the physics' models, their integrators, the
    * bodies); `engines`: the JavaScript engines' adapters (web/src/engines/), loaded, offered as
@@ -83,7 +104,7 @@ export class Controls {
     $('scene').options[0].textContent = '(custom)';
     // The menu lists the scenes by title (the value stays the scene's name, as in a link).
     scenes.forEach((s, i) => { if (s.title) $('scene').options[i + 1].textContent = s.title; });
-    window.addEventListener('resize', () => fitMenu($('scene')));
+    window.addEventListener('resize', () => { fitMenu($('scene')); fitChoices(); });
     fillSelect('body', space.bodies);
     const models = space.models.concat(this.engineModels);
     fillSelect('model', models); fillSelect('model2', models);
@@ -166,6 +187,7 @@ export class Controls {
     const mesh = $('body').querySelector('option[value="mesh"]');
     mesh.disabled = !(scene && scene.body && scene.body.shape === 'mesh');
     mesh.textContent = mesh.disabled ? 'mesh (a mesh scene)' : `mesh (${scene.name})`;
+    fitChoices();
     this.fitPanel(newScene);
   }
 
@@ -176,6 +198,10 @@ export class Controls {
     const about = $('sceneAbout'), column = $('controls');
     if (unfold) about.open = true;
     if (about.open && column.scrollHeight > column.clientHeight) about.open = false;
+    // The menus to the column's width now (a scroll bar that came or went changed it: the
+    // scene's title was shortened for the column without one and cut in it with one).
+    fitMenu($('scene'));
+    fitChoices();
   }
 
   /** Calls `onChange(id)` when an input of the column or the transport changes. */

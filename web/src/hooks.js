@@ -55,6 +55,11 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     trails: () => app.runs.list.map((r) => ({ colour: r.colour, points: r.trail.length, label: r.label })),
     /** The sphere's view rotation (body → view), row-major 3×3. */
     sphereRotation: () => { const e = sphere.rotation.elements; return [0, 1, 2].map((i) => [e[i], e[i + 3], e[i + 6]]); },
+    /** Turns the sphere as a drag does: to the view rotation `rows` (body → view, row-major
+     * 3×3, a rotation), drawn at the next frame. */
+    /** view3d.js's growth(): the bodies' reach now in sweep radii framed (over 1: one grew). */
+    bodyGrowth: () => app.view.growth(app.runs.list),
+    turnSphere: (rows) => { sphere.rotation.set(...rows.flat()); sphere.redraw = true; },
     /** Wall-clock ns per step of a fresh run of `model`/`integrator` (benchmark). */
     /** `bookspin flipcheck judge SCENARIO FILE` in the page (judge.js): a promise of the
      * judgement of the motion CSV `csvText`, named `file`, against the exact motion of the page's

@@ -81,7 +81,15 @@ export function drawTossChart(canvas, chart) {
   const values = niceTicks(lo, hi, h > 160 ? 4 : 3);
   let margin = 0;
   for (const v of values.ticks) margin = Math.max(margin, g.measureText(tickLabel(v, values.step)).width);
-  const left = Math.ceil(margin) + 10, right = 8, top = 22, bottom = 20;
+  // The title at the left, the legend ("• measured  — fitted") at the right of the line above
+  // the plot, or on a line of its own under the title where both do not fit with 12 px between
+  // (a phone: the legend was drawn over "against t (s)").
+  const title = 'ω (rad/s), phone frame, against t (s)';
+  const legendWidth = 7 + 2.5 + g.measureText('measured').width + 12 + 12 + 6 + g.measureText('fitted').width;
+  const left = Math.ceil(margin) + 10, right = 8;
+  const titleX = Math.min(left, Math.max(4, w - right - g.measureText(title).width));
+  const own = titleX + g.measureText(title).width + 12 + legendWidth > w - right;
+  const legendY = own ? 30 : 14, top = own ? 38 : 22, bottom = 20;
   const t0 = chart.t[0], t1 = chart.t[n - 1];
   const x = (t) => left + (t - t0) / (t1 - t0) * (w - left - right);
   const y = (v) => top + (hi - v) / (hi - lo) * (h - top - bottom);
@@ -101,16 +109,16 @@ export function drawTossChart(canvas, chart) {
     g.fillText(label, Math.max(left, Math.min(w - right - g.measureText(label).width, x(v) - g.measureText(label).width / 2)), h - 5);
   }
   g.strokeStyle = '#555'; g.strokeRect(left, top, w - left - right, h - top - bottom);
-  g.fillText('ω (rad/s), phone frame, against t (s)', left, 14);
+  g.fillText(title, titleX, 14);
   // The legend, right-aligned: "• measured  — fitted", the marks in the text's colour.
   const fittedX = w - right - g.measureText('fitted').width;
   const lineX = fittedX - 18;
   const measuredX = lineX - 12 - g.measureText('measured').width;
-  g.fillText('fitted', fittedX, 14);
-  g.fillText('measured', measuredX, 14);
-  g.beginPath(); g.arc(measuredX - 7, 10, 2.5, 0, 2 * Math.PI); g.fill();
+  g.fillText('fitted', fittedX, legendY);
+  g.fillText('measured', measuredX, legendY);
+  g.beginPath(); g.arc(measuredX - 7, legendY - 4, 2.5, 0, 2 * Math.PI); g.fill();
   g.strokeStyle = '#bbb'; g.lineWidth = 1.5;
-  g.beginPath(); g.moveTo(lineX, 10); g.lineTo(lineX + 12, 10); g.stroke();
+  g.beginPath(); g.moveTo(lineX, legendY - 4); g.lineTo(lineX + 12, legendY - 4); g.stroke();
   // The key of the three components, inside the plot's top-left corner on a dark patch: x, y, z
   // in their colours (the legend above says which mark is measured and which fitted).
   const keyWidth = ['x', 'y', 'z'].reduce((sum, c) => sum + g.measureText(c).width + 8, 4);
@@ -353,7 +361,15 @@ export class LabPanel {
       list.appendChild(box);
     });
     $('labResult').hidden = false;
-    // Charts after the layout: their size is the canvas's CSS size.
-    requestAnimationFrame(() => r.tosses.forEach((t, k) => drawTossChart(list.children[k].querySelector('canvas'), r.charts[k])));
+    // Charts after the layout: their size is the canvas's CSS size (drawn again when the window
+    // changes size: a phone turned).
+    const draw = () => r.tosses.forEach((t, k) => {
+      const canvas = list.children[k] && list.children[k].querySelector('canvas');
+      if (canvas) drawTossChart(canvas, r.charts[k]);
+    });
+    requestAnimationFrame(draw);
+    if (this.redrawCharts) window.removeEventListener('resize', this.redrawCharts);
+    this.redrawCharts = () => requestAnimationFrame(draw);
+    window.addEventListener('resize', this.redrawCharts);
   }
 }

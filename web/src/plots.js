@@ -124,7 +124,9 @@ export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units'
   if (measured) {
     g.fillStyle = '#ddd';
     for (let c = 0; c < 3; ++c) { g.fillStyle = OMEGA_COLOURS[c]; g.beginPath(); g.arc(12 + 8 * c, y - 5, 3, 0, 2 * Math.PI); g.fill(); }
-    g.fillStyle = '#ddd'; g.fillText('measured (the scene\'s measured ω)', 36, y);
+    // Its words shortened where the column is narrow (at 1024×600 they ran past the canvas).
+    const words = ['measured (the scene\'s measured ω)', 'measured ω', 'measured'].find((x) => 36 + g.measureText(x).width <= W - 4) || 'measured';
+    g.fillStyle = '#ddd'; g.fillText(words, 36, y);
     y += FONT_PX + 4;
   }
   const axisH = FONT_PX + 10;  // the time axis under the last panel
@@ -138,7 +140,9 @@ export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units'
   // Each panel's range and ticks first: the widest tick label sets the plots' left margin.
   const panels = PANELS.map(([title0, f, floor], k) => {
     const title = timeUnit === 's' ? title0.replace('rad/time', 'rad/s') : title0;
-    const y0 = top + k * ph + FONT_PX + 4, h = Math.max(4, ph - FONT_PX - 8);
+    // The title's line over the panel, its descenders (the parentheses, "y") clear of the top
+    // tick label by 2 px (on a phone's 2× screen they met).
+    const y0 = top + k * ph + FONT_PX + 6, h = Math.max(4, ph - FONT_PX - 10);
     let lo = Infinity, hi = -Infinity;
     for (const r of runs) {
       for (const s of r.history) {
@@ -158,11 +162,11 @@ export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units'
   panels.forEach(({ title, f, y0, h, lo, hi, ticks, step }, k) => {
     g.fillStyle = '#ddd';
     let x = 6;
-    g.fillText(title, x, y0 - 4);
+    g.fillText(title, x, y0 - 6);
     x += g.measureText(title).width + 8;
     if (k === 0) {
       ['x', 'y', 'z'].forEach((c, i) => {
-        g.fillStyle = OMEGA_COLOURS[i]; g.fillText(c, x, y0 - 4); x += g.measureText(c).width + 6;
+        g.fillStyle = OMEGA_COLOURS[i]; g.fillText(c, x, y0 - 6); x += g.measureText(c).width + 6;
       });
     }
     // The value axis: round ticks, their labels in the margin at the left, a faint line across

@@ -36,8 +36,9 @@ function boxReach(x0, y0, x1, y1, cx, cy) {
  * disc's centre (cx, cy) and across it by up to two lines, until its patch clears the outline
  * (radius R) by `gap` (wholly inside the disc, or wholly outside it and within `area`,
  * [left, top, right, bottom]) and overlaps none of the patches `taken`; where nothing is, where
- * it was. Returns [x, y]. */
-export function clearOfCircle({ x, y, w, font, pad }, { cx, cy, R, gap }, area, taken = []) {
+ * it was. Returns [x, y]; with `reach` (pixels), moved at most that far along the line, and null
+ * where nothing is within it. */
+export function clearOfCircle({ x, y, w, font, pad }, { cx, cy, R, gap }, area, taken = [], reach = null) {
   const patch = (px, py) => [px - pad, py - 0.9 * font, px + w + pad, py + 0.25 * font];
   const clear = (px, py) => {
     const [x0, y0, x1, y1] = patch(px, py);
@@ -49,7 +50,7 @@ export function clearOfCircle({ x, y, w, font, pad }, { cx, cy, R, gap }, area, 
   const [x0, y0, x1, y1] = patch(x, y);
   const dx = 0.5 * (x0 + x1) - cx, dy = 0.5 * (y0 + y1) - cy, d = Math.hypot(dx, dy) || 1;
   const across = [0, 1, -1, 2, -2].map((n) => n * 1.2 * font);
-  for (let step = 0; step <= 2 * R; ++step) {
+  for (let step = 0; step <= (reach === null ? 2 * R : reach); ++step) {
     for (const side of across) {
       for (const sign of step ? [-1, 1] : [1]) {
         const px = x + (sign * step * dx - side * dy) / d, py = y + (sign * step * dy + side * dx) / d;
@@ -57,7 +58,7 @@ export function clearOfCircle({ x, y, w, font, pad }, { cx, cy, R, gap }, area, 
       }
     }
   }
-  return [x, y];
+  return reach === null ? [x, y] : null;
 }
 
 export class Sphere {
@@ -182,7 +183,10 @@ export class Sphere {
   }
 
   /** The body's principal axes where they pierce the sphere, named by moment (`order`: body
-   * axes by ascending moment); the ends on the far side dimmed. */
+   * axes by ascending moment); the ends on the far side dimmed, each named only where its name
+   * fits within two lines of its point, clear of the near ends' names by a margin (it is the
+   * other end of an axis named on the near side: at 1024×600 the far names were pushed up to
+   * three lines away, into a stack with the near ones). */
   drawAxes(g, order) {
     const { R, cx, cy } = this.geometry();
     const k = this.scale();
@@ -200,23 +204,30 @@ export class Sphere {
     });
     // The near ends' names first, then the far ends' (dimmed), placed around them.
     const taken = [];
+    const margin = 4 * k;  // kept between two names' patches
     for (const { p, x, y, text } of ends.filter((e) => e.p[2] >= 0).concat(ends.filter((e) => e.p[2] < 0))) {
-      g.globalAlpha = p[2] >= 0 ? 1 : 0.35;
+      const near = p[2] >= 0;
+      g.globalAlpha = near ? 1 : 0.35;
       g.fillStyle = '#e6e6e6';
       g.beginPath(); g.arc(x, y, 3 * k, 0, 2 * Math.PI); g.fill();
+      g.globalAlpha = 1;
       const w = g.measureText(text).width;
       // Beside its point, on the side the axis points to, kept on the canvas; then clear of the
       // disc's outline and of the names placed before it (below the sphere's title line).
       const tx0 = Math.min(Math.max(x + (p[0] >= 0 ? 6 * k : -6 * k - w), 2 * k), this.canvas.width - w - 2 * k);
       const ty0 = Math.min(Math.max(y + (p[1] >= 0 ? -6 * k : FONT_PX * k + 2 * k), FONT_PX * k), this.canvas.height - 4 * k);
-      const [tx, ty] = clearOfCircle({ x: tx0, y: ty0, w, font: FONT_PX * k, pad: 2 * k }, { cx, cy, R, gap: 3 * k },
-        [0, (FONT_PX + 6) * k, this.canvas.width, this.canvas.height], taken);
+      const spaced = taken.map((t) => [t[0] - margin, t[1] - margin, t[2] + margin, t[3] + margin]);
+      const at = clearOfCircle({ x: tx0, y: ty0, w, font: FONT_PX * k, pad: 2 * k }, { cx, cy, R, gap: 3 * k },
+        [0, (FONT_PX + 6) * k, this.canvas.width, this.canvas.height], spaced, near ? null : 2 * FONT_PX * k);
+      if (!at) continue;
+      const [tx, ty] = at;
       const box = [tx - 2 * k, ty - 0.9 * FONT_PX * k, tx + w + 2 * k, ty + 0.25 * FONT_PX * k];
       taken.push(box);
-      // On a patch of the canvas's background, so that no curve runs through the name.
-      g.fillStyle = 'rgba(20, 23, 29, 0.8)';
+      // On a patch of the canvas's background, so that no curve runs through the name; a far
+      // end's name in grey.
+      g.fillStyle = 'rgba(20, 23, 29, 0.85)';
       g.fillRect(box[0], box[1], box[2] - box[0], box[3] - box[1]);
-      g.fillStyle = '#e6e6e6';
+      g.fillStyle = near ? '#e6e6e6' : '#8a8f98';
       g.fillText(text, tx, ty);
       this.axisLabels.push(text);
       this.axisLabelBoxes.push({ text, box });

@@ -118,7 +118,7 @@ export class View3D {
       this.scene.add(a);
       return a;
     });
-    this.layout = { radius: 1, spacing: 0, cols: 1, rows: 1, count: 0, right: new THREE.Vector3(1, 0, 0), up: new THREE.Vector3(0, 1, 0) };
+    this.layout = { radius: 1, spacing: 0, pitch: 0, room: 0, cols: 1, rows: 1, count: 0, right: new THREE.Vector3(1, 0, 0), up: new THREE.Vector3(0, 1, 0) };
     this.framedFor = '';
   }
 
@@ -136,6 +136,9 @@ export class View3D {
       // More than two: the method's name without its parenthesis, and "replay" where it is one
       // (the readout and the plots' legend name it whole).
       l.textContent = runs.length > 2 ? shortLabel(r) : r.label;
+      // Where the view is short of room (frame(): a landscape phone), the name alone.
+      l.dataset.full = l.textContent;
+      l.dataset.brief = runs.length > 2 ? r.label.split(' (')[0] : r.label;
       l.title = r.label;
       this.renderer.domElement.parentElement.appendChild(l);
       return l;
@@ -185,14 +188,81 @@ export class View3D {
     });
   }
 
+  /** How far the farthest moved cage corner of any run lies from its body's centre, in sweep
+   * radii of the layout (1 or less: every body within the room framed for it; more: a body
+   * that grows, a particle lattice or a quaternion left unnormalized, docs/physics.md §13). */
+  growth(runs) {
+    let far = 0;
+    for (const r of runs) {
+      if (!r.session.finite()) return Infinity;
+      const c = r.session.corners();
+      for (let p = 0; p < 8; ++p) far = Math.max(far, Math.hypot(c[3 * p], c[3 * p + 1], c[3 * p + 2]));
+    }
+    return far / this.layout.radius;
+  }
+
   /** Where run k of n is drawn: in a grid of `cols` columns (side by side for two, one above
    * the other in a view taller than wide), a sweep diameter and a gap apart, row by row from the
    * top left, the set centred on the orbit target. */
   offsetOf(k) {
-    const { cols, rows, spacing, right, up } = this.layout;
+    const { cols, rows, spacing, pitch, room, right, up } = this.layout;
     const col = k % cols, row = Math.floor(k / cols);
     return right.clone().multiplyScalar((col - (cols - 1) / 2) * spacing)
-      .addScaledVector(up, ((rows - 1) / 2 - row) * spacing);
+      .addScaledVector(up, ((rows - 1) / 2 - row) * pitch + room / 2);
+  }
+
+  /** The tallest label's height (CSS px) when it may be `width` px wide (placeLabels' width:
+   * its cell's less 12 px). */
+  labelHeight(width) {
+    let h = 0;
+    for (const l of this.labels) {
+      l.style.maxWidth = `${Math.max(60, width - 12)}px`;
+      h = Math.max(h, l.offsetHeight);
+    }
+    return h;
+  }
+
+  /** The grid of n bodies in a view w × h CSS px that draws them largest with each label's
+   * room under its body, clear of the row below (its tallest label as wrapped in its cell, and
+   * 10 px), and its cells at least as wide as the longest word of a label (and placeLabels' 12
+   * px: a narrower cell ran a word into its neighbour's), as wide as the view lets them be: {cols, rows, rho: a body's sweep
+   * radius in px, cell: the columns' pitch in px, room: the label's px}. The bodies' spheres
+   * and the labels under the last row within 80 % of the view, as frame() fits them (a
+   * landscape phone's tiles: labels of three lines lay over the lower row's books). */
+  gridFor(n, w, h) {
+    let word = 0;
+    for (const l of this.labels) {
+      const was = l.style.width;
+      l.style.width = 'min-content';
+      word = Math.max(word, l.offsetWidth + 12);
+      l.style.width = was;
+    }
+    const largest = (fits) => {
+      let lo = 0, hi = Math.max(w, h);
+      for (let i = 0; i < 40; ++i) { const mid = 0.5 * (lo + hi); if (fits(mid)) lo = mid; else hi = mid; }
+      return lo;
+    };
+    let best = null;
+    for (let cols = 1; cols <= n; ++cols) {
+      const rows = Math.ceil(n / cols);
+      const wide = largest((rho) => (cols - 1) * Math.max(2.5 * rho, word) + 2 * rho <= 0.8 * w);
+      // As wide as the view lets the columns stand apart: the labels on fewer lines.
+      const cellOf = (rho) => Math.max(2.5 * rho, word, cols > 1 ? (0.8 * w - 2 * rho) / (cols - 1) : 0);
+      // The largest rho whose rows, each max(2.5 rho, 2 rho + room) apart, and the last row's
+      // label fit 80 % of the height.
+      const tall = (room) => largest((rho) => (rows - 1) * Math.max(2.5 * rho, 2 * rho + room) + 2 * rho + room <= 0.8 * h);
+      let rho = Math.min(wide, tall(0)), room = 0;
+      if (this.labels.length) {
+        // The labels wrap to the cells' width, which the radius sets: a few rounds to agree.
+        for (let i = 0; i < 4; ++i) {
+          room = this.labelHeight(cellOf(rho)) + 10;
+          rho = Math.min(wide, tall(room));
+        }
+        room = Math.max(room, this.labelHeight(cellOf(rho)) + 10);
+      }
+      if (!best || rho > best.rho + 1e-9) best = { cols, rows, rho, room, cell: cellOf(rho) };
+    }
+    return best;
   }
 
   /** Lays the runs out and, when the layout changed (or `force`: the view was resized), puts
@@ -205,11 +275,27 @@ export class View3D {
     // The columns that need the least distance to show every body: the grid's width against
     // the view's aspect, its height (two side by side, or one above the other when taller).
     const n = runs.length;
-    let cols = 1;
-    const extent = (c) => Math.max(c / camera.aspect, Math.ceil(n / c));
-    for (let c = 2; c <= n; ++c) if (extent(c) < extent(cols)) cols = c;
+    const v = this.renderer.domElement, w = v.clientWidth, h = v.clientHeight;
+    let cols = 1, grid = null;
+    if (n > 1 && w > 0 && h > 0) {
+      // The labels whole, or by the name alone (no "· replay": the readout says it) where that
+      // draws the bodies a quarter larger.
+      const worded = (form) => { for (const l of this.labels) l.textContent = l.dataset[form]; return this.gridFor(n, w, h); };
+      const whole = worded('full'), brief = this.labels.some((l) => l.dataset.brief !== l.dataset.full) ? worded('brief') : whole;
+      grid = brief.rho > 1.25 * whole.rho ? brief : worded('full');
+      cols = grid.cols;
+    } else {
+      const extent = (c) => Math.max(c / camera.aspect, Math.ceil(n / c));
+      for (let c = 2; c <= n; ++c) if (extent(c) < extent(cols)) cols = c;
+    }
     const rows = Math.ceil(n / cols);
-    const key = `${n} ${r} ${cols}`;
+    // The labels' room in world units: px at the grid's scale (rho px a sweep radius r).
+    const perPx = grid && grid.rho > 0 ? r / grid.rho : 0;
+    let room = grid ? grid.room * perPx : 0;
+    const key = `${n} ${r} ${cols} ${room.toPrecision(3)} ${grid ? grid.cell.toPrecision(3) : ''}`;
+    // The same grid as framed last: its layout kept (with the label room frame() measured at the
+    // scale drawn: recomputed here, the rows stood closer than the camera was framed for).
+    if (!force && key === this.framedFor) return;
     // Two bodies side by side along world x (or y); a grid of more in the plane of the view as
     // the camera looks now, so that its rows stand apart on the screen, with room for the labels.
     const right = new THREE.Vector3(1, 0, 0), up = new THREE.Vector3(0, 1, 0);
@@ -219,10 +305,11 @@ export class View3D {
       right.setFromMatrixColumn(camera.matrixWorld, 0);
       up.setFromMatrixColumn(camera.matrixWorld, 1);
     }
-    this.layout = { radius: r, spacing: n > 2 ? 2.5 * r : n > 1 ? 2.2 * r : 0, cols, rows, count: n, right, up };
+    const base = n > 2 ? 2.5 * r : n > 1 ? 2.2 * r : 0;
+    const spacing = Math.max(base, grid ? grid.cell * perPx : 0);
+    this.layout = { radius: r, spacing, pitch: Math.max(base, 2 * r + room), room, cols, rows, count: n, right, up };
     this.arrowL.setLength(1.5 * r, 0.2 * r, 0.1 * r);
     this.axisArrows.forEach((a) => a.setLength(1.1 * r, 0.12 * r, 0.06 * r));
-    if (!force && key === this.framedFor) return;
     this.framedFor = key;
     // Each sweep sphere (centre c, radius ρ) must lie within 80% of the half-angles of the
     // view: atan(|x|/z) + asin(ρ/|c|) ≤ α, horizontally and vertically, in the camera's frame.
@@ -240,12 +327,41 @@ export class View3D {
         const z = -p.z, dist = p.length();
         if (z <= 0 || dist <= rho) return false;
         const a = Math.asin(rho / dist);
+        // The foot of its label's room, under its sweep sphere, in the view too.
+        const foot = this.offsetOf(k).addScaledVector(this.layout.up, -(r + room)).add(target)
+          .applyMatrix4(camera.matrixWorldInverse);
+        if (room > 0 && (-foot.z <= 0 || Math.atan(Math.abs(foot.y) / -foot.z) > halfV)) return false;
+        // Its label's cell (as wide as the columns are apart) across the view too.
+        if (room > 0) {
+          for (const side of [-0.5, 0.5]) {
+            const e = this.offsetOf(k).addScaledVector(this.layout.right, side * this.layout.spacing).add(target)
+              .applyMatrix4(camera.matrixWorldInverse);
+            if (-e.z <= 0 || Math.atan(Math.abs(e.x) / -e.z) > halfH) return false;
+          }
+        }
         return Math.atan(Math.abs(p.x) / z) + a <= halfH && Math.atan(Math.abs(p.y) / z) + a <= halfV;
       });
     };
-    let lo = rho, hi = 200 * rho;
-    for (let i = 0; i < 60; ++i) { const mid = 0.5 * (lo + hi); if (fits(mid)) hi = mid; else lo = mid; }
-    fits(hi);
+    const nearest = () => {
+      let lo = rho, hi = 200 * rho;
+      for (let i = 0; i < 60; ++i) { const mid = 0.5 * (lo + hi); if (fits(mid)) hi = mid; else lo = mid; }
+      fits(hi);
+      return hi;
+    };
+    let hi = nearest();
+    // The grid's scale was gridFor's estimate: at the scale drawn, a label wrapped in its cell
+    // may need more room; the room made its height and the view fitted again.
+    for (let pass = 0; room > 0 && pass < 3; ++pass) {
+      const a = target.clone().project(camera), b = target.clone().add(this.layout.right).project(camera);
+      const pxPerUnit = Math.abs(b.x - a.x) / 2 * w;
+      if (!(pxPerUnit > 0)) break;
+      const need = (this.labelHeight(this.layout.spacing * pxPerUnit) + 10) / pxPerUnit;
+      if (need <= 1.02 * room) break;
+      room = need;
+      this.layout.room = room;
+      this.layout.pitch = Math.max(base, 2 * r + room);
+      hi = nearest();
+    }
     camera.near = Math.max(1e-3, 0.05 * hi);
     camera.far = 20 * hi;
     camera.updateProjectionMatrix();
