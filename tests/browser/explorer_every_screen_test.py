@@ -214,6 +214,12 @@ def check_play_beside(driver, page, source, problems):
         problems.append(f"Play beside the measurement does not play: t {t0} → {moved}")
     if not clock.endswith(" s") or not axis or any(a != "t (s)" for a in axis):
         problems.append(f"the toss is not shown in seconds: clock {clock!r}, time axis {sorted(set(axis))}")
+    # Nor in any word shown beside it (the drag rate's unit was "1/time").
+    shown = driver.execute_script("return document.body.innerText")
+    for word in ("time unit", "1/time"):
+        if word in shown:
+            at = shown.index(word)
+            problems.append(f"the toss's page says {shown[max(0, at - 30):at + 20]!r}: not seconds")
     # The toss beside its measurement on each screen: nothing cut (its dt, 1/240's "0.00416667",
     # in its field at 1024×600; the plots' "measured (the scene's measured ω)" past their edge).
     for screen in SCREENS:

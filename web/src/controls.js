@@ -178,6 +178,8 @@ export class Controls {
     show('cellsRow', particle && state.body !== 'book');
     show('dragRow', DRAGGED.includes(state.model));
     show('dragRateRow', DRAGGED.includes(state.model) && state.drag !== 'none');
+    // A measured toss runs in the recording's seconds (docs/phone-lab.md), so its rate is per second.
+    $('dragRateUnit').textContent = scene && scene.measured ? '1/s' : '1/time';
     show('custom', state.axis === 'custom');
     show('rateRow', state.axis !== 'custom');
     show('second', state.compare);
