@@ -200,6 +200,20 @@ def check_play_beside(driver, page, source, problems):
                 problems.append(f"the lab at {screen_name(screen)}: a toss chart drawn {w}×{h} for "
                                 f"{want_w:.0f}×{want_h:.0f} pixels shown (not drawn again at this size)")
         problems += canvas_overlap_problems(driver, f"the lab at {screen_name(screen)}")
+        # Its result table within the panel (it scrolls sideways inside itself, keeping the toss
+        # column), the page no wider than the screen, and no number or interval broken over two
+        # lines (a phone's "uncalibrated" broke mid-word).
+        page_w, screen_w, panel_w, panel_shown, broken = driver.execute_script("""
+          const panel = document.getElementById('labResult'), table = document.getElementById('labOutcome');
+          const lines = (td) => { const r = document.createRange(); r.selectNodeContents(td);
+            return new Set([...r.getClientRects()].map((b) => Math.round(b.top))).size; };
+          return [document.documentElement.scrollWidth, innerWidth, panel.scrollWidth, panel.clientWidth,
+            [...table.querySelectorAll('td:not(.words)')].filter((td) => lines(td) > 1).map((td) => td.textContent)]""")
+        if page_w > screen_w + 1 or panel_w > panel_shown + 1:
+            problems.append(f"the lab at {screen_name(screen)}: its result {panel_w} px wide in a panel of "
+                            f"{panel_shown}, the page {page_w} px on a screen of {screen_w}")
+        if broken:
+            problems.append(f"the lab at {screen_name(screen)}: result cells broken over lines: {broken}")
     driver.execute_script("window.__canvasTexts = []")
     driver.execute_script("""[...document.querySelectorAll('#labTosses button')]
       .find((b) => b.textContent === 'Play beside the measurement').click()""")
