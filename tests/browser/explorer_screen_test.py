@@ -37,6 +37,7 @@ import time
 from browser import (console_errors, fail, find_browser, open_browser, require, run, test_arguments,
                      wait_for)
 from explorer_test import load, slide_to
+from screens import VISIBLE_TEXT_NODES
 
 SCREENS = ((1366, 768), (1920, 1080))
 MIN_TEXT_PX = 12
@@ -50,24 +51,12 @@ CASES = (
 
 # JavaScript: every visible text of the page as [text, font px, panel id, rects], each rect
 # [left, top, right, bottom] of the text node itself (a Range), and the panels' boxes.
-TEXTS = """
+TEXTS = VISIBLE_TEXT_NODES + """
   const panels = ['controls', 'main', 'transport', 'side', 'judge', 'lab'];
-  const out = [];
-  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
-  for (let n = walker.nextNode(); n; n = walker.nextNode()) {
-    const e = n.parentElement;
-    if (!n.textContent.trim() || !e || e.closest('[hidden], script, style, option, select')) continue;
-    if (e.closest('details:not([open])') && !e.closest('summary')) continue;
-    const style = getComputedStyle(e);
-    if (style.visibility === 'hidden' || style.display === 'none' || e.offsetParent === null) continue;
-    const range = document.createRange(); range.selectNodeContents(n);
-    const rects = [...range.getClientRects()].filter((r) => r.width > 0 && r.height > 0)
-      .map((r) => [r.left, r.top, r.right, r.bottom]);
-    if (!rects.length) continue;
+  const out = visibleTextNodes().map(({ text, e, style, rects }) => {
     const panel = panels.find((id) => e.closest('#' + id));
-    out.push([n.textContent.trim().slice(0, 60), parseFloat(style.fontSize), panel || '',
-              rects, !!e.closest('.bodyLabel')]);
-  }
+    return [text, parseFloat(style.fontSize), panel || '', rects, !!e.closest('.bodyLabel')];
+  });
   const boxes = {};
   for (const id of panels) {
     const p = document.getElementById(id);
