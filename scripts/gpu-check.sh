@@ -6,16 +6,18 @@
 #   scripts/gpu-check.sh pack [BUNDLE]   on the machine that built build/ (Debian 12): copies
 #                                        bookspin, bookspin-bench and build/tests/picture_tests
 #                                        with the libraries ldd lists (glibc's loader and libc
-#                                        excepted), Debian's glvnd libEGL, fontconfig's
-#                                        configuration and the DejaVu fonts into BUNDLE (default
-#                                        build/gpu-bundle), and BUNDLE.tar.xz beside it.
+#                                        excepted) and Debian's glvnd libEGL into BUNDLE
+#                                        (default build/gpu-bundle), and BUNDLE.tar.xz beside
+#                                        it; no fonts: the programs carry their own.
 #   scripts/gpu-check.sh run [BUNDLE] [OUT]
 #                                        on the GPU machine, from a checkout of the same commit:
 #                                        runs the three with the bundle's libraries before the
 #                                        system's and NVIDIA's EGL vendor file where there is
 #                                        one; writes OUT/info.txt, OUT/picture-tests.txt (a failing
 #                                        frame's actual, expected and diff PNGs at the paths it
-#                                        names), OUT/bench.txt with OUT/bench/, and OUT/summary.txt.
+#                                        names), OUT/bench.txt with OUT/bench/, and OUT/summary.txt
+#                                        (the GL renderer, the text's faces and options as
+#                                        `bookspin info` names them, what passed).
 #                                        Exit 0 when all three exited 0.
 #
 # The test programs find the goldens and scenes at the source folder compiled into them (the
@@ -74,7 +76,7 @@ pack() {
   for p in "${programs[@]}"; do
     [ -x "$p" ] || { echo "gpu-check: $p is not built (cmake --build build --target bookspin bookspin-bench picture_tests)"; exit 2; }
   done
-  rm -rf "$bundle" && mkdir -p "$bundle/bin" "$bundle/lib" "$bundle/fonts"
+  rm -rf "$bundle" && mkdir -p "$bundle/bin" "$bundle/lib"
   cp "${programs[@]}" "$bundle/bin/"
   # Every library the three load, by ldd, but the C library and its loader (the GPU machine's
   # own must serve: they cannot be swapped under a running system's), and the GL vendor's.
@@ -91,7 +93,6 @@ pack() {
              /usr/lib/x86_64-linux-gnu/libGLX.so.0; do
     [ -e "$lib" ] && cp -L "$lib" "$bundle/lib/"
   done
-  # The fonts the overlays draw with, and a configuration that names only them.
   local lib
   for lib in "$bundle"/lib/*; do
     if basename "$lib" | grep -Eq "^($stubbed)\.so"; then
@@ -103,23 +104,9 @@ pack() {
             <(LD_LIBRARY_PATH="$bundle/lib" "$bundle/bin/bookspin" info 2>&1 | grep -v '^EGL\|^GL '); then
     echo "gpu-check: the bundle's bookspin info differs from the build's (above)"; exit 1
   fi
-  cp /usr/share/fonts/truetype/dejavu/*.ttf "$bundle/fonts/" 2>/dev/null || true
-  # The build machine's rendering rules (hinting, antialiasing, the DejaVu aliases), so that the
-  # overlays' text is drawn as the goldens' was; the user's and local files left out.
-  mkdir -p "$bundle/conf.d"
-  for conf in /etc/fonts/conf.d/*.conf; do
-    case "$(basename "$conf")" in 50-user.conf | 51-local.conf) continue ;; esac
-    cp -L "$conf" "$bundle/conf.d/"
-  done
-  cat > "$bundle/fonts.conf" <<'EOF'
-<?xml version="1.0"?>
-<!DOCTYPE fontconfig SYSTEM "fonts.dtd">
-<fontconfig>
-  <dir prefix="relative">fonts</dir>
-  <include ignore_missing="yes" prefix="relative">conf.d</include>
-  <cachedir>/tmp/bookspin-gpu-check-fontconfig</cachedir>
-</fontconfig>
-EOF
+  # No fonts and no fontconfig file: every text is drawn in the typeface stage's DejaVu, built
+  # into the programs with its options (docs/architecture.md), so the GPU machine's own font
+  # set-up, whatever it is, reaches no frame.
   git rev-parse HEAD > "$bundle/commit" 2>/dev/null || true
   tar -C "$(dirname "$bundle")" -cJf "$bundle.tar.xz" "$(basename "$bundle")"
   echo "gpu-check: packed $(ls "$bundle/lib" | wc -l) libraries into $bundle.tar.xz ($(du -h "$bundle.tar.xz" | cut -f1))"
@@ -134,7 +121,6 @@ run() {
   local root
   root=$(cd "$bundle" && pwd)
   export LD_LIBRARY_PATH="$root/lib:/usr/local/nvidia/lib64:/usr/lib/x86_64-linux-gnu/nvidia${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
-  export FONTCONFIG_FILE="$root/fonts.conf"
   for vendor in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json \
                 /usr/share/glvnd/egl_vendor.d/10_nvidia.json; do
     if [ -f "$vendor" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor; break; fi
@@ -157,7 +143,7 @@ run() {
   bench_rc=$?
   {
     echo "commit: $(cat "$root/commit" 2>/dev/null || echo unknown)"
-    grep -E 'EGL|GL renderer|GL version|anisotrop' "$out/info.txt"
+    grep -E 'EGL|GL renderer|GL version|anisotrop|^text ' "$out/info.txt"
     echo "bookspin info: exit $info_rc"
     grep -E '^\[  (PASSED|FAILED) +\]' "$out/picture-tests.txt"
     echo "picture tests: exit $pictures_rc"

@@ -6,7 +6,7 @@ packages=(
   build-essential cmake pkg-config git ca-certificates time ccache
   libeigen3-dev libtomlplusplus-dev libcli11-dev libboost-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
-  libssl-dev libpng-dev libdeflate-dev pngcheck libcairo2-dev libfreetype-dev fonts-dejavu-core
+  libssl-dev libpng-dev libdeflate-dev pngcheck libcairo2-dev libfreetype-dev fonts-dejavu-core fonts-dejavu-extra
   libassimp-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev libbullet-dev libode-dev

@@ -4,13 +4,14 @@
 #include "cli/commands.hpp"
 #include "cli/subcommand.hpp"
 #include "render/renderer.hpp"
+#include "typeface/typeface.hpp"
 #include "video/video.hpp"
 
 namespace bookspin::cli {
 
 namespace {
 
-/// Prints the EGL/GL and FFmpeg set-up.
+/// Prints the EGL/GL and FFmpeg set-up, and the faces and options every text is drawn with.
 int info_command() {
   for (const auto& line : video::ffmpeg_info()) std::cout << line << '\n';
   std::cout.flush();
@@ -21,6 +22,7 @@ int info_command() {
             << (anisotropy > 1.0f ? std::to_string(static_cast<int>(anisotropy)) + "x anisotropic"
                                   : std::string("trilinear (software rasterizer)"))
             << '\n';
+  for (const auto& line : typeface::info_lines()) std::cout << line << '\n';
   return kExitOk;
 }
 
@@ -29,7 +31,9 @@ int info_command() {
 Subcommand add_info(CLI::App& cli) {
   return {
       cli.add_subcommand(
-          "info", "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders"),
+          "info",
+          "Print the EGL vendor, GL renderer and version, FFmpeg versions and encoders, the text's "
+          "faces and options"),
       [] { return info_command(); }};
 }
 

@@ -8,6 +8,7 @@
 
 #include "common/argb32.hpp"
 #include "overlay/caption.hpp"
+#include "typeface/typeface.hpp"
 
 namespace bookspin::overlay {
 
@@ -23,9 +24,7 @@ PixelRegion clipped(PixelRegion r, int image_width, int image_height) {
 }  // namespace
 
 void select_overlay_font(cairo_t* cr, bool bold, double size) {
-  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size);
+  typeface::select(cr, bold ? typeface::Face::sans_bold : typeface::Face::sans, size);
 }
 
 double inset_font(const PixelRect& rect) {

@@ -27,8 +27,9 @@ double inset_title_height(const PixelRect& rect);
 PixelRegion region_around(double x, double y, double width, double height, double margin,
                           int image_width, int image_height);
 
-/// Selects the one typeface of every overlay (DejaVu Sans, from Debian's fonts-dejavu-core;
-/// fontconfig substitutes where it is missing), bold or regular, `size` pixels high.
+/// Selects the one typeface of every overlay, DejaVu Sans built into the program, bold or
+/// regular, `size` pixels high, with the typeface stage's fixed options (typeface.hpp): the
+/// machine's fontconfig set-up never reaches an overlay.
 void select_overlay_font(cairo_t* cr, bool bold, double size);
 
 /// Draw on `cr()` in image coordinates, then `composite_onto(image)` blends what was drawn

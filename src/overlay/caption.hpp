@@ -1,5 +1,5 @@
 #pragma once
-// Text captions composited over a rendered frame (cairo, DejaVu Sans through fontconfig).
+// Text captions composited over a rendered frame (cairo, the built-in DejaVu Sans of typeface.hpp).
 #include <cairo.h>
 
 #include <memory>

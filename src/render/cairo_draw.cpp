@@ -80,12 +80,6 @@ void fill_cloth(cairo_surface_t* surface, Rgb base) {
   cairo_surface_mark_dirty(surface);
 }
 
-void set_font(cairo_t* cr, const char* family, double size, bool bold, bool italic) {
-  cairo_select_font_face(cr, family, italic ? CAIRO_FONT_SLANT_ITALIC : CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size);
-}
-
 double text_width(cairo_t* cr, const std::string& text) {
   cairo_text_extents_t extents;
   cairo_text_extents(cr, text.c_str(), &extents);

@@ -27,9 +27,6 @@ void set_color(cairo_t* cr, Rgb color, double alpha = 1.0);
 /// Fills the whole surface with `base` plus a faint woven-cloth grain (deterministic).
 void fill_cloth(cairo_surface_t* surface, Rgb base);
 
-/// Font for the toy text API: family "DejaVu Serif" / "DejaVu Sans", bold/italic flags.
-void set_font(cairo_t* cr, const char* family, double size, bool bold = false, bool italic = false);
-
 /// Draws `text` centred on x = centre_x with its baseline at `baseline`, first shrinking
 /// the font size so the text fits in max_width. Returns the size used.
 double centered_text(cairo_t* cr, const std::string& text, double centre_x, double baseline,

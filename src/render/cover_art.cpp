@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "render/cairo_draw.hpp"
+#include "typeface/typeface.hpp"
 
 namespace bookspin::render::art {
 
@@ -18,8 +19,7 @@ constexpr Rgb navy{0.105, 0.165, 0.310};
 constexpr Rgb burgundy{0.370, 0.105, 0.135};
 constexpr Rgb gold{0.870, 0.700, 0.360};
 constexpr Rgb cream{0.940, 0.905, 0.800};
-constexpr const char* serif = "DejaVu Serif";
-constexpr const char* sans = "DejaVu Sans";
+using typeface::Face;
 
 // The emblem: a small book tilted in a circular arrow, the subject of the volume.
 void spinning_book_emblem(cairo_t* cr, double cx, double cy, double radius) {
@@ -77,7 +77,7 @@ void barcode(cairo_t* cr, double x, double y, double w, double h) {
     cairo_fill(cr);
     bx += bar + 2.0 + static_cast<double>((state >> 16) % 3) * 2.0;
   }
-  draw::set_font(cr, "DejaVu Sans Mono", 24);
+  typeface::select(cr, Face::sans_mono, 24);
   draw::centered_text(cr, "978-3-16-148410-0", x + w / 2, y + h - 16, w - 30);
 }
 
@@ -103,16 +103,16 @@ RgbaImage front_cover() {
   draw::inset_frame(cr, w, h, 46, 7);
   draw::inset_frame(cr, w, h, 66, 2.5);
   corner_diamonds(cr, w, h, 66);
-  draw::set_font(cr, serif, 150, true);
+  typeface::select(cr, Face::serif_bold, 150);
   draw::centered_text(cr, "Classical", w / 2, 430, w - 220);
-  draw::set_font(cr, serif, 150, true);
+  typeface::select(cr, Face::serif_bold, 150);
   draw::centered_text(cr, "Mechanics", w / 2, 600, w - 220);
   draw::ornament_rule(cr, w / 2, 690, 260);
   spinning_book_emblem(cr, w / 2, 960, 150);
-  draw::set_font(cr, serif, 54, false, true);
+  typeface::select(cr, Face::serif_italic, 54);
   draw::centered_text(cr, "Rigid Bodies and Their Rotations", w / 2, 1240, w - 220);
   draw::ornament_rule(cr, w / 2, 1320, 120);
-  draw::set_font(cr, sans, 44);
+  typeface::select(cr, Face::sans, 44);
   draw::centered_text(cr, "L. EULER  \xc2\xb7  L. POINSOT", w / 2, 1430, w - 220);
   return draw::to_rgba(canvas.surface.get());
 }
@@ -122,12 +122,12 @@ RgbaImage back_cover() {
   const draw::ClothCanvas canvas = draw::cloth_canvas(cover_width, cover_height, burgundy, gold);
   cairo_t* cr = canvas.cr();
   draw::inset_frame(cr, w, h, 46, 4);
-  draw::set_font(cr, serif, 64, true);
+  typeface::select(cr, Face::serif_bold, 64);
   draw::centered_text(cr, "The Unstable Rotation", w / 2, 250, w - 200);
   draw::centered_text(cr, "of a Book", w / 2, 335, w - 200);
   draw::ornament_rule(cr, w / 2, 400, 200);
   draw::set_color(cr, cream);
-  draw::set_font(cr, serif, 38);
+  typeface::select(cr, Face::serif, 38);
   double baseline = 520;
   for (const char* line : blurb) {
     left_text(cr, line, 110, baseline);
@@ -135,7 +135,7 @@ RgbaImage back_cover() {
   }
   barcode(cr, w - 110 - 330, h - 110 - 200, 330, 200);
   draw::set_color(cr, gold);
-  draw::set_font(cr, sans, 34, true);
+  typeface::select(cr, Face::sans_bold, 34);
   left_text(cr, "bookspin press", 110, h - 130);
   return draw::to_rgba(canvas.surface.get());
 }
@@ -150,11 +150,11 @@ RgbaImage spine() {
     cairo_fill(cr);
   }
   // Reading from u = 0: publisher at the book's bottom, title, authors near the top.
-  draw::set_font(cr, serif, 96, true);
+  typeface::select(cr, Face::serif_bold, 96);
   draw::centered_text(cr, "CLASSICAL MECHANICS", w * 0.48, h / 2 + 34, w * 0.50);
-  draw::set_font(cr, sans, 40);
+  typeface::select(cr, Face::sans, 40);
   draw::centered_text(cr, "EULER \xc2\xb7 POINSOT", w - 280, h / 2 + 15, 240);
-  draw::set_font(cr, sans, 30, true);
+  typeface::select(cr, Face::sans_bold, 30);
   draw::centered_text(cr, "bookspin", 230, h / 2 + 11, 180);
   return draw::to_rgba(canvas.surface.get());
 }

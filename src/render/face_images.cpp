@@ -1,8 +1,5 @@
 #include "render/face_images.hpp"
 
-#include <fontconfig/fontconfig.h>
-#include <strings.h>
-
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -16,35 +13,7 @@ namespace bookspin::render {
 
 namespace {
 
-using PatternPtr = std::unique_ptr<FcPattern, decltype(&FcPatternDestroy)>;
-
-// cairo's toy text API silently substitutes another face for a missing one; ask
-// fontconfig what the family really resolves to.
-std::string resolved_family(const std::string& family) {
-  PatternPtr pattern(FcNameParse(reinterpret_cast<const FcChar8*>(family.c_str())),
-                     &FcPatternDestroy);
-  if (!pattern) return {};
-  FcConfigSubstitute(nullptr, pattern.get(), FcMatchPattern);
-  FcDefaultSubstitute(pattern.get());
-  FcResult result = FcResultNoMatch;
-  PatternPtr match(FcFontMatch(nullptr, pattern.get(), &result), &FcPatternDestroy);
-  FcChar8* found = nullptr;
-  if (!match || FcPatternGetString(match.get(), FC_FAMILY, 0, &found) != FcResultMatch) return {};
-  return reinterpret_cast<const char*>(found);
-}
-
-void require_default_fonts() {
-  static const bool checked = [] {
-    require_font("DejaVu Serif");
-    require_font("DejaVu Sans");
-    require_font("DejaVu Sans Mono");
-    return true;
-  }();
-  (void)checked;
-}
-
 RgbaImage draw_face_image(FaceImage which) {
-  require_default_fonts();
   switch (which) {
     case FaceImage::front:
       return art::front_cover();
@@ -66,13 +35,6 @@ std::string describe(cairo_status_t status, const std::string& path) {
 }
 
 }  // namespace
-
-void require_font(const std::string& family) {
-  const std::string found = resolved_family(family);
-  if (strcasecmp(found.c_str(), family.c_str()) != 0)
-    throw RenderError("font '" + family + "' not found (fontconfig offers '" + found +
-                      "'); install fonts-dejavu-core");
-}
 
 RgbaImage generate_face_image(FaceImage which) {
   // The art never changes within a process: draw each image once, hand out copies

@@ -12,7 +12,8 @@ namespace bookspin::render {
 /// front: dark blue cloth, gold border, "Classical Mechanics", subtitle and authors;
 /// back: burgundy, blurb and a barcode box; spine: title along its long side;
 /// pages: cream with fine page lines along its rows, cover-board bands at top and bottom.
-/// Opaque RGBA, top row first. Throws RenderError if the DejaVu fonts cannot be found.
+/// Opaque RGBA, top row first. Its text is the typeface stage's built-in DejaVu
+/// (typeface.hpp): the same pixels on every machine.
 RgbaImage generate_face_image(FaceImage which);
 
 /// Reads a PNG for a face (alpha is flattened onto white, the book is opaque). Throws
@@ -26,9 +27,5 @@ using FaceImages = std::array<RgbaImage, 4>;
 /// empty (front, back, spine, pages in FaceImage order). Throws as the two functions above.
 FaceImages face_images(const std::string& front, const std::string& back, const std::string& spine,
                        const std::string& pages);
-
-/// Throws RenderError unless fontconfig resolves `family` (e.g. "DejaVu Serif") to itself
-/// rather than to a fallback font.
-void require_font(const std::string& family);
 
 }  // namespace bookspin::render

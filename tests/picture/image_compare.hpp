@@ -25,8 +25,9 @@ namespace bookspin::picture {
 /// So `max_differing_fraction` = 0.5% sits above every legitimate difference we can produce
 /// and at least 3× below the subtlest bug. (The 1–2% common elsewhere would let a 3° turn
 /// and a mirrored cover through: at this size they change few pixels.) Captions, banners
-/// and plots are drawn by cairo on the CPU: identical wherever the same cairo and DejaVu
-/// fonts are installed (Debian 12's, scripts/install-deps.sh).
+/// and plots are drawn by cairo on the CPU in the typeface stage's built-in DejaVu, with its
+/// options set in code: identical wherever the same cairo and FreeType run, whatever the
+/// machine's font set-up (src/typeface/typeface.hpp).
 struct Tolerance {
   int channel_threshold = 24;             ///< a channel difference above this marks the pixel
   double max_differing_fraction = 0.005;  ///< largest allowed share of marked pixels

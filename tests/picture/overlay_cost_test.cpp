@@ -18,8 +18,7 @@ void draw_sample(cairo_t* cr) {
   cairo_rectangle(cr, 40.5, 30.25, 70, 35);
   cairo_set_source_rgba(cr, 0.9, 0.2, 0.1, 0.6);
   cairo_fill(cr);
-  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-  cairo_set_font_size(cr, 14);
+  overlay::select_overlay_font(cr, true, 14);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_move_to(cr, 45, 55);
   cairo_show_text(cr, "t = 12.5");

@@ -1,0 +1,67 @@
+// `bookspin info` names the faces every text is drawn with and their options
+// (docs/architecture.md, the typeface stage), the same whatever the machine's font set-up.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/cli_runner.hpp"
+
+namespace bookspin::cli {
+namespace {
+
+using namespace bookspin::test;  // the shared runner (tests/support)
+
+// The text lines of `bookspin info` alone (the EGL and FFmpeg lines depend on the machine).
+std::string text_lines(const std::string& info) {
+  std::string lines;
+  std::size_t at = 0;
+  while (at < info.size()) {
+    const std::size_t end = info.find('\n', at);
+    const std::string line =
+        info.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    if (line.rfind("text ", 0) == 0) lines += line + '\n';
+    if (end == std::string::npos) break;
+    at = end + 1;
+  }
+  return lines;
+}
+
+TEST(InfoCommand, NamesEveryFaceItsFileItsHashAndTheTextOptions) {
+  const CliResult r = run_bookspin("info");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string text = text_lines(r.output);
+  for (const char* file : {"DejaVuSans.ttf", "DejaVuSans-Bold.ttf", "DejaVuSansMono.ttf",
+                           "DejaVuSerif.ttf", "DejaVuSerif-Bold.ttf", "DejaVuSerif-Italic.ttf"}) {
+    const std::size_t at = text.find(std::string("/") + file + ", SHA-256 ");
+    ASSERT_NE(at, std::string::npos) << file << " not named:\n" << text;
+    // The hash printed is the file's own, hashed here by sha256sum, not by bookspin.
+    const std::size_t start = text.rfind("built in from ", at) + 14;
+    const std::string path = text.substr(start, at + 1 + std::string(file).size() - start);
+    std::string sum;
+    if (run_shell("sha256sum '" + path + "' 2>/dev/null", sum) == 0) {
+      const std::string printed = text.substr(at + std::string(file).size() + 11, 64);
+      EXPECT_EQ(sum.substr(0, 64), printed) << path;
+    }
+  }
+  EXPECT_NE(text.find("text face: DejaVu Sans (Version 2.37)"), std::string::npos) << text;
+  EXPECT_NE(text.find("text options: antialias gray, hint style slight, hint metrics on, "
+                      "subpixel order default"),
+            std::string::npos)
+      << text;
+}
+
+// Another fontconfig file, locale and home: the same words (and so the same faces and options).
+TEST(InfoCommand, TheTextLinesAreTheSameUnderAnotherTextSetUp) {
+  const CliResult plain = run_bookspin("info");
+  const CliResult other = run_bookspin_env(
+      std::string("FONTCONFIG_FILE=") + BOOKSPIN_SOURCE_DIR +
+          "/tests/picture/another_text_set_up/fonts.conf HOME=/nonexistent LC_ALL=ja_JP.UTF-8 "
+          "FREETYPE_PROPERTIES=truetype:interpreter-version=35",
+      "info");
+  ASSERT_EQ(other.status, 0) << other.output;
+  EXPECT_FALSE(text_lines(plain.output).empty());
+  EXPECT_EQ(text_lines(plain.output), text_lines(other.output));
+}
+
+}  // namespace
+}  // namespace bookspin::cli
