@@ -1,5 +1,6 @@
 #include "fit/fit_options.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -152,6 +153,16 @@ void check_moments(const Eigen::Vector3d& moments, const std::string& option) {
     if (!(moments[i] > 0) || !std::isfinite(moments[i]))
       throw InputError(option + ": \"" + shortest(moments[i]) +
                        "\" is not a positive finite number");
+  // A rigid body's principal moments obey the triangle inequality, the two smaller summing to
+  // at least the largest (docs/physics.md §11: I1 + I2 - I3 = 2 ∫ z² dm ≥ 0); a flat body has
+  // the equality, kept within the rounding of a typed decimal.
+  Eigen::Vector3d sorted = moments;
+  std::sort(sorted.begin(), sorted.end());
+  if (sorted[0] + sorted[1] < sorted[2] * (1 - 1e-12))
+    throw InputError(option + ": " + shortest(sorted[0]) + " + " + shortest(sorted[1]) + " < " +
+                     shortest(sorted[2]) +
+                     ": no rigid body has these principal moments (the two smaller sum to at "
+                     "least the largest)");
 }
 
 }  // namespace bookspin::fit

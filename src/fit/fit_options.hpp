@@ -59,7 +59,9 @@ physics::DragLaw parse_drag_option(const std::string& text, const std::string& o
 Eigen::Vector3d parse_moments(const std::string& text, const std::string& option);
 
 /// The one judge of moments given as numbers (parse_moments' text, Python's (3,) array):
-/// throws InputError "OPTION: \"-1\" is not a positive finite number" for one that is not.
+/// throws InputError "OPTION: \"-1\" is not a positive finite number" for one that is not,
+/// and "OPTION: 1 + 1 < 3: no rigid body has these principal moments …" where the two smaller
+/// sum to less than the largest (the triangle inequality, docs/physics.md §11).
 void check_moments(const Eigen::Vector3d& moments, const std::string& option);
 
 }  // namespace bookspin::fit

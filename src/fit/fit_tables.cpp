@@ -29,16 +29,17 @@ std::pair<double, std::string> own_time(const FitResult& fit, double t) {
   return {t - part.t_offset, named(fit) ? part.name : std::string()};
 }
 
-/// ", T/2 predicted 0.412 ± 0.030 s from its first 0.2 s" (its σ's precision, or the
-/// millisecond without one), ", not predicted: " and why, or nothing.
+/// ", T/2 predicted 0.412 ± 0.060 s (2σ) from its first 0.2 s": ± 2σ, as the result table
+/// gives it (to its precision, or the millisecond without a σ), ", not predicted: " and why, or
+/// nothing.
 std::string predicted_words(const TossFit& t) {
   if (!t.half_period_predicted)
     return t.not_predicted.empty() ? "" : ", not predicted: " + t.not_predicted;
   return ", T/2 predicted " +
          (t.half_period_predicted_sigma
-              ? plus_minus(*t.half_period_predicted, *t.half_period_predicted_sigma)
-              : fixed(*t.half_period_predicted, 3)) +
-         " s" +
+              ? plus_minus(*t.half_period_predicted, 2.0 * *t.half_period_predicted_sigma) +
+                    " s (2σ)"
+              : fixed(*t.half_period_predicted, 3) + " s") +
          (t.predicted_window
               ? " from its first " + finite_text(*t.predicted_window, "predicted_window") + " s"
               : "") +
@@ -258,14 +259,14 @@ std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
                                (one ? "the recording: the" : who + ": its") +
                                " bias (rad/s) is fitted from " + own + " flights: ";
     if (not_applied && fitted_sigma)
-      lines.push_back("no still stretch in " + (one ? "the recording" : who) +
-                      ": the bias (rad/s) " + own + " flights give, " +
-                      with_sigma(*not_applied, *fitted_sigma) + ", is consistent with zero (χ² " +
-                      fixed(bias_chi_square(*not_applied, *fitted_sigma), 1) + " over 3 axes, " +
-                      "under " + fixed(kBiasChiSquare, 1) +
-                      "): not removed, held at zero within those σ");
+      lines.push_back(
+          "no still stretch in " + (one ? "the recording" : who) + ": the bias (rad/s) " + own +
+          " flights give, " + with_sigma(*not_applied, *fitted_sigma) +
+          " (1σ), is consistent with zero (χ² " +
+          fixed(bias_chi_square(*not_applied, *fitted_sigma), 1) + " over 3 axes, " + "under " +
+          fixed(kBiasChiSquare, 1) + "): not removed, held at zero within those σ");
     else if (fitted_sigma)
-      lines.push_back(fitted + with_sigma(in_flight, *fitted_sigma));
+      lines.push_back(fitted + with_sigma(in_flight, *fitted_sigma) + " (1σ)");
     else if (correction != Eigen::Vector3d::Zero())
       lines.push_back(fitted + three(in_flight));
     else
@@ -281,9 +282,9 @@ std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
     std::string drag;
     if (fit.drag != physics::DragLaw::none)
       drag = ", drag " +
-             (t.drag_rate_sigma ? plus_minus(t.drag_rate, *t.drag_rate_sigma)
-                                : fixed(t.drag_rate, 3)) +
-             " /s" + (t.drag_rate == 0.0 ? " (at its bound: air cannot speed a body up)" : "");
+             (t.drag_rate_sigma ? plus_minus(t.drag_rate, *t.drag_rate_sigma) + " /s (1σ)"
+                                : fixed(t.drag_rate, 3) + " /s") +
+             (t.drag_rate == 0.0 ? " (at its bound: air cannot speed a body up)" : "");
     const auto [t_start, recording] = own_time(fit, t.flight.t_start);
     const double t_end = t.flight.t_end - (t.flight.t_start - t_start);
     lines.push_back("kept toss " + std::to_string(k + 1) + ": " +
@@ -317,7 +318,9 @@ std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
     return with_ratio_sigma ? plus_minus(b.ratios[i], (*b.ratio_sigma)[i]) : fixed(b.ratios[i], 4);
   };
   lines.push_back("moments I1 : I2 : I3 = " + ratio(0) + " : " + ratio(1) + " : 1" +
-                  (b.moments_fixed ? " (given)" : "") +
+                  (b.moments_fixed    ? " (given)"
+                   : with_ratio_sigma ? " (1σ)"
+                                      : "") +
                   (fit.drag == physics::DragLaw::none
                        ? ", no drag"
                        : ", " + std::string(physics::to_string(fit.drag)) + " drag"));

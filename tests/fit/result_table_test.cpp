@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/number_text.hpp"
 #include "fit/pool.hpp"
 #include "fit/report.hpp"
 #include "real_recordings.hpp"
@@ -54,6 +55,29 @@ void expect_result_first(const FitReport& report) {
     if (t.half_period_predicted && !t.half_period_predicted_sigma) {
       EXPECT_NE(s[2 + k].find("(uncalibrated)"), std::string::npos);
     }
+  }
+  // One σ convention a line: below the table every ± says what it is (1σ, or 2σ as the table
+  // gives it, or the rest's scatter), and a kept toss's prediction is its row's, ± 2σ.
+  for (std::size_t i = 2 + n; i < s.size(); ++i) {
+    if (s[i].find(" ± ") == std::string::npos) continue;  // an uncertainty, not a range "±34.9"
+    EXPECT_TRUE(s[i].find("1σ") != std::string::npos || s[i].find("2σ") != std::string::npos ||
+                s[i].find("± their scatter") != std::string::npos)
+        << s[i];
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const TossFit& t = report.result.tosses[k];
+    if (!t.half_period_predicted || !t.half_period_predicted_sigma) continue;
+    const std::string both =
+        plus_minus(*t.half_period_predicted, 2.0 * *t.half_period_predicted_sigma);
+    EXPECT_NE(s[2 + k].find(both), std::string::npos) << s[2 + k];
+    const std::string kept = "kept toss " + std::to_string(k + 1) + ": ";
+    bool found = false;
+    for (const std::string& line : s)
+      if (line.rfind(kept, 0) == 0) {
+        found = true;
+        EXPECT_NE(line.find("T/2 predicted " + both + " s (2σ)"), std::string::npos) << line;
+      }
+    EXPECT_TRUE(found) << kept;
   }
   // Then the bias: one line a recording, no other line about it.
   const std::size_t parts = report.result.parts.size();

@@ -169,7 +169,14 @@ TEST(FitOptions, MomentsAndDragAreJudgedAlikeNamingEachDoorsArgument) {
     EXPECT_EQ(moments_error(text, "--moments"), std::string("--moments: ") + cause) << text;
     EXPECT_EQ(values_error(values, "moments"), std::string("moments: ") + cause) << text;
   }
-  EXPECT_EQ(values_error({1e-300, 1, 1e300}, "moments"), "no error");
+  // The triangle inequality, in any order; a flat body's equality, typed in decimals, holds.
+  const std::string no_body =
+      ": no rigid body has these principal moments (the two smaller sum to at least the largest)";
+  EXPECT_EQ(values_error({1e-300, 1, 1e300}, "moments"), "moments: 1e-300 + 1 < 1e+300" + no_body);
+  EXPECT_EQ(moments_error("3,1,1.5", "--moments"), "--moments: 1 + 1.5 < 3" + no_body);
+  EXPECT_EQ(values_error({0.1, 0.3, 0.2}, "moments"), "no error");
+  EXPECT_EQ(values_error({1, 2, 3}, "moments"), "no error");
+  EXPECT_EQ(values_error({1, 1, 2.0000001}, "moments"), "moments: 1 + 1 < 2.0000001" + no_body);
   EXPECT_EQ(parse_drag_option("quadratic", "drag"), physics::DragLaw::quadratic);
   for (const Reader reader : {Reader::command_line, Reader::page, Reader::python}) {
     const std::string name = fit_option_names(reader).drag;
