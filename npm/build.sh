@@ -8,7 +8,8 @@
 #   scenarios/*.json     the seven scenarios as `bookspin flipcheck export` writes them
 #   index.mjs, index.d.ts, cli.mjs, README.md, package.json   from npm/package/
 # Usage: npm/build.sh BUILD_DIR [OUT_DIR]   (needs BUILD_DIR/bookspin; OUT_DIR is BUILD/npm unless
-# given, objects cached in OUT_DIR/obj: scripts/figures.sh builds its own, which no test reads)
+# given, objects cached in OUT_DIR/obj, or copied from the page's up-to-date ones in
+# BUILD_DIR/web/obj: scripts/figures.sh builds its own, which no test reads, after the page's)
 # Exit 3 where em++ or npm is missing.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -42,22 +43,36 @@ for name in errors number_text csv_writer json_writer json_string text_lines ver
 done
 objs=()
 pids=()
+# stale OBJ SRC: OBJ is missing or older than SRC, than a header it may include, or (the version's
+# file) than VERSION.
+stale() {
+  [ ! -f "$1" ] || [ "$2" -nt "$1" ] ||
+    { [ "$2" = "$root/src/common/version.cpp" ] && [ "$root/VERSION" -nt "$1" ]; } ||
+    [ -n "$(find "$root/src/physics" "$root/src/analysis" "$root/src/jobs" "$root/src/common" \
+              "$root/web/guarded.hpp" "$root/web/judgement_value.hpp" -name '*.hpp' -newer "$1" -print -quit)" ]
+}
+# The page's program compiles every one of these files but the bindings with these very flags
+# (web/build-wasm.sh, into BUILD/web/obj/): where its object is there and up to date it is
+# copied, under the page build's lock, rather than compiled again (scripts/figures.sh builds the
+# page just before this package).
+page_obj_dir="$build/web/obj"
 for src in "${sources[@]}"; do
   obj="$out/obj/$(basename "$(dirname "$src")")-$(basename "${src%.cpp}").o"
   objs+=("$obj")
   extra=()
-  stale=0
   # The version on its one file, as src/common/CMakeLists.txt compiles it.
   if [ "$src" = "$root/src/common/version.cpp" ]; then
     extra=(-DBOOKSPIN_VERSION="\"$version\"")
-    [ "$root/VERSION" -nt "$obj" ] && stale=1
   fi
-  if [ "$stale" = 1 ] || [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find "$root/src/physics" "$root/src/analysis" \
-       "$root/src/jobs" "$root/src/common" "$root/web/guarded.hpp" "$root/web/judgement_value.hpp" -name '*.hpp' -newer "$obj" -print -quit)" ]; then
-    em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
-    pids+=($!)
-    if [ ${#pids[@]} -ge "${JOBS:-2}" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
+  stale "$obj" "$src" || continue
+  page_obj="$page_obj_dir/$(basename "${src%.cpp}").o"
+  if [ "$src" != "$here/flipcheck_bindings.cpp" ] && ! stale "$page_obj" "$src" &&
+     flock "$build/web/.build.lock" cp -p "$page_obj" "$obj" && ! stale "$obj" "$src"; then
+    continue
   fi
+  em++ "${flags[@]}" "${extra[@]}" -c "$src" -o "$obj" &
+  pids+=($!)
+  if [ ${#pids[@]} -ge "${JOBS:-2}" ]; then wait "${pids[0]}"; pids=("${pids[@]:1}"); fi
 done
 for p in "${pids[@]}"; do wait "$p"; done
 package="$out/package"

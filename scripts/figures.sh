@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Every figure of `make figures` into OUT: the sweeps, the engines' accuracy report, the
-# conformance kit's league table, the phone-toss lab's fit of the sample recording, the explorer
-# page (where emscripten and npm are installed), then every scene rendered and plotted and the
-# gallery OUT/index.html (scripts/render-all.sh), in that order, so that the one gallery written
-# at the end shows them all (docs/outputs.md).
+# phone-toss lab's fit of the sample recording, every scene rendered and plotted
+# (scripts/render-all.sh), the conformance kit's league table, the explorer page (where
+# emscripten and npm are installed), then the gallery OUT/index.html, in that order, so that
+# the one gallery written at the end shows and links them all (docs/outputs.md).
 #
 # Usage: scripts/figures.sh BUILD_DIR OUT [--quick]
 #   --quick: the same commands on the same scenes and sweeps, each made small (a few frames at
@@ -50,13 +50,33 @@ stage_done() {
   stage_start=$now
 }
 
-# The explorer page's program (WebAssembly: Ceres, minizip and zlib, then the physics; the
-# app's bundles) builds in the background from the start, beside the sweeps, the league and
-# the fit, which leave a core idle much of the time; the page is written once both are done.
+# In the background from the start, one after the other: the explorer page's program
+# (WebAssembly: Ceres, minizip and zlib, then the physics; the app's bundles), then the npm
+# package flipcheck whose reader the league's JavaScript engines read each scenario with
+# (npm/build.sh into BUILD/npm-figures, which no test reads while it is rebuilt; it links the
+# page's up-to-date objects of the files both compile, so only its bindings compile). Beside them run
+# the sweeps, the engines' accuracy, the fit and the renders; the league, the page and the
+# gallery that links both come once the background is done (docs/performance.md, "The first
+# make figures"). Each build's exit status lands in OUT/.logs/<name>.exit.
 web_pid=
 mkdir -p "$out/.logs"
+js_engines=
+if command -v node >/dev/null && node web/flipcheck-engines.mjs --check >/dev/null &&
+   command -v em++ >/dev/null && command -v npm >/dev/null; then
+  js_engines=1
+fi
+rm -f "$out/.logs/web-build.exit" "$out/.logs/npm-build.exit"
 if command -v em++ >/dev/null && command -v npm >/dev/null; then
-  bash web/build.sh "$build" > "$out/.logs/web-build.log" 2>&1 &
+  (
+    status=0
+    bash web/build.sh "$build" > "$out/.logs/web-build.log" 2>&1 || status=$?
+    echo "$status" > "$out/.logs/web-build.exit"
+    if [ -n "$js_engines" ]; then
+      status=0
+      bash npm/build.sh "$build" "$build/npm-figures" > "$out/.logs/npm-build.log" 2>&1 || status=$?
+      echo "$status" > "$out/.logs/npm-build.exit"
+    fi
+  ) &
   web_pid=$!
 fi
 
@@ -91,6 +111,22 @@ stage_done "sweeps"
   --methods engines,rigid-quaternion:rk4,rigid-quaternion:implicit-midpoint,rigid-quaternion:splitting4 \
   --dt "${dts[@]}" -o "$out"
 stage_done "engines' accuracy"
+# The phone-toss lab (docs/phone-lab.md) on the sample recording (recordings/README.md): the
+# fit's CSVs, a chart, a scene and a clip of each toss (the book drawn, 640×360; --quick: in
+# real time), which the gallery shows and the explorer page below opens (?scene=<recording>-toss1).
+recording=phone-on-book-synthetic
+fit_quick=()
+[ -z "$quick" ] || fit_quick=(--slow-motion 1)
+"$bookspin" fit "recordings/$recording" --render --scene "recordings/$recording.toml" \
+  "${fit_quick[@]}" -o "$out"
+tosses=("$out/$recording"-toss[0-9]*.toml)
+stage_done "phone-toss fit and its clips"
+# Every scene rendered and plotted; the gallery comes last, once the league and the page it
+# links are there.
+GALLERY=0 bash scripts/render-all.sh "$bookspin" "$out" scenes/*.toml
+stage_done "renders and plots"
+[ -z "$web_pid" ] || wait "$web_pid"
+stage_done "waiting for the page's WebAssembly and the npm package"
 # The conformance kit's league table (docs/flipcheck.md): the scenarios exported, the
 # JavaScript engines run on them under node (where web/node_modules is installed), then every
 # method and mode bookspin has judged beside them: OUT/flipcheck-league.html, which the gallery
@@ -105,13 +141,13 @@ motions=("$out"/flipcheck/*-exact.csv)
 engines_quick=()
 [ -z "$quick" ] || engines_quick=(--only cannon-es,babylonjs-havok)
 # The runner checks every package it imports (--check: one line naming the missing ones); it
-# reads each scenario with the npm package flipcheck's reader (npm/build.sh: emscripten, into
-# BUILD/npm-figures, which no test reads while it is rebuilt).
-if command -v node >/dev/null && node web/flipcheck-engines.mjs --check >/dev/null &&
-   command -v em++ >/dev/null && command -v npm >/dev/null; then
-  bash npm/build.sh "$build" "$build/npm-figures" > "$out/.logs/npm-build.log" 2>&1 ||
-    { echo "figures: the npm package's build failed ($out/.logs/npm-build.log):" >&2
-      tail -n 20 "$out/.logs/npm-build.log" >&2; exit 1; }
+# reads each scenario with the npm package flipcheck's reader, built in the background above.
+if [ -n "$js_engines" ]; then
+  if [ "$(cat "$out/.logs/npm-build.exit" 2>/dev/null)" != 0 ]; then
+    echo "figures: the npm package's build failed ($out/.logs/npm-build.log):" >&2
+    tail -n 20 "$out/.logs/npm-build.log" >&2
+    exit 1
+  fi
   node web/flipcheck-engines.mjs --flipcheck "$build/npm-figures/package" "${engines_quick[@]}" \
     "$out/flipcheck/motions" "$out"/flipcheck/*.json
   motions+=("$out"/flipcheck/motions/*.csv)
@@ -121,21 +157,10 @@ fi
 "$bookspin" flipcheck league scenes/flipcheck/*.toml --motions "${motions[@]}" \
   --methods "$league_methods" -o "$out"
 stage_done "league (the JavaScript engines included)"
-# The phone-toss lab (docs/phone-lab.md) on the sample recording (recordings/README.md): the
-# fit's CSVs, a chart, a scene and a clip of each toss (the book drawn, 640×360; --quick: in
-# real time), which the gallery shows and the explorer page below opens (?scene=<recording>-toss1).
-recording=phone-on-book-synthetic
-fit_quick=()
-[ -z "$quick" ] || fit_quick=(--slow-motion 1)
-"$bookspin" fit "recordings/$recording" --render --scene "recordings/$recording.toml" \
-  "${fit_quick[@]}" -o "$out"
-tosses=("$out/$recording"-toss[0-9]*.toml)
-stage_done "phone-toss fit and its clips"
 if [ -z "$web_pid" ]; then
   echo "figures: no emscripten or npm: $out/explorer.html not made (scripts/install-deps.sh)"
-elif wait "$web_pid"; then
+elif [ "$(cat "$out/.logs/web-build.exit" 2>/dev/null)" = 0 ]; then
   tail -n 1 "$out/.logs/web-build.log"
-  stage_done "waiting for the page's WebAssembly"
   "$bookspin" explore --engines scenes/*.toml scenes/flipcheck/*.toml sweeps/*.toml "${tosses[@]}" -o "$out"
   stage_done "explorer page"
 else
@@ -143,8 +168,9 @@ else
   tail -n 20 "$out/.logs/web-build.log" >&2
   exit 1
 fi
-GALLERY_EXTRA="$(echo sweeps/*.toml)" bash scripts/render-all.sh "$bookspin" "$out" scenes/*.toml
-stage_done "renders, plots and the gallery"
+# The gallery over every scene (render-all.sh stopped the script if one had failed) and the sweeps.
+"$bookspin" gallery "$out" scenes/*.toml sweeps/*.toml
+stage_done "the gallery"
 echo "figures: the stages' seconds"
 printf '  %s\n' "${stage_table[@]}"
 { echo "$hash"; listing; } > "$stamp.tmp" && mv "$stamp.tmp" "$stamp"

@@ -8,8 +8,9 @@
 # in OUT_DIR/.logs/summary.tsv. Each render's own output goes to OUT_DIR/.logs/<scene>.log,
 # its CPU time and peak memory (GNU time) to OUT_DIR/.logs/<scene>.time. Stops with a non-zero status if any
 # scene fails. GALLERY_EXTRA (environment): more scene files the gallery lists (the sweeps,
-# run before); RENDER_ARGS and PLOT_ARGS: more arguments for every render and every plot
-# (scripts/figures.sh --quick: a few small frames).
+# run before); GALLERY=0: no gallery (scripts/figures.sh writes it after the league and the
+# explorer page it links); RENDER_ARGS and PLOT_ARGS: more arguments for every render and every
+# plot (scripts/figures.sh --quick: a few small frames).
 #
 # How the cores are shared: one render keeps about two cores busy even with --jobs 1 (the
 # simulation and GL on one thread, llvmpipe's rasterizer, the encoder and a PNG worker
@@ -100,7 +101,9 @@ printf '%s\n' "${ok[@]}" |
   xargs -P "$cores" -I{} sh -c '"$0" plot "$1" -o "$2" ${PLOT_ARGS:-} > /dev/null' "$bookspin" {} "$out" ||
   { echo "render-all: some plots failed"; failed=1; }
 # shellcheck disable=SC2086  # GALLERY_EXTRA: more scene files for the page (sweeps), split
-"$bookspin" gallery "$out" "${ok[@]}" ${GALLERY_EXTRA:-} || { echo "render-all: the gallery failed"; failed=1; }
+if [ "${GALLERY:-1}" != 0 ]; then
+  "$bookspin" gallery "$out" "${ok[@]}" ${GALLERY_EXTRA:-} || { echo "render-all: the gallery failed"; failed=1; }
+fi
 
 printf '\n%-36s %7s %8s %8s %8s  %s\n' scene frames seconds cpu-s peak-MiB status
 printf 'scene\tframes\tseconds\tcpu_seconds\tpeak_rss_mib\tstatus\n' > "$logs/summary.tsv"
