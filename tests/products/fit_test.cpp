@@ -89,13 +89,13 @@ TEST(FitProduct, CsvsOfAFitGivenByHand) {
             std::string::npos);
   EXPECT_EQ(fit::fit_summary(result).at(3),
             "no still stretch in the recording: the bias (rad/s) is fitted from the flights: "
-            "0.50 ± 0.25, -0.25 ± 0.50, 0.12 ± 0.75");
+            "0.50 ± 0.25, -0.25 ± 0.50, 0.12 ± 0.75 (1σ)");
   // Fitted but consistent with zero: held at zero, said so, its σ kept.
   part.bias_not_applied = part.bias_correction;
   part.bias_correction = Eigen::Vector3d::Zero();
   EXPECT_EQ(fit::fit_summary(result).at(3),
             "no still stretch in the recording: the bias (rad/s) the flights give, 0.50 ± 0.25, "
-            "-0.25 ± 0.50, 0.12 ± 0.75, is consistent with zero (χ² 4.3 over 3 axes, under "
+            "-0.25 ± 0.50, 0.12 ± 0.75 (1σ), is consistent with zero (χ² 4.3 over 3 axes, under "
             "11.3): not removed, held at zero within those σ");
   EXPECT_NE(
       csv_text(fit::fit_body_csv(result), "fit body CSV").find(",quadratic,0,0,0,0.25,0.5,0.75\n"),
