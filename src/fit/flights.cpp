@@ -235,17 +235,19 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
   // three times, each cutting the candidates anew with the inertia of the stretches the
   // previous pass kept (so that a first inertia spoilt by a wind-up cuts nothing for good).
   const std::vector<std::pair<int, int>> candidates = kept;
+  Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  double threshold = 0.0;
   for (int pass = 0; pass < 3 && !kept.empty(); ++pass) {
     std::vector<int> indices;
     for (const auto& [first, last] : kept)
       for (int i = first; i <= last; ++i)
         if (!clipped[i]) indices.push_back(i);
     if (indices.empty()) break;
-    const Eigen::Matrix3d I = euler_inertia(omega, rate, indices);
+    I = euler_inertia(omega, rate, indices);
     std::vector<double> residuals;
     for (int i : indices) residuals.push_back(torque_residual(I, omega[i], rate[i]));
     std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
-    const double threshold = std::max(6.0 * residuals[residuals.size() / 2], 0.01);
+    threshold = std::max(6.0 * residuals[residuals.size() / 2], 0.01);
     std::vector<std::pair<int, int>> next;
     for (const auto& [first, last] : candidates) {
       // Each sample torque-free or not; a run of clipped samples counts as torque-free only
@@ -289,7 +291,42 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     }
     kept = next;
   }
-  // 3. What was kept, and why the other moving stretches were dropped.
+  // 3. Each torque-free stretch grown over its neighbours while they stay torque-free by the
+  // inertia and threshold of the last pass: the bound of step 1 is a body's in exact
+  // arithmetic, which a flat body's flip nears (|ω̇|/|ω|² up to 1/√3) and a real gyroscope's
+  // gain and cross-axis errors or a derivative over uneven steps exceed for a while; Euler's
+  // equations with the fitted inertia, not that bound, say where the flight ends.
+  if (threshold > 0.0)
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      auto& [first, last] = kept[k];
+      const int low = k > 0 ? kept[k - 1].second + 1 : 0;
+      const int high = k + 1 < kept.size() ? kept[k + 1].first - 1 : n - 1;
+      int begin = 0, end = n;
+      for (const auto& [b, e] : segs)
+        if (first >= b && first < e) begin = b, end = e;
+      const auto free_at = [&](int i) {
+        return !clipped[i] && omega[i].norm() >= settings.flight_omega &&
+               torque_residual(I, omega[i], rate[i]) <= threshold;
+      };
+      while (first - 1 >= std::max(low, begin) && free_at(first - 1)) --first;
+      while (last + 1 <= std::min(high, end - 1) && free_at(last + 1)) ++last;
+    }
+  // Two stretches grown into each other within a segment are one flight (the bound of step 1
+  // had cut it); a pause or a gap still parts them.
+  const auto segment_of = [&](int i) {
+    for (std::size_t s = 0; s < segs.size(); ++s)
+      if (i >= segs[s].first && i < segs[s].second) return s;
+    return segs.size();
+  };
+  std::vector<std::pair<int, int>> merged;
+  for (const auto& stretch : kept)
+    if (!merged.empty() && merged.back().second + 1 >= stretch.first &&
+        segment_of(merged.back().second) == segment_of(stretch.first))
+      merged.back().second = stretch.second;
+    else
+      merged.push_back(stretch);
+  kept = merged;
+  // 4. What was kept, and why the other moving stretches were dropped.
   for (const auto& [first, last] : kept) {
     if (t[last] - t[first] < settings.min_flight || last - first + 1 < kMinFitSamples) continue;
     search.flights.push_back({first, last, t[first], t[last]});
