@@ -251,7 +251,7 @@ std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
         line += "; in flight " + three(in_flight) + ", the still rest's corrected by " + own +
                 " flights by " + three(correction) + " (within 3 standard errors of " +
                 (one ? "the rest's" : "its rest's") + " mean and " + fixed(kBiasDrift, 3) +
-                " rad/s of drift)";
+                " rad/s of drift and " + fixed(kHandTurn, 3) + " rad/s of a hand's slow turn)";
       lines.push_back(line);
       return;
     }

@@ -8,7 +8,7 @@ namespace bookspin::fit {
 
 Eigen::Vector3d Rest::bound() const {
   if (samples == 0) return Eigen::Vector3d::Zero();
-  return 3.0 * standard_error + Eigen::Vector3d::Constant(kBiasDrift);
+  return 3.0 * standard_error + Eigen::Vector3d::Constant(kBiasDrift + kHandTurn);
 }
 
 namespace {

@@ -23,7 +23,7 @@ struct Rest {
   std::vector<std::pair<double, double>> stretches;
 
   /// rad/s per axis: how far the bias in flight may lie from `mean`: 3 standard errors plus
-  /// kBiasDrift (zero with no still sample).
+  /// kBiasDrift plus kHandTurn (zero with no still sample).
   Eigen::Vector3d bound() const;
 };
 
@@ -42,6 +42,11 @@ struct RestSettings {
 /// largest change of a still stretch's mean between its halves on the development recordings,
 /// rounded up: docs/phone-lab.md, "The bias").
 inline constexpr double kBiasDrift = 0.002;
+
+/// rad/s: how fast a hand holding the phone "still" may turn it, which the rest alone cannot
+/// tell from the gyroscope's bias; the flights tell them apart within it (docs/phone-lab.md,
+/// "The bias": a hand's slow turn, 0.015 rad/s measured against rests that turn 0–0.02 rad/s).
+inline constexpr double kHandTurn = 0.015;
 
 /// The still stretches of samples `omega` (rad/s, phone frame, as measured) at times `t` (s,
 /// increasing) within `segments` (index ranges [begin, end) with no

@@ -99,19 +99,23 @@ inline double closed_form_half_period(const Eigen::Vector3d& I, const Eigen::Vec
 /// to ω0 with Gaussian spikes of `throw_spikes` rad/s), the flight (under a linear isotropic
 /// drag of rate `drag` 1/s, or under `air` where given: 0 is torque-free), sampled at `rate` Hz
 /// with ±10 % jitter, the flight, a 0.12 s catch and 1.2 s rest; a pause after the second
-/// toss's rest.
+/// toss's rest. The rest turns `rest_turn` (rad/s, phone frame: a hand not quite still) on top
+/// of its wobble; the gyroscope reads `bias` (rad/s) on every sample, where given, else
+/// (0.021, -0.014, 0.008).
 inline SyntheticRecording make_recording(const SyntheticBody& body,
                                          const std::vector<SyntheticToss>& tosses,
                                          unsigned seed = 1, double noise = 0.01,
                                          double throw_time = 0.15, double throw_spikes = 4.0,
                                          double drag = 0.0, double rate = 100.0,
-                                         std::optional<SyntheticDrag> air = std::nullopt) {
+                                         std::optional<SyntheticDrag> air = std::nullopt,
+                                         const Eigen::Vector3d& rest_turn = Eigen::Vector3d::Zero(),
+                                         std::optional<Eigen::Vector3d> bias = std::nullopt) {
   const SyntheticDrag flight_drag = air ? *air : SyntheticDrag{drag};
   std::mt19937 random(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   SyntheticRecording rec;
-  rec.bias = Eigen::Vector3d(0.021, -0.014, 0.008);
+  rec.bias = bias ? *bias : Eigen::Vector3d(0.021, -0.014, 0.008);
   // The truth as a function of time, piece by piece.
   struct Piece {
     double t0, t1;
@@ -146,7 +150,8 @@ inline SyntheticRecording make_recording(const SyntheticBody& body,
     const double s = (t - piece.t0) / (piece.t1 - piece.t0);
     Eigen::Vector3d w = Eigen::Vector3d::Zero();
     if (piece.kind == 0) {
-      w = 0.03 * Eigen::Vector3d(std::sin(3.1 * t), std::sin(2.3 * t + 1), std::sin(1.7 * t + 2));
+      w = rest_turn +
+          0.03 * Eigen::Vector3d(std::sin(3.1 * t), std::sin(2.3 * t + 1), std::sin(1.7 * t + 2));
     } else if (piece.kind == 1) {
       w = s * piece.b + throw_spikes * Eigen::Vector3d(gauss(random), gauss(random), gauss(random));
     } else if (piece.kind == 2) {
