@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <regex>
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
@@ -585,6 +586,29 @@ std::optional<double> parse_device_csv(std::string_view text, const std::string&
   return std::nullopt;
 }
 
+namespace {
+
+/// Whether `file_name` is phyphox's name for one sensor's CSV export: the sensor, then the
+/// date and time it was recorded ("Gyroscope rotation rate 2022-05-03 12-10-56.csv").
+bool single_sensor_export(const std::string& file_name) {
+  static const std::regex pattern(R"(.+ \d{4}-\d{2}-\d{2} \d{2}-\d{2}-\d{2}\.[cC][sS][vV])");
+  return std::regex_match(file_name, pattern);
+}
+
+/// Whether `path`'s folder holds no other CSV.
+bool only_csv_of_its_folder(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path folder = fs::absolute(path).parent_path();
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
+    if (entry.is_regular_file(error) && lower(entry.path().extension().string()) == ".csv" &&
+        entry.path().filename() != path.filename())
+      return false;
+  return !error;
+}
+
+}  // namespace
+
 GyroRecording read_recording(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   std::error_code error;
@@ -633,11 +657,18 @@ GyroRecording read_recording(const std::filesystem::path& path) {
     return recording;
   }
   const std::string text = read_text_file(path, "the recording");
-  // A phyphox export is named after its folder; a plain CSV after itself.
+  // A phyphox export is named after its folder; so is a single sensor's export given with its
+  // folder ("12-10-56/Gyroscope rotation rate … .csv", a dropped folder's file) that holds no
+  // other CSV, as that folder given is named, so that the file, its folder or a dropped folder
+  // name one recording alike and a pooled set sorts alike; another CSV, or one given by its
+  // bare name, after itself.
   const bool in_export = path.filename() == "Raw Data.csv";
   const fs::path folder = fs::absolute(path).parent_path();
-  GyroRecording recording =
-      parse_gyro_csv(text, path.string(), in_export ? folder.filename().string() : name);
+  const bool named_by_folder =
+      in_export || (single_sensor_export(path.filename().string()) && path.has_parent_path() &&
+                    only_csv_of_its_folder(path) && !folder.filename().empty());
+  GyroRecording recording = parse_gyro_csv(
+      text, path.string(), named_by_folder ? folder.filename().string() : name);
   // Named in messages as the recording was given ("anna/meta/time.csv").
   const fs::path time_csv = folder / "meta" / "time.csv";
   const fs::path meta_named = path.parent_path() / "meta";

@@ -4,24 +4,32 @@
 // saying why, where absent) and on synthetic ones.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
+#include "common/text_file.hpp"
 #include "fit/report.hpp"
 #include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
+#include "zip_writer.hpp"
 
 namespace bookspin::fit {
 namespace {
 
 /// Every value a door presents, `b`'s against `a`'s, to the last bit: the name, the tables' and
-/// summary's text, every toss's flight, numbers, chart and scene.
-void expect_same_report(const FitReport& a, const FitReport& b) {
+/// summary's text, every toss's flight, numbers, chart and scene; the source (the paths read)
+/// unless the files were read from elsewhere (`same_files` false).
+void expect_same_report(const FitReport& a, const FitReport& b, bool same_files = true) {
   EXPECT_EQ(a.recording, b.recording);
-  EXPECT_EQ(a.source, b.source);
+  if (same_files) {
+    EXPECT_EQ(a.source, b.source);
+  }
   EXPECT_EQ(a.toss_csv, b.toss_csv);
   EXPECT_EQ(a.body_csv, b.body_csv);
   EXPECT_EQ(a.summary, b.summary);
@@ -115,6 +123,71 @@ TEST(PoolOrder, RecordingsOfOneNameAreOrderedByTheirSamples) {
   EXPECT_EQ(ab.source, ba.source);
   ASSERT_EQ(ab.parts.size(), 2u);
   EXPECT_EQ(ab.parts[0].source, ba.parts[0].source);
+}
+
+}  // namespace
+}  // namespace bookspin::fit
+
+namespace bookspin::fit {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A set is a set however it is given (docs/phone-lab.md, "A class's recordings"): the real
+// session's seven recordings, one of them phyphox's single-sensor CSV ("Gyroscope rotation rate
+// … .csv" alone in its folder), given as their folders, as the files themselves (the CSV and
+// each Raw Data.csv), as zips of the exports beside that CSV, as the page writes a dropped
+// folder's files ("<folder>/<file>" read from a folder of their own), and as the folders in
+// reverse: the same recording names, tosses and numbers to the last digit.
+TEST(PoolOrder, OneSetGivenFiveWaysGivesOneAnswer) {
+  REQUIRE_REAL_RECORDINGS();
+  const std::vector<std::string> names = {"12-10-56", "12-13-01", "12-13-51", "12-22-44",
+                                          "12-29-59", "12-38-00", "12-44-51"};
+  const fs::path work = fs::temp_directory_path() / ("pool-order-" + std::to_string(::getpid()));
+  fs::remove_all(work);
+  std::vector<GyroRecording> folders, files, zips, dropped, reversed;
+  for (const std::string& name : names) {
+    const fs::path folder = real_dir() / name;
+    folders.push_back(read_recording(folder));
+    fs::path csv = folder / "Raw Data.csv";
+    if (!fs::exists(csv))
+      for (const fs::directory_entry& e : fs::directory_iterator(folder))
+        if (e.path().extension() == ".csv") csv = e.path();
+    files.push_back(read_recording(csv));
+    // The page: the dropped folder's file written under a folder of the same name.
+    const fs::path page = work / "page" / name;
+    fs::create_directories(page);
+    fs::copy_file(csv, page / csv.filename());
+    if (fs::exists(folder / "meta")) fs::copy(folder / "meta", page / "meta");
+    dropped.push_back(read_recording(page / csv.filename()));
+    // A zip of each phyphox export (its Raw Data.csv and meta/), the single CSV as it is.
+    if (csv.filename() == "Raw Data.csv") {
+      std::vector<std::pair<std::string, std::string>> entries = {
+          {"Raw Data.csv", read_text_file(csv, "test")}};
+      for (const char* meta : {"meta/time.csv", "meta/device.csv"})
+        if (fs::exists(folder / meta)) entries.emplace_back(meta, read_text_file(folder / meta, "test"));
+      fs::create_directories(work / "zips");
+      test::write_zip(work / "zips" / (name + ".zip"), entries);
+      zips.push_back(read_recording(work / "zips" / (name + ".zip")));
+    } else {
+      zips.push_back(read_recording(csv));
+    }
+  }
+  reversed.assign(folders.rbegin(), folders.rend());
+  const FitReport first = fit_report(pool_recordings(folders), {});
+  ASSERT_FALSE(first.tosses.empty());
+  for (const auto& [way, given] : {std::pair{"files", &files}, std::pair{"zips", &zips},
+                                   std::pair{"a dropped folder", &dropped},
+                                   std::pair{"folders in reverse", &reversed}}) {
+    SCOPED_TRACE(std::string("given as ") + way);
+    std::vector<std::string> given_names;
+    for (const GyroRecording& r : *given) given_names.push_back(r.name);
+    std::vector<std::string> sorted = given_names;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, names);
+    expect_same_report(first, fit_report(pool_recordings(*given), {}), given != &dropped);
+  }
+  fs::remove_all(work);
 }
 
 }  // namespace
