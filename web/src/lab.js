@@ -7,7 +7,7 @@
 // `bookspin explore` plays a toss scene the command line wrote. Nothing is fitted here: this
 // module hands bytes to the module and writes out its answer.
 import { recordingsOf, takeFiles } from './file_drop.js';
-import { plusMinus, significant } from './precision.js';
+import { plusMinus, significant, wholeNumbers } from './precision.js';
 import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
 import { niceTicks, tickLabel } from './plots.js';
@@ -57,7 +57,7 @@ function labelledRow(key, words, shown, full, wraps = false) {
   const title = full === undefined || full === null ? '' : ` title="${html(full)}"`;
   const code = words && words !== key ? `<small><code>${html(key)}</code></small>` : '';
   const cls = wraps ? ' class="words"' : '';
-  return `<tr><th>${html(words || key)}${code}</th><td${title}${cls}>${shown}</td></tr>`;
+  return `<tr><th>${html(words || key)}${code}</th><td${title}${cls}>${wraps ? shown : wholeNumbers(shown)}</td></tr>`;
 }
 
 /** Plots toss `chart` ({t, measured, fitted}: ω, phone frame, 3×N flattened) on `canvas`: the
@@ -326,7 +326,8 @@ export class LabPanel {
     // which the table shows, are left out of the text below it).
     this.showOutcome(r);
     const details = r.summary.slice(2 + r.tosses.length);
-    $('labSummary').textContent = [...files, ...details].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
+    // Its numbers, intervals and ranges whole (precision.js, wholeNumbers); it breaks at spaces.
+    $('labSummary').innerHTML = wholeNumbers(html([...files, ...details].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`));
     this.showDropped(r.dropped || []);
     const list = $('labTosses');
     list.innerHTML = '';
@@ -338,8 +339,8 @@ export class LabPanel {
       const title = document.createElement('strong');
       // Named by its own recording and times (the table's, or alone the recording's own).
       const own = t.recording || r.charts[k].recording || r.recording;
-      title.textContent = `toss ${t.toss}: ${own} ${t.t_start.toFixed(3)}–${t.t_end.toFixed(3)} s` +
-        (t.stable === 'yes' ? ' (stable)' : '') + (t.poor_fit === 'yes' ? ' (flagged)' : '');
+      title.innerHTML = wholeNumbers(html(`toss ${t.toss}: ${own} ${t.t_start.toFixed(3)}–${t.t_end.toFixed(3)} s` +
+        (t.stable === 'yes' ? ' (stable)' : '') + (t.poor_fit === 'yes' ? ' (flagged)' : '')));
       head.appendChild(title);
       if (r.scenes[k]) {
         const button = document.createElement('button');

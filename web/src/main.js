@@ -101,7 +101,7 @@ function startApp(wasm, engines) {
     const list = app.runs.list;
     // The readout first: its strip's height sets the view's (index.html), under whose bottom
     // the bodies' labels are placed; placed before it grew, a label ran past the view.
-    app.readout.draw(list, app.state.t, timeUnit());
+    if (app.readout.draw(list, app.state.t, timeUnit())) fitStrip();
     if (app.playing) { const strip = $('overlay'); strip.style.minHeight = `${strip.offsetHeight}px`; }
     lap('readout');
     app.view.render(list); lap('view');
@@ -144,16 +144,34 @@ function startApp(wasm, engines) {
     const strip = $('overlay'), box = $('viewBox'), main = $('main');
     const stacked = matchMedia('(max-width: 899px)').matches;  // index.html's stacked layout
     if (fresh) strip.style.minHeight = '';
+    const need = mustReadHeight(strip);
     if (!stacked) {
       const share = 1 + Math.max(VIEW_MIN_PX, innerWidth * innerHeight / 3 / Math.max(1, main.clientWidth));
-      strip.style.maxHeight = `${Math.max(48, main.clientHeight - share)}px`;
+      const cap = Math.max(48, main.clientHeight - share);
+      strip.style.maxHeight = `${Math.max(cap, Math.min(need, main.clientHeight - VIEW_MIN_PX))}px`;
     } else {
       // Stacked (a phone): the view its own height (index.html); the strip as tall as a
       // phone's screen leaves beside the view and the transport bar.
       const beside = matchMedia('(orientation: landscape)').matches;  // index.html: beside the view
-      strip.style.maxHeight = `${beside ? box.offsetHeight
-        : Math.max(96, innerHeight - box.offsetHeight - $('transport').offsetHeight)}px`;
+      const cap = beside ? box.offsetHeight : Math.max(96, innerHeight - box.offsetHeight - $('transport').offsetHeight);
+      strip.style.maxHeight = `${Math.max(cap, need)}px`;
     }
+    stripNeed = need;
+  }
+  /** The readout's height down to the last of what a class must read (docs/explorer.md, "What
+   * the class must read"): the clock, and each run's flips and first flip (a comparison's every
+   * tile's); the strip is never bounded under it, whatever the view's share. */
+  function mustReadHeight(strip) {
+    const top = strip.getBoundingClientRect().top - strip.scrollTop;
+    let bottom = 0;
+    for (const e of strip.querySelectorAll('#clock, #status .flips, #status .first'))
+      bottom = Math.max(bottom, e.getBoundingClientRect().bottom - top);
+    return Math.ceil(bottom + parseFloat(getComputedStyle(strip).paddingBottom || '0'));
+  }
+  let stripNeed = 0;
+  /** After the readout changed: bounded afresh where its must-read rows grew past the bound. */
+  function fitStrip() {
+    if (mustReadHeight($('overlay')) > stripNeed) layout(false);
   }
 
   /** The view, the plots and the left panel fitted to the window (`unfold`: the scene's

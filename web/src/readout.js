@@ -16,14 +16,16 @@ export function omegaText(x) {
 }
 
 /** The readout's HTML for more than two runs (a comparison's every tile): a cell a run, its
- * method and its flips and the time of its first, three to a row, so that the view keeps its
- * height. */
+ * flips and the time of its first, then its method (in the run's colour, as its body's label),
+ * up to three to a row, so that the view keeps its height and every count is in the strip's
+ * first lines (docs/explorer.md, "What the class must read"). */
 function manyRunsHtml(runs) {
   return '<div class="many">' + runs.map((r) => {
     const own = r.session.flips();
     const first = own.first === null ? '—' : fixed(own.first, 2);
-    return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
-      `<div class="counts"><span class="flips">flips <span class="count">${own.count}</span></span> · <span class="first">first <span class="num">${first}</span></span></div></div>`;
+    return `<div class="run" style="color:${r.colour}">` +
+      `<div class="counts"><span class="flips">flips <span class="count">${own.count}</span></span> · <span class="first">first <span class="num">${first}</span></span></div>` +
+      `<div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div></div>`;
   }).join('') + '</div>';
 }
 
@@ -40,7 +42,7 @@ function runsHtml(runs, t) {
       : `exact motion: first flip at ${fixed(exact.first, 2)}, count ${exact.count}`;
     return `<div class="run" style="color:${r.colour}"><div class="method">${r.label}${r.diverged ? ' — ' + r.diverged : ''}</div>` +
       `<div class="counts"><span class="big flips">flips <span class="count">${own.count}</span></span> ` +
-      `<span class="big first">first flip at t = <span class="num">${first}</span></span> <span class="exact">${beside}</span></div>` +
+      `<span class="big first">first flip at <span class="nb">t = <span class="num">${first}</span></span></span> <span class="exact">${beside}</span></div>` +
       // ω in numbers for one run; in compare mode the plots show it, and the books stay in view.
       (runs.length > 1 ? '' : `<div class="omega">ω = (${h.w.map(omegaText).join(', ')})</div>`) +
       '</div>';
@@ -53,7 +55,7 @@ export class Readout {
   }
 
   /** Writes t (the clock, the time line and the slider; `unit` the scene's time unit) and the
-   * runs' lines, the latter only when they changed. */
+   * runs' lines, the latter only when they changed; whether they did. */
   draw(runs, t, unit = 'time units') {
     // A measured toss's time in seconds, said; the paper's time units are left unnamed.
     const text = `t = ${fixed(t, 2)}${unit === 's' ? ' s' : ''}`;
@@ -62,6 +64,9 @@ export class Readout {
     $('slider').max = Math.max(Number($('slider').max), Math.ceil(t));
     $('slider').value = t;
     const html = runsHtml(runs, t);
-    if (html !== this.shown) { $('status').innerHTML = html; this.shown = html; }
+    if (html === this.shown) return false;
+    $('status').innerHTML = html;
+    this.shown = html;
+    return true;
   }
 }
