@@ -6,6 +6,7 @@
 // Nothing is measured here: this module hands text to the module and writes out its answer.
 import { takeFiles } from './file_drop.js';
 import { Replay } from './replay.js';
+import { modalPanel } from './modal.js';
 import { asGiven, significant, wholeNumbers } from './precision.js';
 
 const $ = (id) => document.getElementById(id);
@@ -128,7 +129,7 @@ export class JudgePanel {
     $('judgeOpen').hidden = this.scenes.length === 0;
     $('judgeOpen').addEventListener('click', () => this.open(currentScene()));
     $('judgeClose').addEventListener('click', () => this.close());
-    window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('judge').hidden) this.close(); });
+    modalPanel($('judge'), $('judgeOpen'), () => this.close());
     menu.addEventListener('change', () => { this.clear(); this.showTitle(); });
     this.showTitle();
     $('judgeJson').addEventListener('click', () => this.exportFile('json'));

@@ -7,6 +7,7 @@
 // `bookspin explore` plays a toss scene the command line wrote. Nothing is fitted here: this
 // module hands bytes to the module and writes out its answer.
 import { recordingsOf, takeFiles } from './file_drop.js';
+import { modalPanel } from './modal.js';
 import { plusMinus, significant, wholeNumbers } from './precision.js';
 import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
@@ -166,7 +167,7 @@ export class LabPanel {
     this.skipped = [];
     $('labOpen').addEventListener('click', () => this.open());
     $('labClose').addEventListener('click', () => this.close());
-    window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('lab').hidden) this.close(); });
+    modalPanel($('lab'), $('labOpen'), () => this.close());
     takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
     // The flights by hand changed: the last recording given is fitted again with them.
     this.given = null;
