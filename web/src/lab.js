@@ -271,6 +271,8 @@ export class LabPanel {
       table = document.createElement('table');
       table.id = 'labOutcome';
       table.className = 'labOutcome';
+      // It scrolls sideways on a phone: the keyboard reaches it to scroll it (its caption names it).
+      table.tabIndex = 0;
       $('labResult').insertBefore(table, $('labResult').firstChild);
     }
     const ms3 = (v) => (typeof v === 'number' ? v.toFixed(3) : '–');
@@ -352,6 +354,9 @@ export class LabPanel {
       box.appendChild(head);
       const canvas = document.createElement('canvas');
       canvas.className = 'tossChart';
+      canvas.setAttribute('role', 'img');
+      canvas.setAttribute('aria-label', `toss ${t.toss}: ω measured (dots) and fitted (lines) against t, x red, y green, z blue; ` +
+        'the numbers in the table beside it');
       box.appendChild(canvas);
       const table = document.createElement('table');
       // drag_rate_sigma is shown beside drag_rate, half_period_predicted_sigma beside its value.

@@ -45,6 +45,11 @@ function startApp(wasm, engines) {
   /** The scene's time unit: a measured toss's is the recording's second (its ω in rad/s, its
    * flight in seconds: docs/phone-lab.md); a scene of the paper's runs in time units. */
   const timeUnit = () => (measured() ? 's' : 'time units');
+  /** The scene's title as the 3D view's name says it. */
+  const sceneName = () => {
+    const scene = SCENES.find((s) => s.name === app.state.scene);
+    return scene ? `scene: ${scene.title || scene.name}` : 'no scene (the controls\' settings)';
+  };
 
   /** Steps towards time `target` (for at most `ms`, the rest a piece per frame). */
   function catchUp(target, ms) {
@@ -101,7 +106,7 @@ function startApp(wasm, engines) {
     const list = app.runs.list;
     // The readout first: its strip's height sets the view's (index.html), under whose bottom
     // the bodies' labels are placed; placed before it grew, a label ran past the view.
-    if (app.readout.draw(list, app.state.t, timeUnit())) fitStrip();
+    if (app.readout.draw(list, app.state.t, timeUnit(), sceneName())) fitStrip();
     if (app.playing) { const strip = $('overlay'); strip.style.minHeight = `${strip.offsetHeight}px`; }
     lap('readout');
     app.view.render(list); lap('view');

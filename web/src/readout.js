@@ -49,20 +49,47 @@ function runsHtml(runs, t) {
   }).join('');
 }
 
+/** The 3D view's name for a screen reader: what it shows, the scene, t and each run's flips
+ * (docs/explorer.md, "For every person"). */
+export function viewDescription(runs, t, scene, clock) {
+  const flips = runs.map((r) => {
+    const own = r.session.flips();
+    return `${r.label}: flips ${own.count}` + (own.first === null ? '' : `, the first at t = ${fixed(own.first, 2)}`);
+  });
+  const bodies = runs.length === 1 ? 'the body' : `${runs.length} bodies, one a method`;
+  return `3D view of ${bodies}, ${scene}; ${clock}` + (flips.length ? `; ${flips.join('; ')}` : '');
+}
+
 export class Readout {
   constructor() {
     this.shown = null;  // the runs' HTML last written
+    this.counts = [];   // each run's [label, flips] last drawn: a new flip is said (#spoken)
+    this.described = '';
+  }
+
+  /** Says each run's flips counted since the last draw in the live region #spoken (a screen
+   * reader reads it out); a new run (its count lower, or another label) says nothing. */
+  announce(runs, t) {
+    const counts = runs.map((r) => [r.label, r.session.flips().count]);
+    const said = counts.filter(([label, n], k) => this.counts[k] && this.counts[k][0] === label && n > this.counts[k][1])
+      .map(([label, n]) => `${label}: flip ${n} counted, at t = ${fixed(t, 2)}`);
+    this.counts = counts;
+    if (said.length) $('spoken').textContent = said.join('; ');
   }
 
   /** Writes t (the clock, the time line and the slider; `unit` the scene's time unit) and the
-   * runs' lines, the latter only when they changed; whether they did. */
-  draw(runs, t, unit = 'time units') {
+   * runs' lines, the latter only when they changed; whether they did. `scene`: the scene's
+   * title, for the 3D view's name. */
+  draw(runs, t, unit = 'time units', scene = 'no scene') {
     // A measured toss's time in seconds, said; the paper's time units are left unnamed.
     const text = `t = ${fixed(t, 2)}${unit === 's' ? ' s' : ''}`;
     $('time').textContent = text;
     $('clock').textContent = text;
     $('slider').max = Math.max(Number($('slider').max), Math.ceil(t));
     $('slider').value = t;
+    this.announce(runs, t);
+    const described = viewDescription(runs, t, scene, text);
+    if (described !== this.described) { $('view').setAttribute('aria-label', described); this.described = described; }
     const html = runsHtml(runs, t);
     if (html === this.shown) return false;
     $('status').innerHTML = html;
