@@ -90,7 +90,7 @@ function startApp(wasm, engines) {
     draw();
   }
   const sphere = new Sphere($('sphere'), wasm, pickStart);
-  app.panels = new Panels($('sphere'), $('plots'), sphere, measured, timeUnit);
+  app.panels = new Panels($('sphere'), $('plots'), sphere, measured, timeUnit, () => Number($('slider').max));
 
   function setPlaying(p) {
     app.playing = p;
