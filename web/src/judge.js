@@ -253,7 +253,7 @@ export class JudgePanel {
       const why = c in failed ? (/\(([^)]*)\)\s*$/.exec(failed[c]) || [null, failed[c]])[1] : '';
       const bound = limit !== null ? `${overLimit ? 'over its limit' : 'limit'} ${limitText}`
         : over ? `failed: ${why}` : '';
-      return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c}</code></small>` : ''}</th>` +
+      return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c.replace(/_/g, '_<wbr>')}</code></small>` : ''}</th>` +
         `<td${v === null ? '' : ` title="${v}"`}>${wholeNumbers(significant(v))}</td><td class="limit">${wholeNumbers(bound)}</td></tr>`;
     });
     $('judgeTable').innerHTML = rows.join('');

@@ -56,7 +56,9 @@ function tossCell(toss, column, value) {
  * flag's why) that wrap within the panel, where a number keeps to one line. */
 function labelledRow(key, words, shown, full, wraps = false) {
   const title = full === undefined || full === null ? '' : ` title="${html(full)}"`;
-  const code = words && words !== key ? `<small><code>${html(key)}</code></small>` : '';
+  // The key breaks after its underscores only (half_period_propagated_sigma, 28 characters,
+  // held a phone's toss table 14 px past its panel once numbers kept whole).
+  const code = words && words !== key ? `<small><code>${html(key).replace(/_/g, '_<wbr>')}</code></small>` : '';
   const cls = wraps ? ' class="words"' : '';
   return `<tr><th>${html(words || key)}${code}</th><td${title}${cls}>${wraps ? shown : wholeNumbers(shown)}</td></tr>`;
 }

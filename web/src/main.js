@@ -153,13 +153,13 @@ function startApp(wasm, engines) {
     if (!stacked) {
       const share = 1 + Math.max(VIEW_MIN_PX, innerWidth * innerHeight / 3 / Math.max(1, main.clientWidth));
       const cap = Math.max(48, main.clientHeight - share);
-      strip.style.maxHeight = `${Math.max(cap, Math.min(need, main.clientHeight - VIEW_MIN_PX))}px`;
+      strip.style.maxHeight = `${offLines(strip, Math.max(cap, Math.min(need, main.clientHeight - VIEW_MIN_PX)), need)}px`;
     } else {
       // Stacked (a phone): the view its own height (index.html); the strip as tall as a
       // phone's screen leaves beside the view and the transport bar.
       const beside = matchMedia('(orientation: landscape)').matches;  // index.html: beside the view
       const cap = beside ? box.offsetHeight : Math.max(96, innerHeight - box.offsetHeight - $('transport').offsetHeight);
-      strip.style.maxHeight = `${Math.max(cap, need)}px`;
+      strip.style.maxHeight = `${offLines(strip, Math.max(cap, need), need)}px`;
     }
     stripNeed = need;
   }
@@ -172,6 +172,22 @@ function startApp(wasm, engines) {
     for (const e of strip.querySelectorAll('#clock, #status .flips, #status .first'))
       bottom = Math.max(bottom, e.getBoundingClientRect().bottom - top);
     return Math.ceil(bottom + parseFloat(getComputedStyle(strip).paddingBottom || '0'));
+  }
+  /** The strip's bound `max` moved up off a line of text it would cut through (the line then
+   * scrolls whole, never shown sliced), down to no less than what must be read (`need`). */
+  function offLines(strip, max, need) {
+    const top = strip.getBoundingClientRect().top - strip.scrollTop;
+    const least = need - parseFloat(getComputedStyle(strip).paddingBottom || '0') - 1;
+    const range = document.createRange();
+    const walker = document.createTreeWalker(strip, NodeFilter.SHOW_TEXT);
+    for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+      range.selectNodeContents(n);
+      for (const r of range.getClientRects()) {
+        const a = r.top - top, b = r.bottom - top;
+        if (a < max && b > max && a >= least) max = Math.ceil(a);
+      }
+    }
+    return max;
   }
   let stripNeed = 0;
   /** After the readout changed: bounded afresh where its must-read rows grew past the bound. */
