@@ -264,7 +264,10 @@ function startApp(wasm, engines) {
     if (!$('lab').hidden && $('labResult').hidden && !$('labBusy').textContent)
       $('labBusy').textContent = 'the address does not carry recordings: drop yours here again to see the fit';
   }
-  if (location.hash === '#lab') queueMicrotask(() => queueMicrotask(labFromAddress));
+  // Not on a first visit by a link (the gallery's lab link: nothing was dropped before), only
+  // where the page comes back to an address it had (a reload, Back or Forward).
+  const nav = (performance.getEntriesByType('navigation')[0] || {}).type;
+  if (location.hash === '#lab' && (nav === 'reload' || nav === 'back_forward')) queueMicrotask(() => queueMicrotask(labFromAddress));
   // Back and Forward: the state the address holds, its panels as its hash says.
   window.addEventListener('popstate', () => {
     restoring = true;
