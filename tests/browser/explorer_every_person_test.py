@@ -17,9 +17,13 @@ pixels a CSS pixel), on the page `bookspin explore` writes from every scene. At 
     drag" menu and on its Close neither plays nor steps the page behind it; Escape closes it
     and focus is back on its button, shown (:focus-visible, an outline of at least 2 px); with
     the judge open no Tab reaches the lab's button;
+  - the time axis of fig09 opened at t = 0 spans the scene's run (ticks of whole time units,
+    not "0 2e-10 4e-10");
   - the canvases named (role img, an aria-label): the 3D view's name says the scene, t and each
     run's flips as the readout shows them; a flip counted is said in a live region
     (aria-live, #spoken);
+  - the gallery's link to the lab (explorer.html#lab) opened afresh does not ask to drop a
+    recording "again" (a reload does: the address carries none);
   - axe-core (npm, pinned in tests/browser/package-lock.json, installed with `npm ci` into
     BINARY_DIR/test-output/every-person-npm) finds no serious or critical violation on the
     explorer (fig09, the lab open with a fit, the judge open with a judgement), on a gallery
@@ -212,6 +216,12 @@ def check_panel_keys(driver, page, where, problems):
     """Each panel by keyboard: opened by its button, focus kept in it, the page's keys inert
     behind it, Escape back to the button."""
     load(driver, page + "?scene=fig09-matrix-unstable-x")
+    # The time axis of a scene just opened (t = 0) spans the scene's run: its ticks whole time
+    # units, not "0 2e-10 4e-10".
+    ticks = driver.execute_script(
+        "return window.explorer.plotTickLabels().filter((t) => t.axis === 't').map((t) => [t.value, t.text])")
+    if len(ticks) < 2 or max(v for v, _ in ticks) < 1:
+        problems.append(f"fig09 at t = 0 at {where}: the time axis reads {[t for _, t in ticks]}, not the scene's span")
     before = driver.execute_script(PAGE)
     for panel, opener in (("lab", "labOpen"), ("judge", "judgeOpen")):
         at = f"the {panel} panel at {where}"
@@ -268,6 +278,24 @@ def check_panel_keys(driver, page, where, problems):
     after = driver.execute_script(PAGE)
     if after[0] != before[0] or after[1] != before[1]:
         problems.append(f"the panels at {where}: the page behind moved: {before} → {after}")
+
+
+def check_first_visit(driver, page, problems):
+    """The gallery's link to the lab opened afresh: the lab open, not asking to drop a recording
+    "again" (nothing was dropped before); a reload of it does."""
+    driver.get("about:blank")
+    load(driver, page + "#lab")
+    time.sleep(0.3)
+    said = driver.execute_script("return [!document.getElementById('lab').hidden, document.getElementById('labBusy').textContent]")
+    driver.refresh()
+    load(driver)
+    time.sleep(0.3)
+    again = driver.execute_script("return document.getElementById('labBusy').textContent")
+    print(f"the lab by a link: shown {said[0]}, saying {said[1]!r}; reloaded: {again!r}")
+    if not said[0] or "again" in said[1]:
+        problems.append(f"the lab opened afresh by a link: shown {said[0]}, saying {said[1]!r}")
+    if "again" not in again:
+        problems.append(f"the lab reloaded does not say to drop the recording again: {again!r}")
 
 
 def axe_check(driver, axe_source, what, problems, page="explorer"):
@@ -370,6 +398,8 @@ def main():
             check_canvases(driver, f"fig09 at {where}", problems)
             axe_check(driver, axe_source, f"the explorer (compare-engines) at {where}", problems)
             check_panel_keys(driver, page, where, problems)
+            if size == sizes[0]:
+                check_first_visit(driver, page, problems)
             if open_lab_with_fit(driver, page, source, problems, where):
                 driver.save_screenshot(str(shots / f"every-person-lab-{size[0]}x{size[1]}.png"))
                 seen = check_numbers(driver, f"the lab at {where}", problems)
