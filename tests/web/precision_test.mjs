@@ -10,7 +10,7 @@ import { join } from 'node:path';
 
 const source = process.argv[2];
 if (!source) throw new Error('usage: node tests/web/precision_test.mjs SOURCE_DIR');
-const { significant, withSigma, plusMinus, vectorWithSigma, asGiven } =
+const { significant, withSigma, plusMinus, vectorWithSigma, asGiven, wholeNumbers } =
   await import(pathToFileURL(join(source, 'web/src/precision.js')).href);
 
 test('a value is rounded to the decimal place of its σ, σ to two significant digits', () => {
@@ -142,4 +142,18 @@ test('a limit keeps the digits it was given, in the form of the values beside it
   assert.equal(asGiven(1e30), '1 × 10³⁰');
   // A value shown beside it by significant() is in the same form from 10⁻⁴ down.
   assert.equal(significant(3.217e-7), '3.217 × 10⁻⁷');
+});
+
+test('each number, interval and range is kept whole in a span the page never breaks', () => {
+  const nb = (t) => `<span class="nb">${t}</span>`;
+  // The judge's cells on a phone ("0.484" over "3", "limit 1 ×" over "10⁻⁶").
+  assert.equal(wholeNumbers('0.4843'), nb('0.4843'));
+  assert.equal(wholeNumbers('limit 1 × 10⁻⁶'), `limit ${nb('1 × 10⁻⁶')}`);
+  assert.equal(wholeNumbers('over its limit 3.217 × 10⁻⁷'), `over its limit ${nb('3.217 × 10⁻⁷')}`);
+  // A value with its σ, a range, a vector's components (it breaks after their commas).
+  assert.equal(wholeNumbers('0.1702 ± 0.0012 /s'), `${nb('0.1702 ± 0.0012')} /s`);
+  assert.equal(wholeNumbers('toss 4: a.csv 10.081–11.534 s'), `toss ${nb('4')}: a.csv ${nb('10.081–11.534')} s`);
+  assert.equal(wholeNumbers('(-0.139228, 0.990260) ± 0.5°'), `(${nb('-0.139228')}, ${nb('0.990260')}) ${nb('± 0.5°')}`);
+  // Not a digit of a name.
+  assert.equal(wholeNumbers('ω0 x, I2/I3'), 'ω0 x, I2/I3');
 });

@@ -52,9 +52,17 @@ function show(id, visible) {
  * is kept in its data-full. */
 export function fitMenu(menu) {
   const style = getComputedStyle(menu);
-  const room = menu.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight) - 24;
   const g = document.createElement('canvas').getContext('2d');
   g.font = `${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+  const roomOf = () => menu.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight) - 24;
+  // Where the chosen title's first word does not fit beside the menu's name (a narrow column:
+  // "Dzhanibekov's" showed as "Dzhanib …"), the menu goes to the line under its name, the
+  // column's whole width (index.html, .menuUnder).
+  const label = menu.parentElement, chosen = menu.selectedOptions[0];
+  const firstWord = chosen ? (chosen.dataset.full ?? chosen.textContent).split(' ')[0] : '';
+  label.classList.remove('menuUnder');
+  if (firstWord && g.measureText(`${firstWord} …`).width > roomOf()) label.classList.add('menuUnder');
+  const room = roomOf();
   for (const option of menu.options) {
     if (option.dataset.full === undefined) option.dataset.full = option.textContent;
     let text = option.dataset.full;

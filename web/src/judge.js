@@ -6,9 +6,12 @@
 // Nothing is measured here: this module hands text to the module and writes out its answer.
 import { takeFiles } from './file_drop.js';
 import { Replay } from './replay.js';
-import { asGiven, significant } from './precision.js';
+import { modalPanel } from './modal.js';
+import { asGiven, significant, wholeNumbers } from './precision.js';
 
 const $ = (id) => document.getElementById(id);
+/** Text as HTML text. */
+const escape = (text) => String(text).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]);
 /** The judgement CSV's columns that hold text; every other one holds a number or nothing. */
 const TEXT_COLUMNS = ['scenario', 'motion', 'verdict', 'failures', 'version', 'scenario_sha256'];
 /** What each column says, for the panel's table (docs/flipcheck.md, "What judge measures"). */
@@ -126,7 +129,7 @@ export class JudgePanel {
     $('judgeOpen').hidden = this.scenes.length === 0;
     $('judgeOpen').addEventListener('click', () => this.open(currentScene()));
     $('judgeClose').addEventListener('click', () => this.close());
-    window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('judge').hidden) this.close(); });
+    modalPanel($('judge'), $('judgeOpen'), () => this.close());
     menu.addEventListener('change', () => { this.clear(); this.showTitle(); });
     this.showTitle();
     $('judgeJson').addEventListener('click', () => this.exportFile('json'));
@@ -227,7 +230,9 @@ export class JudgePanel {
     verdict.textContent = `${pass ? 'PASS' : 'FAIL'}: ${row.motion} on ${row.scenario}`;
     verdict.className = pass ? 'pass' : 'fail';
     // What judged it (docs/flipcheck.md, "Versions"): bookspin's version and the scenario's SHA-256.
-    $('judgeStamp').textContent = `judged by bookspin ${row.version}; scenario JSON SHA-256 ${row.scenario_sha256}`;
+    // The version whole; the digest, 64 characters, breaks anywhere.
+    $('judgeStamp').innerHTML = `judged by bookspin <span class="nb">${escape(row.version)}</span>; ` +
+      `scenario JSON SHA-256 <span class="digest">${escape(row.scenario_sha256)}</span>`;
     $('judgeFailures').innerHTML = '';
     for (const f of failures) $('judgeFailures').appendChild(Object.assign(document.createElement('li'), { textContent: f }));
     // The readable label first, the CSV's key second; each number to four significant digits
@@ -248,8 +253,8 @@ export class JudgePanel {
       const why = c in failed ? (/\(([^)]*)\)\s*$/.exec(failed[c]) || [null, failed[c]])[1] : '';
       const bound = limit !== null ? `${overLimit ? 'over its limit' : 'limit'} ${limitText}`
         : over ? `failed: ${why}` : '';
-      return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c}</code></small>` : ''}</th>` +
-        `<td${v === null ? '' : ` title="${v}"`}>${significant(v)}</td><td class="limit">${bound}</td></tr>`;
+      return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c.replace(/_/g, '_<wbr>')}</code></small>` : ''}</th>` +
+        `<td${v === null ? '' : ` title="${v}"`}>${wholeNumbers(significant(v))}</td><td class="limit">${wholeNumbers(bound)}</td></tr>`;
     });
     $('judgeTable').innerHTML = rows.join('');
     $('judgeResult').hidden = false;

@@ -2,6 +2,8 @@
 // Copy link and the camera; space plays, → and ← step 0.5 time units, R resets, F goes full
 // screen (never while typing in a field, never the menu under the focus).
 
+import { panelOpen } from './modal.js';
+
 const $ = (id) => document.getElementById(id);
 /** Time units of one Step (and of → and ←), at least. */
 const STEP_TIME = 0.5;
@@ -44,8 +46,8 @@ export function listenKeys(actions) {
   window.addEventListener('keydown', (ev) => {
     const typing = ev.target instanceof HTMLInputElement && ev.target.type !== 'checkbox' && ev.target.type !== 'range';
     if (typing || ev.ctrlKey || ev.metaKey || ev.altKey) return;
-    // The "Judge a motion" panel over the page (judge.js) takes the keys while it is open.
-    if (!document.getElementById('judge').hidden) return;
+    // A panel over the page (modal.js: the lab, the judge) takes the keys while it is open.
+    if (panelOpen()) return;
     const act = {
       Space: () => setPlaying(!actions.playing()),
       ArrowRight: () => seek(actions.time() + stepSize()),

@@ -7,7 +7,8 @@
 // `bookspin explore` plays a toss scene the command line wrote. Nothing is fitted here: this
 // module hands bytes to the module and writes out its answer.
 import { recordingsOf, takeFiles } from './file_drop.js';
-import { plusMinus, significant } from './precision.js';
+import { modalPanel } from './modal.js';
+import { plusMinus, significant, wholeNumbers } from './precision.js';
 import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
 import { niceTicks, tickLabel } from './plots.js';
@@ -55,9 +56,11 @@ function tossCell(toss, column, value) {
  * flag's why) that wrap within the panel, where a number keeps to one line. */
 function labelledRow(key, words, shown, full, wraps = false) {
   const title = full === undefined || full === null ? '' : ` title="${html(full)}"`;
-  const code = words && words !== key ? `<small><code>${html(key)}</code></small>` : '';
+  // The key breaks after its underscores only (half_period_propagated_sigma, 28 characters,
+  // held a phone's toss table 14 px past its panel once numbers kept whole).
+  const code = words && words !== key ? `<small><code>${html(key).replace(/_/g, '_<wbr>')}</code></small>` : '';
   const cls = wraps ? ' class="words"' : '';
-  return `<tr><th>${html(words || key)}${code}</th><td${title}${cls}>${shown}</td></tr>`;
+  return `<tr><th>${html(words || key)}${code}</th><td${title}${cls}>${wraps ? shown : wholeNumbers(shown)}</td></tr>`;
 }
 
 /** Plots toss `chart` ({t, measured, fitted}: ω, phone frame, 3×N flattened) on `canvas`: the
@@ -166,7 +169,7 @@ export class LabPanel {
     this.skipped = [];
     $('labOpen').addEventListener('click', () => this.open());
     $('labClose').addEventListener('click', () => this.close());
-    window.addEventListener('keydown', (e) => { if (e.key === 'Escape' && !$('lab').hidden) this.close(); });
+    modalPanel($('lab'), $('labOpen'), () => this.close());
     takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
     // The flights by hand changed: the last recording given is fitted again with them.
     this.given = null;
@@ -270,6 +273,8 @@ export class LabPanel {
       table = document.createElement('table');
       table.id = 'labOutcome';
       table.className = 'labOutcome';
+      // It scrolls sideways on a phone: the keyboard reaches it to scroll it (its caption names it).
+      table.tabIndex = 0;
       $('labResult').insertBefore(table, $('labResult').firstChild);
     }
     const ms3 = (v) => (typeof v === 'number' ? v.toFixed(3) : '–');
@@ -326,7 +331,8 @@ export class LabPanel {
     // which the table shows, are left out of the text below it).
     this.showOutcome(r);
     const details = r.summary.slice(2 + r.tosses.length);
-    $('labSummary').textContent = [...files, ...details].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`;
+    // Its numbers, intervals and ranges whole (precision.js, wholeNumbers); it breaks at spaces.
+    $('labSummary').innerHTML = wholeNumbers(html([...files, ...details].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`));
     this.showDropped(r.dropped || []);
     const list = $('labTosses');
     list.innerHTML = '';
@@ -338,8 +344,8 @@ export class LabPanel {
       const title = document.createElement('strong');
       // Named by its own recording and times (the table's, or alone the recording's own).
       const own = t.recording || r.charts[k].recording || r.recording;
-      title.textContent = `toss ${t.toss}: ${own} ${t.t_start.toFixed(3)}–${t.t_end.toFixed(3)} s` +
-        (t.stable === 'yes' ? ' (stable)' : '') + (t.poor_fit === 'yes' ? ' (flagged)' : '');
+      title.innerHTML = wholeNumbers(html(`toss ${t.toss}: ${own} ${t.t_start.toFixed(3)}–${t.t_end.toFixed(3)} s` +
+        (t.stable === 'yes' ? ' (stable)' : '') + (t.poor_fit === 'yes' ? ' (flagged)' : '')));
       head.appendChild(title);
       if (r.scenes[k]) {
         const button = document.createElement('button');
@@ -350,6 +356,9 @@ export class LabPanel {
       box.appendChild(head);
       const canvas = document.createElement('canvas');
       canvas.className = 'tossChart';
+      canvas.setAttribute('role', 'img');
+      canvas.setAttribute('aria-label', `toss ${t.toss}: ω measured (dots) and fitted (lines) against t, x red, y green, z blue; ` +
+        'the numbers in the table beside it');
       box.appendChild(canvas);
       const table = document.createElement('table');
       // drag_rate_sigma is shown beside drag_rate, half_period_predicted_sigma beside its value.

@@ -45,6 +45,11 @@ function startApp(wasm, engines) {
   /** The scene's time unit: a measured toss's is the recording's second (its ω in rad/s, its
    * flight in seconds: docs/phone-lab.md); a scene of the paper's runs in time units. */
   const timeUnit = () => (measured() ? 's' : 'time units');
+  /** The scene's title as the 3D view's name says it. */
+  const sceneName = () => {
+    const scene = SCENES.find((s) => s.name === app.state.scene);
+    return scene ? `scene: ${scene.title || scene.name}` : 'no scene (the controls\' settings)';
+  };
 
   /** Steps towards time `target` (for at most `ms`, the rest a piece per frame). */
   function catchUp(target, ms) {
@@ -85,7 +90,7 @@ function startApp(wasm, engines) {
     draw();
   }
   const sphere = new Sphere($('sphere'), wasm, pickStart);
-  app.panels = new Panels($('sphere'), $('plots'), sphere, measured, timeUnit);
+  app.panels = new Panels($('sphere'), $('plots'), sphere, measured, timeUnit, () => Number($('slider').max));
 
   function setPlaying(p) {
     app.playing = p;
@@ -101,7 +106,7 @@ function startApp(wasm, engines) {
     const list = app.runs.list;
     // The readout first: its strip's height sets the view's (index.html), under whose bottom
     // the bodies' labels are placed; placed before it grew, a label ran past the view.
-    app.readout.draw(list, app.state.t, timeUnit());
+    if (app.readout.draw(list, app.state.t, timeUnit(), sceneName())) fitStrip();
     if (app.playing) { const strip = $('overlay'); strip.style.minHeight = `${strip.offsetHeight}px`; }
     lap('readout');
     app.view.render(list); lap('view');
@@ -144,16 +149,50 @@ function startApp(wasm, engines) {
     const strip = $('overlay'), box = $('viewBox'), main = $('main');
     const stacked = matchMedia('(max-width: 899px)').matches;  // index.html's stacked layout
     if (fresh) strip.style.minHeight = '';
+    const need = mustReadHeight(strip);
     if (!stacked) {
       const share = 1 + Math.max(VIEW_MIN_PX, innerWidth * innerHeight / 3 / Math.max(1, main.clientWidth));
-      strip.style.maxHeight = `${Math.max(48, main.clientHeight - share)}px`;
+      const cap = Math.max(48, main.clientHeight - share);
+      strip.style.maxHeight = `${offLines(strip, Math.max(cap, Math.min(need, main.clientHeight - VIEW_MIN_PX)), need)}px`;
     } else {
       // Stacked (a phone): the view its own height (index.html); the strip as tall as a
       // phone's screen leaves beside the view and the transport bar.
       const beside = matchMedia('(orientation: landscape)').matches;  // index.html: beside the view
-      strip.style.maxHeight = `${beside ? box.offsetHeight
-        : Math.max(96, innerHeight - box.offsetHeight - $('transport').offsetHeight)}px`;
+      const cap = beside ? box.offsetHeight : Math.max(96, innerHeight - box.offsetHeight - $('transport').offsetHeight);
+      strip.style.maxHeight = `${offLines(strip, Math.max(cap, need), need)}px`;
     }
+    stripNeed = need;
+  }
+  /** The readout's height down to the last of what a class must read (docs/explorer.md, "What
+   * the class must read"): the clock, and each run's flips and first flip (a comparison's every
+   * tile's); the strip is never bounded under it, whatever the view's share. */
+  function mustReadHeight(strip) {
+    const top = strip.getBoundingClientRect().top - strip.scrollTop;
+    let bottom = 0;
+    for (const e of strip.querySelectorAll('#clock, #status .flips, #status .first'))
+      bottom = Math.max(bottom, e.getBoundingClientRect().bottom - top);
+    return Math.ceil(bottom + parseFloat(getComputedStyle(strip).paddingBottom || '0'));
+  }
+  /** The strip's bound `max` moved up off a line of text it would cut through (the line then
+   * scrolls whole, never shown sliced), down to no less than what must be read (`need`). */
+  function offLines(strip, max, need) {
+    const top = strip.getBoundingClientRect().top - strip.scrollTop;
+    const least = need - parseFloat(getComputedStyle(strip).paddingBottom || '0') - 1;
+    const range = document.createRange();
+    const walker = document.createTreeWalker(strip, NodeFilter.SHOW_TEXT);
+    for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+      range.selectNodeContents(n);
+      for (const r of range.getClientRects()) {
+        const a = r.top - top, b = r.bottom - top;
+        if (a < max && b > max && a >= least) max = Math.ceil(a);
+      }
+    }
+    return max;
+  }
+  let stripNeed = 0;
+  /** After the readout changed: bounded afresh where its must-read rows grew past the bound. */
+  function fitStrip() {
+    if (mustReadHeight($('overlay')) > stripNeed) layout(false);
   }
 
   /** The view, the plots and the left panel fitted to the window (`unfold`: the scene's
@@ -225,7 +264,10 @@ function startApp(wasm, engines) {
     if (!$('lab').hidden && $('labResult').hidden && !$('labBusy').textContent)
       $('labBusy').textContent = 'the address does not carry recordings: drop yours here again to see the fit';
   }
-  if (location.hash === '#lab') queueMicrotask(() => queueMicrotask(labFromAddress));
+  // Not on a first visit by a link (the gallery's lab link: nothing was dropped before), only
+  // where the page comes back to an address it had (a reload, Back or Forward).
+  const nav = (performance.getEntriesByType('navigation')[0] || {}).type;
+  if (location.hash === '#lab' && (nav === 'reload' || nav === 'back_forward')) queueMicrotask(() => queueMicrotask(labFromAddress));
   // Back and Forward: the state the address holds, its panels as its hash says.
   window.addEventListener('popstate', () => {
     restoring = true;

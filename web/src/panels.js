@@ -17,9 +17,10 @@ function fitCanvas(canvas) {
 
 export class Panels {
   /** `sphere` (sphere.js) draws on `sphereCanvas`; `measured()`: the scene's measured ω
-   * ({t, w, ut, u}, bookspin explore) or null. */
-  constructor(sphereCanvas, plotsCanvas, sphere, measured, timeUnit = () => 'time units') {
-    Object.assign(this, { sphereCanvas, plotsCanvas, sphere, measured, timeUnit });
+   * ({t, w, ut, u}, bookspin explore) or null; `sceneSpan()`: the scene's run (plots.js: the time
+   * axis at t = 0). */
+  constructor(sphereCanvas, plotsCanvas, sphere, measured, timeUnit = () => 'time units', sceneSpan = () => 0) {
+    Object.assign(this, { sphereCanvas, plotsCanvas, sphere, measured, timeUnit, sceneSpan });
     this.seen = { sphere: null, plots: null };
     this.plotsDrawnAt = -Infinity;
     this.spans = [];          // each plotted line's drawn height (hooks.js: plotSpans)
@@ -43,8 +44,8 @@ export class Panels {
     }
     lap('sphere');
     if ((!playing || now - this.plotsDrawnAt >= PLOTS_EVERY_MS) &&
-        this.changed('plots', [p.width, p.height, measured, this.timeUnit(), ...list.flatMap((r) => [r.history, r.history.length])])) {
-      const drawn = drawPlots(p, list, measured, this.timeUnit());
+        this.changed('plots', [p.width, p.height, measured, this.timeUnit(), this.sceneSpan(), ...list.flatMap((r) => [r.history, r.history.length])])) {
+      const drawn = drawPlots(p, list, measured, this.timeUnit(), this.sceneSpan());
       this.spans = drawn.spans;
       this.measuredDots = drawn.measuredDots;
       this.tickLabels = drawn.tickLabels;

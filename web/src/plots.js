@@ -89,8 +89,10 @@ export function wrapped(g, text, width) {
  * and the scene's `measured` ω (or null) up to the runs' time as dots on the ω panel; returns
  * {spans: each line's drawn height in CSS pixels, {panel, run, component, px}; measuredDots:
  * how many measured samples were drawn}. `timeUnit`: the time axis's unit ('s' for a toss
- * measured in seconds, docs/explorer.md). */
-export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units') {
+ * measured in seconds, docs/explorer.md). `span`: the scene's run (the time slider's end),
+ * the time axis's width while the runs are at t = 0 (a scene just opened: its ticks were
+ * "0 2e-10 4e-10"). */
+export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units', span = 0) {
   const g = canvas.getContext('2d', CANVAS_2D);
   const scale = canvas.width / Math.max(1, canvas.clientWidth || canvas.width);
   g.setTransform(scale, 0, 0, scale, 0, 0);
@@ -132,7 +134,8 @@ export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units'
   const axisH = FONT_PX + 10;  // the time axis under the last panel
   const top = y;
   const ph = (H - top - axisH) / PANELS.length;
-  const tmax = Math.max(1e-9, ...runs.map((r) => r.history[r.history.length - 1].t));
+  const last = Math.max(...runs.map((r) => r.history[r.history.length - 1].t));
+  const tmax = last > 0 ? last : span > 0 ? span : 1;
   const samples = measuredUpTo(measured, tmax);
   g.lineWidth = 1;
   const spans = [];  // how tall each line is drawn (CSS px): the tests' flat-line check

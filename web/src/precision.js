@@ -86,3 +86,17 @@ export function vectorWithSigma(values, sigma) {
   const parts = values.map((v) => withSigma(v, sigma));
   return { values: parts.map((p) => p.value), sigma: parts.length ? parts[0].sigma : '' };
 }
+
+/** A number as the page writes it: plain or "m × 10ⁿ", a range's two ends, with "± σ" after
+ * it where it has one (and a σ's degree sign). */
+const NUMBER = '-?\\d+(?:\\.\\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?';
+// Not a digit of a name (I2, ω0); a range "1.82–2.71" whole too.
+const WHOLE = new RegExp(`(?<![\\p{L}\\d.])(?:± )?${NUMBER}(?:–${NUMBER})?(?: ± ${NUMBER})?°?`, 'gu');
+
+/** `text` (already HTML text: no markup inside) with each number in it, and each "value ± σ",
+ * in a span of class "nb", which the page never breaks (docs/explorer.md, "Numbers at their
+ * precision": a number, an interval, is never split over two lines; the text breaks at its
+ * spaces and separators only). */
+export function wholeNumbers(text) {
+  return String(text).replace(WHOLE, (m) => `<span class="nb">${m}</span>`);
+}
