@@ -667,8 +667,8 @@ GyroRecording read_recording(const std::filesystem::path& path) {
   const bool named_by_folder =
       in_export || (single_sensor_export(path.filename().string()) && path.has_parent_path() &&
                     only_csv_of_its_folder(path) && !folder.filename().empty());
-  GyroRecording recording = parse_gyro_csv(
-      text, path.string(), named_by_folder ? folder.filename().string() : name);
+  GyroRecording recording =
+      parse_gyro_csv(text, path.string(), named_by_folder ? folder.filename().string() : name);
   // Named in messages as the recording was given ("anna/meta/time.csv").
   const fs::path time_csv = folder / "meta" / "time.csv";
   const fs::path meta_named = path.parent_path() / "meta";

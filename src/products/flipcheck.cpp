@@ -182,6 +182,18 @@ constexpr const char* kMotionNames =
 
 /// The league page: a self-contained HTML5 table, a motion per row in order of first
 /// appearance, a scenario per column; a failed cell lists its reasons.
+/// A motion's name as HTML that breaks only after the separators of an engine's name ('/', '@',
+/// '-'), never inside a version or a word ("cannon-es@0.20.0/fixed": "cannon-", "es@",
+/// "0.20.0/", "fixed").
+std::string breakable_name(const std::string& name) {
+  std::string html;
+  for (char c : name) {
+    html += html_escape(std::string(1, c));
+    if (c == '/' || c == '@' || c == '-') html += "<wbr>";
+  }
+  return html;
+}
+
 std::string league_html(const std::vector<LeagueColumn>& columns) {
   std::vector<std::string> rows;
   for (const LeagueColumn& col : columns)
@@ -213,7 +225,7 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           // motions' column while the scenarios scroll sideways (a phone).
           "thead th { position: sticky; top: 0; background: #f4f4f4; z-index: 1; }\n"
           "tbody th { position: sticky; left: 0; background: #fafafa; z-index: 1; "
-          "max-width: 40vw; overflow-wrap: anywhere; }\n"
+          "max-width: 40vw; }\n"
           "thead th:first-child { left: 0; z-index: 2; }\n"
           "dl.names dt { font-family: monospace; margin-top: 0.4em; }\n"
           "dl.names dd { margin-left: 1.5em; }\n</style>\n</head>\n<body>\n"
@@ -225,13 +237,17 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           "to tumble; under a failure, its reasons. Every "
           "number is in <a href=\"flipcheck-league.csv\">flipcheck-league.csv"
           "</a>.</p>\n"
-       << kMotionNames << "<div class=\"league\"><table>\n<thead><tr><th>motion</th>";
+       << kMotionNames
+       // Scrolled by keyboard too, and named for a screen reader (axe's
+       // scrollable-region-focusable).
+       << "<div class=\"league\" tabindex=\"0\" role=\"region\" aria-label=\"The league "
+          "table: each motion against each scenario\"><table>\n<thead><tr><th>motion</th>";
   for (const LeagueColumn& col : columns)
     page << "<th title=\"" << html_escape(col.title) << "\">" << html_escape(col.scenario)
          << "</th>";
   page << "</tr></thead>\n<tbody>\n";
   for (const std::string& row : rows) {
-    page << "<tr><th>" << html_escape(row) << "</th>";
+    page << "<tr><th>" << breakable_name(row) << "</th>";
     for (const LeagueColumn& col : columns) {
       const auto it = std::find_if(col.judged.begin(), col.judged.end(),
                                    [&](const analysis::JudgedMotion& j) { return j.name == row; });

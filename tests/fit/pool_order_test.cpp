@@ -3,7 +3,6 @@
 // and outputs to the last digit, on the real recordings in ../shared/recordings-real/ (skipped,
 // saying why, where absent) and on synthetic ones.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "common/text_file.hpp"
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
-#include "common/text_file.hpp"
 #include "fit/report.hpp"
 #include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
@@ -165,7 +164,8 @@ TEST(PoolOrder, OneSetGivenFiveWaysGivesOneAnswer) {
       std::vector<std::pair<std::string, std::string>> entries = {
           {"Raw Data.csv", read_text_file(csv, "test")}};
       for (const char* meta : {"meta/time.csv", "meta/device.csv"})
-        if (fs::exists(folder / meta)) entries.emplace_back(meta, read_text_file(folder / meta, "test"));
+        if (fs::exists(folder / meta))
+          entries.emplace_back(meta, read_text_file(folder / meta, "test"));
       fs::create_directories(work / "zips");
       test::write_zip(work / "zips" / (name + ".zip"), entries);
       zips.push_back(read_recording(work / "zips" / (name + ".zip")));
@@ -176,9 +176,9 @@ TEST(PoolOrder, OneSetGivenFiveWaysGivesOneAnswer) {
   reversed.assign(folders.rbegin(), folders.rend());
   const FitReport first = fit_report(pool_recordings(folders), {});
   ASSERT_FALSE(first.tosses.empty());
-  for (const auto& [way, given] : {std::pair{"files", &files}, std::pair{"zips", &zips},
-                                   std::pair{"a dropped folder", &dropped},
-                                   std::pair{"folders in reverse", &reversed}}) {
+  for (const auto& [way, given] :
+       {std::pair{"files", &files}, std::pair{"zips", &zips},
+        std::pair{"a dropped folder", &dropped}, std::pair{"folders in reverse", &reversed}}) {
     SCOPED_TRACE(std::string("given as ") + way);
     std::vector<std::string> given_names;
     for (const GyroRecording& r : *given) given_names.push_back(r.name);

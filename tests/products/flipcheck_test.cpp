@@ -213,6 +213,12 @@ TEST(Flipcheck, TheLeagueGivesEachFileToItsScenarioARowPerMotion) {
   EXPECT_NE(html.find("<tr><th>exact</th><td class=\"pass\">pass 3/3</td><td class=\"pass\">pass "),
             std::string::npos)
       << html;
+  // A motion's name breaks after its separators only, never inside a word or a version; the
+  // scrolling table is reached by the keyboard and named (docs/flipcheck.md, "The league table").
+  EXPECT_NE(html.find("<tr><th>rigid-<wbr>quaternion euler</th>"), std::string::npos) << html;
+  EXPECT_EQ(html.find("overflow-wrap: anywhere"), std::string::npos);
+  EXPECT_NE(html.find("<div class=\"league\" tabindex=\"0\" role=\"region\" aria-label=\""),
+            std::string::npos);
   EXPECT_EQ(output::read_manifest(layout.manifest).outputs,
             (std::vector<std::string>{"flipcheck-league.csv", "flipcheck-league.html"}));
   // Up to date, the league judges nothing (a stop poll that always answers SIGINT is never
