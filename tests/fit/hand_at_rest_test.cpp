@@ -46,8 +46,8 @@ TEST(HandAtRest, TruthWithinTwoSigmaWhenTheRestTurnsUpToTwoHundredthsOfARadianAS
       // The hand's turn: 0–0.02 rad/s about one axis, either sense.
       Eigen::Vector3d turn = Eigen::Vector3d::Zero();
       turn[n % 3] = (n % 2 ? -1.0 : 1.0) * 0.02 * unit(random);
-      const Eigen::Vector3d bias = n % 4 < 2 ? Eigen::Vector3d::Zero()
-                                             : Eigen::Vector3d(0.021, -0.014, 0.008);
+      const Eigen::Vector3d bias =
+          n % 4 < 2 ? Eigen::Vector3d::Zero() : Eigen::Vector3d(0.021, -0.014, 0.008);
       const double rate = n % 2 ? 0.05 : 0.0;  // 1/s, isotropic linear drag, or none
       const std::vector<test::SyntheticToss> tosses = {
           {{0.5 + jitter(random), 12.0, 0.4 + jitter(random)}, c.flight},
