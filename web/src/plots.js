@@ -136,7 +136,8 @@ export function drawPlots(canvas, runs, measured = null, timeUnit = 'time units'
   const ph = (H - top - axisH) / PANELS.length;
   const last = Math.max(...runs.map((r) => r.history[r.history.length - 1].t));
   const tmax = last > 0 ? last : span > 0 ? span : 1;
-  const samples = measuredUpTo(measured, tmax);
+  // The measurement up to the runs' time, not the axis's end (at t = 0: none of it yet).
+  const samples = measuredUpTo(measured, Math.max(last, 1e-9));
   g.lineWidth = 1;
   const spans = [];  // how tall each line is drawn (CSS px): the tests' flat-line check
   const tickLabels = [];  // each drawn tick label: {axis, value, step, text} (the tests' digits check)
