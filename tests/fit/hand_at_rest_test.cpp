@@ -10,20 +10,14 @@
 #include <cstdio>
 #include <random>
 
+#include "coverage_tally.hpp"
 #include "fit/report.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
 namespace {
 
-struct Tally {
-  int within = 0, count = 0;
-  void add(double error, double sigma) {
-    ++count;
-    within += std::abs(error) <= 2.0 * sigma ? 1 : 0;
-  }
-  double fraction() const { return count ? static_cast<double>(within) / count : 0.0; }
-};
+using test::Tally;
 
 TEST(HandAtRest, TruthWithinTwoSigmaWhenTheRestTurnsUpToTwoHundredthsOfARadianASecond) {
   struct RateCase {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "coverage_tally.hpp"
 #include "fit/flights.hpp"
 #include "fit/toss_fit.hpp"
 #include "synthetic_recording.hpp"
@@ -22,14 +23,7 @@ struct RateCase {
   double flight;   ///< s per toss
 };
 
-struct Tally {
-  int within = 0, count = 0;
-  void add(double error, double sigma) {
-    ++count;
-    within += std::abs(error) <= 2.0 * sigma ? 1 : 0;
-  }
-  double fraction() const { return count ? static_cast<double>(within) / count : 0.0; }
-};
+using test::Tally;
 
 /// `count` (2 or 3) tosses near the intermediate axis (they flip), each seed's ω0 turned a
 /// little. Two tosses give the body's σ from the covariance alone (no jackknife under three
