@@ -409,7 +409,7 @@ void widen_by_ends(const std::vector<TossData>& data, const Parameters& p, const
 }
 
 /// Toss k's prediction (TossFit::half_period_predicted, what it rests on, or why none): its fold's
-/// body and drag rate (fit/prediction_sigma.hpp); a note where they are a short bounce.
+/// body and drag rate (fit/prediction_sigma.hpp); a note where they are too little flight.
 Prediction predict(const std::vector<TossData>& data, std::size_t k, const Folds& folds,
                    const FlightSearch& search, const FitSettings& settings,
                    const PredictionInputs& inputs, std::vector<TossFit>& tosses,
@@ -473,9 +473,9 @@ Prediction predict(const std::vector<TossData>& data, std::size_t k, const Folds
     char line[300];
     std::snprintf(line, sizeof line,
                   "toss %zu's half_period_predicted rests on %d other toss(es), %.2f s of "
-                  "flight in all: a short bounce alone pins the body poorly (fit the "
-                  "recordings of one body together, or %s)",
-                  k + 1, from, seconds, kGiveMoments);
+                  "flight in all, under the %.1f s that pin a body: too little flight to pin "
+                  "it well (more tosses of this body, fitted together, or %s)",
+                  k + 1, from, seconds, kShortBasis, kGiveMoments);
     body.notes.push_back(line);
   }
   return prediction;

@@ -159,7 +159,7 @@ TEST(TossFit, GivenMomentsWithTwoEqualSayThereIsNoIntermediateAxis) {
 
 // Each prediction says what it rests on: the other folds' tosses (three tosses: the two others)
 // and their flight time, summed here from the flights found; with --moments and one toss, 0 and
-// 0. A prediction resting on a short bounce alone (0.4 s) is said to be poorly founded.
+// 0. A prediction resting on too little flight (a 0.4 s bounce) is said to be poorly founded.
 TEST(TossFit, EachPredictionSaysWhatItRestsOn) {
   const test::SyntheticRecording three = test::make_recording(
       test::phone_alone(),
@@ -179,7 +179,7 @@ TEST(TossFit, EachPredictionSaysWhatItRestsOn) {
   }
   const auto warns = [](const FitResult& f) {
     return std::any_of(f.body.notes.begin(), f.body.notes.end(), [](const std::string& n) {
-      return n.find("a short bounce alone") != std::string::npos;
+      return n.find("too little flight to pin it well") != std::string::npos;
     });
   };
   EXPECT_FALSE(warns(fit));
