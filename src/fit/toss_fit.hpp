@@ -77,7 +77,8 @@ struct TossFit {
   std::string not_predicted;
   /// What half_period_predicted rests on: the number of other tosses the held-out body was
   /// fitted on and their flight time (s); 0 and 0 when it is the given --moments'. nullopt
-  /// with no prediction. A body from too little flight (under 0.6 s in all) predicts poorly (a note says so).
+  /// with no prediction. A body from too little flight (under 0.6 s in all) predicts poorly (a note
+  /// says so).
   std::optional<int> predicted_from_tosses;
   std::optional<double> predicted_from_seconds;
   double residual_rms = 0.0;  ///< rad/s, RMS of |ω_measured − ω_fitted| over the flight
