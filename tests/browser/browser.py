@@ -93,6 +93,26 @@ def run(cmd, **kw):
     return r.stdout
 
 
+def explorer_of_every_scene(bookspin, source, binary, name):
+    """The page built (web/build.sh) and written with every scene of scenes/ into
+    BINARY_DIR/test-output/<name>: (out, shots, page), `shots` the screenshots' folder
+    (BINARY_DIR/test-output/browser), `page` the explorer's file:// address."""
+    out = binary / "test-output" / name
+    shots = binary / "test-output" / "browser"
+    shots.mkdir(parents=True, exist_ok=True)
+    out.mkdir(parents=True, exist_ok=True)
+    run(["bash", str(source / "web" / "build.sh"), str(binary)])
+    run([bookspin, "explore", *sorted(str(p) for p in (source / "scenes").glob("*.toml")), "-o", str(out)])
+    return out, shots, (out / "explorer.html").resolve().as_uri()
+
+
+def exact_fig09_motion(bookspin, source, out):
+    """fig09's exact motion exported by `bookspin flipcheck export` into OUT/motions: its CSV."""
+    run([bookspin, "flipcheck", "export", str(source / "scenes" / "fig09-matrix-unstable-x.toml"),
+         "-o", str(out / "motions")])
+    return out / "motions" / "fig09-matrix-unstable-x-exact.csv"
+
+
 class _QuietHandler(http.server.SimpleHTTPRequestHandler):
     def log_message(self, *args):
         pass

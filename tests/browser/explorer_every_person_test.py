@@ -43,7 +43,8 @@ import os
 import shutil
 import time
 
-from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments, wait_for
+from browser import (console_errors, exact_fig09_motion, explorer_of_every_scene, fail, find_browser, open_browser,
+                     require, run, test_arguments, wait_for)
 from explorer_test import load, slide_to
 
 # (width, height, device pixels a CSS pixel, a phone or tablet: mobile viewport and touch)
@@ -368,16 +369,8 @@ def main():
     require("em++", "npm")
     axe = npm_tools(source, binary)
     axe_source = (axe / "axe.min.js").read_text()
-    out = binary / "test-output" / "explorer-every-person"
-    shots = binary / "test-output" / "browser"
-    shots.mkdir(parents=True, exist_ok=True)
-    out.mkdir(parents=True, exist_ok=True)
-    run(["bash", str(source / "web" / "build.sh"), str(binary)])
-    run([bookspin, "explore", *sorted(str(p) for p in (source / "scenes").glob("*.toml")), "-o", str(out)])
-    page = (out / "explorer.html").resolve().as_uri()
-    run([bookspin, "flipcheck", "export", str(source / "scenes" / "fig09-matrix-unstable-x.toml"),
-         "-o", str(out / "motions")])
-    motion = out / "motions" / "fig09-matrix-unstable-x-exact.csv"
+    out, shots, page = explorer_of_every_scene(bookspin, source, binary, "explorer-every-person")
+    motion = exact_fig09_motion(bookspin, source, out)
     gallery, league = build_gallery_and_league(bookspin, source, out)
     version = json.loads((axe / "package.json").read_text())["version"]
     print(f"axe-core {version} from {axe}")

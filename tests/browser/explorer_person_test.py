@@ -51,7 +51,7 @@ import re
 import time
 from pathlib import Path
 
-from browser import console_errors, fail, find_browser, open_browser, require, run, test_arguments
+from browser import console_errors, explorer_of_every_scene, fail, find_browser, open_browser, require, run, test_arguments
 from explorer_screen_test import CANVAS_TEXTS, check_canvas_texts, check_texts, overlaps
 from explorer_test import load
 from screens import (CANVAS_INK, MOVE_LIMIT_PX, SCREENS, canvas_overlap_problems, displaced_while_playing,
@@ -392,13 +392,7 @@ def main():
     require("em++", "npm")
     actions = int(os.environ.get("BOOKSPIN_PERSON_ACTIONS", "45"))
     seed = int(os.environ.get("BOOKSPIN_PERSON_SEED", "80"))
-    out = binary / "test-output" / "explorer-person"
-    shots = binary / "test-output" / "browser"
-    shots.mkdir(parents=True, exist_ok=True)
-    out.mkdir(parents=True, exist_ok=True)
-    run(["bash", str(source / "web" / "build.sh"), str(binary)])
-    run([bookspin, "explore", *sorted(str(p) for p in (source / "scenes").glob("*.toml")), "-o", str(out)])
-    page = (out / "explorer.html").resolve().as_uri()
+    out, shots, page = explorer_of_every_scene(bookspin, source, binary, "explorer-person")
     rng = random.Random(seed)
     exact = ExactFlips(bookspin, source, out)
     started = time.monotonic()

@@ -34,8 +34,8 @@ Usage: explorer_screen_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 import math
 import time
 
-from browser import (console_errors, fail, find_browser, open_browser, require, run, test_arguments,
-                     wait_for)
+from browser import (console_errors, exact_fig09_motion, explorer_of_every_scene, fail, find_browser,
+                     open_browser, require, run, test_arguments, wait_for)
 from explorer_test import load, slide_to
 from screens import VISIBLE_TEXT_NODES
 
@@ -350,16 +350,8 @@ def main():
     bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
     require("em++", "npm")
-    out = binary / "test-output" / "explorer-screen"
-    shots = binary / "test-output" / "browser"
-    shots.mkdir(parents=True, exist_ok=True)
-    out.mkdir(parents=True, exist_ok=True)
-    run(["bash", str(source / "web" / "build.sh"), str(binary)])
-    run([bookspin, "explore", *sorted(str(p) for p in (source / "scenes").glob("*.toml")), "-o", str(out)])
-    page = (out / "explorer.html").resolve().as_uri()
-    run([bookspin, "flipcheck", "export", str(source / "scenes" / "fig09-matrix-unstable-x.toml"),
-         "-o", str(out / "motions")])
-    motion = out / "motions" / "fig09-matrix-unstable-x-exact.csv"
+    out, shots, page = explorer_of_every_scene(bookspin, source, binary, "explorer-screen")
+    motion = exact_fig09_motion(bookspin, source, out)
     problems = []
     for screen in SCREENS:
         with open_browser(chromium, driver_path, size=screen, webgl=True, offline=True,
