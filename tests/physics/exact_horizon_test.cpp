@@ -125,6 +125,19 @@ TEST(ExactHorizon, AStartWithLNearlyAlongTheReferenceAxisIsTheIdentity) {
   EXPECT_TRUE(check_exact_property({moments, omega0, {0.0, 0.2994382766334292}}).empty());
 }
 
+// A subnormal ω0 (the exact fuzzer's input): rounding there is absolute, a subnormal's last
+// place, and ε |ω0| underflows to 0; the property allows the last place (two stableNorm()s of one
+// vector differed by it), and the start is still ω0 at the identity component by component.
+TEST(ExactHorizon, ASubnormalAngularVelocityStartsAtItselfToItsLastPlace) {
+  const Eigen::Vector3d moments(0.25, 2.0, 3.7826255594622424e-307);
+  const Eigen::Vector3d omega0(3.4734100304076369e-310, 3.4766779039175022e-310,
+                               3.8395133023547756e-315);
+  const ExactState s = ExactRotation(moments, omega0).state(0.0);
+  EXPECT_EQ(s.omega_body, omega0);
+  EXPECT_EQ(s.q[0], 1.0);
+  EXPECT_TRUE(check_exact_property({moments, omega0, {0.0}}).empty());
+}
+
 // Near the horizon the angles are still carried to about 1e-6 rad: ψ is reduced by 2π in long
 // double before it is rounded to a double (a double holds 2^40 only to 2^-12). The steady spin's
 // angle |ω0| t is known exactly: ω0 = (0, 0, 1), t = 2^39 + 1, angle 2^39 + 1 rad, whose

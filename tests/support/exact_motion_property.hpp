@@ -82,11 +82,16 @@ inline PeakRateBounds peak_rate_bounds(const Eigen::Vector3d& I, const Eigen::Ve
 inline bool starts_at(const physics::ExactState& s, const ExactInput& in,
                       const LongInvariants& inv) {
   constexpr double eps = std::numeric_limits<double>::epsilon();
+  // Rounding below the normal range is absolute: a subnormal's last place is denorm_min, and
+  // ε |ω0| underflows to 0 there (|ω0| = 5e-310: two stableNorm()s of one vector differed by it).
+  constexpr double last_place = std::numeric_limits<double>::denorm_min();
   if (std::abs(s.q[0] - 1.0) > 1e-12) return false;
   const double size = in.omega0.stableNorm();
   for (int i = 0; i < 3; ++i)
-    if (std::abs(s.omega_body[i] - in.omega0[i]) > 2 * eps * size) return false;
-  if (std::abs(s.omega_body.stableNorm() - size) > 8 * eps * size) return false;
+    if (std::abs(s.omega_body[i] - in.omega0[i]) > std::max(2 * eps * size, 2 * last_place))
+      return false;
+  if (std::abs(s.omega_body.stableNorm() - size) > std::max(8 * eps * size, 8 * last_place))
+    return false;
   // (Where they are normal doubles: E and |L| of ω0 as small as 1e-300 underflow.)
   if (inv.E > 1e-290L && std::abs(s.E / static_cast<double>(inv.E) - 1.0) > 8 * eps) return false;
   if (inv.L > 1e-290L && std::abs(s.L.stableNorm() / static_cast<double>(inv.L) - 1.0) > 8 * eps)
