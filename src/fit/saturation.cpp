@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <numbers>
 
 #include "fit/pool.hpp"
 
@@ -124,14 +127,84 @@ Saturation find_saturation(const GyroRecording& recording) {
   // Each recording's own gyroscope, on its samples as measured.
   Saturation found;
   found.at_range.assign(recording.omega.size(), false);
+  std::vector<double> tops;  // rad/s: each recording's largest |ω_i|
   for (const RecordingPart& part : recording.parts) {
     const std::vector<Eigen::Vector3d> own(recording.omega.begin() + part.first,
                                            recording.omega.begin() + part.last + 1);
     const Saturation its = saturation_of(own, part.gyroscope_range);
     for (std::size_t k = 0; k < own.size(); ++k) found.at_range[part.first + k] = its.at_range[k];
-    if (its.range && (!found.range || *its.range > *found.range)) found.range = its.range;
+    Saturation::Part p;
+    p.range = its.range;
+    p.stated = its.range && part.gyroscope_range && *its.range == *part.gyroscope_range;
+    found.parts.push_back(p);
+    double top = 0.0;
+    for (const Eigen::Vector3d& w : own) top = std::max(top, w.cwiseAbs().maxCoeff());
+    tops.push_back(top);
+  }
+  // A range found from one recording's samples, refuted by another with no stated range that
+  // reads past its band: one phone's gyroscope has one range.
+  for (std::size_t a = 0; a < found.parts.size(); ++a) {
+    Saturation::Part& p = found.parts[a];
+    if (!p.range || p.stated) continue;
+    for (std::size_t b = 0; b < found.parts.size(); ++b)
+      if (b != a && !recording.parts[b].gyroscope_range &&
+          tops[b] > (1.0 + kFullScaleAbove) * *p.range) {
+        p.range.reset();
+        const RecordingPart& part = recording.parts[a];
+        std::fill(found.at_range.begin() + part.first, found.at_range.begin() + part.last + 1,
+                  false);
+        break;
+      }
+  }
+  for (std::size_t a = 0; a < found.parts.size(); ++a) {
+    const RecordingPart& part = recording.parts[a];
+    found.parts[a].samples = static_cast<int>(std::count(
+        found.at_range.begin() + part.first, found.at_range.begin() + part.last + 1, true));
+    const std::optional<double>& range = found.parts[a].range;
+    if (range && (!found.range || *range > *found.range)) found.range = range;
   }
   return found;
+}
+
+std::string saturation_note(const Saturation& saturation, const std::vector<RecordingPart>& parts,
+                            const std::vector<int>& in_tosses) {
+  // How each recording's range was known, and the recordings named under each range in turn.
+  const auto how = [](const Saturation::Part& p) -> std::string {
+    if (p.stated) return "as its export states";
+    const bool full_scale = std::find(std::begin(kFullScales), std::end(kFullScales), *p.range) !=
+                            std::end(kFullScales);
+    return full_scale ? "a standard full scale" : "its top read flat";
+  };
+  const std::size_t n = std::min(saturation.parts.size(), parts.size());
+  std::vector<bool> told(n, false);
+  std::string text;
+  int tossed = 0;
+  for (std::size_t g = 0; g < n; ++g) {
+    const Saturation::Part& p = saturation.parts[g];
+    if (!p.range || told[g]) continue;
+    std::vector<std::size_t> alike;
+    for (std::size_t h = g; h < n; ++h)
+      if (!told[h] && saturation.parts[h].range == p.range && how(saturation.parts[h]) == how(p)) {
+        alike.push_back(h);
+        told[h] = true;
+      }
+    char range[120];
+    std::snprintf(range, sizeof range, "±%.6g rad/s (%.0f °/s, %s) in ", *p.range,
+                  *p.range * 180.0 / std::numbers::pi, how(p).c_str());
+    text += (text.empty() ? "" : "; ") + std::string(range);
+    for (std::size_t k = 0; k < alike.size(); ++k) {
+      const int samples = saturation.parts[alike[k]].samples;
+      text += (k == 0                  ? ""
+               : k + 1 == alike.size() ? " and "
+                                       : ", ") +
+              parts[alike[k]].name + " (" + std::to_string(samples) +
+              (samples == 1 ? " sample)" : " samples)");
+      if (alike[k] < in_tosses.size()) tossed += in_tosses[alike[k]];
+    }
+  }
+  if (text.empty()) return {};
+  return "the gyroscope saturated at " + text + "; " + std::to_string(tossed) +
+         " of them in the tosses, left out of the fit";
 }
 
 }  // namespace bookspin::fit

@@ -3,6 +3,7 @@
 // range (±2000 °/s, 34.9 rad/s, on most phones), and a fast throw reads flat there for several
 // samples. Those samples are the range, not the motion: the fit leaves them out.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "fit/recording.hpp"
@@ -16,6 +17,13 @@ struct Saturation {
   std::optional<double> range;
   /// One per sample of the recording: true where some component reads the range.
   std::vector<bool> at_range;
+  /// One per recording pooled (GyroRecording::parts, in order): where its gyroscope saturated.
+  struct Part {
+    std::optional<double> range;  ///< rad/s, or nullopt where it did not
+    bool stated = false;          ///< the range its export states, not found from its samples
+    int samples = 0;              ///< its samples at the range
+  };
+  std::vector<Part> parts;
 };
 
 /// The samples of `recording` at its gyroscope's range. Where the export states the range
@@ -28,9 +36,24 @@ struct Saturation {
 /// component reads it (within 1e-6, relative) at kMinFlatSamples consecutive samples or more; a
 /// smooth peak reaches its top at one sample, a clipped one stays there. No range, no sample
 /// marked. Searched recording by recording (its `parts`: pool_recordings), each on its samples
-/// as measured with its own stated range; `range` is then the largest found. Throws
-/// std::logic_error for a recording not pooled.
+/// as measured with its own stated range; `range` is then the largest found. A range found from
+/// one recording's samples (none stated) is refuted, and its samples unmarked, where another
+/// recording pooled with it that states no range either reads past its band (above
+/// 1 + kFullScaleAbove times it): recordings pooled as one body's with no stated range are taken
+/// as one phone's, and a gyroscope that read 33.7 rad/s did not stop at 17.45 (a peak of one
+/// sample at a full scale's band is otherwise a clip). Throws std::logic_error for a recording
+/// not pooled.
 Saturation find_saturation(const GyroRecording& recording);
+
+/// The fit's note on `saturation` (docs/phone-lab.md, "Saturation"): each recording of `parts`
+/// that saturated named, with its samples at the range, the range (rad/s and °/s) and how it was
+/// known (its export states it, a standard full scale, or its top read flat), then how many of
+/// them lie in the tosses (`in_tosses`, one count per part), left out of the fit; recordings
+/// alike in range and how it was known named together: "the gyroscope saturated at ±34.9066
+/// rad/s (2000 °/s, a standard full scale) in 12-10-56 (1 sample) and 12-13-01 (2 samples); 0 of
+/// them in the tosses, left out of the fit". Empty where nothing saturated.
+std::string saturation_note(const Saturation& saturation, const std::vector<RecordingPart>& parts,
+                            const std::vector<int>& in_tosses);
 
 /// rad/s: the standard full scales of MEMS gyroscopes, ±250, 500, 1000, 2000 and 4000 °/s.
 inline constexpr double kFullScales[] = {4.363323129985824, 8.726646259971648, 17.453292519943297,

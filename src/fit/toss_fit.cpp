@@ -61,20 +61,6 @@ std::vector<TossData> toss_data(const GyroRecording& recording, const FlightSear
   return data;
 }
 
-/// The body's note on a saturated recording: how many samples read the range, how many of them
-/// in the tosses.
-std::string saturation_note(const Saturation& saturation, const std::vector<TossData>& data) {
-  int count = 0, clipped = 0;
-  for (const TossData& d : data) count += d.saturated;
-  for (bool at : saturation.at_range) clipped += at ? 1 : 0;
-  char line[300];
-  std::snprintf(line, sizeof line,
-                "the gyroscope saturated: %d sample(s) of the recording read its range, "
-                "±%.6g rad/s (%.0f °/s); %d of them in the tosses, left out of the fit",
-                clipped, *saturation.range, *saturation.range * 180.0 / kPi, count);
-  return line;
-}
-
 /// Which recordings' bias corrections the joint fit frees, and within what (docs/phone-lab.md,
 /// "The bias"): a recording's correction is fitted from two or more of its flights, within its
 /// still rest's Rest::bound() where it has one, freely where it has none.
@@ -661,7 +647,9 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   const Saturation saturation = find_saturation(recording);
   std::vector<TossData> data = toss_data(recording, search, saturation);
   if (saturation.range) {
-    body.notes.push_back(saturation_note(saturation, data));
+    std::vector<int> in_tosses(recording.parts.size(), 0);
+    for (const TossData& d : data) in_tosses[d.group] += d.saturated;
+    body.notes.push_back(saturation_note(saturation, recording.parts, in_tosses));
     result.saturation_range = saturation.range;
   }
   const bool fixed = settings.moments.has_value();
@@ -859,16 +847,28 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   // Flights by hand are the user's, fitted as given: the ends' term weighs the finder's ends.
   FitResult fit;
   try {
-    fit = fit_with_bias_rule(recording, search, settings, settings.trim_ends ? &search : nullptr);
-  } catch (const InputError& e) {
-    const std::string cause = units_cause(recording, search, settings, std::nullopt);
-    if (cause.empty()) throw;
-    throw InputError(std::string(e.what()) + "; " + cause);
+    try {
+      fit = fit_with_bias_rule(recording, search, settings, settings.trim_ends ? &search : nullptr);
+    } catch (const InputError& e) {
+      const std::string cause = units_cause(recording, search, settings, std::nullopt);
+      if (cause.empty()) throw;
+      throw InputError(std::string(e.what()) + "; " + cause);
+    }
+    if (settings.trim_ends)
+      fit = trim_to_free_flight(recording, std::move(fit), [&](const FlightSearch& trimmed) {
+        return fit_with_bias_rule(recording, trimmed, settings, &search);
+      });
+  } catch (const physics::ExactHorizonError& e) {
+    // Moments given so far apart that the exact motion about the smallest turns past its time
+    // horizon within a flight (docs/physics.md §8, "How far in time"): the ratio is the cause.
+    if (!settings.moments) throw;
+    const Eigen::Vector3d& m = *settings.moments;
+    char ratio[80];
+    std::snprintf(ratio, sizeof ratio, "%.3g", m.minCoeff() / m.maxCoeff());
+    throw InputError(recording.source +
+                     ": the moments given are too far apart to fit (the smallest " + ratio +
+                     " of the largest): " + e.what());
   }
-  if (settings.trim_ends)
-    fit = trim_to_free_flight(recording, std::move(fit), [&](const FlightSearch& trimmed) {
-      return fit_with_bias_rule(recording, trimmed, settings, &search);
-    });
   // Every toss flagged: mixed units, where taking an axis as °/s makes them fit.
   if (std::all_of(fit.tosses.begin(), fit.tosses.end(),
                   [](const TossFit& t) { return t.poor_fit; })) {

@@ -115,6 +115,26 @@ TEST(RealRecordings, EveryClippedRecordingIsNamedAndNoOther) {
     const Saturation saturation = find_saturation(real(name));
     EXPECT_FALSE(saturation.range.has_value()) << name;
   }
+  // Pooled, one phone's seven: each recording's clip kept (none reads past ±2000 °/s's band),
+  // and the note names the four that clipped, each with its own count, and no other.
+  std::vector<GyroRecording> all;
+  for (const char* name :
+       {"12-10-56", "12-13-01", "12-13-51", "12-22-44", "12-29-59", "12-38-00", "12-44-51"})
+    all.push_back(read_recording(real_dir() / name));
+  const GyroRecording pooled = pool_recordings(all);
+  const Saturation saturation = find_saturation(pooled);
+  const std::string note =
+      saturation_note(saturation, pooled.parts, std::vector<int>(pooled.parts.size(), 0));
+  for (std::size_t g = 0; g < pooled.parts.size(); ++g) {
+    const std::string& name = pooled.parts[g].name;
+    const bool clipped = name != "12-22-44" && name != "12-38-00" && name != "12-44-51";
+    EXPECT_EQ(saturation.parts[g].range.has_value(), clipped) << name;
+    EXPECT_EQ(note.find(name + " (") != std::string::npos, clipped) << name << ": " << note;
+  }
+  EXPECT_EQ(note.find("the gyroscope saturated at ±34.9066 rad/s (2000 °/s, a standard full "
+                      "scale) in 12-10-56 ("),
+            0u)
+      << note;
 }
 
 // No fitted drag rate is below zero, alone or pooled; those the fit wanted below (12-13-51's

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "common/errors.hpp"
@@ -147,6 +148,48 @@ TEST(Saturation, PooledRecordingsAreSearchedEachOnItsOwn) {
   }
   EXPECT_GT(in_a, 10);
   EXPECT_GE(in_b, 3);
+}
+
+// One phone's two recordings, no range stated (an iPhone's export): a's only peak is one sample
+// at 17.4533 rad/s (±1000 °/s's band) between neighbours at 5 rad/s, which alone reads as a spike
+// cut flat; b's smooth peak reaches 33.7 rad/s. Pooled, the gyroscope that read 33.7 did not stop
+// at 17.45: a's range is refuted and nothing is marked. Given b's own stated range (another
+// phone's), a's clip stands, and the note names a, not b.
+TEST(Saturation, ARangeAnotherRecordingOfThePhoneReadsPastIsNoRange) {
+  const auto recording = [](const std::string& name, double peak, bool spike) {
+    std::vector<double> t;
+    std::vector<Eigen::Vector3d> omega;
+    for (int i = 0; i < 200; ++i) {
+      t.push_back(0.01 * i);
+      const double swing = spike ? 5.0 * std::sin(0.05 * i) : peak * std::sin(0.02 * i);
+      omega.emplace_back(0.3, swing, -0.2);
+    }
+    if (spike) omega[100].y() = peak;
+    GyroRecording r = samples_recording(name, t, omega);
+    r.source = name + ".csv";
+    return r;
+  };
+  const GyroRecording a = recording("a", 17.4533, true), b = recording("b", 33.7, false);
+  const Saturation alone = find_saturation(pool_recordings({a}));
+  ASSERT_TRUE(alone.range.has_value());
+  EXPECT_DOUBLE_EQ(*alone.range, kFullScales[2]);
+  EXPECT_EQ(std::count(alone.at_range.begin(), alone.at_range.end(), true), 1);
+
+  const GyroRecording pooled = pool_recordings({a, b});
+  const Saturation both = find_saturation(pooled);
+  EXPECT_FALSE(both.range.has_value());
+  EXPECT_EQ(std::count(both.at_range.begin(), both.at_range.end(), true), 0);
+  EXPECT_EQ(saturation_note(both, pooled.parts, {0, 0}), "");
+
+  GyroRecording other_phone = b;
+  other_phone.gyroscope_range = 34.906586;
+  const GyroRecording two_phones = pool_recordings({a, other_phone});
+  const Saturation apart = find_saturation(two_phones);
+  ASSERT_TRUE(apart.range.has_value());
+  EXPECT_EQ(std::count(apart.at_range.begin(), apart.at_range.end(), true), 1);
+  EXPECT_EQ(saturation_note(apart, two_phones.parts, {1, 0}),
+            "the gyroscope saturated at ±17.4533 rad/s (1000 °/s, a standard full scale) in a (1 "
+            "sample); 1 of them in the tosses, left out of the fit");
 }
 
 }  // namespace

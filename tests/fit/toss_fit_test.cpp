@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
+#include "common/errors.hpp"
 #include "fit/fit_tables.hpp"
 #include "fit/flights.hpp"
 #include "fit/pool.hpp"
@@ -136,6 +139,39 @@ TEST(TossFit, GivenMomentsAreKeptAndOneTossIsPredicted) {
   const FitResult alone =
       fit_recording(as_recording(synthetic), find_flights(as_recording(synthetic)));
   EXPECT_FALSE(alone.tosses[0].half_period_predicted.has_value());
+}
+
+// Given moments however far apart, short of breaking the triangle inequality (a rod: 10^-e, 1, 1,
+// at any scale): the fit gives finite ratios, or refuses in one line naming the ratio as the
+// cause, where the exact motion about the smallest axis turns past its time horizon within a
+// flight (docs/physics.md §8, "How far in time"); never the horizon's bare message.
+TEST(TossFit, GivenMomentsTooFarApartAreNamedAsTheCause) {
+  const test::SyntheticRecording synthetic =
+      test::make_recording(test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.3}}, 23);
+  const GyroRecording recording = as_recording(synthetic);
+  const FlightSearch search = find_flights(recording);
+  int refused = 0;
+  for (double e : {3.0, 20.0, 60.0, 120.0, 150.0, 300.0})
+    for (double scale : {1.0, 1e-150, 1e150}) {
+      if (scale * std::pow(10.0, -e) == 0.0) continue;  // beyond a double
+      FitSettings settings;
+      settings.moments = Eigen::Vector3d(std::pow(10.0, -e) * scale, scale, scale);
+      try {
+        const FitResult fit = fit_recording(recording, search, settings);
+        EXPECT_TRUE(fit.body.ratios.allFinite()) << e;
+      } catch (const InputError& error) {
+        ++refused;
+        const std::string what = error.what();
+        char ratio[40];
+        std::snprintf(ratio, sizeof ratio, "(the smallest %.3g of the largest)",
+                      std::pow(10.0, -e));
+        EXPECT_EQ(
+            what.find(recording.source + ": the moments given are too far apart to fit " + ratio),
+            0u)
+            << what;
+      }
+    }
+  EXPECT_GT(refused, 0);
 }
 
 // Given moments with two equal (1, 1, 1; or 2, 5, 2 in any order) say that there is no
