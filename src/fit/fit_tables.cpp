@@ -219,6 +219,14 @@ std::vector<std::string> fit_summary(const FitResult& fit, Reader reader) {
       "result (T/2 measured against T/2 predicted from the other "
       "tosses, ± 2σ):"};
   for (std::string& line : fit_result_lines(fit)) lines.push_back(std::move(line));
+  // Then a fit that describes no motion read, before anything else: a toss whose residual is a
+  // large share of |ω| (times or ω in other units, not a free flight).
+  for (std::size_t k = 0; k < fit.tosses.size(); ++k)
+    if (fit.tosses[k].residual_share > kLargeResidualShare)
+      lines.push_back("warning: toss " + std::to_string(k + 1) + "'s fit leaves " +
+                      fixed(100.0 * fit.tosses[k].residual_share, 0) +
+                      " % of |ω| unexplained (RMS): no free rigid body's motion as read, its "
+                      "values not to be trusted (are the times in s and ω in rad/s?)");
   // Each value to its σ's precision (common/number_text.hpp, plus_minus).
   const auto with_sigma = [](const Eigen::Vector3d& v, const Eigen::Vector3d& sigma) {
     return plus_minus(v[0], sigma[0]) + ", " + plus_minus(v[1], sigma[1]) + ", " +

@@ -28,8 +28,14 @@ CsvTable fit_body_csv(const FitResult& fit);
 /// module's (the command line's remedies; its errors name its own arguments, fit_options.hpp).
 enum class Reader { command_line, page, python };
 
+/// A toss's residual share (TossFit::residual_share) past which the summary warns first: a
+/// quarter of |ω|, five times the flag's 5 % (docs/phone-lab.md, "Flags").
+inline constexpr double kLargeResidualShare = 0.25;
+
 /// What the fit says besides its CSVs: the result first (fit_result_lines: one table, measured
-/// against predicted), the bias (one line a recording), then the details: the flights kept, the
+/// against predicted), then a warning for each toss whose residual is over kLargeResidualShare
+/// of |ω| ("warning: toss 2's fit leaves 127 % of |ω| unexplained …"), the bias (one line a
+/// recording), then the details: the flights kept, the
 /// stretches dropped (one
 /// line per reason with their count, a reason given once with its stretch's times:
 /// fit_dropped_lines lists every one), the body's moments and notes

@@ -7,9 +7,11 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <regex>
+#include <utility>
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
@@ -165,22 +167,35 @@ bool is_omega_total(std::string name) {
   return bare == "w" || bare == "omega";
 }
 
-/// A labelled header: each ω column's scale to rad/s, and the scale of a fifth column holding
-/// |ω| (nullopt without one).
+/// Seconds in one unit a time column's header states: 1 for s (or none stated), 1e-3 for ms,
+/// 1e-6 for µs (us, µs or μs), 1e-9 for ns; nullopt for any other unit.
+std::optional<double> time_unit_seconds(const std::string& unit) {
+  if (unit.empty() || unit == "s") return 1.0;
+  if (unit == "ms") return 1e-3;
+  if (unit == "us" || unit == "\u00b5s" || unit == "\u03bcs") return 1e-6;
+  if (unit == "ns") return 1e-9;
+  return std::nullopt;
+}
+
+/// A labelled header: the time column's scale to seconds, each ω column's to rad/s, and the
+/// scale of a fifth column holding |ω| (nullopt without one).
 struct LabelledHeader {
+  double time_scale = 1.0;
   std::array<double, 3> scale{};
   std::optional<double> total_scale;
 };
 
 /// A header naming time and ω about x, y, z in that order ("t (s)", "ωₓ (rad/s)", "ωᵧ
 /// (rad/s)", "ωᶻ (rad/s)"), and optionally |ω| after them ("ω_total (rad/s)"); a time without
-/// its unit is in seconds (docs/phone-lab.md, "The recording"). Nullopt for any other header.
+/// its unit is in seconds, one in ms, µs or ns converted (docs/phone-lab.md, "The recording").
+/// Nullopt for any other header.
 std::optional<LabelledHeader> labelled_gyro_header(const std::vector<std::string>& header) {
   if (header.size() != 4 && header.size() != 5) return std::nullopt;
   const auto [time, time_unit] = name_and_unit(header[0]);
-  if ((time != "t" && time != "time") || (!time_unit.empty() && time_unit != "s"))
-    return std::nullopt;
+  const std::optional<double> seconds = time_unit_seconds(time_unit);
+  if ((time != "t" && time != "time") || !seconds) return std::nullopt;
   LabelledHeader labelled;
+  labelled.time_scale = *seconds;
   for (int i = 0; i < 3; ++i) {
     const auto [name, unit] = name_and_unit(header[i + 1]);
     const std::optional<double> to_rad = omega_unit(unit);
@@ -333,7 +348,9 @@ std::optional<Decimal> decimal_of(std::string text, bool decimal_comma) {
   if (all.empty()) return std::nullopt;
   long exponent = 0;
   if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
-    const std::optional<double> e = read_number(text.substr(i + 1));
+    // The exponent's own sign, written or not ("e15", "e+15", "e-3").
+    const std::size_t at = i + 1 + (i + 1 < text.size() && text[i + 1] == '+' ? 1 : 0);
+    const std::optional<double> e = read_number(text.substr(at));
     if (!e || std::fabs(*e) > 1e6 || *e != std::floor(*e)) return std::nullopt;
     exponent = static_cast<long>(*e);
   } else if (i != text.size()) {
@@ -484,6 +501,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
                            "\"Gyroscope x (rad/s)\", ... or t,wx,wy,wz");
   const std::array<double, 3> scale =
       labelled ? labelled->scale : std::array<double, 3>{1.0, 1.0, 1.0};
+  const double time_scale = labelled ? labelled->time_scale : 1.0;
   // |ω| beside the axes (phyphox's "Absolute (rad/s)", a text export's "ω_total"): checked.
   double total_scale = 1.0;  // phyphox's Absolute is in rad/s
   bool has_total = !labelled && phyphox && header.size() == 5;
@@ -511,7 +529,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
         throw InputError(file, number, header[c], "not a number: " + quoted_cell(cells[c]));
       if (!std::isfinite(*value))
         throw InputError(file, number, header[c], "not a finite number: " + quoted_cell(cells[c]));
-      values[c] = *value;
+      values[c] = c == 0 ? time_scale * *value : *value;
     }
     if (!recording.t.empty() && values[0] <= recording.t.back())
       throw InputError(
@@ -527,7 +545,34 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
     throw InputError(file, 0, "",
                      "a gyroscope recording of " + std::to_string(recording.t.size()) +
                          " samples; at least " + std::to_string(kMinSamples) + " are needed");
+  if (const std::string unit = time_unit_cause(recording.t); !unit.empty())
+    throw InputError(file, header_line, header[0], unit);
   return recording;
+}
+
+std::string time_unit_cause(const std::vector<double>& t) {
+  if (t.size() < 2) return {};
+  std::vector<double> steps;
+  steps.reserve(t.size() - 1);
+  for (std::size_t i = 1; i < t.size(); ++i) steps.push_back(t[i] - t[i - 1]);
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  const double step = steps[steps.size() / 2];
+  if (!(step > kMaxSampleStep)) return {};
+  // The unit that puts the median step within a gyroscope's 0.1–100 ms.
+  std::string likely = "in another unit";
+  for (const auto& [unit, seconds] :
+       {std::pair<const char*, double>{"ms", 1e-3}, {"µs", 1e-6}, {"ns", 1e-9}})
+    if (step * seconds >= 1e-4 && step * seconds <= 0.1) {
+      likely = std::string("in ") + unit;
+      break;
+    }
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "the samples lie %.4g s apart (the median step), where a phone's gyroscope "
+                "samples every 1–40 ms: are the times %s? Give them in seconds, or name the "
+                "unit in the header (\"t (ms)\")",
+                step, likely.c_str());
+  return text;
 }
 
 GyroRecording samples_recording(const std::string& name, std::vector<double> t,
@@ -546,6 +591,8 @@ GyroRecording samples_recording(const std::string& name, std::vector<double> t,
   if (static_cast<int>(t.size()) < kMinSamples)
     throw InputError(where + "a gyroscope recording of " + std::to_string(t.size()) +
                      " samples; at least " + std::to_string(kMinSamples) + " are needed");
+  if (const std::string unit = time_unit_cause(t); !unit.empty())
+    throw InputError(where + "t: " + unit);
   GyroRecording recording;
   recording.name = file_safe(name);
   recording.source = name;

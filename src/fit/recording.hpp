@@ -84,6 +84,15 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
 GyroRecording samples_recording(const std::string& name, std::vector<double> t,
                                 std::vector<Eigen::Vector3d> omega);
 
+/// s: the longest median step between samples a gyroscope recording of a hand toss may have (a
+/// phone samples every 1–40 ms; 2 Hz is no recording of a flip).
+inline constexpr double kMaxSampleStep = 0.5;
+
+/// Why times `t` (s, increasing) are no gyroscope's: their median step over kMaxSampleStep,
+/// naming the unit (ms, µs or ns) that puts it within 0.1–100 ms ("the samples lie 10.03 s
+/// apart (the median step), … are the times in ms? …"); "" where they are plausible.
+std::string time_unit_cause(const std::vector<double>& t);
+
 /// The PAUSE events' experiment times of a phyphox `meta/time.csv` `text`. Throws InputError.
 std::vector<double> parse_time_csv(std::string_view text, const std::string& file);
 

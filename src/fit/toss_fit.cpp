@@ -541,6 +541,9 @@ TossFit toss_values(const std::vector<TossData>& data, std::size_t k, const Para
     max_angle = std::max(max_angle, std::acos(std::min(1.0, std::abs(wf[circled]) / wf.norm())));
   }
   toss.residual_rms = std::sqrt(sum2 / d.tau.size());
+  double mean_omega = 0.0;
+  for (const Eigen::Vector3d& w : d.omega) mean_omega += w.norm() / d.omega.size();
+  toss.residual_share = mean_omega > 0.0 ? toss.residual_rms / mean_omega : 0.0;
   toss.saturated = d.at_range;
   toss.flag = toss_flag(d, residual, saturation, noise,
                         body.axes * body.ratios.asDiagonal() * body.axes.transpose());

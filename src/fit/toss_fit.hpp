@@ -82,6 +82,9 @@ struct TossFit {
   std::optional<int> predicted_from_tosses;
   std::optional<double> predicted_from_seconds;
   double residual_rms = 0.0;  ///< rad/s, RMS of |ω_measured − ω_fitted| over the flight
+  /// residual_rms over the flight's mean measured |ω|: past kLargeResidualShare the summary
+  /// says so first (fit_tables.hpp, fit_summary).
+  double residual_share = 0.0;
   /// Fractional loss of the measured |L| (L = I ω with the fitted I) per second (1/s), from a
   /// straight line fitted to |L|(t): 0 for torque-free flight, > 0 under air drag.
   double L_decay = 0.0;

@@ -78,9 +78,13 @@ std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vec
   std::vector<double> block_rms;
   for (int b = 0; b < blocks; ++b)
     block_rms.push_back(block_n[b] ? std::sqrt(block2[b] / block_n[b]) : 0.0);
-  std::vector<double> sorted = block_rms;
-  std::nth_element(sorted.begin(), sorted.begin() + blocks / 2, sorted.end());
-  const double median = sorted[blocks / 2];
+  // The typical block among those holding samples: where the samples lie further apart than a
+  // block, the empty ones say nothing of the residual.
+  std::vector<double> sorted;
+  for (int b = 0; b < blocks; ++b)
+    if (block_n[b]) sorted.push_back(block_rms[b]);
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double median = sorted[sorted.size() / 2];
   const double floor = noise ? std::sqrt(3.0) * 5.0 * *noise : 0.0;  // |r| of 5σ per component
   int worst = 0;
   for (int b = 1; b < blocks; ++b)

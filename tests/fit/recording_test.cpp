@@ -7,8 +7,11 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "support/scratch.hpp"
@@ -314,9 +317,13 @@ TEST(Recording, StampsADoubleCannotTellApartAreRefusedSayingSo) {
             "1000000000000000.011 in the file, but a double cannot tell them apart: both read as "
             "1e+15 s, where a double's step is 0.125 s (subtract the first time from every time, "
             "or write them as offsets)");
-  EXPECT_NE(error_of("t,wx,wy,wz\n1e15,1,2,3\n1.00000000000000001e15,1,2,3\n")
-                .find("a double cannot tell them apart"),
-            std::string::npos);
+  // However its exponent is written: e15, e+15, E+015.
+  for (const char* exponent : {"e15", "e+15", "E+015"})
+    EXPECT_NE(
+        error_of("t,wx,wy,wz\n1e15,1,2,3\n1.00000000000000001" + std::string(exponent) + ",1,2,3\n")
+            .find("a double cannot tell them apart"),
+        std::string::npos)
+        << exponent;
   for (const char* later : {"0.5", "0.50", "5e-1", "0.4999", "-0.6"})
     EXPECT_EQ(error_of("t,wx,wy,wz\n0.5,1,2,3\n" + std::string(later) + ",1,2,3\n"),
               "bad.csv:3: t: time does not increase (" + std::string(later) +
@@ -326,6 +333,56 @@ TEST(Recording, StampsADoubleCannotTellApartAreRefusedSayingSo) {
   EXPECT_NE(error_of("t;wx;wy;wz\n1000000000000000,011;1;2;3\n1000000000000000,021;1;2;3\n")
                 .find("a double cannot tell them apart"),
             std::string::npos);
+}
+
+// The times' unit: a header that names it (ms, µs, ns) is converted to seconds, the same samples
+// as in seconds to rounding; under a plain `t`, times whose median step is seconds or more (a
+// phone samples every 1–40 ms) are refused naming the unit that puts the step within a
+// gyroscope's, at every rate from 25 Hz to 10 kHz, through the file door and the arrays' door.
+TEST(Recording, TimesInAnotherUnitAreConvertedWhereNamedAndRefusedNamingItWhereNot) {
+  const test::SyntheticRecording written = small_recording();
+  const GyroRecording seconds =
+      parse_gyro_csv(test::raw_data_csv(written, test::Dialect::comma), "s.csv", "s");
+  for (const auto& [unit, per_second] :
+       {std::pair<const char*, double>{"ms", 1e3}, {"µs", 1e6}, {"us", 1e6}, {"ns", 1e9}}) {
+    std::string text = "t (" + std::string(unit) + "),wx,wy,wz\n";
+    std::string bare = "t,wx,wy,wz\n";
+    char row[160];
+    for (std::size_t i = 0; i < seconds.t.size(); ++i) {
+      std::snprintf(row, sizeof row, "%.17g,%.17g,%.17g,%.17g\n", seconds.t[i] * per_second,
+                    seconds.omega[i][0], seconds.omega[i][1], seconds.omega[i][2]);
+      text += row;
+      bare += row;
+    }
+    const GyroRecording read = parse_gyro_csv(text, "u.csv", "u");
+    ASSERT_EQ(read.t.size(), seconds.t.size()) << unit;
+    for (std::size_t i = 0; i < read.t.size(); ++i)
+      ASSERT_NEAR(read.t[i], seconds.t[i], 1e-12 * (1 + seconds.t[i])) << unit << " row " << i;
+    const std::string said = error_of(bare);
+    const std::string expected_unit = per_second == 1e3 ? "ms" : per_second == 1e6 ? "µs" : "ns";
+    EXPECT_EQ(said.find("bad.csv:1: t: the samples lie "), 0u) << said;
+    EXPECT_NE(said.find("are the times in " + expected_unit + "?"), std::string::npos) << said;
+  }
+  // At 25 Hz, 100 Hz, 1 kHz and 10 kHz in ms: each named; in seconds, each read.
+  for (double rate : {25.0, 100.0, 1000.0, 10000.0}) {
+    std::vector<double> t_s, t_ms;
+    std::vector<Eigen::Vector3d> omega;
+    for (int i = 0; i < 50; ++i) {
+      t_s.push_back(i / rate);
+      t_ms.push_back(1e3 * i / rate);
+      omega.emplace_back(1.0, 2.0, 3.0);
+    }
+    EXPECT_NO_THROW(samples_recording("ok", t_s, omega)) << rate;
+    if (1e3 / rate > kMaxSampleStep) {
+      try {
+        samples_recording("anna", t_ms, omega);
+        ADD_FAILURE() << "times in ms read as seconds at " << rate << " Hz";
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("anna: t: the samples lie"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("in ms?"), std::string::npos) << e.what();
+      }
+    }
+  }
 }
 
 // Quoted cells as RFC 4180 reads them: a header's names, and meta/device.csv's cells holding
