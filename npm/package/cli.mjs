@@ -6,7 +6,7 @@
 // its one line on stderr; 1 when an output cannot be written; 70 for a bug). SCENARIO is
 // a scenario's name (flipcheck's scenarios()) or a scenario JSON that `export` wrote. Unlike the
 // command line it keeps no manifest: it judges and writes every time.
-import { mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
+import { linkSync, lstatSync, mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { basename } from "node:path";
 import { exportFiles, judgeCsv, readScenario, scenario, scenarios, version } from "./index.mjs";
 
@@ -60,31 +60,82 @@ function scenarioArg(arg) {
   throw new InputError(`flipcheck: no scenario "${arg}" (there: ${scenarios().join(", ")})`);
 }
 
-/** Writes `text` under a temporary name beside `path`: {temporary, path}, for place(). */
-function stage(path, text) {
-  const temporary = join(path.slice(0, path.length - basename(path).length) || ".", `.${basename(path)}.tmp`);
-  try {
-    writeFileSync(temporary, text);
-  } catch (e) {
-    rmSync(temporary, { force: true });
-    throw new OutputError(`cannot write "${path}": ${e.message}`);
-  }
-  return { temporary, path };
+/** The reason an OS call failed, as bookspin words it (strerror's text): "Is a directory". */
+function reason(e) {
+  const words = { EISDIR: "Is a directory", ENOTDIR: "Not a directory", EACCES: "Permission denied", ENOSPC: "No space left on device", EROFS: "Read-only file system" };
+  return words[e.code] ?? e.message;
 }
 
-/** Renames a staged file into place. */
-function place(temporary, path) {
+let serial = 0;
+/** A hidden name beside `path` for this run, `.<name>.<tag>-<pid>-<n>`, as bookspin names its
+ * temporaries (docs/outputs.md, "One run's outputs, all or nothing"). */
+function sibling(path, tag) {
+  const name = basename(path);
+  return join(path.slice(0, path.length - name.length) || ".", `.${name}.${tag}-${process.pid}-${serial++}`);
+}
+
+/** Puts the complete `temporary` of `path` in place, keeping what was there under a second
+ * name (a hard link; `aside`, null where there was none) until every file of the run is in
+ * place. Throws OutputError naming `path`, which is then as it was. */
+function putInPlace(temporary, path) {
+  let earlier;
+  try {
+    earlier = lstatSync(path);
+  } catch {
+    earlier = null;
+  }
+  if (earlier?.isDirectory()) throw new OutputError(`cannot replace a directory with output file "${path}": Is a directory`);
+  const aside = earlier ? sibling(path, "old") : null;
+  try {
+    if (aside) linkSync(path, aside);
+  } catch (e) {
+    throw new OutputError(`cannot move the earlier output aside "${path}": ${reason(e)}`);
+  }
   try {
     renameSync(temporary, path);
   } catch (e) {
-    throw new OutputError(`cannot write "${path}": ${e.message}`);
+    if (aside) rmSync(aside, { force: true });
+    throw new OutputError(`cannot rename temporary into place as "${path}": ${reason(e)}`);
+  }
+  return { path, aside };
+}
+
+/** Undoes putInPlace(): the earlier file back under its name (its bytes and inode), or the new
+ * one removed. Never throws. */
+function takeBack({ path, aside }) {
+  try {
+    if (aside) renameSync(aside, path);
+    else rmSync(path, { force: true });
+  } catch {
+    // Tidying: the error that led here is the one reported.
   }
 }
 
-/** Writes `text` to `path` whole: a temporary name, then renamed into place. */
-function writeWhole(path, text) {
-  const { temporary } = stage(path, text);
-  place(temporary, path);
+/** Writes `files` ([path, text] pairs) as one run's outputs, all or nothing, as `bookspin
+ * flipcheck` writes them (output::StagedFiles, docs/outputs.md "One run's outputs, all or
+ * nothing"): each written whole under its temporary name, then all put in place in order; where
+ * one cannot be, those already in place are undone, the earlier files back under their names, and
+ * every temporary removed. Throws OutputError naming the file that could not be written. */
+function writeTogether(files) {
+  const staged = [];
+  const placed = [];
+  try {
+    for (const [path, text] of files) {
+      const temporary = sibling(path, "tmp");
+      staged.push({ temporary, path });
+      try {
+        writeFileSync(temporary, text, { flag: "wx" });
+      } catch (e) {
+        throw new OutputError(`cannot write "${path}": ${reason(e)}`);
+      }
+    }
+    for (const { temporary, path } of staged) placed.push(putInPlace(temporary, path));
+  } catch (e) {
+    placed.reverse().forEach(takeBack);
+    for (const { temporary } of staged) rmSync(temporary, { force: true });
+    throw e;
+  }
+  for (const { aside } of placed) if (aside) rmSync(aside, { force: true });
 }
 
 function makeDir(dir) {
@@ -128,7 +179,7 @@ function judgeCommand(args) {
   const csv = header + judged.map((j) => j.csv.slice(j.csv.indexOf("\n") + 1)).join("");
   const target = inside(out, `${name}-judge.csv`);
   makeDir(out);
-  writeWhole(target, csv);
+  writeTogether([[target, csv]]);
   judged.forEach((j, i) => console.log(`${name} ${files[i]}: ${j.line}`));
   console.log(`wrote: ${target}`);
   return judged.every((j) => j.pass) ? 0 : EXIT_JUDGED_FAIL;
@@ -152,14 +203,7 @@ function exportCommand(args) {
     texts.set(o.json, o.files.json).set(o.csv, o.files.csv);
   }
   makeDir(out);
-  const staged = [];
-  try {
-    for (const [path, text] of texts) staged.push(stage(path, text));
-  } catch (e) {
-    staged.forEach(({ temporary }) => rmSync(temporary, { force: true }));
-    throw e;
-  }
-  for (const { temporary, path } of staged) place(temporary, path);
+  writeTogether(texts);
   for (const { json, csv } of outputs) console.log(`exported: ${json}, ${csv}`);
 }
 
