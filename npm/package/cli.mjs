@@ -54,7 +54,8 @@ function readText(path, what) {
  * (readScenario: the same reader, so the same refusals in the same words). */
 function scenarioArg(arg) {
   if (scenarios().includes(arg)) return scenario(arg);
-  if (arg.endsWith(".json") || arg.includes("/")) {
+  // One route per file: its extension read in any case, as the command line and Python read it.
+  if (/\.json$/i.test(arg) || arg.includes("/")) {
     return readScenario(readText(arg, "the scenario file"), arg);
   }
   throw new InputError(`flipcheck: no scenario "${arg}" (there: ${scenarios().join(", ")})`);

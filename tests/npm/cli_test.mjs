@@ -72,3 +72,17 @@ test("judge: a judgement CSV whose name is a folder: exit 1, the folder kept, no
   assert.deepEqual(contents(join(room, "out")), before);
   assert.deepEqual(readdirSync(join(room, "out", "mujoco-test-box-judge.csv")), []);
 });
+
+test("a scenario JSON named with its extension in any case is read as a scenario JSON", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  assert.equal(npx(room, "export", "mujoco-test-box", "-o", "kit").status, 0);
+  const json = readFileSync(join(room, "kit", "mujoco-test-box.json"));
+  const lower = npx(room, "judge", "kit/mujoco-test-box.json", "kit/mujoco-test-box-exact.csv", "-o", "lower");
+  assert.equal(lower.status, 0, lower.stderr);
+  for (const spelled of ["scen.JSON", "scen.Json"]) {
+    writeFileSync(join(room, spelled), json);
+    const run = npx(room, "judge", spelled, "kit/mujoco-test-box-exact.csv", "-o", spelled + "-out");
+    assert.equal(run.status, 0, run.stderr);
+    assert.equal(readFileSync(join(room, spelled + "-out", "mujoco-test-box-judge.csv"), "utf8"), readFileSync(join(room, "lower", "mujoco-test-box-judge.csv"), "utf8"));
+  }
+});
