@@ -23,6 +23,7 @@
 #include "analysis/judgement.hpp"
 #include "analysis/scenario_file.hpp"
 #include "common/errors.hpp"
+#include "common/text_lines.hpp"
 #include "common/version.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
@@ -147,11 +148,20 @@ val scenario_file(const std::string& scenario, const std::string& file) {
 
 std::string version() { return bookspin::version(); }
 
+/// `text` quoted for a one-line message as every door quotes a name or a cell: whole up to 80
+/// characters, else its first 60 and its length (common/text_lines.hpp).
+std::string quoted_cell(const std::string& text) { return bookspin::quoted_cell(text); }
+
+/// The same unquoted (a key path).
+std::string cut_cell(const std::string& text) { return bookspin::cut_cell(text); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(flipcheck_npm) {
   emscripten::function("scenarioFile", &scenario_file);
   emscripten::function("version", &version);
+  emscripten::function("quotedCell", &quoted_cell);
+  emscripten::function("cutCell", &cut_cell);
   emscripten::function("judgeCsv", &judge_csv);
   emscripten::function("judgeArrays", &judge_arrays);
   emscripten::function("exactMotion", &exact_motion);

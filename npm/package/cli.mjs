@@ -53,12 +53,10 @@ function readText(path, what) {
 /** A scenario by name, or the JSON file export wrote, read as `bookspin flipcheck` reads it
  * (readScenario: the same reader, so the same refusals in the same words). */
 function scenarioArg(arg) {
-  if (scenarios().includes(arg)) return scenario(arg);
   // One route per file: its extension read in any case, as the command line and Python read it.
-  if (/\.json$/i.test(arg) || arg.includes("/")) {
+  if (!scenarios().includes(arg) && (/\.json$/i.test(arg) || arg.includes("/")))
     return readScenario(readText(arg, "the scenario file"), arg);
-  }
-  throw new InputError(`flipcheck: no scenario "${arg}" (there: ${scenarios().join(", ")})`);
+  return scenario(arg); // a name, or the package's one line for no such name (the name cut)
 }
 
 /** The reason an OS call failed, as bookspin words it (strerror's text): "Is a directory". */
