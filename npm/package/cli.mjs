@@ -38,11 +38,12 @@ function inside(dir, name) {
   return join(dir, name);
 }
 
-/** The reason a file cannot be read, as bookspin's read_text_file() words it. */
-function readText(path, what) {
+/** The reason a file cannot be read, as bookspin's read_text_file() words it: its text, or with
+ * `bytes` its bytes (a Buffer), as the command line reads a motion file. */
+function readText(path, what, { bytes = false } = {}) {
   try {
     if (statSync(path).isDirectory()) throw new InputError(`${path}: cannot read ${what}: is a directory`);
-    return readFileSync(path, "utf8");
+    return bytes ? readFileSync(path) : readFileSync(path, "utf8");
   } catch (e) {
     if (e instanceof InputError) throw e;
     const reason = e.code === "ENOENT" ? "no such file" : e.code === "EACCES" ? "Permission denied" : e.message;
@@ -170,7 +171,7 @@ function judgeCommand(args) {
   const spec = scenarioArg(scenarioPath);
   if (!files.length) throw new InputError("flipcheck judge: nothing to judge: give MOTION files");
   // Every file read and judged before anything is written: a bad one is its one line.
-  const judged = files.map((file) => judgeCsv(spec, readText(file, "the motion file"), { file, motion: basename(file) }));
+  const judged = files.map((file) => judgeCsv(spec, readText(file, "the motion file", { bytes: true }), { file, motion: basename(file) }));
   const name = spec.scenario;
   // Each judgement's CSV is its header line and its row; the row may span lines (a file name
   // holding a line break, in double quotes): everything after the header is the row.

@@ -170,12 +170,14 @@ export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {
   return judgement(answer(wasm.judgeArrays(text, file, scenarioSha256(s), flat(t, "t"), flat(q, "q"), flat(omegaWorld, "omegaWorld"), "judge", motion)));
 }
 
-/** Judges a motion CSV's text, as `bookspin flipcheck judge SCENARIO FILE` judges the file
- * (`file` names it in messages and in the judgement's motion column). */
+/** Judges a motion CSV's text, or its bytes (a Uint8Array: a Buffer as readFileSync gives it, read
+ * byte for byte as the command line reads the file), as `bookspin flipcheck judge SCENARIO FILE`
+ * judges the file (`file` names it in messages and in the judgement's motion column). */
 export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}) {
   const s = spec(name);
   const scenarioJson = scenarioText(s);
-  return judgement(answer(wasm.judgeCsv(scenarioJson.text, scenarioJson.file, scenarioSha256(s), String(text), file, motion)));
+  const csv = text instanceof Uint8Array ? text : String(text);
+  return judgement(answer(wasm.judgeCsv(scenarioJson.text, scenarioJson.file, scenarioSha256(s), csv, file, motion)));
 }
 
 /** The in-process equivalent of `npx flipcheck judge`'s exit status for a test runner: judges

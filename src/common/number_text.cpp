@@ -9,28 +9,56 @@
 
 #include "common/errors.hpp"
 
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
+
 namespace bookspin {
 
 namespace {
+
+#if !(defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L) && defined(__EMSCRIPTEN__)
+/// The shortest digits that read back as `value`, the nearest of them to it, as JavaScript's
+/// Number.prototype.toExponential() spells them ("1.5e+2", "-3e-7"), into `out` (`size` bytes):
+/// its length. Where the C library would print and read back a double once for each count of
+/// digits, in WebAssembly's software long double (musl's printf and strtod), at about 3 µs
+/// each (docs/performance.md, "The npm package against the command line").
+EM_JS(int, javascript_exponential, (double value, char* out, int size),
+      { return stringToUTF8(value.toExponential(), out, size); });
+#endif
+
+#if defined(__EMSCRIPTEN__)
+/// The double nearest to the decimal number `text` (`length` ASCII bytes, checked by
+/// read_number()), as JavaScript's Number() reads it: correctly rounded, as strtod, which in
+/// WebAssembly reads through a software long double at about 2 µs a number.
+EM_JS(double, javascript_number, (const char* text, int length), {
+  var spelled = "";
+  for (var k = 0; k < length; ++k) spelled += String.fromCharCode(HEAPU8[text + k]);
+  return Number(spelled);
+});
+#endif
 
 /// `value` (finite) in the shortest text that reads back, as std::to_chars(first, last, value)
 /// spells it: the fewest significant digits that round-trip, in fixed or scientific notation
 /// ("1e-05", "1e+22"), whichever is shorter, fixed on a tie. std::to_chars where the library has
 /// it for doubles (__cpp_lib_to_chars); else (emscripten's libc++, which compiles the explorer
-/// page's writers) the digits from printf's "%.*e", correctly rounded, at 1, 2, … 17 digits until
-/// they read back, laid out here.
+/// page's and the npm package's writers) the digits of JavaScript's toExponential(), the fewest
+/// that read back, the nearest of them to `value` (as to_chars chooses them), laid out here.
 std::string shortest_text(double value) {
   char buffer[40];
 #if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
   return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
 #else
   if (value == 0.0) return std::signbit(value) ? "-0" : "0";
-  int precision = 0;
-  for (; precision < 17; ++precision) {
+#if defined(__EMSCRIPTEN__)
+  javascript_exponential(value, buffer, sizeof buffer);
+#else
+  for (int precision = 0; precision < 17; ++precision) {
     std::snprintf(buffer, sizeof buffer, "%.*e", precision, value);
     if (std::strtod(buffer, nullptr) == value) break;
   }
-  // buffer: [-]d[.ddd]e±XX
+#endif
+  // buffer: [-]d[.ddd]e±X
   const std::string text(buffer);
   const bool negative = text.front() == '-';
   const std::size_t e = text.find('e');
@@ -164,8 +192,12 @@ std::optional<double> read_number(std::string_view text) {
     if (j > exponent) i = j;
   }
   if (i != text.size()) return std::nullopt;
+#if defined(__EMSCRIPTEN__)
+  const double value = javascript_number(text.data(), static_cast<int>(text.size()));
+#else
   const std::string copy(text);
   const double value = std::strtod(copy.c_str(), nullptr);
+#endif
   if (!std::isfinite(value) || (value == 0.0 && nonzero)) return std::nullopt;
   return value;
 }

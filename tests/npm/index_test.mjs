@@ -185,6 +185,10 @@ test("judge takes flat arrays or rows and names BigInts; a judgement's columns a
   assert.ok(!Object.keys(flat).includes("csv"));
   assert.ok(flat.csv.startsWith("scenario,"));
   assert.equal(f.judgeCsv(NAME, f.exportFiles(NAME).csv).pass, true);
+  // A CSV's bytes (a Buffer, as npx reads a file) judge as its text.
+  const text = f.exportFiles(NAME).csv;
+  assert.equal(f.judgeCsv(NAME, Buffer.from(text)).csv, f.judgeCsv(NAME, text).csv);
+  assert.equal(f.judgeCsv(NAME, new Uint8Array(Buffer.from(text))).csv, f.judgeCsv(NAME, text).csv);
   assert.match(refusal(() => f.judge(NAME, { t: m.t, q: BigInt64Array.of(1n), omegaWorld: m.omegaWorld })), /^q: holds BigInts \(BigInt64Array\): expected numbers/);
   assert.match(refusal(() => f.judge(NAME, { t: m.t, q: m.q, omegaWorld: BigUint64Array.of(1n) })), /^omegaWorld: holds BigInts \(BigUint64Array\)/);
   assert.match(refusal(() => f.judge(NAME, { t: [0n], q: m.q, omegaWorld: m.omegaWorld })), /^t: holds BigInts \(Array\)/);
