@@ -58,33 +58,51 @@ std::string shortest_text(double value) {
     if (std::strtod(buffer, nullptr) == value) break;
   }
 #endif
-  // buffer: [-]d[.ddd]e±X
-  const std::string text(buffer);
-  const bool negative = text.front() == '-';
-  const std::size_t e = text.find('e');
-  std::string digits;
-  for (std::size_t i = negative ? 1 : 0; i < e; ++i)
-    if (text[i] != '.') digits += text[i];
-  while (digits.size() > 1 && digits.back() == '0') digits.pop_back();
-  const int exponent = std::atoi(text.c_str() + e + 1);
-  const auto n = static_cast<int>(digits.size());
-  std::string scientific = digits.substr(0, 1);
-  if (n > 1) scientific += "." + digits.substr(1);
-  char tail[8];
-  std::snprintf(tail, sizeof tail, "e%c%02d", exponent < 0 ? '-' : '+', std::abs(exponent));
-  scientific += tail;
-  std::string fixed;
-  if (exponent + 1 >= n) {
-    // An integer: to_chars writes its exact digits (4162706789455549952, not …550000).
-    std::snprintf(buffer, sizeof buffer, "%.0f", std::abs(value));
-    fixed = buffer;
-  } else if (exponent >= 0) {
-    fixed = digits.substr(0, static_cast<std::size_t>(exponent + 1)) + "." +
-            digits.substr(static_cast<std::size_t>(exponent + 1));
+  // buffer: [-]d[.ddd]e±X. Laid out in arrays, no std::string but the one returned: in
+  // WebAssembly every call that may throw goes through JavaScript (docs/performance.md, "The npm
+  // package against the command line").
+  const bool negative = buffer[0] == '-';
+  char digits[24];
+  int n = 0;
+  const char* at = buffer + (negative ? 1 : 0);
+  for (; *at != 'e'; ++at)
+    if (*at != '.') digits[n++] = *at;
+  while (n > 1 && digits[n - 1] == '0') --n;
+  const int exponent = std::atoi(at + 1);
+  const int magnitude = std::abs(exponent);
+  const int scientific_size = n + (n > 1 ? 1 : 0) + 2 + (magnitude >= 100 ? 3 : 2);
+  char integer[400] = "";
+  if (exponent + 1 >= n)  // an integer: to_chars writes its exact digits (4162706789455549952)
+    std::snprintf(integer, sizeof integer, "%.0f", std::abs(value));
+  const int fixed_size = exponent + 1 >= n ? static_cast<int>(std::strlen(integer))
+                         : exponent >= 0   ? n + 1
+                                           : n + 1 - exponent;
+  if (exponent + 1 >= n && fixed_size <= scientific_size)
+    return (negative ? "-" : "") + std::string(integer);
+  char out[48];
+  int k = 0;
+  if (negative) out[k++] = '-';
+  if (fixed_size <= scientific_size && exponent < 0) {
+    out[k++] = '0';
+    out[k++] = '.';
+    for (int zero = 0; zero < -exponent - 1; ++zero) out[k++] = '0';
+    for (int d = 0; d < n; ++d) out[k++] = digits[d];
+  } else if (fixed_size <= scientific_size) {
+    for (int d = 0; d < n; ++d) {
+      if (d == exponent + 1) out[k++] = '.';
+      out[k++] = digits[d];
+    }
   } else {
-    fixed = "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits;
+    out[k++] = digits[0];
+    if (n > 1) out[k++] = '.';
+    for (int d = 1; d < n; ++d) out[k++] = digits[d];
+    out[k++] = 'e';
+    out[k++] = exponent < 0 ? '-' : '+';
+    if (magnitude >= 100) out[k++] = static_cast<char>('0' + magnitude / 100);
+    out[k++] = static_cast<char>('0' + magnitude / 10 % 10);
+    out[k++] = static_cast<char>('0' + magnitude % 10);
   }
-  return (negative ? "-" : "") + (fixed.size() <= scientific.size() ? fixed : scientific);
+  return std::string(out, static_cast<std::size_t>(k));
 #endif
 }
 
