@@ -23,6 +23,7 @@
 #include "analysis/judgement.hpp"
 #include "analysis/scenario_file.hpp"
 #include "common/errors.hpp"
+#include "common/text_lines.hpp"
 #include "common/version.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
@@ -59,14 +60,26 @@ val judged(const Scenario& s, const std::string& sha256, const bookspin::jobs::M
   return out;
 }
 
-/// `bookspin flipcheck judge` of the motion CSV `text`: `file` names it in messages (the path as
-/// given), `name` in the judgement (the file's name).
+/// The bytes of `text`: a string's UTF-8, or a Uint8Array's (a file as node read it, copied
+/// into the module's memory at once rather than a character at a time).
+std::string bytes_of(const val& text) {
+  if (text.isString()) return text.as<std::string>();
+  std::string bytes(text["length"].as<std::size_t>(), '\0');
+  val(emscripten::typed_memory_view(bytes.size(), reinterpret_cast<unsigned char*>(bytes.data())))
+      .call<void>("set", text);  // the view is of the module's memory: set() writes there
+  return bytes;
+}
+
+/// `bookspin flipcheck judge` of the motion CSV `text` (a string, or the file's bytes as a
+/// Uint8Array): `file` names it in messages (the path as given), `name` in the judgement (the
+/// file's name).
 val judge_csv(const std::string& scenario, const std::string& scenario_file,
-              const std::string& sha256, const std::string& text, const std::string& file,
+              const std::string& sha256, const val& text, const std::string& file,
               const std::string& name) {
   return guarded([&] {
     const Scenario s = scenario_of(scenario, scenario_file);
-    return judged(s, sha256, bookspin::jobs::parse_motion_csv(text, file, s.dt, s.steps), name);
+    return judged(s, sha256, bookspin::jobs::parse_motion_csv(bytes_of(text), file, s.dt, s.steps),
+                  name);
   });
 }
 
@@ -147,11 +160,20 @@ val scenario_file(const std::string& scenario, const std::string& file) {
 
 std::string version() { return bookspin::version(); }
 
+/// `text` quoted for a one-line message as every door quotes a name or a cell: whole up to 80
+/// characters, else its first 60 and its length (common/text_lines.hpp).
+std::string quoted_cell(const std::string& text) { return bookspin::quoted_cell(text); }
+
+/// The same unquoted (a key path).
+std::string cut_cell(const std::string& text) { return bookspin::cut_cell(text); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(flipcheck_npm) {
   emscripten::function("scenarioFile", &scenario_file);
   emscripten::function("version", &version);
+  emscripten::function("quotedCell", &quoted_cell);
+  emscripten::function("cutCell", &cut_cell);
   emscripten::function("judgeCsv", &judge_csv);
   emscripten::function("judgeArrays", &judge_arrays);
   emscripten::function("exactMotion", &exact_motion);

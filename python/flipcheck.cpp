@@ -52,7 +52,7 @@ std::vector<std::string> scenario_names(const fs::path& dir) {
 }
 
 /// A scenario by name (a file NAME.toml of the folder) or by path (os.PathLike, or a str that
-/// ends in .toml or holds a '/'), read as `bookspin flipcheck` reads it.
+/// ends in .toml, in any case, or holds a '/'), read as `bookspin flipcheck` reads it.
 scene::Scene scenario_scene(const py::object& scenario, const py::object& directory) {
   bool ok = false;
   const std::string text = path_text(scenario, ok);
@@ -61,7 +61,7 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
     throw InputError("scenario: holds a NUL byte at character " + std::to_string(nul + 1) +
                      " (a name or a path is one line of text)");
   const bool path = !py::isinstance<py::str>(scenario) || text.find('/') != std::string::npos ||
-                    fs::path(text).extension() == ".toml";
+                    products::has_extension(text, ".toml");
   if (path) return scene::parse_scene(text);
   const fs::path dir = scenario_dir(directory);
   const fs::path file = dir / (text + ".toml");
@@ -76,11 +76,12 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
 }
 
 /// The scenario a judgement is of: a name or a scene file (scenario_scene), or the scenario
-/// JSON `bookspin flipcheck export` wrote (a path ending in .json), as the command line reads it.
+/// JSON `bookspin flipcheck export` wrote (a path ending in .json, in any case), as the command
+/// line reads it.
 analysis::Scenario judged_scenario(const py::object& scenario, const py::object& directory) {
   bool ok = false;
   const std::string text = path_text(scenario, ok);
-  if (ok && text.find('\0') == std::string::npos && fs::path(text).extension() == ".json")
+  if (ok && text.find('\0') == std::string::npos && products::is_scenario_json(text))
     return analysis::scenario_from_json(read_text_file(text, "the scenario file"), text);
   return analysis::scenario_of(scenario_scene(scenario, directory));
 }

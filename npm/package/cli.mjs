@@ -6,7 +6,7 @@
 // its one line on stderr; 1 when an output cannot be written; 70 for a bug). SCENARIO is
 // a scenario's name (flipcheck's scenarios()) or a scenario JSON that `export` wrote. Unlike the
 // command line it keeps no manifest: it judges and writes every time.
-import { mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
+import { linkSync, lstatSync, mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { basename } from "node:path";
 import { exportFiles, judgeCsv, readScenario, scenario, scenarios, version } from "./index.mjs";
 
@@ -38,11 +38,12 @@ function inside(dir, name) {
   return join(dir, name);
 }
 
-/** The reason a file cannot be read, as bookspin's read_text_file() words it. */
-function readText(path, what) {
+/** The reason a file cannot be read, as bookspin's read_text_file() words it: its text, or with
+ * `bytes` its bytes (a Buffer), as the command line reads a motion file. */
+function readText(path, what, { bytes = false } = {}) {
   try {
     if (statSync(path).isDirectory()) throw new InputError(`${path}: cannot read ${what}: is a directory`);
-    return readFileSync(path, "utf8");
+    return bytes ? readFileSync(path) : readFileSync(path, "utf8");
   } catch (e) {
     if (e instanceof InputError) throw e;
     const reason = e.code === "ENOENT" ? "no such file" : e.code === "EACCES" ? "Permission denied" : e.message;
@@ -53,38 +54,88 @@ function readText(path, what) {
 /** A scenario by name, or the JSON file export wrote, read as `bookspin flipcheck` reads it
  * (readScenario: the same reader, so the same refusals in the same words). */
 function scenarioArg(arg) {
-  if (scenarios().includes(arg)) return scenario(arg);
-  if (arg.endsWith(".json") || arg.includes("/")) {
+  // One route per file: its extension read in any case, as the command line and Python read it.
+  if (!scenarios().includes(arg) && (/\.json$/i.test(arg) || arg.includes("/")))
     return readScenario(readText(arg, "the scenario file"), arg);
-  }
-  throw new InputError(`flipcheck: no scenario "${arg}" (there: ${scenarios().join(", ")})`);
+  return scenario(arg); // a name, or the package's one line for no such name (the name cut)
 }
 
-/** Writes `text` under a temporary name beside `path`: {temporary, path}, for place(). */
-function stage(path, text) {
-  const temporary = join(path.slice(0, path.length - basename(path).length) || ".", `.${basename(path)}.tmp`);
+/** The reason an OS call failed, as bookspin words it (strerror's text): "Is a directory". */
+function reason(e) {
+  const words = { EISDIR: "Is a directory", ENOTDIR: "Not a directory", EACCES: "Permission denied", ENOSPC: "No space left on device", EROFS: "Read-only file system" };
+  return words[e.code] ?? e.message;
+}
+
+let serial = 0;
+/** A hidden name beside `path` for this run, `.<name>.<tag>-<pid>-<n>`, as bookspin names its
+ * temporaries (docs/outputs.md, "One run's outputs, all or nothing"). */
+function sibling(path, tag) {
+  const name = basename(path);
+  return join(path.slice(0, path.length - name.length) || ".", `.${name}.${tag}-${process.pid}-${serial++}`);
+}
+
+/** Puts the complete `temporary` of `path` in place, keeping what was there under a second
+ * name (a hard link; `aside`, null where there was none) until every file of the run is in
+ * place. Throws OutputError naming `path`, which is then as it was. */
+function putInPlace(temporary, path) {
+  let earlier;
   try {
-    writeFileSync(temporary, text);
-  } catch (e) {
-    rmSync(temporary, { force: true });
-    throw new OutputError(`cannot write "${path}": ${e.message}`);
+    earlier = lstatSync(path);
+  } catch {
+    earlier = null;
   }
-  return { temporary, path };
-}
-
-/** Renames a staged file into place. */
-function place(temporary, path) {
+  if (earlier?.isDirectory()) throw new OutputError(`cannot replace a directory with output file "${path}": Is a directory`);
+  const aside = earlier ? sibling(path, "old") : null;
+  try {
+    if (aside) linkSync(path, aside);
+  } catch (e) {
+    throw new OutputError(`cannot move the earlier output aside "${path}": ${reason(e)}`);
+  }
   try {
     renameSync(temporary, path);
   } catch (e) {
-    throw new OutputError(`cannot write "${path}": ${e.message}`);
+    if (aside) rmSync(aside, { force: true });
+    throw new OutputError(`cannot rename temporary into place as "${path}": ${reason(e)}`);
+  }
+  return { path, aside };
+}
+
+/** Undoes putInPlace(): the earlier file back under its name (its bytes and inode), or the new
+ * one removed. Never throws. */
+function takeBack({ path, aside }) {
+  try {
+    if (aside) renameSync(aside, path);
+    else rmSync(path, { force: true });
+  } catch {
+    // Tidying: the error that led here is the one reported.
   }
 }
 
-/** Writes `text` to `path` whole: a temporary name, then renamed into place. */
-function writeWhole(path, text) {
-  const { temporary } = stage(path, text);
-  place(temporary, path);
+/** Writes `files` ([path, text] pairs) as one run's outputs, all or nothing, as `bookspin
+ * flipcheck` writes them (output::StagedFiles, docs/outputs.md "One run's outputs, all or
+ * nothing"): each written whole under its temporary name, then all put in place in order; where
+ * one cannot be, those already in place are undone, the earlier files back under their names, and
+ * every temporary removed. Throws OutputError naming the file that could not be written. */
+function writeTogether(files) {
+  const staged = [];
+  const placed = [];
+  try {
+    for (const [path, text] of files) {
+      const temporary = sibling(path, "tmp");
+      staged.push({ temporary, path });
+      try {
+        writeFileSync(temporary, text, { flag: "wx" });
+      } catch (e) {
+        throw new OutputError(`cannot write "${path}": ${reason(e)}`);
+      }
+    }
+    for (const { temporary, path } of staged) placed.push(putInPlace(temporary, path));
+  } catch (e) {
+    placed.reverse().forEach(takeBack);
+    for (const { temporary } of staged) rmSync(temporary, { force: true });
+    throw e;
+  }
+  for (const { aside } of placed) if (aside) rmSync(aside, { force: true });
 }
 
 function makeDir(dir) {
@@ -120,7 +171,7 @@ function judgeCommand(args) {
   const spec = scenarioArg(scenarioPath);
   if (!files.length) throw new InputError("flipcheck judge: nothing to judge: give MOTION files");
   // Every file read and judged before anything is written: a bad one is its one line.
-  const judged = files.map((file) => judgeCsv(spec, readText(file, "the motion file"), { file, motion: basename(file) }));
+  const judged = files.map((file) => judgeCsv(spec, readText(file, "the motion file", { bytes: true }), { file, motion: basename(file) }));
   const name = spec.scenario;
   // Each judgement's CSV is its header line and its row; the row may span lines (a file name
   // holding a line break, in double quotes): everything after the header is the row.
@@ -128,7 +179,7 @@ function judgeCommand(args) {
   const csv = header + judged.map((j) => j.csv.slice(j.csv.indexOf("\n") + 1)).join("");
   const target = inside(out, `${name}-judge.csv`);
   makeDir(out);
-  writeWhole(target, csv);
+  writeTogether([[target, csv]]);
   judged.forEach((j, i) => console.log(`${name} ${files[i]}: ${j.line}`));
   console.log(`wrote: ${target}`);
   return judged.every((j) => j.pass) ? 0 : EXIT_JUDGED_FAIL;
@@ -152,14 +203,7 @@ function exportCommand(args) {
     texts.set(o.json, o.files.json).set(o.csv, o.files.csv);
   }
   makeDir(out);
-  const staged = [];
-  try {
-    for (const [path, text] of texts) staged.push(stage(path, text));
-  } catch (e) {
-    staged.forEach(({ temporary }) => rmSync(temporary, { force: true }));
-    throw e;
-  }
-  for (const { temporary, path } of staged) place(temporary, path);
+  writeTogether(texts);
   for (const { json, csv } of outputs) console.log(`exported: ${json}, ${csv}`);
 }
 

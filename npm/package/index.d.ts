@@ -87,7 +87,7 @@ export function readScenario(text: string, file?: string): Scenario;
 export function exactMotion(name: ScenarioArg): ExactMotion;
 export function exportFiles(name: ScenarioArg): { json: string; csv: string };
 export function judge(name: ScenarioArg, motion: Motion, options?: { motion?: string }): Judgement;
-export function judgeCsv(name: ScenarioArg, text: string, options?: { file?: string; motion?: string }): Judgement;
+export function judgeCsv(name: ScenarioArg, text: string | Uint8Array, options?: { file?: string; motion?: string }): Judgement;
 /** judge() (or judgeCsv() for a CSV's text) that throws node's assert.AssertionError with
  * "SCENARIO MOTION: FAIL (reasons): …" when the motion fails, and returns the judgement when it
  * passes: `npx flipcheck judge`'s exit status 3, in a test runner. */

@@ -34,7 +34,7 @@ export function scenarios() {
 /** A scenario's JSON as `bookspin flipcheck export` writes it (OUT/<scenario>.json), parsed. */
 export function scenario(name) {
   if (typeof name !== "string" || !NAMES.includes(name))
-    throw new Error(`flipcheck: no scenario "${name}" (there: ${NAMES.join(", ")})`);
+    throw new Error(`flipcheck: no scenario ${wasm.quotedCell(String(name))} (there: ${NAMES.join(", ")})`);
   return JSON.parse(readFileSync(new URL(`${name}.json`, scenarioFolder), "utf8"));
 }
 
@@ -63,6 +63,26 @@ function jsonText(value) {
   return JSON.stringify(typeof value === "bigint" ? String(value) : value) ?? "null";
 }
 
+/** How deep the reader reads a scenario JSON (analysis::scenario_from_json: the document is level
+ * 0): deeper, a file is refused, and so is an object, at its key path. */
+const MAX_DEPTH = 64;
+
+/** `path` and a member `key` or an index, as JavaScript spells the access: extra.a, ["a b"], [0]. */
+function member(path, key) {
+  if (typeof key === "number") return `${path}[${key}]`;
+  return /^[A-Za-z_$][\w$]*$/.test(key) ? (path ? `${path}.${key}` : key) : `${path}[${JSON.stringify(key)}]`;
+}
+
+/** Refuses a value nested deeper than the reader reads (a cycle is nested without end), naming
+ * the key path where it goes past the limit, in the reader's words for a file ("nested more than
+ * 64 deep"), so that no object, however deep, overflows the stack of jsonText(). */
+function checkDepth(value, where, path = "", depth = 0) {
+  if (depth > MAX_DEPTH) throw new Error(`${where}: nested more than ${MAX_DEPTH} deep at ${wasm.cutCell(path)}`);
+  if (Array.isArray(value)) value.forEach((v, i) => checkDepth(v, where, member(path, i), depth + 1));
+  else if (typeof value === "object" && value !== null && typeof value.toJSON !== "function")
+    for (const [k, v] of Object.entries(value)) checkDepth(v, where, member(path, k), depth + 1);
+}
+
 /** The fields of a scenario JSON the reader reads (analysis::scenario_from_json); it ignores the rest. */
 const READ_FIELDS = ["scenario", "mass", "principal_moments", "omega0_body", "omega0_world", "q0", "dt", "steps"];
 
@@ -71,7 +91,7 @@ const READ_FIELDS = ["scenario", "mass", "principal_moments", "omega0_body", "om
  * compiled). A field the reader reads that JSON cannot carry (a NaN, a BigInt) is refused here,
  * in the reader's words. */
 function scenarioText(s) {
-  const where = typeof s.scenario === "string" ? s.scenario : "scenario JSON";
+  const where = typeof s.scenario === "string" ? wasm.cutCell(s.scenario) : "scenario JSON";
   for (const key of READ_FIELDS) {
     const value = s[key];
     const items = Array.isArray(value) ? value.map((v, i) => [`${key}[${i}]`, v]) : [[key, value]];
@@ -79,6 +99,7 @@ function scenarioText(s) {
       if (typeof v === "bigint" || Number.isNaN(v))
         throw new Error(`${where}: ${field}: expected ${key === "scenario" ? "a name (a string)" : "a number"}, got ${typeof v === "bigint" ? "a bigint" : "NaN"}`);
   }
+  checkDepth(s, "scenario JSON");
   return { text: jsonText(s), file: "scenario JSON" };
 }
 
@@ -149,12 +170,14 @@ export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {
   return judgement(answer(wasm.judgeArrays(text, file, scenarioSha256(s), flat(t, "t"), flat(q, "q"), flat(omegaWorld, "omegaWorld"), "judge", motion)));
 }
 
-/** Judges a motion CSV's text, as `bookspin flipcheck judge SCENARIO FILE` judges the file
- * (`file` names it in messages and in the judgement's motion column). */
+/** Judges a motion CSV's text, or its bytes (a Uint8Array: a Buffer as readFileSync gives it, read
+ * byte for byte as the command line reads the file), as `bookspin flipcheck judge SCENARIO FILE`
+ * judges the file (`file` names it in messages and in the judgement's motion column). */
 export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}) {
   const s = spec(name);
   const scenarioJson = scenarioText(s);
-  return judgement(answer(wasm.judgeCsv(scenarioJson.text, scenarioJson.file, scenarioSha256(s), String(text), file, motion)));
+  const csv = text instanceof Uint8Array ? text : String(text);
+  return judgement(answer(wasm.judgeCsv(scenarioJson.text, scenarioJson.file, scenarioSha256(s), csv, file, motion)));
 }
 
 /** The in-process equivalent of `npx flipcheck judge`'s exit status for a test runner: judges

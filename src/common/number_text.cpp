@@ -9,54 +9,100 @@
 
 #include "common/errors.hpp"
 
+#if defined(__EMSCRIPTEN__)
+#include <emscripten.h>
+#endif
+
 namespace bookspin {
 
 namespace {
+
+#if !(defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L) && defined(__EMSCRIPTEN__)
+/// The shortest digits that read back as `value`, the nearest of them to it, as JavaScript's
+/// Number.prototype.toExponential() spells them ("1.5e+2", "-3e-7"), into `out` (`size` bytes):
+/// its length. Where the C library would print and read back a double once for each count of
+/// digits, in WebAssembly's software long double (musl's printf and strtod), at about 3 µs
+/// each (docs/performance.md, "The npm package against the command line").
+EM_JS(int, javascript_exponential, (double value, char* out, int size),
+      { return stringToUTF8(value.toExponential(), out, size); });
+#endif
+
+#if defined(__EMSCRIPTEN__)
+/// The double nearest to the decimal number `text` (`length` ASCII bytes, checked by
+/// read_number()), as JavaScript's Number() reads it: correctly rounded, as strtod, which in
+/// WebAssembly reads through a software long double at about 2 µs a number.
+EM_JS(double, javascript_number, (const char* text, int length), {
+  var spelled = "";
+  for (var k = 0; k < length; ++k) spelled += String.fromCharCode(HEAPU8[text + k]);
+  return Number(spelled);
+});
+#endif
 
 /// `value` (finite) in the shortest text that reads back, as std::to_chars(first, last, value)
 /// spells it: the fewest significant digits that round-trip, in fixed or scientific notation
 /// ("1e-05", "1e+22"), whichever is shorter, fixed on a tie. std::to_chars where the library has
 /// it for doubles (__cpp_lib_to_chars); else (emscripten's libc++, which compiles the explorer
-/// page's writers) the digits from printf's "%.*e", correctly rounded, at 1, 2, … 17 digits until
-/// they read back, laid out here.
+/// page's and the npm package's writers) the digits of JavaScript's toExponential(), the fewest
+/// that read back, the nearest of them to `value` (as to_chars chooses them), laid out here.
 std::string shortest_text(double value) {
   char buffer[40];
 #if defined(__cpp_lib_to_chars) && __cpp_lib_to_chars >= 201611L
   return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
 #else
   if (value == 0.0) return std::signbit(value) ? "-0" : "0";
-  int precision = 0;
-  for (; precision < 17; ++precision) {
+#if defined(__EMSCRIPTEN__)
+  javascript_exponential(value, buffer, sizeof buffer);
+#else
+  for (int precision = 0; precision < 17; ++precision) {
     std::snprintf(buffer, sizeof buffer, "%.*e", precision, value);
     if (std::strtod(buffer, nullptr) == value) break;
   }
-  // buffer: [-]d[.ddd]e±XX
-  const std::string text(buffer);
-  const bool negative = text.front() == '-';
-  const std::size_t e = text.find('e');
-  std::string digits;
-  for (std::size_t i = negative ? 1 : 0; i < e; ++i)
-    if (text[i] != '.') digits += text[i];
-  while (digits.size() > 1 && digits.back() == '0') digits.pop_back();
-  const int exponent = std::atoi(text.c_str() + e + 1);
-  const auto n = static_cast<int>(digits.size());
-  std::string scientific = digits.substr(0, 1);
-  if (n > 1) scientific += "." + digits.substr(1);
-  char tail[8];
-  std::snprintf(tail, sizeof tail, "e%c%02d", exponent < 0 ? '-' : '+', std::abs(exponent));
-  scientific += tail;
-  std::string fixed;
-  if (exponent + 1 >= n) {
-    // An integer: to_chars writes its exact digits (4162706789455549952, not …550000).
-    std::snprintf(buffer, sizeof buffer, "%.0f", std::abs(value));
-    fixed = buffer;
-  } else if (exponent >= 0) {
-    fixed = digits.substr(0, static_cast<std::size_t>(exponent + 1)) + "." +
-            digits.substr(static_cast<std::size_t>(exponent + 1));
+#endif
+  // buffer: [-]d[.ddd]e±X. Laid out in arrays, no std::string but the one returned: in
+  // WebAssembly every call that may throw goes through JavaScript (docs/performance.md, "The npm
+  // package against the command line").
+  const bool negative = buffer[0] == '-';
+  char digits[24];
+  int n = 0;
+  const char* at = buffer + (negative ? 1 : 0);
+  for (; *at != 'e'; ++at)
+    if (*at != '.') digits[n++] = *at;
+  while (n > 1 && digits[n - 1] == '0') --n;
+  const int exponent = std::atoi(at + 1);
+  const int magnitude = std::abs(exponent);
+  const int scientific_size = n + (n > 1 ? 1 : 0) + 2 + (magnitude >= 100 ? 3 : 2);
+  char integer[400] = "";
+  if (exponent + 1 >= n)  // an integer: to_chars writes its exact digits (4162706789455549952)
+    std::snprintf(integer, sizeof integer, "%.0f", std::abs(value));
+  const int fixed_size = exponent + 1 >= n ? static_cast<int>(std::strlen(integer))
+                         : exponent >= 0   ? n + 1
+                                           : n + 1 - exponent;
+  if (exponent + 1 >= n && fixed_size <= scientific_size)
+    return (negative ? "-" : "") + std::string(integer);
+  char out[48];
+  int k = 0;
+  if (negative) out[k++] = '-';
+  if (fixed_size <= scientific_size && exponent < 0) {
+    out[k++] = '0';
+    out[k++] = '.';
+    for (int zero = 0; zero < -exponent - 1; ++zero) out[k++] = '0';
+    for (int d = 0; d < n; ++d) out[k++] = digits[d];
+  } else if (fixed_size <= scientific_size) {
+    for (int d = 0; d < n; ++d) {
+      if (d == exponent + 1) out[k++] = '.';
+      out[k++] = digits[d];
+    }
   } else {
-    fixed = "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + digits;
+    out[k++] = digits[0];
+    if (n > 1) out[k++] = '.';
+    for (int d = 1; d < n; ++d) out[k++] = digits[d];
+    out[k++] = 'e';
+    out[k++] = exponent < 0 ? '-' : '+';
+    if (magnitude >= 100) out[k++] = static_cast<char>('0' + magnitude / 100);
+    out[k++] = static_cast<char>('0' + magnitude / 10 % 10);
+    out[k++] = static_cast<char>('0' + magnitude % 10);
   }
-  return (negative ? "-" : "") + (fixed.size() <= scientific.size() ? fixed : scientific);
+  return std::string(out, static_cast<std::size_t>(k));
 #endif
 }
 
@@ -164,8 +210,12 @@ std::optional<double> read_number(std::string_view text) {
     if (j > exponent) i = j;
   }
   if (i != text.size()) return std::nullopt;
+#if defined(__EMSCRIPTEN__)
+  const double value = javascript_number(text.data(), static_cast<int>(text.size()));
+#else
   const std::string copy(text);
   const double value = std::strtod(copy.c_str(), nullptr);
+#endif
   if (!std::isfinite(value) || (value == 0.0 && nonzero)) return std::nullopt;
   return value;
 }

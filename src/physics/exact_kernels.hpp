@@ -102,11 +102,14 @@ inline Real carlson_rc1p(Real e) {
 /// and A^{−3/2} by a square root rather than pow: an arctangent only while E_m ≥ 1e-3, the
 /// first step or two (near |sn| = 1 close to the separatrix, where x and y are both tiny, a few
 /// more: docs/physics.md §8). It stops once the series' truncation, of the order of Q_m⁸ (Q_m the
-/// arguments' spread about their mean after m steps, relative), is below 10 ε of long double, still
-/// a hundred times below a double's ε (Boost asks ε/5: one step more, a fifth of the time). rx, ry,
-/// rz are √x, √y, √z, which the caller has at hand.
+/// arguments' spread about their mean after m steps, relative), is below 10 ε of x86's long double
+/// (2⁻⁶³, its 64-bit significand's), still a hundred times below a double's ε (Boost asks ε/5: one
+/// step more, a fifth of the time). That ε is fixed, not the compiler's long double's: in
+/// WebAssembly long double is binary128 (ε = 2⁻¹¹²), in software, and asking 10⁻¹⁵ more of the
+/// series took three steps more a call (docs/performance.md, "The npm package against the command
+/// line"). rx, ry, rz are √x, √y, √z, which the caller has at hand.
 inline Real carlson_rj(Real x, Real y, Real z, Real p, Real rx, Real ry, Real rz) {
-  static const Real kQ = std::pow(10 * std::numeric_limits<Real>::epsilon(), -1.0L / 8);
+  static const Real kQ = std::pow(10 * std::ldexp(Real{1}, -63), -1.0L / 8);
   Real A = (x + y + z + 2 * p) / 5;
   const Real A0 = A, x0 = x, y0 = y, z0 = z;
   Real delta = (p - x) * (p - y) * (p - z);

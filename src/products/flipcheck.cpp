@@ -85,12 +85,14 @@ std::vector<cache::Outcome> make_flipcheck_exports(const std::vector<scene::Scen
       });
 }
 
-bool is_scenario_json(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
+bool has_extension(const std::filesystem::path& path, std::string_view extension) {
+  std::string own = path.extension().string();
+  std::transform(own.begin(), own.end(), own.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension == ".json";
+  return own == extension;
 }
+
+bool is_scenario_json(const std::filesystem::path& path) { return has_extension(path, ".json"); }
 
 FlipcheckJudgeLayout flipcheck_judge_layout(const std::filesystem::path& out_dir,
                                             const std::string& scenario) {

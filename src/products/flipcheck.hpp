@@ -6,6 +6,7 @@
 // jobs/motion_judgement.hpp) and analysis' (analysis/conformance.hpp).
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "analysis/conformance.hpp"
@@ -52,6 +53,10 @@ std::vector<cache::Outcome> make_flipcheck_exports(const std::vector<scene::Scen
                                                    const std::filesystem::path& out_dir,
                                                    const cache::Freshness& freshness,
                                                    const StopPoll& stop = {});
+
+/// Whether `path`'s name ends in `extension`, lower case (".json", ".toml"), in any case: one
+/// route per file at every door (docs/flipcheck.md, "What a scenario may be"). No I/O.
+bool has_extension(const std::filesystem::path& path, std::string_view extension);
 
 /// Whether `path` names a scenario JSON (`export`'s OUT/<scenario>.json: its name ends in .json,
 /// any case) rather than a scene file (TOML). No I/O.

@@ -265,6 +265,21 @@ TEST(Judgement, AScenarioNameIsLettersDigitsDashUnderscoreAndDot) {
   }
 }
 
+// A name of a million characters is cut in its message, its length said: one short line, not
+// the whole name echoed (docs/flipcheck.md, "What a scenario may be").
+TEST(Judgement, ALongScenarioNameIsCutInItsMessageWithItsLength) {
+  Scenario s = scenario("mujoco-test-box");
+  s.name = std::string(1000000, 'a');
+  try {
+    check_scenario(s);
+    ADD_FAILURE() << "a name of 10^6 characters taken";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "flipcheck: scenario name \"" + std::string(60, 'a') +
+                                         "\xe2\x80\xa6\" (1000000 characters) is 1000000 "
+                                         "characters long (at most 128)");
+  }
+}
+
 // The judgement CSV has the new columns, and the kit's rules hold the new limits.
 TEST(Judgement, TheTableAndTheRulesCarryTheWholeMotionsMeasures) {
   const Scenario s = scenario("mujoco-test-box");

@@ -339,6 +339,31 @@ TEST(FlipcheckCommand, TheExportedScenarioJsonJudgesAsItsSceneFile) {
   }
 }
 
+// One route per file (docs/flipcheck.md, "What a scenario may be"): a scenario JSON saved with
+// its extension in capitals (scen.JSON, scen.Json) is read as a scenario JSON, not as a scene
+// file (TOML): its judgement is the .json file's, byte for byte.
+TEST(FlipcheckCommand, AScenarioJsonIsReadByItsExtensionInAnyCase) {
+  ScratchDir dir;
+  ASSERT_EQ(
+      run_bookspin("flipcheck export " + scenario("mujoco-test-box") + " -o " + quoted(dir / "kit"))
+          .status,
+      0);
+  const fs::path exact = dir / "kit" / "mujoco-test-box-exact.csv";
+  const SplitResult lower =
+      run_bookspin_split("flipcheck judge " + quoted(dir / "kit" / "mujoco-test-box.json") + " " +
+                         quoted(exact) + " -o " + quoted(dir / "lower"));
+  ASSERT_EQ(lower.status, 0) << lower.err;
+  for (const std::string spelled : {"scen.JSON", "scen.Json"}) {
+    SCOPED_TRACE(spelled);
+    fs::copy_file(dir / "kit" / "mujoco-test-box.json", dir / spelled);
+    const SplitResult r = run_bookspin_split("flipcheck judge " + quoted(dir / spelled) + " " +
+                                             quoted(exact) + " -o " + quoted(dir / "out"));
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read_file(dir / "out" / "mujoco-test-box-judge.csv"),
+              read_file(dir / "lower" / "mujoco-test-box-judge.csv"));
+  }
+}
+
 // One command, one stop: a scenario given twice to export would stage its files twice; it is
 // refused, one line and exit 2, nothing written.
 TEST(FlipcheckCommand, AScenarioGivenTwiceToExportIsRefused) {

@@ -1,7 +1,9 @@
 // The npm package's own JavaScript (npm/package/index.mjs) under node's test runner: what it
 // does around the WebAssembly. A scenario is a name or an object; what JSON cannot carry (NaN,
 // BigInts) is refused in the reader's words and what it can (±Infinity, -0, fields left out)
-// reaches the one reader as a file spells it; readScenario() reads a file's text; judge()
+// reaches the one reader as a file spells it; an object nested at any depth (a cycle) is refused
+// at its key path, never a stack overflow; a long name is cut in its message, its length said;
+// readScenario() reads a file's text; judge()
 // takes flat arrays or rows and names BigInts; a judgement's columns are typed; assertPasses()
 // returns a pass and throws node's AssertionError for a fail. Run by tests/npm/npm_package_test.py
 // on the package it built (FLIPCHECK_PACKAGE: its folder), and by Stryker (scripts/mutation-js.sh
@@ -104,6 +106,42 @@ test("what JSON can carry reaches the reader as a file spells it", () => {
   assert.equal(asObject("principal_moments", Float64Array.of(1, 2, 3)), `${NAME}: principal_moments: expected an array of 3 numbers, got an object`);
 });
 
+test("an object nested at any depth is refused at its key path, never a crash", () => {
+  /** The carried scenario with `levels` levels under extra: objects {a: …}, or arrays [[…]]. */
+  const nested = (levels, array = false) => {
+    const s = box();
+    let at = (s.extra = array ? [] : {});
+    for (let i = 1; i < levels; ++i) at = array ? (at[0] = []) : (at.a = {});
+    return s;
+  };
+  // The reader reads 64 levels (the document is level 0); an object one deeper, or 5000 deeper,
+  // is refused as a file is, naming where it goes past the limit, not a place in a text it never
+  // saw; a cycle is nested without end.
+  assert.equal(f.scenarioSha256(nested(64)), f.scenarioSha256(NAME));
+  assert.equal(f.scenarioSha256(f.readScenario(JSON.stringify(nested(64)))), f.scenarioSha256(NAME));
+  assert.match(refusal(() => f.readScenario(JSON.stringify(nested(65)))), /^scenario JSON: not valid JSON: nested more than 64 deep at line 1, /);
+  const a = `extra${".a".repeat(64)}`;
+  const said = `scenario JSON: nested more than 64 deep at ${a.slice(0, 60)}… (${a.length} characters)`;
+  assert.equal(refusal(() => f.judge(nested(65), {})), said);
+  assert.equal(refusal(() => f.judge(nested(5000), {})), said);
+  const rows = refusal(() => f.exportFiles(nested(5000, true)));
+  assert.match(rows, /^scenario JSON: nested more than 64 deep at extra\[0\]\[0\]\[0\]/);
+  const cycle = box();
+  cycle.notes = { "the same": cycle };
+  assert.match(refusal(() => f.exactMotion(cycle)), /^scenario JSON: nested more than 64 deep at notes\["the same"\]\.notes\["the same"\]/);
+  // The file door's words for the same depth.
+  const file = refusal(() => f.readScenario(`{"extra": ${"[".repeat(70)}${"]".repeat(70)}}`, "deep.json"));
+  assert.match(file, /^deep\.json: not valid JSON: nested more than 64 deep at line 1, column /);
+});
+
+test("a long name is cut in a message, its length said", () => {
+  const name = "a".repeat(1000000);
+  const cut = `"${"a".repeat(60)}…" (1000000 characters)`;
+  assert.equal(refusal(() => f.judge({ ...box(), scenario: name }, {})), `flipcheck: scenario name ${cut} is 1000000 characters long (at most 128)`);
+  assert.equal(refusal(() => f.scenario(name)).split(" (there: ")[0], `flipcheck: no scenario ${cut}`);
+  assert.equal(refusal(() => f.judge({ ...box(), scenario: name, mass: NaN }, {})), `${"a".repeat(60)}… (1000000 characters): mass: expected a number, got NaN`);
+});
+
 test("readScenario reads a file's text as the command line does", () => {
   const s = f.readScenario(carried, "box.json");
   assert.deepEqual(s, JSON.parse(carried));
@@ -147,6 +185,10 @@ test("judge takes flat arrays or rows and names BigInts; a judgement's columns a
   assert.ok(!Object.keys(flat).includes("csv"));
   assert.ok(flat.csv.startsWith("scenario,"));
   assert.equal(f.judgeCsv(NAME, f.exportFiles(NAME).csv).pass, true);
+  // A CSV's bytes (a Buffer, as npx reads a file) judge as its text.
+  const text = f.exportFiles(NAME).csv;
+  assert.equal(f.judgeCsv(NAME, Buffer.from(text)).csv, f.judgeCsv(NAME, text).csv);
+  assert.equal(f.judgeCsv(NAME, new Uint8Array(Buffer.from(text))).csv, f.judgeCsv(NAME, text).csv);
   assert.match(refusal(() => f.judge(NAME, { t: m.t, q: BigInt64Array.of(1n), omegaWorld: m.omegaWorld })), /^q: holds BigInts \(BigInt64Array\): expected numbers/);
   assert.match(refusal(() => f.judge(NAME, { t: m.t, q: m.q, omegaWorld: BigUint64Array.of(1n) })), /^omegaWorld: holds BigInts \(BigUint64Array\)/);
   assert.match(refusal(() => f.judge(NAME, { t: [0n], q: m.q, omegaWorld: m.omegaWorld })), /^t: holds BigInts \(Array\)/);

@@ -472,6 +472,23 @@ def test_judge_reads_the_scenario_json_export_wrote(bookspin, tmp_path):
         bookspin.flipcheck.judge(str(tmp_path / "null.json"), t, q, w)
 
 
+def test_a_scenario_file_is_read_by_its_extension_in_any_case(bookspin, tmp_path, monkeypatch):
+    """One route per file (docs/flipcheck.md, "What a scenario may be"): a scenario JSON saved as
+    scen.JSON is judged as the same file named .json (not read as TOML), and a scene file saved
+    as NAME.TOML is read as a scene, as the command line reads both."""
+    name = "mujoco-test-box"
+    run_cli("flipcheck", "export", SCENARIO_DIR / f"{name}.toml", "-o", tmp_path)
+    _, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
+    want = bookspin.flipcheck.judge(str(tmp_path / f"{name}.json"), t, q, w)
+    for spelled in ("scen.JSON", "scen.Json"):
+        shutil.copy(tmp_path / f"{name}.json", tmp_path / spelled)
+        assert bookspin.flipcheck.judge(str(tmp_path / spelled), t, q, w) == want
+    shutil.copy(SCENARIO_DIR / f"{name}.toml", tmp_path / f"{name}.TOML")
+    monkeypatch.chdir(tmp_path)
+    assert bookspin.flipcheck.judge(f"{name}.TOML", t, q, w) == bookspin.flipcheck.judge(name, t, q, w)
+
+
 def test_a_ragged_list_is_named(bookspin):
     """q given as a list whose rows differ in length: named, with the shape expected (it was
     numpy's ValueError, naming no argument)."""

@@ -1,0 +1,88 @@
+// The npm package's command (npm/package/cli.mjs, `npx flipcheck`) under node's test runner, run
+// from the package it built (FLIPCHECK_PACKAGE: its folder) in a fresh folder each test:
+// - every run's outputs all or nothing (docs/outputs.md, "One run's outputs, all or nothing"):
+//   where a later output cannot be put in place (a folder under its name), exit 1 naming it, the
+//   earlier files' bytes and inodes kept, and nothing left beside them (no temporary);
+// - one route per file (docs/flipcheck.md, "What a scenario may be"): a scenario file named with
+//   its extension in any case is read as a scenario JSON, as the command line and Python read it.
+import assert from "node:assert/strict";
+import { spawnSync } from "node:child_process";
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join, resolve } from "node:path";
+import { test } from "node:test";
+
+const cli = resolve(process.env.FLIPCHECK_PACKAGE, "cli.mjs");
+const scenarios = resolve(process.env.FLIPCHECK_PACKAGE, "scenarios");
+
+/** `npx flipcheck ARGS` in `cwd`: {status, stdout, stderr}. */
+function npx(cwd, ...args) {
+  return spawnSync(process.execPath, [cli, ...args], { cwd, encoding: "utf8" });
+}
+
+/** Every name in `dir` with its bytes and inode, sorted by name (a folder: its kind). */
+function contents(dir) {
+  return readdirSync(dir)
+    .sort()
+    .map((name) => {
+      const s = statSync(join(dir, name));
+      return s.isDirectory() ? [name, "folder", s.ino] : [name, readFileSync(join(dir, name), "utf8"), s.ino];
+    });
+}
+
+test("export: a later output that cannot be put in place keeps every earlier file and leaves nothing", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  const out = join(room, "out");
+  mkdirSync(out);
+  // The earlier files of an earlier run, and the last output's name taken by a folder.
+  writeFileSync(join(out, "mujoco-test-box.json"), "earlier scenario\n");
+  writeFileSync(join(out, "mujoco-test-box-exact.csv"), "earlier motion\n");
+  writeFileSync(join(out, "book-intermediate-0.2.json"), "earlier second scenario\n");
+  mkdirSync(join(out, "book-intermediate-0.2-exact.csv"));
+  const before = contents(out);
+  const run = npx(room, "export", "mujoco-test-box", "book-intermediate-0.2", "-o", "out");
+  assert.equal(run.status, 1, run.stderr);
+  assert.equal(
+    run.stderr,
+    'flipcheck: error: cannot replace a directory with output file "out/book-intermediate-0.2-exact.csv": Is a directory\n',
+  );
+  assert.equal(run.stdout, "");
+  assert.deepEqual(contents(out), before);
+  assert.deepEqual(readdirSync(room), ["out"]);
+});
+
+test("export: every file put in place where all can be, earlier ones replaced", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  mkdirSync(join(room, "out"));
+  writeFileSync(join(room, "out", "mujoco-test-box.json"), "earlier scenario\n");
+  const run = npx(room, "export", "mujoco-test-box", "-o", "out");
+  assert.equal(run.status, 0, run.stderr);
+  assert.deepEqual(readdirSync(join(room, "out")).sort(), ["mujoco-test-box-exact.csv", "mujoco-test-box.json"]);
+  assert.equal(readFileSync(join(room, "out", "mujoco-test-box.json"), "utf8"), readFileSync(join(scenarios, "mujoco-test-box.json"), "utf8"));
+});
+
+test("judge: a judgement CSV whose name is a folder: exit 1, the folder kept, nothing left", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  assert.equal(npx(room, "export", "mujoco-test-box", "-o", "kit").status, 0);
+  mkdirSync(join(room, "out", "mujoco-test-box-judge.csv"), { recursive: true });
+  const before = contents(join(room, "out"));
+  const run = npx(room, "judge", "mujoco-test-box", "kit/mujoco-test-box-exact.csv", "-o", "out");
+  assert.equal(run.status, 1, run.stderr);
+  assert.match(run.stderr, /^flipcheck: error: cannot replace a directory with output file "out\/mujoco-test-box-judge.csv": Is a directory\n$/);
+  assert.deepEqual(contents(join(room, "out")), before);
+  assert.deepEqual(readdirSync(join(room, "out", "mujoco-test-box-judge.csv")), []);
+});
+
+test("a scenario JSON named with its extension in any case is read as a scenario JSON", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  assert.equal(npx(room, "export", "mujoco-test-box", "-o", "kit").status, 0);
+  const json = readFileSync(join(room, "kit", "mujoco-test-box.json"));
+  const lower = npx(room, "judge", "kit/mujoco-test-box.json", "kit/mujoco-test-box-exact.csv", "-o", "lower");
+  assert.equal(lower.status, 0, lower.stderr);
+  for (const spelled of ["scen.JSON", "scen.Json"]) {
+    writeFileSync(join(room, spelled), json);
+    const run = npx(room, "judge", spelled, "kit/mujoco-test-box-exact.csv", "-o", spelled + "-out");
+    assert.equal(run.status, 0, run.stderr);
+    assert.equal(readFileSync(join(room, spelled + "-out", "mujoco-test-box-judge.csv"), "utf8"), readFileSync(join(room, "lower", "mujoco-test-box-judge.csv"), "utf8"));
+  }
+});
