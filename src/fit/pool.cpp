@@ -55,6 +55,25 @@ GyroRecording pool_recordings(const std::vector<GyroRecording>& given) {
   std::vector<GyroRecording> recordings;
   recordings.reserve(order.size());
   for (const GyroRecording* recording : order) recordings.push_back(*recording);
+  // Unique names: two files made file-safe alike ("anna b.csv", "anna-b.csv") would name each
+  // other's tosses; the later in the canonical order takes the first free "-2", "-3", ….
+  for (std::size_t a = 1; a < recordings.size(); ++a) {
+    const auto taken = [&](const std::string& name, std::size_t self) {
+      for (std::size_t b = 0; b < recordings.size(); ++b)
+        if (b != self && recordings[b].name == name) return true;
+      return false;
+    };
+    bool earlier = false;
+    for (std::size_t b = 0; b < a; ++b)
+      earlier = earlier || recordings[b].name == recordings[a].name;
+    if (!earlier) continue;
+    const std::string base = recordings[a].name;
+    for (int k = 2;; ++k)
+      if (!taken(base + "-" + std::to_string(k), a)) {
+        recordings[a].name = base + "-" + std::to_string(k);
+        break;
+      }
+  }
   GyroRecording pooled;
   const std::size_t more = recordings.size() - 1;
   pooled.name = recordings.front().name;

@@ -18,7 +18,10 @@ namespace bookspin::fit {
 /// recordings are laid out in their canonical order (by name, then by their samples), whatever
 /// order they are given in, so that any order gives the same tosses, numbers and names to the
 /// last digit (docs/phone-lab.md, "A class's recordings"). One recording keeps its name and
-/// times; several are named after the first by name, "<first>-and-<N−1>-more". Throws InputError
+/// times; several are named after the first by name, "<first>-and-<N−1>-more". Two recordings
+/// whose names are alike (files made file-safe alike: "anna b.csv", "anna-b.csv") are told apart:
+/// the later in the canonical order takes the first free "-2", "-3", … in every table, chart and
+/// file name. Throws InputError
 /// for none, or one given twice: the same source, the same file however spelled
 /// (GyroRecording::file), or the same samples (an export beside its own zip).
 GyroRecording pool_recordings(const std::vector<GyroRecording>& recordings);
