@@ -17,6 +17,7 @@
 
 #include "analysis/accuracy.hpp"
 #include "common/errors.hpp"
+#include "physics/exact_solution.hpp"
 #include "scene/scene.hpp"
 #include "support/closed_form_flips.hpp"
 #include "support/scenario_rows.hpp"
@@ -28,6 +29,29 @@ constexpr double kPi = std::numbers::pi;
 
 using scenario_rows::exact_rows;
 using scenario_rows::scenario;
+
+// Completeness at every stride, both sides of the rule (docs/flipcheck.md, "What judge
+// measures"): rows every stride up to the last whole stride, or with one more row at the last
+// step, are complete; the same rows one stride short of that are not, whether or not the stride
+// divides the run.
+TEST(Conformance, AMotionIsCompleteAtItsLastWholeStrideAndNotOneStrideShort) {
+  const Scenario s = scenario("mujoco-test-box");
+  for (long long stride = 1; stride <= 60; ++stride) {
+    SCOPED_TRACE(stride);
+    std::vector<MotionSample> rows = exact_rows(s, stride);
+    EXPECT_TRUE(judge_motion(s, rows).complete);
+    if (rows.back().step != s.steps) {  // one more row at the last step: still complete
+      std::vector<MotionSample> with_end = rows;
+      const physics::ExactRotation exact(s.body.moments, start_omega(s));
+      const double t = static_cast<double>(s.steps) * s.dt;
+      with_end.push_back({s.steps, Eigen::Quaterniond(exact.orientation(t)), exact.omega_body(t)});
+      EXPECT_TRUE(judge_motion(s, with_end).complete);
+    }
+    rows.pop_back();
+    const Conformance short_by_one = judge_motion(s, rows);
+    EXPECT_FALSE(short_by_one.complete) << "last row at step " << rows.back().step;
+  }
+}
 
 // Every scenario's exact motion passes at round-off; the intermediate-axis scenarios turn over
 // as often as the closed form says (1 + ⌊(t_end − first)/(T/2)⌋), the stable spins never, and
