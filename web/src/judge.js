@@ -35,9 +35,11 @@ const RULE_OF = { start_error: 'start', energy_drift: 'energy_drift', L_drift: '
 
 /** The measure each of the judge's failure lines (analysis::judge_motion's words) is about: a
  * line's start and the judgement's column, so that the table marks the row of every failure
- * (those of no bound on the value alone too: the turn-overs, the first one's time). */
+ * (those of no bound on the value alone too: the turn-overs, the first one's time). q's start,
+ * which the judge tells first (docs/flipcheck.md, "What judge measures"), marks the orientation
+ * error's row, ahead of the orientation error's own line. */
 const FAILURE_OF = [
-  [/^ends at step/, 'last_step'], [/^starts /, 'start_error'], [/^energy drift/, 'energy_drift'],
+  [/^q (is written|at step 0)/, 'orientation_error'], [/^ends at step/, 'last_step'], [/^starts /, 'start_error'], [/^energy drift/, 'energy_drift'],
   [/^\|L\| drift/, 'L_drift'], [/^L turned/, 'L_direction_error'], [/^\d+ turn-overs?,/, 'flips'],
   [/^first turn-over/, 'first_flip'], [/^orientation error/, 'orientation_error'],
   [/^tumbles at/, 'tumble_time'], [/^r = 2E/, 'separatrix_approach'],
