@@ -33,7 +33,8 @@ pixels a CSS pixel), on the page `bookspin explore` writes from every scene. At 
     BINARY_DIR/test-output/every-person-npm) finds no serious or critical violation on the
     explorer (fig09, the lab open with a fit, the judge open with a judgement), on a gallery
     page (`bookspin gallery` of one short clip and its plot) and on a league page (`bookspin
-    flipcheck league`); each run's summary is printed.
+    flipcheck league`), nor any violation of its landmark rules (region, landmark-*: every part
+    of the page in a landmark, one main); each run's summary is printed.
 
 Screenshots: BINARY_DIR/test-output/browser/every-person-<case>-<W>x<H>.png.
 BOOKSPIN_EVERY_PERSON_SIZES=320x640,960x540 (say) checks those sizes alone (a planted fault's run).
@@ -60,6 +61,12 @@ READOUT_CASES = (("fig09", "?scene=fig09-matrix-unstable-x", 227, 1),
                  ("compare-engines", "?scene=compare-engines&tiles=1", 599, 6))
 FOCUS_OUTLINE_PX = 2
 SERIOUS = ("serious", "critical")
+
+
+def is_landmark_rule(rule):
+    """axe-core's rules of landmarks (moderate: content outside them, no main or two): failed
+    too, on every page (the gallery's and the league's content once lay outside any)."""
+    return rule == "region" or rule.startswith("landmark-")
 # Violations of a page bookspin's C++ writes, awaiting a change there (docs/explorer.md, "For
 # every person"): printed, not failed. (page, rule) → what is to change.
 WRITTEN_BY_CPP = {}
@@ -362,7 +369,7 @@ def check_first_visit(driver, page, problems):
 
 def axe_check(driver, axe_source, what, problems, page="explorer"):
     """axe-core on the page as it is now: its summary printed; a serious or critical violation a
-    problem (but those of WRITTEN_BY_CPP, named as such)."""
+    problem, and so is any of its landmark rules (but those of WRITTEN_BY_CPP, named as such)."""
     driver.execute_script(axe_source)
     result = driver.execute_async_script("""
       const done = arguments[arguments.length - 1];
@@ -373,7 +380,7 @@ def axe_check(driver, axe_source, what, problems, page="explorer"):
     if "error" in result:
         problems.append(f"{what}: axe-core failed: {result['error']}")
         return
-    bad = [v for v in result["violations"] if v["impact"] in SERIOUS]
+    bad = [v for v in result["violations"] if v["impact"] in SERIOUS or is_landmark_rule(v["id"])]
     print(f"axe-core {result['version']} on {what}: {len(result['violations'])} violations "
           f"({len(bad)} serious or critical), {result['passes']} rules passed, {result['incomplete']} to review"
           + "".join(f"\n    {v['impact']}: {v['id']} ({v['nodes']} nodes, {v['targets']}): {v['help']}"
