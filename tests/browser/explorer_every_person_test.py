@@ -36,7 +36,8 @@ pixels a CSS pixel), on the page `bookspin explore` writes from every scene. At 
     flipcheck league`), nor any violation of its landmark rules (region, landmark-*: every part
     of the page in a landmark, one main); each run's summary is printed.
 
-Screenshots: BINARY_DIR/test-output/browser/every-person-<case>-<W>x<H>.png.
+Screenshots: BINARY_DIR/test-output/browser/every-person-<case>-<W>x<H>.png (the sphere focused
+by Tab: every-person-sphere-keys-<W>x<H>.png).
 BOOKSPIN_EVERY_PERSON_SIZES=320x640,960x540 (say) checks those sizes alone (a planted fault's run).
 
 Usage: explorer_every_person_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -117,7 +118,8 @@ READOUT = """
 # JavaScript: each number (a version, "m × 10ⁿ", "v ± σ", a range) in the text of `arguments[0]`'s
 # elements whose characters lie on more than one line: [the number, the text around it].
 BROKEN_NUMBERS = r"""
-  const NUM = /(?<![\p{L}\d.])(?:\d+\.\d+\.\d+|-?\d+(?:\.\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?(?:–-?\d+(?:\.\d+)?)?(?: ± \d+(?:\.\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)?)/gu;
+  const NUM = arguments[1] ? new RegExp(arguments[1], 'gu') :
+    /(?<![\p{L}\d.])(?:\d+\.\d+\.\d+|-?\d+(?:\.\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?(?:–-?\d+(?:\.\d+)?)?(?: ± \d+(?:\.\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)?)/gu;
   const out = [];
   let seen = 0;
   for (const root of document.querySelectorAll(arguments[0])) {
@@ -137,6 +139,10 @@ BROKEN_NUMBERS = r"""
   return [seen, out];
 """
 NUMBER_PLACES = "#overlay, #judgeTable, #judgeStamp, #judgeFailures, #labBody, #labTosses, #labSummary"
+# The judge's words whole too: "SHA-256" and each formula's token (no space inside: "ω0|/|ω0|",
+# "2E·I2/L²"); a phone showed "SHA-" over "256" and "|ω(0) − ω0|/|" over "ω0|".
+NAME_PLACES = "#judgeTable th, #judgeStamp"
+NAMES = r"SHA-256|[^\s]*[|/][^\s]*"
 
 # JavaScript: where the keyboard's focus is: [its id or tag, inside #lab, inside #judge, whether
 # it shows as focused (:focus-visible) and its outline's style and width].
@@ -226,11 +232,11 @@ def check_on_screen(driver, at, problems):
                             f"({w}×{h})")
 
 
-def check_sphere_keys(driver, page, where, problems):
+def check_sphere_keys(driver, page, shots, size, problems):
     """The sphere by keyboard: Tab from the last button before it reaches it, shown focused; its
     name says how; the arrow keys turn it (and never step the page's time); Enter starts L at the
     cross, its centre: the direction the sphere's view puts there."""
-    at = f"the sphere by keyboard at {where}"
+    at = f"the sphere by keyboard at {size_name(size)}"
     load(driver, page + "?scene=fig09-matrix-unstable-x")
     driver.execute_script("document.getElementById('labOpen').focus()")
     press(driver, "\ue004")  # Tab
@@ -248,6 +254,9 @@ def check_sphere_keys(driver, page, where, problems):
         problems.append(f"{at}: the sphere is not told as a control (role {role!r}, name {name!r}, "
                         f"described {said!r})")
     before = driver.execute_script("const x = window.explorer; return [x.state(), x.sphereRotation()]")
+    driver.execute_script("document.getElementById('sphere').scrollIntoView({ block: 'nearest' })")
+    time.sleep(0.3)
+    driver.save_screenshot(str(shots / f"every-person-sphere-keys-{size[0]}x{size[1]}.png"))
     for key in ("\ue014", "\ue014", "\ue015"):  # →, →, ↓
         press(driver, key)
     turned = driver.execute_script("const x = window.explorer; return [x.state(), x.sphereRotation()]")
@@ -266,11 +275,17 @@ def check_sphere_keys(driver, page, where, problems):
 
 
 def check_numbers(driver, at, problems):
-    seen, broken = driver.execute_script(BROKEN_NUMBERS, NUMBER_PLACES)
+    seen, broken = driver.execute_script(BROKEN_NUMBERS, NUMBER_PLACES, None)
     if not seen:
         problems.append(f"{at}: no number found to check (the check itself broken)")
     for number, text in broken:
         problems.append(f"{at}: the number {number!r} is broken over two lines in {text!r}")
+    if driver.execute_script("return !document.getElementById('judge').hidden"):
+        names, broken = driver.execute_script(BROKEN_NUMBERS, NAME_PLACES, NAMES)
+        if not names:
+            problems.append(f"{at}: no name or formula of the judge's found to check (the check itself broken)")
+        for name, text in broken:
+            problems.append(f"{at}: {name!r} is broken over two lines in {text!r}")
     return seen
 
 
@@ -459,7 +474,7 @@ def main():
             check_canvases(driver, f"fig09 at {where}", problems)
             axe_check(driver, axe_source, f"the explorer (compare-engines) at {where}", problems)
             check_panel_keys(driver, page, where, problems)
-            check_sphere_keys(driver, page, where, problems)
+            check_sphere_keys(driver, page, shots, size, problems)
             if size == sizes[0]:
                 check_first_visit(driver, page, problems)
             if open_lab_with_fit(driver, page, source, problems, where):
