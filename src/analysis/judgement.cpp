@@ -23,6 +23,17 @@ std::string short_number(double value) {
   return text;
 }
 
+/// A unit quaternion's component for a line: three decimals, trailing zeros dropped ("0.707",
+/// "1", "0"; round-off such as 3e-21 reads 0, and so does -0).
+std::string unit_component(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", value);
+  std::string out = text;
+  while (out.back() == '0') out.pop_back();
+  if (out.back() == '.') out.pop_back();
+  return out == "-0" ? "0" : out;
+}
+
 /// "1 turn-over", "0 turn-overs", "6 turn-overs": a count in words, its noun in number.
 std::string turn_overs(int count) {
   return std::to_string(count) + (count == 1 ? " turn-over" : " turn-overs");
@@ -225,6 +236,12 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
   };
   const double r0 = ratio(d0);
   bool exact_tumbles = false;
+  // The scenario starts at the identity (Scenario::initial): a q(0) away from it is judged
+  // first, and its rows read with the components in x, y, z, w order, the common engine order
+  // (docs/flipcheck.md, "What judge measures"), are measured against the exact motion too.
+  c.start_orientation_error = angle_of(motion.front().q.normalized());
+  const bool start_turned = !(c.start_orientation_error <= limits.orientation_error);
+  double xyzw_error = 0.0;
 
   FlipDetector flips, exact_at_rows;
   for (std::size_t i = 0; i < motion.size(); ++i) {
@@ -247,6 +264,11 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
       c.orientation_error_step = row.step;
     }
     past(c.orientation_past, c.orientation_error, limits.orientation_error);
+    if (start_turned) {
+      // The columns qw, qx, qy, qz holding x, y, z, w: w is the fourth.
+      const Eigen::Quaterniond xyzw(row.q.z(), row.q.w(), row.q.x(), row.q.y());
+      xyzw_error = std::max(xyzw_error, angle_of(q_exact.conjugate() * xyzw.normalized()));
+    }
     if (const double angle = angle_between(d.L, L_exact_world); angle > c.L_direction_error) {
       c.L_direction_error = angle;
       c.L_direction_error_step = row.step;
@@ -277,6 +299,7 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
     past(c.separatrix_past, c.separatrix_approach, limits.separatrix_approach);
   }
   c.stable_spin = c.spin_axis != mid && !exact_tumbles;
+  c.q_written_xyzw = start_turned && xyzw_error <= limits.orientation_error;
   const double t_last = static_cast<double>(c.last_step) * s.dt;
   c.flips = flips.count();
   c.first_flip = flips.first_flip();
@@ -312,6 +335,23 @@ Conformance judge_motion(const Scenario& s, const std::vector<MotionSample>& mot
     return " at step " + std::to_string(worst) + " (limit " + limit + "; past it from step " +
            std::to_string(first.value_or(worst)) + ")";
   };
+  // q(0) first: a q in the wrong order or turned makes every measure after it wrong, ω's start
+  // too where the file gives ω in the world frame (read into the body frame through q).
+  if (start_turned) {
+    const Eigen::Quaterniond q0 = motion.front().q.normalized();
+    const std::string read = "(" + unit_component(q0.w()) + ", " + unit_component(q0.x()) + ", " +
+                             unit_component(q0.y()) + ", " + unit_component(q0.z()) + ")";
+    const std::string off = short_number(c.start_orientation_error) +
+                            " rad from the scenario's orientation (1, 0, 0, 0)";
+    f.push_back(c.q_written_xyzw
+                    ? "q is written x, y, z, w: bookspin reads w, x, y, z (columns qw, qx, qy, "
+                      "qz), so q at step 0 reads " +
+                          read + ", " + off +
+                          "; read as x, y, z, w, q is the exact motion's within " +
+                          short_number(limits.orientation_error) + " rad at every row"
+                    : "q at step 0 is " + read + ", " + off + " (limit " +
+                          short_number(limits.orientation_error) + " rad)");
+  }
   if (!c.complete)
     f.push_back("ends at step " + std::to_string(c.last_step) + " of " + std::to_string(s.steps));
   if (c.start_error > limits.start)

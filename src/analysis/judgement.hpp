@@ -83,7 +83,12 @@ struct Conformance {
   long long stride = 0;     ///< steps between rows
   long long last_step = 0;  ///< the motion's last row
   bool complete = false;  ///< it reaches the scenario's last step (or the stride's last before it)
-  double start_error = 0.0;                ///< |ω(0) − ω0| / |ω0|
+  double start_error = 0.0;              ///< |ω(0) − ω0| / |ω0|
+  double start_orientation_error = 0.0;  ///< rad: q(0) from the scenario's (1, 0, 0, 0)
+  /// q(0) is off and the rows' q, their components read in x, y, z, w order, are the exact
+  /// motion's within the orientation limit at every row (docs/flipcheck.md, "What judge
+  /// measures"): the engine wrote q's components in the wrong order.
+  bool q_written_xyzw = false;
   double energy_drift = 0.0;               ///< max |E/E0 − 1| over the rows, E0 its own row 0
   double L_drift = 0.0;                    ///< max ||L|/|L0| − 1|
   int flips = 0;                           ///< turn-overs (FlipDetector on every row)

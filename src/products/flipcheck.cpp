@@ -231,7 +231,8 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           "thead th:first-child { left: 0; z-index: 2; }\n"
           "dl.names dt { font-family: monospace; margin-top: 0.4em; }\n"
           "dl.names dd { margin-left: 1.5em; }\n</style>\n</head>\n<body>\n"
-          "<h1>Does the engine get the flip right? The league table</h1>\n"
+          // Every part of the page in one main landmark (docs/explorer.md, "For every person").
+          "<main>\n<h1>Does the engine get the flip right? The league table</h1>\n"
           "<p>Each motion judged against the exact motion from the same start "
           "(<code>bookspin flipcheck</code>, docs/flipcheck.md): pass or fail against the "
           "documented thresholds, the turn-overs counted against the exact count (6/6: the "
@@ -266,7 +267,7 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
     }
     page << "</tr>\n";
   }
-  page << "</tbody>\n</table></div>\n</body>\n</html>\n";
+  page << "</tbody>\n</table></div>\n</main>\n</body>\n</html>\n";
   return page.str();
 }
 

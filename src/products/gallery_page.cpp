@@ -261,8 +261,11 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       << "<link rel=\"icon\" href=\"data:,\">\n"  // no favicon request, so no console error
-      << "<title>bookspin: the spinning book, figure by figure</title>\n<style>" << kStyle
-      << "</style>\n</head>\n<body>\n<h1>bookspin: the spinning book, figure by figure</h1>\n"
+      << "<title>bookspin: the spinning book, figure by figure</title>\n<style>"
+      << kStyle
+      // Every part of the page in one main landmark (docs/explorer.md, "For every person").
+      << "</style>\n</head>\n<body>\n<main>\n<h1>bookspin: the spinning book, figure by "
+         "figure</h1>\n"
       << "<p class=\"about\">The clips of bookspin, a simulation of a freely spinning book (the "
          "tennis-racket or Dzhanibekov effect): "
       << first_sections(header)
@@ -292,7 +295,7 @@ std::string gallery_html(const std::vector<GalleryEntry>& entries, const Gallery
   }
   if (!header.fits.empty()) write_fits(out, header.fits, header.phone_lab_page, header.image_sizes);
   for (const auto& e : entries) write_entry(out, e, header.image_sizes);
-  out << "</body>\n</html>\n";
+  out << "</main>\n</body>\n</html>\n";
   return out.str();
 }
 

@@ -54,6 +54,52 @@ TEST(Judgement, TheExactMotionTurnedBetweenItsEndsFailsOnOrientationAndLsDirecti
   EXPECT_TRUE(has_failure(c, "L turned 1.57 rad at step ")) << verdict_line(c);
 }
 
+// q's order (docs/flipcheck.md, "What judge measures"): the exact motion written as common
+// engines write q, its columns qw, qx, qy, qz holding x, y, z, w, is told so first, before ω:
+// read so, q(0) = (0, 0, 0, 1) is a half turn from the scenario's identity, and ω given in the
+// world frame is read into the body frame through that q (motion_csv.hpp), so ω(0) is off too
+// ("starts 2 off the scenario's omega0" was its first words, 46 turn-overs against 6). Planted
+// back (no q line, or it after ω's), this fails.
+TEST(Judgement, AQuaternionWrittenXyzwIsNamedSoBeforeAnyOmegaComplaint) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  std::vector<MotionSample> rows = exact_rows(s, 1);
+  for (MotionSample& row : rows) {
+    const Eigen::Quaterniond q = row.q;
+    const Eigen::Vector3d omega_world = q * row.omega_body;
+    row.q = Eigen::Quaterniond(q.x(), q.y(), q.z(), q.w());  // the columns as written
+    row.omega_body = row.q.normalized().conjugate() * omega_world;
+  }
+  const Conformance c = judge_motion(s, rows);
+  ASSERT_FALSE(c.pass());
+  EXPECT_TRUE(c.q_written_xyzw);
+  EXPECT_NEAR(c.start_orientation_error, kPi, 1e-12);
+  EXPECT_EQ(c.failures.front(),
+            "q is written x, y, z, w: bookspin reads w, x, y, z (columns qw, qx, qy, qz), so q "
+            "at step 0 reads (0, 0, 0, 1), 3.14 rad from the scenario's orientation (1, 0, 0, "
+            "0); read as x, y, z, w, q is the exact motion's within 0.1 rad at every row")
+      << verdict_line(c);
+  EXPECT_TRUE(has_failure(c, "starts ")) << verdict_line(c);
+}
+
+// A q(0) turned away from the scenario's orientation, in no order of its components the exact
+// motion's: the whole motion turned a quarter about body x. Told first, by its components and
+// its angle; not called x, y, z, w. The exact motion itself has no such line. Planted back (no
+// q line), this fails.
+TEST(Judgement, AStartTurnedFromTheScenariosOrientationIsToldFirst) {
+  const Scenario s = scenario("book-intermediate-0.05");
+  std::vector<MotionSample> rows = exact_rows(s, 1);
+  EXPECT_TRUE(judge_motion(s, rows).pass());
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitX()));
+  for (MotionSample& row : rows) row.q = row.q * turn;
+  const Conformance c = judge_motion(s, rows);
+  ASSERT_FALSE(c.pass());
+  EXPECT_FALSE(c.q_written_xyzw);
+  EXPECT_EQ(c.failures.front(),
+            "q at step 0 is (0.707, 0.707, 0, 0), 1.57 rad from the scenario's orientation (1, "
+            "0, 0, 0) (limit 0.1 rad)")
+      << verdict_line(c);
+}
+
 // A failure names where it starts and where it is worst: the exact motion with every row from
 // step 1000 on turned about world z by an angle growing from 0.2 rad (past the orientation
 // limit 0.1 and L's 0.01 at once) to 0.2 + 1e-3·2000 rad at the last step, 3000: each failure

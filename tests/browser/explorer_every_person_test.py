@@ -19,18 +19,25 @@ pixels a CSS pixel), on the page `bookspin explore` writes from every scene. At 
     the judge open no Tab reaches the lab's button;
   - the time axis of fig09 opened at t = 0 spans the scene's run (ticks of whole time units,
     not "0 2e-10 4e-10");
-  - the canvases named (role img, an aria-label): the 3D view's name says the scene, t and each
-    run's flips as the readout shows them; a flip counted is said in a live region
-    (aria-live, #spoken);
+  - the book (the 3D view) on the first screen, whole; on a screen wider than tall the sphere
+    and the plots with it (at 320×640 the six engines' view ran 17 px past the screen; at
+    800×600 the sphere and the plots were under the controls);
+  - the canvases named (role img, an aria-label; the sphere, which the keyboard operates, role
+    application): the 3D view's name says the scene, t and each run's flips as the readout
+    shows them; a flip counted is said in a live region (aria-live, #spoken);
+  - the sphere by keyboard: Tab reaches it, shown focused; its name says the keys; the arrow
+    keys turn it under the cross at its centre without stepping t; Enter starts L there;
   - the gallery's link to the lab (explorer.html#lab) opened afresh does not ask to drop a
     recording "again" (a reload does: the address carries none);
   - axe-core (npm, pinned in tests/browser/package-lock.json, installed with `npm ci` into
     BINARY_DIR/test-output/every-person-npm) finds no serious or critical violation on the
     explorer (fig09, the lab open with a fit, the judge open with a judgement), on a gallery
     page (`bookspin gallery` of one short clip and its plot) and on a league page (`bookspin
-    flipcheck league`); each run's summary is printed.
+    flipcheck league`), nor any violation of its landmark rules (region, landmark-*: every part
+    of the page in a landmark, one main); each run's summary is printed.
 
-Screenshots: BINARY_DIR/test-output/browser/every-person-<case>-<W>x<H>.png.
+Screenshots: BINARY_DIR/test-output/browser/every-person-<case>-<W>x<H>.png (the sphere focused
+by Tab: every-person-sphere-keys-<W>x<H>.png).
 BOOKSPIN_EVERY_PERSON_SIZES=320x640,960x540 (say) checks those sizes alone (a planted fault's run).
 
 Usage: explorer_every_person_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -55,6 +62,12 @@ READOUT_CASES = (("fig09", "?scene=fig09-matrix-unstable-x", 227, 1),
                  ("compare-engines", "?scene=compare-engines&tiles=1", 599, 6))
 FOCUS_OUTLINE_PX = 2
 SERIOUS = ("serious", "critical")
+
+
+def is_landmark_rule(rule):
+    """axe-core's rules of landmarks (moderate: content outside them, no main or two): failed
+    too, on every page (the gallery's and the league's content once lay outside any)."""
+    return rule == "region" or rule.startswith("landmark-")
 # Violations of a page bookspin's C++ writes, awaiting a change there (docs/explorer.md, "For
 # every person"): printed, not failed. (page, rule) → what is to change.
 WRITTEN_BY_CPP = {}
@@ -105,7 +118,8 @@ READOUT = """
 # JavaScript: each number (a version, "m × 10ⁿ", "v ± σ", a range) in the text of `arguments[0]`'s
 # elements whose characters lie on more than one line: [the number, the text around it].
 BROKEN_NUMBERS = r"""
-  const NUM = /(?<![\p{L}\d.])(?:\d+\.\d+\.\d+|-?\d+(?:\.\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?(?:–-?\d+(?:\.\d+)?)?(?: ± \d+(?:\.\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)?)/gu;
+  const NUM = arguments[1] ? new RegExp(arguments[1], 'gu') :
+    /(?<![\p{L}\d.])(?:\d+\.\d+\.\d+|-?\d+(?:\.\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?(?:–-?\d+(?:\.\d+)?)?(?: ± \d+(?:\.\d+)?(?: × 10[⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)?)?)/gu;
   const out = [];
   let seen = 0;
   for (const root of document.querySelectorAll(arguments[0])) {
@@ -125,6 +139,10 @@ BROKEN_NUMBERS = r"""
   return [seen, out];
 """
 NUMBER_PLACES = "#overlay, #judgeTable, #judgeStamp, #judgeFailures, #labBody, #labTosses, #labSummary"
+# The judge's words whole too: "SHA-256" and each formula's token (no space inside: "ω0|/|ω0|",
+# "2E·I2/L²"); a phone showed "SHA-" over "256" and "|ω(0) − ω0|/|" over "ω0|".
+NAME_PLACES = "#judgeTable th, #judgeStamp"
+NAMES = r"SHA-256|[^\s]*[|/][^\s]*"
 
 # JavaScript: where the keyboard's focus is: [its id or tag, inside #lab, inside #judge, whether
 # it shows as focused (:focus-visible) and its outline's style and width].
@@ -140,10 +158,18 @@ CONTROLS = """
   return [...document.getElementById(arguments[0]).querySelectorAll('button, input, select, summary, [href]')]
     .filter((e) => !e.disabled && !e.closest('[hidden]') && e.getClientRects().length > 0).length;
 """
-# JavaScript: every canvas shown and its accessible name: [id or class, role, aria-label].
+# JavaScript: every canvas shown and its accessible name: [id or class, role, aria-label]; one the
+# keyboard operates (the sphere, in the tab order) is an application, any other an image.
 CANVASES = """
   return [...document.querySelectorAll('canvas')].filter((c) => !c.closest('[hidden]') && c.getClientRects().length > 0)
-    .map((c) => [c.id || c.className, c.getAttribute('role'), c.getAttribute('aria-label') || '']);
+    .map((c) => [c.id || c.className, c.getAttribute('role'), c.getAttribute('aria-label') || '', c.tabIndex >= 0]);
+"""
+
+
+# JavaScript: the window and the boxes of the 3D view, the sphere and the plots.
+ON_SCREEN = """
+  const box = (id) => { const r = document.getElementById(id).getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; };
+  return [innerWidth, innerHeight, { viewBox: box('viewBox'), sphere: box('sphere'), plots: box('plots') }];
 """
 
 
@@ -176,6 +202,7 @@ def check_readout(driver, page, shots, size, where, problems):
             problems.append(f"{at}: {text!r} {b} is not whole in the readout's strip as shown "
                             f"{[round(v) for v in r['strip']]} (window {r['w']}×{r['h']})")
         check_numbers(driver, at, problems)
+        check_on_screen(driver, at, problems)
         # The 3D view's name: the scene, t and each run's flips as the readout shows them.
         name = driver.execute_script("return document.getElementById('view').getAttribute('aria-label') || ''")
         clock = driver.execute_script("return document.getElementById('clock').textContent")
@@ -193,20 +220,80 @@ def check_readout(driver, page, shots, size, where, problems):
             problems.append(f"{at}: the flips counted on the way to t = {t} were said in no live region: {spoken}")
 
 
+def check_on_screen(driver, at, problems):
+    """The book on the first screen, whole (the page not scrolled); on a screen wider than tall,
+    the sphere and the plots with it (800x600 once had them under the controls)."""
+    w, h, boxes = driver.execute_script(ON_SCREEN)
+    must = ["viewBox"] + (["sphere", "plots"] if w > h else [])
+    for name in must:
+        left, top, right, bottom = boxes[name]
+        if left < -0.5 or top < -0.5 or right > w + 0.5 or bottom > h + 0.5:
+            problems.append(f"{at}: #{name} {[round(v) for v in boxes[name]]} is not on the first screen "
+                            f"({w}×{h})")
+
+
+def check_sphere_keys(driver, page, shots, size, problems):
+    """The sphere by keyboard: Tab from the last button before it reaches it, shown focused; its
+    name says how; the arrow keys turn it (and never step the page's time); Enter starts L at the
+    cross, its centre: the direction the sphere's view puts there."""
+    at = f"the sphere by keyboard at {size_name(size)}"
+    load(driver, page + "?scene=fig09-matrix-unstable-x")
+    driver.execute_script("document.getElementById('labOpen').focus()")
+    press(driver, "\ue004")  # Tab
+    focus = driver.execute_script(FOCUS)
+    if focus[0] != "sphere":
+        problems.append(f"{at}: Tab from #labOpen reached #{focus[0]}, not the sphere")
+        return
+    if not focus[3] or focus[4] == "none" or focus[5] < FOCUS_OUTLINE_PX:
+        problems.append(f"{at}: the focused sphere does not show it: :focus-visible {focus[3]}, outline "
+                        f"{focus[4]} {focus[5]} px")
+    role, name, said = driver.execute_script(
+        "const c = document.getElementById('sphere'), d = document.getElementById(c.getAttribute('aria-describedby'));"
+        "return [c.getAttribute('role'), c.getAttribute('aria-label') || '', d ? d.textContent : ''];")
+    if role != "application" or "arrow" not in name or "Enter" not in name or "L/|L| = (" not in said:
+        problems.append(f"{at}: the sphere is not told as a control (role {role!r}, name {name!r}, "
+                        f"described {said!r})")
+    before = driver.execute_script("const x = window.explorer; return [x.state(), x.sphereRotation()]")
+    driver.execute_script("document.getElementById('sphere').scrollIntoView({ block: 'nearest' })")
+    time.sleep(0.3)
+    driver.save_screenshot(str(shots / f"every-person-sphere-keys-{size[0]}x{size[1]}.png"))
+    for key in ("\ue014", "\ue014", "\ue015"):  # →, →, ↓
+        press(driver, key)
+    turned = driver.execute_script("const x = window.explorer; return [x.state(), x.sphereRotation()]")
+    if turned[0]["t"] != before[0]["t"] or turned[1] == before[1]:
+        problems.append(f"{at}: the arrow keys moved t {before[0]['t']} → {turned[0]['t']}, turned the sphere "
+                        f"{turned[1] != before[1]}")
+    press(driver, "\ue007")  # Enter
+    time.sleep(0.3)
+    state, dots = driver.execute_script("const x = window.explorer; return [x.state(), x.sphereDots()]")
+    cross = turned[1][2]  # the view's z axis in the body frame: the centre of the disc
+    u = dots[0]["u"] if dots else [0, 0, 0]
+    if state["axis"] != "custom" or state["w"] == before[0]["w"] or max(abs(a - b) for a, b in zip(u, cross)) > 0.02:
+        problems.append(f"{at}: Enter started axis {state['axis']!r}, ω0 {state['w']} (was {before[0]['w']}), "
+                        f"L along {u}, not the cross's {cross}")
+    print(f"{at}: Tab reached it, shown focused; the arrows turned it, Enter started L along {[round(v, 3) for v in u]}")
+
+
 def check_numbers(driver, at, problems):
-    seen, broken = driver.execute_script(BROKEN_NUMBERS, NUMBER_PLACES)
+    seen, broken = driver.execute_script(BROKEN_NUMBERS, NUMBER_PLACES, None)
     if not seen:
         problems.append(f"{at}: no number found to check (the check itself broken)")
     for number, text in broken:
         problems.append(f"{at}: the number {number!r} is broken over two lines in {text!r}")
+    if driver.execute_script("return !document.getElementById('judge').hidden"):
+        names, broken = driver.execute_script(BROKEN_NUMBERS, NAME_PLACES, NAMES)
+        if not names:
+            problems.append(f"{at}: no name or formula of the judge's found to check (the check itself broken)")
+        for name, text in broken:
+            problems.append(f"{at}: {name!r} is broken over two lines in {text!r}")
     return seen
 
 
 def check_canvases(driver, at, problems):
-    for name, role, label in driver.execute_script(CANVASES):
-        if role != "img" or len(label) < 10:
+    for name, role, label, keys in driver.execute_script(CANVASES):
+        if role != ("application" if keys else "img") or len(label) < 10:
             problems.append(f"{at}: the canvas {name!r} is not named for a screen reader (role {role!r}, "
-                            f"aria-label {label!r})")
+                            f"aria-label {label!r}, in the tab order {keys})")
 
 
 def check_panel_keys(driver, page, where, problems):
@@ -297,7 +384,7 @@ def check_first_visit(driver, page, problems):
 
 def axe_check(driver, axe_source, what, problems, page="explorer"):
     """axe-core on the page as it is now: its summary printed; a serious or critical violation a
-    problem (but those of WRITTEN_BY_CPP, named as such)."""
+    problem, and so is any of its landmark rules (but those of WRITTEN_BY_CPP, named as such)."""
     driver.execute_script(axe_source)
     result = driver.execute_async_script("""
       const done = arguments[arguments.length - 1];
@@ -308,7 +395,7 @@ def axe_check(driver, axe_source, what, problems, page="explorer"):
     if "error" in result:
         problems.append(f"{what}: axe-core failed: {result['error']}")
         return
-    bad = [v for v in result["violations"] if v["impact"] in SERIOUS]
+    bad = [v for v in result["violations"] if v["impact"] in SERIOUS or is_landmark_rule(v["id"])]
     print(f"axe-core {result['version']} on {what}: {len(result['violations'])} violations "
           f"({len(bad)} serious or critical), {result['passes']} rules passed, {result['incomplete']} to review"
           + "".join(f"\n    {v['impact']}: {v['id']} ({v['nodes']} nodes, {v['targets']}): {v['help']}"
@@ -387,6 +474,7 @@ def main():
             check_canvases(driver, f"fig09 at {where}", problems)
             axe_check(driver, axe_source, f"the explorer (compare-engines) at {where}", problems)
             check_panel_keys(driver, page, where, problems)
+            check_sphere_keys(driver, page, shots, size, problems)
             if size == sizes[0]:
                 check_first_visit(driver, page, problems)
             if open_lab_with_fit(driver, page, source, problems, where):
@@ -415,8 +503,9 @@ def main():
     print(f"screenshots: {shots}/every-person-*.png")
     if problems:
         fail(f"{len(problems)} problems:\n" + "\n".join(problems[:80]))
-    print("ok: the readout whole, numbers whole, the panels modal by keyboard, the canvases named, "
-          "no serious or critical axe-core violation, at every size")
+    print("ok: the readout whole, numbers whole, the book (and on a wide screen the sphere and the plots) "
+          "on the first screen, the panels modal by keyboard, the sphere by keyboard, the canvases named, "
+          "no serious or critical axe-core violation nor any of its landmark rules, at every size")
 
 
 if __name__ == "__main__":

@@ -292,6 +292,40 @@ TEST(FlipcheckCommand, AFailingMotionExitsThreeAndEveryMotionPassingExitsZero) {
       << help.out;
 }
 
+// q's order (docs/flipcheck.md, "What judge measures"): the exported exact motion written as
+// common engines write q, x, y, z, w under the header's qw, qx, qy, qz, with ω in the world
+// frame, is told so first in the verdict line and in the CSV's failures, before ω's start
+// (which the reader turns into the body frame through that q). Planted back (the judge
+// without its q line), this fails.
+TEST(FlipcheckCommand, AQuaternionWrittenXyzwIsNamedFirst) {
+  ScratchDir dir;
+  const CliResult exported = run_bookspin("flipcheck export " + scenario("mujoco-test-box") +
+                                          " -o " + quoted(dir / "kit"));
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  std::vector<std::string> lines = lines_of(dir / "kit" / "mujoco-test-box-exact.csv");
+  std::vector<std::string> written{"t,qw,qx,qy,qz,wx_world,wy_world,wz_world"};
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::vector<std::string> cells;
+    std::size_t from = 0;
+    for (std::size_t to; (to = lines[i].find(',', from)) != std::string::npos; from = to + 1)
+      cells.push_back(lines[i].substr(from, to - from));
+    ASSERT_GE(cells.size(), 11u) << lines[i];
+    written.push_back(cells[0] + "," + cells[2] + "," + cells[3] + "," + cells[4] + "," + cells[1] +
+                      "," + cells[8] + "," + cells[9] + "," + cells[10]);
+  }
+  write_lines(dir / "xyzw.csv", written);
+  const SplitResult judged =
+      run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + " " +
+                         quoted(dir / "xyzw.csv") + " -o " + quoted(dir / "out"));
+  EXPECT_EQ(judged.status, 3) << judged.out << judged.err;
+  const std::string first =
+      "FAIL (q is written x, y, z, w: bookspin reads w, x, y, z (columns qw, qx, qy, qz), so q "
+      "at step 0 reads (0, 0, 0, 1), 3.14 rad from the scenario's orientation (1, 0, 0, 0); "
+      "read as x, y, z, w, q is the exact motion's within 0.1 rad at every row; starts ";
+  EXPECT_NE(judged.out.find("xyzw.csv: " + first), std::string::npos) << judged.out;
+  EXPECT_NE(read_file(dir / "out" / "mujoco-test-box-judge.csv").find(",fail,"), std::string::npos);
+}
+
 // Every file export writes is a scenario judge reads: the scenario JSON judges as its scene
 // file does (the judgement CSVs byte for byte), and --set, which changes a scene, is refused
 // for a JSON. A JSON that is not a scenario is one line, exit 2, nothing written.

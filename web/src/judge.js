@@ -26,6 +26,10 @@ const WORDS = {
   separatrix_approach: 'way to the separatrix (max)',
 };
 
+/** A measure's words as HTML, each formula's token ("|ω(0)", "ω0|/|ω0|", "2E·I2/L²") kept on one
+ * line: a line breaks only at a space (docs/explorer.md, "Numbers whole"). */
+const whole = (words) => words.split(' ').map((t) => (/[|/]/.test(t) ? `<span class="nb">${t}</span>` : t)).join(' ');
+
 /** The judgement's columns that a rule of the judge bounds, and the rule's name in
  * analysis::judge_rules (docs/flipcheck.md): the value itself over the limit fails. Not
  * first_flip (its rule bounds |first − exact| over T/2, not the time shown). */
@@ -35,9 +39,11 @@ const RULE_OF = { start_error: 'start', energy_drift: 'energy_drift', L_drift: '
 
 /** The measure each of the judge's failure lines (analysis::judge_motion's words) is about: a
  * line's start and the judgement's column, so that the table marks the row of every failure
- * (those of no bound on the value alone too: the turn-overs, the first one's time). */
+ * (those of no bound on the value alone too: the turn-overs, the first one's time). q's start,
+ * which the judge tells first (docs/flipcheck.md, "What judge measures"), marks the orientation
+ * error's row, ahead of the orientation error's own line. */
 const FAILURE_OF = [
-  [/^ends at step/, 'last_step'], [/^starts /, 'start_error'], [/^energy drift/, 'energy_drift'],
+  [/^q (is written|at step 0)/, 'orientation_error'], [/^ends at step/, 'last_step'], [/^starts /, 'start_error'], [/^energy drift/, 'energy_drift'],
   [/^\|L\| drift/, 'L_drift'], [/^L turned/, 'L_direction_error'], [/^\d+ turn-overs?,/, 'flips'],
   [/^first turn-over/, 'first_flip'], [/^orientation error/, 'orientation_error'],
   [/^tumbles at/, 'tumble_time'], [/^r = 2E/, 'separatrix_approach'],
@@ -232,7 +238,7 @@ export class JudgePanel {
     // What judged it (docs/flipcheck.md, "Versions"): bookspin's version and the scenario's SHA-256.
     // The version whole; the digest, 64 characters, breaks anywhere.
     $('judgeStamp').innerHTML = `judged by bookspin <span class="nb">${escape(row.version)}</span>; ` +
-      `scenario JSON SHA-256 <span class="digest">${escape(row.scenario_sha256)}</span>`;
+      `scenario JSON <span class="nb">SHA-256</span> <span class="digest">${escape(row.scenario_sha256)}</span>`;
     $('judgeFailures').innerHTML = '';
     for (const f of failures) $('judgeFailures').appendChild(Object.assign(document.createElement('li'), { textContent: f }));
     // The readable label first, the CSV's key second; each number to four significant digits
@@ -253,7 +259,7 @@ export class JudgePanel {
       const why = c in failed ? (/\(([^)]*)\)\s*$/.exec(failed[c]) || [null, failed[c]])[1] : '';
       const bound = limit !== null ? `${overLimit ? 'over its limit' : 'limit'} ${limitText}`
         : over ? `failed: ${why}` : '';
-      return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] || c}${WORDS[c] ? `<small><code>${c.replace(/_/g, '_<wbr>')}</code></small>` : ''}</th>` +
+      return `<tr${over ? ' class="over"' : ''}><th>${WORDS[c] ? whole(WORDS[c]) : c}${WORDS[c] ? `<small><code>${c.replace(/_/g, '_<wbr>')}</code></small>` : ''}</th>` +
         `<td${v === null ? '' : ` title="${v}"`}>${wholeNumbers(significant(v))}</td><td class="limit">${wholeNumbers(bound)}</td></tr>`;
     });
     $('judgeTable').innerHTML = rows.join('');

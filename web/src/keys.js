@@ -48,6 +48,10 @@ export function listenKeys(actions) {
     if (typing || ev.ctrlKey || ev.metaKey || ev.altKey) return;
     // A panel over the page (modal.js: the lab, the judge) takes the keys while it is open.
     if (panelOpen()) return;
+    // A control that takes keys of its own (data-keys: the sphere's arrows, Enter and Space)
+    // keeps them while it has the focus.
+    const own = ev.target instanceof HTMLElement ? ev.target.dataset.keys : undefined;
+    if (own && own.split(' ').includes(ev.code)) return;
     const act = {
       Space: () => setPlaying(!actions.playing()),
       ArrowRight: () => seek(actions.time() + stepSize()),

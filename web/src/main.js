@@ -24,6 +24,8 @@ import { Address } from './address.js';
 const $ = (id) => document.getElementById(id);
 /** The 3D view's least height (CSS px) on any screen. */
 const VIEW_MIN_PX = 200;
+/** index.html's small landscape screen (800×600): the sphere and the plots beside the view. */
+const SMALL_LANDSCAPE = '(min-width: 700px) and (max-width: 899px) and (orientation: landscape) and (min-height: 500px)';
 
 function startApp(wasm, engines) {
   const SCENES = window.BOOKSPIN_SCENES || [];  // inlined by bookspin explore
@@ -147,9 +149,14 @@ function startApp(wasm, engines) {
    * the pointer; a new run, a new size or a pause sets it afresh (`fresh`). */
   function layout(fresh) {
     const strip = $('overlay'), box = $('viewBox'), main = $('main');
-    const stacked = matchMedia('(max-width: 899px)').matches;  // index.html's stacked layout
+    // index.html's small landscape screen: the readout over the view, as on a projector, in
+    // #main of the screen's height less the transport bar under it.
+    const small = matchMedia(SMALL_LANDSCAPE).matches;
+    main.style.height = small ? `${innerHeight - $('transport').offsetHeight}px` : '';
+    const stacked = !small && matchMedia('(max-width: 899px)').matches;  // index.html's stacked layout
     if (fresh) strip.style.minHeight = '';
     const need = mustReadHeight(strip);
+    box.style.height = '';
     if (!stacked) {
       const share = 1 + Math.max(VIEW_MIN_PX, innerWidth * innerHeight / 3 / Math.max(1, main.clientWidth));
       const cap = Math.max(48, main.clientHeight - share);
@@ -160,6 +167,10 @@ function startApp(wasm, engines) {
       const beside = matchMedia('(orientation: landscape)').matches;  // index.html: beside the view
       const cap = beside ? box.offsetHeight : Math.max(96, innerHeight - box.offsetHeight - $('transport').offsetHeight);
       strip.style.maxHeight = `${offLines(strip, Math.max(cap, need), need)}px`;
+      // Under the strip, the view ends on the first screen: a tall strip (a comparison's six
+      // tiles on a phone) takes from its height, never below VIEW_MIN_PX.
+      const room = Math.floor(innerHeight - strip.offsetHeight);
+      if (!beside && room < box.offsetHeight) box.style.height = `${Math.max(VIEW_MIN_PX, room)}px`;
     }
     stripNeed = need;
   }

@@ -1,7 +1,9 @@
 // The momentum sphere: L/|L| in the body frame on a 2D canvas, orthographic, with the polhodes
 // and separatrices of the body (physics::polhode_family through the WebAssembly module) and each
 // run's trail. Drag (mouse or touch) turns it; a click or tap on it picks the start direction of
-// L there (`onPick(u)`, u a body-frame unit vector).
+// L there (`onPick(u)`, u a body-frame unit vector). By keyboard (docs/explorer.md, "The page"):
+// focused, it draws a cross at its centre; the arrow keys turn it under the cross (Shift: finer)
+// and Enter or Space picks the direction under the cross.
 import * as THREE from 'three';
 
 // The 2D panels draw in software (a canvas in memory, copied to the screen when it changed):
@@ -15,6 +17,7 @@ export const touchScreen = () => typeof matchMedia === 'function' && matchMedia(
 const DRAG_PIXELS = 5;  // a press that moves less than this is a click, not a drag
 const DOT_REACH_PX = 10;  // a click this close to a drawn L dot (CSS px) picks that dot's L
 const FONT_PX = 16;
+const KEY_TURN = Math.PI / 36;  // an arrow key's turn of the sphere (5°; with Shift, 1°)
 /** The principal axes by ascending moment (physics::principal_order), as the sphere names them. */
 const AXIS_NAMES = ['smallest', 'intermediate', 'largest'];
 
@@ -128,9 +131,7 @@ export class Sphere {
       if (!press.dragged) return;
       const dx = (ev.clientX - press.last[0]) * 0.01, dy = (ev.clientY - press.last[1]) * 0.01;
       press.last = [ev.clientX, ev.clientY];
-      const q = new THREE.Matrix4().makeRotationY(dx).multiply(new THREE.Matrix4().makeRotationX(dy));
-      this.rotation = new THREE.Matrix3().setFromMatrix4(q).multiply(this.rotation);
-      this.redraw = true;
+      this.turn(dx, dy);
     });
     cv.addEventListener('pointerup', (ev) => {
       const was = press;
@@ -145,6 +146,43 @@ export class Sphere {
       if (u) this.onPick(u);
     });
     cv.addEventListener('pointercancel', () => { press = null; });
+    const turns = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
+    cv.addEventListener('keydown', (ev) => {
+      if (ev.ctrlKey || ev.metaKey || ev.altKey) return;
+      if (ev.code in turns) {
+        const [dx, dy] = turns[ev.code].map((n) => n * KEY_TURN / (ev.shiftKey ? 5 : 1));
+        this.turn(dx, dy);
+      } else if (ev.key === 'Enter' || ev.code === 'Space') {
+        const { cx, cy } = this.geometry();
+        this.onPick(this.bodyDirectionAt(cx, cy));
+      } else {
+        return;
+      }
+      ev.preventDefault();
+      this.sayCross();
+    });
+    for (const what of ['focus', 'blur']) cv.addEventListener(what, () => { this.redraw = true; this.sayCross(); });
+  }
+
+  /** Turns the view as a drag of (dx, dy) (rad about the view's y and x axes) does. */
+  turn(dx, dy) {
+    const q = new THREE.Matrix4().makeRotationY(dx).multiply(new THREE.Matrix4().makeRotationX(dy));
+    this.rotation = new THREE.Matrix3().setFromMatrix4(q).multiply(this.rotation);
+    this.redraw = true;
+  }
+
+  /** Whether the keyboard is on the sphere: its cross is drawn. */
+  focused() {
+    return typeof document !== 'undefined' && document.activeElement === this.canvas;
+  }
+
+  /** The direction under the cross in words, for a screen reader (the canvas' description). */
+  sayCross() {
+    const words = document.getElementById('sphereCross');
+    if (!words) return;
+    const { cx, cy } = this.geometry();
+    const u = this.bodyDirectionAt(cx, cy).map((c) => (Math.abs(c) < 0.005 ? 0 : c).toFixed(2));
+    words.textContent = `the cross is on L/|L| = (${u.join(', ')}) in the body frame; Enter starts L there`;
   }
 
   curve(ctx, pts, colour, width) {
@@ -247,10 +285,10 @@ export class Sphere {
     g.strokeStyle = '#555'; g.beginPath(); g.arc(cx, cy, R, 0, 2 * Math.PI); g.stroke();
     // The caption within the canvas: on a narrow one (a 1024-wide screen's 260 px) its short
     // form, at 12 px at least.
-    const act = touchScreen() ? 'tap' : 'click';
-    let caption = `L/|L| in the body frame · ${act}: start here`, px = FONT_PX;
+    const act = touchScreen() ? 'tap' : 'click', keys = this.focused();
+    let caption = keys ? 'arrows: turn · Enter: start L at +' : `L/|L| in the body frame · ${act}: start here`, px = FONT_PX;
     g.font = `${px * k}px sans-serif`;
-    if (g.measureText(caption).width > W - 16 * k) caption = `L/|L|, body frame · ${act}: start`;
+    if (g.measureText(caption).width > W - 16 * k) caption = keys ? 'arrows · Enter: start at +' : `L/|L|, body frame · ${act}: start`;
     while (px > 12 && g.measureText(caption).width > W - 16 * k) g.font = `${--px * k}px sans-serif`;
     g.fillStyle = '#ccc';
     g.fillText(caption, 8 * k, (FONT_PX + 2) * k);
@@ -304,6 +342,14 @@ export class Sphere {
         g.globalAlpha = 0.45; g.strokeStyle = r.colour; g.lineWidth = 2 * k; g.stroke(); g.globalAlpha = 1;
       }
       this.dots.push({ x, y, u: u.slice() });
+    }
+    if (keys) {
+      // The keyboard's cross: where Enter starts L, dark-edged so that it shows on any curve.
+      const arm = 10 * k;
+      for (const [colour, width] of [['#14171d', 5], ['#f0d060', 2]]) {
+        g.strokeStyle = colour; g.lineWidth = width * k;
+        g.beginPath(); g.moveTo(cx - arm, cy); g.lineTo(cx + arm, cy); g.moveTo(cx, cy - arm); g.lineTo(cx, cy + arm); g.stroke();
+      }
     }
     this.redraw = false;
   }
