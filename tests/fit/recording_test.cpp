@@ -269,6 +269,36 @@ TEST(Recording, ATextExportWithItsHeaderInACommentAndATotalColumnIsRead) {
             std::string::npos);
 }
 
+// The |ω| column's own allowance, a printed value's rounding (1 % and 0.01 rad/s): the same
+// samples with |ω| printed to 2, 3 or 5 decimals read alike (a still phone's 0.0037 rad/s printed
+// "0.00" is rounding, not another unit), and so does |ω| 0.0099 rad/s off; 0.0102 rad/s off at
+// rest (past 1 % of 0.014 and 0.01) is refused at its first row.
+TEST(Recording, TheTotalColumnIsCheckedToItsPrintedRoundingAndNoFurther) {
+  std::vector<Eigen::Vector3d> omega;
+  for (int i = 0; i < 40; ++i)
+    omega.emplace_back(i < 20 ? Eigen::Vector3d(0.003, -0.002, 0.001)
+                              : Eigen::Vector3d(1.5 + 0.1 * i, -12.0, 0.4));
+  const auto text = [&](int decimals, double off) {
+    std::string csv = "t,wx,wy,wz,|w|\n";
+    char row[200];
+    for (std::size_t i = 0; i < omega.size(); ++i) {
+      const Eigen::Vector3d& w = omega[i];
+      std::snprintf(row, sizeof row, "%.3f,%.6f,%.6f,%.6f,%.*f\n", 0.01 * i, w[0], w[1], w[2],
+                    decimals, w.norm() + off);
+      csv += row;
+    }
+    return csv;
+  };
+  const GyroRecording five = parse_gyro_csv(text(5, 0.0), "ok.csv", "ok");
+  for (int decimals : {2, 3}) {
+    const GyroRecording read = parse_gyro_csv(text(decimals, 0.0), "ok.csv", "ok");
+    EXPECT_EQ(read.omega, five.omega) << decimals;
+  }
+  EXPECT_EQ(parse_gyro_csv(text(5, 0.0099), "ok.csv", "ok").omega, five.omega);
+  const std::string past = error_of(text(5, 0.0102));
+  EXPECT_EQ(past.rfind("bad.csv:2: |w|: |ω| is ", 0), 0u) << past;
+}
+
 // One axis in °/s beside two in rad/s (a column converted by hand under phyphox's header, or a
 // text export's) is named at reading, by the |ω| column the export writes beside the axes:
 // taken in °/s, that axis makes the norm agree (it ended in "the fit did not converge").
