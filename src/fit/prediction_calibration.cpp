@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
+#include <cstdio>
 
 namespace bookspin::fit {
 
@@ -39,6 +40,46 @@ std::string calibration_words(const PredictionCalibration& calibration) {
     return "uncalibrated: " + n + others + " with a measured half period (" +
            std::to_string(kFewestToCalibrate) + " needed)";
   return calibration.method + " on " + n + others;
+}
+
+void calibrate_predictions(const std::vector<Prediction>& predictions,
+                           std::vector<TossFit>& tosses) {
+  std::vector<std::optional<double>> score(tosses.size());
+  for (std::size_t j = 0; j < tosses.size(); ++j) {
+    const Prediction& p = predictions[j];
+    if (tosses[j].half_period_measured && p.propagated_half && p.propagated_sigma &&
+        *p.propagated_sigma > 0)
+      score[j] = (*tosses[j].half_period_measured - *p.propagated_half) / *p.propagated_sigma;
+  }
+  for (std::size_t k = 0; k < tosses.size(); ++k) {
+    const Prediction& p = predictions[k];
+    TossFit& toss = tosses[k];
+    if (!p.propagated_half || !p.propagated_sigma || !toss.half_period_predicted) continue;
+    std::vector<double> others;
+    for (std::size_t j = 0; j < tosses.size(); ++j)
+      if (j != k && score[j]) others.push_back(*score[j]);
+    const PredictionCalibration c = calibrate_prediction(others);
+    toss.prediction_interval = calibration_words(c);
+    if (!c.calibrated) {
+      toss.half_period_predicted_sigma.reset();
+      continue;
+    }
+    const double sigma = *p.propagated_sigma * c.factor;
+    char how[160];
+    std::snprintf(how, sizeof how, ", widened ×%.2g by the %s", c.factor,
+                  toss.prediction_interval.c_str());
+    toss.not_predicted =
+        withheld_for_width(*p.propagated_half, sigma, p.propagated_window, p.largest, how);
+    if (toss.not_predicted.empty()) {
+      toss.half_period_predicted_sigma = sigma;
+      continue;
+    }
+    toss.half_period_predicted.reset();
+    toss.half_period_predicted_sigma.reset();
+    toss.predicted_window.reset();
+    toss.predicted_from_tosses.reset();
+    toss.predicted_from_seconds.reset();
+  }
 }
 
 }  // namespace bookspin::fit

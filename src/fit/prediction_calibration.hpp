@@ -7,6 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "fit/prediction_sigma.hpp"
+#include "fit/toss_fit.hpp"
+
 namespace bookspin::fit {
 
 /// The fewest other tosses (each with a measured and a predicted half period) an interval is
@@ -44,5 +47,13 @@ PredictionCalibration calibrate_prediction(const std::vector<double>& scores);
 /// "conformal on 21 other tosses", "Student t on 5 other tosses", or "uncalibrated: 1 other toss
 /// with a measured half period (2 needed)": the words the tables and the summary give.
 std::string calibration_words(const PredictionCalibration& calibration);
+
+/// Each prediction's interval calibrated by the fit's other tosses (calibrate_prediction on their
+/// scores): its propagated σ widened by the scale the other tosses' scores |measured − predicted|
+/// / σ call for, then withheld where over ±kWidestInterval; shown with no σ where too few others
+/// have a measured and a predicted half period (uncalibrated, in words). `predictions` and
+/// `tosses` one per toss, in order; each toss's predicted fields set or cleared in place.
+void calibrate_predictions(const std::vector<Prediction>& predictions,
+                           std::vector<TossFit>& tosses);
 
 }  // namespace bookspin::fit

@@ -1,6 +1,8 @@
 // The assembly of a FitResult (docs/phone-lab.md, "The fit"): each stage a named call over the
 // unknowns (toss_parameters.hpp), the least squares and its covariances (toss_solve.hpp), the
-// half periods (half_period.hpp) and the flags (toss_flags.hpp).
+// flight ends' spread (end_spread.hpp), the half periods (half_period.hpp), the predictions'
+// calibration (prediction_calibration.hpp), the flags (toss_flags.hpp), the body's notes
+// (body_notes.hpp) and mixed units (mixed_units.hpp).
 #include "fit/toss_fit.hpp"
 
 #include <algorithm>
@@ -9,8 +11,12 @@
 #include <utility>
 
 #include "common/errors.hpp"
+#include "fit/body_notes.hpp"
+#include "fit/end_spread.hpp"
+#include "fit/fit_stages.hpp"
 #include "fit/flight_trim.hpp"
 #include "fit/half_period.hpp"
+#include "fit/mixed_units.hpp"
 #include "fit/pool.hpp"
 #include "fit/prediction_calibration.hpp"
 #include "fit/prediction_sigma.hpp"
@@ -26,16 +32,6 @@ namespace {
 
 constexpr double kStableDegrees = 25.0;
 constexpr double kPi = 3.14159265358979323846;
-
-/// s: a prediction whose held-out body rests on less flight time than this (a bounce, not a
-/// throw) is said to be poorly founded.
-constexpr double kShortBasis = 0.6;
-
-/// s: the least a flight's end may lie off where it was put (the finder's torque window and the
-/// trim's residual judge it to a few samples at 100 Hz: docs/phone-lab.md, "Error bars").
-constexpr double kEndUncertainty = 0.02;
-/// The most of a flight an end is moved in by to weigh its placement.
-constexpr double kEndShare = 0.15;
 
 /// Each flight's samples, its recording's bias removed, its times from its start; the samples
 /// where the gyroscope read its range left out (docs/phone-lab.md, "Saturation") unless too few
@@ -60,16 +56,6 @@ std::vector<TossData> toss_data(const GyroRecording& recording, const FlightSear
   }
   return data;
 }
-
-/// Which recordings' bias corrections the joint fit frees, and within what (docs/phone-lab.md,
-/// "The bias"): a recording's correction is fitted from two or more of its flights, within its
-/// still rest's Rest::bound() where it has one, freely where it has none.
-struct BiasFreedom {
-  std::vector<std::optional<Eigen::Vector3d>> bound;  ///< rad/s per recording, or nullopt
-  std::vector<bool> fitted, free, held;               ///< held: at zero, its flights' bias noise
-  bool any_bound = false;
-  int fitted_groups = 0;
-};
 
 BiasFreedom bias_freedom(const std::vector<RecordingPart>& parts, const std::vector<TossData>& data,
                          const std::vector<bool>& held) {
@@ -168,12 +154,6 @@ std::vector<std::vector<Eigen::Vector3d>> residuals_of(const std::vector<TossDat
   }
   return residuals;
 }
-
-/// Each toss's ω0 and drag rate's standard deviations.
-struct TossSigmas {
-  std::vector<std::optional<Eigen::Vector3d>> omega0;
-  std::vector<std::optional<double>> rate;
-};
 
 /// Uncertainties (docs/phone-lab.md, "Error bars"): (JᵀJ)⁻¹ scaled by the residual variance and
 /// by the residual's correlation, into the body's σ (the folds' spread widens them later), each
@@ -303,97 +283,6 @@ void widen_by_folds(const Folds& folds, bool fixed, BodyEstimate& body) {
   body.axis_sigma_deg = body.axis_sigma_deg->cwiseMax((factor * turn2).cwiseSqrt());
 }
 
-/// How far each flight's ends may lie from where the finder put them (docs/phone-lab.md, "Error
-/// bars"): per toss, s, the start's and the end's.
-struct EndShifts {
-  std::vector<double> start, end;
-};
-
-/// Each end's uncertainty: the larger of kEndUncertainty and how far the trim moved it from the
-/// finder's end (`found`, the flights as the finder gave them, of which `flights` are trimmed
-/// copies), at most kEndShare of its flight.
-EndShifts end_shifts(const std::vector<Flight>& flights, const FlightSearch* found) {
-  if (!found) return {};
-  EndShifts shifts;
-  const bool trimmed = found->flights.size() == flights.size();
-  for (std::size_t k = 0; k < flights.size(); ++k) {
-    const Flight& f = flights[k];
-    const double most = kEndShare * (f.t_end - f.t_start);
-    double start = kEndUncertainty, end = kEndUncertainty;
-    if (trimmed) {
-      start = std::max(start, f.t_start - found->flights[k].t_start);
-      end = std::max(end, found->flights[k].t_end - f.t_end);
-    }
-    shifts.start.push_back(std::min(start, most));
-    shifts.end.push_back(std::min(end, most));
-  }
-  return shifts;
-}
-
-/// The flight ends' placement added to the body's and each drag rate's σ (docs/phone-lab.md,
-/// "Error bars"): the joint fit again with every flight's start moved in by its uncertainty
-/// (`shifts`), and again with every end moved in; each value's spread σ² = Σ (θ_moved − θ)²
-/// added in quadrature to its σ (the covariance's, inflated, or the jackknife's). What least
-/// squares cannot see: where the throw ends and the catch begins, which the finder only
-/// estimates. No term where a refit fails or a σ is missing.
-void widen_by_ends(const std::vector<TossData>& data, const Parameters& p, const EndShifts& shifts,
-                   const FitSettings& settings, const std::vector<bool>& rate_held,
-                   const BiasFreedom& bias, const std::vector<Eigen::Vector3d>& correction,
-                   BodyEstimate& body, TossSigmas& sigmas) {
-  if (!body.ratio_sigma || !body.axis_sigma_deg) return;
-  const bool fixed = settings.moments.has_value();
-  const bool dragged = settings.drag != physics::DragLaw::none;
-  Eigen::Vector3d ratio2 = Eigen::Vector3d::Zero(), turn2 = Eigen::Vector3d::Zero();
-  std::vector<double> rate2(data.size(), 0.0);
-  for (int side = 0; side < 2; ++side) {
-    std::vector<TossData> moved = data;
-    for (std::size_t k = 0; k < moved.size(); ++k) {
-      TossData& d = moved[k];
-      const double span = d.tau.empty() ? 0.0 : data[k].tau.back();
-      TossData kept = d;
-      kept.tau.clear(), kept.omega.clear();
-      for (std::size_t i = 0; i < d.tau.size(); ++i) {
-        const bool in = side == 0 ? d.tau[i] >= shifts.start[k] : d.tau[i] <= span - shifts.end[k];
-        if (in) kept.tau.push_back(d.tau[i]), kept.omega.push_back(d.omega[i]);
-      }
-      if (kept.tau.size() < static_cast<std::size_t>(kMinSamplesLeft)) kept = d;
-      d = std::move(kept);
-    }
-    Parameters q = p;
-    SolveOptions options;
-    options.stop = &settings.stop;
-    options.moments_fixed = fixed;
-    options.drag = settings.drag;
-    // The bias corrections refitted as the joint fit fits them, within their bounds about the
-    // correction the samples carry already: the ends move them too.
-    options.bias_group_held = bias.held;
-    if (bias.any_bound) {
-      options.bias_bound = bias.bound;
-      options.bias_offset = correction;
-    }
-    options.rate_held = rate_held;
-    if (!solve(moved, q, options).usable) return;
-    normalise(q);
-    if (!fixed) ratio2 += (q.moments() - p.moments()).cwiseAbs2();
-    const Eigen::Matrix3d a = q.axes();
-    for (int i = 0; i < 3; ++i) {
-      const double turn =
-          std::acos(std::min(1.0, std::abs(a.col(i).dot(body.axes.col(i))))) * 180.0 / kPi;
-      turn2[i] += turn * turn;
-    }
-    if (dragged)
-      for (std::size_t k = 0; k < data.size(); ++k) {
-        const double d = q.omega0[k][3] - p.omega0[k][3];
-        rate2[k] += d * d;
-      }
-  }
-  body.ratio_sigma = (body.ratio_sigma->cwiseAbs2() + ratio2).cwiseSqrt();
-  body.ratio_sigma->z() = 0.0;
-  body.axis_sigma_deg = (body.axis_sigma_deg->cwiseAbs2() + turn2).cwiseSqrt();
-  for (std::size_t k = 0; k < data.size(); ++k)
-    if (sigmas.rate[k]) sigmas.rate[k] = std::sqrt(*sigmas.rate[k] * *sigmas.rate[k] + rate2[k]);
-}
-
 /// Toss k's prediction (TossFit::half_period_predicted, what it rests on, or why none): its fold's
 /// body and drag rate (fit/prediction_sigma.hpp); a note where they are too little flight.
 Prediction predict(const std::vector<TossData>& data, std::size_t k, const Folds& folds,
@@ -467,49 +356,6 @@ Prediction predict(const std::vector<TossData>& data, std::size_t k, const Folds
   return prediction;
 }
 
-/// Each prediction's interval calibrated by the fit's other tosses (prediction_calibration.hpp):
-/// its propagated σ widened by the scale the other tosses' scores |measured − predicted| / σ call
-/// for, then withheld where over ±kWidestInterval; shown with no σ where too few others have a
-/// measured and a predicted half period (uncalibrated, in words).
-void calibrate(const std::vector<Prediction>& predictions, std::vector<TossFit>& tosses) {
-  std::vector<std::optional<double>> score(tosses.size());
-  for (std::size_t j = 0; j < tosses.size(); ++j) {
-    const Prediction& p = predictions[j];
-    if (tosses[j].half_period_measured && p.propagated_half && p.propagated_sigma &&
-        *p.propagated_sigma > 0)
-      score[j] = (*tosses[j].half_period_measured - *p.propagated_half) / *p.propagated_sigma;
-  }
-  for (std::size_t k = 0; k < tosses.size(); ++k) {
-    const Prediction& p = predictions[k];
-    TossFit& toss = tosses[k];
-    if (!p.propagated_half || !p.propagated_sigma || !toss.half_period_predicted) continue;
-    std::vector<double> others;
-    for (std::size_t j = 0; j < tosses.size(); ++j)
-      if (j != k && score[j]) others.push_back(*score[j]);
-    const PredictionCalibration c = calibrate_prediction(others);
-    toss.prediction_interval = calibration_words(c);
-    if (!c.calibrated) {
-      toss.half_period_predicted_sigma.reset();
-      continue;
-    }
-    const double sigma = *p.propagated_sigma * c.factor;
-    char how[160];
-    std::snprintf(how, sizeof how, ", widened ×%.2g by the %s", c.factor,
-                  toss.prediction_interval.c_str());
-    toss.not_predicted =
-        withheld_for_width(*p.propagated_half, sigma, p.propagated_window, p.largest, how);
-    if (toss.not_predicted.empty()) {
-      toss.half_period_predicted_sigma = sigma;
-      continue;
-    }
-    toss.half_period_predicted.reset();
-    toss.half_period_predicted_sigma.reset();
-    toss.predicted_window.reset();
-    toss.predicted_from_tosses.reset();
-    toss.predicted_from_seconds.reset();
-  }
-}
-
 /// Toss k's values from the joint fit: ω0, drag rate and their σ, the half periods fitted and
 /// measured, its residual, |L|'s decay, whether it is stable, its flag (toss_flags.hpp).
 TossFit toss_values(const std::vector<TossData>& data, std::size_t k, const Parameters& joint,
@@ -562,59 +408,6 @@ TossFit toss_values(const std::vector<TossData>& data, std::size_t k, const Para
     toss.half_period_measured =
         (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
   return toss;
-}
-
-/// The body's notes on what it rests on: stable tosses, flipping tosses that fit cleanly and
-/// their flight time (under kShortBasis s pins no body, docs/phone-lab.md, "Flags"), one toss
-/// with nothing to predict from, two equal moments given.
-void body_notes(const FitResult& result, const FitSettings& settings, BodyEstimate& body) {
-  const bool fixed = settings.moments.has_value();
-  const int tosses = static_cast<int>(result.tosses.size());
-  int stable_count = 0;
-  for (const TossFit& toss : result.tosses) stable_count += toss.stable;
-  if (stable_count == tosses && !fixed) {
-    body.moments_determined = false;
-    body.notes.push_back(
-        std::string("every toss is stable (no flip): the moment ratios are poorly determined; ") +
-        kGiveMoments + " to fix them");
-  } else if (stable_count > 0) {
-    body.notes.push_back(std::to_string(stable_count) +
-                         " stable toss(es) (no flip) fitted with the body the others determine");
-  }
-  if (!fixed && stable_count < tosses) {
-    int good = 0;
-    double good_seconds = 0.0;
-    for (const TossFit& toss : result.tosses)
-      if (!toss.stable && !toss.poor_fit)
-        ++good, good_seconds += toss.flight.t_end - toss.flight.t_start;
-    char line[240];
-    if (good == 0) {
-      body.moments_determined = false;
-      body.notes.push_back(
-          "no toss both flips and fits cleanly (every flipping toss is flagged): the moment "
-          "ratios are poorly determined");
-    } else if (good_seconds < kShortBasis) {
-      body.moments_determined = false;
-      std::snprintf(line, sizeof line,
-                    "the body rests on %d clean flipping toss(es), %.2f s of flight (under %.1f "
-                    "s): the moment ratios are poorly determined",
-                    good, good_seconds, kShortBasis);
-      body.notes.push_back(line);
-    }
-  }
-  if (tosses < 2 && !fixed)
-    body.notes.push_back("one toss: no half_period_predicted (it needs the other tosses' body)");
-  if (fixed) {
-    // Two equal moments: a symmetric body, whose ω only circles its axis; there is no
-    // intermediate axis, so no flip to fit or time (docs/physics.md §8).
-    Eigen::Vector3d given = settings.moments->cwiseAbs();
-    std::sort(given.data(), given.data() + 3);
-    const double scale = given[2];
-    if (given[1] - given[0] <= 1e-9 * scale || given[2] - given[1] <= 1e-9 * scale)
-      body.notes.push_back(
-          "--moments: two of the given moments are equal: a symmetric body has no intermediate "
-          "axis, so nothing here flips and no half period is timed");
-  }
 }
 
 }  // namespace
@@ -694,7 +487,7 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
                                   bias_sigma(result.parts.at(data[k].group))};
     predictions.push_back(predict(data, k, folds, search, settings, inputs, result.tosses, body));
   }
-  calibrate(predictions, result.tosses);
+  calibrate_predictions(predictions, result.tosses);
   body_notes(result, settings, body);
   return result;
 }
@@ -724,121 +517,10 @@ FitResult fit_with_bias_rule(const GyroRecording& recording, const FlightSearch&
   return again;
 }
 
-std::string fixed_share(double share) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.1f %%", 100.0 * share);
-  return text;
-}
-
-/// The fit's residual as a share of |ω|: each toss's rms residual over its rms |ω|, the median
-/// over the tosses (a bounce or a knocked flight does not decide it).
-double residual_share(const GyroRecording& recording, const FitResult& fit) {
-  std::vector<double> shares;
-  for (const TossFit& toss : fit.tosses) {
-    const Eigen::Vector3d bias = part_at(fit.parts, toss.flight.t_start).bias_in_flight();
-    double omega2 = 0.0;
-    for (int i = toss.flight.first; i <= toss.flight.last; ++i)
-      omega2 += (recording.omega[i] - bias).squaredNorm();
-    const int n = toss.flight.last - toss.flight.first + 1;
-    if (omega2 > 0.0) shares.push_back(toss.residual_rms / std::sqrt(omega2 / n));
-  }
-  return shares.empty() ? 1.0 : median_of(shares);
-}
-
-/// The axes whose scatter, where the phone turns least, is many times the quietest axis's: each
-/// 0.3 s window's three standard deviations, the fifth of the windows with the smallest median
-/// one, and in them each axis's over the smallest one (their median over those windows). A
-/// gyroscope's axes scatter alike (within a few times) at rest or in the hand; an axis in °/s
-/// scatters 57 times more. Bit c set: axis c over kUnitsScatter.
-constexpr double kUnitsScatter = 15.0;
-int scattered_axes(const GyroRecording& recording) {
-  const std::size_t n = recording.t.size();
-  if (n < 20) return 0;
-  const double span = recording.t.back() - recording.t.front();
-  const std::size_t window = std::max<std::size_t>(10, static_cast<std::size_t>(0.3 * n / span));
-  std::vector<std::pair<double, Eigen::Vector3d>> windows;  // median σ, σ per axis
-  for (std::size_t start = 0; start + window <= n; start += window / 2) {
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero(), square = Eigen::Vector3d::Zero();
-    for (std::size_t i = start; i < start + window; ++i) {
-      mean += recording.omega[i];
-      square += recording.omega[i].cwiseAbs2();
-    }
-    mean /= static_cast<double>(window);
-    const Eigen::Vector3d sigma =
-        (square / static_cast<double>(window) - mean.cwiseAbs2()).cwiseMax(0.0).cwiseSqrt();
-    std::vector<double> sorted{sigma[0], sigma[1], sigma[2]};
-    std::sort(sorted.begin(), sorted.end());
-    if (sorted[0] > 0.0) windows.emplace_back(sorted[1], sigma);
-  }
-  if (windows.size() < 5) return 0;
-  std::sort(windows.begin(), windows.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  const std::size_t quiet = std::max<std::size_t>(3, windows.size() / 5);
-  int mask = 0;
-  for (int c = 0; c < 3; ++c) {
-    std::vector<double> ratios;
-    for (std::size_t w = 0; w < quiet; ++w)
-      ratios.push_back(windows[w].second[c] / windows[w].second.minCoeff());
-    if (median_of(ratios) > kUnitsScatter) mask |= 1 << c;
-  }
-  return mask == 7 ? 0 : mask;
-}
-
-/// Mixed units (docs/phone-lab.md, "Flags", mixed units): where the fit failed (`share` empty) or
-/// every toss is flagged, and one or two axes scatter many times the others where the phone turns
-/// least (scattered_axes), the flights fitted again with those axes taken from °/s to rad/s;
-/// where that fits a free rigid body to under half the share of |ω| left as read (or fits where
-/// the fit as read failed), the line naming those axes and the file; else empty. One recording
-/// only (a pooled set's parts may differ in units: each is checked alone).
-std::string units_cause(const GyroRecording& recording, const FlightSearch& search,
-                        const FitSettings& settings, std::optional<double> share) {
-  if (recording.parts.size() != 1) return {};
-  const int mask = scattered_axes(recording);
-  if (mask == 0) return {};
-  GyroRecording scaled = recording;
-  const double to_rad = kPi / 180.0;
-  for (int c = 0; c < 3; ++c) {
-    if (!(mask & (1 << c))) continue;
-    for (Eigen::Vector3d& w : scaled.omega) w[c] *= to_rad;
-    for (RecordingPart& part : scaled.parts) {
-      part.bias[c] *= to_rad;
-      part.rest.mean[c] *= to_rad;
-      part.rest.sigma[c] *= to_rad;
-      part.rest.standard_error[c] *= to_rad;
-    }
-  }
-  // Flights found: found again in the new units (the torque-free stretches are others); flights
-  // by hand: the user's.
-  const FlightSearch flights = settings.trim_ends ? find_flights(scaled) : search;
-  if (flights.flights.empty()) return {};
-  FitSettings as_given = settings;
-  as_given.trim_ends = false;
-  double fitted = 0.0;
-  try {
-    fitted = residual_share(scaled, fit_with_bias_rule(scaled, flights, as_given, nullptr));
-  } catch (const InputError&) {
-    return {};
-  }
-  if (share && !(fitted < *share / 2.0)) return {};
-  static const char* const kAxis[3] = {"ω_x", "ω_y", "ω_z"};
-  std::string degrees, radians;
-  int count = 0;
-  for (int c = 0; c < 3; ++c) {
-    std::string& list = mask & (1 << c) ? degrees : radians;
-    list += std::string(list.empty() ? "" : " and ") + kAxis[c];
-    count += mask & (1 << c) ? 1 : 0;
-  }
-  char line[500];
-  std::snprintf(line, sizeof line,
-                "%s: %s %s in °/s while %s %s in rad/s (mixed units?): %s %s about 57 times "
-                "the other%s where the phone turns least, and taken as °/s the flights fit a "
-                "free rigid body to %.1f %% of |ω|%s",
-                recording.source.c_str(), degrees.c_str(),
-                count == 1 ? "looks like it is" : "look like they are", radians.c_str(),
-                count == 1 ? "are" : "is", count == 1 ? "it" : "they",
-                count == 1 ? "scatters" : "scatter", count == 1 ? "s" : "", 100.0 * fitted,
-                share ? (" (as read: " + fixed_share(*share) + ")").c_str() : "");
-  return line;
+/// The flights as given, no ends' term: the fit mixed units tries (units_cause).
+FitResult refit_as_given(const GyroRecording& recording, const FlightSearch& search,
+                         const FitSettings& settings) {
+  return fit_with_bias_rule(recording, search, settings, nullptr);
 }
 
 }  // namespace
@@ -853,7 +535,8 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     try {
       fit = fit_with_bias_rule(recording, search, settings, settings.trim_ends ? &search : nullptr);
     } catch (const InputError& e) {
-      const std::string cause = units_cause(recording, search, settings, std::nullopt);
+      const std::string cause =
+          units_cause(recording, search, settings, std::nullopt, refit_as_given);
       if (cause.empty()) throw;
       throw InputError(std::string(e.what()) + "; " + cause);
     }
@@ -875,8 +558,8 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
   // Every toss flagged: mixed units, where taking an axis as °/s makes them fit.
   if (std::all_of(fit.tosses.begin(), fit.tosses.end(),
                   [](const TossFit& t) { return t.poor_fit; })) {
-    const std::string cause =
-        units_cause(recording, fit.search, settings, residual_share(recording, fit));
+    const std::string cause = units_cause(recording, fit.search, settings,
+                                          residual_share(recording, fit), refit_as_given);
     if (!cause.empty()) fit.body.notes.push_back(cause);
   }
   return fit;
