@@ -162,6 +162,16 @@ def check_history(driver, page, problems):
     said = driver.execute_script("return document.getElementById('labBox').textContent")
     if not again or "drop yours here again" not in said:
         problems.append(f"Forward to the lab: shown {again}; it does not say to drop the recording again")
+    # Hidden, then shown again before the dialog's close event arrives (Back, then Forward at
+    # once on a busy machine): the stale close must not hide the panel shown again.
+    kept = driver.execute_async_script(
+        "const done = arguments[arguments.length - 1]; const lab = document.getElementById('lab');"
+        " lab.hidden = true;"
+        " Promise.resolve().then(() => { lab.hidden = false;"
+        " setTimeout(() => done([!lab.hidden, lab.open]), 200); });")
+    print(f"the lab hidden and shown again at once: shown {kept[0]}, dialog open {kept[1]}")
+    if not kept[0] or not kept[1]:
+        problems.append(f"the lab hidden and shown again before its close event: shown {kept}")
     # A reload (a shared link) keeps the scene, t and the open panel.
     driver.execute_script("document.getElementById('labClose').click()")
     slide_to(driver, 12.5)

@@ -225,7 +225,7 @@ def check_contents(driver):
     """The contents: a link to each section (and nothing else), in the page's order."""
     got = driver.execute_script("""
       const links = [...document.querySelectorAll('nav.contents a')].map((a) => a.getAttribute('href').slice(1));
-      const order = [...document.querySelectorAll('body > section')].map((s) => s.id);
+      const order = [...document.querySelectorAll('main > section')].map((s) => s.id);
       return [links, order, document.querySelector('p.about').textContent];""")
     links, order, about = got
     print(f"contents: {len(links)} links; sections {len(order)}")

@@ -31,6 +31,9 @@ export function modalPanel(dialog, opener, close) {
   };
   new MutationObserver(sync).observe(dialog, { attributes: true, attributeFilter: ['hidden'] });
   dialog.addEventListener('close', () => {
+    // A close event comes a task after dialog.close(): where the panel was shown again in
+    // between (Back, then Forward at once), it is stale and must not hide it.
+    if (dialog.open) return;
     if (!dialog.hidden) close();
     // Focus back on what opened the panel (Escape left it on the page's body).
     if (document.querySelector('dialog[open]')) return;
