@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "fit/fit_tables.hpp"
 #include "fit/flights.hpp"
@@ -14,21 +16,34 @@
 namespace bookspin::fit {
 namespace {
 
+/// `synthetic` with toss `k`'s |ω| breathing by ±`amplitude` every `period` s over its flight (a
+/// body that flexes): a residual spread evenly over the flight, whatever rigid body is fitted.
+void flex(test::SyntheticRecording& synthetic, std::size_t k, double amplitude, double period) {
+  const test::TrueToss& truth = synthetic.tosses[k];
+  for (std::size_t i = 0; i < synthetic.t.size(); ++i) {
+    const double s = synthetic.t[i] - truth.t_start;
+    if (s < 0.0 || synthetic.t[i] > truth.t_end) continue;
+    const Eigen::Vector3d w = synthetic.omega[i] - synthetic.bias;
+    synthetic.omega[i] = synthetic.bias + w * (1.0 + amplitude * std::sin(2.0 * M_PI * s / period));
+  }
+}
+
+/// The true flights of `synthetic`, as ranges given by hand.
+std::vector<std::pair<double, double>> true_ranges(const test::SyntheticRecording& synthetic) {
+  std::vector<std::pair<double, double>> ranges;
+  for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
+  return ranges;
+}
+
 TEST(WholeResidualFlag, ATossThatNoRigidBodyFollowsIsFlaggedPastFivePercent) {
   const test::SyntheticBody body = test::phone_alone();
   test::SyntheticRecording synthetic = test::make_recording(
       body, {{{1.0, 18.0, 1.2}, 1.2}, {{-1.2, 17.0, 1.5}, 1.2}, {{0.8, 16.0, -1.0}, 1.2}}, 81);
   // Toss 2's |ω| breathes by ±10 % every 0.25 s (a body that flexes): a residual of about
   // 0.1/√2 ≈ 7 % of |ω| spread evenly over the flight, whatever rigid body is fitted.
-  const test::TrueToss& truth = synthetic.tosses[1];
-  for (std::size_t i = 0; i < synthetic.t.size(); ++i) {
-    const double s = synthetic.t[i] - truth.t_start;
-    if (s < 0.0 || synthetic.t[i] > truth.t_end) continue;
-    const Eigen::Vector3d w = synthetic.omega[i] - synthetic.bias;
-    synthetic.omega[i] = synthetic.bias + w * (1.0 + 0.1 * std::sin(2.0 * M_PI * s / 0.25));
-  }
-  std::vector<std::pair<double, double>> ranges;
-  for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
+  const test::TrueToss truth = synthetic.tosses[1];
+  flex(synthetic, 1, 0.1, 0.25);
+  const std::vector<std::pair<double, double>> ranges = true_ranges(synthetic);
   const GyroRecording recording = test::as_recording(synthetic);
   const FitResult fit = fit_recording(recording, hand_flights(recording, ranges));
   ASSERT_EQ(fit.tosses.size(), 3u);
@@ -58,17 +73,9 @@ TEST(WholeResidualFlag, AFlexingTossSampledFurtherApartThanABlockIsStillFlagged)
     const test::SyntheticBody body = test::phone_alone();
     test::SyntheticRecording synthetic = test::make_recording(
         body, {{{1.0, 18.0, 1.2}, 2.0}, {{-1.2, 17.0, 1.5}, 2.0}}, 82, 0.01, 0.15, 4.0, 0.0, rate);
-    const test::TrueToss& truth = synthetic.tosses[1];
-    for (std::size_t i = 0; i < synthetic.t.size(); ++i) {
-      const double s = synthetic.t[i] - truth.t_start;
-      if (s < 0.0 || synthetic.t[i] > truth.t_end) continue;
-      const Eigen::Vector3d w = synthetic.omega[i] - synthetic.bias;
-      synthetic.omega[i] = synthetic.bias + w * (1.0 + 0.3 * std::sin(2.0 * M_PI * s / 0.7));
-    }
-    std::vector<std::pair<double, double>> ranges;
-    for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
+    flex(synthetic, 1, 0.3, 0.7);
     const GyroRecording recording = test::as_recording(synthetic);
-    const FitResult fit = fit_recording(recording, hand_flights(recording, ranges));
+    const FitResult fit = fit_recording(recording, hand_flights(recording, true_ranges(synthetic)));
     ASSERT_EQ(fit.tosses.size(), 2u) << rate;
     EXPECT_TRUE(fit.tosses[1].poor_fit) << rate << " Hz: " << fit.tosses[1].residual_rms;
     EXPECT_EQ(
@@ -85,20 +92,13 @@ TEST(WholeResidualFlag, AFlexingTossSampledFurtherApartThanABlockIsStillFlagged)
 TEST(WholeResidualFlag, AResidualALargeShareOfOmegaIsSaidFirst) {
   test::SyntheticRecording synthetic = test::make_recording(
       test::phone_alone(), {{{1.0, 18.0, 1.2}, 1.2}, {{-1.2, 17.0, 1.5}, 1.2}}, 81);
-  std::vector<std::pair<double, double>> ranges;
-  for (const test::TrueToss& t : synthetic.tosses) ranges.emplace_back(t.t_start, t.t_end);
+  const std::vector<std::pair<double, double>> ranges = true_ranges(synthetic);
   const GyroRecording clean = test::as_recording(synthetic);
   const std::vector<std::string> clean_lines =
       fit_summary(fit_recording(clean, hand_flights(clean, ranges)));
   for (const std::string& line : clean_lines) EXPECT_NE(line.rfind("warning:", 0), 0u) << line;
 
-  const test::TrueToss& truth = synthetic.tosses[1];
-  for (std::size_t i = 0; i < synthetic.t.size(); ++i) {
-    const double s = synthetic.t[i] - truth.t_start;
-    if (s < 0.0 || synthetic.t[i] > truth.t_end) continue;
-    const Eigen::Vector3d w = synthetic.omega[i] - synthetic.bias;
-    synthetic.omega[i] = synthetic.bias + w * (1.0 + 0.8 * std::sin(2.0 * M_PI * s / 0.3));
-  }
+  flex(synthetic, 1, 0.8, 0.3);
   const GyroRecording recording = test::as_recording(synthetic);
   const FitResult fit = fit_recording(recording, hand_flights(recording, ranges));
   ASSERT_EQ(fit.tosses.size(), 2u);
