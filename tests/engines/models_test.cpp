@@ -20,6 +20,7 @@
 #include "physics/exact_solution.hpp"
 #include "physics/model_modes.hpp"
 #include "physics/presets.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::engines {
 namespace {
@@ -51,8 +52,9 @@ std::vector<Mode> rows_of(ModelKind kind) {
 /// MuJoCo from an MJCF file: a free body with inertial mass and diaginertia, ω0 in qvel[3..5].
 Eigen::Vector3d mujoco_direct(double mass, const Eigen::Vector3d& I, const Eigen::Vector3d& omega0,
                               const char* integrator, double dt, int steps) {
-  const std::string path =
-      std::string(BOOKSPIN_BINARY_DIR) + "/engines-test-" + integrator + ".xml";
+  // In the running test's own scratch folder: no other test process shares the file.
+  const bookspin::test::ScratchDir dir;
+  const std::string path = (dir / (std::string("mujoco-") + integrator + ".xml")).string();
   {
     std::ofstream xml(path);
     xml.precision(17);
