@@ -30,6 +30,12 @@ export function modalPanel(dialog, opener, close) {
     }
   };
   new MutationObserver(sync).observe(dialog, { attributes: true, attributeFilter: ['hidden'] });
+  // Escape: the panel's own close at once (hidden, so the dialog closes with it), not a task
+  // later in the close event, when a key or a script may already have read the page.
+  dialog.addEventListener('cancel', (e) => {
+    e.preventDefault();
+    close();
+  });
   dialog.addEventListener('close', () => {
     // A close event comes a task after dialog.close(): where the panel was shown again in
     // between (Back, then Forward at once), it is stale and must not hide it.
