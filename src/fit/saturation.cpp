@@ -194,17 +194,16 @@ std::string saturation_note(const Saturation& saturation, const std::vector<Reco
     text += (text.empty() ? "" : "; ") + std::string(range);
     for (std::size_t k = 0; k < alike.size(); ++k) {
       const int samples = saturation.parts[alike[k]].samples;
-      text += (k == 0                  ? ""
-               : k + 1 == alike.size() ? " and "
-                                       : ", ") +
-              parts[alike[k]].name + " (" + std::to_string(samples) +
-              (samples == 1 ? " sample)" : " samples)");
+      char count[40];
+      std::snprintf(count, sizeof count, " (%d sample%s)", samples, samples == 1 ? "" : "s");
+      text += (k == 0 ? "" : k + 1 == alike.size() ? " and " : ", ") + parts[alike[k]].name + count;
       if (alike[k] < in_tosses.size()) tossed += in_tosses[alike[k]];
     }
   }
   if (text.empty()) return {};
-  return "the gyroscope saturated at " + text + "; " + std::to_string(tossed) +
-         " of them in the tosses, left out of the fit";
+  char tail[80];
+  std::snprintf(tail, sizeof tail, "; %d of them in the tosses, left out of the fit", tossed);
+  return "the gyroscope saturated at " + text + tail;
 }
 
 }  // namespace bookspin::fit
