@@ -51,6 +51,11 @@ HeldRate held_rate(const std::vector<TossData>& rest, const Parameters& fold, bo
   return {sum / weights, std::sqrt(sigma2) / weights};
 }
 
+Eigen::Vector3d held_out_ratio_sigma(const Eigen::Vector3d& joint, double all, double seconds) {
+  if (!(seconds > 0.0) || !(seconds < all)) return joint;
+  return joint * std::sqrt(all / seconds);
+}
+
 Eigen::Vector3d bias_sigma(const RecordingPart& part) {
   if (part.rest.samples > 0) return part.rest.standard_error.array() + kBiasDrift;
   return part.bias_fitted_sigma.value_or(Eigen::Vector3d::Zero());

@@ -44,6 +44,12 @@ struct HeldRate {
 HeldRate held_rate(const std::vector<TossData>& rest, const Parameters& fold, bool moments_fixed,
                    physics::DragLaw law, const std::vector<std::optional<double>>& sigmas);
 
+/// The σ of the moment ratios of a body fitted on `seconds` of the `all` s of flight the joint
+/// fit's σ `joint` rests on (docs/phone-lab.md, "Prediction intervals"): `joint` × √(all /
+/// seconds), a least-squares σ falling as one over the root of the samples; `joint` itself where
+/// `seconds` is not positive or not less than `all`.
+Eigen::Vector3d held_out_ratio_sigma(const Eigen::Vector3d& joint, double all, double seconds);
+
 /// rad/s per phone axis: the σ of the bias removed from `part`'s samples in flight: its still
 /// rest's standard error plus kBiasDrift, or with no rest its flights' fitted σ, or 0.
 Eigen::Vector3d bias_sigma(const RecordingPart& part);

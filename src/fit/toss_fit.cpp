@@ -334,7 +334,7 @@ Prediction predict(const std::vector<TossData>& data, std::size_t k, const Folds
   // Its body is fitted on `seconds` of flight, not all: the joint σ times √(all/seconds).
   PredictionInputs held = inputs;
   held.rate_sigma = rate.sigma;
-  if (held.ratio_sigma && seconds > 0) *held.ratio_sigma *= std::sqrt(all / seconds);
+  if (held.ratio_sigma) held.ratio_sigma = held_out_ratio_sigma(*held.ratio_sigma, all, seconds);
   const Prediction prediction = predict_half_period(d, others, options, held);
   toss.half_period_predicted = prediction.half;
   toss.half_period_predicted_sigma = prediction.sigma;
