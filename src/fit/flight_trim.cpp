@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "fit/median.hpp"
 #include "fit/toss_flags.hpp"
 
 namespace bookspin::fit {

@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
+#include "fit/median.hpp"
 #include "fit/pool.hpp"
 #include "fit/saturation.hpp"
 
@@ -246,8 +247,7 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     I = euler_inertia(omega, rate, indices);
     std::vector<double> residuals;
     for (int i : indices) residuals.push_back(torque_residual(I, omega[i], rate[i]));
-    std::nth_element(residuals.begin(), residuals.begin() + residuals.size() / 2, residuals.end());
-    threshold = std::max(6.0 * residuals[residuals.size() / 2], 0.01);
+    threshold = std::max(6.0 * median_of(std::move(residuals)), 0.01);
     std::vector<std::pair<int, int>> next;
     for (const auto& [first, last] : candidates) {
       // Each sample torque-free or not; a run of clipped samples counts as torque-free only

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "fit/median.hpp"
 #include "fit/pool.hpp"
 #include "fit/toss_flags.hpp"
 

@@ -17,6 +17,7 @@
 #include "common/number_text.hpp"
 #include "common/text_file.hpp"
 #include "common/text_lines.hpp"
+#include "fit/median.hpp"
 
 namespace bookspin::fit {
 namespace {
@@ -518,6 +519,21 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   std::string previous_time;  // the previous row's time as written
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const auto& [number, cells] = rows[i];
+    // A recording's cells are numbers: a quoted cell over a line end is a quote left open, in
+    // any column, read or not (else the next line's time reads as this cell's).
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const std::string& cell = cells[c];
+      int ends = 0;  // "\r\n", "\n" or a lone "\r", as next_line counts them
+      for (std::size_t k = 0; k < cell.size(); ++k)
+        ends +=
+            cell[k] == '\n' || (cell[k] == '\r' && (k + 1 == cell.size() || cell[k + 1] != '\n'));
+      if (ends > 0)
+        throw InputError(file, number, c < header.size() ? header[c] : "",
+                         "a quote opens a cell on this row (" +
+                             quoted_cell(cell.substr(0, cell.find_first_of("\r\n"))) +
+                             " and the line's end) and closes it on line " +
+                             std::to_string(number + ends) + ": a quote left open?");
+    }
     if (static_cast<int>(cells.size()) < columns)
       throw InputError(file, number, "",
                        "a row of " + std::to_string(cells.size()) + " cells, expected " +
@@ -555,8 +571,7 @@ std::string time_unit_cause(const std::vector<double>& t) {
   std::vector<double> steps;
   steps.reserve(t.size() - 1);
   for (std::size_t i = 1; i < t.size(); ++i) steps.push_back(t[i] - t[i - 1]);
-  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
-  const double step = steps[steps.size() / 2];
+  const double step = median_of(std::move(steps));
   if (!(step > kMaxSampleStep)) return {};
   // The unit that puts the median step within a gyroscope's 0.1–100 ms.
   std::string likely = "in another unit";

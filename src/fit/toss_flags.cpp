@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fit/median.hpp"
+
 namespace bookspin::fit {
 namespace {
 
@@ -83,8 +85,7 @@ std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vec
   std::vector<double> sorted;
   for (int b = 0; b < blocks; ++b)
     if (block_n[b]) sorted.push_back(block_rms[b]);
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double median = sorted[sorted.size() / 2];
+  const double median = median_of(std::move(sorted));
   const double floor = noise ? std::sqrt(3.0) * 5.0 * *noise : 0.0;  // |r| of 5σ per component
   int worst = 0;
   for (int b = 1; b < blocks; ++b)
@@ -108,11 +109,6 @@ std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vec
 }
 
 }  // namespace
-
-double median_of(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
 
 std::optional<double> rest_noise(const GyroRecording& recording, const FlightSearch& search) {
   const double rest = 0.5 * FinderSettings{}.rest_omega;

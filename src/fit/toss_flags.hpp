@@ -20,9 +20,6 @@ namespace bookspin::fit {
 /// fewer than 20 such samples.
 std::optional<double> rest_noise(const GyroRecording& recording, const FlightSearch& search);
 
-/// The median of `values` (the upper one of an even count); `values` must not be empty.
-double median_of(std::vector<double> values);
-
 /// The torque the measured samples need between each two neighbours, by Euler's equations
 /// I ω̇ + ω × I ω = τ (docs/physics.md §8) at the step's midpoint: ω̇ = (ω_{i+1} − ω_i)/Δt,
 /// ω = (ω_i + ω_{i+1})/2 (second order in Δt, and no pattern of samples hides from it), as
