@@ -87,6 +87,11 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     fitRecordings: (files, drag = 'linear', tosses = '') => app.lab.fitMany(files, drag, tosses),
     /** Plays `scene` (one of fitRecording's scenes) as the lab's Play button does. */
     playToss: (scene) => app.lab.play(scene),
+    /** The lab's last fit shown (lab.js show: fitRecording's value), null before one. */
+    labResult: () => app.lab.result,
+    /** The lab's "Record a toss" reads DeviceMotionEvent.rotationRate where `yes`, even where
+     * the browser has a Gyroscope (gyro_recorder.js): the fallback tested in Chromium. */
+    recordThroughMotion: (yes) => { app.lab.recorder.source.preferMotion = Boolean(yes); },
     /** ns per step of a run of `steps` steps (make bench-explorer); the exact model, which the
      * page evaluates once per call whatever the steps (its closed form), ns per evaluation:
      * `steps` calls of one step. */

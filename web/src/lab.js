@@ -12,6 +12,7 @@ import { plusMinus, significant, wholeNumbers } from './precision.js';
 import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
 import { niceTicks, tickLabel } from './plots.js';
+import { TossRecorder } from './gyro_recorder.js';
 
 const $ = (id) => document.getElementById(id);
 /** What each toss column says (docs/outputs.md, "The fit"). */
@@ -171,6 +172,9 @@ export class LabPanel {
     $('labClose').addEventListener('click', () => this.close());
     modalPanel($('lab'), $('labOpen'), () => this.close());
     takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
+    // A toss recorded by this phone's gyroscope (gyro_recorder.js): its CSV fitted as a dropped
+    // one is, with the toss recorded before where the student asked to pool them.
+    this.recorder = new TossRecorder((file, pooled) => this.fitFiles(pooled ? [pooled, file] : [file]));
     // The flights by hand changed: the last recording given is fitted again with them.
     this.given = null;
     $('labFlights').addEventListener('change', () => { if (this.given) this.fitFiles(...this.given); });
