@@ -227,10 +227,10 @@ def check_rows(where, text, heard, fed, t_fed, motion):
             break
     if matched is None:
         values_only = [k for k, row in enumerate(rows) if not any(list(o[1:]) == row[1:4] for o in own)]
-        fail(f"{where}: the CSV's rows are not the readings the browser gave, each at its own stamp "
-             f"from the first, in s: rows whose ω no reading had {values_only[:5]} (axes swapped, or in "
-             f"deg/s?); else their times are not the readings' stamps; the first rows {rows[:3]}, "
-             f"the first heard {own[:3]}")
+        why = (f"rows {values_only[:5]} hold an ω no reading had (axes swapped, or deg/s as rad/s?)"
+               if values_only else "their times are not the readings' own stamps from the first, in s")
+        fail(f"{where}: the CSV's rows are not the readings the browser gave: {why}; the first rows "
+             f"{rows[:3]}, the first heard {own[:3]}")
     timed, at_fed = [], 0
     for k, row in enumerate(rows):
         # Each reading the one fed about the same axis, in rad/s (the browser's rounding aside).
