@@ -24,8 +24,9 @@ the first ("fit with the toss recorded before"). For each:
     browser's rate, at most about 60 Hz, at the times they arrive) explains.
 Then the limits, each as its one line in the page's state: a denied permission (Gyroscope and
 rotationRate), no gyroscope (the override's metadata {available: false}, both APIs), a tab
-hidden while recording (a second tab opened over it: document.hidden true), a rate too low for
-the spin (readings fed at 5 Hz turning 20 rad/s: said as soon as the recording stops).
+hidden while recording (a second tab opened over it: document.hidden true), the page over plain
+http at the machine's network address (not a secure context; where it has one), a rate too low
+for the spin (readings fed at 5 Hz turning 20 rad/s: said as soon as the recording stops).
 Screenshots: BINARY_DIR/test-output/browser/explorer-records-gyro-{recording,fitted}-390x844.png;
 the panel's text, recording and fitted, none under 12 px, past the panel or over other text.
 
@@ -34,7 +35,10 @@ Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is m
 under CI=true, where that is a failure (browser.py).
 """
 import base64
+import contextlib
 import csv
+import functools
+import http.server
 import io
 import json
 import math
@@ -173,6 +177,34 @@ def override(driver, available):
     devtools(driver).call("Emulation.setSensorOverrideEnabled", {"enabled": False, "type": "gyroscope"})
     devtools(driver).call("Emulation.setSensorOverrideEnabled", {
         "enabled": True, "type": "gyroscope", "metadata": {"available": available}})
+
+
+def own_address():
+    """This machine's address on its network (not loopback), None where it has none."""
+    try:
+        with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as probe:
+            probe.connect(("192.0.2.1", 9))  # no packet sent: only the route is looked up
+            address = probe.getsockname()[0]
+    except OSError:
+        return None
+    return None if address.startswith("127.") else address
+
+
+@contextlib.contextmanager
+def serve_at(folder, address):
+    """`folder` over plain http at `address` (a page there is not a secure context)."""
+    class Quiet(http.server.SimpleHTTPRequestHandler):
+        def log_message(self, *args):
+            pass
+
+    handler = functools.partial(Quiet, directory=str(folder))
+    server = http.server.ThreadingHTTPServer((address, 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    try:
+        yield f"http://{address}:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+        server.server_close()
 
 
 def fresh_page(driver, page, motion=False):
@@ -441,6 +473,23 @@ def main():
                 "Browser.setPermission", {"permission": {"name": "gyroscope"}, "setting": "denied"}))
             driver.execute_cdp_cmd("Browser.resetPermissions", {})
             limit(driver, page, f"no sensor ({api})", motion, "no gyroscope", lambda: override(driver, False))
+
+        # Not a secure context: the page over http at this machine's own address, not loopback.
+        address = own_address()
+        if address:
+            with serve_at(out, address) as url:
+                driver.get(url + "explorer.html")
+                if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+                    fail(f"over http at {address}, the page never became ready: {driver.get_log('browser')}")
+                tap(driver, "labOpen")
+                tap(driver, "labRecord")
+                said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
+                                lambda s: s.startswith("error"), 30)
+                if not said.startswith("error: not a secure context"):
+                    fail(f"over http at {address}: the page says {said!r}")
+                print(f"insecure: {said}")
+        else:
+            print("insecure: not checked, this machine has no address but loopback")
 
         # A tab hidden while recording.
         fresh_page(driver, page)
