@@ -212,6 +212,23 @@ export class TossRecorder {
     });
   }
 
+  /** The live trace's canvas, made under the state line when `shown` (none before a recording
+   * starts, none left where it could not start). */
+  trace(shown) {
+    let canvas = $('labRecordTrace');
+    if (shown && !canvas) {
+      canvas = document.createElement('canvas');
+      canvas.id = 'labRecordTrace';
+      canvas.setAttribute('role', 'img');
+      canvas.setAttribute('aria-label', 'the recording so far: |ω| in white, ω about x red, y green, z blue, the last 5 s');
+      $('labRecordState').after(canvas);
+    } else if (!shown && canvas) {
+      canvas.remove();
+      canvas = null;
+    }
+    return canvas;
+  }
+
   say(text, error = false) {
     $('labRecordState').textContent = text;
     $('labRecordState').classList.toggle('error', error);
@@ -221,7 +238,7 @@ export class TossRecorder {
     this.samples = [];
     this.recording = true;
     $('labRecord').textContent = 'Stop';
-    $('labRecordTrace').hidden = false;
+    this.trace(true);
     $('labRecordSave').hidden = true;
     this.say('asking for the gyroscope…');
     this.source.start().then((api) => {
@@ -231,7 +248,7 @@ export class TossRecorder {
       this.timer = setTimeout(() => this.finish(''), seconds * 1000);
       const frame = () => {
         if (!this.recording) return;
-        drawTrace($('labRecordTrace'), this.samples);
+        drawTrace(this.trace(true), this.samples);
         requestAnimationFrame(frame);
       };
       requestAnimationFrame(frame);
@@ -239,7 +256,7 @@ export class TossRecorder {
       this.recording = false;
       this.source.stop();
       $('labRecord').textContent = 'Record a toss';
-      $('labRecordTrace').hidden = true;
+      this.trace(false);
       this.say(`error: ${e.message}`, true);
     });
   }
@@ -252,7 +269,7 @@ export class TossRecorder {
     clearTimeout(this.timer);
     this.source.stop();
     $('labRecord').textContent = 'Record a toss';
-    drawTrace($('labRecordTrace'), this.samples);
+    drawTrace(this.trace(true), this.samples);
     if (why) { this.say(`error: ${why}`, true); return; }
     const csv = recordingCsv(this.samples, this.source.api);
     if (csv.samples < 10) {
