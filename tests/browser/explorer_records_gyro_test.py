@@ -490,8 +490,7 @@ def main():
             # Each run re-times them anew, and on some the native and WebAssembly solvers (round-off
             # apart: explorer_lab_test's TOL) were seen to part beyond TOL: 12-29-59's poorly
             # determined moments at I1/I3 0.00088 against 0.0014, 12-44-51's I1_sigma 0.323 against
-            # 0.306 once and 3e-5 apart another time, and once the page (and the command line)
-            # refused 12-29-59 with the exact motion's time horizon as an internal error
+            # 0.306 once and 3e-5 apart another time, and once the page refused 12-29-59 with the exact motion's time horizon as an internal error
             # (docs/phone-lab.md, "Recording in the page").
             if refused:
                 r = subprocess.run([bookspin, "fit", name, "-o", str(out / "cli" / name)], cwd=recordings,
