@@ -10,6 +10,7 @@
 #include "fit/median.hpp"
 #include "fit/pool.hpp"
 #include "fit/toss_flags.hpp"
+#include "physics/exact_solution.hpp"
 
 namespace bookspin::fit {
 namespace {
@@ -98,6 +99,10 @@ std::string units_cause(const GyroRecording& recording, const FlightSearch& sear
   try {
     fitted = residual_share(scaled, refit(scaled, flights, as_given));
   } catch (const InputError&) {
+    return {};
+  } catch (const physics::ExactHorizonError&) {
+    // Taken as °/s, the flights drove the body's moments so far apart that the motion passes
+    // its time horizon (docs/physics.md §8): no fit in those units either.
     return {};
   }
   if (share && !(fitted < *share / 2.0)) return {};

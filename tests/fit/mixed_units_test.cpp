@@ -6,6 +6,8 @@
 // flagged, or that fails, names the axis and the file ("mixed units?", docs/phone-lab.md,
 // "Flags"): on a real recording with each axis in turn taken to °/s, and on a synthetic
 // one with one axis and with two.
+#include "fit/mixed_units.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +20,7 @@
 #include "fit/flights.hpp"
 #include "fit/report.hpp"
 #include "fit/toss_fit.hpp"
+#include "physics/exact_solution.hpp"
 #include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
@@ -138,6 +141,33 @@ TEST(MixedUnits, ASyntheticRecordingWithOneOrTwoAxesInDegreesPerSecondIsNamed) {
             std::string::npos)
       << two;
   EXPECT_EQ(units_named(written_in_mixed_units(synthetic, 0, "synthetic")), "");
+}
+
+TEST(MixedUnits, ARefitInDegreesThatRunsPastTheHorizonIsNoCauseNotACrash) {
+  // The units' probe fits the recording again with an axis taken as °/s; where that refit drives
+  // the moments so far apart that the exact motion passes its time horizon (a real recording
+  // re-timed at a browser's ~55 Hz did), the probe finds no cause, as where the refit fails:
+  // the fit as read stands, with its own flags.
+  REQUIRE_REAL_RECORDINGS();
+  const GyroRecording recording = pool_recordings(
+      {written_in_mixed_units(read_recording(real_dir() / "12-22-44"), 1, "12-22-44-probe")});
+  const FlightSearch search = find_flights(recording);
+  FitSettings settings;
+  settings.trim_ends = true;
+  int refits = 0;
+  const auto past_horizon = [&](const GyroRecording&, const FlightSearch&,
+                                const FitSettings&) -> FitResult {
+    ++refits;
+    throw physics::ExactHorizonError("t = 0.02 is beyond the exact motion's time horizon");
+  };
+  const auto refused = [&](const GyroRecording&, const FlightSearch&,
+                           const FitSettings&) -> FitResult {
+    ++refits;
+    throw InputError("no flight");
+  };
+  EXPECT_EQ(units_cause(recording, search, settings, std::nullopt, past_horizon), "");
+  EXPECT_EQ(units_cause(recording, search, settings, std::nullopt, refused), "");
+  EXPECT_EQ(refits, 2) << "the probe did not refit: the case tests nothing";
 }
 
 }  // namespace
