@@ -15,6 +15,10 @@
 namespace bookspin::fit {
 namespace {
 
+/// A share of |ω| under which the flights with the candidate axes converted fit a free rigid body
+/// as a clean toss does (the flags' "no fit" bound, docs/phone-lab.md, "Flags").
+constexpr double kConvertedFitsClean = 0.05;
+
 constexpr double kPi = 3.14159265358979323846;
 
 std::string fixed_share(double share) {
@@ -105,7 +109,9 @@ std::string units_cause(const GyroRecording& recording, const FlightSearch& sear
     // its time horizon (docs/physics.md §8): no fit in those units either.
     return {};
   }
-  if (share && !(fitted < *share / 2.0)) return {};
+  // Under half the share left as read, or a clean toss's share outright: the share as read is of
+  // an |ω| the axis in °/s inflates 57-fold, so a fit as read may leave a small share of it.
+  if (share && !(fitted < *share / 2.0 || fitted < kConvertedFitsClean)) return {};
   static const char* const kAxis[3] = {"ω_x", "ω_y", "ω_z"};
   std::string degrees, radians;
   int count = 0;

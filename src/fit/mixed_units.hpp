@@ -35,8 +35,9 @@ using Refit = std::function<FitResult(const GyroRecording& recording, const Flig
 /// Mixed units (docs/phone-lab.md, "Flags", mixed units): where the fit failed (`share` empty) or
 /// every toss is flagged, and one or two axes scatter many times the others where the phone turns
 /// least (scattered_axes), the flights fitted again with those axes taken from °/s to rad/s;
-/// where that fits a free rigid body to under half the share of |ω| left as read (or fits where
-/// the fit as read failed), the line naming those axes and the file; else empty. One recording
+/// where that fits a free rigid body to under half the share of |ω| left as read or under 5 % of
+/// |ω| (or fits where the fit as read failed), the line naming those axes and the file; else
+/// empty. One recording
 /// only (a pooled set's parts may differ in units: each is checked alone). `refit`: the fit of
 /// the flights as given (no ends' term), throwing InputError where it fails.
 std::string units_cause(const GyroRecording& recording, const FlightSearch& search,

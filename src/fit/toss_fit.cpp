@@ -6,6 +6,7 @@
 #include "fit/toss_fit.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -141,6 +142,45 @@ Solved joint_fit(const std::vector<TossData>& data, Parameters& p, const BiasFre
     rate_held = full.rate_held;
   }
   return solved;
+}
+
+/// Moment ratios (I1/I3, I2/I3) a rigid body may have, the fit's other starts where the Euler
+/// estimate's start ends past the triangle inequality or at a needle: a book's, a near-square
+/// slab's, a box's.
+constexpr std::array<std::array<double, 2>, 3> kRigidStarts{
+    {{0.25, 0.8}, {0.5, 0.55}, {0.6, 0.85}}};
+
+/// I1/I3 below which a fitted body is a needle (a rod ten times longer than wide has about
+/// 0.02): where the fit ends with one, other starts are tried too.
+constexpr double kNeedle = 0.1;
+
+/// Fitted moments whose two smaller sum to less than the largest (docs/physics.md §11: no rigid
+/// body has them), or a needle's: where a fit from a poor start ends (a recording thinned to a
+/// browser's rate did, the residual four to ten times a book's).
+bool suspect_body(const Parameters& p) {
+  const Eigen::Vector3d m = p.moments();
+  return m[0] + m[1] < m[2] || m[0] < kNeedle * m[2];
+}
+
+/// A fit that ended at a suspect body (a local minimum its start led it to: a recording thinned
+/// to a browser's ~55 Hz did; docs/phone-lab.md, "The fit") fitted again from
+/// each of kRigidStarts, its axes and ω0 started as before; the lowest cost replaces `p`, `solved`
+/// and `rate_held` where it is lower. A start that does not converge is passed over.
+void refit_from_bodies(const std::vector<TossData>& data, const BiasFreedom& bias,
+                       const FitSettings& settings, const GyroRecording& recording, Parameters& p,
+                       Solved& solved, std::vector<bool>& rate_held) {
+  for (const auto& [m1, m2] : kRigidStarts) {
+    Parameters q = start(data, settings);
+    q.log_ratios = {std::log(m1), std::log(m2)};
+    q.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
+    std::vector<bool> held;
+    try {
+      const Solved again = joint_fit(data, q, bias, settings, recording.source, held);
+      if (again.cost < solved.cost) p = q, solved = again, rate_held = held;
+    } catch (const InputError&) {
+      continue;
+    }
+  }
 }
 
 /// The residual ω_fitted − ω_measured of each toss at each of its samples (rad/s).
@@ -453,7 +493,9 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   p.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
   const BiasFreedom bias = bias_freedom(recording.parts, data, held);
   std::vector<bool> rate_held;
-  const Solved solved = joint_fit(data, p, bias, settings, recording.source, rate_held);
+  Solved solved = joint_fit(data, p, bias, settings, recording.source, rate_held);
+  if (!fixed && suspect_body(p))
+    refit_from_bodies(data, bias, settings, recording, p, solved, rate_held);
   // An axis far beyond any gyroscope's range beside two within it: say which, once.
   if (const std::string cause = scale_cause(data); !cause.empty()) body.notes.push_back(cause);
   // The bias in flight: each recording's rest plus its fitted correction; the samples corrected

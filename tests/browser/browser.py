@@ -119,14 +119,15 @@ class _QuietHandler(http.server.SimpleHTTPRequestHandler):
 
 
 @contextlib.contextmanager
-def serve(folder):
-    """An HTTP server on 127.0.0.1 serving `folder` (file:// pages may not play media, nor
-    fetch), for the length of the with block; yields its URL, ending in '/'."""
+def serve(folder, address="127.0.0.1"):
+    """An HTTP server on `address` (127.0.0.1 unless given: another address of the machine
+    serves a page that is not a secure context) serving `folder` (file:// pages may not play
+    media, nor fetch), for the length of the with block; yields its URL, ending in '/'."""
     handler = functools.partial(_QuietHandler, directory=str(folder))
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    server = http.server.ThreadingHTTPServer((address, 0), handler)
     threading.Thread(target=server.serve_forever, daemon=True).start()
     try:
-        yield f"http://127.0.0.1:{server.server_address[1]}/"
+        yield f"http://{address}:{server.server_address[1]}/"
     finally:
         server.shutdown()
         server.server_close()

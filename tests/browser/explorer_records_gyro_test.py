@@ -39,8 +39,6 @@ under CI=true, where that is a failure (browser.py).
 import base64
 import contextlib
 import csv
-import functools
-import http.server
 import io
 import json
 import math
@@ -55,7 +53,7 @@ import urllib.request
 from pathlib import Path
 
 from browser import (console_errors, fail, find_browser, missing, open_browser, require, run,
-                     test_arguments, wait_for)
+                     serve, test_arguments, wait_for)
 from explorer_lab_test import compare_row, panel_text_problems, read_csv
 
 SIZE = (390, 844)
@@ -190,23 +188,6 @@ def own_address():
     except OSError:
         return None
     return None if address.startswith("127.") else address
-
-
-@contextlib.contextmanager
-def serve_at(folder, address):
-    """`folder` over plain http at `address` (a page there is not a secure context)."""
-    class Quiet(http.server.SimpleHTTPRequestHandler):
-        def log_message(self, *args):
-            pass
-
-    handler = functools.partial(Quiet, directory=str(folder))
-    server = http.server.ThreadingHTTPServer((address, 0), handler)
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    try:
-        yield f"http://{address}:{server.server_address[1]}/"
-    finally:
-        server.shutdown()
-        server.server_close()
 
 
 def fresh_page(driver, page, motion=False):
@@ -521,7 +502,7 @@ def main():
         # Not a secure context: the page over http at this machine's own address, not loopback.
         address = own_address()
         if address:
-            with serve_at(out, address) as url:
+            with serve(out, address) as url:
                 driver.get(url + "explorer.html")
                 if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
                     fail(f"over http at {address}, the page never became ready: {driver.get_log('browser')}")

@@ -21,6 +21,7 @@
 #include "fit/flights.hpp"
 #include "fit/pool.hpp"
 #include "fit/recording.hpp"
+#include "fit/report.hpp"
 #include "fit/saturation.hpp"
 #include "fit/toss_fit.hpp"
 #include "support/scratch.hpp"
@@ -223,6 +224,54 @@ TEST(RealRecordings, AFolderOfOneCsvIsThatCsv) {
     const std::string what = error.what();
     EXPECT_NE(what.find("holds 2 CSVs"), std::string::npos) << what;
     EXPECT_NE(what.find("\"a.csv\", \"b.csv\""), std::string::npos) << what;
+  }
+}
+
+/// `recording` as a phone's browser records it (docs/phone-lab.md, "Recording in the page"): a
+/// reading at each tick of a clock of `hz` (50 to 62 Hz, each tick ±10 % late or early), the
+/// latest sample, its stamp off by up to 1 ms; seeded, so the same each run.
+GyroRecording thinned_as_a_browser(const GyroRecording& recording, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double period = 1.0 / (50.0 + 12.0 * unit(random));
+  GyroRecording thin = recording;
+  thin.t.clear(), thin.omega.clear();
+  double next = -1e300;
+  for (std::size_t i = 0; i < recording.t.size(); ++i) {
+    if (recording.t[i] < next) continue;
+    next = recording.t[i] + period * (0.9 + 0.2 * unit(random));
+    const double t = recording.t[i] + 0.002 * (unit(random) - 0.5);
+    if (!thin.t.empty() && t <= thin.t.back()) continue;
+    thin.t.push_back(t), thin.omega.push_back(recording.omega[i]);
+  }
+  return thin;
+}
+
+// Thinned as a browser thins it (~55 Hz of the 100 Hz), a recording gives the body its full
+// rate gives, within twice the two σ together: 12-29-59 (two flagged flights, no still
+// stretch) fell into moments past the triangle inequality (I1/I3 near 0, the residual four to
+// ten times the physical body's) in about half of such thinnings before the fit was started
+// again from rigid bodies where it ends past it ("The fit").
+TEST(RealRecordings, ThinnedAsABrowserThinsItTheBodyIsTheFullRatesWithinTwoSigma) {
+  REQUIRE_REAL_RECORDINGS();
+  const std::pair<const char*, int> cases[] = {{"12-29-59", 8}, {"12-13-01", 2}, {"12-22-44", 2}};
+  for (const auto& [name, seeds] : cases) {
+    const GyroRecording as_read = read_recording(real_dir() / name);
+    const BodyEstimate full = fit_report(pool_recordings({as_read}), {}).result.body;
+    ASSERT_TRUE(full.ratio_sigma.has_value()) << name;
+    for (int seed = 0; seed < seeds; ++seed) {
+      SCOPED_TRACE(std::string(name) + ", seed " + std::to_string(seed));
+      const GyroRecording thin = thinned_as_a_browser(as_read, 1000u + seed);
+      ASSERT_LT(thin.t.size(), as_read.t.size() * 2 / 3);
+      const BodyEstimate body = fit_report(pool_recordings({thin}), {}).result.body;
+      ASSERT_TRUE(body.ratio_sigma.has_value())
+          << body.ratios.transpose() << " " << thin.t.size() << " samples";
+      for (int i = 0; i < 2; ++i) {
+        const double sigma = std::hypot((*full.ratio_sigma)[i], (*body.ratio_sigma)[i]);
+        EXPECT_LT(std::abs(body.ratios[i] - full.ratios[i]), 2.0 * sigma)
+            << "I" << i + 1 << "/I3 " << body.ratios[i] << " against " << full.ratios[i];
+      }
+    }
   }
 }
 

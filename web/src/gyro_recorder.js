@@ -6,6 +6,7 @@
 // to the lab's drop path, so `bookspin fit` of the download fits what the page fitted. Nothing
 // is fitted here: this module reads the sensor, draws the live trace and writes the CSV.
 import { OMEGA_COLOURS } from './colours.js';
+import { chartCanvas } from './plots.js';
 
 const $ = (id) => document.getElementById(id);
 const DEGREE = Math.PI / 180;
@@ -80,7 +81,12 @@ export const LIMITS = {
   noGyroscope: 'no gyroscope: this browser or device gives the page no rotation rate; record with phyphox and drop its export here',
   denied: 'permission denied: the browser refused the motion sensors; allow them in the site\'s settings and tap Record again',
   hidden: 'recording stopped: the tab was hidden (a hidden page gets no readings); keep the page in front while recording and record again',
+  silent: 'no gyroscope: no reading came within 5 s of asking (this browser or device gives the page no rotation rate); record with phyphox and drop its export here',
 };
+
+/** ms without a first reading after which the sensor counts as absent (LIMITS.silent): a
+ * phone's gyroscope reads every 10–20 ms, and a browser with none may send nothing at all. */
+export const FIRST_READING_MS = 5000;
 
 /** The sensor: start() reads `Gyroscope` or, failing that (or with `preferMotion`),
  * `devicemotion`; each sample ({stamp (ms), x, y, z (rad/s)}) goes to `onSample`. */
@@ -131,6 +137,7 @@ export class GyroSource {
       this.api = GYROSCOPE_API;
       this.stopper = () => sensor.stop();
       sensor.start();
+      this.untilFirst(() => started, reject);
     });
   }
 
@@ -150,7 +157,19 @@ export class GyroSource {
       window.addEventListener('devicemotion', listener);
       this.api = MOTION_API;
       this.stopper = () => window.removeEventListener('devicemotion', listener);
+      this.untilFirst(() => started, reject);
     });
+  }
+
+  /** After permission was given: where no reading came (`started()` false) within
+   * FIRST_READING_MS, the sensor is stopped and `reject`ed with LIMITS.silent. */
+  untilFirst(started, reject) {
+    const stopper = this.stopper;
+    setTimeout(() => {
+      if (started() || this.stopper !== stopper) return;
+      this.stop();
+      reject(new Error(LIMITS.silent));
+    }, FIRST_READING_MS);
   }
 
   /** A failure after the first reading: set by the recorder. */
@@ -165,12 +184,7 @@ export class GyroSource {
 /** Draws the last `span` seconds of `samples` on `canvas`: |ω| in white, x, y, z in their
  * colours, against s. */
 function drawTrace(canvas, samples, span = 5) {
-  const dpr = window.devicePixelRatio || 1;
-  const w = canvas.clientWidth || 320, h = canvas.clientHeight || 120;
-  canvas.width = Math.round(w * dpr); canvas.height = Math.round(h * dpr);
-  const g = canvas.getContext('2d');
-  g.setTransform(dpr, 0, 0, dpr, 0, 0);
-  g.fillStyle = '#14161b'; g.fillRect(0, 0, w, h);
+  const { g, w, h } = chartCanvas(canvas, 320, 120);
   g.font = '12px sans-serif';
   g.fillStyle = '#bbb';
   const n = samples.length;

@@ -11,7 +11,7 @@ import { modalPanel } from './modal.js';
 import { plusMinus, significant, wholeNumbers } from './precision.js';
 import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
-import { niceTicks, tickLabel } from './plots.js';
+import { chartCanvas, niceTicks, tickLabel } from './plots.js';
 import { TossRecorder } from './gyro_recorder.js';
 
 const $ = (id) => document.getElementById(id);
@@ -68,12 +68,7 @@ function labelledRow(key, words, shown, full, wraps = false) {
  * measured samples as dots, the fitted ω as lines, x red, y green, z blue (keyed in the plot's
  * corner), against seconds. */
 export function drawTossChart(canvas, chart) {
-  const dpr = window.devicePixelRatio || 1;
-  const w = canvas.clientWidth || 320, h = canvas.clientHeight || 180;
-  canvas.width = Math.round(w * dpr); canvas.height = Math.round(h * dpr);
-  const g = canvas.getContext('2d');
-  g.setTransform(dpr, 0, 0, dpr, 0, 0);
-  g.fillStyle = '#14161b'; g.fillRect(0, 0, w, h);
+  const { g, w, h } = chartCanvas(canvas, 320, 180);
   const n = chart.t.length;
   if (n < 2) return;
   let lo = Infinity, hi = -Infinity;

@@ -7,6 +7,19 @@
 import { CANVAS_2D } from './sphere.js';
 import { OMEGA_COLOURS } from './colours.js';
 
+/** A chart's canvas made ready: its backing store at its displayed size (`width` × `height` CSS
+ * pixels where it has none yet) times the screen's density, drawn in CSS pixels, cleared to the
+ * panels' dark ground; {g: its 2D context, w, h: CSS pixels}. */
+export function chartCanvas(canvas, width, height) {
+  const dpr = window.devicePixelRatio || 1;
+  const w = canvas.clientWidth || width, h = canvas.clientHeight || height;
+  canvas.width = Math.round(w * dpr); canvas.height = Math.round(h * dpr);
+  const g = canvas.getContext('2d');
+  g.setTransform(dpr, 0, 0, dpr, 0, 0);
+  g.fillStyle = '#14161b'; g.fillRect(0, 0, w, h);
+  return { g, w, h };
+}
+
 /** [title, values of a record, the smallest half-range drawn] */
 const PANELS = [
   ['ω (body, rad/time)', (h) => h.w, 1e-9],
