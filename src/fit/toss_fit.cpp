@@ -165,20 +165,24 @@ bool suspect_body(const Parameters& p) {
 /// A fit that ended at a suspect body (a local minimum its start led it to: a recording thinned
 /// to a browser's ~55 Hz did; docs/phone-lab.md, "The fit") fitted again from
 /// each of kRigidStarts, its axes and ω0 started as before; the lowest cost replaces `p`, `solved`
-/// and `rate_held` where it is lower. A start that does not converge is passed over.
+/// and `rate_held` where it is lower. A start that does not converge, or runs past the exact
+/// motion's time horizon, is passed over.
 void refit_from_bodies(const std::vector<TossData>& data, const BiasFreedom& bias,
                        const FitSettings& settings, const GyroRecording& recording, Parameters& p,
                        Solved& solved, std::vector<bool>& rate_held) {
+  Parameters first = start(data, settings);  // the Euler start's axes and ω0, once
+  first.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
   for (const auto& [m1, m2] : kRigidStarts) {
-    Parameters q = start(data, settings);
+    Parameters q = first;
     q.log_ratios = {std::log(m1), std::log(m2)};
-    q.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
     std::vector<bool> held;
     try {
       const Solved again = joint_fit(data, q, bias, settings, recording.source, held);
       if (again.cost < solved.cost) p = q, solved = again, rate_held = held;
     } catch (const InputError&) {
       continue;
+    } catch (const physics::ExactHorizonError&) {
+      continue;  // a start whose fit runs past the motion's time horizon: passed over too
     }
   }
 }
