@@ -11,6 +11,7 @@ import { mkdirSync, mkdtempSync, readdirSync, readFileSync, statSync, writeFileS
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { test } from "node:test";
+import { fileURLToPath } from "node:url";
 
 const cli = resolve(process.env.FLIPCHECK_PACKAGE, "cli.mjs");
 const scenarios = resolve(process.env.FLIPCHECK_PACKAGE, "scenarios");
@@ -145,4 +146,14 @@ test("a scenario JSON saved as UTF-16 is said to be so", () => {
     assert.equal(run.stderr, `flipcheck: error: ${file}: NUL byte at line 1 (not a text file: a binary file, or text saved as UTF-16)\n`);
   }
   assert.deepEqual(readdirSync(room).sort(), ["be.json", "le.json"]);
+});
+
+test("a quote left open in a motion CSV is named so, as the command line names it (tests/bad_motions)", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  const file = fileURLToPath(new URL("../bad_motions/quote-left-open.csv", import.meta.url));
+  const said = readFileSync(file.replace(/\.csv$/, ".expected"), "utf8").replace("{FILE}", file);
+  const run = npx(room, "judge", "mujoco-test-box", file, "-o", "out");
+  assert.equal(run.status, 2, run.stderr);
+  assert.equal(run.stderr, `flipcheck: error: ${said}`);
+  assert.deepEqual(readdirSync(room), []);
 });
