@@ -38,11 +38,25 @@ function inside(dir, name) {
   return join(dir, name);
 }
 
+/** Why `stats` (statSync's, which follows a link and opens nothing) is no file to read, or ""
+ * for a regular file: bookspin's not_a_file_reason() (src/common/text_file.hpp), so that a FIFO
+ * with no writer or a device (/dev/zero) is refused before it is opened, never read without end. */
+function notAFileReason(stats) {
+  if (stats.isFile()) return "";
+  if (stats.isDirectory()) return "is a directory";
+  if (stats.isFIFO()) return "is a FIFO, not a regular file";
+  if (stats.isCharacterDevice() || stats.isBlockDevice()) return "is a device, not a regular file";
+  if (stats.isSocket()) return "is a socket, not a regular file";
+  return "not a regular file";
+}
+
 /** The reason a file cannot be read, as bookspin's read_text_file() words it: its text, or with
- * `bytes` its bytes (a Buffer), as the command line reads a motion file. */
+ * `bytes` its bytes (a Buffer), as the command line reads a motion file. Only a regular file is
+ * opened: every file npx reads is read here. */
 function readText(path, what, { bytes = false } = {}) {
   try {
-    if (statSync(path).isDirectory()) throw new InputError(`${path}: cannot read ${what}: is a directory`);
+    const why = notAFileReason(statSync(path));
+    if (why) throw new InputError(`${path}: cannot read ${what}: ${why}`);
     return bytes ? readFileSync(path) : readFileSync(path, "utf8");
   } catch (e) {
     if (e instanceof InputError) throw e;
@@ -146,6 +160,13 @@ function makeDir(dir) {
   }
 }
 
+/** The output folder `dir` given with `option`: an empty name is bad input (exit 2), not a
+ * folder at the root that cannot be written (exit 1). */
+function given(option, dir) {
+  if (dir === "") throw new InputError(`${option}: expected a directory, got an empty name (leave it out for out/flipcheck)`);
+  return dir;
+}
+
 function parse(args) {
   const positional = [];
   let out = "out/flipcheck";
@@ -153,8 +174,8 @@ function parse(args) {
     const a = args[i];
     if (a === "-o" || a === "--out") {
       if (i + 1 >= args.length) throw new InputError(`${a}: expected a directory`);
-      out = args[++i];
-    } else if (a.startsWith("--out=")) out = a.slice("--out=".length);
+      out = given(a, args[++i]);
+    } else if (a.startsWith("--out=")) out = given("--out", a.slice("--out=".length));
     else if (a === "-h" || a === "--help") {
       console.log(USAGE);
       process.exit(0);

@@ -46,41 +46,70 @@ function spec(nameOrJson) {
   return scenario(nameOrJson);
 }
 
-/** `value` as JSON text, as JSON.stringify writes it but for the numbers JSON.stringify writes as
- * null: ±Infinity as ±1e999 (which JSON.parse, and the reader, read back as ±Infinity) and −0 as
- * -0, so that the reader refuses them in its own words, as it refuses them in a file. */
-function jsonText(value) {
-  if (typeof value === "number") {
-    if (Number.isFinite(value)) return Object.is(value, -0) ? "-0" : JSON.stringify(value);
-    return Number.isNaN(value) ? "null" : value > 0 ? "1e999" : "-1e999";
-  }
-  const skipped = (v) => v === undefined || typeof v === "function" || typeof v === "symbol";
-  if (Array.isArray(value)) return `[${value.map((v) => (skipped(v) ? "null" : jsonText(v))).join(",")}]`;
-  if (typeof value === "object" && value !== null && typeof value.toJSON !== "function") {
-    const members = Object.entries(value).filter(([, v]) => !skipped(v));
-    return `{${members.map(([k, v]) => `${JSON.stringify(k)}:${jsonText(v)}`).join(",")}}`;
-  }
-  return JSON.stringify(typeof value === "bigint" ? String(value) : value) ?? "null";
-}
-
 /** How deep the reader reads a scenario JSON (analysis::scenario_from_json: the document is level
  * 0): deeper, a file is refused, and so is an object, at its key path. */
 const MAX_DEPTH = 64;
 
-/** `path` and a member `key` or an index, as JavaScript spells the access: extra.a, ["a b"], [0]. */
-function member(path, key) {
-  if (typeof key === "number") return `${path}[${key}]`;
-  return /^[A-Za-z_$][\w$]*$/.test(key) ? (path ? `${path}.${key}` : key) : `${path}[${JSON.stringify(key)}]`;
+/** A key or an index as JavaScript spells its access from `up` (null at the document): extra.a,
+ * ["a b"], [0]. */
+function member(up, key) {
+  if (typeof key === "number") return `[${key}]`;
+  return /^[A-Za-z_$][\w$]*$/.test(key) ? (up ? `.${key}` : key) : `[${JSON.stringify(key)}]`;
 }
 
-/** Refuses a value nested deeper than the reader reads (a cycle is nested without end), naming
- * the key path where it goes past the limit, in the reader's words for a file ("nested more than
- * 64 deep"), so that no object, however deep, overflows the stack of jsonText(). */
-function checkDepth(value, where, path = "", depth = 0) {
-  if (depth > MAX_DEPTH) throw new Error(`${where}: nested more than ${MAX_DEPTH} deep at ${wasm.cutCell(path)}`);
-  if (Array.isArray(value)) value.forEach((v, i) => checkDepth(v, where, member(path, i), depth + 1));
-  else if (typeof value === "object" && value !== null && typeof value.toJSON !== "function")
-    for (const [k, v] of Object.entries(value)) checkDepth(v, where, member(path, k), depth + 1);
+/** The key path of `at` (a chain of {up, key} links from a value to the document) as
+ * common/text_lines.hpp's cut_cell() gives it: whole up to 80 bytes of UTF-8, else its first 60
+ * (not inside a character) and its length in bytes. Spelled a piece at a time, so that a path of
+ * 65 keys of 10^7 characters each (a cycle through a long key) is measured, never built. */
+function cutPath(at) {
+  const pieces = [];
+  for (let link = at; link; link = link.up) pieces.push(link);
+  pieces.reverse();
+  let bytes = 0;
+  let start = "";
+  for (const [i, { key }] of pieces.entries()) {
+    const piece = member(i > 0, key);
+    bytes += Buffer.byteLength(piece);
+    if (start.length < 81) start += piece.slice(0, 81);
+  }
+  if (bytes <= 80) return start;
+  const head = Buffer.from(start);
+  let cut = 60;
+  while (cut > 0 && (head[cut] & 0xc0) === 0x80) --cut;
+  return `${head.subarray(0, cut).toString()}… (${bytes} characters)`;
+}
+
+/** `value` as JSON text, as JSON.stringify writes it (toJSON(key) asked first, a value it skips
+ * undefined), but for the numbers JSON.stringify writes as null: ±Infinity as ±1e999 (which
+ * JSON.parse, and the reader, read back as ±Infinity) and −0 as -0, so that the reader refuses
+ * them in its own words, as it refuses them in a file. A value nested deeper than the reader
+ * reads (a cycle, through toJSON or not, is nested without end) is refused before anything below
+ * it is asked, in the reader's words for a file ("nested more than 64 deep") at its key path
+ * (`at`: the chain of keys from the document), so that no object, however deep or long its keys,
+ * overflows the stack or a string. */
+function jsonText(value, where, key = "", at = null, depth = 0) {
+  if ((typeof value === "object" || typeof value === "bigint") && value !== null && typeof value.toJSON === "function")
+    value = value.toJSON(key);
+  if (value === undefined || typeof value === "function" || typeof value === "symbol") return undefined;
+  if (depth > MAX_DEPTH) throw new Error(`${where}: nested more than ${MAX_DEPTH} deep at ${cutPath(at)}`);
+  if (value instanceof Number || value instanceof String || value instanceof Boolean) value = value.valueOf();
+  if (typeof value === "number") {
+    if (Number.isFinite(value)) return Object.is(value, -0) ? "-0" : JSON.stringify(value);
+    return Number.isNaN(value) ? "null" : value > 0 ? "1e999" : "-1e999";
+  }
+  if (typeof value === "bigint") return JSON.stringify(String(value));
+  if (typeof value !== "object" || value === null) return JSON.stringify(value);
+  if (Array.isArray(value)) {
+    const items = []; // a hole is null, as JSON.stringify writes it
+    for (let i = 0; i < value.length; ++i) items.push(jsonText(value[i], where, String(i), { up: at, key: i }, depth + 1) ?? "null");
+    return `[${items.join(",")}]`;
+  }
+  const members = [];
+  for (const [k, v] of Object.entries(value)) {
+    const text = jsonText(v, where, k, { up: at, key: k }, depth + 1);
+    if (text !== undefined) members.push(`${JSON.stringify(k)}:${text}`);
+  }
+  return `{${members.join(",")}}`;
 }
 
 /** The fields of a scenario JSON the reader reads (analysis::scenario_from_json); it ignores the rest. */
@@ -99,8 +128,7 @@ function scenarioText(s) {
       if (typeof v === "bigint" || Number.isNaN(v))
         throw new Error(`${where}: ${field}: expected ${key === "scenario" ? "a name (a string)" : "a number"}, got ${typeof v === "bigint" ? "a bigint" : "NaN"}`);
   }
-  checkDepth(s, "scenario JSON");
-  return { text: jsonText(s), file: "scenario JSON" };
+  return { text: jsonText(s, "scenario JSON") ?? "null", file: "scenario JSON" };
 }
 
 /** A scenario JSON file's `text` read as `bookspin flipcheck judge` and Python read it (the same

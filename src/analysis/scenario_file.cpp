@@ -12,6 +12,7 @@
 #include "common/errors.hpp"
 #include "common/json_string.hpp"
 #include "common/number_text.hpp"
+#include "common/text_lines.hpp"
 
 namespace bookspin::analysis {
 
@@ -70,7 +71,8 @@ class JsonReader {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& what) const {
+  /// " at line L, column C" of the reader's place, or ": the file ends at line L, column C".
+  std::string place() const {
     int line = 1, column = 1;
     for (std::size_t i = 0; i < at_ && i < text_.size(); ++i) {
       if (text_[i] == '\n') {
@@ -80,11 +82,11 @@ class JsonReader {
         ++column;
       }
     }
-    if (at_ >= text_.size())
-      throw InputError(file_ + ": not valid JSON: " + what + ": the file ends at line " +
-                       std::to_string(line) + ", column " + std::to_string(column));
-    throw InputError(file_ + ": not valid JSON: " + what + " at line " + std::to_string(line) +
-                     ", column " + std::to_string(column));
+    return (at_ >= text_.size() ? ": the file ends at line " : " at line ") + std::to_string(line) +
+           ", column " + std::to_string(column);
+  }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(file_ + ": not valid JSON: " + what + place());
   }
   void skip_space() {
     while (at_ < text_.size() &&
@@ -106,9 +108,11 @@ class JsonReader {
     return std::string("\"") + c + "\"";
   }
   Json value(int depth) {
-    if (depth > 64) fail("nested more than 64 deep");
     skip_space();
     if (at_ >= text_.size()) fail("expected a value");
+    // Valid JSON, deeper than a scenario is read: said in the words the npm package's object
+    // door says it in, there at a key path ("nested more than 64 deep at extra.a.a…").
+    if (depth > 64) throw InputError(file_ + ": nested more than 64 deep" + place());
     const char c = text_[at_];
     Json v;
     if (c == '{') {
@@ -280,6 +284,9 @@ std::string scenario_file(const Scenario& scenario) {
 }
 
 Scenario scenario_from_json(std::string_view text, const std::string& file) {
+  // A file saved as UTF-16 (or no text at all) is said to be so, as a scene or a recording is,
+  // not "a control character" where its first NUL byte stands.
+  if (const auto nul = nul_byte_problem(text)) throw InputError(file + ": " + *nul);
   const Json json = JsonReader(text, file).document();
   if (json.kind != Json::Kind::object)
     throw InputError(file + ": holds " +

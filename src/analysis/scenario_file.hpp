@@ -27,9 +27,12 @@ std::string scenario_file(const Scenario& scenario);
 /// `omega0_body` (or `omega0_world` alone), `dt` and `steps` (a whole number) as check_scenario()
 /// allows them; `q0`, where given, the identity (either sign); `omega0_world` beside
 /// `omega0_body` equal to it (to 1e-12 relative); other fields are ignored. The start is
-/// omega0_body, the jiggle already in it. Throws InputError "FILE: not valid JSON: … at line L,
-/// column C", "FILE: holds JSON null, not a scenario (…)" for a JSON value that is no object,
-/// and "NAME: FIELD: reason" for a field.
+/// omega0_body, the jiggle already in it. Throws InputError "FILE: NUL byte at line L (not a
+/// text file: a binary file, or text saved as UTF-16)" (common's nul_byte_problem, as a scene
+/// or a recording), "FILE: not valid JSON: … at line L, column C", "FILE: nested more than 64
+/// deep at line L, column C" (the npm package's words for an object, at its key path), "FILE:
+/// holds JSON null, not a scenario (…)" for a JSON value that is no object, and "NAME: FIELD:
+/// reason" for a field.
 Scenario scenario_from_json(std::string_view text, const std::string& file);
 
 }  // namespace bookspin::analysis

@@ -30,25 +30,25 @@ struct FlipcheckOptions {
   bool verify = false;
 };
 
-/// Writes OUT/<scenario>.json and OUT/<scenario>-exact.csv for each scenario.
+/// Writes OUT/<scenario>.json and OUT/<scenario>-exact.csv for each scenario: a scene file
+/// (TOML) or a scenario JSON, by its extension (products::read_flipcheck_export_scenario).
 int export_scenarios(const FlipcheckOptions& options) {
-  std::vector<scene::Scene> scenes;  // every scenario read before anything is written
-  for (const std::string& path : options.scenarios) {
-    scenes.push_back(scene::parse_scene(path, options.overrides));
-    analysis::scenario_of(scenes.back());  // a comparison scene is refused here
-  }
+  // Every scenario read before anything is written.
+  std::vector<products::FlipcheckExportScenario> scenarios;
+  for (const std::string& path : options.scenarios)
+    scenarios.push_back(products::read_flipcheck_export_scenario(path, options.overrides));
   // A scenario once: two of one name would write one pair of files twice.
-  for (std::size_t i = 0; i < scenes.size(); ++i)
+  for (std::size_t i = 0; i < scenarios.size(); ++i)
     for (std::size_t k = 0; k < i; ++k)
-      if (scenes[i].name == scenes[k].name)
-        throw InputError("flipcheck export: two scenarios named " + scenes[i].name +
+      if (scenarios[i].name() == scenarios[k].name())
+        throw InputError("flipcheck export: two scenarios named " + scenarios[i].name() +
                          " (one given twice, or two of one name): give each once");
   // One command, one stop: every scenario staged, then all put in place together.
   const std::vector<cache::Outcome> outcomes = products::make_flipcheck_exports(
-      scenes, options.out_dir, {options.force, options.verify, remake_note}, stop_poll());
-  for (std::size_t i = 0; i < scenes.size(); ++i) {
+      scenarios, options.out_dir, {options.force, options.verify, remake_note}, stop_poll());
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
     const products::FlipcheckExportLayout layout =
-        products::flipcheck_export_layout(options.out_dir, scenes[i]);
+        products::flipcheck_export_layout(options.out_dir, scenarios[i].name());
     std::cout << (outcomes[i] == cache::Outcome::up_to_date ? "up to date: " : "exported: ")
               << layout.json.string() << ", " << layout.csv.string() << std::endl;
   }
@@ -147,8 +147,8 @@ Subcommand add_flipcheck(CLI::App& cli) {
       "OUT/<scenario>-exact.csv (the exact motion at every step) for each scenario");
   exporter
       ->add_option("SCENARIO", options.scenarios,
-                   "Scenario files (TOML, e.g. "
-                   "scenes/flipcheck/*.toml)")
+                   "Scenarios: scene files (TOML, e.g. scenes/flipcheck/*.toml) or scenario JSONs "
+                   "export wrote (a name ending in .json)")
       ->required();
   add_out_set_and_freshness(exporter, options, "OUT/<scenario>/flipcheck-export-manifest.json");
   CLI::App* judge = cmd->add_subcommand(

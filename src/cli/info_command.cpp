@@ -1,8 +1,11 @@
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <string>
 
 #include "cli/commands.hpp"
 #include "cli/subcommand.hpp"
+#include "common/errors.hpp"
 #include "render/renderer.hpp"
 #include "typeface/typeface.hpp"
 #include "video/video.hpp"
@@ -11,10 +14,25 @@ namespace bookspin::cli {
 
 namespace {
 
-/// Prints the EGL/GL and FFmpeg set-up, and the faces and options every text is drawn with.
+/// Flushes the standard output; an OutputError naming it where a line could not be written
+/// (`bookspin info > /dev/full`: exit 1, not 0 with everything lost).
+void flush_standard_output() {
+  errno = 0;
+  std::cout.flush();
+  if (!std::cout) {
+    const int error = errno;
+    throw OutputError(std::string("cannot write the standard output: ") +
+                      (error != 0 ? std::strerror(error) : "the write failed"));
+  }
+}
+
+/// Prints the FFmpeg set-up and the faces and options every text is drawn with (no GL needed:
+/// printed, and flushed, before the EGL/GL set-up is asked, which fails without an EGL driver),
+/// then the EGL/GL set-up.
 int info_command() {
   for (const auto& line : video::ffmpeg_info()) std::cout << line << '\n';
-  std::cout.flush();
+  for (const auto& line : typeface::info_lines()) std::cout << line << '\n';
+  flush_standard_output();
   const render::GlInfo gl = render::gl_info();
   for (const auto& line : gl.lines()) std::cout << line << '\n';
   const float anisotropy = render::effective_anisotropy(render::kAutoAnisotropy, gl.gl_renderer);
@@ -22,7 +40,7 @@ int info_command() {
             << (anisotropy > 1.0f ? std::to_string(static_cast<int>(anisotropy)) + "x anisotropic"
                                   : std::string("trilinear (software rasterizer)"))
             << '\n';
-  for (const auto& line : typeface::info_lines()) std::cout << line << '\n';
+  flush_standard_output();
   return kExitOk;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
@@ -33,6 +34,43 @@ bool finite_number(std::string_view cell, double& out) {
   if (!value || !std::isfinite(*value)) return false;
   out = *value;
   return true;
+}
+
+/// The line ends in `cell` ("\r\n", "\n" or a lone "\r", each one, as next_line counts them).
+int line_ends(std::string_view cell) {
+  int ends = 0;
+  for (std::size_t k = 0; k < cell.size(); ++k)
+    ends += cell[k] == '\n' || (cell[k] == '\r' && (k + 1 == cell.size() || cell[k + 1] != '\n'));
+  return ends;
+}
+
+/// A quoted cell over a line end is a quote left open (else the lines it holds are not read as
+/// rows, and the next row read is blamed on its t) where it cannot be a cell of text: in the
+/// header (a name), in a column the motion is read from (`read`: a number), past the header's
+/// columns, or holding a whole row after its line end (as many commas as a row of the header
+/// has). A note over two lines, in a column of its own, is read. Throws InputError naming the
+/// row, the column and the line where the quote closes.
+void refuse_quote_left_open(const std::vector<std::string>& cells,
+                            const std::vector<std::string_view>& header,
+                            const std::array<std::size_t, 8>& read, const std::string& file,
+                            int line_number) {
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const std::string& cell = cells[c];
+    const int ends = line_ends(cell);
+    if (ends == 0) continue;
+    const std::size_t first_end = cell.find_first_of("\r\n");
+    const bool text =
+        !header.empty() && c < header.size() &&
+        std::find(read.begin(), read.end(), c) == read.end() &&
+        static_cast<std::size_t>(std::count(cell.begin() + first_end, cell.end(), ',')) + 1 <
+            header.size();
+    if (!text)
+      throw InputError(file, line_number, c < header.size() ? std::string(header[c]) : "",
+                       "a quote opens a cell on this row (" +
+                           quoted_cell(cell.substr(0, first_end)) +
+                           " and the line's end) and closes it on line " +
+                           std::to_string(line_number + ends) + ": a quote left open?");
+  }
 }
 
 /// Why a cell finite_number() refused is no finite number: a decimal number beyond the doubles
@@ -166,11 +204,12 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
       continue;
     }
     // A row as RFC 4180 reads it (R's write.csv, spreadsheets): a quoted cell may hold commas,
-    // doubled quotes and line ends.
+    // doubled quotes and, in a column of text, line ends.
     CsvRecord record = next_csv_record(text, start, ',');
     if (record.unclosed)
       throw InputError(file, line_number, "",
                        "a quoted cell opens on this row and is not closed by the end of the file");
+    refuse_quote_left_open(record.cells, header, at, file, line_number);
     start = record.next;
     lines_read += record.lines - 1;
     if (header.empty()) {

@@ -34,8 +34,10 @@ struct MotionFile {
 /// missing column, a missing or extra cell, a cell that is not a finite number, q = 0 (all four
 /// components; any other norm is read, 1e300 and 1e-300 alike: q is divided by its largest
 /// component first when that is beyond 1e±100), an ω component beyond ±1e100 (its energy would
-/// overflow), a misplaced t, and for a file without rows. A UTF-8 byte-order mark before the
-/// header is read past.
+/// overflow), a misplaced t, a quoted cell over a line end that cannot be a cell of text (in
+/// the header, in a column read, or holding a whole row: "a quote opens a cell on this row (…)
+/// and closes it on line N: a quote left open?"), and for a file without rows. A UTF-8 byte-order
+/// mark before the header is read past.
 MotionFile parse_motion_csv(std::string_view text, const std::string& file, double dt,
                             long long steps);
 

@@ -15,6 +15,7 @@
 #include "jobs/motion_judgement.hpp"
 #include "jobs/scenario_export.hpp"
 #include "output/atomic_output.hpp"
+#include "output/manifest.hpp"
 #include "output/output_dir.hpp"
 #include "output/staged_files.hpp"
 #include "products/gallery_page.hpp"
@@ -38,9 +39,31 @@ std::vector<std::string> file_names(const std::vector<std::filesystem::path>& fi
 }  // namespace
 
 FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_dir,
+                                              const std::string& scenario) {
+  return {out_dir / (scenario + ".json"), out_dir / (scenario + "-exact.csv"),
+          out_dir / scenario / "flipcheck-export-manifest.json"};
+}
+
+FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_dir,
                                               const scene::Scene& scene) {
-  return {out_dir / (scene.name + ".json"), out_dir / (scene.name + "-exact.csv"),
-          out_dir / scene.name / "flipcheck-export-manifest.json"};
+  return flipcheck_export_layout(out_dir, scene.name);
+}
+
+FlipcheckExportScenario read_flipcheck_export_scenario(const std::filesystem::path& path,
+                                                       const std::vector<std::string>& overrides) {
+  FlipcheckExportScenario read;
+  if (is_scenario_json(path)) {
+    if (!overrides.empty())
+      throw InputError(path.string() +
+                       ": flipcheck export: --set changes a scene file (TOML), not a scenario "
+                       "JSON: edit the JSON, or give the scene file");
+    read.json =
+        analysis::scenario_from_json(read_text_file(path, "the scenario file"), path.string());
+    return read;
+  }
+  read.scene = scene::parse_scene(path, overrides);
+  analysis::scenario_of(read.scene);  // a comparison scene is refused here
+  return read;
 }
 
 cache::Outcome make_flipcheck_export(const FlipcheckExportJob& job) {
@@ -51,16 +74,28 @@ std::vector<cache::Outcome> make_flipcheck_exports(const std::vector<scene::Scen
                                                    const std::filesystem::path& out_dir,
                                                    const cache::Freshness& freshness,
                                                    const StopPoll& stop) {
+  std::vector<FlipcheckExportScenario> scenarios;
+  for (const scene::Scene& scene : scenes) scenarios.push_back({scene});
+  return make_flipcheck_exports(scenarios, out_dir, freshness, stop);
+}
+
+std::vector<cache::Outcome> make_flipcheck_exports(
+    const std::vector<FlipcheckExportScenario>& scenarios, const std::filesystem::path& out_dir,
+    const cache::Freshness& freshness, const StopPoll& stop) {
   std::vector<FlipcheckExportLayout> layouts;
   std::vector<cache::CachedOutputs> cached;
-  for (const scene::Scene& scene : scenes) {
-    layouts.push_back(flipcheck_export_layout(out_dir, scene));
-    cached.push_back({scene.name + "-flipcheck",
-                      layouts.back().manifest,
-                      "flipcheck export",
-                      {},
-                      out_dir,
-                      &scene,
+  for (const FlipcheckExportScenario& scenario : scenarios) {
+    layouts.push_back(flipcheck_export_layout(out_dir, scenario.name()));
+    // A scenario JSON has no scene: its export is up to date for the same scenario (its
+    // canonical text's SHA-256, as every door hashes it) and the same program.
+    JsonObject options;
+    if (scenario.json)
+      options = {{"bookspin",
+                  {JsonObject{{"version", {output::program_version()}},
+                              {"build_id", {"sha256:" + output::program_build_id()}}}}},
+                 {"scenario_sha256", {analysis::scenario_sha256(*scenario.json)}}};
+    cached.push_back({scenario.name() + "-flipcheck", layouts.back().manifest, "flipcheck export",
+                      std::move(options), out_dir, scenario.json ? nullptr : &scenario.scene,
                       /*all_or_nothing=*/true});
   }
   output::StagedFiles staged;
@@ -70,7 +105,10 @@ std::vector<cache::Outcome> make_flipcheck_exports(const std::vector<scene::Scen
       [&](std::size_t i) {
         const FlipcheckExportLayout& layout = layouts[i];
         {  // the texts freed once written: only the temporaries wait for the rest
-          const jobs::ExportFiles texts = jobs::scenario_export(scenes[i], stop);
+          const jobs::ExportFiles texts =
+              scenarios[i].json
+                  ? jobs::export_files(jobs::exact_motion(*scenarios[i].json, stop), stop)
+                  : jobs::scenario_export(scenarios[i].scene, stop);
           output::prepare_output_dir(layout.json.parent_path());
           staged.text(layout.json, texts.json);
           staged.text(layout.csv, texts.csv);

@@ -5,6 +5,7 @@
 // Every path they write is named here; the measuring is jobs' (jobs/exact_motion.hpp,
 // jobs/motion_judgement.hpp) and analysis' (analysis/conformance.hpp).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,6 +30,27 @@ struct FlipcheckExportLayout {
 /// The layout of `scene`'s export in `out_dir`. No I/O.
 FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_dir,
                                               const scene::Scene& scene);
+/// The same of the scenario named `scenario`.
+FlipcheckExportLayout flipcheck_export_layout(const std::filesystem::path& out_dir,
+                                              const std::string& scenario);
+
+/// One scenario of an export: a scene file's (TOML), or the scenario JSON `export` wrote.
+struct FlipcheckExportScenario {
+  scene::Scene scene;  ///< a scene file's scene (one model, no [[compare]]); unused with `json`
+  /// The scenario of a scenario JSON (analysis::scenario_from_json), exported as the npm
+  /// package exports it: its files depend on it alone, its manifest records its SHA-256
+  std::optional<analysis::Scenario> json = std::nullopt;
+  /// Its name: OUT/<name>.json
+  const std::string& name() const { return json ? json->name : scene.name; }
+};
+
+/// The scenario `path` names for `flipcheck export`: a scenario JSON where its name ends in
+/// .json in any case (is_scenario_json, one route per file at every door: docs/flipcheck.md,
+/// "What a scenario may be"), read by analysis::scenario_from_json; else a scene file with
+/// `overrides` (--set), refused for a comparison scene (analysis::scenario_of). Throws
+/// InputError naming the file (a scenario JSON with `overrides`: --set changes a scene file).
+FlipcheckExportScenario read_flipcheck_export_scenario(const std::filesystem::path& path,
+                                                       const std::vector<std::string>& overrides);
 
 struct FlipcheckExportJob {
   scene::Scene scene;  ///< the scenario (one model, no [[compare]])
@@ -53,6 +75,11 @@ std::vector<cache::Outcome> make_flipcheck_exports(const std::vector<scene::Scen
                                                    const std::filesystem::path& out_dir,
                                                    const cache::Freshness& freshness,
                                                    const StopPoll& stop = {});
+/// The same of scenarios from scene files or scenario JSONs: a scenario JSON's files are
+/// `npx flipcheck export`'s of the same file, byte for byte.
+std::vector<cache::Outcome> make_flipcheck_exports(
+    const std::vector<FlipcheckExportScenario>& scenarios, const std::filesystem::path& out_dir,
+    const cache::Freshness& freshness, const StopPoll& stop = {});
 
 /// Whether `path`'s name ends in `extension`, lower case (".json", ".toml"), in any case: one
 /// route per file at every door (docs/flipcheck.md, "What a scenario may be"). No I/O.

@@ -8,6 +8,9 @@
 #include <cstdio>
 #include <sstream>
 
+#include "overlay/cairo_canvas.hpp"
+#include "overlay/sheet_header.hpp"
+
 namespace bookspin::charts {
 namespace {
 
@@ -71,6 +74,51 @@ TEST(HeatMap, EveryCellIsWhereItsRowSaysInItsValuesColour) {
       }
       // log10 of the values spans 0 (dt[0], every[0]) … 11 (dt[3], every[2]).
       const auto rgb = heat_colour((i + 4.0 * j) / 11.0);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], rgb[c], 2) << "channel " << c;
+    }
+  }
+}
+
+// A header line longer than the sheet is wrapped (overlay/sheet_header.hpp), and the maps are
+// laid out under the lines drawn, not under the lines given: the sheet of a header that wraps is
+// the sheet of its wrapped lines given already wrapped, pixel for pixel, and the first map's
+// cells are where heat_map_cells() puts them under that many lines. Laid out under the lines
+// given, the wrapped title was drawn over the first row of maps.
+TEST(HeatMap, TheMapsAreLaidOutUnderTheWrappedHeader) {
+  const std::vector<double> x{1, 2, 3}, y{1, 2};
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (std::size_t j = 0; j < y.size(); ++j)
+      rows.push_back({number(x[i]), number(y[j]), number(std::pow(10.0, i + 3.0 * j))});
+  const auto maps =
+      sweep_heat_maps({"time.dt", "model.normalize_every", "orientation_error"}, rows, x, false, y,
+                      false, {analysis::find_measure("orientation_error")});
+  const int width = 900, height = 700;
+  std::string varied = "varied:";
+  for (int k = 0; k < 12; ++k) varied += " body.moment_" + std::to_string(k) + " \u00b7";
+  varied += " the last";
+  const std::vector<std::string> header{
+      "A sweep whose title runs on well past the width of its sheet, so that it wraps onto a "
+      "second line and a third",
+      varied};
+  overlay::CairoCanvas canvas(width, height);
+  const double font = 0.024 * height;  // the sheets' header font (as plot_sheet_test.cpp)
+  const std::vector<std::string> lines =
+      overlay::wrap_sheet_header(canvas.cr(), header, font, width);
+  ASSERT_GE(lines.size(), header.size() + 2) << "the header must wrap";
+  ASSERT_EQ(overlay::wrap_sheet_header(canvas.cr(), lines, font, width), lines);
+  const RgbaImage image = heat_map_sheet(header, maps, width, height);
+  EXPECT_TRUE(image.pixels == heat_map_sheet(lines, maps, width, height).pixels)
+      << "the sheet of a header that wraps is not the sheet of its wrapped lines";
+  const MapRect cells = heat_map_cells(width, height, lines.size(), maps.size(), 0);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    for (std::size_t j = 0; j < y.size(); ++j) {
+      SCOPED_TRACE("cell x[" + std::to_string(i) + "], y[" + std::to_string(j) + "]");
+      const int px = static_cast<int>(cells.left + (i + 0.5) * cells.width / x.size());
+      const int py =
+          static_cast<int>(cells.top + cells.height - (j + 0.5) * cells.height / y.size());
+      const std::uint8_t* p = image.row(py) + 4 * px;
+      const auto rgb = heat_colour((i + 3.0 * j) / 5.0);  // log10 spans 0 … 5
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], rgb[c], 2) << "channel " << c;
     }
   }

@@ -398,6 +398,76 @@ TEST(FlipcheckCommand, AScenarioJsonIsReadByItsExtensionInAnyCase) {
   }
 }
 
+// One route per file at every door, export too: the scenario JSON export wrote, given to export
+// under any case of .json, writes the same two files byte for byte (it was read as TOML: "TOML
+// syntax error … saw '{'", where npx exported it); with --set it is refused as judge refuses it.
+TEST(FlipcheckCommand, ExportReadsAScenarioJsonByItsExtension) {
+  ScratchDir dir;
+  ASSERT_EQ(
+      run_bookspin("flipcheck export " + scenario("mujoco-test-box") + " -o " + quoted(dir / "kit"))
+          .status,
+      0);
+  for (const std::string spelled : {"scen.json", "scen.JSON"}) {
+    SCOPED_TRACE(spelled);
+    fs::copy_file(dir / "kit" / "mujoco-test-box.json", dir / spelled);
+    const fs::path out = dir / ("out-" + spelled);
+    const SplitResult r =
+        run_bookspin_split("flipcheck export " + quoted(dir / spelled) + " -o " + quoted(out));
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* file : {"mujoco-test-box.json", "mujoco-test-box-exact.csv"})
+      EXPECT_EQ(read_file(out / file), read_file(dir / "kit" / file)) << file;
+    const SplitResult again =
+        run_bookspin_split("flipcheck export " + quoted(dir / spelled) + " -o " + quoted(out));
+    EXPECT_EQ(again.out.rfind("up to date: ", 0), 0u) << again.out;
+  }
+  const SplitResult set = run_bookspin_split("flipcheck export " + quoted(dir / "scen.json") +
+                                             " --set body.mass=2 -o " + quoted(dir / "set"));
+  EXPECT_EQ(set.status, 2);
+  EXPECT_NE(set.err.find("--set changes a scene file (TOML), not a scenario JSON"),
+            std::string::npos)
+      << set.err;
+  EXPECT_FALSE(fs::exists(dir / "set"));
+}
+
+// A scenario JSON saved as UTF-16 (with its byte-order mark, either order) is said to be so, as
+// a scene or a recording is, not "a control character at line 1, column 2"; JSON nested past
+// the reader's 64 levels is valid JSON, said in the npm object door's words at its line and
+// column, not "not valid JSON".
+TEST(FlipcheckCommand, AScenarioJsonSavedAsUtf16OrNestedTooDeepIsSaidToBeSo) {
+  ScratchDir dir;
+  ASSERT_EQ(
+      run_bookspin("flipcheck export " + scenario("mujoco-test-box") + " -o " + quoted(dir / "kit"))
+          .status,
+      0);
+  const std::string text = read_file(dir / "kit" / "mujoco-test-box.json");
+  std::string le("\xFF\xFE", 2), be("\xFE\xFF", 2);
+  for (const char c : text) {
+    le += std::string{c, '\0'};
+    be += std::string{'\0', c};
+  }
+  const fs::path exact = dir / "kit" / "mujoco-test-box-exact.csv";
+  for (const auto& [name, bytes] : {std::pair{"le.json", le}, std::pair{"be.json", be}}) {
+    std::ofstream(dir / name, std::ios::binary) << bytes;
+    for (const std::string& command :
+         {"export " + quoted(dir / name), "judge " + quoted(dir / name) + " " + quoted(exact)}) {
+      const SplitResult r =
+          run_bookspin_split("flipcheck " + command + " -o " + quoted(dir / "out"));
+      EXPECT_EQ(r.status, 2) << command;
+      EXPECT_EQ(r.err, "bookspin: error: " + (dir / name).string() +
+                           ": NUL byte at line 1 (not a text file: a binary file, or text saved as "
+                           "UTF-16)\n");
+    }
+  }
+  std::ofstream(dir / "deep.json")
+      << "{\"extra\": " << std::string(70, '[') << std::string(70, ']') << "}\n";
+  const SplitResult deep = run_bookspin_split("flipcheck judge " + quoted(dir / "deep.json") + " " +
+                                              quoted(exact) + " -o " + quoted(dir / "out"));
+  EXPECT_EQ(deep.status, 2);
+  EXPECT_EQ(deep.err, "bookspin: error: " + (dir / "deep.json").string() +
+                          ": nested more than 64 deep at line 1, column 75\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 // One command, one stop: a scenario given twice to export would stage its files twice; it is
 // refused, one line and exit 2, nothing written.
 TEST(FlipcheckCommand, AScenarioGivenTwiceToExportIsRefused) {

@@ -63,5 +63,39 @@ TEST(InfoCommand, TheTextLinesAreTheSameUnderAnotherTextSetUp) {
   EXPECT_EQ(text_lines(plain.output), text_lines(other.output));
 }
 
+// A standard output that cannot be written (/dev/full: every write fails with ENOSPC) is a
+// failed write: exit 1, naming it, not exit 0 with everything lost.
+TEST(InfoCommand, AStandardOutputThatCannotBeWrittenIsAFailedWrite) {
+  std::string said;
+  const int status = run_shell(std::string(BOOKSPIN_EXE) + " info 2>&1 >/dev/full", said);
+  EXPECT_EQ(status, 1) << said;
+  EXPECT_EQ(said, "bookspin: error: cannot write the standard output: No space left on device\n");
+}
+
+// The text lines need no GL: without an EGL driver (libglvnd given no vendor library) they are
+// printed, the same as with one, before the EGL failure (exit 1) is said.
+TEST(InfoCommand, TheTextLinesArePrintedWithoutAnEglDriver) {
+  const CliResult plain = run_bookspin("info");
+  ASSERT_EQ(plain.status, 0) << plain.output;
+  const SplitResult none = [] {
+    SplitResult r;
+    const std::string dir = std::string(BOOKSPIN_BINARY_DIR) + "/test-output";
+    std::filesystem::create_directories(dir);
+    const std::string err = dir + "/info-no-egl-" + std::to_string(getpid()) + ".txt";
+    r.status = run_shell(
+        "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json "
+        "__EGL_VENDOR_LIBRARY_DIRS=/nonexistent " +
+            std::string(BOOKSPIN_EXE) + " info 2>'" + err + "'",
+        r.out);
+    r.err = read_file(err);
+    std::filesystem::remove(err);
+    return r;
+  }();
+  ASSERT_EQ(none.status, 1) << none.out << none.err;
+  EXPECT_FALSE(text_lines(plain.output).empty());
+  EXPECT_EQ(text_lines(none.out), text_lines(plain.output));
+  EXPECT_EQ(none.err.rfind("bookspin: error: ", 0), 0u) << none.err;
+}
+
 }  // namespace
 }  // namespace bookspin::cli

@@ -190,6 +190,32 @@ TEST(MotionCsv, AQuotedCellHoldingCommasQuotesOrALineEndIsOneCell) {
   EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,a,b\n"), "run.csv:2: 10 cells where the header has 9");
 }
 
+// A quote left open is named as such, with the line where the quote closes, wherever the cell
+// it opens cannot be text over two lines: in a column read (a number), in the header (a name),
+// or in a column of its own when it swallows a whole row (the exported CSV's E, quoted and left
+// open: the next row was read into it and the one after blamed on t, "t = 0.3 is not step 2").
+// A note over two lines in a column of its own is still read; CR LF is one line end.
+TEST(MotionCsv, AQuoteLeftOpenIsNamedSoNotBlamedOnT) {
+  const std::string head = "t,qw,qx,qy,qz,wx,wy,wz,E\n";
+  const std::string left_open = " and the line's end) and closes it on line ";
+  // In E: its next row swallowed, closed by the quote that opens E on the row after.
+  EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,7\n0.1,1,0,0,0,1,2,3,\"7\n0.2,1,0,0,0,1,2,3,7\n" +
+                     "0.3,1,0,0,0,1,2,3,\"7\"\n"),
+            "run.csv:3: E: a quote opens a cell on this row (\"7\"" + left_open +
+                "5: a quote left open?");
+  // In a column read, ending the next line.
+  EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,\"3,7\n0.1,1,0,0,0,1,2,3\",7\n"),
+            "run.csv:2: wz: a quote opens a cell on this row (\"3,7\"" + left_open +
+                "3: a quote left open?");
+  // In the header, over CR LF line ends: line 3 is where it closes, not line 5.
+  EXPECT_EQ(
+      error_of("t,qw,qx,qy,qz,wx,wy,\"wz,E\r\n0,1,0,0,0,1,2,3,7\r\n0.1,1,0,0,0,1\",2,3,7\r\n"),
+      "run.csv:1: a quote opens a cell on this row (\"wz,E\"" + left_open +
+          "3: a quote left open?");
+  // A note over two lines, holding commas, is a note.
+  EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,\"spun,\nthen, caught\"\n0.1,1,0,0,0,1,2,3,7\n"), "");
+}
+
 // A column the motion is read from, named twice, is refused: which is meant cannot be told
 // (the first was taken silently).
 TEST(MotionCsv, AColumnNamedTwiceIsRefusedNamingIt) {

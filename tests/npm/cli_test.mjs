@@ -11,6 +11,7 @@ import { mkdirSync, mkdtempSync, readdirSync, readFileSync, statSync, writeFileS
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { test } from "node:test";
+import { fileURLToPath } from "node:url";
 
 const cli = resolve(process.env.FLIPCHECK_PACKAGE, "cli.mjs");
 const scenarios = resolve(process.env.FLIPCHECK_PACKAGE, "scenarios");
@@ -85,4 +86,74 @@ test("a scenario JSON named with its extension in any case is read as a scenario
     assert.equal(run.status, 0, run.stderr);
     assert.equal(readFileSync(join(room, spelled + "-out", "mujoco-test-box-judge.csv"), "utf8"), readFileSync(join(room, "lower", "mujoco-test-box-judge.csv"), "utf8"));
   }
+});
+
+test("export into an empty folder whose last output cannot be put in place leaves it empty", () => {
+  // No earlier file anywhere: the files put in place before the one that cannot be are taken
+  // away again, not left as the half of a run (a file with no earlier one is removed by the undo).
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  const out = join(room, "out");
+  mkdirSync(join(out, "book-intermediate-0.2-exact.csv"), { recursive: true });
+  const before = contents(out);
+  const run = npx(room, "export", "mujoco-test-box", "book-intermediate-0.2", "-o", "out");
+  assert.equal(run.status, 1, run.stderr);
+  assert.match(run.stderr, /^flipcheck: error: cannot replace a directory with output file "out\/book-intermediate-0.2-exact.csv"/);
+  assert.deepEqual(contents(out), before);
+  assert.deepEqual(readdirSync(room), ["out"]);
+});
+
+test("what is no regular file is refused before it is read, in the command line's words", () => {
+  // A FIFO without a writer would be waited on for ever, /dev/zero read without end: both are
+  // refused at once, as bookspin's read_text_file() refuses them, and nothing is written. (The
+  // timeout only turns a hang into a failure.)
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  assert.equal(npx(room, "export", "mujoco-test-box", "-o", "kit").status, 0);
+  assert.equal(spawnSync("mkfifo", [join(room, "m.csv")]).status, 0);
+  assert.equal(spawnSync("mkfifo", [join(room, "s.json")]).status, 0);
+  const cases = [
+    [["judge", "mujoco-test-box", "m.csv"], "m.csv: cannot read the motion file: is a FIFO, not a regular file"],
+    [["judge", "mujoco-test-box", "/dev/zero"], "/dev/zero: cannot read the motion file: is a device, not a regular file"],
+    [["judge", "s.json", "kit/mujoco-test-box-exact.csv"], "s.json: cannot read the scenario file: is a FIFO, not a regular file"],
+    [["export", "/dev/null.json"], "/dev/null.json: cannot read the scenario file: no such file"],
+    [["judge", "mujoco-test-box", "kit"], "kit: cannot read the motion file: is a directory"],
+  ];
+  for (const [args, said] of cases) {
+    const run = spawnSync(process.execPath, [cli, ...args, "-o", "out"], { cwd: room, encoding: "utf8", timeout: 30000 });
+    assert.equal(run.status, 2, `${args.join(" ")}: ${run.error ?? run.stderr}`);
+    assert.equal(run.stderr, `flipcheck: error: ${said}\n`);
+  }
+  assert.deepEqual(readdirSync(room).sort(), ["kit", "m.csv", "s.json"]);
+});
+
+test("an empty output folder (--out=) is bad input: exit 2, nothing written", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  for (const args of [["export", "mujoco-test-box", "--out="], ["export", "mujoco-test-box", "-o", ""]]) {
+    const run = npx(room, ...args);
+    assert.equal(run.status, 2, run.stderr);
+    assert.equal(run.stderr, `flipcheck: error: ${args.at(-1) === "" ? "-o" : "--out"}: expected a directory, got an empty name (leave it out for out/flipcheck)\n`);
+  }
+  assert.deepEqual(readdirSync(room), []);
+});
+
+test("a scenario JSON saved as UTF-16 is said to be so", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  const text = readFileSync(join(scenarios, "mujoco-test-box.json"), "utf8");
+  writeFileSync(join(room, "le.json"), Buffer.concat([Buffer.from([0xff, 0xfe]), Buffer.from(text, "utf16le")]));
+  writeFileSync(join(room, "be.json"), Buffer.from(text, "utf16le").swap16());
+  for (const file of ["le.json", "be.json"]) {
+    const run = npx(room, "export", file, "-o", "out");
+    assert.equal(run.status, 2, run.stderr);
+    assert.equal(run.stderr, `flipcheck: error: ${file}: NUL byte at line 1 (not a text file: a binary file, or text saved as UTF-16)\n`);
+  }
+  assert.deepEqual(readdirSync(room).sort(), ["be.json", "le.json"]);
+});
+
+test("a quote left open in a motion CSV is named so, as the command line names it (tests/bad_motions)", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  const file = fileURLToPath(new URL("../bad_motions/quote-left-open.csv", import.meta.url));
+  const said = readFileSync(file.replace(/\.csv$/, ".expected"), "utf8").replace("{FILE}", file);
+  const run = npx(room, "judge", "mujoco-test-box", file, "-o", "out");
+  assert.equal(run.status, 2, run.stderr);
+  assert.equal(run.stderr, `flipcheck: error: ${said}`);
+  assert.deepEqual(readdirSync(room), []);
 });

@@ -119,7 +119,7 @@ test("an object nested at any depth is refused at its key path, never a crash", 
   // saw; a cycle is nested without end.
   assert.equal(f.scenarioSha256(nested(64)), f.scenarioSha256(NAME));
   assert.equal(f.scenarioSha256(f.readScenario(JSON.stringify(nested(64)))), f.scenarioSha256(NAME));
-  assert.match(refusal(() => f.readScenario(JSON.stringify(nested(65)))), /^scenario JSON: not valid JSON: nested more than 64 deep at line 1, /);
+  assert.match(refusal(() => f.readScenario(JSON.stringify(nested(65)))), /^scenario JSON: nested more than 64 deep at line 1, column \d+$/);
   const a = `extra${".a".repeat(64)}`;
   const said = `scenario JSON: nested more than 64 deep at ${a.slice(0, 60)}… (${a.length} characters)`;
   assert.equal(refusal(() => f.judge(nested(65), {})), said);
@@ -129,9 +129,61 @@ test("an object nested at any depth is refused at its key path, never a crash", 
   const cycle = box();
   cycle.notes = { "the same": cycle };
   assert.match(refusal(() => f.exactMotion(cycle)), /^scenario JSON: nested more than 64 deep at notes\["the same"\]\.notes\["the same"\]/);
-  // The file door's words for the same depth.
+  // The file door's words for the same depth: the same words, at a line and column (deep JSON
+  // is valid JSON, which the file door once said it was not).
   const file = refusal(() => f.readScenario(`{"extra": ${"[".repeat(70)}${"]".repeat(70)}}`, "deep.json"));
-  assert.match(file, /^deep\.json: not valid JSON: nested more than 64 deep at line 1, column /);
+  assert.equal(file, "deep.json: nested more than 64 deep at line 1, column 75");
+  assert.equal(file.split(" at ")[0], rows.replace("scenario JSON", "deep.json").split(" at ")[0]);
+});
+
+test("toJSON is asked as JSON.stringify asks it, and its answer is refused at any depth, never a crash", () => {
+  // A Date is its toJSON's string (the reader ignores what it does not read).
+  assert.equal(f.scenarioSha256({ ...box(), when: new Date(0) }), f.scenarioSha256(NAME));
+  // toJSON's answer is what is read: a field given by its toJSON is the field.
+  assert.deepEqual(f.exportFiles({ ...box(), mass: { toJSON: () => 2 } }), f.exportFiles({ ...box(), mass: 2 }));
+  assert.equal(refusal(() => f.exportFiles({ ...box(), mass: { toJSON: (key) => key } })), `${NAME}: mass: expected a number, got a string`);
+  // A toJSON that returns a 200,000-deep array, or leads back to itself (each answer holding
+  // the same object again): refused at the key path where it goes past 64, not a RangeError.
+  let deep = [];
+  for (let i = 0; i < 200000; ++i) deep = [deep];
+  const said = refusal(() => f.exportFiles({ ...box(), extra: { toJSON: () => deep } }));
+  assert.match(said, /^scenario JSON: nested more than 64 deep at extra(\[0\]){18}\[… \(197 characters\)$/);
+  const loop = { toJSON: () => ({ again: loop }) };
+  assert.match(refusal(() => f.judge({ ...box(), extra: loop }, {})), /^scenario JSON: nested more than 64 deep at extra\.again\.again/);
+  const self = box();
+  self.toJSON = () => ({ ...box(), extra: self });
+  assert.match(refusal(() => f.scenarioSha256(self)), /^scenario JSON: nested more than 64 deep at extra\.extra/);
+  // A toJSON at the document that gives nothing (undefined) is JSON null, as a file of it.
+  assert.match(refusal(() => f.exactMotion({ ...box(), toJSON: () => undefined })), /^scenario JSON: holds JSON null, not a scenario/);
+});
+
+test("a cycle through a key of 10^7 characters is refused, its path measured, never built", () => {
+  const key = "k".repeat(1e7);
+  // A scenario that loops back to itself through the key: 63 times the key, then its units'
+  // first at the 65th level, a path of 6.3·10^8 characters, past the longest string V8 builds,
+  // which the check once built a level at a time ("Invalid string length"): said by its first 60
+  // bytes and its length in bytes, measured, never built.
+  const cycle = box();
+  cycle[key] = cycle;
+  const length = key.length + 62 * (1 + key.length) + ".units.time".length;
+  assert.equal(refusal(() => f.exportFiles(cycle)), `scenario JSON: nested more than 64 deep at ${"k".repeat(60)}… (${length} characters)`);
+  // The same through a field the reader ignores, every other level the key.
+  const notes = box();
+  notes.notes = { [key]: notes };
+  const through = "notes".length + 32 * (1 + key.length) + 31 * ".notes".length + ".scenario".length;
+  assert.equal(refusal(() => f.exportFiles(notes)), `scenario JSON: nested more than 64 deep at notes.${"k".repeat(54)}… (${through} characters)`);
+  // A path past 80 bytes of UTF-8 is cut by bytes, never inside a character (é is two).
+  const wide = box();
+  let at = (wide.abc = {});
+  for (let i = 1; i < 65; ++i) at = at["é"] = {};
+  assert.equal(refusal(() => f.exportFiles(wide)), `scenario JSON: nested more than 64 deep at abc${'["é"]'.repeat(9)}["… (${3 + 6 * 64} characters)`);
+});
+
+test("a scenario JSON saved as UTF-16 is said to be so, as a scene or a recording is", () => {
+  const utf16 = Buffer.concat([Buffer.from([0xff, 0xfe]), Buffer.from(carried, "utf16le")]);
+  const said = "le.json: NUL byte at line 1 (not a text file: a binary file, or text saved as UTF-16)";
+  assert.equal(refusal(() => f.readScenario(utf16.toString("utf8"), "le.json")), said);
+  assert.equal(refusal(() => f.readScenario(utf16.toString("latin1"), "le.json")), said);
 });
 
 test("a long name is cut in a message, its length said", () => {

@@ -186,7 +186,7 @@ def fuzz_scenarios(npx, env, project, tmp, source):
 
 def bad_scenario_texts(base):
     """(what, text): scenario files that are no scenario, each refused by a field, by its JSON or
-    by what it holds; a field changed is given again last (a key given twice: the last counts,
+    by what it holds (text, or bytes: a file saved as UTF-16); a field changed is given again last (a key given twice: the last counts,
     as JSON.parse and Python's json read it)."""
     good = json.dumps(base)
 
@@ -200,6 +200,9 @@ def bad_scenario_texts(base):
         ("a number", "3"),
         ("more after the value", good + " x"),
         ("nested too deep", "[" * 70 + "]" * 70),
+        ("a field nested too deep", again("extra", "[" * 70 + "]" * 70)),
+        ("saved as UTF-16", ("\ufeff" + good).encode("utf-16-le")),
+        ("saved as UTF-16, big-endian", ("\ufeff" + good).encode("utf-16-be")),
         ("no name", json.dumps({k: v for k, v in base.items() if k != "scenario"})),
         ("a name of escapes", again("scenario", r'"caf\u00e9 \ud83d\ude00"')),
         ("a name holding NUL", again("scenario", r'"a\u0000b"')),
@@ -237,7 +240,10 @@ def scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build, sou
     files = []
     for k, (_, text) in enumerate(cases):
         files.append(room / f"case{k}.json")
-        files[-1].write_text(text, encoding="utf-8")
+        if isinstance(text, bytes):
+            files[-1].write_bytes(text)
+        else:
+            files[-1].write_text(text, encoding="utf-8")
     module = sorted((build / "python").glob("bookspin*.so"))
     python = None
     if not module:
@@ -281,6 +287,11 @@ def scenario_refusals_at_every_door(npx, env, project, tmp, bookspin, build, sou
             fail(f"{what}: the command line says {cli!r}, Python {python[str(file)]!r}")
         if str(file) in api:
             want = cli.replace(str(file), "scenario JSON")
+            # Too deep: the same words, at a line and column in a file, at a key path in an
+            # object ("… nested more than 64 deep at extra[0][0]…").
+            deep = " nested more than 64 deep at "
+            if deep in want and api[str(file)].split(deep)[0] == want.split(deep)[0]:
+                want = api[str(file)]
             if api[str(file)] != want:
                 fail(f"{what}: judge() of the file's object says {api[str(file)]!r}, the command "
                      f"line {want!r}")

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -362,6 +363,105 @@ TEST(Flipcheck, TheScenarioSha256IsOfTheExportedJson) {
   const fs::path json = dir / "out" / "mujoco-test-box.json";
   EXPECT_EQ(analysis::scenario_file(scenario), test::read_file(json));
   EXPECT_EQ(analysis::scenario_sha256(scenario), output::sha256_file(json).value());
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+/// Every file under `dir` (relative path → bytes).
+std::map<std::string, std::string> files_under(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file())
+      files[fs::relative(e.path(), dir).string()] = test::read_file(e.path());
+  return files;
+}
+
+// The stop contract of an export of several scenarios (docs/outputs.md, "Signals"): a stop asked
+// at any of its polls, the first or the last, leaves every earlier file, manifests included,
+// byte for byte; never asked, every file is new and each manifest lists its scenario's files.
+// So the last poll comes before the first file is put in place: asked after (a signal then
+// replaced every file and left the manifests as they were), the stop at the last poll breaks
+// it. Every poll is tried, so no moment of the run is left to chance.
+TEST(Flipcheck, AStopAtAnyPollOfAnExportKeepsEveryEarlierFileOrMakesThemAll) {
+  test::ScratchDir dir;
+  const fs::path out = dir / "out";
+  const std::vector<scene::Scene> scenes{
+      box(), scene::parse_scene(fs::path(BOOKSPIN_SOURCE_DIR) / "scenes" / "flipcheck" /
+                                "symmetric-top.toml")};
+  const cache::Freshness force{true, false, {}};
+  make_flipcheck_exports(scenes, out, force);
+  std::map<std::string, std::string> earlier = files_under(out);
+  ASSERT_EQ(earlier.size(), 6u);  // two files and a manifest each
+  for (auto& [name, bytes] : earlier) {
+    bytes = "earlier " + name + "\n";
+    write_text(out / name, bytes);
+  }
+  int polls = 0;
+  make_flipcheck_exports(scenes, out, force, [&](std::string_view) {
+    ++polls;
+    return 0;
+  });
+  ASSERT_GE(polls, 2);
+  const std::map<std::string, std::string> made = files_under(out);
+  for (int stop_at = 1; stop_at <= polls; ++stop_at) {
+    SCOPED_TRACE("the stop asked at poll " + std::to_string(stop_at) + " of " +
+                 std::to_string(polls));
+    for (const auto& [name, bytes] : earlier) write_text(out / name, bytes);
+    int asked = 0;
+    EXPECT_THROW(
+        make_flipcheck_exports(scenes, out, force,
+                               [&](std::string_view) { return ++asked >= stop_at ? 2 : 0; }),
+        Interrupted);
+    EXPECT_EQ(files_under(out), earlier) << "an earlier file replaced by a stopped export";
+  }
+  // Not stopped: every file new, each manifest listing its scenario's two files.
+  for (const auto& [name, bytes] : earlier) write_text(out / name, bytes);
+  make_flipcheck_exports(scenes, out, force, [](std::string_view) { return 0; });
+  const std::map<std::string, std::string> remade = files_under(out);
+  ASSERT_EQ(remade.size(), earlier.size());
+  for (const auto& [name, bytes] : remade) {
+    EXPECT_NE(bytes, earlier.at(name)) << name;
+    if (name.find("manifest") == std::string::npos) {
+      EXPECT_EQ(bytes, made.at(name)) << name;
+    }
+  }
+  for (const scene::Scene& scene : scenes) {
+    const FlipcheckExportLayout layout = flipcheck_export_layout(out, scene);
+    EXPECT_EQ(output::read_manifest(layout.manifest).outputs,
+              (std::vector<std::string>{layout.json.filename().string(),
+                                        layout.csv.filename().string()}));
+  }
+}
+
+// One route per file (docs/flipcheck.md, "What a scenario may be"): the scenario JSON an export
+// wrote, exported again, writes the same two files byte for byte (what `npx flipcheck export`
+// writes of it), is up to date the second time, and takes no --set.
+TEST(Flipcheck, AScenarioJsonExportsAsItsSceneFileDoes) {
+  test::ScratchDir dir;
+  make_flipcheck_export({box(), dir / "toml", {}, {}});
+  const fs::path json = dir / "toml" / "mujoco-test-box.json";
+  for (const fs::path& spelled : {json, dir / "toml" / "again.JSON"}) {
+    SCOPED_TRACE(spelled.string());
+    if (spelled != json) fs::copy_file(json, spelled);
+    const FlipcheckExportScenario read = read_flipcheck_export_scenario(spelled, {});
+    ASSERT_TRUE(read.json.has_value());
+    EXPECT_EQ(read.name(), "mujoco-test-box");
+    const fs::path out = dir / ("from-" + spelled.filename().string());
+    EXPECT_EQ(make_flipcheck_exports({read}, out, {}).front(), cache::Outcome::made);
+    for (const char* file : {"mujoco-test-box.json", "mujoco-test-box-exact.csv"})
+      EXPECT_EQ(test::read_file(out / file), test::read_file(dir / "toml" / file)) << file;
+    EXPECT_EQ(make_flipcheck_exports({read}, out, {}).front(), cache::Outcome::up_to_date);
+  }
+  try {
+    read_flipcheck_export_scenario(json, {"body.mass=2"});
+    ADD_FAILURE() << "--set taken for a scenario JSON";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--set changes a scene file (TOML), not a scenario JSON"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 /// The `kit` line of VERSION (docs/flipcheck.md, "Versions").

@@ -472,6 +472,35 @@ def test_judge_reads_the_scenario_json_export_wrote(bookspin, tmp_path):
         bookspin.flipcheck.judge(str(tmp_path / "null.json"), t, q, w)
 
 
+def test_a_scenario_json_saved_as_utf16_or_nested_too_deep_is_said_so_as_the_command_line_says(
+        bookspin, tmp_path):
+    """A scenario JSON saved as UTF-16 is "saved as UTF-16" (as a scene or a recording is, not
+    "a control character at line 1, column 2"), and one nested past 64 levels "nested more than
+    64 deep" at its line and column (valid JSON, not "not valid JSON"): the command line's line,
+    word for word."""
+    name = "mujoco-test-box"
+    run_cli("flipcheck", "export", SCENARIO_DIR / f"{name}.toml", "-o", tmp_path / "kit")
+    text = (tmp_path / "kit" / f"{name}.json").read_text()
+    motion = tmp_path / "kit" / f"{name}-exact.csv"
+    _, arrays = bookspin.flipcheck.export(name)
+    t, q, w = arrays["t"], arrays["q"], arrays["omega_world"]
+    (tmp_path / "le.json").write_bytes(text.encode("utf-16"))  # with its byte-order mark
+    (tmp_path / "be.json").write_bytes(b"\xfe\xff" + text.encode("utf-16-be"))
+    (tmp_path / "deep.json").write_text('{"extra": ' + "[" * 70 + "]" * 70 + "}\n")
+    for file, said in (("le.json", "NUL byte at line 1 (not a text file: a binary file, or text "
+                                    "saved as UTF-16)"),
+                       ("be.json", "NUL byte at line 1 (not a text file: a binary file, or text "
+                                    "saved as UTF-16)"),
+                       ("deep.json", "nested more than 64 deep at line 1, column 75")):
+        path = str(tmp_path / file)
+        _, err = run_cli("flipcheck", "judge", path, motion, "-o", tmp_path / "out", expect=2)
+        assert cli_error_line(err) == f"{path}: {said}"
+        with pytest.raises(bookspin.Error) as raised:
+            bookspin.flipcheck.judge(path, t, q, w)
+        assert str(raised.value) == f"{path}: {said}"
+    assert not (tmp_path / "out").exists()
+
+
 def test_a_scenario_file_is_read_by_its_extension_in_any_case(bookspin, tmp_path, monkeypatch):
     """One route per file (docs/flipcheck.md, "What a scenario may be"): a scenario JSON saved as
     scen.JSON is judged as the same file named .json (not read as TOML), and a scene file saved
