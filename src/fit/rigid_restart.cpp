@@ -17,7 +17,8 @@ bool suspect_body(const Parameters& p) {
 void keep_lowest(JointFitted& fit, std::size_t starts,
                  const std::function<std::optional<JointFitted>(std::size_t)>& fit_from) {
   for (std::size_t i = 0; i < starts; ++i)
-    if (std::optional<JointFitted> again = fit_from(i); again && again->solved.cost < fit.solved.cost)
+    if (std::optional<JointFitted> again = fit_from(i);
+        again && again->solved.cost < fit.solved.cost)
       fit = std::move(*again);
 }
 

@@ -57,8 +57,8 @@ TEST(RigidRestart, ASuspectBodyIsPastTheTriangleInequalityOrANeedle) {
     p.log_ratios = {std::log(i1), std::log(i2)};
     return p;
   };
-  EXPECT_TRUE(suspect_body(body(0.3, 0.6)));   // 0.3 + 0.6 < 1
-  EXPECT_TRUE(suspect_body(body(0.05, 0.98))); // a needle
+  EXPECT_TRUE(suspect_body(body(0.3, 0.6)));    // 0.3 + 0.6 < 1
+  EXPECT_TRUE(suspect_body(body(0.05, 0.98)));  // a needle
   for (const auto& [m1, m2] : kRigidStarts) EXPECT_FALSE(suspect_body(body(m1, m2)));
 }
 
