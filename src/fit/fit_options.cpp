@@ -10,6 +10,7 @@
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
 #include "fit/fit_tables.hpp"
+#include "fit/recording.hpp"
 
 namespace bookspin::fit {
 namespace {
@@ -54,7 +55,8 @@ std::vector<std::pair<double, double>> read_ranges(const std::string& text, std:
       const std::string given = trimmed_part(parts[i]);
       const std::optional<double> value = read_number(given);
       if (!value) {
-        error = quoted_and(given, "is not a number");
+        error = beyond_doubles(given) ? quoted_and(given, "is ") + kBeyondDoubles
+                                      : quoted_and(given, "is not a number");
         return {};
       }
       ends[i] = *value;
@@ -141,7 +143,10 @@ Eigen::Vector3d parse_moments(const std::string& text, const std::string& option
   for (int i = 0; i < 3; ++i) {
     const std::optional<double> value = read_number(parts[static_cast<std::size_t>(i)]);
     if (!value)
-      throw InputError(option + ": \"" + parts[static_cast<std::size_t>(i)] + "\" is not a number");
+      throw InputError(option + ": \"" + parts[static_cast<std::size_t>(i)] + "\" is " +
+                       (beyond_doubles(parts[static_cast<std::size_t>(i)])
+                            ? std::string(kBeyondDoubles) + ": not a positive finite number"
+                            : std::string("not a number")));
     moments[i] = *value;
   }
   check_moments(moments, option);
@@ -151,8 +156,10 @@ Eigen::Vector3d parse_moments(const std::string& text, const std::string& option
 void check_moments(const Eigen::Vector3d& moments, const std::string& option) {
   for (int i = 0; i < 3; ++i)
     if (!(moments[i] > 0) || !std::isfinite(moments[i]))
-      throw InputError(option + ": \"" + shortest(moments[i]) +
-                       "\" is not a positive finite number");
+      throw InputError(
+          option + ": \"" + shortest(moments[i]) + "\" is " +
+          (std::isinf(moments[i]) ? std::string(kBeyondDoubles) + ": " : std::string()) +
+          "not a positive finite number");
   // A rigid body's principal moments obey the triangle inequality, the two smaller summing to
   // at least the largest (docs/physics.md §11: I1 + I2 - I3 = 2 ∫ z² dm ≥ 0); a flat body has
   // the equality, kept within the rounding of a typed decimal.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -14,10 +15,6 @@
 
 namespace bookspin::fit {
 namespace {
-
-/// A share of |ω| under which the flights with the candidate axes converted fit a free rigid body
-/// as a clean toss does (the flags' "no fit" bound, docs/phone-lab.md, "Flags").
-constexpr double kConvertedFitsClean = 0.05;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -75,9 +72,14 @@ int scattered_axes(const GyroRecording& recording) {
   return mask == 7 ? 0 : mask;
 }
 
+double residual_rms(const FitResult& fit) {
+  std::vector<double> rms;
+  for (const TossFit& toss : fit.tosses) rms.push_back(toss.residual_rms);
+  return rms.empty() ? 0.0 : median_of(rms);
+}
+
 std::string units_cause(const GyroRecording& recording, const FlightSearch& search,
-                        const FitSettings& settings, std::optional<double> share,
-                        const Refit& refit) {
+                        const FitSettings& settings, const FitResult* as_read, const Refit& refit) {
   if (recording.parts.size() != 1) return {};
   const int mask = scattered_axes(recording);
   if (mask == 0) return {};
@@ -99,9 +101,11 @@ std::string units_cause(const GyroRecording& recording, const FlightSearch& sear
   if (flights.flights.empty()) return {};
   FitSettings as_given = settings;
   as_given.trim_ends = false;
-  double fitted = 0.0;
+  double fitted = 0.0, fitted_rms = 0.0;
   try {
-    fitted = residual_share(scaled, refit(scaled, flights, as_given));
+    const FitResult converted = refit(scaled, flights, as_given);
+    fitted = residual_share(scaled, converted);
+    fitted_rms = residual_rms(converted);
   } catch (const InputError&) {
     return {};
   } catch (const physics::ExactHorizonError&) {
@@ -109,9 +113,31 @@ std::string units_cause(const GyroRecording& recording, const FlightSearch& sear
     // its time horizon (docs/physics.md §8): no fit in those units either.
     return {};
   }
-  // Under half the share left as read, or a clean toss's share outright: the share as read is of
-  // an |ω| the axis in °/s inflates 57-fold, so a fit as read may leave a small share of it.
-  if (share && !(fitted < *share / 2.0 || fitted < kConvertedFitsClean)) return {};
+  // Under half the residual left as read, both in rad/s as the samples were read: a share of |ω|
+  // would judge them against an |ω| the axis in °/s inflates 57-fold, and a share under a clean
+  // toss's alone is no cause, since an axis in rad/s shrunk 57 times may fit a free body about as
+  // well as read (a clean recording thinned to 50 Hz was named so).
+  // On the same flights: those found in the new units may be others (a hand's turn dropped),
+  // and the fit as read of the flights it kept is judged beside the converted fit of its own.
+  std::optional<double> share;
+  if (as_read) {
+    share = residual_share(recording, *as_read);
+    double read_rms = residual_rms(*as_read);
+    const auto same = [](const Flight& a, const Flight& b) {
+      return a.first == b.first && a.last == b.last;
+    };
+    if (!std::equal(flights.flights.begin(), flights.flights.end(), as_read->search.flights.begin(),
+                    as_read->search.flights.end(), same)) {
+      try {
+        read_rms = residual_rms(refit(recording, flights, as_given));
+      } catch (const InputError&) {
+        read_rms = std::numeric_limits<double>::infinity();  // as read, those flights fit no body
+      } catch (const physics::ExactHorizonError&) {
+        read_rms = std::numeric_limits<double>::infinity();
+      }
+    }
+    if (!(fitted_rms < read_rms / 2.0)) return {};
+  }
   static const char* const kAxis[3] = {"ω_x", "ω_y", "ω_z"};
   std::string degrees, radians;
   int count = 0;

@@ -32,16 +32,19 @@ int scattered_axes(const GyroRecording& recording);
 using Refit = std::function<FitResult(const GyroRecording& recording, const FlightSearch& search,
                                       const FitSettings& settings)>;
 
-/// Mixed units (docs/phone-lab.md, "Flags", mixed units): where the fit failed (`share` empty) or
-/// every toss is flagged, and one or two axes scatter many times the others where the phone turns
-/// least (scattered_axes), the flights fitted again with those axes taken from °/s to rad/s;
-/// where that fits a free rigid body to under half the share of |ω| left as read or under 5 % of
-/// |ω| (or fits where the fit as read failed), the line naming those axes and the file; else
-/// empty. One recording
-/// only (a pooled set's parts may differ in units: each is checked alone). `refit`: the fit of
-/// the flights as given (no ends' term), throwing InputError where it fails.
+/// Mixed units (docs/phone-lab.md, "Flags", mixed units): where one or two axes scatter many
+/// times the others where the phone turns least (scattered_axes), the flights fitted again with
+/// those axes taken from °/s to rad/s; where the fit as read failed (`as_read` null) and that
+/// fits, or where it leaves under half the fit `as_read`'s residual in rad/s as read
+/// (residual_rms) and under 5 % of |ω| (a clean toss's share), the line naming those axes and the
+/// file; else empty. One recording only (a pooled set's parts may differ in units: each is
+/// checked alone). `refit`: the fit of the flights as given (no ends' term), throwing
+/// InputError where it fails.
 std::string units_cause(const GyroRecording& recording, const FlightSearch& search,
-                        const FitSettings& settings, std::optional<double> share,
-                        const Refit& refit);
+                        const FitSettings& settings, const FitResult* as_read, const Refit& refit);
+
+/// The fit's residual in rad/s as its samples were read: the median over the tosses of each
+/// one's rms residual (TossFit::residual_rms); 0 without a toss.
+double residual_rms(const FitResult& fit);
 
 }  // namespace bookspin::fit

@@ -77,11 +77,22 @@ std::vector<std::pair<int, std::string_view>> lines_of(std::string_view text) {
 
 /// A number cell: '.' or (decimal_comma) ',' as the decimal mark, scientific notation allowed;
 /// nullopt for text. NaN and infinity are returned as such (the caller names them).
-std::optional<double> parse_number(std::string_view given, bool decimal_comma) {
+std::string number_spelling(std::string_view given, bool decimal_comma) {
   std::string cell(trimmed(given));  // a quoted cell keeps its spaces: " 2 " is 2
   if (decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
   if (!cell.empty() && cell.front() == '+') cell.erase(0, 1);
-  return read_number(cell);
+  return cell;
+}
+
+std::optional<double> parse_number(std::string_view given, bool decimal_comma) {
+  return read_number(number_spelling(given, decimal_comma));
+}
+
+/// Why a cell parse_number refuses is no number: past the largest double (1e400), or not one.
+std::string not_a_number(const std::string& cell, bool decimal_comma) {
+  if (beyond_doubles(number_spelling(cell, decimal_comma)))
+    return quoted_cell(cell) + " is " + kBeyondDoubles;
+  return "not a number: " + quoted_cell(cell);
 }
 
 bool is_phyphox_gyro_header(const std::vector<std::string>& header) {
@@ -209,6 +220,31 @@ std::optional<LabelledHeader> labelled_gyro_header(const std::vector<std::string
     if (!is_omega_total(name) || !labelled.total_scale) return std::nullopt;
   }
   return labelled;
+}
+
+/// A recording's cells are numbers and its header's names one line each: a quoted cell over a
+/// line end is a quote left open, in any column, read or not (else the next line's time reads as
+/// this cell's, or the header's last name swallows the rows). Throws InputError naming the row,
+/// the column (`names`; "header" for the header row itself, `names` empty) and the line the cell
+/// closes on, each line end ("\r\n", "\n" or a lone "\r", as next_line counts them) once.
+void check_quotes_closed(const std::vector<std::string>& cells,
+                         const std::vector<std::string>& names, int number,
+                         const std::string& file) {
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const std::string& cell = cells[c];
+    int ends = 0;
+    for (std::size_t k = 0; k < cell.size(); ++k)
+      ends += cell[k] == '\n' || (cell[k] == '\r' && (k + 1 == cell.size() || cell[k + 1] != '\n'));
+    if (ends > 0)
+      throw InputError(file, number,
+                       names.empty()      ? "header"
+                       : c < names.size() ? names[c]
+                                          : "",
+                       "a quote opens a cell on this row (" +
+                           quoted_cell(cell.substr(0, cell.find_first_of("\r\n"))) +
+                           " and the line's end) and closes it on line " +
+                           std::to_string(number + ends) + ": a quote left open?");
+  }
 }
 
 bool is_plain_header(const std::vector<std::string>& header) {
@@ -489,6 +525,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
         {header_line, separator == ' ' ? whitespace_cells(comment->second)
                                        : next_csv_record(comment->second, 0, separator).cells});
   const std::vector<std::string>& header = rows.front().second;
+  check_quotes_closed(header, {}, header_line, file);
   const std::optional<LabelledHeader> labelled = labelled_gyro_header(header);
   const bool phyphox = is_phyphox_gyro_header(header);
   if (!phyphox && !is_plain_header(header) && !labelled)
@@ -519,21 +556,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   std::string previous_time;  // the previous row's time as written
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const auto& [number, cells] = rows[i];
-    // A recording's cells are numbers: a quoted cell over a line end is a quote left open, in
-    // any column, read or not (else the next line's time reads as this cell's).
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-      const std::string& cell = cells[c];
-      int ends = 0;  // "\r\n", "\n" or a lone "\r", as next_line counts them
-      for (std::size_t k = 0; k < cell.size(); ++k)
-        ends +=
-            cell[k] == '\n' || (cell[k] == '\r' && (k + 1 == cell.size() || cell[k + 1] != '\n'));
-      if (ends > 0)
-        throw InputError(file, number, c < header.size() ? header[c] : "",
-                         "a quote opens a cell on this row (" +
-                             quoted_cell(cell.substr(0, cell.find_first_of("\r\n"))) +
-                             " and the line's end) and closes it on line " +
-                             std::to_string(number + ends) + ": a quote left open?");
-    }
+    check_quotes_closed(cells, header, number, file);
     if (static_cast<int>(cells.size()) < columns)
       throw InputError(file, number, "",
                        "a row of " + std::to_string(cells.size()) + " cells, expected " +
@@ -541,8 +564,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
     double values[5];
     for (int c = 0; c < columns; ++c) {
       const std::optional<double> value = parse_number(cells[c], decimal_comma);
-      if (!value)
-        throw InputError(file, number, header[c], "not a number: " + quoted_cell(cells[c]));
+      if (!value) throw InputError(file, number, header[c], not_a_number(cells[c], decimal_comma));
       if (!std::isfinite(*value))
         throw InputError(file, number, header[c], "not a finite number: " + quoted_cell(cells[c]));
       values[c] = c == 0 ? time_scale * *value : *value;
@@ -561,32 +583,51 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
     throw InputError(file, 0, "",
                      "a gyroscope recording of " + std::to_string(recording.t.size()) +
                          " samples; at least " + std::to_string(kMinSamples) + " are needed");
-  if (const std::string unit = time_unit_cause(recording.t); !unit.empty())
+  if (const std::string unit = time_unit_cause(recording.t, time_scale); !unit.empty())
     throw InputError(file, header_line, header[0], unit);
   return recording;
 }
 
-std::string time_unit_cause(const std::vector<double>& t) {
+bool beyond_doubles(std::string_view text) {
+  std::string_view digits = text;
+  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
+  if (digits.empty() ||
+      !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') ||
+      digits.find_first_not_of("0123456789.eE+-") != std::string_view::npos)
+    return false;
+  const std::string copy(text);
+  char* end = nullptr;
+  const double value = std::strtod(copy.c_str(), &end);
+  return end == copy.c_str() + copy.size() && std::isinf(value);
+}
+
+std::string time_unit_cause(const std::vector<double>& t, double stated) {
   if (t.size() < 2) return {};
   std::vector<double> steps;
   steps.reserve(t.size() - 1);
   for (std::size_t i = 1; i < t.size(); ++i) steps.push_back(t[i] - t[i - 1]);
   const double step = median_of(std::move(steps));
   if (!(step > kMaxSampleStep)) return {};
-  // The unit that puts the median step within a gyroscope's 0.1–100 ms.
-  std::string likely = "in another unit";
-  for (const auto& [unit, seconds] :
-       {std::pair<const char*, double>{"ms", 1e-3}, {"µs", 1e-6}, {"ns", 1e-9}})
-    if (step * seconds >= 1e-4 && step * seconds <= 0.1) {
-      likely = std::string("in ") + unit;
+  // The unit that puts the median step as written within a gyroscope's 0.1–100 ms.
+  const std::array<std::pair<const char*, double>, 3> units{
+      {{"ms", 1e-3}, {"µs", 1e-6}, {"ns", 1e-9}}};
+  const double written = step / stated;
+  const char* likely = nullptr;
+  for (const auto& [unit, seconds] : units)
+    if (written * seconds >= 1e-4 && written * seconds <= 0.1) {
+      likely = unit;
       break;
     }
-  char text[300];
+  std::string read_as;  // what the header stated, where it named a unit
+  for (const auto& [unit, seconds] : units)
+    if (stated == seconds) read_as = std::string(", read in ") + unit + " as the header names them";
+  char text[400];
   std::snprintf(text, sizeof text,
-                "the samples lie %.4g s apart (the median step), where a phone's gyroscope "
-                "samples every 1–40 ms: are the times %s? Give them in seconds, or name the "
-                "unit in the header (\"t (ms)\")",
-                step, likely.c_str());
+                "the samples lie %.4g s apart (the median step%s), where a phone's gyroscope "
+                "samples every 1–40 ms: are the times %s%s? Give them in seconds, or name %s "
+                "unit in the header (\"t (%s)\")",
+                step, read_as.c_str(), likely ? "in " : "in another unit", likely ? likely : "",
+                read_as.empty() ? "the" : "their", likely ? likely : "ms");
   return text;
 }
 
@@ -598,8 +639,15 @@ GyroRecording samples_recording(const std::string& name, std::vector<double> t,
                      std::to_string(omega.size()) + " samples of omega");
   for (std::size_t i = 0; i < t.size(); ++i) {
     const std::string index = std::string(1, '[').append(std::to_string(i)).append(1, ']');
-    if (!std::isfinite(t[i])) throw InputError(where + "t" + index + ": not a finite number");
-    if (!omega[i].allFinite()) throw InputError(where + "omega" + index + ": not a finite number");
+    // Infinity from the caller's own reading of a number past the largest double (Python's
+    // float("1e400")): said as the file door says it.
+    const auto not_finite = [&](const char* what, bool infinite) {
+      return InputError(where + what + index + ": " +
+                        (infinite ? std::string(kBeyondDoubles) + ": " : std::string()) +
+                        "not a finite number");
+    };
+    if (!std::isfinite(t[i])) throw not_finite("t", std::isinf(t[i]));
+    if (!omega[i].allFinite()) throw not_finite("omega", omega[i].array().isInf().any());
     if (i > 0 && !(t[i] > t[i - 1]))
       throw InputError(where + "t" + index + ": time does not increase");
   }

@@ -84,6 +84,16 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
 GyroRecording samples_recording(const std::string& name, std::vector<double> t,
                                 std::vector<Eigen::Vector3d> omega);
 
+/// Whether `text` spells a decimal number (an optional sign, digits, a point, an exponent) whose
+/// magnitude is past the largest double (about 1.8e308: "1e400", "-2e308"), which read_number
+/// refuses: every door words it kBeyondDoubles, not "not a number" (a recording's cell, the
+/// fit's options).
+bool beyond_doubles(std::string_view text);
+
+/// The words for a number past the largest double, said alike at every door (and as flipcheck's
+/// motion reader says it).
+inline constexpr const char* kBeyondDoubles = "beyond the largest double (about 1.8e308)";
+
 /// s: the longest median step between samples a gyroscope recording of a hand toss may have (a
 /// phone samples every 1–40 ms; 2 Hz is no recording of a flip).
 inline constexpr double kMaxSampleStep = 0.5;
@@ -91,7 +101,10 @@ inline constexpr double kMaxSampleStep = 0.5;
 /// Why times `t` (s, increasing) are no gyroscope's: their median step over kMaxSampleStep,
 /// naming the unit (ms, µs or ns) that puts it within 0.1–100 ms ("the samples lie 10.03 s
 /// apart (the median step), … are the times in ms? …"); "" where they are plausible.
-std::string time_unit_cause(const std::vector<double>& t);
+/// `stated`: the seconds in one unit of the times as written, where a header named their unit
+/// (1e-3 for "t (ms)"): the likely unit is then judged on the numbers as written (µs under a
+/// "t (ms)" header whose numbers are µs), and the message says what the header stated.
+std::string time_unit_cause(const std::vector<double>& t, double stated = 1.0);
 
 /// The PAUSE events' experiment times of a phyphox `meta/time.csv` `text`. Throws InputError.
 std::vector<double> parse_time_csv(std::string_view text, const std::string& file);

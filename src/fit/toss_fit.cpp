@@ -1,5 +1,6 @@
 // The assembly of a FitResult (docs/phone-lab.md, "The fit"): each stage a named call over the
 // unknowns (toss_parameters.hpp), the least squares and its covariances (toss_solve.hpp), the
+// joint fit (joint_fit.hpp) and its restart from rigid bodies (rigid_restart.hpp), the
 // flight ends' spread (end_spread.hpp), the half periods (half_period.hpp), the predictions'
 // calibration (prediction_calibration.hpp), the flags (toss_flags.hpp), the body's notes
 // (body_notes.hpp) and mixed units (mixed_units.hpp).
@@ -16,11 +17,14 @@
 #include "fit/end_spread.hpp"
 #include "fit/fit_stages.hpp"
 #include "fit/flight_trim.hpp"
+#include "fit/folds.hpp"
 #include "fit/half_period.hpp"
+#include "fit/joint_fit.hpp"
 #include "fit/mixed_units.hpp"
 #include "fit/pool.hpp"
 #include "fit/prediction_calibration.hpp"
 #include "fit/prediction_sigma.hpp"
+#include "fit/rigid_restart.hpp"
 #include "fit/saturation.hpp"
 #include "fit/toss_flags.hpp"
 #include "fit/toss_parameters.hpp"
@@ -56,135 +60,6 @@ std::vector<TossData> toss_data(const GyroRecording& recording, const FlightSear
     data.push_back(std::move(d));
   }
   return data;
-}
-
-BiasFreedom bias_freedom(const std::vector<RecordingPart>& parts, const std::vector<TossData>& data,
-                         const std::vector<bool>& held) {
-  BiasFreedom b;
-  const std::size_t groups = parts.size();
-  b.bound.resize(groups);
-  for (std::size_t g = 0; g < groups; ++g)
-    if (parts[g].rest.samples > 0) b.bound[g] = parts[g].rest.bound();
-  const std::vector<int> group_tosses = tosses_per_group(data, groups);
-  b.held.assign(groups, false);
-  for (std::size_t g = 0; g < groups && g < held.size(); ++g) b.held[g] = held[g];
-  b.fitted.resize(groups);
-  b.free.resize(groups);
-  for (std::size_t g = 0; g < groups; ++g) {
-    b.fitted[g] = group_tosses[g] >= 2 && !(g < held.size() && held[g]);
-    b.free[g] = b.fitted[g] && !b.bound[g];
-    b.any_bound = b.any_bound || (b.fitted[g] && b.bound[g]);
-    b.fitted_groups += b.fitted[g];
-  }
-  return b;
-}
-
-/// The joint fit of every toss from `p`'s start: grown over each toss (0.3, 0.6, then all of
-/// it), so that a rough start does not lock onto a wrong phase, the drag rates joining at the
-/// last stage; free bias corrections (no rest) held at 0 until then (freed on each flight's start
-/// they traded 2 rad/s for a wrong body), bounded ones until the body settles (a bounded solve
-/// from a body far off leaves them at the bound's wall); then any toss whose drag
-/// rate came out below 0 fitted again with it held at 0 (air cannot speed a body up,
-/// docs/phone-lab.md, "Drag": held, not bounded, since a bound that a rate meets from its start
-/// at 0 stalled Ceres's bounded steps far from the fit). Throws InputError when a stage fails.
-Solved joint_fit(const std::vector<TossData>& data, Parameters& p, const BiasFreedom& bias,
-                 const FitSettings& settings, const std::string& source,
-                 std::vector<bool>& rate_held) {
-  const bool fixed = settings.moments.has_value();
-  const physics::DragLaw law = settings.drag;
-  const auto failed = [&] {
-    const std::string cause = scale_cause(data);
-    return InputError(source + ": the fit did not converge" + (cause.empty() ? "" : ": " + cause));
-  };
-  for (double fraction : {0.3, 0.6, 1.0}) {
-    SolveOptions options;
-    options.stop = &settings.stop;
-    options.moments_fixed = fixed;
-    options.fraction = fraction;
-    options.spacing = 0.01;
-    options.drag = law;
-    options.rates_fixed = fraction < 1.0;
-    options.bias_group_held = bias.held;
-    for (std::size_t g = 0; g < bias.free.size() && fraction < 1.0; ++g)
-      options.bias_group_held[g] = bias.held[g] || bias.free[g];
-    if (!solve(data, p, options).usable) throw failed();
-    normalise(p);
-  }
-  SolveOptions full;
-  full.stop = &settings.stop;
-  full.moments_fixed = fixed;
-  full.drag = law;
-  full.bias_group_held = bias.held;
-  if (bias.any_bound) {
-    for (std::size_t g = 0; g < bias.bound.size(); ++g)
-      if (bias.bound[g])
-        for (int i = 0; i < 3; ++i)
-          p.e[g][i] = std::clamp(p.e[g][i], -(*bias.bound[g])[i], (*bias.bound[g])[i]);
-    full.bias_held = true;
-    if (!solve(data, p, full).usable) throw failed();
-    full.bias_held = false;
-    full.bias_bound = bias.bound;
-  }
-  Solved solved = solve(data, p, full);
-  if (!solved.usable) throw failed();
-  if (law != physics::DragLaw::none) {
-    full.rate_held.assign(data.size(), false);
-    bool any = false;
-    for (std::size_t k = 0; k < data.size(); ++k)
-      if (p.omega0[k][3] < 0.0) {
-        p.omega0[k][3] = 0.0;
-        full.rate_held[k] = any = true;
-      }
-    if (any) {
-      solved = solve(data, p, full);
-      if (!solved.usable) throw failed();
-    }
-    rate_held = full.rate_held;
-  }
-  return solved;
-}
-
-/// Moment ratios (I1/I3, I2/I3) a rigid body may have, the fit's other starts where the Euler
-/// estimate's start ends past the triangle inequality or at a needle: a book's, a near-square
-/// slab's, a box's.
-constexpr std::array<std::array<double, 2>, 3> kRigidStarts{
-    {{0.25, 0.8}, {0.5, 0.55}, {0.6, 0.85}}};
-
-/// I1/I3 below which a fitted body is a needle (a rod ten times longer than wide has about
-/// 0.02): where the fit ends with one, other starts are tried too.
-constexpr double kNeedle = 0.1;
-
-/// Fitted moments whose two smaller sum to less than the largest (docs/physics.md §11: no rigid
-/// body has them), or a needle's: where a fit from a poor start ends (a recording thinned to a
-/// browser's rate did, the residual four to ten times a book's).
-bool suspect_body(const Parameters& p) {
-  const Eigen::Vector3d m = p.moments();
-  return m[0] + m[1] < m[2] || m[0] < kNeedle * m[2];
-}
-
-/// A fit that ended at a suspect body (a local minimum its start led it to: a recording thinned
-/// to a browser's ~55 Hz did; docs/phone-lab.md, "The fit") fitted again from
-/// each of kRigidStarts, its axes and ω0 started as before; the lowest cost replaces `p`, `solved`
-/// and `rate_held` where it is lower. A start that does not converge, or runs past the exact
-/// motion's time horizon, is passed over.
-void refit_from_bodies(const std::vector<TossData>& data, const BiasFreedom& bias,
-                       const FitSettings& settings, const GyroRecording& recording, Parameters& p,
-                       Solved& solved, std::vector<bool>& rate_held) {
-  Parameters first = start(data, settings);  // the Euler start's axes and ω0, once
-  first.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
-  for (const auto& [m1, m2] : kRigidStarts) {
-    Parameters q = first;
-    q.log_ratios = {std::log(m1), std::log(m2)};
-    std::vector<bool> held;
-    try {
-      const Solved again = joint_fit(data, q, bias, settings, recording.source, held);
-      if (again.cost < solved.cost) p = q, solved = again, rate_held = held;
-    } catch (const InputError&) {
-      continue;
-    } catch (const physics::ExactHorizonError&) {
-      continue;  // a start whose fit runs past the motion's time horizon: passed over too
-    }
-  }
 }
 
 /// The residual ω_fitted − ω_measured of each toss at each of its samples (rad/s).
@@ -247,84 +122,6 @@ TossSigmas uncertainties(const std::vector<TossData>& data, const Parameters& p,
     if (dragged) sigmas.rate[k] = std::sqrt(variance * ck(3, 3));
   }
   return sigmas;
-}
-
-/// The bodies the predictions use, each fitted without some of the tosses: the tosses are dealt
-/// into at most five folds (toss k into fold k mod folds) and each fold's body is fitted on the
-/// tosses of the other folds, so that with up to five tosses it is the body of all the others,
-/// and with more the fits stay five, not one per toss. With --moments and one toss, the moments
-/// given (the axes are fitted with ω0 on the toss's first predict_window s, toss_values). None
-/// where a fold's fit fails: no prediction then. The same bodies give the moments' jackknife
-/// spread (widen_by_folds).
-struct Folds {
-  std::size_t count = 1;
-  std::vector<std::optional<Parameters>> body;
-};
-
-Folds fold_bodies(const std::vector<TossData>& data, const Parameters& joint,
-                  const BiasFreedom& bias, const std::vector<Eigen::Vector3d>& correction,
-                  const FitSettings& settings) {
-  Folds folds;
-  folds.count = std::max<std::size_t>(1, std::min<std::size_t>(data.size(), 5));
-  folds.body.resize(folds.count);
-  if (data.size() < 2) {
-    if (settings.moments) folds.body[0] = joint;
-    return folds;
-  }
-  for (std::size_t f = 0; f < folds.count; ++f) {
-    std::vector<TossData> rest;
-    Parameters q = joint;
-    q.omega0.clear();
-    for (std::size_t j = 0; j < data.size(); ++j)
-      if (j % folds.count != f) rest.push_back(data[j]), q.omega0.push_back(joint.omega0[j]);
-    SolveOptions options;
-    options.stop = &settings.stop;
-    options.moments_fixed = settings.moments.has_value();
-    options.drag = settings.drag;
-    options.spacing = 0.01;  // at 100 Hz whatever the rate: five fits of nearly every toss
-    options.bias_group_held = bias.held;
-    if (bias.any_bound) {
-      options.bias_held = true;
-      if (!solve(rest, q, options).usable) continue;
-      options.bias_held = false;
-      options.bias_bound = bias.bound;
-      options.bias_offset = correction;
-    }
-    if (!solve(rest, q, options).usable) continue;
-    normalise(q);
-    folds.body[f] = q;
-  }
-  return folds;
-}
-
-/// The grouped jackknife over the folds: σ² = (G − 1)/G Σ (θ_g − θ̄)², each axis's turn from the
-/// joint axes; the body's σ the larger of it and the covariance's (docs/phone-lab.md, "Error
-/// bars").
-void widen_by_folds(const Folds& folds, bool fixed, BodyEstimate& body) {
-  if (folds.count < 3 || !body.ratio_sigma || !body.axis_sigma_deg) return;
-  std::vector<Eigen::Vector3d> ratios, turns;
-  for (const std::optional<Parameters>& q : folds.body) {
-    if (!q) continue;
-    ratios.push_back(q->moments());
-    Eigen::Vector3d turn;
-    const Eigen::Matrix3d a = q->axes();
-    for (int i = 0; i < 3; ++i)
-      turn[i] = std::acos(std::min(1.0, std::abs(a.col(i).dot(body.axes.col(i))))) * 180.0 / kPi;
-    turns.push_back(turn);
-  }
-  if (ratios.size() < 3) return;
-  const double g = static_cast<double>(ratios.size());
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), spread = Eigen::Vector3d::Zero(),
-                  turn2 = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& r : ratios) mean += r / g;
-  for (std::size_t i = 0; i < ratios.size(); ++i) {
-    spread += (ratios[i] - mean).cwiseAbs2();
-    turn2 += turns[i].cwiseAbs2();
-  }
-  const double factor = (g - 1.0) / g;
-  if (!fixed) body.ratio_sigma = body.ratio_sigma->cwiseMax((factor * spread).cwiseSqrt());
-  body.ratio_sigma->z() = 0.0;
-  body.axis_sigma_deg = body.axis_sigma_deg->cwiseMax((factor * turn2).cwiseSqrt());
 }
 
 /// Toss k's prediction (TossFit::half_period_predicted, what it rests on, or why none): its fold's
@@ -475,6 +272,33 @@ void measured_omega(const GyroRecording& recording, const FitResult& fit, int to
 
 namespace {
 
+/// Where the gyroscope read its range: the fit's note, with how many samples each recording's
+/// tosses left out, and the range (FitResult::saturation_range).
+void note_saturation(const Saturation& saturation, const std::vector<RecordingPart>& parts,
+                     const std::vector<TossData>& data, FitResult& result) {
+  if (!saturation.range) return;
+  std::vector<int> in_tosses(parts.size(), 0);
+  for (const TossData& d : data) in_tosses[d.group] += d.saturated;
+  result.body.notes.push_back(saturation_note(saturation, parts, in_tosses));
+  result.saturation_range = saturation.range;
+}
+
+/// The bias in flight: each recording's rest plus its fitted correction (`p`'s, into `parts`,
+/// then zero in `p`); the samples corrected by it, so that what follows (and measured_omega)
+/// sees them as the fit did. Returns each recording's correction (rad/s).
+std::vector<Eigen::Vector3d> correct_bias(Parameters& p, std::vector<TossData>& data,
+                                          std::vector<RecordingPart>& parts) {
+  std::vector<Eigen::Vector3d> correction(parts.size());
+  for (std::size_t g = 0; g < correction.size(); ++g) {
+    correction[g] = Eigen::Vector3d(p.e[g][0], p.e[g][1], p.e[g][2]);
+    parts[g].bias_correction = correction[g];
+  }
+  for (TossData& d : data)
+    for (Eigen::Vector3d& w : d.omega) w -= correction[d.group];
+  p.e.assign(parts.size(), {0.0, 0.0, 0.0});
+  return correction;
+}
+
 /// fit_recording with the bias corrections of the recordings `held` (by part) held at zero.
 FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search,
                       const FitSettings& settings, const std::vector<bool>& held,
@@ -486,12 +310,7 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   BodyEstimate& body = result.body;
   const Saturation saturation = find_saturation(recording);
   std::vector<TossData> data = toss_data(recording, search, saturation);
-  if (saturation.range) {
-    std::vector<int> in_tosses(recording.parts.size(), 0);
-    for (const TossData& d : data) in_tosses[d.group] += d.saturated;
-    body.notes.push_back(saturation_note(saturation, recording.parts, in_tosses));
-    result.saturation_range = saturation.range;
-  }
+  note_saturation(saturation, recording.parts, data, result);
   const bool fixed = settings.moments.has_value();
   Parameters p = start(data, settings);
   p.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
@@ -502,16 +321,7 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
     refit_from_bodies(data, bias, settings, recording, p, solved, rate_held);
   // An axis far beyond any gyroscope's range beside two within it: say which, once.
   if (const std::string cause = scale_cause(data); !cause.empty()) body.notes.push_back(cause);
-  // The bias in flight: each recording's rest plus its fitted correction; the samples corrected
-  // by it, so that what follows (and measured_omega) sees them as the fit did.
-  std::vector<Eigen::Vector3d> correction(recording.parts.size());
-  for (std::size_t g = 0; g < correction.size(); ++g) {
-    correction[g] = Eigen::Vector3d(p.e[g][0], p.e[g][1], p.e[g][2]);
-    result.parts[g].bias_correction = correction[g];
-  }
-  for (TossData& d : data)
-    for (Eigen::Vector3d& w : d.omega) w -= correction[d.group];
-  p.e.assign(recording.parts.size(), {0.0, 0.0, 0.0});
+  const std::vector<Eigen::Vector3d> correction = correct_bias(p, data, result.parts);
   body.ratios = p.moments();
   body.axes = p.axes();
   body.moments_fixed = fixed;
@@ -581,8 +391,7 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
     try {
       fit = fit_with_bias_rule(recording, search, settings, settings.trim_ends ? &search : nullptr);
     } catch (const InputError& e) {
-      const std::string cause =
-          units_cause(recording, search, settings, std::nullopt, refit_as_given);
+      const std::string cause = units_cause(recording, search, settings, nullptr, refit_as_given);
       if (cause.empty()) throw;
       throw InputError(std::string(e.what()) + "; " + cause);
     }
@@ -601,13 +410,10 @@ FitResult fit_recording(const GyroRecording& recording, const FlightSearch& sear
                      ": the moments given are too far apart to fit (the smallest " + ratio +
                      " of the largest): " + e.what());
   }
-  // Every toss flagged: mixed units, where taking an axis as °/s makes them fit.
-  if (std::all_of(fit.tosses.begin(), fit.tosses.end(),
-                  [](const TossFit& t) { return t.poor_fit; })) {
-    const std::string cause = units_cause(recording, fit.search, settings,
-                                          residual_share(recording, fit), refit_as_given);
-    if (!cause.empty()) fit.body.notes.push_back(cause);
-  }
+  // Mixed units, where an axis scatters as one in °/s does and taking it as °/s explains the
+  // flights (flagged or not: a bare CSV says nothing of units).
+  const std::string cause = units_cause(recording, fit.search, settings, &fit, refit_as_given);
+  if (!cause.empty()) fit.body.notes.push_back(cause);
   return fit;
 }
 

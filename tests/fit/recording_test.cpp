@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <fstream>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -447,6 +448,127 @@ TEST(Recording, AWhitespaceSeparatedTableOfOtherColumnsIsRefusedNamingTheDialect
   // ω in a unit it does not know is not read as rad/s.
   EXPECT_NE(error_of("t (s)  ωₓ (rpm)  ωᵧ (rpm)  ω_z (rpm)\n" + rows(10)).find("whitespace"),
             std::string::npos);
+}
+
+// The times' unit is judged by the median step: a recording in seconds paused and resumed (20
+// minutes, an hour) has one step that long and is no more "in another unit" than without it,
+// wherever the pause falls (the mean step would be seconds; the median is the rate's).
+TEST(Recording, APauseOfMinutesDoesNotMakeSecondsAnotherUnit) {
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> omega;
+  for (int i = 0; i < 200; ++i) t.push_back(0.01 * i), omega.emplace_back(0.1, 0.2, 0.3);
+  ASSERT_EQ(time_unit_cause(t), "");
+  for (double pause : {60.0, 1200.0, 3600.0})
+    for (std::size_t at : {std::size_t{1}, std::size_t{100}, std::size_t{199}}) {
+      std::vector<double> paused = t;
+      for (std::size_t i = at; i < paused.size(); ++i) paused[i] += pause;
+      EXPECT_EQ(time_unit_cause(paused), "") << pause << " s at " << at;
+      EXPECT_NO_THROW(samples_recording("paused", paused, omega)) << pause << " s at " << at;
+      std::string text = "t,wx,wy,wz\n";
+      for (double s : paused) text += std::to_string(s) + ",0.1,0.2,0.3\n";
+      EXPECT_NO_THROW(parse_gyro_csv(text, "p.csv", "p")) << pause << " s at " << at;
+    }
+}
+
+// A header's µ is read as micro whichever of the two characters it is: the micro sign (U+00B5)
+// or the Greek small letter mu (U+03BC) that many keyboards and fonts give for it; the same
+// samples either way, and as "us".
+TEST(Recording, AHeadersGreekMuIsMicroAsTheMicroSignIs) {
+  std::string body;
+  for (int i = 0; i < 20; ++i) body += std::to_string(10000 * i) + ",0.1,0.2,0.3\n";
+  const GyroRecording us = parse_gyro_csv("t (us),wx,wy,wz\n" + body, "u.csv", "u");
+  for (const char* unit : {"\u00b5s", "\u03bcs"}) {
+    const GyroRecording read =
+        parse_gyro_csv("t (" + std::string(unit) + "),wx,wy,wz\n" + body, "m.csv", "m");
+    EXPECT_EQ(read.t, us.t) << unit;
+    EXPECT_DOUBLE_EQ(read.t[1], 0.01) << unit;
+  }
+}
+
+// A quote left open names the line its cell closes on, whatever the file's line ends: a Windows
+// (CRLF) recording counts each "\r\n" once, as LF and a lone CR do, in a data row and the header.
+TEST(Recording, AQuoteLeftOpenNamesTheSameLineWhateverTheLineEnds) {
+  std::string lf = "\"t\",\"wx\",\"wy\",\"wz\"\n";
+  for (int i = 0; i < 12; ++i)
+    lf += "\"" + std::to_string(0.01 * i) + "\",\"1\",\"2\",\"3" + (i == 6 ? "" : "\"") + "\n";
+  const auto ends = [](const std::string& text, const std::string& end) {
+    std::string out;
+    for (char c : text) out += c == '\n' ? end : std::string(1, c);
+    return out;
+  };
+  const std::string said = error_of(lf);
+  EXPECT_EQ(said,
+            "bad.csv:8: wz: a quote opens a cell on this row (\"3\" and the line's end) and closes "
+            "it on line 9: a quote left open?");
+  EXPECT_EQ(error_of(ends(lf, "\r\n")), said);
+  EXPECT_EQ(error_of(ends(lf, "\r")), said);
+  // Two blank lines after the open quote: the cell closes two lines further on, counted once.
+  std::string spaced = lf;
+  spaced.insert(spaced.find("3\n") + 2, "\n\n");
+  const std::string further = error_of(spaced);
+  EXPECT_NE(further.find("closes it on line 11"), std::string::npos) << further;
+  EXPECT_EQ(error_of(ends(spaced, "\r\n")), further);
+}
+
+// A quote left open in the header row is named as a data row's is (not "not a gyroscope
+// recording": the header's last name ran on into the rows).
+TEST(Recording, AQuoteLeftOpenInTheHeaderIsNamedAsInARow) {
+  const std::string open = "\"t\",\"wx\",\"wy\",\"wz\n" + rows(12) + "\"0.5\",1,2,3\n";
+  const std::string said = error_of(open);
+  EXPECT_EQ(said.find("bad.csv:1: header: a quote opens a cell on this row (\"wz\" and the line's "
+                      "end) and closes it on line "),
+            0u)
+      << said;
+  EXPECT_NE(said.find("a quote left open?"), std::string::npos) << said;
+  std::string crlf;
+  for (char c : open) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_EQ(error_of(crlf), said);
+}
+
+// Times in one unit under a header naming another: the likely unit is the one that puts the
+// step within a gyroscope's, told in the header's terms (µs under "t (ms)", not ms again).
+TEST(Recording, TimesInAnotherUnitThanTheHeadersNameTheLikelyUnit) {
+  for (const auto& [header, per_second, likely] :
+       {std::tuple<const char*, double, const char*>{"t (ms)", 1e6, "µs"},
+        {"t (ms)", 1e9, "ns"},
+        {"t (us)", 1e9, "ns"},
+        {"t (s)", 1e3, "ms"}}) {
+    std::string text = std::string(header) + ",wx,wy,wz\n";
+    for (int i = 0; i < 20; ++i) text += std::to_string(0.01 * i * per_second) + ",0.1,0.2,0.3\n";
+    const std::string said = error_of(text);
+    EXPECT_NE(said.find("are the times in " + std::string(likely) + "?"), std::string::npos)
+        << header << ": " << said;
+    EXPECT_NE(said.find("(\"t (" + std::string(likely) + ")\")"), std::string::npos)
+        << header << ": " << said;
+  }
+}
+
+// A number past the largest double is said to be so, in a recording's cell (not "not a
+// number") and at the arrays' door (an infinity a float made of it), in the words the options
+// and flipcheck's motion reader use.
+TEST(Recording, ANumberBeyondTheDoublesIsSaidToBeSo) {
+  EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3) + "0.5,1,1e400,3\n" + rows(8)),
+            "bad.csv:5: wy: \"1e400\" is beyond the largest double (about 1.8e308)");
+  EXPECT_EQ(error_of("t;wx;wy;wz\n0,5;1;-2,5e308;3\n" + std::string("0,6;1;2;3\n")),
+            "bad.csv:2: wy: \"-2,5e308\" is beyond the largest double (about 1.8e308)");
+  EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3) + "0.5,1,1e-400x,3\n"),
+            "bad.csv:5: wy: not a number: \"1e-400x\"");
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> omega;
+  for (int i = 0; i < 12; ++i) t.push_back(0.01 * i), omega.emplace_back(1, 2, 3);
+  omega[4][1] = HUGE_VAL;
+  try {
+    samples_recording("arrays", t, omega);
+    ADD_FAILURE() << "an infinity was read";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(
+        e.what(),
+        "arrays: omega[4]: beyond the largest double (about 1.8e308): not a finite number");
+  }
+  EXPECT_TRUE(beyond_doubles("2e308"));
+  EXPECT_TRUE(beyond_doubles("-1e400"));
+  for (const char* text : {"1e308", "inf", "1e-400", "0x1p9999", "e400", "1e400x", ""})
+    EXPECT_FALSE(beyond_doubles(text)) << text;
 }
 
 }  // namespace

@@ -81,7 +81,8 @@ TEST(TossRanges, TextThatIsNotRangesIsOneLineNamingTheOption) {
   EXPECT_EQ(parse_error(":2"), "--tosses: \"\" is not a number");
   EXPECT_EQ(parse_error("nan:2"), "--tosses: \"nan\" is not a finite time (s)");
   EXPECT_EQ(parse_error("1:inf"), "--tosses: \"inf\" is not a finite time (s)");
-  EXPECT_EQ(parse_error("1:1e309"), "--tosses: \"1e309\" is not a number");
+  EXPECT_EQ(parse_error("1:1e309"),
+            "--tosses: \"1e309\" is beyond the largest double (about 1.8e308)");
   EXPECT_EQ(parse_error("1,5:2", "flights by hand"),
             "flights by hand: \"1\" is not START:END (a decimal comma? write 1.5:2)");
 }
@@ -160,11 +161,19 @@ TEST(FitOptions, MomentsAndDragAreJudgedAlikeNamingEachDoorsArgument) {
   EXPECT_EQ(parse_moments(" 1, 2.5 ,3e0", "--moments"), Eigen::Vector3d(1, 2.5, 3));
   EXPECT_EQ(moments_error("1,2", "--moments"), "--moments: expected I1,I2,I3");
   EXPECT_EQ(moments_error("1,a,3", "--moments"), "--moments: \"a\" is not a number");
+  // A moment past the largest double: one cause, one wording, whether the door read the text
+  // ("2e308") or was given the infinity a float made of it.
+  const std::string beyond =
+      " is beyond the largest double (about 1.8e308): not a positive finite number";
+  EXPECT_EQ(moments_error("1,1,2e308", "--moments"), "--moments: \"2e308\"" + beyond);
+  EXPECT_EQ(values_error({1, 1, HUGE_VAL}, "moments"), "moments: \"inf\"" + beyond);
   for (const auto& [text, values, cause] :
        std::initializer_list<std::tuple<const char*, Eigen::Vector3d, const char*>>{
            {"1,2,-1", {1, 2, -1}, "\"-1\" is not a positive finite number"},
            {"0,2,3", {0, 2, 3}, "\"0\" is not a positive finite number"},
-           {"1,inf,3", {1, HUGE_VAL, 3}, "\"inf\" is not a positive finite number"},
+           {"1,inf,3",
+            {1, HUGE_VAL, 3},
+            "\"inf\" is beyond the largest double (about 1.8e308): not a positive finite number"},
            {"nan,2,3", {std::nan(""), 2, 3}, "\"nan\" is not a positive finite number"}}) {
     EXPECT_EQ(moments_error(text, "--moments"), std::string("--moments: ") + cause) << text;
     EXPECT_EQ(values_error(values, "moments"), std::string("moments: ") + cause) << text;

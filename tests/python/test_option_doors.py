@@ -76,7 +76,8 @@ def test_the_table_reaches_every_cause_each_door_can_give():
     # Every refusal of the options' readers (fit_options.cpp, hand_flights) is in the table.
     for cause in ("is not a finite time (s)", "is not START:END", "is not a number",
                   "the end is not after the start", "is not none, linear or quadratic",
-                  "is not a positive finite number", "expected I1,I2,I3",
+                  "is not a positive finite number", "is beyond the largest double",
+                  "expected I1,I2,I3",
                   "no rigid body has these principal moments"):
         assert any(cause in c["cause"] for c in TABLE["cases"]), cause
 

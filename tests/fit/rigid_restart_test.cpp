@@ -1,0 +1,66 @@
+// The restart from rigid bodies keeps the lowest cost of its starts (fit/rigid_restart.hpp):
+// by a relation over every order of the starts, not one case.
+#include "fit/rigid_restart.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+namespace bookspin::fit {
+namespace {
+
+JointFitted fitted_at(double cost, double mark) {
+  JointFitted fit;
+  fit.solved.cost = cost;
+  fit.p.log_ratios = {mark, 0.0};  // which start it came from
+  return fit;
+}
+
+// Whatever the order of the starts, the fit kept is the one of the lowest cost of the suspect
+// fit and every start that converged; a start passed over (nullopt) is never kept. Keeping the
+// last start that beats the suspect fit, or the first, gives another in some order.
+TEST(RigidRestart, KeepsTheLowestCostOfItsStartsInEveryOrder) {
+  // Costs of the starts; < 0: a start passed over (it did not converge).
+  std::vector<double> costs{5.0, 3.0, 7.0, -1.0, 4.0};
+  std::sort(costs.begin(), costs.end());
+  int orders = 0;
+  do {
+    for (double suspect : {6.0, 3.5, 2.0}) {
+      JointFitted fit = fitted_at(suspect, -1.0);
+      keep_lowest(fit, costs.size(), [&](std::size_t i) -> std::optional<JointFitted> {
+        if (costs[i] < 0) return std::nullopt;
+        return fitted_at(costs[i], static_cast<double>(i));
+      });
+      const double lowest = std::min(suspect, 3.0);
+      EXPECT_EQ(fit.solved.cost, lowest) << "suspect " << suspect << ", order " << orders;
+      if (lowest < suspect) {
+        const std::size_t from = static_cast<std::size_t>(fit.p.log_ratios[0]);
+        ASSERT_LT(from, costs.size());
+        EXPECT_EQ(costs[from], lowest);  // the unknowns are the lowest start's too
+      } else {
+        EXPECT_EQ(fit.p.log_ratios[0], -1.0);  // the suspect fit stands
+      }
+    }
+    ++orders;
+  } while (std::next_permutation(costs.begin(), costs.end()));
+  EXPECT_EQ(orders, 120);
+}
+
+// A suspect body: moments no rigid body has (I1 + I2 < I3), or a needle (I1/I3 < kNeedle); a
+// book's, a slab's, a box's are not.
+TEST(RigidRestart, ASuspectBodyIsPastTheTriangleInequalityOrANeedle) {
+  const auto body = [](double i1, double i2) {
+    Parameters p;
+    p.log_ratios = {std::log(i1), std::log(i2)};
+    return p;
+  };
+  EXPECT_TRUE(suspect_body(body(0.3, 0.6)));    // 0.3 + 0.6 < 1
+  EXPECT_TRUE(suspect_body(body(0.05, 0.98)));  // a needle
+  for (const auto& [m1, m2] : kRigidStarts) EXPECT_FALSE(suspect_body(body(m1, m2)));
+}
+
+}  // namespace
+}  // namespace bookspin::fit
