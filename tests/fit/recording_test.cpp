@@ -489,8 +489,13 @@ TEST(Recording, AHeadersGreekMuIsMicroAsTheMicroSignIs) {
 // (CRLF) recording counts each "\r\n" once, as LF and a lone CR do, in a data row and the header.
 TEST(Recording, AQuoteLeftOpenNamesTheSameLineWhateverTheLineEnds) {
   std::string lf = "\"t\",\"wx\",\"wy\",\"wz\"\n";
-  for (int i = 0; i < 12; ++i)
-    lf += "\"" + std::to_string(0.01 * i) + "\",\"1\",\"2\",\"3" + (i == 6 ? "" : "\"") + "\n";
+  for (int i = 0; i < 12; ++i) {
+    lf += '"';
+    lf += std::to_string(0.01 * i);
+    lf += "\",\"1\",\"2\",\"3";
+    if (i != 6) lf += '"';
+    lf += '\n';
+  }
   const auto ends = [](const std::string& text, const std::string& end) {
     std::string out;
     for (char c : text) out += c == '\n' ? end : std::string(1, c);
