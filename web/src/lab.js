@@ -168,8 +168,12 @@ export class LabPanel {
     modalPanel($('lab'), $('labOpen'), () => this.close());
     takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
     // A toss recorded by this phone's gyroscope (gyro_recorder.js): its CSV fitted as a dropped
-    // one is, with the toss recorded before where the student asked to pool them.
-    this.recorder = new TossRecorder((file, pooled) => this.fitFiles(pooled ? [pooled, file] : [file]));
+    // one is, with the ticked recordings where the student asked to pool them.
+    this.recorder = new TossRecorder((files) => this.fitFiles(files));
+    // The lab closed (Close, Escape, Back) while recording: the recording stops and is kept.
+    new MutationObserver(() => {
+      if ($('lab').hidden) this.recorder.interrupt('the lab was closed');
+    }).observe($('lab'), { attributes: true, attributeFilter: ['hidden'] });
     // The flights by hand changed: the last recording given is fitted again with them.
     this.given = null;
     $('labFlights').addEventListener('change', () => { if (this.given) this.fitFiles(...this.given); });
@@ -224,7 +228,7 @@ export class LabPanel {
   /** Files chosen or dropped (`paths`: each one's name, or its path in a dropped folder): the
    * recordings among them (file_drop.js, recordingsOf) read as bytes, fitted (several as one
    * body), of the flights by hand in the panel's field (none: those found), shown; a
-   * folder's other files skipped and named. */
+   * folder's other files skipped and named; a promise that settles when the fit has ended. */
   fitFiles(files, paths = files.map((f) => f.webkitRelativePath || f.name)) {
     this.clear();
     this.given = [files, paths];
@@ -232,14 +236,14 @@ export class LabPanel {
     this.skipped = skipped;
     if (!recordings.length) {
       $('labError').textContent = `error: no recording among ${paths.join(', ')} (a phyphox export's Raw Data.csv or zip, or a t,wx,wy,wz CSV)`;
-      return;
+      return Promise.resolve();
     }
     $('labBusy').textContent = `fitting ${recordings.map((r) => r.path).join(', ')}…`;
     const started = performance.now();
     const drag = $('labDrag').value;
     const tosses = $('labFlights').value;
     const bytes = (k) => files[k].arrayBuffer().then((b) => new Uint8Array(b));
-    Promise.all(recordings.map((r) => Promise.all([bytes(r.index), ...r.meta.map((m) => bytes(m.index))])
+    return Promise.all(recordings.map((r) => Promise.all([bytes(r.index), ...r.meta.map((m) => bytes(m.index))])
       .then(([own, ...meta]) => ({ name: r.path, bytes: own, meta: r.meta.map((m, k) => ({ name: m.name, bytes: meta[k] })) }))))
       .then((given) => (given.length === 1 && !given[0].meta.length
         ? this.fit(given[0].name, given[0].bytes, drag, tosses)

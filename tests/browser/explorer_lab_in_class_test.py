@@ -1,0 +1,264 @@
+#!/usr/bin/env python3
+"""The lab's "Record a toss" as a class uses it (web/src/gyro_recorder.js, docs/phone-lab.md,
+"Recording in the page", "The lab in a class"): headless Chromium at a phone's size (390x844,
+touch: every button tapped through the DevTools protocol's touch events), the gyroscope fed
+through the sensor override (explorer_records_gyro_test's DevTools session), real recordings
+of ../shared/recordings-real/dvarkian-2022-05-03 fed sample by sample at their own rate (a
+failure under CI=true where that folder is absent, a skip elsewhere), in a time zone far from
+UTC (Pacific/Auckland, through Emulation.setTimezoneOverride).
+
+No toss lost:
+  - a double tap on Stop (the second 80 ms after the first) stops once: the recording is kept
+    and fitted, and 1.5 s after the fit no new recording has started, the fit shown is that
+    recording's;
+  - its file's name is the phone's local time at the Stop (not UTC), within a minute;
+  - Record then Stop at once: "record for longer", the earlier result and the list untouched;
+  - a second real recording with "fit with the ticked recordings below": the pooled fit names
+    both, in order, and each keeps its own download (the text of each fetched: its own rows);
+  - the first unticked, "Fit the ticked": the second alone; Remove takes the first out;
+  - the lab closed during a recording (Close), and Back during one: the recording stops, is
+    kept in the list unticked, the page says so, the result shown stays the one before.
+
+Usage: explorer_lab_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
+Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
+under CI=true, where that is a failure (browser.py).
+"""
+import csv
+import datetime
+import io
+import os
+import shutil
+import time
+import zoneinfo
+from pathlib import Path
+
+from browser import console_errors, fail, find_browser, missing, open_browser, require, run, test_arguments, wait_for
+from explorer_records_gyro_test import devtools, feed, feed_at_own_rate, fresh_page, state_line, tap
+
+SIZE = (390, 844)
+FOLDER = "dvarkian-2022-05-03"
+FIRST, SECOND = "12-13-01", "12-13-51"
+ZONE = "Pacific/Auckland"
+
+
+def readings(path):
+    rows = list(csv.reader(io.StringIO(path.read_text())))[1:]
+    return [float(r[0]) for r in rows], [tuple(float(c) for c in r[1:4]) for r in rows]
+
+
+def start_recording(driver, where, first):
+    """Taps Record with a first reading given; fail() unless it says it records. (A tap within
+    AFTER_STOP_MS, 600 ms, of a Stop starts nothing: the tap waits that long.)"""
+    time.sleep(0.7)
+    feed(driver, first)
+    tap(driver, "labRecord")
+    said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
+                    lambda s: s.startswith(("recording", "error")), 30)
+    if not said.startswith("recording"):
+        button = driver.execute_script("""const b = document.getElementById('labRecord');
+            return [b.textContent, b.disabled, window.explorer.labRecorderPhase(), window.taps]""")
+        fail(f"{where}: the recording did not start: {said!r}; the button {button}")
+
+
+def touch_at(driver, point):
+    """A tap at `point` through the test's own DevTools session (a fraction of a ms each)."""
+    devtools(driver).call("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [point]})
+    devtools(driver).call("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+
+
+def double_tap(driver, element_id, gap):
+    """Two taps on the element's centre, the second `gap` s after the first began."""
+    box = driver.execute_script(
+        "const e = document.getElementById(arguments[0]); e.scrollIntoView({block: 'center'});"
+        "const r = e.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2];", element_id)
+    point = {"x": box[0], "y": box[1]}
+    began = time.monotonic()
+    touch_at(driver, point)
+    time.sleep(max(0.0, gap - (time.monotonic() - began)))
+    touch_at(driver, point)
+
+
+def mark_result(driver):
+    driver.execute_script("window.explorer.before = window.explorer.labResult();")
+
+
+def result_unchanged(driver):
+    return driver.execute_script("return window.explorer.labResult() === window.explorer.before")
+
+
+def wait_fit(driver, where):
+    """The next fit shown after mark_result(): fail() on none."""
+    done = wait_for(driver, """const r = window.explorer.labResult();
+        return [r !== window.explorer.before, document.getElementById('labError').textContent,
+                window.explorer.labRecorderPhase()]""", lambda s: (s[0] or s[1]) and s[2] == "idle", 300)
+    if not done[0]:
+        fail(f"{where}: no fit: {done[1]!r}; the state {state_line(driver)!r}")
+    return driver.execute_script("return window.explorer.labResult()")
+
+
+def kept(driver):
+    return driver.execute_script("return window.explorer.labRecordings()")
+
+
+def downloads(driver):
+    """Each row of the list: [name on its row, its download's file name, the text it serves]."""
+    return driver.execute_async_script("""const done = arguments[0];
+        Promise.all([...document.querySelectorAll('#labRecordList li')].map((li) => {
+          const a = li.querySelector('a[download]');
+          return fetch(a.href).then((r) => r.text()).then((text) => [li.dataset.name, a.download, text]);
+        })).then(done);""")
+
+
+def data_rows(text):
+    return [l for l in text.splitlines() if l and not l.startswith("#")][1:]  # the header left out
+
+
+def fresh(driver, page):
+    """fresh_page, and the recordings earlier pages of this test kept forgotten."""
+    fresh_page(driver, page)
+    driver.execute_async_script("""const done = arguments[0];
+        (window.explorer.labForget ? window.explorer.labForget() : Promise.resolve()).then(() => done(true));""")
+
+
+def check_no_toss_lost(driver, page, first, second):
+    t1, w1 = first
+    t2, w2 = second
+    fresh(driver, page)
+    mark_result(driver)
+    driver.execute_script("""window.taps = []; for (const k of ['touchstart', 'touchend', 'click'])
+        document.addEventListener(k, (e) => window.taps.push([k, e.target.id, Math.round(e.timeStamp), Math.round(performance.now())]), true);""")
+    start_recording(driver, "double tap", w1[0])
+    feed_at_own_rate(driver, t1, w1)
+    stopped_at = datetime.datetime.now(zoneinfo.ZoneInfo(ZONE))
+    double_tap(driver, "labRecord", 0.08)
+    result = wait_fit(driver, "double tap")
+    time.sleep(1.5)
+    phase = driver.execute_script("return window.explorer.labRecorderPhase()")
+    listed = kept(driver)
+    if phase != "idle" or len(listed) != 1:
+        fail(f"double tap on Stop: the phase {phase!r}, {len(listed)} recordings kept ({listed}), the state "
+             f"{state_line(driver)!r}: the second tap started a recording")
+    mark_result(driver)
+    name = listed[0]["name"]
+    if result.get("recording") != name.removesuffix(".csv") or not result["tosses"]:
+        fail(f"double tap on Stop: the fit shown is of {result.get('recording')!r} with {len(result['tosses'])} "
+             f"tosses, not of the toss recorded, {name}")
+    print(f"double tap on Stop: one recording, {name}, {listed[0]['samples']} samples, fitted "
+          f"({len(result['tosses'])} tosses)")
+    # The name in the phone's local time (the page's zone, Pacific/Auckland), at the Stop.
+    stamp = name.split("-gyroscope")[0].removeprefix("toss-")[:19]
+    named = datetime.datetime.strptime(stamp, "%Y-%m-%d-%H-%M-%S").replace(tzinfo=zoneinfo.ZoneInfo(ZONE))
+    if abs((named - stopped_at).total_seconds()) > 60:
+        fail(f"the recording's name {name} is not the local time at the Stop in {ZONE} "
+             f"({stopped_at:%Y-%m-%d %H:%M:%S}): UTC was {datetime.datetime.now(datetime.timezone.utc):%H:%M:%S}")
+
+    # Record, then Stop at once: too short; the result and the list as they were.
+    start_recording(driver, "too short", w1[0])
+    feed(driver, w1[1])
+    tap(driver, "labRecord")
+    said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
+                    lambda s: "record for longer" in s, 10)
+    if "record for longer" not in said or not result_unchanged(driver) or len(kept(driver)) != 1:
+        fail(f"Record then Stop at once: the page says {said!r}, the earlier result "
+             f"{'kept' if result_unchanged(driver) else 'replaced'}, {len(kept(driver))} recordings")
+    print(f"too short: {said}")
+
+    # A second toss pooled with the ticked one.
+    tap(driver, "labRecordPool")
+    start_recording(driver, "pooled", w2[0])
+    feed_at_own_rate(driver, t2, w2)
+    tap(driver, "labRecord")
+    result = wait_fit(driver, "pooled")
+    listed = kept(driver)
+    names = [k["name"] for k in listed]
+    summary = driver.execute_script("return document.getElementById('labSummary').textContent")
+    if len(listed) != 2 or result.get("fitted") != names or f"fitted as one body: {', '.join(names)}" not in summary:
+        fail(f"pooled: the page fitted {result.get('fitted')} of the recordings {names}; its summary {summary[:300]!r}")
+    rows = downloads(driver)
+    for (row_name, file_name, text), k in zip(rows, listed):
+        if row_name != k["name"] or file_name != k["name"] or len(data_rows(text)) != k["samples"]:
+            fail(f"the download of {k['name']}: named {file_name!r} on the row of {row_name!r}, "
+                 f"{len(data_rows(text))} rows for {k['samples']} samples")
+    if rows[0][2] == rows[1][2]:
+        fail("the two recordings' downloads serve the same text")
+    print(f"pooled: {names}, each with its own download")
+
+    # The first unticked, "Fit the ticked": the second alone; then the first removed.
+    mark_result(driver)
+    driver.execute_script("document.querySelector('#labRecordList li input[type=checkbox]').scrollIntoView({block: 'center'})")
+    first_tick = driver.execute_script("""const r = document.querySelector('#labRecordList li input[type=checkbox]')
+        .getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2];""")
+    touch_at(driver, {"x": first_tick[0], "y": first_tick[1]})
+    tap(driver, "labRecordFit")
+    result = wait_fit(driver, "fit the ticked")
+    if result.get("recording") != names[1].removesuffix(".csv") or result.get("fitted") not in (None, [names[1]]):
+        fail(f"the first unticked, Fit the ticked fitted {result.get('recording')!r} ({result.get('fitted')})")
+    driver.execute_script("document.querySelector('#labRecordList li button').click()")
+    if [k["name"] for k in kept(driver)] != names[1:]:
+        fail(f"Remove of the first left {kept(driver)}")
+    print("fit the ticked, remove: as asked")
+
+    # The lab closed during a recording, then Back during one: stopped, kept unticked, said.
+    for how in ("Close", "Back"):
+        mark_result(driver)
+        before = len(kept(driver))
+        start_recording(driver, how, w1[0])
+        feed_at_own_rate(driver, t1[:150], w1[:150])
+        if how == "Close":
+            tap(driver, "labClose")
+        else:
+            driver.back()
+        wait_for(driver, "return document.getElementById('lab').hidden", bool, 10)
+        said = state_line(driver)
+        listed = kept(driver)
+        phase = driver.execute_script("return window.explorer.labRecorderPhase()")
+        if (phase != "idle" or len(listed) != before + 1 or listed[-1]["ticked"]
+                or "recording stopped: the lab was closed" not in said or listed[-1]["name"] not in said
+                or not result_unchanged(driver)):
+            fail(f"{how} during a recording: the phase {phase!r}, the list {listed}, the page says {said!r}, "
+                 f"the result {'kept' if result_unchanged(driver) else 'replaced'}")
+        print(f"{how} during a recording: {said}")
+        tap(driver, "labOpen")
+
+
+
+
+def main():
+    bookspin, source, binary = test_arguments(__doc__)
+    chromium, driver_path = find_browser()
+    require("em++", "npm")
+    folder = source.parent / "shared" / "recordings-real" / FOLDER
+    if not folder.exists():
+        folder = Path("/work/shared/recordings-real") / FOLDER
+    if not (folder / FIRST / "Raw Data.csv").exists():
+        missing(f"the real recordings {FOLDER} (../shared/recordings-real/)")
+    first = readings(folder / FIRST / "Raw Data.csv")
+    second = readings(folder / SECOND / "Raw Data.csv")
+
+    out = binary / "test-output" / "explorer-lab-in-class"
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    run(["bash", str(source / "web" / "build.sh"), str(binary)])
+    run([bookspin, "explore", str(source / "scenes" / "exact-unstable-x.toml"), "-o", str(out)])
+    page = (out / "explorer.html").resolve().as_uri()
+
+    with open_browser(chromium, driver_path, size=SIZE, exact_viewport=True) as driver:
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+            "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
+        driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
+        driver.execute_cdp_cmd("Emulation.setTimezoneOverride", {"timezoneId": ZONE})
+        # CHECKS (comma-separated names) runs only those: a planted fault's check alone.
+        chosen = [c for c in os.environ.get("CHECKS", "").split(",") if c]
+        checks = {"lost": lambda: check_no_toss_lost(driver, page, first, second)}
+        for name, check in checks.items():
+            if not chosen or name in chosen:
+                check()
+        errors = [e for e in console_errors(driver) if "favicon" not in e.get("message", "")]
+        if errors:
+            fail(f"console errors: {errors[:3]}")
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
