@@ -18,6 +18,10 @@ No toss lost:
   - the first unticked, "Fit the ticked": the second alone; Remove takes the first out;
   - the lab closed during a recording (Close), and Back during one: the recording stops, is
     kept in the list unticked, the page says so, the result shown stays the one before.
+A slow phone: the run left playing behind the lab, the same recording fed unslowed and with the
+CPU slowed 4x (Emulation.setCPUThrottlingRate): no frame of the page drawn while recording (the
+run paused), at least 80 % of the samples the unslowed feed keeps, its flights found (no
+"busy" note unslowed); a page kept busy by the test (a 60 ms task every 70 ms) named busy, not the sensor.
 
 Usage: explorer_lab_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
@@ -221,6 +225,69 @@ def check_no_toss_lost(driver, page, first, second):
         tap(driver, "labOpen")
 
 
+def record_behind_a_run(driver, page, where, t, w, throttle):
+    """A fresh page whose run plays behind the open lab, the CPU slowed `throttle` times, the
+    readings (t, w) recorded: (samples kept, frames the page drew while recording, the state
+    line, the fit or None with the error)."""
+    fresh(driver, page)
+    driver.execute_script("window.explorer.setPlaying(true);")
+    devtools(driver).call("Emulation.setCPUThrottlingRate", {"rate": throttle})
+    try:
+        mark_result(driver)
+        start_recording(driver, where, w[0])
+        frames = driver.execute_script("return window.explorer.framesDrawn()")
+        feed_at_own_rate(driver, t, w)
+        frames = driver.execute_script("return window.explorer.framesDrawn()") - frames
+        playing = driver.execute_script("return document.getElementById('play').textContent") == "Pause"
+        tap(driver, "labRecord")
+        done = wait_for(driver, """const r = window.explorer.labResult();
+            return [r !== window.explorer.before, document.getElementById('labError').textContent,
+                    window.explorer.labRecorderPhase()]""", lambda s: (s[0] or s[1]) and s[2] == "idle", 300)
+    finally:
+        devtools(driver).call("Emulation.setCPUThrottlingRate", {"rate": 1})
+    samples = kept(driver)[-1]["samples"]
+    result = driver.execute_script("return window.explorer.labResult()") if done[0] else None
+    return samples, frames, playing, state_line(driver), result, done[1]
+
+
+def check_slow_phone(driver, page, first):
+    """While recording the page does nothing else, and a 4x slowed phone keeps >= 80 % of the
+    readings the same feed keeps unslowed, and finds the flights; a busy page is named so."""
+    t1, w1 = first
+    counts = {}
+    for throttle in (1, 4):
+        where = f"CPU slowed {throttle}x, the run playing behind the lab"
+        samples, frames, playing, said, result, error = record_behind_a_run(driver, page, where, t1, w1, throttle)
+        print(f"{where}: {samples} samples of {len(t1)} fed, {frames} frames drawn while recording; {said}")
+        if frames or playing:
+            fail(f"{where}: the page drew {frames} frames while recording (playing: {playing}): the run behind "
+                 "the lab did not pause")
+        if result is None or not result["tosses"]:
+            fail(f"{where}: no flight found: {error!r}; the state {said!r}")
+        if throttle == 1 and "busy" in said:
+            fail(f"{where}: the page says {said!r}: a busy page where the page kept {samples} samples")
+        counts[throttle] = samples
+    if counts[4] < 0.8 * counts[1]:
+        fail(f"CPU slowed 4x: {counts[4]} samples kept where the same feed unslowed keeps {counts[1]} "
+             f"({counts[4] / counts[1]:.0%}, under 80 %)")
+    print(f"CPU slowed 4x: {counts[4]} of {counts[1]} samples ({counts[4] / counts[1]:.0%})")
+
+    # A page kept busy (a task of 60 ms every 70 ms, planted by the test) names itself busy, not
+    # the sensor slow nor the throw too fast.
+    fresh(driver, page)
+    start_recording(driver, "busy page", w1[0])
+    driver.execute_script("""window.busy = setInterval(() => { const t = performance.now();
+        while (performance.now() - t < 60) {} }, 70);""")
+    feed_at_own_rate(driver, t1[:300], w1[:300])
+    driver.execute_script("clearInterval(window.busy);")
+    tap(driver, "labRecord")
+    said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
+                    lambda s: "samples through" in s, 30)
+    if "the page was busy" not in said or "throw it spinning slower" in said:
+        fail(f"a busy page: the page says {said!r}, not that the page was busy")
+    print(f"busy page: {said}")
+
+
 
 
 def main():
@@ -250,7 +317,8 @@ def main():
         driver.execute_cdp_cmd("Emulation.setTimezoneOverride", {"timezoneId": ZONE})
         # CHECKS (comma-separated names) runs only those: a planted fault's check alone.
         chosen = [c for c in os.environ.get("CHECKS", "").split(",") if c]
-        checks = {"lost": lambda: check_no_toss_lost(driver, page, first, second)}
+        checks = {"lost": lambda: check_no_toss_lost(driver, page, first, second),
+                  "slow": lambda: check_slow_phone(driver, page, first)}
         for name, check in checks.items():
             if not chosen or name in chosen:
                 check()

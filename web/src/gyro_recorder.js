@@ -59,7 +59,42 @@ export function recordingCsv(samples, api) {
     PHYPHOX_HEADER,
   ];
   kept.forEach((s, k) => lines.push([t[k], s.x, s.y, s.z, Math.hypot(s.x, s.y, s.z)].map(String).join(',')));
-  return { text: lines.join('\n') + '\n', rate, samples: kept.length, step };
+  return { text: lines.join('\n') + '\n', rate, samples: kept.length, step, times: t };
+}
+
+/** The sensor's own step and what the page dropped of its readings, from the time stamps `t`
+ * (s): the sensor's step is the commonest step (to 1 ms), a step over 1.5 of it a gap where
+ * the page was too busy to take the readings between (round(step / own) - 1 of them):
+ * {own (s), dropped, gap (the longest step, s)}; own 0 for fewer than three samples. */
+export function droppedReadings(t) {
+  const counts = new Map();
+  for (let i = 1; i < t.length; ++i) {
+    const ms = Math.round((t[i] - t[i - 1]) * 1000);
+    if (ms > 0) counts.set(ms, (counts.get(ms) || 0) + 1);
+  }
+  let own = 0, most = 0;
+  for (const [ms, n] of counts) if (n > most || (n === most && ms < own)) { own = ms; most = n; }
+  own /= 1000;
+  let dropped = 0, gap = 0;
+  for (let i = 1; i < t.length; ++i) {
+    const step = t[i] - t[i - 1];
+    gap = Math.max(gap, step);
+    if (own > 0 && step > 1.5 * own) dropped += Math.round(step / own) - 1;
+  }
+  return { own, dropped, gap };
+}
+
+/** The share of the sensor's readings a page may drop before the note says it was busy. */
+export const BUSY_SHARE = 0.1;
+
+/** One line where the page was too busy to take the sensor's readings (more than BUSY_SHARE
+ * of them dropped: `csv` recordingCsv's value, with its times), '' otherwise. */
+export function busyProblem(csv) {
+  const { own, dropped, gap } = droppedReadings(csv.times);
+  if (!(own > 0) || dropped <= BUSY_SHARE * (csv.samples + dropped)) return '';
+  return `the page was busy: it took ${csv.samples} of about ${csv.samples + dropped} readings the gyroscope gave at ` +
+    `${(1 / own).toFixed(0)} Hz (gaps up to ${gap.toFixed(2)} s), not a slow sensor: close the other apps and tabs, ` +
+    'keep the phone\'s battery saver off, and record again';
 }
 
 /** One line where `samples` are too sparse for their fastest turn (fewer than
@@ -211,6 +246,9 @@ function drawTrace(canvas, samples, span = 5) {
  * double tap (80 ms apart) must not start a recording over the toss just kept. */
 export const AFTER_STOP_MS = 600;
 
+/** ms between two drawings of the live trace while recording. */
+export const TRACE_MS = 100;
+
 /** The local time `d` as a file name's stamp, YYYY-MM-DD-hh-mm-ss (the phone's own clock). */
 export function localStamp(d) {
   const p = (n) => String(n).padStart(2, '0');
@@ -225,8 +263,11 @@ export function localStamp(d) {
  * settles when the fit has ended. Stop acts once: from the Stop until the fit has ended (and
  * AFTER_STOP_MS past the Stop) a tap starts nothing, nor does a tap queued behind the fit. */
 export class TossRecorder {
-  constructor(fit) {
+  constructor(fit, onRecording = () => {}) {
     this.fit = fit;
+    /** Told true when a recording starts (asking for the sensor), false when it ends: the page
+     * then does nothing else (main.js pauses the run and draws no frame). */
+    this.onRecording = onRecording;
     this.samples = [];
     /** idle, asking (for the sensor), recording, fitting. */
     this.phase = 'idle';
@@ -258,6 +299,8 @@ export class TossRecorder {
 
   /** The button as the phase says. */
   button() {
+    const busy = this.phase === 'asking' || this.phase === 'recording';
+    if (busy !== Boolean(this.quiet)) { this.quiet = busy; this.onRecording(busy); }
     const b = $('labRecord');
     b.textContent = this.phase === 'recording' ? 'Stop' : this.phase === 'fitting' ? 'fitting…' : 'Record a toss';
     b.disabled = this.phase === 'fitting' || this.phase === 'asking';
@@ -309,12 +352,13 @@ export class TossRecorder {
       const seconds = this.seconds();
       this.say(`recording through ${api}: tap Stop, or it stops after ${seconds} s`);
       this.timer = setTimeout(() => this.finish(''), seconds * 1000);
+      // The live trace ten times a second, not every frame: the sensor's readings come first.
       const frame = () => {
         if (!this.recording) return;
         drawTrace(this.trace(true), this.samples);
-        requestAnimationFrame(frame);
+        setTimeout(frame, TRACE_MS);
       };
-      requestAnimationFrame(frame);
+      frame();
     }, (e) => {
       if (this.phase !== 'asking') return;
       this.phase = 'idle';
@@ -368,7 +412,8 @@ export class TossRecorder {
     const pool = $('labRecordPool').checked;
     const others = pool ? this.kept.filter((k) => k.ticked) : [];
     const kept = this.keep(csv, true);
-    const problem = rateProblem(this.samples, csv.step);
+    // A busy page first: its fix is another (nothing else running), not a slower throw.
+    const problem = busyProblem(csv) || rateProblem(this.samples, csv.step);
     this.say(`${csv.samples} samples through ${this.source.api}, ${csv.rate.toFixed(1)} Hz` +
       (problem ? `; warning: ${problem}` : ''), Boolean(problem));
     this.fitKept([...others, kept]);

@@ -158,7 +158,9 @@ export class LabPanel {
     };
   }
 
-  constructor(wasm, play) {
+  /** `onRecording(yes)`: told when a recording starts and ends (main.js: the page then does
+   * nothing else, so that the sensor's readings reach the recorder on a slow phone). */
+  constructor(wasm, play, onRecording = () => {}) {
     this.wasm = wasm;
     this.play = play;
     this.result = null;
@@ -169,7 +171,7 @@ export class LabPanel {
     takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
     // A toss recorded by this phone's gyroscope (gyro_recorder.js): its CSV fitted as a dropped
     // one is, with the ticked recordings where the student asked to pool them.
-    this.recorder = new TossRecorder((files) => this.fitFiles(files));
+    this.recorder = new TossRecorder((files) => this.fitFiles(files), onRecording);
     // The lab closed (Close, Escape, Back) while recording: the recording stops and is kept.
     new MutationObserver(() => {
       if ($('lab').hidden) this.recorder.interrupt('the lab was closed');
@@ -230,6 +232,10 @@ export class LabPanel {
    * body), of the flights by hand in the panel's field (none: those found), shown; a
    * folder's other files skipped and named; a promise that settles when the fit has ended. */
   fitFiles(files, paths = files.map((f) => f.webkitRelativePath || f.name)) {
+    if (this.recorder.recording) {
+      $('labError').textContent = 'error: recording: a fit waits until the recording stops (tap Stop, then fit again)';
+      return Promise.resolve();
+    }
     this.clear();
     this.given = [files, paths];
     const { recordings, skipped } = recordingsOf(paths);

@@ -35,7 +35,7 @@ function startApp(wasm, engines) {
     runs: new Runs(wasm, space, SCENES, engines),
     view: new View3D($('view'), window.BOOKSPIN_BOOK_ART || null),
     controls: new Controls(space, SCENES, engines),
-    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0,
+    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, quiet: false,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
     readout: new Readout(),
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
@@ -118,6 +118,7 @@ function startApp(wasm, engines) {
   }
 
   function frame(now) {
+    if (app.quiet) { requestAnimationFrame(frame); return; }  // the lab records: nothing else
     const t0 = performance.now();
     if (app.pacer.continue(app.runs, app.state)) {
       app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
@@ -258,7 +259,12 @@ function startApp(wasm, engines) {
   app.judge = new JudgePanel(wasm, SCENES, () => app.state.scene);
   // "Play beside the measurement": the toss chosen as a scene, and played.
   const playToss = LabPanel.playAsScene(SCENES, app.controls);
-  app.lab = new LabPanel(wasm, (scene) => { playToss(scene); setPlaying(true); });
+  // While the lab records, the page does nothing else: the run pauses and no frame is drawn,
+  // so that a slow phone's main thread takes every reading (docs/phone-lab.md).
+  app.lab = new LabPanel(wasm, (scene) => { playToss(scene); setPlaying(true); }, (recording) => {
+    if (recording) setPlaying(false);
+    app.quiet = recording;
+  });
   // A panel opened or closed (its button, Close, Escape, a link's #lab or #judge): a history
   // entry of its own, so that Back closes it again, and Forward opens it.
   let restoring = false;
