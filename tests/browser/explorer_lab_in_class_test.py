@@ -22,6 +22,8 @@ A slow phone: the run left playing behind the lab, the same recording fed unslow
 CPU slowed 4x (Emulation.setCPUThrottlingRate): no frame of the page drawn while recording (the
 run paused), at least 80 % of the samples the unslowed feed keeps, its flights found (no
 "busy" note unslowed); a page kept busy by the test (a 60 ms task every 70 ms) named busy, not the sensor.
+A fitted toss's address loaded (?scene=original-toss1): the message says its scene is not in the
+page and offers the lab, which the offer opens.
 
 Usage: explorer_lab_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
@@ -288,6 +290,22 @@ def check_slow_phone(driver, page, first):
     print(f"busy page: {said}")
 
 
+def check_fitted_toss_address(driver, page):
+    """A fitted toss's address loaded (a reload, a discarded tab, a shared link) says why its
+    scene is not in the page and offers the lab; the offer opens it."""
+    driver.get(page + "?scene=original-toss1&t=1.5")
+    if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+        fail("the page with a fitted toss's address never became ready")
+    said = driver.execute_script("return document.getElementById('message').textContent")
+    offer = driver.execute_script("const b = document.getElementById('messageLab'); return b && b.offsetWidth > 0")
+    if "scene original-toss1 is not in this page" not in said or "lab" not in said or not offer:
+        fail(f"a fitted toss's address loaded: the page says {said!r}, offers the lab: {bool(offer)}")
+    tap(driver, "messageLab")
+    if not wait_for(driver, "return !document.getElementById('lab').hidden", bool, 10):
+        fail("a fitted toss's address loaded: its offer did not open the lab")
+    print(f"a fitted toss's address loaded: {said}")
+
+
 
 
 def main():
@@ -318,7 +336,8 @@ def main():
         # CHECKS (comma-separated names) runs only those: a planted fault's check alone.
         chosen = [c for c in os.environ.get("CHECKS", "").split(",") if c]
         checks = {"lost": lambda: check_no_toss_lost(driver, page, first, second),
-                  "slow": lambda: check_slow_phone(driver, page, first)}
+                  "slow": lambda: check_slow_phone(driver, page, first),
+                  "address": lambda: check_fitted_toss_address(driver, page)}
         for name, check in checks.items():
             if not chosen or name in chosen:
                 check()

@@ -275,6 +275,20 @@ function startApp(wasm, engines) {
       address.write();
     }).observe($(id), { attributes: true, attributeFilter: ['hidden'] });
   }
+  /** Where the address names scene `name` that the page does not hold (a toss fitted in the
+   * lab, loaded again: a reload, a phone's discarded tab, a shared link, Back or Forward), the
+   * message says why and offers the lab, whose list holds the recordings it keeps. */
+  function notInPage(name) {
+    if (!name || SCENES.some((s) => s.name === name)) return;
+    const message = $('message');
+    message.textContent = `scene ${name} is not in this page: a toss fitted in the Phone-toss lab is not kept in ` +
+      'the address (a reload or a link shows the controls\' own motion); fit its recording in the lab again ';
+    const open = document.createElement('button');
+    open.id = 'messageLab';
+    open.textContent = 'Open the Phone-toss lab';
+    open.addEventListener('click', () => app.lab.open());
+    message.append(open);
+  }
   /** The lab opened from an address (a link, a reload, Back or Forward) holds no recording:
    * an address cannot carry the files, so the panel says to drop them again. */
   function labFromAddress() {
@@ -300,8 +314,7 @@ function startApp(wasm, engines) {
     draw();
     // The mutation records of the panels' changes are delivered after this task: let them pass.
     setTimeout(() => { restoring = false; }, 0);
-    if (name && !SCENES.some((s) => s.name === name))
-      $('message').textContent = `scene ${name} is not in this page: a toss fitted in the Phone-toss lab is not kept in the address; drop its recording in the lab again`;
+    notInPage(name);
   });
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
   window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
@@ -309,6 +322,7 @@ function startApp(wasm, engines) {
   app.controls.write(app.state);
   resize();
   rebuild();
+  notInPage(new URLSearchParams(location.search).get('scene') || '');
   draw();
   window.explorer.ready = true;
   requestAnimationFrame(frame);
