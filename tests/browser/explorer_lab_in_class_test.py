@@ -24,6 +24,9 @@ run paused), at least 80 % of the samples the unslowed feed keeps, its flights f
 "busy" note unslowed); a page kept busy by the test (a 60 ms task every 70 ms) named busy, not the sensor.
 A fitted toss's address loaded (?scene=original-toss1): the message says its scene is not in the
 page and offers the lab, which the offer opens.
+A screen reader: the lab's live region (aria-live polite, inside its dialog) says "recording
+through …", "fitting …", the result's first line and an error (flights by hand "2:1"), and the
+focus stays on the control it was on.
 
 Usage: explorer_lab_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
@@ -306,6 +309,43 @@ def check_fitted_toss_address(driver, page):
     print(f"a fitted toss's address loaded: {said}")
 
 
+def check_announced(driver, page, first):
+    """A live region inside the lab (aria-live, not hidden from a reader) says "recording",
+    "fitting…", the result's first line and an error, and focus stays where it was."""
+    t1, w1 = first
+    fresh(driver, page)
+    region = driver.execute_script("""const r = document.getElementById('labSpoken');
+        if (!r) return null;
+        const s = getComputedStyle(r);
+        return [r.getAttribute('aria-live'), r.closest('dialog') === document.getElementById('lab'),
+                s.display !== 'none' && s.visibility !== 'hidden' && !r.closest('[aria-hidden=true]')];""")
+    if region != ["polite", True, True]:
+        fail(f"the lab's live region: {region} (aria-live, inside the lab's dialog, not hidden from a reader)")
+    driver.execute_script("""window.said = [];
+        new MutationObserver(() => window.said.push(document.getElementById('labSpoken').textContent))
+          .observe(document.getElementById('labSpoken'), {childList: true, characterData: true, subtree: true});""")
+    mark_result(driver)
+    start_recording(driver, "announced", w1[0])
+    focused = driver.execute_script("return document.activeElement.id")
+    feed_at_own_rate(driver, t1, w1)
+    tap(driver, "labRecord")
+    wait_fit(driver, "announced")
+    # An error: flights by hand that are no range, which fit the recording again.
+    driver.execute_script("""const f = document.getElementById('labFlights'); f.value = '2:1';
+        f.dispatchEvent(new Event('change'));""")
+    wait_for(driver, "return document.getElementById('labError').textContent", bool, 60)
+    said = driver.execute_script("return window.said")
+    error = driver.execute_script("return document.getElementById('labError').textContent")
+    now = driver.execute_script("return document.activeElement.id")
+    wanted = {"recording": lambda s: s.startswith("recording through"), "fitting…": lambda s: s.startswith("fitting "),
+              "the result's first line": lambda s: s.startswith("fitted ") and "I1 : I2 : I3" in s,
+              "the error": lambda s: s == error}
+    missed = [name for name, ok in wanted.items() if not any(ok(s) for s in said)]
+    if missed or now != focused:
+        fail(f"the live region said {said}: not {missed}; focus on {focused!r} before, {now!r} after")
+    print(f"announced: {said}")
+
+
 
 
 def main():
@@ -337,7 +377,8 @@ def main():
         chosen = [c for c in os.environ.get("CHECKS", "").split(",") if c]
         checks = {"lost": lambda: check_no_toss_lost(driver, page, first, second),
                   "slow": lambda: check_slow_phone(driver, page, first),
-                  "address": lambda: check_fitted_toss_address(driver, page)}
+                  "address": lambda: check_fitted_toss_address(driver, page),
+                  "announced": lambda: check_announced(driver, page, first)}
         for name, check in checks.items():
             if not chosen or name in chosen:
                 check()

@@ -9,6 +9,8 @@ import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas } from './plots.js';
 
 const $ = (id) => document.getElementById(id);
+/** Says `text` in the lab's live region (a screen reader reads it; focus stays where it is). */
+export function announce(text) { if ($('labSpoken')) $('labSpoken').textContent = text; }
 const DEGREE = Math.PI / 180;
 
 /** Samples a turn below which the page warns before the fit: the flight finder takes ω's
@@ -325,6 +327,7 @@ export class TossRecorder {
 
   say(text, error = false) {
     $('labRecordState').textContent = text;
+    announce(text);
     $('labRecordState').classList.toggle('error', error);
   }
 

@@ -12,7 +12,7 @@ import { plusMinus, significant, wholeNumbers } from './precision.js';
 import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas, niceTicks, tickLabel } from './plots.js';
-import { TossRecorder } from './gyro_recorder.js';
+import { TossRecorder, announce } from './gyro_recorder.js';
 
 const $ = (id) => document.getElementById(id);
 /** What each toss column says (docs/outputs.md, "The fit"). */
@@ -143,6 +143,22 @@ export function drawTossChart(canvas, chart) {
   }
 }
 
+/** The result's first line as a screen reader hears it: what was fitted, the body's ratios
+ * and the outcome table's first row (its measured and predicted T/2). */
+export function spokenResult(r) {
+  const b = r.body;
+  const first = r.tosses[0];
+  let row = '';
+  if (first) {
+    const ms3 = (v) => (typeof v === 'number' ? `${v.toFixed(3)} s` : 'none');
+    const p = first.half_period_predicted, s = first.half_period_predicted_sigma;
+    row = `; toss 1: T/2 measured ${ms3(first.half_period_measured)}, ` +
+      (typeof p === 'number' && typeof s === 'number' ? `predicted ${plusMinus(p, 2 * s)} s` : typeof p === 'number' ? `predicted ${ms3(p)}` : 'not predicted');
+  }
+  return `fitted ${r.recording}: ${r.tosses.length} toss${r.tosses.length === 1 ? '' : 'es'}, I1 : I2 : I3 = ` +
+    `${plusMinus(b.I1_over_I3, b.I1_sigma)} : ${plusMinus(b.I2_over_I3, b.I2_sigma)} : 1${row}; the result is below`;
+}
+
 /** The panel over the WebAssembly module; `play(scene)` plays a toss's scene in the explorer. */
 export class LabPanel {
   /** The `play` of a page with scenes `scenes` (the page's list) and `controls`: a fitted toss
@@ -242,9 +258,11 @@ export class LabPanel {
     this.skipped = skipped;
     if (!recordings.length) {
       $('labError').textContent = `error: no recording among ${paths.join(', ')} (a phyphox export's Raw Data.csv or zip, or a t,wx,wy,wz CSV)`;
+      announce($('labError').textContent);
       return Promise.resolve();
     }
     $('labBusy').textContent = `fitting ${recordings.map((r) => r.path).join(', ')}…`;
+    announce($('labBusy').textContent);
     const started = performance.now();
     const drag = $('labDrag').value;
     const tosses = $('labFlights').value;
@@ -255,7 +273,7 @@ export class LabPanel {
         ? this.fit(given[0].name, given[0].bytes, drag, tosses)
         : this.fitMany(given, drag, tosses)))
       .then((r) => { this.show(r, performance.now() - started); })
-      .catch((e) => { $('labError').textContent = `error: ${e.message}`; })
+      .catch((e) => { $('labError').textContent = `error: ${e.message}`; announce($('labError').textContent); })
       .finally(() => { $('labBusy').textContent = ''; });
   }
 
@@ -379,6 +397,8 @@ export class LabPanel {
       list.appendChild(box);
     });
     $('labResult').hidden = false;
+    // The result's first line said: the body's ratios and the first toss's row of the table.
+    announce(spokenResult(r));
     // Charts after the layout: their size is the canvas's CSS size (drawn again when the window
     // changes size: a phone turned).
     const draw = () => r.tosses.forEach((t, k) => {
