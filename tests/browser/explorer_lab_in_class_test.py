@@ -27,6 +27,8 @@ page and offers the lab, which the offer opens.
 A screen reader: the lab's live region (aria-live polite, inside its dialog) says "recording
 through …", "fitting …", the result's first line and an error (flights by hand "2:1"), and the
 focus stays on the control it was on.
+Kept across a reload (IndexedDB): the list and each download the same after a reload; a page
+refused IndexedDB says the list is not kept across a reload.
 
 Usage: explorer_lab_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
@@ -346,6 +348,45 @@ def check_announced(driver, page, first):
     print(f"announced: {said}")
 
 
+def check_kept_across_reload(driver, page, first):
+    """The list survives a reload where the browser gives the page storage (IndexedDB), says
+    so; and where it gives none, says that it is not kept."""
+    t1, w1 = first
+    fresh(driver, page)
+    driver.execute_script("for (const b of document.querySelectorAll('#labRecordList li button')) b.click();")
+    start_recording(driver, "kept", w1[0])
+    feed_at_own_rate(driver, t1[:200], w1[:200])
+    tap(driver, "labClose")  # kept, not fitted
+    before = kept(driver)
+    texts = downloads(driver)
+    note = driver.execute_script("return document.getElementById('labRecordKept').textContent")
+    if len(before) != 1 or "kept in this browser across reloads" not in note:
+        fail(f"before the reload: {before}, the note {note!r}")
+    driver.refresh()
+    if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+        fail("the reloaded page never became ready")
+    tap(driver, "labOpen")
+    after = wait_for(driver, "return window.explorer.labRecordings()", bool, 10)
+    if after != before or downloads(driver) != texts:
+        fail(f"after a reload the list is {after}, before it {before} (or its downloads differ)")
+    print(f"kept across a reload: {[k['name'] for k in after]}; {note}")
+    # A browser that gives no storage (IndexedDB refused, as a private window may): said so.
+    script = driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": """
+        Object.defineProperty(window, 'indexedDB', {get() { throw new DOMException('storage refused', 'SecurityError'); }});"""})
+    try:
+        fresh(driver, page)
+        start_recording(driver, "no storage", w1[0])
+        feed_at_own_rate(driver, t1[:200], w1[:200])
+        tap(driver, "labClose")
+        note = driver.execute_script("return document.getElementById('labRecordKept').textContent")
+        listed = kept(driver)
+        if len(listed) != 1 or not note.startswith("not kept across a reload"):
+            fail(f"no storage: the list {listed}, the note {note!r}")
+        print(f"no storage: {note}")
+    finally:
+        driver.execute_cdp_cmd("Page.removeScriptToEvaluateOnNewDocument", {"identifier": script["identifier"]})
+
+
 
 
 def main():
@@ -378,7 +419,8 @@ def main():
         checks = {"lost": lambda: check_no_toss_lost(driver, page, first, second),
                   "slow": lambda: check_slow_phone(driver, page, first),
                   "address": lambda: check_fitted_toss_address(driver, page),
-                  "announced": lambda: check_announced(driver, page, first)}
+                  "announced": lambda: check_announced(driver, page, first),
+                  "kept": lambda: check_kept_across_reload(driver, page, first)}
         for name, check in checks.items():
             if not chosen or name in chosen:
                 check()

@@ -248,6 +248,40 @@ function drawTrace(canvas, samples, span = 5) {
  * double tap (80 ms apart) must not start a recording over the toss just kept. */
 export const AFTER_STOP_MS = 600;
 
+/** The browser's own storage of the lab's recordings (IndexedDB): a promise of the store's
+ * three doors {all() → rows, put(row), remove(id)}, each a promise; rejected where the browser
+ * gives the page no storage (a private window, storage blocked, no IndexedDB). A row:
+ * {id, name, when (ISO time), samples, rate, api, text, ticked}. */
+export function keptStore(name = 'bookspin-lab') {
+  return new Promise((resolve, reject) => {
+    let request;
+    try {
+      request = indexedDB.open(name, 1);
+    } catch (e) {
+      reject(e);
+      return;
+    }
+    request.onupgradeneeded = () => request.result.createObjectStore('recordings', { keyPath: 'id' });
+    request.onerror = () => reject(request.error || new Error('IndexedDB refused'));
+    request.onblocked = () => reject(new Error('IndexedDB blocked'));
+    request.onsuccess = () => {
+      const db = request.result;
+      const go = (mode, act) => new Promise((done, failed) => {
+        const tx = db.transaction('recordings', mode);
+        const r = act(tx.objectStore('recordings'));
+        tx.oncomplete = () => done(r.result);
+        tx.onerror = () => failed(tx.error);
+        tx.onabort = () => failed(tx.error || new Error('IndexedDB aborted'));
+      });
+      resolve({
+        all: () => go('readonly', (s) => s.getAll()),
+        put: (row) => go('readwrite', (s) => s.put(row)),
+        remove: (id) => go('readwrite', (s) => s.delete(id)),
+      });
+    };
+  });
+}
+
 /** ms between two drawings of the live trace while recording. */
 export const TRACE_MS = 100;
 
@@ -281,6 +315,20 @@ export class TossRecorder {
     this.source = new GyroSource((s) => this.samples.push(s));
     this.source.onError = (line) => this.finish(line);
     this.timer = 0;
+    // The recordings of earlier visits, where the browser keeps them (IndexedDB).
+    this.store = keptStore().then((store) => store.all().then((rows) => {
+      const earlier = rows.map((r) => ({ ...r, when: new Date(r.when) })).sort((a, b) => a.id - b.id);
+      this.kept = [...earlier, ...this.kept.filter((k) => !earlier.some((e) => e.id === k.id))];
+      this.nextId = Math.max(this.nextId, ...this.kept.map((k) => k.id + 1));
+      this.storage = 'kept in this browser across reloads until you remove them (or clear the site\'s data)';
+      this.list();
+      return store;
+    })).catch((e) => {
+      this.storage = `not kept across a reload: this browser gives the page no storage (${(e && e.message) || e}); download the ones to keep`;
+      this.list();
+      return null;
+    });
+    this.storage = '';
     $('labRecord').addEventListener('click', (e) => this.tap(e));
     $('labRecordFit').addEventListener('click', () => this.fitTicked());
     document.addEventListener('visibilitychange', () => {
@@ -431,6 +479,7 @@ export class TossRecorder {
       name = `toss-${localStamp(when)}-${n}-${kind}-${Math.round(csv.rate)}Hz.csv`;
     const kept = { id: this.nextId++, name, when, samples: csv.samples, rate: csv.rate, api: this.source.api, text: csv.text, ticked };
     this.kept.push(kept);
+    this.save(kept);
     this.list();
     return kept;
   }
@@ -461,6 +510,7 @@ export class TossRecorder {
     const box = $('labRecordings');
     const list = $('labRecordList');
     box.hidden = !this.kept.length;
+    $('labRecordKept').textContent = this.storage;
     list.textContent = '';
     for (const k of this.kept) {
       if (!k.url) k.url = URL.createObjectURL(new File([k.text], k.name, { type: 'text/csv' }));
@@ -470,7 +520,7 @@ export class TossRecorder {
       const tick = document.createElement('input');
       tick.type = 'checkbox';
       tick.checked = k.ticked;
-      tick.addEventListener('change', () => { k.ticked = tick.checked; });
+      tick.addEventListener('change', () => { k.ticked = tick.checked; this.save(k); });
       label.append(tick, ` ${k.name}`);
       const about = document.createElement('span');
       about.className = 'about';
@@ -488,7 +538,17 @@ export class TossRecorder {
     }
   }
 
+  /** `k` written to the browser's storage (where it gives the page some). */
+  save(k) {
+    const row = { id: k.id, name: k.name, when: k.when.toISOString(), samples: k.samples, rate: k.rate, api: k.api, text: k.text, ticked: k.ticked };
+    this.store.then((store) => store && store.put(row)).catch((e) => {
+      this.storage = `not kept across a reload: the browser refused to store it (${(e && e.message) || e}); download the ones to keep`;
+      $('labRecordKept').textContent = this.storage;
+    });
+  }
+
   remove(k) {
+    this.store.then((store) => store && store.remove(k.id)).catch(() => {});
     this.kept = this.kept.filter((x) => x !== k);
     if (k.url) URL.revokeObjectURL(k.url);
     this.list();
