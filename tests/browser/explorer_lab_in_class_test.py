@@ -29,6 +29,8 @@ through …", "fitting …", the result's first line and an error (flights by ha
 focus stays on the control it was on.
 Kept across a reload (IndexedDB): the list and each download the same after a reload; a page
 refused IndexedDB says the list is not kept across a reload.
+The smaller ones: "stops after (s)" given 1 is held to its minimum of 2; on a landscape phone
+(844x390) Stop and the live trace are in view while recording.
 
 Usage: explorer_lab_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
@@ -387,6 +389,36 @@ def check_kept_across_reload(driver, page, first):
         driver.execute_cdp_cmd("Page.removeScriptToEvaluateOnNewDocument", {"identifier": script["identifier"]})
 
 
+def check_smaller(driver, page, first):
+    """"stops after (s)" held to its minimum of 2; on a landscape phone (844x390) the Stop button
+    and the live trace in view while recording."""
+    t1, w1 = first
+    fresh(driver, page)
+    driver.execute_script("document.getElementById('labRecordSeconds').value = '1';")
+    start_recording(driver, "stops after 1 s", w1[0])
+    said = state_line(driver)
+    field = driver.execute_script("return document.getElementById('labRecordSeconds').value")
+    if "stops after 2 s" not in said or field != "2":
+        fail(f"stops after 1 s: the page says {said!r}, the field {field!r}: not held to its minimum of 2")
+    feed_at_own_rate(driver, t1[:300], w1[:300])
+    wait_for(driver, "return window.explorer.labRecorderPhase()", lambda p: p == "idle", 60)
+    print(f"stops after 1 s: {said}")
+    driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+        "width": SIZE[1], "height": SIZE[0], "deviceScaleFactor": 1, "mobile": True})
+    try:
+        fresh(driver, page)
+        start_recording(driver, "landscape", w1[0])
+        feed_at_own_rate(driver, t1[:30], w1[:30])
+        seen = driver.execute_script("""const inside = (e) => { const r = e.getBoundingClientRect();
+            return r.top >= 0 && r.bottom <= innerHeight && r.height > 0; };
+            return [inside(document.getElementById('labRecord')), inside(document.getElementById('labRecordTrace'))];""")
+        tap(driver, "labRecord")
+        if seen != [True, True]:
+            fail(f"landscape 844x390 while recording: Stop in view {seen[0]}, the live trace in view {seen[1]}")
+        print("landscape: Stop and the live trace in view while recording")
+    finally:
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+            "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
 
 
 def main():
@@ -420,7 +452,8 @@ def main():
                   "slow": lambda: check_slow_phone(driver, page, first),
                   "address": lambda: check_fitted_toss_address(driver, page),
                   "announced": lambda: check_announced(driver, page, first),
-                  "kept": lambda: check_kept_across_reload(driver, page, first)}
+                  "kept": lambda: check_kept_across_reload(driver, page, first),
+                  "smaller": lambda: check_smaller(driver, page, first)}
         for name, check in checks.items():
             if not chosen or name in chosen:
                 check()

@@ -373,6 +373,13 @@ export class TossRecorder {
     return canvas;
   }
 
+  /** The button, the state line and the live trace `canvas` scrolled into the panel's view
+   * where any is out of it (a landscape phone: the trace was below the fold while recording). */
+  inView(canvas) {
+    const row = $('labRecordRow').getBoundingClientRect(), end = canvas.getBoundingClientRect();
+    if (row.top < 0 || end.bottom > innerHeight) $('labRecordRow').scrollIntoView({ block: 'start' });
+  }
+
   say(text, error = false) {
     $('labRecordState').textContent = text;
     announce(text);
@@ -394,7 +401,7 @@ export class TossRecorder {
     this.samples = [];
     this.phase = 'asking';
     this.button();
-    this.trace(true);
+    this.inView(this.trace(true));
     this.say('asking for the gyroscope…');
     this.source.start().then((api) => {
       if (this.phase !== 'asking') return;
