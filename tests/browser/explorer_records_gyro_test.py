@@ -11,7 +11,7 @@ there). A real recording (../shared/recordings-real/dvarkian-2022-05-03/12-13-01
 CI=true where that folder is absent, a skip elsewhere) is fed sample by sample at its own rate,
 once through the Generic Sensor API's `Gyroscope` and once through
 `DeviceMotionEvent.rotationRate` (window.explorer.recordThroughMotion), the second pooled with
-the first ("fit with the toss recorded before"). For each:
+the first ("fit with the ticked recordings below"). For each:
   - every row of the CSV the page offers for download is a reading fed, in order, in rad/s
     about the same axis (the browser rounds: Gyroscope 30.00046 for 30, rotationRate to
     0.1 deg/s), and its time is the reading's own stamp (the stamp a listener of the test's own
@@ -26,7 +26,8 @@ the first ("fit with the toss recorded before"). For each:
     browser's rate, at most about 60 Hz, at the times they arrive) explains.
 Then the limits, each as its one line in the page's state: a denied permission (Gyroscope and
 rotationRate), no gyroscope (the override's metadata {available: false}, both APIs), a tab
-hidden while recording (a second tab opened over it: document.hidden true), the page over plain
+hidden while recording (a second tab opened over it: document.hidden true; what was recorded
+kept in the list, not ticked, and said so), the page over plain
 http at the machine's network address (not a secure context; where it has one), a rate too low
 for the spin (readings fed at 5 Hz turning 20 rad/s: said as soon as the recording stops).
 Screenshots: BINARY_DIR/test-output/browser/explorer-records-gyro-{recording,fitted}-390x844.png;
@@ -364,7 +365,8 @@ def record(driver, where, t, omega, motion, shots=None, refused=None):
         fail(f"{where}: no fit: {done[1]!r}; the state {state_line(driver)!r}")
     if not done[0]:
         refused.append(done[1])
-    text, name = driver.execute_async_script("""const done = arguments[0], a = document.getElementById('labRecordSave');
+    text, name = driver.execute_async_script("""const done = arguments[0],
+        a = [...document.querySelectorAll('#labRecordList a[download]')].pop();
         fetch(a.href).then((r) => r.text()).then((text) => done([text, a.download]));""")
     return text, name, driver.execute_script("return window.explorer.labResult()")
 
@@ -531,8 +533,10 @@ def main():
         driver.close()
         driver.switch_to.window(mine)
         said = state_line(driver)
-        if not said.startswith("error: recording stopped: the tab was hidden"):
-            fail(f"hidden tab: the page says {said!r}")
+        kept = driver.execute_script("return window.explorer.labRecordings()")
+        if not said.startswith("recording stopped: the tab was hidden") or not kept or kept[-1]["ticked"] \
+                or kept[-1]["name"] not in said:
+            fail(f"hidden tab: the page says {said!r}, keeps {kept}: not the recording kept, unticked, and said so")
         print(f"hidden tab: {said}")
 
         # A rate too low for the spin: 12 readings at 5 Hz turning about 20 rad/s.

@@ -9,6 +9,8 @@ import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas } from './plots.js';
 
 const $ = (id) => document.getElementById(id);
+/** Says `text` in the lab's live region (a screen reader reads it; focus stays where it is). */
+export function announce(text) { if ($('labSpoken')) $('labSpoken').textContent = text; }
 const DEGREE = Math.PI / 180;
 
 /** Samples a turn below which the page warns before the fit: the flight finder takes ω's
@@ -59,7 +61,42 @@ export function recordingCsv(samples, api) {
     PHYPHOX_HEADER,
   ];
   kept.forEach((s, k) => lines.push([t[k], s.x, s.y, s.z, Math.hypot(s.x, s.y, s.z)].map(String).join(',')));
-  return { text: lines.join('\n') + '\n', rate, samples: kept.length, step };
+  return { text: lines.join('\n') + '\n', rate, samples: kept.length, step, times: t };
+}
+
+/** The sensor's own step and what the page dropped of its readings, from the time stamps `t`
+ * (s): the sensor's step is the commonest step (to 1 ms), a step over 1.5 of it a gap where
+ * the page was too busy to take the readings between (round(step / own) - 1 of them):
+ * {own (s), dropped, gap (the longest step, s)}; own 0 for fewer than three samples. */
+export function droppedReadings(t) {
+  const counts = new Map();
+  for (let i = 1; i < t.length; ++i) {
+    const ms = Math.round((t[i] - t[i - 1]) * 1000);
+    if (ms > 0) counts.set(ms, (counts.get(ms) || 0) + 1);
+  }
+  let own = 0, most = 0;
+  for (const [ms, n] of counts) if (n > most || (n === most && ms < own)) { own = ms; most = n; }
+  own /= 1000;
+  let dropped = 0, gap = 0;
+  for (let i = 1; i < t.length; ++i) {
+    const step = t[i] - t[i - 1];
+    gap = Math.max(gap, step);
+    if (own > 0 && step > 1.5 * own) dropped += Math.round(step / own) - 1;
+  }
+  return { own, dropped, gap };
+}
+
+/** The share of the sensor's readings a page may drop before the note says it was busy. */
+export const BUSY_SHARE = 0.1;
+
+/** One line where the page was too busy to take the sensor's readings (more than BUSY_SHARE
+ * of them dropped: `csv` recordingCsv's value, with its times), '' otherwise. */
+export function busyProblem(csv) {
+  const { own, dropped, gap } = droppedReadings(csv.times);
+  if (!(own > 0) || dropped <= BUSY_SHARE * (csv.samples + dropped)) return '';
+  return `the page was busy: it took ${csv.samples} of about ${csv.samples + dropped} readings the gyroscope gave at ` +
+    `${(1 / own).toFixed(0)} Hz (gaps up to ${gap.toFixed(2)} s), not a slow sensor: close the other apps and tabs, ` +
+    'keep the phone\'s battery saver off, and record again';
 }
 
 /** One line where `samples` are too sparse for their fastest turn (fewer than
@@ -207,23 +244,116 @@ function drawTrace(canvas, samples, span = 5) {
   line('#eee', (s) => Math.hypot(s.x, s.y, s.z));
 }
 
+/** ms after a Stop during which a tap on the button starts nothing: a nervous second tap of a
+ * double tap (80 ms apart) must not start a recording over the toss just kept. */
+export const AFTER_STOP_MS = 600;
+
+/** The browser's own storage of the lab's recordings (IndexedDB): a promise of the store's
+ * three doors {all() → rows, put(row), remove(id)}, each a promise; rejected where the browser
+ * gives the page no storage (a private window, storage blocked, no IndexedDB). A row:
+ * {id, name, when (ISO time), samples, rate, api, text, ticked}. */
+export function keptStore(name = 'bookspin-lab') {
+  return new Promise((resolve, reject) => {
+    let request;
+    try {
+      request = indexedDB.open(name, 1);
+    } catch (e) {
+      reject(e);
+      return;
+    }
+    request.onupgradeneeded = () => request.result.createObjectStore('recordings', { keyPath: 'id' });
+    request.onerror = () => reject(request.error || new Error('IndexedDB refused'));
+    request.onblocked = () => reject(new Error('IndexedDB blocked'));
+    request.onsuccess = () => {
+      const db = request.result;
+      const go = (mode, act) => new Promise((done, failed) => {
+        const tx = db.transaction('recordings', mode);
+        const r = act(tx.objectStore('recordings'));
+        tx.oncomplete = () => done(r.result);
+        tx.onerror = () => failed(tx.error);
+        tx.onabort = () => failed(tx.error || new Error('IndexedDB aborted'));
+      });
+      resolve({
+        all: () => go('readonly', (s) => s.getAll()),
+        put: (row) => go('readwrite', (s) => s.put(row)),
+        remove: (id) => go('readwrite', (s) => s.delete(id)),
+      });
+    };
+  });
+}
+
+/** ms between two drawings of the live trace while recording. */
+export const TRACE_MS = 100;
+
+/** The local time `d` as a file name's stamp, YYYY-MM-DD-hh-mm-ss (the phone's own clock). */
+export function localStamp(d) {
+  const p = (n) => String(n).padStart(2, '0');
+  return `${d.getFullYear()}-${p(d.getMonth() + 1)}-${p(d.getDate())}-${p(d.getHours())}-${p(d.getMinutes())}-${p(d.getSeconds())}`;
+}
+
 /** The "Record a toss" row of the lab: Record/Stop, the set time, the live trace, the state
- * line, the download; a finished recording goes to `fit(file, pooledWith)` (a File, and the
- * previous recording's File where the student asked to pool them, else null). */
+ * line, and the list of every recording of the page's life (#labRecordings: each one's name,
+ * local time, samples and rate, its tick for the pooled fit, its download and its remove).
+ * A finished recording goes to `fit(files)` (an array of File: the new one alone, or the
+ * ticked ones with it where the student asked to pool them), which returns a promise that
+ * settles when the fit has ended. Stop acts once: from the Stop until the fit has ended (and
+ * AFTER_STOP_MS past the Stop) a tap starts nothing, nor does a tap queued behind the fit. */
 export class TossRecorder {
-  constructor(fit) {
+  constructor(fit, onRecording = () => {}) {
     this.fit = fit;
+    /** Told true when a recording starts (asking for the sensor), false when it ends: the page
+     * then does nothing else (main.js pauses the run and draws no frame). */
+    this.onRecording = onRecording;
     this.samples = [];
-    this.recording = false;
-    this.previous = null;
-    this.last = null;
+    /** idle, asking (for the sensor), recording, fitting. */
+    this.phase = 'idle';
+    /** Taps whose time stamp is before this (ms, performance.now()'s clock) start nothing. */
+    this.readyAt = 0;
+    /** Every recording kept: {id, name, when (Date), samples, rate, api, text, ticked, url}. */
+    this.kept = [];
+    this.nextId = 1;
     this.source = new GyroSource((s) => this.samples.push(s));
     this.source.onError = (line) => this.finish(line);
     this.timer = 0;
-    $('labRecord').addEventListener('click', () => (this.recording ? this.finish('') : this.start()));
-    document.addEventListener('visibilitychange', () => {
-      if (document.hidden && this.recording) this.finish(LIMITS.hidden);
+    // The recordings of earlier visits, where the browser keeps them (IndexedDB).
+    this.store = keptStore().then((store) => store.all().then((rows) => {
+      const earlier = rows.map((r) => ({ ...r, when: new Date(r.when) })).sort((a, b) => a.id - b.id);
+      this.kept = [...earlier, ...this.kept.filter((k) => !earlier.some((e) => e.id === k.id))];
+      this.nextId = Math.max(this.nextId, ...this.kept.map((k) => k.id + 1));
+      this.storage = 'kept in this browser across reloads until you remove them (or clear the site\'s data)';
+      this.list();
+      return store;
+    })).catch((e) => {
+      this.storage = `not kept across a reload: this browser gives the page no storage (${(e && e.message) || e}); download the ones to keep`;
+      this.list();
+      return null;
     });
+    this.storage = '';
+    $('labRecord').addEventListener('click', (e) => this.tap(e));
+    $('labRecordFit').addEventListener('click', () => this.fitTicked());
+    document.addEventListener('visibilitychange', () => {
+      if (document.hidden) this.interrupt('the tab was hidden (a hidden page gets no readings)');
+    });
+  }
+
+  get recording() { return this.phase === 'recording'; }
+
+  /** A tap on Record/Stop: Stop while recording; Record only when idle and not a tap from
+   * before the last Stop settled (a double tap's second, or one queued behind the fit). */
+  tap(e) {
+    if (this.phase === 'recording') { this.finish(''); return; }
+    if (this.phase !== 'idle') return;
+    if (e && e.timeStamp < this.readyAt) return;
+    this.start();
+  }
+
+  /** The button as the phase says. */
+  button() {
+    const busy = this.phase === 'asking' || this.phase === 'recording';
+    if (busy !== Boolean(this.quiet)) { this.quiet = busy; this.onRecording(busy); }
+    const b = $('labRecord');
+    b.textContent = this.phase === 'recording' ? 'Stop' : this.phase === 'fitting' ? 'fitting…' : 'Record a toss';
+    b.disabled = this.phase === 'fitting' || this.phase === 'asking';
   }
 
   /** The live trace's canvas, made under the state line when `shown` (none before a recording
@@ -243,68 +373,191 @@ export class TossRecorder {
     return canvas;
   }
 
+  /** The button, the state line and the live trace `canvas` scrolled into the panel's view
+   * where any is out of it (a landscape phone: the trace was below the fold while recording). */
+  inView(canvas) {
+    const row = $('labRecordRow').getBoundingClientRect(), end = canvas.getBoundingClientRect();
+    if (row.top < 0 || end.bottom > innerHeight) $('labRecordRow').scrollIntoView({ block: 'start' });
+  }
+
   say(text, error = false) {
     $('labRecordState').textContent = text;
+    announce(text);
     $('labRecordState').classList.toggle('error', error);
+  }
+
+  /** The seconds after which a recording stops: the field's value within its own min and max
+   * (2 to 300 s), written back where it was outside them. */
+  seconds() {
+    const field = $('labRecordSeconds');
+    const lo = Number(field.min) || 2, hi = Number(field.max) || 300;
+    const given = Number(field.value);
+    const seconds = Number.isFinite(given) && field.value !== '' ? Math.min(hi, Math.max(lo, Math.round(given))) : 20;
+    if (String(seconds) !== field.value) field.value = String(seconds);
+    return seconds;
   }
 
   start() {
     this.samples = [];
-    this.recording = true;
-    $('labRecord').textContent = 'Stop';
-    this.trace(true);
-    $('labRecordSave').hidden = true;
+    this.phase = 'asking';
+    this.button();
+    this.inView(this.trace(true));
     this.say('asking for the gyroscope…');
     this.source.start().then((api) => {
-      if (!this.recording) return;
-      const seconds = Number($('labRecordSeconds').value) || 20;
+      if (this.phase !== 'asking') return;
+      this.phase = 'recording';
+      this.button();
+      const seconds = this.seconds();
       this.say(`recording through ${api}: tap Stop, or it stops after ${seconds} s`);
       this.timer = setTimeout(() => this.finish(''), seconds * 1000);
+      // The live trace ten times a second, not every frame: the sensor's readings come first.
       const frame = () => {
         if (!this.recording) return;
         drawTrace(this.trace(true), this.samples);
-        requestAnimationFrame(frame);
+        setTimeout(frame, TRACE_MS);
       };
-      requestAnimationFrame(frame);
+      frame();
     }, (e) => {
-      this.recording = false;
+      if (this.phase !== 'asking') return;
+      this.phase = 'idle';
       this.source.stop();
-      $('labRecord').textContent = 'Record a toss';
+      this.button();
       this.trace(false);
       this.say(`error: ${e.message}`, true);
     });
   }
 
-  /** Stops; `why` (one of LIMITS) where the recording cannot be fitted, '' for a tap or the set
-   * time: then the CSV is written, offered, checked for its rate and fitted. */
-  finish(why) {
-    if (!this.recording) return;
-    this.recording = false;
+  /** Stops the sensor: the samples so far as a CSV ({text, rate, samples, step}). */
+  stopSensor() {
+    this.phase = 'idle';
+    this.readyAt = performance.now() + AFTER_STOP_MS;
     clearTimeout(this.timer);
     this.source.stop();
-    $('labRecord').textContent = 'Record a toss';
+    this.button();
     drawTrace(this.trace(true), this.samples);
-    if (why) { this.say(`error: ${why}`, true); return; }
-    const csv = recordingCsv(this.samples, this.source.api);
+    return recordingCsv(this.samples, this.source.api);
+  }
+
+  /** A recording cut short by `why` (the lab closed, Back, the tab hidden): stopped, and what
+   * was recorded kept in the list, not ticked and not fitted, saying so. Nothing while not
+   * recording (asking for the sensor: the request is dropped). */
+  interrupt(why) {
+    if (this.phase === 'asking') { this.phase = 'idle'; this.source.stop(); this.button(); this.trace(false); return; }
+    if (!this.recording) return;
+    const csv = this.stopSensor();
     if (csv.samples < 10) {
-      this.say(`error: ${csv.samples} samples recorded, at least 10 are needed: record for longer`, true);
+      this.say(`recording stopped: ${why}; ${csv.samples} samples, too few to keep`, true);
       return;
     }
-    const stamp = new Date().toISOString().slice(0, 19).replace(/[T:]/g, '-');
-    const name = `toss-${stamp}-${this.source.api === GYROSCOPE_API ? 'gyroscope' : 'devicemotion'}-${Math.round(csv.rate)}Hz.csv`;
-    const file = new File([csv.text], name, { type: 'text/csv' });
-    this.last = { name, text: csv.text, api: this.source.api, rate: csv.rate, samples: csv.samples };
-    const save = $('labRecordSave');
-    if (save.href) URL.revokeObjectURL(save.href);
-    save.href = URL.createObjectURL(file);
-    save.download = name;
-    save.textContent = `Download ${name}`;
-    save.hidden = false;
-    const problem = rateProblem(this.samples, csv.step);
+    const kept = this.keep(csv, false);
+    this.say(`recording stopped: ${why}; its ${csv.samples} samples are kept below as ${kept.name}, ` +
+      'not fitted (tick it and tap Fit the ticked)', true);
+  }
+
+  /** Stops; `why` (one of LIMITS) where the recording cannot be fitted, '' for a tap or the set
+   * time: then the CSV is kept in the list, checked for its rate and fitted (with the ticked
+   * ones where "fit with the ticked recordings" is on). A recording too short says so and
+   * leaves the earlier result and the list as they were. */
+  finish(why) {
+    if (!this.recording) return;
+    const csv = this.stopSensor();
+    if (why) { this.say(`error: ${why}`, true); return; }
+    if (csv.samples < 10) {
+      this.say(`error: ${csv.samples} samples recorded, at least 10 are needed: record for longer ` +
+        '(the result and the recordings before it stand)', true);
+      return;
+    }
+    const pool = $('labRecordPool').checked;
+    const others = pool ? this.kept.filter((k) => k.ticked) : [];
+    const kept = this.keep(csv, true);
+    // A busy page first: its fix is another (nothing else running), not a slower throw.
+    const problem = busyProblem(csv) || rateProblem(this.samples, csv.step);
     this.say(`${csv.samples} samples through ${this.source.api}, ${csv.rate.toFixed(1)} Hz` +
       (problem ? `; warning: ${problem}` : ''), Boolean(problem));
-    const pooled = $('labRecordPool').checked ? this.previous : null;
-    this.previous = file;
-    this.fit(file, pooled);
+    this.fitKept([...others, kept]);
+  }
+
+  /** `csv` kept in the list as a new recording (`ticked` or not), its download made. */
+  keep(csv, ticked) {
+    const when = new Date();
+    const kind = this.source.api === GYROSCOPE_API ? 'gyroscope' : 'devicemotion';
+    let name = `toss-${localStamp(when)}-${kind}-${Math.round(csv.rate)}Hz.csv`;
+    for (let n = 2; this.kept.some((k) => k.name === name); ++n)
+      name = `toss-${localStamp(when)}-${n}-${kind}-${Math.round(csv.rate)}Hz.csv`;
+    const kept = { id: this.nextId++, name, when, samples: csv.samples, rate: csv.rate, api: this.source.api, text: csv.text, ticked };
+    this.kept.push(kept);
+    this.save(kept);
+    this.list();
+    return kept;
+  }
+
+  /** The recordings `which` fitted as one body (in the list's order); Record waits for it. */
+  fitKept(which) {
+    this.phase = 'fitting';
+    this.button();
+    const files = which.map((k) => new File([k.text], k.name, { type: 'text/csv' }));
+    return Promise.resolve(this.fit(files)).finally(() => {
+      this.phase = 'idle';
+      // A tap that came while the fit held the page is older than this: it starts nothing.
+      this.readyAt = Math.max(this.readyAt, performance.now());
+      this.button();
+    });
+  }
+
+  /** "Fit the ticked": the ticked recordings fitted as one body. */
+  fitTicked() {
+    if (this.phase !== 'idle') return;
+    const ticked = this.kept.filter((k) => k.ticked);
+    if (!ticked.length) { this.say('error: no recording ticked: tick the ones to fit together', true); return; }
+    this.fitKept(ticked);
+  }
+
+  /** The list drawn afresh: a row a recording, newest last. */
+  list() {
+    const box = $('labRecordings');
+    const list = $('labRecordList');
+    box.hidden = !this.kept.length;
+    $('labRecordKept').textContent = this.storage;
+    list.textContent = '';
+    for (const k of this.kept) {
+      if (!k.url) k.url = URL.createObjectURL(new File([k.text], k.name, { type: 'text/csv' }));
+      const row = document.createElement('li');
+      row.dataset.name = k.name;
+      const label = document.createElement('label');
+      const tick = document.createElement('input');
+      tick.type = 'checkbox';
+      tick.checked = k.ticked;
+      tick.addEventListener('change', () => { k.ticked = tick.checked; this.save(k); });
+      label.append(tick, ` ${k.name}`);
+      const about = document.createElement('span');
+      about.className = 'about';
+      about.textContent = `${k.when.toLocaleTimeString()}, ${k.samples} samples, ${k.rate.toFixed(1)} Hz`;
+      const save = document.createElement('a');
+      save.href = k.url;
+      save.download = k.name;
+      save.textContent = 'Download';
+      const remove = document.createElement('button');
+      remove.textContent = 'Remove';
+      remove.setAttribute('aria-label', `remove ${k.name}`);
+      remove.addEventListener('click', () => this.remove(k));
+      row.append(label, about, save, remove);
+      list.append(row);
+    }
+  }
+
+  /** `k` written to the browser's storage (where it gives the page some). */
+  save(k) {
+    const row = { id: k.id, name: k.name, when: k.when.toISOString(), samples: k.samples, rate: k.rate, api: k.api, text: k.text, ticked: k.ticked };
+    this.store.then((store) => store && store.put(row)).catch((e) => {
+      this.storage = `not kept across a reload: the browser refused to store it (${(e && e.message) || e}); download the ones to keep`;
+      $('labRecordKept').textContent = this.storage;
+    });
+  }
+
+  remove(k) {
+    this.store.then((store) => store && store.remove(k.id)).catch(() => {});
+    this.kept = this.kept.filter((x) => x !== k);
+    if (k.url) URL.revokeObjectURL(k.url);
+    this.list();
   }
 }

@@ -89,6 +89,14 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     playToss: (scene) => app.lab.play(scene),
     /** The lab's last fit shown (lab.js show: fitRecording's value), null before one. */
     labResult: () => app.lab.result,
+    /** The lab's recordings kept (gyro_recorder.js): [{name, when (ISO, UTC), samples, rate,
+     * ticked}], newest last; and the recorder's phase (idle, asking, recording, fitting). */
+    labRecordings: () => app.lab.recorder.kept.map((k) => ({
+      name: k.name, when: k.when.toISOString(), samples: k.samples, rate: k.rate, ticked: k.ticked })),
+    labRecorderPhase: () => app.lab.recorder.phase,
+    /** A promise settled once the lab's kept recordings were read from the browser's storage
+     * and every one removed (a test's fresh start). */
+    labForget: () => app.lab.recorder.store.then(() => { for (const k of [...app.lab.recorder.kept]) app.lab.recorder.remove(k); }),
     /** The lab's "Record a toss" reads DeviceMotionEvent.rotationRate where `yes`, even where
      * the browser has a Gyroscope (gyro_recorder.js): the fallback tested in Chromium. */
     recordThroughMotion: (yes) => { app.lab.recorder.source.preferMotion = Boolean(yes); },

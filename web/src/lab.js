@@ -12,7 +12,7 @@ import { plusMinus, significant, wholeNumbers } from './precision.js';
 import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas, niceTicks, tickLabel } from './plots.js';
-import { TossRecorder } from './gyro_recorder.js';
+import { TossRecorder, announce } from './gyro_recorder.js';
 
 const $ = (id) => document.getElementById(id);
 /** What each toss column says (docs/outputs.md, "The fit"). */
@@ -143,6 +143,22 @@ export function drawTossChart(canvas, chart) {
   }
 }
 
+/** The result's first line as a screen reader hears it: what was fitted, the body's ratios
+ * and the outcome table's first row (its measured and predicted T/2). */
+export function spokenResult(r) {
+  const b = r.body;
+  const first = r.tosses[0];
+  let row = '';
+  if (first) {
+    const ms3 = (v) => (typeof v === 'number' ? `${v.toFixed(3)} s` : 'none');
+    const p = first.half_period_predicted, s = first.half_period_predicted_sigma;
+    row = `; toss 1: T/2 measured ${ms3(first.half_period_measured)}, ` +
+      (typeof p === 'number' && typeof s === 'number' ? `predicted ${plusMinus(p, 2 * s)} s` : typeof p === 'number' ? `predicted ${ms3(p)}` : 'not predicted');
+  }
+  return `fitted ${r.recording}: ${r.tosses.length} toss${r.tosses.length === 1 ? '' : 'es'}, I1 : I2 : I3 = ` +
+    `${plusMinus(b.I1_over_I3, b.I1_sigma)} : ${plusMinus(b.I2_over_I3, b.I2_sigma)} : 1${row}; the result is below`;
+}
+
 /** The panel over the WebAssembly module; `play(scene)` plays a toss's scene in the explorer. */
 export class LabPanel {
   /** The `play` of a page with scenes `scenes` (the page's list) and `controls`: a fitted toss
@@ -158,7 +174,9 @@ export class LabPanel {
     };
   }
 
-  constructor(wasm, play) {
+  /** `onRecording(yes)`: told when a recording starts and ends (main.js: the page then does
+   * nothing else, so that the sensor's readings reach the recorder on a slow phone). */
+  constructor(wasm, play, onRecording = () => {}) {
     this.wasm = wasm;
     this.play = play;
     this.result = null;
@@ -168,8 +186,12 @@ export class LabPanel {
     modalPanel($('lab'), $('labOpen'), () => this.close());
     takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
     // A toss recorded by this phone's gyroscope (gyro_recorder.js): its CSV fitted as a dropped
-    // one is, with the toss recorded before where the student asked to pool them.
-    this.recorder = new TossRecorder((file, pooled) => this.fitFiles(pooled ? [pooled, file] : [file]));
+    // one is, with the ticked recordings where the student asked to pool them.
+    this.recorder = new TossRecorder((files) => this.fitFiles(files), onRecording);
+    // The lab closed (Close, Escape, Back) while recording: the recording stops and is kept.
+    new MutationObserver(() => {
+      if ($('lab').hidden) this.recorder.interrupt('the lab was closed');
+    }).observe($('lab'), { attributes: true, attributeFilter: ['hidden'] });
     // The flights by hand changed: the last recording given is fitted again with them.
     this.given = null;
     $('labFlights').addEventListener('change', () => { if (this.given) this.fitFiles(...this.given); });
@@ -224,28 +246,34 @@ export class LabPanel {
   /** Files chosen or dropped (`paths`: each one's name, or its path in a dropped folder): the
    * recordings among them (file_drop.js, recordingsOf) read as bytes, fitted (several as one
    * body), of the flights by hand in the panel's field (none: those found), shown; a
-   * folder's other files skipped and named. */
+   * folder's other files skipped and named; a promise that settles when the fit has ended. */
   fitFiles(files, paths = files.map((f) => f.webkitRelativePath || f.name)) {
+    if (this.recorder.recording) {
+      $('labError').textContent = 'error: recording: a fit waits until the recording stops (tap Stop, then fit again)';
+      return Promise.resolve();
+    }
     this.clear();
     this.given = [files, paths];
     const { recordings, skipped } = recordingsOf(paths);
     this.skipped = skipped;
     if (!recordings.length) {
       $('labError').textContent = `error: no recording among ${paths.join(', ')} (a phyphox export's Raw Data.csv or zip, or a t,wx,wy,wz CSV)`;
-      return;
+      announce($('labError').textContent);
+      return Promise.resolve();
     }
     $('labBusy').textContent = `fitting ${recordings.map((r) => r.path).join(', ')}…`;
+    announce($('labBusy').textContent);
     const started = performance.now();
     const drag = $('labDrag').value;
     const tosses = $('labFlights').value;
     const bytes = (k) => files[k].arrayBuffer().then((b) => new Uint8Array(b));
-    Promise.all(recordings.map((r) => Promise.all([bytes(r.index), ...r.meta.map((m) => bytes(m.index))])
+    return Promise.all(recordings.map((r) => Promise.all([bytes(r.index), ...r.meta.map((m) => bytes(m.index))])
       .then(([own, ...meta]) => ({ name: r.path, bytes: own, meta: r.meta.map((m, k) => ({ name: m.name, bytes: meta[k] })) }))))
       .then((given) => (given.length === 1 && !given[0].meta.length
         ? this.fit(given[0].name, given[0].bytes, drag, tosses)
         : this.fitMany(given, drag, tosses)))
       .then((r) => { this.show(r, performance.now() - started); })
-      .catch((e) => { $('labError').textContent = `error: ${e.message}`; })
+      .catch((e) => { $('labError').textContent = `error: ${e.message}`; announce($('labError').textContent); })
       .finally(() => { $('labBusy').textContent = ''; });
   }
 
@@ -369,6 +397,8 @@ export class LabPanel {
       list.appendChild(box);
     });
     $('labResult').hidden = false;
+    // The result's first line said: the body's ratios and the first toss's row of the table.
+    announce(spokenResult(r));
     // Charts after the layout: their size is the canvas's CSS size (drawn again when the window
     // changes size: a phone turned).
     const draw = () => r.tosses.forEach((t, k) => {

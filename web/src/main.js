@@ -35,7 +35,7 @@ function startApp(wasm, engines) {
     runs: new Runs(wasm, space, SCENES, engines),
     view: new View3D($('view'), window.BOOKSPIN_BOOK_ART || null),
     controls: new Controls(space, SCENES, engines),
-    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0,
+    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, quiet: false,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
     readout: new Readout(),
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
@@ -118,6 +118,7 @@ function startApp(wasm, engines) {
   }
 
   function frame(now) {
+    if (app.quiet) { requestAnimationFrame(frame); return; }  // the lab records: nothing else
     const t0 = performance.now();
     if (app.pacer.continue(app.runs, app.state)) {
       app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
@@ -258,7 +259,12 @@ function startApp(wasm, engines) {
   app.judge = new JudgePanel(wasm, SCENES, () => app.state.scene);
   // "Play beside the measurement": the toss chosen as a scene, and played.
   const playToss = LabPanel.playAsScene(SCENES, app.controls);
-  app.lab = new LabPanel(wasm, (scene) => { playToss(scene); setPlaying(true); });
+  // While the lab records, the page does nothing else: the run pauses and no frame is drawn,
+  // so that a slow phone's main thread takes every reading (docs/phone-lab.md).
+  app.lab = new LabPanel(wasm, (scene) => { playToss(scene); setPlaying(true); }, (recording) => {
+    if (recording) setPlaying(false);
+    app.quiet = recording;
+  });
   // A panel opened or closed (its button, Close, Escape, a link's #lab or #judge): a history
   // entry of its own, so that Back closes it again, and Forward opens it.
   let restoring = false;
@@ -268,6 +274,20 @@ function startApp(wasm, engines) {
       address.push();
       address.write();
     }).observe($(id), { attributes: true, attributeFilter: ['hidden'] });
+  }
+  /** Where the address names scene `name` that the page does not hold (a toss fitted in the
+   * lab, loaded again: a reload, a phone's discarded tab, a shared link, Back or Forward), the
+   * message says why and offers the lab, whose list holds the recordings it keeps. */
+  function notInPage(name) {
+    if (!name || SCENES.some((s) => s.name === name)) return;
+    const message = $('message');
+    message.textContent = `scene ${name} is not in this page: a toss fitted in the Phone-toss lab is not kept in ` +
+      'the address (a reload or a link shows the controls\' own motion); fit its recording in the lab again ';
+    const open = document.createElement('button');
+    open.id = 'messageLab';
+    open.textContent = 'Open the Phone-toss lab';
+    open.addEventListener('click', () => app.lab.open());
+    message.append(open);
   }
   /** The lab opened from an address (a link, a reload, Back or Forward) holds no recording:
    * an address cannot carry the files, so the panel says to drop them again. */
@@ -294,8 +314,7 @@ function startApp(wasm, engines) {
     draw();
     // The mutation records of the panels' changes are delivered after this task: let them pass.
     setTimeout(() => { restoring = false; }, 0);
-    if (name && !SCENES.some((s) => s.name === name))
-      $('message').textContent = `scene ${name} is not in this page: a toss fitted in the Phone-toss lab is not kept in the address; drop its recording in the lab again`;
+    notInPage(name);
   });
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
   window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
@@ -303,6 +322,7 @@ function startApp(wasm, engines) {
   app.controls.write(app.state);
   resize();
   rebuild();
+  notInPage(new URLSearchParams(location.search).get('scene') || '');
   draw();
   window.explorer.ready = true;
   requestAnimationFrame(frame);
