@@ -10,7 +10,7 @@ packages=(
   libassimp-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev libbullet-dev libode-dev
-  libceres-dev libminizip-dev dpkg-dev
+  libceres-dev libminizip-dev libutf8proc-dev dpkg-dev
   clang clang-format libclang-rt-14-dev
   chromium chromium-driver python3-selenium
   pybind11-dev python3-numpy python3-pytest python3-tqdm python3-pip python3-venv python3-setuptools
@@ -45,7 +45,8 @@ sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
 export DEBIAN_FRONTEND=noninteractive
 install_web_sources() {
-  # The explorer's fit (the Phone-toss lab) compiles Ceres and minizip with zlib for
+  # The explorer's fit (the Phone-toss lab) compiles Ceres and minizip with zlib, and utf8proc
+  # (a recording's name in any alphabet, src/common/file_name.hpp), for
   # WebAssembly from Debian's own source packages, the versions the native build links
   # (web/build-wasm-deps.sh): fetched here, in the install step, unpacked with Debian's patches
   # into web/deb-src/ (not in git). Skipped when they are in place or emscripten is missing.
@@ -53,7 +54,12 @@ install_web_sources() {
   web="$(cd "$(dirname "$0")/../web" && pwd)"
   src="$web/deb-src"
   command -v em++ >/dev/null 2>&1 || return 0
-  [ -f "$src/.complete" ] && return 0
+  # Complete when every package is in place (a checkout from before utf8proc fetches it now).
+  if [ -f "$src/.complete" ]; then
+    local have=1 p
+    for p in ceres-solver minizip zlib utf8proc; do ls -d "$src/$p"-*/ >/dev/null 2>&1 || have=0; done
+    [ "$have" = 1 ] && return 0
+  fi
   # Debian's deb-src entries for bookworm, beside the machine's binary ones.
   if ! grep -rqsE '^(deb-src|Types:.*deb-src)' /etc/apt/sources.list /etc/apt/sources.list.d/; then
     printf '%s\n' 'Types: deb-src' 'URIs: http://deb.debian.org/debian' 'Suites: bookworm' \
@@ -63,8 +69,8 @@ install_web_sources() {
   $sudo apt-get update -qq
   rm -rf "$src"
   mkdir -p "$src"
-  (cd "$src" && apt-get source -qq ceres-solver minizip zlib 2>&1 | grep -v '^W: Download is performed unsandboxed' || true)
-  for p in ceres-solver minizip zlib; do
+  (cd "$src" && apt-get source -qq ceres-solver minizip zlib utf8proc 2>&1 | grep -v '^W: Download is performed unsandboxed' || true)
+  for p in ceres-solver minizip zlib utf8proc; do
     ls -d "$src/$p"-*/ >/dev/null 2>&1 || { echo "install-deps: apt-get source $p failed" >&2; exit 1; }
   done
   rm -f "$src"/*.tar.* "$src"/*.dsc

@@ -39,7 +39,7 @@ pids=()
 pure=("$root/src/analysis/motion.cpp" "$root/src/analysis/judgement.cpp" "$root/src/analysis/scenario_file.cpp"
       "$root/src/jobs/motion_csv.cpp" "$root/src/jobs/exact_motion.cpp"
       "$root/src/clip/body_drawing.cpp")
-for name in errors number_text csv_writer json_writer json_string text_lines text_file version; do
+for name in errors number_text csv_writer json_writer json_string text_lines text_file version file_name; do
   pure+=("$root/src/common/$name.cpp")
 done
 # The one version (VERSION, docs/flipcheck.md "Versions"), on its one file as
@@ -55,6 +55,8 @@ for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/ju
   objs+=("$obj")
   extra=()
   case " ${fit_sources[*]} " in *" $src "*) extra=("${fit_flags[@]}");; esac
+  # The file-name rule's utf8proc, built by build-wasm-deps.sh.
+  [ "$src" = "$root/src/common/file_name.cpp" ] && extra=(-DUTF8PROC_STATIC -isystem "$prefix/include")
   stale=0
   if [ "$src" = "$root/src/common/version.cpp" ]; then
     extra=(-DBOOKSPIN_VERSION="\"$version\"")
@@ -70,7 +72,7 @@ for src in "$root"/src/physics/*.cpp "${pure[@]}" "$here/bindings.cpp" "$here/ju
 done
 for p in "${pids[@]}"; do wait "$p"; done
 em++ -O3 -fexceptions --bind "${objs[@]}" "$prefix/lib/libceres.a" "$prefix/lib/libminizip.a" \
-  "$prefix/lib/libz.a" -o "$out/bookspin_physics.js" \
+  "$prefix/lib/libz.a" "$prefix/lib/libutf8proc.a" -o "$out/bookspin_physics.js" \
   -sSINGLE_FILE=1 -sMODULARIZE=1 -sEXPORT_NAME=BookspinPhysics -sALLOW_MEMORY_GROWTH=1 \
   -sENVIRONMENT=web,worker,node -sDISABLE_EXCEPTION_CATCHING=0
 echo "build-wasm: $out/bookspin_physics.js ($(stat -c %s "$out/bookspin_physics.js") bytes)"

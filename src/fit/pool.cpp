@@ -55,8 +55,9 @@ GyroRecording pool_recordings(const std::vector<GyroRecording>& given) {
   std::vector<GyroRecording> recordings;
   recordings.reserve(order.size());
   for (const GyroRecording* recording : order) recordings.push_back(*recording);
-  // Unique names: two files made file-safe alike ("anna b.csv", "anna-b.csv") would name each
-  // other's tosses; the later in the canonical order takes the first free "-2", "-3", ….
+  // Unique names: two files made file-safe alike ("anna:b.csv", "anna*b.csv"; "über.csv" typed
+  // composed and decomposed) would name each other's tosses; the later in the canonical order takes
+  // the first free "-2", "-3", ….
   for (std::size_t a = 1; a < recordings.size(); ++a) {
     const auto taken = [&](const std::string& name, std::size_t self) {
       for (std::size_t b = 0; b < recordings.size(); ++b)

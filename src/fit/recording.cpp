@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "common/errors.hpp"
+#include "common/file_name.hpp"
 #include "common/number_text.hpp"
 #include "common/text_file.hpp"
 #include "common/text_lines.hpp"
@@ -249,14 +250,6 @@ void check_quotes_closed(const std::vector<std::string>& cells,
 
 bool is_plain_header(const std::vector<std::string>& header) {
   return header == std::vector<std::string>{"t", "wx", "wy", "wz"};
-}
-
-/// File-safe: letters, digits, '.', '_' and '-' kept, anything else '-'.
-std::string file_safe(const std::string& name) {
-  std::string safe = name;
-  for (char& c : safe)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') c = '-';
-  return safe.empty() ? std::string("recording") : safe;
 }
 
 struct ZipCloser {
@@ -549,7 +542,7 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   }
   const int columns = has_total ? 5 : 4;
   GyroRecording recording;
-  recording.name = file_safe(name);
+  recording.name = file_name_of(name);
   recording.source = file;
   recording.t.reserve(rows.size());
   recording.omega.reserve(rows.size());
@@ -657,7 +650,7 @@ GyroRecording samples_recording(const std::string& name, std::vector<double> t,
   if (const std::string unit = time_unit_cause(t); !unit.empty())
     throw InputError(where + "t: " + unit);
   GyroRecording recording;
-  recording.name = file_safe(name);
+  recording.name = file_name_of(name);
   recording.source = name;
   recording.t = std::move(t);
   recording.omega = std::move(omega);
@@ -749,7 +742,7 @@ GyroRecording read_recording(const std::filesystem::path& path) {
     GyroRecording recording = read_recording(csvs.front());
     fs::path folder = fs::absolute(path).lexically_normal();
     if (folder.filename().empty()) folder = folder.parent_path();  // "anna/" as "anna"
-    recording.name = file_safe(folder.filename().string());
+    recording.name = file_name_of(folder.filename().string());
     return recording;
   }
   const std::string name = path.stem().string();

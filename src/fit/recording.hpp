@@ -46,6 +46,7 @@ struct RecordingPart {
 /// own axes (x to the right of the screen, y up the screen, z out of it).
 struct GyroRecording {
   std::string name;    ///< the recording's name (folder, zip or file stem), file-safe
+                       ///< (common/file_name.hpp: any alphabet, NFC)
   std::string source;  ///< the file the samples came from, for messages
   /// The file read (a CSV or a zip), made canonical (absolute, symlinks resolved): one file
   /// however it was spelled; empty for samples given as numbers.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "common/file_name.hpp"
 #include "common/json_string.hpp"
 #include "common/number_text.hpp"
 #include "fit/fit_tables.hpp"
@@ -45,7 +46,7 @@ std::optional<physics::Book> toss_book(const BodyEstimate& body) {
 std::string toss_scene_name(const std::string& recording, int toss) {
   std::string name = recording + "-toss" + std::to_string(toss);
   std::replace(name.begin(), name.end(), '.', '_');
-  if (!std::isalnum(static_cast<unsigned char>(name.front()))) name = "recording-" + name;
+  if (!starts_with_letter_or_digit(name)) name = "recording-" + name;
   return name;
 }
 

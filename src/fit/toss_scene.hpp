@@ -40,7 +40,8 @@ std::optional<physics::Book> toss_book(const BodyEstimate& body);
 
 /// The scene name of toss `toss` (1-based) of recording `recording` (file-safe,
 /// GyroRecording::name): "<recording>-toss<N>", with every '.' made '_' (a scene name
-/// holds no "..") and "recording-" before it unless it starts with a letter or a digit.
+/// holds no "..") and "recording-" before it unless it starts with a letter or a digit
+/// of any script (common/file_name.hpp).
 std::string toss_scene_name(const std::string& recording, int toss);
 
 /// The file name of toss `toss`'s (0-based) measured ω beside its scene file, for a recording

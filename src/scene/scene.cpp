@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 
+#include "common/file_name.hpp"
 #include "common/text_file.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/exact_model.hpp"
@@ -34,16 +35,14 @@ bool is_dotted_key(std::string_view key) {
   return true;
 }
 
-/// A file name that cannot leave the output directory: [A-Za-z0-9][A-Za-z0-9._-]*, no "..".
-/// Why `name` is not such a name, or "" when it is.
+/// A file name that cannot leave the output directory: a letter or a digit of any script first,
+/// no "..", and nothing a file's name cannot hold (common/file_name.hpp: no / \ : * ? " < > |,
+/// no control character). Why `name` is not such a name, or "" when it is.
 std::string unsafe_name_reason(std::string_view name) {
   if (name.empty()) return "it is empty";
-  if (!std::isalnum(static_cast<unsigned char>(name.front())))
-    return "it must start with a letter or a digit";
+  if (!starts_with_letter_or_digit(name)) return "it must start with a letter or a digit";
   if (name.find("..") != std::string_view::npos) return "it must not hold '..'";
-  if (!std::all_of(name.begin(), name.end(), [](char c) { return is_key_char(c) || c == '.'; }))
-    return "only letters, digits, '.', '_' and '-' (no '/')";
-  return "";
+  return file_name_problem(name);
 }
 
 std::string first_line(std::string_view text) {

@@ -2,7 +2,7 @@
 """Fails when a Markdown file of the repository names a repository path that does not exist.
 
 Usage: check_doc_paths.py SOURCE_DIR [FILE.md ...]   (default: every *.md under SOURCE_DIR
-outside build trees, node_modules and hidden folders)
+outside build trees, node_modules, web/deb-src (Debian's unpacked sources) and hidden folders)
 
 What counts as a path, in each Markdown file:
   - a link target `[text](target)` that is not a URL or a bare #anchor: resolved against the
@@ -25,7 +25,7 @@ LINK = re.compile(r"\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
 CODE = re.compile(r"`([^`\n]+)`")
 # A path-looking word: letters, digits and . _ - / * < > … (a placeholder may follow).
 WORD = re.compile(r"[A-Za-z0-9_.\-/*<>…]+")
-SKIPPED_DIRS = {"node_modules", "build", "out"}
+SKIPPED_DIRS = {"node_modules", "build", "out", "deb-src"}
 
 
 def top_folders(root):

@@ -131,25 +131,29 @@ TEST(PoolOrder, RecordingsOfOneNameAreOrderedByTheirSamples) {
   EXPECT_EQ(ba.parts[1].name, "export-2");
 }
 
-// Files whose names are made file-safe alike ("anna b.csv", "anna-b.csv") beside one already
-// called "anna-b-2": each recording keeps a name of its own in every table row and file name (the
-// later alike takes the first free suffix, "-3"), however the three are given; the toss rows
-// name three recordings.
+// Files whose names are made file-safe alike ("anna:b.csv", "anna*b.csv") beside "anna b.csv"
+// (a name of its own: a space is kept) and one already called "anna-b-2": each recording keeps a
+// name of its own in every table row and file name (the later alike takes the first free
+// suffix, "-3"), however the four are given; the toss rows name four recordings.
 TEST(PoolOrder, RecordingsNamedAlikeAreToldApartInEveryTable) {
-  const std::vector<test::SyntheticToss> throws = {
-      {{1.0, 18.0, 1.2}, 1.3}, {{-1.2, 17.0, 1.5}, 1.2}, {{0.8, 16.0, -1.0}, 1.2}};
+  const std::vector<test::SyntheticToss> throws = {{{1.0, 18.0, 1.2}, 1.3},
+                                                   {{-1.2, 17.0, 1.5}, 1.2},
+                                                   {{0.8, 16.0, -1.0}, 1.2},
+                                                   {{1.1, -17.5, 0.9}, 1.25}};
   const bookspin::test::ScratchDir dir;
-  const char* files[] = {"anna b.csv", "anna-b.csv", "anna-b-2.csv"};
+  const char* files[] = {"anna b.csv", "anna:b.csv", "anna*b.csv", "anna-b-2.csv"};
   std::vector<GyroRecording> read;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 4; ++i) {
     const test::SyntheticRecording r = test::make_recording(
         test::phone_alone(), {throws[static_cast<std::size_t>(i)]}, static_cast<unsigned>(21 + i));
     std::ofstream(dir.path() / files[i]) << test::raw_data_csv(r, test::Dialect::comma);
     read.push_back(read_recording(dir.path() / files[i]));
   }
-  EXPECT_EQ(read[0].name, read[1].name);  // file-safe alike
+  EXPECT_EQ(read[0].name, "anna b");  // a name of its own
+  EXPECT_EQ(read[1].name, "anna-b");  // file-safe alike
+  EXPECT_EQ(read[2].name, "anna-b");
   for (const std::vector<int>& order :
-       std::vector<std::vector<int>>{{0, 1, 2}, {2, 1, 0}, {1, 2, 0}}) {
+       std::vector<std::vector<int>>{{0, 1, 2, 3}, {3, 2, 1, 0}, {1, 3, 2, 0}}) {
     std::vector<GyroRecording> given;
     for (int i : order) given.push_back(read[static_cast<std::size_t>(i)]);
     const GyroRecording pooled = pool_recordings(given);
@@ -157,18 +161,20 @@ TEST(PoolOrder, RecordingsNamedAlikeAreToldApartInEveryTable) {
     for (const RecordingPart& part : pooled.parts) names.push_back(part.name);
     std::sort(names.begin(), names.end());
     EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end());
-    EXPECT_EQ(names, (std::vector<std::string>{"anna-b", "anna-b-2", "anna-b-3"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"anna b", "anna-b", "anna-b-2", "anna-b-3"}));
     const FitReport report = fit_report(pooled, {});
-    std::vector<std::string> named;  // each toss row's first cell, its recording
+    std::vector<std::string> named;  // each toss row's second cell, its recording
     std::istringstream rows(report.toss_csv);
     std::string row;
     std::getline(rows, row);  // the header
-    while (std::getline(rows, row))
-      if (!row.empty()) named.push_back(row.substr(0, row.find(',')));
-    EXPECT_EQ(named.size(), 3u);
+    while (std::getline(rows, row)) {
+      if (row.empty()) continue;
+      const std::size_t comma = row.find(',');
+      named.push_back(row.substr(comma + 1, row.find(',', comma + 1) - comma - 1));
+    }
+    EXPECT_EQ(named.size(), 4u);
     std::sort(named.begin(), named.end());
-    named.erase(std::unique(named.begin(), named.end()), named.end());
-    EXPECT_EQ(named.size(), 3u);
+    EXPECT_EQ(named, names);
   }
 }
 

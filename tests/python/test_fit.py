@@ -133,6 +133,26 @@ def test_a_list_of_recordings_fits_as_one_body_as_the_command_fits_them(bookspin
     assert pooled.body["I2_over_I3"] == pytest.approx(2.6 / 3.4, rel=0.01)
 
 
+def test_names_in_any_alphabet_as_the_command_names_them(bookspin, tmp_path):
+    # docs/phone-lab.md, "Names": each file's name in its own alphabet, NFC (the German written
+    # decomposed, as a Mac names it), in the module's values as in the command's files.
+    names = {"太郎": "太郎", "Αθηνά": "Αθηνά", "Юлия": "Юлия",
+             "Wurf u\u0308ber dem Bett": "Wurf \u00fcber dem Bett", "تجربة": "تجربة",
+             "🎲 würfel": "🎲 würfel", "anna b": "anna b", "anna:b": "anna-b", "anna*b": "anna-b-2"}
+    paths = []
+    for seed, stem in enumerate(names):
+        t, omega = made_recording(bookspin, seed=10 + seed)
+        path = tmp_path / f"{stem}.csv"
+        write_recording(path, t[t < 2.2], omega[t < 2.2])
+        paths.append(path)
+    pooled = bookspin.fit(paths)
+    expected = sorted(names.values())  # the canonical order: by name, as bytes
+    assert pooled.recording == f"{expected[0]}-and-{len(names) - 1}-more"
+    assert sorted(row["recording"] for row in pooled.tosses) == expected
+    assert_fit_equals_cli(pooled, cli_fit(tmp_path, *paths))
+    assert (tmp_path / "cli" / f"{pooled.recording}-fit.csv").exists()
+
+
 def test_one_recording_given_twice_however_spelled_is_refused(bookspin, tmp_path):
     # A relative and an absolute path, a symlink: one file; a copy, and an export beside its
     # own zip: the same samples. Each would predict a toss partly from its own copy.

@@ -45,7 +45,7 @@ TEST(Messages, ControlCharactersInAValueAreEscaped) {
   const std::string name_error = error_of("[scene]\nname = \"a\\nb\\tc\\u001b[31md\\u009b2J\"\n");
   EXPECT_EQ(name_error,
             "test.toml:2: scene.name: 'a\\nb\\tc\\x1b[31md\\u009b2J' is not a safe output name: "
-            "only letters, digits, '.', '_' and '-' (no '/')");
+            "it must not hold / \\ : * ? \" < > | or a control character");
   const std::string kind_error = error_of("[model]\nkind = \"rk4\\r\\u007f\"\n");
   EXPECT_NE(kind_error.find("unknown model 'rk4\\r\\x7f'"), std::string::npos) << kind_error;
   EXPECT_FALSE(has_control(kind_error)) << kind_error;

@@ -165,7 +165,9 @@ function startApp(wasm, engines) {
     } else {
       // Stacked (a phone): the view its own height (index.html); the strip as tall as a
       // phone's screen leaves beside the view and the transport bar.
-      const beside = matchMedia('(orientation: landscape)').matches;  // index.html: beside the view
+      // index.html: beside the view on a phone on its side; under it on a short one (a zoomed
+      // projector's 427×267).
+      const beside = getComputedStyle(main).flexDirection === 'row';
       const cap = beside ? box.offsetHeight : Math.max(96, innerHeight - box.offsetHeight - $('transport').offsetHeight);
       strip.style.maxHeight = `${offLines(strip, Math.max(cap, need), need)}px`;
       // Under the strip, the view ends on the first screen: a tall strip (a comparison's six
@@ -177,11 +179,13 @@ function startApp(wasm, engines) {
   }
   /** The readout's height down to the last of what a class must read (docs/explorer.md, "What
    * the class must read"): the clock, and each run's flips and first flip (a comparison's every
-   * tile's); the strip is never bounded under it, whatever the view's share. */
+   * tile's), each run's label, and the exact motion's first flip beside it (at 960×540 it lay
+   * under the strip's edge, as did the last tiles' labels); the strip is never bounded under it,
+   * whatever the view's share. */
   function mustReadHeight(strip) {
     const top = strip.getBoundingClientRect().top - strip.scrollTop;
     let bottom = 0;
-    for (const e of strip.querySelectorAll('#clock, #status .flips, #status .first'))
+    for (const e of strip.querySelectorAll('#clock, #status .flips, #status .first, #status .exact, #status .method'))
       bottom = Math.max(bottom, e.getBoundingClientRect().bottom - top);
     return Math.ceil(bottom + parseFloat(getComputedStyle(strip).paddingBottom || '0'));
   }

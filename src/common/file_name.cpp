@@ -1,0 +1,140 @@
+#include "common/file_name.hpp"
+
+#include <cstdlib>
+#include <memory>
+
+#include <utf8proc.h>
+
+namespace bookspin {
+namespace {
+
+struct Freer {
+  void operator()(utf8proc_uint8_t* p) const { std::free(p); }
+};
+
+const utf8proc_uint8_t* bytes(std::string_view text) {
+  return reinterpret_cast<const utf8proc_uint8_t*>(text.data());
+}
+
+/// The code point at `at` of `text` and its length in bytes; length 0 where no valid UTF-8
+/// sequence starts there.
+struct CodePoint {
+  utf8proc_int32_t value = -1;
+  std::size_t length = 0;
+};
+CodePoint code_point_at(std::string_view text, std::size_t at) {
+  CodePoint cp;
+  const utf8proc_ssize_t n = utf8proc_iterate(bytes(text.substr(at)),
+                                              static_cast<utf8proc_ssize_t>(text.size() - at),
+                                              &cp.value);
+  cp.length = n > 0 ? static_cast<std::size_t>(n) : 0;
+  return cp;
+}
+
+/// Characters a file's name cannot hold, or that would hide or reorder it as shown.
+bool is_replaced(utf8proc_int32_t c) {
+  if (c < 0x80) return c < 0x20 || c == 0x7f || std::string_view("/\\:*?\"<>|").find(static_cast<char>(c)) != std::string_view::npos;
+  const utf8proc_category_t category = utf8proc_category(c);
+  return category == UTF8PROC_CATEGORY_CC || category == UTF8PROC_CATEGORY_ZL ||
+         category == UTF8PROC_CATEGORY_ZP || category == UTF8PROC_CATEGORY_CS ||
+         (c >= 0x202a && c <= 0x202e) || (c >= 0x2066 && c <= 0x2069);
+}
+
+/// `text` with each byte that starts no valid UTF-8 sequence as '-'.
+std::string valid_utf8(std::string_view text) {
+  std::string valid;
+  valid.reserve(text.size());
+  for (std::size_t at = 0; at < text.size();) {
+    const CodePoint cp = code_point_at(text, at);
+    if (cp.length == 0) {
+      valid += '-';
+      ++at;
+    } else {
+      valid.append(text.substr(at, cp.length));
+      at += cp.length;
+    }
+  }
+  return valid;
+}
+
+/// `text` (valid UTF-8) in NFC.
+std::string nfc(std::string_view text) {
+  if (text.empty()) return {};
+  utf8proc_uint8_t* mapped = nullptr;
+  const utf8proc_ssize_t n =
+      utf8proc_map(bytes(text), static_cast<utf8proc_ssize_t>(text.size()), &mapped,
+                   static_cast<utf8proc_option_t>(UTF8PROC_STABLE | UTF8PROC_COMPOSE));
+  const std::unique_ptr<utf8proc_uint8_t, Freer> owned(mapped);
+  if (n < 0) return std::string(text);  // cannot happen on valid UTF-8 but out of memory
+  return std::string(reinterpret_cast<const char*>(mapped), static_cast<std::size_t>(n));
+}
+
+/// The longest start of `text` (valid UTF-8) of at most `limit` bytes that ends where a
+/// grapheme cluster ends.
+std::string_view cut_at_grapheme(std::string_view text, std::size_t limit) {
+  if (text.size() <= limit) return text;
+  std::size_t end = 0;  // the last cluster boundary within the limit
+  utf8proc_int32_t state = 0;
+  utf8proc_int32_t previous = -1;
+  for (std::size_t at = 0; at < text.size();) {
+    const CodePoint cp = code_point_at(text, at);
+    if (previous >= 0 && utf8proc_grapheme_break_stateful(previous, cp.value, &state)) end = at;
+    if (at + cp.length > limit) break;
+    previous = cp.value;
+    at += cp.length;
+  }
+  return text.substr(0, end);
+}
+
+}  // namespace
+
+std::string file_name_of(std::string_view text) {
+  const std::string composed = nfc(valid_utf8(text));
+  std::string safe;
+  safe.reserve(composed.size());
+  for (std::size_t at = 0; at < composed.size();) {
+    const CodePoint cp = code_point_at(composed, at);
+    if (is_replaced(cp.value))
+      safe += '-';
+    else
+      safe.append(composed, at, cp.length);
+    at += cp.length;
+  }
+  if (!safe.empty() && safe.front() == '.') safe.front() = '-';
+  safe = std::string(cut_at_grapheme(safe, kMaxFileNameBytes));
+  return safe.empty() ? std::string("recording") : safe;
+}
+
+std::string file_name_problem(std::string_view name) {
+  if (name.empty()) return "it is empty";
+  for (std::size_t at = 0; at < name.size();) {
+    const CodePoint cp = code_point_at(name, at);
+    if (cp.length == 0) return "not UTF-8 at byte " + std::to_string(at + 1);
+    if (is_replaced(cp.value))
+      return "it must not hold / \\ : * ? \" < > | or a control character";
+    at += cp.length;
+  }
+  if (name.front() == '.') return "it must not start with '.'";
+  return "";
+}
+
+bool starts_with_letter_or_digit(std::string_view text) {
+  if (text.empty()) return false;
+  const CodePoint cp = code_point_at(text, 0);
+  if (cp.length == 0) return false;
+  switch (utf8proc_category(cp.value)) {
+    case UTF8PROC_CATEGORY_LU:
+    case UTF8PROC_CATEGORY_LL:
+    case UTF8PROC_CATEGORY_LT:
+    case UTF8PROC_CATEGORY_LM:
+    case UTF8PROC_CATEGORY_LO:
+    case UTF8PROC_CATEGORY_ND:
+    case UTF8PROC_CATEGORY_NL:
+    case UTF8PROC_CATEGORY_NO:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace bookspin

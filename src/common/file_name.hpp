@@ -1,0 +1,36 @@
+#pragma once
+// A name in any alphabet as a file's name: the one rule for a recording's name (the command
+// line's, the Python module's and the page's, which compiles this file) and the check a scene's
+// name passes (docs/phone-lab.md, "Names").
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace bookspin {
+
+/// The most bytes of UTF-8 a name made by file_name_of() holds: a file system holds 255 bytes
+/// in one name (ext4, NTFS's 255 UTF-16 units hold more), and the outputs add a suffix
+/// ("-toss12-measured.csv") and a pool's "-and-N-more" to it.
+inline constexpr std::size_t kMaxFileNameBytes = 160;
+
+/// `text` (UTF-8; a file's name without its extension, a folder's name) as a file's name:
+/// every letter, mark, digit, space, punctuation and symbol of any script kept, normalized to
+/// NFC (Unicode's composed form: "über" typed as u + U+0308 is "über" as one character);
+/// replaced by '-': what a file's name cannot hold on Debian or Windows (/ \ : * ? " < > |),
+/// control characters (C0, C1, U+2028/U+2029, the bidirectional overrides and isolates,
+/// which would reorder the name as shown), a byte that is not UTF-8, and a leading '.' (a hidden
+/// file); cut to at most kMaxFileNameBytes bytes at the end of a whole character (a grapheme
+/// cluster: a letter with its marks, an emoji with its joiners), never inside one. "recording"
+/// for an empty text. Names that differ after this rule stay apart ("anna b", "anna-b");
+/// telling apart those it makes alike is the pool's (fit/pool.hpp).
+std::string file_name_of(std::string_view text);
+
+/// Why `name` cannot be a file's name under file_name_of()'s rule (not UTF-8, a character it
+/// replaces, a leading '.'), or "" when it can; its form (NFC or not: a file named on macOS)
+/// and its length are left to the file system.
+std::string file_name_problem(std::string_view name);
+
+/// Whether `text` starts with a letter or a digit of any script (Unicode's L* and N*).
+bool starts_with_letter_or_digit(std::string_view text);
+
+}  // namespace bookspin
