@@ -7,6 +7,7 @@
 // is fitted here: this module reads the sensor, draws the live trace and writes the CSV.
 import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas } from './plots.js';
+import { keptStore } from './kept_store.js';
 
 const $ = (id) => document.getElementById(id);
 /** Says `text` in the lab's live region (a screen reader reads it; focus stays where it is). */
@@ -247,40 +248,6 @@ function drawTrace(canvas, samples, span = 5) {
 /** ms after a Stop during which a tap on the button starts nothing: a nervous second tap of a
  * double tap (80 ms apart) must not start a recording over the toss just kept. */
 export const AFTER_STOP_MS = 600;
-
-/** The browser's own storage of the lab's recordings (IndexedDB): a promise of the store's
- * three doors {all() → rows, put(row), remove(id)}, each a promise; rejected where the browser
- * gives the page no storage (a private window, storage blocked, no IndexedDB). A row:
- * {id, name, when (ISO time), samples, rate, api, text, ticked}. */
-export function keptStore(name = 'bookspin-lab') {
-  return new Promise((resolve, reject) => {
-    let request;
-    try {
-      request = indexedDB.open(name, 1);
-    } catch (e) {
-      reject(e);
-      return;
-    }
-    request.onupgradeneeded = () => request.result.createObjectStore('recordings', { keyPath: 'id' });
-    request.onerror = () => reject(request.error || new Error('IndexedDB refused'));
-    request.onblocked = () => reject(new Error('IndexedDB blocked'));
-    request.onsuccess = () => {
-      const db = request.result;
-      const go = (mode, act) => new Promise((done, failed) => {
-        const tx = db.transaction('recordings', mode);
-        const r = act(tx.objectStore('recordings'));
-        tx.oncomplete = () => done(r.result);
-        tx.onerror = () => failed(tx.error);
-        tx.onabort = () => failed(tx.error || new Error('IndexedDB aborted'));
-      });
-      resolve({
-        all: () => go('readonly', (s) => s.getAll()),
-        put: (row) => go('readwrite', (s) => s.put(row)),
-        remove: (id) => go('readwrite', (s) => s.delete(id)),
-      });
-    };
-  });
-}
 
 /** ms between two drawings of the live trace while recording. */
 export const TRACE_MS = 100;
