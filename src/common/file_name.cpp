@@ -1,9 +1,9 @@
 #include "common/file_name.hpp"
 
+#include <utf8proc.h>
+
 #include <cstdlib>
 #include <memory>
-
-#include <utf8proc.h>
 
 namespace bookspin {
 namespace {
@@ -24,16 +24,17 @@ struct CodePoint {
 };
 CodePoint code_point_at(std::string_view text, std::size_t at) {
   CodePoint cp;
-  const utf8proc_ssize_t n = utf8proc_iterate(bytes(text.substr(at)),
-                                              static_cast<utf8proc_ssize_t>(text.size() - at),
-                                              &cp.value);
+  const utf8proc_ssize_t n = utf8proc_iterate(
+      bytes(text.substr(at)), static_cast<utf8proc_ssize_t>(text.size() - at), &cp.value);
   cp.length = n > 0 ? static_cast<std::size_t>(n) : 0;
   return cp;
 }
 
 /// Characters a file's name cannot hold, or that would hide or reorder it as shown.
 bool is_replaced(utf8proc_int32_t c) {
-  if (c < 0x80) return c < 0x20 || c == 0x7f || std::string_view("/\\:*?\"<>|").find(static_cast<char>(c)) != std::string_view::npos;
+  if (c < 0x80)
+    return c < 0x20 || c == 0x7f ||
+           std::string_view("/\\:*?\"<>|").find(static_cast<char>(c)) != std::string_view::npos;
   const utf8proc_category_t category = utf8proc_category(c);
   return category == UTF8PROC_CATEGORY_CC || category == UTF8PROC_CATEGORY_ZL ||
          category == UTF8PROC_CATEGORY_ZP || category == UTF8PROC_CATEGORY_CS ||
@@ -110,8 +111,7 @@ std::string file_name_problem(std::string_view name) {
   for (std::size_t at = 0; at < name.size();) {
     const CodePoint cp = code_point_at(name, at);
     if (cp.length == 0) return "not UTF-8 at byte " + std::to_string(at + 1);
-    if (is_replaced(cp.value))
-      return "it must not hold / \\ : * ? \" < > | or a control character";
+    if (is_replaced(cp.value)) return "it must not hold / \\ : * ? \" < > | or a control character";
     at += cp.length;
   }
   if (name.front() == '.') return "it must not start with '.'";

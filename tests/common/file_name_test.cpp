@@ -14,10 +14,20 @@ namespace {
 
 // Names a class writes: Japanese, Greek, Cyrillic, German, Arabic, an emoji, a family emoji
 // (three code points joined by U+200D), Hangul, Devanagari with its vowel signs (marks).
-const std::vector<std::string> kNames = {
-    "太郎",      "花子",           "Αθηνά",          "Юлия бросок", "Wurf über dem Bett",
-    "تجربة ٣",   "🎲 würfel",      "👩‍👩‍👧 family", "한국어",      "परीक्षण",
-    "anna b",    "anna-b",         "12-13-01",       "Straße #2 & 'co' (50%)"};
+const std::vector<std::string> kNames = {"太郎",
+                                         "花子",
+                                         "Αθηνά",
+                                         "Юлия бросок",
+                                         "Wurf über dem Bett",
+                                         "تجربة ٣",
+                                         "🎲 würfel",
+                                         "👩‍👩‍👧 family",
+                                         "한국어",
+                                         "परीक्षण",
+                                         "anna b",
+                                         "anna-b",
+                                         "12-13-01",
+                                         "Straße #2 & 'co' (50%)"};
 
 bool valid_utf8(const std::string& s) {
   // A strict decoder of its own (not utf8proc's): lead byte, continuation bytes, no overlong.
@@ -46,7 +56,9 @@ TEST(FileName, OnlyWhatAFileNameCannotHoldIsReplaced) {
   EXPECT_EQ(file_name_of(".hidden"), "-hidden");
   EXPECT_EQ(file_name_of(".."), "-.");
   EXPECT_EQ(file_name_of("a.b.c"), "a.b.c");  // a dot inside stays
-  EXPECT_EQ(file_name_of("\xff\xfe" "太郎\xe5"), "--太郎-");  // bytes that are not UTF-8
+  EXPECT_EQ(file_name_of("\xff\xfe"
+                         "太郎\xe5"),
+            "--太郎-");  // bytes that are not UTF-8
   EXPECT_EQ(file_name_of(""), "recording");
   // The joiners an emoji or a Persian word needs are not controls.
   EXPECT_EQ(file_name_of("می\u200cخواهم"), "می\u200cخواهم");
@@ -54,7 +66,7 @@ TEST(FileName, OnlyWhatAFileNameCannotHoldIsReplaced) {
 
 TEST(FileName, ComposedAndDecomposedNameTheSame) {
   EXPECT_EQ(file_name_of("Wurf u\u0308ber dem Bett"), "Wurf \u00fcber dem Bett");
-  EXPECT_EQ(file_name_of("\u1112\u1161\u11ab"), "\ud55c");  // Hangul jamo: 한
+  EXPECT_EQ(file_name_of("\u1112\u1161\u11ab"), "\ud55c");        // Hangul jamo: 한
   EXPECT_EQ(file_name_of("\u0391\u0301\u03b8"), "\u0386\u03b8");  // Ά
   // "<" with U+0338 is "≮" in NFC, a character of its own, not a '<' to replace.
   EXPECT_EQ(file_name_of("<\u0338"), "\u226e");
@@ -89,15 +101,14 @@ TEST(FileName, NamesThatDifferStayApartAndOnlyReplacedOnesMeet) {
 TEST(FileName, ALongNameIsCutAtTheEndOfAWholeCharacter) {
   // Units of 1, 2, 3 and 4 bytes, a letter with a combining mark (no composed form: 3 bytes),
   // and a family emoji (18 bytes), each repeated past the limit.
-  for (const std::string unit :
-       {"a", "ß", "太", "🎲", "x\u0301", "👩‍👩‍👧", "ก\u0e34"}) {
+  for (const std::string unit : {"a", "ß", "太", "🎲", "x\u0301", "👩‍👩‍👧", "ก\u0e34"}) {
     std::string name;
     while (name.size() < 3 * kMaxFileNameBytes) name += unit;
     const std::string cut = file_name_of(name);
     EXPECT_LE(cut.size(), kMaxFileNameBytes) << unit;
     EXPECT_GT(cut.size() + unit.size(), kMaxFileNameBytes) << unit;  // as long as it may be
-    EXPECT_EQ(cut.size() % unit.size(), 0u) << unit;                // whole characters only
-    EXPECT_EQ(name.compare(0, cut.size(), cut), 0) << unit;         // a start of the name
+    EXPECT_EQ(cut.size() % unit.size(), 0u) << unit;                 // whole characters only
+    EXPECT_EQ(name.compare(0, cut.size(), cut), 0) << unit;          // a start of the name
   }
   // A 240-character name: its first 160 characters.
   EXPECT_EQ(file_name_of(std::string(240, 'n')), std::string(kMaxFileNameBytes, 'n'));

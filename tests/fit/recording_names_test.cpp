@@ -56,8 +56,8 @@ TEST(RecordingNames, EveryAlphabetReachesEveryTableChartAndScene) {
   const bookspin::test::ScratchDir dir;
   std::vector<GyroRecording> read;
   for (std::size_t i = 0; i < kNamed.size(); ++i) {
-    const test::SyntheticRecording r = test::make_recording(test::phone_alone(), {throws[i]},
-                                                            static_cast<unsigned>(41 + i));
+    const test::SyntheticRecording r =
+        test::make_recording(test::phone_alone(), {throws[i]}, static_cast<unsigned>(41 + i));
     std::ofstream(dir.path() / kNamed[i].file) << test::raw_data_csv(r, test::Dialect::comma);
     read.push_back(read_recording(dir.path() / kNamed[i].file));
     EXPECT_EQ(read.back().name, kNamed[i].name);
@@ -81,7 +81,8 @@ TEST(RecordingNames, EveryAlphabetReachesEveryTableChartAndScene) {
     EXPECT_NE(std::find(expected.begin(), expected.end(), toss.chart.recording), expected.end())
         << toss.chart.recording;
     ASSERT_TRUE(toss.scene.has_value());
-    EXPECT_EQ(toss.scene->title.rfind(toss.chart.recording + ", toss ", 0), 0u) << toss.scene->title;
+    EXPECT_EQ(toss.scene->title.rfind(toss.chart.recording + ", toss ", 0), 0u)
+        << toss.scene->title;
     EXPECT_EQ(toss.scene->name.rfind(pooled.name + "-toss", 0), 0u) << toss.scene->name;
     EXPECT_NE(toss.scene_text.find(toss.chart.recording), std::string::npos);
   }
