@@ -1,5 +1,6 @@
 #include "common/number_text.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -218,6 +219,19 @@ std::optional<double> read_number(std::string_view text) {
 #endif
   if (!std::isfinite(value) || (value == 0.0 && nonzero)) return std::nullopt;
   return value;
+}
+
+bool beyond_doubles(std::string_view text) {
+  std::string_view digits = text;
+  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
+  if (digits.empty() ||
+      !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') ||
+      digits.find_first_not_of("0123456789.eE+-") != std::string_view::npos)
+    return false;
+  const std::string copy(text);
+  char* end = nullptr;
+  const double value = std::strtod(copy.c_str(), &end);
+  return end == copy.c_str() + copy.size() && std::isinf(value);
 }
 
 }  // namespace bookspin

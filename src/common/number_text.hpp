@@ -50,4 +50,14 @@ std::string plus_minus(double value, double sigma);
 /// reads recordings and motions with this too.
 std::optional<double> read_number(std::string_view text);
 
+/// Whether `text` spells a decimal number (an optional sign, digits, a point, an exponent) whose
+/// magnitude is past the largest double (about 1.8e308: "1e400", "-2e308"), which read_number
+/// refuses: every door words it kBeyondDoubles, not "not a number" (a recording's cell, the
+/// fit's options).
+bool beyond_doubles(std::string_view text);
+
+/// The words for a number past the largest double, said alike at every door (and as flipcheck's
+/// motion reader says it).
+inline constexpr const char* kBeyondDoubles = "beyond the largest double (about 1.8e308)";
+
 }  // namespace bookspin

@@ -24,7 +24,6 @@ constexpr double kGapFactor = 5.0;         // a step this many typical steps lon
 // under 1 rad in 25 ms) and so does the derivative, taken with each sample's own dt.
 constexpr double kMinGap = 0.025;
 constexpr int kMinFitSamples = 10;
-constexpr double kUnevenStep = 0.25;  // a step off the median step by this share of it is uneven
 constexpr int kIsolated = 2;  // samples: a run this short over the torque threshold is noise  // a
                               // flight shorter than this cannot be fitted
 
@@ -226,30 +225,6 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     moving[i] = std::sqrt(w2) >= settings.rest_omega;
     candidate[i] =
         std::sqrt(w2) >= settings.flight_omega && (clipped[i] || rate[i].norm() <= 0.6 * w2 + 3.0);
-  }
-  // One or two fast samples over the bound between candidates, among uneven stamps (a step off
-  // the median by over kUnevenStep of it), are the derivative's error where a sample's stamp is
-  // off its measurement (a phone stamping when it delivers, up to ±80 % of the step), as in step 2
-  // below: the flight is not cut there. Evenly stamped samples are judged as they are.
-  std::vector<double> steps;
-  for (int i = 1; i < n; ++i) steps.push_back(t[i] - t[i - 1]);
-  const double median_step = steps.empty() ? 0.0 : median_of(steps);
-  const auto uneven = [&](int from, int to) {  // a step among samples from … to
-    for (int k = std::max(1, from); k <= std::min(n - 1, to); ++k)
-      if (std::abs(t[k] - t[k - 1] - median_step) > kUnevenStep * median_step) return true;
-    return false;
-  };
-  for (int i = 1; i + 1 < n; ++i) {
-    if (candidate[i] || !candidate[i - 1]) continue;
-    int end = i;
-    while (end < n && !candidate[end] && end - i < kIsolated) ++end;
-    bool fast = end < n && candidate[end] && end - i <= kIsolated &&
-                uneven(i - kHalfWindow, end + kHalfWindow);
-    for (int k = i; k < end && fast; ++k)
-      fast = std::sqrt(omega[k].squaredNorm()) >= settings.flight_omega;
-    if (fast)
-      for (int k = i; k < end; ++k) candidate[k] = 1;
-    i = end;
   }
   std::vector<std::pair<int, int>> kept;
   for (const auto& [first, last] : runs(candidate, segs)) {

@@ -581,19 +581,6 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   return recording;
 }
 
-bool beyond_doubles(std::string_view text) {
-  std::string_view digits = text;
-  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
-  if (digits.empty() ||
-      !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') ||
-      digits.find_first_not_of("0123456789.eE+-") != std::string_view::npos)
-    return false;
-  const std::string copy(text);
-  char* end = nullptr;
-  const double value = std::strtod(copy.c_str(), &end);
-  return end == copy.c_str() + copy.size() && std::isinf(value);
-}
-
 std::string time_unit_cause(const std::vector<double>& t, double stated) {
   if (t.size() < 2) return {};
   std::vector<double> steps;

@@ -85,16 +85,6 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
 GyroRecording samples_recording(const std::string& name, std::vector<double> t,
                                 std::vector<Eigen::Vector3d> omega);
 
-/// Whether `text` spells a decimal number (an optional sign, digits, a point, an exponent) whose
-/// magnitude is past the largest double (about 1.8e308: "1e400", "-2e308"), which read_number
-/// refuses: every door words it kBeyondDoubles, not "not a number" (a recording's cell, the
-/// fit's options).
-bool beyond_doubles(std::string_view text);
-
-/// The words for a number past the largest double, said alike at every door (and as flipcheck's
-/// motion reader says it).
-inline constexpr const char* kBeyondDoubles = "beyond the largest double (about 1.8e308)";
-
 /// s: the longest median step between samples a gyroscope recording of a hand toss may have (a
 /// phone samples every 1–40 ms; 2 Hz is no recording of a flip).
 inline constexpr double kMaxSampleStep = 0.5;

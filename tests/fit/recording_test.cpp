@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/number_text.hpp"
 #include "support/scratch.hpp"
 #include "synthetic_recording.hpp"
 #include "zip_writer.hpp"
@@ -47,7 +48,8 @@ TEST(Recording, ReadsEachPhyphoxDialectFromItsFolder) {
     test::write_export(folder, written, dialect);
     const GyroRecording by_folder = read_recording(folder);
     expect_same_samples(by_folder, written);
-    EXPECT_EQ(by_folder.name, std::string("Gyroscope-rotation-rate-") + name);
+    // A folder's name is the recording's, its spaces kept (common/file_name.hpp).
+    EXPECT_EQ(by_folder.name, std::string("Gyroscope rotation rate ") + name);
     expect_same_samples(read_recording(folder / "Raw Data.csv"), written);
   }
 }

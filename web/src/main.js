@@ -156,7 +156,7 @@ function startApp(wasm, engines) {
     main.style.height = small ? `${innerHeight - $('transport').offsetHeight}px` : '';
     const stacked = !small && matchMedia('(max-width: 899px)').matches;  // index.html's stacked layout
     if (fresh) strip.style.minHeight = '';
-    const need = mustReadHeight(strip);
+    const need = mustReadHeight(strip, stacked);
     box.style.height = '';
     if (!stacked) {
       const share = 1 + Math.max(VIEW_MIN_PX, innerWidth * innerHeight / 3 / Math.max(1, main.clientWidth));
@@ -176,16 +176,19 @@ function startApp(wasm, engines) {
       if (!beside && room < box.offsetHeight) box.style.height = `${Math.max(VIEW_MIN_PX, room)}px`;
     }
     stripNeed = need;
+    stripStacked = stacked;
   }
   /** The readout's height down to the last of what a class must read (docs/explorer.md, "What
    * the class must read"): the clock, and each run's flips and first flip (a comparison's every
-   * tile's), each run's label, and the exact motion's first flip beside it (at 960×540 it lay
-   * under the strip's edge, as did the last tiles' labels); the strip is never bounded under it,
-   * whatever the view's share. */
-  function mustReadHeight(strip) {
+   * tile's) and the exact motion's first flip beside it (at 960×540 it lay under the strip's
+   * edge); stacked (a phone, a zoomed projector) each run's label too. Beside the view a
+   * comparison's last labels may lie a scroll down, so that the view keeps its third of the
+   * window. The strip is never bounded under it, whatever the view's share. */
+  function mustReadHeight(strip, stacked) {
     const top = strip.getBoundingClientRect().top - strip.scrollTop;
     let bottom = 0;
-    for (const e of strip.querySelectorAll('#clock, #status .flips, #status .first, #status .exact, #status .method'))
+    const what = '#clock, #status .flips, #status .first, #status .exact' + (stacked ? ', #status .method' : '');
+    for (const e of strip.querySelectorAll(what))
       bottom = Math.max(bottom, e.getBoundingClientRect().bottom - top);
     return Math.ceil(bottom + parseFloat(getComputedStyle(strip).paddingBottom || '0'));
   }
@@ -205,10 +208,10 @@ function startApp(wasm, engines) {
     }
     return max;
   }
-  let stripNeed = 0;
+  let stripNeed = 0, stripStacked = false;
   /** After the readout changed: bounded afresh where its must-read rows grew past the bound. */
   function fitStrip() {
-    if (mustReadHeight($('overlay')) > stripNeed) layout(false);
+    if (mustReadHeight($('overlay'), stripStacked) > stripNeed) layout(false);
   }
 
   /** The view, the plots and the left panel fitted to the window (`unfold`: the scene's
