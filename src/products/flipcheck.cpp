@@ -59,6 +59,7 @@ FlipcheckExportScenario read_flipcheck_export_scenario(const std::filesystem::pa
                        "JSON: edit the JSON, or give the scene file");
     read.json =
         analysis::scenario_from_json(read_text_file(path, "the scenario file"), path.string());
+    read.json_sha256 = analysis::scenario_sha256(*read.json);
     return read;
   }
   read.scene = scene::parse_scene(path, overrides);
@@ -89,11 +90,12 @@ std::vector<cache::Outcome> make_flipcheck_exports(
     // A scenario JSON has no scene: its export is up to date for the same scenario (its
     // canonical text's SHA-256, as every door hashes it) and the same program.
     JsonObject options;
+    BOOKSPIN_ASSERT(!scenario.json || !scenario.json_sha256.empty());
     if (scenario.json)
       options = {{"bookspin",
                   {JsonObject{{"version", {output::program_version()}},
                               {"build_id", {"sha256:" + output::program_build_id()}}}}},
-                 {"scenario_sha256", {analysis::scenario_sha256(*scenario.json)}}};
+                 {"scenario_sha256", {scenario.json_sha256}}};
     cached.push_back({scenario.name() + "-flipcheck", layouts.back().manifest, "flipcheck export",
                       std::move(options), out_dir, scenario.json ? nullptr : &scenario.scene,
                       /*all_or_nothing=*/true});

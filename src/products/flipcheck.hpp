@@ -40,6 +40,9 @@ struct FlipcheckExportScenario {
   /// The scenario of a scenario JSON (analysis::scenario_from_json), exported as the npm
   /// package exports it: its files depend on it alone, its manifest records its SHA-256
   std::optional<analysis::Scenario> json = std::nullopt;
+  /// With `json`: its canonical text's SHA-256 (analysis::scenario_sha256, as every door
+  /// hashes it), made when it is read: its export's freshness key
+  std::string json_sha256 = {};
   /// Its name: OUT/<name>.json
   const std::string& name() const { return json ? json->name : scene.name; }
 };
