@@ -6,7 +6,7 @@
 #                        pure files as web/build-wasm.sh compiles them for the page, and
 #                        npm/flipcheck_bindings.cpp
 #   scenarios/*.json     the seven scenarios as `bookspin flipcheck export` writes them
-#   index.mjs, index.d.ts, cli.mjs, README.md, package.json   from npm/package/
+#   index.mjs, index.d.ts, cli.mjs, files.mjs, README.md, package.json   from npm/package/
 # Usage: npm/build.sh BUILD_DIR [OUT_DIR]   (needs BUILD_DIR/bookspin; OUT_DIR is BUILD/npm unless
 # given, objects cached in OUT_DIR/obj, or copied from the page's up-to-date ones in
 # BUILD_DIR/web/obj: scripts/figures.sh builds its own, which no test reads, after the page's)
@@ -84,7 +84,7 @@ em++ -O3 -fexceptions --bind "${objs[@]}" -o "$package/flipcheck-wasm.cjs" \
 # The scenarios as the command line exports them (their JSON only: the exact motion is computed).
 "$build/bookspin" flipcheck export "$root"/scenes/flipcheck/*.toml -o "$out/export" >/dev/null
 cp "$out/export"/*.json "$package/scenarios/"
-for f in index.mjs index.d.ts cli.mjs README.md; do cp "$here/package/$f" "$package/"; done
+for f in index.mjs index.d.ts cli.mjs files.mjs README.md; do cp "$here/package/$f" "$package/"; done
 sed "s/@VERSION@/$version/" "$here/package/package.json.in" >"$package/package.json"
 rm -f "$out"/flipcheck-*.tgz
 (cd "$package" && npm pack --pack-destination "$out" --silent >/dev/null)

@@ -19,7 +19,8 @@
 // and every motion file is in place, nothing is run or written ("up to date"). Otherwise OUT's
 // motion files are all written again and any other CSV there is removed.
 //
-// Bad input (a scenario that is missing or that `bookspin flipcheck judge` refuses, in its words;
+// Bad input (a scenario that is missing, not a regular file (a FIFO, a device: refused before it
+// is opened) or that `bookspin flipcheck judge` refuses, in its words;
 // an unknown option) and a missing npm package get one line, exit 2, with nothing written;
 // --check says only whether the packages are there.
 //
@@ -33,7 +34,7 @@
 //   --only NAME,...: only the engines whose motion name (without the version) is listed, e.g.
 //     babylonjs-havok,jolt-physics+gyroscopic.
 import { createHash } from 'node:crypto';
-import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
@@ -121,16 +122,20 @@ const reader = async () => {
                          '--flipcheck DIR or FLIPCHECK_PACKAGE=DIR (make npm builds BUILD/npm/package)');
   const index = join(flipcheck, 'index.mjs');
   if (!existsSync(index)) refuse(`${flipcheck}: no npm package flipcheck there (no index.mjs; make npm builds BUILD/npm/package)`);
-  return (await import(pathToFileURL(index).href)).readScenario;
+  const files = await import(pathToFileURL(join(flipcheck, 'files.mjs')).href);
+  return [(await import(pathToFileURL(index).href)).readScenario, files.notAFileReason];
 };
-const readScenario = await reader();
-/** A scenario file's JSON read by the one reader, or its one line naming the file. */
+const [readScenario, notAFileReason] = await reader();
+/** A scenario file's JSON read by the one reader, or its one line naming the file. Only a
+ * regular file is opened (a FIFO with no writer or a device is refused, never waited on). */
 const scenarioOf = (file) => {
   let text;
   try {
+    const why = notAFileReason(statSync(file));
+    if (why) refuse(`${file}: ${why}`);
     text = readFileSync(file, 'utf8');
   } catch (e) {
-    refuse(`${file}: ${e.code === 'ENOENT' ? 'no such file' : e.code === 'EISDIR' ? 'is a folder' : e.message}`);
+    refuse(`${file}: ${e.code === 'ENOENT' ? 'no such file' : e.message}`);
   }
   try {
     return readScenario(text, file);

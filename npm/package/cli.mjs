@@ -8,6 +8,7 @@
 // command line it keeps no manifest: it judges and writes every time.
 import { linkSync, lstatSync, mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { basename } from "node:path";
+import { notAFileReason } from "./files.mjs";
 import { exportFiles, judgeCsv, readScenario, scenario, scenarios, version } from "./index.mjs";
 
 const USAGE = `usage: flipcheck judge SCENARIO MOTION.csv... [-o DIR]
@@ -36,18 +37,6 @@ function inside(dir, name) {
   if (!/^[A-Za-z0-9][A-Za-z0-9._-]*$/.test(name))
     throw new InputError(`flipcheck: "${JSON.stringify(name).slice(1, -1)}" is no file name inside ${dir}`);
   return join(dir, name);
-}
-
-/** Why `stats` (statSync's, which follows a link and opens nothing) is no file to read, or ""
- * for a regular file: bookspin's not_a_file_reason() (src/common/text_file.hpp), so that a FIFO
- * with no writer or a device (/dev/zero) is refused before it is opened, never read without end. */
-function notAFileReason(stats) {
-  if (stats.isFile()) return "";
-  if (stats.isDirectory()) return "is a directory";
-  if (stats.isFIFO()) return "is a FIFO, not a regular file";
-  if (stats.isCharacterDevice() || stats.isBlockDevice()) return "is a device, not a regular file";
-  if (stats.isSocket()) return "is a socket, not a regular file";
-  return "not a regular file";
 }
 
 /** The reason a file cannot be read, as bookspin's read_text_file() words it: its text, or with

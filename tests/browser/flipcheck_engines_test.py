@@ -31,6 +31,7 @@ missing; a failure under CI=true.
 """
 import csv
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -89,7 +90,8 @@ def judged(bookspin, scene, motions, out):
 def refused(node, runner, args, want, out):
     """Runs the runner with `args`: exit 2, one line on stderr holding every string of `want`,
     nothing on stdout and nothing written to `out`; fail() otherwise."""
-    r = subprocess.run([str(node), str(runner), *map(str, args)], capture_output=True, text=True)
+    r = subprocess.run([str(node), str(runner), *map(str, args)], capture_output=True, text=True,
+                       timeout=300)
     lines = r.stderr.strip().splitlines()
     if r.returncode != 2 or len(lines) != 1 or r.stdout or any(w not in r.stderr for w in want):
         fail(f"{' '.join(map(str, args))}: exit {r.returncode}, expected 2 and one line with "
@@ -134,7 +136,13 @@ def check_refusals(node, source, scenario):
         broken.write_text('{"scenario": "x",\n  "mass": ]\n}\n')
         refused(node, runner, [out, broken], [str(broken), '"]" at line 2, column 11'], out)
         refused(node, runner, [out, tmp / "no-such.json"], ["no-such.json: no such file"], out)
-        refused(node, runner, [out, tmp], [f"{tmp}: is a folder"], out)
+        refused(node, runner, [out, tmp], [f"{tmp}: is a directory"], out)
+        # Only a regular file is opened: a FIFO with no writer and a device are refused at once
+        # (the test's own timeout would end a wait on either).
+        fifo = tmp / "s.json"
+        os.mkfifo(fifo)
+        refused(node, runner, [out, fifo], [f"{fifo}: is a FIFO, not a regular file"], out)
+        refused(node, runner, [out, "/dev/zero"], ["/dev/zero: is a device, not a regular file"], out)
 
 
 def main():
