@@ -108,8 +108,7 @@ Subcommand add_accuracy(CLI::App& cli) {
   cmd->add_option("SCENE", options.scene_path, "Scene file (TOML): book, initial spin, toggles")
       ->required();
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
-  cmd->add_option("-o,--out", options.out_dir, "Output directory for the CSV and the plot")
-      ->capture_default_str();
+  add_out_option(cmd, options.out_dir, "Output directory for the CSV and the plot");
   cmd->add_option("--flips", options.flips, "Run length in exact flip periods")
       ->check(finite_range(1.0, 1000.0))
       ->capture_default_str();

@@ -84,7 +84,7 @@ Subcommand add_explore(CLI::App& cli) {
       "Write OUT/explorer.html: the physics in the browser, one file that opens from "
       "disk, with these scenes (docs/explorer.md)");
   cmd->add_option("SCENE", options.scene_paths, "Scene files (TOML)")->required();
-  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  add_out_option(cmd, options.out_dir, "Output directory");
   cmd->add_option("--shell", options.shell,
                   "The page without its scenes, as web/build.sh writes it (default: "
                   "web/explorer-shell.html beside the bookspin program)");

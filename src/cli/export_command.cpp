@@ -69,7 +69,7 @@ Subcommand add_export(CLI::App& cli) {
   cmd->add_option("SCENE", options.scene_path, "Scene file (TOML), one model (no [[compare]])")
       ->required();
   cmd->add_flag("--gltf", options.gltf, "Write OUT/<scene>.glb")->required();
-  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  add_out_option(cmd, options.out_dir, "Output directory");
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
   cmd->add_option("--frames", options.frames,
                   "Export only the first N frames (overrides time.frames)")

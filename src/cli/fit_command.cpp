@@ -84,7 +84,7 @@ Subcommand add_fit(CLI::App& cli) {
                   "several: recordings of one body fitted together (docs/phone-lab.md, \"A "
                   "class's recordings\"), into OUT/<first>-and-<N-1>-more-fit.csv")
       ->required();
-  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  add_out_option(cmd, options.out_dir, "Output directory");
   cmd->add_option("--tosses", options.tosses,
                   "The flights by hand, START:END seconds, comma-separated (default: found)");
   cmd->add_option("--moments", options.moments,

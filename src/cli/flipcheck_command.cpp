@@ -119,7 +119,7 @@ int league_table(const FlipcheckOptions& options) {
 /// Every flipcheck subcommand's -o/--out, --set and freshness flags (its manifest `manifest`).
 void add_out_set_and_freshness(CLI::App* cmd, FlipcheckOptions& options,
                                const std::string& manifest) {
-  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  add_out_option(cmd, options.out_dir, "Output directory");
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
   add_freshness_flags(cmd, options.force, options.verify, manifest);
 }

@@ -55,7 +55,7 @@ Subcommand add_plot(CLI::App& cli) {
                   "Scene file (TOML); a comparison scene plots every panel")
       ->required();
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
-  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  add_out_option(cmd, options.out_dir, "Output directory");
   cmd->add_option("--width", options.width, "Image width in pixels")
       ->check(CLI::Range(320, scene::kMaxDimension))
       ->capture_default_str();

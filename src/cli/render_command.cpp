@@ -111,7 +111,7 @@ Subcommand add_render(CLI::App& cli) {
       "Render a scene to OUT/<scene>.mp4 (and/or .webm, .gif), OUT/<scene>/frames/ and "
       "OUT/<scene>/diagnostics.csv");
   cmd->add_option("SCENE", options.scene_path, "Scene file (TOML)")->required();
-  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  add_out_option(cmd, options.out_dir, "Output directory");
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
   cmd->add_option("--frames", options.frames,
                   "Render only the first N frames (overrides time.frames)")

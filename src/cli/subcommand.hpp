@@ -27,6 +27,11 @@ inline constexpr const char* kSetHelp =
 /// manifest file their help names.
 void add_freshness_flags(CLI::App* cmd, bool& force, bool& verify, const std::string& manifest);
 
+/// `-o,--out DIR` into `out_dir`, whose value when added is the default the help shows. An
+/// empty name is bad input (exit 2), worded as npx words it: "--out: expected a directory, got
+/// an empty name (leave it out for DEFAULT)", never a failed write to "".
+CLI::Option* add_out_option(CLI::App* cmd, std::string& out_dir, const std::string& help);
+
 /// `--frames N` is `--set time.frames=N`, after the user's own --set (so it wins); N = 0: not
 /// given, nothing appended.
 void frames_as_override(int frames, std::vector<std::string>& overrides);

@@ -115,7 +115,7 @@ Subcommand add_sweep(CLI::App& cli) {
   cmd->add_option("--shard", options.shard,
                   "K/N: only grid points with index = K mod N (K from 0, as SLURM_ARRAY_TASK_ID); "
                   "writes OUT/<scene>-sweep.shard-K-of-N.csv");
-  cmd->add_option("-o,--out", options.out_dir, "Output directory")->capture_default_str();
+  add_out_option(cmd, options.out_dir, "Output directory");
   cmd->add_option("--merge", options.merge,
                   "Merge shard CSVs into OUT/<scene>-sweep.csv and .png instead of running")
       ->allow_extra_args(true);

@@ -10,6 +10,7 @@
 
 #include "support/catalogue.hpp"
 #include "support/cli_runner.hpp"
+#include "support/scratch.hpp"
 
 namespace bookspin::cli {
 namespace {
@@ -203,6 +204,39 @@ TEST(BadInputs, OptionValuesAreEscapedInEveryMessage) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find('\r'), std::string::npos) << r.err;
+  }
+}
+
+// An empty output folder is bad input at every command that writes one, worded as npx words it
+// (npm/package/cli.mjs): exit 2, one line naming the default, nothing written in the working
+// folder; never a failed write to "" (exit 1 before).
+TEST(BadInputs, AnEmptyOutputFolderIsBadInputAtEveryCommandThatWritesOne) {
+  ScratchDir dir;
+  const std::string scene = scene_path("fig09-matrix-unstable-x");
+  const std::string kit =
+      std::string(BOOKSPIN_SOURCE_DIR) + "/scenes/flipcheck/mujoco-test-box.toml";
+  for (const auto& [args, fallback] : std::vector<std::pair<std::string, std::string>>{
+           {"render " + scene, "out"},
+           {"accuracy " + scene, "out"},
+           {"explore " + scene, "out"},
+           {"export " + scene, "out"},
+           {"plot " + scene, "out"},
+           {"sweep " + scene, "out"},
+           {"fit toss.csv", "out"},  // refused at the option, before the recording is read
+           {"flipcheck export " + kit, "out/flipcheck"}}) {
+    for (const std::string spelled : {" -o ''", " --out ''"}) {
+      std::string out;
+      const int status = run_shell("cd " + quoted(dir.path()) + " && " + std::string(BOOKSPIN_EXE) +
+                                       " " + args + spelled + " 2>&1",
+                                   out);
+      EXPECT_EQ(status, 2) << args << spelled << "\n" << out;
+      EXPECT_EQ(out,
+                "bookspin: error: --out: expected a directory, got an empty name (leave it "
+                "out for " +
+                    fallback + ") (see bookspin --help)\n")
+          << args << spelled;
+      EXPECT_TRUE(fs::is_empty(dir.path())) << args << spelled;
+    }
   }
 }
 
