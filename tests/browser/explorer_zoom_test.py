@@ -12,7 +12,12 @@ own boxes, not its element's: a line that runs past its box is caught), wrapped 
 be, never cut; the strip does not scroll sideways and neither does the page; where the page
 scrolls, its scroll bar is dark (it was white on the dark page).
 
-Screenshots: BINARY_DIR/test-output/browser/zoom-<case>-<W>x<H>.png.
+At 1280×720 with WCAG 1.4.12's text spacing put on fig09's page after it loaded (the W3C's
+style: line height 1.5, letters 0.12 em, words 0.16 em, paragraphs 2 em apart), every menu of
+the left column shows its chosen entry whole (the model menu read "rigid-matri"): the entry
+laid out in a span of the menu's font and spacing fits the menu less its arrow.
+
+Screenshots: BINARY_DIR/test-output/browser/zoom-<case>-<W>x<H>.png and text-spacing-1280x720.png.
 
 Usage: explorer_zoom_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
