@@ -57,19 +57,6 @@ function measurer(style) {
   return g;
 }
 
-/** Calls `refit` whenever the text of the left column is laid out wider or narrower without the
- * window changing (a reader's text spacing or font size put on the page after it loaded): a
- * hidden line of the column's text, watched for its size. */
-function onTextSpacing(refit) {
-  const probe = document.createElement('span');
-  probe.setAttribute('aria-hidden', 'true');
-  probe.textContent = 'rigid-matrix euler';
-  probe.style.cssText = 'position: absolute; left: 0; top: 0; visibility: hidden; white-space: pre; pointer-events: none;';
-  $('controls').appendChild(probe);
-  let first = true;
-  new ResizeObserver(() => { if (!first) refit(); first = false; }).observe(probe);
-}
-
 /** The menu's chosen entry shortened at a word, with "…", to what the closed menu shows (its
  * box less its padding and the arrow's 24 px), the others whole, so that no word is cut at the
  * menu's edge; the whole title is the line under the menu (#sceneTitle). Each entry's own text
@@ -135,7 +122,6 @@ export class Controls {
     // The menu lists the scenes by title (the value stays the scene's name, as in a link).
     scenes.forEach((s, i) => { if (s.title) $('scene').options[i + 1].textContent = s.title; });
     window.addEventListener('resize', () => { fitMenu($('scene')); fitChoices(); });
-    onTextSpacing(() => { fitMenu($('scene')); fitChoices(); });
     fillSelect('body', space.bodies);
     const models = space.models.concat(this.engineModels);
     fillSelect('model', models); fillSelect('model2', models);
