@@ -33,15 +33,16 @@ nav.contents ol ol { padding-left: 1.2rem; }
    player's place: a player prints as an empty box ("0:00 / 0:01"). */
 img.still { display: none; }
 /* On paper (docs/outputs.md, "The gallery on paper"): dark text on white, each clip's still
-   beside its chart, a clip's pictures never split between pages, the contents' links and the
+   beside its chart on one page, no picture split between pages, the contents' links and the
    players left out (a toss's player's poster is its chart, printed beside it already). */
 @media print {
   body { background: #fff; color: #000; margin: 0; max-width: none; padding: 0; }
   .clip { box-shadow: none; border: 1px solid #bbb; border-radius: 0; margin: 0 0 .8rem; padding: .5rem; }
   nav.contents, video { display: none; }
   img.still { display: block; }
-  .media { gap: .5rem; break-inside: avoid; }
-  .media:has(> img.still) { grid-template-columns: repeat(2, minmax(0, 1fr)); }
+  .media { gap: .5rem; }
+  .media > * { break-inside: avoid; }
+  .media:has(> img.still) { grid-template-columns: repeat(2, minmax(0, 1fr)); break-inside: avoid; }
   .media:has(> img.still) img { width: 100%; }
   .media img { max-width: 100%; height: auto; }
   .clip h2, .clip h3 { break-after: avoid; }
