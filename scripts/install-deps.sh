@@ -12,7 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev libmujoco-dev libbullet-dev libode-dev
   libceres-dev libminizip-dev libutf8proc-dev dpkg-dev
   clang clang-format libclang-rt-14-dev
-  chromium chromium-driver python3-selenium
+  chromium chromium-driver python3-selenium poppler-utils
   pybind11-dev python3-numpy python3-pytest python3-tqdm python3-pip python3-venv python3-setuptools
   python3-wheel jupyter-nbconvert python3-ipykernel python3-matplotlib
   slurm-wlm munge

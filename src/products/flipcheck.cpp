@@ -270,7 +270,24 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           "max-width: 40vw; }\n"
           "thead th:first-child { left: 0; z-index: 2; }\n"
           "dl.names dt { font-family: monospace; margin-top: 0.4em; }\n"
-          "dl.names dd { margin-left: 1.5em; }\n</style>\n</head>\n<body>\n"
+          "dl.names dd { margin-left: 1.5em; }\n"
+          // On paper every motion and every scenario (docs/flipcheck.md, "The league on paper"):
+          // the table's box as tall as the table (at the window's height it printed 5 of 37
+          // motions, and a scroll bar), the scenarios' columns the page's width (7 columns of
+          // 9em each ran 3 past A4's edge), a row never split, the scenarios' row over each
+          // page's rows, nothing sticky; the pass and fail colours kept.
+          "@media print {\n"
+          "  body { margin: 0; font-size: 9pt; color: #000; }\n"
+          "  .league { overflow: visible; max-height: none; width: auto; max-width: none; }\n"
+          "  table { width: 100%; table-layout: fixed; font-size: 7.5pt; }\n"
+          "  td { min-width: 0; }\n"
+          "  th, td { overflow-wrap: anywhere; padding: 0.2em 0.3em; }\n"
+          "  thead th, tbody th { position: static; max-width: none; }\n"
+          "  thead { display: table-header-group; }\n"
+          "  tr { break-inside: avoid; }\n"
+          "  a { color: #000; } td.none { color: #555; }\n"
+          "  th, td { print-color-adjust: exact; -webkit-print-color-adjust: exact; }\n"
+          "}\n</style>\n</head>\n<body>\n"
           // Every part of the page in one main landmark (docs/explorer.md, "For every person").
           "<main>\n<h1>Does the engine get the flip right? The league table</h1>\n"
           "<p>Each motion judged against the exact motion from the same start "

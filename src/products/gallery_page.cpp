@@ -29,6 +29,26 @@ nav.contents h2 { font-size: 1.1rem; margin: .2rem 0 .4rem; }
 nav.contents > ol { columns: 22rem; column-gap: 2rem; margin: 0; padding-left: 1.4rem; }
 nav.contents li { break-inside: avoid; margin: .15rem 0; }
 nav.contents ol ol { padding-left: 1.2rem; }
+/* A clip's still (its poster frame, which its player shows before play) is printed in its
+   player's place: a player prints as an empty box ("0:00 / 0:01"). */
+img.still { display: none; }
+/* On paper (docs/outputs.md, "The gallery on paper"): dark text on white, each clip's still
+   beside its chart on one page, no picture split between pages, the contents' links and the
+   players left out (a toss's player's poster is its chart, printed beside it already). */
+@media print {
+  body { background: #fff; color: #000; margin: 0; max-width: none; padding: 0; }
+  .clip { box-shadow: none; border: 1px solid #bbb; border-radius: 0; margin: 0 0 .8rem; padding: .5rem; }
+  nav.contents, video { display: none; }
+  img.still { display: block; }
+  .media { gap: .5rem; }
+  .media > * { break-inside: avoid; }
+  .media:has(> img.still) { grid-template-columns: repeat(2, minmax(0, 1fr)); break-inside: avoid; }
+  .media:has(> img.still) img { width: 100%; }
+  .media img { max-width: 100%; height: auto; }
+  .clip h2, .clip h3 { break-after: avoid; }
+  a { color: #000; text-decoration: none; }
+  .about, .made, .files, .missing { color: #222; }
+}
 /* A phone: the page's margins narrower, a clip's files wrapping at any point. */
 @media (max-width: 599px) {
   body { margin: 1rem auto; padding: 0 .5rem; }
@@ -70,6 +90,10 @@ void write_media(std::ostream& out, const GalleryEntry& e, const ImageSizes& siz
     out << "<video controls preload=\"metadata\" src=" << attr(e.video);
     if (!e.poster.empty()) out << " poster=" << attr(e.poster) << size_attrs(sizes, e.poster);
     out << "></video>\n";
+    // The same frame as an image, shown only on paper (kStyle, img.still).
+    if (!e.poster.empty())
+      out << "<img class=\"still\" src=" << attr(e.poster) << size_attrs(sizes, e.poster)
+          << " alt=\"frame of " << html_escape(e.title) << "\">\n";
   } else if (!e.poster.empty()) {
     out << "<img src=" << attr(e.poster) << size_attrs(sizes, e.poster) << " alt=\"frame of "
         << html_escape(e.title) << "\">\n";

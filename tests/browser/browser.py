@@ -258,3 +258,96 @@ def text_problems(driver):
     print(f"{len(texts)} text elements, the smallest {smallest} px")
     return problems
 
+
+
+# Paper sizes in inches (CDP Page.printToPDF's units): A4 (210×297 mm) and US Letter.
+PAPERS = {"A4": (8.27, 11.69), "Letter": (8.5, 11.0)}
+
+
+def print_to_pdf(driver, path, paper):
+    """The page printed as Chromium's Print does by default (the paper's size, portrait, its
+    default margins, no background graphics but those a page asks for) to `path`, a PDF, through
+    the DevTools protocol's Page.printToPDF; `paper` a key of PAPERS. Returns the path."""
+    import base64
+    width, height = PAPERS[paper]
+    pdf = driver.execute_cdp_cmd("Page.printToPDF", {
+        "paperWidth": width, "paperHeight": height, "printBackground": False,
+        "preferCSSPageSize": False})
+    Path(path).write_bytes(base64.b64decode(pdf["data"]))
+    return Path(path)
+
+
+def pdf_text(path, *options):
+    """The text of the PDF at `path` as pdftotext (poppler-utils) reads it back, with
+    `options` (e.g. "-raw": in the order the page drew it, a table's cells one after another);
+    pdftotext missing is missing()."""
+    pdftotext, = require("pdftotext")
+    return run([pdftotext, *options, str(path), "-"])
+
+
+def pdf_pages(path):
+    """The number of pages of the PDF at `path` (pdfinfo, poppler-utils)."""
+    pdfinfo, = require("pdfinfo")
+    for line in run([pdfinfo, str(path)]).splitlines():
+        if line.startswith("Pages:"):
+            return int(line.split()[1])
+    fail(f"pdfinfo names no page count for {path}")
+
+
+def pdf_to_png(path, prefix, dpi=60):
+    """Each page of the PDF at `path` as PREFIX-N.png (pdftoppm, poppler-utils), N from 1 (its
+    digits padded by pdftoppm); the PNGs' paths."""
+    pdftoppm, = require("pdftoppm")
+    run([pdftoppm, "-png", "-r", str(dpi), str(path), str(prefix)])
+    prefix = Path(prefix)
+    return sorted(prefix.parent.glob(prefix.name + "-*.png"))
+
+
+def squeezed(text):
+    """`text` without its white space: a PDF's text against the page's, wherever either wraps."""
+    return "".join(text.split())
+
+
+# JavaScript: under print media (the caller emulates it), every shown element with text of its
+# own: its text, its colour and the colour it is drawn on (the first ancestor's background not
+# transparent; the paper's white where none has one) as [r, g, b].
+PRINTED_COLOURS = """
+  const root = arguments[0] ? document.querySelector(arguments[0]) : document.body;
+  const rgb = (c) => (c.match(/[\\d.]+/g) || []).map(Number);
+  const under = (e) => {
+    for (let x = e; x && x.nodeType === 1; x = x.parentElement) {
+      const c = rgb(getComputedStyle(x).backgroundColor);
+      if (c.length === 3 || (c.length === 4 && c[3] > 0.5)) return c.slice(0, 3);
+    }
+    return [255, 255, 255];
+  };
+  return [...root.querySelectorAll('*')].filter((e) => e.checkVisibility() &&
+      [...e.childNodes].some((n) => n.nodeType === 3 && n.textContent.trim())).map((e) =>
+    [e.textContent.trim().slice(0, 50), rgb(getComputedStyle(e).color).slice(0, 3), under(e)]);
+"""
+
+
+def luminance(rgb):
+    """WCAG's relative luminance of an sRGB colour [r, g, b] in 0..255."""
+    def channel(c):
+        c /= 255
+        return c / 12.92 if c <= 0.03928 else ((c + 0.055) / 1.055) ** 2.4
+    r, g, b = map(channel, rgb)
+    return 0.2126 * r + 0.7152 * g + 0.0722 * b
+
+
+def pale_print(driver, root=None):
+    """Under emulated print media, the texts (of `root`, a selector, or the page) printed pale
+    or on a dark ground: a contrast with their ground under 4.5 (WCAG 1.4.3), or text lighter
+    than mid-grey, or a ground darker than it (the screen's dark theme on paper); a list of
+    [text, colour, ground]. Print media is left on."""
+    driver.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": "print"})
+    shown = driver.execute_script(PRINTED_COLOURS, root)
+    pale = []
+    for text, colour, ground in shown:
+        a, b = luminance(colour), luminance(ground)
+        contrast = (max(a, b) + 0.05) / (min(a, b) + 0.05)
+        if contrast < 4.5 or a > 0.2 or b < 0.5:
+            pale.append([text, colour, ground])
+    print(f"under print media: {len(shown)} texts, {len(pale)} pale or on a dark ground")
+    return pale

@@ -12,7 +12,12 @@ own boxes, not its element's: a line that runs past its box is caught), wrapped 
 be, never cut; the strip does not scroll sideways and neither does the page; where the page
 scrolls, its scroll bar is dark (it was white on the dark page).
 
-Screenshots: BINARY_DIR/test-output/browser/zoom-<case>-<W>x<H>.png.
+At 1280×720 with WCAG 1.4.12's text spacing put on fig09's page after it loaded (the W3C's
+style: line height 1.5, letters 0.12 em, words 0.16 em, paragraphs 2 em apart), every menu of
+the left column shows its chosen entry whole (the model menu read "rigid-matri"): the entry
+laid out in a span of the menu's font and spacing fits the menu less its arrow.
+
+Screenshots: BINARY_DIR/test-output/browser/zoom-<case>-<W>x<H>.png and text-spacing-1280x720.png.
 
 Usage: explorer_zoom_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
@@ -21,7 +26,7 @@ under CI=true, where that is a failure (browser.py).
 import base64
 import time
 
-from browser import fail, find_browser, open_browser, require, run, test_arguments
+from browser import fail, find_browser, open_browser, require, run, test_arguments, wait_for
 from explorer_test import load, slide_to
 from league_test import png_rows
 
@@ -52,6 +57,56 @@ READ = """
            runs: document.querySelectorAll('#status .run').length,
            methods: document.querySelectorAll('#status .method').length, lines };
 """
+
+
+# WCAG 1.4.12's text spacing, as a reader's own style sets it (the W3C's bookmarklet): line
+# height 1.5, letters 0.12 em apart, words 0.16 em, paragraphs 2 em.
+TEXT_SPACING = """
+  const s = document.createElement('style');
+  s.textContent = '* { line-height: 1.5 !important; letter-spacing: 0.12em !important; ' +
+    'word-spacing: 0.16em !important; } p { margin-bottom: 2em !important; }';
+  document.head.appendChild(s);
+"""
+
+# JavaScript: each menu of the left column but the scene's (which shortens its title with "…"):
+# its chosen entry's width as laid out in a span of the menu's own font and spacing, and the
+# room the menu gives its text (its inner width less its arrow's 16 px).
+MENU_TEXT = """
+  return [...document.querySelectorAll('#controls select:not(#scene)')].filter((m) => m.checkVisibility()).map((m) => {
+    const style = getComputedStyle(m), span = document.createElement('span');
+    for (const k of ['fontFamily', 'fontSize', 'fontWeight', 'fontStyle', 'letterSpacing', 'wordSpacing'])
+      span.style[k] = style[k];
+    span.style.whiteSpace = 'pre';
+    span.style.position = 'absolute';
+    span.textContent = m.selectedOptions[0].textContent;
+    document.body.appendChild(span);
+    const width = span.getBoundingClientRect().width;
+    span.remove();
+    return [m.id, m.selectedOptions[0].textContent, width,
+            m.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight) - 16];
+  });
+"""
+
+
+def text_spacing(driver, page, shots):
+    """At 1280×720 with WCAG 1.4.12's text spacing put on the page after it has loaded: every
+    menu of the left column shows its chosen entry whole ("rigid-matri" was cut); a list of
+    what is wrong."""
+    driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                           {"width": 1280, "height": 720, "deviceScaleFactor": 1, "mobile": False})
+    load(driver, page + "?scene=fig09-matrix-unstable-x")
+    driver.execute_script(TEXT_SPACING)
+    wait_for(driver, "return new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(true))))",
+             bool, 10)
+    menus = driver.execute_script(MENU_TEXT)
+    driver.save_screenshot(str(shots / "text-spacing-1280x720.png"))
+    print("text spacing at 1280x720: " + ", ".join(f"{m} {t!r} {w:.0f} px in {room:.0f}"
+                                                     for m, t, w, room in menus))
+    problems = [f"text spacing at 1280x720: the menu {m} cuts {t!r}: {w:.0f} px of text in {room:.0f} px"
+                for m, t, w, room in menus if w > room + 0.5]
+    if not any(t == "rigid-matrix" for _, t, _, _ in menus):
+        problems.append(f"text spacing at 1280x720: no menu shows rigid-matrix: {menus}")
+    return problems
 
 
 def main():
@@ -115,6 +170,7 @@ def main():
                     if brightness > 127:
                         problems.append(f"{at}: the page's scroll bar is light ({brightness:.0f} of 255) "
                                         f"on the dark page")
+        problems += text_spacing(driver, page, shots)
     if problems:
         fail("the readout at zoom:\n  " + "\n  ".join(problems))
     print("the readout at 300 % and 400 % of 1280x800 and 200 % of 1920x1080: every line whole")

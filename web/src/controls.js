@@ -46,14 +46,24 @@ function show(id, visible) {
   $(id).hidden = !visible;
 }
 
+/** A canvas's 2D context that measures text as `style` (an element's computed style) lays it
+ * out: its font, and its letter and word spacing, which a reader's own style may set (WCAG
+ * 1.4.12: measured without them, "rigid-matrix" was cut to "rigid-matri"). */
+function measurer(style) {
+  const g = document.createElement('canvas').getContext('2d');
+  g.font = `${style.fontStyle} ${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+  g.letterSpacing = style.letterSpacing === 'normal' ? '0px' : style.letterSpacing;
+  g.wordSpacing = style.wordSpacing === 'normal' ? '0px' : style.wordSpacing;
+  return g;
+}
+
 /** The menu's chosen entry shortened at a word, with "…", to what the closed menu shows (its
  * box less its padding and the arrow's 24 px), the others whole, so that no word is cut at the
  * menu's edge; the whole title is the line under the menu (#sceneTitle). Each entry's own text
  * is kept in its data-full. */
 export function fitMenu(menu) {
   const style = getComputedStyle(menu);
-  const g = document.createElement('canvas').getContext('2d');
-  g.font = `${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+  const g = measurer(style);
   const roomOf = () => menu.clientWidth - parseFloat(style.paddingLeft) - parseFloat(style.paddingRight) - 24;
   // Where the chosen title's first word does not fit beside the menu's name (a narrow column:
   // "Dzhanibekov's" showed as "Dzhanib …"), the menu goes to the line under its name, the
@@ -83,12 +93,11 @@ export function fitMenu(menu) {
  * no entry shows cut ("rigid-matri" at 1024×600); a menu wider than its row's room goes to the
  * line under its name (index.html). */
 export function fitChoices() {
-  const g = document.createElement('canvas').getContext('2d');
   // A number field likewise, as wide as its number and its padding and border (a toss's dt,
   // 1/240's "0.00416667", was cut at 1024×600).
   for (const menu of document.querySelectorAll('#controls select:not(#scene), #controls input[type=number]')) {
     const style = getComputedStyle(menu), option = menu.tagName === 'SELECT' ? menu.selectedOptions[0] : null;
-    g.font = `${style.fontStyle} ${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+    const g = measurer(style);
     const need = Math.ceil(menu.tagName === 'SELECT' ? (option ? g.measureText(option.textContent).width : 0) + 26
       : g.measureText(menu.value).width + 10);
     // Its chosen entry's width decides whether it fits beside its name (index.html: the row

@@ -14,6 +14,9 @@ import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas, niceTicks, tickLabel } from './plots.js';
 import { TossRecorder, announce } from './gyro_recorder.js';
 
+/** The outcome table's columns (LabPanel.showOutcome). */
+const OUTCOME_COLUMNS = ['toss', 'recording', 'flight (s)', 'T/2 measured (s)', 'T/2 predicted ± 2σ (s)', 'within 2σ'];
+
 const $ = (id) => document.getElementById(id);
 /** What each toss column says (docs/outputs.md, "The fit"). */
 const TOSS_WORDS = {
@@ -318,13 +321,15 @@ export class LabPanel {
         shown = `${predicted.toFixed(3)} (uncalibrated)`;
         title = t.prediction_interval || '';
       }
-      return `<tr><td>${html(t.toss)}</td><td class="words">${html(own)}</td>` +
-        `<td>${html(ms3(t.t_start))}–${html(ms3(t.t_end))}</td><td>${html(ms3(measured))}</td>` +
-        `<td title="${html(title)}">${html(shown)}</td><td>${html(within)}</td></tr>`;
+      // Each cell named by its column (data-label): on a phone a toss is a card of named lines
+      // (index.html, #labOutcome).
+      const [a, b, c, d, e, f] = OUTCOME_COLUMNS.map((name) => `data-label="${html(name)}"`);
+      return `<tr><td ${a}>${html(t.toss)}</td><td ${b} class="words">${html(own)}</td>` +
+        `<td ${c}>${html(ms3(t.t_start))}–${html(ms3(t.t_end))}</td><td ${d}>${html(ms3(measured))}</td>` +
+        `<td ${e} title="${html(title)}">${html(shown)}</td><td ${f}>${html(within)}</td></tr>`;
     });
     table.innerHTML = '<caption>T/2 measured against T/2 predicted from the other tosses</caption>' +
-      '<tr><th>toss</th><th>recording</th><th>flight (s)</th><th>T/2 measured (s)</th>' +
-      '<th>T/2 predicted ± 2σ (s)</th><th>within 2σ</th></tr>' + rows.join('');
+      `<tr>${OUTCOME_COLUMNS.map((name) => `<th>${html(name)}</th>`).join('')}</tr>` + rows.join('');
   }
 
   /** The body, the summary, each toss's row, chart and play button. */
