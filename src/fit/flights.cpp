@@ -29,9 +29,9 @@ constexpr int kIsolated = 2;  // samples: a run this short over the torque thres
 // A stretch over the bounds between two that keep within them, where the stamps lie off their
 // samples, is bridged where ω keeps |I ω| and ω·I ω across it within this share of their values
 // (docs/phone-lab.md, "Stamps off their samples"): a bare phone's flight re-stamped ±80 % of its
-// step needed 2.6 % at most, 4.4 % for 95 in 100 with gyroscope gain and cross-axis errors of
-// 3 %; the hands of the development recordings, nearest, 12 % (the catch of 12-13-01 re-timed
-// by a browser at 53 Hz: 79 % within 31 ms).
+// step needed 2.6 % at most, and 95 in 100 of its bridges 4.4 % with gyroscope gain and
+// cross-axis errors of 3 %; the hands of the development recordings, nearest, 12 % (the catch of
+// 12-13-01 re-timed by a browser at 53 Hz: 79 % within 31 ms).
 constexpr double kConserved = 0.08;
 // Such a stretch is at most what one stamp off its sample spoils (the samples whose derivative
 // window holds it), or any stretch whose neighbours are at most kBridgeTime apart.
