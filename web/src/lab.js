@@ -253,8 +253,8 @@ export class LabPanel {
       .then((r) => { if (r.error) throw new Error(r.error); return r; });
   }
 
-  /** The fit in flight ended (its worker terminated): the result, the error and the list as
-   * they were before it, saying so. */
+  /** Cancel the fit: the fit in flight ended (its worker terminated); fitFiles then leaves the
+   * result, the error and the list as they were before it, and says so. */
   cancel() {
     if (!this.worker.busy) return;
     this.worker.cancel();
@@ -273,11 +273,14 @@ export class LabPanel {
       return Promise.resolve();
     }
     const mine = this.generation = (this.generation || 0) + 1;
-    const earlier = { given: this.given, skipped: this.skipped };
+    const earlier = this.given;
     this.given = [files, paths];
     const { recordings, skipped } = recordingsOf(paths);
     if (!recordings.length) {
+      // A fit in flight ends (a later one's ask stands), saying nothing of itself.
       this.worker.cancel();
+      $('labBusy').textContent = '';
+      $('labCancel').hidden = true;
       this.clear();
       this.skipped = skipped;
       $('labError').textContent = `error: no recording among ${paths.join(', ')} (a phyphox export's Raw Data.csv or zip, or a t,wx,wy,wz CSV)`;
@@ -320,7 +323,7 @@ export class LabPanel {
         if (!current()) return;
         if (e instanceof Cancelled) {
           // Cancel: as before the fit, the files a change of the flights fits again too.
-          this.given = earlier.given;
+          this.given = earlier;
           $('labBusy').textContent = 'fit cancelled: the result and the recordings before it stand';
           announce($('labBusy').textContent);
           return;
@@ -460,17 +463,20 @@ export class LabPanel {
     // The result's first line said: the body's ratios and the first toss's row of the table.
     announce(spokenResult(r));
     // Charts after the layout: their size is the canvas's CSS size (drawn again when the window
-    // changes size: a phone turned). One a frame: six of them at once held a 6x slowed page
-    // for 0.5 s after the fit.
-    const draw = (k = 0) => {
-      if (this.result !== r || k >= r.tosses.length) return;
+    // changes size: a phone turned, all at once). As the fit lands, one a frame: six at once
+    // held a 6x slowed page for 0.5 s after the fit.
+    const chart = (k) => {
       const canvas = list.children[k] && list.children[k].querySelector('canvas');
       if (canvas) drawTossChart(canvas, r.charts[k]);
-      requestAnimationFrame(() => draw(k + 1));
     };
-    requestAnimationFrame(() => draw());
+    const oneAFrame = (k) => {
+      if (this.result !== r || k >= r.tosses.length) return;
+      chart(k);
+      requestAnimationFrame(() => oneAFrame(k + 1));
+    };
+    requestAnimationFrame(() => oneAFrame(0));
     if (this.redrawCharts) window.removeEventListener('resize', this.redrawCharts);
-    this.redrawCharts = () => requestAnimationFrame(() => draw());
+    this.redrawCharts = () => requestAnimationFrame(() => r.tosses.forEach((t, k) => chart(k)));
     window.addEventListener('resize', this.redrawCharts);
   }
 }
