@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -25,6 +26,7 @@
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
+#include "common/stop.hpp"
 #include "fit/fit.hpp"
 #include "guarded.hpp"
 #include "scene/limits.hpp"
@@ -185,6 +187,27 @@ std::vector<std::pair<double, double>> tosses_arg(const std::string& tosses) {
   return fit::parse_toss_ranges(tosses, fit::fit_option_names(fit::Reader::page).tosses);
 }
 
+/// The fit's progress told to `progress` (a JavaScript function, or undefined/null: none) as
+/// the page's fit worker reports it (web/src/fit_worker.js): progress("read", name, index,
+/// count) before each recording is read, then the fit's own stages as the command line's stop
+/// poll is asked them (fit::fit_report: "fit flights" once, "fit" at each solver iteration, "fit
+/// charts" before each toss's chart). Only told: the fit never stops at it, and its answer is
+/// the same with or without it.
+struct Progress {
+  val progress;
+  bool on() const { return !progress.isUndefined() && !progress.isNull(); }
+  void read(const std::string& name, int index, int count) const {
+    if (on()) progress(std::string("read"), name, index, count);
+  }
+  bookspin::StopPoll poll() const {
+    if (!on()) return {};
+    return [p = progress](std::string_view stage) {
+      p(std::string(stage));
+      return 0;
+    };
+  }
+};
+
 /// Empties kFolder (the folder in use cannot be removed: the root first).
 void clear_memory() {
   std::filesystem::current_path("/");
@@ -199,12 +222,12 @@ void clear_memory() {
 /// page's scene data; an empty array where the fitted moments make no body, as the command writes
 /// no scene)}.
 val report_value(const fit::GyroRecording& recording, bookspin::physics::DragLaw law,
-                 const std::vector<std::pair<double, double>>& tosses) {
+                 const std::vector<std::pair<double, double>>& tosses, const Progress& progress) {
   fit::FitRequest request;
   request.tosses = tosses;  // by hand: refused for several recordings, as the command's
   request.settings.drag = law;
   request.reader = fit::Reader::page;  // its remedies in the page's terms, not the options'
-  const fit::FitReport report = fit::fit_report(recording, request);
+  const fit::FitReport report = fit::fit_report(recording, request, progress.poll());
   std::vector<val> charts, scenes;
   for (const fit::TossReport& toss : report.tosses) {
     charts.push_back(chart_data(toss.chart));
@@ -226,14 +249,16 @@ val report_value(const fit::GyroRecording& recording, bookspin::physics::DragLaw
 
 /// `bookspin fit FILE --drag DRAG [--tosses TOSSES]`: report_value of the recording `bytes`
 /// named `file_name` (read_given), of the flights `tosses` by hand (tosses_arg; blank: those
-/// found), or {error}.
+/// found), or {error}; its progress told to `progress` (Progress).
 val fit_recording(const std::string& file_name, const std::string& bytes, const std::string& drag,
-                  const std::string& tosses) {
+                  const std::string& tosses, const val& progress) {
   return guarded([&] {
+    const Progress told{progress};
     const bookspin::physics::DragLaw law = drag_arg(drag);
     const std::vector<std::pair<double, double>> ranges = tosses_arg(tosses);
     clear_memory();
-    return report_value(fit::pool_recordings({read_given(file_name, bytes, 0)}), law, ranges);
+    told.read(file_name, 0, 1);
+    return report_value(fit::pool_recordings({read_given(file_name, bytes, 0)}), law, ranges, told);
   });
 }
 
@@ -244,9 +269,12 @@ val fit_recording(const std::string& file_name, const std::string& bytes, const 
 /// refused and the others fitted as one body (fit::pool_recordings; alone, as fit_recording).
 /// report_value plus fitted (the names fitted) and refused ([{file, error}: the command line's
 /// one line]); {error} when none can be read or the fit fails, and for flights by hand with
-/// two or more read (the command line's refusal: their times are one recording's).
-val fit_recordings(const val& files, const std::string& drag, const std::string& tosses) {
+/// two or more read (the command line's refusal: their times are one recording's). Its progress
+/// told to `progress` (Progress).
+val fit_recordings(const val& files, const std::string& drag, const std::string& tosses,
+                   const val& progress) {
   return guarded([&] {
+    const Progress told{progress};
     const bookspin::physics::DragLaw law = drag_arg(drag);
     const std::vector<std::pair<double, double>> ranges = tosses_arg(tosses);
     clear_memory();
@@ -259,6 +287,7 @@ val fit_recordings(const val& files, const std::string& drag, const std::string&
     std::string first_error;
     for (int i = 0; i < count; ++i) {
       const std::string name = files[i]["name"].as<std::string>();
+      told.read(name, i, count);
       std::vector<std::pair<std::string, std::string>> meta;
       const val given = files[i]["meta"];
       if (!given.isUndefined() && !given.isNull())
@@ -284,7 +313,7 @@ val fit_recordings(const val& files, const std::string& drag, const std::string&
       refused.call<void>("push", line);
     }
     if (read.empty()) throw InputError(count ? first_error : "no recording given");
-    val out = report_value(fit::pool_recordings(read), law, ranges);
+    val out = report_value(fit::pool_recordings(read), law, ranges, told);
     out.set("fitted", fitted);
     out.set("refused", refused);
     return out;

@@ -12,7 +12,9 @@ No toss lost:
     and fitted, and 1.5 s after the fit no new recording has started, the fit shown is that
     recording's;
   - its file's name is the phone's local time at the Stop (not UTC), within a minute;
-  - Record then Stop at once: "record for longer", the earlier result and the list untouched;
+  - Record then a double tap on Stop at once (80 ms apart): "record for longer", the earlier
+    result and the list untouched, and the second tap, on a button enabled again (no fit
+    follows), starts nothing: the AFTER_STOP_MS guard alone holds it;
   - a second real recording with "fit with the ticked recordings below": the pooled fit names
     both, in order, and each keeps its own download (the text of each fetched: its own rows);
   - the first unticked, "Fit the ticked": the second alone; Remove takes the first out;
@@ -30,7 +32,14 @@ focus stays on the control it was on.
 Kept across a reload (IndexedDB): the list and each download the same after a reload; a page
 refused IndexedDB says the list is not kept across a reload.
 The smaller ones: "stops after (s)" given 1 is held to its minimum of 2; on a landscape phone
-(844x390) Stop and the live trace are in view while recording.
+(844x390) Stop and the live trace are in view while recording; Back after "Play beside the
+measurement" returns to the lab, its result as it was.
+The fit in a worker (web/src/fit_worker.js), the CPU slowed 6x (a school Chromebook): three real
+recordings chosen in the file input and fitted as one body; no gap over 1 s between two frames
+(requestAnimationFrame's timestamps) during the fit, Escape closes the lab during it, each stage
+said in the live region, the answer equal as JSON to the main thread's fit of the same bytes
+(window.explorer.fitOnMainThread); a second fit cancelled (Cancel the fit): the result, summary
+and list as they were, and a fit after it answers.
 
 Usage: explorer_lab_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
@@ -165,16 +174,21 @@ def check_no_toss_lost(driver, page, first, second):
         fail(f"the recording's name {name} is not the local time at the Stop in {ZONE} "
              f"({stopped_at:%Y-%m-%d %H:%M:%S}): UTC was {datetime.datetime.now(datetime.timezone.utc):%H:%M:%S}")
 
-    # Record, then Stop at once: too short; the result and the list as they were.
+    # Record, then Stop at once with a nervous double tap (80 ms apart): too short; the result
+    # and the list as they were, and the second tap starts nothing. No fit follows this Stop, so
+    # the button is enabled again at once: only the AFTER_STOP_MS guard holds the second tap.
     start_recording(driver, "too short", w1[0])
     feed(driver, w1[1])
-    tap(driver, "labRecord")
+    double_tap(driver, "labRecord", 0.08)
     said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
                     lambda s: "record for longer" in s, 10)
-    if "record for longer" not in said or not result_unchanged(driver) or len(kept(driver)) != 1:
-        fail(f"Record then Stop at once: the page says {said!r}, the earlier result "
-             f"{'kept' if result_unchanged(driver) else 'replaced'}, {len(kept(driver))} recordings")
-    print(f"too short: {said}")
+    time.sleep(1)
+    phase = driver.execute_script("return window.explorer.labRecorderPhase()")
+    if "record for longer" not in said or not result_unchanged(driver) or len(kept(driver)) != 1 or phase != "idle":
+        fail(f"Record then a double tap on Stop at once: the page says {said!r} (now {state_line(driver)!r}), "
+             f"the phase {phase!r}, the earlier result {'kept' if result_unchanged(driver) else 'replaced'}, "
+             f"{len(kept(driver))} recordings")
+    print(f"too short, a double tap on Stop: {said}; the second tap started nothing")
 
     # A second toss pooled with the ticked one.
     tap(driver, "labRecordPool")
@@ -377,6 +391,170 @@ def check_kept_across_reload(driver, page, first):
         driver.execute_cdp_cmd("Page.removeScriptToEvaluateOnNewDocument", {"identifier": script["identifier"]})
 
 
+POOL = ("12-13-01", "12-13-51", "12-22-44")
+#: The CPU slowed as a school Chromebook is (issue: no frame for 7-15 s during a pooled fit).
+CHROMEBOOK = 6
+#: The longest gap between two frames allowed during the fit (ms): the page keeps drawing.
+FRAME_GAP_MS = 1000
+
+
+def frames_watched(driver):
+    """Starts window.frameGaps: every requestAnimationFrame timestamp's gap from the one before
+    (ms), kept until frames_stopped()."""
+    driver.execute_script("""const w = window.frameWatch = {gaps: [], last: null, on: true};
+        const step = (t) => { if (!w.on) return; if (w.last !== null) w.gaps.push(t - w.last); w.last = t;
+          requestAnimationFrame(step); };
+        requestAnimationFrame(step);""")
+
+
+def frames_stopped(driver):
+    """[frames drawn, the longest gap (ms)] since frames_watched()."""
+    return driver.execute_script("""const w = window.frameWatch; w.on = false;
+        return [w.gaps.length, Math.max(0, ...w.gaps)];""")
+
+
+def choose_files(driver, paths):
+    """The files `paths` chosen in the lab's file input, as a student picks them."""
+    from selenium.webdriver.common.by import By
+    driver.find_element(By.ID, "labFile").send_keys("\n".join(str(p) for p in paths))
+
+
+def busy(driver):
+    return driver.execute_script("return document.getElementById('labBusy').textContent")
+
+
+def check_fit_in_worker(driver, page, folder, out):
+    """The fit off the page's main thread (fit_worker.js): three real recordings chosen in the
+    lab's file input and fitted as one body with the CPU slowed 6x: the page draws through the
+    fit (no frame gap over FRAME_GAP_MS), Escape closes the lab during it, its progress is said
+    (each recording read, the flights, the fit), and its answer equals the main thread's fit of
+    the same bytes to the last digit (the whole value as JSON); then a second fit cancelled:
+    the result, the summary and the list before it as they were."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.keys import Keys
+    pool = out / "pool"
+    pool.mkdir(exist_ok=True)
+    paths = []
+    for name in POOL:
+        path = pool / f"{name}.csv"
+        shutil.copyfile(folder / name / "Raw Data.csv", path)
+        paths.append(path)
+    fresh(driver, page)
+    driver.execute_script("""window.said = [];
+        new MutationObserver(() => window.said.push(document.getElementById('labSpoken').textContent))
+          .observe(document.getElementById('labSpoken'), {childList: true, characterData: true, subtree: true});""")
+    mark_result(driver)
+    devtools(driver).call("Emulation.setCPUThrottlingRate", {"rate": CHROMEBOOK})
+    try:
+        frames_watched(driver)
+        choose_files(driver, paths)
+        # A stage of the fit shown (or, with the fit on the main thread, its end: nothing could
+        # be read before it).
+        wait_for(driver, """return [document.getElementById('labBusy').textContent,
+            window.explorer.labResult() !== window.explorer.before]""",
+                 lambda s: "finding the flights" in s[0] or "fitting the body" in s[0] or s[1], 120)
+        ActionChains(driver).send_keys(Keys.ESCAPE).perform()
+        closed = driver.execute_script("return [document.getElementById('lab').hidden, window.explorer.labFitBusy()]")
+        if closed[0]:
+            tap(driver, "labOpen")
+        wait_fit(driver, "the pooled fit in the worker")
+        frames, gap = frames_stopped(driver)
+    finally:
+        devtools(driver).call("Emulation.setCPUThrottlingRate", {"rate": 1})
+    counts = driver.execute_script("return window.explorer.labFitCounts()")
+    print(f"a pooled fit of {', '.join(POOL)} at {CHROMEBOOK}x slowed: {frames} frames, the longest gap "
+          f"{gap:.0f} ms; fits in the worker and on the main thread {counts}")
+    if gap > FRAME_GAP_MS or counts["main"] or not counts["worker"]:
+        fail(f"a pooled fit at {CHROMEBOOK}x slowed: a frame gap of {gap:.0f} ms (over {FRAME_GAP_MS} ms: "
+             f"the page froze), {frames} frames; fits {counts}")
+    if closed != [True, True]:
+        fail(f"Escape during the fit: the lab hidden {closed[0]}, the fit still running {closed[1]}: "
+             "Escape waited for the fit")
+    print("Escape closed the lab during the fit")
+    said = driver.execute_script("return window.said")
+    wanted = [f"reading {POOL[0]}.csv (1 of 3)", f"reading {POOL[2]}.csv (3 of 3)", "finding the flights",
+              "fitting the body and each toss", "toss 1: its chart and scene"]
+    missed = [w for w in wanted if w not in said]
+    if missed:
+        fail(f"the fit's progress: the live region said {said}, not {missed}")
+    print(f"progress said: {said[:8]}")
+    # The main thread's fit of the same bytes (the page's own module, as the lab fitted before
+    # its worker): the same value to the last digit.
+    same = driver.execute_script("""const texts = arguments[0];
+        const files = texts.map(([name, text]) => ({name, bytes: new TextEncoder().encode(text), meta: []}));
+        const reference = window.explorer.fitOnMainThread(files, document.getElementById('labDrag').value, '');
+        const shown = window.explorer.labResult();
+        return [JSON.stringify(reference) === JSON.stringify(shown), reference.error || '',
+                (reference.tosses || []).length, shown.tosses.length];""", [[p.name, p.read_text()] for p in paths])
+    if not same[0]:
+        fail(f"the worker's fit differs from the main thread's: {same}")
+    print(f"the worker's answer equals the main thread's to the last digit ({same[3]} tosses)")
+
+    # Cancel during a second fit: the result, its summary and the list as they were.
+    before = driver.execute_script("""return [document.getElementById('labSummary').textContent,
+        document.getElementById('labResult').hidden, document.getElementById('labError').textContent]""")
+    listed = kept(driver)
+    mark_result(driver)
+    devtools(driver).call("Emulation.setCPUThrottlingRate", {"rate": CHROMEBOOK})
+    try:
+        # The pool again (two recordings took the warm worker under a second: gone before a tap).
+        choose_files(driver, paths)
+        running = wait_for(driver, """return !document.getElementById('labCancel').hidden
+            && window.explorer.labFitBusy()""", bool, 30)
+        if not running:
+            fail(f"a second fit: no Cancel offered while it runs; the busy line {busy(driver)!r}")
+        tap(driver, "labCancel")
+        said = wait_for(driver, "return document.getElementById('labBusy').textContent",
+                        lambda s: s.startswith("fit cancelled"), 10)
+    finally:
+        devtools(driver).call("Emulation.setCPUThrottlingRate", {"rate": 1})
+    after = driver.execute_script("""return [document.getElementById('labSummary').textContent,
+        document.getElementById('labResult').hidden, document.getElementById('labError').textContent]""")
+    running = driver.execute_script("return window.explorer.labFitBusy()")
+    if not said.startswith("fit cancelled") or running or after != before or not result_unchanged(driver) \
+            or kept(driver) != listed:
+        fail(f"Cancel during a fit: the page says {said!r}, a fit still running {running}, the result "
+             f"{'kept' if result_unchanged(driver) else 'replaced'}, the summary/hidden/error {after[1:]} "
+             f"for {before[1:]}, the list {kept(driver)} for {listed}")
+    # Fitted again after the Cancel: a fresh worker answers.
+    choose_files(driver, paths[:1])
+    wait_fit(driver, "a fit after the Cancel")
+    print(f"Cancel during a fit: {said}; the result before it kept; a fit after it answers")
+
+
+def check_back_after_play(driver, page, folder, out):
+    """Back after "Play beside the measurement" returns to the lab, its result as it was (not a
+    rewind of the toss played)."""
+    path = out / f"{FIRST}.csv"
+    shutil.copyfile(folder / FIRST / "Raw Data.csv", path)
+    fresh(driver, page)
+    mark_result(driver)
+    choose_files(driver, [path])
+    result = wait_fit(driver, "back after play")
+    before = driver.execute_script("return [window.explorer.state().scene, location.search]")
+    box = driver.execute_script("""const b = document.querySelector('#labTosses .tossHead button');
+        b.scrollIntoView({block: 'center'}); const r = b.getBoundingClientRect();
+        return [b.textContent, r.left + r.width / 2, r.top + r.height / 2];""")
+    if box[0] != "Play beside the measurement":
+        fail(f"back after play: the toss's button says {box[0]!r}")
+    touch_at(driver, {"x": box[1], "y": box[2]})
+    toss = result["scenes"][0]["name"]
+    playing = wait_for(driver, """return [document.getElementById('lab').hidden, window.explorer.state().scene,
+        document.getElementById('play').textContent]""", lambda s: s[0] and s[1] == toss, 20)
+    if playing[:2] != [True, toss]:
+        fail(f"Play beside the measurement: the lab hidden {playing[0]}, the scene {playing[1]!r}, not {toss!r}")
+    time.sleep(1)  # the toss plays a moment
+    mark_result(driver)
+    driver.back()
+    back = wait_for(driver, """return [document.getElementById('lab').hidden, window.explorer.state().scene,
+        location.search, document.getElementById('labResult').hidden]""", lambda s: not s[0], 10)
+    if back[0] or back[3] or not result_unchanged(driver) or back[1] != before[0]:
+        fail(f"Back after Play beside the measurement: the lab hidden {back[0]}, the scene {back[1]!r} "
+             f"(before Play {before[0]!r}), the result {'hidden' if back[3] else 'shown'} and "
+             f"{'kept' if result_unchanged(driver) else 'replaced'}: not back in the lab")
+    print(f"Back after Play beside the measurement: the lab again, its result as it was, the scene {back[1]!r}")
+
+
 def check_smaller(driver, page, first):
     """"stops after (s)" held to its minimum of 2; on a landscape phone (844x390) the Stop button
     and the live trace in view while recording."""
@@ -441,7 +619,9 @@ def main():
                   "address": lambda: check_fitted_toss_address(driver, page),
                   "announced": lambda: check_announced(driver, page, first),
                   "kept": lambda: check_kept_across_reload(driver, page, first),
-                  "smaller": lambda: check_smaller(driver, page, first)}
+                  "smaller": lambda: check_smaller(driver, page, first),
+                  "worker": lambda: check_fit_in_worker(driver, page, folder, out),
+                  "back": lambda: check_back_after_play(driver, page, folder, out)}
         for name, check in checks.items():
             if not chosen or name in chosen:
                 check()

@@ -29,7 +29,12 @@ export class Address {
     const href = this.href(lead);
     if (this.pushing) {
       this.pushing = false;
-      if (href !== location.pathname + location.search + location.hash) { history.pushState(null, '', href); return; }
+      // The address now in href's own form (`?query#panel`, or the path without a query): an
+      // entry the same as the one before is not pushed again ("Play beside the measurement"
+      // pushed the toss's scene twice, once for the scene and once for the lab closing, so
+      // Back went to the toss again, rewound, not to the lab).
+      const here = (location.search || location.pathname) + location.hash;
+      if (href !== here) { history.pushState(null, '', href); return; }
     }
     history.replaceState(null, '', href);
   }

@@ -85,6 +85,14 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     /** `bookspin fit FILE1 FILE2 … --drag DRAG` in the page: `files` [{name, bytes}]; a promise
      * of fitRecording's value plus fitted and refused ([{file, error}]) (lab.js fitMany). */
     fitRecordings: (files, drag = 'linear', tosses = '') => app.lab.fitMany(files, drag, tosses),
+    /** fitRecordings' value computed on the page's main thread, by the page's own module (as
+     * the lab fitted before its worker, fit_worker.js): the reference the worker's answers
+     * must equal to the last digit; {error} for a bad one. */
+    fitOnMainThread: (files, drag = 'linear', tosses = '') => app.lab.wasm.fitRecordings(files, drag, tosses, undefined),
+    /** The lab's calls answered by its worker and on the main thread (fit_worker.js). */
+    labFitCounts: () => ({ ...app.lab.worker.counts }),
+    /** Whether a fit of the lab's is in flight (in its worker). */
+    labFitBusy: () => app.lab.worker.busy,
     /** Plays `scene` (one of fitRecording's scenes) as the lab's Play button does. */
     playToss: (scene) => app.lab.play(scene),
     /** The lab's last fit shown (lab.js show: fitRecording's value), null before one. */

@@ -3,8 +3,11 @@
 // scenario JSON and exact-motion CSV come from the same code as `bookspin flipcheck export`,
 // and an engine's motion CSV is judged by the same code as `judge` (web/judge_bindings.cpp:
 // the motion CSV's parser, analysis::judge_motion and its table, compiled to WebAssembly).
+// The judgement, the replay's poses and the export run in a Web Worker of the panel's own
+// (fit_worker.js, as the lab's fit): the page draws and answers while a long motion is judged.
 // Nothing is measured here: this module hands text to the module and writes out its answer.
 import { takeFiles } from './file_drop.js';
+import { FitWorker, Cancelled } from './fit_worker.js';
 import { Replay } from './replay.js';
 import { modalPanel } from './modal.js';
 import { asGiven, significant, wholeNumbers } from './precision.js';
@@ -122,6 +125,8 @@ function download(name, text, type) {
 export class JudgePanel {
   constructor(wasm, scenes, currentScene) {
     this.wasm = wasm;
+    // One call at a time: a new file judged (or an export) ends the one before.
+    this.worker = new FitWorker(wasm);
     // The kit's scenarios (scenes/flipcheck/, `kit` in bookspin explore's data) where the page
     // holds them; in a page of other scenes, every scene flipcheck takes.
     const takes = scenes.filter(isScenario), kit = takes.filter((s) => s.kit);
@@ -183,13 +188,12 @@ export class JudgePanel {
     const scene = this.scene($('judgeScenario').value);
     if (!scene) return;
     $('judgeBusy').textContent = 'making the exact motion…';
-    setTimeout(() => {
-      const files = this.files(scene.name);
-      $('judgeBusy').textContent = '';
+    this.worker.call('flipcheckExport', [scenarioSpec(scene)]).then((files) => {
       if (files.error) { $('judgeError').textContent = `error: ${files.error}`; return; }
       if (kind === 'json') download(`${scene.name}.json`, files.json, 'application/json');
       else download(`${scene.name}-exact.csv`, files.csv, 'text/csv');
-    }, 0);
+    }, (e) => { if (!(e instanceof Cancelled)) $('judgeError').textContent = `error: ${e.message}`; })
+      .finally(() => { if (!this.worker.busy) $('judgeBusy').textContent = ''; });
   }
 
   /** {json, csv}: the files `bookspin flipcheck export` writes for scenario `name`, or {error}. */
@@ -201,7 +205,8 @@ export class JudgePanel {
   /** Judges `csvText` (named `file`, as `judge` names a motion by its file's name) against
    * the exact motion of scenario `name`: a promise of the judgement keyed by the judgement
    * CSV's columns, with `line` (the command line's verdict line) and `failures` (a list)
-   * beside them in `detail`; rejected with the command line's one line for a bad file. */
+   * beside them in `detail`; rejected with the command line's one line for a bad file (and
+   * with Cancelled where a later call ended it). Judged in the panel's worker. */
   async judge(name, csvText, file = 'motion.csv') {
     const scene = this.scene(name);
     if (!scene) throw new Error(`${name}: no such scenario in this page`);
@@ -209,7 +214,7 @@ export class JudgePanel {
     const spec = scenarioSpec(scene);
     const json = this.wasm.flipcheckScenarioFile(spec);
     if (json.error) throw new Error(json.error);
-    const r = this.wasm.judgeMotion(spec, await sha256Hex(json), String(csvText), file);
+    const r = await this.worker.call('judgeMotion', [spec, await sha256Hex(json), String(csvText), file]);
     if (r.error) throw new Error(r.error);
     return { row: keyed(r), line: r.line, failures: r.failures };
   }
@@ -219,14 +224,14 @@ export class JudgePanel {
     const name = $('judgeScenario').value;
     this.clear();
     $('judgeBusy').textContent = `judging ${file.name}…`;
-    file.text().then((text) => new Promise((ok) => setTimeout(ok, 0)).then(() => this.judge(name, text, file.name))
+    file.text().then((text) => this.judge(name, text, file.name)
       .then((j) => {
         this.show(j);
-        const poses = this.wasm.motionPoses(scenarioSpec(this.scene(name)), text, file.name);
-        if (!poses.error) this.replay.start(poses, this.scene(name));
-      }))
-      .catch((e) => { $('judgeError').textContent = `error: ${e.message}`; })
-      .finally(() => { $('judgeBusy').textContent = ''; });
+        return this.worker.call('motionPoses', [scenarioSpec(this.scene(name)), text, file.name]);
+      })
+      .then((poses) => { if (!poses.error) this.replay.start(poses, this.scene(name)); }))
+      .catch((e) => { if (!(e instanceof Cancelled)) $('judgeError').textContent = `error: ${e.message}`; })
+      .finally(() => { if (!this.worker.busy) $('judgeBusy').textContent = ''; });
   }
 
   /** The verdict, the failures in words and every number, as `judge` gives them. */

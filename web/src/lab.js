@@ -4,8 +4,10 @@
 // same solver as the command line's (web/fit_bindings.cpp: src/fit with Ceres, compiled to
 // WebAssembly); the panel shows the body's moment ratios and axes, each toss's row and its
 // chart (measured and fitted ω), and plays each toss in the explorer beside its measurement, as
-// `bookspin explore` plays a toss scene the command line wrote. Nothing is fitted here: this
-// module hands bytes to the module and writes out its answer.
+// `bookspin explore` plays a toss scene the command line wrote. The fit runs in a Web Worker
+// (fit_worker.js): the page draws and answers during it, says its progress, and its Cancel
+// leaves the result before as it was. Nothing is fitted here: this module hands bytes to the
+// module and writes out its answer.
 import { recordingsOf, takeFiles } from './file_drop.js';
 import { modalPanel } from './modal.js';
 import { plusMinus, significant, wholeNumbers } from './precision.js';
@@ -13,6 +15,7 @@ import { axisText } from './lab_numbers.js';
 import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas, niceTicks, tickLabel } from './plots.js';
 import { TossRecorder, announce } from './gyro_recorder.js';
+import { FitWorker, Cancelled } from './fit_worker.js';
 
 /** The outcome table's columns (LabPanel.showOutcome). */
 const OUTCOME_COLUMNS = ['toss', 'recording', 'flight (s)', 'T/2 measured (s)', 'T/2 predicted ± 2σ (s)', 'within 2σ'];
@@ -162,6 +165,21 @@ export function spokenResult(r) {
     `${plusMinus(b.I1_over_I3, b.I1_sigma)} : ${plusMinus(b.I2_over_I3, b.I2_sigma)} : 1${row}; the result is below`;
 }
 
+/** A stage of the fit as the worker tells it (web/fit_bindings.cpp: "read" NAME INDEX COUNT
+ * before each recording, then the fit's own stages: "fit flights", "fit" with the solver's
+ * iterations so far, "fit charts" before each toss's chart, `charts` of them so far): [the busy
+ * line's words, the words said once (without the iterations)]. */
+export function fitProgress(stage, details, charts) {
+  if (stage === 'read') {
+    const line = `reading ${details[0]} (${details[1] + 1} of ${details[2]})`;
+    return [line, line];
+  }
+  if (stage === 'fit flights') return ['finding the flights', 'finding the flights'];
+  if (stage === 'fit') return [`fitting the body and each toss (solver step ${details[0]})`, 'fitting the body and each toss'];
+  if (stage === 'fit charts') return [`toss ${charts}: its chart and scene`, `toss ${charts}: its chart and scene`];
+  return [stage, stage];
+}
+
 /** The panel over the WebAssembly module; `play(scene)` plays a toss's scene in the explorer. */
 export class LabPanel {
   /** The `play` of a page with scenes `scenes` (the page's list) and `controls`: a fitted toss
@@ -181,11 +199,13 @@ export class LabPanel {
    * nothing else, so that the sensor's readings reach the recorder on a slow phone). */
   constructor(wasm, play, onRecording = () => {}) {
     this.wasm = wasm;
+    this.worker = new FitWorker(wasm);
     this.play = play;
     this.result = null;
     this.skipped = [];
     $('labOpen').addEventListener('click', () => this.open());
     $('labClose').addEventListener('click', () => this.close());
+    $('labCancel').addEventListener('click', () => this.cancel());
     modalPanel($('lab'), $('labOpen'), () => this.close());
     takeFiles([$('labFile'), $('labFolder')], $('labDrop'), (files, paths) => this.fitFiles(files, paths));
     // A toss recorded by this phone's gyroscope (gyro_recorder.js): its CSV fitted as a dropped
@@ -216,17 +236,12 @@ export class LabPanel {
    * --tosses`' syntax; blank: the flights found): a promise of {recording, body (the -fit-body.csv row keyed by its
    * columns), tosses (the -fit.csv rows), summary (the lines the command prints), charts,
    * scenes (each toss as the page's scene data)}; rejected with the command line's one line
-   * (without "bookspin: error: ") for a bad file or range, a range's naming the field. */
-  fit(file, bytes, drag = 'linear', tosses = '') {
-    return new Promise((resolve, reject) => {
-      // A turn of the event loop first: the panel says "fitting…" before the module works.
-      setTimeout(() => {
-        try {
-          const r = this.wasm.fitRecording(String(file), bytes, String(drag), String(tosses));
-          if (r.error) reject(new Error(r.error)); else resolve(r);
-        } catch (e) { reject(e); }
-      }, 0);
-    });
+   * (without "bookspin: error: ") for a bad file or range, a range's naming the field, and
+   * with Cancelled by cancel() or a later fit. Run in the lab's worker (fit_worker.js);
+   * `onProgress(stage, …details)` is told each stage (fitProgress's words). */
+  fit(file, bytes, drag = 'linear', tosses = '', onProgress = () => {}) {
+    return this.worker.call('fitRecording', [String(file), bytes, String(drag), String(tosses)], onProgress)
+      .then((r) => { if (r.error) throw new Error(r.error); return r; });
   }
 
   /** Several recordings of one body (`bookspin fit FILE1 FILE2 … --drag DRAG`, docs/phone-lab.md,
@@ -234,50 +249,98 @@ export class LabPanel {
    * export's [{name: 'time.csv' or 'device.csv', bytes}]); a promise of fit()'s value plus
    * fitted (the names fitted) and refused ([{file, error}]), those that cannot be read left out;
    * rejected when none can be read, and for flights by hand `tosses` with two or more read
-   * (their times are one recording's: the command line refuses --tosses so). */
-  fitMany(files, drag = 'linear', tosses = '') {
-    return new Promise((resolve, reject) => {
-      setTimeout(() => {
-        try {
-          const r = this.wasm.fitRecordings(files, String(drag), String(tosses));
-          if (r.error) reject(new Error(r.error)); else resolve(r);
-        } catch (e) { reject(e); }
-      }, 0);
-    });
+   * (their times are one recording's: the command line refuses --tosses so). In the worker,
+   * as fit(). */
+  fitMany(files, drag = 'linear', tosses = '', onProgress = () => {}) {
+    return this.worker.call('fitRecordings', [files, String(drag), String(tosses)], onProgress)
+      .then((r) => { if (r.error) throw new Error(r.error); return r; });
+  }
+
+  /** Cancel the fit: the fit in flight ended (its worker terminated); fitFiles then leaves the
+   * result, the error and the list as they were before it, and says so. */
+  cancel() {
+    if (!this.worker.busy) return;
+    this.worker.cancel();
   }
 
   /** Files chosen or dropped (`paths`: each one's name, or its path in a dropped folder): the
    * recordings among them (file_drop.js, recordingsOf) read as bytes, fitted (several as one
-   * body), of the flights by hand in the panel's field (none: those found), shown; a
-   * folder's other files skipped and named; a promise that settles when the fit has ended. */
+   * body) in the worker, of the flights by hand in the panel's field (none: those found),
+   * shown; a folder's other files skipped and named; a promise that settles when the fit has
+   * ended. Until then the result, the error and the list before it stay as they were (a fit
+   * cancelled leaves them so); its progress is said in the busy line and the live region; a
+   * later fit ends this one. */
   fitFiles(files, paths = files.map((f) => f.webkitRelativePath || f.name)) {
     if (this.recorder.recording) {
       $('labError').textContent = 'error: recording: a fit waits until the recording stops (tap Stop, then fit again)';
       return Promise.resolve();
     }
-    this.clear();
+    const mine = this.generation = (this.generation || 0) + 1;
+    const earlier = this.given;
     this.given = [files, paths];
     const { recordings, skipped } = recordingsOf(paths);
-    this.skipped = skipped;
     if (!recordings.length) {
+      // A fit in flight ends (a later one's ask stands), saying nothing of itself.
+      this.worker.cancel();
+      $('labBusy').textContent = '';
+      $('labCancel').hidden = true;
+      this.clear();
+      this.skipped = skipped;
       $('labError').textContent = `error: no recording among ${paths.join(', ')} (a phyphox export's Raw Data.csv or zip, or a t,wx,wy,wz CSV)`;
       announce($('labError').textContent);
       return Promise.resolve();
     }
-    $('labBusy').textContent = `fitting ${recordings.map((r) => r.path).join(', ')}…`;
-    announce($('labBusy').textContent);
+    const what = `fitting ${recordings.map((r) => r.path).join(', ')}…`;
+    $('labBusy').textContent = what;
+    $('labCancel').hidden = false;
+    announce(what);
+    let said = '', charts = 0;
+    const progress = (stage, ...details) => {
+      if (mine !== this.generation) return;
+      if (stage === 'fit charts') charts += 1;
+      const [line, spoken] = fitProgress(stage, details, charts);
+      $('labBusy').textContent = `${what} ${line}`;
+      // Said once a stage (each recording read, each toss's chart): not each solver step.
+      if (spoken !== said) { said = spoken; announce(spoken); }
+    };
     const started = performance.now();
     const drag = $('labDrag').value;
     const tosses = $('labFlights').value;
     const bytes = (k) => files[k].arrayBuffer().then((b) => new Uint8Array(b));
+    const current = () => mine === this.generation;
     return Promise.all(recordings.map((r) => Promise.all([bytes(r.index), ...r.meta.map((m) => bytes(m.index))])
       .then(([own, ...meta]) => ({ name: r.path, bytes: own, meta: r.meta.map((m, k) => ({ name: m.name, bytes: meta[k] })) }))))
-      .then((given) => (given.length === 1 && !given[0].meta.length
-        ? this.fit(given[0].name, given[0].bytes, drag, tosses)
-        : this.fitMany(given, drag, tosses)))
-      .then((r) => { this.show(r, performance.now() - started); })
-      .catch((e) => { $('labError').textContent = `error: ${e.message}`; announce($('labError').textContent); })
-      .finally(() => { $('labBusy').textContent = ''; });
+      .then((given) => {
+        if (!current()) throw new Cancelled();
+        return given.length === 1 && !given[0].meta.length
+          ? this.fit(given[0].name, given[0].bytes, drag, tosses, progress)
+          : this.fitMany(given, drag, tosses, progress);
+      })
+      .then((r) => {
+        if (!current()) return;
+        this.clear();
+        this.skipped = skipped;
+        this.show(r, performance.now() - started);
+      })
+      .catch((e) => {
+        if (!current()) return;
+        if (e instanceof Cancelled) {
+          // Cancel: as before the fit, the files a change of the flights fits again too.
+          this.given = earlier;
+          $('labBusy').textContent = 'fit cancelled: the result and the recordings before it stand';
+          announce($('labBusy').textContent);
+          return;
+        }
+        this.clear();
+        this.skipped = skipped;
+        $('labError').textContent = `error: ${e.message}`;
+        announce($('labError').textContent);
+      })
+      .finally(() => {
+        if (!current()) return;
+        if ($('labBusy').textContent.startsWith(what)) $('labBusy').textContent = '';
+        $('labCancel').hidden = true;
+      });
   }
 
   /** Every stretch the finder dropped, a line each (`bookspin fit --verbose`'s lines), folded
@@ -405,14 +468,20 @@ export class LabPanel {
     // The result's first line said: the body's ratios and the first toss's row of the table.
     announce(spokenResult(r));
     // Charts after the layout: their size is the canvas's CSS size (drawn again when the window
-    // changes size: a phone turned).
-    const draw = () => r.tosses.forEach((t, k) => {
+    // changes size: a phone turned, all at once). As the fit lands, one a frame: six at once
+    // held a 6x slowed page for 0.5 s after the fit.
+    const chart = (k) => {
       const canvas = list.children[k] && list.children[k].querySelector('canvas');
       if (canvas) drawTossChart(canvas, r.charts[k]);
-    });
-    requestAnimationFrame(draw);
+    };
+    const oneAFrame = (k) => {
+      if (this.result !== r || k >= r.tosses.length) return;
+      chart(k);
+      requestAnimationFrame(() => oneAFrame(k + 1));
+    };
+    requestAnimationFrame(() => oneAFrame(0));
     if (this.redrawCharts) window.removeEventListener('resize', this.redrawCharts);
-    this.redrawCharts = () => requestAnimationFrame(draw);
+    this.redrawCharts = () => requestAnimationFrame(() => r.tosses.forEach((t, k) => chart(k)));
     window.addEventListener('resize', this.redrawCharts);
   }
 }

@@ -40,6 +40,14 @@ async function unpackEngines(text) {
   return window.BOOKSPIN_ENGINES || [];
 }
 
+/** A promise of the physics' WebAssembly bytes, inflated afresh (a Uint8Array of its own, for
+ * the lab's fit worker: fit_worker.js); null where the page carries it unpacked (the module
+ * then reads its own inlined copy). */
+export function physicsBytes() {
+  const packedWasm = window.BOOKSPIN_WASM_PACKED;
+  return packedWasm ? inflate(packedWasm) : Promise.resolve(null);
+}
+
 /** A promise of [the WebAssembly module (BookspinPhysics), the engines' adapters, loaded]: an
  * engine that fails to load is left out, with a warning; [] without --engines. */
 export function loadProgram() {
