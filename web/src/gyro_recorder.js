@@ -90,14 +90,55 @@ export function droppedReadings(t) {
 /** The share of the sensor's readings a page may drop before the note says it was busy. */
 export const BUSY_SHARE = 0.1;
 
-/** One line where the page was too busy to take the sensor's readings (more than BUSY_SHARE
- * of them dropped: `csv` recordingCsv's value, with its times), '' otherwise. */
-export function busyProblem(csv) {
+/** The heartbeat (ms) of PageLag: a timer the page asks for this often while recording. */
+export const LAG_BEAT_MS = 20;
+/** The share of a recording the page may be held up (PageLag) before the note says it was
+ * busy. A steady busy page keeps the readings at its own pace, every step alike, so the stamps
+ * alone (droppedReadings) cannot tell it from a slow sensor; the page's own clock can. */
+export const LAG_SHARE = 0.25;
+
+/** How long the page could not run while recording: a timer asked every LAG_BEAT_MS, each
+ * beat's lateness (past the beat) summed. Held up by its own long tasks or by a phone whose
+ * CPU goes to other apps alike; measured on the page's clock, not from the sensor's stamps. */
+export class PageLag {
+  start() {
+    this.stop();
+    this.begun = this.last = performance.now();
+    this.held = 0;
+    this.longest = 0;
+    const beat = () => {
+      const now = performance.now();
+      const late = Math.max(0, now - this.last - LAG_BEAT_MS);
+      this.held += late;
+      this.longest = Math.max(this.longest, late);
+      this.last = now;
+      this.timer = setTimeout(beat, LAG_BEAT_MS);
+    };
+    this.timer = setTimeout(beat, LAG_BEAT_MS);
+  }
+
+  /** Stops the heartbeat: {share (of the time since start, 0 to 1), longest (s)}. */
+  stop() {
+    clearTimeout(this.timer);
+    this.timer = 0;
+    const span = this.begun === undefined ? 0 : performance.now() - this.begun;
+    return { share: span > 0 ? Math.min(1, this.held / span) : 0, longest: (this.longest || 0) / 1000 };
+  }
+}
+
+/** One line where the page was too busy to take the sensor's readings, '' otherwise: held up
+ * for more than LAG_SHARE of the recording (`lag`, PageLag's), or more than BUSY_SHARE of the
+ * readings dropped against the commonest step (`csv` recordingCsv's value, with its times). */
+export function busyProblem(csv, lag = { share: 0, longest: 0 }) {
+  const fix = 'not a slow sensor: close the other apps and tabs, keep the phone\'s battery saver off, and record again';
+  if (lag.share > LAG_SHARE)
+    return `the page was busy: it could not run for ${(100 * lag.share).toFixed(0)} % of the recording ` +
+      `(up to ${lag.longest.toFixed(2)} s at a time), so it took ${csv.samples} readings at ` +
+      `${csv.rate.toFixed(0)} Hz, ${fix}`;
   const { own, dropped, gap } = droppedReadings(csv.times);
   if (!(own > 0) || dropped <= BUSY_SHARE * (csv.samples + dropped)) return '';
   return `the page was busy: it took ${csv.samples} of about ${csv.samples + dropped} readings the gyroscope gave at ` +
-    `${(1 / own).toFixed(0)} Hz (gaps up to ${gap.toFixed(2)} s), not a slow sensor: close the other apps and tabs, ` +
-    'keep the phone\'s battery saver off, and record again';
+    `${(1 / own).toFixed(0)} Hz (gaps up to ${gap.toFixed(2)} s), ${fix}`;
 }
 
 /** One line where `samples` are too sparse for their fastest turn (fewer than
@@ -281,6 +322,7 @@ export class TossRecorder {
     this.nextId = 1;
     this.source = new GyroSource((s) => this.samples.push(s));
     this.source.onError = (line) => this.finish(line);
+    this.lag = new PageLag();
     this.timer = 0;
     // The recordings of earlier visits, where the browser keeps them (IndexedDB).
     this.store = keptStore().then((store) => store.all().then((rows) => {
@@ -377,6 +419,7 @@ export class TossRecorder {
       const seconds = this.seconds();
       this.say(`recording through ${api}: tap Stop, or it stops after ${seconds} s`);
       this.timer = setTimeout(() => this.finish(''), seconds * 1000);
+      this.lag.start();
       // The live trace ten times a second, not every frame: the sensor's readings come first.
       const frame = () => {
         if (!this.recording) return;
@@ -394,12 +437,14 @@ export class TossRecorder {
     });
   }
 
-  /** Stops the sensor: the samples so far as a CSV ({text, rate, samples, step}). */
+  /** Stops the sensor and the page's lag watch (this.lagged): the samples so far as a CSV
+   * ({text, rate, samples, step}). */
   stopSensor() {
     this.phase = 'idle';
     this.readyAt = performance.now() + AFTER_STOP_MS;
     clearTimeout(this.timer);
     this.source.stop();
+    this.lagged = this.lag.stop();
     this.button();
     drawTrace(this.trace(true), this.samples);
     return recordingCsv(this.samples, this.source.api);
@@ -438,7 +483,7 @@ export class TossRecorder {
     const others = pool ? this.kept.filter((k) => k.ticked) : [];
     const kept = this.keep(csv, true);
     // A busy page first: its fix is another (nothing else running), not a slower throw.
-    const problem = busyProblem(csv) || rateProblem(this.samples, csv.step);
+    const problem = busyProblem(csv, this.lagged) || rateProblem(this.samples, csv.step);
     this.say(`${csv.samples} samples through ${this.source.api}, ${csv.rate.toFixed(1)} Hz` +
       (problem ? `; warning: ${problem}` : ''), Boolean(problem));
     this.fitKept([...others, kept]);
