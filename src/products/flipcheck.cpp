@@ -275,13 +275,14 @@ std::string league_html(const std::vector<LeagueColumn>& columns) {
           // the table's box as tall as the table (at the window's height it printed 5 of 37
           // motions, and a scroll bar), the scenarios' columns the page's width (7 columns of
           // 9em each ran 3 past A4's edge), a row never split, the scenarios' row over each
-          // page's rows, nothing sticky; the pass and fail colours kept.
+          // page's rows, nothing sticky; the pass and fail colours kept; a word broken only where
+          // it would not fit its column (break-word, not anywhere: a column keeps its width).
           "@media print {\n"
           "  body { margin: 0; font-size: 9pt; color: #000; }\n"
           "  .league { overflow: visible; max-height: none; width: auto; max-width: none; }\n"
           "  table { width: 100%; table-layout: fixed; font-size: 7.5pt; }\n"
           "  td { min-width: 0; }\n"
-          "  th, td { overflow-wrap: anywhere; padding: 0.2em 0.3em; }\n"
+          "  th, td { overflow-wrap: break-word; padding: 0.2em 0.3em; }\n"
           "  thead th, tbody th { position: static; max-width: none; }\n"
           "  thead { display: table-header-group; }\n"
           "  tr { break-inside: avoid; }\n"

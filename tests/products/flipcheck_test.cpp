@@ -218,6 +218,7 @@ TEST(Flipcheck, TheLeagueGivesEachFileToItsScenarioARowPerMotion) {
   // scrolling table is reached by the keyboard and named (docs/flipcheck.md, "The league table").
   EXPECT_NE(html.find("<tr><th>rigid-<wbr>quaternion euler</th>"), std::string::npos) << html;
   EXPECT_EQ(html.find("overflow-wrap: anywhere"), std::string::npos);
+  EXPECT_EQ(html.substr(0, html.find("@media print")).find("overflow-wrap"), std::string::npos);
   EXPECT_NE(html.find("<div class=\"league\" tabindex=\"0\" role=\"region\" aria-label=\""),
             std::string::npos);
   EXPECT_EQ(output::read_manifest(layout.manifest).outputs,
