@@ -106,6 +106,23 @@ def explorer_of_every_scene(bookspin, source, binary, name):
     return out, shots, (out / "explorer.html").resolve().as_uri()
 
 
+def lab_page_under_test(bookspin, source, binary, name):
+    """The page built (web/build.sh) and written with scenes/exact-unstable-x.toml into a fresh
+    BINARY_DIR/test-output/<name> (an earlier run's removed), for the lab's tests: (out,
+    recordings, shots, page): `recordings` an empty folder in it for the test's recordings,
+    `shots` the screenshots' folder (BINARY_DIR/test-output/browser), `page` the explorer's
+    file:// address."""
+    out = binary / "test-output" / name
+    shots = binary / "test-output" / "browser"
+    shutil.rmtree(out, ignore_errors=True)
+    recordings = out / "recordings"
+    for d in (recordings, shots):
+        d.mkdir(parents=True, exist_ok=True)
+    run(["bash", str(source / "web" / "build.sh"), str(binary)])
+    run([bookspin, "explore", str(source / "scenes" / "exact-unstable-x.toml"), "-o", str(out)])
+    return out, recordings, shots, (out / "explorer.html").resolve().as_uri()
+
+
 def exact_fig09_motion(bookspin, source, out):
     """fig09's exact motion exported by `bookspin flipcheck export` into OUT/motions: its CSV."""
     run([bookspin, "flipcheck", "export", str(source / "scenes" / "fig09-matrix-unstable-x.toml"),

@@ -26,12 +26,11 @@ import base64
 import csv
 import io
 import re
-import shutil
 import subprocess
 import unicodedata
 
-from browser import (console_errors, fail, find_browser, open_browser, require, run, serve,
-                     test_arguments, wait_for)
+from browser import (console_errors, fail, find_browser, lab_page_under_test, open_browser, require,
+                     serve, test_arguments, wait_for)
 
 # The file's stem as written on disk, and the name the rule gives it.
 NAMES = [("太郎", "太郎"), ("Αθηνά", "Αθηνά"), ("Юлия", "Юлия"),
@@ -46,15 +45,7 @@ def main():
     bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
     require("em++", "npm")
-    out = binary / "test-output" / "explorer-names"
-    shots = binary / "test-output" / "browser"
-    if out.exists():
-        shutil.rmtree(out)
-    recordings = out / "recordings"
-    for d in (recordings, shots):
-        d.mkdir(parents=True, exist_ok=True)
-    run(["bash", str(source / "web" / "build.sh"), str(binary)])
-    run([bookspin, "explore", str(source / "scenes" / "exact-unstable-x.toml"), "-o", str(out)])
+    out, recordings, shots, page = lab_page_under_test(bookspin, source, binary, "explorer-names")
 
     # One throw each: the sample recording's Raw Data.csv cut at its rests, the pieces given in
     # turn (the first three throws, then again).

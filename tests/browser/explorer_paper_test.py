@@ -25,10 +25,9 @@ Usage: explorer_paper_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten, npm or poppler-utils is
 missing, except under CI=true, where that is a failure (browser.py).
 """
-import shutil
 
-from browser import (PAPERS, console_errors, fail, find_browser, open_browser, pale_print,
-                     pdf_pages, pdf_text, pdf_to_png, print_to_pdf, require, run, serve,
+from browser import (PAPERS, console_errors, fail, find_browser, lab_page_under_test, open_browser,
+                     pale_print, pdf_pages, pdf_text, pdf_to_png, print_to_pdf, require, serve,
                      squeezed, test_arguments, wait_for)
 from paper_test import pdf_images
 
@@ -133,16 +132,9 @@ def main():
     bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
     require("em++", "npm", "pdftotext", "pdfinfo", "pdftoppm", "pdfimages")
-    out = binary / "test-output" / "explorer-paper"
-    shots = binary / "test-output" / "browser"
-    shutil.rmtree(out, ignore_errors=True)
-    recordings = out / "recordings"
-    for d in (recordings, shots):
-        d.mkdir(parents=True, exist_ok=True)
+    out, recordings, shots, page = lab_page_under_test(bookspin, source, binary, "explorer-paper")
     for old in shots.glob("paper-explorer-lab-*"):
         old.unlink()
-    run(["bash", str(source / "web" / "build.sh"), str(binary)])
-    run([bookspin, "explore", str(source / "scenes" / "exact-unstable-x.toml"), "-o", str(out)])
 
     # One throw each: the sample recording cut at its rests, a sample's noise of its own.
     raw = (source / "recordings" / "phone-on-book-synthetic" / "Raw Data.csv").read_text().splitlines()

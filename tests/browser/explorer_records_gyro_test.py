@@ -53,8 +53,8 @@ import time
 import urllib.request
 from pathlib import Path
 
-from browser import (console_errors, fail, find_browser, missing, open_browser, require, run,
-                     serve, test_arguments, wait_for)
+from browser import (console_errors, fail, find_browser, lab_page_under_test, missing, open_browser,
+                     require, serve, test_arguments, wait_for)
 from explorer_lab_test import compare_row, panel_text_problems, read_csv
 
 SIZE = (390, 844)
@@ -394,16 +394,7 @@ def main():
     if not real.exists():
         missing(f"the real recording {REAL} (../shared/recordings-real/)")
 
-    out = binary / "test-output" / "explorer-records-gyro"
-    shots = binary / "test-output" / "browser"
-    if out.exists():
-        shutil.rmtree(out)
-    recordings = out / "recordings"
-    for d in (recordings, shots):
-        d.mkdir(parents=True, exist_ok=True)
-    run(["bash", str(source / "web" / "build.sh"), str(binary)])
-    run([bookspin, "explore", str(source / "scenes" / "exact-unstable-x.toml"), "-o", str(out)])
-    page = (out / "explorer.html").resolve().as_uri()
+    out, recordings, shots, page = lab_page_under_test(bookspin, source, binary, "explorer-records-gyro")
 
     shutil.copy(real, recordings / "original.csv")
     original = cli_fit(bookspin, ["original.csv"], out / "cli" / "original", recordings)
