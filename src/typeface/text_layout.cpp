@@ -72,9 +72,9 @@ const Shapers& shapers() {
     Shapers s;
     for (std::size_t i = 0; i < kBuiltInFaces; ++i) {
       const EmbeddedFont& file = built_in_file(i);
-      hb_blob_t* blob = hb_blob_create(reinterpret_cast<const char*>(file.data),
-                                       static_cast<unsigned>(file.size),
-                                       HB_MEMORY_MODE_READONLY, nullptr, nullptr);
+      hb_blob_t* blob =
+          hb_blob_create(reinterpret_cast<const char*>(file.data), static_cast<unsigned>(file.size),
+                         HB_MEMORY_MODE_READONLY, nullptr, nullptr);
       hb_face_t* face = hb_face_create(blob, 0);
       hb_blob_destroy(blob);
       s.units_per_em[i] = hb_face_get_upem(face);
@@ -286,8 +286,8 @@ double place(cairo_t* cr, const char* utf8, const Decoded& decoded, const std::v
       const double sx = font_matrix.xx / s.units_per_em[run.face];
       const double sy = font_matrix.yy / s.units_per_em[run.face];
       for (unsigned g = 0; g < count; ++g) {
-        placed.glyphs.push_back({info[g].codepoint, pen + position[g].x_offset * sx,
-                                 y - position[g].y_offset * sy});
+        placed.glyphs.push_back(
+            {info[g].codepoint, pen + position[g].x_offset * sx, y - position[g].y_offset * sy});
         pen += position[g].x_advance * sx;
       }
       hb_buffer_destroy(buffer);

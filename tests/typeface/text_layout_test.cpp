@@ -44,19 +44,20 @@ struct Picture {
   Picture& operator=(const Picture&) = delete;
   std::string bytes() const {
     return std::string(reinterpret_cast<const char*>(cairo_image_surface_get_data(surface)),
-                       static_cast<std::size_t>(cairo_image_surface_get_stride(surface)) *
-                           kHeight);
+                       static_cast<std::size_t>(cairo_image_surface_get_stride(surface)) * kHeight);
   }
   // Ink: a pixel darker than mid-grey (the blue byte of ARGB32; the text is black on white).
   bool ink(int x, int y) const {
-    const unsigned char* row = cairo_image_surface_get_data(surface) +
-                               static_cast<std::ptrdiff_t>(y) * cairo_image_surface_get_stride(surface);
+    const unsigned char* row =
+        cairo_image_surface_get_data(surface) +
+        static_cast<std::ptrdiff_t>(y) * cairo_image_surface_get_stride(surface);
     return row[4 * x] < 128;
   }
   // Any ink at all: a pixel not white.
   bool touched(int x, int y) const {
-    const unsigned char* row = cairo_image_surface_get_data(surface) +
-                               static_cast<std::ptrdiff_t>(y) * cairo_image_surface_get_stride(surface);
+    const unsigned char* row =
+        cairo_image_surface_get_data(surface) +
+        static_cast<std::ptrdiff_t>(y) * cairo_image_surface_get_stride(surface);
     return row[4 * x] < 255;
   }
   struct Box {
@@ -221,7 +222,7 @@ TEST(TextLayout, MixedLineIsItsPiecesEndToEnd) {
 // advance.
 TEST(TextLayout, ExtentsAreTheInkDrawn) {
   for (const std::string& text : {std::string("太郎"), std::string("花子"), std::string("🎲"),
-                                 std::string(kArabic), std::string(kMixed)}) {
+                                  std::string(kArabic), std::string(kMixed)}) {
     for (const auto& draw : {shown(text), filled_path(text)}) {
       const Picture p(draw);
       cairo_text_extents_t e;
