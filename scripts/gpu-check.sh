@@ -104,7 +104,7 @@ pack() {
             <(LD_LIBRARY_PATH="$bundle/lib" "$bundle/bin/bookspin" info 2>&1 | grep -v '^EGL\|^GL '); then
     echo "gpu-check: the bundle's bookspin info differs from the build's (above)"; exit 1
   fi
-  # No fonts and no fontconfig file: every text is drawn in the typeface stage's DejaVu, built
+  # No fonts and no fontconfig file: every text is drawn in the typeface stage's faces, built
   # into the programs with its options (docs/architecture.md), so the GPU machine's own font
   # set-up, whatever it is, reaches no frame.
   git rev-parse HEAD > "$bundle/commit" 2>/dev/null || true

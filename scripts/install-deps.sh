@@ -7,6 +7,7 @@ packages=(
   libeigen3-dev libtomlplusplus-dev libcli11-dev libboost-dev
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   libssl-dev libpng-dev libdeflate-dev pngcheck libcairo2-dev libfreetype-dev fonts-dejavu-core fonts-dejavu-extra
+  libharfbuzz-dev libfribidi-dev fonts-droid-fallback fonts-symbola
   libassimp-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev libbullet-dev libode-dev

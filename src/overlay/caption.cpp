@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "overlay/cairo_canvas.hpp"
+#include "typeface/text_layout.hpp"
 
 namespace bookspin::overlay {
 
@@ -14,7 +15,7 @@ double font_size_for(const RgbaImage& image) { return default_caption_font(image
 
 double text_width(cairo_t* cr, const std::string& text) {
   cairo_text_extents_t extents;
-  cairo_text_extents(cr, text.c_str(), &extents);
+  typeface::text_extents(cr, text.c_str(), &extents);
   return extents.x_advance;
 }
 
@@ -89,7 +90,7 @@ void draw_caption_lines(cairo_t* cr, const std::vector<CaptionLine>& lines, std:
       cairo_set_source_rgb(cr, 0.95, 0.95, 0.92);
     }
     cairo_move_to(cr, box.x + box.pad, baseline);
-    cairo_show_text(cr, line.text.c_str());
+    typeface::show_text(cr, line.text.c_str());
   }
 }
 
@@ -255,7 +256,7 @@ void draw_banner(RgbaImage& image, const std::string& text, double centre_x) {
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   select_overlay_font(cr, true, size);
   cairo_move_to(cr, x, y);
-  cairo_show_text(cr, text.c_str());
+  typeface::show_text(cr, text.c_str());
   canvas.composite_onto(image);
 }
 
@@ -270,11 +271,11 @@ void draw_title_strip(RgbaImage& image, const PixelRect& strip, const std::strin
   cairo_set_source_rgb(cr, 0.95, 0.95, 0.92);
   const double baseline = strip.y + 0.5 * strip.height + 0.36 * font;
   cairo_move_to(cr, strip.x + margin, baseline);
-  cairo_show_text(cr, title.c_str());
+  typeface::show_text(cr, title.c_str());
   char time[32];
   std::snprintf(time, sizeof time, "t = %.1f", t);
   cairo_move_to(cr, strip.x + strip.width - text_width(cr, time) - margin, baseline);
-  cairo_show_text(cr, time);
+  typeface::show_text(cr, time);
   canvas.composite_onto(image);
 }
 

@@ -11,6 +11,7 @@
 
 #include "overlay/cairo_canvas.hpp"
 #include "overlay/sheet_header.hpp"
+#include "typeface/text_layout.hpp"
 
 namespace bookspin::overlay {
 
@@ -49,9 +50,9 @@ std::string short_number(double v, int digits = 3) {
 void text_at(cairo_t* cr, double x, double y, const std::string& text, double align_x,
              double align_y) {
   cairo_text_extents_t e;
-  cairo_text_extents(cr, text.c_str(), &e);
+  typeface::text_extents(cr, text.c_str(), &e);
   cairo_move_to(cr, x - align_x * e.width - e.x_bearing, y - align_y * e.height - e.y_bearing);
-  cairo_show_text(cr, text.c_str());
+  typeface::show_text(cr, text.c_str());
 }
 
 /// The range of the finite (and, on a log scale, positive) values, in log10 where log.
@@ -165,7 +166,7 @@ void draw_map(cairo_t* cr, const HeatMapSpec& map, const MapRect& region, const 
   double ticks_right = ticks_left;
   const auto tick = [&](double fraction, const std::string& text) {
     cairo_text_extents_t e;
-    cairo_text_extents(cr, text.c_str(), &e);
+    typeface::text_extents(cr, text.c_str(), &e);
     ticks_right = std::max(ticks_right, ticks_left + e.x_advance);
     text_at(cr, ticks_left, cells.top + cells.height * (1.0 - fraction), text, 0.0, 0.5);
   };

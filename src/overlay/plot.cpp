@@ -11,6 +11,7 @@
 #include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
 #include "overlay/caption.hpp"
+#include "typeface/text_layout.hpp"
 
 namespace bookspin::overlay {
 
@@ -134,9 +135,9 @@ std::string tick_label(double v, bool log) {
 void text_at(cairo_t* cr, const std::string& s, double x, double y, double align_x,
              double align_y) {
   cairo_text_extents_t e;
-  cairo_text_extents(cr, s.c_str(), &e);
+  typeface::text_extents(cr, s.c_str(), &e);
   cairo_move_to(cr, x - align_x * e.x_advance, y + align_y * e.height);
-  cairo_show_text(cr, s.c_str());
+  typeface::show_text(cr, s.c_str());
 }
 
 /// A polyline in pixels; a NaN point lifts the pen.
@@ -305,7 +306,7 @@ double legend_box_width(cairo_t* cr, const PlotSpec& spec, double font) {
   double width = 0;
   for (const auto& s : spec.series) {
     cairo_text_extents_t e;
-    cairo_text_extents(cr, s.label.c_str(), &e);
+    typeface::text_extents(cr, s.label.c_str(), &e);
     width = std::max(width, e.x_advance);
   }
   return width + 3.2 * font;
@@ -338,7 +339,7 @@ double flow_legend(cairo_t* cr, const PlotSpec& spec, double left, double right,
   double x = left, y = top + font;
   for (const auto& s : spec.series) {
     cairo_text_extents_t e;
-    cairo_text_extents(cr, s.label.c_str(), &e);
+    typeface::text_extents(cr, s.label.c_str(), &e);
     const double w = 2.3 * font + e.x_advance;
     if (x > left && x + w > right) x = left, y += row;
     at(s, x, y);
@@ -384,7 +385,7 @@ double y_tick_width(cairo_t* cr, const Axis& ay) {
   double widest = 0;
   for (double t : ticks(ay)) {
     cairo_text_extents_t e;
-    cairo_text_extents(cr, tick_label(t, ay.log).c_str(), &e);
+    typeface::text_extents(cr, tick_label(t, ay.log).c_str(), &e);
     widest = std::max(widest, e.x_advance);
   }
   return widest;
@@ -396,7 +397,7 @@ double y_tick_width(cairo_t* cr, const Axis& ay) {
 std::vector<std::string> y_label_lines(cairo_t* cr, const PlotSpec& spec, double height,
                                        double font) {
   cairo_text_extents_t e;
-  cairo_text_extents(cr, spec.y_label.c_str(), &e);
+  typeface::text_extents(cr, spec.y_label.c_str(), &e);
   const std::size_t unit = spec.y_label.rfind(" (");
   if (e.x_advance <= height - font || unit == std::string::npos || unit == 0) return {spec.y_label};
   return {spec.y_label.substr(0, unit), spec.y_label.substr(unit + 1)};
@@ -499,7 +500,7 @@ void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, double w
     // Centred under the plot area; where that runs past the plot's sides (a plot two a row),
     // under the middle of the plot's rectangle.
     cairo_text_extents_t e;
-    cairo_text_extents(cr, spec.x_label.c_str(), &e);
+    typeface::text_extents(cr, spec.x_label.c_str(), &e);
     double centre = 0.5 * (a.x0 + a.x1);
     if (e.x_advance > 2.0 * std::min(centre - x, x + width - centre) - a.font)
       centre = x + 0.5 * width;
@@ -518,7 +519,7 @@ void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, double w
     // where the plot is narrower than the title, smaller.
     select_overlay_font(cr, true, a.font);
     cairo_text_extents_t e;
-    cairo_text_extents(cr, spec.title.c_str(), &e);
+    typeface::text_extents(cr, spec.title.c_str(), &e);
     double centre = 0.5 * (a.x0 + a.x1);
     const double room = width - a.font;
     if (e.x_advance > 2.0 * std::min(centre - x, x + width - centre) - a.font)

@@ -7,6 +7,7 @@
 
 #include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
+#include "typeface/text_layout.hpp"
 
 namespace bookspin::overlay {
 
@@ -39,7 +40,7 @@ std::vector<std::vector<int>> legend_rows(const PixelRect& rect) {
   double x = left;
   for (int i = 0; i < 3; ++i) {
     cairo_text_extents_t ext;
-    cairo_text_extents(cr, kLegend[i].text, &ext);
+    typeface::text_extents(cr, kLegend[i].text, &ext);
     if (!rows.back().empty() && x + ext.x_advance > rect.right() - 0.04 * rect.width)
       rows.emplace_back(), x = left;
     rows.back().push_back(i);
@@ -136,7 +137,7 @@ void stroke_on_ellipsoid(cairo_t* cr, const View& v, const Eigen::Matrix3d& inve
 void label(cairo_t* cr, const std::string& text, double x, double y, double r, double g, double b) {
   cairo_set_source_rgb(cr, r, g, b);
   cairo_move_to(cr, x, y);
-  cairo_show_text(cr, text.c_str());
+  typeface::show_text(cr, text.c_str());
 }
 
 }  // namespace
@@ -284,7 +285,7 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
   cairo_reset_clip(cr);
   select_overlay_font(cr, true, font);
   cairo_text_extents_t ext;
-  cairo_text_extents(cr, spec.title.c_str(), &ext);
+  typeface::text_extents(cr, spec.title.c_str(), &ext);
   label(cr, spec.title, rect.x + 0.5 * (rect.width - ext.x_advance),
         rect.y + 0.75 * inset_title_height(rect), 0.1, 0.1, 0.1);
   select_overlay_font(cr, false, 0.85 * font);
@@ -295,7 +296,7 @@ void draw_poinsot(RgbaImage& image, const PixelRect& rect, const PoinsotSpec& sp
     for (int i : row) {
       const LegendItem& item = kLegend[i];
       label(cr, item.text, x, y, item.r, item.g, item.b);
-      cairo_text_extents(cr, item.text, &ext);
+      typeface::text_extents(cr, item.text, &ext);
       x += ext.x_advance + 0.9 * font;
     }
     y += legend_line(rect);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "overlay/cairo_canvas.hpp"
+#include "typeface/text_layout.hpp"
 
 namespace bookspin::overlay {
 
@@ -13,7 +14,7 @@ std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::s
   const double room = width - 2.0 * font;
   const auto advance = [cr](const std::string& text) {
     cairo_text_extents_t e;
-    cairo_text_extents(cr, text.c_str(), &e);
+    typeface::text_extents(cr, text.c_str(), &e);
     return e.x_advance;
   };
   // The bold title as long as it fits, its remaining words the next line's start (a sweep's
@@ -70,7 +71,7 @@ double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, do
     y += 1.35 * (i == 0 ? font : 0.8 * font);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     cairo_move_to(cr, font, y);
-    cairo_show_text(cr, header[i].c_str());
+    typeface::show_text(cr, header[i].c_str());
   }
   return y;
 }

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "overlay/cairo_canvas.hpp"
+#include "typeface/text_layout.hpp"
 
 namespace bookspin::overlay {
 
@@ -110,10 +111,10 @@ void draw_base(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
   select_overlay_font(cr, true, font);
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
   cairo_text_extents_t ext;
-  cairo_text_extents(cr, spec.title.c_str(), &ext);
+  typeface::text_extents(cr, spec.title.c_str(), &ext);
   cairo_move_to(cr, rect.x + 0.5 * (rect.width - ext.x_advance),
                 rect.y + 0.75 * inset_title_height(rect));
-  cairo_show_text(cr, spec.title.c_str());
+  typeface::show_text(cr, spec.title.c_str());
 
   // Outline.
   cairo_new_path(cr);
@@ -184,7 +185,7 @@ void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
         project_to_inset(spec, axis.direction, disc.cx, disc.cy, disc.r, &depth);
     Eigen::Vector2d out = end - Eigen::Vector2d(disc.cx, disc.cy);
     out = out.norm() > 1e-9 ? out.normalized() : Eigen::Vector2d(1, 0);
-    cairo_text_extents(cr, axis.label.c_str(), &ext);
+    typeface::text_extents(cr, axis.label.c_str(), &ext);
     const double pad = 0.4 * font;
     const Eigen::Vector2d anchor = end + pad * out;
     // Place the text's box on the outward side of the anchor.
@@ -200,7 +201,7 @@ void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
     cairo_fill(cr);
     cairo_set_source_rgba(cr, axis.colour.r, axis.colour.g, axis.colour.b, depth >= 0 ? 1.0 : 0.75);
     cairo_move_to(cr, x, y);
-    cairo_show_text(cr, axis.label.c_str());
+    typeface::show_text(cr, axis.label.c_str());
   }
   cairo_restore(cr);
 }

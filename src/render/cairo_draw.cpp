@@ -5,6 +5,7 @@
 
 #include "common/argb32.hpp"
 #include "render/render_error.hpp"
+#include "typeface/text_layout.hpp"
 
 namespace bookspin::render::draw {
 
@@ -82,7 +83,7 @@ void fill_cloth(cairo_surface_t* surface, Rgb base) {
 
 double text_width(cairo_t* cr, const std::string& text) {
   cairo_text_extents_t extents;
-  cairo_text_extents(cr, text.c_str(), &extents);
+  typeface::text_extents(cr, text.c_str(), &extents);
   return extents.x_advance;
 }
 
@@ -97,7 +98,7 @@ double centered_text(cairo_t* cr, const std::string& text, double centre_x, doub
     cairo_set_font_size(cr, size);
   }
   cairo_move_to(cr, centre_x - text_width(cr, text) / 2.0, baseline);
-  cairo_show_text(cr, text.c_str());
+  typeface::show_text(cr, text.c_str());
   return size;
 }
 

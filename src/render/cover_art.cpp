@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "render/cairo_draw.hpp"
+#include "typeface/text_layout.hpp"
 #include "typeface/typeface.hpp"
 
 namespace bookspin::render::art {
@@ -60,7 +61,7 @@ void corner_diamonds(cairo_t* cr, double width, double height, double inset) {
 
 void left_text(cairo_t* cr, const char* text, double x, double baseline) {
   cairo_move_to(cr, x, baseline);
-  cairo_show_text(cr, text);
+  typeface::show_text(cr, text);
 }
 
 void barcode(cairo_t* cr, double x, double y, double w, double h) {

@@ -9,18 +9,28 @@
 
 #include <array>
 #include <cstdlib>
+#include <optional>
 #include <string_view>
 
 #include "common/errors.hpp"
+#include "typeface/built_in.hpp"
 #include "typeface/embedded_fonts.hpp"
 
 namespace bookspin::typeface {
 
 namespace {
 
-constexpr std::array<std::string_view, 6> kFiles{"DejaVuSans.ttf",       "DejaVuSans-Bold.ttf",
-                                                 "DejaVuSansMono.ttf",   "DejaVuSerif.ttf",
-                                                 "DejaVuSerif-Bold.ttf", "DejaVuSerif-Italic.ttf"};
+// The six faces of Face, then the fallbacks (built_in.hpp): Droid Sans Fallback (CJK), Symbola
+// (emoji and symbols).
+constexpr std::array<std::string_view, kBuiltInFaces> kFiles{"DejaVuSans.ttf",
+                                                             "DejaVuSans-Bold.ttf",
+                                                             "DejaVuSansMono.ttf",
+                                                             "DejaVuSerif.ttf",
+                                                             "DejaVuSerif-Bold.ttf",
+                                                             "DejaVuSerif-Italic.ttf",
+                                                             "DroidSansFallbackFull.ttf",
+                                                             "Symbola_hint.ttf"};
+static_assert(kFirstFallback == 6, "the fallbacks follow the six faces of Face");
 
 // FreeType's memory hooks: the library is made with FT_New_Library and FT_Add_Default_Modules
 // rather than FT_Init_FreeType, which would also read the FREETYPE_PROPERTIES variable.
@@ -42,9 +52,9 @@ constexpr int kLoadFlags = FT_LOAD_DEFAULT;  // no autohinter forced, no bitmaps
 
 struct Faces {
   FT_Library library = nullptr;
-  std::array<FT_Face, 6> ft{};
-  std::array<cairo_font_face_t*, 6> cairo{};
-  std::array<const EmbeddedFont*, 6> file{};
+  std::array<FT_Face, kBuiltInFaces> ft{};
+  std::array<cairo_font_face_t*, kBuiltInFaces> cairo{};
+  std::array<const EmbeddedFont*, kBuiltInFaces> file{};
   cairo_font_options_t* options = nullptr;
 };
 
@@ -101,6 +111,19 @@ std::string name_entry(FT_Face face, FT_UShort name_id) {
 
 }  // namespace
 
+cairo_font_face_t* built_in_face(std::size_t index) { return the_faces().cairo.at(index); }
+
+const EmbeddedFont& built_in_file(std::size_t index) { return *the_faces().file.at(index); }
+
+std::optional<std::size_t> built_in_index(cairo_font_face_t* face) {
+  const Faces& f = the_faces();
+  for (std::size_t i = 0; i < f.cairo.size(); ++i)
+    if (f.cairo[i] == face) return i;
+  return std::nullopt;
+}
+
+const cairo_font_options_t* built_in_options() { return the_faces().options; }
+
 void select(cairo_t* cr, Face face, double size) {
   const Faces& f = the_faces();
   cairo_set_font_face(cr, f.cairo[static_cast<std::size_t>(face)]);
@@ -114,7 +137,8 @@ std::vector<FaceInfo> faces() {
   for (std::size_t i = 0; i < kFiles.size(); ++i) {
     const FT_Face face = f.ft[i];
     std::string name = face->family_name != nullptr ? face->family_name : "";
-    if (face->style_name != nullptr && std::string_view(face->style_name) != "Book")
+    if (face->style_name != nullptr && std::string_view(face->style_name) != "Book" &&
+        std::string_view(face->style_name) != "Regular")
       name += std::string(" ") + face->style_name;
     out.push_back({name, name_entry(face, TT_NAME_ID_VERSION_STRING), f.file[i]->file,
                    f.file[i]->sha256, f.file[i]->source_path});

@@ -13,7 +13,7 @@ cmake_minimum_required(VERSION 3.20)
 #   2. every bookspin_<stage> that src/<stage>/CMakeLists.txt links: an allowed stage only;
 #   3. every stage a stage includes is linked: by its CMakeLists.txt, or publicly by a stage
 #      it links (CMake hands PUBLIC links on).
-# And three rules that are not the table's, each stated once here:
+# And the rules that are not the table's, each stated once here:
 #   4. only src/engines links or includes the other engines (the libraries its CMakeLists.txt
 #      links besides bookspin's own; their headers by the patterns below);
 #   5. bench/ and examples/ sit on top beside the command line: they may not include cli/;
@@ -24,6 +24,8 @@ cmake_minimum_required(VERSION 3.20)
 #      values without files or pictures, and for pictures the clip stage (its frame loop), the
 #      products (the clip's files) and the error types of render and video; never cli/ nor
 #      cache/, and no drawing of its own (overlay/, charts/).
+#   9. only src/typeface calls cairo's own text calls (cairo_show_text, cairo_text_extents,
+#      cairo_text_path): every other stage draws text through typeface/text_layout.hpp.
 # Run by ctest:
 #   cmake -DSOURCE_DIR=<repo> -P tests/architecture/check_includes.cmake
 # ARCHITECTURE_DOC=<file> reads the table from another file (to try the check on a changed
@@ -275,6 +277,22 @@ foreach(file IN LISTS non_video)
   file(STRINGS "${file}" lines REGEX "^#include <ceres/")
   foreach(line IN LISTS lines)
     list(APPEND violations "${rel}: ${line} (only src/fit includes Ceres)")
+  endforeach()
+endforeach()
+
+# --- 9. cairo's own text calls are the typeface stage's alone (its text layout hands them the
+# text they draw as before); every other stage's text goes through typeface/text_layout.hpp. ---
+file(GLOB_RECURSE text_sources "${SOURCE_DIR}/src/*.cpp" "${SOURCE_DIR}/src/*.hpp")
+foreach(file IN LISTS text_sources)
+  file(RELATIVE_PATH rel "${SOURCE_DIR}" "${file}")
+  if(rel MATCHES "^src/typeface/")
+    continue()
+  endif()
+  file(STRINGS "${file}" lines REGEX "cairo_(show_text|text_extents|text_path) *\\(")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "(cairo_(show_text|text_extents|text_path))")
+      list(APPEND violations "${rel} calls ${CMAKE_MATCH_1} (text goes through typeface/text_layout.hpp)")
+    endif()
   endforeach()
 endforeach()
 

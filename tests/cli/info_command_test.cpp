@@ -31,7 +31,8 @@ TEST(InfoCommand, NamesEveryFaceItsFileItsHashAndTheTextOptions) {
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string text = text_lines(r.output);
   for (const char* file : {"DejaVuSans.ttf", "DejaVuSans-Bold.ttf", "DejaVuSansMono.ttf",
-                           "DejaVuSerif.ttf", "DejaVuSerif-Bold.ttf", "DejaVuSerif-Italic.ttf"}) {
+                           "DejaVuSerif.ttf", "DejaVuSerif-Bold.ttf", "DejaVuSerif-Italic.ttf",
+                           "DroidSansFallbackFull.ttf", "Symbola_hint.ttf"}) {
     const std::size_t at = text.find(std::string("/") + file + ", SHA-256 ");
     ASSERT_NE(at, std::string::npos) << file << " not named:\n" << text;
     // The hash printed is the file's own, hashed here by sha256sum, not by bookspin.
@@ -44,6 +45,8 @@ TEST(InfoCommand, NamesEveryFaceItsFileItsHashAndTheTextOptions) {
     }
   }
   EXPECT_NE(text.find("text face: DejaVu Sans (Version 2.37)"), std::string::npos) << text;
+  EXPECT_NE(text.find("text face: Droid Sans Fallback ("), std::string::npos) << text;
+  EXPECT_NE(text.find("text face: Symbola ("), std::string::npos) << text;
   EXPECT_NE(text.find("text options: antialias gray, hint style slight, hint metrics on, "
                       "subpixel order default"),
             std::string::npos)

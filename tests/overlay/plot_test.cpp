@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace bookspin::overlay {
@@ -231,6 +232,23 @@ TEST(PlotImage, AShortChartsTextIsDrawnAt12Px) {
     EXPECT_GE(bands[0], 8) << "the x tick digits, " << height << " px tall";
     EXPECT_LE(bands[0], 14) << "one line of digits, " << height << " px tall";
   }
+}
+
+// The title, axis labels and legend are drawn in any alphabet (the typeface stage's text
+// layout): 太郎 and 花子 draw differently in each. In DejaVu alone each is two identical
+// missing-glyph boxes, and the two plots are the same bytes.
+TEST(Plot, TitleLabelsAndLegendDrawCjk) {
+  const auto plot = [](const std::string& name, int where) {
+    PlotSpec spec = spike(std::nullopt);
+    spec.legend = true;
+    spec.series[0].label = where == 3 ? name : "ω_x";
+    spec.title = where == 0 ? name : "toss 1";
+    spec.x_label = where == 1 ? "time (s, " + name + "'s clock)" : "time (s)";
+    spec.y_label = where == 2 ? name : "ω (rad/s)";
+    return plot_image(spec, 640, 400).pixels;
+  };
+  for (int where = 0; where < 4; ++where)
+    EXPECT_NE(plot("太郎", where), plot("花子", where)) << "text " << where;
 }
 
 }  // namespace

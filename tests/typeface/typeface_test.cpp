@@ -1,6 +1,7 @@
-// The typeface built in: every face from Debian's DejaVu 2.37 files, their bytes whole, and the
-// text options set in code (the picture tests under another machine's text set-up are
-// Pictures.SameUnderAnotherTextSetUp, tests/CMakeLists.txt).
+// The typeface built in: every face from Debian's DejaVu 2.37 files and the fallbacks (Droid Sans
+// Fallback, Symbola), their bytes whole, and the text options set in code (the picture tests
+// under another machine's text set-up are Pictures.SameUnderAnotherTextSetUp,
+// tests/CMakeLists.txt).
 #include "typeface/typeface.hpp"
 
 #include <cairo.h>
@@ -17,14 +18,18 @@
 namespace bookspin::typeface {
 namespace {
 
-TEST(Typeface, EveryFaceIsDejaVu237BuiltInWhole) {
+TEST(Typeface, EveryFaceIsDejaVu237ThenTheFallbacksBuiltInWhole) {
   const auto list = faces();
-  ASSERT_EQ(list.size(), 6u);
-  const char* names[] = {"DejaVu Sans",  "DejaVu Sans Bold",  "DejaVu Sans Mono",
-                         "DejaVu Serif", "DejaVu Serif Bold", "DejaVu Serif Italic"};
+  ASSERT_EQ(list.size(), 8u);
+  const char* names[] = {
+      "DejaVu Sans",       "DejaVu Sans Bold",    "DejaVu Sans Mono",    "DejaVu Serif",
+      "DejaVu Serif Bold", "DejaVu Serif Italic", "Droid Sans Fallback", "Symbola"};
   for (std::size_t i = 0; i < list.size(); ++i) {
     EXPECT_EQ(list[i].name, names[i]);
-    EXPECT_EQ(list[i].version, "Version 2.37") << list[i].file;
+    if (i < 6) {
+      EXPECT_EQ(list[i].version, "Version 2.37") << list[i].file;
+    }
+    EXPECT_FALSE(list[i].version.empty()) << list[i].file;
   }
   for (const EmbeddedFont& font : embedded_fonts()) {
     // The bytes built in hash to what the configure step read, and are the file's own.
