@@ -297,12 +297,13 @@ double place(cairo_t* cr, const char* utf8, const Decoded& decoded, const std::v
   return pen - x;
 }
 
-}  // namespace
-
-void show_text(cairo_t* cr, const char* utf8) {
+// Draws `utf8` from the current point, by `whole` (cairo's own call) where it needs no layout,
+// else each run's glyphs in its face by `glyphs`; the current point then at the text's end.
+void lay_out(cairo_t* cr, const char* utf8, void (*whole)(cairo_t*, const char*),
+             void (*glyphs)(cairo_t*, const cairo_glyph_t*, int)) {
   auto layout = itemize(cr, utf8);
   if (!layout) {
-    cairo_show_text(cr, utf8);
+    whole(cr, utf8);
     return;
   }
   double x = 0, y = 0;
@@ -312,10 +313,16 @@ void show_text(cairo_t* cr, const char* utf8) {
   const double advance = place(cr, utf8, layout->first, layout->second, x, y, runs);
   for (const GlyphRun& run : runs) {
     cairo_set_font_face(cr, built_in_face(run.face));
-    cairo_show_glyphs(cr, run.glyphs.data(), static_cast<int>(run.glyphs.size()));
+    glyphs(cr, run.glyphs.data(), static_cast<int>(run.glyphs.size()));
   }
   cairo_restore(cr);
   cairo_move_to(cr, x + advance, y);
+}
+
+}  // namespace
+
+void show_text(cairo_t* cr, const char* utf8) {
+  lay_out(cr, utf8, cairo_show_text, cairo_show_glyphs);
 }
 
 void text_extents(cairo_t* cr, const char* utf8, cairo_text_extents_t* extents) {
@@ -353,22 +360,7 @@ void text_extents(cairo_t* cr, const char* utf8, cairo_text_extents_t* extents) 
 }
 
 void text_path(cairo_t* cr, const char* utf8) {
-  auto layout = itemize(cr, utf8);
-  if (!layout) {
-    cairo_text_path(cr, utf8);
-    return;
-  }
-  double x = 0, y = 0;
-  cairo_get_current_point(cr, &x, &y);
-  std::vector<GlyphRun> runs;
-  cairo_save(cr);
-  const double advance = place(cr, utf8, layout->first, layout->second, x, y, runs);
-  for (const GlyphRun& run : runs) {
-    cairo_set_font_face(cr, built_in_face(run.face));
-    cairo_glyph_path(cr, run.glyphs.data(), static_cast<int>(run.glyphs.size()));
-  }
-  cairo_restore(cr);
-  cairo_move_to(cr, x + advance, y);
+  lay_out(cr, utf8, cairo_text_path, cairo_glyph_path);
 }
 
 }  // namespace bookspin::typeface
