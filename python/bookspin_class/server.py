@@ -196,7 +196,11 @@ def main(argv):
         print(f"{PROGRAM}: error: {error}", file=sys.stderr)
         return 2
     try:
-        import bookspin  # noqa: F401  (the fit; PYTHONPATH=BUILD/python, as the launcher sets)
+        # The fit (PYTHONPATH=BUILD/python, as the launcher sets) and numpy, imported here on
+        # the main thread: the module's first array would otherwise import numpy in a worker
+        # thread while the event loop starts another, which deadlocks on the import lock.
+        import bookspin  # noqa: F401
+        import numpy  # noqa: F401
     except ImportError as error:
         print(f"{PROGRAM}: error: the bookspin Python module is not found ({error}); run "
               "BUILD/bookspin-class, which sets PYTHONPATH", file=sys.stderr)
