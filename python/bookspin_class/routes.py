@@ -11,7 +11,7 @@ import uuid
 import bookspin
 from aiohttp import web
 
-from bookspin_class import limits, pooled
+from bookspin_class import limits, pooled, store
 from bookspin_class.limits import refuse
 
 TEACHER_COOKIE = "bookspin-teacher"
@@ -153,6 +153,10 @@ class ClassServer:
         answer = {"toss": toss, "held": True}
         held = self.store.toss(toss)
         if held is None:
+            twin = self.store.toss_of_recording(code, store.recording_sha256(csv))
+            if twin is not None:  # the fit refuses one recording given twice
+                raise refuse(409, f"the same recording as toss {twin}, held already (a "
+                                  "toss is held once)")
             try:
                 await asyncio.to_thread(bookspin.read_gyro_csv, csv, f"{name}.csv")
             except bookspin.Error as error:

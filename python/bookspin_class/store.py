@@ -27,10 +27,16 @@ SCHEMA = [
          recorded_at TEXT NOT NULL,
          csv TEXT NOT NULL,
          csv_sha256 TEXT NOT NULL,
+         recording_sha256 TEXT NOT NULL,
          received DOUBLE PRECISION NOT NULL,
          excluded TEXT,
          UNIQUE (class_code, seq))""",
 ]
+
+
+def recording_sha256(csv):
+    """The SHA-256 of a toss's CSV text: one recording held once per class."""
+    return hashlib.sha256(csv.encode("utf-8")).hexdigest()
 
 
 def token_sha256(token):
@@ -136,6 +142,12 @@ class Store:
                          "WHERE toss = ?", (toss,))
         return rows[0] if rows else None
 
+    def toss_of_recording(self, code, recording_sha256):
+        """The id of the class's toss whose CSV text has this SHA-256, or None."""
+        rows = self._all("SELECT toss FROM tosses WHERE class_code = ? AND recording_sha256 = ?",
+                         (code, recording_sha256))
+        return rows[0][0] if rows else None
+
     def add_toss(self, toss, code, student, name, recorded_at, csv, csv_sha256):
         """Holds a toss, committed before it returns; its seq is the class's next number (the
         file name the pooled set gives it). Raises the driver's integrity error when the id is
@@ -148,9 +160,10 @@ class Store:
                 seq = cursor.fetchall()[0][0]
                 self.connection.execute(
                     self._sql("INSERT INTO tosses (toss, class_code, student, seq, name, "
-                              "recorded_at, csv, csv_sha256, received, excluded) "
-                              "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, NULL)"),
-                    (toss, code, student, seq, name, recorded_at, csv, csv_sha256, time.time()))
+                              "recorded_at, csv, csv_sha256, recording_sha256, received, "
+                              "excluded) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, NULL)"),
+                    (toss, code, student, seq, name, recorded_at, csv, csv_sha256,
+                     recording_sha256(csv), time.time()))
                 self.connection.commit()
             except BaseException:
                 self.connection.rollback()

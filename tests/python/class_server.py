@@ -217,3 +217,16 @@ class Postgres:
 
     def stop(self):
         self._as_user(PG_BIN / "pg_ctl", "-D", self.folder / "db", "-m", "immediate", "stop")
+
+
+def restamped(csv, seconds):
+    """A recording's CSV with every time `seconds` later: the same motion, other samples (so
+    that one recording may stand for several phones' without being the same recording twice)."""
+    lines = csv.splitlines()
+    out = [lines[0]]
+    for line in lines[1:]:
+        cells = line.split(",")
+        if cells and cells[0].strip():
+            cells[0] = repr(float(cells[0].strip().strip('"')) + seconds)
+        out.append(",".join(cells))
+    return "\n".join(out) + "\n"
