@@ -353,3 +353,29 @@ def test_bad_options_exit_2_in_one_line_naming_the_option_and_write_nothing(tmp_
         assert len(lines) == 1 and lines[0].startswith("bookspin-class: error: "), done.stderr
         assert option in lines[0], (args, lines)
         assert not data.exists()
+
+
+def test_the_join_screen_holds_the_phones_address_and_never_the_key(make_server, page):
+    server = make_server()
+    state = server.state()
+    assert state["join_url"] == \
+        f"https://127.0.0.1:{server.port}/explorer.html?class={server.code}#lab"
+    status, svg = server.request("GET", f"/api/class/{server.code}/qr.svg", token=server.key)
+    assert status == 200
+    import segno
+    out = io.BytesIO()
+    segno.make(state["join_url"], error="m", micro=False).save(
+        out, kind="svg", scale=10, border=4, dark="#000", light="#fff", xmldecl=False)
+    assert svg == out.getvalue()  # the QR code of the phones' address, nothing more
+    assert server.key not in state["join_url"] and server.key not in svg.decode()
+    # The phones' page is the file given, served whole, at / and /explorer.html.
+    for path in ("/", "/explorer.html"):
+        status, body = server.request("GET", path)
+        assert (status, body) == (200, page.read_bytes())
+    # The teacher's address sets the key as a cookie and opens the projector.
+    status, body = server.request("GET", f"/teacher?key={server.key}")
+    assert status == 302
+    status, body = server.request("GET", "/teacher?key=forged")
+    assert status == 403 and body == {"error": "unknown teacher's key"}
+    status, body = server.request("GET", f"/projector?class={server.code}")
+    assert status == 401
