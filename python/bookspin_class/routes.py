@@ -223,13 +223,14 @@ class ClassServer:
             state = json.dumps(self.class_state(code), ensure_ascii=False)
             while True:
                 await response.write(f"event: class\ndata: {state}\n\n".encode("utf-8"))
-                try:
-                    state = await asyncio.wait_for(queue.get(), 15.0)
-                    while not queue.empty():  # only the latest state matters
-                        state = queue.get_nowait()
-                except asyncio.TimeoutError:
-                    await response.write(b": still here\n\n")
-                    state = await queue.get()
+                while True:  # a comment every 15 s keeps proxies and the page's timer content
+                    try:
+                        state = await asyncio.wait_for(queue.get(), 15.0)
+                        break
+                    except asyncio.TimeoutError:
+                        await response.write(b": still here\n\n")
+                while not queue.empty():  # only the latest state matters
+                    state = queue.get_nowait()
         except (ConnectionResetError, asyncio.CancelledError):
             pass
         finally:

@@ -20,6 +20,16 @@ import zipfile
 
 import pytest
 
+try:
+    import aiohttp  # noqa: F401
+    import psycopg  # noqa: F401
+    import segno  # noqa: F401
+except ImportError as missing_package:
+    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
+        raise
+    pytest.skip(f"the class server's packages are missing ({missing_package}): "
+                "scripts/install-deps.sh", allow_module_level=True)
+
 from class_server import REAL, Postgres, Server, in_ci, real_csv, restamped
 from conftest import cli_error_line, read_csv, run_cli
 
@@ -379,3 +389,42 @@ def test_the_join_screen_holds_the_phones_address_and_never_the_key(make_server,
     assert status == 403 and body == {"error": "unknown teacher's key"}
     status, body = server.request("GET", f"/projector?class={server.code}")
     assert status == 401
+
+
+def test_the_projectors_event_stream_shows_each_toss_and_each_refit(make_server):
+    require_real()
+    server = make_server()
+    connection = http.client.HTTPSConnection("127.0.0.1", server.port, context=server.context,
+                                             timeout=30)
+    connection.request("GET", f"/api/class/{server.code}/events",
+                       headers={"Authorization": f"Bearer {server.key}"})
+    response = connection.getresponse()
+    assert response.status == 200
+    assert response.getheader("Content-Type").startswith("text/event-stream")
+
+    deadline = time.monotonic() + 90  # the stream sends a comment every 15 s at least
+
+    def next_state():
+        event = None
+        for line in response:
+            assert time.monotonic() < deadline, "the stream did not show it within 90 s"
+            if line.startswith(b"event: "):
+                event = line[7:].strip()
+            elif line.startswith(b"data: "):
+                assert event == b"class"
+                return json.loads(line[6:])
+        raise AssertionError("the stream ended")
+
+    assert next_state()["students"] == []
+    token = server.join("Anna")
+    assert [s["name"] for s in next_state()["students"]] == ["Anna"]
+    held = post_real(server, token, PHONE[1])
+    # The toss is on the stream as soon as it is held, then again with its refit's numbers.
+    while True:
+        state = next_state()
+        tosses = state["students"][0]["tosses"]
+        if tosses and tosses[0]["toss"] == held["toss"]:
+            if state["pooled"]["ratios"] is not None and not state["pooled"]["fitting"]:
+                break
+    assert tosses[0]["flights"] and tosses[0]["half_period_measured"] is not None
+    connection.close()
