@@ -4,7 +4,6 @@ starts one, prints the phones' address, the class code and the teacher's address
 and serves https until Ctrl-C. Data older than --keep-days is deleted at start and daily."""
 import argparse
 import asyncio
-import os
 import pathlib
 import secrets
 import signal

@@ -9,6 +9,7 @@ import io
 import json
 import os
 import pathlib
+import shutil
 import socket
 import ssl
 import subprocess
@@ -56,6 +57,7 @@ def postgres():
         return
     yield server
     server.stop()
+    shutil.rmtree(folder, ignore_errors=True)
 
 
 @pytest.fixture(scope="session")
@@ -372,7 +374,6 @@ def test_the_join_screen_holds_the_phones_address_and_never_the_key(make_server,
         f"https://127.0.0.1:{server.port}/explorer.html?class={server.code}#lab"
     status, svg = server.request("GET", f"/api/class/{server.code}/qr.svg", token=server.key)
     assert status == 200
-    import segno
     out = io.BytesIO()
     segno.make(state["join_url"], error="m", micro=False).save(
         out, kind="svg", scale=10, border=4, dark="#000", light="#fff", xmldecl=False)
