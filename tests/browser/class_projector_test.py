@@ -5,7 +5,8 @@ clients, and the teacher's page opened through the printed key at 1920×1080 and
 join screen shows the code and the phones' address and a QR code, the class's body is the
 server's pooled fit as the page rounds it, a row per flight with the student's name, no text
 under 12 px or past its box, nothing requested from another origin; the teacher leaves a toss
-out with a reason through the page and puts it back, and the server holds each. Screenshots
+out with a reason through the page and puts it back, and the server holds each; then ends the
+class through the page, and the store holds nothing of it. Screenshots
 in BINARY_DIR/class-projector-WxH.png (docs/class.md shows them).
 
     class_projector_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -125,7 +126,16 @@ try:
                     "const rows = [...document.getElementById('tosses').rows];"
                     "rows.find(r => r.className === 'out').querySelector('button').click();")
                 server.fitted_state(4)
-    print("the projector shows the class at 1920x1080 and 1280x720; Leave out and Put back "
-          "reach the server")
+            else:
+                # The teacher ends the class through the page: every row of it deleted.
+                driver.execute_script("window.confirm = () => true;"
+                                      "document.getElementById('end').click();")
+                ended = wait_for(driver, "return document.getElementById('status').textContent;",
+                                 lambda status: status == "ended")
+                if ended != "ended" or server.counts() != {"classes": 0, "students": 0,
+                                                           "tosses": 0}:
+                    fail(f"End the class left {server.counts()} (the page says {ended!r})")
+    print("the projector shows the class at 1920x1080 and 1280x720; Leave out, Put back and "
+          "End the class reach the server")
 finally:
     server.stop()
