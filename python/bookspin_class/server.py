@@ -9,6 +9,7 @@ import secrets
 import signal
 import socket
 import sys
+import traceback
 
 from aiohttp import web
 
@@ -152,6 +153,12 @@ async def serve(options, stop):
             if error.status < 400:
                 raise
             response = error
+        except (asyncio.CancelledError, ConnectionResetError):
+            raise
+        except Exception:  # a bug or a store gone: 500 in one line, the trace on the terminal
+            traceback.print_exc()
+            response = web.json_response({"error": "internal error (the server's terminal "
+                                                   "says more)"}, status=500)
         response.headers.setdefault("X-Content-Type-Options", "nosniff")
         response.headers.setdefault("Referrer-Policy", "no-referrer")
         return response

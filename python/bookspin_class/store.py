@@ -64,9 +64,13 @@ class Store:
 
     def _all(self, statement, args=()):
         with self.lock:
-            cursor = self.connection.execute(self._sql(statement), args)
-            rows = cursor.fetchall()
-            self.connection.commit()
+            try:
+                cursor = self.connection.execute(self._sql(statement), args)
+                rows = cursor.fetchall()
+                self.connection.commit()
+            except BaseException:
+                self.connection.rollback()  # PostgreSQL refuses all else in a failed transaction
+                raise
             return rows
 
     def _write(self, statements):

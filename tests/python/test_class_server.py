@@ -429,3 +429,16 @@ def test_the_projectors_event_stream_shows_each_toss_and_each_refit(make_server)
                 break
     assert tosses[0]["flights"] and tosses[0]["half_period_measured"] is not None
     connection.close()
+
+
+def test_a_store_gone_wrong_is_an_internal_error_in_one_line(make_server):
+    require_real()
+    server = make_server()
+    token = server.join("Anna")
+    server.execute("DROP TABLE tosses")  # the store broken under the server's feet
+    status, answer = server.post_toss(token, real_csv(PHONE[0]), name="t")
+    assert (status, answer) == (500, {"error": "internal error (the server's terminal says "
+                                               "more)"})
+    assert server.process.poll() is None  # and it goes on serving, the store too
+    assert server.request("GET", "/explorer.html")[0] == 200
+    assert server.join("Ben")
