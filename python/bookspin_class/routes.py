@@ -153,6 +153,9 @@ class ClassServer:
         answer = {"toss": toss, "held": True}
         held = self.store.toss(toss)
         if held is None:
+            if self.store.student_toss_count(student) >= self.max_tosses:
+                raise refuse(403, f"this student holds {self.max_tosses} tosses, the most one "
+                                  "student may (--max-tosses)")
             twin = self.store.toss_of_recording(code, store.recording_sha256(csv))
             if twin is not None:  # the fit refuses one recording given twice
                 raise refuse(409, f"the same recording as toss {twin}, held already (a "
@@ -278,6 +281,7 @@ class ClassServer:
         return web.FileResponse(self.page, headers={"Cache-Control": "no-cache"})
 
     integrity_errors = ()
+    max_tosses = 100
 
 
 def add_routes(app, server):

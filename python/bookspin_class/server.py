@@ -53,6 +53,8 @@ def parse_options(argv):
                         help="start a new class (default: go on with the latest)")
     parser.add_argument("--rate", default="20", metavar="R",
                         help="requests a second per phone, on average (default 20; 3R at once)")
+    parser.add_argument("--max-tosses", default="100", metavar="N",
+                        help="tosses one student may have held (default 100)")
     parser.add_argument("--head-timeout", default="10", metavar="S",
                         help="seconds a connection has to send a request's head (default 10)")
     options = parser.parse_args(argv)
@@ -69,6 +71,7 @@ def parse_options(argv):
     options.port = number("--port", options.port, int, 1, 65535)
     options.keep_days = number("--keep-days", options.keep_days, float, 0.01, 3650)
     options.rate = number("--rate", options.rate, float, 0.1, 10000)
+    options.max_tosses = number("--max-tosses", options.max_tosses, int, 1, 100000)
     options.head_timeout = number("--head-timeout", options.head_timeout, float, 0.1, 600)
     page = pathlib.Path(options.page)
     if not page.is_file():
@@ -134,6 +137,7 @@ async def serve(options, stop):
                                 pathlib.Path(options.page), rate)
     server.ca_file = ca_file
     server.integrity_errors = store.integrity_errors()
+    server.max_tosses = options.max_tosses
 
     @web.middleware
     async def guard(request, handler):

@@ -146,6 +146,9 @@ class Store:
                          "WHERE toss = ?", (toss,))
         return rows[0] if rows else None
 
+    def student_toss_count(self, student):
+        return self._all("SELECT COUNT(*) FROM tosses WHERE student = ?", (student,))[0][0]
+
     def toss_of_recording(self, code, recording_sha256):
         """The id of the class's toss whose CSV text has this SHA-256, or None."""
         rows = self._all("SELECT toss FROM tosses WHERE class_code = ? AND recording_sha256 = ?",

@@ -294,6 +294,19 @@ def test_each_hostile_request_is_refused_with_its_reason_and_nothing_stored(make
     assert server.counts() == before
 
 
+def test_a_student_holds_at_most_max_tosses(make_server):
+    require_real()
+    server = make_server(extra=["--max-tosses", "2"])
+    token = server.join("Anna")
+    post_real(server, token, PHONE[0])
+    post_real(server, token, PHONE[1])
+    before = server.counts()
+    status, answer = server.post_toss(token, real_csv(PHONE[2]), name="third")
+    assert status == 403 and "holds 2 tosses, the most one student may" in answer["error"]
+    assert server.counts() == before
+    post_real(server, server.join("Ben"), PHONE[2])  # another student may
+
+
 def test_a_slow_client_is_cut_off_and_a_fast_one_is_rate_limited(make_server):
     server = make_server(extra=["--rate", "2", "--head-timeout", "1.5"])
     # Slow-loris: a request head sent a byte at a time, never finished.
@@ -351,6 +364,7 @@ def test_bad_options_exit_2_in_one_line_naming_the_option_and_write_nothing(tmp_
              (["--keep-days", "-1"], "--keep-days"), (["--page", str(tmp_path / "no.html")],
                                                        "--page"),
              (["--postgres", "mysql://x"], "--postgres"), (["--rate", "0"], "--rate"),
+             (["--max-tosses", "0"], "--max-tosses"), (["--head-timeout", "x"], "--head-timeout"),
              (["--bogus"], "--bogus")]
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join([str(pathlib.Path(__file__).resolve().parents[2] /
