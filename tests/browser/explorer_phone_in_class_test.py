@@ -1,0 +1,394 @@
+#!/usr/bin/env python3
+"""A phone in a class (web/src/class_join.js, web/src/class_outbox.js, docs/phone-lab.md "In a
+class"; the server's API: docs/class.md): headless Chromium at a phone's size (390x844, touch:
+every button tapped through the DevTools protocol's touch events) opens the class's address
+(explorer.html?class=CODE#lab, as its QR code gives it) from a class server on 127.0.0.1, joins
+under a name in two alphabets, and records real tosses (../shared/recordings-real/dvarkian-
+2022-05-03, each fed sample by sample at its own rate through the sensor override, as
+explorer_records_gyro_test does; a failure under CI=true where that folder is absent, a skip
+elsewhere):
+  - the join form: the code prefilled from the address; a name the project's rule refuses (a
+    '/') refused by the page with the rule's words, nothing asked of the server; a wrong code
+    refused with the server's reason;
+  - toss 1 kept online: held by the class (its row says so in words), the server holds it
+    under the id the page stored with the recording, its CSV the one the row's Download gives;
+  - the network off (Network.emulateNetworkConditions offline): toss 2 kept, its row "waiting",
+    said in the lab's live region, the server holds nothing new; the network back (the
+    browser's online event): held, once;
+  - the class's address unreachable while the page is (Network.setBlockedURLs on /api/): toss 3
+    kept, waiting; the page reloaded: still waiting (the outbox in the phone's storage), and
+    once the address answers again, held by the retry alone (no online event), once;
+  - every held toss posted again under its id (a lost answer's resend): answered 200, the
+    server still holds each once; at the end the server holds exactly the three tosses, each
+    once, in the order kept, each with the bytes of its recording;
+  - the class's results as the server gives them (GET me): its pooled body and each of the
+    student's tosses shown.
+The server: the class server of python/bookspin_class where the build has it (BOOKSPIN_CLASS
+below), else a stand-in written here (http.server) that answers as docs/class.md says.
+Screenshots (BINARY_DIR/test-output/browser/explorer-phone-in-class-{join,list}-WxH.png) at
+390x844 and 1280x720: the join form, and the list with held and waiting rows; none of their
+text under 12 px or past its box.
+
+Usage: explorer_phone_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
+Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
+under CI=true, where that is a failure (browser.py).
+"""
+import csv
+import http.server
+import io
+import json
+import os
+import re
+import threading
+import time
+import uuid
+from pathlib import Path
+
+from browser import (console_errors, fail, find_browser, lab_page_under_test, missing, open_browser,
+                     require, test_arguments, text_problems, wait_for)
+from explorer_records_gyro_test import devtools, feed, feed_at_own_rate, override, tap
+
+SIZE = (390, 844)
+FOLDER = "dvarkian-2022-05-03"
+TOSSES = ["12-13-01", "12-13-51", "12-22-44"]
+CODE = "K7Q2XR"
+NAME = "太郎 Ωmega"
+UUID = re.compile(r"^[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}$")
+
+
+def readings(path):
+    rows = list(csv.reader(io.StringIO(path.read_text())))[1:]
+    return [float(r[0]) for r in rows], [tuple(float(c) for c in r[1:4]) for r in rows]
+
+
+class StandIn:
+    """A class server as docs/class.md says it answers, on 127.0.0.1: the page at
+    /explorer.html, join, tosses (a toss id held once per student: 201, 200 for the same bytes
+    again, 409 for other bytes), me. `held()`: every toss stored, in the order stored, as
+    {toss, name, recorded_at, csv}; `asked`: every toss post's id."""
+
+    def __init__(self, page_file):
+        self.page = Path(page_file).read_bytes()
+        self.students = {}   # token -> name
+        self.stored = []     # (token, body)
+        self.asked = []
+        self.lock = threading.Lock()
+        stand_in = self
+
+        class Handler(http.server.BaseHTTPRequestHandler):
+            def log_message(self, *args):
+                pass
+
+            def answer(self, status, body, kind="application/json"):
+                data = body if isinstance(body, bytes) else json.dumps(body).encode()
+                self.send_response(status)
+                self.send_header("Content-Type", kind)
+                self.send_header("Content-Length", str(len(data)))
+                self.send_header("Cache-Control", "no-store")
+                self.end_headers()
+                self.wfile.write(data)
+
+            def token(self):
+                given = self.headers.get("Authorization", "")
+                return given[len("Bearer "):] if given.startswith("Bearer ") else None
+
+            def do_GET(self):
+                path = self.path.split("?")[0]
+                if path in ("/", "/explorer.html"):
+                    return self.answer(200, stand_in.page, "text/html; charset=utf-8")
+                if path == f"/api/class/{CODE}/me":
+                    token = self.token()
+                    if token not in stand_in.students:
+                        return self.answer(401, {"error": "not a student of this class"})
+                    return self.answer(200, stand_in.me(token))
+                return self.answer(404, {"error": f"no such page: {path}"})
+
+            def do_POST(self):
+                length = int(self.headers.get("Content-Length", "0"))
+                body = json.loads(self.rfile.read(length) or b"{}")
+                parts = self.path.split("/")
+                if len(parts) != 5 or parts[1:3] != ["api", "class"]:
+                    return self.answer(404, {"error": "no such address"})
+                if parts[3] != CODE:
+                    return self.answer(404, {"error": f"no class with code {parts[3]}"})
+                if parts[4] == "join":
+                    token = uuid.uuid4().hex
+                    with stand_in.lock:
+                        stand_in.students[token] = body["name"]
+                    return self.answer(201, {"student": token[:8], "token": token, "name": body["name"]})
+                if parts[4] != "tosses":
+                    return self.answer(404, {"error": "no such address"})
+                token = self.token()
+                if token not in stand_in.students:
+                    return self.answer(401, {"error": "not a student of this class"})
+                toss = body.get("toss")
+                with stand_in.lock:
+                    stand_in.asked.append(toss)
+                    if not isinstance(toss, str) or not UUID.match(toss):
+                        return self.answer(400, {"error": "toss: not a UUID v4"})
+                    for t, b in stand_in.stored:
+                        if t == token and b["toss"] == toss:
+                            if b["csv"] != body.get("csv"):
+                                return self.answer(409, {"error": f"toss {toss} is held with other bytes"})
+                            return self.answer(200, {"toss": toss, "held": True})
+                    stand_in.stored.append((token, body))
+                return self.answer(201, {"toss": toss, "held": True})
+
+        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        threading.Thread(target=self.server.serve_forever, daemon=True).start()
+        self.url = f"http://127.0.0.1:{self.server.server_address[1]}/"
+        self.kind = "a stand-in of the class server (http.server, in this test)"
+
+    def me(self, token):
+        mine = [b for t, b in self.stored if t == token]
+        return {"name": self.students[token],
+                "tosses": [{"toss": b["toss"], "name": b["name"], "held": True, "excluded": None,
+                            "half_period_measured": 0.4 + 0.01 * k, "half_period_predicted": 0.41,
+                            "sigma": 0.006, "within": abs(0.4 + 0.01 * k - 0.41) <= 0.012}
+                           for k, b in enumerate(mine)],
+                "pooled": {"tosses": len(self.stored), "ratios": [0.2213, 0.8037, 1], "sigma": [0.0041, 0.012, 0],
+                           "updated": "2026-11-29T09:00:00Z"}}
+
+    def held(self):
+        with self.lock:
+            return [b for _, b in self.stored]
+
+    def close(self):
+        self.server.shutdown()
+        self.server.server_close()
+
+
+def state_of(driver):
+    return driver.execute_script("return document.getElementById('classState').textContent")
+
+
+def rows(driver):
+    """Each row of the lab's list: [its recording's name, the class's state in words]."""
+    return driver.execute_script("""return [...document.querySelectorAll('#labRecordList li')].map((li) =>
+        [li.dataset.name, (li.querySelector('.classState') || {}).textContent || '']);""")
+
+
+def type_into(driver, element_id, text):
+    driver.execute_script("const e = document.getElementById(arguments[0]); e.value = ''; e.focus();", element_id)
+    driver.find_element("id", element_id).send_keys(text)
+
+
+def record(driver, where, t, omega):
+    """One toss recorded: Record tapped with a first reading given, the recording fed at its own
+    rate, Stop tapped; waits until the lab is idle again (its fit ended). Its kept name."""
+    before = len(driver.execute_script("return window.explorer.labRecordings()"))
+    time.sleep(0.7)
+    feed(driver, omega[0])
+    tap(driver, "labRecord")
+    said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
+                    lambda s: s.startswith(("recording", "error")), 30)
+    if not said.startswith("recording"):
+        fail(f"{where}: the recording did not start: {said!r}")
+    feed_at_own_rate(driver, t, omega)
+    tap(driver, "labRecord")
+    kept = wait_for(driver, "return [window.explorer.labRecordings(), window.explorer.labRecorderPhase()]",
+                    lambda r: len(r[0]) > before and r[1] == "idle", 300)
+    if len(kept[0]) <= before:
+        state = driver.execute_script("return document.getElementById('labRecordState').textContent")
+        fail(f"{where}: no recording kept: {state!r}")
+    return kept[0][-1]["name"]
+
+
+def row_state(driver, name):
+    return dict(rows(driver)).get(name, "")
+
+
+def wait_row(driver, name, words, timeout, where):
+    """The row of recording `name` says `words`: fail() after `timeout` s otherwise."""
+    said = wait_for(driver, "return [...document.querySelectorAll('#labRecordList li')].map((li) => "
+                    "[li.dataset.name, (li.querySelector('.classState') || {}).textContent || ''])",
+                    lambda r: words in dict(r).get(name, ""), timeout)
+    if words not in dict(said).get(name, ""):
+        fail(f"{where}: the row of {name} says {dict(said).get(name, '')!r}, not {words!r}; "
+             f"the outbox {driver.execute_script('return window.explorer.classOutbox()')}")
+
+
+def network(driver, offline):
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Network.emulateNetworkConditions", {
+        "offline": offline, "latency": 0, "downloadThroughput": -1, "uploadThroughput": -1})
+
+
+def block_api(driver, blocked):
+    driver.execute_cdp_cmd("Network.enable", {})
+    driver.execute_cdp_cmd("Network.setBlockedURLs", {"urls": ["*/api/class/*"] if blocked else []})
+
+
+def open_class_page(driver, url):
+    driver.get(url)
+    if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+        fail(f"the page never became ready: {driver.get_log('browser')}")
+    override(driver, True)
+
+
+def check_server_holds(server, names_and_ids, texts, where):
+    """fail() unless the server holds exactly these tosses, each once, in this order, each with
+    its recording's bytes."""
+    held = server.held()
+    got = [(b["toss"], b["name"]) for b in held]
+    want = [(toss, name) for name, toss in names_and_ids]
+    if got != want:
+        fail(f"{where}: the server holds {got}, not each toss once in the order kept {want}")
+    for b in held:
+        if b["csv"] != texts[b["name"]]:
+            fail(f"{where}: the server holds other bytes for {b['name']} than the recording's download")
+
+
+def screenshots(driver, shots, stem):
+    for size in (SIZE, (1280, 720)):
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+            "width": size[0], "height": size[1], "deviceScaleFactor": 1, "mobile": size == SIZE})
+        time.sleep(0.5)
+        driver.execute_script("document.getElementById(arguments[0]).scrollIntoView({block: 'start'})",
+                              "classBox" if stem == "join" else "labRecordings")
+        time.sleep(0.3)
+        path = shots / f"explorer-phone-in-class-{stem}-{size[0]}x{size[1]}.png"
+        driver.save_screenshot(str(path))
+        problems = text_problems(driver)
+        if problems:
+            fail(f"{stem} at {size[0]}x{size[1]}: {'; '.join(problems)} ({path})")
+        print(f"screenshot {path}")
+    driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+        "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
+
+
+def downloads(driver):
+    """Each row's name and the text its Download serves."""
+    return dict(driver.execute_async_script("""const done = arguments[0];
+        Promise.all([...document.querySelectorAll('#labRecordList li')].map((li) =>
+          fetch(li.querySelector('a[download]').href).then((r) => r.text()).then((t) => [li.dataset.name, t]))).then(done);"""))
+
+
+def main():
+    bookspin, source, binary = test_arguments(__doc__)
+    chromium, driver_path = find_browser()
+    require("em++", "npm")
+    folder = source.parent / "shared" / "recordings-real" / FOLDER
+    if not folder.exists():
+        folder = Path("/work/shared/recordings-real") / FOLDER
+    if not all((folder / t / "Raw Data.csv").exists() for t in TOSSES):
+        missing(f"the real recordings {FOLDER} (../shared/recordings-real/)")
+    recordings = [readings(folder / t / "Raw Data.csv") for t in TOSSES]
+    out, _, shots, _ = lab_page_under_test(bookspin, source, binary, "explorer-phone-in-class")
+    server = StandIn(out / "explorer.html")
+    print(f"the server: {server.kind}")
+    try:
+        with open_browser(chromium, driver_path, size=SIZE, exact_viewport=True) as driver:
+            driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+                "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
+            driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
+            run_class(driver, server, shots, recordings)
+            errors = [e for e in console_errors(driver)
+                      if "favicon" not in e.get("message", "") and "/api/class/" not in e.get("message", "")]
+            if errors:
+                fail(f"console errors: {errors[:3]}")
+    finally:
+        server.close()
+    print("ok")
+
+
+def run_class(driver, server, shots, recordings):
+    open_class_page(driver, f"{server.url}explorer.html?class={CODE}#lab")
+    # The join form, its code from the address.
+    shown = driver.execute_script("""return [!document.getElementById('lab').hidden, !document.getElementById('classBox').hidden,
+        document.getElementById('classCode').value, !document.getElementById('classJoin').hidden]""")
+    if shown != [True, True, CODE, True]:
+        fail(f"the class's address: the lab open, the class box, its code, the form: {shown}")
+    screenshots(driver, shots, "join")
+    # A name the project's rule refuses: said by the page, the server not asked.
+    type_into(driver, "className", "a/b")
+    tap(driver, "classJoinButton")
+    said = wait_for(driver, "return document.getElementById('classState').textContent", lambda s: "error" in s, 10)
+    if "your name: it must not hold /" not in said or server.students:
+        fail(f"a name with '/': the page says {said!r}; the server's students {server.students}")
+    # A wrong code: the server's reason.
+    type_into(driver, "classCode", "NOPE42")
+    type_into(driver, "className", NAME)
+    tap(driver, "classJoinButton")
+    said = wait_for(driver, "return document.getElementById('classState').textContent", lambda s: "refused" in s, 20)
+    if "no class with code NOPE42" not in said:
+        fail(f"a wrong code: the page says {said!r}")
+    type_into(driver, "classCode", CODE)
+    tap(driver, "classJoinButton")
+    said = wait_for(driver, "return document.getElementById('classState').textContent", lambda s: s.startswith("In class"), 20)
+    if not said.startswith(f"In class {CODE} as {NAME}") or list(server.students.values()) != [NAME]:
+        fail(f"joined: the page says {said!r}; the server's students {list(server.students.values())}")
+    print(f"joined: {said}")
+
+    kept = []  # (name, toss id) in the order kept
+    # Toss 1, online: held.
+    name = record(driver, "toss 1", *recordings[0])
+    ids = driver.execute_script("return window.explorer.labTossIds()")
+    if not UUID.match(ids.get(name) or ""):
+        fail(f"toss 1: the recording's toss id {ids.get(name)!r} is not a UUID v4")
+    kept.append((name, ids[name]))
+    wait_row(driver, name, f"held by class {CODE}", 30, "toss 1 online")
+    print(f"toss 1 online: {row_state(driver, name)}")
+
+    # Toss 2 with the network off: waiting, said; back online: held.
+    driver.execute_script("""window.saidLines = [];
+        new MutationObserver(() => window.saidLines.push(document.getElementById('labSpoken').textContent))
+          .observe(document.getElementById('labSpoken'), {childList: true, characterData: true, subtree: true});""")
+    network(driver, True)
+    name = record(driver, "toss 2", *recordings[1])
+    kept.append((name, driver.execute_script("return window.explorer.labTossIds()")[name]))
+    wait_row(driver, name, "waiting to be sent", 20, "toss 2 offline")
+    print(f"toss 2 offline: {row_state(driver, name)}")
+    if len(server.held()) != 1:
+        fail(f"offline: the server holds {len(server.held())} tosses")
+    time.sleep(3)
+    if len(server.held()) != 1 or "waiting" not in row_state(driver, name):
+        fail(f"offline 3 s on: the server holds {len(server.held())}, the row says {row_state(driver, name)!r}")
+    screenshots(driver, shots, "list")
+    network(driver, False)
+    wait_row(driver, name, f"held by class {CODE}", 30, "toss 2 back online")
+    print(f"toss 2 back online: {row_state(driver, name)}")
+    said = driver.execute_script("return window.saidLines")
+    for words in ("waiting to be sent", "held by class"):
+        if not any(l.startswith(name) and words in l for l in said):
+            fail(f"toss 2: the live region never said {name}: …{words}…: {said}")
+
+    # Toss 3 with the class's address blocked, the page reloaded meanwhile: still waiting;
+    # the address back: held by the retry alone.
+    block_api(driver, True)
+    name = record(driver, "toss 3", *recordings[2])
+    kept.append((name, driver.execute_script("return window.explorer.labTossIds()")[name]))
+    wait_row(driver, name, "waiting to be sent", 20, "toss 3 blocked")
+    driver.refresh()
+    if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+        fail("the page never became ready after the reload")
+    wait_row(driver, name, "waiting to be sent", 30, "toss 3 after a reload")
+    for earlier, _ in kept[:2]:
+        wait_row(driver, earlier, f"held by class {CODE}", 10, "the held tosses after a reload")
+    print(f"toss 3 after a reload: {row_state(driver, name)}")
+    if len(server.held()) != 2:
+        fail(f"blocked: the server holds {len(server.held())} tosses")
+    block_api(driver, False)
+    wait_row(driver, name, f"held by class {CODE}", 40, "toss 3 unblocked")
+    print(f"toss 3 unblocked: {row_state(driver, name)}")
+
+    texts = downloads(driver)
+    check_server_holds(server, kept, texts, "after the three tosses")
+    # Every held toss posted again under its id: 200, none stored twice.
+    again = driver.execute_async_script("window.explorer.classResendHeld().then(arguments[0])")
+    if sorted(s for _, s in again) != [200, 200, 200]:
+        fail(f"the held tosses posted again: answered {again}")
+    check_server_holds(server, kept, texts, "after every held toss was posted again")
+    print(f"the server holds {len(server.held())} tosses, each once, in the order kept; posted again: {again}")
+
+    # The class's results (GET me): the pooled body and this student's tosses.
+    tap(driver, "classRefresh")
+    me = wait_for(driver, "return [document.getElementById('classPooled').textContent, "
+                  "document.querySelectorAll('#classMine tr').length - 1]", lambda r: r[1] == 3, 20)
+    if "pooled from 3 tosses" not in me[0] or "0.2213 ± 0.0041" not in me[0] or me[1] != 3:
+        fail(f"the class's results: {me}")
+    print(f"the class's results: {me[0]}; {me[1]} tosses of the student's")
+
+
+if __name__ == "__main__":
+    main()
