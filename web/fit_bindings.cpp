@@ -324,7 +324,7 @@ val fit_recordings(const val& files, const std::string& drag, const std::string&
 /// Why `name` (UTF-8) cannot be a name under the project's one rule for names (a recording's, a
 /// student's in a class: common/file_name.hpp), or "" where it can: the page checks a student's
 /// name as the class's server does before it asks.
-std::string name_problem(const std::string& name) { return file_name_problem(name); }
+std::string name_problem(const std::string& name) { return bookspin::file_name_problem(name); }
 
 }  // namespace
 

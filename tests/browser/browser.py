@@ -152,7 +152,7 @@ def serve(folder, address="127.0.0.1"):
 
 @contextlib.contextmanager
 def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media=False,
-                 offline=False, exact_viewport=False, profile=None, script_timeout=300):
+                 offline=False, exact_viewport=False, profile=None, script_timeout=300, extra_args=()):
     """Headless Chromium for the length of the with block; yields the Selenium driver and
     quits it after.
 
@@ -163,7 +163,8 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
     protocol. profile: the user-data folder (default: a temporary one, removed after).
     The browser's console is kept at every level: see console_errors(). A script the test
     runs in the page may take up to `script_timeout` seconds (Selenium's default, 30 s, is
-    too short for a long run of the physics on a loaded 2-core machine)."""
+    too short for a long run of the physics on a loaded 2-core machine). extra_args: more of
+    Chromium's switches (a test server's certificate trusted by its key's hash)."""
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
 
@@ -181,6 +182,7 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
         args += ["--mute-audio", "--autoplay-policy=no-user-gesture-required"]
     if offline:
         args += ["--proxy-server=http://127.0.0.1:9", "--proxy-bypass-list=<-loopback>"]
+    args += list(extra_args)
     options = webdriver.ChromeOptions()
     options.binary_location = chromium
     for arg in args:
@@ -260,10 +262,13 @@ return Array.from(document.querySelectorAll('body *')).filter(e =>
 """
 
 
-def text_problems(driver):
+def text_problems(driver, unseen=None):
     """What a reader cannot read on the page as shown (docs/outputs.md, "Pictures"): text under
-    12 px and text past its box, each as a line; and the element count and smallest size."""
-    texts = driver.execute_script(TEXT_STATE)
+    12 px and text past its box, each as a line; and the element count and smallest size.
+    `unseen`: a selector of elements not shown (a screen reader's live region clipped to a
+    pixel), left out."""
+    texts = driver.execute_script(TEXT_STATE.replace("querySelectorAll('body *')", f"querySelectorAll('body *:not({unseen})')")
+                                  if unseen else TEXT_STATE)
     problems = []
     small = [t for t in texts if t["size"] < 12]
     if small:

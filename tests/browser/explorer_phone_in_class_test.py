@@ -249,7 +249,7 @@ def screenshots(driver, shots, stem):
         time.sleep(0.3)
         path = shots / f"explorer-phone-in-class-{stem}-{size[0]}x{size[1]}.png"
         driver.save_screenshot(str(path))
-        problems = text_problems(driver)
+        problems = text_problems(driver, unseen='.unseen, #spoken')
         if problems:
             fail(f"{stem} at {size[0]}x{size[1]}: {'; '.join(problems)} ({path})")
         print(f"screenshot {path}")

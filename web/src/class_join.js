@@ -203,7 +203,9 @@ export class ClassLink {
     }
     const was = this.said && this.said.get(item.toss);
     (this.said = this.said || new Map()).set(item.toss, item.state);
-    if (item.state === 'sending' || (item.state === 'waiting' && was === 'waiting')) return;
+    // Said: held, refused, and the first wait of a toss the server did not take (not each try,
+    // nor a toss just put in the outbox, which is sent at once).
+    if (item.state === 'sending' || (item.state === 'waiting' && (was === 'waiting' || !item.reason))) return;
     if (item.state === 'waiting' && was === 'sending' && this.outbox.failures > 1) return;
     announce(`${item.name}: ${stateWords(item)}`);
     if (item.state === 'held') {
