@@ -197,6 +197,28 @@ Fit fit(const py::object& recording_input, const std::string& drag, const py::ob
   return out;
 }
 
+const char* kReadDoc = R"(read_gyro_csv(text, file="recording.csv") -> dict
+
+Reads a gyroscope recording's CSV text (a phyphox "Raw Data.csv" or a plain t,wx,wy,wz CSV, as
+the lab's Download writes it) with the reader `bookspin fit` reads a file with, without a file
+and without fitting: what a server checks before it holds a recording.
+
+Returns {"t": (N,) float64 s, "omega": (N, 3) float64 rad/s, phone frame, as measured}.
+Raises bookspin.Error with the reader's one line naming `file`, the row and the column (a text
+or NaN cell, too few cells, time not increasing, fewer than 10 samples, not a recording).)";
+
+py::dict read_gyro_csv(const std::string& text, const std::string& file) {
+  std::optional<fit::GyroRecording> recording;
+  {
+    py::gil_scoped_release release;
+    recording = fit::parse_gyro_csv(text, file, file);
+  }
+  py::dict out;
+  out["t"] = values_array(recording->t);
+  out["omega"] = vectors_array(recording->omega);
+  return out;
+}
+
 }  // namespace
 
 void add_fit(py::module_& m) {
@@ -217,6 +239,8 @@ void add_fit(py::module_& m) {
       });
   m.def("fit", &fit, py::arg("recording"), py::arg("drag") = "linear",
         py::arg("tosses") = py::none(), py::arg("moments") = py::none(), kDoc);
+  m.def("read_gyro_csv", &read_gyro_csv, py::arg("text"), py::arg("file") = "recording.csv",
+        kReadDoc);
 }
 
 }  // namespace bookspin::python

@@ -1,0 +1,50 @@
+"""The projector (docs/class.md, "The projector"): its page (projector.html beside this file:
+the join screen, a QR code of the phones' address with the address and the class code in large
+type, then the class live from the event stream) and the QR code as SVG, made by segno
+(python3-segno). The teacher's key is never in the QR code: it holds the phones' address only.
+The local CA's certificate is served at /ca.pem for the phones that install it."""
+import io
+import pathlib
+
+import segno
+from aiohttp import web
+
+PAGE = pathlib.Path(__file__).with_name("projector.html")
+# The projector page loads nothing from any other host, and nothing but itself and this
+# server's API: what the browser is told to refuse.
+PAGE_POLICY = ("default-src 'none'; script-src 'self' 'unsafe-inline'; style-src 'unsafe-inline'; "
+               "img-src 'self' data:; connect-src 'self'; base-uri 'none'; form-action 'none'; "
+               "frame-ancestors 'none'")
+
+
+def qr_svg(text):
+    """The QR code of `text` as an SVG document (error correction M, a 4-module quiet zone)."""
+    out = io.BytesIO()
+    segno.make(text, error="m", micro=False).save(out, kind="svg", scale=10, border=4,
+                                                  dark="#000", light="#fff", xmldecl=False)
+    return out.getvalue().decode("utf-8")
+
+
+def add_routes(app, server):
+    async def projector(request):
+        code = request.query.get("class", "")
+        server.teacher(request, server.class_code_of(code))
+        return web.FileResponse(PAGE, headers={"Content-Security-Policy": PAGE_POLICY,
+                                               "Cache-Control": "no-cache"})
+
+    async def qr(request):
+        code = server.class_code(request)
+        server.teacher(request, code)
+        return web.Response(text=qr_svg(server.join_url(code)), content_type="image/svg+xml")
+
+    async def ca(request):
+        if server.ca_file is None:
+            raise web.HTTPNotFound()
+        return web.Response(body=server.ca_file.read_bytes(),
+                            content_type="application/x-x509-ca-cert",
+                            headers={"Content-Disposition":
+                                     'attachment; filename="bookspin-class-ca.crt"'})
+
+    app.router.add_get("/projector", projector)
+    app.router.add_get("/api/class/{code}/qr.svg", qr)
+    app.router.add_get("/ca.pem", ca)

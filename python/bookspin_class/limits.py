@@ -1,0 +1,174 @@
+"""What a request may be (docs/class.md, "Limits"): its size, its rate per client, how slowly it
+may arrive, and the shape of each field. Every refusal is an HTTP error whose body is
+{"error": "<one line>"}; nothing is stored for a refused request."""
+import asyncio
+import json
+import re
+import time
+import unicodedata
+import uuid
+
+from aiohttp import web
+from aiohttp.web_protocol import RequestHandler
+
+MAX_BODY = 4 * 1024 * 1024  # bytes: a toss's JSON (a 60 s recording at 100 Hz is ~2.5 MB)
+MAX_NAME = 80               # characters of a student's or a recording's name
+BODY_SECONDS = 10.0         # a request's body must arrive within this
+
+
+def refuse(status, reason):
+    """An HTTP error response {"error": reason} with `status` (raised by the handlers)."""
+    kind = web.HTTPException
+    for candidate in (web.HTTPBadRequest, web.HTTPUnauthorized, web.HTTPForbidden,
+                      web.HTTPNotFound, web.HTTPConflict, web.HTTPRequestEntityTooLarge,
+                      web.HTTPTooManyRequests, web.HTTPRequestTimeout,
+                      web.HTTPUnsupportedMediaType, web.HTTPMethodNotAllowed):
+        if candidate.status_code == status:
+            kind = candidate
+    if kind is web.HTTPRequestEntityTooLarge:
+        return kind(max_size=MAX_BODY, actual_size=0, text=json.dumps({"error": reason}),
+                    content_type="application/json")
+    if kind is web.HTTPMethodNotAllowed:
+        return kind("?", [], text=json.dumps({"error": reason}), content_type="application/json")
+    return kind(text=json.dumps({"error": reason}, ensure_ascii=False),
+                content_type="application/json")
+
+
+async def json_body(request):
+    """The request's JSON object, read within BODY_SECONDS and MAX_BODY bytes; 413, 408 or 400
+    otherwise."""
+    if request.content_length is not None and request.content_length > MAX_BODY:
+        raise refuse(413, f"request body of {request.content_length} bytes is over the limit of "
+                          f"{MAX_BODY} bytes")
+    try:
+        raw = await asyncio.wait_for(request.read(), BODY_SECONDS)
+    except asyncio.TimeoutError:
+        raise refuse(408, f"request body not received within {BODY_SECONDS:g} s") from None
+    except web.HTTPRequestEntityTooLarge:
+        raise refuse(413, f"request body over the limit of {MAX_BODY} bytes") from None
+    try:
+        value = json.loads(raw.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError) as error:
+        raise refuse(400, f"request body is not JSON in UTF-8: {error}") from None
+    if not isinstance(value, dict):
+        raise refuse(400, "request body is not a JSON object")
+    return value
+
+
+def text_field(body, key, max_chars=None, required=True):
+    value = body.get(key)
+    if value is None and not required:
+        return None
+    if not isinstance(value, str):
+        raise refuse(400, f'"{key}": expected a string')
+    if max_chars is not None and len(value) > max_chars:
+        raise refuse(400, f'"{key}": {len(value)} characters, over the limit of {max_chars}')
+    return value
+
+
+def person_name(body, key="name"):
+    """A name in any alphabet (NFC), 1..MAX_NAME characters, no control characters, no path
+    separators (it becomes part of a file name in the class's set)."""
+    name = unicodedata.normalize("NFC", text_field(body, key, max_chars=4 * MAX_NAME)).strip()
+    if not name:
+        raise refuse(400, f'"{key}": empty')
+    if len(name) > MAX_NAME:
+        raise refuse(400, f'"{key}": {len(name)} characters, over the limit of {MAX_NAME}')
+    for ch in name:
+        if unicodedata.category(ch) in ("Cc", "Cf", "Cs", "Co", "Cn") or ch in "/\\":
+            raise refuse(400, f'"{key}": character U+{ord(ch):04X} is not allowed in a name')
+    return name
+
+
+def toss_id(value, what='"toss"'):
+    """A toss id made on the phone: a UUID (any version), in its canonical lower-case form."""
+    try:
+        parsed = uuid.UUID(value) if isinstance(value, str) and len(value) <= 40 else None
+    except ValueError:
+        parsed = None
+    if parsed is None:
+        raise refuse(400, f"{what}: expected a UUID, got {json.dumps(value)[:60]}")
+    return str(parsed)
+
+
+_ISO = re.compile(r"^\d{4}-\d{2}-\d{2}T\d{2}:\d{2}(:\d{2}(\.\d{1,9})?)?(Z|[+-]\d{2}:?\d{2})?$")
+
+
+def iso_time(value):
+    if not isinstance(value, str) or not _ISO.match(value):
+        raise refuse(400, f'"recorded_at": expected an ISO 8601 time, got '
+                          f'{json.dumps(value)[:60]}')
+    return value
+
+
+class RateLimit:
+    """A token bucket per client address: `rate` requests a second on average, `burst` at once;
+    past it 429 "too many requests"."""
+
+    def __init__(self, rate, burst):
+        self.rate, self.burst = rate, burst
+        self.buckets = {}
+
+    def allow(self, client, now=None):
+        now = time.monotonic() if now is None else now
+        tokens, last = self.buckets.get(client, (self.burst, now))
+        tokens = min(self.burst, tokens + (now - last) * self.rate)
+        if tokens < 1.0:
+            self.buckets[client] = (tokens, now)
+            return False
+        self.buckets[client] = (tokens - 1.0, now)
+        if len(self.buckets) > 10000:  # forget the idle ones
+            self.buckets = {k: v for k, v in self.buckets.items() if now - v[1] < 60}
+        return True
+
+
+class HeadDeadlineHandler(RequestHandler):
+    """aiohttp's connection handler with a deadline for the first request's head: a connection
+    that has not sent a whole request head within `head_seconds` of opening (a slow-loris) gets
+    408 {"error": …} and is closed. aiohttp itself closes a kept-alive connection idle (or
+    half-sent) for keepalive_timeout, and the handlers bound the body (BODY_SECONDS)."""
+
+    head_seconds = 10.0
+
+    def connection_made(self, transport):
+        super().connection_made(transport)
+        self.heads_seen = 0
+        self._deadline = self._loop.call_later(self.head_seconds, self._head_overdue)
+
+    def _head_overdue(self):
+        if self.heads_seen == 0 and self.transport is not None:
+            body = json.dumps({"error": f"request head not received within "
+                                        f"{self.head_seconds:g} s"}).encode()
+            self.transport.write(b"HTTP/1.1 408 Request Timeout\r\nContent-Type: "
+                                 b"application/json\r\nConnection: close\r\nContent-Length: " +
+                                 str(len(body)).encode() + b"\r\n\r\n" + body)
+            self.force_close()
+            self.transport.close()
+
+    def connection_lost(self, exc):
+        self._deadline.cancel()
+        super().connection_lost(exc)
+
+
+class GuardedServer(web.Server):
+    """aiohttp's low-level server making HeadDeadlineHandler connections."""
+
+    def __call__(self):
+        return HeadDeadlineHandler(self, loop=self._loop, **self._kwargs)
+
+
+class GuardedRunner(web.AppRunner):
+    """web.AppRunner whose server makes HeadDeadlineHandler connections (aiohttp 3.8, Debian
+    12's: the server object's class is swapped for GuardedServer, which adds no state)."""
+
+    async def _make_server(self):
+        server = await super()._make_server()
+        server.__class__ = GuardedServer
+        return server
+
+
+def mark_head_seen(request):
+    """Tells the connection's deadline that a whole request head arrived."""
+    protocol = request.protocol
+    if isinstance(protocol, HeadDeadlineHandler):
+        protocol.heads_seen += 1

@@ -1,0 +1,133 @@
+"""The class's pooled body (docs/class.md, "The projector's numbers"): every toss not left out,
+fitted as one body by bookspin.fit([files…]), the very fit `bookspin fit FILES…` makes of the
+set the teacher downloads (the same CSV text in files of the same names), so the projector's
+numbers are the command's to the digit. The fit runs in a worker thread (the module releases
+the GIL while it fits), one at a time; tosses that arrive during a fit are fitted together by
+the next (a burst is one refit)."""
+import asyncio
+import datetime
+import io
+import pathlib
+import re
+import tempfile
+import unicodedata
+import zipfile
+
+import bookspin
+
+
+def file_stem(student_name, seq):
+    """The file name (without .csv) a toss has in the class's set: the student's name (NFC,
+    every character that is not a letter, digit or '-' made '-') and the class's number of the
+    toss. Unique in the class (seq is), and already in the form the fit names a recording by
+    (common/file_name.hpp), so the fit's table names it the same."""
+    name = unicodedata.normalize("NFC", student_name)
+    name = re.sub(r"[^\w-]+", "-", name, flags=re.UNICODE).strip("-_") or "toss"
+    return f"{name}-{seq}"
+
+
+def write_set(folder, files):
+    """Writes {stem: csv text} as FOLDER/stem.csv; returns the paths, sorted."""
+    paths = []
+    for stem, text in files.items():
+        path = pathlib.Path(folder) / f"{stem}.csv"
+        path.write_bytes(text.encode("utf-8"))
+        paths.append(str(path))
+    return sorted(paths)
+
+
+def set_zip(files, folder_name):
+    """The class's set as a zip: folder_name/stem.csv per toss (the bytes the fit read)."""
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as archive:
+        for stem in sorted(files):
+            archive.writestr(f"{folder_name}/{stem}.csv", files[stem].encode("utf-8"))
+    return out.getvalue()
+
+
+def fit_set(files):
+    """bookspin.fit of the set {stem: csv text} written to a fresh folder: (body dict with
+    ratios and σ, {stem: [flight rows]}) or raises bookspin.Error. Called in a worker thread."""
+    with tempfile.TemporaryDirectory(prefix="bookspin-class-") as folder:
+        paths = write_set(folder, files)
+        fit = bookspin.fit(paths)
+    body = fit.body
+    flights = {stem: [] for stem in files}
+    only = next(iter(files)) if len(files) == 1 else None
+    for row in fit.tosses:
+        stem = only if only is not None else row.get("recording")
+        flights.setdefault(stem, []).append(flight_of(row))
+    pooled = {
+        "tosses": len(fit.tosses),
+        "recordings": len(files),
+        "ratios": [body["I1_over_I3"], body["I2_over_I3"], body["I3_over_I3"]],
+        "sigma": [body["I1_sigma"], body["I2_sigma"], 0.0],
+        "summary": list(fit.summary),
+    }
+    return pooled, flights
+
+
+def flight_of(row):
+    """A fit table's row as the projector shows it: T/2 measured, predicted from the others ±
+    2σ and whether the measured lies within (as the command's table says "within 2σ")."""
+    measured = row.get("half_period_measured")
+    predicted = row.get("half_period_predicted")
+    sigma = row.get("half_period_predicted_sigma")
+    within = None
+    if measured is not None and predicted is not None and sigma is not None:
+        within = abs(measured - predicted) <= 2.0 * sigma
+    return {"flight": int(row["toss"]), "t_start": row.get("t_start"), "t_end": row.get("t_end"),
+            "half_period_measured": measured, "half_period_predicted": predicted,
+            "sigma": sigma, "within": within, "flag": row.get("flag"),
+            "not_predicted": row.get("not_predicted")}
+
+
+class PooledFit:
+    """One class's pooled fit, kept up to date: request() after each change; the fit runs in a
+    thread, one at a time for the whole server (`gate`), and `on_done` is called (on the event
+    loop) with each result."""
+
+    def __init__(self, files_of, on_done, gate):
+        self.files_of = files_of  # () -> {stem: csv text}, the tosses not left out
+        self.on_done = on_done
+        self.gate = gate
+        self.dirty = False
+        self.task = None
+        self.fitting = False
+        self.result = {"tosses": 0, "recordings": 0, "ratios": None, "sigma": None,
+                       "updated": None, "error": None}
+        self.flights = {}
+        self.fits = 0
+
+    def request(self):
+        self.dirty = True
+        if self.task is None or self.task.done():
+            self.task = asyncio.get_running_loop().create_task(self._run())
+
+    async def _run(self):
+        while self.dirty:
+            self.dirty = False
+            async with self.gate:
+                files = self.files_of()
+                self.fitting = True
+                try:
+                    if not files:
+                        pooled, flights = {"tosses": 0, "recordings": 0, "ratios": None,
+                                           "sigma": None}, {}
+                        error = None
+                    else:
+                        try:
+                            pooled, flights = await asyncio.to_thread(fit_set, files)
+                            error = None
+                        except bookspin.Error as failure:
+                            pooled, flights = {"tosses": 0, "recordings": len(files),
+                                               "ratios": None, "sigma": None}, {}
+                            error = str(failure)
+                finally:
+                    self.fitting = False
+            self.fits += 1
+            pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
+                timespec="seconds")
+            pooled["error"] = error
+            self.result, self.flights = pooled, flights
+            self.on_done()

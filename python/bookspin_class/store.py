@@ -1,0 +1,220 @@
+"""The class's data (docs/class.md, "What is kept"): classes, students and tosses, in SQLite (a
+file in the teacher's folder, the default) or PostgreSQL (by URL), one schema and one set of
+statements for both. Each write is committed before it returns, so a toss a phone was told is
+held survives a SIGKILL of the server. Times are seconds since the epoch (UTC)."""
+import hashlib
+import sqlite3
+import threading
+import time
+
+SCHEMA = [
+    """CREATE TABLE IF NOT EXISTS classes (
+         code TEXT PRIMARY KEY,
+         teacher_key TEXT NOT NULL UNIQUE,
+         created DOUBLE PRECISION NOT NULL)""",
+    """CREATE TABLE IF NOT EXISTS students (
+         id TEXT PRIMARY KEY,
+         class_code TEXT NOT NULL REFERENCES classes(code) ON DELETE CASCADE,
+         token_sha256 TEXT NOT NULL UNIQUE,
+         name TEXT NOT NULL,
+         joined DOUBLE PRECISION NOT NULL)""",
+    """CREATE TABLE IF NOT EXISTS tosses (
+         toss TEXT PRIMARY KEY,
+         class_code TEXT NOT NULL REFERENCES classes(code) ON DELETE CASCADE,
+         student TEXT NOT NULL REFERENCES students(id) ON DELETE CASCADE,
+         seq INTEGER NOT NULL,
+         name TEXT NOT NULL,
+         recorded_at TEXT NOT NULL,
+         csv TEXT NOT NULL,
+         csv_sha256 TEXT NOT NULL,
+         received DOUBLE PRECISION NOT NULL,
+         excluded TEXT,
+         UNIQUE (class_code, seq))""",
+]
+
+
+def token_sha256(token):
+    """The stored form of a student's token: its SHA-256 in hex (the token itself is not kept)."""
+    return hashlib.sha256(token.encode("utf-8")).hexdigest()
+
+
+class Store:
+    """One connection, used under a lock (the server's handlers call it from the event loop's
+    thread; the retention timer too). `paramstyle` is the driver's: "?" (sqlite3) or "%s"
+    (psycopg); statements are written with "?" and translated."""
+
+    def __init__(self, connection, marker, description):
+        self.connection = connection
+        self.marker = marker
+        self.description = description
+        self.lock = threading.Lock()
+        with self.lock:
+            for statement in SCHEMA:
+                self.connection.execute(statement)
+            self.connection.commit()
+
+    def _sql(self, statement):
+        return statement if self.marker == "?" else statement.replace("?", "%s")
+
+    def _all(self, statement, args=()):
+        with self.lock:
+            cursor = self.connection.execute(self._sql(statement), args)
+            rows = cursor.fetchall()
+            self.connection.commit()
+            return rows
+
+    def _write(self, statements):
+        """Runs (statement, args) pairs as one transaction, committed before it returns."""
+        with self.lock:
+            try:
+                for statement, args in statements:
+                    self.connection.execute(self._sql(statement), args)
+                self.connection.commit()
+            except BaseException:
+                self.connection.rollback()
+                raise
+
+    # Classes.
+    def add_class(self, code, teacher_key):
+        self._write([("INSERT INTO classes (code, teacher_key, created) VALUES (?, ?, ?)",
+                      (code, teacher_key, time.time()))])
+
+    def latest_class(self):
+        rows = self._all("SELECT code, teacher_key FROM classes ORDER BY created DESC LIMIT 1")
+        return rows[0] if rows else None
+
+    def class_exists(self, code):
+        return bool(self._all("SELECT 1 FROM classes WHERE code = ?", (code,)))
+
+    def class_of_key(self, key):
+        rows = self._all("SELECT code FROM classes WHERE teacher_key = ?", (key,))
+        return rows[0][0] if rows else None
+
+    def teacher_key(self, code):
+        rows = self._all("SELECT teacher_key FROM classes WHERE code = ?", (code,))
+        return rows[0][0] if rows else None
+
+    def class_codes(self):
+        return [r[0] for r in self._all("SELECT code FROM classes ORDER BY created")]
+
+    def delete_class(self, code):
+        """Ends a class: its tosses, students and itself deleted (children first, so that no
+        foreign-key setting of the database is relied on)."""
+        self._write([("DELETE FROM tosses WHERE class_code = ?", (code,)),
+                     ("DELETE FROM students WHERE class_code = ?", (code,)),
+                     ("DELETE FROM classes WHERE code = ?", (code,))])
+
+    def delete_older_than(self, seconds):
+        """Deletes every class created more than `seconds` ago with all its data; returns their
+        codes."""
+        cutoff = time.time() - seconds
+        codes = [r[0] for r in self._all("SELECT code FROM classes WHERE created < ?", (cutoff,))]
+        for code in codes:
+            self.delete_class(code)
+        return codes
+
+    # Students.
+    def add_student(self, student, code, token, name):
+        self._write([("INSERT INTO students (id, class_code, token_sha256, name, joined) "
+                      "VALUES (?, ?, ?, ?, ?)", (student, code, token_sha256(token), name,
+                                                 time.time()))])
+
+    def student_of_token(self, token):
+        """(id, class code, name) of the student whose token this is, or None."""
+        rows = self._all("SELECT id, class_code, name FROM students WHERE token_sha256 = ?",
+                         (token_sha256(token),))
+        return rows[0] if rows else None
+
+    def students(self, code):
+        return self._all("SELECT id, name FROM students WHERE class_code = ? ORDER BY joined, id",
+                         (code,))
+
+    # Tosses.
+    def toss(self, toss):
+        """(class code, student, csv_sha256, name, recorded_at) of a held toss id, or None."""
+        rows = self._all("SELECT class_code, student, csv_sha256, name, recorded_at FROM tosses "
+                         "WHERE toss = ?", (toss,))
+        return rows[0] if rows else None
+
+    def add_toss(self, toss, code, student, name, recorded_at, csv, csv_sha256):
+        """Holds a toss, committed before it returns; its seq is the class's next number (the
+        file name the pooled set gives it). Raises the driver's integrity error when the id is
+        held already (two requests at once: the caller looks again)."""
+        with self.lock:
+            try:
+                cursor = self.connection.execute(
+                    self._sql("SELECT COALESCE(MAX(seq), 0) + 1 FROM tosses WHERE class_code = ?"),
+                    (code,))
+                seq = cursor.fetchall()[0][0]
+                self.connection.execute(
+                    self._sql("INSERT INTO tosses (toss, class_code, student, seq, name, "
+                              "recorded_at, csv, csv_sha256, received, excluded) "
+                              "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, NULL)"),
+                    (toss, code, student, seq, name, recorded_at, csv, csv_sha256, time.time()))
+                self.connection.commit()
+            except BaseException:
+                self.connection.rollback()
+                raise
+        return seq
+
+    def set_excluded(self, code, toss, reason):
+        """Leaves a toss out (reason: a str) or puts it back (None); False when the class holds
+        no such toss."""
+        if not self._all("SELECT 1 FROM tosses WHERE class_code = ? AND toss = ?", (code, toss)):
+            return False
+        self._write([("UPDATE tosses SET excluded = ? WHERE class_code = ? AND toss = ?",
+                      (reason, code, toss))])
+        return True
+
+    def tosses(self, code):
+        """Every toss of a class, oldest first, as dicts (without the CSV text)."""
+        rows = self._all("SELECT t.toss, t.student, s.name, t.seq, t.name, t.recorded_at, "
+                         "t.received, t.excluded FROM tosses t JOIN students s "
+                         "ON s.id = t.student WHERE t.class_code = ? ORDER BY t.seq", (code,))
+        keys = ("toss", "student", "student_name", "seq", "name", "recorded_at", "received",
+                "excluded")
+        return [dict(zip(keys, row)) for row in rows]
+
+    def csv_texts(self, code):
+        """{seq: csv text} of the class's tosses that are not left out."""
+        return dict(self._all("SELECT seq, csv FROM tosses WHERE class_code = ? AND excluded "
+                              "IS NULL", (code,)))
+
+    def counts(self):
+        """Rows per table, for the tests' "nothing stored"."""
+        return {table: self._all(f"SELECT COUNT(*) FROM {table}")[0][0]
+                for table in ("classes", "students", "tosses")}
+
+    def close(self):
+        with self.lock:
+            self.connection.close()
+
+
+def open_sqlite(path):
+    """The default store: an SQLite file (WAL journal, synchronous=FULL: a commit is on disk
+    when it returns)."""
+    connection = sqlite3.connect(str(path), check_same_thread=False, isolation_level=None)
+    connection.execute("PRAGMA journal_mode=WAL")
+    connection.execute("PRAGMA synchronous=FULL")
+    connection.execute("PRAGMA foreign_keys=ON")
+    connection.isolation_level = ""  # transactions begin implicitly again; commit() ends them
+    return Store(connection, "?", f"SQLite {path}")
+
+
+def open_postgres(url):
+    """A school's PostgreSQL by URL (libpq's form: postgresql://USER@HOST/DB or
+    postgresql:///DB?host=/socket/dir), the same schema."""
+    import psycopg
+    connection = psycopg.connect(url)
+    return Store(connection, "%s", "PostgreSQL " + connection.info.dbname)
+
+
+def integrity_errors():
+    """The drivers' "unique key taken" errors, for the caller that inserts concurrently."""
+    errors = [sqlite3.IntegrityError]
+    try:
+        import psycopg
+        errors.append(psycopg.errors.IntegrityError)
+    except ImportError:
+        pass
+    return tuple(errors)

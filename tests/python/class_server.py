@@ -1,0 +1,219 @@
+"""What the class server's tests share (tests/python/test_class_server.py, docs/class.md): a
+real `bookspin-class` server started on 127.0.0.1 (python3 -m bookspin_class, the module
+BUILD/python/bookspin and python/bookspin_class), a real PostgreSQL started in a scratch folder
+(initdb + pg_ctl as an unprivileged user, on a unix socket), plain HTTPS clients (http.client,
+verifying the server's certificate against the class's own CA), and the store's row counts."""
+import contextlib
+import http.client
+import json
+import os
+import pathlib
+import pwd
+import shutil
+import signal
+import socket
+import sqlite3
+import ssl
+import subprocess
+import sys
+import time
+import uuid
+
+from conftest import SOURCE_DIR
+
+REAL = SOURCE_DIR.parent / "shared" / "recordings-real" / "dvarkian-2022-05-03"
+PG_BIN = pathlib.Path("/usr/lib/postgresql/15/bin")
+
+
+def in_ci():
+    return os.environ.get("CI", "").lower() in ("1", "true", "yes")
+
+
+def real_csv(name):
+    """The CSV text of a real recording (its Raw Data.csv, or the single-sensor export)."""
+    folder = REAL / name
+    files = [folder / "Raw Data.csv"] if (folder / "Raw Data.csv").is_file() else \
+        sorted(folder.glob("*.csv"))
+    return files[0].read_text(encoding="utf-8")
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class Server:
+    """A bookspin-class process on 127.0.0.1, its printed code and key, and clients."""
+
+    def __init__(self, data, page, postgres=None, extra=(), port=None):
+        self.data, self.page, self.postgres = pathlib.Path(data), page, postgres
+        self.extra, self.port = list(extra), port or free_port()
+        self.process = None
+
+    def start(self, new=False):
+        env = dict(os.environ)
+        env["PYTHONPATH"] = os.pathsep.join(
+            [str(SOURCE_DIR / "python")] + [p for p in env.get("PYTHONPATH", "").split(os.pathsep)
+                                            if p])
+        args = [sys.executable, "-m", "bookspin_class", "--data", str(self.data), "--host",
+                "127.0.0.1", "--address", "127.0.0.1", "--port", str(self.port), "--page",
+                str(self.page), *self.extra]
+        if self.postgres:
+            args += ["--postgres", self.postgres]
+        if new:
+            args.append("--new")
+        self.process = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                        text=True, env=env)
+        lines, self.before = [], []
+        while len(lines) < 5:
+            line = self.process.stdout.readline()
+            if not line:
+                raise AssertionError(f"the server ended: {lines} {self.process.stderr.read()}")
+            if line.startswith("bookspin-class: class ") or lines:
+                lines.append(line.rstrip("\n"))
+            else:
+                self.before.append(line.rstrip("\n"))
+        self.lines = lines
+        self.code = lines[2].split()[-1]
+        self.key = lines[3].split("key=")[1].split()[0]
+        self.context = ssl.create_default_context(
+            cafile=str(self.data / "tls" / "bookspin-class-ca.pem"))
+        return self
+
+    def kill(self):
+        self.process.send_signal(signal.SIGKILL)
+        self.process.wait(timeout=30)
+
+    def stop(self):
+        if self.process and self.process.poll() is None:
+            self.process.send_signal(signal.SIGTERM)
+            try:
+                self.process.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                self.kill()
+
+    def request(self, method, path, body=None, token=None, raw=None, headers=None, timeout=60):
+        """(status, decoded JSON or bytes) of one HTTPS request on a fresh connection."""
+        connection = http.client.HTTPSConnection("127.0.0.1", self.port, context=self.context,
+                                                 timeout=timeout)
+        try:
+            sent = dict(headers or {})
+            if token:
+                sent["Authorization"] = f"Bearer {token}"
+            data = raw if raw is not None else (
+                None if body is None else json.dumps(body, ensure_ascii=False).encode("utf-8"))
+            if data is not None:
+                sent.setdefault("Content-Type", "application/json")
+            connection.request(method, path, body=data, headers=sent)
+            response = connection.getresponse()
+            payload = response.read()
+            if response.getheader("Content-Type", "").startswith("application/json"):
+                payload = json.loads(payload.decode("utf-8"))
+            return response.status, payload
+        finally:
+            connection.close()
+
+    def join(self, name, code=None):
+        status, answer = self.request("POST", f"/api/class/{code or self.code}/join",
+                                      {"name": name})
+        assert status == 201, answer
+        return answer["token"]
+
+    def post_toss(self, token, csv, name="toss", toss=None, code=None, timeout=60):
+        body = {"toss": toss or str(uuid.uuid4()), "name": name,
+                "recorded_at": "2022-05-03T12:13:01Z", "csv": csv}
+        return self.request("POST", f"/api/class/{code or self.code}/tosses", body, token=token,
+                            timeout=timeout)
+
+    def state(self, code=None, key=None):
+        status, answer = self.request("GET", f"/api/class/{code or self.code}/state",
+                                      token=key or self.key)
+        assert status == 200, answer
+        return answer
+
+    def fitted_state(self, recordings, timeout=600):
+        """The class's state once its pooled fit holds `recordings` recordings and is idle."""
+        end = time.monotonic() + timeout
+        while time.monotonic() < end:
+            state = self.state()
+            pooled = state["pooled"]
+            if not pooled["fitting"] and pooled["recordings"] == recordings and \
+                    (pooled["ratios"] is not None or pooled["error"]):
+                return state
+            time.sleep(0.5)
+        raise AssertionError(f"no fit of {recordings} recordings within {timeout} s: {state}")
+
+    def counts(self):
+        """Rows in each table of the store, read beside the server."""
+        if self.postgres:
+            import psycopg
+            with psycopg.connect(self.postgres) as connection:
+                return {t: connection.execute(f"SELECT COUNT(*) FROM {t}").fetchone()[0]
+                        for t in ("classes", "students", "tosses")}
+        with contextlib.closing(sqlite3.connect(str(self.data / "class.sqlite3"))) as connection:
+            return {t: connection.execute(f"SELECT COUNT(*) FROM {t}").fetchone()[0]
+                    for t in ("classes", "students", "tosses")}
+
+    def execute(self, statement):
+        """Runs one statement on the store (the tests' way to age a class)."""
+        if self.postgres:
+            import psycopg
+            with psycopg.connect(self.postgres) as connection:
+                connection.execute(statement)
+            return
+        with contextlib.closing(sqlite3.connect(str(self.data / "class.sqlite3"))) as connection:
+            connection.execute(statement)
+            connection.commit()
+
+
+class Postgres:
+    """A PostgreSQL 15 of the tests' own: initdb and pg_ctl in a scratch folder, run as the
+    user `nobody` when the tests run as root (PostgreSQL refuses root), listening on a unix
+    socket in that folder only; databases made per server."""
+
+    def __init__(self, folder):
+        self.folder = pathlib.Path(folder)
+        self.user = None
+        self.count = 0
+
+    def _as_user(self, *args):
+        command = [str(a) for a in args]
+        if os.geteuid() == 0:
+            command = ["runuser", "-u", "nobody", "--", *command]
+        return subprocess.run(command, capture_output=True, text=True, timeout=120)
+
+    def start(self):
+        """None when started; otherwise the reason it could not start."""
+        if not (PG_BIN / "initdb").is_file():
+            return "PostgreSQL 15 is not installed (scripts/install-deps.sh: postgresql-15)"
+        self.folder.mkdir(parents=True, exist_ok=True)
+        if os.geteuid() == 0:
+            if shutil.which("runuser") is None:
+                return "running as root without runuser: PostgreSQL cannot start"
+            os.chmod(self.folder, 0o777)
+        self.user = "nobody" if os.geteuid() == 0 else pwd.getpwuid(os.geteuid()).pw_name
+        done = self._as_user(PG_BIN / "initdb", "-D", self.folder / "db", "-A", "trust", "-U",
+                             self.user, "-E", "UTF8", "--no-sync")
+        if done.returncode:
+            return f"initdb failed: {done.stderr.strip()[-300:]}"
+        done = self._as_user(PG_BIN / "pg_ctl", "-D", self.folder / "db", "-l",
+                             self.folder / "log", "-w", "-t", "60", "-o",
+                             f"-k {self.folder} -c listen_addresses='' -c fsync=on", "start")
+        if done.returncode:
+            return f"pg_ctl start failed: {done.stderr.strip()[-300:]}"
+        return None
+
+    def new_database(self):
+        import psycopg
+        self.count += 1
+        name = f"class{self.count}"
+        with psycopg.connect(self.url("postgres"), autocommit=True) as connection:
+            connection.execute(f"CREATE DATABASE {name}")
+        return self.url(name)
+
+    def url(self, database):
+        return f"postgresql:///{database}?host={self.folder}&user={self.user}"
+
+    def stop(self):
+        self._as_user(PG_BIN / "pg_ctl", "-D", self.folder / "db", "-m", "immediate", "stop")
