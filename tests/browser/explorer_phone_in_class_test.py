@@ -23,35 +23,38 @@ elsewhere):
     once, in the order kept, each with the bytes of its recording;
   - the class's results as the server gives them (GET me): its pooled body and each of the
     student's tosses shown.
-The server: the class server of python/bookspin_class where the build has it (BOOKSPIN_CLASS
-below), else a stand-in written here (http.server) that answers as docs/class.md says.
-Screenshots (BINARY_DIR/test-output/browser/explorer-phone-in-class-{join,list}-WxH.png) at
-390x844 and 1280x720: the join form, and the list with held and waiting rows; none of their
-text under 12 px or past its box.
+The server: the real class server (python/bookspin_class, started by tests/python/
+class_server.py's Server over https, its certificate trusted by its key's hash), what it holds
+read from its SQLite store beside it; its packages missing, the test skips (fails under CI).
+Screenshots (BINARY_DIR/test-output/browser/explorer-phone-in-class-{join,list,results}-WxH.png)
+at 390x844 and 1280x720: the join form, the list with held and waiting rows, the class's
+results; none of their text under 12 px or past its box.
 
 Usage: explorer_phone_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
 under CI=true, where that is a failure (browser.py).
 """
+import base64
+import contextlib
 import csv
-import http.server
+import hashlib
 import io
-import json
 import os
 import re
-import threading
+import shutil
+import sqlite3
+import sys
+import tempfile
 import time
-import uuid
 from pathlib import Path
 
-from browser import (console_errors, fail, find_browser, lab_page_under_test, missing, open_browser,
-                     require, test_arguments, text_problems, wait_for)
+from browser import (at_sigma, console_errors, fail, find_browser, lab_page_under_test, missing,
+                     open_browser, require, test_arguments, text_problems, wait_for)
 from explorer_records_gyro_test import devtools, feed, feed_at_own_rate, override, tap
 
 SIZE = (390, 844)
 FOLDER = "dvarkian-2022-05-03"
 TOSSES = ["12-13-01", "12-13-51", "12-22-44"]
-CODE = "K7Q2XR"
 NAME = "太郎 Ωmega"
 UUID = re.compile(r"^[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}$")
 
@@ -61,101 +64,52 @@ def readings(path):
     return [float(r[0]) for r in rows], [tuple(float(c) for c in r[1:4]) for r in rows]
 
 
-class StandIn:
-    """A class server as docs/class.md says it answers, on 127.0.0.1: the page at
-    /explorer.html, join, tosses (a toss id held once per student: 201, 200 for the same bytes
-    again, 409 for other bytes), me. `held()`: every toss stored, in the order stored, as
-    {toss, name, recorded_at, csv}; `asked`: every toss post's id."""
+class RealServer:
+    """The class server (python/bookspin_class, docs/class.md) started on 127.0.0.1 with a class
+    of its own by tests/python/class_server.py's Server, serving the page built for this test:
+    its address, code, the switch that makes Chromium trust its certificate (its public key's
+    hash: nothing else ignored), and what its store holds, read beside it."""
 
-    def __init__(self, page_file):
-        self.page = Path(page_file).read_bytes()
-        self.students = {}   # token -> name
-        self.stored = []     # (token, body)
-        self.asked = []
-        self.lock = threading.Lock()
-        stand_in = self
+    def __init__(self, source, binary, page_file):
+        os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
+        os.environ["PYTHONPATH"] = os.pathsep.join([str(binary / "python"), os.environ.get("PYTHONPATH", "")])
+        sys.path[:0] = [str(source / "tests" / "python"), str(binary / "python")]
+        try:
+            import aiohttp  # noqa: F401
+            import segno  # noqa: F401
+            from cryptography import x509
+            from cryptography.hazmat.primitives import serialization
+        except ImportError as error:
+            missing(f"the class server's packages ({error}): scripts/install-deps.sh")
+        from class_server import Server
+        self.work = Path(tempfile.mkdtemp(prefix="bookspin-phone-in-class-"))
+        self.server = Server(self.work / "data", page_file).start()
+        self.code = self.server.code
+        self.url = f"https://127.0.0.1:{self.server.port}/"
+        cert = x509.load_pem_x509_certificate((self.work / "data" / "tls" / "server.pem").read_bytes())
+        spki = cert.public_key().public_bytes(serialization.Encoding.DER,
+                                              serialization.PublicFormat.SubjectPublicKeyInfo)
+        self.trust = "--ignore-certificate-errors-spki-list=" + base64.b64encode(hashlib.sha256(spki).digest()).decode()
 
-        class Handler(http.server.BaseHTTPRequestHandler):
-            def log_message(self, *args):
-                pass
-
-            def answer(self, status, body, kind="application/json"):
-                data = body if isinstance(body, bytes) else json.dumps(body).encode()
-                self.send_response(status)
-                self.send_header("Content-Type", kind)
-                self.send_header("Content-Length", str(len(data)))
-                self.send_header("Cache-Control", "no-store")
-                self.end_headers()
-                self.wfile.write(data)
-
-            def token(self):
-                given = self.headers.get("Authorization", "")
-                return given[len("Bearer "):] if given.startswith("Bearer ") else None
-
-            def do_GET(self):
-                path = self.path.split("?")[0]
-                if path in ("/", "/explorer.html"):
-                    return self.answer(200, stand_in.page, "text/html; charset=utf-8")
-                if path == f"/api/class/{CODE}/me":
-                    token = self.token()
-                    if token not in stand_in.students:
-                        return self.answer(401, {"error": "not a student of this class"})
-                    return self.answer(200, stand_in.me(token))
-                return self.answer(404, {"error": f"no such page: {path}"})
-
-            def do_POST(self):
-                length = int(self.headers.get("Content-Length", "0"))
-                body = json.loads(self.rfile.read(length) or b"{}")
-                parts = self.path.split("/")
-                if len(parts) != 5 or parts[1:3] != ["api", "class"]:
-                    return self.answer(404, {"error": "no such address"})
-                if parts[3] != CODE:
-                    return self.answer(404, {"error": f"no class with code {parts[3]}"})
-                if parts[4] == "join":
-                    token = uuid.uuid4().hex
-                    with stand_in.lock:
-                        stand_in.students[token] = body["name"]
-                    return self.answer(201, {"student": token[:8], "token": token, "name": body["name"]})
-                if parts[4] != "tosses":
-                    return self.answer(404, {"error": "no such address"})
-                token = self.token()
-                if token not in stand_in.students:
-                    return self.answer(401, {"error": "not a student of this class"})
-                toss = body.get("toss")
-                with stand_in.lock:
-                    stand_in.asked.append(toss)
-                    if not isinstance(toss, str) or not UUID.match(toss):
-                        return self.answer(400, {"error": "toss: not a UUID v4"})
-                    for t, b in stand_in.stored:
-                        if t == token and b["toss"] == toss:
-                            if b["csv"] != body.get("csv"):
-                                return self.answer(409, {"error": f"toss {toss} is held with other bytes"})
-                            return self.answer(200, {"toss": toss, "held": True})
-                    stand_in.stored.append((token, body))
-                return self.answer(201, {"toss": toss, "held": True})
-
-        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
-        threading.Thread(target=self.server.serve_forever, daemon=True).start()
-        self.url = f"http://127.0.0.1:{self.server.server_address[1]}/"
-        self.kind = "a stand-in of the class server (http.server, in this test)"
-
-    def me(self, token):
-        mine = [b for t, b in self.stored if t == token]
-        return {"name": self.students[token],
-                "tosses": [{"toss": b["toss"], "name": b["name"], "held": True, "excluded": None,
-                            "half_period_measured": 0.4 + 0.01 * k, "half_period_predicted": 0.41,
-                            "sigma": 0.006, "within": abs(0.4 + 0.01 * k - 0.41) <= 0.012}
-                           for k, b in enumerate(mine)],
-                "pooled": {"tosses": len(self.stored), "ratios": [0.2213, 0.8037, 1], "sigma": [0.0041, 0.012, 0],
-                           "updated": "2026-11-29T09:00:00Z"}}
+    def query(self, statement, *args):
+        with contextlib.closing(sqlite3.connect(str(self.work / "data" / "class.sqlite3"))) as db:
+            return db.execute(statement, args).fetchall()
 
     def held(self):
-        with self.lock:
-            return [b for _, b in self.stored]
+        """Every toss the store holds for the class, in the order stored: {toss, name, csv}."""
+        return [{"toss": t, "name": n, "csv": c} for t, n, c in
+                self.query("SELECT toss, name, csv FROM tosses WHERE class_code = ? ORDER BY seq", self.code)]
+
+    def students(self):
+        return [n for (n,) in self.query("SELECT name FROM students WHERE class_code = ? ORDER BY joined", self.code)]
+
+    def pooled(self, recordings):
+        """The class's pooled fit once it holds `recordings` recordings: {ratios, sigma, …}."""
+        return self.server.fitted_state(recordings)["pooled"]
 
     def close(self):
-        self.server.shutdown()
-        self.server.server_close()
+        self.server.stop()
+        shutil.rmtree(self.work, ignore_errors=True)
 
 
 def state_of(driver):
@@ -245,7 +199,7 @@ def screenshots(driver, shots, stem):
             "width": size[0], "height": size[1], "deviceScaleFactor": 1, "mobile": size == SIZE})
         time.sleep(0.5)
         driver.execute_script("document.getElementById(arguments[0]).scrollIntoView({block: 'start'})",
-                              "classBox" if stem == "join" else "labRecordings")
+                              "labRecordings" if stem == "list" else "classBox")
         time.sleep(0.3)
         path = shots / f"explorer-phone-in-class-{stem}-{size[0]}x{size[1]}.png"
         driver.save_screenshot(str(path))
@@ -275,10 +229,10 @@ def main():
         missing(f"the real recordings {FOLDER} (../shared/recordings-real/)")
     recordings = [readings(folder / t / "Raw Data.csv") for t in TOSSES]
     out, _, shots, _ = lab_page_under_test(bookspin, source, binary, "explorer-phone-in-class")
-    server = StandIn(out / "explorer.html")
-    print(f"the server: {server.kind}")
+    server = RealServer(source, binary, out / "explorer.html")
+    print(f"the server: bookspin_class at {server.url}, class {server.code}")
     try:
-        with open_browser(chromium, driver_path, size=SIZE, exact_viewport=True) as driver:
+        with open_browser(chromium, driver_path, size=SIZE, exact_viewport=True, extra_args=[server.trust]) as driver:
             driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
                 "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
             driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
@@ -293,19 +247,20 @@ def main():
 
 
 def run_class(driver, server, shots, recordings):
-    open_class_page(driver, f"{server.url}explorer.html?class={CODE}#lab")
+    code = server.code
+    open_class_page(driver, f"{server.url}explorer.html?class={code}#lab")
     # The join form, its code from the address.
     shown = driver.execute_script("""return [!document.getElementById('lab').hidden, !document.getElementById('classBox').hidden,
         document.getElementById('classCode').value, !document.getElementById('classJoin').hidden]""")
-    if shown != [True, True, CODE, True]:
+    if shown != [True, True, code, True]:
         fail(f"the class's address: the lab open, the class box, its code, the form: {shown}")
     screenshots(driver, shots, "join")
     # A name the project's rule refuses: said by the page, the server not asked.
     type_into(driver, "className", "a/b")
     tap(driver, "classJoinButton")
     said = wait_for(driver, "return document.getElementById('classState').textContent", lambda s: "error" in s, 10)
-    if "your name: it must not hold /" not in said or server.students:
-        fail(f"a name with '/': the page says {said!r}; the server's students {server.students}")
+    if "your name: it must not hold /" not in said or server.students():
+        fail(f"a name with '/': the page says {said!r}; the server's students {server.students()}")
     # A wrong code: the server's reason.
     type_into(driver, "classCode", "NOPE42")
     type_into(driver, "className", NAME)
@@ -313,11 +268,11 @@ def run_class(driver, server, shots, recordings):
     said = wait_for(driver, "return document.getElementById('classState').textContent", lambda s: "refused" in s, 20)
     if "no class with code NOPE42" not in said:
         fail(f"a wrong code: the page says {said!r}")
-    type_into(driver, "classCode", CODE)
+    type_into(driver, "classCode", code)
     tap(driver, "classJoinButton")
     said = wait_for(driver, "return document.getElementById('classState').textContent", lambda s: s.startswith("In class"), 20)
-    if not said.startswith(f"In class {CODE} as {NAME}") or list(server.students.values()) != [NAME]:
-        fail(f"joined: the page says {said!r}; the server's students {list(server.students.values())}")
+    if not said.startswith(f"In class {code} as {NAME}") or server.students() != [NAME]:
+        fail(f"joined: the page says {said!r}; the server's students {server.students()}")
     print(f"joined: {said}")
 
     kept = []  # (name, toss id) in the order kept
@@ -327,7 +282,7 @@ def run_class(driver, server, shots, recordings):
     if not UUID.match(ids.get(name) or ""):
         fail(f"toss 1: the recording's toss id {ids.get(name)!r} is not a UUID v4")
     kept.append((name, ids[name]))
-    wait_row(driver, name, f"held by class {CODE}", 30, "toss 1 online")
+    wait_row(driver, name, f"held by class {code}", 30, "toss 1 online")
     print(f"toss 1 online: {row_state(driver, name)}")
 
     # Toss 2 with the network off: waiting, said; back online: held.
@@ -346,7 +301,7 @@ def run_class(driver, server, shots, recordings):
         fail(f"offline 3 s on: the server holds {len(server.held())}, the row says {row_state(driver, name)!r}")
     screenshots(driver, shots, "list")
     network(driver, False)
-    wait_row(driver, name, f"held by class {CODE}", 30, "toss 2 back online")
+    wait_row(driver, name, f"held by class {code}", 30, "toss 2 back online")
     print(f"toss 2 back online: {row_state(driver, name)}")
     said = driver.execute_script("return window.saidLines")
     for words in ("waiting to be sent", "held by class"):
@@ -364,12 +319,12 @@ def run_class(driver, server, shots, recordings):
         fail("the page never became ready after the reload")
     wait_row(driver, name, "waiting to be sent", 30, "toss 3 after a reload")
     for earlier, _ in kept[:2]:
-        wait_row(driver, earlier, f"held by class {CODE}", 10, "the held tosses after a reload")
+        wait_row(driver, earlier, f"held by class {code}", 10, "the held tosses after a reload")
     print(f"toss 3 after a reload: {row_state(driver, name)}")
     if len(server.held()) != 2:
         fail(f"blocked: the server holds {len(server.held())} tosses")
     block_api(driver, False)
-    wait_row(driver, name, f"held by class {CODE}", 40, "toss 3 unblocked")
+    wait_row(driver, name, f"held by class {code}", 40, "toss 3 unblocked")
     print(f"toss 3 unblocked: {row_state(driver, name)}")
 
     texts = downloads(driver)
@@ -381,14 +336,21 @@ def run_class(driver, server, shots, recordings):
     check_server_holds(server, kept, texts, "after every held toss was posted again")
     print(f"the server holds {len(server.held())} tosses, each once, in the order kept; posted again: {again}")
 
-    # The class's results (GET me): the pooled body and this student's tosses.
+    # The class's results (GET me): the server's pooled body as the page rounds it, and this
+    # student's three tosses.
+    pooled = server.pooled(3)
     tap(driver, "classRefresh")
+    if pooled["ratios"]:
+        want = " : ".join(" ± ".join(at_sigma(r, s)) for r, s in zip(pooled["ratios"][:2], pooled["sigma"][:2]))
+        want = f"pooled from {pooled['tosses']} toss{'' if pooled['tosses'] == 1 else 'es'}: I1 : I2 : I3 = {want} : 1"
+    else:
+        want = "not fitted yet"
     me = wait_for(driver, "return [document.getElementById('classPooled').textContent, "
-                  "document.querySelectorAll('#classMine tr').length - 1]", lambda r: r[1] == 3, 20)
-    if "pooled from 3 tosses" not in me[0] or "0.2213 ± 0.0041" not in me[0] or me[1] != 3:
-        fail(f"the class's results: {me}")
+                  "document.querySelectorAll('#classMine tr').length - 1]", lambda r: want in r[0] and r[1] == 3, 30)
+    if want not in me[0] or me[1] != 3:
+        fail(f"the class's results: the page shows {me}, the server's pooled fit {pooled} ({want!r})")
     print(f"the class's results: {me[0]}; {me[1]} tosses of the student's")
-
+    screenshots(driver, shots, "results")
 
 if __name__ == "__main__":
     main()
