@@ -342,7 +342,8 @@ def run_class(driver, server, shots, recordings):
     tap(driver, "classRefresh")
     if pooled["ratios"]:
         want = " : ".join(" ± ".join(at_sigma(r, s)) for r, s in zip(pooled["ratios"][:2], pooled["sigma"][:2]))
-        want = f"pooled from {pooled['tosses']} toss{'' if pooled['tosses'] == 1 else 'es'}: I1 : I2 : I3 = {want} : 1"
+        want = (f"pooled from {pooled['tosses']} toss{'' if pooled['tosses'] == 1 else 'es'} in {pooled['recordings']} "
+                f"recording{'' if pooled['recordings'] == 1 else 's'}: I1 : I2 : I3 = {want} : 1")
     else:
         want = "not fitted yet"
     me = wait_for(driver, "return [document.getElementById('classPooled').textContent, "

@@ -79,6 +79,7 @@ export class ClassLink {
     this.outbox.loaded.then(() => { this.recorder.list(); this.outbox.drain(true); });
     if (!this.code) return;
     $('classBox').hidden = false;
+    $('labLeaves').textContent = 'In a class, each toss you keep goes to the class (above); nothing else leaves this page.';
     $('classCode').value = this.code;
     if (this.place) $('className').value = this.place.name;
     $('classJoin').addEventListener('submit', (e) => { e.preventDefault(); this.join(); });
@@ -233,7 +234,8 @@ export class ClassLink {
     const ratios = p && Array.isArray(p.ratios) && p.ratios.length === 3 ? p.ratios : null;
     const sigma = p && Array.isArray(p.sigma) ? p.sigma : [];
     $('classPooled').textContent = ratios
-      ? `The class's body, pooled from ${p.tosses} toss${p.tosses === 1 ? '' : 'es'}: I1 : I2 : I3 = ` +
+      ? `The class's body, pooled from ${p.tosses} toss${p.tosses === 1 ? '' : 'es'}` +
+        (typeof p.recordings === 'number' ? ` in ${p.recordings} recording${p.recordings === 1 ? '' : 's'}` : '') + ': I1 : I2 : I3 = ' +
         `${plusMinus(ratios[0], sigma[0])} : ${plusMinus(ratios[1], sigma[1])} : 1`
       : 'The class\'s body: not fitted yet (too few tosses held)';
     const mine = Array.isArray(me.tosses) ? me.tosses : [];
