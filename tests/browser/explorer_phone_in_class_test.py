@@ -18,9 +18,11 @@ elsewhere):
   - the class's address unreachable while the page is (Network.setBlockedURLs on /api/): toss 3
     kept, waiting; the page reloaded: still waiting (the outbox in the phone's storage), and
     once the address answers again, held by the retry alone (no online event), once;
+  - a toss kept before joining (12-38-00) not sent on its own: its row offers "Send to class
+    CODE", which sends it;
   - every held toss posted again under its id (a lost answer's resend): answered 200, the
-    server still holds each once; at the end the server holds exactly the three tosses, each
-    once, in the order kept, each with the bytes of its recording;
+    server still holds each once; at the end the server holds exactly the four tosses, each
+    once, in the order sent, each with the bytes of its recording;
   - the class's results as the server gives them (GET me): its pooled body and each of the
     student's tosses shown.
 The server: the real class server (python/bookspin_class, started by tests/python/
@@ -54,7 +56,7 @@ from explorer_records_gyro_test import devtools, feed, feed_at_own_rate, overrid
 
 SIZE = (390, 844)
 FOLDER = "dvarkian-2022-05-03"
-TOSSES = ["12-13-01", "12-13-51", "12-22-44"]
+TOSSES = ["12-13-01", "12-13-51", "12-22-44", "12-38-00"]
 NAME = "太郎 Ωmega"
 UUID = re.compile(r"^[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}$")
 
@@ -146,6 +148,11 @@ def record(driver, where, t, omega):
         state = driver.execute_script("return document.getElementById('labRecordState').textContent")
         fail(f"{where}: no recording kept: {state!r}")
     return kept[0][-1]["name"]
+
+
+# JavaScript: `b`, the "Send to class" button of the row of recording arguments[0] (or null).
+ROW_BUTTON = ("const li = [...document.querySelectorAll('#labRecordList li')].find((r) => r.dataset.name === arguments[0]);"
+              "const b = li && li.querySelector('.classSend');")
 
 
 def row_state(driver, name):
@@ -255,6 +262,8 @@ def run_class(driver, server, shots, recordings):
     if shown != [True, True, code, True]:
         fail(f"the class's address: the lab open, the class box, its code, the form: {shown}")
     screenshots(driver, shots, "join")
+    # A toss kept before joining: not sent on its own.
+    early = record(driver, "before joining", *recordings[3])
     # A name the project's rule refuses: said by the page, the server not asked.
     type_into(driver, "className", "a/b")
     tap(driver, "classJoinButton")
@@ -275,6 +284,11 @@ def run_class(driver, server, shots, recordings):
         fail(f"joined: the page says {said!r}; the server's students {server.students()}")
     print(f"joined: {said}")
 
+    # The toss kept before joining: its row offers to send it, and nothing was sent.
+    offer = driver.execute_script(ROW_BUTTON + "return b ? b.textContent : null;", early)
+    if offer != f"Send to class {code}" or row_state(driver, early) or server.held():
+        fail(f"a toss kept before joining: its row offers {offer!r}, says {row_state(driver, early)!r}; "
+             f"the server holds {len(server.held())}")
     kept = []  # (name, toss id) in the order kept
     # Toss 1, online: held.
     name = record(driver, "toss 1", *recordings[0])
@@ -339,18 +353,26 @@ def run_class(driver, server, shots, recordings):
     wait_row(driver, name, f"held by class {code}", 40, "toss 3 unblocked")
     print(f"toss 3 unblocked: {row_state(driver, name)}")
 
+    # The toss kept before joining, sent by its row's button: held, after the others.
+    point = driver.execute_script(ROW_BUTTON + "b.scrollIntoView({block: 'center'}); const r = b.getBoundingClientRect();"
+                                  "return {x: r.left + r.width / 2, y: r.top + r.height / 2};", early)
+    driver.execute_cdp_cmd("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [point]})
+    driver.execute_cdp_cmd("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+    wait_row(driver, early, f"held by class {code}", 30, "the toss kept before joining, sent")
+    kept.append((early, driver.execute_script("return window.explorer.labTossIds()")[early]))
+
     texts = downloads(driver)
-    check_server_holds(server, kept, texts, "after the three tosses")
+    check_server_holds(server, kept, texts, "after the four tosses")
     # Every held toss posted again under its id: 200, none stored twice.
     again = driver.execute_async_script("window.explorer.classResendHeld().then(arguments[0])")
-    if sorted(s for _, s in again) != [200, 200, 200]:
+    if sorted(s for _, s in again) != [200] * 4:
         fail(f"the held tosses posted again: answered {again}")
     check_server_holds(server, kept, texts, "after every held toss was posted again")
     print(f"the server holds {len(server.held())} tosses, each once, in the order kept; posted again: {again}")
 
     # The class's results (GET me): the server's pooled body as the page rounds it, and this
-    # student's three tosses.
-    pooled = server.pooled(3)
+    # student's four tosses.
+    pooled = server.pooled(4)
     tap(driver, "classRefresh")
     if pooled["ratios"]:
         want = " : ".join(" ± ".join(at_sigma(r, s)) for r, s in zip(pooled["ratios"][:2], pooled["sigma"][:2]))
@@ -359,8 +381,8 @@ def run_class(driver, server, shots, recordings):
     else:
         want = "not fitted yet"
     me = wait_for(driver, "return [document.getElementById('classPooled').textContent, "
-                  "document.querySelectorAll('#classMine tr').length - 1]", lambda r: want in r[0] and r[1] == 3, 30)
-    if want not in me[0] or me[1] != 3:
+                  "document.querySelectorAll('#classMine tr').length - 1]", lambda r: want in r[0] and r[1] == 4, 30)
+    if want not in me[0] or me[1] != 4:
         fail(f"the class's results: the page shows {me}, the server's pooled fit {pooled} ({want!r})")
     print(f"the class's results: {me[0]}; {me[1]} tosses of the student's")
     screenshots(driver, shots, "results")
