@@ -25,6 +25,7 @@
 #include "common/csv_keyed.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
+#include "common/file_name.hpp"
 #include "common/number_text.hpp"
 #include "common/stop.hpp"
 #include "fit/fit.hpp"
@@ -320,9 +321,15 @@ val fit_recordings(const val& files, const std::string& drag, const std::string&
   });
 }
 
+/// Why `name` (UTF-8) cannot be a name under the project's one rule for names (a recording's, a
+/// student's in a class: common/file_name.hpp), or "" where it can: the page checks a student's
+/// name as the class's server does before it asks.
+std::string name_problem(const std::string& name) { return bookspin::file_name_problem(name); }
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(bookspin_fit) {
   emscripten::function("fitRecording", &fit_recording);
   emscripten::function("fitRecordings", &fit_recordings);
+  emscripten::function("nameProblem", &name_problem);
 }

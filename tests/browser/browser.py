@@ -263,10 +263,13 @@ return Array.from(document.querySelectorAll('body *')).filter(e =>
 """
 
 
-def text_problems(driver):
+def text_problems(driver, unseen=None):
     """What a reader cannot read on the page as shown (docs/outputs.md, "Pictures"): text under
-    12 px and text past its box, each as a line; and the element count and smallest size."""
-    texts = driver.execute_script(TEXT_STATE)
+    12 px and text past its box, each as a line; and the element count and smallest size.
+    `unseen`: a selector of elements not shown (a screen reader's live region clipped to a
+    pixel), left out."""
+    texts = driver.execute_script(TEXT_STATE.replace("querySelectorAll('body *')", f"querySelectorAll('body *:not({unseen})')")
+                                  if unseen else TEXT_STATE)
     problems = []
     small = [t for t in texts if t["size"] < 12]
     if small:

@@ -18,7 +18,10 @@ export class Address {
    * hash, as the gallery links them (#lab, #judge). */
   href(lead = 0) {
     const s = this.state();
-    const q = this.space.format(lead ? { ...s, t: s.t + lead } : s, this.base());
+    let q = this.space.format(lead ? { ...s, t: s.t + lead } : s, this.base());
+    // The class the page was opened for (class_join.js) stays in the address: a reload joins it.
+    const own = new URLSearchParams(location.search).get('class');
+    if (own) q = `class=${encodeURIComponent(own)}${q ? `&${q}` : ''}`;
     const panel = !document.getElementById('lab').hidden ? '#lab' : !document.getElementById('judge').hidden ? '#judge' : '';
     return (q ? `?${q}` : location.pathname) + panel;
   }

@@ -8,6 +8,7 @@
 import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas } from './plots.js';
 import { keptStore } from './kept_store.js';
+import { tossId } from './class_outbox.js';
 
 const $ = (id) => document.getElementById(id);
 /** Says `text` in the lab's live region (a screen reader reads it; focus stays where it is). */
@@ -317,8 +318,13 @@ export class TossRecorder {
     this.phase = 'idle';
     /** Taps whose time stamp is before this (ms, performance.now()'s clock) start nothing. */
     this.readyAt = 0;
-    /** Every recording kept: {id, name, when (Date), samples, rate, api, text, ticked, url}. */
+    /** Every recording kept: {id, name, when (Date), samples, rate, api, text, ticked, url,
+     * toss (its id for a class, class_outbox.js)}. */
     this.kept = [];
+    /** The class's hooks (class_join.js): told each recording as it is kept, before it is
+     * stored; and each row of the list as it is drawn, with its recording. */
+    this.onKept = () => {};
+    this.onRow = () => {};
     this.nextId = 1;
     this.source = new GyroSource((s) => this.samples.push(s));
     this.source.onError = (line) => this.finish(line);
@@ -496,8 +502,9 @@ export class TossRecorder {
     let name = `toss-${localStamp(when)}-${kind}-${Math.round(csv.rate)}Hz.csv`;
     for (let n = 2; this.kept.some((k) => k.name === name); ++n)
       name = `toss-${localStamp(when)}-${n}-${kind}-${Math.round(csv.rate)}Hz.csv`;
-    const kept = { id: this.nextId++, name, when, samples: csv.samples, rate: csv.rate, api: this.source.api, text: csv.text, ticked };
+    const kept = { id: this.nextId++, name, when, samples: csv.samples, rate: csv.rate, api: this.source.api, text: csv.text, ticked, toss: tossId() };
     this.kept.push(kept);
+    this.onKept(kept);
     this.save(kept);
     this.list();
     return kept;
@@ -553,13 +560,14 @@ export class TossRecorder {
       remove.setAttribute('aria-label', `remove ${k.name}`);
       remove.addEventListener('click', () => this.remove(k));
       row.append(label, about, save, remove);
+      this.onRow(row, k);
       list.append(row);
     }
   }
 
   /** `k` written to the browser's storage (where it gives the page some). */
   save(k) {
-    const row = { id: k.id, name: k.name, when: k.when.toISOString(), samples: k.samples, rate: k.rate, api: k.api, text: k.text, ticked: k.ticked };
+    const row = { id: k.id, name: k.name, when: k.when.toISOString(), samples: k.samples, rate: k.rate, api: k.api, text: k.text, ticked: k.ticked, toss: k.toss };
     this.store.then((store) => store && store.put(row)).catch((e) => {
       this.storage = `not kept across a reload: the browser refused to store it (${(e && e.message) || e}); download the ones to keep`;
       $('labRecordKept').textContent = this.storage;

@@ -102,6 +102,17 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     labRecordings: () => app.lab.recorder.kept.map((k) => ({
       name: k.name, when: k.when.toISOString(), samples: k.samples, rate: k.rate, ticked: k.ticked })),
     labRecorderPhase: () => app.lab.recorder.phase,
+    /** The class's outbox (class_outbox.js): each toss this phone gave a class, in the order
+     * kept, [{toss, code, name, state, reason, recording}], and each kept recording's toss id
+     * by its name. */
+    classOutbox: () => app.classLink.outbox.list().map(({ toss, code, name, state, reason, recording }) => ({ toss, code, name, state, reason, recording })),
+    labTossIds: () => Object.fromEntries(app.lab.recorder.kept.map((k) => [k.name, k.toss])),
+    /** A promise settled once every toss the class holds was posted again under its id (a lost
+     * answer's resend, for a test: the server must store none twice): [[toss, status]]. */
+    classResendHeld: () => Promise.all(app.classLink.outbox.list().filter((i) => i.state === 'held').map((i) => {
+      const kept = app.lab.recorder.kept.find((k) => k.toss === i.toss);
+      return app.classLink.send({ ...i, csv: kept ? kept.text : '' }).then((a) => [i.toss, a.status]);
+    })),
     /** A promise settled once the lab's kept recordings were read from the browser's storage
      * and every one removed (a test's fresh start). */
     labForget: () => app.lab.recorder.store.then(() => { for (const k of [...app.lab.recorder.kept]) app.lab.recorder.remove(k); }),

@@ -18,6 +18,7 @@ import { listenKeys } from './keys.js';
 import { Controls, VIEW_CONTROLS, METHOD_CONTROLS } from './controls.js';
 import { JudgePanel } from './judge.js';
 import { LabPanel } from './lab.js';
+import { ClassLink } from './class_join.js';
 import { loadProgram } from './packed.js';
 import { Address } from './address.js';
 
@@ -272,6 +273,8 @@ function startApp(wasm, engines) {
     if (recording) setPlaying(false);
     app.quiet = recording;
   });
+  // In a class (the address's ?class=CODE): joined, every toss kept goes to the class's server.
+  app.classLink = new ClassLink(app.lab.recorder, (name) => wasm.nameProblem(name));
   // A panel opened or closed (its button, Close, Escape, a link's #lab or #judge): a history
   // entry of its own, so that Back closes it again, and Forward opens it.
   let restoring = false;

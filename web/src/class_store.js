@@ -1,0 +1,37 @@
+// The outbox of a phone's tosses for its class kept across a reload (class_outbox.js): the
+// browser's IndexedDB, a database of its own beside the lab's recordings (kept_store.js).
+
+/** The browser's storage of the outbox's rows (IndexedDB database `name`, its store `outbox`
+ * keyed by the toss's id): a promise of {all() → rows, put(row), remove(toss)}, each a promise;
+ * rejected where the browser gives the page no storage (a private window, storage blocked, no
+ * IndexedDB). */
+export function classStore(name = 'bookspin-class') {
+  return new Promise((resolve, reject) => {
+    let request;
+    try {
+      request = indexedDB.open(name, 1);
+    } catch (e) {
+      reject(e);
+      return;
+    }
+    request.onupgradeneeded = () => request.result.createObjectStore('outbox', { keyPath: 'toss' });
+    request.onerror = () => reject(request.error || new Error('IndexedDB refused'));
+    request.onblocked = () => reject(new Error('IndexedDB blocked'));
+    request.onsuccess = () => {
+      const db = request.result;
+      const go = (mode, act) => new Promise((done, failed) => {
+        const tx = db.transaction('outbox', mode);
+        const r = act(tx.objectStore('outbox'));
+        // Settled when the transaction is committed: a row said stored is on the disk's way.
+        tx.oncomplete = () => done(r.result);
+        tx.onerror = () => failed(tx.error);
+        tx.onabort = () => failed(tx.error || new Error('IndexedDB aborted'));
+      });
+      resolve({
+        all: () => go('readonly', (s) => s.getAll()),
+        put: (row) => go('readwrite', (s) => s.put(row)),
+        remove: (toss) => go('readwrite', (s) => s.delete(toss)),
+      });
+    };
+  });
+}
