@@ -11,12 +11,15 @@ enum class Face { sans, sans_bold, sans_mono, serif, serif_bold, serif_italic };
 
 /// A text to lay out (text_layout.hpp's lay_out_texts()): its words, in `face` at `size` pixels
 /// to the em, turned by `angle` (radians, as cairo_rotate turns; a text is laid out as the
-/// context it is drawn on is turned: hinting differs).
+/// context it is drawn on is turned: hinting differs); where `max_advance` is positive and the
+/// text's advance is over it, laid out again at size × max_advance / advance (a title made
+/// smaller to fit its width).
 struct TextRequest {
   std::string utf8;
   Face face = Face::sans;
   double size = 0;
   double angle = 0;
+  double max_advance = 0;
 };
 
 }  // namespace bookspin::typeface

@@ -22,24 +22,30 @@ struct PlacedGlyph {
   std::size_t cluster = 0;
 };
 
-/// Glyphs of one built-in face (built_in.hpp's index), left to right as drawn; `right_to_left`
-/// where its characters read right to left (their clusters then fall from left to right).
+/// Glyphs of one face, left to right as drawn: `face` its index among the built-in ones
+/// (built_in.hpp), `font_face` the cairo face they are drawn in; `right_to_left` where its
+/// characters read right to left (their clusters then fall from left to right).
 struct GlyphRun {
   std::size_t face = 0;
+  std::shared_ptr<cairo_font_face_t> font_face;
   bool right_to_left = false;
   std::vector<PlacedGlyph> glyphs;
 };
 
 /// A text laid out in the font and size selected on the context it was laid out on, from the
-/// origin. `whole`: a text that needs no layout (wholly in the selected face, left to right,
-/// unshaped: every Latin, Greek or Cyrillic text; or not UTF-8), which cairo's own call draws
-/// as it is: its `runs` are empty. `extents`: as cairo_text_extents gives them (ink box
+/// origin: its glyph runs, in the order drawn, which cairo_show_glyphs draws as they are (in
+/// each run's face, the font matrix and options). `whole`: a text that needs no layout (wholly
+/// in the selected face, left to right, unshaped: every Latin, Greek or Cyrillic text; or not
+/// UTF-8), which show_laid_out() hands to cairo's own call: its one run is cairo's own glyphs
+/// (none where it is not UTF-8). `extents`: as cairo_text_extents gives them (ink box
 /// x_bearing, y_bearing, width, height, and the advance), user units.
 struct LaidOutText {
   std::string utf8;
-  /// The font it was laid out in (drawing sets it again): the selected face, the font matrix.
+  /// The font it was laid out in (drawing sets it again): the selected face, the font matrix
+  /// and the font options.
   std::shared_ptr<cairo_font_face_t> font_face;
   cairo_matrix_t font_matrix{1, 0, 0, 1, 0, 0};
+  std::shared_ptr<cairo_font_options_t> font_options;
   bool whole = false;
   std::vector<GlyphRun> runs;
   cairo_text_extents_t extents{};

@@ -247,7 +247,12 @@ double place(cairo_t* cr, const char* utf8, const Decoded& decoded, const std::v
   double pen = 0;
   for (const Run& run : runs) {
     cairo_set_font_face(cr, built_in_face(run.face));
-    GlyphRun placed{run.face, run.level % 2 == 1, {}};
+    GlyphRun placed{
+        run.face,
+        std::shared_ptr<cairo_font_face_t>(cairo_font_face_reference(built_in_face(run.face)),
+                                           cairo_font_face_destroy),
+        run.level % 2 == 1,
+        {}};
     if (!run.shaped) {
       // cairo's own glyphs and advances, as cairo_show_text would draw these characters.
       cairo_scaled_font_t* scaled = cairo_get_scaled_font(cr);
@@ -341,6 +346,32 @@ void ink_extents(cairo_t* cr, const std::vector<GlyphRun>& runs, cairo_text_exte
   out.width = right - left, out.height = bottom - top;
 }
 
+// cairo's own glyphs of a whole text (as cairo_show_text draws it from the origin) in the face
+// selected on `cr`; none where it is not UTF-8.
+GlyphRun cairos_glyphs(cairo_t* cr, const LaidOutText& text) {
+  GlyphRun run;
+  run.face = built_in_index(cairo_get_font_face(cr)).value_or(0);
+  run.font_face = text.font_face;
+  cairo_glyph_t* glyphs = nullptr;
+  cairo_text_cluster_t* clusters = nullptr;
+  int count = 0, cluster_count = 0;
+  cairo_text_cluster_flags_t flags{};
+  if (cairo_scaled_font_text_to_glyphs(cairo_get_scaled_font(cr), 0, 0, text.utf8.data(),
+                                       static_cast<int>(text.utf8.size()), &glyphs, &count,
+                                       &clusters, &cluster_count, &flags) != CAIRO_STATUS_SUCCESS)
+    return run;
+  std::size_t byte = 0;
+  int g = 0;
+  for (int c = 0; c < cluster_count; ++c) {
+    for (int k = 0; k < clusters[c].num_glyphs && g < count; ++k, ++g)
+      run.glyphs.push_back({glyphs[g].index, glyphs[g].x, glyphs[g].y, byte});
+    byte += static_cast<std::size_t>(clusters[c].num_bytes);
+  }
+  cairo_glyph_free(glyphs);
+  cairo_text_cluster_free(clusters);
+  return run;
+}
+
 // `utf8` laid out in the font selected on `cr`; its extents measured where `measure`.
 LaidOutText lay_out(cairo_t* cr, const char* utf8, bool measure) {
   LaidOutText text;
@@ -348,10 +379,15 @@ LaidOutText lay_out(cairo_t* cr, const char* utf8, bool measure) {
   text.font_face = std::shared_ptr<cairo_font_face_t>(
       cairo_font_face_reference(cairo_get_font_face(cr)), cairo_font_face_destroy);
   cairo_get_font_matrix(cr, &text.font_matrix);
+  cairo_font_options_t* options = cairo_font_options_create();
+  cairo_get_font_options(cr, options);
+  text.font_options = std::shared_ptr<cairo_font_options_t>(options, cairo_font_options_destroy);
   auto layout = itemize(cr, utf8);
   if (!layout) {
     text.whole = true;
-    if (measure) cairo_text_extents(cr, utf8, &text.extents);
+    if (!measure) return text;
+    cairo_text_extents(cr, utf8, &text.extents);
+    if (cairo_status(cr) == CAIRO_STATUS_SUCCESS) text.runs.push_back(cairos_glyphs(cr, text));
     return text;
   }
   cairo_save(cr);
@@ -399,7 +435,13 @@ std::vector<LaidOutText> lay_out_texts(cairo_t* cr, const std::vector<TextReques
     cairo_save(cr);
     if (request.angle != 0) cairo_rotate(cr, request.angle);
     select(cr, request.face, request.size);
-    laid.push_back(lay_out(cr, request.utf8.c_str(), true));
+    LaidOutText text = lay_out(cr, request.utf8.c_str(), true);
+    const double advance = text.extents.x_advance;
+    if (request.max_advance > 0 && advance > request.max_advance) {
+      select(cr, request.face, request.size * request.max_advance / advance);
+      text = lay_out(cr, request.utf8.c_str(), true);
+    }
+    laid.push_back(std::move(text));
     cairo_restore(cr);
   }
   cairo_restore(cr);
