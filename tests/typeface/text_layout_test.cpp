@@ -366,5 +366,29 @@ TEST(TextLayout, MarksSitAboveOrBelowTheirLetters) {
   EXPECT_GT(moved, 0) << "no mark is moved vertically: the cases cannot see the offset's sign";
 }
 
+// The same two faults seen in the pixels drawn, not the layout's values: in "الكتاب 12" the
+// number is drawn first, at the left, exactly as "12" alone draws it (its columns the same
+// bytes); a circumflex over X inks rows above X's own top, a kasra under ب rows below ب's own
+// bottom.
+TEST(TextLayout, TheNumberAndTheMarksInkWhereTheyBelong) {
+  const std::string number = "12";
+  for (const std::string& word : {std::string(kArabic), std::string("\u05e1\u05e4\u05e8")}) {
+    const Picture whole(shown(word + " " + number)), alone(shown(number));
+    const auto digits = alone.ink_box();
+    ASSERT_GE(digits.right, digits.left);
+    const Picture::Box left = whole.ink_box(0, digits.right + 1);
+    EXPECT_EQ(left.left, digits.left) << word;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x <= digits.right; ++x)
+        ASSERT_EQ(whole.touched(x, y), alone.touched(x, y))
+            << word << " 12: the number is not drawn at the left (" << x << ", " << y << ")";
+  }
+  const Picture capital(shown("X")), accented(shown("X\u0302"));
+  EXPECT_LT(accented.ink_box().top, capital.ink_box().top - kSize / 10)
+      << "no circumflex above the X";
+  const Picture ba(shown("\u0628")), kasra(shown("\u0628\u0650"));
+  EXPECT_GT(kasra.ink_box().bottom, ba.ink_box().bottom + kSize / 20) << "no kasra under the ba";
+}
+
 }  // namespace
 }  // namespace bookspin::typeface
