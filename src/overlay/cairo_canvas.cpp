@@ -27,6 +27,28 @@ void select_overlay_font(cairo_t* cr, bool bold, double size) {
   typeface::select(cr, bold ? typeface::Face::sans_bold : typeface::Face::sans, size);
 }
 
+void draw_placed_text(cairo_t* cr, const typeface::PlacedText& placed) {
+  const typeface::LaidOutText& text = *placed.text;
+  cairo_save(cr);
+  if (placed.angle != 0 || placed.x != 0 || placed.y != 0) {
+    cairo_translate(cr, placed.x, placed.y);
+    cairo_rotate(cr, placed.angle);
+  }
+  cairo_set_source_rgb(cr, placed.r, placed.g, placed.b);
+  if (text.font_options) cairo_set_font_options(cr, text.font_options.get());
+  cairo_set_font_matrix(cr, &text.font_matrix);
+  std::vector<cairo_glyph_t> glyphs;
+  for (const typeface::GlyphRun& run : text.runs) {
+    glyphs.clear();
+    for (const typeface::PlacedGlyph& g : run.glyphs)
+      glyphs.push_back({g.index, placed.origin_x + g.x, placed.origin_y + g.y});
+    cairo_set_font_face(cr, run.font_face.get());
+    cairo_show_glyphs(cr, glyphs.data(), static_cast<int>(glyphs.size()));
+  }
+  cairo_move_to(cr, placed.origin_x + text.extents.x_advance, placed.origin_y);
+  cairo_restore(cr);
+}
+
 double inset_font(const PixelRect& rect) {
   return std::max({9.0, 0.052 * rect.height, std::min(kMinFont / 0.85, rect.height / 17.0)});
 }

@@ -7,6 +7,7 @@
 
 #include "common/pixel_rect.hpp"
 #include "common/rgba_image.hpp"
+#include "typeface/laid_out_text.hpp"
 
 namespace bookspin::overlay {
 
@@ -31,6 +32,13 @@ PixelRegion region_around(double x, double y, double width, double height, doubl
 /// regular, `size` pixels high, with the typeface stage's fixed options (typeface.hpp): the
 /// machine's fontconfig set-up never reaches an overlay.
 void select_overlay_font(cairo_t* cr, bool bold, double size);
+
+/// Draws a text laid out once (typeface/laid_out_text.hpp) where `placed` puts it, in its
+/// colour: its glyph runs by cairo_show_glyphs in the font it was laid out in, the pixels
+/// typeface::show_placed() draws; the current point is then at the text's end, as after
+/// typeface::show_text(). The overlays lay a picture's texts out first, then place and draw
+/// them from those values.
+void draw_placed_text(cairo_t* cr, const typeface::PlacedText& placed);
 
 /// Draw on `cr()` in image coordinates, then `composite_onto(image)` blends what was drawn
 /// over the image (source-over, cairo's premultiplied native-endian ARGB converted to RGBA

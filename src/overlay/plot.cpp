@@ -1,368 +1,85 @@
 #include "overlay/plot.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
+#include <cstddef>
 #include <iterator>
-#include <limits>
 #include <utility>
 #include <vector>
 
 #include "common/colour.hpp"
 #include "overlay/cairo_canvas.hpp"
 #include "overlay/caption.hpp"
+#include "overlay/plot_area.hpp"
 #include "typeface/text_layout.hpp"
 
 namespace bookspin::overlay {
 
 namespace {
 
-struct Axis {
-  double lo = 0, hi = 1;
-  bool log = false;
-  double intervals = 5;  ///< about how many tick intervals span it (linear axes)
-  double map(double v, double a, double b) const {  // value → pixel in [a, b]
-    const double f = log ? (std::log10(v) - lo) / (hi - lo) : (v - lo) / (hi - lo);
-    return a + f * (b - a);
-  }
-};
-
-bool usable(double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); }
-
-/// The data range of the x or y values; a span below `min_span` (linear axes) is widened
-/// around its middle, a degenerate one to ±0.5.
-Axis fit_axis(const std::vector<Series>& series, bool use_x, bool log, double min_span = 0.0) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const auto& s : series) {
-    for (double v : use_x ? s.x : s.y) {
-      if (!usable(v, log)) continue;
-      lo = std::min(lo, log ? std::log10(v) : v);
-      hi = std::max(hi, log ? std::log10(v) : v);
-    }
-  }
-  if (!std::isfinite(lo)) lo = 0, hi = 1;
-  if (!log && hi - lo < min_span) {
-    const double mid = 0.5 * (lo + hi);
-    lo = mid - 0.5 * min_span, hi = mid + 0.5 * min_span;
-    return {lo, hi, false};
-  }
-  // A (nearly) constant series: widen it by ±0.5, or by a millionth of its size where ±0.5
-  // would be lost in rounding (values of 10¹⁶ and more).
-  const double size = std::max(std::abs(lo), std::abs(hi));
-  if (hi - lo < 1e-12 * std::max(1.0, size)) {
-    const double half = std::max(0.5, 1e-6 * size);
-    lo -= half, hi += half;
-  }
-  if (log) {
-    lo = std::floor(lo), hi = std::ceil(hi);
-  } else if (!use_x) {
-    const double pad = 0.06 * (hi - lo);
-    lo -= pad, hi += pad;
-  }
-  return {lo, hi, log};
-}
-
-/// Whether spec.y_range fixes the y axis: a range from low to high, both positive on a log axis.
-bool fixed_y_range(const PlotSpec& spec) {
-  return spec.y_range && spec.y_range->second > spec.y_range->first &&
-         (!spec.log_y || spec.y_range->first > 0.0);
-}
-
-Axis fit_x(const PlotSpec& spec) {
-  if (spec.x_range && !spec.log_x && spec.x_range->second > spec.x_range->first) {
-    return {spec.x_range->first, spec.x_range->second, false};
-  }
-  return fit_axis(spec.series, true, spec.log_x);
-}
-
-Axis fit_y(const PlotSpec& spec) {
-  if (fixed_y_range(spec)) {
-    const auto [lo, hi] = *spec.y_range;
-    return spec.log_y ? Axis{std::log10(lo), std::log10(hi), true} : Axis{lo, hi, false};
-  }
-  return fit_axis(spec.series, false, spec.log_y, spec.min_y_span);
-}
-
-double nice_step(double span, double intervals) {
-  const double raw = span / intervals, magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * magnitude >= raw) return m * magnitude;
-  return 10.0 * magnitude;
-}
-
-/// The ticks of a linear axis `step` apart within it.
-std::vector<double> linear_ticks(const Axis& a, double step) {
-  std::vector<double> out;
-  if (!(step > 0.0) || !std::isfinite(step)) return out;
-  // Counted, not summed: the k-th tick is k × step, and at most kMaxTicks of them, so that
-  // a step lost in rounding next to huge values cannot loop forever.
-  constexpr int kMaxTicks = 50;
-  const double first = std::ceil(a.lo / step - 1e-9);  // an end on a tick keeps it
-  for (int i = 0; i < kMaxTicks; ++i) {
-    const double v = (first + i) * step;
-    if (!(v <= a.hi + 1e-9 * step) || (!out.empty() && !(v > out.back()))) break;
-    out.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
-  }
-  return out;
-}
-
-std::vector<double> ticks(const Axis& a) {
-  std::vector<double> out;
-  if (a.log) {
-    const int stride = std::max(1, static_cast<int>((a.hi - a.lo) / 8.0) + 1);
-    for (int e = static_cast<int>(a.lo); e <= static_cast<int>(a.hi); e += stride)
-      out.push_back(std::pow(10.0, e));
-    return out;
-  }
-  // At least two ticks, so that the axis has a scale: a short axis of few intervals may
-  // round its step up past the span's half (±2.4 in two intervals: a step of 5).
-  for (double intervals = a.intervals;; intervals += 1.0) {
-    out = linear_ticks(a, nice_step(a.hi - a.lo, intervals));
-    if (out.size() >= 2 || intervals >= 10.0) return out;
-  }
-}
-
-std::string tick_label(double v, bool log) {
-  char text[32];
-  if (log) {
-    std::snprintf(text, sizeof text, "1e%d", static_cast<int>(std::lround(std::log10(v))));
-  } else {
-    std::snprintf(text, sizeof text, "%g", v);
-  }
-  return text;
-}
-
-void text_at(cairo_t* cr, const std::string& s, double x, double y, double align_x,
-             double align_y) {
-  cairo_text_extents_t e;
-  typeface::text_extents(cr, s.c_str(), &e);
-  cairo_move_to(cr, x - align_x * e.x_advance, y + align_y * e.height);
-  typeface::show_text(cr, s.c_str());
-}
-
-/// A polyline in pixels; a NaN point lifts the pen.
-using Polyline = std::vector<std::pair<double, double>>;
-
-/// Collects pixel points, thinning runs that fall in one quarter-pixel column to their
-/// first, lowest, highest and last points (in their original order). That draws the same
-/// line (every vertical extent and every connection between columns is kept; within a
-/// quarter pixel a steep stretch's chord is as good as the curve, while whole-pixel columns
-/// shift steep edges visibly), at a cost bounded by the plot's width rather than by the
-/// number of points: a panel drawn every frame of a long clip would otherwise cost time
-/// proportional to the frame index.
-class ColumnThinner {
- public:
-  explicit ColumnThinner(Polyline& out) : out_(out) {}
-  void add(std::size_t index, double px, double py) {
-    const double column = std::floor(4.0 * px);  // quarter-pixel columns
-    if (count_ > 0 && column != column_) flush();
-    if (count_ == 0) column_ = column, first_ = last_ = low_ = high_ = {index, px, py};
-    last_ = {index, px, py};
-    if (py < low_.py) low_ = last_;
-    if (py > high_.py) high_ = last_;
-    ++count_;
-  }
-  void pen_up() {
-    flush();
-    out_.emplace_back(std::nan(""), std::nan(""));
-  }
-  void flush() {
-    if (count_ == 0) return;
-    Point kept[] = {first_, low_, high_, last_};
-    std::sort(std::begin(kept), std::end(kept),
-              [](const Point& a, const Point& b) { return a.index < b.index; });
-    for (std::size_t i = 0; i < std::size(kept); ++i) {
-      if (i > 0 && kept[i].index == kept[i - 1].index) continue;
-      out_.emplace_back(kept[i].px, kept[i].py);
-    }
-    count_ = 0;
-  }
-
- private:
-  struct Point {
-    std::size_t index;
-    double px, py;
-  };
-  Polyline& out_;
-  std::size_t count_ = 0;
-  double column_ = 0;
-  Point first_{}, last_{}, low_{}, high_{};
-};
-
-/// The series' usable points mapped to pixels, thinned per quarter-pixel column where x never
-/// decreases (a time series); other data are kept point for point.
-Polyline series_polyline(const Series& s, const Axis& ax, const Axis& ay, double x0, double x1,
-                         double y0, double y1) {
-  const std::size_t n = std::min(s.x.size(), s.y.size());
-  const bool sorted = std::is_sorted(s.x.begin(), s.x.begin() + static_cast<std::ptrdiff_t>(n));
-  Polyline points;
-  ColumnThinner thinner(points);
+/// Draws each of `plots` into its rectangle of `rects` (pixels). Every label of every plot is
+/// laid out once, first, in one call, as values: the plots measure, place and draw them from
+/// those. Where `aligned`, their left margins are first set to the largest any of them needs.
+void draw_plots(cairo_t* cr, std::vector<PlotSpec> plots, const std::vector<PixelRect>& rects,
+                bool aligned) {
+  const std::size_t n = std::min(plots.size(), rects.size());
+  std::vector<double> fonts;
+  std::vector<Axis> xs, ys;
+  std::vector<typeface::TextRequest> requests;
+  std::vector<std::size_t> firsts;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) {
-      if (sorted)
-        thinner.pen_up();
-      else
-        points.emplace_back(std::nan(""), std::nan(""));
-      continue;
+    fonts.push_back(plot_font(rects[i].height, plots[i]));
+    xs.push_back(fit_x(plots[i]));
+    ys.push_back(fit_y(plots[i]));
+    firsts.push_back(requests.size());
+    std::vector<typeface::TextRequest> own =
+        plot_label_requests(plots[i], xs[i], ys[i], fonts[i], rects[i].width);
+    requests.insert(requests.end(), std::make_move_iterator(own.begin()),
+                    std::make_move_iterator(own.end()));
+  }
+  firsts.push_back(requests.size());
+  std::vector<typeface::LaidOutText> laid = typeface::lay_out_texts(cr, requests);
+  std::vector<PlotLabels> labels;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto from = laid.begin() + static_cast<std::ptrdiff_t>(firsts[i]),
+               to = laid.begin() + static_cast<std::ptrdiff_t>(firsts[i + 1]);
+    labels.push_back(plot_labels(plots[i], xs[i], ys[i],
+                                 {std::make_move_iterator(from), std::make_move_iterator(to)}));
+  }
+  if (aligned) {
+    double left = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      left =
+          std::max(left, plot_labels_left_margin(plots[i], labels[i], rects[i].height, fonts[i]));
+    for (std::size_t i = 0; i < n; ++i) plots[i].left_margin = left;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const PlotSpec& spec = plots[i];
+    const PixelRect& r = rects[i];
+    cairo_save(cr);
+    if (spec.background_alpha > 0) {
+      cairo_rectangle(cr, r.x, r.y, r.width, r.height);
+      cairo_set_source_rgba(cr, 1, 1, 1, spec.background_alpha);
+      cairo_fill(cr);
     }
-    const double px = ax.map(s.x[i], x0, x1), py = ay.map(s.y[i], y1, y0);
-    if (sorted)
-      thinner.add(i, px, py);
-    else
-      points.emplace_back(px, py);
-  }
-  thinner.flush();
-  return points;
-}
-
-/// A filled mark of `radius` pixels centred on (x, y).
-void draw_marker(cairo_t* cr, Marker marker, double x, double y, double radius) {
-  switch (marker) {
-    case Marker::circle:
-      cairo_arc(cr, x, y, radius, 0, 2 * M_PI);
-      break;
-    case Marker::square:
-      cairo_rectangle(cr, x - 1.15 * radius, y - 1.15 * radius, 2.3 * radius, 2.3 * radius);
-      break;
-    case Marker::triangle:
-      cairo_move_to(cr, x, y - 1.5 * radius);
-      cairo_line_to(cr, x + 1.35 * radius, y + 0.9 * radius);
-      cairo_line_to(cr, x - 1.35 * radius, y + 0.9 * radius);
-      cairo_close_path(cr);
-      break;
-    case Marker::diamond:
-      cairo_move_to(cr, x, y - 1.6 * radius);
-      cairo_line_to(cr, x + 1.3 * radius, y);
-      cairo_line_to(cr, x, y + 1.6 * radius);
-      cairo_line_to(cr, x - 1.3 * radius, y);
-      cairo_close_path(cr);
-      break;
-  }
-  cairo_fill(cr);
-}
-
-void draw_series(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, double x0, double x1,
-                 double y0, double y1, double line_width) {
-  cairo_set_source_rgb(cr, s.r, s.g, s.b);
-  cairo_set_line_width(cr, line_width);
-  // Round joins: a thinned column turns back on itself, and a mitred turn would spike.
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  const double dash[] = {4 * line_width, 2.5 * line_width};
-  cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
-  if (s.dots) {
-    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-      if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) continue;
-      const double px = ax.map(s.x[i], x0, x1), py = ay.map(s.y[i], y1, y0);
-      if (px < x0 || px > x1 || py < y0 || py > y1) continue;
-      cairo_new_sub_path(cr);
-      cairo_arc(cr, px, py, 1.2 * line_width, 0, 2 * 3.14159265358979323846);
-    }
-    cairo_fill(cr);
-    cairo_set_dash(cr, nullptr, 0, 0);
-    return;
-  }
-  bool pen_down = false;
-  for (const auto& [px, py] : series_polyline(s, ax, ay, x0, x1, y0, y1)) {
-    if (std::isnan(px)) {
-      pen_down = false;
-      continue;
-    }
-    pen_down ? cairo_line_to(cr, px, py) : cairo_move_to(cr, px, py);
-    pen_down = true;
-  }
-  cairo_stroke(cr);
-  cairo_set_dash(cr, nullptr, 0, 0);
-  if (s.x.size() <= 16) {  // few points: mark them
-    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-      if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) continue;
-      draw_marker(cr, s.marker, ax.map(s.x[i], x0, x1), ay.map(s.y[i], y1, y0), 1.6 * line_width);
-    }
+    const Area area = plot_area(spec, labels[i], r.x, r.y, r.width, r.height, fonts[i]);
+    const Axis ay = drawn_y(ys[i], area);
+    const PlotTextPlaces places =
+        place_plot_texts(spec, labels[i], xs[i], ay, area, r.x, r.y, r.width, r.height);
+    draw_grid_lines(cr, xs[i], ay, area);
+    for (const auto& text : places.ticks) draw_placed_text(cr, text);
+    draw_data(cr, spec, xs[i], ay, area);
+    for (const auto& text : places.labels) draw_placed_text(cr, text);
+    draw_legend_marks(cr, spec, labels[i], area, r.y);
+    for (const auto& text : places.legend) draw_placed_text(cr, text);
+    cairo_restore(cr);
   }
 }
 
-void legend_sample(cairo_t* cr, const Series& s, double x, double y, double font) {
-  cairo_set_source_rgb(cr, s.r, s.g, s.b);
-  if (s.dots) {  // as drawn: dots, no line
-    for (int i = 0; i < 3; ++i) {
-      cairo_new_sub_path(cr);
-      cairo_arc(cr, x + (0.3 + 0.6 * i) * font, y - 0.35 * font, 0.14 * font, 0,
-                2 * 3.14159265358979323846);
-    }
-    cairo_fill(cr);
-    return;
-  }
-  cairo_set_line_width(cr, 0.18 * font);
-  const double dash[] = {0.5 * font, 0.3 * font};
-  cairo_set_dash(cr, dash, s.dashed ? 2 : 0, 0);
-  cairo_move_to(cr, x, y - 0.35 * font);
-  cairo_line_to(cr, x + 1.8 * font, y - 0.35 * font);
-  cairo_stroke(cr);
-  cairo_set_dash(cr, nullptr, 0, 0);
-  if (s.marker != Marker::circle)
-    draw_marker(cr, s.marker, x + 0.9 * font, y - 0.35 * font, 0.22 * font);
-}
-
-double legend_box_width(cairo_t* cr, const PlotSpec& spec, double font) {
-  double width = 0;
-  for (const auto& s : spec.series) {
-    cairo_text_extents_t e;
-    typeface::text_extents(cr, s.label.c_str(), &e);
-    width = std::max(width, e.x_advance);
-  }
-  return width + 3.2 * font;
-}
-
-/// The legend sits to the right of the plot area, so it never hides data.
-void draw_legend(cairo_t* cr, const PlotSpec& spec, double x1, double y0, double font) {
-  const double row = 1.3 * font, box_w = legend_box_width(cr, spec, font), left = x1 + 0.8 * font;
-  cairo_rectangle(cr, left, y0 + 0.4 * font, box_w, row * spec.series.size() + 0.5 * font);
-  cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
-  cairo_fill_preserve(cr);
-  cairo_set_source_rgb(cr, 0.6, 0.6, 0.6);
-  cairo_set_line_width(cr, 1);
-  cairo_stroke(cr);
-  double y = y0 + 0.4 * font + row;
-  for (const auto& s : spec.series) {
-    legend_sample(cr, s, left + 0.4 * font, y, font);
-    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    text_at(cr, s.label, left + 2.7 * font, y, 0, 0);
-    y += row;
-  }
-}
-
-/// Lays the legend entries out in rows across [left, right]; calls `at(series, x, y)` for
-/// each entry (baseline y, rows 1.3·font apart from `top`) and returns the height used.
-template <typename At>
-double flow_legend(cairo_t* cr, const PlotSpec& spec, double left, double right, double top,
-                   double font, At at) {
-  const double row = 1.3 * font;
-  double x = left, y = top + font;
-  for (const auto& s : spec.series) {
-    cairo_text_extents_t e;
-    typeface::text_extents(cr, s.label.c_str(), &e);
-    const double w = 2.3 * font + e.x_advance;
-    if (x > left && x + w > right) x = left, y += row;
-    at(s, x, y);
-    x += w + 1.2 * font;
-  }
-  return y - top + 0.45 * font;
-}
-
-/// Legend rows above the plot area, so a narrow plot keeps its full width.
-double top_legend_height(cairo_t* cr, const PlotSpec& spec, double left, double right,
-                         double font) {
-  if (!spec.legend || spec.series.empty() || spec.legend_placement != LegendPlacement::top)
-    return 0;
-  return flow_legend(cr, spec, left, right, 0, font, [](const Series&, double, double) {});
-}
-
-void draw_top_legend(cairo_t* cr, const PlotSpec& spec, double left, double right, double top,
-                     double font) {
-  flow_legend(cr, spec, left, right, top, font, [&](const Series& s, double x, double y) {
-    legend_sample(cr, s, x, y, font);
-    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    text_at(cr, s.label, x + 2.3 * font, y, 0, 0);
-  });
+/// The labels of `spec` drawn `width` pixels wide, laid out at text `font` pixels high.
+PlotLabels laid_out_labels(cairo_t* cr, const PlotSpec& spec, double font, double width) {
+  const Axis ax = fit_x(spec), ay = fit_y(spec);
+  return plot_labels(spec, ax, ay,
+                     typeface::lay_out_texts(cr, plot_label_requests(spec, ax, ay, font, width)));
 }
 
 }  // namespace
@@ -372,192 +89,18 @@ void palette_colour(int index, double& r, double& g, double& b) {
   r = c.r, g = c.g, b = c.b;
 }
 
-namespace {
-
-/// The plot area inside a draw_plot rectangle, in pixels.
-struct Area {
-  double x0, x1, y0, y1;  ///< left, right, top, bottom
-  double font;
-};
-
-/// Width of the widest y tick label, pixels.
-double y_tick_width(cairo_t* cr, const Axis& ay) {
-  double widest = 0;
-  for (double t : ticks(ay)) {
-    cairo_text_extents_t e;
-    typeface::text_extents(cr, tick_label(t, ay.log).c_str(), &e);
-    widest = std::max(widest, e.x_advance);
-  }
-  return widest;
-}
-
-/// The rotated y label as drawn in a plot `height` pixels tall: one line, or where that is
-/// longer than the plot is tall, the quantity and its unit ("ω (rad / time unit)": "ω" and
-/// "(rad / time unit)") on two.
-std::vector<std::string> y_label_lines(cairo_t* cr, const PlotSpec& spec, double height,
-                                       double font) {
-  cairo_text_extents_t e;
-  typeface::text_extents(cr, spec.y_label.c_str(), &e);
-  const std::size_t unit = spec.y_label.rfind(" (");
-  if (e.x_advance <= height - font || unit == std::string::npos || unit == 0) return {spec.y_label};
-  return {spec.y_label.substr(0, unit), spec.y_label.substr(unit + 1)};
-}
-
-/// Room for the rotated y label and the tick labels: wide labels (2e+13) push the axis right.
-double left_margin(cairo_t* cr, const PlotSpec& spec, const Axis& ay, double height, double font) {
-  const double label =
-      1.2 * font * static_cast<double>(y_label_lines(cr, spec, height, font).size());
-  return std::max(
-      {4.0 * font + label, 1.2 * font + label + y_tick_width(cr, ay), spec.left_margin});
-}
-
-/// Pixels below the plot area: the x tick labels and the x label, or room for the lowest y
-/// tick label's lower half where the axis has no text.
-double bottom_margin(const PlotSpec& spec, double font) {
-  return (spec.x_axis_text ? 3.2 : 0.6) * font;
-}
-
-Area layout(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec,
-            const Axis& ay, double font) {
-  const bool right = spec.legend && spec.legend_placement == LegendPlacement::right;
-  const double legend_width = right ? legend_box_width(cr, spec, font) + 0.8 * font : 0.0;
-  Area a{x + left_margin(cr, spec, ay, height, font), x + width - 1.4 * font - legend_width, 0,
-         y + height - bottom_margin(spec, font), font};
-  a.y0 =
-      y + (spec.title.empty() ? 0.8 : 2.0) * font + top_legend_height(cr, spec, a.x0, a.x1, font);
-  // Room above the area for the markers where a curve leaves a fixed range (mark_range_exits).
-  if (fixed_y_range(spec)) a.y0 += 0.5 * font;
-  return a;
-}
-
-void draw_grid(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay, const Area& a) {
-  cairo_set_line_width(cr, 1);
-  for (double t : ticks(ax)) {
-    const double px = ax.map(t, a.x0, a.x1);
-    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-    cairo_move_to(cr, px, a.y0), cairo_line_to(cr, px, a.y1), cairo_stroke(cr);
-    if (!spec.x_axis_text) continue;
-    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-    text_at(cr, tick_label(t, ax.log), px, a.y1 + 1.25 * a.font, 0.5, 0);
-  }
-  for (double t : ticks(ay)) {
-    const double py = ay.map(t, a.y1, a.y0);
-    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
-    cairo_move_to(cr, a.x0, py), cairo_line_to(cr, a.x1, py), cairo_stroke(cr);
-    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-    text_at(cr, tick_label(t, ay.log), a.x0 - 0.4 * a.font, py, 1, 0.5);
-  }
-  cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
-  cairo_rectangle(cr, a.x0, a.y0, a.x1 - a.x0, a.y1 - a.y0);
-  cairo_stroke(cr);
-}
-
-/// A triangle on the top or bottom edge of the plot area, in the series' colour, where the
-/// series goes from inside a fixed y range to beyond it (PlotSpec::y_range).
-void mark_range_exits(cairo_t* cr, const Series& s, const Axis& ax, const Axis& ay, const Area& a) {
-  const double size = 0.45 * a.font;
-  cairo_set_source_rgb(cr, s.r, s.g, s.b);
-  bool inside = true;
-  for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-    if (!usable(s.x[i], ax.log) || !usable(s.y[i], ay.log)) continue;
-    const double y = ay.log ? std::log10(s.y[i]) : s.y[i];
-    const bool above = y > ay.hi, below = y < ay.lo;
-    if (inside && (above || below)) {
-      const double px = std::clamp(ax.map(s.x[i], a.x0, a.x1), a.x0, a.x1);
-      const double edge = above ? a.y0 : a.y1, tip = above ? edge - size : edge + size;
-      cairo_move_to(cr, px - size, edge), cairo_line_to(cr, px + size, edge);
-      cairo_line_to(cr, px, tip), cairo_close_path(cr);
-      cairo_fill(cr);
-    }
-    inside = !above && !below;
-  }
-}
-
-/// Curves and cursor, clipped to the plot area.
-void draw_data(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay, const Area& a) {
-  cairo_save(cr);
-  cairo_rectangle(cr, a.x0, a.y0, a.x1 - a.x0, a.y1 - a.y0);
-  cairo_clip(cr);
-  for (const auto& s : spec.series) {
-    draw_series(cr, s, ax, ay, a.x0, a.x1, a.y0, a.y1, std::max(1.5, a.font / 7));
-  }
-  if (spec.cursor_x) {
-    cairo_set_source_rgba(cr, 0.8, 0.1, 0.1, 0.8);
-    cairo_set_line_width(cr, 1.5);
-    const double px = ax.map(*spec.cursor_x, a.x0, a.x1);
-    cairo_move_to(cr, px, a.y0), cairo_line_to(cr, px, a.y1), cairo_stroke(cr);
-  }
-  cairo_restore(cr);
-  if (fixed_y_range(spec)) {
-    for (const auto& s : spec.series) mark_range_exits(cr, s, ax, ay, a);
-  }
-}
-
-void draw_labels(cairo_t* cr, const PlotSpec& spec, double x, double y, double width, double height,
-                 const Area& a) {
-  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-  if (spec.x_axis_text) {
-    // Centred under the plot area; where that runs past the plot's sides (a plot two a row),
-    // under the middle of the plot's rectangle.
-    cairo_text_extents_t e;
-    typeface::text_extents(cr, spec.x_label.c_str(), &e);
-    double centre = 0.5 * (a.x0 + a.x1);
-    if (e.x_advance > 2.0 * std::min(centre - x, x + width - centre) - a.font)
-      centre = x + 0.5 * width;
-    text_at(cr, spec.x_label, centre, a.y1 + 2.6 * a.font, 0.5, 0);
-  }
-  const auto y_lines = y_label_lines(cr, spec, height, a.font);
-  for (std::size_t i = 0; i < y_lines.size(); ++i) {
-    cairo_save(cr);
-    cairo_translate(cr, x + (1.3 + 1.2 * static_cast<double>(i)) * a.font, 0.5 * (a.y0 + a.y1));
-    cairo_rotate(cr, -M_PI / 2);
-    text_at(cr, y_lines[i], 0, 0, 0.5, 0);
-    cairo_restore(cr);
-  }
-  if (!spec.title.empty()) {
-    // Centred over the plot area; where that runs past the plot's sides, over the plot, and
-    // where the plot is narrower than the title, smaller.
-    select_overlay_font(cr, true, a.font);
-    cairo_text_extents_t e;
-    typeface::text_extents(cr, spec.title.c_str(), &e);
-    double centre = 0.5 * (a.x0 + a.x1);
-    const double room = width - a.font;
-    if (e.x_advance > 2.0 * std::min(centre - x, x + width - centre) - a.font)
-      centre = x + 0.5 * width;
-    if (e.x_advance > room && room > 0) select_overlay_font(cr, true, a.font * room / e.x_advance);
-    text_at(cr, spec.title, centre, y + 1.3 * a.font, 0.5, 0);
-    select_overlay_font(cr, false, a.font);
-  }
-  if (!spec.legend || spec.series.empty()) return;
-  if (spec.legend_placement == LegendPlacement::right) {
-    draw_legend(cr, spec, a.x1, a.y0, a.font);
-  } else {
-    const double top = y + (spec.title.empty() ? 0.8 : 2.0) * a.font;
-    draw_top_legend(cr, spec, a.x0, a.x1, top, a.font);
-  }
-}
-
-}  // namespace
-
 double plot_font(double height, const PlotSpec& spec) {
   return spec.font > 0 ? spec.font : std::clamp(height / 22.0, kMinFont, 18.0);
 }
 
 double plot_frame_height(cairo_t* cr, double width, const PlotSpec& spec, double font) {
-  cairo_save(cr);
-  select_overlay_font(cr, false, font);
-  const Area a = layout(cr, 0, 0, width, 0, spec, fit_y(spec), font);
-  cairo_restore(cr);
+  const Area a = plot_area(spec, laid_out_labels(cr, spec, font, width), 0, 0, width, 0, font);
   return a.y0 - a.y1;  // drawn 0 pixels tall: the top's rows above the bottom's
 }
 
 double plot_left_margin(cairo_t* cr, double height, const PlotSpec& spec) {
   const double font = plot_font(height, spec);
-  cairo_save(cr);
-  select_overlay_font(cr, false, font);
-  const double left = left_margin(cr, spec, fit_y(spec), height, font);
-  cairo_restore(cr);
-  return left;
+  return plot_labels_left_margin(spec, laid_out_labels(cr, spec, font, 0), height, font);
 }
 
 void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots) {
@@ -567,23 +110,12 @@ void align_left_margins(cairo_t* cr, double height, std::vector<PlotSpec>& plots
 }
 
 void draw_plot(cairo_t* cr, double x, double y, double width, double height, const PlotSpec& spec) {
-  const double font = plot_font(height, spec);
-  cairo_save(cr);
-  if (spec.background_alpha > 0) {
-    cairo_rectangle(cr, x, y, width, height);
-    cairo_set_source_rgba(cr, 1, 1, 1, spec.background_alpha);
-    cairo_fill(cr);
-  }
-  select_overlay_font(cr, false, font);
-  const Axis ax = fit_x(spec);
-  Axis ay = fit_y(spec);
-  const Area area = layout(cr, x, y, width, height, spec, ay, font);
-  // y ticks at least 2.4 text heights apart: a short plot gets fewer (2 … 5 intervals).
-  ay.intervals = std::clamp((area.y1 - area.y0) / (2.4 * font), 2.0, 5.0);
-  draw_grid(cr, spec, ax, ay, area);
-  draw_data(cr, spec, ax, ay, area);
-  draw_labels(cr, spec, x, y, width, height, area);
-  cairo_restore(cr);
+  draw_plots(cr, {spec}, {PixelRect{x, y, width, height}}, false);
+}
+
+void draw_aligned_plots(cairo_t* cr, std::vector<PlotSpec> plots,
+                        const std::vector<PixelRect>& rects) {
+  draw_plots(cr, std::move(plots), rects, true);
 }
 
 RgbaImage plot_image(const PlotSpec& spec, int width, int height) {

@@ -76,4 +76,19 @@ double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, do
   return y;
 }
 
+SheetHeader lay_out_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font,
+                                 double width) {
+  const std::vector<std::string> wrapped = wrap_sheet_header(cr, header, font, width);
+  std::vector<typeface::TextRequest> requests;
+  for (std::size_t i = 0; i < wrapped.size(); ++i)
+    requests.push_back({wrapped[i], i == 0 ? typeface::Face::sans_bold : typeface::Face::sans,
+                        i == 0 ? font : 0.8 * font, 0});
+  SheetHeader laid{typeface::lay_out_texts(cr, requests), {}, font, 0.4 * font};
+  for (std::size_t i = 0; i < wrapped.size(); ++i) {
+    laid.bottom += 1.35 * (i == 0 ? font : 0.8 * font);
+    laid.baselines.push_back(laid.bottom);
+  }
+  return laid;
+}
+
 }  // namespace bookspin::overlay

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "typeface/laid_out_text.hpp"
+
 namespace bookspin::overlay {
 
 /// `header` as a sheet `width` pixels wide draws it: the first line (the bold title, at `font`)
@@ -20,5 +22,20 @@ std::vector<std::string> wrap_sheet_header(cairo_t* cr, const std::vector<std::s
 /// others regular at 0.8·font, 1.35 line heights apart; returns the last line's baseline (y,
 /// pixels).
 double draw_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font);
+
+/// A sheet's header laid out once: its lines as wrap_sheet_header() wraps them, each laid out
+/// in its face and size, and where draw_sheet_header() draws them: each line's baseline (y,
+/// pixels from the top; x = font).
+struct SheetHeader {
+  std::vector<typeface::LaidOutText> lines;
+  std::vector<double> baselines;
+  double x = 0;
+  double bottom = 0;  ///< the last line's baseline
+};
+
+/// `header` wrapped to a sheet `width` pixels wide and laid out, drawn as draw_sheet_header()
+/// draws the wrapped lines.
+SheetHeader lay_out_sheet_header(cairo_t* cr, const std::vector<std::string>& header, double font,
+                                 double width);
 
 }  // namespace bookspin::overlay

@@ -8,6 +8,7 @@
 
 #include "overlay/cairo_canvas.hpp"
 #include "typeface/text_layout.hpp"
+#include "typeface/typeface.hpp"
 
 namespace bookspin::overlay {
 
@@ -94,9 +95,20 @@ SphereDisc sphere_disc(const PixelRect& rect) {
 
 namespace {
 
-/// Everything but the trails and the axis labels: the background, title, outline, axes and
-/// curves.
-void draw_base(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
+/// The title, centred in the band above the disc (which nothing else reaches: it may be drawn
+/// before or after the rest).
+void draw_title(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec, double font,
+                double title_height) {
+  typeface::select(cr, typeface::Face::sans_bold, font);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  cairo_text_extents_t ext;
+  typeface::text_extents(cr, spec.title.c_str(), &ext);
+  cairo_move_to(cr, rect.x + 0.5 * (rect.width - ext.x_advance), rect.y + 0.75 * title_height);
+  typeface::show_text(cr, spec.title.c_str());
+}
+
+/// The background, outline, axes and curves: what draw_top and the title leave.
+void draw_shapes(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_rectangle(cr, rect.x, rect.y, rect.width, rect.height);
@@ -105,16 +117,6 @@ void draw_base(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
 
   const SphereDisc disc = sphere_disc(rect);
   const double unit = rect.height / 150.0;  // line widths scale with the inset
-  const double font = inset_font(rect);
-
-  // Title.
-  select_overlay_font(cr, true, font);
-  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-  cairo_text_extents_t ext;
-  typeface::text_extents(cr, spec.title.c_str(), &ext);
-  cairo_move_to(cr, rect.x + 0.5 * (rect.width - ext.x_advance),
-                rect.y + 0.75 * inset_title_height(rect));
-  typeface::show_text(cr, spec.title.c_str());
 
   // Outline.
   cairo_new_path(cr);
@@ -147,14 +149,15 @@ void draw_base(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
   }
 }
 
-/// The trails with their end dots, then the axis labels on top: what draw_base leaves.
-void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
+/// The trails with their end dots, then (with the title where `title`) the axis labels on top:
+/// what draw_shapes leaves. Every text last, after the shapes and the places they go.
+void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec, bool title) {
   cairo_save(cr);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   const SphereDisc disc = sphere_disc(rect);
   const double unit = rect.height / 150.0;
-  const double font = inset_font(rect);
+  const double font = inset_font(rect), title_height = inset_title_height(rect);
   const Basis basis = basis_of(spec);
   cairo_text_extents_t ext;
   for (const auto& t : spec.trails) {
@@ -174,15 +177,25 @@ void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
     cairo_stroke(cr);
   }
 
-  // Axis labels last, on top, clamped inside the inset with a margin, each on a patch of the
-  // inset's paper so that no curve runs through its letters.
-  select_overlay_font(cr, false, 0.85 * font);
-  cairo_font_extents_t fe;
-  cairo_font_extents(cr, &fe);
+  // Where each axis ends on the inset, and how deep.
+  std::vector<Eigen::Vector2d> ends;
+  std::vector<double> depths;
   for (const auto& axis : spec.axes) {
     double depth = 0;
-    const Eigen::Vector2d end =
-        project_to_inset(spec, axis.direction, disc.cx, disc.cy, disc.r, &depth);
+    ends.push_back(project_to_inset(spec, axis.direction, disc.cx, disc.cy, disc.r, &depth));
+    depths.push_back(depth);
+  }
+  if (title) draw_title(cr, rect, spec, font, title_height);
+
+  // Axis labels last, on top, clamped inside the inset with a margin, each on a patch of the
+  // inset's paper so that no curve runs through its letters.
+  typeface::select(cr, typeface::Face::sans, 0.85 * font);
+  cairo_font_extents_t fe;
+  cairo_font_extents(cr, &fe);
+  for (std::size_t i = 0; i < spec.axes.size(); ++i) {
+    const auto& axis = spec.axes[i];
+    const double depth = depths[i];
+    const Eigen::Vector2d end = ends[i];
     Eigen::Vector2d out = end - Eigen::Vector2d(disc.cx, disc.cy);
     out = out.norm() > 1e-9 ? out.normalized() : Eigen::Vector2d(1, 0);
     typeface::text_extents(cr, axis.label.c_str(), &ext);
@@ -193,7 +206,7 @@ void draw_top(cairo_t* cr, const PixelRect& rect, const SphereSpec& spec) {
     double y = anchor.y() + 0.35 * font * (1.0 + out.y());
     const double margin = 0.4 * font;
     x = std::clamp(x, rect.x + margin, rect.right() - ext.x_advance - margin);
-    y = std::clamp(y, rect.y + inset_title_height(rect) + font, rect.bottom() - margin);
+    y = std::clamp(y, rect.y + title_height + font, rect.bottom() - margin);
     cairo_new_path(cr);
     cairo_rectangle(cr, x - 0.15 * font, y - fe.ascent, ext.x_advance + 0.3 * font,
                     fe.ascent + fe.descent);
@@ -217,8 +230,8 @@ PixelRegion inset_region(const RgbaImage& image, const PixelRect& rect) {
 void draw_sphere(RgbaImage& image, const PixelRect& rect, const SphereSpec& spec) {
   if (!drawable(rect)) return;  // no room for a readable sphere
   CairoCanvas canvas(image.width, image.height, inset_region(image, rect));
-  draw_base(canvas.cr(), rect, spec);
-  draw_top(canvas.cr(), rect, spec);
+  draw_shapes(canvas.cr(), rect, spec);
+  draw_top(canvas.cr(), rect, spec, true);
   canvas.composite_onto(image);
 }
 
@@ -229,7 +242,8 @@ SphereInset::SphereInset(int image_width, int image_height, const PixelRect& rec
   canvas_ = std::make_unique<CairoCanvas>(
       width_, height_,
       region_around(rect.x, rect.y, rect.width, rect.height, 2.0, image_width, image_height));
-  draw_base(canvas_->cr(), rect_, spec_);
+  draw_shapes(canvas_->cr(), rect_, spec_);
+  draw_title(canvas_->cr(), rect_, spec_, inset_font(rect_), inset_title_height(rect_));
   base_ = canvas_->snapshot();
 }
 
@@ -241,7 +255,7 @@ void SphereInset::draw(RgbaImage& image, std::vector<SphereTrail> trails) {
   if (!canvas_) return;
   canvas_->restore(base_);
   spec_.trails = std::move(trails);
-  draw_top(canvas_->cr(), rect_, spec_);
+  draw_top(canvas_->cr(), rect_, spec_, false);
   canvas_->composite_onto(image);
 }
 

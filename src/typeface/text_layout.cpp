@@ -14,6 +14,8 @@
 
 #include "common/errors.hpp"
 #include "typeface/built_in.hpp"
+#include "typeface/laid_out_text.hpp"
+#include "typeface/typeface.hpp"
 
 namespace bookspin::typeface {
 
@@ -235,39 +237,48 @@ std::optional<std::pair<Decoded, std::vector<Run>>> itemize(cairo_t* cr, const c
   return std::make_pair(std::move(*decoded), std::move(runs));
 }
 
-// One run's glyphs, placed in user space, and the face they are drawn in.
-struct GlyphRun {
-  std::size_t face = 0;
-  std::vector<cairo_glyph_t> glyphs;
-};
-
-// Places every run's glyphs from (x, y), left to right in visual order; returns the advance.
-// Leaves the last run's face set on `cr` (callers save and restore around it).
+// Places every run's glyphs from the origin, left to right in visual order, each with the byte
+// offset of its cluster; returns the advance. Leaves the last run's face set on `cr` (callers
+// save and restore around it).
 double place(cairo_t* cr, const char* utf8, const Decoded& decoded, const std::vector<Run>& runs,
-             double x, double y, std::vector<GlyphRun>& out) {
+             std::vector<GlyphRun>& out) {
   cairo_matrix_t font_matrix;
   cairo_get_font_matrix(cr, &font_matrix);
-  double pen = x;
+  double pen = 0;
   for (const Run& run : runs) {
     cairo_set_font_face(cr, built_in_face(run.face));
-    GlyphRun placed{run.face, {}};
+    GlyphRun placed{
+        run.face,
+        std::shared_ptr<cairo_font_face_t>(cairo_font_face_reference(built_in_face(run.face)),
+                                           cairo_font_face_destroy),
+        run.level % 2 == 1,
+        {}};
     if (!run.shaped) {
       // cairo's own glyphs and advances, as cairo_show_text would draw these characters.
       cairo_scaled_font_t* scaled = cairo_get_scaled_font(cr);
       cairo_glyph_t* glyphs = nullptr;
-      int count = 0;
+      cairo_text_cluster_t* clusters = nullptr;
+      int count = 0, cluster_count = 0;
+      cairo_text_cluster_flags_t flags{};
       const std::size_t from = decoded.offset[run.begin], to = decoded.offset[run.end];
-      if (cairo_scaled_font_text_to_glyphs(scaled, pen, y, utf8 + from, static_cast<int>(to - from),
-                                           &glyphs, &count, nullptr, nullptr,
-                                           nullptr) != CAIRO_STATUS_SUCCESS)
+      if (cairo_scaled_font_text_to_glyphs(scaled, pen, 0, utf8 + from, static_cast<int>(to - from),
+                                           &glyphs, &count, &clusters, &cluster_count,
+                                           &flags) != CAIRO_STATUS_SUCCESS)
         throw InternalError("the text layout: cairo cannot map a run to glyphs");
-      placed.glyphs.assign(glyphs, glyphs + count);
-      cairo_glyph_free(glyphs);
+      std::size_t byte = from;
+      int g = 0;
+      for (int c = 0; c < cluster_count; ++c) {
+        for (int k = 0; k < clusters[c].num_glyphs && g < count; ++k, ++g)
+          placed.glyphs.push_back({glyphs[g].index, glyphs[g].x, glyphs[g].y, byte});
+        byte += static_cast<std::size_t>(clusters[c].num_bytes);
+      }
       if (count > 0) {
         cairo_text_extents_t last;
-        cairo_scaled_font_glyph_extents(scaled, &placed.glyphs.back(), 1, &last);
-        pen = placed.glyphs.back().x + last.x_advance;
+        cairo_scaled_font_glyph_extents(scaled, &glyphs[count - 1], 1, &last);
+        pen = glyphs[count - 1].x + last.x_advance;
       }
+      cairo_glyph_free(glyphs);
+      cairo_text_cluster_free(clusters);
     } else {
       // HarfBuzz's glyphs (joined, reordered, marks placed), in font units scaled to the
       // size; the whole text is the context, so letters join across a run's ends.
@@ -286,65 +297,41 @@ double place(cairo_t* cr, const char* utf8, const Decoded& decoded, const std::v
       const double sx = font_matrix.xx / s.units_per_em[run.face];
       const double sy = font_matrix.yy / s.units_per_em[run.face];
       for (unsigned g = 0; g < count; ++g) {
-        placed.glyphs.push_back(
-            {info[g].codepoint, pen + position[g].x_offset * sx, y - position[g].y_offset * sy});
+        // HarfBuzz's y grows up, cairo's down: an offset up is a smaller y.
+        placed.glyphs.push_back({info[g].codepoint, pen + position[g].x_offset * sx,
+                                 -position[g].y_offset * sy, decoded.offset[info[g].cluster]});
         pen += position[g].x_advance * sx;
       }
       hb_buffer_destroy(buffer);
     }
     out.push_back(std::move(placed));
   }
-  return pen - x;
+  return pen;
 }
 
-// Draws `utf8` from the current point, by `whole` (cairo's own call) where it needs no layout,
-// else each run's glyphs in its face by `glyphs`; the current point then at the text's end.
-void lay_out(cairo_t* cr, const char* utf8, void (*whole)(cairo_t*, const char*),
-             void (*glyphs)(cairo_t*, const cairo_glyph_t*, int)) {
-  auto layout = itemize(cr, utf8);
-  if (!layout) {
-    whole(cr, utf8);
-    return;
-  }
-  double x = 0, y = 0;
-  cairo_get_current_point(cr, &x, &y);
-  std::vector<GlyphRun> runs;
-  cairo_save(cr);
-  const double advance = place(cr, utf8, layout->first, layout->second, x, y, runs);
-  for (const GlyphRun& run : runs) {
-    cairo_set_font_face(cr, built_in_face(run.face));
-    glyphs(cr, run.glyphs.data(), static_cast<int>(run.glyphs.size()));
-  }
-  cairo_restore(cr);
-  cairo_move_to(cr, x + advance, y);
+// The glyphs of `run` as cairo draws them, moved by (x, y).
+std::vector<cairo_glyph_t> cairo_glyphs(const GlyphRun& run, double x, double y) {
+  std::vector<cairo_glyph_t> glyphs;
+  glyphs.reserve(run.glyphs.size());
+  for (const PlacedGlyph& g : run.glyphs) glyphs.push_back({g.index, x + g.x, y + g.y});
+  return glyphs;
 }
 
-}  // namespace
-
-void show_text(cairo_t* cr, const char* utf8) {
-  lay_out(cr, utf8, cairo_show_text, cairo_show_glyphs);
-}
-
-void text_extents(cairo_t* cr, const char* utf8, cairo_text_extents_t* extents) {
-  auto layout = itemize(cr, utf8);
-  if (!layout) {
-    cairo_text_extents(cr, utf8, extents);
-    return;
-  }
-  std::vector<GlyphRun> runs;
-  cairo_save(cr);
-  const double advance = place(cr, utf8, layout->first, layout->second, 0, 0, runs);
+// The ink box of the runs' glyphs, from the origin, as cairo_text_extents gives it; zero where
+// there is no ink. Leaves the last run's face set on `cr`.
+void ink_extents(cairo_t* cr, const std::vector<GlyphRun>& runs, cairo_text_extents_t& out) {
   double left = 0, top = 0, right = 0, bottom = 0;
   bool inked = false;
   for (const GlyphRun& run : runs) {
     cairo_set_font_face(cr, built_in_face(run.face));
     if (run.glyphs.empty()) continue;
+    const std::vector<cairo_glyph_t> glyphs = cairo_glyphs(run, 0, 0);
     cairo_text_extents_t e;
-    cairo_glyph_extents(cr, run.glyphs.data(), static_cast<int>(run.glyphs.size()), &e);
+    cairo_glyph_extents(cr, glyphs.data(), static_cast<int>(glyphs.size()), &e);
     if (e.width <= 0 && e.height <= 0) continue;
     // cairo measures the bearings from the run's first glyph; the text's from its origin.
-    e.x_bearing += run.glyphs.front().x;
-    e.y_bearing += run.glyphs.front().y;
+    e.x_bearing += glyphs.front().x;
+    e.y_bearing += glyphs.front().y;
     if (!inked) {
       left = e.x_bearing, top = e.y_bearing;
       right = e.x_bearing + e.width, bottom = e.y_bearing + e.height;
@@ -355,12 +342,140 @@ void text_extents(cairo_t* cr, const char* utf8, cairo_text_extents_t* extents) 
       bottom = std::max(bottom, e.y_bearing + e.height);
     }
   }
+  out.x_bearing = left, out.y_bearing = top;
+  out.width = right - left, out.height = bottom - top;
+}
+
+// cairo's own glyphs of a whole text (as cairo_show_text draws it from the origin) in the face
+// selected on `cr`; none where it is not UTF-8.
+GlyphRun cairos_glyphs(cairo_t* cr, const LaidOutText& text) {
+  GlyphRun run;
+  run.face = built_in_index(cairo_get_font_face(cr)).value_or(0);
+  run.font_face = text.font_face;
+  cairo_glyph_t* glyphs = nullptr;
+  cairo_text_cluster_t* clusters = nullptr;
+  int count = 0, cluster_count = 0;
+  cairo_text_cluster_flags_t flags{};
+  if (cairo_scaled_font_text_to_glyphs(cairo_get_scaled_font(cr), 0, 0, text.utf8.data(),
+                                       static_cast<int>(text.utf8.size()), &glyphs, &count,
+                                       &clusters, &cluster_count, &flags) != CAIRO_STATUS_SUCCESS)
+    return run;
+  std::size_t byte = 0;
+  int g = 0;
+  for (int c = 0; c < cluster_count; ++c) {
+    for (int k = 0; k < clusters[c].num_glyphs && g < count; ++k, ++g)
+      run.glyphs.push_back({glyphs[g].index, glyphs[g].x, glyphs[g].y, byte});
+    byte += static_cast<std::size_t>(clusters[c].num_bytes);
+  }
+  cairo_glyph_free(glyphs);
+  cairo_text_cluster_free(clusters);
+  return run;
+}
+
+// `utf8` laid out in the font selected on `cr`; its extents measured where `measure`.
+LaidOutText lay_out(cairo_t* cr, const char* utf8, bool measure) {
+  LaidOutText text;
+  if (utf8 != nullptr) text.utf8 = utf8;
+  text.font_face = std::shared_ptr<cairo_font_face_t>(
+      cairo_font_face_reference(cairo_get_font_face(cr)), cairo_font_face_destroy);
+  cairo_get_font_matrix(cr, &text.font_matrix);
+  cairo_font_options_t* options = cairo_font_options_create();
+  cairo_get_font_options(cr, options);
+  text.font_options = std::shared_ptr<cairo_font_options_t>(options, cairo_font_options_destroy);
+  auto layout = itemize(cr, utf8);
+  if (!layout) {
+    text.whole = true;
+    if (!measure) return text;
+    cairo_text_extents(cr, utf8, &text.extents);
+    if (cairo_status(cr) == CAIRO_STATUS_SUCCESS) text.runs.push_back(cairos_glyphs(cr, text));
+    return text;
+  }
+  cairo_save(cr);
+  const double advance = place(cr, utf8, layout->first, layout->second, text.runs);
+  if (measure) ink_extents(cr, text.runs, text.extents);
   cairo_restore(cr);
-  *extents = {left, top, right - left, bottom - top, advance, 0};
+  text.extents.x_advance = advance;
+  text.extents.y_advance = 0;
+  return text;
+}
+
+// Draws `text` from the current point (or the origin), by `whole` (cairo's own call) where it
+// needs no layout, else each run's glyphs in its face by `glyphs`, in the font it was laid out
+// in; the current point then at the text's end.
+void draw(cairo_t* cr, const LaidOutText& text, void (*whole)(cairo_t*, const char*),
+          void (*glyphs)(cairo_t*, const cairo_glyph_t*, int)) {
+  cairo_save(cr);
+  cairo_set_font_face(cr, text.font_face.get());
+  cairo_set_font_matrix(cr, &text.font_matrix);
+  if (text.whole) {
+    whole(cr, text.utf8.c_str());
+    cairo_restore(cr);
+    return;
+  }
+  double x = 0, y = 0;
+  if (cairo_has_current_point(cr)) cairo_get_current_point(cr, &x, &y);
+  for (const GlyphRun& run : text.runs) {
+    cairo_set_font_face(cr, built_in_face(run.face));
+    const std::vector<cairo_glyph_t> placed = cairo_glyphs(run, x, y);
+    glyphs(cr, placed.data(), static_cast<int>(placed.size()));
+  }
+  cairo_restore(cr);
+  cairo_move_to(cr, x + text.extents.x_advance, y);
+}
+
+}  // namespace
+
+LaidOutText lay_out_text(cairo_t* cr, const char* utf8) { return lay_out(cr, utf8, true); }
+
+std::vector<LaidOutText> lay_out_texts(cairo_t* cr, const std::vector<TextRequest>& requests) {
+  std::vector<LaidOutText> laid;
+  laid.reserve(requests.size());
+  cairo_save(cr);
+  for (const TextRequest& request : requests) {
+    cairo_save(cr);
+    if (request.angle != 0) cairo_rotate(cr, request.angle);
+    select(cr, request.face, request.size);
+    LaidOutText text = lay_out(cr, request.utf8.c_str(), true);
+    const double advance = text.extents.x_advance;
+    if (request.max_advance > 0 && advance > request.max_advance) {
+      select(cr, request.face, request.size * request.max_advance / advance);
+      text = lay_out(cr, request.utf8.c_str(), true);
+    }
+    laid.push_back(std::move(text));
+    cairo_restore(cr);
+  }
+  cairo_restore(cr);
+  return laid;
+}
+
+void show_laid_out(cairo_t* cr, const LaidOutText& text) {
+  draw(cr, text, cairo_show_text, cairo_show_glyphs);
+}
+
+void show_placed(cairo_t* cr, const std::vector<PlacedText>& texts) {
+  for (const PlacedText& placed : texts) {
+    cairo_save(cr);
+    if (placed.angle != 0 || placed.x != 0 || placed.y != 0) {
+      cairo_translate(cr, placed.x, placed.y);
+      cairo_rotate(cr, placed.angle);
+    }
+    cairo_set_source_rgb(cr, placed.r, placed.g, placed.b);
+    cairo_move_to(cr, placed.origin_x, placed.origin_y);
+    show_laid_out(cr, *placed.text);
+    cairo_restore(cr);
+  }
+}
+
+void show_text(cairo_t* cr, const char* utf8) {
+  draw(cr, lay_out(cr, utf8, false), cairo_show_text, cairo_show_glyphs);
+}
+
+void text_extents(cairo_t* cr, const char* utf8, cairo_text_extents_t* extents) {
+  *extents = lay_out(cr, utf8, true).extents;
 }
 
 void text_path(cairo_t* cr, const char* utf8) {
-  lay_out(cr, utf8, cairo_text_path, cairo_glyph_path);
+  draw(cr, lay_out(cr, utf8, false), cairo_text_path, cairo_glyph_path);
 }
 
 }  // namespace bookspin::typeface

@@ -16,9 +16,34 @@
 // A text wholly in the selected face, left to right and needing no shaping (every Latin, Greek
 // or Cyrillic text) is handed to cairo's call itself: it draws the bytes it always drew.
 // Text that is not valid UTF-8 is handed to cairo too, which refuses it as it always did.
+// lay_out_text() gives the layout as a value (laid_out_text.hpp): a caller that measures a text,
+// places it and draws it lays it out once; show_text() and its siblings lay out and draw at once.
 #include <cairo.h>
 
+#include <vector>
+
+#include "typeface/face.hpp"
+#include "typeface/laid_out_text.hpp"
+
 namespace bookspin::typeface {
+
+/// `utf8` laid out from the origin in the face and size selected on `cr`, under its current
+/// transformation: its glyph runs in visual order and its extents (as text_extents() gives
+/// them). `cr` is left as it was.
+LaidOutText lay_out_text(cairo_t* cr, const char* utf8);
+
+/// Each request laid out as lay_out_text() lays it out, in its own face and size (the options
+/// of select()), in order, in one call; `cr` is left as it was.
+std::vector<LaidOutText> lay_out_texts(cairo_t* cr, const std::vector<TextRequest>& requests);
+
+/// Draws `text` at the current point (or the origin when there is none) in the font it was
+/// laid out in, as show_text() draws its words (the same bytes where `cr` has the same
+/// transformation and font options); afterwards the current point is the end of its advance.
+void show_laid_out(cairo_t* cr, const LaidOutText& text);
+
+/// Draws each of `texts` in order where it is placed, as show_laid_out() draws it, in its
+/// colour; `cr` is left as it was but for its current point, the last text's end.
+void show_placed(cairo_t* cr, const std::vector<PlacedText>& texts);
 
 /// Draws `utf8` at the current point (or the origin when there is none), as cairo_show_text
 /// does; afterwards the current point is the end of the text's advance.

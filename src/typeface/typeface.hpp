@@ -9,11 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace bookspin::typeface {
+#include "typeface/face.hpp"
 
-/// The faces drawn: the overlays' sans, regular and bold; the covers' serif, bold, italic and
-/// the barcode's monospace.
-enum class Face { sans, sans_bold, sans_mono, serif, serif_bold, serif_italic };
+namespace bookspin::typeface {
 
 /// Sets `face` on `cr`, `size` pixels to the em (cairo's font size, in the context's user
 /// units), with the fixed options of text_options(). Thread-safe: the faces are made once.

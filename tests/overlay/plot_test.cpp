@@ -251,5 +251,34 @@ TEST(Plot, TitleLabelsAndLegendDrawCjk) {
     EXPECT_NE(plot("太郎", where), plot("花子", where)) << "text " << where;
 }
 
+// A plot lays its labels out once, before its area is known; the y ticks it draws follow the
+// area's height (2 … 5 intervals, more where that gives fewer than two ticks), so every label
+// those can have is laid out with the rest: at any height, for ranges of any size, each tick
+// drawn has its label (else an internal error) and the plot is drawn.
+TEST(Plot, EveryYTickDrawnAtAnyHeightWasLaidOut) {
+  for (const double scale : {1e-7, 0.013, 1.0, 2.4, 37.0, 3e5}) {
+    for (const double offset : {0.0, -0.7}) {
+      PlotSpec spec;
+      spec.title = "toss 1";
+      spec.x_label = "time (s)";
+      spec.y_label = "ω (rad/s)";
+      Series s;
+      s.label = "ω_x";
+      for (int i = 0; i <= 50; ++i) {
+        s.x.push_back(i);
+        s.y.push_back(scale * (offset + std::sin(0.2 * i)));
+      }
+      spec.series = {s};
+      for (int height = 60; height <= 900; height += 13) {
+        RgbaImage image(1, 1);
+        ASSERT_NO_THROW(image = plot_image(spec, 420, height)) << scale << " " << height;
+        EXPECT_TRUE(std::any_of(image.pixels.begin(), image.pixels.end(),
+                                [](std::uint8_t v) { return v < 100; }))
+            << scale << " " << height;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bookspin::overlay

@@ -1,7 +1,8 @@
 // The text layout (src/typeface/text_layout.hpp): text in any alphabet drawn by the pixels it
 // makes, against cairo's own calls: Latin, Greek and Cyrillic the bytes cairo draws; CJK and an
 // emoji their own glyphs, not the missing-glyph box; Arabic joined and right to left; a mixed
-// line its pieces end to end; the extents the ink drawn.
+// line its pieces end to end; the extents the ink drawn; and the layout as a value, where its
+// pieces go: right-to-left runs in visual order as a whole, marks above or below their letters.
 #include "typeface/text_layout.hpp"
 
 #include <cairo.h>
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "typeface/built_in.hpp"
 #include "typeface/typeface.hpp"
 
 namespace bookspin::typeface {
@@ -236,6 +238,156 @@ TEST(TextLayout, ExtentsAreTheInkDrawn) {
       EXPECT_EQ(p.end_y, kY) << text;
     }
   }
+}
+
+// The layout as a value is what show_text draws: the same bytes, the same current point.
+TEST(TextLayout, LaidOutTextDrawsAsShowText) {
+  for (const std::string& text : {std::string("time (s)"), std::string(kArabic),
+                                  std::string(kMixed), std::string("\u05e1\u05e4\u05e8 12")}) {
+    const Picture direct(shown(text));
+    const Picture laid([&](cairo_t* cr) { show_laid_out(cr, lay_out_text(cr, text.c_str())); });
+    EXPECT_TRUE(direct.bytes() == laid.bytes()) << text;
+    EXPECT_EQ(direct.end_x, laid.end_x) << text;
+  }
+}
+
+// Every glyph of `text` whose cluster lies in bytes [from, to): its x (user units).
+std::vector<double> xs_of(const LaidOutText& text, std::size_t from, std::size_t to) {
+  std::vector<double> xs;
+  for (const GlyphRun& run : text.runs)
+    for (const PlacedGlyph& g : run.glyphs)
+      if (g.cluster >= from && g.cluster < to) xs.push_back(g.x);
+  return xs;
+}
+
+// A right-to-left stretch of two or more runs (an Arabic or Hebrew word, then a number) is
+// reversed as a whole within the left-to-right line: the number left of the word, its digits
+// still left to right, the line's English words where they were.
+TEST(TextLayout, RightToLeftRunsAreReversedAsAWhole) {
+  const std::string hebrew = "\u05e1\u05e4\u05e8";  // "book"
+  for (const std::string& word : {std::string(kArabic), hebrew}) {
+    for (const std::string& before : {std::string(), std::string("toss ")}) {
+      const std::string after = before.empty() ? "" : " ends";
+      const std::string text = before + word + " 12" + after;
+      Picture measure([](cairo_t*) {});
+      const LaidOutText laid = lay_out_text(measure.cr, text.c_str());
+      ASSERT_FALSE(laid.whole) << text;
+      const std::size_t w0 = before.size(), w1 = w0 + word.size(), n0 = w1 + 1;
+      const std::vector<double> word_x = xs_of(laid, w0, w1), one = xs_of(laid, n0, n0 + 1),
+                                two = xs_of(laid, n0 + 1, n0 + 2);
+      ASSERT_FALSE(word_x.empty() || one.size() != 1 || two.size() != 1) << text;
+      const double word_left = *std::min_element(word_x.begin(), word_x.end());
+      EXPECT_LT(two[0], word_left) << text << ": the number is not left of the word";
+      EXPECT_LT(one[0], two[0]) << text << ": 12 is drawn 21";
+      if (before.empty()) continue;
+      const std::vector<double> toss = xs_of(laid, 0, w0), ends = xs_of(laid, n0 + 3, text.size());
+      const double word_right = *std::max_element(word_x.begin(), word_x.end());
+      EXPECT_LT(*std::max_element(toss.begin(), toss.end()), one[0]) << text;
+      EXPECT_GT(*std::min_element(ends.begin(), ends.end()), word_right) << text;
+    }
+  }
+}
+
+// A glyph's ink box as drawn (user units: left, top, right, bottom; y down).
+struct Ink {
+  double left, top, right, bottom;
+};
+Ink ink_of(cairo_t* cr, const GlyphRun& run, const PlacedGlyph& g) {
+  cairo_save(cr);
+  cairo_set_font_face(cr, built_in_face(run.face));
+  const cairo_glyph_t glyph{g.index, g.x, g.y};
+  cairo_text_extents_t e;
+  cairo_glyph_extents(cr, &glyph, 1, &e);
+  cairo_restore(cr);
+  return {g.x + e.x_bearing, g.y + e.y_bearing, g.x + e.x_bearing + e.width,
+          g.y + e.y_bearing + e.height};
+}
+
+// The glyph index `code` has in built-in face `face` (its cmap), or 0.
+unsigned long nominal_glyph(cairo_t* cr, std::size_t face, const std::string& code) {
+  cairo_save(cr);
+  cairo_set_font_face(cr, built_in_face(face));
+  cairo_glyph_t* glyphs = nullptr;
+  int count = 0;
+  cairo_scaled_font_text_to_glyphs(cairo_get_scaled_font(cr), 0, 0, code.c_str(),
+                                   static_cast<int>(code.size()), &glyphs, &count, nullptr, nullptr,
+                                   nullptr);
+  const unsigned long index = count == 1 ? glyphs[0].index : 0;
+  cairo_glyph_free(glyphs);
+  cairo_restore(cr);
+  return index;
+}
+
+// A shaped mark sits where its letter's anchor puts it, HarfBuzz's offset up drawn up (cairo's
+// y grows down): a circumflex, an Arabic fatha or damma wholly above its letter's ink; a Hebrew
+// point or an Arabic kasra wholly under the baseline. Some of them HarfBuzz moves from where
+// the mark's glyph is drawn alone (a vertical offset): a sign taken the wrong way round moves
+// those through their letters.
+TEST(TextLayout, MarksSitAboveOrBelowTheirLetters) {
+  struct Case {
+    std::string base, mark;
+    bool above;
+  };
+  const std::vector<Case> cases{
+      {"x", "\u0302", true},       {"X", "\u0302", true},       {"\u0436", "\u0302", true},
+      {"\u0628", "\u064e", true},  {"\u0628", "\u064f", true},  {"\u0628", "\u0650", false},
+      {"\u05d1", "\u05b0", false}, {"\u05d3", "\u05b7", false}, {"\u05e7", "\u05b8", false},
+      {"\u05e0", "\u05b4", false},
+  };
+  Picture measure([](cairo_t*) {});
+  cairo_t* cr = measure.cr;
+  int moved = 0;  // marks HarfBuzz moved vertically: the cases that can see a sign taken wrong
+  for (const Case& c : cases) {
+    const std::string text = c.base + c.mark;
+    const LaidOutText laid = lay_out_text(cr, text.c_str());
+    ASSERT_EQ(laid.runs.size(), 1u) << text;
+    const GlyphRun& run = laid.runs[0];
+    // The letter's glyph is its own (cmap); the mark's may be a variant (over a capital).
+    ASSERT_EQ(run.glyphs.size(), 2u) << text;
+    const unsigned long base_glyph = nominal_glyph(cr, run.face, c.base);
+    const PlacedGlyph *base = nullptr, *mark = nullptr;
+    for (const PlacedGlyph& g : run.glyphs) (g.index == base_glyph ? base : mark) = &g;
+    ASSERT_TRUE(base != nullptr && mark != nullptr) << text << ": not a letter and its mark";
+    EXPECT_EQ(base->cluster, 0u) << text;
+    if (mark->y != 0) ++moved;
+    const Ink letter = ink_of(cr, run, *base), point = ink_of(cr, run, *mark);
+    // Over the letter, not beside it.
+    EXPECT_LT(point.left, letter.right) << text;
+    EXPECT_GT(point.right, letter.left) << text;
+    if (c.above) {
+      EXPECT_LE(point.bottom, letter.top + 0.02 * kSize)
+          << text << ": the mark is not above its letter (" << point.bottom
+          << " vs the letter's top " << letter.top << ")";
+    } else {
+      EXPECT_GE(point.top, -0.02 * kSize)
+          << text << ": the point is not under the baseline (its top " << point.top << ")";
+    }
+  }
+  EXPECT_GT(moved, 0) << "no mark is moved vertically: the cases cannot see the offset's sign";
+}
+
+// The same two faults seen in the pixels drawn, not the layout's values: in "الكتاب 12" the
+// number is drawn first, at the left, exactly as "12" alone draws it (its columns the same
+// bytes); a circumflex over X inks rows above X's own top, a kasra under ب rows below ب's own
+// bottom.
+TEST(TextLayout, TheNumberAndTheMarksInkWhereTheyBelong) {
+  const std::string number = "12";
+  for (const std::string& word : {std::string(kArabic), std::string("\u05e1\u05e4\u05e8")}) {
+    const Picture whole(shown(word + " " + number)), alone(shown(number));
+    const auto digits = alone.ink_box();
+    ASSERT_GE(digits.right, digits.left);
+    const Picture::Box left = whole.ink_box(0, digits.right + 1);
+    EXPECT_EQ(left.left, digits.left) << word;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x <= digits.right; ++x)
+        ASSERT_EQ(whole.touched(x, y), alone.touched(x, y))
+            << word << " 12: the number is not drawn at the left (" << x << ", " << y << ")";
+  }
+  const Picture capital(shown("X")), accented(shown("X\u0302"));
+  EXPECT_LT(accented.ink_box().top, capital.ink_box().top - kSize / 10)
+      << "no circumflex above the X";
+  const Picture ba(shown("\u0628")), kasra(shown("\u0628\u0650"));
+  EXPECT_GT(kasra.ink_box().bottom, ba.ink_box().bottom + kSize / 20) << "no kasra under the ba";
 }
 
 }  // namespace
