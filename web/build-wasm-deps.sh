@@ -4,7 +4,7 @@
 # versions the native build links; scripts/install-deps.sh fetches and unpacks them, Debian's
 # patches applied, into web/deb-src/):
 #   - zlib (inflate) and minizip (unzip.c, ioapi.c): the phyphox zip, read by the same
-#     src/fit/recording.cpp as the command line's;
+#     src/fit/recording_zip.cpp as the command line's;
 #   - utf8proc (utf8proc.c with its tables): a recording's name in any alphabet, NFC and cut
 #     at a whole character, by the same src/common/file_name.cpp as the command line's;
 #   - Ceres: the same solver as the command line's, with its own small logging (miniglog,

@@ -37,6 +37,16 @@ constexpr double kConserved = 0.08;
 // window holds it), or any stretch whose neighbours are at most kBridgeTime apart.
 constexpr int kBridgeSamples = 2 * kHalfWindow + 1;
 constexpr double kBridgeTime = 0.05;  // s
+// A flight holding such a stretch is kept only as a rigid body's (rigid_bridge): its Euler
+// inertia's smallest moment over this share of the largest (no needle: rigid_restart.hpp's),
+// and the torque left on each of its pieces between bridges within kBridgeNoise times the
+// quietest piece's. Measured on the re-stamped lone flights of tests/fit/lone_flight_test.cpp:
+// the smallest moment 0.14 at least, the loudest piece 3.6 times the quietest at most. The
+// triangle inequality is not asked here: that inertia, from a derivative the stamps spoil, puts
+// a flat body's two smaller moments up to 25 % under the largest; the fitted body's is asked
+// (toss_flags.hpp).
+constexpr double kBridgeNeedle = 0.1;
+constexpr double kBridgeNoise = 6.0;
 
 std::string seconds(double value) {
   std::ostringstream text;
@@ -152,6 +162,37 @@ void bridge_conserved(std::vector<char>& mask, int offset, int first, int last,
       for (int k = i; k < end; ++k) mask[k - offset] = bridged[k] = 1;
     i = end;
   }
+}
+
+/// Whether flight [first, last], holding samples bridged by bridge_conserved (`bridged`), is a
+/// rigid body's free flight (docs/phone-lab.md, "Stamps off their samples"): the inertia that
+/// Euler's equations fit on its samples (clipped and bridged ones left out) no needle (its
+/// smallest moment over kBridgeNeedle of the largest), and the torque it leaves on each piece
+/// between its bridges (the median of torque_residual) within kBridgeNoise times the quietest
+/// piece's: a hand's swing that keeps |I ω| and ω·I ω joined on by a bridge makes the one or
+/// the other fail.
+bool rigid_bridge(const std::vector<Eigen::Vector3d>& omega,
+                  const std::vector<Eigen::Vector3d>& rate, const std::vector<char>& clipped,
+                  const std::vector<char>& bridged, int first, int last) {
+  std::vector<int> indices;
+  for (int i = first; i <= last; ++i)
+    if (!clipped[i] && !bridged[i]) indices.push_back(i);
+  if (static_cast<int>(indices.size()) < kMinFitSamples) return false;
+  const Eigen::Matrix3d I = euler_inertia(omega, rate, indices);
+  const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
+  std::vector<double> medians;
+  for (int i = first; i <= last;) {
+    std::vector<double> piece;
+    for (; i <= last && !bridged[i]; ++i)
+      if (!clipped[i]) piece.push_back(torque_residual(I, omega[i], rate[i]));
+    if (static_cast<int>(piece.size()) >= kBridgeSamples)
+      medians.push_back(median_of(std::move(piece)));
+    while (i <= last && bridged[i]) ++i;
+  }
+  const double quietest = medians.empty() ? 0.0 : *std::min_element(medians.begin(), medians.end());
+  const double loudest = medians.empty() ? 0.0 : *std::max_element(medians.begin(), medians.end());
+  if (!(m[2] > 0.0) || m[0] < kBridgeNeedle * m[2]) return false;
+  return loudest <= kBridgeNoise * quietest;
 }
 
 }  // namespace
@@ -277,138 +318,166 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
   for (int i = 0; i < n; ++i)
     if (saturation.at_range[i])
       for (int k = std::max(0, i - 2); k <= std::min(n - 1, i + 2); ++k) clipped[k] = 1;
-  // 1. Candidates: fast enough, and |ω̇| within what Euler's equations allow a body whose
-  // moments obey the triangle inequality, |ω̇| ≤ |ω|²/√3 (docs/physics.md §8), plus noise.
-  std::vector<char> moving(n), candidate(n);
-  for (int i = 0; i < n; ++i) {
-    const double w2 = omega[i].squaredNorm();
-    moving[i] = std::sqrt(w2) >= settings.rest_omega;
-    candidate[i] =
-        std::sqrt(w2) >= settings.flight_omega && (clipped[i] || rate[i].norm() <= 0.6 * w2 + 3.0);
-  }
-  // 1b. A flight whose stamps lie off its samples (a phone stamping when it delivers) has its
-  // derivative off by as much, here and there over the bound: its candidates are bridged where
-  // the body keeps |I ω| and ω·I ω across (bridge_conserved), I fitted on the runs long enough
-  // to fit a flight. A catch between two runs changes both at once and is never bridged.
-  std::vector<char> bridged(n, 0);
-  const auto fast_and_unclipped = [&](int k) {
-    return !clipped[k] && omega[k].norm() >= settings.flight_omega;
-  };
-  {
-    std::vector<int> indices;
-    for (const auto& [first, last] : runs(candidate, segs))
-      if (last - first + 1 >= kMinFitSamples)
+  // Steps 1–3, bridging (1b and each pass's) or not: the free stretches, each sample bridged
+  // marked in `bridged`.
+  const auto free_stretches = [&](bool bridge, std::vector<char>& bridged) {
+    // 1. Candidates: fast enough, and |ω̇| within what Euler's equations allow a body whose
+    // moments obey the triangle inequality, |ω̇| ≤ |ω|²/√3 (docs/physics.md §8), plus noise.
+    std::vector<char> candidate(n);
+    for (int i = 0; i < n; ++i) {
+      const double w2 = omega[i].squaredNorm();
+      candidate[i] = std::sqrt(w2) >= settings.flight_omega &&
+                     (clipped[i] || rate[i].norm() <= 0.6 * w2 + 3.0);
+    }
+    // 1b. A flight whose stamps lie off its samples (a phone stamping when it delivers) has its
+    // derivative off by as much, here and there over the bound: its candidates are bridged where
+    // the body keeps |I ω| and ω·I ω across (bridge_conserved), I fitted on the runs long enough
+    // to fit a flight. A catch between two runs changes both at once and is never bridged.
+    std::fill(bridged.begin(), bridged.end(), 0);
+    const auto fast_and_unclipped = [&](int k) {
+      return !clipped[k] && omega[k].norm() >= settings.flight_omega;
+    };
+    {
+      std::vector<int> indices;
+      for (const auto& [first, last] : runs(candidate, segs))
+        if (last - first + 1 >= kMinFitSamples)
+          for (int i = first; i <= last; ++i)
+            if (!clipped[i]) indices.push_back(i);
+      if (bridge && !indices.empty()) {
+        const Eigen::Matrix3d I0 = euler_inertia(omega, rate, indices);
+        for (const auto& [begin, end] : segs)
+          bridge_conserved(candidate, 0, begin, end - 1, bridged, I0, omega, t, fast_and_unclipped);
+      }
+    }
+    std::vector<std::pair<int, int>> kept;
+    for (const auto& [first, last] : runs(candidate, segs)) {
+      if (t[last] - t[first] < settings.min_flight) continue;
+      kept.emplace_back(first, last);
+    }
+    // 2. Torque-free: the inertia that Euler's equations fit best on the candidates, then each
+    // candidate cut to its longest stretch whose torque residual stays at the noise's level;
+    // three times, each cutting the candidates anew with the inertia of the stretches the
+    // previous pass kept (so that a first inertia spoilt by a wind-up cuts nothing for good).
+    const std::vector<std::pair<int, int>> candidates = kept;
+    Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+    double threshold = 0.0;
+    for (int pass = 0; pass < 3 && !kept.empty(); ++pass) {
+      std::vector<int> indices;
+      for (const auto& [first, last] : kept)
         for (int i = first; i <= last; ++i)
-          if (!clipped[i]) indices.push_back(i);
-    if (!indices.empty()) {
-      const Eigen::Matrix3d I0 = euler_inertia(omega, rate, indices);
-      for (const auto& [begin, end] : segs)
-        bridge_conserved(candidate, 0, begin, end - 1, bridged, I0, omega, t, fast_and_unclipped);
-    }
-  }
-  std::vector<std::pair<int, int>> kept;
-  for (const auto& [first, last] : runs(candidate, segs)) {
-    if (t[last] - t[first] < settings.min_flight) continue;
-    kept.emplace_back(first, last);
-  }
-  // 2. Torque-free: the inertia that Euler's equations fit best on the candidates, then each
-  // candidate cut to its longest stretch whose torque residual stays at the noise's level;
-  // three times, each cutting the candidates anew with the inertia of the stretches the
-  // previous pass kept (so that a first inertia spoilt by a wind-up cuts nothing for good).
-  const std::vector<std::pair<int, int>> candidates = kept;
-  Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
-  double threshold = 0.0;
-  for (int pass = 0; pass < 3 && !kept.empty(); ++pass) {
-    std::vector<int> indices;
-    for (const auto& [first, last] : kept)
-      for (int i = first; i <= last; ++i)
-        if (!clipped[i] && !bridged[i]) indices.push_back(i);
-    if (indices.empty()) break;
-    I = euler_inertia(omega, rate, indices);
-    std::vector<double> residuals;
-    for (int i : indices) residuals.push_back(torque_residual(I, omega[i], rate[i]));
-    threshold = std::max(6.0 * median_of(std::move(residuals)), 0.01);
-    std::vector<std::pair<int, int>> next;
-    for (const auto& [first, last] : candidates) {
-      // Each sample torque-free or not; a run of clipped samples counts as torque-free only
-      // between two torque-free samples (a flight runs through its gyroscope's range, never
-      // into a throw or a catch that also reads it).
-      std::vector<char> ok(last - first + 1, 0);
-      for (int i = first; i <= last; ++i)
-        ok[i - first] = !clipped[i] && torque_residual(I, omega[i], rate[i]) <= threshold;
-      for (int i = first; i <= last;) {
-        if (!clipped[i]) {
-          ++i;
-          continue;
+          if (!clipped[i] && !bridged[i]) indices.push_back(i);
+      if (indices.empty()) break;
+      I = euler_inertia(omega, rate, indices);
+      std::vector<double> residuals;
+      for (int i : indices) residuals.push_back(torque_residual(I, omega[i], rate[i]));
+      threshold = std::max(6.0 * median_of(std::move(residuals)), 0.01);
+      std::vector<std::pair<int, int>> next;
+      for (const auto& [first, last] : candidates) {
+        // Each sample torque-free or not; a run of clipped samples counts as torque-free only
+        // between two torque-free samples (a flight runs through its gyroscope's range, never
+        // into a throw or a catch that also reads it).
+        std::vector<char> ok(last - first + 1, 0);
+        for (int i = first; i <= last; ++i)
+          ok[i - first] = !clipped[i] && torque_residual(I, omega[i], rate[i]) <= threshold;
+        for (int i = first; i <= last;) {
+          if (!clipped[i]) {
+            ++i;
+            continue;
+          }
+          int end = i;
+          while (end + 1 <= last && clipped[end + 1]) ++end;
+          const bool bridged = i > first && end < last && ok[i - 1 - first] && ok[end + 1 - first];
+          for (int k = i; k <= end; ++k) ok[k - first] = bridged;
+          i = end + 1;
         }
-        int end = i;
-        while (end + 1 <= last && clipped[end + 1]) ++end;
-        const bool bridged = i > first && end < last && ok[i - 1 - first] && ok[end + 1 - first];
-        for (int k = i; k <= end; ++k) ok[k - first] = bridged;
-        i = end + 1;
-      }
-      // One or two samples over the threshold between torque-free ones are the derivative's
-      // noise (larger where the steps are uneven), not a throw or a catch, which run longer.
-      for (int i = first + 1; i < last; ++i) {
-        if (ok[i - first]) continue;
-        int end = i;
-        while (end < last && !ok[end - first] && end - i < kIsolated) ++end;
-        if (ok[i - 1 - first] && end <= last && ok[end - first] && end - i <= kIsolated &&
-            !clipped[i])
-          for (int k = i; k < end; ++k) ok[k - first] = 1;
-        i = end;
-      }
-      // Longer stretches whose derivative the stamps spoil, as in step 1b, by this pass's I.
-      bridge_conserved(ok, first, first, last, bridged, I, omega, t, fast_and_unclipped);
-      int best_first = first, best_last = first - 1, start = -1;
-      for (int i = first; i <= last + 1; ++i) {
-        const bool good = i <= last && ok[i - first];
-        if (good && start < 0) start = i;
-        if (!good && start >= 0) {
-          if (i - 1 - start > best_last - best_first) best_first = start, best_last = i - 1;
-          start = -1;
+        // One or two samples over the threshold between torque-free ones are the derivative's
+        // noise (larger where the steps are uneven), not a throw or a catch, which run longer.
+        for (int i = first + 1; i < last; ++i) {
+          if (ok[i - first]) continue;
+          int end = i;
+          while (end < last && !ok[end - first] && end - i < kIsolated) ++end;
+          if (ok[i - 1 - first] && end <= last && ok[end - first] && end - i <= kIsolated &&
+              !clipped[i])
+            for (int k = i; k < end; ++k) ok[k - first] = 1;
+          i = end;
         }
+        // Longer stretches whose derivative the stamps spoil, as in step 1b, by this pass's I.
+        if (bridge)
+          bridge_conserved(ok, first, first, last, bridged, I, omega, t, fast_and_unclipped);
+        int best_first = first, best_last = first - 1, start = -1;
+        for (int i = first; i <= last + 1; ++i) {
+          const bool good = i <= last && ok[i - first];
+          if (good && start < 0) start = i;
+          if (!good && start >= 0) {
+            if (i - 1 - start > best_last - best_first) best_first = start, best_last = i - 1;
+            start = -1;
+          }
+        }
+        if (best_last >= best_first) next.emplace_back(best_first, best_last);
       }
-      if (best_last >= best_first) next.emplace_back(best_first, best_last);
+      kept = next;
     }
-    kept = next;
-  }
-  // 3. Each torque-free stretch grown over its neighbours while they stay torque-free by the
-  // inertia and threshold of the last pass: the bound of step 1 is a body's in exact
-  // arithmetic, which a flat body's flip nears (|ω̇|/|ω|² up to 1/√3) and a real gyroscope's
-  // gain and cross-axis errors or a derivative over uneven steps exceed for a while; Euler's
-  // equations with the fitted inertia, not that bound, say where the flight ends.
-  if (threshold > 0.0)
-    for (std::size_t k = 0; k < kept.size(); ++k) {
-      auto& [first, last] = kept[k];
-      const int low = k > 0 ? kept[k - 1].second + 1 : 0;
-      const int high = k + 1 < kept.size() ? kept[k + 1].first - 1 : n - 1;
-      int begin = 0, end = n;
-      for (const auto& [b, e] : segs)
-        if (first >= b && first < e) begin = b, end = e;
-      const auto free_at = [&](int i) {
-        return !clipped[i] && omega[i].norm() >= settings.flight_omega &&
-               torque_residual(I, omega[i], rate[i]) <= threshold;
-      };
-      while (first - 1 >= std::max(low, begin) && free_at(first - 1)) --first;
-      while (last + 1 <= std::min(high, end - 1) && free_at(last + 1)) ++last;
-    }
-  // Two stretches grown into each other within a segment are one flight (the bound of step 1
-  // had cut it); a pause or a gap still parts them.
-  const auto segment_of = [&](int i) {
-    for (std::size_t s = 0; s < segs.size(); ++s)
-      if (i >= segs[s].first && i < segs[s].second) return s;
-    return segs.size();
+    // 3. Each torque-free stretch grown over its neighbours while they stay torque-free by the
+    // inertia and threshold of the last pass: the bound of step 1 is a body's in exact
+    // arithmetic, which a flat body's flip nears (|ω̇|/|ω|² up to 1/√3) and a real gyroscope's
+    // gain and cross-axis errors or a derivative over uneven steps exceed for a while; Euler's
+    // equations with the fitted inertia, not that bound, say where the flight ends.
+    if (threshold > 0.0)
+      for (std::size_t k = 0; k < kept.size(); ++k) {
+        auto& [first, last] = kept[k];
+        const int low = k > 0 ? kept[k - 1].second + 1 : 0;
+        const int high = k + 1 < kept.size() ? kept[k + 1].first - 1 : n - 1;
+        int begin = 0, end = n;
+        for (const auto& [b, e] : segs)
+          if (first >= b && first < e) begin = b, end = e;
+        const auto free_at = [&](int i) {
+          return !clipped[i] && omega[i].norm() >= settings.flight_omega &&
+                 torque_residual(I, omega[i], rate[i]) <= threshold;
+        };
+        while (first - 1 >= std::max(low, begin) && free_at(first - 1)) --first;
+        while (last + 1 <= std::min(high, end - 1) && free_at(last + 1)) ++last;
+      }
+    // Two stretches grown into each other within a segment are one flight (the bound of step 1
+    // had cut it); a pause or a gap still parts them.
+    const auto segment_of = [&](int i) {
+      for (std::size_t s = 0; s < segs.size(); ++s)
+        if (i >= segs[s].first && i < segs[s].second) return s;
+      return segs.size();
+    };
+    std::vector<std::pair<int, int>> merged;
+    for (const auto& stretch : kept)
+      if (!merged.empty() && merged.back().second + 1 >= stretch.first &&
+          segment_of(merged.back().second) == segment_of(stretch.first))
+        merged.back().second = stretch.second;
+      else
+        merged.push_back(stretch);
+    kept = merged;
+    return kept;
   };
-  std::vector<std::pair<int, int>> merged;
-  for (const auto& stretch : kept)
-    if (!merged.empty() && merged.back().second + 1 >= stretch.first &&
-        segment_of(merged.back().second) == segment_of(stretch.first))
-      merged.back().second = stretch.second;
-    else
-      merged.push_back(stretch);
-  kept = merged;
+  std::vector<char> bridged(n, 0);
+  std::vector<std::pair<int, int>> kept = free_stretches(true, bridged);
+  // A stretch bridged into a flight is kept only where the flight it makes is a rigid body's
+  // free flight (rigid_bridge): else its flights are those found without bridging.
+  std::optional<std::vector<std::pair<int, int>>> unbridged;
+  std::vector<std::pair<int, int>> checked;
+  for (const auto& [first, last] : kept) {
+    if (std::find(bridged.begin() + first, bridged.begin() + last + 1, 1) ==
+            bridged.begin() + last + 1 ||
+        rigid_bridge(omega, rate, clipped, bridged, first, last)) {
+      checked.emplace_back(first, last);
+      continue;
+    }
+    if (!unbridged) {
+      std::vector<char> none(n, 0);
+      unbridged = free_stretches(false, none);
+    }
+    for (const auto& [a, b] : *unbridged)
+      if (a >= first && b <= last) checked.emplace_back(a, b);
+  }
+  kept = checked;
   // 4. What was kept, and why the other moving stretches were dropped.
+  std::vector<char> moving(n);
+  for (int i = 0; i < n; ++i) moving[i] = omega[i].norm() >= settings.rest_omega;
   for (const auto& [first, last] : kept) {
     if (t[last] - t[first] < settings.min_flight || last - first + 1 < kMinFitSamples) continue;
     search.flights.push_back({first, last, t[first], t[last]});

@@ -21,6 +21,20 @@ constexpr double kBlockFactor = 4.0;
 // fit with its flips visibly mistimed (8.8 %); the gyroscope's noise (0.005–0.03 rad/s) is 10–40
 // times below a clean throw's residual, so it cannot set this one (docs/phone-lab.md, "Flags").
 constexpr double kNoFit = 0.05;
+// A rigid body's moments: the two smaller sum to at least the largest (docs/physics.md §8), here
+// less this share of it (a flat body's lies on the bound: a bare phone's 0.22 + 0.80 of 1), and
+// the smallest at least this share of the largest (rigid_restart.hpp's kNeedle).
+constexpr double kTriangleMargin = 0.02;
+constexpr double kNeedleShare = 0.1;
+// The clock test (docs/phone-lab.md, "Flags"): k1 + k2 + k3 + k1 k2 k3 measured on the samples
+// is 0 for every rigid body's free flight; a clock running at 1/f of the true rate makes it
+// k1 k2 k3 (1/f³ − 1/f). Measured: the flights of the development recordings as recorded, at
+// most 0.047 (the derivative's and the gyroscope's own errors); re-stamped 1.5× or 2×, a bare
+// phone's flights 0.16–0.17. Judged only where its σ is under kClockSigma (a stable toss's
+// ω_j ω_k stays near 0 and leaves its k poorly determined).
+constexpr double kClockMismatch = 0.1;
+constexpr double kClockSigma = 0.05;
+constexpr double kClockSignificance = 5.0;
 
 /// The flag of one toss from its residual r_i = ω_fitted − ω_measured (docs/phone-lab.md,
 /// "Flags"): 50 ms blocks' RMS against the median block and the noise at rest; empty for a
@@ -108,6 +122,72 @@ std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vec
   return {};
 }
 
+/// What the fitted body's moments `inertia` (phone frame) say where no rigid body has them: the
+/// two smaller summing to less than the largest (less kTriangleMargin of it), or a needle's
+/// (docs/physics.md §8); empty for a rigid body's.
+std::string body_flag(const Eigen::Matrix3d& inertia) {
+  const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia).eigenvalues();
+  if (!(m[2] > 0.0)) return "no rigid body has the fitted moments (not all positive)";
+  char text[240];
+  if (m[0] + m[1] < (1.0 - kTriangleMargin) * m[2] || m[0] < kNeedleShare * m[2]) {
+    std::snprintf(
+        text, sizeof text,
+        "no rigid body has the fitted moments %.3g : %.3g : 1 (%s): a hand's motion "
+        "inside the flight, or not a free flight?",
+        m[0] / m[2], m[1] / m[2],
+        m[0] < kNeedleShare * m[2] ? "a needle's" : "the two smaller sum to less than the largest");
+    return text;
+  }
+  return {};
+}
+
+/// The clock test (docs/phone-lab.md, "Flags"): Euler's equations in the fitted body's
+/// principal frame, ω̇_a = k_a ω_b ω_c − r ω_a (a, b, c cyclic; k_a = (I_b − I_c)/I_a, r a drag
+/// rate), each k_a measured by least squares on the samples' own derivative (omega_rate); every
+/// rigid body's k obey k1 + k2 + k3 + k1 k2 k3 = 0, a time scaled by f makes each k_a/f, which
+/// obey it only where k1 k2 k3 = 0 (an axisymmetric body's, whose stamps no body can check).
+/// Empty where the samples agree, or say too little.
+std::string clock_flag(const std::vector<double>& tau, const std::vector<Eigen::Vector3d>& omega,
+                       const Eigen::Matrix3d& inertia) {
+  const int n = static_cast<int>(tau.size());
+  if (n < 10) return {};
+  const Eigen::Matrix3d axes =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia).eigenvectors();
+  const std::vector<Eigen::Vector3d> rate = omega_rate(tau, omega);
+  Eigen::Vector3d k, sigma;
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    Eigen::MatrixXd A(n, 2);
+    Eigen::VectorXd y(n);
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector3d w = axes.transpose() * omega[i];
+      A(i, 0) = w[b] * w[c];
+      A(i, 1) = w[a];
+      y[i] = (axes.transpose() * rate[i])[a];
+    }
+    const Eigen::Matrix2d normal = A.transpose() * A;
+    if (!(std::abs(normal.determinant()) > 0.0)) return {};
+    const Eigen::Vector2d x = normal.ldlt().solve(A.transpose() * y);
+    const double s2 = (A * x - y).squaredNorm() / (n - 2);
+    k[a] = x[0];
+    sigma[a] = std::sqrt(s2 * normal.inverse()(0, 0));
+  }
+  const double mismatch = k.sum() + k.prod();
+  const double spread = std::sqrt(std::pow(sigma[0] * (1.0 + k[1] * k[2]), 2) +
+                                  std::pow(sigma[1] * (1.0 + k[0] * k[2]), 2) +
+                                  std::pow(sigma[2] * (1.0 + k[0] * k[1]), 2));
+  if (!std::isfinite(mismatch) || !(spread < kClockSigma) ||
+      !(std::abs(mismatch) > kClockMismatch) || !(std::abs(mismatch) > kClockSignificance * spread))
+    return {};
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "no rigid body moves as the samples do: Euler's equations measured on them give "
+                "k1 + k2 + k3 + k1 k2 k3 = %.3f ± %.3f, 0 for every rigid body: a clock running "
+                "fast or slow (stamps scaled), or not a free flight?",
+                mismatch, spread);
+  return text;
+}
+
 }  // namespace
 
 std::optional<double> rest_noise(const GyroRecording& recording, const FlightSearch& search) {
@@ -182,6 +262,8 @@ std::string toss_flag(const TossData& data, const std::vector<Eigen::Vector3d>& 
   }
   std::string flag =
       flag_of(d.tau, residual, step_torque(d.tau, d.omega, inertia), mean_omega, noise);
+  if (flag.empty()) flag = body_flag(inertia);
+  if (flag.empty()) flag = clock_flag(d.tau, d.omega, inertia);
   if (!flag.empty() && d.saturated > 0) {  // the clip named beside what the rest shows
     char text[100];
     std::snprintf(text, sizeof text,
