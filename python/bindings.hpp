@@ -82,9 +82,20 @@ py::dict exact_rows_arrays(const std::vector<jobs::ExactMotionRow>& rows, bool w
 /// held (the reading is short). InputError for a bad scene, as the command line's.
 scene::Scene scene_arg(const py::handle& scene, const py::handle& overrides);
 
-/// Python's `os.fspath(value)` for a str or an os.PathLike, else nullopt-like empty string with
-/// `ok` false.
-std::string path_text(const py::handle& value, bool& ok);
+/// Python's `os.fspath(value)` for a str or an os.PathLike as the bytes the OS takes
+/// (os.fsencode: a name os.listdir gave for bytes that are no UTF-8 is those bytes again), else
+/// an empty string with `ok` false. A lone surrogate no file's name gives (U+D800) is
+/// InputError naming `argument` (unicode_arg()'s words), never pybind11's "Unable to cast".
+std::string path_text(const py::handle& value, bool& ok, const std::string& argument);
+
+/// path_text() of a path that is opened: also a NUL is InputError naming `argument` ("holds a
+/// NUL byte at character N"), where the OS would have opened the path cut at it.
+std::string path_arg(const py::handle& value, bool& ok, const std::string& argument);
+
+/// The str `text` in UTF-8, or InputError naming `argument` where it holds a lone surrogate
+/// (U+D800 … U+DFFF, which no UTF-8 holds): `ARGUMENT: "m\ud800x" holds a lone surrogate
+/// (U+D800) at character 2: no UTF-8 text holds one`, in the npm package's words.
+std::string unicode_arg(const py::handle& text, const std::string& argument);
 
 /// A progress bar of `total` steps from tqdm (`tqdm.auto.tqdm`: a widget in a notebook, a bar on
 /// stderr in a terminal), made at the first update; none where `show` is false or tqdm cannot

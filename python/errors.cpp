@@ -16,6 +16,7 @@
 #include <memory>
 #include <new>
 #include <stdexcept>
+#include <string>
 
 #include "bindings.hpp"
 #include "render/render_error.hpp"
@@ -27,6 +28,18 @@ namespace bookspin::python {
 namespace {
 
 PyObject* error_type = nullptr;  ///< bookspin.Error
+
+/// Raises `type` with `message` (its controls escaped) read as UTF-8 with surrogateescape: a
+/// path whose name is bytes that are no UTF-8 reads as os.listdir gives it, where
+/// PyErr_SetString would raise a UnicodeDecodeError in the error's place.
+void set_error(PyObject* type, const std::string& message) {
+  const std::string text = scene::escape_controls(message);
+  PyObject* value =
+      PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "surrogateescape");
+  if (value == nullptr) return;  // MemoryError, set
+  PyErr_SetObject(type, value);
+  Py_DECREF(value);
+}
 
 }  // namespace
 
@@ -48,16 +61,15 @@ void add_errors(py::module_& m) {
     } catch (const Interrupted&) {
       PyErr_SetNone(PyExc_KeyboardInterrupt);
     } catch (const InputError& e) {
-      PyErr_SetString(error_type, scene::escape_controls(e.what()).c_str());
+      set_error(error_type, e.what());
     } catch (const OutputError& e) {
-      PyErr_SetString(PyExc_OSError, scene::escape_controls(e.what()).c_str());
+      set_error(PyExc_OSError, e.what());
     } catch (const render::RenderError& e) {
-      PyErr_SetString(PyExc_RuntimeError, scene::escape_controls(e.what()).c_str());
+      set_error(PyExc_RuntimeError, e.what());
     } catch (const video::EncoderError& e) {
-      PyErr_SetString(PyExc_RuntimeError, scene::escape_controls(e.what()).c_str());
+      set_error(PyExc_RuntimeError, e.what());
     } catch (const std::exception& e) {
-      const std::string message = "internal error: " + scene::escape_controls(e.what());
-      PyErr_SetString(PyExc_RuntimeError, message.c_str());
+      set_error(PyExc_RuntimeError, std::string("internal error: ") + e.what());
     }
   });
 }

@@ -125,7 +125,7 @@ py::dict chart_arrays(const fit::TossChart& chart) {
 /// The recording argument: a path read as the command line reads it, or a (t, omega) pair.
 fit::GyroRecording recording_arg(const py::object& recording) {
   bool is_path = false;
-  const std::string path = path_text(recording, is_path);
+  const std::string path = path_arg(recording, is_path, "recording");
   if (is_path) return fit::pool_recordings({fit::read_recording(path)});
   if (!py::isinstance<py::tuple>(recording) && !py::isinstance<py::list>(recording))
     throw InputError("recording: expected a path or a (t, omega) pair of arrays, got " +
@@ -135,7 +135,8 @@ fit::GyroRecording recording_arg(const py::object& recording) {
   std::vector<fit::GyroRecording> several;
   for (const py::handle item : pair) {
     bool item_is_path = false;
-    const std::string item_path = path_text(py::reinterpret_borrow<py::object>(item), item_is_path);
+    const std::string item_path =
+        path_arg(py::reinterpret_borrow<py::object>(item), item_is_path, "recording");
     if (!item_is_path) break;
     several.push_back(fit::read_recording(item_path));
   }
@@ -162,7 +163,7 @@ fit::FitRequest request_arg(const std::string& drag, const py::object& tosses,
   const fit::FitOptionNames names = fit::fit_option_names(request.reader);
   request.settings.drag = fit::parse_drag_option(drag, names.drag);
   if (py::isinstance<py::str>(tosses)) {
-    request.tosses = fit::parse_toss_ranges(tosses.cast<std::string>(), names.tosses);
+    request.tosses = fit::parse_toss_ranges(unicode_arg(tosses, names.tosses), names.tosses);
   } else if (!tosses.is_none() && py::len(tosses) > 0) {
     const std::vector<double> ends = matrix_arg(tosses, names.tosses, -1, 2);
     for (std::size_t i = 0; i + 1 < ends.size(); i += 2)

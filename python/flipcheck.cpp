@@ -35,7 +35,7 @@ fs::path scenario_dir(const py::object& directory) {
   py::object dir = directory;
   if (dir.is_none()) dir = py::module_::import("bookspin").attr("flipcheck").attr("scenario_dir");
   bool ok = false;
-  const std::string text = path_text(dir, ok);
+  const std::string text = path_arg(dir, ok, "directory");
   if (!ok) throw InputError("directory: expected a path (str or os.PathLike)");
   return text;
 }
@@ -55,7 +55,7 @@ std::vector<std::string> scenario_names(const fs::path& dir) {
 /// ends in .toml, in any case, or holds a '/'), read as `bookspin flipcheck` reads it.
 scene::Scene scenario_scene(const py::object& scenario, const py::object& directory) {
   bool ok = false;
-  const std::string text = path_text(scenario, ok);
+  const std::string text = path_text(scenario, ok, "scenario");
   if (!ok) throw InputError("scenario: expected a name or a path, got a non-str");
   if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
     throw InputError("scenario: holds a NUL byte at character " + std::to_string(nul + 1) +
@@ -80,7 +80,7 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
 /// line reads it.
 analysis::Scenario judged_scenario(const py::object& scenario, const py::object& directory) {
   bool ok = false;
-  const std::string text = path_text(scenario, ok);
+  const std::string text = path_text(scenario, ok, "scenario");
   if (ok && text.find('\0') == std::string::npos && products::is_scenario_json(text))
     return analysis::scenario_from_json(read_text_file(text, "the scenario file"), text);
   return analysis::scenario_of(scenario_scene(scenario, directory));
@@ -235,7 +235,7 @@ std::string motion_name_of(const py::object& motion) {
   if (!py::isinstance<py::str>(motion))
     throw InputError("flipcheck.judge: motion: expected a name (str), got " +
                      std::string(py::str(py::type::of(motion).attr("__name__"))));
-  const std::string name = motion.cast<std::string>();
+  const std::string name = unicode_arg(motion, "flipcheck.judge: motion");
   for (const char ch : name)
     if (ch == '\0' || ch == '\n' || ch == '\r')
       throw InputError(std::string("flipcheck.judge: motion: a name holds ") +

@@ -46,7 +46,7 @@ while it renders.)";
 std::string render(const py::object& scene_input, const py::object& out,
                    const py::object& overrides, bool png, bool progress) {
   bool ok = false;
-  const std::string out_dir = path_text(out, ok);
+  const std::string out_dir = path_arg(out, ok, "out");
   if (!ok)
     throw InputError("out: expected a folder's path (str or os.PathLike), got " +
                      std::string(py::str(py::type::handle_of(out).attr("__name__"))));

@@ -22,7 +22,9 @@
 // Bad input (a scenario that is missing, not a regular file (a FIFO, a device: refused before it
 // is opened) or that `bookspin flipcheck judge` refuses, in its words;
 // an unknown option) and a missing npm package get one line, exit 2, with nothing written;
-// --check says only whether the packages are there.
+// --check says only whether the packages are there. An OUT that is no folder (a regular file, a
+// FIFO, a device such as /dev/full) or a motion that cannot be written: one line naming it,
+// `cannot write "OUT": reason`, exit 1, as npx says it (the npm package's makeOutputFolder).
 //
 // Usage: node web/flipcheck-engines.mjs [--check] [--refine K] [--only NAME,...] [--flipcheck DIR] OUT SCENARIO.json...
 //   --flipcheck DIR (or FLIPCHECK_PACKAGE=DIR): the npm package flipcheck (`make npm`:
@@ -34,7 +36,7 @@
 //   --only NAME,...: only the engines whose motion name (without the version) is listed, e.g.
 //     babylonjs-havok,jolt-physics+gyroscopic.
 import { createHash } from 'node:crypto';
-import { existsSync, mkdirSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
@@ -123,9 +125,23 @@ const reader = async () => {
   const index = join(flipcheck, 'index.mjs');
   if (!existsSync(index)) refuse(`${flipcheck}: no npm package flipcheck there (no index.mjs; make npm builds BUILD/npm/package)`);
   const files = await import(pathToFileURL(join(flipcheck, 'files.mjs')).href);
-  return [(await import(pathToFileURL(index).href)).readScenario, files.notAFileReason];
+  return [(await import(pathToFileURL(index).href)).readScenario, files.notAFileReason,
+    files.makeOutputFolder, files.readReason];
 };
-const [readScenario, notAFileReason] = await reader();
+const [readScenario, notAFileReason, makeOutputFolder, readReason] = await reader();
+/** An output that cannot be written: one line naming it, exit 1 (npx's words and status). */
+const cannotWrite = (path, why) => {
+  console.error(`flipcheck-engines: error: cannot write "${path}": ${why}`);
+  process.exit(1);
+};
+/** writeFileSync, or the one line naming `path` and exit 1 (a full disk, /dev/full). */
+const write = (path, text) => {
+  try {
+    writeFileSync(path, text);
+  } catch (e) {
+    cannotWrite(path, { ENOSPC: 'No space left on device', EACCES: 'Permission denied' }[e.code] ?? e.message);
+  }
+};
 /** A scenario file's JSON read by the one reader, or its one line naming the file. Only a
  * regular file is opened (a FIFO with no writer or a device is refused, never waited on). */
 const scenarioOf = (file) => {
@@ -135,7 +151,7 @@ const scenarioOf = (file) => {
     if (why) refuse(`${file}: ${why}`);
     text = readFileSync(file, 'utf8');
   } catch (e) {
-    refuse(`${file}: ${e.code === 'ENOENT' ? 'no such file' : e.message}`);
+    refuse(`${file}: ${readReason(e)}`);
   }
   try {
     return readScenario(text, file);
@@ -159,7 +175,8 @@ if (existsSync(manifestPath) && readFileSync(manifestPath, 'utf8') === manifest 
   process.exit(0);
 }
 
-mkdirSync(out, { recursive: true });
+const notAFolder = makeOutputFolder(out);
+if (notAFolder) cannotWrite(out, notAFolder);
 rmSync(manifestPath, { force: true });
 for (const f of readdirSync(out)) if (f.endsWith('.csv')) rmSync(join(out, f));
 havok.wasmBinary = readFileSync(join(WEB, 'node_modules', '@babylonjs', 'havok', 'lib', 'esm', 'HavokPhysics.wasm'));
@@ -196,8 +213,8 @@ for (const [file, s] of parsed) {
     }
     run.dispose();
     const name = `${s.scenario}-${motionName(engine)}.csv`;
-    writeFileSync(join(out, name), lines.join('\n') + '\n');
+    write(join(out, name), lines.join('\n') + '\n');
     console.log(`${basename(file)}: ${engine.label}: ${lines.length - 1} rows (stride ${stride}) -> ${name}`);
   }
 }
-writeFileSync(manifestPath, manifest);
+write(manifestPath, manifest);

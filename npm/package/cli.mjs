@@ -6,9 +6,9 @@
 // its one line on stderr; 1 when an output cannot be written; 70 for a bug). SCENARIO is
 // a scenario's name (flipcheck's scenarios()) or a scenario JSON that `export` wrote. Unlike the
 // command line it keeps no manifest: it judges and writes every time.
-import { linkSync, lstatSync, mkdirSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
+import { linkSync, lstatSync, readFileSync, renameSync, rmSync, statSync, writeFileSync } from "node:fs";
 import { basename } from "node:path";
-import { notAFileReason } from "./files.mjs";
+import { makeOutputFolder, notAFileReason, readReason } from "./files.mjs";
 import { exportFiles, judgeCsv, readScenario, scenario, scenarios, version } from "./index.mjs";
 
 const USAGE = `usage: flipcheck judge SCENARIO MOTION.csv... [-o DIR]
@@ -49,8 +49,7 @@ function readText(path, what, { bytes = false } = {}) {
     return bytes ? readFileSync(path) : readFileSync(path, "utf8");
   } catch (e) {
     if (e instanceof InputError) throw e;
-    const reason = e.code === "ENOENT" ? "no such file" : e.code === "EACCES" ? "Permission denied" : e.message;
-    throw new InputError(`${path}: cannot read ${what}: ${reason}`);
+    throw new InputError(`${path}: cannot read ${what}: ${readReason(e)}`);
   }
 }
 
@@ -59,8 +58,8 @@ function readText(path, what, { bytes = false } = {}) {
 function scenarioArg(arg) {
   // One route per file: its extension read in any case, as the command line and Python read it.
   if (!scenarios().includes(arg) && (/\.json$/i.test(arg) || arg.includes("/")))
-    return readScenario(readText(arg, "the scenario file"), arg);
-  return scenario(arg); // a name, or the package's one line for no such name (the name cut)
+    return readScenario(readText(arg, "the scenario file"), String(arg));
+  return scenario(String(arg)); // a name, or the package's one line for no such name (the name cut)
 }
 
 /** The reason an OS call failed, as bookspin words it (strerror's text): "Is a directory". */
@@ -141,12 +140,11 @@ function writeTogether(files) {
   for (const { aside } of placed) if (aside) rmSync(aside, { force: true });
 }
 
+/** The output folder made where missing (files.mjs, makeOutputFolder: the engines' runner's
+ * check too); OutputError `cannot write "DIR": reason` where it is no folder. */
 function makeDir(dir) {
-  try {
-    mkdirSync(dir, { recursive: true });
-  } catch (e) {
-    throw new OutputError(`cannot write "${dir}": ${e.message}`);
-  }
+  const why = makeOutputFolder(dir);
+  if (why) throw new OutputError(`cannot write "${dir}": ${why}`);
 }
 
 /** The output folder `dir` given with `option`: an empty name is bad input (exit 2), not a
@@ -156,7 +154,32 @@ function given(option, dir) {
   return dir;
 }
 
+/** The arguments `args` (process.argv after the command) as the OS gave them: node decodes argv
+ * as UTF-8, each byte that is no UTF-8 becoming U+FFFD, so a file named in another encoding
+ * (Latin-1's "caf\xe9.csv") could not be opened by its decoded name and was "no such file",
+ * where the command line opens it. Where an argument holds U+FFFD, its bytes are read back from
+ * /proc/self/cmdline (Linux) as a Buffer, which node's fs opens; elsewhere it stays as given. */
+function osArguments(args) {
+  if (!args.some((a) => a.includes("\uFFFD"))) return args;
+  let cmdline;
+  try {
+    cmdline = readFileSync("/proc/self/cmdline");
+  } catch {
+    return args;
+  }
+  const words = [];
+  for (let start = 0, i = 0; i < cmdline.length; ++i)
+    if (cmdline[i] === 0) {
+      words.push(cmdline.subarray(start, i));
+      start = i + 1;
+    }
+  const ours = words.slice(words.length - args.length);
+  if (ours.length !== args.length) return args;
+  return args.map((a, i) => (a.includes("\uFFFD") && ours[i].toString("utf8") === a ? ours[i] : a));
+}
+
 function parse(args) {
+  const raw = osArguments(args);
   const positional = [];
   let out = "out/flipcheck";
   for (let i = 0; i < args.length; ++i) {
@@ -169,7 +192,7 @@ function parse(args) {
       console.log(USAGE);
       process.exit(0);
     } else if (a.startsWith("-") && a !== "-") throw new InputError(`${a}: unknown option (${USAGE.split("\n")[0]})`);
-    else positional.push(a);
+    else positional.push(raw[i]);
   }
   return { positional, out };
 }
@@ -181,7 +204,9 @@ function judgeCommand(args) {
   const spec = scenarioArg(scenarioPath);
   if (!files.length) throw new InputError("flipcheck judge: nothing to judge: give MOTION files");
   // Every file read and judged before anything is written: a bad one is its one line.
-  const judged = files.map((file) => judgeCsv(spec, readText(file, "the motion file", { bytes: true }), { file, motion: basename(file) }));
+  // A file named in bytes that are no UTF-8 (a Buffer, osArguments) is opened by its bytes and
+  // named by their UTF-8 reading, each such byte as U+FFFD.
+  const judged = files.map((file) => judgeCsv(spec, readText(file, "the motion file", { bytes: true }), { file: String(file), motion: basename(String(file)) }));
   const name = spec.scenario;
   // Each judgement's CSV is its header line and its row; the row may span lines (a file name
   // holding a line break, in double quotes): everything after the header is the row.
@@ -190,7 +215,7 @@ function judgeCommand(args) {
   const target = inside(out, `${name}-judge.csv`);
   makeDir(out);
   writeTogether([[target, csv]]);
-  judged.forEach((j, i) => console.log(`${name} ${files[i]}: ${j.line}`));
+  judged.forEach((j, i) => console.log(`${name} ${String(files[i])}: ${j.line}`));
   console.log(`wrote: ${target}`);
   return judged.every((j) => j.pass) ? 0 : EXIT_JUDGED_FAIL;
 }

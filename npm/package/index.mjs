@@ -26,6 +26,19 @@ function answer(result) {
   return result;
 }
 
+/** `text` as the WebAssembly may take it, or an Error naming `argument` where it holds a lone
+ * surrogate (U+D800 … U+DFFF without its other half, which no UTF-8 holds): emscripten's UTF-8
+ * encoder took it and the character after it as one pair ("m\ud800x" written "m\u{10078}").
+ * In the Python module's words (python/scene_input.cpp, unicode_arg), the character counted in
+ * code points as Python counts it. */
+function wellFormed(text, argument) {
+  if (typeof text !== "string") return text;
+  const at = text.search(/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/);
+  if (at < 0) return text;
+  const code = text.charCodeAt(at).toString(16).toUpperCase();
+  throw new Error(`${argument}: ${JSON.stringify(text)} holds a lone surrogate (U+${code}) at character ${[...text.slice(0, at)].length + 1}: no UTF-8 text holds one`);
+}
+
 /** The names of the seven scenarios, sorted. */
 export function scenarios() {
   return [...NAMES];
@@ -195,7 +208,7 @@ function flat(values, name) {
 export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {}) {
   const s = spec(name);
   const { text, file } = scenarioText(s);
-  return judgement(answer(wasm.judgeArrays(text, file, scenarioSha256(s), flat(t, "t"), flat(q, "q"), flat(omegaWorld, "omegaWorld"), "judge", motion)));
+  return judgement(answer(wasm.judgeArrays(text, file, scenarioSha256(s), flat(t, "t"), flat(q, "q"), flat(omegaWorld, "omegaWorld"), "judge", wellFormed(motion, "flipcheck.judge: motion"))));
 }
 
 /** Judges a motion CSV's text, or its bytes (a Uint8Array: a Buffer as readFileSync gives it, read
@@ -204,8 +217,9 @@ export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {
 export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}) {
   const s = spec(name);
   const scenarioJson = scenarioText(s);
-  const csv = text instanceof Uint8Array ? text : String(text);
-  return judgement(answer(wasm.judgeCsv(scenarioJson.text, scenarioJson.file, scenarioSha256(s), csv, file, motion)));
+  const csv = text instanceof Uint8Array ? text : wellFormed(String(text), "flipcheck.judgeCsv: text");
+  return judgement(answer(wasm.judgeCsv(scenarioJson.text, scenarioJson.file, scenarioSha256(s), csv,
+    wellFormed(file, "flipcheck.judgeCsv: file"), wellFormed(motion, "flipcheck.judgeCsv: motion"))));
 }
 
 /** The in-process equivalent of `npx flipcheck judge`'s exit status for a test runner: judges

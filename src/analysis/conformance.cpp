@@ -1,5 +1,6 @@
 #include "analysis/conformance.hpp"
 
+#include "analysis/judgement.hpp"
 #include "analysis/scenario_file.hpp"
 #include "common/errors.hpp"
 #include "common/sha256.hpp"
@@ -24,6 +25,14 @@ Scenario scenario_of(const scene::Scene& scene) {
     throw InputError(
         scene.source.string() + ": flipcheck: model.drag: a scenario is torque-free; " +
         "give the scene without drag (render, simulate, plot and explore show a " + "damped toss)");
+  }
+  // The scene's name (scene.name, or its file's name) is the scenario's: a scene's name takes
+  // a letter of any script, a scenario's ASCII alone; said at the key that gives it, the name
+  // as it reads (the scene reader took it: UTF-8, no control character).
+  if (const std::string why = scenario_name_problem(scene.name); !why.empty()) {
+    throw InputError(scene.source.string() + ": flipcheck: scene.name \"" + scene.name +
+                     "\" cannot name a scenario: it " + why +
+                     "; give the scene a scene.name of that kind");
   }
   Scenario s;
   s.name = scene.name;

@@ -58,6 +58,11 @@ static std::string printable(const std::string& text) {
 }
 
 std::string scenario_name_problem(const std::string& name) {
+  // The rule, said in every refusal of a name it does not take: a letter of another script is
+  // a letter, but not in a scenario's name.
+  static const std::string rule =
+      " (a scenario's name is ASCII letters, digits, '-', '_' and '.', the first a letter or a "
+      "digit: a name every engine's tools write as a file's name)";
   if (name.empty()) return "is empty";
   if (name.size() > ScenarioLimits::max_name)
     return "is " + std::to_string(name.size()) + " characters long (at most " +
@@ -65,18 +70,19 @@ std::string scenario_name_problem(const std::string& name) {
   const auto alnum = [](char ch) {
     return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9');
   };
-  if (!alnum(name.front())) return "must start with a letter or a digit";
   for (std::size_t i = 0; i < name.size(); ++i) {
     const char ch = name[i];
-    if (alnum(ch) || ch == '-' || ch == '_' || ch == '.') continue;
+    if (alnum(ch) || (i > 0 && (ch == '-' || ch == '_' || ch == '.'))) continue;
     const unsigned code = static_cast<unsigned char>(ch);
-    char shown[16];
-    if (code < 0x20 || code >= 0x7f)
+    char shown[48];
+    if (code >= 0x80)
+      std::snprintf(shown, sizeof shown, "a character beyond ASCII (byte 0x%02x)", code);
+    else if (code < 0x20 || code == 0x7f)
       std::snprintf(shown, sizeof shown, "byte 0x%02x", code);
     else
       std::snprintf(shown, sizeof shown, "'%c'", ch);
-    return std::string("holds ") + shown + " at character " + std::to_string(i + 1) +
-           " (a name is letters, digits, '-', '_' and '.')";
+    return std::string(i == 0 ? "starts with " : "holds ") + shown + " at byte " +
+           std::to_string(i + 1) + rule;
   }
   return "";
 }

@@ -283,10 +283,27 @@ std::string scenario_file(const Scenario& scenario) {
   return json_text(json, "flipcheck scenario", JsonLayout::indented) + "\n";
 }
 
+namespace {
+
+/// Whether the NUL bytes of `text` say it is no text: a UTF-16 byte-order mark (FF FE, FE FF),
+/// or NUL in one byte of 8 or more (UTF-16's ASCII is every other byte; a binary file's many).
+bool nuls_say_no_text(std::string_view text) {
+  if (text.size() >= 2 &&
+      ((text[0] == '\xff' && text[1] == '\xfe') || (text[0] == '\xfe' && text[1] == '\xff')))
+    return true;
+  const auto nuls = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\0'));
+  return nuls * 8 >= text.size();
+}
+
+}  // namespace
+
 Scenario scenario_from_json(std::string_view text, const std::string& file) {
   // A file saved as UTF-16 (or no text at all) is said to be so, as a scene or a recording is,
-  // not "a control character" where its first NUL byte stands.
-  if (const auto nul = nul_byte_problem(text)) throw InputError(file + ": " + *nul);
+  // not "a control character" where its first NUL byte stands; a NUL or two in a text (one
+  // typed into a string) is the JSON reader's to name, a control character at its line and
+  // column.
+  if (const auto nul = nul_byte_problem(text); nul && nuls_say_no_text(text))
+    throw InputError(file + ": " + *nul);
   const Json json = JsonReader(text, file).document();
   if (json.kind != Json::Kind::object)
     throw InputError(file + ": holds " +

@@ -71,7 +71,12 @@ int run_cli(int argc, char** argv) {
   }
   const int status = run_guarded([&] {
     for (const Subcommand& subcommand : subcommands)
-      if (cli.got_subcommand(subcommand.app)) return subcommand.run();
+      if (cli.got_subcommand(subcommand.app)) {
+        const int code = subcommand.run();
+        // What it printed reached the standard output, or exit 1 naming it (`> /dev/full`).
+        flush_standard_output();
+        return code;
+      }
     return static_cast<int>(kExitOk);
   });
   // A run that stops without its outputs (an interrupt, an error) takes back the folders it

@@ -47,7 +47,8 @@ Subcommand add_gallery(CLI::App& cli) {
       "gallery", "Write OUT_DIR/index.html listing each scene's clip, poster frame and plot");
   cmd->add_option("OUT_DIR", options.out_dir,
                   "Folder holding the rendered clips; the page goes there")
-      ->required();
+      ->required()
+      ->check(no_empty_output("a directory", "give . for the current folder"));
   cmd->add_option(
          "SCENES", options.scene_paths,
          "Scene files (TOML); the page orders them (paper figures first, see docs/outputs.md)")

@@ -1,5 +1,3 @@
-#include <cerrno>
-#include <cstring>
 #include <iostream>
 #include <string>
 
@@ -13,18 +11,6 @@
 namespace bookspin::cli {
 
 namespace {
-
-/// Flushes the standard output; an OutputError naming it where a line could not be written
-/// (`bookspin info > /dev/full`: exit 1, not 0 with everything lost).
-void flush_standard_output() {
-  errno = 0;
-  std::cout.flush();
-  if (!std::cout) {
-    const int error = errno;
-    throw OutputError(std::string("cannot write the standard output: ") +
-                      (error != 0 ? std::strerror(error) : "the write failed"));
-  }
-}
 
 /// Prints the FFmpeg set-up and the faces and options every text is drawn with (no GL needed:
 /// printed, and flushed, before the EGL/GL set-up is asked, which fails without an EGL driver),

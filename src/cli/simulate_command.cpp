@@ -61,7 +61,8 @@ Subcommand add_simulate(CLI::App& cli) {
   cmd->add_option("--set", options.overrides, kSetHelp)->take_all()->allow_extra_args(false);
   cmd->add_option("--csv", options.csv_path,
                   "Output CSV, one row per frame (frame 0 = initial state); '-' for stdout")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(no_empty_output("a file name", "'-' for the standard output"));
   return {cmd, [stored] { return simulate_command(*stored); }};
 }
 

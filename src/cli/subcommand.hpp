@@ -32,6 +32,16 @@ void add_freshness_flags(CLI::App* cmd, bool& force, bool& verify, const std::st
 /// an empty name (leave it out for DEFAULT)", never a failed write to "".
 CLI::Option* add_out_option(CLI::App* cmd, std::string& out_dir, const std::string& help);
 
+/// A validator that refuses an empty name for an output that is not -o (gallery's OUT_DIR,
+/// simulate's --csv): bad input (exit 2) "NAME: expected WHAT, got an empty name (HINT)", as
+/// add_out_option words it, never a failed write to "" or a write into the current folder.
+CLI::Validator no_empty_output(const std::string& what, const std::string& hint);
+
+/// Flushes the standard output; an OutputError naming it where anything printed could not be
+/// written (`bookspin fit … > /dev/full`: exit 1, not 0 with every line lost). Called after
+/// every command (cli.cpp), and by info before it asks for the GL set-up.
+void flush_standard_output();
+
 /// `--frames N` is `--set time.frames=N`, after the user's own --set (so it wins); N = 0: not
 /// given, nothing appended.
 void frames_as_override(int frames, std::vector<std::string>& overrides);

@@ -2,8 +2,11 @@
 
 #include <utf8proc.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <vector>
 
 namespace bookspin {
 namespace {
@@ -135,6 +138,49 @@ bool starts_with_letter_or_digit(std::string_view text) {
     default:
       return false;
   }
+}
+
+Utf8Character utf8_character_at(std::string_view text, std::size_t at) {
+  const CodePoint cp = code_point_at(text, at);
+  return {cp.length == 0 ? U'\0' : static_cast<char32_t>(cp.value), cp.length};
+}
+
+bool shows_as_itself(char32_t c) {
+  if (c == U' ') return true;
+  if (c > 0x10ffff) return false;
+  switch (utf8proc_category(static_cast<utf8proc_int32_t>(c))) {
+    case UTF8PROC_CATEGORY_CN:
+    case UTF8PROC_CATEGORY_CC:
+    case UTF8PROC_CATEGORY_CF:
+    case UTF8PROC_CATEGORY_CS:
+    case UTF8PROC_CATEGORY_CO:
+    case UTF8PROC_CATEGORY_ZS:
+    case UTF8PROC_CATEGORY_ZL:
+    case UTF8PROC_CATEGORY_ZP:
+      return false;
+    default:
+      return true;
+  }
+}
+
+std::string invisible_characters(std::string_view text) {
+  std::string named;
+  std::vector<utf8proc_int32_t> seen;
+  for (std::size_t at = 0; at < text.size();) {
+    const CodePoint cp = code_point_at(text, at);
+    if (cp.length == 0) {
+      ++at;
+      continue;
+    }
+    at += cp.length;
+    if (cp.value < 0x80 || shows_as_itself(static_cast<char32_t>(cp.value))) continue;
+    if (std::find(seen.begin(), seen.end(), cp.value) != seen.end()) continue;
+    seen.push_back(cp.value);
+    char code[16];
+    std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(cp.value));
+    named += (named.empty() ? "" : ", ") + std::string(code);
+  }
+  return named;
 }
 
 }  // namespace bookspin

@@ -33,4 +33,23 @@ std::string file_name_problem(std::string_view name);
 /// Whether `text` starts with a letter or a digit of any script (Unicode's L* and N*).
 bool starts_with_letter_or_digit(std::string_view text);
 
+/// The character (code point) that starts at byte `at` of `text` and its length in bytes;
+/// length 0 where no valid UTF-8 sequence starts there (a stray byte, a cut sequence).
+struct Utf8Character {
+  char32_t code = 0;
+  std::size_t length = 0;
+};
+Utf8Character utf8_character_at(std::string_view text, std::size_t at);
+
+/// Whether `c` shows as itself in one line: a letter, mark, digit, punctuation or symbol of any
+/// script, or U+0020; not a control, a format character (the marks of direction, the
+/// zero-width joiners), another space (U+2009 THIN SPACE), a line or paragraph separator.
+bool shows_as_itself(char32_t c);
+
+/// The characters of `text` (UTF-8) that do not show as themselves but look like nothing or
+/// like a plain space, each once in order as "U+2009", joined by ", " ("U+2009, U+200F"): what
+/// a copy from a document brings into a number or a name. "" where there are none; the ASCII
+/// controls are left to the escapes of the line that quotes `text`.
+std::string invisible_characters(std::string_view text);
+
 }  // namespace bookspin

@@ -13,6 +13,7 @@ std::string not_a_file_reason(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
+  if (ec && ec.value() == ELOOP) return kLinkLoop;
   if (!fs::exists(status)) return "no such file";
   if (fs::is_regular_file(status)) return "";
   if (fs::is_directory(status)) return "is a directory";

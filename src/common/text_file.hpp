@@ -12,8 +12,12 @@ namespace bookspin {
 
 /// Why `path` cannot be read as a file, or "" when it is a regular file: "no such file", "is a
 /// directory", "is a FIFO, not a regular file", "is a device, not a regular file", "is a
-/// socket, not a regular file", "not a regular file". Never throws.
+/// socket, not a regular file", "not a regular file", kLinkLoop. Never throws.
 std::string not_a_file_reason(const std::filesystem::path& path);
+
+/// The words for a path whose symbolic links lead round in a loop (ELOOP), said alike at every
+/// door (the command line, Python, npx and the engines' runner: npm/package/files.mjs).
+inline constexpr const char* kLinkLoop = "its symbolic links make a loop";
 
 /// The bytes of the regular file `path`, or std::nullopt when there are none to read: not a
 /// regular file ("no such file", "is a directory", "not a regular file"), or the file cannot

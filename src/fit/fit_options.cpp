@@ -8,6 +8,7 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "common/file_name.hpp"
 #include "common/number_text.hpp"
 #include "fit/fit_tables.hpp"
 #include "fit/recording.hpp"
@@ -21,6 +22,18 @@ std::string quoted_and(const std::string& text, const char* why) {
   std::string line = "\"";
   line.append(text).append("\" ").append(why);
   return line;
+}
+
+/// "is not a number", naming the invisible characters `text` holds (a thin space, a mark of
+/// direction a copy from a document brings: "0.75\u2009" looks like "0.75 "), which the quoted
+/// text alone does not show.
+std::string not_a_number(const std::string& text) {
+  const std::string invisible = invisible_characters(text);
+  if (invisible.empty()) return "is not a number";
+  const bool one = invisible.find(',') == std::string::npos;
+  return "is not a number: it holds " + invisible +
+         (one ? ", a character that shows" : ", characters that show") +
+         " as nothing or as a space (type the number again)";
 }
 
 std::string trimmed_part(const std::string& part) {
@@ -56,7 +69,7 @@ std::vector<std::pair<double, double>> read_ranges(const std::string& text, std:
       const std::optional<double> value = read_number(given);
       if (!value) {
         error = beyond_doubles(given) ? quoted_and(given, "is ") + kBeyondDoubles
-                                      : quoted_and(given, "is not a number");
+                                      : quoted_and(given, not_a_number(given).c_str());
         return {};
       }
       ends[i] = *value;
@@ -146,7 +159,7 @@ Eigen::Vector3d parse_moments(const std::string& text, const std::string& option
       throw InputError(option + ": \"" + parts[static_cast<std::size_t>(i)] + "\" is " +
                        (beyond_doubles(parts[static_cast<std::size_t>(i)])
                             ? std::string(kBeyondDoubles) + ": not a positive finite number"
-                            : std::string("not a number")));
+                            : not_a_number(parts[static_cast<std::size_t>(i)]).substr(3)));
     moments[i] = *value;
   }
   check_moments(moments, option);

@@ -353,6 +353,24 @@ GyroRecording parse_gyro_csv(std::string_view text, const std::string& file,
   check_quotes_closed(header, {}, header_line, file);
   const std::optional<LabelledHeader> labelled = labelled_gyro_header(header);
   const bool phyphox = is_phyphox_gyro_header(header);
+  if (!phyphox && !is_plain_header(header) && !labelled) {
+    // A quote left open in the header's line (an odd count: the cell it opens swallowed the
+    // separator after it) is the cause, not the names it garbled: named as in a data row.
+    const std::string_view header_text = header_in_comment ? comment->second : head;
+    const auto quotes = std::count(header_text.begin(), header_text.end(), '"');
+    if (quotes % 2 == 1) {
+      std::string garbled;  // the first name that holds a separator or a quote
+      for (const std::string& cell : header)
+        if (garbled.empty() &&
+            cell.find_first_of(std::string("\"") + separator) != std::string::npos)
+          garbled = cell;
+      throw InputError(file, header_line, "header",
+                       "a quote left open: the line holds " + std::to_string(quotes) +
+                           " quotes, one without its partner" +
+                           (garbled.empty() ? std::string()
+                                            : ", and reads as the name " + quoted_cell(garbled)));
+    }
+  }
   if (!phyphox && !is_plain_header(header) && !labelled)
     throw InputError(file, header_line, "header",
                      separator == ' '

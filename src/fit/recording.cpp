@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -111,7 +112,9 @@ GyroRecording read_recording(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
-  if (!fs::exists(status)) throw InputError(path.string() + ": no such file or folder");
+  if (!fs::exists(status))
+    throw InputError(path.string() + ": " +
+                     (error.value() == ELOOP ? kLinkLoop : "no such file or folder"));
   if (fs::is_directory(status)) {
     const fs::path raw = path / "Raw Data.csv";
     if (fs::exists(raw)) return read_recording(raw);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "analysis/accuracy.hpp"
@@ -190,6 +191,29 @@ TEST(Conformance, AComparisonOrABodyAtRestIsNoScenario) {
                InputError);
   EXPECT_NO_THROW(scenario_of(scene::parse_scene_text(
       "[initial]\nangular_velocity = [0, 0, 0]\njiggle = 0.01\n", "jiggled.toml")));
+}
+
+// A scene named in another script (scene.name = "回転", or "my scenario" from its file's name)
+// is refused naming the scene's file and scene.name, the name as it reads and the rule a
+// scenario's name follows; never "must start with a letter or a digit" (回 is a letter).
+TEST(Conformance, ASceneNamedInAnotherScriptIsToldSceneNameAndTheRule) {
+  const std::string spin = "[initial]\nangular_velocity = [1, 0.01, 0]\n";
+  for (const auto& [text, file, name] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"[scene]\nname = \"\xe5\x9b\x9e\xe8\xbb\xa2\"\n" + spin, "kaiten.toml",
+            "\xe5\x9b\x9e\xe8\xbb\xa2"},
+           {spin, "my scenario.toml", "my scenario"}}) {
+    try {
+      scenario_of(scene::parse_scene_text(text, file));
+      ADD_FAILURE() << name << " taken";
+    } catch (const InputError& e) {
+      const std::string said = e.what();
+      EXPECT_NE(said.find(file + ": flipcheck: scene.name \"" + name + "\" cannot name a scenario"),
+                std::string::npos)
+          << said;
+      EXPECT_NE(said.find("a scenario's name is ASCII letters, digits"), std::string::npos) << said;
+    }
+  }
 }
 
 // A scenario is the torque-free spin: a scene with air drag (docs/physics.md §21) is refused,

@@ -299,7 +299,9 @@ TEST(Judgement, AScenarioNameIsLettersDigitsDashUnderscoreAndDot) {
     ADD_FAILURE() << "../escaped taken";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "flipcheck: scenario name \"../escaped\" must start with a letter or a digit");
+              "flipcheck: scenario name \"../escaped\" starts with '.' at byte 1 (a scenario's "
+              "name is ASCII letters, digits, '-', '_' and '.', the first a letter or a digit: a "
+              "name every engine's tools write as a file's name)");
   }
   s.name = std::string("a\nb", 3);
   try {
@@ -374,6 +376,23 @@ TEST(Judgement, OneMotionsRowIsTheCommandLinesRowReadBackCellByCell) {
   }
   EXPECT_FALSE(judgement_row(s, sha, turned, name).pass);
   EXPECT_TRUE(judgement_row(s, sha, exact_rows(s, 1), name).pass);
+}
+
+// A name in another script is refused stating the true rule (ASCII), not "must start with a
+// letter" (回 is one) nor a bare byte; at the scene door (scenario_of) naming scene.name, the
+// name as it reads.
+TEST(Judgement, ANameInAnotherScriptIsToldTheRuleAndTheSceneKey) {
+  for (const std::string& name : {std::string("\xe5\x9b\x9e\xe8\xbb\xa2"),
+                                  std::string("b\xc3\xbck-\xcf\x89"), std::string("my scenario")}) {
+    const std::string why = scenario_name_problem(name);
+    EXPECT_NE(why.find("a scenario's name is ASCII letters, digits"), std::string::npos) << why;
+    EXPECT_EQ(why.find("must start with a letter"), std::string::npos) << why;
+  }
+  EXPECT_NE(scenario_name_problem("b\xc3\xbck")
+                .find("holds a character beyond ASCII (byte 0xc3) "
+                      "at byte 2"),
+            std::string::npos);
+  EXPECT_NE(scenario_name_problem("my scenario").find("holds ' ' at byte 3"), std::string::npos);
 }
 
 }  // namespace

@@ -47,5 +47,30 @@ TEST(ScenarioFile, AKeyGivenTwiceCountsItsLastValueAndEscapesReadAsTheirCharacte
   }
 }
 
+// A NUL typed into a string is named where it stands, a control character at its line and
+// column, as any other; only a file whose NULs say it is no text (UTF-16, binary) is said to be
+// so (it was "not a text file" for one NUL in a name).
+TEST(ScenarioFile, ANulInAStringIsAControlCharacterAtItsLineAndColumn) {
+  const std::string nul_in_name = std::string("{\"scenario\": \"bo") + '\0' + "x\",\n \"mass\": 2}";
+  std::string said;
+  try {
+    scenario_from_json(nul_in_name, "nul.json");
+  } catch (const InputError& e) {
+    said = e.what();
+  }
+  EXPECT_NE(said.find("a control character"), std::string::npos) << said;
+  EXPECT_NE(said.find("line 1, column 17"), std::string::npos) << said;
+  EXPECT_EQ(said.find("not a text file"), std::string::npos) << said;
+  // UTF-16 (every other byte a NUL) is still said to be so.
+  std::string utf16 = "\xff\xfe";
+  for (const char c : std::string(kBox)) utf16 += std::string(1, c) + '\0';
+  try {
+    scenario_from_json(utf16, "le.json");
+    ADD_FAILURE() << "UTF-16 taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a text file"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace bookspin::analysis

@@ -30,7 +30,10 @@ A screen reader: the lab's live region (aria-live polite, inside its dialog) say
 through …", "fitting …", the result's first line and an error (flights by hand "2:1"), and the
 focus stays on the control it was on.
 Kept across a reload (IndexedDB): the list and each download the same after a reload; a page
-refused IndexedDB says the list is not kept across a reload.
+refused IndexedDB says the list is not kept across a reload. A reload in the middle of a
+recording: the samples so far kept by the next page, unticked, and said (once). A corrupt or
+foreign row in the store skipped and named, the others listed; a store at a later version (a
+newer page's) named so, not blamed on the browser.
 The smaller ones: "stops after (s)" given 1 is held to its minimum of 2; on a landscape phone
 (844x390) Stop and the live trace are in view while recording; Back after "Play beside the
 measurement" returns to the lab, its result as it was.
@@ -405,6 +408,96 @@ def check_kept_across_reload(driver, page, first):
         driver.execute_cdp_cmd("Page.removeScriptToEvaluateOnNewDocument", {"identifier": script["identifier"]})
 
 
+def store_rows(driver):
+    """Every row of the lab's IndexedDB store, as the page's store gives them."""
+    return driver.execute_async_script("""const done = arguments[0];
+        const r = indexedDB.open('bookspin-lab');
+        r.onsuccess = () => { const db = r.result;
+          const q = db.transaction('recordings').objectStore('recordings').getAll();
+          q.onsuccess = () => { db.close(); done(q.result); }; };
+        r.onerror = () => done(null);""")
+
+
+def reloaded(driver):
+    """The page reloaded, ready, the lab open, the sensor overridden again."""
+    driver.refresh()
+    if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+        fail("the reloaded page never became ready")
+    tap(driver, "labOpen")
+
+
+def check_reload_while_recording(driver, page, first):
+    """A reload in the middle of a recording (or a phone that reloads the tab it put in the
+    background): the samples recorded are kept by the next page, unticked and not fitted, and
+    it says so; nothing was lost without a word."""
+    t1, w1 = first
+    fresh(driver, page)
+    start_recording(driver, "reload", w1[0])
+    feed_at_own_rate(driver, t1[:300], w1[:300])
+    time.sleep(1.2)  # at least one write of the recording in progress after the last reading
+    reloaded(driver)
+    listed = wait_for(driver, "return window.explorer.labRecordings()", bool, 10)
+    said = state_line(driver)
+    # All but the last write's worth (LIVE_MS, 1 s) of what was recorded: the readings fed and
+    # the wait after them, at the rate the page measured.
+    recorded = t1[299] - t1[0] + 1.2
+    if len(listed) != 1 or listed[0]["ticked"] or \
+            listed[0]["samples"] < listed[0]["rate"] * (recorded - 1.5):
+        fail(f"after a reload mid-recording the list is {listed} ({recorded:.1f} s recorded)")
+    if "cut short before this page loaded" not in said or listed[0]["name"] not in said:
+        fail(f"after a reload mid-recording the page said {said!r}")
+    # Said once: the next page lists it without saying it again, and no row in progress is left.
+    reloaded(driver)
+    if kept(driver) != listed or "cut short" in state_line(driver):
+        fail(f"a second reload: {kept(driver)}, {state_line(driver)!r}")
+    if any(r["id"] == 0 or "cut" in r for r in store_rows(driver)):
+        fail(f"the store after the recording was said: {store_rows(driver)}")
+    print(f"reload while recording: {listed[0]['name']} ({listed[0]['samples']} samples); {said}")
+
+
+def check_corrupt_rows(driver, page, first):
+    """A corrupt or foreign row in the store (an older page's, a write cut by a crash) is skipped
+    and named, the others listed; a store at a later version (a newer page's) is named so, not
+    blamed on the browser."""
+    t1, w1 = first
+    fresh(driver, page)
+    start_recording(driver, "corrupt", w1[0])
+    feed_at_own_rate(driver, t1[:200], w1[:200])
+    tap(driver, "labClose")
+    good = kept(driver)
+    # Two bad rows beside the good one: an older page's (its time not an ISO time) and a write
+    # cut short (a name alone).
+    driver.execute_async_script("""const done = arguments[0];
+        const r = indexedDB.open('bookspin-lab', 1);
+        r.onsuccess = () => { const db = r.result; const tx = db.transaction('recordings', 'readwrite');
+          const s = tx.objectStore('recordings');
+          s.put({id: 90, name: 'older.csv', when: 'yesterday', samples: 5, rate: 50, text: 't,wx\\n', ticked: false});
+          s.put({id: 91, name: 'cut.csv'});
+          tx.oncomplete = () => { db.close(); done(true); }; };""")
+    reloaded(driver)
+    listed = wait_for(driver, "return window.explorer.labRecordings()", bool, 10)
+    note = driver.execute_script("return document.getElementById('labRecordKept').textContent")
+    if listed != good:
+        fail(f"with two bad rows in the store the list is {listed}, expected {good}")
+    if not note.startswith("kept in this browser") or "skipped 2 rows" not in note or \
+            "id 90 (its time is not a time)" not in note or "id 91 (no text" not in note:
+        fail(f"with two bad rows in the store the note is {note!r}")
+    print(f"corrupt rows: {note}")
+    # A newer page's store (version 2): named so.
+    driver.execute_async_script("""const done = arguments[0];
+        const r = indexedDB.open('bookspin-lab', 2);
+        r.onupgradeneeded = () => {};
+        r.onsuccess = () => { r.result.close(); done(true); };
+        r.onerror = () => done(false);""")
+    reloaded(driver)
+    note = wait_for(driver, "return document.getElementById('labRecordKept').textContent", bool, 10)
+    if "store at version 2" not in note or "newer copy of this page" not in note or "no storage" in note:
+        fail(f"a store at version 2: {note!r}")
+    print(f"a newer store: {note}")
+    driver.execute_async_script("""const done = arguments[0];
+        const r = indexedDB.deleteDatabase('bookspin-lab'); r.onsuccess = r.onerror = r.onblocked = () => done(true);""")
+
+
 POOL = ("12-13-01", "12-13-51", "12-22-44")
 #: The CPU slowed as a school Chromebook is (issue: no frame for 7-15 s during a pooled fit).
 CHROMEBOOK = 6
@@ -627,6 +720,8 @@ def main():
                   "address": lambda: check_fitted_toss_address(driver, page),
                   "announced": lambda: check_announced(driver, page, first),
                   "kept": lambda: check_kept_across_reload(driver, page, first),
+                  "reload": lambda: check_reload_while_recording(driver, page, first),
+                  "corrupt": lambda: check_corrupt_rows(driver, page, first),
                   "smaller": lambda: check_smaller(driver, page, first),
                   "worker": lambda: check_fit_in_worker(driver, page, folder, out),
                   "back": lambda: check_back_after_play(driver, page, folder, out)}

@@ -143,6 +143,21 @@ def check_refusals(node, source, scenario):
         os.mkfifo(fifo)
         refused(node, runner, [out, fifo], [f"{fifo}: is a FIFO, not a regular file"], out)
         refused(node, runner, [out, "/dev/zero"], ["/dev/zero: is a device, not a regular file"], out)
+        # An output that is no folder (a regular file, a FIFO, /dev/full): one line naming it,
+        # exit 1, in npx's words (the npm package's makeOutputFolder), nothing run or written;
+        # mkdirSync's EEXIST was a stack trace and exit 7.
+        blocker = tmp / "a-file"
+        blocker.write_text("kept\n")
+        for target, what in ((blocker, "is a regular file"), (fifo, "is a FIFO"),
+                             (Path("/dev/full"), "is a device")):
+            r = subprocess.run([str(node), str(runner), str(target), str(scenario)],
+                               capture_output=True, text=True, timeout=300)
+            said = f'flipcheck-engines: error: cannot write "{target}": {what}, not a folder\n'
+            if r.returncode != 1 or r.stderr != said or r.stdout:
+                fail(f"output {target}: exit {r.returncode}, expected 1 and {said!r}:\n"
+                     f"{r.stdout}{r.stderr}")
+        if blocker.read_text() != "kept\n":
+            fail(f"{blocker}: changed by a refused run")
 
 
 def main():

@@ -240,5 +240,52 @@ TEST(BadInputs, AnEmptyOutputFolderIsBadInputAtEveryCommandThatWritesOne) {
   }
 }
 
+// An empty output that is no -o is bad input too: gallery's positional OUT_DIR (it wrote into
+// the current folder, exit 0) and simulate's --csv (exit 1, "cannot rename temporary into
+// place"): exit 2, one line naming the option and what to give instead, nothing written.
+TEST(BadInputs, AnEmptyPositionalOrFileOutputIsBadInput) {
+  ScratchDir dir;
+  const std::string scene = scene_path("fig09-matrix-unstable-x");
+  for (const auto& [args, said] : std::vector<std::pair<std::string, std::string>>{
+           {"gallery '' " + scene,
+            "OUT_DIR: expected a directory, got an empty name (give . for the current folder)"},
+           {"simulate " + scene + " --csv ''",
+            "--csv: expected a file name, got an empty name ('-' for the standard output)"}}) {
+    std::string out;
+    const int status = run_shell(
+        "cd " + quoted(dir.path()) + " && " + std::string(BOOKSPIN_EXE) + " " + args + " 2>&1",
+        out);
+    EXPECT_EQ(status, 2) << args << "\n" << out;
+    EXPECT_EQ(out, "bookspin: error: " + said + " (see bookspin --help)\n") << args;
+    EXPECT_TRUE(fs::is_empty(dir.path())) << args;
+  }
+}
+
+// A standard output that cannot be written (/dev/full) is a failed write at every command that
+// prints its results: exit 1 naming it, never exit 0 with every line lost (fit did so; info
+// alone checked). One check after every command (cli.cpp, flush_standard_output).
+TEST(FailedWrites, AFullStandardOutputIsExitOneAtEveryCommandThatPrints) {
+  ScratchDir dir;
+  const std::string source = BOOKSPIN_SOURCE_DIR;
+  const std::string kit = source + "/scenes/flipcheck/mujoco-test-box.toml";
+  for (const std::string& args : std::vector<std::string>{
+           "fit " + quoted(fs::path(source) / "recordings" / "phone-on-book-synthetic") + " -o " +
+               quoted(dir.path() / "fit"),
+           "simulate " + scene_path("fig09-matrix-unstable-x") + " --set time.frames=3",
+           "inertia " + quoted(fs::path(source) / "scenes" / "long-box.obj") + " --mass 1",
+           "flipcheck export " + kit + " -o " + quoted(dir.path() / "kit"),
+           "gallery " + quoted(dir.path() / "gallery") + " " +
+               scene_path("fig09-matrix-unstable-x")}) {
+    std::string said;
+    const int status = run_shell(std::string(BOOKSPIN_EXE) + " " + args + " 2>&1 >/dev/full", said);
+    EXPECT_EQ(status, 1) << args << "\n" << said;
+    EXPECT_NE(said.find("bookspin: error: cannot write the standard output: No space left on "
+                        "device\n"),
+              std::string::npos)
+        << args << "\n"
+        << said;
+  }
+}
+
 }  // namespace
 }  // namespace bookspin::cli

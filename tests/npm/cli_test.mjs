@@ -7,7 +7,7 @@
 //   its extension in any case is read as a scenario JSON, as the command line and Python read it.
 import assert from "node:assert/strict";
 import { spawnSync } from "node:child_process";
-import { mkdirSync, mkdtempSync, readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, statSync, symlinkSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { test } from "node:test";
@@ -123,6 +123,44 @@ test("what is no regular file is refused before it is read, in the command line'
     assert.equal(run.stderr, `flipcheck: error: ${said}\n`);
   }
   assert.deepEqual(readdirSync(room).sort(), ["kit", "m.csv", "s.json"]);
+});
+
+test("an output folder that is no folder (a regular file, a FIFO, /dev/full): one line naming it, exit 1", () => {
+  // The engines' runner makes the same check (files.mjs, makeOutputFolder) in the same words
+  // (tests/browser/flipcheck_engines_test.py); mkdirSync's own EEXIST named no kind.
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  writeFileSync(join(room, "a-file"), "kept\n");
+  assert.equal(spawnSync("mkfifo", [join(room, "a-fifo")]).status, 0);
+  const cases = [["a-file", "is a regular file"], ["a-fifo", "is a FIFO"], ["/dev/full", "is a device"]];
+  for (const [out, what] of cases) {
+    const run = spawnSync(process.execPath, [cli, "export", "mujoco-test-box", "-o", out], { cwd: room, encoding: "utf8", timeout: 30000 });
+    assert.equal(run.status, 1, `${out}: ${run.error ?? run.stderr}`);
+    assert.equal(run.stderr, `flipcheck: error: cannot write "${out}": ${what}, not a folder\n`);
+    assert.equal(run.stdout, "");
+  }
+  assert.deepEqual(readdirSync(room).sort(), ["a-fifo", "a-file"]);
+  assert.equal(readFileSync(join(room, "a-file"), "utf8"), "kept\n");
+});
+
+test("a motion file whose name is no UTF-8 is judged, as the command line judges it", () => {
+  // node reads argv as UTF-8, Latin-1's byte 0xe9 becoming U+FFFD: "no such file" for a file that
+  // is there. Its bytes are read back from /proc/self/cmdline.
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  assert.equal(npx(room, "export", "mujoco-test-box", "-o", "kit").status, 0);
+  const motion = readFileSync(join(room, "kit", "mujoco-test-box-exact.csv"));
+  writeFileSync(Buffer.concat([Buffer.from(`${room}/caf`), Buffer.from([0xe9]), Buffer.from(".csv")]), motion);
+  const run = spawnSync("sh", ["-c", `exec "$0" "$1" judge mujoco-test-box "$(printf 'caf\\351.csv')" -o out`, process.execPath, cli],
+    { cwd: room, encoding: "utf8", timeout: 60000 });
+  assert.equal(run.status, 0, run.stderr);
+  assert.match(run.stdout, /^mujoco-test-box caf\uFFFD\.csv: PASS/);
+});
+
+test("a loop of symbolic links is said so, in the command line's words", () => {
+  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+  symlinkSync(join(room, "loop.csv"), join(room, "loop.csv"));
+  const run = npx(room, "judge", "mujoco-test-box", "loop.csv", "-o", "out");
+  assert.equal(run.status, 2, run.stderr);
+  assert.equal(run.stderr, "flipcheck: error: loop.csv: cannot read the motion file: its symbolic links make a loop\n");
 });
 
 test("an empty output folder (--out=) is bad input: exit 2, nothing written", () => {

@@ -252,6 +252,22 @@ test("judge takes flat arrays or rows and names BigInts; a judgement's columns a
   assert.match(refusal(() => f.judge(NAME)), /./);
 });
 
+test("a lone surrogate is refused naming its argument, never joined to the next character", () => {
+  // emscripten's UTF-8 encoder took U+D800 and the "x" after it as one pair: the label "m\ud800x"
+  // came back "m\u{10078}". The Python module says the same line (tests/python/test_same_answer.py);
+  // a pair stays one character.
+  const m = f.exactMotion(NAME);
+  const arrays = { t: m.t, q: m.q, omegaWorld: m.omegaWorld };
+  assert.equal(refusal(() => f.judge(NAME, arrays, { motion: "m\ud800x" })),
+    'flipcheck.judge: motion: "m\\ud800x" holds a lone surrogate (U+D800) at character 2: no UTF-8 text holds one');
+  assert.equal(refusal(() => f.judge(NAME, arrays, { motion: "\u{1F600}\udc00" })),
+    'flipcheck.judge: motion: "\u{1F600}\\udc00" holds a lone surrogate (U+DC00) at character 2: no UTF-8 text holds one');
+  assert.equal(f.judge(NAME, arrays, { motion: "m\u{1F600}x" }).motion, "m\u{1F600}x");
+  const csv = "t,qw,qx,qy,qz,wx_world,wy_world,wz_world\n";
+  assert.equal(refusal(() => f.judgeCsv(NAME, csv, { file: "a\udbffb.csv" })),
+    'flipcheck.judgeCsv: file: "a\\udbffb.csv" holds a lone surrogate (U+DBFF) at character 2: no UTF-8 text holds one');
+});
+
 test("assertPasses returns a pass and throws node's AssertionError with judge's line for a fail", () => {
   const m = f.exactMotion(NAME);
   const passed = f.assertPasses(NAME, { t: m.t, q: m.q, omegaWorld: m.omegaWorld });

@@ -11,7 +11,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, symlinkSync, mkdirSync } from 'node:fs';
+import { mkdtempSync, readdirSync, readFileSync, rmSync, symlinkSync, mkdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 
@@ -31,14 +31,26 @@ process.on('exit', () => rmSync(work, { recursive: true, force: true }));
 // headers would shadow emscripten's), as web/build-wasm.sh does.
 mkdirSync(join(work, 'include'));
 symlinkSync('/usr/include/boost', join(work, 'include', 'boost'));
+// The options' reader names an invisible character by its code point through the file-name
+// rule's utf8proc (src/common/file_name.cpp), Debian's source as the page's build takes it
+// (web/build-wasm-deps.sh).
+const utf8proc = readdirSync(join(source, 'web/deb-src')).find((d) => d.startsWith('utf8proc-'));
+if (!utf8proc) {
+  console.log('web/deb-src/utf8proc-*: missing (scripts/install-deps.sh fetches Debian\'s source)');
+  process.exit(process.env.CI === 'true' ? 1 : 77);
+}
+const utf8procDir = join(source, 'web/deb-src', utf8proc);
+execFileSync('emcc', ['-O1', '-DUTF8PROC_STATIC', '-c', join(utf8procDir, 'utf8proc.c'), '-o', join(work, 'utf8proc.o')],
+  { stdio: 'inherit', env: { ...process.env, NODE_PATH: process.env.NODE_PATH || '/usr/share/nodejs' } });
 const page = join(work, 'page.js');
 execFileSync('em++', [
   '-std=c++20', '-O1', '-DNDEBUG', `-I${join(source, 'src')}`, '-I/usr/include/eigen3',
   '-isystem', join(work, 'include'), '-fexceptions', '-sSINGLE_FILE=1', '-sENVIRONMENT=node',
   '-sEXIT_RUNTIME=1',
+  '-DUTF8PROC_STATIC', '-isystem', utf8procDir,
   ...['tests/web/option_doors_page.cpp', 'src/fit/fit_options.cpp', 'src/common/number_text.cpp',
-    'src/common/errors.cpp', 'src/physics/drag.cpp'].map((f) => join(source, f)),
-  '-o', page], { stdio: 'inherit', env: { ...process.env, NODE_PATH: process.env.NODE_PATH || '/usr/share/nodejs' } });
+    'src/common/errors.cpp', 'src/common/file_name.cpp', 'src/physics/drag.cpp'].map((f) => join(source, f)),
+  join(work, 'utf8proc.o'), '-o', page], { stdio: 'inherit', env: { ...process.env, NODE_PATH: process.env.NODE_PATH || '/usr/share/nodejs' } });
 const answer = (option, text) =>
   execFileSync(process.execPath, [page, option, text], { encoding: 'utf8' }).trim();
 

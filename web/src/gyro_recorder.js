@@ -7,7 +7,7 @@
 // is fitted here: this module reads the sensor, draws the live trace and writes the CSV.
 import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas } from './plots.js';
-import { keptStore } from './kept_store.js';
+import { LIVE_ID, keptRows, keptStore } from './kept_store.js';
 import { tossId } from './class_outbox.js';
 
 const $ = (id) => document.getElementById(id);
@@ -293,6 +293,9 @@ export const AFTER_STOP_MS = 600;
 
 /** ms between two drawings of the live trace while recording. */
 export const TRACE_MS = 100;
+/** How often the recording in progress is written to the store (ms): a reload loses at most
+ * this much of it. */
+export const LIVE_MS = 1000;
 
 /** The local time `d` as a file name's stamp, YYYY-MM-DD-hh-mm-ss (the phone's own clock). */
 export function localStamp(d) {
@@ -330,16 +333,25 @@ export class TossRecorder {
     this.source.onError = (line) => this.finish(line);
     this.lag = new PageLag();
     this.timer = 0;
-    // The recordings of earlier visits, where the browser keeps them (IndexedDB).
+    // The recordings of earlier visits, where the browser keeps them (IndexedDB): a row this
+    // page cannot read (an older page's, a write cut by a crash) skipped and named, the others
+    // listed; the recording a reload cut short (the row in progress) kept and said.
     this.store = keptStore().then((store) => store.all().then((rows) => {
-      const earlier = rows.map((r) => ({ ...r, when: new Date(r.when) })).sort((a, b) => a.id - b.id);
+      const { good, skipped } = keptRows(rows);
+      const live = good.find((r) => r.id === LIVE_ID);
+      const earlier = good.filter((r) => r.id !== LIVE_ID).map((r) => ({ ...r, when: new Date(r.when) })).sort((a, b) => a.id - b.id);
       this.kept = [...earlier, ...this.kept.filter((k) => !earlier.some((e) => e.id === k.id))];
       this.nextId = Math.max(this.nextId, ...this.kept.map((k) => k.id + 1));
-      this.storage = 'kept in this browser across reloads until you remove them (or clear the site\'s data)';
+      if (live) this.kept.push({ ...live, id: this.nextId++, when: new Date(live.when), ticked: false, toss: tossId(), cut: 'the page was reloaded or left while it recorded' });
+      this.storage = 'kept in this browser across reloads until you remove them (or clear the site\'s data)' +
+        (skipped.length ? `; skipped ${skipped.length === 1 ? 'a row' : `${skipped.length} rows`} of the store that ${skipped.length === 1 ? 'is' : 'are'} no recording this page reads: ${skipped.join(', ')}` : '');
       this.list();
+      this.sayCut(store);
       return store;
     })).catch((e) => {
-      this.storage = `not kept across a reload: this browser gives the page no storage (${(e && e.message) || e}); download the ones to keep`;
+      this.storage = e && e.name === 'StoreVersionError'
+        ? `not kept across a reload: ${e.message}; download the ones to keep`
+        : `not kept across a reload: this browser gives the page no storage (${(e && e.message) || e}); download the ones to keep`;
       this.list();
       return null;
     });
@@ -347,8 +359,16 @@ export class TossRecorder {
     $('labRecord').addEventListener('click', (e) => this.tap(e));
     $('labRecordFit').addEventListener('click', () => this.fitTicked());
     document.addEventListener('visibilitychange', () => {
-      if (document.hidden) this.interrupt('the tab was hidden (a hidden page gets no readings)');
+      if (document.hidden) {
+        this.interrupt('the tab was hidden (a hidden page gets no readings)');
+        return;
+      }
+      // Back on the page: what it said when the tab was hidden was said.
+      for (const k of this.kept) if (k.cut) { delete k.cut; this.save(k); }
     });
+    // A reload or a tab left while recording: the samples so far written once more (the row in
+    // progress, written every LIVE_MS while recording), kept by the next page.
+    window.addEventListener('pagehide', () => this.saveLive());
   }
 
   get recording() { return this.phase === 'recording'; }
@@ -427,9 +447,11 @@ export class TossRecorder {
       this.timer = setTimeout(() => this.finish(''), seconds * 1000);
       this.lag.start();
       // The live trace ten times a second, not every frame: the sensor's readings come first.
+      let saved = performance.now();
       const frame = () => {
         if (!this.recording) return;
         drawTrace(this.trace(true), this.samples);
+        if (performance.now() - saved >= LIVE_MS) { saved = performance.now(); this.saveLive(); }
         setTimeout(frame, TRACE_MS);
       };
       frame();
@@ -465,9 +487,10 @@ export class TossRecorder {
     const csv = this.stopSensor();
     if (csv.samples < 10) {
       this.say(`recording stopped: ${why}; ${csv.samples} samples, too few to keep`, true);
+      this.dropLive();
       return;
     }
-    const kept = this.keep(csv, false);
+    const kept = this.keep(csv, false, document.hidden ? why : '');
     this.say(`recording stopped: ${why}; its ${csv.samples} samples are kept below as ${kept.name}, ` +
       'not fitted (tick it and tap Fit the ticked)', true);
   }
@@ -479,8 +502,9 @@ export class TossRecorder {
   finish(why) {
     if (!this.recording) return;
     const csv = this.stopSensor();
-    if (why) { this.say(`error: ${why}`, true); return; }
+    if (why) { this.say(`error: ${why}`, true); this.dropLive(); return; }
     if (csv.samples < 10) {
+      this.dropLive();
       this.say(`error: ${csv.samples} samples recorded, at least 10 are needed: record for longer ` +
         '(the result and the recordings before it stand)', true);
       return;
@@ -495,19 +519,54 @@ export class TossRecorder {
     this.fitKept([...others, kept]);
   }
 
-  /** `csv` kept in the list as a new recording (`ticked` or not), its download made. */
-  keep(csv, ticked) {
-    const when = new Date();
+  /** The file name of a recording `csv` stopped at `when`: the local time, the API, the rate,
+   * a number added where the list holds the name already. */
+  fileName(csv, when) {
     const kind = this.source.api === GYROSCOPE_API ? 'gyroscope' : 'devicemotion';
     let name = `toss-${localStamp(when)}-${kind}-${Math.round(csv.rate)}Hz.csv`;
     for (let n = 2; this.kept.some((k) => k.name === name); ++n)
       name = `toss-${localStamp(when)}-${n}-${kind}-${Math.round(csv.rate)}Hz.csv`;
-    const kept = { id: this.nextId++, name, when, samples: csv.samples, rate: csv.rate, api: this.source.api, text: csv.text, ticked, toss: tossId() };
+    return name;
+  }
+
+  /** `csv` kept in the list as a new recording (`ticked` or not; `cut`: why it was cut short
+   * while the page was hidden, said again by the next page where this one is not seen again),
+   * its download made; stored in place of the row in progress. */
+  keep(csv, ticked, cut = '') {
+    const when = new Date();
+    const kept = { id: this.nextId++, name: this.fileName(csv, when), when, samples: csv.samples, rate: csv.rate, api: this.source.api, text: csv.text, ticked, toss: tossId() };
+    if (cut) kept.cut = cut;
     this.kept.push(kept);
     this.onKept(kept);
-    this.save(kept);
+    this.save(kept, true);
     this.list();
     return kept;
+  }
+
+  /** The recording in progress written to the store (the row LIVE_ID: what a reload cuts short
+   * is kept by the next page), where it has samples enough to keep. */
+  saveLive() {
+    if (!this.recording || this.samples.length < 10) return;
+    const csv = recordingCsv(this.samples, this.source.api);
+    const when = new Date();
+    const row = { id: LIVE_ID, name: this.fileName(csv, when), when: when.toISOString(), samples: csv.samples, rate: csv.rate, api: this.source.api, text: csv.text, ticked: false };
+    this.store.then((store) => store && store.put(row)).catch(() => {});
+  }
+
+  /** The row in progress removed (a recording ended with nothing to keep). */
+  dropLive() {
+    this.store.then((store) => store && store.remove(LIVE_ID)).catch(() => {});
+  }
+
+  /** Says which recordings the page found cut short (a reload, a tab left while recording) and
+   * kept, then stores them as said. */
+  sayCut(store) {
+    const cut = this.kept.filter((k) => k.cut);
+    if (!cut.length) return;
+    this.say(`${cut.length === 1 ? 'a recording' : `${cut.length} recordings`} cut short before this page loaded ` +
+      `(${[...new Set(cut.map((k) => k.cut))].join('; ')}) ${cut.length === 1 ? 'is' : 'are'} kept below as ` +
+      `${cut.map((k) => k.name).join(', ')}, not fitted (tick and tap Fit the ticked)`, true);
+    for (const k of cut) { delete k.cut; this.save(k, true, store); }
   }
 
   /** The recordings `which` fitted as one body (in the list's order); Record waits for it. */
@@ -565,10 +624,12 @@ export class TossRecorder {
     }
   }
 
-  /** `k` written to the browser's storage (where it gives the page some). */
-  save(k) {
+  /** `k` written to the browser's storage (where it gives the page some); with `settle`, in
+   * the place of the row in progress, in one transaction. */
+  save(k, settle = false, known = null) {
     const row = { id: k.id, name: k.name, when: k.when.toISOString(), samples: k.samples, rate: k.rate, api: k.api, text: k.text, ticked: k.ticked, toss: k.toss };
-    this.store.then((store) => store && store.put(row)).catch((e) => {
+    if (k.cut) row.cut = k.cut;
+    (known ? Promise.resolve(known) : this.store).then((store) => store && (settle ? store.settle(row) : store.put(row))).catch((e) => {
       this.storage = `not kept across a reload: the browser refused to store it (${(e && e.message) || e}); download the ones to keep`;
       $('labRecordKept').textContent = this.storage;
     });
