@@ -76,6 +76,7 @@ export function rowProblem(row) {
   if (typeof row.when !== 'string' || Number.isNaN(new Date(row.when).getTime())) return 'its time is not a time';
   if (typeof row.ticked !== 'boolean') return 'its tick is not true or false';
   if ('cut' in row && typeof row.cut !== 'string') return 'why it was cut short is not text';
+  if (row.toss !== undefined && typeof row.toss !== 'string') return 'its id for a class is not text';
   return '';
 }
 
