@@ -18,8 +18,6 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     url: () => location.search,
     setPlaying,
     framesDrawn: () => app.framesDrawn,
-    /** How many times the runs were built afresh (a scene, a method, a start chosen). */
-    rebuilds: () => app.rebuilds,
     /** Milliseconds spent so far in the frames' physics, 3D view, sphere, plots and readout. */
     frameCosts: () => ({ ...app.costs }),
     /** ω (body frame) of each run at time t (steps round(t/dt) from the start), in one go. */

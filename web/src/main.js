@@ -35,7 +35,7 @@ function startApp(wasm, engines) {
     runs: new Runs(wasm, space, SCENES, engines),
     view: new View3D($('view'), window.BOOKSPIN_BOOK_ART || null),
     controls: new Controls(space, SCENES, engines),
-    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, rebuilds: 0, quiet: false, uncovered: false,
+    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, quiet: false, uncovered: false,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
     readout: new Readout(),
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
@@ -63,7 +63,6 @@ function startApp(wasm, engines) {
 
   function rebuild() {
     const { state, runs } = app;
-    app.rebuilds += 1;
     $('message').textContent = runs.rebuild(state).join('; ');
     app.view.setRuns(runs.list, state.showL);
     $('overlay').style.minHeight = '';
