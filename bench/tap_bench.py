@@ -16,8 +16,15 @@ scripts, its style and layout) are printed with `--frames`, and `--trace FILE` w
 performance trace (Chrome's trace event format, for chrome://tracing or Perfetto) of the
 throttled first run's Stop, whose busiest slices per thread it prints.
 
+How the browser draws matters as much as the page here: by default WebGL, the compositor and
+the page's raster go through SwiftShader (a software GPU, as the tests with WebGL run);
+`--chromium-arg=--disable-gpu-rasterization` keeps WebGL and the compositor there but rasters
+the page's tiles on the CPU (as a phone's GPU would not be a CPU's bottleneck); `--disable-gpu`
+is the lab's browser tests' own set-up (browser.py's open_browser without webgl): software
+compositing and raster. The CSV's `switches` column says which.
+
 Usage: tap_bench.py EXPLORER_HTML [--recording CSV] [--runs 3] [--rate 4] [--trace FILE]
-           [--no-view-loop-check]
+           [--frames] [--disable-gpu] [--chromium-arg=SWITCH …] [--slow-only] [--out CSV]
 EXPLORER_HTML: a page written by `bookspin explore SCENE… -o OUT` from web/build.sh's shell
 (make bench-explorer makes one). Writes CSV (default bench/results/taps-MACHINE.csv) and prints
 the table.
@@ -204,6 +211,11 @@ def main():
     ap.add_argument("--slow-only", action="store_true", help="the slow runs alone (no table written)")
     ap.add_argument("--trace", help="a performance trace of the slow first run's Stop, written here")
     ap.add_argument("--frames", action="store_true", help="print each slow tap's long animation frames")
+    ap.add_argument("--chromium-arg", action="append", default=[],
+                    help="a Chromium switch more (repeatable), e.g. --disable-gpu-rasterization")
+    ap.add_argument("--disable-gpu", action="store_true",
+                    help="Chromium's --disable-gpu, as the lab's browser tests open it (browser.py's "
+                         "open_browser without webgl): software compositing and raster")
     ap.add_argument("--machine", default=os.environ.get("BOOKSPIN_MACHINE") or machine_slug())
     ap.add_argument("--out", help="CSV (default bench/results/taps-MACHINE.csv)")
     a = ap.parse_args()
@@ -219,8 +231,8 @@ def main():
     chromium, driver_path = find_browser()
     results = {}
     renderer = ""
-    with open_browser(chromium, driver_path, size=SIZE, webgl=True, exact_viewport=True,
-                      script_timeout=600) as driver:
+    with open_browser(chromium, driver_path, size=SIZE, webgl=not a.disable_gpu, exact_viewport=True,
+                      script_timeout=600, extra_args=a.chromium_arg) as driver:
         driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
             "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
         driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
@@ -260,7 +272,9 @@ def main():
             ms = results[(rate, control)]
             row[f"median_ms_{rate:g}x"] = shown(statistics.median(ms))
             row[f"worst_ms_{rate:g}x"] = shown(max(ms))
-        row.update(runs=a.runs, machine=machine, chromium=version, webgl=renderer, date=date)
+        switches = " ".join(["--disable-gpu"] if a.disable_gpu else ["--use-angle=swiftshader"]) + \
+            "".join(f" {x}" for x in a.chromium_arg)
+        row.update(runs=a.runs, switches=switches, machine=machine, chromium=version, webgl=renderer, date=date)
         table.append(row)
     out.parent.mkdir(parents=True, exist_ok=True)
     with open(out, "w", newline="") as f:
@@ -268,7 +282,7 @@ def main():
         w.writeheader()
         w.writerows(table)
     print(f"taps: {machine}, Chromium {version}, WebGL {renderer}, {date}; {SIZE[0]}x{SIZE[1]} touch, "
-          f"{a.runs} runs, Event Timing interaction duration (ms; <{TAP_FLOOR_MS}: under the API's least threshold)")
+          f"Chromium switches {table[0]['switches']}, {a.runs} runs, Event Timing interaction duration (ms; <{TAP_FLOOR_MS}: under the API's least threshold)")
     print(f"| control | median 1× | worst 1× | median {a.rate:g}× | worst {a.rate:g}× |")
     print("|---|---:|---:|---:|---:|")
     for row in table:

@@ -152,7 +152,7 @@ def serve(folder, address="127.0.0.1"):
 
 @contextlib.contextmanager
 def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media=False,
-                 offline=False, exact_viewport=False, profile=None, script_timeout=300):
+                 offline=False, exact_viewport=False, profile=None, script_timeout=300, extra_args=()):
     """Headless Chromium for the length of the with block; yields the Selenium driver and
     quits it after.
 
@@ -161,7 +161,8 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
     autoplay without a user gesture. offline: every request but those to 127.0.0.1 goes to a
     closed port. exact_viewport: the page's viewport set to `size` exactly through the DevTools
     protocol. profile: the user-data folder (default: a temporary one, removed after).
-    The browser's console is kept at every level: see console_errors(). A script the test
+    extra_args: more of Chromium's command-line switches (a benchmark's: without GPU
+    rasterization, say). The browser's console is kept at every level: see console_errors(). A script the test
     runs in the page may take up to `script_timeout` seconds (Selenium's default, 30 s, is
     too short for a long run of the physics on a loaded 2-core machine)."""
     from selenium import webdriver
@@ -177,6 +178,7 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
         args += ["--use-angle=swiftshader", "--enable-unsafe-swiftshader"]
     else:
         args += ["--disable-gpu"]
+    args += list(extra_args)
     if media:
         args += ["--mute-audio", "--autoplay-policy=no-user-gesture-required"]
     if offline:
