@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 SCENES := $(wildcard scenes/*.toml)
 SWEEPS := $(wildcard sweeps/*.toml)
 
-.PHONY: all deps configure build bookspin wheel npm figures test check render bench bench-explorer update-goldens clean
+.PHONY: all deps configure build bookspin wheel npm figures test check render bench bench-explorer bench-taps update-goldens clean
 all: build
 
 deps:
@@ -71,6 +71,15 @@ bench-explorer: configure
 	@if [ -z "$(EXPLORER)" ]; then \
 	  bash web/build.sh $(BUILD) && $(BUILD)/bookspin explore $(SCENES) $(SWEEPS) -o out; fi
 	$(PYTHON) bench/explorer_bench.py $(or $(EXPLORER),out/explorer.html) $(BUILD)/bookspin-bench
+
+# Each tap's interaction duration in the explorer and its lab (bench/tap_bench.py,
+# docs/performance.md "Taps"): headless Chromium at 390x844, unthrottled and the CPU slowed 4x.
+bench-taps: configure
+	cmake --build $(BUILD) -j $(JOBS) --target bookspin
+	@if [ -z "$(EXPLORER)" ]; then \
+	  bash web/build.sh $(BUILD) && $(BUILD)/bookspin explore scenes/exact-unstable-x.toml \
+	    scenes/fig09-matrix-unstable-x.toml -o out/taps; fi
+	$(PYTHON) bench/tap_bench.py $(or $(EXPLORER),out/taps/explorer.html)
 
 # Rewrites tests/golden/ from the current build (on llvmpipe, the reference) and prints, for
 # each golden, whether it is new, unchanged or changed (PSNR, share of differing pixels).

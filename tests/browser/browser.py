@@ -162,8 +162,9 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
     autoplay without a user gesture. offline: every request but those to 127.0.0.1 goes to a
     closed port. exact_viewport: the page's viewport set to `size` exactly through the DevTools
     protocol. profile: the user-data folder (default: a temporary one, removed after).
-    extra_args: more Chromium switches (the class projector's test trusts its certificate).
-    The browser's console is kept at every level: see console_errors(). A script the test
+    extra_args: more of Chromium's command-line switches (the class projector's test trusts
+    its certificate; a benchmark's: without GPU rasterization, say). The browser's console
+    is kept at every level: see console_errors(). A script the test
     runs in the page may take up to `script_timeout` seconds (Selenium's default, 30 s, is
     too short for a long run of the physics on a loaded 2-core machine)."""
     from selenium import webdriver
@@ -179,6 +180,7 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
         args += ["--use-angle=swiftshader", "--enable-unsafe-swiftshader"]
     else:
         args += ["--disable-gpu"]
+    args += list(extra_args)
     if media:
         args += ["--mute-audio", "--autoplay-policy=no-user-gesture-required"]
     if offline:

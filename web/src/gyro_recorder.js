@@ -9,6 +9,7 @@ import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas } from './plots.js';
 import { LIVE_ID, keptRows, keptStore } from './kept_store.js';
 import { tossId } from './class_outbox.js';
+import { afterPaint } from './after_paint.js';
 
 const $ = (id) => document.getElementById(id);
 /** Says `text` in the lab's live region (a screen reader reads it; focus stays where it is). */
@@ -432,12 +433,15 @@ export class TossRecorder {
     return seconds;
   }
 
+  /** Record: the button and the state line answer at once; the sensor is asked in the same
+   * tap (a browser asking permission needs the tap); the live trace's canvas is made and
+   * scrolled into view after that answer is painted (afterPaint). */
   start() {
     this.samples = [];
     this.phase = 'asking';
     this.button();
-    this.inView(this.trace(true));
     this.say('asking for the gyroscope…');
+    afterPaint().then(() => { if (this.phase === 'asking' || this.recording) this.inView(this.trace(true)); });
     this.source.start().then((api) => {
       if (this.phase !== 'asking') return;
       this.phase = 'recording';
@@ -474,7 +478,9 @@ export class TossRecorder {
     this.source.stop();
     this.lagged = this.lag.stop();
     this.button();
-    drawTrace(this.trace(true), this.samples);
+    // The trace's last drawing after the button's new words are painted.
+    const samples = this.samples;
+    afterPaint().then(() => { const canvas = $('labRecordTrace'); if (canvas) drawTrace(canvas, samples); });
     return recordingCsv(this.samples, this.source.api);
   }
 
@@ -498,7 +504,9 @@ export class TossRecorder {
   /** Stops; `why` (one of LIMITS) where the recording cannot be fitted, '' for a tap or the set
    * time: then the CSV is kept in the list, checked for its rate and fitted (with the ticked
    * ones where "fit with the ticked recordings" is on). A recording too short says so and
-   * leaves the earlier result and the list as they were. */
+   * leaves the earlier result and the list as they were. The sensor stops, the button says
+   * "fitting…" and the state line the samples at once; the list and the fit follow after that
+   * is painted (fitKept). */
   finish(why) {
     if (!this.recording) return;
     const csv = this.stopSensor();
@@ -511,12 +519,11 @@ export class TossRecorder {
     }
     const pool = $('labRecordPool').checked;
     const others = pool ? this.kept.filter((k) => k.ticked) : [];
-    const kept = this.keep(csv, true);
     // A busy page first: its fix is another (nothing else running), not a slower throw.
     const problem = busyProblem(csv, this.lagged) || rateProblem(this.samples, csv.step);
     this.say(`${csv.samples} samples through ${this.source.api}, ${csv.rate.toFixed(1)} Hz` +
       (problem ? `; warning: ${problem}` : ''), Boolean(problem));
-    this.fitKept([...others, kept]);
+    this.fitKept(others, csv);
   }
 
   /** The file name of a recording `csv` stopped at `when`: the local time, the API, the rate,
@@ -569,12 +576,17 @@ export class TossRecorder {
     for (const k of cut) { delete k.cut; this.save(k, true, store); }
   }
 
-  /** The recordings `which` fitted as one body (in the list's order); Record waits for it. */
-  fitKept(which) {
+  /** The recordings `which` fitted as one body (in the list's order), and `csv` (a recording
+   * just stopped: recordingCsv's value) kept in the list, ticked, and fitted after them; Record
+   * waits for it. The button says "fitting…" at once; the new row and the fit come after that
+   * is painted (afterPaint), a frame later. */
+  fitKept(which, csv = null) {
     this.phase = 'fitting';
     this.button();
-    const files = which.map((k) => new File([k.text], k.name, { type: 'text/csv' }));
-    return Promise.resolve(this.fit(files)).finally(() => {
+    return afterPaint().then(() => {
+      const all = csv ? [...which, this.keep(csv, true)] : which;
+      return this.fit(all.map((k) => new File([k.text], k.name, { type: 'text/csv' })));
+    }).finally(() => {
       this.phase = 'idle';
       // A tap that came while the fit held the page is older than this: it starts nothing.
       this.readyAt = Math.max(this.readyAt, performance.now());

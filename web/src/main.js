@@ -36,7 +36,7 @@ function startApp(wasm, engines) {
     runs: new Runs(wasm, space, SCENES, engines),
     view: new View3D($('view'), window.BOOKSPIN_BOOK_ART || null),
     controls: new Controls(space, SCENES, engines),
-    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, quiet: false,
+    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, quiet: false, uncovered: false,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
     readout: new Readout(),
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
@@ -103,14 +103,21 @@ function startApp(wasm, engines) {
     if (!p) address.write();
   }
 
+  /** The readout's words (t, each run's flips) as the state now has them; true where its strip
+   * grew past its bound and was laid out afresh. */
+  function readout() {
+    const grew = app.readout.draw(app.runs.list, app.state.t, timeUnit(), sceneName());
+    if (grew) fitStrip();
+    if (app.playing) { const strip = $('overlay'); strip.style.minHeight = `${strip.offsetHeight}px`; }
+  }
+
   function draw() {
     let t0 = performance.now();
     const lap = (part) => { const t1 = performance.now(); app.costs[part] += t1 - t0; t0 = t1; };
     const list = app.runs.list;
     // The readout first: its strip's height sets the view's (index.html), under whose bottom
     // the bodies' labels are placed; placed before it grew, a label ran past the view.
-    if (app.readout.draw(list, app.state.t, timeUnit(), sceneName())) fitStrip();
-    if (app.playing) { const strip = $('overlay'); strip.style.minHeight = `${strip.offsetHeight}px`; }
+    readout();
     lap('readout');
     app.view.render(list); lap('view');
     app.panels.draw(list, app.state.t, app.playing, t0, lap);
@@ -118,8 +125,14 @@ function startApp(wasm, engines) {
     app.framesDrawn += 1;
   }
 
+  /** Whether the Phone-toss lab covers the page (its dialog open over the whole window). */
+  const labCovers = () => !$('lab').hidden;
   function frame(now) {
-    if (app.quiet) { requestAnimationFrame(frame); return; }  // the lab records: nothing else
+    // The lab records, or covers the page: nothing drawn (docs/explorer.md, "Every tap
+    // answered at once"), the run behind it held where it is; the first frame after it closes
+    // (or after any tap, click or key) paints that alone, the view drawn from the next.
+    if (app.quiet || labCovers()) { app.lastFrame = null; app.uncovered = true; requestAnimationFrame(frame); return; }
+    if (app.uncovered) { app.uncovered = false; requestAnimationFrame(frame); return; }
     const t0 = performance.now();
     if (app.pacer.continue(app.runs, app.state)) {
       app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
@@ -238,7 +251,10 @@ function startApp(wasm, engines) {
     app.state = app.pacer.limit(app.state, base());
     app.controls.write(app.state);
     if (VIEW_CONTROLS.includes(id)) { app.view.pose(app.runs.list, app.state.showL, app.state.showAxes); address.write(); } else rebuild();
-    draw();
+    // The controls and the readout's words now; the view, the sphere and the plots by the frame
+    // loop, from the frame after the one that paints these (docs/explorer.md, "Every tap
+    // answered at once").
+    readout();
   });
   /** To time `target`: forwards by catching up, backwards by starting again from t = 0. */
   function seek(target) {
@@ -253,6 +269,9 @@ function startApp(wasm, engines) {
     resetCamera: () => { app.view.resetCamera(app.runs.list, app.state.showL); draw(); },
   });
   window.addEventListener('resize', resize);
+  // A tap, a click or a key: the next frame paints its answer (a button's words, a panel) alone,
+  // the view drawn from the frame after (frame(); docs/explorer.md, "Every tap answered at once").
+  for (const type of ['click', 'change', 'keydown']) window.addEventListener(type, () => { app.uncovered = true; }, { capture: true });
   // The view is what the readout's strip leaves (index.html): when the strip grows or shrinks
   // (a second method, a notice), the view is resized and the bodies framed in it again.
   let resizing = false;

@@ -14,7 +14,10 @@ export function chartCanvas(canvas, width, height) {
   const dpr = window.devicePixelRatio || 1;
   const w = canvas.clientWidth || width, h = canvas.clientHeight || height;
   canvas.width = Math.round(w * dpr); canvas.height = Math.round(h * dpr);
-  const g = canvas.getContext('2d');
+  // In software, as the panels (sphere.js, CANVAS_2D): the lab's live trace and each toss's
+  // chart through a software WebGL held the frame after Stop for seconds, the page's main
+  // thread waiting on the GPU process (docs/explorer.md, "Every tap answered at once").
+  const g = canvas.getContext('2d', CANVAS_2D);
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
   g.fillStyle = '#14161b'; g.fillRect(0, 0, w, h);
   return { g, w, h };

@@ -1,0 +1,203 @@
+#!/usr/bin/env python3
+"""Every tap answered in the first frame after it (docs/explorer.md, "Every tap answered at
+once"): in headless Chromium at a touch phone's 390x844 with WebGL on the CPU (SwiftShader),
+the CPU slowed 4x (the DevTools protocol's Emulation.setCPUThrottlingRate), each control of the
+Phone-toss lab (Record, Stop after a real recording fed through the gyroscope's sensor override
+at its own rate, a recording's tick, Fit the ticked, Remove, Close) and of the explorer (Play,
+the scene menu, the speed, the second method, "Phone-toss lab") is tapped (the menu and the
+speed by their keys) and what the page shows is read in the first animation frame after it.
+
+No clock is read: a requestAnimationFrame callback, registered by the test in the capture phase
+of the tap's event (before the page's own handlers run), runs at the next frame before its
+style, layout and paint: what the DOM holds then is what that frame paints. Asserted there:
+  - the control's visible answer is in it (the button's new words, the panel shown or gone, the
+    row removed, the tick);
+  - none of the work the tap sets off is in it: the heavier work (the recording's row made and
+    its fit asked, the trace's canvas laid out, a run rebuilt) and the 3D view, the sphere and
+    the plots drawn (window.explorer.framesDrawn(): software GL's frame is the heaviest part of
+    a paint) come in later frames. Where the page drew the view in that frame, or did the work
+    before the frame, the paint waits for it.
+bench/tap_bench.py measures the same taps' durations (docs/performance.md, "Taps").
+
+Usage: explorer_first_frame_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
+Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, or the
+real recording (../shared/recordings-real/), except under CI=true, where that is a failure.
+"""
+import csv
+import io
+from pathlib import Path
+
+from browser import (console_errors, fail, find_browser, lab_page_under_test, missing, open_browser,
+                     require, run, test_arguments, wait_for)
+from explorer_records_gyro_test import feed, feed_at_own_rate, override
+from explorer_test import load
+from taps import key, settle, tap
+
+SIZE = (390, 844)
+REAL = "dvarkian-2022-05-03/12-13-01"
+THROTTLE = 4
+
+# JavaScript: the next frame's DOM, read by a requestAnimationFrame callback registered in the
+# capture phase of the first `event` on the page from now: window.firstFrame = {answer: the
+# answer's expression then, before: the work's expression at the event, after: the work's
+# expression in that frame}.
+ARM = """
+const [event, answerSource, workSource] = arguments;
+const answer = new Function(`return (${answerSource});`), work = new Function(`return JSON.stringify(${workSource});`);
+window.firstFrame = null;
+window.addEventListener(event, () => {
+  const before = work();
+  requestAnimationFrame(() => { window.firstFrame = {answer: answer(), before, after: work()}; });
+}, {capture: true, once: true});
+"""
+
+# The work a lab's tap may set off, none of it in the first frame: the view drawn, the list's
+# rows, the fit asked (its busy line), the live trace's canvas.
+LAB_WORK = ("[window.explorer.framesDrawn(), document.querySelectorAll('#labRecordList li').length, "
+            "document.getElementById('labBusy').textContent, !!document.getElementById('labRecordTrace')]")
+# The work an explorer control may set off: the view, the sphere and the plots drawn. (A
+# control's new runs are built in its handler: the page's state, its readout and its address
+# are the new ones as soon as the change is made.)
+PAGE_WORK = "[window.explorer.framesDrawn()]"
+
+
+FAILURES = []
+
+
+def first_frame(driver, where, event, act, answer, work):
+    """`act()` (a tap or a key), the first frame after its `event` read: a failure (each said,
+    the test failed at its end) unless `answer` (a JavaScript expression) holds in it and `work`
+    (another) is as it was at the event."""
+    driver.execute_script(ARM, event, answer, work)
+    act()
+    seen = wait_for(driver, "return window.firstFrame", bool, 120)
+    if not seen:
+        fail(f"{where}: no {event} reached the page, or no frame came after it")
+    if not seen["answer"]:
+        FAILURES.append(f"{where}: the first frame after the tap does not show its answer ({answer}): "
+                        "the answer waits behind other work")
+    elif seen["before"] != seen["after"]:
+        FAILURES.append(f"{where}: the first frame after the tap holds more than its answer: {work} was "
+                        f"{seen['before']} at the tap and {seen['after']} in that frame (the paint waits for it)")
+    else:
+        print(f"{where}: answered in the first frame; the work {seen['after']} after it")
+        return
+    print(f"FAILED: {FAILURES[-1]}")
+
+
+def main():
+    bookspin, source, binary = test_arguments(__doc__)
+    chromium, driver_path = find_browser()
+    require("em++", "npm")
+    real = source.parent / "shared" / "recordings-real" / REAL / "Raw Data.csv"
+    if not real.exists():
+        real = Path("/work/shared/recordings-real") / REAL / "Raw Data.csv"
+    if not real.exists():
+        missing(f"the real recording {REAL} (../shared/recordings-real/)")
+    rows = list(csv.reader(io.StringIO(real.read_text())))[1:]
+    t = [float(r[0]) for r in rows]
+    omega = [tuple(float(c) for c in r[1:4]) for r in rows]
+    out, recordings, shots, page = lab_page_under_test(bookspin, source, binary, "explorer-first-frame")
+    # Two scenes, so that the scene menu has another to choose.
+    run([bookspin, "explore", str(source / "scenes" / "exact-unstable-x.toml"),
+         str(source / "scenes" / "fig09-matrix-unstable-x.toml"), "-o", str(out)])
+
+    with open_browser(chromium, driver_path, size=SIZE, webgl=True, exact_viewport=True) as driver:
+        driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+            "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
+        driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
+        load(driver, page)
+        driver.execute_async_script("window.explorer.labForget().then(arguments[0])")
+        driver.execute_cdp_cmd("Emulation.setCPUThrottlingRate", {"rate": THROTTLE})
+        try:
+            settle(driver, 5)
+            # The explorer's own controls.
+            first_frame(driver, "Play", "click", lambda: tap(driver, "#play"),
+                        "document.getElementById('play').textContent === 'Pause'", PAGE_WORK)
+            tap(driver, "#play")
+            settle(driver)
+
+            def menu():
+                last = driver.execute_script("const m = document.getElementById('scene'); m.focus();"
+                                             "return m.selectedIndex === m.options.length - 1")
+                key(driver, "ArrowUp" if last else "ArrowDown")
+            first_frame(driver, "the scene menu", "keydown", menu,
+                        "document.getElementById('sceneTitle').textContent === "
+                        "document.getElementById('scene').selectedOptions[0].dataset.full", PAGE_WORK)
+            settle(driver)
+
+            def speed():
+                driver.execute_script("const s = document.getElementById('speed'); s.focus(); s.select();")
+                driver.execute_cdp_cmd("Input.insertText", {"text": "3"})
+                key(driver, "Enter")
+            first_frame(driver, "the speed", "keydown", speed,
+                        "window.explorer.state().speed === 3", PAGE_WORK)
+            settle(driver)
+            first_frame(driver, "the second method", "click", lambda: tap(driver, "#compare"),
+                        "document.getElementById('compare').checked && "
+                        "!document.getElementById('model2').closest('[hidden]')", PAGE_WORK)
+            settle(driver)
+            first_frame(driver, "Phone-toss lab", "click", lambda: tap(driver, "#labOpen"),
+                        "document.getElementById('lab').open", PAGE_WORK)
+            settle(driver)
+
+            # The lab's controls, a real recording's.
+            override(driver, True)
+            feed(driver, omega[0])
+            first_frame(driver, "Record", "click", lambda: tap(driver, "#labRecord"),
+                        "document.getElementById('labRecord').disabled && "
+                        "document.getElementById('labRecordState').textContent.startsWith('asking')", LAB_WORK)
+            said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
+                            lambda s: s.startswith(("recording", "error")), 60)
+            if not said.startswith("recording"):
+                fail(f"Record: the recording did not start: {said!r}")
+            feed_at_own_rate(driver, t, omega)
+            driver.execute_script("window.explorer.before = window.explorer.labResult();")
+            first_frame(driver, "Stop", "click", lambda: tap(driver, "#labRecord"),
+                        "document.getElementById('labRecord').textContent === 'fitting…' && "
+                        "document.getElementById('labRecordState').textContent.includes('samples through')",
+                        LAB_WORK)
+            done = wait_for(driver, """const r = window.explorer.labResult();
+                return [r !== window.explorer.before, document.getElementById('labError').textContent,
+                        window.explorer.labRecorderPhase()]""", lambda s: (s[0] or s[1]) and s[2] == "idle", 300)
+            if not done[0]:
+                fail(f"Stop: the recording was not fitted: {done[1]!r}")
+            kept = driver.execute_script("return window.explorer.labRecordings()")
+            if len(kept) != 1 or not kept[0]["ticked"] or kept[0]["samples"] < 10:
+                fail(f"Stop: the list holds {kept}, not the one recording, ticked")
+            settle(driver)
+            row = "#labRecordList li:last-child"
+            first_frame(driver, "a tick", "click", lambda: tap(driver, f"{row} input[type=checkbox]"),
+                        f"!document.querySelector('{row} input[type=checkbox]').checked", LAB_WORK)
+            tap(driver, f"{row} input[type=checkbox]")
+            settle(driver)
+            driver.execute_script("window.explorer.before = window.explorer.labResult();")
+            first_frame(driver, "Fit the ticked", "click", lambda: tap(driver, "#labRecordFit"),
+                        "document.getElementById('labRecord').textContent === 'fitting…'", LAB_WORK)
+            wait_for(driver, "return window.explorer.labRecorderPhase()", lambda s: s == "idle", 300)
+            if driver.execute_script("return window.explorer.labResult() === window.explorer.before"):
+                fail("Fit the ticked: no fit shown")
+            settle(driver)
+            first_frame(driver, "Remove", "click", lambda: tap(driver, f"{row} button"),
+                        "document.querySelectorAll('#labRecordList li').length === 0",
+                        "[window.explorer.framesDrawn(), document.getElementById('labBusy').textContent]")
+            settle(driver)
+            first_frame(driver, "Close", "click", lambda: tap(driver, "#labClose"),
+                        "!document.getElementById('lab').open", PAGE_WORK)
+            settle(driver, 5)
+            drawn = driver.execute_script("const n = window.explorer.framesDrawn(); return n")
+            settle(driver, 3)
+            if driver.execute_script("return window.explorer.framesDrawn()") <= drawn:
+                FAILURES.append("Close: the 3D view is not drawn again after the lab closed")
+        finally:
+            driver.execute_cdp_cmd("Emulation.setCPUThrottlingRate", {"rate": 1})
+        errors = [e for e in console_errors(driver) if "favicon" not in e.get("message", "")]
+        if errors:
+            fail(f"console errors: {errors[:3]}")
+    if FAILURES:
+        fail(f"{len(FAILURES)} of 11 taps not answered in their first frame alone: " + "; ".join(FAILURES))
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
