@@ -180,7 +180,6 @@ def open_browser(chromium, driver_path, *, size=(1280, 1000), webgl=False, media
         args += ["--use-angle=swiftshader", "--enable-unsafe-swiftshader"]
     else:
         args += ["--disable-gpu"]
-    args += list(extra_args)
     if media:
         args += ["--mute-audio", "--autoplay-policy=no-user-gesture-required"]
     if offline:
