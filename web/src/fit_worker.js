@@ -125,7 +125,6 @@ export class FitWorker {
   }
 
   answer(m) {
-    if (!m.progress) window.tAnswer = performance.now();
     const p = this.pending;
     if (!p || m.id !== p.id) return;
     if (m.progress) { if (p.onProgress) p.onProgress(...m.progress); return; }
