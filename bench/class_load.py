@@ -23,6 +23,7 @@ web/build.sh BUILD_DIR); --browsers 0 needs neither it nor Chromium.
 """
 import argparse
 import datetime
+import shutil
 import http.client
 import json
 import os
@@ -203,6 +204,7 @@ try:
     go.wait()
 except threading.BrokenBarrierError:
     real_server.close()
+    shutil.rmtree(work, ignore_errors=True)
     sys.exit(f"class_load: a phone failed: {problems}")
 start = time.time()
 cpu_before = cpu_seconds()
@@ -213,6 +215,7 @@ end = time.time()
 cpu = cpu_seconds() - cpu_before
 peak = peak_rss_mib()
 real_server.close()
+shutil.rmtree(work, ignore_errors=True)
 
 if problems:
     sys.exit(f"class_load: {problems}")
