@@ -1,36 +1,80 @@
 """The class server under a class's load (docs/performance.md, "A class at once"): a real
-bookspin-class on 127.0.0.1, the teacher's event stream open, and N phones (plain HTTPS clients,
-default 30) each joining and posting a real recording of ../shared/recordings-real/ (in turn, each
-restamped so that no two are the same recording) at the same moment. For each toss: the seconds from its POST's start to its 201, and to the first `class`
-event that shows it (the projector's stream); then to the pooled fit that holds every toss. The
-server's CPU seconds and peak memory from /proc. Prints a table; run from the repository root:
+bookspin-class on 127.0.0.1 serving the real explorer page, the teacher's event stream open, and
+N phones (default 30) keeping a real recording of ../shared/recordings-real/ each at the same
+moment:
+  - K of them (--browsers, default 3) headless Chromium at a phone's size (390x844, touch), each
+    opening the class's address (explorer.html?class=CODE#lab), joining under a name, and
+    recording a real toss fed sample by sample at its own rate through the sensor override
+    (tests/browser/explorer_phone_in_class_test.py and explorer_records_gyro_test.py's helpers:
+    the server, its certificate trusted by its key's hash, feed, override, tap); Stop tapped at
+    the moment the plain clients post. A browser's toss is timed from the moment the page kept
+    it (the recording's `when`, new Date() in the recorder's keep: the page's wall clock, this
+    machine's) to its first appearance on the teacher's stream (time.time(): the same clock);
+  - the other N - K plain HTTPS clients, each joining and posting a real recording (the seven
+    in turn, each restamped so that no two are the same recording: the fit refuses one given
+    twice), timed from their POST's start to its 201 and to the stream.
+Then the seconds to the pooled fit that holds every toss; the server's CPU seconds and peak
+memory from /proc. Prints a table; run from the repository root:
 
-    PYTHONPATH=build/python python3 bench/class_load.py BUILD_DIR [PHONES]
+    PYTHONPATH=build/python python3 bench/class_load.py BUILD_DIR [PHONES] [--browsers K]
+
+The page is written by BUILD_DIR/bookspin explore into a scratch folder (its shell built first:
+web/build.sh BUILD_DIR); --browsers 0 needs neither it nor Chromium.
 """
+import argparse
+import datetime
+import shutil
 import http.client
 import json
 import os
 import pathlib
 import statistics
+import subprocess
 import sys
 import tempfile
 import threading
 import time
 import uuid
 
-build = pathlib.Path(sys.argv[1]).resolve()
-phones = int(sys.argv[2]) if len(sys.argv) > 2 else 30
+parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+parser.add_argument("build", type=pathlib.Path, help="the build folder (bookspin, python/)")
+parser.add_argument("phones", type=int, nargs="?", default=30, help="phones in all (default 30)")
+parser.add_argument("--browsers", type=int, default=3,
+                    help="how many of them are headless Chromium (default 3)")
+parser.add_argument("--fit-wait", type=float, default=600,
+                    help="seconds to wait for the pooled fit of every toss (default 600)")
+a = parser.parse_args()
+if not 0 <= a.browsers <= a.phones:
+    parser.error(f"--browsers must be from 0 to the phones ({a.phones})")
+build = a.build.resolve()
+phones, browsers = a.phones, a.browsers
 source = pathlib.Path(__file__).resolve().parents[1]
 os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
 os.environ["PYTHONPATH"] = os.pathsep.join([str(build / "python"),
                                             os.environ.get("PYTHONPATH", "")])
-sys.path[:0] = [str(source / "tests" / "python")]
-from class_server import REAL, Server, real_csv, restamped  # noqa: E402
+sys.path[:0] = [str(source / "tests" / "python"), str(source / "tests" / "browser")]
+from class_server import REAL, real_csv, restamped  # noqa: E402
+from browser import find_browser, open_browser, wait_for  # noqa: E402
+from explorer_phone_in_class_test import (SIZE, RealServer, open_class_page, readings,  # noqa: E402
+                                          type_into)
+from explorer_records_gyro_test import feed, feed_at_own_rate, tap  # noqa: E402
 
 names = sorted(p.name for p in REAL.iterdir() if p.is_dir())
+# The browsers' recordings: those with the app's full export (time, x, y, z in its columns).
+raw = [n for n in names if (REAL / n / "Raw Data.csv").is_file()]
 work = pathlib.Path(tempfile.mkdtemp(prefix="bookspin-class-bench-"))
-(work / "explorer.html").write_text("<!doctype html><title>explorer</title>\n")
-server = Server(work / "data", work / "explorer.html", extra=["--rate", "10000"]).start()
+page = work / "page" / "explorer.html"
+if browsers:
+    chromium, driver_path = find_browser()
+    if not (build / "web" / "explorer-shell.html").is_file():
+        sys.exit(f"class_load: no page shell in {build}/web: run web/build.sh {build} first")
+    subprocess.run([str(build / "bookspin"), "explore", str(source / "scenes" / "exact-unstable-x.toml"),
+                    "-o", str(page.parent)], check=True, stdout=subprocess.DEVNULL)
+else:
+    page.parent.mkdir(parents=True)
+    page.write_text("<!doctype html><title>explorer</title>\n")
+real_server = RealServer(source, build, page, extra=["--rate", "10000"])
+server = real_server.server
 pid = server.process.pid
 ticks = os.sysconf("SC_CLK_TCK")
 
@@ -46,7 +90,7 @@ def peak_rss_mib():
             return int(line.split()[1]) / 1024
 
 
-seen, seen_lock, fitted_all = {}, threading.Lock(), threading.Event()
+seen, seen_lock, fitted_all, last_pooled = {}, threading.Lock(), threading.Event(), [None]
 
 
 def listen():
@@ -57,64 +101,149 @@ def listen():
     for line in response:
         if not line.startswith(b"data: "):
             continue
-        now = time.monotonic()
+        now = time.time()
         state = json.loads(line[6:])
         with seen_lock:
             for student in state["students"]:
                 for toss in student["tosses"]:
                     seen.setdefault(toss["toss"], now)
-        pooled = state["pooled"]
-        if pooled["recordings"] == phones and pooled["ratios"] and not pooled["fitting"]:
+        pooled = last_pooled[0] = state["pooled"]
+        if pooled["recordings"] == phones and not pooled["fitting"] and \
+                (pooled["ratios"] or pooled["error"]):
             fitted_all.set()
             return
 
 
 listener = threading.Thread(target=listen, daemon=True)
 listener.start()
-tokens = [server.join(f"phone {i}") for i in range(phones)]
-# Each phone a recording of its own: the real ones in turn, each restamped (the same motion,
-# other samples), as the fit refuses one recording given twice.
-texts = [restamped(real_csv(names[i % len(names)]), 100.0 * i) for i in range(phones)]
-ids = [str(uuid.uuid4()) for _ in range(phones)]
-sent, answered, statuses = [0.0] * phones, [0.0] * phones, [0] * phones
-go = threading.Barrier(phones + 1)
+plain = range(browsers, phones)
+tokens = {i: server.join(f"phone {i}") for i in plain}
+# Each plain phone a recording of its own: the real ones in turn, each restamped (the same
+# motion, other samples), as the fit refuses one recording given twice. The browsers' are
+# re-timed by the browser's clock: none is one of these.
+texts = {i: restamped(real_csv(names[i % len(names)]), 100.0 * i) for i in plain}
+ids = {i: str(uuid.uuid4()) for i in plain}
+sent, answered, statuses = {}, {}, {}
+# Every phone ready (the browsers recording, their readings fed), then all at once: the plain
+# clients post and the browsers' Stop is tapped.
+go = threading.Barrier(phones + 1, timeout=900)
+recording = threading.Barrier(max(browsers, 1), timeout=600)
+# The browsers' recordings (time in s, omega in rad/s), the real ones with the app's export.
+fed = [readings(REAL / raw[b % len(raw)] / "Raw Data.csv") for b in range(browsers)]
+longest = max((t[-1] - t[0] for t, _ in fed), default=0.0)
+problems = []
 
 
 def phone(i):
     go.wait()
-    sent[i] = time.monotonic()
+    sent[i] = time.time()
     statuses[i], _ = server.post_toss(tokens[i], texts[i], name=f"toss-{i}", toss=ids[i])
-    answered[i] = time.monotonic()
+    answered[i] = time.time()
+
+
+kept_at, browser_toss, stopped_at, fed_as = {}, {}, {}, {}
+
+
+def browser_phone(b):
+    """Browser b: the class's page opened, joined, a real recording fed; Stop at the barrier;
+    the moment its page kept the toss and the toss's id."""
+    try:
+        with open_browser(chromium, driver_path, size=SIZE, exact_viewport=True,
+                          extra_args=[real_server.trust]) as driver:
+            driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
+                "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
+            driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled",
+                                   {"enabled": True, "maxTouchPoints": 5})
+            open_class_page(driver, f"{real_server.url}explorer.html?class={server.code}#lab")
+            type_into(driver, "className", f"browser {b}")
+            tap(driver, "classJoinButton")
+            said = wait_for(driver, "return document.getElementById('classState').textContent",
+                            lambda s: s.startswith("In class"), 60)
+            if not said.startswith("In class"):
+                raise RuntimeError(f"browser {b} did not join: {said!r}")
+            t, omega = fed[b]
+            # Time enough to wait for the others (the recorder's own limit: 20 s unless set).
+            driver.execute_script("document.getElementById('labRecordSeconds').value = '120'")
+            # The browsers start together, each the later the shorter its recording, so that
+            # all end at once: no reading held still at either end while it waits.
+            recording.wait()
+            time.sleep(longest - (t[-1] - t[0]))
+            feed(driver, omega[0])
+            tap(driver, "labRecord")
+            said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
+                            lambda s: s.startswith(("recording", "error")), 60)
+            if not said.startswith("recording"):
+                raise RuntimeError(f"browser {b}: the recording did not start: {said!r}")
+            feed_at_own_rate(driver, t, omega)
+            go.wait()
+            stopped_at[b] = time.time()
+            tap(driver, "labRecord")
+            kept = wait_for(driver, "return window.explorer.labRecordings()", lambda r: len(r) > 0, 120)
+            if not kept:
+                raise RuntimeError(f"browser {b}: no recording kept")
+            when = datetime.datetime.fromisoformat(kept[-1]["when"].replace("Z", "+00:00"))
+            kept_at[b] = when.timestamp()
+            fed_as[b] = f"{kept[-1]['samples']} samples at {kept[-1]['rate']:.0f} Hz"
+            browser_toss[b] = driver.execute_script("return window.explorer.labTossIds()")[kept[-1]["name"]]
+            # The page open until its toss is on the stream (its outbox sends it).
+            end = time.monotonic() + 120
+            while browser_toss[b] not in seen and time.monotonic() < end:
+                time.sleep(0.05)
+    except BaseException as error:  # noqa: B036 (the bench ends, saying which phone failed)
+        problems.append(f"browser {b}: {error!r}")
+        recording.abort()
+        go.abort()
 
 
 time.sleep(0.5)
-cpu_before = cpu_seconds()
-threads = [threading.Thread(target=phone, args=(i,)) for i in range(phones)]
+threads = [threading.Thread(target=browser_phone, args=(b,)) for b in range(browsers)]
+threads += [threading.Thread(target=phone, args=(i,)) for i in plain]
 for thread in threads:
     thread.start()
-go.wait()
-start = time.monotonic()
+try:
+    go.wait()
+except threading.BrokenBarrierError:
+    real_server.close()
+    shutil.rmtree(work, ignore_errors=True)
+    sys.exit(f"class_load: a phone failed: {problems}")
+start = time.time()
+cpu_before = cpu_seconds()
 for thread in threads:
     thread.join()
-streamed = time.monotonic()
-fit_wait = float(os.environ.get("FIT_WAIT", "600"))
-fitted = fitted_all.wait(timeout=fit_wait)
-end = time.monotonic()
+fitted = fitted_all.wait(timeout=a.fit_wait)
+end = time.time()
 cpu = cpu_seconds() - cpu_before
 peak = peak_rss_mib()
-server.stop()
+real_server.close()
+shutil.rmtree(work, ignore_errors=True)
 
-assert statuses == [201] * phones, statuses
-to_201 = [answered[i] - sent[i] for i in range(phones)]
-to_stream = [seen[ids[i]] - sent[i] for i in range(phones)]
-print(f"{phones} phones posting a real recording each at once "
-      f"({len(names)} recordings of ../shared/recordings-real/ in turn)")
-print(f"  POST to 201:              median {statistics.median(to_201):.3f} s, "
-      f"worst {max(to_201):.3f} s")
-print(f"  POST to the event stream: median {statistics.median(to_stream):.3f} s, "
-      f"worst {max(to_stream):.3f} s, within 2 s: "
-      f"{sum(t <= 2.0 for t in to_stream)}/{phones}")
-print(f"  first POST to the pooled fit of all {phones}: " +
-      (f"{end - start:.2f} s" if fitted else f"not within {fit_wait:g} s"))
+if problems:
+    sys.exit(f"class_load: {problems}")
+assert [statuses[i] for i in plain] == [201] * len(plain), statuses
+missed = [i for i in plain if ids[i] not in seen] + [f"browser {b}" for b in range(browsers)
+                                                     if browser_toss.get(b) not in seen]
+assert not missed, f"never on the stream: {missed}"
+
+
+def line(what, values):
+    return (f"  {what:<34} median {statistics.median(values):.3f} s, worst {max(values):.3f} s, "
+            f"within 2 s: {sum(v <= 2.0 for v in values)}/{len(values)}")
+
+
+print(f"{phones} phones keeping a real recording each at once: {browsers} headless Chromium, "
+      f"{len(plain)} plain HTTPS clients ({len(names)} recordings of ../shared/recordings-real/ "
+      "in turn)")
+if plain:
+    print(line("plain: POST to 201", [answered[i] - sent[i] for i in plain]))
+    print(line("plain: POST to the event stream", [seen[ids[i]] - sent[i] for i in plain]))
+if browsers:
+    print("  the browsers' recordings kept: " + "; ".join(
+        f"{raw[b % len(raw)]} as {fed_as[b]}" for b in range(browsers)))
+    print(line("browser: Stop tapped to kept", [kept_at[b] - stopped_at[b] for b in range(browsers)]))
+    print(line("browser: kept to the event stream",
+               [seen[browser_toss[b]] - kept_at[b] for b in range(browsers)]))
+print(f"  the moment all were released to the pooled fit of all {phones}: " +
+      (f"{end - start:.2f} s" if fitted else f"not within {a.fit_wait:g} s") +
+      (f" (the fit's error: {last_pooled[0]['error']})" if fitted and last_pooled[0]["error"] else ""))
 print(f"  server: {cpu:.2f} CPU seconds over {end - start:.2f} s, peak resident memory "
       f"{peak:.0f} MiB")

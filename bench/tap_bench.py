@@ -87,9 +87,10 @@ class TracingDevTools(DevTools):
 
 def session(driver):
     """The tab's one DevTools session (the sensor overrides' and the trace's)."""
-    if not explorer_records_gyro_test.DEVTOOLS:
-        explorer_records_gyro_test.DEVTOOLS.append(TracingDevTools(driver))
-    return explorer_records_gyro_test.DEVTOOLS[0]
+    sessions = explorer_records_gyro_test.DEVTOOLS
+    if driver.session_id not in sessions:
+        sessions[driver.session_id] = TracingDevTools(driver)
+    return sessions[driver.session_id]
 
 
 TRACE_CATEGORIES = ("devtools.timeline,disabled-by-default-devtools.timeline,"

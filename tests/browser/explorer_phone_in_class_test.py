@@ -70,9 +70,10 @@ class RealServer:
     """The class server (python/bookspin_class, docs/class.md) started on 127.0.0.1 with a class
     of its own by tests/python/class_server.py's Server, serving the page built for this test:
     its address, code, the switch that makes Chromium trust its certificate (its public key's
-    hash: nothing else ignored), and what its store holds, read beside it."""
+    hash: nothing else ignored), and what its store holds, read beside it. `extra`: more of the
+    server's switches (a benchmark's higher --rate)."""
 
-    def __init__(self, source, binary, page_file):
+    def __init__(self, source, binary, page_file, extra=()):
         os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
         os.environ["PYTHONPATH"] = os.pathsep.join([str(binary / "python"), os.environ.get("PYTHONPATH", "")])
         sys.path[:0] = [str(source / "tests" / "python"), str(binary / "python")]
@@ -85,7 +86,7 @@ class RealServer:
             missing(f"the class server's packages ({error}): scripts/install-deps.sh")
         from class_server import Server
         self.work = Path(tempfile.mkdtemp(prefix="bookspin-phone-in-class-"))
-        self.server = Server(self.work / "data", page_file).start()
+        self.server = Server(self.work / "data", page_file, extra=extra).start()
         self.code = self.server.code
         self.url = f"https://127.0.0.1:{self.server.port}/"
         cert = x509.load_pem_x509_certificate((self.work / "data" / "tls" / "server.pem").read_bytes())

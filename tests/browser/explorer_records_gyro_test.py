@@ -133,14 +133,15 @@ class DevTools:
         return reply.get("result", {})
 
 
-DEVTOOLS = []
+DEVTOOLS = {}
 
 
 def devtools(driver):
-    """The one DevTools session of the test's tab (made on the first call)."""
-    if not DEVTOOLS:
-        DEVTOOLS.append(DevTools(driver))
-    return DEVTOOLS[0]
+    """The one DevTools session of the browser's tab (made on its first call), by the driver's
+    session id: a benchmark drives several browsers at once (bench/class_load.py)."""
+    if driver.session_id not in DEVTOOLS:
+        DEVTOOLS[driver.session_id] = DevTools(driver)
+    return DEVTOOLS[driver.session_id]
 
 
 def tap(driver, element_id):
