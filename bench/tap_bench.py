@@ -60,29 +60,16 @@ CONTROLS = ["Play", "scene menu", "speed", "second method", "Open the lab", "Rec
 class TracingDevTools(DevTools):
     """The test's DevTools session, its events kept: a trace's Tracing.dataCollected."""
 
-    def read(self):
-        import struct
+    def __init__(self, driver):
         self.trace = []
         self.traced = threading.Event()
-        try:
-            while True:
-                first, second = self.exactly(2)
-                length = second & 0x7F
-                if length == 126:
-                    length = struct.unpack(">H", self.exactly(2))[0]
-                elif length == 127:
-                    length = struct.unpack(">Q", self.exactly(8))[0]
-                message = json.loads(self.exactly(length)) if first & 0x0F == 1 else {}
-                if "id" in message:
-                    with self.arrived:
-                        self.replies[message["id"]] = message
-                        self.arrived.notify_all()
-                elif message.get("method") == "Tracing.dataCollected":
-                    self.trace.extend(message["params"]["value"])
-                elif message.get("method") == "Tracing.tracingComplete":
-                    self.traced.set()
-        except (EOFError, OSError):
-            pass
+        super().__init__(driver)
+
+    def event(self, message):
+        if message.get("method") == "Tracing.dataCollected":
+            self.trace.extend(message["params"]["value"])
+        elif message.get("method") == "Tracing.tracingComplete":
+            self.traced.set()
 
 
 def session(driver):
@@ -163,13 +150,10 @@ def one_run(driver, page, rate, recording, trace_file=None):
     if not said.startswith("recording"):
         sys.exit(f"tap_bench: the recording did not start: {said!r}")
     feed_at_own_rate(driver, t, omega)
-    before = driver.execute_script("return window.explorer.labResult()")
     driver.execute_script("window.explorer.lastShown = window.explorer.labResult();")
-    traced = None
     if trace_file:
         devtools.call("Tracing.start", {"categories": TRACE_CATEGORIES, "transferMode": "ReportEvents"})
         time.sleep(0.5)
-        traced = driver.execute_script("return [performance.now(), performance.timeOrigin]")
     got["Stop"] = measure(driver, "Stop", lambda: tap(driver, "#labRecord"))
     if trace_file:
         time.sleep(1.0)
@@ -177,7 +161,6 @@ def one_run(driver, page, rate, recording, trace_file=None):
         devtools.traced.wait(120)
         Path(trace_file).write_text(json.dumps({"traceEvents": devtools.trace}))
         got["trace"] = devtools.trace
-    del before
     fitted = wait_for(driver, """const r = window.explorer.labResult();
         return [r !== window.explorer.lastShown, document.getElementById('labError').textContent]""",
                       lambda s: s[0] or s[1], 300)

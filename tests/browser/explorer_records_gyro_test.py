@@ -112,8 +112,14 @@ class DevTools:
                     with self.arrived:
                         self.replies[message["id"]] = message
                         self.arrived.notify_all()
+                else:
+                    self.event(message)
         except (EOFError, OSError):
             pass
+
+    def event(self, message):
+        """A message the browser sent of itself (an event, not a reply): none is kept here; a
+        session that keeps some (bench/tap_bench.py's trace) says which."""
 
     def call(self, method, params):
         """The command sent; its reply awaited: fail() on an error."""

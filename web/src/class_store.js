@@ -1,6 +1,8 @@
 // The outbox of a phone's tosses for its class kept across a reload (class_outbox.js): the
 // browser's IndexedDB, a database of its own beside the lab's recordings (kept_store.js).
 
+import { inTransaction } from './kept_store.js';
+
 /** The browser's storage of the outbox's rows (IndexedDB database `name`, its store `outbox`
  * keyed by the toss's id): a promise of {all() → rows, put(row), remove(toss)}, each a promise;
  * rejected where the browser gives the page no storage (a private window, storage blocked, no
@@ -19,14 +21,7 @@ export function classStore(name = 'bookspin-class') {
     request.onblocked = () => reject(new Error('IndexedDB blocked'));
     request.onsuccess = () => {
       const db = request.result;
-      const go = (mode, act) => new Promise((done, failed) => {
-        const tx = db.transaction('outbox', mode);
-        const r = act(tx.objectStore('outbox'));
-        // Settled when the transaction is committed: a row said stored is on the disk's way.
-        tx.oncomplete = () => done(r.result);
-        tx.onerror = () => failed(tx.error);
-        tx.onabort = () => failed(tx.error || new Error('IndexedDB aborted'));
-      });
+      const go = inTransaction(db, 'outbox');
       resolve({
         all: () => go('readonly', (s) => s.getAll()),
         put: (row) => go('readwrite', (s) => s.put(row)),

@@ -9,6 +9,20 @@ export const STORE_VERSION = 1;
  * when the page is hidden or left (pagehide): what a reload finds there was cut short by it. */
 export const LIVE_ID = 0;
 
+/** One IndexedDB object store `store` of the open database `db` as a function (mode, act):
+ * `act(objectStore)` run in a transaction of `mode`, a promise of its request's result, settled
+ * when the transaction is committed (a row said stored is on the disk's way). The lab's store and
+ * the class's outbox (class_store.js) both. */
+export function inTransaction(db, store) {
+  return (mode, act) => new Promise((done, failed) => {
+    const tx = db.transaction(store, mode);
+    const r = act(tx.objectStore(store));
+    tx.oncomplete = () => done(r.result);
+    tx.onerror = () => failed(tx.error);
+    tx.onabort = () => failed(tx.error || new Error('IndexedDB aborted'));
+  });
+}
+
 /** The browser's own storage of the lab's recordings (IndexedDB): a promise of the store's
  * four doors {all() → rows, put(row), settle(row): row put and the row in progress (LIVE_ID)
  * removed in one transaction (a reload finds one or the other, never both or neither),
@@ -47,13 +61,7 @@ export function keptStore(name = 'bookspin-lab') {
       const db = request.result;
       // A newer page opened beside this one asks for the store: this page lets go of it.
       db.onversionchange = () => db.close();
-      const go = (mode, act) => new Promise((done, failed) => {
-        const tx = db.transaction('recordings', mode);
-        const r = act(tx.objectStore('recordings'));
-        tx.oncomplete = () => done(r.result);
-        tx.onerror = () => failed(tx.error);
-        tx.onabort = () => failed(tx.error || new Error('IndexedDB aborted'));
-      });
+      const go = inTransaction(db, 'recordings');
       resolve({
         all: () => go('readonly', (s) => s.getAll()),
         put: (row) => go('readwrite', (s) => s.put(row)),
