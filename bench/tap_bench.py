@@ -113,54 +113,62 @@ def focus_and(driver, selector, action):
     return run
 
 
-def one_run(driver, page, rate, recording, trace_file=None):
+def one_run(driver, page, rate, recording, trace_file=None, trace_control="Stop"):
     """Every control measured once on a fresh page at CPU throttling `rate`: {control: (ms,
-    long frames)}."""
+    long frames)}; with `trace_file`, a performance trace of `trace_control`'s tap written there
+    (and its events in got["trace"])."""
+    devtools = session(driver)
+    got = {}
+
+    def timed(driver, name, action, since=None):
+        if not trace_file or name != trace_control:
+            return measure(driver, name, action, since)
+        devtools.trace.clear()
+        devtools.traced.clear()
+        devtools.call("Tracing.start", {"categories": TRACE_CATEGORIES, "transferMode": "ReportEvents"})
+        time.sleep(0.5)
+        result = measure(driver, name, action, since)
+        time.sleep(1.0)
+        devtools.call("Tracing.end", {})
+        devtools.traced.wait(120)
+        Path(trace_file).write_text(json.dumps({"traceEvents": devtools.trace}))
+        got["trace"] = list(devtools.trace)
+        return result
+
     driver.execute_cdp_cmd("Emulation.setCPUThrottlingRate", {"rate": 1})
     load(driver, page)
     driver.execute_async_script("window.explorer.labForget().then(arguments[0])")
     watch(driver)
     settle(driver, 10)
     driver.execute_cdp_cmd("Emulation.setCPUThrottlingRate", {"rate": rate})
-    got = {}
-    got["Play"] = measure(driver, "Play", lambda: tap(driver, "#play"))
+    got["Play"] = timed(driver, "Play", lambda: tap(driver, "#play"))
     driver.execute_script("window.explorer.setPlaying(false)")
     settle(driver)
-    got["scene menu"] = measure(driver, "scene menu", focus_and(driver, "#scene", lambda: key(driver, "ArrowDown")))
+    got["scene menu"] = timed(driver, "scene menu", focus_and(driver, "#scene", lambda: key(driver, "ArrowDown")))
     settle(driver)
 
     def speed():
         driver.execute_script("const s = document.getElementById('speed'); s.focus(); s.select();")
         driver.execute_cdp_cmd("Input.insertText", {"text": "2"})
     speed()
-    got["speed"] = measure(driver, "speed", lambda: key(driver, "Enter"))
+    got["speed"] = timed(driver, "speed", lambda: key(driver, "Enter"))
     settle(driver)
-    got["second method"] = measure(driver, "second method", lambda: tap(driver, "#compare"))
+    got["second method"] = timed(driver, "second method", lambda: tap(driver, "#compare"))
     settle(driver)
-    got["Open the lab"] = measure(driver, "Open the lab", lambda: tap(driver, "#labOpen"))
+    got["Open the lab"] = timed(driver, "Open the lab", lambda: tap(driver, "#labOpen"))
     settle(driver)
 
     t, omega = recording
-    devtools = session(driver)
     override(driver, True)
     feed(driver, omega[0])
-    got["Record"] = measure(driver, "Record", lambda: tap(driver, "#labRecord"))
+    got["Record"] = timed(driver, "Record", lambda: tap(driver, "#labRecord"))
     said = wait_for(driver, "return document.getElementById('labRecordState').textContent",
                     lambda s: s.startswith(("recording", "error")), 60)
     if not said.startswith("recording"):
         sys.exit(f"tap_bench: the recording did not start: {said!r}")
     feed_at_own_rate(driver, t, omega)
     driver.execute_script("window.explorer.lastShown = window.explorer.labResult();")
-    if trace_file:
-        devtools.call("Tracing.start", {"categories": TRACE_CATEGORIES, "transferMode": "ReportEvents"})
-        time.sleep(0.5)
-    got["Stop"] = measure(driver, "Stop", lambda: tap(driver, "#labRecord"))
-    if trace_file:
-        time.sleep(1.0)
-        devtools.call("Tracing.end", {})
-        devtools.traced.wait(120)
-        Path(trace_file).write_text(json.dumps({"traceEvents": devtools.trace}))
-        got["trace"] = devtools.trace
+    got["Stop"] = timed(driver, "Stop", lambda: tap(driver, "#labRecord"))
     fitted = wait_for(driver, """const r = window.explorer.labResult();
         return [r !== window.explorer.lastShown, document.getElementById('labError').textContent]""",
                       lambda s: s[0] or s[1], 300)
@@ -168,16 +176,16 @@ def one_run(driver, page, rate, recording, trace_file=None):
         sys.exit(f"tap_bench: the recording was not fitted: {fitted[1]!r}")
     settle(driver)
     row = "#labRecordList li:last-child"
-    got["a tick"] = measure(driver, "a tick", lambda: tap(driver, f"{row} input[type=checkbox]"))
+    got["a tick"] = timed(driver, "a tick", lambda: tap(driver, f"{row} input[type=checkbox]"))
     tap(driver, f"{row} input[type=checkbox]")  # ticked again, for the fit
     settle(driver)
     driver.execute_script("window.explorer.lastShown = window.explorer.labResult();")
-    got["Fit the ticked"] = measure(driver, "Fit the ticked", lambda: tap(driver, "#labRecordFit"))
+    got["Fit the ticked"] = timed(driver, "Fit the ticked", lambda: tap(driver, "#labRecordFit"))
     wait_for(driver, "return window.explorer.labRecorderPhase()", lambda s: s == "idle", 300)
     settle(driver)
-    got["Remove"] = measure(driver, "Remove", lambda: tap(driver, f"{row} button"))
+    got["Remove"] = timed(driver, "Remove", lambda: tap(driver, f"{row} button"))
     settle(driver)
-    got["Close"] = measure(driver, "Close", lambda: tap(driver, "#labClose"))
+    got["Close"] = timed(driver, "Close", lambda: tap(driver, "#labClose"))
     driver.execute_cdp_cmd("Emulation.setCPUThrottlingRate", {"rate": 1})
     return got
 
@@ -193,7 +201,8 @@ def main():
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--rate", type=float, default=4.0, help="the CPU throttling of the slow runs")
     ap.add_argument("--slow-only", action="store_true", help="the slow runs alone (no table written)")
-    ap.add_argument("--trace", help="a performance trace of the slow first run's Stop, written here")
+    ap.add_argument("--trace", help="a performance trace of the slow first run's Stop (or --trace-tap), written here")
+    ap.add_argument("--trace-tap", default="Stop", choices=CONTROLS, help="the control whose tap --trace traces")
     ap.add_argument("--frames", action="store_true", help="print each slow tap's long animation frames")
     ap.add_argument("--chromium-arg", action="append", default=[],
                     help="a Chromium switch more (repeatable), e.g. --disable-gpu-rasterization")
@@ -223,14 +232,14 @@ def main():
         for rate in (a.rate,) if a.slow_only else (1.0, a.rate):
             for run in range(a.runs):
                 trace = a.trace if (a.trace and rate == a.rate and run == 0) else None
-                got = one_run(driver, page.as_uri(), rate, recording, trace)
+                got = one_run(driver, page.as_uri(), rate, recording, trace, a.trace_tap)
                 if trace:
                     stop = got.pop("trace")
                     ts = [e["ts"] for e in stop if e.get("ph") == "X" and e.get("name") == "EventDispatch"]
                     since = min(ts) if ts else min(e["ts"] for e in stop if "ts" in e and e["ts"] > 0)
-                    print(f"trace of Stop at {rate:g}x: {a.trace}; the busiest slices in the "
-                          f"{got['Stop'][0]:.0f} ms after the tap's first event:")
-                    for ms, thread, name in busiest(stop, since, since + 1000 * got["Stop"][0]):
+                    print(f"trace of {a.trace_tap} at {rate:g}x: {a.trace}; the busiest slices in the "
+                          f"{got[a.trace_tap][0]:.0f} ms after the tap's first event:")
+                    for ms, thread, name in busiest(stop, since, since + 1000 * got[a.trace_tap][0]):
                         print(f"  {ms:8.1f} ms  {thread:28} {name}")
                 for control, (ms, frames) in got.items():
                     results.setdefault((rate, control), []).append(ms)

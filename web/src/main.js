@@ -36,7 +36,7 @@ function startApp(wasm, engines) {
     runs: new Runs(wasm, space, SCENES, engines),
     view: new View3D($('view'), window.BOOKSPIN_BOOK_ART || null),
     controls: new Controls(space, SCENES, engines),
-    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, quiet: false, uncovered: false,
+    playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, quiet: false, uncovered: false, asleep: false,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
     readout: new Readout(),
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
@@ -125,13 +125,21 @@ function startApp(wasm, engines) {
     app.framesDrawn += 1;
   }
 
+  /** The frame loop started again where it stopped (frame(): the lab covered the page). */
+  function wake() {
+    if (!app.asleep) return;
+    app.asleep = false;
+    requestAnimationFrame(frame);
+  }
   /** Whether the Phone-toss lab covers the page (its dialog open over the whole window). */
   const labCovers = () => !$('lab').hidden;
   function frame(now) {
     // The lab records, or covers the page: nothing drawn (docs/explorer.md, "Every tap
     // answered at once"), the run behind it held where it is; the first frame after it closes
     // (or after any tap, click or key) paints that alone, the view drawn from the next.
-    if (app.quiet || labCovers()) { app.lastFrame = null; app.uncovered = true; requestAnimationFrame(frame); return; }
+    // The loop itself stops there (a frame asked for is a frame the page's thread and the
+    // compositor work on): wake() starts it again when the lab closes or stops recording.
+    if (app.quiet || labCovers()) { app.lastFrame = null; app.uncovered = true; app.asleep = true; return; }
     if (app.uncovered) { app.uncovered = false; requestAnimationFrame(frame); return; }
     const t0 = performance.now();
     if (app.pacer.continue(app.runs, app.state)) {
@@ -289,8 +297,9 @@ function startApp(wasm, engines) {
   // While the lab records, the page does nothing else: the run pauses and no frame is drawn,
   // so that a slow phone's main thread takes every reading (docs/phone-lab.md).
   app.lab = new LabPanel(wasm, (scene) => { playToss(scene); setPlaying(true); }, (recording) => {
-    if (recording) setPlaying(false);
+    if (recording && app.playing) setPlaying(false);
     app.quiet = recording;
+    if (!recording) wake();
   });
   // In a class (the address's ?class=CODE): joined, every toss kept goes to the class's server.
   app.classLink = new ClassLink(app.lab.recorder, (name) => wasm.nameProblem(name));
@@ -299,6 +308,7 @@ function startApp(wasm, engines) {
   let restoring = false;
   for (const id of ['lab', 'judge']) {
     new MutationObserver(() => {
+      wake();
       if (restoring) return;
       address.push();
       address.write();
