@@ -18,6 +18,10 @@ export function testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pic
     url: () => location.search,
     setPlaying,
     framesDrawn: () => app.framesDrawn,
+    /** How many times the runs were built (main.js, rebuild) and the readout's strip laid out
+     * (main.js, layout). */
+    rebuilds: () => app.rebuilds,
+    layouts: () => app.layouts,
     /** Milliseconds spent so far in the frames' physics, 3D view, sphere, plots and readout. */
     frameCosts: () => ({ ...app.costs }),
     /** ω (body frame) of each run at time t (steps round(t/dt) from the start), in one go. */

@@ -36,7 +36,7 @@ export function listenKeys(actions) {
   /** A step of the Step button and the arrow keys: 0.5 time units (whole steps of dt), so that
    * a class sees the book move. */
   const stepSize = () => Math.max(1, Math.round(STEP_TIME / actions.dt())) * actions.dt();
-  $('play').addEventListener('click', () => setPlaying(!actions.playing()));
+  $('play').addEventListener('click', () => setPlaying(!actions.playing(), true));
   $('stepOnce').addEventListener('click', () => seek(actions.time() + stepSize()));
   $('reset').addEventListener('click', reset);
   $('slider').addEventListener('input', () => seek(Number($('slider').value)));
@@ -53,7 +53,7 @@ export function listenKeys(actions) {
     const own = ev.target instanceof HTMLElement ? ev.target.dataset.keys : undefined;
     if (own && own.split(' ').includes(ev.code)) return;
     const act = {
-      Space: () => setPlaying(!actions.playing()),
+      Space: () => setPlaying(!actions.playing(), true),
       ArrowRight: () => seek(actions.time() + stepSize()),
       ArrowLeft: () => seek(actions.time() - stepSize()),
       KeyR: reset,

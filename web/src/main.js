@@ -21,6 +21,7 @@ import { LabPanel } from './lab.js';
 import { ClassLink } from './class_join.js';
 import { loadProgram } from './packed.js';
 import { Address } from './address.js';
+import { afterPaint } from './after_paint.js';
 
 const $ = (id) => document.getElementById(id);
 /** The 3D view's least height (CSS px) on any screen. */
@@ -37,6 +38,8 @@ function startApp(wasm, engines) {
     view: new View3D($('view'), window.BOOKSPIN_BOOK_ART || null),
     controls: new Controls(space, SCENES, engines),
     playing: false, stepDebt: 0, lastFrame: null, framesDrawn: 0, quiet: false, uncovered: false, asleep: false,
+    // How many times the runs were built and the strip laid out (the first-frame test's counts).
+    rebuilds: 0, layouts: 0,
     pacer: new Pacer((text) => { $('notice').textContent = text; }),
     readout: new Readout(),
     // Milliseconds spent in each part of the frames so far (the benchmark's breakdown).
@@ -63,6 +66,8 @@ function startApp(wasm, engines) {
   const address = new Address(space, () => app.state, base);
 
   function rebuild() {
+    rebuildAsked = false;
+    app.rebuilds += 1;
     const { state, runs } = app;
     $('message').textContent = runs.rebuild(state).join('; ');
     app.view.setRuns(runs.list, state.showL);
@@ -72,6 +77,22 @@ function startApp(wasm, engines) {
     app.pacer.stop();
     catchUp(target, FIRST_BUDGET_MS);
     address.write();
+  }
+
+  /** A control's change rebuilds the runs after the frame that shows it (afterPaint; docs/
+   * explorer.md, "Every tap answered at once"): the menu's new value, the tick, the scene's
+   * title first. Changes made before it ran are rebuilt once, from the state the last one
+   * left; anything that reads the runs first (a seek, the test hooks) rebuilds them then. */
+  let rebuildAsked = false;
+  function rebuildAfterPaint() {
+    rebuildAsked = true;
+    afterPaint().then(rebuildIfAsked);
+  }
+  /** The rebuild asked for, where it has not run yet, and the readout's words of it. */
+  function rebuildIfAsked() {
+    if (!rebuildAsked) return;
+    rebuild();
+    readout();
   }
 
   function advance(t) {
@@ -95,12 +116,15 @@ function startApp(wasm, engines) {
   const sphere = new Sphere($('sphere'), wasm, pickStart);
   app.panels = new Panels($('sphere'), $('plots'), sphere, measured, timeUnit, () => Number($('slider').max));
 
-  function setPlaying(p) {
+  /** Plays or pauses; `answerFirst` (a tap on Play, Space): the button's new word painted
+   * first, the strip laid out afresh after that frame (afterPaint). */
+  function setPlaying(p, answerFirst = false) {
     app.playing = p;
-    layout(true);
     $('play').textContent = p ? 'Pause' : 'Play';
     app.lastFrame = null;
     if (!p) address.write();
+    if (!answerFirst) layout(true);
+    else afterPaint().then(() => { if (app.playing === p) layout(true); });
   }
 
   /** The readout's words (t, each run's flips) as the state now has them; true where its strip
@@ -141,6 +165,8 @@ function startApp(wasm, engines) {
     // compositor work on): wake() starts it again when the lab closes or stops recording.
     if (app.quiet || labCovers()) { app.lastFrame = null; app.uncovered = true; app.asleep = true; return; }
     if (app.uncovered) { app.uncovered = false; requestAnimationFrame(frame); return; }
+    // A control changed and its runs are not rebuilt yet: the runs before it are not drawn.
+    if (rebuildAsked) { requestAnimationFrame(frame); return; }
     const t0 = performance.now();
     if (app.pacer.continue(app.runs, app.state)) {
       app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
@@ -171,6 +197,7 @@ function startApp(wasm, engines) {
    * line that wraps anew grows it once; none shrinks it), so that nothing under it moves under
    * the pointer; a new run, a new size or a pause sets it afresh (`fresh`). */
   function layout(fresh) {
+    app.layouts += 1;
     const strip = $('overlay'), box = $('viewBox'), main = $('main');
     // index.html's small landscape screen: the readout over the view, as on a projector, in
     // #main of the screen's height less the transport bar under it.
@@ -258,14 +285,20 @@ function startApp(wasm, engines) {
     }
     app.state = app.pacer.limit(app.state, base());
     app.controls.write(app.state);
-    if (VIEW_CONTROLS.includes(id)) { app.view.pose(app.runs.list, app.state.showL, app.state.showAxes); address.write(); } else rebuild();
-    // The controls and the readout's words now; the view, the sphere and the plots by the frame
-    // loop, from the frame after the one that paints these (docs/explorer.md, "Every tap
-    // answered at once").
-    readout();
+    // The controls now; the runs and the readout's words after the frame that paints them, the
+    // view, the sphere and the plots by the frame loop from the frame after (docs/explorer.md,
+    // "Every tap answered at once").
+    if (VIEW_CONTROLS.includes(id)) {
+      app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
+      address.write();
+      readout();
+    } else {
+      rebuildAfterPaint();
+    }
   });
   /** To time `target`: forwards by catching up, backwards by starting again from t = 0. */
   function seek(target) {
+    rebuildIfAsked();
     setPlaying(false);
     target = Math.max(0, target);
     if (target < app.state.t) { app.state.t = target; rebuild(); } else catchUp(target, FIRST_BUDGET_MS);
@@ -357,6 +390,12 @@ function startApp(wasm, engines) {
   });
   // Test and benchmark hooks (tests/browser/explorer_test.py, bench/explorer_bench.py).
   window.explorer = testHooks(app, sphere, { rebuild, advance, draw, setPlaying, pickStart });
+  // A hook reads the runs as the controls now say: a rebuild still waiting for its frame runs
+  // first (not for the counts the first-frame test reads inside that frame).
+  for (const [name, hook] of Object.entries(window.explorer)) {
+    if (typeof hook === 'function' && !['framesDrawn', 'rebuilds', 'layouts'].includes(name))
+      window.explorer[name] = (...args) => { rebuildIfAsked(); return hook(...args); };
+  }
   app.state = app.pacer.limit(app.controls.fit(app.state), base());
   app.controls.write(app.state);
   resize();
