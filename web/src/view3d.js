@@ -5,13 +5,16 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 
+/** How many of the book's cover images have loaded (each load: the view drawn again). */
+const artLoads = { count: 0 };
+
 function bookMaterials(art) {
   // BoxGeometry faces: +x, −x, +y, −y, +z, −z. The book's faces (docs/physics.md §1):
   // spine +x, fore-edge −x, top +y, bottom −y, front cover +z, back cover −z; the images are
   // bookspin's own (bookspin explore), plain colours without them.
   const load = (face, rotation) => {
     if (!art || !art[face]) return null;
-    const tex = new THREE.TextureLoader().load(art[face]);
+    const tex = new THREE.TextureLoader().load(art[face], () => { artLoads.count += 1; });
     tex.colorSpace = THREE.SRGBColorSpace;
     tex.center.set(0.5, 0.5);
     tex.rotation = rotation;
@@ -120,6 +123,13 @@ export class View3D {
     });
     this.layout = { radius: 1, spacing: 0, pitch: 0, room: 0, cols: 1, rows: 1, count: 0, right: new THREE.Vector3(1, 0, 0), up: new THREE.Vector3(0, 1, 0) };
     this.framedFor = '';
+    // Whether the picture drawn last is out of date (a pose, new bodies, the camera moved, a new
+    // size, a cover loaded): render() draws only then, so that a paused page asks no frame of
+    // the GPU (in software, a frame of this view took the CPU a tap's answer needed: docs/
+    // explorer.md, "Every tap answered at once").
+    this.stale = true;
+    this.artSeen = 0;
+    this.controls.addEventListener('change', () => { this.stale = true; });
   }
 
   /** New bodies for new runs (their sessions). */
@@ -269,6 +279,7 @@ export class View3D {
    * the camera on its current line of sight at the nearest distance that shows every run's
    * whole sweep sphere (and the L arrow) inside the view with a margin. */
   frame(runs, showL, force) {
+    this.stale = true;
     if (!runs.length) return;
     const camera = this.camera;
     const r = Math.max(...runs.map((run) => sweepRadius(run.session)));
@@ -370,6 +381,7 @@ export class View3D {
 
   /** Moves each body to its run's state, the L arrow and body axes to the first run's. */
   pose(runs, showL, showAxes) {
+    this.stale = true;
     runs.forEach((r, k) => {
       const d = this.drawn[k];
       d.mesh.visible = r.session.finite();
@@ -403,9 +415,14 @@ export class View3D {
     this.frame(runs, showL, true);
   }
 
+  /** Draws the view where it changed since it was drawn last (this.stale); true where it drew. */
   render(runs) {
     this.controls.update();
+    if (artLoads.count !== this.artSeen) { this.artSeen = artLoads.count; this.stale = true; }
+    if (!this.stale) return false;
+    this.stale = false;
     if (runs) this.placeLabels(runs);
     this.renderer.render(this.scene, this.camera);
+    return true;
   }
 }
