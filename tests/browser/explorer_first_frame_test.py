@@ -13,10 +13,13 @@ style, layout and paint: what the DOM holds then is what that frame paints. Asse
   - the control's visible answer is in it (the button's new words, the panel shown or gone, the
     row removed, the tick);
   - none of the work the tap sets off is in it: the heavier work (the recording's row made and
-    its fit asked, the trace's canvas laid out, a run rebuilt) and the 3D view, the sphere and
+    its fit asked, the trace's canvas laid out, the runs rebuilt (window.explorer.rebuilds()),
+    the readout's strip laid out (window.explorer.layouts())) and the 3D view, the sphere and
     the plots drawn (window.explorer.framesDrawn(): software GL's frame is the heaviest part of
     a paint) come in later frames. Where the page drew the view in that frame, or did the work
     before the frame, the paint waits for it.
+After the scene menu and the second method the runs are rebuilt once, later; two changes of the
+scene menu in one task (before the first's rebuild ran) end on the second's state.
 bench/tap_bench.py measures the same taps' durations (docs/performance.md, "Taps").
 
 Usage: explorer_first_frame_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
