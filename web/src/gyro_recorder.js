@@ -292,8 +292,10 @@ function drawTrace(canvas, samples, span = 5) {
  * double tap (80 ms apart) must not start a recording over the toss just kept. */
 export const AFTER_STOP_MS = 600;
 
-/** ms between two drawings of the live trace while recording. */
-export const TRACE_MS = 100;
+/** ms between two drawings of the live trace while recording: four a second. Each drawing is
+ * the page's work and a frame to composite; ten a second took, on a slowed page over a software
+ * GPU, the CPU that the Stop's frame needed (docs/explorer.md, "Every tap answered at once"). */
+export const TRACE_MS = 250;
 /** How often the recording in progress is written to the store (ms): a reload loses at most
  * this much of it. */
 export const LIVE_MS = 1000;
@@ -358,6 +360,10 @@ export class TossRecorder {
     });
     this.storage = '';
     $('labRecord').addEventListener('click', (e) => this.tap(e));
+    // A finger down on the button (a Stop coming): the live trace is not drawn until it is up.
+    $('labRecord').addEventListener('pointerdown', () => { this.pressed = true; });
+    for (const type of ['pointerup', 'pointercancel', 'pointerleave'])
+      $('labRecord').addEventListener(type, () => { this.pressed = false; });
     $('labRecordFit').addEventListener('click', () => this.fitTicked());
     document.addEventListener('visibilitychange', () => {
       if (document.hidden) {
@@ -435,14 +441,19 @@ export class TossRecorder {
 
   /** Record: the button and the state line answer at once; the sensor is asked in the same
    * tap (a browser asking permission needs the tap); the live trace's canvas is made and
-   * scrolled into view after that answer is painted (afterPaint). */
+   * scrolled into view, and the recording said, after that answer is on the screen
+   * (afterPaint). */
   start() {
     this.samples = [];
     this.phase = 'asking';
     this.button();
     this.say('asking for the gyroscope…');
-    afterPaint().then(() => { if (this.phase === 'asking' || this.recording) this.inView(this.trace(true)); });
-    this.source.start().then((api) => {
+    const painted = afterPaint();
+    painted.then(() => { if (this.phase === 'asking' || this.recording) this.inView(this.trace(true)); });
+    // The sensor is asked now; the page says it records (the button, the state line, the live
+    // trace) once the answer's frame is on the screen, not before. Its readings are kept from
+    // the first.
+    Promise.all([this.source.start(), painted]).then(([api]) => {
       if (this.phase !== 'asking') return;
       this.phase = 'recording';
       this.button();
@@ -454,7 +465,8 @@ export class TossRecorder {
       let saved = performance.now();
       const frame = () => {
         if (!this.recording) return;
-        drawTrace(this.trace(true), this.samples);
+        // Not while a finger is on Stop: its tap's frame comes first.
+        if (!this.pressed) drawTrace(this.trace(true), this.samples);
         if (performance.now() - saved >= LIVE_MS) { saved = performance.now(); this.saveLive(); }
         setTimeout(frame, TRACE_MS);
       };

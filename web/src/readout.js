@@ -83,10 +83,16 @@ export class Readout {
   draw(runs, t, unit = 'time units', scene = 'no scene') {
     // A measured toss's time in seconds, said; the paper's time units are left unnamed.
     const text = `t = ${fixed(t, 2)}${unit === 's' ? ' s' : ''}`;
-    $('time').textContent = text;
-    $('clock').textContent = text;
-    $('slider').max = Math.max(Number($('slider').max), Math.ceil(t));
-    $('slider').value = t;
+    // Written only where changed: the same words written again are laid out and painted again,
+    // every frame of a paused page (docs/explorer.md, "Every tap answered at once").
+    if (text !== this.clockText) {
+      $('time').textContent = text;
+      $('clock').textContent = text;
+      this.clockText = text;
+    }
+    const max = Math.max(Number($('slider').max), Math.ceil(t));
+    if (Number($('slider').max) !== max) $('slider').max = max;
+    if (Number($('slider').value) !== t) $('slider').value = t;
     this.announce(runs, t);
     const described = viewDescription(runs, t, scene, text);
     if (described !== this.described) { $('view').setAttribute('aria-label', described); this.described = described; }
