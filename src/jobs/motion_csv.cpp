@@ -78,27 +78,14 @@ void refuse_quote_left_open(const CsvRecord& record, const std::vector<std::stri
 }
 
 /// Why a cell finite_number() refused is no finite number: a decimal number beyond the doubles
-/// is named so (finite as written, it underflows to 0 or overflows), anything else "is not a
-/// finite number".
+/// is named so (it overflows, or underflows to 0: common/number_text.hpp's words, as every door
+/// says them), anything else "is not a finite number".
 std::string not_a_number_reason(std::string_view cell, const std::string& quoted) {
   std::string_view digits = cell;
-  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
-  const bool decimal = !digits.empty() &&
-                       (std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') &&
-                       digits.find_first_not_of("0123456789.eE+-") == std::string_view::npos;
-  if (decimal) {
-    const std::string text(cell);
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (end == text.c_str() + text.size()) {
-      if (value == 0.0)
-        return quoted +
-               " is finite but below the smallest double (about 4.9e-324): it would read as 0 "
-               "(write 0 if that is meant)";
-      if (std::isinf(value))
-        return quoted + " is finite but beyond the largest double (about 1.8e308)";
-    }
-  }
+  if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);  // finite_number's '+'
+  const std::string range = out_of_range_reason(digits);
+  if (range == kBelowDoubles) return quoted + " is " + range + " (write 0 if that is meant)";
+  if (!range.empty()) return quoted + " is " + range;
   return quoted + " is not a finite number";
 }
 
@@ -303,10 +290,12 @@ MotionFile motion_from_rows(const std::vector<std::array<double, 8>>& rows, Omeg
     };
     for (std::size_t k = 0; k < v.size(); ++k) {
       if (!std::isfinite(v[k])) {
+        // A value, not text: where "2e308" was meant, the caller's reader made it inf.
         throw error(k, std::string(std::isnan(v[k]) ? "nan"
                                    : v[k] > 0       ? "inf"
                                                     : "-inf") +
-                           " is not a finite number");
+                           " is not a finite number" +
+                           (std::isinf(v[k]) ? std::string("; ") + kReadsAsInf : std::string()));
       }
     }
     add_row(motion, v, dt, steps, error, text);

@@ -95,11 +95,11 @@ TEST(MotionCsv, EachBadFileIsOneLineNamingItsLineAndColumn) {
   for (const char* cell : {"1e-400", "-2.5e-999"})
     EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1," + cell + ",3\n"),
               "run.csv:3: wy: \"" + std::string(cell) +
-                  "\" is finite but below the smallest double (about 4.9e-324): it would read as "
+                  "\" is below the smallest positive number (about 4.9e-324): it would read as "
                   "0 (write 0 if that is meant)")
         << cell;
   EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,1e400,3\n"),
-            "run.csv:3: wy: \"1e400\" is finite but beyond the largest double (about 1.8e308)");
+            "run.csv:3: wy: \"1e400\" is beyond the largest finite number (about 1.8e308)");
   for (const auto& [cell, value] : std::initializer_list<std::pair<const char*, double>>{
            {"+1.5", 1.5}, {"1.", 1.0}, {"-.5e-2", -0.005}, {"1E5", 1e5}, {"1e-310", 1e-310}}) {
     const MotionFile m =
