@@ -221,6 +221,27 @@ std::optional<double> read_number(std::string_view text) {
   return value;
 }
 
+bool below_doubles(std::string_view text) {
+  std::string_view digits = text;
+  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
+  if (digits.empty() ||
+      !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') ||
+      digits.find_first_not_of("0123456789.eE+-") != std::string_view::npos)
+    return false;
+  const std::string_view mantissa = digits.substr(0, digits.find_first_of("eE"));
+  if (mantissa.find_first_of("123456789") == std::string_view::npos) return false;  // a zero
+  const std::string copy(text);
+  char* end = nullptr;
+  const double value = std::strtod(copy.c_str(), &end);
+  return end == copy.c_str() + copy.size() && value == 0.0;
+}
+
+std::string out_of_range_reason(std::string_view text) {
+  if (beyond_doubles(text)) return kBeyondDoubles;
+  if (below_doubles(text)) return kBelowDoubles;
+  return "";
+}
+
 bool beyond_doubles(std::string_view text) {
   std::string_view digits = text;
   if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);

@@ -57,7 +57,25 @@ std::optional<double> read_number(std::string_view text);
 bool beyond_doubles(std::string_view text);
 
 /// The words for a number past the largest double, said alike at every door (and as flipcheck's
-/// motion reader says it).
-inline constexpr const char* kBeyondDoubles = "beyond the largest double (about 1.8e308)";
+/// motion reader says it): `"2e308" is ` kBeyondDoubles.
+inline constexpr const char* kBeyondDoubles = "beyond the largest finite number (about 1.8e308)";
+
+/// Whether `text` spells a decimal number whose digits are not all zero but whose magnitude is
+/// below the smallest double (about 4.9e-324: "1e-400"), which read_number refuses too.
+bool below_doubles(std::string_view text);
+
+/// The words for such a number: `"1e-400" is ` kBelowDoubles.
+inline constexpr const char* kBelowDoubles =
+    "below the smallest positive number (about 4.9e-324): it would read as 0";
+
+/// Said after an infinite value given as a number, not as text (Python's float, JavaScript's
+/// Number, a TOML value): where it came as "2e308" the caller's reader made it inf before
+/// bookspin saw it, so its text cannot be quoted: `"inf" is not a finite number; ` kReadsAsInf.
+inline constexpr const char* kReadsAsInf =
+    "a number beyond the largest finite one (about 1.8e308) reads as inf";
+
+/// Why `text`, which read_number() refuses, is no number, after its quoted text: kBeyondDoubles,
+/// kBelowDoubles, or "" (not a number at all: the door says so in its own words).
+std::string out_of_range_reason(std::string_view text);
 
 }  // namespace bookspin

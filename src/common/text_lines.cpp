@@ -31,12 +31,13 @@ CsvRecord next_csv_record(std::string_view text, std::size_t start, char separat
   std::string cell;
   bool inside = false;   // within its quotes now
   bool started = false;  // anything but spaces seen in the cell
+  bool closed = false;   // its closing quote seen
   std::size_t kept = 0;  // the cell's length up to its last character that is not a space
   const auto finish_cell = [&] {
     cell.resize(kept);  // the spaces after it dropped; a quoted cell's own kept
     record.cells.push_back(cell);
     cell.clear();
-    inside = started = false;
+    inside = started = closed = false;
     kept = 0;
   };
   std::size_t i = start;
@@ -51,6 +52,7 @@ CsvRecord next_csv_record(std::string_view text, std::size_t start, char separat
           continue;
         }
         inside = false;
+        closed = true;
       } else {
         if (c == '\n' || (c == '\r' && !(i + 1 < text.size() && text[i + 1] == '\n')))
           ++record.lines;
@@ -75,6 +77,9 @@ CsvRecord next_csv_record(std::string_view text, std::size_t start, char separat
     } else if (c == '"' && !started) {
       inside = started = true;
     } else {
+      if (closed && (record.text_after_quote.empty() ||
+                     record.text_after_quote.back() != record.cells.size()))
+        record.text_after_quote.push_back(record.cells.size());
       cell += c;
       started = true;
       kept = cell.size();

@@ -31,12 +31,15 @@ TextLine next_line(std::string_view text, std::size_t start);
 /// spaces and tabs around a cell are not part of it. A record ends at a line end outside quotes
 /// (next_line's ends). `lines`: how many lines it spans (more than 1 where a quoted cell holds
 /// a line end); `unclosed`: a quoted cell still open at the end of `text` (its cells then hold
-/// what was read).
+/// what was read); `text_after_quote`: the cells (by index, ascending) whose closing quote is
+/// followed by more text before the separator (`"a"b`, read as `ab`): where that quote was
+/// meant to open a cell, the quote before it was left open.
 struct CsvRecord {
   std::vector<std::string> cells;
   std::size_t next = 0;
   int lines = 1;
   bool unclosed = false;
+  std::vector<std::size_t> text_after_quote;
 };
 CsvRecord next_csv_record(std::string_view text, std::size_t start, char separator);
 

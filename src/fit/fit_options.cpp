@@ -68,8 +68,13 @@ std::vector<std::pair<double, double>> read_ranges(const std::string& text, std:
       const std::string given = trimmed_part(parts[i]);
       const std::optional<double> value = read_number(given);
       if (!value) {
-        error = beyond_doubles(given) ? quoted_and(given, "is ") + kBeyondDoubles
-                                      : quoted_and(given, not_a_number(given).c_str());
+        const std::string range = out_of_range_reason(given);
+        error = !range.empty() ? quoted_and(given, "is ") + range
+                               : quoted_and(given, not_a_number(given).c_str());
+        return {};
+      }
+      if (!std::isfinite(*value)) {  // "inf", "nan" typed: quoted as given
+        error = quoted_and(given, "is not a finite time (s)");
         return {};
       }
       ends[i] = *value;
@@ -132,7 +137,8 @@ void check_toss_ranges(const std::vector<std::pair<double, double>>& ranges,
   for (const auto& [start, end] : ranges)
     for (const double t : {start, end})
       if (!std::isfinite(t))
-        throw InputError(option + ": \"" + shortest(t) + "\" is not a finite time (s)");
+        throw InputError(option + ": \"" + shortest(t) + "\" is not a finite time (s)" +
+                         (std::isinf(t) ? std::string("; ") + kReadsAsInf : std::string()));
 }
 
 physics::DragLaw parse_drag_option(const std::string& text, const std::string& option) {
@@ -154,12 +160,16 @@ Eigen::Vector3d parse_moments(const std::string& text, const std::string& option
   if (parts.size() != 3) throw InputError(option + ": expected I1,I2,I3");
   Eigen::Vector3d moments;
   for (int i = 0; i < 3; ++i) {
-    const std::optional<double> value = read_number(parts[static_cast<std::size_t>(i)]);
-    if (!value)
-      throw InputError(option + ": \"" + parts[static_cast<std::size_t>(i)] + "\" is " +
-                       (beyond_doubles(parts[static_cast<std::size_t>(i)])
-                            ? std::string(kBeyondDoubles) + ": not a positive finite number"
-                            : not_a_number(parts[static_cast<std::size_t>(i)]).substr(3)));
+    const std::string& given = parts[static_cast<std::size_t>(i)];
+    const std::optional<double> value = read_number(given);
+    if (!value) {
+      const std::string range = out_of_range_reason(given);
+      throw InputError(option + ": \"" + given + "\" is " +
+                       (!range.empty() ? range + ": not a positive finite number"
+                                       : not_a_number(given).substr(3)));
+    }
+    if (!std::isfinite(*value))  // "inf", "nan" typed: quoted as given
+      throw InputError(option + ": \"" + given + "\" is not a positive finite number");
     moments[i] = *value;
   }
   check_moments(moments, option);
@@ -169,10 +179,9 @@ Eigen::Vector3d parse_moments(const std::string& text, const std::string& option
 void check_moments(const Eigen::Vector3d& moments, const std::string& option) {
   for (int i = 0; i < 3; ++i)
     if (!(moments[i] > 0) || !std::isfinite(moments[i]))
-      throw InputError(
-          option + ": \"" + shortest(moments[i]) + "\" is " +
-          (std::isinf(moments[i]) ? std::string(kBeyondDoubles) + ": " : std::string()) +
-          "not a positive finite number");
+      throw InputError(option + ": \"" + shortest(moments[i]) +
+                       "\" is not a positive finite number" +
+                       (std::isinf(moments[i]) ? std::string("; ") + kReadsAsInf : std::string()));
   // A rigid body's principal moments obey the triangle inequality, the two smaller summing to
   // at least the largest (docs/physics.md §11: I1 + I2 - I3 = 2 ∫ z² dm ≥ 0); a flat body has
   // the equality, kept within the rounding of a typed decimal.

@@ -61,11 +61,11 @@ GyroRecording samples_recording(const std::string& name, std::vector<double> t,
   for (std::size_t i = 0; i < t.size(); ++i) {
     const std::string index = std::string(1, '[').append(std::to_string(i)).append(1, ']');
     // Infinity from the caller's own reading of a number past the largest double (Python's
-    // float("1e400")): said as the file door says it.
+    // float("1e400")): said so, its text being gone.
     const auto not_finite = [&](const char* what, bool infinite) {
-      return InputError(where + what + index + ": " +
-                        (infinite ? std::string(kBeyondDoubles) + ": " : std::string()) +
-                        "not a finite number");
+      return InputError(where + what + index + ": " + (infinite ? "inf" : "nan") +
+                        " is not a finite number" +
+                        (infinite ? std::string("; ") + kReadsAsInf : std::string()));
     };
     if (!std::isfinite(t[i])) throw not_finite("t", std::isinf(t[i]));
     if (!omega[i].allFinite()) throw not_finite("omega", omega[i].array().isInf().any());

@@ -66,8 +66,8 @@ std::optional<double> parse_number(std::string_view given, bool decimal_comma) {
 }
 
 std::string not_a_number(const std::string& cell, bool decimal_comma) {
-  if (beyond_doubles(number_spelling(cell, decimal_comma)))
-    return quoted_cell(cell) + " is " + kBeyondDoubles;
+  const std::string range = out_of_range_reason(number_spelling(cell, decimal_comma));
+  if (!range.empty()) return quoted_cell(cell) + " is " + range;
   return "not a number: " + quoted_cell(cell);
 }
 

@@ -48,12 +48,14 @@ int line_ends(std::string_view cell) {
 /// rows, and the next row read is blamed on its t) where it cannot be a cell of text: in the
 /// header (a name), in a column the motion is read from (`read`: a number), past the header's
 /// columns, or holding a whole row after its line end (as many commas as a row of the header
-/// has). A note over two lines, in a column of its own, is read. Throws InputError naming the
-/// row, the column and the line where the quote closes.
-void refuse_quote_left_open(const std::vector<std::string>& cells,
-                            const std::vector<std::string_view>& header,
+/// has), or followed by more text after its closing quote (a column quoted on every row: the
+/// next row's opening quote closed it, `"note 5⏎…,"note 6",…`). A note over two lines, in a
+/// column of its own, is read. Throws InputError naming the row, the column and the line where
+/// the quote closes.
+void refuse_quote_left_open(const CsvRecord& record, const std::vector<std::string_view>& header,
                             const std::array<std::size_t, 8>& read, const std::string& file,
                             int line_number) {
+  const std::vector<std::string>& cells = record.cells;
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const std::string& cell = cells[c];
     const int ends = line_ends(cell);
@@ -61,6 +63,8 @@ void refuse_quote_left_open(const std::vector<std::string>& cells,
     const std::size_t first_end = cell.find_first_of("\r\n");
     const bool text =
         !header.empty() && c < header.size() &&
+        std::find(record.text_after_quote.begin(), record.text_after_quote.end(), c) ==
+            record.text_after_quote.end() &&
         std::find(read.begin(), read.end(), c) == read.end() &&
         static_cast<std::size_t>(std::count(cell.begin() + first_end, cell.end(), ',')) + 1 <
             header.size();
@@ -74,27 +78,14 @@ void refuse_quote_left_open(const std::vector<std::string>& cells,
 }
 
 /// Why a cell finite_number() refused is no finite number: a decimal number beyond the doubles
-/// is named so (finite as written, it underflows to 0 or overflows), anything else "is not a
-/// finite number".
+/// is named so (it overflows, or underflows to 0: common/number_text.hpp's words, as every door
+/// says them), anything else "is not a finite number".
 std::string not_a_number_reason(std::string_view cell, const std::string& quoted) {
   std::string_view digits = cell;
-  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
-  const bool decimal = !digits.empty() &&
-                       (std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') &&
-                       digits.find_first_not_of("0123456789.eE+-") == std::string_view::npos;
-  if (decimal) {
-    const std::string text(cell);
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (end == text.c_str() + text.size()) {
-      if (value == 0.0)
-        return quoted +
-               " is finite but below the smallest double (about 4.9e-324): it would read as 0 "
-               "(write 0 if that is meant)";
-      if (std::isinf(value))
-        return quoted + " is finite but beyond the largest double (about 1.8e308)";
-    }
-  }
+  if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);  // finite_number's '+'
+  const std::string range = out_of_range_reason(digits);
+  if (range == kBelowDoubles) return quoted + " is " + range + " (write 0 if that is meant)";
+  if (!range.empty()) return quoted + " is " + range;
   return quoted + " is not a finite number";
 }
 
@@ -206,10 +197,13 @@ MotionFile parse_motion_csv(std::string_view text, const std::string& file, doub
     // A row as RFC 4180 reads it (R's write.csv, spreadsheets): a quoted cell may hold commas,
     // doubled quotes and, in a column of text, line ends.
     CsvRecord record = next_csv_record(text, start, ',');
-    if (record.unclosed)
-      throw InputError(file, line_number, "",
+    if (record.unclosed) {
+      // The cell left open is the record's last: named by its column where the header has one.
+      const std::size_t c = record.cells.size() - 1;
+      throw InputError(file, line_number, c < header.size() ? std::string(header[c]) : "",
                        "a quoted cell opens on this row and is not closed by the end of the file");
-    refuse_quote_left_open(record.cells, header, at, file, line_number);
+    }
+    refuse_quote_left_open(record, header, at, file, line_number);
     start = record.next;
     lines_read += record.lines - 1;
     if (header.empty()) {
@@ -296,10 +290,12 @@ MotionFile motion_from_rows(const std::vector<std::array<double, 8>>& rows, Omeg
     };
     for (std::size_t k = 0; k < v.size(); ++k) {
       if (!std::isfinite(v[k])) {
+        // A value, not text: where "2e308" was meant, the caller's reader made it inf.
         throw error(k, std::string(std::isnan(v[k]) ? "nan"
                                    : v[k] > 0       ? "inf"
                                                     : "-inf") +
-                           " is not a finite number");
+                           " is not a finite number" +
+                           (std::isinf(v[k]) ? std::string("; ") + kReadsAsInf : std::string()));
       }
     }
     add_row(motion, v, dt, steps, error, text);

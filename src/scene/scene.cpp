@@ -10,7 +10,9 @@
 #include <sstream>
 
 #include "common/file_name.hpp"
+#include "common/number_text.hpp"
 #include "common/text_file.hpp"
+#include "common/text_lines.hpp"
 #include "mesh/mesh.hpp"
 #include "physics/exact_model.hpp"
 #include "physics/presets.hpp"
@@ -96,6 +98,11 @@ std::string apply_override(toml::table& root, const std::string& assignment) {
     throw InputError("--set " + escape_controls(assignment) +
                      ": expected key=value, e.g. time.dt=0.01");
   }
+  // A number past the doubles is no TOML error nor 0 (TOML's reader refuses "2e308" as no
+  // value and reads "1e-400" as 0): named in every door's words (common/number_text.hpp).
+  const std::string given(trimmed(std::string_view(assignment).substr(eq + 1)));
+  if (const std::string range = out_of_range_reason(given); !range.empty())
+    throw InputError("--set " + key + ": \"" + given + "\" is " + range);
   toml::table parsed;
   try {
     const std::string doc = "value = " + assignment.substr(eq + 1);

@@ -271,6 +271,14 @@ def main():
     cli_line = r.stderr.strip()
     if r.returncode != 2 or not cli_line.startswith("bookspin: error: bad.csv:3: wy:"):
         fail(f"bookspin flipcheck judge of bad.csv: exit {r.returncode}, {cli_line!r}")
+    # A quote left open in a column the judge does not read (tests/bad_motions: the command
+    # line's line there, for mujoco-test-box too): named at its row and column, never blamed on t.
+    quotes = {}
+    for case in ("quote-left-open-in-a-quoted-column", "quote-left-open-at-the-end"):
+        catalogue = source / "tests" / "bad_motions"
+        (motions / f"{case}.csv").write_bytes((catalogue / f"{case}.csv").read_bytes())
+        quotes[f"{case}.csv"] = (catalogue / f"{case}.expected").read_text().strip().replace(
+            "{FILE}", f"{case}.csv")
 
     # The page and the motion files served from one origin (a page opened from disk may not
     # fetch), the files fetched by the page itself rather than sent through the driver.
@@ -304,6 +312,10 @@ def main():
         got = judge_in_page(driver, base_url, "mujoco-test-box", "bad.csv")
         if got.get("ok") or "bookspin: error: " + got["error"] != cli_line:
             fail(f"bad.csv: the page said {got}, the command line {cli_line!r}")
+        for file_name, line in quotes.items():
+            got = judge_in_page(driver, base_url, "mujoco-test-box", file_name)
+            if got.get("ok") or got["error"] != line:
+                fail(f"{file_name}: the page said {got}, the command line {line!r}")
 
         # 2b. A link to the panel (the gallery's kit section): explorer.html#judge opens it on
         #     the page's scene.

@@ -118,6 +118,9 @@ TEST_P(SimulateErrors, ExitTwoWithOneLineNamingTheProblem) {
 constexpr const char* kBadInputs = R"(
 negative_dt     | {FIG05} --set time.dt=-1            | --set time.dt: must be > 0
 nan_dt          | {FIG05} --set time.dt=nan           | --set time.dt: must be finite
+beyond_dt       | {FIG05} --set time.dt=2e308         | --set time.dt: "2e308" is beyond the largest finite number (about 1.8e308)
+beyond_neg_dt   | {FIG05} --set time.dt=-2e308        | --set time.dt: "-2e308" is beyond the largest finite number (about 1.8e308)
+below_dt        | {FIG05} --set time.dt=1e-400        | --set time.dt: "1e-400" is below the smallest positive number (about 4.9e-324): it would read as 0
 unquoted_string | {FIG05} --set model.kind=particle   | --set model.kind: value is not valid TOML
 unknown_model   | {FIG05} --set 'model.kind="soft"'   | --set model.kind: unknown model 'soft'
 unknown_key     | {FIG05} --set model.colour=1        | --set model.colour: unknown key
@@ -151,10 +154,10 @@ std::vector<BadInput> bad_inputs() {
 
 TEST(SimulateErrors, TheTableParsesIntoEveryCase) {
   const auto cases = bad_inputs();
-  ASSERT_EQ(cases.size(), 11u);
+  ASSERT_EQ(cases.size(), 14u);
   EXPECT_EQ(cases.front().label, "negative_dt");
   EXPECT_EQ(cases.front().args, scene_path("fig05-particle-unstable-x") + " --set time.dt=-1");
-  EXPECT_EQ(cases[9].args, "");  // no_scene
+  EXPECT_EQ(cases[12].args, "");  // no_scene
 }
 
 INSTANTIATE_TEST_SUITE_P(BadSetValues, SimulateErrors, ::testing::ValuesIn(bad_inputs()),

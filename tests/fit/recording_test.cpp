@@ -555,9 +555,9 @@ TEST(Recording, TimesInAnotherUnitThanTheHeadersNameTheLikelyUnit) {
 // and flipcheck's motion reader use.
 TEST(Recording, ANumberBeyondTheDoublesIsSaidToBeSo) {
   EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3) + "0.5,1,1e400,3\n" + rows(8)),
-            "bad.csv:5: wy: \"1e400\" is beyond the largest double (about 1.8e308)");
+            "bad.csv:5: wy: \"1e400\" is beyond the largest finite number (about 1.8e308)");
   EXPECT_EQ(error_of("t;wx;wy;wz\n0,5;1;-2,5e308;3\n" + std::string("0,6;1;2;3\n")),
-            "bad.csv:2: wy: \"-2,5e308\" is beyond the largest double (about 1.8e308)");
+            "bad.csv:2: wy: \"-2,5e308\" is beyond the largest finite number (about 1.8e308)");
   EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3) + "0.5,1,1e-400x,3\n"),
             "bad.csv:5: wy: not a number: \"1e-400x\"");
   std::vector<double> t;
@@ -568,14 +568,23 @@ TEST(Recording, ANumberBeyondTheDoublesIsSaidToBeSo) {
     samples_recording("arrays", t, omega);
     ADD_FAILURE() << "an infinity was read";
   } catch (const InputError& e) {
-    EXPECT_STREQ(
-        e.what(),
-        "arrays: omega[4]: beyond the largest double (about 1.8e308): not a finite number");
+    // A value, not text: the caller's reader made it inf (Python's float("2e308")).
+    EXPECT_STREQ(e.what(),
+                 "arrays: omega[4]: inf is not a finite number; a number beyond the largest "
+                 "finite one (about 1.8e308) reads as inf");
   }
+  // Below the smallest double: named so, not "not a number" (it would read as 0).
+  EXPECT_EQ(error_of("t,wx,wy,wz\n" + rows(3) + "0.5,1,1e-400,3\n" + rows(8)),
+            "bad.csv:5: wy: \"1e-400\" is below the smallest positive number (about 4.9e-324): it "
+            "would read as 0");
   EXPECT_TRUE(beyond_doubles("2e308"));
   EXPECT_TRUE(beyond_doubles("-1e400"));
   for (const char* text : {"1e308", "inf", "1e-400", "0x1p9999", "e400", "1e400x", ""})
     EXPECT_FALSE(beyond_doubles(text)) << text;
+  EXPECT_TRUE(below_doubles("1e-400"));
+  EXPECT_TRUE(below_doubles("-0.0001e-320"));
+  for (const char* text : {"0", "0e-999", "-0.000", "1e-310", "2e308", "nan", "1e-400x", ""})
+    EXPECT_FALSE(below_doubles(text)) << text;
 }
 
 }  // namespace

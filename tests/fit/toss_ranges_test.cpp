@@ -82,7 +82,7 @@ TEST(TossRanges, TextThatIsNotRangesIsOneLineNamingTheOption) {
   EXPECT_EQ(parse_error("nan:2"), "--tosses: \"nan\" is not a finite time (s)");
   EXPECT_EQ(parse_error("1:inf"), "--tosses: \"inf\" is not a finite time (s)");
   EXPECT_EQ(parse_error("1:1e309"),
-            "--tosses: \"1e309\" is beyond the largest double (about 1.8e308)");
+            "--tosses: \"1e309\" is beyond the largest finite number (about 1.8e308)");
   EXPECT_EQ(parse_error("1,5:2", "flights by hand"),
             "flights by hand: \"1\" is not START:END (a decimal comma? write 1.5:2)");
 }
@@ -117,12 +117,24 @@ TEST(TossRanges, AnEndThatIsNotFiniteIsRefusedAsSuchByEveryDoor) {
       }
       return std::string("no error");
     };
-    EXPECT_EQ(hand_error({{0.2, inf}}), name + ": \"inf\" is not a finite time (s)");
+    // An infinite value says where it may come from: "2e308" read by the caller (Python's
+    // float) is inf before the fit sees it, and its text is gone.
+    const std::string reads_as_inf =
+        "; a number beyond the largest finite one (about 1.8e308) reads as inf";
+    EXPECT_EQ(hand_error({{0.2, inf}}), name + ": \"inf\" is not a finite time (s)" + reads_as_inf);
     EXPECT_EQ(hand_error({{nan, 0.29}}), name + ": \"nan\" is not a finite time (s)");
-    EXPECT_EQ(hand_error({{0.1, 0.3}, {-inf, 0.05}}), name + ": \"-inf\" is not a finite time (s)");
-    // The text says the same for the same values.
-    EXPECT_EQ(parse_error("0.2:inf", name), hand_error({{0.2, inf}}));
+    EXPECT_EQ(hand_error({{0.1, 0.3}, {-inf, 0.05}}),
+              name + ": \"-inf\" is not a finite time (s)" + reads_as_inf);
+    // The text says the same cause for the same values, quoting the text as given.
+    EXPECT_EQ(parse_error("0.2:inf", name), name + ": \"inf\" is not a finite time (s)");
+    EXPECT_EQ(parse_error("0.2:Infinity", name), name + ": \"Infinity\" is not a finite time (s)");
     EXPECT_EQ(parse_error("nan:0.29", name), hand_error({{nan, 0.29}}));
+    EXPECT_EQ(parse_error("0.2:2e308", name),
+              name + ": \"2e308\" is beyond the largest finite number (about 1.8e308)");
+    EXPECT_EQ(parse_error("1e-400:0.29", name),
+              name +
+                  ": \"1e-400\" is below the smallest positive number (about 4.9e-324): it would "
+                  "read as 0");
   }
   EXPECT_EQ(tosses_name(Reader::python), std::string("tosses"));
 }
@@ -161,19 +173,26 @@ TEST(FitOptions, MomentsAndDragAreJudgedAlikeNamingEachDoorsArgument) {
   EXPECT_EQ(parse_moments(" 1, 2.5 ,3e0", "--moments"), Eigen::Vector3d(1, 2.5, 3));
   EXPECT_EQ(moments_error("1,2", "--moments"), "--moments: expected I1,I2,I3");
   EXPECT_EQ(moments_error("1,a,3", "--moments"), "--moments: \"a\" is not a number");
-  // A moment past the largest double: one cause, one wording, whether the door read the text
-  // ("2e308") or was given the infinity a float made of it.
+  // A moment past the largest double: its text named so where the door read it ("2e308");
+  // the infinity a float made of it (Python's reader) said to be one, and where it comes from.
   const std::string beyond =
-      " is beyond the largest double (about 1.8e308): not a positive finite number";
+      " is beyond the largest finite number (about 1.8e308): not a positive finite number";
+  const std::string reads_as_inf =
+      "; a number beyond the largest finite one (about 1.8e308) reads as inf";
   EXPECT_EQ(moments_error("1,1,2e308", "--moments"), "--moments: \"2e308\"" + beyond);
-  EXPECT_EQ(values_error({1, 1, HUGE_VAL}, "moments"), "moments: \"inf\"" + beyond);
+  EXPECT_EQ(moments_error("1,1,-2e308", "--moments"), "--moments: \"-2e308\"" + beyond);
+  EXPECT_EQ(values_error({1, 1, HUGE_VAL}, "moments"),
+            "moments: \"inf\" is not a positive finite number" + reads_as_inf);
+  EXPECT_EQ(
+      moments_error("1,1,1e-400", "--moments"),
+      "--moments: \"1e-400\" is below the smallest positive number (about 4.9e-324): it would "
+      "read as 0: not a positive finite number");
+  EXPECT_EQ(moments_error("1,1,inf", "--moments"),
+            "--moments: \"inf\" is not a positive finite number");
   for (const auto& [text, values, cause] :
        std::initializer_list<std::tuple<const char*, Eigen::Vector3d, const char*>>{
            {"1,2,-1", {1, 2, -1}, "\"-1\" is not a positive finite number"},
            {"0,2,3", {0, 2, 3}, "\"0\" is not a positive finite number"},
-           {"1,inf,3",
-            {1, HUGE_VAL, 3},
-            "\"inf\" is beyond the largest double (about 1.8e308): not a positive finite number"},
            {"nan,2,3", {std::nan(""), 2, 3}, "\"nan\" is not a positive finite number"}}) {
     EXPECT_EQ(moments_error(text, "--moments"), std::string("--moments: ") + cause) << text;
     EXPECT_EQ(values_error(values, "moments"), std::string("moments: ") + cause) << text;

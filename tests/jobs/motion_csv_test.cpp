@@ -95,11 +95,11 @@ TEST(MotionCsv, EachBadFileIsOneLineNamingItsLineAndColumn) {
   for (const char* cell : {"1e-400", "-2.5e-999"})
     EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1," + cell + ",3\n"),
               "run.csv:3: wy: \"" + std::string(cell) +
-                  "\" is finite but below the smallest double (about 4.9e-324): it would read as "
+                  "\" is below the smallest positive number (about 4.9e-324): it would read as "
                   "0 (write 0 if that is meant)")
         << cell;
   EXPECT_EQ(error_of(head + row0 + "0.1,1,0,0,0,1,1e400,3\n"),
-            "run.csv:3: wy: \"1e400\" is finite but beyond the largest double (about 1.8e308)");
+            "run.csv:3: wy: \"1e400\" is beyond the largest finite number (about 1.8e308)");
   for (const auto& [cell, value] : std::initializer_list<std::pair<const char*, double>>{
            {"+1.5", 1.5}, {"1.", 1.0}, {"-.5e-2", -0.005}, {"1E5", 1e5}, {"1e-310", 1e-310}}) {
     const MotionFile m =
@@ -184,8 +184,9 @@ TEST(MotionCsv, AQuotedCellHoldingCommasQuotesOrALineEndIsOneCell) {
   // The row after the two-line cell is line 6 of the file.
   EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,\"a\nb\"\n0.1,1,0,0,0,1,x,3,c\n"),
             "run.csv:4: wy: \"x\" is not a finite number");
-  EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,\"a, b\n0.1,1,0,0,0,1,2,3,c\n"),
-            "run.csv:2: a quoted cell opens on this row and is not closed by the end of the file");
+  EXPECT_EQ(
+      error_of(head + "0,1,0,0,0,1,2,3,\"a, b\n0.1,1,0,0,0,1,2,3,c\n"),
+      "run.csv:2: note: a quoted cell opens on this row and is not closed by the end of the file");
   // A comma outside quotes is still a separator.
   EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,a,b\n"), "run.csv:2: 10 cells where the header has 9");
 }
@@ -214,6 +215,25 @@ TEST(MotionCsv, AQuoteLeftOpenIsNamedSoNotBlamedOnT) {
           "3: a quote left open?");
   // A note over two lines, holding commas, is a note.
   EXPECT_EQ(error_of(head + "0,1,0,0,0,1,2,3,\"spun,\nthen, caught\"\n0.1,1,0,0,0,1,2,3,7\n"), "");
+  // A column quoted on every row, before the ones read, one closing quote missing: the next
+  // row's opening quote closed it, text after it ("caught\"") says so; it was blamed on t = 0.3
+  // two lines later (its row swallowed).
+  const std::string notes = "note,t,qw,qx,qy,qz,wx,wy,wz\n\"start\",0,1,0,0,0,1,2,3\n";
+  EXPECT_EQ(error_of(notes + "\"thrown,0.1,1,0,0,0,1,2,3\n\"caught\",0.2,1,0,0,0,1,2,3\n" +
+                     "\"held\",0.3,1,0,0,0,1,2,3\n"),
+            "run.csv:3: note: a quote opens a cell on this row (\"thrown,0.1,1,0,0,0,1,2,3\"" +
+                left_open + "4: a quote left open?");
+  // The same after the columns read, over CR LF, and a doubled quote in its place.
+  EXPECT_EQ(
+      error_of(
+          std::string("t,qw,qx,qy,qz,wx,wy,wz,note\r\n0,1,0,0,0,1,2,3,\"a\"\r\n") +
+          "0.1,1,0,0,0,1,2,3,\"b \"\"x\r\n0.2,1,0,0,0,1,2,3,\"c\"\r\n0.3,1,0,0,0,1,2,3,\"d\"\r\n"),
+      "run.csv:3: note: a quote opens a cell on this row (\"b \"x\"" + left_open +
+          "4: a quote left open?");
+  // Left open on the last row: named by its column too.
+  EXPECT_EQ(
+      error_of("t,qw,qx,qy,qz,wx,wy,wz,note\n0,1,0,0,0,1,2,3,\"a\"\n0.1,1,0,0,0,1,2,3,\"b\n"),
+      "run.csv:3: note: a quoted cell opens on this row and is not closed by the end of the file");
 }
 
 // A column the motion is read from, named twice, is refused: which is meant cannot be told

@@ -187,11 +187,15 @@ test("a scenario JSON saved as UTF-16 is said to be so", () => {
 });
 
 test("a quote left open in a motion CSV is named so, as the command line names it (tests/bad_motions)", () => {
-  const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
-  const file = fileURLToPath(new URL("../bad_motions/quote-left-open.csv", import.meta.url));
-  const said = readFileSync(file.replace(/\.csv$/, ".expected"), "utf8").replace("{FILE}", file);
-  const run = npx(room, "judge", "mujoco-test-box", file, "-o", "out");
-  assert.equal(run.status, 2, run.stderr);
-  assert.equal(run.stderr, `flipcheck: error: ${said}`);
-  assert.deepEqual(readdirSync(room), []);
+  // In a column read; in a column quoted on every row, whose next opening quote closed it (once
+  // blamed on t two rows on); on the last row (named by its column).
+  for (const name of ["quote-left-open", "quote-left-open-in-a-quoted-column", "quote-left-open-at-the-end"]) {
+    const room = mkdtempSync(join(tmpdir(), "flipcheck-cli-"));
+    const file = fileURLToPath(new URL(`../bad_motions/${name}.csv`, import.meta.url));
+    const said = readFileSync(file.replace(/\.csv$/, ".expected"), "utf8").replace("{FILE}", file);
+    const run = npx(room, "judge", "mujoco-test-box", file, "-o", "out");
+    assert.equal(run.status, 2, `${name}: ${run.stderr}`);
+    assert.equal(run.stderr, `flipcheck: error: ${said}`, name);
+    assert.deepEqual(readdirSync(room), []);
+  }
 });

@@ -6,6 +6,7 @@
 // are shown as the server gives them. Nothing is fitted here: the class's server fits.
 import { ClassOutbox, stateWords } from './class_outbox.js';
 import { classStore } from './class_store.js';
+import { loneSurrogateProblem } from './well_formed.js';
 import { announce } from './gyro_recorder.js';
 import { plusMinus } from './precision.js';
 
@@ -117,6 +118,10 @@ export class ClassLink {
     const name = $('className').value.trim();
     if (!code) { this.say('error: give the class code (on the projector)', true); return; }
     if (!name) { this.say('error: give your name', true); return; }
+    // A lone surrogate named before the module's rule is asked (its UTF-8 encoder ate the
+    // character after one) and before the code goes into the address (encodeURIComponent throws).
+    const lone = loneSurrogateProblem(code, 'class code') || loneSurrogateProblem(name, 'your name');
+    if (lone) { this.say(`error: ${lone}`, true); return; }
     const problem = this.nameProblem(name);
     if (problem) { this.say(`error: your name: ${problem}`, true); return; }
     if ([...name].length > NAME_MAX) { this.say(`error: your name: at most ${NAME_MAX} characters`, true); return; }

@@ -8,6 +8,7 @@
 // web/fit_bindings.cpp tells them) comes back as messages; cancel() ends the worker at once.
 // Nothing is fitted here: this module carries calls to the module and its answers back.
 import { physicsBytes } from './packed.js';
+import { loneSurrogateInArguments } from './well_formed.js';
 
 /** The worker's own code, run as its text after the physics' script (so it uses nothing of
  * this module's scope): it loads the module from the bytes of its {load} message, then answers
@@ -106,8 +107,12 @@ export class FitWorker {
 
   /** A promise of the module's `method(...args)` (for the lab's fits, with `onProgress(stage,
    * …details)` told each stage: `progress` true). Rejected with Cancelled by cancel() or a
-   * later call, with the worker's error otherwise (the module's own {error} answers resolve). */
+   * later call, with the worker's error otherwise (the module's own {error} answers resolve);
+   * with loneSurrogateInArguments' line, before anything is asked, for text no UTF-8 holds. */
   call(method, args, onProgress = null) {
+    // No lone surrogate reaches the module (well_formed.js): the fields name their own first.
+    const problem = loneSurrogateInArguments(method, args);
+    if (problem) return Promise.reject(new Error(problem));
     this.cancel();
     const worker = this.start();
     if (!worker) {

@@ -11,6 +11,7 @@ import { FitWorker, Cancelled } from './fit_worker.js';
 import { Replay } from './replay.js';
 import { modalPanel } from './modal.js';
 import { asGiven, significant, wholeNumbers } from './precision.js';
+import { wellFormed } from './well_formed.js';
 
 const $ = (id) => document.getElementById(id);
 /** Text as HTML text. */
@@ -208,6 +209,7 @@ export class JudgePanel {
    * beside them in `detail`; rejected with the command line's one line for a bad file (and
    * with Cancelled where a later call ended it). Judged in the panel's worker. */
   async judge(name, csvText, file = 'motion.csv') {
+    wellFormed(file, 'motion');  // the motion's name as the module will write it, no letter eaten
     const scene = this.scene(name);
     if (!scene) throw new Error(`${name}: no such scenario in this page`);
     // The judgement records the SHA-256 of the scenario's JSON as `flipcheck export` writes it.

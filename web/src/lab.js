@@ -16,6 +16,7 @@ import { OMEGA_COLOURS } from './colours.js';
 import { chartCanvas, niceTicks, tickLabel } from './plots.js';
 import { TossRecorder, announce } from './gyro_recorder.js';
 import { FitWorker, Cancelled } from './fit_worker.js';
+import { loneSurrogateProblem } from './well_formed.js';
 
 /** The outcome table's columns (LabPanel.showOutcome). */
 const OUTCOME_COLUMNS = ['toss', 'recording', 'flight (s)', 'T/2 measured (s)', 'T/2 predicted ± 2σ (s)', 'within 2σ'];
@@ -240,6 +241,8 @@ export class LabPanel {
    * with Cancelled by cancel() or a later fit. Run in the lab's worker (fit_worker.js);
    * `onProgress(stage, …details)` is told each stage (fitProgress's words). */
   fit(file, bytes, drag = 'linear', tosses = '', onProgress = () => {}) {
+    const problem = loneSurrogateProblem(String(file), 'recording') || loneSurrogateProblem(String(tosses), 'flights by hand');
+    if (problem) return Promise.reject(new Error(problem));
     return this.worker.call('fitRecording', [String(file), bytes, String(drag), String(tosses)], onProgress)
       .then((r) => { if (r.error) throw new Error(r.error); return r; });
   }
@@ -252,6 +255,9 @@ export class LabPanel {
    * (their times are one recording's: the command line refuses --tosses so). In the worker,
    * as fit(). */
   fitMany(files, drag = 'linear', tosses = '', onProgress = () => {}) {
+    const problem = files.map((f) => loneSurrogateProblem(f.name, 'recording')).find(Boolean) ||
+      loneSurrogateProblem(String(tosses), 'flights by hand');
+    if (problem) return Promise.reject(new Error(problem));
     return this.worker.call('fitRecordings', [files, String(drag), String(tosses)], onProgress)
       .then((r) => { if (r.error) throw new Error(r.error); return r; });
   }
