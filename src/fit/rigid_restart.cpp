@@ -11,7 +11,7 @@ namespace bookspin::fit {
 
 bool suspect_body(const Parameters& p) {
   const Eigen::Vector3d m = p.moments();
-  return m[0] + m[1] < m[2] || m[0] < kNeedle * m[2];
+  return m[0] + m[1] < m[2] || m[0] < kNeedle * m[2] || m[1] > kAxisymmetricEdge * m[2];
 }
 
 void keep_lowest(JointFitted& fit, std::size_t starts,

@@ -26,9 +26,18 @@ inline constexpr std::array<std::array<double, 2>, 3> kRigidStarts{
 /// 0.02): where the fit ends with one, other starts are tried too.
 inline constexpr double kNeedle = 0.1;
 
+/// I2/I3 above which a fitted body lies at the edge where the fit's moment ratios meet (I2 = I3):
+/// a fit from a poor start may end there, as at a needle (12-29-59 thinned to a browser's 55 Hz:
+/// 0.45 : 0.999 : 1 with no σ, its cost 9 times the restart's 0.55 : 0.57 : 1), and whether it
+/// does hangs on the solver's round-off, so the page's WebAssembly and the command line parted
+/// there. A body with I2 = I3 (a cylinder) may be fitted so all the same: the other starts are
+/// kept only where their cost is lower.
+inline constexpr double kAxisymmetricEdge = 0.99;
+
 /// Fitted moments whose two smaller sum to less than the largest (docs/physics.md §11: no rigid
-/// body has them), or a needle's: where a fit from a poor start ends (a recording thinned to a
-/// browser's rate did, the residual four to ten times a book's).
+/// body has them), a needle's, or at the edge I2 = I3 (kAxisymmetricEdge): where a fit from a poor
+/// start ends (a recording thinned to a browser's rate did, the residual four to ten times a
+/// book's).
 bool suspect_body(const Parameters& p);
 
 /// One joint fit's outcome: its unknowns, its solve (Solved::cost, (rad/s)²) and the tosses

@@ -65,7 +65,18 @@ std::optional<double> clipped_full_scale(const std::vector<Eigen::Vector3d>& ome
           double others = 0.0;
           for (int o = 0; o < 3; ++o)
             if (o != c) others = std::max(others, hi[o] - lo[o]);
-          plateau = hi[c] - lo[c] <= kPlateauShare * others;
+          // A smooth peak rises to its top inside the run and falls again: the top stands
+          // above both of the run's ends by most of what the component changes over it. A
+          // clipped axis reads the range, drifting one way (or not at all): its top is at an
+          // end, or above both ends by no more than half its spread (docs/phone-lab.md,
+          // "Saturation"). The spread of a smooth peak's top shrinks as fewer samples catch
+          // it (at a browser's 50 Hz, under kPlateauShare of the others' swing), its shape
+          // does not.
+          const double higher_end =
+              sign * omega[i][c] > sign * omega[last][c] ? omega[i][c] : omega[last][c];
+          const double peak = sign > 0 ? hi[c] : lo[c];
+          const bool hump = sign * (peak - higher_end) > 0.5 * (hi[c] - lo[c]);
+          plateau = hi[c] - lo[c] <= kPlateauShare * others && !hump;
         }
         if (spike || plateau) {
           for (int k = i; k <= last; ++k) at_range[k] = true;

@@ -74,24 +74,6 @@ TEST(LoneFlight, IsFoundWithNoRestAndUnevenTimestampsAndFitsWithinFivePercent) {
 
 namespace fs = std::filesystem;
 
-/// ω of `recording` at time `at` (within its samples): a cubic Hermite curve through the samples
-/// with each one's slope from its neighbours and their own times.
-Eigen::Vector3d interpolated(const GyroRecording& recording, double at) {
-  const std::vector<double>& t = recording.t;
-  const std::vector<Eigen::Vector3d>& w = recording.omega;
-  const std::size_t n = t.size();
-  std::size_t i = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
-  i = std::clamp<std::size_t>(i, 1, n - 1) - 1;  // at in [t[i], t[i + 1]]
-  const auto slope = [&](std::size_t k) -> Eigen::Vector3d {
-    const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(n - 1, k + 1);
-    return (w[b] - w[a]) / (t[b] - t[a]);
-  };
-  const double h = t[i + 1] - t[i], s = (at - t[i]) / h;
-  const double h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
-  const double h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
-  return h00 * w[i] + h10 * h * slope(i) + h01 * w[i + 1] + h11 * h * slope(i + 1);
-}
-
 /// The middle 0.65 s cut from the longest flight the finder finds in real recording `name`,
 /// resampled at a nominal 415 Hz as some Android phones deliver it: most steps 1.4–2.8 ms, one in
 /// thirty 8–21 ms (seeded); or at its own 100 Hz stamps with `resample` false.
@@ -113,7 +95,7 @@ GyroRecording lone_real_flight(const std::string& name, unsigned seed, bool resa
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (double t = from; t <= to;) {
     cut.t.push_back(t);
-    cut.omega.push_back(interpolated(whole, t));
+    cut.omega.push_back(test::interpolated(whole, t));
     t += random() % 30 == 0 ? 0.008 + 0.013 * unit(random) : 0.0014 + 0.0014 * unit(random);
   }
   if (!resample) {

@@ -49,16 +49,19 @@ TEST(RigidRestart, KeepsTheLowestCostOfItsStartsInEveryOrder) {
   EXPECT_EQ(orders, 120);
 }
 
-// A suspect body: moments no rigid body has (I1 + I2 < I3), or a needle (I1/I3 < kNeedle); a
-// book's, a slab's, a box's are not.
+// A suspect body: moments no rigid body has (I1 + I2 < I3), a needle (I1/I3 < kNeedle), or at the
+// edge I2 = I3 where a fit from a poor start ends (I2/I3 > kAxisymmetricEdge); a book's, a slab's,
+// a box's are not.
 TEST(RigidRestart, ASuspectBodyIsPastTheTriangleInequalityOrANeedle) {
   const auto body = [](double i1, double i2) {
     Parameters p;
     p.log_ratios = {std::log(i1), std::log(i2)};
     return p;
   };
-  EXPECT_TRUE(suspect_body(body(0.3, 0.6)));    // 0.3 + 0.6 < 1
-  EXPECT_TRUE(suspect_body(body(0.05, 0.98)));  // a needle
+  EXPECT_TRUE(suspect_body(body(0.3, 0.6)));     // 0.3 + 0.6 < 1
+  EXPECT_TRUE(suspect_body(body(0.05, 0.98)));   // a needle
+  EXPECT_TRUE(suspect_body(body(0.45, 0.999)));  // at the edge I2 = I3
+  EXPECT_FALSE(suspect_body(body(0.45, 0.98)));
   for (const auto& [m1, m2] : kRigidStarts) EXPECT_FALSE(suspect_body(body(m1, m2)));
 }
 

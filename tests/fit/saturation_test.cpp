@@ -11,7 +11,9 @@
 
 #include "fit/flights.hpp"
 #include "fit/pool.hpp"
+#include "fit/recording.hpp"
 #include "fit/toss_fit.hpp"
+#include "real_recordings.hpp"
 #include "synthetic_recording.hpp"
 
 namespace bookspin::fit {
@@ -142,6 +144,57 @@ TEST(Saturation, ADriftingPlateauAtAStandardFullScaleIsFound) {
   EXPECT_NEAR(*found.range, 2000.0 * M_PI / 180.0, 1e-12);
   for (int i = 0; i < 60; ++i) EXPECT_EQ(found.at_range[i], i >= 24 && i < 36) << i;
   EXPECT_FALSE(find_saturation(pool_recordings({smooth})).range.has_value());
+}
+
+}  // namespace
+}  // namespace bookspin::fit
+
+namespace bookspin::fit {
+namespace {
+
+/// Every `every`-th sample of `recording` from sample `phase` on, between `from` and `to` s,
+/// pooled.
+GyroRecording thinned(const GyroRecording& recording, int every, int phase, double from,
+                      double to) {
+  GyroRecording out;
+  out.name = recording.name;
+  out.source = recording.source;
+  for (std::size_t i = static_cast<std::size_t>(phase); i < recording.t.size(); i += every)
+    if (recording.t[i] >= from && recording.t[i] <= to)
+      out.t.push_back(recording.t[i]), out.omega.push_back(recording.omega[i]);
+  return pool_recordings({out});
+}
+
+// The relation "fewer samples make no clip" (docs/phone-lab.md, "Saturation"): 12-13-51's flight
+// alone (2.241–3.234 s, its largest |ω_i| 17.6 rad/s, in the band of ±1000 °/s) holds a smooth
+// peak of ω_x, 17.3 → 17.52 → 17.3 rad/s over 0.17 s while y and z swing through 4 rad/s: at
+// 100 Hz it changes by 5.1 % of their swing, no plateau; every second or third sample of it (a
+// browser's 50 or 33 Hz, each phase) catches fewer of its low ends and changed by under 5 %, read
+// as a clip at 1000 °/s (8 samples of the flight left out of the fit, and the flight cut where a
+// late stamp fell beside them). A smooth peak stands above both ends of its run; a clip does not:
+// no thinning of the flight is a clip, and the drifting plateau of
+// ADriftingPlateauAtAStandardFullScaleIsFound, thinned alike, still is.
+TEST(Saturation, FewerSamplesOfASmoothPeakAreNoClip) {
+  REQUIRE_REAL_RECORDINGS();
+  const GyroRecording whole = read_recording(real_dir() / "12-13-51");
+  ASSERT_FALSE(find_saturation(thinned(whole, 1, 0, 2.241, 3.234)).range.has_value());
+  for (int every : {2, 3})
+    for (int phase = 0; phase < every; ++phase)
+      EXPECT_FALSE(find_saturation(thinned(whole, every, phase, 2.241, 3.234)).range.has_value())
+          << "every " << every << ", from " << phase;
+  GyroRecording plateau;
+  plateau.source = "plateau.csv";
+  for (int i = 0; i < 60; ++i) {
+    const double t = 0.01 * i, swing = 5.0 * std::sin(8.0 * t);
+    plateau.t.push_back(t);
+    plateau.omega.emplace_back(
+        i >= 24 && i < 36 ? 35.600 - 0.005 * (i - 24) : 33.0 - 0.1 * std::abs(i - 30), 3.0 + swing,
+        2.0 - swing);
+  }
+  for (int every : {2, 3})
+    for (int phase = 0; phase < every; ++phase)
+      EXPECT_TRUE(find_saturation(thinned(plateau, every, phase, 0.0, 1.0)).range.has_value())
+          << "every " << every << ", from " << phase;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // throw (a ramp with spikes), a catch (spikes, then rest), 100 Hz sampling with jitter, and
 // pauses. Written in each CSV dialect phyphox exports.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <cmath>
 #include <filesystem>
@@ -266,6 +267,24 @@ inline GyroRecording as_read(const SyntheticRecording& synthetic,
 inline GyroRecording as_recording(const SyntheticRecording& synthetic,
                                   const std::string& name = "synthetic") {
   return pool_recordings({as_read(synthetic, name)});
+}
+
+/// ω of `recording` at time `at` (within its samples): a cubic Hermite curve through the samples
+/// with each one's slope from its neighbours and their own times.
+inline Eigen::Vector3d interpolated(const GyroRecording& recording, double at) {
+  const std::vector<double>& t = recording.t;
+  const std::vector<Eigen::Vector3d>& w = recording.omega;
+  const std::size_t n = t.size();
+  std::size_t i = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin());
+  i = std::clamp<std::size_t>(i, 1, n - 1) - 1;  // at in [t[i], t[i + 1]]
+  const auto slope = [&](std::size_t k) -> Eigen::Vector3d {
+    const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(n - 1, k + 1);
+    return (w[b] - w[a]) / (t[b] - t[a]);
+  };
+  const double h = t[i + 1] - t[i], s = (at - t[i]) / h;
+  const double h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
+  const double h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
+  return h00 * w[i] + h10 * h * slope(i) + h01 * w[i + 1] + h11 * h * slope(i + 1);
 }
 
 }  // namespace bookspin::fit::test
