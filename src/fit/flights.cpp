@@ -9,6 +9,7 @@
 
 #include "common/errors.hpp"
 #include "common/number_text.hpp"
+#include "fit/flight_bridge.hpp"
 #include "fit/median.hpp"
 #include "fit/pool.hpp"
 #include "fit/saturation.hpp"
@@ -16,35 +17,22 @@
 namespace bookspin::fit {
 namespace {
 
-constexpr int kHalfWindow = 2;  // samples each side of the derivative's quadratic, at least
 constexpr double kHalfWindowTime = 0.005;  // s each side: more samples where they are denser
 constexpr double kGapFactor = 5.0;         // a step this many typical steps long is a gap
 // s: and longer than this. An Android phone delivering a nominal 415 Hz may leave 21 ms
 // between two samples inside a flight; the exact motion bridges that (a body at 35 rad/s turns
 // under 1 rad in 25 ms) and so does the derivative, taken with each sample's own dt.
 constexpr double kMinGap = 0.025;
-constexpr int kMinFitSamples = 10;
-constexpr int kIsolated = 2;  // samples: a run this short over the torque threshold is noise  // a
-                              // flight shorter than this cannot be fitted
-// A stretch over the bounds between two that keep within them, where the stamps lie off their
-// samples, is bridged where ω keeps |I ω| and ω·I ω across it within this share of their values
-// (docs/phone-lab.md, "Stamps off their samples"): a bare phone's flight re-stamped ±80 % of its
-// step needed 2.6 % at most, and 95 in 100 of its bridges 4.4 % with gyroscope gain and
-// cross-axis errors of 3 %; the hands of the development recordings, nearest, 12 % (the catch of
-// 12-13-01 re-timed by a browser at 53 Hz: 79 % within 31 ms).
-constexpr double kConserved = 0.08;
-// Such a stretch is at most what one stamp off its sample spoils (the samples whose derivative
-// window holds it), or any stretch whose neighbours are at most kBridgeTime apart.
-constexpr int kBridgeSamples = 2 * kHalfWindow + 1;
-constexpr double kBridgeTime = 0.05;  // s
-// A flight holding such a stretch is kept only as a rigid body's (rigid_bridge): its Euler
-// inertia's smallest moment over this share of the largest (no needle: rigid_restart.hpp's),
-// and the torque left on each of its pieces between bridges within kBridgeNoise times the
-// quietest piece's. Measured on the re-stamped lone flights of tests/fit/lone_flight_test.cpp:
-// the smallest moment 0.14 at least, the loudest piece 3.6 times the quietest at most. The
-// triangle inequality is not asked here: that inertia, from a derivative the stamps spoil, puts
-// a flat body's two smaller moments up to 25 % under the largest; the fitted body's is asked
-// (toss_flags.hpp).
+constexpr int kMinFitSamples = 10;  // a flight shorter than this cannot be fitted
+constexpr int kIsolated = 2;        // samples: a run this short over the torque threshold is noise
+// A flight holding a bridged stretch (flight_bridge.hpp) is kept only as a rigid body's
+// (rigid_bridge): its Euler inertia's smallest moment over this share of the largest (no needle:
+// rigid_restart.hpp's), and the torque left on each of its pieces between bridges within
+// kBridgeNoise times the quietest piece's. Measured on the re-stamped lone flights of
+// tests/fit/lone_flight_test.cpp: the smallest moment 0.14 at least, the loudest piece 3.6 times
+// the quietest at most. The triangle inequality is not asked here: that inertia, from a derivative
+// the stamps spoil, puts a flat body's two smaller moments up to 25 % under the largest; the fitted
+// body's is asked (toss_flags.hpp).
 constexpr double kBridgeNeedle = 0.1;
 constexpr double kBridgeNoise = 6.0;
 
@@ -113,55 +101,6 @@ std::vector<Eigen::Vector3d> without_bias(const GyroRecording& recording) {
 double torque_residual(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
                        const Eigen::Vector3d& w_dot) {
   return (I * w_dot + w.cross(I * w)).norm() / std::max(w.squaredNorm(), 1e-12);
-}
-
-/// Whether I is positive definite: |I ω| and ω·I ω then say where ω may be in free flight.
-bool positive_definite(const Eigen::Matrix3d& I) {
-  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues().minCoeff() > 0.0;
-}
-
-/// Whether samples from … to keep the two quantities a torque-free body keeps (docs/physics.md
-/// §8), |I ω| and ω·I ω, within kConserved of sample `from`'s: quantities of ω alone, which no
-/// time stamp enters, and which the hand's torque in a catch or a throw changes at once.
-bool conserved(const Eigen::Matrix3d& I, const std::vector<Eigen::Vector3d>& omega, int from,
-               int to) {
-  const Eigen::Vector3d L0 = I * omega[from];
-  const double l0 = L0.norm(), e0 = omega[from].dot(L0);
-  for (int k = from + 1; k <= to; ++k) {
-    const Eigen::Vector3d L = I * omega[k];
-    if (std::abs(L.norm() - l0) > kConserved * l0 ||
-        std::abs(omega[k].dot(L) - e0) > kConserved * e0)
-      return false;
-  }
-  return true;
-}
-
-/// Marks in `mask` (sample i at mask[i - offset]), within [first, last], each stretch of unmarked
-/// samples between two marked ones, of at most kBridgeSamples samples or with its neighbours at
-/// most kBridgeTime apart, each of its samples `allowed`, over which ω keeps |I ω| and ω·I ω
-/// (`conserved`) from the marked sample before it through kHalfWindow marked samples past it (a
-/// catch's first sample may still be the flight's; its next are not). Where stamps lie off their
-/// samples the derivative is off by as much, while a torque-free body's ω keeps on its way;
-/// every sample marked so is also marked in `bridged` (its derivative not to be trusted).
-template <class Allowed>
-void bridge_conserved(std::vector<char>& mask, int offset, int first, int last,
-                      std::vector<char>& bridged, const Eigen::Matrix3d& I,
-                      const std::vector<Eigen::Vector3d>& omega, const std::vector<double>& t,
-                      const Allowed& allowed) {
-  if (!positive_definite(I)) return;
-  const auto marked = [&](int i) { return mask[i - offset] != 0; };
-  for (int i = first + 1; i < last; ++i) {
-    if (marked(i) || !marked(i - 1)) continue;
-    int end = i;  // the first marked sample after the stretch
-    while (end <= last && !marked(end)) ++end;
-    bool bridge = end <= last && (end - i <= kBridgeSamples || t[end] - t[i - 1] <= kBridgeTime);
-    for (int k = i; k < end && bridge; ++k) bridge = allowed(k);
-    int reach = end;
-    while (bridge && reach < std::min(last, end + kHalfWindow) && marked(reach + 1)) ++reach;
-    if (bridge && conserved(I, omega, i - 1, reach))
-      for (int k = i; k < end; ++k) mask[k - offset] = bridged[k] = 1;
-    i = end;
-  }
 }
 
 /// Whether flight [first, last], holding samples bridged by bridge_conserved (`bridged`), is a
@@ -334,9 +273,9 @@ FlightSearch find_flights(const GyroRecording& recording, const FinderSettings& 
     // the body keeps |I ω| and ω·I ω across (bridge_conserved), I fitted on the runs long enough
     // to fit a flight. A catch between two runs changes both at once and is never bridged.
     std::fill(bridged.begin(), bridged.end(), 0);
-    const auto fast_and_unclipped = [&](int k) {
-      return !clipped[k] && omega[k].norm() >= settings.flight_omega;
-    };
+    std::vector<char> fast_and_unclipped(n);
+    for (int k = 0; k < n; ++k)
+      fast_and_unclipped[k] = !clipped[k] && omega[k].norm() >= settings.flight_omega;
     {
       std::vector<int> indices;
       for (const auto& [first, last] : runs(candidate, segs))

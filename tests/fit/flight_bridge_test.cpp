@@ -1,6 +1,8 @@
 // No wrong body reported clean (docs/phone-lab.md, "Stamps off their samples" and "Flags"): a
 // hand's swing that keeps |I ω| and ω·I ω joined on to a real flight, a recording whose clock runs
 // fast or slow, a body no rigid object has; and the bridge of the finder at a browser's rate.
+#include "fit/flight_bridge.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -358,6 +360,60 @@ TEST(FlightBridge, ABodyNoRigidObjectHasOrAClockOffItsRateIsNeverClean) {
   for (double& tau : slow.tau) tau *= 1.5;
   const std::string flag = toss_flag(slow, zero, Saturation{}, 0.01, phone.asDiagonal());
   EXPECT_NE(flag.find("a clock running fast or slow"), std::string::npos) << flag;
+}
+
+/// The bridge's own rule on a stretch of `stretch` unmarked samples (samples 10 …), its
+/// neighbours `gap` s apart, the samples 100 Hz apart elsewhere; ω a constant of one body
+/// (0.22 : 0.80 : 1) whose |I ω| drops by a fifth (a catch) from sample `catch_at` on; the
+/// stretch's samples evenly within the gap. Returns whether the stretch was bridged.
+bool bridged_over(int stretch, double gap, int catch_at) {
+  const Eigen::Matrix3d I = Eigen::Vector3d(0.22, 0.80, 1.0).asDiagonal();
+  const int n = 40, first_unmarked = 10, end = first_unmarked + stretch;
+  std::vector<double> t;
+  for (int i = 0; i < n; ++i) {
+    const double before = 0.01 * (first_unmarked - 1);  // the marked sample before the stretch
+    t.push_back(i < first_unmarked ? 0.01 * i
+                : i < end          ? before + gap * (i - first_unmarked + 1) / (stretch + 1)
+                                   : before + gap + 0.01 * (i - end));
+  }
+  std::vector<Eigen::Vector3d> omega(n, Eigen::Vector3d(1.0, 20.0, 1.2));
+  for (int i = catch_at; i < n; ++i) omega[i] *= 0.8;
+  std::vector<char> mask(n, 1), bridged(n, 0), allowed(n, 1);
+  for (int i = first_unmarked; i < end; ++i) mask[i] = 0;
+  bridge_conserved(mask, 0, 0, n - 1, bridged, I, omega, t, allowed);
+  const bool all =
+      std::all_of(mask.begin() + first_unmarked, mask.begin() + end, [](char m) { return m != 0; });
+  EXPECT_EQ(all, std::all_of(bridged.begin() + first_unmarked, bridged.begin() + end,
+                             [](char b) { return b != 0; }));
+  return all;
+}
+
+// The bridge's reach (flight_bridge.hpp): a catch that begins at the first sample after the
+// stretch, or at any sample the derivative window of that sample reaches (kHalfWindow more), is
+// never bridged into the flight, though the samples before it still keep |I ω| and ω·I ω; one
+// beginning further on is the next stretch's to judge, and the stretch is bridged. Stopping the
+// check at the first sample after the stretch bridges a catch beginning one or two samples on.
+TEST(FlightBridge, ACatchWithinTheDerivativesReachOfTheStretchIsNeverBridged) {
+  for (int stretch = 1; stretch <= kBridgeSamples; ++stretch) {
+    const int end = 10 + stretch;
+    for (int k = 0; k <= kHalfWindow; ++k)
+      EXPECT_FALSE(bridged_over(stretch, 0.01 * (stretch + 1), end + k))
+          << "a stretch of " << stretch << " bridged into a catch " << k << " samples after it";
+    EXPECT_TRUE(bridged_over(stretch, 0.01 * (stretch + 1), end + kHalfWindow + 1)) << stretch;
+    EXPECT_TRUE(bridged_over(stretch, 0.01 * (stretch + 1), 40)) << stretch;
+  }
+}
+
+// The bridge's length (flight_bridge.hpp): a stretch of few samples (at most kBridgeSamples) OR
+// one whose neighbours are close in time (at most kBridgeTime apart) is bridged, either alone
+// sufficing (a browser's 50–60 Hz puts 5 samples 80–100 ms apart, a phone's 415 Hz 12 samples
+// 30 ms apart); one that is neither is not.
+TEST(FlightBridge, AStretchOfFewSamplesOrAShortTimeIsBridgedEitherSufficing) {
+  EXPECT_TRUE(bridged_over(kBridgeSamples, 0.1, 40));  // few samples, a long time
+  EXPECT_TRUE(
+      bridged_over(2 * kBridgeSamples, 0.9 * kBridgeTime, 40));  // many samples, a short time
+  EXPECT_TRUE(bridged_over(1, 0.01, 40));
+  EXPECT_FALSE(bridged_over(kBridgeSamples + 1, 1.1 * kBridgeTime, 40));  // neither
 }
 
 }  // namespace
