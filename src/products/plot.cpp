@@ -33,6 +33,7 @@ cache::Outcome make_plot(const PlotJob& job) {
   return cache::make_cached(cached, job.freshness, [&] {
     const std::vector<analysis::RunFrames> runs = analysis::run_frames(job.scene, job.stop);
     const RgbaImage sheet = charts::plot_sheet_image(job.scene, runs, job.width, job.height);
+    stop_if_asked(job.stop, "plot files");  // the sheet drawn: a signal meanwhile still stops
     output::prepare_output_dir(layout.png.parent_path());
     output::write_png(layout.png, sheet);
     return cache::Made{{layout.png}};

@@ -27,8 +27,9 @@ struct PlotJob {
   int width = 1280;            ///< pixels
   int height = 800;            ///< pixels
   cache::Freshness freshness;  ///< --force, --verify (the PNG's hash) and the remake note
-  /// Polled before every frame of the run ("plot frames"): a signal throws Interrupted and the
-  /// earlier plot and its manifest stay as they were.
+  /// Polled before every frame of the run ("plot frames") and before the PNG goes in place
+  /// ("plot files"): a signal throws Interrupted and the earlier plot and its manifest stay as
+  /// they were.
   StopPoll stop;
 };
 

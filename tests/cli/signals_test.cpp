@@ -301,6 +301,11 @@ TEST_P(PlotSimulateSignal, StopsTheRunAndKeepsTheEarlierOutput) {
       words({"--set", "time.frames=100000", "--set", "time.steps_per_frame=300"});
   expect_stopped_cleanly(words({"plot", kFig09, "-o", out.string(), "--force"}) + long_run, kReport,
                          "plot frames", GetParam(), out, before);
+  // Signalled once the sheet is drawn (held there), before its PNG goes in place: drawing a long
+  // run's sheet takes seconds on a loaded machine, and without this poll the run went on, exit 0.
+  expect_stopped_cleanly(
+      words({"plot", kFig09, "-o", out.string(), "--force", "--set", "time.frames=2000"}), kHold,
+      "plot files", GetParam(), out, before);
 
   const fs::path csv = out / "fig09.csv";
   const CliResult simulated =
