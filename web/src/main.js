@@ -293,6 +293,9 @@ function startApp(wasm, engines) {
       address.write();
       readout();
     } else {
+      // The address at once (a new scene is a new history entry): Back tapped before the
+      // rebuild returns to the scene before, not out of the page.
+      address.write();
       rebuildAfterPaint();
     }
   });
