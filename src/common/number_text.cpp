@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include "common/errors.hpp"
@@ -221,19 +222,31 @@ std::optional<double> read_number(std::string_view text) {
   return value;
 }
 
-bool below_doubles(std::string_view text) {
+namespace {
+
+/// The value strtod reads from all of `text`, a decimal number as written (an optional sign,
+/// digits, '.', an exponent), out of the doubles' range or not; nullopt for other text.
+std::optional<double> decimal_value(std::string_view text) {
   std::string_view digits = text;
   if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
   if (digits.empty() ||
       !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') ||
       digits.find_first_not_of("0123456789.eE+-") != std::string_view::npos)
-    return false;
-  const std::string_view mantissa = digits.substr(0, digits.find_first_of("eE"));
-  if (mantissa.find_first_of("123456789") == std::string_view::npos) return false;  // a zero
+    return std::nullopt;
   const std::string copy(text);
   char* end = nullptr;
   const double value = std::strtod(copy.c_str(), &end);
-  return end == copy.c_str() + copy.size() && value == 0.0;
+  if (end != copy.c_str() + copy.size()) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
+bool below_doubles(std::string_view text) {
+  const std::optional<double> value = decimal_value(text);
+  if (!value || *value != 0.0) return false;
+  const std::string_view mantissa = text.substr(0, text.find_first_of("eE"));
+  return mantissa.find_first_of("123456789") != std::string_view::npos;  // not a zero
 }
 
 std::string out_of_range_reason(std::string_view text) {
@@ -243,16 +256,8 @@ std::string out_of_range_reason(std::string_view text) {
 }
 
 bool beyond_doubles(std::string_view text) {
-  std::string_view digits = text;
-  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
-  if (digits.empty() ||
-      !(std::isdigit(static_cast<unsigned char>(digits[0])) || digits[0] == '.') ||
-      digits.find_first_not_of("0123456789.eE+-") != std::string_view::npos)
-    return false;
-  const std::string copy(text);
-  char* end = nullptr;
-  const double value = std::strtod(copy.c_str(), &end);
-  return end == copy.c_str() + copy.size() && std::isinf(value);
+  const std::optional<double> value = decimal_value(text);
+  return value && std::isinf(*value);
 }
 
 }  // namespace bookspin
