@@ -18,6 +18,10 @@ style, layout and paint: what the DOM holds then is what that frame paints. Asse
     the plots drawn (window.explorer.framesDrawn(): software GL's frame is the heaviest part of
     a paint) come in later frames. Where the page drew the view in that frame, or did the work
     before the frame, the paint waits for it.
+Before Record, before Stop (recording, the live trace shown) and with a result shown, the
+Record/Stop button is on the screen where it is, wherever the lab is scrolled, and scrolling
+it into view as WebDriver's click and the bench do scrolls nothing: on a phone a scroll's frame
+just before the tap held up its answer.
 After the scene menu and the second method the runs are rebuilt once, later; two changes of the
 scene menu in one task (before the first's rebuild ran) end on the second's state.
 bench/tap_bench.py measures the same taps' durations (docs/performance.md, "Taps").
@@ -66,6 +70,43 @@ REBUILDS = "return window.explorer.rebuilds()"
 
 
 FAILURES = []
+
+
+# JavaScript: where Record/Stop is ([top, bottom] in the viewport, the lab's scroll) after
+# scrolling it into view as WebDriver's click and the bench do ({block: 'end'}, {block:
+# 'center'}), the lab's scroll first set to `arguments[0]` ('top', 'bottom' or null: as it is).
+STILL = """
+const lab = document.getElementById('lab'), b = document.getElementById('labRecord');
+if (arguments[0] === 'top') lab.scrollTop = 0;
+if (arguments[0] === 'bottom') lab.scrollTop = lab.scrollHeight;
+const at = () => { const r = b.getBoundingClientRect(); return [Math.round(r.top), Math.round(r.bottom), Math.round(lab.scrollTop)]; };
+const before = at();
+b.scrollIntoView({block: 'end', inline: 'nearest'});
+const end = at();
+b.scrollIntoView({block: 'center'});
+return [before, end, at(), innerHeight];
+"""
+
+
+def no_scroll_to(driver, where, scrolled=(None,)):
+    """Record/Stop on the screen without a scroll at `where` (docs/explorer.md, "Every tap
+    answered at once": a scroll's frame just before a tap delayed its answer): in the viewport,
+    at the same place wherever the lab is scrolled (each of `scrolled`), and scrolling it into
+    view (WebDriver's click, the bench) scrolls nothing."""
+    places, failed = set(), len(FAILURES)
+    for how in scrolled:
+        before, end, centre, height = driver.execute_script(STILL, how)
+        if not (0 <= before[0] and before[1] <= height):
+            FAILURES.append(f"{where} (lab scrolled {how or 'as it is'}): the button at {before[:2]} px, "
+                            f"outside the {height} px screen")
+        if end != before or centre != before:
+            FAILURES.append(f"{where} (lab scrolled {how or 'as it is'}): scrolling the button into view "
+                            f"scrolled the lab (top, bottom, scroll {before} -> {end}, {centre})")
+        places.add(tuple(before[:2]))
+    if len(places) > 1:
+        FAILURES.append(f"{where}: the button moves as the lab scrolls: {sorted(places)}")
+    if len(FAILURES) == failed:
+        print(f"{where}: the button at {sorted(places)} px, no scroll to reach it")
 
 
 def rebuilt_once(driver, where, before):
@@ -179,6 +220,7 @@ def main():
             # The lab's controls, a real recording's.
             override(driver, True)
             feed(driver, omega[0])
+            no_scroll_to(driver, "Record", (None, "bottom", "top"))
             first_frame(driver, "Record", "click", lambda: tap(driver, "#labRecord"),
                         "document.getElementById('labRecord').disabled && "
                         "document.getElementById('labRecordState').textContent.startsWith('asking')", LAB_WORK)
@@ -188,6 +230,7 @@ def main():
                 fail(f"Record: the recording did not start: {said!r}")
             feed_at_own_rate(driver, t, omega)
             driver.execute_script("window.explorer.before = window.explorer.labResult();")
+            no_scroll_to(driver, "Stop")
             first_frame(driver, "Stop", "click", lambda: tap(driver, "#labRecord"),
                         "document.getElementById('labRecord').textContent === 'fitting…' && "
                         "document.getElementById('labRecordState').textContent.includes('samples through')",
@@ -201,6 +244,7 @@ def main():
             if len(kept) != 1 or not kept[0]["ticked"] or kept[0]["samples"] < 10:
                 fail(f"Stop: the list holds {kept}, not the one recording, ticked")
             settle(driver)
+            no_scroll_to(driver, "Record with a result shown", (None, "bottom", "top"))
             row = "#labRecordList li:last-child"
             first_frame(driver, "a tick", "click", lambda: tap(driver, f"{row} input[type=checkbox]"),
                         f"!document.querySelector('{row} input[type=checkbox]').checked", LAB_WORK)

@@ -158,32 +158,50 @@ def in_page_words(line):
 # each chart: where it lies, against the panel's box and the window's width, and its font size.
 PANEL_TEXT = """
 const box = document.getElementById('labBox').getBoundingClientRect();
-const pieces = [], walker = document.createTreeWalker(document.getElementById('labBox'), NodeFilter.SHOW_TEXT);
-for (let n = walker.nextNode(); n; n = walker.nextNode()) {
-  if (!n.textContent.trim()) continue;
-  const range = document.createRange();
-  range.selectNodeContents(n);
-  for (const r of range.getClientRects())
-    if (r.width > 0 && r.height > 0)
-      pieces.push({text: n.textContent.trim().slice(0, 50), size: parseFloat(getComputedStyle(n.parentElement).fontSize),
-                   left: r.left, right: r.right, top: r.top, bottom: r.bottom, chart: false});
-}
-for (const c of document.querySelectorAll('#labBox canvas')) {
-  const r = c.getBoundingClientRect();
-  pieces.push({text: 'chart', size: 12, left: r.left, right: r.right, top: r.top, bottom: r.bottom, chart: true});
+// On a phone Record/Stop is in a bar fixed at the lab's foot over an opaque ground: what
+// scrolls under it is hidden there, not overlapped; scrolled to the panel's end, nothing is.
+const bar = document.getElementById('labRecordRow'), fixed = getComputedStyle(bar).position === 'fixed';
+const pieceRects = () => {
+  const pieces = [], walker = document.createTreeWalker(document.getElementById('labBox'), NodeFilter.SHOW_TEXT);
+  for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+    if (!n.textContent.trim()) continue;
+    const range = document.createRange();
+    range.selectNodeContents(n);
+    for (const r of range.getClientRects())
+      if (r.width > 0 && r.height > 0)
+        pieces.push({text: n.textContent.trim().slice(0, 50), size: parseFloat(getComputedStyle(n.parentElement).fontSize),
+                     left: r.left, right: r.right, top: r.top, bottom: r.bottom, chart: false, inBar: bar.contains(n)});
+  }
+  for (const c of document.querySelectorAll('#labBox canvas')) {
+    const r = c.getBoundingClientRect();
+    pieces.push({text: 'chart', size: 12, left: r.left, right: r.right, top: r.top, bottom: r.bottom, chart: true, inBar: false});
+  }
+  const b = bar.getBoundingClientRect();
+  const under = (p) => fixed && !p.inBar && p.bottom > b.top + 1 && p.top < b.bottom - 1 && p.right > b.left && p.left < b.right;
+  return [pieces.filter((p) => !under(p)), pieces.filter(under)];
+};
+const [pieces] = pieceRects();
+let underAtEnd = [];
+if (fixed) {
+  const lab = document.getElementById('lab'), was = lab.scrollTop;
+  lab.scrollTop = lab.scrollHeight;
+  underAtEnd = pieceRects()[1].map((p) => p.text);
+  lab.scrollTop = was;
 }
 return {box: {left: box.left, right: box.right, top: box.top, bottom: box.bottom},
-        width: document.documentElement.clientWidth, pieces};
+        width: document.documentElement.clientWidth, pieces, underAtEnd};
 """
 
 
 def panel_text_problems(driver):
     """What a reader cannot read in the lab's panel: text under 12 px, past the panel's box or
     the window's edges, or over other text or a chart (two pieces overlapping by more than a
-    pixel each way); a line each."""
+    pixel each way), or (a phone) still under the Record/Stop bar fixed at the lab's foot with
+    the panel scrolled to its end (what scrolls under the bar is hidden by its ground, not
+    overlapped); a line each."""
     state = driver.execute_script(PANEL_TEXT)
     box, width, pieces = state["box"], state["width"], state["pieces"]
-    problems = []
+    problems = [f"under the Record/Stop bar with the panel scrolled to its end: {t!r}" for t in state["underAtEnd"]]
     for p in pieces:
         if p["size"] < 12:
             problems.append(f"under 12 px ({p['size']} px): {p['text']!r}")

@@ -365,6 +365,10 @@ export class TossRecorder {
     for (const type of ['pointerup', 'pointercancel', 'pointerleave'])
       $('labRecord').addEventListener(type, () => { this.pressed = false; });
     $('labRecordFit').addEventListener('click', () => this.fitTicked());
+    // The bar's height, left free at the panel's foot where the bar is fixed there (a phone).
+    if (typeof ResizeObserver === 'function')
+      new ResizeObserver(() => $('lab').style.setProperty('--lab-bar', `${$('labRecordRow').offsetHeight}px`))
+        .observe($('labRecordRow'));
     document.addEventListener('visibilitychange', () => {
       if (document.hidden) {
         this.interrupt('the tab was hidden (a hidden page gets no readings)');
@@ -416,10 +420,17 @@ export class TossRecorder {
   }
 
   /** The button, the state line and the live trace `canvas` scrolled into the panel's view
-   * where any is out of it (a landscape phone: the trace was below the fold while recording). */
+   * where any is out of it (a landscape phone: the trace was below the fold while recording).
+   * Where the button is in the bar fixed at the lab's foot (a phone), the state line and the
+   * trace are scrolled above the bar, the bar itself not moved. */
   inView(canvas) {
-    const row = $('labRecordRow').getBoundingClientRect(), end = canvas.getBoundingClientRect();
-    if (row.top < 0 || end.bottom > innerHeight) $('labRecordRow').scrollIntoView({ block: 'start' });
+    const bar = $('labRecordRow'), row = bar.getBoundingClientRect(), end = canvas.getBoundingClientRect();
+    if (getComputedStyle(bar).position !== 'fixed') {
+      if (row.top < 0 || end.bottom > innerHeight) bar.scrollIntoView({ block: 'start' });
+      return;
+    }
+    const state = $('labRecordState').getBoundingClientRect();
+    if (state.top < 0 || end.bottom > row.top) $('lab').scrollBy(0, end.bottom - row.top + 8);
   }
 
   say(text, error = false) {

@@ -289,7 +289,9 @@ function startApp(wasm, engines) {
     // view, the sphere and the plots by the frame loop from the frame after (docs/explorer.md,
     // "Every tap answered at once").
     if (VIEW_CONTROLS.includes(id)) {
-      app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
+      // The speed moves nothing on the view (the frame loop's pace alone): no pose, no frame of
+      // the 3D view after its answer.
+      if (id !== 'speed') app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
       address.write();
       readout();
     } else {
