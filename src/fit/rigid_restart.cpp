@@ -14,6 +14,11 @@ bool suspect_body(const Parameters& p) {
   return m[0] + m[1] < m[2] || m[0] < kNeedle * m[2] || m[1] > kAxisymmetricEdge * m[2];
 }
 
+bool fitted_no_rigid_body(const Parameters& p) {
+  const Eigen::Vector3d m = p.moments();
+  return m[0] < 0.01 * m[2] || m[0] + m[1] < 0.95 * m[2];
+}
+
 void keep_lowest(JointFitted& fit, std::size_t starts,
                  const std::function<std::optional<JointFitted>(std::size_t)>& fit_from) {
   for (std::size_t i = 0; i < starts; ++i)

@@ -40,6 +40,13 @@ inline constexpr double kAxisymmetricEdge = 0.99;
 /// book's).
 bool suspect_body(const Parameters& p);
 
+/// Fitted moments far past any rigid body a phone is tossed beside: I1/I3 under 0.01 (a rod
+/// fifteen times longer than wide) or I1 + I2 under 0.95 I3 (docs/physics.md §11). Where the
+/// restarts from rigid bodies still end there, the cost is flat and where the fit stops (which
+/// needle) follows the solver's round-off: the page and the command line part. A body at the
+/// edges (a racquet's 0.1 : 0.9 : 1, suspect_body) is not this.
+bool fitted_no_rigid_body(const Parameters& p);
+
 /// One joint fit's outcome: its unknowns, its solve (Solved::cost, (rad/s)²) and the tosses
 /// whose drag rate it held at 0.
 struct JointFitted {
