@@ -65,8 +65,9 @@ void keep_lowest(JointFitted& fit, std::size_t starts,
 /// to a browser's ~55 Hz did; docs/phone-lab.md, "The fit") fitted again from each of
 /// kRigidStarts, its axes and ω0 started as the Euler start's; the lowest cost replaces `p`,
 /// `solved` and `rate_held` where it is lower (keep_lowest). A start that does not converge, runs
-/// past the exact motion's time horizon, or ends at a suspect body itself (where on a flat cost
-/// hangs on round-off: the page and the command line parted so) is passed over.
+/// past the exact motion's time horizon, or ends far from any rigid body (fitted_no_rigid_body:
+/// which needle, on a flat cost, hangs on round-off; the page and the command line parted so) is
+/// passed over.
 void refit_from_bodies(const std::vector<TossData>& data, const BiasFreedom& bias,
                        const FitSettings& settings, const GyroRecording& recording, Parameters& p,
                        Solved& solved, std::vector<bool>& rate_held);
