@@ -40,6 +40,13 @@ inline constexpr double kAxisymmetricEdge = 0.99;
 /// book's).
 bool suspect_body(const Parameters& p);
 
+/// Fitted moments far past any rigid body a phone is tossed beside: I1/I3 under 0.01 (a rod
+/// fifteen times longer than wide) or I1 + I2 under 0.95 I3 (docs/physics.md §11). Where the
+/// restarts from rigid bodies still end there, the cost is flat and where the fit stops (which
+/// needle) follows the solver's round-off: the page and the command line part. A body at the
+/// edges (a racquet's 0.1 : 0.9 : 1, suspect_body) is not this.
+bool fitted_no_rigid_body(const Parameters& p);
+
 /// One joint fit's outcome: its unknowns, its solve (Solved::cost, (rad/s)²) and the tosses
 /// whose drag rate it held at 0.
 struct JointFitted {
@@ -57,8 +64,10 @@ void keep_lowest(JointFitted& fit, std::size_t starts,
 /// A fit that ended at a suspect body (a local minimum its start led it to: a recording thinned
 /// to a browser's ~55 Hz did; docs/phone-lab.md, "The fit") fitted again from each of
 /// kRigidStarts, its axes and ω0 started as the Euler start's; the lowest cost replaces `p`,
-/// `solved` and `rate_held` where it is lower (keep_lowest). A start that does not converge, or
-/// runs past the exact motion's time horizon, is passed over.
+/// `solved` and `rate_held` where it is lower (keep_lowest). A start that does not converge, runs
+/// past the exact motion's time horizon, or ends far from any rigid body (fitted_no_rigid_body:
+/// which needle, on a flat cost, hangs on round-off; the page and the command line parted so) is
+/// passed over.
 void refit_from_bodies(const std::vector<TossData>& data, const BiasFreedom& bias,
                        const FitSettings& settings, const GyroRecording& recording, Parameters& p,
                        Solved& solved, std::vector<bool>& rate_held);

@@ -36,6 +36,9 @@ namespace bookspin::fit {
 namespace {
 
 constexpr double kStableDegrees = 25.0;
+constexpr const char* kNoRigidBody =
+    "the fit ends at no rigid body (I1/I3 under 0.01, or I1 + I2 under 0.95 I3) from every "
+    "start: the moments are not determined, no uncertainties and no predictions";
 constexpr double kPi = 3.14159265358979323846;
 
 /// Each flight's samples, its recording's bias removed, its times from its start; the samples
@@ -333,12 +336,29 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   if (found)
     widen_by_ends(data, p, end_shifts(search.flights, found), settings, rate_held, bias, correction,
                   body, sigmas);
+  // Moments the restarts left far past a rigid body (rigid_restart.hpp: no_rigid_body, a needle
+  // of I1/I3 under 0.01 or 5 % past the triangle inequality) lie where a flat cost let the
+  // solver stop: which needle follows its round-off, so the page and the command line part
+  // there. Their σ (the covariance of a degenerate body: I2/I3 ± 150 seen) and predictions
+  // (from folds as degenerate) are withheld, alike in both (docs/phone-lab.md, "The fit"). A
+  // body merely at the edges (a racquet's 0.1 : 0.9 : 1) keeps them.
+  const bool no_rigid_body = !fixed && fitted_no_rigid_body(p);
+  if (no_rigid_body) {
+    body.ratio_sigma.reset();
+    body.axis_sigma_deg.reset();
+    body.notes.push_back(kNoRigidBody);
+  }
   const std::optional<double> noise = rest_noise(recording, search);
   for (std::size_t k = 0; k < data.size(); ++k)
     result.tosses.push_back(toss_values(data, k, p, sigmas, residuals[k], search.flights[k],
                                         saturation, noise, settings.drag, body));
   std::vector<Prediction> predictions;
   for (std::size_t k = 0; k < data.size(); ++k) {
+    if (no_rigid_body) {
+      result.tosses[k].not_predicted = kNoRigidBody;
+      predictions.emplace_back();
+      continue;
+    }
     const PredictionInputs inputs{settings.drag, body.ratio_sigma,
                                   bias_sigma(result.parts.at(data[k].group))};
     predictions.push_back(predict(data, k, folds, search, settings, inputs, result.tosses, body));

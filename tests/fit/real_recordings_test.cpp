@@ -255,6 +255,7 @@ GyroRecording thinned_as_a_browser(const GyroRecording& recording, unsigned seed
 TEST(RealRecordings, ThinnedAsABrowserThinsItTheBodyIsTheFullRatesWithinTwoSigma) {
   REQUIRE_REAL_RECORDINGS();
   const std::pair<const char*, int> cases[] = {{"12-29-59", 8}, {"12-13-01", 2}, {"12-22-44", 2}};
+  int no_rigid_body = 0;
   for (const auto& [name, seeds] : cases) {
     const GyroRecording as_read = read_recording(real_dir() / name);
     const BodyEstimate full = fit_report(pool_recordings({as_read}), {}).result.body;
@@ -264,6 +265,17 @@ TEST(RealRecordings, ThinnedAsABrowserThinsItTheBodyIsTheFullRatesWithinTwoSigma
       const GyroRecording thin = thinned_as_a_browser(as_read, 1000u + seed);
       ASSERT_LT(thin.t.size(), as_read.t.size() * 2 / 3);
       const BodyEstimate body = fit_report(pool_recordings({thin}), {}).result.body;
+      // Or no rigid body from any start (I1/I3 under 0.01): then no σ, and the note says so
+      // (rigid_restart.hpp, fitted_no_rigid_body); in few of the thinnings.
+      if (!body.ratio_sigma && body.ratios[0] < 0.01 * body.ratios[2]) {
+        ++no_rigid_body;
+        EXPECT_NE(std::find_if(body.notes.begin(), body.notes.end(),
+                               [](const std::string& note) {
+                                 return note.find("no rigid body") != std::string::npos;
+                               }),
+                  body.notes.end());
+        continue;
+      }
       ASSERT_TRUE(body.ratio_sigma.has_value())
           << body.ratios.transpose() << " " << thin.t.size() << " samples";
       for (int i = 0; i < 2; ++i) {
@@ -273,6 +285,7 @@ TEST(RealRecordings, ThinnedAsABrowserThinsItTheBodyIsTheFullRatesWithinTwoSigma
       }
     }
   }
+  EXPECT_LE(no_rigid_body, 2) << "of 12 thinnings";
 }
 
 }  // namespace

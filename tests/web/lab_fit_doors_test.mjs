@@ -4,7 +4,11 @@
 // determined: a recording with no still stretch thinned as a browser thins it, a flight cut too
 // short to flip), which one it takes must not hang on the two solvers' round-off: both doors
 // refuse it alike, or give the same moments, the same flights, the same half periods (or none)
-// and the same flags, to 1e-6. Relation over 12-29-59 and 12-44-51 thinned with six seeds each,
+// and the same flags, to 1e-6, and σ within a factor 1.5 or both over a quarter of the ratio; or,
+// where a door's body is still far from rigid after the restarts (I1/I3 under 0.01), both so with
+// no σ and no prediction, the same tosses and flags (their numbers aside). Relation over
+// 12-29-59 and 12-44-51 thinned with six seeds each, seed 10 of 12-29-59 and seeds held out from
+// the fixes (31-34, 31-33),
 // and the longest flight of each of the seven development recordings cut to 0.35, 0.4 and 0.5 s,
 // and tests/fit/recordings/12-29-59-browser-55Hz.csv, where they parted (0.45 : 0.999 : 1 with
 // no σ against 0.55 : 0.57 : 1) before a fit at the edge I2 = I3 was fitted again from rigid
@@ -96,6 +100,10 @@ function cliFit(file) {
 }
 
 const number = (v) => (v === '' || v === null || v === undefined ? null : Number(v));
+const suspect = (body) => {
+  const [i1, i2] = [number(body.I1_over_I3), number(body.I2_over_I3)];
+  return i1 < 0.01 || i1 + i2 < 0.95;  // src/fit/rigid_restart.hpp, fitted_no_rigid_body
+};
 const close = (a, b) => (a === null && b === null) || (a !== null && b !== null && Math.abs(a - b) <= 1e-6 * Math.max(1, Math.abs(a)));
 
 test('the lab and bookspin fit agree on ill-conditioned tosses', async () => {
@@ -103,10 +111,14 @@ test('the lab and bookspin fit agree on ill-conditioned tosses', async () => {
   const files = [];
   // Thinned as a browser thins a 100 Hz recording: a poll each 1/55 s ± 30 %, the latest reading,
   // stamped when it arrives (up to 1 ms later).
+  // Seeds 1-6 of each, where the fixes were found; seed 10 of 12-29-59, where a restart's needle
+  // decided the page's body (a restart that ends at a suspect body is passed over); 31-34 and
+  // 31-33, held out: never looked at before the fixes.
+  const seeds = { '12-29-59': [1, 2, 3, 4, 5, 6, 10, 31, 32, 33, 34], '12-44-51': [1, 2, 3, 4, 5, 6, 31, 32, 33] };
   for (const name of ['12-29-59', '12-44-51']) {
     const { header, rows } = recording(name);
     const t = rows.map((r) => Number(r[0]));
-    for (let seed = 1; seed <= 6; ++seed) {
+    for (const seed of seeds[name]) {
       const u = random(seed);
       const kept = [];
       let last = -1;
@@ -135,6 +147,7 @@ test('the lab and bookspin fit agree on ill-conditioned tosses', async () => {
     }
   }
   const parted = [];
+  let suspects = 0;
   for (const file of files) {
     const name = file.split('/').pop();
     const cli = cliFit(file);
@@ -144,9 +157,38 @@ test('the lab and bookspin fit agree on ill-conditioned tosses', async () => {
       continue;
     }
     const differ = [];
+    // A body the restarts left far from rigid (src/fit/rigid_restart.hpp, fitted_no_rigid_body:
+    // I1/I3 under 0.01, or I1 + I2 under 0.95 I3) lies where a flat cost let each solver stop:
+    // which needle hangs on round-off.
+    // Then the same verdict: both suspect, neither with σ or a predicted half period, the same
+    // tosses and the same flags, their numbers aside.
+    if (suspect(cli.body) || suspect(page.body)) {
+      if (!suspect(cli.body) || !suspect(page.body)) differ.push(`a suspect body in one door: ${cli.body.I1_over_I3} : ${cli.body.I2_over_I3} against ${page.body.I1_over_I3} : ${page.body.I2_over_I3}`);
+      if (cli.body.I1_sigma !== '' || page.body.I1_sigma !== null) differ.push(`σ on a suspect body: ${cli.body.I1_sigma || 'none'} against ${page.body.I1_sigma ?? 'none'}`);
+      if (cli.tosses.length !== page.tosses.length) differ.push(`${cli.tosses.length} tosses against ${page.tosses.length}`);
+      cli.tosses.forEach((toss, k) => {
+        const other = page.tosses[k] || {};
+        if (toss.half_period_predicted !== '' || number(other.half_period_predicted) !== null) differ.push(`toss ${k + 1} predicted on a suspect body: ${toss.half_period_predicted || 'none'} against ${other.half_period_predicted ?? 'none'}`);
+        // The same flag, its numbers aside (a residual's share of |ω| is the needle's own).
+        const reason = (flag) => (flag || '').replace(/\d+(\.\d+)?/g, 'N');
+        if (reason(toss.flag) !== reason(other.flag)) differ.push(`toss ${k + 1} flag "${toss.flag}" against "${other.flag}"`);
+      });
+      if (differ.length) parted.push(`${name}: ${differ.join('; ')}`);
+      ++suspects;
+      continue;
+    }
     for (const column of ['I1_over_I3', 'I2_over_I3'])
       if (!close(number(cli.body[column]), number(page.body[column]))) differ.push(`${column} ${cli.body[column]} against ${page.body[column]}`);
     if ((cli.body.I1_sigma === '') !== (page.body.I1_sigma === null)) differ.push(`σ ${cli.body.I1_sigma || 'none'} against ${page.body.I1_sigma ?? 'none'}`);
+    // σ where both give it: within a factor 1.5, or both over a quarter of the ratio (the moments
+    // poorly determined; a fold fitted without a toss may end at a needle, and where hangs on
+    // round-off: docs/phone-lab.md, "The fit").
+    for (const i of [1, 2]) {
+      const a = number(cli.body[`I${i}_sigma`]), b = number(page.body[`I${i}_sigma`]), value = number(cli.body[`I${i}_over_I3`]);
+      if (a === null || b === null) continue;
+      const poor = Math.min(a, b) > 0.25 * value;
+      if (!poor && Math.max(a, b) > 1.5 * Math.min(a, b)) differ.push(`I${i}_sigma ${a} against ${b}`);
+    }
     if (cli.tosses.length !== page.tosses.length) differ.push(`${cli.tosses.length} tosses against ${page.tosses.length}`);
     cli.tosses.forEach((toss, k) => {
       const other = page.tosses[k] || {};
@@ -156,6 +198,7 @@ test('the lab and bookspin fit agree on ill-conditioned tosses', async () => {
     });
     if (differ.length) parted.push(`${name}: ${differ.join('; ')}`);
   }
-  assert.ok(files.length >= 30);
+  assert.ok(files.length >= 38);
+  console.log(`${files.length} recordings, ${suspects} of them fitted to a suspect body in a door`);
   assert.deepEqual(parted, [], `the doors part on ${parted.length} of ${files.length}:\n${parted.join('\n')}`);
 });
