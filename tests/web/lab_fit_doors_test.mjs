@@ -1,5 +1,5 @@
 // The lab's fit and `bookspin fit` on ill-conditioned tosses (docs/phone-lab.md, "Recording in the
-// page"): the page's WebAssembly module (web/build-wasm.sh, its objects cached in the build tree)
+// page"): the page's WebAssembly module (web/build.sh, its objects cached in the build tree)
 // and the command line given the same file. Where the fit can end at two places (moments poorly
 // determined: a recording with no still stretch thinned as a browser thins it, a flight cut too
 // short to flip), which one it takes must not hang on the two solvers' round-off: both doors
@@ -38,7 +38,8 @@ try {
 } catch {
   skip('em++ not found (apt-get install emscripten): the page\'s module is not built');
 }
-execFileSync('bash', [join(source, 'web/build-wasm.sh'), join(build, 'web')], { stdio: 'inherit' });
+// Through web/build.sh, under its lock: the browser tests build the same module at once.
+execFileSync('bash', [join(source, 'web/build.sh'), build], { stdio: 'inherit' });
 const BookspinPhysics = createRequire(import.meta.url)(join(build, 'web', 'bookspin_physics.js'));
 
 const work = mkdtempSync(join(tmpdir(), 'bookspin-lab-fit-doors-'));
