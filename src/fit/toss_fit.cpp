@@ -336,9 +336,9 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   if (found)
     widen_by_ends(data, p, end_shifts(search.flights, found), settings, rate_held, bias, correction,
                   body, sigmas);
-  // Moments the restarts left far past a rigid body (rigid_restart.hpp: no_rigid_body, a needle
-  // of I1/I3 under 0.01 or 5 % past the triangle inequality) lie where a flat cost let the
-  // solver stop: which needle follows its round-off, so the page and the command line part
+  // Moments the restarts left far past a rigid body (rigid_restart.hpp's fitted_no_rigid_body:
+  // a needle of I1/I3 under 0.01, or 5 % past the triangle inequality) lie where a flat cost let
+  // the solver stop: which needle follows its round-off, so the page and the command line part
   // there. Their σ (the covariance of a degenerate body: I2/I3 ± 150 seen) and predictions
   // (from folds as degenerate) are withheld, alike in both (docs/phone-lab.md, "The fit"). A
   // body merely at the edges (a racquet's 0.1 : 0.9 : 1) keeps them.
