@@ -4,7 +4,7 @@ JOBS ?= $(shell nproc)
 SCENES := $(wildcard scenes/*.toml)
 SWEEPS := $(wildcard sweeps/*.toml)
 
-.PHONY: all deps configure build bookspin wheel npm figures test check render bench bench-explorer bench-taps update-goldens clean
+.PHONY: all deps configure build bookspin class wheel npm figures test check render bench bench-explorer bench-taps update-goldens clean
 all: build
 
 deps:
@@ -21,6 +21,16 @@ build: configure
 # built by `make test` and `make bench`, so a first `make figures` does not wait for them.
 bookspin: configure
 	cmake --build $(BUILD) -j $(JOBS) --target bookspin
+
+# The class server (docs/class.md, "The teacher's steps"): the program, the Python module the
+# class's pooled fit runs in and the page the phones get (out/explorer.html, written where it is
+# missing or older than the page's program), then the command that starts the class.
+class: bookspin
+	cmake --build $(BUILD) -j $(JOBS) --target bookspin_python
+	bash web/build.sh $(BUILD)
+	@if [ ! -f out/explorer.html ] || [ $(BUILD)/web/explorer-shell.html -nt out/explorer.html ]; then \
+	  echo "$(BUILD)/bookspin explore scenes/*.toml -o out"; $(BUILD)/bookspin explore scenes/*.toml -o out; fi
+	@echo "class: ready: $(BUILD)/bookspin-class starts the class (docs/class.md, \"The teacher's steps\")"
 
 # The Python wheel (docs/python.md, "The wheel"): BUILD/dist/bookspin-VERSION-cp311-*.whl, the
 # module with its stub and the flipcheck scenarios, packed offline; pip installs it anywhere.

@@ -16,7 +16,8 @@ packages=(
   chromium chromium-driver python3-selenium poppler-utils
   pybind11-dev python3-numpy python3-pytest python3-tqdm python3-pip python3-venv python3-setuptools
   python3-wheel jupyter-nbconvert python3-ipykernel python3-matplotlib
-  python3-aiohttp python3-psycopg python3-segno python3-cryptography postgresql-15
+  python3-aiohttp python3-psycopg python3-segno python3-cryptography python3-psutil python3-idna
+  postgresql-15
   slurm-wlm munge
   emscripten
 )

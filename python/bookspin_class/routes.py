@@ -280,14 +280,24 @@ class ClassServer:
     async def explorer(self, request):
         return web.FileResponse(self.page, headers={"Cache-Control": "no-cache"})
 
+    async def front(self, request):
+        """`/`, the short address a student types: the join form of the class being taught
+        (302 to its phones' address, docs/class.md "The teacher's steps"); the page alone
+        where no class is taught (ended)."""
+        if self.taught and self.store.class_exists(self.taught):
+            raise web.HTTPFound(self.join_url(self.taught)[len(self.join_base):],
+                                headers={"Cache-Control": "no-store"})
+        return await self.explorer(request)
+
     integrity_errors = ()
     max_tosses = 100
+    taught = None  # the code of the class this server was started for
 
 
 def add_routes(app, server):
     from bookspin_class import join_screen
     r = app.router
-    r.add_get("/", server.explorer)
+    r.add_get("/", server.front)
     r.add_get("/explorer.html", server.explorer)
     r.add_get("/teacher", server.teacher_login)
     r.add_post("/api/class/{code}/join", server.join)

@@ -1,19 +1,31 @@
 """`bookspin-class` (docs/class.md): the teacher's one command. Reads its options (a bad one:
-one line naming it, exit 2, nothing written), opens the store, resumes the latest class or
-starts one, prints the phones' address, the class code and the teacher's address with its key,
-and serves https until Ctrl-C. Data older than --keep-days is deleted at start and daily."""
+one line naming it, exit 2, nothing written), binds its port, locks and opens the store, goes on
+with the class it taught last (or one chosen, or a new one), writes the teacher's address to
+DATA/teacher-address.txt (never to the terminal, which a projector may mirror), prints the
+phones' address and the class code, and serves https until Ctrl-C. A start that cannot serve
+leaves the store and DATA as it found them. Data older than --keep-days is deleted at start and
+daily."""
 import argparse
 import asyncio
+import errno
+import ipaddress
+import os
 import pathlib
 import secrets
 import signal
 import socket
 import sys
+import time
 import traceback
-
-from aiohttp import web
+import webbrowser
 
 PROGRAM = "bookspin-class"
+# The packages the server imports, by the Debian package that installs each
+# (scripts/install-deps.sh).
+PACKAGES = {"numpy": "python3-numpy", "aiohttp": "python3-aiohttp", "psycopg": "python3-psycopg",
+            "segno": "python3-segno", "cryptography": "python3-cryptography",
+            "psutil": "python3-psutil", "idna": "python3-idna"}
+WILDCARDS = ("0.0.0.0", "::")
 
 
 class OptionError(Exception):
@@ -24,17 +36,43 @@ class StoreError(Exception):
     """The store could not be opened (a PostgreSQL that does not answer, a folder not writable)."""
 
 
+class StartError(Exception):
+    """The server cannot serve: `line` says why and what to do; `status` is the exit status
+    (2 an option to change, 1 the machine's state)."""
+
+    def __init__(self, line, status):
+        super().__init__(line)
+        self.status = status
+
+
 class Parser(argparse.ArgumentParser):
     def error(self, message):
         raise OptionError(message)
 
 
+def page_problem(page):
+    """Why `page` is not a page to serve phones (missing, empty, not UTF-8 HTML), or None."""
+    if not page.is_file():
+        return f"no such file {page}"
+    data = page.read_bytes()
+    if not data:
+        return f"{page} is empty"
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        return f"{page} is not an HTML page (not UTF-8 text)"
+    if "\0" in text or not text.lstrip().lower().startswith(("<!doctype html", "<html")):
+        return f"{page} is not an HTML page (it does not begin with <!doctype html>)"
+    return None
+
+
 def parse_options(argv):
+    from bookspin_class import addresses
     parser = Parser(prog=PROGRAM, description="Serve the phone lab to a class and show its "
                     "tosses, fitted as one body, on the projector (docs/class.md).")
     parser.add_argument("--data", default="bookspin-class", metavar="DIR",
-                        help="folder of the class's SQLite database and certificates "
-                             "(default: ./bookspin-class)")
+                        help="folder of the class's SQLite database, certificates and the "
+                             "teacher's address (default: ./bookspin-class)")
     parser.add_argument("--postgres", metavar="URL",
                         help="keep the class in this PostgreSQL database instead of SQLite "
                              "(postgresql://USER@HOST/DB)")
@@ -42,15 +80,21 @@ def parse_options(argv):
     parser.add_argument("--host", default="0.0.0.0", metavar="ADDR",
                         help="address to listen on (default 0.0.0.0: every interface)")
     parser.add_argument("--address", metavar="ADDR",
-                        help="the address phones use (default: this laptop's own on the "
-                             "classroom's network)")
+                        help="the address phones use, a host name or an IP (default: this "
+                             "laptop's own on the classroom's network; the others are listed)")
     parser.add_argument("--page", default="out/explorer.html", metavar="FILE",
-                        help="the explorer page phones get, as `bookspin explore` writes it "
+                        help="the explorer page phones get, as `make class` writes it "
                              "(default out/explorer.html)")
     parser.add_argument("--keep-days", default="7", metavar="N",
                         help="delete classes older than N days, at start and daily (default 7)")
     parser.add_argument("--new", action="store_true",
-                        help="start a new class (default: go on with the latest)")
+                        help="start a new class (default: go on with the class taught last)")
+    parser.add_argument("--class", dest="class_code", metavar="CODE",
+                        help="go on with this class of the store (--list lists them)")
+    parser.add_argument("--list", action="store_true",
+                        help="list the store's classes and exit")
+    parser.add_argument("--open", action="store_true",
+                        help="open the projector in this laptop's browser")
     parser.add_argument("--rate", default="20", metavar="R",
                         help="requests a second per phone, on average (default 20; 3R at once)")
     parser.add_argument("--max-tosses", default="100", metavar="N",
@@ -73,71 +117,266 @@ def parse_options(argv):
     options.rate = number("--rate", options.rate, float, 0.1, 10000)
     options.max_tosses = number("--max-tosses", options.max_tosses, int, 1, 100000)
     options.head_timeout = number("--head-timeout", options.head_timeout, float, 0.1, 600)
-    page = pathlib.Path(options.page)
-    if not page.is_file():
-        raise OptionError(f"--page: no such file {page} (`bookspin explore SCENE -o out` "
-                          "writes out/explorer.html)")
-    if options.postgres is not None and not options.postgres.startswith(("postgresql:",
-                                                                           "postgres:")):
-        raise OptionError(f"--postgres: expected a URL postgresql://…, got '{options.postgres}'")
+    if not options.data:
+        raise OptionError("--data: empty: give the class's folder, e.g. --data bookspin-class")
     data = pathlib.Path(options.data)
     if data.exists() and not data.is_dir():
         raise OptionError(f"--data: {data} is not a folder")
+    if options.postgres is not None and not options.postgres.startswith(("postgresql:",
+                                                                           "postgres:")):
+        raise OptionError(f"--postgres: expected a URL postgresql://…, got '{options.postgres}'")
+    if options.list:
+        return options
+    problem = page_problem(pathlib.Path(options.page))
+    if problem:
+        raise OptionError(f"--page: {problem} (`make class` writes out/explorer.html, the page "
+                          "phones get)")
+    if not options.host:
+        raise OptionError("--host: empty: give an address of this laptop, e.g. --host 0.0.0.0 "
+                          "(every interface)")
+    if options.address is not None:
+        try:
+            options.address = addresses.host_option(options.address)
+        except ValueError as error:
+            raise OptionError(f"--address: {error}") from None
+    if options.class_code is not None:
+        options.class_code = "".join(options.class_code.split()).upper()
+        if not options.class_code:
+            raise OptionError("--class: empty: give a class's code (--list lists them)")
+        if options.new:
+            raise OptionError("--class: a class to go on with, or --new: not both")
     return options
 
 
-def lan_address():
-    """This laptop's address on its network: the source address of a route to a documentation
-    address (a UDP socket connected, nothing sent); 127.0.0.1 where there is none."""
-    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as probe:
-        try:
-            probe.connect(("192.0.2.1", 9))
-            return probe.getsockname()[0]
-        except OSError:
-            return "127.0.0.1"
+def import_error_line(error):
+    """The line that says which piece is missing and the command that puts it in place."""
+    top = (error.name or "").split(".")[0]
+    build = os.environ.get("BOOKSPIN_CLASS_BUILD")  # set by BUILD/bookspin-class
+    if top == "bookspin":
+        if not build:
+            return ("the bookspin Python module is not on PYTHONPATH: start the server with "
+                    "build/bookspin-class, which sets it (`make class` builds it)")
+        make = "make class" if pathlib.Path(build).resolve() == pathlib.Path("build").resolve() \
+            else f"make class BUILD={build}"
+        return (f"the bookspin Python module is not built in {build}/python: `{make}` builds it "
+                "and the page the phones get")
+    if top in PACKAGES:
+        return (f"{PACKAGES[top]} is not installed (no module '{error.name}'): "
+                "scripts/install-deps.sh installs it")
+    return f"the bookspin Python module does not load ({error}): `make class` builds it again"
 
 
-def open_store(options):
-    from bookspin_class import store
+def check_imports(options):
+    """Imports, here on the main thread, what the server needs: the fit (PYTHONPATH=
+    BUILD/python, as the launcher sets) and numpy, whose first array would otherwise be imported
+    in a worker thread while the event loop starts another (a deadlock on the import lock), and
+    the packages. Raises ImportError."""
+    import aiohttp  # noqa: F401
+    import bookspin  # noqa: F401
+    import cryptography  # noqa: F401
+    import numpy  # noqa: F401
+    import segno  # noqa: F401
     if options.postgres:
-        return store.open_postgres(options.postgres)
-    pathlib.Path(options.data).mkdir(parents=True, exist_ok=True)
-    return store.open_sqlite(pathlib.Path(options.data) / "class.sqlite3")
+        import psycopg  # noqa: F401
 
 
-async def serve(options, stop):
-    from bookspin_class import limits, routes, store, tls
-    data = pathlib.Path(options.data)
+def open_store(options, create=True):
+    """The store; None for --list where the SQLite file is not there yet. Raises StoreError."""
+    from bookspin_class import store
+    path = pathlib.Path(options.data) / "class.sqlite3"
     try:
-        db = open_store(options)
+        if options.postgres:
+            return store.open_postgres(options.postgres)
+        if not create and not path.is_file():
+            return None
+        return store.open_sqlite(path)
     except Exception as error:  # the driver's own error, whichever driver: one line, exit 1
-        raise StoreError(str(error).strip().splitlines()[0] if str(error).strip() else
-                         type(error).__name__) from None
-    data.mkdir(parents=True, exist_ok=True)
-    keep_seconds = options.keep_days * 86400.0
-    for code in db.delete_older_than(keep_seconds):
-        print(f"{PROGRAM}: deleted class {code}: older than {options.keep_days:g} days",
+        line = str(error).strip().splitlines()[0] if str(error).strip() else \
+            type(error).__name__
+        raise StoreError(line if options.postgres else f"{path}: {line}") from None
+
+
+def list_classes(options):
+    """--list: every class of the store, one a line, the one taught last marked."""
+    from bookspin_class import data_folder
+    db = open_store(options, create=False)
+    if db is None:
+        print(f"{PROGRAM}: no classes: {options.data} holds no store yet", flush=True)
+        return
+    try:
+        rows = db.class_list()
+    finally:
+        db.close()
+    taught = data_folder.DataFolder(options.data).taught()
+    count = f"{len(rows)} class" if len(rows) == 1 else f"{len(rows)} classes"
+    print(f"{PROGRAM}: {count} in {db.description} (--class CODE goes on with one)", flush=True)
+    for code, created, students, tosses in rows:
+        started = time.strftime("%Y-%m-%d %H:%M", time.localtime(created))
+        print(f"  {code}  started {started}  {students} student{'s' * (students != 1)}  "
+              f"{tosses} toss{'es' * (tosses != 1)}{'  (taught last)' * (code == taught)}",
               flush=True)
-    latest = None if options.new else db.latest_class()
-    if latest is None:
-        code, key = routes.new_class_code(), secrets.token_urlsafe(24)
-        while db.class_exists(code):
-            code = routes.new_class_code()
-        db.add_class(code, key)
-        started = "started"
-    else:
-        (code, key), started = latest, "goes on"
-    address = options.address or lan_address()
-    names = [address] + [n for n in ("127.0.0.1", "localhost") if n != address]
-    context, ca_file = tls.server_context(data, names)
-    rate = limits.RateLimit(options.rate, 3 * options.rate)
-    limits.HeadDeadlineHandler.head_seconds = options.head_timeout
-    host_part = f"[{address}]" if ":" in address else address
-    server = routes.ClassServer(db, f"https://{host_part}:{options.port}",
-                                pathlib.Path(options.page), rate)
-    server.ca_file = ca_file
-    server.integrity_errors = store.integrity_errors()
-    server.max_tosses = options.max_tosses
+
+
+def bind(options):
+    """The listening socket, bound before anything is written. Raises StartError."""
+    try:
+        found = socket.getaddrinfo(options.host, options.port, type=socket.SOCK_STREAM,
+                                   flags=socket.AI_PASSIVE)
+    except socket.gaierror as error:
+        raise StartError(f"--host: {options.host!r} does not resolve ({error.strerror}): give "
+                         "an address of this laptop, e.g. --host 0.0.0.0 (every interface)",
+                         2) from None
+    family, _, _, _, address = found[0]
+    try:
+        return socket.create_server(address, family=family, backlog=256, dualstack_ipv6=(
+            family == socket.AF_INET6 and options.host == "::" and socket.has_dualstack_ipv6()))
+    except OSError as error:
+        if error.errno == errno.EADDRINUSE:
+            raise StartError(f"--port: {options.port} is in use by another program (another "
+                             "bookspin-class?): stop it, or choose another --port", 1) from None
+        if error.errno == errno.EADDRNOTAVAIL:
+            raise StartError(f"--host: {options.host} is not an address of this laptop (`ip "
+                             "addr` lists them; --host 0.0.0.0 listens on every one)",
+                             2) from None
+        if error.errno == errno.EACCES:
+            raise StartError(f"--port: {options.port} needs root (a port under 1024): choose "
+                             "1024 or over, e.g. --port 8443", 2) from None
+        raise StartError(f"--host {options.host} --port {options.port}: cannot listen: "
+                         f"{error.strerror}", 1) from None
+
+
+def phones_address(options):
+    """(the address phones are sent to, [the laptop's other addresses], whether phones can reach
+    any): --address, else --host where it is one address, else the best of the laptop's
+    interfaces (addresses.reachable_addresses), else 127.0.0.1."""
+    from bookspin_class import addresses
+    if options.address:
+        return options.address, [], True
+    if options.host not in WILDCARDS:
+        try:
+            host = ipaddress.ip_address(options.host)
+            return str(host), [], not host.is_loopback
+        except ValueError:
+            pass
+    found = addresses.reachable_addresses()
+    if not found:
+        return "127.0.0.1", [], False
+    return found[0].address, found[1:], True
+
+
+def teacher_host(options, address):
+    """The host of the teacher's address, opened on this laptop: 127.0.0.1 where the server
+    listens on every interface or on loopback."""
+    if options.host in WILDCARDS or options.host in ("127.0.0.1", "localhost"):
+        return "127.0.0.1"
+    return address
+
+
+def url_host(host):
+    return f"[{host}]" if ":" in host else host
+
+
+async def start(options, folder):
+    """Binds, locks DATA, opens the store, chooses the class, makes the certificate and writes
+    the teacher's address: (runner, the state to serve) ready. On any failure what was made is
+    removed (the caller's folder.undo()) and nothing is added to the store."""
+    from aiohttp import web
+    from bookspin_class import data_folder, limits, routes, store, tls
+    sock = bind(options)
+    db = None
+    try:
+        try:
+            folder.open()
+        except data_folder.InUse as error:
+            by = f" (process {error.pid})" if error.pid else ""
+            raise StartError(f"--data: {folder.path} is in use by another bookspin-class{by}: "
+                             "stop it first, or give another --data", 1) from None
+        except OSError as error:
+            raise StartError(f"--data: cannot make {folder.path}: {error.strerror}", 1) from None
+        db = open_store(options)
+        where = "--postgres" if options.postgres else "--data"
+        keep_seconds = options.keep_days * 86400.0
+        expired = {code for code, created, _, _ in db.class_list()
+                   if created < time.time() - keep_seconds}
+        if options.class_code:
+            code = options.class_code
+            if code in expired or not db.class_exists(code):
+                raise StartError(f"--class: no class {code} in {db.description} (--list lists "
+                                 "them)", 2)
+        elif options.new:
+            code = None
+        else:
+            taught = folder.taught()
+            latest = db.latest_class()
+            code = taught if taught and taught not in expired and db.class_exists(taught) \
+                else latest and latest[0] not in expired and latest[0] or None
+        if code is None:
+            code, key, started = routes.new_class_code(), secrets.token_urlsafe(24), "started"
+            while db.class_exists(code):
+                code = routes.new_class_code()
+        else:
+            key, started = db.teacher_key(code), "goes on"
+        if not db.claim_class(code):
+            raise StartError(f"{where}: class {code} is served by another bookspin-class on "
+                             "this database: stop it, or --new starts another class", 1)
+
+        address, others, reachable = phones_address(options)
+        laptop = teacher_host(options, address)
+        names = list(dict.fromkeys([address, laptop, "127.0.0.1", "localhost"]))
+        context, ca_file = tls.server_context(folder.path, names)
+        teacher_url = f"https://{url_host(laptop)}:{options.port}/teacher?key={key}"
+        folder.write(data_folder.TEACHER_ADDRESS, teacher_url + "\n")
+        if options.open:
+            folder.write(data_folder.PROJECTOR_PAGE, (
+                f'<!doctype html><meta charset="utf-8"><meta http-equiv="refresh" content="0; '
+                f'url={teacher_url}"><title>bookspin class {code}</title>'
+                f'<p><a href="{teacher_url}">The projector of class {code}</a>\n'))
+        folder.write(data_folder.TAUGHT, code + "\n")
+        if started == "started":
+            try:
+                db.add_class(code, key)
+            except Exception as error:  # the driver's own error (a full disk): one line
+                raise StartError(f"{where}: cannot store the new class: "
+                                 f"{str(error).strip() or type(error).__name__}", 1) from None
+
+        rate = limits.RateLimit(options.rate, 3 * options.rate)
+        limits.HeadDeadlineHandler.head_seconds = options.head_timeout
+        server = routes.ClassServer(db, f"https://{url_host(address)}:{options.port}",
+                                    pathlib.Path(options.page), rate)
+        server.ca_file = ca_file
+        server.integrity_errors = store.integrity_errors()
+        server.max_tosses = options.max_tosses
+        server.taught = code
+        app = web.Application(middlewares=[guard_middleware(options, rate)],
+                              client_max_size=limits.MAX_BODY)
+        routes.add_routes(app, server)
+        runner = limits.GuardedRunner(app, keepalive_timeout=15.0, access_log=None)
+        try:
+            await runner.setup()
+            await web.SockSite(runner, sock, ssl_context=context, shutdown_timeout=1.0,
+                               backlog=256).start()
+        except BaseException:
+            if started == "started":
+                db.delete_class(code)
+            await runner.cleanup()
+            raise
+    except BaseException:
+        sock.close()
+        if db is not None:
+            db.close()
+        raise
+    for old in sorted(expired):
+        db.delete_class(old)
+        print(f"{PROGRAM}: deleted class {old}: older than {options.keep_days:g} days",
+              flush=True)
+    return runner, server, (code, started, address, others, reachable)
+
+
+def guard_middleware(options, rate):
+    """Every request: the rate limit, errors as {"error": …} (docs/class.md, "The API"), a
+    bug as a 500 in one line with the trace on the terminal, and two safe headers."""
+    from aiohttp import web
+    from bookspin_class import limits
 
     @web.middleware
     async def guard(request, handler):
@@ -167,27 +406,55 @@ async def serve(options, stop):
         response.headers.setdefault("Referrer-Policy", "no-referrer")
         return response
 
-    app = web.Application(middlewares=[guard], client_max_size=limits.MAX_BODY)
-    routes.add_routes(app, server)
-    runner = limits.GuardedRunner(app, keepalive_timeout=15.0, access_log=None)
-    await runner.setup()
-    site = web.TCPSite(runner, options.host, options.port, ssl_context=context,
-                       shutdown_timeout=1.0, backlog=256)
-    await site.start()
-    print(f"{PROGRAM}: class {code} {started} ({db.description})", flush=True)
+    return guard
+
+
+def announce(options, folder, server, chosen):
+    """The terminal's lines: everything but the teacher's key, which a projector mirroring the
+    laptop's screen would show the class (docs/class.md, "The teacher's steps")."""
+    from bookspin_class import data_folder
+    code, started, address, others, reachable = chosen
+    address_file = folder.path / data_folder.TEACHER_ADDRESS
+    print(f"{PROGRAM}: class {code} {started} ({server.store.description})", flush=True)
     print(f"  phones join:  {server.join_url(code)}", flush=True)
     print(f"  class code:   {code}", flush=True)
-    print(f"  projector:    https://127.0.0.1:{options.port}/teacher?key={key}  "
-          "(on this laptop; the key is the teacher's alone)", flush=True)
-    print(f"  certificate:  https://{host_part}:{options.port}/ca.pem  (docs/class.md)",
-          flush=True)
-    for known in db.class_codes():
+    if options.open and webbrowser.open((folder.path / data_folder.PROJECTOR_PAGE).resolve()
+                                        .as_uri()):
+        print(f"  projector:    opened in this laptop's browser (its address, with the "
+              f"teacher's key, is in {address_file})", flush=True)
+    else:
+        why = "no browser found: " if options.open else ""
+        print(f"  projector:    {why}open the address in {address_file} on this laptop (it "
+              "holds the teacher's key: not shown here; --open opens it)", flush=True)
+    print(f"  certificate:  {server.join_base}/ca.pem  (docs/class.md)", flush=True)
+    if others:
+        listed = ", ".join(f"{a.address} ({a.interface})" for a in others)
+        print(f"  other addresses: {listed}: --address ADDR sends phones to one", flush=True)
+    if not reachable:
+        print(f"{PROGRAM}: NO ADDRESS PHONES CAN REACH: this laptop has {address} alone (a "
+              "network of its own, loopback); join the classroom's Wi-Fi or start the "
+              "laptop's hotspot, then start again (or give --address)", flush=True)
+    print(f"  Ctrl-C stops the server; started again on this store it goes on with class "
+          f"{code}", flush=True)
+
+
+async def serve(options, stop):
+    from bookspin_class import data_folder
+    folder = data_folder.DataFolder(options.data)
+    try:
+        runner, server, chosen = await start(options, folder)
+    except BaseException:
+        folder.undo()
+        raise
+    announce(options, folder, server, chosen)
+    for known in server.store.class_codes():
         server.fit_of(known).request()  # the held tosses fitted again after a restart
+    keep_seconds = options.keep_days * 86400.0
 
     async def daily():
         while True:
             await asyncio.sleep(86400.0)
-            for old in db.delete_older_than(keep_seconds):
+            for old in server.store.delete_older_than(keep_seconds):
                 server.fits.pop(old, None)
                 print(f"{PROGRAM}: deleted class {old}: older than {options.keep_days:g} "
                       "days", flush=True)
@@ -196,25 +463,29 @@ async def serve(options, stop):
     await stop.wait()
     retention.cancel()
     await runner.cleanup()
-    db.close()
+    server.store.close()
 
 
 def main(argv):
+    os.umask(0o077)  # the store, keys and addresses readable by the teacher's account alone
     try:
         options = parse_options(argv)
+        if not options.list:
+            check_imports(options)
     except OptionError as error:
         print(f"{PROGRAM}: error: {error}", file=sys.stderr)
         return 2
-    try:
-        # The fit (PYTHONPATH=BUILD/python, as the launcher sets) and numpy, imported here on
-        # the main thread: the module's first array would otherwise import numpy in a worker
-        # thread while the event loop starts another, which deadlocks on the import lock.
-        import bookspin  # noqa: F401
-        import numpy  # noqa: F401
     except ImportError as error:
-        print(f"{PROGRAM}: error: the bookspin Python module is not found ({error}); run "
-              "BUILD/bookspin-class, which sets PYTHONPATH", file=sys.stderr)
+        print(f"{PROGRAM}: error: {import_error_line(error)}", file=sys.stderr)
         return 2
+    where = "--postgres" if options.postgres else "--data"
+    if options.list:
+        try:
+            list_classes(options)
+        except StoreError as error:
+            print(f"{PROGRAM}: error: {where}: cannot open the store: {error}", file=sys.stderr)
+            return 1
+        return 0
 
     async def run():
         stop = asyncio.Event()
@@ -225,11 +496,15 @@ def main(argv):
 
     try:
         asyncio.run(run())
+    except StartError as error:
+        print(f"{PROGRAM}: error: {error}", file=sys.stderr)
+        return error.status
     except StoreError as error:
-        where = "--postgres" if options.postgres else "--data"
         print(f"{PROGRAM}: error: {where}: cannot open the store: {error}", file=sys.stderr)
         return 1
     except OSError as error:
-        print(f"{PROGRAM}: error: {error}", file=sys.stderr)
+        path = f" {error.filename}" if error.filename else ""
+        print(f"{PROGRAM}: error: cannot write{path}: {error.strerror or error}",
+              file=sys.stderr)
         return 1
     return 0

@@ -3,6 +3,7 @@ file in the teacher's folder, the default) or PostgreSQL (by URL), one schema an
 statements for both. Each write is committed before it returns, so a toss a phone was told is
 held survives a SIGKILL of the server. Times are seconds since the epoch (UTC)."""
 import hashlib
+import os
 import sqlite3
 import threading
 import time
@@ -32,6 +33,11 @@ SCHEMA = [
          excluded TEXT,
          UNIQUE (class_code, seq))""",
 ]
+
+
+# The first key of the PostgreSQL advisory locks that mark a class as served (claim_class),
+# the second the hash of its code: "bksc" in ASCII.
+CLASS_LOCK_SPACE = 0x626B7363
 
 
 def recording_sha256(csv):
@@ -106,6 +112,23 @@ class Store:
 
     def class_codes(self):
         return [r[0] for r in self._all("SELECT code FROM classes ORDER BY created")]
+
+    def class_list(self):
+        """Every class in the store, oldest first: (code, created in seconds since the epoch,
+        students, tosses)."""
+        return self._all("SELECT c.code, c.created, "
+                         "(SELECT COUNT(*) FROM students s WHERE s.class_code = c.code), "
+                         "(SELECT COUNT(*) FROM tosses t WHERE t.class_code = c.code) "
+                         "FROM classes c ORDER BY c.created, c.code")
+
+    def claim_class(self, code):
+        """Whether this server may serve the class: on PostgreSQL this session's advisory lock
+        on the class's code, held until the connection closes (False where another server
+        holds it); on SQLite always True (the data folder's lock guards the file)."""
+        if self.marker == "?":
+            return True
+        return bool(self._all(f"SELECT pg_try_advisory_lock({CLASS_LOCK_SPACE}, hashtext(?))",
+                              (code,))[0][0])
 
     def delete_class(self, code):
         """Ends a class: its tosses, students and itself deleted (children first, so that no
@@ -212,13 +235,22 @@ class Store:
 
 def open_sqlite(path):
     """The default store: an SQLite file (WAL journal, synchronous=FULL: a commit is on disk
-    when it returns)."""
+    when it returns), made if missing; the file and its -wal and -shm readable and writable by
+    this account alone (0600; docs/class.md, "What is kept")."""
     connection = sqlite3.connect(str(path), check_same_thread=False, isolation_level=None)
-    connection.execute("PRAGMA journal_mode=WAL")
-    connection.execute("PRAGMA synchronous=FULL")
-    connection.execute("PRAGMA foreign_keys=ON")
-    connection.isolation_level = ""  # transactions begin implicitly again; commit() ends them
-    return Store(connection, "?", f"SQLite {path}")
+    try:
+        connection.execute("PRAGMA journal_mode=WAL")
+        connection.execute("PRAGMA synchronous=FULL")
+        connection.execute("PRAGMA foreign_keys=ON")
+        connection.isolation_level = ""  # transactions begin implicitly again; commit() ends them
+        store = Store(connection, "?", f"SQLite {path}")
+    except BaseException:
+        connection.close()
+        raise
+    for suffix in ("", "-wal", "-shm"):
+        if os.path.exists(f"{path}{suffix}"):
+            os.chmod(f"{path}{suffix}", 0o600)
+    return store
 
 
 def open_postgres(url):

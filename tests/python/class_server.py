@@ -9,6 +9,7 @@ import json
 import os
 import pathlib
 import pwd
+import queue
 import shutil
 import signal
 import socket
@@ -16,6 +17,7 @@ import sqlite3
 import ssl
 import subprocess
 import sys
+import threading
 import time
 import uuid
 
@@ -44,42 +46,94 @@ def free_port():
 
 
 class Server:
-    """A bookspin-class process on 127.0.0.1, its printed code and key, and clients."""
+    """A bookspin-class process on 127.0.0.1, its printed lines and code, the teacher's key
+    (read from DATA/teacher-address.txt: the server never prints it), and clients.
 
-    def __init__(self, data, page, postgres=None, extra=(), port=None):
+    `address` is the --address given (None: none, the server picks one); `host` the --host;
+    `prefix` a command the server runs under (e.g. `ip netns exec NAME`); `env` variables added
+    to the server's environment."""
+
+    def __init__(self, data, page, postgres=None, extra=(), port=None, address="127.0.0.1",
+                 host="127.0.0.1", prefix=(), env=None):
         self.data, self.page, self.postgres = pathlib.Path(data), page, postgres
         self.extra, self.port = list(extra), port or free_port()
+        self.address, self.host, self.prefix = address, host, list(prefix)
+        self.env = dict(env or {})
         self.process = None
 
-    def start(self, new=False):
-        env = dict(os.environ)
-        env["PYTHONPATH"] = os.pathsep.join(
-            [str(SOURCE_DIR / "python")] + [p for p in env.get("PYTHONPATH", "").split(os.pathsep)
-                                            if p])
-        args = [sys.executable, "-m", "bookspin_class", "--data", str(self.data), "--host",
-                "127.0.0.1", "--address", "127.0.0.1", "--port", str(self.port), "--page",
-                str(self.page), *self.extra]
+    def command(self, new=False):
+        """The server's command line."""
+        args = [*self.prefix, sys.executable, "-m", "bookspin_class", "--data", str(self.data),
+                "--host", self.host, "--port", str(self.port), "--page", str(self.page)]
+        if self.address is not None:
+            args += ["--address", self.address]
+        args += self.extra
         if self.postgres:
             args += ["--postgres", self.postgres]
         if new:
             args.append("--new")
-        self.process = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                        text=True, env=env)
+        return args
+
+    def environment(self):
+        env = dict(os.environ)
+        env["PYTHONPATH"] = os.pathsep.join(
+            [str(SOURCE_DIR / "python")] + [p for p in env.get("PYTHONPATH", "").split(os.pathsep)
+                                            if p])
+        env.update(self.env)
+        return env
+
+    def start(self, new=False):
+        """Starts the server and reads its lines up to "Ctrl-C stops …" (a server of before
+        that line: up to its certificate's); its output goes on into self.output."""
+        self.process = subprocess.Popen(self.command(new), stdout=subprocess.PIPE,
+                                        stderr=subprocess.PIPE, text=True,
+                                        env=self.environment())
+        self.output, arrived = [], queue.Queue()
+
+        def drain(stream):
+            for line in stream:
+                self.output.append(line.rstrip("\n"))
+                arrived.put(line.rstrip("\n"))
+            arrived.put(None)
+
+        threading.Thread(target=drain, args=(self.process.stdout,), daemon=True).start()
         lines, self.before = [], []
-        while len(lines) < 5:
-            line = self.process.stdout.readline()
-            if not line:
+        while not lines or not lines[-1].startswith("  Ctrl-C stops"):
+            last = lines and lines[-1].startswith("  certificate:")
+            try:
+                line = arrived.get(timeout=5 if last else 600)
+            except queue.Empty:
+                break
+            if line is None:
                 raise AssertionError(f"the server ended: {lines} {self.process.stderr.read()}")
             if line.startswith("bookspin-class: class ") or lines:
-                lines.append(line.rstrip("\n"))
+                lines.append(line)
             else:
-                self.before.append(line.rstrip("\n"))
+                self.before.append(line)
         self.lines = lines
-        self.code = lines[2].split()[-1]
-        self.key = lines[3].split("key=")[1].split()[0]
+        self.code = self.line("class code:").split()[-1]
+        address_file = self.data / "teacher-address.txt"
+        if address_file.is_file():
+            self.key = address_file.read_text(encoding="utf-8").strip().split("key=")[1]
+        else:  # a server of before the key left the terminal (test_class_start.py says so)
+            self.key = self.line("projector:").split("key=")[1].split()[0]
         self.context = ssl.create_default_context(
             cafile=str(self.data / "tls" / "bookspin-class-ca.pem"))
         return self
+
+    def run(self, new=False, timeout=60):
+        """Runs the server's command to its end (one that is refused): (exit status, stdout,
+        stderr)."""
+        done = subprocess.run(self.command(new), capture_output=True, text=True,
+                              env=self.environment(), timeout=timeout)
+        return done.returncode, done.stdout, done.stderr
+
+    def line(self, label):
+        """The printed line that begins with `label` (after its indent), without the label."""
+        found = [line.strip()[len(label):].strip() for line in self.lines
+                 if line.strip().startswith(label)]
+        assert found, (label, self.lines)
+        return found[0]
 
     def kill(self):
         self.process.send_signal(signal.SIGKILL)
