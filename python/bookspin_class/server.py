@@ -156,8 +156,10 @@ def import_error_line(error):
         if not build:
             return ("the bookspin Python module is not on PYTHONPATH: start the server with "
                     "build/bookspin-class, which sets it (`make class` builds it)")
-        make = "make class" if pathlib.Path(build).resolve() == pathlib.Path("build").resolve() \
-            else f"make class BUILD={build}"
+        source = pathlib.Path(__file__).resolve().parents[2]
+        make = "make" if source == pathlib.Path.cwd().resolve() else f"make -C {source}"
+        make += " class" if pathlib.Path(build).resolve() == source / "build" else \
+            f" class BUILD={build}"
         return (f"the bookspin Python module is not built in {build}/python: `{make}` builds it "
                 "and the page the phones get")
     if top in PACKAGES:
