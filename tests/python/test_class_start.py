@@ -262,8 +262,9 @@ def in_namespace(name, function):
 
 def test_on_the_laptops_hotspot_phones_are_sent_to_its_address(tmp_path, page, servers):
     """A hotspot: one interface (10.42.0.1/24), no default route, a container's bridge
-    (docker0, no container on it) beside it. The address printed, in the class's state and in its QR code is 10.42.0.1, the bridge's
-    is listed, and a phone's HTTPS client verifying the class's CA reaches the server there."""
+    (docker0, no container on it) beside it. The address printed, in the class's state and in
+    its QR code is 10.42.0.1, the bridge's is listed, and a phone's HTTPS client verifying the
+    class's CA reaches the server there."""
     with network_namespace({"wlan0": ("dummy", "10.42.0.1/24"),
                             "docker0": ("bridge", "172.17.0.1/16")}) as name:
         server = servers(Server(tmp_path / "data", page, address=None, host="0.0.0.0",
