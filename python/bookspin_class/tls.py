@@ -31,28 +31,25 @@ def _name(common):
                       x509.NameAttribute(NameOID.ORGANIZATION_NAME, "bookspin class")])
 
 
-def _general_names(addresses):
-    """x509 names of `addresses` (IPs or ASCII host names), as a certificate's SAN lists them."""
+def _general_names(addresses, ip=ipaddress.ip_address):
+    """x509 names of `addresses` (IPs or ASCII host names): each IP through `ip` (ip_address for
+    a certificate's SAN, ip_network for a constraint: the address alone, /32 or /128), each host
+    name a DNSName."""
     names = []
     for address in addresses:
         try:
-            names.append(x509.IPAddress(ipaddress.ip_address(address)))
+            names.append(x509.IPAddress(ip(address)))
         except ValueError:
             names.append(x509.DNSName(address))
     return names
 
 
 def _constraints(addresses):
-    """The CA's NameConstraints: each IP alone (a /32 or /128 network) and each host name, and
-    nothing else. localhost is always among them, so that DNS names are constrained too (a
-    type with no permitted subtree would be unconstrained, RFC 5280 4.2.1.10)."""
-    permitted = []
-    for address in addresses:
-        try:
-            permitted.append(x509.IPAddress(ipaddress.ip_network(address)))
-        except ValueError:
-            permitted.append(x509.DNSName(address))
-    return x509.NameConstraints(permitted_subtrees=permitted, excluded_subtrees=None)
+    """The CA's NameConstraints: each of `addresses` alone, nothing else. localhost is always
+    among them, so that DNS names are constrained too (a type with no permitted subtree would
+    be unconstrained, RFC 5280 4.2.1.10)."""
+    return x509.NameConstraints(permitted_subtrees=_general_names(addresses, ipaddress.ip_network),
+                                excluded_subtrees=None)
 
 
 def make_authority(addresses, now):
