@@ -11,12 +11,11 @@ import shutil
 
 LOCK = "server.lock"
 TEACHER_ADDRESS = "teacher-address.txt"
-PROJECTOR_PAGE = "projector.html"
 TAUGHT = "class-taught.txt"
 # The files a server writes into DATA (and everything under DATA/tls/): what a start that
 # cannot serve removes again when it made them.
 OWN_FILES = ("class.sqlite3", "class.sqlite3-wal", "class.sqlite3-shm", "class.sqlite3-journal",
-             LOCK, TEACHER_ADDRESS, PROJECTOR_PAGE, TAUGHT)
+             LOCK, TEACHER_ADDRESS, TAUGHT)
 
 
 class InUse(Exception):

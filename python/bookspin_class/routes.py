@@ -99,8 +99,8 @@ class ClassServer:
         if auth.startswith("Bearer "):
             key = auth[len("Bearer "):]
         if not key:
-            raise refuse(401, "the teacher's key is needed (open the teacher's address the "
-                              "server printed)")
+            raise refuse(401, "the teacher's key is needed (open the teacher's address, in "
+                              "DATA/teacher-address.txt on the teacher's laptop)")
         expected = self.store.teacher_key(code)
         if expected is None:
             raise refuse(404, f"no class with code {code}")

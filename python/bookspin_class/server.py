@@ -183,11 +183,6 @@ async def start(options, folder):
         context, ca_file = tls.server_context(folder.path, names)
         teacher_url = f"https://{url_host(laptop)}:{options.port}/teacher?key={key}"
         folder.write(data_folder.TEACHER_ADDRESS, teacher_url + "\n")
-        if options.open:
-            folder.write(data_folder.PROJECTOR_PAGE, (
-                f'<!doctype html><meta charset="utf-8"><meta http-equiv="refresh" content="0; '
-                f'url={teacher_url}"><title>bookspin class {code}</title>'
-                f'<p><a href="{teacher_url}">The projector of class {code}</a>\n'))
         folder.write(data_folder.TAUGHT, code + "\n")
         if started == "started":
             try:
@@ -286,8 +281,7 @@ def announce(options, folder, server, chosen):
     print(f"{PROGRAM}: class {code} {started} ({server.store.description})", flush=True)
     print(f"  phones join:  {server.join_url(code)}", flush=True)
     print(f"  class code:   {code}", flush=True)
-    if options.open and open_in_browser((folder.path / data_folder.PROJECTOR_PAGE).resolve()
-                                        .as_uri()):
+    if options.open and open_in_browser(address_file.read_text(encoding="utf-8").strip()):
         print(f"  projector:    opened in this laptop's browser (its address, with the "
               f"teacher's key, is in {address_file})", flush=True)
     else:
