@@ -103,22 +103,28 @@ def bind(options):
 
 
 def phones_address(options):
-    """(the address phones are sent to, [the laptop's other addresses], whether phones can reach
-    any): --address, else --host where it is one address, else the best of the laptop's
+    """(the address phones are sent to, [the laptop's other addresses], why phones cannot reach
+    it or None): --address, else --host where it is one address, else the best of the laptop's
     interfaces (addresses.reachable_addresses), else 127.0.0.1."""
     from bookspin_class import addresses
     if options.address:
-        return options.address, [], True
+        return options.address, [], None
     if options.host not in WILDCARDS:
         try:
             host = ipaddress.ip_address(options.host)
-            return str(host), [], not host.is_loopback
         except ValueError:
-            pass
+            host = None
+        if host is not None and host.is_loopback:
+            return str(host), [], (f"the server listens on --host {host}, this laptop alone; "
+                                   "--host 0.0.0.0 listens on every interface")
+        if host is not None:
+            return str(host), [], None
     found = addresses.reachable_addresses()
     if not found:
-        return "127.0.0.1", [], False
-    return found[0].address, found[1:], True
+        return "127.0.0.1", [], ("this laptop has no network but its own (loopback, "
+                                 "127.0.0.1); join the classroom's Wi-Fi or start the laptop's "
+                                 "hotspot, then start again (or give --address)")
+    return found[0].address, found[1:], None
 
 
 def teacher_host(options, address):
@@ -177,7 +183,7 @@ async def start(options, folder):
             raise StartError(f"{where}: class {code} is served by another bookspin-class on "
                              "this database: stop it, or --new starts another class", 1)
 
-        address, others, reachable = phones_address(options)
+        address, others, unreachable = phones_address(options)
         laptop = teacher_host(options, address)
         names = list(dict.fromkeys([address, laptop, "127.0.0.1", "localhost"]))
         context, ca_file = tls.server_context(folder.path, names)
@@ -221,7 +227,7 @@ async def start(options, folder):
         db.delete_class(old)
         print(f"{PROGRAM}: deleted class {old}: older than {options.keep_days:g} days",
               flush=True)
-    return runner, server, (code, started, address, others, reachable)
+    return runner, server, (code, started, address, others, unreachable)
 
 
 def guard_middleware(options, rate):
@@ -276,7 +282,7 @@ def announce(options, folder, server, chosen):
     """The terminal's lines: everything but the teacher's key, which a projector mirroring the
     laptop's screen would show the class (docs/class.md, "The teacher's steps")."""
     from bookspin_class import data_folder
-    code, started, address, others, reachable = chosen
+    code, started, address, others, unreachable = chosen
     address_file = folder.path / data_folder.TEACHER_ADDRESS
     print(f"{PROGRAM}: class {code} {started} ({server.store.description})", flush=True)
     print(f"  phones join:  {server.join_url(code)}", flush=True)
@@ -292,10 +298,8 @@ def announce(options, folder, server, chosen):
     if others:
         listed = ", ".join(f"{a.address} ({a.interface})" for a in others)
         print(f"  other addresses: {listed}: --address ADDR sends phones to one", flush=True)
-    if not reachable:
-        print(f"{PROGRAM}: NO ADDRESS PHONES CAN REACH: this laptop has {address} alone (a "
-              "network of its own, loopback); join the classroom's Wi-Fi or start the "
-              "laptop's hotspot, then start again (or give --address)", flush=True)
+    if unreachable:
+        print(f"{PROGRAM}: NO ADDRESS PHONES CAN REACH: {unreachable}", flush=True)
     print(f"  Ctrl-C stops the server; started again on this store it goes on with class "
           f"{code}", flush=True)
 
