@@ -145,7 +145,7 @@ def test_the_first_command_names_what_is_missing_and_the_command_that_builds_it(
     done = subprocess.run(["make", "-n", "class", f"BUILD={empty}"], cwd=SOURCE_DIR,
                           capture_output=True, text=True, timeout=60)
     assert done.returncode == 0, done.stderr
-    assert f"--target bookspin_python" in done.stdout
+    assert "--target bookspin_python" in done.stdout
     assert f"web/build.sh {empty}" in done.stdout and "bookspin explore" in done.stdout
     assert f"{empty}/bookspin-class starts the class" in done.stdout
     readme = (SOURCE_DIR / "README.md").read_text().split("```")[1]
