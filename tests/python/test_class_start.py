@@ -22,7 +22,6 @@ import subprocess
 import sys
 import tempfile
 import threading
-import time
 
 import pytest
 
@@ -38,7 +37,7 @@ except ImportError as missing_package:
     pytest.skip(f"the class server's packages are missing ({missing_package}): "
                 "scripts/install-deps.sh", allow_module_level=True)
 
-from class_server import Postgres, Server, free_port, in_ci
+from class_server import Postgres, Server, in_ci
 from conftest import EXE, SOURCE_DIR
 
 ERROR = "bookspin-class: error: "
