@@ -58,6 +58,7 @@ class DataFolder:
         self.found = set()     # the server's own files there before this start
         self.lock_file = None  # the open lock file, held while the server runs
         self.opened = False    # open() noted what the folder held
+        self.saved = {}        # the small files' contents then (the addresses, tls/), by name
 
     def _own_files(self):
         names = {name for name in OWN_FILES if (self.path / name).exists()}
@@ -77,6 +78,8 @@ class DataFolder:
             self.path.mkdir(mode=0o700, parents=True)
             self.made = True
         self.found = self._own_files()
+        self.saved = {name: (self.path / name).read_bytes() for name in self.found
+                      if name in (TEACHER_ADDRESS, TAUGHT) or name.startswith("tls/")}
         self.opened = True
         if self.made or self.found & {"class.sqlite3", "tls"}:
             self.path.chmod(0o700)
@@ -95,7 +98,8 @@ class DataFolder:
 
     def undo(self):
         """Removes what this start made (the folder, or the server's files that were not there
-        before) and lets go of the lock; what was there before stays."""
+        before), writes back the small files it rewrote (the teacher's address, the class
+        taught, the certificates) and lets go of the lock."""
         if self.lock_file is not None:
             os.close(self.lock_file)
             self.lock_file = None
@@ -110,6 +114,10 @@ class DataFolder:
                 shutil.rmtree(path, ignore_errors=True)
             else:
                 path.unlink(missing_ok=True)
+        for name, data in self.saved.items():  # rewritten by this start: written back
+            path = self.path / name
+            if not path.is_file() or path.read_bytes() != data:
+                write_private(path, data)
 
     def taught(self):
         """The code of the class this folder served last, or None."""

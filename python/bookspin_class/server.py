@@ -11,6 +11,7 @@ import ipaddress
 import os
 import pathlib
 import secrets
+import shutil
 import signal
 import socket
 import sys
@@ -50,7 +51,12 @@ def open_store(options, create=True):
     except Exception as error:  # the driver's own error, whichever driver: one line, exit 1
         line = str(error).strip().splitlines()[0] if str(error).strip() else \
             type(error).__name__
-        raise StoreError(line if options.postgres else f"{path}: {line}") from None
+        if options.postgres:
+            raise StoreError(line) from None
+        free = shutil.disk_usage(path.parent).free if path.parent.is_dir() else None
+        if free is not None and free < 1 << 20:  # SQLite says "disk I/O error" for some
+            line += f" (the disk is full: {free // 1024} KiB free)"
+        raise StoreError(f"{path}: {line}") from None
 
 
 def list_classes(options):

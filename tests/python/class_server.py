@@ -51,11 +51,13 @@ class Server:
 
     `address` is the --address given (None: none, the server picks one); `host` the --host;
     `prefix` a command the server runs under (e.g. `ip netns exec NAME`); `env` variables added
-    to the server's environment."""
+    to the server's environment; `seen_at` the data folder as this process sees it, where the
+    server sees it elsewhere (a mount namespace of its own)."""
 
     def __init__(self, data, page, postgres=None, extra=(), port=None, address="127.0.0.1",
-                 host="127.0.0.1", prefix=(), env=None):
+                 host="127.0.0.1", prefix=(), env=None, seen_at=None):
         self.data, self.page, self.postgres = pathlib.Path(data), page, postgres
+        self.seen_at = pathlib.Path(seen_at or data)
         self.extra, self.port = list(extra), port or free_port()
         self.address, self.host, self.prefix = address, host, list(prefix)
         self.env = dict(env or {})
@@ -112,13 +114,13 @@ class Server:
                 self.before.append(line)
         self.lines = lines
         self.code = self.line("class code:").split()[-1]
-        address_file = self.data / "teacher-address.txt"
+        address_file = self.seen_at / "teacher-address.txt"
         if address_file.is_file():
             self.key = address_file.read_text(encoding="utf-8").strip().split("key=")[1]
         else:  # a server of before the key left the terminal (test_class_start.py says so)
             self.key = self.line("projector:").split("key=")[1].split()[0]
         self.context = ssl.create_default_context(
-            cafile=str(self.data / "tls" / "bookspin-class-ca.pem"))
+            cafile=str(self.seen_at / "tls" / "bookspin-class-ca.pem"))
         return self
 
     def run(self, new=False, timeout=60):
@@ -205,7 +207,7 @@ class Server:
             with psycopg.connect(self.postgres) as connection:
                 return {t: connection.execute(f"SELECT COUNT(*) FROM {t}").fetchone()[0]
                         for t in ("classes", "students", "tosses")}
-        with contextlib.closing(sqlite3.connect(str(self.data / "class.sqlite3"))) as connection:
+        with contextlib.closing(sqlite3.connect(str(self.seen_at / "class.sqlite3"))) as connection:
             return {t: connection.execute(f"SELECT COUNT(*) FROM {t}").fetchone()[0]
                     for t in ("classes", "students", "tosses")}
 
@@ -216,7 +218,7 @@ class Server:
             with psycopg.connect(self.postgres) as connection:
                 connection.execute(statement)
             return
-        with contextlib.closing(sqlite3.connect(str(self.data / "class.sqlite3"))) as connection:
+        with contextlib.closing(sqlite3.connect(str(self.seen_at / "class.sqlite3"))) as connection:
             connection.execute(statement)
             connection.commit()
 

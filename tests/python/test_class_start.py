@@ -334,46 +334,108 @@ def test_a_start_that_cannot_serve_writes_nothing_and_the_class_goes_on(tmp_path
     assert [s["name"] for s in server.state()["students"]] == ["Anna"]
 
 
+class SmallDisk:
+    """A tmpfs on `folder`, in a mount namespace a sleeping process holds: `prefix` runs a
+    command in that namespace (nsenter), `view` is the folder as this process sees it (through
+    /proc/PID/root), resize(kib) sets its size."""
+
+    def __init__(self, folder):
+        self.folder = pathlib.Path(folder)
+        self.folder.mkdir()
+        self.holder = subprocess.Popen(
+            ["unshare", "--mount", "--propagation", "private", "sh", "-c",
+             f"mount -t tmpfs -o size=64k tmpfs '{self.folder}' && echo ready && exec sleep 3600"],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        ready = self.holder.stdout.readline()
+        if ready.strip() != "ready":
+            self.holder.wait()
+            raise OSError(f"no tmpfs in a mount namespace: {self.holder.stderr.read().strip()}")
+        self.prefix = ["nsenter", f"--mount=/proc/{self.holder.pid}/ns/mnt", "--"]
+        self.view = pathlib.Path(f"/proc/{self.holder.pid}/root") / \
+            self.folder.relative_to(self.folder.anchor)
+
+    def resize(self, kib):
+        subprocess.run([*self.prefix, "mount", "-o", f"remount,size={kib}k", str(self.folder)],
+                       check=True, capture_output=True)
+
+    def used_kib(self):
+        stats = os.statvfs(self.view)
+        return (stats.f_blocks - stats.f_bfree) * stats.f_frsize // 1024
+
+    def close(self):
+        self.holder.kill()
+        self.holder.wait()
+
+
+def attempt(server, new=False):
+    """(None, the lines) where the server started (stopped again); (exit status, its stderr)
+    where it ended instead."""
+    try:
+        server.start(new)
+    except AssertionError as error:
+        server.process.wait(timeout=60)
+        return server.process.returncode, str(error).split("] ", 1)[1]
+    server.stop()
+    return None, server.lines
+
+
+def contents(folder):
+    """{path: bytes} of every file under `folder` but the lock file (it holds the last pid)."""
+    return {str(p.relative_to(folder)): p.read_bytes() for p in pathlib.Path(folder).rglob("*")
+            if p.is_file() and p.name != "server.lock"}
+
+
 def test_a_full_disk_at_any_step_of_a_start_writes_nothing(tmp_path, page):
     """The data folder on a tmpfs of 8 KiB, then 16, 24 … until the server starts: each start
     that ran out of space (at the store, the certificates, the class, the teacher's address)
-    says so in one line and leaves the disk empty."""
+    says so in one line and leaves the disk empty. Then a store with a class on a disk with
+    0, 8, 16 … KiB free: a start of a new class for a new address (a new CA) that runs out of
+    space leaves every file as it was, and the class goes on."""
     why, should = namespace_problem()
-    if why or shutil.which("unshare") is None:
+    if why or shutil.which("unshare") is None or shutil.which("nsenter") is None:
         if in_ci() and should:
             pytest.fail(f"a mount namespace should work here: {why}")
-        pytest.skip(f"no mount namespace for a small tmpfs: {why or 'no unshare'}")
-    disk = tmp_path / "disk"
-    disk.mkdir()
-    server = Server(disk / "data", page)
-    command = " ".join(f"'{a}'" for a in server.command())
-    failures = []
-    for size in range(8, 400, 8):
-        # The server in the background until it has started or ended; then stopped.
-        script = (f"mount -t tmpfs -o size={size}k tmpfs '{disk}' || exit 99; "
-                  f"{command} > '{tmp_path}/out' 2> '{tmp_path}/err' & server=$!; "
-                  f"while kill -0 $server 2> /dev/null && "
-                  f"! grep -q 'Ctrl-C stops' '{tmp_path}/out'; do sleep 0.1; done; "
-                  f"kill -TERM $server 2> /dev/null; wait $server; "
-                  f"echo \"rc=$?\"; find '{disk}' -mindepth 1")
-        done = subprocess.run(["unshare", "--mount", "sh", "-c", script], capture_output=True,
-                              text=True, env=server.environment(), timeout=300)
-        assert done.returncode != 99, done.stderr
-        status = int(done.stdout.split("rc=")[1].split()[0])
-        left = done.stdout.split("\n", 1)[1].split()
-        stdout, stderr = (tmp_path / "out").read_text(), (tmp_path / "err").read_text()
-        if "Ctrl-C stops" in stdout:  # it started, and served until stopped
-            assert status == 0, stderr
-            break
-        line = one_error_line(status, stdout, stderr, "", 1)
-        assert left == [], (size, line, left)
-        failures.append(line)
-    else:
-        pytest.fail(f"the server did not start on 400 KiB: {failures[-1]}")
+        pytest.skip(f"no mount namespace for a small tmpfs: {why or 'no unshare or nsenter'}")
+    disk = SmallDisk(tmp_path / "disk")
+    try:
+        server = Server(disk.folder / "data", page, prefix=disk.prefix,
+                        seen_at=disk.view / "data")
+        failures = []
+        for size in range(8, 1024, 8):
+            disk.resize(size)
+            status, said = attempt(server)
+            if status is None:
+                break
+            line = one_error_line(status, "", said, "", 1)
+            assert listing(disk.view) == [], (size, line, listing(disk.view))
+            failures.append(line)
+        else:
+            pytest.fail(f"the server did not start on 1 MiB: {failures[-1]}")
+        code, key = server.code, server.key
+        disk.resize(4096)
+        server.start()
+        server.join("Anna")
+        server.stop()
+        before = contents(disk.view)
+        other = Server(disk.folder / "data", page, address="192.0.2.77", prefix=disk.prefix,
+                       seen_at=disk.view / "data")
+        for free in range(0, 1024, 8):
+            disk.resize(disk.used_kib() + free)
+            status, said = attempt(other, new=True)
+            if status is None:
+                break
+            line = one_error_line(status, "", said, "", 1)
+            assert contents(disk.view) == before, (free, line)
+            failures.append(line)
+        else:
+            pytest.fail(f"the server did not start with 1 MiB free: {failures[-1]}")
+        assert other.code != code and other.key != key and len(failures) > 1
+    finally:
+        disk.close()
     kinds = {kind for kind in ("cannot open the store", "cannot write", "cannot store")
              for line in failures if kind in line}
     assert len(kinds) >= 2, failures  # several steps of the start ran out of space
-    assert any("space" in line or "full" in line for line in failures), failures
+    assert all("space" in line or "full" in line for line in failures), failures
 
 
 # The class that goes on, and the one chosen.
