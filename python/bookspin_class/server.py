@@ -161,7 +161,8 @@ async def start(options, folder):
             raise StartError(f"--data: {folder.path} is in use by another bookspin-class{by}: "
                              "stop it first, or give another --data", 1) from None
         except OSError as error:
-            raise StartError(f"--data: cannot make {folder.path}: {error.strerror}", 1) from None
+            raise StartError(f"--data: cannot write in {folder.path}: {error.strerror}",
+                             1) from None
         db = open_store(options)
         where = "--postgres" if options.postgres else "--data"
         keep_seconds = options.keep_days * 86400.0
