@@ -118,6 +118,7 @@ def test_a_full_disk_at_any_step_of_a_start_writes_nothing(tmp_path, page):
             pytest.fail(f"a mount namespace should work here: {why}")
         pytest.skip(f"no mount namespace for a small tmpfs: {why or 'no unshare or nsenter'}")
     disk = SmallDisk(tmp_path / "disk")
+    server = other = None
     try:
         server = Server(disk.folder / "data", page, prefix=disk.prefix,
                         seen_at=disk.view / "data")
@@ -152,6 +153,9 @@ def test_a_full_disk_at_any_step_of_a_start_writes_nothing(tmp_path, page):
             pytest.fail(f"the server did not start with 1 MiB free: {failures[-1]}")
         assert other.code != code and other.key != key and len(failures) > 1
     finally:
+        for started in (server, other):
+            if started is not None:
+                started.stop()
         disk.close()
     kinds = {kind for kind in ("cannot open the store", "cannot write", "cannot store")
              for line in failures if kind in line}
