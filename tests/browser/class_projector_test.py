@@ -2,10 +2,11 @@
 bookspin-class on 127.0.0.1 (its own certificate trusted by its public key's hash, nothing
 ignored), a class of 30 students named in every script a classroom brings (Latin, Cyrillic,
 Greek, Arabic, Persian with its zero-width non-joiner, Hebrew, Devanagari, Tamil, Bengali,
-Gujarati, Gurmukhi, Thai, CJK, Hangul, emoji with joiners) posting the real recordings of
-../shared/recordings-real/ by plain HTTPS clients (26 of the bare phone, 4 of the plate; the
-seven recordings each cut at another first sample, 30 recordings the fit tells apart), and the
-teacher's page opened through the printed key, the browser's clock in Asia/Kolkata:
+Gujarati, Gurmukhi, Thai, CJK, Hangul, emoji with joiners) posting the real recordings of the
+bare phone in ../shared/recordings-real/ by plain HTTPS clients (its three recordings each cut
+at ten first samples: 30 recordings the fit and the server tell apart), a 31st student's of the
+plate, and the teacher's page opened through the printed key, the browser's clock in
+Asia/Kolkata:
 
 - before a toss, the join screen: the code, a QR code, the phones' address in type of 24 px or
   more, its lines broken only after a '/' or a '?';
@@ -17,9 +18,9 @@ teacher's page opened through the printed key, the browser's clock in Asia/Kolka
   its characters (no empty boxes: the fonts Chromium reports for it, against fontconfig's) and
   read back by the accessibility tree; no text under 12 px or past its box; nothing requested
   from another origin;
-- Leave out: the reason typed while a student joins and sends a toss, the table updating
-  around the form, which keeps its text and focus; Cancel; then Leave out with a reason held
-  by the server, and Put back;
+- Leave out: a reason typed while the 31st student joins and sends a toss of the plate, the
+  table updating around the form, which keeps its text and focus; Cancel; then the plate's
+  toss left out with a reason, held by the server, and put back;
 - End, through the page of a second projector: the first (its event stream open) shows that
   the class has ended and what to do next, nothing of the class left; a third, which missed the
   news, shows the same on Download (not the server's JSON); the projector's address after End
@@ -69,18 +70,18 @@ NAMES = ["Anna Schmidt", "Zoë Ångström", "Юлия Ковалёва", "Дми
          "অর্পিতা", "ગીતા", "ਹਰਪ੍ਰੀਤ", "สมชาย ใจดี", "王芳", "山田太郎", "김지민",
          "Sam 👩🏽\u200d🔬", "❤\ufe0f Lea", "Nguyễn Thị Hoa", "Łukasz", "Oğuz", "Kwame", "Sofía",
          "Mateo", "Chloé", "Tomás", "Aiyana", "Ben"]
-LATE = "Lina"  # joins while the teacher types a reason
+LATE = "Lina"  # joins while the teacher types a reason, and tosses the plate
 PHONE = ["12-10-56", "12-13-01", "12-13-51"]
-PLATE = ["12-22-44", "12-29-59", "12-38-00", "12-44-51"]
+PLATE = "12-22-44"
 ZONE = "Asia/Kolkata"  # the browser's local time: UTC+05:30, never the server's UTC
 
 
 def recording(index):
-    """(name, CSV text) of the index-th student's toss: a real recording from its `cut`-th
-    sample on (a recording the fit and the server tell apart from the others)."""
-    plate = 26 <= index < 30
-    source_name = PLATE[index - 26] if plate else PHONE[index % 3]
-    cut = 0 if plate else index // 3
+    """(name, CSV text) of the index-th student's toss: a real recording of the phone from its
+    `cut`-th sample on (a recording the fit and the server tell apart from the others); the
+    31st's (index 30) the plate's."""
+    source_name = PLATE if index == 30 else PHONE[index % 3]
+    cut = 0 if index == 30 else index // 3
     lines = real_csv(source_name).splitlines(keepends=True)
     return source_name, "".join(lines[:1] + lines[1 + cut:])
 
@@ -235,14 +236,16 @@ try:
 
     driver = projector((1280, 720))
     # Before a toss: the join screen, large, its address broken only after '/' or '?'.
-    wait_for(driver, "return document.getElementById('joined').textContent;",
-             lambda text: text == "0 students joined")
-    shown = driver.execute_script("return [document.getElementById('qr').naturalWidth, "
-                                  "document.getElementById('code').textContent];")
-    if shown[0] == 0 or shown[1] != server.code:
-        fail(f"the join screen shows QR width {shown[0]}, code {shown[1]!r}")
+    wait_for(driver, "return [document.getElementById('address').textContent, "
+             "document.getElementById('qr').naturalWidth];",
+             lambda shown: shown[0] == join_url and shown[1] > 0)
     lines, size = check_address(driver, "#address", join_url, 24)
     print(f"the join screen's address in {size:.0f} px type: {lines}")
+    shown = driver.execute_script("return [document.getElementById('qr').naturalWidth, "
+                                  "document.getElementById('code').textContent, "
+                                  "document.getElementById('joined').textContent];")
+    if shown != [shown[0] or 1, server.code, "0 students joined"] or not shown[0]:
+        fail(f"the join screen shows QR width {shown[0]}, code {shown[1]!r}, {shown[2]!r}")
     if server.key in driver.execute_script("return document.body.innerText;"):
         fail("the teacher's key is on the join screen")
     problems = text_problems(driver)
@@ -276,15 +279,14 @@ try:
     # Leave out: the reason typed while a student joins and sends a toss.
     from selenium.webdriver.common.by import By
     from selenium.webdriver.common.keys import Keys
-    plate = next(t for s in state["students"] for t in s["tosses"]
-                 if t["name"].startswith(PLATE[0]))
+    last = state["students"][-1]["tosses"][0]
     row_of = ("return [...document.getElementById('tosses').rows]"
-              f".find(r => r.cells[1].textContent.startsWith('{plate['name']}'));")
+              f".find(r => r.cells[1].textContent.startsWith('{last['name']}'));")
     driver.execute_script(row_of.replace("return ", "const row = ") +
                           "row.querySelector('button').click();")
     reason = driver.execute_script(row_of).find_element(By.CSS_SELECTOR, "form.reason input")
     driver.execute_script("arguments[0].dataset.opened = 'first';", reason)
-    reason.send_keys("another bo")
+    reason.send_keys("drop")
     late = server.join(LATE)
     late_toss = post(late, 30, LATE)
     shown = wait_for(driver, "return document.body.innerText;",
@@ -293,9 +295,9 @@ try:
         fail("the table did not update while a reason was typed")
     kept = driver.execute_script(
         "const e = document.activeElement; return [e.dataset.opened || '', e.value];")
-    if kept != ["first", "another bo"]:
+    if kept != ["first", "drop"]:
         fail(f"the reason's form was not kept while the table updated: focus on {kept}")
-    reason.send_keys("dy (a plate)")
+    reason.send_keys("ped")
     driver.execute_script(row_of.replace("return ", "const row = ") +
                           "[...row.querySelectorAll('form.reason button')]"
                           ".find(b => b.textContent === 'Cancel').click();")
@@ -307,6 +309,10 @@ try:
     time.sleep(0.5)
     if any(t["excluded"] for s in server.state()["students"] for t in s["tosses"]):
         fail("Cancel left a toss out")
+    plate = next(t for s in server.state()["students"] for t in s["tosses"]
+                 if t["name"] == late_toss)
+    row_of = ("return [...document.getElementById('tosses').rows]"
+              f".find(r => r.cells[1].textContent.startsWith('{late_toss}'));")
     driver.execute_script(row_of.replace("return ", "const row = ") +
                           "row.querySelector('button').click();")
     reason = driver.execute_script(row_of).find_element(By.CSS_SELECTOR, "form.reason input")
@@ -359,13 +365,13 @@ try:
                          lambda text: "This class has ended" in text)
         if "This class has ended; its data is deleted." not in ended or \
                 "build/bookspin-class --new" not in ended:
-            fail(f"after End ({who}) the projector shows {ended!r}")
+            fail(f"after End ({who}) the projector shows {ended[:300]!r}")
     late_page.execute_script("document.getElementById('download').click();")
     ended = wait_for(late_page, "return document.body.innerText;",
                      lambda text: "This class has ended" in text)
     if "This class has ended; its data is deleted." not in ended or \
             not late_page.current_url.startswith(f"{origin}/projector"):
-        fail(f"Download after End: {late_page.current_url} shows {ended!r}")
+        fail(f"Download after End: {late_page.current_url} shows {ended[:300]!r}")
     for page_driver in (driver, late_page):
         left = page_driver.execute_script(
             "return [document.body.innerText, document.getElementById('join').offsetWidth, "
@@ -382,7 +388,7 @@ try:
     driver.get(f"{origin}/projector?class={server.code}")
     again = driver.execute_script("return document.body.innerText;")
     if "has ended" not in again or "--new" not in again or '"error"' in again:
-        fail(f"the projector's address after End shows {again!r}")
+        fail(f"the projector's address after End shows {again[:300]!r}")
     if server.counts() != {"classes": 0, "students": 0, "tosses": 0}:
         fail(f"End the class left {server.counts()}")
     print(f"the projector shows a class of {len(names)} at 1280x720 and 1920x1080, each name "
