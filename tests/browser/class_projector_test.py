@@ -47,7 +47,7 @@ from pathlib import Path
 
 from browser import (fail, find_browser, missing, open_browser, test_arguments, text_problems,
                      wait_for)
-from drawn_text import accessible_names, undrawn
+from drawn_text import accessible_names, drawn_fonts, undrawn
 
 bookspin, source, binary = test_arguments(__doc__)
 os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
@@ -187,6 +187,9 @@ def check_class(driver, size, state, names):
     boxes = undrawn(driver, "#tosses td.name")
     if boxes:
         fail(f"at {size} names drawn as empty boxes (no font holds them): {boxes}")
+    if size == (1280, 720):
+        for name, fonts in drawn_fonts(driver, "#tosses td.name"):
+            print(f"{name}: {', '.join(f['familyName'] for f in fonts)}")
     if any(unicodedata.normalize("NFC", n) not in text for n in names):
         fail(f"at {size} names not on the projector: {[n for n in names if n not in text]}")
     read = accessible_names(driver)

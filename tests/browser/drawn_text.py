@@ -41,11 +41,9 @@ def drawn_characters(text):
             and not 0xFE00 <= ord(ch) <= 0xFE0F}
 
 
-def undrawn(driver, selector):
-    """[(text, fonts, characters no drawn font holds)] of each element matching `selector`
-    whose text is not all drawn with real glyphs; [] when every character is. Raises where an
-    element reports no font."""
-    coverage = font_coverage()
+def drawn_fonts(driver, selector):
+    """[(text, [font objects Chromium drew it with: familyName, postScriptName, glyphCount])] of
+    each element matching `selector` that holds text."""
     driver.execute_cdp_cmd("DOM.enable", {})
     driver.execute_cdp_cmd("CSS.enable", {})
     root = driver.execute_cdp_cmd("DOM.getDocument", {"depth": 0})["root"]["nodeId"]
@@ -53,11 +51,18 @@ def undrawn(driver, selector):
                                    {"nodeId": root, "selector": selector})["nodeIds"]
     texts = driver.execute_script(
         "return [...document.querySelectorAll(arguments[0])].map(e => e.textContent);", selector)
+    return [(text, driver.execute_cdp_cmd("CSS.getPlatformFontsForNode",
+                                          {"nodeId": node})["fonts"])
+            for node, text in zip(nodes, texts) if text.strip()]
+
+
+def undrawn(driver, selector):
+    """[(text, fonts, characters no drawn font holds)] of each element matching `selector`
+    whose text is not all drawn with real glyphs (or reports no font); [] when every character
+    of every element is."""
+    coverage = font_coverage()
     problems = []
-    for node, text in zip(nodes, texts):
-        if not text.strip():
-            continue
-        fonts = driver.execute_cdp_cmd("CSS.getPlatformFontsForNode", {"nodeId": node})["fonts"]
+    for text, fonts in drawn_fonts(driver, selector):
         names = [f.get("postScriptName") or f["familyName"] for f in fonts]
         held = set()
         for font in fonts:
