@@ -8,6 +8,9 @@ packages=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libgbm1
   libssl-dev libpng-dev libdeflate-dev pngcheck libcairo2-dev libfreetype-dev fonts-dejavu-core fonts-dejavu-extra
   libharfbuzz-dev libfribidi-dev fonts-droid-fallback fonts-symbola
+  # names in every script on the class's projector (docs/class.md, "Names"): Noto for the
+  # scripts DejaVu lacks (Devanagari and the other Indic scripts, Thai, …), CJK and colour emoji
+  fonts-noto-core fonts-noto-cjk fonts-noto-color-emoji
   libassimp-dev libtinygltf-dev
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev libavfilter-dev ffmpeg
   libgtest-dev libbenchmark-dev libmujoco-dev libbullet-dev libode-dev

@@ -2,7 +2,10 @@
 the join screen, a QR code of the phones' address with the address and the class code in large
 type, then the class live from the event stream) and the QR code as SVG, made by segno
 (python3-segno). The teacher's key is never in the QR code: it holds the phones' address only.
-The local CA's certificate is served at /ca.pem for the phones that install it."""
+The local CA's certificate is served at /ca.pem for the phones that install it. The projector's
+address of a class that is no more (ended, or deleted after --keep-days) is a page saying so and
+what to do next, not the API's JSON."""
+import html
 import io
 import pathlib
 
@@ -17,6 +20,16 @@ PAGE_POLICY = ("default-src 'none'; script-src 'self' 'unsafe-inline'; style-src
                "frame-ancestors 'none'")
 
 
+GONE_PAGE = """<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>bookspin class: no class {code}</title>
+<style>body {{ font: 28px/1.4 "DejaVu Sans", sans-serif; max-width: 40em; margin: 18vh auto;
+padding: 0 1em; }} code {{ background: #f2f2f2; padding: 0.1em 0.3em; }}</style></head>
+<body><p><strong>No class {code} here: it has ended and its data is deleted</strong> (or the
+code is mistyped).</p><p>Start a new class with <code>build/bookspin-class --new</code> and open
+the projector address it prints.</p></body></html>
+"""
+
+
 def qr_svg(text):
     """The QR code of `text` as an SVG document (error correction M, a 4-module quiet zone)."""
     out = io.BytesIO()
@@ -28,7 +41,11 @@ def qr_svg(text):
 def add_routes(app, server):
     async def projector(request):
         code = request.query.get("class", "")
-        server.teacher(request, server.class_code_of(code))
+        if len(code) > 16 or not server.store.class_exists(code):
+            return web.Response(text=GONE_PAGE.format(code=html.escape(code[:16])), status=404,
+                                content_type="text/html",
+                                headers={"Content-Security-Policy": PAGE_POLICY})
+        server.teacher(request, code)
         return web.FileResponse(PAGE, headers={"Content-Security-Policy": PAGE_POLICY,
                                                "Cache-Control": "no-cache"})
 

@@ -66,17 +66,57 @@ def text_field(body, key, max_chars=None, required=True):
     return value
 
 
+# The format characters (Unicode's Cf) that ordinary spelling uses, allowed in a name: the
+# zero-width non-joiner (Persian, Kurdish, Indic scripts: "می‌خواهم") and joiner (Indic
+# half-forms, emoji sequences such as 👩‍🔬). The emoji variation selectors (U+FE0E, U+FE0F) are
+# marks (Mn) and allowed as every mark is. Every other Cf is refused: the marks and overrides of
+# direction and the isolates (which reorder a name as shown), invisible spaces and hyphens.
+SPELLING_FORMAT = {"\u200c", "\u200d"}
+# Emoji tag characters (U+E0020..U+E007E, ended by U+E007F CANCEL TAG): allowed only inside a
+# flag's tag sequence after U+1F3F4 WAVING BLACK FLAG (🏴󠁧󠁢󠁳󠁣󠁴󠁿, Scotland).
+TAG_FLAG, TAG_FIRST, TAG_END = "\U0001f3f4", 0xE0020, "\U000e007f"
+# Code points this Python's Unicode (3.11: Unicode 14) does not know yet but a phone's keyboard
+# may type: the blocks where new emoji arrive (🩷 U+1FA77, Unicode 15). Other unassigned code
+# points are refused.
+NEWER_EMOJI = ((0x1F900, 0x1F9FF), (0x1FA70, 0x1FAFF))
+
+
+def name_problem(name):
+    """Why `name` (NFC) cannot be a person's name, or "" when it can: a character not allowed
+    (a control character, a format character other than SPELLING_FORMAT and a flag's tags, a
+    surrogate, a private-use or unassigned code point, '/' or '\\'), or nothing visible."""
+    in_tags = False
+    visible = False
+    for at, ch in enumerate(name):
+        category = unicodedata.category(ch)
+        if TAG_FIRST <= ord(ch) <= 0xE007E and (in_tags or (at and name[at - 1] == TAG_FLAG)):
+            in_tags = True
+            continue
+        if ch == TAG_END and in_tags:
+            in_tags = False
+            continue
+        in_tags = False
+        allowed_unknown = category == "Cn" and any(a <= ord(ch) <= b for a, b in NEWER_EMOJI)
+        if (category in ("Cc", "Cs", "Co", "Cn") and not allowed_unknown) or ch in "/\\" or \
+                (category == "Cf" and ch not in SPELLING_FORMAT):
+            return f"character U+{ord(ch):04X} is not allowed in a name"
+        visible = visible or category[0] in "LNPS" or allowed_unknown
+    return "" if visible else "no letter, digit or symbol"
+
+
 def person_name(body, key="name"):
-    """A name in any alphabet (NFC), 1..MAX_NAME characters, no control characters, no path
-    separators (it becomes part of a file name in the class's set)."""
+    """A name in any alphabet (NFC), 1..MAX_NAME characters, as people spell it (name_problem:
+    the joiners of Persian and Indic spelling and of emoji allowed), no control characters, no
+    marks of direction, no path separators (it becomes part of a file name in the class's set:
+    pooled.file_stem). Raises refuse(400, '"KEY": …') otherwise."""
     name = unicodedata.normalize("NFC", text_field(body, key, max_chars=4 * MAX_NAME)).strip()
     if not name:
         raise refuse(400, f'"{key}": empty')
     if len(name) > MAX_NAME:
         raise refuse(400, f'"{key}": {len(name)} characters, over the limit of {MAX_NAME}')
-    for ch in name:
-        if unicodedata.category(ch) in ("Cc", "Cf", "Cs", "Co", "Cn") or ch in "/\\":
-            raise refuse(400, f'"{key}": character U+{ord(ch):04X} is not allowed in a name')
+    problem = name_problem(name)
+    if problem:
+        raise refuse(400, f'"{key}": {problem}')
     return name
 
 

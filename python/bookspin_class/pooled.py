@@ -17,13 +17,42 @@ import bookspin
 
 
 def file_stem(student_name, seq):
-    """The file name (without .csv) a toss has in the class's set: the student's name (NFC,
-    every character that is not a letter, digit or '-' made '-') and the class's number of the
-    toss. Unique in the class (seq is), and already in the form the fit names a recording by
-    (common/file_name.hpp), so the fit's table names it the same."""
-    name = unicodedata.normalize("NFC", student_name)
-    name = re.sub(r"[^\w-]+", "-", name, flags=re.UNICODE).strip("-_") or "toss"
-    return f"{name}-{seq}"
+    """The file name (without .csv) a toss has in the class's set: the student's name in NFC
+    with every letter, mark, digit, punctuation and symbol of any script kept (a Devanagari vowel
+    sign, a Persian zero-width non-joiner, an emoji's joiner), what the project's name rule
+    replaces and each run of spaces and '-' made one '-' (none first, nor a '.': an option, a
+    hidden file), then '-' and the class's number of the toss ("प्रिया-शर्मा-4"). Unique in the
+    class (seq is), at most MAX_FILE_NAME_BYTES bytes of UTF-8 (a longer name cut before a whole
+    character), and already in the form `bookspin fit` names a recording by
+    (common/file_name.hpp: file_name_of() leaves it as it is), so the fit's table names it the
+    same (docs/class.md, "Names"). "toss-SEQ" for a name with nothing left."""
+    name = _REPLACED.sub("-", unicodedata.normalize("NFC", student_name)).lstrip(".-").rstrip("-")
+    suffix = f"-{seq}"
+    budget = MAX_FILE_NAME_BYTES - len(suffix.encode("utf-8"))
+    if len(name.encode("utf-8")) > budget:
+        end = 0
+        for at in range(1, len(name) + 1):
+            if len(name[:at].encode("utf-8")) > budget:
+                break
+            if at == len(name) or not (_joins_previous(name[at]) or name[at - 1] == "\u200d"):
+                end = at
+        name = name[:end].rstrip("-")
+    return f"{name or 'toss'}{suffix}"
+
+
+# What a file's name cannot hold under the project's name rule (src/common/file_name.hpp,
+# file_name_of: the characters of / \ : * ? " < > |, the controls, the line and paragraph
+# separators, surrogates, the bidirectional overrides and isolates), and here also each space, so
+# that a file of the set is one word on a command line.
+_REPLACED = re.compile('[\x00-\x1f\x7f-\x9f/\\\\:*?"<>|\u2028\u2029\u202a-\u202e\u2066-\u2069'
+                       '\ud800-\udfff\\s-]+')
+MAX_FILE_NAME_BYTES = 160  # common/file_name.hpp, kMaxFileNameBytes: the fit cuts a longer name
+
+
+def _joins_previous(ch):
+    """Whether `ch` belongs to the character before it as one writes it (a mark: a vowel sign,
+    a virama, an emoji's variation selector; a zero-width joiner or non-joiner)."""
+    return unicodedata.category(ch)[0] == "M" or ch in "\u200c\u200d"
 
 
 def write_set(folder, files):
