@@ -159,10 +159,16 @@ async def serve(options, stop):
             response = error
         except (asyncio.CancelledError, ConnectionResetError):
             raise
-        except Exception:  # a bug or a store gone: 500 in one line, the trace on the terminal
-            traceback.print_exc()
-            response = web.json_response({"error": "internal error (the server's terminal "
-                                                   "says more)"}, status=500)
+        except Exception as error:  # a bug or a store gone: 500 in one line, the trace on the
+            failed = store.failure(error, db.description)  # terminal; a full disk or a
+            if failed is not None:                         # read-only store says so
+                print(f"{PROGRAM}: {request.method} {request.path[:80]}: {failed[1]} ({error})",
+                      file=sys.stderr, flush=True)
+                response = web.json_response({"error": failed[1]}, status=failed[0])
+            else:
+                traceback.print_exc()
+                response = web.json_response({"error": "internal error (the server's terminal "
+                                                       "says more)"}, status=500)
         response.headers.setdefault("X-Content-Type-Options", "nosniff")
         response.headers.setdefault("Referrer-Policy", "no-referrer")
         return response

@@ -44,7 +44,10 @@ def free_port():
 
 
 class Server:
-    """A bookspin-class process on 127.0.0.1, its printed code and key, and clients."""
+    """A bookspin-class process on 127.0.0.1, its printed code and key, and clients. `wrap`:
+    a command the server is started under (unshare …, its last word "sh" for "$@")."""
+
+    wrap = ()
 
     def __init__(self, data, page, postgres=None, extra=(), port=None):
         self.data, self.page, self.postgres = pathlib.Path(data), page, postgres
@@ -56,7 +59,7 @@ class Server:
         env["PYTHONPATH"] = os.pathsep.join(
             [str(SOURCE_DIR / "python")] + [p for p in env.get("PYTHONPATH", "").split(os.pathsep)
                                             if p])
-        args = [sys.executable, "-m", "bookspin_class", "--data", str(self.data), "--host",
+        args = [*self.wrap, sys.executable, "-m", "bookspin_class", "--data", str(self.data), "--host",
                 "127.0.0.1", "--address", "127.0.0.1", "--port", str(self.port), "--page",
                 str(self.page), *self.extra]
         if self.postgres:
