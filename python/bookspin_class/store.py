@@ -213,8 +213,9 @@ class Store:
 
     def add_toss(self, toss, code, student, name, recorded_at, csv, csv_sha256, samples):
         """Holds a toss, committed before it returns; its seq is the class's next number (the
-        file name the pooled set gives it); `samples` its samples_sha256. Raises the driver's integrity error when the id is
-        held already (two requests at once: the caller looks again)."""
+        file name the pooled set gives it); `samples` is its samples_sha256. Raises the
+        driver's integrity error when the id is held already (two requests at once: the caller
+        looks again)."""
         with self.lock:
             try:
                 cursor = self.connection.execute(

@@ -59,8 +59,8 @@ class Server:
         env["PYTHONPATH"] = os.pathsep.join(
             [str(SOURCE_DIR / "python")] + [p for p in env.get("PYTHONPATH", "").split(os.pathsep)
                                             if p])
-        args = [*self.wrap, sys.executable, "-m", "bookspin_class", "--data", str(self.data), "--host",
-                "127.0.0.1", "--address", "127.0.0.1", "--port", str(self.port), "--page",
+        args = [*self.wrap, sys.executable, "-m", "bookspin_class", "--data", str(self.data),
+                "--host", "127.0.0.1", "--address", "127.0.0.1", "--port", str(self.port), "--page",
                 str(self.page), *self.extra]
         if self.postgres:
             args += ["--postgres", self.postgres]

@@ -144,7 +144,8 @@ def test_the_same_samples_under_a_new_id_and_other_bytes_are_refused_naming_the_
     assert status == 201, answer
 
 
-def test_a_store_made_before_the_samples_hash_is_migrated_and_refuses_a_copy(make_server):  # noqa: F811,E501
+def test_a_store_made_before_the_samples_hash_is_migrated_and_refuses_a_copy(
+        make_server):  # noqa: F811
     require_real()
     server = make_server()
     anna = server.join("Anna")
@@ -159,7 +160,8 @@ def test_a_store_made_before_the_samples_hash_is_migrated_and_refuses_a_copy(mak
 
 # A toss id is one student's.
 
-def test_a_toss_id_another_student_holds_is_refused_even_with_the_same_contents(make_server):  # noqa: F811,E501
+def test_a_toss_id_another_student_holds_is_refused_even_with_the_same_contents(
+        make_server):  # noqa: F811
     require_real()
     server = make_server()
     anna, ben = server.join("Anna"), server.join("Ben")
@@ -496,6 +498,13 @@ def test_the_rate_limit_allows_its_burst_then_its_rate_per_client():
     assert rate.allow("a", now=100.5) and not rate.allow("a", now=100.5)
     # After a long pause, the burst again and no more.
     assert [rate.allow("a", now=1000.0) for _ in range(7)] == [True] * 6 + [False]
+
+
+def test_a_phone_gets_a_burst_of_three_times_the_rate_then_429(sqlite_server):
+    server = sqlite_server(extra=["--rate", "1"])
+    statuses = [server.request("POST", "/api/class/ZZZZZZ/join", {"name": "x"})[0]
+                for _ in range(5)]  # well within a second: under 1 request earned
+    assert statuses == [404, 404, 404, 429, 429], statuses
 
 
 def test_only_classes_older_than_keep_days_are_deleted(sqlite_server):
