@@ -9,6 +9,7 @@ import unicodedata
 import uuid
 
 from aiohttp import web
+from aiohttp.http_exceptions import LineTooLong
 from aiohttp.web_protocol import RequestHandler
 
 MAX_BODY = 4 * 1024 * 1024  # bytes: a toss's JSON (a 60 s recording at 100 Hz is ~2.5 MB)
@@ -194,6 +195,9 @@ class HeadDeadlineHandler(RequestHandler):
                                   "with the error message")
         cause = (message or (str(exc) if exc else "") or "").strip().splitlines()
         cause = cause[0][:160] if cause else ""
+        if isinstance(exc, LineTooLong):
+            cause = f"a line of the request's head over {exc.args[1]} bytes (the address, a " \
+                    "header or its token too long)"
         if status == 400:
             cause = "the request is not HTTP the server reads" + (f": {cause}" if cause else "")
         elif status >= 500:

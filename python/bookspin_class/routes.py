@@ -237,7 +237,8 @@ class ClassServer:
     # The teacher.
     async def teacher_login(self, request):
         key = request.query.get("key", "")
-        code = self.store.class_of_key(key) if key else None
+        code = self.store.class_of_key(key) if key.isascii() and key.isprintable() and \
+            0 < len(key) <= 200 else None
         if code is None:
             raise refuse(403, "unknown teacher's key")
         response = web.HTTPFound(f"/projector?class={code}")

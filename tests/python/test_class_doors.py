@@ -213,6 +213,8 @@ def test_bad_input_is_a_4xx_naming_the_field_and_stores_nothing(make_server):  #
                                          raw=b'{"name": "Eve\\u0000"}'), 400, '"name"'),
         ("a NUL in the code", dict(method="POST", path="/api/class/K7%00PQ/join",
                                    body={"name": "Eve"}), 404, "no class with code"),
+        ("a NUL in the teacher's key", dict(method="GET", path="/teacher?key=ab%00cd"), 403,
+         "unknown teacher's key"),
         ("100 000 nested arrays", dict(method="POST", path=f"/api/class/{code}/tosses",
                                        raw=b"[" * 100000, token=token), 400,
          "nested too deeply"),
