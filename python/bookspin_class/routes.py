@@ -1,4 +1,4 @@
-"""The HTTP API (docs/class.md, "The API"; drafted in /work/notes/class-api.md): the phones'
+"""The HTTP API (docs/class.md, "The API"): the phones'
 join, toss and read routes, the teacher's projector, event stream, exclusions, download and end.
 Every error is {"error": "<one line>"} with a 4xx; a refused request stores nothing."""
 import asyncio
