@@ -1,6 +1,6 @@
-"""The HTTP API (docs/class.md, "The API"): the phones'
-join, toss and read routes, the teacher's projector, event stream, exclusions, download and end.
-Every error is {"error": "<one line>"} with a 4xx; a refused request stores nothing."""
+"""The HTTP API (docs/class.md, "The API"): the phones' join, toss and read routes, the
+teacher's projector, event stream, exclusions, download and end. Every refusal is
+{"error": "<one line>"} with a 4xx; a refused request stores nothing."""
 import asyncio
 import hashlib
 import hmac
