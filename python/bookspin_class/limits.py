@@ -196,9 +196,9 @@ class HeadDeadlineHandler(RequestHandler):
         cause = (message or (str(exc) if exc else "") or "").strip().splitlines()
         cause = cause[0][:160] if cause else ""
         if isinstance(exc, LineTooLong):
-            cause = f"a line of the request's head over {exc.args[1]} bytes (the address, a " \
+            cause = f"a line of the request's head is over {exc.args[1]} bytes (the address, a " \
                     "header or its token too long)"
-        if status == 400:
+        elif status == 400:
             cause = "the request is not HTTP the server reads" + (f": {cause}" if cause else "")
         elif status >= 500:
             cause = "internal error (the server's terminal says more)"

@@ -16,6 +16,7 @@ import sqlite3
 import ssl
 import subprocess
 import sys
+import threading
 import time
 import uuid
 import zipfile
@@ -381,11 +382,18 @@ def test_the_teachers_cookie_is_strict_and_changes_need_the_teachers_origin(sqli
 
 # Every refusal in the documented form.
 
-def raw_exchange(server, data, read_first=False):
-    """Sends `data` on a fresh TLS connection and reads until the server closes it."""
+def raw_exchange(server, data):
+    """Sends `data` on a fresh TLS connection and reads until the server closes it (which it
+    may do before all is sent: the sending is a thread's)."""
     raw = socket.create_connection(("127.0.0.1", server.port), timeout=20)
     tls = server.context.wrap_socket(raw, server_hostname="127.0.0.1")
-    tls.sendall(data)
+
+    def send():
+        with contextlib.suppress(OSError):
+            tls.sendall(data)
+
+    sender = threading.Thread(target=send)
+    sender.start()
     answer = b""
     with contextlib.suppress(ConnectionError, ssl.SSLError, socket.timeout):
         while True:
@@ -393,6 +401,7 @@ def raw_exchange(server, data, read_first=False):
             if not chunk:
                 break
             answer += chunk
+    sender.join()
     tls.close()
     return answer
 
