@@ -159,9 +159,11 @@ async def serve(options, stop):
             response = error
         except (asyncio.CancelledError, ConnectionResetError):
             raise
-        except Exception as error:  # a bug or a store gone: 500 in one line, the trace on the
-            failed = store.failure(error, db.description)  # terminal; a full disk or a
-            if failed is not None:                         # read-only store says so
+        except Exception as error:
+            # The machine's state (a full disk, a read-only store) in its own words, 507/503;
+            # a bug or a store gone: 500 in one line, the trace on the terminal.
+            failed = store.failure(error, db.description)
+            if failed is not None:
                 print(f"{PROGRAM}: {request.method} {request.path[:80]}: {failed[1]} ({error})",
                       file=sys.stderr, flush=True)
                 response = web.json_response({"error": failed[1]}, status=failed[0])
