@@ -2,13 +2,14 @@
 may arrive, and the shape of each field. Every refusal is an HTTP error whose body is
 {"error": "<one line>"}; nothing is stored for a refused request."""
 import asyncio
+import datetime
 import json
-import re
 import time
 import unicodedata
 import uuid
 
 from aiohttp import web
+from aiohttp.http_exceptions import LineTooLong
 from aiohttp.web_protocol import RequestHandler
 
 MAX_BODY = 4 * 1024 * 1024  # bytes: a toss's JSON (a 60 s recording at 100 Hz is ~2.5 MB)
@@ -17,12 +18,16 @@ BODY_SECONDS = 10.0         # a request's body must arrive within this
 
 
 def refuse(status, reason):
-    """An HTTP error response {"error": reason} with `status` (raised by the handlers)."""
+    """An HTTP error response {"error": reason} with `status` (raised by the handlers); a
+    character UTF-8 cannot hold (a lone surrogate quoted from the request) is sent as "?"."""
+    reason = reason.encode("utf-8", "replace").decode("utf-8")
     kind = web.HTTPException
     for candidate in (web.HTTPBadRequest, web.HTTPUnauthorized, web.HTTPForbidden,
                       web.HTTPNotFound, web.HTTPConflict, web.HTTPRequestEntityTooLarge,
                       web.HTTPTooManyRequests, web.HTTPRequestTimeout,
-                      web.HTTPUnsupportedMediaType, web.HTTPMethodNotAllowed):
+                      web.HTTPUnsupportedMediaType, web.HTTPMethodNotAllowed,
+                      web.HTTPInternalServerError, web.HTTPServiceUnavailable,
+                      web.HTTPInsufficientStorage):
         if candidate.status_code == status:
             kind = candidate
     if kind is web.HTTPRequestEntityTooLarge:
@@ -50,12 +55,18 @@ async def json_body(request):
         value = json.loads(raw.decode("utf-8"))
     except (UnicodeDecodeError, ValueError) as error:
         raise refuse(400, f"request body is not JSON in UTF-8: {error}") from None
+    except RecursionError:
+        raise refuse(400, "request body is not JSON the server reads: arrays or objects nested "
+                          "too deeply") from None
     if not isinstance(value, dict):
         raise refuse(400, "request body is not a JSON object")
     return value
 
 
 def text_field(body, key, max_chars=None, required=True):
+    """body[key] as a str of at most max_chars characters that UTF-8 can hold (no lone
+    surrogate, which JSON's "\\ud800" makes) and the store can hold (no NUL, which PostgreSQL
+    refuses); 400 naming the field otherwise."""
     value = body.get(key)
     if value is None and not required:
         return None
@@ -63,6 +74,21 @@ def text_field(body, key, max_chars=None, required=True):
         raise refuse(400, f'"{key}": expected a string')
     if max_chars is not None and len(value) > max_chars:
         raise refuse(400, f'"{key}": {len(value)} characters, over the limit of {max_chars}')
+    return well_formed(value, f'"{key}"')
+
+
+def well_formed(value, what):
+    """`value` when it is text the store holds: UTF-8 (no lone surrogate) without NUL; 400
+    naming `what` and the character's place otherwise."""
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError as error:
+        raise refuse(400, f"{what}: a lone surrogate U+{ord(value[error.start]):04X} at "
+                          f"character {error.start + 1} is not text (not UTF-8)") from None
+    at = value.find("\0")
+    if at >= 0:
+        raise refuse(400, f"{what}: a NUL character (U+0000) at character {at + 1} is not "
+                          "allowed")
     return value
 
 
@@ -131,13 +157,20 @@ def toss_id(value, what='"toss"'):
     return str(parsed)
 
 
-_ISO = re.compile(r"^\d{4}-\d{2}-\d{2}T\d{2}:\d{2}(:\d{2}(\.\d{1,9})?)?(Z|[+-]\d{2}:?\d{2})?$")
-
-
 def iso_time(value):
-    if not isinstance(value, str) or not _ISO.match(value):
-        raise refuse(400, f'"recorded_at": expected an ISO 8601 time, got '
-                          f'{json.dumps(value)[:60]}')
+    """`value` when it is a real ISO 8601 date and time (2022-05-03T12:13:01Z, with or without
+    seconds, fraction and offset; Python's datetime.fromisoformat, "Z" read as +00:00): a month
+    13 or an hour 99 is refused (400), not only a wrong shape."""
+    try:
+        ok = isinstance(value, str) and len(value) <= 40 and value.isascii() and \
+            value.isprintable() and "T" in value and \
+            datetime.datetime.fromisoformat(value[:-1] + "+00:00" if value.endswith("Z")
+                                            else value) is not None
+    except ValueError:
+        ok = False
+    if not ok:
+        raise refuse(400, f'"recorded_at": expected an ISO 8601 date and time, got '
+                          f'{json.dumps(value, ensure_ascii=False)[:60]}')
     return value
 
 
@@ -188,6 +221,30 @@ class HeadDeadlineHandler(RequestHandler):
     def connection_lost(self, exc):
         self._deadline.cancel()
         super().connection_lost(exc)
+
+    def handle_error(self, request, status=500, exc=None, message=None):
+        """The answer to a request aiohttp refuses before any handler (a head line or header
+        over 8190 bytes, a malformed head, a body shorter than its Content-Length followed by
+        bytes that are no request): {"error": …} naming the cause, as every refusal is
+        (docs/class.md, "The API"), and the connection closed; no traceback for a client's
+        bad request."""
+        if status >= 500:
+            self.log_exception("Error handling request", exc_info=exc)
+        if request.writer.output_size > 0:
+            raise ConnectionError("Response is sent already, cannot send another response "
+                                  "with the error message")
+        cause = (message or (str(exc) if exc else "") or "").strip().splitlines()
+        cause = cause[0][:160] if cause else ""
+        if isinstance(exc, LineTooLong):
+            cause = f"a line of the request's head is over {exc.args[1]} bytes (the address, a " \
+                    "header or its token too long)"
+        elif status == 400:
+            cause = "the request is not HTTP the server reads" + (f": {cause}" if cause else "")
+        elif status >= 500:
+            cause = "internal error (the server's terminal says more)"
+        response = web.json_response({"error": cause or f"HTTP {status}"}, status=status)
+        response.force_close()
+        return response
 
 
 class GuardedServer(web.Server):

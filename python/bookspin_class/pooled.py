@@ -65,12 +65,25 @@ def write_set(folder, files):
     return sorted(paths)
 
 
-def set_zip(files, folder_name):
-    """The class's set as a zip: folder_name/stem.csv per toss (the bytes the fit read)."""
+def set_zip(files, folder_name, left_out=None):
+    """The class's set as a zip: folder_name/stem.csv per toss fitted (the bytes the fit read),
+    and each toss the teacher left out, `left_out` {stem: (csv text, reason)}, apart in
+    folder_name/left-out/stem.csv with folder_name/left-out/README.txt (UTF-8) giving each one's
+    reason, so that `bookspin fit folder_name/*.csv` is the pooled fit and nothing is lost."""
     out = io.BytesIO()
     with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as archive:
         for stem in sorted(files):
             archive.writestr(f"{folder_name}/{stem}.csv", files[stem].encode("utf-8"))
+        if left_out:
+            lines = ["The teacher left these tosses out of the class's fit; each with the "
+                     "teacher's reason.", f"`bookspin fit {folder_name}/*.csv` fits the others "
+                     "(the projector's numbers); add a file here to fit it with them.", ""]
+            for stem in sorted(left_out):
+                text, reason = left_out[stem]
+                archive.writestr(f"{folder_name}/left-out/{stem}.csv", text.encode("utf-8"))
+                lines.append(f"{stem}.csv: {' '.join(reason.split())}")
+            archive.writestr(f"{folder_name}/left-out/README.txt",
+                             ("\n".join(lines) + "\n").encode("utf-8"))
     return out.getvalue()
 
 

@@ -1,6 +1,6 @@
-"""The HTTP API (docs/class.md, "The API"; drafted in /work/notes/class-api.md): the phones'
-join, toss and read routes, the teacher's projector, event stream, exclusions, download and end.
-Every error is {"error": "<one line>"} with a 4xx; a refused request stores nothing."""
+"""The HTTP API (docs/class.md, "The API"): the phones' join, toss and read routes, the
+teacher's projector, event stream, exclusions, download and end. Every refusal is
+{"error": "<one line>"} with a 4xx; a refused request stores nothing."""
 import asyncio
 import hashlib
 import hmac
@@ -33,6 +33,7 @@ class ClassServer:
         self.gate = gate or asyncio.Semaphore(1)
         self.fits = {}              # code -> pooled.PooledFit
         self.listeners = {}         # code -> set of asyncio.Queue
+        self.ended = set()          # the queues of the listeners of a class that ended
 
     # The class's pooled fit and its listeners.
     def fit_of(self, code):
@@ -93,23 +94,50 @@ class ClassServer:
                 "pooled": result, "fits": fit.fits}
 
     # Who is asking.
-    def teacher(self, request, code):
+    def teacher(self, request, code, changes=False):
+        """Refuses (401/403/404) a request that is not the teacher's of class `code`: the key
+        from the teacher's cookie or `Authorization: Bearer KEY`. A request that `changes` the
+        class must also come from this server's own pages (docs/class.md, "Limits": OWASP's
+        CSRF guidance beside SameSite): its Origin this server's (403 naming a foreign one),
+        Sec-Fetch-Site, where sent, same-origin; a request with no Origin (curl, a script) only
+        with the key as a Bearer token, never the cookie alone."""
         key = request.cookies.get(TEACHER_COOKIE)
         auth = request.headers.get("Authorization", "")
-        if auth.startswith("Bearer "):
+        bearer = auth.startswith("Bearer ")
+        if bearer:
             key = auth[len("Bearer "):]
         if not key:
             raise refuse(401, "the teacher's key is needed (open the teacher's address, in "
                               "DATA/teacher-address.txt on the teacher's laptop)")
+        if changes:
+            self.same_origin(request, bearer)
+        if not key.isascii() or len(key) > 200:
+            raise refuse(403, f"this is not the teacher's key of class {code}")
         expected = self.store.teacher_key(code)
         if expected is None:
             raise refuse(404, f"no class with code {code}")
         if not hmac.compare_digest(key.encode(), expected.encode()):
             raise refuse(403, f"this is not the teacher's key of class {code}")
 
+    @staticmethod
+    def same_origin(request, bearer):
+        """Refuses (403) a state-changing request from another origin (teacher's docstring)."""
+        origin = request.headers.get("Origin")
+        site = request.headers.get("Sec-Fetch-Site")
+        own = f"https://{request.host}"
+        if origin is not None and origin != own:
+            raise refuse(403, f"a request from another origin ({origin[:80]}) may not change "
+                              f"the class: the teacher's page is {own[:80]}")
+        if site is not None and site != "same-origin":
+            raise refuse(403, f"a request from another site (Sec-Fetch-Site: {site[:40]}) may "
+                              "not change the class")
+        if origin is None and not bearer:
+            raise refuse(403, "a request without an Origin may change the class only with the "
+                              "teacher's key as Authorization: Bearer KEY")
+
     def student(self, request, code):
         auth = request.headers.get("Authorization", "")
-        if not auth.startswith("Bearer ") or len(auth) > 200:
+        if not auth.startswith("Bearer ") or len(auth) > 200 or not auth.isascii():
             raise refuse(401, "a student's token is needed (Authorization: Bearer TOKEN, from "
                               "joining the class)")
         found = self.store.student_of_token(auth[len("Bearer "):])
@@ -126,8 +154,14 @@ class ClassServer:
         return self.class_code_of(request.match_info["code"])
 
     def class_code_of(self, code):
-        if len(code) > 16 or not self.store.class_exists(code):
-            raise refuse(404, f"no class with code {code[:16]}")
+        """The class code as typed (any case, with spaces or hyphens: "k7pq 2m") in its
+        stored form ("K7PQ2M"), when that class exists; 404 otherwise."""
+        typed = code
+        code = code.strip().replace(" ", "").replace("-", "").upper()
+        if not 0 < len(code) <= 16 or not all(c in CODE_ALPHABET for c in code) or \
+                not self.store.class_exists(code):
+            shown = json.dumps(typed[:16], ensure_ascii=False)[1:-1]
+            raise refuse(404, f"no class with code {shown}")
         return code
 
     # Phones.
@@ -153,19 +187,23 @@ class ClassServer:
         answer = {"toss": toss, "held": True}
         held = self.store.toss(toss)
         if held is None:
+            try:
+                recording = await asyncio.to_thread(bookspin.read_gyro_csv, csv, f"{name}.csv")
+            except bookspin.Error as error:
+                raise refuse(400, str(error)) from None
+            samples = store.samples_sha256(recording)
+            # From here to add_toss nothing awaits: no other request holds a toss in between.
+            held = self.store.toss(toss)
+        if held is None:
             if self.store.student_toss_count(student) >= self.max_tosses:
                 raise refuse(403, f"this student holds {self.max_tosses} tosses, the most one "
                                   "student may (--max-tosses)")
-            twin = self.store.toss_of_recording(code, store.recording_sha256(csv))
-            if twin is not None:  # the fit refuses one recording given twice
-                raise refuse(409, f"the same recording as toss {twin}, held already (a "
-                                  "toss is held once)")
+            twin = self.store.toss_of_samples(code, samples)
+            if twin is not None:  # the pooled fit refuses the same samples given twice
+                raise refuse(409, f"the same recording as toss {twin}, held already (the same "
+                                  "samples; a recording is held once)")
             try:
-                await asyncio.to_thread(bookspin.read_gyro_csv, csv, f"{name}.csv")
-            except bookspin.Error as error:
-                raise refuse(400, str(error)) from None
-            try:
-                self.store.add_toss(toss, code, student, name, recorded_at, csv, digest)
+                self.store.add_toss(toss, code, student, name, recorded_at, csv, digest, samples)
                 self.changed(code)
                 return web.json_response(answer, status=201)
             except self.integrity_errors:
@@ -199,7 +237,8 @@ class ClassServer:
     # The teacher.
     async def teacher_login(self, request):
         key = request.query.get("key", "")
-        code = self.store.class_of_key(key) if key else None
+        code = self.store.class_of_key(key) if key.isascii() and key.isprintable() and \
+            0 < len(key) <= 200 else None
         if code is None:
             raise refuse(403, "unknown teacher's key")
         response = web.HTTPFound(f"/projector?class={code}")
@@ -234,15 +273,19 @@ class ClassServer:
                         await response.write(b": still here\n\n")
                 while not queue.empty():  # only the latest state matters
                     state = queue.get_nowait()
+                if queue in self.ended:  # the class's last event: the stream ends with it
+                    await response.write(f"event: class\ndata: {state}\n\n".encode("utf-8"))
+                    break
         except (ConnectionResetError, asyncio.CancelledError):
             pass
-        finally:
-            self.listeners[code].discard(queue)
+        finally:  # the class may have ended (end() took its listeners)
+            self.listeners.get(code, set()).discard(queue)
+            self.ended.discard(queue)
         return response
 
     async def set_excluded(self, request, reason):
         code = self.class_code(request)
-        self.teacher(request, code)
+        self.teacher(request, code, changes=True)
         toss = limits.toss_id(request.match_info["toss"], "toss id")
         if not self.store.set_excluded(code, toss, reason):
             raise refuse(404, f"class {code} holds no toss {toss}")
@@ -251,6 +294,8 @@ class ClassServer:
                                  dumps=lambda v: json.dumps(v, ensure_ascii=False))
 
     async def exclude(self, request):
+        code = self.class_code(request)
+        self.teacher(request, code, changes=True)  # before the body: a refusal reads none
         body = await limits.json_body(request)
         reason = limits.text_field(body, "reason", max_chars=200).strip()
         if not reason:
@@ -263,17 +308,21 @@ class ClassServer:
     async def download(self, request):
         code = self.class_code(request)
         self.teacher(request, code)
-        data = pooled.set_zip(self.kept_files(code), f"class-{code}")
+        names = {t["seq"]: t["student_name"] for t in self.store.tosses(code)}
+        left_out = {pooled.file_stem(names[seq], seq): held
+                    for seq, held in self.store.left_out(code).items()}
+        data = pooled.set_zip(self.kept_files(code), f"class-{code}", left_out)
         return web.Response(body=data, content_type="application/zip", headers={
             "Content-Disposition": f'attachment; filename="class-{code}.zip"'})
 
     async def end(self, request):
         code = self.class_code(request)
-        self.teacher(request, code)
+        self.teacher(request, code, changes=True)
         self.store.delete_class(code)
         self.fits.pop(code, None)
         for queue in self.listeners.pop(code, set()):
             queue.put_nowait(json.dumps({"code": code, "ended": True}))
+            self.ended.add(queue)
         return web.json_response({"ended": code, "deleted": True})
 
     # Pages.

@@ -263,10 +263,18 @@ def guard_middleware(options, rate):
             response = error
         except (asyncio.CancelledError, ConnectionResetError):
             raise
-        except Exception:  # a bug or a store gone: 500 in one line, the trace on the terminal
-            traceback.print_exc()
-            response = web.json_response({"error": "internal error (the server's terminal "
-                                                   "says more)"}, status=500)
+        except Exception as error:
+            # The machine's state (a full disk, a read-only store) in its own words, 507/503;
+            # a bug or a store gone: 500 in one line, the trace on the terminal.
+            failed = store.failure(error, db.description)
+            if failed is not None:
+                print(f"{PROGRAM}: {request.method} {request.path[:80]}: {failed[1]} ({error})",
+                      file=sys.stderr, flush=True)
+                response = web.json_response({"error": failed[1]}, status=failed[0])
+            else:
+                traceback.print_exc()
+                response = web.json_response({"error": "internal error (the server's terminal "
+                                                       "says more)"}, status=500)
         response.headers.setdefault("X-Content-Type-Options", "nosniff")
         response.headers.setdefault("Referrer-Policy", "no-referrer")
         return response

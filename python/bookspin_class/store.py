@@ -29,6 +29,7 @@ SCHEMA = [
          csv TEXT NOT NULL,
          csv_sha256 TEXT NOT NULL,
          recording_sha256 TEXT NOT NULL,
+         samples_sha256 TEXT,
          received DOUBLE PRECISION NOT NULL,
          excluded TEXT,
          UNIQUE (class_code, seq))""",
@@ -41,8 +42,49 @@ CLASS_LOCK_SPACE = 0x626B7363
 
 
 def recording_sha256(csv):
-    """The SHA-256 of a toss's CSV text: one recording held once per class."""
+    """The SHA-256 of a toss's CSV text, as sent."""
     return hashlib.sha256(csv.encode("utf-8")).hexdigest()
+
+
+def samples_sha256(recording):
+    """The SHA-256 of a recording's samples as the pooled fit compares them (src/fit/pool.cpp,
+    check_not_twice: the times and ω equal as numbers, whatever the CSV's line ends or number
+    format): `recording` is bookspin.read_gyro_csv's {"t": (N,) s, "omega": (N, 3) rad/s}, hashed
+    as float64 little-endian with −0 read as 0 (equal as numbers). One recording is held once
+    per class."""
+    import numpy
+    digest = hashlib.sha256()
+    for key in ("t", "omega"):
+        array = numpy.ascontiguousarray(recording[key], dtype="<f8") + 0.0  # −0 + 0 is +0
+        digest.update(f"{key}{array.shape}".encode("ascii"))
+        digest.update(array.tobytes())
+    return digest.hexdigest()
+
+
+def read_samples_sha256(csv):
+    """samples_sha256 of a held toss's CSV text (read as the door read it); the text's own
+    SHA-256 where the reader refuses it (a toss held before the door read recordings)."""
+    import bookspin
+    try:
+        return samples_sha256(bookspin.read_gyro_csv(csv, "recording.csv"))
+    except bookspin.Error:
+        return "text:" + recording_sha256(csv)
+
+
+def failure(error, description):
+    """(HTTP status, one line) for a store's error that is the machine's state rather than a
+    bug: its disk full (507) or the store (`description`, Store.description) read-only (503);
+    None for any other error."""
+    code = getattr(error, "sqlite_errorcode", None)
+    sqlstate = getattr(error, "sqlstate", None)
+    if code == sqlite3.SQLITE_FULL or sqlstate == "53100":
+        return 507, ("the server's disk is full: nothing was stored (the teacher frees space "
+                     "on the laptop; the phone sends it again)")
+    if (code is not None and code & 0xFF in (sqlite3.SQLITE_READONLY, sqlite3.SQLITE_CANTOPEN)) \
+            or sqlstate == "25006":
+        return 503, (f"the store ({description}) is read-only: nothing was stored (the teacher "
+                     "makes it writable again)")
+    return None
 
 
 def token_sha256(token):
@@ -64,6 +106,19 @@ class Store:
             for statement in SCHEMA:
                 self.connection.execute(statement)
             self.connection.commit()
+        self._add_samples_sha256()
+
+    def _add_samples_sha256(self):
+        """A store made before tosses had samples_sha256 gets the column, and every toss its
+        hash (read from its CSV text, as the door reads a toss)."""
+        try:
+            self._all("SELECT samples_sha256 FROM tosses WHERE 1 = 0")
+        except Exception:  # the drivers' "no such column" (sqlite3 and psycopg differ)
+            self._write([("ALTER TABLE tosses ADD COLUMN samples_sha256 TEXT", ())])
+        missing = self._all("SELECT toss, csv FROM tosses WHERE samples_sha256 IS NULL")
+        if missing:
+            self._write([("UPDATE tosses SET samples_sha256 = ? WHERE toss = ?",
+                          (read_samples_sha256(csv), toss)) for toss, csv in missing])
 
     def _sql(self, statement):
         return statement if self.marker == "?" else statement.replace("?", "%s")
@@ -172,16 +227,17 @@ class Store:
     def student_toss_count(self, student):
         return self._all("SELECT COUNT(*) FROM tosses WHERE student = ?", (student,))[0][0]
 
-    def toss_of_recording(self, code, recording_sha256):
-        """The id of the class's toss whose CSV text has this SHA-256, or None."""
-        rows = self._all("SELECT toss FROM tosses WHERE class_code = ? AND recording_sha256 = ?",
-                         (code, recording_sha256))
+    def toss_of_samples(self, code, samples_sha256):
+        """The id of the class's toss whose samples have this samples_sha256, or None."""
+        rows = self._all("SELECT toss FROM tosses WHERE class_code = ? AND samples_sha256 = ? "
+                         "ORDER BY seq", (code, samples_sha256))
         return rows[0][0] if rows else None
 
-    def add_toss(self, toss, code, student, name, recorded_at, csv, csv_sha256):
+    def add_toss(self, toss, code, student, name, recorded_at, csv, csv_sha256, samples):
         """Holds a toss, committed before it returns; its seq is the class's next number (the
-        file name the pooled set gives it). Raises the driver's integrity error when the id is
-        held already (two requests at once: the caller looks again)."""
+        file name the pooled set gives it); `samples` is its samples_sha256. Raises the
+        driver's integrity error when the id is held already (two requests at once: the caller
+        looks again)."""
         with self.lock:
             try:
                 cursor = self.connection.execute(
@@ -190,10 +246,11 @@ class Store:
                 seq = cursor.fetchall()[0][0]
                 self.connection.execute(
                     self._sql("INSERT INTO tosses (toss, class_code, student, seq, name, "
-                              "recorded_at, csv, csv_sha256, recording_sha256, received, "
-                              "excluded) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, NULL)"),
+                              "recorded_at, csv, csv_sha256, recording_sha256, samples_sha256, "
+                              "received, excluded) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, "
+                              "NULL)"),
                     (toss, code, student, seq, name, recorded_at, csv, csv_sha256,
-                     recording_sha256(csv), time.time()))
+                     recording_sha256(csv), samples, time.time()))
                 self.connection.commit()
             except BaseException:
                 self.connection.rollback()
@@ -223,6 +280,12 @@ class Store:
         return dict(self._all("SELECT seq, csv FROM tosses WHERE class_code = ? AND excluded "
                               "IS NULL", (code,)))
 
+    def left_out(self, code):
+        """{seq: (csv text, the teacher's reason)} of the class's tosses left out."""
+        return {seq: (csv, reason) for seq, csv, reason in self._all(
+            "SELECT seq, csv, excluded FROM tosses WHERE class_code = ? AND excluded IS NOT "
+            "NULL", (code,))}
+
     def counts(self):
         """Rows per table, for the tests' "nothing stored"."""
         return {table: self._all(f"SELECT COUNT(*) FROM {table}")[0][0]
@@ -236,21 +299,48 @@ class Store:
 def open_sqlite(path):
     """The default store: an SQLite file (WAL journal, synchronous=FULL: a commit is on disk
     when it returns), made if missing; the file and its -wal and -shm readable and writable by
-    this account alone (0600; docs/class.md, "What is kept")."""
-    connection = sqlite3.connect(str(path), check_same_thread=False, isolation_level=None)
+    this account alone (0600; docs/class.md, "What is kept"). A store that cannot be written
+    raises sqlite3.OperationalError saying why (read_only_reason)."""
+    connection = None
     try:
+        connection = sqlite3.connect(str(path), check_same_thread=False, isolation_level=None)
         connection.execute("PRAGMA journal_mode=WAL")
         connection.execute("PRAGMA synchronous=FULL")
         connection.execute("PRAGMA foreign_keys=ON")
         connection.isolation_level = ""  # transactions begin implicitly again; commit() ends them
         store = Store(connection, "?", f"SQLite {path}")
+    except sqlite3.Error as error:
+        if connection is not None:
+            connection.close()
+        read_only = read_only_reason(path)
+        if read_only is not None:
+            raise sqlite3.OperationalError(f"the store {path} is read-only ({read_only})") \
+                from error
+        raise
     except BaseException:
-        connection.close()
+        if connection is not None:
+            connection.close()
         raise
     for suffix in ("", "-wal", "-shm"):
         if os.path.exists(f"{path}{suffix}"):
             os.chmod(f"{path}{suffix}", 0o600)
     return store
+
+
+def read_only_reason(path):
+    """Why the SQLite store at `path` cannot be written (its file system mounted read-only, its
+    file or folder not writable by this account), or None."""
+    folder = os.path.dirname(os.path.abspath(path)) or "."
+    try:
+        if os.statvfs(folder).f_flag & os.ST_RDONLY:
+            return f"{folder} is on a file system mounted read-only"
+    except OSError:
+        return None
+    if os.path.exists(path) and not os.access(path, os.W_OK):
+        return "the file is not writable by this account"
+    if not os.access(folder, os.W_OK):
+        return f"its folder {folder} is not writable by this account"
+    return None
 
 
 def open_postgres(url):

@@ -103,7 +103,7 @@ def cli_fit_of_download(server, folder):
     assert status == 200
     with zipfile.ZipFile(io.BytesIO(data)) as archive:
         archive.extractall(folder)
-    files = sorted(str(p) for p in pathlib.Path(folder).rglob("*.csv"))
+    files = sorted(str(p) for p in pathlib.Path(folder).glob("class-*/*.csv"))  # not left-out/
     run_cli("fit", *files, "-o", pathlib.Path(folder) / "out")
     body = next((pathlib.Path(folder) / "out").glob("*-fit-body.csv"))
     tosses = next(p for p in (pathlib.Path(folder) / "out").glob("*-fit.csv"))
