@@ -137,7 +137,6 @@ def lesson(driver, server, shots, recordings):
         fail(f"the class's page without ?class=: the lab open, a class box, its title, an empty code, the "
              f"join form: {shown}")
     print(f"explorer.html#lab on the class's server: {shown}")
-    screenshots(driver, shots, "join", "classBox")
 
     # A toss turned too slowly, before joining: the fit fails in one sentence saying what to do.
     driver.execute_script("""window.saidLines = [];
@@ -162,6 +161,8 @@ def lesson(driver, server, shots, recordings):
     typed = f"{code[:2].lower()} {code[2:4].lower()}-{code[4:].lower()}"
     type_into(driver, "classCode", typed)
     type_into(driver, "className", NAME)
+    driver.execute_script("document.activeElement.blur()")
+    screenshots(driver, shots, "join", "classBox")
     tap(driver, "classJoinButton")
     said = wait_for(driver, "return document.getElementById('classState').textContent",
                     lambda s: s.startswith("In class") or "error" in s, 20)

@@ -262,7 +262,7 @@ export class ClassLink {
     if (!this.place) return Promise.resolve();
     const code = this.code;
     return ask(api(code, 'me'), { headers: { Authorization: `Bearer ${this.place.token}` } }).then(({ status, body }) => {
-      if ((status === 404 || status === 410) && code === this.code) { this.ended(body.error || `the server answered ${status}`); return; }
+      if ((status === 404 || status === 410) && code === this.code && this.place) { this.ended(); return; }
       if (status !== 200) throw new Error(body.error || `the server answered ${status}`);
       this.showResults(body);
     }).catch((e) => {
@@ -271,20 +271,28 @@ export class ClassLink {
     });
   }
 
-  /** The class is no more on its server (ended by the teacher, its data deleted; or a new class
-   * started in its place): said once, this phone's place in it forgotten, nothing more asked
-   * of it (its tosses still waiting are answered so once and shown refused); the join form,
-   * for another class. `why`: the server's words. */
-  ended(why) {
+  /** The class is no more on its server (a 404 to this student's results: the teacher ended it,
+   * its data deleted, or started another class in its place): said once; this phone's place in
+   * it forgotten and the class taken out of the address (a reload does not claim it again);
+   * nothing more asked of it (a toss still waiting is answered so once and shown refused); the
+   * join form, for another class. */
+  ended() {
     const code = this.code;
     localStorage.removeItem(joinedKey(code));
     this.place = null;
+    this.code = '';
+    const params = new URLSearchParams(location.search);
+    params.delete('class');
+    const query = params.toString();
+    history.replaceState(history.state, '', `${location.pathname}${query ? `?${query}` : ''}${location.hash}`);
     $('classMe').hidden = true;
     $('classAgain').hidden = true;
     $('classJoin').hidden = false;
+    $('classTitle').textContent = 'Join a class';
     $('classCode').value = '';
-    this.say(`Class ${code} is over: its server no longer has it (${why}); the teacher ended it and its data was ` +
-      'deleted. Your recordings stay on this phone below (Download keeps one). To join another class, type its code.', true);
+    this.say(`Class ${code} is over: its server no longer has it (the teacher ended it, deleting its data, or ` +
+      'started another class). Your recordings stay on this phone, below; each row\'s Download saves it. To join ' +
+      'another class, type its code.', true);
     this.outbox.drain(true);
   }
 
