@@ -102,9 +102,16 @@ export class ClassLink {
     $('classRefresh').addEventListener('click', () => this.results());
     setInterval(() => { if (this.place && !$('lab').hidden && !document.hidden) this.results(); }, RESULTS_EVERY_MS);
     if (this.code) this.offer();
-    // The address without its class (explorer.html#lab typed by hand) on a class's server: the
-    // join form all the same, its code to type.
-    else servedByAClass().then((yes) => { if (yes && !this.code) this.offer(); });
+    // The address without its class (explorer.html#lab, or the bare https://ADDRESS:PORT/,
+    // typed by hand) on a class's server: the lab and its join form all the same, the code to
+    // type.
+    else {
+      servedByAClass().then((yes) => {
+        if (!yes || this.code) return;
+        this.offer();
+        if (!location.hash) $('lab').hidden = false;
+      });
+    }
   }
 
   /** The class's box shown: the join form (the code from the address, where it names one), or
