@@ -5,8 +5,10 @@
 // other bytes), a network that can be down or lose an answer after the server committed, and a
 // clock the test moves by hand. Checked: every toss kept is held once, in the order kept,
 // whatever fails on the way; a refusal (4xx) is shown with the server's reason and not sent
-// again; no answer or a 5xx is tried again after a wait that doubles; a reload finds every toss
-// not yet held and sends it, and none held again.
+// again; no answer or a 5xx is tried again after a wait that doubles, at most 60 s, the first
+// wait again once a toss is held, a toss kept during a wait not sent past it (one timer); a
+// reload finds every toss not yet held and sends it, and none held again; a toss forgotten (its
+// recording removed) is not sent, even when its send was in flight.
 // Usage: node tests/web/class_outbox_test.mjs SOURCE_DIR
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
