@@ -33,11 +33,12 @@ export function classCode(text) {
   return String(text).normalize('NFKC').replace(/[\s\p{Pd}]/gu, '').toUpperCase();
 }
 
-/** Whether the page was served by a class's server (docs/class.md, "The API"): its CA's
- * certificate is at /ca.pem. A promise of true or false (a page from a file, or another
- * server: false). */
+/** Whether the page was served by a class's server (docs/class.md, "The API"): over https
+ * (a class's server serves nothing else), its CA's certificate at /ca.pem. A promise of true or
+ * false (a page from a file, over http, or from another server: false; not asked over http,
+ * where a missing /ca.pem would be a 404 in the console of every page served so). */
 function servedByAClass() {
-  if (!/^https?:$/.test(location.protocol)) return Promise.resolve(false);
+  if (location.protocol !== 'https:') return Promise.resolve(false);
   return fetch('/ca.pem', { method: 'HEAD', cache: 'no-store' })
     .then((r) => r.ok && /x509|pem/.test(r.headers.get('Content-Type') || ''), () => false);
 }
