@@ -6,6 +6,7 @@ against the real class server (python/bookspin_class, started by tests/python/cl
 Server over https, its certificate trusted by its key's hash) and real recordings
 (../shared/recordings-real/dvarkian-2022-05-03, fed sample by sample at their own rate through the
 sensor override; a failure under CI=true where that folder is absent, a skip elsewhere):
+  - the bare address typed by hand (https://ADDRESS:PORT/): the lab with its join form;
   - the class's page typed by hand without its class (https://ADDRESS:PORT/explorer.html#lab):
     the lab offers "Join a class" with a code field, not a lab without a class box;
   - a toss recorded turning too slowly (before joining): the lab's fit fails in one sentence
@@ -125,6 +126,17 @@ def main():
 
 def lesson(driver, server, shots, recordings):
     code = server.code
+    # The bare address typed by a student who cannot scan: the lab's join form (its code filled
+    # in where the server sends the class's address instead).
+    driver.get(server.url)
+    if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
+        fail(f"the page never became ready: {driver.get_log('browser')}")
+    shown = wait_for(driver, """return [!document.getElementById('lab').hidden, !document.getElementById('classBox').hidden,
+        !document.getElementById('classJoin').hidden, document.getElementById('classCode').value]""",
+                     lambda s: s[0] and s[1], 15)
+    if shown[:3] != [True, True, True] or shown[3] not in ("", code):
+        fail(f"the bare address {server.url}: the lab open, a class box, the join form, the code: {shown}")
+    print(f"the bare address: {shown} ({driver.current_url})")
     # The class's page typed without its class: the join form all the same.
     driver.get(f"{server.url}explorer.html#lab")
     if not wait_for(driver, "return !!(window.explorer && window.explorer.ready)", bool, 60):
