@@ -69,9 +69,12 @@ export function panelOpen() {
  * Remove on a toss the class holds), in the page's <dialog id="question"> over everything,
  * a panel included (the top layer): `question` its first line, `detail` what follows from each
  * answer, `yes` and `no` its two buttons' words. Focus on `no` (a stray tap on the first button
- * removes nothing); Escape answers no. A promise of true (yes) or false. */
+ * removes nothing); Escape answers no, as does a second question while one is open. A promise of
+ * true (yes) or false. */
 export function askFirst({ question, detail, yes, no }) {
   const dialog = document.getElementById('question');
+  // A question already asked (a second tap behind the first's dialog): this one is no.
+  if (dialog.open) return Promise.resolve(false);
   document.getElementById('questionText').textContent = question;
   document.getElementById('questionDetail').textContent = detail;
   const yesButton = document.getElementById('questionYes'), noButton = document.getElementById('questionNo');
