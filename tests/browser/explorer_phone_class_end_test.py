@@ -13,15 +13,18 @@ sensor override; a failure under CI=true where that folder is absent, a skip els
     saying what to do ("record again, spinning the phone faster … at least 2 rad/s", the finder's
     number), the fit's whole line one tap away in a closed <details>; said in the live region;
   - the code typed in lower case with a space and a dash joins (the projector's code);
+  - the slow turn sent to the class by its row's button: the class's fit of it alone fails, and
+    the phone says so in one sentence (the server's own where it gives one), not "not fitted
+    yet"; the teacher leaves it out;
   - two real tosses held by the class; Remove on a held one asks first, saying the class keeps
     its copy and to ask the teacher; "Keep it" keeps the row; "Remove from this phone" removes
-    it from the phone alone: the server still holds both tosses;
+    it from the phone alone: the server still holds all three tosses;
   - the teacher ends the class (DELETE, as the projector's End does): the phone says the class
     is over at its next reading of the results, shows the join form, and asks the server
     nothing more (no reading of the results in the 17 s after, where it read them every 15 s);
     a reload does not claim the class again.
-Screenshots (BINARY_DIR/test-output/browser/explorer-phone-class-{join,fit-failed,list,results,
-remove,ended}-WxH.png) at 390x844 and 320x568 (docs/class.md's, "A phone"); none of their text
+Screenshots (BINARY_DIR/test-output/browser/explorer-phone-class-{join,fit-failed,class-failed,
+list,results,remove,ended}-WxH.png) at 390x844 and 320x568 (docs/class.md's, "A phone"); none of their text
 under 12 px or past its box.
 
 Usage: explorer_phone_class_end_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
@@ -34,8 +37,8 @@ from pathlib import Path
 
 from browser import (console_errors, fail, find_browser, lab_page_under_test, missing, open_browser,
                      require, test_arguments, text_problems, wait_for)
-from explorer_phone_in_class_test import (FOLDER, RealServer, readings, record, row_state, rows,
-                                          state_of, type_into, wait_row)
+from explorer_phone_in_class_test import (FOLDER, ROW_BUTTON, RealServer, readings, record, row_state,
+                                          rows, state_of, type_into, wait_row)
 from explorer_records_gyro_test import override, tap
 
 SIZES = [(390, 844), (320, 568)]
@@ -186,6 +189,33 @@ def lesson(driver, server, shots, recordings):
     if row_state(driver, slow):
         fail(f"the slow turn kept before joining was sent: {row_state(driver, slow)!r}")
 
+    # The slow turn sent to the class by its row's button: the class's fit of it alone fails,
+    # and the phone says so in one sentence (not "not fitted yet"); the teacher leaves it out.
+    point = driver.execute_script(ROW_BUTTON + "b.scrollIntoView({block: 'center'}); const r = b.getBoundingClientRect();"
+                                  "return {x: r.left + r.width / 2, y: r.top + r.height / 2};", slow)
+    driver.execute_cdp_cmd("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [point]})
+    driver.execute_cdp_cmd("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})
+    wait_row(driver, slow, f"held by class {code}", 30, "the slow turn sent")
+    failed = None
+    for _ in range(60):
+        tap(driver, "classRefresh")
+        failed = wait_for(driver, """const e = document.getElementById('classPooledError'); const d = e.querySelector('details');
+            return [e.hidden, (e.querySelector('.failureSentence') || e).textContent, d ? d.open : null,
+              document.getElementById('classPooled').textContent]""", lambda f: not f[0], 2)
+        if not failed[0]:
+            break
+    if failed[0] or not failed[1] or len(failed[1]) > 300 or failed[2] or failed[3] != "The class's body: not fitted":
+        fail(f"the class's fit of a recording with no flight: the phone shows {failed} (hidden, its sentence, "
+             "its detail open, the body's line)")
+    print(f"the class's fit failed: {failed[1]!r}")
+    screenshots(driver, shots, "class-failed", "classBox")
+    toss = driver.execute_script("return window.explorer.labTossIds()")[slow]
+    origin = {"Origin": server.url.rstrip("/")}
+    answer = server.server.request("POST", f"/api/class/{code}/tosses/{toss}/exclude", {"reason": "no flight"},
+                                   token=server.server.key, headers=origin)
+    if answer[0] != 200:
+        fail(f"leaving the slow turn out: {answer}")
+
     # Two real tosses, held by the class; the class's results.
     names = []
     for k, (t, omega) in enumerate(recordings):
@@ -218,12 +248,13 @@ def lesson(driver, server, shots, recordings):
                     lambda r: names[0] not in r, 5)
     outbox = [i["toss"] for i in driver.execute_script("return window.explorer.classOutbox()")]
     held = [b["name"] for b in server.held()]
-    if names[0] in gone or held != names or len(outbox) != 1:
-        fail(f"removed from the phone: its rows {gone}, its outbox {outbox}; the server holds {held}, not {names}")
+    if names[0] in gone or held != [slow, *names] or len(outbox) != 2:
+        fail(f"removed from the phone: its rows {gone}, its outbox {outbox}; the server holds {held}, not "
+             f"{[slow, *names]}")
     print(f"removed from this phone; the class still holds {held}")
 
     # The teacher ends the class: the phone says so once, and asks nothing more.
-    answer = server.server.request("DELETE", f"/api/class/{code}", token=server.server.key)
+    answer = server.server.request("DELETE", f"/api/class/{code}", token=server.server.key, headers=origin)
     if answer[0] != 200:
         fail(f"ending the class: {answer}")
     tap(driver, "classRefresh")

@@ -65,7 +65,13 @@ test('the class\'s failed fit: the server\'s sentence where it gives one, else o
     { sentence: 'Ask your teacher to leave out ana-3.', detail: line });
   assert.deepEqual(classFitFailure({ ratios: null, error: line }), {
     sentence: "The class's body could not be fitted (class-K7PQ2M/ana-3.csv: the same samples as class-K7PQ2M/ben-1.csv): " +
-      'your teacher sees the class\'s tosses and can leave out the one that breaks it.', detail: line });
+      'your teacher sees the class\'s tosses on the projector and can leave out the one that breaks it.', detail: line });
+  // A server that says nothing of the failure: recordings fitted and no body is one.
+  assert.deepEqual(classFitFailure({ tosses: 0, recordings: 1, ratios: null, sigma: null }), {
+    sentence: "The class's body could not be fitted from its 1 recording: your teacher sees the class's tosses on the " +
+      'projector and can leave out the one that breaks it.', detail: '' });
+  // Nothing held yet, or not fitted yet: no failure.
+  assert.equal(classFitFailure({ tosses: 0, recordings: 0, ratios: null, sigma: null }), null);
 });
 
 test('a class code typed in lower case, with spaces, dashes or full-width letters is the projector\'s', () => {

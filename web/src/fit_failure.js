@@ -56,15 +56,21 @@ export function fitFailure(line) {
 
 /** What a student is shown of the class's pooled fit that failed (`pooled`: the server's
  * pooled body, docs/class.md "The API": its `error_summary`, one sentence, where the server
- * gives one, and its `error`, the fit's line): {sentence, detail}, or null where it did not
- * fail. */
+ * gives one, and its `error`, the fit's line; a server that gives neither: fitted from
+ * `recordings` recordings and no `ratios`, which only a failed fit leaves): {sentence, detail},
+ * or null where it did not fail. */
 export function classFitFailure(pooled) {
-  if (!pooled || (typeof pooled.error !== 'string' && typeof pooled.error_summary !== 'string')) return null;
-  if (!pooled.error && !pooled.error_summary) return null;
+  if (!pooled || typeof pooled !== 'object') return null;
   const detail = typeof pooled.error === 'string' ? pooled.error : '';
-  if (typeof pooled.error_summary === 'string' && pooled.error_summary) return { sentence: pooled.error_summary, detail };
-  return { sentence: `The class's body could not be fitted (${firstClause(detail)}): your teacher sees the class's ` +
-    'tosses and can leave out the one that breaks it.', detail };
+  const summary = typeof pooled.error_summary === 'string' ? pooled.error_summary : '';
+  if (summary) return { sentence: summary, detail };
+  const leaveOut = 'your teacher sees the class\'s tosses on the projector and can leave out the one that breaks it.';
+  if (detail) return { sentence: `The class's body could not be fitted (${firstClause(detail)}): ${leaveOut}`, detail };
+  if (!pooled.ratios && typeof pooled.recordings === 'number' && pooled.recordings > 0) {
+    return { sentence: `The class's body could not be fitted from its ${pooled.recordings} ` +
+      `recording${pooled.recordings === 1 ? '' : 's'}: ${leaveOut}`, detail: '' };
+  }
+  return null;
 }
 
 /** The HTML of a failure `f` ({sentence, detail}) under `prefix` ("error: "): the sentence, and
