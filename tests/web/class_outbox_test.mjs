@@ -5,8 +5,10 @@
 // other bytes), a network that can be down or lose an answer after the server committed, and a
 // clock the test moves by hand. Checked: every toss kept is held once, in the order kept,
 // whatever fails on the way; a refusal (4xx) is shown with the server's reason and not sent
-// again; no answer or a 5xx is tried again after a wait that doubles; a reload finds every toss
-// not yet held and sends it, and none held again.
+// again; no answer or a 5xx is tried again after a wait that doubles, at most 60 s, the first
+// wait again once a toss is held, a toss kept during a wait not sent past it (one timer); a
+// reload finds every toss not yet held and sends it, and none held again; a toss forgotten (its
+// recording removed) is not sent, even when its send was in flight.
 // Usage: node tests/web/class_outbox_test.mjs SOURCE_DIR
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
@@ -266,4 +268,84 @@ test('a server error (5xx) or a busy server (429) is tried again, the reason sho
   clock.tick(); await settle(outbox);
   assert.equal(outbox.state(k.toss).state, 'held');
   assert.equal(server.stored.length, 1);
+});
+
+test('once a toss is held, the next failure waits the first wait again, not the long one', async () => {
+  const storage = phoneStorage(), server = classServer(), clock = handClock();
+  const { outbox } = page(storage, server, clock);
+  server.down = true;
+  const first = toss();
+  await outbox.add(first);
+  await settle(outbox);
+  for (let n = 0; n < 4; ++n) { clock.tick(); await settle(outbox); }
+  assert.equal(clock.waits.at(-1), 16 * RETRY_FIRST_MS);
+  // Back by the timer alone (no online event, which forgets the failures itself): held.
+  server.down = false;
+  clock.tick(); await settle(outbox);
+  assert.equal(outbox.state(first.toss).state, 'held');
+  // Down again: the next toss's first wait is the first one, as for a fresh outage.
+  server.down = true;
+  const second = toss();
+  await outbox.add(second);
+  await settle(outbox);
+  assert.equal(outbox.state(second.toss).state, 'waiting');
+  assert.equal(clock.waits.at(-1), RETRY_FIRST_MS, `waits ${clock.waits}`);
+});
+
+test('a toss kept during a wait waits with the others: no try before the wait ends, one timer', async () => {
+  const storage = phoneStorage(), server = classServer(), clock = handClock();
+  const { outbox } = page(storage, server, clock);
+  server.status = 503;
+  server.error = 'the database is busy';
+  const first = toss();
+  await outbox.add(first);
+  await settle(outbox);
+  clock.tick(); await settle(outbox);
+  clock.tick(); await settle(outbox);
+  const asked = server.asked.length;
+  assert.equal(clock.timers.length, 1);
+  // Three more kept while the server keeps failing: none asked until the wait ends.
+  const more = [toss(), toss(), toss()];
+  for (const k of more) { await outbox.add(k); await settle(outbox); }
+  assert.equal(server.asked.length, asked, 'a toss kept during a wait was sent at once, past the backoff');
+  assert.equal(clock.timers.length, 1, 'a second timer: the backoff is run twice');
+  for (const k of more) assert.equal(outbox.state(k.toss).state, 'waiting');
+  // The wait ends: one try (the first toss, still failing), the wait doubled.
+  clock.tick(); await settle(outbox);
+  assert.equal(server.asked.length, asked + 1);
+  assert.equal(clock.waits.at(-1), 8 * RETRY_FIRST_MS);
+  // The server well again: all four held, in order.
+  server.status = 0;
+  clock.tick(); await settle(outbox);
+  assert.deepEqual(server.stored.map((s) => s.toss), [first, ...more].map((k) => k.toss));
+});
+
+test('a toss forgotten (its recording removed) is not sent, nor again, and leaves the storage', async () => {
+  const storage = phoneStorage(), server = classServer(), clock = handClock();
+  const { outbox } = page(storage, server, clock);
+  server.down = true;
+  const [kept, removed] = [toss(), toss()];
+  await outbox.add(kept);
+  await outbox.add(removed);
+  await settle(outbox);
+  await outbox.forget(removed.toss);
+  assert.equal(outbox.state(removed.toss), undefined);
+  assert.ok(!storage.rows.has(removed.toss));
+  server.down = false;
+  clock.tick(); await settle(outbox);
+  assert.deepEqual(server.stored.map((s) => s.toss), [kept.toss]);
+  // One forgotten while in flight: its answer changes nothing, it is not stored again.
+  let release;
+  const slow = toss();
+  const post = server.post;
+  server.post = (item) => new Promise((resolve) => { release = () => resolve(post(item)); });
+  const again = page(storage, server, clock);
+  await again.outbox.add(slow);
+  await new Promise((r) => setImmediate(r));
+  assert.equal(again.outbox.state(slow.toss).state, 'sending');
+  await again.outbox.forget(slow.toss);
+  release();
+  await settle(again.outbox);
+  assert.equal(again.outbox.state(slow.toss), undefined);
+  assert.ok(!storage.rows.has(slow.toss));
 });

@@ -9,6 +9,8 @@ import { classStore } from './class_store.js';
 import { loneSurrogateProblem } from './well_formed.js';
 import { announce } from './gyro_recorder.js';
 import { plusMinus } from './precision.js';
+import { askFirst } from './modal.js';
+import { classFitFailure, failureHtml } from './fit_failure.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -23,6 +25,23 @@ export const RESULTS_EVERY_MS = 15000;
 
 /** localStorage's key of this phone's place in class `code`: {student, token, name}. */
 export const joinedKey = (code) => `bookspin-class-${code}`;
+
+/** A class code as typed (`text`) in the form the server gives it: its letters in upper case,
+ * without spaces or dashes ("k7pq 2m", "K7P-Q2M" → "K7PQ2M"), full-width letters as ASCII
+ * (Unicode's compatibility form, NFKC: a phone's Japanese or Chinese keyboard). */
+export function classCode(text) {
+  return String(text).normalize('NFKC').replace(/[\s\p{Pd}]/gu, '').toUpperCase();
+}
+
+/** Whether the page was served by a class's server (docs/class.md, "The API"): over https
+ * (a class's server serves nothing else), its CA's certificate at /ca.pem. A promise of true or
+ * false (a page from a file, over http, or from another server: false; not asked over http,
+ * where a missing /ca.pem would be a 404 in the console of every page served so). */
+function servedByAClass() {
+  if (location.protocol !== 'https:') return Promise.resolve(false);
+  return fetch('/ca.pem', { method: 'HEAD', cache: 'no-store' })
+    .then((r) => r.ok && /x509|pem/.test(r.headers.get('Content-Type') || ''), () => false);
+}
 
 /** The address of the class's `what` (join, tosses, me) on the server that served the page. */
 const api = (code, what) => `/api/class/${encodeURIComponent(code)}/${what}`;
@@ -66,7 +85,7 @@ export class ClassLink {
   constructor(recorder, nameProblem) {
     this.recorder = recorder;
     this.nameProblem = nameProblem;
-    this.code = (new URLSearchParams(location.search).get('class') || '').trim();
+    this.code = classCode(new URLSearchParams(location.search).get('class') || '');
     this.place = this.code ? placeIn(this.code) : null;
     this.outbox = new ClassOutbox({
       store: classStore().catch(() => null),
@@ -75,19 +94,36 @@ export class ClassLink {
     });
     recorder.onKept = (k) => this.kept(k);
     recorder.onRow = (row, k) => this.row(row, k);
+    recorder.beforeRemove = (k) => this.beforeRemove(k);
     // Back on the network: every waiting toss at once. The page loaded: those earlier pages left.
     window.addEventListener('online', () => this.outbox.drain(true));
     this.outbox.loaded.then(() => { this.recorder.list(); this.outbox.drain(true); });
-    if (!this.code) return;
-    $('classBox').hidden = false;
-    $('labLeaves').textContent = 'In a class, each toss you keep goes to the class (above); nothing else leaves this page.';
-    $('classCode').value = this.code;
-    if (this.place) $('className').value = this.place.name;
     $('classJoin').addEventListener('submit', (e) => { e.preventDefault(); this.join(); });
     $('classAgain').addEventListener('click', () => this.showJoined(false));
     $('classRefresh').addEventListener('click', () => this.results());
-    this.showJoined(Boolean(this.place));
     setInterval(() => { if (this.place && !$('lab').hidden && !document.hidden) this.results(); }, RESULTS_EVERY_MS);
+    if (this.code) this.offer();
+    // The address without its class (explorer.html#lab, or the bare https://ADDRESS:PORT/,
+    // typed by hand) on a class's server: the lab and its join form all the same, the code to
+    // type.
+    else {
+      servedByAClass().then((yes) => {
+        if (!yes || this.code) return;
+        this.offer();
+        if (!location.hash) $('lab').hidden = false;
+      });
+    }
+  }
+
+  /** The class's box shown: the join form (the code from the address, where it names one), or
+   * the class joined. */
+  offer() {
+    $('classBox').hidden = false;
+    $('classTitle').textContent = this.code ? 'In a class' : 'Join a class';
+    $('labLeaves').textContent = 'In a class, each toss you keep goes to the class (above); nothing else leaves this page.';
+    $('classCode').value = this.code;
+    if (this.place) $('className').value = this.place.name;
+    this.showJoined(Boolean(this.place));
   }
 
   /** The join form, or (`joined`) the line saying which class and name, and the results. */
@@ -95,6 +131,7 @@ export class ClassLink {
     $('classJoin').hidden = joined;
     $('classAgain').hidden = !joined;
     $('classMe').hidden = !joined;
+    $('classTitle').textContent = joined || this.code ? 'In a class' : 'Join a class';
     if (joined) {
       $('classState').textContent = `In class ${this.code} as ${this.place.name}: each toss you keep is sent to the ` +
         'class; the list of recordings says whether the class holds it.';
@@ -114,13 +151,19 @@ export class ClassLink {
 
   /** Join: the code and the name checked here as the server checks them, then asked. */
   join() {
-    const code = $('classCode').value.trim();
+    const typed = $('classCode').value;
     const name = $('className').value.trim();
+    // A lone surrogate named before NFKC (which would turn it into U+FFFD) and before the code
+    // goes into the address (encodeURIComponent throws).
+    const loneCode = loneSurrogateProblem(typed, 'class code');
+    if (loneCode) { this.say(`error: ${loneCode}`, true); return; }
+    const code = classCode(typed);
+    $('classCode').value = code;
     if (!code) { this.say('error: give the class code (on the projector)', true); return; }
     if (!name) { this.say('error: give your name', true); return; }
     // A lone surrogate named before the module's rule is asked (its UTF-8 encoder ate the
     // character after one) and before the code goes into the address (encodeURIComponent throws).
-    const lone = loneSurrogateProblem(code, 'class code') || loneSurrogateProblem(name, 'your name');
+    const lone = loneSurrogateProblem(name, 'your name');
     if (lone) { this.say(`error: ${lone}`, true); return; }
     const problem = this.nameProblem(name);
     if (problem) { this.say(`error: your name: ${problem}`, true); return; }
@@ -138,6 +181,7 @@ export class ClassLink {
         if (code !== this.code) {
           // The address carries the class joined (a reload comes back to it).
           this.code = code;
+          $('classTitle').textContent = 'In a class';
           const params = new URLSearchParams(location.search);
           params.set('class', code);
           history.replaceState(history.state, '', `?${params}${location.hash}`);
@@ -226,6 +270,7 @@ export class ClassLink {
     if (!this.place) return Promise.resolve();
     const code = this.code;
     return ask(api(code, 'me'), { headers: { Authorization: `Bearer ${this.place.token}` } }).then(({ status, body }) => {
+      if ((status === 404 || status === 410) && code === this.code && this.place) { this.ended(); return; }
       if (status !== 200) throw new Error(body.error || `the server answered ${status}`);
       this.showResults(body);
     }).catch((e) => {
@@ -234,15 +279,67 @@ export class ClassLink {
     });
   }
 
+  /** The class is no more on its server (a 404 to this student's results: the teacher ended it,
+   * its data deleted, or started another class in its place): said once; this phone's place in
+   * it forgotten and the class taken out of the address (a reload does not claim it again);
+   * nothing more asked of it (a toss still waiting is answered so once and shown refused); the
+   * join form, for another class. */
+  ended() {
+    const code = this.code;
+    localStorage.removeItem(joinedKey(code));
+    this.place = null;
+    this.code = '';
+    const params = new URLSearchParams(location.search);
+    params.delete('class');
+    const query = params.toString();
+    history.replaceState(history.state, '', `${location.pathname}${query ? `?${query}` : ''}${location.hash}`);
+    $('classMe').hidden = true;
+    $('classAgain').hidden = true;
+    $('classJoin').hidden = false;
+    $('classTitle').textContent = 'Join a class';
+    $('classCode').value = '';
+    this.say(`Class ${code} is over: its server no longer has it (the teacher ended it, deleting its data, or ` +
+      'started another class). Your recordings stay on this phone, below; each row\'s Download saves it. To join ' +
+      'another class, type its code.', true);
+    this.outbox.drain(true);
+  }
+
+  /** Before a recording `k` is removed from the phone (the list's Remove): where its class holds
+   * it or may, the student is asked first and told what becomes of the class's copy; once
+   * removed, its toss leaves the outbox (not sent, or not again). A promise of whether to
+   * remove it. */
+  beforeRemove(k) {
+    const item = k.toss ? this.outbox.state(k.toss) : null;
+    if (!item) return Promise.resolve(true);
+    const words = {
+      held: `Class ${item.code} keeps its copy: it stays in the class's fit and on the projector. To have it left ` +
+        'out, ask your teacher.',
+      sending: `It is being sent to class ${item.code} now: if it arrives, the class keeps its copy. To have it left ` +
+        'out, ask your teacher.',
+      waiting: `It has not reached class ${item.code} yet: it will not be sent.`,
+    }[item.state];
+    const asked = words
+      ? askFirst({ question: `Remove ${k.name} from this phone?`, detail: words, yes: 'Remove from this phone', no: 'Keep it' })
+      : Promise.resolve(true);
+    return asked.then((yes) => {
+      if (yes) this.outbox.forget(k.toss);
+      return yes;
+    });
+  }
+
   showResults(me) {
     const p = me.pooled;
+    // The class's fit failed: one sentence saying what to do, its line one tap away.
+    const failed = classFitFailure(p);
+    $('classPooledError').hidden = !failed;
+    $('classPooledError').innerHTML = failed ? failureHtml(failed, '', html) : '';
     const ratios = p && Array.isArray(p.ratios) && p.ratios.length === 3 ? p.ratios : null;
     const sigma = p && Array.isArray(p.sigma) ? p.sigma : [];
     $('classPooled').textContent = ratios
       ? `The class's body, pooled from ${p.tosses} toss${p.tosses === 1 ? '' : 'es'}` +
         (typeof p.recordings === 'number' ? ` in ${p.recordings} recording${p.recordings === 1 ? '' : 's'}` : '') + ': I1 : I2 : I3 = ' +
         `${plusMinus(ratios[0], sigma[0])} : ${plusMinus(ratios[1], sigma[1])} : 1`
-      : 'The class\'s body: not fitted yet (too few tosses held)';
+      : failed ? 'The class\'s body: not fitted' : 'The class\'s body: not fitted yet (too few tosses held)';
     const mine = Array.isArray(me.tosses) ? me.tosses : [];
     const rows = mine.map((t) => {
       const predicted = typeof t.half_period_predicted === 'number'

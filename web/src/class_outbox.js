@@ -110,6 +110,14 @@ export class ClassOutbox {
     });
   }
 
+  /** Toss `toss` taken out of the outbox (its recording removed from the phone): not sent,
+   * or not sent again; a send in flight ends as it ends, its answer dropped. A promise that
+   * settles once the storage has dropped it. */
+  forget(toss) {
+    this.items.delete(toss);
+    return this.store.then((s) => s && s.remove(toss)).catch(() => {});
+  }
+
   save(item) {
     const { state, ...row } = item;
     const stored = { ...row, state: state === 'sending' ? 'waiting' : state };
@@ -153,6 +161,8 @@ export class ClassOutbox {
       } catch (e) {
         answer = null;
       }
+      // Forgotten while in flight (its recording removed): its answer changes nothing.
+      if (this.items.get(toss) !== next) continue;
       const what = answer ? verdict(answer.status, answer.body) : 'retry';
       const said = answer && answer.body && answer.body.error;
       if (what === 'held') {

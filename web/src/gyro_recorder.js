@@ -331,6 +331,9 @@ export class TossRecorder {
      * stored; and each row of the list as it is drawn, with its recording. */
     this.onKept = () => {};
     this.onRow = () => {};
+    /** Asked before a recording is removed (class_join.js: a toss its class holds asks the
+     * student first): a promise of whether to remove it. */
+    this.beforeRemove = () => Promise.resolve(true);
     this.nextId = 1;
     this.source = new GyroSource((s) => this.samples.push(s));
     this.source.onError = (line) => this.finish(line);
@@ -652,7 +655,7 @@ export class TossRecorder {
       const remove = document.createElement('button');
       remove.textContent = 'Remove';
       remove.setAttribute('aria-label', `remove ${k.name}`);
-      remove.addEventListener('click', () => this.remove(k));
+      remove.addEventListener('click', () => this.beforeRemove(k).then((yes) => { if (yes) this.remove(k); }));
       row.append(label, about, save, remove);
       this.onRow(row, k);
       list.append(row);

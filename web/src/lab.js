@@ -17,6 +17,7 @@ import { chartCanvas, niceTicks, tickLabel } from './plots.js';
 import { TossRecorder, announce } from './gyro_recorder.js';
 import { FitWorker, Cancelled } from './fit_worker.js';
 import { loneSurrogateProblem } from './well_formed.js';
+import { failureHtml, fitFailure } from './fit_failure.js';
 
 /** The outcome table's columns (LabPanel.showOutcome). */
 const OUTCOME_COLUMNS = ['toss', 'recording', 'flight (s)', 'T/2 measured (s)', 'T/2 predicted ± 2σ (s)', 'within 2σ'];
@@ -339,14 +340,23 @@ export class LabPanel {
         }
         this.clear();
         this.skipped = skipped;
-        $('labError').textContent = `error: ${e.message}`;
-        announce($('labError').textContent);
+        this.showFailure(e.message);
       })
       .finally(() => {
         if (!current()) return;
         if ($('labBusy').textContent.startsWith(what)) $('labBusy').textContent = '';
         $('labCancel').hidden = true;
       });
+  }
+
+  /** A fit's failure, the fit's line `line`: as it is where it is short; a long one, and one that
+   * found no flight, as one sentence saying what to do with the line one tap away
+   * (fit_failure.js). The sentence is said. */
+  showFailure(line) {
+    const f = fitFailure(line);
+    if (f.detail) $('labError').innerHTML = failureHtml(f, 'error: ', html);
+    else $('labError').textContent = `error: ${f.sentence}`;
+    announce(`error: ${f.sentence}`);
   }
 
   /** Every stretch the finder dropped, a line each (`bookspin fit --verbose`'s lines), folded

@@ -64,3 +64,34 @@ export function modalPanel(dialog, opener, close) {
 export function panelOpen() {
   return document.querySelector('dialog[open]') !== null;
 }
+
+/** A question asked before a step that cannot be undone (docs/phone-lab.md, "In a class":
+ * Remove on a toss the class holds), in the page's <dialog id="question"> over everything,
+ * a panel included (the top layer): `question` its first line, `detail` what follows from each
+ * answer, `yes` and `no` its two buttons' words. Focus on `no` (a stray tap on the first button
+ * removes nothing); Escape answers no, as does a second question while one is open. A promise of
+ * true (yes) or false. */
+export function askFirst({ question, detail, yes, no }) {
+  const dialog = document.getElementById('question');
+  // A question already asked (a second tap behind the first's dialog): this one is no.
+  if (dialog.open) return Promise.resolve(false);
+  document.getElementById('questionText').textContent = question;
+  document.getElementById('questionDetail').textContent = detail;
+  const yesButton = document.getElementById('questionYes'), noButton = document.getElementById('questionNo');
+  yesButton.textContent = yes;
+  noButton.textContent = no;
+  const back = document.activeElement;
+  return new Promise((resolve) => {
+    const answer = (value) => {
+      yesButton.onclick = noButton.onclick = dialog.oncancel = null;
+      dialog.close();
+      if (back && back.isConnected) back.focus();
+      resolve(value);
+    };
+    yesButton.onclick = () => answer(true);
+    noButton.onclick = () => answer(false);
+    dialog.oncancel = (e) => { e.preventDefault(); answer(false); };
+    dialog.showModal();
+    noButton.focus();
+  });
+}
