@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "fit/median.hpp"
+#include "fit/rigid_bounds.hpp"
 
 namespace bookspin::fit {
 namespace {
@@ -21,11 +22,6 @@ constexpr double kBlockFactor = 4.0;
 // fit with its flips visibly mistimed (8.8 %); the gyroscope's noise (0.005–0.03 rad/s) is 10–40
 // times below a clean throw's residual, so it cannot set this one (docs/phone-lab.md, "Flags").
 constexpr double kNoFit = 0.05;
-// A rigid body's moments: the two smaller sum to at least the largest (docs/physics.md §8), here
-// less this share of it (a flat body's lies on the bound: a bare phone's 0.22 + 0.80 of 1), and
-// the smallest at least this share of the largest (rigid_restart.hpp's kNeedle).
-constexpr double kTriangleMargin = 0.02;
-constexpr double kNeedleShare = 0.1;
 // The clock test (docs/phone-lab.md, "Flags"): k1 + k2 + k3 + k1 k2 k3 measured on the samples
 // is 0 for every rigid body's free flight; a clock running at 1/f of the true rate makes it
 // k1 k2 k3 (1/f³ − 1/f). Measured: the flights of the development recordings as recorded, at
@@ -122,20 +118,20 @@ std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vec
   return {};
 }
 
-/// What the fitted body's moments `inertia` (phone frame) say where no rigid body has them: the
-/// two smaller summing to less than the largest (less kTriangleMargin of it), or a needle's
-/// (docs/physics.md §8); empty for a rigid body's.
+/// What the fitted body's moments `inertia` (phone frame) say where no rigid body has them
+/// (rigid_bounds.hpp's flagged_moments): the two smaller summing to less than the largest (less
+/// 2 % of it), or a needle's (docs/physics.md §8); empty for a rigid body's.
 std::string body_flag(const Eigen::Matrix3d& inertia) {
   const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia).eigenvalues();
   if (!(m[2] > 0.0)) return "no rigid body has the fitted moments (not all positive)";
   char text[240];
-  if (m[0] + m[1] < (1.0 - kTriangleMargin) * m[2] || m[0] < kNeedleShare * m[2]) {
+  if (flagged_moments(m)) {
     std::snprintf(
         text, sizeof text,
         "no rigid body has the fitted moments %.3g : %.3g : 1 (%s): a hand's motion "
         "inside the flight, or not a free flight?",
         m[0] / m[2], m[1] / m[2],
-        m[0] < kNeedleShare * m[2] ? "a needle's" : "the two smaller sum to less than the largest");
+        needle(m) ? "a needle's" : "the two smaller sum to less than the largest");
     return text;
   }
   return {};
