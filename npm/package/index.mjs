@@ -46,7 +46,7 @@ export function scenario(name) {
  * surrogate). */
 function named(name, argument) {
   if (typeof name !== "string" || !NAMES.includes(name))
-    throw new Error(`flipcheck: no scenario ${wasm.quotedCell(wellFormed(String(name), argument))} (there: ${NAMES.join(", ")})`);
+    throw new Error(`flipcheck: no scenario ${wasm.quotedName(wellFormed(String(name), argument))} (there: ${NAMES.join(", ")})`);
   return JSON.parse(readFileSync(new URL(`${name}.json`, scenarioFolder), "utf8"));
 }
 
@@ -137,7 +137,7 @@ const READ_FIELDS = ["scenario", "mass", "principal_moments", "omega0_body", "om
  * compiled). A field the reader reads that JSON cannot carry (a NaN, a BigInt) is refused here,
  * in the reader's words. */
 function scenarioText(s) {
-  const where = typeof s.scenario === "string" ? wasm.cutCell(s.scenario) : "scenario JSON";
+  const where = typeof s.scenario === "string" ? wasm.cutName(s.scenario) : "scenario JSON";
   for (const key of READ_FIELDS) {
     const value = s[key];
     const items = Array.isArray(value) ? value.map((v, i) => [`${key}[${i}]`, v]) : [[key, value]];

@@ -103,10 +103,10 @@ double torque_residual(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
 /// Whether flight [first, last], holding samples bridged by bridge_conserved (`bridged`), is a
 /// rigid body's free flight (docs/phone-lab.md, "Stamps off their samples"): the inertia that
 /// Euler's equations fit on its samples (clipped and bridged ones left out) no needle (its
-/// smallest moment over rigid_bounds.hpp's kNeedle of the largest), and the torque it leaves on each piece
-/// between its bridges (the median of torque_residual) within kBridgeNoise times the quietest
-/// piece's: a hand's swing that keeps |I ω| and ω·I ω joined on by a bridge makes the one or
-/// the other fail.
+/// smallest moment over rigid_bounds.hpp's kNeedle of the largest), and the torque it leaves on
+/// each piece between its bridges (the median of torque_residual) within kBridgeNoise times the
+/// quietest piece's: a hand's swing that keeps |I ω| and ω·I ω joined on by a bridge makes the one
+/// or the other fail.
 bool rigid_bridge(const std::vector<Eigen::Vector3d>& omega,
                   const std::vector<Eigen::Vector3d>& rate, const std::vector<char>& clipped,
                   const std::vector<char>& bridged, int first, int last) {

@@ -9,13 +9,9 @@
 
 namespace bookspin::fit {
 
-bool suspect_body(const Parameters& p) {
-  return suspect_moments(p.moments());
-}
+bool suspect_body(const Parameters& p) { return suspect_moments(p.moments()); }
 
-bool fitted_no_rigid_body(const Parameters& p) {
-  return far_from_rigid(p.moments());
-}
+bool fitted_no_rigid_body(const Parameters& p) { return far_from_rigid(p.moments()); }
 
 void keep_lowest(JointFitted& fit, std::size_t starts,
                  const std::function<std::optional<JointFitted>(std::size_t)>& fit_from) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "fit/median.hpp"
 #include "fit/rigid_bounds.hpp"
@@ -68,9 +69,16 @@ bool torque_near(const std::vector<double>& tau, const std::vector<double>& torq
   return false;
 }
 
-std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vector3d>& residual,
-                    const std::vector<double>& torque, double mean_omega,
-                    std::optional<double> noise) {
+/// What a toss's residual says (flag_of): the flag's words, and whether they are the residual's
+/// "throughout" (its typical block over kNoFit of |ω|) rather than a jump's.
+struct ResidualFlag {
+  std::string text;
+  bool throughout = false;
+};
+
+ResidualFlag flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vector3d>& residual,
+                     const std::vector<double>& torque, double mean_omega,
+                     std::optional<double> noise) {
   const double duration = tau.back() - tau.front();
   const auto fixed = [](double value, int digits) {
     char text[32];
@@ -106,15 +114,16 @@ std::string flag_of(const std::vector<double>& tau, const std::vector<Eigen::Vec
     const std::string where = "the residual jumps to " + fixed(block_rms[worst], 2) +
                               " rad/s near t = " + fixed(at, 2) + " s of the flight (typical " +
                               fixed(median, 2) + ")";
-    if (worst >= blocks - 2) return "a catch inside the flight? " + where;
-    if (worst <= 1) return "the throw inside the flight? " + where;
-    return "a knock, or the phone slipping on the body? " + where;
+    if (worst >= blocks - 2) return {"a catch inside the flight? " + where};
+    if (worst <= 1) return {"the throw inside the flight? " + where};
+    return {"a knock, or the phone slipping on the body? " + where};
   }
   // Throughout: the typical (median) 50 ms block, not the whole RMS, which a drift confined to
   // the flight's last 0.1 s lifts past kNoFit on its own (docs/phone-lab.md, "Flags").
   if (median > kNoFit * mean_omega)
-    return "a body that flexes, or not a free flight: the residual is " +
-           fixed(100 * median / mean_omega, 1) + " % of |ω| throughout";
+    return {"a body that flexes, or not a free flight: the residual is " +
+                fixed(100 * median / mean_omega, 1) + " % of |ω| throughout",
+            true};
   return {};
 }
 
@@ -126,12 +135,11 @@ std::string body_flag(const Eigen::Matrix3d& inertia) {
   if (!(m[2] > 0.0)) return "no rigid body has the fitted moments (not all positive)";
   char text[240];
   if (flagged_moments(m)) {
-    std::snprintf(
-        text, sizeof text,
-        "no rigid body has the fitted moments %.3g : %.3g : 1 (%s): a hand's motion "
-        "inside the flight, or not a free flight?",
-        m[0] / m[2], m[1] / m[2],
-        needle(m) ? "a needle's" : "the two smaller sum to less than the largest");
+    std::snprintf(text, sizeof text,
+                  "no rigid body has the fitted moments %.3g : %.3g : 1 (%s): a hand's motion "
+                  "inside the flight, or not a free flight?",
+                  m[0] / m[2], m[1] / m[2],
+                  needle(m) ? "a needle's" : "the two smaller sum to less than the largest");
     return text;
   }
   return {};
@@ -256,8 +264,17 @@ std::string toss_flag(const TossData& data, const std::vector<Eigen::Vector3d>& 
                   at_range, d.samples, *saturation.range);
     return text;
   }
-  std::string flag =
+  const ResidualFlag said =
       flag_of(d.tau, residual, step_torque(d.tau, d.omega, inertia), mean_omega, noise);
+  std::string flag = said.text;
+  // A residual throughout is what a clock off its rate leaves too (docs/phone-lab.md, "Flags"):
+  // where the clock test names it, its words, not a flexing body's. Its Euler coefficients break
+  // the identity the more the faster the clock runs: k1 k2 k3 (1/f³ − 1/f), for a bare phone
+  // 0.51 × 1.49 = 0.76 at f = 0.7 against −0.16 at f = 1.3, and a fit that cannot follow k/f
+  // leaves over kNoFit of |ω| where the slower clock's smaller k/f it follows within it.
+  if (said.throughout)
+    if (std::string clock = clock_flag(d.tau, d.omega, inertia); !clock.empty())
+      flag = std::move(clock);
   if (flag.empty()) flag = body_flag(inertia);
   if (flag.empty()) flag = clock_flag(d.tau, d.omega, inertia);
   if (!flag.empty() && d.saturated > 0) {  // the clip named beside what the rest shows

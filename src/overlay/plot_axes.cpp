@@ -73,7 +73,6 @@ Axis fit_y(const PlotSpec& spec) {
   return fit_axis(spec.series, false, spec.log_y, spec.min_y_span);
 }
 
-
 namespace {
 
 double nice_step(double span, double intervals) {

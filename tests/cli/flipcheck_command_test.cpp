@@ -75,9 +75,9 @@ TEST(FlipcheckCommand, AMotionFileNamedInBytesThatAreNoUtf8IsNamedInUtf8) {
   ASSERT_EQ(exported.status, 0) << exported.output;
   const fs::path latin1 = dir / "caf\xe9.csv";
   fs::copy_file(dir / "mujoco-test-box-exact.csv", latin1);
-  const SplitResult judged = run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") +
-                                                " " + quoted(latin1) + " -o " +
-                                                quoted(dir / "judge"));
+  const SplitResult judged =
+      run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + " " + quoted(latin1) +
+                         " -o " + quoted(dir / "judge"));
   ASSERT_EQ(judged.status, 0) << judged.err;
   EXPECT_EQ(judged.out.rfind("mujoco-test-box caf\xef\xbf\xbd.csv: PASS", 0), 0u) << judged.out;
   std::ifstream file(dir / "judge" / "mujoco-test-box-judge.csv", std::ios::binary);

@@ -362,6 +362,26 @@ TEST(FlightBridge, ABodyNoRigidObjectHasOrAClockOffItsRateIsNeverClean) {
   EXPECT_NE(flag.find("a clock running fast or slow"), std::string::npos) << flag;
 }
 
+// A clock running fast leaves a residual throughout, as a flexing body does: the clock test
+// names it (docs/phone-lab.md, "Flags"). The phone's exact motion with its times compressed to
+// 0.7 (a clock at 1/0.7 of its rate) and a residual of 10 % of |ω| throughout (what a fit of
+// such samples left on the real recordings) is a clock's, not "a body that flexes"; the same
+// residual on the motion as it was still is.
+TEST(FlightBridge, AClockRunningFastIsNamedSoNotAFlexingBody) {
+  const Eigen::Vector3d phone(0.22, 0.80, 1.0);
+  const TossData d = exact_toss(phone, 0.9);
+  std::vector<Eigen::Vector3d> residual;
+  for (const Eigen::Vector3d& w : d.omega) residual.push_back(0.1 * w);
+  const std::string as_recorded = toss_flag(d, residual, Saturation{}, 0.01, phone.asDiagonal());
+  EXPECT_EQ(as_recorded.rfind("a body that flexes", 0), 0u) << as_recorded;
+  for (const double f : {0.7, 0.5}) {
+    TossData fast = d;
+    for (double& tau : fast.tau) tau *= f;
+    const std::string flag = toss_flag(fast, residual, Saturation{}, 0.01, phone.asDiagonal());
+    EXPECT_NE(flag.find("a clock running fast or slow"), std::string::npos) << f << ": " << flag;
+  }
+}
+
 /// The bridge's own rule on a stretch of `stretch` unmarked samples (samples 10 …), its
 /// neighbours `gap` s apart, the samples 100 Hz apart elsewhere; ω a constant of one body
 /// (0.22 : 0.80 : 1) whose |I ω| drops by a fifth (a catch) from sample `catch_at` on; the

@@ -121,8 +121,7 @@ TEST(TossRanges, AnEndThatIsNotFiniteIsRefusedAsSuchByEveryDoor) {
     // included: its text is gone before the fit sees it).
     EXPECT_EQ(hand_error({{0.2, inf}}), name + ": \"inf\" is not a finite time (s)");
     EXPECT_EQ(hand_error({{nan, 0.29}}), name + ": \"nan\" is not a finite time (s)");
-    EXPECT_EQ(hand_error({{0.1, 0.3}, {-inf, 0.05}}),
-              name + ": \"-inf\" is not a finite time (s)");
+    EXPECT_EQ(hand_error({{0.1, 0.3}, {-inf, 0.05}}), name + ": \"-inf\" is not a finite time (s)");
     // The text says the same cause for the same values, quoting the text as given.
     EXPECT_EQ(parse_error("0.2:inf", name), name + ": \"inf\" is not a finite time (s)");
     EXPECT_EQ(parse_error("0.2:Infinity", name), name + ": \"Infinity\" is not a finite time (s)");

@@ -187,6 +187,13 @@ test("a scenario JSON saved as UTF-16 is said to be so, as a scene or a recordin
 });
 
 test("a long name is cut in a message, its length said", () => {
+  // A name any file or person could give (up to 4096 bytes, PATH_MAX) is named whole, as the
+  // command line and Python name it: 300 characters were cut to 60, the name no longer named.
+  const long = "a".repeat(300);
+  assert.equal(refusal(() => f.exactMotion({ ...box(), scenario: long })), `flipcheck: scenario name "${long}" is 300 characters long (at most 128)`);
+  assert.equal(refusal(() => f.scenario(long)).split(" (there: ")[0], `flipcheck: no scenario "${long}"`);
+  const named = "b".repeat(100);  // within the limit: a field's refusal names it whole
+  assert.equal(refusal(() => f.judge({ ...box(), scenario: named, mass: NaN }, {})), `${named}: mass: expected a number, got NaN`);
   const name = "a".repeat(1000000);
   const cut = `"${"a".repeat(60)}…" (1000000 characters)`;
   assert.equal(refusal(() => f.judge({ ...box(), scenario: name }, {})), `flipcheck: scenario name ${cut} is 1000000 characters long (at most 128)`);
