@@ -135,11 +135,14 @@ std::string body_flag(const Eigen::Matrix3d& inertia) {
   if (!(m[2] > 0.0)) return "no rigid body has the fitted moments (not all positive)";
   char text[240];
   if (flagged_moments(m)) {
+    // The two smaller short of the largest is also what a near-axisymmetric body's recording
+    // with its stamps compressed gives (docs/physics.md §8: I1/I3 → 1/(1 + (I3/I1 − 1)/f), f < 1).
     std::snprintf(text, sizeof text,
                   "no rigid body has the fitted moments %.3g : %.3g : 1 (%s): a hand's motion "
-                  "inside the flight, or not a free flight?",
+                  "inside the flight, %sor not a free flight?",
                   m[0] / m[2], m[1] / m[2],
-                  needle(m) ? "a needle's" : "the two smaller sum to less than the largest");
+                  needle(m) ? "a needle's" : "the two smaller sum to less than the largest",
+                  needle(m) ? "" : "its times compressed (a clock off its rate), ");
     return text;
   }
   return {};
@@ -266,16 +269,16 @@ std::string toss_flag(const TossData& data, const std::vector<Eigen::Vector3d>& 
   }
   const ResidualFlag said =
       flag_of(d.tau, residual, step_torque(d.tau, d.omega, inertia), mean_omega, noise);
-  std::string flag = said.text;
-  // A residual throughout is what a clock off its rate leaves too (docs/phone-lab.md, "Flags"):
-  // where the clock test names it, its words, not a flexing body's. Its Euler coefficients break
-  // the identity the more the faster the clock runs: k1 k2 k3 (1/f³ − 1/f), for a bare phone
-  // 0.51 × 1.49 = 0.76 at f = 0.7 against −0.16 at f = 1.3, and a fit that cannot follow k/f
-  // leaves over kNoFit of |ω| where the slower clock's smaller k/f it follows within it.
-  if (said.throughout)
-    if (std::string clock = clock_flag(d.tau, d.omega, inertia); !clock.empty())
-      flag = std::move(clock);
+  // A jump first; then a body no rigid object has, before a residual throughout: a fit that
+  // ends at such a body leaves a residual throughout, and the body says why (docs/phone-lab.md,
+  // "Flags"). A near-axisymmetric body's recording re-timed by f (a clock at 1/f of its rate) is
+  // the axisymmetric body I1/I3 → 1/(1 + (I3/I1 − 1)/f) (docs/physics.md §8), which at f = 0.7
+  // breaks the triangle inequality (the real book 0.51 : 0.53 : 1 → 0.42 : 0.42 : 1), while the
+  // clock test sees f only through k1 k2 k3 (1/f³ − 1/f), 0.018 × 1.49 = 0.026 there, under the
+  // scatter of k (±0.035).
+  std::string flag = said.throughout ? std::string() : said.text;
   if (flag.empty()) flag = body_flag(inertia);
+  if (flag.empty()) flag = said.text;
   if (flag.empty()) flag = clock_flag(d.tau, d.omega, inertia);
   if (!flag.empty() && d.saturated > 0) {  // the clip named beside what the rest shows
     char text[100];
