@@ -71,15 +71,17 @@ bool is_replaced(utf8proc_int32_t c) {
          (c >= 0x202a && c <= 0x202e) || (c >= 0x2066 && c <= 0x2069);
 }
 
-/// `text` with each byte that starts no valid UTF-8 sequence as '-'.
-std::string valid_utf8(std::string_view text) {
+/// `text` with what starts no valid UTF-8 sequence as `replacement`: each byte of it, or with
+/// `maximal`, each maximal subpart (maximal_subpart).
+std::string with_invalid_replaced(std::string_view text, std::string_view replacement,
+                                  bool maximal) {
   std::string valid;
   valid.reserve(text.size());
   for (std::size_t at = 0; at < text.size();) {
     const CodePoint cp = code_point_at(text, at);
     if (cp.length == 0) {
-      valid += '-';
-      ++at;
+      valid.append(replacement);
+      at += maximal ? maximal_subpart(text, at) : 1;
     } else {
       valid.append(text.substr(at, cp.length));
       at += cp.length;
@@ -87,6 +89,9 @@ std::string valid_utf8(std::string_view text) {
   }
   return valid;
 }
+
+/// `text` with each byte that starts no valid UTF-8 sequence as '-'.
+std::string valid_utf8(std::string_view text) { return with_invalid_replaced(text, "-", false); }
 
 /// `text` (valid UTF-8) in NFC.
 std::string nfc(std::string_view text) {
@@ -168,19 +173,7 @@ bool starts_with_letter_or_digit(std::string_view text) {
 }
 
 std::string utf8_replaced(std::string_view text) {
-  std::string valid;
-  valid.reserve(text.size());
-  for (std::size_t at = 0; at < text.size();) {
-    const CodePoint cp = code_point_at(text, at);
-    if (cp.length == 0) {
-      valid += "\xef\xbf\xbd";  // U+FFFD
-      at += maximal_subpart(text, at);
-    } else {
-      valid.append(text.substr(at, cp.length));
-      at += cp.length;
-    }
-  }
-  return valid;
+  return with_invalid_replaced(text, "\xef\xbf\xbd", true);  // U+FFFD
 }
 
 Utf8Character utf8_character_at(std::string_view text, std::size_t at) {

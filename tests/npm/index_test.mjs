@@ -275,7 +275,7 @@ test("a lone surrogate is refused naming its argument, never joined to the next 
     'flipcheck.judgeCsv: file: "a\\udbffb.csv" holds a lone surrogate (U+DBFF) at character 2: no UTF-8 text holds one');
   // A scenario's name, given or in its object, and a scenario file's text and name: named at its
   // argument, in the same words (it was "no scenario \"m\u{10078}\"", the "x" eaten).
-  const lone = (argument, quoted) => `${argument}: "${quoted}" holds a lone surrogate (U+D800) at character 2: no UTF-8 text holds one`;
+  const lone = (argument, quoted, at = 2) => `${argument}: "${quoted}" holds a lone surrogate (U+D800) at character ${at}: no UTF-8 text holds one`;
   assert.equal(refusal(() => f.scenario("m\ud800x")), lone("flipcheck.scenario: name", "m\\ud800x"));
   assert.equal(refusal(() => f.exactMotion("m\ud800x")), lone("flipcheck.exactMotion: scenario", "m\\ud800x"));
   assert.equal(refusal(() => f.exactMotion({ ...box(), scenario: "m\ud800x" })),
@@ -285,7 +285,8 @@ test("a lone surrogate is refused naming its argument, never joined to the next 
   assert.equal(refusal(() => f.judge("m\ud800x", arrays)), lone("flipcheck.judge: scenario", "m\\ud800x"));
   assert.equal(refusal(() => f.readScenario(carried, "m\ud800x.json")), lone("flipcheck.readScenario: file", "m\\ud800x.json"));
   const text = carried.replace(`"${NAME}"`, '"m\ud800x"');
-  assert.equal(refusal(() => f.readScenario(text)), lone("flipcheck.readScenario: text", JSON.stringify(text).slice(1, -1)));
+  assert.equal(refusal(() => f.readScenario(text)),
+    lone("flipcheck.readScenario: text", JSON.stringify(text).slice(1, -1), text.indexOf("\ud800") + 1));
 });
 
 test("assertPasses returns a pass and throws node's AssertionError with judge's line for a fail", () => {
