@@ -389,8 +389,8 @@ TEST(FlightBridge, AClockRunningFastIsNamedByTheBodyItGivesNotAFlexingBody) {
 }
 
 // The same on the real recordings (docs/phone-lab.md, "Flags"): each of the seven re-stamped
-// 0.7× (times compressed) is refused (12-10-56, 12-13-01, 12-13-51: flights too fast for the
-// finder) or has its tosses flagged by the body it gives (12-22-44, 12-29-59, 12-38-00 and
+// 0.7× (times compressed) is refused (12-10-56, 12-13-01, 12-13-51: no torque-free stretch of
+// 0.3 s found) or has its tosses flagged by the body it gives (12-22-44, 12-29-59, 12-38-00 and
 // 12-44-51: about 0.42 : 0.44 : 1, past the triangle inequality), never as "a body that flexes"
 // (12-29-59 and 12-38-00 were, at 5.3 % and 8.2 % of |ω| throughout).
 TEST(FlightBridge, ARealRecordingReTimedFasterIsNamedByItsBodyNotAFlexingBody) {
