@@ -7,6 +7,7 @@
 #                        npm/flipcheck_bindings.cpp
 #   scenarios/*.json     the seven scenarios as `bookspin flipcheck export` writes them
 #   index.mjs, index.d.ts, cli.mjs, files.mjs, README.md, package.json   from npm/package/
+#   well_formed.js       the lone-surrogate check, the page's own (web/src/well_formed.js)
 # Usage: npm/build.sh BUILD_DIR [OUT_DIR]   (needs BUILD_DIR/bookspin; OUT_DIR is BUILD/npm unless
 # given, objects cached in OUT_DIR/obj, or copied from the page's up-to-date ones in
 # BUILD_DIR/web/obj: scripts/figures.sh builds its own, which no test reads, after the page's)
@@ -85,6 +86,8 @@ em++ -O3 -fexceptions --bind "${objs[@]}" -o "$package/flipcheck-wasm.cjs" \
 "$build/bookspin" flipcheck export "$root"/scenes/flipcheck/*.toml -o "$out/export" >/dev/null
 cp "$out/export"/*.json "$package/scenarios/"
 for f in index.mjs index.d.ts cli.mjs files.mjs README.md; do cp "$here/package/$f" "$package/"; done
+# The page's lone-surrogate check, one module for both (docs/architecture.md, "The npm package").
+cp "$root/web/src/well_formed.js" "$package/"
 sed "s/@VERSION@/$version/" "$here/package/package.json.in" >"$package/package.json"
 rm -f "$out"/flipcheck-*.tgz
 (cd "$package" && npm pack --pack-destination "$out" --silent >/dev/null)

@@ -160,20 +160,20 @@ val scenario_file(const std::string& scenario, const std::string& file) {
 
 std::string version() { return bookspin::version(); }
 
-/// `text` quoted for a one-line message as every door quotes a name or a cell: whole up to 80
-/// characters, else its first 60 and its length (common/text_lines.hpp).
-std::string quoted_cell(const std::string& text) { return bookspin::quoted_cell(text); }
+/// A scenario's name quoted as every door quotes one: whole up to 4096 bytes, else cut as a
+/// cell (common/text_lines.hpp, quoted_name).
+std::string quoted_name(const std::string& text) { return bookspin::quoted_name(text); }
 
-/// The same unquoted (a key path).
-std::string cut_cell(const std::string& text) { return bookspin::cut_cell(text); }
+/// The same unquoted (a message's prefix).
+std::string cut_name(const std::string& text) { return bookspin::cut_name(text); }
 
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(flipcheck_npm) {
   emscripten::function("scenarioFile", &scenario_file);
   emscripten::function("version", &version);
-  emscripten::function("quotedCell", &quoted_cell);
-  emscripten::function("cutCell", &cut_cell);
+  emscripten::function("quotedName", &quoted_name);
+  emscripten::function("cutName", &cut_name);
   emscripten::function("judgeCsv", &judge_csv);
   emscripten::function("judgeArrays", &judge_arrays);
   emscripten::function("exactMotion", &exact_motion);

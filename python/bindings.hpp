@@ -97,6 +97,10 @@ std::string path_arg(const py::handle& value, bool& ok, const std::string& argum
 /// (U+D800) at character 2: no UTF-8 text holds one`, in the npm package's words.
 std::string unicode_arg(const py::handle& text, const std::string& argument);
 
+/// unicode_arg() of a value that must be a str: anything else is InputError naming `argument`
+/// (`ARGUMENT: expected a str, got int`), never pybind11's TypeError.
+std::string text_arg(const py::handle& value, const std::string& argument);
+
 /// A progress bar of `total` steps from tqdm (`tqdm.auto.tqdm`: a widget in a notebook, a bar on
 /// stderr in a terminal), made at the first update; none where `show` is false or tqdm cannot
 /// be imported. Make and destroy it with the GIL held; update() may be called with the GIL

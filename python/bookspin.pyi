@@ -58,7 +58,7 @@ def fit(
     """A phyphox export, a t,wx,wy,wz CSV, or (t (N,) s, omega (N, 3) rad/s phone frame),
     fitted as `bookspin fit` fits it; a list of paths: recordings of one body fitted as one."""
 
-def read_gyro_csv(text: str, file: str = "recording.csv") -> dict[str, Array]:
+def read_gyro_csv(text: str | bytes, file: str = "recording.csv") -> dict[str, Array]:
     """A recording's CSV text read as `bookspin fit` reads a file: {"t": (N,) s, "omega": (N, 3)
     rad/s}; bookspin.Error with the reader's line naming `file`, row and column."""
 

@@ -156,12 +156,12 @@ fit::GyroRecording recording_arg(const py::object& recording) {
 /// The fit's arguments read and judged as every door reads its options (fit/fit_options.hpp),
 /// each error naming the argument: tosses as the command line's --tosses text or as (N, 2)
 /// numbers, drag by name, moments as (3,) numbers.
-fit::FitRequest request_arg(const std::string& drag, const py::object& tosses,
+fit::FitRequest request_arg(const py::object& drag, const py::object& tosses,
                             const py::object& moments) {
   fit::FitRequest request;
   request.reader = fit::Reader::python;  // hand_flights' errors name tosses=, not --tosses
   const fit::FitOptionNames names = fit::fit_option_names(request.reader);
-  request.settings.drag = fit::parse_drag_option(drag, names.drag);
+  request.settings.drag = fit::parse_drag_option(text_arg(drag, names.drag), names.drag);
   if (py::isinstance<py::str>(tosses)) {
     request.tosses = fit::parse_toss_ranges(unicode_arg(tosses, names.tosses), names.tosses);
   } else if (!tosses.is_none() && py::len(tosses) > 0) {
@@ -178,7 +178,7 @@ fit::FitRequest request_arg(const std::string& drag, const py::object& tosses,
   return request;
 }
 
-Fit fit(const py::object& recording_input, const std::string& drag, const py::object& tosses,
+Fit fit(const py::object& recording_input, const py::object& drag, const py::object& tosses,
         const py::object& moments) {
   const fit::FitRequest request = request_arg(drag, tosses, moments);
   const fit::GyroRecording recording = recording_arg(recording_input);
@@ -204,11 +204,18 @@ Reads a gyroscope recording's CSV text (a phyphox "Raw Data.csv" or a plain t,wx
 the lab's Download writes it) with the reader `bookspin fit` reads a file with, without a file
 and without fitting: what a server checks before it holds a recording.
 
+text: str (or bytes, read as a file's); file: str, the name messages give it.
 Returns {"t": (N,) float64 s, "omega": (N, 3) float64 rad/s, phone frame, as measured}.
 Raises bookspin.Error with the reader's one line naming `file`, the row and the column (a text
-or NaN cell, too few cells, time not increasing, fewer than 10 samples, not a recording).)";
+or NaN cell, too few cells, time not increasing, fewer than 10 samples, not a recording), or
+naming `text` or `file` where it is no str or holds a lone surrogate (as bookspin.fit says it).)";
 
-py::dict read_gyro_csv(const std::string& text, const std::string& file) {
+py::dict read_gyro_csv(const py::object& text_input, const py::object& file_input) {
+  // A str's lone surrogate named as bookspin.fit names one (unicode_arg), never pybind11's
+  // TypeError; bytes are read as the command line reads a file's.
+  const std::string text = py::isinstance<py::bytes>(text_input) ? text_input.cast<std::string>()
+                                                                 : text_arg(text_input, "text");
+  const std::string file = text_arg(file_input, "file");
   std::optional<fit::GyroRecording> recording;
   {
     py::gil_scoped_release release;

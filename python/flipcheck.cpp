@@ -21,6 +21,7 @@
 #include "common/errors.hpp"
 #include "common/json_writer.hpp"
 #include "common/text_file.hpp"
+#include "common/text_lines.hpp"
 #include "jobs/exact_motion.hpp"
 #include "jobs/motion_csv.hpp"
 
@@ -69,7 +70,7 @@ scene::Scene scenario_scene(const py::object& scenario, const py::object& direct
   if (!fs::is_regular_file(file, ec)) {
     std::string known;
     for (const std::string& name : scenario_names(dir)) known += (known.empty() ? "" : ", ") + name;
-    throw InputError("flipcheck: no scenario \"" + text + "\" in " + dir.string() +
+    throw InputError("flipcheck: no scenario " + quoted_name(text) + " in " + dir.string() +
                      " (there: " + known + ")");
   }
   return scene::parse_scene(file);

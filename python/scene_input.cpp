@@ -87,6 +87,13 @@ std::string unicode_arg(const py::handle& text, const std::string& argument) {
   return std::string(bytes, static_cast<std::size_t>(size));
 }
 
+std::string text_arg(const py::handle& value, const std::string& argument) {
+  if (!py::isinstance<py::str>(value))
+    throw InputError(argument + ": expected a str, got " +
+                     py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>());
+  return unicode_arg(value, argument);
+}
+
 std::string path_text(const py::handle& value, bool& ok, const std::string& argument) {
   ok = py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
   if (!ok) return {};

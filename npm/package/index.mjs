@@ -8,6 +8,12 @@ import { createHash } from "node:crypto";
 import { readFileSync, readdirSync } from "node:fs";
 import { basename } from "node:path";
 import createWasm from "./flipcheck-wasm.cjs";
+// The page's own check (web/src/well_formed.js, copied here by npm/build.sh): a lone surrogate
+// (U+D800 … U+DFFF without its other half, which no UTF-8 holds) is refused naming its argument,
+// in the words of the page and the Python module (python/scene_input.cpp, unicode_arg); unchecked,
+// emscripten's UTF-8 encoder took it and the character after it as one pair ("m\ud800x" written
+// "m\u{10078}"). Every text reaches the WebAssembly through it.
+import { wellFormed } from "./well_formed.js";
 
 const wasm = await createWasm();
 /** bookspin's version, this package's (package.json's, `bookspin --version`'s): the WebAssembly's,
@@ -26,19 +32,6 @@ function answer(result) {
   return result;
 }
 
-/** `text` as the WebAssembly may take it, or an Error naming `argument` where it holds a lone
- * surrogate (U+D800 … U+DFFF without its other half, which no UTF-8 holds): emscripten's UTF-8
- * encoder took it and the character after it as one pair ("m\ud800x" written "m\u{10078}").
- * In the Python module's words (python/scene_input.cpp, unicode_arg), the character counted in
- * code points as Python counts it. */
-function wellFormed(text, argument) {
-  if (typeof text !== "string") return text;
-  const at = text.search(/[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/);
-  if (at < 0) return text;
-  const code = text.charCodeAt(at).toString(16).toUpperCase();
-  throw new Error(`${argument}: ${JSON.stringify(text)} holds a lone surrogate (U+${code}) at character ${[...text.slice(0, at)].length + 1}: no UTF-8 text holds one`);
-}
-
 /** The names of the seven scenarios, sorted. */
 export function scenarios() {
   return [...NAMES];
@@ -46,17 +39,28 @@ export function scenarios() {
 
 /** A scenario's JSON as `bookspin flipcheck export` writes it (OUT/<scenario>.json), parsed. */
 export function scenario(name) {
+  return named(name, "flipcheck.scenario: name");
+}
+
+/** The carried scenario `name`, or the Error naming it (`argument` where it holds a lone
+ * surrogate). */
+function named(name, argument) {
   if (typeof name !== "string" || !NAMES.includes(name))
-    throw new Error(`flipcheck: no scenario ${wasm.quotedCell(String(name))} (there: ${NAMES.join(", ")})`);
+    throw new Error(`flipcheck: no scenario ${wasm.quotedName(wellFormed(String(name), argument))} (there: ${NAMES.join(", ")})`);
   return JSON.parse(readFileSync(new URL(`${name}.json`, scenarioFolder), "utf8"));
 }
 
-/** A scenario given by name, or as an exported scenario JSON (an object). */
-function spec(nameOrJson) {
-  if (typeof nameOrJson === "object" && nameOrJson !== null && !Array.isArray(nameOrJson)) return nameOrJson;
+/** A scenario given by name, or as an exported scenario JSON (an object), to the function `fn`
+ * (its name in a message: "exactMotion"); its name, a string, checked for a lone surrogate. */
+function spec(nameOrJson, fn) {
+  const argument = `flipcheck.${fn}: scenario`;
+  if (typeof nameOrJson === "object" && nameOrJson !== null && !Array.isArray(nameOrJson)) {
+    wellFormed(nameOrJson.scenario, `${argument}.scenario`);
+    return nameOrJson;
+  }
   if (typeof nameOrJson !== "string")
     throw new Error(`flipcheck: a scenario is a name or a scenario JSON object, got ${nameOrJson === null ? "null" : Array.isArray(nameOrJson) ? "an array" : typeof nameOrJson}`);
-  return scenario(nameOrJson);
+  return named(nameOrJson, argument);
 }
 
 /** How deep the reader reads a scenario JSON (analysis::scenario_from_json: the document is level
@@ -133,7 +137,7 @@ const READ_FIELDS = ["scenario", "mass", "principal_moments", "omega0_body", "om
  * compiled). A field the reader reads that JSON cannot carry (a NaN, a BigInt) is refused here,
  * in the reader's words. */
 function scenarioText(s) {
-  const where = typeof s.scenario === "string" ? wasm.cutCell(s.scenario) : "scenario JSON";
+  const where = typeof s.scenario === "string" ? wasm.cutName(s.scenario) : "scenario JSON";
   for (const key of READ_FIELDS) {
     const value = s[key];
     const items = Array.isArray(value) ? value.map((v, i) => [`${key}[${i}]`, v]) : [[key, value]];
@@ -149,7 +153,8 @@ function scenarioText(s) {
  * reads every field as the reader does, a key given twice by its last value), which every
  * function here takes; or the command line's one line thrown for a file that is no scenario. */
 export function readScenario(text, file = "scenario JSON") {
-  answer(wasm.scenarioFile(String(text), String(file)));
+  answer(wasm.scenarioFile(wellFormed(String(text), "flipcheck.readScenario: text"),
+    wellFormed(String(file), "flipcheck.readScenario: file")));
   return JSON.parse(String(text).replace(/^\uFEFF/, ""));
 }
 
@@ -157,20 +162,20 @@ export function readScenario(text, file = "scenario JSON") {
  * scenario by name, the carried scenarios/<name>.json byte for byte): a judgement's
  * scenario_sha256, as the command line's. */
 export function scenarioSha256(name) {
-  const { text, file } = scenarioText(spec(name));
+  const { text, file } = scenarioText(spec(name, "scenarioSha256"));
   return createHash("sha256").update(answer(wasm.scenarioFile(text, file)), "utf8").digest("hex");
 }
 
 /** The exact motion at every step n = 0 … steps: t (N), q (N×4 w, x, y, z, body → world),
  * omegaBody, omegaWorld, L (N×3, L in the world frame), E (N): Float64Arrays, row-major. */
 export function exactMotion(name) {
-  const { text, file } = scenarioText(spec(name));
+  const { text, file } = scenarioText(spec(name, "exactMotion"));
   return answer(wasm.exactMotion(text, file));
 }
 
 /** The two files `bookspin flipcheck export` writes, byte for byte: {json, csv}. */
 export function exportFiles(name) {
-  const { text, file } = scenarioText(spec(name));
+  const { text, file } = scenarioText(spec(name, "exportFiles"));
   return answer(wasm.exportFiles(text, file));
 }
 
@@ -206,7 +211,7 @@ function flat(values, name) {
 /** Judges a motion given as arrays: t (N), q (N×4: w, x, y, z, body → world, any norm but 0,
  * either sign), omegaWorld (N×3, rad per time unit): flat, row-major, or as rows. */
 export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {}) {
-  const s = spec(name);
+  const s = spec(name, "judge");
   const { text, file } = scenarioText(s);
   return judgement(answer(wasm.judgeArrays(text, file, scenarioSha256(s), flat(t, "t"), flat(q, "q"), flat(omegaWorld, "omegaWorld"), "judge", wellFormed(motion, "flipcheck.judge: motion"))));
 }
@@ -215,7 +220,7 @@ export function judge(name, { t, q, omegaWorld } = {}, { motion = "motion" } = {
  * byte for byte as the command line reads the file), as `bookspin flipcheck judge SCENARIO FILE`
  * judges the file (`file` names it in messages and in the judgement's motion column). */
 export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}) {
-  const s = spec(name);
+  const s = spec(name, "judgeCsv");
   const scenarioJson = scenarioText(s);
   const csv = text instanceof Uint8Array ? text : wellFormed(String(text), "flipcheck.judgeCsv: text");
   return judgement(answer(wasm.judgeCsv(scenarioJson.text, scenarioJson.file, scenarioSha256(s), csv,
@@ -229,7 +234,7 @@ export function judgeCsv(name, text, { file = "motion.csv", motion = file } = {}
  * and its reasons) when it fails, MOTION the `motion` option or the file's name. Bad input
  * throws an Error, as judge() does. */
 export function assertPasses(name, motion, { motion: label = "motion", file = "motion.csv" } = {}) {
-  const s = spec(name);
+  const s = spec(name, "assertPasses");
   const j =
     typeof motion === "string"
       ? judgeCsv(s, motion, { file, motion: label === "motion" ? basename(file) : label })

@@ -89,7 +89,7 @@ std::string scenario_name_problem(const std::string& name) {
 
 void check_scenario(const Scenario& s) {
   if (const std::string why = scenario_name_problem(s.name); !why.empty())
-    throw InputError("flipcheck: scenario name " + quoted_cell(printable(s.name)) + " " + why);
+    throw InputError("flipcheck: scenario name " + quoted_name(printable(s.name)) + " " + why);
   const auto refuse = [&s](const std::string& field, const std::string& why) {
     throw InputError(s.name + ": " + field + ": " + why);
   };

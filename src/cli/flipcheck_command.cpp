@@ -13,6 +13,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/subcommand.hpp"
 #include "common/errors.hpp"
+#include "common/file_name.hpp"
 #include "products/flipcheck.hpp"
 #include "scene/scene.hpp"
 
@@ -87,7 +88,9 @@ int judge_motions(const FlipcheckOptions& options) {
   set_common(job, options, "judge", "MOTION files");
   const products::FlipcheckJudgeResult result = products::make_flipcheck_judge(job);
   for (const analysis::JudgedMotion& j : result.judged)
-    std::cout << result.scenario << " " << (j.file.empty() ? j.name : j.file.string()) << ": "
+    // The file as given, in valid UTF-8 as its CSV row names it (common/file_name.hpp).
+    std::cout << result.scenario << " "
+              << (j.file.empty() ? j.name : utf8_replaced(j.file.string())) << ": "
               << analysis::verdict_line(j.result) << '\n';
   std::cout << (result.outcome == cache::Outcome::up_to_date ? "up to date: " : "wrote: ")
             << result.layout.csv.string() << std::endl;

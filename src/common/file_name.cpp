@@ -33,6 +33,33 @@ CodePoint code_point_at(std::string_view text, std::size_t at) {
   return cp;
 }
 
+/// The length of the maximal subpart at `at` of `text`, where no valid UTF-8 sequence starts:
+/// the longest start of a well-formed sequence there (Unicode Table 3-7: the second byte's
+/// range after E0, ED, F0 and F4 is narrower), at least one byte.
+std::size_t maximal_subpart(std::string_view text, std::size_t at) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned char lead = byte(at);
+  std::size_t continuations = 0;
+  unsigned char low = 0x80, high = 0xbf;  // the second byte's range
+  if (lead >= 0xc2 && lead <= 0xdf) {
+    continuations = 1;
+  } else if (lead >= 0xe0 && lead <= 0xef) {
+    continuations = 2;
+    if (lead == 0xe0) low = 0xa0;
+    if (lead == 0xed) high = 0x9f;
+  } else if (lead >= 0xf0 && lead <= 0xf4) {
+    continuations = 3;
+    if (lead == 0xf0) low = 0x90;
+    if (lead == 0xf4) high = 0x8f;
+  }
+  std::size_t length = 1;
+  for (std::size_t k = 0; k < continuations && at + length < text.size(); ++k, ++length) {
+    const unsigned char b = byte(at + length);
+    if (k == 0 ? (b < low || b > high) : (b < 0x80 || b > 0xbf)) break;
+  }
+  return length;
+}
+
 /// Characters a file's name cannot hold, or that would hide or reorder it as shown.
 bool is_replaced(utf8proc_int32_t c) {
   if (c < 0x80)
@@ -44,15 +71,17 @@ bool is_replaced(utf8proc_int32_t c) {
          (c >= 0x202a && c <= 0x202e) || (c >= 0x2066 && c <= 0x2069);
 }
 
-/// `text` with each byte that starts no valid UTF-8 sequence as '-'.
-std::string valid_utf8(std::string_view text) {
+/// `text` with what starts no valid UTF-8 sequence as `replacement`: each byte of it, or with
+/// `maximal`, each maximal subpart (maximal_subpart).
+std::string with_invalid_replaced(std::string_view text, std::string_view replacement,
+                                  bool maximal) {
   std::string valid;
   valid.reserve(text.size());
   for (std::size_t at = 0; at < text.size();) {
     const CodePoint cp = code_point_at(text, at);
     if (cp.length == 0) {
-      valid += '-';
-      ++at;
+      valid.append(replacement);
+      at += maximal ? maximal_subpart(text, at) : 1;
     } else {
       valid.append(text.substr(at, cp.length));
       at += cp.length;
@@ -60,6 +89,9 @@ std::string valid_utf8(std::string_view text) {
   }
   return valid;
 }
+
+/// `text` with each byte that starts no valid UTF-8 sequence as '-'.
+std::string valid_utf8(std::string_view text) { return with_invalid_replaced(text, "-", false); }
 
 /// `text` (valid UTF-8) in NFC.
 std::string nfc(std::string_view text) {
@@ -138,6 +170,10 @@ bool starts_with_letter_or_digit(std::string_view text) {
     default:
       return false;
   }
+}
+
+std::string utf8_replaced(std::string_view text) {
+  return with_invalid_replaced(text, "\xef\xbf\xbd", true);  // U+FFFD
 }
 
 Utf8Character utf8_character_at(std::string_view text, std::size_t at) {

@@ -30,6 +30,13 @@ std::string file_name_of(std::string_view text);
 /// and its length are left to the file system.
 std::string file_name_problem(std::string_view name);
 
+/// `text` as valid UTF-8: each maximal subpart of an ill-formed sequence (a byte that is no
+/// UTF-8, a sequence cut short) replaced by U+FFFD, as Unicode recommends (§3.9, "U+FFFD
+/// Substitution of Maximal Subparts") and as node's Buffer.toString(), the WHATWG decoder and
+/// Python's bytes.decode("utf-8", "replace") do; valid UTF-8 unchanged. A file's name in bytes
+/// that are no UTF-8 ("caf\xe9.csv") written into a table or a line of text: "caf\uFFFD.csv".
+std::string utf8_replaced(std::string_view text);
+
 /// Whether `text` starts with a letter or a digit of any script (Unicode's L* and N*).
 bool starts_with_letter_or_digit(std::string_view text);
 

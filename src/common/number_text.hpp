@@ -68,12 +68,6 @@ bool below_doubles(std::string_view text);
 inline constexpr const char* kBelowDoubles =
     "below the smallest positive number (about 4.9e-324): it would read as 0";
 
-/// Said after an infinite value given as a number, not as text (Python's float, JavaScript's
-/// Number, a TOML value): where it came as "2e308" the caller's reader made it inf before
-/// bookspin saw it, so its text cannot be quoted: `"inf" is not a finite number; ` kReadsAsInf.
-inline constexpr const char* kReadsAsInf =
-    "a number beyond the largest finite one (about 1.8e308) reads as inf";
-
 /// Why `text`, which read_number() refuses, is no number, after its quoted text: kBeyondDoubles,
 /// kBelowDoubles, or "" (not a number at all: the door says so in its own words).
 std::string out_of_range_reason(std::string_view text);

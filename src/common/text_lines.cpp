@@ -133,4 +133,13 @@ std::string cut_cell(std::string_view cell) {
   return std::string(cell_start(cell)) + "… (" + std::to_string(cell.size()) + " characters)";
 }
 
+std::string quoted_name(std::string_view name) {
+  if (name.size() <= kWholeName) return std::string(1, '"').append(name).append(1, '"');
+  return quoted_cell(name);
+}
+
+std::string cut_name(std::string_view name) {
+  return name.size() <= kWholeName ? std::string(name) : cut_cell(name);
+}
+
 }  // namespace bookspin

@@ -57,4 +57,16 @@ std::string quoted_cell(std::string_view cell);
 /// 80 characters, else its first 60, "…" and its length ("0.5000…" (2097152 characters)).
 std::string cut_cell(std::string_view cell);
 
+/// The most bytes of a name (a scenario's) that a message names whole: 4096, PATH_MAX, the
+/// longest path Linux takes, so that any name a person or a file could give is named whole
+/// (a scenario name of 300 characters, over its limit of 128, is named so in its refusal);
+/// beyond it (a million characters pasted) it is cut as a cell is.
+inline constexpr std::size_t kWholeName = 4096;
+
+/// `name` quoted for an error message: "…" whole up to kWholeName bytes, else quoted_cell's cut.
+std::string quoted_name(std::string_view name);
+
+/// The same unquoted (a message's prefix naming what it is about).
+std::string cut_name(std::string_view name);
+
 }  // namespace bookspin

@@ -137,8 +137,7 @@ void check_toss_ranges(const std::vector<std::pair<double, double>>& ranges,
   for (const auto& [start, end] : ranges)
     for (const double t : {start, end})
       if (!std::isfinite(t))
-        throw InputError(option + ": \"" + shortest(t) + "\" is not a finite time (s)" +
-                         (std::isinf(t) ? std::string("; ") + kReadsAsInf : std::string()));
+        throw InputError(option + ": \"" + shortest(t) + "\" is not a finite time (s)");
 }
 
 physics::DragLaw parse_drag_option(const std::string& text, const std::string& option) {
@@ -180,8 +179,7 @@ void check_moments(const Eigen::Vector3d& moments, const std::string& option) {
   for (int i = 0; i < 3; ++i)
     if (!(moments[i] > 0) || !std::isfinite(moments[i]))
       throw InputError(option + ": \"" + shortest(moments[i]) +
-                       "\" is not a positive finite number" +
-                       (std::isinf(moments[i]) ? std::string("; ") + kReadsAsInf : std::string()));
+                       "\" is not a positive finite number");
   // A rigid body's principal moments obey the triangle inequality, the two smaller summing to
   // at least the largest (docs/physics.md §11: I1 + I2 - I3 = 2 ∫ z² dm ≥ 0); a flat body has
   // the equality, kept within the rounding of a typed decimal.

@@ -12,6 +12,7 @@
 #include "fit/flight_bridge.hpp"
 #include "fit/median.hpp"
 #include "fit/pool.hpp"
+#include "fit/rigid_bounds.hpp"
 #include "fit/saturation.hpp"
 
 namespace bookspin::fit {
@@ -26,14 +27,10 @@ constexpr double kMinGap = 0.025;
 constexpr int kMinFitSamples = 10;  // a flight shorter than this cannot be fitted
 constexpr int kIsolated = 2;        // samples: a run this short over the torque threshold is noise
 // A flight holding a bridged stretch (flight_bridge.hpp) is kept only as a rigid body's
-// (rigid_bridge): its Euler inertia's smallest moment over this share of the largest (no needle:
-// rigid_restart.hpp's), and the torque left on each of its pieces between bridges within
+// (rigid_bridge): its Euler inertia no needle (rigid_bounds.hpp's, which says why the triangle
+// inequality is not asked here), and the torque left on each of its pieces between bridges within
 // kBridgeNoise times the quietest piece's. Measured on the re-stamped lone flights of
-// tests/fit/lone_flight_test.cpp: the smallest moment 0.14 at least, the loudest piece 3.6 times
-// the quietest at most. The triangle inequality is not asked here: that inertia, from a derivative
-// the stamps spoil, puts a flat body's two smaller moments up to 25 % under the largest; the fitted
-// body's is asked (toss_flags.hpp).
-constexpr double kBridgeNeedle = 0.1;
+// tests/fit/lone_flight_test.cpp: the loudest piece 3.6 times the quietest at most.
 constexpr double kBridgeNoise = 6.0;
 
 std::string seconds(double value) {
@@ -106,10 +103,10 @@ double torque_residual(const Eigen::Matrix3d& I, const Eigen::Vector3d& w,
 /// Whether flight [first, last], holding samples bridged by bridge_conserved (`bridged`), is a
 /// rigid body's free flight (docs/phone-lab.md, "Stamps off their samples"): the inertia that
 /// Euler's equations fit on its samples (clipped and bridged ones left out) no needle (its
-/// smallest moment over kBridgeNeedle of the largest), and the torque it leaves on each piece
-/// between its bridges (the median of torque_residual) within kBridgeNoise times the quietest
-/// piece's: a hand's swing that keeps |I ω| and ω·I ω joined on by a bridge makes the one or
-/// the other fail.
+/// smallest moment over rigid_bounds.hpp's kNeedle of the largest), and the torque it leaves on
+/// each piece between its bridges (the median of torque_residual) within kBridgeNoise times the
+/// quietest piece's: a hand's swing that keeps |I ω| and ω·I ω joined on by a bridge makes the one
+/// or the other fail.
 bool rigid_bridge(const std::vector<Eigen::Vector3d>& omega,
                   const std::vector<Eigen::Vector3d>& rate, const std::vector<char>& clipped,
                   const std::vector<char>& bridged, int first, int last) {
@@ -130,7 +127,7 @@ bool rigid_bridge(const std::vector<Eigen::Vector3d>& omega,
   }
   const double quietest = medians.empty() ? 0.0 : *std::min_element(medians.begin(), medians.end());
   const double loudest = medians.empty() ? 0.0 : *std::max_element(medians.begin(), medians.end());
-  if (!(m[2] > 0.0) || m[0] < kBridgeNeedle * m[2]) return false;
+  if (!(m[2] > 0.0) || needle(m)) return false;
   return loudest <= kBridgeNoise * quietest;
 }
 

@@ -60,12 +60,11 @@ GyroRecording samples_recording(const std::string& name, std::vector<double> t,
                      std::to_string(omega.size()) + " samples of omega");
   for (std::size_t i = 0; i < t.size(); ++i) {
     const std::string index = std::string(1, '[').append(std::to_string(i)).append(1, ']');
-    // Infinity from the caller's own reading of a number past the largest double (Python's
-    // float("1e400")): said so, its text being gone.
+    // An infinity is named as the command line names one typed (docs/phone-lab.md, "Numbers"),
+    // whether typed or the caller's own reading of a number past the largest double.
     const auto not_finite = [&](const char* what, bool infinite) {
       return InputError(where + what + index + ": " + (infinite ? "inf" : "nan") +
-                        " is not a finite number" +
-                        (infinite ? std::string("; ") + kReadsAsInf : std::string()));
+                        " is not a finite number");
     };
     if (!std::isfinite(t[i])) throw not_finite("t", std::isinf(t[i]));
     if (!omega[i].allFinite()) throw not_finite("omega", omega[i].array().isInf().any());

@@ -9,15 +9,9 @@
 
 namespace bookspin::fit {
 
-bool suspect_body(const Parameters& p) {
-  const Eigen::Vector3d m = p.moments();
-  return m[0] + m[1] < m[2] || m[0] < kNeedle * m[2] || m[1] > kAxisymmetricEdge * m[2];
-}
+bool suspect_body(const Parameters& p) { return suspect_moments(p.moments()); }
 
-bool fitted_no_rigid_body(const Parameters& p) {
-  const Eigen::Vector3d m = p.moments();
-  return m[0] < 0.01 * m[2] || m[0] + m[1] < 0.95 * m[2];
-}
+bool fitted_no_rigid_body(const Parameters& p) { return far_from_rigid(p.moments()); }
 
 void keep_lowest(JointFitted& fit, std::size_t starts,
                  const std::function<std::optional<JointFitted>(std::size_t)>& fit_from) {

@@ -10,6 +10,7 @@
 
 #include "fit/fit_stages.hpp"
 #include "fit/recording.hpp"
+#include "fit/rigid_bounds.hpp"
 #include "fit/toss_fit.hpp"
 #include "fit/toss_parameters.hpp"
 #include "fit/toss_solve.hpp"
@@ -22,29 +23,14 @@ namespace bookspin::fit {
 inline constexpr std::array<std::array<double, 2>, 3> kRigidStarts{
     {{0.25, 0.8}, {0.5, 0.55}, {0.6, 0.85}}};
 
-/// I1/I3 below which a fitted body is a needle (a rod ten times longer than wide has about
-/// 0.02): where the fit ends with one, other starts are tried too.
-inline constexpr double kNeedle = 0.1;
-
-/// I2/I3 above which a fitted body lies at the edge where the fit's moment ratios meet (I2 = I3):
-/// a fit from a poor start may end there, as at a needle (12-29-59 thinned to a browser's 55 Hz:
-/// 0.45 : 0.999 : 1 with no σ, its cost 9 times the restart's 0.55 : 0.57 : 1), and whether it
-/// does hangs on the solver's round-off, so the page's WebAssembly and the command line parted
-/// there. A body with I2 = I3 (a cylinder) may be fitted so all the same: the other starts are
-/// kept only where their cost is lower.
-inline constexpr double kAxisymmetricEdge = 0.99;
-
 /// Fitted moments whose two smaller sum to less than the largest (docs/physics.md §11: no rigid
-/// body has them), a needle's, or at the edge I2 = I3 (kAxisymmetricEdge): where a fit from a poor
-/// start ends (a recording thinned to a browser's rate did, the residual four to ten times a
-/// book's).
+/// body has them), a needle's, or at the edge I2 = I3 (rigid_bounds.hpp's suspect_moments): where
+/// a fit from a poor start ends (a recording thinned to a browser's rate did, the residual four
+/// to ten times a book's).
 bool suspect_body(const Parameters& p);
 
-/// Fitted moments far past any rigid body a phone is tossed beside: I1/I3 under 0.01 (a rod
-/// fifteen times longer than wide) or I1 + I2 under 0.95 I3 (docs/physics.md §11). Where the
-/// restarts from rigid bodies still end there, the cost is flat and where the fit stops (which
-/// needle) follows the solver's round-off: the page and the command line part. A body at the
-/// edges (a racquet's 0.1 : 0.9 : 1, suspect_body) is not this.
+/// Fitted moments far past any rigid body a phone is tossed beside (rigid_bounds.hpp's
+/// far_from_rigid: I1/I3 under kFarNeedle, or I1 + I2 under kFarTriangleShare I3).
 bool fitted_no_rigid_body(const Parameters& p);
 
 /// One joint fit's outcome: its unknowns, its solve (Solved::cost, (rad/s)²) and the tosses

@@ -24,6 +24,7 @@
 #include "fit/pool.hpp"
 #include "fit/prediction_calibration.hpp"
 #include "fit/prediction_sigma.hpp"
+#include "fit/rigid_bounds.hpp"
 #include "fit/rigid_restart.hpp"
 #include "fit/saturation.hpp"
 #include "fit/toss_flags.hpp"
@@ -36,9 +37,12 @@ namespace bookspin::fit {
 namespace {
 
 constexpr double kStableDegrees = 25.0;
-constexpr const char* kNoRigidBody =
-    "the fit ends at no rigid body (I1/I3 under 0.01, or I1 + I2 under 0.95 I3) from every "
-    "start: the moments are not determined, no uncertainties and no predictions";
+/// The note and the predictions' word where the fit ends far from rigid (rigid_bounds.hpp).
+std::string no_rigid_body_note() {
+  return "the fit ends at no rigid body (" + far_from_rigid_words() +
+         ") from every start: the moments are not determined, no uncertainties and no "
+         "predictions";
+}
 constexpr double kPi = 3.14159265358979323846;
 
 /// Each flight's samples, its recording's bias removed, its times from its start; the samples
@@ -336,8 +340,8 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   if (found)
     widen_by_ends(data, p, end_shifts(search.flights, found), settings, rate_held, bias, correction,
                   body, sigmas);
-  // Moments the restarts left far past a rigid body (rigid_restart.hpp's fitted_no_rigid_body:
-  // a needle of I1/I3 under 0.01, or 5 % past the triangle inequality) lie where a flat cost let
+  // Moments the restarts left far past a rigid body (rigid_bounds.hpp's far_from_rigid: a
+  // needle of I1/I3 under 0.01, or 5 % past the triangle inequality) lie where a flat cost let
   // the solver stop: which needle follows its round-off, so the page and the command line part
   // there. Their σ (the covariance of a degenerate body: I2/I3 ± 150 seen) and predictions
   // (from folds as degenerate) are withheld, alike in both (docs/phone-lab.md, "The fit"). A
@@ -346,7 +350,7 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   if (no_rigid_body) {
     body.ratio_sigma.reset();
     body.axis_sigma_deg.reset();
-    body.notes.push_back(kNoRigidBody);
+    body.notes.push_back(no_rigid_body_note());
   }
   const std::optional<double> noise = rest_noise(recording, search);
   for (std::size_t k = 0; k < data.size(); ++k)
@@ -355,7 +359,7 @@ FitResult fit_holding(const GyroRecording& recording, const FlightSearch& search
   std::vector<Prediction> predictions;
   for (std::size_t k = 0; k < data.size(); ++k) {
     if (no_rigid_body) {
-      result.tosses[k].not_predicted = kNoRigidBody;
+      result.tosses[k].not_predicted = no_rigid_body_note();
       predictions.emplace_back();
       continue;
     }

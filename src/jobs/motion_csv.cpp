@@ -290,12 +290,11 @@ MotionFile motion_from_rows(const std::vector<std::array<double, 8>>& rows, Omeg
     };
     for (std::size_t k = 0; k < v.size(); ++k) {
       if (!std::isfinite(v[k])) {
-        // A value, not text: where "2e308" was meant, the caller's reader made it inf.
+        // A value, not text: named as an infinity typed is (docs/phone-lab.md, "Numbers").
         throw error(k, std::string(std::isnan(v[k]) ? "nan"
                                    : v[k] > 0       ? "inf"
                                                     : "-inf") +
-                           " is not a finite number" +
-                           (std::isinf(v[k]) ? std::string("; ") + kReadsAsInf : std::string()));
+                           " is not a finite number");
       }
     }
     add_row(motion, v, dt, steps, error, text);

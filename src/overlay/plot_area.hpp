@@ -1,39 +1,20 @@
 #pragma once
-// A line plot's geometry and lines (plot.hpp draws a plot through it): its axes and ticks, its
-// labels as the text layout laid them out (values: no text is measured here), where each goes,
-// and the grid, curves and legend marks drawn with cairo.
+// A line plot's labels and layout (plot.hpp draws a plot through it): its labels as the text
+// layout laid them out (values: no text is measured here), the margins they need, the plot area,
+// where each label goes, and the legend's box and samples. Its axes and ticks are
+// plot_axes.hpp's; its grid and curves drawn with cairo plot_lines.hpp's.
 #include <cairo.h>
 
 #include <string>
 #include <vector>
 
+#include "overlay/plot_axes.hpp"
+#include "overlay/plot_lines.hpp"
 #include "overlay/plot_spec.hpp"
 #include "typeface/face.hpp"
 #include "typeface/laid_out_text.hpp"
 
 namespace bookspin::overlay {
-
-/// An axis: its range (log10 of it on a log axis) and about how many tick intervals span it
-/// (linear axes).
-struct Axis {
-  double lo = 0, hi = 1;
-  bool log = false;
-  double intervals = 5;
-  /// value → pixel in [a, b]
-  double map(double v, double a, double b) const;
-};
-
-/// The x axis of `spec`: its fixed range, else fitted to the data.
-Axis fit_x(const PlotSpec& spec);
-
-/// The y axis of `spec`: its fixed range, else fitted to the data (at least spec.min_y_span).
-Axis fit_y(const PlotSpec& spec);
-
-/// The plot area inside a plot's rectangle, in pixels.
-struct Area {
-  double x0, x1, y0, y1;  ///< left, right, top, bottom
-  double font;
-};
 
 /// A plot's labels laid out, each once: the title (bold; none where spec.title is empty) as
 /// measured and as drawn (made smaller where wider than the plot), the x label, the y label
@@ -71,9 +52,6 @@ double plot_labels_left_margin(const PlotSpec& spec, const PlotLabels& labels, d
 Area plot_area(const PlotSpec& spec, const PlotLabels& labels, double x, double y, double width,
                double height, double font);
 
-/// The y axis as drawn in `area`: ticks at least 2.4 text heights apart (2 … 5 intervals).
-Axis drawn_y(Axis ay, const Area& area);
-
 /// Where a plot's texts go: the tick labels (drawn after the grid, under the curves), the
 /// axis labels and title (after the curves), the legend's entries (after its box and samples).
 struct PlotTextPlaces {
@@ -86,12 +64,6 @@ struct PlotTextPlaces {
 PlotTextPlaces place_plot_texts(const PlotSpec& spec, const PlotLabels& labels, const Axis& ax,
                                 const Axis& ay_drawn, const Area& area, double x, double y,
                                 double width, double height);
-
-/// The grid lines at the ticks and the plot area's frame.
-void draw_grid_lines(cairo_t* cr, const Axis& ax, const Axis& ay, const Area& area);
-
-/// Curves and cursor, clipped to the plot area, and where a curve leaves a fixed y range.
-void draw_data(cairo_t* cr, const PlotSpec& spec, const Axis& ax, const Axis& ay, const Area& area);
 
 /// The legend's box (placed right) and each series' sample, where place_plot_texts() puts
 /// their words.

@@ -10,6 +10,7 @@
 #include "cache/make_cached.hpp"
 #include "common/csv_writer.hpp"
 #include "common/errors.hpp"
+#include "common/file_name.hpp"
 #include "common/sha256.hpp"
 #include "common/text_file.hpp"
 #include "jobs/motion_judgement.hpp"
@@ -30,9 +31,12 @@ JsonValue method_labels(const std::vector<analysis::Method>& methods) {
   return {std::move(labels)};
 }
 
+/// The motion column's name of each file: its name, as valid UTF-8 (a name in bytes that are
+/// no UTF-8, "caf\xe9.csv", as "caf\uFFFD.csv": common/file_name.hpp's utf8_replaced, the
+/// rule npx's names follow too), so that the judgement CSV and the lines are UTF-8.
 std::vector<std::string> file_names(const std::vector<std::filesystem::path>& files) {
   std::vector<std::string> names;
-  for (const auto& f : files) names.push_back(f.filename().string());
+  for (const auto& f : files) names.push_back(utf8_replaced(f.filename().string()));
   return names;
 }
 
@@ -375,7 +379,7 @@ FlipcheckLeagueResult make_flipcheck_league(const FlipcheckLeagueJob& job) {
                        "<scenario>-<motion>.csv; scenarios: " +
                        scenarios + ")");
     }
-    std::string name = base.substr(job.scenes[best].name.size() + 1);
+    std::string name = utf8_replaced(base.substr(job.scenes[best].name.size() + 1));
     if (const std::size_t dot = name.rfind('.'); dot != std::string::npos && dot > 0)
       name.erase(dot);
     // Two files of one name in one scenario would be one row: refused, naming both.

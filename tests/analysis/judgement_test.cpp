@@ -317,6 +317,15 @@ TEST(Judgement, AScenarioNameIsLettersDigitsDashUnderscoreAndDot) {
 // the whole name echoed (docs/flipcheck.md, "What a scenario may be").
 TEST(Judgement, ALongScenarioNameIsCutInItsMessageWithItsLength) {
   Scenario s = scenario("mujoco-test-box");
+  // Up to 4096 bytes (PATH_MAX) named whole: 300 characters were cut to 60, the name lost.
+  s.name = std::string(300, 'a');
+  try {
+    check_scenario(s);
+    ADD_FAILURE() << "a name of 300 characters taken";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "flipcheck: scenario name \"" + std::string(300, 'a') +
+                                         "\" is 300 characters long (at most 128)");
+  }
   s.name = std::string(1000000, 'a');
   try {
     check_scenario(s);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
@@ -62,6 +63,28 @@ TEST(FlipcheckCommand, EveryExportedExactMotionPassesItsScenario) {
     EXPECT_NE(judged.out.find(": PASS: turn-overs "), std::string::npos) << judged.out;
     EXPECT_TRUE(fs::is_regular_file(dir / "judge" / (std::string(name) + "-judge.csv")));
   }
+}
+
+// A motion file whose name is bytes that are no UTF-8 (Latin-1's "café"): the judgement CSV and
+// the line name it in valid UTF-8, the byte as U+FFFD, as npx names it (tests/npm/cli_test.mjs);
+// the raw byte 0xe9 made the CSV no UTF-8.
+TEST(FlipcheckCommand, AMotionFileNamedInBytesThatAreNoUtf8IsNamedInUtf8) {
+  ScratchDir dir;
+  const CliResult exported =
+      run_bookspin("flipcheck export " + scenario("mujoco-test-box") + " -o " + quoted(dir.path()));
+  ASSERT_EQ(exported.status, 0) << exported.output;
+  const fs::path latin1 = dir / "caf\xe9.csv";
+  fs::copy_file(dir / "mujoco-test-box-exact.csv", latin1);
+  const SplitResult judged =
+      run_bookspin_split("flipcheck judge " + scenario("mujoco-test-box") + " " + quoted(latin1) +
+                         " -o " + quoted(dir / "judge"));
+  ASSERT_EQ(judged.status, 0) << judged.err;
+  EXPECT_NE(judged.out.find("caf\xef\xbf\xbd.csv: PASS"), std::string::npos) << judged.out;
+  EXPECT_EQ(judged.out.find('\xe9'), std::string::npos) << "a byte that is no UTF-8 in the line";
+  std::ifstream file(dir / "judge" / "mujoco-test-box-judge.csv", std::ios::binary);
+  const std::string csv((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_NE(csv.find(",caf\xef\xbf\xbd.csv,"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find('\xe9'), std::string::npos) << "a byte that is no UTF-8 in the CSV";
 }
 
 TEST(FlipcheckCommand, JudgesSimulatesCsvOfAnEngineMode) {

@@ -121,5 +121,24 @@ TEST(FileName, ALetterOrADigitOfAnyScriptStartsAName) {
     EXPECT_FALSE(starts_with_letter_or_digit(name)) << name;
 }
 
+// A name in bytes that are no UTF-8 written into a table (utf8_replaced): each maximal subpart
+// of an ill-formed sequence is one U+FFFD (Unicode §3.9's examples, as node's Buffer.toString()
+// and Python's bytes.decode("utf-8", "replace") give them, written out by hand); valid UTF-8,
+// every name of kNames, is kept byte for byte.
+TEST(FileName, BytesThatAreNoUtf8AreEachMaximalSubpartAReplacementCharacter) {
+  const std::string r = "\xef\xbf\xbd";                         // U+FFFD
+  EXPECT_EQ(utf8_replaced("caf\xe9.csv"), "caf" + r + ".csv");  // Latin-1's é
+  EXPECT_EQ(utf8_replaced("\xe2\x82x"), r + "x");               // a sequence cut short: one
+  EXPECT_EQ(utf8_replaced("\xf0\x9f\x98"), r);                  // cut at the end: one
+  EXPECT_EQ(utf8_replaced("\xed\xa0\x80"), r + r + r);          // a surrogate: E D's range
+  EXPECT_EQ(utf8_replaced("\xe0\x80\xaf"), r + r + r);          // overlong: E0's range
+  EXPECT_EQ(utf8_replaced("\xc0\xaf"), r + r);                  // C0 starts nothing
+  EXPECT_EQ(utf8_replaced("\xf4\x90\x80\x80"), r + r + r + r);  // past U+10FFFF
+  EXPECT_EQ(utf8_replaced("a\x80\xbf"), "a" + r + r);           // lone continuations
+  EXPECT_EQ(utf8_replaced(""), "");
+  for (const std::string& name : kNames) EXPECT_EQ(utf8_replaced(name), name);
+  EXPECT_TRUE(valid_utf8(utf8_replaced("\xff\xfe\xe9\xf0\x90")));
+}
+
 }  // namespace
 }  // namespace bookspin

@@ -362,6 +362,54 @@ TEST(FlightBridge, ABodyNoRigidObjectHasOrAClockOffItsRateIsNeverClean) {
   EXPECT_NE(flag.find("a clock running fast or slow"), std::string::npos) << flag;
 }
 
+// Times compressed (a recording re-timed 0.7×) leave a residual throughout, as a flexing body
+// does; a near-axisymmetric body's become the axisymmetric body 1/(1 + (I3/I1 − 1)/f) (docs/
+// physics.md §8), past the triangle inequality at f = 0.7 (12-29-59's 0.51 : 0.53 : 1 → 0.42),
+// which the clock test cannot see (k3 ≈ 0: docs/phone-lab.md, "Flags"). The body is asked before
+// the residual's "throughout": such a fit (12-29-59 at 0.7×: 0.416 : 0.448 : 1, 5.3 % of |ω|
+// throughout) is named by its body and the compressed times, not "a body that flexes"; a rigid
+// body with the same residual still is.
+TEST(FlightBridge, AClockRunningFastIsNamedByTheBodyItGivesNotAFlexingBody) {
+  const double f = 0.7, i1 = 1.0 / (1.0 + (1.0 / 0.51 - 1.0) / f);
+  const Eigen::Vector3d compressed(i1, i1 + 0.02, 1.0);
+  const TossData d = exact_toss(compressed, 0.6);
+  std::vector<Eigen::Vector3d> residual;
+  for (const Eigen::Vector3d& w : d.omega) residual.push_back(0.06 * w);
+  const std::string flag = toss_flag(d, residual, Saturation{}, 0.01, compressed.asDiagonal());
+  EXPECT_EQ(flag.rfind("no rigid body has the fitted moments 0.421 : 0.441 : 1 (the two smaller "
+                       "sum to less than the largest)",
+                       0),
+            0u)
+      << flag;
+  EXPECT_NE(flag.find("its times compressed (a clock off its rate)"), std::string::npos) << flag;
+  const Eigen::Vector3d book(0.51, 0.53, 1.0);
+  const TossData rigid = exact_toss(book, 0.6);
+  const std::string flexes = toss_flag(rigid, residual, Saturation{}, 0.01, book.asDiagonal());
+  EXPECT_EQ(flexes.rfind("a body that flexes", 0), 0u) << flexes;
+}
+
+// The same on the real recordings (docs/phone-lab.md, "Flags"): each of the seven re-stamped
+// 0.7× (times compressed) is refused (12-10-56, 12-13-01, 12-13-51: no torque-free stretch of
+// 0.3 s found) or has its tosses flagged by the body it gives (12-22-44, 12-29-59, 12-38-00 and
+// 12-44-51: about 0.42 : 0.44 : 1, past the triangle inequality), never as "a body that flexes"
+// (12-29-59 and 12-38-00 were, at 5.3 % and 8.2 % of |ω| throughout).
+TEST(FlightBridge, ARealRecordingReTimedFasterIsNamedByItsBodyNotAFlexingBody) {
+  REQUIRE_REAL_RECORDINGS();
+  int named = 0;
+  for (const char* name : kRecordings) {
+    SCOPED_TRACE(name);
+    const std::optional<FitResult> fit =
+        fitted(restamped(pool_recordings({read_recording(real_dir() / name)}), 0.7));
+    if (!fit) continue;
+    for (const TossFit& toss : fit->tosses) {
+      EXPECT_EQ(toss.flag.find("a body that flexes"), std::string::npos) << toss.flag;
+      if (toss.flag.find("its times compressed (a clock off its rate)") != std::string::npos)
+        ++named;
+    }
+  }
+  EXPECT_GE(named, 4);
+}
+
 /// The bridge's own rule on a stretch of `stretch` unmarked samples (samples 10 …), its
 /// neighbours `gap` s apart, the samples 100 Hz apart elsewhere; ω a constant of one body
 /// (0.22 : 0.80 : 1) whose |I ω| drops by a fifth (a catch) from sample `catch_at` on; the

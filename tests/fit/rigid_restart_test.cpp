@@ -65,5 +65,21 @@ TEST(RigidRestart, ASuspectBodyIsPastTheTriangleInequalityOrANeedle) {
   for (const auto& [m1, m2] : kRigidStarts) EXPECT_FALSE(suspect_body(body(m1, m2)));
 }
 
+// "No rigid body" in one place (rigid_bounds.hpp): each stage's cut-off nested in the next, the
+// one that withholds σ inside the one that flags a toss inside the one that restarts the fit,
+// and the note's words made from its numbers.
+TEST(RigidRestart, EachStagesNoRigidBodyLiesWithinTheOneBeforeIt) {
+  EXPECT_EQ(far_from_rigid_words(), "I1/I3 under 0.01, or I1 + I2 under 0.95 I3");
+  for (double i1 = 0.001; i1 < 1.0; i1 *= 1.05)
+    for (double i2 = i1; i2 <= 1.0; i2 += 0.01) {
+      const Eigen::Vector3d m(i1, i2, 1.0);
+      if (far_from_rigid(m)) EXPECT_TRUE(flagged_moments(m)) << m.transpose();
+      if (flagged_moments(m)) EXPECT_TRUE(suspect_moments(m)) << m.transpose();
+      EXPECT_EQ(needle(m), i1 < kNeedle);
+    }
+  EXPECT_FALSE(flagged_moments(Eigen::Vector3d(0.22, 0.80, 1.0)));   // a bare phone, on the bound
+  EXPECT_TRUE(far_from_rigid(Eigen::Vector3d(0.0067, 0.011, 1.0)));  // 12-29-59 thinned's needle
+}
+
 }  // namespace
 }  // namespace bookspin::fit

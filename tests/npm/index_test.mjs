@@ -187,6 +187,13 @@ test("a scenario JSON saved as UTF-16 is said to be so, as a scene or a recordin
 });
 
 test("a long name is cut in a message, its length said", () => {
+  // A name any file or person could give (up to 4096 bytes, PATH_MAX) is named whole, as the
+  // command line and Python name it: 300 characters were cut to 60, the name no longer named.
+  const long = "a".repeat(300);
+  assert.equal(refusal(() => f.exactMotion({ ...box(), scenario: long })), `flipcheck: scenario name "${long}" is 300 characters long (at most 128)`);
+  assert.equal(refusal(() => f.scenario(long)).split(" (there: ")[0], `flipcheck: no scenario "${long}"`);
+  const named = "b".repeat(100);  // within the limit: a field's refusal names it whole
+  assert.equal(refusal(() => f.judge({ ...box(), scenario: named, mass: NaN }, {})), `${named}: mass: expected a number, got NaN`);
   const name = "a".repeat(1000000);
   const cut = `"${"a".repeat(60)}…" (1000000 characters)`;
   assert.equal(refusal(() => f.judge({ ...box(), scenario: name }, {})), `flipcheck: scenario name ${cut} is 1000000 characters long (at most 128)`);
@@ -266,6 +273,20 @@ test("a lone surrogate is refused naming its argument, never joined to the next 
   const csv = "t,qw,qx,qy,qz,wx_world,wy_world,wz_world\n";
   assert.equal(refusal(() => f.judgeCsv(NAME, csv, { file: "a\udbffb.csv" })),
     'flipcheck.judgeCsv: file: "a\\udbffb.csv" holds a lone surrogate (U+DBFF) at character 2: no UTF-8 text holds one');
+  // A scenario's name, given or in its object, and a scenario file's text and name: named at its
+  // argument, in the same words (it was "no scenario \"m\u{10078}\"", the "x" eaten).
+  const lone = (argument, quoted, at = 2) => `${argument}: "${quoted}" holds a lone surrogate (U+D800) at character ${at}: no UTF-8 text holds one`;
+  assert.equal(refusal(() => f.scenario("m\ud800x")), lone("flipcheck.scenario: name", "m\\ud800x"));
+  assert.equal(refusal(() => f.exactMotion("m\ud800x")), lone("flipcheck.exactMotion: scenario", "m\\ud800x"));
+  assert.equal(refusal(() => f.exactMotion({ ...box(), scenario: "m\ud800x" })),
+    lone("flipcheck.exactMotion: scenario.scenario", "m\\ud800x"));
+  assert.equal(refusal(() => f.exportFiles({ ...box(), scenario: "m\ud800x" })),
+    lone("flipcheck.exportFiles: scenario.scenario", "m\\ud800x"));
+  assert.equal(refusal(() => f.judge("m\ud800x", arrays)), lone("flipcheck.judge: scenario", "m\\ud800x"));
+  assert.equal(refusal(() => f.readScenario(carried, "m\ud800x.json")), lone("flipcheck.readScenario: file", "m\\ud800x.json"));
+  const text = carried.replace(`"${NAME}"`, '"m\ud800x"');
+  assert.equal(refusal(() => f.readScenario(text)),
+    lone("flipcheck.readScenario: text", JSON.stringify(text).slice(1, -1), text.indexOf("\ud800") + 1));
 });
 
 test("assertPasses returns a pass and throws node's AssertionError with judge's line for a fail", () => {

@@ -1,7 +1,9 @@
 """bookspin.read_gyro_csv (docs/python.md), the reader the class server judges a posted
 recording with, against the command line's: every bad recording of the catalogue
 (tests/bad_recordings/, whose .expected lines are `bookspin fit`'s) refused with the command's
-very line, and the real recordings read to the samples `bookspin fit` fits."""
+very line, a lone surrogate named as bookspin.fit names one, and the real recordings read to the
+samples `bookspin fit` fits."""
+import json
 import pathlib
 
 import numpy as np
@@ -46,3 +48,22 @@ def test_the_real_recordings_read_as_the_fit_reads_them(bookspin):
         for chart in fit.charts:
             rows = np.searchsorted(t, chart["t"])
             assert np.array_equal(t[rows], chart["t"]), folder.name
+
+
+def test_a_lone_surrogate_is_named_as_bookspin_fit_names_it(bookspin):
+    # pybind11's cast refused it with a TypeError naming no argument ("incompatible function
+    # arguments"); bookspin.fit, the page and the npm package say this line.
+    good = "t,wx,wy,wz\n" + "".join(f"{0.01 * i},1,2,3\n" for i in range(12))
+    text = good + "m\ud800x"
+    with pytest.raises(bookspin.Error) as raised:
+        bookspin.read_gyro_csv(text)
+    assert str(raised.value) == ("text: " + json.dumps(text) + " holds a lone surrogate (U+D800) at "
+                                 f"character {len(good) + 2}: no UTF-8 text holds one")
+    with pytest.raises(bookspin.Error) as raised:
+        bookspin.read_gyro_csv(good, "m\ud800x.csv")
+    assert str(raised.value) == ('file: "m\\ud800x.csv" holds a lone surrogate (U+D800) at '
+                                 'character 2: no UTF-8 text holds one')
+    with pytest.raises(bookspin.Error, match=r"^text: expected a str, got int$"):
+        bookspin.read_gyro_csv(3)
+    # Bytes are a file's bytes, read as `bookspin fit` reads them.
+    assert bookspin.read_gyro_csv(good.encode())["t"].shape == (12,)

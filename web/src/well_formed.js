@@ -1,9 +1,11 @@
 // Text the page hands to its WebAssembly module, checked first (docs/explorer.md, "Tests"): a
 // lone surrogate (U+D800 … U+DFFF without its other half, which no UTF-8 holds) is refused naming
 // the field it came from, in the words of every other door (the command line cannot be given
-// one; Python's python/scene_input.cpp unicode_arg and the npm package's index.mjs wellFormed say
-// this line). Unchecked, emscripten's UTF-8 encoder took it and the character after it as one
-// pair: the name "m\ud800x" reached the module as "m\u{10078}", the "x" eaten.
+// one; Python's python/scene_input.cpp unicode_arg says this line). Unchecked, emscripten's UTF-8
+// encoder took it and the character after it as one pair: the name "m\ud800x" reached the module
+// as "m\u{10078}", the "x" eaten. One module for both WebAssembly doors: npm/build.sh copies this
+// file into the npm package, whose index.mjs checks its every text with it. (Node 18, which the
+// package supports, lacks String.prototype.isWellFormed, and that says no more than yes or no.)
 
 const LONE = /[\uD800-\uDBFF](?![\uDC00-\uDFFF])|(?<![\uD800-\uDBFF])[\uDC00-\uDFFF]/;
 
