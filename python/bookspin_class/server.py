@@ -161,6 +161,10 @@ async def start(options, folder):
             raise StartError(f"--data: {folder.path} is in use by another bookspin-class{by}: "
                              "stop it first, or give another --data", 1) from None
         except OSError as error:
+            read_only = store.read_only_reason(folder.path / "class.sqlite3")
+            if read_only is not None:  # the store's own words, as a request that meets it
+                raise StartError(f"--data: the store {folder.path / 'class.sqlite3'} is "
+                                 f"read-only ({read_only})", 1) from None
             raise StartError(f"--data: cannot write in {folder.path}: {error.strerror}",
                              1) from None
         db = open_store(options)
@@ -212,7 +216,7 @@ async def start(options, folder):
         server.integrity_errors = store.integrity_errors()
         server.max_tosses = options.max_tosses
         server.taught = code
-        app = web.Application(middlewares=[guard_middleware(options, rate)],
+        app = web.Application(middlewares=[guard_middleware(options, rate, db.description)],
                               client_max_size=limits.MAX_BODY)
         routes.add_routes(app, server)
         runner = limits.GuardedRunner(app, keepalive_timeout=15.0, access_log=None)
@@ -237,11 +241,11 @@ async def start(options, folder):
     return runner, server, (code, started, address, others, unreachable)
 
 
-def guard_middleware(options, rate):
+def guard_middleware(options, rate, store_description):
     """Every request: the rate limit, errors as {"error": …} (docs/class.md, "The API"), a
     bug as a 500 in one line with the trace on the terminal, and two safe headers."""
     from aiohttp import web
-    from bookspin_class import limits
+    from bookspin_class import limits, store
 
     @web.middleware
     async def guard(request, handler):
@@ -266,7 +270,7 @@ def guard_middleware(options, rate):
         except Exception as error:
             # The machine's state (a full disk, a read-only store) in its own words, 507/503;
             # a bug or a store gone: 500 in one line, the trace on the terminal.
-            failed = store.failure(error, db.description)
+            failed = store.failure(error, store_description)
             if failed is not None:
                 print(f"{PROGRAM}: {request.method} {request.path[:80]}: {failed[1]} ({error})",
                       file=sys.stderr, flush=True)

@@ -462,12 +462,13 @@ def test_a_full_disk_and_a_read_only_store_say_so_and_store_nothing(sqlite_serve
     if not works:
         pytest.skip(f"no mount namespace for a small or read-only file system here: {why}")
     # A store on a file system of 400 kB (its own mount namespace: unshare, tmpfs), with the
-    # certificates of a first start (the test trusts the CA it sees outside the namespace).
+    # class and certificates of a first start copied in (the test trusts the CA and uses the
+    # teacher's key it sees outside the namespace: the class goes on).
     data, side = tmp_path / "small", tmp_path / "tls"
     sqlite_server(data=data).stop()
     server = sqlite_server(data=data, wrap=[
-        "unshare", "-rm", "sh", "-c", f'cp -r "{data}/tls" "{side}" && mount -t tmpfs -o '
-        f'size=400k tmpfs "{data}" && cp -r "{side}" "{data}/tls" && exec "$@"', "sh"])
+        "unshare", "-rm", "sh", "-c", f'cp -a "{data}/." "{side}" && mount -t tmpfs -o '
+        f'size=400k,mode=0700 tmpfs "{data}" && cp -a "{side}/." "{data}" && exec "$@"', "sh"])
     token = server.join("Anna")
     post_real(server, token, PHONE[0])
     big = real_csv(PHONE[1])
