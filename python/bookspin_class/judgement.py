@@ -154,8 +154,9 @@ class Judge:
 
     def judge(self, files, own):
         """{stem: judgement} of the recordings `files` ({stem: csv text}) with their own fits
-        `own`: each against the body the others give, then once more against the body of the
-        others not singled out (two odd tosses must not hide each other)."""
+        `own`: each against the class's medoid body (its majority's), then, those singled out
+        there left out where they are fewer than half, against the body the others give
+        (leave-one-out: two odd tosses must not hide each other)."""
         used = set()
         judged = self._round(files, own, (), True, used)
         odd = {stem for stem, j in judged.items() if j and j["outlier"]}
@@ -168,7 +169,9 @@ class Judge:
         bodies = {}
         for stem in files:
             if own[stem].error is None and own[stem].share is not None:
-                bodies[stem] = others_body(own, stem, left_out, robust)
+                # The first round's body is the whole class's medoid (its majority's), the
+                # second's the others' that fit, without the recording judged.
+                bodies[stem] = others_body(own, None if robust else stem, left_out, robust)
         keys = {}
         for stem, (body, _) in bodies.items():
             if body is not None:
