@@ -311,7 +311,16 @@ class ClassServer:
         names = {t["seq"]: t["student_name"] for t in self.store.tosses(code)}
         left_out = {pooled.file_stem(names[seq], seq): held
                     for seq, held in self.store.left_out(code).items()}
-        data = pooled.set_zip(self.kept_files(code), f"class-{code}", left_out)
+        kept = self.kept_files(code)
+        # A toss the fit set aside by itself (the same samples held twice, from a store of
+        # before the door compared samples) goes apart with its reason too, so that `bookspin
+        # fit class-CODE/*.csv` is still the projector's fit (docs/class.md, "The projector").
+        for aside in self.fit_of(code).result.get("set_aside") or []:
+            stem = aside["file"][:-len(".csv")] if aside["file"].endswith(".csv") else None
+            if stem in kept:
+                left_out[stem] = (kept.pop(stem), "set aside by the class's fit: " +
+                                  (aside.get("why_summary") or aside.get("why") or ""))
+        data = pooled.set_zip(kept, f"class-{code}", left_out)
         return web.Response(body=data, content_type="application/zip", headers={
             "Content-Disposition": f'attachment; filename="class-{code}.zip"'})
 

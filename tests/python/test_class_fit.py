@@ -5,9 +5,11 @@ store is test_class_server.py's business), real HTTPS clients posting the real r
 other samples). The threshold of the judgement was decided on 12-10-56, 12-13-01 (the bare
 phone) and 12-22-44, 12-38-00 (the plate) with their thinnings; the held-out recordings
 12-13-51 (phone), 12-29-59 and 12-44-51 (plate) test it here."""
+import io
 import os
 import time
 import uuid
+import zipfile
 
 import pytest
 
@@ -113,7 +115,7 @@ def test_a_plate_among_phones_is_named_and_no_phone_is(server):
         assert "\n" not in judgement["why"] and len(judgement["why"]) < 300
 
 
-def test_a_recording_held_twice_is_set_aside_by_name_and_the_rest_fitted(server):
+def test_a_recording_held_twice_is_set_aside_by_name_and_the_rest_fitted(server, tmp_path):
     """A store holding the same samples twice under two ids (CRLF line ends: other bytes, held
     before the door compared samples, and still there after a restart): the class's fit names
     the later copy, sets it aside with the reason and fits the rest (before: the fit failed for
@@ -147,6 +149,23 @@ def test_a_recording_held_twice_is_set_aside_by_name_and_the_rest_fitted(server)
     kept = "first" if later == copy_file else "the same again"
     assert shown[kept]["flights"] and shown["second"]["flights"]
     assert shown["first" if kept != "first" else "the same again"]["flights"] == []
+    # The set the teacher downloads holds the copy apart, with the fit's reason, so that
+    # `bookspin fit class-CODE/*.csv` is still the projector's fit (before: it failed, the copy
+    # among the kept files).
+    status, data = server.request("GET", f"/api/class/{server.code}/download", token=server.key)
+    assert status == 200
+    with zipfile.ZipFile(io.BytesIO(data)) as archive:
+        names = archive.namelist()
+        readme = archive.read(f"class-{server.code}/left-out/README.txt").decode("utf-8")
+        archive.extractall(tmp_path)
+    assert f"class-{server.code}/left-out/{later}" in names, names
+    assert f"class-{server.code}/{later}" not in names, names
+    assert f"{later}: set aside by the class's fit: " in readme, readme
+    files = sorted(str(p) for p in tmp_path.glob("class-*/*.csv"))
+    assert len(files) == 2, files
+    run_cli("fit", *files, "-o", tmp_path / "out")
+    body = read_csv(next((tmp_path / "out").glob("*-fit-body.csv")))
+    assert [float(body["I1_over_I3"][0]), float(body["I2_over_I3"][0])] == pooled["ratios"][:2]
 
 
 def test_flights_are_numbered_within_their_toss_and_each_is_the_commands_row(server, tmp_path):
