@@ -312,6 +312,28 @@ try:
     time.sleep(0.5)
     if any(t["excluded"] for s in server.state()["students"] for t in s["tosses"]):
         fail("Cancel left a toss out")
+    # The plate among 30 phones, judged (docs/class.md, "A toss that does not fit the others'
+    # body"): its line alone is singled out; no phone's line is flagged.
+    deadline = time.monotonic() + 300
+    while True:
+        judged = {t["name"]: t.get("judgement") for s in server.state()["students"]
+                  for t in s["tosses"]}
+        if all(judged.values()):
+            break
+        if time.monotonic() > deadline:
+            fail(f"the class's tosses were not judged: {judged}")
+        time.sleep(1)
+    if not judged[late_toss]["outlier"] or any(j["outlier"] for n, j in judged.items()
+                                                if n != late_toss):
+        fail(f"the plate alone must be judged an outlier: {judged}")
+    lines = wait_for(driver, "return [...document.getElementById('tosses').rows].map(r => "
+                     "[r.cells[1].textContent, r.cells[6].textContent]);",
+                     lambda rows: any(n.startswith(late_toss) and "outlier" in w
+                                      for n, w in rows), timeout=60)
+    flagged = [(n, w) for n, w in lines if not n.startswith(late_toss) and
+               ("flag:" in w or "outlier" in w or "flexes" in w)]
+    if flagged or not any(n.startswith(late_toss) and "outlier" in w for n, w in lines):
+        fail(f"the plate's line alone must say outlier: flagged {flagged[:3]}, lines {lines[-2:]}")
     plate = next(t for s in server.state()["students"] for t in s["tosses"]
                  if t["name"] == late_toss)
     row_of = ("return [...document.getElementById('tosses').rows]"
