@@ -331,8 +331,8 @@ try:
                      lambda rows: any(n.startswith(late_toss) and "outlier" in w
                                       for n, w in rows), timeout=60)
     flagged = [(n, w) for n, w in lines if not n.startswith(late_toss) and
-               ("flag:" in w or "outlier" in w or "flexes" in w)]
-    if flagged or not any(n.startswith(late_toss) and "outlier" in w for n, w in lines):
+               ("flag:" in w or w.startswith("outlier") or "flexes" in w)]
+    if flagged or not any(n.startswith(late_toss) and w.startswith("outlier") for n, w in lines):
         fail(f"the plate's line alone must say outlier: flagged {flagged[:3]}, lines {lines[-2:]}")
     plate = next(t for s in server.state()["students"] for t in s["tosses"]
                  if t["name"] == late_toss)
