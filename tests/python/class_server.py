@@ -31,6 +31,22 @@ def in_ci():
     return os.environ.get("CI", "").lower() in ("1", "true", "yes")
 
 
+
+def require_packages(*names):
+    """Imports the class server's packages a test module needs (Debian's, from
+    scripts/install-deps.sh); a module without them is skipped, saying which, and fails under
+    CI=true. Call at a test module's top, before importing what needs them."""
+    import importlib
+    import pytest
+    for name in names:
+        try:
+            importlib.import_module(name)
+        except ImportError as missing_package:
+            if in_ci():
+                raise
+            pytest.skip(f"the class server's packages are missing ({missing_package}): "
+                        "scripts/install-deps.sh", allow_module_level=True)
+
 def real_csv(name):
     """The CSV text of a real recording (its Raw Data.csv, or the single-sensor export)."""
     folder = REAL / name

@@ -22,15 +22,9 @@ import zipfile
 
 import pytest
 
-try:
-    import aiohttp  # noqa: F401
-    import psycopg  # noqa: F401
-    import segno  # noqa: F401
-except ImportError as missing_package:
-    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
-        raise
-    pytest.skip(f"the class server's packages are missing ({missing_package}): "
-                "scripts/install-deps.sh", allow_module_level=True)
+from class_server import require_packages  # noqa: E402
+
+require_packages('aiohttp', 'psycopg', 'segno')
 
 from class_server import REAL, Postgres, Server, in_ci, real_csv, restamped
 from conftest import cli_error_line, read_csv, run_cli

@@ -23,17 +23,12 @@ import threading
 
 import pytest
 
-try:
-    import aiohttp  # noqa: F401
-    import psutil  # noqa: F401
-    import segno
-    from cryptography import x509
-    from cryptography.hazmat.primitives import serialization
-except ImportError as missing_package:
-    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
-        raise
-    pytest.skip(f"the class server's packages are missing ({missing_package}): "
-                "scripts/install-deps.sh", allow_module_level=True)
+from class_server import require_packages  # noqa: E402
+
+require_packages('aiohttp', 'psutil', 'segno', 'cryptography')
+import segno  # noqa: E402
+from cryptography import x509  # noqa: E402
+from cryptography.hazmat.primitives import serialization  # noqa: E402
 
 from class_server import Server, in_ci
 from class_start_shared import (listing, namespace_problem, one_error_line, page,  # noqa: F401

@@ -12,13 +12,9 @@ import subprocess
 
 import pytest
 
-try:
-    import aiohttp  # noqa: F401
-except ImportError as missing_package:
-    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
-        raise
-    pytest.skip(f"the class server's packages are missing ({missing_package}): "
-                "scripts/install-deps.sh", allow_module_level=True)
+from class_server import require_packages  # noqa: E402
+
+require_packages('aiohttp')
 
 from class_server import Server, in_ci
 from class_start_shared import (listing, namespace_problem, one_error_line, page,  # noqa: F401
