@@ -25,6 +25,7 @@ import pytest
 from class_server import require_packages  # noqa: E402
 
 require_packages('aiohttp', 'psycopg', 'segno')
+import segno  # noqa: E402
 
 from class_server import REAL, Postgres, Server, in_ci, real_csv, restamped
 from conftest import cli_error_line, read_csv, run_cli
