@@ -215,8 +215,9 @@ class HeadDeadlineHandler(RequestHandler):
             self.transport.write(b"HTTP/1.1 408 Request Timeout\r\nContent-Type: "
                                  b"application/json\r\nConnection: close\r\nContent-Length: " +
                                  str(len(body)).encode() + b"\r\n\r\n" + body)
-            self.force_close()
-            self.transport.close()
+            transport = self.transport
+            self.force_close()  # aiohttp's: closes the transport (and forgets it) where it can
+            transport.close()  # closing twice is nothing; a closed transport is never None here
 
     def connection_lost(self, exc):
         self._deadline.cancel()
