@@ -62,6 +62,11 @@ def read_gyro_csv(text: str, file: str = "recording.csv") -> dict[str, Array]:
     """A recording's CSV text read as `bookspin fit` reads a file: {"t": (N,) s, "omega": (N, 3)
     rad/s}; bookspin.Error with the reader's line naming `file`, row and column."""
 
+flight_requirements: dict[str, float]
+"""What the finder needs to keep a flight (the defaults every door uses): flight_omega rad/s
+(turning at least this fast throughout), min_flight s (at least this long), rest_omega rad/s
+(slower than this is at rest)."""
+
 class Frames(Iterator[tuple[float, Image]]):
     """The iterator bookspin.frames returns."""
     def __iter__(self) -> "Frames": ...

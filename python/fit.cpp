@@ -242,6 +242,15 @@ void add_fit(py::module_& m) {
         py::arg("tosses") = py::none(), py::arg("moments") = py::none(), kDoc);
   m.def("read_gyro_csv", &read_gyro_csv, py::arg("text"), py::arg("file") = "recording.csv",
         kReadDoc);
+  // What a recording must hold for the finder to keep a flight (fit::FinderSettings, the
+  // defaults every door uses; docs/phone-lab.md, "How the flights are found"): what a server
+  // tells a student to record again by.
+  const fit::FinderSettings finder;
+  py::dict requirements;
+  requirements["flight_omega"] = finder.flight_omega;
+  requirements["min_flight"] = finder.min_flight;
+  requirements["rest_omega"] = finder.rest_omega;
+  m.attr("flight_requirements") = requirements;
 }
 
 }  // namespace bookspin::python

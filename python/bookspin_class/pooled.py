@@ -7,6 +7,7 @@ the next (a burst is one refit)."""
 import asyncio
 import datetime
 import io
+import math
 import pathlib
 import re
 import tempfile
@@ -14,6 +15,8 @@ import unicodedata
 import zipfile
 
 import bookspin
+
+from bookspin_class.judgement import Judge
 
 
 def file_stem(student_name, seq):
@@ -89,16 +92,24 @@ def set_zip(files, folder_name, left_out=None):
 
 def fit_set(files):
     """bookspin.fit of the set {stem: csv text} written to a fresh folder: (body dict with
-    ratios and σ, {stem: [flight rows]}) or raises bookspin.Error. Called in a worker thread."""
+    ratios and σ, {stem: [flight rows]}) or raises bookspin.Error (its message naming the
+    files by their names, not the folder's paths). Called in a worker thread."""
     with tempfile.TemporaryDirectory(prefix="bookspin-class-") as folder:
         paths = write_set(folder, files)
-        fit = bookspin.fit(paths)
+        try:
+            fit = bookspin.fit(paths)
+        except bookspin.Error as failure:
+            raise bookspin.Error(str(failure).replace(str(pathlib.Path(folder)) + "/", "")) \
+                from None
     body = fit.body
-    flights = {stem: [] for stem in files}
+    rows = {stem: [] for stem in files}
     only = next(iter(files)) if len(files) == 1 else None
     for row in fit.tosses:
-        stem = only if only is not None else row.get("recording")
-        flights.setdefault(stem, []).append(flight_of(row))
+        rows.setdefault(only if only is not None else row.get("recording"), []).append(row)
+    # Flights numbered within their recording (docs/class.md, "The projector"): 1..n per toss,
+    # the set's own number kept as toss_in_set (the `toss` column of `bookspin fit`'s table).
+    flights = {stem: [flight_of(row, number) for number, row in enumerate(stem_rows, 1)]
+               for stem, stem_rows in rows.items()}
     pooled = {
         "tosses": len(fit.tosses),
         "recordings": len(files),
@@ -109,36 +120,112 @@ def fit_set(files):
     return pooled, flights
 
 
-def flight_of(row):
+def flight_of(row, number=None):
     """A fit table's row as the projector shows it: T/2 measured, predicted from the others ±
-    2σ and whether the measured lies within (as the command's table says "within 2σ")."""
+    2σ and whether the measured lies within (as the command's table says "within 2σ"); its
+    number within its recording (`number`, 1..n) and in the set (toss_in_set); how its interval
+    is calibrated, or why it has none (prediction_interval, not_predicted)."""
     measured = row.get("half_period_measured")
     predicted = row.get("half_period_predicted")
     sigma = row.get("half_period_predicted_sigma")
     within = None
     if measured is not None and predicted is not None and sigma is not None:
         within = abs(measured - predicted) <= 2.0 * sigma
-    return {"flight": int(row["toss"]), "t_start": row.get("t_start"), "t_end": row.get("t_end"),
-            "half_period_measured": measured, "half_period_predicted": predicted,
-            "sigma": sigma, "within": within, "flag": row.get("flag"),
-            "not_predicted": row.get("not_predicted")}
+    return {"flight": int(row["toss"]) if number is None else number,
+            "toss_in_set": int(row["toss"]), "t_start": row.get("t_start"),
+            "t_end": row.get("t_end"), "half_period_measured": measured,
+            "half_period_predicted": predicted, "sigma": sigma, "within": within,
+            "flag": row.get("flag"), "not_predicted": row.get("not_predicted"),
+            "prediction_interval": row.get("prediction_interval") or None}
+
+
+def named_recording(message, stems):
+    """The recording a fit's error is about, where it begins with one file's name ("Ben-4.csv:
+    the same samples as Anna-2.csv …"); None for an error about the set as a whole."""
+    for stem in stems:
+        if message.startswith(f"{stem}.csv:") or message.startswith(f"{stem}.csv "):
+            return stem
+    return None
+
+
+def error_summary(message):
+    """One sentence telling a student what to do about the fit's error `message` (its detail
+    stays in `error`), with the finder's own requirements (bookspin.flight_requirements)."""
+    need = bookspin.flight_requirements
+    turn = 2 * math.pi / need["flight_omega"]
+    again = (f"Record again: throw the phone spinning (at least {need['flight_omega']:g} rad/s, "
+             f"a turn every {turn:.0f} s) so that it flies free for at least "
+             f"{need['min_flight']:g} s, and let it lie still a moment before and after.")
+    if "no free flight found" in message:
+        return again
+    if "did not converge" in message or "no rigid body" in message:
+        return "The fit found no body in these flights: " + again[0].lower() + again[1:]
+    if "the same samples as" in message or "the same file as" in message or \
+            "given twice" in message:
+        return "The same recording was sent twice: the teacher leaves one of them out."
+    return "The class's fit failed on these recordings: the teacher sees the detail."
+
+
+def fit_class(files, judge):
+    """The class's pooled fit of {stem: csv text} with what one toss breaks set aside
+    (docs/class.md, "The projector"): (pooled dict, {stem: flights}, {stem: why set aside}).
+    A fit refused for one recording (its error begins with that file's name) is fitted again
+    without it; a fit refused for the set, again without each recording whose own fit
+    (judge.own_fits) is refused for other than having no flight. Raises bookspin.Error where
+    neither names a recording. Called in a worker thread."""
+    aside = {}
+    while True:
+        kept = {stem: text for stem, text in files.items() if stem not in aside}
+        try:
+            pooled, flights = fit_set(kept)
+            return pooled, flights, aside
+        except bookspin.Error as failure:
+            message = str(failure)
+            stem = named_recording(message, kept) if len(kept) > 1 else None
+            if stem is not None:
+                aside[stem] = message
+                continue
+            own = judge.own_fits(kept) if len(kept) > 1 else {}
+            broken = {s: f.error for s, f in own.items()
+                      if f.error is not None and "no free flight found" not in f.error}
+            if not broken or len(broken) == len(kept):
+                raise
+            aside.update(broken)
+
+
+def add_alone(flights, own):
+    """Each flight's T/2 as its recording alone measures it (OwnFit.flights, the phone's own
+    fit): the flight of the same start within 0.15 s, as half_period_measured_alone."""
+    for stem, stem_flights in flights.items():
+        alone = own.get(stem)
+        for flight in stem_flights:
+            match = None
+            if alone is not None and flight["t_start"] is not None:
+                match = next((half for start, half in alone.flights
+                              if start is not None and abs(start - flight["t_start"]) < 0.15),
+                             None)
+            flight["half_period_measured_alone"] = match
 
 
 class PooledFit:
     """One class's pooled fit, kept up to date: request() after each change; the fit runs in a
     thread, one at a time for the whole server (`gate`), and `on_done` is called (on the event
-    loop) with each result."""
+    loop) with each result: first the pooled body (result["judging"] true), then each toss's
+    judgement against the others' body (judgements, docs/class.md)."""
 
-    def __init__(self, files_of, on_done, gate):
+    def __init__(self, files_of, on_done, gate, judge=None):
         self.files_of = files_of  # () -> {stem: csv text}, the tosses not left out
         self.on_done = on_done
         self.gate = gate
+        self.judge = judge or Judge()
         self.dirty = False
         self.task = None
         self.fitting = False
         self.result = {"tosses": 0, "recordings": 0, "ratios": None, "sigma": None,
-                       "updated": None, "error": None}
+                       "updated": None, "error": None, "error_summary": None, "set_aside": [],
+                       "judging": False}
         self.flights = {}
+        self.judgements = {}  # stem -> {"outlier", "why", "residual_share", "own_residual_share"}
         self.fits = 0
 
     def request(self):
@@ -152,6 +239,7 @@ class PooledFit:
             async with self.gate:
                 files = self.files_of()
                 self.fitting = True
+                aside = {}
                 try:
                     if not files:
                         pooled, flights = {"tosses": 0, "recordings": 0, "ratios": None,
@@ -159,7 +247,8 @@ class PooledFit:
                         error = None
                     else:
                         try:
-                            pooled, flights = await asyncio.to_thread(fit_set, files)
+                            pooled, flights, aside = await asyncio.to_thread(
+                                fit_class, files, self.judge)
                             error = None
                         except bookspin.Error as failure:
                             pooled, flights = {"tosses": 0, "recordings": len(files),
@@ -167,9 +256,33 @@ class PooledFit:
                             error = str(failure)
                 finally:
                     self.fitting = False
-            self.fits += 1
-            pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
-                timespec="seconds")
-            pooled["error"] = error
-            self.result, self.flights = pooled, flights
+                self.fits += 1
+                pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
+                    timespec="seconds")
+                pooled["error"] = error
+                pooled["error_summary"] = error_summary(error) if error else None
+                pooled["set_aside"] = [{"file": f"{stem}.csv", "why": why,
+                                        "why_summary": error_summary(why)}
+                                       for stem, why in sorted(aside.items())]
+                kept = {stem: text for stem, text in files.items() if stem not in aside}
+                pooled["judging"] = bool(kept) and not self.dirty
+                self.result, self.flights = pooled, flights
+                self.judgements = {stem: j for stem, j in self.judgements.items() if stem in kept}
+                self.on_done()
+                if not pooled["judging"]:
+                    continue
+                # The judgements: each recording against the body the others give.
+                own, judged = await asyncio.to_thread(self._judge, kept)
+                add_alone(flights, own)
+                self.judgements = judged
+                self.result = dict(pooled, judging=False)
             self.on_done()
+
+    def _judge(self, files):
+        own = self.judge.own_fits(files)
+        judged = self.judge.judge(files, own)
+        for stem, fit in own.items():
+            if judged.get(stem) is None and fit.error is not None:
+                judged[stem] = {"outlier": False, "residual_share": None,
+                                "own_residual_share": None, "why": error_summary(fit.error)}
+        return own, judged

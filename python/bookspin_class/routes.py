@@ -73,7 +73,7 @@ class ClassServer:
                 "half_period_measured": main and main["half_period_measured"],
                 "half_period_predicted": main and main["half_period_predicted"],
                 "sigma": main and main["sigma"], "within": main and main["within"],
-                "flights": flights}
+                "flights": flights, "judgement": fit.judgements.get(stem)}
 
     def pooled_view(self, code):
         result = self.fit_of(code).result

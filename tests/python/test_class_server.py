@@ -133,7 +133,7 @@ def test_the_projectors_pooled_fit_is_bookspin_fit_of_the_downloaded_set(make_se
     for student in state["students"]:
         for toss in student["tosses"]:
             for flight in toss["flights"]:
-                shown[(toss["file"][:-4], flight["flight"])] = flight
+                shown[(toss["file"][:-4], flight["toss_in_set"])] = flight
             if toss["excluded"]:
                 assert toss["excluded"] == "another body (a plate)" and toss["flights"] == []
     assert len(shown) == len(tosses["toss"]) > 0
