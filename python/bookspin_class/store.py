@@ -12,7 +12,8 @@ SCHEMA = [
     """CREATE TABLE IF NOT EXISTS classes (
          code TEXT PRIMARY KEY,
          teacher_key TEXT NOT NULL UNIQUE,
-         created DOUBLE PRECISION NOT NULL)""",
+         created DOUBLE PRECISION NOT NULL,
+         next_seq INTEGER NOT NULL DEFAULT 0)""",
     """CREATE TABLE IF NOT EXISTS students (
          id TEXT PRIMARY KEY,
          class_code TEXT NOT NULL REFERENCES classes(code) ON DELETE CASCADE,
@@ -107,6 +108,7 @@ class Store:
                 self.connection.execute(statement)
             self.connection.commit()
         self._add_samples_sha256()
+        self._add_next_seq()
 
     def _add_samples_sha256(self):
         """A store made before tosses had samples_sha256 gets the column, and every toss its
@@ -119,6 +121,22 @@ class Store:
         if missing:
             self._write([("UPDATE tosses SET samples_sha256 = ? WHERE toss = ?",
                           (read_samples_sha256(csv), toss)) for toss, csv in missing])
+
+    def _add_next_seq(self):
+        """A store made before the class's counter of tosses (classes.next_seq, add_toss) gets
+        the column, each class's set to the highest number its tosses hold. Two servers starting
+        at once on one PostgreSQL: the second's ALTER fails on the column the first added."""
+        try:
+            self._all("SELECT next_seq FROM classes WHERE 1 = 0")
+            return
+        except Exception:  # the drivers' "no such column" (sqlite3 and psycopg differ)
+            pass
+        try:
+            self._write([("ALTER TABLE classes ADD COLUMN next_seq INTEGER NOT NULL DEFAULT 0", ()),
+                         ("UPDATE classes SET next_seq = (SELECT COALESCE(MAX(seq), 0) FROM "
+                          "tosses WHERE tosses.class_code = classes.code)", ())])
+        except Exception:
+            self._all("SELECT next_seq FROM classes WHERE 1 = 0")  # added by the other server
 
     def _sql(self, statement):
         return statement if self.marker == "?" else statement.replace("?", "%s")
@@ -235,14 +253,17 @@ class Store:
 
     def add_toss(self, toss, code, student, name, recorded_at, csv, csv_sha256, samples):
         """Holds a toss, committed before it returns; its seq is the class's next number (the
-        file name the pooled set gives it); `samples` is its samples_sha256. Raises the
+        file name the pooled set gives it), allotted by the database: the class's counter
+        (classes.next_seq) raised in the same transaction as the toss's INSERT, so that two
+        servers on one PostgreSQL never give one number twice (the row's lock orders them; a
+        read-then-write of MAX(seq) raced). `samples` is its samples_sha256. Raises the
         driver's integrity error when the id is held already (two requests at once: the caller
         looks again)."""
         with self.lock:
             try:
                 cursor = self.connection.execute(
-                    self._sql("SELECT COALESCE(MAX(seq), 0) + 1 FROM tosses WHERE class_code = ?"),
-                    (code,))
+                    self._sql("UPDATE classes SET next_seq = next_seq + 1 WHERE code = ? "
+                              "RETURNING next_seq"), (code,))
                 seq = cursor.fetchall()[0][0]
                 self.connection.execute(
                     self._sql("INSERT INTO tosses (toss, class_code, student, seq, name, "

@@ -1,0 +1,134 @@
+"""A school's server (docs/class.md, "A school's server"): several `bookspin-class` processes on
+one real PostgreSQL 15 (started by the test, as Python.class_server does), real HTTPS clients
+posting the real recordings of ../shared/recordings-real/. The toss numbers allotted by the
+database under concurrent posts through two processes; a toss held by one process on the other's
+projector stream (LISTEN/NOTIFY); the laptop's SQLite store made before the counter goes on."""
+import concurrent.futures
+import http.client
+import json
+import os
+import pathlib
+import shutil
+import tempfile
+import time
+
+import pytest
+
+try:
+    import aiohttp  # noqa: F401
+    import psycopg
+    import segno  # noqa: F401
+except ImportError as missing_package:
+    if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
+        raise
+    pytest.skip(f"the class server's packages are missing ({missing_package}): "
+                "scripts/install-deps.sh", allow_module_level=True)
+
+from class_server import REAL, Postgres, Server, in_ci, real_csv, restamped
+
+PHONE = ["12-10-56", "12-13-01", "12-13-51"]  # the bare phone's recordings (their README)
+
+
+def require_real():
+    if not REAL.is_dir():
+        if in_ci():
+            pytest.fail(f"no real recordings at {REAL} (CI has them)")
+        pytest.skip(f"no real recordings at {REAL} (../shared/recordings-real/ beside the "
+                    "checkout)")
+
+
+@pytest.fixture(scope="module")
+def postgres():
+    folder = pathlib.Path(tempfile.mkdtemp(prefix="bookspin-pg-"))
+    server = Postgres(folder)
+    why = server.start()
+    if why:
+        server.stop()
+        if in_ci():
+            pytest.fail(f"PostgreSQL could not start: {why}")
+        pytest.skip(f"PostgreSQL could not start: {why}")
+    yield server
+    server.stop()
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+@pytest.fixture(scope="module")
+def page(tmp_path_factory):
+    path = tmp_path_factory.mktemp("page") / "explorer.html"
+    path.write_text("<!doctype html><title>bookspin explorer</title><p>lab</p>\n")
+    return path
+
+
+@pytest.fixture
+def two_servers(postgres, page, tmp_path):
+    """Two server processes on one PostgreSQL database: the first teaching class A, the second
+    started with --new (class B); either serves the API of every class of the database."""
+    url = postgres.new_database()
+    first = Server(tmp_path / "first", page, url, ["--rate", "10000"]).start()
+    second = Server(tmp_path / "second", page, url, ["--rate", "10000"])
+    try:
+        second.start(new=True)
+        yield first, second
+    finally:
+        second.stop()
+        first.stop()
+
+
+def test_two_servers_on_one_postgres_allot_distinct_toss_numbers(two_servers):
+    """Tosses of one class posted at once through two processes: every one 201 and held once,
+    their numbers (the set's file names) 1..N, none twice. A read-then-write of MAX(seq) gave
+    two a number and the second a 500 (UNIQUE (class_code, seq))."""
+    require_real()
+    first, second = two_servers
+    assert first.code != second.code
+    count = 24
+    tokens = [first.join(f"student {i}") for i in range(count)]
+    texts = [restamped(real_csv(PHONE[i % 3]), 50.0 * i) for i in range(count)]
+
+    def post(i):
+        via = (first, second)[i % 2]  # alternately through each process, class A's code
+        return via.post_toss(tokens[i], texts[i], name=f"toss {i}", code=first.code)
+
+    with concurrent.futures.ThreadPoolExecutor(count) as pool:
+        answers = list(pool.map(post, range(count)))
+    assert [status for status, _ in answers] == [201] * count, answers
+    with psycopg.connect(first.postgres) as connection:
+        seqs = [row[0] for row in connection.execute(
+            "SELECT seq FROM tosses WHERE class_code = %s ORDER BY seq", (first.code,))]
+        counter = connection.execute("SELECT next_seq FROM classes WHERE code = %s",
+                                     (first.code,)).fetchone()[0]
+    assert seqs == list(range(1, count + 1)) and counter == count
+    files = sorted(t["file"] for s in first.state()["students"] for t in s["tosses"])
+    assert len(set(files)) == count
+
+
+def test_a_third_server_may_not_go_on_with_a_class_another_serves(two_servers, tmp_path, page):
+    """Two teachers never share a class: the advisory lock of the server that serves it."""
+    first, second = two_servers
+    for code in (first.code, second.code):
+        third = Server(tmp_path / f"third-{code}", page, first.postgres, ["--class", code])
+        status, _, err = third.run()
+        assert status == 1 and f"class {code} is served by another bookspin-class" in err, err
+
+
+def test_a_sqlite_store_made_before_the_counter_goes_on_numbering(tmp_path, page):
+    """A laptop's store of before classes.next_seq: the column is added at start, set to the
+    class's highest toss number, and the next toss is numbered after it."""
+    require_real()
+    server = Server(tmp_path / "data", page, None).start()
+    try:
+        token = server.join("Anna")
+        for name in PHONE[:2]:
+            status, answer = server.post_toss(token, real_csv(name), name=name)
+            assert status == 201, answer
+    finally:
+        server.stop()
+    server.execute("ALTER TABLE classes DROP COLUMN next_seq")  # as a store of before it
+    server.start()
+    try:
+        status, answer = server.post_toss(server.join("Ben"), real_csv(PHONE[2]), name="c")
+        assert status == 201, answer
+        files = sorted(t["file"] for s in server.state()["students"] for t in s["tosses"])
+        assert files == ["Anna-1.csv", "Anna-2.csv", "Ben-3.csv"]
+    finally:
+        server.stop()
