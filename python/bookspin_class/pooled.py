@@ -237,7 +237,7 @@ class PooledFit:
         while self.dirty:
             self.dirty = False
             async with self.gate:
-                files = self.files_of()
+                files = await asyncio.to_thread(self.files_of)  # the store read off the loop
                 self.fitting = True
                 aside = {}
                 try:

@@ -212,7 +212,7 @@ async def start(options, folder):
         server.integrity_errors = store.integrity_errors()
         server.max_tosses = options.max_tosses
         server.taught = code
-        app = web.Application(middlewares=[guard_middleware(options, rate)],
+        app = web.Application(middlewares=[guard_middleware(options, rate, db)],
                               client_max_size=limits.MAX_BODY)
         routes.add_routes(app, server)
         runner = limits.GuardedRunner(app, keepalive_timeout=15.0, access_log=None)
@@ -237,11 +237,12 @@ async def start(options, folder):
     return runner, server, (code, started, address, others, unreachable)
 
 
-def guard_middleware(options, rate):
+def guard_middleware(options, rate, db):
     """Every request: the rate limit, errors as {"error": …} (docs/class.md, "The API"), a
-    bug as a 500 in one line with the trace on the terminal, and two safe headers."""
+    bug as a 500 in one line with the trace on the terminal, and two safe headers. `db` is the
+    store, whose errors of the machine's state are named (store.failure)."""
     from aiohttp import web
-    from bookspin_class import limits
+    from bookspin_class import limits, store
 
     @web.middleware
     async def guard(request, handler):
@@ -335,15 +336,23 @@ async def serve(options, stop):
     async def daily():
         while True:
             await asyncio.sleep(86400.0)
-            for old in server.store.delete_older_than(keep_seconds):
+            for old in await server.db(server.store.delete_older_than, keep_seconds):
                 server.fits.pop(old, None)
                 print(f"{PROGRAM}: deleted class {old}: older than {options.keep_days:g} "
                       "days", flush=True)
 
     retention = asyncio.get_running_loop().create_task(daily())
+    listening = None
+    if options.postgres:  # the other servers' changes on this database (notices.py)
+        from bookspin_class import notices
+        listening = asyncio.get_running_loop().create_task(notices.listen(
+            options.postgres, server.store.instance, server.remote_change, server.refresh))
     await stop.wait()
     retention.cancel()
+    if listening is not None:
+        listening.cancel()
     await runner.cleanup()
+    server.close()
     server.store.close()
 
 

@@ -132,3 +132,53 @@ def test_a_sqlite_store_made_before_the_counter_goes_on_numbering(tmp_path, page
         assert files == ["Anna-1.csv", "Anna-2.csv", "Ben-3.csv"]
     finally:
         server.stop()
+
+
+def open_stream(server, code):
+    """The teacher's event stream of class `code` on `server`: a function giving its next
+    `class` event's data (within `seconds`, else AssertionError)."""
+    connection = http.client.HTTPSConnection("127.0.0.1", server.port, context=server.context,
+                                             timeout=30)
+    connection.request("GET", f"/api/class/{code}/events",
+                       headers={"Authorization": f"Bearer {server.key}"})
+    response = connection.getresponse()
+    assert response.status == 200
+
+    def next_state(seconds=20):
+        deadline = time.monotonic() + seconds
+        for line in response:
+            assert time.monotonic() < deadline, f"nothing new on the stream within {seconds} s"
+            if line.startswith(b"data: "):
+                return json.loads(line[6:])
+        raise AssertionError("the stream ended")
+
+    return connection, next_state
+
+
+def test_a_toss_held_by_one_server_is_on_the_others_projector(two_servers):
+    """Two processes on one PostgreSQL: a student joining and a toss held through the second
+    reach the first's projector stream (LISTEN/NOTIFY), refitted there; the class ended through
+    the second ends the first's stream."""
+    require_real()
+    first, second = two_servers
+    connection, next_state = open_stream(first, first.code)
+    assert next_state()["students"] == []
+    token = second.join("Anna", code=first.code)
+    assert [s["name"] for s in next_state()["students"]] == ["Anna"]
+    status, held = second.post_toss(token, real_csv(PHONE[1]), name="a", code=first.code)
+    assert status == 201, held
+    while True:  # on the first's stream, then with the first's own refit of it
+        state = next_state(60)
+        tosses = state["students"][0]["tosses"]
+        if tosses and tosses[0]["toss"] == held["toss"] and \
+                state["pooled"]["ratios"] is not None and not state["pooled"]["fitting"]:
+            break
+    assert state["pooled"]["recordings"] == 1 and tosses[0]["half_period_measured"]
+    status, answer = second.request("DELETE", f"/api/class/{first.code}", token=first.key)
+    assert status == 200, answer
+    while True:
+        state = next_state()
+        if state.get("ended"):
+            break
+    assert state == {"code": first.code, "ended": True}
+    connection.close()
