@@ -237,6 +237,27 @@ async def start(options, folder):
     return runner, server, (code, started, address, others, unreachable)
 
 
+def client_address(request, proxy):
+    """The phone's address, for the rate limit: the connection's, or where the connection is
+    the school's reverse proxy's (--proxy) the last address of X-Forwarded-For (the one the
+    proxy appended: what came before it the phone may have written itself). A forwarded header
+    from any other address is ignored."""
+    remote = request.remote or "?"
+    if proxy is None:
+        return remote
+    try:
+        if ipaddress.ip_address(remote) != proxy:
+            return remote
+    except ValueError:
+        return remote
+    forwarded = request.headers.getall("X-Forwarded-For", [])
+    last = ",".join(forwarded).split(",")[-1].strip() if forwarded else ""
+    try:
+        return str(ipaddress.ip_address(last))
+    except ValueError:
+        return remote
+
+
 def guard_middleware(options, rate, db):
     """Every request: the rate limit, errors as {"error": …} (docs/class.md, "The API"), a
     bug as a 500 in one line with the trace on the terminal, and two safe headers. `db` is the
@@ -247,7 +268,7 @@ def guard_middleware(options, rate, db):
     @web.middleware
     async def guard(request, handler):
         limits.mark_head_seen(request)
-        client = request.remote or "?"
+        client = client_address(request, options.proxy)
         try:
             if not rate.allow(client):
                 raise limits.refuse(429, f"too many requests from {client}: at most "

@@ -9,8 +9,12 @@ import json
 import os
 import pathlib
 import shutil
+import socket
+import ssl
+import subprocess
 import tempfile
 import time
+import uuid
 
 import pytest
 
@@ -24,7 +28,7 @@ except ImportError as missing_package:
     pytest.skip(f"the class server's packages are missing ({missing_package}): "
                 "scripts/install-deps.sh", allow_module_level=True)
 
-from class_server import REAL, Postgres, Server, in_ci, real_csv, restamped
+from class_server import REAL, Postgres, Server, free_port, in_ci, real_csv, restamped
 
 PHONE = ["12-10-56", "12-13-01", "12-13-51"]  # the bare phone's recordings (their README)
 
@@ -182,3 +186,159 @@ def test_a_toss_held_by_one_server_is_on_the_others_projector(two_servers):
             break
     assert state == {"code": first.code, "ended": True}
     connection.close()
+
+
+class Nginx:
+    """Debian's nginx as the school's reverse proxy, started by the test in a scratch folder:
+    TLS terminated on 127.0.0.1:`port` with the school's certificate (made here by openssl
+    for 127.0.0.1), the requests sent on to the `upstreams` (the servers' https ports) in turn
+    from the address 127.0.0.2, X-Forwarded-For appended, the event streams unbuffered."""
+
+    def __init__(self, folder, port, upstreams):
+        self.folder, self.port = pathlib.Path(folder), port
+        self.folder.mkdir(parents=True, exist_ok=True)
+        self.certificate = self.folder / "school.pem"
+        subprocess.run(["openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-days", "1",
+                        "-subj", "/CN=school", "-addext", "subjectAltName=IP:127.0.0.1",
+                        "-keyout", self.folder / "school-key.pem", "-out", self.certificate],
+                       check=True, capture_output=True)
+        servers = "".join(f"server 127.0.0.1:{port};" for port in upstreams)
+        user = "user root root;" if os.geteuid() == 0 else ""
+        (self.folder / "nginx.conf").write_text(f"""
+{user} daemon off; worker_processes 1; pid {self.folder}/nginx.pid;
+error_log {self.folder}/error.log;
+events {{ worker_connections 256; }}
+http {{
+  access_log off; client_max_body_size 5m;
+  client_body_temp_path {self.folder}/body; proxy_temp_path {self.folder}/proxy;
+  fastcgi_temp_path {self.folder}/fastcgi; uwsgi_temp_path {self.folder}/uwsgi;
+  scgi_temp_path {self.folder}/scgi;
+  upstream class {{ {servers} }}
+  server {{
+    listen 127.0.0.1:{port} ssl;
+    ssl_certificate {self.certificate}; ssl_certificate_key {self.folder}/school-key.pem;
+    location / {{
+      proxy_pass https://class; proxy_bind 127.0.0.2;
+      proxy_http_version 1.1; proxy_set_header Connection "";
+      proxy_set_header Host $http_host;
+      proxy_set_header X-Forwarded-For $proxy_add_x_forwarded_for;
+      proxy_buffering off; proxy_read_timeout 1h;
+    }}
+  }}
+}}
+""")
+        self.process = subprocess.Popen(["nginx", "-c", self.folder / "nginx.conf", "-p",
+                                         self.folder], stderr=subprocess.PIPE, text=True)
+        deadline = time.monotonic() + 30
+        while True:
+            try:
+                socket.create_connection(("127.0.0.1", port), timeout=1).close()
+                break
+            except OSError:
+                assert self.process.poll() is None, self.process.stderr.read()
+                assert time.monotonic() < deadline, "nginx did not start within 30 s"
+                time.sleep(0.1)
+        self.context = ssl.create_default_context(cafile=str(self.certificate))
+
+    def request(self, method, path, body=None, token=None, source="127.0.0.3", headers=None):
+        """(status, decoded JSON or bytes) of one request through the proxy from `source`."""
+        connection = http.client.HTTPSConnection("127.0.0.1", self.port, context=self.context,
+                                                 timeout=60, source_address=(source, 0))
+        try:
+            sent = dict(headers or {})
+            if token:
+                sent["Authorization"] = f"Bearer {token}"
+            data = None if body is None else json.dumps(body).encode("utf-8")
+            if data is not None:
+                sent["Content-Type"] = "application/json"
+            connection.request(method, path, body=data, headers=sent)
+            response = connection.getresponse()
+            payload = response.read()
+            if response.getheader("Content-Type", "").startswith("application/json"):
+                payload = json.loads(payload)
+            return response.status, payload
+        finally:
+            connection.close()
+
+    def stop(self):
+        self.process.terminate()
+        try:
+            self.process.wait(timeout=30)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+
+
+@pytest.fixture
+def school(postgres, page, tmp_path):
+    """Two server processes on one PostgreSQL behind nginx (--proxy 127.0.0.2, --rate 2)."""
+    if shutil.which("nginx") is None:
+        if in_ci():
+            pytest.fail("nginx is not installed (scripts/install-deps.sh: nginx-light)")
+        pytest.skip("nginx is not installed (scripts/install-deps.sh: nginx-light)")
+    url = postgres.new_database()
+    extra = ["--proxy", "127.0.0.2", "--rate", "2"]
+    first = Server(tmp_path / "first", page, url, extra).start()
+    second = Server(tmp_path / "second", page, url, extra)
+    proxy = None
+    try:
+        second.start(new=True)
+        proxy = Nginx(tmp_path / "nginx", free_port(), [first.port, second.port])
+        yield first, second, proxy
+    finally:
+        if proxy is not None:
+            proxy.stop()
+        second.stop()
+        first.stop()
+
+
+def test_behind_nginx_the_rate_limit_sees_each_phone_and_every_toss_is_held_once(school):
+    """The school's proxy terminates TLS and sends requests to both processes in turn: a class's
+    tosses through it are each held once, on the teacher's stream of the first process; the
+    rate limit counts each phone's own address (X-Forwarded-For from the proxy alone), so one
+    phone past it leaves the other served, and a forged X-Forwarded-For sent straight to a
+    server is not believed."""
+    require_real()
+    first, second, proxy = school
+    code = first.code
+    connection, next_state = open_stream(first, code)
+    next_state()
+    tokens = []
+    for i, source in enumerate(("127.0.0.3", "127.0.0.4")):
+        status, answer = proxy.request("POST", f"/api/class/{code}/join", {"name": f"p{i}"},
+                                       source=source)
+        assert status == 201, answer
+        tokens.append(answer["token"])
+    held = set()
+    for i in range(4):  # two tosses a phone, through the proxy to either process
+        source = ("127.0.0.3", "127.0.0.4")[i % 2]
+        toss = {"toss": str(uuid.uuid4()), "name": f"t{i}", "recorded_at": "2022-05-03T12:13:01Z",
+                "csv": restamped(real_csv(PHONE[i % 3]), 40.0 * i)}
+        for _ in range(20):  # a phone's outbox: sent again after a 429, a moment later
+            status, answer = proxy.request("POST", f"/api/class/{code}/tosses", toss,
+                                           token=tokens[i % 2], source=source)
+            if status != 429:
+                break
+            time.sleep(0.5)
+        assert status == 201, answer
+        held.add(toss["toss"])
+    seen = set()
+    deadline = time.monotonic() + 60
+    while seen != held:
+        assert time.monotonic() < deadline, (seen, held)
+        state = next_state(60)
+        seen = {t["toss"] for s in state["students"] for t in s["tosses"]}
+    connection.close()
+    with psycopg.connect(first.postgres) as database:
+        assert database.execute("SELECT COUNT(*) FROM tosses").fetchone()[0] == 4
+    time.sleep(2.0)  # the buckets full again
+    # One phone past --rate 2 (6 at once) on each process: refused, naming its own address.
+    refused = [answer for status, answer in (proxy.request("GET", "/api/class/XXXXXX/pooled",
+                                                           source="127.0.0.3")
+                                             for _ in range(24)) if status == 429]
+    assert refused and "too many requests from 127.0.0.3:" in refused[-1]["error"], refused
+    assert proxy.request("GET", "/explorer.html", source="127.0.0.4")[0] == 200
+    # Straight to a server, not from the proxy: X-Forwarded-For is the client's own word.
+    refused = [answer for status, answer in (first.request(
+        "GET", "/api/class/XXXXXX/pooled", headers={"X-Forwarded-For": "127.0.0.9"})
+        for _ in range(12)) if status == 429]
+    assert refused and "too many requests from 127.0.0.1:" in refused[-1]["error"], refused
