@@ -74,33 +74,35 @@ def fit_alone(stem, text, moments=None):
 
 def others_body(own, stem, left_out=(), robust=False):
     """The body the recordings of `own` ({stem: OwnFit}) other than `stem` and `left_out` give,
-    from their own bodies' I1/I3 and I2/I3, each weighted by the inverse of its variance: their
-    weighted mean (the pooled least squares' estimate to first order), or with `robust` their
-    weighted median (which a minority of another body cannot move: docs/class.md); and how many
-    there were. (None, 0) where none has a determined body."""
+    from their own bodies' I1/I3 and I2/I3: their mean weighted by the inverse of their variance
+    (the pooled least squares' estimate to first order), or with `robust` their medoid, the own
+    body of the one whose summed distance to the others' is least (one recording one vote: a
+    minority of another body cannot move it; docs/class.md); and how many there were. (None, 0)
+    where none has a determined body."""
     others = [fit for other, fit in own.items()
               if other != stem and other not in left_out and fit.sigma is not None
               and all(s > 0 for s in fit.sigma)]
     if not others:
         return None, 0
+    if robust:
+        medoid = min(others, key=lambda candidate: sum(
+            math.dist(candidate.ratios, fit.ratios) for fit in others))
+        return tuple(medoid.ratios), len(others)
     body = []
     for i in range(2):
-        pairs = sorted((fit.ratios[i], 1.0 / fit.sigma[i] ** 2) for fit in others)
-        total = sum(w for _, w in pairs)
-        if robust:
-            running = 0.0
-            for value, w in pairs:
-                running += w
-                if running >= total / 2:
-                    break
-            body.append(value)
-        else:
-            body.append(sum(v * w for v, w in pairs) / total)
+        total = sum(1.0 / fit.sigma[i] ** 2 for fit in others)
+        body.append(sum(fit.ratios[i] / fit.sigma[i] ** 2 for fit in others) / total)
     return (body[0], body[1]), len(others)
 
 
 def percent(share):
     return f"{100 * share:.0f} %" if share >= 0.1 else f"{100 * share:.1f} %"
+
+
+def others_text(others):
+    """"the body the other recording gives", "the body the other 9 recordings give"."""
+    return ("the body the other recording gives" if others == 1
+            else f"the body the other {others} recordings give")
 
 
 def ratio_text(ratios):
@@ -117,17 +119,17 @@ def verdict(stem, own, under, body, others):
                 "why": "no other recording with a body to judge it against yet"}
     if under.error is not None or under.share is None:
         return {"outlier": True, "residual_share": None, "own_residual_share": own.share,
-                "why": f"does not fit the body the other {others} recordings give "
+                "why": f"does not fit {others_text(others)} "
                        f"({ratio_text(body)}): {under.error}"}
     outlier = under.share >= SHARE_FACTOR * own.share and under.share - own.share >= SHARE_EXCESS
     if outlier:
         why = (f"does not fit the others' body: its residual is {percent(under.share)} of |ω| "
-               f"under the body the other {others} recordings give ({ratio_text(body)}), "
+               f"under {others_text(others)} ({ratio_text(body)}), "
                f"{percent(own.share)} under its own ({ratio_text(own.ratios)}): another body, "
                "or not a free flight: leave it out")
     else:
-        why = (f"fits the others' body: residual {percent(under.share)} of |ω| under the body "
-               f"the other {others} recordings give, {percent(own.share)} under its own")
+        why = (f"fits the others' body: residual {percent(under.share)} of |ω| under "
+               f"{others_text(others)}, {percent(own.share)} under its own")
     return {"outlier": outlier, "residual_share": under.share,
             "own_residual_share": own.share, "why": why}
 
@@ -152,12 +154,14 @@ class Judge:
 
     def judge(self, files, own):
         """{stem: judgement} of the recordings `files` ({stem: csv text}) with their own fits
-        `own`: each against the body the others give, then once more against the body of the
-        others not singled out (two odd tosses must not hide each other)."""
+        `own`: each against the class's medoid body (its majority's), then, those singled out
+        there left out where they are fewer than half, against the body the others give
+        (leave-one-out: two odd tosses must not hide each other)."""
         used = set()
         judged = self._round(files, own, (), True, used)
         odd = {stem for stem, j in judged.items() if j and j["outlier"]}
-        judged = self._round(files, own, odd, False, used)
+        if 2 * len(odd) < len(judged):  # the others that fit are the most
+            judged = self._round(files, own, odd, False, used)
         self.under = {key: fit for key, fit in self.under.items() if key in used}
         return judged
 
@@ -165,7 +169,9 @@ class Judge:
         bodies = {}
         for stem in files:
             if own[stem].error is None and own[stem].share is not None:
-                bodies[stem] = others_body(own, stem, left_out, robust)
+                # The first round's body is the whole class's medoid (its majority's), the
+                # second's the others' that fit, without the recording judged.
+                bodies[stem] = others_body(own, None if robust else stem, left_out, robust)
         keys = {}
         for stem, (body, _) in bodies.items():
             if body is not None:

@@ -132,7 +132,7 @@ def test_a_recording_held_twice_is_set_aside_by_name_and_the_rest_fitted(server)
         "student, 3, 'the same again', recorded_at, '" + copy + "', 'x', 'y', received, NULL "
         "FROM tosses WHERE seq = 2")
     server.start()
-    state = judged_state(server, 3)
+    state = judged_state(server, 2)  # the two fitted; the third set aside
     pooled = state["pooled"]
     assert pooled["error"] is None and pooled["ratios"] is not None
     assert len(pooled["set_aside"]) == 1, pooled["set_aside"]
