@@ -85,7 +85,7 @@ else:
     page.write_text("<!doctype html><title>explorer</title>\n")
 extra, database = ["--rate", "10000"], None
 if a.postgres or a.classes > 1:
-    database = Postgres(work / "postgres")
+    database = Postgres(tempfile.mkdtemp(prefix="bookspin-pg-"))  # its own: the server's user
     why = database.start()
     if why:
         sys.exit(f"class_load: PostgreSQL could not start: {why}")
@@ -245,6 +245,7 @@ peak = peak_rss_mib()
 real_server.close()
 if database is not None:
     database.stop()
+    shutil.rmtree(database.folder, ignore_errors=True)
 shutil.rmtree(work, ignore_errors=True)
 
 if problems:
