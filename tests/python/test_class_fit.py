@@ -71,8 +71,8 @@ def judged_state(server, recordings, timeout=900):
     while time.monotonic() < end:
         state = server.state()
         pooled = state["pooled"]
-        if not pooled["fitting"] and pooled["recordings"] == recordings and \
-                not pooled.get("judging", True):
+        if not pooled["fitting"] and not pooled.get("judging") and \
+                (pooled["recordings"] == recordings or pooled["error"]):
             return state
         time.sleep(0.5)
     raise AssertionError(f"no judged fit of {recordings} recordings within {timeout} s: {state}")
