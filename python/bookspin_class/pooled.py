@@ -12,6 +12,7 @@ import math
 import os
 import pathlib
 import re
+import sys
 import tempfile
 import threading
 import unicodedata
@@ -32,6 +33,8 @@ def lower_priority():
     except (AttributeError, OSError):
         pass  # not Linux: the fit at the server's own priority
 
+
+RETRY_SECONDS = 1.0  # a refit that could not read the store tries again after this
 
 # The threads the classes' fits run in (the gate, ClassServer.gate, lets one at a time).
 FIT_THREADS = concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1,
@@ -258,7 +261,16 @@ class PooledFit:
         while self.dirty:
             self.dirty = False
             async with self.gate:
-                files = await asyncio.to_thread(self.files_of)  # the store read off the loop
+                try:
+                    files = await asyncio.to_thread(self.files_of)  # the store, off the loop
+                except Exception as error:  # the store lost (PostgreSQL restarting): again soon
+                    line = str(error).strip().splitlines()[0] if str(error).strip() else \
+                        type(error).__name__
+                    print(f"bookspin-class: the class's refit waits for the store: {line}",
+                          file=sys.stderr, flush=True)
+                    self.dirty = True
+                    await asyncio.sleep(RETRY_SECONDS)
+                    continue
                 self.fitting = True
                 aside = {}
                 try:

@@ -76,11 +76,9 @@ class ClassServer:
 
     # The class's pooled fit and its listeners.
     def fit_of(self, code):
-        """The class's pooled fit, fitted first when this server first meets the class."""
         if code not in self.fits:
             self.fits[code] = pooled.PooledFit(lambda: self.kept_files(code),
                                                lambda: self.notify(code), self.gate)
-            self.fits[code].request()
         return self.fits[code]
 
     def kept_files(self, code):
@@ -127,10 +125,8 @@ class ClassServer:
             self.end_streams(code)
         elif kind == "join":
             self.notify(code)
-        elif code in self.fits:
+        elif code in self.fits or self.listeners.get(code):
             self.changed(code)
-        else:
-            self.notify(code)
 
     def refresh(self):
         """Every class this server keeps a fit of or shows, refitted and shown again (the

@@ -91,7 +91,23 @@ def failure(error, description):
             or sqlstate == "25006":
         return 503, (f"the store ({description}) is read-only: nothing was stored (the teacher "
                      "makes it writable again)")
+    if lost_connection(error):
+        return 503, (f"the store ({description}) cannot be reached: nothing was stored (the "
+                     "phone sends it again)")
     return None
+
+
+def lost_connection(error):
+    """Whether `error` is psycopg's for a PostgreSQL connection lost or refused (SQLSTATE class
+    08, a server shut down or restarted 57P0x, or none: the connection closed), not for a
+    statement."""
+    try:
+        import psycopg
+    except ImportError:
+        return False
+    sqlstate = getattr(error, "sqlstate", None)
+    return isinstance(error, psycopg.OperationalError) and (
+        sqlstate is None or sqlstate.startswith(("08", "57P")))
 
 
 def token_sha256(token):
@@ -116,7 +132,7 @@ class Store:
     `marker` is the driver's paramstyle: "?" (sqlite3) or "%s" (psycopg); statements are
     written with "?" and translated."""
 
-    def __init__(self, connection, marker, description, reader=None):
+    def __init__(self, connection, marker, description, reader=None, reconnect=None):
         self.connection = connection
         self.marker = marker
         self.description = description
@@ -126,6 +142,8 @@ class Store:
         self.readers = []  # every reader connection opened, closed by close()
         self.readers_lock = threading.Lock()
         self.instance = secrets.token_hex(8)  # this server process, in its notices
+        self.reconnect = reconnect  # () -> a new writer connection, for one found broken
+        self.claimed = set()        # the classes this server serves (claim_class)
         with self.lock:
             for statement in SCHEMA:
                 self.connection.execute(statement)
@@ -179,9 +197,31 @@ class Store:
                 rows = cursor.fetchall()
                 self.connection.commit()
             except BaseException:
-                self.connection.rollback()  # PostgreSQL refuses all else in a failed transaction
+                self._rollback()  # PostgreSQL refuses all else in a failed transaction
                 raise
             return rows
+
+    def _rollback(self):
+        """Ends the writer's failed transaction. A writer found broken (PostgreSQL restarted, its
+        connection lost) is made again, with the advisory locks of the classes it served, so
+        that the next request is stored (the phone's outbox sends the refused one again); where
+        it cannot be made yet, the next failure tries again."""
+        broken = getattr(self.connection, "closed", False) or \
+            getattr(self.connection, "broken", False)
+        if not broken:
+            self.connection.rollback()
+            return
+        if self.reconnect is None:
+            return
+        try:
+            connection = self.reconnect()
+        except Exception:  # the database not back yet: one more try at the next failure
+            return
+        self.connection = connection
+        for code in sorted(self.claimed):
+            connection.execute(f"SELECT pg_try_advisory_lock({CLASS_LOCK_SPACE}, "
+                               "hashtext(%s))", (code,))
+        connection.commit()
 
     def _read(self, statement, args=()):
         """The rows of one reading statement, on this thread's reader connection (the writer's
@@ -209,7 +249,7 @@ class Store:
                     self.connection.execute(self._sql(statement), args)
                 self.connection.commit()
             except BaseException:
-                self.connection.rollback()
+                self._rollback()
                 raise
 
     # Classes.
@@ -249,8 +289,11 @@ class Store:
         holds it); on SQLite always True (the data folder's lock guards the file)."""
         if self.marker == "?":
             return True
-        return bool(self._all(f"SELECT pg_try_advisory_lock({CLASS_LOCK_SPACE}, hashtext(?))",
-                              (code,))[0][0])
+        claimed = bool(self._all(f"SELECT pg_try_advisory_lock({CLASS_LOCK_SPACE}, "
+                                 "hashtext(?))", (code,))[0][0])
+        if claimed:
+            self.claimed.add(code)
+        return claimed
 
     def delete_class(self, code):
         """Ends a class: its tosses, students and itself deleted (children first, so that no
@@ -342,7 +385,7 @@ class Store:
                     self.connection.execute(self._sql(statement), args)
                 self.connection.commit()
             except BaseException:
-                self.connection.rollback()
+                self._rollback()
                 raise
         return seq
 
@@ -450,7 +493,8 @@ def open_postgres(url):
     import psycopg
     connection = psycopg.connect(url)
     return Store(connection, "%s", "PostgreSQL " + connection.info.dbname,
-                 reader=lambda: psycopg.connect(url, autocommit=True))
+                 reader=lambda: psycopg.connect(url, autocommit=True),
+                 reconnect=lambda: psycopg.connect(url))
 
 
 def integrity_errors():

@@ -12,7 +12,6 @@ import shutil
 import socket
 import ssl
 import subprocess
-import tempfile
 import time
 import uuid
 
@@ -28,7 +27,8 @@ except ImportError as missing_package:
     pytest.skip(f"the class server's packages are missing ({missing_package}): "
                 "scripts/install-deps.sh", allow_module_level=True)
 
-from class_server import REAL, Postgres, Server, free_port, in_ci, real_csv, restamped
+from class_server import PG_BIN, REAL, Server, free_port, in_ci, real_csv, restamped
+from class_start_shared import page, postgres  # noqa: F401  (the fixtures)
 
 PHONE = ["12-10-56", "12-13-01", "12-13-51"]  # the bare phone's recordings (their README)
 
@@ -41,33 +41,19 @@ def require_real():
                     "checkout)")
 
 
-@pytest.fixture(scope="module")
-def postgres():
-    folder = pathlib.Path(tempfile.mkdtemp(prefix="bookspin-pg-"))
-    server = Postgres(folder)
-    why = server.start()
-    if why:
-        server.stop()
-        if in_ci():
-            pytest.fail(f"PostgreSQL could not start: {why}")
-        pytest.skip(f"PostgreSQL could not start: {why}")
-    yield server
-    server.stop()
-    shutil.rmtree(folder, ignore_errors=True)
-
-
-@pytest.fixture(scope="module")
-def page(tmp_path_factory):
-    path = tmp_path_factory.mktemp("page") / "explorer.html"
-    path.write_text("<!doctype html><title>bookspin explorer</title><p>lab</p>\n")
-    return path
+def database(postgres):
+    """A fresh database of the tests' PostgreSQL (class_start_shared.postgres), or skip saying
+    why it could not start (a failure under CI=true)."""
+    if isinstance(postgres, str):
+        pytest.skip(f"PostgreSQL could not start: {postgres}")
+    return postgres.new_database()
 
 
 @pytest.fixture
 def two_servers(postgres, page, tmp_path):
     """Two server processes on one PostgreSQL database: the first teaching class A, the second
     started with --new (class B); either serves the API of every class of the database."""
-    url = postgres.new_database()
+    url = database(postgres)
     first = Server(tmp_path / "first", page, url, ["--rate", "10000"]).start()
     second = Server(tmp_path / "second", page, url, ["--rate", "10000"])
     try:
@@ -275,7 +261,7 @@ def school(postgres, page, tmp_path):
         if in_ci():
             pytest.fail("nginx is not installed (scripts/install-deps.sh: nginx-light)")
         pytest.skip("nginx is not installed (scripts/install-deps.sh: nginx-light)")
-    url = postgres.new_database()
+    url = database(postgres)
     extra = ["--proxy", "127.0.0.2", "--rate", "2"]
     first = Server(tmp_path / "first", page, url, extra).start()
     second = Server(tmp_path / "second", page, url, extra)
@@ -342,3 +328,43 @@ def test_behind_nginx_the_rate_limit_sees_each_phone_and_every_toss_is_held_once
         "GET", "/api/class/XXXXXX/pooled", headers={"X-Forwarded-For": "127.0.0.9"})
         for _ in range(12)) if status == 429]
     assert refused and "too many requests from 127.0.0.1:" in refused[-1]["error"], refused
+
+
+def test_postgres_restarted_the_phones_resent_tosses_are_held_once(postgres, page, tmp_path):
+    """PostgreSQL restarted under a class: the requests meeting the lost connections are
+    refused 503 in one line (nothing stored; never a 500), the server makes its connections
+    again, and each toss a phone's outbox sends again is held once, all on the projector."""
+    require_real()
+    server = Server(tmp_path / "data", page, database(postgres), ["--rate", "10000"]).start()
+    try:
+        token = server.join("Anna")
+        texts = [restamped(real_csv(PHONE[i % 3]), 30.0 * i) for i in range(5)]
+        ids = [str(uuid.uuid4()) for _ in texts]
+        for i in range(2):
+            assert server.post_toss(token, texts[i], name=f"t{i}", toss=ids[i])[0] == 201
+        done = postgres._as_user(PG_BIN / "pg_ctl", "-D", postgres.folder / "db", "-l",
+                                 postgres.folder / "log", "-m", "fast", "-w", "-t", "60",
+                                 "restart")
+        assert done.returncode == 0, done.stderr
+        seen = []
+        for i in range(2, 5):  # each phone's outbox: the toss sent again until it is held
+            deadline = time.monotonic() + 60
+            while True:
+                status, answer = server.post_toss(token, texts[i], name=f"t{i}", toss=ids[i])
+                seen.append((status, answer))
+                if status in (200, 201) or time.monotonic() > deadline:
+                    break
+                time.sleep(0.2)
+            assert status in (200, 201), seen
+        assert all(s in (200, 201, 503) for s, _ in seen), seen
+        refused = [a for s, a in seen if s == 503]
+        assert refused and all("cannot be reached: nothing was stored" in a["error"]
+                               for a in refused), seen
+        with psycopg.connect(server.postgres) as connection:
+            held = sorted(r[0] for r in connection.execute("SELECT toss FROM tosses"))
+        assert held == sorted(ids)
+        shown = {t["toss"] for s in server.state()["students"] for t in s["tosses"]}
+        assert shown == set(ids)
+    finally:
+        server.stop()
+    assert "Traceback" not in server.process.stderr.read()
