@@ -271,6 +271,9 @@ class PooledFit:
                     self.dirty = True
                     await asyncio.sleep(RETRY_SECONDS)
                     continue
+                if not files and self.result["recordings"] == 0 and \
+                        self.result["error"] is None:
+                    continue  # nothing held, nothing shown: no refit to tell the projector of
                 self.fitting = True
                 aside = {}
                 try:
