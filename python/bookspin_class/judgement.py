@@ -171,7 +171,10 @@ class Judge:
             if own[stem].error is None and own[stem].share is not None:
                 # The first round's body is the whole class's medoid (its majority's), the
                 # second's the others' that fit, without the recording judged.
-                bodies[stem] = others_body(own, None if robust else stem, left_out, robust)
+                body, count = others_body(own, None if robust else stem, left_out, robust)
+                if robust:  # the class's body counted without the recording judged
+                    count -= own[stem].sigma is not None and stem not in left_out
+                bodies[stem] = (body, count)
         keys = {}
         for stem, (body, _) in bodies.items():
             if body is not None:

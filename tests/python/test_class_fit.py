@@ -6,7 +6,6 @@ other samples). The threshold of the judgement was decided on 12-10-56, 12-13-01
 phone) and 12-22-44, 12-38-00 (the plate) with their thinnings; the held-out recordings
 12-13-51 (phone), 12-29-59 and 12-44-51 (plate) test it here."""
 import os
-import pathlib
 import time
 import uuid
 
