@@ -354,9 +354,19 @@ class Store:
         driver's integrity error when the id is held already (two requests at once: the caller
         looks again). Raises TossRefused, holding nothing, where the student holds
         `max_tosses` already or the class holds the same samples (judged in the same
-        transaction, under the writer's lock: two requests at once cannot both pass)."""
+        transaction, after the class's row is locked: two requests at once, on one server or
+        two, cannot both pass)."""
         with self.lock:
             try:
+                # The class's row first: its lock orders every server's tosses of the class, so
+                # that the checks below see the other's commit (a refusal rolls the number back).
+                cursor = self.connection.execute(
+                    self._sql("UPDATE classes SET next_seq = next_seq + 1 WHERE code = ? "
+                              "RETURNING next_seq"), (code,))
+                rows = cursor.fetchall()
+                if not rows:  # the class ended a moment ago
+                    raise TossRefused(404, f"no class with code {code}")
+                seq = rows[0][0]
                 if max_tosses is not None and self.connection.execute(
                         self._sql("SELECT COUNT(*) FROM tosses WHERE student = ?"),
                         (student,)).fetchall()[0][0] >= max_tosses:
@@ -370,10 +380,6 @@ class Store:
                     raise TossRefused(409, f"the same recording as toss {twin[0][0]}, held "
                                            "already (the same samples; a recording is held "
                                            "once)")
-                cursor = self.connection.execute(
-                    self._sql("UPDATE classes SET next_seq = next_seq + 1 WHERE code = ? "
-                              "RETURNING next_seq"), (code,))
-                seq = cursor.fetchall()[0][0]
                 self.connection.execute(
                     self._sql("INSERT INTO tosses (toss, class_code, student, seq, name, "
                               "recorded_at, csv, csv_sha256, recording_sha256, samples_sha256, "
