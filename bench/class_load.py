@@ -14,9 +14,14 @@ moment:
     in turn, each restamped so that no two are the same recording: the fit refuses one given
     twice), timed from their POST's start to its 201 and to the stream.
 Then the seconds to the pooled fit that holds every toss; the server's CPU seconds and peak
-memory from /proc. Prints a table; run from the repository root:
+memory from /proc. With --classes C (a school: docs/performance.md, "A school at once") the
+store is a PostgreSQL the bench starts (as tests/python/class_server.py does), C classes are
+made on it (each by a server started with --new, then stopped), and the one server serves all
+of them, PHONES phones in each, the browsers in the first. Prints a table; run from the
+repository root:
 
     PYTHONPATH=build/python python3 bench/class_load.py BUILD_DIR [PHONES] [--browsers K]
+        [--classes C] [--postgres]
 
 The page is written by BUILD_DIR/bookspin explore into a scratch folder (its shell built first:
 web/build.sh BUILD_DIR); --browsers 0 needs neither it nor Chromium.
@@ -38,11 +43,16 @@ import uuid
 
 parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
 parser.add_argument("build", type=pathlib.Path, help="the build folder (bookspin, python/)")
-parser.add_argument("phones", type=int, nargs="?", default=30, help="phones in all (default 30)")
+parser.add_argument("phones", type=int, nargs="?", default=30, help="phones in all, in each class with --classes (default 30)")
 parser.add_argument("--browsers", type=int, default=3,
                     help="how many of them are headless Chromium (default 3)")
 parser.add_argument("--fit-wait", type=float, default=600,
                     help="seconds to wait for the pooled fit of every toss (default 600)")
+parser.add_argument("--classes", type=int, default=1,
+                    help="classes at once, PHONES phones each, on one server and a PostgreSQL "
+                         "the bench starts (default 1)")
+parser.add_argument("--postgres", action="store_true",
+                    help="the store a PostgreSQL the bench starts (with --classes over 1 always)")
 a = parser.parse_args()
 if not 0 <= a.browsers <= a.phones:
     parser.error(f"--browsers must be from 0 to the phones ({a.phones})")
@@ -53,7 +63,7 @@ os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
 os.environ["PYTHONPATH"] = os.pathsep.join([str(build / "python"),
                                             os.environ.get("PYTHONPATH", "")])
 sys.path[:0] = [str(source / "tests" / "python"), str(source / "tests" / "browser")]
-from class_server import REAL, real_csv, restamped  # noqa: E402
+from class_server import REAL, Postgres, Server, real_csv, restamped  # noqa: E402
 from browser import find_browser, open_browser, wait_for  # noqa: E402
 from explorer_phone_in_class_test import (SIZE, RealServer, open_class_page, readings,  # noqa: E402
                                           type_into)
@@ -73,9 +83,22 @@ if browsers:
 else:
     page.parent.mkdir(parents=True)
     page.write_text("<!doctype html><title>explorer</title>\n")
-real_server = RealServer(source, build, page, extra=["--rate", "10000"])
+extra, database = ["--rate", "10000"], None
+if a.postgres or a.classes > 1:
+    database = Postgres(tempfile.mkdtemp(prefix="bookspin-pg-"))  # its own: the server's user
+    why = database.start()
+    if why:
+        sys.exit(f"class_load: PostgreSQL could not start: {why}")
+    extra += ["--postgres", database.new_database()]
+real_server = RealServer(source, build, page, extra=extra)
 server = real_server.server
 pid = server.process.pid
+classes = [(server.code, server.key)]
+for k in range(1, a.classes):  # each class made by a teacher's server of its own, then stopped
+    teacher = Server(work / f"class-{k}", page, extra=extra).start(new=True)
+    classes.append((teacher.code, teacher.key))
+    teacher.stop()
+everyone = phones * a.classes
 ticks = os.sysconf("SC_CLK_TCK")
 
 
@@ -90,13 +113,14 @@ def peak_rss_mib():
             return int(line.split()[1]) / 1024
 
 
-seen, seen_lock, fitted_all, last_pooled = {}, threading.Lock(), threading.Event(), [None]
+seen, seen_lock, last_pooled = {}, threading.Lock(), [None]
+fitted = {code: threading.Event() for code, _ in classes}
 
 
-def listen():
+def listen(code, key):
     connection = http.client.HTTPSConnection("127.0.0.1", server.port, context=server.context)
-    connection.request("GET", f"/api/class/{server.code}/events",
-                       headers={"Authorization": f"Bearer {server.key}"})
+    connection.request("GET", f"/api/class/{code}/events",
+                       headers={"Authorization": f"Bearer {key}"})
     response = connection.getresponse()
     for line in response:
         if not line.startswith(b"data: "):
@@ -110,23 +134,24 @@ def listen():
         pooled = last_pooled[0] = state["pooled"]
         if pooled["recordings"] == phones and not pooled["fitting"] and \
                 (pooled["ratios"] or pooled["error"]):
-            fitted_all.set()
+            fitted[code].set()
             return
 
 
-listener = threading.Thread(target=listen, daemon=True)
-listener.start()
-plain = range(browsers, phones)
-tokens = {i: server.join(f"phone {i}") for i in plain}
+for code, key in classes:
+    threading.Thread(target=listen, args=(code, key), daemon=True).start()
+# The plain phones: (class, number in it), the browsers the first class's first.
+plain = [(c, i) for c in range(a.classes) for i in range(browsers if c == 0 else 0, phones)]
+tokens = {p: server.join(f"phone {p[1]}", code=classes[p[0]][0]) for p in plain}
 # Each plain phone a recording of its own: the real ones in turn, each restamped (the same
 # motion, other samples), as the fit refuses one recording given twice. The browsers' are
 # re-timed by the browser's clock: none is one of these.
-texts = {i: restamped(real_csv(names[i % len(names)]), 100.0 * i) for i in plain}
-ids = {i: str(uuid.uuid4()) for i in plain}
+texts = {p: restamped(real_csv(names[p[1] % len(names)]), 100.0 * p[1]) for p in plain}
+ids = {p: str(uuid.uuid4()) for p in plain}
 sent, answered, statuses = {}, {}, {}
 # Every phone ready (the browsers recording, their readings fed), then all at once: the plain
 # clients post and the browsers' Stop is tapped.
-go = threading.Barrier(phones + 1, timeout=900)
+go = threading.Barrier(everyone + 1, timeout=900)
 recording = threading.Barrier(max(browsers, 1), timeout=600)
 # The browsers' recordings (time in s, omega in rad/s), the real ones with the app's export.
 fed = [readings(REAL / raw[b % len(raw)] / "Raw Data.csv") for b in range(browsers)]
@@ -137,7 +162,8 @@ problems = []
 def phone(i):
     go.wait()
     sent[i] = time.time()
-    statuses[i], _ = server.post_toss(tokens[i], texts[i], name=f"toss-{i}", toss=ids[i])
+    statuses[i], _ = server.post_toss(tokens[i], texts[i], name=f"toss-{i[1]}", toss=ids[i],
+                                      code=classes[i[0]][0], timeout=600)
     answered[i] = time.time()
 
 
@@ -210,11 +236,16 @@ start = time.time()
 cpu_before = cpu_seconds()
 for thread in threads:
     thread.join()
-fitted = fitted_all.wait(timeout=a.fit_wait)
+deadline = time.monotonic() + a.fit_wait
+all_fitted = all(event.wait(timeout=max(0.0, deadline - time.monotonic()))
+                 for event in fitted.values())
 end = time.time()
 cpu = cpu_seconds() - cpu_before
 peak = peak_rss_mib()
 real_server.close()
+if database is not None:
+    database.stop()
+    shutil.rmtree(database.folder, ignore_errors=True)
 shutil.rmtree(work, ignore_errors=True)
 
 if problems:
@@ -230,8 +261,10 @@ def line(what, values):
             f"within 2 s: {sum(v <= 2.0 for v in values)}/{len(values)}")
 
 
-print(f"{phones} phones keeping a real recording each at once: {browsers} headless Chromium, "
-      f"{len(plain)} plain HTTPS clients ({len(names)} recordings of ../shared/recordings-real/ "
+school = f" in {a.classes} classes of {phones} on one PostgreSQL" if a.classes > 1 else \
+    (" (PostgreSQL)" if database else "")
+print(f"{everyone} phones keeping a real recording each at once{school}: {browsers} headless "
+      f"Chromium, {len(plain)} plain HTTPS clients ({len(names)} recordings of ../shared/recordings-real/ "
       "in turn)")
 if plain:
     print(line("plain: POST to 201", [answered[i] - sent[i] for i in plain]))
@@ -242,8 +275,10 @@ if browsers:
     print(line("browser: Stop tapped to kept", [kept_at[b] - stopped_at[b] for b in range(browsers)]))
     print(line("browser: kept to the event stream",
                [seen[browser_toss[b]] - kept_at[b] for b in range(browsers)]))
-print(f"  the moment all were released to the pooled fit of all {phones}: " +
-      (f"{end - start:.2f} s" if fitted else f"not within {a.fit_wait:g} s") +
-      (f" (the fit's error: {last_pooled[0]['error']})" if fitted and last_pooled[0]["error"] else ""))
+each = f" (each class's {phones})" if a.classes > 1 else ""
+print(f"  the moment all were released to the pooled fit of all {phones}{each}: " +
+      (f"{end - start:.2f} s" if all_fitted else f"not within {a.fit_wait:g} s") +
+      (f" (the fit's error: {last_pooled[0]['error']})" if all_fitted and last_pooled[0]["error"]
+       else ""))
 print(f"  server: {cpu:.2f} CPU seconds over {end - start:.2f} s, peak resident memory "
       f"{peak:.0f} MiB")

@@ -41,17 +41,17 @@ def qr_svg(text):
 def add_routes(app, server):
     async def projector(request):
         code = request.query.get("class", "")
-        if len(code) > 16 or not server.store.class_exists(code):
+        if len(code) > 16 or not await server.db(server.store.class_exists, code):
             return web.Response(text=GONE_PAGE.format(code=html.escape(code[:16])), status=404,
                                 content_type="text/html",
                                 headers={"Content-Security-Policy": PAGE_POLICY})
-        server.teacher(request, code)
+        await server.teacher(request, code)
         return web.FileResponse(PAGE, headers={"Content-Security-Policy": PAGE_POLICY,
                                                "Cache-Control": "no-cache"})
 
     async def qr(request):
-        code = server.class_code(request)
-        server.teacher(request, code)
+        code = await server.class_code(request)
+        await server.teacher(request, code)
         return web.Response(text=qr_svg(server.join_url(code)), content_type="image/svg+xml")
 
     async def ca(request):

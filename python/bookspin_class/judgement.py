@@ -192,6 +192,8 @@ class Judge:
     def _run(self, stems, work, keep):
         if not stems:
             return
-        with concurrent.futures.ThreadPoolExecutor(max_workers=self.workers) as pool:
+        from bookspin_class.pooled import lower_priority  # the fits yield to the tosses
+        with concurrent.futures.ThreadPoolExecutor(max_workers=self.workers,
+                                                   initializer=lower_priority) as pool:
             for stem, fit in zip(stems, pool.map(work, stems)):
                 keep(stem, fit)

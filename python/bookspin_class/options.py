@@ -3,6 +3,7 @@ and checked (a bad one: OptionError, one line naming it, nothing written), and w
 imports, checked with the line that names the missing piece and the command that puts it in
 place."""
 import argparse
+import ipaddress
 import os
 import pathlib
 
@@ -70,6 +71,10 @@ def parse_options(argv):
                         help="open the projector in this laptop's browser")
     parser.add_argument("--rate", default="20", metavar="R",
                         help="requests a second per phone, on average (default 20; 3R at once)")
+    parser.add_argument("--proxy", metavar="ADDR",
+                        help="the IP address of the school's reverse proxy: requests from it "
+                             "are the phone's named in X-Forwarded-For (docs/class.md, \"A "
+                             "school's server\")")
     parser.add_argument("--max-tosses", default="100", metavar="N",
                         help="tosses one student may have held (default 100)")
     parser.add_argument("--head-timeout", default="10", metavar="S",
@@ -112,6 +117,12 @@ def parse_options(argv):
             options.address = addresses.host_option(options.address)
         except ValueError as error:
             raise OptionError(f"--address: {error}") from None
+    if options.proxy is not None:
+        try:
+            options.proxy = ipaddress.ip_address(options.proxy.strip())
+        except ValueError:
+            raise OptionError(f"--proxy: expected the reverse proxy's IP address, got "
+                              f"'{options.proxy}'") from None
     if options.class_code is not None:
         options.class_code = "".join(options.class_code.split()).upper()
         if not options.class_code:

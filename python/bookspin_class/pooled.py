@@ -5,18 +5,41 @@ numbers are the command's to the digit. The fit runs in a worker thread (the mod
 the GIL while it fits), one at a time; tosses that arrive during a fit are fitted together by
 the next (a burst is one refit)."""
 import asyncio
+import concurrent.futures
 import datetime
 import io
 import math
+import os
 import pathlib
 import re
+import sys
 import tempfile
+import threading
 import unicodedata
 import zipfile
 
 import bookspin
 
 from bookspin_class.judgement import Judge
+
+
+def lower_priority():
+    """Lowers the calling thread's scheduling priority (Linux: a thread's own nice value, 10),
+    so that the fits yield the cores to the event loop and the tosses' reading: a toss reaches
+    the projector within its 2 s while the classes are refitted (docs/performance.md, "A
+    lecture hall and a school")."""
+    try:
+        os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), 10)
+    except (AttributeError, OSError):
+        pass  # not Linux: the fit at the server's own priority
+
+
+RETRY_SECONDS = 1.0  # a refit that could not read the store tries again after this
+
+# The threads the classes' fits run in (the gate, ClassServer.gate, lets one at a time).
+FIT_THREADS = concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1,
+                                                    thread_name_prefix="bookspin-class-fit",
+                                                    initializer=lower_priority)
 
 
 def file_stem(student_name, seq):
@@ -209,9 +232,10 @@ def add_alone(flights, own):
 
 class PooledFit:
     """One class's pooled fit, kept up to date: request() after each change; the fit runs in a
-    thread, one at a time for the whole server (`gate`), and `on_done` is called (on the event
-    loop) with each result: first the pooled body (result["judging"] true), then each toss's
-    judgement against the others' body (judgements, docs/class.md)."""
+    thread at a lower priority than the tosses' path, one at a time for the class and as many
+    classes' at once as `gate` lets, and `on_done` is called (on the event loop) with each result: first the
+    pooled body (result["judging"] true), then each toss's judgement against the others' body
+    (judgements, docs/class.md)."""
 
     def __init__(self, files_of, on_done, gate, judge=None):
         self.files_of = files_of  # () -> {stem: csv text}, the tosses not left out
@@ -237,7 +261,19 @@ class PooledFit:
         while self.dirty:
             self.dirty = False
             async with self.gate:
-                files = self.files_of()
+                try:
+                    files = await asyncio.to_thread(self.files_of)  # the store, off the loop
+                except Exception as error:  # the store lost (PostgreSQL restarting): again soon
+                    line = str(error).strip().splitlines()[0] if str(error).strip() else \
+                        type(error).__name__
+                    print(f"bookspin-class: the class's refit waits for the store: {line}",
+                          file=sys.stderr, flush=True)
+                    self.dirty = True
+                    await asyncio.sleep(RETRY_SECONDS)
+                    continue
+                if not files and self.result["recordings"] == 0 and \
+                        self.result["error"] is None:
+                    continue  # nothing held, nothing shown: no refit to tell the projector of
                 self.fitting = True
                 aside = {}
                 try:
@@ -247,8 +283,8 @@ class PooledFit:
                         error = None
                     else:
                         try:
-                            pooled, flights, aside = await asyncio.to_thread(
-                                fit_class, files, self.judge)
+                            pooled, flights, aside = await asyncio.get_running_loop(
+                            ).run_in_executor(FIT_THREADS, fit_class, files, self.judge)
                             error = None
                         except bookspin.Error as failure:
                             pooled, flights = {"tosses": 0, "recordings": len(files),
@@ -272,7 +308,8 @@ class PooledFit:
                 if not pooled["judging"]:
                     continue
                 # The judgements: each recording against the body the others give.
-                own, judged = await asyncio.to_thread(self._judge, kept)
+                own, judged = await asyncio.get_running_loop().run_in_executor(
+                    FIT_THREADS, self._judge, kept)
                 add_alone(flights, own)
                 self.judgements = judged
                 self.result = dict(pooled, judging=False)

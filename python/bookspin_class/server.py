@@ -216,7 +216,7 @@ async def start(options, folder):
         server.integrity_errors = store.integrity_errors()
         server.max_tosses = options.max_tosses
         server.taught = code
-        app = web.Application(middlewares=[guard_middleware(options, rate, db.description)],
+        app = web.Application(middlewares=[guard_middleware(options, rate, db)],
                               client_max_size=limits.MAX_BODY)
         routes.add_routes(app, server)
         runner = limits.GuardedRunner(app, keepalive_timeout=15.0, access_log=None)
@@ -241,16 +241,38 @@ async def start(options, folder):
     return runner, server, (code, started, address, others, unreachable)
 
 
-def guard_middleware(options, rate, store_description):
+def client_address(request, proxy):
+    """The phone's address, for the rate limit: the connection's, or where the connection is
+    the school's reverse proxy's (--proxy) the last address of X-Forwarded-For (the one the
+    proxy appended: what came before it the phone may have written itself). A forwarded header
+    from any other address is ignored."""
+    remote = request.remote or "?"
+    if proxy is None:
+        return remote
+    try:
+        if ipaddress.ip_address(remote) != proxy:
+            return remote
+    except ValueError:
+        return remote
+    forwarded = request.headers.getall("X-Forwarded-For", [])
+    last = ",".join(forwarded).split(",")[-1].strip() if forwarded else ""
+    try:
+        return str(ipaddress.ip_address(last))
+    except ValueError:
+        return remote
+
+
+def guard_middleware(options, rate, db):
     """Every request: the rate limit, errors as {"error": …} (docs/class.md, "The API"), a
-    bug as a 500 in one line with the trace on the terminal, and two safe headers."""
+    bug as a 500 in one line with the trace on the terminal, and two safe headers. `db` is the
+    store, whose errors of the machine's state are named (store.failure)."""
     from aiohttp import web
     from bookspin_class import limits, store
 
     @web.middleware
     async def guard(request, handler):
         limits.mark_head_seen(request)
-        client = request.remote or "?"
+        client = client_address(request, options.proxy)
         try:
             if not rate.allow(client):
                 raise limits.refuse(429, f"too many requests from {client}: at most "
@@ -270,7 +292,7 @@ def guard_middleware(options, rate, store_description):
         except Exception as error:
             # The machine's state (a full disk, a read-only store) in its own words, 507/503;
             # a bug or a store gone: 500 in one line, the trace on the terminal.
-            failed = store.failure(error, store_description)
+            failed = store.failure(error, db.description)
             if failed is not None:
                 print(f"{PROGRAM}: {request.method} {request.path[:80]}: {failed[1]} ({error})",
                       file=sys.stderr, flush=True)
@@ -339,15 +361,23 @@ async def serve(options, stop):
     async def daily():
         while True:
             await asyncio.sleep(86400.0)
-            for old in server.store.delete_older_than(keep_seconds):
+            for old in await server.db(server.store.delete_older_than, keep_seconds):
                 server.fits.pop(old, None)
                 print(f"{PROGRAM}: deleted class {old}: older than {options.keep_days:g} "
                       "days", flush=True)
 
     retention = asyncio.get_running_loop().create_task(daily())
+    listening = None
+    if options.postgres:  # the other servers' changes on this database (notices.py)
+        from bookspin_class import notices
+        listening = asyncio.get_running_loop().create_task(notices.listen(
+            options.postgres, server.store.instance, server.remote_change, server.refresh))
     await stop.wait()
     retention.cancel()
+    if listening is not None:
+        listening.cancel()
     await runner.cleanup()
+    server.close()
     server.store.close()
 
 

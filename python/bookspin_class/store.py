@@ -4,6 +4,7 @@ statements for both. Each write is committed before it returns, so a toss a phon
 held survives a SIGKILL of the server. Times are seconds since the epoch (UTC)."""
 import hashlib
 import os
+import secrets
 import sqlite3
 import threading
 import time
@@ -12,7 +13,8 @@ SCHEMA = [
     """CREATE TABLE IF NOT EXISTS classes (
          code TEXT PRIMARY KEY,
          teacher_key TEXT NOT NULL UNIQUE,
-         created DOUBLE PRECISION NOT NULL)""",
+         created DOUBLE PRECISION NOT NULL,
+         next_seq INTEGER NOT NULL DEFAULT 0)""",
     """CREATE TABLE IF NOT EXISTS students (
          id TEXT PRIMARY KEY,
          class_code TEXT NOT NULL REFERENCES classes(code) ON DELETE CASCADE,
@@ -35,6 +37,11 @@ SCHEMA = [
          UNIQUE (class_code, seq))""",
 ]
 
+
+# The PostgreSQL channel a server tells the others of a class's change on (NOTIFY, in the
+# change's own transaction; docs/class.md, "A school's server"): "KIND CODE SENDER", KIND one
+# of join, toss, exclude, end; SENDER the Store's `instance`.
+CHANNEL = "bookspin_class"
 
 # The first key of the PostgreSQL advisory locks that mark a class as served (claim_class),
 # the second the hash of its code: "bksc" in ASCII.
@@ -84,7 +91,23 @@ def failure(error, description):
             or sqlstate == "25006":
         return 503, (f"the store ({description}) is read-only: nothing was stored (the teacher "
                      "makes it writable again)")
+    if lost_connection(error):
+        return 503, (f"the store ({description}) cannot be reached: nothing was stored (the "
+                     "phone sends it again)")
     return None
+
+
+def lost_connection(error):
+    """Whether `error` is psycopg's for a PostgreSQL connection lost or refused (SQLSTATE class
+    08, a server shut down or restarted 57P0x, or none: the connection closed), not for a
+    statement."""
+    try:
+        import psycopg
+    except ImportError:
+        return False
+    sqlstate = getattr(error, "sqlstate", None)
+    return isinstance(error, psycopg.OperationalError) and (
+        sqlstate is None or sqlstate.startswith(("08", "57P")))
 
 
 def token_sha256(token):
@@ -92,21 +115,41 @@ def token_sha256(token):
     return hashlib.sha256(token.encode("utf-8")).hexdigest()
 
 
-class Store:
-    """One connection, used under a lock (the server's handlers call it from the event loop's
-    thread; the retention timer too). `paramstyle` is the driver's: "?" (sqlite3) or "%s"
-    (psycopg); statements are written with "?" and translated."""
+class TossRefused(Exception):
+    """add_toss would not hold the toss: `status` and the one line to answer (403 the student
+    holds max_tosses; 409 the same samples as a held toss)."""
 
-    def __init__(self, connection, marker, description):
+    def __init__(self, status, line):
+        super().__init__(line)
+        self.status = status
+
+
+class Store:
+    """One writer connection, used under a lock, and a reader connection per thread that reads
+    (`reader`: () -> a new connection; SQLite's WAL and PostgreSQL's MVCC let them read while
+    the writer writes, each read seeing every commit made before it). The server calls it from
+    its store's worker threads, off the event loop (docs/class.md, "A school's server").
+    `marker` is the driver's paramstyle: "?" (sqlite3) or "%s" (psycopg); statements are
+    written with "?" and translated."""
+
+    def __init__(self, connection, marker, description, reader=None, reconnect=None):
         self.connection = connection
         self.marker = marker
         self.description = description
         self.lock = threading.Lock()
+        self.reader = reader
+        self.local = threading.local()
+        self.readers = []  # every reader connection opened, closed by close()
+        self.readers_lock = threading.Lock()
+        self.instance = secrets.token_hex(8)  # this server process, in its notices
+        self.reconnect = reconnect  # () -> a new writer connection, for one found broken
+        self.claimed = set()        # the classes this server serves (claim_class)
         with self.lock:
             for statement in SCHEMA:
                 self.connection.execute(statement)
             self.connection.commit()
         self._add_samples_sha256()
+        self._add_next_seq()
 
     def _add_samples_sha256(self):
         """A store made before tosses had samples_sha256 gets the column, and every toss its
@@ -120,6 +163,30 @@ class Store:
             self._write([("UPDATE tosses SET samples_sha256 = ? WHERE toss = ?",
                           (read_samples_sha256(csv), toss)) for toss, csv in missing])
 
+    def _add_next_seq(self):
+        """A store made before the class's counter of tosses (classes.next_seq, add_toss) gets
+        the column, each class's set to the highest number its tosses hold. Two servers starting
+        at once on one PostgreSQL: the second's ALTER fails on the column the first added."""
+        try:
+            self._all("SELECT next_seq FROM classes WHERE 1 = 0")
+            return
+        except Exception:  # the drivers' "no such column" (sqlite3 and psycopg differ)
+            pass
+        try:
+            self._write([("ALTER TABLE classes ADD COLUMN next_seq INTEGER NOT NULL DEFAULT 0", ()),
+                         ("UPDATE classes SET next_seq = (SELECT COALESCE(MAX(seq), 0) FROM "
+                          "tosses WHERE tosses.class_code = classes.code)", ())])
+        except Exception:
+            self._all("SELECT next_seq FROM classes WHERE 1 = 0")  # added by the other server
+
+    def notice(self, kind, code):
+        """The statement that tells the other servers on this PostgreSQL of a change of class
+        `code` (CHANNEL), to run in the change's transaction (delivered at its commit, never for
+        a change rolled back); none on SQLite, whose one server is the only one."""
+        if self.marker == "?":
+            return []
+        return [("SELECT pg_notify(?, ?)", (CHANNEL, f"{kind} {code} {self.instance}"))]
+
     def _sql(self, statement):
         return statement if self.marker == "?" else statement.replace("?", "%s")
 
@@ -130,9 +197,49 @@ class Store:
                 rows = cursor.fetchall()
                 self.connection.commit()
             except BaseException:
-                self.connection.rollback()  # PostgreSQL refuses all else in a failed transaction
+                self._rollback()  # PostgreSQL refuses all else in a failed transaction
                 raise
             return rows
+
+    def _rollback(self):
+        """Ends the writer's failed transaction. A writer found broken (PostgreSQL restarted, its
+        connection lost) is made again, with the advisory locks of the classes it served, so
+        that the next request is stored (the phone's outbox sends the refused one again); where
+        it cannot be made yet, the next failure tries again."""
+        broken = getattr(self.connection, "closed", False) or \
+            getattr(self.connection, "broken", False)
+        if not broken:
+            self.connection.rollback()
+            return
+        if self.reconnect is None:
+            return
+        try:
+            connection = self.reconnect()
+        except Exception:  # the database not back yet: one more try at the next failure
+            return
+        self.connection = connection
+        for code in sorted(self.claimed):
+            connection.execute(f"SELECT pg_try_advisory_lock({CLASS_LOCK_SPACE}, "
+                               "hashtext(%s))", (code,))
+        connection.commit()
+
+    def _read(self, statement, args=()):
+        """The rows of one reading statement, on this thread's reader connection (the writer's
+        where there is no reader). A reader found broken (PostgreSQL restarted) is dropped and
+        the next read opens another."""
+        if self.reader is None:
+            return self._all(statement, args)
+        connection = getattr(self.local, "connection", None)
+        if connection is None:
+            connection = self.local.connection = self.reader()
+            with self.readers_lock:
+                self.readers.append(connection)
+        try:
+            return connection.execute(self._sql(statement), args).fetchall()
+        except BaseException:
+            if getattr(connection, "closed", False) or getattr(connection, "broken", False):
+                self.local.connection = None
+            raise
 
     def _write(self, statements):
         """Runs (statement, args) pairs as one transaction, committed before it returns."""
@@ -142,7 +249,7 @@ class Store:
                     self.connection.execute(self._sql(statement), args)
                 self.connection.commit()
             except BaseException:
-                self.connection.rollback()
+                self._rollback()
                 raise
 
     # Classes.
@@ -151,27 +258,27 @@ class Store:
                       (code, teacher_key, time.time()))])
 
     def latest_class(self):
-        rows = self._all("SELECT code, teacher_key FROM classes ORDER BY created DESC LIMIT 1")
+        rows = self._read("SELECT code, teacher_key FROM classes ORDER BY created DESC LIMIT 1")
         return rows[0] if rows else None
 
     def class_exists(self, code):
-        return bool(self._all("SELECT 1 FROM classes WHERE code = ?", (code,)))
+        return bool(self._read("SELECT 1 FROM classes WHERE code = ?", (code,)))
 
     def class_of_key(self, key):
-        rows = self._all("SELECT code FROM classes WHERE teacher_key = ?", (key,))
+        rows = self._read("SELECT code FROM classes WHERE teacher_key = ?", (key,))
         return rows[0][0] if rows else None
 
     def teacher_key(self, code):
-        rows = self._all("SELECT teacher_key FROM classes WHERE code = ?", (code,))
+        rows = self._read("SELECT teacher_key FROM classes WHERE code = ?", (code,))
         return rows[0][0] if rows else None
 
     def class_codes(self):
-        return [r[0] for r in self._all("SELECT code FROM classes ORDER BY created")]
+        return [r[0] for r in self._read("SELECT code FROM classes ORDER BY created")]
 
     def class_list(self):
         """Every class in the store, oldest first: (code, created in seconds since the epoch,
         students, tosses)."""
-        return self._all("SELECT c.code, c.created, "
+        return self._read("SELECT c.code, c.created, "
                          "(SELECT COUNT(*) FROM students s WHERE s.class_code = c.code), "
                          "(SELECT COUNT(*) FROM tosses t WHERE t.class_code = c.code) "
                          "FROM classes c ORDER BY c.created, c.code")
@@ -182,15 +289,19 @@ class Store:
         holds it); on SQLite always True (the data folder's lock guards the file)."""
         if self.marker == "?":
             return True
-        return bool(self._all(f"SELECT pg_try_advisory_lock({CLASS_LOCK_SPACE}, hashtext(?))",
-                              (code,))[0][0])
+        claimed = bool(self._all(f"SELECT pg_try_advisory_lock({CLASS_LOCK_SPACE}, "
+                                 "hashtext(?))", (code,))[0][0])
+        if claimed:
+            self.claimed.add(code)
+        return claimed
 
     def delete_class(self, code):
         """Ends a class: its tosses, students and itself deleted (children first, so that no
         foreign-key setting of the database is relied on)."""
         self._write([("DELETE FROM tosses WHERE class_code = ?", (code,)),
                      ("DELETE FROM students WHERE class_code = ?", (code,)),
-                     ("DELETE FROM classes WHERE code = ?", (code,))])
+                     ("DELETE FROM classes WHERE code = ?", (code,))] +
+                    self.notice("end", code))
 
     def delete_older_than(self, seconds):
         """Deletes every class created more than `seconds` ago with all its data; returns their
@@ -205,45 +316,70 @@ class Store:
     def add_student(self, student, code, token, name):
         self._write([("INSERT INTO students (id, class_code, token_sha256, name, joined) "
                       "VALUES (?, ?, ?, ?, ?)", (student, code, token_sha256(token), name,
-                                                 time.time()))])
+                                                 time.time()))] + self.notice("join", code))
 
     def student_of_token(self, token):
         """(id, class code, name) of the student whose token this is, or None."""
-        rows = self._all("SELECT id, class_code, name FROM students WHERE token_sha256 = ?",
+        rows = self._read("SELECT id, class_code, name FROM students WHERE token_sha256 = ?",
                          (token_sha256(token),))
         return rows[0] if rows else None
 
     def students(self, code):
-        return self._all("SELECT id, name FROM students WHERE class_code = ? ORDER BY joined, id",
+        return self._read("SELECT id, name FROM students WHERE class_code = ? ORDER BY joined, id",
                          (code,))
 
     # Tosses.
     def toss(self, toss):
         """(class code, student, csv_sha256, name, recorded_at) of a held toss id, or None."""
-        rows = self._all("SELECT class_code, student, csv_sha256, name, recorded_at FROM tosses "
+        rows = self._read("SELECT class_code, student, csv_sha256, name, recorded_at FROM tosses "
                          "WHERE toss = ?", (toss,))
         return rows[0] if rows else None
 
     def student_toss_count(self, student):
-        return self._all("SELECT COUNT(*) FROM tosses WHERE student = ?", (student,))[0][0]
+        return self._read("SELECT COUNT(*) FROM tosses WHERE student = ?", (student,))[0][0]
 
     def toss_of_samples(self, code, samples_sha256):
         """The id of the class's toss whose samples have this samples_sha256, or None."""
-        rows = self._all("SELECT toss FROM tosses WHERE class_code = ? AND samples_sha256 = ? "
+        rows = self._read("SELECT toss FROM tosses WHERE class_code = ? AND samples_sha256 = ? "
                          "ORDER BY seq", (code, samples_sha256))
         return rows[0][0] if rows else None
 
-    def add_toss(self, toss, code, student, name, recorded_at, csv, csv_sha256, samples):
+    def add_toss(self, toss, code, student, name, recorded_at, csv, csv_sha256, samples,
+                 max_tosses=None):
         """Holds a toss, committed before it returns; its seq is the class's next number (the
-        file name the pooled set gives it); `samples` is its samples_sha256. Raises the
+        file name the pooled set gives it), allotted by the database: the class's counter
+        (classes.next_seq) raised in the same transaction as the toss's INSERT, so that two
+        servers on one PostgreSQL never give one number twice (the row's lock orders them; a
+        read-then-write of MAX(seq) raced). `samples` is its samples_sha256. Raises the
         driver's integrity error when the id is held already (two requests at once: the caller
-        looks again)."""
+        looks again). Raises TossRefused, holding nothing, where the student holds
+        `max_tosses` already or the class holds the same samples (judged in the same
+        transaction, after the class's row is locked: two requests at once, on one server or
+        two, cannot both pass)."""
         with self.lock:
             try:
+                # The class's row first: its lock orders every server's tosses of the class, so
+                # that the checks below see the other's commit (a refusal rolls the number back).
                 cursor = self.connection.execute(
-                    self._sql("SELECT COALESCE(MAX(seq), 0) + 1 FROM tosses WHERE class_code = ?"),
-                    (code,))
-                seq = cursor.fetchall()[0][0]
+                    self._sql("UPDATE classes SET next_seq = next_seq + 1 WHERE code = ? "
+                              "RETURNING next_seq"), (code,))
+                rows = cursor.fetchall()
+                if not rows:  # the class ended a moment ago
+                    raise TossRefused(404, f"no class with code {code}")
+                seq = rows[0][0]
+                if max_tosses is not None and self.connection.execute(
+                        self._sql("SELECT COUNT(*) FROM tosses WHERE student = ?"),
+                        (student,)).fetchall()[0][0] >= max_tosses:
+                    raise TossRefused(403, f"this student holds {max_tosses} tosses, the most "
+                                           "one student may (--max-tosses)")
+                twin = self.connection.execute(
+                    self._sql("SELECT toss FROM tosses WHERE class_code = ? AND samples_sha256 "
+                              "= ? AND toss <> ? ORDER BY seq LIMIT 1"),
+                    (code, samples, toss)).fetchall()
+                if twin:  # the pooled fit refuses the same samples given twice
+                    raise TossRefused(409, f"the same recording as toss {twin[0][0]}, held "
+                                           "already (the same samples; a recording is held "
+                                           "once)")
                 self.connection.execute(
                     self._sql("INSERT INTO tosses (toss, class_code, student, seq, name, "
                               "recorded_at, csv, csv_sha256, recording_sha256, samples_sha256, "
@@ -251,9 +387,11 @@ class Store:
                               "NULL)"),
                     (toss, code, student, seq, name, recorded_at, csv, csv_sha256,
                      recording_sha256(csv), samples, time.time()))
+                for statement, args in self.notice("toss", code):
+                    self.connection.execute(self._sql(statement), args)
                 self.connection.commit()
             except BaseException:
-                self.connection.rollback()
+                self._rollback()
                 raise
         return seq
 
@@ -263,12 +401,12 @@ class Store:
         if not self._all("SELECT 1 FROM tosses WHERE class_code = ? AND toss = ?", (code, toss)):
             return False
         self._write([("UPDATE tosses SET excluded = ? WHERE class_code = ? AND toss = ?",
-                      (reason, code, toss))])
+                      (reason, code, toss))] + self.notice("exclude", code))
         return True
 
     def tosses(self, code):
         """Every toss of a class, oldest first, as dicts (without the CSV text)."""
-        rows = self._all("SELECT t.toss, t.student, s.name, t.seq, t.name, t.recorded_at, "
+        rows = self._read("SELECT t.toss, t.student, s.name, t.seq, t.name, t.recorded_at, "
                          "t.received, t.excluded FROM tosses t JOIN students s "
                          "ON s.id = t.student WHERE t.class_code = ? ORDER BY t.seq", (code,))
         keys = ("toss", "student", "student_name", "seq", "name", "recorded_at", "received",
@@ -277,12 +415,12 @@ class Store:
 
     def csv_texts(self, code):
         """{seq: csv text} of the class's tosses that are not left out."""
-        return dict(self._all("SELECT seq, csv FROM tosses WHERE class_code = ? AND excluded "
+        return dict(self._read("SELECT seq, csv FROM tosses WHERE class_code = ? AND excluded "
                               "IS NULL", (code,)))
 
     def left_out(self, code):
         """{seq: (csv text, the teacher's reason)} of the class's tosses left out."""
-        return {seq: (csv, reason) for seq, csv, reason in self._all(
+        return {seq: (csv, reason) for seq, csv, reason in self._read(
             "SELECT seq, csv, excluded FROM tosses WHERE class_code = ? AND excluded IS NOT "
             "NULL", (code,))}
 
@@ -292,6 +430,10 @@ class Store:
                 for table in ("classes", "students", "tosses")}
 
     def close(self):
+        with self.readers_lock:
+            for reader in self.readers:
+                reader.close()
+            self.readers = []
         with self.lock:
             self.connection.close()
 
@@ -308,7 +450,7 @@ def open_sqlite(path):
         connection.execute("PRAGMA synchronous=FULL")
         connection.execute("PRAGMA foreign_keys=ON")
         connection.isolation_level = ""  # transactions begin implicitly again; commit() ends them
-        store = Store(connection, "?", f"SQLite {path}")
+        store = Store(connection, "?", f"SQLite {path}", reader=lambda: sqlite_reader(path))
     except sqlite3.Error as error:
         if connection is not None:
             connection.close()
@@ -325,6 +467,14 @@ def open_sqlite(path):
         if os.path.exists(f"{path}{suffix}"):
             os.chmod(f"{path}{suffix}", 0o600)
     return store
+
+
+def sqlite_reader(path):
+    """A connection that reads the SQLite store at `path` beside the writer (WAL: readers do
+    not wait for it), each statement its own transaction."""
+    connection = sqlite3.connect(str(path), check_same_thread=False, isolation_level=None)
+    connection.execute("PRAGMA query_only=ON")
+    return connection
 
 
 def read_only_reason(path):
@@ -348,7 +498,9 @@ def open_postgres(url):
     postgresql:///DB?host=/socket/dir), the same schema."""
     import psycopg
     connection = psycopg.connect(url)
-    return Store(connection, "%s", "PostgreSQL " + connection.info.dbname)
+    return Store(connection, "%s", "PostgreSQL " + connection.info.dbname,
+                 reader=lambda: psycopg.connect(url, autocommit=True),
+                 reconnect=lambda: psycopg.connect(url))
 
 
 def integrity_errors():

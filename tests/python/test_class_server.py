@@ -364,7 +364,7 @@ def test_bad_options_exit_2_in_one_line_naming_the_option_and_write_nothing(tmp_
                                                        "--page"),
              (["--postgres", "mysql://x"], "--postgres"), (["--rate", "0"], "--rate"),
              (["--max-tosses", "0"], "--max-tosses"), (["--head-timeout", "x"], "--head-timeout"),
-             (["--bogus"], "--bogus")]
+             (["--proxy", "nginx.local"], "--proxy"), (["--bogus"], "--bogus")]
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join([str(pathlib.Path(__file__).resolve().parents[2] /
                                              "python"), env.get("PYTHONPATH", "")])
