@@ -73,8 +73,12 @@ TEST(RigidRestart, EachStagesNoRigidBodyLiesWithinTheOneBeforeIt) {
   for (double i1 = 0.001; i1 < 1.0; i1 *= 1.05)
     for (double i2 = i1; i2 <= 1.0; i2 += 0.01) {
       const Eigen::Vector3d m(i1, i2, 1.0);
-      if (far_from_rigid(m)) EXPECT_TRUE(flagged_moments(m)) << m.transpose();
-      if (flagged_moments(m)) EXPECT_TRUE(suspect_moments(m)) << m.transpose();
+      if (far_from_rigid(m)) {
+        EXPECT_TRUE(flagged_moments(m)) << m.transpose();
+      }
+      if (flagged_moments(m)) {
+        EXPECT_TRUE(suspect_moments(m)) << m.transpose();
+      }
       EXPECT_EQ(needle(m), i1 < kNeedle);
     }
   EXPECT_FALSE(flagged_moments(Eigen::Vector3d(0.22, 0.80, 1.0)));   // a bare phone, on the bound
