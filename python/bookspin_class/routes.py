@@ -153,13 +153,20 @@ class ClassServer:
                 "half_period_measured": main and main["half_period_measured"],
                 "half_period_predicted": main and main["half_period_predicted"],
                 "sigma": main and main["sigma"], "within": main and main["within"],
+                # Why the line has no prediction, no ± or no verdict, and the recording's own
+                # fit's T/2 beside the class's (docs/class.md, "The class's T/2 and the
+                # phone's own"): what a student's phone shows under its tosses.
+                "not_predicted": main and main.get("not_predicted"),
+                "prediction_interval": main and main.get("prediction_interval"),
+                "half_period_measured_alone": main and main.get("half_period_measured_alone"),
                 "flights": flights, "judgement": fit.judgements.get(stem)}
 
     def pooled_view(self, fit):
         result = fit.result
         return {"tosses": result["tosses"], "recordings": result["recordings"],
                 "ratios": result["ratios"], "sigma": result["sigma"],
-                "updated": result["updated"]}
+                "updated": result["updated"], "error": result.get("error"),
+                "error_summary": result.get("error_summary")}
 
     def class_state(self, code, fit):
         """The whole class as the projector shows it, with its pooled fit `fit` (fit_of(code),

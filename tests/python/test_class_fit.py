@@ -194,9 +194,26 @@ def test_each_flight_carries_its_recordings_own_fits_half_period(server, tmp_pat
     """The class's T/2 is measured about the class's body's axis, the phone's own fit about its
     toss's alone: each flight carries both, the second `bookspin fit FILE`'s to the digit."""
     require_real()
+    tokens = {}
     for name in ("12-10-56", "12-13-01", "12-13-51"):
-        post(server, server.join(f"student {name}"), real_csv(name), name)
+        tokens[name] = server.join(f"student {name}")
+        post(server, tokens[name], real_csv(name), name)
     state = judged_state(server, 3)
+    # The student's own read (`/me`, what the phone shows): the line's own fit's T/2, and why a
+    # prediction has no ± or no verdict (before: neither, "–" with no reason).
+    for name, token in tokens.items():
+        status, me = server.request("GET", f"/api/class/{server.code}/me", token=token)
+        assert status == 200, me
+        (mine,) = me["tosses"]
+        shown = tosses_of(state)[name]
+        if mine["half_period_measured"] is not None:
+            line = next(f for f in shown["flights"] if f["half_period_measured"] is not None)
+            assert line["half_period_measured_alone"] is not None
+            assert mine["half_period_measured_alone"] == line["half_period_measured_alone"]
+        if mine["half_period_predicted"] is None:
+            assert mine["not_predicted"], mine
+        elif mine["sigma"] is None:
+            assert mine["prediction_interval"].startswith("uncalibrated"), mine
     compared = 0
     for toss in tosses_of(state).values():
         path = tmp_path / toss["file"]
@@ -220,7 +237,8 @@ def test_a_failed_fit_tells_the_student_what_to_do_in_one_sentence(server):
     require_real()
     lines = real_csv(HELD_OUT_PHONE).splitlines()
     held = "\n".join(lines[:201]) + "\n"
-    post(server, server.join("Anna"), held, "in the hand")
+    anna = server.join("Anna")
+    post(server, anna, held, "in the hand")
     state = judged_state(server, 1)
     pooled = state["pooled"]
     assert pooled["ratios"] is None and "no free flight found" in pooled["error"]
@@ -229,3 +247,7 @@ def test_a_failed_fit_tells_the_student_what_to_do_in_one_sentence(server):
     assert summary.count(". ") == 0 and len(summary) < 200, summary
     assert "2 rad/s" in summary and "0.3 s" in summary, summary
     assert tosses_of(state)["in the hand"]["judgement"]["why"] == summary
+    # The student reads the same sentence and the detail (`/me`, the phone's failure box).
+    status, me = server.request("GET", f"/api/class/{server.code}/me", token=anna)
+    assert status == 200 and me["pooled"]["error_summary"] == summary, me["pooled"]
+    assert me["pooled"]["error"] == pooled["error"]

@@ -345,8 +345,17 @@ export class ClassLink {
       const predicted = typeof t.half_period_predicted === 'number'
         ? (typeof t.sigma === 'number' ? plusMinus(t.half_period_predicted, 2 * t.sigma) : seconds(t.half_period_predicted))
         : 'not predicted';
-      const within = t.excluded ? `left out: ${t.excluded}` : t.within === true ? 'yes' : t.within === false ? 'no' : '–';
-      return `<tr><td class="words" data-label="recording">${html(t.name)}</td><td data-label="T/2 measured (s)">${html(seconds(t.half_period_measured))}</td>` +
+      // No verdict: the class's reason (no prediction, or no ± yet while the class holds too
+      // few other tosses); the class's T/2 and this phone's own fit's, where they differ, side
+      // by side (docs/class.md, "The class's T/2 and the phone's own").
+      const why = typeof t.not_predicted === 'string' && t.half_period_predicted === null ? t.not_predicted
+        : typeof t.prediction_interval === 'string' && typeof t.sigma !== 'number' ? t.prediction_interval : '';
+      const within = t.excluded ? `left out: ${t.excluded}` : t.within === true ? 'yes' : t.within === false ? 'no'
+        : why ? `– (${why})` : '–';
+      const alone = typeof t.half_period_measured_alone === 'number' && typeof t.half_period_measured === 'number' &&
+        seconds(t.half_period_measured_alone) !== seconds(t.half_period_measured)
+        ? ` (this phone's own fit: ${seconds(t.half_period_measured_alone)}, about its own body's axis)` : '';
+      return `<tr><td class="words" data-label="recording">${html(t.name)}</td><td data-label="T/2 measured (s)">${html(seconds(t.half_period_measured) + alone)}</td>` +
         `<td data-label="T/2 predicted ± 2σ (s)">${html(predicted)}</td><td class="words" data-label="within 2σ">${html(within)}</td></tr>`;
     });
     $('classMine').innerHTML = `<caption>Your tosses the class holds (${mine.length}): T/2 measured against predicted from the others</caption>` +
