@@ -2,6 +2,7 @@
 
 #include "analysis/scenario_file.hpp"
 #include "common/errors.hpp"
+#include "common/file_name.hpp"
 #include "common/text_file.hpp"
 
 namespace bookspin::jobs {
@@ -55,10 +56,15 @@ Judgement judge_scenario(const scene::Scene& scene, const std::filesystem::path&
           ? analysis::scenario_of(scene)
           : analysis::scenario_from_json(read_text_file(scenario_file, "the scenario file"),
                                          scenario_file.string());
+  // Each motion's name as valid UTF-8 (a name in bytes that are no UTF-8, "caf\xe9.csv", as
+  // "caf\uFFFD.csv": common/file_name.hpp's utf8_replaced, the rule npx's names follow too), so
+  // that the judgement CSV, its lines and the league are UTF-8.
+  std::vector<std::string> shown;
+  for (const std::string& name : names) shown.push_back(utf8_replaced(name));
   const std::string sha256 = analysis::scenario_sha256(scenario);
   const std::vector<MotionFile> read = read_motion_files(scenario, motions);
   std::vector<analysis::JudgedMotion> judged = judge_motions(
-      scene.model, scene.steps_per_frame, scenario, motions, read, names, methods, stop);
+      scene.model, scene.steps_per_frame, scenario, motions, read, shown, methods, stop);
   CsvTable table = analysis::judgement_table(scenario, sha256, judged);
   return {scenario, sha256, std::move(judged), std::move(table)};
 }

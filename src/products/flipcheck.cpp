@@ -31,12 +31,11 @@ JsonValue method_labels(const std::vector<analysis::Method>& methods) {
   return {std::move(labels)};
 }
 
-/// The motion column's name of each file: its name, as valid UTF-8 (a name in bytes that are
-/// no UTF-8, "caf\xe9.csv", as "caf\uFFFD.csv": common/file_name.hpp's utf8_replaced, the
-/// rule npx's names follow too), so that the judgement CSV and the lines are UTF-8.
+/// The motion column's name of each file: its name (made valid UTF-8 where the judgement is
+/// made: jobs::judge_scenario).
 std::vector<std::string> file_names(const std::vector<std::filesystem::path>& files) {
   std::vector<std::string> names;
-  for (const auto& f : files) names.push_back(utf8_replaced(f.filename().string()));
+  for (const auto& f : files) names.push_back(f.filename().string());
   return names;
 }
 
