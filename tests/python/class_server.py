@@ -32,6 +32,17 @@ def in_ci():
 
 
 
+
+def require_real():
+    """Skips a test where the real recordings are not beside the checkout (a failure under
+    CI=true, where they are)."""
+    import pytest
+    if not REAL.is_dir():
+        if in_ci():
+            pytest.fail(f"no real recordings at {REAL} (CI has them)")
+        pytest.skip(f"no real recordings at {REAL} (../shared/recordings-real/ beside the "
+                    "checkout)")
+
 def require_packages(*names):
     """Imports the class server's packages a test module needs (Debian's, from
     scripts/install-deps.sh); a module without them is skipped, saying which, and fails under

@@ -16,20 +16,12 @@ from class_server import require_packages  # noqa: E402
 
 require_packages('aiohttp', 'segno')
 
-from class_server import REAL, Server, in_ci, real_csv
+from class_server import REAL, Server, in_ci, real_csv, require_real
 from conftest import read_csv, run_cli
 
 TRAINED_PHONES = ["12-10-56", "12-13-01"]   # the threshold was decided on these …
 HELD_OUT_PHONE = "12-13-51"                 # … and never on these
 HELD_OUT_PLATES = ["12-29-59", "12-44-51"]
-
-
-def require_real():
-    if not REAL.is_dir():
-        if in_ci():
-            pytest.fail(f"no real recordings at {REAL} (CI has them)")
-        pytest.skip(f"no real recordings at {REAL} (../shared/recordings-real/ beside the "
-                    "checkout)")
 
 
 @pytest.fixture

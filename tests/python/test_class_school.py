@@ -27,18 +27,11 @@ except ImportError as missing_package:
     pytest.skip(f"the class server's packages are missing ({missing_package}): "
                 "scripts/install-deps.sh", allow_module_level=True)
 
-from class_server import PG_BIN, REAL, Server, free_port, in_ci, real_csv, restamped
+from class_server import (PG_BIN, REAL, Server, free_port, in_ci, real_csv, restamped,
+                          require_real)
 from class_start_shared import page, postgres  # noqa: F401  (the fixtures)
 
 PHONE = ["12-10-56", "12-13-01", "12-13-51"]  # the bare phone's recordings (their README)
-
-
-def require_real():
-    if not REAL.is_dir():
-        if in_ci():
-            pytest.fail(f"no real recordings at {REAL} (CI has them)")
-        pytest.skip(f"no real recordings at {REAL} (../shared/recordings-real/ beside the "
-                    "checkout)")
 
 
 def database(postgres):

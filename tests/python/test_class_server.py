@@ -27,19 +27,12 @@ from class_server import require_packages  # noqa: E402
 require_packages('aiohttp', 'psycopg', 'segno')
 import segno  # noqa: E402
 
-from class_server import REAL, Postgres, Server, in_ci, real_csv, restamped
+from class_server import (REAL, Postgres, Server, in_ci, real_csv, restamped,
+                          require_real)
 from conftest import cli_error_line, read_csv, run_cli
 
 PHONE = ["12-10-56", "12-13-01", "12-13-51"]  # the bare phone's recordings (their README)
 PLATE = "12-22-44"                             # another body: the phone on a plate
-
-
-def require_real():
-    if not REAL.is_dir():
-        if in_ci():
-            pytest.fail(f"no real recordings at {REAL} (CI has them)")
-        pytest.skip(f"no real recordings at {REAL} (../shared/recordings-real/ beside the "
-                    "checkout)")
 
 
 @pytest.fixture(scope="session")
@@ -159,7 +152,10 @@ def test_a_student_reads_only_the_pooled_body_and_their_own_tosses(make_server):
     status, me = server.request("GET", f"/api/class/{server.code}/me", token=anna)
     assert status == 200 and me["name"] == "Anna"
     assert [t["toss"] for t in me["tosses"]] == [mine["toss"]]
-    assert set(me["pooled"]) == {"tosses", "recordings", "ratios", "sigma", "updated"}
+    # The class's body and, where its fit failed, why (the fit's line and the sentence to act
+    # on): nothing of another student's.
+    assert set(me["pooled"]) == {"tosses", "recordings", "ratios", "sigma", "updated", "error",
+                                 "error_summary"}
     status, pooled = server.request("GET", f"/api/class/{server.code}/pooled", token=ben)
     assert status == 200 and set(pooled) == set(me["pooled"])
     # The teacher's views refuse a student's token, and no token at all.
