@@ -15,7 +15,7 @@ moment:
     twice), timed from their POST's start to its 201 and to the stream.
 Then the seconds to the pooled fit that holds every toss; the server's CPU seconds and peak
 memory from /proc. With --classes C (a school: docs/performance.md, "A school at once") the
-store is a PostgreSQL the bench starts (as tests/python/class_server.py does), C classes are
+store is a PostgreSQL the bench starts (as class/tests/class_server.py does), C classes are
 made on it (each by a server started with --new, then stopped), and the one server serves all
 of them, PHONES phones in each, the browsers in the first. Prints a table; run from the
 repository root:
@@ -62,7 +62,7 @@ source = pathlib.Path(__file__).resolve().parents[1]
 os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
 os.environ["PYTHONPATH"] = os.pathsep.join([str(build / "python"),
                                             os.environ.get("PYTHONPATH", "")])
-sys.path[:0] = [str(source / "tests" / "python"), str(source / "tests" / "browser")]
+sys.path[:0] = [str(source / "class" / "tests"), str(source / "tests" / "browser")]
 from class_server import REAL, Postgres, Server, real_csv, restamped  # noqa: E402
 from browser import find_browser, open_browser, wait_for  # noqa: E402
 from explorer_phone_in_class_test import (SIZE, RealServer, open_class_page, readings,  # noqa: E402

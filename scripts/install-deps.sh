@@ -21,7 +21,7 @@ packages=(
   python3-wheel jupyter-nbconvert python3-ipykernel python3-matplotlib
   python3-aiohttp python3-psycopg python3-segno python3-cryptography python3-psutil python3-idna
   postgresql-15
-  # the school's reverse proxy in tests/python/test_class_school.py (docs/class.md, "A school's server")
+  # the school's reverse proxy in class/tests/test_class_school.py (docs/class.md, "A school's server")
   nginx-light
   slurm-wlm munge
   emscripten

@@ -53,7 +53,7 @@ bookspin, source, binary = test_arguments(__doc__)
 os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
 os.environ["PYTHONPATH"] = os.pathsep.join([str(binary / "python"),
                                             os.environ.get("PYTHONPATH", "")])
-sys.path[:0] = [str(source / "tests" / "python"), str(binary / "python")]
+sys.path[:0] = [str(source / "class" / "tests"), str(binary / "python")]
 try:
     import aiohttp  # noqa: F401
     import segno  # noqa: F401

@@ -2,7 +2,7 @@
 """A phone's lesson from the student's side, to its end (web/src/class_join.js,
 web/src/fit_failure.js, web/src/modal.js askFirst; docs/phone-lab.md "In a class", docs/class.md
 "A phone"): headless Chromium as a touch phone (390x844, and its screenshots again at 320x568)
-against the real class server (python/bookspin_class, started by tests/python/class_server.py's
+against the real class server (class/bookspin_class, started by class/tests/class_server.py's
 Server over https, its certificate trusted by its key's hash) and real recordings
 (../shared/recordings-real/dvarkian-2022-05-03, fed sample by sample at their own rate through the
 sensor override; a failure under CI=true where that folder is absent, a skip elsewhere):

@@ -25,7 +25,7 @@ elsewhere):
     once, in the order sent, each with the bytes of its recording;
   - the class's results as the server gives them (GET me): its pooled body and each of the
     student's tosses shown.
-The server: the real class server (python/bookspin_class, started by tests/python/
+The server: the real class server (class/bookspin_class, started by tests/python/
 class_server.py's Server over https, its certificate trusted by its key's hash), what it holds
 read from its SQLite store beside it; its packages missing, the test skips (fails under CI).
 Screenshots (BINARY_DIR/test-output/browser/explorer-phone-in-class-{join,list,results}-WxH.png)
@@ -67,8 +67,8 @@ def readings(path):
 
 
 class RealServer:
-    """The class server (python/bookspin_class, docs/class.md) started on 127.0.0.1 with a class
-    of its own by tests/python/class_server.py's Server, serving the page built for this test:
+    """The class server (class/bookspin_class, docs/class.md) started on 127.0.0.1 with a class
+    of its own by class/tests/class_server.py's Server, serving the page built for this test:
     its address, code, the switch that makes Chromium trust its certificate (its public key's
     hash: nothing else ignored), and what its store holds, read beside it. `extra`: more of the
     server's switches (a benchmark's higher --rate)."""
@@ -76,7 +76,7 @@ class RealServer:
     def __init__(self, source, binary, page_file, extra=()):
         os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
         os.environ["PYTHONPATH"] = os.pathsep.join([str(binary / "python"), os.environ.get("PYTHONPATH", "")])
-        sys.path[:0] = [str(source / "tests" / "python"), str(binary / "python")]
+        sys.path[:0] = [str(source / "class" / "tests"), str(binary / "python")]
         try:
             import aiohttp  # noqa: F401
             import segno  # noqa: F401

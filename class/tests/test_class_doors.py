@@ -1,6 +1,6 @@
 """The class server's doors (docs/class.md, "The API" and "Limits"), as a class and a hostile
 client meet them: a real `bookspin-class` on 127.0.0.1 (SQLite and a real PostgreSQL the tests
-start, as tests/python/test_class_server.py), real HTTPS clients, the real recordings of
+start, as class/tests/test_class_server.py), real HTTPS clients, the real recordings of
 ../shared/recordings-real/. The class's set holds every toss; the same samples are held once
 whatever their bytes; a client's bad input is a 4xx naming the field with the store unchanged;
 every refusal, aiohttp's own too, is {"error": …}; the teacher's changes come from the
@@ -28,7 +28,7 @@ from conftest import SOURCE_DIR, read_csv, run_cli
 from test_class_server import (PHONE, PLATE, make_server, page, post_real,  # noqa: F401
                                postgres, require_real)
 
-sys.path.insert(0, str(SOURCE_DIR / "python"))
+sys.path.insert(0, str(SOURCE_DIR / "class"))
 from bookspin_class import limits  # noqa: E402
 
 
@@ -487,7 +487,7 @@ def test_a_full_disk_and_a_read_only_store_say_so_and_store_nothing(sqlite_serve
     server = sqlite_server(data=data)
     server.stop()
     env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join([str(SOURCE_DIR / "python"),
+    env["PYTHONPATH"] = os.pathsep.join([str(SOURCE_DIR / "class"),
                                          env.get("PYTHONPATH", "")])
     done = subprocess.run(
         ["unshare", "-rm", "sh", "-c", f'mount --bind "{data}" "{data}" && mount -o '

@@ -1,4 +1,4 @@
-"""What the class server's start tests share (tests/python/test_class_start.py and
+"""What the class server's start tests share (class/tests/test_class_start.py and
 test_class_stays.py): the refusal's one line, a folder's listing, whether network namespaces
 can be made here, and the fixtures: a stand-in page, a PostgreSQL of the tests' own, servers
 stopped at a test's end."""

@@ -1,6 +1,6 @@
-"""What the class server's tests share (tests/python/test_class_server.py, docs/class.md): a
+"""What the class server's tests share (class/tests/test_class_server.py, docs/class.md): a
 real `bookspin-class` server started on 127.0.0.1 (python3 -m bookspin_class, the module
-BUILD/python/bookspin and python/bookspin_class), a real PostgreSQL started in a scratch folder
+BUILD/python/bookspin and class/bookspin_class), a real PostgreSQL started in a scratch folder
 (initdb + pg_ctl as an unprivileged user, on a unix socket), plain HTTPS clients (http.client,
 verifying the server's certificate against the class's own CA), and the store's row counts."""
 import contextlib
@@ -21,7 +21,8 @@ import threading
 import time
 import uuid
 
-from conftest import SOURCE_DIR
+SOURCE_DIR = pathlib.Path(
+    os.environ.get("BOOKSPIN_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 
 REAL = SOURCE_DIR.parent / "shared" / "recordings-real" / "dvarkian-2022-05-03"
 PG_BIN = pathlib.Path("/usr/lib/postgresql/15/bin")
@@ -106,7 +107,7 @@ class Server:
     def environment(self):
         env = dict(os.environ)
         env["PYTHONPATH"] = os.pathsep.join(
-            [str(SOURCE_DIR / "python")] + [p for p in env.get("PYTHONPATH", "").split(os.pathsep)
+            [str(SOURCE_DIR / "class")] + [p for p in env.get("PYTHONPATH", "").split(os.pathsep)
                                             if p])
         env.update(self.env)
         return env

@@ -16,7 +16,7 @@ from class_server import REAL, real_csv
 from conftest import SOURCE_DIR, read_csv, run_cli
 
 import sys
-sys.path.insert(0, str(SOURCE_DIR / "python"))
+sys.path.insert(0, str(SOURCE_DIR / "class"))
 from bookspin_class import limits, pooled  # noqa: E402
 
 # A name per script a classroom may bring, as typed (NFC unless said).

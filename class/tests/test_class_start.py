@@ -49,7 +49,7 @@ def test_the_first_command_names_what_is_missing_and_the_command_that_builds_it(
     data = tmp_path / "data"
     empty = tmp_path / "empty-build"
     empty.mkdir()
-    env = dict(os.environ, PYTHONPATH=str(SOURCE_DIR / "python"))
+    env = dict(os.environ, PYTHONPATH=str(SOURCE_DIR / "class"))
     env.pop("BOOKSPIN_CLASS_BUILD", None)
     command = [sys.executable, "-m", "bookspin_class", "--data", str(data), "--page", str(page)]
     probe = subprocess.run([sys.executable, "-c", "import bookspin"], env=env,
@@ -68,7 +68,7 @@ def test_the_first_command_names_what_is_missing_and_the_command_that_builds_it(
     assert not data.exists()
     # The build's own launcher says where its module should be.
     launcher = pathlib.Path(EXE).parent / "bookspin-class"
-    if launcher.is_file() and f":{SOURCE_DIR / 'python'}" in launcher.read_text():
+    if launcher.is_file() and f":{SOURCE_DIR / 'class'}" in launcher.read_text():
         text = launcher.read_text().replace(str(pathlib.Path(EXE).parent), str(empty))
         (empty / "bookspin-class").write_text(text)
         done = subprocess.run(["sh", str(empty / "bookspin-class"), "--data", str(data),
@@ -261,11 +261,11 @@ def handshake(ca_pem, cert_pem, key_pem, name):
 
 def test_the_class_ca_vouches_for_the_classs_addresses_alone_for_a_month(tmp_path, page,
                                                                         servers):
-    sys.path.insert(0, str(SOURCE_DIR / "python"))
+    sys.path.insert(0, str(SOURCE_DIR / "class"))
     try:
         from bookspin_class import tls
     finally:
-        sys.path.remove(str(SOURCE_DIR / "python"))
+        sys.path.remove(str(SOURCE_DIR / "class"))
     data = tmp_path / "data"
     server = servers(Server(data, page, address="192.0.2.10")).start()
     status, ca_pem = server.request("GET", "/ca.pem")

@@ -21,7 +21,7 @@ import numpy  # noqa: F401  (bookspin.fit's charts are numpy arrays: imported he
 # SHARE_EXCESS of |ω| above it. Decided on 12-10-56, 12-13-01 (the bare phone) and 12-22-44,
 # 12-38-00 (the plate) with thinnings of the phone's: under their own kind's body at most 1.02
 # times their own share (+0.1 % of |ω|), under the other kind's at least 2.65 times (+18 %);
-# held out: 12-13-51, 12-29-59, 12-44-51 (tests/python/test_class_fit.py).
+# held out: 12-13-51, 12-29-59, 12-44-51 (class/tests/test_class_fit.py).
 SHARE_FACTOR = 2.0
 SHARE_EXCESS = 0.10
 
