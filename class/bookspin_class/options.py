@@ -75,6 +75,9 @@ def parse_options(argv):
                         help="the IP address of the school's reverse proxy: requests from it "
                              "are the phone's named in X-Forwarded-For (docs/class.md, \"A "
                              "school's server\")")
+    parser.add_argument("--public-port", metavar="N",
+                        help="the port phones and the teacher reach: the school's reverse "
+                             "proxy's, in the join address and the QR code (default: --port)")
     parser.add_argument("--max-tosses", default="100", metavar="N",
                         help="tosses one student may have held (default 100)")
     parser.add_argument("--head-timeout", default="10", metavar="S",
@@ -91,6 +94,8 @@ def parse_options(argv):
         return value
 
     options.port = number("--port", options.port, int, 1, 65535)
+    if options.public_port is not None:
+        options.public_port = number("--public-port", options.public_port, int, 1, 65535)
     options.keep_days = number("--keep-days", options.keep_days, float, 0.01, 3650)
     options.rate = number("--rate", options.rate, float, 0.1, 10000)
     options.max_tosses = number("--max-tosses", options.max_tosses, int, 1, 100000)

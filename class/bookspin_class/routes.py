@@ -40,7 +40,7 @@ class ClassServer:
 
     def __init__(self, store, join_base, page, rate_limit, gate=None):
         self.store = store
-        self.join_base = join_base  # https://ADDRESS:PORT
+        self.join_base = join_base  # https://ADDRESS:PORT (the proxy's, --public-port)
         self.page = page            # the explorer.html served to phones
         self.rate_limit = rate_limit
         # The classes' fits one at a time (a class's own are, pooled.PooledFit): two at once on

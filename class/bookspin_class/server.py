@@ -145,6 +145,11 @@ def url_host(host):
     return f"[{host}]" if ":" in host else host
 
 
+def origin(host, port):
+    """https://HOST:PORT, the port left out where it is https's own (443)."""
+    return f"https://{url_host(host)}" + ("" if port == 443 else f":{port}")
+
+
 async def start(options, folder):
     """Binds, locks DATA, opens the store, chooses the class, makes the certificate and writes
     the teacher's address: (runner, the state to serve) ready. On any failure what was made is
@@ -198,7 +203,9 @@ async def start(options, folder):
         laptop = teacher_host(options, address)
         names = list(dict.fromkeys([address, laptop, "127.0.0.1", "localhost"]))
         context, ca_file = tls.server_context(folder.path, names)
-        teacher_url = f"https://{url_host(laptop)}:{options.port}/teacher?key={key}"
+        # Behind the school's proxy (--public-port) the teacher, as the phones, comes through it.
+        teacher_url = (origin(laptop, options.port) if options.public_port is None else
+                       origin(address, options.public_port)) + f"/teacher?key={key}"
         folder.write(data_folder.TEACHER_ADDRESS, teacher_url + "\n")
         folder.write(data_folder.TAUGHT, code + "\n")
         if started == "started":
@@ -210,7 +217,7 @@ async def start(options, folder):
 
         rate = limits.RateLimit(options.rate, 3 * options.rate)
         limits.HeadDeadlineHandler.head_seconds = options.head_timeout
-        server = routes.ClassServer(db, f"https://{url_host(address)}:{options.port}",
+        server = routes.ClassServer(db, origin(address, options.public_port or options.port),
                                     pathlib.Path(options.page), rate)
         server.ca_file = ca_file
         server.integrity_errors = store.integrity_errors()

@@ -106,6 +106,25 @@ def test_address_takes_a_host_or_an_ip_alone(tmp_path, page, servers):
     assert server.state()["join_url"].startswith("https://xn--bcher-kva.example:")
 
 
+def test_behind_the_schools_proxy_phones_and_teacher_are_sent_to_its_port(tmp_path, page,
+                                                                          servers):
+    data = tmp_path / "data"
+    for value in ("0", "65536", "x", ""):
+        status, stdout, stderr = Server(data, page, extra=["--public-port", value]).run()
+        one_error_line(status, stdout, stderr, "--public-port")
+        assert not data.exists(), value
+    # The proxy on https's own port: no port in the addresses; on another, that port.
+    for public, shown in ((443, ""), (8080, ":8080")):
+        server = servers(Server(data, page, address="class.school.example",
+                                extra=["--public-port", str(public)])).start()
+        base = f"https://class.school.example{shown}"
+        assert server.line("phones join:") == \
+            f"{base}/explorer.html?class={server.code}#lab"
+        assert server.state()["join_url"] == f"{base}/explorer.html?class={server.code}#lab"
+        assert (data / "teacher-address.txt").read_text().startswith(f"{base}/teacher?key=")
+        server.stop()
+
+
 def test_the_short_address_opens_the_classs_join_form(tmp_path, page, servers):
     server = servers(Server(tmp_path / "data", page)).start()
     status, body = server.request("GET", "/")
