@@ -159,7 +159,10 @@ class ClassServer:
                 "not_predicted": main and main.get("not_predicted"),
                 "prediction_interval": main and main.get("prediction_interval"),
                 "half_period_measured_alone": main and main.get("half_period_measured_alone"),
-                "flights": flights, "judgement": fit.judgements.get(stem)}
+                "flights": flights, "judgement": fit.judgements.get(stem),
+                # Whether the numbers shown are of a fit that held this toss: a toss just
+                # sent or put back waits for the next (docs/class.md, "The projector").
+                "in_fit": toss["excluded"] is None and stem in fit.flights}
 
     def pooled_view(self, fit):
         result = fit.result

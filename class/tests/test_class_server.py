@@ -124,6 +124,7 @@ def test_the_projectors_pooled_fit_is_bookspin_fit_of_the_downloaded_set(make_se
                 shown[(toss["file"][:-4], flight["toss_in_set"])] = flight
             if toss["excluded"]:
                 assert toss["excluded"] == "another body (a plate)" and toss["flights"] == []
+            assert toss["in_fit"] is (toss["excluded"] is None), toss
     assert len(shown) == len(tosses["toss"]) > 0
     for i, number in enumerate(tosses["toss"]):
         flight = shown[(tosses["recording"][i], int(number))]
@@ -138,7 +139,11 @@ def test_the_projectors_pooled_fit_is_bookspin_fit_of_the_downloaded_set(make_se
     status, _ = server.request("POST", f"/api/class/{server.code}/tosses/{plate['toss']}"
                                "/include", {}, token=server.key)
     assert status == 200
-    server.fitted_state(4)
+    # Until the refit holds it, the plate's line is of no fit ("fitting…", never "no flight").
+    plate_of = lambda s: next(t for st in s["students"] for t in st["tosses"]  # noqa: E731
+                              if t["toss"] == plate["toss"])
+    assert plate_of(server.state())["in_fit"] is False
+    assert plate_of(server.fitted_state(4))["in_fit"] is True
     status, data = server.request("GET", f"/api/class/{server.code}/download", token=server.key)
     assert len(zipfile.ZipFile(io.BytesIO(data)).namelist()) == 4
 
