@@ -18,31 +18,20 @@ Screenshots in BINARY_DIR: class-projector-screen-WxH@Z.png and class-projector-
 
     class_projector_screens_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 """
-import base64
 import contextlib
-import hashlib
-import os
-import sys
 import tempfile
 import time
 import unicodedata
 import uuid
 from pathlib import Path
 
+from class_browser import RealServer, class_packages
 from browser import (fail, find_browser, missing, open_browser, pdf_text, pdf_to_png, print_to_pdf,
                      test_arguments, text_problems, wait_for)
 
 bookspin, source, binary = test_arguments(__doc__)
-os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
-os.environ["PYTHONPATH"] = os.pathsep.join([str(binary / "python"),
-                                            os.environ.get("PYTHONPATH", "")])
-sys.path[:0] = [str(source / "class" / "tests"), str(binary / "python")]
-try:
-    import aiohttp  # noqa: F401
-    import segno  # noqa: F401
-except ImportError as error:
-    missing(f"the class server's packages ({error}): scripts/install-deps.sh")
-from class_server import REAL, Server, real_csv  # noqa: E402
+class_packages(source, binary)
+from class_server import REAL, real_csv  # noqa: E402
 
 if not REAL.is_dir():
     missing(f"no real recordings at {REAL} (../shared/recordings-real/ beside the checkout)")
@@ -84,19 +73,12 @@ def tab_to(driver, keys, text, limit=80):
     fail(f"by keyboard: no '{text}' button within {limit} Tabs")
 
 
-work = Path(tempfile.mkdtemp(prefix="bookspin-class-screens-"))
-page = work / "explorer.html"
+page = Path(tempfile.mkdtemp(prefix="bookspin-class-screens-page-")) / "explorer.html"
 page.write_text("<!doctype html><title>explorer</title>\n")
-server = Server(work / "data", page).start()
+real = RealServer(source, binary, page)
+server, trust = real.server, real.trust
 browsers = contextlib.ExitStack()
 try:
-    from cryptography import x509
-    from cryptography.hazmat.primitives import serialization
-    cert = x509.load_pem_x509_certificate((work / "data" / "tls" / "server.pem").read_bytes())
-    spki = cert.public_key().public_bytes(serialization.Encoding.DER,
-                                          serialization.PublicFormat.SubjectPublicKeyInfo)
-    trust = "--ignore-certificate-errors-spki-list=" + \
-        base64.b64encode(hashlib.sha256(spki).digest()).decode()
     origin = f"https://127.0.0.1:{server.port}"
     for index, name in enumerate(NAMES):
         status, answer = server.request(
@@ -166,7 +148,7 @@ try:
     print(f"by keyboard: {held[0]['name']} left out ('caught early') and put back")
 
     # On paper.
-    pdf = print_to_pdf(driver, work / "projector.pdf", "A4")
+    pdf = print_to_pdf(driver, real.work / "projector.pdf", "A4")
     paper = unicodedata.normalize("NFC", pdf_text(pdf))
     flat = " ".join(paper.split())
     # (pdftotext reads no text back from an emoji's colour glyphs: letters and marks compared)
@@ -177,10 +159,10 @@ try:
                            "Show the QR code") if b in flat]
     if missing_names or "I1" not in flat or "± 2σ" not in flat or buttons:
         fail(f"on paper: names missing {missing_names}, buttons printed {buttons}:\n{paper[:800]}")
-    pngs = pdf_to_png(pdf, work / "print")
+    pngs = pdf_to_png(pdf, real.work / "print")
     (binary / "class-projector-print-1.png").write_bytes(pngs[0].read_bytes())
     print(f"on paper: {len(pngs)} page(s), every name and the body, no button")
 finally:
     browsers.close()
-    server.stop()
+    real.close()
 print("PASS")

@@ -31,13 +31,9 @@ class-projector-ended-1280x720.png (docs/class.md shows them).
 
     class_projector_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 """
-import base64
 import contextlib
 import datetime
-import hashlib
-import os
 import re
-import sys
 import tempfile
 import time
 import unicodedata
@@ -45,21 +41,14 @@ import uuid
 import zoneinfo
 from pathlib import Path
 
+from class_browser import RealServer, class_packages
 from browser import (fail, find_browser, missing, open_browser, test_arguments, text_problems,
                      wait_for)
 from drawn_text import accessible_names, drawn_fonts, undrawn
 
 bookspin, source, binary = test_arguments(__doc__)
-os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
-os.environ["PYTHONPATH"] = os.pathsep.join([str(binary / "python"),
-                                            os.environ.get("PYTHONPATH", "")])
-sys.path[:0] = [str(source / "class" / "tests"), str(binary / "python")]
-try:
-    import aiohttp  # noqa: F401
-    import segno  # noqa: F401
-except ImportError as error:
-    missing(f"the class server's packages ({error}): scripts/install-deps.sh")
-from class_server import REAL, Server, real_csv  # noqa: E402
+class_packages(source, binary)
+from class_server import REAL, real_csv  # noqa: E402
 
 if not REAL.is_dir():
     missing(f"no real recordings at {REAL} (../shared/recordings-real/ beside the checkout)")
@@ -201,20 +190,13 @@ def check_class(driver, size, state, names):
         fail(f"at {size}: " + "; ".join(problems))
 
 
-work = Path(tempfile.mkdtemp(prefix="bookspin-class-browser-"))
-page = work / "explorer.html"
+page = Path(tempfile.mkdtemp(prefix="bookspin-class-browser-page-")) / "explorer.html"
 page.write_text("<!doctype html><title>explorer</title>\n")
-server = Server(work / "data", page).start()
+real = RealServer(source, binary, page)
+server, trust = real.server, real.trust
 RECORDED_AT = {}
 browsers = contextlib.ExitStack()
 try:
-    from cryptography import x509
-    from cryptography.hazmat.primitives import serialization
-    cert = x509.load_pem_x509_certificate((work / "data" / "tls" / "server.pem").read_bytes())
-    spki = cert.public_key().public_bytes(serialization.Encoding.DER,
-                                          serialization.PublicFormat.SubjectPublicKeyInfo)
-    trust = "--ignore-certificate-errors-spki-list=" + \
-        base64.b64encode(hashlib.sha256(spki).digest()).decode()
     origin = f"https://127.0.0.1:{server.port}"
     join_url = f"{origin}/explorer.html?class={server.code}#lab"
 
@@ -420,4 +402,4 @@ try:
           "drawn; Leave out keeps its form while the class updates; End says what is next")
 finally:
     browsers.close()
-    server.stop()
+    real.close()

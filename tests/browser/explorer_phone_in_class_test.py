@@ -36,22 +36,15 @@ Usage: explorer_phone_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
 under CI=true, where that is a failure (browser.py).
 """
-import base64
-import contextlib
 import csv
-import hashlib
 import io
-import os
 import re
-import shutil
-import sqlite3
-import sys
-import tempfile
 import time
 from pathlib import Path
 
 from browser import (at_sigma, console_errors, fail, find_browser, lab_page_under_test, missing,
                      open_browser, require, test_arguments, text_problems, wait_for)
+from class_browser import RealServer  # noqa: F401  (bench/class_load.py and the class's end test take it from here)
 from explorer_records_gyro_test import devtools, feed, feed_at_own_rate, override, tap
 
 SIZE = (390, 844)
@@ -64,55 +57,6 @@ UUID = re.compile(r"^[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9
 def readings(path):
     rows = list(csv.reader(io.StringIO(path.read_text())))[1:]
     return [float(r[0]) for r in rows], [tuple(float(c) for c in r[1:4]) for r in rows]
-
-
-class RealServer:
-    """The class server (class/bookspin_class, docs/class.md) started on 127.0.0.1 with a class
-    of its own by class/tests/class_server.py's Server, serving the page built for this test:
-    its address, code, the switch that makes Chromium trust its certificate (its public key's
-    hash: nothing else ignored), and what its store holds, read beside it. `extra`: more of the
-    server's switches (a benchmark's higher --rate)."""
-
-    def __init__(self, source, binary, page_file, extra=()):
-        os.environ["BOOKSPIN_SOURCE_DIR"] = str(source)
-        os.environ["PYTHONPATH"] = os.pathsep.join([str(binary / "python"), os.environ.get("PYTHONPATH", "")])
-        sys.path[:0] = [str(source / "class" / "tests"), str(binary / "python")]
-        try:
-            import aiohttp  # noqa: F401
-            import segno  # noqa: F401
-            from cryptography import x509
-            from cryptography.hazmat.primitives import serialization
-        except ImportError as error:
-            missing(f"the class server's packages ({error}): scripts/install-deps.sh")
-        from class_server import Server
-        self.work = Path(tempfile.mkdtemp(prefix="bookspin-phone-in-class-"))
-        self.server = Server(self.work / "data", page_file, extra=extra).start()
-        self.code = self.server.code
-        self.url = f"https://127.0.0.1:{self.server.port}/"
-        cert = x509.load_pem_x509_certificate((self.work / "data" / "tls" / "server.pem").read_bytes())
-        spki = cert.public_key().public_bytes(serialization.Encoding.DER,
-                                              serialization.PublicFormat.SubjectPublicKeyInfo)
-        self.trust = "--ignore-certificate-errors-spki-list=" + base64.b64encode(hashlib.sha256(spki).digest()).decode()
-
-    def query(self, statement, *args):
-        with contextlib.closing(sqlite3.connect(str(self.work / "data" / "class.sqlite3"))) as db:
-            return db.execute(statement, args).fetchall()
-
-    def held(self):
-        """Every toss the store holds for the class, in the order stored: {toss, name, csv}."""
-        return [{"toss": t, "name": n, "csv": c} for t, n, c in
-                self.query("SELECT toss, name, csv FROM tosses WHERE class_code = ? ORDER BY seq", self.code)]
-
-    def students(self):
-        return [n for (n,) in self.query("SELECT name FROM students WHERE class_code = ? ORDER BY joined", self.code)]
-
-    def pooled(self, recordings):
-        """The class's pooled fit once it holds `recordings` recordings: {ratios, sigma, …}."""
-        return self.server.fitted_state(recordings)["pooled"]
-
-    def close(self):
-        self.server.stop()
-        shutil.rmtree(self.work, ignore_errors=True)
 
 
 def state_of(driver):
