@@ -130,7 +130,7 @@ int bench_command(const BenchOptions& options) {
   // Memory first: a forked child starts with the bench's resident pages counted in its
   // peak (until it execs), so it must fork while the bench is still small.
   if (wanted(options, "memory")) bench_memory(context);
-  // Two whole renders of the GIF scene: only when named (docs/performance.md).
+  // Two whole renders of the GIF scene: only when named (docs/performance-video.md).
   if (!options.only.empty() && wanted(options, "gif-memory")) bench_gif_memory(context);
   if (wanted(options, "pipeline")) bench_pipeline(context);
   if (wanted(options, "peer")) bench_peer(context);
@@ -139,9 +139,9 @@ int bench_command(const BenchOptions& options) {
   if (wanted(options, "exact")) bench_exact(context);
   // Not part of a plain bench: bench/explorer_bench.py (make bench-explorer) asks for it.
   if (!options.only.empty() && wanted(options, "explorer")) bench_explorer(context);
-  // Minutes of encoding: only when named (docs/performance.md, "The default x264 preset").
+  // Minutes of encoding: only when named (docs/performance-video.md, "The default x264 preset").
   if (!options.only.empty() && wanted(options, "presets")) bench_presets(context);
-  // A long recording's fit: only when named (docs/performance.md, "The phone-toss fit").
+  // A long recording's fit: only when named (docs/performance-physics.md, "The phone-toss fit").
   if (!options.only.empty() && wanted(options, "fit")) bench_fit(context);
   if (!options.out_dir.empty()) {
     const auto csv = std::filesystem::path(options.out_dir) / "bench.csv";

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The benchmark of the npm package's command against the command line (docs/performance.md,
+"""The benchmark of the npm package's command against the command line (docs/performance-build.md,
 "The npm package against the command line"): the wall time of `npx flipcheck export` of the
 seven scenarios (node BUILD/npm/package/cli.mjs) against `bookspin flipcheck export --force` of
 their scene files, and of `npx flipcheck judge` of a motion of 10^6 rows (the exact motion of

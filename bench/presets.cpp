@@ -2,7 +2,7 @@
 // encoding. Real clips' frames are rendered once, encoded with every preset from ultrafast
 // to medium over a CRF range, decoded back to RGB and compared with the frames
 // (video/video_quality.hpp: SSIM of the luma and PSNR over R, G, B, our own code). The rule
-// (docs/performance.md): the fastest pair whose SSIM and PSNR are within 0.0005 and 0.1 dB
+// (docs/performance-video.md): the fastest pair whose SSIM and PSNR are within 0.0005 and 0.1 dB
 // of medium/CRF 18's on every clip, at no more than 1.25× its file size.
 #include <algorithm>
 #include <cerrno>

@@ -40,8 +40,8 @@ py::dict exact_motion(const py::object& moments_arg, const py::object& omega0_ar
   const Eigen::Vector3d moments = vector3_arg(moments_arg, "moments");
   const Eigen::Vector3d omega0 = vector3_arg(omega0_arg, "omega0");
   const std::vector<double> t = vector_arg(t_arg, "t", -1);
-  // The rows go straight into the arrays (no vector of rows to copy: docs/performance.md, "The
-  // exact motion per row").
+  // The rows go straight into the arrays (no vector of rows to copy: docs/performance-physics.md,
+  // "The exact motion per row").
   ExactArrays arrays(t.size(), false);
   {
     const StopPoll stop = python_stop();

@@ -40,7 +40,7 @@ if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$(echo "$hash"; listing)" ]; then
 fi
 rm -f "$stamp"
 
-# Each stage's seconds, printed as it ends and together at the end (docs/performance.md,
+# Each stage's seconds, printed as it ends and together at the end (docs/performance-build.md,
 # "The first make figures").
 stage_start=$(date +%s) stage_table=()
 stage_done() {
@@ -56,7 +56,7 @@ stage_done() {
 # (npm/build.sh into BUILD/npm-figures, which no test reads while it is rebuilt; it links the
 # page's up-to-date objects of the files both compile, so only its bindings compile). Beside them run
 # the sweeps, the engines' accuracy, the fit and the renders; the league, the page and the
-# gallery that links both come once the background is done (docs/performance.md, "The first
+# gallery that links both come once the background is done (docs/performance-build.md, "The first
 # make figures"). Each build's exit status lands in OUT/.logs/<name>.exit.
 web_pid=
 mkdir -p "$out/.logs"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The GPU check (docs/performance.md, "The GPU check"): the Release build packed with every
+# The GPU check (docs/performance-render.md, "The GPU check"): the Release build packed with every
 # shared library it loads, then, on a machine with a GPU, `bookspin info`, the picture tests and
 # the pipeline bench in one call, each one's output kept.
 #
@@ -31,7 +31,7 @@ mode=${1:-}
 bundle=${2:-build/gpu-bundle}
 programs=(build/bookspin build/bookspin-bench build/tests/picture_tests)
 
-# The libraries only FFmpeg's other codecs, filters and protocols call (docs/performance.md, "A
+# The libraries only FFmpeg's other codecs, filters and protocols call (docs/performance-render.md, "A
 # GPU"): replaced in the bundle by stubs of the same name, symbols and versions, so that the
 # bundle fits the 64 MiB a lent GPU machine takes. `run` compares `bookspin info` with the
 # build's own, so a stub that bookspin reached would show.

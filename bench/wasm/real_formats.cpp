@@ -1,5 +1,5 @@
-// What a wider-than-double real costs in WebAssembly (docs/performance.md, "npx flipcheck"): the
-// same division-bound recurrence acc ← (acc·y + x)/(y + acc), the shape of the exact motion's
+// What a wider-than-double real costs in WebAssembly (docs/performance-build.md, "npx flipcheck"):
+// the same division-bound recurrence acc ← (acc·y + x)/(y + acc), the shape of the exact motion's
 // kernels (Landen's descent, Carlson's duplication), in four formats: `long double` (x87's
 // 80 bits in hardware natively, binary128 in software in WebAssembly), a double-double pair
 // (Dekker's products and Knuth's sums, no FMA: WebAssembly's baseline has none) and double.

@@ -24,7 +24,7 @@ namespace {
 /// Number.prototype.toExponential() spells them ("1.5e+2", "-3e-7"), into `out` (`size` bytes):
 /// its length. Where the C library would print and read back a double once for each count of
 /// digits, in WebAssembly's software long double (musl's printf and strtod), at about 3 µs
-/// each (docs/performance.md, "The npm package against the command line").
+/// each (docs/performance-build.md, "The npm package against the command line").
 EM_JS(int, javascript_exponential, (double value, char* out, int size),
       { return stringToUTF8(value.toExponential(), out, size); });
 #endif
@@ -61,8 +61,8 @@ std::string shortest_text(double value) {
   }
 #endif
   // buffer: [-]d[.ddd]e±X. Laid out in arrays, no std::string but the one returned: in
-  // WebAssembly every call that may throw goes through JavaScript (docs/performance.md, "The npm
-  // package against the command line").
+  // WebAssembly every call that may throw goes through JavaScript (docs/performance-build.md, "The
+  // npm package against the command line").
   const bool negative = buffer[0] == '-';
   char digits[24];
   int n = 0;

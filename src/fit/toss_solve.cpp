@@ -152,7 +152,7 @@ Solved solve_once(const std::vector<TossData>& data, Parameters& p, const SolveO
   // and each thread sums its own cost and gradient, so the order of the sums, and the last bits
   // of every number after them, followed the machine's load (ten runs at once differed by up to
   // 3e-9 relative). The same input gives the same bytes; the fit's time hardly changes (its CPU
-  // time was its wall time already, docs/performance.md, "The phone-toss fit").
+  // time was its wall time already, docs/performance-physics.md, "The phone-toss fit").
   solver_options.num_threads = 1;
   StopCallback stop(options.stop);
   solver_options.callbacks.push_back(&stop);

@@ -49,7 +49,7 @@ struct ExactRowArrays {
 /// exact_motion_at's rows handed to `row(n, state)` one at a time, in the order of `times`, as
 /// they are made (the same checks and throws; rows before a throw have been handed over): for a
 /// caller that stores them elsewhere (bookspin.exact_motion writes them straight into its numpy
-/// arrays, docs/performance.md, "The exact motion per row").
+/// arrays, docs/performance-physics.md, "The exact motion per row").
 void exact_motion_each(const Eigen::Vector3d& moments, const Eigen::Vector3d& omega0_body,
                        const std::vector<double>& times, const StopPoll& stop,
                        const std::function<void(std::size_t, const ExactMotionRow&)>& row);

@@ -106,8 +106,8 @@ inline Real carlson_rc1p(Real e) {
 /// (2⁻⁶³, its 64-bit significand's), still a hundred times below a double's ε (Boost asks ε/5: one
 /// step more, a fifth of the time). That ε is fixed, not the compiler's long double's: in
 /// WebAssembly long double is binary128 (ε = 2⁻¹¹²), in software, and asking 10⁻¹⁵ more of the
-/// series took three steps more a call (docs/performance.md, "The npm package against the command
-/// line"). rx, ry, rz are √x, √y, √z, which the caller has at hand.
+/// series took three steps more a call (docs/performance-build.md, "The npm package against the
+/// command line"). rx, ry, rz are √x, √y, √z, which the caller has at hand.
 inline Real carlson_rj(Real x, Real y, Real z, Real p, Real rx, Real ry, Real rz) {
   static const Real kQ = std::pow(10 * std::ldexp(Real{1}, -63), -1.0L / 8);
   Real A = (x + y + z + 2 * p) / 5;

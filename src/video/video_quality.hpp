@@ -1,7 +1,7 @@
 #pragma once
 // How close a lossy clip is to the frames it was made from: a video file decoded back to RGB
 // frames, and SSIM and PSNR of a decoded frame against its original (bookspin-bench's
-// `presets` section chooses the default x264 preset and CRF with them, docs/performance.md).
+// `presets` section chooses the default x264 preset and CRF with them, docs/performance-video.md).
 #include <cstdint>
 #include <filesystem>
 #include <functional>

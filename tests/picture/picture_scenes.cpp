@@ -78,9 +78,9 @@ render::Renderer& renderer_for(const scene::Scene& scene) {
   // Never destroyed, on purpose: a static's destructor runs at exit(), after the GL driver's own
   // exit handlers may have unloaded it. On NVIDIA, ~Renderer there deleted its textures through
   // libepoxy into the unmapped libnvidia-eglcore and the suite died of SIGSEGV after passing
-  // (docs/performance.md, "A GPU"). The renderers live as long as the process; the system takes
-  // their memory and the driver its contexts. (The display registry, src/render/egl_display.cpp,
-  // is never destroyed for the same reason.)
+  // (docs/performance-render.md, "A GPU"). The renderers live as long as the process; the system
+  // takes their memory and the driver its contexts. (The display registry,
+  // src/render/egl_display.cpp, is never destroyed for the same reason.)
   static auto* renderers = new std::map<std::string, std::unique_ptr<render::Renderer>>;
   const render::RenderSettings settings = clip::render_settings_for(scene);
   auto& slot = (*renderers)[settings_key(settings)];

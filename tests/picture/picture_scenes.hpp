@@ -17,7 +17,7 @@ inline constexpr int kGoldenSize = 256;
 /// render (figure_scene, rendered_frame), before the test's own overrides: trilinear, no
 /// anisotropic filtering. The automatic value (render.anisotropy = 0) is trilinear on llvmpipe,
 /// where the goldens were made, but 4× anisotropic on a GPU, which drew five goldens' grazing
-/// covers sharper than the tolerance allows (docs/performance.md, "A GPU").
+/// covers sharper than the tolerance allows (docs/performance-render.md, "A GPU").
 inline constexpr const char* kGoldenFiltering = "render.anisotropy=1";
 
 /// The stems of scenes/fig*.toml, sorted (every figure gets goldens automatically).

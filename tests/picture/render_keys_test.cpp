@@ -44,8 +44,8 @@ namespace {
 
 // Every scene the picture tests render carries the filtering the goldens were made with
 // (trilinear: max_anisotropy 1), not the automatic value that is 4× anisotropic on a GPU
-// (docs/performance.md, "A GPU"); a test's own render.anisotropy still wins. The figures, the
-// bodies, the sphere and Poinsot scenes and the resting book all come through figure_scene.
+// (docs/performance-render.md, "A GPU"); a test's own render.anisotropy still wins. The figures,
+// the bodies, the sphere and Poinsot scenes and the resting book all come through figure_scene.
 TEST(RenderKeys, EveryGoldenSceneRendersWithTrilinearFilteringPinned) {
   std::vector<std::string> names = figure_scene_names();
   names.insert(names.end(), {"exact-unstable-x", "t-handle-dzhanibekov"});

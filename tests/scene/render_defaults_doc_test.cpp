@@ -1,5 +1,5 @@
 // The x264 preset a scene without `render.preset` gets, against where the docs state it:
-// scenes/README.md's row of the key and docs/performance.md, "The default x264 preset" (the
+// scenes/README.md's row of the key and docs/performance-video.md, "The default x264 preset" (the
 // measurement that chose it). The numeric defaults are limits_doc_test.cpp's.
 #include <gtest/gtest.h>
 
@@ -35,10 +35,10 @@ TEST(RenderDefaultsDoc, TheX264PresetOfASceneWithoutTheKeyIsTheDocumentedOne) {
   const std::string row = between(readme, "| `render.preset` |", "\n");
   const std::string readme_default = between(row, "| `\"", "\"` |");
   ASSERT_FALSE(readme_default.empty()) << "no default in the render.preset row: " << row;
-  // docs/performance.md: `render.preset` and `render.crf` default to **`faster` at CRF 16**
-  const std::string performance = read_doc("docs/performance.md");
+  // docs/performance-video.md: `render.preset` and `render.crf` default to **`faster` at CRF 16**
+  const std::string performance = read_doc("docs/performance-video.md");
   const std::string chosen = between(performance, "default to **`", "`");
-  ASSERT_FALSE(chosen.empty()) << "docs/performance.md states no default preset";
+  ASSERT_FALSE(chosen.empty()) << "docs/performance-video.md states no default preset";
   EXPECT_EQ(readme_default, chosen);
 
   // A scene with no [render] table, and one with the table but not the key.
