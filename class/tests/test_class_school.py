@@ -4,6 +4,7 @@ posting the real recordings of ../shared/recordings-real/. The toss numbers allo
 database under concurrent posts through two processes; a toss held by one process on the other's
 projector stream (LISTEN/NOTIFY); the laptop's SQLite store made before the counter goes on."""
 import concurrent.futures
+import contextlib
 import http.client
 import json
 import os
@@ -171,9 +172,12 @@ class Nginx:
     """Debian's nginx as the school's reverse proxy, started by the test in a scratch folder:
     TLS terminated on 127.0.0.1:`port` with the school's certificate (made here by openssl
     for 127.0.0.1), the requests sent on to the `upstreams` (the servers' https ports) in turn
-    from the address 127.0.0.2, X-Forwarded-For appended, the event streams unbuffered."""
+    from the address 127.0.0.2, X-Forwarded-For appended, the event streams unbuffered. With
+    `rate` (requests a second), the proxy's own per-phone limit across every server process
+    (docs/class.md, "A school's server": limit_req, 3 × rate at once, refused 429 in the API's
+    JSON form)."""
 
-    def __init__(self, folder, port, upstreams):
+    def __init__(self, folder, port, upstreams, rate=None):
         self.folder, self.port = pathlib.Path(folder), port
         self.folder.mkdir(parents=True, exist_ok=True)
         self.certificate = self.folder / "school.pem"
@@ -183,6 +187,11 @@ class Nginx:
                        check=True, capture_output=True)
         servers = "".join(f"server 127.0.0.1:{port};" for port in upstreams)
         user = "user root root;" if os.geteuid() == 0 else ""
+        zone = limit = ""
+        if rate is not None:
+            zone = f"limit_req_zone $binary_remote_addr zone=phones:1m rate={rate}r/s;"
+            limit = (f"limit_req zone=phones burst={3 * rate} nodelay; limit_req_status 429; "
+                     "error_page 429 = @too_many;")
         (self.folder / "nginx.conf").write_text(f"""
 {user} daemon off; worker_processes 1; pid {self.folder}/nginx.pid;
 error_log {self.folder}/error.log;
@@ -193,10 +202,16 @@ http {{
   fastcgi_temp_path {self.folder}/fastcgi; uwsgi_temp_path {self.folder}/uwsgi;
   scgi_temp_path {self.folder}/scgi;
   upstream class {{ {servers} }}
+  {zone}
   server {{
     listen 127.0.0.1:{port} ssl;
     ssl_certificate {self.certificate}; ssl_certificate_key {self.folder}/school-key.pem;
+    location @too_many {{
+      default_type application/json;
+      return 429 '{{"error": "too many requests from $remote_addr: wait a moment (a limit of the proxy)"}}';
+    }}
     location / {{
+      {limit}
       proxy_pass https://class; proxy_bind 127.0.0.2;
       proxy_http_version 1.1; proxy_set_header Connection "";
       proxy_set_header Host $http_host;
@@ -247,27 +262,35 @@ http {{
             self.process.kill()
 
 
-@pytest.fixture
-def school(postgres, page, tmp_path):
-    """Two server processes on one PostgreSQL behind nginx (--proxy 127.0.0.2, --rate 2)."""
+@contextlib.contextmanager
+def behind_nginx(postgres, page, tmp_path, server_rate, proxy_rate=None):
+    """Two server processes on one PostgreSQL (--proxy 127.0.0.2, --rate `server_rate`) behind
+    nginx (its own per-phone limit `proxy_rate`, or none): (first, second, proxy)."""
     if shutil.which("nginx") is None:
         if in_ci():
             pytest.fail("nginx is not installed (scripts/install-deps.sh: nginx-light)")
         pytest.skip("nginx is not installed (scripts/install-deps.sh: nginx-light)")
     url = database(postgres)
-    extra = ["--proxy", "127.0.0.2", "--rate", "2"]
+    extra = ["--proxy", "127.0.0.2", "--rate", str(server_rate)]
     first = Server(tmp_path / "first", page, url, extra).start()
     second = Server(tmp_path / "second", page, url, extra)
     proxy = None
     try:
         second.start(new=True)
-        proxy = Nginx(tmp_path / "nginx", free_port(), [first.port, second.port])
+        proxy = Nginx(tmp_path / "nginx", free_port(), [first.port, second.port], proxy_rate)
         yield first, second, proxy
     finally:
         if proxy is not None:
             proxy.stop()
         second.stop()
         first.stop()
+
+
+@pytest.fixture
+def school(postgres, page, tmp_path):
+    """Two server processes on one PostgreSQL behind nginx (--proxy 127.0.0.2, --rate 2)."""
+    with behind_nginx(postgres, page, tmp_path, 2) as servers:
+        yield servers
 
 
 def test_behind_nginx_the_rate_limit_sees_each_phone_and_every_toss_is_held_once(school):
@@ -361,3 +384,23 @@ def test_postgres_restarted_the_phones_resent_tosses_are_held_once(postgres, pag
     finally:
         server.stop()
     assert "Traceback" not in server.process.stderr.read()
+
+
+def test_behind_nginx_a_phone_is_limited_once_across_every_server_process(postgres, page,
+                                                                        tmp_path):
+    """Each server's own limit counts only what reaches it: behind a proxy that sends a phone's
+    requests to both in turn, a phone would get twice --rate. The school's proxy limits each
+    phone once (limit_req on its address, docs/class.md "A school's server"): one phone's burst
+    is refused past 3 × the rate in all, in the API's JSON form naming its address, while
+    another phone is served; the servers' own limits (here 1000) never reached."""
+    with behind_nginx(postgres, page, tmp_path, 1000, proxy_rate=2) as (first, _, proxy):
+        answers = [proxy.request("GET", "/api/class/XXXXXX/pooled", source="127.0.0.3")
+                   for _ in range(24)]
+        served = [status for status, _ in answers if status != 429]
+        refused = [answer for status, answer in answers if status == 429]
+        # Both processes answered (404: no such class), 6 at once and about 2 a second more.
+        assert 6 <= len(served) <= 12 and set(served) == {404}, answers
+        assert refused and all(isinstance(a, dict) for a in refused), refused
+        assert refused[-1]["error"].startswith("too many requests from 127.0.0.3:"), refused
+        assert proxy.request("GET", "/explorer.html", source="127.0.0.4")[0] == 200
+
