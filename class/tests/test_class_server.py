@@ -368,7 +368,7 @@ def test_bad_options_exit_2_in_one_line_naming_the_option_and_write_nothing(tmp_
              (["--proxy", "nginx.local"], "--proxy"), (["--bogus"], "--bogus")]
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join([str(pathlib.Path(__file__).resolve().parents[2] /
-                                             "python"), env.get("PYTHONPATH", "")])
+                                             "class"), env.get("PYTHONPATH", "")])
     for args, option in cases:
         data = tmp_path / "data"
         full = ["--data", str(data), "--page", str(page), *args]
