@@ -30,6 +30,8 @@ void add_simulate(py::module_& m);
 void add_flipcheck(py::module_& m);
 /// bookspin.fit and its value bookspin.Fit.
 void add_fit(py::module_& m);
+/// bookspin.prepare_recording and bookspin.live_fit, and their values.
+void add_live_fit(py::module_& m);
 /// bookspin.frames and its iterator, bookspin.Frames.
 void add_frames(py::module_& m);
 /// bookspin.render.

@@ -20,6 +20,7 @@ PYBIND11_MODULE(bookspin, m) {
   bookspin::python::add_simulate(m);
   bookspin::python::add_flipcheck(m);
   bookspin::python::add_fit(m);
+  bookspin::python::add_live_fit(m);
   bookspin::python::add_frames(m);
   bookspin::python::add_render(m);
 }

@@ -45,30 +45,6 @@ std::string no_rigid_body_note() {
 }
 constexpr double kPi = 3.14159265358979323846;
 
-/// Each flight's samples, its recording's bias removed, its times from its start; the samples
-/// where the gyroscope read its range left out (docs/phone-lab.md, "Saturation") unless too few
-/// would be left. Each toss's group is its recording (its bias correction is that recording's).
-std::vector<TossData> toss_data(const GyroRecording& recording, const FlightSearch& search,
-                                const Saturation& saturation) {
-  std::vector<TossData> data;
-  for (const Flight& f : search.flights) {
-    TossData d;
-    d.group = static_cast<int>(part_index(recording.parts, f.t_start));
-    const Eigen::Vector3d bias = recording.parts[d.group].bias;
-    d.samples = f.last - f.first + 1;
-    for (int i = f.first; i <= f.last; ++i) d.at_range += saturation.at_range[i] ? 1 : 0;
-    const bool drop = d.samples - d.at_range >= kMinSamplesLeft;
-    d.saturated = drop ? d.at_range : 0;  // kept where too few would remain: none left out
-    for (int i = f.first; i <= f.last; ++i) {
-      if (drop && saturation.at_range[i]) continue;
-      d.tau.push_back(recording.t[i] - f.t_start);
-      d.omega.push_back(recording.omega[i] - bias);
-    }
-    data.push_back(std::move(d));
-  }
-  return data;
-}
-
 /// The residual ω_fitted − ω_measured of each toss at each of its samples (rad/s).
 std::vector<std::vector<Eigen::Vector3d>> residuals_of(const std::vector<TossData>& data,
                                                        const Parameters& p, physics::DragLaw law) {

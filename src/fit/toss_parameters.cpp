@@ -3,8 +3,30 @@
 #include <algorithm>
 
 #include "fit/flights.hpp"
+#include "fit/pool.hpp"
 
 namespace bookspin::fit {
+
+std::vector<TossData> toss_data(const GyroRecording& recording, const FlightSearch& search,
+                                const Saturation& saturation) {
+  std::vector<TossData> data;
+  for (const Flight& f : search.flights) {
+    TossData d;
+    d.group = static_cast<int>(part_index(recording.parts, f.t_start));
+    const Eigen::Vector3d bias = recording.parts[d.group].bias;
+    d.samples = f.last - f.first + 1;
+    for (int i = f.first; i <= f.last; ++i) d.at_range += saturation.at_range[i] ? 1 : 0;
+    const bool drop = d.samples - d.at_range >= kMinSamplesLeft;
+    d.saturated = drop ? d.at_range : 0;  // kept where too few would remain: none left out
+    for (int i = f.first; i <= f.last; ++i) {
+      if (drop && saturation.at_range[i]) continue;
+      d.tau.push_back(recording.t[i] - f.t_start);
+      d.omega.push_back(recording.omega[i] - bias);
+    }
+    data.push_back(std::move(d));
+  }
+  return data;
+}
 
 void normalise(Parameters& p) {
   const Eigen::Vector3d m = p.moments();

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "fit/saturation.hpp"
 #include "fit/toss_fit.hpp"
 #include "fit/toss_model.hpp"
 
@@ -52,6 +53,13 @@ void normalise(Parameters& p);
 /// (flights.hpp: euler_inertia), or the moments given (settings.moments); each ω0 the first
 /// sample's, each drag rate 0.
 Parameters start(const std::vector<TossData>& data, const FitSettings& settings);
+
+/// Each of `search`'s flights of `recording` (pooled) as the fit takes it: its samples, its
+/// recording's bias removed, its times from its start; the samples where the gyroscope read its
+/// range (`saturation`) left out (docs/phone-lab.md, "Saturation") unless too few would be
+/// left. Each toss's group is its recording (its bias correction is that recording's).
+std::vector<TossData> toss_data(const GyroRecording& recording, const FlightSearch& search,
+                                const Saturation& saturation);
 
 /// How many of `data`'s tosses are in each of `groups` groups (TossData::group).
 std::vector<int> tosses_per_group(const std::vector<TossData>& data, std::size_t groups);
