@@ -13,12 +13,12 @@ moment:
   - the other N - K plain HTTPS clients, each joining and posting a real recording (the seven
     in turn, each restamped so that no two are the same recording: the fit refuses one given
     twice), timed from their POST's start to its 201 and to the stream.
-Then the seconds to the pooled fit that holds every toss; the server's CPU seconds and peak
-memory from /proc. With --classes C (a school: docs/performance.md, "A school at once") the
-store is a PostgreSQL the bench starts (as class/tests/class_server.py does), C classes are
-made on it (each by a server started with --new, then stopped), and the one server serves all
-of them, PHONES phones in each, the browsers in the first. Prints a table; run from the
-repository root:
+Then the seconds to the live estimate and to the exact pooled fit that hold every toss; the
+server's CPU seconds and peak memory from /proc. With --classes C (a school: docs/performance.md,
+"A school at once") the store is a PostgreSQL the bench starts (as class/tests/class_server.py
+does), C classes are made on it (each by a server started with --new, then stopped), and the
+one server serves all of them, PHONES phones in each, the browsers in the first. Prints a
+table; run from the repository root:
 
     PYTHONPATH=build/python python3 bench/class_load.py BUILD_DIR [PHONES] [--browsers K]
         [--classes C] [--postgres]
@@ -114,6 +114,7 @@ def peak_rss_mib():
 
 
 seen, seen_lock, last_pooled = {}, threading.Lock(), [None]
+live_at = {}  # class -> when its projector first showed the live estimate of every toss
 fitted = {code: threading.Event() for code, _ in classes}
 
 
@@ -132,6 +133,8 @@ def listen(code, key):
                 for toss in student["tosses"]:
                     seen.setdefault(toss["toss"], now)
         pooled = last_pooled[0] = state["pooled"]
+        if pooled.get("live") and pooled["recordings"] == phones and pooled["ratios"]:
+            live_at.setdefault(code, now)
         if pooled["recordings"] == phones and not pooled["fitting"] and \
                 (pooled["ratios"] or pooled["error"]):
             fitted[code].set()
@@ -276,6 +279,9 @@ if browsers:
     print(line("browser: kept to the event stream",
                [seen[browser_toss[b]] - kept_at[b] for b in range(browsers)]))
 each = f" (each class's {phones})" if a.classes > 1 else ""
+if live_at:
+    print(f"  the moment all were released to the live estimate of all {phones}{each}: "
+          f"{max(live_at.values()) - start:.2f} s (docs/class.md, \"The projector's numbers\")")
 print(f"  the moment all were released to the pooled fit of all {phones}{each}: " +
       (f"{end - start:.2f} s" if all_fitted else f"not within {a.fit_wait:g} s") +
       (f" (the fit's error: {last_pooled[0]['error']})" if all_fitted and last_pooled[0]["error"]

@@ -62,6 +62,36 @@ def read_gyro_csv(text: str | bytes, file: str = "recording.csv") -> dict[str, A
     """A recording's CSV text read as `bookspin fit` reads a file: {"t": (N,) s, "omega": (N, 3)
     rad/s}; bookspin.Error with the reader's line naming `file`, row and column."""
 
+class PreparedRecording:
+    """A recording prepared once for the live fit (bookspin.prepare_recording)."""
+    name: str
+    """Its file-safe stem."""
+    source: str
+    """The file read."""
+    flights: int
+    """Its free flights found."""
+    nbytes: int
+    """The bytes it holds (its samples in flight and its values)."""
+
+def prepare_recording(recording: Union[str, os.PathLike[str]]) -> PreparedRecording:
+    """What a recording needs of its own for the live fit, done once: read as `bookspin fit`
+    reads it, its flights found, its own joint fit; bookspin.Error with the command's line for
+    a recording it cannot read."""
+
+class LiveFit:
+    """A live pooled fit (bookspin.live_fit)."""
+    body: dict[str, Optional[float]]
+    """I1_over_I3, I2_over_I3, I3_over_I3, I1_sigma, I2_sigma (the covariance's; None where it
+    cannot be computed), axis1_x ... axis3_z, recordings, tosses."""
+    tosses: list[dict[str, Union[float, int, str, None]]]
+    """One per flight: recording, flight, toss, t_start, t_end, omega0_x/y/z, drag_rate,
+    half_period_measured, half_period_fitted, residual_rms."""
+
+def live_fit(recordings: Sequence[PreparedRecording],
+             start: Optional[LiveFit] = None) -> LiveFit:
+    """The recordings' pooled body in one joint solve warm-started from `start` (a previous
+    live fit) or, with none, from a grown joint fit: near `bookspin fit`'s, not its numbers."""
+
 flight_requirements: dict[str, float]
 """What the finder needs to keep a flight (the defaults every door uses): flight_omega rad/s
 (turning at least this fast throughout), min_flight s (at least this long), rest_omega rad/s

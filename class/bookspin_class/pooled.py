@@ -3,7 +3,11 @@ fitted as one body by bookspin.fit([files…]), the very fit `bookspin fit FILES
 set the teacher downloads (the same CSV text in files of the same names), so the projector's
 numbers are the command's to the digit. The fit runs in a worker thread (the module releases
 the GIL while it fits), one at a time; tosses that arrive during a fit are fitted together by
-the next (a burst is one refit)."""
+the next (a burst is one refit). During a burst the projector shows the live estimate
+(docs/class.md, "The projector's numbers"): each toss prepared once as it arrives
+(bookspin.prepare_recording, in the worker threads, in parallel), the set refitted warm from the
+last estimate (bookspin.live_fit), marked "live"; once the class is quiet for QUIET_SECONDS the
+exact fit follows."""
 import asyncio
 import concurrent.futures
 import datetime
@@ -20,7 +24,7 @@ import zipfile
 
 import bookspin
 
-from bookspin_class.judgement import Judge
+from bookspin_class.judgement import Judge, text_key
 
 
 def lower_priority():
@@ -35,6 +39,9 @@ def lower_priority():
 
 
 RETRY_SECONDS = 1.0  # a refit that could not read the store tries again after this
+# No new toss for this long after a live estimate, and the exact fit follows (docs/class.md,
+# "The projector's numbers").
+QUIET_SECONDS = float(os.environ.get("BOOKSPIN_CLASS_QUIET_SECONDS", "3"))
 
 # The threads the classes' fits run in (the gate, ClassServer.gate, lets one at a time).
 FIT_THREADS = concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1,
@@ -139,8 +146,41 @@ def fit_set(files):
         "ratios": [body["I1_over_I3"], body["I2_over_I3"], body["I3_over_I3"]],
         "sigma": [body["I1_sigma"], body["I2_sigma"], 0.0],
         "summary": list(fit.summary),
+        "live": False,
     }
     return pooled, flights
+
+
+def prepare_toss(stem, text):
+    """bookspin.prepare_recording of one toss's CSV text, written as stem.csv in a fresh
+    folder (the name the exact fit gives it): what the live fit needs of it, done once; None
+    for a recording the module cannot read (the exact fit says why). Called in a worker
+    thread."""
+    with tempfile.TemporaryDirectory(prefix="bookspin-class-") as folder:
+        try:
+            return bookspin.prepare_recording(write_set(folder, {stem: text})[0])
+        except bookspin.Error:
+            return None
+
+
+def live_set(prepared, start=None):
+    """bookspin.live_fit of the prepared tosses {stem: PreparedRecording} from `start` (the
+    last live fit, or None): (pooled dict marked live, {stem: [flight rows]}, the live fit, the
+    next one's start), as fit_set's; raises bookspin.Error. Called in a worker thread."""
+    fit = bookspin.live_fit(list(prepared.values()), start)
+    body = fit.body
+    flights = {stem: [] for stem in prepared}
+    for row in fit.tosses:
+        flights.setdefault(row["recording"], []).append(flight_of(row, row["flight"]))
+    pooled = {
+        "tosses": len(fit.tosses),
+        "recordings": len(prepared),
+        "ratios": [body["I1_over_I3"], body["I2_over_I3"], body["I3_over_I3"]],
+        "sigma": [body["I1_sigma"], body["I2_sigma"], 0.0],
+        "summary": [],
+        "live": True,
+    }
+    return pooled, flights, fit
 
 
 def flight_of(row, number=None):
@@ -247,19 +287,25 @@ class PooledFit:
         self.fitting = False
         self.result = {"tosses": 0, "recordings": 0, "ratios": None, "sigma": None,
                        "updated": None, "error": None, "error_summary": None, "set_aside": [],
-                       "judging": False}
+                       "judging": False, "live": False}
         self.flights = {}
+        self.wake = asyncio.Event()  # set by request(): a toss came during the quiet wait
+        self.prepared = {}  # stem -> (text_key, bookspin.PreparedRecording or None)
+        self.live_start = None  # the last live fit: the next one's start
         self.judgements = {}  # stem -> {"outlier", "why", "residual_share", "own_residual_share"}
         self.fits = 0
 
     def request(self):
         self.dirty = True
+        self.wake.set()
         if self.task is None or self.task.done():
             self.task = asyncio.get_running_loop().create_task(self._run())
 
     async def _run(self):
-        while self.dirty:
+        exact_next = False  # the class quiet after a live estimate: the exact fit's turn
+        while self.dirty or exact_next:
             self.dirty = False
+            shown_live = False
             async with self.gate:
                 try:
                     files = await asyncio.to_thread(self.files_of)  # the store, off the loop
@@ -273,47 +319,96 @@ class PooledFit:
                     continue
                 if not files and self.result["recordings"] == 0 and \
                         self.result["error"] is None:
+                    exact_next = False
                     continue  # nothing held, nothing shown: no refit to tell the projector of
                 self.fitting = True
-                aside = {}
+                if files and not exact_next:
+                    shown_live = await self._live(files)
+                exact_next = False
+                if not shown_live:
+                    await self._exact(files)
+            if shown_live:
+                # The exact fit once no toss has come for QUIET_SECONDS; a toss before then is
+                # another live estimate first.
+                self.wake.clear()
                 try:
-                    if not files:
-                        pooled, flights = {"tosses": 0, "recordings": 0, "ratios": None,
-                                           "sigma": None}, {}
-                        error = None
-                    else:
-                        try:
-                            pooled, flights, aside = await asyncio.get_running_loop(
-                            ).run_in_executor(FIT_THREADS, fit_class, files, self.judge)
-                            error = None
-                        except bookspin.Error as failure:
-                            pooled, flights = {"tosses": 0, "recordings": len(files),
-                                               "ratios": None, "sigma": None}, {}
-                            error = str(failure)
-                finally:
-                    self.fitting = False
-                self.fits += 1
-                pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
-                    timespec="seconds")
-                pooled["error"] = error
-                pooled["error_summary"] = error_summary(error) if error else None
-                pooled["set_aside"] = [{"file": f"{stem}.csv", "why": why,
-                                        "why_summary": error_summary(why)}
-                                       for stem, why in sorted(aside.items())]
-                kept = {stem: text for stem, text in files.items() if stem not in aside}
-                pooled["judging"] = bool(kept) and not self.dirty
-                self.result, self.flights = pooled, flights
-                self.judgements = {stem: j for stem, j in self.judgements.items() if stem in kept}
-                self.on_done()
-                if not pooled["judging"]:
-                    continue
-                # The judgements: each recording against the body the others give.
-                own, judged = await asyncio.get_running_loop().run_in_executor(
-                    FIT_THREADS, self._judge, kept)
-                add_alone(flights, own)
-                self.judgements = judged
-                self.result = dict(pooled, judging=False)
-            self.on_done()
+                    await asyncio.wait_for(self.wake.wait(), QUIET_SECONDS)
+                except asyncio.TimeoutError:
+                    exact_next = not self.dirty
+
+    async def _live(self, files):
+        """The live estimate of `files` published (result["live"] true): each toss new to the
+        class prepared (in the worker threads, in parallel), then the set refitted from the
+        last estimate. False where there is none (no toss the module can read, or a fit that
+        fails): the exact fit then follows at once."""
+        loop = asyncio.get_running_loop()
+        keys = {stem: text_key(text) for stem, text in files.items()}
+        new = [stem for stem in files if self.prepared.get(stem, (None, None))[0] != keys[stem]]
+        made = await asyncio.gather(*(loop.run_in_executor(FIT_THREADS, prepare_toss, stem,
+                                                           files[stem]) for stem in new))
+        self.prepared = {stem: self.prepared[stem] for stem in files if stem in self.prepared}
+        self.prepared.update({stem: (keys[stem], one) for stem, one in zip(new, made)})
+        usable = {stem: one for stem, (_, one) in sorted(self.prepared.items())
+                  if one is not None and one.flights > 0}
+        if not usable:
+            return False
+        try:
+            pooled, flights, self.live_start = await loop.run_in_executor(
+                FIT_THREADS, live_set, usable, self.live_start)
+        except bookspin.Error:
+            self.live_start = None
+            return False
+        pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
+            timespec="seconds")
+        pooled.update(error=None, error_summary=None, judging=False,
+                      set_aside=self.result.get("set_aside", []))
+        self.result, self.flights = pooled, flights
+        self.judgements = {stem: j for stem, j in self.judgements.items() if stem in files}
+        self.on_done()
+        return True
+
+    async def _exact(self, files):
+        """The exact fit of `files` (fit_class: `bookspin fit`'s numbers), published with
+        result["live"] false, then each toss's judgement."""
+        aside = {}
+        try:
+            if not files:
+                pooled, flights = {"tosses": 0, "recordings": 0, "ratios": None,
+                                   "sigma": None, "live": False}, {}
+                error = None
+            else:
+                try:
+                    pooled, flights, aside = await asyncio.get_running_loop(
+                    ).run_in_executor(FIT_THREADS, fit_class, files, self.judge)
+                    error = None
+                except bookspin.Error as failure:
+                    pooled, flights = {"tosses": 0, "recordings": len(files),
+                                       "ratios": None, "sigma": None, "live": False}, {}
+                    error = str(failure)
+        finally:
+            self.fitting = False
+        self.fits += 1
+        pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
+            timespec="seconds")
+        pooled["error"] = error
+        pooled["error_summary"] = error_summary(error) if error else None
+        pooled["set_aside"] = [{"file": f"{stem}.csv", "why": why,
+                                "why_summary": error_summary(why)}
+                               for stem, why in sorted(aside.items())]
+        kept = {stem: text for stem, text in files.items() if stem not in aside}
+        pooled["judging"] = bool(kept) and not self.dirty
+        self.result, self.flights = pooled, flights
+        self.judgements = {stem: j for stem, j in self.judgements.items() if stem in kept}
+        self.on_done()
+        if not pooled["judging"]:
+            return
+        # The judgements: each recording against the body the others give.
+        own, judged = await asyncio.get_running_loop().run_in_executor(
+            FIT_THREADS, self._judge, kept)
+        add_alone(flights, own)
+        self.judgements = judged
+        self.result = dict(pooled, judging=False)
+        self.on_done()
 
     def _judge(self, files):
         own = self.judge.own_fits(files)

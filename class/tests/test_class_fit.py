@@ -243,3 +243,47 @@ def test_a_failed_fit_tells_the_student_what_to_do_in_one_sentence(server):
     status, me = server.request("GET", f"/api/class/{server.code}/me", token=anna)
     assert status == 200 and me["pooled"]["error_summary"] == summary, me["pooled"]
     assert me["pooled"]["error"] == pooled["error"]
+
+
+def test_a_burst_shows_the_live_estimate_then_the_exact_fit_of_the_downloaded_set(server,
+                                                                                   tmp_path):
+    """During a burst the projector's numbers are the live estimate, marked live and with the
+    exact fit still to come (fitting); once the class is quiet the exact fit replaces it, marked
+    not live, `bookspin fit` of the downloaded set to the digit (docs/class.md, "The projector's
+    numbers")."""
+    require_real()
+    names = ["12-10-56", "12-13-01", "12-13-51", "12-22-44"]
+    seen = []
+    for name in names:
+        post(server, server.join(f"student {name}"), real_csv(name), name)
+        # Each toss's estimate shown before the next comes (the class not yet quiet).
+        end = time.monotonic() + 120
+        while time.monotonic() < end:
+            pooled = server.state()["pooled"]
+            if pooled["recordings"] == len(seen) + 1 and pooled["ratios"] is not None:
+                seen.append(pooled)
+                break
+            time.sleep(0.1)
+    assert len(seen) == len(names), seen
+    # Each toss of the burst came within QUIET_SECONDS of the last: every one shown live, the
+    # exact fit yet to come.
+    for pooled in seen:
+        assert pooled["live"] is True and pooled["fitting"] is True, pooled
+        assert pooled["tosses"] >= pooled["recordings"] and pooled["sigma"][0] > 0, pooled
+    state = judged_state(server, len(names))
+    pooled = state["pooled"]
+    assert pooled["live"] is False and pooled["error"] is None, pooled
+    status, data = server.request("GET", f"/api/class/{server.code}/download", token=server.key)
+    assert status == 200
+    with zipfile.ZipFile(io.BytesIO(data)) as archive:
+        archive.extractall(tmp_path)
+    files = sorted(str(p) for p in tmp_path.glob("class-*/*.csv"))
+    assert len(files) == len(names), files
+    run_cli("fit", *files, "-o", tmp_path / "out")
+    body = read_csv(next((tmp_path / "out").glob("*-fit-body.csv")))
+    assert [float(body["I1_over_I3"][0]), float(body["I2_over_I3"][0])] == pooled["ratios"][:2]
+    # The live estimate was near it: within the exact fit's own 2σ.
+    last = seen[-1]
+    for i in range(2):
+        assert abs(last["ratios"][i] - pooled["ratios"][i]) <= 2 * pooled["sigma"][i], \
+            (last, pooled)
