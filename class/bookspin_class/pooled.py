@@ -327,9 +327,9 @@ class PooledFit:
                 exact_next = False
                 if not shown_live:
                     await self._exact(files)
-            if shown_live:
+            if shown_live and not self.dirty:
                 # The exact fit once no toss has come for QUIET_SECONDS; a toss before then is
-                # another live estimate first.
+                # another live estimate first (one that came during this one: at once).
                 self.wake.clear()
                 try:
                     await asyncio.wait_for(self.wake.wait(), QUIET_SECONDS)
@@ -342,7 +342,8 @@ class PooledFit:
         last estimate. False where there is none (no toss the module can read, or a fit that
         fails): the exact fit then follows at once."""
         loop = asyncio.get_running_loop()
-        keys = {stem: text_key(text) for stem, text in files.items()}
+        keys = await asyncio.to_thread(  # 350 texts of 70 kB: off the loop
+            lambda: {stem: text_key(text) for stem, text in files.items()})
         new = [stem for stem in files if self.prepared.get(stem, (None, None))[0] != keys[stem]]
         made = await asyncio.gather(*(loop.run_in_executor(FIT_THREADS, prepare_toss, stem,
                                                            files[stem]) for stem in new))

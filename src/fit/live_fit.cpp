@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "fit/half_period.hpp"
 #include "fit/joint_fit.hpp"
+#include "fit/rigid_bounds.hpp"
 #include "fit/toss_solve.hpp"
 #include "physics/damped_exact.hpp"
 
@@ -148,12 +149,14 @@ LiveFit live_fit(const std::vector<const PreparedRecording*>& recordings, const 
   std::vector<TossData> data;
   std::vector<RecordingPart> parts;
   Parameters p;
+  std::size_t started = 0;  // flights the start holds
   p.omega0.clear();
   p.e.clear();
   for (std::size_t g = 0; g < order.size(); ++g) {
     const PreparedRecording& r = *order[g];
     const auto found = earlier.find(r.name);
     const bool again = found != earlier.end() && found->second->omega0.size() == r.data.size();
+    if (again) started += r.data.size();
     for (std::size_t k = 0; k < r.data.size(); ++k) {
       data.push_back(r.data[k]);
       data.back().group = static_cast<int>(g);
@@ -167,8 +170,24 @@ LiveFit live_fit(const std::vector<const PreparedRecording*>& recordings, const 
                      ": no free flight found");
   const BiasFreedom bias = bias_freedom(parts, data, {});
   const std::string source = order.front()->source;
-  const Solved solved = start ? warm_solve(data, *start, bias, settings, source, p)
-                              : cold_solve(data, bias, settings, source, p);
+  // Warm where the start holds most of the flights: a body fitted on a few recordings is far
+  // from that of many (from one recording's, 350's took 22 s and ended at no rigid body), so a
+  // set mostly new to it, or a warm solve that ends far from rigid, is solved cold.
+  const Parameters given = p;
+  Solved solved;
+  bool warm = start && 2 * started >= data.size();
+  if (warm) {
+    try {
+      solved = warm_solve(data, *start, bias, settings, source, p);
+      warm = settings.moments || !far_from_rigid(p.moments());
+    } catch (const InputError&) {
+      warm = false;  // did not converge from there: cold
+    }
+  }
+  if (!warm) {
+    p = given;
+    solved = cold_solve(data, bias, settings, source, p);
+  }
   normalise(p);
   LiveFit fit;
   fit.recordings = static_cast<int>(order.size());

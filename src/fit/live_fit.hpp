@@ -49,8 +49,11 @@ struct LiveFit {
 };
 
 /// The live fit of `recordings` (one or more, each prepared once; any order: they are taken in
-/// their canonical order, by name then source) from `start` (a previous live fit of some of
-/// them, or none: the body of the recording with the most flights that has its own). Throws
+/// their canonical order, by name then source) from `start`, a previous live fit of some of
+/// them: one solve of everything from its values, where it holds at least half of the flights
+/// and the solve ends at a rigid body (rigid_bounds.hpp); else, and with no start, cold: the
+/// exact fit's joint fit, grown over each flight from Euler's equations' body (joint_fit.hpp),
+/// each flight's ω0 from its own fit. Throws
 /// InputError for none, for one given twice (by source), when no recording has a flight, or
 /// when the solve does not converge; Interrupted when settings.stop answers a signal.
 LiveFit live_fit(const std::vector<const PreparedRecording*>& recordings, const LiveFit* start,
