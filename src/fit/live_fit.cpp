@@ -14,8 +14,6 @@
 namespace bookspin::fit {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// `given` in their canonical order (fit/pool.hpp: by name, then by source), each source once.
 std::vector<const PreparedRecording*> canonical(
     const std::vector<const PreparedRecording*>& given) {
@@ -110,13 +108,7 @@ void body_sigma(const std::vector<TossData>& data, const Parameters& p, const So
                 const BiasFreedom& bias, const FitSettings& settings, LiveFit& fit) {
   const bool fixed = settings.moments.has_value();
   const bool dragged = settings.drag != physics::DragLaw::none;
-  std::vector<std::vector<Eigen::Vector3d>> residuals(data.size());
-  for (std::size_t k = 0; k < data.size(); ++k) {
-    const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), settings.drag,
-                          false);
-    for (std::size_t i = 0; i < data[k].tau.size(); ++i)
-      residuals[k].push_back(model.omega(data[k].tau[i]) - data[k].omega[i]);
-  }
+  const std::vector<std::vector<Eigen::Vector3d>> residuals = residuals_of(data, p, settings.drag);
   const int parameter_count =
       (fixed ? 3 : 5) + 3 * bias.fitted_groups + (dragged ? 4 : 3) * static_cast<int>(data.size());
   const double variance = 2.0 * solved.cost / std::max(1, solved.residuals - parameter_count) *
@@ -124,16 +116,7 @@ void body_sigma(const std::vector<TossData>& data, const Parameters& p, const So
   const std::optional<Covariances> covariance =
       covariances(data, p, fixed, bias.fitted, settings.drag);
   if (!covariance) return;
-  const Eigen::MatrixXd& c = covariance->body;
-  Eigen::Vector3d axis_sigma;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    axis_sigma[i] = std::sqrt(variance * (c(j, j) + c(k, k))) * 180.0 / kPi;
-  }
-  fit.axis_sigma_deg = axis_sigma;
-  fit.ratio_sigma = fixed ? Eigen::Vector3d::Zero()
-                          : Eigen::Vector3d(fit.ratios[0] * std::sqrt(variance * c(3, 3)),
-                                            fit.ratios[1] * std::sqrt(variance * c(4, 4)), 0.0);
+  body_sigmas(covariance->body, variance, fit.ratios, fixed, fit.axis_sigma_deg, fit.ratio_sigma);
 }
 
 }  // namespace

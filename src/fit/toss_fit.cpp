@@ -45,18 +45,6 @@ std::string no_rigid_body_note() {
 }
 constexpr double kPi = 3.14159265358979323846;
 
-/// The residual ω_fitted − ω_measured of each toss at each of its samples (rad/s).
-std::vector<std::vector<Eigen::Vector3d>> residuals_of(const std::vector<TossData>& data,
-                                                       const Parameters& p, physics::DragLaw law) {
-  std::vector<std::vector<Eigen::Vector3d>> residuals(data.size());
-  for (std::size_t k = 0; k < data.size(); ++k) {
-    const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), law, false);
-    for (std::size_t i = 0; i < data[k].tau.size(); ++i)
-      residuals[k].push_back(model.omega(data[k].tau[i]) - data[k].omega[i]);
-  }
-  return residuals;
-}
-
 /// Uncertainties (docs/phone-lab.md, "Error bars"): (JᵀJ)⁻¹ scaled by the residual variance and
 /// by the residual's correlation, into the body's σ (the folds' spread widens them later), each
 /// freely fitted bias correction's (into `parts`) and each toss's; a note where the covariance
@@ -80,18 +68,7 @@ TossSigmas uncertainties(const std::vector<TossData>& data, const Parameters& p,
     return sigmas;
   }
   const Eigen::MatrixXd& c = covariance->body;
-  Eigen::Vector3d axis_sigma;
-  for (int i = 0; i < 3; ++i) {
-    // Axis i turns by the rotation's components about the other two axes.
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    axis_sigma[i] = std::sqrt(variance * (c(j, j) + c(k, k))) * 180.0 / kPi;
-  }
-  body.axis_sigma_deg = axis_sigma;
-  if (fixed)
-    body.ratio_sigma = Eigen::Vector3d::Zero();
-  else
-    body.ratio_sigma = Eigen::Vector3d(body.ratios[0] * std::sqrt(variance * c(3, 3)),
-                                       body.ratios[1] * std::sqrt(variance * c(4, 4)), 0.0);
+  body_sigmas(c, variance, body.ratios, fixed, body.axis_sigma_deg, body.ratio_sigma);
   for (std::size_t g = 0; g < parts.size(); ++g) {
     if (!bias.free[g]) continue;
     const int e = covariance->bias_row[g];

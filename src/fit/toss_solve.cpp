@@ -270,6 +270,32 @@ std::optional<Covariances> covariances(const std::vector<TossData>& data, const 
   return result;
 }
 
+std::vector<std::vector<Eigen::Vector3d>> residuals_of(const std::vector<TossData>& data,
+                                                       const Parameters& p, physics::DragLaw law) {
+  std::vector<std::vector<Eigen::Vector3d>> residuals(data.size());
+  for (std::size_t k = 0; k < data.size(); ++k) {
+    const TossModel model(p.R0, p.aa.data(), p.log_ratios.data(), p.omega0[k].data(), law, false);
+    for (std::size_t i = 0; i < data[k].tau.size(); ++i)
+      residuals[k].push_back(model.omega(data[k].tau[i]) - data[k].omega[i]);
+  }
+  return residuals;
+}
+
+void body_sigmas(const Eigen::MatrixXd& c, double variance, const Eigen::Vector3d& ratios,
+                 bool fixed, std::optional<Eigen::Vector3d>& axis_sigma_deg,
+                 std::optional<Eigen::Vector3d>& ratio_sigma) {
+  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+  Eigen::Vector3d axis_sigma;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    axis_sigma[i] = std::sqrt(variance * (c(j, j) + c(k, k))) * kDegrees;
+  }
+  axis_sigma_deg = axis_sigma;
+  ratio_sigma = fixed ? Eigen::Vector3d::Zero()
+                      : Eigen::Vector3d(ratios[0] * std::sqrt(variance * c(3, 3)),
+                                        ratios[1] * std::sqrt(variance * c(4, 4)), 0.0);
+}
+
 double correlation_inflation(const std::vector<std::vector<Eigen::Vector3d>>& residuals) {
   double lag0 = 0.0, lag1 = 0.0;
   for (const std::vector<Eigen::Vector3d>& r : residuals)

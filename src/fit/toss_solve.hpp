@@ -64,6 +64,18 @@ std::optional<Covariances> covariances(const std::vector<TossData>& data, const 
                                        bool moments_fixed, const std::vector<bool>& bias_fitted,
                                        physics::DragLaw law);
 
+/// The residual ω_fitted − ω_measured of each toss of `data` at each of its samples (rad/s),
+/// under `p` and the drag law `law`.
+std::vector<std::vector<Eigen::Vector3d>> residuals_of(const std::vector<TossData>& data,
+                                                       const Parameters& p, physics::DragLaw law);
+
+/// The body's σ from its covariance `c` (Covariances::body, unscaled) times `variance`: each
+/// axis's direction (degrees: it turns by the rotation's components about the other two) and
+/// each of `ratios`' (0 with the moments `fixed`; the third always 0).
+void body_sigmas(const Eigen::MatrixXd& c, double variance, const Eigen::Vector3d& ratios,
+                 bool fixed, std::optional<Eigen::Vector3d>& axis_sigma_deg,
+                 std::optional<Eigen::Vector3d>& ratio_sigma);
+
 /// The correlation inflation of a least-squares variance: with residuals correlated from
 /// sample to sample (lag-1 autocorrelation ρ, each component), a variance from (JᵀJ)⁻¹ is
 /// (1 + ρ)/(1 − ρ) times too small (an AR(1) residual); 1 for white residuals, capped at 400.
