@@ -361,7 +361,8 @@ class PooledFit:
             return False
         pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
             timespec="seconds")
-        pooled.update(error=None, error_summary=None, judging=False,
+        # Every toss held, as the exact fit counts them (one with no flight too).
+        pooled.update(recordings=len(files), error=None, error_summary=None, judging=False,
                       set_aside=self.result.get("set_aside", []))
         self.result, self.flights = pooled, flights
         self.judgements = {stem: j for stem, j in self.judgements.items() if stem in files}
