@@ -380,15 +380,20 @@ class PooledFit:
                 error = None
             else:
                 try:
-                    pooled, flights, aside = await asyncio.get_running_loop(
-                    ).run_in_executor(FIT_THREADS, fit_class, files, self.judge)
+                    done = await self._beside_live(files)
+                    if done is None:  # a toss came while it ran: the loop fits them all again
+                        self.dirty = True
+                        return
+                    pooled, flights, aside = done
                     error = None
                 except bookspin.Error as failure:
                     pooled, flights = {"tosses": 0, "recordings": len(files),
                                        "ratios": None, "sigma": None, "live": False}, {}
                     error = str(failure)
-        finally:
             self.fitting = False
+        except BaseException:
+            self.fitting = False
+            raise
         self.fits += 1
         pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
             timespec="seconds")
@@ -411,6 +416,31 @@ class PooledFit:
         self.judgements = judged
         self.result = dict(pooled, judging=False)
         self.on_done()
+
+    async def _beside_live(self, files):
+        """fit_class(files) in a worker thread; a toss that comes while it runs (minutes at 350)
+        has its live estimate at once, beside it, and makes it stale: None then, and the exact
+        fit of them all follows once the class is quiet again (docs/class.md, "The projector's
+        numbers"). Raises bookspin.Error as fit_class does."""
+        exact = asyncio.get_running_loop().run_in_executor(FIT_THREADS, fit_class, files,
+                                                           self.judge)
+        stale = False
+        while not exact.done():
+            if not self.dirty:
+                self.wake.clear()
+                woken = asyncio.ensure_future(self.wake.wait())
+                await asyncio.wait({exact, woken}, return_when=asyncio.FIRST_COMPLETED)
+                woken.cancel()
+                continue
+            self.dirty, stale = False, True
+            try:
+                newer = await asyncio.to_thread(self.files_of)
+            except Exception:  # the store lost: the loop reads it again after this fit
+                continue
+            if newer:
+                await self._live(newer)
+        result = exact.result()
+        return None if stale else result
 
     def _judge(self, files):
         own = self.judge.own_fits(files)

@@ -16,7 +16,7 @@ from class_server import require_packages  # noqa: E402
 
 require_packages('aiohttp', 'segno')
 
-from class_server import REAL, Server, in_ci, real_csv, require_real
+from class_server import REAL, Server, in_ci, real_csv, require_real, restamped
 from conftest import read_csv, run_cli
 
 TRAINED_PHONES = ["12-10-56", "12-13-01"]   # the threshold was decided on these …
@@ -287,3 +287,41 @@ def test_a_burst_shows_the_live_estimate_then_the_exact_fit_of_the_downloaded_se
     for i in range(2):
         assert abs(last["ratios"][i] - pooled["ratios"][i]) <= 2 * pooled["sigma"][i], \
             (last, pooled)
+
+
+def test_a_toss_during_the_exact_fit_has_its_live_estimate_and_the_stale_fit_is_not_shown(
+        tmp_path, page):
+    """A toss that comes while the exact fit runs (minutes at 350) is not held up by it: its
+    live estimate is shown beside it, and the exact fit of the set without it, stale, is never
+    shown; the exact fit of them all follows once the class is quiet again (docs/class.md, "The
+    projector's numbers")."""
+    require_real()
+    names = sorted(p.name for p in REAL.iterdir() if p.is_dir())
+    server = Server(tmp_path / "data", page, env={"BOOKSPIN_CLASS_QUIET_SECONDS": "0.5"}).start()
+    try:
+        n = 28  # the seven, four times, restamped: an exact fit of some seconds
+        for i in range(n):
+            csv = restamped(real_csv(names[i % len(names)]), 1000.0 * (i // len(names)))
+            post(server, server.join(f"student {i}"), csv, f"r{i}")
+        end = time.monotonic() + 300
+        while not (server.state()["pooled"].get("live") and
+                   server.state()["pooled"]["recordings"] == n) and time.monotonic() < end:
+            time.sleep(0.1)
+        time.sleep(1.0)  # past the quiet: the exact fit of the 28 runs
+        before = server.state()["pooled"]
+        if not (before["live"] and before["fitting"]):
+            pytest.skip(f"the exact fit of {n} was done before a toss could come during it: "
+                        f"{before['live']}, {before['fitting']}")
+        post(server, server.join("late"), restamped(real_csv(names[0]), 9000.0), "late")
+        seen = []
+        while time.monotonic() < end:
+            pooled = server.state()["pooled"]
+            seen.append((pooled["live"], pooled["recordings"], pooled["fitting"]))
+            if pooled["recordings"] == n + 1 and not pooled["fitting"]:
+                break
+            time.sleep(0.1)
+        assert (True, n + 1, True) in seen, seen
+        assert (False, n, True) not in seen and (False, n, False) not in seen, seen
+        assert seen[-1] == (False, n + 1, False), seen
+    finally:
+        server.stop()
