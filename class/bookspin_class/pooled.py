@@ -42,6 +42,8 @@ RETRY_SECONDS = 1.0  # a refit that could not read the store tries again after t
 # No new toss for this long after a live estimate, and the exact fit follows (docs/class.md,
 # "The projector's numbers").
 QUIET_SECONDS = float(os.environ.get("BOOKSPIN_CLASS_QUIET_SECONDS", "3"))
+# A live estimate waits for the tosses that keep coming to be prepared for at most this long.
+PREPARE_SECONDS = 5.0
 
 # The threads the classes' fits run in (the gate, ClassServer.gate, lets one at a time).
 FIT_THREADS = concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1,
@@ -323,7 +325,7 @@ class PooledFit:
                     continue  # nothing held, nothing shown: no refit to tell the projector of
                 self.fitting = True
                 if files and not exact_next:
-                    shown_live = await self._live(files)
+                    shown_live, files = await self._live(files)
                 exact_next = False
                 if not shown_live:
                     await self._exact(files)
@@ -339,26 +341,32 @@ class PooledFit:
     async def _live(self, files):
         """The live estimate of `files` published (result["live"] true): each toss new to the
         class prepared (in the worker threads, in parallel), then the set refitted from the
-        last estimate. False where there is none (no toss the module can read, or a fit that
-        fails): the exact fit then follows at once."""
+        last estimate. Returns (whether one was shown, the files it holds); none where no toss
+        the module can read or the fit fails: the exact fit then follows at once. Tosses that come while the others are
+        prepared are prepared too before the fit (for at most PREPARE_SECONDS): a burst is one
+        fit of all, not one of each part of it."""
         loop = asyncio.get_running_loop()
-        keys = await asyncio.to_thread(  # 350 texts of 70 kB: off the loop
-            lambda: {stem: text_key(text) for stem, text in files.items()})
-        new = [stem for stem in files if self.prepared.get(stem, (None, None))[0] != keys[stem]]
-        made = await asyncio.gather(*(loop.run_in_executor(FIT_THREADS, prepare_toss, stem,
-                                                           files[stem]) for stem in new))
-        self.prepared = {stem: self.prepared[stem] for stem in files if stem in self.prepared}
-        self.prepared.update({stem: (keys[stem], one) for stem, one in zip(new, made)})
+        begun = loop.time()
+        while True:
+            await self._prepare(files)
+            if not self.dirty or loop.time() - begun > PREPARE_SECONDS:
+                break
+            self.dirty = False
+            try:
+                files = await asyncio.to_thread(self.files_of)
+            except Exception:  # the store lost: fit what is prepared; the loop reads it again
+                self.dirty = True
+                break
         usable = {stem: one for stem, (_, one) in sorted(self.prepared.items())
                   if one is not None and one.flights > 0}
         if not usable:
-            return False
+            return False, files
         try:
             pooled, flights, self.live_start = await loop.run_in_executor(
                 FIT_THREADS, live_set, usable, self.live_start)
         except bookspin.Error:
             self.live_start = None
-            return False
+            return False, files
         pooled["updated"] = datetime.datetime.now(datetime.timezone.utc).isoformat(
             timespec="seconds")
         # Every toss held, as the exact fit counts them (one with no flight too).
@@ -367,7 +375,19 @@ class PooledFit:
         self.result, self.flights = pooled, flights
         self.judgements = {stem: j for stem, j in self.judgements.items() if stem in files}
         self.on_done()
-        return True
+        return True, files
+
+    async def _prepare(self, files):
+        """Each toss of `files` new to the class (or whose text changed) prepared, in the
+        worker threads, in parallel; those no longer held forgotten."""
+        loop = asyncio.get_running_loop()
+        keys = await asyncio.to_thread(  # 350 texts of 70 kB: off the loop
+            lambda: {stem: text_key(text) for stem, text in files.items()})
+        new = [stem for stem in files if self.prepared.get(stem, (None, None))[0] != keys[stem]]
+        made = await asyncio.gather(*(loop.run_in_executor(FIT_THREADS, prepare_toss, stem,
+                                                           files[stem]) for stem in new))
+        self.prepared = {stem: self.prepared[stem] for stem in files if stem in self.prepared}
+        self.prepared.update({stem: (keys[stem], one) for stem, one in zip(new, made)})
 
     async def _exact(self, files):
         """The exact fit of `files` (fit_class: `bookspin fit`'s numbers), published with
