@@ -18,7 +18,6 @@ import { TossRecorder, announce } from './gyro_recorder.js';
 import { FitWorker, Cancelled } from './fit_worker.js';
 import { loneSurrogateProblem } from './well_formed.js';
 import { failureHtml, fitFailure } from './fit_failure.js';
-import { afterPaint } from './after_paint.js';
 
 /** The outcome table's columns (LabPanel.showOutcome). */
 const OUTCOME_COLUMNS = ['toss', 'recording', 'flight (s)', 'T/2 measured (s)', 'T/2 predicted ± 2σ (s)', 'within 2σ'];
@@ -226,15 +225,16 @@ export class LabPanel {
   }
 
   /** The panel opened: its head (the title, Close) in the first frame, alone on its ground;
-   * the rest laid out and painted in the frame after that one is on the screen (afterPaint;
-   * docs/explorer.md, "Every tap answered at once"): a whole screen of the lab rastered and
-   * composited at once held the tap's answer past 200 ms on a software GPU. */
+   * the rest laid out and painted in the next frame, asked for once the first is painted
+   * (docs/explorer.md, "Every tap answered at once"): a whole screen of the lab rastered and
+   * composited at once held the tap's answer past 200 ms on a software GPU. Not afterPaint():
+   * where the first frame took under 16 ms it waits 400 ms, and the panel stood empty so long. */
   open() {
     const lab = $('lab');
     if (!lab.hidden) return;
     lab.classList.add('opening');
     lab.hidden = false;
-    afterPaint().then(() => lab.classList.remove('opening'));
+    requestAnimationFrame(() => setTimeout(() => lab.classList.remove('opening'), 0));
   }
   close() { $('lab').hidden = true; }
 
