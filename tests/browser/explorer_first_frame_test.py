@@ -14,10 +14,14 @@ style, layout and paint: what the DOM holds then is what that frame paints. Asse
     row removed, the tick);
   - none of the work the tap sets off is in it: the heavier work (the recording's row made and
     its fit asked, the trace's canvas laid out, the runs rebuilt (window.explorer.rebuilds()),
-    the readout's strip laid out (window.explorer.layouts())) and the 3D view, the sphere and
+    the readout's strip laid out (window.explorer.layouts())), the 3D view, the sphere and
     the plots drawn (window.explorer.framesDrawn(): software GL's frame is the heaviest part of
-    a paint) come in later frames. Where the page drew the view in that frame, or did the work
-    before the frame, the paint waits for it.
+    a paint), the address written (a panel opened or closed, the speed: a new address has the
+    browser draw its bar, a frame of its own) and, opening the lab, its panel under its head
+    come in later frames. Where the page drew the view in that frame, or did the work
+    before the frame, the paint waits for it;
+  - then, settled, the page as it would be had all of it been done at once: the lab's whole
+    panel shown, the address with the panel and the speed, the speed's field.
 Before Record, before Stop (recording, the live trace shown) and with a result shown, the
 Record/Stop button is on the screen where it is, wherever the lab is scrolled, and scrolling
 it into view as WebDriver's click and the bench do scrolls nothing: on a phone a scroll's frame
@@ -67,6 +71,20 @@ LAB_WORK = ("[window.explorer.framesDrawn(), document.querySelectorAll('#labReco
 # strip laid out afresh (Play: main.js, layout).
 PAGE_WORK = "[window.explorer.framesDrawn(), window.explorer.rebuilds(), window.explorer.layouts()]"
 REBUILDS = "return window.explorer.rebuilds()"
+# The address, written after the frame that shows a panel opened or closed, or a new speed (a
+# new address has the browser draw its bar, a frame of its own the answer waited behind).
+ADDRESS_WORK = PAGE_WORK[:-1] + ", location.search + location.hash]"
+# The lab opened: its head alone in the first frame; the rest of the panel (its drop zone, the
+# Record bar) laid out from the frame after, and the address after it.
+OPEN_WORK = ADDRESS_WORK[:-1] + (", document.getElementById('labDrop').getClientRects().length, "
+                                 "document.getElementById('labRecordRow').getClientRects().length]")
+# JavaScript: the lab as it settles after opening: [the panel's parts not shown though not
+# hidden (none: the head-first class gone), the drop zone's and the bar's boxes, the address's
+# panel, the first focused control].
+LAB_SETTLED = """const box = document.getElementById('labBox');
+return [[...box.children].filter((e) => !e.hidden && e.getClientRects().length === 0).map((e) => e.id || e.className),
+        document.getElementById('lab').className, document.getElementById('labDrop').getClientRects().length > 0,
+        document.getElementById('labRecordRow').getClientRects().length > 0, location.hash, document.activeElement.id]"""
 
 
 FAILURES = []
@@ -203,7 +221,13 @@ def main():
                 driver.execute_cdp_cmd("Input.insertText", {"text": "3"})
                 key(driver, "Enter")
             first_frame(driver, "the speed", "keydown", speed,
-                        "window.explorer.state().speed === 3", PAGE_WORK)
+                        "window.explorer.state().speed === 3", ADDRESS_WORK)
+            # Then the field written back and the address with it.
+            written = wait_for(driver, """return [document.getElementById('speed').value,
+                new URLSearchParams(location.search).get('speed')]""", lambda s: s[1] == "3", 30)
+            if written != ["3", "3"]:
+                FAILURES.append(f"the speed: after its frame the field and the address say {written}, not 3")
+                print(f"FAILED: {FAILURES[-1]}")
             settle(driver)
             first_frame(driver, "the second method", "click", lambda: tap(driver, "#compare"),
                         "document.getElementById('compare').checked && "
@@ -214,7 +238,17 @@ def main():
                 FAILURES.append(f"the second method: {runs} runs after its rebuild, not 2")
             settle(driver)
             first_frame(driver, "Phone-toss lab", "click", lambda: tap(driver, "#labOpen"),
-                        "document.getElementById('lab').open", PAGE_WORK)
+                        "document.getElementById('lab').open && "
+                        "document.getElementById('labTitle').getClientRects().length > 0 && "
+                        "document.activeElement === document.getElementById('labClose')", OPEN_WORK)
+            # Settled: the whole panel shown, as a panel opened all at once shows it, and the
+            # address says so.
+            lab = wait_for(driver, LAB_SETTLED, lambda s: s[4] == "#lab" and not s[1], 30)
+            if lab[:5] != [[], "", True, True, "#lab"]:
+                FAILURES.append(f"Phone-toss lab: after its first frame the panel did not settle whole "
+                                f"(parts not shown {lab[0]}, class {lab[1]!r}, drop zone shown {lab[2]}, "
+                                f"Record bar shown {lab[3]}, address {lab[4]!r})")
+                print(f"FAILED: {FAILURES[-1]}")
             settle(driver)
 
             # The lab's controls, a real recording's.
@@ -262,7 +296,11 @@ def main():
                         "[window.explorer.framesDrawn(), document.getElementById('labBusy').textContent]")
             settle(driver)
             first_frame(driver, "Close", "click", lambda: tap(driver, "#labClose"),
-                        "!document.getElementById('lab').open", PAGE_WORK)
+                        "!document.getElementById('lab').open", ADDRESS_WORK)
+            closed = wait_for(driver, "return location.hash", lambda h: h == "", 30)
+            if closed != "":
+                FAILURES.append(f"Close: the address still says {closed!r} after its frame")
+                print(f"FAILED: {FAILURES[-1]}")
             settle(driver, 5)
             drawn = driver.execute_script("const n = window.explorer.framesDrawn(); return n")
             settle(driver, 3)

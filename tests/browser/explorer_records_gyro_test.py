@@ -151,10 +151,14 @@ def devtools(driver):
 
 
 def tap(driver, element_id):
-    """A tap on the element's centre: touchStart and touchEnd through the DevTools protocol."""
-    box = driver.execute_script(
-        "const e = document.getElementById(arguments[0]); e.scrollIntoView({block: 'center'});"
-        "const r = e.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2];", element_id)
+    """A tap on the element's centre once it is shown (as a person taps what is on the screen:
+    the lab's panel comes a frame after its head): touchStart and touchEnd through the DevTools
+    protocol."""
+    box = wait_for(driver,
+                   f"const e = document.getElementById({json.dumps(element_id)}); if (!e.getClientRects().length) return null;"
+                   "e.scrollIntoView({block: 'center'});"
+                   "const r = e.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2];",
+                   bool, 30)
     point = {"x": box[0], "y": box[1]}
     driver.execute_cdp_cmd("Input.dispatchTouchEvent", {"type": "touchStart", "touchPoints": [point]})
     driver.execute_cdp_cmd("Input.dispatchTouchEvent", {"type": "touchEnd", "touchPoints": []})

@@ -36,14 +36,21 @@ export class Address {
       // entry the same as the one before is not pushed again ("Play beside the measurement"
       // pushed the toss's scene twice, once for the scene and once for the lab closing, so
       // Back went to the toss again, rewound, not to the lab).
-      const here = (location.search || location.pathname) + location.hash;
-      if (href !== here) { history.pushState(null, '', href); return; }
+      if (href !== this.here()) { history.pushState(null, '', href); return; }
     }
-    history.replaceState(null, '', href);
+    // The same address is not written again: each write has the browser draw its own bar anew
+    // (a frame of its own, which a tap's answer waited behind on a software GPU).
+    if (href !== this.here()) history.replaceState(null, '', href);
   }
+
+  /** The address as it is, in href()'s own form (`?query#panel`, or the path without a query). */
+  here() { return (location.search || location.pathname) + location.hash; }
 
   /** The next write a new history entry (a scene changed, a panel opened or closed). */
   push() { this.pushing = Boolean(this.live); }
+
+  /** A push asked for and not yet written is not (Back or Forward came first). */
+  forgetPush() { this.pushing = false; }
 
   /** While playing, at frame time `now` (ms): written every half time unit, within the limits. */
   whilePlaying(now) {

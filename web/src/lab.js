@@ -224,7 +224,18 @@ export class LabPanel {
     if (location.hash === '#lab') queueMicrotask(() => this.open());
   }
 
-  open() { $('lab').hidden = false; }
+  /** The panel opened: its head (the title, Close) in the first frame, alone on its ground;
+   * the rest laid out and painted in the next frame, asked for once the first is painted
+   * (docs/explorer.md, "Every tap answered at once"): a whole screen of the lab rastered and
+   * composited at once held the tap's answer past 200 ms on a software GPU. Not afterPaint():
+   * where the first frame took under 16 ms it waits 400 ms, and the panel stood empty so long. */
+  open() {
+    const lab = $('lab');
+    if (!lab.hidden) return;
+    lab.classList.add('opening');
+    lab.hidden = false;
+    requestAnimationFrame(() => setTimeout(() => lab.classList.remove('opening'), 0));
+  }
   close() { $('lab').hidden = true; }
 
   clear() {

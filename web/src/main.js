@@ -284,14 +284,19 @@ function startApp(wasm, engines) {
       if (METHOD_CONTROLS.includes(id)) app.state.tiles = false;  // the two methods chosen
     }
     app.state = app.pacer.limit(app.state, base());
+    if (id === 'speed') {
+      // The speed: the field shows it as typed and the frame loop plays at it from the next
+      // frame; the fields written back (a refused value undone), the readout and the address
+      // after the frame that shows it (docs/explorer.md, "Every tap answered at once").
+      afterPaint().then(() => { app.controls.write(app.state); address.write(); readout(); });
+      return;
+    }
     app.controls.write(app.state);
     // The controls now; the runs and the readout's words after the frame that paints them, the
     // view, the sphere and the plots by the frame loop from the frame after (docs/explorer.md,
     // "Every tap answered at once").
     if (VIEW_CONTROLS.includes(id)) {
-      // The speed moves nothing on the view (the frame loop's pace alone): no pose, no frame of
-      // the 3D view after its answer.
-      if (id !== 'speed') app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
+      app.view.pose(app.runs.list, app.state.showL, app.state.showAxes);
       address.write();
       readout();
     } else {
@@ -342,14 +347,18 @@ function startApp(wasm, engines) {
   // In a class (the address's ?class=CODE): joined, every toss kept goes to the class's server.
   app.classLink = new ClassLink(app.lab.recorder, (name) => wasm.nameProblem(name));
   // A panel opened or closed (its button, Close, Escape, a link's #lab or #judge): a history
-  // entry of its own, so that Back closes it again, and Forward opens it.
-  let restoring = false;
+  // entry of its own, so that Back closes it again, and Forward opens it. Written after the
+  // frame that shows the panel open or closed (afterPaint): a new address has the browser draw
+  // its bar, a frame of its own that the panel's waited behind (docs/explorer.md, "Every tap
+  // answered at once"); Back or Forward before it (popstate) leaves it unwritten.
+  let restoring = false, panelWrites = 0;
   for (const id of ['lab', 'judge']) {
     new MutationObserver(() => {
       wake();
       if (restoring) return;
       address.push();
-      address.write();
+      const mine = ++panelWrites;
+      afterPaint().then(() => { if (mine === panelWrites) address.write(); });
     }).observe($(id), { attributes: true, attributeFilter: ['hidden'] });
   }
   /** Where the address names scene `name` that the page does not hold (a toss fitted in the
@@ -379,6 +388,8 @@ function startApp(wasm, engines) {
   // Back and Forward: the state the address holds, its panels as its hash says.
   window.addEventListener('popstate', () => {
     restoring = true;
+    panelWrites += 1;
+    address.forgetPush();
     // The address's state and panels first: Pause writes the page's state into the address.
     const name = new URLSearchParams(location.search).get('scene') || '';
     app.state = app.pacer.limit(app.controls.fit(space.parse(location.search, space.sceneBase(SCENES, name))), base());
