@@ -76,9 +76,17 @@ class ClassServer:
 
     # The class's pooled fit and its listeners.
     def fit_of(self, code):
+        """The class's fit: fitted here (pooled.PooledFit), or on PostgreSQL read as the fit
+        workers store it (fit_jobs.StoredFit, where `jobs` is set)."""
         if code not in self.fits:
-            self.fits[code] = pooled.PooledFit(lambda: self.kept_files(code),
-                                               lambda: self.notify(code), self.gate)
+            if self.jobs:
+                from bookspin_class import fit_jobs
+                self.fits[code] = fit_jobs.StoredFit(
+                    lambda: fit_jobs.stored(self.store.read, code), self.db,
+                    lambda: self.notify(code))
+            else:
+                self.fits[code] = pooled.PooledFit(lambda: self.kept_files(code),
+                                                   lambda: self.notify(code), self.gate)
         return self.fits[code]
 
     def kept_files(self, code):
@@ -118,7 +126,7 @@ class ClassServer:
 
     def remote_change(self, kind, code):
         """A change of class `code` another server on this PostgreSQL committed (notices.listen;
-        `kind` join, toss, exclude or end): shown on this server's projectors as if made here,
+        `kind` join, toss, exclude, end, or fit: a fit worker stored the class's fit): shown on this server's projectors as if made here,
         refitted where this server keeps the class's fit."""
         if kind == "end":
             self.fits.pop(code, None)
@@ -437,6 +445,7 @@ class ClassServer:
         return await self.explorer(request)
 
     integrity_errors = ()
+    jobs = False  # the fits are fit workers' jobs (PostgreSQL: fit_jobs.py)
     max_tosses = 100
     taught = None  # the code of the class this server was started for
 
