@@ -158,13 +158,14 @@ def release(connection, code, worker):
             "state = 'running'", (code, worker))
 
 
-def stored(read, code):
+def stored(read, code, shown=None):
     """What a server shows of the class's fit, through `read` (Store.read): (the stored result
-    {"result", "flights", "judgements"} or None, its version, the job's version and state or
-    None)."""
-    rows = read("SELECT f.result, f.version, j.version, j.state FROM fit_jobs j LEFT JOIN "
-                "class_fits f ON f.class_code = j.class_code WHERE j.class_code = %s "
-                "ORDER BY f.version DESC LIMIT 1", (code,))
+    {"result", "flights", "judgements"}, None where none is stored or its version is `shown`,
+    the one shown already; its version; the job's version and state, or None)."""
+    rows = read("SELECT CASE WHEN f.version IS DISTINCT FROM %s THEN f.result END, f.version, "
+                "j.version, j.state FROM fit_jobs j LEFT JOIN class_fits f ON f.class_code = "
+                "j.class_code WHERE j.class_code = %s ORDER BY f.version DESC LIMIT 1",
+                (shown, code))
     if not rows:
         return None, None, None, None
     result, version, job_version, state = rows[0]
@@ -188,7 +189,7 @@ class StoredFit:
     shown."""
 
     def __init__(self, read, run, on_done):
-        self.read, self.run, self.on_done = read, run, on_done
+        self.read, self.run, self.on_done = read, run, on_done  # read(shown version)
         self.dirty = False
         self.fitting = False
         self.task = None
@@ -206,13 +207,13 @@ class StoredFit:
         while self.dirty:
             self.dirty = False
             try:
-                found, version, job_version, state = await self.run(self.read)
+                found, version, job_version, state = await self.run(self.read, self.version)
             except Exception as error:  # the store lost (PostgreSQL restarting): again soon
                 say(f"the class's fit waits for the store: {one_line(error)}")
                 self.dirty = True
                 await asyncio.sleep(POLL_SECONDS)
                 continue
-            if found is not None and version != self.version:
+            if found is not None:
                 self.result, self.flights = found["result"], found["flights"]
                 self.judgements, self.version = found["judgements"], version
                 self.fits += 1
@@ -367,7 +368,7 @@ class Worker:
                         "worker took the job)")
                 self.lost = True
                 return
-            if version != self.read_version.get(code):
+            if version != self.read_version.get(code) and not fit.task.done():
                 fit.request()
 
 

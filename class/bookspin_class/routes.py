@@ -82,7 +82,7 @@ class ClassServer:
             if self.jobs:
                 from bookspin_class import fit_jobs
                 self.fits[code] = fit_jobs.StoredFit(
-                    lambda: fit_jobs.stored(self.store.read, code), self.db,
+                    lambda shown: fit_jobs.stored(self.store.read, code, shown), self.db,
                     lambda: self.notify(code))
             else:
                 self.fits[code] = pooled.PooledFit(lambda: self.kept_files(code),

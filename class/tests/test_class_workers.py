@@ -243,7 +243,9 @@ def test_a_server_and_a_fit_worker_killed_mid_burst_lose_no_toss(school_with_wor
         while len(answered) < count // 3:
             time.sleep(0.05)
         second.kill()  # a server process, in the middle of the burst
+        deadline = time.monotonic() + 300  # a guard against a test that hangs, not a timing
         while killed_worker is None:  # the fit worker holding the class's job, while it fits
+            assert time.monotonic() < deadline, "no worker took the class's job"
             held = connection.execute("SELECT worker FROM fit_jobs WHERE class_code = %s AND "
                                       "state = 'running' AND leased_until > now()",
                                       (code,)).fetchone()
@@ -255,9 +257,10 @@ def test_a_server_and_a_fit_worker_killed_mid_burst_lose_no_toss(school_with_wor
     assert len(answered) == count and set(answered.values()) <= {200, 201}
     assert 201 in answered.values()
     survivor = next(w for w in workers if w is not killed_worker)
+    deadline = time.monotonic() + 300  # a guard against a test that hangs, not a timing
     for next_state in projectors:  # each projector until the fit holds every toss
         while True:
-            state = next_state()
+            state = next_state(deadline - time.monotonic())
             pooled = state["pooled"]
             shown = {t["toss"]: t for s in state["students"] for t in s["tosses"]}
             if set(shown) == set(answered) and pooled["recordings"] == count and \
@@ -288,6 +291,12 @@ def test_two_teachers_on_one_database_each_see_only_their_class(postgres, page, 
     worker (the default) and a separate one: each teacher's projector shows its own class's
     tosses and fit, and the teacher's key of one class opens nothing of the other."""
     require_real()
+    for option in ("--fit-worker", "--fit-workers"):  # the laptop's SQLite fits in the server
+        status, out, err = Server(tmp_path / "laptop", page, None,
+                                  [option] + ["0"] * (option == "--fit-workers")).run()
+        assert (status, out) == (2, "") and err == f"bookspin-class: error: {option}: only " \
+            "with --postgres (the laptop's SQLite store fits in the server itself)\n", err
+        assert not (tmp_path / "laptop").exists()
     url = database(postgres)
     first = Server(tmp_path / "first", page, url, ["--rate", "10000"]).start()
     second = Server(tmp_path / "second", page, url, ["--rate", "10000", "--fit-workers", "0"])
@@ -305,7 +314,7 @@ def test_two_teachers_on_one_database_each_see_only_their_class(postgres, page, 
                 assert status == 201, answer
                 posted.setdefault(server.code, set()).add(answer["toss"])
         for server, other in ((first, second), (second, first)):
-            state = server.fitted_state(len(posted[server.code]), timeout=300)
+            state = server.fitted_state(len(posted[server.code]), timeout=120)
             shown = {t["toss"] for s in state["students"] for t in s["tosses"]}
             assert state["code"] == server.code and shown == posted[server.code]
             assert all(t["flights"] for s in state["students"] for t in s["tosses"])
