@@ -185,8 +185,8 @@ def say(line):
 class StoredFit:
     """A server's view of a class's fit on PostgreSQL, in place of pooled.PooledFit (the same
     attributes the routes read): request() reads the stored result again (in `run`, a store
-    thread) and calls on_done; `fitting` while the job holds a version newer than the one
-    shown."""
+    thread) and calls on_done where it or `fitting` changed; `fitting` while the job holds a
+    version newer than the one shown."""
 
     def __init__(self, read, run, on_done):
         self.read, self.run, self.on_done = read, run, on_done  # read(shown version)
@@ -213,13 +213,15 @@ class StoredFit:
                 self.dirty = True
                 await asyncio.sleep(POLL_SECONDS)
                 continue
+            was = (self.version, self.fitting)
             if found is not None:
                 self.result, self.flights = found["result"], found["flights"]
                 self.judgements, self.version = found["judgements"], version
                 self.fits += 1
             self.fitting = state in ("pending", "running") or (
                 job_version is not None and job_version != version)
-            self.on_done()
+            if (self.version, self.fitting) != was:  # else the projector has it already
+                self.on_done()
 
 
 def one_line(error):
@@ -257,6 +259,20 @@ class Worker:
                 if self.connection.broken or self.connection.closed:
                     self.connection = None
                 raise
+
+    def call_again(self, function, *args):
+        """call(), made again every POLL_SECONDS while PostgreSQL is away (restarting), up to
+        30 times: a fit's result outlives a restart of the database under it."""
+        import time
+        for _ in range(30):
+            try:
+                return self.call(function, *args)
+            except Exception as error:
+                if not store.lost_connection(error):
+                    raise
+                last = error
+                time.sleep(POLL_SECONDS)
+        raise last
 
     async def run(self):
         """Takes and fits jobs until cancelled (a job held then is handed back)."""
@@ -319,7 +335,7 @@ class Worker:
         if self.lost:
             return
         try:
-            await asyncio.to_thread(self.call, finish, code, self.name,
+            await asyncio.to_thread(self.call_again, finish, code, self.name,
                                     self.read_version[code])
         except Exception as error:  # the lease expires; another worker fits it again
             say(f"fit worker {self.name}: class {code}: not marked done: {one_line(error)}")
@@ -339,8 +355,8 @@ class Worker:
 
         def write():
             try:
-                if not self.lost and not self.call(store_result, code, self.name, version,
-                                                   text):
+                if not self.lost and not self.call_again(store_result, code, self.name,
+                                                         version, text):
                     self.lost = True
                     say(f"fit worker {self.name}: class {code} version {version}: the lease "
                         "was lost (another worker took the job): this result is dropped")

@@ -381,6 +381,10 @@ def test_postgres_restarted_the_phones_resent_tosses_are_held_once(postgres, pag
         assert held == sorted(ids)
         shown = {t["toss"] for s in server.state()["students"] for t in s["tosses"]}
         assert shown == set(ids)
+        # The server's own fit worker (fit_jobs.py) lost its connections too: it fits them all.
+        state = server.fitted_state(len(ids), timeout=300)
+        assert {t["toss"] for s in state["students"] for t in s["tosses"] if t["flights"]} == \
+            set(ids)
     finally:
         server.stop()
     assert "Traceback" not in server.process.stderr.read()
