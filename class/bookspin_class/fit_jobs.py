@@ -10,8 +10,8 @@ that expired (its worker killed), with `SELECT … FOR UPDATE SKIP LOCKED` (two 
 take one job, nor wait for each other), and renews its lease while it fits. The fit is
 pooled.PooledFit's, unchanged (the pooled body, then the judgements); each result is stored in
 `class_fits`, one row per class and version, only by the worker that holds the lease, and
-announced by NOTIFY; every server process reads it on the notice (StoredFit) and pushes it to
-its projectors. The job is done when the version fitted is still the class's; else it is
+announced by NOTIFY; every server process reads it on the notice (stored_fit.py) and pushes it
+to its projectors. The job is done when the version fitted is still the class's; else it is
 pending again (the changes of a burst coalesce into the next fit)."""
 import asyncio
 import concurrent.futures
@@ -51,9 +51,10 @@ def create_tables(connection):
     with connection.transaction():
         for statement in SCHEMA:
             connection.execute(statement)
-        # A database of before the jobs: every class gets one, so that its tosses are fitted.
+        # A database of before the jobs: every class holding tosses gets one, to fit them.
         connection.execute("INSERT INTO fit_jobs (class_code, version, state) SELECT code, 1, "
-                           "'pending' FROM classes ON CONFLICT (class_code) DO NOTHING")
+                           "'pending' FROM classes c WHERE EXISTS (SELECT 1 FROM tosses t "
+                           "WHERE t.class_code = c.code) ON CONFLICT (class_code) DO NOTHING")
 
 
 def enqueue(code):
@@ -180,48 +181,6 @@ def worker_name(index=0):
 
 def say(line):
     print(f"bookspin-class: {line}", file=sys.stderr, flush=True)
-
-
-class StoredFit:
-    """A server's view of a class's fit on PostgreSQL, in place of pooled.PooledFit (the same
-    attributes the routes read): request() reads the stored result again (in `run`, a store
-    thread) and calls on_done where it or `fitting` changed; `fitting` while the job holds a
-    version newer than the one shown."""
-
-    def __init__(self, read, run, on_done):
-        self.read, self.run, self.on_done = read, run, on_done  # read(shown version)
-        self.dirty = False
-        self.fitting = False
-        self.task = None
-        self.result = {"tosses": 0, "recordings": 0, "ratios": None, "sigma": None,
-                       "updated": None, "error": None, "error_summary": None, "set_aside": [],
-                       "judging": False}
-        self.flights, self.judgements, self.fits, self.version = {}, {}, 0, None
-
-    def request(self):
-        self.dirty = True
-        if self.task is None or self.task.done():
-            self.task = asyncio.get_running_loop().create_task(self._run())
-
-    async def _run(self):
-        while self.dirty:
-            self.dirty = False
-            try:
-                found, version, job_version, state = await self.run(self.read, self.version)
-            except Exception as error:  # the store lost (PostgreSQL restarting): again soon
-                say(f"the class's fit waits for the store: {one_line(error)}")
-                self.dirty = True
-                await asyncio.sleep(POLL_SECONDS)
-                continue
-            was = (self.version, self.fitting)
-            if found is not None:
-                self.result, self.flights = found["result"], found["flights"]
-                self.judgements, self.version = found["judgements"], version
-                self.fits += 1
-            self.fitting = state in ("pending", "running") or (
-                job_version is not None and job_version != version)
-            if (self.version, self.fitting) != was:  # else the projector has it already
-                self.on_done()
 
 
 def one_line(error):

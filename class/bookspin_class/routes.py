@@ -77,11 +77,11 @@ class ClassServer:
     # The class's pooled fit and its listeners.
     def fit_of(self, code):
         """The class's fit: fitted here (pooled.PooledFit), or on PostgreSQL read as the fit
-        workers store it (fit_jobs.StoredFit, where `jobs` is set)."""
+        workers store it (stored_fit.StoredFit, where `jobs` is set)."""
         if code not in self.fits:
             if self.jobs:
-                from bookspin_class import fit_jobs
-                self.fits[code] = fit_jobs.StoredFit(
+                from bookspin_class import fit_jobs, stored_fit
+                self.fits[code] = stored_fit.StoredFit(
                     lambda shown: fit_jobs.stored(self.store.read, code, shown), self.db,
                     lambda: self.notify(code))
             else:
@@ -133,6 +133,9 @@ class ClassServer:
             self.end_streams(code)
         elif kind == "join":
             self.notify(code)
+        elif kind == "fit":  # read again, and shown where it changed (stored_fit.py)
+            if code in self.fits:
+                self.fits[code].request()
         elif code in self.fits or self.listeners.get(code):
             self.changed(code)
 
