@@ -37,6 +37,7 @@ SCHEMA = [
          result TEXT NOT NULL,
          worker TEXT NOT NULL,
          attempt INTEGER NOT NULL,
+         stage INTEGER NOT NULL DEFAULT 1,
          stored TIMESTAMPTZ NOT NULL DEFAULT now(),
          PRIMARY KEY (class_code, version))""",
 ]
@@ -66,8 +67,8 @@ def enqueue(code):
              "ON CONFLICT (class_code) DO UPDATE SET version = fit_jobs.version + 1, "
              "state = CASE WHEN fit_jobs.state = 'running' THEN 'running' ELSE 'pending' END, "
              "attempts = CASE WHEN fit_jobs.state = 'running' AND fit_jobs.leased_until > now() "
-             "THEN fit_jobs.attempts ELSE 0 END, queued = CASE WHEN fit_jobs.state = 'done' THEN now() ELSE fit_jobs.queued "
-             "END", (code,))]
+             "THEN fit_jobs.attempts ELSE 0 END, queued = CASE WHEN fit_jobs.state = 'done' "
+             "THEN now() ELSE fit_jobs.queued END", (code,))]
 
 
 def announce(connection, code, worker):
@@ -116,8 +117,9 @@ def read_class(connection, code):
 def store_result(connection, code, worker, version, result):
     """Stores the fit `result` (JSON text) of the class's `version` and announces it, where this
     worker still holds the job's lease (checked under the job row's lock, in the same
-    transaction): one row per class and version, the class's older ones deleted. False, storing
-    nothing, where the lease was lost."""
+    transaction): one row per class and version, the class's older ones deleted; its `stage`
+    counts the results stored for the version (the live estimate, the exact fit, the
+    judgements). False, storing nothing, where the lease was lost."""
     with connection.transaction():
         held = connection.execute(
             "SELECT attempts FROM fit_jobs WHERE class_code = %s AND worker = %s AND state = "
@@ -127,8 +129,8 @@ def store_result(connection, code, worker, version, result):
         connection.execute(
             "INSERT INTO class_fits (class_code, version, result, worker, attempt) VALUES "
             "(%s, %s, %s, %s, %s) ON CONFLICT (class_code, version) DO UPDATE SET result = "
-            "excluded.result, worker = excluded.worker, attempt = excluded.attempt, stored = "
-            "now()", (code, version, result, worker, held[0]))
+            "excluded.result, worker = excluded.worker, attempt = excluded.attempt, stage = "
+            "class_fits.stage + 1, stored = now()", (code, version, result, worker, held[0]))
         connection.execute("DELETE FROM class_fits WHERE class_code = %s AND version < %s",
                            (code, version))
         announce(connection, code, worker)
@@ -142,8 +144,8 @@ def finish(connection, code, worker, version):
     with connection.transaction():
         row = connection.execute(
             "UPDATE fit_jobs SET state = CASE WHEN version = %s THEN 'done' ELSE 'pending' END, "
-            "worker = NULL, leased_until = NULL, attempts = 0, queued = CASE WHEN version = %s THEN queued "
-            "ELSE now() END WHERE class_code = %s AND worker = %s AND state = 'running' "
+            "worker = NULL, leased_until = NULL, attempts = 0, queued = CASE WHEN version = %s "
+            "THEN queued ELSE now() END WHERE class_code = %s AND worker = %s AND state = 'running' "
             "RETURNING state", (version, version, code, worker)).fetchone()
         if row is not None:
             announce(connection, code, worker)
@@ -161,16 +163,17 @@ def release(connection, code, worker):
 
 def stored(read, code, shown=None):
     """What a server shows of the class's fit, through `read` (Store.read): (the stored result
-    {"result", "flights", "judgements"}, None where none is stored or its version is `shown`,
-    the one shown already; its version; the job's version and state, or None)."""
-    rows = read("SELECT CASE WHEN f.version IS DISTINCT FROM %s THEN f.result END, f.version, "
-                "j.version, j.state FROM fit_jobs j LEFT JOIN class_fits f ON f.class_code = "
-                "j.class_code WHERE j.class_code = %s ORDER BY f.version DESC LIMIT 1",
-                (shown, code))
+    {"result", "flights", "judgements"}, None where none is stored or it is `shown`, the one
+    shown already; its (version, stage); the job's version and state, or None)."""
+    version, stage = shown or (None, None)
+    rows = read("SELECT CASE WHEN f.version IS DISTINCT FROM %s OR f.stage IS DISTINCT FROM %s "
+                "THEN f.result END, f.version, f.stage, j.version, j.state FROM fit_jobs j "
+                "LEFT JOIN class_fits f ON f.class_code = j.class_code WHERE j.class_code = %s "
+                "ORDER BY f.version DESC LIMIT 1", (version, stage, code))
     if not rows:
         return None, None, None, None
-    result, version, job_version, state = rows[0]
-    return (json.loads(result) if result else None), version, job_version, state
+    result, version, stage, job_version, state = rows[0]
+    return (json.loads(result) if result else None), (version, stage), job_version, state
 
 
 def worker_name(index=0):
@@ -238,7 +241,7 @@ class Worker:
         from bookspin_class import notices
         self.wake = asyncio.Event()
         listening = asyncio.get_running_loop().create_task(notices.listen(
-            self.url, self.name, lambda kind, code: self.wake.set(), self.wake.set))
+            self.url, self.name, self.noticed, self.wake.set))
         try:
             while True:
                 try:
@@ -265,6 +268,15 @@ class Worker:
                 except Exception:
                     pass  # the lease expires instead
             self.writes.shutdown(wait=False)
+
+    def noticed(self, kind, code):
+        """A notice on the database: a job may be waiting; a toss of the class being fitted
+        is fitted now by the same PooledFit (its live estimate at once, as on a laptop)."""
+        self.wake.set()
+        fit = self.fits.get(code)
+        if self.job is not None and self.job[0] == code and kind in ("toss", "exclude") and \
+                fit is not None and fit.task is not None and not fit.task.done():
+            fit.request()
 
     async def fit(self, code, version, attempt):
         from bookspin_class import pooled

@@ -126,8 +126,9 @@ class ClassServer:
 
     def remote_change(self, kind, code):
         """A change of class `code` another server on this PostgreSQL committed (notices.listen;
-        `kind` join, toss, exclude, end, or fit: a fit worker stored the class's fit): shown on this server's projectors as if made here,
-        refitted where this server keeps the class's fit."""
+        `kind` join, toss, exclude, end, or fit: a fit worker stored the class's fit): shown on
+        this server's projectors as if made here, refitted where this server keeps the class's
+        fit."""
         if kind == "end":
             self.fits.pop(code, None)
             self.end_streams(code)

@@ -8,9 +8,9 @@ from bookspin_class import fit_jobs, pooled
 
 class StoredFit(pooled.PooledFit):
     """A PooledFit (its attributes, as the routes read them, and its coalesced request()) whose
-    fit is read, not made: `read(the version shown)` (fit_jobs.stored) in `run` (a store
-    thread), and on_done called where the result or `fitting` changed; `fitting` while the job
-    holds a version newer than the one shown."""
+    fit is read, not made: `read(the (version, stage) shown)` (fit_jobs.stored) in `run` (a
+    store thread), and on_done called where the result or `fitting` changed; `fitting` while
+    the job holds a version newer than the one shown, or fits it still."""
 
     def __init__(self, read, run, on_done):
         super().__init__(None, on_done, None)
@@ -32,6 +32,6 @@ class StoredFit(pooled.PooledFit):
                 self.judgements, self.version = found["judgements"], version
                 self.fits += 1
             self.fitting = state in ("pending", "running") or (
-                job_version is not None and job_version != version)
+                job_version is not None and job_version != (version or (None,))[0])
             if (self.version, self.fitting) != was:  # else the projector has it already
                 self.on_done()
