@@ -267,6 +267,7 @@ def test_a_server_and_a_fit_worker_killed_mid_burst_lose_no_toss(school_with_wor
                     not pooled["fitting"] and pooled["ratios"] is not None:
                 break
         assert pooled["tosses"] >= count and not pooled["set_aside"], pooled
+        assert pooled["live"] is False  # the exact fit, stored after the live estimate
         assert all(t["flights"] for t in shown.values()), shown
     assert sorted(p.reconnects for p in projectors) == [0, 1]  # the killed server's, again
     with psycopg.connect(first.postgres) as connection:
@@ -317,6 +318,7 @@ def test_two_teachers_on_one_database_each_see_only_their_class(postgres, page, 
             state = server.fitted_state(len(posted[server.code]), timeout=120)
             shown = {t["toss"] for s in state["students"] for t in s["tosses"]}
             assert state["code"] == server.code and shown == posted[server.code]
+            assert state["pooled"]["live"] is False  # the exact fit, after the live estimate
             assert all(t["flights"] for s in state["students"] for t in s["tosses"])
             status, answer = server.request("GET", f"/api/class/{other.code}/state",
                                             token=server.key)
