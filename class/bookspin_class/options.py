@@ -82,6 +82,17 @@ def parse_options(argv):
                         help="tosses one student may have held (default 100)")
     parser.add_argument("--head-timeout", default="10", metavar="S",
                         help="seconds a connection has to send a request's head (default 10)")
+    parser.add_argument("--fit-workers", default=None, metavar="N",
+                        help="with --postgres: fit workers this server runs itself (default 1; "
+                             "0 leaves the classes' fits to `--fit-worker` processes; "
+                             "docs/class.md, \"A school's server\")")
+    parser.add_argument("--fit-worker", action="store_true",
+                        help="with --postgres: serve nothing, take the classes' fits from the "
+                             "database until Ctrl-C (run as many as the school's machines "
+                             "allow, on any of them)")
+    parser.add_argument("--fit-lease", default="30", metavar="S",
+                        help="seconds a fit worker holds a job without renewing it: a worker "
+                             "killed mid-fit leaves its job to another after this (default 30)")
     options = parser.parse_args(argv)
 
     def number(option, text, kind, low, high):
@@ -108,7 +119,14 @@ def parse_options(argv):
     if options.postgres is not None and not options.postgres.startswith(("postgresql:",
                                                                            "postgres:")):
         raise OptionError(f"--postgres: expected a URL postgresql://…, got '{options.postgres}'")
-    if options.list:
+    options.fit_lease = number("--fit-lease", options.fit_lease, float, 1, 3600)
+    if options.fit_workers is not None or options.fit_worker:
+        if options.postgres is None:
+            what = "--fit-worker" if options.fit_worker else "--fit-workers"
+            raise OptionError(f"{what}: only with --postgres (the laptop's SQLite store fits "
+                              "in the server itself)")
+    options.fit_workers = number("--fit-workers", options.fit_workers or "1", int, 0, 64)
+    if options.list or options.fit_worker:
         return options
     problem = page_problem(pathlib.Path(options.page))
     if problem:

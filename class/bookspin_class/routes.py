@@ -76,9 +76,17 @@ class ClassServer:
 
     # The class's pooled fit and its listeners.
     def fit_of(self, code):
+        """The class's fit: fitted here (pooled.PooledFit), or on PostgreSQL read as the fit
+        workers store it (stored_fit.StoredFit, where `jobs` is set)."""
         if code not in self.fits:
-            self.fits[code] = pooled.PooledFit(lambda: self.kept_files(code),
-                                               lambda: self.notify(code), self.gate)
+            if self.jobs:
+                from bookspin_class import fit_jobs, stored_fit
+                self.fits[code] = stored_fit.StoredFit(
+                    lambda shown: fit_jobs.stored(self.store.read, code, shown), self.db,
+                    lambda: self.notify(code))
+            else:
+                self.fits[code] = pooled.PooledFit(lambda: self.kept_files(code),
+                                                   lambda: self.notify(code), self.gate)
         return self.fits[code]
 
     def kept_files(self, code):
@@ -118,13 +126,17 @@ class ClassServer:
 
     def remote_change(self, kind, code):
         """A change of class `code` another server on this PostgreSQL committed (notices.listen;
-        `kind` join, toss, exclude or end): shown on this server's projectors as if made here,
-        refitted where this server keeps the class's fit."""
+        `kind` join, toss, exclude, end, or fit: a fit worker stored the class's fit): shown on
+        this server's projectors as if made here, refitted where this server keeps the class's
+        fit."""
         if kind == "end":
             self.fits.pop(code, None)
             self.end_streams(code)
         elif kind == "join":
             self.notify(code)
+        elif kind == "fit":  # read again, and shown where it changed (stored_fit.py)
+            if code in self.fits:
+                self.fits[code].request()
         elif code in self.fits or self.listeners.get(code):
             self.changed(code)
 
@@ -437,6 +449,7 @@ class ClassServer:
         return await self.explorer(request)
 
     integrity_errors = ()
+    jobs = False  # the fits are fit workers' jobs (PostgreSQL: fit_jobs.py)
     max_tosses = 100
     taught = None  # the code of the class this server was started for
 

@@ -223,6 +223,7 @@ async def start(options, folder):
         server.integrity_errors = store.integrity_errors()
         server.max_tosses = options.max_tosses
         server.taught = code
+        server.jobs = bool(options.postgres)  # the fits are fit workers' jobs (fit_jobs.py)
         app = web.Application(middlewares=[guard_middleware(options, rate, db)],
                               client_max_size=limits.MAX_BODY)
         routes.add_routes(app, server)
@@ -343,6 +344,11 @@ def announce(options, folder, server, chosen):
         print(f"  projector:    {why}open the address in {address_file} on this laptop (it "
               "holds the teacher's key: not shown here; --open opens it)", flush=True)
     print(f"  certificate:  {server.join_base}/ca.pem  (docs/class.md)", flush=True)
+    if options.postgres:
+        workers = f"{options.fit_workers} fit worker{'s' * (options.fit_workers != 1)} here" \
+            if options.fit_workers else "no fit worker here"
+        print(f"  fits:         jobs in the database, taken by {workers} and each "
+              "`bookspin-class --fit-worker` on it", flush=True)
     if others:
         listed = ", ".join(f"{a.address} ({a.interface})" for a in others)
         print(f"  other addresses: {listed}: --address ADDR sends phones to one", flush=True)
@@ -379,13 +385,32 @@ async def serve(options, stop):
         from bookspin_class import notices
         listening = asyncio.get_running_loop().create_task(notices.listen(
             options.postgres, server.store.instance, server.remote_change, server.refresh))
+    working = None
+    if options.postgres and options.fit_workers:  # the fit jobs, taken here too (fit_jobs.py)
+        from bookspin_class import fit_jobs
+        working = asyncio.get_running_loop().create_task(fit_jobs.serve_workers(
+            options.postgres, options.fit_workers, options.fit_lease, stop))
     await stop.wait()
     retention.cancel()
     if listening is not None:
         listening.cancel()
+    if working is not None:
+        await working
     await runner.cleanup()
     server.close()
     server.store.close()
+
+
+async def fit_worker(options, stop):
+    """--fit-worker: no HTTP; the classes' fits taken from the database until stopped (a job
+    held then is handed back: docs/class.md, "A school's server")."""
+    from bookspin_class import fit_jobs
+    db = await asyncio.to_thread(open_store, options)  # the tables, made where missing
+    description = db.description
+    db.close()
+    print(f"{PROGRAM}: fit worker {fit_jobs.worker_name()} takes the classes' fits from "
+          f"{description} (lease {options.fit_lease:g} s); Ctrl-C stops it", flush=True)
+    await fit_jobs.serve_workers(options.postgres, 1, options.fit_lease, stop)
 
 
 def main(argv):
@@ -414,7 +439,7 @@ def main(argv):
         loop = asyncio.get_running_loop()
         for sig in (signal.SIGINT, signal.SIGTERM):
             loop.add_signal_handler(sig, stop.set)
-        await serve(options, stop)
+        await (fit_worker(options, stop) if options.fit_worker else serve(options, stop))
 
     try:
         asyncio.run(run())

@@ -182,10 +182,13 @@ class Store:
     def notice(self, kind, code):
         """The statement that tells the other servers on this PostgreSQL of a change of class
         `code` (CHANNEL), to run in the change's transaction (delivered at its commit, never for
-        a change rolled back); none on SQLite, whose one server is the only one."""
+        a change rolled back), with the class's fit job (fit_jobs.enqueue) for a change of its
+        tosses; none on SQLite, whose one server is the only one."""
         if self.marker == "?":
             return []
-        return [("SELECT pg_notify(?, ?)", (CHANNEL, f"{kind} {code} {self.instance}"))]
+        from bookspin_class import fit_jobs  # a change of the fitted set: the class's fit job
+        jobs = fit_jobs.enqueue(code) if kind in ("toss", "exclude") else []
+        return jobs + [("SELECT pg_notify(?, ?)", (CHANNEL, f"{kind} {code} {self.instance}"))]
 
     def _sql(self, statement):
         return statement if self.marker == "?" else statement.replace("?", "%s")
@@ -240,6 +243,10 @@ class Store:
             if getattr(connection, "closed", False) or getattr(connection, "broken", False):
                 self.local.connection = None
             raise
+
+    def read(self, statement, args=()):
+        """The rows of one reading statement (fit_jobs.stored), as _read."""
+        return self._read(statement, args)
 
     def _write(self, statements):
         """Runs (statement, args) pairs as one transaction, committed before it returns."""
@@ -495,12 +502,16 @@ def read_only_reason(path):
 
 def open_postgres(url):
     """A school's PostgreSQL by URL (libpq's form: postgresql://USER@HOST/DB or
-    postgresql:///DB?host=/socket/dir), the same schema."""
+    postgresql:///DB?host=/socket/dir), the same schema, and the fit jobs' tables
+    (fit_jobs.py)."""
     import psycopg
+    from bookspin_class import fit_jobs
     connection = psycopg.connect(url)
-    return Store(connection, "%s", "PostgreSQL " + connection.info.dbname,
-                 reader=lambda: psycopg.connect(url, autocommit=True),
-                 reconnect=lambda: psycopg.connect(url))
+    opened = Store(connection, "%s", "PostgreSQL " + connection.info.dbname,
+                   reader=lambda: psycopg.connect(url, autocommit=True),
+                   reconnect=lambda: psycopg.connect(url))
+    fit_jobs.create_tables(connection)  # the classes' fits, taken by fit workers
+    return opened
 
 
 def integrity_errors():

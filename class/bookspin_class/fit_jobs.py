@@ -1,0 +1,369 @@
+"""The classes' fits as jobs in PostgreSQL (docs/class.md, "A school's server"): any fit worker,
+in a server process or started alone (`bookspin-class --fit-worker`) on this machine or another,
+takes them from the database; no queue of our own making.
+
+One row of `fit_jobs` per class: `version` is raised, and the job made pending, in the very
+transaction that holds, leaves out or puts back one of the class's tosses (enqueue, through
+Store.notice), so that a change a phone was answered for is never without its job, whatever
+process dies after. A worker claims the oldest job that is pending, or running under a lease
+that expired (its worker killed), with `SELECT … FOR UPDATE SKIP LOCKED` (two workers never
+take one job, nor wait for each other), and renews its lease while it fits. The fit is
+pooled.PooledFit's, unchanged (the pooled body, then the judgements); each result is stored in
+`class_fits`, one row per class and version, only by the worker that holds the lease, and
+announced by NOTIFY; every server process reads it on the notice (stored_fit.py) and pushes it
+to its projectors. The job is done when the version fitted is still the class's; else it is
+pending again (the changes of a burst coalesce into the next fit)."""
+import asyncio
+import concurrent.futures
+import json
+import os
+import socket
+import sys
+
+from bookspin_class import store
+
+SCHEMA = [
+    """CREATE TABLE IF NOT EXISTS fit_jobs (
+         class_code TEXT PRIMARY KEY REFERENCES classes(code) ON DELETE CASCADE,
+         version BIGINT NOT NULL,
+         state TEXT NOT NULL CHECK (state IN ('pending', 'running', 'done')),
+         worker TEXT,
+         leased_until TIMESTAMPTZ,
+         attempts INTEGER NOT NULL DEFAULT 0,
+         queued TIMESTAMPTZ NOT NULL DEFAULT now())""",
+    """CREATE TABLE IF NOT EXISTS class_fits (
+         class_code TEXT NOT NULL REFERENCES classes(code) ON DELETE CASCADE,
+         version BIGINT NOT NULL,
+         result TEXT NOT NULL,
+         worker TEXT NOT NULL,
+         attempt INTEGER NOT NULL,
+         stage INTEGER NOT NULL DEFAULT 1,
+         stored TIMESTAMPTZ NOT NULL DEFAULT now(),
+         PRIMARY KEY (class_code, version))""",
+]
+
+LEASE_SECONDS = 30.0  # a worker's hold on a job, renewed every third of it while it fits
+POLL_SECONDS = 1.0    # a worker with nothing to do looks again after this (expired leases)
+MAX_ATTEMPTS = 5      # a job whose worker died this often is left until the class changes
+
+
+def create_tables(connection):
+    """The job tables, beside the store's (store.open_postgres)."""
+    with connection.transaction():
+        for statement in SCHEMA:
+            connection.execute(statement)
+        # A database of before the jobs: every class holding tosses gets one, to fit them.
+        connection.execute("INSERT INTO fit_jobs (class_code, version, state) SELECT code, 1, "
+                           "'pending' FROM classes c WHERE EXISTS (SELECT 1 FROM tosses t "
+                           "WHERE t.class_code = c.code) ON CONFLICT (class_code) DO NOTHING")
+
+
+def enqueue(code):
+    """The statement that makes the class's job pending for its next version, coalesced (one
+    job a class; a job being fitted stays the running worker's, which fits again at its end,
+    or under its expired lease the next worker's): run in the transaction of the change
+    (Store.notice). Its attempts count again from 0 unless it is running."""
+    return [("INSERT INTO fit_jobs (class_code, version, state) VALUES (%s, 1, 'pending') "
+             "ON CONFLICT (class_code) DO UPDATE SET version = fit_jobs.version + 1, "
+             "state = CASE WHEN fit_jobs.state = 'running' THEN 'running' ELSE 'pending' END, "
+             "attempts = CASE WHEN fit_jobs.state = 'running' AND fit_jobs.leased_until > now() "
+             "THEN fit_jobs.attempts ELSE 0 END, queued = CASE WHEN fit_jobs.state = 'done' "
+             "THEN now() ELSE fit_jobs.queued END", (code,))]
+
+
+def announce(connection, code, worker):
+    connection.execute("SELECT pg_notify(%s, %s)", (store.CHANNEL, f"fit {code} {worker}"))
+
+
+def claim(connection, worker, lease):
+    """(class code, version, attempt) of the job this worker now holds for `lease` seconds, or
+    None: the oldest pending, or running under an expired lease, that no other worker is
+    claiming at this moment (SKIP LOCKED)."""
+    with connection.transaction():
+        row = connection.execute(
+            "UPDATE fit_jobs SET state = 'running', worker = %s, attempts = attempts + 1, "
+            "leased_until = now() + make_interval(secs => %s) WHERE class_code = ("
+            "SELECT class_code FROM fit_jobs WHERE attempts < %s AND (state = 'pending' OR "
+            "(state = 'running' AND leased_until < now())) ORDER BY queued, class_code "
+            "LIMIT 1 FOR UPDATE SKIP LOCKED) RETURNING class_code, version, attempts",
+            (worker, lease, MAX_ATTEMPTS)).fetchone()
+    return tuple(row) if row else None
+
+
+def renew(connection, code, worker, lease):
+    """The class's version where this worker still holds its job (its lease made `lease`
+    seconds again); None where it lost it (expired and taken by another)."""
+    with connection.transaction():
+        row = connection.execute(
+            "UPDATE fit_jobs SET leased_until = now() + make_interval(secs => %s) "
+            "WHERE class_code = %s AND worker = %s AND state = 'running' RETURNING version",
+            (lease, code, worker)).fetchone()
+    return row[0] if row else None
+
+
+def read_class(connection, code):
+    """(version, {stem: csv text} of the tosses not left out) of one snapshot of the class."""
+    from bookspin_class.pooled import file_stem
+    with connection.transaction():
+        connection.execute("SET TRANSACTION ISOLATION LEVEL REPEATABLE READ")
+        row = connection.execute("SELECT version FROM fit_jobs WHERE class_code = %s",
+                                 (code,)).fetchone()
+        rows = connection.execute(
+            "SELECT s.name, t.seq, t.csv FROM tosses t JOIN students s ON s.id = t.student "
+            "WHERE t.class_code = %s AND t.excluded IS NULL ORDER BY t.seq", (code,)).fetchall()
+    return (row[0] if row else 0), {file_stem(name, seq): csv for name, seq, csv in rows}
+
+
+def store_result(connection, code, worker, version, result):
+    """Stores the fit `result` (JSON text) of the class's `version` and announces it, where this
+    worker still holds the job's lease (checked under the job row's lock, in the same
+    transaction): one row per class and version, the class's older ones deleted; its `stage`
+    counts the results stored for the version (the live estimate, the exact fit, the
+    judgements). False, storing nothing, where the lease was lost."""
+    with connection.transaction():
+        held = connection.execute(
+            "SELECT attempts FROM fit_jobs WHERE class_code = %s AND worker = %s AND state = "
+            "'running' AND leased_until > now() FOR UPDATE", (code, worker)).fetchone()
+        if held is None:
+            return False
+        connection.execute(
+            "INSERT INTO class_fits (class_code, version, result, worker, attempt) VALUES "
+            "(%s, %s, %s, %s, %s) ON CONFLICT (class_code, version) DO UPDATE SET result = "
+            "excluded.result, worker = excluded.worker, attempt = excluded.attempt, stage = "
+            "class_fits.stage + 1, stored = now()", (code, version, result, worker, held[0]))
+        connection.execute("DELETE FROM class_fits WHERE class_code = %s AND version < %s",
+                           (code, version))
+        announce(connection, code, worker)
+    return True
+
+
+def finish(connection, code, worker, version):
+    """Ends this worker's hold on the job: done where `version` (the one fitted) is still the
+    class's, pending again where a change came during the fit (its attempts counted again from
+    0: this one succeeded). False where the lease was lost."""
+    with connection.transaction():
+        row = connection.execute(
+            "UPDATE fit_jobs SET state = CASE WHEN version = %s THEN 'done' ELSE 'pending' END, "
+            "worker = NULL, leased_until = NULL, attempts = 0, queued = CASE WHEN version = %s "
+            "THEN queued ELSE now() END WHERE class_code = %s AND worker = %s AND state = 'running' "
+            "RETURNING state", (version, version, code, worker)).fetchone()
+        if row is not None:
+            announce(connection, code, worker)
+    return row is not None
+
+
+def release(connection, code, worker):
+    """A worker that stops hands its job back at once (pending; its attempt not counted)."""
+    with connection.transaction():
+        connection.execute(
+            "UPDATE fit_jobs SET state = 'pending', worker = NULL, leased_until = NULL, "
+            "attempts = GREATEST(attempts - 1, 0) WHERE class_code = %s AND worker = %s AND "
+            "state = 'running'", (code, worker))
+
+
+def stored(read, code, shown=None):
+    """What a server shows of the class's fit, through `read` (Store.read): (the stored result
+    {"result", "flights", "judgements"}, None where none is stored or it is `shown`, the one
+    shown already; its (version, stage); the job's version and state, or None)."""
+    version, stage = shown or (None, None)
+    rows = read("SELECT CASE WHEN f.version IS DISTINCT FROM %s OR f.stage IS DISTINCT FROM %s "
+                "THEN f.result END, f.version, f.stage, j.version, j.state FROM fit_jobs j "
+                "LEFT JOIN class_fits f ON f.class_code = j.class_code WHERE j.class_code = %s "
+                "ORDER BY f.version DESC LIMIT 1", (version, stage, code))
+    if not rows:
+        return None, None, None, None
+    result, version, stage, job_version, state = rows[0]
+    return (json.loads(result) if result else None), (version, stage), job_version, state
+
+
+def worker_name(index=0):
+    """HOST:PID (and -INDEX for a server's second worker on): one word, for the notices."""
+    name = f"{socket.gethostname()}:{os.getpid()}"
+    return name if index == 0 else f"{name}-{index}"
+
+
+def say(line):
+    print(f"bookspin-class: {line}", file=sys.stderr, flush=True)
+
+
+def one_line(error):
+    text = str(error).strip()
+    return text.splitlines()[0] if text else type(error).__name__
+
+
+class Worker:
+    """A fit worker: takes the jobs of every class of the PostgreSQL at `url`, one at a time,
+    and fits each with pooled.PooledFit (kept per class between jobs, so that what it keeps of
+    the last fit serves the next). Its own connection, used from one thread at a time."""
+
+    def __init__(self, url, lease=LEASE_SECONDS, name=None):
+        import threading
+        self.url, self.lease, self.name = url, lease, name or worker_name()
+        self.lock = threading.Lock()
+        self.connection = None
+        self.writes = concurrent.futures.ThreadPoolExecutor(1, thread_name_prefix="fit-jobs")
+        self.fits = {}       # code -> pooled.PooledFit
+        self.read_version = {}  # code -> the version its last files were read at
+        self.job = None      # (code, version, attempt) held
+        self.lost = False
+        self.pending = []    # the stores of the job's results, in order
+        self.wake = None
+
+    def call(self, function, *args):
+        """function(connection, *args) on this worker's connection, made again where lost."""
+        import psycopg
+        with self.lock:
+            if self.connection is None or self.connection.closed or self.connection.broken:
+                self.connection = psycopg.connect(self.url, autocommit=True)
+            try:
+                return function(self.connection, *args)
+            except psycopg.Error:
+                if self.connection.broken or self.connection.closed:
+                    self.connection = None
+                raise
+
+    def call_again(self, function, *args):
+        """call(), made again every POLL_SECONDS while PostgreSQL is away (restarting), up to
+        30 times: a fit's result outlives a restart of the database under it."""
+        import time
+        for _ in range(30):
+            try:
+                return self.call(function, *args)
+            except Exception as error:
+                if not store.lost_connection(error):
+                    raise
+                last = error
+                time.sleep(POLL_SECONDS)
+        raise last
+
+    async def run(self):
+        """Takes and fits jobs until cancelled (a job held then is handed back)."""
+        from bookspin_class import notices
+        self.wake = asyncio.Event()
+        listening = asyncio.get_running_loop().create_task(notices.listen(
+            self.url, self.name, self.noticed, self.wake.set))
+        try:
+            while True:
+                try:
+                    self.job = await asyncio.to_thread(self.call, claim, self.name, self.lease)
+                except Exception as error:  # PostgreSQL away: again soon
+                    say(f"fit worker {self.name} waits for the store: {one_line(error)}")
+                    self.job = None
+                    await asyncio.sleep(POLL_SECONDS)
+                    continue
+                if self.job is None:
+                    self.wake.clear()
+                    try:
+                        await asyncio.wait_for(self.wake.wait(), POLL_SECONDS)
+                    except asyncio.TimeoutError:
+                        pass
+                    continue
+                await self.fit(*self.job)
+                self.job = None
+        finally:
+            listening.cancel()
+            if self.job is not None:
+                try:
+                    await asyncio.to_thread(self.call, release, self.job[0], self.name)
+                except Exception:
+                    pass  # the lease expires instead
+            self.writes.shutdown(wait=False)
+
+    def noticed(self, kind, code):
+        """A notice on the database: a job may be waiting; a toss of the class being fitted
+        is fitted now by the same PooledFit (its live estimate at once, as on a laptop)."""
+        self.wake.set()
+        fit = self.fits.get(code)
+        if self.job is not None and self.job[0] == code and kind in ("toss", "exclude") and \
+                fit is not None and fit.task is not None and not fit.task.done():
+            fit.request()
+
+    async def fit(self, code, version, attempt):
+        from bookspin_class import pooled
+        fit = self.fits.get(code)
+        if fit is None:
+            fit = self.fits[code] = pooled.PooledFit(lambda: self.files(code),
+                                                     lambda: self.done(code),
+                                                     asyncio.Semaphore(1))
+            try:  # what was shown goes on being shown until this fit replaces it
+                found = (await asyncio.to_thread(self.call, lambda c: stored(
+                    lambda s, a: c.execute(s, a).fetchall(), code)))[0]
+            except Exception:
+                found = None
+            if found is not None:
+                fit.result, fit.flights = found["result"], found["flights"]
+                fit.judgements = found["judgements"]
+        self.lost, self.pending = False, []
+        self.read_version[code] = version
+        fit.request()
+        renewing = asyncio.get_running_loop().create_task(self.renew(code, fit))
+        try:
+            await fit.task
+        finally:
+            renewing.cancel()
+        for write in self.pending:
+            await write
+        if self.lost:
+            return
+        try:
+            await asyncio.to_thread(self.call_again, finish, code, self.name,
+                                    self.read_version[code])
+        except Exception as error:  # the lease expires; another worker fits it again
+            say(f"fit worker {self.name}: class {code}: not marked done: {one_line(error)}")
+
+    def files(self, code):
+        """PooledFit's files_of, in a thread: the class's files and the version they are of."""
+        version, files = self.call(read_class, code)
+        self.read_version[code] = version
+        return files
+
+    def done(self, code):
+        """PooledFit's on_done, on the event loop: the result stored in order, off the loop."""
+        fit = self.fits[code]
+        text = json.dumps({"result": fit.result, "flights": fit.flights,
+                           "judgements": fit.judgements}, ensure_ascii=False)
+        version = self.read_version[code]
+
+        def write():
+            try:
+                if not self.lost and not self.call_again(store_result, code, self.name,
+                                                         version, text):
+                    self.lost = True
+                    say(f"fit worker {self.name}: class {code} version {version}: the lease "
+                        "was lost (another worker took the job): this result is dropped")
+            except Exception as error:
+                self.lost = True
+                say(f"fit worker {self.name}: class {code}: result not stored: "
+                    f"{one_line(error)}")
+
+        self.pending.append(asyncio.get_running_loop().run_in_executor(self.writes, write))
+
+    async def renew(self, code, fit):
+        """Renews the lease every third of it while the fit runs; a newer version of the class
+        (a change during the fit) is fitted again by the same PooledFit, as a burst is."""
+        while True:
+            await asyncio.sleep(self.lease / 3.0)
+            try:
+                version = await asyncio.to_thread(self.call, renew, code, self.name,
+                                                  self.lease)
+            except Exception as error:
+                say(f"fit worker {self.name}: lease not renewed: {one_line(error)}")
+                continue
+            if version is None:
+                if not self.lost:
+                    say(f"fit worker {self.name}: class {code}: the lease was lost (another "
+                        "worker took the job)")
+                self.lost = True
+                return
+            if version != self.read_version.get(code) and not fit.task.done():
+                fit.request()
+
+
+async def serve_workers(url, count, lease, stop):
+    """`count` workers in this process until `stop` is set (a server's own, or --fit-worker)."""
+    tasks = [asyncio.get_running_loop().create_task(
+        Worker(url, lease, worker_name(i)).run()) for i in range(count)]
+    await stop.wait()
+    for task in tasks:
+        task.cancel()
+    await asyncio.gather(*tasks, return_exceptions=True)
