@@ -192,7 +192,7 @@ class Judge:
     def _run(self, stems, work, keep):
         if not stems:
             return
-        from bookspin_class.pooled import lower_priority  # the fits yield to the tosses
+        from bookspin_class.fit_threads import lower_priority  # the fits yield to the tosses
         with concurrent.futures.ThreadPoolExecutor(max_workers=self.workers,
                                                    initializer=lower_priority) as pool:
             for stem, fit in zip(stems, pool.map(work, stems)):

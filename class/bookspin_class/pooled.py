@@ -9,7 +9,6 @@ the next (a burst is one refit). During a burst the projector shows the live est
 last estimate (bookspin.live_fit), marked "live"; once the class is quiet for QUIET_SECONDS the
 exact fit follows."""
 import asyncio
-import concurrent.futures
 import datetime
 import io
 import math
@@ -18,24 +17,13 @@ import pathlib
 import re
 import sys
 import tempfile
-import threading
 import unicodedata
 import zipfile
 
 import bookspin
 
+from bookspin_class.fit_threads import FIT_THREADS
 from bookspin_class.judgement import Judge, text_key
-
-
-def lower_priority():
-    """Lowers the calling thread's scheduling priority (Linux: a thread's own nice value, 10),
-    so that the fits yield the cores to the event loop and the tosses' reading: a toss reaches
-    the projector within its 2 s while the classes are refitted (docs/performance.md, "A
-    lecture hall and a school")."""
-    try:
-        os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), 10)
-    except (AttributeError, OSError):
-        pass  # not Linux: the fit at the server's own priority
 
 
 RETRY_SECONDS = 1.0  # a refit that could not read the store tries again after this
@@ -44,12 +32,6 @@ RETRY_SECONDS = 1.0  # a refit that could not read the store tries again after t
 QUIET_SECONDS = float(os.environ.get("BOOKSPIN_CLASS_QUIET_SECONDS", "3"))
 # A live estimate waits for the tosses that keep coming to be prepared for at most this long.
 PREPARE_SECONDS = 5.0
-
-# The threads the classes' fits run in (the gate, ClassServer.gate, lets one at a time).
-FIT_THREADS = concurrent.futures.ThreadPoolExecutor(os.cpu_count() or 1,
-                                                    thread_name_prefix="bookspin-class-fit",
-                                                    initializer=lower_priority)
-
 
 def file_stem(student_name, seq):
     """The file name (without .csv) a toss has in the class's set: the student's name in NFC

@@ -182,12 +182,12 @@ class Store:
     def notice(self, kind, code):
         """The statement that tells the other servers on this PostgreSQL of a change of class
         `code` (CHANNEL), to run in the change's transaction (delivered at its commit, never for
-        a change rolled back), with the class's fit job (fit_jobs.enqueue) for a change of its
+        a change rolled back), with the class's fit job (fit_job_table.enqueue) for a change of its
         tosses; none on SQLite, whose one server is the only one."""
         if self.marker == "?":
             return []
-        from bookspin_class import fit_jobs  # a change of the fitted set: the class's fit job
-        jobs = fit_jobs.enqueue(code) if kind in ("toss", "exclude") else []
+        from bookspin_class import fit_job_table  # a change of the fitted set: its fit job
+        jobs = fit_job_table.enqueue(code) if kind in ("toss", "exclude") else []
         return jobs + [("SELECT pg_notify(?, ?)", (CHANNEL, f"{kind} {code} {self.instance}"))]
 
     def _sql(self, statement):
@@ -503,14 +503,14 @@ def read_only_reason(path):
 def open_postgres(url):
     """A school's PostgreSQL by URL (libpq's form: postgresql://USER@HOST/DB or
     postgresql:///DB?host=/socket/dir), the same schema, and the fit jobs' tables
-    (fit_jobs.py)."""
+    (fit_job_table.py)."""
     import psycopg
-    from bookspin_class import fit_jobs
+    from bookspin_class import fit_job_table
     connection = psycopg.connect(url)
     opened = Store(connection, "%s", "PostgreSQL " + connection.info.dbname,
                    reader=lambda: psycopg.connect(url, autocommit=True),
                    reconnect=lambda: psycopg.connect(url))
-    fit_jobs.create_tables(connection)  # the classes' fits, taken by fit workers
+    fit_job_table.create_tables(connection)  # the classes' fits, taken by fit workers
     return opened
 
 

@@ -27,7 +27,7 @@ from class_start_shared import page, postgres  # noqa: E402,F401  (the fixtures)
 from test_class_school import PHONE, Nginx, database  # noqa: E402
 
 sys.path.insert(0, str(SOURCE_DIR / "class"))
-from bookspin_class import fit_jobs, store  # noqa: E402
+from bookspin_class import fit_job_table, fit_jobs, store  # noqa: E402
 
 
 class FitWorker:
@@ -72,7 +72,7 @@ def classes(url, *codes):
 
 def enqueue(connection, code):
     with connection.transaction():
-        for statement, args in fit_jobs.enqueue(code):
+        for statement, args in fit_job_table.enqueue(code):
             connection.execute(statement, args)
 
 
