@@ -1,4 +1,4 @@
-"""The class server under a class's load (docs/performance.md, "A class at once"): a real
+"""The class server under a class's load (docs/performance-class.md, "A class at once"): a real
 bookspin-class on 127.0.0.1 serving the real explorer page, the teacher's event stream open, and
 N phones (default 30) keeping a real recording of ../shared/recordings-real/ each at the same
 moment:
@@ -14,7 +14,7 @@ moment:
     in turn, each restamped so that no two are the same recording: the fit refuses one given
     twice), timed from their POST's start to its 201 and to the stream.
 Then the seconds to the live estimate and to the exact pooled fit that hold every toss; the
-server's CPU seconds and peak memory from /proc. With --classes C (a school: docs/performance.md,
+server's CPU seconds and peak memory from /proc. With --classes C (a school: docs/performance-class.md,
 "A school at once") the store is a PostgreSQL the bench starts (as class/tests/class_server.py
 does), C classes are made on it (each by a server started with --new, then stopped), and the
 one server serves all of them, PHONES phones in each, the browsers in the first. Prints a

@@ -9,7 +9,7 @@ import threading
 def lower_priority():
     """Lowers the calling thread's scheduling priority (Linux: a thread's own nice value, 10),
     so that the fits yield the cores to the event loop and the tosses' reading: a toss reaches
-    the projector within its 2 s while the classes are refitted (docs/performance.md, "A
+    the projector within its 2 s while the classes are refitted (docs/performance-class.md, "A
     lecture hall and a school")."""
     try:
         os.setpriority(os.PRIO_PROCESS, threading.get_native_id(), 10)

@@ -45,7 +45,7 @@ class ClassServer:
         self.rate_limit = rate_limit
         # The classes' fits one at a time (a class's own are, pooled.PooledFit): two at once on
         # the 2-core machine fitted a school of 20 classes in 47 s instead of 81 s but held its
-        # tosses' path up (worst 6.2 s instead of 4.5 s; docs/performance.md, "A lecture hall
+        # tosses' path up (worst 6.2 s instead of 4.5 s; docs/performance-class.md, "A lecture hall
         # and a school"): the tosses first.
         self.gate = gate or asyncio.Semaphore(1)
         self.fits = {}              # code -> pooled.PooledFit
