@@ -53,7 +53,16 @@ parser.add_argument("--classes", type=int, default=1,
                          "the bench starts (default 1)")
 parser.add_argument("--postgres", action="store_true",
                     help="the store a PostgreSQL the bench starts (with --classes over 1 always)")
+parser.add_argument("--processes", type=int, default=1,
+                    help="server processes on the PostgreSQL (a school's layout: class k's "
+                         "phones post to process k mod P, its projector reads process k+1 mod "
+                         "P; default 1)")
+parser.add_argument("--workers", type=int, default=0,
+                    help="fit workers of their own (bookspin-class --fit-worker), the servers "
+                         "then fitting nothing themselves (default 0: each server's own)")
 a = parser.parse_args()
+if a.processes < 1 or a.workers < 0:
+    parser.error("--processes must be 1 or more, --workers 0 or more")
 if not 0 <= a.browsers <= a.phones:
     parser.error(f"--browsers must be from 0 to the phones ({a.phones})")
 build = a.build.resolve()
@@ -84,15 +93,25 @@ else:
     page.parent.mkdir(parents=True)
     page.write_text("<!doctype html><title>explorer</title>\n")
 extra, database = ["--rate", "10000"], None
-if a.postgres or a.classes > 1:
+if a.postgres or a.classes > 1 or a.processes > 1 or a.workers:
     database = Postgres(tempfile.mkdtemp(prefix="bookspin-pg-"))  # its own: the server's user
     why = database.start()
     if why:
         sys.exit(f"class_load: PostgreSQL could not start: {why}")
     extra += ["--postgres", database.new_database()]
+if a.workers:
+    extra += ["--fit-workers", "0"]
 real_server = RealServer(source, build, page, extra=extra)
 server = real_server.server
-pid = server.process.pid
+# A school's layout: more server processes on the database (each starting a class of its own,
+# unused) and fit workers of their own; the CPU and memory are all of theirs together.
+servers = [server] + [Server(work / f"server-{j}", page, extra=extra).start(new=True)
+                      for j in range(1, a.processes)]
+workers = [subprocess.Popen([sys.executable, "-m", "bookspin_class", "--fit-worker", "--postgres",
+                             extra[extra.index("--postgres") + 1]], env=server.environment(),
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+           for _ in range(a.workers)]
+pids = [s.process.pid for s in servers] + [w.pid for w in workers]
 classes = [(server.code, server.key)]
 for k in range(1, a.classes):  # each class made by a teacher's server of its own, then stopped
     teacher = Server(work / f"class-{k}", page, extra=extra).start(new=True)
@@ -103,14 +122,21 @@ ticks = os.sysconf("SC_CLK_TCK")
 
 
 def cpu_seconds():
-    fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    return (int(fields[11]) + int(fields[12])) / ticks
+    total = 0
+    for pid in pids:
+        fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        total += int(fields[11]) + int(fields[12])
+    return total / ticks
 
 
 def peak_rss_mib():
-    for line in pathlib.Path(f"/proc/{pid}/status").read_text().splitlines():
-        if line.startswith("VmHWM:"):
-            return int(line.split()[1]) / 1024
+    """The sum of each process's peak (an upper bound of the peak of them all at once)."""
+    total = 0
+    for pid in pids:
+        for line in pathlib.Path(f"/proc/{pid}/status").read_text().splitlines():
+            if line.startswith("VmHWM:"):
+                total += int(line.split()[1]) / 1024
+    return total
 
 
 seen, seen_lock, last_pooled = {}, threading.Lock(), [None]
@@ -118,8 +144,9 @@ live_at = {}  # class -> when its projector first showed the live estimate of ev
 fitted = {code: threading.Event() for code, _ in classes}
 
 
-def listen(code, key):
-    connection = http.client.HTTPSConnection("127.0.0.1", server.port, context=server.context)
+def listen(code, key, shown_by):
+    connection = http.client.HTTPSConnection("127.0.0.1", shown_by.port,
+                                             context=shown_by.context)
     connection.request("GET", f"/api/class/{code}/events",
                        headers={"Authorization": f"Bearer {key}"})
     response = connection.getresponse()
@@ -141,8 +168,9 @@ def listen(code, key):
             return
 
 
-for code, key in classes:
-    threading.Thread(target=listen, args=(code, key), daemon=True).start()
+for k, (code, key) in enumerate(classes):
+    threading.Thread(target=listen, args=(code, key, servers[(k + 1) % len(servers)]),
+                     daemon=True).start()
 # The plain phones: (class, number in it), the browsers the first class's first.
 plain = [(c, i) for c in range(a.classes) for i in range(browsers if c == 0 else 0, phones)]
 tokens = {p: server.join(f"phone {p[1]}", code=classes[p[0]][0]) for p in plain}
@@ -165,8 +193,9 @@ problems = []
 def phone(i):
     go.wait()
     sent[i] = time.time()
-    statuses[i], _ = server.post_toss(tokens[i], texts[i], name=f"toss-{i[1]}", toss=ids[i],
-                                      code=classes[i[0]][0], timeout=600)
+    statuses[i], _ = servers[i[0] % len(servers)].post_toss(
+        tokens[i], texts[i], name=f"toss-{i[1]}", toss=ids[i], code=classes[i[0]][0],
+        timeout=600)
     answered[i] = time.time()
 
 
@@ -245,6 +274,11 @@ all_fitted = all(event.wait(timeout=max(0.0, deadline - time.monotonic()))
 end = time.time()
 cpu = cpu_seconds() - cpu_before
 peak = peak_rss_mib()
+for worker in workers:
+    worker.terminate()
+    worker.wait(timeout=60)
+for other in servers[1:]:
+    other.stop()
 real_server.close()
 if database is not None:
     database.stop()
@@ -286,5 +320,6 @@ print(f"  the moment all were released to the pooled fit of all {phones}{each}: 
       (f"{end - start:.2f} s" if all_fitted else f"not within {a.fit_wait:g} s") +
       (f" (the fit's error: {last_pooled[0]['error']})" if all_fitted and last_pooled[0]["error"]
        else ""))
-print(f"  server: {cpu:.2f} CPU seconds over {end - start:.2f} s, peak resident memory "
+layout = f" ({len(servers)} processes, {len(workers)} fit workers)" if pids[1:] else ""
+print(f"  server{layout}: {cpu:.2f} CPU seconds over {end - start:.2f} s, peak resident memory "
       f"{peak:.0f} MiB")
