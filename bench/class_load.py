@@ -74,9 +74,8 @@ os.environ["PYTHONPATH"] = os.pathsep.join([str(build / "python"),
 sys.path[:0] = [str(source / "class" / "tests"), str(source / "tests" / "browser")]
 from class_server import REAL, Postgres, Server, real_csv, restamped  # noqa: E402
 from browser import find_browser, open_browser, wait_for  # noqa: E402
-from explorer_phone_in_class_test import (SIZE, RealServer, open_class_page, readings,  # noqa: E402
-                                          type_into)
-from explorer_records_gyro_test import feed, feed_at_own_rate, tap  # noqa: E402
+from explorer_phone_in_class_test import SIZE, RealServer, open_class_page, type_into  # noqa: E402
+from explorer_records_gyro_test import feed, feed_at_own_rate, readings, tap  # noqa: E402
 
 names = sorted(p.name for p in REAL.iterdir() if p.is_dir())
 # The browsers' recordings: those with the app's full export (time, x, y, z in its columns).

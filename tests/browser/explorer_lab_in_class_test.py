@@ -48,28 +48,21 @@ Usage: explorer_lab_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
 under CI=true, where that is a failure (browser.py).
 """
-import csv
 import datetime
-import io
 import os
 import shutil
 import time
 import zoneinfo
-from pathlib import Path
 
-from browser import (console_errors, fail, find_browser, lab_page_under_test, missing, open_browser,
+from browser import (console_errors, fail, find_browser, lab_page_under_test, open_browser,
                      require, test_arguments, wait_for)
-from explorer_records_gyro_test import devtools, feed, feed_at_own_rate, fresh_page, state_line, tap
+from explorer_records_gyro_test import (devtools, feed, feed_at_own_rate, fresh_page, readings,
+                                        real_recording, state_line, tap)
 
 SIZE = (390, 844)
 FOLDER = "dvarkian-2022-05-03"
 FIRST, SECOND = "12-13-01", "12-13-51"
 ZONE = "Pacific/Auckland"
-
-
-def readings(path):
-    rows = list(csv.reader(io.StringIO(path.read_text())))[1:]
-    return [float(r[0]) for r in rows], [tuple(float(c) for c in r[1:4]) for r in rows]
 
 
 def start_recording(driver, where, first):
@@ -698,13 +691,9 @@ def main():
     bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
     require("em++", "npm")
-    folder = source.parent / "shared" / "recordings-real" / FOLDER
-    if not folder.exists():
-        folder = Path("/work/shared/recordings-real") / FOLDER
-    if not (folder / FIRST / "Raw Data.csv").exists():
-        missing(f"the real recordings {FOLDER} (../shared/recordings-real/)")
+    folder = real_recording(source, f"{FOLDER}/{FIRST}").parent.parent
     first = readings(folder / FIRST / "Raw Data.csv")
-    second = readings(folder / SECOND / "Raw Data.csv")
+    second = readings(real_recording(source, f"{FOLDER}/{SECOND}"))
 
     out, _, _, page = lab_page_under_test(bookspin, source, binary, "explorer-lab-in-class")
 

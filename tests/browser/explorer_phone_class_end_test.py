@@ -33,12 +33,10 @@ under CI=true, where that is a failure (browser.py).
 """
 import math
 import time
-from pathlib import Path
 
-from browser import (console_errors, fail, find_browser, lab_page_under_test, missing, open_browser,
-                     require, test_arguments, text_problems, wait_for)
-from explorer_phone_in_class_test import (FOLDER, ROW_BUTTON, RealServer, readings, record, row_state,
-                                          rows, state_of, type_into, wait_row)
+from browser import fail, text_problems, wait_for
+from explorer_phone_in_class_test import (ROW_BUTTON, phone_lesson, record, row_state, rows,
+                                          state_of, type_into, wait_row)
 from explorer_records_gyro_test import override, tap
 
 SIZES = [(390, 844), (320, 568)]
@@ -101,30 +99,7 @@ def results_read(driver):
 
 
 def main():
-    bookspin, source, binary = test_arguments(__doc__)
-    chromium, driver_path = find_browser()
-    require("em++", "npm")
-    folder = source.parent / "shared" / "recordings-real" / FOLDER
-    if not folder.exists():
-        folder = Path("/work/shared/recordings-real") / FOLDER
-    if not all((folder / t / "Raw Data.csv").exists() for t in TOSSES):
-        missing(f"the real recordings {FOLDER} (../shared/recordings-real/)")
-    recordings = [readings(folder / t / "Raw Data.csv") for t in TOSSES]
-    out, _, shots, _ = lab_page_under_test(bookspin, source, binary, "explorer-phone-class-end")
-    server = RealServer(source, binary, out / "explorer.html")
-    print(f"the server: bookspin_class at {server.url}, class {server.code}")
-    try:
-        with open_browser(chromium, driver_path, size=SIZES[0], exact_viewport=True, extra_args=[server.trust]) as driver:
-            phone(driver, SIZES[0])
-            driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
-            lesson(driver, server, shots, recordings)
-            errors = [e for e in console_errors(driver)
-                      if "favicon" not in e.get("message", "") and "/api/class/" not in e.get("message", "")]
-            if errors:
-                fail(f"console errors: {errors[:3]}")
-    finally:
-        server.close()
-    print("ok")
+    phone_lesson(__doc__, "explorer-phone-class-end", SIZES[0], TOSSES, lesson)
 
 
 def lesson(driver, server, shots, recordings):

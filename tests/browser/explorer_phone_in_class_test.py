@@ -36,27 +36,20 @@ Usage: explorer_phone_in_class_test.py BOOKSPIN_EXE SOURCE_DIR BINARY_DIR
 Skipped (exit 77) where Chromium, chromedriver, selenium, emscripten or npm is missing, except
 under CI=true, where that is a failure (browser.py).
 """
-import csv
-import io
 import re
 import time
-from pathlib import Path
 
-from browser import (at_sigma, console_errors, fail, find_browser, lab_page_under_test, missing,
+from browser import (at_sigma, console_errors, fail, find_browser, lab_page_under_test,
                      open_browser, require, test_arguments, text_problems, wait_for)
-from class_browser import RealServer  # noqa: F401  (bench/class_load.py and the class's end test take it from here)
-from explorer_records_gyro_test import devtools, feed, feed_at_own_rate, override, tap
+from class_browser import RealServer
+from explorer_records_gyro_test import (feed, feed_at_own_rate, override, readings, real_recording,
+                                        tap)
 
 SIZE = (390, 844)
 FOLDER = "dvarkian-2022-05-03"
 TOSSES = ["12-13-01", "12-13-51", "12-22-44", "12-38-00"]
 NAME = "太郎 Ωmega"
 UUID = re.compile(r"^[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}$")
-
-
-def readings(path):
-    rows = list(csv.reader(io.StringIO(path.read_text())))[1:]
-    return [float(r[0]) for r in rows], [tuple(float(c) for c in r[1:4]) for r in rows]
 
 
 def state_of(driver):
@@ -170,25 +163,24 @@ def downloads(driver):
           fetch(li.querySelector('a[download]').href).then((r) => r.text()).then((t) => [li.dataset.name, t]))).then(done);"""))
 
 
-def main():
-    bookspin, source, binary = test_arguments(__doc__)
+def phone_lesson(doc, name, size, tosses, lesson):
+    """A phone's lesson against the real class server (this test and the class's end test): the
+    lab's page built as `name`, the server started on it, the real recordings `tosses` read,
+    Chromium at `size` (a touch phone), `lesson(driver, server, shots, recordings)` run; no
+    console error but the favicon's and the class API's answers."""
+    bookspin, source, binary = test_arguments(doc)
     chromium, driver_path = find_browser()
     require("em++", "npm")
-    folder = source.parent / "shared" / "recordings-real" / FOLDER
-    if not folder.exists():
-        folder = Path("/work/shared/recordings-real") / FOLDER
-    if not all((folder / t / "Raw Data.csv").exists() for t in TOSSES):
-        missing(f"the real recordings {FOLDER} (../shared/recordings-real/)")
-    recordings = [readings(folder / t / "Raw Data.csv") for t in TOSSES]
-    out, _, shots, _ = lab_page_under_test(bookspin, source, binary, "explorer-phone-in-class")
+    recordings = [readings(real_recording(source, f"{FOLDER}/{t}")) for t in tosses]
+    out, _, shots, _ = lab_page_under_test(bookspin, source, binary, name)
     server = RealServer(source, binary, out / "explorer.html")
     print(f"the server: bookspin_class at {server.url}, class {server.code}")
     try:
-        with open_browser(chromium, driver_path, size=SIZE, exact_viewport=True, extra_args=[server.trust]) as driver:
+        with open_browser(chromium, driver_path, size=size, exact_viewport=True, extra_args=[server.trust]) as driver:
             driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
-                "width": SIZE[0], "height": SIZE[1], "deviceScaleFactor": 1, "mobile": True})
+                "width": size[0], "height": size[1], "deviceScaleFactor": 1, "mobile": True})
             driver.execute_cdp_cmd("Emulation.setTouchEmulationEnabled", {"enabled": True, "maxTouchPoints": 5})
-            run_class(driver, server, shots, recordings)
+            lesson(driver, server, shots, recordings)
             errors = [e for e in console_errors(driver)
                       if "favicon" not in e.get("message", "") and "/api/class/" not in e.get("message", "")]
             if errors:
@@ -196,6 +188,10 @@ def main():
     finally:
         server.close()
     print("ok")
+
+
+def main():
+    phone_lesson(__doc__, "explorer-phone-in-class", SIZE, TOSSES, run_class)
 
 
 def run_class(driver, server, shots, recordings):

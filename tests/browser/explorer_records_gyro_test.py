@@ -395,23 +395,35 @@ def limit(driver, page, where, motion, expected, setup):
     print(f"{where}: {said}")
 
 
+def readings(path):
+    """A recording's Raw Data.csv (phyphox's gyroscope export) as (t, omega): each row's time (s)
+    and (ωx, ωy, ωz) (rad/s)."""
+    rows = list(csv.reader(io.StringIO(path.read_text())))[1:]
+    return [float(r[0]) for r in rows], [tuple(float(c) for c in r[1:4]) for r in rows]
+
+
+def real_recording(source, name):
+    """../shared/recordings-real/NAME/Raw Data.csv beside the checkout (or under /work/shared):
+    its path; missing() where it is not there."""
+    path = source.parent / "shared" / "recordings-real" / name / "Raw Data.csv"
+    if not path.exists():
+        path = Path("/work/shared/recordings-real") / name / "Raw Data.csv"
+    if not path.exists():
+        missing(f"the real recording {name} (../shared/recordings-real/)")
+    return path
+
+
 def main():
     bookspin, source, binary = test_arguments(__doc__)
     chromium, driver_path = find_browser()
     require("em++", "npm")
-    real = source.parent / "shared" / "recordings-real" / REAL / "Raw Data.csv"
-    if not real.exists():
-        real = Path("/work/shared/recordings-real") / REAL / "Raw Data.csv"
-    if not real.exists():
-        missing(f"the real recording {REAL} (../shared/recordings-real/)")
+    real = real_recording(source, REAL)
 
     out, recordings, shots, page = lab_page_under_test(bookspin, source, binary, "explorer-records-gyro")
 
     shutil.copy(real, recordings / "original.csv")
     original = cli_fit(bookspin, ["original.csv"], out / "cli" / "original", recordings)
-    rows = list(csv.reader(io.StringIO(real.read_text())))[1:]
-    t = [float(r[0]) for r in rows]
-    omega = [tuple(float(c) for c in r[1:4]) for r in rows]
+    t, omega = readings(real)
 
     with open_browser(chromium, driver_path, size=SIZE, exact_viewport=True) as driver:
         driver.execute_cdp_cmd("Emulation.setDeviceMetricsOverride", {
@@ -461,9 +473,7 @@ def main():
                 continue
             where = f"Gyroscope, {other.parent.name}"
             original_other = cli_fit(bookspin, [str(other)], out / "cli" / f"original-{other.parent.name}", recordings)
-            rows_other = list(csv.reader(io.StringIO(other.read_text())))[1:]
-            t_other = [float(r[0]) for r in rows_other]
-            omega_other = [tuple(float(c) for c in r[1:4]) for r in rows_other]
+            t_other, omega_other = readings(other)
             fresh_page(driver, page)
             refused = []
             text, name, result = record(driver, where, t_other, omega_other, False, refused=refused)
