@@ -5,14 +5,24 @@ takes them from the database; no queue of our own making.
 One row of `fit_jobs` per class: `version` is raised, and the job made pending, in the very
 transaction that holds, leaves out or puts back one of the class's tosses (enqueue, through
 Store.notice), so that a change a phone was answered for is never without its job, whatever
-process dies after. A worker claims the oldest job that is pending, or running under a lease
-that expired (its worker killed), with `SELECT … FOR UPDATE SKIP LOCKED` (two workers never
-take one job, nor wait for each other), and renews its lease while it fits. The fit is
-pooled.PooledFit's, unchanged (the pooled body, then the judgements); each result is stored in
-`class_fits`, one row per class and version, only by the worker that holds the lease, and
-announced by NOTIFY; every server process reads it on the notice (stored_fit.py) and pushes it
-to its projectors. The job is done when the version fitted is still the class's; else it is
-pending again (the changes of a burst coalesce into the next fit)."""
+process dies after. A worker claims a job that is pending, or running under a lease that
+expired (its worker killed), with `SELECT … FOR UPDATE SKIP LOCKED` (two workers never take one
+job, nor wait for each other), and renews its lease while it fits.
+
+A job has two stages, each claimed on its own: 'live', the class's live estimate
+(PooledFit.live_once: seconds at most), then 'exact', the exact fit and the judgements
+(PooledFit.exact_once: minutes at 350), due once the class has been quiet for
+pooled.QUIET_SECONDS. Every pending live estimate is claimed before any exact fit, the oldest
+first: a school's 20 classes each see their live body before any worker spends minutes on one
+class's exact fit. Each result is stored in `class_fits`, one row per class and version, only
+by the worker that holds the lease, and announced by NOTIFY; every server process reads it on
+the notice (stored_fit.py) and pushes it to its projectors. A stage ends with the job pending
+again where a change came during it (the changes of a burst coalesce into the next live
+estimate), else with the next stage pending, or the job done.
+
+A job whose workers died MAX_ATTEMPTS times (a recording that kills the fit) is not fitted a
+sixth time: the next worker stores the class's last result with the error saying so, for the
+projector, and the job waits for the class's next change."""
 import asyncio
 import concurrent.futures
 import json
@@ -25,6 +35,9 @@ from bookspin_class import store
 LEASE_SECONDS = 30.0  # a worker's hold on a job, renewed every third of it while it fits
 POLL_SECONDS = 1.0    # a worker with nothing to do looks again after this (expired leases)
 MAX_ATTEMPTS = 5      # a job whose worker died this often is left until the class changes
+GAVE_UP = (f"the class's fit stopped its fit workers {MAX_ATTEMPTS} times, so it is not made "
+           "again until a toss comes or the teacher leaves one out or puts one back; the "
+           "fit workers' logs say why")
 
 
 def announce(connection, code, worker):
@@ -32,16 +45,19 @@ def announce(connection, code, worker):
 
 
 def claim(connection, worker, lease):
-    """(class code, version, attempt) of the job this worker now holds for `lease` seconds, or
-    None: the oldest pending, or running under an expired lease, that no other worker is
-    claiming at this moment (SKIP LOCKED)."""
+    """(class code, version, attempt, stage) of the job this worker now holds for `lease`
+    seconds, or None: of the jobs pending (an exact fit only once due) or running under an
+    expired lease, that no other worker is claiming at this moment (SKIP LOCKED), a live
+    estimate before any exact fit, each the oldest first. An attempt over MAX_ATTEMPTS is the
+    one that gives up (Worker.give_up)."""
     with connection.transaction():
         row = connection.execute(
             "UPDATE fit_jobs SET state = 'running', worker = %s, attempts = attempts + 1, "
             "leased_until = now() + make_interval(secs => %s) WHERE class_code = ("
-            "SELECT class_code FROM fit_jobs WHERE attempts < %s AND (state = 'pending' OR "
-            "(state = 'running' AND leased_until < now())) ORDER BY queued, class_code "
-            "LIMIT 1 FOR UPDATE SKIP LOCKED) RETURNING class_code, version, attempts",
+            "SELECT class_code FROM fit_jobs WHERE attempts <= %s AND ((state = 'pending' AND "
+            "(not_before IS NULL OR not_before <= now())) OR (state = 'running' AND "
+            "leased_until < now())) ORDER BY stage = 'exact', queued, class_code "
+            "LIMIT 1 FOR UPDATE SKIP LOCKED) RETURNING class_code, version, attempts, stage",
             (worker, lease, MAX_ATTEMPTS)).fetchone()
     return tuple(row) if row else None
 
@@ -93,28 +109,35 @@ def store_result(connection, code, worker, version, result):
     return True
 
 
-def finish(connection, code, worker, version):
-    """Ends this worker's hold on the job: done where `version` (the one fitted) is still the
-    class's, pending again where a change came during the fit (its attempts counted again from
-    0: this one succeeded). False where the lease was lost."""
+def finish(connection, code, worker, version, exact_in=None):
+    """Ends this worker's hold on the job's stage (its attempts counted again from 0: this one
+    succeeded). Where `version` (the one fitted) is still the class's: the job done, or, with
+    `exact_in` seconds, its exact fit pending then. Where a change came during the stage: its
+    live estimate pending again, at once. False where the lease was lost."""
+    exact = exact_in is not None
     with connection.transaction():
         row = connection.execute(
-            "UPDATE fit_jobs SET state = CASE WHEN version = %s THEN 'done' ELSE 'pending' END, "
-            "worker = NULL, leased_until = NULL, attempts = 0, queued = CASE WHEN version = %s "
-            "THEN queued ELSE now() END WHERE class_code = %s AND worker = %s AND state = 'running' "
-            "RETURNING state", (version, version, code, worker)).fetchone()
+            "UPDATE fit_jobs SET state = CASE WHEN version = %s AND NOT %s THEN 'done' ELSE "
+            "'pending' END, stage = CASE WHEN version = %s AND %s THEN 'exact' ELSE 'live' END, "
+            "not_before = CASE WHEN version = %s AND %s THEN now() + make_interval(secs => %s) "
+            "END, worker = NULL, leased_until = NULL, attempts = 0, queued = CASE WHEN version "
+            "= %s AND NOT %s THEN queued ELSE now() END WHERE class_code = %s AND worker = %s "
+            "AND state = 'running' RETURNING state",
+            (version, exact, version, exact, version, exact, exact_in or 0.0, version, exact,
+             code, worker)).fetchone()
         if row is not None:
             announce(connection, code, worker)
     return row is not None
 
 
-def release(connection, code, worker):
-    """A worker that stops hands its job back at once (pending; its attempt not counted)."""
+def release(connection, code, worker, counted=False):
+    """A worker hands its job back at once, pending: one that stops, its attempt not counted;
+    one whose fit raised (`counted`), its attempt counted as if it had died."""
     with connection.transaction():
         connection.execute(
             "UPDATE fit_jobs SET state = 'pending', worker = NULL, leased_until = NULL, "
-            "attempts = GREATEST(attempts - 1, 0) WHERE class_code = %s AND worker = %s AND "
-            "state = 'running'", (code, worker))
+            "attempts = GREATEST(attempts - %s, 0) WHERE class_code = %s AND worker = %s AND "
+            "state = 'running'", (0 if counted else 1, code, worker))
 
 
 def stored(read, code, shown=None):
@@ -148,9 +171,10 @@ def one_line(error):
 
 
 class Worker:
-    """A fit worker: takes the jobs of every class of the PostgreSQL at `url`, one at a time,
-    and fits each with pooled.PooledFit (kept per class between jobs, so that what it keeps of
-    the last fit serves the next). Its own connection, used from one thread at a time."""
+    """A fit worker: takes the jobs of every class of the PostgreSQL at `url`, one stage at a
+    time, and fits each with pooled.PooledFit (kept per class between jobs, so that what it
+    keeps of the last fit serves the next, until the class ends). Its own connection, used from
+    one thread at a time."""
 
     def __init__(self, url, lease=LEASE_SECONDS, name=None):
         import threading
@@ -214,7 +238,15 @@ class Worker:
                     except asyncio.TimeoutError:
                         pass
                     continue
-                await self.fit(*self.job)
+                try:
+                    await self.fit(*self.job)
+                except Exception as error:  # the store away for long, or a bug: counted
+                    say(f"fit worker {self.name}: class {self.job[0]}: the fit failed: "
+                        f"{one_line(error)}")
+                    try:
+                        await asyncio.to_thread(self.call, release, self.job[0], self.name, True)
+                    except Exception:
+                        pass  # the lease expires instead
                 self.job = None
         finally:
             listening.cancel()
@@ -227,21 +259,27 @@ class Worker:
 
     def noticed(self, kind, code):
         """A notice on the database: a job may be waiting; a toss of the class being fitted
-        is fitted now by the same PooledFit (its live estimate at once, as on a laptop)."""
+        joins its stage (the live estimate's preparing, or makes the exact fit stale); a class
+        ended is forgotten."""
         self.wake.set()
         fit = self.fits.get(code)
-        if self.job is not None and self.job[0] == code and kind in ("toss", "exclude") and \
-                fit is not None and fit.task is not None and not fit.task.done():
-            fit.request()
+        if kind == "end" and (self.job is None or self.job[0] != code):
+            self.fits.pop(code, None)
+            self.read_version.pop(code, None)
+        elif self.job is not None and self.job[0] == code and kind in ("toss", "exclude") \
+                and fit is not None:
+            fit.note_change()
 
-    async def fit(self, code, version, attempt):
+    async def fit_of(self, code):
+        """The class's PooledFit, made the first time with what is shown of the class (the
+        stored result goes on being shown until this worker's replaces it)."""
         from bookspin_class import pooled
         fit = self.fits.get(code)
         if fit is None:
             fit = self.fits[code] = pooled.PooledFit(lambda: self.files(code),
                                                      lambda: self.done(code),
                                                      asyncio.Semaphore(1))
-            try:  # what was shown goes on being shown until this fit replaces it
+            try:
                 found = (await asyncio.to_thread(self.call, lambda c: stored(
                     lambda s, a: c.execute(s, a).fetchall(), code)))[0]
             except Exception:
@@ -249,12 +287,25 @@ class Worker:
             if found is not None:
                 fit.result, fit.flights = found["result"], found["flights"]
                 fit.judgements = found["judgements"]
+        return fit
+
+    async def fit(self, code, version, attempt, stage):
+        """One stage of the class's job: its live estimate (the exact fit due after the
+        quiet, or at once where none could be shown), or its exact fit and judgements (done; or
+        the quiet again where a toss made it stale, its live estimate shown beside it)."""
+        from bookspin_class import pooled
+        fit = await self.fit_of(code)
         self.lost, self.pending = False, []
         self.read_version[code] = version
-        fit.request()
         renewing = asyncio.get_running_loop().create_task(self.renew(code, fit))
         try:
-            await fit.task
+            if attempt > MAX_ATTEMPTS:
+                exact_in = None
+                self.give_up(code, fit)
+            elif stage == "live":
+                exact_in = pooled.QUIET_SECONDS if await fit.live_once() else 0.0
+            else:
+                exact_in = None if await fit.exact_once() else pooled.QUIET_SECONDS
         finally:
             renewing.cancel()
         for write in self.pending:
@@ -262,14 +313,25 @@ class Worker:
         if self.lost:
             return
         try:
-            await asyncio.to_thread(self.call_again, finish, code, self.name,
-                                    self.read_version[code])
+            if not await asyncio.to_thread(self.call_again, finish, code, self.name,
+                                           self.read_version[code], exact_in):
+                self.fits.pop(code, None)  # the class ended (or the lease was lost)
         except Exception as error:  # the lease expires; another worker fits it again
             say(f"fit worker {self.name}: class {code}: not marked done: {one_line(error)}")
 
+    def give_up(self, code, fit):
+        """The job whose workers died MAX_ATTEMPTS times: the class's last result stored again
+        with GAVE_UP as its error, for the projector (its body, if any, still shown)."""
+        from bookspin_class import pooled
+        say(f"fit worker {self.name}: class {code}: {GAVE_UP}")
+        fit.result = dict(fit.result, error=GAVE_UP, error_summary=pooled.error_summary(GAVE_UP),
+                          judging=False, live=False)
+        self.done(code)
+
     def files(self, code):
-        """PooledFit's files_of, in a thread: the class's files and the version they are of."""
-        version, files = self.call(read_class, code)
+        """PooledFit's files_of, in a thread: the class's files and the version they are of
+        (waiting for PostgreSQL while it restarts, as call_again)."""
+        version, files = self.call_again(read_class, code)
         self.read_version[code] = version
         return files
 
@@ -295,8 +357,8 @@ class Worker:
         self.pending.append(asyncio.get_running_loop().run_in_executor(self.writes, write))
 
     async def renew(self, code, fit):
-        """Renews the lease every third of it while the fit runs; a newer version of the class
-        (a change during the fit) is fitted again by the same PooledFit, as a burst is."""
+        """Renews the lease every third of it while the stage runs; a newer version of the
+        class (a change whose notice was missed) is told to the PooledFit, as the notice does."""
         while True:
             await asyncio.sleep(self.lease / 3.0)
             try:
@@ -311,8 +373,8 @@ class Worker:
                         "worker took the job)")
                 self.lost = True
                 return
-            if version != self.read_version.get(code) and not fit.task.done():
-                fit.request()
+            if version != self.read_version.get(code):
+                fit.note_change()
 
 
 async def serve_workers(url, count, lease, stop):

@@ -280,10 +280,42 @@ class PooledFit:
         self.fits = 0
 
     def request(self):
-        self.dirty = True
-        self.wake.set()
+        self.note_change()
         if self.task is None or self.task.done():
             self.task = asyncio.get_running_loop().create_task(self._run())
+
+    def note_change(self):
+        """A change of the class's tosses, for the fit running (a fit worker's stage: it joins
+        the live estimate's preparing, or makes the exact fit stale)."""
+        self.dirty = True
+        self.wake.set()
+
+    async def live_once(self):
+        """A fit worker's live stage (fit_jobs.py): the live estimate of the class's tosses
+        published, as the laptop's burst makes it. Whether one was shown (none where no toss
+        the module can read, or the live fit failed: the exact fit is due at once). Raises
+        what files_of raises."""
+        self.dirty = False
+        async with self.gate:
+            files = await asyncio.to_thread(self.files_of)
+            if not files:
+                return False
+            shown, _ = await self._live(files)
+        return shown
+
+    async def exact_once(self):
+        """A fit worker's exact stage (fit_jobs.py): the exact fit and the judgements
+        published, as the laptop's quiet class gets them. False where a toss came during it
+        (its live estimate shown beside it, the exact fit not: stale). Raises what files_of
+        raises."""
+        self.dirty = False
+        async with self.gate:
+            files = await asyncio.to_thread(self.files_of)
+            if not files and self.result["recordings"] == 0 and self.result["error"] is None:
+                return True  # nothing held, nothing shown
+            self.fitting = True
+            await self._exact(files)
+        return not self.dirty
 
     async def _run(self):
         exact_next = False  # the class quiet after a live estimate: the exact fit's turn

@@ -3,7 +3,9 @@ server"; class/bookspin_class/fit_jobs.py), and faults at a school's scale: a re
 and a real nginx started by the test, server processes and `bookspin-class --fit-worker`
 processes, the real recordings of ../shared/recordings-real/ posted through the proxy, a server
 and a fit worker SIGKILLed in the middle of the burst."""
+import asyncio
 import concurrent.futures
+import hashlib
 import http.client
 import json
 import os
@@ -76,6 +78,22 @@ def enqueue(connection, code):
             connection.execute(statement, args)
 
 
+def hold_tosses(made, code, count):
+    """`count` tosses of one student held by the store `made` in class `code` (the bare
+    phone's real recordings, each restamped: other samples), as a server holds them."""
+    student = uuid.uuid4().hex
+    made.add_student(student, code, uuid.uuid4().hex, "Anna")
+    for i in range(count):
+        text = restamped(real_csv(PHONE[i % 3]), 40.0 * i)
+        made.add_toss(str(uuid.uuid4()), code, student, f"t{i}", "2022-05-03T12:13:01Z", text,
+                      hashlib.sha256(text.encode()).hexdigest(), uuid.uuid4().hex)
+
+
+def job_row(connection, code):
+    return connection.execute("SELECT state, stage, version, worker, attempts, not_before IS "
+                              "NULL FROM fit_jobs WHERE class_code = %s", (code,)).fetchone()
+
+
 def test_jobs_are_claimed_once_their_leases_expire_and_a_lost_lease_stores_nothing(postgres):
     """Two workers claiming at once take two jobs, neither waiting for the other's lock (SKIP
     LOCKED); a job held is taken by no one while its lease runs and by another worker once it
@@ -93,12 +111,12 @@ def test_jobs_are_claimed_once_their_leases_expire_and_a_lost_lease_stores_nothi
             claimed = fit_jobs.claim(first, "w1", 60)
             other = fit_jobs.claim(second, "w2", 60)
         assert claimed[0] != other[0] and {claimed[0], other[0]} == {"AAAAAA", "BBBBBB"}
-        assert claimed[1:] == (1, 1) and other[1:] == (1, 1)
+        assert claimed[1:] == (1, 1, "live") and other[1:] == (1, 1, "live")
         assert fit_jobs.claim(third, "w3", 60) is None  # both held, their leases running
         code = claimed[0]
         first.execute("UPDATE fit_jobs SET leased_until = now() - interval '1 second' "
                       "WHERE class_code = %s", (code,))  # w1 killed: its lease ran out
-        assert fit_jobs.claim(third, "w3", 60) == (code, 1, 2)
+        assert fit_jobs.claim(third, "w3", 60) == (code, 1, 2, "live")
         assert fit_jobs.renew(first, code, "w1", 60) is None
         assert not fit_jobs.store_result(first, code, "w1", 1, '{"by": "w1"}')
         assert fit_jobs.store_result(third, code, "w3", 1, '{"by": "w3", "stage": 1}')
@@ -109,7 +127,7 @@ def test_jobs_are_claimed_once_their_leases_expire_and_a_lost_lease_stores_nothi
         assert fit_jobs.renew(third, code, "w3", 60) == 3
         assert fit_jobs.claim(first, "w1", 60) is None  # still w3's, not a second job
         assert fit_jobs.finish(third, code, "w3", 1)  # version 1 fitted: pending for 3
-        assert fit_jobs.claim(first, "w1", 60) == (code, 3, 1)
+        assert fit_jobs.claim(first, "w1", 60) == (code, 3, 1, "live")
         assert fit_jobs.store_result(first, code, "w1", 3, '{"by": "w1"}')
         assert fit_jobs.finish(first, code, "w1", 3)
         rows = first.execute("SELECT version, result, worker FROM class_fits WHERE class_code "
@@ -124,6 +142,147 @@ def test_jobs_are_claimed_once_their_leases_expire_and_a_lost_lease_stores_nothi
         for connection in (first, second, third):
             connection.close()
         made.close()
+
+
+def test_every_class_has_its_live_estimate_before_any_exact_fit(postgres):
+    """The job's two stages: every pending live estimate is claimed before any exact fit (a
+    school's classes each see their live body first), each the oldest first; an exact fit is
+    claimed only once due (the class quiet); a change during the quiet, or during the exact
+    fit, makes the live estimate pending again at once; a job whose workers died
+    MAX_ATTEMPTS times is claimed once more, to give up (an attempt over MAX_ATTEMPTS)."""
+    url = database(postgres)
+    made = classes(url, "AAAAAA", "BBBBBB", "CCCCCC")
+    connection = psycopg.connect(url, autocommit=True)
+    try:
+        enqueue(connection, "AAAAAA")
+        enqueue(connection, "BBBBBB")
+        assert fit_jobs.claim(connection, "w1", 60) == ("AAAAAA", 1, 1, "live")
+        assert fit_jobs.finish(connection, "AAAAAA", "w1", 1, 0.0)  # exact due at once
+        assert job_row(connection, "AAAAAA") == ("pending", "exact", 1, None, 0, False)
+        enqueue(connection, "CCCCCC")  # a class whose first toss came after A's live estimate
+        assert fit_jobs.claim(connection, "w1", 60) == ("BBBBBB", 1, 1, "live")
+        assert fit_jobs.finish(connection, "BBBBBB", "w1", 1, 3600.0)  # quiet for an hour
+        assert fit_jobs.claim(connection, "w1", 60) == ("CCCCCC", 1, 1, "live")  # before A's
+        assert fit_jobs.claim(connection, "w2", 60) == ("AAAAAA", 1, 1, "exact")
+        assert fit_jobs.claim(connection, "w3", 60) is None  # B's exact fit not due yet
+        enqueue(connection, "BBBBBB")  # a toss during B's quiet: its live estimate, at once
+        assert job_row(connection, "BBBBBB") == ("pending", "live", 2, None, 0, True)
+        assert fit_jobs.claim(connection, "w3", 60) == ("BBBBBB", 2, 1, "live")
+        enqueue(connection, "AAAAAA")  # a toss during A's exact fit: stays w2's until its end
+        assert job_row(connection, "AAAAAA")[:4] == ("running", "live", 2, "w2")
+        assert fit_jobs.finish(connection, "AAAAAA", "w2", 1)  # version 1 fitted, 2 is not
+        assert job_row(connection, "AAAAAA") == ("pending", "live", 2, None, 0, True)
+        assert fit_jobs.finish(connection, "CCCCCC", "w1", 1)  # nothing to show: done
+        assert job_row(connection, "CCCCCC") == ("done", "live", 1, None, 0, True)
+        # A job whose workers died: claimed again under an expired lease, its attempts counted;
+        # the attempt after MAX_ATTEMPTS is the one that gives up; none after it.
+        for attempt in range(2, fit_jobs.MAX_ATTEMPTS + 2):
+            connection.execute("UPDATE fit_jobs SET leased_until = now() - interval '1 second' "
+                               "WHERE class_code = 'BBBBBB'")
+            assert fit_jobs.claim(connection, f"w{attempt + 2}", 60) == (
+                "BBBBBB", 2, attempt, "live")
+        connection.execute("UPDATE fit_jobs SET leased_until = now() - interval '1 second' "
+                           "WHERE class_code = 'BBBBBB'")
+        assert fit_jobs.claim(connection, "w9", 60) == ("AAAAAA", 2, 1, "live")
+        assert fit_jobs.claim(connection, "w9", 60) is None
+    finally:
+        connection.close()
+        made.close()
+
+
+def test_a_job_that_killed_its_workers_five_times_says_so_and_waits_for_a_change(postgres):
+    """A class whose fit killed its worker MAX_ATTEMPTS times (planted: its job running under
+    an expired lease, that many attempts made): the next worker does not fit it a sixth time
+    but stores the class's last result with the error saying so, announced, which the
+    projector shows (fit_jobs.stored, as a server reads it, no longer fitting); the job is done
+    until the class changes, and then fitted again from its first attempt."""
+    url = database(postgres)
+    code = "DDDDDD"
+    made = classes(url, code)
+    hold_tosses(made, code, 1)
+    connection = psycopg.connect(url, autocommit=True)
+    try:
+        connection.execute("UPDATE fit_jobs SET state = 'running', worker = 'gone', attempts = "
+                           "%s, leased_until = now() - interval '1 second'",
+                           (fit_jobs.MAX_ATTEMPTS,))
+        worker = fit_jobs.Worker(url, 30, "w-test")
+
+        async def until_done():
+            task = asyncio.get_running_loop().create_task(worker.run())
+            deadline = time.monotonic() + 120  # a guard against a test that hangs
+            while job_row(connection, code)[0] != "done":
+                assert time.monotonic() < deadline and not task.done()
+                await asyncio.sleep(0.1)
+            task.cancel()
+            await asyncio.gather(task, return_exceptions=True)
+
+        asyncio.run(until_done())
+        found, shown, job_version, state = fit_jobs.stored(
+            lambda s, a: connection.execute(s, a).fetchall(), code)
+        assert found["result"]["error"] == fit_jobs.GAVE_UP and state == "done"
+        assert found["result"]["error_summary"] and found["result"]["live"] is False
+        assert shown == (1, 1) and job_version == 1
+        assert job_row(connection, code) == ("done", "live", 1, None, 0, True)
+        assert fit_jobs.claim(connection, "w2", 60) is None  # not a sixth time
+        hold_tosses(made, code, 1)  # the class changes: fitted again, its first attempt
+        assert fit_jobs.claim(connection, "w2", 60) == (code, 2, 1, "live")
+    finally:
+        connection.close()
+        made.close()
+
+
+def test_a_worker_paused_past_its_lease_stores_nothing_when_it_goes_on(postgres, tmp_path):
+    """A fit worker SIGSTOPped in the middle of a class's exact fit, past its lease: another
+    worker takes the job and stores its fit; the paused one, SIGCONTinued, finds its lease
+    lost, stores nothing over the other's result and does not mark the job, and goes on taking
+    jobs (the class's next change is fitted)."""
+    require_real()
+    url = database(postgres)
+    code = "EEEEEE"
+    made = classes(url, code)
+    hold_tosses(made, code, 6)
+    paused = FitWorker(url, 2)
+    other = None
+    try:
+        with psycopg.connect(url, autocommit=True) as connection:
+            deadline = time.monotonic() + 120  # a guard against a test that hangs
+            while job_row(connection, code)[:2] != ("running", "exact"):
+                assert time.monotonic() < deadline, job_row(connection, code)
+                time.sleep(0.02)
+            paused.process.send_signal(signal.SIGSTOP)
+            other = FitWorker(url, 2)
+            while True:  # the other worker's exact fit and judgements, the job done
+                assert time.monotonic() < deadline, job_row(connection, code)
+                row = connection.execute("SELECT worker, stage, stored FROM class_fits WHERE "
+                                         "class_code = %s", (code,)).fetchone()
+                if job_row(connection, code)[0] == "done" and row and row[0] == other.name:
+                    break
+                time.sleep(0.1)
+            paused.process.send_signal(signal.SIGCONT)
+            while not any("the lease was lost" in line for line in paused.errors):
+                assert time.monotonic() < deadline and paused.process.poll() is None
+                time.sleep(0.1)
+            time.sleep(1.0)  # what the paused worker would store after it
+            assert connection.execute("SELECT worker, stage, stored FROM class_fits WHERE "
+                                      "class_code = %s", (code,)).fetchone() == row
+            assert job_row(connection, code) == ("done", "live", 6, None, 0, True)
+            result = json.loads(connection.execute(
+                "SELECT result FROM class_fits WHERE class_code = %s", (code,)).fetchone()[0])
+            assert result["result"]["live"] is False and result["result"]["recordings"] == 6
+            other.kill()  # the class's next change: the paused worker, alone, fits it
+            other = None
+            hold_tosses(made, code, 1)
+            while connection.execute("SELECT worker FROM class_fits WHERE class_code = %s AND "
+                                     "version = (SELECT version FROM fit_jobs WHERE class_code "
+                                     "= %s)", (code, code)).fetchone() != (paused.name,):
+                assert time.monotonic() < deadline
+                time.sleep(0.1)
+    finally:
+        for worker in (paused, other):
+            if worker is not None:
+                worker.stop()
+        made.close()
+    assert not any("Traceback" in line for line in paused.errors), paused.errors
 
 
 def proxy_stream(proxy, code, key):
