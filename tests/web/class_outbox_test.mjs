@@ -17,7 +17,7 @@ import { join } from 'node:path';
 
 const source = process.argv[2];
 if (!source) throw new Error('usage: node tests/web/class_outbox_test.mjs SOURCE_DIR');
-const { ClassOutbox, verdict, retryDelay, tossId, stateWords, RETRY_FIRST_MS, RETRY_MAX_MS } =
+const { ClassOutbox, verdict, serverFault, retryDelay, tossId, stateWords, RETRY_FIRST_MS, RETRY_MAX_MS } =
   await import(pathToFileURL(join(source, 'web/src/class_outbox.js')).href);
 
 /** The phone's storage: rows kept across "reloads" (each page a new ClassOutbox over it), copied
@@ -268,6 +268,72 @@ test('a server error (5xx) or a busy server (429) is tried again, the reason sho
   clock.tick(); await settle(outbox);
   assert.equal(outbox.state(k.toss).state, 'held');
   assert.equal(server.stored.length, 1);
+});
+
+test('the server failing on one toss (500) holds back none behind it; a proxy\'s 502–504 holds back all', async () => {
+  for (const s of [500, 501, 505, 599]) assert.equal(serverFault(s), true, String(s));
+  for (const s of [502, 503, 504, 429, 408, 201, 404]) assert.equal(serverFault(s), false, String(s));
+  const storage = phoneStorage(), server = classServer(), clock = handClock();
+  const post = server.post;
+  let bad = null;
+  // The server fails on one toss (a bug its bytes meet), and on that one alone.
+  server.post = async (item) => (item.toss === bad
+    ? (server.asked.push(item.toss), { status: 500, body: { error: 'internal error' } }) : post(item));
+  const { outbox } = page(storage, server, clock);
+  const first = toss(), second = toss(), third = toss();
+  bad = first.toss;
+  await outbox.add(first);
+  await outbox.add(second);
+  await outbox.add(third);
+  await settle(outbox);
+  assert.equal(outbox.state(first.toss).state, 'waiting');
+  assert.match(outbox.state(first.toss).reason, /^the server answered 500: internal error; next try in 1 s$/);
+  assert.deepEqual(server.stored.map((i) => i.toss), [second.toss, third.toss]);
+  assert.equal(clock.timers.length, 1, 'one timer for the toss that waits');
+  // Its wait ran out while the others were being sent: it is tried when that drain ends.
+  bad = null;
+  clock.tick(); await settle(outbox);
+  assert.equal(outbox.state(first.toss).state, 'held');
+  assert.deepEqual(server.stored.map((i) => i.toss), [second.toss, third.toss, first.toss]);
+  // A proxy's 503 (the server behind it away): the first waits, and those behind it too.
+  server.status = 503;
+  const fourth = toss(), fifth = toss();
+  const asked = server.asked.length;
+  await outbox.add(fourth);
+  await outbox.add(fifth);
+  await settle(outbox);
+  assert.deepEqual(server.asked.slice(asked), [fourth.toss], 'the tosses behind a 503 wait');
+  assert.equal(outbox.state(fifth.toss).state, 'waiting');
+  server.status = 0;
+  clock.tick(); await settle(outbox);
+  assert.deepEqual(server.stored.slice(-2).map((i) => i.toss), [fourth.toss, fifth.toss]);
+});
+
+test('a wait that runs out during a drain is not lost: the toss is tried once the drain ends', async () => {
+  const storage = phoneStorage(), server = classServer(), clock = handClock();
+  const post = server.post;
+  let bad = null, release = null;
+  server.post = async (item) => {
+    if (item.toss === bad) { server.asked.push(item.toss); return { status: 500, body: { error: 'internal error' } }; }
+    if (release === null) return post(item);
+    await new Promise((r) => { release = r; });  // a slow send: the wait runs out meanwhile
+    return post(item);
+  };
+  const { outbox } = page(storage, server, clock);
+  const first = toss(), second = toss();
+  bad = first.toss;
+  release = () => {};
+  await outbox.add(first);
+  await outbox.add(second);
+  for (let k = 0; k < 20; ++k) await new Promise((r) => setImmediate(r));
+  assert.equal(clock.timers.length, 1);
+  bad = null;
+  clock.tick();  // the first's wait runs out while the second's send is in flight
+  release();
+  release = null;
+  await settle(outbox);
+  assert.equal(outbox.state(second.toss).state, 'held');
+  assert.equal(outbox.state(first.toss).state, 'held', 'the wait that ran out during the drain was lost');
 });
 
 test('once a toss is held, the next failure waits the first wait again, not the long one', async () => {

@@ -34,6 +34,14 @@ export function verdict(status, body) {
   return 'retry';
 }
 
+/** Whether the answer `status` is the server's own failure on the toss it was sent (500, 501,
+ * 505 and up: the server reached, and it failed on this request), which the tosses behind it
+ * need not wait for; not 502, 503 or 504 (a proxy's: the server behind it down, busy or too
+ * slow), which every toss would meet. */
+export function serverFault(status) {
+  return status >= 500 && status !== 502 && status !== 503 && status !== 504;
+}
+
 /** The wait (ms) before the next try after `failures` failed sends in a row (1, 2, …): doubling
  * from RETRY_FIRST_MS to RETRY_MAX_MS, spread by ±20 % (`random()` in [0, 1)) so that a class's
  * phones coming back on the network at once do not all ask at the same instant. */
@@ -76,6 +84,8 @@ export class ClassOutbox {
     this.failures = 0;
     this.timer = null;
     this.draining = null;
+    this.again = false; // drain at once once this drain ends
+    this.due = false; // the wait ran out during a drain: a try once it ends
     this.seq = 0;
     /** Where the rows are kept: the storage, or null (the outbox lasts as long as the page). */
     this.store = Promise.resolve(store).catch(() => null);
@@ -125,7 +135,7 @@ export class ClassOutbox {
   }
 
   /** Every waiting toss sent, in the order kept, one at a time, until all are held or refused
-   * or one fails to reach the server: then the rest wait for the next try (retryDelay after
+   * or one fails to reach the server (sendNext): then the rest wait for the next try (retryDelay after
    * the failures in a row; `now`: at once, the failures forgotten: the browser back online,
    * the page loaded). A promise that settles when this drain ends. */
   drain(now = false) {
@@ -142,15 +152,20 @@ export class ClassOutbox {
       this.draining = null;
       // Asked to drain at once while draining (back online as a send failed): once more now.
       if (this.again) { this.again = false; this.drain(true); }
+      // The wait ran out while the others were sent: its try now.
+      else if (this.due) { this.due = false; this.drain(); }
     });
     return this.draining;
   }
 
   /** The first waiting toss sent, then the next, until none waits or one is not held and
-   * not refused (it and the rest wait for the next try). */
+   * not refused: it and the rest wait for the next try, but for the server's own error about
+   * that toss (serverFault: the server reached, and it failed on this toss), after which the
+   * rest go on in this drain and it alone waits. */
   async sendNext() {
+    const passed = new Set(); // tosses the server failed on in this drain: tried again later
     for (;;) {
-      const next = this.list().find((i) => i.state === 'waiting');
+      const next = this.list().find((i) => i.state === 'waiting' && !passed.has(i.toss));
       if (!next) return;
       next.state = 'sending';
       this.onChange(next);
@@ -172,16 +187,23 @@ export class ClassOutbox {
       } else if (what === 'refused') {
         Object.assign(next, { state: 'refused', reason: said || `the server answered ${answer.status}` });
       } else {
-        // Not held and not refused: it waits, and the rest behind it, for the next try.
+        // Not held and not refused: it waits for the next try, and the rest behind it unless
+        // the server failed on this toss alone.
         this.failures += 1;
         const wait = retryDelay(this.failures, this.random);
         const why = answer ? `the server answered ${answer.status}${said ? `: ${said}` : ''}` : 'no network or no server';
         Object.assign(next, { state: 'waiting', reason: `${why}; next try in ${Math.round(wait / 1000)} s` });
-        this.timer = this.later(() => { this.timer = null; this.drain(); }, wait);
+        if (this.timer === null) {
+          this.timer = this.later(() => {
+            this.timer = null;
+            if (this.draining) this.due = true; else this.drain();
+          }, wait);
+        }
+        if (answer && serverFault(answer.status)) passed.add(next.toss);
       }
       this.onChange(next);
       await this.save(next);
-      if (what === 'retry') return;
+      if (what === 'retry' && !passed.has(next.toss)) return;
     }
   }
 }
