@@ -12,7 +12,9 @@ moment:
     machine's) to its first appearance on the teacher's stream (time.time(): the same clock);
   - the other N - K plain HTTPS clients, each joining and posting a real recording (the seven
     in turn, each restamped so that no two are the same recording: the fit refuses one given
-    twice), timed from their POST's start to its 201 and to the stream.
+    twice), timed from their POST's start to its 201 and to the stream, and that path split at
+    the moment the server held the toss (the store's `received`): the phone's part (its TLS,
+    its 70 kB body, the server's reading and commit) and the server's after it (to the stream).
 Then the seconds to the live estimate and to the exact pooled fit that hold every toss; the
 server's CPU seconds and peak memory from /proc. With --classes C (a school: docs/performance-class.md,
 "A school at once") the store is a PostgreSQL the bench starts (as class/tests/class_server.py
@@ -273,6 +275,25 @@ all_fitted = all(event.wait(timeout=max(0.0, deadline - time.monotonic()))
 end = time.time()
 cpu = cpu_seconds() - cpu_before
 peak = peak_rss_mib()
+
+
+def held_at():
+    """toss id -> the moment a server held it (the store's `received`, stamped by the server on
+    this machine's clock as it commits the toss): what splits a toss's path into the phone's
+    part (its TLS, its body, the server's reading of it) and the server's after it."""
+    if database is not None:
+        import psycopg
+        with psycopg.connect(extra[extra.index("--postgres") + 1]) as connection:
+            return dict(connection.execute("SELECT toss, received FROM tosses").fetchall())
+    import sqlite3
+    connection = sqlite3.connect(f"file:{server.seen_at / 'class.sqlite3'}?mode=ro", uri=True)
+    try:
+        return dict(connection.execute("SELECT toss, received FROM tosses").fetchall())
+    finally:
+        connection.close()
+
+
+held = held_at()
 for worker in workers:
     worker.terminate()
     worker.wait(timeout=60)
@@ -305,6 +326,8 @@ print(f"{everyone} phones keeping a real recording each at once{school}: {browse
 if plain:
     print(line("plain: POST to 201", [answered[i] - sent[i] for i in plain]))
     print(line("plain: POST to the event stream", [seen[ids[i]] - sent[i] for i in plain]))
+    print(line("plain: POST to held (phone's part)", [held[ids[i]] - sent[i] for i in plain]))
+    print(line("plain: held to the event stream", [seen[ids[i]] - held[ids[i]] for i in plain]))
 if browsers:
     print("  the browsers' recordings kept: " + "; ".join(
         f"{raw[b % len(raw)]} as {fed_as[b]}" for b in range(browsers)))
