@@ -126,7 +126,8 @@ def cpu_seconds():
     total = 0
     for pid in pids:
         fields = pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-        total += int(fields[11]) + int(fields[12])
+        # Its own and its children's that ended (the exact fits' processes, fit_process.py).
+        total += sum(int(fields[k]) for k in (11, 12, 13, 14))
     return total / ticks
 
 
@@ -140,6 +141,39 @@ def peak_rss_mib():
     return total
 
 
+def resident_mib_with_children():
+    """The resident memory now of the servers and workers and every process they started (the
+    exact fits' processes, fit_process.py), summed."""
+    parent, rss = {}, {}
+    for status in pathlib.Path("/proc").glob("[0-9]*/status"):
+        try:
+            lines = status.read_text().splitlines()
+        except OSError:
+            continue
+        fields = dict(line.split(":", 1) for line in lines if ":" in line)
+        pid = int(status.parent.name)
+        parent[pid] = int(fields.get("PPid", "0"))
+        rss[pid] = int(fields.get("VmRSS", "0 kB").split()[0]) / 1024
+
+    def ours(pid):
+        while pid > 1:
+            if pid in pids:
+                return True
+            pid = parent.get(pid, 0)
+        return False
+    return sum(size for pid, size in rss.items() if ours(pid))
+
+
+sampled_peak = [0.0]
+
+
+def sample_memory(stop):
+    while not stop.wait(0.5):
+        sampled_peak[0] = max(sampled_peak[0], resident_mib_with_children())
+
+
+sampling = threading.Event()
+threading.Thread(target=sample_memory, args=(sampling,), daemon=True).start()
 seen, seen_lock, last_pooled = {}, threading.Lock(), [None]
 live_at = {}  # class -> when its projector first showed the live estimate of every toss
 fitted = {code: threading.Event() for code, _ in classes}
@@ -275,6 +309,7 @@ all_fitted = all(event.wait(timeout=max(0.0, deadline - time.monotonic()))
 end = time.time()
 cpu = cpu_seconds() - cpu_before
 peak = peak_rss_mib()
+sampling.set()
 
 
 def held_at():
@@ -334,6 +369,10 @@ if browsers:
     print(line("browser: Stop tapped to kept", [kept_at[b] - stopped_at[b] for b in range(browsers)]))
     print(line("browser: kept to the event stream",
                [seen[browser_toss[b]] - kept_at[b] for b in range(browsers)]))
+    print(line("browser: kept to held (phone's part)",
+               [held[browser_toss[b]] - kept_at[b] for b in range(browsers)]))
+    print(line("browser: held to the event stream",
+               [seen[browser_toss[b]] - held[browser_toss[b]] for b in range(browsers)]))
 each = f" (each class's {phones})" if a.classes > 1 else ""
 if live_at:
     print(f"  the moment all were released to the live estimate of all {phones}{each}: "
@@ -342,6 +381,10 @@ print(f"  the moment all were released to the pooled fit of all {phones}{each}: 
       (f"{end - start:.2f} s" if all_fitted else f"not within {a.fit_wait:g} s") +
       (f" (the fit's error: {last_pooled[0]['error']})" if all_fitted and last_pooled[0]["error"]
        else ""))
+aside = (last_pooled[0] or {}).get("set_aside") or []
+if aside:  # a recording the fit refused, fitted again without it (docs/class.md)
+    print(f"  set aside by the last fit: {len(aside)} ({aside[0]['file']}: {aside[0]['why']})")
 layout = f" ({len(servers)} processes, {len(workers)} fit workers)" if pids[1:] else ""
 print(f"  server{layout}: {cpu:.2f} CPU seconds over {end - start:.2f} s, peak resident memory "
-      f"{peak:.0f} MiB")
+      f"{peak:.0f} MiB; with the exact fits' processes, sampled every 0.5 s: "
+      f"{sampled_peak[0]:.0f} MiB")

@@ -1,9 +1,9 @@
 """The class's pooled body (docs/class.md, "The projector's numbers"): every toss not left out,
 fitted as one body by bookspin.fit([files…]), the very fit `bookspin fit FILES…` makes of the
 set the teacher downloads (the same CSV text in files of the same names), so the projector's
-numbers are the command's to the digit. The fit runs in a worker thread (the module releases
-the GIL while it fits), one at a time; tosses that arrive during a fit are fitted together by
-the next (a burst is one refit). During a burst the projector shows the live estimate
+numbers are the command's to the digit. The exact fit runs in a process of its own
+(fit_process.py), one at a time, stopped when a toss makes it stale; tosses that arrive during a
+fit are fitted together by the next (a burst is one refit). During a burst the projector shows the live estimate
 (docs/class.md, "The projector's numbers"): each toss prepared once as it arrives
 (bookspin.prepare_recording, in the worker threads, in parallel), the set refitted warm from the
 last estimate (bookspin.live_fit), marked "live"; once the class is quiet for QUIET_SECONDS the
@@ -22,6 +22,7 @@ import zipfile
 
 import bookspin
 
+from bookspin_class import fit_process
 from bookspin_class.fit_threads import FIT_THREADS
 from bookspin_class.judgement import Judge, text_key
 
@@ -240,6 +241,12 @@ def fit_class(files, judge):
             aside.update(broken)
 
 
+def exact_fit(files):
+    """fit_class(files) with a judge of its own: what the exact fit's process runs
+    (fit_process.run_apart)."""
+    return fit_class(files, Judge())
+
+
 def add_alone(flights, own):
     """Each flight's T/2 as its recording alone measures it (OwnFit.flights, the phone's own
     fit): the flight of the same start within 0.15 s, as half_period_measured_alone."""
@@ -420,7 +427,7 @@ class PooledFit:
                         return
                     pooled, flights, aside = done
                     error = None
-                except bookspin.Error as failure:
+                except (bookspin.Error, fit_process.Ended) as failure:
                     pooled, flights = {"tosses": 0, "recordings": len(files),
                                        "ratios": None, "sigma": None, "live": False}, {}
                     error = str(failure)
@@ -452,29 +459,22 @@ class PooledFit:
         self.on_done()
 
     async def _beside_live(self, files):
-        """fit_class(files) in a worker thread; a toss that comes while it runs (minutes at 350)
-        has its live estimate at once, beside it, and makes it stale: None then, and the exact
-        fit of them all follows once the class is quiet again (docs/class.md, "The projector's
-        numbers"). Raises bookspin.Error as fit_class does."""
-        exact = asyncio.get_running_loop().run_in_executor(FIT_THREADS, fit_class, files,
-                                                           self.judge)
-        stale = False
+        """fit_class(files) in a process of its own (fit_process.run_apart); a toss that comes
+        while it runs (minutes at 350) makes it stale: its process is stopped at once and None
+        returned (self.dirty set), the loop then shows the live estimate of them all, and the
+        exact fit follows once the class is quiet again (docs/class.md, "The projector's
+        numbers"). Raises bookspin.Error as fit_class does, fit_process.Ended."""
+        exact = asyncio.ensure_future(fit_process.run_apart(exact_fit, files))
         while not exact.done():
-            if not self.dirty:
-                self.wake.clear()
-                woken = asyncio.ensure_future(self.wake.wait())
-                await asyncio.wait({exact, woken}, return_when=asyncio.FIRST_COMPLETED)
-                woken.cancel()
-                continue
-            self.dirty, stale = False, True
-            try:
-                newer = await asyncio.to_thread(self.files_of)
-            except Exception:  # the store lost: the loop reads it again after this fit
-                continue
-            if newer:
-                await self._live(newer)
-        result = exact.result()
-        return None if stale else result
+            if self.dirty:
+                exact.cancel()
+                await asyncio.gather(exact, return_exceptions=True)
+                return None
+            self.wake.clear()
+            woken = asyncio.ensure_future(self.wake.wait())
+            await asyncio.wait({exact, woken}, return_when=asyncio.FIRST_COMPLETED)
+            woken.cancel()
+        return exact.result()
 
     def _judge(self, files):
         own = self.judge.own_fits(files)

@@ -6,6 +6,7 @@ other samples). The threshold of the judgement was decided on 12-10-56, 12-13-01
 phone) and 12-22-44, 12-38-00 (the plate) with their thinnings; the held-out recordings
 12-13-51 (phone), 12-29-59 and 12-44-51 (plate) test it here."""
 import io
+import pathlib
 import time
 import uuid
 import zipfile
@@ -289,12 +290,28 @@ def test_a_burst_shows_the_live_estimate_then_the_exact_fit_of_the_downloaded_se
             (last, pooled)
 
 
+def fit_processes(pid):
+    """The exact fits' processes the server `pid` runs now (fit_process.py: spawned)."""
+    found = []
+    for status in pathlib.Path("/proc").glob("[0-9]*/status"):
+        try:
+            parent = [line for line in status.read_text().splitlines()
+                      if line.startswith("PPid:")]
+            command = (status.parent / "cmdline").read_bytes()
+        except OSError:
+            continue
+        if parent and int(parent[0].split()[1]) == pid and b"spawn_main" in command:
+            found.append(int(status.parent.name))
+    return found
+
+
 def test_a_toss_during_the_exact_fit_has_its_live_estimate_and_the_stale_fit_is_not_shown(
         tmp_path, page):
-    """A toss that comes while the exact fit runs (minutes at 350) is not held up by it: its
-    live estimate is shown beside it, and the exact fit of the set without it, stale, is never
-    shown; the exact fit of them all follows once the class is quiet again (docs/class.md, "The
-    projector's numbers")."""
+    """A toss that comes while the exact fit runs (minutes at 350) is not held up by it: the
+    stale fit's process is stopped before the toss's live estimate is shown (not left to run
+    to its end on a core), the exact fit of the set without it is never shown, and the exact
+    fit of them all follows once the class is quiet again (docs/class.md, "The projector's
+    numbers")."""
     require_real()
     names = sorted(p.name for p in REAL.iterdir() if p.is_dir())
     server = Server(tmp_path / "data", page, env={"BOOKSPIN_CLASS_QUIET_SECONDS": "0.5"}).start()
@@ -309,14 +326,22 @@ def test_a_toss_during_the_exact_fit_has_its_live_estimate_and_the_stale_fit_is_
             time.sleep(0.1)
         time.sleep(1.0)  # past the quiet: the exact fit of the 28 runs
         before = server.state()["pooled"]
+        stale = fit_processes(server.process.pid)
+        while not stale and before["live"] and before["fitting"] and time.monotonic() < end:
+            stale = fit_processes(server.process.pid)  # the exact fit of the 28, started
+            before = server.state()["pooled"]
         if not (before["live"] and before["fitting"]):
             pytest.skip(f"the exact fit of {n} was done before a toss could come during it: "
                         f"{before['live']}, {before['fitting']}")
+        assert len(stale) == 1, stale
         post(server, server.join("late"), restamped(real_csv(names[0]), 9000.0), "late")
         seen = []
         while time.monotonic() < end:
             pooled = server.state()["pooled"]
             seen.append((pooled["live"], pooled["recordings"], pooled["fitting"]))
+            if seen[-1] == (True, n + 1, True):
+                assert not pathlib.Path(f"/proc/{stale[0]}").exists(), \
+                    "the stale exact fit runs on beside the live estimate"
             if pooled["recordings"] == n + 1 and not pooled["fitting"]:
                 break
             time.sleep(0.1)
