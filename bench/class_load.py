@@ -176,6 +176,7 @@ sampling = threading.Event()
 threading.Thread(target=sample_memory, args=(sampling,), daemon=True).start()
 seen, seen_lock, last_pooled = {}, threading.Lock(), [None]
 live_at = {}  # class -> when its projector first showed the live estimate of every toss
+exact_at = {}  # class -> when it first showed the exact fit's body of every toss (judging on)
 fitted = {code: threading.Event() for code, _ in classes}
 
 
@@ -197,6 +198,8 @@ def listen(code, key, shown_by):
         pooled = last_pooled[0] = state["pooled"]
         if pooled.get("live") and pooled["recordings"] == phones and pooled["ratios"]:
             live_at.setdefault(code, now)
+        if not pooled.get("live") and pooled["recordings"] == phones and pooled["ratios"]:
+            exact_at.setdefault(code, now)
         if pooled["recordings"] == phones and not pooled["fitting"] and \
                 (pooled["ratios"] or pooled["error"]):
             fitted[code].set()
@@ -377,6 +380,9 @@ each = f" (each class's {phones})" if a.classes > 1 else ""
 if live_at:
     print(f"  the moment all were released to the live estimate of all {phones}{each}: "
           f"{max(live_at.values()) - start:.2f} s (docs/class.md, \"The projector's numbers\")")
+if exact_at and len(exact_at) == len(classes):
+    print(f"  the moment all were released to the exact fit's body of all {phones}{each}: "
+          f"{max(exact_at.values()) - start:.2f} s (each toss's judgement then follows)")
 print(f"  the moment all were released to the pooled fit of all {phones}{each}: " +
       (f"{end - start:.2f} s" if all_fitted else f"not within {a.fit_wait:g} s") +
       (f" (the fit's error: {last_pooled[0]['error']})" if all_fitted and last_pooled[0]["error"]

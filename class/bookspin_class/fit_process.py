@@ -26,8 +26,9 @@ def _die_with_parent():
         pass  # not Linux: a fit outliving a killed server ends when it is done
 
 
-def _child(function, args, connection):
-    """The spawned process: function(*args) sent back, or what it raised."""
+def _child(connection):
+    """The spawned process: (function, args) received, function(*args) sent back, or what it
+    raised."""
     _die_with_parent()
     if os.getppid() == 1:  # the parent died before prctl: nothing to fit for
         return
@@ -35,6 +36,10 @@ def _child(function, args, connection):
         os.nice(10)
     except OSError:
         pass
+    try:
+        function, args = connection.recv()
+    except EOFError:  # the parent stopped it before sending
+        return
     try:
         answer = ("returned", function(*args))
     except Exception as error:  # raised in the parent as it is (bookspin.Error pickles)
@@ -57,13 +62,16 @@ async def run_apart(function, *args):
     """function(*args) in a process of its own (function and args picklable: a module's
     function, plain data): what it returns, or raises what it raised. Cancelled, the process is
     killed at once. Raises Ended where the process ended without an answer."""
-    receiving, sending = CONTEXT.Pipe(duplex=False)
-    process = CONTEXT.Process(target=_child, args=(function, args, sending), daemon=True,
+    ours, its = CONTEXT.Pipe()
+    process = CONTEXT.Process(target=_child, args=(its,), daemon=True,
                               name="bookspin-class-exact-fit")
+    # Started from this thread, the event loop's (it lives as long as the process: the child's
+    # PR_SET_PDEATHSIG is of the thread that started it), its work sent after (25 MB at 350).
+    process.start()
+    its.close()
     try:
-        await asyncio.to_thread(process.start)  # the args written to it: 25 MB at 350 tosses
-        sending.close()
-        kind, value = await asyncio.to_thread(_receive, receiving, process)
+        await asyncio.to_thread(ours.send, (function, args))
+        kind, value = await asyncio.to_thread(_receive, ours, process)
     except asyncio.CancelledError:
         if process.pid is not None:
             process.kill()
@@ -72,7 +80,8 @@ async def run_apart(function, *args):
     if kind == "raised":
         raise value
     if kind == "ended":
-        raise Ended(f"the class's exact fit ended without an answer (its process's exit "
-                    f"status {value}: killed by the system, out of memory?)")
+        how = f"killed by signal {-value}, by the system: out of memory?" if value < 0 else \
+            f"exit status {value}: the server's log says why"
+        raise Ended(f"the class's exact fit ended without an answer ({how})")
     await asyncio.to_thread(process.join)
     return value
