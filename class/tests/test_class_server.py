@@ -10,11 +10,9 @@ import io
 import json
 import os
 import pathlib
-import shutil
 import socket
 import ssl
 import subprocess
-import tempfile
 import threading
 import time
 import uuid
@@ -27,34 +25,12 @@ from class_server import require_packages  # noqa: E402
 require_packages('aiohttp', 'psycopg', 'segno')
 import segno  # noqa: E402
 
-from class_server import (REAL, Postgres, Server, in_ci, real_csv, restamped,
-                          require_real)
+from class_server import Server, in_ci, real_csv, restamped, require_real
+from class_start_shared import page, postgres  # noqa: F401  (the fixtures)
 from conftest import cli_error_line, read_csv, run_cli
 
 PHONE = ["12-10-56", "12-13-01", "12-13-51"]  # the bare phone's recordings (their README)
 PLATE = "12-22-44"                             # another body: the phone on a plate
-
-
-@pytest.fixture(scope="session")
-def postgres():
-    folder = pathlib.Path(tempfile.mkdtemp(prefix="bookspin-pg-"))
-    server = Postgres(folder)
-    why = server.start()
-    if why:
-        server.stop()
-        yield why
-        return
-    yield server
-    server.stop()
-    shutil.rmtree(folder, ignore_errors=True)
-
-
-@pytest.fixture(scope="session")
-def page(tmp_path_factory):
-    """A stand-in for explorer.html (the phones' page is the page's own tests' business)."""
-    path = tmp_path_factory.mktemp("page") / "explorer.html"
-    path.write_text("<!doctype html><title>bookspin explorer</title><p>lab</p>\n")
-    return path
 
 
 @pytest.fixture(params=["sqlite", "postgres"])
