@@ -62,6 +62,9 @@ parser.add_argument("--processes", type=int, default=1,
 parser.add_argument("--workers", type=int, default=0,
                     help="fit workers of their own (bookspin-class --fit-worker), the servers "
                          "then fitting nothing themselves (default 0: each server's own)")
+parser.add_argument("--keep-set", type=pathlib.Path, metavar="ZIP",
+                    help="the first class's set, as the teacher downloads it, written to ZIP "
+                         "(to time `bookspin fit` of it apart)")
 a = parser.parse_args()
 if a.processes < 1 or a.workers < 0:
     parser.error("--processes must be 1 or more, --workers 0 or more")
@@ -161,7 +164,17 @@ def resident_mib_with_children():
                 return True
             pid = parent.get(pid, 0)
         return False
+    for pid in rss:
+        if pid not in pids and ours(pid):
+            try:
+                if b"spawn_main" in pathlib.Path(f"/proc/{pid}/cmdline").read_bytes():
+                    exact_fits.add(pid)
+            except OSError:
+                pass
     return sum(size for pid, size in rss.items() if ours(pid))
+
+
+exact_fits = set()  # the exact fits' processes seen (fit_process.py), by pid
 
 
 sampled_peak = [0.0]
@@ -332,6 +345,12 @@ def held_at():
 
 
 held = held_at()
+if a.keep_set:
+    status, data = server.request("GET", f"/api/class/{server.code}/download", token=server.key,
+                                  timeout=600)
+    if status != 200:
+        sys.exit(f"class_load: the class's set not downloaded: {status} {data!r}")
+    a.keep_set.write_bytes(data)
 for worker in workers:
     worker.terminate()
     worker.wait(timeout=60)
@@ -393,4 +412,4 @@ if aside:  # a recording the fit refused, fitted again without it (docs/class.md
 layout = f" ({len(servers)} processes, {len(workers)} fit workers)" if pids[1:] else ""
 print(f"  server{layout}: {cpu:.2f} CPU seconds over {end - start:.2f} s, peak resident memory "
       f"{peak:.0f} MiB; with the exact fits' processes, sampled every 0.5 s: "
-      f"{sampled_peak[0]:.0f} MiB")
+      f"{sampled_peak[0]:.0f} MiB; exact fits started: {len(exact_fits)}")
