@@ -451,12 +451,39 @@ class PooledFit:
         if not pooled["judging"]:
             return
         # The judgements: each recording against the body the others give.
-        own, judged = await asyncio.get_running_loop().run_in_executor(
-            FIT_THREADS, self._judge, kept)
+        judging = asyncio.get_running_loop().run_in_executor(FIT_THREADS, self._judge, kept)
+        if await self._live_while(judging):
+            return  # stale: not shown (the own fits it made are kept for the next)
+        own, judged = judging.result()
         add_alone(flights, own)
         self.judgements = judged
         self.result = dict(pooled, judging=False)
         self.on_done()
+
+    async def _live_while(self, judging):
+        """Waits for the judgements `judging` (a minute at 350); a toss that comes meanwhile has
+        its live estimate at once, beside them (docs/class.md, "The projector's numbers").
+        Whether one came: the judgements are then stale, self.dirty set (the loop fits them
+        all again once the class is quiet)."""
+        stale = False
+        while not judging.done():
+            if not self.dirty:
+                self.wake.clear()
+                woken = asyncio.ensure_future(self.wake.wait())
+                await asyncio.wait({judging, woken}, return_when=asyncio.FIRST_COMPLETED)
+                woken.cancel()
+                continue
+            self.dirty, stale, self.fitting = False, True, True
+            try:
+                newer = await asyncio.to_thread(self.files_of)
+            except Exception:  # the store lost: the loop reads it again after the judgements
+                continue
+            if newer:
+                await self._live(newer)
+        judging.result()  # what the judgements raised, raised
+        if stale:
+            self.dirty = True
+        return stale
 
     async def _beside_live(self, files):
         """fit_class(files) in a process of its own (fit_process.run_apart); a toss that comes

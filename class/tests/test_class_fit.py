@@ -350,3 +350,45 @@ def test_a_toss_during_the_exact_fit_has_its_live_estimate_and_the_stale_fit_is_
         assert seen[-1] == (False, n + 1, False), seen
     finally:
         server.stop()
+
+
+def test_a_toss_during_the_judgements_has_its_live_estimate_and_they_are_not_shown(
+        tmp_path, page):
+    """A toss that comes while each toss's judgement is made after the exact fit (a minute at
+    350) does not wait for them: its live estimate is shown beside them, and the judgements of
+    the set without it, stale, are never shown; the exact fit and judgements of them all follow
+    once the class is quiet again (docs/class.md, "The projector's numbers")."""
+    require_real()
+    names = sorted(p.name for p in REAL.iterdir() if p.is_dir())
+    server = Server(tmp_path / "data", page, env={"BOOKSPIN_CLASS_QUIET_SECONDS": "0.5"}).start()
+    try:
+        n = 21  # the seven, three times, restamped: judgements of some seconds
+        for i in range(n):
+            csv = restamped(real_csv(names[i % len(names)]), 1000.0 * (i // len(names)))
+            post(server, server.join(f"student {i}"), csv, f"r{i}")
+        end = time.monotonic() + 300  # a guard against a test that hangs, not a timing
+        while time.monotonic() < end:
+            before = server.state()["pooled"]
+            if before["recordings"] == n and not before["live"] and (
+                    before["judging"] or before["ratios"] is not None):
+                break
+            time.sleep(0.05)
+        if not before["judging"]:
+            pytest.skip(f"the judgements of {n} were done before a toss could come during "
+                        f"them: {before}")
+        post(server, server.join("late"), restamped(real_csv(names[0]), 9000.0), "late")
+        seen = []
+        while time.monotonic() < end:
+            pooled = server.state()["pooled"]
+            seen.append((pooled["live"], pooled["recordings"], pooled["judging"]))
+            if pooled["recordings"] == n + 1 and not pooled["live"] and \
+                    not pooled["judging"] and not pooled["fitting"]:
+                break
+            time.sleep(0.05)
+        assert (True, n + 1, False) in seen, seen
+        assert (False, n, False) not in seen, seen  # the stale judgements never shown
+        assert seen[-1] == (False, n + 1, False), seen
+        judged = server.state()["students"]
+        assert all(t["judgement"] is not None for s in judged for t in s["tosses"]), judged
+    finally:
+        server.stop()
