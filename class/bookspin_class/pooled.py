@@ -461,8 +461,8 @@ class PooledFit:
         self.on_done()
 
     async def _live_while(self, judging):
-        """Waits for the judgements `judging` (a minute at 350); a toss that comes meanwhile has
-        its live estimate at once, beside them (docs/class.md, "The projector's numbers").
+        """Waits for the judgements `judging` (longer the larger the class); a toss that comes
+        meanwhile has its live estimate at once, beside them (docs/class.md, "The projector's numbers").
         Whether one came: the judgements are then stale, self.dirty set (the loop fits them
         all again once the class is quiet)."""
         stale = False

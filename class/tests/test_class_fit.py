@@ -354,8 +354,8 @@ def test_a_toss_during_the_exact_fit_has_its_live_estimate_and_the_stale_fit_is_
 
 def test_a_toss_during_the_judgements_has_its_live_estimate_and_they_are_not_shown(
         tmp_path, page):
-    """A toss that comes while each toss's judgement is made after the exact fit (a minute at
-    350) does not wait for them: its live estimate is shown beside them, and the judgements of
+    """A toss that comes while each toss's judgement is made after the exact fit (longer the
+    larger the class) does not wait for them: its live estimate is shown beside them, and the judgements of
     the set without it, stale, are never shown; the exact fit and judgements of them all follow
     once the class is quiet again (docs/class.md, "The projector's numbers")."""
     require_real()
