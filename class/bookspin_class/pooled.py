@@ -313,8 +313,8 @@ class PooledFit:
     async def exact_once(self):
         """A fit worker's exact stage (fit_jobs.py): the exact fit and the judgements
         published, as the laptop's quiet class gets them. False where a toss came during it
-        (its live estimate shown beside it, the exact fit not: stale). Raises what files_of
-        raises."""
+        (the exact fit stopped and not shown, stale; during the judgements, its live estimate
+        shown beside them, the judgements not). Raises what files_of raises."""
         self.dirty = False
         async with self.gate:
             files = await asyncio.to_thread(self.files_of)
@@ -421,7 +421,7 @@ class PooledFit:
                 error = None
             else:
                 try:
-                    done = await self._beside_live(files)
+                    done = await self._exact_unless_stale(files)
                     if done is None:  # a toss came while it ran: the loop fits them all again
                         self.dirty = True
                         return
@@ -462,16 +462,13 @@ class PooledFit:
 
     async def _live_while(self, judging):
         """Waits for the judgements `judging` (longer the larger the class); a toss that comes
-        meanwhile has its live estimate at once, beside them (docs/class.md, "The projector's numbers").
-        Whether one came: the judgements are then stale, self.dirty set (the loop fits them
+        meanwhile has its live estimate at once, beside them (docs/class.md, "The projector's
+        numbers"). Whether one came: the judgements are then stale, self.dirty set (the loop fits them
         all again once the class is quiet)."""
         stale = False
         while not judging.done():
             if not self.dirty:
-                self.wake.clear()
-                woken = asyncio.ensure_future(self.wake.wait())
-                await asyncio.wait({judging, woken}, return_when=asyncio.FIRST_COMPLETED)
-                woken.cancel()
+                await self._change_or(judging)
                 continue
             self.dirty, stale, self.fitting = False, True, True
             try:
@@ -485,7 +482,15 @@ class PooledFit:
             self.dirty = True
         return stale
 
-    async def _beside_live(self, files):
+    async def _change_or(self, running):
+        """Until a change of the class's tosses (request, note_change) or the end of
+        `running`, whichever is first."""
+        self.wake.clear()
+        woken = asyncio.ensure_future(self.wake.wait())
+        await asyncio.wait({running, woken}, return_when=asyncio.FIRST_COMPLETED)
+        woken.cancel()
+
+    async def _exact_unless_stale(self, files):
         """fit_class(files) in a process of its own (fit_process.run_apart); a toss that comes
         while it runs (minutes at 350) makes it stale: its process is stopped at once and None
         returned (self.dirty set), the loop then shows the live estimate of them all, and the
@@ -497,10 +502,7 @@ class PooledFit:
                 exact.cancel()
                 await asyncio.gather(exact, return_exceptions=True)
                 return None
-            self.wake.clear()
-            woken = asyncio.ensure_future(self.wake.wait())
-            await asyncio.wait({exact, woken}, return_when=asyncio.FIRST_COMPLETED)
-            woken.cancel()
+            await self._change_or(exact)
         return exact.result()
 
     def _judge(self, files):
