@@ -291,8 +291,8 @@ class Worker:
 
     async def fit(self, code, version, attempt, stage):
         """One stage of the class's job: its live estimate (the exact fit due after the
-        quiet, or at once where none could be shown), or its exact fit and judgements (done; or
-        the quiet again where a toss made it stale, its live estimate shown beside it)."""
+        quiet, or at once where none could be shown), or its exact fit and judgements (done; or,
+        where a toss made them stale, the job handed back for that toss's live estimate)."""
         from bookspin_class import pooled
         fit = await self.fit_of(code)
         self.lost, self.pending = False, []
