@@ -1,15 +1,17 @@
 """The class server under a class's load (docs/performance-class.md, "A class at once"): a real
 bookspin-class on 127.0.0.1 serving the real explorer page, the teacher's event stream open, and
 N phones (default 30) keeping a real recording of ../shared/recordings-real/ each at the same
-moment:
+moment (with --spread S, each at its own moment within the same S seconds, as a lecture hall's
+phones keep theirs):
   - K of them (--browsers, default 3) headless Chromium at a phone's size (390x844, touch), each
     opening the class's address (explorer.html?class=CODE#lab), joining under a name, and
     recording a real toss fed sample by sample at its own rate through the sensor override
     (tests/browser/explorer_phone_in_class_test.py and explorer_records_gyro_test.py's helpers:
     the server, its certificate trusted by its key's hash, feed, override, tap); Stop tapped at
-    the moment the plain clients post. A browser's toss is timed from the moment the page kept
-    it (the recording's `when`, new Date() in the recorder's keep: the page's wall clock, this
-    machine's) to its first appearance on the teacher's stream (time.time(): the same clock);
+    the moment the plain clients post (with --spread, at its own moment). A browser's toss is
+    timed from the moment the page kept it (the recording's `when`, new Date() in the
+    recorder's keep: the page's wall clock, this machine's) to its first appearance on the
+    teacher's stream (time.time(): the same clock);
   - the other N - K plain HTTPS clients, each joining and posting a real recording (the seven
     in turn, each restamped so that no two are the same recording: the fit refuses one given
     twice), timed from their POST's start to its 201 and to the stream, and that path split at
@@ -23,7 +25,7 @@ one server serves all of them, PHONES phones in each, the browsers in the first.
 table; run from the repository root:
 
     PYTHONPATH=build/python python3 bench/class_load.py BUILD_DIR [PHONES] [--browsers K]
-        [--classes C] [--postgres]
+        [--classes C] [--postgres] [--spread S [--seed N]]
 
 The page is written by BUILD_DIR/bookspin explore into a scratch folder (its shell built first:
 web/build.sh BUILD_DIR); --browsers 0 needs neither it nor Chromium.
@@ -35,6 +37,7 @@ import http.client
 import json
 import os
 import pathlib
+import random
 import statistics
 import subprocess
 import sys
@@ -62,12 +65,18 @@ parser.add_argument("--processes", type=int, default=1,
 parser.add_argument("--workers", type=int, default=0,
                     help="fit workers of their own (bookspin-class --fit-worker), the servers "
                          "then fitting nothing themselves (default 0: each server's own)")
+parser.add_argument("--spread", type=float, default=0.0, metavar="SECONDS",
+                    help="each phone keeps its toss at its own moment within this window "
+                         "(uniform, seeded by --seed), the browsers' Stop tapped likewise; 0, "
+                         "the default: all at the same instant")
+parser.add_argument("--seed", type=int, default=114,
+                    help="the seed of the phones' moments within --spread (default 114)")
 parser.add_argument("--keep-set", type=pathlib.Path, metavar="ZIP",
                     help="the first class's set, as the teacher downloads it, written to ZIP "
                          "(to time `bookspin fit` of it apart)")
 a = parser.parse_args()
-if a.processes < 1 or a.workers < 0:
-    parser.error("--processes must be 1 or more, --workers 0 or more")
+if a.processes < 1 or a.workers < 0 or not 0 <= a.spread <= 600:
+    parser.error("--processes must be 1 or more, --workers 0 or more, --spread from 0 to 600")
 if not 0 <= a.browsers <= a.phones:
     parser.error(f"--browsers must be from 0 to the phones ({a.phones})")
 build = a.build.resolve()
@@ -231,6 +240,10 @@ tokens = {p: server.join(f"phone {p[1]}", code=classes[p[0]][0]) for p in plain}
 texts = {p: restamped(real_csv(names[p[1] % len(names)]), 100.0 * p[1]) for p in plain}
 ids = {p: str(uuid.uuid4()) for p in plain}
 sent, answered, statuses = {}, {}, {}
+# Each phone's moment after the start (the browsers' keyed by their number): all 0 unless --spread.
+moments = random.Random(a.seed)
+moment = {p: moments.uniform(0.0, a.spread) for p in plain}
+moment.update({b: moments.uniform(0.0, a.spread) for b in range(browsers)})
 # Every phone ready (the browsers recording, their readings fed), then all at once: the plain
 # clients post and the browsers' Stop is tapped.
 go = threading.Barrier(everyone + 1, timeout=900)
@@ -243,6 +256,7 @@ problems = []
 
 def phone(i):
     go.wait()
+    time.sleep(moment[i])
     sent[i] = time.time()
     statuses[i], _ = servers[i[0] % len(servers)].post_toss(
         tokens[i], texts[i], name=f"toss-{i[1]}", toss=ids[i], code=classes[i[0]][0],
@@ -285,6 +299,7 @@ def browser_phone(b):
                 raise RuntimeError(f"browser {b}: the recording did not start: {said!r}")
             feed_at_own_rate(driver, t, omega)
             go.wait()
+            time.sleep(moment[b])  # the phone still, as after a catch, until its Stop
             stopped_at[b] = time.time()
             tap(driver, "labRecord")
             kept = wait_for(driver, "return window.explorer.labRecordings()", lambda r: len(r) > 0, 120)
@@ -377,7 +392,8 @@ def line(what, values):
 
 school = f" in {a.classes} classes of {phones} on one PostgreSQL" if a.classes > 1 else \
     (" (PostgreSQL)" if database else "")
-print(f"{everyone} phones keeping a real recording each at once{school}: {browsers} headless "
+when = f"within the same {a.spread:g} s (seed {a.seed})" if a.spread else "at once"
+print(f"{everyone} phones keeping a real recording each {when}{school}: {browsers} headless "
       f"Chromium, {len(plain)} plain HTTPS clients ({len(names)} recordings of ../shared/recordings-real/ "
       "in turn)")
 if plain:
@@ -396,14 +412,23 @@ if browsers:
     print(line("browser: held to the event stream",
                [seen[browser_toss[b]] - held[browser_toss[b]] for b in range(browsers)]))
 each = f" (each class's {phones})" if a.classes > 1 else ""
+# The issue's "within 15 s of the last toss": from the last POST's start or the last browser's
+# kept toss, whichever is later.
+last = max(list(sent.values()) + list(kept_at.values()))
+
+
+def since(moment):
+    return f"{moment - last:.2f} s after the last toss ({moment - start:.2f} s after the start)"
+
+
 if live_at:
-    print(f"  the moment all were released to the live estimate of all {phones}{each}: "
-          f"{max(live_at.values()) - start:.2f} s (docs/class.md, \"The projector's numbers\")")
+    print(f"  the live estimate of all {phones}{each}: {since(max(live_at.values()))} "
+          "(docs/class.md, \"The projector's numbers\")")
 if exact_at and len(exact_at) == len(classes):
-    print(f"  the moment all were released to the exact fit's body of all {phones}{each}: "
-          f"{max(exact_at.values()) - start:.2f} s (each toss's judgement then follows)")
-print(f"  the moment all were released to the pooled fit of all {phones}{each}: " +
-      (f"{end - start:.2f} s" if all_fitted else f"not within {a.fit_wait:g} s") +
+    print(f"  the exact fit's body of all {phones}{each}: {since(max(exact_at.values()))} "
+          "(each toss's judgement then follows)")
+print(f"  the pooled fit of all {phones}{each}: " +
+      (since(end) if all_fitted else f"not within {a.fit_wait:g} s") +
       (f" (the fit's error: {last_pooled[0]['error']})" if all_fitted and last_pooled[0]["error"]
        else ""))
 aside = (last_pooled[0] or {}).get("set_aside") or []
