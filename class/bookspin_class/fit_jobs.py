@@ -116,15 +116,20 @@ def finish(connection, code, worker, version, exact_in=None):
     live estimate pending again, at once. False where the lease was lost."""
     exact = exact_in is not None
     with connection.transaction():
+        # `version = %(version)s`: no change came during the stage; `exact`: the exact fit next.
         row = connection.execute(
-            "UPDATE fit_jobs SET state = CASE WHEN version = %s AND NOT %s THEN 'done' ELSE "
-            "'pending' END, stage = CASE WHEN version = %s AND %s THEN 'exact' ELSE 'live' END, "
-            "not_before = CASE WHEN version = %s AND %s THEN now() + make_interval(secs => %s) "
-            "END, worker = NULL, leased_until = NULL, attempts = 0, queued = CASE WHEN version "
-            "= %s AND NOT %s THEN queued ELSE now() END WHERE class_code = %s AND worker = %s "
-            "AND state = 'running' RETURNING state",
-            (version, exact, version, exact, version, exact, exact_in or 0.0, version, exact,
-             code, worker)).fetchone()
+            "UPDATE fit_jobs SET "
+            "state = CASE WHEN version = %(version)s AND NOT %(exact)s THEN 'done' "
+            "ELSE 'pending' END, "
+            "stage = CASE WHEN version = %(version)s AND %(exact)s THEN 'exact' ELSE 'live' END, "
+            "not_before = CASE WHEN version = %(version)s AND %(exact)s "
+            "THEN now() + make_interval(secs => %(exact_in)s) END, "
+            "worker = NULL, leased_until = NULL, attempts = 0, "
+            "queued = CASE WHEN version = %(version)s AND NOT %(exact)s THEN queued ELSE now() END "
+            "WHERE class_code = %(code)s AND worker = %(worker)s AND state = 'running' "
+            "RETURNING state",
+            {"version": version, "exact": exact, "exact_in": exact_in or 0.0, "code": code,
+             "worker": worker}).fetchone()
         if row is not None:
             announce(connection, code, worker)
     return row is not None

@@ -318,11 +318,15 @@ class PooledFit:
         self.dirty = False
         async with self.gate:
             files = await asyncio.to_thread(self.files_of)
-            if not files and self.result["recordings"] == 0 and self.result["error"] is None:
-                return True  # nothing held, nothing shown
+            if self._nothing_shown_or_held(files):
+                return True
             self.fitting = True
             await self._exact(files)
         return not self.dirty
+
+    def _nothing_shown_or_held(self, files):
+        """No toss held (`files` empty) and none shown: no refit to tell the projector of."""
+        return not files and self.result["recordings"] == 0 and self.result["error"] is None
 
     async def _run(self):
         exact_next = False  # the class quiet after a live estimate: the exact fit's turn
@@ -340,10 +344,9 @@ class PooledFit:
                     self.dirty = True
                     await asyncio.sleep(RETRY_SECONDS)
                     continue
-                if not files and self.result["recordings"] == 0 and \
-                        self.result["error"] is None:
+                if self._nothing_shown_or_held(files):
                     exact_next = False
-                    continue  # nothing held, nothing shown: no refit to tell the projector of
+                    continue
                 self.fitting = True
                 if files and not exact_next:
                     shown_live, files = await self._live(files)
