@@ -163,8 +163,16 @@ export function spokenResult(r) {
     row = `; toss 1: T/2 measured ${ms3(first.half_period_measured)}, ` +
       (typeof p === 'number' && typeof s === 'number' ? `predicted ${plusMinus(p, 2 * s)} s` : typeof p === 'number' ? `predicted ${ms3(p)}` : 'not predicted');
   }
+  // A fit that describes no motion read is said with it, as the command says it first.
+  const warned = fitWarnings(r.summary).map((line) => `; ${line}`).join('');
   return `fitted ${r.recording}: ${r.tosses.length} toss${r.tosses.length === 1 ? '' : 'es'}, I1 : I2 : I3 = ` +
-    `${plusMinus(b.I1_over_I3, b.I1_sigma)} : ${plusMinus(b.I2_over_I3, b.I2_sigma)} : 1${row}; the result is below`;
+    `${plusMinus(b.I1_over_I3, b.I1_sigma)} : ${plusMinus(b.I2_over_I3, b.I2_sigma)} : 1${row}${warned}; the result is below`;
+}
+
+/** The summary's warnings (src/fit/fit_tables.cpp, fit_summary: a toss whose fit leaves a large
+ * share of |ω| unexplained, said right after the result table, before anything else). */
+export function fitWarnings(summary) {
+  return (summary || []).filter((line) => line.startsWith('warning: '));
 }
 
 /** A stage of the fit as the worker tells it (web/fit_bindings.cpp: "read" NAME INDEX COUNT
@@ -452,7 +460,12 @@ export class LabPanel {
     // The result first: one table, a row a toss (the summary's own first lines, fit_result_lines,
     // which the table shows, are left out of the text below it).
     this.showOutcome(r);
-    const details = r.summary.slice(2 + r.tosses.length);
+    // The warnings next, above the body whose values they say not to trust, as the command
+    // prints them right after its result table (fit_summary); not again in the text below.
+    const warnings = fitWarnings(r.summary);
+    $('labWarnings').hidden = !warnings.length;
+    $('labWarnings').innerHTML = warnings.map((line) => `<p>${wholeNumbers(html(line))}</p>`).join('');
+    const details = r.summary.slice(2 + r.tosses.length).filter((line) => !warnings.includes(line));
     // Its numbers, intervals and ranges whole (precision.js, wholeNumbers); it breaks at spaces.
     $('labSummary').innerHTML = wholeNumbers(html([...files, ...details].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`));
     this.showDropped(r.dropped || []);
