@@ -153,9 +153,13 @@ def peak_rss_mib():
     return total
 
 
+exact_fits = set()  # the exact fits' processes seen (fit_process.py), by pid
+
+
 def resident_mib_with_children():
-    """The resident memory now of the servers and workers and every process they started (the
-    exact fits' processes, fit_process.py), summed."""
+    """The resident memory now of the servers and workers and every process they started,
+    summed; the exact fits' processes among those (fit_process.py: spawned) added to
+    `exact_fits` as it meets them (one scan of /proc for both)."""
     parent, rss = {}, {}
     for status in pathlib.Path("/proc").glob("[0-9]*/status"):
         try:
@@ -181,9 +185,6 @@ def resident_mib_with_children():
             except OSError:
                 pass
     return sum(size for pid, size in rss.items() if ours(pid))
-
-
-exact_fits = set()  # the exact fits' processes seen (fit_process.py), by pid
 
 
 sampled_peak = [0.0]

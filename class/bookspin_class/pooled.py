@@ -3,8 +3,8 @@ fitted as one body by bookspin.fit([files…]), the very fit `bookspin fit FILES
 set the teacher downloads (the same CSV text in files of the same names), so the projector's
 numbers are the command's to the digit. The exact fit runs in a process of its own
 (fit_process.py), one at a time, stopped when a toss makes it stale; tosses that arrive during a
-fit are fitted together by the next (a burst is one refit). During a burst the projector shows the live estimate
-(docs/class.md, "The projector's numbers"): each toss prepared once as it arrives
+fit are fitted together by the next (a burst is one refit). During a burst the projector shows
+the live estimate (docs/class.md, "The projector's numbers"): each toss prepared once as it arrives
 (bookspin.prepare_recording, in the worker threads, in parallel), the set refitted warm from the
 last estimate (bookspin.live_fit), marked "live"; once the class is quiet for QUIET_SECONDS the
 exact fit follows."""
@@ -466,8 +466,8 @@ class PooledFit:
     async def _live_while(self, judging):
         """Waits for the judgements `judging` (longer the larger the class); a toss that comes
         meanwhile has its live estimate at once, beside them (docs/class.md, "The projector's
-        numbers"). Whether one came: the judgements are then stale, self.dirty set (the loop fits them
-        all again once the class is quiet)."""
+        numbers"). Whether one came: the judgements are then stale, self.dirty set (the loop
+        fits them all again once the class is quiet)."""
         stale = False
         while not judging.done():
             if not self.dirty:

@@ -169,10 +169,12 @@ export function spokenResult(r) {
     `${plusMinus(b.I1_over_I3, b.I1_sigma)} : ${plusMinus(b.I2_over_I3, b.I2_sigma)} : 1${row}${warned}; the result is below`;
 }
 
+const isWarning = (line) => line.startsWith('warning: ');
+
 /** The summary's warnings (src/fit/fit_tables.cpp, fit_summary: a toss whose fit leaves a large
  * share of |ω| unexplained, said right after the result table, before anything else). */
 export function fitWarnings(summary) {
-  return (summary || []).filter((line) => line.startsWith('warning: '));
+  return (summary || []).filter(isWarning);
 }
 
 /** A stage of the fit as the worker tells it (web/fit_bindings.cpp: "read" NAME INDEX COUNT
@@ -465,7 +467,7 @@ export class LabPanel {
     const warnings = fitWarnings(r.summary);
     $('labWarnings').hidden = !warnings.length;
     $('labWarnings').innerHTML = warnings.map((line) => `<p>${wholeNumbers(html(line))}</p>`).join('');
-    const details = r.summary.slice(2 + r.tosses.length).filter((line) => !warnings.includes(line));
+    const details = r.summary.slice(2 + r.tosses.length).filter((line) => !isWarning(line));
     // Its numbers, intervals and ranges whole (precision.js, wholeNumbers); it breaks at spaces.
     $('labSummary').innerHTML = wholeNumbers(html([...files, ...details].join('\n') + `\n(fitted in the page in ${(ms / 1000).toFixed(1)} s)`));
     this.showDropped(r.dropped || []);
